@@ -1,0 +1,107 @@
+/*
+ * ricochet: stiff rigid-body contact, integrated implicitly with error control.
+ *
+ * Public API. This header includes only the C library: no SUNDIALS, GSL or
+ * netCDF type appears here. Units are SI-consistent: whatever consistent
+ * system the case file uses (the one named in /BEGIN) is used throughout;
+ * the comments below give SI units for orientation.
+ *
+ * Pipeline:  rc_case_load  ->  rc_model_compile  ->  rc_run
+ */
+#ifndef RICOCHET_H
+#define RICOCHET_H
+
+#include <stdio.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define RICOCHET_VERSION "0.1.0"
+
+/* Status codes. The values of RC_EINPUT, RC_ESOLVER and RC_EIO are the
+ * program's exit codes (SPEC 1). */
+typedef enum {
+    RC_OK = 0,
+    RC_EINPUT = 2,    /* the case file is wrong; nothing was run         */
+    RC_ESOLVER = 3,   /* the integrator failed; partial results are kept */
+    RC_EIO = 4,       /* a file could not be read or written             */
+    RC_ENOMEM = 5,    /* out of memory                                   */
+    RC_EINTERNAL = 6  /* a bug in ricochet                               */
+} rc_status;
+
+/* An error report. `msg` is complete and printable on its own: for input
+ * errors it reads "file:line: card /X/Y/id, field F: expected ..., got ...". */
+typedef struct rc_error {
+    rc_status code;
+    char msg[2048];
+    const char *src_file; /* ricochet source location that raised it */
+    int src_line;
+    const char *src_func;
+} rc_error;
+
+/* Static message of a status code (never NULL). */
+const char *rc_status_str(rc_status code);
+/* Process exit code for a status: 0, 2, 3, 4; 1 for other failures. */
+int rc_status_exit_code(rc_status code);
+/* Version string, e.g. "0.1.0". */
+const char *rc_version(void);
+
+/* ---- Case (parsed deck) --------------------------------------------- */
+typedef struct rc_case rc_case;
+
+/* Read a case file (Radioss block format, see docs/case-format.md).
+ * On failure returns RC_EINPUT or RC_EIO, fills *err, sets *out to NULL. */
+rc_status rc_case_load(const char *path, rc_case **out, rc_error *err);
+void rc_case_free(rc_case *c); /* NULL is a no-op */
+
+/* ---- Model (compiled, constant) ------------------------------------- */
+typedef struct rc_model rc_model;
+
+/* Resolve references, check physics, build the state layout and the
+ * Jacobian pattern. Returns RC_EINPUT with file:line in *err on bad input. */
+rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err);
+void rc_model_free(rc_model *m); /* NULL is a no-op */
+/* Human-readable summary (bodies, surfaces, interfaces, state size, solver
+ * settings) as printed by `ricochet check`. */
+void rc_model_print_summary(const rc_model *m, FILE *f);
+
+/* ---- Running --------------------------------------------------------- */
+
+/* Solver statistics of a run. */
+typedef struct rc_stats {
+    long steps;           /* integrator steps                          */
+    long rhs_evals;       /* right-hand side evaluations               */
+    long jac_evals;       /* Jacobian evaluations                      */
+    long lin_setups;      /* linear solver setups (KLU factorisations) */
+    long nonlin_iters;    /* Newton iterations                         */
+    long nonlin_fails;    /* Newton convergence failures               */
+    long err_test_fails;  /* local error test failures                 */
+    long root_evals;      /* root function evaluations                 */
+    long events;          /* located events (mode changes)             */
+    long reinits;         /* integrator restarts after events          */
+    double t_end;         /* simulated time reached [s]                */
+    double wall_time;     /* wall-clock time of the integration [s]    */
+    double energy_residual; /* energy balance residual at the end [J]  */
+} rc_stats;
+
+/* Options of one run. Zero-initialise, then set what you need. */
+typedef struct rc_run_options {
+    const char *output_path; /* netCDF output file; NULL: no file       */
+    int progress;            /* 1: show progress on stderr (terminal)   */
+    double t_end_override;   /* > 0: replace the case's end time [s]    */
+} rc_run_options;
+
+/* Integrate the model from t = 0 to its end time, writing the output.
+ * Returns RC_OK, RC_ESOLVER (partial output kept, marked incomplete) or
+ * RC_EIO. `stats` may be NULL. */
+rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats,
+                 rc_error *err);
+
+/* Print statistics in the format of `ricochet run`. */
+void rc_stats_print(const rc_stats *s, FILE *f);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* RICOCHET_H */

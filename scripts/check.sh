@@ -1,0 +1,3 @@
+#!/usr/bin/env bash
+# placeholder
+"$1"/run_tests

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Install the Debian 12 packages ricochet needs, only those missing.
+# Idempotent: does nothing (and needs no privileges) when all are present.
+set -euo pipefail
+PKGS=(gcc make libsundials-dev libsuitesparse-dev libgsl-dev libnetcdf-dev netcdf-bin
+      python3 python3-numpy python3-scipy python3-netcdf4 python3-matplotlib)
+missing=()
+for p in "${PKGS[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+        missing+=("$p")
+    fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+echo "install-deps: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+    if command -v sudo >/dev/null 2>&1; then SUDO="sudo"; else
+        echo "install-deps: missing packages (${missing[*]}) and not root; install them with apt-get" >&2
+        exit 1
+    fi
+fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,188 @@
+/*
+ * The parsed case ("spec"): every card of the deck as read, with the
+ * file:line of each card and of each data line, before any reference is
+ * resolved. Filled by the case reader (case_reader.c, case_cards.c), read by
+ * the compiler (compile.c). Nothing here runs physics.
+ *
+ * Conventions
+ *  - A field left blank takes the default documented in docs/case-format.md;
+ *    the reader stores the default, so the compiler never sees "blank".
+ *    Exception: integer references (function, surface, group ids) are 0 when
+ *    blank, meaning "none".
+ *  - Every card records `loc` (the card's header line) and, where the
+ *    compiler may need to blame a particular field, the line of that field.
+ *  - Strings are owned by the case and freed by rc_case_free.
+ */
+#ifndef RC_CASE_H
+#define RC_CASE_H
+
+#include "ricochet/ricochet.h"
+
+/* Where something was read: file path (owned by rc_case.files) and line. */
+typedef struct rc_loc {
+    const char *file;
+    int line;
+} rc_loc;
+
+/* /FUNCT/fct_ID: tabulated curve y(x), points in file order. */
+typedef struct rc_case_funct {
+    int id;
+    char title[101];
+    int npts;
+    double *x, *y; /* [npts] */
+    rc_loc loc;
+} rc_case_funct;
+
+/* /NODE: one node. */
+typedef struct rc_case_node {
+    int id;
+    double x[3]; /* global coordinates [m] */
+    rc_loc loc;
+} rc_case_node;
+
+/* /GRNOD/NODE/grnod_ID: a list of node ids. */
+typedef struct rc_case_grnod {
+    int id;
+    char title[101];
+    int n;
+    int *nodes; /* [n] node ids */
+    rc_loc loc;
+} rc_case_grnod;
+
+/* /RBODY/rbody_ID (Radioss layout). Only the fields ricochet uses are
+ * kept; the others are checked to be blank/zero or supported by the reader. */
+typedef struct rc_case_rbody {
+    int id;
+    char title[101];
+    int node_id;   /* main node = centre of mass                        */
+    int skew_id;   /* 0 only (checked by the reader)                    */
+    int ispher;    /* 0..3 as Radioss; ricochet uses the inertia as given */
+    double mass;   /* [kg]                                              */
+    int grnod_id;  /* secondary nodes group (0: none)                   */
+    int icog;      /* 0..4; ricochet supports 0/1/3 as "CoG at main node" */
+    double J[6];   /* Jxx Jyy Jzz Jxy Jyz Jxz [kg m^2], global axes at t=0 */
+    rc_loc loc;
+} rc_case_rbody;
+
+/* /SURF/PLANE/surf_ID and /SURF/ELLIPS/surf_ID. */
+typedef enum { RC_CASE_SURF_PLANE = 1, RC_CASE_SURF_ELLIPS = 2 } rc_case_surf_kind;
+
+typedef struct rc_case_surf {
+    int id;
+    char title[101];
+    rc_case_surf_kind kind;
+    /* PLANE: point M and point M1; outward normal from M towards M1.     */
+    double m[3], m1[3];       /* [m] */
+    /* ELLIPS: centre, semi-axes, degree n.                              */
+    int skew_id;              /* 0 only */
+    int degree;               /* n, default 2 */
+    double c[3];              /* centre [m] */
+    double abc[3];            /* semi-axes a, b, c [m] */
+    /* ricochet extension: rigid body carrying the surface (0: fixed in
+     * space). Read from the documented extension field of each card.   */
+    int rbody_id;
+    rc_loc loc;
+} rc_case_surf;
+
+/* /INTER/TYPE6/inter_ID: every field of the six data lines. */
+typedef struct rc_case_type6 {
+    int id;
+    char title[101];
+    int surf1, surf2;                         /* line 1 */
+    double sfric, fric, gap, tstart, tstop;   /* line 2: [N] [-] [m] [s] [s] */
+    int irs, irm, inacti, fct_ff, fct_fv;     /* line 3 */
+    double ascalef, ascalev;                  /* line 3: [N] [m/s] */
+    int fct_ld, iform;                        /* line 4 */
+    double ascalex, fscaleld;                 /* line 4: [m] [N] */
+    int icor;                                 /* line 4 */
+    int fct_ul;                               /* line 5 */
+    double stiff, fscaleul;                   /* line 5: [N/m] [N] */
+    double visc;                              /* line 6: [N s/m] */
+    int fct_dv, fct_df;                       /* line 6 */
+    double fscalev;                           /* line 6: [N] */
+    rc_loc loc;
+    rc_loc line_loc[6];                       /* each data line */
+} rc_case_type6;
+
+/* /INIVEL/TRA and /INIVEL/ROT. */
+typedef struct rc_case_inivel {
+    int id;
+    int rot;       /* 0: TRA (velocity [m/s]); 1: ROT (angular velocity [rad/s]) */
+    double v[3];
+    int grnod_id;  /* nodes whose body gets the velocity */
+    int skew_id;   /* 0 only */
+    rc_loc loc;
+} rc_case_inivel;
+
+/* /GRAV/grav_ID. Acceleration = Fscale * f(t / Ascale) along DIR. */
+typedef struct rc_case_grav {
+    int id;
+    int fct_id;     /* 0: constant 1 */
+    int dir;        /* 0, 1, 2 for X, Y, Z */
+    int skew_id;    /* 0 only */
+    int sensor_id;  /* 0 only */
+    int grnod_id;   /* 0: all bodies */
+    double ascale;  /* [s], default 1 */
+    double fscale;  /* [m/s^2], default 1 */
+    rc_loc loc;
+} rc_case_grav;
+
+/* /BCS/bcs_ID: Tx Ty Tz Rx Ry Rz flags (1 = fixed) on a node group. */
+typedef struct rc_case_bcs {
+    int id;
+    int fix[6];
+    int skew_id;
+    int grnod_id;
+    rc_loc loc;
+} rc_case_bcs;
+
+/* /RUN (ricochet): end time and output interval. */
+typedef struct rc_case_run {
+    int present;
+    double tend;  /* [s] */
+    double dtout; /* [s], default tend/100 */
+    rc_loc loc;
+} rc_case_run;
+
+/* /SOLVER (ricochet): integrator settings. Defaults in docs. */
+typedef struct rc_case_solver {
+    int present;
+    int method;        /* 1: CVODE BDF (default) */
+    int max_order;     /* 1..5, default 5 */
+    long max_steps;    /* per output interval, default 100000 */
+    double rtol;       /* default 1e-6 */
+    double atol_pos;   /* [m], default 1e-9 */
+    double atol_quat;  /* [-], default 1e-9 */
+    double atol_vel;   /* [m/s], default 1e-6 */
+    double atol_omega; /* [rad/s], default 1e-6 */
+    double atol_energy;/* [J], default 1e-6 */
+    double hmax;       /* [s], 0: no limit */
+    double h0;         /* [s], 0: CVODE's estimate */
+    rc_loc loc;
+} rc_case_solver;
+
+/* The whole deck. Arrays grow as cards are read. */
+struct rc_case {
+    char *path;          /* main file as given */
+    char title[101];     /* run name from /BEGIN (or empty) */
+    char unit_mass[21], unit_length[21], unit_time[21]; /* from /BEGIN, "" if absent */
+    unsigned long checksum; /* FNV-1a 64 of the main file's bytes */
+
+    int nfiles; char **files; /* every file read (main + includes); rc_loc.file points here */
+
+    int nfunct;  rc_case_funct *funct;
+    int nnode;   rc_case_node *node;
+    int ngrnod;  rc_case_grnod *grnod;
+    int nrbody;  rc_case_rbody *rbody;
+    int nsurf;   rc_case_surf *surf;
+    int ntype6;  rc_case_type6 *type6;
+    int ninivel; rc_case_inivel *inivel;
+    int ngrav;   rc_case_grav *grav;
+    int nbcs;    rc_case_bcs *bcs;
+    rc_case_run run;
+    rc_case_solver solver;
+
+    int nwarnings; char **warnings; /* "file:line: ..." ignored-card warnings */
+};
+
+#endif

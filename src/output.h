@@ -1,0 +1,68 @@
+/*
+ * Output: netCDF-4 results file with CF-style metadata. The only module that
+ * includes netCDF. The engine hands it plain arrays (rc_frame) at output
+ * times and at events; it never sees the model or the solver.
+ */
+#ifndef RC_OUTPUT_H
+#define RC_OUTPUT_H
+
+#include "ricochet/ricochet.h"
+
+typedef struct rc_output rc_output;
+
+/* What the file describes; copied at open. */
+typedef struct rc_output_meta {
+    const char *title;        /* run title ("" allowed)                    */
+    const char *case_path;    /* case file as given                        */
+    unsigned long checksum;   /* FNV-1a 64 of the case file                */
+    const char *unit_mass, *unit_length, *unit_time; /* from /BEGIN or ""  */
+    const char *solver;       /* e.g. "CVODE BDF, Newton, KLU sparse"      */
+    double rtol;              /* relative tolerance [-]                    */
+    double atol_pos, atol_quat, atol_vel, atol_omega, atol_energy; /* abs tolerances */
+    int nbody;
+    const int *body_id;       /* [nbody] /RBODY ids                        */
+    const int *body_fixed;    /* [nbody] 1: fixed (ground) body            */
+    int ninter;
+    const int *inter_id;      /* [ninter] /INTER ids                       */
+    const char *const *inter_type; /* [ninter] e.g. "TYPE6"                */
+    int nenergy;
+    const char *const *energy_name;  /* [nenergy] variable names, e.g. "energy_kinetic" */
+    const char *const *energy_long;  /* [nenergy] long names                */
+} rc_output_meta;
+
+/* Interface modes as stored in the file (variable inter_mode). */
+enum { RC_OUT_MODE_INACTIVE = 0, RC_OUT_MODE_OPEN = 1, RC_OUT_MODE_CLOSED = 2 };
+
+/* One record. All pointers are non-NULL arrays of the sizes in the meta. */
+typedef struct rc_frame {
+    double t;                    /* [s]                                     */
+    int at_event;                /* 1: written at an event                  */
+    const double *body_pos;      /* [nbody*3] centre of mass, global [m]    */
+    const double *body_quat;     /* [nbody*4] unit quaternion (w,x,y,z) body->global [-] */
+    const double *body_vel;      /* [nbody*3] velocity of the CoM, global [m/s] */
+    const double *body_omega;    /* [nbody*3] angular velocity, body frame [rad/s] */
+    const double *inter_pen;     /* [ninter] max penetration P past the Gap [m] */
+    const double *inter_fload;   /* [ninter] force from load/unload law [N] */
+    const double *inter_fdamp;   /* [ninter] damping force [N]              */
+    const double *inter_fnormal; /* [ninter] total normal force (>= 0) [N]  */
+    const double *inter_point;   /* [ninter*3] contact point, global [m]    */
+    const double *inter_normal;  /* [ninter*3] unit normal, global [-]      */
+    const int *inter_mode;       /* [ninter] RC_OUT_MODE_*                  */
+    const double *energy;        /* [nenergy] [J]                           */
+} rc_frame;
+
+/* Create the file (overwrites). RC_EIO with the path and netCDF message. */
+rc_status rc_output_open(rc_output **out, const char *path, const rc_output_meta *meta,
+                         rc_error *err);
+/* Append one record to the time series. */
+rc_status rc_output_frame(rc_output *o, const rc_frame *f, rc_error *err);
+/* Append one row to the events table: time [s], kind (e.g. "contact_close",
+ * "contact_open", "inter_start", "inter_stop"), element (e.g. "/INTER/TYPE6/3"). */
+rc_status rc_output_event(rc_output *o, double t, const char *kind, const char *element,
+                          rc_error *err);
+/* Write statistics and completion attributes, close, free. `complete` 0
+ * marks the file incomplete with `reason`. o == NULL is a no-op. */
+rc_status rc_output_close(rc_output *o, const rc_stats *st, int complete, const char *reason,
+                          rc_error *err);
+
+#endif

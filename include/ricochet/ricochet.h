@@ -90,7 +90,13 @@ typedef struct rc_run_options {
     const char *output_path; /* netCDF output file; NULL: no file       */
     int progress;            /* 1: show progress on stderr (terminal)   */
     double t_end_override;   /* > 0: replace the case's end time [s]    */
+    double *y_end;           /* non-NULL: receives the final state vector,
+                                rc_model_state_size(m) values (layout in
+                                docs/theory.md)                          */
 } rc_run_options;
+
+/* Number of values in the state vector of a model. */
+int rc_model_state_size(const rc_model *m);
 
 /* Integrate the model from t = 0 to its end time, writing the output.
  * Returns RC_OK, RC_ESOLVER (partial output kept, marked incomplete) or

@@ -1,0 +1,79 @@
+/*
+ * Analytic Jacobian by complex-step differentiation of the element kernels
+ * (kernels.inc compiled with T = double complex): column j of an element's
+ * block is Im(f(y + i h e_j)) / h, exact to rounding for any h because no
+ * difference is taken (docs/design.md). Values go into the fixed CSC pattern
+ * through each element's slot table.
+ */
+#include <complex.h>
+#include <math.h>
+#include <string.h>
+#include <tgmath.h>
+
+#include "model.h"
+
+#define T double complex
+#define RE(x) creal(x)
+#define RCK(name) name##_c
+#include "kernels.inc"
+
+/* Complex step [state units]; any tiny value works, no cancellation. */
+#define RC_CSTEP 1e-40
+
+/* Complex copy of a body's 13 states (ground/fixed pose when b has none). */
+static void load_body(const rc_model *m, int b, const double *y, T *yc)
+{
+    const double *s = rc_body_state(m, b, y);
+    for (int k = 0; k < RC_NB; k++) yc[k] = s[k];
+}
+
+static void jac_body(const rc_model *m, int b, double t, const double *y, double *val)
+{
+    const rc_jblock *jb = &m->jb_body[b];
+    T yc[RC_NB], yd[RC_NB];
+    load_body(m, b, y, yc);
+    for (int c = 0; c < RC_NB; c++) {
+        yc[c] += I * RC_CSTEP;
+        body_rhs_c(m, b, t, yc, yd);
+        for (int r = 0; r < RC_NB; r++) val[jb->slot[r * jb->ncol + c]] += cimag(yd[r]) / RC_CSTEP;
+        yc[c] = creal(yc[c]);
+    }
+}
+
+static void jac_inter(const rc_model *m, int i, double t, const double *y, double *val)
+{
+    const rc_jblock *jb = &m->jb_inter[i];
+    const int ba = m->inter_ba[i], bb = m->inter_bb[i];
+    const int fa = ba >= 0 && m->body_yadr[ba] >= 0, fb = bb >= 0 && m->body_yadr[bb] >= 0;
+    T ya[RC_NB], yb[RC_NB];
+    load_body(m, ba, y, ya);
+    load_body(m, bb, y, yb);
+    (void)t;
+    /* columns: states of a (if free), then of b (if free) */
+    for (int c = 0; c < jb->ncol; c++) {
+        T *yp = (fa && c < RC_NB) ? ya + c : yb + (c - (fa ? RC_NB : 0));
+        *yp += I * RC_CSTEP;
+        T acc[12] = {0}, edot[2];
+        type6_c(m, i, RC_MODE_CLOSED, ya, yb, fa ? acc : NULL, fb ? acc + 6 : NULL, edot, NULL,
+                NULL, NULL);
+        *yp = creal(*yp);
+        /* rows: acc of a (6), acc of b (6), energy (2), as in the pattern */
+        int r = 0;
+        if (fa)
+            for (int k = 0; k < 6; k++, r++) val[jb->slot[r * jb->ncol + c]] += cimag(acc[k]) / RC_CSTEP;
+        if (fb)
+            for (int k = 0; k < 6; k++, r++) val[jb->slot[r * jb->ncol + c]] += cimag(acc[6 + k]) / RC_CSTEP;
+        for (int k = 0; k < RC_NE; k++, r++) val[jb->slot[r * jb->ncol + c]] += cimag(edot[k]) / RC_CSTEP;
+    }
+}
+
+int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val)
+{
+    d->n_jac++;
+    memset(val, 0, (size_t)m->nnz * sizeof(double));
+    for (int b = 0; b < m->nbody; b++)
+        if (m->body_yadr[b] >= 0) jac_body(m, b, t, y, val);
+    for (int i = 0; i < m->ninter; i++)
+        if (d->inter_mode[i] == RC_MODE_CLOSED && m->jb_inter[i].ncol > 0) jac_inter(m, i, t, y, val);
+    return 0;
+}

@@ -1,0 +1,49 @@
+/* Rigid bodies: state views, gravity, energies. */
+#include <string.h>
+
+#include "model.h"
+
+const double *rc_body_state(const rc_model *m, int b, const double *y)
+{
+    if (b < 0) return m->ground_y0;
+    return m->body_yadr[b] >= 0 ? y + m->body_yadr[b] : m->body_y0 + RC_NB * b;
+}
+
+void rc_gravity(const rc_model *m, int b, double t, double g[3])
+{
+    /* g(t) = vector * f(t / Ascale), f = 1 when no function is given */
+    double f = 1.0, df;
+    if (m->grav_table >= 0) rc_table_eval(&m->table[m->grav_table], t / m->grav_ascale, &f, &df);
+    for (int k = 0; k < 3; k++) g[k] = m->body_grav[3 * b + k] * f;
+}
+
+void rc_energy(const rc_model *m, double t, const double *y, double e[RC_NENERGY])
+{
+    memset(e, 0, RC_NENERGY * sizeof(double));
+    for (int b = 0; b < m->nbody; b++) {
+        if (m->body_yadr[b] < 0) continue;
+        const double *s = y + m->body_yadr[b];
+        const double *J = m->body_J + 9 * b;
+        const double *w = s + 10;
+        double g[3];
+        rc_gravity(m, b, t, g);
+        /* 1/2 m v.v + 1/2 w.J w ; potential -m g.x */
+        double rot = 0.0;
+        for (int k = 0; k < 3; k++)
+            rot += w[k] * (J[3 * k] * w[0] + J[3 * k + 1] * w[1] + J[3 * k + 2] * w[2]);
+        e[RC_E_KIN] += 0.5 * m->body_mass[b] * (s[7] * s[7] + s[8] * s[8] + s[9] * s[9]) + 0.5 * rot;
+        e[RC_E_POT] -= m->body_mass[b] * (g[0] * s[0] + g[1] * s[1] + g[2] * s[2]);
+    }
+    for (int i = 0; i < m->ninter; i++) {
+        e[RC_E_ELASTIC] += y[m->inter_eadr[i]];
+        e[RC_E_DAMP] += y[m->inter_eadr[i] + 1];
+    }
+    e[RC_E_TOTAL] = e[RC_E_KIN] + e[RC_E_POT] + e[RC_E_ELASTIC] + e[RC_E_DAMP];
+}
+
+void rc_initial_state(const rc_model *m, double *y)
+{
+    memset(y, 0, (size_t)m->ny * sizeof(double));
+    for (int b = 0; b < m->nbody; b++)
+        if (m->body_yadr[b] >= 0) memcpy(y + m->body_yadr[b], m->body_y0 + RC_NB * b, RC_NB * sizeof(double));
+}

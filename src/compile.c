@@ -1,0 +1,472 @@
+/*
+ * Compile a parsed case into the constant model: resolve ids, check the
+ * physics of each reference, lay out the state vector and its tolerances,
+ * and build the Jacobian pattern. Every error names the file:line and card
+ * of the reference that is wrong.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "case.h"
+#include "error.h"
+#include "model.h"
+
+#define ALLOC(ptr, n)                                                               \
+    do {                                                                            \
+        (ptr) = calloc((size_t)(n) + 1, sizeof *(ptr));                             \
+        if (!(ptr)) {                                                               \
+            st = RC_SET(err, RC_ENOMEM, "out of memory compiling the model");       \
+            goto fail;                                                              \
+        }                                                                           \
+    } while (0)
+
+#define LOCFMT "%s:%d: "
+#define LOC(l) (l).file, (l).line
+
+/* ---- id lookups ------------------------------------------------------ */
+static int find_funct(const rc_case *c, int id)
+{
+    for (int k = 0; k < c->nfunct; k++)
+        if (c->funct[k].id == id) return k;
+    return -1;
+}
+static int find_node(const rc_case *c, int id)
+{
+    for (int k = 0; k < c->nnode; k++)
+        if (c->node[k].id == id) return k;
+    return -1;
+}
+static int find_grnod(const rc_case *c, int id)
+{
+    for (int k = 0; k < c->ngrnod; k++)
+        if (c->grnod[k].id == id) return k;
+    return -1;
+}
+static int find_rbody(const rc_case *c, int id)
+{
+    for (int k = 0; k < c->nrbody; k++)
+        if (c->rbody[k].id == id) return k;
+    return -1;
+}
+static int find_surf(const rc_case *c, int id)
+{
+    for (int k = 0; k < c->nsurf; k++)
+        if (c->surf[k].id == id) return k;
+    return -1;
+}
+
+/* Body carrying node `node_id` (main node or in the secondary group), -1. */
+static int body_of_node(const rc_case *c, int node_id)
+{
+    for (int b = 0; b < c->nrbody; b++) {
+        if (c->rbody[b].node_id == node_id) return b;
+        int g = find_grnod(c, c->rbody[b].grnod_id);
+        if (c->rbody[b].grnod_id && g >= 0)
+            for (int k = 0; k < c->grnod[g].n; k++)
+                if (c->grnod[g].nodes[k] == node_id) return b;
+    }
+    return -1;
+}
+
+/* Optional function reference -> table index (-1 when 0). */
+static rc_status ref_funct(const rc_case *c, int id, rc_loc loc, const char *card, const char *field,
+                           int *out, rc_error *err)
+{
+    *out = -1;
+    if (id == 0) return RC_OK;
+    *out = find_funct(c, id);
+    if (*out < 0)
+        RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field %s: expected the id of a /FUNCT, got %d (no such function)",
+                 LOC(loc), card, field, id);
+    return RC_OK;
+}
+
+/* Bodies of the nodes of group `gid` -> flag array (all bodies when gid = 0). */
+static rc_status group_bodies(const rc_case *c, int gid, rc_loc loc, const char *card, int *flag,
+                              rc_error *err)
+{
+    for (int b = 0; b < c->nrbody; b++) flag[b] = gid == 0;
+    if (gid == 0) return RC_OK;
+    int g = find_grnod(c, gid);
+    if (g < 0)
+        RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field grnod_ID: expected the id of a /GRNOD, got %d (no such group)",
+                 LOC(loc), card, gid);
+    for (int k = 0; k < c->grnod[g].n; k++) {
+        int b = body_of_node(c, c->grnod[g].nodes[k]);
+        if (b < 0)
+            RC_RAISE(err, RC_EINPUT,
+                     LOCFMT "card %s: node %d of /GRNOD/%d belongs to no /RBODY (ricochet bodies are rigid)",
+                     LOC(loc), card, c->grnod[g].nodes[k], gid);
+        flag[b] = 1;
+    }
+    return RC_OK;
+}
+
+/* 3x3 inverse (symmetric positive definite checked by the reader). */
+static int inv3(const double *a, double *o)
+{
+    double det = a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
+                 a[2] * (a[3] * a[7] - a[4] * a[6]);
+    if (!(det > 0)) return -1;
+    o[0] = (a[4] * a[8] - a[5] * a[7]) / det;
+    o[1] = (a[2] * a[7] - a[1] * a[8]) / det;
+    o[2] = (a[1] * a[5] - a[2] * a[4]) / det;
+    o[3] = (a[5] * a[6] - a[3] * a[8]) / det;
+    o[4] = (a[0] * a[8] - a[2] * a[6]) / det;
+    o[5] = (a[2] * a[3] - a[0] * a[5]) / det;
+    o[6] = (a[3] * a[7] - a[4] * a[6]) / det;
+    o[7] = (a[1] * a[6] - a[0] * a[7]) / det;
+    o[8] = (a[0] * a[4] - a[1] * a[3]) / det;
+    return 0;
+}
+
+/* ---- bodies ------------------------------------------------------------ */
+static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
+{
+    for (int b = 0; b < c->nrbody; b++) {
+        const rc_case_rbody *rb = &c->rbody[b];
+        int nd = find_node(c, rb->node_id);
+        if (nd < 0)
+            RC_RAISE(err, RC_EINPUT, LOCFMT "card /RBODY/%d, field node_ID: expected the id of a /NODE, got %d (no such node)",
+                     LOC(rb->loc), rb->id, rb->node_id);
+        if (rb->grnod_id && find_grnod(c, rb->grnod_id) < 0)
+            RC_RAISE(err, RC_EINPUT, LOCFMT "card /RBODY/%d, field grnd_ID: expected the id of a /GRNOD, got %d (no such group)",
+                     LOC(rb->loc), rb->id, rb->grnod_id);
+        m->body_id[b] = rb->id;
+        m->body_mass[b] = rb->mass;
+        /* inertia: Jxx Jyy Jzz Jxy Jyz Jxz -> row-major 3x3 */
+        double *J = m->body_J + 9 * b;
+        J[0] = rb->J[0]; J[4] = rb->J[1]; J[8] = rb->J[2];
+        J[1] = J[3] = rb->J[3];
+        J[5] = J[7] = rb->J[4];
+        J[2] = J[6] = rb->J[5];
+        if (inv3(J, m->body_Jinv + 9 * b))
+            RC_RAISE(err, RC_EINPUT, LOCFMT "card /RBODY/%d, fields Jxx..Jxz: expected a positive-definite inertia tensor",
+                     LOC(rb->loc), rb->id);
+        double *y0 = m->body_y0 + RC_NB * b;
+        memcpy(y0, c->node[nd].x, 3 * sizeof(double));
+        y0[3] = 1.0; /* body frame = global frame at t = 0 */
+    }
+    /* initial velocities */
+    int *flag = calloc((size_t)c->nrbody + 1, sizeof(int));
+    if (!flag) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    rc_status st = RC_OK;
+    for (int k = 0; k < c->ninivel && !st; k++) {
+        const rc_case_inivel *iv = &c->inivel[k];
+        char card[64];
+        snprintf(card, sizeof card, "/INIVEL/%s/%d", iv->rot ? "ROT" : "TRA", iv->id);
+        st = group_bodies(c, iv->grnod_id, iv->loc, card, flag, err);
+        for (int b = 0; b < c->nrbody && !st; b++)
+            if (flag[b]) memcpy(m->body_y0 + RC_NB * b + (iv->rot ? 10 : 7), iv->v, 3 * sizeof(double));
+    }
+    /* fixed bodies: /BCS with all six flags on a node of the body */
+    for (int k = 0; k < c->nbcs && !st; k++) {
+        const rc_case_bcs *bc = &c->bcs[k];
+        char card[64];
+        snprintf(card, sizeof card, "/BCS/%d", bc->id);
+        int all = 1, any = 0;
+        for (int j = 0; j < 6; j++) {
+            all &= bc->fix[j] == 1;
+            any |= bc->fix[j] == 1;
+        }
+        if (any && !all) {
+            st = RC_SET(err, RC_EINPUT, LOCFMT "card %s, field Trarot: only \"111 111\" (fully fixed body) is supported yet",
+                        LOC(bc->loc), card);
+            break;
+        }
+        st = group_bodies(c, bc->grnod_id, bc->loc, card, flag, err);
+        for (int b = 0; b < c->nrbody && !st; b++)
+            if (flag[b] && all) m->body_fixed[b] = 1;
+    }
+    /* gravity: one time function for all cards (constant when 0) */
+    for (int k = 0; k < c->ngrav && !st; k++) {
+        const rc_case_grav *gr = &c->grav[k];
+        char card[64];
+        snprintf(card, sizeof card, "/GRAV/%d", gr->id);
+        int tab;
+        st = ref_funct(c, gr->fct_id, gr->loc, card, "fct_IDT", &tab, err);
+        if (st) break;
+        if (k > 0 && tab != m->grav_table) {
+            st = RC_SET(err, RC_EINPUT, LOCFMT "card %s, field fct_IDT: all /GRAV cards must share one time function (not supported yet)",
+                        LOC(gr->loc), card);
+            break;
+        }
+        m->grav_table = tab;
+        m->grav_ascale = gr->ascale;
+        st = group_bodies(c, gr->grnod_id, gr->loc, card, flag, err);
+        for (int b = 0; b < c->nrbody && !st; b++)
+            if (flag[b]) m->body_grav[3 * b + gr->dir] += gr->fscale;
+    }
+    free(flag);
+    return st;
+}
+
+/* ---- surfaces ---------------------------------------------------------- */
+static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
+{
+    for (int s = 0; s < c->nsurf; s++) {
+        const rc_case_surf *cs = &c->surf[s];
+        const char *kind = cs->kind == RC_CASE_SURF_PLANE ? "PLANE" : "ELLIPS";
+        int b = -1;
+        if (cs->rbody_id) {
+            b = find_rbody(c, cs->rbody_id);
+            if (b < 0)
+                RC_RAISE(err, RC_EINPUT, LOCFMT "card /SURF/%s/%d, field rbody_ID: expected the id of a /RBODY, got %d (no such body)",
+                         LOC(cs->loc), kind, cs->id, cs->rbody_id);
+        }
+        m->surf_id[s] = cs->id;
+        m->surf_body[s] = b;
+        /* local frame: body frame = global at t = 0, origin at the CoM */
+        const double *org = b >= 0 ? m->body_y0 + RC_NB * b : m->ground_y0;
+        if (cs->kind == RC_CASE_SURF_PLANE) {
+            double n[3], len = 0;
+            for (int k = 0; k < 3; k++) {
+                n[k] = cs->m1[k] - cs->m[k];
+                len += n[k] * n[k];
+            }
+            len = sqrt(len);
+            m->surf_kind[s] = RC_SURF_PLANE;
+            for (int k = 0; k < 3; k++) {
+                m->surf_p[3 * s + k] = cs->m[k] - org[k];
+                m->surf_n[3 * s + k] = n[k] / len;
+            }
+        } else {
+            m->surf_kind[s] = RC_SURF_SPHERE;
+            m->surf_r[s] = cs->abc[0];
+            for (int k = 0; k < 3; k++) m->surf_p[3 * s + k] = cs->c[k] - org[k];
+        }
+    }
+    return RC_OK;
+}
+
+/* ---- interfaces -------------------------------------------------------- */
+static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *err)
+{
+    const rc_case_type6 *t6 = &c->type6[i];
+    char card[64];
+    snprintf(card, sizeof card, "/INTER/TYPE6/%d", t6->id);
+    int s1 = find_surf(c, t6->surf1), s2 = find_surf(c, t6->surf2);
+    if (s1 < 0 || s2 < 0)
+        RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field %s: expected the id of a /SURF, got %d (no such surface)",
+                 LOC(t6->line_loc[0]), card, s1 < 0 ? "surf_ID1" : "surf_ID2", s1 < 0 ? t6->surf1 : t6->surf2);
+    /* order the pair: a is a sphere */
+    if (m->surf_kind[s1] != RC_SURF_SPHERE) {
+        int tmp = s1;
+        s1 = s2;
+        s2 = tmp;
+    }
+    if (m->surf_kind[s1] != RC_SURF_SPHERE)
+        RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, fields surf_ID1/surf_ID2: plane against plane is not a contact pair ricochet supports (one surface must be a sphere)",
+                 LOC(t6->line_loc[0]), card);
+    m->inter_pair[i] = m->surf_kind[s2] == RC_SURF_PLANE ? RC_PAIR_SPHERE_PLANE : RC_PAIR_SPHERE_SPHERE;
+    m->inter_sa[i] = s1;
+    m->inter_sb[i] = s2;
+    m->inter_ba[i] = m->surf_body[s1];
+    m->inter_bb[i] = m->surf_body[s2];
+    if (m->inter_ba[i] == m->inter_bb[i])
+        RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, fields surf_ID1/surf_ID2: both surfaces are on the same body; they must belong to two different rigid bodies",
+                 LOC(t6->line_loc[0]), card);
+    m->inter_id[i] = t6->id;
+    m->inter_gap[i] = t6->gap;
+    m->inter_tstart[i] = t6->tstart;
+    m->inter_tstop[i] = t6->tstop;
+    m->inter_visc[i] = t6->visc;
+    m->inter_fscalev[i] = t6->fscalev;
+    m->inter_ascalex[i] = t6->ascalex;
+    m->inter_fscaleld[i] = t6->fscaleld;
+    m->inter_ascalef[i] = t6->ascalef;
+    m->inter_ascalev[i] = t6->ascalev;
+    rc_status st;
+    if ((st = ref_funct(c, t6->fct_ld, t6->line_loc[3], card, "fct_IDld", &m->inter_fct_ld[i], err))) return st;
+    if ((st = ref_funct(c, t6->fct_dv, t6->line_loc[5], card, "fct_IDdv", &m->inter_fct_dv[i], err))) return st;
+    if ((st = ref_funct(c, t6->fct_df, t6->line_loc[5], card, "fct_IDdf", &m->inter_fct_df[i], err))) return st;
+    if (m->inter_fct_ld[i] < 0)
+        RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field fct_IDld: expected the id of the load curve (required), got 0",
+                 LOC(t6->line_loc[3]), card);
+    m->inter_name[i] = malloc(strlen(card) + 1);
+    if (!m->inter_name[i]) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    strcpy(m->inter_name[i], card);
+    return RC_OK;
+}
+
+/* ---- state layout and tolerances -------------------------------------- */
+static rc_status layout(rc_model *m, rc_error *err)
+{
+    int ny = 0;
+    for (int b = 0; b < m->nbody; b++) {
+        m->body_yadr[b] = m->body_fixed[b] ? -1 : ny;
+        if (!m->body_fixed[b]) {
+            ny += RC_NB;
+            m->nfree++;
+        }
+    }
+    for (int i = 0; i < m->ninter; i++) {
+        m->inter_eadr[i] = ny;
+        ny += RC_NE;
+    }
+    m->ny = ny;
+    if (ny == 0) RC_RAISE(err, RC_EINPUT, "%s: the case has nothing to integrate (no free body)", m->case_path);
+    m->atol = malloc((size_t)ny * sizeof(double));
+    if (!m->atol) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    for (int b = 0; b < m->nbody; b++) {
+        if (m->body_yadr[b] < 0) continue;
+        double *a = m->atol + m->body_yadr[b];
+        for (int k = 0; k < 3; k++) a[k] = m->atol_pos;
+        for (int k = 3; k < 7; k++) a[k] = m->atol_quat;
+        for (int k = 7; k < 10; k++) a[k] = m->atol_vel;
+        for (int k = 10; k < 13; k++) a[k] = m->atol_omega;
+    }
+    for (int i = 0; i < m->ninter; i++)
+        for (int k = 0; k < RC_NE; k++) m->atol[m->inter_eadr[i] + k] = m->atol_energy;
+    return RC_OK;
+}
+
+rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
+{
+    rc_status st = RC_OK;
+    *out = NULL;
+    rc_model *m = calloc(1, sizeof *m);
+    if (!m) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    /* provenance and settings */
+    m->case_path = malloc(strlen(c->path) + 1);
+    if (!m->case_path) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory");
+        goto fail;
+    }
+    strcpy(m->case_path, c->path);
+    snprintf(m->title, sizeof m->title, "%s", c->title);
+    snprintf(m->unit_mass, sizeof m->unit_mass, "%s", c->unit_mass);
+    snprintf(m->unit_length, sizeof m->unit_length, "%s", c->unit_length);
+    snprintf(m->unit_time, sizeof m->unit_time, "%s", c->unit_time);
+    m->checksum = c->checksum;
+    m->tend = c->run.tend;
+    m->dtout = c->run.dtout;
+    m->rtol = c->solver.rtol;
+    m->atol_pos = c->solver.atol_pos;
+    m->atol_quat = c->solver.atol_quat;
+    m->atol_vel = c->solver.atol_vel;
+    m->atol_omega = c->solver.atol_omega;
+    m->atol_energy = c->solver.atol_energy;
+    m->max_order = c->solver.max_order;
+    m->max_steps = c->solver.max_steps;
+    m->hmax = c->solver.hmax;
+    m->h0 = c->solver.h0;
+    m->ground_y0[3] = 1.0;
+    m->grav_table = -1;
+    m->grav_ascale = 1.0;
+
+    /* curves */
+    m->ntable = c->nfunct;
+    ALLOC(m->table, m->ntable);
+    for (int k = 0; k < c->nfunct; k++) {
+        const rc_case_funct *f = &c->funct[k];
+        if ((st = rc_table_init(&m->table[k], f->id, f->npts, f->x, f->y, err))) goto fail;
+    }
+    /* bodies */
+    m->nbody = c->nrbody;
+    if (m->nbody == 0) {
+        st = RC_SET(err, RC_EINPUT, "%s: no /RBODY card: ricochet needs at least one rigid body", c->path);
+        goto fail;
+    }
+    ALLOC(m->body_id, m->nbody);
+    ALLOC(m->body_fixed, m->nbody);
+    ALLOC(m->body_yadr, m->nbody);
+    ALLOC(m->body_mass, m->nbody);
+    ALLOC(m->body_J, 9 * m->nbody);
+    ALLOC(m->body_Jinv, 9 * m->nbody);
+    ALLOC(m->body_y0, RC_NB * m->nbody);
+    ALLOC(m->body_grav, 3 * m->nbody);
+    if ((st = compile_bodies(c, m, err))) goto fail;
+    /* surfaces */
+    m->nsurf = c->nsurf;
+    ALLOC(m->surf_id, m->nsurf);
+    ALLOC(m->surf_kind, m->nsurf);
+    ALLOC(m->surf_body, m->nsurf);
+    ALLOC(m->surf_p, 3 * m->nsurf);
+    ALLOC(m->surf_n, 3 * m->nsurf);
+    ALLOC(m->surf_r, m->nsurf);
+    if ((st = compile_surfaces(c, m, err))) goto fail;
+    /* interfaces */
+    m->ninter = c->ntype6;
+    ALLOC(m->inter_id, m->ninter);
+    ALLOC(m->inter_pair, m->ninter);
+    ALLOC(m->inter_sa, m->ninter);
+    ALLOC(m->inter_sb, m->ninter);
+    ALLOC(m->inter_ba, m->ninter);
+    ALLOC(m->inter_bb, m->ninter);
+    ALLOC(m->inter_gap, m->ninter);
+    ALLOC(m->inter_tstart, m->ninter);
+    ALLOC(m->inter_tstop, m->ninter);
+    ALLOC(m->inter_visc, m->ninter);
+    ALLOC(m->inter_fscalev, m->ninter);
+    ALLOC(m->inter_ascalex, m->ninter);
+    ALLOC(m->inter_fscaleld, m->ninter);
+    ALLOC(m->inter_ascalef, m->ninter);
+    ALLOC(m->inter_ascalev, m->ninter);
+    ALLOC(m->inter_fct_ld, m->ninter);
+    ALLOC(m->inter_fct_dv, m->ninter);
+    ALLOC(m->inter_fct_df, m->ninter);
+    ALLOC(m->inter_eadr, m->ninter);
+    ALLOC(m->inter_name, m->ninter);
+    for (int i = 0; i < m->ninter; i++)
+        if ((st = compile_type6(c, m, i, err))) goto fail;
+    /* states, tolerances, Jacobian pattern */
+    if ((st = layout(m, err))) goto fail;
+    if ((st = rc_jac_build(m, err))) goto fail;
+    *out = m;
+    return RC_OK;
+fail:
+    rc_model_free(m);
+    return st;
+}
+
+void rc_model_free(rc_model *m)
+{
+    if (!m) return;
+    if (m->table)
+        for (int k = 0; k < m->ntable; k++) rc_table_free(&m->table[k]);
+    if (m->inter_name)
+        for (int i = 0; i < m->ninter; i++) free(m->inter_name[i]);
+    rc_jac_free(m);
+    void *arrays[] = {m->case_path, m->table, m->body_id, m->body_fixed, m->body_yadr, m->body_mass,
+                      m->body_J, m->body_Jinv, m->body_y0, m->body_grav, m->surf_id, m->surf_kind,
+                      m->surf_body, m->surf_p, m->surf_n, m->surf_r, m->inter_id, m->inter_pair,
+                      m->inter_sa, m->inter_sb, m->inter_ba, m->inter_bb, m->inter_gap,
+                      m->inter_tstart, m->inter_tstop, m->inter_visc, m->inter_fscalev,
+                      m->inter_ascalex, m->inter_fscaleld, m->inter_ascalef, m->inter_ascalev,
+                      m->inter_fct_ld, m->inter_fct_dv, m->inter_fct_df, m->inter_eadr,
+                      m->inter_name, m->atol};
+    for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
+    free(m);
+}
+
+int rc_model_state_size(const rc_model *m) { return m->ny; }
+
+void rc_model_print_summary(const rc_model *m, FILE *f)
+{
+    fprintf(f, "case        %s (checksum %016lx)\n", m->case_path, m->checksum);
+    if (m->title[0]) fprintf(f, "title       %s\n", m->title);
+    fprintf(f, "units       %s\n", m->unit_mass[0] ? "" : "undeclared (one consistent system assumed)");
+    if (m->unit_mass[0]) fprintf(f, "            mass %s, length %s, time %s\n", m->unit_mass, m->unit_length, m->unit_time);
+    fprintf(f, "bodies      %d (%d free, %d fixed)\n", m->nbody, m->nfree, m->nbody - m->nfree);
+    for (int b = 0; b < m->nbody && b < 20; b++) {
+        const double *y0 = m->body_y0 + RC_NB * b;
+        fprintf(f, "  /RBODY/%-6d mass %-11.5g x0 (%.5g, %.5g, %.5g) v0 (%.5g, %.5g, %.5g)%s\n", m->body_id[b],
+                m->body_mass[b], y0[0], y0[1], y0[2], y0[7], y0[8], y0[9], m->body_fixed[b] ? " fixed" : "");
+    }
+    if (m->nbody > 20) fprintf(f, "  ... %d more\n", m->nbody - 20);
+    fprintf(f, "surfaces    %d\n", m->nsurf);
+    fprintf(f, "interfaces  %d\n", m->ninter);
+    for (int i = 0; i < m->ninter && i < 20; i++)
+        fprintf(f, "  %-18s %s, Gap %.5g, Visc %.5g, Tstart %.5g, Tstop %.5g\n", m->inter_name[i],
+                m->inter_pair[i] == RC_PAIR_SPHERE_PLANE ? "sphere-plane" : "sphere-sphere", m->inter_gap[i],
+                m->inter_visc[i], m->inter_tstart[i], m->inter_tstop[i]);
+    if (m->ninter > 20) fprintf(f, "  ... %d more\n", m->ninter - 20);
+    fprintf(f, "states      %d, Jacobian nonzeros %lld\n", m->ny, (long long)m->nnz);
+    fprintf(f, "run         end time %.6g s, output every %.6g s\n", m->tend, m->dtout);
+    fprintf(f, "solver      CVODE BDF (max order %d), Newton, KLU; rtol %.3g\n", m->max_order, m->rtol);
+    fprintf(f, "            atol: position %.3g m, quaternion %.3g, velocity %.3g m/s, angular %.3g rad/s, energy %.3g J\n",
+            m->atol_pos, m->atol_quat, m->atol_vel, m->atol_omega, m->atol_energy);
+}

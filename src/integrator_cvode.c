@@ -1,0 +1,391 @@
+/*
+ * CVODE backend: BDF + Newton + KLU on the fixed sparse pattern, with
+ * rootfinding for the events. The only engine file that includes SUNDIALS.
+ *
+ * Loop: integrate to the next output time; at a root, flip the modes
+ * (events.c), write a record, and restart the integrator only when the
+ * right-hand side jumps by more than the error control tolerates over the
+ * current step (a contact that opens at zero force, or closes without
+ * damping, is continuous: no restart). Quaternion norms are kept by CVODE's
+ * projection (CVodeSetProjFn).
+ */
+#include <cvode/cvode.h>
+#include <cvode/cvode_proj.h>
+#include <math.h>
+#include <nvector/nvector_serial.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sunlinsol/sunlinsol_klu.h>
+#include <sunmatrix/sunmatrix_sparse.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "error.h"
+#include "events.h"
+#include "model.h"
+#include "output.h"
+
+/* A jump in ydot whose effect over one step, relative to the error weight,
+ * exceeds this fraction triggers a restart after an event [-]. */
+#define RC_REINIT_JUMP 0.1
+/* Events kept per root return (more are applied but not itemised). */
+#define RC_MAX_EV 64
+
+typedef struct run_ctx {
+    const rc_model *m;
+    rc_data *d;
+} run_ctx;
+
+/* ---- CVODE callbacks ----------------------------------------------- */
+static int cb_rhs(realtype t, N_Vector y, N_Vector ydot, void *ud)
+{
+    run_ctx *c = ud;
+    return rc_assemble_rhs(c->m, c->d, t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+}
+
+static int cb_jac(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void *ud, N_Vector t1, N_Vector t2,
+                  N_Vector t3)
+{
+    run_ctx *c = ud;
+    const rc_model *m = c->m;
+    /* CVODE zeroes the whole matrix: write the pattern every time */
+    sunindextype *cp = SUNSparseMatrix_IndexPointers(J), *ri = SUNSparseMatrix_IndexValues(J);
+    for (int k = 0; k <= m->ny; k++) cp[k] = (sunindextype)m->jac_colptr[k];
+    for (int64_t k = 0; k < m->nnz; k++) ri[k] = (sunindextype)m->jac_rowind[k];
+    return rc_assemble_jac(m, c->d, t, N_VGetArrayPointer(y), SUNSparseMatrix_Data(J));
+}
+
+static int cb_root(realtype t, N_Vector y, realtype *g, void *ud)
+{
+    run_ctx *c = ud;
+    c->d->n_root++;
+    rc_assemble_roots(c->m, c->d, t, N_VGetArrayPointer(y), g);
+    return 0;
+}
+
+/* Projection onto unit quaternions; the error estimate loses its radial part. */
+static int cb_proj(realtype t, N_Vector ycur, N_Vector corr, realtype eps, N_Vector err, void *ud)
+{
+    run_ctx *c = ud;
+    const rc_model *m = c->m;
+    double *y = N_VGetArrayPointer(ycur), *cr = N_VGetArrayPointer(corr);
+    double *e = err ? N_VGetArrayPointer(err) : NULL;
+    N_VConst(0.0, corr);
+    for (int b = 0; b < m->nbody; b++) {
+        if (m->body_yadr[b] < 0) continue;
+        const double *q = y + m->body_yadr[b] + 3;
+        double nq = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        for (int k = 0; k < 4; k++) cr[m->body_yadr[b] + 3 + k] = q[k] / nq - q[k];
+        if (e) {
+            double *eq = e + m->body_yadr[b] + 3, dot = 0;
+            for (int k = 0; k < 4; k++) dot += eq[k] * q[k] / nq;
+            for (int k = 0; k < 4; k++) eq[k] -= dot * q[k] / nq;
+        }
+    }
+    return 0;
+}
+
+/* ---- helpers ----------------------------------------------------------- */
+static double wall_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Add CVODE's counters to the totals (they restart at every ReInit). */
+static void add_stats(void *cv, rc_stats *s)
+{
+    long v;
+    if (CVodeGetNumSteps(cv, &v) == CV_SUCCESS) s->steps += v;
+    if (CVodeGetNumRhsEvals(cv, &v) == CV_SUCCESS) s->rhs_evals += v;
+    if (CVodeGetNumJacEvals(cv, &v) == CV_SUCCESS) s->jac_evals += v;
+    if (CVodeGetNumLinSolvSetups(cv, &v) == CV_SUCCESS) s->lin_setups += v;
+    if (CVodeGetNumNonlinSolvIters(cv, &v) == CV_SUCCESS) s->nonlin_iters += v;
+    if (CVodeGetNumNonlinSolvConvFails(cv, &v) == CV_SUCCESS) s->nonlin_fails += v;
+    if (CVodeGetNumErrTestFails(cv, &v) == CV_SUCCESS) s->err_test_fails += v;
+    if (CVodeGetNumGEvals(cv, &v) == CV_SUCCESS) s->root_evals += v;
+}
+
+/* Output buffers for one record. */
+typedef struct frame_buf {
+    double *pos, *quat, *vel, *omega, *pen, *fload, *fdamp, *fn, *point, *normal;
+    int *mode;
+    double energy[RC_NENERGY];
+} frame_buf;
+
+static void frame_free(frame_buf *f)
+{
+    void *p[] = {f->pos, f->quat, f->vel, f->omega, f->pen, f->fload, f->fdamp, f->fn, f->point, f->normal, f->mode};
+    for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
+}
+
+static int frame_alloc(const rc_model *m, frame_buf *f)
+{
+    memset(f, 0, sizeof *f);
+    size_t nb = (size_t)m->nbody + 1, ni = (size_t)m->ninter + 1;
+    f->pos = malloc(3 * nb * sizeof(double));
+    f->quat = malloc(4 * nb * sizeof(double));
+    f->vel = malloc(3 * nb * sizeof(double));
+    f->omega = malloc(3 * nb * sizeof(double));
+    f->pen = malloc(ni * sizeof(double));
+    f->fload = malloc(ni * sizeof(double));
+    f->fdamp = malloc(ni * sizeof(double));
+    f->fn = malloc(ni * sizeof(double));
+    f->point = malloc(3 * ni * sizeof(double));
+    f->normal = malloc(3 * ni * sizeof(double));
+    f->mode = malloc(ni * sizeof(int));
+    return f->pos && f->quat && f->vel && f->omega && f->pen && f->fload && f->fdamp && f->fn && f->point &&
+           f->normal && f->mode;
+}
+
+/* Fill and write one record at (t, y). */
+static rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_buf *f, double t,
+                             const double *y, int at_event, rc_error *err)
+{
+    for (int b = 0; b < m->nbody; b++) {
+        const double *s = rc_body_state(m, b, y);
+        memcpy(f->pos + 3 * b, s, 3 * sizeof(double));
+        memcpy(f->quat + 4 * b, s + 3, 4 * sizeof(double));
+        memcpy(f->vel + 3 * b, s + 7, 3 * sizeof(double));
+        memcpy(f->omega + 3 * b, s + 10, 3 * sizeof(double));
+    }
+    for (int i = 0; i < m->ninter; i++) {
+        rc_inter_report r;
+        int mode = d->inter_mode[i];
+        rc_inter_report_eval(m, i, mode == RC_MODE_CLOSED ? RC_MODE_CLOSED : RC_MODE_OPEN, t, y, &r);
+        f->pen[i] = r.p;
+        f->fload[i] = r.fload;
+        f->fdamp[i] = r.fdamp;
+        f->fn[i] = r.fn > 0 ? r.fn : 0.0;
+        memcpy(f->point + 3 * i, r.point, 3 * sizeof(double));
+        memcpy(f->normal + 3 * i, r.normal, 3 * sizeof(double));
+        f->mode[i] = mode == RC_MODE_CLOSED ? RC_OUT_MODE_CLOSED
+                     : mode == RC_MODE_OPEN ? RC_OUT_MODE_OPEN
+                                            : RC_OUT_MODE_INACTIVE;
+    }
+    rc_energy(m, t, y, f->energy);
+    if (!o) return RC_OK;
+    rc_frame fr = {t, at_event, f->pos, f->quat, f->vel, f->omega, f->pen, f->fload, f->fdamp, f->fn, f->point,
+                   f->normal, f->mode, f->energy};
+    return rc_output_frame(o, &fr, err);
+}
+
+static const char *const energy_name[RC_NENERGY] = {"energy_kinetic", "energy_potential", "energy_contact_work",
+                                                    "energy_damping", "energy_total"};
+static const char *const energy_long[RC_NENERGY] = {
+    "kinetic energy of the free bodies", "gravitational potential energy",
+    "work of the contact load-curve forces (elastic energy while closed)",
+    "energy dissipated by the contact damping", "sum of the energies above (constant in exact arithmetic)"};
+
+static rc_status open_output(const rc_model *m, const char *path, rc_output **o, rc_error *err)
+{
+    *o = NULL;
+    if (!path) return RC_OK;
+    const char **types = malloc(((size_t)m->ninter + 1) * sizeof(char *));
+    if (!types) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    for (int i = 0; i < m->ninter; i++) types[i] = "TYPE6";
+    rc_output_meta meta = {m->title, m->case_path, m->checksum, m->unit_mass, m->unit_length, m->unit_time,
+                           "CVODE BDF, Newton, KLU sparse direct, rootfinding", m->rtol, m->atol_pos,
+                           m->atol_quat, m->atol_vel, m->atol_omega, m->atol_energy, m->nbody, m->body_id,
+                           m->body_fixed, m->ninter, m->inter_id, types, RC_NENERGY, energy_name, energy_long};
+    rc_status st = rc_output_open(o, path, &meta, err);
+    free(types);
+    return st;
+}
+
+/* Does the right-hand side jump across the mode change more than the error
+ * control tolerates over the current step? ydot0: before, ydot1: after. */
+static int needs_restart(const rc_model *m, const double *y, const double *ydot0, const double *ydot1, double h)
+{
+    for (int k = 0; k < m->ny; k++) {
+        double w = m->rtol * fabs(y[k]) + m->atol[k];
+        if (fabs(ydot1[k] - ydot0[k]) * h > RC_REINIT_JUMP * w) return 1;
+    }
+    return 0;
+}
+
+static void progress(const rc_model *m, const rc_stats *s, double t, long steps, double t0)
+{
+    fprintf(stderr, "\r  t = %-10.4g s (%5.1f%%)  steps %-9ld events %-7ld wall %.1f s ", t, 100.0 * t / m->tend,
+            steps, s->events, wall_now() - t0);
+}
+
+#define CVCHECK(call, what)                                                            \
+    do {                                                                               \
+        int flag_ = (call);                                                            \
+        if (flag_ < 0) {                                                               \
+            st = RC_SET(err, RC_ESOLVER, "CVODE setup failed in %s: %s", what,         \
+                        CVodeGetReturnFlagName(flag_));                                \
+            goto done;                                                                 \
+        }                                                                              \
+    } while (0)
+
+rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, rc_error *err)
+{
+    rc_status st = RC_OK;
+    rc_error local_err;
+    if (!err) err = &local_err;
+    rc_error_clear(err);
+    rc_stats s;
+    memset(&s, 0, sizeof s);
+    SUNContext ctx = NULL;
+    N_Vector y = NULL, av = NULL, f0 = NULL, f1 = NULL;
+    SUNMatrix A = NULL;
+    SUNLinearSolver LS = NULL;
+    void *cv = NULL;
+    rc_output *out = NULL;
+    frame_buf fb;
+    memset(&fb, 0, sizeof fb);
+    int *roots = NULL;
+    const char *fail_reason = NULL;
+    char reason[1024] = "";
+    rc_data *d = rc_data_new(m);
+    const double tend = opt && opt->t_end_override > 0 ? opt->t_end_override : m->tend;
+    const int show = opt && opt->progress && isatty(2);
+    double wall0 = wall_now(), last_progress = wall0;
+
+    if (!d || !frame_alloc(m, &fb)) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory");
+        goto done;
+    }
+    run_ctx rc = {m, d};
+    if (SUNContext_Create(NULL, &ctx)) {
+        st = RC_SET(err, RC_ESOLVER, "SUNContext_Create failed");
+        goto done;
+    }
+    y = N_VNew_Serial(m->ny, ctx);
+    av = N_VNew_Serial(m->ny, ctx);
+    f0 = N_VNew_Serial(m->ny, ctx);
+    f1 = N_VNew_Serial(m->ny, ctx);
+    A = SUNSparseMatrix(m->ny, m->ny, m->nnz, CSC_MAT, ctx);
+    roots = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(int));
+    if (!y || !av || !f0 || !f1 || !A || !roots) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory for the solver");
+        goto done;
+    }
+    LS = SUNLinSol_KLU(y, A, ctx);
+    if (!LS) {
+        st = RC_SET(err, RC_ESOLVER, "SUNLinSol_KLU failed");
+        goto done;
+    }
+    /* initial state and modes */
+    double *yd = N_VGetArrayPointer(y);
+    rc_initial_state(m, yd);
+    memcpy(N_VGetArrayPointer(av), m->atol, (size_t)m->ny * sizeof(double));
+    double t = 0.0;
+    rc_modes_init(m, d, t, yd);
+
+    cv = CVodeCreate(CV_BDF, ctx);
+    if (!cv) {
+        st = RC_SET(err, RC_ESOLVER, "CVodeCreate failed");
+        goto done;
+    }
+    CVCHECK(CVodeInit(cv, cb_rhs, t, y), "CVodeInit");
+    CVCHECK(CVodeSetUserData(cv, &rc), "CVodeSetUserData");
+    CVCHECK(CVodeSVtolerances(cv, m->rtol, av), "CVodeSVtolerances");
+    CVCHECK(CVodeSetLinearSolver(cv, LS, A), "CVodeSetLinearSolver");
+    CVCHECK(CVodeSetJacFn(cv, cb_jac), "CVodeSetJacFn");
+    CVCHECK(CVodeSetMaxOrd(cv, m->max_order), "CVodeSetMaxOrd");
+    CVCHECK(CVodeSetMaxNumSteps(cv, m->max_steps), "CVodeSetMaxNumSteps");
+    CVCHECK(CVodeSetStabLimDet(cv, SUNTRUE), "CVodeSetStabLimDet");
+    if (m->hmax > 0) CVCHECK(CVodeSetMaxStep(cv, m->hmax), "CVodeSetMaxStep");
+    if (m->h0 > 0) CVCHECK(CVodeSetInitStep(cv, m->h0), "CVodeSetInitStep");
+    if (m->nfree > 0) CVCHECK(CVodeSetProjFn(cv, cb_proj), "CVodeSetProjFn");
+    if (m->ninter > 0) CVCHECK(CVodeRootInit(cv, RC_ROOTS_PER_INTER * m->ninter, cb_root), "CVodeRootInit");
+    CVCHECK(CVodeSetNoInactiveRootWarn(cv), "CVodeSetNoInactiveRootWarn");
+
+    if ((st = open_output(m, opt ? opt->output_path : NULL, &out, err))) goto done;
+    double e0[RC_NENERGY];
+    rc_energy(m, t, yd, e0);
+    if ((st = write_frame(m, d, out, &fb, t, yd, 0, err))) goto done;
+
+    /* ---- main loop: output times and events ---- */
+    long nout = 1;
+    double tout = fmin(m->dtout, tend);
+    while (t < tend) {
+        int flag = CVode(cv, tout, y, &t, CV_NORMAL);
+        if (flag < 0) {
+            snprintf(reason, sizeof reason, "CVODE failed at t = %.9g s: %s%s%s", t, CVodeGetReturnFlagName(flag),
+                     d->fail_inter >= 0 ? "; non-finite force in " : "",
+                     d->fail_inter >= 0 ? m->inter_name[d->fail_inter] : "");
+            fail_reason = reason;
+            st = RC_SET(err, RC_ESOLVER, "%s", reason);
+            break;
+        }
+        if (flag == CV_ROOT_RETURN) {
+            /* flip modes; restart only when the right-hand side jumps */
+            CVCHECK(CVodeGetRootInfo(cv, roots), "CVodeGetRootInfo");
+            rc_event ev[RC_MAX_EV];
+            cb_rhs(t, y, f0, &rc);
+            int nev = rc_events_apply(m, d, t, yd, roots, ev, RC_MAX_EV);
+            s.events += nev;
+            for (int k = 0; k < nev && k < RC_MAX_EV && out; k++)
+                if ((st = rc_output_event(out, t, ev[k].kind, m->inter_name[ev[k].inter], err))) goto done;
+            if (nev > 0) {
+                double h = 0;
+                CVodeGetCurrentStep(cv, &h);
+                cb_rhs(t, y, f1, &rc);
+                if (needs_restart(m, yd, N_VGetArrayPointer(f0), N_VGetArrayPointer(f1), h)) {
+                    add_stats(cv, &s);
+                    CVCHECK(CVodeReInit(cv, t, y), "CVodeReInit");
+                    s.reinits++;
+                }
+                if ((st = write_frame(m, d, out, &fb, t, yd, 1, err))) goto done;
+            }
+        } else {
+            if ((st = write_frame(m, d, out, &fb, t, yd, 0, err))) goto done;
+            nout++;
+            tout = fmin(nout * m->dtout, tend);
+            if (tend - tout < 1e-12 * tend) tout = tend;
+        }
+        if (show && wall_now() - last_progress > 0.5) {
+            long nst = 0;
+            CVodeGetNumSteps(cv, &nst);
+            progress(m, &s, t, s.steps + nst, wall0);
+            last_progress = wall_now();
+        }
+    }
+    double e1[RC_NENERGY];
+    rc_energy(m, t, yd, e1);
+    s.energy_residual = e1[RC_E_TOTAL] - e0[RC_E_TOTAL];
+    s.t_end = t;
+    if (opt && opt->y_end) memcpy(opt->y_end, yd, (size_t)m->ny * sizeof(double));
+
+done:
+    if (cv) add_stats(cv, &s);
+    s.wall_time = wall_now() - wall0;
+    if (show) fprintf(stderr, "\n");
+    if (out) {
+        rc_error e2;
+        rc_status st2 = rc_output_close(out, &s, st == RC_OK, fail_reason ? fail_reason : err->msg, &e2);
+        if (st == RC_OK && st2) {
+            st = st2;
+            *err = e2;
+        }
+    }
+    if (stats) *stats = s;
+    CVodeFree(&cv);
+    SUNLinSolFree(LS);
+    SUNMatDestroy(A);
+    N_VDestroy(y);
+    N_VDestroy(av);
+    N_VDestroy(f0);
+    N_VDestroy(f1);
+    SUNContext_Free(&ctx);
+    free(roots);
+    frame_free(&fb);
+    rc_data_free(d);
+    return st;
+}
+
+void rc_stats_print(const rc_stats *s, FILE *f)
+{
+    fprintf(f, "steps %ld, rhs %ld, jacobians %ld, lin. setups %ld, newton iters %ld, newton fails %ld, "
+               "error-test fails %ld, root evals %ld\n",
+            s->steps, s->rhs_evals, s->jac_evals, s->lin_setups, s->nonlin_iters, s->nonlin_fails,
+            s->err_test_fails, s->root_evals);
+    fprintf(f, "events %ld, restarts %ld, simulated %.6g s in %.3f s wall, energy balance residual %.3g J\n",
+            s->events, s->reinits, s->t_end, s->wall_time, s->energy_residual);
+}

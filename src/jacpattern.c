@@ -1,0 +1,144 @@
+/*
+ * Fixed Jacobian pattern. Every element declares the dense block of
+ * (row, column) state indices it writes; the union of the blocks and the full
+ * diagonal is sorted once into CSC, and each element receives the CSC
+ * position of every entry of its block (its slots). KLU analyses this
+ * pattern once per run.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "error.h"
+#include "model.h"
+
+static int cmp_i64(const void *a, const void *b)
+{
+    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+    return (x > y) - (x < y);
+}
+
+/* Body block: its 13 rows by its 13 columns. */
+static void block_body(const rc_model *m, int b, rc_jblock *jb)
+{
+    jb->nrow = jb->ncol = 0;
+    if (m->body_yadr[b] < 0) return;
+    for (int k = 0; k < RC_NB; k++) {
+        jb->rows[jb->nrow++] = m->body_yadr[b] + k;
+        jb->cols[jb->ncol++] = m->body_yadr[b] + k;
+    }
+}
+
+/* Interface block: rows = accelerations of its free bodies and its energy
+ * states; columns = all states of its free bodies. */
+static void block_inter(const rc_model *m, int i, rc_jblock *jb)
+{
+    jb->nrow = jb->ncol = 0;
+    const int bodies[2] = {m->inter_ba[i], m->inter_bb[i]};
+    for (int s = 0; s < 2; s++) {
+        const int b = bodies[s];
+        if (b < 0 || m->body_yadr[b] < 0) continue;
+        for (int k = 0; k < 6; k++) jb->rows[jb->nrow++] = m->body_yadr[b] + 7 + k;
+        for (int k = 0; k < RC_NB; k++) jb->cols[jb->ncol++] = m->body_yadr[b] + k;
+    }
+    for (int k = 0; k < RC_NE; k++) jb->rows[jb->nrow++] = m->inter_eadr[i] + k;
+    if (jb->ncol == 0) jb->nrow = 0; /* nothing depends on states */
+}
+
+/* CSC position of (row, col); the entry exists by construction. */
+static int64_t find_slot(const rc_model *m, int row, int col)
+{
+    int64_t lo = m->jac_colptr[col], hi = m->jac_colptr[col + 1] - 1;
+    while (lo <= hi) {
+        int64_t mid = lo + (hi - lo) / 2;
+        if (m->jac_rowind[mid] == row) return mid;
+        if (m->jac_rowind[mid] < row) lo = mid + 1;
+        else hi = mid - 1;
+    }
+    return -1;
+}
+
+static rc_status fill_slots(const rc_model *m, rc_jblock *jb, rc_error *err)
+{
+    if (jb->nrow * jb->ncol == 0) return RC_OK;
+    jb->slot = malloc((size_t)(jb->nrow * jb->ncol) * sizeof(int64_t));
+    if (!jb->slot) RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
+    for (int r = 0; r < jb->nrow; r++)
+        for (int c = 0; c < jb->ncol; c++) {
+            int64_t s = find_slot(m, jb->rows[r], jb->cols[c]);
+            if (s < 0) RC_RAISE(err, RC_EINTERNAL, "Jacobian slot (%d, %d) missing", jb->rows[r], jb->cols[c]);
+            jb->slot[r * jb->ncol + c] = s;
+        }
+    return RC_OK;
+}
+
+rc_status rc_jac_build(rc_model *m, rc_error *err)
+{
+    const int64_t ny = m->ny;
+    m->jb_body = calloc((size_t)m->nbody + 1, sizeof(rc_jblock));
+    m->jb_inter = calloc((size_t)m->ninter + 1, sizeof(rc_jblock));
+    if (!m->jb_body || !m->jb_inter) RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
+    /* count and collect the keys col * ny + row */
+    int64_t nkey = ny;
+    for (int b = 0; b < m->nbody; b++) {
+        block_body(m, b, &m->jb_body[b]);
+        nkey += (int64_t)m->jb_body[b].nrow * m->jb_body[b].ncol;
+    }
+    for (int i = 0; i < m->ninter; i++) {
+        block_inter(m, i, &m->jb_inter[i]);
+        nkey += (int64_t)m->jb_inter[i].nrow * m->jb_inter[i].ncol;
+    }
+    int64_t *key = malloc((size_t)nkey * sizeof(int64_t));
+    if (!key) RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
+    int64_t n = 0;
+    for (int64_t k = 0; k < ny; k++) key[n++] = k * ny + k;
+    for (int e = 0; e < m->nbody + m->ninter; e++) {
+        const rc_jblock *jb = e < m->nbody ? &m->jb_body[e] : &m->jb_inter[e - m->nbody];
+        for (int r = 0; r < jb->nrow; r++)
+            for (int c = 0; c < jb->ncol; c++) key[n++] = (int64_t)jb->cols[c] * ny + jb->rows[r];
+    }
+    /* sort, unique, split into CSC */
+    qsort(key, (size_t)n, sizeof(int64_t), cmp_i64);
+    int64_t u = 0;
+    for (int64_t k = 0; k < n; k++)
+        if (u == 0 || key[k] != key[u - 1]) key[u++] = key[k];
+    m->nnz = u;
+    m->jac_colptr = calloc((size_t)ny + 1, sizeof(int64_t));
+    m->jac_rowind = malloc((size_t)u * sizeof(int64_t));
+    m->jac_diag = malloc((size_t)ny * sizeof(int64_t));
+    if (!m->jac_colptr || !m->jac_rowind || !m->jac_diag) {
+        free(key);
+        RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
+    }
+    for (int64_t k = 0; k < u; k++) {
+        m->jac_rowind[k] = key[k] % ny;
+        m->jac_colptr[key[k] / ny + 1]++;
+    }
+    free(key);
+    for (int64_t c = 0; c < ny; c++) m->jac_colptr[c + 1] += m->jac_colptr[c];
+    /* slots */
+    for (int64_t k = 0; k < ny; k++) m->jac_diag[k] = find_slot(m, (int)k, (int)k);
+    for (int b = 0; b < m->nbody; b++) {
+        rc_status st = fill_slots(m, &m->jb_body[b], err);
+        if (st) return st;
+    }
+    for (int i = 0; i < m->ninter; i++) {
+        rc_status st = fill_slots(m, &m->jb_inter[i], err);
+        if (st) return st;
+    }
+    return RC_OK;
+}
+
+void rc_jac_free(rc_model *m)
+{
+    if (m->jb_body)
+        for (int b = 0; b < m->nbody; b++) free(m->jb_body[b].slot);
+    if (m->jb_inter)
+        for (int i = 0; i < m->ninter; i++) free(m->jb_inter[i].slot);
+    free(m->jb_body);
+    free(m->jb_inter);
+    free(m->jac_colptr);
+    free(m->jac_rowind);
+    free(m->jac_diag);
+    m->jb_body = m->jb_inter = NULL;
+    m->jac_colptr = m->jac_rowind = m->jac_diag = NULL;
+}

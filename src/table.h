@@ -1,0 +1,25 @@
+/*
+ * Tabulated curves y(x) (/FUNCT): piecewise linear between the points as in
+ * Radioss, extended linearly beyond both ends with the end slopes. Interior
+ * interpolation by GSL (gsl_interp_linear); the extension is ours, so that
+ * every law has a smooth extension across its switching surface.
+ */
+#ifndef RC_TABLE_H
+#define RC_TABLE_H
+
+#include "ricochet/ricochet.h"
+
+typedef struct rc_table {
+    int id;          /* /FUNCT id */
+    int n;           /* points, >= 2 */
+    double *x, *y;   /* [n], x strictly increasing */
+    void *interp;    /* gsl_interp * (opaque here) */
+} rc_table;
+
+rc_status rc_table_init(rc_table *t, int id, int n, const double *x, const double *y,
+                        rc_error *err);
+void rc_table_free(rc_table *t);
+/* Value and slope at x (linear extension outside [x0, xn]). */
+void rc_table_eval(const rc_table *t, double x, double *f, double *dfdx);
+
+#endif

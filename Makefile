@@ -69,7 +69,7 @@ demo: deps
 	@$(MAKE) --no-print-directory all
 	@mkdir -p out
 	$(BIN) run cases/demo_sphere_drop.rad -o out/demo.nc
-	python3 scripts/plot.py out/demo.nc out/demo
+	/usr/bin/python3 scripts/plot.py out/demo.nc out/demo
 	@echo "results: out/demo.nc, plots: out/demo_*.png"
 
 # AddressSanitizer + UndefinedBehaviorSanitizer build, unit tests and demo case.

@@ -195,13 +195,33 @@ static rc_status open_output(const rc_model *m, const char *path, rc_output **o,
     return st;
 }
 
-/* Does the right-hand side jump across the mode change more than the error
- * control tolerates over the current step? ydot0: before, ydot1: after. */
-static int needs_restart(const rc_model *m, const double *y, const double *ydot0, const double *ydot1, double h)
+/* Must the integrator restart after a mode change at troot? CVODE has
+ * already stepped to tn >= troot with the old modes; continuing is right only
+ * if the old and new right-hand sides agree, within the error weights, over
+ * [troot, tn] and over the next step h: compare them at troot and at tn.
+ * old_mode is the mode array before the flip; d->inter_mode after it. */
+static int needs_restart(const rc_model *m, rc_data *d, void *cv, int *old_mode, double troot,
+                         const double *yroot, N_Vector ytn, N_Vector f0, N_Vector f1)
 {
-    for (int k = 0; k < m->ny; k++) {
-        double w = m->rtol * fabs(y[k]) + m->atol[k];
-        if (fabs(ydot1[k] - ydot0[k]) * h > RC_REINIT_JUMP * w) return 1;
+    double h = 0, tn = troot;
+    CVodeGetCurrentStep(cv, &h);
+    CVodeGetCurrentTime(cv, &tn);
+    if (CVodeGetDky(cv, tn, 0, ytn) != CV_SUCCESS) return 1;
+    const double *y_at[2] = {yroot, N_VGetArrayPointer(ytn)};
+    const double t_at[2] = {troot, tn}, span[2] = {h, (tn - troot) + h};
+    double *a = N_VGetArrayPointer(f0), *b = N_VGetArrayPointer(f1);
+    for (int s = 0; s < 2; s++) {
+        /* old modes, then new modes, at the same state */
+        int *new_mode = d->inter_mode;
+        d->inter_mode = old_mode;
+        int bad = rc_assemble_rhs(m, d, t_at[s], y_at[s], a);
+        d->inter_mode = new_mode;
+        bad |= rc_assemble_rhs(m, d, t_at[s], y_at[s], b);
+        if (bad) return 1;
+        for (int k = 0; k < m->ny; k++) {
+            double w = m->rtol * fabs(y_at[s][k]) + m->atol[k];
+            if (fabs(b[k] - a[k]) * span[s] > RC_REINIT_JUMP * w) return 1;
+        }
     }
     return 0;
 }
@@ -231,7 +251,8 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     rc_stats s;
     memset(&s, 0, sizeof s);
     SUNContext ctx = NULL;
-    N_Vector y = NULL, av = NULL, f0 = NULL, f1 = NULL;
+    N_Vector y = NULL, av = NULL, f0 = NULL, f1 = NULL, ytn = NULL;
+    int *old_mode = NULL;
     SUNMatrix A = NULL;
     SUNLinearSolver LS = NULL;
     void *cv = NULL;
@@ -259,9 +280,11 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     av = N_VNew_Serial(m->ny, ctx);
     f0 = N_VNew_Serial(m->ny, ctx);
     f1 = N_VNew_Serial(m->ny, ctx);
+    ytn = N_VNew_Serial(m->ny, ctx);
+    old_mode = calloc((size_t)m->ninter + 1, sizeof(int));
     A = SUNSparseMatrix(m->ny, m->ny, m->nnz, CSC_MAT, ctx);
     roots = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(int));
-    if (!y || !av || !f0 || !f1 || !A || !roots) {
+    if (!y || !av || !f0 || !f1 || !ytn || !old_mode || !A || !roots) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the solver");
         goto done;
     }
@@ -318,21 +341,23 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
             /* flip modes; restart only when the right-hand side jumps */
             CVCHECK(CVodeGetRootInfo(cv, roots), "CVodeGetRootInfo");
             rc_event ev[RC_MAX_EV];
-            cb_rhs(t, y, f0, &rc);
+            memcpy(old_mode, d->inter_mode, (size_t)m->ninter * sizeof(int));
             int nev = rc_events_apply(m, d, t, yd, roots, ev, RC_MAX_EV);
             s.events += nev;
             for (int k = 0; k < nev && k < RC_MAX_EV && out; k++)
                 if ((st = rc_output_event(out, t, ev[k].kind, m->inter_name[ev[k].inter], err))) goto done;
             if (nev > 0) {
-                double h = 0;
-                CVodeGetCurrentStep(cv, &h);
-                cb_rhs(t, y, f1, &rc);
-                if (needs_restart(m, yd, N_VGetArrayPointer(f0), N_VGetArrayPointer(f1), h)) {
+                if (needs_restart(m, d, cv, old_mode, t, yd, ytn, f0, f1)) {
                     add_stats(cv, &s);
                     CVCHECK(CVodeReInit(cv, t, y), "CVodeReInit");
                     s.reinits++;
                 }
                 if ((st = write_frame(m, d, out, &fb, t, yd, 1, err))) goto done;
+            }
+            /* an event on an output time stands for that output */
+            if (tout - t <= 1e-12 * fmax(fabs(t), m->dtout)) {
+                nout++;
+                tout = fmin(nout * m->dtout, tend);
             }
         } else {
             if ((st = write_frame(m, d, out, &fb, t, yd, 0, err))) goto done;
@@ -373,6 +398,8 @@ done:
     N_VDestroy(av);
     N_VDestroy(f0);
     N_VDestroy(f1);
+    N_VDestroy(ytn);
+    free(old_mode);
     SUNContext_Free(&ctx);
     free(roots);
     frame_free(&fb);

@@ -1,0 +1,99 @@
+"""Write ricochet case decks in the fixed-width Radioss block format.
+
+Integer fields are 10 characters, real fields 20 (docs/case-format.md).
+Used by the validation problems and the benchmarks to generate their decks,
+including the tolerance variants of the convergence studies.
+"""
+
+
+def i10(v):
+    return "" .rjust(10) if v is None else f"{int(v):>10d}"
+
+
+def r20(v):
+    return "".rjust(20) if v is None else f"{float(v):>20.12g}"
+
+
+def line(*fields):
+    """fields: ('i', v) or ('r', v) tuples; returns the data line."""
+    out = []
+    for kind, v in fields:
+        out.append(i10(v) if kind == "i" else r20(v))
+    return "".join(out).rstrip()
+
+
+class Deck:
+    def __init__(self, title="ricochet case", units=("kg", "m", "s")):
+        self.cards = ["#RADIOSS STARTER", "/BEGIN", title, line(("i", 2022), ("i", 0)),
+                      "".join(u.rjust(20) for u in units), "".join(u.rjust(20) for u in units)]
+
+    def add(self, header, *lines, title=None):
+        self.cards.append(header)
+        if title is not None:
+            self.cards.append(title)
+        self.cards.extend(lines)
+
+    def funct(self, fid, xs, ys, title="curve"):
+        self.add(f"/FUNCT/{fid}", *[line(("r", x), ("r", y)) for x, y in zip(xs, ys)], title=title)
+
+    def nodes(self, nodes):
+        """nodes: list of (id, x, y, z)."""
+        self.add("/NODE", *[line(("i", n), ("r", x), ("r", y), ("r", z)) for n, x, y, z in nodes])
+
+    def grnod(self, gid, ids, title="group"):
+        rows = [ids[k:k + 10] for k in range(0, len(ids), 10)]
+        self.add(f"/GRNOD/NODE/{gid}", *["".join(i10(v) for v in r) for r in rows], title=title)
+
+    def rbody(self, bid, node, mass, J, Joff=(0.0, 0.0, 0.0), grnod=None, title="body"):
+        self.add(f"/RBODY/{bid}",
+                 line(("i", node), ("i", None), ("i", None), ("i", None), ("r", mass), ("i", grnod)),
+                 line(("r", J[0]), ("r", J[1]), ("r", J[2])),
+                 line(("r", Joff[0]), ("r", Joff[1]), ("r", Joff[2])), title=title)
+
+    def sphere(self, sid, body, centre, radius, title="sphere"):
+        self.add(f"/SURF/ELLIPS/{sid}", line(("i", 0), ("i", 2), ("i", body)),
+                 line(("r", centre[0]), ("r", centre[1]), ("r", centre[2])),
+                 line(("r", radius), ("r", radius), ("r", radius)), title=title)
+
+    def plane(self, sid, m, m1, body=0, title="plane"):
+        lines = [line(("r", m[0]), ("r", m[1]), ("r", m[2])), line(("r", m1[0]), ("r", m1[1]), ("r", m1[2]))]
+        if body:
+            lines.append(line(("i", body)))
+        self.add(f"/SURF/PLANE/{sid}", *lines, title=title)
+
+    def type6(self, iid, s1, s2, fct_ld, gap=0.0, tstart=None, tstop=None, visc=None,
+              ascalex=None, fscaleld=None, title="contact"):
+        self.add(f"/INTER/TYPE6/{iid}",
+                 line(("i", s1), ("i", s2)),
+                 line(("r", None), ("r", None), ("r", gap), ("r", tstart), ("r", tstop)),
+                 line(("i", None), ("i", 0), ("i", 0), ("i", 0), ("i", 0), ("i", 0), ("r", None), ("r", None)),
+                 line(("i", fct_ld), ("i", 0), ("r", ascalex), ("r", fscaleld), ("i", 0)),
+                 line(("i", 0), ("i", None), ("r", None), ("r", None)),
+                 line(("r", visc), ("i", 0), ("i", 0), ("r", None)), title=title)
+
+    def inivel(self, iid, v, grnod, rot=False):
+        self.add(f"/INIVEL/{'ROT' if rot else 'TRA'}/{iid}",
+                 line(("r", v[0]), ("r", v[1]), ("r", v[2]), ("i", grnod), ("i", 0)), title="initial velocity")
+
+    def grav(self, gid, direction, fscale, grnod=0):
+        self.add(f"/GRAV/{gid}", f"{0:>10d}{direction:>10s}{0:>10d}{0:>10d}{grnod:>10d}" + r20(1.0) + r20(fscale),
+                 title="gravity")
+
+    def bcs(self, bid, grnod):
+        self.add(f"/BCS/{bid}", f"{'111 111':>10s}{0:>10d}{grnod:>10d}", title="fixed")
+
+    def run(self, tend, dtout):
+        self.add("/RUN", line(("r", tend), ("r", dtout)))
+
+    def solver(self, rtol=1e-6, atol_pos=1e-9, atol_quat=1e-9, atol_vel=1e-6, atol_omega=1e-6,
+               atol_energy=1e-6, max_order=5, max_steps=100000, hmax=0.0, h0=0.0):
+        self.add("/SOLVER", line(("i", 1), ("i", max_order), ("i", max_steps), ("r", rtol), ("r", hmax), ("r", h0)),
+                 line(("r", atol_pos), ("r", atol_quat), ("r", atol_vel), ("r", atol_omega)),
+                 line(("r", atol_energy)))
+
+    def text(self):
+        return "\n".join(self.cards + ["/END", ""])
+
+    def write(self, path):
+        with open(path, "w") as f:
+            f.write(self.text())

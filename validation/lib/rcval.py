@@ -1,0 +1,80 @@
+"""Run ricochet and read its netCDF output, for the validation checks.
+
+Each check prints one line per assertion, "PASS name: ..." or
+"FAIL name: ...", and scripts/check.sh counts them.
+"""
+import os
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+from netCDF4 import Dataset
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+RICOCHET = os.environ.get("RICOCHET", os.path.join(ROOT, "build", "ricochet"))
+FAILED = []
+
+
+def run(deck, name="case"):
+    """Write the deck to a temporary directory, run it, return the output path."""
+    d = tempfile.mkdtemp(prefix="rcval-")
+    case = os.path.join(d, name + ".rad")
+    out = os.path.join(d, name + ".nc")
+    deck.write(case)
+    p = subprocess.run([RICOCHET, "run", case, "-o", out, "-q"], capture_output=True, text=True)
+    if p.returncode != 0:
+        raise RuntimeError(f"ricochet failed ({p.returncode}): {p.stderr.strip()}")
+    return out
+
+
+def run_file(case):
+    d = tempfile.mkdtemp(prefix="rcval-")
+    out = os.path.join(d, "out.nc")
+    p = subprocess.run([RICOCHET, "run", case, "-o", out, "-q"], capture_output=True, text=True)
+    if p.returncode != 0:
+        raise RuntimeError(f"ricochet failed ({p.returncode}): {p.stderr.strip()}")
+    return out
+
+
+class Result:
+    """The parts of an output file the checks use."""
+
+    def __init__(self, path):
+        with Dataset(path) as nc:
+            self.t = np.array(nc["time"][:])
+            self.at_event = np.array(nc["at_event"][:])
+            self.pos = np.array(nc["body_position"][:])
+            self.vel = np.array(nc["body_velocity"][:])
+            self.fn = np.array(nc["inter_force_normal"][:]) if "inter_force_normal" in nc.variables else None
+            self.pen = np.array(nc["inter_penetration"][:]) if "inter_penetration" in nc.variables else None
+            n = len(nc.dimensions["event"])
+            self.ev_t = np.array(nc["event_time"][:]) if n else np.zeros(0)
+            self.ev_kind = [str(k) for k in nc["event_kind"][:]] if n else []
+            self.ev_elem = [str(k) for k in nc["event_element"][:]] if n else []
+            self.attrs = {k: nc.getncattr(k) for k in nc.ncattrs()}
+            self.energy = {v: np.array(nc[v][:]) for v in nc.variables if v.startswith("energy_")}
+
+    def events(self, kind):
+        return np.array([t for t, k in zip(self.ev_t, self.ev_kind) if k == kind])
+
+    def state_at(self, t, kind_filter=None):
+        """Index of the event record written at time t."""
+        idx = np.where((self.at_event == 1) & (np.abs(self.t - t) <= 1e-14 * max(1.0, abs(t))))[0]
+        return idx[-1]
+
+
+def check(name, ok, detail):
+    print(f"{'PASS' if ok else 'FAIL'} {name}: {detail}")
+    sys.stdout.flush()
+    if not ok:
+        FAILED.append(name)
+
+
+def rel(a, b):
+    return abs(a - b) / abs(b)
+
+
+def finish():
+    sys.exit(1 if FAILED else 0)

@@ -14,6 +14,12 @@ read -r up uf < <(tail -n 1 "$log" | sed -E 's/^([0-9]+) passed, ([0-9]+) failed
 pass=$((pass + ${up:-0}))
 fail=$((fail + ${uf:-1}))
 
+# command-line behaviour
+bash tests/cli_test.sh "$build/ricochet" > "$log" 2>&1
+cat "$log"
+pass=$((pass + $(grep -c '^PASS ' "$log")))
+fail=$((fail + $(grep -c '^FAIL ' "$log")))
+
 # validation problems: each check.py prints PASS/FAIL lines
 for chk in validation/*/check.py; do
     dir=$(dirname "$chk")

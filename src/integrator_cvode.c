@@ -87,6 +87,32 @@ static int cb_proj(realtype t, N_Vector ycur, N_Vector corr, realtype eps, N_Vec
 }
 
 /* ---- helpers ----------------------------------------------------------- */
+/* Only the crossing that changes a mode is a root: Tstart/Tstop rising;
+ * contact: p rising when open, F_n falling when closed. */
+static int set_root_directions(const rc_model *m, const rc_data *d, void *cv, int *dir)
+{
+    if (m->ninter == 0) return CV_SUCCESS;
+    for (int i = 0; i < m->ninter; i++) {
+        int *r = dir + RC_ROOTS_PER_INTER * i;
+        r[RC_ROOT_TSTART] = 1;
+        r[RC_ROOT_TSTOP] = 1;
+        r[RC_ROOT_CONTACT] = d->inter_mode[i] == RC_MODE_OPEN ? 1 : d->inter_mode[i] == RC_MODE_CLOSED ? -1 : 0;
+    }
+    return CVodeSetRootDirection(cv, dir);
+}
+
+/* A root function exactly zero at the event state (flat to rounding, e.g. a
+ * penetration of two slowly separating bodies) makes CVODE stop with "close
+ * roots" on the next call; after a restart CVODE instead deactivates it until
+ * it moves away from zero. */
+static int root_on_zero(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
+{
+    rc_assemble_roots(m, d, t, y, g);
+    for (int k = 0; k < RC_ROOTS_PER_INTER * m->ninter; k++)
+        if (g[k] == 0.0) return 1;
+    return 0;
+}
+
 static double wall_now(void)
 {
     struct timespec ts;
@@ -252,7 +278,8 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     memset(&s, 0, sizeof s);
     SUNContext ctx = NULL;
     N_Vector y = NULL, av = NULL, f0 = NULL, f1 = NULL, ytn = NULL;
-    int *old_mode = NULL;
+    int *old_mode = NULL, *rootdir = NULL;
+    double *gbuf = NULL;
     SUNMatrix A = NULL;
     SUNLinearSolver LS = NULL;
     void *cv = NULL;
@@ -282,9 +309,11 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     f1 = N_VNew_Serial(m->ny, ctx);
     ytn = N_VNew_Serial(m->ny, ctx);
     old_mode = calloc((size_t)m->ninter + 1, sizeof(int));
+    rootdir = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(int));
+    gbuf = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(double));
     A = SUNSparseMatrix(m->ny, m->ny, m->nnz, CSC_MAT, ctx);
     roots = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(int));
-    if (!y || !av || !f0 || !f1 || !ytn || !old_mode || !A || !roots) {
+    if (!y || !av || !f0 || !f1 || !ytn || !old_mode || !rootdir || !gbuf || !A || !roots) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the solver");
         goto done;
     }
@@ -318,6 +347,7 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     if (m->nfree > 0) CVCHECK(CVodeSetProjFn(cv, cb_proj), "CVodeSetProjFn");
     if (m->ninter > 0) CVCHECK(CVodeRootInit(cv, RC_ROOTS_PER_INTER * m->ninter, cb_root), "CVodeRootInit");
     CVCHECK(CVodeSetNoInactiveRootWarn(cv), "CVodeSetNoInactiveRootWarn");
+    CVCHECK(set_root_directions(m, d, cv, rootdir), "CVodeSetRootDirection");
 
     if ((st = open_output(m, opt ? opt->output_path : NULL, &out, err))) goto done;
     double e0[RC_NENERGY];
@@ -346,14 +376,14 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
             s.events += nev;
             for (int k = 0; k < nev && k < RC_MAX_EV && out; k++)
                 if ((st = rc_output_event(out, t, ev[k].kind, m->inter_name[ev[k].inter], err))) goto done;
-            if (nev > 0) {
-                if (needs_restart(m, d, cv, old_mode, t, yd, ytn, f0, f1)) {
-                    add_stats(cv, &s);
-                    CVCHECK(CVodeReInit(cv, t, y), "CVodeReInit");
-                    s.reinits++;
-                }
-                if ((st = write_frame(m, d, out, &fb, t, yd, 1, err))) goto done;
+            if (nev > 0) CVCHECK(set_root_directions(m, d, cv, rootdir), "CVodeSetRootDirection");
+            if ((nev > 0 && needs_restart(m, d, cv, old_mode, t, yd, ytn, f0, f1)) ||
+                root_on_zero(m, d, t, yd, gbuf)) {
+                add_stats(cv, &s);
+                CVCHECK(CVodeReInit(cv, t, y), "CVodeReInit");
+                s.reinits++;
             }
+            if (nev > 0 && (st = write_frame(m, d, out, &fb, t, yd, 1, err))) goto done;
             /* an event on an output time stands for that output */
             if (tout - t <= 1e-12 * fmax(fabs(t), m->dtout)) {
                 nout++;
@@ -400,6 +430,8 @@ done:
     N_VDestroy(f1);
     N_VDestroy(ytn);
     free(old_mode);
+    free(rootdir);
+    free(gbuf);
     SUNContext_Free(&ctx);
     free(roots);
     frame_free(&fb);

@@ -27,20 +27,22 @@ static void load_body(const rc_model *m, int b, const double *y, T *yc)
     for (int k = 0; k < RC_NB; k++) yc[k] = s[k];
 }
 
-static void jac_body(const rc_model *m, int b, double t, const double *y, double *val)
+/* Dense 13 x 13 block of body b: d(ydot_b)/d(y_b). */
+static void dense_body(const rc_model *m, int b, double t, const double *y, double *out)
 {
-    const rc_jblock *jb = &m->jb_body[b];
     T yc[RC_NB], yd[RC_NB];
     load_body(m, b, y, yc);
     for (int c = 0; c < RC_NB; c++) {
         yc[c] += I * RC_CSTEP;
         body_rhs_c(m, b, t, yc, yd);
-        for (int r = 0; r < RC_NB; r++) val[jb->slot[r * jb->ncol + c]] += cimag(yd[r]) / RC_CSTEP;
+        for (int r = 0; r < RC_NB; r++) out[r * RC_NB + c] = cimag(yd[r]) / RC_CSTEP;
         yc[c] = creal(yc[c]);
     }
 }
 
-static void jac_inter(const rc_model *m, int i, double t, const double *y, double *val)
+/* Dense block of interface i in closed mode: rows = accelerations of a (if
+ * free), of b (if free), energy rates; columns = states of a, then b. */
+static void dense_inter(const rc_model *m, int i, const double *y, double *out)
 {
     const rc_jblock *jb = &m->jb_inter[i];
     const int ba = m->inter_ba[i], bb = m->inter_bb[i];
@@ -48,32 +50,48 @@ static void jac_inter(const rc_model *m, int i, double t, const double *y, doubl
     T ya[RC_NB], yb[RC_NB];
     load_body(m, ba, y, ya);
     load_body(m, bb, y, yb);
-    (void)t;
-    /* columns: states of a (if free), then of b (if free) */
     for (int c = 0; c < jb->ncol; c++) {
         T *yp = (fa && c < RC_NB) ? ya + c : yb + (c - (fa ? RC_NB : 0));
         *yp += I * RC_CSTEP;
-        T acc[12] = {0}, edot[2];
-        type6_c(m, i, RC_MODE_CLOSED, ya, yb, fa ? acc : NULL, fb ? acc + 6 : NULL, edot, NULL,
-                NULL, NULL);
+        T acc[12] = {0}, edot[RC_NE];
+        type6_c(m, i, RC_MODE_CLOSED, ya, yb, fa ? acc : NULL, fb ? acc + 6 : NULL, edot, NULL, NULL, NULL);
         *yp = creal(*yp);
-        /* rows: acc of a (6), acc of b (6), energy (2), as in the pattern */
         int r = 0;
         if (fa)
-            for (int k = 0; k < 6; k++, r++) val[jb->slot[r * jb->ncol + c]] += cimag(acc[k]) / RC_CSTEP;
+            for (int k = 0; k < 6; k++, r++) out[r * jb->ncol + c] = cimag(acc[k]) / RC_CSTEP;
         if (fb)
-            for (int k = 0; k < 6; k++, r++) val[jb->slot[r * jb->ncol + c]] += cimag(acc[6 + k]) / RC_CSTEP;
-        for (int k = 0; k < RC_NE; k++, r++) val[jb->slot[r * jb->ncol + c]] += cimag(edot[k]) / RC_CSTEP;
+            for (int k = 0; k < 6; k++, r++) out[r * jb->ncol + c] = cimag(acc[6 + k]) / RC_CSTEP;
+        for (int k = 0; k < RC_NE; k++, r++) out[r * jb->ncol + c] = cimag(edot[k]) / RC_CSTEP;
     }
+}
+
+void rc_jac_dense_block(const rc_model *m, int is_inter, int e, double t, const double *y, double *out)
+{
+    if (is_inter) dense_inter(m, e, y, out);
+    else dense_body(m, e, t, y, out);
+}
+
+/* Add a dense block into the CSC values through its slots (-1: pruned). */
+static void scatter(const rc_jblock *jb, const double *dense, double *val)
+{
+    for (int k = 0; k < jb->nrow * jb->ncol; k++)
+        if (jb->slot[k] >= 0) val[jb->slot[k]] += dense[k];
 }
 
 int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val)
 {
+    double dense[RC_JB_MAX];
     d->n_jac++;
     memset(val, 0, (size_t)m->nnz * sizeof(double));
     for (int b = 0; b < m->nbody; b++)
-        if (m->body_yadr[b] >= 0) jac_body(m, b, t, y, val);
+        if (m->body_yadr[b] >= 0) {
+            dense_body(m, b, t, y, dense);
+            scatter(&m->jb_body[b], dense, val);
+        }
     for (int i = 0; i < m->ninter; i++)
-        if (d->inter_mode[i] == RC_MODE_CLOSED && m->jb_inter[i].ncol > 0) jac_inter(m, i, t, y, val);
+        if (d->inter_mode[i] == RC_MODE_CLOSED && m->jb_inter[i].ncol > 0) {
+            dense_inter(m, i, y, dense);
+            scatter(&m->jb_inter[i], dense, val);
+        }
     return 0;
 }

@@ -1,10 +1,16 @@
 /*
  * Fixed Jacobian pattern. Every element declares the dense block of
- * (row, column) state indices it writes; the union of the blocks and the full
- * diagonal is sorted once into CSC, and each element receives the CSC
- * position of every entry of its block (its slots). KLU analyses this
- * pattern once per run.
+ * (row, column) state indices it may write. The entries that are
+ * structurally zero (a centred sphere's rotation does not move its surface;
+ * positions do not depend on angular velocities; ...) are pruned by probing:
+ * the element's exact block is evaluated at two generic states (every body
+ * moved, turned and set moving by deterministic pseudo-random amounts, the
+ * contact law closed) and an entry zero in both is dropped. The union of the
+ * kept entries and the full diagonal is sorted once into CSC, and each
+ * element receives the CSC position of every entry of its block (its slots,
+ * -1 when pruned). KLU analyses this pattern once per run.
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -44,6 +50,69 @@ static void block_inter(const rc_model *m, int i, rc_jblock *jb)
     if (jb->ncol == 0) jb->nrow = 0; /* nothing depends on states */
 }
 
+/* Deterministic generator in [-1, 1) (64-bit LCG). */
+static double probe_rand(uint64_t *s)
+{
+    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(*s >> 11) / 4503599627370496.0 - 1.0;
+}
+
+/* Generic state: initial state, bodies shifted by up to 1e-4 (length units),
+ * turned to a random orientation, random velocities and angular velocities. */
+static void probe_state(const rc_model *m, uint64_t seed, double *y)
+{
+    rc_initial_state(m, y);
+    for (int b = 0; b < m->nbody; b++) {
+        if (m->body_yadr[b] < 0) continue;
+        double *s = y + m->body_yadr[b], nq = 0;
+        for (int k = 0; k < 3; k++) s[k] += 1e-4 * probe_rand(&seed);
+        for (int k = 3; k < 7; k++) {
+            s[k] = probe_rand(&seed);
+            nq += s[k] * s[k];
+        }
+        for (int k = 3; k < 7; k++) s[k] /= sqrt(nq);
+        for (int k = 7; k < 13; k++) s[k] = probe_rand(&seed);
+    }
+    for (int i = 0; i < m->ninter; i++)
+        for (int k = 0; k < RC_NE; k++) y[m->inter_eadr[i] + k] = probe_rand(&seed);
+}
+
+/* Mark the kept entries of each block in its slot array: 0 kept, -1 pruned. */
+static rc_status probe_blocks(rc_model *m, rc_error *err)
+{
+    double *y[2], dense[RC_JB_MAX];
+    y[0] = malloc((size_t)m->ny * sizeof(double));
+    y[1] = malloc((size_t)m->ny * sizeof(double));
+    rc_status st = RC_OK;
+    if (!y[0] || !y[1]) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
+        goto done;
+    }
+    probe_state(m, 0x5eed1ULL, y[0]);
+    probe_state(m, 0x5eed2ULL, y[1]);
+    for (int e = 0; e < m->nbody + m->ninter && !st; e++) {
+        const int is_inter = e >= m->nbody, idx = is_inter ? e - m->nbody : e;
+        rc_jblock *jb = is_inter ? &m->jb_inter[idx] : &m->jb_body[idx];
+        const int n = jb->nrow * jb->ncol;
+        if (n == 0) continue;
+        jb->slot = malloc((size_t)n * sizeof(int64_t));
+        if (!jb->slot) {
+            st = RC_SET(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
+            break;
+        }
+        for (int k = 0; k < n; k++) jb->slot[k] = -1;
+        for (int p = 0; p < 2; p++) {
+            rc_jac_dense_block(m, is_inter, idx, 0.0, y[p], dense);
+            for (int k = 0; k < n; k++)
+                if (dense[k] != 0.0) jb->slot[k] = 0; /* NaN counts as kept */
+        }
+    }
+done:
+    free(y[0]);
+    free(y[1]);
+    return st;
+}
+
 /* CSC position of (row, col); the entry exists by construction. */
 static int64_t find_slot(const rc_model *m, int row, int col)
 {
@@ -59,11 +128,9 @@ static int64_t find_slot(const rc_model *m, int row, int col)
 
 static rc_status fill_slots(const rc_model *m, rc_jblock *jb, rc_error *err)
 {
-    if (jb->nrow * jb->ncol == 0) return RC_OK;
-    jb->slot = malloc((size_t)(jb->nrow * jb->ncol) * sizeof(int64_t));
-    if (!jb->slot) RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
     for (int r = 0; r < jb->nrow; r++)
         for (int c = 0; c < jb->ncol; c++) {
+            if (jb->slot[r * jb->ncol + c] < 0) continue; /* pruned */
             int64_t s = find_slot(m, jb->rows[r], jb->cols[c]);
             if (s < 0) RC_RAISE(err, RC_EINTERNAL, "Jacobian slot (%d, %d) missing", jb->rows[r], jb->cols[c]);
             jb->slot[r * jb->ncol + c] = s;
@@ -87,6 +154,8 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
         block_inter(m, i, &m->jb_inter[i]);
         nkey += (int64_t)m->jb_inter[i].nrow * m->jb_inter[i].ncol;
     }
+    rc_status pst = probe_blocks(m, err);
+    if (pst) return pst;
     int64_t *key = malloc((size_t)nkey * sizeof(int64_t));
     if (!key) RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
     int64_t n = 0;
@@ -94,7 +163,8 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
     for (int e = 0; e < m->nbody + m->ninter; e++) {
         const rc_jblock *jb = e < m->nbody ? &m->jb_body[e] : &m->jb_inter[e - m->nbody];
         for (int r = 0; r < jb->nrow; r++)
-            for (int c = 0; c < jb->ncol; c++) key[n++] = (int64_t)jb->cols[c] * ny + jb->rows[r];
+            for (int c = 0; c < jb->ncol; c++)
+                if (jb->slot[r * jb->ncol + c] >= 0) key[n++] = (int64_t)jb->cols[c] * ny + jb->rows[r];
     }
     /* sort, unique, split into CSC */
     qsort(key, (size_t)n, sizeof(int64_t), cmp_i64);

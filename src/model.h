@@ -27,6 +27,7 @@
 
 #define RC_NB 13 /* states of a free body */
 #define RC_NE 2  /* energy states of an interface */
+#define RC_JB_MAX ((2 * 6 + RC_NE) * 2 * RC_NB) /* largest dense element block */
 
 /* Analytic surface kinds. */
 typedef enum { RC_SURF_PLANE = 1, RC_SURF_SPHERE = 2 } rc_surf_kind;
@@ -45,7 +46,7 @@ enum { RC_ROOT_TSTART = 0, RC_ROOT_TSTOP = 1, RC_ROOT_CONTACT = 2, RC_ROOTS_PER_
 
 /* Jacobian entries written by one element: dense block of `nrow` rows by
  * `ncol` columns (state indices), slot[r * ncol + c] = position in the CSC
- * value array. */
+ * value array, or -1 for an entry that is structurally zero (pruned). */
 typedef struct rc_jblock {
     int nrow, ncol;
     int rows[RC_NB * 2 + RC_NE]; /* state indices */
@@ -172,6 +173,10 @@ const double *rc_body_state(const rc_model *m, int b, const double *y);
  * damping dissipation, total. */
 enum { RC_E_KIN, RC_E_POT, RC_E_ELASTIC, RC_E_DAMP, RC_E_TOTAL, RC_NENERGY };
 void rc_energy(const rc_model *m, double t, const double *y, double e[RC_NENERGY]);
+
+/* Dense block of an element (body e, or interface e in closed mode) at
+ * (t, y), row-major over its rc_jblock rows and columns (assemble_jac.c). */
+void rc_jac_dense_block(const rc_model *m, int is_inter, int e, double t, const double *y, double *out);
 
 /* ---- Jacobian pattern (jacpattern.c) ------------------------------- */
 rc_status rc_jac_build(rc_model *m, rc_error *err);

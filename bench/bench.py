@@ -1,0 +1,576 @@
+"""ricochet benchmarks: implicit (CVODE BDF + KLU) against an explicit
+central-difference integration of the same equations (bench/explicit_ref.c).
+
+Cases (SPEC section 12, bench/README.md):
+  1. sphere drop on a linear spring-dashpot floor, e = 0.8, 1 s;
+     accuracy = rebound ratios v_out/v_in against the closed-form chain;
+  2. settling column of N spheres (N = 10, 100, 1000), 5 s;
+     accuracy = contact forces at t = 5 s against an event-located RK4
+     reference of the same equations (explicit_ref reference), relative to
+     the static bottom force N m g.
+
+Programs (built by bench/run.sh into the build directory):
+  ricochet       the CLI: accuracy (netCDF output), statistics, peak memory
+  rc_time        ricochet's rc_run through the public API without an output
+                 file: the integration wall time compared with explicit_ref
+  explicit_ref   central difference and the RK4 reference
+  peakrss        launcher that reports a child's own ru_maxrss (wait4)
+
+usage: /usr/bin/python3 bench/bench.py [--build DIR] [--quick] [--only drop|column]
+       [--sizes 10,100,1000] [--json FILE]
+Prints plain tables; writes the raw numbers to DIR/bench/results.json.
+"""
+import argparse
+import json
+import math
+import os
+import platform
+import subprocess
+import sys
+import time
+
+import numpy as np
+from netCDF4 import Dataset
+from scipy.optimize import brentq
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+sys.path.insert(0, os.path.join(ROOT, "validation", "lib"))
+from deck import Deck  # noqa: E402
+
+G = 9.81
+DEFAULT_RTOL = 1e-6  # ricochet's default (docs/theory.md); atol_pos 1e-9 m, atol_vel 1e-6 m/s
+
+
+# ---------------------------------------------------------------- helpers
+def kv(text):
+    """key=value lines -> dict (numbers converted); 'bounce=' lines -> list."""
+    d, bounces = {}, []
+    for ln in text.splitlines():
+        if ln.startswith("bounce="):
+            bounces.append({k: float(v) for k, v in (tok.split("=") for tok in ln.split())})
+        elif "=" in ln:
+            k, v = ln.split("=", 1)
+            try:
+                d[k] = int(v)
+            except ValueError:
+                try:
+                    d[k] = float(v)
+                except ValueError:
+                    d[k] = v
+    d["bounce"] = bounces
+    return d
+
+
+def table(title, header, rows, note=None):
+    """Print a plain-text table."""
+    w = [len(str(h)) for h in header]
+    for r in rows:
+        for k, x in enumerate(r):
+            if k < len(w):
+                w[k] = max(w[k], len(str(x)))
+    lines = [title, "  ".join(str(h).rjust(w[k]) for k, h in enumerate(header)),
+             "  ".join("-" * x for x in w)]
+    for r in rows:
+        lines.append("  ".join(str(x).rjust(w[k]) if k < len(w) else str(x) for k, x in enumerate(r)))
+    if note:
+        lines.append(note)
+    print("\n".join(lines) + "\n")
+    sys.stdout.flush()
+
+
+def fmt_t(x):
+    if x is None or (isinstance(x, float) and math.isnan(x)):
+        return "-"
+    return f"{x * 1e3:.2f} ms" if x < 1 else f"{x:.2f} s"
+
+
+def fmt_e(x):
+    return "-" if x is None or (isinstance(x, float) and math.isnan(x)) else f"{x:.2e}"
+
+
+def fmt_mb(kb):
+    return "-" if not kb else f"{kb / 1024:.1f} MB"
+
+
+def machine():
+    cpu = "?"
+    try:
+        with open("/proc/cpuinfo") as f:
+            for ln in f:
+                if ln.startswith("model name"):
+                    cpu = ln.split(":", 1)[1].strip()
+                    break
+    except OSError:
+        pass
+    return {"cpu": cpu, "cores": os.cpu_count(), "kernel": platform.release()}
+
+
+class Bench:
+    def __init__(self, build, quick=False):
+        self.build = os.path.abspath(build)
+        self.ricochet = os.environ.get("RICOCHET", os.path.join(self.build, "ricochet"))
+        self.rc_time = os.path.join(self.build, "rc_time")
+        self.explicit = os.path.join(self.build, "explicit_ref")
+        self.peakrss = os.path.join(self.build, "peakrss")
+        self.work = os.path.join(self.build, "bench")
+        os.makedirs(self.work, exist_ok=True)
+        self.quick = quick
+        self.results = {"machine": machine()}
+
+    def measured(self, argv, timeout=None):
+        """Run argv through peakrss; return (rc, stdout, stderr, elapsed, maxrss_kb)."""
+        rssf = os.path.join(self.work, "peakrss.out")
+        if os.path.exists(rssf):
+            os.remove(rssf)
+        proc = subprocess.Popen([self.peakrss, rssf] + [str(a) for a in argv], stdout=subprocess.PIPE,
+                                stderr=subprocess.PIPE, text=True)
+        try:
+            so, se = proc.communicate(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            proc.terminate()  # peakrss forwards SIGTERM to its child as SIGKILL
+            so, se = proc.communicate()
+            return -9, so, se + f"\ntimeout after {timeout} s", float(timeout), None
+        rc = proc.returncode
+        info = {}
+        if os.path.exists(rssf):
+            info = kv(open(rssf).read())
+        return rc, so, se, info.get("elapsed"), info.get("maxrss_kb")
+
+    # ------------------------------------------------------------ ricochet
+    def ricochet_run(self, deck, name, timeout=None, time_repeat=1):
+        """CLI run (netCDF: accuracy, statistics, peak RSS, process time) and,
+        when time_repeat > 0, rc_time runs for the integration wall time
+        without output (best of time_repeat runs in one process)."""
+        case = os.path.join(self.work, name + ".rad")
+        out = os.path.join(self.work, name + ".nc")
+        deck.write(case)
+        if os.path.exists(out):
+            os.remove(out)
+        rc, so, se, elapsed, rss = self.measured([self.ricochet, "run", case, "-o", out, "-q"], timeout)
+        r = {"ok": rc == 0, "rc": rc, "stderr": se.strip()[-400:], "elapsed": elapsed, "rss_kb": rss, "case": case}
+        if not os.path.exists(out):
+            return r
+        try:
+            with Dataset(out) as nc:
+                a = {k: nc.getncattr(k) for k in nc.ncattrs()}
+                r["t"] = np.array(nc["time"][:])
+                r["at_event"] = np.array(nc["at_event"][:])
+                r["pos"] = np.array(nc["body_position"][:])
+                r["vel"] = np.array(nc["body_velocity"][:])
+                r["fn"] = np.array(nc["inter_force_normal"][:])
+                n = len(nc.dimensions["event"])
+                r["ev_t"] = np.array(nc["event_time"][:]) if n else np.zeros(0)
+                r["ev_kind"] = [str(k) for k in nc["event_kind"][:]] if n else []
+        except Exception as e:  # noqa: BLE001 (an incomplete file after a failure)
+            r["ok"] = False
+            r["stderr"] += f" (output unreadable: {e})"
+            return r
+        r["stats"] = {k[len("stats_"):]: (v.item() if hasattr(v, "item") else v) for k, v in a.items()
+                      if k.startswith("stats_")}
+        r["cli_wall"] = float(r["stats"].get("wall_time", float("nan")))
+        r["wall"] = r["cli_wall"]
+        r["wall_src"] = "cli"
+        if r["ok"] and time_repeat > 0:
+            rc2, so2, se2, _, rss2 = self.measured([self.rc_time, case, time_repeat], timeout)
+            if rc2 == 0:
+                t = kv(so2)
+                r["timing"] = t
+                r["wall"] = t["wall_time"]
+                r["wall_src"] = "rc_time"
+                r["rss_core_kb"] = rss2
+        return r
+
+    # ------------------------------------------------------------ explicit
+    def explicit_run(self, args, repeat=1, timeout=None):
+        best = None
+        for _ in range(repeat):
+            rc, so, se, elapsed, rss = self.measured([self.explicit] + list(args), timeout)
+            if rc != 0:
+                return {"ok": False, "rc": rc, "stderr": (se + so).strip()}
+            d = kv(so)
+            d["ok"] = d.get("status") == "ok"
+            d["rss_kb"] = rss
+            d["elapsed"] = elapsed
+            if best is None or d["wall_time"] < best["wall_time"]:
+                best = d
+        return best
+
+
+def equal_accuracy(ricochet_runs, explicit_runs):
+    """For each ricochet run: the cheapest explicit run whose error is <= the
+    ricochet error and stays <= it at every finer step of the scan (the
+    explicit errors are O(dt) but not monotone), and the wall-time ratio
+    explicit / ricochet (> 1: ricochet faster)."""
+    out = []
+    ex = sorted([x for x in explicit_runs if not math.isnan(x["error"])], key=lambda x: -x["dt"])
+    for r in ricochet_runs:
+        if not r.get("ok") or math.isnan(r.get("error", float("nan"))):
+            continue
+        match, prev = None, None
+        for k, x in enumerate(ex):
+            if all(y["error"] <= r["error"] for y in ex[k:]):
+                match = x
+                prev = ex[k - 1] if k > 0 else None
+                break
+        # log-log interpolation of the wall time between the last coarser run
+        # that misses the target and the match
+        interp = match["wall"] if match else None
+        if match and prev and prev["error"] > r["error"] > match["error"] > 0:
+            s = math.log(prev["error"] / r["error"]) / math.log(prev["error"] / match["error"])
+            interp = prev["wall"] * (match["wall"] / prev["wall"]) ** s
+        out.append({"rtol": r["rtol"], "ricochet_error": r["error"], "ricochet_wall": r["wall"],
+                    "explicit_dt_factor": match["dt_factor"] if match else None,
+                    "explicit_error": match["error"] if match else None,
+                    "explicit_wall": match["wall"] if match else None,
+                    "ratio": match["wall"] / r["wall"] if match and r["wall"] else None,
+                    "explicit_wall_interp": interp,
+                    "ratio_interp": interp / r["wall"] if match and r["wall"] else None,
+                    "finest_explicit_error": ex[-1]["error"] if ex else None})
+    return out
+
+
+def print_equal(label, eq, target):
+    rows = []
+    for q in eq:
+        if q["explicit_wall"] is None:
+            rows.append([f"{q['rtol']:.0e}", fmt_e(q["ricochet_error"]), fmt_t(q["ricochet_wall"]),
+                         f"none <= (finest {fmt_e(q['finest_explicit_error'])})", "-", "-", "-", "-"])
+        else:
+            first = q["explicit_dt_factor"] == 1
+            rows.append([f"{q['rtol']:.0e}", fmt_e(q["ricochet_error"]), fmt_t(q["ricochet_wall"]),
+                         f"{q['explicit_dt_factor']:g}" + (" (stable step)" if first else ""),
+                         fmt_e(q["explicit_error"]), fmt_t(q["explicit_wall"]), f"{q['ratio']:.3g}",
+                         f"{q['ratio_interp']:.3g}"])
+    table(f"{label}: equal accuracy. {target}",
+          ["rtol", "ricochet err", "ricochet wall", "explicit dt_factor", "explicit err", "explicit wall",
+           "explicit/ricochet", "interpolated"], rows,
+          note="explicit/ricochet = wall-time ratio (> 1: ricochet faster); interpolated: explicit wall time "
+               "interpolated (log-log in error) to exactly ricochet's error. dt_factor 1 with an explicit error below "
+               "ricochet's means the explicit scheme is already more accurate at its stable step.")
+
+
+# ================================================================ case 1
+DROP = dict(m=1.0, R=0.05, k=1.0e6, e=0.8, h=0.1, tend=1.0)
+
+
+def restitution_clipped(zeta, k, m):
+    """Clipped-force restitution of the linear spring-dashpot (as in
+    validation/spring_dashpot/check.py): contact ends when k p + c p' = 0."""
+    wn = math.sqrt(k / m)
+    wd = wn * math.sqrt(1 - zeta**2)
+    tc = (math.pi - math.atan(2 * zeta * math.sqrt(1 - zeta**2) / (1 - 2 * zeta**2))) / wd
+    return -math.exp(-zeta * wn * tc) * (math.cos(wd * tc) - zeta * wn / wd * math.sin(wd * tc))
+
+
+def drop_params():
+    p = dict(DROP)
+    p["zeta"] = brentq(lambda z: restitution_clipped(z, p["k"], p["m"]) - p["e"], 1e-9, 0.7, xtol=1e-15)
+    p["c"] = 2 * p["zeta"] * math.sqrt(p["k"] * p["m"])
+    return p
+
+
+def drop_reference(p, nmax=50):
+    """Closed-form chain with gravity (validation/bouncing_ball/check.py):
+    per bounce t_in, v_in, t_out, v_out, ratio = v_out/v_in, up to t_end."""
+    M, K, C, Z = p["m"], p["k"], p["c"], p["zeta"]
+
+    def contact_phase(vin):
+        wn = math.sqrt(K / M)
+        a, wd = Z * wn, wn * math.sqrt(1 - Z**2)
+        ps = M * G / K
+        A, B = -ps, (vin - a * ps) / wd
+
+        def pp(t):
+            return ps + math.exp(-a * t) * (A * math.cos(wd * t) + B * math.sin(wd * t))
+
+        def dp(t):
+            return math.exp(-a * t) * ((-a * A + wd * B) * math.cos(wd * t) + (-a * B - wd * A) * math.sin(wd * t))
+
+        tc = brentq(lambda t: K * pp(t) + C * dp(t), 0.5 * math.pi / wd, 1.5 * math.pi / wd, xtol=1e-16, rtol=1e-15)
+        return tc, -dp(tc), pp(tc)
+
+    t = math.sqrt(2 * p["h"] / G)
+    vin = math.sqrt(2 * G * p["h"])
+    out = []
+    for _ in range(nmax):
+        tc, vout, pe = contact_phase(vin)
+        if t + tc > p["tend"]:
+            break
+        out.append(dict(t_in=t, v_in=vin, t_out=t + tc, v_out=vout, ratio=vout / vin))
+        tau = (vout + math.sqrt(vout**2 - 2 * G * pe)) / G
+        t += tc + tau
+        vin = math.sqrt(vout**2 - 2 * G * pe)
+    return out
+
+
+def drop_deck(p, rtol):
+    d = Deck("bench: sphere drop, e = 0.8")
+    R, m = p["R"], p["m"]
+    z0 = R + p["h"]
+    d.funct(1, [0.0, 1.0], [0.0, p["k"]], title="linear load curve")
+    d.nodes([(1, 0.0, 0.0, z0)])
+    d.rbody(1, 1, m, [0.4 * m * R * R] * 3, title="sphere")
+    d.sphere(1, 1, (0.0, 0.0, z0), R)
+    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
+    d.grav(1, "Z", -G)
+    d.type6(1, 1, 2, 1, visc=p["c"], title="floor")
+    d.run(p["tend"], 0.01)
+    d.solver(rtol=rtol, atol_pos=1e-3 * rtol, atol_vel=rtol, atol_energy=rtol)
+    return d
+
+
+def ratio_error(bounces, ref):
+    """Max relative error of the rebound ratios over the compared bounces
+    (NaN when one is missing)."""
+    if len(bounces) < len(ref):
+        return float("nan")
+    return max(abs(b["ratio"] - r["ratio"]) / r["ratio"] for b, r in zip(bounces, ref))
+
+
+def ricochet_bounces(r):
+    """Impact and rebound velocities at the contact_close / contact_open
+    event records."""
+    out, tin, vin = [], None, None
+    rec = np.where(r["at_event"] == 1)[0]
+    for t, kind in zip(r["ev_t"], r["ev_kind"]):
+        if len(rec) == 0:
+            break
+        idx = rec[np.argmin(np.abs(r["t"][rec] - t))]
+        vz = float(r["vel"][idx, 0, 2])
+        if kind == "contact_close":
+            tin, vin = t, vz
+        elif kind == "contact_open" and vin is not None:
+            out.append(dict(t_in=tin, v_in=vin, t_out=t, v_out=vz, ratio=-vz / vin))
+            vin = None
+    return out
+
+
+def bench_drop(B):
+    p = drop_params()
+    allref = drop_reference(p)
+    # the last bounce in 1 s ends 0.5 ms before t_end: an integrator whose
+    # bounce times drift by that much does not finish it; compare the bounces
+    # that end at least 10 ms before t_end
+    ref = [b for b in allref if b["t_out"] < p["tend"] - 0.01]
+    res = {"params": {k: p[k] for k in ("m", "R", "k", "e", "h", "tend", "zeta", "c")}, "reference": allref,
+           "compared_bounces": len(ref), "ricochet": [], "explicit": []}
+    print(f"== Case 1: sphere drop: m = {p['m']} kg, R = {p['R']} m, k = {p['k']:.0e} N/m, Visc = {p['c']:.6f} N s/m "
+          f"(zeta = {p['zeta']:.6f} for e = {p['e']}), from h = {p['h']} m, {p['tend']} s ==\n")
+    table("Reference: closed-form contact phases under gravity chained with ballistic flights",
+          ["bounce", "t_in [s]", "v_in [m/s]", "t_out [s]", "v_out/v_in", "(v_out/v_in - e)/e", "compared"],
+          [[k + 1, f"{r['t_in']:.6f}", f"{r['v_in']:.6f}", f"{r['t_out']:.6f}", f"{r['ratio']:.9f}",
+            f"{(r['ratio'] - p['e']) / p['e']:+.2e}", "yes" if k < len(ref) else "no"] for k, r in enumerate(allref)])
+
+    rows = []
+    for rtol in (1e-4, 1e-6, 1e-8):
+        r = B.ricochet_run(drop_deck(p, rtol), f"drop_rtol{rtol:.0e}", time_repeat=20)
+        if not r["ok"]:
+            rows.append([f"{rtol:.0e}", "FAILED", r["stderr"][:70]])
+            res["ricochet"].append({"rtol": rtol, "ok": False, "stderr": r["stderr"]})
+            continue
+        b = ricochet_bounces(r)
+        err = ratio_error(b, ref)
+        s = r["stats"]
+        res["ricochet"].append({"rtol": rtol, "ok": True, "error": err, "wall": r["wall"], "cli_wall": r["cli_wall"],
+                                "elapsed": r["elapsed"], "rss_kb": r["rss_kb"], "rss_core_kb": r.get("rss_core_kb"),
+                                "energy_residual": r["timing"]["energy_residual"] if "timing" in r else None,
+                                "stats": s, "bounces": b})
+        rows.append([f"{rtol:.0e}", fmt_t(r["wall"]), fmt_t(r["cli_wall"]), fmt_t(r["elapsed"]), s.get("steps"),
+                     s.get("rhs_evals"), s.get("jac_evals"), s.get("lin_setups"), s.get("events"), s.get("reinits"),
+                     s.get("err_test_fails"), fmt_mb(r["rss_kb"]), f"{r['timing']['energy_residual']:.1e}" if "timing" in r else "-", fmt_e(err)])
+    table("ricochet (atol_pos = 1e-3 rtol m, atol_vel = rtol m/s)",
+          ["rtol", "wall", "wall+output", "process", "steps", "RHS", "Jac", "LU", "events", "restarts", "err fails",
+           "peak RSS", "E resid [J]", "max rel err"], rows)
+
+    factors = [1, 0.5, 0.25, 0.1, 0.05, 0.025, 0.01, 0.005, 0.0025, 0.001, 5e-4, 2.5e-4, 1e-4]
+    if not B.quick:
+        factors += [5e-5, 2.5e-5, 1e-5]
+    rows = []
+    for f in factors:
+        x = B.explicit_run(["drop", p["m"], p["k"], p["c"], p["h"], p["tend"], f], repeat=5 if f >= 1e-4 else 2)
+        if not x["ok"]:
+            rows.append([f"{f:g}", "FAILED", x.get("stderr", "")[:60]])
+            continue
+        err = ratio_error(x["bounce"], ref)
+        res["explicit"].append({"dt_factor": f, "dt": x["dt"], "steps": x["steps"], "force_evals": x["force_evals"],
+                                "wall": x["wall_time"], "rss_kb": x["rss_kb"], "error": err, "events": x["events"]})
+        rows.append([f"{f:g}", f"{x['dt']:.3e}", fmt_t(x["wall_time"]), x["steps"], x["force_evals"], x["events"],
+                     fmt_mb(x["rss_kb"]), fmt_e(err)])
+    dt_s = res["explicit"][0]["dt"] if res["explicit"] else float("nan")
+    table(f"explicit central difference (dt_factor 1 = 0.9 x stable step = {dt_s:.4e} s)",
+          ["dt_factor", "dt [s]", "wall", "steps", "force evals", "events", "peak RSS", "max rel err"], rows)
+    res["equal"] = equal_accuracy(res["ricochet"], res["explicit"])
+    print_equal("Sphere drop", res["equal"], "Target: ricochet within 2x of explicit (explicit/ricochet >= 0.5) "
+                "at ricochet's default tolerances (rtol 1e-6).")
+    return res
+
+
+# ================================================================ case 2
+COL = dict(R=0.01, m=0.01, k=1.0e5, zeta=1.0, gap=1.0e-4, tend=5.0, dtout=0.5)
+
+
+def column_deck(N, rtol, p=COL):
+    R, m, k, gap = p["R"], p["m"], p["k"], p["gap"]
+    d = Deck(f"bench: settling column of {N} spheres")
+    d.funct(1, [0.0, 1.0], [0.0, k], title="linear load curve")
+    z = [R + gap + i * (2 * R + gap) for i in range(N)]
+    d.nodes([(i + 1, 0.0, 0.0, z[i]) for i in range(N)])
+    J = [0.4 * m * R * R] * 3
+    for i in range(N):
+        d.rbody(i + 1, i + 1, m, J, title=f"sphere {i + 1}")
+    for i in range(N):
+        d.sphere(i + 1, i + 1, (0.0, 0.0, z[i]), R, title=f"sphere {i + 1}")
+    floor = N + 1
+    d.plane(floor, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor")
+    d.grav(1, "Z", -G)
+    c_floor = 2 * p["zeta"] * math.sqrt(k * m)       # m_red = m
+    c_ss = 2 * p["zeta"] * math.sqrt(k * m / 2)      # m_red = m/2
+    d.type6(1, 1, floor, 1, visc=c_floor, title="floor contact")
+    for i in range(1, N):
+        d.type6(i + 1, i, i + 1, 1, visc=c_ss, title=f"spheres {i}-{i + 1}")
+    d.run(p["tend"], p["dtout"])
+    d.solver(rtol=rtol, atol_pos=1e-3 * rtol, atol_vel=rtol, atol_energy=rtol, max_steps=10**7)
+    return d
+
+
+def column_args(N, p=COL):
+    return [N, p["R"], p["m"], p["k"], p["zeta"], p["gap"], p["tend"]]
+
+
+def bench_column(B, sizes):
+    p = COL
+    res = {"params": dict(p), "sizes": {}}
+    print(f"== Case 2: settling column: R = {p['R']} m, m = {p['m']} kg, k = {p['k']:.0e} N/m, critically damped "
+          f"contacts (c = 2 sqrt(k m_red)), gaps {p['gap']} m, gravity, {p['tend']} s, dtout {p['dtout']} s ==\n")
+    for N in sizes:
+        scale = N * p["m"] * G
+        S = {"N": N, "ricochet": [], "explicit": []}
+        # ---- references: event-located RK4, clipped law at h and 2h, and
+        # ricochet's event semantics (diagnostic)
+        h = 2e-5
+        refs = {}
+        for tag, hh, law in (("ref", h, "clip"), ("ref2h", 2 * h, "clip"), ("ref_rc", h, "ricochet")):
+            ff = os.path.join(B.work, f"col{N}_{tag}.txt")
+            x = B.explicit_run(["reference", N, p["R"], p["m"], p["k"], p["zeta"], -1, p["gap"], p["tend"], hh, law, ff])
+            x["F"] = np.loadtxt(ff, ndmin=1)
+            refs[tag] = x
+        F = refs["ref"]["F"]
+        unc = float(np.max(np.abs(F - refs["ref2h"]["F"])) / scale)
+        S["reference"] = {"h": h, "wall": refs["ref"]["wall_time"], "rhs_evals": refs["ref"]["rhs_evals"],
+                          "events": refs["ref"]["events"], "uncertainty": unc,
+                          "force_bottom": refs["ref"]["force_bottom"], "max_speed": refs["ref"]["max_speed"],
+                          "top_height": refs["ref"]["top_height"],
+                          "ricochet_law": {k: refs["ref_rc"][k] for k in ("events", "top_height", "max_speed",
+                                                                          "force_bottom", "active_contacts")}}
+        rl = refs["ref_rc"]
+        table(f"N = {N}: references (event-located RK4, h = {h:g} s)",
+              ["law", "events", "bottom force [N]", "N m g [N]", "top centre z [m]", "max speed [m/s]", "wall"],
+              [["clipped max(0, k p + c dp/dt)", refs["ref"]["events"], f"{refs['ref']['force_bottom']:.6f}",
+                f"{scale:.6f}", f"{refs['ref']['top_height']:.6f}", f"{refs['ref']['max_speed']:.2e}",
+                fmt_t(refs["ref"]["wall_time"])],
+               ["ricochet events (close at p = 0 up)", rl["events"], f"{rl['force_bottom']:.6f}", f"{scale:.6f}",
+                f"{rl['top_height']:.6f}", f"{rl['max_speed']:.2e}", fmt_t(rl["wall_time"])]],
+              note=f"reference uncertainty |F(h) - F(2h)| / (N m g) = {unc:.1e}")
+
+        # ---- ricochet
+        rtols = (1e-4, 1e-6) if N >= 1000 else (1e-4, 1e-6, 1e-8)
+        rows = []
+        for rtol in rtols:
+            timeout = 900
+            # rc_time (no output) only where the output would weigh in the wall time
+            r = B.ricochet_run(column_deck(N, rtol), f"col{N}_rtol{rtol:.0e}", timeout=timeout,
+                               time_repeat=(5 if N <= 10 else 1) if N <= 100 else 0)
+            if "stats" not in r:
+                rows.append([f"{rtol:.0e}", "FAILED", fmt_t(r["elapsed"]), r["stderr"][:70]])
+                S["ricochet"].append({"rtol": rtol, "ok": False, "stderr": r["stderr"], "elapsed": r["elapsed"]})
+                continue
+            s = r["stats"]
+            complete = r["ok"] and abs(float(r["t"][-1]) - p["tend"]) < 1e-9
+            fn = r["fn"][-1, :]
+            err = float(np.max(np.abs(fn - F)) / scale) if complete else float("nan")
+            zmin = float(np.min(r["pos"][-1, :, 2]))
+            ztop = float(r["pos"][-1, N - 1, 2])
+            S["ricochet"].append({"rtol": rtol, "ok": complete, "error": err, "wall": r["wall"],
+                                  "wall_src": r["wall_src"], "cli_wall": r["cli_wall"], "elapsed": r["elapsed"],
+                                  "rss_kb": r["rss_kb"], "stats": s, "z_min_end": zmin, "z_top_end": ztop,
+                                  "t_last": float(r["t"][-1]), "stderr": r["stderr"]})
+            rows.append([f"{rtol:.0e}", fmt_t(r["wall"]), fmt_t(r["elapsed"]), s.get("steps"), s.get("rhs_evals"),
+                         s.get("jac_evals"), s.get("lin_setups"), s.get("events"), s.get("reinits"),
+                         s.get("err_test_fails"), s.get("nonlin_fails"), fmt_mb(r["rss_kb"]), fmt_e(err),
+                         f"{zmin:.3f}", f"{1e3 * r['wall'] / N:.2f}"])
+        table(f"N = {N}: ricochet (wall: integration without output file)",
+              ["rtol", "wall", "process", "steps", "RHS", "Jac", "LU", "events", "restarts", "err fails",
+               "Newton fails", "peak RSS", "max rel err", "min z end [m]", "wall/N [ms]"], rows,
+              note="max rel err = max over contacts |F - F_ref| / (N m g) at t = 5 s; min z end = lowest sphere "
+                   "centre at t = 5 s (the settled column has all centres above R = 0.01 m minus the bottom "
+                   "penetration)")
+
+        # ---- explicit scan
+        factors = [1, 0.5, 0.2, 0.1, 0.05, 0.02]
+        if N <= 100:
+            factors += [0.01, 0.005]
+        rows = []
+        for f in factors:
+            ff = os.path.join(B.work, f"col{N}_cd{f:g}.txt")
+            x = B.explicit_run(["column"] + column_args(N) + [f, ff], repeat=3 if N <= 100 else 1)
+            if not x["ok"]:
+                rows.append([f"{f:g}", "FAILED"])
+                continue
+            err = float(np.max(np.abs(np.loadtxt(ff, ndmin=1) - F)) / scale)
+            S["explicit"].append({"dt_factor": f, "dt": x["dt"], "steps": x["steps"], "force_evals": x["force_evals"],
+                                  "wall": x["wall_time"], "rss_kb": x["rss_kb"], "error": err, "events": x["events"]})
+            rows.append([f"{f:g}", f"{x['dt']:.3e}", fmt_t(x["wall_time"]), x["steps"], x["force_evals"], x["events"],
+                         fmt_mb(x["rss_kb"]), fmt_e(err), f"{1e3 * x['wall_time'] / N:.3f}"])
+        table(f"N = {N}: explicit central difference (dt_factor 1 = 0.9 x stable step)",
+              ["dt_factor", "dt [s]", "wall", "steps", "force evals", "events", "peak RSS", "max rel err",
+               "wall/N [ms]"], rows)
+        S["equal"] = equal_accuracy(S["ricochet"], S["explicit"])
+        print_equal(f"Column N = {N}", S["equal"], "Target at N = 1000: explicit/ricochet >= 10.")
+        res["sizes"][str(N)] = S
+
+    rows = []
+    for N in sizes:
+        S = res["sizes"][str(N)]
+        r6 = next((r for r in S["ricochet"] if r["rtol"] == DEFAULT_RTOL and "stats" in r), None)
+        e1 = next((x for x in S["explicit"] if x["dt_factor"] == 1), None)
+        rows.append([N, fmt_t(r6["wall"]) if r6 else "-", f"{1e3 * r6['wall'] / N:.2f}" if r6 else "-",
+                     r6["stats"]["steps"] if r6 else "-",
+                     f"{1e3 * r6['wall'] / max(1, r6['stats']['steps']):.3f}" if r6 else "-",
+                     fmt_t(e1["wall"]) if e1 else "-", f"{1e3 * e1['wall'] / N:.3f}" if e1 else "-",
+                     f"{1e9 * e1['wall'] / e1['steps'] / N:.1f}" if e1 else "-"])
+    table("Cost growth with N (ricochet at rtol 1e-6, explicit at its stable step)",
+          ["N", "ricochet wall", "wall/N [ms]", "steps", "wall/step [ms]", "explicit wall", "wall/N [ms]",
+           "ns per sphere-step"], rows)
+    return res
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
+    ap.add_argument("--quick", action="store_true", help="fewer variants (smoke test)")
+    ap.add_argument("--only", choices=["drop", "column"])
+    ap.add_argument("--sizes", default="10,100,1000")
+    ap.add_argument("--json", default=None)
+    a = ap.parse_args()
+    B = Bench(a.build, a.quick)
+    for exe in (B.ricochet, B.rc_time, B.explicit, B.peakrss):
+        if not os.access(exe, os.X_OK):
+            sys.exit(f"bench: {exe} missing (run `make bench`, or `make all` then `bash bench/run.sh build`)")
+    m = B.results["machine"]
+    print(f"machine: {m['cpu']}, {m['cores']} cores, Linux {m['kernel']}")
+    print(f"ricochet: {B.ricochet}\n")
+    t0 = time.time()
+    if a.only in (None, "drop"):
+        B.results["drop"] = bench_drop(B)
+    if a.only in (None, "column"):
+        B.results["column"] = bench_column(B, [int(s) for s in a.sizes.split(",") if s])
+    B.results["bench_wall"] = time.time() - t0
+    path = a.json or os.path.join(B.work, "results.json")
+    with open(path, "w") as f:
+        json.dump(B.results, f, indent=1, default=lambda o: o.item() if hasattr(o, "item") else str(o))
+    print(f"total bench time {time.time() - t0:.1f} s; raw numbers in {path}")
+
+
+if __name__ == "__main__":
+    main()

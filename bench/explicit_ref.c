@@ -1,0 +1,545 @@
+/*
+ * explicit_ref: the explicit reference of the ricochet benchmarks.
+ *
+ * Integrates the SAME equations as ricochet for 1-D vertical models of
+ * spheres (translation only, no rotation is excited in these models) with
+ * the central-difference scheme of explicit crash codes:
+ *
+ *     a_n       = a(x_n, v_{n-1/2})          forces at the new positions,
+ *                                            damping with the latest
+ *                                            half-step velocity
+ *     v_{n+1/2} = v_{n-1/2} + dt a_n
+ *     x_{n+1}   = x_n + dt v_{n+1/2}
+ *
+ * started with v_{-1/2} = v_0 - dt/2 a_0 (so v_{1/2} = v_0 + dt/2 a_0).
+ *
+ * Contact law (ricochet's TYPE6 with a linear load curve and Visc):
+ * penetration p = -(gap distance), approach rate pdot = dp/dt,
+ *     f = max(0, k p + c pdot)   when p > 0,   f = 0 otherwise,
+ * i.e. the total normal force is clipped at zero; the contact is "active"
+ * while f > 0. Every change of that state is counted as an event.
+ *
+ * Stable step (undamped bound times the damped correction, exact for a
+ * single damped oscillator under this scheme, see bench/README.md):
+ *     dt = safety * 2 / omega_max * (sqrt(1 + zeta_max^2) - zeta_max),
+ * drop:   omega_max = sqrt(k/m), zeta_max = c / (2 sqrt(k m));
+ * column: omega_max = 2 sqrt(k/m) (Gershgorin bound of M^-1 K, the
+ *         highest mode of the chain), 2 zeta_max omega_max = Gershgorin
+ *         bound of M^-1 C (max row sum), safety = 0.9.
+ * The step is then shrunk by dt_factor and rounded down so that t_end is a
+ * whole number of steps.
+ *
+ * Usage:
+ *   explicit_ref drop   m k c h t_end dt_factor
+ *       one sphere (mass m) whose lowest point starts h above a fixed floor,
+ *       at rest, gravity 9.81 m/s^2 downwards. Prints per bounce the impact
+ *       and rebound velocities (located to second order, see below).
+ *   explicit_ref column N R m k zeta gap t_end dt_factor [FORCES_FILE]
+ *       N spheres of radius R, mass m stacked on a floor, gap `gap` between
+ *       neighbours and above the floor, at rest, gravity. Floor contact
+ *       c = 2 zeta sqrt(k m), sphere-sphere c = 2 zeta sqrt(k m/2).
+ *       Writes the final contact forces (contact 0 = floor, j = between
+ *       spheres j-1 and j) one per line to FORCES_FILE when given.
+ *
+ * Output: key=value lines on stdout. wall_time is measured with
+ * clock_gettime(CLOCK_MONOTONIC) around the integration loop only (no I/O);
+ * peak_rss_kb is getrusage(RUSAGE_SELF).ru_maxrss.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <time.h>
+
+#define GRAV 9.81
+#define SAFETY 0.9
+#define MAX_BOUNCE 1000
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static long peak_rss_kb(void)
+{
+    struct rusage ru;
+    getrusage(RUSAGE_SELF, &ru);
+    return ru.ru_maxrss;
+}
+
+static double arg(char **argv, int k)
+{
+    char *end;
+    double v = strtod(argv[k], &end);
+    if (*end || end == argv[k]) {
+        fprintf(stderr, "explicit_ref: bad number '%s'\n", argv[k]);
+        exit(2);
+    }
+    return v;
+}
+
+/* Stable step of the damped central-difference scheme. */
+static double stable_step(double omega, double zeta)
+{
+    return 2.0 / omega * (sqrt(1.0 + zeta * zeta) - zeta);
+}
+
+/* Number of steps and step so that t_end = nsteps * dt, dt <= dtmax. */
+static long step_count(double t_end, double dtmax, double *dt)
+{
+    long n = (long)ceil(t_end / dtmax - 1e-9);
+    if (n < 1) n = 1;
+    *dt = t_end / (double)n;
+    return n;
+}
+
+/* ---- drop ---------------------------------------------------------------
+ * State: height d of the lowest point above the floor, velocity v (up > 0).
+ * Penetration p = -d, pdot = -v. Events are located after the fact:
+ *  - impact: the step that first sees p > 0 while inactive; the previous
+ *    step is in free flight, where the scheme is exact for constant gravity
+ *    (velocity Verlet form), so the impact time and velocity follow from the
+ *    ballistic solution from that step: v_in = -sqrt(v^2 + 2 g d).
+ *  - rebound: the force k p + c pdot (as the scheme evaluates it) crosses
+ *    zero between steps n-1 and n; the crossing time t* is interpolated
+ *    linearly, and the rebound velocity is the free-flight velocity at
+ *    step n carried back to t*: v_out = v_n + g (t_n - t*).
+ * Velocities at whole steps: v_n = v_{n-1/2} + dt/2 a_n.
+ */
+static int run_drop(double m, double k, double c, double h, double t_end, double dt_factor)
+{
+    const double omega = sqrt(k / m), zeta = c / (2.0 * sqrt(k * m));
+    const double dt_stable = SAFETY * stable_step(omega, zeta);
+    double dt;
+    const long nsteps = step_count(t_end, dt_factor * dt_stable, &dt);
+    static double t_in[MAX_BOUNCE], v_in[MAX_BOUNCE], t_out[MAX_BOUNCE], v_out[MAX_BOUNCE];
+    int nin = 0, nout = 0;
+    long events = 0, force_evals = 0;
+
+    const double t0 = now();
+    double d = h, v = 0.0;            /* d_n, v at whole step n (start) */
+    double f_raw = 0.0, f = 0.0;
+    int active = 0;
+    /* force at step 0 (at rest above the floor: zero) */
+    double a = -GRAV;
+    double vh = v - 0.5 * dt * a;     /* v_{-1/2} */
+    double d_prev = d, v_prev = v, fraw_prev = 0.0, t_prev = 0.0;
+    for (long n = 0; n <= nsteps; n++) {
+        const double t = (double)n * dt;
+        /* forces at x_n with the latest half-step velocity */
+        const double p = -d, pdot = -vh;
+        f_raw = k * p + c * pdot;
+        f = (p > 0.0 && f_raw > 0.0) ? f_raw : 0.0;
+        force_evals++;
+        a = -GRAV + f / m;
+        const double vn = vh + 0.5 * dt * a; /* velocity at whole step n */
+        const int now_active = f > 0.0;
+        if (now_active != active) {
+            events++;
+            if (now_active && nin < MAX_BOUNCE) {
+                /* impact: ballistic from step n-1 (free flight) */
+                const double vi = -sqrt(v_prev * v_prev + 2.0 * GRAV * d_prev);
+                t_in[nin] = t_prev + (v_prev - vi) / GRAV;
+                v_in[nin++] = vi;
+            } else if (!now_active && nout < MAX_BOUNCE && nout < nin) {
+                /* rebound: the raw force crosses zero in (t_prev, t] */
+                double s = fraw_prev / (fraw_prev - f_raw);
+                if (!(s >= 0.0 && s <= 1.0)) s = 1.0;
+                const double ts = t_prev + s * dt;
+                t_out[nout] = ts;
+                v_out[nout++] = vn + GRAV * (t - ts);
+            }
+            active = now_active;
+        }
+        d_prev = d;
+        v_prev = vn;
+        fraw_prev = f_raw;
+        t_prev = t;
+        if (n == nsteps) break;
+        vh += dt * a;
+        d += dt * vh;
+    }
+    const double wall = now() - t0;
+    if (!isfinite(d) || !isfinite(vh)) {
+        printf("status=unstable\n");
+        return 3;
+    }
+    printf("case=drop\nstatus=ok\n");
+    printf("dt=%.9e\ndt_stable=%.9e\nomega_max=%.9e\nzeta_max=%.9e\n", dt, dt_stable / SAFETY, omega, zeta);
+    printf("steps=%ld\nforce_evals=%ld\ncontact_evals=%ld\nevents=%ld\n", nsteps, force_evals, force_evals, events);
+    printf("wall_time=%.9e\npeak_rss_kb=%ld\n", wall, peak_rss_kb());
+    printf("final_height=%.12e\nfinal_velocity=%.12e\n", d, v_prev);
+    printf("bounces=%d\n", nout);
+    for (int b = 0; b < nout; b++)
+        printf("bounce=%d t_in=%.12e v_in=%.12e t_out=%.12e v_out=%.12e ratio=%.12e\n", b + 1, t_in[b], v_in[b],
+               t_out[b], v_out[b], -v_out[b] / v_in[b]);
+    return 0;
+}
+
+/* ---- column --------------------------------------------------------------
+ * Sphere i (0 = bottom) centre height z_i, velocity v_i (up > 0).
+ * Contact 0: floor, p_0 = R - z_0, pdot_0 = -v_0.
+ * Contact j >= 1: spheres j-1, j: p_j = 2R - (z_j - z_{j-1}),
+ *                 pdot_j = -(v_j - v_{j-1}).
+ * Sphere i gets +f_i (contact below) and -f_{i+1} (contact above).
+ */
+static void column_forces(long N, double k, double c0, double c1, double R, const double *z, const double *vh,
+                          double *f, int *active, long *events)
+{
+    for (long j = 0; j <= N - 1; j++) {
+        double p, pdot, c;
+        if (j == 0) {
+            p = R - z[0];
+            pdot = -vh[0];
+            c = c0;
+        } else {
+            p = 2.0 * R - (z[j] - z[j - 1]);
+            pdot = -(vh[j] - vh[j - 1]);
+            c = c1;
+        }
+        const double fr = k * p + c * pdot;
+        f[j] = (p > 0.0 && fr > 0.0) ? fr : 0.0;
+        const int act = f[j] > 0.0;
+        if (act != active[j]) {
+            (*events)++;
+            active[j] = act;
+        }
+    }
+}
+
+static int run_column(long N, double R, double m, double k, double zeta, double gap, double t_end,
+                      double dt_factor, const char *forces_path)
+{
+    if (N < 1) return 2;
+    const double c0 = 2.0 * zeta * sqrt(k * m), c1 = 2.0 * zeta * sqrt(k * m / 2.0);
+    /* Gershgorin bounds: rows of M^-1 K and M^-1 C */
+    const double kbound = (N == 1 ? 1.0 : 4.0) * k / m;
+    const double cbound = (N == 1 ? c0 : fmax(c0 + 2.0 * c1, 4.0 * c1)) / m;
+    const double omega = sqrt(kbound), zmax = cbound / (2.0 * omega);
+    const double dt_stable = SAFETY * stable_step(omega, zmax);
+    double dt;
+    const long nsteps = step_count(t_end, dt_factor * dt_stable, &dt);
+    double *z = malloc((size_t)N * sizeof(double)), *vh = malloc((size_t)N * sizeof(double));
+    double *f = malloc((size_t)N * sizeof(double)), *a = malloc((size_t)N * sizeof(double));
+    int *active = calloc((size_t)N, sizeof(int));
+    if (!z || !vh || !f || !a || !active) {
+        fprintf(stderr, "explicit_ref: out of memory\n");
+        return 4;
+    }
+    for (long i = 0; i < N; i++) {
+        z[i] = R + gap + (double)i * (2.0 * R + gap);
+        vh[i] = 0.0;
+    }
+    long events = 0, force_evals = 0;
+
+    const double t0 = now();
+    /* v_{-1/2} = v_0 - dt/2 a_0 */
+    column_forces(N, k, c0, c1, R, z, vh, f, active, &events);
+    for (long i = 0; i < N; i++) {
+        a[i] = -GRAV + (f[i] - (i + 1 < N ? f[i + 1] : 0.0)) / m;
+        vh[i] -= 0.5 * dt * a[i];
+    }
+    for (long n = 0; n < nsteps; n++) {
+        column_forces(N, k, c0, c1, R, z, vh, f, active, &events);
+        force_evals++;
+        for (long i = 0; i < N; i++) {
+            const double ai = -GRAV + (f[i] - (i + 1 < N ? f[i + 1] : 0.0)) / m;
+            vh[i] += dt * ai;
+            z[i] += dt * vh[i];
+        }
+    }
+    /* forces at t_end (as the scheme evaluates them there) */
+    column_forces(N, k, c0, c1, R, z, vh, f, active, &events);
+    force_evals++;
+    const double wall = now() - t0;
+
+    double vmax = 0.0, ekin = 0.0;
+    int finite = 1;
+    for (long i = 0; i < N; i++) {
+        /* velocity at t_end: v_{n-1/2} + dt/2 a_n */
+        const double ai = -GRAV + (f[i] - (i + 1 < N ? f[i + 1] : 0.0)) / m;
+        const double vi = vh[i] + 0.5 * dt * ai;
+        vmax = fmax(vmax, fabs(vi));
+        ekin += 0.5 * m * vi * vi;
+        finite &= isfinite(z[i]) && isfinite(vi);
+    }
+    if (!finite) {
+        printf("status=unstable\n");
+        return 3;
+    }
+    long nactive = 0;
+    for (long j = 0; j < N; j++) nactive += active[j];
+    printf("case=column\nstatus=ok\nN=%ld\n", N);
+    printf("dt=%.9e\ndt_stable=%.9e\nomega_max=%.9e\nzeta_max=%.9e\n", dt, dt_stable / SAFETY, omega, zmax);
+    printf("steps=%ld\nforce_evals=%ld\ncontact_evals=%ld\nevents=%ld\n", nsteps, force_evals, force_evals * N,
+           events);
+    printf("wall_time=%.9e\npeak_rss_kb=%ld\n", wall, peak_rss_kb());
+    printf("force_bottom=%.12e\nforce_top=%.12e\nactive_contacts=%ld\n", f[0], f[N - 1], nactive);
+    printf("max_speed=%.12e\nkinetic_energy=%.12e\ntop_height=%.12e\n", vmax, ekin, z[N - 1]);
+    if (forces_path) {
+        FILE *fp = fopen(forces_path, "w");
+        if (!fp) {
+            fprintf(stderr, "explicit_ref: cannot write %s\n", forces_path);
+            return 4;
+        }
+        for (long j = 0; j < N; j++) fprintf(fp, "%.15e\n", f[j]);
+        fclose(fp);
+    }
+    free(z);
+    free(vh);
+    free(f);
+    free(a);
+    free(active);
+    return 0;
+}
+
+/* ---- reference: event-located RK4 ----------------------------------------
+ * An independent, high-order integration of the same column equations, used
+ * as the accuracy reference (the central-difference scheme above is only
+ * first order: the lagged damping velocity and the contact onset falling
+ * between steps both give O(dt) errors). Classical RK4 with a fixed step h,
+ * and the contact modes switched only at located events, so that the
+ * right-hand side is smooth inside every step:
+ *   contact j is active iff g_j = min(p_j, k p_j + c_j pdot_j) > 0
+ * (law "clip": the max(0, k p + c pdot) law above), or, with law "ricochet",
+ * an open contact closes only when p_j crosses zero upwards and a closed one
+ * opens when k p + c pdot crosses zero (ricochet's event semantics, which
+ * differ from the clipped law only when a contact that opened at zero force
+ * comes back before its penetration returned to zero).
+ * A step that would change any mode is cut by bisection on its length down
+ * to 1e-13 s; the modes are flipped at the end of the cut step.
+ */
+typedef struct chain {
+    long N;
+    double R, m, k, c0, c1;
+    int law_ricochet;
+    int *active;
+    double *z, *v;   /* state */
+    double *zt, *vt; /* stage state */
+    double *k1z, *k1v, *k2z, *k2v, *k3z, *k3v, *k4z, *k4v;
+    double *z1, *v1; /* candidate end of step */
+    long rhs_evals;
+} chain;
+
+static void chain_contact(const chain *ch, long j, const double *z, const double *v, double *p, double *fr)
+{
+    double pd, c;
+    if (j == 0) {
+        *p = ch->R - z[0];
+        pd = -v[0];
+        c = ch->c0;
+    } else {
+        *p = 2.0 * ch->R - (z[j] - z[j - 1]);
+        pd = -(v[j] - v[j - 1]);
+        c = ch->c1;
+    }
+    *fr = ch->k * *p + c * pd;
+}
+
+static void chain_rhs(chain *ch, const double *z, const double *v, double *dz, double *dv)
+{
+    ch->rhs_evals++;
+    const long N = ch->N;
+    double fbelow = 0.0;
+    for (long j = 0; j < N; j++) {
+        double p, fr;
+        chain_contact(ch, j, z, v, &p, &fr);
+        const double f = ch->active[j] ? fr : 0.0;
+        if (j > 0) dv[j - 1] = -GRAV + (fbelow - f) / ch->m;
+        fbelow = f;
+    }
+    dv[N - 1] = -GRAV + fbelow / ch->m;
+    for (long i = 0; i < N; i++) dz[i] = v[i];
+}
+
+/* Mode that (z, v) asks for, given the current mode. */
+static int chain_want(const chain *ch, long j, const double *z, const double *v, int cur, const double *zs,
+                      const double *vs)
+{
+    double p, fr;
+    chain_contact(ch, j, z, v, &p, &fr);
+    if (!ch->law_ricochet) return fmin(p, fr) > 0.0;
+    if (cur) return fr > 0.0;
+    /* open: closes only when p crosses zero upwards over the step */
+    double p0, fr0;
+    chain_contact(ch, j, zs, vs, &p0, &fr0);
+    return p0 <= 0.0 && p > 0.0;
+}
+
+static int chain_any_switch(const chain *ch, const double *z, const double *v)
+{
+    for (long j = 0; j < ch->N; j++)
+        if (chain_want(ch, j, z, v, ch->active[j], ch->z, ch->v) != ch->active[j]) return 1;
+    return 0;
+}
+
+/* One RK4 step of length h from (ch->z, ch->v) into (ch->z1, ch->v1). */
+static void chain_rk4(chain *ch, double h)
+{
+    const long N = ch->N;
+    chain_rhs(ch, ch->z, ch->v, ch->k1z, ch->k1v);
+    for (long i = 0; i < N; i++) {
+        ch->zt[i] = ch->z[i] + 0.5 * h * ch->k1z[i];
+        ch->vt[i] = ch->v[i] + 0.5 * h * ch->k1v[i];
+    }
+    chain_rhs(ch, ch->zt, ch->vt, ch->k2z, ch->k2v);
+    for (long i = 0; i < N; i++) {
+        ch->zt[i] = ch->z[i] + 0.5 * h * ch->k2z[i];
+        ch->vt[i] = ch->v[i] + 0.5 * h * ch->k2v[i];
+    }
+    chain_rhs(ch, ch->zt, ch->vt, ch->k3z, ch->k3v);
+    for (long i = 0; i < N; i++) {
+        ch->zt[i] = ch->z[i] + h * ch->k3z[i];
+        ch->vt[i] = ch->v[i] + h * ch->k3v[i];
+    }
+    chain_rhs(ch, ch->zt, ch->vt, ch->k4z, ch->k4v);
+    for (long i = 0; i < N; i++) {
+        ch->z1[i] = ch->z[i] + h / 6.0 * (ch->k1z[i] + 2.0 * ch->k2z[i] + 2.0 * ch->k3z[i] + ch->k4z[i]);
+        ch->v1[i] = ch->v[i] + h / 6.0 * (ch->k1v[i] + 2.0 * ch->k2v[i] + 2.0 * ch->k3v[i] + ch->k4v[i]);
+    }
+}
+
+static int run_reference(long N, double R, double m, double k, double zeta, double c_floor, double gap,
+                         double t_end, double h, const char *law, const char *forces_path)
+{
+    chain ch;
+    memset(&ch, 0, sizeof ch);
+    ch.N = N;
+    ch.R = R;
+    ch.m = m;
+    ch.k = k;
+    ch.c0 = c_floor >= 0 ? c_floor : 2.0 * zeta * sqrt(k * m);
+    ch.c1 = 2.0 * zeta * sqrt(k * m / 2.0);
+    ch.law_ricochet = !strcmp(law, "ricochet");
+    double **arr[] = {&ch.z, &ch.v, &ch.zt, &ch.vt, &ch.k1z, &ch.k1v, &ch.k2z, &ch.k2v,
+                      &ch.k3z, &ch.k3v, &ch.k4z, &ch.k4v, &ch.z1, &ch.v1};
+    for (size_t q = 0; q < sizeof arr / sizeof arr[0]; q++)
+        if (!(*arr[q] = calloc((size_t)N, sizeof(double)))) return 4;
+    if (!(ch.active = calloc((size_t)N, sizeof(int)))) return 4;
+    for (long i = 0; i < N; i++) ch.z[i] = R + gap + (double)i * (2.0 * R + gap);
+    for (long j = 0; j < N; j++) ch.active[j] = chain_want(&ch, j, ch.z, ch.v, 0, ch.z, ch.v) && gap <= 0.0;
+    static double t_in[MAX_BOUNCE], v_in[MAX_BOUNCE], t_out[MAX_BOUNCE], v_out[MAX_BOUNCE];
+    int nin = 0, nout = 0;
+    long events = 0, steps = 0, cuts = 0;
+    const double ttol = 1e-13;
+
+    const double t0 = now();
+    double t = 0.0;
+    while (t < t_end) {
+        double hs = fmin(h, t_end - t);
+        if (t_end - (t + hs) < 1e-12 * t_end) hs = t_end - t;
+        chain_rk4(&ch, hs);
+        if (chain_any_switch(&ch, ch.z1, ch.v1)) {
+            double lo = 0.0, hi = hs;
+            while (hi - lo > ttol) {
+                const double mid = 0.5 * (lo + hi);
+                chain_rk4(&ch, mid);
+                if (chain_any_switch(&ch, ch.z1, ch.v1)) hi = mid;
+                else lo = mid;
+            }
+            hs = hi;
+            chain_rk4(&ch, hs);
+            cuts++;
+            /* flip the modes that the end of the cut step asks for */
+            int want0 = chain_want(&ch, 0, ch.z1, ch.v1, ch.active[0], ch.z, ch.v);
+            for (long j = 0; j < N; j++) {
+                const int w = j == 0 ? want0 : chain_want(&ch, j, ch.z1, ch.v1, ch.active[j], ch.z, ch.v);
+                if (w != ch.active[j]) {
+                    events++;
+                    if (j == 0 && w && nin < MAX_BOUNCE) {
+                        t_in[nin] = t + hs;
+                        v_in[nin++] = ch.v1[0];
+                    } else if (j == 0 && !w && nout < MAX_BOUNCE && nout < nin) {
+                        t_out[nout] = t + hs;
+                        v_out[nout++] = ch.v1[0];
+                    }
+                }
+            }
+            /* apply after all decisions (the ricochet law reads the step start) */
+            for (long j = 0; j < N; j++) {
+                const int w = chain_want(&ch, j, ch.z1, ch.v1, ch.active[j], ch.z, ch.v);
+                ch.active[j] = w;
+            }
+        }
+        memcpy(ch.z, ch.z1, (size_t)N * sizeof(double));
+        memcpy(ch.v, ch.v1, (size_t)N * sizeof(double));
+        t += hs;
+        steps++;
+    }
+    const double wall = now() - t0;
+    double vmax = 0.0;
+    int finite = 1;
+    for (long i = 0; i < N; i++) {
+        vmax = fmax(vmax, fabs(ch.v[i]));
+        finite &= isfinite(ch.z[i]) && isfinite(ch.v[i]);
+    }
+    if (!finite) {
+        printf("status=unstable\n");
+        return 3;
+    }
+    double *f = ch.k1z;
+    long nactive = 0;
+    for (long j = 0; j < N; j++) {
+        double p, fr;
+        chain_contact(&ch, j, ch.z, ch.v, &p, &fr);
+        f[j] = ch.active[j] ? fmax(fr, 0.0) : 0.0;
+        nactive += ch.active[j];
+    }
+    printf("case=reference\nstatus=ok\nlaw=%s\nN=%ld\nh=%.9e\n", ch.law_ricochet ? "ricochet" : "clip", N, h);
+    printf("steps=%ld\nevent_cuts=%ld\nrhs_evals=%ld\nevents=%ld\n", steps, cuts, ch.rhs_evals, events);
+    printf("wall_time=%.9e\npeak_rss_kb=%ld\n", wall, peak_rss_kb());
+    printf("force_bottom=%.12e\nforce_top=%.12e\nactive_contacts=%ld\nmax_speed=%.12e\ntop_height=%.12e\n", f[0],
+           f[N - 1], nactive, vmax, ch.z[N - 1]);
+    printf("bounces=%d\n", nout);
+    for (int b = 0; b < nout; b++)
+        printf("bounce=%d t_in=%.12e v_in=%.12e t_out=%.12e v_out=%.12e ratio=%.12e\n", b + 1, t_in[b], v_in[b],
+               t_out[b], v_out[b], -v_out[b] / v_in[b]);
+    if (forces_path) {
+        FILE *fp = fopen(forces_path, "w");
+        if (!fp) return 4;
+        for (long j = 0; j < N; j++) fprintf(fp, "%.15e\n", f[j]);
+        fclose(fp);
+    }
+    for (size_t q = 0; q < sizeof arr / sizeof arr[0]; q++) free(*arr[q]);
+    free(ch.active);
+    return 0;
+}
+
+static void usage(FILE *fp)
+{
+    fprintf(fp, "usage: explicit_ref drop m k c h t_end dt_factor\n"
+                "       explicit_ref column N R m k zeta gap t_end dt_factor [FORCES_FILE]\n"
+                "       explicit_ref reference N R m k zeta c_floor gap t_end h law [FORCES_FILE]\n"
+                "           (c_floor < 0: 2 zeta sqrt(k m); law: clip | ricochet)\n");
+}
+
+int main(int argc, char **argv)
+{
+    if (argc >= 2 && !strcmp(argv[1], "drop") && argc == 8) {
+        return run_drop(arg(argv, 2), arg(argv, 3), arg(argv, 4), arg(argv, 5), arg(argv, 6), arg(argv, 7));
+    }
+    if (argc >= 2 && !strcmp(argv[1], "column") && (argc == 10 || argc == 11)) {
+        const double N = arg(argv, 2);
+        if (N < 1 || N != floor(N)) {
+            fprintf(stderr, "explicit_ref: N must be a positive integer\n");
+            return 2;
+        }
+        return run_column((long)N, arg(argv, 3), arg(argv, 4), arg(argv, 5), arg(argv, 6), arg(argv, 7),
+                          arg(argv, 8), arg(argv, 9), argc == 11 ? argv[10] : NULL);
+    }
+    if (argc >= 2 && !strcmp(argv[1], "reference") && (argc == 12 || argc == 13)) {
+        const double N = arg(argv, 2);
+        if (N < 1 || N != floor(N) || (strcmp(argv[11], "clip") && strcmp(argv[11], "ricochet"))) {
+            usage(stderr);
+            return 2;
+        }
+        return run_reference((long)N, arg(argv, 3), arg(argv, 4), arg(argv, 5), arg(argv, 6), arg(argv, 7),
+                             arg(argv, 8), arg(argv, 9), arg(argv, 10), argv[11], argc == 13 ? argv[12] : NULL);
+    }
+    usage(stderr);
+    return 2;
+}

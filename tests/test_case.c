@@ -1,0 +1,931 @@
+/*
+ * Case reader tests: a full deck in fixed and comma format, Fortran reals,
+ * defaults, #include, comments and /END, then one test per kind of input
+ * error (status RC_EINPUT and a message naming file:line, card and field),
+ * and a robustness sweep over truncated and mutated decks.
+ *
+ * Small decks are written from strings into a private temporary directory
+ * (removed at the end of the suite); larger decks live in tests/data/.
+ * The test binary runs from the repository root.
+ */
+#include "harness.h"
+#include "case.h"
+#include "error.h"
+
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+/* ---- Temporary files ---------------------------------------------------- */
+
+#define MAX_TMP 256
+static char tmp_dir[64];
+static char tmp_paths[MAX_TMP][128];
+static int ntmp;
+
+/* Write `len` bytes as tmp_dir/name; returns the path (static storage). */
+static const char *tmp_write_n(const char *name, const char *text, size_t len)
+{
+    if (!tmp_dir[0]) {
+        snprintf(tmp_dir, sizeof tmp_dir, "/tmp/rc_case_test_XXXXXX");
+        if (!mkdtemp(tmp_dir)) { perror("mkdtemp"); exit(1); }
+    }
+    char path[128];
+    snprintf(path, sizeof path, "%s/%s", tmp_dir, name);
+    int i;
+    for (i = 0; i < ntmp; i++)
+        if (strcmp(tmp_paths[i], path) == 0) break;
+    if (i == ntmp) {
+        if (ntmp == MAX_TMP) { fprintf(stderr, "too many temp files\n"); exit(1); }
+        snprintf(tmp_paths[ntmp++], sizeof tmp_paths[0], "%s", path);
+    }
+    FILE *f = fopen(path, "wb");
+    if (!f || fwrite(text, 1, len, f) != len || fclose(f) != 0) { perror(path); exit(1); }
+    return tmp_paths[i];
+}
+
+static const char *tmp_write(const char *name, const char *text)
+{
+    return tmp_write_n(name, text, strlen(text));
+}
+
+static void tmp_cleanup(void)
+{
+    for (int i = 0; i < ntmp; i++) remove(tmp_paths[i]);
+    ntmp = 0;
+    if (tmp_dir[0]) rmdir(tmp_dir);
+    tmp_dir[0] = '\0';
+}
+
+/* ---- Helpers ------------------------------------------------------------ */
+
+/* A deck that loads: the card under test, then /RUN. */
+#define RUN_CARD "/RUN\n1.0371,0.01\n"
+
+/* Load the deck, expect `code`, the message to contain "PATH:LINE:" (when
+ * line > 0) and each needle (NULL-terminated list). Returns the number of failures and
+ * prints the message when something is missing. */
+static int check_error(const char *path, rc_status code, int line, ...)
+{
+    rc_case *c = (rc_case *)1;
+    rc_error e;
+    char where[256];
+    int bad = 0;
+    va_list ap;
+    rc_error_clear(&e);
+    rc_status st = rc_case_load(path, &c, &e);
+    if (st != code || c != NULL || e.code != code) bad++;
+    snprintf(where, sizeof where, "%s:%d:", path, line);
+    if (line > 0 && !strstr(e.msg, where)) bad++;
+    va_start(ap, line);
+    for (const char *s; (s = va_arg(ap, const char *));)
+        if (!strstr(e.msg, s)) {
+            fprintf(stderr, "  missing \"%s\"\n", s);
+            bad++;
+        }
+    va_end(ap);
+    if (bad) fprintf(stderr, "  status %d, expected %d at \"%s\"; message: %s\n", st, code, where, e.msg);
+    if (st == RC_OK) rc_case_free(c);
+    return bad;
+}
+
+/* Write `text` as NAME and expect an input error at LINE with the needles. */
+#define EXPECT_INPUT_ERROR(name, text, line, ...) \
+    ENSURE(check_error(tmp_write((name), (text)), RC_EINPUT, (line), __VA_ARGS__, (const char *)NULL) == 0)
+
+/* Load a deck that must be valid. */
+static rc_case *load_ok(const char *path)
+{
+    rc_case *c = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    rc_status st = rc_case_load(path, &c, &e);
+    if (st != RC_OK) fprintf(stderr, "  unexpected error loading %s: %s\n", path, e.msg);
+    return c;
+}
+
+/* ---- The full deck ------------------------------------------------------ */
+
+/* Every field of tests/data/full_fixed.rad (and full_comma.rad). */
+static void check_full_values(const rc_case *c)
+{
+    /* /BEGIN */
+    ENSURE(strcmp(c->title, "Full deck test run") == 0);
+    ENSURE(strcmp(c->unit_mass, "kg") == 0 && strcmp(c->unit_length, "m") == 0 &&
+           strcmp(c->unit_time, "s") == 0);
+    /* /NODE */
+    ENSURE(c->nnode == 3);
+    if (c->nnode == 3) {
+        ENSURE(c->node[0].id == 1001 && c->node[0].x[0] == 0.0371 && c->node[0].x[1] == -0.1234 &&
+               c->node[0].x[2] == 0.0529);
+        ENSURE(c->node[1].id == 1002 && c->node[1].x[0] == 1.5 && c->node[1].x[1] == 0.25 &&
+               c->node[1].x[2] == -3.75);
+        ENSURE(c->node[2].id == 1003 && c->node[2].x[0] == 0 && c->node[2].x[1] == 0.125 &&
+               c->node[2].x[2] == 0);
+        ENSURE(c->node[1].loc.line == 11);
+    }
+    /* /GRNOD */
+    ENSURE(c->ngrnod == 1);
+    if (c->ngrnod == 1) {
+        const rc_case_grnod *g = &c->grnod[0];
+        ENSURE(g->id == 71 && strcmp(g->title, "group seventy-one") == 0 && g->n == 4);
+        if (g->n == 4)
+            ENSURE(g->nodes[0] == 1001 && g->nodes[1] == 1002 && g->nodes[2] == 1003 &&
+                   g->nodes[3] == 1005);
+    }
+    /* /RBODY */
+    ENSURE(c->nrbody == 1);
+    if (c->nrbody == 1) {
+        const rc_case_rbody *r = &c->rbody[0];
+        ENSURE(r->id == 7 && strcmp(r->title, "ball") == 0 && r->node_id == 1001);
+        ENSURE(r->skew_id == 0 && r->ispher == 1 && r->mass == 1.0371 && r->grnod_id == 71 &&
+               r->icog == 3);
+        ENSURE(r->J[0] == 0.0011371 && r->J[1] == 0.0012713 && r->J[2] == 0.0013137);
+        ENSURE(r->J[3] == 1.37e-05 && r->J[4] == -2.71e-05 && r->J[5] == 3.13e-05);
+        ENSURE(r->loc.line == 17);
+    }
+    /* /SURF/PLANE and /SURF/ELLIPS */
+    ENSURE(c->nsurf == 2);
+    if (c->nsurf == 2) {
+        const rc_case_surf *p = &c->surf[0], *s = &c->surf[1];
+        ENSURE(p->id == 11 && p->kind == RC_CASE_SURF_PLANE && strcmp(p->title, "ground") == 0);
+        ENSURE(p->m[0] == 0 && p->m[1] == 0 && p->m[2] == -0.0013);
+        ENSURE(p->m1[0] == 0 && p->m1[1] == 0 && p->m1[2] == -1.0013 && p->rbody_id == 0);
+        ENSURE(s->id == 12 && s->kind == RC_CASE_SURF_ELLIPS && strcmp(s->title, "ball surface") == 0);
+        ENSURE(s->skew_id == 0 && s->degree == 2 && s->rbody_id == 7);
+        ENSURE(s->c[0] == 0.0371 && s->c[1] == -0.1234 && s->c[2] == 0.0529);
+        ENSURE(s->abc[0] == 0.0493 && s->abc[1] == 0.0493 && s->abc[2] == 0.0493);
+    }
+    /* /FUNCT */
+    ENSURE(c->nfunct == 1);
+    if (c->nfunct == 1) {
+        const rc_case_funct *f = &c->funct[0];
+        ENSURE(f->id == 31 && strcmp(f->title, "load curve") == 0 && f->npts == 3);
+        if (f->npts == 3)
+            ENSURE(f->x[0] == 0 && f->y[0] == 0 && f->x[1] == 0.0011 && f->y[1] == 1371.25 &&
+                   f->x[2] == 0.00237 && f->y[2] == 3091.1);
+    }
+    /* /INTER/TYPE6 */
+    ENSURE(c->ntype6 == 1);
+    if (c->ntype6 == 1) {
+        const rc_case_type6 *t = &c->type6[0];
+        ENSURE(t->id == 3 && strcmp(t->title, "sphere on ground") == 0);
+        ENSURE(t->surf1 == 12 && t->surf2 == 11);
+        ENSURE(t->sfric == 0 && t->fric == 0 && t->gap == 0.0001371 && t->tstart == 0.0123 &&
+               t->tstop == 0.9876);
+        ENSURE(t->irs == 0 && t->irm == 0 && t->inacti == 0 && t->fct_ff == 0 && t->fct_fv == 0);
+        ENSURE(t->ascalef == 1.2371 && t->ascalev == 0.5371);
+        ENSURE(t->fct_ld == 31 && t->iform == 0 && t->ascalex == 0.003713 &&
+               t->fscaleld == 2.3711 && t->icor == 0);
+        ENSURE(t->fct_ul == 0 && t->stiff == 0 && t->fscaleul == 1.0731);
+        ENSURE(t->visc == 37.0137 && t->fct_dv == 0 && t->fct_df == 0 && t->fscalev == 0.7311);
+        ENSURE(t->loc.line == 38);
+        for (int k = 0; k < 6; k++) ENSURE(t->line_loc[k].line == 40 + k);
+    }
+    /* /INIVEL */
+    ENSURE(c->ninivel == 2);
+    if (c->ninivel == 2) {
+        const rc_case_inivel *a = &c->inivel[0], *b = &c->inivel[1];
+        ENSURE(a->id == 5 && a->rot == 0 && a->v[0] == 0 && a->v[1] == 0 && a->v[2] == -1.2371 &&
+               a->grnod_id == 71 && a->skew_id == 0);
+        ENSURE(b->id == 6 && b->rot == 1 && b->v[0] == 3.711 && b->v[1] == -1.371 &&
+               b->v[2] == 0.1137 && b->grnod_id == 71);
+    }
+    /* /GRAV */
+    ENSURE(c->ngrav == 1);
+    if (c->ngrav == 1) {
+        const rc_case_grav *g = &c->grav[0];
+        ENSURE(g->id == 9 && g->fct_id == 0 && g->dir == 2 && g->skew_id == 0 &&
+               g->sensor_id == 0 && g->grnod_id == 71 && g->ascale == 1.0137 &&
+               g->fscale == -9.8137);
+    }
+    /* /BCS */
+    ENSURE(c->nbcs == 1);
+    if (c->nbcs == 1) {
+        const rc_case_bcs *b = &c->bcs[0];
+        ENSURE(b->id == 4 && b->skew_id == 0 && b->grnod_id == 71);
+        ENSURE(b->fix[0] == 0 && b->fix[1] == 1 && b->fix[2] == 0 && b->fix[3] == 1 &&
+               b->fix[4] == 1 && b->fix[5] == 1);
+    }
+    /* /RUN and /SOLVER */
+    ENSURE(c->run.present == 1 && c->run.tend == 1.0371 && c->run.dtout == 0.001371);
+    const rc_case_solver *s = &c->solver;
+    ENSURE(s->present == 1 && s->method == 1 && s->max_order == 4 && s->max_steps == 50037);
+    ENSURE(s->rtol == 1.371e-07 && s->hmax == 0.0137 && s->h0 == 1.37e-06);
+    ENSURE(s->atol_pos == 3.71e-10 && s->atol_quat == 7.13e-10 && s->atol_vel == 1.37e-07 &&
+           s->atol_omega == 3.17e-07 && s->atol_energy == 7.31e-07);
+    ENSURE(c->nwarnings == 0);
+}
+
+static void test_case_full_deck_fixed(void)
+{
+    rc_case *c = load_ok("tests/data/full_fixed.rad");
+    ENSURE(c != NULL);
+    if (!c) return;
+    check_full_values(c);
+    ENSURE(strcmp(c->path, "tests/data/full_fixed.rad") == 0);
+    ENSURE(c->nfiles == 1 && strcmp(c->files[0], "tests/data/full_fixed.rad") == 0);
+    ENSURE(c->rbody[0].loc.file == c->files[0]);
+    rc_case_free(c);
+}
+
+/* Field-by-field equality of two cases, locations excepted. */
+static int case_equal(const rc_case *a, const rc_case *b)
+{
+    int eq = strcmp(a->title, b->title) == 0 && strcmp(a->unit_mass, b->unit_mass) == 0 &&
+             strcmp(a->unit_length, b->unit_length) == 0 && strcmp(a->unit_time, b->unit_time) == 0;
+    eq &= a->nnode == b->nnode && a->ngrnod == b->ngrnod && a->nrbody == b->nrbody &&
+          a->nsurf == b->nsurf && a->nfunct == b->nfunct && a->ntype6 == b->ntype6 &&
+          a->ninivel == b->ninivel && a->ngrav == b->ngrav && a->nbcs == b->nbcs;
+    if (!eq) return 0;
+    for (int i = 0; i < a->nnode; i++)
+        eq &= a->node[i].id == b->node[i].id && memcmp(a->node[i].x, b->node[i].x, sizeof a->node[i].x) == 0;
+    for (int i = 0; i < a->ngrnod; i++)
+        eq &= a->grnod[i].id == b->grnod[i].id && a->grnod[i].n == b->grnod[i].n &&
+              memcmp(a->grnod[i].nodes, b->grnod[i].nodes, sizeof(int) * (size_t)a->grnod[i].n) == 0 &&
+              strcmp(a->grnod[i].title, b->grnod[i].title) == 0;
+    for (int i = 0; i < a->nrbody; i++) {
+        const rc_case_rbody *x = &a->rbody[i], *y = &b->rbody[i];
+        eq &= x->id == y->id && strcmp(x->title, y->title) == 0 && x->node_id == y->node_id &&
+              x->skew_id == y->skew_id && x->ispher == y->ispher && x->mass == y->mass &&
+              x->grnod_id == y->grnod_id && x->icog == y->icog &&
+              memcmp(x->J, y->J, sizeof x->J) == 0;
+    }
+    for (int i = 0; i < a->nsurf; i++) {
+        const rc_case_surf *x = &a->surf[i], *y = &b->surf[i];
+        eq &= x->id == y->id && x->kind == y->kind && strcmp(x->title, y->title) == 0 &&
+              memcmp(x->m, y->m, sizeof x->m) == 0 && memcmp(x->m1, y->m1, sizeof x->m1) == 0 &&
+              x->skew_id == y->skew_id && x->degree == y->degree &&
+              memcmp(x->c, y->c, sizeof x->c) == 0 && memcmp(x->abc, y->abc, sizeof x->abc) == 0 &&
+              x->rbody_id == y->rbody_id;
+    }
+    for (int i = 0; i < a->nfunct; i++) {
+        const rc_case_funct *x = &a->funct[i], *y = &b->funct[i];
+        eq &= x->id == y->id && x->npts == y->npts && strcmp(x->title, y->title) == 0 &&
+              memcmp(x->x, y->x, sizeof(double) * (size_t)x->npts) == 0 &&
+              memcmp(x->y, y->y, sizeof(double) * (size_t)x->npts) == 0;
+    }
+    for (int i = 0; i < a->ntype6; i++) {
+        const rc_case_type6 *x = &a->type6[i], *y = &b->type6[i];
+        eq &= x->id == y->id && strcmp(x->title, y->title) == 0 && x->surf1 == y->surf1 &&
+              x->surf2 == y->surf2 && x->sfric == y->sfric && x->fric == y->fric &&
+              x->gap == y->gap && x->tstart == y->tstart && x->tstop == y->tstop &&
+              x->irs == y->irs && x->irm == y->irm && x->inacti == y->inacti &&
+              x->fct_ff == y->fct_ff && x->fct_fv == y->fct_fv && x->ascalef == y->ascalef &&
+              x->ascalev == y->ascalev && x->fct_ld == y->fct_ld && x->iform == y->iform &&
+              x->ascalex == y->ascalex && x->fscaleld == y->fscaleld && x->icor == y->icor &&
+              x->fct_ul == y->fct_ul && x->stiff == y->stiff && x->fscaleul == y->fscaleul &&
+              x->visc == y->visc && x->fct_dv == y->fct_dv && x->fct_df == y->fct_df &&
+              x->fscalev == y->fscalev;
+    }
+    for (int i = 0; i < a->ninivel; i++)
+        eq &= a->inivel[i].id == b->inivel[i].id && a->inivel[i].rot == b->inivel[i].rot &&
+              memcmp(a->inivel[i].v, b->inivel[i].v, sizeof a->inivel[i].v) == 0 &&
+              a->inivel[i].grnod_id == b->inivel[i].grnod_id &&
+              a->inivel[i].skew_id == b->inivel[i].skew_id;
+    for (int i = 0; i < a->ngrav; i++)
+        eq &= a->grav[i].id == b->grav[i].id && a->grav[i].fct_id == b->grav[i].fct_id &&
+              a->grav[i].dir == b->grav[i].dir && a->grav[i].grnod_id == b->grav[i].grnod_id &&
+              a->grav[i].ascale == b->grav[i].ascale && a->grav[i].fscale == b->grav[i].fscale;
+    for (int i = 0; i < a->nbcs; i++)
+        eq &= a->bcs[i].id == b->bcs[i].id && memcmp(a->bcs[i].fix, b->bcs[i].fix, sizeof a->bcs[i].fix) == 0 &&
+              a->bcs[i].grnod_id == b->bcs[i].grnod_id;
+    eq &= a->run.present == b->run.present && a->run.tend == b->run.tend && a->run.dtout == b->run.dtout;
+    const rc_case_solver *s = &a->solver, *t = &b->solver;
+    eq &= s->present == t->present && s->method == t->method && s->max_order == t->max_order &&
+          s->max_steps == t->max_steps && s->rtol == t->rtol && s->atol_pos == t->atol_pos &&
+          s->atol_quat == t->atol_quat && s->atol_vel == t->atol_vel &&
+          s->atol_omega == t->atol_omega && s->atol_energy == t->atol_energy &&
+          s->hmax == t->hmax && s->h0 == t->h0;
+    return eq;
+}
+
+static void test_case_full_deck_comma_equals_fixed(void)
+{
+    rc_case *a = load_ok("tests/data/full_fixed.rad");
+    rc_case *b = load_ok("tests/data/full_comma.rad");
+    ENSURE(a && b);
+    if (a && b) {
+        check_full_values(b);
+        ENSURE(case_equal(a, b));
+        ENSURE(a->checksum != b->checksum); /* different bytes */
+    }
+    rc_case_free(a);
+    rc_case_free(b);
+}
+
+/* ---- Numbers, defaults, layout ---------------------------------------- */
+
+static void test_case_fortran_reals(void)
+{
+    const char *p = tmp_write("reals.rad",
+                              "/FUNCT/1\n"
+                              "Fortran forms\n"
+                              "             -2.                 .5\n"
+                              "              1.E-3             1.5D+03\n"
+                              "              +4              1.5d3\n"
+                              "              1.E3            -0.0371D-2\n"
+                              "1.0000000000000000000000000000001E4,  +.25e+1\n" RUN_CARD);
+    rc_case *c = load_ok(p);
+    ENSURE(c != NULL);
+    if (!c) return;
+    const rc_case_funct *f = &c->funct[0];
+    ENSURE(f->npts == 5);
+    if (f->npts == 5) {
+        ENSURE(f->x[0] == -2.0 && f->y[0] == 0.5);
+        ENSURE(f->x[1] == 1e-3 && f->y[1] == 1500.0);
+        ENSURE(f->x[2] == 4.0 && f->y[2] == 1500.0);
+        ENSURE(f->x[3] == 1000.0 && f->y[3] == -0.0371e-2);
+        ENSURE(f->x[4] == 1e4 && f->y[4] == 2.5);
+    }
+    rc_case_free(c);
+}
+
+static void test_case_defaults(void)
+{
+    const char *p = tmp_write("defaults.rad",
+                              "/INTER/TYPE6/8\n"
+                              "\n"          /* blank title */
+                              "        12        11\n"
+                              "\n"          /* Sfric..Tstop all blank */
+                              "\n"          /* IRS..Ascalev blank */
+                              "        31\n" /* only fct_IDld */
+                              "         0                             0                   0\n"
+                              "\n"
+                              "/SURF/ELLIPS/12\n"
+                              "sphere\n"
+                              "         0         0\n" /* n = 0 means 2 */
+                              "\n"
+                              "0.0371,0.0371,0.0371\n"
+                              "/GRAV/1\n"
+                              "\n"
+                              "         0         Z\n"
+                              "/RUN\n"
+                              "               0.371\n");
+    rc_case *c = load_ok(p);
+    ENSURE(c != NULL);
+    if (!c) return;
+    const rc_case_type6 *t = &c->type6[0];
+    ENSURE(t->title[0] == '\0' && t->surf1 == 12 && t->surf2 == 11 && t->fct_ld == 31);
+    ENSURE(t->sfric == 0 && t->fric == 0 && t->gap == 0 && t->tstart == 0 && t->tstop == 1e30);
+    ENSURE(t->ascalef == 1 && t->ascalev == 1 && t->ascalex == 1 && t->fscaleld == 1);
+    ENSURE(t->fscaleul == 1 && t->fscalev == 1 && t->visc == 0 && t->iform == 0);
+    const rc_case_surf *s = &c->surf[0];
+    ENSURE(s->degree == 2 && s->rbody_id == 0 && s->c[0] == 0 && s->abc[2] == 0.0371);
+    const rc_case_grav *g = &c->grav[0];
+    ENSURE(g->fct_id == 0 && g->dir == 2 && g->ascale == 1 && g->fscale == 1 && g->grnod_id == 0);
+    /* /RUN: Dt_out = Tend/100; /SOLVER absent: documented defaults */
+    ENSURE(c->run.tend == 0.371);
+    ENSURE_NEAR(c->run.dtout, 0.00371, 1e-15, 0);
+    const rc_case_solver *v = &c->solver;
+    ENSURE(v->present == 0 && v->method == 1 && v->max_order == 5 && v->max_steps == 100000);
+    ENSURE(v->rtol == 1e-6 && v->atol_pos == 1e-9 && v->atol_quat == 1e-9 && v->atol_vel == 1e-6 &&
+           v->atol_omega == 1e-6 && v->atol_energy == 1e-6 && v->hmax == 0 && v->h0 == 0);
+    ENSURE(c->title[0] == '\0' && c->unit_mass[0] == '\0');
+    rc_case_free(c);
+}
+
+/* A fully blank line inside a card is a line of defaults. */
+static void test_case_blank_line_is_data(void)
+{
+    const char *p = tmp_write("blank.rad",
+                              "/RBODY/3\n"
+                              "\n"
+                              "1,,,,0.0371\n"
+                              "0.25,0.5,0.75\n"
+                              "\n" /* Jxy Jyz Jxz = 0 */
+                              "\n" /* optional Ioptoff line, blank too */
+                              "\n" /* beyond the layout: harmless */
+                              RUN_CARD);
+    rc_case *c = load_ok(p);
+    ENSURE(c && c->nrbody == 1);
+    if (c && c->nrbody == 1)
+        ENSURE(c->rbody[0].mass == 0.0371 && c->rbody[0].J[3] == 0 && c->rbody[0].J[2] == 0.75);
+    rc_case_free(c);
+}
+
+/* Comments, #RADIOSS STARTER, CRLF, trailing blanks, BOM, /END. */
+static void test_case_comments_and_end(void)
+{
+    const char *p = tmp_write("comments.rad",
+                              "\xEF\xBB\xBF#RADIOSS STARTER\r\n"
+                              "# comment\r\n"
+                              "$ comment, with a comma and\ta tab\r\n"
+                              "\r\n"
+                              "/RUN   \r\n"
+                              "# a comment inside a card is not a line\r\n"
+                              "0.0371, 0.00371   \r\n"
+                              "/end\r\n"
+                              "/FOO/1\n\x01\x02 garbage after the end \xff\n");
+    rc_case *c = load_ok(p);
+    ENSURE(c != NULL);
+    if (c) ENSURE(c->run.tend == 0.0371 && c->run.dtout == 0.00371 && c->run.loc.line == 5);
+    rc_case_free(c);
+}
+
+/* Ignored Radioss cards leave a warning. */
+static void test_case_ignored_cards_warn(void)
+{
+    const char *p = tmp_write("ignored.rad",
+                              "/TITLE\nsome title\n/MAT/LAW1/4\nsteel\n7800 2.1e11 0.3\n"
+                              "/PROP/WEIRD//header/\n" RUN_CARD);
+    rc_case *c = load_ok(p);
+    ENSURE(c && c->nwarnings == 3);
+    if (c && c->nwarnings == 3) {
+        ENSURE(strstr(c->warnings[0], "ignored.rad:1:") && strstr(c->warnings[0], "/TITLE"));
+        ENSURE(strstr(c->warnings[1], "ignored.rad:3:") && strstr(c->warnings[1], "/MAT/LAW1/4") &&
+               strstr(c->warnings[1], "ignored"));
+    }
+    rc_case_free(c);
+}
+
+/* FNV-1a 64, written independently of the reader. */
+static uint64_t fnv1a(const char *s, size_t n)
+{
+    uint64_t h = 0xcbf29ce484222325ull;
+    while (n--) h = (h ^ (unsigned char)*s++) * 0x100000001b3ull;
+    return h;
+}
+
+static void test_case_checksum(void)
+{
+    const char *text = "/RUN\n1.0,0.1\n";
+    const char *p = tmp_write("sum.rad", text);
+    rc_case *c = load_ok(p);
+    ENSURE(c != NULL);
+    ENSURE(fnv1a("a", 1) == 0xaf63dc4c8601ec8cull); /* published test vector */
+    if (c) ENSURE(c->checksum == (unsigned long)fnv1a(text, strlen(text)));
+    rc_case_free(c);
+}
+
+/* ---- #include ------------------------------------------------------------ */
+
+static void test_case_include_relative(void)
+{
+    rc_case *c = load_ok("tests/data/include_main.rad");
+    ENSURE(c != NULL);
+    if (!c) return;
+    ENSURE(c->nfiles == 3);
+    if (c->nfiles == 3) {
+        ENSURE(strcmp(c->files[1], "tests/data/sub/include_body.rad") == 0);
+        ENSURE(strcmp(c->files[2], "tests/data/sub/include_curve.inc") == 0);
+    }
+    ENSURE(c->nrbody == 1 && c->nfunct == 1 && c->ngrav == 1);
+    if (c->nrbody == 1 && c->nfunct == 1 && c->nfiles == 3) {
+        ENSURE(c->rbody[0].id == 21 && c->rbody[0].mass == 0.25);
+        ENSURE(c->rbody[0].loc.file == c->files[1] && c->rbody[0].loc.line == 2);
+        ENSURE(c->funct[0].loc.file == c->files[2] && c->funct[0].loc.line == 1);
+        ENSURE(c->funct[0].y[1] == 137.1);
+        ENSURE(c->grav[0].loc.file == c->files[0] && c->grav[0].loc.line == 6);
+    }
+    ENSURE(c->run.tend == 0.5);
+    rc_case_free(c);
+}
+
+static void test_case_include_cycle(void)
+{
+    tmp_write("cyc_b.inc", "/FUNCT/1\nf\n0,0\n1,1\n#include cyc_a.rad\n");
+    const char *a = tmp_write("cyc_a.rad", RUN_CARD "#include cyc_b.inc\n");
+    ENSURE(check_error(a, RC_EINPUT, 0, "cyc_b.inc:5:", "cyc_a.rad", "cycle", (const char *)NULL) == 0);
+    /* a file including itself */
+    EXPECT_INPUT_ERROR("self.rad", RUN_CARD "#include self.rad\n", 3, "self.rad", "cycle");
+}
+
+static void test_case_include_missing(void)
+{
+    EXPECT_INPUT_ERROR("incmiss.rad", RUN_CARD "# x\n#include no_such_file.inc\n", 4,
+                       "#include", "no_such_file.inc", "cannot read");
+    EXPECT_INPUT_ERROR("incempty.rad", RUN_CARD "#include   \n", 3, "#include", "missing file name");
+}
+
+static void test_case_include_depth_limit(void)
+{
+    /* d0 -> d1 -> ... -> d40: deeper than the limit of 32 levels */
+    char name[32], text[64];
+    for (int i = 40; i >= 0; i--) {
+        snprintf(name, sizeof name, "d%d.inc", i);
+        snprintf(text, sizeof text, "#include d%d.inc\n", i + 1);
+        tmp_write(name, i == 40 ? RUN_CARD : text);
+    }
+    char path[160];
+    snprintf(path, sizeof path, "%s/d0.inc", tmp_dir);
+    ENSURE(check_error(path, RC_EINPUT, 0, "d32.inc:1:", "d33.inc", "deeper than 32",
+                       (const char *)NULL) == 0);
+}
+
+/* The example deck of docs/case-format.md (between the example markers)
+ * loads and has the documented content. */
+static void test_case_docs_example(void)
+{
+    FILE *f = fopen("docs/case-format.md", "rb");
+    ENSURE(f != NULL);
+    if (!f) return;
+    static char doc[1 << 17];
+    size_t n = fread(doc, 1, sizeof doc - 1, f);
+    fclose(f);
+    doc[n] = '\0';
+    char *s = strstr(doc, "<!-- example deck -->");
+    char *b = s ? strstr(s, "```") : NULL;
+    b = b ? strchr(b, '\n') : NULL; /* the deck starts after the fence line */
+    char *e = b ? strstr(b, "\n```") : NULL;
+    ENSURE(b && e);
+    if (!b || !e) return;
+    e[1] = '\0';
+    rc_case *c = load_ok(tmp_write("docs_example.rad", b + 1));
+    ENSURE(c != NULL);
+    if (!c) return;
+    ENSURE(c->nrbody == 1 && c->nsurf == 2 && c->ntype6 == 1 && c->nfunct == 1 && c->ngrav == 1);
+    if (c->nrbody == 1) ENSURE(c->rbody[0].mass == 1.0);
+    ENSURE(c->run.tend == 1.0 && c->run.dtout == 0.001);
+    if (c->ngrav == 1) ENSURE(c->grav[0].dir == 2 && c->grav[0].fscale == -9.81);
+    rc_case_free(c);
+}
+
+/* ---- Errors: numbers ---------------------------------------------------- */
+
+static void test_case_error_bad_real(void)
+{
+    EXPECT_INPUT_ERROR("badreal.rad",
+                       "/RBODY/7\nball\n"
+                       "         1         0         0         0             1.2.3\n"
+                       "1,1,1\n0,0,0\n" RUN_CARD,
+                       3, "card /RBODY/7", "field Mass", "expected a finite real number",
+                       "\"1.2.3\"");
+}
+
+static void test_case_error_letterless_exponent(void)
+{
+    EXPECT_INPUT_ERROR("fexp.rad", "/FUNCT/2\nf\n0,0\n1.5-3,1\n" RUN_CARD, 4, "card /FUNCT/2",
+                       "field X", "\"1.5-3\"");
+}
+
+static void test_case_error_huge_integer(void)
+{
+    EXPECT_INPUT_ERROR("hugeint.rad", "/NODE\n9999999999,0,0,0\n" RUN_CARD, 2, "card /NODE",
+                       "field node_ID", "2147483647", "\"9999999999\"");
+    EXPECT_INPUT_ERROR("hugeid.rad", "/RBODY/99999999999\nb\n1,,,,1\n1,1,1\n0,0,0\n" RUN_CARD, 1,
+                       "card /RBODY/99999999999", "id larger than 2147483647");
+    EXPECT_INPUT_ERROR("intreal.rad", "/NODE\n1.0,0,0,0\n" RUN_CARD, 2, "field node_ID",
+                       "expected an integer", "\"1.0\"");
+}
+
+static void test_case_error_nan_inf(void)
+{
+    EXPECT_INPUT_ERROR("nan.rad", "/NODE\n1,nan,0,0\n" RUN_CARD, 2, "card /NODE", "field X",
+                       "finite", "\"nan\"");
+    EXPECT_INPUT_ERROR("inf.rad", "/NODE\n1,0,-inf,0\n" RUN_CARD, 2, "field Y", "\"-inf\"");
+    EXPECT_INPUT_ERROR("overflow.rad", "/NODE\n1,0,0,1e999\n" RUN_CARD, 2, "field Z", "finite",
+                       "\"1e999\"");
+}
+
+/* ---- Errors: lines and layout ------------------------------------------ */
+
+static void test_case_error_missing_line(void)
+{
+    EXPECT_INPUT_ERROR("missline.rad", "/RBODY/1\nball\n1,,,,1\n" RUN_CARD, 1, "card /RBODY/1",
+                       "expected 3 data lines (node_ID..., Jxx Jyy Jzz, Jxy Jyz Jxz), found 1");
+    EXPECT_INPUT_ERROR("notitle.rad", "/FUNCT/4\n" RUN_CARD, 1, "card /FUNCT/4", "title line");
+}
+
+static void test_case_error_extra_line(void)
+{
+    EXPECT_INPUT_ERROR("extraline.rad", "/RUN\n1.0\n2.0\n", 3, "card /RUN",
+                       "unexpected data line");
+}
+
+static void test_case_error_text_after_layout(void)
+{
+    EXPECT_INPUT_ERROR("beyond.rad",
+                       "/RUN\n"
+                       "                 1.0                0.01   x\n",
+                       2, "card /RUN", "unexpected text after column 40", "\"x\"");
+    EXPECT_INPUT_ERROR("commas.rad", "/RUN\n1.0,0.01,5\n", 2, "card /RUN",
+                       "at most 2 comma-separated fields");
+}
+
+static void test_case_error_tab(void)
+{
+    EXPECT_INPUT_ERROR("tab.rad", "/RUN\n1.0\t0.01\n", 2, "tab character", "column 4");
+}
+
+static void test_case_error_blank_field_used(void)
+{
+    EXPECT_INPUT_ERROR("skipfield.rad",
+                       "/INTER/TYPE6/3\nt\n12,11\n\n7,0,0,0,0,0\n31\n\n\n" RUN_CARD, 5,
+                       "card /INTER/TYPE6/3", "field blank", "\"7\"");
+}
+
+static void test_case_error_line_too_long(void)
+{
+    char text[1200];
+    memset(text, ' ', sizeof text);
+    memcpy(text, "/RUN\n1.0", 8);
+    memcpy(text + 1100, "x\n", 3);
+    EXPECT_INPUT_ERROR("long.rad", text, 2, "1096 characters", "at most 1000");
+}
+
+static void test_case_error_title_too_long(void)
+{
+    char text[400];
+    snprintf(text, sizeof text, "/FUNCT/1\n%0101d\n0,0\n1,1\n" RUN_CARD, 0);
+    EXPECT_INPUT_ERROR("longtitle.rad", text, 2, "card /FUNCT/1", "field title", "at most 100");
+}
+
+static void test_case_error_outside_card(void)
+{
+    EXPECT_INPUT_ERROR("outside.rad", "\n1.0 2.0\n" RUN_CARD, 2, "outside any card");
+}
+
+static void test_case_error_binary(void)
+{
+    static const char junk[] = "/RUN\n1.0\n\x7f" "ELF\x02\x01\x01\x00\x00\x00\x00\x00\x00\x00\x00\x00";
+    ENSURE(check_error(tmp_write_n("binary.rad", junk, sizeof junk - 1), RC_EINPUT, 3,
+                       "not a text file", (const char *)NULL) == 0);
+    static const char nul[] = "/RUN\n1.0\0,0.1\n";
+    ENSURE(check_error(tmp_write_n("nul.rad", nul, sizeof nul - 1), RC_EINPUT, 2,
+                       "byte 0x00", (const char *)NULL) == 0);
+}
+
+static void test_case_error_empty_file(void)
+{
+    EXPECT_INPUT_ERROR("empty.rad", "", 1, "empty file");
+    EXPECT_INPUT_ERROR("onlycomments.rad", "# nothing\n$ here\n\n", 3, "no cards");
+    EXPECT_INPUT_ERROR("onlyend.rad", "/END\n/RUN\n1,1\n", 1, "no cards");
+}
+
+static void test_case_error_missing_run(void)
+{
+    EXPECT_INPUT_ERROR("norun.rad", "/FUNCT/1\nf\n0,0\n1,1\n", 4, "no /RUN card",
+                       "end time is required");
+}
+
+static void test_case_error_main_missing_is_eio(void)
+{
+    rc_case *c = (rc_case *)1;
+    rc_error e;
+    rc_error_clear(&e);
+    ENSURE(rc_case_load("tests/data/no_such_deck.rad", &c, &e) == RC_EIO);
+    ENSURE(c == NULL && e.code == RC_EIO && strstr(e.msg, "tests/data/no_such_deck.rad"));
+    ENSURE(rc_case_load("tests/data", &c, &e) == RC_EIO); /* a directory */
+    ENSURE(strstr(e.msg, "not a regular file") != NULL);
+}
+
+/* ---- Errors: cards ------------------------------------------------------ */
+
+static void test_case_error_unknown_card(void)
+{
+    EXPECT_INPUT_ERROR("unknown.rad", RUN_CARD "/FOO/1\nx\n", 3, "card /FOO/1", "unknown card");
+    EXPECT_INPUT_ERROR("planned.rad", RUN_CARD "/FRICTION/1\nx\n", 3, "card /FRICTION/1",
+                       "not supported yet");
+    EXPECT_INPUT_ERROR("subtype.rad", RUN_CARD "/SURF/SEG/1\nx\n", 3, "card /SURF/SEG/1",
+                       "not supported yet", "/SURF/PLANE");
+    EXPECT_INPUT_ERROR("nosub.rad", RUN_CARD "/INTER/5\nx\n", 3, "card /INTER/5", "missing subtype",
+                       "/INTER/TYPE6");
+    EXPECT_INPUT_ERROR("badhdr.rad", RUN_CARD "/RBODY/x/1\nx\n", 3, "card /RBODY/x/1",
+                       "unexpected keyword /X");
+    EXPECT_INPUT_ERROR("noid.rad", RUN_CARD "/RBODY\nx\n", 3, "card /RBODY", "field rbody_ID",
+                       "positive integer id");
+    EXPECT_INPUT_ERROR("unitid.rad", RUN_CARD "/FUNCT/1/2\nf\n0,0\n1,1\n", 3, "card /FUNCT/1/2",
+                       "field unit_ID", "not supported yet");
+}
+
+static void test_case_error_duplicate_id(void)
+{
+    EXPECT_INPUT_ERROR("dup.rad",
+                       "/RBODY/7\na\n1,,,,1\n1,1,1\n0,0,0\n"
+                       "/FUNCT/7\nf\n0,0\n1,1\n" /* another kind: fine */
+                       "/RBODY/7\nb\n2,,,,1\n1,1,1\n0,0,0\n" RUN_CARD,
+                       10, "card /RBODY/7", "field rbody_ID", "duplicate id 7",
+                       "dup.rad:1");
+    EXPECT_INPUT_ERROR("dupnode.rad", "/NODE\n5,0,0,0\n6,0,0,0\n/NODE\n6,1,1,1\n" RUN_CARD, 5,
+                       "card /NODE", "field node_ID", "duplicate id 6", "dupnode.rad:3");
+    EXPECT_INPUT_ERROR("dupsurf.rad",
+                       "/SURF/PLANE/3\np\n0,0,0\n0,0,1\n/SURF/ELLIPS/3\ns\n\n0,0,0\n1,1,1\n" RUN_CARD,
+                       5, "card /SURF/ELLIPS/3", "duplicate id 3", "dupsurf.rad:1");
+    EXPECT_INPUT_ERROR("duprun.rad", RUN_CARD RUN_CARD, 3, "card /RUN", "only one",
+                       "duprun.rad:1");
+}
+
+static void test_case_error_negative_mass(void)
+{
+    EXPECT_INPUT_ERROR("negmass.rad", "/RBODY/2\nb\n1,,,,-0.0371\n1,1,1\n0,0,0\n" RUN_CARD, 3,
+                       "card /RBODY/2", "field Mass", "positive", "\"-0.0371\"");
+    EXPECT_INPUT_ERROR("nomass.rad", "/RBODY/2\nb\n1\n1,1,1\n0,0,0\n" RUN_CARD, 3, "field Mass",
+                       "got blank");
+    EXPECT_INPUT_ERROR("negjxx.rad", "/RBODY/2\nb\n1,,,,1\n-1,1,1\n0,0,0\n" RUN_CARD, 4,
+                       "field Jxx", "positive");
+}
+
+static void test_case_error_inertia_not_pd(void)
+{
+    /* |Jxy| > sqrt(Jxx Jyy): indefinite */
+    EXPECT_INPUT_ERROR("nonpd.rad", "/RBODY/2\nb\n1,,,,1\n0.0371,0.0371,0.0371\n0.05,0,0\n" RUN_CARD,
+                       5, "card /RBODY/2", "field Jxy Jyz Jxz", "positive-definite", "minor 2");
+    /* singular: rank 2 */
+    EXPECT_INPUT_ERROR("singular.rad", "/RBODY/2\nb\n1,,,,1\n1,1,2\n0,1.4142135623730951,0\n" RUN_CARD,
+                       5, "positive-definite");
+}
+
+static void test_case_error_rbody_unsupported(void)
+{
+    EXPECT_INPUT_ERROR("skew.rad", "/RBODY/2\nb\n1,0,3,0,1\n1,1,1\n0,0,0\n" RUN_CARD, 3,
+                       "field Skew_ID", "not supported yet");
+    EXPECT_INPUT_ERROR("icog.rad", "/RBODY/2\nb\n1,,,,1,,,2\n1,1,1\n0,0,0\n" RUN_CARD, 3,
+                       "field ICoG", "not supported yet", "\"2\"");
+    EXPECT_INPUT_ERROR("ispher.rad", "/RBODY/2\nb\n1,,,7,1\n1,1,1\n0,0,0\n" RUN_CARD, 3,
+                       "field Ispher", "expected an integer in {0, 1, 2, 3}");
+}
+
+static void test_case_error_funct(void)
+{
+    EXPECT_INPUT_ERROR("nonmono.rad", "/FUNCT/5\nf\n0,0\n0.0371,1\n0.0371,2\n" RUN_CARD, 5,
+                       "card /FUNCT/5", "field X", "not a function", "\"0.0371\"", "line 4");
+    EXPECT_INPUT_ERROR("onepoint.rad", "/FUNCT/5\nf\n0,0\n\n\n" RUN_CARD, 1, "card /FUNCT/5",
+                       "field X", "not a function", "at least 2 points", "found 1");
+}
+
+/* The six TYPE6 lines with one field replaced: line k (1..6) = text. */
+static const char *type6_deck(const char *name, int k, const char *text)
+{
+    const char *def[6] = {"12,11", "", "", "31", "", ""};
+    char deck[1024];
+    int n = snprintf(deck, sizeof deck, "/INTER/TYPE6/3\ncontact\n");
+    for (int i = 0; i < 6; i++)
+        n += snprintf(deck + n, sizeof deck - (size_t)n, "%s\n", i + 1 == k ? text : def[i]);
+    snprintf(deck + n, sizeof deck - (size_t)n, RUN_CARD);
+    return tmp_write(name, deck);
+}
+
+#define EXPECT_T6(k, text, ...) \
+    ENSURE(check_error(type6_deck("t6.rad", (k), (text)), RC_EINPUT, (k) + 2, "card /INTER/TYPE6/3", __VA_ARGS__, (const char *)NULL) == 0)
+
+static void test_case_error_type6(void)
+{
+    /* unsupported but valid Radioss values */
+    EXPECT_T6(4, "        31         1",
+              "field Iform: expected an integer in {0}, got \"1\": not supported yet (planned: "
+              "TYPE6 hysteresis/friction issue)");
+    EXPECT_T6(2, ",0.1", "field Fric", "not supported yet");
+    EXPECT_T6(2, "0.5", "field Sfric", "not supported yet");
+    EXPECT_T6(3, ",,,5", "field Inacti", "not supported yet");
+    EXPECT_T6(3, ",1", "field IRS", "not supported yet", "analytic");
+    EXPECT_T6(3, ",,,,4", "field fct_IDff", "not supported yet");
+    EXPECT_T6(4, "31,,,,1", "field Icor", "not supported yet");
+    EXPECT_T6(5, "7", "field fct_IDul", "not supported yet");
+    EXPECT_T6(5, ",,1e5", "field Stiff", "not supported yet");
+    EXPECT_T6(6, ",3", "field fct_IDdv", "not supported yet");
+    /* invalid values */
+    EXPECT_T6(4, "31,7", "field Iform", "expected an integer in {0, 1, 2}", "\"7\"");
+    EXPECT_T6(3, ",,,3", "field Inacti", "expected an integer in {0, 5}");
+    EXPECT_T6(2, ",,-0.0371", "field Gap", "non-negative", "\"-0.0371\"");
+    EXPECT_T6(2, ",,,0.5,0.25", "field Tstop", "Tstart", "\"0.25\"");
+    EXPECT_T6(4, "31,,-0.0371", "field Ascalex", "positive");
+    EXPECT_T6(3, ",,,,,,-1", "field Ascalef", "positive");
+    EXPECT_T6(6, "-37", "field Visc", "non-negative");
+    EXPECT_T6(4, "", "field fct_IDld", "positive", "got blank");
+    EXPECT_T6(1, "12", "field surf_ID2", "positive");
+}
+
+static void test_case_error_surfaces(void)
+{
+    EXPECT_INPUT_ERROR("plane.rad", "/SURF/PLANE/1\np\n0.0371,0,1\n0.0371,0,1\n" RUN_CARD, 4,
+                       "card /SURF/PLANE/1", "field XM1 YM1 ZM1", "different from M");
+    EXPECT_INPUT_ERROR("ellips.rad", "/SURF/ELLIPS/1\ne\n\n0,0,0\n0.05,0.05,0.06\n" RUN_CARD, 5,
+                       "card /SURF/ELLIPS/1", "field c", "not supported yet (only spheres");
+    EXPECT_INPUT_ERROR("ellipsn.rad", "/SURF/ELLIPS/1\ne\n0,4\n0,0,0\n1,1,1\n" RUN_CARD, 3,
+                       "field n", "not supported yet (only spheres");
+    EXPECT_INPUT_ERROR("ellipsa.rad", "/SURF/ELLIPS/1\ne\n\n0,0,0\n0,1,1\n" RUN_CARD, 5,
+                       "field a", "positive");
+    EXPECT_INPUT_ERROR("ellskew.rad", "/SURF/ELLIPS/1\ne\n2\n0,0,0\n1,1,1\n" RUN_CARD, 3,
+                       "field skew_ID", "not supported yet");
+}
+
+static void test_case_error_begin_units(void)
+{
+    EXPECT_INPUT_ERROR("units.rad",
+                       "/BEGIN\nrun\n2022,0\nkg,m,s\nkg,mm,s\n" RUN_CARD, 5, "card /BEGIN",
+                       "field Work_length_unit", "unit conversion not supported yet");
+}
+
+static void test_case_error_grav_bcs_inivel(void)
+{
+    EXPECT_INPUT_ERROR("gravdir.rad", "/GRAV/1\ng\n0,W\n" RUN_CARD, 3, "card /GRAV/1", "field DIR",
+                       "X, Y or Z", "\"W\"");
+    EXPECT_INPUT_ERROR("gravsens.rad", "/GRAV/1\ng\n0,Z,0,4\n" RUN_CARD, 3, "field sensor_ID",
+                       "not supported yet");
+    EXPECT_INPUT_ERROR("bcs.rad", "/BCS/1\nb\n   112 000\n" RUN_CARD, 3, "card /BCS/1",
+                       "field Trarot", "\"112 000\"");
+    EXPECT_INPUT_ERROR("inivel.rad", "/INIVEL/AXIS/1\nv\n0,0,0\n" RUN_CARD, 1,
+                       "card /INIVEL/AXIS/1", "not supported yet");
+    EXPECT_INPUT_ERROR("iniskew.rad", "/INIVEL/TRA/1\nv\n0,0,1,5,3\n" RUN_CARD, 3,
+                       "field skew_ID", "not supported yet");
+}
+
+static void test_case_error_run_solver(void)
+{
+    EXPECT_INPUT_ERROR("tend.rad", "/RUN\n-1.0\n", 2, "card /RUN", "field Tend", "positive");
+    EXPECT_INPUT_ERROR("tend0.rad", "/RUN\n\n", 2, "card /RUN", "field Tend", "got blank");
+    EXPECT_INPUT_ERROR("dtout.rad", "/RUN\n1,-0.1\n", 2, "field Dt_out", "non-negative");
+    EXPECT_INPUT_ERROR("rtol.rad", RUN_CARD "/SOLVER\n,,,-1e-6\n", 4, "card /SOLVER", "field Rtol",
+                       "positive");
+    EXPECT_INPUT_ERROR("atol.rad", RUN_CARD "/SOLVER\n\n,,-1e-6\n", 5, "field Atol_vel", "positive");
+    EXPECT_INPUT_ERROR("method.rad", RUN_CARD "/SOLVER\n2\n", 4, "field Method",
+                       "not supported yet");
+    EXPECT_INPUT_ERROR("order.rad", RUN_CARD "/SOLVER\n1,6\n", 4, "field Max_order",
+                       "{1, 2, 3, 4, 5}");
+}
+
+/* ---- Robustness --------------------------------------------------------- */
+
+/* Load and check the contract: OK, or an input error with a message that
+ * starts with the path; never a crash (valgrind/ASan watch the rest). */
+static int load_any(const char *path)
+{
+    rc_case *c = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    rc_status st = rc_case_load(path, &c, &e);
+    if (st == RC_OK) {
+        int ok = c != NULL;
+        rc_case_free(c);
+        return ok;
+    }
+    return st == RC_EINPUT && c == NULL && strncmp(e.msg, path, strlen(path)) == 0;
+}
+
+static void test_case_robust_truncated_and_mutated(void)
+{
+    FILE *f = fopen("tests/data/full_fixed.rad", "rb");
+    static char deck[8192], buf[8192];
+    size_t n = f ? fread(deck, 1, sizeof deck, f) : 0;
+    if (f) fclose(f);
+    ENSURE(n > 1000);
+    int bad = 0;
+    /* every truncation */
+    for (size_t k = 0; k < n; k += 7)
+        bad += !load_any(tmp_write_n("trunc.rad", deck, k));
+    /* random byte mutations (deterministic LCG) */
+    uint32_t seed = 0x0371u;
+    static const char alphabet[] = " ,./-+0123456789eEdD\t\r\n#$\0\xff" "ZX";
+    for (int it = 0; it < 1500; it++) {
+        memcpy(buf, deck, n);
+        for (int m = 0; m < 1 + it % 4; m++) {
+            seed = seed * 1664525u + 1013904223u;
+            size_t pos = (seed >> 8) % n;
+            seed = seed * 1664525u + 1013904223u;
+            buf[pos] = alphabet[(seed >> 8) % (sizeof alphabet - 1)];
+        }
+        bad += !load_any(tmp_write_n("mut.rad", buf, n));
+    }
+    ENSURE(bad == 0);
+}
+
+void suite_case(void);
+void suite_case(void)
+{
+    RUN_TEST(test_case_full_deck_fixed);
+    RUN_TEST(test_case_full_deck_comma_equals_fixed);
+    RUN_TEST(test_case_fortran_reals);
+    RUN_TEST(test_case_defaults);
+    RUN_TEST(test_case_blank_line_is_data);
+    RUN_TEST(test_case_comments_and_end);
+    RUN_TEST(test_case_ignored_cards_warn);
+    RUN_TEST(test_case_checksum);
+    RUN_TEST(test_case_include_relative);
+    RUN_TEST(test_case_include_cycle);
+    RUN_TEST(test_case_include_missing);
+    RUN_TEST(test_case_include_depth_limit);
+    RUN_TEST(test_case_docs_example);
+    RUN_TEST(test_case_error_bad_real);
+    RUN_TEST(test_case_error_letterless_exponent);
+    RUN_TEST(test_case_error_huge_integer);
+    RUN_TEST(test_case_error_nan_inf);
+    RUN_TEST(test_case_error_missing_line);
+    RUN_TEST(test_case_error_extra_line);
+    RUN_TEST(test_case_error_text_after_layout);
+    RUN_TEST(test_case_error_tab);
+    RUN_TEST(test_case_error_blank_field_used);
+    RUN_TEST(test_case_error_line_too_long);
+    RUN_TEST(test_case_error_title_too_long);
+    RUN_TEST(test_case_error_outside_card);
+    RUN_TEST(test_case_error_binary);
+    RUN_TEST(test_case_error_empty_file);
+    RUN_TEST(test_case_error_missing_run);
+    RUN_TEST(test_case_error_main_missing_is_eio);
+    RUN_TEST(test_case_error_unknown_card);
+    RUN_TEST(test_case_error_duplicate_id);
+    RUN_TEST(test_case_error_negative_mass);
+    RUN_TEST(test_case_error_inertia_not_pd);
+    RUN_TEST(test_case_error_rbody_unsupported);
+    RUN_TEST(test_case_error_funct);
+    RUN_TEST(test_case_error_type6);
+    RUN_TEST(test_case_error_surfaces);
+    RUN_TEST(test_case_error_begin_units);
+    RUN_TEST(test_case_error_grav_bcs_inivel);
+    RUN_TEST(test_case_error_run_solver);
+    RUN_TEST(test_case_robust_truncated_and_mutated);
+    tmp_cleanup();
+}

@@ -40,34 +40,38 @@ static void dense_body(const rc_model *m, int b, double t, const double *y, doub
     }
 }
 
-/* Dense block of interface i in closed mode: rows = accelerations of a (if
- * free), of b (if free), energy rates; columns = states of a, then b. */
-static void dense_inter(const rc_model *m, int i, const double *y, double *out)
+/* Dense block of interface i in the given modes: rows = accelerations of a
+ * (if free), of b (if free), own states; columns = states of a, of b, own. */
+static void dense_inter(const rc_model *m, int i, int mode, int branch, int track, const double *y,
+                        double *out)
 {
     const rc_jblock *jb = &m->jb_inter[i];
-    const int ba = m->inter_ba[i], bb = m->inter_bb[i];
+    const int ba = m->inter_ba[i], bb = m->inter_bb[i], ns = m->inter_ns[i];
     const int fa = ba >= 0 && m->body_yadr[ba] >= 0, fb = bb >= 0 && m->body_yadr[bb] >= 0;
-    T ya[RC_NB], yb[RC_NB];
+    const int na = fa ? RC_NB : 0, nb = fb ? RC_NB : 0;
+    T ya[RC_NB], yb[RC_NB], ys[RC_NS_MAX];
     load_body(m, ba, y, ya);
     load_body(m, bb, y, yb);
+    for (int k = 0; k < ns; k++) ys[k] = y[m->inter_eadr[i] + k];
     for (int c = 0; c < jb->ncol; c++) {
-        T *yp = (fa && c < RC_NB) ? ya + c : yb + (c - (fa ? RC_NB : 0));
+        T *yp = c < na ? ya + c : c < na + nb ? yb + (c - na) : ys + (c - na - nb);
         *yp += I * RC_CSTEP;
-        T acc[12] = {0}, edot[RC_NE];
-        type6_c(m, i, RC_MODE_CLOSED, ya, yb, fa ? acc : NULL, fb ? acc + 6 : NULL, edot, NULL, NULL, NULL);
+        T acc[12] = {0}, sdot[RC_NS_MAX];
+        type6_c(m, i, mode, branch, track, ya, yb, ys, fa ? acc : NULL, fb ? acc + 6 : NULL, sdot, NULL);
         *yp = creal(*yp);
         int r = 0;
         if (fa)
             for (int k = 0; k < 6; k++, r++) out[r * jb->ncol + c] = cimag(acc[k]) / RC_CSTEP;
         if (fb)
             for (int k = 0; k < 6; k++, r++) out[r * jb->ncol + c] = cimag(acc[6 + k]) / RC_CSTEP;
-        for (int k = 0; k < RC_NE; k++, r++) out[r * jb->ncol + c] = cimag(edot[k]) / RC_CSTEP;
+        for (int k = 0; k < ns; k++, r++) out[r * jb->ncol + c] = cimag(sdot[k]) / RC_CSTEP;
     }
 }
 
-void rc_jac_dense_block(const rc_model *m, int is_inter, int e, double t, const double *y, double *out)
+void rc_jac_dense_block(const rc_model *m, int is_inter, int e, int mode, int branch, int track, double t,
+                        const double *y, double *out)
 {
-    if (is_inter) dense_inter(m, e, y, out);
+    if (is_inter) dense_inter(m, e, mode, branch, track, y, out);
     else dense_body(m, e, t, y, out);
 }
 
@@ -89,8 +93,8 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
             scatter(&m->jb_body[b], dense, val);
         }
     for (int i = 0; i < m->ninter; i++)
-        if (d->inter_mode[i] == RC_MODE_CLOSED && m->jb_inter[i].ncol > 0) {
-            dense_inter(m, i, y, dense);
+        if (d->inter_mode[i] != RC_MODE_INACTIVE && m->jb_inter[i].ncol > 0) {
+            dense_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], y, dense);
             scatter(&m->jb_inter[i], dense, val);
         }
     return 0;

@@ -26,39 +26,48 @@ int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, do
     /* bodies: free motion */
     for (int b = 0; b < m->nbody; b++)
         if (m->body_yadr[b] >= 0) body_rhs_r(m, b, t, y + m->body_yadr[b], ydot + m->body_yadr[b]);
-    /* interfaces: forces into the accelerations, energy rates */
+    /* interfaces: forces into the accelerations, own-state rates */
     for (int i = 0; i < m->ninter; i++) {
-        double *edot = ydot + m->inter_eadr[i];
-        edot[0] = edot[1] = 0.0;
-        if (d->inter_mode[i] != RC_MODE_CLOSED) continue;
+        double *sdot = ydot + m->inter_eadr[i];
         const int ba = m->inter_ba[i], bb = m->inter_bb[i];
-        type6_r(m, i, RC_MODE_CLOSED, rc_body_state(m, ba, y), rc_body_state(m, bb, y),
-                acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), edot, NULL, NULL, NULL);
-        if (!isfinite(edot[0]) || !isfinite(edot[1])) {
-            d->fail_inter = i;
-            d->fail_t = t;
-            return 1; /* recoverable: CVODE retries with a smaller step */
+        if (d->inter_mode[i] == RC_MODE_INACTIVE) {
+            memset(sdot, 0, (size_t)m->inter_ns[i] * sizeof(double));
+            continue;
         }
+        type6_r(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], rc_body_state(m, ba, y),
+                rc_body_state(m, bb, y), y + m->inter_eadr[i], acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot,
+                NULL);
+        for (int k = 0; k < m->inter_ns[i]; k++)
+            if (!isfinite(sdot[k])) {
+                d->fail_inter = i;
+                d->fail_t = t;
+                return 1; /* recoverable: CVODE retries with a smaller step */
+            }
     }
     return 0;
 }
 
-void rc_inter_report_eval(const rc_model *m, int i, int mode, double t, const double *y,
-                          rc_inter_report *r)
+void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, double t,
+                          const double *y, rc_inter_report *r)
 {
-    geom_r g;
-    double fl, fd;
+    t6out_r o;
     (void)t;
-    type6_r(m, i, mode, rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y),
-            NULL, NULL, NULL, &g, &fl, &fd);
-    r->p = m->inter_gap[i] - g.d;
-    r->vn = -g.ddot;
-    r->fload = fl;
-    r->fdamp = fd;
-    r->fn = fl + fd;
+    type6_r(m, i, mode, branch, track, rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y),
+            y + m->inter_eadr[i], NULL, NULL, NULL, &o);
+    r->p = o.p;
+    r->vn = o.vn;
+    r->p_raw = o.p_raw;
+    r->vn_raw = o.vn_raw;
+    r->fload = o.fel;
+    r->fdamp = o.fd;
+    r->fn = o.fel + o.fd;
+    r->fl = o.fl;
+    r->fu = o.fu;
+    r->fh = o.fh;
+    r->offset = o.off;
     for (int k = 0; k < 3; k++) {
-        r->point[k] = g.point[k];
-        r->normal[k] = g.n[k];
+        r->point[k] = o.g.point[k];
+        r->normal[k] = o.g.n[k];
     }
 }
 
@@ -66,16 +75,30 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
 {
     for (int i = 0; i < m->ninter; i++) {
         double *gi = g + RC_ROOTS_PER_INTER * i;
+        for (int k = 0; k < RC_ROOTS_PER_INTER; k++) gi[k] = 1.0; /* inactive roots */
         gi[RC_ROOT_TSTART] = t - m->inter_tstart[i];
         gi[RC_ROOT_TSTOP] = t - m->inter_tstop[i];
-        /* open: penetration crosses zero; closed: total force crosses zero */
-        const int mode = d->inter_mode[i];
-        if (mode == RC_MODE_INACTIVE) {
-            gi[RC_ROOT_CONTACT] = 1.0;
-            continue;
-        }
+        const int mode = d->inter_mode[i], br = d->inter_branch[i], trk = d->inter_track[i];
+        if (mode == RC_MODE_INACTIVE) continue;
         rc_inter_report r;
-        rc_inter_report_eval(m, i, RC_MODE_CLOSED, t, y, &r);
-        gi[RC_ROOT_CONTACT] = mode == RC_MODE_OPEN ? r.p : r.fn;
+        rc_inter_report_eval(m, i, mode, br, trk, t, y, &r);
+        /* zone: P (not while the Inacti offset tracks it, P = 0 there) */
+        if (!trk) gi[RC_ROOT_ZONE] = r.p;
+        /* total normal force, unclipped: release and re-close */
+        if (mode != RC_MODE_OPEN) gi[RC_ROOT_FORCE] = r.fn;
+        /* hysteresis: reversal on the curves, bounds on the Stiff line */
+        if (mode != RC_MODE_OPEN && m->inter_iform[i] != 0) {
+            if (br == RC_BR_ELASTIC) {
+                gi[RC_ROOT_HYST_A] = r.fl - r.fh;
+                gi[RC_ROOT_HYST_B] = r.fh - r.fu;
+            } else {
+                gi[RC_ROOT_HYST_A] = r.vn;
+            }
+        }
+        /* Inacti 5: tracking stops when P_raw turns, or the offset is used up */
+        if (trk) {
+            gi[RC_ROOT_TRK_A] = r.vn_raw;
+            gi[RC_ROOT_TRK_B] = r.offset;
+        }
     }
 }

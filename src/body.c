@@ -17,7 +17,38 @@ void rc_gravity(const rc_model *m, int b, double t, double g[3])
     for (int k = 0; k < 3; k++) g[k] = m->body_grav[3 * b + k] * f;
 }
 
-void rc_energy(const rc_model *m, double t, const double *y, double e[RC_NENERGY])
+/* Elastic energy stored in interface i: what the bodies would recover by
+ * unloading it completely along the law (Iform 0: the load curve; Iform 1, 2:
+ * the Stiff line down to the unload curve or zero, then the unload curve). */
+static double stored_energy(const rc_model *m, const rc_data *d, int i, double t, const double *y)
+{
+    const int mode = d->inter_mode[i];
+    if (mode != RC_MODE_CLOSED && mode != RC_MODE_RELEASED) return 0.0;
+    rc_inter_report r;
+    rc_inter_report_eval(m, i, mode, d->inter_branch[i], d->inter_track[i], t, y, &r);
+    const double ax = m->inter_ascalex[i], P = r.p, F = r.fload;
+    if (P <= 0) return 0.0;
+    if (m->inter_iform[i] == 0)
+        return m->inter_fscaleld[i] * ax * rc_table_integral(&m->table[m->inter_fct_ld[i]], 0.0, P / ax);
+    const double k = m->inter_stiff[i];
+    if (m->inter_fct_ul[i] < 0 || F <= 0) return F > 0 ? 0.5 * F * F / k : 0.0;
+    /* the Stiff line meets the unload curve at P*: bisection on
+     * g(P*) = F - k (P - P*) - F_U(P*), g(P - F/k) <= 0 <= g(P) */
+    const rc_table *tu = &m->table[m->inter_fct_ul[i]];
+    const double fs = m->inter_fscaleul[i];
+    double lo = P - F / k, hi = P, fu, dd;
+    for (int it = 0; it < 80; it++) {
+        double mid = 0.5 * (lo + hi);
+        rc_table_eval(tu, mid / ax, &fu, &dd);
+        if (F - k * (P - mid) - fs * fu > 0) hi = mid;
+        else lo = mid;
+    }
+    rc_table_eval(tu, hi / ax, &fu, &dd);
+    double tri = 0.5 * (F + fs * fu) * (P - hi);
+    return tri + (hi > 0 ? fs * ax * rc_table_integral(tu, 0.0, hi / ax) : 0.0);
+}
+
+void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, double e[RC_NENERGY])
 {
     memset(e, 0, RC_NENERGY * sizeof(double));
     for (int b = 0; b < m->nbody; b++) {
@@ -35,10 +66,12 @@ void rc_energy(const rc_model *m, double t, const double *y, double e[RC_NENERGY
         e[RC_E_POT] -= m->body_mass[b] * (g[0] * s[0] + g[1] * s[1] + g[2] * s[2]);
     }
     for (int i = 0; i < m->ninter; i++) {
-        e[RC_E_ELASTIC] += y[m->inter_eadr[i]];
+        e[RC_E_WORK] += y[m->inter_eadr[i]];
         e[RC_E_DAMP] += y[m->inter_eadr[i] + 1];
+        e[RC_E_STORED] += stored_energy(m, d, i, t, y);
     }
-    e[RC_E_TOTAL] = e[RC_E_KIN] + e[RC_E_POT] + e[RC_E_ELASTIC] + e[RC_E_DAMP];
+    e[RC_E_HYST] = e[RC_E_WORK] - e[RC_E_STORED];
+    e[RC_E_TOTAL] = e[RC_E_KIN] + e[RC_E_POT] + e[RC_E_WORK] + e[RC_E_DAMP];
 }
 
 void rc_initial_state(const rc_model *m, double *y)

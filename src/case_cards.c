@@ -36,7 +36,7 @@
 #define RC_F_INTN(nm, p, fl, nt) RC_F_SET(nm, p, 0, fl, 0, 0, nt)
 #define RC_NF(arr) ((int)(sizeof(arr) / sizeof((arr)[0])))
 
-static const char rc_note_t6[] = "(planned: TYPE6 hysteresis/friction issue)";
+static const char rc_note_t6[] = "(planned: TYPE6 friction)";
 static const char rc_note_skew[] = "(skew frames)";
 static const char rc_note_sensor[] = "(sensors)";
 
@@ -386,26 +386,26 @@ static rc_status rc_card_type6(rc_reader *rd, const rc_block *b)
                  "(only analytic surfaces exist now; their normals are fixed)"),
         RC_F_SET("IRm", &t->irm, 0, 0, 0x7u, RC_BIT(0),
                  "(only analytic surfaces exist now; their normals are fixed)"),
-        RC_F_SET("Inacti", &t->inacti, 0, 0, RC_BIT(0) | RC_BIT(5), RC_BIT(0), rc_note_t6),
+        RC_F_SET("Inacti", &t->inacti, 0, 0, RC_BIT(0) | RC_BIT(5), RC_BIT(0) | RC_BIT(5), NULL),
         RC_F_INTN("fct_IDff", &t->fct_ff, only0, rc_note_t6),
         RC_F_INTN("fct_IDfv", &t->fct_fv, only0, rc_note_t6),
         RC_F_REAL("Ascalef", &t->ascalef, 1, RC_FF_ZDEF | RC_FF_POS),
         RC_F_REAL("Ascalev", &t->ascalev, 1, RC_FF_ZDEF | RC_FF_POS)};
     rc_field l4[] = {
         RC_F_INT("fct_IDld", &t->fct_ld, 0, RC_FF_POS),
-        RC_F_SET("Iform", &t->iform, 0, 0, 0x7u, RC_BIT(0), rc_note_t6),
+        RC_F_SET("Iform", &t->iform, 0, 0, 0x7u, 0x7u, NULL),
         RC_F_REAL("Ascalex", &t->ascalex, 1, RC_FF_ZDEF | RC_FF_POS),
         RC_F_REAL("FscaleId", &t->fscaleld, 1, RC_FF_ZDEF),
-        RC_F_SET("Icor", &t->icor, 0, 0, 0x3u, RC_BIT(0), rc_note_t6)};
+        RC_F_SET("Icor", &t->icor, 0, 0, 0x3u, 0x3u, NULL)};
     rc_field l5[] = {
-        RC_F_INTN("fct_IDul", &t->fct_ul, only0, rc_note_t6),
+        RC_F_INT("fct_IDul", &t->fct_ul, 0, RC_FF_NONNEG),
         RC_F_SKIP(10),
-        {.name = "Stiff", .width = 20, .type = RC_FT_REAL, .out = &t->stiff, .flags = only0, .note = rc_note_t6},
+        RC_F_REAL("Stiff", &t->stiff, 0, RC_FF_NONNEG),
         RC_F_REAL("Fscaleul", &t->fscaleul, 1, RC_FF_ZDEF)};
     rc_field l6[] = {
         RC_F_REAL("Visc", &t->visc, 0, RC_FF_NONNEG),
-        RC_F_INTN("fct_IDdv", &t->fct_dv, only0, rc_note_t6),
-        RC_F_INTN("fct_IDdf", &t->fct_df, only0, rc_note_t6),
+        RC_F_INT("fct_IDdv", &t->fct_dv, 0, RC_FF_NONNEG),
+        RC_F_INT("fct_IDdf", &t->fct_df, 0, RC_FF_NONNEG),
         RC_F_REAL("Fscalev", &t->fscalev, 1, RC_FF_ZDEF)};
     rc_field *lines[6] = {l1, l2, l3, l4, l5, l6};
     const int nf[6] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5), RC_NF(l6)};
@@ -418,6 +418,11 @@ static rc_status rc_card_type6(rc_reader *rd, const rc_block *b)
     if (t->tstop < t->tstart)
         return rc_case_fail(rd, &t->line_loc[1], b->name, "Tstop",
                             "expected Tstop >= Tstart = %.15g, got %s", t->tstart, l2[4].got);
+    /* the elasto-plastic laws move between the curves with slope Stiff */
+    if (t->iform != 0 && !(t->stiff > 0))
+        return rc_case_fail(rd, &t->line_loc[4], b->name, "Stiff",
+                            "expected a positive stiffness [N/m]: Stiff is required for Iform = %d, got %s",
+                            t->iform, l5[2].got);
     return rc_note_id(rd, RC_IDK_INTER, t->id, &t->loc, b->hdr->text);
 }
 

@@ -242,6 +242,60 @@ static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
 }
 
 /* ---- interfaces -------------------------------------------------------- */
+/* Largest slope of a scaled curve F = fs f(P / ax) over its points [N/m]. */
+static double max_slope(const rc_table *t, double fs, double ax, double *at)
+{
+    double smax = 0;
+    for (int k = 0; k + 1 < t->n; k++) {
+        double s = fabs(fs / ax * (t->y[k + 1] - t->y[k]) / (t->x[k + 1] - t->x[k]));
+        if (s > smax) {
+            smax = s;
+            *at = ax * t->x[k];
+        }
+    }
+    return smax;
+}
+
+/* The elasto-plastic laws need Stiff steeper than both curves, so that
+ * leaving a curve along the Stiff line moves away from it (no chattering at
+ * a reversal, docs/theory.md); the unload curve must lie below the load curve. */
+static rc_status check_hysteresis(const rc_model *m, int i, const rc_case_type6 *t6, const char *card,
+                                  rc_error *err)
+{
+    if (m->inter_iform[i] == 0) return RC_OK;
+    const double ax = m->inter_ascalex[i];
+    const rc_table *tl = &m->table[m->inter_fct_ld[i]];
+    double at = 0, sl = max_slope(tl, m->inter_fscaleld[i], ax, &at);
+    if (!(m->inter_stiff[i] > sl))
+        RC_RAISE(err, RC_EINPUT,
+                 LOCFMT "card %s, field Stiff: expected a stiffness steeper than the load curve (its slope reaches %.6g N/m at P = %.6g m), got %.6g",
+                 LOC(t6->line_loc[4]), card, sl, at, m->inter_stiff[i]);
+    if (m->inter_fct_ul[i] < 0) return RC_OK;
+    const rc_table *tu = &m->table[m->inter_fct_ul[i]];
+    double su = max_slope(tu, m->inter_fscaleul[i], ax, &at);
+    if (!(m->inter_stiff[i] > su))
+        RC_RAISE(err, RC_EINPUT,
+                 LOCFMT "card %s, field Stiff: expected a stiffness steeper than the unload curve (its slope reaches %.6g N/m at P = %.6g m), got %.6g",
+                 LOC(t6->line_loc[4]), card, su, at, m->inter_stiff[i]);
+    /* unload below load at every point of either curve */
+    for (int pass = 0; pass < 2; pass++) {
+        const rc_table *t = pass ? tu : tl;
+        for (int k = 0; k < t->n; k++) {
+            double P = ax * t->x[k], fl, fu, dd;
+            if (P < 0) continue;
+            rc_table_eval(tl, P / ax, &fl, &dd);
+            rc_table_eval(tu, P / ax, &fu, &dd);
+            fl *= m->inter_fscaleld[i];
+            fu *= m->inter_fscaleul[i];
+            if (fu > fl + 1e-12 * fabs(fl))
+                RC_RAISE(err, RC_EINPUT,
+                         LOCFMT "card %s, field fct_IDul: expected an unload curve below the load curve, but at P = %.6g m it gives %.6g N above %.6g N",
+                         LOC(t6->line_loc[4]), card, P, fu, fl);
+        }
+    }
+    return RC_OK;
+}
+
 static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *err)
 {
     const rc_case_type6 *t6 = &c->type6[i];
@@ -282,9 +336,18 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     if ((st = ref_funct(c, t6->fct_ld, t6->line_loc[3], card, "fct_IDld", &m->inter_fct_ld[i], err))) return st;
     if ((st = ref_funct(c, t6->fct_dv, t6->line_loc[5], card, "fct_IDdv", &m->inter_fct_dv[i], err))) return st;
     if ((st = ref_funct(c, t6->fct_df, t6->line_loc[5], card, "fct_IDdf", &m->inter_fct_df[i], err))) return st;
+    if ((st = ref_funct(c, t6->fct_ul, t6->line_loc[4], card, "fct_IDul", &m->inter_fct_ul[i], err))) return st;
+    m->inter_iform[i] = t6->iform;
+    m->inter_icor[i] = t6->icor;
+    m->inter_inacti[i] = t6->inacti;
+    m->inter_stiff[i] = t6->stiff;
+    m->inter_fscaleul[i] = t6->fscaleul;
+    /* Iform 2 has no unload curve (floor at zero); Iform 1 without one behaves as 2 */
+    if (t6->iform == 2) m->inter_fct_ul[i] = -1;
     if (m->inter_fct_ld[i] < 0)
         RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field fct_IDld: expected the id of the load curve (required), got 0",
                  LOC(t6->line_loc[3]), card);
+    if ((st = check_hysteresis(m, i, t6, card, err))) return st;
     m->inter_name[i] = malloc(strlen(card) + 1);
     if (!m->inter_name[i]) RC_RAISE(err, RC_ENOMEM, "out of memory");
     strcpy(m->inter_name[i], card);
@@ -304,7 +367,11 @@ static rc_status layout(rc_model *m, rc_error *err)
     }
     for (int i = 0; i < m->ninter; i++) {
         m->inter_eadr[i] = ny;
-        ny += RC_NE;
+        int ns = RC_NE;
+        m->inter_hidx[i] = m->inter_iform[i] != 0 ? ns++ : -1;
+        m->inter_oidx[i] = m->inter_inacti[i] == 5 ? ns++ : -1;
+        m->inter_ns[i] = ns;
+        ny += ns;
     }
     m->ny = ny;
     if (ny == 0) RC_RAISE(err, RC_EINPUT, "%s: the case has nothing to integrate (no free body)", m->case_path);
@@ -318,8 +385,13 @@ static rc_status layout(rc_model *m, rc_error *err)
         for (int k = 7; k < 10; k++) a[k] = m->atol_vel;
         for (int k = 10; k < 13; k++) a[k] = m->atol_omega;
     }
-    for (int i = 0; i < m->ninter; i++)
+    for (int i = 0; i < m->ninter; i++) {
         for (int k = 0; k < RC_NE; k++) m->atol[m->inter_eadr[i] + k] = m->atol_energy;
+        /* F_h: the force error that atol_pos allows on the Stiff line [N];
+         * offset: a length [m] */
+        if (m->inter_hidx[i] >= 0) m->atol[m->inter_eadr[i] + m->inter_hidx[i]] = m->inter_stiff[i] * m->atol_pos;
+        if (m->inter_oidx[i] >= 0) m->atol[m->inter_eadr[i] + m->inter_oidx[i]] = m->atol_pos;
+    }
     return RC_OK;
 }
 
@@ -409,6 +481,15 @@ rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->inter_fct_dv, m->ninter);
     ALLOC(m->inter_fct_df, m->ninter);
     ALLOC(m->inter_eadr, m->ninter);
+    ALLOC(m->inter_fct_ul, m->ninter);
+    ALLOC(m->inter_iform, m->ninter);
+    ALLOC(m->inter_icor, m->ninter);
+    ALLOC(m->inter_inacti, m->ninter);
+    ALLOC(m->inter_stiff, m->ninter);
+    ALLOC(m->inter_fscaleul, m->ninter);
+    ALLOC(m->inter_ns, m->ninter);
+    ALLOC(m->inter_hidx, m->ninter);
+    ALLOC(m->inter_oidx, m->ninter);
     ALLOC(m->inter_name, m->ninter);
     for (int i = 0; i < m->ninter; i++)
         if ((st = compile_type6(c, m, i, err))) goto fail;
@@ -437,6 +518,8 @@ void rc_model_free(rc_model *m)
                       m->inter_tstart, m->inter_tstop, m->inter_visc, m->inter_fscalev,
                       m->inter_ascalex, m->inter_fscaleld, m->inter_ascalef, m->inter_ascalev,
                       m->inter_fct_ld, m->inter_fct_dv, m->inter_fct_df, m->inter_eadr,
+                      m->inter_fct_ul, m->inter_iform, m->inter_icor, m->inter_inacti, m->inter_stiff,
+                      m->inter_fscaleul, m->inter_ns, m->inter_hidx, m->inter_oidx,
                       m->inter_name, m->atol};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     free(m);
@@ -460,9 +543,10 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
     fprintf(f, "surfaces    %d\n", m->nsurf);
     fprintf(f, "interfaces  %d\n", m->ninter);
     for (int i = 0; i < m->ninter && i < 20; i++)
-        fprintf(f, "  %-18s %s, Gap %.5g, Visc %.5g, Tstart %.5g, Tstop %.5g\n", m->inter_name[i],
-                m->inter_pair[i] == RC_PAIR_SPHERE_PLANE ? "sphere-plane" : "sphere-sphere", m->inter_gap[i],
-                m->inter_visc[i], m->inter_tstart[i], m->inter_tstop[i]);
+        fprintf(f, "  %-18s %s, Iform %d, Gap %.5g, Visc %.5g, Stiff %.5g, Inacti %d, Tstart %.5g, Tstop %.5g\n",
+                m->inter_name[i], m->inter_pair[i] == RC_PAIR_SPHERE_PLANE ? "sphere-plane" : "sphere-sphere",
+                m->inter_iform[i], m->inter_gap[i], m->inter_visc[i], m->inter_stiff[i], m->inter_inacti[i],
+                m->inter_tstart[i], m->inter_tstop[i]);
     if (m->ninter > 20) fprintf(f, "  ... %d more\n", m->ninter - 20);
     fprintf(f, "states      %d, Jacobian nonzeros %lld\n", m->ny, (long long)m->nnz);
     fprintf(f, "run         end time %.6g s, output every %.6g s\n", m->tend, m->dtout);

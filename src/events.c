@@ -1,7 +1,11 @@
 /*
  * Run data and discrete modes. Modes change only here, between solver calls:
- * at the start of a run and at located events.
+ * at the start of a run and at located events. Some transitions also reset a
+ * history state (F_h synchronised onto the curve it leaves or joins, the
+ * Inacti offset at zero); the integrator then restarts from the new state.
+ * docs/theory.md section 5 lists every transition.
  */
+#include <math.h>
 #include <stdlib.h>
 
 #include "events.h"
@@ -10,9 +14,12 @@ rc_data *rc_data_new(const rc_model *m)
 {
     rc_data *d = calloc(1, sizeof *d);
     if (!d) return NULL;
-    d->inter_mode = calloc((size_t)m->ninter + 1, sizeof(int));
-    if (!d->inter_mode) {
-        free(d);
+    size_t n = (size_t)m->ninter + 1;
+    d->inter_mode = calloc(n, sizeof(int));
+    d->inter_branch = calloc(n, sizeof(int));
+    d->inter_track = calloc(n, sizeof(int));
+    if (!d->inter_mode || !d->inter_branch || !d->inter_track) {
+        rc_data_free(d);
         return NULL;
     }
     d->fail_inter = -1;
@@ -23,50 +30,179 @@ void rc_data_free(rc_data *d)
 {
     if (!d) return;
     free(d->inter_mode);
+    free(d->inter_branch);
+    free(d->inter_track);
     free(d);
 }
 
-/* Mode of an active interface from its state: closed when penetrating with
- * a positive force, or exactly touching while approaching. */
-static int contact_mode(const rc_model *m, int i, double t, const double *y)
+/* Own state k of interface i (NULL when absent). */
+static double *own(const rc_model *m, int i, int idx, double *y)
 {
-    rc_inter_report r;
-    rc_inter_report_eval(m, i, RC_MODE_CLOSED, t, y, &r);
-    if ((r.p > 0 && r.fn > 0) || (r.p == 0 && r.vn > 0)) return RC_MODE_CLOSED;
-    return RC_MODE_OPEN;
+    return idx >= 0 ? y + m->inter_eadr[i] + idx : NULL;
 }
 
-void rc_modes_init(const rc_model *m, rc_data *d, double t, const double *y)
+static void set_state(double *s, double v, int *changed)
 {
-    for (int i = 0; i < m->ninter; i++) {
-        int active = t >= m->inter_tstart[i] && t <= m->inter_tstop[i];
-        d->inter_mode[i] = active ? contact_mode(m, i, t, y) : RC_MODE_INACTIVE;
+    if (s && *s != v) {
+        *s = v;
+        *changed = 1;
     }
 }
 
-int rc_events_apply(const rc_model *m, rc_data *d, double t, const double *y, const int *roots,
-                    rc_event *ev, int max_ev)
+static void report(const rc_model *m, const rc_data *d, int i, double t, const double *y, rc_inter_report *r)
+{
+    rc_inter_report_eval(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], t, y, r);
+}
+
+/* Enter the contact zone at P = 0 from separation: virgin force, on the load
+ * curve (Stiff is steeper than the load curve, so min(F_L, Stiff dP) = F_L). */
+static void enter_zone(const rc_model *m, rc_data *d, int i, double *y, int *changed)
+{
+    d->inter_mode[i] = RC_MODE_CLOSED;
+    d->inter_branch[i] = RC_BR_LOAD;
+    d->inter_track[i] = 0;
+    set_state(own(m, i, m->inter_hidx[i], y), 0.0, changed);
+}
+
+/* Leave the zone (P falls to 0): no force, no history. */
+static void leave_zone(const rc_model *m, rc_data *d, int i, double *y, int *changed)
+{
+    d->inter_mode[i] = RC_MODE_OPEN;
+    d->inter_branch[i] = RC_BR_LOAD;
+    set_state(own(m, i, m->inter_hidx[i], y), 0.0, changed);
+    double *off = own(m, i, m->inter_oidx[i], y);
+    d->inter_track[i] = off && *off > 0; /* Inacti 5: the gap recovers */
+}
+
+/* Modes of an active interface from its state, at t = 0 or at Tstart:
+ * Inacti, Icor and the initial penetration P0 (docs/theory.md 3.4). */
+static void classify(const rc_model *m, rc_data *d, int i, double t, double *y, int *changed)
+{
+    rc_inter_report r;
+    d->inter_mode[i] = RC_MODE_OPEN;
+    d->inter_branch[i] = RC_BR_LOAD;
+    d->inter_track[i] = 0;
+    report(m, d, i, t, y, &r);
+    double *off = own(m, i, m->inter_oidx[i], y), *fh = own(m, i, m->inter_hidx[i], y);
+    /* Inacti 5: the gap starts reduced by P0, so P starts at 0 */
+    if (off && r.p_raw > 0 && *off == 0.0) {
+        set_state(off, r.p_raw, changed);
+        report(m, d, i, t, y, &r);
+    }
+    if (r.p < 0 || (r.p == 0 && r.vn <= 0)) {
+        leave_zone(m, d, i, y, changed);
+        return;
+    }
+    if (r.p == 0) {
+        enter_zone(m, d, i, y, changed);
+        return;
+    }
+    /* initial penetration P0 > 0: on the load curve, or (Icor 1 with Iform 1)
+     * on the unload curve; off the curve when moving away from it */
+    if (fh && m->inter_icor[i] == 1 && m->inter_iform[i] == 1) {
+        set_state(fh, r.fu, changed);
+        d->inter_branch[i] = r.vn < 0 ? RC_BR_UNLOAD : RC_BR_ELASTIC;
+    } else if (fh) {
+        set_state(fh, r.fl, changed);
+        d->inter_branch[i] = r.vn > 0 ? RC_BR_LOAD : RC_BR_ELASTIC;
+    }
+    d->inter_mode[i] = RC_MODE_CLOSED;
+    report(m, d, i, t, y, &r);
+    if (!(r.fn > 0)) d->inter_mode[i] = RC_MODE_RELEASED;
+}
+
+void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y)
+{
+    int changed = 0;
+    for (int i = 0; i < m->ninter; i++) {
+        int active = t >= m->inter_tstart[i] && t <= m->inter_tstop[i];
+        d->inter_mode[i] = RC_MODE_INACTIVE;
+        if (active) classify(m, d, i, t, y, &changed);
+    }
+}
+
+/* Apply the root crossings of interface i; returns the event kind or NULL. */
+static const char *transition(const rc_model *m, rc_data *d, int i, double t, double *y, const int *r,
+                              int *changed)
+{
+    const int mode = d->inter_mode[i], br = d->inter_branch[i];
+    rc_inter_report q;
+    if (r[RC_ROOT_TSTOP] > 0 && mode != RC_MODE_INACTIVE) {
+        d->inter_mode[i] = RC_MODE_INACTIVE; /* history frozen */
+        return "inter_stop";
+    }
+    if (r[RC_ROOT_TSTART] > 0 && mode == RC_MODE_INACTIVE && t <= m->inter_tstop[i]) {
+        classify(m, d, i, t, y, changed);
+        return "inter_start";
+    }
+    if (mode == RC_MODE_INACTIVE) return NULL;
+    /* Inacti 5 tracking: bodies approach again, or the full Gap is back */
+    if (d->inter_track[i] && r[RC_ROOT_TRK_B] < 0) {
+        d->inter_track[i] = 0;
+        set_state(own(m, i, m->inter_oidx[i], y), 0.0, changed);
+        return "inacti_gap_recovered";
+    }
+    if (d->inter_track[i] && r[RC_ROOT_TRK_A] > 0) {
+        enter_zone(m, d, i, y, changed);
+        return "contact_close";
+    }
+    /* zone */
+    if (mode == RC_MODE_OPEN && r[RC_ROOT_ZONE] > 0) {
+        enter_zone(m, d, i, y, changed);
+        return "contact_close";
+    }
+    if (mode != RC_MODE_OPEN && r[RC_ROOT_ZONE] < 0) {
+        leave_zone(m, d, i, y, changed);
+        return "contact_separate";
+    }
+    /* total force: release (clipped at zero) and re-close */
+    if (mode == RC_MODE_CLOSED && r[RC_ROOT_FORCE] < 0) {
+        d->inter_mode[i] = RC_MODE_RELEASED;
+        return "contact_open";
+    }
+    if (mode == RC_MODE_RELEASED && r[RC_ROOT_FORCE] > 0) {
+        d->inter_mode[i] = RC_MODE_CLOSED;
+        return "contact_close";
+    }
+    /* hysteresis branches; F_h is put exactly on the curve it leaves/joins */
+    if (m->inter_iform[i] == 0 || mode == RC_MODE_OPEN) return NULL;
+    double *fh = own(m, i, m->inter_hidx[i], y);
+    report(m, d, i, t, y, &q);
+    if (br == RC_BR_LOAD && r[RC_ROOT_HYST_A] < 0) {
+        d->inter_branch[i] = RC_BR_ELASTIC;
+        set_state(fh, q.fl, changed);
+        return "hyst_unloading";
+    }
+    if (br == RC_BR_UNLOAD && r[RC_ROOT_HYST_A] > 0) {
+        d->inter_branch[i] = RC_BR_ELASTIC;
+        set_state(fh, q.fu, changed);
+        return "hyst_reloading";
+    }
+    if (br == RC_BR_ELASTIC && r[RC_ROOT_HYST_A] < 0) {
+        d->inter_branch[i] = RC_BR_LOAD;
+        set_state(fh, q.fl, changed);
+        return "hyst_load_curve";
+    }
+    if (br == RC_BR_ELASTIC && r[RC_ROOT_HYST_B] < 0) {
+        d->inter_branch[i] = RC_BR_UNLOAD;
+        set_state(fh, q.fu, changed);
+        return "hyst_unload_curve";
+    }
+    return NULL;
+}
+
+int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const int *roots, rc_event *ev,
+                    int max_ev, int *state_changed)
 {
     int n = 0;
+    *state_changed = 0;
     for (int i = 0; i < m->ninter; i++) {
         const int *r = roots + RC_ROOTS_PER_INTER * i;
-        int old = d->inter_mode[i], mode = old;
-        const char *kind = NULL;
-        if (r[RC_ROOT_TSTOP] > 0 && old != RC_MODE_INACTIVE) {
-            mode = RC_MODE_INACTIVE;
-            kind = "inter_stop";
-        } else if (r[RC_ROOT_TSTART] > 0 && old == RC_MODE_INACTIVE && t <= m->inter_tstop[i]) {
-            mode = contact_mode(m, i, t, y);
-            kind = "inter_start";
-        } else if (r[RC_ROOT_CONTACT] > 0 && old == RC_MODE_OPEN) {
-            mode = RC_MODE_CLOSED;
-            kind = "contact_close";
-        } else if (r[RC_ROOT_CONTACT] < 0 && old == RC_MODE_CLOSED) {
-            mode = RC_MODE_OPEN;
-            kind = "contact_open";
-        }
+        int any = 0;
+        for (int k = 0; k < RC_ROOTS_PER_INTER; k++) any |= r[k] != 0;
+        if (!any) continue;
+        const char *kind = transition(m, d, i, t, y, r, state_changed);
         if (!kind) continue;
-        d->inter_mode[i] = mode;
         if (n < max_ev) {
             ev[n].inter = i;
             ev[n].kind = kind;

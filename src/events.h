@@ -10,9 +10,10 @@ typedef struct rc_event {
 } rc_event;
 
 /* Flip the modes named by the root directions `roots` (CVODE rootsfound:
- * +1 rising, -1 falling, 0 none) at the event state (t, y). Writes up to
- * max_ev events; returns how many modes changed. */
-int rc_events_apply(const rc_model *m, rc_data *d, double t, const double *y, const int *roots,
-                    rc_event *ev, int max_ev);
+ * +1 rising, -1 falling, 0 none) at the event state (t, y); history states
+ * reset by a transition are written into y and *state_changed set. Writes up
+ * to max_ev events; returns how many transitions happened. */
+int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const int *roots, rc_event *ev,
+                    int max_ev, int *state_changed);
 
 #endif

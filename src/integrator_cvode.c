@@ -87,16 +87,21 @@ static int cb_proj(realtype t, N_Vector ycur, N_Vector corr, realtype eps, N_Vec
 }
 
 /* ---- helpers ----------------------------------------------------------- */
-/* Only the crossing that changes a mode is a root: Tstart/Tstop rising;
- * contact: p rising when open, F_n falling when closed. */
+/* Only the crossing that changes a mode is a root (docs/theory.md 5). */
 static int set_root_directions(const rc_model *m, const rc_data *d, void *cv, int *dir)
 {
     if (m->ninter == 0) return CV_SUCCESS;
     for (int i = 0; i < m->ninter; i++) {
         int *r = dir + RC_ROOTS_PER_INTER * i;
+        const int mode = d->inter_mode[i], br = d->inter_branch[i];
         r[RC_ROOT_TSTART] = 1;
         r[RC_ROOT_TSTOP] = 1;
-        r[RC_ROOT_CONTACT] = d->inter_mode[i] == RC_MODE_OPEN ? 1 : d->inter_mode[i] == RC_MODE_CLOSED ? -1 : 0;
+        r[RC_ROOT_ZONE] = mode == RC_MODE_OPEN ? 1 : -1;         /* enter / leave */
+        r[RC_ROOT_FORCE] = mode == RC_MODE_RELEASED ? 1 : -1;    /* re-close / release */
+        r[RC_ROOT_HYST_A] = br == RC_BR_UNLOAD ? 1 : -1;          /* reversal, or F_h meets F_L */
+        r[RC_ROOT_HYST_B] = -1;                                   /* F_h meets F_U */
+        r[RC_ROOT_TRK_A] = 1;                                     /* bodies approach again */
+        r[RC_ROOT_TRK_B] = -1;                                    /* offset used up */
     }
     return CVodeSetRootDirection(cv, dir);
 }
@@ -180,30 +185,37 @@ static rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, 
     for (int i = 0; i < m->ninter; i++) {
         rc_inter_report r;
         int mode = d->inter_mode[i];
-        rc_inter_report_eval(m, i, mode == RC_MODE_CLOSED ? RC_MODE_CLOSED : RC_MODE_OPEN, t, y, &r);
+        rc_inter_report_eval(m, i, mode, d->inter_branch[i], d->inter_track[i], t, y, &r);
+        const int acts = mode == RC_MODE_CLOSED;
         f->pen[i] = r.p;
-        f->fload[i] = r.fload;
-        f->fdamp[i] = r.fdamp;
-        f->fn[i] = r.fn > 0 ? r.fn : 0.0;
+        f->fload[i] = acts ? r.fload : 0.0;
+        f->fdamp[i] = acts ? r.fdamp : 0.0;
+        f->fn[i] = acts && r.fn > 0 ? r.fn : 0.0;
         memcpy(f->point + 3 * i, r.point, 3 * sizeof(double));
         memcpy(f->normal + 3 * i, r.normal, 3 * sizeof(double));
-        f->mode[i] = mode == RC_MODE_CLOSED ? RC_OUT_MODE_CLOSED
-                     : mode == RC_MODE_OPEN ? RC_OUT_MODE_OPEN
-                                            : RC_OUT_MODE_INACTIVE;
+        f->mode[i] = mode == RC_MODE_CLOSED     ? RC_OUT_MODE_CLOSED
+                     : mode == RC_MODE_OPEN     ? RC_OUT_MODE_OPEN
+                     : mode == RC_MODE_RELEASED ? RC_OUT_MODE_RELEASED
+                                                : RC_OUT_MODE_INACTIVE;
     }
-    rc_energy(m, t, y, f->energy);
+    rc_energy(m, d, t, y, f->energy);
     if (!o) return RC_OK;
     rc_frame fr = {t, at_event, f->pos, f->quat, f->vel, f->omega, f->pen, f->fload, f->fdamp, f->fn, f->point,
                    f->normal, f->mode, f->energy};
     return rc_output_frame(o, &fr, err);
 }
 
-static const char *const energy_name[RC_NENERGY] = {"energy_kinetic", "energy_potential", "energy_contact_work",
-                                                    "energy_damping", "energy_total"};
+static const char *const energy_name[RC_NENERGY] = {
+    "energy_kinetic", "energy_potential", "energy_contact_work", "energy_damping", "energy_contact_stored",
+    "energy_hysteresis", "energy_total"};
 static const char *const energy_long[RC_NENERGY] = {
-    "kinetic energy of the free bodies", "gravitational potential energy",
-    "work of the contact load-curve forces (elastic energy while closed)",
-    "energy dissipated by the contact damping", "sum of the energies above (constant in exact arithmetic)"};
+    "kinetic energy of the free bodies",
+    "gravitational potential energy",
+    "work done on the contacts by the elastic(-plastic) normal forces",
+    "energy dissipated by the contact damping",
+    "elastic energy stored in the contacts (recoverable by unloading)",
+    "energy dissipated by contact hysteresis (contact work - stored)",
+    "kinetic + potential + contact work + damping (constant in exact arithmetic)"};
 
 static rc_status open_output(const rc_model *m, const char *path, rc_output **o, rc_error *err)
 {
@@ -226,8 +238,8 @@ static rc_status open_output(const rc_model *m, const char *path, rc_output **o,
  * if the old and new right-hand sides agree, within the error weights, over
  * [troot, tn] and over the next step h: compare them at troot and at tn.
  * old_mode is the mode array before the flip; d->inter_mode after it. */
-static int needs_restart(const rc_model *m, rc_data *d, void *cv, int *old_mode, double troot,
-                         const double *yroot, N_Vector ytn, N_Vector f0, N_Vector f1)
+static int needs_restart(const rc_model *m, rc_data *d, void *cv, int *old_mode, int *old_branch,
+                         int *old_track, double troot, const double *yroot, N_Vector ytn, N_Vector f0, N_Vector f1)
 {
     double h = 0, tn = troot;
     CVodeGetCurrentStep(cv, &h);
@@ -238,10 +250,14 @@ static int needs_restart(const rc_model *m, rc_data *d, void *cv, int *old_mode,
     double *a = N_VGetArrayPointer(f0), *b = N_VGetArrayPointer(f1);
     for (int s = 0; s < 2; s++) {
         /* old modes, then new modes, at the same state */
-        int *new_mode = d->inter_mode;
+        int *new_mode = d->inter_mode, *new_branch = d->inter_branch, *new_track = d->inter_track;
         d->inter_mode = old_mode;
+        d->inter_branch = old_branch;
+        d->inter_track = old_track;
         int bad = rc_assemble_rhs(m, d, t_at[s], y_at[s], a);
         d->inter_mode = new_mode;
+        d->inter_branch = new_branch;
+        d->inter_track = new_track;
         bad |= rc_assemble_rhs(m, d, t_at[s], y_at[s], b);
         if (bad) return 1;
         for (int k = 0; k < m->ny; k++) {
@@ -278,7 +294,7 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     memset(&s, 0, sizeof s);
     SUNContext ctx = NULL;
     N_Vector y = NULL, av = NULL, f0 = NULL, f1 = NULL, ytn = NULL;
-    int *old_mode = NULL, *rootdir = NULL;
+    int *old_mode = NULL, *old_branch = NULL, *old_track = NULL, *rootdir = NULL;
     double *gbuf = NULL;
     SUNMatrix A = NULL;
     SUNLinearSolver LS = NULL;
@@ -309,11 +325,14 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     f1 = N_VNew_Serial(m->ny, ctx);
     ytn = N_VNew_Serial(m->ny, ctx);
     old_mode = calloc((size_t)m->ninter + 1, sizeof(int));
+    old_branch = calloc((size_t)m->ninter + 1, sizeof(int));
+    old_track = calloc((size_t)m->ninter + 1, sizeof(int));
     rootdir = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(int));
     gbuf = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(double));
     A = SUNSparseMatrix(m->ny, m->ny, m->nnz, CSC_MAT, ctx);
     roots = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(int));
-    if (!y || !av || !f0 || !f1 || !ytn || !old_mode || !rootdir || !gbuf || !A || !roots) {
+    if (!y || !av || !f0 || !f1 || !ytn || !old_mode || !old_branch || !old_track || !rootdir || !gbuf || !A ||
+        !roots) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the solver");
         goto done;
     }
@@ -351,7 +370,7 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
 
     if ((st = open_output(m, opt ? opt->output_path : NULL, &out, err))) goto done;
     double e0[RC_NENERGY];
-    rc_energy(m, t, yd, e0);
+    rc_energy(m, d, t, yd, e0);
     if ((st = write_frame(m, d, out, &fb, t, yd, 0, err))) goto done;
 
     /* ---- main loop: output times and events ---- */
@@ -372,12 +391,15 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
             CVCHECK(CVodeGetRootInfo(cv, roots), "CVodeGetRootInfo");
             rc_event ev[RC_MAX_EV];
             memcpy(old_mode, d->inter_mode, (size_t)m->ninter * sizeof(int));
-            int nev = rc_events_apply(m, d, t, yd, roots, ev, RC_MAX_EV);
+            memcpy(old_branch, d->inter_branch, (size_t)m->ninter * sizeof(int));
+            memcpy(old_track, d->inter_track, (size_t)m->ninter * sizeof(int));
+            int jumped = 0;
+            int nev = rc_events_apply(m, d, t, yd, roots, ev, RC_MAX_EV, &jumped);
             s.events += nev;
             for (int k = 0; k < nev && k < RC_MAX_EV && out; k++)
                 if ((st = rc_output_event(out, t, ev[k].kind, m->inter_name[ev[k].inter], err))) goto done;
             if (nev > 0) CVCHECK(set_root_directions(m, d, cv, rootdir), "CVodeSetRootDirection");
-            if ((nev > 0 && needs_restart(m, d, cv, old_mode, t, yd, ytn, f0, f1)) ||
+            if (jumped || (nev > 0 && needs_restart(m, d, cv, old_mode, old_branch, old_track, t, yd, ytn, f0, f1)) ||
                 root_on_zero(m, d, t, yd, gbuf)) {
                 add_stats(cv, &s);
                 CVCHECK(CVodeReInit(cv, t, y), "CVodeReInit");
@@ -403,7 +425,7 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
         }
     }
     double e1[RC_NENERGY];
-    rc_energy(m, t, yd, e1);
+    rc_energy(m, d, t, yd, e1);
     s.energy_residual = e1[RC_E_TOTAL] - e0[RC_E_TOTAL];
     s.t_end = t;
     if (opt && opt->y_end) memcpy(opt->y_end, yd, (size_t)m->ny * sizeof(double));
@@ -430,6 +452,8 @@ done:
     N_VDestroy(f1);
     N_VDestroy(ytn);
     free(old_mode);
+    free(old_branch);
+    free(old_track);
     free(rootdir);
     free(gbuf);
     SUNContext_Free(&ctx);

@@ -34,8 +34,8 @@ static void block_body(const rc_model *m, int b, rc_jblock *jb)
     }
 }
 
-/* Interface block: rows = accelerations of its free bodies and its energy
- * states; columns = all states of its free bodies. */
+/* Interface block: rows = accelerations of its free bodies and its own
+ * states; columns = all states of its free bodies and its own states. */
 static void block_inter(const rc_model *m, int i, rc_jblock *jb)
 {
     jb->nrow = jb->ncol = 0;
@@ -46,8 +46,10 @@ static void block_inter(const rc_model *m, int i, rc_jblock *jb)
         for (int k = 0; k < 6; k++) jb->rows[jb->nrow++] = m->body_yadr[b] + 7 + k;
         for (int k = 0; k < RC_NB; k++) jb->cols[jb->ncol++] = m->body_yadr[b] + k;
     }
-    for (int k = 0; k < RC_NE; k++) jb->rows[jb->nrow++] = m->inter_eadr[i] + k;
-    if (jb->ncol == 0) jb->nrow = 0; /* nothing depends on states */
+    for (int k = 0; k < m->inter_ns[i]; k++) {
+        jb->rows[jb->nrow++] = m->inter_eadr[i] + k;
+        jb->cols[jb->ncol++] = m->inter_eadr[i] + k;
+    }
 }
 
 /* Deterministic generator in [-1, 1) (64-bit LCG). */
@@ -74,7 +76,7 @@ static void probe_state(const rc_model *m, uint64_t seed, double *y)
         for (int k = 7; k < 13; k++) s[k] = probe_rand(&seed);
     }
     for (int i = 0; i < m->ninter; i++)
-        for (int k = 0; k < RC_NE; k++) y[m->inter_eadr[i] + k] = probe_rand(&seed);
+        for (int k = 0; k < m->inter_ns[i]; k++) y[m->inter_eadr[i] + k] = probe_rand(&seed);
 }
 
 /* Mark the kept entries of each block in its slot array: 0 kept, -1 pruned. */
@@ -101,11 +103,17 @@ static rc_status probe_blocks(rc_model *m, rc_error *err)
             break;
         }
         for (int k = 0; k < n; k++) jb->slot[k] = -1;
-        for (int p = 0; p < 2; p++) {
-            rc_jac_dense_block(m, is_inter, idx, 0.0, y[p], dense);
-            for (int k = 0; k < n; k++)
-                if (dense[k] != 0.0) jb->slot[k] = 0; /* NaN counts as kept */
-        }
+        /* every mode in which the element writes: contact closed (forces)
+         * and released, each hysteresis branch, Inacti tracking on/off */
+        for (int p = 0; p < 2; p++)
+            for (int md = 0; md < (is_inter ? 2 : 1); md++)
+                for (int br = 0; br < (is_inter ? 3 : 1); br++)
+                    for (int trk = 0; trk < (is_inter ? 2 : 1); trk++) {
+                        const int mode = md ? RC_MODE_RELEASED : RC_MODE_CLOSED;
+                        rc_jac_dense_block(m, is_inter, idx, mode, br, trk, 0.0, y[p], dense);
+                        for (int k = 0; k < n; k++)
+                            if (dense[k] != 0.0) jb->slot[k] = 0; /* NaN counts as kept */
+                    }
     }
 done:
     free(y[0]);

@@ -7,9 +7,11 @@
  *     [3..6]  q      unit quaternion (w, x, y, z), body->global [-]
  *     [7..9]  v      velocity of the centre of mass, global  [m/s]
  *     [10..12] w     angular velocity, BODY frame            [rad/s]
- *   then per interface i, at inter_eadr[i]:
- *     [0] W_load  work of the load-curve force on the penetration   [J]
- *     [1] W_damp  energy dissipated by the normal damping           [J]
+ *   then per interface i, its own states at inter_eadr[i] (inter_ns[i] of them):
+ *     [0] W_load  work of the elastic(-plastic) normal force F        [J]
+ *     [1] W_damp  energy dissipated by the normal damping             [J]
+ *     [inter_hidx] F_h    hysteresis force, Iform 1 and 2              [N]
+ *     [inter_oidx] offset gap reduction of Inacti = 5 (>= 0)           [m]
  * Fixed bodies have no states; their pose is body_y0 (13 values, zero
  * velocities).
  *
@@ -27,7 +29,8 @@
 
 #define RC_NB 13 /* states of a free body */
 #define RC_NE 2  /* energy states of an interface */
-#define RC_JB_MAX ((2 * 6 + RC_NE) * 2 * RC_NB) /* largest dense element block */
+#define RC_NS_MAX 4 /* own states of an interface: energies, F_h, offset */
+#define RC_JB_MAX ((2 * 6 + RC_NS_MAX) * (2 * RC_NB + RC_NS_MAX)) /* largest dense block */
 
 /* Analytic surface kinds. */
 typedef enum { RC_SURF_PLANE = 1, RC_SURF_SPHERE = 2 } rc_surf_kind;
@@ -38,19 +41,37 @@ typedef enum {
     RC_PAIR_SPHERE_SPHERE = 2 /* a, b: spheres                        */
 } rc_pair_kind;
 
-/* Interface modes (discrete state, changed only at events). */
-typedef enum { RC_MODE_INACTIVE = 0, RC_MODE_OPEN = 1, RC_MODE_CLOSED = 2 } rc_inter_mode;
+/* Interface modes (discrete state, changed only at events):
+ *   INACTIVE  outside [Tstart, Tstop]: no force, history frozen
+ *   OPEN      separated, P <= 0: no force
+ *   CLOSED    P > 0 and total normal force > 0: the force acts
+ *   RELEASED  P > 0 but the total force is clipped at zero (damping pulls):
+ *             no force; the hysteresis law still follows P */
+typedef enum { RC_MODE_INACTIVE = 0, RC_MODE_OPEN = 1, RC_MODE_CLOSED = 2, RC_MODE_RELEASED = 3 } rc_inter_mode;
 
-/* Root functions per interface, in this order. */
-enum { RC_ROOT_TSTART = 0, RC_ROOT_TSTOP = 1, RC_ROOT_CONTACT = 2, RC_ROOTS_PER_INTER = 3 };
+/* Hysteresis branch (Iform 1, 2) while P > 0. */
+typedef enum { RC_BR_LOAD = 0, RC_BR_ELASTIC = 1, RC_BR_UNLOAD = 2 } rc_branch;
+
+/* Root functions per interface, in this order (docs/theory.md). */
+enum {
+    RC_ROOT_TSTART = 0, /* t - Tstart                                  */
+    RC_ROOT_TSTOP,      /* t - Tstop                                   */
+    RC_ROOT_ZONE,       /* P: entering / leaving the contact zone      */
+    RC_ROOT_FORCE,      /* total normal force: release / re-close      */
+    RC_ROOT_HYST_A,     /* LOAD, UNLOAD: dP/dt; ELASTIC: F_L(P) - F_h  */
+    RC_ROOT_HYST_B,     /* ELASTIC: F_h - F_U(P)                       */
+    RC_ROOT_TRK_A,      /* Inacti 5 tracking: dP_raw/dt                */
+    RC_ROOT_TRK_B,      /* Inacti 5 tracking: offset                   */
+    RC_ROOTS_PER_INTER
+};
 
 /* Jacobian entries written by one element: dense block of `nrow` rows by
  * `ncol` columns (state indices), slot[r * ncol + c] = position in the CSC
  * value array, or -1 for an entry that is structurally zero (pruned). */
 typedef struct rc_jblock {
     int nrow, ncol;
-    int rows[RC_NB * 2 + RC_NE]; /* state indices */
-    int cols[RC_NB * 2 + RC_NE];
+    int rows[RC_NB * 2 + RC_NS_MAX]; /* state indices */
+    int cols[RC_NB * 2 + RC_NS_MAX];
     int64_t *slot;               /* [nrow*ncol] */
 } rc_jblock;
 
@@ -104,7 +125,16 @@ struct rc_model {
     double *inter_ascalef; /* [N] */
     double *inter_ascalev; /* [m/s] */
     int *inter_fct_ld, *inter_fct_dv, *inter_fct_df; /* table index or -1 */
-    int *inter_eadr;     /* [ninter] offset of the 2 energy states */
+    int *inter_fct_ul;   /* unload curve, table index or -1 */
+    int *inter_iform;    /* 0 elastic, 1 elasto-plastic (unload curve), 2 decoupled hardening */
+    int *inter_icor;     /* Icor: 1 = start on the unload curve (Iform 1) */
+    int *inter_inacti;   /* 0 or 5 */
+    double *inter_stiff; /* Stiff [N/m] */
+    double *inter_fscaleul; /* [N] */
+    int *inter_eadr;     /* [ninter] offset of the interface's own states */
+    int *inter_ns;       /* [ninter] number of own states (2..RC_NS_MAX) */
+    int *inter_hidx;     /* [ninter] index of F_h among them, -1 */
+    int *inter_oidx;     /* [ninter] index of the Inacti offset, -1 */
     char **inter_name;   /* [ninter] "/INTER/TYPE6/<id>" */
 
     /* state vector */
@@ -131,6 +161,8 @@ struct rc_model {
 /* Mutable run data. */
 typedef struct rc_data {
     int *inter_mode;     /* [ninter] rc_inter_mode */
+    int *inter_branch;   /* [ninter] rc_branch (Iform 1, 2) */
+    int *inter_track;    /* [ninter] 1: Inacti 5 offset follows the separation */
     long n_rhs, n_jac, n_root;
     int fail_inter;      /* element that produced a non-finite force, -1 */
     double fail_t;
@@ -138,11 +170,16 @@ typedef struct rc_data {
 
 /* What the output and the event logic see of one interface. */
 typedef struct rc_inter_report {
-    double p;            /* penetration past the Gap [m] */
+    double p;            /* penetration past the (effective) Gap [m] */
     double vn;           /* approach rate dp/dt [m/s] */
-    double fload;        /* load-curve force [N] */
+    double p_raw;        /* penetration past the nominal Gap [m] */
+    double vn_raw;       /* its rate [m/s] */
+    double fload;        /* elastic(-plastic) force F of the law [N] */
     double fdamp;        /* damping force [N] */
-    double fn;           /* total normal force of the law (may be < 0 off-mode) [N] */
+    double fn;           /* total normal force F + F_damp, unclipped [N] */
+    double fl, fu;       /* load and unload curves at P [N] */
+    double fh;           /* hysteresis state F_h (0 when absent) [N] */
+    double offset;       /* Inacti 5 gap reduction [m] */
     double point[3];     /* contact point [m] */
     double normal[3];    /* unit normal, from a to b [-] */
 } rc_inter_report;
@@ -160,30 +197,35 @@ int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, do
 int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val);
 /* Root functions [ninter*RC_ROOTS_PER_INTER]. */
 void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
-/* Evaluate one interface at (t, y), in `mode`, for reports and events. */
-void rc_inter_report_eval(const rc_model *m, int i, int mode, double t, const double *y,
-                          rc_inter_report *r);
+/* Evaluate one interface at (t, y) in the given modes, for reports, roots
+ * and events. */
+void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, double t,
+                          const double *y, rc_inter_report *r);
 /* Gravity acceleration vector of body b at time t [m/s^2]. */
 void rc_gravity(const rc_model *m, int b, double t, double g[3]);
 /* Pose and velocity view of body b: pointer to its 13 values in y, the
  * fixed pose of a fixed body, or the ground pose for b = -1. */
 const double *rc_body_state(const rc_model *m, int b, const double *y);
 
-/* Energies [J]: kinetic, gravitational potential, contact elastic work,
- * damping dissipation, total. */
-enum { RC_E_KIN, RC_E_POT, RC_E_ELASTIC, RC_E_DAMP, RC_E_TOTAL, RC_NENERGY };
-void rc_energy(const rc_model *m, double t, const double *y, double e[RC_NENERGY]);
+/* Energies [J]: kinetic, gravitational potential, work of the normal
+ * elastic(-plastic) forces, damping dissipation, elastic energy stored in the
+ * contacts, hysteresis dissipation (= work - stored), total (kinetic +
+ * potential + work + damping; constant in exact arithmetic). */
+enum { RC_E_KIN, RC_E_POT, RC_E_WORK, RC_E_DAMP, RC_E_STORED, RC_E_HYST, RC_E_TOTAL, RC_NENERGY };
+void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, double e[RC_NENERGY]);
 
-/* Dense block of an element (body e, or interface e in closed mode) at
+/* Dense block of an element (body e, or interface e in the given modes) at
  * (t, y), row-major over its rc_jblock rows and columns (assemble_jac.c). */
-void rc_jac_dense_block(const rc_model *m, int is_inter, int e, double t, const double *y, double *out);
+void rc_jac_dense_block(const rc_model *m, int is_inter, int e, int mode, int branch, int track, double t,
+                        const double *y, double *out);
 
 /* ---- Jacobian pattern (jacpattern.c) ------------------------------- */
 rc_status rc_jac_build(rc_model *m, rc_error *err);
 void rc_jac_free(rc_model *m);
 
 /* ---- modes and events (events.c) ----------------------------------- */
-/* Consistent modes at (t, y) from scratch (start of run). */
-void rc_modes_init(const rc_model *m, rc_data *d, double t, const double *y);
+/* Consistent modes at (t, y) from scratch (start of run); may set history
+ * states in y (Inacti offset, initial F_h). */
+void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y);
 
 #endif

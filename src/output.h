@@ -31,7 +31,7 @@ typedef struct rc_output_meta {
 } rc_output_meta;
 
 /* Interface modes as stored in the file (variable inter_mode). */
-enum { RC_OUT_MODE_INACTIVE = 0, RC_OUT_MODE_OPEN = 1, RC_OUT_MODE_CLOSED = 2 };
+enum { RC_OUT_MODE_INACTIVE = 0, RC_OUT_MODE_OPEN = 1, RC_OUT_MODE_CLOSED = 2, RC_OUT_MODE_RELEASED = 3 };
 
 /* One record. All pointers are non-NULL arrays of the sizes in the meta. */
 typedef struct rc_frame {

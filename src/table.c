@@ -57,3 +57,24 @@ void rc_table_eval(const rc_table *t, double x, double *f, double *dfdx)
     *f = gsl_interp_eval(t->interp, t->x, t->y, x, NULL);
     *dfdx = gsl_interp_eval_deriv(t->interp, t->x, t->y, x, NULL);
 }
+
+/* Exact integral of the piecewise-linear curve (with its linear extension)
+ * from a to b: trapezoids between the breakpoints inside [a, b]. */
+double rc_table_integral(const rc_table *t, double a, double b)
+{
+    if (b < a) return -rc_table_integral(t, b, a);
+    double sum = 0, x0 = a, f0, d;
+    rc_table_eval(t, a, &f0, &d);
+    for (int k = 0; k <= t->n; k++) {
+        double x1 = k < t->n ? t->x[k] : b;
+        if (x1 <= x0) continue;
+        if (x1 > b) x1 = b;
+        double f1;
+        rc_table_eval(t, x1, &f1, &d);
+        sum += 0.5 * (f0 + f1) * (x1 - x0);
+        x0 = x1;
+        f0 = f1;
+        if (x0 >= b) break;
+    }
+    return sum;
+}

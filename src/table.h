@@ -21,5 +21,7 @@ rc_status rc_table_init(rc_table *t, int id, int n, const double *x, const doubl
 void rc_table_free(rc_table *t);
 /* Value and slope at x (linear extension outside [x0, xn]). */
 void rc_table_eval(const rc_table *t, double x, double *f, double *dfdx);
+/* Integral of the curve from a to b (exact for the piecewise-linear curve). */
+double rc_table_integral(const rc_table *t, double a, double b);
 
 #endif

@@ -765,18 +765,17 @@ static const char *type6_deck(const char *name, int k, const char *text)
 static void test_case_error_type6(void)
 {
     /* unsupported but valid Radioss values */
-    EXPECT_T6(4, "        31         1",
-              "field Iform: expected an integer in {0}, got \"1\": not supported yet (planned: "
-              "TYPE6 hysteresis/friction issue)");
-    EXPECT_T6(2, ",0.1", "field Fric", "not supported yet");
+    EXPECT_T6(2, ",0.1", "field Fric", "not supported yet (planned: TYPE6 friction)");
     EXPECT_T6(2, "0.5", "field Sfric", "not supported yet");
-    EXPECT_T6(3, ",,,5", "field Inacti", "not supported yet");
     EXPECT_T6(3, ",1", "field IRS", "not supported yet", "analytic");
     EXPECT_T6(3, ",,,,4", "field fct_IDff", "not supported yet");
-    EXPECT_T6(4, "31,,,,1", "field Icor", "not supported yet");
-    EXPECT_T6(5, "7", "field fct_IDul", "not supported yet");
-    EXPECT_T6(5, ",,1e5", "field Stiff", "not supported yet");
-    EXPECT_T6(6, ",3", "field fct_IDdv", "not supported yet");
+    /* the elasto-plastic laws need Stiff */
+    /* (reported on line 5 of the card, where Stiff belongs: file line 7) */
+    ENSURE(check_error(type6_deck("t6.rad", 4, "        31         1"), RC_EINPUT, 7, "card /INTER/TYPE6/3",
+                       "field Stiff", "Stiff is required for Iform = 1", "got blank", (const char *)NULL) == 0);
+    ENSURE(check_error(type6_deck("t6.rad", 4, "31,2"), RC_EINPUT, 7, "card /INTER/TYPE6/3", "field Stiff",
+                       "Stiff is required for Iform = 2", (const char *)NULL) == 0);
+    EXPECT_T6(5, ",,-1e5", "field Stiff", "non-negative");
     /* invalid values */
     EXPECT_T6(4, "31,7", "field Iform", "expected an integer in {0, 1, 2}", "\"7\"");
     EXPECT_T6(3, ",,,3", "field Inacti", "expected an integer in {0, 5}");

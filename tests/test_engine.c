@@ -13,10 +13,11 @@
  * body 2 (sphere), a tilted plane fixed in space; sphere-plane and
  * sphere-sphere TYPE6 with a nonlinear load curve, Visc and both damping
  * curves; gravity. */
-static rc_case_funct fn[3];
+static rc_case_funct fn[4];
 static double fx0[] = {-0.01, 0.0, 0.0013, 0.0041, 0.0097}, fy0[] = {-3.1e3, 0.0, 2.71e3, 1.37e4, 5.9e4};
 static double fx1[] = {-10.0, 0.0, 0.37, 3.3}, fy1[] = {-41.0, 0.0, 5.3, 71.0};   /* f_dv */
 static double fx2[] = {0.0, 500.0, 9e4}, fy2[] = {1.0, 0.83, 0.61};               /* f_df */
+static double fx3[] = {0.0, 0.002, 0.006, 0.011}, fy3[] = {0.0, 0.0, 5e3, 3.1e4};  /* f_ul */
 static rc_case_node nodes[2] = {{1, {0.0213, -0.0117, 0.0519}, {0}}, {2, {0.0371, 0.0093, 0.131}, {0}}};
 static rc_case_rbody rb[2];
 static rc_case_surf sf[3];
@@ -30,7 +31,8 @@ static void build_case(rc_case *c)
     fn[0] = (rc_case_funct){7, "load", 5, fx0, fy0, {0}};
     fn[1] = (rc_case_funct){8, "dv", 4, fx1, fy1, {0}};
     fn[2] = (rc_case_funct){9, "df", 3, fx2, fy2, {0}};
-    c->nfunct = 3;
+    fn[3] = (rc_case_funct){10, "ul", 4, fx3, fy3, {0}};
+    c->nfunct = 4;
     c->funct = fn;
     c->nnode = 2;
     c->node = nodes;
@@ -55,6 +57,9 @@ static void build_case(rc_case *c)
     }
     t6[0].surf1 = 23; t6[0].surf2 = 21; /* plane first: the compiler orders the pair */
     t6[1].surf1 = 21; t6[1].surf2 = 22;
+    /* elasto-plastic with unload curve and Inacti 5; decoupled hardening */
+    t6[0].iform = 1; t6[0].fct_ul = 10; t6[0].fscaleul = 0.83; t6[0].stiff = 7.3e6; t6[0].inacti = 5;
+    t6[1].iform = 2; t6[1].stiff = 6.1e6;
     c->ntype6 = 2;
     c->type6 = t6;
     gr = (rc_case_grav){.id = 1, .dir = 2, .ascale = 1.0, .fscale = -9.81};
@@ -72,6 +77,45 @@ static void entropy_state(const rc_model *m, double *y)
                     0.0391, 0.0107, 0.1187, 0.97, -0.05, 0.21, 0.08, -0.41, 0.17, 0.53, -1.9, 0.7, 2.2};
     for (int b = 0; b < 2; b++) memcpy(y + m->body_yadr[b], s + 13 * b, 13 * sizeof(double));
     for (int k = 0; k < m->ny - 26; k++) y[26 + k] = 0.013 * (k + 1);
+    /* F_h of both interfaces near their curves, a small Inacti offset */
+    y[m->inter_eadr[0] + m->inter_hidx[0]] = 731.0;
+    y[m->inter_eadr[0] + m->inter_oidx[0]] = 3.7e-4;
+    y[m->inter_eadr[1] + m->inter_hidx[1]] = 1370.0;
+}
+
+/* Max scaled |J - FD| over the whole Jacobian in the current modes; counts
+ * entries above 1e-6 (bad) and FD non-zeros outside the pattern. */
+static double jac_fd_error(const rc_model *m, rc_data *d, double *y, int *bad, int *outside)
+{
+    const double t = 0.0137;
+    double *f1 = calloc((size_t)m->ny, sizeof(double)), *f2 = calloc((size_t)m->ny, sizeof(double));
+    double *val = calloc((size_t)m->nnz, sizeof(double)), maxerr = 0;
+    rc_assemble_jac(m, d, t, y, val);
+    for (int col = 0; col < m->ny; col++) {
+        double h = 1e-6 * (fabs(y[col]) > 1 ? fabs(y[col]) : 1.0), keep = y[col];
+        y[col] = keep + h;
+        rc_assemble_rhs(m, d, t, y, f1);
+        y[col] = keep - h;
+        rc_assemble_rhs(m, d, t, y, f2);
+        y[col] = keep;
+        double scale = 1.0;
+        for (int r = 0; r < m->ny; r++) scale = fmax(scale, fabs((f1[r] - f2[r]) / (2 * h)));
+        for (int r = 0; r < m->ny; r++) {
+            double fd = (f1[r] - f2[r]) / (2 * h), an = 0;
+            int64_t k;
+            for (k = m->jac_colptr[col]; k < m->jac_colptr[col + 1]; k++)
+                if (m->jac_rowind[k] == r) break;
+            if (k < m->jac_colptr[col + 1]) an = val[k];
+            else if (fabs(fd) > 1e-9 * scale) (*outside)++;
+            double er = fabs(an - fd) / scale;
+            maxerr = fmax(maxerr, er);
+            if (er > 1e-6) (*bad)++;
+        }
+    }
+    free(f1);
+    free(f2);
+    free(val);
+    return maxerr;
 }
 
 static void test_engine_jacobian_matches_finite_differences(void)
@@ -83,43 +127,34 @@ static void test_engine_jacobian_matches_finite_differences(void)
     ENSURE(rc_model_compile(&c, &m, &e) == RC_OK);
     if (!m) return;
     rc_data *d = rc_data_new(m);
-    double *y = calloc((size_t)m->ny, sizeof(double)), *f1 = calloc((size_t)m->ny, sizeof(double));
-    double *f2 = calloc((size_t)m->ny, sizeof(double)), *val = calloc((size_t)m->nnz, sizeof(double));
+    double *y = calloc((size_t)m->ny, sizeof(double));
     entropy_state(m, y);
     for (int i = 0; i < m->ninter; i++) {
         rc_inter_report r;
-        rc_inter_report_eval(m, i, RC_MODE_CLOSED, 0.0, y, &r);
+        rc_inter_report_eval(m, i, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0.0, y, &r);
         ENSURE(r.p > 0); /* both contacts penetrate in this state */
-        d->inter_mode[i] = RC_MODE_CLOSED;
     }
-    rc_assemble_jac(m, d, 0.0137, y, val);
-    int bad = 0, outside = 0;
+    /* every mode in which the interfaces write: closed and released, each
+     * hysteresis branch, Inacti tracking on and off */
+    int bad = 0, outside = 0, combos = 0;
     double maxerr = 0;
-    for (int col = 0; col < m->ny; col++) {
-        double h = 1e-6 * (fabs(y[col]) > 1 ? fabs(y[col]) : 1.0), keep = y[col];
-        y[col] = keep + h;
-        rc_assemble_rhs(m, d, 0.0137, y, f1);
-        y[col] = keep - h;
-        rc_assemble_rhs(m, d, 0.0137, y, f2);
-        y[col] = keep;
-        double scale = 1.0;
-        for (int r = 0; r < m->ny; r++) scale = fmax(scale, fabs((f1[r] - f2[r]) / (2 * h)));
-        for (int r = 0; r < m->ny; r++) {
-            double fd = (f1[r] - f2[r]) / (2 * h), an = 0;
-            int64_t k;
-            for (k = m->jac_colptr[col]; k < m->jac_colptr[col + 1]; k++)
-                if (m->jac_rowind[k] == r) break;
-            if (k < m->jac_colptr[col + 1]) an = val[k];
-            else if (fabs(fd) > 1e-9 * scale) outside++;
-            double er = fabs(an - fd) / scale;
-            maxerr = fmax(maxerr, er);
-            if (er > 1e-6) bad++;
-        }
-    }
-    printf("    jacobian: %d states, %lld nonzeros, max scaled |J - FD| = %.2e\n", m->ny, (long long)m->nnz, maxerr);
+    const int modes[2] = {RC_MODE_CLOSED, RC_MODE_RELEASED};
+    for (int md = 0; md < 2; md++)
+        for (int br = 0; br < 3; br++)
+            for (int trk = 0; trk < 2; trk++) {
+                for (int i = 0; i < m->ninter; i++) {
+                    d->inter_mode[i] = modes[md];
+                    d->inter_branch[i] = br;
+                    d->inter_track[i] = trk && m->inter_oidx[i] >= 0;
+                }
+                maxerr = fmax(maxerr, jac_fd_error(m, d, y, &bad, &outside));
+                combos++;
+            }
+    printf("    jacobian: %d states, %lld nonzeros, %d mode combinations, max scaled |J - FD| = %.2e\n", m->ny,
+           (long long)m->nnz, combos, maxerr);
     ENSURE(bad == 0);
     ENSURE(outside == 0);
-    free(y); free(f1); free(f2); free(val);
+    free(y);
     rc_data_free(d);
     rc_model_free(m);
 }

@@ -51,7 +51,7 @@ def main():
     dmax, fmax, tc_ref = reference()
     here = os.path.dirname(os.path.abspath(__file__))
     r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
-    t1, t2 = r.events("contact_close")[0], r.events("contact_open")[0]
+    t1, t2 = r.events("contact_close")[0], r.contact_ends()[0]
     # peak values: the time series (dt 1e-7 s, ~1000 records in contact), refined by a parabola
     k = int(np.argmax(r.pen[:, 0]))
     def peak(v):

@@ -56,8 +56,13 @@ class Result:
             self.attrs = {k: nc.getncattr(k) for k in nc.ncattrs()}
             self.energy = {v: np.array(nc[v][:]) for v in nc.variables if v.startswith("energy_")}
 
-    def events(self, kind):
-        return np.array([t for t, k in zip(self.ev_t, self.ev_kind) if k == kind])
+    def events(self, *kinds):
+        return np.array([t for t, k in zip(self.ev_t, self.ev_kind) if k in kinds])
+
+    def contact_ends(self):
+        """Times a contact stops pushing: the force released at zero
+        (contact_open) or the bodies separated at P = 0 (contact_separate)."""
+        return self.events("contact_open", "contact_separate")
 
     def state_at(self, t, kind_filter=None):
         """Index of the event record written at time t."""

@@ -121,12 +121,11 @@ void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y)
     }
 }
 
-/* Apply the root crossings of interface i; returns the event kind or NULL. */
-static const char *transition(const rc_model *m, rc_data *d, int i, double t, double *y, const int *r,
-                              int *changed)
+/* Activation window and Inacti tracking; returns the event kind or NULL. */
+static const char *step_window(const rc_model *m, rc_data *d, int i, double t, double *y, const int *r,
+                               int *changed)
 {
-    const int mode = d->inter_mode[i], br = d->inter_branch[i];
-    rc_inter_report q;
+    const int mode = d->inter_mode[i];
     if (r[RC_ROOT_TSTOP] > 0 && mode != RC_MODE_INACTIVE) {
         d->inter_mode[i] = RC_MODE_INACTIVE; /* history frozen */
         return "inter_stop";
@@ -135,8 +134,7 @@ static const char *transition(const rc_model *m, rc_data *d, int i, double t, do
         classify(m, d, i, t, y, changed);
         return "inter_start";
     }
-    if (mode == RC_MODE_INACTIVE) return NULL;
-    /* Inacti 5 tracking: bodies approach again, or the full Gap is back */
+    /* Inacti 5 tracking: the full Gap is back, or the bodies approach again */
     if (d->inter_track[i] && r[RC_ROOT_TRK_B] < 0) {
         d->inter_track[i] = 0;
         set_state(own(m, i, m->inter_oidx[i], y), 0.0, changed);
@@ -146,27 +144,18 @@ static const char *transition(const rc_model *m, rc_data *d, int i, double t, do
         enter_zone(m, d, i, y, changed);
         return "contact_close";
     }
-    /* zone */
-    if (mode == RC_MODE_OPEN && r[RC_ROOT_ZONE] > 0) {
-        enter_zone(m, d, i, y, changed);
-        return "contact_close";
-    }
-    if (mode != RC_MODE_OPEN && r[RC_ROOT_ZONE] < 0) {
-        leave_zone(m, d, i, y, changed);
-        return "contact_separate";
-    }
-    /* total force: release (clipped at zero) and re-close */
-    if (mode == RC_MODE_CLOSED && r[RC_ROOT_FORCE] < 0) {
-        d->inter_mode[i] = RC_MODE_RELEASED;
-        return "contact_open";
-    }
-    if (mode == RC_MODE_RELEASED && r[RC_ROOT_FORCE] > 0) {
-        d->inter_mode[i] = RC_MODE_CLOSED;
-        return "contact_close";
-    }
-    /* hysteresis branches; F_h is put exactly on the curve it leaves/joins */
-    if (m->inter_iform[i] == 0 || mode == RC_MODE_OPEN) return NULL;
+    return NULL;
+}
+
+/* Hysteresis branches (in the zone); F_h is put exactly on the curve it
+ * leaves or joins. */
+static const char *step_branch(const rc_model *m, rc_data *d, int i, double t, double *y, const int *r,
+                               int *changed)
+{
+    const int mode = d->inter_mode[i], br = d->inter_branch[i];
+    if (m->inter_iform[i] == 0 || (mode != RC_MODE_CLOSED && mode != RC_MODE_RELEASED)) return NULL;
     double *fh = own(m, i, m->inter_hidx[i], y);
+    rc_inter_report q;
     report(m, d, i, t, y, &q);
     if (br == RC_BR_LOAD && r[RC_ROOT_HYST_A] < 0) {
         d->inter_branch[i] = RC_BR_ELASTIC;
@@ -191,6 +180,30 @@ static const char *transition(const rc_model *m, rc_data *d, int i, double t, do
     return NULL;
 }
 
+/* Contact zone (P) and force clipping (total normal force). */
+static const char *step_contact(const rc_model *m, rc_data *d, int i, double *y, const int *r, int *changed)
+{
+    const int mode = d->inter_mode[i];
+    if (mode == RC_MODE_INACTIVE || d->inter_track[i]) return NULL;
+    if (mode == RC_MODE_OPEN && r[RC_ROOT_ZONE] > 0) {
+        enter_zone(m, d, i, y, changed);
+        return "contact_close";
+    }
+    if (mode != RC_MODE_OPEN && r[RC_ROOT_ZONE] < 0) {
+        leave_zone(m, d, i, y, changed);
+        return "contact_separate";
+    }
+    if (mode == RC_MODE_CLOSED && r[RC_ROOT_FORCE] < 0) {
+        d->inter_mode[i] = RC_MODE_RELEASED;
+        return "contact_open";
+    }
+    if (mode == RC_MODE_RELEASED && r[RC_ROOT_FORCE] > 0) {
+        d->inter_mode[i] = RC_MODE_CLOSED;
+        return "contact_close";
+    }
+    return NULL;
+}
+
 int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const int *roots, rc_event *ev,
                     int max_ev, int *state_changed)
 {
@@ -201,13 +214,22 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
         int any = 0;
         for (int k = 0; k < RC_ROOTS_PER_INTER; k++) any |= r[k] != 0;
         if (!any) continue;
-        const char *kind = transition(m, d, i, t, y, r, state_changed);
-        if (!kind) continue;
-        if (n < max_ev) {
-            ev[n].inter = i;
-            ev[n].kind = kind;
+        /* window first; then the branch, then the contact, so that crossings
+         * falling together (the Stiff line reaching zero releases the force)
+         * are all applied, in the order of the law */
+        const char *kind[3] = {step_window(m, d, i, t, y, r, state_changed), NULL, NULL};
+        if (!kind[0]) {
+            kind[1] = step_branch(m, d, i, t, y, r, state_changed);
+            kind[2] = step_contact(m, d, i, y, r, state_changed);
         }
-        n++;
+        for (int k = 0; k < 3; k++) {
+            if (!kind[k]) continue;
+            if (n < max_ev) {
+                ev[n].inter = i;
+                ev[n].kind = kind[k];
+            }
+            n++;
+        }
     }
     return n;
 }

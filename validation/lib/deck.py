@@ -62,14 +62,17 @@ class Deck:
         self.add(f"/SURF/PLANE/{sid}", *lines, title=title)
 
     def type6(self, iid, s1, s2, fct_ld, gap=0.0, tstart=None, tstop=None, visc=None,
-              ascalex=None, fscaleld=None, title="contact"):
+              ascalex=None, fscaleld=None, iform=0, stiff=None, fct_ul=0, fscaleul=None,
+              inacti=0, icor=0, fct_dv=0, fct_df=0, fscalev=None, ascalef=None, ascalev=None,
+              sfric=None, fric=None, fct_ff=0, fct_fv=0, title="contact"):
         self.add(f"/INTER/TYPE6/{iid}",
                  line(("i", s1), ("i", s2)),
-                 line(("r", None), ("r", None), ("r", gap), ("r", tstart), ("r", tstop)),
-                 line(("i", None), ("i", 0), ("i", 0), ("i", 0), ("i", 0), ("i", 0), ("r", None), ("r", None)),
-                 line(("i", fct_ld), ("i", 0), ("r", ascalex), ("r", fscaleld), ("i", 0)),
-                 line(("i", 0), ("i", None), ("r", None), ("r", None)),
-                 line(("r", visc), ("i", 0), ("i", 0), ("r", None)), title=title)
+                 line(("r", sfric), ("r", fric), ("r", gap), ("r", tstart), ("r", tstop)),
+                 line(("i", None), ("i", 0), ("i", 0), ("i", inacti), ("i", fct_ff), ("i", fct_fv),
+                      ("r", ascalef), ("r", ascalev)),
+                 line(("i", fct_ld), ("i", iform), ("r", ascalex), ("r", fscaleld), ("i", icor)),
+                 line(("i", fct_ul), ("i", None), ("r", stiff), ("r", fscaleul)),
+                 line(("r", visc), ("i", fct_dv), ("i", fct_df), ("r", fscalev)), title=title)
 
     def inivel(self, iid, v, grnod, rot=False):
         self.add(f"/INIVEL/{'ROT' if rot else 'TRA'}/{iid}",

@@ -42,7 +42,7 @@ static void dense_body(const rc_model *m, int b, double t, const double *y, doub
 
 /* Dense block of interface i in the given modes: rows = accelerations of a
  * (if free), of b (if free), own states; columns = states of a, of b, own. */
-static void dense_inter(const rc_model *m, int i, int mode, int branch, int track, const double *y,
+static void dense_inter(const rc_model *m, int i, int mode, int branch, int track, int slip, const double *y,
                         double *out)
 {
     const rc_jblock *jb = &m->jb_inter[i];
@@ -57,7 +57,7 @@ static void dense_inter(const rc_model *m, int i, int mode, int branch, int trac
         T *yp = c < na ? ya + c : c < na + nb ? yb + (c - na) : ys + (c - na - nb);
         *yp += I * RC_CSTEP;
         T acc[12] = {0}, sdot[RC_NS_MAX];
-        type6_c(m, i, mode, branch, track, ya, yb, ys, fa ? acc : NULL, fb ? acc + 6 : NULL, sdot, NULL);
+        type6_c(m, i, mode, branch, track, slip, ya, yb, ys, fa ? acc : NULL, fb ? acc + 6 : NULL, sdot, NULL);
         *yp = creal(*yp);
         int r = 0;
         if (fa)
@@ -68,10 +68,10 @@ static void dense_inter(const rc_model *m, int i, int mode, int branch, int trac
     }
 }
 
-void rc_jac_dense_block(const rc_model *m, int is_inter, int e, int mode, int branch, int track, double t,
-                        const double *y, double *out)
+void rc_jac_dense_block(const rc_model *m, int is_inter, int e, int mode, int branch, int track, int slip,
+                        double t, const double *y, double *out)
 {
-    if (is_inter) dense_inter(m, e, mode, branch, track, y, out);
+    if (is_inter) dense_inter(m, e, mode, branch, track, slip, y, out);
     else dense_body(m, e, t, y, out);
 }
 
@@ -94,8 +94,12 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
         }
     for (int i = 0; i < m->ninter; i++)
         if (d->inter_mode[i] != RC_MODE_INACTIVE && m->jb_inter[i].ncol > 0) {
-            dense_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], y, dense);
+            dense_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], y, dense);
             scatter(&m->jb_inter[i], dense, val);
         }
+    /* held DOFs: their rows are zero */
+    if (m->nheld > 0)
+        for (int64_t k = 0; k < m->nnz; k++)
+            if (m->row_held[m->jac_rowind[k]]) val[k] = 0.0;
     return 0;
 }

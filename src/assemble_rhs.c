@@ -34,7 +34,7 @@ int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, do
             memset(sdot, 0, (size_t)m->inter_ns[i] * sizeof(double));
             continue;
         }
-        type6_r(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], rc_body_state(m, ba, y),
+        type6_r(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], rc_body_state(m, ba, y),
                 rc_body_state(m, bb, y), y + m->inter_eadr[i], acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot,
                 NULL);
         for (int k = 0; k < m->inter_ns[i]; k++)
@@ -44,15 +44,17 @@ int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, do
                 return 1; /* recoverable: CVODE retries with a smaller step */
             }
     }
+    /* held DOFs (/BCS): the support takes whatever force acts */
+    for (int k = 0; k < m->nheld; k++) ydot[m->held[k]] = 0.0;
     return 0;
 }
 
-void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, double t,
+void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, double t,
                           const double *y, rc_inter_report *r)
 {
     t6out_r o;
     (void)t;
-    type6_r(m, i, mode, branch, track, rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y),
+    type6_r(m, i, mode, branch, track, slip, rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y),
             y + m->inter_eadr[i], NULL, NULL, NULL, &o);
     r->p = o.p;
     r->vn = o.vn;
@@ -65,6 +67,10 @@ void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int tr
     r->fu = o.fu;
     r->fh = o.fh;
     r->offset = o.off;
+    r->flim = o.flim;
+    r->vslip = o.vslip;
+    r->slip_root = o.slip_root;
+    for (int k = 0; k < 3; k++) r->ft[k] = o.ft[k];
     for (int k = 0; k < 3; k++) {
         r->point[k] = o.g.point[k];
         r->normal[k] = o.g.n[k];
@@ -81,7 +87,9 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         const int mode = d->inter_mode[i], br = d->inter_branch[i], trk = d->inter_track[i];
         if (mode == RC_MODE_INACTIVE) continue;
         rc_inter_report r;
-        rc_inter_report_eval(m, i, mode, br, trk, t, y, &r);
+        rc_inter_report_eval(m, i, mode, br, trk, d->inter_slip[i], t, y, &r);
+        /* friction: stick -> slip at the limit, slip -> stick when sliding stops */
+        if (mode == RC_MODE_CLOSED && m->inter_tidx[i] >= 0) gi[RC_ROOT_SLIP] = r.slip_root;
         /* zone: P (not while the Inacti offset tracks it, P = 0 there) */
         if (!trk) gi[RC_ROOT_ZONE] = r.p;
         /* total normal force, unclipped: release and re-close */

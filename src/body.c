@@ -25,7 +25,7 @@ static double stored_energy(const rc_model *m, const rc_data *d, int i, double t
     const int mode = d->inter_mode[i];
     if (mode != RC_MODE_CLOSED && mode != RC_MODE_RELEASED) return 0.0;
     rc_inter_report r;
-    rc_inter_report_eval(m, i, mode, d->inter_branch[i], d->inter_track[i], t, y, &r);
+    rc_inter_report_eval(m, i, mode, d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y, &r);
     const double ax = m->inter_ascalex[i], P = r.p, F = r.fload;
     if (P <= 0) return 0.0;
     if (m->inter_iform[i] == 0)
@@ -68,10 +68,21 @@ void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, d
     for (int i = 0; i < m->ninter; i++) {
         e[RC_E_WORK] += y[m->inter_eadr[i]];
         e[RC_E_DAMP] += y[m->inter_eadr[i] + 1];
-        e[RC_E_STORED] += stored_energy(m, d, i, t, y);
+        const double en = stored_energy(m, d, i, t, y);
+        e[RC_E_STORED] += en;
+        e[RC_E_HYST] += y[m->inter_eadr[i]] - en;
+        /* friction: work, and the elastic energy of the stick spring */
+        const int ti = m->inter_tidx[i];
+        if (ti < 0) continue;
+        const double *ft = y + m->inter_eadr[i] + ti;
+        const double et = d->inter_mode[i] == RC_MODE_CLOSED
+                              ? 0.5 * (ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2]) / m->inter_kt[i]
+                              : 0.0;
+        e[RC_E_FWORK] += ft[3];
+        e[RC_E_STORED] += et;
+        e[RC_E_FRIC] += ft[3] - et;
     }
-    e[RC_E_HYST] = e[RC_E_WORK] - e[RC_E_STORED];
-    e[RC_E_TOTAL] = e[RC_E_KIN] + e[RC_E_POT] + e[RC_E_WORK] + e[RC_E_DAMP];
+    e[RC_E_TOTAL] = e[RC_E_KIN] + e[RC_E_POT] + e[RC_E_WORK] + e[RC_E_DAMP] + e[RC_E_FWORK];
 }
 
 void rc_initial_state(const rc_model *m, double *y)

@@ -36,7 +36,6 @@
 #define RC_F_INTN(nm, p, fl, nt) RC_F_SET(nm, p, 0, fl, 0, 0, nt)
 #define RC_NF(arr) ((int)(sizeof(arr) / sizeof((arr)[0])))
 
-static const char rc_note_t6[] = "(planned: TYPE6 friction)";
 static const char rc_note_skew[] = "(skew frames)";
 static const char rc_note_sensor[] = "(sensors)";
 
@@ -357,7 +356,6 @@ static rc_status rc_card_ellips(rc_reader *rd, const rc_block *b)
 static rc_status rc_card_type6(rc_reader *rd, const rc_block *b)
 {
     rc_case *c = rd->c;
-    const unsigned only0 = RC_FF_NONNEG | RC_FF_ONLY0;
     int nd;
     rc_status st;
     if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "inter_ID", "/INTER/TYPE6/inter_ID")))
@@ -375,8 +373,8 @@ static rc_status rc_card_type6(rc_reader *rd, const rc_block *b)
     rc_field l1[] = {RC_F_INT("surf_ID1", &t->surf1, 0, RC_FF_POS),
                      RC_F_INT("surf_ID2", &t->surf2, 0, RC_FF_POS)};
     rc_field l2[] = {
-        {.name = "Sfric", .width = 20, .type = RC_FT_REAL, .out = &t->sfric, .flags = only0, .note = rc_note_t6},
-        {.name = "Fric", .width = 20, .type = RC_FT_REAL, .out = &t->fric, .flags = only0, .note = rc_note_t6},
+        RC_F_REAL("Sfric", &t->sfric, 0, RC_FF_NONNEG),
+        RC_F_REAL("Fric", &t->fric, 0, RC_FF_NONNEG),
         RC_F_REAL("Gap", &t->gap, 0, RC_FF_NONNEG),
         RC_F_REAL("Tstart", &t->tstart, 0, 0),
         RC_F_REAL("Tstop", &t->tstop, RC_DEF_TSTOP, RC_FF_ZDEF)};
@@ -387,8 +385,8 @@ static rc_status rc_card_type6(rc_reader *rd, const rc_block *b)
         RC_F_SET("IRm", &t->irm, 0, 0, 0x7u, RC_BIT(0),
                  "(only analytic surfaces exist now; their normals are fixed)"),
         RC_F_SET("Inacti", &t->inacti, 0, 0, RC_BIT(0) | RC_BIT(5), RC_BIT(0) | RC_BIT(5), NULL),
-        RC_F_INTN("fct_IDff", &t->fct_ff, only0, rc_note_t6),
-        RC_F_INTN("fct_IDfv", &t->fct_fv, only0, rc_note_t6),
+        RC_F_INT("fct_IDff", &t->fct_ff, 0, RC_FF_NONNEG),
+        RC_F_INT("fct_IDfv", &t->fct_fv, 0, RC_FF_NONNEG),
         RC_F_REAL("Ascalef", &t->ascalef, 1, RC_FF_ZDEF | RC_FF_POS),
         RC_F_REAL("Ascalev", &t->ascalev, 1, RC_FF_ZDEF | RC_FF_POS)};
     rc_field l4[] = {

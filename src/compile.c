@@ -161,25 +161,33 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
         for (int b = 0; b < c->nrbody && !st; b++)
             if (flag[b]) memcpy(m->body_y0 + RC_NB * b + (iv->rot ? 10 : 7), iv->v, 3 * sizeof(double));
     }
-    /* fixed bodies: /BCS with all six flags on a node of the body */
+    /* /BCS on a node of a body: all six flags fix the body; otherwise the
+     * flagged global translations are held, and the rotations all or none
+     * (a partial rotation lock is not a simple condition on quaternions) */
     for (int k = 0; k < c->nbcs && !st; k++) {
         const rc_case_bcs *bc = &c->bcs[k];
         char card[64];
         snprintf(card, sizeof card, "/BCS/%d", bc->id);
-        int all = 1, any = 0;
-        for (int j = 0; j < 6; j++) {
-            all &= bc->fix[j] == 1;
-            any |= bc->fix[j] == 1;
-        }
-        if (any && !all) {
-            st = RC_SET(err, RC_EINPUT, LOCFMT "card %s, field Trarot: only \"111 111\" (fully fixed body) is supported yet",
+        int all = 1, nrot = 0;
+        for (int j = 0; j < 6; j++) all &= bc->fix[j] == 1;
+        for (int j = 3; j < 6; j++) nrot += bc->fix[j] == 1;
+        if (nrot != 0 && nrot != 3) {
+            st = RC_SET(err, RC_EINPUT,
+                        LOCFMT "card %s, field Trarot: rotations must be all fixed or all free (\"xxx 111\" or \"xxx 000\"); a partial rotation lock is not supported yet",
                         LOC(bc->loc), card);
             break;
         }
         st = group_bodies(c, bc->grnod_id, bc->loc, card, flag, err);
-        for (int b = 0; b < c->nrbody && !st; b++)
-            if (flag[b] && all) m->body_fixed[b] = 1;
+        for (int b = 0; b < c->nrbody && !st; b++) {
+            if (!flag[b]) continue;
+            if (all) m->body_fixed[b] = 1;
+            for (int j = 0; j < 6; j++) m->body_dofmask[6 * b + j] |= bc->fix[j] == 1;
+        }
     }
+    /* held DOFs start at rest */
+    for (int b = 0; b < c->nrbody && !st; b++)
+        for (int j = 0; j < 6; j++)
+            if (m->body_dofmask[6 * b + j]) m->body_y0[RC_NB * b + 7 + j] = 0.0;
     /* gravity: one time function for all cards (constant when 0) */
     for (int k = 0; k < c->ngrav && !st; k++) {
         const rc_case_grav *gr = &c->grav[k];
@@ -344,6 +352,18 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     m->inter_fscaleul[i] = t6->fscaleul;
     /* Iform 2 has no unload curve (floor at zero); Iform 1 without one behaves as 2 */
     if (t6->iform == 2) m->inter_fct_ul[i] = -1;
+    /* friction: limit Sfric + Fric f_ff f_fv F_n, stick stiffness Stiff or,
+     * when not given, the steepest slope of the load curve */
+    if ((st = ref_funct(c, t6->fct_ff, t6->line_loc[2], card, "fct_IDff", &m->inter_fct_ff[i], err))) return st;
+    if ((st = ref_funct(c, t6->fct_fv, t6->line_loc[2], card, "fct_IDfv", &m->inter_fct_fv[i], err))) return st;
+    m->inter_sfric[i] = t6->sfric;
+    m->inter_fric[i] = t6->fric;
+    double at = 0;
+    m->inter_kt[i] = t6->stiff > 0 ? t6->stiff
+                                   : max_slope(&m->table[m->inter_fct_ld[i]], m->inter_fscaleld[i], m->inter_ascalex[i], &at);
+    if ((t6->sfric > 0 || t6->fric > 0) && !(m->inter_kt[i] > 0))
+        RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field Stiff: friction needs a tangential stiffness [N/m]; the default (the load curve's steepest slope) is 0",
+                 LOC(t6->line_loc[4]), card);
     if (m->inter_fct_ld[i] < 0)
         RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field fct_IDld: expected the id of the load curve (required), got 0",
                  LOC(t6->line_loc[3]), card);
@@ -370,10 +390,25 @@ static rc_status layout(rc_model *m, rc_error *err)
         int ns = RC_NE;
         m->inter_hidx[i] = m->inter_iform[i] != 0 ? ns++ : -1;
         m->inter_oidx[i] = m->inter_inacti[i] == 5 ? ns++ : -1;
+        m->inter_tidx[i] = -1;
+        if (m->inter_sfric[i] > 0 || m->inter_fric[i] > 0) {
+            m->inter_tidx[i] = ns;
+            ns += 4; /* F_t (3), W_fric */
+        }
         m->inter_ns[i] = ns;
         ny += ns;
     }
     m->ny = ny;
+    /* rows of held DOFs (accelerations set to zero), for rhs and Jacobian */
+    m->nheld = 0;
+    m->held = malloc((size_t)(6 * m->nbody + 1) * sizeof(int));
+    if (!m->held) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    for (int b = 0; b < m->nbody; b++)
+        for (int j = 0; j < 6 && m->body_yadr[b] >= 0; j++)
+            if (m->body_dofmask[6 * b + j]) m->held[m->nheld++] = m->body_yadr[b] + 7 + j;
+    m->row_held = calloc((size_t)ny + 1, 1);
+    if (!m->row_held) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    for (int k = 0; k < m->nheld; k++) m->row_held[m->held[k]] = 1;
     if (ny == 0) RC_RAISE(err, RC_EINPUT, "%s: the case has nothing to integrate (no free body)", m->case_path);
     m->atol = malloc((size_t)ny * sizeof(double));
     if (!m->atol) RC_RAISE(err, RC_ENOMEM, "out of memory");
@@ -391,6 +426,12 @@ static rc_status layout(rc_model *m, rc_error *err)
          * offset: a length [m] */
         if (m->inter_hidx[i] >= 0) m->atol[m->inter_eadr[i] + m->inter_hidx[i]] = m->inter_stiff[i] * m->atol_pos;
         if (m->inter_oidx[i] >= 0) m->atol[m->inter_eadr[i] + m->inter_oidx[i]] = m->atol_pos;
+        /* F_t: the force error atol_pos allows on the stick spring [N]; W_fric [J] */
+        const int ti = m->inter_tidx[i];
+        if (ti >= 0) {
+            for (int k = 0; k < 3; k++) m->atol[m->inter_eadr[i] + ti + k] = m->inter_kt[i] * m->atol_pos;
+            m->atol[m->inter_eadr[i] + ti + 3] = m->atol_energy;
+        }
     }
     return RC_OK;
 }
@@ -450,6 +491,7 @@ rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->body_Jinv, 9 * m->nbody);
     ALLOC(m->body_y0, RC_NB * m->nbody);
     ALLOC(m->body_grav, 3 * m->nbody);
+    ALLOC(m->body_dofmask, 6 * m->nbody);
     if ((st = compile_bodies(c, m, err))) goto fail;
     /* surfaces */
     m->nsurf = c->nsurf;
@@ -490,6 +532,12 @@ rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->inter_ns, m->ninter);
     ALLOC(m->inter_hidx, m->ninter);
     ALLOC(m->inter_oidx, m->ninter);
+    ALLOC(m->inter_tidx, m->ninter);
+    ALLOC(m->inter_sfric, m->ninter);
+    ALLOC(m->inter_fric, m->ninter);
+    ALLOC(m->inter_fct_ff, m->ninter);
+    ALLOC(m->inter_fct_fv, m->ninter);
+    ALLOC(m->inter_kt, m->ninter);
     ALLOC(m->inter_name, m->ninter);
     for (int i = 0; i < m->ninter; i++)
         if ((st = compile_type6(c, m, i, err))) goto fail;
@@ -512,15 +560,16 @@ void rc_model_free(rc_model *m)
         for (int i = 0; i < m->ninter; i++) free(m->inter_name[i]);
     rc_jac_free(m);
     void *arrays[] = {m->case_path, m->table, m->body_id, m->body_fixed, m->body_yadr, m->body_mass,
-                      m->body_J, m->body_Jinv, m->body_y0, m->body_grav, m->surf_id, m->surf_kind,
+                      m->body_J, m->body_Jinv, m->body_y0, m->body_grav, m->body_dofmask, m->surf_id, m->surf_kind,
                       m->surf_body, m->surf_p, m->surf_n, m->surf_r, m->inter_id, m->inter_pair,
                       m->inter_sa, m->inter_sb, m->inter_ba, m->inter_bb, m->inter_gap,
                       m->inter_tstart, m->inter_tstop, m->inter_visc, m->inter_fscalev,
                       m->inter_ascalex, m->inter_fscaleld, m->inter_ascalef, m->inter_ascalev,
                       m->inter_fct_ld, m->inter_fct_dv, m->inter_fct_df, m->inter_eadr,
                       m->inter_fct_ul, m->inter_iform, m->inter_icor, m->inter_inacti, m->inter_stiff,
-                      m->inter_fscaleul, m->inter_ns, m->inter_hidx, m->inter_oidx,
-                      m->inter_name, m->atol};
+                      m->inter_fscaleul, m->inter_ns, m->inter_hidx, m->inter_oidx, m->inter_tidx,
+                      m->inter_sfric, m->inter_fric, m->inter_fct_ff, m->inter_fct_fv, m->inter_kt,
+                      m->inter_name, m->atol, m->held, m->row_held};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     free(m);
 }
@@ -547,6 +596,11 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
                 m->inter_name[i], m->inter_pair[i] == RC_PAIR_SPHERE_PLANE ? "sphere-plane" : "sphere-sphere",
                 m->inter_iform[i], m->inter_gap[i], m->inter_visc[i], m->inter_stiff[i], m->inter_inacti[i],
                 m->inter_tstart[i], m->inter_tstop[i]);
+    for (int i = 0; i < m->ninter && i < 20; i++)
+        if (m->inter_tidx[i] >= 0)
+            fprintf(f, "  %-18s friction Sfric %.5g N, Fric %.5g, tangential stiffness %.5g N/m%s\n", m->inter_name[i],
+                    m->inter_sfric[i], m->inter_fric[i], m->inter_kt[i],
+                    m->inter_stiff[i] > 0 ? " (Stiff)" : " (default: steepest slope of the load curve)");
     if (m->ninter > 20) fprintf(f, "  ... %d more\n", m->ninter - 20);
     fprintf(f, "states      %d, Jacobian nonzeros %lld\n", m->ny, (long long)m->nnz);
     fprintf(f, "run         end time %.6g s, output every %.6g s\n", m->tend, m->dtout);

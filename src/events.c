@@ -18,7 +18,8 @@ rc_data *rc_data_new(const rc_model *m)
     d->inter_mode = calloc(n, sizeof(int));
     d->inter_branch = calloc(n, sizeof(int));
     d->inter_track = calloc(n, sizeof(int));
-    if (!d->inter_mode || !d->inter_branch || !d->inter_track) {
+    d->inter_slip = calloc(n, sizeof(int));
+    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip) {
         rc_data_free(d);
         return NULL;
     }
@@ -32,6 +33,7 @@ void rc_data_free(rc_data *d)
     free(d->inter_mode);
     free(d->inter_branch);
     free(d->inter_track);
+    free(d->inter_slip);
     free(d);
 }
 
@@ -51,7 +53,17 @@ static void set_state(double *s, double v, int *changed)
 
 static void report(const rc_model *m, const rc_data *d, int i, double t, const double *y, rc_inter_report *r)
 {
-    rc_inter_report_eval(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], t, y, r);
+    rc_inter_report_eval(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y, r);
+}
+
+/* Friction starts afresh (sticking, no force) whenever the contact closes
+ * and is dropped whenever it stops pushing. */
+static void reset_friction(const rc_model *m, rc_data *d, int i, double *y, int *changed)
+{
+    d->inter_slip[i] = 0;
+    const int ti = m->inter_tidx[i];
+    if (ti < 0) return;
+    for (int k = 0; k < 3; k++) set_state(y + m->inter_eadr[i] + ti + k, 0.0, changed);
 }
 
 /* Enter the contact zone at P = 0 from separation: virgin force, on the load
@@ -62,6 +74,7 @@ static void enter_zone(const rc_model *m, rc_data *d, int i, double *y, int *cha
     d->inter_branch[i] = RC_BR_LOAD;
     d->inter_track[i] = 0;
     set_state(own(m, i, m->inter_hidx[i], y), 0.0, changed);
+    reset_friction(m, d, i, y, changed);
 }
 
 /* Leave the zone (P falls to 0): no force, no history. */
@@ -72,6 +85,7 @@ static void leave_zone(const rc_model *m, rc_data *d, int i, double *y, int *cha
     set_state(own(m, i, m->inter_hidx[i], y), 0.0, changed);
     double *off = own(m, i, m->inter_oidx[i], y);
     d->inter_track[i] = off && *off > 0; /* Inacti 5: the gap recovers */
+    reset_friction(m, d, i, y, changed);
 }
 
 /* Modes of an active interface from its state, at t = 0 or at Tstart:
@@ -82,6 +96,7 @@ static void classify(const rc_model *m, rc_data *d, int i, double t, double *y, 
     d->inter_mode[i] = RC_MODE_OPEN;
     d->inter_branch[i] = RC_BR_LOAD;
     d->inter_track[i] = 0;
+    reset_friction(m, d, i, y, changed);
     report(m, d, i, t, y, &r);
     double *off = own(m, i, m->inter_oidx[i], y), *fh = own(m, i, m->inter_hidx[i], y);
     /* Inacti 5: the gap starts reduced by P0, so P starts at 0 */
@@ -195,13 +210,33 @@ static const char *step_contact(const rc_model *m, rc_data *d, int i, double *y,
     }
     if (mode == RC_MODE_CLOSED && r[RC_ROOT_FORCE] < 0) {
         d->inter_mode[i] = RC_MODE_RELEASED;
+        reset_friction(m, d, i, y, changed);
         return "contact_open";
     }
     if (mode == RC_MODE_RELEASED && r[RC_ROOT_FORCE] > 0) {
         d->inter_mode[i] = RC_MODE_CLOSED;
+        reset_friction(m, d, i, y, changed);
         return "contact_close";
     }
     return NULL;
+}
+
+/* Friction: stick -> slip when |F_t| reaches the limit; slip -> stick when
+ * the sliding velocity along the force direction vanishes (the state is then
+ * put on the limit, where the force already is). */
+static const char *step_friction(const rc_model *m, rc_data *d, int i, double t, double *y, const int *r,
+                                 int *changed)
+{
+    if (m->inter_tidx[i] < 0 || d->inter_mode[i] != RC_MODE_CLOSED || r[RC_ROOT_SLIP] <= 0) return NULL;
+    if (!d->inter_slip[i]) {
+        d->inter_slip[i] = 1;
+        return "fric_slip";
+    }
+    rc_inter_report q;
+    report(m, d, i, t, y, &q);
+    d->inter_slip[i] = 0;
+    for (int k = 0; k < 3; k++) set_state(y + m->inter_eadr[i] + m->inter_tidx[i] + k, q.ft[k], changed);
+    return "fric_stick";
 }
 
 int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const int *roots, rc_event *ev,
@@ -217,12 +252,13 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
         /* window first; then the branch, then the contact, so that crossings
          * falling together (the Stiff line reaching zero releases the force)
          * are all applied, in the order of the law */
-        const char *kind[3] = {step_window(m, d, i, t, y, r, state_changed), NULL, NULL};
+        const char *kind[4] = {step_window(m, d, i, t, y, r, state_changed), NULL, NULL, NULL};
         if (!kind[0]) {
             kind[1] = step_branch(m, d, i, t, y, r, state_changed);
             kind[2] = step_contact(m, d, i, y, r, state_changed);
+            if (!kind[2]) kind[3] = step_friction(m, d, i, t, y, r, state_changed);
         }
-        for (int k = 0; k < 3; k++) {
+        for (int k = 0; k < 4; k++) {
             if (!kind[k]) continue;
             if (n < max_ev) {
                 ev[n].inter = i;

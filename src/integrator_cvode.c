@@ -102,6 +102,7 @@ static int set_root_directions(const rc_model *m, const rc_data *d, void *cv, in
         r[RC_ROOT_HYST_B] = -1;                                   /* F_h meets F_U */
         r[RC_ROOT_TRK_A] = 1;                                     /* bodies approach again */
         r[RC_ROOT_TRK_B] = -1;                                    /* offset used up */
+        r[RC_ROOT_SLIP] = 1;                                      /* limit reached / sliding stops */
     }
     return CVodeSetRootDirection(cv, dir);
 }
@@ -185,7 +186,7 @@ static rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, 
     for (int i = 0; i < m->ninter; i++) {
         rc_inter_report r;
         int mode = d->inter_mode[i];
-        rc_inter_report_eval(m, i, mode, d->inter_branch[i], d->inter_track[i], t, y, &r);
+        rc_inter_report_eval(m, i, mode, d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y, &r);
         const int acts = mode == RC_MODE_CLOSED;
         f->pen[i] = r.p;
         f->fload[i] = acts ? r.fload : 0.0;
@@ -206,16 +207,18 @@ static rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, 
 }
 
 static const char *const energy_name[RC_NENERGY] = {
-    "energy_kinetic", "energy_potential", "energy_contact_work", "energy_damping", "energy_contact_stored",
-    "energy_hysteresis", "energy_total"};
+    "energy_kinetic",        "energy_potential",  "energy_contact_work", "energy_damping", "energy_friction_work",
+    "energy_contact_stored", "energy_hysteresis", "energy_friction",     "energy_total"};
 static const char *const energy_long[RC_NENERGY] = {
     "kinetic energy of the free bodies",
     "gravitational potential energy",
     "work done on the contacts by the elastic(-plastic) normal forces",
     "energy dissipated by the contact damping",
-    "elastic energy stored in the contacts (recoverable by unloading)",
-    "energy dissipated by contact hysteresis (contact work - stored)",
-    "kinetic + potential + contact work + damping (constant in exact arithmetic)"};
+    "work done on the contacts by the friction forces",
+    "elastic energy stored in the contacts, normal and tangential (recoverable by unloading)",
+    "energy dissipated by contact hysteresis (normal work - normal stored)",
+    "energy dissipated by friction (friction work - tangential stored)",
+    "kinetic + potential + contact work + damping + friction work (constant in exact arithmetic)"};
 
 static rc_status open_output(const rc_model *m, const char *path, rc_output **o, rc_error *err)
 {
@@ -239,7 +242,8 @@ static rc_status open_output(const rc_model *m, const char *path, rc_output **o,
  * [troot, tn] and over the next step h: compare them at troot and at tn.
  * old_mode is the mode array before the flip; d->inter_mode after it. */
 static int needs_restart(const rc_model *m, rc_data *d, void *cv, int *old_mode, int *old_branch,
-                         int *old_track, double troot, const double *yroot, N_Vector ytn, N_Vector f0, N_Vector f1)
+                         int *old_track, int *old_slip, double troot, const double *yroot, N_Vector ytn, N_Vector f0,
+                         N_Vector f1)
 {
     double h = 0, tn = troot;
     CVodeGetCurrentStep(cv, &h);
@@ -251,13 +255,16 @@ static int needs_restart(const rc_model *m, rc_data *d, void *cv, int *old_mode,
     for (int s = 0; s < 2; s++) {
         /* old modes, then new modes, at the same state */
         int *new_mode = d->inter_mode, *new_branch = d->inter_branch, *new_track = d->inter_track;
+        int *new_slip = d->inter_slip;
         d->inter_mode = old_mode;
         d->inter_branch = old_branch;
         d->inter_track = old_track;
+        d->inter_slip = old_slip;
         int bad = rc_assemble_rhs(m, d, t_at[s], y_at[s], a);
         d->inter_mode = new_mode;
         d->inter_branch = new_branch;
         d->inter_track = new_track;
+        d->inter_slip = new_slip;
         bad |= rc_assemble_rhs(m, d, t_at[s], y_at[s], b);
         if (bad) return 1;
         for (int k = 0; k < m->ny; k++) {
@@ -294,7 +301,7 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     memset(&s, 0, sizeof s);
     SUNContext ctx = NULL;
     N_Vector y = NULL, av = NULL, f0 = NULL, f1 = NULL, ytn = NULL;
-    int *old_mode = NULL, *old_branch = NULL, *old_track = NULL, *rootdir = NULL;
+    int *old_mode = NULL, *old_branch = NULL, *old_track = NULL, *old_slip = NULL, *rootdir = NULL;
     double *gbuf = NULL;
     SUNMatrix A = NULL;
     SUNLinearSolver LS = NULL;
@@ -327,11 +334,12 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     old_mode = calloc((size_t)m->ninter + 1, sizeof(int));
     old_branch = calloc((size_t)m->ninter + 1, sizeof(int));
     old_track = calloc((size_t)m->ninter + 1, sizeof(int));
+    old_slip = calloc((size_t)m->ninter + 1, sizeof(int));
     rootdir = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(int));
     gbuf = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(double));
     A = SUNSparseMatrix(m->ny, m->ny, m->nnz, CSC_MAT, ctx);
     roots = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(int));
-    if (!y || !av || !f0 || !f1 || !ytn || !old_mode || !old_branch || !old_track || !rootdir || !gbuf || !A ||
+    if (!y || !av || !f0 || !f1 || !ytn || !old_mode || !old_branch || !old_track || !old_slip || !rootdir || !gbuf || !A ||
         !roots) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the solver");
         goto done;
@@ -393,13 +401,14 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
             memcpy(old_mode, d->inter_mode, (size_t)m->ninter * sizeof(int));
             memcpy(old_branch, d->inter_branch, (size_t)m->ninter * sizeof(int));
             memcpy(old_track, d->inter_track, (size_t)m->ninter * sizeof(int));
+            memcpy(old_slip, d->inter_slip, (size_t)m->ninter * sizeof(int));
             int jumped = 0;
             int nev = rc_events_apply(m, d, t, yd, roots, ev, RC_MAX_EV, &jumped);
             s.events += nev;
             for (int k = 0; k < nev && k < RC_MAX_EV && out; k++)
                 if ((st = rc_output_event(out, t, ev[k].kind, m->inter_name[ev[k].inter], err))) goto done;
             if (nev > 0) CVCHECK(set_root_directions(m, d, cv, rootdir), "CVodeSetRootDirection");
-            if (jumped || (nev > 0 && needs_restart(m, d, cv, old_mode, old_branch, old_track, t, yd, ytn, f0, f1)) ||
+            if (jumped || (nev > 0 && needs_restart(m, d, cv, old_mode, old_branch, old_track, old_slip, t, yd, ytn, f0, f1)) ||
                 root_on_zero(m, d, t, yd, gbuf)) {
                 add_stats(cv, &s);
                 CVCHECK(CVodeReInit(cv, t, y), "CVodeReInit");
@@ -454,6 +463,7 @@ done:
     free(old_mode);
     free(old_branch);
     free(old_track);
+    free(old_slip);
     free(rootdir);
     free(gbuf);
     SUNContext_Free(&ctx);

@@ -104,16 +104,18 @@ static rc_status probe_blocks(rc_model *m, rc_error *err)
         }
         for (int k = 0; k < n; k++) jb->slot[k] = -1;
         /* every mode in which the element writes: contact closed (forces)
-         * and released, each hysteresis branch, Inacti tracking on/off */
+         * and released, each hysteresis branch, Inacti tracking on/off,
+         * stick and slip */
         for (int p = 0; p < 2; p++)
             for (int md = 0; md < (is_inter ? 2 : 1); md++)
                 for (int br = 0; br < (is_inter ? 3 : 1); br++)
-                    for (int trk = 0; trk < (is_inter ? 2 : 1); trk++) {
-                        const int mode = md ? RC_MODE_RELEASED : RC_MODE_CLOSED;
-                        rc_jac_dense_block(m, is_inter, idx, mode, br, trk, 0.0, y[p], dense);
-                        for (int k = 0; k < n; k++)
-                            if (dense[k] != 0.0) jb->slot[k] = 0; /* NaN counts as kept */
-                    }
+                    for (int trk = 0; trk < (is_inter ? 2 : 1); trk++)
+                        for (int sl = 0; sl < (is_inter ? 2 : 1); sl++) {
+                            const int mode = md ? RC_MODE_RELEASED : RC_MODE_CLOSED;
+                            rc_jac_dense_block(m, is_inter, idx, mode, br, trk, sl, 0.0, y[p], dense);
+                            for (int k = 0; k < n; k++)
+                                if (dense[k] != 0.0) jb->slot[k] = 0; /* NaN counts as kept */
+                        }
     }
 done:
     free(y[0]);

@@ -12,6 +12,9 @@
  *     [1] W_damp  energy dissipated by the normal damping             [J]
  *     [inter_hidx] F_h    hysteresis force, Iform 1 and 2              [N]
  *     [inter_oidx] offset gap reduction of Inacti = 5 (>= 0)           [m]
+ *     [inter_tidx .. +2] F_t tangential (friction) force on body a,
+ *                        global frame, in the contact plane          [N]
+ *     [inter_tidx + 3]   W_fric work of the friction forces          [J]
  * Fixed bodies have no states; their pose is body_y0 (13 values, zero
  * velocities).
  *
@@ -29,7 +32,11 @@
 
 #define RC_NB 13 /* states of a free body */
 #define RC_NE 2  /* energy states of an interface */
-#define RC_NS_MAX 4 /* own states of an interface: energies, F_h, offset */
+/* Stick -> slip needs |F_t| > (1 + RC_SLIP_BAND) F_lim: an undamped stick
+ * spring released from the limit rings back exactly to it, and a touch must
+ * not count as a crossing (docs/theory.md 3.6) [-]. */
+#define RC_SLIP_BAND 1e-6
+#define RC_NS_MAX 8 /* own states of an interface: energies, F_h, offset, F_t, W_fric */
 #define RC_JB_MAX ((2 * 6 + RC_NS_MAX) * (2 * RC_NB + RC_NS_MAX)) /* largest dense block */
 
 /* Analytic surface kinds. */
@@ -62,6 +69,7 @@ enum {
     RC_ROOT_HYST_B,     /* ELASTIC: F_h - F_U(P)                       */
     RC_ROOT_TRK_A,      /* Inacti 5 tracking: dP_raw/dt                */
     RC_ROOT_TRK_B,      /* Inacti 5 tracking: offset                   */
+    RC_ROOT_SLIP,       /* stick: |F_t|^2 - F_lim^2; slip: v_t . e     */
     RC_ROOTS_PER_INTER
 };
 
@@ -93,6 +101,10 @@ struct rc_model {
     double *body_Jinv;   /* [nbody*9] its inverse [1/(kg m^2)] */
     double *body_y0;     /* [nbody*13] initial state (pose for fixed bodies) */
     double *body_grav;   /* [nbody*3] gravity per unit function value [m/s^2] */
+    int *body_dofmask;   /* [nbody*6] 1: translation x,y,z / rotation held (/BCS) */
+    int nheld;           /* held acceleration rows */
+    int *held;           /* [nheld] state indices of held velocities (their rates are 0) */
+    char *row_held;      /* [ny] 1 for those rows */
     double ground_y0[RC_NB]; /* pose of "fixed in space" (identity, at rest) */
     int grav_table;      /* table index of the gravity time function, -1: constant */
     double grav_ascale;  /* [s] abscissa scale of the gravity function */
@@ -135,6 +147,11 @@ struct rc_model {
     int *inter_ns;       /* [ninter] number of own states (2..RC_NS_MAX) */
     int *inter_hidx;     /* [ninter] index of F_h among them, -1 */
     int *inter_oidx;     /* [ninter] index of the Inacti offset, -1 */
+    int *inter_tidx;     /* [ninter] index of F_t (then W_fric), -1: no friction */
+    double *inter_sfric; /* Sfric [N] */
+    double *inter_fric;  /* Fric [-] */
+    int *inter_fct_ff, *inter_fct_fv; /* friction multipliers, table index or -1 */
+    double *inter_kt;    /* tangential stiffness [N/m]: Stiff, or the default */
     char **inter_name;   /* [ninter] "/INTER/TYPE6/<id>" */
 
     /* state vector */
@@ -163,6 +180,7 @@ typedef struct rc_data {
     int *inter_mode;     /* [ninter] rc_inter_mode */
     int *inter_branch;   /* [ninter] rc_branch (Iform 1, 2) */
     int *inter_track;    /* [ninter] 1: Inacti 5 offset follows the separation */
+    int *inter_slip;     /* [ninter] friction: 0 stick, 1 slip */
     long n_rhs, n_jac, n_root;
     int fail_inter;      /* element that produced a non-finite force, -1 */
     double fail_t;
@@ -180,6 +198,10 @@ typedef struct rc_inter_report {
     double fl, fu;       /* load and unload curves at P [N] */
     double fh;           /* hysteresis state F_h (0 when absent) [N] */
     double offset;       /* Inacti 5 gap reduction [m] */
+    double ft[3];        /* friction force on body a, applied [N] */
+    double flim;         /* friction limit Sfric + mu F_n [N] */
+    double vslip;        /* sliding speed |v_t| [m/s] */
+    double slip_root;    /* stick: |F_t|^2 - F_lim^2; slip: v_t . e */
     double point[3];     /* contact point [m] */
     double normal[3];    /* unit normal, from a to b [-] */
 } rc_inter_report;
@@ -199,7 +221,7 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
 void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
 /* Evaluate one interface at (t, y) in the given modes, for reports, roots
  * and events. */
-void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, double t,
+void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, double t,
                           const double *y, rc_inter_report *r);
 /* Gravity acceleration vector of body b at time t [m/s^2]. */
 void rc_gravity(const rc_model *m, int b, double t, double g[3]);
@@ -208,16 +230,21 @@ void rc_gravity(const rc_model *m, int b, double t, double g[3]);
 const double *rc_body_state(const rc_model *m, int b, const double *y);
 
 /* Energies [J]: kinetic, gravitational potential, work of the normal
- * elastic(-plastic) forces, damping dissipation, elastic energy stored in the
- * contacts, hysteresis dissipation (= work - stored), total (kinetic +
- * potential + work + damping; constant in exact arithmetic). */
-enum { RC_E_KIN, RC_E_POT, RC_E_WORK, RC_E_DAMP, RC_E_STORED, RC_E_HYST, RC_E_TOTAL, RC_NENERGY };
+ * elastic(-plastic) forces, damping dissipation, work of the friction forces,
+ * elastic energy stored in the contacts (normal and tangential), hysteresis
+ * dissipation (= normal work - normal stored), friction dissipation (=
+ * friction work - tangential stored), total (kinetic + potential + work +
+ * damping + friction work; constant in exact arithmetic). */
+enum {
+    RC_E_KIN, RC_E_POT, RC_E_WORK, RC_E_DAMP, RC_E_FWORK, RC_E_STORED, RC_E_HYST, RC_E_FRIC, RC_E_TOTAL,
+    RC_NENERGY
+};
 void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, double e[RC_NENERGY]);
 
 /* Dense block of an element (body e, or interface e in the given modes) at
  * (t, y), row-major over its rc_jblock rows and columns (assemble_jac.c). */
-void rc_jac_dense_block(const rc_model *m, int is_inter, int e, int mode, int branch, int track, double t,
-                        const double *y, double *out);
+void rc_jac_dense_block(const rc_model *m, int is_inter, int e, int mode, int branch, int track, int slip,
+                        double t, const double *y, double *out);
 
 /* ---- Jacobian pattern (jacpattern.c) ------------------------------- */
 rc_status rc_jac_build(rc_model *m, rc_error *err);

@@ -765,10 +765,10 @@ static const char *type6_deck(const char *name, int k, const char *text)
 static void test_case_error_type6(void)
 {
     /* unsupported but valid Radioss values */
-    EXPECT_T6(2, ",0.1", "field Fric", "not supported yet (planned: TYPE6 friction)");
-    EXPECT_T6(2, "0.5", "field Sfric", "not supported yet");
+    EXPECT_T6(2, ",-0.1", "field Fric", "non-negative");
+    EXPECT_T6(2, "-0.5", "field Sfric", "non-negative");
     EXPECT_T6(3, ",1", "field IRS", "not supported yet", "analytic");
-    EXPECT_T6(3, ",,,,4", "field fct_IDff", "not supported yet");
+    EXPECT_T6(3, ",,,,-4", "field fct_IDff", "non-negative");
     /* the elasto-plastic laws need Stiff */
     /* (reported on line 5 of the card, where Stiff belongs: file line 7) */
     ENSURE(check_error(type6_deck("t6.rad", 4, "        31         1"), RC_EINPUT, 7, "card /INTER/TYPE6/3",

@@ -13,11 +13,13 @@
  * body 2 (sphere), a tilted plane fixed in space; sphere-plane and
  * sphere-sphere TYPE6 with a nonlinear load curve, Visc and both damping
  * curves; gravity. */
-static rc_case_funct fn[4];
+static rc_case_funct fn[6];
 static double fx0[] = {-0.01, 0.0, 0.0013, 0.0041, 0.0097}, fy0[] = {-3.1e3, 0.0, 2.71e3, 1.37e4, 5.9e4};
 static double fx1[] = {-10.0, 0.0, 0.37, 3.3}, fy1[] = {-41.0, 0.0, 5.3, 71.0};   /* f_dv */
 static double fx2[] = {0.0, 500.0, 9e4}, fy2[] = {1.0, 0.83, 0.61};               /* f_df */
 static double fx3[] = {0.0, 0.002, 0.006, 0.011}, fy3[] = {0.0, 0.0, 5e3, 3.1e4};  /* f_ul */
+static double fx4[] = {0.0, 300.0, 4e4}, fy4[] = {1.0, 0.91, 0.77};                /* f_ff */
+static double fx5[] = {0.0, 0.3, 2.0, 9.0}, fy5[] = {1.2, 1.0, 0.83, 0.71};         /* f_fv */
 static rc_case_node nodes[2] = {{1, {0.0213, -0.0117, 0.0519}, {0}}, {2, {0.0371, 0.0093, 0.131}, {0}}};
 static rc_case_rbody rb[2];
 static rc_case_surf sf[3];
@@ -32,7 +34,9 @@ static void build_case(rc_case *c)
     fn[1] = (rc_case_funct){8, "dv", 4, fx1, fy1, {0}};
     fn[2] = (rc_case_funct){9, "df", 3, fx2, fy2, {0}};
     fn[3] = (rc_case_funct){10, "ul", 4, fx3, fy3, {0}};
-    c->nfunct = 4;
+    fn[4] = (rc_case_funct){11, "ff", 3, fx4, fy4, {0}};
+    fn[5] = (rc_case_funct){12, "fv", 4, fx5, fy5, {0}};
+    c->nfunct = 6;
     c->funct = fn;
     c->nnode = 2;
     c->node = nodes;
@@ -60,6 +64,9 @@ static void build_case(rc_case *c)
     /* elasto-plastic with unload curve and Inacti 5; decoupled hardening */
     t6[0].iform = 1; t6[0].fct_ul = 10; t6[0].fscaleul = 0.83; t6[0].stiff = 7.3e6; t6[0].inacti = 5;
     t6[1].iform = 2; t6[1].stiff = 6.1e6;
+    /* friction: Coulomb with both multipliers; static force plus Coulomb */
+    t6[0].fric = 0.37; t6[0].fct_ff = 11; t6[0].fct_fv = 12;
+    t6[1].sfric = 2.1; t6[1].fric = 0.23;
     c->ntype6 = 2;
     c->type6 = t6;
     gr = (rc_case_grav){.id = 1, .dir = 2, .ascale = 1.0, .fscale = -9.81};
@@ -81,6 +88,10 @@ static void entropy_state(const rc_model *m, double *y)
     y[m->inter_eadr[0] + m->inter_hidx[0]] = 731.0;
     y[m->inter_eadr[0] + m->inter_oidx[0]] = 3.7e-4;
     y[m->inter_eadr[1] + m->inter_hidx[1]] = 1370.0;
+    /* tangential forces, not exactly in the contact plane */
+    const double ft[2][3] = {{13.7, -8.1, 2.3}, {-4.4, 11.9, 0.7}};
+    for (int i = 0; i < 2; i++)
+        for (int k = 0; k < 3; k++) y[m->inter_eadr[i] + m->inter_tidx[i] + k] = ft[i][k];
 }
 
 /* Max scaled |J - FD| over the whole Jacobian in the current modes; counts
@@ -91,8 +102,14 @@ static double jac_fd_error(const rc_model *m, rc_data *d, double *y, int *bad, i
     double *f1 = calloc((size_t)m->ny, sizeof(double)), *f2 = calloc((size_t)m->ny, sizeof(double));
     double *val = calloc((size_t)m->nnz, sizeof(double)), maxerr = 0;
     rc_assemble_jac(m, d, t, y, val);
+    const int first_own = m->ninter > 0 ? m->inter_eadr[0] : m->ny;
     for (int col = 0; col < m->ny; col++) {
-        double h = 1e-6 * (fabs(y[col]) > 1 ? fabs(y[col]) : 1.0), keep = y[col];
+        /* body states: small steps (the geometry is strongly nonlinear);
+         * interface states (forces, energies) enter linearly or smoothly,
+         * and their rows are large (K_t v_t): a larger step keeps the
+         * difference clear of rounding */
+        double rel = col < first_own ? 1e-6 : 1e-4;
+        double h = rel * (fabs(y[col]) > 1 ? fabs(y[col]) : 1.0), keep = y[col];
         y[col] = keep + h;
         rc_assemble_rhs(m, d, t, y, f1);
         y[col] = keep - h;
@@ -131,25 +148,27 @@ static void test_engine_jacobian_matches_finite_differences(void)
     entropy_state(m, y);
     for (int i = 0; i < m->ninter; i++) {
         rc_inter_report r;
-        rc_inter_report_eval(m, i, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0.0, y, &r);
+        rc_inter_report_eval(m, i, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
         ENSURE(r.p > 0); /* both contacts penetrate in this state */
     }
     /* every mode in which the interfaces write: closed and released, each
-     * hysteresis branch, Inacti tracking on and off */
+     * hysteresis branch, Inacti tracking on and off, stick and slip */
     int bad = 0, outside = 0, combos = 0;
     double maxerr = 0;
     const int modes[2] = {RC_MODE_CLOSED, RC_MODE_RELEASED};
     for (int md = 0; md < 2; md++)
         for (int br = 0; br < 3; br++)
-            for (int trk = 0; trk < 2; trk++) {
-                for (int i = 0; i < m->ninter; i++) {
-                    d->inter_mode[i] = modes[md];
-                    d->inter_branch[i] = br;
-                    d->inter_track[i] = trk && m->inter_oidx[i] >= 0;
+            for (int trk = 0; trk < 2; trk++)
+                for (int sl = 0; sl < 2; sl++) {
+                    for (int i = 0; i < m->ninter; i++) {
+                        d->inter_mode[i] = modes[md];
+                        d->inter_branch[i] = br;
+                        d->inter_track[i] = trk && m->inter_oidx[i] >= 0;
+                        d->inter_slip[i] = sl;
+                    }
+                    maxerr = fmax(maxerr, jac_fd_error(m, d, y, &bad, &outside));
+                    combos++;
                 }
-                maxerr = fmax(maxerr, jac_fd_error(m, d, y, &bad, &outside));
-                combos++;
-            }
     printf("    jacobian: %d states, %lld nonzeros, %d mode combinations, max scaled |J - FD| = %.2e\n", m->ny,
            (long long)m->nnz, combos, maxerr);
     ENSURE(bad == 0);

@@ -16,6 +16,7 @@
 #define RE(x) creal(x)
 #define RCK(name) name##_c
 #include "kernels.inc"
+#include "kernels_coupling.inc"
 
 /* Complex step [state units]; any tiny value works, no cancellation. */
 #define RC_CSTEP 1e-40
@@ -97,9 +98,13 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
             dense_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], y, dense);
             scatter(&m->jb_inter[i], dense, val);
         }
+    /* couplings (coupling_jac.inc) */
+    if (rc_cpl_jac(m, d, t, y, val)) return 1;
     /* held DOFs: their rows are zero */
     if (m->nheld > 0)
         for (int64_t k = 0; k < m->nnz; k++)
             if (m->row_held[m->jac_rowind[k]]) val[k] = 0.0;
     return 0;
 }
+
+#include "coupling_jac.inc"

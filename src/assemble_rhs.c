@@ -13,6 +13,7 @@
 #define RE(x) (x)
 #define RCK(name) name##_r
 #include "kernels.inc"
+#include "kernels_coupling.inc"
 
 /* Acceleration slot (vdot, wdot) of body b in ydot, NULL when b has no states. */
 static double *acc_slot(const rc_model *m, int b, double *ydot)
@@ -44,6 +45,8 @@ int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, do
                 return 1; /* recoverable: CVODE retries with a smaller step */
             }
     }
+    /* couplings (coupling_rhs.inc) */
+    if (rc_cpl_rhs(m, d, t, y, ydot)) return 1;
     /* held DOFs (/BCS): the support takes whatever force acts */
     for (int k = 0; k < m->nheld; k++) ydot[m->held[k]] = 0.0;
     return 0;
@@ -110,3 +113,5 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         }
     }
 }
+
+#include "coupling_rhs.inc"

@@ -1,6 +1,7 @@
 /* Rigid bodies: state views, gravity, energies. */
 #include <string.h>
 
+#include "coupling.h"
 #include "model.h"
 
 const double *rc_body_state(const rc_model *m, int b, const double *y)
@@ -82,7 +83,18 @@ void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, d
         e[RC_E_STORED] += et;
         e[RC_E_FRIC] += ft[3] - et;
     }
-    e[RC_E_TOTAL] = e[RC_E_KIN] + e[RC_E_POT] + e[RC_E_WORK] + e[RC_E_DAMP] + e[RC_E_FWORK];
+    /* couplings: integrated work of the spring and line forces, dissipation */
+    for (int k = 0; k < m->cpl->n; k++) {
+        const double *ce = y + m->cpl->eadr[k];
+        if (m->cpl->kind[k] == RC_CPL_SPRING) {
+            e[RC_E_CPL_ELASTIC] += ce[0];
+            e[RC_E_CPL_DAMP] += ce[1];
+        } else {
+            e[RC_E_CATENARY] += ce[0];
+        }
+    }
+    e[RC_E_TOTAL] = e[RC_E_KIN] + e[RC_E_POT] + e[RC_E_WORK] + e[RC_E_DAMP] + e[RC_E_FWORK] + e[RC_E_CPL_ELASTIC] +
+                    e[RC_E_CPL_DAMP] + e[RC_E_CATENARY];
 }
 
 void rc_initial_state(const rc_model *m, double *y)

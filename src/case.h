@@ -179,6 +179,7 @@ struct rc_case {
     int ninivel; rc_case_inivel *inivel;
     int ngrav;   rc_case_grav *grav;
     int nbcs;    rc_case_bcs *bcs;
+    int ncoupling; struct rc_case_coupling *coupling; /* case_coupling.h */
     rc_case_run run;
     rc_case_solver solver;
 

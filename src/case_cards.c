@@ -43,12 +43,9 @@ static const char rc_note_sensor[] = "(sensors)";
  * Header and common checks
  * ====================================================================== */
 
-/* How a card's header carries numbers. */
-typedef enum { RC_ID_NONE, RC_ID_REQUIRED, RC_ID_OPTIONAL, RC_ID_UNIT } rc_id_mode;
-
 /* Check the header of a card with `nkw` keywords: id and unit id. */
-static rc_status rc_header(rc_reader *rd, const rc_block *b, int nkw, rc_id_mode mode,
-                           const char *idname, const char *usage)
+rc_status rc_header(rc_reader *rd, const rc_block *b, int nkw, rc_id_mode mode,
+                    const char *idname, const char *usage)
 {
     const rc_loc *loc = &b->hdr->loc;
     if (b->nkw > nkw)
@@ -634,7 +631,7 @@ static rc_status rc_card_solver(rc_reader *rd, const rc_block *b)
 typedef enum {
     RC_CARD_BEGIN, RC_CARD_NODE, RC_CARD_GRNOD, RC_CARD_RBODY, RC_CARD_PLANE, RC_CARD_ELLIPS,
     RC_CARD_TYPE6, RC_CARD_FUNCT, RC_CARD_INIVEL, RC_CARD_GRAV, RC_CARD_BCS, RC_CARD_RUN,
-    RC_CARD_SOLVER
+    RC_CARD_SOLVER, RC_CARD_CPL_SPRING, RC_CARD_CPL_CATENARY
 } rc_card_kind;
 
 /* Supported cards; a family (kw with a sub) lists each subtype. */
@@ -649,6 +646,7 @@ static const struct {
     {"INIVEL", "TRA", RC_CARD_INIVEL}, {"INIVEL", "ROT", RC_CARD_INIVEL},
     {"GRAV", NULL, RC_CARD_GRAV},      {"BCS", NULL, RC_CARD_BCS},
     {"RUN", NULL, RC_CARD_RUN},        {"SOLVER", NULL, RC_CARD_SOLVER},
+    {"COUPLING", "SPRING", RC_CARD_CPL_SPRING}, {"COUPLING", "CATENARY", RC_CARD_CPL_CATENARY},
 };
 
 /* Radioss cards without meaning for rigid bodies: skipped with a warning. */
@@ -682,6 +680,8 @@ static rc_status rc_card_call(rc_reader *rd, const rc_block *b, rc_card_kind kin
     case RC_CARD_BCS: return rc_card_bcs(rd, b);
     case RC_CARD_RUN: return rc_card_run(rd, b);
     case RC_CARD_SOLVER: return rc_card_solver(rd, b);
+    case RC_CARD_CPL_SPRING: return rc_card_coupling_spring(rd, b);
+    case RC_CARD_CPL_CATENARY: return rc_card_coupling_catenary(rd, b);
     }
     return RC_SET(rd->err, RC_EINTERNAL, "unknown card kind %d", (int)kind);
 }

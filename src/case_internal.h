@@ -56,7 +56,7 @@ typedef struct rc_block {
 /* Card kinds whose ids must be unique (one id space per kind). */
 typedef enum {
     RC_IDK_FUNCT, RC_IDK_NODE, RC_IDK_GRNOD, RC_IDK_RBODY, RC_IDK_SURF,
-    RC_IDK_INTER, RC_IDK_INIVEL, RC_IDK_GRAV, RC_IDK_BCS, RC_IDK_COUNT
+    RC_IDK_INTER, RC_IDK_INIVEL, RC_IDK_GRAV, RC_IDK_BCS, RC_IDK_COUPLING, RC_IDK_COUNT
 } rc_id_kind;
 
 /* One id as declared, for the duplicate check. */
@@ -85,7 +85,7 @@ typedef struct rc_reader {
     long main_bytes;                          /* size of the main file      */
 
     int capfunct, capnode, capgrnod, caprbody, capsurf, captype6, capinivel,
-        capgrav, capbcs, capwarn;
+        capgrav, capbcs, capwarn, capcoupling;
     rc_id_entry *ids[RC_IDK_COUNT];
     int nids[RC_IDK_COUNT], capids[RC_IDK_COUNT];
     int seq;
@@ -176,6 +176,17 @@ rc_status rc_case_warn(rc_reader *rd, const rc_loc *loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 
 /* ---- Cards (case_cards.c) --------------------------------------------- */
+
+/* How a card's header carries numbers. */
+typedef enum { RC_ID_NONE, RC_ID_REQUIRED, RC_ID_OPTIONAL, RC_ID_UNIT } rc_id_mode;
+
+/* Check the header of a card with `nkw` keywords: id and unit id. */
+rc_status rc_header(rc_reader *rd, const rc_block *b, int nkw, rc_id_mode mode,
+                    const char *idname, const char *usage);
+
+/* /COUPLING/SPRING and /COUPLING/CATENARY (case_cards_coupling.c). */
+rc_status rc_card_coupling_spring(rc_reader *rd, const rc_block *b);
+rc_status rc_card_coupling_catenary(rc_reader *rd, const rc_block *b);
 
 /* Read one block: dispatch on its keyword. */
 rc_status rc_card_dispatch(rc_reader *rd, const rc_block *b);

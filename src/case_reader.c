@@ -777,7 +777,7 @@ static rc_status rc_check_dups(rc_reader *rd)
 {
     static const char *const names[RC_IDK_COUNT] = {
         "fct_ID", "node_ID", "grnod_ID", "rbody_ID", "surf_ID",
-        "inter_ID", "inivel_ID", "grav_ID", "bcs_ID"};
+        "inter_ID", "inivel_ID", "grav_ID", "bcs_ID", "cpl_ID"};
     const rc_id_entry *worst = NULL, *first = NULL;
     int wkind = 0;
     for (int k = 0; k < RC_IDK_COUNT; k++) {
@@ -853,6 +853,7 @@ void rc_case_free(rc_case *c)
     free(c->inivel);
     free(c->grav);
     free(c->bcs);
+    free(c->coupling);
     for (int i = 0; i < c->nwarnings; i++) free(c->warnings[i]);
     free(c->warnings);
     free(c);

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "case.h"
+#include "coupling.h"
 #include "error.h"
 #include "model.h"
 
@@ -398,6 +399,7 @@ static rc_status layout(rc_model *m, rc_error *err)
         m->inter_ns[i] = ns;
         ny += ns;
     }
+    ny = rc_cpl_layout(m, ny);
     m->ny = ny;
     /* rows of held DOFs (accelerations set to zero), for rhs and Jacobian */
     m->nheld = 0;
@@ -433,6 +435,7 @@ static rc_status layout(rc_model *m, rc_error *err)
             m->atol[m->inter_eadr[i] + ti + 3] = m->atol_energy;
         }
     }
+    rc_cpl_atol(m);
     return RC_OK;
 }
 
@@ -541,6 +544,8 @@ rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->inter_name, m->ninter);
     for (int i = 0; i < m->ninter; i++)
         if ((st = compile_type6(c, m, i, err))) goto fail;
+    /* couplings (coupling_compile.c) */
+    if ((st = rc_cpl_compile(c, m, err))) goto fail;
     /* states, tolerances, Jacobian pattern */
     if ((st = layout(m, err))) goto fail;
     if ((st = rc_jac_build(m, err))) goto fail;
@@ -559,6 +564,7 @@ void rc_model_free(rc_model *m)
     if (m->inter_name)
         for (int i = 0; i < m->ninter; i++) free(m->inter_name[i]);
     rc_jac_free(m);
+    rc_cpl_free(m->cpl);
     void *arrays[] = {m->case_path, m->table, m->body_id, m->body_fixed, m->body_yadr, m->body_mass,
                       m->body_J, m->body_Jinv, m->body_y0, m->body_grav, m->body_dofmask, m->surf_id, m->surf_kind,
                       m->surf_body, m->surf_p, m->surf_n, m->surf_r, m->inter_id, m->inter_pair,
@@ -602,6 +608,7 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
                     m->inter_sfric[i], m->inter_fric[i], m->inter_kt[i],
                     m->inter_stiff[i] > 0 ? " (Stiff)" : " (default: steepest slope of the load curve)");
     if (m->ninter > 20) fprintf(f, "  ... %d more\n", m->ninter - 20);
+    rc_cpl_print_summary(m, f);
     fprintf(f, "states      %d, Jacobian nonzeros %lld\n", m->ny, (long long)m->nnz);
     fprintf(f, "run         end time %.6g s, output every %.6g s\n", m->tend, m->dtout);
     fprintf(f, "solver      CVODE BDF (max order %d), Newton, KLU; rtol %.3g\n", m->max_order, m->rtol);

@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "coupling.h"
 #include "events.h"
 
 rc_data *rc_data_new(const rc_model *m)
@@ -19,7 +20,8 @@ rc_data *rc_data_new(const rc_model *m)
     d->inter_branch = calloc(n, sizeof(int));
     d->inter_track = calloc(n, sizeof(int));
     d->inter_slip = calloc(n, sizeof(int));
-    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip) {
+    d->cpl = rc_cpl_data_new(m);
+    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->cpl) {
         rc_data_free(d);
         return NULL;
     }
@@ -34,6 +36,7 @@ void rc_data_free(rc_data *d)
     free(d->inter_branch);
     free(d->inter_track);
     free(d->inter_slip);
+    rc_cpl_data_free(d->cpl);
     free(d);
 }
 

@@ -208,7 +208,8 @@ static rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, 
 
 static const char *const energy_name[RC_NENERGY] = {
     "energy_kinetic",        "energy_potential",  "energy_contact_work", "energy_damping", "energy_friction_work",
-    "energy_contact_stored", "energy_hysteresis", "energy_friction",     "energy_total"};
+    "energy_contact_stored", "energy_hysteresis", "energy_friction",     "energy_coupling_elastic",
+    "energy_coupling_damping", "energy_catenary", "energy_total"};
 static const char *const energy_long[RC_NENERGY] = {
     "kinetic energy of the free bodies",
     "gravitational potential energy",
@@ -218,7 +219,10 @@ static const char *const energy_long[RC_NENERGY] = {
     "elastic energy stored in the contacts, normal and tangential (recoverable by unloading)",
     "energy dissipated by contact hysteresis (normal work - normal stored)",
     "energy dissipated by friction (friction work - tangential stored)",
-    "kinetic + potential + contact work + damping + friction work (constant in exact arithmetic)"};
+    "elastic energy stored in the spring-damper couplings",
+    "energy dissipated by the coupling dampers",
+    "elastic and gravitational energy of the catenary lines (work done by their ends)",
+    "kinetic + potential + contact work + damping + friction work + couplings (constant in exact arithmetic)"};
 
 static rc_status open_output(const rc_model *m, const char *path, rc_output **o, rc_error *err)
 {

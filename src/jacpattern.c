@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "coupling.h"
 #include "error.h"
 #include "model.h"
 
@@ -117,6 +118,24 @@ static rc_status probe_blocks(rc_model *m, rc_error *err)
                                 if (dense[k] != 0.0) jb->slot[k] = 0; /* NaN counts as kept */
                         }
     }
+    /* couplings (coupling.h): no modes */
+    for (int k = 0; k < m->cpl->n && !st; k++) {
+        rc_jblock *jb = &m->cpl->jb[k];
+        const int n = jb->nrow * jb->ncol;
+        if (n == 0) continue;
+        if (!(jb->slot = malloc((size_t)n * sizeof(int64_t)))) {
+            st = RC_SET(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
+            break;
+        }
+        for (int i = 0; i < n; i++) jb->slot[i] = -1;
+        for (int p = 0; p < 2 && !st; p++) {
+            if (rc_cpl_dense_block(m, NULL, k, 0.0, y[p], dense))
+                st = RC_SET(err, RC_EINPUT, "%s: the catenary equations have no solution near the initial "
+                            "position (probing the Jacobian pattern)", m->cpl->name[k]);
+            for (int i = 0; i < n; i++)
+                if (dense[i] != 0.0) jb->slot[i] = 0;
+        }
+    }
 done:
     free(y[0]);
     free(y[1]);
@@ -164,14 +183,19 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
         block_inter(m, i, &m->jb_inter[i]);
         nkey += (int64_t)m->jb_inter[i].nrow * m->jb_inter[i].ncol;
     }
+    for (int k = 0; k < m->cpl->n; k++) {
+        rc_cpl_block(m, k, &m->cpl->jb[k]);
+        nkey += (int64_t)m->cpl->jb[k].nrow * m->cpl->jb[k].ncol;
+    }
     rc_status pst = probe_blocks(m, err);
     if (pst) return pst;
     int64_t *key = malloc((size_t)nkey * sizeof(int64_t));
     if (!key) RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
     int64_t n = 0;
     for (int64_t k = 0; k < ny; k++) key[n++] = k * ny + k;
-    for (int e = 0; e < m->nbody + m->ninter; e++) {
-        const rc_jblock *jb = e < m->nbody ? &m->jb_body[e] : &m->jb_inter[e - m->nbody];
+    for (int e = 0; e < m->nbody + m->ninter + m->cpl->n; e++) {
+        const int nbi = m->nbody + m->ninter;
+        const rc_jblock *jb = e < m->nbody ? &m->jb_body[e] : e < nbi ? &m->jb_inter[e - m->nbody] : &m->cpl->jb[e - nbi];
         for (int r = 0; r < jb->nrow; r++)
             for (int c = 0; c < jb->ncol; c++)
                 if (jb->slot[r * jb->ncol + c] >= 0) key[n++] = (int64_t)jb->cols[c] * ny + jb->rows[r];
@@ -205,6 +229,10 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
         rc_status st = fill_slots(m, &m->jb_inter[i], err);
         if (st) return st;
     }
+    for (int k = 0; k < m->cpl->n; k++) {
+        rc_status st = m->cpl->jb[k].slot ? fill_slots(m, &m->cpl->jb[k], err) : RC_OK;
+        if (st) return st;
+    }
     return RC_OK;
 }
 
@@ -214,6 +242,11 @@ void rc_jac_free(rc_model *m)
         for (int b = 0; b < m->nbody; b++) free(m->jb_body[b].slot);
     if (m->jb_inter)
         for (int i = 0; i < m->ninter; i++) free(m->jb_inter[i].slot);
+    if (m->cpl)
+        for (int k = 0; k < m->cpl->n; k++) {
+            free(m->cpl->jb[k].slot);
+            m->cpl->jb[k].slot = NULL;
+        }
     free(m->jb_body);
     free(m->jb_inter);
     free(m->jac_colptr);

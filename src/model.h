@@ -173,6 +173,9 @@ struct rc_model {
     rc_jblock *jb_body;  /* [nbody] (only free bodies used) */
     rc_jblock *jb_inter; /* [ninter] */
     int64_t *jac_diag;   /* [ny] slot of each diagonal entry */
+
+    /* body couplings: spring-dampers, catenaries (coupling.h) */
+    struct rc_couplings *cpl;
 };
 
 /* Mutable run data. */
@@ -181,6 +184,7 @@ typedef struct rc_data {
     int *inter_branch;   /* [ninter] rc_branch (Iform 1, 2) */
     int *inter_track;    /* [ninter] 1: Inacti 5 offset follows the separation */
     int *inter_slip;     /* [ninter] friction: 0 stick, 1 slip */
+    struct rc_cpl_data *cpl; /* couplings: catenary warm starts, workspace (coupling.h) */
     long n_rhs, n_jac, n_root;
     int fail_inter;      /* element that produced a non-finite force, -1 */
     double fail_t;
@@ -233,11 +237,13 @@ const double *rc_body_state(const rc_model *m, int b, const double *y);
  * elastic(-plastic) forces, damping dissipation, work of the friction forces,
  * elastic energy stored in the contacts (normal and tangential), hysteresis
  * dissipation (= normal work - normal stored), friction dissipation (=
- * friction work - tangential stored), total (kinetic + potential + work +
- * damping + friction work; constant in exact arithmetic). */
+ * friction work - tangential stored), coupling energies (spring elastic,
+ * damper dissipation, catenary lines: coupling.h), total (kinetic +
+ * potential + work + damping + friction work + couplings; constant in exact
+ * arithmetic). */
 enum {
-    RC_E_KIN, RC_E_POT, RC_E_WORK, RC_E_DAMP, RC_E_FWORK, RC_E_STORED, RC_E_HYST, RC_E_FRIC, RC_E_TOTAL,
-    RC_NENERGY
+    RC_E_KIN, RC_E_POT, RC_E_WORK, RC_E_DAMP, RC_E_FWORK, RC_E_STORED, RC_E_HYST, RC_E_FRIC,
+    RC_E_CPL_ELASTIC, RC_E_CPL_DAMP, RC_E_CATENARY, RC_E_TOTAL, RC_NENERGY
 };
 void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, double e[RC_NENERGY]);
 

@@ -85,6 +85,25 @@ class Deck:
     def bcs(self, bid, grnod):
         self.add(f"/BCS/{bid}", f"{'111 111':>10s}{0:>10d}{grnod:>10d}", title="fixed")
 
+    def spring(self, cid, b1, p1, b2, p2, iform=1, fct=None, x0=None, kd=None, a=None, b=None, c=None,
+               fr=None, xr=None, title="spring-damper"):
+        """/COUPLING/SPRING: bodies (0 = fixed point), points, Iform, /FUNCT, X0, Kd, A B C, F_r X_r."""
+        lines = [line(("i", b1), ("i", b2), ("i", iform), ("i", fct)),
+                 line(("r", p1[0]), ("r", p1[1]), ("r", p1[2])),
+                 line(("r", p2[0]), ("r", p2[1]), ("r", p2[2])),
+                 line(("r", x0), ("r", kd)),
+                 line(("r", a), ("r", b), ("r", c))]
+        if fr is not None or xr is not None:
+            lines.append(line(("r", fr), ("r", xr)))
+        self.add(f"/COUPLING/SPRING/{cid}", *lines, title=title)
+
+    def catenary(self, cid, b1, p1, b2, p2, lambda0, leq, d, title="catenary"):
+        """/COUPLING/CATENARY: bodies (0 = fixed point), points, lambda0 [kg/m], L_eq [m], D [N/m]."""
+        self.add(f"/COUPLING/CATENARY/{cid}", line(("i", b1), ("i", b2)),
+                 line(("r", p1[0]), ("r", p1[1]), ("r", p1[2])),
+                 line(("r", p2[0]), ("r", p2[1]), ("r", p2[2])),
+                 line(("r", lambda0), ("r", leq), ("r", d)), title=title)
+
     def run(self, tend, dtout):
         self.add("/RUN", line(("r", tend), ("r", dtout)))
 

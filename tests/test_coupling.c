@@ -1,0 +1,582 @@
+/*
+ * Coupling tests (SPEC 8): the cards and their input errors, the compiled
+ * model, the spring forms against each other and against the integral of
+ * the stiffness table, the catenary solver (equations of SPEC 8 in their
+ * (c, u1, u2) form, every regime, warm against cold starts, the
+ * implicit-function derivatives against finite differences of the solver,
+ * the vertical limit, a failure that is recoverable), and the whole
+ * Jacobian of a model with every coupling kind against central finite
+ * differences of the right-hand side.
+ *
+ * Decks are written from strings into a private temporary directory
+ * (removed at the end of the suite), in comma format except where the
+ * fixed columns are under test.
+ */
+#include "harness.h"
+#include "case.h"
+#include "case_coupling.h"
+#include "coupling.h"
+#include "error.h"
+#include "model.h"
+
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+/* ---- decks in a temporary directory -------------------------------------- */
+static char tdir[64];
+static int ndeck;
+
+/* Write `text` as a new deck file; returns its path (static buffer). */
+static const char *deck(const char *text)
+{
+    static char path[128];
+    if (!tdir[0]) {
+        snprintf(tdir, sizeof tdir, "/tmp/rc_cpl_test_XXXXXX");
+        if (!mkdtemp(tdir)) { perror("mkdtemp"); exit(1); }
+    }
+    snprintf(path, sizeof path, "%s/deck%03d.rad", tdir, ndeck++);
+    FILE *f = fopen(path, "w");
+    if (!f || fputs(text, f) < 0 || fclose(f) != 0) { perror(path); exit(1); }
+    return path;
+}
+
+static void cleanup(void)
+{
+    char path[128];
+    for (int k = 0; k < ndeck; k++) {
+        snprintf(path, sizeof path, "%s/deck%03d.rad", tdir, k);
+        remove(path);
+    }
+    if (tdir[0]) rmdir(tdir);
+    tdir[0] = '\0';
+    ndeck = 0;
+}
+
+/* Load (and compile when `compile`) a deck; expect RC_EINPUT at `line` of
+ * the deck with every needle in the message (NULL-terminated). */
+static int expect_error(const char *text, int compile, int line, ...)
+{
+    const char *path = deck(text);
+    rc_case *c = NULL;
+    rc_model *m = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    rc_status st = rc_case_load(path, &c, &e);
+    if (compile && st == RC_OK) st = rc_model_compile(c, &m, &e);
+    int bad = st != RC_EINPUT;
+    char where[160];
+    snprintf(where, sizeof where, "%s:%d:", path, line);
+    if (line > 0 && !strstr(e.msg, where)) bad++;
+    va_list ap;
+    va_start(ap, line);
+    for (const char *s; (s = va_arg(ap, const char *));)
+        if (!strstr(e.msg, s)) {
+            fprintf(stderr, "  missing \"%s\"\n", s);
+            bad++;
+        }
+    va_end(ap);
+    if (bad) fprintf(stderr, "  status %d, expected %d at %s; message: %s\n", st, RC_EINPUT, where, e.msg);
+    rc_model_free(m);
+    rc_case_free(c);
+    return bad;
+}
+#define EXPECT_ERROR(text, compile, line, ...) \
+    ENSURE(expect_error((text), (compile), (line), __VA_ARGS__, (const char *)NULL) == 0)
+
+static rc_model *compile_deck(const char *text)
+{
+    rc_case *c = NULL;
+    rc_model *m = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    if (rc_case_load(deck(text), &c, &e) == RC_OK) rc_model_compile(c, &m, &e);
+    if (!m) fprintf(stderr, "  unexpected error: %s\n", e.msg);
+    rc_case_free(c);
+    return m;
+}
+
+/* ---- the model used by most tests ------------------------------------------ */
+/* Two free bodies (full inertia), a fixed body, gravity; springs of every
+ * form (form 4 with and without the reference force), catenaries slack,
+ * taut, body-body, body-space and body-fixed body. */
+static const char model_deck[] =
+    "/NODE\n"
+    "1, 0.31, -0.17, 0.23\n"
+    "2, 1.41, 0.27, -0.12\n"
+    "3, 3.0, 0.0, 1.0\n"
+    "/RBODY/1\nbody one\n1,,,,1.3\n0.021,0.017,0.029\n0.0013,-0.0022,0.0007\n"
+    "/RBODY/2\nbody two\n2,,,,0.7\n0.011,0.013,0.009\n0,0,0\n"
+    "/RBODY/3\nfixed body\n3,,,,2.0\n0.1,0.1,0.1\n0,0,0\n"
+    "/GRNOD/NODE/1\nfixed\n3\n"
+    "/BCS/1\nfix\n111 111,0,1\n"
+    "/GRAV/1\ngravity\n0,Z,0,0,0,1,-9.81\n"
+    "/FUNCT/5\nforce f_e(x)\n0,-40\n0.5,-9\n1.0,0\n1.6,23\n2.5,90\n"
+    "/FUNCT/6\nstiffness k(x)\n0,10\n1,35\n2,20\n3,80\n"
+    "/COUPLING/SPRING/11\nconstant\n1,0,1,0\n0.35,-0.12,0.27\n-0.9,0.4,1.1\n1.21,3.7\n143.0\n"
+    "/COUPLING/SPRING/12\npolynomial\n1,2,2,0\n0.29,-0.2,0.2\n1.45,0.31,-0.1\n,2.9\n97.0,-31.0,410.0\n"
+    "/COUPLING/SPRING/13\nforce table\n2,0,3,5\n1.38,0.22,-0.15\n2.2,-0.7,0.9\n,1.3\n"
+    "/COUPLING/SPRING/14\nstiffness table\n1,2,4,6\n0.33,-0.15,0.21\n1.4,0.29,-0.09\n0.9,0.7\n"
+    "/COUPLING/SPRING/15\nstiffness table, reference\n2,3,4,6\n1.39,0.25,-0.11\n3.05,0.02,1.01\n0.1,0.4\n,,\n17.0,1.9\n"
+    "/COUPLING/CATENARY/21\nslack to space\n0,1\n-2.0,0.3,1.0\n0.3,-0.16,0.25\n1.7,3.4,2.0e4\n"
+    "/COUPLING/CATENARY/22\ntaut body-body\n1,2\n0.32,-0.18,0.2\n1.43,0.25,-0.1\n0.9,1.2,3.0e3\n"
+    "/COUPLING/CATENARY/23\nslack to fixed body\n2,3\n1.42,0.26,-0.13\n2.97,0.05,0.97\n0.5,2.3,5.0e4\n"
+    "/RUN\n0.5,0.01\n";
+
+/* ---- cards ------------------------------------------------------------------ */
+static void test_coupling_cards_read(void)
+{
+    /* one card in fixed columns, the rest in comma format */
+    static const char text[] =
+        "/NODE\n1, 0, 0, 0\n2, 1, 0, 0\n"
+        "/RBODY/1\nb\n1,,,,1\n1,1,1\n0,0,0\n/RBODY/2\nb\n2,,,,1\n1,1,1\n0,0,0\n"
+        "/FUNCT/9\nk\n0,1\n1,2\n"
+        "/COUPLING/SPRING/4\nfixed columns\n"
+        "         1         2         4         9\n"
+        "              0.0125                -0.5                 1.5\n"
+        "                1.25                 0.5                   2\n"
+        "                 1.1                 2.5\n"
+        "\n"
+        "                  -3                 0.9\n"
+        "/COUPLING/CATENARY/5\nline\n0,2\n0,0,3\n1,0,0\n0.25,4.5,1.5e5\n"
+        "/COUPLING/SPRING/6\nblank x0\n1,0,,\n0,0,0\n0,0,-2\n,\n"
+        "/RUN\n1\n";
+    rc_case *c = NULL;
+    rc_error e;
+    ENSURE(rc_case_load(deck(text), &c, &e) == RC_OK);
+    if (!c) return;
+    ENSURE(c->ncoupling == 3);
+    if (c->ncoupling == 3) {
+        const rc_case_coupling *s = &c->coupling[0], *k = &c->coupling[1], *d = &c->coupling[2];
+        ENSURE(s->id == 4 && s->kind == RC_CASE_CPL_SPRING && strcmp(s->title, "fixed columns") == 0);
+        ENSURE(s->rbody[0] == 1 && s->rbody[1] == 2 && s->iform == 4 && s->fct_id == 9);
+        ENSURE(s->p[0][0] == 0.0125 && s->p[0][1] == -0.5 && s->p[0][2] == 1.5);
+        ENSURE(s->p[1][0] == 1.25 && s->p[1][1] == 0.5 && s->p[1][2] == 2);
+        ENSURE(s->x0 == 1.1 && s->x0_given && s->kd == 2.5 && s->a == 0 && s->b == 0 && s->c == 0);
+        ENSURE(s->fr == -3 && s->xr == 0.9 && s->ref_given);
+        ENSURE(k->id == 5 && k->kind == RC_CASE_CPL_CATENARY && k->rbody[0] == 0 && k->rbody[1] == 2);
+        ENSURE(k->lambda0 == 0.25 && k->leq == 4.5 && k->d == 1.5e5 && k->p[0][2] == 3);
+        ENSURE(d->iform == 1 && !d->x0_given && d->kd == 0 && d->a == 0 && !d->ref_given);
+    }
+    rc_case_free(c);
+}
+
+static void test_coupling_card_errors(void)
+{
+    /* a valid prefix: two bodies, gravity, a function; the card under test
+     * starts at line 15 */
+#define PRE "/NODE\n1,0,0,0\n2,1,0,0\n/RBODY/1\nb\n1,,,,1\n1,1,1\n0,0,0\n/RUN\n1\n/FUNCT/9\nk\n0,1\n1,2\n"
+    /* header */
+    EXPECT_ERROR(PRE "/COUPLING/1\nt\n", 0, 15, "card /COUPLING/1", "missing subtype",
+                 "/COUPLING/SPRING", "/COUPLING/CATENARY");
+    EXPECT_ERROR(PRE "/COUPLING/ROPE/1\nt\n", 0, 15, "/COUPLING/ROPE", "not supported yet");
+    EXPECT_ERROR(PRE "/COUPLING/SPRING\nt\n1,0\n0,0,0\n1,0,0\n,\n", 0, 15, "field cpl_ID",
+                 "expected a positive integer id");
+    EXPECT_ERROR(PRE "/COUPLING/SPRING/3/2\nt\n1,0\n0,0,0\n1,0,0\n,\n", 0, 15, "field unit_ID",
+                 "not supported yet");
+    /* lines */
+    EXPECT_ERROR(PRE "/COUPLING/SPRING/3\nt\n1,0\n0,0,0\n1,0,0\n", 0, 15, "card /COUPLING/SPRING/3",
+                 "expected", "X0 Kd");
+    EXPECT_ERROR(PRE "/COUPLING/CATENARY/3\nt\n1,0\n0,0,0\n1,0,0\n1,1,1\n1\n", 0, 21,
+                 "card /COUPLING/CATENARY/3", "unexpected");
+    /* fields */
+    EXPECT_ERROR(PRE "/COUPLING/SPRING/3\nt\n1,0,5\n0,0,0\n1,0,0\n,\n", 0, 17, "field Iform",
+                 "expected an integer in {1, 2, 3, 4}, got \"5\"");
+    EXPECT_ERROR(PRE "/COUPLING/SPRING/3\nt\n1,0,3\n0,0,0\n1,0,0\n,\n", 0, 17, "field fct_ID",
+                 "expected the id of a /FUNCT", "Iform = 3");
+    EXPECT_ERROR(PRE "/COUPLING/SPRING/3\nt\n0,0\n0,0,0\n1,0,0\n,\n", 0, 17, "field rbody_ID1 rbody_ID2",
+                 "at least one rigid body");
+    EXPECT_ERROR(PRE "/COUPLING/SPRING/3\nt\n1,1\n0,0,0\n1,0,0\n,\n", 0, 17, "field rbody_ID2",
+                 "a body other than rbody_ID1 = 1");
+    EXPECT_ERROR(PRE "/COUPLING/SPRING/3\nt\n-1,0\n0,0,0\n1,0,0\n,\n", 0, 17, "field rbody_ID1",
+                 "non-negative integer");
+    EXPECT_ERROR(PRE "/COUPLING/SPRING/3\nt\n1,0\n0.5,0,1\n0.5,0,1\n,\n", 0, 19, "field X2 Y2 Z2",
+                 "different from point 1");
+    EXPECT_ERROR(PRE "/COUPLING/SPRING/3\nt\n1,0\n0,0,0\nx,0,0\n,\n", 0, 19, "field X2",
+                 "expected a finite real number, got \"x\"");
+    EXPECT_ERROR(PRE "/COUPLING/SPRING/3\nt\n1,0\n0,0,0\n1,0,0\n-1,\n", 0, 20, "field X0",
+                 "non-negative real number, got \"-1\"");
+    EXPECT_ERROR(PRE "/COUPLING/SPRING/3\nt\n1,0\n0,0,0\n1,0,0\n,-2\n", 0, 20, "field Kd",
+                 "non-negative real number");
+    EXPECT_ERROR(PRE "/COUPLING/SPRING/3\nt\n1,0\n0,0,0\n1,0,0\n,\n-100\n", 0, 21, "field A",
+                 "non-negative stiffness k [N/m] for Iform = 1");
+    EXPECT_ERROR(PRE "/COUPLING/SPRING/3\nt\n1,0,2\n0,0,0\n1,0,0\n,\n1,2,3\n4,0.5\n", 0, 22, "field X_r",
+                 "belongs to Iform = 4");
+    EXPECT_ERROR(PRE "/COUPLING/SPRING/3\nt\n1,0,4,9\n0,0,0\n1,0,0\n,\n\n4\n", 0, 22, "field X_r",
+                 "expected the reference distance X_r", "got blank");
+    EXPECT_ERROR(PRE "/COUPLING/CATENARY/3\nt\n1,0\n0,0,0\n1,0,0\n0,1,1\n", 0, 20, "field Lambda0",
+                 "positive real number");
+    EXPECT_ERROR(PRE "/COUPLING/CATENARY/3\nt\n1,0\n0,0,0\n1,0,0\n1,-1,1\n", 0, 20, "field L_eq",
+                 "positive real number");
+    EXPECT_ERROR(PRE "/COUPLING/CATENARY/3\nt\n1,0\n0,0,0\n1,0,0\n1,1\n", 0, 20, "field D",
+                 "positive real number, got blank");
+    /* duplicate ids across both kinds */
+    EXPECT_ERROR(PRE "/COUPLING/SPRING/3\nt\n1,0\n0,0,0\n1,0,0\n,\n/COUPLING/CATENARY/3\nt\n1,0\n0,0,0\n1,0,0\n1,1,1\n",
+                 0, 21, "field cpl_ID", "duplicate id 3");
+    /* references and gravity, found by the compiler */
+    EXPECT_ERROR(PRE "/COUPLING/SPRING/3\nt\n1,7\n0,0,0\n1,0,0\n,\n", 1, 17, "card /COUPLING/SPRING/3",
+                 "field rbody_ID2", "got 7 (no such body)");
+    EXPECT_ERROR(PRE "/COUPLING/SPRING/3\nt\n1,0,3,8\n0,0,0\n1,0,0\n,\n", 1, 17, "field fct_ID",
+                 "got 8 (no such function)");
+    EXPECT_ERROR(PRE "/COUPLING/CATENARY/3\nt\n1,0\n0,0,0\n1,0,0\n1,1,1\n", 1, 15, "card /COUPLING/CATENARY/3",
+                 "hangs in gravity", "grnod_ID 0");
+    EXPECT_ERROR(PRE "/GRNOD/NODE/1\ng\n1\n/GRAV/1\ng\n0,Z,0,0,1,1,-9.81\n"
+                     "/COUPLING/CATENARY/3\nt\n1,0\n0,0,0\n1,0,0\n1,1,1\n",
+                 1, 21, "card /COUPLING/CATENARY/3", "hangs in gravity");
+#undef PRE
+}
+
+/* ---- compiled model ---------------------------------------------------------- */
+static void test_coupling_compile_model(void)
+{
+    rc_model *m = compile_deck(model_deck);
+    if (!m) return;
+    const rc_couplings *p = m->cpl;
+    ENSURE(p->n == 8);
+    /* energy states follow everything else, two per coupling */
+    for (int k = 0; k < p->n; k++) ENSURE(p->eadr[k] == 2 * RC_NB + RC_CE * k);
+    ENSURE(m->ny == 2 * RC_NB + RC_CE * p->n);
+    /* attachment points in the body frames; space and fixed bodies */
+    ENSURE(p->b1[0] == 0 && p->b2[0] == -1);
+    ENSURE_NEAR(p->s1[0], 0.35 - 0.31, 0, 1e-15);
+    ENSURE_NEAR(p->s2[2], 1.1, 0, 0);
+    ENSURE(p->b1[4] == 1 && p->b2[4] == 2 && m->body_yadr[2] < 0);
+    ENSURE_NEAR(p->s2[3 * 4], 3.05 - 3.0, 0, 1e-15);
+    /* blank x0: the initial distance; form 4 reference */
+    const double d12 = sqrt(pow(1.45 - 0.29, 2) + pow(0.31 + 0.2, 2) + pow(-0.1 - 0.2, 2));
+    ENSURE_NEAR(p->x0[1], d12, 1e-15, 0);
+    ENSURE(p->form[3] == RC_KEFF_STIFF && p->fref[3] == 0 && p->xref[3] == 0.9);
+    ENSURE(p->fref[4] == 17.0 && p->xref[4] == 1.9);
+    ENSURE(p->kind[5] == RC_CPL_CATENARY && p->ea[5] == 2.0e4 * 3.4 && p->lambda0[5] == 1.7);
+    ENSURE(p->grav[2] == -9.81 && p->grav[0] == 0);
+    ENSURE(strcmp(p->name[7], "/COUPLING/CATENARY/23") == 0);
+    rc_model_free(m);
+}
+
+/* ---- spring laws ------------------------------------------------------------- */
+/* Form 4's GSL cumulative integral and its runtime evaluation against the
+ * exact trapezoid integral of the table (table.c), inside and outside the
+ * table's range; f_e' = k. */
+static void test_coupling_stiffness_integral(void)
+{
+    rc_model *m = compile_deck(model_deck);
+    if (!m) return;
+    const rc_couplings *p = m->cpl;
+    const rc_table *t = &m->table[p->table[3]];
+    double maxerr = 0;
+    for (double x = -0.7; x < 4.2; x += 0.0373) {
+        double f, df, k, dk;
+        rc_cpl_stiff_force(p, t, 3, x, &f, &df);
+        maxerr = fmax(maxerr, fabs(f - rc_table_integral(t, 0.9, x)));
+        rc_table_eval(t, x, &k, &dk);
+        ENSURE(df == k);
+        rc_cpl_stiff_force(p, t, 4, x, &f, &df);
+        maxerr = fmax(maxerr, fabs(f - 17.0 - rc_table_integral(t, 1.9, x)));
+    }
+    printf("    stiffness integral: max |GSL - trapezoid| = %.2e N\n", maxerr);
+    ENSURE(maxerr < 1e-12);
+    rc_model_free(m);
+}
+
+/* All forms give f = k_eff(x)(x - x0): the polynomial against the formula,
+ * the tabulated force at and away from its zero (no 0/0 at x = x0). */
+static void test_coupling_spring_forms(void)
+{
+    static const char text[] =
+        "/NODE\n1, 1.3, 0, 0\n/RBODY/1\nb\n1,,,,2\n1,1,1\n0,0,0\n"
+        "/FUNCT/5\nf_e\n0,-7\n1,0\n2,13\n"
+        "/COUPLING/SPRING/1\np\n0,1,2\n0,0,0\n1.3,0,0\n1.0,0\n3,5,7\n"
+        "/COUPLING/SPRING/2\nf\n0,1,3,5\n0,0,0\n1.3,0,0\n1.0,0\n"
+        "/RUN\n1\n";
+    rc_model *m = compile_deck(text);
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    double y[64], f[64];
+    rc_initial_state(m, y);
+    for (double x = 0.4; x < 2.6; x += 0.3) {
+        y[0] = x; /* both springs along x from the origin */
+        rc_cpl_report r[2];
+        for (int k = 0; k < 2; k++) ENSURE(rc_cpl_report_eval(m, d, k, 0, y, &r[k]) == 0);
+        const double e = x - 1.0;
+        ENSURE_NEAR(r[0].force, (3 + 5 * e + 7 * e * e) * e, 1e-14, 1e-14);
+        ENSURE_NEAR(r[1].force, e < 0 ? 7 * e : 13 * e, 1e-14, 1e-14);
+        ENSURE_NEAR(r[0].f1[0], r[0].force, 1e-15, 0);
+        ENSURE_NEAR(r[0].f2[0], -r[0].force, 1e-15, 0);
+    }
+    /* at x = x0: zero force, finite slope */
+    y[0] = 1.0;
+    ENSURE(rc_assemble_rhs(m, d, 0, y, f) == 0);
+    ENSURE(f[7] == 0 && isfinite(f[7]));
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
+/* ---- catenary solver ------------------------------------------------------------ */
+/* A one-line coupling table for calling the solver directly. */
+typedef struct {
+    rc_couplings p;
+    double leq, ea;
+} one_line;
+
+static void one_line_init(one_line *o, double leq, double ea)
+{
+    memset(o, 0, sizeof *o);
+    o->leq = leq;
+    o->ea = ea;
+    o->p.n = 1;
+    o->p.leq = &o->leq;
+    o->p.ea = &o->ea;
+}
+
+/* Residual of SPEC 8's equations in (c, u1, u2) for a solution (relative
+ * to L_eq): x(u2) - x(u1) = X, y(u2) - y(u1) = Y, c = w L/(sinh u2 - sinh u1). */
+static double spec_residual(const rc_cat_sol *s, double leq, double ea)
+{
+    const double c = s->H, u1 = asinh(s->V1 / c), u2 = asinh(s->V2 / c);
+    const double a = c / s->w, b = c * a / ea;
+    const double X = a * (u2 - u1) + b * (sinh(u2) - sinh(u1));
+    const double Y = a * (cosh(u2) - cosh(u1)) + 0.5 * b * (sinh(u2) * sinh(u2) - sinh(u1) * sinh(u1));
+    const double C = s->w * leq / (sinh(u2) - sinh(u1));
+    return fmax(fabs(X - s->X), fmax(fabs(Y - s->Y), fabs(C - c) / c * leq)) / leq;
+}
+
+/* Spans covering the regimes: slack with the vertex inside, ends above or
+ * below the vertex, nearly taut, taut and stretched, steep, soft. */
+static const double spans[][4] = {
+    /* X, Y, L_eq, EA/(w L) */
+    {3.0, 0.4, 5.0, 2e3},   {3.0, -1.7, 5.0, 2e3},  {1.0, 4.6, 5.0, 2e3},   {2.0, -4.5, 5.0, 2e3},
+    {4.98, 0.1, 5.0, 2e3},  {5.2, 0.3, 5.0, 2e3},   {3.0, 4.2, 5.0, 2e3},   {0.05, 3.0, 5.0, 2e3},
+    {3.0, 0.4, 5.0, 0.8},   {6.0, -2.0, 5.0, 3.0},  {3.0, 0.4, 5.0, 1e9},   {0.3, -0.2, 5.0, 50.0},
+};
+
+static void test_coupling_catenary_solutions(void)
+{
+    void *ws = rc_cat_ws_new();
+    ENSURE(ws != NULL);
+    const double w = 13.7;
+    double worst = 0;
+    int maxit = 0;
+    for (size_t i = 0; i < sizeof spans / sizeof spans[0]; i++) {
+        one_line o;
+        one_line_init(&o, spans[i][2], spans[i][3] * w * spans[i][2]);
+        rc_cat_sol cold, warm;
+        double start[2] = {NAN, NAN};
+        ENSURE(rc_cat_solve(&o.p, 0, ws, start, spans[i][0], spans[i][1], w, &cold) == 0);
+        worst = fmax(worst, spec_residual(&cold, o.leq, o.ea));
+        /* vertical balance: the ends carry the weight */
+        ENSURE_NEAR(cold.V2 - cold.V1, w * o.leq, 1e-14, 0);
+        /* from the warm start of a neighbouring span (as between two
+         * right-hand sides), then back */
+        ENSURE(rc_cat_solve(&o.p, 0, ws, start, spans[i][0] * 1.0001, spans[i][1] + 1e-4, w, &warm) == 0);
+        ENSURE(rc_cat_solve(&o.p, 0, ws, start, spans[i][0], spans[i][1], w, &warm) == 0);
+        maxit = warm.iter > maxit ? warm.iter : maxit;
+        /* the result does not depend on the start: the right-hand side
+         * is a pure function of the state */
+        ENSURE(warm.H == cold.H && warm.V1 == cold.V1 && warm.dH[0] == cold.dH[0]);
+        worst = fmax(worst, spec_residual(&warm, o.leq, o.ea));
+    }
+    printf("    catenary: max residual of the (c, u1, u2) equations %.2e L_eq, warm start <= %d iterations\n",
+           worst, maxit);
+    ENSURE(worst < 1e-12);
+    ENSURE(maxit <= 3);
+    rc_cat_ws_free(ws);
+}
+
+/* d(H, V1)/d(X, Y) from the implicit-function theorem against central
+ * differences of the solver. */
+static void test_coupling_catenary_ift_matches_finite_differences(void)
+{
+    void *ws = rc_cat_ws_new();
+    const double w = 9.3;
+    double worst = 0;
+    for (size_t i = 0; i < sizeof spans / sizeof spans[0]; i++) {
+        one_line o;
+        one_line_init(&o, spans[i][2], spans[i][3] * w * spans[i][2]);
+        rc_cat_sol s, a, b;
+        double start[2] = {NAN, NAN};
+        const double X = spans[i][0], Y = spans[i][1];
+        ENSURE(rc_cat_solve(&o.p, 0, ws, start, X, Y, w, &s) == 0);
+        const double scale = fmax(fabs(s.H), fabs(s.V1)) / o.leq + fabs(s.dH[0]) + fabs(s.dV1[1]);
+        for (int j = 0; j < 2; j++) {
+            const double hs = 1e-6 * o.leq;
+            ENSURE(rc_cat_solve(&o.p, 0, ws, start, X + (j == 0) * hs, Y + (j == 1) * hs, w, &a) == 0);
+            ENSURE(rc_cat_solve(&o.p, 0, ws, start, X - (j == 0) * hs, Y - (j == 1) * hs, w, &b) == 0);
+            const double dH = (a.H - b.H) / (2 * hs), dV = (a.V1 - b.V1) / (2 * hs);
+            worst = fmax(worst, fmax(fabs(dH - s.dH[j]), fabs(dV - s.dV1[j])) / scale);
+        }
+    }
+    printf("    catenary IFT: max scaled |d(H,V1)/d(X,Y) - FD| = %.2e\n", worst);
+    ENSURE(worst < 1e-6);
+    rc_cat_ws_free(ws);
+}
+
+/* Vertical limit: the closed form at X = 0 continues the general solution
+ * (tensions and transverse stiffness H/X), on the three branches. */
+static void test_coupling_catenary_vertical_limit(void)
+{
+    const double w = 7.1, L = 2.0, Ys[3] = {2.3, -2.2, 0.9};
+    one_line o;
+    one_line_init(&o, L, 40.0 * w * L);
+    for (int i = 0; i < 3; i++) {
+        rc_cat_sol v, g;
+        double start[2] = {NAN, NAN};
+        ENSURE(rc_cat_solve(&o.p, 0, NULL, start, 0.0, Ys[i], w, &v) == 0);
+        ENSURE(v.vertical == 1 && v.H == 0);
+        ENSURE(rc_cat_solve(&o.p, 0, NULL, start, 1e-7 * L, Ys[i], w, &g) == 0);
+        ENSURE(g.vertical == 0);
+        ENSURE_NEAR(g.V1, v.V1, 1e-5, 1e-9 * w * L);
+        ENSURE_NEAR(g.dV1[1], v.dV1[1], 1e-5, 0);
+        if (i < 2) ENSURE_NEAR(g.H / g.X, v.kappa, 1e-4, 0); /* taut: H = kappa X */
+        else ENSURE(v.kappa == 0 && g.H / g.X < 0.1 * w);     /* folded: H ~ X / log(1/X) */
+    }
+    /* taut straight line: Y = L + (T1 + w L/2) L/EA with T1 = V1 */
+    rc_cat_sol v;
+    double start[2] = {NAN, NAN};
+    rc_cat_solve(&o.p, 0, NULL, start, 0.0, 2.3, w, &v);
+    ENSURE_NEAR(2.3, L + (v.V1 + 0.5 * w * L) * L / o.ea, 1e-14, 0);
+}
+
+/* Taut limit: as the line is pulled far beyond its length the tension
+ * tends to the straight elastic line's, EA (chord/L_eq - 1), along the
+ * chord (the weight is a relative correction of order w L/T). */
+static void test_coupling_catenary_taut_limit(void)
+{
+    const double w = 2.0, L = 10.0, ea = 1e7;
+    one_line o;
+    one_line_init(&o, L, ea);
+    rc_cat_sol s;
+    double start[2] = {NAN, NAN};
+    const double X = 10.5 * 0.8, Y = 10.5 * 0.6; /* chord 10.5 */
+    ENSURE(rc_cat_solve(&o.p, 0, NULL, start, X, Y, w, &s) == 0);
+    const double T = ea * (10.5 / L - 1.0), Tmid = hypot(s.H, 0.5 * (s.V1 + s.V2));
+    ENSURE_NEAR(Tmid, T, 2 * w * L / T, 0);
+    ENSURE_NEAR(s.H / (0.5 * (s.V1 + s.V2)), X / Y, 1e-5, 0);
+}
+
+/* A span the solver cannot take (non-finite) is a recoverable failure. */
+static void test_coupling_catenary_failure_is_recoverable(void)
+{
+    one_line o;
+    one_line_init(&o, 1.0, 1e3);
+    rc_cat_sol s;
+    double start[2] = {NAN, NAN};
+    ENSURE(rc_cat_solve(&o.p, 0, NULL, start, NAN, 0.5, 9.81, &s) == 1);
+    ENSURE(rc_cat_solve(&o.p, 0, NULL, start, 1.0, 0.5, 0.0, &s) == 1);
+    /* in the right-hand side: status 1 and the coupling named */
+    rc_model *m = compile_deck(model_deck);
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double)), *f = calloc((size_t)m->ny, sizeof(double));
+    rc_initial_state(m, y);
+    ENSURE(rc_assemble_rhs(m, d, 0, y, f) == 0);
+    y[0] = NAN;
+    ENSURE(rc_assemble_rhs(m, d, 0, y, f) == 1);
+    ENSURE(d->cpl->fail >= 0);
+    free(y);
+    free(f);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
+/* ---- whole Jacobian ---------------------------------------------------------- */
+/* Bodies moved, turned (non-unit quaternions) and set moving. */
+static void entropy_state(const rc_model *m, double *y)
+{
+    static const double s[26] = {0.3371, -0.1513, 0.2611, 0.93, 0.11, -0.27, 0.19, 0.31, -0.23, -1.17, 3.1, -2.3, 4.7,
+                                 1.3913, 0.3107, -0.0913, 0.97, -0.05, 0.21, 0.08, -0.41, 0.17, 0.53, -1.9, 0.7, 2.2};
+    rc_initial_state(m, y);
+    for (int b = 0; b < 2; b++) memcpy(y + m->body_yadr[b], s + 13 * b, 13 * sizeof(double));
+}
+
+static void test_coupling_jacobian_matches_finite_differences(void)
+{
+    rc_model *m = compile_deck(model_deck);
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    const int n = m->ny;
+    double *y = calloc((size_t)n, sizeof(double)), *f1 = calloc((size_t)n, sizeof(double));
+    double *f2 = calloc((size_t)n, sizeof(double)), *val = calloc((size_t)m->nnz, sizeof(double));
+    entropy_state(m, y);
+    const double t = 0.0137;
+    ENSURE(rc_assemble_jac(m, d, t, y, val) == 0);
+    int bad = 0, outside = 0;
+    double maxerr = 0;
+    for (int col = 0; col < n; col++) {
+        const double h = 1e-6 * fmax(fabs(y[col]), 1.0), keep = y[col];
+        y[col] = keep + h;
+        ENSURE(rc_assemble_rhs(m, d, t, y, f1) == 0);
+        y[col] = keep - h;
+        ENSURE(rc_assemble_rhs(m, d, t, y, f2) == 0);
+        y[col] = keep;
+        double scale = 1.0;
+        for (int r = 0; r < n; r++) scale = fmax(scale, fabs((f1[r] - f2[r]) / (2 * h)));
+        for (int r = 0; r < n; r++) {
+            double fd = (f1[r] - f2[r]) / (2 * h), an = 0;
+            int64_t k;
+            for (k = m->jac_colptr[col]; k < m->jac_colptr[col + 1]; k++)
+                if (m->jac_rowind[k] == r) break;
+            if (k < m->jac_colptr[col + 1]) an = val[k];
+            else if (fabs(fd) > 1e-9 * scale) {
+                outside++;
+                fprintf(stderr, "    outside the pattern: row %d, col %d, FD %.3e\n", r, col, fd);
+            }
+            const double er = fabs(an - fd) / scale;
+            maxerr = fmax(maxerr, er);
+            if (er > 1e-6) bad++;
+        }
+    }
+    printf("    coupling jacobian: %d states, %lld nonzeros, max scaled |J - FD| = %.2e\n", n, (long long)m->nnz,
+           maxerr);
+    ENSURE(bad == 0);
+    ENSURE(outside == 0);
+    free(y);
+    free(f1);
+    free(f2);
+    free(val);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
+/* Energy ledger of a short run of the model (about 15 J exchanged between
+ * motion, springs, dampers and lines): the couplings' stored and dissipated
+ * energies close the balance, to a residual that shrinks with rtol. */
+static void test_coupling_energy_ledger_closes(void)
+{
+    char text[sizeof model_deck + 256];
+    double res[2];
+    for (int i = 0; i < 2; i++) {
+        const double rtol = i ? 1e-10 : 1e-8;
+        snprintf(text, sizeof text, "%s/SOLVER\n1,5,100000,%g,0,0\n%g,1e-9,%g,%g\n%g\n", model_deck, rtol,
+                 1e-3 * rtol, rtol, rtol, 1e-2 * rtol);
+        rc_model *m = compile_deck(text);
+        if (!m) return;
+        rc_run_options opt = {0};
+        rc_stats st;
+        rc_error e;
+        ENSURE(rc_run(m, &opt, &st, &e) == RC_OK);
+        res[i] = fabs(st.energy_residual);
+        rc_model_free(m);
+    }
+    printf("    energy residual after 0.5 s: %.2e J (rtol 1e-8), %.2e J (rtol 1e-10)\n", res[0], res[1]);
+    ENSURE(res[0] < 1e-5);
+    ENSURE(res[1] < 0.1 * res[0]);
+}
+
+void suite_coupling(void);
+void suite_coupling(void)
+{
+    RUN_TEST(test_coupling_cards_read);
+    RUN_TEST(test_coupling_card_errors);
+    RUN_TEST(test_coupling_compile_model);
+    RUN_TEST(test_coupling_stiffness_integral);
+    RUN_TEST(test_coupling_spring_forms);
+    RUN_TEST(test_coupling_catenary_solutions);
+    RUN_TEST(test_coupling_catenary_ift_matches_finite_differences);
+    RUN_TEST(test_coupling_catenary_vertical_limit);
+    RUN_TEST(test_coupling_catenary_taut_limit);
+    RUN_TEST(test_coupling_catenary_failure_is_recoverable);
+    RUN_TEST(test_coupling_jacobian_matches_finite_differences);
+    RUN_TEST(test_coupling_energy_ledger_closes);
+    cleanup();
+}

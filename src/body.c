@@ -21,7 +21,7 @@ void rc_gravity(const rc_model *m, int b, double t, double g[3])
 /* Elastic energy stored in interface i: what the bodies would recover by
  * unloading it completely along the law (Iform 0: the load curve; Iform 1, 2:
  * the Stiff line down to the unload curve or zero, then the unload curve). */
-static double stored_energy(const rc_model *m, const rc_data *d, int i, double t, const double *y)
+double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double t, const double *y)
 {
     const int mode = d->inter_mode[i];
     if (mode != RC_MODE_CLOSED && mode != RC_MODE_RELEASED) return 0.0;
@@ -69,7 +69,7 @@ void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, d
     for (int i = 0; i < m->ninter; i++) {
         e[RC_E_WORK] += y[m->inter_eadr[i]];
         e[RC_E_DAMP] += y[m->inter_eadr[i] + 1];
-        const double en = stored_energy(m, d, i, t, y);
+        const double en = rc_inter_stored_energy(m, d, i, t, y);
         e[RC_E_STORED] += en;
         e[RC_E_HYST] += y[m->inter_eadr[i]] - en;
         /* friction: work, and the elastic energy of the stick spring */

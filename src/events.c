@@ -127,6 +127,10 @@ static void classify(const rc_model *m, rc_data *d, int i, double t, double *y, 
     d->inter_mode[i] = RC_MODE_CLOSED;
     report(m, d, i, t, y, &r);
     if (!(r.fn > 0)) d->inter_mode[i] = RC_MODE_RELEASED;
+    /* the elastic energy found in the contact at activation enters the
+     * ledger as contact work (so the hysteresis dissipation starts at 0) */
+    double *w = y + m->inter_eadr[i];
+    set_state(w, *w + rc_inter_stored_energy(m, d, i, t, y), changed);
 }
 
 void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y)

@@ -88,9 +88,8 @@ static int cb_proj(realtype t, N_Vector ycur, N_Vector corr, realtype eps, N_Vec
 
 /* ---- helpers ----------------------------------------------------------- */
 /* Only the crossing that changes a mode is a root (docs/theory.md 5). */
-static int set_root_directions(const rc_model *m, const rc_data *d, void *cv, int *dir)
+static void root_directions(const rc_model *m, const rc_data *d, int *dir)
 {
-    if (m->ninter == 0) return CV_SUCCESS;
     for (int i = 0; i < m->ninter; i++) {
         int *r = dir + RC_ROOTS_PER_INTER * i;
         const int mode = d->inter_mode[i], br = d->inter_branch[i];
@@ -104,7 +103,71 @@ static int set_root_directions(const rc_model *m, const rc_data *d, void *cv, in
         r[RC_ROOT_TRK_B] = -1;                                    /* offset used up */
         r[RC_ROOT_SLIP] = 1;                                      /* limit reached / sliding stops */
     }
+}
+
+static int set_root_directions(const rc_model *m, const rc_data *d, void *cv, int *dir)
+{
+    if (m->ninter == 0) return CV_SUCCESS;
+    root_directions(m, d, dir);
     return CVodeSetRootDirection(cv, dir);
+}
+
+/* Look-ahead step for roots on zero, as a fraction of the output interval,
+ * and its bounds [s]: small against the dynamics, large enough that two
+ * steps move a position by more than its rounding under gravity. */
+#define RC_LOOKAHEAD_FRAC 1e-5
+#define RC_LOOKAHEAD_MIN 1e-12
+#define RC_LOOKAHEAD_MAX 1e-5
+/* Rounds of look-ahead transitions after one event (each may enable more). */
+#define RC_LOOKAHEAD_ROUNDS 8
+
+/* Roots exactly on zero. CVODE deactivates a root function that is exactly
+ * zero at the start or after an event until it moves away, and never reports
+ * that departure, even when it is the crossing that should switch a mode (a
+ * body touching at rest under gravity, a force starting at zero). So ricochet
+ * probes each such function two explicit Euler steps ahead (second order:
+ * a position at rest moves by delta^2 a) and, when it leaves zero in its
+ * triggering direction, applies the transition now. Returns the number of
+ * transitions; *jumped is set when history states were reset. */
+static int resolve_zero_roots(const rc_model *m, rc_data *d, double t, double *y, double dtout, double *g,
+                              double *g2, int *dir, int *roots, double *y1, double *f, rc_output *out,
+                              long *nevents, int *jumped, rc_status *st, rc_error *err)
+{
+    double dl = fmin(fmax(RC_LOOKAHEAD_FRAC * dtout, RC_LOOKAHEAD_MIN), RC_LOOKAHEAD_MAX);
+    const int nr = RC_ROOTS_PER_INTER * m->ninter;
+    int total = 0;
+    *st = RC_OK;
+    for (int round = 0; round < RC_LOOKAHEAD_ROUNDS; round++) {
+        rc_assemble_roots(m, d, t, y, g);
+        int any = 0;
+        for (int k = 0; k < nr; k++) any |= g[k] == 0.0;
+        if (!any) break;
+        /* y1 = y + dl f(y); y2 = y1 + dl f(y1), written into y1 */
+        if (rc_assemble_rhs(m, d, t, y, f)) break;
+        for (int k = 0; k < m->ny; k++) y1[k] = y[k] + dl * f[k];
+        if (rc_assemble_rhs(m, d, t + dl, y1, f)) break;
+        for (int k = 0; k < m->ny; k++) y1[k] += dl * f[k];
+        rc_assemble_roots(m, d, t + 2 * dl, y1, g2);
+        root_directions(m, d, dir);
+        int hit = 0;
+        for (int k = 0; k < nr; k++) {
+            roots[k] = 0;
+            if (g[k] == 0.0 && g2[k] != 0.0 && (dir[k] == 0 || dir[k] * g2[k] > 0)) {
+                roots[k] = g2[k] > 0 ? 1 : -1;
+                hit = 1;
+            }
+        }
+        if (!hit) break;
+        rc_event ev[RC_MAX_EV];
+        int jmp = 0, nev = rc_events_apply(m, d, t, y, roots, ev, RC_MAX_EV, &jmp);
+        *jumped |= jmp;
+        total += nev;
+        *nevents += nev;
+        for (int k = 0; k < nev && k < RC_MAX_EV && out; k++)
+            if ((*st = rc_output_event(out, t, ev[k].kind, m->inter_name[ev[k].inter], err))) return total;
+        if (nev == 0) break;
+    }
+    return total;
 }
 
 /* A root function exactly zero at the event state (flat to rounding, e.g. a
@@ -306,7 +369,7 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     SUNContext ctx = NULL;
     N_Vector y = NULL, av = NULL, f0 = NULL, f1 = NULL, ytn = NULL;
     int *old_mode = NULL, *old_branch = NULL, *old_track = NULL, *old_slip = NULL, *rootdir = NULL;
-    double *gbuf = NULL;
+    double *gbuf = NULL, *g2buf = NULL, *ylook = NULL, *flook = NULL;
     SUNMatrix A = NULL;
     SUNLinearSolver LS = NULL;
     void *cv = NULL;
@@ -341,10 +404,13 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     old_slip = calloc((size_t)m->ninter + 1, sizeof(int));
     rootdir = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(int));
     gbuf = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(double));
+    g2buf = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(double));
+    ylook = calloc((size_t)m->ny, sizeof(double));
+    flook = calloc((size_t)m->ny, sizeof(double));
     A = SUNSparseMatrix(m->ny, m->ny, m->nnz, CSC_MAT, ctx);
     roots = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(int));
     if (!y || !av || !f0 || !f1 || !ytn || !old_mode || !old_branch || !old_track || !old_slip || !rootdir || !gbuf || !A ||
-        !roots) {
+        !roots || !g2buf || !ylook || !flook) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the solver");
         goto done;
     }
@@ -359,6 +425,13 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     memcpy(N_VGetArrayPointer(av), m->atol, (size_t)m->ny * sizeof(double));
     double t = 0.0;
     rc_modes_init(m, d, t, yd);
+    if ((st = open_output(m, opt ? opt->output_path : NULL, &out, err))) goto done;
+    {
+        int jmp = 0;
+        resolve_zero_roots(m, d, t, yd, m->dtout, gbuf, g2buf, rootdir, roots, ylook, flook, out, &s.events, &jmp,
+                           &st, err);
+        if (st) goto done;
+    }
 
     cv = CVodeCreate(CV_BDF, ctx);
     if (!cv) {
@@ -380,7 +453,6 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     CVCHECK(CVodeSetNoInactiveRootWarn(cv), "CVodeSetNoInactiveRootWarn");
     CVCHECK(set_root_directions(m, d, cv, rootdir), "CVodeSetRootDirection");
 
-    if ((st = open_output(m, opt ? opt->output_path : NULL, &out, err))) goto done;
     double e0[RC_NENERGY];
     rc_energy(m, d, t, yd, e0);
     if ((st = write_frame(m, d, out, &fb, t, yd, 0, err))) goto done;
@@ -411,6 +483,10 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
             s.events += nev;
             for (int k = 0; k < nev && k < RC_MAX_EV && out; k++)
                 if ((st = rc_output_event(out, t, ev[k].kind, m->inter_name[ev[k].inter], err))) goto done;
+            /* roots left exactly on zero that leave it the triggering way */
+            nev += resolve_zero_roots(m, d, t, yd, m->dtout, gbuf, g2buf, rootdir, roots, ylook, flook, out,
+                                      &s.events, &jumped, &st, err);
+            if (st) goto done;
             if (nev > 0) CVCHECK(set_root_directions(m, d, cv, rootdir), "CVodeSetRootDirection");
             if (jumped || (nev > 0 && needs_restart(m, d, cv, old_mode, old_branch, old_track, old_slip, t, yd, ytn, f0, f1)) ||
                 root_on_zero(m, d, t, yd, gbuf)) {
@@ -470,6 +546,9 @@ done:
     free(old_slip);
     free(rootdir);
     free(gbuf);
+    free(g2buf);
+    free(ylook);
+    free(flook);
     SUNContext_Free(&ctx);
     free(roots);
     frame_free(&fb);

@@ -246,6 +246,8 @@ enum {
     RC_E_CPL_ELASTIC, RC_E_CPL_DAMP, RC_E_CATENARY, RC_E_TOTAL, RC_NENERGY
 };
 void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, double e[RC_NENERGY]);
+/* Normal elastic energy stored in interface i (recoverable by unloading) [J]. */
+double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double t, const double *y);
 
 /* Dense block of an element (body e, or interface e in the given modes) at
  * (t, y), row-major over its rc_jblock rows and columns (assemble_jac.c). */

@@ -1,0 +1,158 @@
+"""Sliding block stopped by Coulomb friction (TYPE6 Fric only) on a floor.
+
+A sphere with locked rotations (a "block") rests on a plane at its static
+penetration under gravity and is launched horizontally at v0. Reference
+(README.md): the rigid Coulomb result x_stop = v0^2 / (2 mu g),
+t_stop = v0 / (mu g), and the exact solution of ricochet's elastic-plastic
+friction law (stick spring K_t, then sliding at F_lim = mu m g), which only
+adds the stick onset: x_stop = v0^2/(2 mu g) + F_lim/(2 K_t).
+The stopping point is the record written at the first fric_stick event.
+"""
+import math
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
+import rcval  # noqa: E402
+from deck import Deck  # noqa: E402
+
+M, R, K, G, MU, V0 = 1.0, 0.05, 1.0e6, 9.81, 0.3, 1.0
+BAND = 1e-6  # stick -> slip at |F_t| = (1 + BAND) F_lim (RC_SLIP_BAND, src/model.h; docs/theory.md)
+VISC = 2.0 * 0.5 * math.sqrt(K * M)  # normal damping ratio 0.5: a quiet normal direction
+
+
+def coulomb():
+    """Rigid Coulomb block: stopping distance and time."""
+    return V0**2 / (2 * MU * G), V0 / (MU * G)
+
+
+def elastic_plastic(kt, v0=V0):
+    """Exact solution of ricochet's law: stick with m x'' = -K_t x from x = 0,
+    x' = v0 until K_t x = (1 + BAND) F_lim (slip), then m v' = -F_lim until
+    v = 0. Returns slip time, stop time, stop distance, stored tangential
+    energy at the stop."""
+    flim = MU * M * G
+    fs = (1 + BAND) * flim
+    w = math.sqrt(kt / M)
+    t1 = math.asin(fs / (M * w * v0)) / w
+    x1 = fs / kt
+    v1 = math.sqrt(v0**2 - fs**2 / (kt * M))
+    a = flim / M
+    return t1, t1 + v1 / a, x1 + v1**2 / (2 * a), 0.5 * flim**2 / kt
+
+
+def deck(rtol=1e-6, atol_pos=1e-9, atol_vel=1e-6, atol_energy=1e-6, stiff=None, angle=0.0, tend=0.4):
+    """angle: direction of the launch in the floor plane (degrees from x)."""
+    z0 = R - M * G / K  # static penetration m g / k
+    c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
+    d = Deck("block sliding to a stop (TYPE6 Fric)")
+    d.funct(1, [0.0, 1.0], [0.0, K], title="linear load curve k = 1e6 N/m")
+    d.nodes([(1, 0.0, 0.0, z0)])
+    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, grnod=1, title="block 1 kg")
+    d.sphere(1, 1, (0.0, 0.0, z0), R)
+    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0")
+    d.grnod(1, [1])
+    d.add("/BCS/1", f"{'000 111':>10s}{0:>10d}{1:>10d}", title="no rotation")
+    d.inivel(1, (V0 * c, V0 * s, 0.0), 1)
+    d.grav(1, "Z", -G, 1)
+    d.type6(1, 1, 2, 1, visc=VISC, fric=MU, stiff=stiff, title="Coulomb friction mu = 0.3")
+    d.run(tend, 0.01)
+    d.solver(rtol=rtol, atol_pos=atol_pos, atol_vel=atol_vel, atol_energy=atol_energy)
+    return d
+
+
+def measure(r, direction=(1.0, 0.0)):
+    """First fric_slip and fric_stick times; position along and across the
+    launch direction, speed and energies at the fric_stick record."""
+    t_slip = r.events("fric_slip")
+    t_stick = r.events("fric_stick")
+    i = r.state_at(t_stick[0])
+    ux, uy = direction
+    p = r.pos[i, 0]
+    return dict(t_slip=t_slip[0], t_stop=t_stick[0], x=p[0] * ux + p[1] * uy, y=-p[0] * uy + p[1] * ux,
+                z=p[2], v=np.linalg.norm(r.vel[i, 0]), efric=r.energy["energy_friction"][i],
+                wfric=r.energy["energy_friction_work"][i], ekin=r.energy["energy_kinetic"][i],
+                etot=r.energy["energy_total"], i=i, before=[k for t, k in zip(r.ev_t, r.ev_kind) if t <= t_stick[0]])
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    x_c, t_c = coulomb()
+
+    # 1. default solver tolerances, against the rigid Coulomb block
+    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    q = measure(r)
+    rcval.check("fric_slide_stop.events", q["before"] == ["fric_slip", "fric_stick"],
+                f"events up to the stop: {q['before']} (expected fric_slip at the stick onset, then fric_stick)")
+    e = rcval.rel(q["x"], x_c)
+    rcval.check("fric_slide_stop.distance", e < 1e-4,
+                f"x_stop = {q['x']:.9f} m, v0^2/(2 mu g) = {x_c:.9f} m, rel. error {e:.2e} (< 1e-4)")
+    e = rcval.rel(q["t_stop"], t_c)
+    rcval.check("fric_slide_stop.time", e < 1e-4,
+                f"t_stop = {q['t_stop']:.9f} s, v0/(mu g) = {t_c:.9f} s, rel. error {e:.2e} (< 1e-4)")
+    rcval.check("fric_slide_stop.at_rest", q["v"] < 1e-6,
+                f"|v| at the fric_stick record = {q['v']:.2e} m/s (< 1e-6)")
+
+    # 2. tight tolerances, against the exact solution of the elastic-plastic law
+    t1, t2, x2, est = elastic_plastic(K)
+    r = rcval.Result(rcval.run(deck(1e-10, 1e-13, 1e-10, 1e-10, tend=1.0)))
+    q = measure(r)
+    e = max(rcval.rel(q["x"], x2), rcval.rel(q["t_stop"], t2))
+    rcval.check("fric_slide_stop.exact_law", e < 1e-8,
+                f"x_stop = {q['x']:.12f} m (exact {x2:.12f}), t_stop = {q['t_stop']:.12f} s (exact {t2:.12f}), "
+                f"max rel. error {e:.2e} (< 1e-8); rigid Coulomb differs by {rcval.rel(x2, x_c):.2e}")
+    e = abs(q["t_slip"] - t1)
+    rcval.check("fric_slide_stop.slip_onset", e < 1e-12,
+                f"fric_slip at {q['t_slip']:.6e} s, K_t = {K:g}: asin((1 + 1e-6) F_lim/(m w v0))/w = {t1:.6e} s, "
+                f"error {e:.1e} s (< 1e-12)")
+    ediss = 0.5 * M * V0**2 - est
+    e = max(abs(q["efric"] - ediss), abs(q["wfric"] - 0.5 * M * V0**2)) / (0.5 * M * V0**2)
+    rcval.check("fric_slide_stop.energy", e < 1e-8,
+                f"at the stop: friction work {q['wfric']:.12f} J (1/2 m v0^2 = {0.5 * M * V0**2:.12f}), dissipated "
+                f"{q['efric']:.12f} J (1/2 m v0^2 - F_lim^2/(2 K_t) = {ediss:.12f}); max rel. error {e:.2e} (< 1e-8)")
+    drift = np.max(np.abs(q["etot"] - q["etot"][0])) / (0.5 * M * V0**2)
+    rcval.check("fric_slide_stop.ledger", drift < 1e-7,
+                f"max |energy_total - E0| / (1/2 m v0^2) = {drift:.2e} over the run, ringing included (< 1e-7)")
+
+    # after the stop the undamped stick spring rings: F_t swings between -F_lim
+    # and +F_lim, the block between x_stop - 2 F_lim/K_t and x_stop (the model;
+    # no further slip in exact arithmetic, and none at these tolerances)
+    after = r.t >= q["t_stop"]
+    dx = r.pos[after, 0, 0] - q["x"]
+    amp = 2 * MU * M * G / K
+    n_slip = len(r.events("fric_slip"))
+    ok = n_slip == 1 and dx.max() < 1e-12 and -amp * (1 + 1e-6) < dx.min() < -0.99 * amp
+    rcval.check("fric_slide_stop.ringing", ok,
+                f"{r.t[-1] - q['t_stop']:.2f} s after the stop: x - x_stop in [{dx.min():.6e}, {dx.max():.1e}] m, "
+                f"model [-2 F_lim/K_t, 0] = [{-amp:.6e}, 0] (sampled: reaches below -0.99 of it); "
+                f"fric_slip events in the run {n_slip} (expected 1)")
+
+    # 3. Stiff given: the stick spring is K_t = Stiff (the onset term is 150 times larger)
+    kt = 1.0e4
+    t1, t2, x2, est = elastic_plastic(kt)
+    q = measure(rcval.Result(rcval.run(deck(1e-10, 1e-13, 1e-10, 1e-10, stiff=kt))))
+    e = max(rcval.rel(q["x"], x2), rcval.rel(q["t_stop"], t2), abs(q["t_slip"] - t1) / t1)
+    rcval.check("fric_slide_stop.stiff", e < 1e-8,
+                f"Stiff = {kt:g}: x_stop = {q['x']:.12f} m (exact {x2:.12f}), t_stop = {q['t_stop']:.12f} s "
+                f"(exact {t2:.12f}), t_slip = {q['t_slip']:.9e} s (exact {t1:.9e}); max rel. error {e:.2e} (< 1e-8); "
+                f"F_lim/(2 Stiff) = {x2 - x_c:.3e} m")
+
+    # 4. launched obliquely in the floor plane: same stop along the launch line, none across it
+    ang = 35.0
+    u = (math.cos(math.radians(ang)), math.sin(math.radians(ang)))
+    t1, t2, x2, est = elastic_plastic(K)
+    q = measure(rcval.Result(rcval.run(deck(1e-10, 1e-13, 1e-10, 1e-10, angle=ang))), u)
+    e = max(rcval.rel(q["x"], x2), rcval.rel(q["t_stop"], t2))
+    rcval.check("fric_slide_stop.oblique", e < 1e-8 and abs(q["y"]) < 1e-12,
+                f"launched at {ang:g} deg: along {q['x']:.12f} m (exact {x2:.12f}), across {q['y']:.1e} m (< 1e-12), "
+                f"t_stop {q['t_stop']:.12f} s (exact {t2:.12f}); max rel. error {e:.2e} (< 1e-8)")
+    rcval.finish()
+
+
+if __name__ == "__main__":
+    if "--write-case" in sys.argv:
+        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
+    else:
+        main()

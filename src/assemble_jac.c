@@ -100,6 +100,14 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
         }
     /* couplings (coupling_jac.inc) */
     if (rc_cpl_jac(m, d, t, y, val)) return 1;
+    /* potential of a time-varying gravity: d/dv of -m g(t).v */
+    if (m->gwork_adr >= 0)
+        for (int b = 0; b < m->nbody; b++) {
+            if (m->body_yadr[b] < 0) continue;
+            double g[3];
+            rc_gravity(m, b, t, g);
+            for (int k = 0; k < 3; k++) val[m->gwork_slot[3 * b + k]] -= m->body_mass[b] * g[k];
+        }
     /* held DOFs: their rows are zero */
     if (m->nheld > 0)
         for (int64_t k = 0; k < m->nnz; k++)

@@ -47,6 +47,18 @@ int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, do
     }
     /* couplings (coupling_rhs.inc) */
     if (rc_cpl_rhs(m, d, t, y, ydot)) return 1;
+    /* potential of a time-varying gravity: E' = -sum m g(t).v */
+    if (m->gwork_adr >= 0) {
+        double w = 0;
+        for (int b = 0; b < m->nbody; b++) {
+            if (m->body_yadr[b] < 0) continue;
+            double g[3];
+            const double *v = y + m->body_yadr[b] + 7;
+            rc_gravity(m, b, t, g);
+            w -= m->body_mass[b] * (g[0] * v[0] + g[1] * v[1] + g[2] * v[2]);
+        }
+        ydot[m->gwork_adr] = w;
+    }
     /* held DOFs (/BCS): the support takes whatever force acts */
     for (int k = 0; k < m->nheld; k++) ydot[m->held[k]] = 0.0;
     return 0;

@@ -66,6 +66,7 @@ void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, d
         e[RC_E_KIN] += 0.5 * m->body_mass[b] * (s[7] * s[7] + s[8] * s[8] + s[9] * s[9]) + 0.5 * rot;
         e[RC_E_POT] -= m->body_mass[b] * (g[0] * s[0] + g[1] * s[1] + g[2] * s[2]);
     }
+    if (m->gwork_adr >= 0) e[RC_E_POT] = y[m->gwork_adr]; /* time-varying gravity */
     for (int i = 0; i < m->ninter; i++) {
         e[RC_E_WORK] += y[m->inter_eadr[i]];
         e[RC_E_DAMP] += y[m->inter_eadr[i] + 1];
@@ -102,4 +103,13 @@ void rc_initial_state(const rc_model *m, double *y)
     memset(y, 0, (size_t)m->ny * sizeof(double));
     for (int b = 0; b < m->nbody; b++)
         if (m->body_yadr[b] >= 0) memcpy(y + m->body_yadr[b], m->body_y0 + RC_NB * b, RC_NB * sizeof(double));
+    /* time-varying gravity: its potential starts at -sum m g(0).x0 */
+    if (m->gwork_adr >= 0)
+        for (int b = 0; b < m->nbody; b++) {
+            if (m->body_yadr[b] < 0) continue;
+            double g[3];
+            const double *x = y + m->body_yadr[b];
+            rc_gravity(m, b, 0.0, g);
+            y[m->gwork_adr] -= m->body_mass[b] * (g[0] * x[0] + g[1] * x[1] + g[2] * x[2]);
+        }
 }

@@ -400,6 +400,8 @@ static rc_status layout(rc_model *m, rc_error *err)
         ny += ns;
     }
     ny = rc_cpl_layout(m, ny);
+    /* a gravity that varies in time has no potential: integrate its work */
+    m->gwork_adr = m->grav_table >= 0 ? ny++ : -1;
     m->ny = ny;
     /* rows of held DOFs (accelerations set to zero), for rhs and Jacobian */
     m->nheld = 0;
@@ -414,6 +416,7 @@ static rc_status layout(rc_model *m, rc_error *err)
     if (ny == 0) RC_RAISE(err, RC_EINPUT, "%s: the case has nothing to integrate (no free body)", m->case_path);
     m->atol = malloc((size_t)ny * sizeof(double));
     if (!m->atol) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    if (m->gwork_adr >= 0) m->atol[m->gwork_adr] = m->atol_energy;
     for (int b = 0; b < m->nbody; b++) {
         if (m->body_yadr[b] < 0) continue;
         double *a = m->atol + m->body_yadr[b];
@@ -575,7 +578,7 @@ void rc_model_free(rc_model *m)
                       m->inter_fct_ul, m->inter_iform, m->inter_icor, m->inter_inacti, m->inter_stiff,
                       m->inter_fscaleul, m->inter_ns, m->inter_hidx, m->inter_oidx, m->inter_tidx,
                       m->inter_sfric, m->inter_fric, m->inter_fct_ff, m->inter_fct_fv, m->inter_kt,
-                      m->inter_name, m->atol, m->held, m->row_held};
+                      m->inter_name, m->atol, m->held, m->row_held, m->gwork_slot};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     free(m);
 }

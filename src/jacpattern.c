@@ -189,6 +189,7 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
     }
     rc_status pst = probe_blocks(m, err);
     if (pst) return pst;
+    if (m->gwork_adr >= 0) nkey += 3 * (int64_t)m->nbody;
     int64_t *key = malloc((size_t)nkey * sizeof(int64_t));
     if (!key) RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
     int64_t n = 0;
@@ -200,6 +201,11 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
             for (int c = 0; c < jb->ncol; c++)
                 if (jb->slot[r * jb->ncol + c] >= 0) key[n++] = (int64_t)jb->cols[c] * ny + jb->rows[r];
     }
+    /* potential of a time-varying gravity: its row against all velocities */
+    if (m->gwork_adr >= 0)
+        for (int b = 0; b < m->nbody; b++)
+            for (int k = 0; k < 3 && m->body_yadr[b] >= 0; k++)
+                key[n++] = (int64_t)(m->body_yadr[b] + 7 + k) * ny + m->gwork_adr;
     /* sort, unique, split into CSC */
     qsort(key, (size_t)n, sizeof(int64_t), cmp_i64);
     int64_t u = 0;
@@ -221,6 +227,13 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
     for (int64_t c = 0; c < ny; c++) m->jac_colptr[c + 1] += m->jac_colptr[c];
     /* slots */
     for (int64_t k = 0; k < ny; k++) m->jac_diag[k] = find_slot(m, (int)k, (int)k);
+    if (m->gwork_adr >= 0) {
+        m->gwork_slot = calloc(3 * (size_t)m->nbody + 1, sizeof(int64_t));
+        if (!m->gwork_slot) RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
+        for (int b = 0; b < m->nbody; b++)
+            for (int k = 0; k < 3 && m->body_yadr[b] >= 0; k++)
+                m->gwork_slot[3 * b + k] = find_slot(m, m->gwork_adr, m->body_yadr[b] + 7 + k);
+    }
     for (int b = 0; b < m->nbody; b++) {
         rc_status st = fill_slots(m, &m->jb_body[b], err);
         if (st) return st;

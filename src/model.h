@@ -34,7 +34,7 @@
 #define RC_NE 2  /* energy states of an interface */
 /* Stick -> slip needs |F_t| > (1 + RC_SLIP_BAND) F_lim: an undamped stick
  * spring released from the limit rings back exactly to it, and a touch must
- * not count as a crossing (docs/theory.md 3.6) [-]. */
+ * not count as a crossing (docs/theory.md 3.5) [-]. */
 #define RC_SLIP_BAND 1e-6
 #define RC_NS_MAX 8 /* own states of an interface: energies, F_h, offset, F_t, W_fric */
 #define RC_JB_MAX ((2 * 6 + RC_NS_MAX) * (2 * RC_NB + RC_NS_MAX)) /* largest dense block */
@@ -108,6 +108,9 @@ struct rc_model {
     double ground_y0[RC_NB]; /* pose of "fixed in space" (identity, at rest) */
     int grav_table;      /* table index of the gravity time function, -1: constant */
     double grav_ascale;  /* [s] abscissa scale of the gravity function */
+    int gwork_adr;       /* state: potential energy of a time-varying gravity,
+                            E' = -sum m g(t).v [J]; -1 when gravity is constant */
+    int64_t *gwork_slot; /* [3*nbody] Jacobian slots (row gwork_adr, columns v) */
 
     /* analytic surfaces */
     int nsurf;

@@ -13,13 +13,14 @@
  * body 2 (sphere), a tilted plane fixed in space; sphere-plane and
  * sphere-sphere TYPE6 with a nonlinear load curve, Visc and both damping
  * curves; gravity. */
-static rc_case_funct fn[6];
+static rc_case_funct fn[7];
 static double fx0[] = {-0.01, 0.0, 0.0013, 0.0041, 0.0097}, fy0[] = {-3.1e3, 0.0, 2.71e3, 1.37e4, 5.9e4};
 static double fx1[] = {-10.0, 0.0, 0.37, 3.3}, fy1[] = {-41.0, 0.0, 5.3, 71.0};   /* f_dv */
 static double fx2[] = {0.0, 500.0, 9e4}, fy2[] = {1.0, 0.83, 0.61};               /* f_df */
 static double fx3[] = {0.0, 0.002, 0.006, 0.011}, fy3[] = {0.0, 0.0, 5e3, 3.1e4};  /* f_ul */
 static double fx4[] = {0.0, 300.0, 4e4}, fy4[] = {1.0, 0.91, 0.77};                /* f_ff */
 static double fx5[] = {0.0, 0.3, 2.0, 9.0}, fy5[] = {1.2, 1.0, 0.83, 0.71};         /* f_fv */
+static double fx6[] = {0.0, 1.0}, fy6[] = {0.3, 1.7};                             /* gravity(t) */
 static rc_case_node nodes[2] = {{1, {0.0213, -0.0117, 0.0519}, {0}}, {2, {0.0371, 0.0093, 0.131}, {0}}};
 static rc_case_rbody rb[2];
 static rc_case_surf sf[3];
@@ -36,7 +37,8 @@ static void build_case(rc_case *c)
     fn[3] = (rc_case_funct){10, "ul", 4, fx3, fy3, {0}};
     fn[4] = (rc_case_funct){11, "ff", 3, fx4, fy4, {0}};
     fn[5] = (rc_case_funct){12, "fv", 4, fx5, fy5, {0}};
-    c->nfunct = 6;
+    fn[6] = (rc_case_funct){13, "g(t)", 2, fx6, fy6, {0}};
+    c->nfunct = 7;
     c->funct = fn;
     c->nnode = 2;
     c->node = nodes;
@@ -69,7 +71,7 @@ static void build_case(rc_case *c)
     t6[1].sfric = 2.1; t6[1].fric = 0.23;
     c->ntype6 = 2;
     c->type6 = t6;
-    gr = (rc_case_grav){.id = 1, .dir = 2, .ascale = 1.0, .fscale = -9.81};
+    gr = (rc_case_grav){.id = 1, .fct_id = 13, .dir = 2, .ascale = 1.0, .fscale = -9.81}; /* ramped */
     c->ngrav = 1;
     c->grav = &gr;
     c->run = (rc_case_run){1, 0.01, 0.001, {0}};

@@ -44,6 +44,7 @@ typedef struct rc_couplings {
     int n;
     int *id;             /* [n] card id                                       */
     rc_cpl_kind *kind;   /* [n]                                               */
+    const char **type;   /* [n] "SPRING" or "CATENARY" (static strings)       */
     char **name;         /* [n] "/COUPLING/SPRING/<id>"                       */
     int *b1, *b2;        /* [n] body index of each end, -1: fixed in space    */
     double *s1, *s2;     /* [n*3] attachment points in the body frame (offset
@@ -153,5 +154,14 @@ int rc_cpl_dense_block(const rc_model *m, const rc_data *d, int k, double t, con
                        double *out);
 /* Add the coupling Jacobian blocks into the CSC values. */
 int rc_cpl_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val);
+
+/* ---- output ------------------------------------------------------------ */
+/* Values per coupling at (t, y) for one output record, into buf [8 n]:
+ * force [n], length [n], force on end 1 [3 n], force on end 2 [3 n]
+ * (rc_cpl_report; NaN for a catenary that cannot be solved). */
+void rc_cpl_frame(const rc_model *m, const rc_data *d, double t, const double *y, double *buf);
+/* Name of the coupling whose forces failed in the last right-hand side or
+ * Jacobian, NULL when none. */
+const char *rc_cpl_failed(const rc_model *m, const rc_data *d);
 
 #endif

@@ -52,6 +52,7 @@ static rc_status alloc_arrays(rc_couplings *p, int n)
     p->n = n;
     CPL_ALLOC(p->id, n);
     CPL_ALLOC(p->kind, n);
+    CPL_ALLOC(p->type, n);
     CPL_ALLOC(p->name, n);
     CPL_ALLOC(p->b1, n);
     CPL_ALLOC(p->b2, n);
@@ -86,6 +87,7 @@ static rc_status compile_one(const rc_case *c, rc_model *m, int k, rc_error *err
     strcpy(p->name[k], card);
     p->id[k] = cc->id;
     p->kind[k] = cc->kind == RC_CASE_CPL_SPRING ? RC_CPL_SPRING : RC_CPL_CATENARY;
+    p->type[k] = kind_name[cc->kind];
     p->table[k] = -1;
 
     /* ends: body (or space) and the point in the body frame */
@@ -193,7 +195,7 @@ void rc_cpl_free(rc_couplings *p)
         if (p->name) free(p->name[k]);
         if (p->cum) free(p->cum[k]);
     }
-    void *arrays[] = {p->id,  p->kind, p->name, p->b1,   p->b2,   p->s1,      p->s2,  p->eadr,
+    void *arrays[] = {p->id,  p->kind, (void *)p->type, p->name, p->b1,   p->b2,   p->s1,      p->s2,  p->eadr,
                       p->form, p->x0,  p->kd,   p->coef, p->table, p->fref,   p->xref, p->cum,
                       p->lambda0, p->leq, p->ea, p->jb};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
@@ -242,6 +244,26 @@ void rc_cpl_data_free(rc_cpl_data *cd)
     free(cd->warm);
     rc_cat_ws_free(cd->ws);
     free(cd);
+}
+
+void rc_cpl_frame(const rc_model *m, const rc_data *d, double t, const double *y, double *buf)
+{
+    const int n = m->cpl->n;
+    for (int k = 0; k < n; k++) {
+        rc_cpl_report r;
+        rc_cpl_report_eval(m, d, k, t, y, &r);
+        buf[k] = r.force;
+        buf[n + k] = r.length;
+        for (int i = 0; i < 3; i++) {
+            buf[2 * n + 3 * k + i] = r.f1[i];
+            buf[5 * n + 3 * k + i] = r.f2[i];
+        }
+    }
+}
+
+const char *rc_cpl_failed(const rc_model *m, const rc_data *d)
+{
+    return d->cpl->fail >= 0 ? m->cpl->name[d->cpl->fail] : NULL;
 }
 
 void rc_cpl_gravity(const rc_model *m, double t, double g[3])

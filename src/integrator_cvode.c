@@ -21,6 +21,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "coupling.h"
 #include "error.h"
 #include "events.h"
 #include "model.h"
@@ -208,11 +209,13 @@ typedef struct frame_buf {
     double *pos, *quat, *vel, *omega, *pen, *fload, *fdamp, *fn, *point, *normal;
     int *mode;
     double energy[RC_NENERGY];
+    double *cpl; /* [8 ncoupling] coupling values (rc_cpl_frame) */
 } frame_buf;
 
 static void frame_free(frame_buf *f)
 {
-    void *p[] = {f->pos, f->quat, f->vel, f->omega, f->pen, f->fload, f->fdamp, f->fn, f->point, f->normal, f->mode};
+    void *p[] = {f->pos, f->quat, f->vel, f->omega, f->pen, f->fload, f->fdamp, f->fn, f->point, f->normal, f->mode,
+                 f->cpl};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
 }
 
@@ -231,8 +234,9 @@ static int frame_alloc(const rc_model *m, frame_buf *f)
     f->point = malloc(3 * ni * sizeof(double));
     f->normal = malloc(3 * ni * sizeof(double));
     f->mode = malloc(ni * sizeof(int));
+    f->cpl = malloc((8 * (size_t)m->cpl->n + 1) * sizeof(double));
     return f->pos && f->quat && f->vel && f->omega && f->pen && f->fload && f->fdamp && f->fn && f->point &&
-           f->normal && f->mode;
+           f->normal && f->mode && f->cpl;
 }
 
 /* Fill and write one record at (t, y). */
@@ -264,8 +268,10 @@ static rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, 
     }
     rc_energy(m, d, t, y, f->energy);
     if (!o) return RC_OK;
+    const int nc = m->cpl->n;
+    rc_cpl_frame(m, d, t, y, f->cpl);
     rc_frame fr = {t, at_event, f->pos, f->quat, f->vel, f->omega, f->pen, f->fload, f->fdamp, f->fn, f->point,
-                   f->normal, f->mode, f->energy};
+                   f->normal, f->mode, f->energy, f->cpl, f->cpl + nc, f->cpl + 2 * nc, f->cpl + 5 * nc};
     return rc_output_frame(o, &fr, err);
 }
 
@@ -297,7 +303,8 @@ static rc_status open_output(const rc_model *m, const char *path, rc_output **o,
     rc_output_meta meta = {m->title, m->case_path, m->checksum, m->unit_mass, m->unit_length, m->unit_time,
                            "CVODE BDF, Newton, KLU sparse direct, rootfinding", m->rtol, m->atol_pos,
                            m->atol_quat, m->atol_vel, m->atol_omega, m->atol_energy, m->nbody, m->body_id,
-                           m->body_fixed, m->ninter, m->inter_id, types, RC_NENERGY, energy_name, energy_long};
+                           m->body_fixed, m->ninter, m->inter_id, types, RC_NENERGY, energy_name, energy_long,
+                           m->cpl->n, m->cpl->id, m->cpl->type};
     rc_status st = rc_output_open(o, path, &meta, err);
     free(types);
     return st;
@@ -463,9 +470,11 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     while (t < tend) {
         int flag = CVode(cv, tout, y, &t, CV_NORMAL);
         if (flag < 0) {
-            snprintf(reason, sizeof reason, "CVODE failed at t = %.9g s: %s%s%s", t, CVodeGetReturnFlagName(flag),
+            const char *cf = rc_cpl_failed(m, d);
+            snprintf(reason, sizeof reason, "CVODE failed at t = %.9g s: %s%s%s%s%s", t, CVodeGetReturnFlagName(flag),
                      d->fail_inter >= 0 ? "; non-finite force in " : "",
-                     d->fail_inter >= 0 ? m->inter_name[d->fail_inter] : "");
+                     d->fail_inter >= 0 ? m->inter_name[d->fail_inter] : "",
+                     cf ? "; no force from " : "", cf ? cf : "");
             fail_reason = reason;
             st = RC_SET(err, RC_ESOLVER, "%s", reason);
             break;

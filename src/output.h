@@ -28,6 +28,9 @@ typedef struct rc_output_meta {
     int nenergy;
     const char *const *energy_name;  /* [nenergy] variable names, e.g. "energy_kinetic" */
     const char *const *energy_long;  /* [nenergy] long names                */
+    int ncoupling;
+    const int *coupling_id;   /* [ncoupling] /COUPLING ids                 */
+    const char *const *coupling_type; /* [ncoupling] "SPRING" or "CATENARY" */
 } rc_output_meta;
 
 /* Interface modes as stored in the file (variable inter_mode). */
@@ -49,6 +52,11 @@ typedef struct rc_frame {
     const double *inter_normal;  /* [ninter*3] unit normal, global [-]      */
     const int *inter_mode;       /* [ninter] RC_OUT_MODE_*                  */
     const double *energy;        /* [nenergy] [J]                           */
+    const double *cpl_force;     /* [ncoupling] spring: f_e + f_damp (> 0 pulls
+                                    the ends together); catenary: tension at end 1 [N] */
+    const double *cpl_length;    /* [ncoupling] distance between the end points [m] */
+    const double *cpl_f1;        /* [ncoupling*3] force on end 1, global [N] */
+    const double *cpl_f2;        /* [ncoupling*3] force on end 2, global [N] */
 } rc_frame;
 
 /* Create the file (overwrites). RC_EIO with the path and netCDF message. */

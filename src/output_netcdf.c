@@ -42,8 +42,8 @@
 #define RC_OUT_UNIT_LEN 128
 
 /* Dimensions. */
-enum { D_TIME, D_BODY, D_INTER, D_VEC3, D_QUAT, D_EVENT, D_COUNT };
-static const char *const dim_name[D_COUNT] = {"time", "body", "inter", "vec3", "quat", "event"};
+enum { D_TIME, D_BODY, D_INTER, D_VEC3, D_QUAT, D_EVENT, D_COUPLING, D_COUNT };
+static const char *const dim_name[D_COUNT] = {"time", "body", "inter", "vec3", "quat", "event", "coupling"};
 
 /* Kinds of units; the strings are derived from the case's unit system. */
 enum { U_ONE, U_TIME, U_LENGTH, U_VELOCITY, U_ANGVEL, U_FORCE, U_ENERGY, U_COUNT };
@@ -55,6 +55,7 @@ enum {
     V_INTER_ID, V_INTER_TYPE, V_INTER_PEN, V_INTER_FLOAD, V_INTER_FDAMP, V_INTER_FNORMAL,
     V_INTER_POINT, V_INTER_NORMAL, V_INTER_MODE,
     V_EVENT_TIME, V_EVENT_KIND, V_EVENT_ELEMENT,
+    V_CPL_ID, V_CPL_TYPE, V_CPL_FORCE, V_CPL_LENGTH, V_CPL_F1, V_CPL_F2,
     V_COUNT
 };
 
@@ -107,6 +108,19 @@ static const var_spec var_table[V_COUNT] = {
                       "contact_close, contact_open, inter_start or inter_stop"},
     [V_EVENT_ELEMENT] = {"event_element", NC_STRING, 1, {D_EVENT}, U_ONE,
                          "element concerned by the event", "e.g. /INTER/TYPE6/3"},
+    [V_CPL_ID] = {"coupling_id", NC_INT, 1, {D_COUPLING}, U_ONE, "body coupling identifier (/COUPLING id)",
+                  NULL},
+    [V_CPL_TYPE] = {"coupling_type", NC_STRING, 1, {D_COUPLING}, U_ONE, "body coupling type",
+                    "SPRING or CATENARY"},
+    [V_CPL_FORCE] = {"coupling_force", NC_DOUBLE, 2, {D_TIME, D_COUPLING}, U_FORCE, "coupling force",
+                     "spring: elastic + damping force along the line, > 0 pulls the ends together; "
+                     "catenary: line tension at end 1"},
+    [V_CPL_LENGTH] = {"coupling_length", NC_DOUBLE, 2, {D_TIME, D_COUPLING}, U_LENGTH,
+                      "distance between the end points of the coupling", NULL},
+    [V_CPL_F1] = {"coupling_force_end1", NC_DOUBLE, 3, {D_TIME, D_COUPLING, D_VEC3}, U_FORCE,
+                  "force of the coupling on its end 1", "global frame"},
+    [V_CPL_F2] = {"coupling_force_end2", NC_DOUBLE, 3, {D_TIME, D_COUPLING, D_VEC3}, U_FORCE,
+                  "force of the coupling on its end 2", "global frame"},
 };
 
 struct rc_output {
@@ -247,7 +261,7 @@ static rc_status define_vars(rc_output *o, const rc_output_meta *meta, rc_error 
     rc_status rc = RC_OK;
     /* dimensions */
     for (int d = 0; d < D_COUNT; d++) {
-        if (d == D_INTER && meta->ninter == 0) continue;
+        if ((d == D_INTER && meta->ninter == 0) || (d == D_COUPLING && meta->ncoupling == 0)) continue;
         size_t len = (d == D_TIME || d == D_EVENT) ? NC_UNLIMITED : o->dimlen[d];
         NC_TRY(o->path, nc_def_dim(o->ncid, dim_name[d], len, &o->dimid[d]),
                "defining dimension %s", dim_name[d]);
@@ -257,6 +271,7 @@ static rc_status define_vars(rc_output *o, const rc_output_meta *meta, rc_error 
         const var_spec *s = &var_table[v];
         o->var[v] = -1;
         if (meta->ninter == 0 && var_uses_dim(v, D_INTER)) continue;
+        if (meta->ncoupling == 0 && var_uses_dim(v, D_COUPLING)) continue;
         rc = def_var(o, s->name, s->type, s->ndims, s->dim, o->unit[s->unit], s->long_name,
                      &o->var[v], err);
         if (rc == RC_OK && s->comment) rc = put_text(o, o->var[v], "comment", s->comment, err);
@@ -350,12 +365,21 @@ static rc_status write_static(rc_output *o, const rc_output_meta *meta, rc_error
            "writing body_id");
     NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_BODY_FIXED], meta->body_fixed),
            "writing body_fixed");
-    if (meta->ninter == 0) return RC_OK;
-    NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_INTER_ID], meta->inter_id),
-           "writing inter_id");
-    for (int i = 0; i < meta->ninter; i++) {
-        rc_status rc = put_string(o, V_INTER_TYPE, (size_t)i, meta->inter_type[i], err);
-        if (rc != RC_OK) return rc;
+    if (meta->ninter > 0) {
+        NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_INTER_ID], meta->inter_id),
+               "writing inter_id");
+        for (int i = 0; i < meta->ninter; i++) {
+            rc_status rc = put_string(o, V_INTER_TYPE, (size_t)i, meta->inter_type[i], err);
+            if (rc != RC_OK) return rc;
+        }
+    }
+    if (meta->ncoupling > 0) {
+        NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_CPL_ID], meta->coupling_id),
+               "writing coupling_id");
+        for (int k = 0; k < meta->ncoupling; k++) {
+            rc_status rc = put_string(o, V_CPL_TYPE, (size_t)k, meta->coupling_type[k], err);
+            if (rc != RC_OK) return rc;
+        }
     }
     return RC_OK;
 }
@@ -363,10 +387,12 @@ static rc_status write_static(rc_output *o, const rc_output_meta *meta, rc_error
 /* Check that the meta is usable: sizes and the arrays they announce. */
 static rc_status check_meta(const rc_output_meta *meta, rc_error *err)
 {
-    if (!meta || meta->nbody < 1 || meta->ninter < 0 || meta->nenergy < 0)
-        RC_RAISE(err, RC_EINTERNAL, "output: bad meta (needs nbody >= 1, ninter >= 0, nenergy >= 0)");
+    if (!meta || meta->nbody < 1 || meta->ninter < 0 || meta->nenergy < 0 || meta->ncoupling < 0)
+        RC_RAISE(err, RC_EINTERNAL,
+                 "output: bad meta (needs nbody >= 1, ninter >= 0, nenergy >= 0, ncoupling >= 0)");
     if (!meta->body_id || !meta->body_fixed ||
         (meta->ninter > 0 && (!meta->inter_id || !meta->inter_type)) ||
+        (meta->ncoupling > 0 && (!meta->coupling_id || !meta->coupling_type)) ||
         (meta->nenergy > 0 && (!meta->energy_name || !meta->energy_long)))
         RC_RAISE(err, RC_EINTERNAL, "output: meta array missing for a non-zero count");
     return RC_OK;
@@ -415,7 +441,7 @@ rc_status rc_output_open(rc_output **out, const char *path, const rc_output_meta
     }
     strcpy(o->path, path);
     o->nenergy = meta->nenergy;
-    const size_t len[D_COUNT] = {1, (size_t)meta->nbody, (size_t)meta->ninter, 3, 4, 1};
+    const size_t len[D_COUNT] = {1, (size_t)meta->nbody, (size_t)meta->ninter, 3, 4, 1, (size_t)meta->ncoupling};
     memcpy(o->dimlen, len, sizeof len);
     derive_units(o, meta);
 
@@ -472,6 +498,10 @@ rc_status rc_output_frame(rc_output *o, const rc_frame *f, rc_error *err)
         [V_INTER_POINT] = f->inter_point,
         [V_INTER_NORMAL] = f->inter_normal,
         [V_INTER_MODE] = f->inter_mode,
+        [V_CPL_FORCE] = f->cpl_force,
+        [V_CPL_LENGTH] = f->cpl_length,
+        [V_CPL_F1] = f->cpl_f1,
+        [V_CPL_F2] = f->cpl_f2,
     };
     rc_status rc = RC_OK;
     /* every defined time series of the table, then the energies */

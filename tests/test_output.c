@@ -94,7 +94,7 @@ static void make_frame(frame_buf *b, int k, int with_inter)
     b->mode[0] = k % 3;
     rc_frame f = {val(k, F_TIME, 0), k == 2, b->pos, b->quat, b->vel, b->omega,
                   b->pen, b->fload, b->fdamp, b->fnormal, b->point, b->normal, b->mode,
-                  b->energy};
+                  b->energy, NULL, NULL, NULL, NULL /* no couplings */};
     if (!with_inter) /* without interfaces the engine has nothing to hand over */
         f.inter_pen = f.inter_fload = f.inter_fdamp = f.inter_fnormal = f.inter_point =
             f.inter_normal = NULL, f.inter_mode = NULL;

@@ -85,7 +85,10 @@ void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int tr
     r->flim = o.flim;
     r->vslip = o.vslip;
     r->slip_root = o.slip_root;
-    for (int k = 0; k < 3; k++) r->ft[k] = o.ft[k];
+    for (int k = 0; k < 3; k++) {
+        r->ft[k] = o.ft[k];
+        r->fraw[k] = o.fraw[k];
+    }
     for (int k = 0; k < 3; k++) {
         r->point[k] = o.g.point[k];
         r->normal[k] = o.g.n[k];
@@ -104,7 +107,7 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         rc_inter_report r;
         rc_inter_report_eval(m, i, mode, br, trk, d->inter_slip[i], t, y, &r);
         /* friction: stick -> slip at the limit, slip -> stick when sliding stops */
-        if (mode == RC_MODE_CLOSED && m->inter_tidx[i] >= 0) gi[RC_ROOT_SLIP] = r.slip_root;
+        if (mode == RC_MODE_CLOSED && m->inter_fr[i].kind != RC_FK_NONE) gi[RC_ROOT_SLIP] = r.slip_root;
         /* zone: P (not while the Inacti offset tracks it, P = 0 there) */
         if (!trk) gi[RC_ROOT_ZONE] = r.p;
         /* total normal force, unclipped: release and re-close */

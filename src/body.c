@@ -74,15 +74,17 @@ void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, d
         e[RC_E_STORED] += en;
         e[RC_E_HYST] += y[m->inter_eadr[i]] - en;
         /* friction: work, and the elastic energy of the stick spring */
-        const int ti = m->inter_tidx[i];
-        if (ti < 0) continue;
-        const double *ft = y + m->inter_eadr[i] + ti;
-        const double et = d->inter_mode[i] == RC_MODE_CLOSED
-                              ? 0.5 * (ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2]) / m->inter_kt[i]
-                              : 0.0;
-        e[RC_E_FWORK] += ft[3];
+        const rc_fric *fr = &m->inter_fr[i];
+        if (fr->kind == RC_FK_NONE) continue;
+        const double *s = y + m->inter_eadr[i];
+        double et = 0;
+        if (fr->tidx >= 0 && d->inter_mode[i] == RC_MODE_CLOSED) {
+            const double *ft = s + fr->tidx;
+            et = 0.5 * (ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2]) / fr->kt;
+        }
+        e[RC_E_FWORK] += s[fr->widx];
         e[RC_E_STORED] += et;
-        e[RC_E_FRIC] += ft[3] - et;
+        e[RC_E_FRIC] += s[fr->widx] - et;
     }
     /* couplings: integrated work of the spring and line forces, dissipation */
     for (int k = 0; k < m->cpl->n; k++) {

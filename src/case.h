@@ -136,6 +136,81 @@ typedef struct rc_case_bcs {
     rc_loc loc;
 } rc_case_bcs;
 
+/* /PART/part_ID (ricochet's reading, docs/case-format.md): a part is a rigid
+ * body, or a named subset of its surfaces. Radioss's prop/mat/subset fields
+ * are read and ignored. */
+typedef struct rc_case_part {
+    int id;
+    char title[101];
+    int rbody_id;   /* body of the part (0: surfaces fixed in space)      */
+    int nsurf;
+    int *surf;      /* [nsurf] surface ids of the part; nsurf = 0: all the
+                       body's surfaces                                    */
+    rc_loc loc;
+    rc_loc line_loc;  /* line 2: rbody_ID and the first surface ids       */
+} rc_case_part;
+
+/* /GRPART/PART/grpart_ID: a list of part ids. */
+typedef struct rc_case_grpart {
+    int id;
+    char title[101];
+    int n;
+    int *parts;     /* [n] */
+    rc_loc loc;
+} rc_case_grpart;
+
+/* One coefficient set of /FRICTION (a direction of one pair, or the
+ * defaults): C1..C6, Fric, VISF. */
+typedef struct rc_case_fricset {
+    double c[6];    /* C1..C6, units per Ifric (docs) */
+    double fric;    /* Fric [-] */
+    double visf;    /* VISF [-], critical damping ratio of Iform 1 */
+} rc_case_fricset;
+
+/* A part-pair line group of /FRICTION. */
+typedef struct rc_case_fricpair {
+    int grpart1, grpart2;   /* part group ids (0: none) */
+    int part1, part2;       /* part ids (0: none) */
+    int idir;               /* 0 isotropic, 1 orthotropic (set[1] used) */
+    rc_case_fricset set[2]; /* direction 1, direction 2 */
+    rc_loc loc;             /* first line of the group */
+} rc_case_fricpair;
+
+/* /FRICTION/fric_ID. */
+typedef struct rc_case_friction {
+    int id;
+    char title[101];
+    int ifric;      /* 0 Coulomb, 1 generalised viscous, 2 Darmstad, 3 Renard */
+    int ifiltr;     /* 0..3 */
+    double xfreq;   /* filter coefficient/frequency (docs) */
+    int iform;      /* 1 viscous (0 means 1), 2 incremental stiffness */
+    double dt_ref;  /* ricochet extension: reference step of Ifiltr 1, 2 [s] (0: none) */
+    double area;    /* ricochet extension: contact area for the pressure [m^2] (0: default) */
+    rc_case_fricset def;    /* default coefficients */
+    int npair;
+    rc_case_fricpair *pair; /* [npair] */
+    rc_loc loc;
+    rc_loc line_loc[3];     /* the three lines of the header part */
+} rc_case_friction;
+
+/* /FRIC_ORIENT/id: direction 1 of orthotropic friction per part / group. */
+typedef struct rc_case_fricorient_item {
+    int grpart_id, part_id;
+    double v[3];    /* vector V, projected on the contact plane */
+    int skew_id;    /* 0 only */
+    double phi;     /* angle PHI from V about the normal [deg] */
+    int iorth;      /* Radioss Iorth (0 or 1), read */
+    rc_loc loc;
+} rc_case_fricorient_item;
+
+typedef struct rc_case_fricorient {
+    int id;
+    char title[101];
+    int n;
+    rc_case_fricorient_item *item; /* [n] */
+    rc_loc loc;
+} rc_case_fricorient;
+
 /* /RUN (ricochet): end time and output interval. */
 typedef struct rc_case_run {
     int present;
@@ -180,6 +255,10 @@ struct rc_case {
     int ngrav;   rc_case_grav *grav;
     int nbcs;    rc_case_bcs *bcs;
     int ncoupling; struct rc_case_coupling *coupling; /* case_coupling.h */
+    int npart;   rc_case_part *part;
+    int ngrpart; rc_case_grpart *grpart;
+    int nfriction; rc_case_friction *friction;
+    int nfricorient; rc_case_fricorient *fricorient;
     rc_case_run run;
     rc_case_solver solver;
 

@@ -353,16 +353,22 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     m->inter_fscaleul[i] = t6->fscaleul;
     /* Iform 2 has no unload curve (floor at zero); Iform 1 without one behaves as 2 */
     if (t6->iform == 2) m->inter_fct_ul[i] = -1;
-    /* friction: limit Sfric + Fric f_ff f_fv F_n, stick stiffness Stiff or,
-     * when not given, the steepest slope of the load curve */
-    if ((st = ref_funct(c, t6->fct_ff, t6->line_loc[2], card, "fct_IDff", &m->inter_fct_ff[i], err))) return st;
-    if ((st = ref_funct(c, t6->fct_fv, t6->line_loc[2], card, "fct_IDfv", &m->inter_fct_fv[i], err))) return st;
-    m->inter_sfric[i] = t6->sfric;
-    m->inter_fric[i] = t6->fric;
+    /* friction of the TYPE6 card itself: limit Sfric + Fric f_ff f_fv F_n,
+     * incremental, stick stiffness Stiff or, when not given, the steepest
+     * slope of the load curve (a /FRICTION card may override it) */
+    rc_fric *fr = &m->inter_fr[i];
+    fr->fct_ff = fr->fct_fv = -1;
+    fr->tidx = fr->fidx = fr->widx = fr->obody = -1;
+    if ((st = ref_funct(c, t6->fct_ff, t6->line_loc[2], card, "fct_IDff", &fr->fct_ff, err))) return st;
+    if ((st = ref_funct(c, t6->fct_fv, t6->line_loc[2], card, "fct_IDfv", &fr->fct_fv, err))) return st;
+    fr->sfric = t6->sfric;
+    fr->fric = t6->fric;
+    fr->kind = t6->sfric > 0 || t6->fric > 0 ? RC_FK_TYPE6 : RC_FK_NONE;
+    fr->form = RC_FF_INCREMENTAL;
     double at = 0;
-    m->inter_kt[i] = t6->stiff > 0 ? t6->stiff
-                                   : max_slope(&m->table[m->inter_fct_ld[i]], m->inter_fscaleld[i], m->inter_ascalex[i], &at);
-    if ((t6->sfric > 0 || t6->fric > 0) && !(m->inter_kt[i] > 0))
+    fr->kt = t6->stiff > 0 ? t6->stiff
+                           : max_slope(&m->table[m->inter_fct_ld[i]], m->inter_fscaleld[i], m->inter_ascalex[i], &at);
+    if (fr->kind != RC_FK_NONE && !(fr->kt > 0))
         RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field Stiff: friction needs a tangential stiffness [N/m]; the default (the load curve's steepest slope) is 0",
                  LOC(t6->line_loc[4]), card);
     if (m->inter_fct_ld[i] < 0)
@@ -391,10 +397,17 @@ static rc_status layout(rc_model *m, rc_error *err)
         int ns = RC_NE;
         m->inter_hidx[i] = m->inter_iform[i] != 0 ? ns++ : -1;
         m->inter_oidx[i] = m->inter_inacti[i] == 5 ? ns++ : -1;
-        m->inter_tidx[i] = -1;
-        if (m->inter_sfric[i] > 0 || m->inter_fric[i] > 0) {
-            m->inter_tidx[i] = ns;
-            ns += 4; /* F_t (3), W_fric */
+        rc_fric *fr = &m->inter_fr[i];
+        if (fr->kind != RC_FK_NONE) {
+            if (fr->form == RC_FF_INCREMENTAL) {
+                fr->tidx = ns;
+                ns += 3;
+            }
+            if (fr->tau > 0) {
+                fr->fidx = ns;
+                ns += 3;
+            }
+            fr->widx = ns++;
         }
         m->inter_ns[i] = ns;
         ny += ns;
@@ -431,12 +444,15 @@ static rc_status layout(rc_model *m, rc_error *err)
          * offset: a length [m] */
         if (m->inter_hidx[i] >= 0) m->atol[m->inter_eadr[i] + m->inter_hidx[i]] = m->inter_stiff[i] * m->atol_pos;
         if (m->inter_oidx[i] >= 0) m->atol[m->inter_eadr[i] + m->inter_oidx[i]] = m->atol_pos;
-        /* F_t: the force error atol_pos allows on the stick spring [N]; W_fric [J] */
-        const int ti = m->inter_tidx[i];
-        if (ti >= 0) {
-            for (int k = 0; k < 3; k++) m->atol[m->inter_eadr[i] + ti + k] = m->inter_kt[i] * m->atol_pos;
-            m->atol[m->inter_eadr[i] + ti + 3] = m->atol_energy;
+        /* friction forces: the force error atol_pos allows on the stick
+         * spring [N]; W_fric [J] */
+        const rc_fric *fr = &m->inter_fr[i];
+        double *a = m->atol + m->inter_eadr[i];
+        for (int k = 0; k < 3; k++) {
+            if (fr->tidx >= 0) a[fr->tidx + k] = fr->kt * m->atol_pos;
+            if (fr->fidx >= 0) a[fr->fidx + k] = fr->kt * m->atol_pos;
         }
+        if (fr->widx >= 0) a[fr->widx] = m->atol_energy;
     }
     rc_cpl_atol(m);
     return RC_OK;
@@ -538,15 +554,11 @@ rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->inter_ns, m->ninter);
     ALLOC(m->inter_hidx, m->ninter);
     ALLOC(m->inter_oidx, m->ninter);
-    ALLOC(m->inter_tidx, m->ninter);
-    ALLOC(m->inter_sfric, m->ninter);
-    ALLOC(m->inter_fric, m->ninter);
-    ALLOC(m->inter_fct_ff, m->ninter);
-    ALLOC(m->inter_fct_fv, m->ninter);
-    ALLOC(m->inter_kt, m->ninter);
+    ALLOC(m->inter_fr, m->ninter);
     ALLOC(m->inter_name, m->ninter);
     for (int i = 0; i < m->ninter; i++)
         if ((st = compile_type6(c, m, i, err))) goto fail;
+    if ((st = rc_friction_compile(c, m, err))) goto fail;
     /* couplings (coupling_compile.c) */
     if ((st = rc_cpl_compile(c, m, err))) goto fail;
     /* states, tolerances, Jacobian pattern */
@@ -576,8 +588,7 @@ void rc_model_free(rc_model *m)
                       m->inter_ascalex, m->inter_fscaleld, m->inter_ascalef, m->inter_ascalev,
                       m->inter_fct_ld, m->inter_fct_dv, m->inter_fct_df, m->inter_eadr,
                       m->inter_fct_ul, m->inter_iform, m->inter_icor, m->inter_inacti, m->inter_stiff,
-                      m->inter_fscaleul, m->inter_ns, m->inter_hidx, m->inter_oidx, m->inter_tidx,
-                      m->inter_sfric, m->inter_fric, m->inter_fct_ff, m->inter_fct_fv, m->inter_kt,
+                      m->inter_fscaleul, m->inter_ns, m->inter_hidx, m->inter_oidx, m->inter_fr,
                       m->inter_name, m->atol, m->held, m->row_held, m->gwork_slot};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     free(m);
@@ -605,11 +616,7 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
                 m->inter_name[i], m->inter_pair[i] == RC_PAIR_SPHERE_PLANE ? "sphere-plane" : "sphere-sphere",
                 m->inter_iform[i], m->inter_gap[i], m->inter_visc[i], m->inter_stiff[i], m->inter_inacti[i],
                 m->inter_tstart[i], m->inter_tstop[i]);
-    for (int i = 0; i < m->ninter && i < 20; i++)
-        if (m->inter_tidx[i] >= 0)
-            fprintf(f, "  %-18s friction Sfric %.5g N, Fric %.5g, tangential stiffness %.5g N/m%s\n", m->inter_name[i],
-                    m->inter_sfric[i], m->inter_fric[i], m->inter_kt[i],
-                    m->inter_stiff[i] > 0 ? " (Stiff)" : " (default: steepest slope of the load curve)");
+    for (int i = 0; i < m->ninter && i < 20; i++) rc_friction_print(m, i, f);
     if (m->ninter > 20) fprintf(f, "  ... %d more\n", m->ninter - 20);
     rc_cpl_print_summary(m, f);
     fprintf(f, "states      %d, Jacobian nonzeros %lld\n", m->ny, (long long)m->nnz);

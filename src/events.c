@@ -64,9 +64,11 @@ static void report(const rc_model *m, const rc_data *d, int i, double t, const d
 static void reset_friction(const rc_model *m, rc_data *d, int i, double *y, int *changed)
 {
     d->inter_slip[i] = 0;
-    const int ti = m->inter_tidx[i];
-    if (ti < 0) return;
-    for (int k = 0; k < 3; k++) set_state(y + m->inter_eadr[i] + ti + k, 0.0, changed);
+    const rc_fric *fr = &m->inter_fr[i];
+    for (int k = 0; k < 3; k++) {
+        set_state(own(m, i, fr->tidx >= 0 ? fr->tidx + k : -1, y), 0.0, changed);
+        set_state(own(m, i, fr->fidx >= 0 ? fr->fidx + k : -1, y), 0.0, changed);
+    }
 }
 
 /* Enter the contact zone at P = 0 from separation: virgin force, on the load
@@ -228,22 +230,25 @@ static const char *step_contact(const rc_model *m, rc_data *d, int i, double *y,
     return NULL;
 }
 
-/* Friction: stick -> slip when |F_t| reaches the limit; slip -> stick when
- * the sliding velocity along the force direction vanishes (the state is then
- * put on the limit, where the force already is). */
+/* Friction. Incremental: stick -> slip when the force reaches the limit;
+ * slip -> stick when the sliding velocity along the force vanishes (the state
+ * is then put where the force already is, on the limit). Viscous (total):
+ * the adhesion force saturates at the limit and comes back below it. */
 static const char *step_friction(const rc_model *m, rc_data *d, int i, double t, double *y, const int *r,
                                  int *changed)
 {
-    if (m->inter_tidx[i] < 0 || d->inter_mode[i] != RC_MODE_CLOSED || r[RC_ROOT_SLIP] <= 0) return NULL;
+    const rc_fric *fr = &m->inter_fr[i];
+    if (fr->kind == RC_FK_NONE || d->inter_mode[i] != RC_MODE_CLOSED || r[RC_ROOT_SLIP] <= 0) return NULL;
     if (!d->inter_slip[i]) {
         d->inter_slip[i] = 1;
-        return "fric_slip";
+        return fr->form == RC_FF_VISCOUS ? "fric_saturate" : "fric_slip";
     }
     rc_inter_report q;
     report(m, d, i, t, y, &q);
     d->inter_slip[i] = 0;
-    for (int k = 0; k < 3; k++) set_state(y + m->inter_eadr[i] + m->inter_tidx[i] + k, q.ft[k], changed);
-    return "fric_stick";
+    if (fr->tidx >= 0)
+        for (int k = 0; k < 3; k++) set_state(y + m->inter_eadr[i] + fr->tidx + k, q.fraw[k], changed);
+    return fr->form == RC_FF_VISCOUS ? "fric_unsaturate" : "fric_stick";
 }
 
 int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const int *roots, rc_event *ev,

@@ -12,9 +12,11 @@
  *     [1] W_damp  energy dissipated by the normal damping             [J]
  *     [inter_hidx] F_h    hysteresis force, Iform 1 and 2              [N]
  *     [inter_oidx] offset gap reduction of Inacti = 5 (>= 0)           [m]
- *     [inter_tidx .. +2] F_t tangential (friction) force on body a,
- *                        global frame, in the contact plane          [N]
- *     [inter_tidx + 3]   W_fric work of the friction forces          [J]
+ *     [fr.tidx .. +2] F_t tangential (friction) force on body a, global
+ *                     frame, in the contact plane (incremental form)  [N]
+ *     [fr.fidx .. +2] filtered friction force (/FRICTION Ifiltr)       [N]
+ *     [fr.widx]       W_fric work of the friction forces              [J]
+ *   (fr = inter_fr[i], friction.h)
  * Fixed bodies have no states; their pose is body_y0 (13 values, zero
  * velocities).
  *
@@ -28,6 +30,7 @@
 #include <stdint.h>
 
 #include "ricochet/ricochet.h"
+#include "friction.h"
 #include "table.h"
 
 #define RC_NB 13 /* states of a free body */
@@ -36,7 +39,7 @@
  * spring released from the limit rings back exactly to it, and a touch must
  * not count as a crossing (docs/theory.md 3.5) [-]. */
 #define RC_SLIP_BAND 1e-6
-#define RC_NS_MAX 8 /* own states of an interface: energies, F_h, offset, F_t, W_fric */
+#define RC_NS_MAX 11 /* own states of an interface: energies, F_h, offset, F_t, filter, W_fric */
 #define RC_JB_MAX ((2 * 6 + RC_NS_MAX) * (2 * RC_NB + RC_NS_MAX)) /* largest dense block */
 
 /* Analytic surface kinds. */
@@ -150,11 +153,7 @@ struct rc_model {
     int *inter_ns;       /* [ninter] number of own states (2..RC_NS_MAX) */
     int *inter_hidx;     /* [ninter] index of F_h among them, -1 */
     int *inter_oidx;     /* [ninter] index of the Inacti offset, -1 */
-    int *inter_tidx;     /* [ninter] index of F_t (then W_fric), -1: no friction */
-    double *inter_sfric; /* Sfric [N] */
-    double *inter_fric;  /* Fric [-] */
-    int *inter_fct_ff, *inter_fct_fv; /* friction multipliers, table index or -1 */
-    double *inter_kt;    /* tangential stiffness [N/m]: Stiff, or the default */
+    rc_fric *inter_fr;   /* [ninter] friction (friction.h); kind RC_FK_NONE: none */
     char **inter_name;   /* [ninter] "/INTER/TYPE6/<id>" */
 
     /* state vector */
@@ -206,6 +205,7 @@ typedef struct rc_inter_report {
     double fh;           /* hysteresis state F_h (0 when absent) [N] */
     double offset;       /* Inacti 5 gap reduction [m] */
     double ft[3];        /* friction force on body a, applied [N] */
+    double fraw[3];      /* friction force of the law, before the filter [N] */
     double flim;         /* friction limit Sfric + mu F_n [N] */
     double vslip;        /* sliding speed |v_t| [m/s] */
     double slip_root;    /* stick: |F_t|^2 - F_lim^2; slip: v_t . e */
@@ -256,6 +256,13 @@ double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double
  * (t, y), row-major over its rc_jblock rows and columns (assemble_jac.c). */
 void rc_jac_dense_block(const rc_model *m, int is_inter, int e, int mode, int branch, int track, int slip,
                         double t, const double *y, double *out);
+
+/* ---- friction (friction_compile.c) ------------------------------- */
+struct rc_case;
+/* Apply the /FRICTION cards to the interfaces between the parts they name
+ * (after the TYPE6 interfaces are compiled, before the state layout). */
+rc_status rc_friction_compile(const struct rc_case *c, rc_model *m, rc_error *err);
+void rc_friction_print(const rc_model *m, int i, FILE *f);
 
 /* ---- Jacobian pattern (jacpattern.c) ------------------------------- */
 rc_status rc_jac_build(rc_model *m, rc_error *err);

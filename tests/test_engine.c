@@ -26,6 +26,42 @@ static rc_case_rbody rb[2];
 static rc_case_surf sf[3];
 static rc_case_type6 t6[2];
 static rc_case_grav gr;
+static rc_case_part parts[3];
+static int part_surf_plane[] = {23};
+static rc_case_friction fcard[2];
+static rc_case_fricpair fpair[2];
+static rc_case_fricorient forient;
+static rc_case_fricorient_item fitem;
+
+/* /FRICTION over the same interfaces: card 1 (generalised viscous law,
+ * incremental, filtered) on sphere 1 / plane; card 2 (Renard, viscous total
+ * form, orthotropic with /FRIC_ORIENT) on sphere 1 / sphere 2. */
+static void add_friction_cards(rc_case *c)
+{
+    memset(parts, 0, sizeof parts);
+    parts[0] = (rc_case_part){.id = 41, .rbody_id = 11};
+    parts[1] = (rc_case_part){.id = 42, .rbody_id = 12};
+    parts[2] = (rc_case_part){.id = 43, .rbody_id = 0, .nsurf = 1, .surf = part_surf_plane};
+    c->npart = 3;
+    c->part = parts;
+    memset(fcard, 0, sizeof fcard);
+    memset(fpair, 0, sizeof fpair);
+    fpair[0] = (rc_case_fricpair){.part1 = 41, .part2 = 43, .idir = 0};
+    /* mu ~ 0.3-0.5 at p ~ 3e6 Pa: C1 [1/Pa], C2 [s/m], C3 [s/(Pa m)], C4 [1/Pa^2], C5 [s^2/m^2] */
+    fpair[0].set[0] = (rc_case_fricset){{2.1e-8, 0.031, 1.3e-9, 1.7e-15, 0.0071, 0.0}, 0.27, 0.7};
+    fcard[0] = (rc_case_friction){.id = 51, .ifric = 1, .ifiltr = 3, .xfreq = 37.0, .iform = 2, .area = 3.1e-4,
+                                  .npair = 1, .pair = &fpair[0]};
+    fpair[1] = (rc_case_fricpair){.part1 = 42, .part2 = 41, .idir = 1};
+    fpair[1].set[0] = (rc_case_fricset){{0.41, 0.23, 0.53, 0.17, 0.37, 2.9}, 0.0, 0.83};
+    fpair[1].set[1] = (rc_case_fricset){{0.31, 0.19, 0.47, 0.11, 0.61, 3.7}, 0.0, 0.83};
+    fcard[1] = (rc_case_friction){.id = 52, .ifric = 3, .iform = 1, .npair = 1, .pair = &fpair[1]};
+    c->nfriction = 2;
+    c->friction = fcard;
+    fitem = (rc_case_fricorient_item){.part_id = 42, .v = {0.3, 0.9, 0.1}, .phi = 17.0};
+    forient = (rc_case_fricorient){.id = 61, .n = 1, .item = &fitem};
+    c->nfricorient = 1;
+    c->fricorient = &forient;
+}
 
 static void build_case(rc_case *c)
 {
@@ -93,7 +129,11 @@ static void entropy_state(const rc_model *m, double *y)
     /* tangential forces, not exactly in the contact plane */
     const double ft[2][3] = {{13.7, -8.1, 2.3}, {-4.4, 11.9, 0.7}};
     for (int i = 0; i < 2; i++)
-        for (int k = 0; k < 3; k++) y[m->inter_eadr[i] + m->inter_tidx[i] + k] = ft[i][k];
+        for (int k = 0; k < 3; k++) {
+            const rc_fric *fr = &m->inter_fr[i];
+            if (fr->tidx >= 0) y[m->inter_eadr[i] + fr->tidx + k] = ft[i][k];
+            if (fr->fidx >= 0) y[m->inter_eadr[i] + fr->fidx + k] = 0.7 * ft[1 - i][k];
+        }
 }
 
 /* Max scaled |J - FD| over the whole Jacobian in the current modes; counts
@@ -110,8 +150,8 @@ static double jac_fd_error(const rc_model *m, rc_data *d, double *y, int *bad, i
          * interface states (forces, energies) enter linearly or smoothly,
          * and their rows are large (K_t v_t): a larger step keeps the
          * difference clear of rounding */
-        double rel = col < first_own ? 1e-6 : 1e-4;
-        double h = rel * (fabs(y[col]) > 1 ? fabs(y[col]) : 1.0), keep = y[col];
+        double h = col < first_own ? 1e-6 * fmax(fabs(y[col]), 1.0) : 1e-4 * fmax(fabs(y[col]), 1e-3);
+        double keep = y[col];
         y[col] = keep + h;
         rc_assemble_rhs(m, d, t, y, f1);
         y[col] = keep - h;
@@ -128,7 +168,11 @@ static double jac_fd_error(const rc_model *m, rc_data *d, double *y, int *bad, i
             else if (fabs(fd) > 1e-9 * scale) (*outside)++;
             double er = fabs(an - fd) / scale;
             maxerr = fmax(maxerr, er);
-            if (er > 1e-6) (*bad)++;
+            if (er > 1e-6) {
+                (*bad)++;
+                if (getenv("RC_DEBUG_JAC"))
+                    printf("      row %d col %d: J %.10g FD %.10g (scale %.3g)\n", r, col, an, fd, scale);
+            }
         }
     }
     free(f1);
@@ -137,10 +181,11 @@ static double jac_fd_error(const rc_model *m, rc_data *d, double *y, int *bad, i
     return maxerr;
 }
 
-static void test_engine_jacobian_matches_finite_differences(void)
+static void jacobian_check(int with_cards)
 {
     rc_case c;
     build_case(&c);
+    if (with_cards) add_friction_cards(&c);
     rc_model *m = NULL;
     rc_error e;
     ENSURE(rc_model_compile(&c, &m, &e) == RC_OK);
@@ -171,13 +216,20 @@ static void test_engine_jacobian_matches_finite_differences(void)
                     maxerr = fmax(maxerr, jac_fd_error(m, d, y, &bad, &outside));
                     combos++;
                 }
-    printf("    jacobian: %d states, %lld nonzeros, %d mode combinations, max scaled |J - FD| = %.2e\n", m->ny,
+    printf("    jacobian%s: %d states, %lld nonzeros, %d mode combinations, max scaled |J - FD| = %.2e\n", with_cards ? " (/FRICTION)" : "", m->ny,
            (long long)m->nnz, combos, maxerr);
     ENSURE(bad == 0);
     ENSURE(outside == 0);
     free(y);
     rc_data_free(d);
     rc_model_free(m);
+}
+
+static void test_engine_jacobian_matches_finite_differences(void) { jacobian_check(0); }
+
+static void test_engine_jacobian_friction_cards_matches_finite_differences(void)
+{
+    jacobian_check(1);
 }
 
 /* Torque-free asymmetric top: quaternion norm held by projection, kinetic
@@ -233,5 +285,6 @@ void suite_engine(void);
 void suite_engine(void)
 {
     RUN_TEST(test_engine_jacobian_matches_finite_differences);
+    RUN_TEST(test_engine_jacobian_friction_cards_matches_finite_differences);
     RUN_TEST(test_engine_quaternion_drift_and_gyroscopic_invariants);
 }

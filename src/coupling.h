@@ -93,8 +93,9 @@ typedef struct rc_cpl_report {
                             together); catenary: tension at end 1 [N]       */
     double f1[3], f2[3]; /* force applied to end 1 and to end 2, global [N]  */
     double c, u1, u2;    /* catenary parameters (SPEC 8); 0 for springs      */
-    double lowest;       /* catenary: height of its lowest point above end 1
-                            along -g [m] (the lower end when no sag)        */
+    double lowest;       /* catenary: height of its lowest point along -g,
+                            from the origin [m] (an end when the line does
+                            not sag below it); NaN for springs              */
 } rc_cpl_report;
 
 /* Mutable per-run data. */
@@ -156,9 +157,10 @@ int rc_cpl_dense_block(const rc_model *m, const rc_data *d, int k, double t, con
 int rc_cpl_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val);
 
 /* ---- output ------------------------------------------------------------ */
-/* Values per coupling at (t, y) for one output record, into buf [8 n]:
- * force [n], length [n], force on end 1 [3 n], force on end 2 [3 n]
- * (rc_cpl_report; NaN for a catenary that cannot be solved). */
+/* Values per coupling at (t, y) for one output record, into buf [9 n]:
+ * force [n], length [n], force on end 1 [3 n], force on end 2 [3 n],
+ * lowest point of a catenary [n] (NaN for springs) (rc_cpl_report; NaN for
+ * a catenary that cannot be solved). */
 void rc_cpl_frame(const rc_model *m, const rc_data *d, double t, const double *y, double *buf);
 /* Name of the coupling whose forces failed in the last right-hand side or
  * Jacobian, NULL when none. */

@@ -208,15 +208,24 @@ void rc_cpl_print_summary(const rc_model *m, FILE *f)
                                              "stiffness table k(x)"};
     const rc_couplings *p = m->cpl;
     fprintf(f, "couplings   %d\n", p->n);
+    double *y = malloc(((size_t)m->ny + 1) * sizeof(double));
+    if (y) rc_initial_state(m, y);
     for (int k = 0; k < p->n && k < 20; k++) {
         const int ids[2] = {p->b1[k] >= 0 ? m->body_id[p->b1[k]] : 0, p->b2[k] >= 0 ? m->body_id[p->b2[k]] : 0};
+        rc_cpl_report r;
+        const int ok = y && rc_cpl_report_eval(m, NULL, k, 0.0, y, &r) == 0;
         fprintf(f, "  %-22s bodies %d-%d, ", p->name[k], ids[0], ids[1]);
         if (p->kind[k] == RC_CPL_SPRING)
-            fprintf(f, "%s, x0 %.5g m, k_d %.5g N s/m\n", form_name[p->form[k]], p->x0[k], p->kd[k]);
+            fprintf(f, "%s, x0 %.5g m, k_d %.5g N s/m; at t = 0: length %.5g m, force %.5g N\n",
+                    form_name[p->form[k]], p->x0[k], p->kd[k], ok ? r.length : NAN, ok ? r.force : NAN);
         else
-            fprintf(f, "lambda0 %.5g kg/m, L_eq %.5g m, EA %.5g N\n", p->lambda0[k], p->leq[k], p->ea[k]);
+            fprintf(f, "lambda0 %.5g kg/m, L_eq %.5g m, EA %.5g N; at t = 0: distance %.5g m, tension at end 1 %.5g N, "
+                    "lowest point %.5g m along -g%s\n",
+                    p->lambda0[k], p->leq[k], p->ea[k], ok ? r.length : NAN, ok ? r.force : NAN,
+                    ok ? r.lowest : NAN, ok ? "" : " (catenary equations not solved)");
     }
     if (p->n > 20) fprintf(f, "  ... %d more\n", p->n - 20);
+    free(y);
 }
 
 /* ---- run data ------------------------------------------------------------ */
@@ -258,6 +267,7 @@ void rc_cpl_frame(const rc_model *m, const rc_data *d, double t, const double *y
             buf[2 * n + 3 * k + i] = r.f1[i];
             buf[5 * n + 3 * k + i] = r.f2[i];
         }
+        buf[8 * n + k] = r.lowest;
     }
 }
 

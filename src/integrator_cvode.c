@@ -209,7 +209,7 @@ typedef struct frame_buf {
     double *pos, *quat, *vel, *omega, *pen, *fload, *fdamp, *fn, *point, *normal;
     int *mode;
     double energy[RC_NENERGY];
-    double *cpl; /* [8 ncoupling] coupling values (rc_cpl_frame) */
+    double *cpl; /* [9 ncoupling] coupling values (rc_cpl_frame) */
 } frame_buf;
 
 static void frame_free(frame_buf *f)
@@ -234,7 +234,7 @@ static int frame_alloc(const rc_model *m, frame_buf *f)
     f->point = malloc(3 * ni * sizeof(double));
     f->normal = malloc(3 * ni * sizeof(double));
     f->mode = malloc(ni * sizeof(int));
-    f->cpl = malloc((8 * (size_t)m->cpl->n + 1) * sizeof(double));
+    f->cpl = malloc((9 * (size_t)m->cpl->n + 1) * sizeof(double));
     return f->pos && f->quat && f->vel && f->omega && f->pen && f->fload && f->fdamp && f->fn && f->point &&
            f->normal && f->mode && f->cpl;
 }
@@ -271,7 +271,8 @@ static rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, 
     const int nc = m->cpl->n;
     rc_cpl_frame(m, d, t, y, f->cpl);
     rc_frame fr = {t, at_event, f->pos, f->quat, f->vel, f->omega, f->pen, f->fload, f->fdamp, f->fn, f->point,
-                   f->normal, f->mode, f->energy, f->cpl, f->cpl + nc, f->cpl + 2 * nc, f->cpl + 5 * nc};
+                   f->normal, f->mode, f->energy, f->cpl, f->cpl + nc, f->cpl + 2 * nc, f->cpl + 5 * nc,
+                   f->cpl + 8 * nc};
     return rc_output_frame(o, &fr, err);
 }
 

@@ -57,6 +57,8 @@ typedef struct rc_frame {
     const double *cpl_length;    /* [ncoupling] distance between the end points [m] */
     const double *cpl_f1;        /* [ncoupling*3] force on end 1, global [N] */
     const double *cpl_f2;        /* [ncoupling*3] force on end 2, global [N] */
+    const double *cpl_lowest;    /* [ncoupling] catenary: height of its lowest
+                                    point along -g (NaN for springs) [m] */
 } rc_frame;
 
 /* Create the file (overwrites). RC_EIO with the path and netCDF message. */

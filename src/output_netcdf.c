@@ -55,7 +55,7 @@ enum {
     V_INTER_ID, V_INTER_TYPE, V_INTER_PEN, V_INTER_FLOAD, V_INTER_FDAMP, V_INTER_FNORMAL,
     V_INTER_POINT, V_INTER_NORMAL, V_INTER_MODE,
     V_EVENT_TIME, V_EVENT_KIND, V_EVENT_ELEMENT,
-    V_CPL_ID, V_CPL_TYPE, V_CPL_FORCE, V_CPL_LENGTH, V_CPL_F1, V_CPL_F2,
+    V_CPL_ID, V_CPL_TYPE, V_CPL_FORCE, V_CPL_LENGTH, V_CPL_F1, V_CPL_F2, V_CPL_LOWEST,
     V_COUNT
 };
 
@@ -121,6 +121,10 @@ static const var_spec var_table[V_COUNT] = {
                   "force of the coupling on its end 1", "global frame"},
     [V_CPL_F2] = {"coupling_force_end2", NC_DOUBLE, 3, {D_TIME, D_COUPLING, D_VEC3}, U_FORCE,
                   "force of the coupling on its end 2", "global frame"},
+    [V_CPL_LOWEST] = {"coupling_lowest", NC_DOUBLE, 2, {D_TIME, D_COUPLING}, U_LENGTH,
+                      "height of the lowest point of a catenary line",
+                      "along the upward direction -g, from the origin; ground contact of the line is not "
+                      "modelled (docs/theory.md); NaN for springs"},
 };
 
 struct rc_output {
@@ -502,6 +506,7 @@ rc_status rc_output_frame(rc_output *o, const rc_frame *f, rc_error *err)
         [V_CPL_LENGTH] = f->cpl_length,
         [V_CPL_F1] = f->cpl_f1,
         [V_CPL_F2] = f->cpl_f2,
+        [V_CPL_LOWEST] = f->cpl_lowest,
     };
     rc_status rc = RC_OK;
     /* every defined time series of the table, then the energies */

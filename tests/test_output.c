@@ -243,7 +243,7 @@ static void test_output_roundtrip(void)
         ENSURE(att_text(ncid, id, "long_name", buf, sizeof buf) && strcmp(buf, energy_long[j]) == 0);
     }
     /* integer series and fixed variables */
-    int ev[NF], mode[NF], ids[NB], fixed[NB], iid, flags[3];
+    int ev[NF], mode[NF], ids[NB], fixed[NB], iid, flags[4];
     ENSURE(nc_get_var_int(ncid, var_id(ncid, "at_event"), ev) == NC_NOERR);
     ENSURE(nc_get_var_int(ncid, var_id(ncid, "inter_mode"), mode) == NC_NOERR);
     for (int k = 0; k < NF; k++) ENSURE(ev[k] == (k == 2) && mode[k] == k % 3);

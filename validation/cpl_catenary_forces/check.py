@@ -73,8 +73,10 @@ def main():
     with Dataset(rcval.run_file(os.path.join(here, "case.rad"))) as nc:
         f1 = np.array(nc["coupling_force_end1"][0])
         f2 = np.array(nc["coupling_force_end2"][0])
+        low = np.array(nc["coupling_lowest"][0])
     w = LAM * G
     worst = {"stiff": 0.0, "soft": 0.0, "taut": 0.0}
+    low_err = 0.0
     for k, (kind, _, _, L, _) in enumerate(LINES):
         _, _, X, Y, ex = geometry(k)
         if kind == "stiff":
@@ -82,6 +84,9 @@ def main():
         else:
             H, V1, V2 = catenary_ref.elastic(X, Y, L, w, stiffness(k) * L)
         ref1, ref2 = H * ex + V1 * UP, -H * ex - V2 * UP
+        p1 = geometry(k)[0]
+        ea_k = stiffness(k) * L
+        low_err = max(low_err, abs(low[k] - catenary_ref.lowest(H, V1, np.dot(p1, UP), L, w, ea_k)) / L)
         scale = max(np.linalg.norm(ref1), np.linalg.norm(ref2))
         err = max(np.linalg.norm(f1[k] - ref1), np.linalg.norm(f2[k] - ref2)) / scale
         worst[kind] = max(worst[kind], err)
@@ -94,6 +99,9 @@ def main():
     rcval.check("cpl_catenary_forces.taut", worst["taut"] < 1e-12,
                 f"2 taut lines (chord > L_eq) against scipy's elastic catenary: max rel. error "
                 f"{worst['taut']:.2e} (< 1e-12)")
+    rcval.check("cpl_catenary_forces.lowest", low_err < 1e-9,
+                f"height of the lowest point of each line (coupling_lowest) against a numerical "
+                f"minimisation along the line: max error {low_err:.1e} L_eq (< 1e-9)")
     bal = max(abs(np.dot(f1[k] + f2[k], UP) + w * LINES[k][3]) / (w * LINES[k][3]) for k in range(len(LINES)))
     hor = max(np.linalg.norm(f1[k] + f2[k] - np.dot(f1[k] + f2[k], UP) * UP) for k in range(len(LINES)))
     rcval.check("cpl_catenary_forces.balance", bal < 1e-12 and hor < 1e-9,

@@ -23,7 +23,7 @@ import math
 
 import numpy as np
 from scipy.integrate import quad
-from scipy.optimize import brentq, root
+from scipy.optimize import brentq, minimize_scalar, root
 
 
 def inextensible(X, Y, L, w):
@@ -71,14 +71,25 @@ def elastic(X, Y, L, w, EA, guess=None):
     return c, c * math.sinh(u1), c * math.sinh(u2)
 
 
+def height(s, H, V1, y1, w, EA):
+    """Height of the point at unstretched arc length s from end 1."""
+    V = V1 + w * s
+    return y1 + (math.hypot(H, V) - math.hypot(H, V1)) / w + (V * V - V1 * V1) / (2.0 * w * EA)
+
+
+def lowest(H, V1, y1, L, w, EA):
+    """Height of the lowest point of the line: a bounded scalar minimisation of
+    height(s) over [0, L], and the two ends."""
+    f = lambda s: height(s, H, V1, y1, w, EA)
+    r = minimize_scalar(f, bounds=(0.0, L), method="bounded", options={"xatol": 1e-12 * L})
+    return min(f(0.0), f(L), r.fun)
+
+
 def line_energy(H, V1, y1, L, w, EA):
     """(elastic, gravitational) energy of the line [J]; y1 the height of end 1."""
-    T1 = math.hypot(H, V1)
-
-    def height(s):
-        V = V1 + w * s
-        return y1 + (math.hypot(H, V) - T1) / w + (V * V - V1 * V1) / (2.0 * w * EA)
+    def hgt(s):
+        return height(s, H, V1, y1, w, EA)
 
     elastic = quad(lambda s: (H * H + (V1 + w * s) ** 2) / (2.0 * EA), 0.0, L, epsabs=0, epsrel=1e-13)[0]
-    grav = w * quad(height, 0.0, L, epsabs=0, epsrel=1e-13)[0]
+    grav = w * quad(hgt, 0.0, L, epsabs=0, epsrel=1e-13)[0]
     return elastic, grav

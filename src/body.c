@@ -10,11 +10,18 @@ const double *rc_body_state(const rc_model *m, int b, const double *y)
     return m->body_yadr[b] >= 0 ? y + m->body_yadr[b] : m->body_y0 + RC_NB * b;
 }
 
-void rc_gravity(const rc_model *m, int b, double t, double g[3])
+double rc_gravity_factor(const rc_model *m, double t)
 {
-    /* g(t) = vector * f(t / Ascale), f = 1 when no function is given */
+    /* f(t / Ascale), 1 when no function is given */
     double f = 1.0, df;
     if (m->grav_table >= 0) rc_table_eval(&m->table[m->grav_table], t / m->grav_ascale, &f, &df);
+    return f;
+}
+
+void rc_gravity(const rc_model *m, int b, double t, double g[3])
+{
+    /* g(t) = vector * f(t / Ascale) */
+    const double f = rc_gravity_factor(m, t);
     for (int k = 0; k < 3; k++) g[k] = m->body_grav[3 * b + k] * f;
 }
 

@@ -278,7 +278,6 @@ const char *rc_cpl_failed(const rc_model *m, const rc_data *d)
 
 void rc_cpl_gravity(const rc_model *m, double t, double g[3])
 {
-    double f = 1.0, df;
-    if (m->grav_table >= 0) rc_table_eval(&m->table[m->grav_table], t / m->grav_ascale, &f, &df);
+    const double f = rc_gravity_factor(m, t);
     for (int k = 0; k < 3; k++) g[k] = m->cpl->grav[k] * f;
 }

@@ -232,6 +232,8 @@ void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int tr
                           const double *y, rc_inter_report *r);
 /* Gravity acceleration vector of body b at time t [m/s^2]. */
 void rc_gravity(const rc_model *m, int b, double t, double g[3]);
+/* Value of the gravity time function at t [-] (1 when none is given). */
+double rc_gravity_factor(const rc_model *m, double t);
 /* Pose and velocity view of body b: pointer to its 13 values in y, the
  * fixed pose of a fixed body, or the ground pose for b = -1. */
 const double *rc_body_state(const rc_model *m, int b, const double *y);

@@ -6,13 +6,14 @@
 #include <stdlib.h>
 
 #include "../src/case.h"
+#include "../src/case_coupling.h"
 #include "../src/model.h"
 #include "harness.h"
 
 /* A three-body case: body 1 (sphere, offset from its CoM, full inertia),
  * body 2 (sphere), a tilted plane fixed in space; sphere-plane and
  * sphere-sphere TYPE6 with a nonlinear load curve, Visc and both damping
- * curves; gravity. */
+ * curves; gravity; a spring-damper and a catenary (add_couplings). */
 static rc_case_funct fn[7];
 static double fx0[] = {-0.01, 0.0, 0.0013, 0.0041, 0.0097}, fy0[] = {-3.1e3, 0.0, 2.71e3, 1.37e4, 5.9e4};
 static double fx1[] = {-10.0, 0.0, 0.37, 3.3}, fy1[] = {-41.0, 0.0, 5.3, 71.0};   /* f_dv */
@@ -32,6 +33,23 @@ static rc_case_friction fcard[2];
 static rc_case_fricpair fpair[2];
 static rc_case_fricorient forient;
 static rc_case_fricorient_item fitem;
+static rc_case_coupling cpl[2];
+
+/* Couplings (coupling.h): a polynomial spring-damper between offset points
+ * of the two bodies, a slack catenary from a point in space to an offset
+ * point of body 1 (in the ramped gravity). */
+static void add_couplings(rc_case *c)
+{
+    memset(cpl, 0, sizeof cpl);
+    cpl[0] = (rc_case_coupling){.id = 71, .kind = RC_CASE_CPL_SPRING, .rbody = {11, 12},
+                                .p = {{0.031, -0.02, 0.07}, {0.029, 0.015, 0.12}}, .iform = 2, .x0 = 0.047,
+                                .x0_given = 1, .kd = 3.1, .a = 2.3e3, .b = -1.1e4, .c = 7.7e5};
+    cpl[1] = (rc_case_coupling){.id = 72, .kind = RC_CASE_CPL_CATENARY, .rbody = {0, 11},
+                                .p = {{-0.21, 0.13, 0.33}, {0.017, -0.03, 0.061}}, .lambda0 = 0.37, .leq = 0.41,
+                                .d = 3.3e3};
+    c->ncoupling = 2;
+    c->coupling = cpl;
+}
 
 /* /FRICTION over the same interfaces: card 1 (generalised viscous law,
  * incremental, filtered) on sphere 1 / plane; card 2 (Renard, viscous total
@@ -110,6 +128,7 @@ static void build_case(rc_case *c)
     gr = (rc_case_grav){.id = 1, .fct_id = 13, .dir = 2, .ascale = 1.0, .fscale = -9.81}; /* ramped */
     c->ngrav = 1;
     c->grav = &gr;
+    add_couplings(c);
     c->run = (rc_case_run){1, 0.01, 0.001, {0}};
     c->solver = (rc_case_solver){0, 1, 5, 100000, 1e-8, 1e-11, 1e-11, 1e-8, 1e-8, 1e-9, 0, 0, {0}};
 }
@@ -240,6 +259,7 @@ static void test_engine_quaternion_drift_and_gyroscopic_invariants(void)
     build_case(&c);
     c.ntype6 = 0;
     c.ngrav = 0;
+    c.ncoupling = 0;
     c.nrbody = 1;
     c.nsurf = 0;
     c.run.tend = 200.0;

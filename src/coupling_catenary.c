@@ -209,6 +209,23 @@ static int run_solver(cat_ws *ws, gsl_multiroot_fdfsolver *s, gsl_multiroot_func
     return 0;
 }
 
+/* `n` Newton steps on the scaled equations from z; the Jacobian at the
+ * final point in J and its determinant in *det. Returns 0, or 1 when the
+ * equations cannot be evaluated or J is singular. */
+static int newton(const cat_par *par, double *z, int n, double *J, double *det)
+{
+    for (int it = 0;; it++) {
+        double xs, ys;
+        if (span(z[0], z[1], par->ea, &xs, &ys, J)) return 1;
+        *det = J[0] * J[3] - J[1] * J[2];
+        if (!(fabs(*det) > 0) || !isfinite(*det)) return 1;
+        if (it == n) return 0;
+        const double rx = xs - par->x, ry = ys - par->y;
+        z[0] -= (J[3] * rx - J[1] * ry) / *det;
+        z[1] -= (J[0] * ry - J[2] * rx) / *det;
+    }
+}
+
 int rc_cat_solve(const rc_couplings *cpl, int k, void *wsp, double *warm, double X, double Y,
                  double w, rc_cat_sol *sol)
 {
@@ -254,33 +271,24 @@ int rc_cat_solve(const rc_couplings *cpl, int k, void *wsp, double *warm, double
     if (fail) return 1;
 
     /* The root is known to the solver tolerance and its last bits depend on
-     * the start. Rounded to RC_CAT_CANON_BITS bits it is the same point
-     * whatever the start (but in rare ties), and two Newton steps from it
-     * reach the rounding level: the result is a function of (X, Y) alone,
-     * so the right-hand side stays pure. Then the Jacobian there. */
+     * the start. Polished to the rounding level by Newton, then rounded to
+     * RC_CAT_CANON_BITS bits, it is the same point whatever the start (but
+     * in ties, about one in 1e7), and two Newton steps from there reach the
+     * rounding level again: the result is a function of (X, Y) alone, so the
+     * right-hand side stays pure. Then the Jacobian there. */
+    double J[4], det;
+    if (newton(&par, z, 2, J, &det)) return 1;
     for (int i = 0; i < 2; i++) {
         int e;
         const double f = frexp(z[i], &e);
         z[i] = ldexp(nearbyint(ldexp(f, RC_CAT_CANON_BITS)), e - RC_CAT_CANON_BITS);
     }
-    double xs, ys, J[4];
-    for (int pass = 0; pass < 3; pass++) {
-        if (span(z[0], z[1], par.ea, &xs, &ys, J)) return 1;
-        const double det = J[0] * J[3] - J[1] * J[2];
-        if (!(fabs(det) > 0) || !isfinite(det)) return 1;
-        if (pass == 2) {
-            /* implicit-function theorem: d(h, v1)/d(x, y) = J^-1 */
-            sol->dH[0] = sc * J[3] / det;
-            sol->dH[1] = -sc * J[1] / det;
-            sol->dV1[0] = -sc * J[2] / det;
-            sol->dV1[1] = sc * J[0] / det;
-            break;
-        }
-        const double rx = xs - par.x, ry = ys - par.y;
-        z[0] -= (J[3] * rx - J[1] * ry) / det;
-        z[1] -= (J[0] * ry - J[2] * rx) / det;
-    }
-    if (!(z[0] > 0)) return 1;
+    if (newton(&par, z, 2, J, &det) || !(z[0] > 0)) return 1;
+    /* implicit-function theorem: d(h, v1)/d(x, y) = J^-1 */
+    sol->dH[0] = sc * J[3] / det;
+    sol->dH[1] = -sc * J[1] / det;
+    sol->dV1[0] = -sc * J[2] / det;
+    sol->dV1[1] = sc * J[0] / det;
     sol->H = W * z[0];
     sol->V1 = W * z[1];
     sol->V2 = sol->V1 + W;

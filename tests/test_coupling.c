@@ -384,6 +384,54 @@ static void test_coupling_catenary_solutions(void)
     rc_cat_ws_free(ws);
 }
 
+/* Random spans over the extremes: EA from 1e-2 to 1e12 w L, span from 1e-6
+ * to 3 L_eq, height within +-3 L_eq. Every one is solved, from a cold start
+ * and from the warm start of a neighbouring span, with bit-identical
+ * results, and the residual of the equations as solved is at the rounding
+ * level of their terms (evaluated here plainly, with the cancellation the
+ * solver's own forms avoid). */
+static void test_coupling_catenary_random_spans(void)
+{
+    void *ws = rc_cat_ws_new();
+    const double w = 9.81;
+    uint64_t s = 0x2545f4914f6cdd1dULL;
+    int solved = 0, same = 0, n = 4000;
+    double worst = 0;
+    for (int i = 0; i < n; i++) {
+        double r[5];
+        for (int j = 0; j < 5; j++) {
+            s = s * 6364136223846793005ULL + 1442695040888963407ULL;
+            r[j] = (double)(s >> 11) / 9007199254740992.0;
+        }
+        one_line o;
+        const double L = 1.0 + 4.0 * r[0];
+        one_line_init(&o, L, pow(10.0, -2.0 + 14.0 * r[1]) * w * L);
+        const double X = L * pow(10.0, -6.0 + 6.5 * r[2]), Y = L * (-3.0 + 6.0 * r[3]);
+        rc_cat_sol a, b;
+        double st[2] = {NAN, NAN}, st2[2] = {NAN, NAN};
+        if (rc_cat_solve(&o.p, 0, ws, st, X * 1.0003, Y + 3e-4 * L, w, &b) ||
+            rc_cat_solve(&o.p, 0, ws, st, X, Y, w, &b) || rc_cat_solve(&o.p, 0, ws, st2, X, Y, w, &a))
+            continue;
+        solved++;
+        same += a.H == b.H && a.V1 == b.V1;
+        if (!a.vertical) {
+            /* the two equations as solved, in the tensions */
+            const double T1 = hypot(a.H, a.V1), T2 = hypot(a.H, a.V2);
+            const double A2 = asinh(a.V2 / a.H), A1 = asinh(a.V1 / a.H);
+            const double Xs = a.H * L / o.ea + a.H / w * (A2 - A1);
+            const double Ys = L * (a.V1 + a.V2) * (1.0 / (T1 + T2) + 0.5 / o.ea);
+            const double mx = L + a.H * L / o.ea + a.H / w * (fabs(A2) + fabs(A1));
+            const double my = L + L * fabs(a.V1 + a.V2) * (1.0 / (T1 + T2) + 0.5 / o.ea);
+            worst = fmax(worst, fmax(fabs(Xs - X) / mx, fabs(Ys - Y) / my));
+        }
+    }
+    printf("    %d random spans: %d solved, %d warm == cold bit for bit, max relative residual %.1e\n", n, solved,
+           same, worst);
+    ENSURE(solved == n && same == n);
+    ENSURE(worst < 1e-13);
+    rc_cat_ws_free(ws);
+}
+
 /* d(H, V1)/d(X, Y) from the implicit-function theorem against central
  * differences of the solver. */
 static void test_coupling_catenary_ift_matches_finite_differences(void)
@@ -614,6 +662,7 @@ void suite_coupling(void)
     RUN_TEST(test_coupling_stiffness_integral);
     RUN_TEST(test_coupling_spring_forms);
     RUN_TEST(test_coupling_catenary_solutions);
+    RUN_TEST(test_coupling_catenary_random_spans);
     RUN_TEST(test_coupling_catenary_ift_matches_finite_differences);
     RUN_TEST(test_coupling_catenary_vertical_limit);
     RUN_TEST(test_coupling_catenary_taut_limit);

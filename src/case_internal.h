@@ -56,7 +56,8 @@ typedef struct rc_block {
 /* Card kinds whose ids must be unique (one id space per kind). */
 typedef enum {
     RC_IDK_FUNCT, RC_IDK_NODE, RC_IDK_GRNOD, RC_IDK_RBODY, RC_IDK_SURF,
-    RC_IDK_INTER, RC_IDK_INIVEL, RC_IDK_GRAV, RC_IDK_BCS, RC_IDK_COUPLING, RC_IDK_COUNT
+    RC_IDK_INTER, RC_IDK_INIVEL, RC_IDK_GRAV, RC_IDK_BCS, RC_IDK_COUPLING, RC_IDK_PART,
+    RC_IDK_GRPART, RC_IDK_FRICTION, RC_IDK_FRICORIENT, RC_IDK_COUNT
 } rc_id_kind;
 
 /* One id as declared, for the duplicate check. */
@@ -85,7 +86,7 @@ typedef struct rc_reader {
     long main_bytes;                          /* size of the main file      */
 
     int capfunct, capnode, capgrnod, caprbody, capsurf, captype6, capinivel,
-        capgrav, capbcs, capwarn, capcoupling;
+        capgrav, capbcs, capwarn, capcoupling, cappart, capgrpart, capfriction, capfricorient;
     rc_id_entry *ids[RC_IDK_COUNT];
     int nids[RC_IDK_COUNT], capids[RC_IDK_COUNT];
     int seq;

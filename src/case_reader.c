@@ -777,7 +777,8 @@ static rc_status rc_check_dups(rc_reader *rd)
 {
     static const char *const names[RC_IDK_COUNT] = {
         "fct_ID", "node_ID", "grnod_ID", "rbody_ID", "surf_ID",
-        "inter_ID", "inivel_ID", "grav_ID", "bcs_ID", "cpl_ID"};
+        "inter_ID", "inivel_ID", "grav_ID", "bcs_ID", "cpl_ID", "part_ID", "grpart_ID",
+        "fric_ID", "fric_orient_ID"};
     const rc_id_entry *worst = NULL, *first = NULL;
     int wkind = 0;
     for (int k = 0; k < RC_IDK_COUNT; k++) {
@@ -854,6 +855,14 @@ void rc_case_free(rc_case *c)
     free(c->grav);
     free(c->bcs);
     free(c->coupling);
+    for (int i = 0; i < c->npart; i++) free(c->part[i].surf);
+    free(c->part);
+    for (int i = 0; i < c->ngrpart; i++) free(c->grpart[i].parts);
+    free(c->grpart);
+    for (int i = 0; i < c->nfriction; i++) free(c->friction[i].pair);
+    free(c->friction);
+    for (int i = 0; i < c->nfricorient; i++) free(c->fricorient[i].item);
+    free(c->fricorient);
     for (int i = 0; i < c->nwarnings; i++) free(c->warnings[i]);
     free(c->warnings);
     free(c);

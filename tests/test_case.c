@@ -109,6 +109,82 @@ static rc_case *load_ok(const char *path)
 
 /* ---- The full deck ------------------------------------------------------ */
 
+/* A /FRICTION coefficient set equals C1..C6, Fric, VISF. */
+static int fricset_is(const rc_case_fricset *s, double c1, double c2, double c3, double c4,
+                      double c5, double c6, double fric, double visf)
+{
+    return s->c[0] == c1 && s->c[1] == c2 && s->c[2] == c3 && s->c[3] == c4 && s->c[4] == c5 &&
+           s->c[5] == c6 && s->fric == fric && s->visf == visf;
+}
+
+/* /PART, /GRPART, /FRICTION, /FRIC_ORIENT of the full deck. */
+static void check_full_friction_values(const rc_case *c)
+{
+    /* /PART: a whole body; surfaces fixed in space over two lines */
+    ENSURE(c->npart == 2);
+    if (c->npart == 2) {
+        const rc_case_part *p = &c->part[0], *q = &c->part[1];
+        ENSURE(p->id == 41 && strcmp(p->title, "ball part") == 0 && p->rbody_id == 7 &&
+               p->nsurf == 0 && p->surf == NULL && p->loc.line == 58 && p->line_loc.line == 61);
+        static const int qs[11] = {11, 113, 117, 131, 137, 171, 173, 179, 191, 193, 197};
+        ENSURE(q->id == 42 && strcmp(q->title, "fixed ground faces") == 0 && q->rbody_id == 0 &&
+               q->nsurf == 11 && q->loc.line == 62 && q->line_loc.line == 65);
+        if (q->nsurf == 11) ENSURE(memcmp(q->surf, qs, sizeof qs) == 0);
+    }
+    /* /GRPART/PART */
+    ENSURE(c->ngrpart == 2);
+    if (c->ngrpart == 2) {
+        const rc_case_grpart *g = &c->grpart[0], *h = &c->grpart[1];
+        ENSURE(g->id == 51 && strcmp(g->title, "ball parts") == 0 && g->n == 3 && g->loc.line == 67);
+        if (g->n == 3) ENSURE(g->parts[0] == 41 && g->parts[1] == 42 && g->parts[2] == 43);
+        ENSURE(h->id == 52 && strcmp(h->title, "ground parts") == 0 && h->n == 1);
+        if (h->n == 1) ENSURE(h->parts[0] == 42);
+    }
+    /* /FRICTION: Renard with two groups, the second orthotropic */
+    ENSURE(c->nfriction == 2);
+    if (c->nfriction == 2) {
+        const rc_case_friction *f = &c->friction[0], *v = &c->friction[1];
+        ENSURE(f->id == 61 && strcmp(f->title, "Renard, orthotropic pair") == 0);
+        ENSURE(f->ifric == 3 && f->ifiltr == 3 && f->xfreq == 37.1 && f->iform == 2 &&
+               f->dt_ref == 0 && f->area == 0.00137);
+        ENSURE(fricset_is(&f->def, 0.31, 0.23, 0.41, 0.17, 0.0137, 0.371, 0.5, 0.73));
+        ENSURE(f->loc.line == 74 && f->line_loc[0].line == 76 && f->line_loc[1].line == 77 &&
+               f->line_loc[2].line == 78);
+        ENSURE(f->npair == 2);
+        if (f->npair == 2) {
+            const rc_case_fricpair *a = &f->pair[0], *b = &f->pair[1];
+            ENSURE(a->grpart1 == 51 && a->grpart2 == 52 && a->part1 == 0 && a->part2 == 0 &&
+                   a->idir == 0 && a->loc.line == 79);
+            ENSURE(fricset_is(&a->set[0], 0.33, 0.27, 0.47, 0.13, 0.0071, 0.137, 0, 1));
+            ENSURE(b->grpart1 == 0 && b->grpart2 == 0 && b->part1 == 41 && b->part2 == 42 &&
+                   b->idir == 1 && b->loc.line == 82);
+            ENSURE(fricset_is(&b->set[0], 0.37, 0.29, 0.43, 0.19, 0.0113, 0.173, 0, 1.37));
+            ENSURE(fricset_is(&b->set[1], 0.21, 0.19, 0.31, 0.11, 0.0031, 0.0713, 0, 0.37));
+        }
+        /* defaults only; Iform 0 means 1, VISF 0 means 1 */
+        ENSURE(v->id == 62 && v->ifric == 1 && v->ifiltr == 1 && v->xfreq == 0.371 &&
+               v->iform == 1 && v->dt_ref == 1.37e-05 && v->area == 3.7e-04 && v->npair == 0 &&
+               v->pair == NULL);
+        ENSURE(fricset_is(&v->def, 1.3e-07, 0.0371, -2.1e-09, 3.7e-15, 0.0013, 0, 0.137, 1));
+    }
+    /* /FRIC_ORIENT */
+    ENSURE(c->nfricorient == 1);
+    if (c->nfricorient == 1) {
+        const rc_case_fricorient *o = &c->fricorient[0];
+        ENSURE(o->id == 81 && strcmp(o->title, "orthotropy directions") == 0 && o->n == 2 &&
+               o->loc.line == 92);
+        if (o->n == 2) {
+            const rc_case_fricorient_item *a = &o->item[0], *b = &o->item[1];
+            ENSURE(a->grpart_id == 51 && a->part_id == 0 && a->v[0] == 1.0 && a->v[1] == 0.5 &&
+                   a->v[2] == 0 && a->skew_id == 0 && a->phi == 37.1 && a->iorth == 1 &&
+                   a->loc.line == 94);
+            ENSURE(b->grpart_id == 0 && b->part_id == 42 && b->v[0] == 0 && b->v[1] == -0.371 &&
+                   b->v[2] == 1.37 && b->skew_id == 0 && b->phi == -13.7 && b->iorth == 0 &&
+                   b->loc.line == 96);
+        }
+    }
+}
+
 /* Every field of tests/data/full_fixed.rad (and full_comma.rad). */
 static void check_full_values(const rc_case *c)
 {
@@ -210,6 +286,7 @@ static void check_full_values(const rc_case *c)
         ENSURE(b->fix[0] == 0 && b->fix[1] == 1 && b->fix[2] == 0 && b->fix[3] == 1 &&
                b->fix[4] == 1 && b->fix[5] == 1);
     }
+    check_full_friction_values(c);
     /* /RUN and /SOLVER */
     ENSURE(c->run.present == 1 && c->run.tend == 1.0371 && c->run.dtout == 0.001371);
     const rc_case_solver *s = &c->solver;
@@ -230,6 +307,57 @@ static void test_case_full_deck_fixed(void)
     ENSURE(c->nfiles == 1 && strcmp(c->files[0], "tests/data/full_fixed.rad") == 0);
     ENSURE(c->rbody[0].loc.file == c->files[0]);
     rc_case_free(c);
+}
+
+/* Field-by-field equality of the /PART, /GRPART, /FRICTION and
+ * /FRIC_ORIENT cards, locations excepted. */
+static int fricset_equal(const rc_case_fricset *x, const rc_case_fricset *y)
+{
+    return memcmp(x->c, y->c, sizeof x->c) == 0 && x->fric == y->fric && x->visf == y->visf;
+}
+
+static int friction_equal(const rc_case *a, const rc_case *b)
+{
+    int eq = a->npart == b->npart && a->ngrpart == b->ngrpart && a->nfriction == b->nfriction &&
+             a->nfricorient == b->nfricorient;
+    if (!eq) return 0;
+    for (int i = 0; i < a->npart; i++) {
+        const rc_case_part *x = &a->part[i], *y = &b->part[i];
+        eq &= x->id == y->id && strcmp(x->title, y->title) == 0 && x->rbody_id == y->rbody_id &&
+              x->nsurf == y->nsurf &&
+              (x->nsurf == 0 || memcmp(x->surf, y->surf, sizeof(int) * (size_t)x->nsurf) == 0);
+    }
+    for (int i = 0; i < a->ngrpart; i++) {
+        const rc_case_grpart *x = &a->grpart[i], *y = &b->grpart[i];
+        eq &= x->id == y->id && strcmp(x->title, y->title) == 0 && x->n == y->n &&
+              (x->n == 0 || memcmp(x->parts, y->parts, sizeof(int) * (size_t)x->n) == 0);
+    }
+    for (int i = 0; i < a->nfriction; i++) {
+        const rc_case_friction *x = &a->friction[i], *y = &b->friction[i];
+        eq &= x->id == y->id && strcmp(x->title, y->title) == 0 && x->ifric == y->ifric &&
+              x->ifiltr == y->ifiltr && x->xfreq == y->xfreq && x->iform == y->iform &&
+              x->dt_ref == y->dt_ref && x->area == y->area &&
+              fricset_equal(&x->def, &y->def) && x->npair == y->npair;
+        if (x->npair != y->npair) return 0;
+        for (int k = 0; k < x->npair; k++) {
+            const rc_case_fricpair *p = &x->pair[k], *q = &y->pair[k];
+            eq &= p->grpart1 == q->grpart1 && p->grpart2 == q->grpart2 && p->part1 == q->part1 &&
+                  p->part2 == q->part2 && p->idir == q->idir &&
+                  fricset_equal(&p->set[0], &q->set[0]) && fricset_equal(&p->set[1], &q->set[1]);
+        }
+    }
+    for (int i = 0; i < a->nfricorient; i++) {
+        const rc_case_fricorient *x = &a->fricorient[i], *y = &b->fricorient[i];
+        eq &= x->id == y->id && strcmp(x->title, y->title) == 0 && x->n == y->n;
+        if (x->n != y->n) return 0;
+        for (int k = 0; k < x->n; k++) {
+            const rc_case_fricorient_item *p = &x->item[k], *q = &y->item[k];
+            eq &= p->grpart_id == q->grpart_id && p->part_id == q->part_id &&
+                  memcmp(p->v, q->v, sizeof p->v) == 0 && p->skew_id == q->skew_id &&
+                  p->phi == q->phi && p->iorth == q->iorth;
+        }
+    }
+    return eq;
 }
 
 /* Field-by-field equality of two cases, locations excepted. */
@@ -293,6 +421,7 @@ static int case_equal(const rc_case *a, const rc_case *b)
     for (int i = 0; i < a->nbcs; i++)
         eq &= a->bcs[i].id == b->bcs[i].id && memcmp(a->bcs[i].fix, b->bcs[i].fix, sizeof a->bcs[i].fix) == 0 &&
               a->bcs[i].grnod_id == b->bcs[i].grnod_id;
+    eq &= friction_equal(a, b);
     eq &= a->run.present == b->run.present && a->run.tend == b->run.tend && a->run.dtout == b->run.dtout;
     const rc_case_solver *s = &a->solver, *t = &b->solver;
     eq &= s->present == t->present && s->method == t->method && s->max_order == t->max_order &&
@@ -678,7 +807,7 @@ static void test_case_error_main_missing_is_eio(void)
 static void test_case_error_unknown_card(void)
 {
     EXPECT_INPUT_ERROR("unknown.rad", RUN_CARD "/FOO/1\nx\n", 3, "card /FOO/1", "unknown card");
-    EXPECT_INPUT_ERROR("planned.rad", RUN_CARD "/FRICTION/1\nx\n", 3, "card /FRICTION/1",
+    EXPECT_INPUT_ERROR("planned.rad", RUN_CARD "/IMPVEL/1\nx\n", 3, "card /IMPVEL/1",
                        "not supported yet");
     EXPECT_INPUT_ERROR("subtype.rad", RUN_CARD "/SURF/SEG/1\nx\n", 3, "card /SURF/SEG/1",
                        "not supported yet", "/SURF/PLANE");
@@ -837,6 +966,244 @@ static void test_case_error_run_solver(void)
                        "{1, 2, 3, 4, 5}");
 }
 
+/* ---- /FRICTION, /FRIC_ORIENT, /PART, /GRPART ---------------------------- */
+
+/* Defaults, blank lines, Radioss conventions (Iform 0 = 1, VISF 0 = 1,
+ * Xfreq 0 = no filter), the number of groups from the lines. */
+static void test_case_friction_defaults(void)
+{
+    const char *p = tmp_write("fricdef.rad",
+                              "/FRICTION/7\n"
+                              "\n" /* blank title */
+                              "\n" /* Ifric Ifiltr Xfreq Iform */
+                              "\n" /* C1..C5 */
+                              "\n" /* C6 Fric VISF */
+                              "\n" /* after the last line: ignored */
+                              "\n"
+                              "/FRICTION/8\n"
+                              "blank lines inside a group are lines of defaults\n"
+                              "         2         1                   0         0\n"
+                              "\n"
+                              "                   0                0.29                   0\n"
+                              "        17                            23\n" /* line 6 */
+                              "\n"
+                              "\n"
+                              "\n" /* ignored */
+                              "/FRICTION/9\n"
+                              "both a group and a part on side 1\n"
+                              "0,3,0.0037\n"
+                              "\n"
+                              "\n"
+                              "3,4,5,,,1\n" /* line 22 */
+                              "\n\n\n\n" RUN_CARD);
+    rc_case *c = load_ok(p);
+    ENSURE(c && c->nfriction == 3);
+    if (!c || c->nfriction != 3) { rc_case_free(c); return; }
+    const rc_case_friction *a = &c->friction[0], *b = &c->friction[1], *d = &c->friction[2];
+    ENSURE(a->id == 7 && a->title[0] == '\0' && a->ifric == 0 && a->ifiltr == 0 &&
+           a->xfreq == 1.0 && a->iform == 1 && a->dt_ref == 0 && a->area == 0 && a->npair == 0);
+    ENSURE(fricset_is(&a->def, 0, 0, 0, 0, 0, 0, 0, 1));
+    /* Xfreq written 0: filter off; Iform 0 means 1 */
+    ENSURE(b->ifric == 2 && b->ifiltr == 0 && b->xfreq == 0 && b->iform == 1);
+    ENSURE(fricset_is(&b->def, 0, 0, 0, 0, 0, 0, 0.29, 1));
+    ENSURE(b->npair == 1);
+    if (b->npair == 1) {
+        const rc_case_fricpair *q = &b->pair[0];
+        ENSURE(q->grpart1 == 17 && q->grpart2 == 0 && q->part1 == 0 && q->part2 == 23 &&
+               q->idir == 0 && q->loc.line == 13 && fricset_is(&q->set[0], 0, 0, 0, 0, 0, 0, 0, 1));
+    }
+    /* Ifiltr 3: a frequency; an orthotropic group of blank sets */
+    ENSURE(d->ifiltr == 3 && d->xfreq == 0.0037 && d->npair == 1);
+    if (d->npair == 1)
+        ENSURE(d->pair[0].idir == 1 && d->pair[0].grpart1 == 3 && d->pair[0].part1 == 5 &&
+               d->pair[0].loc.line == 22 && d->pair[0].set[1].visf == 1);
+    /* part_ID1 beside grpart_ID1: a warning (Radioss ignores the part) */
+    ENSURE(c->nwarnings == 1);
+    if (c->nwarnings == 1)
+        ENSURE(strstr(c->warnings[0], "fricdef.rad:22:") && strstr(c->warnings[0], "/FRICTION/9") &&
+               strstr(c->warnings[0], "part_ID1 = 5 ignored") &&
+               strstr(c->warnings[0], "grpart_ID1 = 3"));
+    rc_case_free(c);
+
+    /* the Renard checks apply to Ifric 3 only */
+    c = load_ok(tmp_write("fricnorenard.rad", "/FRICTION/1\nf\n2\n0.9,0.8,0.1,0.95,-1\n-2\n" RUN_CARD));
+    ENSURE(c && c->nfriction == 1 && c->friction[0].def.c[4] == -1);
+    rc_case_free(c);
+}
+
+/* /FRICTION header part: A = Ifric Ifiltr Xfreq Iform, B = C1..C5, C = C6 Fric VISF. */
+#define FRIC(a, b, c) "/FRICTION/5\nf\n" a "\n" b "\n" c "\n"
+/* A valid Renard set (C1..C5 and C6). */
+#define RENARD_B "0.31,0.23,0.41,0.17,0.0137"
+#define RENARD_C "0.371"
+
+static void test_case_error_friction_header(void)
+{
+    EXPECT_INPUT_ERROR("fr.rad", FRIC("4", "", "") RUN_CARD, 3, "card /FRICTION/5", "field Ifric",
+                       "expected an integer in {0, 1, 2, 3}", "\"4\"");
+    EXPECT_INPUT_ERROR("fr.rad", FRIC("0,4", "", "") RUN_CARD, 3, "field Ifiltr", "{0, 1, 2, 3}");
+    EXPECT_INPUT_ERROR("fr.rad", FRIC("0,0,,3", "", "") RUN_CARD, 3, "field Iform", "{0, 1, 2}",
+                       "\"3\"");
+    EXPECT_INPUT_ERROR("fr.rad", FRIC("0,1,1.0371", "", "") RUN_CARD, 3, "card /FRICTION/5",
+                       "field Xfreq", "in [0, 1] for Ifiltr = 1", "\"1.0371\"");
+    EXPECT_INPUT_ERROR("fr.rad", FRIC("0,2,-0.0371", "", "") RUN_CARD, 3, "field Xfreq",
+                       "in [0, 1] for Ifiltr = 2", "\"-0.0371\"");
+    EXPECT_INPUT_ERROR("fr.rad", FRIC("0,3,0", "", "") RUN_CARD, 3, "field Xfreq",
+                       "cut-off frequency > 0 [Hz] for Ifiltr = 3", "\"0\"");
+    EXPECT_INPUT_ERROR("fr.rad", FRIC("0,3,-13.7", "", "") RUN_CARD, 3, "field Xfreq", "\"-13.7\"");
+    /* Ifiltr 1, 2: the reference step of ricochet's continuous filter */
+    EXPECT_INPUT_ERROR("fr.rad", FRIC("0,1,0.371", "", "") RUN_CARD, 3, "card /FRICTION/5",
+                       "field Dt_ref", "Ifiltr = 1", "reference step Dt_ref > 0 [s]", "got blank");
+    EXPECT_INPUT_ERROR("fr.rad", FRIC("0,2,0.0371,,-1e-5", "", "") RUN_CARD, 3, "field Dt_ref",
+                       "non-negative", "\"-1e-5\"");
+    EXPECT_INPUT_ERROR("fr.rad", FRIC("0,2,0.0371,,0", "", "") RUN_CARD, 3, "field Dt_ref",
+                       "Ifiltr = 2", "got \"0\"");
+    EXPECT_INPUT_ERROR("fr.rad", FRIC("0,0,,,,-0.0137", "", "") RUN_CARD, 3, "field Area",
+                       "non-negative", "\"-0.0137\"");
+    EXPECT_INPUT_ERROR("fr.rad", FRIC("", "", "0,-0.0371") RUN_CARD, 5, "field Fric",
+                       "non-negative", "\"-0.0371\"");
+    EXPECT_INPUT_ERROR("fr.rad", FRIC("", "", "0,0,-1.37") RUN_CARD, 5, "field VISF",
+                       "non-negative");
+    EXPECT_INPUT_ERROR("fr.rad", FRIC("", "", "0,0,0,7") RUN_CARD, 5, "card /FRICTION/5",
+                       "at most 3 comma-separated fields");
+    EXPECT_INPUT_ERROR("fr.rad", "/FRICTION/5\nf\n3\n\n" RUN_CARD, 1, "card /FRICTION/5",
+                       "expected 3 data lines", "found 2");
+    EXPECT_INPUT_ERROR("fr.rad", "/FRICTION/5/2\nf\n\n\n\n" RUN_CARD, 1, "field unit_ID",
+                       "not supported yet");
+    EXPECT_INPUT_ERROR("fr.rad", "/FRICTION\nf\n\n\n\n" RUN_CARD, 1, "field fric_ID",
+                       "positive integer id");
+    EXPECT_INPUT_ERROR("frdup.rad", FRIC("", "", "") FRIC("1", "", "") RUN_CARD, 6,
+                       "card /FRICTION/5", "field fric_ID", "duplicate id 5", "frdup.rad:1");
+}
+
+static void test_case_error_friction_renard(void)
+{
+    /* each inequality, on the default set (line 4: C1..C5) */
+    EXPECT_INPUT_ERROR("rn.rad", FRIC("3", "0.31,0.23,0.41,0.17", RENARD_C) RUN_CARD, 4,
+                       "card /FRICTION/5", "field C5",
+                       "expected 0 < C5 < C6 = 0.371 (Renard: 0 < V_cr1 < V_cr2), got blank");
+    EXPECT_INPUT_ERROR("rn.rad", FRIC("3", "0.31,0.23,0.41,0.17,-0.0137", RENARD_C) RUN_CARD, 4,
+                       "field C5", "0 < C5", "\"-0.0137\"");
+    EXPECT_INPUT_ERROR("rn.rad", FRIC("3", "0.31,0.23,0.41,0.17,0.7", "0.5") RUN_CARD, 4,
+                       "field C5", "expected 0 < C5 < C6 = 0.5 (Renard: 0 < V_cr1 < V_cr2), got \"0.7\"");
+    EXPECT_INPUT_ERROR("rn.rad", FRIC("3", "0.31,0.23,0.41,0.17,0.371", RENARD_C) RUN_CARD, 4,
+                       "field C5", "C5 < C6 = 0.371", "\"0.371\""); /* equal */
+    EXPECT_INPUT_ERROR("rn.rad", FRIC("3", "0.45,0.23,0.41,0.17,0.0137", RENARD_C) RUN_CARD, 4,
+                       "field C1", "expected C1 <= C3 = 0.41 (Renard: mu_s <= mu_max), got \"0.45\"");
+    EXPECT_INPUT_ERROR("rn.rad", FRIC("3", "0.31,0.43,0.41,0.17,0.0137", RENARD_C) RUN_CARD, 4,
+                       "field C2", "expected C2 <= C3 = 0.41 (Renard: mu_d <= mu_max), got \"0.43\"");
+    EXPECT_INPUT_ERROR("rn.rad", FRIC("3", "0.31,0.37,0.41,0.33,0.0137", RENARD_C) RUN_CARD, 4,
+                       "field C4", "expected C4 <= C1 = 0.31 (Renard: mu_min <= mu_s), got \"0.33\"");
+    EXPECT_INPUT_ERROR("rn.rad", FRIC("3", "0.31,0.23,0.41,0.27,0.0137", RENARD_C) RUN_CARD, 4,
+                       "field C4", "expected C4 <= C2 = 0.23 (Renard: mu_min <= mu_d), got \"0.27\"");
+    /* in a group: direction 1 (line 7) and direction 2 (line 9) */
+    EXPECT_INPUT_ERROR("rn.rad",
+                       FRIC("3", RENARD_B, RENARD_C) "3,4,,,,1\n0.5,0.23,0.41,0.17,0.0137\n"
+                       RENARD_C "\n" RENARD_B "\n" RENARD_C "\n" RUN_CARD,
+                       7, "card /FRICTION/5", "field C1", "C1 <= C3 = 0.41", "\"0.5\"");
+    EXPECT_INPUT_ERROR("rn.rad",
+                       FRIC("3", RENARD_B, RENARD_C) "3,4,,,,1\n" RENARD_B "\n" RENARD_C "\n"
+                       "0.31,0.23,0.41,0.17,0.0137\n0.01\n" RUN_CARD,
+                       9, "card /FRICTION/5", "field C5", "C5 < C6 = 0.01", "\"0.0137\"");
+    /* and a valid Renard deck with both directions loads */
+    rc_case *c = load_ok(tmp_write("rn.rad", FRIC("3", RENARD_B, RENARD_C) "3,4,,,,1\n" RENARD_B
+                                   "\n" RENARD_C "\n" RENARD_B "\n" RENARD_C "\n" RUN_CARD));
+    ENSURE(c && c->friction[0].npair == 1 && c->friction[0].pair[0].set[1].c[5] == 0.371);
+    rc_case_free(c);
+}
+
+static void test_case_error_friction_groups(void)
+{
+    /* truncated groups: the message names the missing line (group at line 6) */
+    EXPECT_INPUT_ERROR("fg.rad", FRIC("", "", "") "3,4\n" RUN_CARD, 6, "card /FRICTION/5",
+                       "field C1 C2 C3 C4 C5", "part-pair group 1 (Idir = 0",
+                       "expected 3 lines, found 1", "missing line 2 of the group (C1 C2 C3 C4 C5)");
+    EXPECT_INPUT_ERROR("fg.rad", FRIC("", "", "") "3,4\n0.1\n" RUN_CARD, 6, "field C6 Fric VISF",
+                       "missing line 3 of the group (C6 Fric VISF)");
+    /* blank lines count as lines of the group */
+    EXPECT_INPUT_ERROR("fg.rad", FRIC("", "", "") "3,4,,,,1\n\n\n" RUN_CARD, 6,
+                       "field C1 C2 C3 C4 C5", "(Idir = 1", "expected 5 lines, found 3",
+                       "missing line 4 of the group (direction 2: C1 C2 C3 C4 C5)");
+    EXPECT_INPUT_ERROR("fg.rad", FRIC("", "", "") "3,4\n\n\n,,7,8,,1\n\n\n\n" RUN_CARD, 9,
+                       "part-pair group 2 (Idir = 1", "found 4",
+                       "missing line 5 of the group (direction 2: C6 Fric VISF)");
+    /* each side needs a group or a part */
+    EXPECT_INPUT_ERROR("fg.rad", FRIC("", "", "") "3\n\n\n" RUN_CARD, 6, "card /FRICTION/5",
+                       "field grpart_ID2 part_ID2", "side 2 of part-pair group 1",
+                       "got both blank or 0");
+    EXPECT_INPUT_ERROR("fg.rad", FRIC("", "", "") "3,4\n\n\n0,4,0,9\n\n\n" RUN_CARD, 9,
+                       "field grpart_ID1 part_ID1", "side 1 of part-pair group 2");
+    EXPECT_INPUT_ERROR("fg.rad", FRIC("", "", "") "\n3,4\n\n\n" RUN_CARD, 6,
+                       "field grpart_ID1 part_ID1", "side 1");
+    /* Idir, the unused columns, ids */
+    EXPECT_INPUT_ERROR("fg.rad", FRIC("", "", "") "3,4,,,,2\n\n\n" RUN_CARD, 6, "field Idir",
+                       "expected an integer in {0, 1}", "\"2\"");
+    EXPECT_INPUT_ERROR("fg.rad", FRIC("", "", "") "3,4,,,7\n\n\n" RUN_CARD, 6, "field blank",
+                       "\"7\"");
+    EXPECT_INPUT_ERROR("fg.rad", FRIC("", "", "") "3,4,-5\n\n\n" RUN_CARD, 6, "field part_ID1",
+                       "non-negative");
+    EXPECT_INPUT_ERROR("fg.rad", FRIC("", "", "") "3,4\n\n,-0.5\n" RUN_CARD, 8, "field Fric",
+                       "non-negative");
+}
+
+static void test_case_error_fric_orient(void)
+{
+    EXPECT_INPUT_ERROR("fo.rad", "/FRIC_ORIENT/3\no\n3\n0,0,0,0,37.1,1\n" RUN_CARD, 4,
+                       "card /FRIC_ORIENT/3", "field VX VY VZ", "non-zero vector", "(0, 0, 0)");
+    EXPECT_INPUT_ERROR("fo.rad", "/FRIC_ORIENT/3\no\n3\n\n" RUN_CARD, 4, "field VX VY VZ",
+                       "non-zero vector");
+    EXPECT_INPUT_ERROR("fo.rad", "/FRIC_ORIENT/3\no\n3\n1,0,0,7\n" RUN_CARD, 4,
+                       "card /FRIC_ORIENT/3", "field skew_ID", "not supported yet", "\"7\"");
+    EXPECT_INPUT_ERROR("fo.rad", "/FRIC_ORIENT/3\no\n3\n1,0,0,,,2\n" RUN_CARD, 4, "field Iorth",
+                       "expected an integer in {0, 1}");
+    EXPECT_INPUT_ERROR("fo.rad", "/FRIC_ORIENT/3\no\n3\n1,0,0\n0,0\n0,1,0\n" RUN_CARD, 5,
+                       "field grpart_ID part_ID", "orientation 2", "got both blank or 0");
+    EXPECT_INPUT_ERROR("fo.rad", "/FRIC_ORIENT/3\no\n3\n1,0,0\n,4\n" RUN_CARD, 5,
+                       "field VX VY VZ", "orientation 2", "truncated", "missing its line 2");
+    EXPECT_INPUT_ERROR("fo.rad", "/FRIC_ORIENT/3\no\n\n\n" RUN_CARD, 1, "card /FRIC_ORIENT/3",
+                       "at least one orientation");
+    EXPECT_INPUT_ERROR("fo.rad", "/FRIC_ORIENT/3\no\n3\n1,0,nan\n" RUN_CARD, 4, "field VZ",
+                       "\"nan\"");
+    EXPECT_INPUT_ERROR("fodup.rad",
+                       "/FRIC_ORIENT/3\no\n3\n1,0,0\n/FRIC_ORIENT/3\np\n,4\n0,0,1\n" RUN_CARD, 5,
+                       "card /FRIC_ORIENT/3", "field fric_orient_ID", "duplicate id 3");
+}
+
+static void test_case_error_part_grpart(void)
+{
+    /* a Radioss /PART pasted alone: ricochet's line 2 is required */
+    EXPECT_INPUT_ERROR("pt.rad", "/PART/4\nshell part\n        13         7\n" RUN_CARD, 1,
+                       "card /PART/4", "field rbody_ID", "found 1",
+                       "ricochet extension, required");
+    EXPECT_INPUT_ERROR("pt.rad", "/PART/4\np\n" RUN_CARD, 1, "card /PART/4", "field rbody_ID",
+                       "found 0");
+    EXPECT_INPUT_ERROR("pt.rad", "/PART/4\np\n\n0\n" RUN_CARD, 4, "card /PART/4", "field rbody_ID",
+                       "at least one surface id", "got \"0\"");
+    EXPECT_INPUT_ERROR("pt.rad", "/PART/4\np\n\n\n\n" RUN_CARD, 4, "field rbody_ID", "got blank");
+    EXPECT_INPUT_ERROR("pt.rad", "/PART/4\np\n\n7,12,-3\n" RUN_CARD, 4, "field surf_ID",
+                       "non-negative", "\"-3\"");
+    EXPECT_INPUT_ERROR("pt.rad", "/PART/4\np\n\n7\n1,2,3,4,5,6,7,8,9,10,11\n" RUN_CARD, 5,
+                       "card /PART/4", "at most 10 comma-separated fields");
+    EXPECT_INPUT_ERROR("pt.rad", "/PART/4\np\nsteel\n7\n" RUN_CARD, 3, "field prop_ID",
+                       "expected an integer", "\"steel\"");
+    EXPECT_INPUT_ERROR("pt.rad", "/PART/4\np\n,,,1.2.3\n7\n" RUN_CARD, 3, "field Thick");
+    EXPECT_INPUT_ERROR("ptdup.rad", "/PART/4\np\n\n7\n/PART/4\nq\n\n8\n" RUN_CARD, 5,
+                       "card /PART/4", "field part_ID", "duplicate id 4", "ptdup.rad:1");
+    /* /GRPART: PART only */
+    EXPECT_INPUT_ERROR("gp.rad", "/GRPART/GRPART/3\ng\n1\n" RUN_CARD, 1, "card /GRPART/GRPART/3",
+                       "not supported yet", "/GRPART/PART");
+    EXPECT_INPUT_ERROR("gp.rad", "/GRPART/3\ng\n1\n" RUN_CARD, 1, "missing subtype",
+                       "/GRPART/PART");
+    EXPECT_INPUT_ERROR("gp.rad", "/GRPART/PART/3\ng\n1,-2\n" RUN_CARD, 3, "card /GRPART/PART/3",
+                       "field part_ID", "non-negative");
+    EXPECT_INPUT_ERROR("gpdup.rad", "/GRPART/PART/3\ng\n1\n/GRPART/PART/3\nh\n2\n" RUN_CARD, 4,
+                       "field grpart_ID", "duplicate id 3");
+    /* a part id and a part group id may coincide: separate id spaces */
+    rc_case *c = load_ok(tmp_write("ptgp.rad", "/PART/3\np\n\n7\n/GRPART/PART/3\ng\n3\n" RUN_CARD));
+    ENSURE(c && c->npart == 1 && c->ngrpart == 1 && c->nwarnings == 0);
+    rc_case_free(c);
+}
+
 /* ---- Robustness --------------------------------------------------------- */
 
 /* Load and check the contract: OK, or an input error with a message that
@@ -925,6 +1292,12 @@ void suite_case(void)
     RUN_TEST(test_case_error_begin_units);
     RUN_TEST(test_case_error_grav_bcs_inivel);
     RUN_TEST(test_case_error_run_solver);
+    RUN_TEST(test_case_friction_defaults);
+    RUN_TEST(test_case_error_friction_header);
+    RUN_TEST(test_case_error_friction_renard);
+    RUN_TEST(test_case_error_friction_groups);
+    RUN_TEST(test_case_error_fric_orient);
+    RUN_TEST(test_case_error_part_grpart);
     RUN_TEST(test_case_robust_truncated_and_mutated);
     tmp_cleanup();
 }

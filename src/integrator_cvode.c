@@ -206,8 +206,8 @@ static void add_stats(void *cv, rc_stats *s)
 
 /* Output buffers for one record. */
 typedef struct frame_buf {
-    double *pos, *quat, *vel, *omega, *pen, *fload, *fdamp, *fn, *point, *normal;
-    int *mode;
+    double *pos, *quat, *vel, *omega, *pen, *fload, *fdamp, *fn, *point, *normal, *ffric, *vslip;
+    int *mode, *slip;
     double energy[RC_NENERGY];
     double *cpl; /* [9 ncoupling] coupling values (rc_cpl_frame) */
 } frame_buf;
@@ -215,7 +215,7 @@ typedef struct frame_buf {
 static void frame_free(frame_buf *f)
 {
     void *p[] = {f->pos, f->quat, f->vel, f->omega, f->pen, f->fload, f->fdamp, f->fn, f->point, f->normal, f->mode,
-                 f->cpl};
+                 f->cpl, f->ffric, f->vslip, f->slip};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
 }
 
@@ -234,9 +234,12 @@ static int frame_alloc(const rc_model *m, frame_buf *f)
     f->point = malloc(3 * ni * sizeof(double));
     f->normal = malloc(3 * ni * sizeof(double));
     f->mode = malloc(ni * sizeof(int));
+    f->ffric = malloc(3 * ni * sizeof(double));
+    f->vslip = malloc(ni * sizeof(double));
+    f->slip = malloc(ni * sizeof(int));
     f->cpl = malloc((9 * (size_t)m->cpl->n + 1) * sizeof(double));
     return f->pos && f->quat && f->vel && f->omega && f->pen && f->fload && f->fdamp && f->fn && f->point &&
-           f->normal && f->mode && f->cpl;
+           f->normal && f->mode && f->cpl && f->ffric && f->vslip && f->slip;
 }
 
 /* Fill and write one record at (t, y). */
@@ -261,6 +264,9 @@ static rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, 
         f->fn[i] = acts && r.fn > 0 ? r.fn : 0.0;
         memcpy(f->point + 3 * i, r.point, 3 * sizeof(double));
         memcpy(f->normal + 3 * i, r.normal, 3 * sizeof(double));
+        for (int k = 0; k < 3; k++) f->ffric[3 * i + k] = acts ? r.ft[k] : 0.0;
+        f->vslip[i] = acts ? r.vslip : 0.0;
+        f->slip[i] = acts && d->inter_slip[i];
         f->mode[i] = mode == RC_MODE_CLOSED     ? RC_OUT_MODE_CLOSED
                      : mode == RC_MODE_OPEN     ? RC_OUT_MODE_OPEN
                      : mode == RC_MODE_RELEASED ? RC_OUT_MODE_RELEASED
@@ -270,9 +276,12 @@ static rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, 
     if (!o) return RC_OK;
     const int nc = m->cpl->n;
     rc_cpl_frame(m, d, t, y, f->cpl);
-    rc_frame fr = {t, at_event, f->pos, f->quat, f->vel, f->omega, f->pen, f->fload, f->fdamp, f->fn, f->point,
-                   f->normal, f->mode, f->energy, f->cpl, f->cpl + nc, f->cpl + 2 * nc, f->cpl + 5 * nc,
-                   f->cpl + 8 * nc};
+    rc_frame fr = {.t = t, .at_event = at_event, .body_pos = f->pos, .body_quat = f->quat, .body_vel = f->vel,
+                   .body_omega = f->omega, .inter_pen = f->pen, .inter_fload = f->fload, .inter_fdamp = f->fdamp,
+                   .inter_fnormal = f->fn, .inter_point = f->point, .inter_normal = f->normal,
+                   .inter_mode = f->mode, .inter_ffric = f->ffric, .inter_vslip = f->vslip, .inter_slip = f->slip,
+                   .energy = f->energy, .cpl_force = f->cpl, .cpl_length = f->cpl + nc, .cpl_f1 = f->cpl + 2 * nc,
+                   .cpl_f2 = f->cpl + 5 * nc, .cpl_lowest = f->cpl + 8 * nc};
     return rc_output_frame(o, &fr, err);
 }
 

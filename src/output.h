@@ -51,6 +51,9 @@ typedef struct rc_frame {
     const double *inter_point;   /* [ninter*3] contact point, global [m]    */
     const double *inter_normal;  /* [ninter*3] unit normal, global [-]      */
     const int *inter_mode;       /* [ninter] RC_OUT_MODE_*                  */
+    const double *inter_ffric;   /* [ninter*3] friction force on the first body, global [N] */
+    const double *inter_vslip;   /* [ninter] sliding speed [m/s]            */
+    const int *inter_slip;       /* [ninter] 0 stick, 1 slip                */
     const double *energy;        /* [nenergy] [J]                           */
     const double *cpl_force;     /* [ncoupling] spring: f_e + f_damp (> 0 pulls
                                     the ends together); catenary: tension at end 1 [N] */

@@ -69,6 +69,8 @@ typedef struct frame_buf {
     double pos[NB * 3], quat[NB * 4], vel[NB * 3], omega[NB * 3];
     double pen[NI], fload[NI], fdamp[NI], fnormal[NI], point[NI * 3], normal[NI * 3];
     int mode[NI];
+    double ffric[NI * 3], vslip[NI];
+    int slip[NI];
     double energy[NE];
     rc_frame f;
 } frame_buf;
@@ -92,12 +94,20 @@ static void make_frame(frame_buf *b, int k, int with_inter)
     fill(b->normal, NI * 3, k, F_NORMAL);
     fill(b->energy, NE, k, F_ENERGY);
     b->mode[0] = k % 3;
-    rc_frame f = {val(k, F_TIME, 0), k == 2, b->pos, b->quat, b->vel, b->omega,
-                  b->pen, b->fload, b->fdamp, b->fnormal, b->point, b->normal, b->mode,
-                  b->energy, NULL, NULL, NULL, NULL /* no couplings */};
+    for (int i = 0; i < NI; i++) {
+        for (int j = 0; j < 3; j++) b->ffric[3 * i + j] = 0.0371 * (k + 1) * (j - 1.3);
+        b->vslip[i] = 0.0113 * k;
+        b->slip[i] = k % 2;
+    }
+    rc_frame f = {.t = val(k, F_TIME, 0), .at_event = k == 2, .body_pos = b->pos, .body_quat = b->quat,
+                  .body_vel = b->vel, .body_omega = b->omega, .inter_pen = b->pen, .inter_fload = b->fload,
+                  .inter_fdamp = b->fdamp, .inter_fnormal = b->fnormal, .inter_point = b->point,
+                  .inter_normal = b->normal, .inter_mode = b->mode, .inter_ffric = b->ffric,
+                  .inter_vslip = b->vslip, .inter_slip = b->slip, .energy = b->energy /* no couplings */};
     if (!with_inter) /* without interfaces the engine has nothing to hand over */
         f.inter_pen = f.inter_fload = f.inter_fdamp = f.inter_fnormal = f.inter_point =
-            f.inter_normal = NULL, f.inter_mode = NULL;
+            f.inter_normal = f.inter_ffric = f.inter_vslip = NULL,
+        f.inter_mode = f.inter_slip = NULL;
     b->f = f;
 }
 
@@ -233,6 +243,14 @@ static void test_output_roundtrip(void)
     size_t start[3] = {3, 1, 0}, count[3] = {1, 1, 4};
     ENSURE(nc_get_vara_double(ncid, var_id(ncid, "body_quaternion"), start, count, q) == NC_NOERR);
     for (int i = 0; i < 4; i++) ENSURE(q[i] == val(3, F_QUAT, 4 + i));
+    /* friction: frame 3, interface 0, the force vector; speed and mode */
+    double ff[3], vs;
+    int sl;
+    size_t s3[3] = {3, 0, 0}, c3[3] = {1, 1, 3}, s2[2] = {3, 0};
+    ENSURE(nc_get_vara_double(ncid, var_id(ncid, "inter_force_friction"), s3, c3, ff) == NC_NOERR);
+    for (int j = 0; j < 3; j++) ENSURE(ff[j] == 0.0371 * 4 * (j - 1.3));
+    ENSURE(nc_get_var1_double(ncid, var_id(ncid, "inter_slip_speed"), s2, &vs) == NC_NOERR && vs == 0.0113 * 3);
+    ENSURE(nc_get_var1_int(ncid, var_id(ncid, "inter_slip"), s2, &sl) == NC_NOERR && sl == 1);
     /* energies: one variable each, frame k entry j */
     for (int j = 0; j < NE; j++) {
         double en[NF];

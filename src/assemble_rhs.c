@@ -64,6 +64,11 @@ int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, do
     return 0;
 }
 
+double rc_friction_mu(const rc_model *m, int i, int dir, double p, double v, double fn)
+{
+    return fric_mu_r(m, &m->inter_fr[i], dir, p, v, fn, i);
+}
+
 void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, double t,
                           const double *y, rc_inter_report *r)
 {

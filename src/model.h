@@ -265,6 +265,9 @@ struct rc_case;
  * (after the TYPE6 interfaces are compiled, before the state layout). */
 rc_status rc_friction_compile(const struct rc_case *c, rc_model *m, rc_error *err);
 void rc_friction_print(const rc_model *m, int i, FILE *f);
+/* Friction coefficient of interface i, direction dir, at pressure p [Pa],
+ * sliding speed v [m/s], normal force fn [N] (the kernel's law, for tests). */
+double rc_friction_mu(const rc_model *m, int i, int dir, double p, double v, double fn);
 
 /* ---- Jacobian pattern (jacpattern.c) ------------------------------- */
 rc_status rc_jac_build(rc_model *m, rc_error *err);

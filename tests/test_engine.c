@@ -251,6 +251,44 @@ static void test_engine_jacobian_friction_cards_matches_finite_differences(void)
     jacobian_check(1);
 }
 
+/* Renard's law (/FRICTION Ifric 3, card 2 on interface 1): mu and dmu/dv
+ * continuous at V_cr1 = C5 and V_cr2 = C6, on the kernel's own function. */
+static void test_engine_renard_continuity(void)
+{
+    rc_case c;
+    build_case(&c);
+    add_friction_cards(&c);
+    rc_model *m = NULL;
+    rc_error e;
+    ENSURE(rc_model_compile(&c, &m, &e) == RC_OK);
+    if (!m) return;
+    ENSURE(m->inter_fr[1].kind == RC_FK_CARD && m->inter_fr[1].ifric == 3);
+    for (int dir = 0; dir < 2; dir++) {
+        const double *cs = m->inter_fr[1].set[dir];
+        const double bp[2] = {cs[4], cs[5]}; /* V_cr1, V_cr2 */
+        for (int k = 0; k < 2; k++) {
+            const double v = bp[k], h = 1e-7 * v;
+            double lo = rc_friction_mu(m, 1, dir, 3.1e5, v - h, 731.0);
+            double hi = rc_friction_mu(m, 1, dir, 3.1e5, v + h, 731.0);
+            double at = rc_friction_mu(m, 1, dir, 3.1e5, v, 731.0);
+            /* one-sided slopes from each side (second-order differences) */
+            double sl = (3 * at - 4 * lo + rc_friction_mu(m, 1, dir, 3.1e5, v - 2 * h, 731.0)) / (2 * h);
+            double sr = (-3 * at + 4 * hi - rc_friction_mu(m, 1, dir, 3.1e5, v + 2 * h, 731.0)) / (2 * h);
+            printf("    Renard set %d at v = %.3g m/s: mu %.9f | %.9f | %.9f, slopes %.3e | %.3e\n", dir + 1, v, lo, at,
+                   hi, sl, sr);
+            ENSURE_NEAR(lo, at, 0, 1e-9);
+            ENSURE_NEAR(hi, at, 0, 1e-9);
+            ENSURE_NEAR(sl, sr, 0, 1e-6);
+        }
+        /* the values of SPEC 6: mu_s at rest, mu_max at V_cr1, mu_min at V_cr2, -> mu_d */
+        ENSURE_NEAR(rc_friction_mu(m, 1, dir, 0, 0.0, 731.0), cs[0], 1e-15, 0);
+        ENSURE_NEAR(rc_friction_mu(m, 1, dir, 0, cs[4], 731.0), cs[2], 1e-15, 0);
+        ENSURE_NEAR(rc_friction_mu(m, 1, dir, 0, cs[5], 731.0), cs[3], 1e-15, 0);
+        ENSURE_NEAR(rc_friction_mu(m, 1, dir, 0, 1e6, 731.0), cs[1], 1e-9, 0);
+    }
+    rc_model_free(m);
+}
+
 /* Torque-free asymmetric top: quaternion norm held by projection, kinetic
  * energy and the angular momentum magnitude conserved. */
 static void test_engine_quaternion_drift_and_gyroscopic_invariants(void)
@@ -306,5 +344,6 @@ void suite_engine(void)
 {
     RUN_TEST(test_engine_jacobian_matches_finite_differences);
     RUN_TEST(test_engine_jacobian_friction_cards_matches_finite_differences);
+    RUN_TEST(test_engine_renard_continuity);
     RUN_TEST(test_engine_quaternion_drift_and_gyroscopic_invariants);
 }

@@ -111,7 +111,7 @@ static const var_spec var_table[V_COUNT] = {
     [V_EVENT_TIME] = {"event_time", NC_DOUBLE, 1, {D_EVENT}, U_TIME, "time of the event",
                       NULL},
     [V_EVENT_KIND] = {"event_kind", NC_STRING, 1, {D_EVENT}, U_ONE, "kind of event",
-                      "contact_close, contact_open, inter_start or inter_stop"},
+                      "docs/output-format.md lists the kinds"},
     [V_EVENT_ELEMENT] = {"event_element", NC_STRING, 1, {D_EVENT}, U_ONE,
                          "element concerned by the event", "e.g. /INTER/TYPE6/3"},
     [V_CPL_ID] = {"coupling_id", NC_INT, 1, {D_COUPLING}, U_ONE, "body coupling identifier (/COUPLING id)",

@@ -112,8 +112,12 @@ def plot_force(ds, prefix, written):
     for i in range(min(len(ids), MAX_CURVES)):
         name = f"/INTER {ids[i]}"
         line, = ax_t.plot(t, f[:, i], label=name)
-        ax_p.plot(p[:, i], f[:, i], color=line.get_color(), label=name)
-        ax_p.plot(p[at_event, i], f[at_event, i], "o", ms=3, color=line.get_color())
+        # the loops: only records in the contact zone (P >= 0); separated
+        # stretches are masked so that the loops are not joined across flights
+        pz = np.where(p[:, i] >= 0, p[:, i], np.nan)
+        ax_p.plot(pz, np.where(p[:, i] >= 0, f[:, i], np.nan), color=line.get_color(), label=name)
+        sel = at_event & (p[:, i] >= 0)
+        ax_p.plot(p[sel, i], f[sel, i], "o", ms=3, color=line.get_color())
     # events: vertical lines in time, dots on the loops (records at events)
     for k, te in enumerate(event_times(ds)):
         ax_t.axvline(te, color="grey", ls=":", lw=0.8, label="events" if k == 0 else None)
@@ -122,7 +126,7 @@ def plot_force(ds, prefix, written):
     ax_t.set_title(title(ds, "normal force"))
     ax_p.set_xlabel(label(ds, "inter_penetration"))
     ax_p.set_ylabel(label(ds, "inter_force_normal"))
-    ax_p.set_title("force-penetration (dots: records at events)")
+    ax_p.set_title("force-penetration in contact (dots: records at events)")
     for ax in (ax_t, ax_p):
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize="small")

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <tgmath.h>
 
+#include "imposed.h"
 #include "model.h"
 
 #define T double complex
@@ -108,6 +109,8 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
             rc_gravity(m, b, t, g);
             for (int k = 0; k < 3; k++) val[m->gwork_slot[3 * b + k]] -= m->body_mass[b] * g[k];
         }
+    /* imposed velocities (imposed_jac.inc): the work row, their rows */
+    if (m->imp && rc_imp_jac(m, d, t, y, val)) return 1;
     /* held DOFs: their rows are zero */
     if (m->nheld > 0)
         for (int64_t k = 0; k < m->nnz; k++)
@@ -116,3 +119,4 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
 }
 
 #include "coupling_jac.inc"
+#include "imposed_jac.inc"

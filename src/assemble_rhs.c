@@ -7,6 +7,7 @@
 #include <string.h>
 #include <tgmath.h>
 
+#include "imposed.h"
 #include "model.h"
 
 #define T double
@@ -61,6 +62,8 @@ int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, do
     }
     /* held DOFs (/BCS): the support takes whatever force acts */
     for (int k = 0; k < m->nheld; k++) ydot[m->held[k]] = 0.0;
+    /* imposed velocities (imposed_rhs.inc): their rates, the reactions' work */
+    if (m->imp) rc_imp_rhs(m, d, t, y, ydot);
     return 0;
 }
 
@@ -118,6 +121,9 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         /* total normal force, unclipped: release and re-close */
         if (mode != RC_MODE_OPEN) gi[RC_ROOT_FORCE] = r.fn;
         /* hysteresis: reversal on the curves, bounds on the Stiff line */
+        /* power law with RDF: the rate of P (approach / rebound) */
+        if (mode != RC_MODE_OPEN && m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0)
+            gi[RC_ROOT_HYST_A] = r.vn;
         if (mode != RC_MODE_OPEN && m->inter_iform[i] != 0) {
             if (br == RC_BR_ELASTIC) {
                 gi[RC_ROOT_HYST_A] = r.fl - r.fh;
@@ -135,3 +141,4 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
 }
 
 #include "coupling_rhs.inc"
+#include "imposed_rhs.inc"

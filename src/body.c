@@ -2,7 +2,9 @@
 #include <string.h>
 
 #include "coupling.h"
+#include "imposed.h"
 #include "model.h"
+#include "power.h"
 
 const double *rc_body_state(const rc_model *m, int b, const double *y)
 {
@@ -36,6 +38,7 @@ double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double
     rc_inter_report_eval(m, i, mode, d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y, &r);
     const double ax = m->inter_ascalex[i], P = r.p, F = r.fload;
     if (P <= 0) return 0.0;
+    if (m->inter_law[i] == RC_LAW_POWER) return rc_power_stored(m, i, P); /* integral of F_k */
     if (m->inter_iform[i] == 0)
         return m->inter_fscaleld[i] * ax * rc_table_integral(&m->table[m->inter_fct_ld[i]], 0.0, P / ax);
     const double k = m->inter_stiff[i];
@@ -103,8 +106,10 @@ void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, d
             e[RC_E_CATENARY] += ce[0];
         }
     }
+    /* minus the work done by the imposed velocities (imposed.c) */
+    if (m->imp) e[RC_E_IMPOSED] = y[m->imp->wadr];
     e[RC_E_TOTAL] = e[RC_E_KIN] + e[RC_E_POT] + e[RC_E_WORK] + e[RC_E_DAMP] + e[RC_E_FWORK] + e[RC_E_CPL_ELASTIC] +
-                    e[RC_E_CPL_DAMP] + e[RC_E_CATENARY];
+                    e[RC_E_CPL_DAMP] + e[RC_E_CATENARY] + e[RC_E_IMPOSED];
 }
 
 void rc_initial_state(const rc_model *m, double *y)

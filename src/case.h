@@ -65,7 +65,10 @@ typedef struct rc_case_rbody {
 } rc_case_rbody;
 
 /* /SURF/PLANE/surf_ID and /SURF/ELLIPS/surf_ID. */
-typedef enum { RC_CASE_SURF_PLANE = 1, RC_CASE_SURF_ELLIPS = 2 } rc_case_surf_kind;
+typedef enum {
+    RC_CASE_SURF_PLANE = 1, RC_CASE_SURF_ELLIPS = 2,
+    RC_CASE_SURF_CYL = 3, RC_CASE_SURF_BOX = 4 /* ricochet cards (case_cards_power.c) */
+} rc_case_surf_kind;
 
 typedef struct rc_case_surf {
     int id;
@@ -77,7 +80,13 @@ typedef struct rc_case_surf {
     int skew_id;              /* 0 only */
     int degree;               /* n, default 2 */
     double c[3];              /* centre [m] */
-    double abc[3];            /* semi-axes a, b, c [m] */
+    double abc[3];            /* semi-axes a, b, c [m]; CYL: radius in abc[0];
+                                 BOX: half-sizes along its axes u, v, w */
+    /* CYL: axis vector; BOX: axis u (v in axis2, w = u x v)             */
+    double axis[3], axis2[3];
+    double length;            /* CYL: length of the cylindrical part [m] */
+    int ends;                 /* CYL: 0 flat, 1 rounded (hemispherical caps) */
+    int cmode;                /* CYL: contact point 0 mid-length, 1 deepest */
     /* ricochet extension: rigid body carrying the surface (0: fixed in
      * space). Read from the documented extension field of each card.   */
     int rbody_id;
@@ -251,6 +260,8 @@ struct rc_case {
     int nrbody;  rc_case_rbody *rbody;
     int nsurf;   rc_case_surf *surf;
     int ntype6;  rc_case_type6 *type6;
+    int npower;  struct rc_case_power *power;   /* case_power.h */
+    int nimpvel; struct rc_case_impvel *impvel; /* case_power.h */
     int ninivel; rc_case_inivel *inivel;
     int ngrav;   rc_case_grav *grav;
     int nbcs;    rc_case_bcs *bcs;

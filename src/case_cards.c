@@ -949,7 +949,7 @@ typedef enum {
     RC_CARD_BEGIN, RC_CARD_NODE, RC_CARD_GRNOD, RC_CARD_RBODY, RC_CARD_PLANE, RC_CARD_ELLIPS,
     RC_CARD_TYPE6, RC_CARD_FUNCT, RC_CARD_INIVEL, RC_CARD_GRAV, RC_CARD_BCS, RC_CARD_RUN,
     RC_CARD_SOLVER, RC_CARD_CPL_SPRING, RC_CARD_CPL_CATENARY, RC_CARD_PART, RC_CARD_GRPART,
-    RC_CARD_FRICTION, RC_CARD_FRIC_ORIENT
+    RC_CARD_FRICTION, RC_CARD_FRIC_ORIENT, RC_CARD_POWER, RC_CARD_CYL, RC_CARD_BOX, RC_CARD_IMPVEL
 } rc_card_kind;
 
 /* Supported cards; a family (kw with a sub) lists each subtype. */
@@ -967,13 +967,15 @@ static const struct {
     {"COUPLING", "SPRING", RC_CARD_CPL_SPRING}, {"COUPLING", "CATENARY", RC_CARD_CPL_CATENARY},
     {"PART", NULL, RC_CARD_PART},      {"GRPART", "PART", RC_CARD_GRPART},
     {"FRICTION", NULL, RC_CARD_FRICTION}, {"FRIC_ORIENT", NULL, RC_CARD_FRIC_ORIENT},
+    {"INTER", "POWER", RC_CARD_POWER}, {"SURF", "CYL", RC_CARD_CYL},
+    {"SURF", "BOX", RC_CARD_BOX},      {"IMPVEL", NULL, RC_CARD_IMPVEL},
 };
 
 /* Radioss cards without meaning for rigid bodies: skipped with a warning. */
 static const char *const rc_ignored[] = {"TITLE", "ANALY",  "DEF_SOLID", "DEF_SHELL", "IOFLAG",
                                          "SPMD",  "RANDOM", "PROP",      "MAT"};
 /* Radioss cards ricochet plans to support: an error until then. */
-static const char *const rc_planned[] = {"IMPVEL", "UNIT", "SKEW", "SENSOR"};
+static const char *const rc_planned[] = {"UNIT", "SKEW", "SENSOR"};
 
 static int rc_in_list(const char *kw, const char *const *list, int n)
 {
@@ -1005,6 +1007,10 @@ static rc_status rc_card_call(rc_reader *rd, const rc_block *b, rc_card_kind kin
     case RC_CARD_GRPART: return rc_card_grpart(rd, b);
     case RC_CARD_FRICTION: return rc_card_friction(rd, b);
     case RC_CARD_FRIC_ORIENT: return rc_card_fricorient(rd, b);
+    case RC_CARD_POWER: return rc_card_power(rd, b);
+    case RC_CARD_CYL: return rc_card_cyl(rd, b);
+    case RC_CARD_BOX: return rc_card_box(rd, b);
+    case RC_CARD_IMPVEL: return rc_card_impvel(rd, b);
     }
     return RC_SET(rd->err, RC_EINTERNAL, "unknown card kind %d", (int)kind);
 }

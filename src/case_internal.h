@@ -57,7 +57,7 @@ typedef struct rc_block {
 typedef enum {
     RC_IDK_FUNCT, RC_IDK_NODE, RC_IDK_GRNOD, RC_IDK_RBODY, RC_IDK_SURF,
     RC_IDK_INTER, RC_IDK_INIVEL, RC_IDK_GRAV, RC_IDK_BCS, RC_IDK_COUPLING, RC_IDK_PART,
-    RC_IDK_GRPART, RC_IDK_FRICTION, RC_IDK_FRICORIENT, RC_IDK_COUNT
+    RC_IDK_GRPART, RC_IDK_FRICTION, RC_IDK_FRICORIENT, RC_IDK_IMPVEL, RC_IDK_COUNT
 } rc_id_kind;
 
 /* One id as declared, for the duplicate check. */
@@ -86,7 +86,8 @@ typedef struct rc_reader {
     long main_bytes;                          /* size of the main file      */
 
     int capfunct, capnode, capgrnod, caprbody, capsurf, captype6, capinivel,
-        capgrav, capbcs, capwarn, capcoupling, cappart, capgrpart, capfriction, capfricorient;
+        capgrav, capbcs, capwarn, capcoupling, cappart, capgrpart, capfriction, capfricorient,
+        cappower, capimpvel;
     rc_id_entry *ids[RC_IDK_COUNT];
     int nids[RC_IDK_COUNT], capids[RC_IDK_COUNT];
     int seq;
@@ -188,6 +189,12 @@ rc_status rc_header(rc_reader *rd, const rc_block *b, int nkw, rc_id_mode mode,
 /* /COUPLING/SPRING and /COUPLING/CATENARY (case_cards_coupling.c). */
 rc_status rc_card_coupling_spring(rc_reader *rd, const rc_block *b);
 rc_status rc_card_coupling_catenary(rc_reader *rd, const rc_block *b);
+
+/* /INTER/POWER, /SURF/CYL, /SURF/BOX, /IMPVEL (case_cards_power.c). */
+rc_status rc_card_power(rc_reader *rd, const rc_block *b);
+rc_status rc_card_cyl(rc_reader *rd, const rc_block *b);
+rc_status rc_card_box(rc_reader *rd, const rc_block *b);
+rc_status rc_card_impvel(rc_reader *rd, const rc_block *b);
 
 /* Read one block: dispatch on its keyword. */
 rc_status rc_card_dispatch(rc_reader *rd, const rc_block *b);

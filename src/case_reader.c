@@ -778,7 +778,7 @@ static rc_status rc_check_dups(rc_reader *rd)
     static const char *const names[RC_IDK_COUNT] = {
         "fct_ID", "node_ID", "grnod_ID", "rbody_ID", "surf_ID",
         "inter_ID", "inivel_ID", "grav_ID", "bcs_ID", "cpl_ID", "part_ID", "grpart_ID",
-        "fric_ID", "fric_orient_ID"};
+        "fric_ID", "fric_orient_ID", "impvel_ID"};
     const rc_id_entry *worst = NULL, *first = NULL;
     int wkind = 0;
     for (int k = 0; k < RC_IDK_COUNT; k++) {
@@ -851,6 +851,8 @@ void rc_case_free(rc_case *c)
     free(c->rbody);
     free(c->surf);
     free(c->type6);
+    free(c->power);
+    free(c->impvel);
     free(c->inivel);
     free(c->grav);
     free(c->bcs);

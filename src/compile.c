@@ -12,7 +12,10 @@
 #include "case.h"
 #include "coupling.h"
 #include "error.h"
+#include "geom.h"
+#include "imposed.h"
 #include "model.h"
+#include "power.h"
 
 #define ALLOC(ptr, n)                                                               \
     do {                                                                            \
@@ -217,7 +220,8 @@ static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
 {
     for (int s = 0; s < c->nsurf; s++) {
         const rc_case_surf *cs = &c->surf[s];
-        const char *kind = cs->kind == RC_CASE_SURF_PLANE ? "PLANE" : "ELLIPS";
+        static const char *const kinds[5] = {"", "PLANE", "ELLIPS", "CYL", "BOX"};
+        const char *kind = kinds[cs->kind];
         int b = -1;
         if (cs->rbody_id) {
             b = find_rbody(c, cs->rbody_id);
@@ -229,7 +233,9 @@ static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
         m->surf_body[s] = b;
         /* local frame: body frame = global at t = 0, origin at the CoM */
         const double *org = b >= 0 ? m->body_y0 + RC_NB * b : m->ground_y0;
-        if (cs->kind == RC_CASE_SURF_PLANE) {
+        if (cs->kind == RC_CASE_SURF_CYL || cs->kind == RC_CASE_SURF_BOX) {
+            rc_geom_surface(cs, m, s, org); /* geom_compile.c */
+        } else if (cs->kind == RC_CASE_SURF_PLANE) {
             double n[3], len = 0;
             for (int k = 0; k < 3; k++) {
                 n[k] = cs->m1[k] - cs->m[k];
@@ -314,16 +320,11 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     if (s1 < 0 || s2 < 0)
         RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field %s: expected the id of a /SURF, got %d (no such surface)",
                  LOC(t6->line_loc[0]), card, s1 < 0 ? "surf_ID1" : "surf_ID2", s1 < 0 ? t6->surf1 : t6->surf2);
-    /* order the pair: a is a sphere */
-    if (m->surf_kind[s1] != RC_SURF_SPHERE) {
-        int tmp = s1;
-        s1 = s2;
-        s2 = tmp;
-    }
-    if (m->surf_kind[s1] != RC_SURF_SPHERE)
-        RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, fields surf_ID1/surf_ID2: plane against plane is not a contact pair ricochet supports (one surface must be a sphere)",
-                 LOC(t6->line_loc[0]), card);
-    m->inter_pair[i] = m->surf_kind[s2] == RC_SURF_PLANE ? RC_PAIR_SPHERE_PLANE : RC_PAIR_SPHERE_SPHERE;
+    /* order the pair (a: sphere or cylinder) and name its kind (geom_compile.c) */
+    char where[600];
+    snprintf(where, sizeof where, LOCFMT "card %s", LOC(t6->line_loc[0]), card);
+    rc_status pst = rc_geom_pair(m, s1, s2, &s1, &s2, &m->inter_pair[i], where, err);
+    if (pst) return pst;
     m->inter_sa[i] = s1;
     m->inter_sb[i] = s2;
     m->inter_ba[i] = m->surf_body[s1];
@@ -415,6 +416,8 @@ static rc_status layout(rc_model *m, rc_error *err)
     ny = rc_cpl_layout(m, ny);
     /* a gravity that varies in time has no potential: integrate its work */
     m->gwork_adr = m->grav_table >= 0 ? ny++ : -1;
+    /* work of the imposed velocities (imposed.c) */
+    ny = rc_imp_layout(m, ny);
     m->ny = ny;
     /* rows of held DOFs (accelerations set to zero), for rhs and Jacobian */
     m->nheld = 0;
@@ -455,6 +458,7 @@ static rc_status layout(rc_model *m, rc_error *err)
         if (fr->widx >= 0) a[fr->widx] = m->atol_energy;
     }
     rc_cpl_atol(m);
+    if (m->imp) m->atol[m->imp->wadr] = m->atol_energy;
     return RC_OK;
 }
 
@@ -523,9 +527,10 @@ rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->surf_p, 3 * m->nsurf);
     ALLOC(m->surf_n, 3 * m->nsurf);
     ALLOC(m->surf_r, m->nsurf);
+    ALLOC(m->surf_ext, RC_SURF_NEXT * m->nsurf);
     if ((st = compile_surfaces(c, m, err))) goto fail;
     /* interfaces */
-    m->ninter = c->ntype6;
+    m->ninter = c->ntype6 + c->npower; /* TYPE6, then /INTER/POWER */
     ALLOC(m->inter_id, m->ninter);
     ALLOC(m->inter_pair, m->ninter);
     ALLOC(m->inter_sa, m->ninter);
@@ -556,11 +561,17 @@ rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->inter_oidx, m->ninter);
     ALLOC(m->inter_fr, m->ninter);
     ALLOC(m->inter_name, m->ninter);
-    for (int i = 0; i < m->ninter; i++)
+    ALLOC(m->inter_law, m->ninter);
+    ALLOC(m->inter_pw, m->ninter);
+    for (int i = 0; i < c->ntype6; i++)
         if ((st = compile_type6(c, m, i, err))) goto fail;
+    for (int k = 0; k < c->npower; k++) /* power_compile.c */
+        if ((st = rc_power_compile(c, m, k, c->ntype6 + k, err))) goto fail;
     if ((st = rc_friction_compile(c, m, err))) goto fail;
     /* couplings (coupling_compile.c) */
     if ((st = rc_cpl_compile(c, m, err))) goto fail;
+    /* imposed velocities (imposed.c) */
+    if ((st = rc_imp_compile(c, m, err))) goto fail;
     /* states, tolerances, Jacobian pattern */
     if ((st = layout(m, err))) goto fail;
     if ((st = rc_jac_build(m, err))) goto fail;
@@ -580,6 +591,8 @@ void rc_model_free(rc_model *m)
         for (int i = 0; i < m->ninter; i++) free(m->inter_name[i]);
     rc_jac_free(m);
     rc_cpl_free(m->cpl);
+    rc_power_free(m);
+    rc_imp_free(m->imp);
     void *arrays[] = {m->case_path, m->table, m->body_id, m->body_fixed, m->body_yadr, m->body_mass,
                       m->body_J, m->body_Jinv, m->body_y0, m->body_grav, m->body_dofmask, m->surf_id, m->surf_kind,
                       m->surf_body, m->surf_p, m->surf_n, m->surf_r, m->inter_id, m->inter_pair,
@@ -589,7 +602,8 @@ void rc_model_free(rc_model *m)
                       m->inter_fct_ld, m->inter_fct_dv, m->inter_fct_df, m->inter_eadr,
                       m->inter_fct_ul, m->inter_iform, m->inter_icor, m->inter_inacti, m->inter_stiff,
                       m->inter_fscaleul, m->inter_ns, m->inter_hidx, m->inter_oidx, m->inter_fr,
-                      m->inter_name, m->atol, m->held, m->row_held, m->gwork_slot};
+                      m->inter_name, m->atol, m->held, m->row_held, m->gwork_slot, m->surf_ext,
+                      m->inter_law, m->inter_pw};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     free(m);
 }
@@ -611,14 +625,19 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
     if (m->nbody > 20) fprintf(f, "  ... %d more\n", m->nbody - 20);
     fprintf(f, "surfaces    %d\n", m->nsurf);
     fprintf(f, "interfaces  %d\n", m->ninter);
-    for (int i = 0; i < m->ninter && i < 20; i++)
+    for (int i = 0; i < m->ninter && i < 20; i++) {
+        if (m->inter_law[i] == RC_LAW_POWER) {
+            rc_power_print(m, i, f); /* power_compile.c */
+            continue;
+        }
         fprintf(f, "  %-18s %s, Iform %d, Gap %.5g, Visc %.5g, Stiff %.5g, Inacti %d, Tstart %.5g, Tstop %.5g\n",
-                m->inter_name[i], m->inter_pair[i] == RC_PAIR_SPHERE_PLANE ? "sphere-plane" : "sphere-sphere",
-                m->inter_iform[i], m->inter_gap[i], m->inter_visc[i], m->inter_stiff[i], m->inter_inacti[i],
-                m->inter_tstart[i], m->inter_tstop[i]);
+                m->inter_name[i], rc_geom_pair_name(m->inter_pair[i]), m->inter_iform[i], m->inter_gap[i],
+                m->inter_visc[i], m->inter_stiff[i], m->inter_inacti[i], m->inter_tstart[i], m->inter_tstop[i]);
+    }
     for (int i = 0; i < m->ninter && i < 20; i++) rc_friction_print(m, i, f);
     if (m->ninter > 20) fprintf(f, "  ... %d more\n", m->ninter - 20);
     rc_cpl_print_summary(m, f);
+    rc_imp_print(m, f);
     fprintf(f, "states      %d, Jacobian nonzeros %lld\n", m->ny, (long long)m->nnz);
     fprintf(f, "run         end time %.6g s, output every %.6g s\n", m->tend, m->dtout);
     fprintf(f, "solver      CVODE BDF (max order %d), Newton, KLU; rtol %.3g\n", m->max_order, m->rtol);

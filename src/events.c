@@ -10,6 +10,7 @@
 
 #include "coupling.h"
 #include "events.h"
+#include "power.h"
 
 rc_data *rc_data_new(const rc_model *m)
 {
@@ -21,7 +22,13 @@ rc_data *rc_data_new(const rc_model *m)
     d->inter_track = calloc(n, sizeof(int));
     d->inter_slip = calloc(n, sizeof(int));
     d->cpl = rc_cpl_data_new(m);
-    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->cpl) {
+    int imp_ok = 1;
+    if (m->imp) { /* imposed velocities: scratch of rhs and Jacobian (imposed.c) */
+        d->imp_free = calloc((size_t)m->ny, sizeof(double));
+        d->imp_scratch = calloc(3 * (size_t)m->ny, sizeof(double));
+        imp_ok = d->imp_free && d->imp_scratch;
+    }
+    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->cpl || !imp_ok) {
         rc_data_free(d);
         return NULL;
     }
@@ -37,6 +44,8 @@ void rc_data_free(rc_data *d)
     free(d->inter_track);
     free(d->inter_slip);
     rc_cpl_data_free(d->cpl);
+    free(d->imp_free);
+    free(d->imp_scratch);
     free(d);
 }
 
@@ -126,6 +135,8 @@ static void classify(const rc_model *m, rc_data *d, int i, double t, double *y, 
         set_state(fh, r.fl, changed);
         d->inter_branch[i] = r.vn > 0 ? RC_BR_LOAD : RC_BR_ELASTIC;
     }
+    /* power law: the rebound damping factor acts while P decreases */
+    if (m->inter_law[i] == RC_LAW_POWER) d->inter_branch[i] = r.vn < 0 ? RC_BR_UNLOAD : RC_BR_LOAD;
     d->inter_mode[i] = RC_MODE_CLOSED;
     report(m, d, i, t, y, &r);
     if (!(r.fn > 0)) d->inter_mode[i] = RC_MODE_RELEASED;
@@ -177,6 +188,18 @@ static const char *step_branch(const rc_model *m, rc_data *d, int i, double t, d
                                int *changed)
 {
     const int mode = d->inter_mode[i], br = d->inter_branch[i];
+    /* power law: approach (LOAD) and rebound (UNLOAD, RDF) branches */
+    if (m->inter_law[i] == RC_LAW_POWER && (mode == RC_MODE_CLOSED || mode == RC_MODE_RELEASED)) {
+        if (br == RC_BR_LOAD && r[RC_ROOT_HYST_A] < 0) {
+            d->inter_branch[i] = RC_BR_UNLOAD;
+            return "rdf_rebound";
+        }
+        if (br == RC_BR_UNLOAD && r[RC_ROOT_HYST_A] > 0) {
+            d->inter_branch[i] = RC_BR_LOAD;
+            return "rdf_approach";
+        }
+        return NULL;
+    }
     if (m->inter_iform[i] == 0 || (mode != RC_MODE_CLOSED && mode != RC_MODE_RELEASED)) return NULL;
     double *fh = own(m, i, m->inter_hidx[i], y);
     rc_inter_report q;

@@ -7,7 +7,10 @@
 #ifndef RC_FRICTION_H
 #define RC_FRICTION_H
 
-enum { RC_FK_NONE = 0, RC_FK_TYPE6 = 1, RC_FK_CARD = 2 };      /* law source */
+enum { RC_FK_NONE = 0, RC_FK_TYPE6 = 1, RC_FK_CARD = 2, RC_FK_STEP5 = 3 }; /* law source */
+/* step5 friction of /INTER/POWER (kind RC_FK_STEP5, form viscous, no state;
+ * step5.h): its parameters in set[0]; slip = 1 means capped at f_max. */
+enum { RC_S5_MUS = 0, RC_S5_VS = 1, RC_S5_MUD = 2, RC_S5_VD = 3, RC_S5_FMAX = 4 };
 enum { RC_FF_VISCOUS = 1, RC_FF_INCREMENTAL = 2 };               /* formulation */
 enum { RC_FS_C1 = 0, RC_FS_FRIC = 6, RC_FS_VISF = 7, RC_FS_N = 8 }; /* set layout */
 

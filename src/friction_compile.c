@@ -255,6 +255,10 @@ void rc_friction_print(const rc_model *m, int i, FILE *f)
     if (fr->kind == RC_FK_TYPE6)
         fprintf(f, "  %-18s friction (TYPE6) Sfric %.5g N, Fric %.5g, stick stiffness %.5g N/m\n", m->inter_name[i],
                 fr->sfric, fr->fric, fr->kt);
+    if (fr->kind == RC_FK_STEP5)
+        fprintf(f, "  %-18s friction step5: mu_s %.5g at v_s %.5g m/s, mu_d %.5g beyond v_d %.5g m/s, f_max %.5g N%s\n",
+                m->inter_name[i], fr->set[0][RC_S5_MUS], fr->set[0][RC_S5_VS], fr->set[0][RC_S5_MUD],
+                fr->set[0][RC_S5_VD], fr->set[0][RC_S5_FMAX], fr->set[0][RC_S5_FMAX] > 0 ? "" : " (none)");
     if (fr->kind == RC_FK_CARD)
         fprintf(f, "  %-18s friction /FRICTION/%d: %s law, %s form%s, filter tau %.5g s, pressure area %.5g m^2%s\n",
                 m->inter_name[i], fr->card_id, law[fr->ifric & 3],

@@ -26,6 +26,7 @@
 #include "events.h"
 #include "model.h"
 #include "output.h"
+#include "power.h"
 
 /* A jump in ydot whose effect over one step, relative to the error weight,
  * exceeds this fraction triggers a restart after an event [-]. */
@@ -288,7 +289,7 @@ static rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, 
 static const char *const energy_name[RC_NENERGY] = {
     "energy_kinetic",        "energy_potential",  "energy_contact_work", "energy_damping", "energy_friction_work",
     "energy_contact_stored", "energy_hysteresis", "energy_friction",     "energy_coupling_elastic",
-    "energy_coupling_damping", "energy_catenary", "energy_total"};
+    "energy_coupling_damping", "energy_catenary", "energy_imposed", "energy_total"};
 static const char *const energy_long[RC_NENERGY] = {
     "kinetic energy of the free bodies",
     "gravitational potential energy",
@@ -301,7 +302,9 @@ static const char *const energy_long[RC_NENERGY] = {
     "elastic energy stored in the spring-damper couplings",
     "energy dissipated by the coupling dampers",
     "elastic and gravitational energy of the catenary lines (work done by their ends)",
-    "kinetic + potential + contact work + damping + friction work + couplings (constant in exact arithmetic)"};
+    "minus the work done on the bodies by the imposed velocities (/IMPVEL reactions)",
+    "kinetic + potential + contact work + damping + friction work + couplings + imposed (constant in exact "
+    "arithmetic)"};
 
 static rc_status open_output(const rc_model *m, const char *path, rc_output **o, rc_error *err)
 {
@@ -309,7 +312,7 @@ static rc_status open_output(const rc_model *m, const char *path, rc_output **o,
     if (!path) return RC_OK;
     const char **types = malloc(((size_t)m->ninter + 1) * sizeof(char *));
     if (!types) RC_RAISE(err, RC_ENOMEM, "out of memory");
-    for (int i = 0; i < m->ninter; i++) types[i] = "TYPE6";
+    for (int i = 0; i < m->ninter; i++) types[i] = m->inter_law[i] == RC_LAW_POWER ? "POWER" : "TYPE6";
     rc_output_meta meta = {m->title, m->case_path, m->checksum, m->unit_mass, m->unit_length, m->unit_time,
                            "CVODE BDF, Newton, KLU sparse direct, rootfinding", m->rtol, m->atol_pos,
                            m->atol_quat, m->atol_vel, m->atol_omega, m->atol_energy, m->nbody, m->body_id,

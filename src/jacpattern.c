@@ -16,6 +16,7 @@
 
 #include "coupling.h"
 #include "error.h"
+#include "imposed.h"
 #include "model.h"
 
 static int cmp_i64(const void *a, const void *b)
@@ -206,6 +207,14 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
         for (int b = 0; b < m->nbody; b++)
             for (int k = 0; k < 3 && m->body_yadr[b] >= 0; k++)
                 key[n++] = (int64_t)(m->body_yadr[b] + 7 + k) * ny + m->gwork_adr;
+    /* imposed velocities: their work row, the q-dependence of rotations */
+    if (m->imp) {
+        rc_status ist = rc_imp_pattern_keys(m, &key, &n, err);
+        if (ist) {
+            free(key);
+            return ist;
+        }
+    }
     /* sort, unique, split into CSC */
     qsort(key, (size_t)n, sizeof(int64_t), cmp_i64);
     int64_t u = 0;
@@ -233,6 +242,10 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
         for (int b = 0; b < m->nbody; b++)
             for (int k = 0; k < 3 && m->body_yadr[b] >= 0; k++)
                 m->gwork_slot[3 * b + k] = find_slot(m, m->gwork_adr, m->body_yadr[b] + 7 + k);
+    }
+    if (m->imp) {
+        rc_status ist = rc_imp_slots(m, err);
+        if (ist) return ist;
     }
     for (int b = 0; b < m->nbody; b++) {
         rc_status st = fill_slots(m, &m->jb_body[b], err);

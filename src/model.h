@@ -43,12 +43,24 @@
 #define RC_JB_MAX ((2 * 6 + RC_NS_MAX) * (2 * RC_NB + RC_NS_MAX)) /* largest dense block */
 
 /* Analytic surface kinds. */
-typedef enum { RC_SURF_PLANE = 1, RC_SURF_SPHERE = 2 } rc_surf_kind;
+typedef enum { RC_SURF_PLANE = 1, RC_SURF_SPHERE = 2, RC_SURF_CYL = 3, RC_SURF_BOX = 4 } rc_surf_kind;
+
+/* Extra parameters of a surface (surf_ext, RC_SURF_NEXT per surface):
+ *   cylinder: [0] half-length of the cylindrical part [m], [1] ends (0 flat,
+ *             1 rounded), [2] contact point (0 mid-length, 1 deepest);
+ *             its axis (unit, body frame) is surf_n, its radius surf_r;
+ *   box:      [0..2] half-sizes along its axes [m], [3..11] the three unit
+ *             axes u, v, w in the body frame (row k at 3 + 3 k). */
+#define RC_SURF_NEXT 12
 
 /* Geometry pair of an interface (surface kinds, ordered). */
 typedef enum {
     RC_PAIR_SPHERE_PLANE = 1, /* surface a: sphere, surface b: plane */
-    RC_PAIR_SPHERE_SPHERE = 2 /* a, b: spheres                        */
+    RC_PAIR_SPHERE_SPHERE = 2, /* a, b: spheres                       */
+    RC_PAIR_CYL_PLANE = 3,    /* a: cylinder, b: plane                */
+    RC_PAIR_CYL_BOX = 4,      /* a: cylinder, b: box (nearest face)   */
+    RC_PAIR_CYL_CYL = 5,      /* a, b: cylinders with parallel axes   */
+    RC_PAIR_SPHERE_BOX = 6    /* a: sphere, b: box (nearest face)     */
 } rc_pair_kind;
 
 /* Interface modes (discrete state, changed only at events):
@@ -114,6 +126,7 @@ struct rc_model {
     int gwork_adr;       /* state: potential energy of a time-varying gravity,
                             E' = -sum m g(t).v [J]; -1 when gravity is constant */
     int64_t *gwork_slot; /* [3*nbody] Jacobian slots (row gwork_adr, columns v) */
+    struct rc_imposed *imp; /* /IMPVEL imposed velocities (imposed.h); NULL: none */
 
     /* analytic surfaces */
     int nsurf;
@@ -123,6 +136,7 @@ struct rc_model {
     double *surf_p;      /* [nsurf*3] local point (plane point / sphere centre) in body frame [m] */
     double *surf_n;      /* [nsurf*3] local unit outward normal (plane) [-] */
     double *surf_r;      /* [nsurf] sphere radius [m] */
+    double *surf_ext;    /* [nsurf*RC_SURF_NEXT] cylinder and box parameters (above) */
 
     /* curves */
     int ntable;
@@ -155,6 +169,8 @@ struct rc_model {
     int *inter_oidx;     /* [ninter] index of the Inacti offset, -1 */
     rc_fric *inter_fr;   /* [ninter] friction (friction.h); kind RC_FK_NONE: none */
     char **inter_name;   /* [ninter] "/INTER/TYPE6/<id>" */
+    int *inter_law;      /* [ninter] normal law RC_LAW_TYPE6 / RC_LAW_POWER (power.h) */
+    struct rc_power *inter_pw; /* [ninter] power-law parameters (power.h), law POWER */
 
     /* state vector */
     int ny;
@@ -187,6 +203,9 @@ typedef struct rc_data {
     int *inter_track;    /* [ninter] 1: Inacti 5 offset follows the separation */
     int *inter_slip;     /* [ninter] friction: 0 stick, 1 slip */
     struct rc_cpl_data *cpl; /* couplings: catenary warm starts, workspace (coupling.h) */
+    double *imp_free;    /* [ny] imposed velocities: the free accelerations of
+                            their rows at the last rhs (imposed.h), NULL: none */
+    double *imp_scratch; /* [3*ny] imposed velocities: Jacobian scratch */
     long n_rhs, n_jac, n_root;
     int fail_inter;      /* element that produced a non-finite force, -1 */
     double fail_t;
@@ -243,12 +262,13 @@ const double *rc_body_state(const rc_model *m, int b, const double *y);
  * elastic energy stored in the contacts (normal and tangential), hysteresis
  * dissipation (= normal work - normal stored), friction dissipation (=
  * friction work - tangential stored), coupling energies (spring elastic,
- * damper dissipation, catenary lines: coupling.h), total (kinetic +
- * potential + work + damping + friction work + couplings; constant in exact
+ * damper dissipation, catenary lines: coupling.h), minus the work done by
+ * the imposed velocities (/IMPVEL, imposed.h), total (kinetic + potential +
+ * work + damping + friction work + couplings + imposed; constant in exact
  * arithmetic). */
 enum {
     RC_E_KIN, RC_E_POT, RC_E_WORK, RC_E_DAMP, RC_E_FWORK, RC_E_STORED, RC_E_HYST, RC_E_FRIC,
-    RC_E_CPL_ELASTIC, RC_E_CPL_DAMP, RC_E_CATENARY, RC_E_TOTAL, RC_NENERGY
+    RC_E_CPL_ELASTIC, RC_E_CPL_DAMP, RC_E_CATENARY, RC_E_IMPOSED, RC_E_TOTAL, RC_NENERGY
 };
 void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, double e[RC_NENERGY]);
 /* Normal elastic energy stored in interface i (recoverable by unloading) [J]. */

@@ -807,7 +807,7 @@ static void test_case_error_main_missing_is_eio(void)
 static void test_case_error_unknown_card(void)
 {
     EXPECT_INPUT_ERROR("unknown.rad", RUN_CARD "/FOO/1\nx\n", 3, "card /FOO/1", "unknown card");
-    EXPECT_INPUT_ERROR("planned.rad", RUN_CARD "/IMPVEL/1\nx\n", 3, "card /IMPVEL/1",
+    EXPECT_INPUT_ERROR("planned.rad", RUN_CARD "/SKEW/1\nx\n", 3, "card /SKEW/1",
                        "not supported yet");
     EXPECT_INPUT_ERROR("subtype.rad", RUN_CARD "/SURF/SEG/1\nx\n", 3, "card /SURF/SEG/1",
                        "not supported yet", "/SURF/PLANE");

@@ -7,6 +7,8 @@
 
 #include "../src/case.h"
 #include "../src/case_coupling.h"
+#include "../src/case_power.h"
+#include "../src/imposed.h"
 #include "../src/model.h"
 #include "harness.h"
 
@@ -339,6 +341,184 @@ static void test_engine_quaternion_drift_and_gyroscopic_invariants(void)
     rc_model_free(m);
 }
 
+/* ---- power law, cylinders, boxes, imposed velocities (issue 5) ------- */
+/* Four bodies: 1 a roller (cylinder, offset from its CoM, tilted axis, full
+ * inertia) on a fixed plane and under body 2, a box; 3 carries a sphere on
+ * the box and a cylinder beside the roller (parallel axes); 4 a capsule
+ * (rounded ends, deepest-point contact) on the plane. /INTER/POWER roller-
+ * plane (m1, m3 < 1 regularised, m2 > 1, RDF, step5 friction capped),
+ * roller-box (stiffness and damping splines), sphere-box (m2 < 1); TYPE6
+ * cylinder-cylinder (incremental friction) and capsule-plane; /IMPVEL: the
+ * box's X velocity and the capsule's rotation (XX, ZZ). */
+static rc_case_funct pfn[5];
+static double pfx0[] = {-0.001, 0.0, 0.0004, 0.001, 0.003}, pfy0[] = {-90.0, 0.0, 41.0, 230.0, 1900.0}; /* stiff */
+static double pfx1[] = {-5.0, -1.0, 0.0, 1.0, 5.0}, pfy1[] = {-31.0, -4.1, 0.0, 3.7, 27.0};           /* damp */
+static double pfx2[] = {0.0, 0.01, 1.0}, pfy2[] = {0.2, 0.29, 1.3};                                    /* v(t) */
+static double pfx3[] = {0.0, 0.5, 1.0}, pfy3[] = {1.1, 2.3, 1.7};                                      /* w(t) */
+static rc_case_node pnodes[4] = {{1, {0.0013, 0.0011, 0.0497}, {0}},
+                                 {2, {0.0021, -0.0017, 0.1311}, {0}},
+                                 {3, {0.0371, 0.0413, 0.1307}, {0}},
+                                 {4, {0.5013, 0.0021, 0.0541}, {0}}};
+static rc_case_rbody prb[4];
+static rc_case_surf psf[7];
+static rc_case_type6 pt6[2];
+static rc_case_power ppw[3];
+static rc_case_impvel pimp[3];
+static rc_case_grnod pgrn[2];
+static int pgrn_nodes[2][1] = {{2}, {4}};
+
+static void build_power_case(rc_case *c)
+{
+    memset(c, 0, sizeof *c);
+    c->path = "engine-power-test";
+    pfn[0] = (rc_case_funct){71, "stiff", 5, pfx0, pfy0, {0}};
+    pfn[1] = (rc_case_funct){72, "damp", 5, pfx1, pfy1, {0}};
+    pfn[2] = (rc_case_funct){73, "v(t)", 3, pfx2, pfy2, {0}};
+    pfn[3] = (rc_case_funct){74, "w(t)", 3, pfx3, pfy3, {0}};
+    pfn[4] = (rc_case_funct){7, "load", 5, fx0, fy0, {0}};
+    c->nfunct = 5;
+    c->funct = pfn;
+    c->nnode = 4;
+    c->node = pnodes;
+    memset(prb, 0, sizeof prb);
+    const double J[4][6] = {{2.1e-3, 1.7e-3, 2.9e-3, 1.3e-4, -2.2e-4, 0.7e-4}, {3.1e-2, 2.3e-2, 4.7e-2, 0, 0, 0},
+                            {1.1e-3, 1.3e-3, 0.9e-3, 0, 0, 0}, {0.7e-3, 0.9e-3, 0.5e-3, 0.1e-3, 0, 0}};
+    const double mass[4] = {0.731, 2.37, 0.413, 0.291};
+    for (int b = 0; b < 4; b++) {
+        prb[b].id = 11 + b;
+        prb[b].node_id = 1 + b;
+        prb[b].mass = mass[b];
+        memcpy(prb[b].J, J[b], sizeof J[b]);
+    }
+    c->nrbody = 4;
+    c->rbody = prb;
+    memset(psf, 0, sizeof psf);
+    /* roller: lowest generator 0.8 mm into the plane, top 0.6 mm into the box */
+    psf[0] = (rc_case_surf){.id = 21, .kind = RC_CASE_SURF_CYL, .c = {0.0023, 0.0005, 0.0492}, .abc = {0.05, 0.05, 0.05},
+                            .axis = {1.0, 0.05, 0.02}, .length = 0.2, .rbody_id = 11};
+    psf[1] = (rc_case_surf){.id = 22, .kind = RC_CASE_SURF_PLANE, .m = {0.0, 0.0, 0.0}, .m1 = {0.011, -0.007, 1.0}};
+    psf[2] = (rc_case_surf){.id = 23, .kind = RC_CASE_SURF_BOX, .c = {0.0, 0.0, 0.1286}, .abc = {0.15, 0.1, 0.03},
+                            .axis = {1.0, 0.03, 0.0}, .axis2 = {0.0, 1.0, 0.01}, .rbody_id = 12};
+    psf[3] = (rc_case_surf){.id = 24, .kind = RC_CASE_SURF_ELLIPS, .degree = 2, .c = {0.05, 0.02, 0.1782},
+                            .abc = {0.02, 0.02, 0.02}, .rbody_id = 13};
+    psf[4] = (rc_case_surf){.id = 25, .kind = RC_CASE_SURF_CYL, .c = {0.0023, 0.0805, 0.0492}, .abc = {0.031, 0.031, 0.031},
+                            .axis = {1.0, 0.05, 0.02}, .length = 0.1, .rbody_id = 13};
+    psf[5] = (rc_case_surf){.id = 26, .kind = RC_CASE_SURF_CYL, .c = {0.5023, 0.0011, 0.0521}, .abc = {0.02, 0.02, 0.02},
+                            .axis = {0.3, 0.1, 1.0}, .length = 0.08, .ends = 1, .cmode = 1, .rbody_id = 14};
+    c->nsurf = 6;
+    c->surf = psf;
+    /* the roller's neighbour overlaps it by 0.5 mm */
+    const double *a = psf[0].axis, ay = a[1] / sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    psf[4].c[1] = psf[0].c[1] + (0.05 + 0.031 - 0.001) / sqrt(1.0 - ay * ay);
+    memset(ppw, 0, sizeof ppw);
+    ppw[0] = (rc_case_power){.id = 41, .surf1 = 22, .surf2 = 21, .ispline = 4, .irdf = 1, .k = 3.7e4, .m1 = 0.7,
+                             .c = 2.9e3, .m2 = 1.3, .m3 = 0.6, .rdf = 0.001, .dreg = 5e-4, .vreg = 1e-6,
+                             .tstop = 1e30, .mus = 0.31, .vs = 0.21, .mud = 0.23, .vd = 1.9, .fmax = 0.0};
+    ppw[1] = (rc_case_power){.id = 42, .surf1 = 21, .surf2 = 23, .fct_stiff = 71, .fct_damp = 72, .ispline = 3,
+                             .irdf = 1, .k = 0.0, .m1 = 2.0, .c = 0.0, .m2 = 1.0, .m3 = 1.5, .rdf = 0.013,
+                             .dreg = 1e-6, .vreg = 1e-6, .tstop = 1e30, .mus = 0.41, .vs = 7.3, .mud = 0.2,
+                             .vd = 9.1, .fmax = 30.0};
+    ppw[2] = (rc_case_power){.id = 43, .surf1 = 24, .surf2 = 23, .ispline = 4, .irdf = 2, .k = 2.3e7, .m1 = 1.5,
+                             .c = 3.1e4, .m2 = 0.8, .m3 = 0.7, .rdf = 0.001, .dreg = 1e-3, .vreg = 0.6,
+                             .tstop = 1e30};
+    for (int k = 0; k < 3; k++) ppw[k].line_loc[0] = (rc_loc){"engine-power-test", 1};
+    c->npower = 3;
+    c->power = ppw;
+    memset(pt6, 0, sizeof pt6);
+    for (int k = 0; k < 2; k++) {
+        pt6[k].id = 31 + k; pt6[k].tstop = 1e30; pt6[k].fct_ld = 7; pt6[k].ascalex = 1.3; pt6[k].fscaleld = 0.77;
+        pt6[k].visc = 3.7; pt6[k].ascalef = 1.0; pt6[k].ascalev = 1.0; pt6[k].fscalev = 1.0; pt6[k].fscaleul = 1.0;
+    }
+    pt6[0].surf1 = 21; pt6[0].surf2 = 25; pt6[0].fric = 0.37; pt6[0].stiff = 3.1e4; /* incremental friction */
+    pt6[1].surf1 = 22; pt6[1].surf2 = 26;
+    c->ntype6 = 2;
+    c->type6 = pt6;
+    pgrn[0] = (rc_case_grnod){.id = 91, .n = 1, .nodes = pgrn_nodes[0]};
+    pgrn[1] = (rc_case_grnod){.id = 92, .n = 1, .nodes = pgrn_nodes[1]};
+    c->ngrnod = 2;
+    c->grnod = pgrn;
+    memset(pimp, 0, sizeof pimp);
+    pimp[0] = (rc_case_impvel){.id = 1, .fct_id = 73, .dir = 0, .grnod_id = 91, .ascale = 0.7, .fscale = 1.3, .tstop = 1e30};
+    pimp[1] = (rc_case_impvel){.id = 2, .fct_id = 74, .dir = 3, .grnod_id = 92, .ascale = 1.1, .fscale = 2.9, .tstop = 1e30};
+    pimp[2] = (rc_case_impvel){.id = 3, .fct_id = 73, .dir = 5, .grnod_id = 92, .ascale = 0.3, .fscale = -3.7, .tstop = 1e30};
+    c->nimpvel = 3;
+    c->impvel = pimp;
+    gr = (rc_case_grav){.id = 1, .fct_id = 0, .dir = 2, .ascale = 1.0, .fscale = -9.81};
+    c->ngrav = 1;
+    c->grav = &gr;
+    c->run = (rc_case_run){1, 0.01, 0.001, {0}};
+    c->solver = (rc_case_solver){0, 1, 5, 100000, 1e-8, 1e-11, 1e-11, 1e-8, 1e-8, 1e-9, 0, 0, {0}};
+}
+
+/* Near the initial pose: every body turned a little (non-unit quaternion),
+ * moving and spinning, own states of high entropy. */
+static void power_entropy_state(const rc_model *m, double *y)
+{
+    rc_initial_state(m, y);
+    static const double dq[4][4] = {{1.0003, 0.0021, -0.0013, 0.0017}, {0.9991, -0.0011, 0.0007, 0.0023},
+                                    {1.0011, 0.0019, 0.0009, -0.0031}, {0.9997, 0.0013, -0.0021, 0.0011}};
+    static const double dv[4][6] = {{0.31, -0.23, -0.17, 3.1, -2.3, 4.7}, {0.53, 0.19, 0.07, 0.7, 0.3, -0.9},
+                                    {-0.41, 0.17, 0.53, -1.9, 0.7, 2.2}, {0.13, -0.29, -0.37, 1.3, -0.7, 2.9}};
+    for (int b = 0; b < 4; b++) {
+        double *s = y + m->body_yadr[b];
+        for (int k = 0; k < 3; k++) s[k] += 1e-5 * (k + 1) * (b % 2 ? 1 : -1);
+        for (int k = 0; k < 4; k++) s[3 + k] = dq[b][k];
+        for (int k = 0; k < 6; k++) s[7 + k] = dv[b][k];
+    }
+    for (int i = 0; i < m->ninter; i++)
+        for (int k = 0; k < m->inter_ns[i]; k++) y[m->inter_eadr[i] + k] = 0.013 * (k + 1) + 0.7 * i;
+    const rc_fric *fr = &m->inter_fr[3]; /* TYPE6 cylinder-cylinder: F_t off the plane */
+    const double ft[3] = {13.7, -8.1, 2.3};
+    for (int k = 0; k < 3 && fr->tidx >= 0; k++) y[m->inter_eadr[3] + fr->tidx + k] = ft[k];
+    y[m->imp->wadr] = 0.37;
+}
+
+static void test_engine_jacobian_power_cylinders_impvel_matches_finite_differences(void)
+{
+    rc_case c;
+    build_power_case(&c);
+    rc_model *m = NULL;
+    rc_error e;
+    rc_status st = rc_model_compile(&c, &m, &e);
+    if (st) printf("    %s\n", e.msg);
+    ENSURE(st == RC_OK);
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    power_entropy_state(m, y);
+    for (int i = 0; i < m->ninter; i++) {
+        rc_inter_report r;
+        rc_inter_report_eval(m, i, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+        printf("    %s: P = %.4g m, v_n = %.4g m/s, slip speed %.4g m/s, F_n %.4g N\n", m->inter_name[i], r.p, r.vn,
+               r.vslip, r.fn);
+        ENSURE(r.p > 0); /* every contact penetrates in this state */
+    }
+    int bad = 0, outside = 0, combos = 0;
+    double maxerr = 0;
+    const int modes[2] = {RC_MODE_CLOSED, RC_MODE_RELEASED};
+    for (int md = 0; md < 2; md++)
+        for (int br = 0; br < 3; br++)
+            for (int sl = 0; sl < 2; sl++) {
+                for (int i = 0; i < m->ninter; i++) {
+                    d->inter_mode[i] = modes[md];
+                    d->inter_branch[i] = br;
+                    d->inter_track[i] = 0;
+                    d->inter_slip[i] = sl;
+                }
+                if (getenv("RC_DEBUG_JAC")) printf("    mode %d branch %d slip %d\n", modes[md], br, sl);
+                maxerr = fmax(maxerr, jac_fd_error(m, d, y, &bad, &outside));
+                combos++;
+            }
+    printf("    jacobian (power, cylinders, box, /IMPVEL): %d states, %lld nonzeros, %d mode combinations, max scaled "
+           "|J - FD| = %.2e\n",
+           m->ny, (long long)m->nnz, combos, maxerr);
+    ENSURE(bad == 0);
+    ENSURE(outside == 0);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 void suite_engine(void);
 void suite_engine(void)
 {
@@ -346,4 +526,5 @@ void suite_engine(void)
     RUN_TEST(test_engine_jacobian_friction_cards_matches_finite_differences);
     RUN_TEST(test_engine_renard_continuity);
     RUN_TEST(test_engine_quaternion_drift_and_gyroscopic_invariants);
+    RUN_TEST(test_engine_jacobian_power_cylinders_impvel_matches_finite_differences);
 }

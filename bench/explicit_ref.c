@@ -305,18 +305,19 @@ static int run_column(long N, double R, double m, double k, double zeta, double 
  * and the contact modes switched only at located events, so that the
  * right-hand side is smooth inside every step:
  *   contact j is active iff g_j = min(p_j, k p_j + c_j pdot_j) > 0
- * (law "clip": the max(0, k p + c pdot) law above), or, with law "ricochet",
- * an open contact closes only when p_j crosses zero upwards and a closed one
- * opens when k p + c pdot crosses zero (ricochet's event semantics, which
- * differ from the clipped law only when a contact that opened at zero force
- * comes back before its penetration returned to zero).
+ * (law "clip": the max(0, k p + c pdot) law above), or, with law
+ * "noreclose", an open contact closes only when p_j crosses zero upwards and
+ * a closed one opens when k p + c pdot crosses zero (the event rule of
+ * ricochet before its RELEASED mode: it differs from the clipped law when a
+ * contact that opened at zero force comes back while still penetrating, and
+ * lets the bodies pass through each other; kept as a diagnostic).
  * A step that would change any mode is cut by bisection on its length down
  * to 1e-13 s; the modes are flipped at the end of the cut step.
  */
 typedef struct chain {
     long N;
     double R, m, k, c0, c1;
-    int law_ricochet;
+    int law_noreclose;
     int *active;
     double *z, *v;   /* state */
     double *zt, *vt; /* stage state */
@@ -362,7 +363,7 @@ static int chain_want(const chain *ch, long j, const double *z, const double *v,
 {
     double p, fr;
     chain_contact(ch, j, z, v, &p, &fr);
-    if (!ch->law_ricochet) return fmin(p, fr) > 0.0;
+    if (!ch->law_noreclose) return fmin(p, fr) > 0.0;
     if (cur) return fr > 0.0;
     /* open: closes only when p crosses zero upwards over the step */
     double p0, fr0;
@@ -414,7 +415,7 @@ static int run_reference(long N, double R, double m, double k, double zeta, doub
     ch.k = k;
     ch.c0 = c_floor >= 0 ? c_floor : 2.0 * zeta * sqrt(k * m);
     ch.c1 = 2.0 * zeta * sqrt(k * m / 2.0);
-    ch.law_ricochet = !strcmp(law, "ricochet");
+    ch.law_noreclose = !strcmp(law, "noreclose");
     double **arr[] = {&ch.z, &ch.v, &ch.zt, &ch.vt, &ch.k1z, &ch.k1v, &ch.k2z, &ch.k2v,
                       &ch.k3z, &ch.k3v, &ch.k4z, &ch.k4v, &ch.z1, &ch.v1};
     for (size_t q = 0; q < sizeof arr / sizeof arr[0]; q++)
@@ -459,7 +460,7 @@ static int run_reference(long N, double R, double m, double k, double zeta, doub
                     }
                 }
             }
-            /* apply after all decisions (the ricochet law reads the step start) */
+            /* apply after all decisions (the noreclose law reads the step start) */
             for (long j = 0; j < N; j++) {
                 const int w = chain_want(&ch, j, ch.z1, ch.v1, ch.active[j], ch.z, ch.v);
                 ch.active[j] = w;
@@ -489,7 +490,7 @@ static int run_reference(long N, double R, double m, double k, double zeta, doub
         f[j] = ch.active[j] ? fmax(fr, 0.0) : 0.0;
         nactive += ch.active[j];
     }
-    printf("case=reference\nstatus=ok\nlaw=%s\nN=%ld\nh=%.9e\n", ch.law_ricochet ? "ricochet" : "clip", N, h);
+    printf("case=reference\nstatus=ok\nlaw=%s\nN=%ld\nh=%.9e\n", ch.law_noreclose ? "noreclose" : "clip", N, h);
     printf("steps=%ld\nevent_cuts=%ld\nrhs_evals=%ld\nevents=%ld\n", steps, cuts, ch.rhs_evals, events);
     printf("wall_time=%.9e\npeak_rss_kb=%ld\n", wall, peak_rss_kb());
     printf("force_bottom=%.12e\nforce_top=%.12e\nactive_contacts=%ld\nmax_speed=%.12e\ntop_height=%.12e\n", f[0],
@@ -514,7 +515,7 @@ static void usage(FILE *fp)
     fprintf(fp, "usage: explicit_ref drop m k c h t_end dt_factor\n"
                 "       explicit_ref column N R m k zeta gap t_end dt_factor [FORCES_FILE]\n"
                 "       explicit_ref reference N R m k zeta c_floor gap t_end h law [FORCES_FILE]\n"
-                "           (c_floor < 0: 2 zeta sqrt(k m); law: clip | ricochet)\n");
+                "           (c_floor < 0: 2 zeta sqrt(k m); law: clip | noreclose)\n");
 }
 
 int main(int argc, char **argv)
@@ -533,7 +534,7 @@ int main(int argc, char **argv)
     }
     if (argc >= 2 && !strcmp(argv[1], "reference") && (argc == 12 || argc == 13)) {
         const double N = arg(argv, 2);
-        if (N < 1 || N != floor(N) || (strcmp(argv[11], "clip") && strcmp(argv[11], "ricochet"))) {
+        if (N < 1 || N != floor(N) || (strcmp(argv[11], "clip") && strcmp(argv[11], "noreclose"))) {
             usage(stderr);
             return 2;
         }

@@ -1,7 +1,7 @@
 /*
  * rc_time: time ricochet's integration alone, through the public API.
  *
- *   rc_time CASE [REPEAT]
+ *   rc_time CASE [REPEAT [T_END]]
  *
  * Loads and compiles CASE once, then runs it REPEAT times (default 1) with
  * no output file (rc_run_options.output_path = NULL), so that the wall time
@@ -9,6 +9,8 @@
  * times its loop without I/O. Prints key=value lines: the statistics of the
  * fastest run, the load and compile times, and the peak RSS of this process
  * (meaningful when started through bench/peakrss, see bench/README.md).
+ * T_END > 0 replaces the case's end time (used to measure the memory of a
+ * long run from a short one: the solver allocates everything at the start).
  */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
@@ -28,11 +30,12 @@ static double now(void)
 
 int main(int argc, char **argv)
 {
-    if (argc < 2 || argc > 3) {
-        fprintf(stderr, "usage: rc_time CASE [REPEAT]\n");
+    if (argc < 2 || argc > 4) {
+        fprintf(stderr, "usage: rc_time CASE [REPEAT [T_END]]\n");
         return 2;
     }
-    const int repeat = argc == 3 ? atoi(argv[2]) : 1;
+    const int repeat = argc >= 3 ? atoi(argv[2]) : 1;
+    const double t_end = argc == 4 ? atof(argv[3]) : 0.0;
     rc_error e;
     memset(&e, 0, sizeof e);
     rc_case *c = NULL;
@@ -54,6 +57,7 @@ int main(int argc, char **argv)
     for (int k = 0; k < (repeat > 0 ? repeat : 1); k++) {
         rc_run_options opt;
         memset(&opt, 0, sizeof opt);
+        opt.t_end_override = t_end;
         rc_stats s;
         rc_status st = rc_run(m, &opt, &s, &e);
         if (st) {

@@ -29,7 +29,7 @@ all: $(BIN) $(TESTBIN)
 deps:
 	@bash scripts/install-deps.sh
 
-$(BUILD)/obj/%.o: src/%.c $(wildcard src/*.h include/ricochet/*.h)
+$(BUILD)/obj/%.o: src/%.c $(wildcard src/*.h src/*.inc include/ricochet/*.h)
 	@mkdir -p $(dir $@)
 	$(CC) $(ALLCFLAGS) -c $< -o $@
 

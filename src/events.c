@@ -140,6 +140,11 @@ static void classify(const rc_model *m, rc_data *d, int i, double t, double *y, 
     d->inter_mode[i] = RC_MODE_CLOSED;
     report(m, d, i, t, y, &r);
     if (!(r.fn > 0)) d->inter_mode[i] = RC_MODE_RELEASED;
+    /* a friction law without state (viscous forms, step5) may start at its
+     * limit or cap */
+    const rc_fric *fr = &m->inter_fr[i];
+    if (d->inter_mode[i] == RC_MODE_CLOSED && fr->kind != RC_FK_NONE && fr->form == RC_FF_VISCOUS && r.slip_root > 0)
+        d->inter_slip[i] = 1;
     /* the elastic energy found in the contact at activation enters the
      * ledger as contact work (so the hysteresis dissipation starts at 0) */
     double *w = y + m->inter_eadr[i];

@@ -1,6 +1,6 @@
 /*
  * step5 and the step5 friction coefficient of the power-law contact
- * (SPEC 7 [PW-FRIC], docs/theory.md 7.3).
+ * (SPEC 7 [PW-FRIC], docs/theory.md 9.4).
  *
  * step5(x, x0, h0, x1, h1) is the quintic step of MSC ADAMS and RecurDyn:
  *   h0                                      x <= x0

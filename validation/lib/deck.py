@@ -104,6 +104,41 @@ class Deck:
                  line(("r", p2[0]), ("r", p2[1]), ("r", p2[2])),
                  line(("r", lambda0), ("r", leq), ("r", d)), title=title)
 
+    def power(self, iid, s1, s2, k=None, m1=None, c=None, m2=None, m3=None, fct_stiff=0, fct_damp=0, ispline=0,
+              irdf=0, rdf=None, dreg=None, vreg=None, tstart=None, tstop=None, mus=None, vs=None, mud=None,
+              vd=None, fmax=None, kt=None, title="power-law contact"):
+        """/INTER/POWER (docs/case-format.md): None leaves a field blank (its default)."""
+        lines = [line(("i", s1), ("i", s2), ("i", fct_stiff), ("i", fct_damp), ("i", ispline), ("i", irdf)),
+                 line(("r", k), ("r", m1), ("r", c), ("r", m2), ("r", m3)),
+                 line(("r", rdf), ("r", dreg), ("r", vreg), ("r", tstart), ("r", tstop)),
+                 line(("r", mus), ("r", vs), ("r", mud), ("r", vd), ("r", fmax))]
+        if kt is not None:
+            lines.append(line(("r", kt)))
+        self.add(f"/INTER/POWER/{iid}", *lines, title=title)
+
+    def cylinder(self, sid, body, centre, axis, radius, length, ends=0, cmode=0, title="cylinder"):
+        """/SURF/CYL: body (0 = fixed), centre, axis vector, radius, length, ends 0 flat / 1 rounded,
+        contact point 0 mid-length / 1 deepest."""
+        self.add(f"/SURF/CYL/{sid}", line(("i", body), ("i", ends), ("i", cmode)),
+                 line(("r", centre[0]), ("r", centre[1]), ("r", centre[2])),
+                 line(("r", axis[0]), ("r", axis[1]), ("r", axis[2])),
+                 line(("r", radius), ("r", length)), title=title)
+
+    def box(self, sid, body, centre, half, u=None, v=None, title="box"):
+        """/SURF/BOX: body (0 = fixed), centre, half-sizes, optional axes u, v."""
+        lines = [line(("i", body)), line(("r", centre[0]), ("r", centre[1]), ("r", centre[2])),
+                 line(("r", half[0]), ("r", half[1]), ("r", half[2]))]
+        if u is not None:
+            lines.append(line(("r", u[0]), ("r", u[1]), ("r", u[2])))
+            lines.append(line(("r", v[0]), ("r", v[1]), ("r", v[2])))
+        self.add(f"/SURF/BOX/{sid}", *lines, title=title)
+
+    def impvel(self, iid, fct, direction, grnod, ascale=None, fscale=None, tstart=None, tstop=None,
+               title="imposed velocity"):
+        """/IMPVEL: velocity component direction (X Y Z XX YY ZZ) = fscale f(t/ascale)."""
+        self.add(f"/IMPVEL/{iid}", f"{fct:>10d}{direction:>10s}{0:>10d}{0:>10d}{grnod:>10d}{0:>10d}{0:>10d}",
+                 line(("r", ascale), ("r", fscale), ("r", tstart), ("r", tstop)), title=title)
+
     def run(self, tend, dtout):
         self.add("/RUN", line(("r", tend), ("r", dtout)))
 

@@ -308,6 +308,100 @@ static void test_power_card_errors(void)
     }
 }
 
+/* /IMPVEL on a translation: the velocity follows Fscale f(t / Ascale)
+ * until Tstop, then the DOF is free (here: gravity along X takes over); the
+ * drive's work closes the ledger. */
+static const char impvel_deck[] =
+    "/NODE\n1, 0.1, 0.2, 0.3\n"
+    "/RBODY/1\nbody\n1,,,,3.7\n1e-3, 2e-3, 3e-3\n0, 0, 0\n"
+    "/GRNOD/NODE/1\nbody\n1\n"
+    "/FUNCT/1\nramp\n0, 0.5\n1, 2.5\n"
+    "/IMPVEL/1\ndrive\n1, X, 0, 0, 1\n0.5, 1.3, 0, 0.3\n"
+    "/GRAV/1\ng\n0, X, 0, 0, 0, 1, -2.9\n"
+    "/RUN\n0.7, 0.05\n"
+    "/SOLVER\n1, 5, 100000, 1e-10\n1e-12, 1e-9, 1e-10, 1e-10\n1e-10\n";
+
+static void test_power_impvel_follows_then_releases(void)
+{
+    const char *path = write_deck("impvel.rad", impvel_deck);
+    rc_case *c = NULL;
+    rc_model *m = NULL;
+    rc_error e;
+    ENSURE(path && rc_case_load(path, &c, &e) == RC_OK);
+    if (!c) return;
+    ENSURE(rc_model_compile(c, &m, &e) == RC_OK);
+    rc_case_free(c);
+    if (!m) return;
+    /* v(t) = 1.3 f(t / 0.5), f(x) = 0.5 + 2 x: v(0) = 0.65, v(0.3) = 2.21 */
+    ENSURE_NEAR(m->body_y0[7], 0.65, 1e-15, 0);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    rc_run_options opt = {NULL, 0, 0.25, y};
+    rc_stats st;
+    ENSURE(rc_run(m, &opt, &st, &e) == RC_OK);
+    printf("    t = 0.25 s: v_x = %.12f m/s (imposed %.12f), W_imp = %.9f J\n", y[7], 1.3 * (0.5 + 2 * 0.5), y[m->imp->wadr]);
+    ENSURE_NEAR(y[7], 1.3 * (0.5 + 2.0 * 0.25 / 0.5), 1e-8, 0);
+    opt.t_end_override = 0.7;
+    ENSURE(rc_run(m, &opt, &st, &e) == RC_OK);
+    /* released at 0.3 s with v = 2.21 m/s, then gravity -2.9 m/s^2 along X */
+    const double v_end = 1.3 * (0.5 + 2.0 * 0.3 / 0.5) - 2.9 * 0.4;
+    printf("    t = 0.7 s: v_x = %.12f m/s (free after Tstop: %.12f), energy residual %.2e J\n", y[7], v_end,
+           st.energy_residual);
+    ENSURE_NEAR(y[7], v_end, 1e-7, 0);
+    /* W_imp = -(work of the drive) = -(kinetic energy gained - work of gravity) up to 0.3 s */
+    const double v0 = 0.65, v3 = 2.21;
+    const double drive = 0.5 * 3.7 * (v3 * v3 - v0 * v0) + 2.9 * 3.7 * (1.3 * (0.5 * 0.3 + 0.3 * 0.3 / 0.5));
+    ENSURE_NEAR(y[m->imp->wadr], -drive, 1e-7, 0);
+    ENSURE_NEAR(st.energy_residual, 0.0, 0, 1e-7);
+    free(y);
+    rc_model_free(m);
+}
+
+/* /FRICTION naming the parts of a power-law interface replaces step5; its
+ * incremental form needs Kt. */
+static void test_power_friction_card_overrides_step5(void)
+{
+    static const char base[] =
+        "/NODE\n1, 0, 0, 0.0499\n"
+        "/RBODY/1\nball\n1,,,,1.0\n1e-3, 1e-3, 1e-3\n0, 0, 0\n"
+        "/GRNOD/NODE/1\nball\n1\n"
+        "/SURF/ELLIPS/1\nball\n0, 2, 1\n0, 0, 0.0499\n0.05, 0.05, 0.05\n"
+        "/SURF/PLANE/2\nfloor\n0, 0, 0\n0, 0, 1\n"
+        "/PART/1\nball\n0, 0, 0, 0\n1\n"
+        "/PART/2\nfloor\n0, 0, 0, 0\n0, 2\n"
+        "/FRICTION/1\nf\n0, 0, 0, %d\n,\n, 0.4, 0.5\n0, 0, 1, 2\n,\n, 0.37, 0.5\n"
+        "/INTER/POWER/1\nt\n1, 2\n1e8, 1.5\n,\n0.3, 0.01, 0.2, 0.05\n%s"
+        "/RUN\n0.01\n";
+    char text[2048];
+    const int forms[3] = {1, 2, 2};
+    const char *kt[3] = {"", "", "2.3e5\n"};
+    for (int k = 0; k < 3; k++) {
+        snprintf(text, sizeof text, base, forms[k], kt[k]);
+        const char *path = write_deck("override.rad", text);
+        rc_case *c = NULL;
+        rc_model *m = NULL;
+        rc_error e;
+        ENSURE(path && rc_case_load(path, &c, &e) == RC_OK);
+        if (!c) continue;
+        rc_status st = rc_model_compile(c, &m, &e);
+        rc_case_free(c);
+        if (st && k != 1) printf("    %s\n", e.msg);
+        if (k == 1) {
+            ENSURE(st == RC_EINPUT && strstr(e.msg, "/FRICTION/1") && strstr(e.msg, "needs a stiffness"));
+            continue;
+        }
+        ENSURE(st == RC_OK);
+        if (!m) continue;
+        ENSURE(m->inter_fr[0].kind == RC_FK_CARD && m->inter_fr[0].card_id == 1);
+        ENSURE_NEAR(m->inter_fr[0].set[0][RC_FS_FRIC], 0.37, 0, 0);
+        ENSURE(m->inter_fr[0].form == (k == 2 ? RC_FF_INCREMENTAL : RC_FF_VISCOUS));
+        if (k == 2) ENSURE_NEAR(m->inter_fr[0].kt, 2.3e5, 0, 0);
+        rc_stats s;
+        rc_run_options opt = {NULL, 0, 0.0, NULL};
+        ENSURE(rc_run(m, &opt, &s, &e) == RC_OK);
+        rc_model_free(m);
+    }
+}
+
 void suite_power(void);
 void suite_power(void)
 {
@@ -315,5 +409,7 @@ void suite_power(void)
     RUN_TEST(test_power_regularised_powers);
     RUN_TEST(test_power_splines);
     RUN_TEST(test_power_roller_deck_runs_and_ledger_closes);
+    RUN_TEST(test_power_impvel_follows_then_releases);
+    RUN_TEST(test_power_friction_card_overrides_step5);
     RUN_TEST(test_power_card_errors);
 }

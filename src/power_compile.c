@@ -154,6 +154,8 @@ void rc_power_print(const rc_model *m, int i, FILE *f)
     else fprintf(f, "K %.5g m1 %.5g, ", pw->k, pw->m1);
     if (pw->damp) fprintf(f, "damping %s spline /FUNCT/%d", rc_spline_kind_name(pw->damp->kind), pw->damp->id);
     else fprintf(f, "C %.5g m2 %.5g", pw->c, pw->m2);
-    fprintf(f, " m3 %.5g, RDF %s%.5g, Tstart %.5g, Tstop %.5g\n", pw->m3, pw->rdf == 1.0 ? "off " : "", pw->rdf,
-            m->inter_tstart[i], m->inter_tstop[i]);
+    fprintf(f, " m3 %.5g, ", pw->m3);
+    if (pw->rdf == 1.0) fprintf(f, "RDF off");
+    else fprintf(f, "RDF %.5g", pw->rdf);
+    fprintf(f, ", Tstart %.5g, Tstop %.5g\n", m->inter_tstart[i], m->inter_tstop[i]);
 }

@@ -276,4 +276,15 @@ struct rc_case {
     int nwarnings; char **warnings; /* "file:line: ..." ignored-card warnings */
 };
 
+/* Index of the card with this id in its array, or -1 (case_lookup.c). */
+int rc_case_find_funct(const rc_case *c, int id);
+int rc_case_find_node(const rc_case *c, int id);
+int rc_case_find_grnod(const rc_case *c, int id);
+int rc_case_find_rbody(const rc_case *c, int id);
+int rc_case_find_surf(const rc_case *c, int id);
+int rc_case_find_part(const rc_case *c, int id);
+int rc_case_find_grpart(const rc_case *c, int id);
+/* Body carrying a node (its main node or in its secondary group), or -1. */
+int rc_case_body_of_node(const rc_case *c, int node_id);
+
 #endif

@@ -29,58 +29,13 @@
 #define LOCFMT "%s:%d: "
 #define LOC(l) (l).file, (l).line
 
-/* ---- id lookups ------------------------------------------------------ */
-static int find_funct(const rc_case *c, int id)
-{
-    for (int k = 0; k < c->nfunct; k++)
-        if (c->funct[k].id == id) return k;
-    return -1;
-}
-static int find_node(const rc_case *c, int id)
-{
-    for (int k = 0; k < c->nnode; k++)
-        if (c->node[k].id == id) return k;
-    return -1;
-}
-static int find_grnod(const rc_case *c, int id)
-{
-    for (int k = 0; k < c->ngrnod; k++)
-        if (c->grnod[k].id == id) return k;
-    return -1;
-}
-static int find_rbody(const rc_case *c, int id)
-{
-    for (int k = 0; k < c->nrbody; k++)
-        if (c->rbody[k].id == id) return k;
-    return -1;
-}
-static int find_surf(const rc_case *c, int id)
-{
-    for (int k = 0; k < c->nsurf; k++)
-        if (c->surf[k].id == id) return k;
-    return -1;
-}
-
-/* Body carrying node `node_id` (main node or in the secondary group), -1. */
-static int body_of_node(const rc_case *c, int node_id)
-{
-    for (int b = 0; b < c->nrbody; b++) {
-        if (c->rbody[b].node_id == node_id) return b;
-        int g = find_grnod(c, c->rbody[b].grnod_id);
-        if (c->rbody[b].grnod_id && g >= 0)
-            for (int k = 0; k < c->grnod[g].n; k++)
-                if (c->grnod[g].nodes[k] == node_id) return b;
-    }
-    return -1;
-}
-
 /* Optional function reference -> table index (-1 when 0). */
 static rc_status ref_funct(const rc_case *c, int id, rc_loc loc, const char *card, const char *field,
                            int *out, rc_error *err)
 {
     *out = -1;
     if (id == 0) return RC_OK;
-    *out = find_funct(c, id);
+    *out = rc_case_find_funct(c, id);
     if (*out < 0)
         RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field %s: expected the id of a /FUNCT, got %d (no such function)",
                  LOC(loc), card, field, id);
@@ -93,12 +48,12 @@ static rc_status group_bodies(const rc_case *c, int gid, rc_loc loc, const char 
 {
     for (int b = 0; b < c->nrbody; b++) flag[b] = gid == 0;
     if (gid == 0) return RC_OK;
-    int g = find_grnod(c, gid);
+    int g = rc_case_find_grnod(c, gid);
     if (g < 0)
         RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field grnod_ID: expected the id of a /GRNOD, got %d (no such group)",
                  LOC(loc), card, gid);
     for (int k = 0; k < c->grnod[g].n; k++) {
-        int b = body_of_node(c, c->grnod[g].nodes[k]);
+        int b = rc_case_body_of_node(c, c->grnod[g].nodes[k]);
         if (b < 0)
             RC_RAISE(err, RC_EINPUT,
                      LOCFMT "card %s: node %d of /GRNOD/%d belongs to no /RBODY (ricochet bodies are rigid)",
@@ -131,11 +86,11 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
 {
     for (int b = 0; b < c->nrbody; b++) {
         const rc_case_rbody *rb = &c->rbody[b];
-        int nd = find_node(c, rb->node_id);
+        int nd = rc_case_find_node(c, rb->node_id);
         if (nd < 0)
             RC_RAISE(err, RC_EINPUT, LOCFMT "card /RBODY/%d, field node_ID: expected the id of a /NODE, got %d (no such node)",
                      LOC(rb->loc), rb->id, rb->node_id);
-        if (rb->grnod_id && find_grnod(c, rb->grnod_id) < 0)
+        if (rb->grnod_id && rc_case_find_grnod(c, rb->grnod_id) < 0)
             RC_RAISE(err, RC_EINPUT, LOCFMT "card /RBODY/%d, field grnd_ID: expected the id of a /GRNOD, got %d (no such group)",
                      LOC(rb->loc), rb->id, rb->grnod_id);
         m->body_id[b] = rb->id;
@@ -224,7 +179,7 @@ static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
         const char *kind = kinds[cs->kind];
         int b = -1;
         if (cs->rbody_id) {
-            b = find_rbody(c, cs->rbody_id);
+            b = rc_case_find_rbody(c, cs->rbody_id);
             if (b < 0)
                 RC_RAISE(err, RC_EINPUT, LOCFMT "card /SURF/%s/%d, field rbody_ID: expected the id of a /RBODY, got %d (no such body)",
                          LOC(cs->loc), kind, cs->id, cs->rbody_id);
@@ -316,7 +271,7 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     const rc_case_type6 *t6 = &c->type6[i];
     char card[64];
     snprintf(card, sizeof card, "/INTER/TYPE6/%d", t6->id);
-    int s1 = find_surf(c, t6->surf1), s2 = find_surf(c, t6->surf2);
+    int s1 = rc_case_find_surf(c, t6->surf1), s2 = rc_case_find_surf(c, t6->surf2);
     if (s1 < 0 || s2 < 0)
         RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field %s: expected the id of a /SURF, got %d (no such surface)",
                  LOC(t6->line_loc[0]), card, s1 < 0 ? "surf_ID1" : "surf_ID2", s1 < 0 ? t6->surf1 : t6->surf2);

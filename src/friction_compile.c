@@ -27,20 +27,6 @@
 #define RC_PI 3.14159265358979323846
 #define LOC(l) (l).file, (l).line
 
-static int find_part(const rc_case *c, int id)
-{
-    for (int k = 0; k < c->npart; k++)
-        if (c->part[k].id == id) return k;
-    return -1;
-}
-
-static int find_grpart(const rc_case *c, int id)
-{
-    for (int k = 0; k < c->ngrpart; k++)
-        if (c->grpart[k].id == id) return k;
-    return -1;
-}
-
 static int find_body(const rc_model *m, int id)
 {
     for (int b = 0; b < m->nbody; b++)
@@ -54,7 +40,7 @@ static int side_names(const rc_case *c, int grpart, int part, int p)
     if (p < 0) return 0;
     const int pid = c->part[p].id;
     if (part && part == pid) return 1;
-    int g = grpart ? find_grpart(c, grpart) : -1;
+    int g = grpart ? rc_case_find_grpart(c, grpart) : -1;
     if (g >= 0)
         for (int k = 0; k < c->grpart[g].n; k++)
             if (c->grpart[g].parts[k] == pid) return 1;
@@ -115,7 +101,7 @@ static rc_status check_refs(const rc_case *c, rc_error *err)
 {
     for (int g = 0; g < c->ngrpart; g++)
         for (int k = 0; k < c->grpart[g].n; k++)
-            if (find_part(c, c->grpart[g].parts[k]) < 0)
+            if (rc_case_find_part(c, c->grpart[g].parts[k]) < 0)
                 RC_RAISE(err, RC_EINPUT, LOCFMT "card /GRPART/PART/%d: expected the id of a /PART, got %d (no such part)",
                          LOC(c->grpart[g].loc), c->grpart[g].id, c->grpart[g].parts[k]);
     for (int f = 0; f < c->nfriction; f++)
@@ -123,10 +109,10 @@ static rc_status check_refs(const rc_case *c, rc_error *err)
             const rc_case_fricpair *g = &c->friction[f].pair[k];
             const int parts[2] = {g->part1, g->part2}, groups[2] = {g->grpart1, g->grpart2};
             for (int j = 0; j < 2; j++) {
-                if (parts[j] && find_part(c, parts[j]) < 0)
+                if (parts[j] && rc_case_find_part(c, parts[j]) < 0)
                     RC_RAISE(err, RC_EINPUT, LOCFMT "card /FRICTION/%d, field part_ID%d: expected the id of a /PART, got %d (no such part)",
                              LOC(g->loc), c->friction[f].id, j + 1, parts[j]);
-                if (groups[j] && find_grpart(c, groups[j]) < 0)
+                if (groups[j] && rc_case_find_grpart(c, groups[j]) < 0)
                     RC_RAISE(err, RC_EINPUT, LOCFMT "card /FRICTION/%d, field grpart_ID%d: expected the id of a /GRPART, got %d (no such part group)",
                              LOC(g->loc), c->friction[f].id, j + 1, groups[j]);
             }
@@ -134,10 +120,10 @@ static rc_status check_refs(const rc_case *c, rc_error *err)
     for (int o = 0; o < c->nfricorient; o++)
         for (int k = 0; k < c->fricorient[o].n; k++) {
             const rc_case_fricorient_item *it = &c->fricorient[o].item[k];
-            if (it->part_id && find_part(c, it->part_id) < 0)
+            if (it->part_id && rc_case_find_part(c, it->part_id) < 0)
                 RC_RAISE(err, RC_EINPUT, LOCFMT "card /FRIC_ORIENT/%d, field part_ID: expected the id of a /PART, got %d (no such part)",
                          LOC(it->loc), c->fricorient[o].id, it->part_id);
-            if (it->grpart_id && find_grpart(c, it->grpart_id) < 0)
+            if (it->grpart_id && rc_case_find_grpart(c, it->grpart_id) < 0)
                 RC_RAISE(err, RC_EINPUT, LOCFMT "card /FRIC_ORIENT/%d, field grpart_ID: expected the id of a /GRPART, got %d (no such part group)",
                          LOC(it->loc), c->fricorient[o].id, it->grpart_id);
         }

@@ -16,33 +16,6 @@
 #define LOCFMT "%s:%d: "
 #define LOC(l) (l).file, (l).line
 
-static int find_funct(const rc_case *c, int id)
-{
-    for (int k = 0; k < c->nfunct; k++)
-        if (c->funct[k].id == id) return k;
-    return -1;
-}
-
-static int find_grnod(const rc_case *c, int id)
-{
-    for (int k = 0; k < c->ngrnod; k++)
-        if (c->grnod[k].id == id) return k;
-    return -1;
-}
-
-/* Body carrying node `node_id` (main node or secondary group), -1. */
-static int body_of_node(const rc_case *c, int node_id)
-{
-    for (int b = 0; b < c->nrbody; b++) {
-        if (c->rbody[b].node_id == node_id) return b;
-        int g = c->rbody[b].grnod_id ? find_grnod(c, c->rbody[b].grnod_id) : -1;
-        if (g >= 0)
-            for (int k = 0; k < c->grnod[g].n; k++)
-                if (c->grnod[g].nodes[k] == node_id) return b;
-    }
-    return -1;
-}
-
 void rc_imp_free(rc_imposed *p)
 {
     if (!p) return;
@@ -72,19 +45,19 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
         const rc_case_impvel *v = &c->impvel[k];
         char card[64];
         snprintf(card, sizeof card, "/IMPVEL/%d", v->id);
-        if (find_funct(c, v->fct_id) < 0) {
+        if (rc_case_find_funct(c, v->fct_id) < 0) {
             st = RC_SET(err, RC_EINPUT, LOCFMT "card %s, field fct_IDT: expected the id of a /FUNCT, got %d (no such function)",
                         LOC(v->line_loc[0]), card, v->fct_id);
             break;
         }
-        const int g = find_grnod(c, v->grnod_id);
+        const int g = rc_case_find_grnod(c, v->grnod_id);
         if (g < 0) {
             st = RC_SET(err, RC_EINPUT, LOCFMT "card %s, field grnod_ID: expected the id of a /GRNOD, got %d (no such group)",
                         LOC(v->line_loc[0]), card, v->grnod_id);
             break;
         }
         for (int j = 0; j < c->grnod[g].n && !st; j++) {
-            const int b = body_of_node(c, c->grnod[g].nodes[j]);
+            const int b = rc_case_body_of_node(c, c->grnod[g].nodes[j]);
             if (b < 0) {
                 st = RC_SET(err, RC_EINPUT, LOCFMT "card %s: node %d of /GRNOD/%d belongs to no /RBODY (ricochet bodies are rigid)",
                             LOC(v->line_loc[0]), card, c->grnod[g].nodes[j], v->grnod_id);
@@ -154,7 +127,7 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
             }
             if (k < 0) continue;
             const rc_case_impvel *v = &c->impvel[k];
-            const int tab = find_funct(c, v->fct_id);
+            const int tab = rc_case_find_funct(c, v->fct_id);
             /* the initial value: the imposed function at t = 0 (body frame
              * = global frame at t = 0) */
             double f0, df;

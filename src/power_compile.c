@@ -19,27 +19,13 @@
 #define LOC(l) (l).file, (l).line
 #define RC_PI 3.14159265358979323846
 
-static int find_surf(const rc_case *c, int id)
-{
-    for (int k = 0; k < c->nsurf; k++)
-        if (c->surf[k].id == id) return k;
-    return -1;
-}
-
-static int find_funct(const rc_case *c, int id)
-{
-    for (int k = 0; k < c->nfunct; k++)
-        if (c->funct[k].id == id) return k;
-    return -1;
-}
-
 /* Spline of /FUNCT `id` (field `field` of the card), or NULL when id = 0. */
 static rc_status make_spline(const rc_case *c, const rc_case_power *p, int id, const char *card, const char *field,
                              rc_spline **out, rc_error *err)
 {
     *out = NULL;
     if (id == 0) return RC_OK;
-    int f = find_funct(c, id);
+    int f = rc_case_find_funct(c, id);
     if (f < 0)
         RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field %s: expected the id of a /FUNCT, got %d (no such function)",
                  LOC(p->line_loc[0]), card, field, id);
@@ -65,7 +51,7 @@ rc_status rc_power_compile(const rc_case *c, rc_model *m, int k, int i, rc_error
     if (!m->inter_name[i]) RC_RAISE(err, RC_ENOMEM, "out of memory");
     strcpy(m->inter_name[i], card);
     /* the pair */
-    int s1 = find_surf(c, p->surf1), s2 = find_surf(c, p->surf2);
+    int s1 = rc_case_find_surf(c, p->surf1), s2 = rc_case_find_surf(c, p->surf2);
     if (s1 < 0 || s2 < 0)
         RC_RAISE(err, RC_EINPUT, "%s, field %s: expected the id of a /SURF, got %d (no such surface)", where,
                  s1 < 0 ? "surf_ID1" : "surf_ID2", s1 < 0 ? p->surf1 : p->surf2);

@@ -82,8 +82,53 @@ class Deck:
         self.add(f"/GRAV/{gid}", f"{0:>10d}{direction:>10s}{0:>10d}{0:>10d}{grnod:>10d}" + r20(1.0) + r20(fscale),
                  title="gravity")
 
-    def bcs(self, bid, grnod):
-        self.add(f"/BCS/{bid}", f"{'111 111':>10s}{0:>10d}{grnod:>10d}", title="fixed")
+    def bcs(self, bid, grnod, trarot="111 111", title="fixed"):
+        """/BCS: Trarot 'TxTyTz RxRyRz' (default: the body fixed), node group."""
+        self.add(f"/BCS/{bid}", f"{trarot:>10s}{0:>10d}{grnod:>10d}", title=title)
+
+    def grav_fct(self, gid, direction, fscale, fct, grnod=0, ascale=1.0):
+        """/GRAV with a time function fct (Fscale_y f(t / Ascale_x))."""
+        self.add(f"/GRAV/{gid}", f"{fct:>10d}{direction:>10s}{0:>10d}{0:>10d}{grnod:>10d}" + r20(ascale) + r20(fscale),
+                 title="gravity")
+
+    def part(self, pid, body, surfs=(), title="part"):
+        """/PART (ricochet's reading): rbody_ID (0: fixed in space), surface ids
+        (none: the whole body)."""
+        surfs = list(surfs)
+        rows = [line(("i", body), *[("i", s) for s in surfs[:9]])]
+        rows += ["".join(i10(v) for v in surfs[k:k + 10]) for k in range(9, len(surfs), 10)]
+        self.add(f"/PART/{pid}", line(("i", 0), ("i", 0), ("i", 0), ("r", 0.0)), *rows, title=title)
+
+    def grpart(self, gid, ids, title="part group"):
+        rows = [ids[k:k + 10] for k in range(0, len(ids), 10)]
+        self.add(f"/GRPART/PART/{gid}", *["".join(i10(v) for v in r) for r in rows], title=title)
+
+    def friction(self, fid, ifric=0, ifiltr=0, xfreq=None, iform=0, dt_ref=None, area=None, c=(), fric=None,
+                 visf=None, pairs=(), title="friction"):
+        """/FRICTION: line A (Ifric, Ifiltr, Xfreq, Iform, Dt_ref, Area), the
+        default set (C1..C6, Fric, VISF) and part-pair groups. pairs: dicts
+        with grpart1, grpart2, part1, part2 (0: none), and sets: a list of one
+        (isotropic) or two (Idir = 1) tuples (c, fric, visf)."""
+        def setlines(cc, fr, vf):
+            cc = list(cc) + [None] * (6 - len(cc))
+            return [line(*[("r", v) for v in cc[:5]]), line(("r", cc[5]), ("r", fr), ("r", vf))]
+        lines = [line(("i", ifric), ("i", ifiltr), ("r", xfreq), ("i", iform), ("r", dt_ref), ("r", area))]
+        lines += setlines(c, fric, visf)
+        for g in pairs:
+            sets = g["sets"]
+            lines.append(line(("i", g.get("grpart1", 0)), ("i", g.get("grpart2", 0)), ("i", g.get("part1", 0)),
+                              ("i", g.get("part2", 0)), ("i", None), ("i", 1 if len(sets) == 2 else 0)))
+            for s in sets:
+                lines += setlines(*s)
+        self.add(f"/FRICTION/{fid}", *lines, title=title)
+
+    def fric_orient(self, oid, items, title="friction orientation"):
+        """/FRIC_ORIENT: items of (grpart_ID, part_ID, V, PHI [deg])."""
+        lines = []
+        for grp, prt, v, phi in items:
+            lines.append(line(("i", grp), ("i", prt)))
+            lines.append(line(("r", v[0]), ("r", v[1]), ("r", v[2]), ("i", 0), ("r", phi)))
+        self.add(f"/FRIC_ORIENT/{oid}", *lines, title=title)
 
     def spring(self, cid, b1, p1, b2, p2, iform=1, fct=None, x0=None, kd=None, a=None, b=None, c=None,
                fr=None, xr=None, title="spring-damper"):

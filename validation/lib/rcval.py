@@ -49,6 +49,10 @@ class Result:
             self.vel = np.array(nc["body_velocity"][:])
             self.fn = np.array(nc["inter_force_normal"][:]) if "inter_force_normal" in nc.variables else None
             self.pen = np.array(nc["inter_penetration"][:]) if "inter_penetration" in nc.variables else None
+            v = nc.variables
+            self.ffric = np.array(v["inter_force_friction"][:]) if "inter_force_friction" in v else None
+            self.vslip = np.array(v["inter_slip_speed"][:]) if "inter_slip_speed" in v else None
+            self.slip = np.array(v["inter_slip"][:]) if "inter_slip" in v else None
             n = len(nc.dimensions["event"])
             self.ev_t = np.array(nc["event_time"][:]) if n else np.zeros(0)
             self.ev_kind = [str(k) for k in nc["event_kind"][:]] if n else []

@@ -1,0 +1,148 @@
+"""Block on an inclined plane with /FRICTION Coulomb (Ifric 0, Iform 2).
+
+The design of validation/fric_incline (a sphere with locked rotations, a
+plane tilted by theta about a horizontal axis at azimuth 30 deg) with the
+friction given by a /FRICTION card instead of TYPE6's Fric, selected through
+/PART and /GRPART (README.md). Reference: with tan(theta) < mu the block
+stays stuck; with tan(theta) > mu it slides down the fall line at
+a = g (sin theta - mu cos theta).
+"""
+import math
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
+import rcval  # noqa: E402
+from deck import Deck  # noqa: E402
+
+M, R, K, G, MU = 1.0, 0.05, 1.0e6, 9.81, 0.3
+VISC = 2.0 * 0.5 * math.sqrt(K * M)  # normal damping ratio 0.5
+PHI = math.radians(30.0)             # azimuth of the fall line
+TR = 0.5                             # ramp duration of the stuck case [s]
+P0 = 1e-12                           # initial penetration of the ramped case [m]
+BAND = 1e-6                          # slip band RC_SLIP_BAND (src/model.h)
+# friction values that must NOT apply (README.md): TYPE6's own Fric, the
+# first /FRICTION card (no groups, overridden by the later one), the default
+# set of the second card (its group names the block-plane pair)
+MU_T6, MU_CARD1, MU_DEFAULT = 0.6, 0.9, 0.05
+
+
+def frame(tan_th):
+    """Plane normal n, fall-line direction s (down the slope), in-plane u = n x s."""
+    th = math.atan(tan_th)
+    n = np.array([math.sin(th) * math.cos(PHI), math.sin(th) * math.sin(PHI), math.cos(th)])
+    s = np.array([math.cos(th) * math.cos(PHI), math.cos(th) * math.sin(PHI), -math.sin(th)])
+    return th, n, s, np.cross(n, s)
+
+
+def ramp_table(n=501):
+    """Quintic smoothstep 0 -> 1 on [0, T_r] (f', f'' zero at both ends), then
+    a far point at 1 so that the linear extension beyond the table stays flat."""
+    t = np.linspace(0.0, TR, n)
+    x = t / TR
+    return list(t) + [1.0e4], list(x**3 * (10.0 - 15.0 * x + 6.0 * x * x)) + [1.0]
+
+
+def deck(tan_th, tend, ramped=False, dtout=0.01):
+    """ramped: gravity ramped from 0, block starting at P0 (touching); else
+    constant gravity, block at its static normal penetration m g cos(theta)/k."""
+    th, n, s, u = frame(tan_th)
+    p = P0 if ramped else M * G * math.cos(th) / K
+    c = tuple((R - p) * n)
+    d = Deck(f"block on a plane tilted by atan({tan_th:g}), /FRICTION Coulomb Iform 2")
+    d.funct(1, [0.0, 1.0], [0.0, K], title="linear load curve k = 1e6 N/m")
+    d.nodes([(1, *c)])
+    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, grnod=1, title="block 1 kg")
+    d.sphere(1, 1, c, R, title="block sphere")
+    d.plane(2, (0.0, 0.0, 0.0), tuple(n), title="inclined plane through the origin")
+    d.grnod(1, [1], title="block")
+    d.bcs(1, 1, "000 111", title="no rotation")
+    if ramped:
+        xs, ys = ramp_table()
+        d.funct(2, xs, ys, title="smooth ramp 0 -> 1 over 0.5 s (quintic smoothstep)")
+        d.grav_fct(1, "Z", -G, 2, grnod=1)
+    else:
+        d.grav(1, "Z", -G, 1)
+    d.type6(1, 1, 2, 1, visc=VISC, fric=MU_T6, title="TYPE6 Fric 0.6 (overridden)")
+    d.part(11, 1, title="the block (whole body)")
+    d.part(12, 0, [2], title="the inclined plane (fixed surface 2)")
+    d.grpart(21, [12], title="ground parts")
+    d.friction(1, ifric=0, iform=2, fric=MU_CARD1, title="first card, every pair: Fric 0.9 (overridden)")
+    d.friction(2, ifric=0, iform=2, fric=MU_DEFAULT,
+               pairs=[dict(part1=11, grpart2=21, sets=[((), MU, None)])],
+               title="last card: defaults Fric 0.05, block/ground pair Fric 0.3")
+    d.run(tend, dtout)
+    return d
+
+
+def along(r, tan_th):
+    """Positions along s and u relative to the start, velocities along s, u, n."""
+    th, n, s, u = frame(tan_th)
+    dp = r.pos[:, 0, :] - r.pos[0, 0, :]
+    return dp @ s, dp @ u, r.vel[:, 0, :] @ s, r.vel[:, 0, :] @ u, r.vel[:, 0, :] @ n
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+
+    # 1. stuck, tan(theta) = 0.9 mu, gravity ramped (case.rad)
+    tan_th = 0.9 * MU
+    th = math.atan(tan_th)
+    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    xs, xu, vs, vu, vn = along(r, tan_th)
+    slips = r.events("fric_slip")
+    rcval.check("frc_incline.stuck.no_slip", len(slips) == 0,
+                f"tan(theta) = {tan_th:g} = 0.9 mu, ramped gravity: {len(slips)} fric_slip events (expected 0)")
+    last = r.t >= r.t[-1] - 10.0 - 1e-12
+    drift = np.max(np.abs(xs[last] - xs[last][0]))
+    rcval.check("frc_incline.stuck.drift", drift < 1e-9,
+                f"max |x_s(t) - x_s({r.t[last][0]:g} s)| along the fall line over the last 10 s = {drift:.2e} m (< 1e-9)")
+    x_ref = M * G * math.sin(th) / K
+    e = rcval.rel(xs[-1], x_ref)
+    ft = r.ffric[-1, 0]
+    fe = np.linalg.norm(ft + M * G * math.sin(th) * frame(tan_th)[2]) / (M * G * math.sin(th))
+    rcval.check("frc_incline.stuck.stick_spring", e < 1e-6 and abs(xu[-1]) < 1e-15 and fe < 1e-6,
+                f"x_s = {xs[-1]:.9e} m, m g sin(theta)/K_t = {x_ref:.9e} m, rel. error {e:.2e} (< 1e-6); "
+                f"across the fall line {xu[-1]:.1e} m; friction force = -m g sin(theta) s to {fe:.1e}")
+
+    # 2. sliding, tan(theta) = 0.5 > mu, constant gravity
+    tan_th = 0.5
+    th = math.atan(tan_th)
+    a_ref = G * (math.sin(th) - MU * math.cos(th))
+    r = rcval.Result(rcval.run(deck(tan_th, 1.5)))
+    xs, xu, vs, vu, vn = along(r, tan_th)
+    rcval.check("frc_incline.slide.events", r.ev_kind == ["fric_slip"],
+                f"events {list(zip(np.round(r.ev_t, 9), r.ev_kind))} (expected a single fric_slip at the stick onset)")
+    # stick onset from rest: m x'' = m g sin(theta) - K_t x, slip at K_t x = (1 + BAND) mu m g cos(theta)
+    t_on = math.acos(1.0 - (1 + BAND) * MU / tan_th) / math.sqrt(K / M)
+    e = abs(r.ev_t[0] - t_on) if len(r.ev_t) else float("inf")
+    rcval.check("frc_incline.slide.onset", e < 1e-6,
+                f"fric_slip at {r.ev_t[0] if len(r.ev_t) else float('nan'):.9e} s, stick spring from rest: "
+                f"acos(1 - (1 + 1e-6) mu/tan(theta))/w = {t_on:.9e} s, error {e:.1e} s (< 1e-6)")
+    sl = r.t >= 0.2
+    a, b = np.polyfit(r.t[sl], vs[sl], 1)
+    resid = np.max(np.abs(vs[sl] - (a * r.t[sl] + b)))
+    e = rcval.rel(a, a_ref)
+    others = ", ".join(f"mu {m:g}: {G * (math.sin(th) - m * math.cos(th)):.4f}" for m in (MU_DEFAULT,))
+    rcval.check("frc_incline.slide.acceleration", e < 1e-5 and resid < 1e-6,
+                f"fit of v_s over [0.2, 1.5] s: a = {a:.9f} m/s^2, g (sin theta - mu cos theta) = {a_ref:.9f}, "
+                f"rel. error {e:.2e} (< 1e-5), max fit residual {resid:.1e} m/s (< 1e-6) "
+                f"(the sets that must not apply would give {others}, or stick: mu 0.6, 0.9)")
+    mu_meas = np.linalg.norm(r.ffric[-1, 0]) / r.fn[-1, 0]
+    e = rcval.rel(mu_meas, MU)
+    rcval.check("frc_incline.slide.limit", e < 1e-9 and r.slip[-1, 0] == 1,
+                f"|F_t|/F_n at the end = {mu_meas:.12f} (mu = {MU}), rel. error {e:.1e} (< 1e-9), mode slip")
+    side = np.max(np.abs(vu))
+    rcval.check("frc_incline.slide.fall_line", side < 1e-6,
+                f"max |v_u| across the fall line = {side:.1e} m/s (< atol_vel 1e-6), max |x_u| = {np.max(np.abs(xu)):.1e} m "
+                f"after {xs[-1]:.3f} m")
+    rcval.finish()
+
+
+if __name__ == "__main__":
+    if "--write-case" in sys.argv:
+        deck(0.9 * MU, 11.0, ramped=True).write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
+    else:
+        main()

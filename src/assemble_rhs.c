@@ -96,6 +96,7 @@ void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int tr
     for (int k = 0; k < 3; k++) {
         r->ft[k] = o.ft[k];
         r->fraw[k] = o.fraw[k];
+        r->vt[k] = o.vt[k];
     }
     for (int k = 0; k < 3; k++) {
         r->point[k] = o.g.point[k];
@@ -116,6 +117,14 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         rc_inter_report_eval(m, i, mode, br, trk, d->inter_slip[i], t, y, &r);
         /* friction: stick -> slip at the limit, slip -> stick when sliding stops */
         if (mode == RC_MODE_CLOSED && m->inter_fr[i].kind != RC_FK_NONE) gi[RC_ROOT_SLIP] = r.slip_root;
+        /* saturated stateless law: its force -L v_t/|v_t| flips when the sliding
+         * reverses; the saturation root dips below zero only in a velocity window
+         * of width ~L/C that a step may jump, so watch v_t . d_ref as well */
+        if (mode == RC_MODE_CLOSED && d->inter_slip[i] && m->inter_fr[i].form == RC_FF_VISCOUS &&
+            m->inter_fr[i].kind != RC_FK_NONE) {
+            const double *dr = d->inter_dref + 3 * i;
+            gi[RC_ROOT_REV] = r.vt[0] * dr[0] + r.vt[1] * dr[1] + r.vt[2] * dr[2];
+        }
         /* zone: P (not while the Inacti offset tracks it, P = 0 there) */
         if (!trk) gi[RC_ROOT_ZONE] = r.p;
         /* total normal force, unclipped: release and re-close */

@@ -21,6 +21,7 @@ rc_data *rc_data_new(const rc_model *m)
     d->inter_branch = calloc(n, sizeof(int));
     d->inter_track = calloc(n, sizeof(int));
     d->inter_slip = calloc(n, sizeof(int));
+    d->inter_dref = calloc(3 * n, sizeof(double));
     d->cpl = rc_cpl_data_new(m);
     int imp_ok = 1;
     if (m->imp) { /* imposed velocities: scratch of rhs and Jacobian (imposed.c) */
@@ -28,7 +29,7 @@ rc_data *rc_data_new(const rc_model *m)
         d->imp_scratch = calloc(3 * (size_t)m->ny, sizeof(double));
         imp_ok = d->imp_free && d->imp_scratch;
     }
-    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->cpl || !imp_ok) {
+    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->cpl || !imp_ok) {
         rc_data_free(d);
         return NULL;
     }
@@ -43,6 +44,7 @@ void rc_data_free(rc_data *d)
     free(d->inter_branch);
     free(d->inter_track);
     free(d->inter_slip);
+    free(d->inter_dref);
     rc_cpl_data_free(d->cpl);
     free(d->imp_free);
     free(d->imp_scratch);
@@ -104,6 +106,29 @@ static void leave_zone(const rc_model *m, rc_data *d, int i, double *y, int *cha
 
 /* Modes of an active interface from its state, at t = 0 or at Tstart:
  * Inacti, Icor and the initial penetration P0 (docs/theory.md 3.4). */
+/* The sliding direction at which a stateless law saturated (reversal root). */
+static void set_dref(rc_data *d, int i, const rc_inter_report *r)
+{
+    double n = sqrt(r->vt[0] * r->vt[0] + r->vt[1] * r->vt[1] + r->vt[2] * r->vt[2]);
+    for (int k = 0; k < 3; k++) d->inter_dref[3 * i + k] = n > 0 ? r->vt[k] / n : 0.0;
+}
+
+/* A friction law without state (viscous forms, step5) has no history: its
+ * mode (below the limit / saturated or capped) follows from the state alone.
+ * Set it whenever the contact has just closed, so that a contact closing
+ * while sliding starts saturated when its adhesion force is beyond the limit
+ * (its root would otherwise start positive and never cross). */
+static void stateless_friction_mode(const rc_model *m, rc_data *d, int i, double t, const double *y)
+{
+    const rc_fric *fr = &m->inter_fr[i];
+    if (d->inter_mode[i] != RC_MODE_CLOSED || fr->kind == RC_FK_NONE || fr->form != RC_FF_VISCOUS) return;
+    rc_inter_report r;
+    d->inter_slip[i] = 0;
+    report(m, d, i, t, y, &r);
+    d->inter_slip[i] = r.slip_root > 0;
+    set_dref(d, i, &r);
+}
+
 static void classify(const rc_model *m, rc_data *d, int i, double t, double *y, int *changed)
 {
     rc_inter_report r;
@@ -140,11 +165,7 @@ static void classify(const rc_model *m, rc_data *d, int i, double t, double *y, 
     d->inter_mode[i] = RC_MODE_CLOSED;
     report(m, d, i, t, y, &r);
     if (!(r.fn > 0)) d->inter_mode[i] = RC_MODE_RELEASED;
-    /* a friction law without state (viscous forms, step5) may start at its
-     * limit or cap */
-    const rc_fric *fr = &m->inter_fr[i];
-    if (d->inter_mode[i] == RC_MODE_CLOSED && fr->kind != RC_FK_NONE && fr->form == RC_FF_VISCOUS && r.slip_root > 0)
-        d->inter_slip[i] = 1;
+    stateless_friction_mode(m, d, i, t, y);
     /* the elastic energy found in the contact at activation enters the
      * ledger as contact work (so the hysteresis dissipation starts at 0) */
     double *w = y + m->inter_eadr[i];
@@ -266,16 +287,35 @@ static const char *step_friction(const rc_model *m, rc_data *d, int i, double t,
                                  int *changed)
 {
     const rc_fric *fr = &m->inter_fr[i];
-    if (fr->kind == RC_FK_NONE || d->inter_mode[i] != RC_MODE_CLOSED || r[RC_ROOT_SLIP] <= 0) return NULL;
+    if (fr->kind == RC_FK_NONE || d->inter_mode[i] != RC_MODE_CLOSED) return NULL;
+    rc_inter_report q;
+    /* saturated stateless law: the sliding reversed; its mode then follows
+     * from the state, saturated again in the new direction or not */
+    if (fr->form == RC_FF_VISCOUS && d->inter_slip[i] && r[RC_ROOT_REV] < 0) {
+        stateless_friction_mode(m, d, i, t, y);
+        *changed = 1; /* restart: see below */
+        return "fric_reverse";
+    }
+    if (r[RC_ROOT_SLIP] <= 0) return NULL;
     if (!d->inter_slip[i]) {
         d->inter_slip[i] = 1;
+        if (fr->form == RC_FF_VISCOUS) {
+            report(m, d, i, t, y, &q);
+            set_dref(d, i, &q);
+            /* the force is continuous across the limit but its Jacobian is
+             * not (-C I below, rank-deficient above, C up to ~1e6 N s/m):
+             * the step that crossed the limit was taken in the old mode, and
+             * continuing from it, even with a fresh Jacobian, let a stiff
+             * viscous law chatter across the limit; restart from the event */
+            *changed = 1;
+        }
         return fr->form == RC_FF_VISCOUS ? "fric_saturate" : "fric_slip";
     }
-    rc_inter_report q;
     report(m, d, i, t, y, &q);
     d->inter_slip[i] = 0;
     if (fr->tidx >= 0)
         for (int k = 0; k < 3; k++) set_state(y + m->inter_eadr[i] + fr->tidx + k, q.fraw[k], changed);
+    if (fr->form == RC_FF_VISCOUS) *changed = 1; /* restart, as for saturation */
     return fr->form == RC_FF_VISCOUS ? "fric_unsaturate" : "fric_stick";
 }
 
@@ -298,6 +338,7 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
             kind[2] = step_contact(m, d, i, y, r, state_changed);
             if (!kind[2]) kind[3] = step_friction(m, d, i, t, y, r, state_changed);
         }
+        if ((kind[0] || kind[2]) && d->inter_mode[i] == RC_MODE_CLOSED) stateless_friction_mode(m, d, i, t, y);
         for (int k = 0; k < 4; k++) {
             if (!kind[k]) continue;
             if (n < max_ev) {

@@ -29,6 +29,8 @@ typedef struct rc_fric {
     double mred;          /* reduced mass of the two bodies [kg]               */
     double odir[3];       /* orthotropy: vector V, in the frame of obody       */
     int obody;            /* body carrying V, -1: global                        */
+    int oside;            /* +1: V on the first surface's side, -1: the second's;
+                             PHI turns about that surface's outward normal     */
     double ophi;          /* angle from V about the normal [rad]               */
     int card_id;          /* /FRICTION id, 0 for TYPE6's own                   */
     int tidx;             /* own-state index of F_t (incremental), -1          */

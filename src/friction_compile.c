@@ -202,6 +202,7 @@ static rc_status apply_card(const rc_case *c, rc_model *m, int i, const rc_case_
                      LOC(g->loc), f->id, m->inter_name[i]);
         memcpy(fr->odir, it->v, sizeof fr->odir);
         fr->obody = m->surf_body[side];
+        fr->oside = side == m->inter_sa[i] ? 1 : -1; /* n points from a to b */
         fr->ophi = it->phi * RC_PI / 180.0;
     }
     return RC_OK;

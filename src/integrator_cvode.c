@@ -104,6 +104,7 @@ static void root_directions(const rc_model *m, const rc_data *d, int *dir)
         r[RC_ROOT_TRK_A] = 1;                                     /* bodies approach again */
         r[RC_ROOT_TRK_B] = -1;                                    /* offset used up */
         r[RC_ROOT_SLIP] = 1;                                      /* limit reached / sliding stops */
+        r[RC_ROOT_REV] = -1;                                      /* saturated sliding reverses */
     }
 }
 
@@ -480,8 +481,29 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     /* ---- main loop: output times and events ---- */
     long nout = 1;
     double tout = fmin(m->dtout, tend);
+    int fresh = 0; /* modes changed without a restart: the Jacobian is stale */
     while (t < tend) {
-        int flag = CVode(cv, tout, y, &t, CV_NORMAL);
+        /* after such a change, one internal step with a forced linear solver
+         * setup and a new Jacobian: a stale Jacobian of the old mode (a
+         * contact stiffness that is gone, a viscous friction term that
+         * saturated) can make Newton's first small correction pass the
+         * convergence test with a wrong solution */
+        const int one_step = fresh;
+        long nst_before = 0, nst_after = 0;
+        if (fresh) {
+            CVCHECK(CVodeSetLSetupFrequency(cv, 1), "CVodeSetLSetupFrequency");
+            CVCHECK(CVodeSetJacEvalFrequency(cv, 1), "CVodeSetJacEvalFrequency");
+            CVodeGetNumSteps(cv, &nst_before);
+        }
+        int flag = CVode(cv, tout, y, &t, one_step ? CV_ONE_STEP : CV_NORMAL);
+        /* right after a root return, a single-step call may only hand back
+         * the rest of the step already taken: keep the forced setup until a
+         * new step has been taken */
+        if (fresh && CVodeGetNumSteps(cv, &nst_after) == CV_SUCCESS && nst_after > nst_before) {
+            CVCHECK(CVodeSetLSetupFrequency(cv, 0), "CVodeSetLSetupFrequency");
+            CVCHECK(CVodeSetJacEvalFrequency(cv, 0), "CVodeSetJacEvalFrequency");
+            fresh = 0;
+        }
         if (flag < 0) {
             const char *cf = rc_cpl_failed(m, d);
             snprintf(reason, sizeof reason, "CVODE failed at t = %.9g s: %s%s%s%s%s", t, CVodeGetReturnFlagName(flag),
@@ -515,6 +537,8 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
                 add_stats(cv, &s);
                 CVCHECK(CVodeReInit(cv, t, y), "CVodeReInit");
                 s.reinits++;
+            } else if (nev > 0) {
+                fresh = 1;
             }
             if (nev > 0 && (st = write_frame(m, d, out, &fb, t, yd, 1, err))) goto done;
             /* an event on an output time stands for that output */
@@ -522,11 +546,23 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
                 nout++;
                 tout = fmin(nout * m->dtout, tend);
             }
+        } else if (one_step && t < tout) {
+            /* the single step ended before the output time: carry on */
         } else {
-            if ((st = write_frame(m, d, out, &fb, t, yd, 0, err))) goto done;
-            nout++;
-            tout = fmin(nout * m->dtout, tend);
-            if (tend - tout < 1e-12 * tend) tout = tend;
+            /* output times reached (a single step may pass several) */
+            while (tout <= t) {
+                const double *yo = yd;
+                if (tout < t) {
+                    CVCHECK(CVodeGetDky(cv, tout, 0, ytn), "CVodeGetDky");
+                    yo = N_VGetArrayPointer(ytn);
+                }
+                if ((st = write_frame(m, d, out, &fb, tout, yo, 0, err))) goto done;
+                nout++;
+                const double next = fmin(nout * m->dtout, tend);
+                if (next <= tout) break;
+                tout = next;
+                if (tend - tout < 1e-12 * tend) tout = tend;
+            }
         }
         if (show && wall_now() - last_progress > 0.5) {
             long nst = 0;

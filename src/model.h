@@ -85,6 +85,7 @@ enum {
     RC_ROOT_TRK_A,      /* Inacti 5 tracking: dP_raw/dt                */
     RC_ROOT_TRK_B,      /* Inacti 5 tracking: offset                   */
     RC_ROOT_SLIP,       /* stick: |F_t|^2 - F_lim^2; slip: v_t . e     */
+    RC_ROOT_REV,        /* saturated stateless friction: v_t . d_ref   */
     RC_ROOTS_PER_INTER
 };
 
@@ -202,6 +203,8 @@ typedef struct rc_data {
     int *inter_branch;   /* [ninter] rc_branch (Iform 1, 2) */
     int *inter_track;    /* [ninter] 1: Inacti 5 offset follows the separation */
     int *inter_slip;     /* [ninter] friction: 0 stick, 1 slip */
+    double *inter_dref;  /* [ninter*3] sliding direction when a stateless friction
+                            law saturated (reversal root) [-] */
     struct rc_cpl_data *cpl; /* couplings: catenary warm starts, workspace (coupling.h) */
     double *imp_free;    /* [ny] imposed velocities: the free accelerations of
                             their rows at the last rhs (imposed.h), NULL: none */
@@ -228,6 +231,7 @@ typedef struct rc_inter_report {
     double flim;         /* friction limit Sfric + mu F_n [N] */
     double vslip;        /* sliding speed |v_t| [m/s] */
     double slip_root;    /* stick: |F_t|^2 - F_lim^2; slip: v_t . e */
+    double vt[3];        /* tangential relative velocity at the contact point [m/s] */
     double point[3];     /* contact point [m] */
     double normal[3];    /* unit normal, from a to b [-] */
 } rc_inter_report;

@@ -1,0 +1,153 @@
+/*
+ * Input errors found when the model is compiled (references between cards,
+ * physics that needs the curves): each names file:line, card and field, and
+ * nothing runs (exit code 2 through rc_status RC_EINPUT).
+ */
+#include <stdarg.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include "../src/error.h"
+#include "harness.h"
+
+/* A valid deck: a sphere on body 1 dropped on a fixed plane, TYPE6 Iform 1
+ * (load k1 = 1e5 N/m, unload curve below), the pieces below replaced by the
+ * tests (comma format: docs/case-format.md). */
+static const char *const base[] = {
+    "/FUNCT/1\nload\n0,0\n1,1e5\n",
+    "/FUNCT/2\nunload\n0,0\n0.002,0\n1,9e4\n",
+    "/NODE\n1,0,0,0.05\n",
+    "/RBODY/1\nball\n1,,,,1.0\n0.001,0.001,0.001\n0,0,0\n",
+    "/SURF/ELLIPS/10\nball\n0,2,1\n0,0,0.05\n0.05,0.05,0.05\n",
+    "/SURF/PLANE/20\nfloor\n0,0,0\n0,0,1\n",
+    "/INTER/TYPE6/3\ncontact\n10,20\n,,0\n,0,0,0\n1,1,,,0\n2,,2e5\n0\n",
+    "/RUN\n0.01,0.001\n",
+};
+enum { N_BASE = sizeof base / sizeof base[0] };
+
+/* Deck = base with piece k replaced by `piece` (NULL: dropped; k = -1: none)
+ * and `extra` appended; written to a temporary file. */
+static const char *deck(int k, const char *piece, const char *extra)
+{
+    static char path[128], text[8192];
+    size_t n = 0;
+    for (int i = 0; i < N_BASE; i++) {
+        const char *p = i == k ? piece : base[i];
+        if (p) n += (size_t)snprintf(text + n, sizeof text - n, "%s", p);
+    }
+    if (extra) n += (size_t)snprintf(text + n, sizeof text - n, "%s", extra);
+    snprintf(path, sizeof path, "/tmp/rc_compile_test_%d.rad", (int)getpid());
+    FILE *f = fopen(path, "w");
+    if (f) {
+        fputs(text, f);
+        fclose(f);
+    }
+    return path;
+}
+
+/* Load and compile; expect RC_EINPUT with every needle in the message. */
+static int compile_error(const char *path, ...)
+{
+    rc_case *c = NULL;
+    rc_model *m = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    rc_status st = rc_case_load(path, &c, &e);
+    if (st == RC_OK) st = rc_model_compile(c, &m, &e);
+    int bad = st != RC_EINPUT || m != NULL;
+    if (!strstr(e.msg, path)) bad++; /* names the file */
+    va_list ap;
+    va_start(ap, path);
+    for (const char *s; (s = va_arg(ap, const char *));)
+        if (!strstr(e.msg, s)) {
+            fprintf(stderr, "  missing \"%s\"\n", s);
+            bad++;
+        }
+    va_end(ap);
+    if (bad) fprintf(stderr, "  status %d; message: %s\n", st, e.msg);
+    rc_model_free(m);
+    rc_case_free(c);
+    remove(path);
+    return bad;
+}
+
+#define EXPECT_COMPILE_ERROR(path, ...) ENSURE(compile_error((path), __VA_ARGS__, (const char *)NULL) == 0)
+
+static void test_compile_base_deck_is_valid(void)
+{
+    rc_case *c = NULL;
+    rc_model *m = NULL;
+    rc_error e;
+    const char *p = deck(-1, NULL, NULL);
+    ENSURE(rc_case_load(p, &c, &e) == RC_OK);
+    if (c) ENSURE(rc_model_compile(c, &m, &e) == RC_OK);
+    rc_model_free(m);
+    rc_case_free(c);
+    remove(p);
+}
+
+static void test_compile_errors_references(void)
+{
+    /* surfaces, functions, nodes, groups that do not exist */
+    EXPECT_COMPILE_ERROR(deck(6, "/INTER/TYPE6/3\ncontact\n10,21\n,,0\n,0,0,0\n1,1,,,0\n2,,2e5\n0\n", NULL),
+                         ":28:", "card /INTER/TYPE6/3", "field surf_ID2", "no such surface");
+    EXPECT_COMPILE_ERROR(deck(6, "/INTER/TYPE6/3\ncontact\n10,20\n,,0\n,0,0,0\n7,1,,,0\n2,,2e5\n0\n", NULL),
+                         "card /INTER/TYPE6/3", "field fct_IDld", "no such function");
+    EXPECT_COMPILE_ERROR(deck(6, "/INTER/TYPE6/3\ncontact\n10,20\n,,0\n,0,0,0\n1,1,,,0\n9,,2e5\n0\n", NULL),
+                         "card /INTER/TYPE6/3", "field fct_IDul", "no such function");
+    EXPECT_COMPILE_ERROR(deck(3, "/RBODY/1\nball\n5,,,,1.0\n0.001,0.001,0.001\n0,0,0\n", NULL), "card /RBODY/1",
+                         "field node_ID", "no such node");
+    EXPECT_COMPILE_ERROR(deck(-1, NULL, "/GRAV/1\ng\n0,Z,0,0,44,1,-9.81\n"), "card /GRAV/1", "field grnod_ID",
+                         "no such group");
+    EXPECT_COMPILE_ERROR(deck(4, "/SURF/ELLIPS/10\nball\n0,2,8\n0,0,0.05\n0.05,0.05,0.05\n", NULL),
+                         "card /SURF/ELLIPS/10", "field rbody_ID", "no such body");
+}
+
+static void test_compile_errors_physics(void)
+{
+    /* the unload curve must lie below the load curve */
+    EXPECT_COMPILE_ERROR(deck(1, "/FUNCT/2\nunload\n0,0\n0.001,150\n1,1.5e4\n", NULL), "card /INTER/TYPE6/3", "field fct_IDul",
+                         "below the load curve");
+    /* Stiff steeper than both curves (no chattering at a reversal) */
+    EXPECT_COMPILE_ERROR(deck(6, "/INTER/TYPE6/3\ncontact\n10,20\n,,0\n,0,0,0\n1,1,,,0\n2,,5e4\n0\n", NULL),
+                         "card /INTER/TYPE6/3", "field Stiff", "steeper than the load curve", "100000");
+    EXPECT_COMPILE_ERROR(deck(1, "/FUNCT/2\nunload\n0,0\n0.5,0\n0.6,4e4\n", NULL), "field Stiff",
+                         "steeper than the unload curve");
+    /* pairs ricochet cannot compute, surfaces on one body */
+    EXPECT_COMPILE_ERROR(deck(4, "/SURF/PLANE/10\np\n0,0,1\n0,0,2\n", NULL), "card /INTER/TYPE6/3",
+                         "plane against plane");
+    EXPECT_COMPILE_ERROR(deck(5, "/SURF/ELLIPS/20\nb\n0,2,1\n0,0,0.2\n0.05,0.05,0.05\n", NULL),
+                         "card /INTER/TYPE6/3", "same body");
+    /* a partial rotation lock */
+    EXPECT_COMPILE_ERROR(deck(-1, NULL, "/GRNOD/NODE/5\ng\n1\n/BCS/1\nb\n000 110,0,5\n"), "card /BCS/1",
+                         "field Trarot", "partial rotation lock");
+}
+
+static void test_compile_errors_friction_cards(void)
+{
+    const char *parts = "/PART/41\nball\n0,0,0,0\n1\n/PART/42\nfloor\n0,0,0,0\n0,20\n";
+    char extra[1024];
+    /* a pair naming a part that does not exist */
+    snprintf(extra, sizeof extra, "%s/FRICTION/1\nf\n0,0,,2\n\n0,0.3,\n0,0,41,99,,0\n\n0,0.3,\n", parts);
+    EXPECT_COMPILE_ERROR(deck(-1, NULL, extra), "card /FRICTION/1", "field part_ID2", "no such part");
+    /* a part naming a surface of another body */
+    EXPECT_COMPILE_ERROR(deck(-1, NULL, "/PART/41\nball\n0,0,0,0\n1,20\n/FRICTION/1\nf\n0,0,,2\n\n0,0.3,\n"),
+                         "card /PART/41", "field surf_ID", "not carried by");
+    /* orthotropic friction without /FRIC_ORIENT */
+    snprintf(extra, sizeof extra, "%s/FRICTION/1\nf\n0,0,,2\n\n0,0.3,\n0,0,41,42,,1\n\n0,0.2,\n\n0,0.5,\n", parts);
+    EXPECT_COMPILE_ERROR(deck(-1, NULL, extra), "card /FRICTION/1", "needs a /FRIC_ORIENT");
+    /* a surface in two parts */
+    EXPECT_COMPILE_ERROR(deck(-1, NULL,
+                              "/PART/41\nball\n0,0,0,0\n1\n/PART/43\nball again\n0,0,0,0\n1,10\n"
+                              "/FRICTION/1\nf\n0,0,,2\n\n0,0.3,\n"),
+                         "card /PART/43", "already belongs to /PART/41");
+}
+
+void suite_compile(void);
+void suite_compile(void)
+{
+    RUN_TEST(test_compile_base_deck_is_valid);
+    RUN_TEST(test_compile_errors_references);
+    RUN_TEST(test_compile_errors_physics);
+    RUN_TEST(test_compile_errors_friction_cards);
+}

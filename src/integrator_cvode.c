@@ -25,6 +25,7 @@
 #include "error.h"
 #include "events.h"
 #include "model.h"
+#include "imposed.h"
 #include "output.h"
 #include "power.h"
 
@@ -89,6 +90,33 @@ static int cb_proj(realtype t, N_Vector ycur, N_Vector corr, realtype eps, N_Vec
 }
 
 /* ---- helpers ----------------------------------------------------------- */
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Time breakpoints: instants where the right-hand side jumps by time alone
+ * (the end of an imposed velocity, /IMPVEL Tstop), inside (0, tend), sorted,
+ * distinct. CVODE is stopped exactly there (CVodeSetStopTime) and restarted.
+ * Returns the count; *bp is allocated (free it). */
+static int time_breakpoints(const rc_model *m, double tend, double **bp)
+{
+    const rc_imposed *p = m->imp;
+    int n = 0, cap = p ? p->nt + p->nr : 0;
+    *bp = malloc(((size_t)cap + 1) * sizeof(double));
+    if (!*bp) return -1;
+    for (int k = 0; p && k < p->nt + p->nr; k++) {
+        double ts = k < p->nt ? p->ttstop[k] : p->rtstop[k - p->nt];
+        if (ts > 0 && ts < tend) (*bp)[n++] = ts;
+    }
+    qsort(*bp, (size_t)n, sizeof(double), cmp_double);
+    int u = 0;
+    for (int k = 0; k < n; k++)
+        if (u == 0 || (*bp)[k] > (*bp)[u - 1]) (*bp)[u++] = (*bp)[k];
+    return u;
+}
+
 /* Only the crossing that changes a mode is a root (docs/theory.md 5). */
 static void root_directions(const rc_model *m, const rc_data *d, int *dir)
 {
@@ -390,7 +418,8 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     SUNContext ctx = NULL;
     N_Vector y = NULL, av = NULL, f0 = NULL, f1 = NULL, ytn = NULL;
     int *old_mode = NULL, *old_branch = NULL, *old_track = NULL, *old_slip = NULL, *rootdir = NULL;
-    double *gbuf = NULL, *g2buf = NULL, *ylook = NULL, *flook = NULL;
+    double *gbuf = NULL, *g2buf = NULL, *ylook = NULL, *flook = NULL, *bp = NULL;
+    int nbp = 0, ibp = 0;
     SUNMatrix A = NULL;
     SUNLinearSolver LS = NULL;
     void *cv = NULL;
@@ -474,6 +503,13 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     CVCHECK(CVodeSetNoInactiveRootWarn(cv), "CVodeSetNoInactiveRootWarn");
     CVCHECK(set_root_directions(m, d, cv, rootdir), "CVodeSetRootDirection");
 
+    /* time breakpoints: stop exactly there */
+    if ((nbp = time_breakpoints(m, tend, &bp)) < 0) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory");
+        goto done;
+    }
+    if (nbp > 0) CVCHECK(CVodeSetStopTime(cv, bp[0]), "CVodeSetStopTime");
+
     double e0[RC_NENERGY];
     rc_energy(m, d, t, yd, e0);
     if ((st = write_frame(m, d, out, &fb, t, yd, 0, err))) goto done;
@@ -513,6 +549,23 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
             fail_reason = reason;
             st = RC_SET(err, RC_ESOLVER, "%s", reason);
             break;
+        }
+        if (flag == CV_TSTOP_RETURN && ibp < nbp && t >= bp[ibp]) {
+            /* a time breakpoint: an imposed velocity ends; restart there */
+            s.events++;
+            if (out && (st = rc_output_event(out, t, "impvel_stop", "/IMPVEL", err))) goto done;
+            add_stats(cv, &s);
+            CVCHECK(CVodeReInit(cv, t, y), "CVodeReInit");
+            s.reinits++;
+            while (ibp < nbp && bp[ibp] <= t) ibp++;
+            /* the next breakpoint, or none (a stop time past the end) */
+            CVCHECK(CVodeSetStopTime(cv, ibp < nbp ? bp[ibp] : 2 * tend + 1), "CVodeSetStopTime");
+            if ((st = write_frame(m, d, out, &fb, t, yd, 1, err))) goto done;
+            if (tout - t <= 1e-12 * fmax(fabs(t), m->dtout)) {
+                nout++;
+                tout = fmin(nout * m->dtout, tend);
+            }
+            continue;
         }
         if (flag == CV_ROOT_RETURN) {
             /* flip modes; restart only when the right-hand side jumps */
@@ -604,6 +657,7 @@ done:
     free(old_slip);
     free(rootdir);
     free(gbuf);
+    free(bp);
     free(g2buf);
     free(ylook);
     free(flook);

@@ -266,8 +266,8 @@ static rc_status rc_card_rbody(rc_reader *rd, const rc_block *b)
  * /SURF/PLANE and /SURF/ELLIPS
  * ====================================================================== */
 
-/* New surface of the given kind. */
-static rc_case_surf *rc_new_surf(rc_reader *rd, const rc_block *b, rc_case_surf_kind kind)
+/* New surface of the given kind (also used by case_cards_power.c). */
+rc_case_surf *rc_new_surf(rc_reader *rd, const rc_block *b, rc_case_surf_kind kind)
 {
     rc_case *c = rd->c;
     rc_case_surf *arr = rc_case_grow(rd, c->surf, &rd->capsurf, c->nsurf, sizeof *arr);

@@ -120,19 +120,6 @@ rc_status rc_card_power(rc_reader *rd, const rc_block *b)
  * /SURF/CYL and /SURF/BOX
  * ====================================================================== */
 
-static rc_case_surf *new_surf(rc_reader *rd, const rc_block *b, rc_case_surf_kind kind)
-{
-    rc_case *c = rd->c;
-    rc_case_surf *arr = rc_case_grow(rd, c->surf, &rd->capsurf, c->nsurf, sizeof *arr);
-    if (!arr) return NULL;
-    c->surf = arr;
-    rc_case_surf *s = &c->surf[c->nsurf++];
-    s->id = b->id;
-    s->kind = kind;
-    s->loc = b->hdr->loc;
-    return s;
-}
-
 static double norm3(const double *v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
 /* /SURF/CYL/surf_ID: title; rbody_ID Iend Icont; Xc Yc Zc; AX AY AZ; R L. */
@@ -141,7 +128,7 @@ rc_status rc_card_cyl(rc_reader *rd, const rc_block *b)
     int nd;
     rc_status st;
     if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "surf_ID", "/SURF/CYL/surf_ID"))) return st;
-    rc_case_surf *s = new_surf(rd, b, RC_CASE_SURF_CYL);
+    rc_case_surf *s = rc_new_surf(rd, b, RC_CASE_SURF_CYL);
     if (!s) return RC_ENOMEM;
     if ((st = rc_card_lines(rd, b, s->title, 4, 4, "rbody_ID Iend Icont, Xc Yc Zc, AX AY AZ, R L", &nd))) return st;
 
@@ -170,7 +157,7 @@ rc_status rc_card_box(rc_reader *rd, const rc_block *b)
     int nd;
     rc_status st;
     if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "surf_ID", "/SURF/BOX/surf_ID"))) return st;
-    rc_case_surf *s = new_surf(rd, b, RC_CASE_SURF_BOX);
+    rc_case_surf *s = rc_new_surf(rd, b, RC_CASE_SURF_BOX);
     if (!s) return RC_ENOMEM;
     if ((st = rc_card_lines(rd, b, s->title, 3, 5, "rbody_ID, Xc Yc Zc, a b c[, UX UY UZ, VX VY VZ]", &nd)))
         return st;

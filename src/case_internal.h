@@ -203,4 +203,7 @@ rc_status rc_cards_finish(rc_reader *rd);
 /* Defaults of the optional cards, set before reading. */
 void rc_cards_defaults(rc_case *c);
 
+/* Append a new surface of the given kind for block b (NULL: out of memory). */
+rc_case_surf *rc_new_surf(rc_reader *rd, const rc_block *b, rc_case_surf_kind kind);
+
 #endif

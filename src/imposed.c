@@ -210,30 +210,18 @@ rc_status rc_imp_pattern_keys(const rc_model *m, int64_t **key, int64_t *n, rc_e
     return RC_OK;
 }
 
-static int64_t slot_of(const rc_model *m, int row, int col)
-{
-    int64_t lo = m->jac_colptr[col], hi = m->jac_colptr[col + 1] - 1;
-    while (lo <= hi) {
-        int64_t mid = lo + (hi - lo) / 2;
-        if (m->jac_rowind[mid] == row) return mid;
-        if (m->jac_rowind[mid] < row) lo = mid + 1;
-        else hi = mid - 1;
-    }
-    return -1;
-}
-
 rc_status rc_imp_slots(rc_model *m, rc_error *err)
 {
     rc_imposed *p = m->imp;
     p->wslot = malloc(((size_t)m->ny + 1) * sizeof(int64_t));
     p->row_imp = calloc((size_t)m->ny + 1, 1);
     if (!p->wslot || !p->row_imp) RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
-    for (int c = 0; c < m->ny; c++) p->wslot[c] = slot_of(m, p->wadr, c);
+    for (int c = 0; c < m->ny; c++) p->wslot[c] = rc_jac_slot(m, p->wadr, c);
     mark_rows(m, p->row_imp);
     for (int j = 0; j < p->nr; j++) {
         const int a = m->body_yadr[p->rbody[j]];
         for (int r = 0; r < 3; r++)
-            for (int c = 0; c < 4; c++) p->rqslot[12 * j + 4 * r + c] = slot_of(m, a + 10 + r, a + 3 + c);
+            for (int c = 0; c < 4; c++) p->rqslot[12 * j + 4 * r + c] = rc_jac_slot(m, a + 10 + r, a + 3 + c);
     }
     return RC_OK;
 }

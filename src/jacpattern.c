@@ -143,8 +143,8 @@ done:
     return st;
 }
 
-/* CSC position of (row, col); the entry exists by construction. */
-static int64_t find_slot(const rc_model *m, int row, int col)
+/* CSC position of (row, col), -1 when the entry is not in the pattern. */
+int64_t rc_jac_slot(const rc_model *m, int row, int col)
 {
     int64_t lo = m->jac_colptr[col], hi = m->jac_colptr[col + 1] - 1;
     while (lo <= hi) {
@@ -161,7 +161,7 @@ static rc_status fill_slots(const rc_model *m, rc_jblock *jb, rc_error *err)
     for (int r = 0; r < jb->nrow; r++)
         for (int c = 0; c < jb->ncol; c++) {
             if (jb->slot[r * jb->ncol + c] < 0) continue; /* pruned */
-            int64_t s = find_slot(m, jb->rows[r], jb->cols[c]);
+            int64_t s = rc_jac_slot(m, jb->rows[r], jb->cols[c]);
             if (s < 0) RC_RAISE(err, RC_EINTERNAL, "Jacobian slot (%d, %d) missing", jb->rows[r], jb->cols[c]);
             jb->slot[r * jb->ncol + c] = s;
         }
@@ -235,13 +235,13 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
     free(key);
     for (int64_t c = 0; c < ny; c++) m->jac_colptr[c + 1] += m->jac_colptr[c];
     /* slots */
-    for (int64_t k = 0; k < ny; k++) m->jac_diag[k] = find_slot(m, (int)k, (int)k);
+    for (int64_t k = 0; k < ny; k++) m->jac_diag[k] = rc_jac_slot(m, (int)k, (int)k);
     if (m->gwork_adr >= 0) {
         m->gwork_slot = calloc(3 * (size_t)m->nbody + 1, sizeof(int64_t));
         if (!m->gwork_slot) RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
         for (int b = 0; b < m->nbody; b++)
             for (int k = 0; k < 3 && m->body_yadr[b] >= 0; k++)
-                m->gwork_slot[3 * b + k] = find_slot(m, m->gwork_adr, m->body_yadr[b] + 7 + k);
+                m->gwork_slot[3 * b + k] = rc_jac_slot(m, m->gwork_adr, m->body_yadr[b] + 7 + k);
     }
     if (m->imp) {
         rc_status ist = rc_imp_slots(m, err);

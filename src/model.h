@@ -295,6 +295,8 @@ double rc_friction_mu(const rc_model *m, int i, int dir, double p, double v, dou
 
 /* ---- Jacobian pattern (jacpattern.c) ------------------------------- */
 rc_status rc_jac_build(rc_model *m, rc_error *err);
+/* CSC position of (row, col), -1 when the entry is not in the pattern. */
+int64_t rc_jac_slot(const rc_model *m, int row, int col);
 void rc_jac_free(rc_model *m);
 
 /* ---- modes and events (events.c) ----------------------------------- */

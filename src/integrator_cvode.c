@@ -32,6 +32,11 @@
 /* A jump in ydot whose effect over one step, relative to the error weight,
  * exceeds this fraction triggers a restart after an event [-]. */
 #define RC_REINIT_JUMP 0.1
+/* Event accumulation (Zeno): more than RC_ZENO_MAX consecutive events of one
+ * element, each within RC_ZENO_REL * max(t, dtout) of the previous, end the
+ * run with a message instead of stalling [-]. */
+#define RC_ZENO_MAX 200
+#define RC_ZENO_REL 1e-7
 /* Events kept per root return (more are applied but not itemised). */
 #define RC_MAX_EV 64
 
@@ -410,6 +415,7 @@ static void progress(const rc_model *m, const rc_stats *s, double t, long steps,
 rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, rc_error *err)
 {
     rc_status st = RC_OK;
+    double t = 0.0; /* time reached [s] */
     rc_error local_err;
     if (!err) err = &local_err;
     rc_error_clear(err);
@@ -418,7 +424,8 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     SUNContext ctx = NULL;
     N_Vector y = NULL, av = NULL, f0 = NULL, f1 = NULL, ytn = NULL;
     int *old_mode = NULL, *old_branch = NULL, *old_track = NULL, *old_slip = NULL, *rootdir = NULL;
-    double *gbuf = NULL, *g2buf = NULL, *ylook = NULL, *flook = NULL, *bp = NULL;
+    double *gbuf = NULL, *g2buf = NULL, *ylook = NULL, *flook = NULL, *bp = NULL, *zeno_t = NULL;
+    int *zeno_n = NULL;
     int nbp = 0, ibp = 0;
     SUNMatrix A = NULL;
     SUNLinearSolver LS = NULL;
@@ -454,13 +461,15 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     old_slip = calloc((size_t)m->ninter + 1, sizeof(int));
     rootdir = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(int));
     gbuf = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(double));
+    zeno_t = calloc((size_t)m->ninter + 1, sizeof(double));
+    zeno_n = calloc((size_t)m->ninter + 1, sizeof(int));
     g2buf = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(double));
     ylook = calloc((size_t)m->ny, sizeof(double));
     flook = calloc((size_t)m->ny, sizeof(double));
     A = SUNSparseMatrix(m->ny, m->ny, m->nnz, CSC_MAT, ctx);
     roots = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(int));
     if (!y || !av || !f0 || !f1 || !ytn || !old_mode || !old_branch || !old_track || !old_slip || !rootdir || !gbuf || !A ||
-        !roots || !g2buf || !ylook || !flook) {
+        !roots || !g2buf || !ylook || !flook || !zeno_t || !zeno_n) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the solver");
         goto done;
     }
@@ -473,7 +482,6 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     double *yd = N_VGetArrayPointer(y);
     rc_initial_state(m, yd);
     memcpy(N_VGetArrayPointer(av), m->atol, (size_t)m->ny * sizeof(double));
-    double t = 0.0;
     rc_modes_init(m, d, t, yd);
     if ((st = open_output(m, opt ? opt->output_path : NULL, &out, err))) goto done;
     {
@@ -580,6 +588,22 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
             s.events += nev;
             for (int k = 0; k < nev && k < RC_MAX_EV && out; k++)
                 if ((st = rc_output_event(out, t, ev[k].kind, m->inter_name[ev[k].inter], err))) goto done;
+            /* event accumulation: report it rather than stall */
+            for (int k = 0; k < nev && k < RC_MAX_EV; k++) {
+                const int i = ev[k].inter;
+                zeno_n[i] = t - zeno_t[i] <= RC_ZENO_REL * fmax(fabs(t), m->dtout) ? zeno_n[i] + 1 : 0;
+                zeno_t[i] = t;
+                if (zeno_n[i] > RC_ZENO_MAX) {
+                    snprintf(reason, sizeof reason,
+                             "event accumulation (Zeno) at t = %.9g s in %s: more than %d events within %.2g s of "
+                             "each other (last: %s); the modes of this element switch without the state moving: "
+                             "tighter tolerances or a smoother law may help",
+                             t, m->inter_name[i], RC_ZENO_MAX, RC_ZENO_REL * fmax(fabs(t), m->dtout), ev[k].kind);
+                    fail_reason = reason;
+                    st = RC_SET(err, RC_ESOLVER, "%s", reason);
+                    goto done;
+                }
+            }
             /* roots left exactly on zero that leave it the triggering way */
             nev += resolve_zero_roots(m, d, t, yd, m->dtout, gbuf, g2buf, rootdir, roots, ylook, flook, out,
                                       &s.events, &jumped, &st, err);
@@ -632,6 +656,7 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
 
 done:
     if (cv) add_stats(cv, &s);
+    if (st != RC_OK) s.t_end = t; /* how far a failed run got */
     s.wall_time = wall_now() - wall0;
     if (show) fprintf(stderr, "\n");
     if (out) {
@@ -657,6 +682,8 @@ done:
     free(old_slip);
     free(rootdir);
     free(gbuf);
+    free(zeno_t);
+    free(zeno_n);
     free(bp);
     free(g2buf);
     free(ylook);

@@ -134,19 +134,29 @@ def plot_force(ds, prefix, written):
 
 
 def plot_energy(ds, prefix, written):
-    """Every energy_* time series."""
+    """The energy_* time series that are not identically zero; the total
+    (constant in exact arithmetic) drawn thick and black."""
     t = values(ds, "time")
     names = [n for n, v in ds.variables.items()
-             if n.startswith("energy_") and v.dimensions == ("time",)]
-    fig, ax = plt.subplots(figsize=(8, 4.8))
+             if n.startswith("energy_") and v.dimensions == ("time",)
+             and np.any(values(ds, n) != 0)]
+    fig, ax = plt.subplots(figsize=(10, 4.8))
+    colors = plt.cm.tab10(np.linspace(0, 1, 10))
+    k = 0
     for n in names:
-        ax.plot(t, values(ds, n), label=getattr(ds.variables[n], "long_name", n))
+        short = n[len("energy_"):]
+        if n == "energy_total":
+            ax.plot(t, values(ds, n), color="black", lw=2, label="total")
+        else:
+            ax.plot(t, values(ds, n), color=colors[k % 10], label=short)
+            k += 1
     ax.set_xlabel(label(ds, "time"))
     ax.set_ylabel(f"energy [{units(ds, names[0])}]" if names else "energy")
-    ax.set_title(title(ds, "energy ledger"))
+    ax.set_title(title(ds, "energy ledger (series that are not all zero)"))
     ax.grid(True, alpha=0.3)
     if names:
-        ax.legend(fontsize="small")
+        ax.legend(fontsize="small", loc="center left", bbox_to_anchor=(1.01, 0.5))
+    fig.tight_layout()
     save(fig, f"{prefix}_energy.png", written)
 
 

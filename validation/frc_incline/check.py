@@ -14,6 +14,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
+import incline  # noqa: E402
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
 
@@ -30,19 +31,15 @@ MU_T6, MU_CARD1, MU_DEFAULT = 0.6, 0.9, 0.05
 
 
 def frame(tan_th):
-    """Plane normal n, fall-line direction s (down the slope), in-plane u = n x s."""
-    th = math.atan(tan_th)
-    n = np.array([math.sin(th) * math.cos(PHI), math.sin(th) * math.sin(PHI), math.cos(th)])
-    s = np.array([math.cos(th) * math.cos(PHI), math.cos(th) * math.sin(PHI), -math.sin(th)])
-    return th, n, s, np.cross(n, s)
+    return incline.frame(tan_th, PHI)
 
 
 def ramp_table(n=501):
-    """Quintic smoothstep 0 -> 1 on [0, T_r] (f', f'' zero at both ends), then
-    a far point at 1 so that the linear extension beyond the table stays flat."""
-    t = np.linspace(0.0, TR, n)
-    x = t / TR
-    return list(t) + [1.0e4], list(x**3 * (10.0 - 15.0 * x + 6.0 * x * x)) + [1.0]
+    return incline.ramp_table(TR, n)
+
+
+def along(r, tan_th):
+    return incline.along(r, tan_th, PHI)
 
 
 def deck(tan_th, tend, ramped=False, dtout=0.01):
@@ -75,13 +72,6 @@ def deck(tan_th, tend, ramped=False, dtout=0.01):
                title="last card: defaults Fric 0.05, block/ground pair Fric 0.3")
     d.run(tend, dtout)
     return d
-
-
-def along(r, tan_th):
-    """Positions along s and u relative to the start, velocities along s, u, n."""
-    th, n, s, u = frame(tan_th)
-    dp = r.pos[:, 0, :] - r.pos[0, 0, :]
-    return dp @ s, dp @ u, r.vel[:, 0, :] @ s, r.vel[:, 0, :] @ u, r.vel[:, 0, :] @ n
 
 
 def main():

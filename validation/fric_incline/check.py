@@ -13,6 +13,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
+import incline  # noqa: E402
 import rcval  # noqa: E402
 from deck import Deck, r20  # noqa: E402
 
@@ -24,19 +25,15 @@ P0 = 1e-12                           # initial penetration of the ramped variant
 
 
 def frame(tan_th):
-    """Plane normal n, fall-line direction s (down the slope), in-plane normal-to-s direction u."""
-    th = math.atan(tan_th)
-    n = np.array([math.sin(th) * math.cos(PHI), math.sin(th) * math.sin(PHI), math.cos(th)])
-    s = np.array([math.cos(th) * math.cos(PHI), math.cos(th) * math.sin(PHI), -math.sin(th)])
-    return th, n, s, np.cross(n, s)
+    return incline.frame(tan_th, PHI)
 
 
 def ramp_table(n=501):
-    """Quintic smoothstep 0 -> 1 on [0, T_r] (f', f'' zero at both ends), then
-    a far point at 1 so that the linear extension beyond the table stays flat."""
-    t = np.linspace(0.0, TR, n)
-    x = t / TR
-    return list(t) + [1.0e4], list(x**3 * (10.0 - 15.0 * x + 6.0 * x * x)) + [1.0]
+    return incline.ramp_table(TR, n)
+
+
+def along(r, tan_th):
+    return incline.along(r, tan_th, PHI)
 
 
 def deck(tan_th, tend, ramped=False, dtout=0.01, rtol=1e-6, atol_pos=1e-9, atol_vel=1e-6, atol_energy=1e-6):
@@ -63,13 +60,6 @@ def deck(tan_th, tend, ramped=False, dtout=0.01, rtol=1e-6, atol_pos=1e-9, atol_
     d.run(tend, dtout)
     d.solver(rtol=rtol, atol_pos=atol_pos, atol_vel=atol_vel, atol_energy=atol_energy)
     return d
-
-
-def along(r, tan_th):
-    """Positions along s and u relative to the start, velocities along s, u, n."""
-    th, n, s, u = frame(tan_th)
-    dp = r.pos[:, 0, :] - r.pos[0, 0, :]
-    return dp @ s, dp @ u, r.vel[:, 0, :] @ s, r.vel[:, 0, :] @ u, r.vel[:, 0, :] @ n
 
 
 def main():

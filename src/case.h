@@ -24,6 +24,10 @@ typedef struct rc_loc {
     int line;
 } rc_loc;
 
+/* "file:line: " of an rc_loc, for messages: printf(RC_LOCFMT "...", RC_LOC(l)). */
+#define RC_LOCFMT "%s:%d: "
+#define RC_LOC(l) (l).file, (l).line
+
 /* /FUNCT/fct_ID: tabulated curve y(x), points in file order. */
 typedef struct rc_case_funct {
     int id;
@@ -286,5 +290,11 @@ int rc_case_find_part(const rc_case *c, int id);
 int rc_case_find_grpart(const rc_case *c, int id);
 /* Body carrying a node (its main node or in its secondary group), or -1. */
 int rc_case_body_of_node(const rc_case *c, int node_id);
+/* Reference from field `field` of `card` (read at `loc`) to a /FUNCT: *index
+ * = its index (= the model's table index), or -1 when id = 0 and the
+ * reference is optional; RC_EINPUT naming file:line, card and field when the
+ * function does not exist (or is missing and required). */
+rc_status rc_case_ref_funct(const rc_case *c, int id, int required, rc_loc loc, const char *card,
+                            const char *field, int *index, rc_error *err);
 
 #endif

@@ -1,5 +1,6 @@
 /* Id lookups in a parsed case, shared by the compilers (index or -1). */
 #include "case.h"
+#include "error.h"
 
 #define RC_FIND(name, arr, count)                               \
     int rc_case_find_##name(const rc_case *c, int id)           \
@@ -27,4 +28,16 @@ int rc_case_body_of_node(const rc_case *c, int node_id)
                 if (c->grnod[g].nodes[k] == node_id) return b;
     }
     return -1;
+}
+
+rc_status rc_case_ref_funct(const rc_case *c, int id, int required, rc_loc loc, const char *card,
+                            const char *field, int *index, rc_error *err)
+{
+    *index = -1;
+    if (id == 0 && !required) return RC_OK;
+    *index = rc_case_find_funct(c, id);
+    if (*index < 0)
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field %s: expected the id of a /FUNCT, got %d (no such function)",
+                 RC_LOC(loc), card, field, id);
+    return RC_OK;
 }

@@ -26,21 +26,6 @@
         }                                                                           \
     } while (0)
 
-#define LOCFMT "%s:%d: "
-#define LOC(l) (l).file, (l).line
-
-/* Optional function reference -> table index (-1 when 0). */
-static rc_status ref_funct(const rc_case *c, int id, rc_loc loc, const char *card, const char *field,
-                           int *out, rc_error *err)
-{
-    *out = -1;
-    if (id == 0) return RC_OK;
-    *out = rc_case_find_funct(c, id);
-    if (*out < 0)
-        RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field %s: expected the id of a /FUNCT, got %d (no such function)",
-                 LOC(loc), card, field, id);
-    return RC_OK;
-}
 
 /* Bodies of the nodes of group `gid` -> flag array (all bodies when gid = 0). */
 static rc_status group_bodies(const rc_case *c, int gid, rc_loc loc, const char *card, int *flag,
@@ -50,14 +35,14 @@ static rc_status group_bodies(const rc_case *c, int gid, rc_loc loc, const char 
     if (gid == 0) return RC_OK;
     int g = rc_case_find_grnod(c, gid);
     if (g < 0)
-        RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field grnod_ID: expected the id of a /GRNOD, got %d (no such group)",
-                 LOC(loc), card, gid);
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field grnod_ID: expected the id of a /GRNOD, got %d (no such group)",
+                 RC_LOC(loc), card, gid);
     for (int k = 0; k < c->grnod[g].n; k++) {
         int b = rc_case_body_of_node(c, c->grnod[g].nodes[k]);
         if (b < 0)
             RC_RAISE(err, RC_EINPUT,
-                     LOCFMT "card %s: node %d of /GRNOD/%d belongs to no /RBODY (ricochet bodies are rigid)",
-                     LOC(loc), card, c->grnod[g].nodes[k], gid);
+                     RC_LOCFMT "card %s: node %d of /GRNOD/%d belongs to no /RBODY (ricochet bodies are rigid)",
+                     RC_LOC(loc), card, c->grnod[g].nodes[k], gid);
         flag[b] = 1;
     }
     return RC_OK;
@@ -88,11 +73,11 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
         const rc_case_rbody *rb = &c->rbody[b];
         int nd = rc_case_find_node(c, rb->node_id);
         if (nd < 0)
-            RC_RAISE(err, RC_EINPUT, LOCFMT "card /RBODY/%d, field node_ID: expected the id of a /NODE, got %d (no such node)",
-                     LOC(rb->loc), rb->id, rb->node_id);
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field node_ID: expected the id of a /NODE, got %d (no such node)",
+                     RC_LOC(rb->loc), rb->id, rb->node_id);
         if (rb->grnod_id && rc_case_find_grnod(c, rb->grnod_id) < 0)
-            RC_RAISE(err, RC_EINPUT, LOCFMT "card /RBODY/%d, field grnd_ID: expected the id of a /GRNOD, got %d (no such group)",
-                     LOC(rb->loc), rb->id, rb->grnod_id);
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field grnd_ID: expected the id of a /GRNOD, got %d (no such group)",
+                     RC_LOC(rb->loc), rb->id, rb->grnod_id);
         m->body_id[b] = rb->id;
         m->body_mass[b] = rb->mass;
         /* inertia: Jxx Jyy Jzz Jxy Jyz Jxz -> row-major 3x3 */
@@ -102,8 +87,8 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
         J[5] = J[7] = rb->J[4];
         J[2] = J[6] = rb->J[5];
         if (inv3(J, m->body_Jinv + 9 * b))
-            RC_RAISE(err, RC_EINPUT, LOCFMT "card /RBODY/%d, fields Jxx..Jxz: expected a positive-definite inertia tensor",
-                     LOC(rb->loc), rb->id);
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, fields Jxx..Jxz: expected a positive-definite inertia tensor",
+                     RC_LOC(rb->loc), rb->id);
         double *y0 = m->body_y0 + RC_NB * b;
         memcpy(y0, c->node[nd].x, 3 * sizeof(double));
         y0[3] = 1.0; /* body frame = global frame at t = 0 */
@@ -132,8 +117,8 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
         for (int j = 3; j < 6; j++) nrot += bc->fix[j] == 1;
         if (nrot != 0 && nrot != 3) {
             st = RC_SET(err, RC_EINPUT,
-                        LOCFMT "card %s, field Trarot: rotations must be all fixed or all free (\"xxx 111\" or \"xxx 000\"); a partial rotation lock is not supported yet",
-                        LOC(bc->loc), card);
+                        RC_LOCFMT "card %s, field Trarot: rotations must be all fixed or all free (\"xxx 111\" or \"xxx 000\"); a partial rotation lock is not supported yet",
+                        RC_LOC(bc->loc), card);
             break;
         }
         st = group_bodies(c, bc->grnod_id, bc->loc, card, flag, err);
@@ -153,11 +138,11 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
         char card[64];
         snprintf(card, sizeof card, "/GRAV/%d", gr->id);
         int tab;
-        st = ref_funct(c, gr->fct_id, gr->loc, card, "fct_IDT", &tab, err);
+        st = rc_case_ref_funct(c, gr->fct_id, 0, gr->loc, card, "fct_IDT", &tab, err);
         if (st) break;
         if (k > 0 && tab != m->grav_table) {
-            st = RC_SET(err, RC_EINPUT, LOCFMT "card %s, field fct_IDT: all /GRAV cards must share one time function (not supported yet)",
-                        LOC(gr->loc), card);
+            st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field fct_IDT: all /GRAV cards must share one time function (not supported yet)",
+                        RC_LOC(gr->loc), card);
             break;
         }
         m->grav_table = tab;
@@ -181,8 +166,8 @@ static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
         if (cs->rbody_id) {
             b = rc_case_find_rbody(c, cs->rbody_id);
             if (b < 0)
-                RC_RAISE(err, RC_EINPUT, LOCFMT "card /SURF/%s/%d, field rbody_ID: expected the id of a /RBODY, got %d (no such body)",
-                         LOC(cs->loc), kind, cs->id, cs->rbody_id);
+                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /SURF/%s/%d, field rbody_ID: expected the id of a /RBODY, got %d (no such body)",
+                         RC_LOC(cs->loc), kind, cs->id, cs->rbody_id);
         }
         m->surf_id[s] = cs->id;
         m->surf_body[s] = b;
@@ -238,15 +223,15 @@ static rc_status check_hysteresis(const rc_model *m, int i, const rc_case_type6 
     double at = 0, sl = max_slope(tl, m->inter_fscaleld[i], ax, &at);
     if (!(m->inter_stiff[i] > sl))
         RC_RAISE(err, RC_EINPUT,
-                 LOCFMT "card %s, field Stiff: expected a stiffness steeper than the load curve (its slope reaches %.6g N/m at P = %.6g m), got %.6g",
-                 LOC(t6->line_loc[4]), card, sl, at, m->inter_stiff[i]);
+                 RC_LOCFMT "card %s, field Stiff: expected a stiffness steeper than the load curve (its slope reaches %.6g N/m at P = %.6g m), got %.6g",
+                 RC_LOC(t6->line_loc[4]), card, sl, at, m->inter_stiff[i]);
     if (m->inter_fct_ul[i] < 0) return RC_OK;
     const rc_table *tu = &m->table[m->inter_fct_ul[i]];
     double su = max_slope(tu, m->inter_fscaleul[i], ax, &at);
     if (!(m->inter_stiff[i] > su))
         RC_RAISE(err, RC_EINPUT,
-                 LOCFMT "card %s, field Stiff: expected a stiffness steeper than the unload curve (its slope reaches %.6g N/m at P = %.6g m), got %.6g",
-                 LOC(t6->line_loc[4]), card, su, at, m->inter_stiff[i]);
+                 RC_LOCFMT "card %s, field Stiff: expected a stiffness steeper than the unload curve (its slope reaches %.6g N/m at P = %.6g m), got %.6g",
+                 RC_LOC(t6->line_loc[4]), card, su, at, m->inter_stiff[i]);
     /* unload below load at every point of either curve */
     for (int pass = 0; pass < 2; pass++) {
         const rc_table *t = pass ? tu : tl;
@@ -259,8 +244,8 @@ static rc_status check_hysteresis(const rc_model *m, int i, const rc_case_type6 
             fu *= m->inter_fscaleul[i];
             if (fu > fl + 1e-12 * fabs(fl))
                 RC_RAISE(err, RC_EINPUT,
-                         LOCFMT "card %s, field fct_IDul: expected an unload curve below the load curve, but at P = %.6g m it gives %.6g N above %.6g N",
-                         LOC(t6->line_loc[4]), card, P, fu, fl);
+                         RC_LOCFMT "card %s, field fct_IDul: expected an unload curve below the load curve, but at P = %.6g m it gives %.6g N above %.6g N",
+                         RC_LOC(t6->line_loc[4]), card, P, fu, fl);
         }
     }
     return RC_OK;
@@ -273,11 +258,11 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     snprintf(card, sizeof card, "/INTER/TYPE6/%d", t6->id);
     int s1 = rc_case_find_surf(c, t6->surf1), s2 = rc_case_find_surf(c, t6->surf2);
     if (s1 < 0 || s2 < 0)
-        RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field %s: expected the id of a /SURF, got %d (no such surface)",
-                 LOC(t6->line_loc[0]), card, s1 < 0 ? "surf_ID1" : "surf_ID2", s1 < 0 ? t6->surf1 : t6->surf2);
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field %s: expected the id of a /SURF, got %d (no such surface)",
+                 RC_LOC(t6->line_loc[0]), card, s1 < 0 ? "surf_ID1" : "surf_ID2", s1 < 0 ? t6->surf1 : t6->surf2);
     /* order the pair (a: sphere or cylinder) and name its kind (geom_compile.c) */
     char where[600];
-    snprintf(where, sizeof where, LOCFMT "card %s", LOC(t6->line_loc[0]), card);
+    snprintf(where, sizeof where, RC_LOCFMT "card %s", RC_LOC(t6->line_loc[0]), card);
     rc_status pst = rc_geom_pair(m, s1, s2, &s1, &s2, &m->inter_pair[i], where, err);
     if (pst) return pst;
     m->inter_sa[i] = s1;
@@ -285,8 +270,8 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     m->inter_ba[i] = m->surf_body[s1];
     m->inter_bb[i] = m->surf_body[s2];
     if (m->inter_ba[i] == m->inter_bb[i])
-        RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, fields surf_ID1/surf_ID2: both surfaces are on the same body; they must belong to two different rigid bodies",
-                 LOC(t6->line_loc[0]), card);
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields surf_ID1/surf_ID2: both surfaces are on the same body; they must belong to two different rigid bodies",
+                 RC_LOC(t6->line_loc[0]), card);
     m->inter_id[i] = t6->id;
     m->inter_gap[i] = t6->gap;
     m->inter_tstart[i] = t6->tstart;
@@ -298,10 +283,10 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     m->inter_ascalef[i] = t6->ascalef;
     m->inter_ascalev[i] = t6->ascalev;
     rc_status st;
-    if ((st = ref_funct(c, t6->fct_ld, t6->line_loc[3], card, "fct_IDld", &m->inter_fct_ld[i], err))) return st;
-    if ((st = ref_funct(c, t6->fct_dv, t6->line_loc[5], card, "fct_IDdv", &m->inter_fct_dv[i], err))) return st;
-    if ((st = ref_funct(c, t6->fct_df, t6->line_loc[5], card, "fct_IDdf", &m->inter_fct_df[i], err))) return st;
-    if ((st = ref_funct(c, t6->fct_ul, t6->line_loc[4], card, "fct_IDul", &m->inter_fct_ul[i], err))) return st;
+    if ((st = rc_case_ref_funct(c, t6->fct_ld, 0, t6->line_loc[3], card, "fct_IDld", &m->inter_fct_ld[i], err))) return st;
+    if ((st = rc_case_ref_funct(c, t6->fct_dv, 0, t6->line_loc[5], card, "fct_IDdv", &m->inter_fct_dv[i], err))) return st;
+    if ((st = rc_case_ref_funct(c, t6->fct_df, 0, t6->line_loc[5], card, "fct_IDdf", &m->inter_fct_df[i], err))) return st;
+    if ((st = rc_case_ref_funct(c, t6->fct_ul, 0, t6->line_loc[4], card, "fct_IDul", &m->inter_fct_ul[i], err))) return st;
     m->inter_iform[i] = t6->iform;
     m->inter_icor[i] = t6->icor;
     m->inter_inacti[i] = t6->inacti;
@@ -315,8 +300,8 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     rc_fric *fr = &m->inter_fr[i];
     fr->fct_ff = fr->fct_fv = -1;
     fr->tidx = fr->fidx = fr->widx = fr->obody = -1;
-    if ((st = ref_funct(c, t6->fct_ff, t6->line_loc[2], card, "fct_IDff", &fr->fct_ff, err))) return st;
-    if ((st = ref_funct(c, t6->fct_fv, t6->line_loc[2], card, "fct_IDfv", &fr->fct_fv, err))) return st;
+    if ((st = rc_case_ref_funct(c, t6->fct_ff, 0, t6->line_loc[2], card, "fct_IDff", &fr->fct_ff, err))) return st;
+    if ((st = rc_case_ref_funct(c, t6->fct_fv, 0, t6->line_loc[2], card, "fct_IDfv", &fr->fct_fv, err))) return st;
     fr->sfric = t6->sfric;
     fr->fric = t6->fric;
     fr->kind = t6->sfric > 0 || t6->fric > 0 ? RC_FK_TYPE6 : RC_FK_NONE;
@@ -325,11 +310,11 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     fr->kt = t6->stiff > 0 ? t6->stiff
                            : max_slope(&m->table[m->inter_fct_ld[i]], m->inter_fscaleld[i], m->inter_ascalex[i], &at);
     if (fr->kind != RC_FK_NONE && !(fr->kt > 0))
-        RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field Stiff: friction needs a tangential stiffness [N/m]; the default (the load curve's steepest slope) is 0",
-                 LOC(t6->line_loc[4]), card);
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field Stiff: friction needs a tangential stiffness [N/m]; the default (the load curve's steepest slope) is 0",
+                 RC_LOC(t6->line_loc[4]), card);
     if (m->inter_fct_ld[i] < 0)
-        RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field fct_IDld: expected the id of the load curve (required), got 0",
-                 LOC(t6->line_loc[3]), card);
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field fct_IDld: expected the id of the load curve (required), got 0",
+                 RC_LOC(t6->line_loc[3]), card);
     if ((st = check_hysteresis(m, i, t6, card, err))) return st;
     m->inter_name[i] = malloc(strlen(card) + 1);
     if (!m->inter_name[i]) RC_RAISE(err, RC_ENOMEM, "out of memory");

@@ -15,8 +15,6 @@
 #include "coupling.h"
 #include "error.h"
 
-#define LOCFMT "%s:%d: "
-#define LOC(l) (l).file, (l).line
 
 static const char *const kind_name[3] = {"", "SPRING", "CATENARY"};
 
@@ -27,13 +25,6 @@ static int body_index(const rc_model *m, int id)
     for (int b = 0; b < m->nbody; b++)
         if (m->body_id[b] == id) return b;
     return -2;
-}
-
-static int table_index(const rc_model *m, int id)
-{
-    for (int k = 0; k < m->ntable; k++)
-        if (m->table[k].id == id) return k;
-    return -1;
 }
 
 /* Gravity of the lines: the /GRAV cards that apply to all bodies. */
@@ -97,8 +88,8 @@ static rc_status compile_one(const rc_case *c, rc_model *m, int k, rc_error *err
         int b = body_index(m, cc->rbody[e]);
         if (b == -2)
             RC_RAISE(err, RC_EINPUT,
-                     LOCFMT "card %s, field rbody_ID%d: expected the id of a /RBODY or 0 (fixed point), got %d (no such body)",
-                     LOC(cc->line_loc[0]), card, e + 1, cc->rbody[e]);
+                     RC_LOCFMT "card %s, field rbody_ID%d: expected the id of a /RBODY or 0 (fixed point), got %d (no such body)",
+                     RC_LOC(cc->line_loc[0]), card, e + 1, cc->rbody[e]);
         *bs[e] = b;
         /* body frame = global frame at t = 0, origin at the centre of mass */
         const double *org = b >= 0 ? m->body_y0 + RC_NB * b : m->ground_y0;
@@ -112,8 +103,8 @@ static rc_status compile_one(const rc_case *c, rc_model *m, int k, rc_error *err
         line_gravity(c, g);
         if (!(g[0] * g[0] + g[1] * g[1] + g[2] * g[2] > 0))
             RC_RAISE(err, RC_EINPUT,
-                     LOCFMT "card %s: a catenary hangs in gravity: expected a /GRAV card that applies to all bodies (grnod_ID 0) with a non-zero Fscale_y, found none",
-                     LOC(cc->loc), card);
+                     RC_LOCFMT "card %s: a catenary hangs in gravity: expected a /GRAV card that applies to all bodies (grnod_ID 0) with a non-zero Fscale_y, found none",
+                     RC_LOC(cc->loc), card);
         memcpy(p->grav, g, sizeof g);
         p->lambda0[k] = cc->lambda0;
         p->leq[k] = cc->leq;
@@ -129,10 +120,8 @@ static rc_status compile_one(const rc_case *c, rc_model *m, int k, rc_error *err
     p->coef[3 * k + 1] = cc->iform == 2 ? cc->b : 0.0;
     p->coef[3 * k + 2] = cc->iform == 2 ? cc->c : 0.0;
     if (cc->iform == RC_KEFF_FORCE || cc->iform == RC_KEFF_STIFF) {
-        p->table[k] = table_index(m, cc->fct_id);
-        if (p->table[k] < 0)
-            RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field fct_ID: expected the id of a /FUNCT, got %d (no such function)",
-                     LOC(cc->line_loc[0]), card, cc->fct_id);
+        rc_status st = rc_case_ref_funct(c, cc->fct_id, 1, cc->line_loc[0], card, "fct_ID", &p->table[k], err);
+        if (st) return st;
     }
     if (cc->iform == RC_KEFF_STIFF) {
         const rc_table *t = &m->table[p->table[k]];

@@ -293,7 +293,7 @@ static const char *step_friction(const rc_model *m, rc_data *d, int i, double t,
      * from the state, saturated again in the new direction or not */
     if (fr->form == RC_FF_VISCOUS && d->inter_slip[i] && r[RC_ROOT_REV] < 0) {
         stateless_friction_mode(m, d, i, t, y);
-        *changed = 1; /* restart: see below */
+        *changed = 1; /* ask for a restart: see below */
         return "fric_reverse";
     }
     if (r[RC_ROOT_SLIP] <= 0) return NULL;
@@ -320,10 +320,10 @@ static const char *step_friction(const rc_model *m, rc_data *d, int i, double t,
 }
 
 int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const int *roots, rc_event *ev,
-                    int max_ev, int *state_changed)
+                    int max_ev, int *restart)
 {
     int n = 0;
-    *state_changed = 0;
+    *restart = 0;
     for (int i = 0; i < m->ninter; i++) {
         const int *r = roots + RC_ROOTS_PER_INTER * i;
         int any = 0;
@@ -332,11 +332,11 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
         /* window first; then the branch, then the contact, so that crossings
          * falling together (the Stiff line reaching zero releases the force)
          * are all applied, in the order of the law */
-        const char *kind[4] = {step_window(m, d, i, t, y, r, state_changed), NULL, NULL, NULL};
+        const char *kind[4] = {step_window(m, d, i, t, y, r, restart), NULL, NULL, NULL};
         if (!kind[0]) {
-            kind[1] = step_branch(m, d, i, t, y, r, state_changed);
-            kind[2] = step_contact(m, d, i, y, r, state_changed);
-            if (!kind[2]) kind[3] = step_friction(m, d, i, t, y, r, state_changed);
+            kind[1] = step_branch(m, d, i, t, y, r, restart);
+            kind[2] = step_contact(m, d, i, y, r, restart);
+            if (!kind[2]) kind[3] = step_friction(m, d, i, t, y, r, restart);
         }
         if ((kind[0] || kind[2]) && d->inter_mode[i] == RC_MODE_CLOSED) stateless_friction_mode(m, d, i, t, y);
         for (int k = 0; k < 4; k++) {

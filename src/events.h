@@ -10,10 +10,12 @@ typedef struct rc_event {
 } rc_event;
 
 /* Flip the modes named by the root directions `roots` (CVODE rootsfound:
- * +1 rising, -1 falling, 0 none) at the event state (t, y); history states
- * reset by a transition are written into y and *state_changed set. Writes up
- * to max_ev events; returns how many transitions happened. */
+ * +1 rising, -1 falling, 0 none) at the event state (t, y). History states
+ * reset by a transition are written into y. *restart is set when the
+ * integrator must start afresh from (t, y): a history state was reset, or a
+ * law whose Jacobian jumps at its switch (viscous friction) switched. Writes
+ * up to max_ev events; returns how many transitions happened. */
 int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const int *roots, rc_event *ev,
-                    int max_ev, int *state_changed);
+                    int max_ev, int *restart);
 
 #endif

@@ -23,9 +23,7 @@
 #include "error.h"
 #include "model.h"
 
-#define LOCFMT "%s:%d: "
 #define RC_PI 3.14159265358979323846
-#define LOC(l) (l).file, (l).line
 
 static int find_body(const rc_model *m, int id)
 {
@@ -70,27 +68,27 @@ static rc_status surface_parts(const rc_case *c, const rc_model *m, int *spart, 
         const rc_case_part *cp = &c->part[p];
         int b = -1;
         if (cp->rbody_id && (b = find_body(m, cp->rbody_id)) < 0)
-            RC_RAISE(err, RC_EINPUT, LOCFMT "card /PART/%d, field rbody_ID: expected the id of a /RBODY, got %d (no such body)",
-                     LOC(cp->loc), cp->id, cp->rbody_id);
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /PART/%d, field rbody_ID: expected the id of a /RBODY, got %d (no such body)",
+                     RC_LOC(cp->loc), cp->id, cp->rbody_id);
         for (int s = 0; s < m->nsurf; s++) {
             int in = 0;
             if (cp->nsurf == 0) in = m->surf_body[s] == b;
             for (int k = 0; k < cp->nsurf; k++) in |= m->surf_id[s] == cp->surf[k];
             if (!in) continue;
             if (cp->nsurf > 0 && m->surf_body[s] != b)
-                RC_RAISE(err, RC_EINPUT, LOCFMT "card /PART/%d, field surf_ID: surface %d is not carried by rbody_ID %d",
-                         LOC(cp->loc), cp->id, m->surf_id[s], cp->rbody_id);
+                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /PART/%d, field surf_ID: surface %d is not carried by rbody_ID %d",
+                         RC_LOC(cp->loc), cp->id, m->surf_id[s], cp->rbody_id);
             if (spart[s] >= 0)
-                RC_RAISE(err, RC_EINPUT, LOCFMT "card /PART/%d: surface %d already belongs to /PART/%d (a surface is in one part only)",
-                         LOC(cp->loc), cp->id, m->surf_id[s], c->part[spart[s]].id);
+                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /PART/%d: surface %d already belongs to /PART/%d (a surface is in one part only)",
+                         RC_LOC(cp->loc), cp->id, m->surf_id[s], c->part[spart[s]].id);
             spart[s] = p;
         }
         for (int k = 0; k < cp->nsurf; k++) {
             int found = 0;
             for (int s = 0; s < m->nsurf; s++) found |= m->surf_id[s] == cp->surf[k];
             if (!found)
-                RC_RAISE(err, RC_EINPUT, LOCFMT "card /PART/%d, field surf_ID: expected the id of a /SURF, got %d (no such surface)",
-                         LOC(cp->loc), cp->id, cp->surf[k]);
+                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /PART/%d, field surf_ID: expected the id of a /SURF, got %d (no such surface)",
+                         RC_LOC(cp->loc), cp->id, cp->surf[k]);
         }
     }
     return RC_OK;
@@ -102,30 +100,30 @@ static rc_status check_refs(const rc_case *c, rc_error *err)
     for (int g = 0; g < c->ngrpart; g++)
         for (int k = 0; k < c->grpart[g].n; k++)
             if (rc_case_find_part(c, c->grpart[g].parts[k]) < 0)
-                RC_RAISE(err, RC_EINPUT, LOCFMT "card /GRPART/PART/%d: expected the id of a /PART, got %d (no such part)",
-                         LOC(c->grpart[g].loc), c->grpart[g].id, c->grpart[g].parts[k]);
+                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /GRPART/PART/%d: expected the id of a /PART, got %d (no such part)",
+                         RC_LOC(c->grpart[g].loc), c->grpart[g].id, c->grpart[g].parts[k]);
     for (int f = 0; f < c->nfriction; f++)
         for (int k = 0; k < c->friction[f].npair; k++) {
             const rc_case_fricpair *g = &c->friction[f].pair[k];
             const int parts[2] = {g->part1, g->part2}, groups[2] = {g->grpart1, g->grpart2};
             for (int j = 0; j < 2; j++) {
                 if (parts[j] && rc_case_find_part(c, parts[j]) < 0)
-                    RC_RAISE(err, RC_EINPUT, LOCFMT "card /FRICTION/%d, field part_ID%d: expected the id of a /PART, got %d (no such part)",
-                             LOC(g->loc), c->friction[f].id, j + 1, parts[j]);
+                    RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /FRICTION/%d, field part_ID%d: expected the id of a /PART, got %d (no such part)",
+                             RC_LOC(g->loc), c->friction[f].id, j + 1, parts[j]);
                 if (groups[j] && rc_case_find_grpart(c, groups[j]) < 0)
-                    RC_RAISE(err, RC_EINPUT, LOCFMT "card /FRICTION/%d, field grpart_ID%d: expected the id of a /GRPART, got %d (no such part group)",
-                             LOC(g->loc), c->friction[f].id, j + 1, groups[j]);
+                    RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /FRICTION/%d, field grpart_ID%d: expected the id of a /GRPART, got %d (no such part group)",
+                             RC_LOC(g->loc), c->friction[f].id, j + 1, groups[j]);
             }
         }
     for (int o = 0; o < c->nfricorient; o++)
         for (int k = 0; k < c->fricorient[o].n; k++) {
             const rc_case_fricorient_item *it = &c->fricorient[o].item[k];
             if (it->part_id && rc_case_find_part(c, it->part_id) < 0)
-                RC_RAISE(err, RC_EINPUT, LOCFMT "card /FRIC_ORIENT/%d, field part_ID: expected the id of a /PART, got %d (no such part)",
-                         LOC(it->loc), c->fricorient[o].id, it->part_id);
+                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /FRIC_ORIENT/%d, field part_ID: expected the id of a /PART, got %d (no such part)",
+                         RC_LOC(it->loc), c->fricorient[o].id, it->part_id);
             if (it->grpart_id && rc_case_find_grpart(c, it->grpart_id) < 0)
-                RC_RAISE(err, RC_EINPUT, LOCFMT "card /FRIC_ORIENT/%d, field grpart_ID: expected the id of a /GRPART, got %d (no such part group)",
-                         LOC(it->loc), c->fricorient[o].id, it->grpart_id);
+                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /FRIC_ORIENT/%d, field grpart_ID: expected the id of a /GRPART, got %d (no such part group)",
+                         RC_LOC(it->loc), c->fricorient[o].id, it->grpart_id);
         }
     return RC_OK;
 }
@@ -169,8 +167,8 @@ static rc_status apply_card(const rc_case *c, rc_model *m, int i, const rc_case_
     if (f->ifiltr == 1 || f->ifiltr == 2) {
         if (!(f->dt_ref > 0))
             RC_RAISE(err, RC_EINPUT,
-                     LOCFMT "card /FRICTION/%d, field Dt_ref: Ifiltr = %d gives its coefficient per explicit time step: expected the reference step Dt_ref > 0 [s], got blank",
-                     LOC(f->line_loc[0]), f->id, f->ifiltr);
+                     RC_LOCFMT "card /FRICTION/%d, field Dt_ref: Ifiltr = %d gives its coefficient per explicit time step: expected the reference step Dt_ref > 0 [s], got blank",
+                     RC_LOC(f->line_loc[0]), f->id, f->ifiltr);
         fr->tau = f->ifiltr == 1 ? f->dt_ref / f->xfreq : f->dt_ref / (2.0 * RC_PI * f->xfreq);
     }
     /* pressure area: the card's, or the projected area of the smaller sphere */
@@ -184,8 +182,8 @@ static rc_status apply_card(const rc_case *c, rc_model *m, int i, const rc_case_
         if (b[k] >= 0 && m->body_yadr[b[k]] >= 0) inv += 1.0 / m->body_mass[b[k]];
     fr->mred = inv > 0 ? 1.0 / inv : 0.0;
     if (fr->form == RC_FF_INCREMENTAL && !(fr->kt > 0))
-        RC_RAISE(err, RC_EINPUT, LOCFMT "card /FRICTION/%d, field Iform: the incremental form needs a stiffness; %s has none",
-                 LOC(f->line_loc[0]), f->id, m->inter_name[i]);
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /FRICTION/%d, field Iform: the incremental form needs a stiffness; %s has none",
+                 RC_LOC(f->line_loc[0]), f->id, m->inter_name[i]);
     /* orthotropy: direction 1 from /FRIC_ORIENT of the second surface's part
      * (the main surface, as in Radioss), else of the first */
     if (fr->ortho) {
@@ -198,8 +196,8 @@ static rc_status apply_card(const rc_case *c, rc_model *m, int i, const rc_case_
         }
         if (!it)
             RC_RAISE(err, RC_EINPUT,
-                     LOCFMT "card /FRICTION/%d: orthotropic friction (Idir = 1) for %s needs a /FRIC_ORIENT naming the part of one of its surfaces",
-                     LOC(g->loc), f->id, m->inter_name[i]);
+                     RC_LOCFMT "card /FRICTION/%d: orthotropic friction (Idir = 1) for %s needs a /FRIC_ORIENT naming the part of one of its surfaces",
+                     RC_LOC(g->loc), f->id, m->inter_name[i]);
         memcpy(fr->odir, it->v, sizeof fr->odir);
         fr->obody = m->surf_body[side];
         fr->oside = side == m->inter_sa[i] ? 1 : -1; /* n points from a to b */

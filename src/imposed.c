@@ -13,8 +13,6 @@
 #include "error.h"
 #include "imposed.h"
 
-#define LOCFMT "%s:%d: "
-#define LOC(l) (l).file, (l).line
 
 void rc_imp_free(rc_imposed *p)
 {
@@ -45,39 +43,36 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
         const rc_case_impvel *v = &c->impvel[k];
         char card[64];
         snprintf(card, sizeof card, "/IMPVEL/%d", v->id);
-        if (rc_case_find_funct(c, v->fct_id) < 0) {
-            st = RC_SET(err, RC_EINPUT, LOCFMT "card %s, field fct_IDT: expected the id of a /FUNCT, got %d (no such function)",
-                        LOC(v->line_loc[0]), card, v->fct_id);
-            break;
-        }
+        int tab;
+        if ((st = rc_case_ref_funct(c, v->fct_id, 1, v->line_loc[0], card, "fct_IDT", &tab, err))) break;
         const int g = rc_case_find_grnod(c, v->grnod_id);
         if (g < 0) {
-            st = RC_SET(err, RC_EINPUT, LOCFMT "card %s, field grnod_ID: expected the id of a /GRNOD, got %d (no such group)",
-                        LOC(v->line_loc[0]), card, v->grnod_id);
+            st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field grnod_ID: expected the id of a /GRNOD, got %d (no such group)",
+                        RC_LOC(v->line_loc[0]), card, v->grnod_id);
             break;
         }
         for (int j = 0; j < c->grnod[g].n && !st; j++) {
             const int b = rc_case_body_of_node(c, c->grnod[g].nodes[j]);
             if (b < 0) {
-                st = RC_SET(err, RC_EINPUT, LOCFMT "card %s: node %d of /GRNOD/%d belongs to no /RBODY (ricochet bodies are rigid)",
-                            LOC(v->line_loc[0]), card, c->grnod[g].nodes[j], v->grnod_id);
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s: node %d of /GRNOD/%d belongs to no /RBODY (ricochet bodies are rigid)",
+                            RC_LOC(v->line_loc[0]), card, c->grnod[g].nodes[j], v->grnod_id);
                 break;
             }
             const int *own = owner + 6 * b;
             if (own[v->dir] == k) continue; /* the body named twice by the group */
             if (m->body_fixed[b])
-                st = RC_SET(err, RC_EINPUT, LOCFMT "card %s: /RBODY/%d is fixed (/BCS 111 111); its velocity cannot be imposed",
-                            LOC(v->line_loc[0]), card, m->body_id[b]);
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s: /RBODY/%d is fixed (/BCS 111 111); its velocity cannot be imposed",
+                            RC_LOC(v->line_loc[0]), card, m->body_id[b]);
             else if (m->body_dofmask[6 * b + v->dir])
-                st = RC_SET(err, RC_EINPUT, LOCFMT "card %s, field Dir: this component of /RBODY/%d is held by /BCS; a held DOF cannot also be imposed",
-                            LOC(v->line_loc[0]), card, m->body_id[b]);
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field Dir: this component of /RBODY/%d is held by /BCS; a held DOF cannot also be imposed",
+                            RC_LOC(v->line_loc[0]), card, m->body_id[b]);
             else if (own[v->dir] >= 0)
-                st = RC_SET(err, RC_EINPUT, LOCFMT "card %s, field Dir: this component of /RBODY/%d is already imposed by /IMPVEL/%d",
-                            LOC(v->line_loc[0]), card, m->body_id[b], c->impvel[own[v->dir]].id);
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field Dir: this component of /RBODY/%d is already imposed by /IMPVEL/%d",
+                            RC_LOC(v->line_loc[0]), card, m->body_id[b], c->impvel[own[v->dir]].id);
             for (int r = 3; r < 6 && !st && v->dir >= 3; r++)
                 if (own[r] >= 0 && c->impvel[own[r]].tstop != v->tstop)
-                    st = RC_SET(err, RC_EINPUT, LOCFMT "card %s, field Tstop: the rotation of /RBODY/%d is imposed as a whole (docs/theory.md 1.1); all its rotational /IMPVEL must share one Tstop (/IMPVEL/%d has %.6g)",
-                                LOC(v->line_loc[1]), card, m->body_id[b], c->impvel[own[r]].id, c->impvel[own[r]].tstop);
+                    st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field Tstop: the rotation of /RBODY/%d is imposed as a whole (docs/theory.md 1.1); all its rotational /IMPVEL must share one Tstop (/IMPVEL/%d has %.6g)",
+                                RC_LOC(v->line_loc[1]), card, m->body_id[b], c->impvel[own[r]].id, c->impvel[own[r]].tstop);
             if (!st) owner[6 * b + v->dir] = k;
         }
     }

@@ -15,8 +15,6 @@
 #include "model.h"
 #include "power.h"
 
-#define LOCFMT "%s:%d: "
-#define LOC(l) (l).file, (l).line
 #define RC_PI 3.14159265358979323846
 
 /* Spline of /FUNCT `id` (field `field` of the card), or NULL when id = 0. */
@@ -24,17 +22,15 @@ static rc_status make_spline(const rc_case *c, const rc_case_power *p, int id, c
                              rc_spline **out, rc_error *err)
 {
     *out = NULL;
-    if (id == 0) return RC_OK;
-    int f = rc_case_find_funct(c, id);
-    if (f < 0)
-        RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field %s: expected the id of a /FUNCT, got %d (no such function)",
-                 LOC(p->line_loc[0]), card, field, id);
+    int f;
+    rc_status st = rc_case_ref_funct(c, id, 0, p->line_loc[0], card, field, &f, err);
+    if (st || f < 0) return st;
     rc_spline *s = calloc(1, sizeof *s);
     if (!s) RC_RAISE(err, RC_ENOMEM, "out of memory");
     rc_error e2;
     if (rc_spline_init(s, p->ispline, id, c->funct[f].npts, c->funct[f].x, c->funct[f].y, &e2)) {
         free(s);
-        RC_RAISE(err, RC_EINPUT, LOCFMT "card %s, field %s: %s", LOC(p->line_loc[0]), card, field, e2.msg);
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field %s: %s", RC_LOC(p->line_loc[0]), card, field, e2.msg);
     }
     *out = s;
     return RC_OK;
@@ -45,7 +41,7 @@ rc_status rc_power_compile(const rc_case *c, rc_model *m, int k, int i, rc_error
     const rc_case_power *p = &c->power[k];
     char card[64], where[600];
     snprintf(card, sizeof card, "/INTER/POWER/%d", p->id);
-    snprintf(where, sizeof where, LOCFMT "card %s", LOC(p->line_loc[0]), card);
+    snprintf(where, sizeof where, RC_LOCFMT "card %s", RC_LOC(p->line_loc[0]), card);
     m->inter_law[i] = RC_LAW_POWER;
     m->inter_name[i] = malloc(strlen(card) + 1);
     if (!m->inter_name[i]) RC_RAISE(err, RC_ENOMEM, "out of memory");

@@ -60,16 +60,7 @@ def reference(v0=(V0, 0.0), rtol=1e-12):
 def deck(iform=2, tend=0.45, rtol=1e-6, atol_pos=1e-9, atol_vel=1e-6):
     z0 = R - M * G / K
     d = Deck("block launched on an orthotropic floor (/FRICTION Idir 1, /FRIC_ORIENT)")
-    d.funct(1, [0.0, 1.0], [0.0, K], title="linear load curve k = 1e6 N/m")
-    d.nodes([(1, 0.0, 0.0, z0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, grnod=1, title="block 1 kg")
-    d.sphere(1, 1, (0.0, 0.0, z0), R, title="block sphere")
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0")
-    d.grnod(1, [1], title="block")
-    d.bcs(1, 1, "000 111", title="no rotation")
-    d.inivel(1, (V0, 0.0, 0.0), 1)
-    d.grav(1, "Z", -G, 1)
-    d.type6(1, 1, 2, 1, visc=VISC, title="contact (no TYPE6 friction)")
+    d.block_on_floor(M, R, K, G, VISC, z0, (V0, 0.0, 0.0))
     d.part(1, 1, title="block")
     d.part(2, 0, [2], title="floor (fixed surface 2)")
     d.grpart(1, [2], title="floors")

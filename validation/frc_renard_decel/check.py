@@ -78,16 +78,7 @@ def ref_at(segs, t):
 def deck(rtol=1e-8, tend=0.9):
     z0 = R - M * G / K  # static penetration m g / k
     d = Deck("block launched on a floor, /FRICTION Renard, incremental")
-    d.funct(1, [0.0, 1.0], [0.0, K], title="linear load curve k = 1e6 N/m")
-    d.nodes([(1, 0.0, 0.0, z0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, grnod=1, title="block 1 kg")
-    d.sphere(1, 1, (0.0, 0.0, z0), R, title="block sphere")
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0")
-    d.grnod(1, [1], title="block")
-    d.bcs(1, 1, "000 111", title="no rotation")
-    d.inivel(1, (V0, 0.0, 0.0), 1)
-    d.grav(1, "Z", -G, 1)
-    d.type6(1, 1, 2, 1, visc=VISC, title="contact (no TYPE6 friction)")
+    d.block_on_floor(M, R, K, G, VISC, z0, (V0, 0.0, 0.0))
     d.friction(1, ifric=3, iform=2, c=(MUS, MUD, MUMAX, MUMIN, VCR1, VCR2),
                title="Renard: mu_s 0.3, mu_d 0.25, mu_max 0.45, mu_min 0.1, V_cr1 0.15, V_cr2 0.5")
     d.run(tend, 0.005)

@@ -193,6 +193,23 @@ class Deck:
                  line(("r", atol_pos), ("r", atol_quat), ("r", atol_vel), ("r", atol_omega)),
                  line(("r", atol_energy)))
 
+    def block_on_floor(self, m, r, k, g, visc, z0, v0):
+        """A 1-sphere "block" (rotations locked) of mass m, radius r at height z0
+        on the fixed floor z = 0, launched at v0, under gravity g (its node
+        group only), with a TYPE6 linear contact k and damping visc (no TYPE6
+        friction). Ids: /FUNCT 1, node 1, /RBODY 1, surfaces 1 and 2,
+        /GRNOD 1, /BCS 1, /INIVEL 1, /GRAV 1, /INTER/TYPE6 1."""
+        self.funct(1, [0.0, 1.0], [0.0, k], title=f"linear load curve k = {k:.0e} N/m".replace("e+0", "e"))
+        self.nodes([(1, 0.0, 0.0, z0)])
+        self.rbody(1, 1, m, [0.4 * m * r * r] * 3, grnod=1, title=f"block {m:g} kg")
+        self.sphere(1, 1, (0.0, 0.0, z0), r, title="block sphere")
+        self.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0")
+        self.grnod(1, [1], title="block")
+        self.bcs(1, 1, "000 111", title="no rotation")
+        self.inivel(1, tuple(v0), 1)
+        self.grav(1, "Z", -g, 1)
+        self.type6(1, 1, 2, 1, visc=visc, title="contact (no TYPE6 friction)")
+
     def text(self):
         return "\n".join(self.cards + ["/END", ""])
 

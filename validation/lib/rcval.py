@@ -81,6 +81,13 @@ def check(name, ok, detail):
         FAILED.append(name)
 
 
+def check_ledger(name, r, tol):
+    """The energy ledger of result r stays constant: max |E_total(t) - E_total(0)| / E_total(0) < tol."""
+    et = r.energy["energy_total"]
+    drift = np.max(np.abs(et - et[0])) / et[0]
+    check(name, drift < tol, f"max |E_total(t) - E_total(0)| / E_total(0) = {drift:.2e} (< {tol:g})")
+
+
 def rel(a, b):
     return abs(a - b) / abs(b)
 

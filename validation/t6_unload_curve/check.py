@@ -157,10 +157,7 @@ def main():
                 f"records on the load curve {n[0]}, the Stiff line {n[1]}, the unload curve {n[2]}, at zero force {n[3]}; "
                 f"max |F - F_ref(P)| / Fmax = {dev:.2e} (< {TOL:g})")
 
-    et = r.energy["energy_total"]
-    drift = np.max(np.abs(et - et[0])) / et[0]
-    rcval.check("t6_unload_curve.energy_ledger", drift < TOL,
-                f"max |E_total(t) - E_total(0)| / E_total(0) = {drift:.2e} (< {TOL:g})")
+    rcval.check_ledger("t6_unload_curve.energy_ledger", r, TOL)
     rcval.finish()
 
 

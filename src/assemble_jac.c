@@ -120,3 +120,32 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
 
 #include "coupling_jac.inc"
 #include "imposed_jac.inc"
+
+void rc_inter_report_rate(const rc_model *m, int i, int mode, int branch, int track, int slip, const double *y,
+                          const double *ydot, rc_inter_report *dr)
+{
+    /* d/dt q = Im(q(y + i h ydot)) / h for every reported quantity q */
+    const int ba = m->inter_ba[i], bb = m->inter_bb[i], ns = m->inter_ns[i];
+    T ya[RC_NB], yb[RC_NB], ys[RC_NS_MAX];
+    load_body(m, ba, y, ya);
+    load_body(m, bb, y, yb);
+    if (ba >= 0 && m->body_yadr[ba] >= 0)
+        for (int k = 0; k < RC_NB; k++) ya[k] += I * RC_CSTEP * ydot[m->body_yadr[ba] + k];
+    if (bb >= 0 && m->body_yadr[bb] >= 0)
+        for (int k = 0; k < RC_NB; k++) yb[k] += I * RC_CSTEP * ydot[m->body_yadr[bb] + k];
+    for (int k = 0; k < ns; k++) ys[k] = y[m->inter_eadr[i] + k] + I * RC_CSTEP * ydot[m->inter_eadr[i] + k];
+    t6out_c o;
+    type6_c(m, i, mode, branch, track, slip, ya, yb, ys, NULL, NULL, NULL, &o);
+    memset(dr, 0, sizeof *dr);
+    dr->p = cimag(o.p) / RC_CSTEP;
+    dr->vn = cimag(o.vn) / RC_CSTEP;
+    dr->p_raw = cimag(o.p_raw) / RC_CSTEP;
+    dr->vn_raw = cimag(o.vn_raw) / RC_CSTEP;
+    dr->fload = cimag(o.fel) / RC_CSTEP;
+    dr->fdamp = cimag(o.fd) / RC_CSTEP;
+    dr->fn = dr->fload + dr->fdamp;
+    dr->fl = cimag(o.fl) / RC_CSTEP;
+    dr->fu = cimag(o.fu) / RC_CSTEP;
+    dr->fh = cimag(o.fh) / RC_CSTEP;
+    dr->offset = cimag(o.off) / RC_CSTEP;
+}

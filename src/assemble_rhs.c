@@ -126,9 +126,9 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
             gi[RC_ROOT_REV] = r.vt[0] * dr[0] + r.vt[1] * dr[1] + r.vt[2] * dr[2];
         }
         /* zone: P (not while the Inacti offset tracks it, P = 0 there) */
-        if (!trk) gi[RC_ROOT_ZONE] = r.p;
+        if (!trk) gi[RC_ROOT_ZONE] = r.p + (mode != RC_MODE_OPEN ? d->inter_band[2 * i] : 0.0);
         /* total normal force, unclipped: release and re-close */
-        if (mode != RC_MODE_OPEN) gi[RC_ROOT_FORCE] = r.fn;
+        if (mode != RC_MODE_OPEN) gi[RC_ROOT_FORCE] = r.fn + (mode == RC_MODE_CLOSED ? d->inter_band[2 * i + 1] : 0.0);
         /* hysteresis: reversal on the curves, bounds on the Stiff line */
         /* power law with RDF: the rate of P (approach / rebound) */
         if (mode != RC_MODE_OPEN && m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0)

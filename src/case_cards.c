@@ -22,11 +22,12 @@
 #define RC_DEF_MAX_ORDER 5
 #define RC_DEF_MAX_STEPS 100000
 #define RC_DEF_RTOL 1e-6
-#define RC_DEF_ATOL_POS 1e-9
-#define RC_DEF_ATOL_QUAT 1e-9
-#define RC_DEF_ATOL_VEL 1e-6
-#define RC_DEF_ATOL_OMEGA 1e-6
-#define RC_DEF_ATOL_ENERGY 1e-6
+/* absolute tolerances: 0 (blank) = derived from the model's scales */
+#define RC_DEF_ATOL_POS 0.0
+#define RC_DEF_ATOL_QUAT 0.0
+#define RC_DEF_ATOL_VEL 0.0
+#define RC_DEF_ATOL_OMEGA 0.0
+#define RC_DEF_ATOL_ENERGY 0.0
 /* Default output interval as a fraction of Tend. */
 #define RC_DEF_DTOUT_FRACTION 0.01
 /* Default Tstop of /INTER (Radioss). */
@@ -927,11 +928,11 @@ static rc_status rc_card_solver(rc_reader *rd, const rc_block *b)
         RC_F_REAL("Rtol", &s->rtol, RC_DEF_RTOL, zp),
         RC_F_REAL("Hmax", &s->hmax, 0, RC_FF_NONNEG),
         RC_F_REAL("H0", &s->h0, 0, RC_FF_NONNEG)};
-    rc_field l2[] = {RC_F_REAL("Atol_pos", &s->atol_pos, RC_DEF_ATOL_POS, zp),
-                     RC_F_REAL("Atol_quat", &s->atol_quat, RC_DEF_ATOL_QUAT, zp),
-                     RC_F_REAL("Atol_vel", &s->atol_vel, RC_DEF_ATOL_VEL, zp),
-                     RC_F_REAL("Atol_omega", &s->atol_omega, RC_DEF_ATOL_OMEGA, zp)};
-    rc_field l3[] = {RC_F_REAL("Atol_energy", &s->atol_energy, RC_DEF_ATOL_ENERGY, zp)};
+    rc_field l2[] = {RC_F_REAL("Atol_pos", &s->atol_pos, RC_DEF_ATOL_POS, RC_FF_ZDEF | RC_FF_NONNEG),
+                     RC_F_REAL("Atol_quat", &s->atol_quat, RC_DEF_ATOL_QUAT, RC_FF_ZDEF | RC_FF_NONNEG),
+                     RC_F_REAL("Atol_vel", &s->atol_vel, RC_DEF_ATOL_VEL, RC_FF_ZDEF | RC_FF_NONNEG),
+                     RC_F_REAL("Atol_omega", &s->atol_omega, RC_DEF_ATOL_OMEGA, RC_FF_ZDEF | RC_FF_NONNEG)};
+    rc_field l3[] = {RC_F_REAL("Atol_energy", &s->atol_energy, RC_DEF_ATOL_ENERGY, RC_FF_ZDEF | RC_FF_NONNEG)};
     if ((st = rc_parse_line(rd, b, &b->lines[0], l1, RC_NF(l1)))) return st;
     if (nd >= 2 && (st = rc_parse_line(rd, b, &b->lines[1], l2, RC_NF(l2)))) return st;
     if (nd >= 3 && (st = rc_parse_line(rd, b, &b->lines[2], l3, RC_NF(l3)))) return st;

@@ -23,8 +23,8 @@
 #define RC_PW_DEF_M2 1.0      /* damping exponent [-]                       */
 #define RC_PW_DEF_M3 2.0      /* indentation exponent [-]                   */
 #define RC_PW_DEF_RDF 0.001   /* rebound damping factor [-]                 */
-#define RC_PW_DEF_DREG 1e-6   /* regularisation length of delta^m, m < 1 [m] */
-#define RC_PW_DEF_VREG 1e-6   /* regularisation speed of |v|^m2, m2 < 1 [m/s] */
+#define RC_PW_DEF_DREG 0.0    /* regularisation length of delta^m, m < 1 [m]; 0: 1e-4 p_s (scales.c) */
+#define RC_PW_DEF_VREG 0.0    /* regularisation speed of |v|^m2, m2 < 1 [m/s]; 0: 1e-4 v_s */
 #define RC_PW_DEF_TSTOP 1e30  /* [s], as /INTER/TYPE6                       */
 
 static const char rc_note_skew[] = "(skew frames)";
@@ -68,8 +68,8 @@ rc_status rc_card_power(rc_reader *rd, const rc_block *b)
     rc_field l2[] = {RC_F_REAL("K", &p->k, 0, RC_FF_NONNEG), RC_F_REAL("m1", &p->m1, RC_PW_DEF_M1, RC_FF_NONNEG),
                      RC_F_REAL("C", &p->c, 0, RC_FF_NONNEG), RC_F_REAL("m2", &p->m2, RC_PW_DEF_M2, RC_FF_NONNEG),
                      RC_F_REAL("m3", &p->m3, RC_PW_DEF_M3, RC_FF_NONNEG)};
-    rc_field l3[] = {RC_F_REAL("RDF", &p->rdf, RC_PW_DEF_RDF, zp), RC_F_REAL("Dreg", &p->dreg, RC_PW_DEF_DREG, zp),
-                     RC_F_REAL("Vreg", &p->vreg, RC_PW_DEF_VREG, zp), RC_F_REAL("Tstart", &p->tstart, 0, 0),
+    rc_field l3[] = {RC_F_REAL("RDF", &p->rdf, RC_PW_DEF_RDF, zp), RC_F_REAL("Dreg", &p->dreg, RC_PW_DEF_DREG, RC_FF_ZDEF | RC_FF_NONNEG),
+                     RC_F_REAL("Vreg", &p->vreg, RC_PW_DEF_VREG, RC_FF_ZDEF | RC_FF_NONNEG), RC_F_REAL("Tstart", &p->tstart, 0, 0),
                      RC_F_REAL("Tstop", &p->tstop, RC_PW_DEF_TSTOP, RC_FF_ZDEF)};
     rc_field l4[] = {RC_F_REAL("mu_s", &p->mus, 0, RC_FF_NONNEG), RC_F_REAL("v_s", &p->vs, 0, RC_FF_NONNEG),
                      RC_F_REAL("mu_d", &p->mud, 0, RC_FF_NONNEG), RC_F_REAL("v_d", &p->vd, 0, RC_FF_NONNEG),

@@ -370,35 +370,6 @@ static rc_status layout(rc_model *m, rc_error *err)
     if (!m->row_held) RC_RAISE(err, RC_ENOMEM, "out of memory");
     for (int k = 0; k < m->nheld; k++) m->row_held[m->held[k]] = 1;
     if (ny == 0) RC_RAISE(err, RC_EINPUT, "%s: the case has nothing to integrate (no free body)", m->case_path);
-    m->atol = malloc((size_t)ny * sizeof(double));
-    if (!m->atol) RC_RAISE(err, RC_ENOMEM, "out of memory");
-    if (m->gwork_adr >= 0) m->atol[m->gwork_adr] = m->atol_energy;
-    for (int b = 0; b < m->nbody; b++) {
-        if (m->body_yadr[b] < 0) continue;
-        double *a = m->atol + m->body_yadr[b];
-        for (int k = 0; k < 3; k++) a[k] = m->atol_pos;
-        for (int k = 3; k < 7; k++) a[k] = m->atol_quat;
-        for (int k = 7; k < 10; k++) a[k] = m->atol_vel;
-        for (int k = 10; k < 13; k++) a[k] = m->atol_omega;
-    }
-    for (int i = 0; i < m->ninter; i++) {
-        for (int k = 0; k < RC_NE; k++) m->atol[m->inter_eadr[i] + k] = m->atol_energy;
-        /* F_h: the force error that atol_pos allows on the Stiff line [N];
-         * offset: a length [m] */
-        if (m->inter_hidx[i] >= 0) m->atol[m->inter_eadr[i] + m->inter_hidx[i]] = m->inter_stiff[i] * m->atol_pos;
-        if (m->inter_oidx[i] >= 0) m->atol[m->inter_eadr[i] + m->inter_oidx[i]] = m->atol_pos;
-        /* friction forces: the force error atol_pos allows on the stick
-         * spring [N]; W_fric [J] */
-        const rc_fric *fr = &m->inter_fr[i];
-        double *a = m->atol + m->inter_eadr[i];
-        for (int k = 0; k < 3; k++) {
-            if (fr->tidx >= 0) a[fr->tidx + k] = fr->kt * m->atol_pos;
-            if (fr->fidx >= 0) a[fr->fidx + k] = fr->kt * m->atol_pos;
-        }
-        if (fr->widx >= 0) a[fr->widx] = m->atol_energy;
-    }
-    rc_cpl_atol(m);
-    if (m->imp) m->atol[m->imp->wadr] = m->atol_energy;
     return RC_OK;
 }
 
@@ -428,6 +399,10 @@ rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
     m->atol_vel = c->solver.atol_vel;
     m->atol_omega = c->solver.atol_omega;
     m->atol_energy = c->solver.atol_energy;
+    /* blank (zero) absolute tolerances are derived from the model (scales.c) */
+    m->tol_auto = (m->atol_pos == 0 ? RC_TOL_AUTO_POS : 0) | (m->atol_quat == 0 ? RC_TOL_AUTO_QUAT : 0) |
+                  (m->atol_vel == 0 ? RC_TOL_AUTO_VEL : 0) | (m->atol_omega == 0 ? RC_TOL_AUTO_OMEGA : 0) |
+                  (m->atol_energy == 0 ? RC_TOL_AUTO_ENERGY : 0);
     m->max_order = c->solver.max_order;
     m->max_steps = c->solver.max_steps;
     m->hmax = c->solver.hmax;
@@ -514,6 +489,8 @@ rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
     if ((st = rc_imp_compile(c, m, err))) goto fail;
     /* states, tolerances, Jacobian pattern */
     if ((st = layout(m, err))) goto fail;
+    if ((st = rc_model_scales(m, err))) goto fail;
+    if ((st = rc_model_tolerances(m, err))) goto fail;
     if ((st = rc_jac_build(m, err))) goto fail;
     *out = m;
     return RC_OK;
@@ -543,7 +520,8 @@ void rc_model_free(rc_model *m)
                       m->inter_fct_ul, m->inter_iform, m->inter_icor, m->inter_inacti, m->inter_stiff,
                       m->inter_fscaleul, m->inter_ns, m->inter_hidx, m->inter_oidx, m->inter_fr,
                       m->inter_name, m->atol, m->held, m->row_held, m->gwork_slot, m->surf_ext,
-                      m->inter_law, m->inter_pw};
+                      m->inter_law, m->inter_pw, m->inter_pscale, m->inter_fscale, m->inter_kscale,
+                      m->inter_vscale, m->inter_mred, m->ewt_rel};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     free(m);
 }

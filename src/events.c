@@ -5,12 +5,18 @@
  * Inacti offset at zero); the integrator then restarts from the new state.
  * docs/theory.md section 5 lists every transition.
  */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 
 #include "coupling.h"
 #include "events.h"
 #include "power.h"
+
+/* Touch band: RC_TOUCH_ULPS ulps of the coordinates, at least RC_TOUCH_REL
+ * of the penetration scale (docs/theory.md 5.1) [-]. */
+#define RC_TOUCH_ULPS 1e3
+#define RC_TOUCH_REL 1e-9
 
 rc_data *rc_data_new(const rc_model *m)
 {
@@ -22,6 +28,7 @@ rc_data *rc_data_new(const rc_model *m)
     d->inter_track = calloc(n, sizeof(int));
     d->inter_slip = calloc(n, sizeof(int));
     d->inter_dref = calloc(3 * n, sizeof(double));
+    d->inter_band = calloc(2 * n, sizeof(double));
     d->cpl = rc_cpl_data_new(m);
     int imp_ok = 1;
     if (m->imp) { /* imposed velocities: scratch of rhs and Jacobian (imposed.c) */
@@ -29,7 +36,7 @@ rc_data *rc_data_new(const rc_model *m)
         d->imp_scratch = calloc(3 * (size_t)m->ny, sizeof(double));
         imp_ok = d->imp_free && d->imp_scratch;
     }
-    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->cpl || !imp_ok) {
+    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->cpl || !imp_ok) {
         rc_data_free(d);
         return NULL;
     }
@@ -45,6 +52,7 @@ void rc_data_free(rc_data *d)
     free(d->inter_track);
     free(d->inter_slip);
     free(d->inter_dref);
+    free(d->inter_band);
     rc_cpl_data_free(d->cpl);
     free(d->imp_free);
     free(d->imp_scratch);
@@ -84,8 +92,14 @@ static void reset_friction(const rc_model *m, rc_data *d, int i, double *y, int 
 
 /* Enter the contact zone at P = 0 from separation: virgin force, on the load
  * curve (Stiff is steeper than the load curve, so min(F_L, Stiff dP) = F_L). */
+static void clear_band(rc_data *d, int i)
+{
+    d->inter_band[2 * i] = d->inter_band[2 * i + 1] = 0.0;
+}
+
 static void enter_zone(const rc_model *m, rc_data *d, int i, double *y, int *changed)
 {
+    clear_band(d, i);
     d->inter_mode[i] = RC_MODE_CLOSED;
     d->inter_branch[i] = RC_BR_LOAD;
     d->inter_track[i] = 0;
@@ -96,6 +110,7 @@ static void enter_zone(const rc_model *m, rc_data *d, int i, double *y, int *cha
 /* Leave the zone (P falls to 0): no force, no history. */
 static void leave_zone(const rc_model *m, rc_data *d, int i, double *y, int *changed)
 {
+    clear_band(d, i);
     d->inter_mode[i] = RC_MODE_OPEN;
     d->inter_branch[i] = RC_BR_LOAD;
     set_state(own(m, i, m->inter_hidx[i], y), 0.0, changed);
@@ -267,11 +282,13 @@ static const char *step_contact(const rc_model *m, rc_data *d, int i, double *y,
         return "contact_separate";
     }
     if (mode == RC_MODE_CLOSED && r[RC_ROOT_FORCE] < 0) {
+        clear_band(d, i);
         d->inter_mode[i] = RC_MODE_RELEASED;
         reset_friction(m, d, i, y, changed);
         return "contact_open";
     }
     if (mode == RC_MODE_RELEASED && r[RC_ROOT_FORCE] > 0) {
+        clear_band(d, i);
         d->inter_mode[i] = RC_MODE_CLOSED;
         reset_friction(m, d, i, y, changed);
         return "contact_close";
@@ -329,6 +346,7 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
         int any = 0;
         for (int k = 0; k < RC_ROOTS_PER_INTER; k++) any |= r[k] != 0;
         if (!any) continue;
+        clear_band(d, i); /* the touch bands last until the interface's next event */
         /* window first; then the branch, then the contact, so that crossings
          * falling together (the Stiff line reaching zero releases the force)
          * are all applied, in the order of the law */
@@ -347,6 +365,123 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
             }
             n++;
         }
+    }
+    return n;
+}
+
+/* ---- contacts at zero: modes decided by the state ------------------ */
+/* Touch band of interface i at (t, y) [m]: above the rounding of P (a
+ * thousand ulps of the coordinates involved) and 1e-9 of the penetration
+ * scale. */
+static double touch_band(const rc_model *m, int i, const double *y, const rc_inter_report *r)
+{
+    const double *xa = rc_body_state(m, m->inter_ba[i], y), *xb = rc_body_state(m, m->inter_bb[i], y);
+    double L = 0.0;
+    for (int k = 0; k < 3; k++) L += fabs(xa[k]) + fabs(xb[k]) + fabs(r->point[k]);
+    double band = RC_TOUCH_ULPS * DBL_EPSILON * L;
+    if (isfinite(m->inter_pscale[i])) band = fmax(band, RC_TOUCH_REL * m->inter_pscale[i]);
+    return band > 0 ? band : DBL_MIN;
+}
+
+/* Sign of the first non-zero time derivative of P: dP/dt, or, when it is
+ * zero to the precision of a located root, d2P/dt2 (0: both zero). */
+static int p_trend(double vn, double an, double t, double dtout)
+{
+    const double tau = RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + dtout); /* [s] */
+    if (fabs(vn) > fabs(an) * tau) return vn > 0 ? 1 : -1;
+    return (an > 0) - (an < 0);
+}
+
+int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const double *ydot, rc_event *ev, int max_ev,
+                   int *restart)
+{
+    int n = 0;
+    for (int i = 0; i < m->ninter; i++) {
+        const int mode = d->inter_mode[i], br = d->inter_branch[i];
+        if (mode == RC_MODE_INACTIVE) continue;
+        rc_inter_report r, c, dr, dc;
+        report(m, d, i, t, y, &r);
+        const double band = touch_band(m, i, y, &r);
+        const char *kind = NULL;
+        /* the force the contact would carry, closed, and its rate */
+        const int cbr = mode == RC_MODE_OPEN ? RC_BR_LOAD : br;
+        rc_inter_report_eval(m, i, RC_MODE_CLOSED, cbr, 0, d->inter_slip[i], t, y, &c);
+        rc_inter_report_rate(m, i, RC_MODE_CLOSED, cbr, 0, d->inter_slip[i], y, ydot, &dc);
+        const double k = isfinite(m->inter_kscale[i]) ? m->inter_kscale[i] : 0.0;
+        const double fband = fmax(band * k, RC_TOUCH_ULPS * DBL_EPSILON * (fabs(c.fload) + fabs(c.fdamp)));
+        /* where P is heading: dP/dt, else the normal acceleration */
+        rc_inter_report_rate(m, i, mode, br, d->inter_track[i], d->inter_slip[i], y, ydot, &dr);
+        const int trend = d->inter_track[i] ? p_trend(r.vn_raw, dr.vn_raw, t, m->dtout) : p_trend(r.vn, dr.vn, t, m->dtout);
+        const int ctrend = p_trend(c.vn, dc.vn, t, m->dtout);
+        if (mode == RC_MODE_OPEN) {
+            /* P at zero (or the Inacti offset tracking it): close unless the
+             * bodies separate; a touching contact carries zero force */
+            if (fabs(r.p) <= band && trend >= 0 && c.fn >= -fband) {
+                enter_zone(m, d, i, y, restart);
+                kind = "contact_close";
+            }
+        } else if (fabs(r.p) <= band && ctrend < 0) {
+            /* closed or released at P = 0 while separating */
+            leave_zone(m, d, i, y, restart);
+            kind = "contact_separate";
+        } else if (mode == RC_MODE_RELEASED && fabs(c.fn) <= fband && (dc.fn > 0 || (dc.fn == 0 && ctrend >= 0))) {
+            /* released at zero force that would grow again: close */
+            d->inter_mode[i] = RC_MODE_CLOSED;
+            reset_friction(m, d, i, y, restart);
+            kind = "contact_close";
+        } else if (mode == RC_MODE_CLOSED && fabs(c.fn) <= fband && (dc.fn < 0 || (dc.fn == 0 && ctrend < 0))) {
+            /* closed at zero force that is about to pull: release */
+            d->inter_mode[i] = RC_MODE_RELEASED;
+            reset_friction(m, d, i, y, restart);
+            kind = "contact_open";
+        } else if (m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0) {
+            /* hysteresis at a bound or a reversal with dP/dt = 0 */
+            double *fh = own(m, i, m->inter_hidx[i], y);
+            const double hb = fmax(fband, RC_TOUCH_ULPS * DBL_EPSILON * (fabs(r.fh) + fabs(r.fl) + fabs(r.fu)));
+            const int still = fabs(r.vn) <= fabs(dr.vn) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
+            if (br == RC_BR_ELASTIC && fabs(r.fh - r.fu) <= hb && trend < 0) {
+                d->inter_branch[i] = RC_BR_UNLOAD;
+                set_state(fh, r.fu, restart);
+                kind = "hyst_unload_curve";
+            } else if (br == RC_BR_ELASTIC && fabs(r.fl - r.fh) <= hb && trend > 0) {
+                d->inter_branch[i] = RC_BR_LOAD;
+                set_state(fh, r.fl, restart);
+                kind = "hyst_load_curve";
+            } else if (br == RC_BR_LOAD && still && trend < 0) {
+                d->inter_branch[i] = RC_BR_ELASTIC;
+                set_state(fh, r.fl, restart);
+                kind = "hyst_unloading";
+            } else if (br == RC_BR_UNLOAD && still && trend > 0) {
+                d->inter_branch[i] = RC_BR_ELASTIC;
+                set_state(fh, r.fu, restart);
+                kind = "hyst_reloading";
+            }
+        } else if (m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0) {
+            /* rebound damping branch at dP/dt = 0 */
+            const int still = fabs(r.vn) <= fabs(dr.vn) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
+            if (br == RC_BR_LOAD && still && trend < 0) {
+                d->inter_branch[i] = RC_BR_UNLOAD;
+                kind = "rdf_rebound";
+            } else if (br == RC_BR_UNLOAD && still && trend > 0) {
+                d->inter_branch[i] = RC_BR_LOAD;
+                kind = "rdf_approach";
+            }
+        }
+        if (kind && d->inter_mode[i] == RC_MODE_CLOSED) stateless_friction_mode(m, d, i, t, y);
+        /* a contact left closed at P = 0 or at zero force separates at
+         * P = -band and releases at F_n = -fband: its roots start off zero,
+         * so CVODE sees them leave */
+        if (d->inter_mode[i] == RC_MODE_CLOSED) {
+            report(m, d, i, t, y, &r);
+            if (fabs(r.p) <= band) d->inter_band[2 * i] = band;
+            if (fabs(r.fn) <= fband) d->inter_band[2 * i + 1] = fband;
+        }
+        if (!kind) continue;
+        if (n < max_ev) {
+            ev[n].inter = i;
+            ev[n].kind = kind;
+        }
+        n++;
     }
     return n;
 }

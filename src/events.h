@@ -18,4 +18,14 @@ typedef struct rc_event {
 int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const int *roots, rc_event *ev,
                     int max_ev, int *restart);
 
+/* Contacts at zero penetration or zero force, decided by the state (at the
+ * start and after every event; docs/theory.md 5.1): a contact at P = 0 closes
+ * unless its bodies separate (dP/dt < 0), a closed one separating there
+ * opens; a contact at zero force takes the mode its rate dF_n/dt (along
+ * ydot, the state rate in the current modes) points to. Contacts left
+ * closed at zero get touch bands so that their roots start off zero.
+ * Writes up to max_ev events; returns the number of transitions. */
+int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const double *ydot, rc_event *ev, int max_ev,
+                   int *restart);
+
 #endif

@@ -11,6 +11,7 @@
  */
 #include <cvode/cvode.h>
 #include <cvode/cvode_proj.h>
+#include <float.h>
 #include <math.h>
 #include <nvector/nvector_serial.h>
 #include <stdio.h>
@@ -69,6 +70,25 @@ static int cb_root(realtype t, N_Vector y, realtype *g, void *ud)
     run_ctx *c = ud;
     c->d->n_root++;
     rc_assemble_roots(c->m, c->d, t, N_VGetArrayPointer(y), g);
+    return 0;
+}
+
+/* Error weights with an absolute part only where the model asks for it
+ * (model.h ewt_rel): positions and rotations under derived tolerances are
+ * weighed against the contact scales, not against centre coordinates; a
+ * floor of 64 ulps of the value keeps a far-away coordinate testable. */
+static int cb_ewt(N_Vector yv, N_Vector wv, void *ud)
+{
+    const rc_model *m = ((run_ctx *)ud)->m;
+    const double *y = N_VGetArrayPointer(yv);
+    double *w = N_VGetArrayPointer(wv);
+    for (int k = 0; k < m->ny; k++) {
+        const double ay = fabs(y[k]);
+        double s = m->atol[k] + (m->ewt_rel[k] ? m->rtol * ay : 0.0);
+        if (!m->ewt_rel[k]) s = fmax(s, 64.0 * DBL_EPSILON * ay);
+        if (!(s > 0)) return -1;
+        w[k] = 1.0 / s;
+    }
     return 0;
 }
 
@@ -148,54 +168,23 @@ static int set_root_directions(const rc_model *m, const rc_data *d, void *cv, in
     return CVodeSetRootDirection(cv, dir);
 }
 
-/* Look-ahead step for roots on zero, as a fraction of the output interval,
- * and its bounds [s]: small against the dynamics, large enough that two
- * steps move a position by more than its rounding under gravity. */
-#define RC_LOOKAHEAD_FRAC 1e-5
-#define RC_LOOKAHEAD_MIN 1e-12
-#define RC_LOOKAHEAD_MAX 1e-5
-/* Rounds of look-ahead transitions after one event (each may enable more). */
-#define RC_LOOKAHEAD_ROUNDS 8
-
-/* Roots exactly on zero. CVODE deactivates a root function that is exactly
- * zero at the start or after an event until it moves away, and never reports
- * that departure, even when it is the crossing that should switch a mode (a
- * body touching at rest under gravity, a force starting at zero). So ricochet
- * probes each such function two explicit Euler steps ahead (second order:
- * a position at rest moves by delta^2 a) and, when it leaves zero in its
- * triggering direction, applies the transition now. Returns the number of
- * transitions; *jumped is set when history states were reset. */
-static int resolve_zero_roots(const rc_model *m, rc_data *d, double t, double *y, double dtout, double *g,
-                              double *g2, int *dir, int *roots, double *y1, double *f, rc_output *out,
-                              long *nevents, int *jumped, rc_status *st, rc_error *err)
+/* Contacts at zero penetration or zero force, decided by the state after
+ * the start and after every event (events.c, rc_modes_touch): the rate of
+ * the state in the current modes is computed first, for the force rates.
+ * Writes the events; returns their number (*jumped is set when history
+ * states were reset). */
+static int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double *f, rc_output *out,
+                            long *nevents, int *jumped, rc_status *st, rc_error *err)
 {
-    double dl = fmin(fmax(RC_LOOKAHEAD_FRAC * dtout, RC_LOOKAHEAD_MIN), RC_LOOKAHEAD_MAX);
-    const int nr = RC_ROOTS_PER_INTER * m->ninter;
     int total = 0;
     *st = RC_OK;
-    for (int round = 0; round < RC_LOOKAHEAD_ROUNDS; round++) {
-        rc_assemble_roots(m, d, t, y, g);
-        int any = 0;
-        for (int k = 0; k < nr; k++) any |= g[k] == 0.0;
-        if (!any) break;
-        /* y1 = y + dl f(y); y2 = y1 + dl f(y1), written into y1 */
+    if (m->ninter == 0) return 0;
+    /* a touching contact closed at zero force changes no rate, so one more
+     * round settles what the first one enabled */
+    for (int round = 0; round < 2; round++) {
         if (rc_assemble_rhs(m, d, t, y, f)) break;
-        for (int k = 0; k < m->ny; k++) y1[k] = y[k] + dl * f[k];
-        if (rc_assemble_rhs(m, d, t + dl, y1, f)) break;
-        for (int k = 0; k < m->ny; k++) y1[k] += dl * f[k];
-        rc_assemble_roots(m, d, t + 2 * dl, y1, g2);
-        root_directions(m, d, dir);
-        int hit = 0;
-        for (int k = 0; k < nr; k++) {
-            roots[k] = 0;
-            if (g[k] == 0.0 && g2[k] != 0.0 && (dir[k] == 0 || dir[k] * g2[k] > 0)) {
-                roots[k] = g2[k] > 0 ? 1 : -1;
-                hit = 1;
-            }
-        }
-        if (!hit) break;
         rc_event ev[RC_MAX_EV];
-        int jmp = 0, nev = rc_events_apply(m, d, t, y, roots, ev, RC_MAX_EV, &jmp);
+        int jmp = 0, nev = rc_modes_touch(m, d, t, y, f, ev, RC_MAX_EV, &jmp);
         *jumped |= jmp;
         total += nev;
         *nevents += nev;
@@ -486,8 +475,7 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     if ((st = open_output(m, opt ? opt->output_path : NULL, &out, err))) goto done;
     {
         int jmp = 0;
-        resolve_zero_roots(m, d, t, yd, m->dtout, gbuf, g2buf, rootdir, roots, ylook, flook, out, &s.events, &jmp,
-                           &st, err);
+        resolve_touching(m, d, t, yd, flook, out, &s.events, &jmp, &st, err);
         if (st) goto done;
     }
 
@@ -498,7 +486,8 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     }
     CVCHECK(CVodeInit(cv, cb_rhs, t, y), "CVodeInit");
     CVCHECK(CVodeSetUserData(cv, &rc), "CVodeSetUserData");
-    CVCHECK(CVodeSVtolerances(cv, m->rtol, av), "CVodeSVtolerances");
+    if (m->ewt_rel) CVCHECK(CVodeWFtolerances(cv, cb_ewt), "CVodeWFtolerances");
+    else CVCHECK(CVodeSVtolerances(cv, m->rtol, av), "CVodeSVtolerances");
     CVCHECK(CVodeSetLinearSolver(cv, LS, A), "CVodeSetLinearSolver");
     CVCHECK(CVodeSetJacFn(cv, cb_jac), "CVodeSetJacFn");
     CVCHECK(CVodeSetMaxOrd(cv, m->max_order), "CVodeSetMaxOrd");
@@ -604,9 +593,8 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
                     goto done;
                 }
             }
-            /* roots left exactly on zero that leave it the triggering way */
-            nev += resolve_zero_roots(m, d, t, yd, m->dtout, gbuf, g2buf, rootdir, roots, ylook, flook, out,
-                                      &s.events, &jumped, &st, err);
+            /* contacts left at zero penetration or zero force: by the state */
+            nev += resolve_touching(m, d, t, yd, flook, out, &s.events, &jumped, &st, err);
             if (st) goto done;
             if (nev > 0) CVCHECK(set_root_directions(m, d, cv, rootdir), "CVodeSetRootDirection");
             if (jumped || (nev > 0 && needs_restart(m, d, cv, old_mode, old_branch, old_track, old_slip, t, yd, ytn, f0, f1)) ||

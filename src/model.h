@@ -173,9 +173,23 @@ struct rc_model {
     int *inter_law;      /* [ninter] normal law RC_LAW_TYPE6 / RC_LAW_POWER (power.h) */
     struct rc_power *inter_pw; /* [ninter] power-law parameters (power.h), law POWER */
 
+    /* the model's own scales (scales.c, docs/theory.md 7.1), per interface;
+     * NAN when the model gives none (no gravity, no speed reaching it) */
+    double *inter_pscale; /* penetration scale p_s [m] */
+    double *inter_fscale; /* force scale F_L(p_s) [N] */
+    double *inter_kscale; /* normal stiffness at p_s [N/m] */
+    double *inter_vscale; /* contact speed scale p_s omega_s [m/s] */
+    double *inter_mred;   /* reduced mass of the pair [kg] */
+
     /* state vector */
     int ny;
     double *atol;        /* [ny] absolute tolerances (units of each state) */
+    char *ewt_rel;       /* [ny] 1: the weight has the relative part rtol |y_i|;
+                            0: absolute only (positions and rotations under the
+                            derived tolerances); NULL: all relative */
+    int tol_auto;        /* bit mask of the tolerances derived from the model
+                            (RC_TOL_AUTO_*), 0 when all are given */
+    double escale;       /* energy scale of the model [J] */
 
     /* run and solver settings */
     double tend, dtout;  /* [s] */
@@ -197,6 +211,9 @@ struct rc_model {
     struct rc_couplings *cpl;
 };
 
+/* Which tolerances are derived from the model's scales (blank /SOLVER fields). */
+enum { RC_TOL_AUTO_POS = 1, RC_TOL_AUTO_QUAT = 2, RC_TOL_AUTO_VEL = 4, RC_TOL_AUTO_OMEGA = 8, RC_TOL_AUTO_ENERGY = 16 };
+
 /* Mutable run data. */
 typedef struct rc_data {
     int *inter_mode;     /* [ninter] rc_inter_mode */
@@ -205,6 +222,9 @@ typedef struct rc_data {
     int *inter_slip;     /* [ninter] friction: 0 stick, 1 slip */
     double *inter_dref;  /* [ninter*3] sliding direction when a stateless friction
                             law saturated (reversal root) [-] */
+    double *inter_band;  /* [ninter*2] touch bands of a contact closed at zero
+                            penetration or zero force: separation root P + band[0]
+                            [m], release root F_n + band[1] [N]; 0 otherwise */
     struct rc_cpl_data *cpl; /* couplings: catenary warm starts, workspace (coupling.h) */
     double *imp_free;    /* [ny] imposed velocities: the free accelerations of
                             their rows at the last rhs (imposed.h), NULL: none */
@@ -303,5 +323,19 @@ void rc_jac_free(rc_model *m);
 /* Consistent modes at (t, y) from scratch (start of run); may set history
  * states in y (Inacti offset, initial F_h). */
 void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y);
+
+/* ---- scales and tolerances (scales.c) ------------------------------ */
+/* Per-interface scales (penetration, force, stiffness, speed) from the
+ * laws, the masses, gravity and the initial speeds; derived regularisation
+ * lengths; after the state layout, before the tolerances. */
+rc_status rc_model_scales(rc_model *m, rc_error *err);
+/* Absolute tolerances and weight kinds of every state. */
+rc_status rc_model_tolerances(rc_model *m, rc_error *err);
+/* Time derivatives of the reported quantities of interface i (in the given
+ * modes) along the state rate ydot: p, vn (the normal acceleration), p_raw,
+ * vn_raw, fload, fdamp, fn, fl, fu, fh, offset; other fields 0. Exact, by
+ * complex step (assemble_jac.c). */
+void rc_inter_report_rate(const rc_model *m, int i, int mode, int branch, int track, int slip, const double *y,
+                          const double *ydot, rc_inter_report *dr);
 
 #endif

@@ -23,7 +23,7 @@ import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
 
 R, M = 0.01, 7850.0 * 4.0 / 3.0 * math.pi * 0.01**3
-DREG = 1e-6  # default regularisation length [m]
+DREG = 1e-6  # regularisation length set on the card [m] (the reference integrates the same law)
 # (v0 [m/s], K, m1, C, m2, m3, RDF (None: off))
 CASES = ((0.8, 1.9e8, 1.3, 3.6e5, 1.2, 0.8, 0.001),
          (0.6, 4.1e9, 1.7, 2.3e6, 0.9, 1.1, None))
@@ -85,7 +85,7 @@ def deck(v0, K, m1, C, m2, m3, rdf, rtol=1e-10):
     d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
     d.grnod(1, [1])
     d.inivel(1, (0.0, 0.0, -v0), 1)
-    d.power(1, 1, 2, k=K, m1=m1, c=C, m2=m2, m3=m3, irdf=0 if rdf else 2, rdf=rdf)
+    d.power(1, 1, 2, k=K, m1=m1, c=C, m2=m2, m3=m3, irdf=0 if rdf else 2, rdf=rdf, dreg=DREG, vreg=1e-6)
     d.run(4e-4, 1.0e-6)
     d.solver(rtol=rtol, atol_pos=1e-15, atol_vel=1e-10, atol_energy=1e-12)
     return d

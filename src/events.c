@@ -296,6 +296,24 @@ static const char *step_contact(const rc_model *m, rc_data *d, int i, double *y,
     return NULL;
 }
 
+/* Incremental friction going from stick to slip: the state takes the
+ * applied force (spring and stick damper) returned radially onto the limit
+ * (in the scaled plane when orthotropic), so that the sliding force keeps
+ * its direction and the state its magnitude. */
+static void slip_on_limit(const rc_model *m, rc_data *d, int i, double t, double *y, int *changed)
+{
+    const rc_fric *fr = &m->inter_fr[i];
+    rc_inter_report q;
+    double *ft = y + m->inter_eadr[i] + fr->tidx;
+    report(m, d, i, t, y, &q); /* stick: the applied force */
+    for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
+    const int slip = d->inter_slip[i];
+    d->inter_slip[i] = 1;
+    report(m, d, i, t, y, &q); /* slip: that direction on the limit */
+    d->inter_slip[i] = slip;
+    for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
+}
+
 /* Friction. Incremental: stick -> slip when the force reaches the limit;
  * slip -> stick when the sliding velocity along the force vanishes (the state
  * is then put where the force already is, on the limit). Viscous (total):
@@ -315,6 +333,9 @@ static const char *step_friction(const rc_model *m, rc_data *d, int i, double t,
     }
     if (r[RC_ROOT_SLIP] <= 0) return NULL;
     if (!d->inter_slip[i]) {
+        /* incremental: the state takes the applied force (spring and stick
+         * damper), so that the sliding force keeps its direction */
+        if (fr->form == RC_FF_INCREMENTAL && fr->ct > 0) slip_on_limit(m, d, i, t, y, changed);
         d->inter_slip[i] = 1;
         if (fr->form == RC_FF_VISCOUS) {
             report(m, d, i, t, y, &q);
@@ -468,6 +489,19 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             }
         }
         if (kind && d->inter_mode[i] == RC_MODE_CLOSED) stateless_friction_mode(m, d, i, t, y);
+        /* incremental friction sticking beyond its limit (a contact that
+         * closes while sliding: the stick damper alone exceeds the limit):
+         * it slips from the start, the state on the applied force */
+        const rc_fric *fr = &m->inter_fr[i];
+        if (!kind && d->inter_mode[i] == RC_MODE_CLOSED && fr->kind != RC_FK_NONE && fr->form == RC_FF_INCREMENTAL &&
+            !d->inter_slip[i]) {
+            report(m, d, i, t, y, &r);
+            if (r.slip_root > 0) {
+                slip_on_limit(m, d, i, t, y, restart);
+                d->inter_slip[i] = 1;
+                kind = "fric_slip";
+            }
+        }
         /* a contact left closed at P = 0 or at zero force separates at
          * P = -band and releases at F_n = -fband: its roots start off zero,
          * so CVODE sees them leave */

@@ -46,6 +46,8 @@
 /* Derived regularisation of the power law: Dreg = RC_DREG_FRAC p_s,
  * Vreg = RC_DREG_FRAC v_s [-]. */
 #define RC_DREG_FRAC 1e-4
+/* Damping ratio of the stick spring of incremental friction [-]. */
+#define RC_STICK_ZETA 1.0
 
 /* ---- the normal laws on p >= 0 ------------------------------------- */
 /* Load force of interface i at penetration p [N] (no hysteresis, no damping). */
@@ -258,6 +260,16 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         escale = fmax(escale, m->body_mass[b] * gmax * size[b]);
     }
     m->escale = escale;
+    /* stick damping of the incremental friction: the stick spring critically
+     * damped on the pair's reduced mass, so that a body stopped on a
+     * sticking contact comes to rest instead of ringing */
+    for (int i = 0; i < n; i++) {
+        rc_fric *fr = &m->inter_fr[i];
+        const double mr = m->inter_mred[i];
+        fr->ct = fr->kind != RC_FK_NONE && fr->form == RC_FF_INCREMENTAL && fr->kt > 0 && isfinite(mr)
+                     ? RC_STICK_ZETA * 2.0 * sqrt(fr->kt * mr)
+                     : 0.0;
+    }
     /* derived regularisation of the power law (blank Dreg, Vreg) */
     for (int i = 0; i < n; i++) {
         if (m->inter_law[i] != RC_LAW_POWER) continue;

@@ -559,6 +559,38 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
     fprintf(f, "states      %d, Jacobian nonzeros %lld\n", m->ny, (long long)m->nnz);
     fprintf(f, "run         end time %.6g s, output every %.6g s\n", m->tend, m->dtout);
     fprintf(f, "solver      CVODE BDF (max order %d), Newton, KLU; rtol %.3g\n", m->max_order, m->rtol);
-    fprintf(f, "            atol: position %.3g m, quaternion %.3g, velocity %.3g m/s, angular %.3g rad/s, energy %.3g J\n",
-            m->atol_pos, m->atol_quat, m->atol_vel, m->atol_omega, m->atol_energy);
+    /* the tolerances in force: given on /SOLVER, or derived from the scales */
+    const int au = m->tol_auto;
+    if (au == 0) {
+        fprintf(f, "            atol: position %.3g m, quaternion %.3g, velocity %.3g m/s, angular %.3g rad/s, energy %.3g J\n",
+                m->atol_pos, m->atol_quat, m->atol_vel, m->atol_omega, m->atol_energy);
+    } else {
+        double lo[4] = {INFINITY, INFINITY, INFINITY, INFINITY}, hi[4] = {0, 0, 0, 0};
+        for (int b = 0; b < m->nbody; b++) {
+            if (m->body_yadr[b] < 0) continue;
+            const int off[4] = {0, 3, 7, 10};
+            for (int k = 0; k < 4; k++) {
+                const double a = m->atol[m->body_yadr[b] + off[k]];
+                lo[k] = fmin(lo[k], a);
+                hi[k] = fmax(hi[k], a);
+            }
+        }
+        fprintf(f, "            atol (%s): position %.3g..%.3g m%s, quaternion %.3g..%.3g, velocity %.3g..%.3g m/s,\n"
+                   "            angular %.3g..%.3g rad/s, energy %.3g J\n",
+                au == (RC_TOL_AUTO_POS | RC_TOL_AUTO_QUAT | RC_TOL_AUTO_VEL | RC_TOL_AUTO_OMEGA | RC_TOL_AUTO_ENERGY)
+                    ? "derived from the contact scales"
+                    : "blank fields derived from the contact scales",
+                lo[0], hi[0], m->ewt_rel ? " (absolute)" : "", lo[1], hi[1], lo[2], hi[2], lo[3], hi[3], m->atol_energy);
+    }
+    int nsc = 0;
+    for (int i = 0; i < m->ninter; i++) nsc += isfinite(m->inter_pscale[i]) != 0;
+    fprintf(f, "scales      %d of %d interfaces scaled (penetration p_s, force F_s, speed v_s)\n", nsc, m->ninter);
+    for (int i = 0, shown = 0; i < m->ninter && shown < 20; i++, shown++) {
+        if (isfinite(m->inter_pscale[i]))
+            fprintf(f, "  %-18s p_s %.4g m, F_s %.4g N, k_s %.4g N/m, v_s %.4g m/s\n", m->inter_name[i],
+                    m->inter_pscale[i], m->inter_fscale[i], m->inter_kscale[i], m->inter_vscale[i]);
+        else
+            fprintf(f, "  %-18s no scale (no gravity or speed reaches it): fixed fallback tolerances\n", m->inter_name[i]);
+    }
+    if (m->ninter > 20) fprintf(f, "  ... %d more\n", m->ninter - 20);
 }

@@ -7,9 +7,10 @@
  *   p_F  where the load law reaches the weight of the lighter free body,
  *        F(p_F) = m_min |g|max,
  *   p_E  where the law's stored energy reaches the kinetic energy of the
- *        pair at its speed scale, integral_0^p_E F = m_red v^2 / 2, with v
- *        the largest initial or imposed speed of its bodies or the fall
- *        speed over its initial gap sqrt(2 |g|max gap0),
+ *        pair at the speed scale, integral_0^p_E F = m_red v^2 / 2, with v
+ *        the largest initial or imposed speed of any body (momentum travels
+ *        through chains of contacts) or the fall speed over the
+ *        interface's initial gap sqrt(2 |g|max gap0),
  *   p_s = min(p_F, p_E) over those that exist.
  * With it: the force scale F_s = F(p_s), the stiffness k_s = dF/dp at p_s,
  * the contact frequency omega_s = sqrt(k_s / m_red) and the speed scale
@@ -218,6 +219,9 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         double a = gf * sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
         if (m->body_yadr[b] >= 0 && a > gmax) gmax = a;
     }
+    /* the model's speed scale: the largest initial or imposed speed of a body */
+    double vmodel = 0.0;
+    for (int b = 0; b < m->nbody; b++) vmodel = fmax(vmodel, body_speed(m, b, size[b]) + imposed_speed(m, b, size[b]));
     double escale = 0.0;
     for (int i = 0; i < n; i++) {
         const int ba = m->inter_ba[i], bb = m->inter_bb[i];
@@ -231,8 +235,7 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         /* speed scale: initial and imposed speeds, fall over the gap */
         rc_inter_report r;
         rc_inter_report_eval(m, i, RC_MODE_OPEN, RC_BR_LOAD, 0, 0, 0.0, y, &r);
-        const double La = ba >= 0 ? size[ba] : 0.0, Lb = bb >= 0 ? size[bb] : 0.0;
-        double v = body_speed(m, ba, La) + body_speed(m, bb, Lb) + imposed_speed(m, ba, La) + imposed_speed(m, bb, Lb);
+        double v = vmodel; /* momentum travels through chains of contacts */
         if (r.p_raw < 0) v = fmax(v, sqrt(2.0 * gmax * -r.p_raw));
         const double pF = invert(m, i, 0, mmin * gmax);
         const double pE = invert(m, i, 1, 0.5 * mred * v * v);

@@ -21,7 +21,7 @@
 #define RC_DEF_METHOD 1
 #define RC_DEF_MAX_ORDER 5
 #define RC_DEF_MAX_STEPS 100000
-#define RC_DEF_RTOL 1e-6
+#define RC_DEF_RTOL 1e-8
 /* absolute tolerances: 0 (blank) = derived from the model's scales */
 #define RC_DEF_ATOL_POS 0.0
 #define RC_DEF_ATOL_QUAT 0.0

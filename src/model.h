@@ -190,6 +190,7 @@ struct rc_model {
     int tol_auto;        /* bit mask of the tolerances derived from the model
                             (RC_TOL_AUTO_*), 0 when all are given */
     double escale;       /* energy scale of the model [J] */
+    double vscale;       /* speed scale of the model [m/s] (0: none) */
 
     /* run and solver settings */
     double tend, dtout;  /* [s] */

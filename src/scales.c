@@ -37,13 +37,16 @@
 #include "model.h"
 #include "power.h"
 
-/* Fixed tolerances of a body without a scaled contact, and of the states
- * of couplings (the documented defaults of /SOLVER). */
-#define RC_TOL_FALLBACK_POS 1e-9   /* [m] */
-#define RC_TOL_FALLBACK_QUAT 1e-9  /* [-] */
+/* A body without a scaled contact: positions at rtol RC_TOL_FALLBACK_LFRAC
+ * L (L its size), velocities at rtol RC_TOL_FALLBACK_LFRAC v_model, both
+ * with the relative part [-]; without any speed scale 1 m/s stands for it
+ * (RC_TOL_FALLBACK_VEL / 1e-6). Energies without a scale: 1e-6 J. */
+#define RC_TOL_FALLBACK_LFRAC 1e-3
+#define RC_TOL_FALLBACK_POS 1e-9   /* [m], interface states without a scale */
 #define RC_TOL_FALLBACK_VEL 1e-6   /* [m/s] */
-#define RC_TOL_FALLBACK_OMEGA 1e-6 /* [rad/s] */
 #define RC_TOL_FALLBACK_ENERGY 1e-6 /* [J] */
+/* Energy accumulators: RC_TOL_EFRAC rtol E_s [-]. */
+#define RC_TOL_EFRAC 0.1
 /* Derived regularisation of the power law: Dreg = RC_DREG_FRAC p_s,
  * Vreg = RC_DREG_FRAC v_s [-]. */
 #define RC_DREG_FRAC 1e-4
@@ -219,10 +222,30 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         double a = gf * sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
         if (m->body_yadr[b] >= 0 && a > gmax) gmax = a;
     }
-    /* the model's speed scale: the largest initial or imposed speed of a body */
-    double vmodel = 0.0;
-    for (int b = 0; b < m->nbody; b++) vmodel = fmax(vmodel, body_speed(m, b, size[b]) + imposed_speed(m, b, size[b]));
-    double escale = 0.0;
+    /* the model's speed scale: the largest initial or imposed speed of a
+     * body, or the speed the initial elastic energy (contacts penetrating at
+     * t = 0, stretched couplings) gives the lightest free body */
+    double vmodel = 0.0, mlight = INFINITY;
+    for (int b = 0; b < m->nbody; b++) {
+        vmodel = fmax(vmodel, body_speed(m, b, size[b]) + imposed_speed(m, b, size[b]));
+        if (m->body_yadr[b] >= 0) mlight = fmin(mlight, m->body_mass[b]);
+    }
+    double e0 = 0.0;
+    for (int i = 0; i < n; i++) {
+        rc_inter_report r0;
+        rc_inter_report_eval(m, i, RC_MODE_OPEN, RC_BR_LOAD, 0, 0, 0.0, y, &r0);
+        if (r0.p_raw > 0) e0 += law_energy(m, i, r0.p_raw);
+    }
+    rc_data *d0 = rc_data_new(m);
+    if (d0) {
+        double e[RC_NENERGY];
+        rc_energy(m, d0, 0.0, y, e);
+        e0 += fabs(e[RC_E_CPL_ELASTIC]) + fabs(e[RC_E_CATENARY]);
+        rc_data_free(d0);
+    }
+    if (e0 > 0 && isfinite(mlight)) vmodel = fmax(vmodel, sqrt(2.0 * e0 / mlight));
+    m->vscale = vmodel;
+    double escale = e0;
     for (int i = 0; i < n; i++) {
         const int ba = m->inter_ba[i], bb = m->inter_bb[i];
         const int fa = ba >= 0 && m->body_yadr[ba] >= 0, fb = bb >= 0 && m->body_yadr[bb] >= 0;
@@ -296,7 +319,7 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
     const int au = m->tol_auto;
     const double rt = m->rtol;
     /* energies */
-    if (au & RC_TOL_AUTO_ENERGY) m->atol_energy = m->escale > 0 ? rt * m->escale : RC_TOL_FALLBACK_ENERGY;
+    if (au & RC_TOL_AUTO_ENERGY) m->atol_energy = m->escale > 0 ? RC_TOL_EFRAC * rt * m->escale : RC_TOL_FALLBACK_ENERGY;
     for (int k = 0; k < ny; k++) m->atol[k] = m->atol_energy; /* accounting states unless set below */
     /* bodies: the smallest scales of their contacts */
     for (int b = 0; b < m->nbody; b++) {
@@ -309,11 +332,14 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         }
         const int scaled = isfinite(ps);
         const double L = body_size(m, b) > 0 ? body_size(m, b) : 1.0;
+        /* no contact scale: the body's size and the model's speed scale,
+         * with the relative part (couplings, free flight) */
+        const double vb = m->vscale > 0 ? m->vscale : RC_TOL_FALLBACK_VEL / 1e-6;
         double *a = m->atol + m->body_yadr[b];
         char *rel = m->ewt_rel + m->body_yadr[b];
         for (int k = 0; k < 3; k++) {
             if (au & RC_TOL_AUTO_POS) {
-                a[k] = scaled ? rt * ps : RC_TOL_FALLBACK_POS;
+                a[k] = scaled ? rt * ps : rt * RC_TOL_FALLBACK_LFRAC * L;
                 rel[k] = !scaled;
             } else {
                 a[k] = m->atol_pos;
@@ -321,16 +347,16 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         }
         for (int k = 3; k < 7; k++) {
             if (au & RC_TOL_AUTO_QUAT) {
-                a[k] = scaled ? rt * ps / L : RC_TOL_FALLBACK_QUAT;
+                a[k] = scaled ? rt * ps / L : rt * RC_TOL_FALLBACK_LFRAC;
                 rel[k] = !scaled;
             } else {
                 a[k] = m->atol_quat;
             }
         }
         for (int k = 7; k < 10; k++)
-            a[k] = (au & RC_TOL_AUTO_VEL) ? (scaled ? rt * vs : RC_TOL_FALLBACK_VEL) : m->atol_vel;
+            a[k] = (au & RC_TOL_AUTO_VEL) ? (scaled ? rt * vs : rt * RC_TOL_FALLBACK_LFRAC * vb) : m->atol_vel;
         for (int k = 10; k < 13; k++)
-            a[k] = (au & RC_TOL_AUTO_OMEGA) ? (scaled ? rt * vs / L : RC_TOL_FALLBACK_OMEGA) : m->atol_omega;
+            a[k] = (au & RC_TOL_AUTO_OMEGA) ? (scaled ? rt * vs / L : rt * RC_TOL_FALLBACK_LFRAC * vb / L) : m->atol_omega;
     }
     /* interface states: forces at rtol of the force scale (or the
      * stiffness times the position tolerance when given), lengths at the

@@ -512,7 +512,7 @@ static void test_case_defaults(void)
     const rc_case_solver *v = &c->solver;
     ENSURE(v->present == 0 && v->method == 1 && v->max_order == 5 && v->max_steps == 100000);
     /* blank absolute tolerances: 0, derived from the model at compile time */
-    ENSURE(v->rtol == 1e-6 && v->atol_pos == 0 && v->atol_quat == 0 && v->atol_vel == 0 &&
+    ENSURE(v->rtol == 1e-8 && v->atol_pos == 0 && v->atol_quat == 0 && v->atol_vel == 0 &&
            v->atol_omega == 0 && v->atol_energy == 0 && v->hmax == 0 && v->h0 == 0);
     ENSURE(c->title[0] == '\0' && c->unit_mass[0] == '\0');
     rc_case_free(c);

@@ -311,7 +311,10 @@ static void slip_on_limit(const rc_model *m, rc_data *d, int i, double t, double
     d->inter_slip[i] = 1;
     report(m, d, i, t, y, &q); /* slip: that direction on the limit */
     d->inter_slip[i] = slip;
-    for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
+    /* a zero limit (mu floored at zero, no Sfric) keeps the direction */
+    const double nr = q.fraw[0] * q.fraw[0] + q.fraw[1] * q.fraw[1] + q.fraw[2] * q.fraw[2];
+    if (nr > 0 && isfinite(nr))
+        for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
 }
 
 /* Friction. Incremental: stick -> slip when the force reaches the limit;

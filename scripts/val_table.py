@@ -7,9 +7,10 @@ at ricochet's default settings (RICOCHET_VAL_SOLVER=default: /SOLVER removed).
 
 Prints a markdown table: problem, check, error (or the detail when the check
 prints no number) and PASS/FAIL in each mode. The error is the number the
-check prints: its "rel. error X" (or "max rel. error X", "|error| X",
-"error X"), else the first number followed by its bound "(< tol)", else the
-first "= X".
+check prints: its "rel. error X" (or "max rel. error X", "rel. difference X",
+"|error| X", "error X" in e-notation), else the first e-notation number
+followed by its bound "(< tol)", else the first "= X" in e-notation; a check
+script that stopped shows its last error line.
 """
 import os
 import re
@@ -19,17 +20,21 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PYTHON = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable  # as scripts/check.sh
 NUM = r"([-+]?[0-9]*\.?[0-9]+(?:e[-+]?\d+)?)"
+SCI = r"([-+]?[0-9]*\.?[0-9]+e[-+]?\d+)"
 PATTERNS = [re.compile(p) for p in (
     r"rel\. error " + NUM,
+    r"rel\. difference " + NUM,
     r"\|error\| " + NUM,
-    r"errors? " + NUM,
-    NUM + r"(?: [^\s(]+)?\s*\((?:<|<=) ",
-    r"= " + NUM + r"\b(?!\.)",
+    r"errors? " + SCI,
+    SCI + r"(?: [^\s(]+)?\s*\((?:<|<=) ",
+    r"= " + SCI,
 )]
 LINE = re.compile(r"^(PASS|FAIL) (default:)?(\S+?): (.*)$")
 
 
 def error_of(detail):
+    if detail.startswith("check script exited"):
+        return detail if len(detail) <= 150 else detail[:147] + "..."
     for p in PATTERNS:
         m = p.search(detail)
         if m:

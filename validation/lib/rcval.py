@@ -82,11 +82,13 @@ class Result:
             self.pos = np.array(nc["body_position"][:])
             self.vel = np.array(nc["body_velocity"][:])
             self.fn = np.array(nc["inter_force_normal"][:]) if "inter_force_normal" in nc.variables else None
+            self.inter_id = np.array(nc["inter_id"][:]) if "inter_id" in nc.variables else None
             self.pen = np.array(nc["inter_penetration"][:]) if "inter_penetration" in nc.variables else None
             v = nc.variables
             self.ffric = np.array(v["inter_force_friction"][:]) if "inter_force_friction" in v else None
             self.vslip = np.array(v["inter_slip_speed"][:]) if "inter_slip_speed" in v else None
             self.slip = np.array(v["inter_slip"][:]) if "inter_slip" in v else None
+            self.mode = np.array(v["inter_mode"][:]) if "inter_mode" in v else None  # 1 open, 2 closed, 3 released
             n = len(nc.dimensions["event"])
             self.ev_t = np.array(nc["event_time"][:]) if n else np.zeros(0)
             self.ev_kind = [str(k) for k in nc["event_kind"][:]] if n else []

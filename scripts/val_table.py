@@ -8,9 +8,9 @@ at ricochet's default settings (RICOCHET_VAL_SOLVER=default: /SOLVER removed).
 Prints a markdown table: problem, check, error (or the detail when the check
 prints no number) and PASS/FAIL in each mode. The error is the number the
 check prints: its "rel. error X" (or "max rel. error X", "rel. difference X",
-"|error| X", "error X" in e-notation), else the first e-notation number
-followed by its bound "(< tol)", else the first "= X" in e-notation; a check
-script that stopped shows its last error line.
+"|error| X", "error / (scale) X", "error X" in e-notation), else the first
+e-notation number followed by its bound "(< tol)", else "= X (< tol)", else
+the largest "(rel. X)"; a check script that stopped shows its last error line.
 """
 import os
 import re
@@ -25,10 +25,12 @@ PATTERNS = [re.compile(p) for p in (
     r"rel\. error " + NUM,
     r"rel\. difference " + NUM,
     r"\|error\| " + NUM,
+    r"error / \([^)]*\) " + SCI,
     r"errors? " + SCI,
     SCI + r"(?: [^\s(]+)?\s*\((?:<|<=) ",
-    r"= " + SCI,
+    r"= " + SCI + r"[^;,]*\((?:<|<=) ",
 )]
+REL = re.compile(r"\(rel\. " + SCI + r"\)")
 LINE = re.compile(r"^(PASS|FAIL) (default:)?(\S+?): (.*)$")
 
 
@@ -39,12 +41,18 @@ def error_of(detail):
         m = p.search(detail)
         if m:
             return m.group(1)
+    rels = REL.findall(detail)
+    if rels:  # "... (rel. X) ... (rel. Y)": the largest
+        return max(rels, key=float)
     return detail if len(detail) <= 90 else detail[:87] + "..."
 
 
 def parse(lines, results, problem=None, mode=None):
     """Collect PASS/FAIL lines into results[(problem, check)][mode]."""
+    last_err = ""
     for ln in lines:
+        if re.match(r"^(ricochet: |RuntimeError: |\w+Error: )", ln):
+            last_err = ln.strip()
         h = re.match(r"^== (validation/\S+?)( \(defaults\))?$", ln)
         if h:
             problem = os.path.basename(h.group(1))
@@ -54,6 +62,8 @@ def parse(lines, results, problem=None, mode=None):
         if not m or problem is None:
             continue
         status, pre, name, detail = m.groups()
+        if detail.startswith("check script exited") and last_err and ":" not in detail:
+            detail += ": " + last_err
         md = "default" if pre else (mode or "tight")
         key = (problem, name.split("/")[-1])
         results.setdefault(key, {})[md] = (status, error_of(detail))

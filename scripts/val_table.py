@@ -28,7 +28,7 @@ PATTERNS = [re.compile(p) for p in (
     r"error / \([^)]*\) " + SCI,
     r"errors? " + SCI,
     SCI + r"(?: [^\s(]+)?\s*\((?:<|<=) ",
-    r"= " + SCI + r"[^;,]*\((?:<|<=) ",
+    r"= " + SCI + r"[^;]*?\((?:<|<=) ",
 )]
 REL = re.compile(r"\(rel\. " + SCI + r"\)")
 LINE = re.compile(r"^(PASS|FAIL) (default:)?(\S+?): (.*)$")

@@ -20,22 +20,36 @@ cat "$log"
 pass=$((pass + $(grep -c '^PASS ' "$log")))
 fail=$((fail + $(grep -c '^FAIL ' "$log")))
 
-# validation problems: each check.py prints PASS/FAIL lines
-for chk in validation/*/check.py; do
-    dir=$(dirname "$chk")
-    if [ "$mode" = fast ] && [ -f "$dir/SLOW" ]; then continue; fi
-    echo "== $dir"
-    RICOCHET="$PWD/$build/ricochet" /usr/bin/python3 "$chk" --"$mode" > "$log" 2>&1
-    status=$?
-    cat "$log"
-    p=$(grep -c '^PASS ' "$log")
-    f=$(grep -c '^FAIL ' "$log")
-    if [ "$status" -ne 0 ] && [ "$f" -eq 0 ]; then
-        echo "FAIL $dir: check script exited with status $status"
-        f=1
+# validation problems: each check.py prints PASS/FAIL lines; every problem
+# runs twice, first with the solver settings of its decks, then at ricochet's
+# default settings (RICOCHET_VAL_SOLVER=default: the /SOLVER cards removed,
+# except in the convergence studies over rtol; check names prefixed "default:")
+for solver in deck default; do
+    if [ "$solver" = default ]; then
+        echo "==== validation at the default solver settings (/SOLVER removed)"
+    else
+        echo "==== validation at the decks' solver settings"
     fi
-    pass=$((pass + p))
-    fail=$((fail + f))
+    for chk in validation/*/check.py; do
+        dir=$(dirname "$chk")
+        if [ "$mode" = fast ] && [ -f "$dir/SLOW" ]; then continue; fi
+        if [ "$solver" = default ]; then echo "== $dir (defaults)"; else echo "== $dir"; fi
+        RICOCHET="$PWD/$build/ricochet" RICOCHET_VAL_SOLVER="$solver" /usr/bin/python3 "$chk" --"$mode" > "$log" 2>&1
+        status=$?
+        cat "$log"
+        p=$(grep -c '^PASS ' "$log")
+        f=$(grep -c '^FAIL ' "$log")
+        if [ "$status" -ne 0 ] && [ "$f" -eq 0 ]; then
+            if [ "$solver" = default ]; then
+                echo "FAIL default:$dir: check script exited with status $status"
+            else
+                echo "FAIL $dir: check script exited with status $status"
+            fi
+            f=1
+        fi
+        pass=$((pass + p))
+        fail=$((fail + f))
+    done
 done
 rm -f "$log"
 echo "$pass passed, $fail failed"

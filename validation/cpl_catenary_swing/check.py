@@ -88,8 +88,11 @@ def main():
                 f"{np.nanmax(ref) - np.nanmin(ref):.2f} J")
     drifts = []
     for rtol in (1e-6, 1e-8):
-        rr = rcval.Result(rcval.run(deck(rtol)))
+        rr = rcval.Result(rcval.run(deck(rtol), keep_solver=True))
         drifts.append(np.max(np.abs(rr.energy["energy_total"] - rr.energy["energy_total"][0])) / scale)
+    if rcval.DEFAULTS:  # the study's rtol 1e-9 point is case.rad with its /SOLVER card
+        et = rcval.Result(rcval.run_file(os.path.join(here, "case.rad"), keep_solver=True)).energy["energy_total"]
+        drift = np.max(np.abs(et - et[0])) / scale
     rcval.check("cpl_catenary_swing.convergence", drifts[1] < drifts[0] and drift < drifts[1],
                 f"ledger drift at rtol 1e-6, 1e-8, 1e-9: {drifts[0]:.2e}, {drifts[1]:.2e}, {drift:.2e}")
     rcval.finish()

@@ -65,7 +65,7 @@ def main():
     rcval.check("cpl_spring_damped.energy", res < 1e-6 and st < 1e-6,
                 f"ledger residual {res:.2e}, stored energy vs k u^2/2: {st:.2e} (of k u0^2/2, < 1e-6); "
                 f"dissipated {e['energy_coupling_damping'][-1]:.6f} J of {e0:.6f} J")
-    errs = [errors(rcval.run(deck(rtol)))[1] for rtol in (1e-6, 1e-8, 1e-10)]
+    errs = [errors(rcval.run(deck(rtol), keep_solver=True))[1] for rtol in (1e-6, 1e-8, 1e-10)]
     rcval.check("cpl_spring_damped.convergence", errs[2] < errs[1] < errs[0],
                 "max error / u0 at rtol 1e-6, 1e-8, 1e-10: " + ", ".join(f"{x:.2e}" for x in errs))
     rcval.finish()

@@ -126,7 +126,7 @@ def main():
     e = max(abs(np.linalg.norm(f) / fn - mu(v)) for f, fn, v in zip(r.ffric[sl, 0], r.fn[sl, 0], r.vslip[sl, 0]))
     rcval.check("frc_renard_decel.on_curve", e < 1e-9,
                 f"{sl.sum()} sliding records: max | |F_t|/F_n - mu(v_slip) | = {e:.1e} (< 1e-9)")
-    r = rcval.Result(rcval.run(deck(rtol=1e-10)))
+    r = rcval.Result(rcval.run(deck(rtol=1e-10), keep_solver=True))  # a named point of the rtol study
     compare("frc_renard_decel.rtol1e-10", r, ref, 1e-7, 1e-8)
     rcval.finish()
 

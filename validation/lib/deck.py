@@ -193,11 +193,12 @@ class Deck:
                  line(("r", atol_pos), ("r", atol_quat), ("r", atol_vel), ("r", atol_omega)),
                  line(("r", atol_energy)))
 
-    def block_on_floor(self, m, r, k, g, visc, z0, v0):
+    def block_on_floor(self, m, r, k, g, visc, z0, v0, fric=None, stiff=None):
         """A 1-sphere "block" (rotations locked) of mass m, radius r at height z0
         on the fixed floor z = 0, launched at v0, under gravity g (its node
         group only), with a TYPE6 linear contact k and damping visc (no TYPE6
-        friction). Ids: /FUNCT 1, node 1, /RBODY 1, surfaces 1 and 2,
+        friction unless fric, the Coulomb coefficient, is given; stiff: the
+        TYPE6 Stiff field). Ids: /FUNCT 1, node 1, /RBODY 1, surfaces 1 and 2,
         /GRNOD 1, /BCS 1, /INIVEL 1, /GRAV 1, /INTER/TYPE6 1."""
         self.funct(1, [0.0, 1.0], [0.0, k], title=f"linear load curve k = {k:.0e} N/m".replace("e+0", "e"))
         self.nodes([(1, 0.0, 0.0, z0)])
@@ -208,7 +209,10 @@ class Deck:
         self.bcs(1, 1, "000 111", title="no rotation")
         self.inivel(1, tuple(v0), 1)
         self.grav(1, "Z", -g, 1)
-        self.type6(1, 1, 2, 1, visc=visc, title="contact (no TYPE6 friction)")
+        if fric is None and stiff is None:
+            self.type6(1, 1, 2, 1, visc=visc, title="contact (no TYPE6 friction)")
+        else:
+            self.type6(1, 1, 2, 1, visc=visc, fric=fric, stiff=stiff, title=f"contact, Coulomb friction mu = {fric or 0.0:g}")
 
     def text(self):
         return "\n".join(self.cards + ["/END", ""])

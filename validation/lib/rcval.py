@@ -2,6 +2,12 @@
 
 Each check prints one line per assertion, "PASS name: ..." or
 "FAIL name: ...", and scripts/check.sh counts them.
+
+RICOCHET_VAL_SOLVER=default in the environment runs every deck at ricochet's
+default solver settings: run() and run_file() remove the deck's /SOLVER card
+before running (unless called with keep_solver=True, for the runs of a
+convergence study over rtol), and check() prefixes each check name with
+"default:" so that the two modes' lines are told apart.
 """
 import os
 import subprocess
@@ -15,27 +21,55 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 RICOCHET = os.environ.get("RICOCHET", os.path.join(ROOT, "build", "ricochet"))
 FAILED = []
+DEFAULTS = os.environ.get("RICOCHET_VAL_SOLVER", "") == "default"
+PREFIX = "default:" if DEFAULTS else ""
 
 
-def run(deck, name="case"):
-    """Write the deck to a temporary directory, run it, return the output path."""
+def strip_solver(text):
+    """The deck text without its /SOLVER card (header and data lines, up to
+    the next card header)."""
+    out, skip = [], False
+    for ln in text.splitlines(keepends=True):
+        if ln.startswith("/"):
+            skip = ln.split()[0] in ("/SOLVER", "/SOLVER/1")
+        if not skip:
+            out.append(ln)
+    return "".join(out)
+
+
+def _execute(case, out):
+    p = subprocess.run([RICOCHET, "run", case, "-o", out, "-q"], capture_output=True, text=True)
+    if p.returncode != 0:
+        raise RuntimeError(f"ricochet failed ({p.returncode}): {p.stderr.strip()}")
+    return out
+
+
+def run(deck, name="case", keep_solver=False):
+    """Write the deck to a temporary directory, run it, return the output path.
+    In the defaults mode the /SOLVER card is removed unless keep_solver."""
     d = tempfile.mkdtemp(prefix="rcval-")
     case = os.path.join(d, name + ".rad")
     out = os.path.join(d, name + ".nc")
-    deck.write(case)
-    p = subprocess.run([RICOCHET, "run", case, "-o", out, "-q"], capture_output=True, text=True)
-    if p.returncode != 0:
-        raise RuntimeError(f"ricochet failed ({p.returncode}): {p.stderr.strip()}")
-    return out
+    text = deck.text()
+    if DEFAULTS and not keep_solver:
+        text = strip_solver(text)
+    with open(case, "w") as f:
+        f.write(text)
+    return _execute(case, out)
 
 
-def run_file(case):
+def run_file(case, keep_solver=False):
+    """Run a deck file, return the output path. In the defaults mode a copy
+    without the /SOLVER card is run unless keep_solver."""
     d = tempfile.mkdtemp(prefix="rcval-")
     out = os.path.join(d, "out.nc")
-    p = subprocess.run([RICOCHET, "run", case, "-o", out, "-q"], capture_output=True, text=True)
-    if p.returncode != 0:
-        raise RuntimeError(f"ricochet failed ({p.returncode}): {p.stderr.strip()}")
-    return out
+    if DEFAULTS and not keep_solver:
+        with open(case) as f:
+            text = strip_solver(f.read())
+        case = os.path.join(d, "case.rad")
+        with open(case, "w") as f:
+            f.write(text)
+    return _execute(case, out)
 
 
 class Result:
@@ -48,11 +82,13 @@ class Result:
             self.pos = np.array(nc["body_position"][:])
             self.vel = np.array(nc["body_velocity"][:])
             self.fn = np.array(nc["inter_force_normal"][:]) if "inter_force_normal" in nc.variables else None
+            self.inter_id = np.array(nc["inter_id"][:]) if "inter_id" in nc.variables else None
             self.pen = np.array(nc["inter_penetration"][:]) if "inter_penetration" in nc.variables else None
             v = nc.variables
             self.ffric = np.array(v["inter_force_friction"][:]) if "inter_force_friction" in v else None
             self.vslip = np.array(v["inter_slip_speed"][:]) if "inter_slip_speed" in v else None
             self.slip = np.array(v["inter_slip"][:]) if "inter_slip" in v else None
+            self.mode = np.array(v["inter_mode"][:]) if "inter_mode" in v else None  # 1 open, 2 closed, 3 released
             n = len(nc.dimensions["event"])
             self.ev_t = np.array(nc["event_time"][:]) if n else np.zeros(0)
             self.ev_kind = [str(k) for k in nc["event_kind"][:]] if n else []
@@ -75,6 +111,7 @@ class Result:
 
 
 def check(name, ok, detail):
+    name = PREFIX + name
     print(f"{'PASS' if ok else 'FAIL'} {name}: {detail}")
     sys.stdout.flush()
     if not ok:

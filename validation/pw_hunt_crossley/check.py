@@ -76,7 +76,7 @@ def main():
         if full and k == 0:
             errs = []
             for rtol in (1e-6, 1e-8, 1e-10):
-                v, _, _ = measure(rcval.run(deck(v0, alpha, rtol)))
+                v, _, _ = measure(rcval.run(deck(v0, alpha, rtol), keep_solver=True))
                 errs.append(abs(v / v0 - e_ref))
             rcval.check("pw_hunt_crossley.convergence", errs[2] <= errs[0],
                         "error at rtol 1e-6, 1e-8, 1e-10: " + ", ".join(f"{x:.2e}" for x in errs))

@@ -59,7 +59,7 @@ def main():
     # convergence: error shrinks with rtol (atol scaled alongside)
     errs = []
     for rtol in (1e-4, 1e-6, 1e-8):
-        e, tc = measure(rcval.run(deck(rtol, 1e-3 * rtol, rtol)))
+        e, tc = measure(rcval.run(deck(rtol, 1e-3 * rtol, rtol), keep_solver=True))
         errs.append(max(rcval.rel(e, e_ref), rcval.rel(tc, tc_ref)))
     ok = errs[2] < errs[1] < errs[0]
     rcval.check("spring_dashpot.convergence", ok,

@@ -3,12 +3,13 @@
 A block (sphere R = 0.05 m, rotations locked) held in x and y sits on a belt
 (a plane on a 1e12 kg body) moving at V = 10 m/s along x, with Coulomb
 friction mu = 0.3 in the incremental form. From the moment t0 the contact
-acts, the law's force jumps to mu F_n along the belt (after a stick onset of
-F_lim/(K_t V) = 0.3 us), and the force that acts is the output of the
-continuous first-order filter tau dF_f/dt = F - F_f, which starts at zero
-(SPEC 6 [FR-FILT], docs/theory.md 6.3). Reference: F_f = L (1 - e^(-(t - t0)/tau)),
-63.2 % at t0 + tau; and the exact solution with the stick onset (a ramp
-K_t V (t - t0) up to (1 + 1e-6) L, then L). tau per Ifiltr: 3: 1/(2 pi Xfreq);
+acts, the law's force jumps to mu F_n along the belt (the stick damper's
+force c_t V = 2e4 N is beyond the limit at once, so it slips at t0), and the
+force that acts is the output of the continuous first-order filter
+tau dF_f/dt = F - F_f, which starts at zero (SPEC 6 [FR-FILT],
+docs/theory.md 6.3). Reference: F_f = L (1 - e^(-(t - t0)/tau)), 63.2 % at
+t0 + tau; and the exact solution with the stick phase (the raw force
+c_t V + K_t V (t - t0) up to (1 + 1e-6) L, then L: no stick phase here). tau per Ifiltr: 3: 1/(2 pi Xfreq);
 1: Dt_ref/Xfreq; 2: Dt_ref/(2 pi Xfreq).
 """
 import math
@@ -19,13 +20,15 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import rcval  # noqa: E402
+import stick  # noqa: E402
 from deck import Deck  # noqa: E402
 
 M, R, K, G, MU, V = 1.0, 0.05, 1.0e6, 9.81, 0.3, 10.0
 VISC = 2.0 * 0.5 * math.sqrt(K * M)  # normal damping ratio 0.5
 KT = K                               # stick stiffness: the load-curve slope
 MBELT = 1.0e12
-BAND = 1e-6                          # slip band RC_SLIP_BAND (src/model.h)
+BAND = stick.BAND                    # slip band RC_SLIP_BAND (src/model.h)
+MRED = M * MBELT / (M + MBELT)       # reduced mass of the pair (the stick damper)
 P_FIXED = M * G / K                  # penetration of the fixed-block variant: F_n = m g
 
 # name: (Ifiltr, Xfreq, Dt_ref, tau expected, t0 = Tstart, block fixed)
@@ -63,17 +66,25 @@ def deck(ifiltr, xfreq, dt_ref, tau, t0, fixed):
     return d
 
 
-def exact(t, t0, tau, L):
-    """Filter output and friction work for the raw force K_t V s (s = t - t0)
-    up to (1 + band) L at s1, then L; zero before t0."""
+def exact(t, t0, tau, L, m_red=MRED):
+    """Filter output and friction work for the raw force of the stick phase,
+    b + a s (s = t - t0; the stick damper's b = c_t V, c_t = 2 sqrt(K_t m_red),
+    and the spring's a = K_t V), up to (1 + band) L at s1, then L; zero before
+    t0. Here b > (1 + band) L, so s1 = 0: the contact slips at t0 and the raw
+    force is the step L from t0. (A fully fixed block would make m_red the
+    belt's mass: a larger c_t, the same step.)"""
     a = KT * V
-    s1 = (1 + BAND) * L / a
+    b = stick.ct(KT, m_red) * V
+    s1 = max((1 + BAND) * L - b, 0.0) / a
+
+    def ramp(sr):
+        e = np.exp(-sr / tau)
+        f = b * (1.0 - e) + a * (sr - tau + tau * e)
+        w = V * (b * (sr - tau * (1.0 - e)) + a * (0.5 * sr * sr - tau * sr + tau * tau * (1.0 - e)))
+        return f, w
     s = np.maximum(np.asarray(t, dtype=float) - t0, 0.0)
-    f1 = a * (s1 - tau + tau * math.exp(-s1 / tau))
-    w1 = V * a * (0.5 * s1 * s1 - tau * s1 + tau * tau * (1.0 - math.exp(-s1 / tau)))
-    sr = np.minimum(s, s1)
-    f_ramp = a * (sr - tau + tau * np.exp(-sr / tau))
-    w_ramp = V * a * (0.5 * sr * sr - tau * sr + tau * tau * (1.0 - np.exp(-sr / tau)))
+    f1, w1 = ramp(s1)
+    f_ramp, w_ramp = ramp(np.minimum(s, s1))
     q = np.maximum(s - s1, 0.0)
     f_after = L + (f1 - L) * np.exp(-q / tau)
     w_after = w1 + V * (L * q + (f1 - L) * tau * (1.0 - np.exp(-q / tau)))
@@ -93,7 +104,7 @@ def run_case(name, path=None):
     rcval.check(f"frc_filter.{name}.tau", abs(r.t[i] - t0 - tau) < 1e-12 and e < 1e-4,
                 f"tau = {tau:g} s (Ifiltr {ifiltr}, Xfreq {xfreq:.9g}{f', Dt_ref {dt_ref:.9g} s' if dt_ref else ''}): "
                 f"F_f(t0 + tau)/(mu F_n) = {ratio:.9f}, 1 - 1/e = {1 - math.exp(-1):.9f}, rel. error {e:.1e} (< 1e-4)")
-    # whole history against the exact solution with the stick onset
+    # whole history against the exact solution (slip at t0: the step)
     fref, wref = exact(r.t, t0, tau, L)
     e = np.max(np.abs(fx - fref)) / L
     side = np.max(np.abs(r.ffric[:, 0, 1:]))

@@ -4,7 +4,8 @@ A sphere with locked rotations (a "block", m = 1 kg, R = 0.05 m) rests at its
 static penetration on the fixed floor z = 0, under gravity, with Coulomb
 friction mu = 0.3 from a /FRICTION card (part-pair group block/floor), and
 slides to a stop, run with each formulation:
-  Iform 2: stick spring K_t, then F = mu F_n; stops (fric_stick) at rest;
+  Iform 2: stick spring K_t with its critical damper c_t = 2 sqrt(K_t m),
+           then F = mu F_n; stops (fric_stick) at rest;
   Iform 1: F = -C v up to the limit (C = sqrt(2 VISF K m) = 1414 N s/m); it
            never sticks: below v* = mu m g / C it creeps to a stop
            exponentially, time constant m / C.
@@ -25,6 +26,7 @@ from scipy.integrate import solve_ivp
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import rcval  # noqa: E402
+import stick  # noqa: E402
 from deck import Deck  # noqa: E402
 
 M, R, K, G, MU = 1.0, 0.05, 1.0e6, 9.81, 0.3
@@ -36,14 +38,15 @@ VISF = 1.0
 C = math.sqrt(2.0 * VISF * K * M)    # Iform 1 adhesion coefficient (the floor is fixed: m_red = m)
 L = MU * M * G                       # friction limit
 VSTAR = L / C                        # Iform 1 unsaturates below this speed
-BAND = 1e-6
+BAND = stick.BAND                    # slip band RC_SLIP_BAND (src/model.h)
 TEND = 0.4
 
 
 def reference(form, kt=KT, c=C, rtol=1e-12):
     """1-D block: x'' = (F_push + F_fric)/m, F_push = KP p for p = VP t - GAP - x > 0.
     form 'rigid': stuck (x = 0) until KP p = L, then F_fric = -L while v > 0;
-    form 2: stick spring (F_fric = -f, f' = KT v) until f = (1 + band) L, then -L, stop at v = 0;
+    form 2: critically damped stick spring (F_fric = -(f + c_t v), f' = KT v, c_t = 2 sqrt(KT m), the
+            floor fixed) until |f + c_t v| = (1 + band) L, then -L, stop at v = 0;
     form 1: F_fric = -C v until C v = L, -L while C v > L, then -C v (creep).
     Returns a dict of the key times and states and a dense evaluator of (x, v)."""
     segs = []
@@ -79,9 +82,11 @@ def reference(form, kt=KT, c=C, rtol=1e-12):
         t, y, k = run(free, t, y, [ev])
         out["stop"] = (t, y[0])
     elif form == 2:
+        ct = stick.ct(kt, M)
+
         def rhs_stick(t, y):
-            return [y[1], (push(t, y[0]) - y[2]) / M, kt * y[1]]
-        ev = (lambda tt, yy: yy[2] - (1 + BAND) * L)
+            return [y[1], (push(t, y[0]) - y[2] - ct * y[1]) / M, kt * y[1]]
+        ev = (lambda tt, yy: abs(yy[2] + ct * yy[1]) - (1 + BAND) * L)
         ev.direction = 1
         t, y, k = run(rhs_stick, tc, [0.0, 0.0, 0.0], [ev])
         out["slip"] = (t, y)
@@ -219,14 +224,15 @@ def compare(name, here, stiff, visf, tol_same):
 
 def launched():
     """Both forms launched at V0 = 1 m/s (sliding from t = 0): the viscous form
-    starts at its limit (saturated), the incremental one with its stick onset.
-    Exact: Iform 2 stops at x1 + v1^2/(2 mu g) after the onset of fric_slide_stop
-    (x1 = (1 + band) L/K_t, v1^2 = V0^2 - ((1 + band) L)^2/(K_t m)), i.e.
-    V0^2/(2 mu g) + L/(2 K_t) to first order; Iform 1 saturated from t = 0
-    creeps to V0^2/(2 mu g) + L/(4 VISF K)."""
+    starts at its limit (saturated), the incremental one sticking with a zero
+    state, whose stick damper's force c_t V0 = 2000 N exceeds the limit: it
+    slips at t = 0 (fric_slide_stop, lib/stick.py). Exact: Iform 2 stops at
+    x1 + v1^2/(2 mu g) = V0^2/(2 mu g) (t1 = x1 = 0, v1 = V0), the rigid
+    Coulomb point; Iform 1 saturated from t = 0 creeps to
+    V0^2/(2 mu g) + L/(4 VISF K)."""
     v0, a = 2 * VP, MU * G
-    fs = (1 + BAND) * L
-    x2_ref = fs / KT + (v0**2 - fs**2 / (KT * M)) / (2 * a)
+    t1, x1, v1 = stick.launch_onset(KT, M, v0, L)
+    x2_ref = x1 + v1**2 / (2 * a)
     x1_ref = v0**2 / (2 * a) + L / (4 * VISF * K)
     r2 = rcval.Result(rcval.run(deck(2, launched=True)))
     ts = r2.events("fric_stick")[0]
@@ -240,6 +246,8 @@ def launched():
                 f"Iform 1 (events {kinds}: saturated from t = 0) ends at {x1:.10f} m, exact {x1_ref:.10f} "
                 f"(error {e1:.1e}); < 1e-8 m")
     xr = v0**2 / (2 * a)
+    # each regularisation bounds its distance to the rigid stop: L/(4 VISF K) for
+    # Iform 1, L/(2 K_t) for the undamped stick onset of Iform 2 before aa7c6b5 (0 now)
     bound = L / (2 * KT) + L / (4 * VISF * K)
     rcval.check("frc_iform_compare.launched.same_stop", abs(x1 - x2) <= bound,
                 f"|x_1 - x_2| = {abs(x1 - x2):.3e} m <= L/(2 K_t) + L/(4 VISF K) = {bound:.3e} m (relative "

@@ -5,7 +5,8 @@ plane tilted by theta about a horizontal axis at azimuth 30 deg) with the
 friction given by a /FRICTION card instead of TYPE6's Fric, selected through
 /PART and /GRPART (README.md). Reference: with tan(theta) < mu the block
 stays stuck; with tan(theta) > mu it slides down the fall line at
-a = g (sin theta - mu cos theta).
+a = g (sin theta - mu cos theta). The stick phase is that of ricochet's
+critically damped stick spring (lib/stick.py).
 """
 import math
 import os
@@ -16,6 +17,7 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import incline  # noqa: E402
 import rcval  # noqa: E402
+import stick  # noqa: E402
 from deck import Deck  # noqa: E402
 
 M, R, K, G, MU = 1.0, 0.05, 1.0e6, 9.81, 0.3
@@ -23,7 +25,6 @@ VISC = 2.0 * 0.5 * math.sqrt(K * M)  # normal damping ratio 0.5
 PHI = math.radians(30.0)             # azimuth of the fall line
 TR = 0.5                             # ramp duration of the stuck case [s]
 P0 = 1e-12                           # initial penetration of the ramped case [m]
-BAND = 1e-6                          # slip band RC_SLIP_BAND (src/model.h)
 # friction values that must NOT apply (README.md): TYPE6's own Fric, the
 # first /FRICTION card (no groups, overridden by the later one), the default
 # set of the second card (its group names the block-plane pair)
@@ -105,12 +106,14 @@ def main():
     xs, xu, vs, vu, vn = along(r, tan_th)
     rcval.check("frc_incline.slide.events", r.ev_kind == ["fric_slip"],
                 f"events {list(zip(np.round(r.ev_t, 9), r.ev_kind))} (expected a single fric_slip at the stick onset)")
-    # stick onset from rest: m x'' = m g sin(theta) - K_t x, slip at K_t x = (1 + BAND) mu m g cos(theta)
-    t_on = math.acos(1.0 - (1 + BAND) * MU / tan_th) / math.sqrt(K / M)
+    # stick onset from rest under the step load P = m g sin(theta): the applied
+    # force of the critically damped stick spring, P (1 - (1 - w t) e^(-w t)),
+    # reaches (1 + 1e-6) mu m g cos(theta) at w t = 1 - W((1 - r) e), r = (1 + 1e-6) mu/tan(theta)
+    t_on = stick.step_onset(K, M, M * G * math.sin(th), MU * M * G * math.cos(th))
     e = abs(r.ev_t[0] - t_on) if len(r.ev_t) else float("inf")
     rcval.check("frc_incline.slide.onset", e < 1e-6,
-                f"fric_slip at {r.ev_t[0] if len(r.ev_t) else float('nan'):.9e} s, stick spring from rest: "
-                f"acos(1 - (1 + 1e-6) mu/tan(theta))/w = {t_on:.9e} s, error {e:.1e} s (< 1e-6)")
+                f"fric_slip at {r.ev_t[0] if len(r.ev_t) else float('nan'):.9e} s, damped stick spring from rest: "
+                f"(1 - W((1 - r) e))/w = {t_on:.9e} s, error {e:.1e} s (< 1e-6)")
     sl = r.t >= 0.2
     a, b = np.polyfit(r.t[sl], vs[sl], 1)
     resid = np.max(np.abs(vs[sl] - (a * r.t[sl] + b)))

@@ -17,10 +17,10 @@ import warnings
 
 import numpy as np
 from scipy.integrate import solve_ivp
-from scipy.optimize import brentq
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import rcval  # noqa: E402
+import stick  # noqa: E402
 from deck import Deck  # noqa: E402
 
 M, R, K, G, V0 = 1.0, 0.05, 1.0e6, 9.81, 1.0
@@ -75,24 +75,27 @@ def deck(iform=2, tend=0.45, rtol=1e-6, atol_pos=1e-9, atol_vel=1e-6):
 
 def incremental(v0=(V0, 0.0), rtol=1e-12):
     """Independent integration of ricochet's incremental orthotropic law
-    (docs/theory.md 3.5, 6.4): isotropic stick spring K_t from the launch
-    until the scaled force u_k = F_k/L_k reaches |u| = 1 + band (solved
-    exactly), then sliding on the ellipse, F = L_1 e_1 d1 + L_2 e_2 d2 with
-    e = u/|u| turning towards -w (w_k = L_k v_k) at
-    du/dt = -K_t/(L_1 L_2) (w - (w.e) e), until w.e rises through 0.
+    (docs/theory.md 3.5, 6.4, with the critically damped stick spring of
+    commit aa7c6b5, lib/stick.py): from the launch the contact sticks with a
+    zero state, and the force that acts is the spring plus the stick damper,
+    F = F_t - c_t v, c_t = 2 sqrt(K_t m) (the floor is fixed): at the launch
+    F = -c_t v0. It slips when the scaled force u_k = F.d_k/L_k reaches
+    |u| = 1 + band (the critically damped stick force -m w v0 (2 - w t) e^(-w t)
+    only falls from there, so the contact slips at t = 0 or never), the state
+    taking u/|u| (F returned radially onto the ellipse in the scaled plane);
+    then sliding on the ellipse, F = L_1 e_1 d1 + L_2 e_2 d2 with e = u/|u|
+    turning towards -w (w_k = L_k v_k) at du/dt = -K_t/(L_1 L_2) (w - (w.e) e),
+    until w.e rises through 0.
     Returns the slip time, the dense solution [x, y, v_x, v_y, u_1, u_2], the stop time and state."""
     L1, L2 = MU1 * M * G, MU2 * M * G
     d1, d2 = D1[:2], D2[:2]
     v0 = np.array(v0)
-    w, s0 = math.sqrt(KT / M), math.hypot(*v0)
-    eh = v0 / s0
-
-    def ell(t):
-        f = -KT * s0 * math.sin(w * t) / w * eh
-        return (f @ d1 / L1) ** 2 + (f @ d2 / L2) ** 2 - (1 + BAND) ** 2
-    t1 = brentq(ell, 0.0, 0.5 * math.pi / w, xtol=1e-18, rtol=1e-15)
-    x1, v1 = s0 * math.sin(w * t1) / w * eh, s0 * math.cos(w * t1) * eh
-    f1 = -KT * x1
+    f0 = -stick.ct(KT, M) * v0               # applied force at the launch: the damper's
+    u0 = np.array([f0 @ d1 / L1, f0 @ d2 / L2])
+    if math.hypot(*u0) <= 1 + BAND:
+        raise ValueError("the stick damper does not reach the ellipse: the block sticks")
+    t1, x1, v1 = 0.0, np.zeros(2), v0
+    u1 = u0 / math.hypot(*u0)                # radial return in the scaled plane
 
     def rhs(t, y):
         v, u = y[2:4], y[4:6]
@@ -102,15 +105,15 @@ def incremental(v0=(V0, 0.0), rtol=1e-12):
         f = L1 * e[0] * d1 + L2 * e[1] * d2
         return np.concatenate([v, f / M, du])
 
-    def stick(t, y):
+    def sticks(t, y):
         u, v = y[4:6], y[2:4]
         e = u / math.hypot(*u)
         return L1 * (v @ d1) * e[0] + L2 * (v @ d2) * e[1]
-    stick.terminal, stick.direction = True, 1
+    sticks.terminal, sticks.direction = True, 1
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)  # Radau's finite-difference Jacobian probing
-        s = solve_ivp(rhs, (t1, 10.0), np.concatenate([x1, v1, [f1 @ d1 / L1, f1 @ d2 / L2]]), method="Radau",
-                      rtol=rtol, atol=1e-15, dense_output=True, events=stick)
+        s = solve_ivp(rhs, (t1, 10.0), np.concatenate([x1, v1, u1]), method="Radau",
+                      rtol=rtol, atol=1e-15, dense_output=True, events=sticks)
     return t1, s.sol, s.t_events[0][0], s.y_events[0][0]
 
 
@@ -164,8 +167,9 @@ def main():
     slip = r.events("fric_slip")
     e = abs(slip[0] - inc[0]) if len(slip) else 1.0
     rcval.check("frc_orthotropic.tight.slip_onset", e < 1e-12,
-                f"fric_slip at {slip[0] if len(slip) else float('nan'):.9e} s, stick spring reaching the ellipse "
-                f"{inc[0]:.9e} s (error {e:.1e} s, < 1e-12)")
+                f"fric_slip at {slip[0] if len(slip) else float('nan'):.9e} s; the stick damper's force "
+                f"c_t v0 = {stick.ct(KT, M) * V0:g} N is beyond the ellipse at the launch: slip at {inc[0]:g} s "
+                f"(error {e:.1e} s, < 1e-12)")
     compare("frc_orthotropic.tight_vs_rigid", r, rigid, 5e-6, 5e-5, 1e-5, "the rigid elliptic law (solve_ivp)")
     rcval.finish()
 

@@ -3,8 +3,9 @@
 A sphere with locked rotations (a "block", m = 1 kg, R = 0.05 m) at its
 static penetration on the fixed floor z = 0, under gravity, launched
 horizontally at v0 = 1.2 m/s; its friction is Renard's law. Reference
-(README.md): the stick onset solved exactly (the elastic stick spring, with
-mu = mu_s while sticking), then an independent scipy solve_ivp of
+(README.md): the stick onset solved exactly (the critically damped stick
+spring, with mu = mu_s while sticking: its damper's force c_t v0 exceeds the
+limit, so the contact slips at t = 0), then an independent scipy solve_ivp of
 m dv/dt = -mu(v) m g (rtol 1e-11) to the stop. The velocity history, the
 stopping time and the stopping distance are compared.
 """
@@ -17,12 +18,12 @@ from scipy.integrate import solve_ivp
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import rcval  # noqa: E402
+import stick  # noqa: E402
 from deck import Deck  # noqa: E402
 
 M, R, K, G, V0 = 1.0, 0.05, 1.0e6, 9.81, 1.2
 VISC = 2.0 * 0.5 * math.sqrt(K * M)   # normal damping ratio 0.5
 KT = K                                # stick stiffness: the load-curve slope (no Stiff)
-BAND = 1e-6                           # slip band RC_SLIP_BAND (src/model.h)
 # Renard: mu_s, mu_d, mu_max, mu_min, V_cr1, V_cr2
 MUS, MUD, MUMAX, MUMIN, VCR1, VCR2 = 0.3, 0.25, 0.45, 0.1, 0.15, 0.5
 
@@ -40,12 +41,11 @@ def mu(v):
 
 def reference():
     """Stick onset (exact), then solve_ivp of x' = v, v' = -mu(v) g to v = 0.
-    Returns (t1, x1, v1) at the slip, the dense solution and the stop."""
-    fs = (1 + BAND) * MUS * M * G   # slip when K_t x reaches (1 + band) mu_s m g
-    w = math.sqrt(KT / M)
-    t1 = math.asin(fs / (M * w * V0)) / w
-    x1 = fs / KT
-    v1 = math.sqrt(V0**2 - fs**2 / (KT * M))
+    Returns (t1, x1, v1) at the slip, the dense solution and the stop.
+    Onset: sticking with a zero state, the force that acts is the damper's,
+    c_t v0 = 2 sqrt(K_t m) v0, against the sticking limit mu_s m g (sliding
+    speed 0): beyond it, so the contact slips at t = 0 (lib/stick.py)."""
+    t1, x1, v1 = stick.launch_onset(KT, M, V0, MUS * M * G)
 
     def rhs(t, y):
         return [y[1], -mu(max(y[1], 0.0)) * G]
@@ -94,7 +94,7 @@ def compare(name, r, ref, tol_v, tol_stop):
         return
     ts = sticks[0]
     # velocity history: every record from the launch to the stop
-    sel = (r.t > t1) & (r.t < ts)
+    sel = (r.t >= t1) & (r.t < ts)
     err, worst_t = 0.0, 0.0
     for t, v, x in zip(r.t[sel], r.vel[sel, 0, 0], r.pos[sel, 0, 0]):
         yr = ref_at(segs, t)
@@ -119,7 +119,8 @@ def main():
           f"(crossing V_cr2 at {segs[0][1]:.6f} s, V_cr1 at {segs[1][1]:.6f} s)")
     r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
     rcval.check("frc_renard_decel.slip", len(r.events("fric_slip")) > 0 and abs(r.events("fric_slip")[0] - t1) < 1e-9,
-                f"first fric_slip at {r.events('fric_slip')[0]:.6e} s, exact stick onset {t1:.6e} s")
+                f"first fric_slip at {r.events('fric_slip')[0]:.6e} s, exact stick onset {t1:.6e} s (the stick damper's "
+                f"c_t v0 = {stick.ct(KT, M) * V0:g} N against mu_s m g = {MUS * M * G:.6g} N)")
     compare("frc_renard_decel.rtol1e-8", r, ref, 1e-5, 1e-6)
     # along the curve: the measured |F_t|/F_n against mu(sliding speed) while sliding
     sl = (r.slip[:, 0] == 1) & (r.vslip[:, 0] > 0)

@@ -6,7 +6,8 @@ F_lim = Sfric + mu F_n, mu = Fric f_ff(F_n / Ascalef) f_fv(v / Ascalev),
 F_n = m g. Reference (README.md): an independent integration of the 1-D
 equation of motion m dv/dt = -F_lim(v) (scipy solve_ivp, rtol 1e-11, event
 at v = 0) on the piecewise-linear interpolant of the same table points
-(np.interp), started from the exact end of the stick onset; cross-checked by
+(np.interp), started from the exact end of the stick onset (the stick
+damper's force c_t v0 exceeds the limit: slip at t = 0); cross-checked by
 quadrature t = int m dv / F_lim(v), x = int m v dv / F_lim(v).
 """
 import math
@@ -18,10 +19,10 @@ from scipy.integrate import quad, solve_ivp
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import rcval  # noqa: E402
+import stick  # noqa: E402
 from deck import Deck  # noqa: E402
 
 R, K, G, V0, FRIC = 0.05, 1.0e6, 9.81, 1.0, 0.3
-BAND = 1e-6  # stick -> slip at |F_t| = (1 + BAND) F_lim (RC_SLIP_BAND, src/model.h)
 ASCALEV, ASCALEF = 0.5, 10.0
 # f_fv(v / Ascalev): rises to 1.3 at 0.05 m/s, then falls to 0.6 at 1 m/s
 FV_X, FV_Y = [0.0, 0.1, 0.4, 1.0, 2.0, 3.0], [1.0, 1.3, 1.1, 0.8, 0.6, 0.55]
@@ -47,11 +48,12 @@ def flim_fn(m, sfric, use_fv, use_ff):
 
 
 def onset(m, flim):
-    """Stick onset: m x'' = -K_t x from x = 0, x' = v0 (sliding speed 0, so
-    F_lim(0)) until K_t x = (1 + BAND) F_lim(0). Returns t1, x1, v1."""
-    fs = (1 + BAND) * flim(0.0)
-    w = math.sqrt(K / m)
-    return math.asin(fs / (m * w * V0)) / w, fs / K, math.sqrt(V0**2 - fs**2 / (K * m))
+    """Stick onset: sticking from x = 0, x' = v0 with a zero state, the force
+    that acts is the critically damped stick spring's, -m w v0 (2 - w t) e^(-w t),
+    c_t v0 = 2 sqrt(K_t m) v0 at the launch, against (1 + band) F_lim(0)
+    (sliding speed 0): beyond it, so the contact slips at t = 0
+    (lib/stick.py). Returns t1, x1, v1 = 0, 0, v0."""
+    return stick.launch_onset(K, m, V0, flim(0.0))
 
 
 def reference(m, flim):

@@ -24,6 +24,8 @@ typedef struct rc_fric {
     double fric;          /* TYPE6 Coulomb coefficient [-]                     */
     int fct_ff, fct_fv;   /* TYPE6 multiplier curves, table index or -1        */
     double kt;            /* incremental (stick) stiffness [N/m]               */
+    double fband;         /* force tolerance of the slip test: the absolute
+                             tolerance of F_t (scales.c) [N]                   */
     double ct;            /* stick damping 2 zeta_t sqrt(kt m_red), zeta_t = 1
                              (critical), set with the scales [N s/m]           */
     double tau;           /* filter time constant [s], 0: no filter            */

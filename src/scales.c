@@ -3,7 +3,7 @@
  * from them (docs/theory.md 7.1).
  *
  * Each interface gets a penetration scale p_s: the smallest penetration the
- * model is known to produce in it,
+ * model is known to produce in it, from
  *   p_F  where the load law reaches the weight of the lighter free body,
  *        F(p_F) = m_min |g|max,
  *   p_E  where the law's stored energy reaches the kinetic energy of the
@@ -11,7 +11,8 @@
  *        the largest initial or imposed speed of any body (momentum travels
  *        through chains of contacts) or the fall speed over the
  *        interface's initial gap sqrt(2 |g|max gap0),
- *   p_s = min(p_F, p_E) over those that exist.
+ *   p_s = min(p_F, p_E) over those that exist, but not below
+ *   RC_PSCALE_SPAN p_F (a tiny speed must not set absurd tolerances).
  * With it: the force scale F_s = F(p_s), the stiffness k_s = dF/dp at p_s,
  * the contact frequency omega_s = sqrt(k_s / m_red) and the speed scale
  * v_s = p_s omega_s. The laws are inverted with GSL's Brent solver.
@@ -42,7 +43,6 @@
  * with the relative part [-]; without any speed scale 1 m/s stands for it
  * (RC_TOL_FALLBACK_VEL / 1e-6). Energies without a scale: 1e-6 J. */
 #define RC_TOL_FALLBACK_LFRAC 1e-3
-#define RC_TOL_FALLBACK_POS 1e-9   /* [m], interface states without a scale */
 #define RC_TOL_FALLBACK_VEL 1e-6   /* [m/s] */
 #define RC_TOL_FALLBACK_ENERGY 1e-6 /* [J] */
 /* Energy accumulators: RC_TOL_EFRAC rtol E_s [-]. */
@@ -50,6 +50,8 @@
 /* Derived regularisation of the power law: Dreg = RC_DREG_FRAC p_s,
  * Vreg = RC_DREG_FRAC v_s [-]. */
 #define RC_DREG_FRAC 1e-4
+/* p_s is at least this fraction of p_F [-]. */
+#define RC_PSCALE_SPAN 1e-2
 /* Damping ratio of the stick spring of incremental friction [-]. */
 #define RC_STICK_ZETA 1.0
 
@@ -197,6 +199,21 @@ static double imposed_speed(const rc_model *m, int b, double L)
     return v;
 }
 
+/* Mass of body b as seen along the unit normal n: m / (sum over its free
+ * translations k of n_k^2), INFINITY for a fixed body or one held along n. */
+static double normal_mass(const rc_model *m, int b, const double *n)
+{
+    if (b < 0 || m->body_yadr[b] < 0) return INFINITY;
+    double w = 0.0;
+    for (int k = 0; k < 3; k++) {
+        int held = m->body_dofmask[6 * b + k];
+        const rc_imposed *p = m->imp;
+        for (int j = 0; p && j < p->nt; j++) held |= p->tbody[j] == b && p->tdir[j] == k;
+        if (!held) w += n[k] * n[k];
+    }
+    return w > 1e-12 ? m->body_mass[b] / w : INFINITY;
+}
+
 rc_status rc_model_scales(rc_model *m, rc_error *err)
 {
     const int n = m->ninter;
@@ -223,8 +240,9 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         if (m->body_yadr[b] >= 0 && a > gmax) gmax = a;
     }
     /* the model's speed scale: the largest initial or imposed speed of a
-     * body, or the speed the initial elastic energy (contacts penetrating at
-     * t = 0, stretched couplings) gives the lightest free body */
+     * body; without gravity and speeds, the speed the initial elastic energy
+     * (contacts penetrating at t = 0, stretched couplings) gives the
+     * lightest free body */
     double vmodel = 0.0, mlight = INFINITY;
     for (int b = 0; b < m->nbody; b++) {
         vmodel = fmax(vmodel, body_speed(m, b, size[b]) + imposed_speed(m, b, size[b]));
@@ -243,27 +261,33 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         e0 += fabs(e[RC_E_CPL_ELASTIC]) + fabs(e[RC_E_CATENARY]);
         rc_data_free(d0);
     }
-    if (e0 > 0 && isfinite(mlight)) vmodel = fmax(vmodel, sqrt(2.0 * e0 / mlight));
+    /* the initial elastic energy speaks only when nothing else does (no
+     * gravity, no speed): a rounding-level initial penetration must not */
+    if (vmodel == 0 && gmax == 0 && e0 > 0 && isfinite(mlight)) vmodel = sqrt(2.0 * e0 / mlight);
     m->vscale = vmodel;
-    double escale = e0;
+    double escale = 0.0;
     for (int i = 0; i < n; i++) {
         const int ba = m->inter_ba[i], bb = m->inter_bb[i];
-        const int fa = ba >= 0 && m->body_yadr[ba] >= 0, fb = bb >= 0 && m->body_yadr[bb] >= 0;
-        const double ma = fa ? m->body_mass[ba] : INFINITY, mb = fb ? m->body_mass[bb] : INFINITY;
-        const double mred = fa && fb ? ma * mb / (ma + mb) : fa ? ma : mb;
+        rc_inter_report r;
+        rc_inter_report_eval(m, i, RC_MODE_OPEN, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+        /* mobility along the contact normal: a body whose translations along
+         * it are held (/BCS) or imposed does not take part */
+        const double ma = normal_mass(m, ba, r.normal), mb = normal_mass(m, bb, r.normal);
+        const double mred = isfinite(ma) && isfinite(mb) ? ma * mb / (ma + mb) : isfinite(ma) ? ma : mb;
         const double mmin = fmin(ma, mb);
         m->inter_mred[i] = mred;
         m->inter_pscale[i] = m->inter_fscale[i] = m->inter_kscale[i] = m->inter_vscale[i] = NAN;
-        if (!isfinite(mred)) continue; /* between fixed bodies: nothing moves */
+        if (!isfinite(mred)) continue; /* nothing moves along the normal */
         /* speed scale: initial and imposed speeds, fall over the gap */
-        rc_inter_report r;
-        rc_inter_report_eval(m, i, RC_MODE_OPEN, RC_BR_LOAD, 0, 0, 0.0, y, &r);
         double v = vmodel; /* momentum travels through chains of contacts */
         if (r.p_raw < 0) v = fmax(v, sqrt(2.0 * gmax * -r.p_raw));
         const double pF = invert(m, i, 0, mmin * gmax);
         const double pE = invert(m, i, 1, 0.5 * mred * v * v);
         double p = isfinite(pF) ? pF : NAN;
         if (isfinite(pE) && !(pE >= p)) p = pE;
+        /* within RC_PSCALE_SPAN of the larger: a tiny initial penetration or
+         * speed must not set absurd tolerances */
+        if (isfinite(pE) && isfinite(pF)) p = fmax(p, RC_PSCALE_SPAN * pF);
         if (!isfinite(p)) continue;
         double k = law_slope(m, i, p), f = law_force(m, i, p);
         if (!(k > 0)) k = f / p; /* a curve flat at p_s: its secant */
@@ -274,24 +298,32 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         m->inter_vscale[i] = p * sqrt(k / mred);
         escale = fmax(escale, law_energy(m, i, p));
     }
-    /* energy scale: the initial kinetic energy, the contacts' energies at
-     * their scales, the work of gravity over one body size */
+    /* energy scale: the contacts' energies at their scales; without any,
+     * the initial kinetic energy and the work of gravity over one body size
+     * (a 1e12 kg belt's kinetic energy is not what the ledger exchanges) */
+    double ebody = e0;
     for (int b = 0; b < m->nbody; b++) {
         if (m->body_yadr[b] < 0) continue;
         const double *yb = m->body_y0 + RC_NB * b, *J = m->body_J + 9 * b;
         double ek = 0.5 * m->body_mass[b] * (yb[7] * yb[7] + yb[8] * yb[8] + yb[9] * yb[9]);
         for (int r = 0; r < 3; r++)
             for (int c = 0; c < 3; c++) ek += 0.5 * yb[10 + r] * J[3 * r + c] * yb[10 + c];
-        escale = fmax(escale, ek);
-        escale = fmax(escale, m->body_mass[b] * gmax * size[b]);
+        ebody = fmax(ebody, ek);
+        ebody = fmax(ebody, m->body_mass[b] * gmax * size[b]);
     }
-    m->escale = escale;
+    m->escale = escale > 0 ? escale : ebody;
     /* stick damping of the incremental friction: the stick spring critically
      * damped on the pair's reduced mass, so that a body stopped on a
      * sticking contact comes to rest instead of ringing */
     for (int i = 0; i < n; i++) {
         rc_fric *fr = &m->inter_fr[i];
-        const double mr = m->inter_mred[i];
+        /* the pair's reduced mass, every free body taking part (held
+         * directions included: a held body still carries the damper) */
+        double inv = 0.0;
+        const int bs[2] = {m->inter_ba[i], m->inter_bb[i]};
+        for (int k = 0; k < 2; k++)
+            if (bs[k] >= 0 && m->body_yadr[bs[k]] >= 0) inv += 1.0 / m->body_mass[bs[k]];
+        const double mr = inv > 0 ? 1.0 / inv : INFINITY;
         fr->ct = fr->kind != RC_FK_NONE && fr->form == RC_FF_INCREMENTAL && fr->kt > 0 && isfinite(mr)
                      ? RC_STICK_ZETA * 2.0 * sqrt(fr->kt * mr)
                      : 0.0;
@@ -363,7 +395,14 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
      * position tolerance */
     for (int i = 0; i < m->ninter; i++) {
         const int scaled = isfinite(m->inter_pscale[i]) && (au & RC_TOL_AUTO_POS);
-        const double apos = scaled ? rt * m->inter_pscale[i] : (au & RC_TOL_AUTO_POS) ? RC_TOL_FALLBACK_POS : m->atol_pos;
+        /* an interface without a scale: rtol RC_TOL_FALLBACK_LFRAC of its
+         * bodies' sizes */
+        const int ba = m->inter_ba[i], bb = m->inter_bb[i];
+        double Li = (ba >= 0 ? body_size(m, ba) : 0.0) + (bb >= 0 ? body_size(m, bb) : 0.0);
+        if (!(Li > 0)) Li = 1.0;
+        const double apos = scaled                      ? rt * m->inter_pscale[i]
+                            : (au & RC_TOL_AUTO_POS) ? rt * RC_TOL_FALLBACK_LFRAC * Li
+                                                     : m->atol_pos;
         double *a = m->atol + m->inter_eadr[i];
         if (m->inter_hidx[i] >= 0) a[m->inter_hidx[i]] = scaled ? rt * m->inter_fscale[i] : m->inter_stiff[i] * apos;
         if (m->inter_oidx[i] >= 0) a[m->inter_oidx[i]] = apos;
@@ -373,6 +412,7 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
             if (fr->tidx >= 0) a[fr->tidx + k] = af;
             if (fr->fidx >= 0) a[fr->fidx + k] = af;
         }
+        m->inter_fr[i].fband = fr->tidx >= 0 ? a[fr->tidx] : 0.0;
     }
     rc_cpl_atol(m);
     for (int k = 0; k < ny; k++)

@@ -24,7 +24,7 @@ M, R, K, G, MU = 1.0, 0.05, 1.0e6, 9.81, 0.3
 VISC = 2.0 * 0.5 * math.sqrt(K * M)  # normal damping ratio 0.5
 PHI = math.radians(30.0)             # azimuth of the fall line
 TR = 0.5                             # ramp duration of the stuck case [s]
-P0 = 1e-12                           # initial penetration of the ramped case [m]
+P0 = 0.0                             # the ramped case starts touching at zero gap [m]
 # friction values that must NOT apply (README.md): TYPE6's own Fric, the
 # first /FRICTION card (no groups, overridden by the later one), the default
 # set of the second card (its group names the block-plane pair)

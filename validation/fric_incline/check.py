@@ -23,7 +23,7 @@ M, R, K, G, MU = 1.0, 0.05, 1.0e6, 9.81, 0.3
 VISC = 2.0 * 0.5 * math.sqrt(K * M)  # normal damping ratio 0.5
 PHI = math.radians(30.0)             # azimuth of the fall line
 TR = 0.5                             # ramp duration of the ramped-gravity variant [s]
-P0 = 1e-12                           # initial penetration of the ramped variant [m]
+P0 = 0.0                             # the ramped variant starts touching at zero gap [m]
 
 
 def frame(tan_th):

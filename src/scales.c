@@ -372,7 +372,7 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         for (int k = 0; k < 3; k++) {
             if (au & RC_TOL_AUTO_POS) {
                 a[k] = scaled ? rt * ps : rt * RC_TOL_FALLBACK_LFRAC * L;
-                rel[k] = !scaled;
+                rel[k] = 0;
             } else {
                 a[k] = m->atol_pos;
             }
@@ -380,13 +380,16 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         for (int k = 3; k < 7; k++) {
             if (au & RC_TOL_AUTO_QUAT) {
                 a[k] = scaled ? rt * ps / L : rt * RC_TOL_FALLBACK_LFRAC;
-                rel[k] = !scaled;
+                rel[k] = 0;
             } else {
                 a[k] = m->atol_quat;
             }
         }
-        for (int k = 7; k < 10; k++)
+        for (int k = 7; k < 10; k++) {
             a[k] = (au & RC_TOL_AUTO_VEL) ? (scaled ? rt * vs : rt * RC_TOL_FALLBACK_LFRAC * vb) : m->atol_vel;
+            /* without a contact scale, velocities absolutely as well */
+            if ((au & RC_TOL_AUTO_VEL) && !scaled) rel[k] = 0;
+        }
         for (int k = 10; k < 13; k++)
             a[k] = (au & RC_TOL_AUTO_OMEGA) ? (scaled ? rt * vs / L : rt * RC_TOL_FALLBACK_LFRAC * vb / L) : m->atol_omega;
     }

@@ -230,6 +230,7 @@ typedef struct rc_case_run {
     double tend;  /* [s] */
     double dtout; /* [s], default tend/100 */
     rc_loc loc;
+    int ev_state; /* full-state records at events: 0 auto, 1 always, 2 never */
 } rc_case_run;
 
 /* /SOLVER (ricochet): integrator settings. Defaults in docs. */

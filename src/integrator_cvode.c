@@ -157,6 +157,19 @@ static int set_root_directions(const rc_model *m, const rc_data *d, void *cv, in
 /* Rounds of look-ahead transitions after one event (each may enable more). */
 #define RC_LOOKAHEAD_ROUNDS 8
 
+/* Append event `ev` at (t, y) to the events table with its interface's
+ * penetration P [m], approach speed dP/dt [m/s] and normal force [N], in the
+ * mode after the event. */
+static rc_status write_event(const rc_model *m, const rc_data *d, rc_output *o, double t, const double *y,
+                             const rc_event *ev, rc_error *err)
+{
+    const int i = ev->inter;
+    rc_inter_report r;
+    rc_inter_report_eval(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y, &r);
+    const double v[3] = {r.p, r.vn, d->inter_mode[i] == RC_MODE_CLOSED && r.fn > 0 ? r.fn : 0.0};
+    return rc_output_event_values(o, t, ev->kind, m->inter_name[i], v, err);
+}
+
 /* Roots exactly on zero. CVODE deactivates a root function that is exactly
  * zero at the start or after an event until it moves away, and never reports
  * that departure, even when it is the crossing that should switch a mode (a
@@ -200,7 +213,7 @@ static int resolve_zero_roots(const rc_model *m, rc_data *d, double t, double *y
         total += nev;
         *nevents += nev;
         for (int k = 0; k < nev && k < RC_MAX_EV && out; k++)
-            if ((*st = rc_output_event(out, t, ev[k].kind, m->inter_name[ev[k].inter], err))) return total;
+            if ((*st = write_event(m, d, out, t, y, &ev[k], err))) return total;
         if (nev == 0) break;
     }
     return total;
@@ -439,6 +452,7 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     rc_data *d = rc_data_new(m);
     const double tend = opt && opt->t_end_override > 0 ? opt->t_end_override : m->tend;
     const int show = opt && opt->progress && isatty(2);
+    const int evrec = rc_event_records(m); /* full-state records at events */
     double wall0 = wall_now(), last_progress = wall0;
 
     if (!d || !frame_alloc(m, &fb)) {
@@ -568,8 +582,11 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
             while (ibp < nbp && bp[ibp] <= t) ibp++;
             /* the next breakpoint, or none (a stop time past the end) */
             CVCHECK(CVodeSetStopTime(cv, ibp < nbp ? bp[ibp] : 2 * tend + 1), "CVodeSetStopTime");
-            if ((st = write_frame(m, d, out, &fb, t, yd, 1, err))) goto done;
-            if (tout - t <= 1e-12 * fmax(fabs(t), m->dtout)) {
+            /* a full-state record at the event (rc_event_records), or the
+             * output record when the event falls on an output time */
+            const int on_out = tout - t <= 1e-12 * fmax(fabs(t), m->dtout);
+            if ((evrec || on_out) && (st = write_frame(m, d, out, &fb, t, yd, evrec, err))) goto done;
+            if (on_out) {
                 nout++;
                 tout = fmin(nout * m->dtout, tend);
             }
@@ -587,7 +604,7 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
             int nev = rc_events_apply(m, d, t, yd, roots, ev, RC_MAX_EV, &jumped);
             s.events += nev;
             for (int k = 0; k < nev && k < RC_MAX_EV && out; k++)
-                if ((st = rc_output_event(out, t, ev[k].kind, m->inter_name[ev[k].inter], err))) goto done;
+                if ((st = write_event(m, d, out, t, yd, &ev[k], err))) goto done;
             /* event accumulation: report it rather than stall */
             for (int k = 0; k < nev && k < RC_MAX_EV; k++) {
                 const int i = ev[k].inter;
@@ -617,9 +634,12 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
             } else if (nev > 0) {
                 fresh = 1;
             }
-            if (nev > 0 && (st = write_frame(m, d, out, &fb, t, yd, 1, err))) goto done;
-            /* an event on an output time stands for that output */
-            if (tout - t <= 1e-12 * fmax(fabs(t), m->dtout)) {
+            /* an event on an output time stands for that output: a
+             * full-state record at the event (rc_event_records), or else the
+             * output record */
+            const int on_out = tout - t <= 1e-12 * fmax(fabs(t), m->dtout);
+            if (nev > 0 && (evrec || on_out) && (st = write_frame(m, d, out, &fb, t, yd, evrec, err))) goto done;
+            if (on_out) {
                 nout++;
                 tout = fmin(nout * m->dtout, tend);
             }

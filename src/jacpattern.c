@@ -15,9 +15,11 @@
 #include <string.h>
 
 #include "coupling.h"
+#include "friction.h"
 #include "error.h"
 #include "imposed.h"
 #include "model.h"
+#include "power.h"
 
 static int cmp_i64(const void *a, const void *b)
 {
@@ -105,14 +107,21 @@ static rc_status probe_blocks(rc_model *m, rc_error *err)
             break;
         }
         for (int k = 0; k < n; k++) jb->slot[k] = -1;
-        /* every mode in which the element writes: contact closed (forces)
-         * and released, each hysteresis branch, Inacti tracking on/off,
-         * stick and slip */
+        /* every mode in which the element writes and that it can reach
+         * (events.c): contact closed (forces) and released; each hysteresis
+         * branch, unless the branch stays LOAD (TYPE6, Iform 0, no F_h
+         * state); Inacti tracking on/off when it has the offset state; stick
+         * and slip when it has friction. A plain contact needs 4 of the 48
+         * combinations (the probing is most of the set-up of a large model) */
+        const int nbr = is_inter && !(m->inter_law[idx] == RC_LAW_TYPE6 && m->inter_iform[idx] == 0 &&
+                                      m->inter_hidx[idx] < 0) ? 3 : 1;
+        const int ntrk = is_inter && m->inter_oidx[idx] >= 0 ? 2 : 1;
+        const int nsl = is_inter && m->inter_fr[idx].kind != RC_FK_NONE ? 2 : 1;
         for (int p = 0; p < 2; p++)
             for (int md = 0; md < (is_inter ? 2 : 1); md++)
-                for (int br = 0; br < (is_inter ? 3 : 1); br++)
-                    for (int trk = 0; trk < (is_inter ? 2 : 1); trk++)
-                        for (int sl = 0; sl < (is_inter ? 2 : 1); sl++) {
+                for (int br = 0; br < nbr; br++)
+                    for (int trk = 0; trk < ntrk; trk++)
+                        for (int sl = 0; sl < nsl; sl++) {
                             const int mode = md ? RC_MODE_RELEASED : RC_MODE_CLOSED;
                             rc_jac_dense_block(m, is_inter, idx, mode, br, trk, sl, 0.0, y[p], dense);
                             for (int k = 0; k < n; k++)

@@ -213,7 +213,7 @@ void rc_cpl_print_summary(const rc_model *m, FILE *f)
                     p->lambda0[k], p->leq[k], p->ea[k], ok ? r.length : NAN, ok ? r.force : NAN,
                     ok ? r.lowest : NAN, ok ? "" : " (catenary equations not solved)");
     }
-    if (p->n > 20) fprintf(f, "  ... %d more\n", p->n - 20);
+    if (p->n > 20) fprintf(f, "  ... and %d more couplings (the first 20 in deck order are listed)\n", p->n - 20);
     free(y);
 }
 

@@ -730,7 +730,7 @@ rc_status rc_output_close(rc_output *o, const rc_stats *st, int complete, const 
     rc_status rc2 = RC_OK;
     int s = nc_redef(o->ncid);
     if (s != NC_NOERR) rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "entering define mode");
-    if (rc2 == RC_OK) rc2 = write_final(o, st, complete && ok, ok ? reason : err->msg, e);
+    if (rc2 == RC_OK) rc2 = write_final(o, st, complete && ok && !o->broken, ok ? reason : err->msg, e);
     if (rc2 == RC_OK && (s = nc_enddef(o->ncid)) != NC_NOERR)
         rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "ending definitions");
     s = nc_close(o->ncid);

@@ -364,7 +364,17 @@ static rc_status open_output(const rc_model *m, const char *path, rc_output **o,
                            "CVODE BDF, Newton, KLU sparse direct, rootfinding", m->rtol, m->atol_pos,
                            m->atol_quat, m->atol_vel, m->atol_omega, m->atol_energy, m->nbody, m->body_id,
                            m->body_fixed, m->ninter, m->inter_id, types, RC_NENERGY, energy_name, energy_long,
-                           m->cpl->n, m->cpl->id, m->cpl->type};
+                           m->cpl->n, m->cpl->id, m->cpl->type, NULL};
+    char evrec[160];
+    const int full = rc_event_records(m);
+    if (m->ev_state == 0)
+        snprintf(evrec, sizeof evrec, "%s (/RUN Ev_state 0: %d bodies, %s %d)",
+                 full ? "full-state record at every event" : "events table only", m->nbody,
+                 full ? "at most" : "more than", RC_EVREC_MAX_BODIES);
+    else
+        snprintf(evrec, sizeof evrec, "%s (/RUN Ev_state %d)",
+                 full ? "full-state record at every event" : "events table only", m->ev_state);
+    meta.event_records = evrec;
     rc_status st = rc_output_open(o, path, &meta, err);
     free(types);
     return st;

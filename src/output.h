@@ -31,6 +31,7 @@ typedef struct rc_output_meta {
     int ncoupling;
     const int *coupling_id;   /* [ncoupling] /COUPLING ids                 */
     const char *const *coupling_type; /* [ncoupling] "SPRING" or "CATENARY" */
+    const char *event_records; /* global attribute event_records (NULL: none) */
 } rc_output_meta;
 
 /* Interface modes as stored in the file (variable inter_mode). */

@@ -380,6 +380,7 @@ static rc_status define_globals(rc_output *o, const rc_output_meta *meta, rc_err
     if (rc == RC_OK) rc = put_double(o, "atol_velocity", meta->atol_vel, err);
     if (rc == RC_OK) rc = put_double(o, "atol_angular_velocity", meta->atol_omega, err);
     if (rc == RC_OK) rc = put_double(o, "atol_energy", meta->atol_energy, err);
+    if (rc == RC_OK && meta->event_records) rc = put_text(o, NC_GLOBAL, "event_records", meta->event_records, err);
     if (rc != RC_OK) return rc;
 
     /* provenance and completion */

@@ -230,6 +230,7 @@ typedef struct rc_case_run {
     double tend;  /* [s] */
     double dtout; /* [s], default tend/100 */
     rc_loc loc;
+    int ev_state; /* full-state records at events: 0 auto, 1 always, 2 never */
 } rc_case_run;
 
 /* /SOLVER (ricochet): integrator settings. Defaults in docs. */
@@ -278,9 +279,17 @@ struct rc_case {
     rc_case_solver solver;
 
     int nwarnings; char **warnings; /* "file:line: ..." ignored-card warnings */
+    struct rc_case_index *index; /* sorted ids for the look-ups (case_lookup.c); NULL: scan */
 };
 
-/* Index of the card with this id in its array, or -1 (case_lookup.c). */
+typedef struct rc_case_index rc_case_index;
+/* Build (or rebuild) c->index, the sorted ids behind the look-ups below;
+ * rc_case_load calls it. Without it, or after a count changed, the look-ups
+ * scan the arrays (same answers, O(N) each). */
+rc_status rc_case_index_build(rc_case *c, rc_error *err);
+void rc_case_index_free(rc_case_index *x);
+/* Index of the card with this id in its array (the first one), or -1
+ * (case_lookup.c); O(log N) with the index. */
 int rc_case_find_funct(const rc_case *c, int id);
 int rc_case_find_node(const rc_case *c, int id);
 int rc_case_find_grnod(const rc_case *c, int id);

@@ -885,7 +885,7 @@ static rc_status rc_card_fricorient(rc_reader *rd, const rc_block *b)
  * /RUN and /SOLVER (ricochet cards)
  * ====================================================================== */
 
-/* /RUN: Tend Dt_out. */
+/* /RUN: Tend Dt_out Ev_state. */
 static rc_status rc_card_run(rc_reader *rd, const rc_block *b)
 {
     rc_case_run *r = &rd->c->run;
@@ -893,9 +893,10 @@ static rc_status rc_card_run(rc_reader *rd, const rc_block *b)
     rc_status st;
     if ((st = rc_header(rd, b, 1, RC_ID_OPTIONAL, NULL, "/RUN or /RUN/1"))) return st;
     if ((st = rc_single(rd, b, &rd->run_hdr))) return st;
-    if ((st = rc_card_lines(rd, b, NULL, 1, 1, "Tend Dt_out", &nd))) return st;
+    if ((st = rc_card_lines(rd, b, NULL, 1, 1, "Tend Dt_out Ev_state", &nd))) return st;
     rc_field f[] = {RC_F_REAL("Tend", &r->tend, 0, RC_FF_POS),
-                    RC_F_REAL("Dt_out", &r->dtout, 0, RC_FF_NONNEG)};
+                    RC_F_REAL("Dt_out", &r->dtout, 0, RC_FF_NONNEG),
+                    RC_F_SET("Ev_state", &r->ev_state, 0, 0, RC_BIT(0) | RC_BIT(1) | RC_BIT(2), 0, NULL)};
     if ((st = rc_parse_line(rd, b, &b->lines[0], f, RC_NF(f)))) return st;
     /* output interval: blank or 0 means Tend/100 */
     if (r->dtout == 0) r->dtout = RC_DEF_DTOUT_FRACTION * r->tend;

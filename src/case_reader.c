@@ -827,6 +827,7 @@ rc_status rc_case_load(const char *path, rc_case **out, rc_error *err)
     if ((st = rc_read_blocks(&rd))) goto fail;
     if ((st = rc_check_dups(&rd))) goto fail;
     if ((st = rc_cards_finish(&rd))) goto fail;
+    if ((st = rc_case_index_build(rd.c, err))) goto fail;
 
     rc_reader_release(&rd);
     *out = rd.c;
@@ -867,5 +868,6 @@ void rc_case_free(rc_case *c)
     free(c->fricorient);
     for (int i = 0; i < c->nwarnings; i++) free(c->warnings[i]);
     free(c->warnings);
+    rc_case_index_free(c->index);
     free(c);
 }

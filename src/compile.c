@@ -393,6 +393,7 @@ rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
     m->checksum = c->checksum;
     m->tend = c->run.tend;
     m->dtout = c->run.dtout;
+    m->ev_state = c->run.ev_state;
     m->rtol = c->solver.rtol;
     m->atol_pos = c->solver.atol_pos;
     m->atol_quat = c->solver.atol_quat;
@@ -540,7 +541,7 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
         fprintf(f, "  /RBODY/%-6d mass %-11.5g x0 (%.5g, %.5g, %.5g) v0 (%.5g, %.5g, %.5g)%s\n", m->body_id[b],
                 m->body_mass[b], y0[0], y0[1], y0[2], y0[7], y0[8], y0[9], m->body_fixed[b] ? " fixed" : "");
     }
-    if (m->nbody > 20) fprintf(f, "  ... %d more\n", m->nbody - 20);
+    if (m->nbody > 20) fprintf(f, "  ... and %d more bodies (the first 20 in deck order are listed)\n", m->nbody - 20);
     fprintf(f, "surfaces    %d\n", m->nsurf);
     fprintf(f, "interfaces  %d\n", m->ninter);
     for (int i = 0; i < m->ninter && i < 20; i++) {
@@ -553,11 +554,18 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
                 m->inter_visc[i], m->inter_stiff[i], m->inter_inacti[i], m->inter_tstart[i], m->inter_tstop[i]);
     }
     for (int i = 0; i < m->ninter && i < 20; i++) rc_friction_print(m, i, f);
-    if (m->ninter > 20) fprintf(f, "  ... %d more\n", m->ninter - 20);
+    if (m->ninter > 20)
+        fprintf(f, "  ... and %d more interfaces (the first 20 in deck order are listed)\n", m->ninter - 20);
     rc_cpl_print_summary(m, f);
     rc_imp_print(m, f);
     fprintf(f, "states      %d, Jacobian nonzeros %lld\n", m->ny, (long long)m->nnz);
     fprintf(f, "run         end time %.6g s, output every %.6g s\n", m->tend, m->dtout);
+    if (m->ev_state == 0)
+        fprintf(f, "            full-state records at events: %s (Ev_state 0: while bodies <= %d)\n",
+                rc_event_records(m) ? "yes" : "no, events table only", RC_EVREC_MAX_BODIES);
+    else
+        fprintf(f, "            full-state records at events: %s (Ev_state %d)\n",
+                m->ev_state == 1 ? "yes" : "no, events table only", m->ev_state);
     fprintf(f, "solver      CVODE BDF (max order %d), Newton, KLU; rtol %.3g\n", m->max_order, m->rtol);
     /* the tolerances in force: given on /SOLVER, or derived from the scales */
     const int au = m->tol_auto;

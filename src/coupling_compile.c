@@ -18,13 +18,13 @@
 
 static const char *const kind_name[3] = {"", "SPRING", "CATENARY"};
 
-/* Body index of /RBODY id (0: fixed in space, -1). */
-static int body_index(const rc_model *m, int id)
+/* Body index of /RBODY id (0: fixed in space, -1; no such body: -2); the
+ * model's bodies are the case's, in the same order. */
+static int body_index(const rc_case *c, int id)
 {
     if (id == 0) return -1;
-    for (int b = 0; b < m->nbody; b++)
-        if (m->body_id[b] == id) return b;
-    return -2;
+    const int b = rc_case_find_rbody(c, id);
+    return b >= 0 ? b : -2;
 }
 
 /* Gravity of the lines: the /GRAV cards that apply to all bodies. */
@@ -85,7 +85,7 @@ static rc_status compile_one(const rc_case *c, rc_model *m, int k, rc_error *err
     int *bs[2] = {&p->b1[k], &p->b2[k]};
     double *ss[2] = {p->s1 + 3 * k, p->s2 + 3 * k};
     for (int e = 0; e < 2; e++) {
-        int b = body_index(m, cc->rbody[e]);
+        int b = body_index(c, cc->rbody[e]);
         if (b == -2)
             RC_RAISE(err, RC_EINPUT,
                      RC_LOCFMT "card %s, field rbody_ID%d: expected the id of a /RBODY or 0 (fixed point), got %d (no such body)",
@@ -213,7 +213,7 @@ void rc_cpl_print_summary(const rc_model *m, FILE *f)
                     p->lambda0[k], p->leq[k], p->ea[k], ok ? r.length : NAN, ok ? r.force : NAN,
                     ok ? r.lowest : NAN, ok ? "" : " (catenary equations not solved)");
     }
-    if (p->n > 20) fprintf(f, "  ... %d more\n", p->n - 20);
+    if (p->n > 20) fprintf(f, "  ... and %d more couplings (the first 20 in deck order are listed)\n", p->n - 20);
     free(y);
 }
 

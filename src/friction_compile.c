@@ -25,13 +25,6 @@
 
 #define RC_PI 3.14159265358979323846
 
-static int find_body(const rc_model *m, int id)
-{
-    for (int b = 0; b < m->nbody; b++)
-        if (m->body_id[b] == id) return b;
-    return -1;
-}
-
 /* Does group side (grpart, part) name part index p? */
 static int side_names(const rc_case *c, int grpart, int part, int p)
 {
@@ -60,38 +53,84 @@ static int card_names(const rc_case *c, const rc_case_friction *f, int p)
     return 0;
 }
 
-/* Part of every surface (index into c->part, -1: none). */
+static int cmp_int(const void *a, const void *b)
+{
+    const int x = *(const int *)a, y = *(const int *)b;
+    return (x > y) - (x < y);
+}
+
+/* Part of every surface (index into c->part, -1: none). Each part's
+ * surfaces are visited in index order, as a scan of all surfaces would, so
+ * the first error reported is the same; look-ups by id are binary searches
+ * (case_lookup.c), and the surfaces of a body come from a table built once,
+ * so that many parts cost O(N log N), not O(parts x surfaces). */
 static rc_status surface_parts(const rc_case *c, const rc_model *m, int *spart, rc_error *err)
 {
-    for (int s = 0; s < m->nsurf; s++) spart[s] = -1;
-    for (int p = 0; p < c->npart; p++) {
-        const rc_case_part *cp = &c->part[p];
-        int b = -1;
-        if (cp->rbody_id && (b = find_body(m, cp->rbody_id)) < 0)
-            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /PART/%d, field rbody_ID: expected the id of a /RBODY, got %d (no such body)",
-                     RC_LOC(cp->loc), cp->id, cp->rbody_id);
-        for (int s = 0; s < m->nsurf; s++) {
-            int in = 0;
-            if (cp->nsurf == 0) in = m->surf_body[s] == b;
-            for (int k = 0; k < cp->nsurf; k++) in |= m->surf_id[s] == cp->surf[k];
-            if (!in) continue;
-            if (cp->nsurf > 0 && m->surf_body[s] != b)
-                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /PART/%d, field surf_ID: surface %d is not carried by rbody_ID %d",
-                         RC_LOC(cp->loc), cp->id, m->surf_id[s], cp->rbody_id);
-            if (spart[s] >= 0)
-                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /PART/%d: surface %d already belongs to /PART/%d (a surface is in one part only)",
-                         RC_LOC(cp->loc), cp->id, m->surf_id[s], c->part[spart[s]].id);
-            spart[s] = p;
-        }
-        for (int k = 0; k < cp->nsurf; k++) {
-            int found = 0;
-            for (int s = 0; s < m->nsurf; s++) found |= m->surf_id[s] == cp->surf[k];
-            if (!found)
-                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /PART/%d, field surf_ID: expected the id of a /SURF, got %d (no such surface)",
-                         RC_LOC(cp->loc), cp->id, cp->surf[k]);
-        }
+    rc_status st = RC_OK;
+    int maxlist = m->nsurf;
+    for (int p = 0; p < c->npart; p++)
+        if (c->part[p].nsurf > maxlist) maxlist = c->part[p].nsurf;
+    /* surfaces of each body, ascending; bucket nbody: fixed in space */
+    int *start = calloc((size_t)m->nbody + 2, sizeof(int)), *bysurf = malloc(((size_t)m->nsurf + 1) * sizeof(int));
+    int *mine = malloc(((size_t)maxlist + 1) * sizeof(int));
+    if (!start || !bysurf || !mine) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory");
+        goto done;
     }
-    return RC_OK;
+    for (int s = 0; s < m->nsurf; s++) {
+        spart[s] = -1;
+        start[(m->surf_body[s] >= 0 ? m->surf_body[s] : m->nbody) + 1]++;
+    }
+    for (int k = 0; k <= m->nbody; k++) start[k + 1] += start[k];
+    for (int s = 0; s < m->nsurf; s++) { /* start[k] advances while filling */
+        const int k = m->surf_body[s] >= 0 ? m->surf_body[s] : m->nbody;
+        bysurf[start[k]++] = s;
+    }
+    for (int k = m->nbody; k > 0; k--) start[k] = start[k - 1]; /* back to the bucket starts */
+    start[0] = 0;
+    for (int p = 0; p < c->npart && !st; p++) {
+        const rc_case_part *cp = &c->part[p];
+        int b = -1, n = 0;
+        if (cp->rbody_id && (b = rc_case_find_rbody(c, cp->rbody_id)) < 0) {
+            st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /PART/%d, field rbody_ID: expected the id of a /RBODY, got %d (no such body)",
+                        RC_LOC(cp->loc), cp->id, cp->rbody_id);
+            break;
+        }
+        if (cp->nsurf == 0) {
+            const int k = b >= 0 ? b : m->nbody;
+            for (int j = start[k]; j < start[k + 1]; j++) mine[n++] = bysurf[j];
+        } else {
+            for (int k = 0; k < cp->nsurf; k++) {
+                const int s = rc_case_find_surf(c, cp->surf[k]);
+                if (s >= 0) mine[n++] = s;
+            }
+            qsort(mine, (size_t)n, sizeof *mine, cmp_int);
+            int u = 0;
+            for (int j = 0; j < n; j++)
+                if (u == 0 || mine[j] != mine[u - 1]) mine[u++] = mine[j];
+            n = u;
+        }
+        for (int j = 0; j < n && !st; j++) {
+            const int s = mine[j];
+            if (cp->nsurf > 0 && m->surf_body[s] != b)
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /PART/%d, field surf_ID: surface %d is not carried by rbody_ID %d",
+                            RC_LOC(cp->loc), cp->id, m->surf_id[s], cp->rbody_id);
+            else if (spart[s] >= 0)
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /PART/%d: surface %d already belongs to /PART/%d (a surface is in one part only)",
+                            RC_LOC(cp->loc), cp->id, m->surf_id[s], c->part[spart[s]].id);
+            else
+                spart[s] = p;
+        }
+        for (int k = 0; k < cp->nsurf && !st; k++)
+            if (rc_case_find_surf(c, cp->surf[k]) < 0)
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /PART/%d, field surf_ID: expected the id of a /SURF, got %d (no such surface)",
+                            RC_LOC(cp->loc), cp->id, cp->surf[k]);
+    }
+done:
+    free(start);
+    free(bysurf);
+    free(mine);
+    return st;
 }
 
 /* Every part and group id named by the friction cards exists. */

@@ -239,4 +239,7 @@ void rc_imp_print(const rc_model *m, FILE *f)
         }
         fprintf(f, " until %.5g s\n", p->rtstop[j]);
     }
+    if (p->nt > 20 || p->nr > 20)
+        fprintf(f, "  ... and %d more (the first 20 of each kind are listed)\n",
+                (p->nt > 20 ? p->nt - 20 : 0) + (p->nr > 20 ? p->nr - 20 : 0));
 }

@@ -168,6 +168,19 @@ static int set_root_directions(const rc_model *m, const rc_data *d, void *cv, in
     return CVodeSetRootDirection(cv, dir);
 }
 
+/* Append event `ev` at (t, y) to the events table with its interface's
+ * penetration P [m], approach speed dP/dt [m/s] and normal force [N], in the
+ * mode after the event. */
+static rc_status write_event(const rc_model *m, const rc_data *d, rc_output *o, double t, const double *y,
+                             const rc_event *ev, rc_error *err)
+{
+    const int i = ev->inter;
+    rc_inter_report r;
+    rc_inter_report_eval(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y, &r);
+    const double v[3] = {r.p, r.vn, d->inter_mode[i] == RC_MODE_CLOSED && r.fn > 0 ? r.fn : 0.0};
+    return rc_output_event_values(o, t, ev->kind, m->inter_name[i], v, err);
+}
+
 /* Contacts at zero penetration or zero force, decided by the state after
  * the start and after every event (events.c, rc_modes_touch): the rate of
  * the state in the current modes is computed first, for the force rates.
@@ -189,7 +202,7 @@ static int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, 
         total += nev;
         *nevents += nev;
         for (int k = 0; k < nev && k < RC_MAX_EV && out; k++)
-            if ((*st = rc_output_event(out, t, ev[k].kind, m->inter_name[ev[k].inter], err))) return total;
+            if ((*st = write_event(m, d, out, t, y, &ev[k], err))) return total;
         if (nev == 0) break;
     }
     return total;
@@ -340,7 +353,17 @@ static rc_status open_output(const rc_model *m, const char *path, rc_output **o,
                            "CVODE BDF, Newton, KLU sparse direct, rootfinding", m->rtol, m->atol_pos,
                            m->atol_quat, m->atol_vel, m->atol_omega, m->atol_energy, m->nbody, m->body_id,
                            m->body_fixed, m->ninter, m->inter_id, types, RC_NENERGY, energy_name, energy_long,
-                           m->cpl->n, m->cpl->id, m->cpl->type};
+                           m->cpl->n, m->cpl->id, m->cpl->type, NULL};
+    char evrec[160];
+    const int full = rc_event_records(m);
+    if (m->ev_state == 0)
+        snprintf(evrec, sizeof evrec, "%s (/RUN Ev_state 0: %d bodies, %s %d)",
+                 full ? "full-state record at every event" : "events table only", m->nbody,
+                 full ? "at most" : "more than", RC_EVREC_MAX_BODIES);
+    else
+        snprintf(evrec, sizeof evrec, "%s (/RUN Ev_state %d)",
+                 full ? "full-state record at every event" : "events table only", m->ev_state);
+    meta.event_records = evrec;
     rc_status st = rc_output_open(o, path, &meta, err);
     free(types);
     return st;
@@ -428,6 +451,7 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     rc_data *d = rc_data_new(m);
     const double tend = opt && opt->t_end_override > 0 ? opt->t_end_override : m->tend;
     const int show = opt && opt->progress && isatty(2);
+    const int evrec = rc_event_records(m); /* full-state records at events */
     double wall0 = wall_now(), last_progress = wall0;
 
     if (!d || !frame_alloc(m, &fb)) {
@@ -557,8 +581,11 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
             while (ibp < nbp && bp[ibp] <= t) ibp++;
             /* the next breakpoint, or none (a stop time past the end) */
             CVCHECK(CVodeSetStopTime(cv, ibp < nbp ? bp[ibp] : 2 * tend + 1), "CVodeSetStopTime");
-            if ((st = write_frame(m, d, out, &fb, t, yd, 1, err))) goto done;
-            if (tout - t <= 1e-12 * fmax(fabs(t), m->dtout)) {
+            /* a full-state record at the event (rc_event_records), or the
+             * output record when the event falls on an output time */
+            const int on_out = tout - t <= 1e-12 * fmax(fabs(t), m->dtout);
+            if ((evrec || on_out) && (st = write_frame(m, d, out, &fb, t, yd, evrec, err))) goto done;
+            if (on_out) {
                 nout++;
                 tout = fmin(nout * m->dtout, tend);
             }
@@ -576,7 +603,7 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
             int nev = rc_events_apply(m, d, t, yd, roots, ev, RC_MAX_EV, &jumped);
             s.events += nev;
             for (int k = 0; k < nev && k < RC_MAX_EV && out; k++)
-                if ((st = rc_output_event(out, t, ev[k].kind, m->inter_name[ev[k].inter], err))) goto done;
+                if ((st = write_event(m, d, out, t, yd, &ev[k], err))) goto done;
             /* event accumulation: report it rather than stall */
             for (int k = 0; k < nev && k < RC_MAX_EV; k++) {
                 const int i = ev[k].inter;
@@ -605,9 +632,12 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
             } else if (nev > 0) {
                 fresh = 1;
             }
-            if (nev > 0 && (st = write_frame(m, d, out, &fb, t, yd, 1, err))) goto done;
-            /* an event on an output time stands for that output */
-            if (tout - t <= 1e-12 * fmax(fabs(t), m->dtout)) {
+            /* an event on an output time stands for that output: a
+             * full-state record at the event (rc_event_records), or else the
+             * output record */
+            const int on_out = tout - t <= 1e-12 * fmax(fabs(t), m->dtout);
+            if (nev > 0 && (evrec || on_out) && (st = write_frame(m, d, out, &fb, t, yd, evrec, err))) goto done;
+            if (on_out) {
                 nout++;
                 tout = fmin(nout * m->dtout, tend);
             }

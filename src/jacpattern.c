@@ -15,9 +15,11 @@
 #include <string.h>
 
 #include "coupling.h"
+#include "friction.h"
 #include "error.h"
 #include "imposed.h"
 #include "model.h"
+#include "power.h"
 
 static int cmp_i64(const void *a, const void *b)
 {
@@ -81,10 +83,126 @@ static void probe_state(const rc_model *m, uint64_t seed, double *y)
         for (int k = 0; k < m->inter_ns[i]; k++) y[m->inter_eadr[i] + k] = probe_rand(&seed);
 }
 
+
+/* ---- Probing once per kind of interface --------------------------------
+ * The kept entries of an interface block are structural: with the probe
+ * states generic, they depend on what the interface kernel reads apart from
+ * the states of its free bodies and its own states. An interface whose data
+ * are bit for bit those of one already probed (its own parameters, friction
+ * and power-law records, and for each side the surface, the body's mass and
+ * inertia, whether it is free, and the pose of a fixed one) gets that
+ * interface's pattern without being probed: a column of 10^5 identical
+ * contacts is probed once. Any difference, even of a byte (-0.0, a table
+ * index, a pointer), means a probe of its own. */
+#define RC_KEY_MAX 2048
+
+typedef struct key_buf {
+    unsigned char b[RC_KEY_MAX];
+    size_t n;
+} key_buf;
+
+static void key_put(key_buf *k, const void *p, size_t n)
+{
+    if (k->n + n > RC_KEY_MAX) { /* cannot happen with the fields below; no sharing then */
+        k->n = RC_KEY_MAX + 1;
+        return;
+    }
+    memcpy(k->b + k->n, p, n);
+    k->n += n;
+}
+
+/* The data interface i's kernel reads, apart from states; 0 when too long. */
+static int inter_key(const rc_model *m, int i, key_buf *k)
+{
+    k->n = 0;
+    const int ints[] = {m->inter_law[i], m->inter_iform[i], m->inter_hidx[i], m->inter_oidx[i], m->inter_ns[i],
+                        m->inter_fct_ld[i], m->inter_fct_ul[i], m->inter_fct_dv[i], m->inter_fct_df[i],
+                        (int)m->inter_pair[i], m->jb_inter[i].nrow, m->jb_inter[i].ncol};
+    const double dbl[] = {m->inter_gap[i], m->inter_visc[i], m->inter_stiff[i], m->inter_fscalev[i],
+                          m->inter_ascalex[i], m->inter_fscaleld[i], m->inter_ascalef[i], m->inter_ascalev[i],
+                          m->inter_fscaleul[i]};
+    key_put(k, ints, sizeof ints);
+    key_put(k, dbl, sizeof dbl);
+    key_put(k, &m->inter_fr[i], sizeof m->inter_fr[i]);
+    key_put(k, &m->inter_pw[i], sizeof m->inter_pw[i]);
+    const int surf[2] = {m->inter_sa[i], m->inter_sb[i]}, body[2] = {m->inter_ba[i], m->inter_bb[i]};
+    for (int e = 0; e < 2; e++) {
+        const int sf = surf[e], b = body[e];
+        const int sk = (int)m->surf_kind[sf], free_b = b >= 0 && m->body_yadr[b] >= 0;
+        key_put(k, &sk, sizeof sk);
+        key_put(k, m->surf_p + 3 * sf, 3 * sizeof(double));
+        key_put(k, m->surf_n + 3 * sf, 3 * sizeof(double));
+        key_put(k, m->surf_r + sf, sizeof(double));
+        key_put(k, m->surf_ext + RC_SURF_NEXT * sf, RC_SURF_NEXT * sizeof(double));
+        key_put(k, &free_b, sizeof free_b);
+        if (b >= 0) {
+            key_put(k, m->body_mass + b, sizeof(double));
+            key_put(k, m->body_J + 9 * b, 9 * sizeof(double));
+            key_put(k, m->body_Jinv + 9 * b, 9 * sizeof(double));
+        }
+        if (!free_b) key_put(k, rc_body_state(m, b, NULL), RC_NB * sizeof(double)); /* fixed pose */
+    }
+    return k->n <= RC_KEY_MAX;
+}
+
+static uint64_t key_hash(const key_buf *k)
+{
+    uint64_t h = 1469598103934665603ULL; /* FNV-1a 64 */
+    for (size_t j = 0; j < k->n; j++) h = (h ^ k->b[j]) * 1099511628211ULL;
+    return h;
+}
+
+/* Probed interfaces by key: open addressing on the hash, the key bytes kept
+ * for the exact comparison. */
+typedef struct key_table {
+    size_t cap, n;
+    uint64_t *hash;
+    int *inter;             /* representative interface, -1: empty */
+    unsigned char **bytes;  /* its key */
+    size_t *len;
+} key_table;
+
+static int key_table_init(key_table *t, int ninter)
+{
+    memset(t, 0, sizeof *t);
+    t->cap = 64;
+    while (t->cap < 2 * (size_t)ninter) t->cap *= 2;
+    t->hash = calloc(t->cap, sizeof *t->hash);
+    t->inter = malloc(t->cap * sizeof *t->inter);
+    t->bytes = calloc(t->cap, sizeof *t->bytes);
+    t->len = calloc(t->cap, sizeof *t->len);
+    if (!t->hash || !t->inter || !t->bytes || !t->len) return 0;
+    for (size_t j = 0; j < t->cap; j++) t->inter[j] = -1;
+    return 1;
+}
+
+static void key_table_free(key_table *t)
+{
+    if (t->bytes)
+        for (size_t j = 0; j < t->cap; j++) free(t->bytes[j]);
+    free(t->hash);
+    free(t->inter);
+    free(t->bytes);
+    free(t->len);
+}
+
+/* The slot of key k: its representative's, or the empty one to fill. */
+static size_t key_find(const key_table *t, const key_buf *k, uint64_t h)
+{
+    size_t j = (size_t)h & (t->cap - 1);
+    while (t->inter[j] >= 0 &&
+           !(t->hash[j] == h && t->len[j] == k->n && memcmp(t->bytes[j], k->b, k->n) == 0))
+        j = (j + 1) & (t->cap - 1);
+    return j;
+}
+
 /* Mark the kept entries of each block in its slot array: 0 kept, -1 pruned. */
 static rc_status probe_blocks(rc_model *m, rc_error *err)
 {
     double *y[2], dense[RC_JB_MAX];
+    key_table kt;
+    key_buf *key = NULL;
+    memset(&kt, 0, sizeof kt);
     y[0] = malloc((size_t)m->ny * sizeof(double));
     y[1] = malloc((size_t)m->ny * sizeof(double));
     rc_status st = RC_OK;
@@ -94,6 +212,10 @@ static rc_status probe_blocks(rc_model *m, rc_error *err)
     }
     probe_state(m, 0x5eed1ULL, y[0]);
     probe_state(m, 0x5eed2ULL, y[1]);
+    if (!key_table_init(&kt, m->ninter) || !(key = malloc(sizeof *key))) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
+        goto done;
+    }
     for (int e = 0; e < m->nbody + m->ninter && !st; e++) {
         const int is_inter = e >= m->nbody, idx = is_inter ? e - m->nbody : e;
         rc_jblock *jb = is_inter ? &m->jb_inter[idx] : &m->jb_body[idx];
@@ -104,20 +226,49 @@ static rc_status probe_blocks(rc_model *m, rc_error *err)
             st = RC_SET(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
             break;
         }
+        /* an interface like one already probed: its pattern */
+        size_t ks = 0;
+        uint64_t kh = 0;
+        const int keyed = is_inter && inter_key(m, idx, key);
+        if (keyed) {
+            kh = key_hash(key);
+            ks = key_find(&kt, key, kh);
+            if (kt.inter[ks] >= 0) {
+                memcpy(jb->slot, m->jb_inter[kt.inter[ks]].slot, (size_t)n * sizeof(int64_t));
+                continue;
+            }
+        }
         for (int k = 0; k < n; k++) jb->slot[k] = -1;
-        /* every mode in which the element writes: contact closed (forces)
-         * and released, each hysteresis branch, Inacti tracking on/off,
-         * stick and slip */
+        /* every mode in which the element writes and that it can reach
+         * (events.c): contact closed (forces) and released; each hysteresis
+         * branch, unless the branch stays LOAD (TYPE6, Iform 0, no F_h
+         * state); Inacti tracking on/off when it has the offset state; stick
+         * and slip when it has friction. A plain contact needs 4 of the 48
+         * combinations (the probing is most of the set-up of a large model) */
+        const int nbr = is_inter && !(m->inter_law[idx] == RC_LAW_TYPE6 && m->inter_iform[idx] == 0 &&
+                                      m->inter_hidx[idx] < 0) ? 3 : 1;
+        const int ntrk = is_inter && m->inter_oidx[idx] >= 0 ? 2 : 1;
+        const int nsl = is_inter && m->inter_fr[idx].kind != RC_FK_NONE ? 2 : 1;
         for (int p = 0; p < 2; p++)
             for (int md = 0; md < (is_inter ? 2 : 1); md++)
-                for (int br = 0; br < (is_inter ? 3 : 1); br++)
-                    for (int trk = 0; trk < (is_inter ? 2 : 1); trk++)
-                        for (int sl = 0; sl < (is_inter ? 2 : 1); sl++) {
+                for (int br = 0; br < nbr; br++)
+                    for (int trk = 0; trk < ntrk; trk++)
+                        for (int sl = 0; sl < nsl; sl++) {
                             const int mode = md ? RC_MODE_RELEASED : RC_MODE_CLOSED;
                             rc_jac_dense_block(m, is_inter, idx, mode, br, trk, sl, 0.0, y[p], dense);
                             for (int k = 0; k < n; k++)
                                 if (dense[k] != 0.0) jb->slot[k] = 0; /* NaN counts as kept */
                         }
+        if (keyed) { /* the first of its kind */
+            if (!(kt.bytes[ks] = malloc(key->n ? key->n : 1))) {
+                st = RC_SET(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
+                break;
+            }
+            memcpy(kt.bytes[ks], key->b, key->n);
+            kt.len[ks] = key->n;
+            kt.hash[ks] = kh;
+            kt.inter[ks] = idx;
+        }
     }
     /* couplings (coupling.h): no modes */
     for (int k = 0; k < m->cpl->n && !st; k++) {
@@ -138,6 +289,8 @@ static rc_status probe_blocks(rc_model *m, rc_error *err)
         }
     }
 done:
+    key_table_free(&kt);
+    free(key);
     free(y[0]);
     free(y[1]);
     return st;

@@ -194,6 +194,7 @@ struct rc_model {
 
     /* run and solver settings */
     double tend, dtout;  /* [s] */
+    int ev_state;        /* /RUN Ev_state: 0 auto, 1 always, 2 never (rc_event_records) */
     double rtol;
     double atol_pos, atol_quat, atol_vel, atol_omega, atol_energy;
     int max_order;
@@ -258,6 +259,14 @@ typedef struct rc_inter_report {
 } rc_inter_report;
 
 /* ---- data ---------------------------------------------------------- */
+/* Full-state records at events (docs/case-format.md, /RUN Ev_state): with
+ * Ev_state 0, while the model has at most RC_EVREC_MAX_BODIES bodies. */
+#define RC_EVREC_MAX_BODIES 100
+static inline int rc_event_records(const rc_model *m)
+{
+    return m->ev_state == 1 || (m->ev_state == 0 && m->nbody <= RC_EVREC_MAX_BODIES);
+}
+
 rc_data *rc_data_new(const rc_model *m);
 void rc_data_free(rc_data *d);
 

@@ -31,6 +31,7 @@ typedef struct rc_output_meta {
     int ncoupling;
     const int *coupling_id;   /* [ncoupling] /COUPLING ids                 */
     const char *const *coupling_type; /* [ncoupling] "SPRING" or "CATENARY" */
+    const char *event_records; /* global attribute event_records (NULL: none) */
 } rc_output_meta;
 
 /* Interface modes as stored in the file (variable inter_mode). */
@@ -67,12 +68,18 @@ typedef struct rc_frame {
 /* Create the file (overwrites). RC_EIO with the path and netCDF message. */
 rc_status rc_output_open(rc_output **out, const char *path, const rc_output_meta *meta,
                          rc_error *err);
-/* Append one record to the time series. */
+/* Append one record to the time series. Records and event rows are
+ * buffered and written in blocks; rc_output_close writes what is left. */
 rc_status rc_output_frame(rc_output *o, const rc_frame *f, rc_error *err);
 /* Append one row to the events table: time [s], kind (e.g. "contact_close",
  * "contact_open", "inter_start", "inter_stop"), element (e.g. "/INTER/TYPE6/3"). */
 rc_status rc_output_event(rc_output *o, double t, const char *kind, const char *element,
                           rc_error *err);
+/* The same with the event's own values: values[0] penetration P of the
+ * interface [m], values[1] its approach speed dP/dt [m/s], values[2] its
+ * total normal force just after the event [N]; NULL: not an interface (NaN). */
+rc_status rc_output_event_values(rc_output *o, double t, const char *kind, const char *element,
+                                 const double values[3], rc_error *err);
 /* Write statistics and completion attributes, close, free. `complete` 0
  * marks the file incomplete with `reason`. o == NULL is a no-op. */
 rc_status rc_output_close(rc_output *o, const rc_stats *st, int complete, const char *reason,

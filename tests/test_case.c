@@ -730,10 +730,10 @@ static void test_case_error_text_after_layout(void)
 {
     EXPECT_INPUT_ERROR("beyond.rad",
                        "/RUN\n"
-                       "                 1.0                0.01   x\n",
-                       2, "card /RUN", "unexpected text after column 40", "\"x\"");
-    EXPECT_INPUT_ERROR("commas.rad", "/RUN\n1.0,0.01,5\n", 2, "card /RUN",
-                       "at most 2 comma-separated fields");
+                       "                 1.0                0.01         0   x\n",
+                       2, "card /RUN", "unexpected text after column 50", "\"x\"");
+    EXPECT_INPUT_ERROR("commas.rad", "/RUN\n1.0,0.01,0,5\n", 2, "card /RUN",
+                       "at most 3 comma-separated fields");
 }
 
 static void test_case_error_tab(void)

@@ -4,6 +4,7 @@
 #include "../src/error.h"
 #include "../src/output.h"
 
+#include <math.h>
 #include <netcdf.h>
 #include <stdlib.h>
 #include <unistd.h>
@@ -314,6 +315,71 @@ static void test_output_roundtrip(void)
     ENSURE(remove(path) == 0);
 }
 
+/* Records are buffered and written in blocks: a run longer than a block
+ * (and than the event buffer) keeps every record and row, in order, and the
+ * event rows carry their interface values (NaN when none is given). */
+static void test_output_blocks_and_event_values(void)
+{
+    enum { NREC = 20000, NEV = 600 };
+    char path[256];
+    tmp_path(path, sizeof path, "blocks");
+    rc_output_meta meta = make_meta(NI);
+    rc_output *o = NULL;
+    rc_error e;
+    ENSURE(rc_output_open(&o, path, &meta, &e) == RC_OK);
+    if (!o) return;
+    ENSURE(write_frames(o, NREC, 1) == 0);
+    for (int k = 0; k < NEV; k++) {
+        const double v[3] = {1e-3 * k, -0.5 * k, 10.0 * k};
+        ENSURE(rc_output_event_values(o, 0.001 * k, "contact_close", "/INTER/TYPE6/3", k % 7 ? v : NULL, &e) ==
+               RC_OK);
+    }
+    ENSURE(rc_output_close(o, NULL, 0, "stopped", &e) == RC_OK);
+
+    int ncid;
+    ENSURE(nc_open(path, NC_NOWRITE, &ncid) == NC_NOERR);
+    ENSURE(dim_len(ncid, "time") == NREC);
+    ENSURE(dim_len(ncid, "event") == NEV);
+    double *t = malloc(NREC * sizeof *t), *pos = malloc((size_t)NREC * NB * 3 * sizeof *pos);
+    int *mode = malloc(NREC * sizeof *mode);
+    if (t && pos && mode) {
+        ENSURE(nc_get_var_double(ncid, var_id(ncid, "time"), t) == NC_NOERR);
+        ENSURE(nc_get_var_double(ncid, var_id(ncid, "body_position"), pos) == NC_NOERR);
+        ENSURE(nc_get_var_int(ncid, var_id(ncid, "inter_mode"), mode) == NC_NOERR);
+        int bad = 0;
+        for (int k = 0; k < NREC; k++) {
+            bad += t[k] != val(k, F_TIME, 0) || mode[k] != k % 3;
+            for (int i = 0; i < NB * 3; i++) bad += pos[(size_t)k * NB * 3 + i] != val(k, F_POS, i);
+        }
+        ENSURE(bad == 0);
+    }
+    free(t);
+    free(pos);
+    free(mode);
+    double et[NEV], ep[NEV], evn[NEV], efn[NEV];
+    ENSURE(nc_get_var_double(ncid, var_id(ncid, "event_time"), et) == NC_NOERR);
+    ENSURE(nc_get_var_double(ncid, var_id(ncid, "event_penetration"), ep) == NC_NOERR);
+    ENSURE(nc_get_var_double(ncid, var_id(ncid, "event_normal_speed"), evn) == NC_NOERR);
+    ENSURE(nc_get_var_double(ncid, var_id(ncid, "event_force_normal"), efn) == NC_NOERR);
+    int bad = 0;
+    for (int k = 0; k < NEV; k++) {
+        bad += et[k] != 0.001 * k;
+        if (k % 7)
+            bad += ep[k] != 1e-3 * k || evn[k] != -0.5 * k || efn[k] != 10.0 * k;
+        else
+            bad += !isnan(ep[k]) || !isnan(evn[k]) || !isnan(efn[k]);
+    }
+    ENSURE(bad == 0);
+    ENSURE(string_is(ncid, "event_element", NEV - 1, "/INTER/TYPE6/3"));
+    char buf[64];
+    ENSURE(att_text(ncid, var_id(ncid, "event_normal_speed"), "units", buf, sizeof buf) && !strcmp(buf, "m s-1"));
+    ENSURE(att_text(ncid, var_id(ncid, "event_force_normal"), "units", buf, sizeof buf) && !strcmp(buf, "N"));
+    ENSURE(att_text(ncid, var_id(ncid, "event_penetration"), "units", buf, sizeof buf) && !strcmp(buf, "m"));
+    ENSURE(att_text(ncid, NC_GLOBAL, "complete", buf, sizeof buf) && !strcmp(buf, "no"));
+    ENSURE(nc_close(ncid) == NC_NOERR);
+    ENSURE(remove(path) == 0);
+}
+
 /* A failed run: the frames written so far are kept, the file says why. */
 static void test_output_incomplete_keeps_frames(void)
 {
@@ -435,6 +501,7 @@ void suite_output(void)
 {
     RUN_TEST(test_output_roundtrip);
     RUN_TEST(test_output_incomplete_keeps_frames);
+    RUN_TEST(test_output_blocks_and_event_values);
     RUN_TEST(test_output_no_interfaces);
     RUN_TEST(test_output_units_follow_case);
     RUN_TEST(test_output_open_bad_directory);

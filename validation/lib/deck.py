@@ -184,8 +184,11 @@ class Deck:
         self.add(f"/IMPVEL/{iid}", f"{fct:>10d}{direction:>10s}{0:>10d}{0:>10d}{grnod:>10d}{0:>10d}{0:>10d}",
                  line(("r", ascale), ("r", fscale), ("r", tstart), ("r", tstop)), title=title)
 
-    def run(self, tend, dtout):
-        self.add("/RUN", line(("r", tend), ("r", dtout)))
+    def run(self, tend, dtout, ev_state=None):
+        """ev_state: /RUN Ev_state (full-state records at events: 0 auto,
+        1 always, 2 never); None leaves the field out (default 0)."""
+        fields = [("r", tend), ("r", dtout)] + ([("i", ev_state)] if ev_state is not None else [])
+        self.add("/RUN", line(*fields))
 
     def solver(self, rtol=1e-6, atol_pos=1e-9, atol_quat=1e-9, atol_vel=1e-6, atol_omega=1e-6,
                atol_energy=1e-6, max_order=5, max_steps=100000, hmax=0.0, h0=0.0):

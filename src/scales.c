@@ -277,7 +277,7 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         const double mmin = fmin(ma, mb);
         m->inter_mred[i] = mred;
         m->inter_pscale[i] = m->inter_fscale[i] = m->inter_kscale[i] = m->inter_vscale[i] = NAN;
-        if (!isfinite(mred)) continue; /* nothing moves along the normal */
+        if (!isfinite(mred) && !(r.p_raw > 0)) continue; /* nothing moves along the normal */
         /* speed scale: initial and imposed speeds, fall over the gap */
         double v = vmodel; /* momentum travels through chains of contacts */
         if (r.p_raw < 0) v = fmax(v, sqrt(2.0 * gmax * -r.p_raw));
@@ -288,6 +288,9 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         /* within RC_PSCALE_SPAN of the larger: a tiny initial penetration or
          * speed must not set absurd tolerances */
         if (isfinite(pE) && isfinite(pF)) p = fmax(p, RC_PSCALE_SPAN * pF);
+        /* nothing moves along the normal or loads it, but the contact starts
+         * penetrating (bodies held there): its initial penetration */
+        if (!isfinite(p) && r.p_raw > 0) p = r.p_raw;
         if (!isfinite(p)) continue;
         double k = law_slope(m, i, p), f = law_force(m, i, p);
         if (!(k > 0)) k = f / p; /* a curve flat at p_s: its secant */
@@ -295,7 +298,18 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         m->inter_pscale[i] = p;
         m->inter_fscale[i] = f;
         m->inter_kscale[i] = k;
-        m->inter_vscale[i] = p * sqrt(k / mred);
+        double mv = mred;
+        if (!isfinite(mv)) { /* held along the normal: the plain reduced mass */
+            double inv = 0.0;
+            if (ba >= 0 && m->body_yadr[ba] >= 0) inv += 1.0 / m->body_mass[ba];
+            if (bb >= 0 && m->body_yadr[bb] >= 0) inv += 1.0 / m->body_mass[bb];
+            mv = inv > 0 ? 1.0 / inv : INFINITY;
+        }
+        if (!isfinite(mv)) {
+            m->inter_pscale[i] = m->inter_fscale[i] = m->inter_kscale[i] = NAN;
+            continue;
+        }
+        m->inter_vscale[i] = p * sqrt(k / mv);
         escale = fmax(escale, law_energy(m, i, p));
     }
     /* energy scale: the contacts' energies at their scales; without any,
@@ -341,6 +355,21 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
     return RC_OK;
 }
 
+/* The largest velocity sensitivity of interface i's forces at its scales
+ * [N s/m]: normal damping Visc, the viscous friction form's C = sqrt(2 VISF
+ * k_s m_red), the stick damper; a velocity error dv moves a force by c dv,
+ * so the velocity tolerance is at most rtol F_s / c. */
+static double inter_damping(const rc_model *m, int i)
+{
+    double c = m->inter_law[i] == RC_LAW_TYPE6 ? m->inter_visc[i] : 0.0;
+    const rc_fric *fr = &m->inter_fr[i];
+    if (fr->kind == RC_FK_CARD && fr->form == RC_FF_VISCOUS)
+        for (int k = 0; k < 1 + fr->ortho; k++)
+            c = fmax(c, sqrt(2.0 * fr->set[k][RC_FS_VISF] * m->inter_kscale[i] * fr->mred));
+    c = fmax(c, fr->ct);
+    return c > 0 ? c : 1e-300;
+}
+
 rc_status rc_model_tolerances(rc_model *m, rc_error *err)
 {
     const int ny = m->ny;
@@ -360,7 +389,7 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         for (int i = 0; i < m->ninter; i++) {
             if ((m->inter_ba[i] != b && m->inter_bb[i] != b) || !isfinite(m->inter_pscale[i])) continue;
             ps = fmin(ps, m->inter_pscale[i]);
-            vs = fmin(vs, m->inter_vscale[i]);
+            vs = fmin(vs, fmin(m->inter_vscale[i], m->inter_fscale[i] / inter_damping(m, i)));
         }
         const int scaled = isfinite(ps);
         const double L = body_size(m, b) > 0 ? body_size(m, b) : 1.0;
@@ -387,8 +416,10 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         }
         for (int k = 7; k < 10; k++) {
             a[k] = (au & RC_TOL_AUTO_VEL) ? (scaled ? rt * vs : rt * RC_TOL_FALLBACK_LFRAC * vb) : m->atol_vel;
-            /* without a contact scale, velocities absolutely as well */
-            if ((au & RC_TOL_AUTO_VEL) && !scaled) rel[k] = 0;
+            /* velocities absolutely as well: what sets the forces is the
+             * relative velocity at the contacts (a block sticking on a belt
+             * at 0.05 m/s creeps at um/s), not |v| */
+            if (au & RC_TOL_AUTO_VEL) rel[k] = 0;
         }
         for (int k = 10; k < 13; k++)
             a[k] = (au & RC_TOL_AUTO_OMEGA) ? (scaled ? rt * vs / L : rt * RC_TOL_FALLBACK_LFRAC * vb / L) : m->atol_omega;

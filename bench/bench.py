@@ -262,6 +262,34 @@ def equal_accuracy(ricochet_runs, explicit_runs):
     return out
 
 
+def equal_reverse(label, explicit_runs, implicit):
+    """The other direction: for each explicit run, the cheapest run of each
+    implicit program (implicit: {name: runs}) whose error is <= the explicit
+    error, and the wall-time ratio explicit / implicit (> 1: implicit faster).
+    Used by the quasi-static cases, where the explicit scheme is already very
+    accurate at its stable step, so that most implicit runs are matched by
+    it and the question is what an implicit run as accurate costs."""
+    rows, out = [], []
+    for x in sorted(explicit_runs, key=lambda x: -x["dt"]):
+        if math.isnan(x.get("error", float("nan"))):
+            continue
+        for name, runs in implicit.items():
+            ok = [r for r in runs if r.get("ok") and not math.isnan(r.get("error", float("nan")))
+                  and r["error"] <= x["error"]]
+            best = min(ok, key=lambda r: r["wall"]) if ok else None
+            out.append({"dt_factor": x["dt_factor"], "explicit_error": x["error"], "explicit_wall": x["wall"],
+                        "program": name, "rtol": best["rtol"] if best else None,
+                        "error": best["error"] if best else None, "wall": best["wall"] if best else None,
+                        "ratio": x["wall"] / best["wall"] if best else None})
+            rows.append([f"{x['dt_factor']:g}", fmt_e(x["error"]), fmt_t(x["wall"]), name,
+                         f"{best['rtol']:.0e}" if best else "none as accurate", fmt_e(best["error"]) if best else "-",
+                         fmt_t(best["wall"]) if best else "-", f"{x['wall'] / best['wall']:.3g}" if best else "-"])
+    table(f"{label}: the cheapest implicit run at least as accurate as each explicit run",
+          ["dt_factor", "explicit err", "explicit wall", "program", "rtol", "err", "wall", "explicit/implicit"], rows,
+          note="explicit/implicit > 1: the implicit run is faster")
+    return out
+
+
 def print_equal(label, eq, target, who="ricochet"):
     rows = []
     for q in eq:
@@ -779,6 +807,8 @@ def bench_ramp(B, sizes, ramps):
                   "events", "err vs RK4", "err vs statics"], rows)
             S["equal"] = equal_rows(B, f"Ramp N = {N}, T = {T:g} s", S, "ricochet", "ricochet")
             S["equal_cvode"] = equal_rows(B, f"Ramp N = {N}, T = {T:g} s, plain CVODE", S, "cvode", "cvode_ref")
+            S["equal_reverse"] = equal_reverse(f"Ramp N = {N}, T = {T:g} s", S["explicit"],
+                                               {"ricochet": S["ricochet"], "cvode_ref": S["cvode"]})
             res["cases"][key] = S
     return res
 
@@ -1009,6 +1039,7 @@ def bench_stickslip(B):
            "switch time err"], rows)
     res["equal"] = equal_accuracy(res["ricochet"], res["explicit"])
     print_equal("Stick-slip", res["equal"], "error = max(period, slip distance, switch time errors)")
+    res["equal_reverse"] = equal_reverse("Stick-slip", res["explicit"], {"ricochet": res["ricochet"]})
     return res
 
 

@@ -59,12 +59,16 @@
  *       the settled column (static state: contact j carries (N - j) m G,
  *       p_j = (N - j) m G / k, velocities 0) under the gravity ramp G -> 2 G
  *       over t_ramp, held until t_end
+ *   cvode_ref sramp ...  (same arguments)
+ *       the same with the smooth ramp G (1 + (1 - cos(pi t / t_ramp)) / 2):
+ *       no kink in the load at either end (its rate is continuous)
  * FORCES_FILE: the contact forces at t_end (contact 0 = floor), one a line.
  * Output: key=value lines on stdout (as explicit_ref). wall_time is
  * clock_gettime(CLOCK_MONOTONIC) around the integration loop only (CVODE
  * set-up and output excluded).
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DEFAULT_SOURCE /* M_PI */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -84,6 +88,7 @@ typedef struct col {
     long N;
     double R, m, k, c0, c1;
     double t_ramp; /* > 0: gravity ramp G -> 2 G over t_ramp */
+    int smooth;    /* the ramp's shape: 0 linear, 1 (1 - cos(pi t / t_ramp)) / 2 */
     double rtol, z_scale, v_scale;
     int *active;
 } col;
@@ -116,7 +121,8 @@ static double arg(char **argv, int k)
 static double gravity(const col *c, double t)
 {
     if (c->t_ramp <= 0.0) return GRAV;
-    const double s = t <= 0.0 ? 0.0 : (t >= c->t_ramp ? 1.0 : t / c->t_ramp);
+    double s = t <= 0.0 ? 0.0 : (t >= c->t_ramp ? 1.0 : t / c->t_ramp);
+    if (c->smooth) s = 0.5 * (1.0 - cos(M_PI * s));
     return GRAV * (1.0 + s);
 }
 
@@ -227,6 +233,25 @@ static int ewt(N_Vector Y, N_Vector W, void *ud)
     return 0;
 }
 
+/* CVODE's counters restart at every CVodeReInit: totals over the run */
+typedef struct counts {
+    long nst, nfe, nfeLS, nje, nsetups, netf, nni, nncf, nge;
+} counts;
+
+static void add_counts(void *cv, counts *c)
+{
+    long v;
+    if (CVodeGetNumSteps(cv, &v) == CV_SUCCESS) c->nst += v;
+    if (CVodeGetNumRhsEvals(cv, &v) == CV_SUCCESS) c->nfe += v;
+    if (CVodeGetNumLinRhsEvals(cv, &v) == CV_SUCCESS) c->nfeLS += v;
+    if (CVodeGetNumJacEvals(cv, &v) == CV_SUCCESS) c->nje += v;
+    if (CVodeGetNumLinSolvSetups(cv, &v) == CV_SUCCESS) c->nsetups += v;
+    if (CVodeGetNumErrTestFails(cv, &v) == CV_SUCCESS) c->netf += v;
+    if (CVodeGetNumNonlinSolvIters(cv, &v) == CV_SUCCESS) c->nni += v;
+    if (CVodeGetNumNonlinSolvConvFails(cv, &v) == CV_SUCCESS) c->nncf += v;
+    if (CVodeGetNumGEvals(cv, &v) == CV_SUCCESS) c->nge += v;
+}
+
 #define CK(call)                                                                                                   \
     do {                                                                                                           \
         int flag_ = (call);                                                                                        \
@@ -237,7 +262,7 @@ static int ewt(N_Vector Y, N_Vector W, void *ud)
     } while (0)
 
 static int run(long N, double R, double m, double k, double zeta, double gap, int settled, double t_ramp,
-               double t_end, double rtol, const char *forces_path)
+               int smooth, double t_end, double rtol, const char *forces_path)
 {
     col c;
     memset(&c, 0, sizeof c);
@@ -248,6 +273,7 @@ static int run(long N, double R, double m, double k, double zeta, double gap, in
     c.c0 = 2.0 * zeta * sqrt(k * m);
     c.c1 = 2.0 * zeta * sqrt(k * m / 2.0);
     c.t_ramp = t_ramp;
+    c.smooth = smooth;
     c.rtol = rtol;
     c.z_scale = m * GRAV / k;
     c.v_scale = GRAV * sqrt(m / k);
@@ -298,6 +324,8 @@ static int run(long N, double R, double m, double k, double zeta, double gap, in
     CK(CVodeSetStopTime(cv, ramp_pending ? t_ramp : t_end));
 
     long events = 0, reinits = 0, root_returns = 0, closes = 0, opens = 0;
+    counts tot;
+    memset(&tot, 0, sizeof tot);
     int fresh = 0;
     double t = 0.0;
     const double t0 = now();
@@ -341,6 +369,7 @@ static int run(long N, double R, double m, double k, double zeta, double gap, in
                 else opens++;
             }
             if (jump) {
+                add_counts(cv, &tot);
                 CK(CVodeReInit(cv, t, Y));
                 reinits++;
                 fresh = 0;
@@ -351,16 +380,7 @@ static int run(long N, double R, double m, double k, double zeta, double gap, in
     }
     const double wall = now() - t0;
 
-    long nst = 0, nfe = 0, nje = 0, nsetups = 0, netf = 0, nni = 0, nncf = 0, nge = 0, nfeLS = 0;
-    CVodeGetNumSteps(cv, &nst);
-    CVodeGetNumRhsEvals(cv, &nfe);
-    CVodeGetNumLinRhsEvals(cv, &nfeLS);
-    CVodeGetNumJacEvals(cv, &nje);
-    CVodeGetNumLinSolvSetups(cv, &nsetups);
-    CVodeGetNumErrTestFails(cv, &netf);
-    CVodeGetNumNonlinSolvIters(cv, &nni);
-    CVodeGetNumNonlinSolvConvFails(cv, &nncf);
-    CVodeGetNumGEvals(cv, &nge);
+    add_counts(cv, &tot);
 
     double *f = malloc((size_t)N * sizeof(double));
     if (!f) return 4;
@@ -383,7 +403,7 @@ static int run(long N, double R, double m, double k, double zeta, double gap, in
            c.z_scale, c.v_scale);
     printf("steps=%ld\nrhs_evals=%ld\njac_evals=%ld\nlin_setups=%ld\nerr_test_fails=%ld\nnewton_iters=%ld\n"
            "newton_fails=%ld\nroot_evals=%ld\n",
-           nst, nfe + nfeLS, nje, nsetups, netf, nni, nncf, nge);
+           tot.nst, tot.nfe + tot.nfeLS, tot.nje, tot.nsetups, tot.netf, tot.nni, tot.nncf, tot.nge);
     printf("events=%ld\ncloses=%ld\nopens=%ld\nroot_returns=%ld\nreinits=%ld\n", events, closes, opens, root_returns,
            reinits);
     printf("wall_time=%.9e\npeak_rss_kb=%ld\n", wall, peak_rss_kb());
@@ -412,7 +432,8 @@ static int run(long N, double R, double m, double k, double zeta, double gap, in
 static void usage(FILE *fp)
 {
     fprintf(fp, "usage: cvode_ref column N R m k zeta gap t_end rtol [FORCES_FILE]\n"
-                "       cvode_ref ramp N R m k zeta t_ramp t_end rtol [FORCES_FILE]\n");
+                "       cvode_ref ramp N R m k zeta t_ramp t_end rtol [FORCES_FILE]\n"
+                "       cvode_ref sramp N R m k zeta t_ramp t_end rtol [FORCES_FILE]\n");
 }
 
 int main(int argc, char **argv)
@@ -421,7 +442,8 @@ int main(int argc, char **argv)
         usage(stderr);
         return 2;
     }
-    const int is_col = !strcmp(argv[1], "column"), is_ramp = !strcmp(argv[1], "ramp");
+    const int is_col = !strcmp(argv[1], "column"), is_sramp = !strcmp(argv[1], "sramp");
+    const int is_ramp = !strcmp(argv[1], "ramp") || is_sramp;
     const double N = arg(argv, 2);
     if ((!is_col && !is_ramp) || N < 1 || N != floor(N)) {
         usage(stderr);
@@ -429,8 +451,8 @@ int main(int argc, char **argv)
     }
     const char *ff = argc == 11 ? argv[10] : NULL;
     if (is_col)
-        return run((long)N, arg(argv, 3), arg(argv, 4), arg(argv, 5), arg(argv, 6), arg(argv, 7), 0, 0.0, arg(argv, 8),
-                   arg(argv, 9), ff);
-    return run((long)N, arg(argv, 3), arg(argv, 4), arg(argv, 5), arg(argv, 6), 0.0, 1, arg(argv, 7), arg(argv, 8),
-               arg(argv, 9), ff);
+        return run((long)N, arg(argv, 3), arg(argv, 4), arg(argv, 5), arg(argv, 6), arg(argv, 7), 0, 0.0, 0,
+                   arg(argv, 8), arg(argv, 9), ff);
+    return run((long)N, arg(argv, 3), arg(argv, 4), arg(argv, 5), arg(argv, 6), 0.0, 1, arg(argv, 7), is_sramp,
+               arg(argv, 8), arg(argv, 9), ff);
 }

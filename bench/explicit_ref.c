@@ -41,6 +41,8 @@
  *       linearly G -> 2 G over t_ramp and held until t_end; central
  *       difference (ramp) or the RK4 reference (rampref, no step across the
  *       kink at t_ramp).
+ *   explicit_ref sramp | srampref ...  (same arguments)
+ *       the same with the smooth ramp G (1 + (1 - cos(pi t / t_ramp)) / 2).
  *   explicit_ref stickslip m ks C mu_s mu_k v1 v2 V t_end dt_factor [EVENTS_FILE]
  *       a block dragged across a floor through a spring (see run_stickslip)
  *   explicit_ref column N R m k zeta gap t_end dt_factor [FORCES_FILE]
@@ -55,6 +57,7 @@
  * peak_rss_kb is getrusage(RUSAGE_SELF).ru_maxrss.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DEFAULT_SOURCE /* M_PI */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -72,11 +75,13 @@
  * then held. */
 static int settled_start = 0;
 static double ramp_time = 0.0; /* > 0: the ramp */
+static int ramp_smooth = 0;    /* sramp, srampref: (1 - cos(pi t / t_ramp)) / 2 */
 
 static double gravity(double t)
 {
     if (ramp_time <= 0.0) return GRAV;
-    const double s = t <= 0.0 ? 0.0 : (t >= ramp_time ? 1.0 : t / ramp_time);
+    double s = t <= 0.0 ? 0.0 : (t >= ramp_time ? 1.0 : t / ramp_time);
+    if (ramp_smooth) s = 0.5 * (1.0 - cos(M_PI * s));
     return GRAV * (1.0 + s);
 }
 
@@ -664,7 +669,8 @@ static void usage(FILE *fp)
                 "       explicit_ref ramp N R m k zeta t_ramp t_end dt_factor [FORCES_FILE]\n"
                 "       explicit_ref rampref N R m k zeta t_ramp t_end h [FORCES_FILE]\n"
                 "           (the settled column, gravity ramped G -> 2 G over t_ramp, held to t_end;\n"
-                "            central difference / event-located RK4 of the clipped law)\n"
+                "            central difference / event-located RK4 of the clipped law;\n"
+                "            sramp, srampref: the smooth ramp G (1 + (1 - cos(pi t / t_ramp)) / 2))\n"
                 "       explicit_ref stickslip m ks C mu_s mu_k v1 v2 V t_end dt_factor [EVENTS_FILE]\n");
 }
 
@@ -691,7 +697,9 @@ int main(int argc, char **argv)
         return run_reference((long)N, arg(argv, 3), arg(argv, 4), arg(argv, 5), arg(argv, 6), arg(argv, 7),
                              arg(argv, 8), arg(argv, 9), arg(argv, 10), argv[11], argc == 13 ? argv[12] : NULL);
     }
-    if (argc >= 2 && (!strcmp(argv[1], "ramp") || !strcmp(argv[1], "rampref")) && (argc == 10 || argc == 11)) {
+    if (argc >= 2 && (!strcmp(argv[1], "ramp") || !strcmp(argv[1], "rampref") || !strcmp(argv[1], "sramp") ||
+                      !strcmp(argv[1], "srampref")) &&
+        (argc == 10 || argc == 11)) {
         const double N = arg(argv, 2);
         if (N < 1 || N != floor(N)) {
             usage(stderr);
@@ -699,8 +707,9 @@ int main(int argc, char **argv)
         }
         settled_start = 1;
         ramp_time = arg(argv, 7);
+        ramp_smooth = argv[1][0] == 's';
         const char *ff = argc == 11 ? argv[10] : NULL;
-        if (!strcmp(argv[1], "ramp"))
+        if (!strcmp(argv[1], "ramp") || !strcmp(argv[1], "sramp"))
             return run_column((long)N, arg(argv, 3), arg(argv, 4), arg(argv, 5), arg(argv, 6), 0.0, arg(argv, 8),
                               arg(argv, 9), ff);
         return run_reference((long)N, arg(argv, 3), arg(argv, 4), arg(argv, 5), arg(argv, 6), -1.0, 0.0,

@@ -665,14 +665,24 @@ def settled_heights(N, p=QS):
     return z
 
 
-def ramp_deck(N, T, rtol, p=QS):
+SMOOTH_POINTS = 20000  # samples of the smooth ramp in the deck's /FUNCT
+
+
+def ramp_deck(N, T, rtol, p=QS, shape="linear"):
     """The settled column, gravity ramped G -> 2 G over T (a /GRAV with a
-    /FUNCT time function), held for p["hold"] s."""
+    /FUNCT time function), held for p["hold"] s. shape "smooth": the ramp
+    1 + (1 - cos(pi t/T))/2, sampled at SMOOTH_POINTS + 1 points (the linear
+    interpolation departs from it by at most pi^2/(16 n^2) = 1.5e-9 of G)."""
     R, m, k = p["R"], p["m"], p["k"]
     tend = T + p["hold"]
-    d = Deck(f"bench: settled column of {N} spheres, gravity ramped G -> 2 G over {T:g} s")
+    d = Deck(f"bench: settled column of {N} spheres, gravity ramped G -> 2 G over {T:g} s ({shape})")
     d.funct(1, [0.0, 1.0], [0.0, k], title="linear load curve")
-    d.funct(2, [0.0, T, T + 1.0e4], [1.0, 2.0, 2.0], title=f"gravity factor: 1 -> 2 over {T:g} s, then 2")
+    if shape == "smooth":
+        ts = [T * i / SMOOTH_POINTS for i in range(SMOOTH_POINTS + 1)]
+        d.funct(2, ts + [T + 1.0e4], [1.0 + 0.5 * (1.0 - math.cos(math.pi * t / T)) for t in ts] + [2.0],
+                title=f"gravity factor: 1 + (1 - cos(pi t / {T:g})) / 2, then 2")
+    else:
+        d.funct(2, [0.0, T, T + 1.0e4], [1.0, 2.0, 2.0], title=f"gravity factor: 1 -> 2 over {T:g} s, then 2")
     z = settled_heights(N, p)
     d.nodes([(i + 1, 0.0, 0.0, z[i]) for i in range(N)])
     J = [0.4 * m * R * R] * 3
@@ -703,23 +713,25 @@ def equal_rows(B, label, S, who_runs, who):
     return eq
 
 
-def bench_ramp(B, sizes, ramps):
+def bench_ramp(B, sizes, ramps, shape="linear"):
     p = QS
-    res = {"params": dict(p), "cases": {}}
+    res = {"params": dict(p), "shape": shape, "cases": {}}
+    sub = {"linear": ("ramp", "rampref"), "smooth": ("sramp", "srampref")}[shape]
     print(f"== Case 3a: quasi-static column: the settled column (R = {p['R']} m, m = {p['m']} kg, k = {p['k']:.0e} "
-          f"N/m, critically damped contacts), gravity ramped linearly G -> 2 G over T, held {p['hold']} s ==\n")
+          f"N/m, critically damped contacts), gravity ramped G -> 2 G over T ({shape}: "
+          + ("linear" if shape == "linear" else "1 + (1 - cos(pi t/T))/2") + f"), held {p['hold']} s ==\n")
     for N in sizes:
         scale = N * p["m"] * G
         F_stat = np.array([2.0 * (N - j) * p["m"] * G for j in range(N)])
         for T in ramps:
-            key = f"N{N}_T{T:g}"
+            key = f"N{N}_T{T:g}" + ("" if shape == "linear" else "_smooth")
             S = {"N": N, "T": T, "ricochet": [], "cvode": [], "explicit": []}
             # ---- reference: RK4 (no events in this problem) at h and 2h
             h = 5e-5
             refs = {}
             for tag, hh in (("ref", h), ("ref2h", 2 * h)):
                 ff = os.path.join(B.work, f"ramp{key}_{tag}.txt")
-                x = B.explicit_run(["rampref"] + ramp_args(N, T) + [hh, ff])
+                x = B.explicit_run([sub[1]] + ramp_args(N, T) + [hh, ff])
                 if not x["ok"]:
                     sys.exit(f"bench: RK4 reference failed: {x}")
                 x["F"] = np.loadtxt(ff, ndmin=1)
@@ -737,14 +749,14 @@ def bench_ramp(B, sizes, ramps):
                   [[rf["events"], f"{rf['force_bottom']:.6f}", f"{2 * scale:.6f}", f"{rf['max_speed']:.2e}",
                     f"{unc:.1e}", f"{stat_dev:.1e}", fmt_t(rf["wall_time"])]],
                   note="uncertainty = max |F(h) - F(2h)| / (N m g); |ref - statics| = max |F_ref - 2 (N - j) m g| / "
-                       "(N m g): the dynamics left at the end of the hold (the slow modes rung by the kinks of the "
-                       "ramp), physics, not integration error")
+                       "(N m g): the dynamics left at the end of the hold (the slow modes rung by the ramp, "
+                       "by its kinks when linear), physics, not integration error")
 
             # ---- ricochet
             rows = []
             rtols = (1e-4, 1e-6) if B.quick else (1e-4, 1e-6, 1e-8)
             for rtol in rtols:
-                r = B.ricochet_run(ramp_deck(N, T, rtol), f"ramp{key}_rtol{rtol:.0e}", timeout=1800,
+                r = B.ricochet_run(ramp_deck(N, T, rtol, shape=shape), f"ramp{key}_rtol{rtol:.0e}", timeout=1800,
                                    time_repeat=1 if N <= 100 else 0)
                 if "stats" not in r:
                     rows.append([f"{rtol:.0e}", "FAILED", fmt_t(r["elapsed"]), r["stderr"][:70]])
@@ -772,7 +784,7 @@ def bench_ramp(B, sizes, ramps):
             rtols = (1e-2, 1e-4, 1e-6) if B.quick else (1e-2, 1e-3, 1e-4, 1e-6, 1e-8)
             for rtol in rtols:
                 ff = os.path.join(B.work, f"ramp{key}_cvode{rtol:.0e}.txt")
-                x = B.cvode_run(["ramp"] + ramp_args(N, T) + [rtol, ff], timeout=1800)
+                x = B.cvode_run([sub[0]] + ramp_args(N, T) + [rtol, ff], timeout=1800)
                 if not x["ok"]:
                     rows.append([f"{rtol:.0e}", "FAILED", x.get("stderr", "")[:70]])
                     continue
@@ -792,7 +804,7 @@ def bench_ramp(B, sizes, ramps):
             factors = (1, 0.5) if B.quick else (1, 0.5, 0.2, 0.1)
             for f in factors:
                 ff = os.path.join(B.work, f"ramp{key}_cd{f:g}.txt")
-                x = B.explicit_run(["ramp"] + ramp_args(N, T) + [f, ff], repeat=1)
+                x = B.explicit_run([sub[0]] + ramp_args(N, T) + [f, ff], repeat=1)
                 if not x["ok"]:
                     rows.append([f"{f:g}", "FAILED"])
                     continue
@@ -1052,6 +1064,8 @@ def main():
     ap.add_argument("--sizes", default="10,100,1000")
     ap.add_argument("--qsizes", default=None, help="column sizes of the ramp (default 100,1000; --quick: 100)")
     ap.add_argument("--ramps", default="20,100", help="ramp durations [s]")
+    ap.add_argument("--ramp-shape", default="linear", choices=["linear", "smooth", "both"],
+                    help="linear (the default) or smooth: 1 + (1 - cos(pi t/T))/2, no kink at either end")
     ap.add_argument("--json", default=None)
     a = ap.parse_args()
     B = Bench(a.build, a.quick)
@@ -1071,8 +1085,9 @@ def main():
         B.results["column"] = bench_column(B, [int(s) for s in a.sizes.split(",") if s])
     if a.only in (None, "quasi", "ramp"):
         qs = a.qsizes or ("100" if a.quick else "100,1000")
-        B.results["ramp"] = bench_ramp(B, [int(s) for s in qs.split(",") if s],
-                                       [float(s) for s in a.ramps.split(",") if s])
+        for shape in (("linear", "smooth") if a.ramp_shape == "both" else (a.ramp_shape,)):
+            B.results["ramp" if shape == "linear" else "ramp_smooth"] = bench_ramp(
+                B, [int(s) for s in qs.split(",") if s], [float(s) for s in a.ramps.split(",") if s], shape)
     if a.only in (None, "quasi", "stickslip"):
         B.results["stickslip"] = bench_stickslip(B)
     B.results["bench_wall"] = time.time() - t0

@@ -718,8 +718,8 @@ def bench_ramp(B, sizes, ramps, shape="linear"):
     res = {"params": dict(p), "shape": shape, "cases": {}}
     sub = {"linear": ("ramp", "rampref"), "smooth": ("sramp", "srampref")}[shape]
     print(f"== Case 3a: quasi-static column: the settled column (R = {p['R']} m, m = {p['m']} kg, k = {p['k']:.0e} "
-          f"N/m, critically damped contacts), gravity ramped G -> 2 G over T ({shape}: "
-          + ("linear" if shape == "linear" else "1 + (1 - cos(pi t/T))/2") + f"), held {p['hold']} s ==\n")
+          f"N/m, critically damped contacts), gravity ramped G -> 2 G over T ("
+          + ("linear" if shape == "linear" else "smooth: 1 + (1 - cos(pi t/T))/2") + f"), held {p['hold']} s ==\n")
     for N in sizes:
         scale = N * p["m"] * G
         F_stat = np.array([2.0 * (N - j) * p["m"] * G for j in range(N)])

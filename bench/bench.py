@@ -1029,6 +1029,33 @@ def bench_stickslip(B):
           note="wall: rc_time (no output file); errors against the reference: period and slip distance relative, "
                "switch times max |t - t_ref| / period")
 
+    # plain CVODE of the same 1-D law (cvode_ref stickslip: 2 states, dense
+    # 2 x 2, the same tolerances as the ricochet deck, a restart at every
+    # switch)
+    res["cvode"] = []
+    rows = []
+    for rtol in (1e-6, 1e-8, 1e-10):
+        ff = os.path.join(B.work, f"stickslip_cvode{rtol:.0e}.txt")
+        x = B.cvode_run(["stickslip", p["m"], p["ks"], C, p["mus"], p["muk"], p["v1"], p["v2"], p["V"], p["tend"],
+                         rtol, ff], repeat=3)
+        if not x["ok"]:
+            rows.append([f"{rtol:.0e}", "FAILED", x.get("stderr", "")[:70]])
+            continue
+        sw = []
+        with open(ff) as fh:
+            for ln in fh:
+                k, t, xx = ln.split()
+                sw.append((k, float(t), float(xx)))
+        m = ss_measures(sw, ref)
+        res["cvode"].append({"rtol": rtol, "ok": True, "wall": x["wall_time"],
+                             "stats": {k: x[k] for k in CVODE_KEYS if k in x}, **m})
+        rows.append([f"{rtol:.0e}", fmt_t(x["wall_time"]), x["steps"], x["rhs_evals"], x["jac_evals"],
+                     x["lin_setups"], x["events"], x["reinits"], m["slips"], f"{m['period']:.7f}",
+                     fmt_e(m.get("period_err")), fmt_e(m.get("dist_err")), fmt_e(m.get("time_err"))])
+    table("stick-slip: plain CVODE (cvode_ref stickslip, 2 states, atol_x = 1e-3 rtol m, atol_u = 1e-2 rtol m/s)",
+          ["rtol", "wall", "steps", "RHS", "Jac", "LU", "events", "restarts", "slips", "period [s]", "period err",
+           "slip dist err", "switch time err"], rows)
+
     rows = []
     for f in ((1, 0.5) if B.quick else (1, 0.5, 0.25, 0.1, 0.05)):
         ff = os.path.join(B.work, f"stickslip_cd{f:g}.txt")
@@ -1051,7 +1078,10 @@ def bench_stickslip(B):
            "switch time err"], rows)
     res["equal"] = equal_accuracy(res["ricochet"], res["explicit"])
     print_equal("Stick-slip", res["equal"], "error = max(period, slip distance, switch time errors)")
-    res["equal_reverse"] = equal_reverse("Stick-slip", res["explicit"], {"ricochet": res["ricochet"]})
+    res["equal_cvode"] = equal_accuracy(res["cvode"], res["explicit"])
+    print_equal("Stick-slip, plain CVODE", res["equal_cvode"], "", who="cvode_ref")
+    res["equal_reverse"] = equal_reverse("Stick-slip", res["explicit"],
+                                         {"ricochet": res["ricochet"], "cvode_ref": res["cvode"]})
     return res
 
 

@@ -62,6 +62,9 @@
  *   cvode_ref sramp ...  (same arguments)
  *       the same with the smooth ramp G (1 + (1 - cos(pi t / t_ramp)) / 2):
  *       no kink in the load at either end (its rate is continuous)
+ *   cvode_ref stickslip m ks C mu_s mu_k v1 v2 V t_end rtol [EVENTS_FILE]
+ *       the stick-slip drag of explicit_ref stickslip, 2 states (see
+ *       run_stickslip below); EVENTS_FILE: "slip t x" / "stick t x" lines
  * FORCES_FILE: the contact forces at t_end (contact 0 = floor), one a line.
  * Output: key=value lines on stdout (as explicit_ref). wall_time is
  * clock_gettime(CLOCK_MONOTONIC) around the integration loop only (CVODE
@@ -429,15 +432,211 @@ static int run(long N, double R, double m, double k, double zeta, double gap, in
     return 0;
 }
 
+/* ---- stick-slip: a block dragged across a floor through a spring ---------
+ * The model of explicit_ref stickslip (bench/explicit_ref.c): x, u along the
+ * floor, spring ks to an anchor at V t, normal force m G, friction
+ *   stick (adhesion): F = -C u             while C |u| < mu(|u|) m G,
+ *   slip (saturated): F = -mu(|u|) m G sign(u),
+ * Renard's two-level mu (mu_s up to v1, cubic drop to mu_k by v2; C1, so
+ * no breakpoint events are needed for BDF). Modes switch at roots of
+ * C |u| - (1 +- 1e-6) mu(|u|) m G (ricochet's band against chattering:
+ * slip starts above (1 + 1e-6) L, stick again below (1 - 1e-6) L), and a
+ * second root, u (times its sign at the slip onset) in slip, catches a
+ * reversal that a step jumps across the narrow window |u| < L/C. The force is
+ * continuous across a switch up to that band, so no CVodeReInit there (only
+ * at a reversal, where it jumps); the Jacobian jumps (-C/m to ~0), so one
+ * step with a fresh Jacobian follows.
+ * Dense 2 x 2 linear algebra (SUNLinSol_Dense). Error weights: the same as
+ * ricochet's deck of the bench, CVodeSVtolerances with atol_x = 1e-3 rtol m,
+ * atol_u = 1e-2 rtol m/s.
+ */
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+typedef struct ssm {
+    double m, ks, C, mus, muk, v1, v2, V, Fn;
+    int slip;
+    double dir; /* sign of u when the slip started */
+} ssm;
+
+static double ss_mu(const ssm *s, double v)
+{
+    if (v <= s->v1) return s->mus;
+    if (v < s->v2) {
+        const double w = (v - s->v1) / (s->v2 - s->v1);
+        return s->mus + (s->muk - s->mus) * (3.0 - 2.0 * w) * w * w;
+    }
+    return s->muk;
+}
+
+static int ss_rhs(sunrealtype t, N_Vector Y, N_Vector Yd, void *ud)
+{
+    const ssm *s = ud;
+    const double *y = N_VGetArrayPointer(Y);
+    double *yd = N_VGetArrayPointer(Yd);
+    const double u = y[1];
+    double f;
+    if (s->slip) f = -ss_mu(s, fabs(u)) * s->Fn * (u > 0.0 ? 1.0 : (u < 0.0 ? -1.0 : 0.0));
+    else f = -s->C * u;
+    yd[0] = u;
+    yd[1] = (s->ks * (s->V * t - y[0]) + f) / s->m;
+    return 0;
+}
+
+static int ss_jac(sunrealtype t, N_Vector Y, N_Vector F, SUNMatrix J, void *ud, N_Vector t1, N_Vector t2,
+                  N_Vector t3)
+{
+    (void)t;
+    (void)F;
+    (void)t1;
+    (void)t2;
+    (void)t3;
+    const ssm *s = ud;
+    (void)Y;
+    /* saturated: d mu / d|u| is left out, as in ricochet's Jacobian. In the
+     * drop between v1 and v2 it is a large positive feedback (+8e5 1/s here),
+     * and with it Newton fails where h gamma lambda ~ 1 */
+    const double dfdu = s->slip ? 0.0 : -s->C;
+    SM_ELEMENT_D(J, 0, 0) = 0.0;
+    SM_ELEMENT_D(J, 0, 1) = 1.0;
+    SM_ELEMENT_D(J, 1, 0) = -s->ks / s->m;
+    SM_ELEMENT_D(J, 1, 1) = dfdu / s->m;
+    return 0;
+}
+
+static int ss_root(sunrealtype t, N_Vector Y, sunrealtype *g, void *ud)
+{
+    (void)t;
+    const ssm *s = ud;
+    const double a = fabs(N_VGetArrayPointer(Y)[1]);
+    const double L = ss_mu(s, a) * s->Fn;
+    g[0] = s->C * a - (s->slip ? 1.0 - 1e-6 : 1.0 + 1e-6) * L;
+    /* the sliding reverses: the window |u| < L / C where g[0] dips below
+     * zero is ~5 um/s wide, a step can jump it (ricochet's reversal root) */
+    g[1] = s->slip ? N_VGetArrayPointer(Y)[1] * s->dir : 1.0;
+    return 0;
+}
+
+static int run_stickslip(double m, double ks, double C, double mus, double muk, double v1, double v2, double V,
+                         double t_end, double rtol, const char *events_path)
+{
+    ssm s = {m, ks, C, mus, muk, v1, v2, V, m * GRAV, 0, 1.0};
+    int rf[2] = {0, 0};
+    long reinits = 0;
+    SUNContext ctx;
+    if (SUNContext_Create(NULL, &ctx)) return 5;
+    N_Vector Y = N_VNew_Serial(2, ctx), AT = N_VNew_Serial(2, ctx);
+    double *y = N_VGetArrayPointer(Y);
+    y[0] = 0.0;
+    y[1] = 0.0;
+    N_VGetArrayPointer(AT)[0] = 1e-3 * rtol;
+    N_VGetArrayPointer(AT)[1] = 1e-2 * rtol;
+    SUNMatrix A = SUNDenseMatrix(2, 2, ctx);
+    SUNLinearSolver LS = SUNLinSol_Dense(Y, A, ctx);
+    void *cv = CVodeCreate(CV_BDF, ctx);
+    if (!A || !LS || !cv) return 5;
+    CK(CVodeInit(cv, ss_rhs, 0.0, Y));
+    CK(CVodeSetUserData(cv, &s));
+    CK(CVodeSVtolerances(cv, rtol, AT));
+    CK(CVodeSetLinearSolver(cv, LS, A));
+    CK(CVodeSetJacFn(cv, ss_jac));
+    CK(CVodeSetMaxNumSteps(cv, 100000000L));
+    CK(CVodeSetStabLimDet(cv, SUNTRUE));
+    CK(CVodeRootInit(cv, 2, ss_root));
+    CK(CVodeSetStopTime(cv, t_end));
+    long cap = 1024, nrec = 0, events = 0, slips = 0;
+    double *rt = malloc((size_t)cap * sizeof(double)), *rx = malloc((size_t)cap * sizeof(double));
+    int *rk = malloc((size_t)cap * sizeof(int));
+    if (!rt || !rx || !rk) return 4;
+    counts tot;
+    memset(&tot, 0, sizeof tot);
+    int fresh = 0;
+    double t = 0.0;
+    const double t0 = now();
+    while (t < t_end) {
+        long nst0 = 0, nst1 = 0;
+        if (fresh) {
+            CK(CVodeSetLSetupFrequency(cv, 1));
+            CK(CVodeSetJacEvalFrequency(cv, 1));
+            CVodeGetNumSteps(cv, &nst0);
+        }
+        const int flag = CVode(cv, t_end, Y, &t, fresh ? CV_ONE_STEP : CV_NORMAL);
+        if (fresh && CVodeGetNumSteps(cv, &nst1) == CV_SUCCESS && nst1 > nst0) {
+            CK(CVodeSetLSetupFrequency(cv, 0));
+            CK(CVodeSetJacEvalFrequency(cv, 0));
+            fresh = 0;
+        }
+        if (flag < 0) {
+            printf("status=failed\nflag=%s\nt_failed=%.9e\n", CVodeGetReturnFlagName(flag), t);
+            return 3;
+        }
+        if (flag == CV_ROOT_RETURN) {
+            CK(CVodeGetRootInfo(cv, rf));
+            const int reversal = s.slip && rf[1] && !rf[0];
+            s.slip = !s.slip;
+            if (s.slip) s.dir = y[1] >= 0.0 ? 1.0 : -1.0;
+            events++;
+            slips += s.slip;
+            if (nrec == cap) {
+                cap *= 2;
+                rt = realloc(rt, (size_t)cap * sizeof(double));
+                rx = realloc(rx, (size_t)cap * sizeof(double));
+                rk = realloc(rk, (size_t)cap * sizeof(int));
+                if (!rt || !rx || !rk) return 4;
+            }
+            rt[nrec] = t;
+            rx[nrec] = y[0];
+            rk[nrec++] = s.slip;
+            /* restart at every switch, as ricochet does for this law: at a
+             * reversal the force jumps (limit -> ~0); at the other switches
+             * the force is continuous but its Jacobian jumps by C/m = 1.4e6
+             * 1/s, and a continued BDF history fails (Newton, missed stick) */
+            (void)reversal;
+            add_counts(cv, &tot);
+            CK(CVodeReInit(cv, t, Y));
+            reinits++;
+            fresh = 0;
+        }
+    }
+    const double wall = now() - t0;
+    add_counts(cv, &tot);
+    printf("case=stickslip\nstatus=ok\nrtol=%.3e\n", rtol);
+    printf("steps=%ld\nrhs_evals=%ld\njac_evals=%ld\nlin_setups=%ld\nerr_test_fails=%ld\nnewton_iters=%ld\n"
+           "newton_fails=%ld\nroot_evals=%ld\n",
+           tot.nst, tot.nfe + tot.nfeLS, tot.nje, tot.nsetups, tot.netf, tot.nni, tot.nncf, tot.nge);
+    printf("events=%ld\nslips=%ld\nreinits=%ld\nwall_time=%.9e\npeak_rss_kb=%ld\nfinal_x=%.12e\nfinal_u=%.12e\n", events,
+           slips, reinits, wall, peak_rss_kb(), y[0], y[1]);
+    if (events_path) {
+        FILE *fp = fopen(events_path, "w");
+        if (!fp) return 4;
+        for (long q = 0; q < nrec; q++) fprintf(fp, "%s %.12e %.12e\n", rk[q] ? "slip" : "stick", rt[q], rx[q]);
+        fclose(fp);
+    }
+    free(rt);
+    free(rx);
+    free(rk);
+    CVodeFree(&cv);
+    SUNLinSolFree(LS);
+    SUNMatDestroy(A);
+    N_VDestroy(Y);
+    N_VDestroy(AT);
+    SUNContext_Free(&ctx);
+    return 0;
+}
+
 static void usage(FILE *fp)
 {
     fprintf(fp, "usage: cvode_ref column N R m k zeta gap t_end rtol [FORCES_FILE]\n"
                 "       cvode_ref ramp N R m k zeta t_ramp t_end rtol [FORCES_FILE]\n"
-                "       cvode_ref sramp N R m k zeta t_ramp t_end rtol [FORCES_FILE]\n");
+                "       cvode_ref sramp N R m k zeta t_ramp t_end rtol [FORCES_FILE]\n"
+                "       cvode_ref stickslip m ks C mu_s mu_k v1 v2 V t_end rtol [EVENTS_FILE]\n");
 }
 
 int main(int argc, char **argv)
 {
+    if (argc >= 2 && !strcmp(argv[1], "stickslip") && (argc == 12 || argc == 13))
+        return run_stickslip(arg(argv, 2), arg(argv, 3), arg(argv, 4), arg(argv, 5), arg(argv, 6), arg(argv, 7),
+                             arg(argv, 8), arg(argv, 9), arg(argv, 10), arg(argv, 11), argc == 13 ? argv[12] : NULL);
     if (argc < 2 || (argc != 10 && argc != 11)) {
         usage(stderr);
         return 2;

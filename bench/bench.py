@@ -8,16 +8,28 @@ Cases (SPEC section 12, bench/README.md):
      accuracy = contact forces at t = 5 s against an event-located RK4
      reference of the same equations (explicit_ref reference), relative to
      the static bottom force N m g.
+  3. quasi-static (the regime implicit integration is for):
+     a. the settled column (N = 100, 1000) under gravity ramped G -> 2 G over
+        T = 20 s and 100 s, then held 1 s; accuracy = contact forces at the
+        end against an RK4 reference of the same equations (and the statics
+        2 (N - j) m g for information);
+     b. stick-slip: a block dragged across a floor through a spring, 100 s,
+        Renard two-level friction in the viscous form; accuracy = period,
+        slip distances and switch times against a scipy Radau reference of
+        the same law.
 
 Programs (built by bench/run.sh into the build directory):
   ricochet       the CLI: accuracy (netCDF output), statistics, peak memory
   rc_time        ricochet's rc_run through the public API without an output
                  file: the integration wall time compared with explicit_ref
   explicit_ref   central difference and the RK4 reference
+  cvode_ref      the column as a plain CVODE + KLU program (2 states per
+                 sphere, gap-scaled error weights)
   peakrss        launcher that reports a child's own ru_maxrss (wait4)
 
-usage: /usr/bin/python3 bench/bench.py [--build DIR] [--quick] [--only drop|column]
-       [--sizes 10,100,1000] [--json FILE]
+usage: /usr/bin/python3 bench/bench.py [--build DIR] [--quick]
+       [--only drop|column|quasi|ramp|stickslip] [--sizes 10,100,1000]
+       [--qsizes 100,1000] [--ramps 20,100] [--json FILE]
 Prints plain tables; writes the raw numbers to DIR/bench/results.json.
 """
 import argparse
@@ -112,6 +124,7 @@ class Bench:
         self.ricochet = os.environ.get("RICOCHET", os.path.join(self.build, "ricochet"))
         self.rc_time = os.path.join(self.build, "rc_time")
         self.explicit = os.path.join(self.build, "explicit_ref")
+        self.cvode = os.path.join(self.build, "cvode_ref")
         self.peakrss = os.path.join(self.build, "peakrss")
         self.work = os.path.join(self.build, "bench")
         os.makedirs(self.work, exist_ok=True)
@@ -199,6 +212,22 @@ class Bench:
                 best = d
         return best
 
+    # ------------------------------------------------------------ plain CVODE
+    def cvode_run(self, args, repeat=1, timeout=None):
+        """cvode_ref (same key=value output as explicit_ref); best of repeat."""
+        best = None
+        for _ in range(repeat):
+            rc, so, se, elapsed, rss = self.measured([self.cvode] + list(args), timeout)
+            d = kv(so)
+            if rc != 0 or d.get("status") != "ok":
+                return {"ok": False, "rc": rc, "stderr": (se + so).strip()[-300:]}
+            d["ok"] = True
+            d["rss_kb"] = rss
+            d["elapsed"] = elapsed
+            if best is None or d["wall_time"] < best["wall_time"]:
+                best = d
+        return best
+
 
 def equal_accuracy(ricochet_runs, explicit_runs):
     """For each ricochet run: the cheapest explicit run whose error is <= the
@@ -233,7 +262,35 @@ def equal_accuracy(ricochet_runs, explicit_runs):
     return out
 
 
-def print_equal(label, eq, target):
+def equal_reverse(label, explicit_runs, implicit):
+    """The other direction: for each explicit run, the cheapest run of each
+    implicit program (implicit: {name: runs}) whose error is <= the explicit
+    error, and the wall-time ratio explicit / implicit (> 1: implicit faster).
+    Used by the quasi-static cases, where the explicit scheme is already very
+    accurate at its stable step, so that most implicit runs are matched by
+    it and the question is what an implicit run as accurate costs."""
+    rows, out = [], []
+    for x in sorted(explicit_runs, key=lambda x: -x["dt"]):
+        if math.isnan(x.get("error", float("nan"))):
+            continue
+        for name, runs in implicit.items():
+            ok = [r for r in runs if r.get("ok") and not math.isnan(r.get("error", float("nan")))
+                  and r["error"] <= x["error"]]
+            best = min(ok, key=lambda r: r["wall"]) if ok else None
+            out.append({"dt_factor": x["dt_factor"], "explicit_error": x["error"], "explicit_wall": x["wall"],
+                        "program": name, "rtol": best["rtol"] if best else None,
+                        "error": best["error"] if best else None, "wall": best["wall"] if best else None,
+                        "ratio": x["wall"] / best["wall"] if best else None})
+            rows.append([f"{x['dt_factor']:g}", fmt_e(x["error"]), fmt_t(x["wall"]), name,
+                         f"{best['rtol']:.0e}" if best else "none as accurate", fmt_e(best["error"]) if best else "-",
+                         fmt_t(best["wall"]) if best else "-", f"{x['wall'] / best['wall']:.3g}" if best else "-"])
+    table(f"{label}: the cheapest implicit run at least as accurate as each explicit run",
+          ["dt_factor", "explicit err", "explicit wall", "program", "rtol", "err", "wall", "explicit/implicit"], rows,
+          note="explicit/implicit > 1: the implicit run is faster")
+    return out
+
+
+def print_equal(label, eq, target, who="ricochet"):
     rows = []
     for q in eq:
         if q["explicit_wall"] is None:
@@ -246,11 +303,15 @@ def print_equal(label, eq, target):
                          fmt_e(q["explicit_error"]), fmt_t(q["explicit_wall"]), f"{q['ratio']:.3g}",
                          f"{q['ratio_interp']:.3g}"])
     table(f"{label}: equal accuracy. {target}",
-          ["rtol", "ricochet err", "ricochet wall", "explicit dt_factor", "explicit err", "explicit wall",
-           "explicit/ricochet", "interpolated"], rows,
-          note="explicit/ricochet = wall-time ratio (> 1: ricochet faster); interpolated: explicit wall time "
-               "interpolated (log-log in error) to exactly ricochet's error. dt_factor 1 with an explicit error below "
-               "ricochet's means the explicit scheme is already more accurate at its stable step.")
+          ["rtol", f"{who} err", f"{who} wall", "explicit dt_factor", "explicit err", "explicit wall",
+           f"explicit/{who}", "interpolated"], rows,
+          note=f"explicit/{who} = wall-time ratio (> 1: {who} faster); interpolated: explicit wall time "
+               f"interpolated (log-log in error) to exactly {who}'s error. dt_factor 1 with an explicit error below "
+               f"{who}'s means the explicit scheme is already more accurate at its stable step.")
+
+
+CVODE_KEYS = ("steps", "rhs_evals", "jac_evals", "lin_setups", "err_test_fails", "newton_iters", "newton_fails",
+              "root_evals", "events", "reinits")
 
 
 # ================================================================ case 1
@@ -526,6 +587,28 @@ def bench_column(B, sizes):
                    "centre at t = 5 s (the settled column has all centres above R = 0.01 m minus the bottom "
                    "penetration)")
 
+        # ---- plain CVODE + KLU of the same ODE (cvode_ref: 2 states per
+        # sphere, gap-scaled error weights)
+        S["cvode"] = []
+        rows = []
+        for rtol in ((1e-4, 1e-6, 1e-8) if N <= 100 else (1e-6,)):
+            ff = os.path.join(B.work, f"col{N}_cvode{rtol:.0e}.txt")
+            x = B.cvode_run(["column"] + column_args(N) + [rtol, ff], repeat=3 if N <= 10 else 1, timeout=900)
+            if not x["ok"]:
+                rows.append([f"{rtol:.0e}", "FAILED", x.get("stderr", "")[:70]])
+                continue
+            err = float(np.max(np.abs(np.loadtxt(ff, ndmin=1) - F)) / scale)
+            S["cvode"].append({"rtol": rtol, "ok": True, "error": err, "wall": x["wall_time"], "rss_kb": x["rss_kb"],
+                               "stats": {k: x[k] for k in CVODE_KEYS if k in x}})
+            rows.append([f"{rtol:.0e}", fmt_t(x["wall_time"]), x["steps"], x["rhs_evals"], x["jac_evals"],
+                         x["lin_setups"], x["events"], x["reinits"], x["err_test_fails"], fmt_mb(x["rss_kb"]),
+                         fmt_e(err), f"{1e3 * x['wall_time'] / max(1, x['steps']):.3f}"])
+        table(f"N = {N}: plain CVODE + KLU (cvode_ref, 2 states per sphere, gap-scaled weights)",
+              ["rtol", "wall", "steps", "RHS", "Jac", "LU", "events", "restarts", "err fails", "peak RSS",
+               "max rel err", "wall/step [ms]"], rows,
+              note="error weights 1/(rtol m g/k) on heights, 1/(rtol (|v| + g sqrt(m/k))) on velocities "
+                   "(bench/cvode_ref.c)")
+
         # ---- explicit scan
         factors = [1, 0.5, 0.2, 0.1, 0.05, 0.02]
         if N <= 100:
@@ -547,6 +630,8 @@ def bench_column(B, sizes):
                "wall/N [ms]"], rows)
         S["equal"] = equal_accuracy(S["ricochet"], S["explicit"])
         print_equal(f"Column N = {N}", S["equal"], "Target at N = 1000: explicit/ricochet >= 10.")
+        S["equal_cvode"] = equal_accuracy(S["cvode"], S["explicit"])
+        print_equal(f"Column N = {N}, plain CVODE", S["equal_cvode"], "", who="cvode_ref")
         res["sizes"][str(N)] = S
 
     rows = []
@@ -565,16 +650,456 @@ def bench_column(B, sizes):
     return res
 
 
+# ================================================================ case 3
+# Quasi-static benchmarks: the regime implicit integration is for.
+QS = dict(R=0.01, m=0.01, k=1.0e5, zeta=1.0, hold=1.0)
+
+
+def settled_heights(N, p=QS):
+    """Static state under G: contact j (0 = floor) carries (N - j) m G, so
+    its penetration is (N - j) m G / k."""
+    z, zz = [], 0.0
+    for i in range(N):
+        zz += (p["R"] if i == 0 else 2 * p["R"]) - (N - i) * p["m"] * G / p["k"]
+        z.append(zz)
+    return z
+
+
+SMOOTH_POINTS = 20000  # samples of the smooth ramp in the deck's /FUNCT
+
+
+def ramp_deck(N, T, rtol, p=QS, shape="linear"):
+    """The settled column, gravity ramped G -> 2 G over T (a /GRAV with a
+    /FUNCT time function), held for p["hold"] s. shape "smooth": the ramp
+    1 + (1 - cos(pi t/T))/2, sampled at SMOOTH_POINTS + 1 points (the linear
+    interpolation departs from it by at most pi^2/(16 n^2) = 1.5e-9 of G)."""
+    R, m, k = p["R"], p["m"], p["k"]
+    tend = T + p["hold"]
+    d = Deck(f"bench: settled column of {N} spheres, gravity ramped G -> 2 G over {T:g} s ({shape})")
+    d.funct(1, [0.0, 1.0], [0.0, k], title="linear load curve")
+    if shape == "smooth":
+        ts = [T * i / SMOOTH_POINTS for i in range(SMOOTH_POINTS + 1)]
+        d.funct(2, ts + [T + 1.0e4], [1.0 + 0.5 * (1.0 - math.cos(math.pi * t / T)) for t in ts] + [2.0],
+                title=f"gravity factor: 1 + (1 - cos(pi t / {T:g})) / 2, then 2")
+    else:
+        d.funct(2, [0.0, T, T + 1.0e4], [1.0, 2.0, 2.0], title=f"gravity factor: 1 -> 2 over {T:g} s, then 2")
+    z = settled_heights(N, p)
+    d.nodes([(i + 1, 0.0, 0.0, z[i]) for i in range(N)])
+    J = [0.4 * m * R * R] * 3
+    for i in range(N):
+        d.rbody(i + 1, i + 1, m, J, title=f"sphere {i + 1}")
+    for i in range(N):
+        d.sphere(i + 1, i + 1, (0.0, 0.0, z[i]), R, title=f"sphere {i + 1}")
+    floor = N + 1
+    d.plane(floor, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor")
+    d.grav_fct(1, "Z", -G, 2)
+    c_floor = 2 * p["zeta"] * math.sqrt(k * m)
+    c_ss = 2 * p["zeta"] * math.sqrt(k * m / 2)
+    d.type6(1, 1, floor, 1, visc=c_floor, title="floor contact")
+    for i in range(1, N):
+        d.type6(i + 1, i, i + 1, 1, visc=c_ss, title=f"spheres {i}-{i + 1}")
+    d.run(tend, tend / 20)
+    d.solver(rtol=rtol, atol_pos=1e-3 * rtol, atol_vel=rtol, atol_energy=rtol, max_steps=10**7)
+    return d
+
+
+def ramp_args(N, T, p=QS):
+    return [N, p["R"], p["m"], p["k"], p["zeta"], T, T + p["hold"]]
+
+
+def equal_rows(B, label, S, who_runs, who):
+    eq = equal_accuracy(S[who_runs], S["explicit"])
+    print_equal(label, eq, "", who=who)
+    return eq
+
+
+def bench_ramp(B, sizes, ramps, shape="linear"):
+    p = QS
+    res = {"params": dict(p), "shape": shape, "cases": {}}
+    sub = {"linear": ("ramp", "rampref"), "smooth": ("sramp", "srampref")}[shape]
+    print(f"== Case 3a: quasi-static column: the settled column (R = {p['R']} m, m = {p['m']} kg, k = {p['k']:.0e} "
+          f"N/m, critically damped contacts), gravity ramped G -> 2 G over T ("
+          + ("linear" if shape == "linear" else "smooth: 1 + (1 - cos(pi t/T))/2") + f"), held {p['hold']} s ==\n")
+    for N in sizes:
+        scale = N * p["m"] * G
+        F_stat = np.array([2.0 * (N - j) * p["m"] * G for j in range(N)])
+        for T in ramps:
+            key = f"N{N}_T{T:g}" + ("" if shape == "linear" else "_smooth")
+            S = {"N": N, "T": T, "ricochet": [], "cvode": [], "explicit": []}
+            # ---- reference: RK4 (no events in this problem) at h and 2h
+            h = 5e-5
+            refs = {}
+            for tag, hh in (("ref", h), ("ref2h", 2 * h)):
+                ff = os.path.join(B.work, f"ramp{key}_{tag}.txt")
+                x = B.explicit_run([sub[1]] + ramp_args(N, T) + [hh, ff])
+                if not x["ok"]:
+                    sys.exit(f"bench: RK4 reference failed: {x}")
+                x["F"] = np.loadtxt(ff, ndmin=1)
+                refs[tag] = x
+            F = refs["ref"]["F"]
+            rf = refs["ref"]
+            unc = float(np.max(np.abs(F - refs["ref2h"]["F"])) / scale)
+            stat_dev = float(np.max(np.abs(F - F_stat)) / scale)
+            S["reference"] = {"h": h, "wall": rf["wall_time"], "events": rf["events"], "uncertainty": unc,
+                              "statics_deviation": stat_dev, "force_bottom": rf["force_bottom"],
+                              "max_speed": rf["max_speed"]}
+            table(f"N = {N}, ramp over T = {T:g} s (+ {p['hold']:g} s hold): RK4 reference, h = {h:g} s",
+                  ["events", "bottom force [N]", "2 N m g [N]", "max speed [m/s]", "uncertainty", "|ref - statics|",
+                   "wall"],
+                  [[rf["events"], f"{rf['force_bottom']:.6f}", f"{2 * scale:.6f}", f"{rf['max_speed']:.2e}",
+                    f"{unc:.1e}", f"{stat_dev:.1e}", fmt_t(rf["wall_time"])]],
+                  note="uncertainty = max |F(h) - F(2h)| / (N m g); |ref - statics| = max |F_ref - 2 (N - j) m g| / "
+                       "(N m g): the dynamics left at the end of the hold (the slow modes rung by the ramp, "
+                       "by its kinks when linear), physics, not integration error")
+
+            # ---- ricochet
+            rows = []
+            rtols = (1e-4, 1e-6) if B.quick else (1e-4, 1e-6, 1e-8)
+            for rtol in rtols:
+                r = B.ricochet_run(ramp_deck(N, T, rtol, shape=shape), f"ramp{key}_rtol{rtol:.0e}", timeout=1800,
+                                   time_repeat=1 if N <= 100 else 0)
+                if "stats" not in r:
+                    rows.append([f"{rtol:.0e}", "FAILED", fmt_t(r["elapsed"]), r["stderr"][:70]])
+                    S["ricochet"].append({"rtol": rtol, "ok": False, "stderr": r["stderr"]})
+                    continue
+                st = r["stats"]
+                complete = r["ok"] and abs(float(r["t"][-1]) - (T + p["hold"])) < 1e-9
+                fn = r["fn"][-1, :]
+                err = float(np.max(np.abs(fn - F)) / scale) if complete else float("nan")
+                es = float(np.max(np.abs(fn - F_stat)) / scale) if complete else float("nan")
+                S["ricochet"].append({"rtol": rtol, "ok": complete, "error": err, "error_statics": es,
+                                      "wall": r["wall"], "wall_src": r["wall_src"], "cli_wall": r["cli_wall"],
+                                      "elapsed": r["elapsed"], "rss_kb": r["rss_kb"], "stats": st})
+                rows.append([f"{rtol:.0e}", fmt_t(r["wall"]) + ("" if r["wall_src"] == "rc_time" else " (CLI)"),
+                             st.get("steps"), st.get("rhs_evals"), st.get("jac_evals"), st.get("lin_setups"),
+                             st.get("events"), st.get("reinits"), st.get("err_test_fails"), fmt_e(err), fmt_e(es)])
+            table(f"N = {N}, T = {T:g} s: ricochet (atol_pos = 1e-3 rtol m, atol_vel = rtol m/s)",
+                  ["rtol", "wall", "steps", "RHS", "Jac", "LU", "events", "restarts", "err fails", "err vs RK4",
+                   "err vs statics"], rows,
+                  note="wall: rc_time (no output file), (CLI): the CLI's stats_wall_time (N = 1000); err = max over "
+                       "contacts |F - F_ref| / (N m g) at the end of the hold")
+
+            # ---- plain CVODE
+            rows = []
+            rtols = (1e-2, 1e-4, 1e-6) if B.quick else (1e-2, 1e-3, 1e-4, 1e-6, 1e-8)
+            for rtol in rtols:
+                ff = os.path.join(B.work, f"ramp{key}_cvode{rtol:.0e}.txt")
+                x = B.cvode_run([sub[0]] + ramp_args(N, T) + [rtol, ff], timeout=1800)
+                if not x["ok"]:
+                    rows.append([f"{rtol:.0e}", "FAILED", x.get("stderr", "")[:70]])
+                    continue
+                Fx = np.loadtxt(ff, ndmin=1)
+                err = float(np.max(np.abs(Fx - F)) / scale)
+                es = float(np.max(np.abs(Fx - F_stat)) / scale)
+                S["cvode"].append({"rtol": rtol, "ok": True, "error": err, "error_statics": es,
+                                   "wall": x["wall_time"], "rss_kb": x["rss_kb"],
+                                   "stats": {k: x[k] for k in CVODE_KEYS if k in x}})
+                rows.append([f"{rtol:.0e}", fmt_t(x["wall_time"]), x["steps"], x["rhs_evals"], x["jac_evals"],
+                             x["lin_setups"], x["err_test_fails"], fmt_e(err), fmt_e(es)])
+            table(f"N = {N}, T = {T:g} s: plain CVODE + KLU (cvode_ref, gap-scaled weights)",
+                  ["rtol", "wall", "steps", "RHS", "Jac", "LU", "err fails", "err vs RK4", "err vs statics"], rows)
+
+            # ---- explicit
+            rows = []
+            factors = (1, 0.5) if B.quick else (1, 0.5, 0.2, 0.1)
+            for f in factors:
+                ff = os.path.join(B.work, f"ramp{key}_cd{f:g}.txt")
+                x = B.explicit_run([sub[0]] + ramp_args(N, T) + [f, ff], repeat=1)
+                if not x["ok"]:
+                    rows.append([f"{f:g}", "FAILED"])
+                    continue
+                Fx = np.loadtxt(ff, ndmin=1)
+                err = float(np.max(np.abs(Fx - F)) / scale)
+                es = float(np.max(np.abs(Fx - F_stat)) / scale)
+                S["explicit"].append({"dt_factor": f, "dt": x["dt"], "steps": x["steps"], "wall": x["wall_time"],
+                                      "error": err, "error_statics": es, "events": x["events"]})
+                rows.append([f"{f:g}", f"{x['dt']:.3e}", fmt_t(x["wall_time"]), x["steps"], x["events"], fmt_e(err),
+                             fmt_e(es)])
+            table(f"N = {N}, T = {T:g} s: explicit central difference", ["dt_factor", "dt [s]", "wall", "steps",
+                  "events", "err vs RK4", "err vs statics"], rows)
+            S["equal"] = equal_rows(B, f"Ramp N = {N}, T = {T:g} s", S, "ricochet", "ricochet")
+            S["equal_cvode"] = equal_rows(B, f"Ramp N = {N}, T = {T:g} s, plain CVODE", S, "cvode", "cvode_ref")
+            S["equal_reverse"] = equal_reverse(f"Ramp N = {N}, T = {T:g} s", S["explicit"],
+                                               {"ricochet": S["ricochet"], "cvode_ref": S["cvode"]})
+            res["cases"][key] = S
+    return res
+
+
+# -------------------------------------------------------------- stick-slip
+SS = dict(m=1.0, R=0.05, k=1.0e6, ks=100.0, V=0.01, mus=0.4, muk=0.25, v1=2.8e-6, v2=5.6e-6, visf=1.0e6,
+          manchor=1.0e12, L0=1.0, tend=100.0)
+
+
+def ss_C(p=SS):
+    """Adhesion coefficient of the viscous law: C = sqrt(2 VISF K m_red), the
+    floor fixed (m_red = m)."""
+    return math.sqrt(2.0 * p["visf"] * p["k"] * p["m"])
+
+
+def ss_mu(s, p=SS):
+    """Renard's law with mu_max = mu_s, mu_min = mu_d = mu_k: a two-level law
+    with a cubic drop between V_cr1 and V_cr2."""
+    if s <= p["v1"]:
+        return p["mus"]
+    if s < p["v2"]:
+        w = (s - p["v1"]) / (p["v2"] - p["v1"])
+        return p["mus"] + (p["muk"] - p["mus"]) * (3.0 - 2.0 * w) * w * w
+    return p["muk"]
+
+
+def ss_deck(tend, rtol, p=SS):
+    """A locked-rotation sphere (the block) at its static penetration on a
+    fixed floor; a linear spring ks from its centre to an anchor body (1e12 kg,
+    along x only, /INIVEL V) moving at V; /FRICTION Renard two-level, viscous
+    form (as validation/frc_stick_slip, whose belt is here the anchor)."""
+    M, R, K = p["m"], p["R"], p["k"]
+    z0 = R - M * G / K
+    d = Deck("bench: block dragged across a floor through a spring: stick-slip")
+    d.funct(1, [0.0, 1.0], [0.0, K], title="linear load curve k = 1e6 N/m")
+    d.nodes([(1, 0.0, 0.0, z0), (2, -p["L0"], 0.0, z0)])
+    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, grnod=1, title="block 1 kg")
+    d.rbody(2, 2, p["manchor"], [p["manchor"]] * 3, grnod=2, title="anchor 1e12 kg")
+    d.sphere(1, 1, (0.0, 0.0, z0), R, title="block sphere")
+    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0 (fixed)")
+    d.grnod(1, [1], title="block")
+    d.grnod(2, [2], title="anchor")
+    d.bcs(1, 1, "010 111", title="block held in y, no rotation")
+    d.bcs(2, 2, "011 111", title="anchor moves along x only")
+    d.inivel(1, (p["V"], 0.0, 0.0), 2)
+    d.grav(1, "Z", -G, 1)  # on the block only
+    d.type6(1, 1, 2, 1, visc=2.0 * 0.5 * math.sqrt(K * M), title="contact (no TYPE6 friction)")
+    d.friction(1, ifric=3, iform=1, c=(p["mus"], p["muk"], p["mus"], p["muk"], p["v1"], p["v2"]), visf=p["visf"],
+               title="Renard two-level: mu_s 0.4, mu_k 0.25, V_cr 2.8, 5.6 um/s; viscous VISF 1e6")
+    d.spring(1, 2, (-p["L0"], 0.0, z0), 1, (0.0, 0.0, z0), a=p["ks"], title="spring 100 N/m to the anchor")
+    d.run(tend, 0.5)
+    d.solver(rtol=rtol, atol_pos=1e-3 * rtol, atol_vel=1e-2 * rtol, atol_energy=rtol, max_steps=10**8)
+    return d
+
+
+def ss_reference(tend, rtol=1e-11, p=SS):
+    """Independent integration (scipy Radau) of m x'' = ks (V t - x) + F,
+    F = -C u while C |u| < mu(|u|) m g (stick: adhesion creep), F = -mu(|u|) m g
+    sign(u) once saturated (slip); terminal events at the switches and at
+    |u| = V_cr1, V_cr2 (no step across a breakpoint of mu). Returns the
+    switches [(kind, t, x)] and the wall time."""
+    from scipy.integrate import solve_ivp
+    M, KS, V, C, FN = p["m"], p["ks"], p["V"], ss_C(p), p["m"] * G
+
+    def f_stick(t, y):
+        return [y[1], (KS * (V * t - y[0]) - C * y[1]) / M]
+
+    def f_slip(t, y):
+        return [y[1], (KS * (V * t - y[0]) - ss_mu(abs(y[1]), p) * FN * np.sign(y[1])) / M]
+
+    def ev(fun, direction):
+        fun.terminal, fun.direction = True, direction
+        return fun
+
+    def sat(t, y):
+        return C * abs(y[1]) - ss_mu(abs(y[1]), p) * FN
+
+    def at(v):
+        return lambda t, y: abs(y[1]) - v
+
+    t0 = time.time()
+    t, y, slip, reg, out = 0.0, np.array([0.0, 0.0]), False, 0, []
+    while t < tend:
+        if not slip:
+            evs, f = [ev(sat, 1)], f_stick
+        elif reg == 0:
+            evs, f = [ev(sat, -1), ev(at(p["v1"]), 1)], f_slip
+        elif reg == 1:
+            evs, f = [ev(at(p["v1"]), -1), ev(at(p["v2"]), 1)], f_slip
+        else:
+            evs, f = [ev(at(p["v2"]), -1)], f_slip
+        s = solve_ivp(f, (t, tend), y, method="Radau", rtol=rtol, atol=[1e-14, 1e-14], events=evs)
+        if s.status != 1:
+            break
+        k = [j for j in range(len(evs)) if len(s.t_events[j])][0]
+        t, y = s.t_events[k][0], s.y_events[k][0].copy()
+        if not slip:
+            slip, reg = True, 0
+            out.append(("slip", t, y[0]))
+        elif reg == 0:
+            if k == 0:
+                slip = False
+                out.append(("stick", t, y[0]))
+            else:
+                reg = 1
+        elif reg == 1:
+            reg = 0 if k == 0 else 2
+        else:
+            reg = 1
+    return out, time.time() - t0
+
+
+def ss_classical(p=SS):
+    """Classical two-level cycle (rigid stick; validation/frc_stick_slip):
+    slip duration (pi + 2 atan(V/(w D)))/w, period that + 2 D/V, slip
+    distance 2 D + V t_slip, with w = sqrt(ks/m), D = (mu_s - mu_k) m g/ks."""
+    w = math.sqrt(p["ks"] / p["m"])
+    D = (p["mus"] - p["muk"]) * p["m"] * G / p["ks"]
+    ts = (math.pi + 2.0 * math.atan(p["V"] / (w * D))) / w
+    return {"slip_time": ts, "period": ts + 2.0 * D / p["V"], "slip_distance": 2.0 * D + p["V"] * ts}
+
+
+def ss_measures(sw, ref):
+    """sw, ref: switch lists [(kind, t, x)]. Returns the mean period (first
+    to last slip onset), the mean slip distance, and the errors against ref:
+    period (relative), slip distance (max over cycles, relative to the mean
+    reference distance), switch times (max |t - t_ref| / period_ref); NaN when
+    the switch sequences differ."""
+    def stats(s):
+        slips = [(t, x) for k, t, x in s if k == "slip"]
+        sticks = [(t, x) for k, t, x in s if k == "stick"]
+        n = min(len(slips), len(sticks))
+        per = (slips[-1][0] - slips[0][0]) / (len(slips) - 1) if len(slips) > 1 else float("nan")
+        dist = [sticks[i][1] - slips[i][1] for i in range(n)]
+        return per, dist, len(slips)
+    per, dist, ns = stats(sw)
+    pr, dr, nr = stats(ref)
+    out = {"period": per, "slip_distance": float(np.mean(dist)) if dist else float("nan"), "slips": ns}
+    if [k for k, _, _ in sw] != [k for k, _, _ in ref]:
+        out.update(period_err=float("nan"), dist_err=float("nan"), time_err=float("nan"), error=float("nan"))
+        return out
+    dmean = float(np.mean(dr))
+    out["period_err"] = abs(per - pr) / pr
+    out["dist_err"] = max(abs(a - b) for a, b in zip(dist, dr)) / dmean
+    out["time_err"] = max(abs(a[1] - b[1]) for a, b in zip(sw, ref)) / pr
+    out["error"] = max(out["period_err"], out["dist_err"], out["time_err"])
+    return out
+
+
+def ricochet_switches(r):
+    """fric_saturate (slip) / fric_unsaturate (stick) events with the block's
+    x at the event records."""
+    out = []
+    rec = np.where(r["at_event"] == 1)[0]
+    for t, kind in zip(r["ev_t"], r["ev_kind"]):
+        if kind not in ("fric_saturate", "fric_unsaturate") or len(rec) == 0:
+            continue
+        idx = rec[np.argmin(np.abs(r["t"][rec] - t))]
+        out.append(("slip" if kind == "fric_saturate" else "stick", float(t), float(r["pos"][idx, 0, 0])))
+    return out
+
+
+def bench_stickslip(B):
+    p = dict(SS)
+    if B.quick:
+        p["tend"] = 20.0
+    C = ss_C(p)
+    res = {"params": p, "C": C, "ricochet": [], "explicit": []}
+    cl = ss_classical(p)
+    print(f"== Case 3b: stick-slip: block (m = {p['m']} kg) dragged across a floor through a spring ks = {p['ks']:g} "
+          f"N/m whose anchor moves at V = {p['V']} m/s, {p['tend']:g} s; Renard two-level friction mu_s = {p['mus']}, "
+          f"mu_k = {p['muk']} (drop between {p['v1']:.1e} and {p['v2']:.1e} m/s), viscous form C = {C:.4g} N s/m ==\n")
+    ref, rwall = ss_reference(p["tend"], p=p)
+    mref = ss_measures(ref, ref)
+    res["reference"] = {"switches": ref, "wall": rwall, **{k: mref[k] for k in ("period", "slip_distance", "slips")}}
+    unc = None
+    if not B.quick:
+        ref2, _ = ss_reference(p["tend"], rtol=1e-9, p=p)
+        unc = ss_measures(ref2, ref)["error"]
+    res["reference"]["uncertainty"] = unc
+    table("Reference: scipy Radau (rtol 1e-11) of the same law, event-located; classical two-level cycle",
+          ["slips", "period [s]", "slip distance [m]", "classical period", "classical slip distance", "uncertainty",
+           "wall"],
+          [[mref["slips"], f"{mref['period']:.9f}", f"{mref['slip_distance']:.9f}", f"{cl['period']:.9f}",
+            f"{cl['slip_distance']:.9f}", fmt_e(unc), fmt_t(rwall)]],
+          note="uncertainty: the error measure of a rtol 1e-9 run against it; the classical cycle (rigid stick, "
+               "sharp drop) differs from the regularised law by ~1e-3 and from the first cycle (start at rest)")
+
+    rows = []
+    for rtol in (1e-6, 1e-8, 1e-10):
+        r = B.ricochet_run(ss_deck(p["tend"], rtol, p), f"stickslip_rtol{rtol:.0e}", timeout=900, time_repeat=3)
+        if "stats" not in r:
+            rows.append([f"{rtol:.0e}", "FAILED", r["stderr"][:70]])
+            res["ricochet"].append({"rtol": rtol, "ok": False, "stderr": r["stderr"]})
+            continue
+        st = r["stats"]
+        m = ss_measures(ricochet_switches(r), ref)
+        res["ricochet"].append({"rtol": rtol, "ok": r["ok"], "wall": r["wall"], "cli_wall": r["cli_wall"],
+                                "stats": st, **m})
+        rows.append([f"{rtol:.0e}", fmt_t(r["wall"]), st.get("steps"), st.get("rhs_evals"), st.get("jac_evals"),
+                     st.get("lin_setups"), st.get("events"), st.get("reinits"), m["slips"], f"{m['period']:.7f}",
+                     fmt_e(m["period_err"]), fmt_e(m["dist_err"]), fmt_e(m["time_err"])])
+    table("stick-slip: ricochet (atol_pos = 1e-3 rtol m, atol_vel = 1e-2 rtol m/s)",
+          ["rtol", "wall", "steps", "RHS", "Jac", "LU", "events", "restarts", "slips", "period [s]", "period err",
+           "slip dist err", "switch time err"], rows,
+          note="wall: rc_time (no output file); errors against the reference: period and slip distance relative, "
+               "switch times max |t - t_ref| / period")
+
+    # plain CVODE of the same 1-D law (cvode_ref stickslip: 2 states, dense
+    # 2 x 2, the same tolerances as the ricochet deck, a restart at every
+    # switch)
+    res["cvode"] = []
+    rows = []
+    for rtol in (1e-6, 1e-8, 1e-10):
+        ff = os.path.join(B.work, f"stickslip_cvode{rtol:.0e}.txt")
+        x = B.cvode_run(["stickslip", p["m"], p["ks"], C, p["mus"], p["muk"], p["v1"], p["v2"], p["V"], p["tend"],
+                         rtol, ff], repeat=3)
+        if not x["ok"]:
+            rows.append([f"{rtol:.0e}", "FAILED", x.get("stderr", "")[:70]])
+            continue
+        sw = []
+        with open(ff) as fh:
+            for ln in fh:
+                k, t, xx = ln.split()
+                sw.append((k, float(t), float(xx)))
+        m = ss_measures(sw, ref)
+        res["cvode"].append({"rtol": rtol, "ok": True, "wall": x["wall_time"],
+                             "stats": {k: x[k] for k in CVODE_KEYS if k in x}, **m})
+        rows.append([f"{rtol:.0e}", fmt_t(x["wall_time"]), x["steps"], x["rhs_evals"], x["jac_evals"],
+                     x["lin_setups"], x["events"], x["reinits"], m["slips"], f"{m['period']:.7f}",
+                     fmt_e(m.get("period_err")), fmt_e(m.get("dist_err")), fmt_e(m.get("time_err"))])
+    table("stick-slip: plain CVODE (cvode_ref stickslip, 2 states, atol_x = 1e-3 rtol m, atol_u = 1e-2 rtol m/s)",
+          ["rtol", "wall", "steps", "RHS", "Jac", "LU", "events", "restarts", "slips", "period [s]", "period err",
+           "slip dist err", "switch time err"], rows)
+
+    rows = []
+    for f in ((1, 0.5) if B.quick else (1, 0.5, 0.25, 0.1, 0.05)):
+        ff = os.path.join(B.work, f"stickslip_cd{f:g}.txt")
+        x = B.explicit_run(["stickslip", p["m"], p["ks"], C, p["mus"], p["muk"], p["v1"], p["v2"], p["V"], p["tend"],
+                            f, ff])
+        if not x["ok"]:
+            rows.append([f"{f:g}", "FAILED"])
+            continue
+        sw = []
+        with open(ff) as fh:
+            for ln in fh:
+                k, t, xx = ln.split()
+                sw.append((k, float(t), float(xx)))
+        m = ss_measures(sw, ref)
+        res["explicit"].append({"dt_factor": f, "dt": x["dt"], "steps": x["steps"], "wall": x["wall_time"], **m})
+        rows.append([f"{f:g}", f"{x['dt']:.3e}", fmt_t(x["wall_time"]), x["steps"], m["slips"], f"{m['period']:.7f}",
+                     fmt_e(m["period_err"]), fmt_e(m["dist_err"]), fmt_e(m["time_err"])])
+    table("stick-slip: explicit central difference (stable step ~ 2 m / C: the adhesion is a stiff damper)",
+          ["dt_factor", "dt [s]", "wall", "steps", "slips", "period [s]", "period err", "slip dist err",
+           "switch time err"], rows)
+    res["equal"] = equal_accuracy(res["ricochet"], res["explicit"])
+    print_equal("Stick-slip", res["equal"], "error = max(period, slip distance, switch time errors)")
+    res["equal_cvode"] = equal_accuracy(res["cvode"], res["explicit"])
+    print_equal("Stick-slip, plain CVODE", res["equal_cvode"], "", who="cvode_ref")
+    res["equal_reverse"] = equal_reverse("Stick-slip", res["explicit"],
+                                         {"ricochet": res["ricochet"], "cvode_ref": res["cvode"]})
+    return res
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--quick", action="store_true", help="fewer variants (smoke test)")
-    ap.add_argument("--only", choices=["drop", "column"])
+    ap.add_argument("--only", choices=["drop", "column", "quasi", "ramp", "stickslip"],
+                    help="quasi = ramp + stickslip")
     ap.add_argument("--sizes", default="10,100,1000")
+    ap.add_argument("--qsizes", default=None, help="column sizes of the ramp (default 100,1000; --quick: 100)")
+    ap.add_argument("--ramps", default="20,100", help="ramp durations [s]")
+    ap.add_argument("--ramp-shape", default="linear", choices=["linear", "smooth", "both"],
+                    help="linear (the default) or smooth: 1 + (1 - cos(pi t/T))/2, no kink at either end")
     ap.add_argument("--json", default=None)
     a = ap.parse_args()
     B = Bench(a.build, a.quick)
-    for exe in (B.ricochet, B.rc_time, B.explicit, B.peakrss):
+    for exe in (B.ricochet, B.rc_time, B.explicit, B.peakrss, B.cvode):
         if not os.access(exe, os.X_OK):
             sys.exit(f"bench: {exe} missing (run `make bench`, or `make all` then `bash bench/run.sh build`)")
     lib = os.path.join(B.build, "libricochet.a")
@@ -588,6 +1113,13 @@ def main():
         B.results["drop"] = bench_drop(B)
     if a.only in (None, "column"):
         B.results["column"] = bench_column(B, [int(s) for s in a.sizes.split(",") if s])
+    if a.only in (None, "quasi", "ramp"):
+        qs = a.qsizes or ("100" if a.quick else "100,1000")
+        for shape in (("linear", "smooth") if a.ramp_shape == "both" else (a.ramp_shape,)):
+            B.results["ramp" if shape == "linear" else "ramp_smooth"] = bench_ramp(
+                B, [int(s) for s in qs.split(",") if s], [float(s) for s in a.ramps.split(",") if s], shape)
+    if a.only in (None, "quasi", "stickslip"):
+        B.results["stickslip"] = bench_stickslip(B)
     B.results["bench_wall"] = time.time() - t0
     path = a.json or os.path.join(B.work, "results.json")
     with open(path, "w") as f:

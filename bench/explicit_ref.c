@@ -34,6 +34,17 @@
  *       one sphere (mass m) whose lowest point starts h above a fixed floor,
  *       at rest, gravity 9.81 m/s^2 downwards. Prints per bounce the impact
  *       and rebound velocities (located to second order, see below).
+ *   explicit_ref ramp N R m k zeta t_ramp t_end dt_factor [FORCES_FILE]
+ *   explicit_ref rampref N R m k zeta t_ramp t_end h [FORCES_FILE]
+ *       quasi-static column: the column below, started at its static state
+ *       under G (contact j carries (N - j) m G, at rest), gravity ramped
+ *       linearly G -> 2 G over t_ramp and held until t_end; central
+ *       difference (ramp) or the RK4 reference (rampref, no step across the
+ *       kink at t_ramp).
+ *   explicit_ref sramp | srampref ...  (same arguments)
+ *       the same with the smooth ramp G (1 + (1 - cos(pi t / t_ramp)) / 2).
+ *   explicit_ref stickslip m ks C mu_s mu_k v1 v2 V t_end dt_factor [EVENTS_FILE]
+ *       a block dragged across a floor through a spring (see run_stickslip)
  *   explicit_ref column N R m k zeta gap t_end dt_factor [FORCES_FILE]
  *       N spheres of radius R, mass m stacked on a floor, gap `gap` between
  *       neighbours and above the floor, at rest, gravity. Floor contact
@@ -46,6 +57,7 @@
  * peak_rss_kb is getrusage(RUSAGE_SELF).ru_maxrss.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DEFAULT_SOURCE /* M_PI */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -56,6 +68,36 @@
 #define GRAV 9.81
 #define SAFETY 0.9
 #define MAX_BOUNCE 1000
+
+/* Quasi-static column ("ramp" and "rampref"): the column starts at its
+ * static state under G (contact j carries (N - j) m G, p_j = (N - j) m G / k,
+ * velocities 0) and gravity is ramped linearly from G to 2 G over t_ramp,
+ * then held. */
+static int settled_start = 0;
+static double ramp_time = 0.0; /* > 0: the ramp */
+static int ramp_smooth = 0;    /* sramp, srampref: (1 - cos(pi t / t_ramp)) / 2 */
+
+static double gravity(double t)
+{
+    if (ramp_time <= 0.0) return GRAV;
+    double s = t <= 0.0 ? 0.0 : (t >= ramp_time ? 1.0 : t / ramp_time);
+    if (ramp_smooth) s = 0.5 * (1.0 - cos(M_PI * s));
+    return GRAV * (1.0 + s);
+}
+
+/* initial heights of the column: gaps, or the static state */
+static void column_start(long N, double R, double m, double k, double gap, double *z)
+{
+    double zz = 0.0;
+    for (long i = 0; i < N; i++) {
+        if (settled_start) {
+            zz += (i == 0 ? R : 2.0 * R) - (double)(N - i) * m * GRAV / k;
+            z[i] = zz;
+        } else {
+            z[i] = R + gap + (double)i * (2.0 * R + gap);
+        }
+    }
+}
 
 static double now(void)
 {
@@ -230,24 +272,25 @@ static int run_column(long N, double R, double m, double k, double zeta, double 
         fprintf(stderr, "explicit_ref: out of memory\n");
         return 4;
     }
-    for (long i = 0; i < N; i++) {
-        z[i] = R + gap + (double)i * (2.0 * R + gap);
-        vh[i] = 0.0;
-    }
+    column_start(N, R, m, k, gap, z);
+    for (long i = 0; i < N; i++) vh[i] = 0.0;
+    if (settled_start) /* the modes of the static state, not events */
+        for (long j = 0; j < N; j++) active[j] = 1;
     long events = 0, force_evals = 0;
 
     const double t0 = now();
     /* v_{-1/2} = v_0 - dt/2 a_0 */
     column_forces(N, k, c0, c1, R, z, vh, f, active, &events);
     for (long i = 0; i < N; i++) {
-        a[i] = -GRAV + (f[i] - (i + 1 < N ? f[i + 1] : 0.0)) / m;
+        a[i] = -gravity(0.0) + (f[i] - (i + 1 < N ? f[i + 1] : 0.0)) / m;
         vh[i] -= 0.5 * dt * a[i];
     }
     for (long n = 0; n < nsteps; n++) {
         column_forces(N, k, c0, c1, R, z, vh, f, active, &events);
         force_evals++;
+        const double gn = gravity((double)n * dt);
         for (long i = 0; i < N; i++) {
-            const double ai = -GRAV + (f[i] - (i + 1 < N ? f[i + 1] : 0.0)) / m;
+            const double ai = -gn + (f[i] - (i + 1 < N ? f[i + 1] : 0.0)) / m;
             vh[i] += dt * ai;
             z[i] += dt * vh[i];
         }
@@ -261,7 +304,7 @@ static int run_column(long N, double R, double m, double k, double zeta, double 
     int finite = 1;
     for (long i = 0; i < N; i++) {
         /* velocity at t_end: v_{n-1/2} + dt/2 a_n */
-        const double ai = -GRAV + (f[i] - (i + 1 < N ? f[i + 1] : 0.0)) / m;
+        const double ai = -gravity(t_end) + (f[i] - (i + 1 < N ? f[i + 1] : 0.0)) / m;
         const double vi = vh[i] + 0.5 * dt * ai;
         vmax = fmax(vmax, fabs(vi));
         ekin += 0.5 * m * vi * vi;
@@ -323,6 +366,7 @@ typedef struct chain {
     double *zt, *vt; /* stage state */
     double *k1z, *k1v, *k2z, *k2v, *k3z, *k3v, *k4z, *k4v;
     double *z1, *v1; /* candidate end of step */
+    double t;        /* time of the stage being evaluated */
     long rhs_evals;
 } chain;
 
@@ -350,10 +394,10 @@ static void chain_rhs(chain *ch, const double *z, const double *v, double *dz, d
         double p, fr;
         chain_contact(ch, j, z, v, &p, &fr);
         const double f = ch->active[j] ? fr : 0.0;
-        if (j > 0) dv[j - 1] = -GRAV + (fbelow - f) / ch->m;
+        if (j > 0) dv[j - 1] = -gravity(ch->t) + (fbelow - f) / ch->m;
         fbelow = f;
     }
-    dv[N - 1] = -GRAV + fbelow / ch->m;
+    dv[N - 1] = -gravity(ch->t) + fbelow / ch->m;
     for (long i = 0; i < N; i++) dz[i] = v[i];
 }
 
@@ -379,14 +423,16 @@ static int chain_any_switch(const chain *ch, const double *z, const double *v)
 }
 
 /* One RK4 step of length h from (ch->z, ch->v) into (ch->z1, ch->v1). */
-static void chain_rk4(chain *ch, double h)
+static void chain_rk4(chain *ch, double t, double h)
 {
     const long N = ch->N;
+    ch->t = t;
     chain_rhs(ch, ch->z, ch->v, ch->k1z, ch->k1v);
     for (long i = 0; i < N; i++) {
         ch->zt[i] = ch->z[i] + 0.5 * h * ch->k1z[i];
         ch->vt[i] = ch->v[i] + 0.5 * h * ch->k1v[i];
     }
+    ch->t = t + 0.5 * h;
     chain_rhs(ch, ch->zt, ch->vt, ch->k2z, ch->k2v);
     for (long i = 0; i < N; i++) {
         ch->zt[i] = ch->z[i] + 0.5 * h * ch->k2z[i];
@@ -397,6 +443,7 @@ static void chain_rk4(chain *ch, double h)
         ch->zt[i] = ch->z[i] + h * ch->k3z[i];
         ch->vt[i] = ch->v[i] + h * ch->k3v[i];
     }
+    ch->t = t + h;
     chain_rhs(ch, ch->zt, ch->vt, ch->k4z, ch->k4v);
     for (long i = 0; i < N; i++) {
         ch->z1[i] = ch->z[i] + h / 6.0 * (ch->k1z[i] + 2.0 * ch->k2z[i] + 2.0 * ch->k3z[i] + ch->k4z[i]);
@@ -421,8 +468,9 @@ static int run_reference(long N, double R, double m, double k, double zeta, doub
     for (size_t q = 0; q < sizeof arr / sizeof arr[0]; q++)
         if (!(*arr[q] = calloc((size_t)N, sizeof(double)))) return 4;
     if (!(ch.active = calloc((size_t)N, sizeof(int)))) return 4;
-    for (long i = 0; i < N; i++) ch.z[i] = R + gap + (double)i * (2.0 * R + gap);
-    for (long j = 0; j < N; j++) ch.active[j] = chain_want(&ch, j, ch.z, ch.v, 0, ch.z, ch.v) && gap <= 0.0;
+    column_start(N, R, m, k, gap, ch.z);
+    for (long j = 0; j < N; j++)
+        ch.active[j] = chain_want(&ch, j, ch.z, ch.v, 0, ch.z, ch.v) && (gap <= 0.0 || settled_start);
     static double t_in[MAX_BOUNCE], v_in[MAX_BOUNCE], t_out[MAX_BOUNCE], v_out[MAX_BOUNCE];
     int nin = 0, nout = 0;
     long events = 0, steps = 0, cuts = 0;
@@ -433,17 +481,20 @@ static int run_reference(long N, double R, double m, double k, double zeta, doub
     while (t < t_end) {
         double hs = fmin(h, t_end - t);
         if (t_end - (t + hs) < 1e-12 * t_end) hs = t_end - t;
-        chain_rk4(&ch, hs);
+        /* no step across the kink of a ramp (keeps the 4th order) */
+        if (ramp_time > 0.0 && t < ramp_time && t + hs > ramp_time) hs = ramp_time - t;
+        if (ramp_time > 0.0 && t < ramp_time && ramp_time - (t + hs) < 1e-12 * ramp_time) hs = ramp_time - t;
+        chain_rk4(&ch, t, hs);
         if (chain_any_switch(&ch, ch.z1, ch.v1)) {
             double lo = 0.0, hi = hs;
             while (hi - lo > ttol) {
                 const double mid = 0.5 * (lo + hi);
-                chain_rk4(&ch, mid);
+                chain_rk4(&ch, t, mid);
                 if (chain_any_switch(&ch, ch.z1, ch.v1)) hi = mid;
                 else lo = mid;
             }
             hs = hi;
-            chain_rk4(&ch, hs);
+            chain_rk4(&ch, t, hs);
             cuts++;
             /* flip the modes that the end of the cut step asks for */
             int want0 = chain_want(&ch, 0, ch.z1, ch.v1, ch.active[0], ch.z, ch.v);
@@ -510,12 +561,117 @@ static int run_reference(long N, double R, double m, double k, double zeta, doub
     return 0;
 }
 
+/* ---- stick-slip: a block dragged across a floor through a spring ---------
+ * 1-D along the floor: block (mass m) at x, velocity u (floor fixed), a
+ * linear spring ks from the block to an anchor moved at the constant speed
+ * V (relaxed at t = 0: spring force ks (V t - x)). The normal force is the
+ * weight m G (the normal direction stays at its static penetration).
+ * Friction: ricochet's viscous (total) law, Iform 1, with Renard's
+ * mu (Ifric 3) taken with mu_max = mu_s and mu_min = mu_d = mu_k:
+ *     F = -sign(u) min(C |u|, mu(|u|) m G),
+ *     mu(s) = mu_s for s <= v1, mu_s + (mu_k - mu_s)(3 - 2w) w^2 with
+ *     w = (s - v1)/(v2 - v1) for v1 < s < v2, mu_k for s >= v2,
+ * i.e. an overdamped adhesion (creep at |u| = F/C) until C |u| reaches the
+ * limit (slip), back when it falls below it (stick). The central-difference
+ * scheme evaluates F with the half-step velocity u_{n-1/2} (as the damping
+ * of the column); stable step: the damped bound with omega = sqrt(ks/m) and
+ * zeta = C / (2 m omega), which is about 2 m / C for the stiff adhesion.
+ * Events: every switch of the branch of the min (slip: C|u| >= mu m G).
+ * The switch time is the step time (first order); the positions at the
+ * switches are written to EVENTS_FILE ("slip t x" / "stick t x").
+ */
+static double renard2(double s, double mus, double muk, double v1, double v2)
+{
+    if (s <= v1) return mus;
+    if (s < v2) {
+        const double w = (s - v1) / (v2 - v1);
+        return mus + (muk - mus) * (3.0 - 2.0 * w) * w * w;
+    }
+    return muk;
+}
+
+static int run_stickslip(double m, double ks, double C, double mus, double muk, double v1, double v2, double V,
+                         double t_end, double dt_factor, const char *events_path)
+{
+    const double omega = sqrt(ks / m), zeta = C / (2.0 * m * omega);
+    const double dt_stable = SAFETY * stable_step(omega, zeta);
+    double dt;
+    const long nsteps = step_count(t_end, dt_factor * dt_stable, &dt);
+    const double Fn = m * GRAV;
+    FILE *fp = NULL;
+    if (events_path && !(fp = fopen(events_path, "w"))) {
+        fprintf(stderr, "explicit_ref: cannot write %s\n", events_path);
+        return 4;
+    }
+    /* keep the switch records in memory, write after the timed loop */
+    long cap = 1024, nrec = 0;
+    double *rec_t = malloc((size_t)cap * sizeof(double)), *rec_x = malloc((size_t)cap * sizeof(double));
+    int *rec_k = malloc((size_t)cap * sizeof(int));
+    if (!rec_t || !rec_x || !rec_k) return 4;
+    long events = 0, slips = 0;
+    int slipping = 0;
+
+    const double t0 = now();
+    double x = 0.0, uh = 0.0, a = 0.0;
+    /* force at t = 0 (at rest, spring relaxed): 0; u_{-1/2} = u_0 - dt/2 a_0 */
+    uh = 0.0;
+    for (long n = 0; n <= nsteps; n++) {
+        const double t = (double)n * dt;
+        const double s = fabs(uh), lim = renard2(s, mus, muk, v1, v2) * Fn;
+        const double visc = C * s;
+        const int sl = visc >= lim;
+        const double ff = (sl ? lim : visc) * (uh > 0.0 ? -1.0 : (uh < 0.0 ? 1.0 : 0.0));
+        a = (ks * (V * t - x) + ff) / m;
+        if (sl != slipping) {
+            events++;
+            slips += sl;
+            slipping = sl;
+            if (nrec == cap) {
+                cap *= 2;
+                rec_t = realloc(rec_t, (size_t)cap * sizeof(double));
+                rec_x = realloc(rec_x, (size_t)cap * sizeof(double));
+                rec_k = realloc(rec_k, (size_t)cap * sizeof(int));
+                if (!rec_t || !rec_x || !rec_k) return 4;
+            }
+            rec_t[nrec] = t;
+            rec_x[nrec] = x;
+            rec_k[nrec++] = sl;
+        }
+        if (n == nsteps) break;
+        uh += dt * a;
+        x += dt * uh;
+    }
+    const double wall = now() - t0;
+    if (!isfinite(x) || !isfinite(uh)) {
+        printf("status=unstable\n");
+        return 3;
+    }
+    printf("case=stickslip\nstatus=ok\n");
+    printf("dt=%.9e\ndt_stable=%.9e\nomega_max=%.9e\nzeta_max=%.9e\n", dt, dt_stable / SAFETY, omega, zeta);
+    printf("steps=%ld\nforce_evals=%ld\nevents=%ld\nslips=%ld\n", nsteps, nsteps + 1, events, slips);
+    printf("wall_time=%.9e\npeak_rss_kb=%ld\nfinal_x=%.12e\nfinal_u=%.12e\n", wall, peak_rss_kb(), x, uh + 0.5 * dt * a);
+    if (fp) {
+        for (long q = 0; q < nrec; q++) fprintf(fp, "%s %.12e %.12e\n", rec_k[q] ? "slip" : "stick", rec_t[q], rec_x[q]);
+        fclose(fp);
+    }
+    free(rec_t);
+    free(rec_x);
+    free(rec_k);
+    return 0;
+}
+
 static void usage(FILE *fp)
 {
     fprintf(fp, "usage: explicit_ref drop m k c h t_end dt_factor\n"
                 "       explicit_ref column N R m k zeta gap t_end dt_factor [FORCES_FILE]\n"
                 "       explicit_ref reference N R m k zeta c_floor gap t_end h law [FORCES_FILE]\n"
-                "           (c_floor < 0: 2 zeta sqrt(k m); law: clip | noreclose)\n");
+                "           (c_floor < 0: 2 zeta sqrt(k m); law: clip | noreclose)\n"
+                "       explicit_ref ramp N R m k zeta t_ramp t_end dt_factor [FORCES_FILE]\n"
+                "       explicit_ref rampref N R m k zeta t_ramp t_end h [FORCES_FILE]\n"
+                "           (the settled column, gravity ramped G -> 2 G over t_ramp, held to t_end;\n"
+                "            central difference / event-located RK4 of the clipped law;\n"
+                "            sramp, srampref: the smooth ramp G (1 + (1 - cos(pi t / t_ramp)) / 2))\n"
+                "       explicit_ref stickslip m ks C mu_s mu_k v1 v2 V t_end dt_factor [EVENTS_FILE]\n");
 }
 
 int main(int argc, char **argv)
@@ -540,6 +696,28 @@ int main(int argc, char **argv)
         }
         return run_reference((long)N, arg(argv, 3), arg(argv, 4), arg(argv, 5), arg(argv, 6), arg(argv, 7),
                              arg(argv, 8), arg(argv, 9), arg(argv, 10), argv[11], argc == 13 ? argv[12] : NULL);
+    }
+    if (argc >= 2 && (!strcmp(argv[1], "ramp") || !strcmp(argv[1], "rampref") || !strcmp(argv[1], "sramp") ||
+                      !strcmp(argv[1], "srampref")) &&
+        (argc == 10 || argc == 11)) {
+        const double N = arg(argv, 2);
+        if (N < 1 || N != floor(N)) {
+            usage(stderr);
+            return 2;
+        }
+        settled_start = 1;
+        ramp_time = arg(argv, 7);
+        ramp_smooth = argv[1][0] == 's';
+        const char *ff = argc == 11 ? argv[10] : NULL;
+        if (!strcmp(argv[1], "ramp") || !strcmp(argv[1], "sramp"))
+            return run_column((long)N, arg(argv, 3), arg(argv, 4), arg(argv, 5), arg(argv, 6), 0.0, arg(argv, 8),
+                              arg(argv, 9), ff);
+        return run_reference((long)N, arg(argv, 3), arg(argv, 4), arg(argv, 5), arg(argv, 6), -1.0, 0.0,
+                             arg(argv, 8), arg(argv, 9), "clip", ff);
+    }
+    if (argc >= 2 && !strcmp(argv[1], "stickslip") && (argc == 12 || argc == 13)) {
+        return run_stickslip(arg(argv, 2), arg(argv, 3), arg(argv, 4), arg(argv, 5), arg(argv, 6), arg(argv, 7),
+                             arg(argv, 8), arg(argv, 9), arg(argv, 10), arg(argv, 11), argc == 13 ? argv[12] : NULL);
     }
     usage(stderr);
     return 2;

@@ -2,7 +2,7 @@
 # Benchmarks (SPEC section 12): `make bench` runs `bash bench/run.sh build`.
 # Builds the bench programs into BUILD (default build/) after `make all`,
 # then runs bench/bench.py. Extra arguments go to bench.py
-# (e.g. --only drop, --sizes 10,100, --quick).
+# (e.g. --only drop, --only quasi, --sizes 10,100, --quick).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${1:-build}
@@ -22,6 +22,8 @@ CFLAGS_BENCH="-std=c11 -O2 -Wall -Wextra -pedantic"
 set -x
 $CC $CFLAGS_BENCH -o "$BUILD/explicit_ref" bench/explicit_ref.c -lm
 $CC $CFLAGS_BENCH -o "$BUILD/peakrss" bench/peakrss.c
+$CC $CFLAGS_BENCH -I/usr/include/suitesparse -o "$BUILD/cvode_ref" bench/cvode_ref.c \
+    -lsundials_cvode -lsundials_nvecserial -lsundials_sunmatrixsparse -lsundials_sunlinsolklu -lklu -lm
 $CC $CFLAGS_BENCH -Iinclude -o "$BUILD/rc_time" bench/rc_time.c "$BUILD/libricochet.a" $LDLIBS
 { set +x; } 2>/dev/null
 exec "$PY" bench/bench.py --build "$BUILD" "$@"

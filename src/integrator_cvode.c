@@ -44,6 +44,7 @@
 typedef struct run_ctx {
     const rc_model *m;
     rc_data *d;
+    double *jsave; /* [nnz] the Jacobian values of the last evaluation */
 } run_ctx;
 
 /* ---- CVODE callbacks ----------------------------------------------- */
@@ -53,16 +54,33 @@ static int cb_rhs(realtype t, N_Vector y, N_Vector ydot, void *ud)
     return rc_assemble_rhs(c->m, c->d, t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
 }
 
-static int cb_jac(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void *ud, N_Vector t1, N_Vector t2,
-                  N_Vector t3)
+/* The Newton matrix I - gamma J formed in place (CVodeSetLinSysFn): J is
+ * evaluated into jsave only when CVODE asks for a new one (jok false), and
+ * A is written in one pass over the fixed pattern, instead of CVODE's copy,
+ * zero and scale-add of the whole sparse matrix at every setup. */
+static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleantype jok, booleantype *jcur,
+                     realtype gamma, void *ud, N_Vector t1, N_Vector t2, N_Vector t3)
 {
     run_ctx *c = ud;
     const rc_model *m = c->m;
-    /* CVODE zeroes the whole matrix: write the pattern every time */
-    sunindextype *cp = SUNSparseMatrix_IndexPointers(J), *ri = SUNSparseMatrix_IndexValues(J);
+    (void)fy;
+    (void)t1;
+    (void)t2;
+    (void)t3;
+    if (!jok) {
+        int st = rc_assemble_jac(m, c->d, t, N_VGetArrayPointer(y), c->jsave);
+        if (st) return st;
+        *jcur = SUNTRUE;
+    } else {
+        *jcur = SUNFALSE;
+    }
+    sunindextype *cp = SUNSparseMatrix_IndexPointers(A), *ri = SUNSparseMatrix_IndexValues(A);
     for (int k = 0; k <= m->ny; k++) cp[k] = (sunindextype)m->jac_colptr[k];
     for (int64_t k = 0; k < m->nnz; k++) ri[k] = (sunindextype)m->jac_rowind[k];
-    return rc_assemble_jac(m, c->d, t, N_VGetArrayPointer(y), SUNSparseMatrix_Data(J));
+    double *a = SUNSparseMatrix_Data(A);
+    for (int64_t k = 0; k < m->nnz; k++) a[k] = -gamma * c->jsave[k];
+    for (int r = 0; r < m->ny; r++) a[m->jac_diag[r]] += 1.0;
+    return 0;
 }
 
 static int cb_root(realtype t, N_Vector y, realtype *g, void *ud)
@@ -438,6 +456,7 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     int *old_mode = NULL, *old_branch = NULL, *old_track = NULL, *old_slip = NULL, *rootdir = NULL;
     double *gbuf = NULL, *g2buf = NULL, *ylook = NULL, *flook = NULL, *bp = NULL, *zeno_t = NULL;
     int *zeno_n = NULL;
+    double *jsave = NULL; /* Jacobian values (run_ctx.jsave) */
     int nbp = 0, ibp = 0;
     SUNMatrix A = NULL;
     SUNLinearSolver LS = NULL;
@@ -458,7 +477,7 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
         st = RC_SET(err, RC_ENOMEM, "out of memory");
         goto done;
     }
-    run_ctx rc = {m, d};
+    run_ctx rc = {m, d, NULL};
     if (SUNContext_Create(NULL, &ctx)) {
         st = RC_SET(err, RC_ESOLVER, "SUNContext_Create failed");
         goto done;
@@ -513,7 +532,11 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     if (m->ewt_rel) CVCHECK(CVodeWFtolerances(cv, cb_ewt), "CVodeWFtolerances");
     else CVCHECK(CVodeSVtolerances(cv, m->rtol, av), "CVodeSVtolerances");
     CVCHECK(CVodeSetLinearSolver(cv, LS, A), "CVodeSetLinearSolver");
-    CVCHECK(CVodeSetJacFn(cv, cb_jac), "CVodeSetJacFn");
+    if (!(rc.jsave = jsave = calloc((size_t)m->nnz + 1, sizeof(double)))) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory for the Jacobian");
+        goto done;
+    }
+    CVCHECK(CVodeSetLinSysFn(cv, cb_linsys), "CVodeSetLinSysFn");
     CVCHECK(CVodeSetMaxOrd(cv, m->max_order), "CVodeSetMaxOrd");
     CVCHECK(CVodeSetMaxNumSteps(cv, m->max_steps), "CVodeSetMaxNumSteps");
     CVCHECK(CVodeSetStabLimDet(cv, SUNTRUE), "CVodeSetStabLimDet");
@@ -710,6 +733,7 @@ done:
     free(roots);
     frame_free(&fb);
     rc_data_free(d);
+    free(jsave);
     return st;
 }
 

@@ -552,7 +552,8 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
         st = RC_SET(err, RC_ENOMEM, "out of memory");
         goto done;
     }
-    if (nbp > 0) CVCHECK(CVodeSetStopTime(cv, bp[0]), "CVodeSetStopTime");
+    /* and never step past the end time (a single step may overshoot tout) */
+    CVCHECK(CVodeSetStopTime(cv, nbp > 0 ? bp[0] : tend), "CVodeSetStopTime");
 
     double e0[RC_NENERGY];
     rc_energy(m, d, t, yd, e0);
@@ -602,8 +603,8 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
             CVCHECK(CVodeReInit(cv, t, y), "CVodeReInit");
             s.reinits++;
             while (ibp < nbp && bp[ibp] <= t) ibp++;
-            /* the next breakpoint, or none (a stop time past the end) */
-            CVCHECK(CVodeSetStopTime(cv, ibp < nbp ? bp[ibp] : 2 * tend + 1), "CVodeSetStopTime");
+            /* the next breakpoint, or the end time */
+            CVCHECK(CVodeSetStopTime(cv, ibp < nbp ? bp[ibp] : tend), "CVodeSetStopTime");
             /* a full-state record at the event (rc_event_records), or the
              * output record when the event falls on an output time */
             const int on_out = tout - t <= 1e-12 * fmax(fabs(t), m->dtout);

@@ -29,3 +29,100 @@ def along(r, tan_th, phi):
     th, n, s, u = frame(tan_th, phi)
     dp = r.pos[:, 0, :] - r.pos[0, 0, :]
     return dp @ s, dp @ u, r.vel[:, 0, :] @ s, r.vel[:, 0, :] @ u, r.vel[:, 0, :] @ n
+
+
+def tolerances(m, g, k, rtol=None, atol_pos=None, atol_vel=None, coord=0.0):
+    """The engine's tolerance setting for a block of mass m on a linear
+    contact k under gravity of magnitude g (docs/theory.md 7, 7.1), as the
+    force band of the slip test and the local error allowances the
+    validation windows use: dict(rtol, fband, dpos, dvel).
+    Derived (rtol None: no /SOLVER card or the defaults mode): rtol 1e-8,
+    F_s = m g (p_F; no speed and no gap, so no p_E), p_s = F_s/k,
+    v_s = p_s sqrt(k/m); positions rtol p_s (absolute only), velocities
+    rtol v_s, F_t rtol F_s = f_band. Given on /SOLVER: f_band = K_t atol_pos
+    (K_t = k), positions rtol |X| + atol_pos (|X| = coord, the largest
+    coordinate of the centre), velocities atol_vel."""
+    if rtol is None:
+        rtol = 1e-8
+        fs = m * g
+        ps = fs / k
+        return dict(rtol=rtol, fband=rtol * fs, dpos=rtol * ps, dvel=rtol * ps * math.sqrt(k / m))
+    return dict(rtol=rtol, fband=k * atol_pos, dpos=rtol * coord + atol_pos, dvel=atol_vel)
+
+
+def force_resolution(b, tol, flim):
+    """Local error allowance of the slip function |F_t - c_t v| - (1 + 1e-6)
+    (Sfric + mu (k p + c_n p')) - f_band from the tolerances of its states:
+    F_t (f_band + rtol F_lim), c_t times the velocity's, mu k times the
+    position's and mu c_n times the velocity's [N]."""
+    return (tol["fband"] + tol["rtol"] * flim + b.ct * tol["dvel"]
+            + b.mu * (b.k * tol["dpos"] + b.cn * tol["dvel"]))
+
+
+def stuck_reference(m, k, cn, mu, g, tan_th, tr, tol, tend):
+    """The stuck case of fric_incline / frc_incline by lib/block_ref.py: a
+    block starting at rest touching the plane at zero gap, gravity ramped by
+    ramp_table(tr). Returns (ref, exact, block): the solve_ivp (LSODA, rtol
+    1e-12) and exact-flow solutions and the model."""
+    import block_ref
+    th = math.atan(tan_th)
+    b = block_ref.Block(m, k, cn, k, mu, 0.0, tol["fband"], g * math.cos(th), g * math.sin(th), ramp_table(tr))
+    ex = b.solve_exact(tend, nsample=32)
+    ex["before"] = b.before
+    ref = b.solve(tend, method="LSODA")
+    ref["before"] = b.before
+    return ref, ex, b
+
+
+def check_stuck(name, r, m, k, cn, mu, g, tan_th, tr, phi, tol, rcval):
+    """The checks `name`.events and .slipped of the stuck case against the
+    reference (README.md of fric_incline). Returns x_s(t), x_u(t), the
+    relative error of the final x_s against x_pl + m g sin(theta)/K_t, that
+    value, and the tolerance across the fall line."""
+    th, n, s, u = frame(tan_th, phi)
+    ref, ex, b = stuck_reference(m, k, cn, mu, g, tan_th, tr, tol, tr + 0.1)
+    load = m * g * math.sin(th)
+    flim = mu * m * g * math.cos(th)
+    dF = force_resolution(b, tol, flim)
+    kinds = [kd for _, kd in ref["events"]]
+    ok = [kd for kd in r.ev_kind] == kinds and [kd for _, kd in ex["events"]] == kinds
+    parts = []
+    t_prev = 0.0
+    for i, ((t_ref, kd), y) in enumerate(zip(ref["events"], ref["before"])):
+        acc = abs(ex["events"][i][0] - t_ref) if i < len(ex["events"]) else float("inf")
+        rate = b.rates(t_ref, y, kd)
+        if kd == "fric_slip":
+            win = dF / abs(rate)
+        else:  # a force error dF held over the slip builds a speed error dF (t - t_slip)/m
+            win = dF * (t_ref - t_prev) / m / abs(rate)
+        win += 10.0 * acc
+        t_prev = t_ref
+        t_ric = r.ev_t[i] if i < len(r.ev_t) else float("nan")
+        e = abs(t_ric - t_ref)
+        ok = ok and e < win
+        parts.append(f"{kd} at {t_ric:.9e} s, reference {t_ref:.9e} s (exact flow {acc:.1e} s away), "
+                     f"error {e:.1e} s (< {win:.1e} s: {dF:.2e} N over {'dg/dt' if kd == 'fric_slip' else 'm |dv/dt|'} "
+                     f"{abs(rate):.3e})")
+    rcval.check(f"{name}.events", ok,
+                f"f_band {tol['fband']:.3g} N: ricochet {len(r.ev_t)} events, reference {kinds}; " + "; ".join(parts))
+    # slipped (plastic) displacement x_pl = x + F_t/K_t at the stick event
+    xs, xu, vs, vu, vn = along(r, tan_th, phi)
+    x_pl_ref = b.plastic(ref["y"])
+    if len(r.ev_t) and r.ev_kind[-1] == "fric_stick":
+        j = r.state_at(r.ev_t[-1])
+        x_pl = xs[j] + (r.ffric[j, 0] @ s) / k
+    else:
+        x_pl = 0.0
+    x_ref = load / k
+    e = abs(x_pl - x_pl_ref)
+    rcval.check(f"{name}.slipped", e < 1e-6 * x_ref,
+                f"slipped distance x + F_t/K_t at the stick = {x_pl:.6e} m, reference {x_pl_ref:.6e} m (exact flow "
+                f"{b.plastic(ex['y']):.6e}), error {e:.1e} m (< 1e-6 m g sin(theta)/K_t = {1e-6 * x_ref:.1e})")
+    x_end = x_pl_ref + x_ref
+    e = abs(xs[-1] - x_end) / x_ref
+    # across the fall line: nothing without a slip (1e-15 m, rounding); with
+    # one, the direction of the slip is that of the applied force at the
+    # onset, whose lateral part is integration error: the lateral slip gets
+    # the tolerance of the slipped distance
+    u_tol = 1e-6 * x_ref if kinds else 1e-15
+    return xs, xu, e, x_end, u_tol

@@ -226,6 +226,44 @@ static int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, 
     return total;
 }
 
+/* The roots reported at t are all exactly zero there and were positive (or
+ * negative) at the start of the step: a function that reached zero and stayed
+ * flat (CVODE reports such a root at the step's end, not where it got there).
+ * Bisect on CVODE's interpolant over [t_n - h_u, t] for the first time all of
+ * them are zero; on success the state there is in yref, the time in
+ * *refined_time, and the number of bisections is returned (0: nothing to do). */
+static int refine_flat_roots(const rc_model *m, rc_data *d, void *cv, double t, const int *roots, double *g,
+                             N_Vector yref, double *refined_time)
+{
+    const int nr = RC_ROOTS_PER_INTER * m->ninter;
+    double tn, hu;
+    if (nr == 0 || CVodeGetCurrentTime(cv, &tn) != CV_SUCCESS || CVodeGetLastStep(cv, &hu) != CV_SUCCESS) return 0;
+    double *y = N_VGetArrayPointer(yref);
+    if (CVodeGetDky(cv, t, 0, yref) != CV_SUCCESS) return 0;
+    rc_assemble_roots(m, d, t, y, g);
+    for (int k = 0; k < nr; k++)
+        if (roots[k] != 0 && g[k] != 0.0) return 0; /* a true crossing: located by CVODE */
+    double lo = fmax(tn - hu, 0.0), hi = t;
+    if (CVodeGetDky(cv, lo, 0, yref) != CV_SUCCESS) return 0;
+    rc_assemble_roots(m, d, lo, y, g);
+    for (int k = 0; k < nr; k++)
+        if (roots[k] != 0 && g[k] == 0.0) return 0; /* already zero at the start */
+    int it = 0;
+    for (; it < 200 && hi - lo > 4.0 * DBL_EPSILON * fmax(fabs(hi), 1.0); it++) {
+        const double mid = 0.5 * (lo + hi);
+        if (CVodeGetDky(cv, mid, 0, yref) != CV_SUCCESS) return 0;
+        rc_assemble_roots(m, d, mid, y, g);
+        int all = 1;
+        for (int k = 0; k < nr; k++)
+            if (roots[k] != 0 && g[k] != 0.0) all = 0;
+        if (all) hi = mid;
+        else lo = mid;
+    }
+    if (hi >= t || CVodeGetDky(cv, hi, 0, yref) != CV_SUCCESS) return 0;
+    *refined_time = hi;
+    return it > 0 ? it : 1;
+}
+
 /* A root function exactly zero at the event state (flat to rounding, e.g. a
  * penetration of two slowly separating bodies) makes CVODE stop with "close
  * roots" on the next call; after a restart CVODE instead deactivates it until
@@ -618,6 +656,15 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
         if (flag == CV_ROOT_RETURN) {
             /* flip modes; restart only when the right-hand side jumps */
             CVCHECK(CVodeGetRootInfo(cv, roots), "CVodeGetRootInfo");
+            /* roots that land exactly on zero at the step's end (a law flat at
+             * zero: an unload curve reaching zero before P does) were not
+             * located: bisect on the interpolant for where they reached it */
+            double t_ref = t;
+            const int refined = refine_flat_roots(m, d, cv, t, roots, gbuf, ytn, &t_ref);
+            if (refined > 0) {
+                t = t_ref;
+                memcpy(yd, N_VGetArrayPointer(ytn), (size_t)m->ny * sizeof(double));
+            }
             rc_event ev[RC_MAX_EV];
             memcpy(old_mode, d->inter_mode, (size_t)m->ninter * sizeof(int));
             memcpy(old_branch, d->inter_branch, (size_t)m->ninter * sizeof(int));
@@ -648,7 +695,7 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
             nev += resolve_touching(m, d, t, yd, flook, out, &s.events, &jumped, &st, err);
             if (st) goto done;
             if (nev > 0) CVCHECK(set_root_directions(m, d, cv, rootdir), "CVodeSetRootDirection");
-            if (jumped || (nev > 0 && needs_restart(m, d, cv, old_mode, old_branch, old_track, old_slip, t, yd, ytn, f0, f1)) ||
+            if (refined > 0 || jumped || (nev > 0 && needs_restart(m, d, cv, old_mode, old_branch, old_track, old_slip, t, yd, ytn, f0, f1)) ||
                 root_on_zero(m, d, t, yd, gbuf)) {
                 add_stats(cv, &s);
                 CVCHECK(CVodeReInit(cv, t, y), "CVodeReInit");

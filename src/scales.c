@@ -446,7 +446,13 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
             if (fr->tidx >= 0) a[fr->tidx + k] = af;
             if (fr->fidx >= 0) a[fr->fidx + k] = af;
         }
-        m->inter_fr[i].fband = fr->tidx >= 0 ? a[fr->tidx] : 0.0;
+        /* slip-test band: the force tolerance of F_t, and at least RC_SLIP_BAND
+         * of the contact's force scale (the relative band of the limit,
+         * carried down to small loads: a load ramped from zero, carried by the
+         * dampers at first, must not slip on differences of 1e-8 F_s) */
+        double fb = fr->tidx >= 0 ? a[fr->tidx] : 0.0;
+        if (fr->tidx >= 0 && isfinite(m->inter_fscale[i])) fb = fmax(fb, RC_SLIP_BAND * m->inter_fscale[i]);
+        m->inter_fr[i].fband = fb;
     }
     rc_cpl_atol(m);
     for (int k = 0; k < ny; k++)

@@ -39,15 +39,16 @@ def tolerances(m, g, k, rtol=None, atol_pos=None, atol_vel=None, coord=0.0):
     Derived (rtol None: no /SOLVER card or the defaults mode): rtol 1e-8,
     F_s = m g (p_F; no speed and no gap, so no p_E), p_s = F_s/k,
     v_s = p_s sqrt(k/m); positions rtol p_s (absolute only), velocities
-    rtol v_s, F_t rtol F_s = f_band. Given on /SOLVER: f_band = K_t atol_pos
+    rtol v_s, F_t rtol F_s; f_band = max(tolerance of F_t, 1e-6 F_s) (the
+    slip test's band, docs/theory.md 3.5). Given on /SOLVER: f_band = K_t atol_pos
     (K_t = k), positions rtol |X| + atol_pos (|X| = coord, the largest
     coordinate of the centre), velocities atol_vel."""
     if rtol is None:
         rtol = 1e-8
         fs = m * g
         ps = fs / k
-        return dict(rtol=rtol, fband=rtol * fs, dpos=rtol * ps, dvel=rtol * ps * math.sqrt(k / m))
-    return dict(rtol=rtol, fband=k * atol_pos, dpos=rtol * coord + atol_pos, dvel=atol_vel)
+        return dict(rtol=rtol, fband=max(rtol, 1e-6) * fs, dpos=rtol * ps, dvel=rtol * ps * math.sqrt(k / m))
+    return dict(rtol=rtol, fband=max(k * atol_pos, 1e-6 * m * g), dpos=rtol * coord + atol_pos, dvel=atol_vel)
 
 
 def force_resolution(b, tol, flim):

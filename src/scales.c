@@ -42,7 +42,7 @@
  * L (L its size), velocities at rtol RC_TOL_FALLBACK_LFRAC v_model, both
  * with the relative part [-]; without any speed scale 1 m/s stands for it
  * (RC_TOL_FALLBACK_VEL / 1e-6). Energies without a scale: 1e-6 J. */
-#define RC_TOL_FALLBACK_LFRAC 1e-3
+#define RC_TOL_FALLBACK_LFRAC 1e-4
 #define RC_TOL_FALLBACK_VEL 1e-6   /* [m/s] */
 #define RC_TOL_FALLBACK_ENERGY 1e-6 /* [J] */
 /* Energy accumulators: RC_TOL_EFRAC rtol E_s [-]. */

@@ -7,7 +7,10 @@
 #include <stdlib.h>
 #include <unistd.h>
 
+#include <math.h>
+
 #include "../src/error.h"
+#include "../src/model.h"
 #include "harness.h"
 
 /* A valid deck: a sphere on body 1 dropped on a fixed plane, TYPE6 Iform 1
@@ -72,6 +75,61 @@ static int compile_error(const char *path, ...)
 }
 
 #define EXPECT_COMPILE_ERROR(path, ...) ENSURE(compile_error((path), __VA_ARGS__, (const char *)NULL) == 0)
+
+/* Load and compile a deck that must be valid. */
+static rc_model *compile_ok(const char *path)
+{
+    rc_case *c = NULL;
+    rc_model *m = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    if (rc_case_load(path, &c, &e) == RC_OK) rc_model_compile(c, &m, &e);
+    rc_case_free(c);
+    return m;
+}
+
+/* The model's scales (docs/theory.md 7.1) and the tolerances derived from
+ * them, against closed forms: a 1 kg sphere touching a floor with a linear
+ * contact k = 1e5 N/m. Under gravity p_s = m g / k (the weight); launched at
+ * v0 without gravity p_s = v0 sqrt(m / k) (the kinetic energy); positions are
+ * weighed absolutely at rtol p_s, velocities at rtol p_s sqrt(k/m). Given
+ * absolute tolerances are kept as given, all relative. */
+static void test_compile_scales_and_derived_tolerances(void)
+{
+    const double k = 1e5, mass = 1.0, g = 9.81, v0 = 0.37, rtol = 1e-8;
+    rc_model *m = compile_ok(deck(6, "/INTER/TYPE6/3\ncontact\n10,20\n,,0\n,0,0,0\n1,0\n0\n0\n",
+                                  "/GRNOD/NODE/1\nball\n1\n/GRAV/1\ngravity\n0,Z,0,0,1,1,-9.81\n"));
+    ENSURE(m != NULL);
+    if (m) {
+        ENSURE_NEAR(m->inter_pscale[0], mass * g / k, 1e-9, 0);
+        ENSURE_NEAR(m->inter_fscale[0], mass * g, 1e-9, 0);
+        ENSURE_NEAR(m->inter_kscale[0], k, 1e-12, 0);
+        ENSURE_NEAR(m->rtol, rtol, 0, 0);
+        ENSURE(m->tol_auto != 0 && m->ewt_rel != NULL);
+        const int y = m->body_yadr[0];
+        ENSURE_NEAR(m->atol[y + 2], rtol * mass * g / k, 1e-9, 0); /* position z */
+        ENSURE(m->ewt_rel[y + 2] == 0);
+        ENSURE_NEAR(m->atol[y + 9], rtol * mass * g / k * sqrt(k / mass), 1e-9, 0); /* velocity z */
+        rc_model_free(m);
+    }
+    char extra[256];
+    snprintf(extra, sizeof extra, "/GRNOD/NODE/1\nball\n1\n/INIVEL/TRA/1\nv0\n0,0,%.17g,1,0\n", -v0);
+    m = compile_ok(deck(6, "/INTER/TYPE6/3\ncontact\n10,20\n,,0\n,0,0,0\n1,0\n0\n0\n", extra));
+    ENSURE(m != NULL);
+    if (m) {
+        ENSURE_NEAR(m->inter_pscale[0], v0 * sqrt(mass / k), 1e-9, 0);
+        ENSURE_NEAR(m->inter_vscale[0], v0, 1e-9, 0);
+        rc_model_free(m);
+    }
+    m = compile_ok(deck(-1, NULL, "/SOLVER\n1,5,,1e-7\n3e-9,4e-9,5e-6,6e-6\n7e-6\n"));
+    ENSURE(m != NULL);
+    if (m) {
+        ENSURE(m->tol_auto == 0 && m->ewt_rel == NULL);
+        ENSURE_NEAR(m->atol[m->body_yadr[0]], 3e-9, 0, 0);
+        ENSURE_NEAR(m->atol[m->body_yadr[0] + 7], 5e-6, 0, 0);
+        rc_model_free(m);
+    }
+}
 
 static void test_compile_base_deck_is_valid(void)
 {
@@ -147,6 +205,7 @@ void suite_compile(void);
 void suite_compile(void)
 {
     RUN_TEST(test_compile_base_deck_is_valid);
+    RUN_TEST(test_compile_scales_and_derived_tolerances);
     RUN_TEST(test_compile_errors_references);
     RUN_TEST(test_compile_errors_physics);
     RUN_TEST(test_compile_errors_friction_cards);

@@ -21,9 +21,10 @@
  * scales of its contacts, so that the error control weighs what sets the
  * forces: positions absolutely at rtol p_s (not relative to centre
  * coordinates), rotations at rtol p_s / L (L the body's size), velocities
- * at rtol v_s (plus rtol |v|), energies at rtol times the model's energy
- * scale. A body without a scaled contact keeps the documented fixed
- * defaults (RC_TOL_FALLBACK_*).
+ * absolutely at rtol min(v_s, F_s / c) (c the largest velocity sensitivity
+ * of the contact's forces), energies at 0.1 rtol times the model's energy
+ * scale. A body without a scaled contact gets tolerances from its size and
+ * the model's speed scale (RC_TOL_FALLBACK_*).
  */
 #include <float.h>
 #include <gsl/gsl_errno.h>
@@ -40,10 +41,10 @@
 
 /* A body without a scaled contact: positions at rtol RC_TOL_FALLBACK_LFRAC
  * L (L its size), velocities at rtol RC_TOL_FALLBACK_LFRAC v_model, both
- * with the relative part [-]; without any speed scale 1 m/s stands for it
- * (RC_TOL_FALLBACK_VEL / 1e-6). Energies without a scale: 1e-6 J. */
+ * absolute only [-]; without any speed scale RC_TOL_FALLBACK_SPEED stands
+ * for v_model. Energies without a scale: RC_TOL_FALLBACK_ENERGY. */
 #define RC_TOL_FALLBACK_LFRAC 1e-4
-#define RC_TOL_FALLBACK_VEL 1e-6   /* [m/s] */
+#define RC_TOL_FALLBACK_SPEED 1.0   /* [m/s] */
 #define RC_TOL_FALLBACK_ENERGY 1e-6 /* [J] */
 /* Energy accumulators: RC_TOL_EFRAC rtol E_s [-]. */
 #define RC_TOL_EFRAC 0.1
@@ -395,7 +396,7 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         const double L = body_size(m, b) > 0 ? body_size(m, b) : 1.0;
         /* no contact scale: the body's size and the model's speed scale,
          * with the relative part (couplings, free flight) */
-        const double vb = m->vscale > 0 ? m->vscale : RC_TOL_FALLBACK_VEL / 1e-6;
+        const double vb = m->vscale > 0 ? m->vscale : RC_TOL_FALLBACK_SPEED;
         double *a = m->atol + m->body_yadr[b];
         char *rel = m->ewt_rel + m->body_yadr[b];
         for (int k = 0; k < 3; k++) {

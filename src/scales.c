@@ -146,13 +146,15 @@ static double invert(const rc_model *m, int i, int energy, double target)
 }
 
 /* ---- body properties ------------------------------------------------- */
-/* Size of body b: the largest distance from its centre to the far side of
- * one of its surfaces [m] (0 when it carries none). */
-static double body_size(const rc_model *m, int b)
+/* Sizes of all bodies, one pass over the surfaces: the largest distance
+ * from a body's centre to the far side of one of its surfaces [m] (0 when
+ * it carries none). */
+static void body_sizes(const rc_model *m, double *size)
 {
-    double L = 0.0;
+    for (int b = 0; b < m->nbody; b++) size[b] = 0.0;
     for (int s = 0; s < m->nsurf; s++) {
-        if (m->surf_body[s] != b) continue;
+        const int b = m->surf_body[s];
+        if (b < 0) continue;
         const double *p = m->surf_p + 3 * s, *e = m->surf_ext + RC_SURF_NEXT * s;
         double c = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), ext = 0.0;
         switch (m->surf_kind[s]) {
@@ -161,9 +163,8 @@ static double body_size(const rc_model *m, int b)
         case RC_SURF_BOX: ext = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]); break;
         default: break; /* a plane carried by a body has no size */
         }
-        if (c + ext > L) L = c + ext;
+        if (c + ext > size[b]) size[b] = c + ext;
     }
-    return L;
 }
 
 /* Largest speed of body b at t = 0: |v| + |omega| L [m/s]. */
@@ -231,7 +232,7 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         RC_RAISE(err, RC_ENOMEM, "out of memory");
     }
     rc_initial_state(m, y);
-    for (int b = 0; b < m->nbody; b++) size[b] = body_size(m, b);
+    body_sizes(m, size);
     /* the largest gravity over the run [m/s^2] */
     double gmax = 0.0;
     const double gf = m->grav_table >= 0 ? table_max_abs(&m->table[m->grav_table]) : 1.0;
@@ -383,17 +384,33 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
     /* energies */
     if (au & RC_TOL_AUTO_ENERGY) m->atol_energy = m->escale > 0 ? RC_TOL_EFRAC * rt * m->escale : RC_TOL_FALLBACK_ENERGY;
     for (int k = 0; k < ny; k++) m->atol[k] = m->atol_energy; /* accounting states unless set below */
-    /* bodies: the smallest scales of their contacts */
+    /* bodies: the smallest scales of their contacts (one pass over the
+     * interfaces) */
+    const size_t nb = (size_t)m->nbody + 1;
+    double *size = malloc(nb * sizeof(double)), *bps = malloc(nb * sizeof(double)), *bvs = malloc(nb * sizeof(double));
+    if (!size || !bps || !bvs) {
+        free(size);
+        free(bps);
+        free(bvs);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    body_sizes(m, size);
+    for (int b = 0; b < m->nbody; b++) bps[b] = bvs[b] = INFINITY;
+    for (int i = 0; i < m->ninter; i++) {
+        if (!isfinite(m->inter_pscale[i])) continue;
+        const double vi = fmin(m->inter_vscale[i], m->inter_fscale[i] / inter_damping(m, i));
+        const int bs[2] = {m->inter_ba[i], m->inter_bb[i]};
+        for (int k = 0; k < 2; k++) {
+            if (bs[k] < 0) continue;
+            bps[bs[k]] = fmin(bps[bs[k]], m->inter_pscale[i]);
+            bvs[bs[k]] = fmin(bvs[bs[k]], vi);
+        }
+    }
     for (int b = 0; b < m->nbody; b++) {
         if (m->body_yadr[b] < 0) continue;
-        double ps = INFINITY, vs = INFINITY;
-        for (int i = 0; i < m->ninter; i++) {
-            if ((m->inter_ba[i] != b && m->inter_bb[i] != b) || !isfinite(m->inter_pscale[i])) continue;
-            ps = fmin(ps, m->inter_pscale[i]);
-            vs = fmin(vs, fmin(m->inter_vscale[i], m->inter_fscale[i] / inter_damping(m, i)));
-        }
+        const double ps = bps[b], vs = bvs[b];
         const int scaled = isfinite(ps);
-        const double L = body_size(m, b) > 0 ? body_size(m, b) : 1.0;
+        const double L = size[b] > 0 ? size[b] : 1.0;
         /* no contact scale: the body's size and the model's speed scale,
          * with the relative part (couplings, free flight) */
         const double vb = m->vscale > 0 ? m->vscale : RC_TOL_FALLBACK_SPEED;
@@ -433,7 +450,7 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         /* an interface without a scale: rtol RC_TOL_FALLBACK_LFRAC of its
          * bodies' sizes */
         const int ba = m->inter_ba[i], bb = m->inter_bb[i];
-        double Li = (ba >= 0 ? body_size(m, ba) : 0.0) + (bb >= 0 ? body_size(m, bb) : 0.0);
+        double Li = (ba >= 0 ? size[ba] : 0.0) + (bb >= 0 ? size[bb] : 0.0);
         if (!(Li > 0)) Li = 1.0;
         const double apos = scaled                      ? rt * m->inter_pscale[i]
                             : (au & RC_TOL_AUTO_POS) ? rt * RC_TOL_FALLBACK_LFRAC * Li
@@ -455,6 +472,9 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         if (fr->tidx >= 0 && isfinite(m->inter_fscale[i])) fb = fmax(fb, RC_SLIP_BAND * m->inter_fscale[i]);
         m->inter_fr[i].fband = fb;
     }
+    free(size);
+    free(bps);
+    free(bvs);
     rc_cpl_atol(m);
     for (int k = 0; k < ny; k++)
         if (!(m->atol[k] > 0)) RC_RAISE(err, RC_EINTERNAL, "absolute tolerance of state %d is %g", k, m->atol[k]);

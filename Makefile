@@ -8,14 +8,18 @@ WARN    := -Wall -Wextra -pedantic -Wshadow -Wstrict-prototypes -Wmissing-protot
 # complex-step differentiation uses C99 complex arithmetic; the limited-range
 # rule is exact for the finite values the kernels see (docs/design.md).
 CFLAGS  ?= $(OPT) -g
-ALLCFLAGS = $(CSTD) $(WARN) -fcx-limited-range -Iinclude -I/usr/include/suitesparse $(CFLAGS)
+ALLCFLAGS = $(CSTD) $(WARN) -fcx-limited-range -Iinclude -Isrc -I/usr/include/suitesparse $(CFLAGS)
 LDLIBS  := -lsundials_cvode -lsundials_ida -lsundials_nvecserial -lsundials_sunmatrixsparse \
            -lsundials_sunlinsolklu -lklu -lgsl -lgslcblas -lnetcdf -lm
 BUILD   ?= build
 PREFIX  ?= /usr/local
 
-LIB_SRC := $(filter-out src/main.c,$(wildcard src/*.c))
+# Sources are discovered stage by stage (docs/design.md, "Pipeline and files");
+# src/cli holds the command-line program, everything else goes into the library.
+STAGES  := base case model engine solver output
+LIB_SRC := $(foreach d,$(STAGES),$(wildcard src/$(d)/*.c))
 LIB_OBJ := $(patsubst src/%.c,$(BUILD)/obj/%.o,$(LIB_SRC))
+SRC_HDR := $(wildcard src/*/*.h src/*/*.inc include/ricochet/*.h)
 TEST_SRC := $(wildcard tests/*.c)
 TEST_OBJ := $(patsubst tests/%.c,$(BUILD)/tobj/%.o,$(TEST_SRC))
 LIB     := $(BUILD)/libricochet.a
@@ -29,24 +33,20 @@ all: $(BIN) $(TESTBIN)
 deps:
 	@bash scripts/install-deps.sh
 
-$(BUILD)/obj/%.o: src/%.c $(wildcard src/*.h src/*.inc include/ricochet/*.h)
+$(BUILD)/obj/%.o: src/%.c $(SRC_HDR)
 	@mkdir -p $(dir $@)
 	$(CC) $(ALLCFLAGS) -c $< -o $@
 
-$(BUILD)/tobj/%.o: tests/%.c $(wildcard tests/*.h tests/*.def src/*.h include/ricochet/*.h)
+$(BUILD)/tobj/%.o: tests/%.c $(wildcard tests/*.h tests/*.def) $(SRC_HDR)
 	@mkdir -p $(dir $@)
-	$(CC) $(ALLCFLAGS) -Isrc -c $< -o $@
+	$(CC) $(ALLCFLAGS) -c $< -o $@
 
 $(LIB): $(LIB_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
 
-$(BIN): $(BUILD)/obj/main.o $(LIB)
+$(BIN): $(BUILD)/obj/cli/main.o $(LIB)
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(LDLIBS)
-
-$(BUILD)/obj/main.o: src/main.c $(wildcard src/*.h include/ricochet/*.h)
-	@mkdir -p $(dir $@)
-	$(CC) $(ALLCFLAGS) -c $< -o $@
 
 $(TESTBIN): $(TEST_OBJ) $(LIB)
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(LDLIBS)

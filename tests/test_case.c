@@ -9,8 +9,8 @@
  * The test binary runs from the repository root.
  */
 #include "harness.h"
-#include "case.h"
-#include "error.h"
+#include "case/case.h"
+#include "base/error.h"
 
 #include <stdarg.h>
 #include <stdint.h>

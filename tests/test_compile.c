@@ -9,8 +9,8 @@
 
 #include <math.h>
 
-#include "../src/error.h"
-#include "../src/model.h"
+#include "base/error.h"
+#include "model/model.h"
 #include "harness.h"
 
 /* A valid deck: a sphere on body 1 dropped on a fixed plane, TYPE6 Iform 1

@@ -13,11 +13,11 @@
  * fixed columns are under test.
  */
 #include "harness.h"
-#include "case.h"
-#include "case_coupling.h"
-#include "coupling.h"
-#include "error.h"
-#include "model.h"
+#include "case/case.h"
+#include "case/case_coupling.h"
+#include "model/coupling.h"
+#include "base/error.h"
+#include "model/model.h"
 
 #include <stdarg.h>
 #include <stdint.h>

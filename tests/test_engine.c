@@ -5,11 +5,11 @@
  */
 #include <stdlib.h>
 
-#include "../src/case.h"
-#include "../src/case_coupling.h"
-#include "../src/case_power.h"
-#include "../src/imposed.h"
-#include "../src/model.h"
+#include "case/case.h"
+#include "case/case_coupling.h"
+#include "case/case_power.h"
+#include "model/imposed.h"
+#include "model/model.h"
 #include "harness.h"
 
 /* A three-body case: body 1 (sphere, offset from its CoM, full inertia),

@@ -1,6 +1,6 @@
 /* Status codes and the error recorder. */
 #include "harness.h"
-#include "../src/error.h"
+#include "base/error.h"
 
 static rc_status raise_input(rc_error *e) { RC_RAISE(e, RC_EINPUT, "field %s: expected %d", "Iform", 0); }
 

@@ -1,8 +1,8 @@
-/* Output module: write netCDF files through src/output.h, read them back with
+/* Output module: write netCDF files through src/output/output.h, read them back with
  * the netCDF C API and compare every value and attribute. */
 #include "harness.h"
-#include "../src/error.h"
-#include "../src/output.h"
+#include "base/error.h"
+#include "output/output.h"
 
 #include <math.h>
 #include <netcdf.h>

@@ -9,13 +9,13 @@
 #include <stdlib.h>
 #include <unistd.h>
 
-#include "../src/case.h"
-#include "../src/case_power.h"
-#include "../src/imposed.h"
-#include "../src/model.h"
-#include "../src/power.h"
-#include "../src/step5.h"
-#include "../src/error.h"
+#include "case/case.h"
+#include "case/case_power.h"
+#include "model/imposed.h"
+#include "model/model.h"
+#include "model/power.h"
+#include "engine/step5.h"
+#include "base/error.h"
 #include "harness.h"
 
 /* ---- step5 ------------------------------------------------------------ */

@@ -1,0 +1,149 @@
+/*
+ * Coupling cards (ricochet cards for SPEC 8, in the Radioss block style):
+ *   /COUPLING/SPRING/cpl_ID     spring-damper [CPL-SPRING]
+ *   /COUPLING/CATENARY/cpl_ID   elastic catenary [CPL-CAT]
+ * Layouts as field tables (case_internal.h), documented in
+ * docs/case-format.md. References (bodies, functions) are resolved by the
+ * compiler (coupling_compile.c).
+ */
+#include "case/case_coupling.h"
+#include "case/case_internal.h"
+#include "base/error.h"
+
+#include <string.h>
+
+#define RC_NF(arr) ((int)(sizeof(arr) / sizeof((arr)[0])))
+
+/* New coupling of the given kind, its header checked and its title read;
+ * lines 2 and 3 (the attachment points) parsed. `nmin`, `nmax`: data lines. */
+static rc_status rc_new_coupling(rc_reader *rd, const rc_block *b, rc_case_cpl_kind kind,
+                                 const char *usage, int nmin, int nmax, const char *desc,
+                                 rc_case_coupling **out, int *nd)
+{
+    rc_case *c = rd->c;
+    rc_status st;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "cpl_ID", usage))) return st;
+    RC_GROW(rd, c->coupling, rd->capcoupling, c->ncoupling);
+    rc_case_coupling *k = &c->coupling[c->ncoupling++];
+    k->id = b->id;
+    k->kind = kind;
+    k->loc = b->hdr->loc;
+    for (int i = 0; i < 6; i++) k->line_loc[i] = k->loc;
+    *out = k;
+    if ((st = rc_card_lines(rd, b, k->title, nmin, nmax, desc, nd))) return st;
+    for (int i = 0; i < *nd; i++) k->line_loc[i] = b->lines[i + 1].loc;
+
+    /* lines 2 and 3: the two attachment points, global at t = 0 */
+    for (int e = 0; e < 2; e++) {
+        static const char *const nm[2][3] = {{"X1", "Y1", "Z1"}, {"X2", "Y2", "Z2"}};
+        rc_field f[] = {RC_F_REAL(nm[e][0], &k->p[e][0], 0, 0), RC_F_REAL(nm[e][1], &k->p[e][1], 0, 0),
+                        RC_F_REAL(nm[e][2], &k->p[e][2], 0, 0)};
+        if ((st = rc_parse_line(rd, b, &b->lines[2 + e], f, RC_NF(f)))) return st;
+    }
+    /* a spring or a line between two coincident points has no direction */
+    if (k->p[0][0] == k->p[1][0] && k->p[0][1] == k->p[1][1] && k->p[0][2] == k->p[1][2])
+        return rc_case_fail(rd, &k->line_loc[2], b->name, "X2 Y2 Z2",
+                            "expected a point 2 different from point 1 (the coupling acts along the "
+                            "line between them), got both = (%.9g, %.9g, %.9g)",
+                            k->p[0][0], k->p[0][1], k->p[0][2]);
+    return RC_OK;
+}
+
+/* Line 1 starts with the two bodies. */
+#define RC_F_BODIES(k)                                          \
+    RC_F_INT("rbody_ID1", &(k)->rbody[0], 0, RC_FF_NONNEG),     \
+        RC_F_INT("rbody_ID2", &(k)->rbody[1], 0, RC_FF_NONNEG)
+
+/* The two ends must not both be fixed in space, nor on one body. */
+static rc_status rc_check_ends(rc_reader *rd, const rc_block *b, const rc_case_coupling *k)
+{
+    if (k->rbody[0] == 0 && k->rbody[1] == 0)
+        return rc_case_fail(rd, &k->line_loc[0], b->name, "rbody_ID1 rbody_ID2",
+                            "expected at least one rigid body (0 = point fixed in space), got both 0");
+    if (k->rbody[0] == k->rbody[1])
+        return rc_case_fail(rd, &k->line_loc[0], b->name, "rbody_ID2",
+                            "expected a body other than rbody_ID1 = %d (a coupling between two points "
+                            "of one rigid body exerts no net force), got %d",
+                            k->rbody[0], k->rbody[1]);
+    return RC_OK;
+}
+
+/* /COUPLING/SPRING/cpl_ID: title;
+ *   rbody_ID1 rbody_ID2 Iform fct_ID; X1 Y1 Z1; X2 Y2 Z2; X0 Kd;
+ *   [A B C; [F_r X_r]] */
+rc_status rc_card_coupling_spring(rc_reader *rd, const rc_block *b)
+{
+    rc_case_coupling *k;
+    int nd;
+    rc_status st;
+    if ((st = rc_new_coupling(rd, b, RC_CASE_CPL_SPRING, "/COUPLING/SPRING/cpl_ID", 4, 6,
+                              "rbody_ID1 rbody_ID2 Iform fct_ID, X1 Y1 Z1, X2 Y2 Z2, X0 Kd[, A B "
+                              "C[, F_r X_r]]",
+                              &k, &nd)))
+        return st;
+
+    rc_field l1[] = {RC_F_BODIES(k),
+                     RC_F_SET("Iform", &k->iform, 1, RC_FF_ZDEF, 0x1Eu, 0, NULL),
+                     RC_F_INT("fct_ID", &k->fct_id, 0, RC_FF_NONNEG)};
+    rc_field l4[] = {RC_F_REAL("X0", &k->x0, 0, RC_FF_NONNEG),
+                     RC_F_REAL("Kd", &k->kd, 0, RC_FF_NONNEG)};
+    rc_field l5[] = {RC_F_REAL("A", &k->a, 0, 0), RC_F_REAL("B", &k->b, 0, 0),
+                     RC_F_REAL("C", &k->c, 0, 0)};
+    rc_field l6[] = {RC_F_REAL("F_r", &k->fr, 0, 0), RC_F_REAL("X_r", &k->xr, 0, RC_FF_NONNEG)};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
+    if ((st = rc_check_ends(rd, b, k))) return st;
+    if ((st = rc_parse_line(rd, b, &b->lines[4], l4, RC_NF(l4)))) return st;
+    k->x0_given = !l4[0].blank;
+    if (nd >= 5 && (st = rc_parse_line(rd, b, &b->lines[5], l5, RC_NF(l5)))) return st;
+    if (nd >= 6 && (st = rc_parse_line(rd, b, &b->lines[6], l6, RC_NF(l6)))) return st;
+    k->ref_given = nd >= 6 && !l6[1].blank;
+
+    /* what each form needs */
+    switch (k->iform) {
+    case 1:
+        if (k->a < 0)
+            return rc_case_fail(rd, &k->line_loc[4], b->name, "A",
+                                "expected a non-negative stiffness k [N/m] for Iform = 1, got %s",
+                                l5[0].got);
+        break;
+    case 3:
+    case 4:
+        if (k->fct_id == 0)
+            return rc_case_fail(rd, &k->line_loc[0], b->name, "fct_ID",
+                                "expected the id of a /FUNCT (the %s) for Iform = %d, got %s",
+                                k->iform == 3 ? "elastic force f_e(x) [N]" : "stiffness k(x) [N/m]",
+                                k->iform, l1[3].got);
+        break;
+    default: break;
+    }
+    if (k->iform != 4 && k->ref_given)
+        return rc_case_fail(rd, &k->line_loc[5], b->name, "X_r",
+                            "a reference point (F_r, X_r) belongs to Iform = 4, got Iform = %d; "
+                            "expected a blank field",
+                            k->iform);
+    if (nd >= 6 && !l6[0].blank && !k->ref_given)
+        return rc_case_fail(rd, &k->line_loc[5], b->name, "X_r",
+                            "expected the reference distance X_r [m] where the force is F_r = %s, "
+                            "got blank",
+                            l6[0].got);
+    return rc_note_id(rd, RC_IDK_COUPLING, k->id, &k->loc, b->hdr->text);
+}
+
+/* /COUPLING/CATENARY/cpl_ID: title;
+ *   rbody_ID1 rbody_ID2; X1 Y1 Z1; X2 Y2 Z2; Lambda0 L_eq D */
+rc_status rc_card_coupling_catenary(rc_reader *rd, const rc_block *b)
+{
+    rc_case_coupling *k;
+    int nd;
+    rc_status st;
+    if ((st = rc_new_coupling(rd, b, RC_CASE_CPL_CATENARY, "/COUPLING/CATENARY/cpl_ID", 4, 4,
+                              "rbody_ID1 rbody_ID2, X1 Y1 Z1, X2 Y2 Z2, Lambda0 L_eq D", &k, &nd)))
+        return st;
+    rc_field l1[] = {RC_F_BODIES(k)};
+    rc_field l4[] = {RC_F_REAL("Lambda0", &k->lambda0, 0, RC_FF_POS),
+                     RC_F_REAL("L_eq", &k->leq, 0, RC_FF_POS), RC_F_REAL("D", &k->d, 0, RC_FF_POS)};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
+    if ((st = rc_check_ends(rd, b, k))) return st;
+    if ((st = rc_parse_line(rd, b, &b->lines[4], l4, RC_NF(l4)))) return st;
+    return rc_note_id(rd, RC_IDK_COUPLING, k->id, &k->loc, b->hdr->text);
+}

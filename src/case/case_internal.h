@@ -1,0 +1,209 @@
+/*
+ * Private interface of the case reader, shared by case_reader.c (files,
+ * lines, blocks, fields, numbers, errors) and case_cards.c (one function per
+ * card). Nothing outside these two files includes it.
+ *
+ * Reading happens in three passes:
+ *  1. lex: every file (main + #include) is read whole, split into lines,
+ *     comments dropped, and appended to one flat list of lines, each with its
+ *     file:line; /END stops the lexing.
+ *  2. blocks: the flat list is cut at header lines ("/KEYWORD...") into
+ *     blocks; each block is dispatched to its card function.
+ *  3. checks over the whole deck: duplicate ids, the required /RUN.
+ *
+ * Data lines are parsed through field tables (rc_field): each card function
+ * declares the layout of a line as an array of fields (name, width, type,
+ * default, checks, destination) and rc_parse_line does the rest.
+ */
+#ifndef RC_CASE_INTERNAL_H
+#define RC_CASE_INTERNAL_H
+
+#include "case/case.h"
+
+#include <stddef.h>
+#include <sys/types.h>
+
+/* ---- Limits (documented in docs/case-format.md) ----------------------- */
+#define RC_CASE_MAX_LINE 1000            /* characters per line           */
+#define RC_CASE_MAX_INCLUDE_DEPTH 32     /* nested #include levels        */
+#define RC_CASE_MAX_FILE_READS 4096      /* files opened per deck         */
+#define RC_CASE_MAX_BYTES (256L << 20)   /* bytes read per deck, all files */
+#define RC_CASE_TITLE_MAX 100            /* title characters              */
+#define RC_CASE_INERTIA_RTOL 1e-12       /* PD test: pivot > rtol * diagonal */
+
+/* One line of the deck, after comment removal. `text` is NUL-terminated,
+ * trailing blanks and CR removed; it points into a file buffer. */
+typedef struct rc_line {
+    const char *text;
+    int len;
+    rc_loc loc;
+} rc_line;
+
+/* A card: its header line and the lines up to the next header. */
+typedef struct rc_block {
+    const rc_line *hdr;
+    const rc_line *lines; /* data lines (title line included) */
+    int n;
+    char kw[3][24];       /* keyword tokens, upper case: "INTER", "TYPE6" */
+    int nkw;
+    int id;               /* first numeric token, 0 if none */
+    int has_id;
+    int unit_id;          /* second numeric token, 0 if none */
+    char name[88];        /* the header as written, for messages */
+    const char *bad;      /* why the header is malformed (NULL: it is not) */
+} rc_block;
+
+/* Card kinds whose ids must be unique (one id space per kind). */
+typedef enum {
+    RC_IDK_FUNCT, RC_IDK_NODE, RC_IDK_GRNOD, RC_IDK_RBODY, RC_IDK_SURF,
+    RC_IDK_INTER, RC_IDK_INIVEL, RC_IDK_GRAV, RC_IDK_BCS, RC_IDK_COUPLING, RC_IDK_PART,
+    RC_IDK_GRPART, RC_IDK_FRICTION, RC_IDK_FRICORIENT, RC_IDK_IMPVEL, RC_IDK_COUNT
+} rc_id_kind;
+
+/* One id as declared, for the duplicate check. */
+typedef struct rc_id_entry {
+    int id;
+    int seq;              /* declaration order */
+    rc_loc loc;
+    const char *card;     /* header text (valid while the reader lives) */
+} rc_id_entry;
+
+/* The reader's state. The case being filled is `c`; capacities of its
+ * arrays are kept here. */
+typedef struct rc_reader {
+    rc_case *c;
+    rc_error *err;
+
+    char **bufs; int nbufs, capbufs;          /* file contents, kept alive  */
+    rc_line *lines; int nlines, caplines;     /* flat list of lines         */
+    long bytes_read;                          /* all files                  */
+    int file_reads;                           /* files opened               */
+    int capfiles;
+    struct { dev_t dev; ino_t ino; } stack[RC_CASE_MAX_INCLUDE_DEPTH + 1];
+    int depth;                                /* include stack              */
+    int ended;                                /* /END seen                  */
+    int main_last_line;                       /* for deck-level messages    */
+    long main_bytes;                          /* size of the main file      */
+
+    int capfunct, capnode, capgrnod, caprbody, capsurf, captype6, capinivel,
+        capgrav, capbcs, capwarn, capcoupling, cappart, capgrpart, capfriction, capfricorient,
+        cappower, capimpvel;
+    rc_id_entry *ids[RC_IDK_COUNT];
+    int nids[RC_IDK_COUNT], capids[RC_IDK_COUNT];
+    int seq;
+    const rc_line *begin_hdr, *run_hdr, *solver_hdr; /* single cards */
+} rc_reader;
+
+/* ---- Field tables ----------------------------------------------------- */
+typedef enum { RC_FT_INT, RC_FT_REAL, RC_FT_SKIP, RC_FT_STR } rc_ftype;
+
+enum {
+    RC_FF_ZDEF = 1u << 0,   /* 0 means "default" (Radioss convention)         */
+    RC_FF_POS = 1u << 1,    /* value > 0 after defaulting                     */
+    RC_FF_NONNEG = 1u << 2, /* value >= 0 after defaulting                    */
+    RC_FF_ONLY0 = 1u << 3   /* anything but 0 is "not supported yet"          */
+};
+
+typedef struct rc_field {
+    const char *name;  /* as in the Radioss documentation */
+    int width;         /* characters in fixed format */
+    rc_ftype type;
+    void *out;         /* int *, double *, or char[cap] (may be NULL: read, ignored) */
+    size_t cap;        /* RC_FT_STR: size of the buffer */
+    double def;        /* default when blank (and 0 with RC_FF_ZDEF) */
+    unsigned flags;
+    unsigned valid;    /* ints: bit k set = k allowed (0: no set check) */
+    unsigned supp;     /* ints: bit k set = k supported (0: all) */
+    const char *note;  /* explains a "not supported yet" */
+    /* filled by rc_parse_line */
+    int blank;
+    char got[64];      /* "\"text\"" or "blank", for messages */
+} rc_field;
+
+#define RC_BIT(k) (1u << (k))
+
+#define RC_F_INT(nm, p, d, fl) \
+    { .name = (nm), .width = 10, .type = RC_FT_INT, .out = (p), .def = (d), .flags = (fl) }
+#define RC_F_REAL(nm, p, d, fl) \
+    { .name = (nm), .width = 20, .type = RC_FT_REAL, .out = (p), .def = (d), .flags = (fl) }
+#define RC_F_SET(nm, p, d, fl, v, s, nt)                                               \
+    { .name = (nm), .width = 10, .type = RC_FT_INT, .out = (p), .def = (d), .flags = (fl), \
+      .valid = (v), .supp = (s), .note = (nt) }
+#define RC_F_SKIP(w) { .name = "blank", .width = (w), .type = RC_FT_SKIP }
+#define RC_F_STR(nm, buf, w) \
+    { .name = (nm), .width = (w), .type = RC_FT_STR, .out = (buf), .cap = sizeof(buf) }
+
+/* ---- Reader services (case_reader.c) ---------------------------------- */
+
+/* Record an input error "FILE:LINE: card C, field F: msg" (card and field
+ * may be NULL) and return RC_EINPUT. */
+rc_status rc_case_fail(rc_reader *rd, const rc_loc *loc, const char *card,
+                       const char *field, const char *fmt, ...)
+    __attribute__((format(printf, 5, 6)));
+rc_status rc_case_nomem(rc_reader *rd);
+
+/* Parse one data line of block `b` into the fields (fixed or comma format),
+ * apply defaults and the per-field checks. */
+rc_status rc_parse_line(rc_reader *rd, const rc_block *b, const rc_line *ln, rc_field *f,
+                        int nf);
+
+/* Check the number of lines of a fixed-layout card: a title line when
+ * `title` is not NULL (copied there), then min..max data lines described by
+ * `desc`. Extra blank lines are ignored, extra non-blank lines are an
+ * error. Returns the number of data lines to read in *ndata. */
+rc_status rc_card_lines(rc_reader *rd, const rc_block *b, char *title, int min, int max,
+                        const char *desc, int *ndata);
+/* Number of lines of a variable-length block without trailing blank lines. */
+int rc_block_trim(const rc_block *b);
+/* Copy a title line (at most RC_CASE_TITLE_MAX characters). */
+rc_status rc_read_title(rc_reader *rd, const rc_block *b, const rc_line *ln, char *title);
+
+/* Make room for element n of array `arr` (capacity *cap, elements of `size`
+ * bytes) and zero it. Returns the array, possibly moved; NULL when out of
+ * memory (recorded; `arr` is then unchanged and still owned by the caller). */
+void *rc_case_grow(rc_reader *rd, void *arr, int *cap, int n, size_t size);
+/* rc_case_grow on an array lvalue; returns RC_ENOMEM from the calling
+ * function on failure (like RC_RAISE). */
+#define RC_GROW(rd, arr, cap, n)                                               \
+    do {                                                                       \
+        void *rc_grown_ = rc_case_grow((rd), (arr), &(cap), (n), sizeof *(arr)); \
+        if (!rc_grown_) return RC_ENOMEM;                                      \
+        (arr) = rc_grown_;                                                     \
+    } while (0)
+/* Declare an id for the duplicate check. */
+rc_status rc_note_id(rc_reader *rd, rc_id_kind kind, int id, const rc_loc *loc,
+                     const char *card);
+/* Append a warning "FILE:LINE: msg" to c->warnings. */
+rc_status rc_case_warn(rc_reader *rd, const rc_loc *loc, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+/* ---- Cards (case_cards.c) --------------------------------------------- */
+
+/* How a card's header carries numbers. */
+typedef enum { RC_ID_NONE, RC_ID_REQUIRED, RC_ID_OPTIONAL, RC_ID_UNIT } rc_id_mode;
+
+/* Check the header of a card with `nkw` keywords: id and unit id. */
+rc_status rc_header(rc_reader *rd, const rc_block *b, int nkw, rc_id_mode mode,
+                    const char *idname, const char *usage);
+
+/* /COUPLING/SPRING and /COUPLING/CATENARY (case_cards_coupling.c). */
+rc_status rc_card_coupling_spring(rc_reader *rd, const rc_block *b);
+rc_status rc_card_coupling_catenary(rc_reader *rd, const rc_block *b);
+
+/* /INTER/POWER, /SURF/CYL, /SURF/BOX, /IMPVEL (case_cards_power.c). */
+rc_status rc_card_power(rc_reader *rd, const rc_block *b);
+rc_status rc_card_cyl(rc_reader *rd, const rc_block *b);
+rc_status rc_card_box(rc_reader *rd, const rc_block *b);
+rc_status rc_card_impvel(rc_reader *rd, const rc_block *b);
+
+/* Read one block: dispatch on its keyword. */
+rc_status rc_card_dispatch(rc_reader *rd, const rc_block *b);
+/* Deck-level checks after the last card (/RUN present, defaults). */
+rc_status rc_cards_finish(rc_reader *rd);
+/* Defaults of the optional cards, set before reading. */
+void rc_cards_defaults(rc_case *c);
+
+/* Append a new surface of the given kind for block b (NULL: out of memory). */
+rc_case_surf *rc_new_surf(rc_reader *rd, const rc_block *b, rc_case_surf_kind kind);
+
+#endif

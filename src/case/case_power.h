@@ -1,0 +1,48 @@
+/*
+ * Parsed cards of the power-law contact and the roller (SPEC 7, 3, 4):
+ * /INTER/POWER (ricochet card) and /IMPVEL (Radioss layout), read by
+ * case_cards_power.c (with /SURF/CYL and /SURF/BOX, which fill rc_case_surf),
+ * compiled by power_compile.c and imposed.c. Part of rc_case (case.h:
+ * npower, power, nimpvel, impvel). docs/case-format.md has the field tables.
+ */
+#ifndef RC_CASE_POWER_H
+#define RC_CASE_POWER_H
+
+#include "case/case.h"
+
+/* /INTER/POWER/inter_ID. */
+typedef struct rc_case_power {
+    int id;
+    char title[101];
+    int surf1, surf2;          /* line 1: surfaces                              */
+    int fct_stiff, fct_damp;   /* line 1: splines (0: none)                     */
+    int ispline;               /* line 1: spline kind RC_SPL_* (power.h)        */
+    int irdf;                  /* line 1: 1 RDF on, 2 off                       */
+    double k, m1, c, m2, m3;   /* line 2: [N/m^m1] [-] [N (s/m)^m2/m^m3] [-] [-] */
+    double rdf, dreg, vreg;    /* line 3: [-] [m] [m/s]                         */
+    double tstart, tstop;      /* line 3: [s]                                   */
+    double mus, vs, mud, vd;   /* line 4: step5 friction [-] [m/s] [-] [m/s]    */
+    double fmax;               /* line 4: maximum friction force, 0: none [N]   */
+    double kt;                 /* line 5: stiffness for an overriding incremental
+                                  /FRICTION [N/m], 0: none                      */
+    rc_loc loc;
+    rc_loc line_loc[5];        /* each data line (absent: the header's)         */
+} rc_case_power;
+
+/* /IMPVEL/impvel_ID: velocity component Dir of the bodies of grnod_ID =
+ * Fscale_y f(t / Ascale_x) for Tstart <= t <= Tstop. */
+typedef struct rc_case_impvel {
+    int id;
+    char title[101];
+    int fct_id;      /* time function (required) */
+    int dir;         /* 0..2: X Y Z (translation); 3..5: XX YY ZZ (rotation) */
+    int skew_id, sensor_id, frame_id, icoor; /* 0 only */
+    int grnod_id;    /* nodes whose bodies are driven (required) */
+    double ascale;   /* [s] */
+    double fscale;   /* [m/s] or [rad/s] */
+    double tstart, tstop; /* [s] */
+    rc_loc loc;
+    rc_loc line_loc[2];
+} rc_case_impvel;
+
+#endif

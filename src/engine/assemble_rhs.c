@@ -1,0 +1,153 @@
+/*
+ * Right-hand side, root functions and reports, in real arithmetic.
+ * Pure: reads (t, y, modes), writes ydot; no allocation, no printing, no
+ * mode change.
+ */
+#include <math.h>
+#include <string.h>
+#include <tgmath.h>
+
+#include "model/imposed.h"
+#include "model/model.h"
+
+#define T double
+#define RE(x) (x)
+#define RCK(name) name##_r
+#include "kernels.inc"
+#include "kernels_coupling.inc"
+
+/* Acceleration slot (vdot, wdot) of body b in ydot, NULL when b has no states. */
+static double *acc_slot(const rc_model *m, int b, double *ydot)
+{
+    return (b >= 0 && m->body_yadr[b] >= 0) ? ydot + m->body_yadr[b] + 7 : NULL;
+}
+
+int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, double *ydot)
+{
+    d->n_rhs++;
+    /* bodies: free motion */
+    for (int b = 0; b < m->nbody; b++)
+        if (m->body_yadr[b] >= 0) body_rhs_r(m, b, t, y + m->body_yadr[b], ydot + m->body_yadr[b]);
+    /* interfaces: forces into the accelerations, own-state rates */
+    for (int i = 0; i < m->ninter; i++) {
+        double *sdot = ydot + m->inter_eadr[i];
+        const int ba = m->inter_ba[i], bb = m->inter_bb[i];
+        if (d->inter_mode[i] == RC_MODE_INACTIVE) {
+            memset(sdot, 0, (size_t)m->inter_ns[i] * sizeof(double));
+            continue;
+        }
+        type6_r(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], rc_body_state(m, ba, y),
+                rc_body_state(m, bb, y), y + m->inter_eadr[i], acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot,
+                NULL);
+        for (int k = 0; k < m->inter_ns[i]; k++)
+            if (!isfinite(sdot[k])) {
+                d->fail_inter = i;
+                d->fail_t = t;
+                return 1; /* recoverable: CVODE retries with a smaller step */
+            }
+    }
+    /* couplings (coupling_rhs.inc) */
+    if (rc_cpl_rhs(m, d, t, y, ydot)) return 1;
+    /* potential of a time-varying gravity: E' = -sum m g(t).v */
+    if (m->gwork_adr >= 0) {
+        double w = 0;
+        for (int b = 0; b < m->nbody; b++) {
+            if (m->body_yadr[b] < 0) continue;
+            double g[3];
+            const double *v = y + m->body_yadr[b] + 7;
+            rc_gravity(m, b, t, g);
+            w -= m->body_mass[b] * (g[0] * v[0] + g[1] * v[1] + g[2] * v[2]);
+        }
+        ydot[m->gwork_adr] = w;
+    }
+    /* held DOFs (/BCS): the support takes whatever force acts */
+    for (int k = 0; k < m->nheld; k++) ydot[m->held[k]] = 0.0;
+    /* imposed velocities (imposed_rhs.inc): their rates, the reactions' work */
+    if (m->imp) rc_imp_rhs(m, d, t, y, ydot);
+    return 0;
+}
+
+double rc_friction_mu(const rc_model *m, int i, int dir, double p, double v, double fn)
+{
+    return fric_mu_r(m, &m->inter_fr[i], dir, p, v, fn, i);
+}
+
+void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, double t,
+                          const double *y, rc_inter_report *r)
+{
+    t6out_r o;
+    (void)t;
+    type6_r(m, i, mode, branch, track, slip, rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y),
+            y + m->inter_eadr[i], NULL, NULL, NULL, &o);
+    r->p = o.p;
+    r->vn = o.vn;
+    r->p_raw = o.p_raw;
+    r->vn_raw = o.vn_raw;
+    r->fload = o.fel;
+    r->fdamp = o.fd;
+    r->fn = o.fel + o.fd;
+    r->fl = o.fl;
+    r->fu = o.fu;
+    r->fh = o.fh;
+    r->offset = o.off;
+    r->flim = o.flim;
+    r->vslip = o.vslip;
+    r->slip_root = o.slip_root;
+    for (int k = 0; k < 3; k++) {
+        r->ft[k] = o.ft[k];
+        r->fraw[k] = o.fraw[k];
+        r->vt[k] = o.vt[k];
+    }
+    for (int k = 0; k < 3; k++) {
+        r->point[k] = o.g.point[k];
+        r->normal[k] = o.g.n[k];
+    }
+}
+
+void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
+{
+    for (int i = 0; i < m->ninter; i++) {
+        double *gi = g + RC_ROOTS_PER_INTER * i;
+        for (int k = 0; k < RC_ROOTS_PER_INTER; k++) gi[k] = 1.0; /* inactive roots */
+        gi[RC_ROOT_TSTART] = t - m->inter_tstart[i];
+        gi[RC_ROOT_TSTOP] = t - m->inter_tstop[i];
+        const int mode = d->inter_mode[i], br = d->inter_branch[i], trk = d->inter_track[i];
+        if (mode == RC_MODE_INACTIVE) continue;
+        rc_inter_report r;
+        rc_inter_report_eval(m, i, mode, br, trk, d->inter_slip[i], t, y, &r);
+        /* friction: stick -> slip at the limit, slip -> stick when sliding stops */
+        if (mode == RC_MODE_CLOSED && m->inter_fr[i].kind != RC_FK_NONE) gi[RC_ROOT_SLIP] = r.slip_root;
+        /* saturated stateless law: its force -L v_t/|v_t| flips when the sliding
+         * reverses; the saturation root dips below zero only in a velocity window
+         * of width ~L/C that a step may jump, so watch v_t . d_ref as well */
+        if (mode == RC_MODE_CLOSED && d->inter_slip[i] && m->inter_fr[i].form == RC_FF_VISCOUS &&
+            m->inter_fr[i].kind != RC_FK_NONE) {
+            const double *dr = d->inter_dref + 3 * i;
+            gi[RC_ROOT_REV] = r.vt[0] * dr[0] + r.vt[1] * dr[1] + r.vt[2] * dr[2];
+        }
+        /* zone: P (not while the Inacti offset tracks it, P = 0 there) */
+        if (!trk) gi[RC_ROOT_ZONE] = r.p + (mode != RC_MODE_OPEN ? d->inter_band[2 * i] : 0.0);
+        /* total normal force, unclipped: release and re-close */
+        if (mode != RC_MODE_OPEN) gi[RC_ROOT_FORCE] = r.fn + (mode == RC_MODE_CLOSED ? d->inter_band[2 * i + 1] : 0.0);
+        /* hysteresis: reversal on the curves, bounds on the Stiff line */
+        /* power law with RDF: the rate of P (approach / rebound) */
+        if (mode != RC_MODE_OPEN && m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0)
+            gi[RC_ROOT_HYST_A] = r.vn;
+        if (mode != RC_MODE_OPEN && m->inter_iform[i] != 0) {
+            if (br == RC_BR_ELASTIC) {
+                gi[RC_ROOT_HYST_A] = r.fl - r.fh;
+                gi[RC_ROOT_HYST_B] = r.fh - r.fu;
+            } else {
+                gi[RC_ROOT_HYST_A] = r.vn;
+            }
+        }
+        /* Inacti 5: tracking stops when P_raw turns, or the offset is used up */
+        if (trk) {
+            gi[RC_ROOT_TRK_A] = r.vn_raw;
+            gi[RC_ROOT_TRK_B] = r.offset;
+        }
+    }
+}
+
+#include "coupling_rhs.inc"
+#include "imposed_rhs.inc"

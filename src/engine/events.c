@@ -1,0 +1,524 @@
+/*
+ * Run data and discrete modes. Modes change only here, between solver calls:
+ * at the start of a run and at located events. Some transitions also reset a
+ * history state (F_h synchronised onto the curve it leaves or joins, the
+ * Inacti offset at zero); the integrator then restarts from the new state.
+ * docs/theory.md section 5 lists every transition.
+ */
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include "model/coupling.h"
+#include "engine/events.h"
+#include "model/power.h"
+
+/* Touch band: RC_TOUCH_ULPS ulps of the coordinates, at least RC_TOUCH_REL
+ * of the penetration scale (docs/theory.md 5.1) [-]. */
+#define RC_TOUCH_ULPS 1e3
+#define RC_TOUCH_REL 1e-9
+
+rc_data *rc_data_new(const rc_model *m)
+{
+    rc_data *d = calloc(1, sizeof *d);
+    if (!d) return NULL;
+    size_t n = (size_t)m->ninter + 1;
+    d->inter_mode = calloc(n, sizeof(int));
+    d->inter_branch = calloc(n, sizeof(int));
+    d->inter_track = calloc(n, sizeof(int));
+    d->inter_slip = calloc(n, sizeof(int));
+    d->inter_dref = calloc(3 * n, sizeof(double));
+    d->inter_band = calloc(2 * n, sizeof(double));
+    d->cpl = rc_cpl_data_new(m);
+    int imp_ok = 1;
+    if (m->imp) { /* imposed velocities: scratch of rhs and Jacobian (imposed.c) */
+        d->imp_free = calloc((size_t)m->ny, sizeof(double));
+        d->imp_scratch = calloc(3 * (size_t)m->ny, sizeof(double));
+        imp_ok = d->imp_free && d->imp_scratch;
+    }
+    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->cpl || !imp_ok) {
+        rc_data_free(d);
+        return NULL;
+    }
+    d->fail_inter = -1;
+    return d;
+}
+
+void rc_data_free(rc_data *d)
+{
+    if (!d) return;
+    free(d->inter_mode);
+    free(d->inter_branch);
+    free(d->inter_track);
+    free(d->inter_slip);
+    free(d->inter_dref);
+    free(d->inter_band);
+    rc_cpl_data_free(d->cpl);
+    free(d->imp_free);
+    free(d->imp_scratch);
+    free(d);
+}
+
+/* Own state k of interface i (NULL when absent). */
+static double *own(const rc_model *m, int i, int idx, double *y)
+{
+    return idx >= 0 ? y + m->inter_eadr[i] + idx : NULL;
+}
+
+static void set_state(double *s, double v, int *changed)
+{
+    if (s && *s != v) {
+        *s = v;
+        *changed = 1;
+    }
+}
+
+static void report(const rc_model *m, const rc_data *d, int i, double t, const double *y, rc_inter_report *r)
+{
+    rc_inter_report_eval(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y, r);
+}
+
+/* Friction starts afresh (sticking, no force) whenever the contact closes
+ * and is dropped whenever it stops pushing. */
+static void reset_friction(const rc_model *m, rc_data *d, int i, double *y, int *changed)
+{
+    d->inter_slip[i] = 0;
+    const rc_fric *fr = &m->inter_fr[i];
+    for (int k = 0; k < 3; k++) {
+        set_state(own(m, i, fr->tidx >= 0 ? fr->tidx + k : -1, y), 0.0, changed);
+        set_state(own(m, i, fr->fidx >= 0 ? fr->fidx + k : -1, y), 0.0, changed);
+    }
+}
+
+/* Enter the contact zone at P = 0 from separation: virgin force, on the load
+ * curve (Stiff is steeper than the load curve, so min(F_L, Stiff dP) = F_L). */
+static void clear_band(rc_data *d, int i)
+{
+    d->inter_band[2 * i] = d->inter_band[2 * i + 1] = 0.0;
+}
+
+static void enter_zone(const rc_model *m, rc_data *d, int i, double *y, int *changed)
+{
+    clear_band(d, i);
+    d->inter_mode[i] = RC_MODE_CLOSED;
+    d->inter_branch[i] = RC_BR_LOAD;
+    d->inter_track[i] = 0;
+    set_state(own(m, i, m->inter_hidx[i], y), 0.0, changed);
+    reset_friction(m, d, i, y, changed);
+}
+
+/* Leave the zone (P falls to 0): no force, no history. */
+static void leave_zone(const rc_model *m, rc_data *d, int i, double *y, int *changed)
+{
+    clear_band(d, i);
+    d->inter_mode[i] = RC_MODE_OPEN;
+    d->inter_branch[i] = RC_BR_LOAD;
+    set_state(own(m, i, m->inter_hidx[i], y), 0.0, changed);
+    double *off = own(m, i, m->inter_oidx[i], y);
+    d->inter_track[i] = off && *off > 0; /* Inacti 5: the gap recovers */
+    reset_friction(m, d, i, y, changed);
+}
+
+/* Modes of an active interface from its state, at t = 0 or at Tstart:
+ * Inacti, Icor and the initial penetration P0 (docs/theory.md 3.4). */
+/* The sliding direction at which a stateless law saturated (reversal root). */
+static void set_dref(rc_data *d, int i, const rc_inter_report *r)
+{
+    double n = sqrt(r->vt[0] * r->vt[0] + r->vt[1] * r->vt[1] + r->vt[2] * r->vt[2]);
+    for (int k = 0; k < 3; k++) d->inter_dref[3 * i + k] = n > 0 ? r->vt[k] / n : 0.0;
+}
+
+/* A friction law without state (viscous forms, step5) has no history: its
+ * mode (below the limit / saturated or capped) follows from the state alone.
+ * Set it whenever the contact has just closed, so that a contact closing
+ * while sliding starts saturated when its adhesion force is beyond the limit
+ * (its root would otherwise start positive and never cross). */
+static void stateless_friction_mode(const rc_model *m, rc_data *d, int i, double t, const double *y)
+{
+    const rc_fric *fr = &m->inter_fr[i];
+    if (d->inter_mode[i] != RC_MODE_CLOSED || fr->kind == RC_FK_NONE || fr->form != RC_FF_VISCOUS) return;
+    rc_inter_report r;
+    d->inter_slip[i] = 0;
+    report(m, d, i, t, y, &r);
+    d->inter_slip[i] = r.slip_root > 0;
+    set_dref(d, i, &r);
+}
+
+static void classify(const rc_model *m, rc_data *d, int i, double t, double *y, int *changed)
+{
+    rc_inter_report r;
+    d->inter_mode[i] = RC_MODE_OPEN;
+    d->inter_branch[i] = RC_BR_LOAD;
+    d->inter_track[i] = 0;
+    reset_friction(m, d, i, y, changed);
+    report(m, d, i, t, y, &r);
+    double *off = own(m, i, m->inter_oidx[i], y), *fh = own(m, i, m->inter_hidx[i], y);
+    /* Inacti 5: the gap starts reduced by P0, so P starts at 0 */
+    if (off && r.p_raw > 0 && *off == 0.0) {
+        set_state(off, r.p_raw, changed);
+        report(m, d, i, t, y, &r);
+    }
+    if (r.p < 0 || (r.p == 0 && r.vn <= 0)) {
+        leave_zone(m, d, i, y, changed);
+        return;
+    }
+    if (r.p == 0) {
+        enter_zone(m, d, i, y, changed);
+        return;
+    }
+    /* initial penetration P0 > 0: on the load curve, or (Icor 1 with Iform 1)
+     * on the unload curve; off the curve when moving away from it */
+    if (fh && m->inter_icor[i] == 1 && m->inter_iform[i] == 1) {
+        set_state(fh, r.fu, changed);
+        d->inter_branch[i] = r.vn < 0 ? RC_BR_UNLOAD : RC_BR_ELASTIC;
+    } else if (fh) {
+        set_state(fh, r.fl, changed);
+        d->inter_branch[i] = r.vn > 0 ? RC_BR_LOAD : RC_BR_ELASTIC;
+    }
+    /* power law: the rebound damping factor acts while P decreases */
+    if (m->inter_law[i] == RC_LAW_POWER) d->inter_branch[i] = r.vn < 0 ? RC_BR_UNLOAD : RC_BR_LOAD;
+    d->inter_mode[i] = RC_MODE_CLOSED;
+    report(m, d, i, t, y, &r);
+    if (!(r.fn > 0)) d->inter_mode[i] = RC_MODE_RELEASED;
+    stateless_friction_mode(m, d, i, t, y);
+    /* the elastic energy found in the contact at activation enters the
+     * ledger as contact work (so the hysteresis dissipation starts at 0) */
+    double *w = y + m->inter_eadr[i];
+    set_state(w, *w + rc_inter_stored_energy(m, d, i, t, y), changed);
+}
+
+void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y)
+{
+    int changed = 0;
+    for (int i = 0; i < m->ninter; i++) {
+        int active = t >= m->inter_tstart[i] && t <= m->inter_tstop[i];
+        d->inter_mode[i] = RC_MODE_INACTIVE;
+        if (active) classify(m, d, i, t, y, &changed);
+    }
+}
+
+/* Activation window and Inacti tracking; returns the event kind or NULL. */
+static const char *step_window(const rc_model *m, rc_data *d, int i, double t, double *y, const int *r,
+                               int *changed)
+{
+    const int mode = d->inter_mode[i];
+    if (r[RC_ROOT_TSTOP] > 0 && mode != RC_MODE_INACTIVE) {
+        d->inter_mode[i] = RC_MODE_INACTIVE; /* history frozen */
+        return "inter_stop";
+    }
+    if (r[RC_ROOT_TSTART] > 0 && mode == RC_MODE_INACTIVE && t <= m->inter_tstop[i]) {
+        classify(m, d, i, t, y, changed);
+        return "inter_start";
+    }
+    /* Inacti 5 tracking: the full Gap is back, or the bodies approach again */
+    if (d->inter_track[i] && r[RC_ROOT_TRK_B] < 0) {
+        d->inter_track[i] = 0;
+        set_state(own(m, i, m->inter_oidx[i], y), 0.0, changed);
+        return "inacti_gap_recovered";
+    }
+    if (d->inter_track[i] && r[RC_ROOT_TRK_A] > 0) {
+        enter_zone(m, d, i, y, changed);
+        return "contact_close";
+    }
+    return NULL;
+}
+
+/* Hysteresis branches (in the zone); F_h is put exactly on the curve it
+ * leaves or joins. */
+static const char *step_branch(const rc_model *m, rc_data *d, int i, double t, double *y, const int *r,
+                               int *changed)
+{
+    const int mode = d->inter_mode[i], br = d->inter_branch[i];
+    /* power law: approach (LOAD) and rebound (UNLOAD, RDF) branches */
+    if (m->inter_law[i] == RC_LAW_POWER && (mode == RC_MODE_CLOSED || mode == RC_MODE_RELEASED)) {
+        if (br == RC_BR_LOAD && r[RC_ROOT_HYST_A] < 0) {
+            d->inter_branch[i] = RC_BR_UNLOAD;
+            return "rdf_rebound";
+        }
+        if (br == RC_BR_UNLOAD && r[RC_ROOT_HYST_A] > 0) {
+            d->inter_branch[i] = RC_BR_LOAD;
+            return "rdf_approach";
+        }
+        return NULL;
+    }
+    if (m->inter_iform[i] == 0 || (mode != RC_MODE_CLOSED && mode != RC_MODE_RELEASED)) return NULL;
+    double *fh = own(m, i, m->inter_hidx[i], y);
+    rc_inter_report q;
+    report(m, d, i, t, y, &q);
+    if (br == RC_BR_LOAD && r[RC_ROOT_HYST_A] < 0) {
+        d->inter_branch[i] = RC_BR_ELASTIC;
+        set_state(fh, q.fl, changed);
+        return "hyst_unloading";
+    }
+    if (br == RC_BR_UNLOAD && r[RC_ROOT_HYST_A] > 0) {
+        d->inter_branch[i] = RC_BR_ELASTIC;
+        set_state(fh, q.fu, changed);
+        return "hyst_reloading";
+    }
+    if (br == RC_BR_ELASTIC && r[RC_ROOT_HYST_A] < 0) {
+        d->inter_branch[i] = RC_BR_LOAD;
+        set_state(fh, q.fl, changed);
+        return "hyst_load_curve";
+    }
+    if (br == RC_BR_ELASTIC && r[RC_ROOT_HYST_B] < 0) {
+        d->inter_branch[i] = RC_BR_UNLOAD;
+        set_state(fh, q.fu, changed);
+        return "hyst_unload_curve";
+    }
+    return NULL;
+}
+
+/* Contact zone (P) and force clipping (total normal force). */
+static const char *step_contact(const rc_model *m, rc_data *d, int i, double *y, const int *r, int *changed)
+{
+    const int mode = d->inter_mode[i];
+    if (mode == RC_MODE_INACTIVE || d->inter_track[i]) return NULL;
+    if (mode == RC_MODE_OPEN && r[RC_ROOT_ZONE] > 0) {
+        enter_zone(m, d, i, y, changed);
+        return "contact_close";
+    }
+    if (mode != RC_MODE_OPEN && r[RC_ROOT_ZONE] < 0) {
+        leave_zone(m, d, i, y, changed);
+        return "contact_separate";
+    }
+    if (mode == RC_MODE_CLOSED && r[RC_ROOT_FORCE] < 0) {
+        clear_band(d, i);
+        d->inter_mode[i] = RC_MODE_RELEASED;
+        reset_friction(m, d, i, y, changed);
+        return "contact_open";
+    }
+    if (mode == RC_MODE_RELEASED && r[RC_ROOT_FORCE] > 0) {
+        clear_band(d, i);
+        d->inter_mode[i] = RC_MODE_CLOSED;
+        reset_friction(m, d, i, y, changed);
+        return "contact_close";
+    }
+    return NULL;
+}
+
+/* Incremental friction going from stick to slip: the state takes the
+ * applied force (spring and stick damper) returned radially onto the limit
+ * (in the scaled plane when orthotropic), so that the sliding force keeps
+ * its direction and the state its magnitude. */
+static void slip_on_limit(const rc_model *m, rc_data *d, int i, double t, double *y, int *changed)
+{
+    const rc_fric *fr = &m->inter_fr[i];
+    rc_inter_report q;
+    double *ft = y + m->inter_eadr[i] + fr->tidx;
+    report(m, d, i, t, y, &q); /* stick: the applied force */
+    for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
+    const int slip = d->inter_slip[i];
+    d->inter_slip[i] = 1;
+    report(m, d, i, t, y, &q); /* slip: that direction on the limit */
+    d->inter_slip[i] = slip;
+    /* a zero limit (mu floored at zero, no Sfric) keeps the direction */
+    const double nr = q.fraw[0] * q.fraw[0] + q.fraw[1] * q.fraw[1] + q.fraw[2] * q.fraw[2];
+    if (nr > 0 && isfinite(nr))
+        for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
+}
+
+/* Friction. Incremental: stick -> slip when the force reaches the limit;
+ * slip -> stick when the sliding velocity along the force vanishes (the state
+ * is then put where the force already is, on the limit). Viscous (total):
+ * the adhesion force saturates at the limit and comes back below it. */
+static const char *step_friction(const rc_model *m, rc_data *d, int i, double t, double *y, const int *r,
+                                 int *changed)
+{
+    const rc_fric *fr = &m->inter_fr[i];
+    if (fr->kind == RC_FK_NONE || d->inter_mode[i] != RC_MODE_CLOSED) return NULL;
+    rc_inter_report q;
+    /* saturated stateless law: the sliding reversed; its mode then follows
+     * from the state, saturated again in the new direction or not */
+    if (fr->form == RC_FF_VISCOUS && d->inter_slip[i] && r[RC_ROOT_REV] < 0) {
+        stateless_friction_mode(m, d, i, t, y);
+        *changed = 1; /* ask for a restart: see below */
+        return "fric_reverse";
+    }
+    if (r[RC_ROOT_SLIP] <= 0) return NULL;
+    if (!d->inter_slip[i]) {
+        /* incremental: the state takes the applied force (spring and stick
+         * damper), so that the sliding force keeps its direction */
+        if (fr->form == RC_FF_INCREMENTAL && fr->ct > 0) slip_on_limit(m, d, i, t, y, changed);
+        d->inter_slip[i] = 1;
+        if (fr->form == RC_FF_VISCOUS) {
+            report(m, d, i, t, y, &q);
+            set_dref(d, i, &q);
+            /* the force is continuous across the limit but its Jacobian is
+             * not (-C I below, rank-deficient above, C up to ~1e6 N s/m):
+             * the step that crossed the limit was taken in the old mode, and
+             * continuing from it, even with a fresh Jacobian, let a stiff
+             * viscous law chatter across the limit; restart from the event */
+            *changed = 1;
+        }
+        return fr->form == RC_FF_VISCOUS ? "fric_saturate" : "fric_slip";
+    }
+    report(m, d, i, t, y, &q);
+    d->inter_slip[i] = 0;
+    if (fr->tidx >= 0)
+        for (int k = 0; k < 3; k++) set_state(y + m->inter_eadr[i] + fr->tidx + k, q.fraw[k], changed);
+    if (fr->form == RC_FF_VISCOUS) *changed = 1; /* restart, as for saturation */
+    return fr->form == RC_FF_VISCOUS ? "fric_unsaturate" : "fric_stick";
+}
+
+int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const int *roots, rc_event *ev,
+                    int max_ev, int *restart)
+{
+    int n = 0;
+    *restart = 0;
+    for (int i = 0; i < m->ninter; i++) {
+        const int *r = roots + RC_ROOTS_PER_INTER * i;
+        int any = 0;
+        for (int k = 0; k < RC_ROOTS_PER_INTER; k++) any |= r[k] != 0;
+        if (!any) continue;
+        clear_band(d, i); /* the touch bands last until the interface's next event */
+        /* window first; then the branch, then the contact, so that crossings
+         * falling together (the Stiff line reaching zero releases the force)
+         * are all applied, in the order of the law */
+        const char *kind[4] = {step_window(m, d, i, t, y, r, restart), NULL, NULL, NULL};
+        if (!kind[0]) {
+            kind[1] = step_branch(m, d, i, t, y, r, restart);
+            kind[2] = step_contact(m, d, i, y, r, restart);
+            if (!kind[2]) kind[3] = step_friction(m, d, i, t, y, r, restart);
+        }
+        if ((kind[0] || kind[2]) && d->inter_mode[i] == RC_MODE_CLOSED) stateless_friction_mode(m, d, i, t, y);
+        for (int k = 0; k < 4; k++) {
+            if (!kind[k]) continue;
+            if (n < max_ev) {
+                ev[n].inter = i;
+                ev[n].kind = kind[k];
+            }
+            n++;
+        }
+    }
+    return n;
+}
+
+/* ---- contacts at zero: modes decided by the state ------------------ */
+/* Touch band of interface i at (t, y) [m]: above the rounding of P (a
+ * thousand ulps of the coordinates involved) and 1e-9 of the penetration
+ * scale. */
+static double touch_band(const rc_model *m, int i, const double *y, const rc_inter_report *r)
+{
+    const double *xa = rc_body_state(m, m->inter_ba[i], y), *xb = rc_body_state(m, m->inter_bb[i], y);
+    double L = 0.0;
+    for (int k = 0; k < 3; k++) L += fabs(xa[k]) + fabs(xb[k]) + fabs(r->point[k]);
+    double band = RC_TOUCH_ULPS * DBL_EPSILON * L;
+    if (isfinite(m->inter_pscale[i])) band = fmax(band, RC_TOUCH_REL * m->inter_pscale[i]);
+    return band > 0 ? band : DBL_MIN;
+}
+
+/* Sign of the first non-zero time derivative of P: dP/dt, or, when it is
+ * zero to the precision of a located root, d2P/dt2 (0: both zero). */
+static int p_trend(double vn, double an, double t, double dtout)
+{
+    const double tau = RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + dtout); /* [s] */
+    if (fabs(vn) > fabs(an) * tau) return vn > 0 ? 1 : -1;
+    return (an > 0) - (an < 0);
+}
+
+int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const double *ydot, rc_event *ev, int max_ev,
+                   int *restart)
+{
+    int n = 0;
+    for (int i = 0; i < m->ninter; i++) {
+        const int mode = d->inter_mode[i], br = d->inter_branch[i];
+        if (mode == RC_MODE_INACTIVE) continue;
+        rc_inter_report r, c, dr, dc;
+        report(m, d, i, t, y, &r);
+        const double band = touch_band(m, i, y, &r);
+        const char *kind = NULL;
+        /* the force the contact would carry, closed, and its rate */
+        const int cbr = mode == RC_MODE_OPEN ? RC_BR_LOAD : br;
+        rc_inter_report_eval(m, i, RC_MODE_CLOSED, cbr, 0, d->inter_slip[i], t, y, &c);
+        rc_inter_report_rate(m, i, RC_MODE_CLOSED, cbr, 0, d->inter_slip[i], y, ydot, &dc);
+        const double k = isfinite(m->inter_kscale[i]) ? m->inter_kscale[i] : 0.0;
+        const double fband = fmax(band * k, RC_TOUCH_ULPS * DBL_EPSILON * (fabs(c.fload) + fabs(c.fdamp)));
+        /* where P is heading: dP/dt, else the normal acceleration */
+        rc_inter_report_rate(m, i, mode, br, d->inter_track[i], d->inter_slip[i], y, ydot, &dr);
+        const int trend = d->inter_track[i] ? p_trend(r.vn_raw, dr.vn_raw, t, m->dtout) : p_trend(r.vn, dr.vn, t, m->dtout);
+        const int ctrend = p_trend(c.vn, dc.vn, t, m->dtout);
+        if (mode == RC_MODE_OPEN) {
+            /* P at zero (or the Inacti offset tracking it): close unless the
+             * bodies separate; a touching contact carries zero force */
+            if (fabs(r.p) <= band && trend >= 0 && c.fn >= -fband) {
+                enter_zone(m, d, i, y, restart);
+                kind = "contact_close";
+            }
+        } else if (fabs(r.p) <= band && ctrend < 0) {
+            /* closed or released at P = 0 while separating */
+            leave_zone(m, d, i, y, restart);
+            kind = "contact_separate";
+        } else if (mode == RC_MODE_RELEASED && fabs(c.fn) <= fband && (dc.fn > 0 || (dc.fn == 0 && ctrend >= 0))) {
+            /* released at zero force that would grow again: close */
+            d->inter_mode[i] = RC_MODE_CLOSED;
+            reset_friction(m, d, i, y, restart);
+            kind = "contact_close";
+        } else if (mode == RC_MODE_CLOSED && fabs(c.fn) <= fband && (dc.fn < 0 || (dc.fn == 0 && ctrend < 0))) {
+            /* closed at zero force that is about to pull: release */
+            d->inter_mode[i] = RC_MODE_RELEASED;
+            reset_friction(m, d, i, y, restart);
+            kind = "contact_open";
+        } else if (m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0) {
+            /* hysteresis at a bound or a reversal with dP/dt = 0 */
+            double *fh = own(m, i, m->inter_hidx[i], y);
+            const double hb = fmax(fband, RC_TOUCH_ULPS * DBL_EPSILON * (fabs(r.fh) + fabs(r.fl) + fabs(r.fu)));
+            const int still = fabs(r.vn) <= fabs(dr.vn) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
+            if (br == RC_BR_ELASTIC && fabs(r.fh - r.fu) <= hb && trend < 0) {
+                d->inter_branch[i] = RC_BR_UNLOAD;
+                set_state(fh, r.fu, restart);
+                kind = "hyst_unload_curve";
+            } else if (br == RC_BR_ELASTIC && fabs(r.fl - r.fh) <= hb && trend > 0) {
+                d->inter_branch[i] = RC_BR_LOAD;
+                set_state(fh, r.fl, restart);
+                kind = "hyst_load_curve";
+            } else if (br == RC_BR_LOAD && still && trend < 0) {
+                d->inter_branch[i] = RC_BR_ELASTIC;
+                set_state(fh, r.fl, restart);
+                kind = "hyst_unloading";
+            } else if (br == RC_BR_UNLOAD && still && trend > 0) {
+                d->inter_branch[i] = RC_BR_ELASTIC;
+                set_state(fh, r.fu, restart);
+                kind = "hyst_reloading";
+            }
+        } else if (m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0) {
+            /* rebound damping branch at dP/dt = 0 */
+            const int still = fabs(r.vn) <= fabs(dr.vn) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
+            if (br == RC_BR_LOAD && still && trend < 0) {
+                d->inter_branch[i] = RC_BR_UNLOAD;
+                kind = "rdf_rebound";
+            } else if (br == RC_BR_UNLOAD && still && trend > 0) {
+                d->inter_branch[i] = RC_BR_LOAD;
+                kind = "rdf_approach";
+            }
+        }
+        if (kind && d->inter_mode[i] == RC_MODE_CLOSED) stateless_friction_mode(m, d, i, t, y);
+        /* incremental friction sticking beyond its limit (a contact that
+         * closes while sliding: the stick damper alone exceeds the limit):
+         * it slips from the start, the state on the applied force */
+        const rc_fric *fr = &m->inter_fr[i];
+        if (!kind && d->inter_mode[i] == RC_MODE_CLOSED && fr->kind != RC_FK_NONE && fr->form == RC_FF_INCREMENTAL &&
+            !d->inter_slip[i]) {
+            report(m, d, i, t, y, &r);
+            if (r.slip_root > 0) {
+                slip_on_limit(m, d, i, t, y, restart);
+                d->inter_slip[i] = 1;
+                kind = "fric_slip";
+            }
+        }
+        /* a contact left closed at P = 0 or at zero force separates at
+         * P = -band and releases at F_n = -fband: its roots start off zero,
+         * so CVODE sees them leave */
+        if (d->inter_mode[i] == RC_MODE_CLOSED) {
+            report(m, d, i, t, y, &r);
+            if (fabs(r.p) <= band) d->inter_band[2 * i] = band;
+            if (fabs(r.fn) <= fband) d->inter_band[2 * i + 1] = fband;
+        }
+        if (!kind) continue;
+        if (n < max_ev) {
+            ev[n].inter = i;
+            ev[n].kind = kind;
+        }
+        n++;
+    }
+    return n;
+}

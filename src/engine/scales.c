@@ -1,0 +1,489 @@
+/*
+ * The model's own scales, and the tolerances and regularisations derived
+ * from them (docs/theory.md 7.1).
+ *
+ * Each interface gets a penetration scale p_s: the smallest penetration the
+ * model is known to produce in it, from
+ *   p_F  where the load law reaches the weight of the lighter free body,
+ *        F(p_F) = m_min |g|max,
+ *   p_E  where the law's stored energy reaches the kinetic energy of the
+ *        pair at the speed scale, integral_0^p_E F = m_red v^2 / 2, with v
+ *        the largest initial or imposed speed of any body (momentum travels
+ *        through chains of contacts) or the fall speed over the
+ *        interface's initial gap sqrt(2 |g|max gap0),
+ *   p_s = min(p_F, p_E) over those that exist, but not below
+ *   RC_PSCALE_SPAN p_F (a tiny speed must not set absurd tolerances).
+ * With it: the force scale F_s = F(p_s), the stiffness k_s = dF/dp at p_s,
+ * the contact frequency omega_s = sqrt(k_s / m_red) and the speed scale
+ * v_s = p_s omega_s. The laws are inverted with GSL's Brent solver.
+ *
+ * Tolerances left blank on /SOLVER are derived per body from the smallest
+ * scales of its contacts, so that the error control weighs what sets the
+ * forces: positions absolutely at rtol p_s (not relative to centre
+ * coordinates), rotations at rtol p_s / L (L the body's size), velocities
+ * absolutely at rtol min(v_s, F_s / c) (c the largest velocity sensitivity
+ * of the contact's forces), energies at 0.1 rtol times the model's energy
+ * scale. A body without a scaled contact gets tolerances from its size and
+ * the model's speed scale (RC_TOL_FALLBACK_*).
+ */
+#include <float.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "model/coupling.h"
+#include "base/error.h"
+#include "model/imposed.h"
+#include "model/model.h"
+#include "model/power.h"
+
+/* A body without a scaled contact: positions at rtol RC_TOL_FALLBACK_LFRAC
+ * L (L its size), velocities at rtol RC_TOL_FALLBACK_LFRAC v_model, both
+ * absolute only [-]; without any speed scale RC_TOL_FALLBACK_SPEED stands
+ * for v_model. Energies without a scale: RC_TOL_FALLBACK_ENERGY. */
+#define RC_TOL_FALLBACK_LFRAC 1e-4
+#define RC_TOL_FALLBACK_SPEED 1.0   /* [m/s] */
+#define RC_TOL_FALLBACK_ENERGY 1e-6 /* [J] */
+/* Energy accumulators: RC_TOL_EFRAC rtol E_s [-]. */
+#define RC_TOL_EFRAC 0.1
+/* Derived regularisation of the power law: Dreg = RC_DREG_FRAC p_s,
+ * Vreg = RC_DREG_FRAC v_s [-]. */
+#define RC_DREG_FRAC 1e-4
+/* p_s is at least this fraction of p_F [-]. */
+#define RC_PSCALE_SPAN 1e-2
+/* Damping ratio of the stick spring of incremental friction [-]. */
+#define RC_STICK_ZETA 1.0
+
+/* ---- the normal laws on p >= 0 ------------------------------------- */
+/* Load force of interface i at penetration p [N] (no hysteresis, no damping). */
+static double law_force(const rc_model *m, int i, double p)
+{
+    if (m->inter_law[i] == RC_LAW_POWER) {
+        const rc_power *pw = &m->inter_pw[i];
+        if (pw->stiff) {
+            double f, df;
+            rc_spline_eval(pw->stiff, p, &f, &df);
+            return f;
+        }
+        return pw->k * pow(p, pw->m1);
+    }
+    double f, df;
+    rc_table_eval(&m->table[m->inter_fct_ld[i]], p / m->inter_ascalex[i], &f, &df);
+    return m->inter_fscaleld[i] * f;
+}
+
+/* Its slope [N/m]. */
+static double law_slope(const rc_model *m, int i, double p)
+{
+    if (m->inter_law[i] == RC_LAW_POWER) {
+        const rc_power *pw = &m->inter_pw[i];
+        if (pw->stiff) {
+            double f, df;
+            rc_spline_eval(pw->stiff, p, &f, &df);
+            return df;
+        }
+        return pw->k * pw->m1 * pow(p, pw->m1 - 1.0);
+    }
+    double f, df;
+    rc_table_eval(&m->table[m->inter_fct_ld[i]], p / m->inter_ascalex[i], &f, &df);
+    return m->inter_fscaleld[i] / m->inter_ascalex[i] * df;
+}
+
+/* Energy stored at penetration p: integral_0^p of the load force [J]. */
+static double law_energy(const rc_model *m, int i, double p)
+{
+    if (m->inter_law[i] == RC_LAW_POWER) {
+        const rc_power *pw = &m->inter_pw[i];
+        if (pw->stiff) return rc_spline_integral(pw->stiff, 0.0, p);
+        return pw->k * pow(p, pw->m1 + 1.0) / (pw->m1 + 1.0);
+    }
+    const double ax = m->inter_ascalex[i];
+    return m->inter_fscaleld[i] * ax * rc_table_integral(&m->table[m->inter_fct_ld[i]], 0.0, p / ax);
+}
+
+typedef struct {
+    const rc_model *m;
+    int i;
+    int energy; /* 1: invert the energy, 0: the force */
+    double target;
+} inv_ctx;
+
+static double inv_fn(double p, void *v)
+{
+    const inv_ctx *c = v;
+    return (c->energy ? law_energy(c->m, c->i, p) : law_force(c->m, c->i, p)) - c->target;
+}
+
+/* Smallest p > 0 where the law (force or energy) reaches target > 0, or NAN
+ * when it never does (a flat or falling law). */
+static double invert(const rc_model *m, int i, int energy, double target)
+{
+    if (!(target > 0) || !isfinite(target)) return NAN;
+    inv_ctx c = {m, i, energy, target};
+    /* bracket: decades up from 1e-15 of the length unit */
+    double lo = 0.0, hi = 1e-15;
+    while (inv_fn(hi, &c) < 0) {
+        lo = hi;
+        hi *= 10.0;
+        if (hi > 1e9) return NAN;
+    }
+    gsl_function f = {inv_fn, &c};
+    gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    if (!s) return NAN;
+    double r = NAN;
+    if (gsl_root_fsolver_set(s, &f, lo, hi) == GSL_SUCCESS) {
+        for (int it = 0; it < 200; it++) {
+            if (gsl_root_fsolver_iterate(s) != GSL_SUCCESS) break;
+            double a = gsl_root_fsolver_x_lower(s), b = gsl_root_fsolver_x_upper(s);
+            r = gsl_root_fsolver_root(s);
+            if (gsl_root_test_interval(a, b, 0.0, 1e-10) == GSL_SUCCESS) break;
+        }
+    }
+    gsl_root_fsolver_free(s);
+    return r > 0 ? r : NAN;
+}
+
+/* ---- body properties ------------------------------------------------- */
+/* Sizes of all bodies, one pass over the surfaces: the largest distance
+ * from a body's centre to the far side of one of its surfaces [m] (0 when
+ * it carries none). */
+static void body_sizes(const rc_model *m, double *size)
+{
+    for (int b = 0; b < m->nbody; b++) size[b] = 0.0;
+    for (int s = 0; s < m->nsurf; s++) {
+        const int b = m->surf_body[s];
+        if (b < 0) continue;
+        const double *p = m->surf_p + 3 * s, *e = m->surf_ext + RC_SURF_NEXT * s;
+        double c = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), ext = 0.0;
+        switch (m->surf_kind[s]) {
+        case RC_SURF_SPHERE: ext = m->surf_r[s]; break;
+        case RC_SURF_CYL: ext = m->surf_r[s] + e[0] + (e[1] > 0 ? m->surf_r[s] : 0.0); break;
+        case RC_SURF_BOX: ext = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]); break;
+        default: break; /* a plane carried by a body has no size */
+        }
+        if (c + ext > size[b]) size[b] = c + ext;
+    }
+}
+
+/* Largest speed of body b at t = 0: |v| + |omega| L [m/s]. */
+static double body_speed(const rc_model *m, int b, double L)
+{
+    if (b < 0 || m->body_yadr[b] < 0) return 0.0;
+    const double *y = m->body_y0 + RC_NB * b;
+    double v = sqrt(y[7] * y[7] + y[8] * y[8] + y[9] * y[9]);
+    double w = sqrt(y[10] * y[10] + y[11] * y[11] + y[12] * y[12]);
+    return v + w * L;
+}
+
+/* Largest magnitude of a table's values [-]. */
+static double table_max_abs(const rc_table *t)
+{
+    double a = 0.0;
+    for (int k = 0; k < t->n; k++)
+        if (fabs(t->y[k]) > a) a = fabs(t->y[k]);
+    return a;
+}
+
+/* Largest imposed speed of body b [m/s] (translations; rotations times L). */
+static double imposed_speed(const rc_model *m, int b, double L)
+{
+    const rc_imposed *p = m->imp;
+    double v = 0.0;
+    if (!p) return 0.0;
+    for (int k = 0; k < p->nt; k++)
+        if (p->tbody[k] == b) v += fabs(p->tfscale[k]) * table_max_abs(&m->table[p->ttab[k]]);
+    for (int k = 0; k < p->nr; k++)
+        if (p->rbody[k] == b)
+            for (int j = 0; j < 3; j++)
+                if (p->rtab[3 * k + j] >= 0) v += fabs(p->rfscale[3 * k + j]) * table_max_abs(&m->table[p->rtab[3 * k + j]]) * L;
+    return v;
+}
+
+/* Mass of body b as seen along the unit normal n: m / (sum over its free
+ * translations k of n_k^2), INFINITY for a fixed body or one held along n. */
+static double normal_mass(const rc_model *m, int b, const double *n)
+{
+    if (b < 0 || m->body_yadr[b] < 0) return INFINITY;
+    double w = 0.0;
+    for (int k = 0; k < 3; k++) {
+        int held = m->body_dofmask[6 * b + k];
+        const rc_imposed *p = m->imp;
+        for (int j = 0; p && j < p->nt; j++) held |= p->tbody[j] == b && p->tdir[j] == k;
+        if (!held) w += n[k] * n[k];
+    }
+    return w > 1e-12 ? m->body_mass[b] / w : INFINITY;
+}
+
+rc_status rc_model_scales(rc_model *m, rc_error *err)
+{
+    const int n = m->ninter;
+    double **arr[] = {&m->inter_pscale, &m->inter_fscale, &m->inter_kscale, &m->inter_vscale, &m->inter_mred};
+    for (size_t k = 0; k < sizeof arr / sizeof arr[0]; k++) {
+        *arr[k] = malloc(((size_t)n + 1) * sizeof(double));
+        if (!*arr[k]) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    double *y = malloc((size_t)m->ny * sizeof(double));
+    double *size = malloc(((size_t)m->nbody + 1) * sizeof(double));
+    if (!y || !size) {
+        free(y);
+        free(size);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    rc_initial_state(m, y);
+    body_sizes(m, size);
+    /* the largest gravity over the run [m/s^2] */
+    double gmax = 0.0;
+    const double gf = m->grav_table >= 0 ? table_max_abs(&m->table[m->grav_table]) : 1.0;
+    for (int b = 0; b < m->nbody; b++) {
+        const double *g = m->body_grav + 3 * b;
+        double a = gf * sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+        if (m->body_yadr[b] >= 0 && a > gmax) gmax = a;
+    }
+    /* the model's speed scale: the largest initial or imposed speed of a
+     * body; without gravity and speeds, the speed the initial elastic energy
+     * (contacts penetrating at t = 0, stretched couplings) gives the
+     * lightest free body */
+    double vmodel = 0.0, mlight = INFINITY;
+    for (int b = 0; b < m->nbody; b++) {
+        vmodel = fmax(vmodel, body_speed(m, b, size[b]) + imposed_speed(m, b, size[b]));
+        if (m->body_yadr[b] >= 0) mlight = fmin(mlight, m->body_mass[b]);
+    }
+    double e0 = 0.0;
+    for (int i = 0; i < n; i++) {
+        rc_inter_report r0;
+        rc_inter_report_eval(m, i, RC_MODE_OPEN, RC_BR_LOAD, 0, 0, 0.0, y, &r0);
+        if (r0.p_raw > 0) e0 += law_energy(m, i, r0.p_raw);
+    }
+    rc_data *d0 = rc_data_new(m);
+    if (d0) {
+        double e[RC_NENERGY];
+        rc_energy(m, d0, 0.0, y, e);
+        e0 += fabs(e[RC_E_CPL_ELASTIC]) + fabs(e[RC_E_CATENARY]);
+        rc_data_free(d0);
+    }
+    /* the initial elastic energy speaks only when nothing else does (no
+     * gravity, no speed): a rounding-level initial penetration must not */
+    if (vmodel == 0 && gmax == 0 && e0 > 0 && isfinite(mlight)) vmodel = sqrt(2.0 * e0 / mlight);
+    m->vscale = vmodel;
+    double escale = 0.0;
+    for (int i = 0; i < n; i++) {
+        const int ba = m->inter_ba[i], bb = m->inter_bb[i];
+        rc_inter_report r;
+        rc_inter_report_eval(m, i, RC_MODE_OPEN, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+        /* mobility along the contact normal: a body whose translations along
+         * it are held (/BCS) or imposed does not take part */
+        const double ma = normal_mass(m, ba, r.normal), mb = normal_mass(m, bb, r.normal);
+        const double mred = isfinite(ma) && isfinite(mb) ? ma * mb / (ma + mb) : isfinite(ma) ? ma : mb;
+        const double mmin = fmin(ma, mb);
+        m->inter_mred[i] = mred;
+        m->inter_pscale[i] = m->inter_fscale[i] = m->inter_kscale[i] = m->inter_vscale[i] = NAN;
+        if (!isfinite(mred) && !(r.p_raw > 0)) continue; /* nothing moves along the normal */
+        /* speed scale: initial and imposed speeds, fall over the gap */
+        double v = vmodel; /* momentum travels through chains of contacts */
+        if (r.p_raw < 0) v = fmax(v, sqrt(2.0 * gmax * -r.p_raw));
+        const double pF = invert(m, i, 0, mmin * gmax);
+        const double pE = invert(m, i, 1, 0.5 * mred * v * v);
+        double p = isfinite(pF) ? pF : NAN;
+        if (isfinite(pE) && !(pE >= p)) p = pE;
+        /* within RC_PSCALE_SPAN of the larger: a tiny initial penetration or
+         * speed must not set absurd tolerances */
+        if (isfinite(pE) && isfinite(pF)) p = fmax(p, RC_PSCALE_SPAN * pF);
+        /* nothing moves along the normal or loads it, but the contact starts
+         * penetrating (bodies held there): its initial penetration */
+        if (!isfinite(p) && r.p_raw > 0) p = r.p_raw;
+        if (!isfinite(p)) continue;
+        double k = law_slope(m, i, p), f = law_force(m, i, p);
+        if (!(k > 0)) k = f / p; /* a curve flat at p_s: its secant */
+        if (!(k > 0) || !(f > 0)) continue;
+        m->inter_pscale[i] = p;
+        m->inter_fscale[i] = f;
+        m->inter_kscale[i] = k;
+        double mv = mred;
+        if (!isfinite(mv)) { /* held along the normal: the plain reduced mass */
+            double inv = 0.0;
+            if (ba >= 0 && m->body_yadr[ba] >= 0) inv += 1.0 / m->body_mass[ba];
+            if (bb >= 0 && m->body_yadr[bb] >= 0) inv += 1.0 / m->body_mass[bb];
+            mv = inv > 0 ? 1.0 / inv : INFINITY;
+        }
+        if (!isfinite(mv)) {
+            m->inter_pscale[i] = m->inter_fscale[i] = m->inter_kscale[i] = NAN;
+            continue;
+        }
+        m->inter_vscale[i] = p * sqrt(k / mv);
+        escale = fmax(escale, law_energy(m, i, p));
+    }
+    /* energy scale: the contacts' energies at their scales; without any,
+     * the initial kinetic energy and the work of gravity over one body size
+     * (a 1e12 kg belt's kinetic energy is not what the ledger exchanges) */
+    double ebody = e0;
+    for (int b = 0; b < m->nbody; b++) {
+        if (m->body_yadr[b] < 0) continue;
+        const double *yb = m->body_y0 + RC_NB * b, *J = m->body_J + 9 * b;
+        double ek = 0.5 * m->body_mass[b] * (yb[7] * yb[7] + yb[8] * yb[8] + yb[9] * yb[9]);
+        for (int r = 0; r < 3; r++)
+            for (int c = 0; c < 3; c++) ek += 0.5 * yb[10 + r] * J[3 * r + c] * yb[10 + c];
+        ebody = fmax(ebody, ek);
+        ebody = fmax(ebody, m->body_mass[b] * gmax * size[b]);
+    }
+    m->escale = escale > 0 ? escale : ebody;
+    /* stick damping of the incremental friction: the stick spring critically
+     * damped on the pair's reduced mass, so that a body stopped on a
+     * sticking contact comes to rest instead of ringing */
+    for (int i = 0; i < n; i++) {
+        rc_fric *fr = &m->inter_fr[i];
+        /* the pair's reduced mass, every free body taking part (held
+         * directions included: a held body still carries the damper) */
+        double inv = 0.0;
+        const int bs[2] = {m->inter_ba[i], m->inter_bb[i]};
+        for (int k = 0; k < 2; k++)
+            if (bs[k] >= 0 && m->body_yadr[bs[k]] >= 0) inv += 1.0 / m->body_mass[bs[k]];
+        const double mr = inv > 0 ? 1.0 / inv : INFINITY;
+        fr->ct = fr->kind != RC_FK_NONE && fr->form == RC_FF_INCREMENTAL && fr->kt > 0 && isfinite(mr)
+                     ? RC_STICK_ZETA * 2.0 * sqrt(fr->kt * mr)
+                     : 0.0;
+    }
+    /* derived regularisation of the power law (blank Dreg, Vreg) */
+    for (int i = 0; i < n; i++) {
+        if (m->inter_law[i] != RC_LAW_POWER) continue;
+        rc_power *pw = &m->inter_pw[i];
+        const int ok = isfinite(m->inter_pscale[i]);
+        if (pw->dreg == 0) pw->dreg = ok ? RC_DREG_FRAC * m->inter_pscale[i] : 1e-6;
+        if (pw->vreg == 0) pw->vreg = ok ? RC_DREG_FRAC * m->inter_vscale[i] : 1e-6;
+    }
+    free(y);
+    free(size);
+    return RC_OK;
+}
+
+/* The largest velocity sensitivity of interface i's forces at its scales
+ * [N s/m]: normal damping Visc, the viscous friction form's C = sqrt(2 VISF
+ * k_s m_red), the stick damper; a velocity error dv moves a force by c dv,
+ * so the velocity tolerance is at most rtol F_s / c. */
+static double inter_damping(const rc_model *m, int i)
+{
+    double c = m->inter_law[i] == RC_LAW_TYPE6 ? m->inter_visc[i] : 0.0;
+    const rc_fric *fr = &m->inter_fr[i];
+    if (fr->kind == RC_FK_CARD && fr->form == RC_FF_VISCOUS)
+        for (int k = 0; k < 1 + fr->ortho; k++)
+            c = fmax(c, sqrt(2.0 * fr->set[k][RC_FS_VISF] * m->inter_kscale[i] * fr->mred));
+    c = fmax(c, fr->ct);
+    return c > 0 ? c : 1e-300;
+}
+
+rc_status rc_model_tolerances(rc_model *m, rc_error *err)
+{
+    const int ny = m->ny;
+    m->atol = malloc((size_t)ny * sizeof(double));
+    m->ewt_rel = malloc((size_t)ny + 1);
+    if (!m->atol || !m->ewt_rel) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    memset(m->ewt_rel, 1, (size_t)ny);
+    const int au = m->tol_auto;
+    const double rt = m->rtol;
+    /* energies */
+    if (au & RC_TOL_AUTO_ENERGY) m->atol_energy = m->escale > 0 ? RC_TOL_EFRAC * rt * m->escale : RC_TOL_FALLBACK_ENERGY;
+    for (int k = 0; k < ny; k++) m->atol[k] = m->atol_energy; /* accounting states unless set below */
+    /* bodies: the smallest scales of their contacts (one pass over the
+     * interfaces) */
+    const size_t nb = (size_t)m->nbody + 1;
+    double *size = malloc(nb * sizeof(double)), *bps = malloc(nb * sizeof(double)), *bvs = malloc(nb * sizeof(double));
+    if (!size || !bps || !bvs) {
+        free(size);
+        free(bps);
+        free(bvs);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    body_sizes(m, size);
+    for (int b = 0; b < m->nbody; b++) bps[b] = bvs[b] = INFINITY;
+    for (int i = 0; i < m->ninter; i++) {
+        if (!isfinite(m->inter_pscale[i])) continue;
+        const double vi = fmin(m->inter_vscale[i], m->inter_fscale[i] / inter_damping(m, i));
+        const int bs[2] = {m->inter_ba[i], m->inter_bb[i]};
+        for (int k = 0; k < 2; k++) {
+            if (bs[k] < 0) continue;
+            bps[bs[k]] = fmin(bps[bs[k]], m->inter_pscale[i]);
+            bvs[bs[k]] = fmin(bvs[bs[k]], vi);
+        }
+    }
+    for (int b = 0; b < m->nbody; b++) {
+        if (m->body_yadr[b] < 0) continue;
+        const double ps = bps[b], vs = bvs[b];
+        const int scaled = isfinite(ps);
+        const double L = size[b] > 0 ? size[b] : 1.0;
+        /* no contact scale: the body's size and the model's speed scale,
+         * with the relative part (couplings, free flight) */
+        const double vb = m->vscale > 0 ? m->vscale : RC_TOL_FALLBACK_SPEED;
+        double *a = m->atol + m->body_yadr[b];
+        char *rel = m->ewt_rel + m->body_yadr[b];
+        for (int k = 0; k < 3; k++) {
+            if (au & RC_TOL_AUTO_POS) {
+                a[k] = scaled ? rt * ps : rt * RC_TOL_FALLBACK_LFRAC * L;
+                rel[k] = 0;
+            } else {
+                a[k] = m->atol_pos;
+            }
+        }
+        for (int k = 3; k < 7; k++) {
+            if (au & RC_TOL_AUTO_QUAT) {
+                a[k] = scaled ? rt * ps / L : rt * RC_TOL_FALLBACK_LFRAC;
+                rel[k] = 0;
+            } else {
+                a[k] = m->atol_quat;
+            }
+        }
+        for (int k = 7; k < 10; k++) {
+            a[k] = (au & RC_TOL_AUTO_VEL) ? (scaled ? rt * vs : rt * RC_TOL_FALLBACK_LFRAC * vb) : m->atol_vel;
+            /* velocities absolutely as well: what sets the forces is the
+             * relative velocity at the contacts (a block sticking on a belt
+             * at 0.05 m/s creeps at um/s), not |v| */
+            if (au & RC_TOL_AUTO_VEL) rel[k] = 0;
+        }
+        for (int k = 10; k < 13; k++)
+            a[k] = (au & RC_TOL_AUTO_OMEGA) ? (scaled ? rt * vs / L : rt * RC_TOL_FALLBACK_LFRAC * vb / L) : m->atol_omega;
+    }
+    /* interface states: forces at rtol of the force scale (or the
+     * stiffness times the position tolerance when given), lengths at the
+     * position tolerance */
+    for (int i = 0; i < m->ninter; i++) {
+        const int scaled = isfinite(m->inter_pscale[i]) && (au & RC_TOL_AUTO_POS);
+        /* an interface without a scale: rtol RC_TOL_FALLBACK_LFRAC of its
+         * bodies' sizes */
+        const int ba = m->inter_ba[i], bb = m->inter_bb[i];
+        double Li = (ba >= 0 ? size[ba] : 0.0) + (bb >= 0 ? size[bb] : 0.0);
+        if (!(Li > 0)) Li = 1.0;
+        const double apos = scaled                      ? rt * m->inter_pscale[i]
+                            : (au & RC_TOL_AUTO_POS) ? rt * RC_TOL_FALLBACK_LFRAC * Li
+                                                     : m->atol_pos;
+        double *a = m->atol + m->inter_eadr[i];
+        if (m->inter_hidx[i] >= 0) a[m->inter_hidx[i]] = scaled ? rt * m->inter_fscale[i] : m->inter_stiff[i] * apos;
+        if (m->inter_oidx[i] >= 0) a[m->inter_oidx[i]] = apos;
+        const rc_fric *fr = &m->inter_fr[i];
+        for (int k = 0; k < 3; k++) {
+            const double af = scaled ? rt * m->inter_fscale[i] : fr->kt * apos;
+            if (fr->tidx >= 0) a[fr->tidx + k] = af;
+            if (fr->fidx >= 0) a[fr->fidx + k] = af;
+        }
+        /* slip-test band: the force tolerance of F_t, and at least RC_SLIP_BAND
+         * of the contact's force scale (the relative band of the limit,
+         * carried down to small loads: a load ramped from zero, carried by the
+         * dampers at first, must not slip on differences of 1e-8 F_s) */
+        double fb = fr->tidx >= 0 ? a[fr->tidx] : 0.0;
+        if (fr->tidx >= 0 && isfinite(m->inter_fscale[i])) fb = fmax(fb, RC_SLIP_BAND * m->inter_fscale[i]);
+        m->inter_fr[i].fband = fb;
+    }
+    free(size);
+    free(bps);
+    free(bvs);
+    rc_cpl_atol(m);
+    for (int k = 0; k < ny; k++)
+        if (!(m->atol[k] > 0)) RC_RAISE(err, RC_EINTERNAL, "absolute tolerance of state %d is %g", k, m->atol[k]);
+    /* all relative: plain per-component tolerances */
+    int any = 0;
+    for (int k = 0; k < ny; k++) any |= !m->ewt_rel[k];
+    if (!any) {
+        free(m->ewt_rel);
+        m->ewt_rel = NULL;
+    }
+    return RC_OK;
+}

@@ -1,0 +1,604 @@
+/*
+ * Compile a parsed case into the constant model: resolve ids, check the
+ * physics of each reference, lay out the state vector and its tolerances,
+ * and build the Jacobian pattern. Every error names the file:line and card
+ * of the reference that is wrong.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "case/case.h"
+#include "model/coupling.h"
+#include "base/error.h"
+#include "model/geom.h"
+#include "model/imposed.h"
+#include "model/model.h"
+#include "model/power.h"
+
+#define ALLOC(ptr, n)                                                               \
+    do {                                                                            \
+        (ptr) = calloc((size_t)(n) + 1, sizeof *(ptr));                             \
+        if (!(ptr)) {                                                               \
+            st = RC_SET(err, RC_ENOMEM, "out of memory compiling the model");       \
+            goto fail;                                                              \
+        }                                                                           \
+    } while (0)
+
+
+/* Bodies of the nodes of group `gid` -> flag array (all bodies when gid = 0). */
+static rc_status group_bodies(const rc_case *c, int gid, rc_loc loc, const char *card, int *flag,
+                              rc_error *err)
+{
+    for (int b = 0; b < c->nrbody; b++) flag[b] = gid == 0;
+    if (gid == 0) return RC_OK;
+    int g = rc_case_find_grnod(c, gid);
+    if (g < 0)
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field grnod_ID: expected the id of a /GRNOD, got %d (no such group)",
+                 RC_LOC(loc), card, gid);
+    for (int k = 0; k < c->grnod[g].n; k++) {
+        int b = rc_case_body_of_node(c, c->grnod[g].nodes[k]);
+        if (b < 0)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card %s: node %d of /GRNOD/%d belongs to no /RBODY (ricochet bodies are rigid)",
+                     RC_LOC(loc), card, c->grnod[g].nodes[k], gid);
+        flag[b] = 1;
+    }
+    return RC_OK;
+}
+
+/* 3x3 inverse (symmetric positive definite checked by the reader). */
+static int inv3(const double *a, double *o)
+{
+    double det = a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
+                 a[2] * (a[3] * a[7] - a[4] * a[6]);
+    if (!(det > 0)) return -1;
+    o[0] = (a[4] * a[8] - a[5] * a[7]) / det;
+    o[1] = (a[2] * a[7] - a[1] * a[8]) / det;
+    o[2] = (a[1] * a[5] - a[2] * a[4]) / det;
+    o[3] = (a[5] * a[6] - a[3] * a[8]) / det;
+    o[4] = (a[0] * a[8] - a[2] * a[6]) / det;
+    o[5] = (a[2] * a[3] - a[0] * a[5]) / det;
+    o[6] = (a[3] * a[7] - a[4] * a[6]) / det;
+    o[7] = (a[1] * a[6] - a[0] * a[7]) / det;
+    o[8] = (a[0] * a[4] - a[1] * a[3]) / det;
+    return 0;
+}
+
+/* ---- bodies ------------------------------------------------------------ */
+static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
+{
+    for (int b = 0; b < c->nrbody; b++) {
+        const rc_case_rbody *rb = &c->rbody[b];
+        int nd = rc_case_find_node(c, rb->node_id);
+        if (nd < 0)
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field node_ID: expected the id of a /NODE, got %d (no such node)",
+                     RC_LOC(rb->loc), rb->id, rb->node_id);
+        if (rb->grnod_id && rc_case_find_grnod(c, rb->grnod_id) < 0)
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field grnd_ID: expected the id of a /GRNOD, got %d (no such group)",
+                     RC_LOC(rb->loc), rb->id, rb->grnod_id);
+        m->body_id[b] = rb->id;
+        m->body_mass[b] = rb->mass;
+        /* inertia: Jxx Jyy Jzz Jxy Jyz Jxz -> row-major 3x3 */
+        double *J = m->body_J + 9 * b;
+        J[0] = rb->J[0]; J[4] = rb->J[1]; J[8] = rb->J[2];
+        J[1] = J[3] = rb->J[3];
+        J[5] = J[7] = rb->J[4];
+        J[2] = J[6] = rb->J[5];
+        if (inv3(J, m->body_Jinv + 9 * b))
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, fields Jxx..Jxz: expected a positive-definite inertia tensor",
+                     RC_LOC(rb->loc), rb->id);
+        double *y0 = m->body_y0 + RC_NB * b;
+        memcpy(y0, c->node[nd].x, 3 * sizeof(double));
+        y0[3] = 1.0; /* body frame = global frame at t = 0 */
+    }
+    /* initial velocities */
+    int *flag = calloc((size_t)c->nrbody + 1, sizeof(int));
+    if (!flag) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    rc_status st = RC_OK;
+    for (int k = 0; k < c->ninivel && !st; k++) {
+        const rc_case_inivel *iv = &c->inivel[k];
+        char card[64];
+        snprintf(card, sizeof card, "/INIVEL/%s/%d", iv->rot ? "ROT" : "TRA", iv->id);
+        st = group_bodies(c, iv->grnod_id, iv->loc, card, flag, err);
+        for (int b = 0; b < c->nrbody && !st; b++)
+            if (flag[b]) memcpy(m->body_y0 + RC_NB * b + (iv->rot ? 10 : 7), iv->v, 3 * sizeof(double));
+    }
+    /* /BCS on a node of a body: all six flags fix the body; otherwise the
+     * flagged global translations are held, and the rotations all or none
+     * (a partial rotation lock is not a simple condition on quaternions) */
+    for (int k = 0; k < c->nbcs && !st; k++) {
+        const rc_case_bcs *bc = &c->bcs[k];
+        char card[64];
+        snprintf(card, sizeof card, "/BCS/%d", bc->id);
+        int all = 1, nrot = 0;
+        for (int j = 0; j < 6; j++) all &= bc->fix[j] == 1;
+        for (int j = 3; j < 6; j++) nrot += bc->fix[j] == 1;
+        if (nrot != 0 && nrot != 3) {
+            st = RC_SET(err, RC_EINPUT,
+                        RC_LOCFMT "card %s, field Trarot: rotations must be all fixed or all free (\"xxx 111\" or \"xxx 000\"); a partial rotation lock is not supported yet",
+                        RC_LOC(bc->loc), card);
+            break;
+        }
+        st = group_bodies(c, bc->grnod_id, bc->loc, card, flag, err);
+        for (int b = 0; b < c->nrbody && !st; b++) {
+            if (!flag[b]) continue;
+            if (all) m->body_fixed[b] = 1;
+            for (int j = 0; j < 6; j++) m->body_dofmask[6 * b + j] |= bc->fix[j] == 1;
+        }
+    }
+    /* held DOFs start at rest */
+    for (int b = 0; b < c->nrbody && !st; b++)
+        for (int j = 0; j < 6; j++)
+            if (m->body_dofmask[6 * b + j]) m->body_y0[RC_NB * b + 7 + j] = 0.0;
+    /* gravity: one time function for all cards (constant when 0) */
+    for (int k = 0; k < c->ngrav && !st; k++) {
+        const rc_case_grav *gr = &c->grav[k];
+        char card[64];
+        snprintf(card, sizeof card, "/GRAV/%d", gr->id);
+        int tab;
+        st = rc_case_ref_funct(c, gr->fct_id, 0, gr->loc, card, "fct_IDT", &tab, err);
+        if (st) break;
+        if (k > 0 && tab != m->grav_table) {
+            st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field fct_IDT: all /GRAV cards must share one time function (not supported yet)",
+                        RC_LOC(gr->loc), card);
+            break;
+        }
+        m->grav_table = tab;
+        m->grav_ascale = gr->ascale;
+        st = group_bodies(c, gr->grnod_id, gr->loc, card, flag, err);
+        for (int b = 0; b < c->nrbody && !st; b++)
+            if (flag[b]) m->body_grav[3 * b + gr->dir] += gr->fscale;
+    }
+    free(flag);
+    return st;
+}
+
+/* ---- surfaces ---------------------------------------------------------- */
+static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
+{
+    for (int s = 0; s < c->nsurf; s++) {
+        const rc_case_surf *cs = &c->surf[s];
+        static const char *const kinds[5] = {"", "PLANE", "ELLIPS", "CYL", "BOX"};
+        const char *kind = kinds[cs->kind];
+        int b = -1;
+        if (cs->rbody_id) {
+            b = rc_case_find_rbody(c, cs->rbody_id);
+            if (b < 0)
+                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /SURF/%s/%d, field rbody_ID: expected the id of a /RBODY, got %d (no such body)",
+                         RC_LOC(cs->loc), kind, cs->id, cs->rbody_id);
+        }
+        m->surf_id[s] = cs->id;
+        m->surf_body[s] = b;
+        /* local frame: body frame = global at t = 0, origin at the CoM */
+        const double *org = b >= 0 ? m->body_y0 + RC_NB * b : m->ground_y0;
+        if (cs->kind == RC_CASE_SURF_CYL || cs->kind == RC_CASE_SURF_BOX) {
+            rc_geom_surface(cs, m, s, org); /* geom_compile.c */
+        } else if (cs->kind == RC_CASE_SURF_PLANE) {
+            double n[3], len = 0;
+            for (int k = 0; k < 3; k++) {
+                n[k] = cs->m1[k] - cs->m[k];
+                len += n[k] * n[k];
+            }
+            len = sqrt(len);
+            m->surf_kind[s] = RC_SURF_PLANE;
+            for (int k = 0; k < 3; k++) {
+                m->surf_p[3 * s + k] = cs->m[k] - org[k];
+                m->surf_n[3 * s + k] = n[k] / len;
+            }
+        } else {
+            m->surf_kind[s] = RC_SURF_SPHERE;
+            m->surf_r[s] = cs->abc[0];
+            for (int k = 0; k < 3; k++) m->surf_p[3 * s + k] = cs->c[k] - org[k];
+        }
+    }
+    return RC_OK;
+}
+
+/* ---- interfaces -------------------------------------------------------- */
+/* Largest slope of a scaled curve F = fs f(P / ax) over its points [N/m]. */
+static double max_slope(const rc_table *t, double fs, double ax, double *at)
+{
+    double smax = 0;
+    for (int k = 0; k + 1 < t->n; k++) {
+        double s = fabs(fs / ax * (t->y[k + 1] - t->y[k]) / (t->x[k + 1] - t->x[k]));
+        if (s > smax) {
+            smax = s;
+            *at = ax * t->x[k];
+        }
+    }
+    return smax;
+}
+
+/* The elasto-plastic laws need Stiff steeper than both curves, so that
+ * leaving a curve along the Stiff line moves away from it (no chattering at
+ * a reversal, docs/theory.md); the unload curve must lie below the load curve. */
+static rc_status check_hysteresis(const rc_model *m, int i, const rc_case_type6 *t6, const char *card,
+                                  rc_error *err)
+{
+    if (m->inter_iform[i] == 0) return RC_OK;
+    const double ax = m->inter_ascalex[i];
+    const rc_table *tl = &m->table[m->inter_fct_ld[i]];
+    double at = 0, sl = max_slope(tl, m->inter_fscaleld[i], ax, &at);
+    if (!(m->inter_stiff[i] > sl))
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card %s, field Stiff: expected a stiffness steeper than the load curve (its slope reaches %.6g N/m at P = %.6g m), got %.6g",
+                 RC_LOC(t6->line_loc[4]), card, sl, at, m->inter_stiff[i]);
+    if (m->inter_fct_ul[i] < 0) return RC_OK;
+    const rc_table *tu = &m->table[m->inter_fct_ul[i]];
+    double su = max_slope(tu, m->inter_fscaleul[i], ax, &at);
+    if (!(m->inter_stiff[i] > su))
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card %s, field Stiff: expected a stiffness steeper than the unload curve (its slope reaches %.6g N/m at P = %.6g m), got %.6g",
+                 RC_LOC(t6->line_loc[4]), card, su, at, m->inter_stiff[i]);
+    /* unload below load at every point of either curve */
+    for (int pass = 0; pass < 2; pass++) {
+        const rc_table *t = pass ? tu : tl;
+        for (int k = 0; k < t->n; k++) {
+            double P = ax * t->x[k], fl, fu, dd;
+            if (P < 0) continue;
+            rc_table_eval(tl, P / ax, &fl, &dd);
+            rc_table_eval(tu, P / ax, &fu, &dd);
+            fl *= m->inter_fscaleld[i];
+            fu *= m->inter_fscaleul[i];
+            if (fu > fl + 1e-12 * fabs(fl))
+                RC_RAISE(err, RC_EINPUT,
+                         RC_LOCFMT "card %s, field fct_IDul: expected an unload curve below the load curve, but at P = %.6g m it gives %.6g N above %.6g N",
+                         RC_LOC(t6->line_loc[4]), card, P, fu, fl);
+        }
+    }
+    return RC_OK;
+}
+
+static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *err)
+{
+    const rc_case_type6 *t6 = &c->type6[i];
+    char card[64];
+    snprintf(card, sizeof card, "/INTER/TYPE6/%d", t6->id);
+    int s1 = rc_case_find_surf(c, t6->surf1), s2 = rc_case_find_surf(c, t6->surf2);
+    if (s1 < 0 || s2 < 0)
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field %s: expected the id of a /SURF, got %d (no such surface)",
+                 RC_LOC(t6->line_loc[0]), card, s1 < 0 ? "surf_ID1" : "surf_ID2", s1 < 0 ? t6->surf1 : t6->surf2);
+    /* order the pair (a: sphere or cylinder) and name its kind (geom_compile.c) */
+    char where[600];
+    snprintf(where, sizeof where, RC_LOCFMT "card %s", RC_LOC(t6->line_loc[0]), card);
+    rc_status pst = rc_geom_pair(m, s1, s2, &s1, &s2, &m->inter_pair[i], where, err);
+    if (pst) return pst;
+    m->inter_sa[i] = s1;
+    m->inter_sb[i] = s2;
+    m->inter_ba[i] = m->surf_body[s1];
+    m->inter_bb[i] = m->surf_body[s2];
+    if (m->inter_ba[i] == m->inter_bb[i])
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields surf_ID1/surf_ID2: both surfaces are on the same body; they must belong to two different rigid bodies",
+                 RC_LOC(t6->line_loc[0]), card);
+    m->inter_id[i] = t6->id;
+    m->inter_gap[i] = t6->gap;
+    m->inter_tstart[i] = t6->tstart;
+    m->inter_tstop[i] = t6->tstop;
+    m->inter_visc[i] = t6->visc;
+    m->inter_fscalev[i] = t6->fscalev;
+    m->inter_ascalex[i] = t6->ascalex;
+    m->inter_fscaleld[i] = t6->fscaleld;
+    m->inter_ascalef[i] = t6->ascalef;
+    m->inter_ascalev[i] = t6->ascalev;
+    rc_status st;
+    if ((st = rc_case_ref_funct(c, t6->fct_ld, 0, t6->line_loc[3], card, "fct_IDld", &m->inter_fct_ld[i], err))) return st;
+    if ((st = rc_case_ref_funct(c, t6->fct_dv, 0, t6->line_loc[5], card, "fct_IDdv", &m->inter_fct_dv[i], err))) return st;
+    if ((st = rc_case_ref_funct(c, t6->fct_df, 0, t6->line_loc[5], card, "fct_IDdf", &m->inter_fct_df[i], err))) return st;
+    if ((st = rc_case_ref_funct(c, t6->fct_ul, 0, t6->line_loc[4], card, "fct_IDul", &m->inter_fct_ul[i], err))) return st;
+    m->inter_iform[i] = t6->iform;
+    m->inter_icor[i] = t6->icor;
+    m->inter_inacti[i] = t6->inacti;
+    m->inter_stiff[i] = t6->stiff;
+    m->inter_fscaleul[i] = t6->fscaleul;
+    /* Iform 2 has no unload curve (floor at zero); Iform 1 without one behaves as 2 */
+    if (t6->iform == 2) m->inter_fct_ul[i] = -1;
+    /* friction of the TYPE6 card itself: limit Sfric + Fric f_ff f_fv F_n,
+     * incremental, stick stiffness Stiff or, when not given, the steepest
+     * slope of the load curve (a /FRICTION card may override it) */
+    rc_fric *fr = &m->inter_fr[i];
+    fr->fct_ff = fr->fct_fv = -1;
+    fr->tidx = fr->fidx = fr->widx = fr->obody = -1;
+    if ((st = rc_case_ref_funct(c, t6->fct_ff, 0, t6->line_loc[2], card, "fct_IDff", &fr->fct_ff, err))) return st;
+    if ((st = rc_case_ref_funct(c, t6->fct_fv, 0, t6->line_loc[2], card, "fct_IDfv", &fr->fct_fv, err))) return st;
+    fr->sfric = t6->sfric;
+    fr->fric = t6->fric;
+    fr->kind = t6->sfric > 0 || t6->fric > 0 ? RC_FK_TYPE6 : RC_FK_NONE;
+    fr->form = RC_FF_INCREMENTAL;
+    double at = 0;
+    fr->kt = t6->stiff > 0 ? t6->stiff
+                           : max_slope(&m->table[m->inter_fct_ld[i]], m->inter_fscaleld[i], m->inter_ascalex[i], &at);
+    if (fr->kind != RC_FK_NONE && !(fr->kt > 0))
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field Stiff: friction needs a tangential stiffness [N/m]; the default (the load curve's steepest slope) is 0",
+                 RC_LOC(t6->line_loc[4]), card);
+    if (m->inter_fct_ld[i] < 0)
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field fct_IDld: expected the id of the load curve (required), got 0",
+                 RC_LOC(t6->line_loc[3]), card);
+    if ((st = check_hysteresis(m, i, t6, card, err))) return st;
+    m->inter_name[i] = malloc(strlen(card) + 1);
+    if (!m->inter_name[i]) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    strcpy(m->inter_name[i], card);
+    return RC_OK;
+}
+
+/* ---- state layout and tolerances -------------------------------------- */
+static rc_status layout(rc_model *m, rc_error *err)
+{
+    int ny = 0;
+    for (int b = 0; b < m->nbody; b++) {
+        m->body_yadr[b] = m->body_fixed[b] ? -1 : ny;
+        if (!m->body_fixed[b]) {
+            ny += RC_NB;
+            m->nfree++;
+        }
+    }
+    for (int i = 0; i < m->ninter; i++) {
+        m->inter_eadr[i] = ny;
+        int ns = RC_NE;
+        m->inter_hidx[i] = m->inter_iform[i] != 0 ? ns++ : -1;
+        m->inter_oidx[i] = m->inter_inacti[i] == 5 ? ns++ : -1;
+        rc_fric *fr = &m->inter_fr[i];
+        if (fr->kind != RC_FK_NONE) {
+            if (fr->form == RC_FF_INCREMENTAL) {
+                fr->tidx = ns;
+                ns += 3;
+            }
+            if (fr->tau > 0) {
+                fr->fidx = ns;
+                ns += 3;
+            }
+            fr->widx = ns++;
+        }
+        m->inter_ns[i] = ns;
+        ny += ns;
+    }
+    ny = rc_cpl_layout(m, ny);
+    /* a gravity that varies in time has no potential: integrate its work */
+    m->gwork_adr = m->grav_table >= 0 ? ny++ : -1;
+    /* work of the imposed velocities (imposed.c) */
+    ny = rc_imp_layout(m, ny);
+    m->ny = ny;
+    /* rows of held DOFs (accelerations set to zero), for rhs and Jacobian */
+    m->nheld = 0;
+    m->held = malloc((size_t)(6 * m->nbody + 1) * sizeof(int));
+    if (!m->held) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    for (int b = 0; b < m->nbody; b++)
+        for (int j = 0; j < 6 && m->body_yadr[b] >= 0; j++)
+            if (m->body_dofmask[6 * b + j]) m->held[m->nheld++] = m->body_yadr[b] + 7 + j;
+    m->row_held = calloc((size_t)ny + 1, 1);
+    if (!m->row_held) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    for (int k = 0; k < m->nheld; k++) m->row_held[m->held[k]] = 1;
+    if (ny == 0) RC_RAISE(err, RC_EINPUT, "%s: the case has nothing to integrate (no free body)", m->case_path);
+    return RC_OK;
+}
+
+rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
+{
+    rc_status st = RC_OK;
+    *out = NULL;
+    rc_model *m = calloc(1, sizeof *m);
+    if (!m) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    /* provenance and settings */
+    m->case_path = malloc(strlen(c->path) + 1);
+    if (!m->case_path) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory");
+        goto fail;
+    }
+    strcpy(m->case_path, c->path);
+    snprintf(m->title, sizeof m->title, "%s", c->title);
+    snprintf(m->unit_mass, sizeof m->unit_mass, "%s", c->unit_mass);
+    snprintf(m->unit_length, sizeof m->unit_length, "%s", c->unit_length);
+    snprintf(m->unit_time, sizeof m->unit_time, "%s", c->unit_time);
+    m->checksum = c->checksum;
+    m->tend = c->run.tend;
+    m->dtout = c->run.dtout;
+    m->ev_state = c->run.ev_state;
+    m->rtol = c->solver.rtol;
+    m->atol_pos = c->solver.atol_pos;
+    m->atol_quat = c->solver.atol_quat;
+    m->atol_vel = c->solver.atol_vel;
+    m->atol_omega = c->solver.atol_omega;
+    m->atol_energy = c->solver.atol_energy;
+    /* blank (zero) absolute tolerances are derived from the model (scales.c) */
+    m->tol_auto = (m->atol_pos == 0 ? RC_TOL_AUTO_POS : 0) | (m->atol_quat == 0 ? RC_TOL_AUTO_QUAT : 0) |
+                  (m->atol_vel == 0 ? RC_TOL_AUTO_VEL : 0) | (m->atol_omega == 0 ? RC_TOL_AUTO_OMEGA : 0) |
+                  (m->atol_energy == 0 ? RC_TOL_AUTO_ENERGY : 0);
+    m->max_order = c->solver.max_order;
+    m->max_steps = c->solver.max_steps;
+    m->hmax = c->solver.hmax;
+    m->h0 = c->solver.h0;
+    m->ground_y0[3] = 1.0;
+    m->grav_table = -1;
+    m->grav_ascale = 1.0;
+
+    /* curves */
+    m->ntable = c->nfunct;
+    ALLOC(m->table, m->ntable);
+    for (int k = 0; k < c->nfunct; k++) {
+        const rc_case_funct *f = &c->funct[k];
+        if ((st = rc_table_init(&m->table[k], f->id, f->npts, f->x, f->y, err))) goto fail;
+    }
+    /* bodies */
+    m->nbody = c->nrbody;
+    if (m->nbody == 0) {
+        st = RC_SET(err, RC_EINPUT, "%s: no /RBODY card: ricochet needs at least one rigid body", c->path);
+        goto fail;
+    }
+    ALLOC(m->body_id, m->nbody);
+    ALLOC(m->body_fixed, m->nbody);
+    ALLOC(m->body_yadr, m->nbody);
+    ALLOC(m->body_mass, m->nbody);
+    ALLOC(m->body_J, 9 * m->nbody);
+    ALLOC(m->body_Jinv, 9 * m->nbody);
+    ALLOC(m->body_y0, RC_NB * m->nbody);
+    ALLOC(m->body_grav, 3 * m->nbody);
+    ALLOC(m->body_dofmask, 6 * m->nbody);
+    if ((st = compile_bodies(c, m, err))) goto fail;
+    /* surfaces */
+    m->nsurf = c->nsurf;
+    ALLOC(m->surf_id, m->nsurf);
+    ALLOC(m->surf_kind, m->nsurf);
+    ALLOC(m->surf_body, m->nsurf);
+    ALLOC(m->surf_p, 3 * m->nsurf);
+    ALLOC(m->surf_n, 3 * m->nsurf);
+    ALLOC(m->surf_r, m->nsurf);
+    ALLOC(m->surf_ext, RC_SURF_NEXT * m->nsurf);
+    if ((st = compile_surfaces(c, m, err))) goto fail;
+    /* interfaces */
+    m->ninter = c->ntype6 + c->npower; /* TYPE6, then /INTER/POWER */
+    ALLOC(m->inter_id, m->ninter);
+    ALLOC(m->inter_pair, m->ninter);
+    ALLOC(m->inter_sa, m->ninter);
+    ALLOC(m->inter_sb, m->ninter);
+    ALLOC(m->inter_ba, m->ninter);
+    ALLOC(m->inter_bb, m->ninter);
+    ALLOC(m->inter_gap, m->ninter);
+    ALLOC(m->inter_tstart, m->ninter);
+    ALLOC(m->inter_tstop, m->ninter);
+    ALLOC(m->inter_visc, m->ninter);
+    ALLOC(m->inter_fscalev, m->ninter);
+    ALLOC(m->inter_ascalex, m->ninter);
+    ALLOC(m->inter_fscaleld, m->ninter);
+    ALLOC(m->inter_ascalef, m->ninter);
+    ALLOC(m->inter_ascalev, m->ninter);
+    ALLOC(m->inter_fct_ld, m->ninter);
+    ALLOC(m->inter_fct_dv, m->ninter);
+    ALLOC(m->inter_fct_df, m->ninter);
+    ALLOC(m->inter_eadr, m->ninter);
+    ALLOC(m->inter_fct_ul, m->ninter);
+    ALLOC(m->inter_iform, m->ninter);
+    ALLOC(m->inter_icor, m->ninter);
+    ALLOC(m->inter_inacti, m->ninter);
+    ALLOC(m->inter_stiff, m->ninter);
+    ALLOC(m->inter_fscaleul, m->ninter);
+    ALLOC(m->inter_ns, m->ninter);
+    ALLOC(m->inter_hidx, m->ninter);
+    ALLOC(m->inter_oidx, m->ninter);
+    ALLOC(m->inter_fr, m->ninter);
+    ALLOC(m->inter_name, m->ninter);
+    ALLOC(m->inter_law, m->ninter);
+    ALLOC(m->inter_pw, m->ninter);
+    for (int i = 0; i < c->ntype6; i++)
+        if ((st = compile_type6(c, m, i, err))) goto fail;
+    for (int k = 0; k < c->npower; k++) /* power_compile.c */
+        if ((st = rc_power_compile(c, m, k, c->ntype6 + k, err))) goto fail;
+    if ((st = rc_friction_compile(c, m, err))) goto fail;
+    /* couplings (coupling_compile.c) */
+    if ((st = rc_cpl_compile(c, m, err))) goto fail;
+    /* imposed velocities (imposed.c) */
+    if ((st = rc_imp_compile(c, m, err))) goto fail;
+    /* states, tolerances, Jacobian pattern */
+    if ((st = layout(m, err))) goto fail;
+    if ((st = rc_model_scales(m, err))) goto fail;
+    if ((st = rc_model_tolerances(m, err))) goto fail;
+    if ((st = rc_jac_build(m, err))) goto fail;
+    *out = m;
+    return RC_OK;
+fail:
+    rc_model_free(m);
+    return st;
+}
+
+void rc_model_free(rc_model *m)
+{
+    if (!m) return;
+    if (m->table)
+        for (int k = 0; k < m->ntable; k++) rc_table_free(&m->table[k]);
+    if (m->inter_name)
+        for (int i = 0; i < m->ninter; i++) free(m->inter_name[i]);
+    rc_jac_free(m);
+    rc_cpl_free(m->cpl);
+    rc_power_free(m);
+    rc_imp_free(m->imp);
+    void *arrays[] = {m->case_path, m->table, m->body_id, m->body_fixed, m->body_yadr, m->body_mass,
+                      m->body_J, m->body_Jinv, m->body_y0, m->body_grav, m->body_dofmask, m->surf_id, m->surf_kind,
+                      m->surf_body, m->surf_p, m->surf_n, m->surf_r, m->inter_id, m->inter_pair,
+                      m->inter_sa, m->inter_sb, m->inter_ba, m->inter_bb, m->inter_gap,
+                      m->inter_tstart, m->inter_tstop, m->inter_visc, m->inter_fscalev,
+                      m->inter_ascalex, m->inter_fscaleld, m->inter_ascalef, m->inter_ascalev,
+                      m->inter_fct_ld, m->inter_fct_dv, m->inter_fct_df, m->inter_eadr,
+                      m->inter_fct_ul, m->inter_iform, m->inter_icor, m->inter_inacti, m->inter_stiff,
+                      m->inter_fscaleul, m->inter_ns, m->inter_hidx, m->inter_oidx, m->inter_fr,
+                      m->inter_name, m->atol, m->held, m->row_held, m->gwork_slot, m->surf_ext,
+                      m->inter_law, m->inter_pw, m->inter_pscale, m->inter_fscale, m->inter_kscale,
+                      m->inter_vscale, m->inter_mred, m->ewt_rel};
+    for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
+    free(m);
+}
+
+int rc_model_state_size(const rc_model *m) { return m->ny; }
+
+void rc_model_print_summary(const rc_model *m, FILE *f)
+{
+    fprintf(f, "case        %s (checksum %016lx)\n", m->case_path, m->checksum);
+    if (m->title[0]) fprintf(f, "title       %s\n", m->title);
+    fprintf(f, "units       %s\n", m->unit_mass[0] ? "" : "undeclared (one consistent system assumed)");
+    if (m->unit_mass[0]) fprintf(f, "            mass %s, length %s, time %s\n", m->unit_mass, m->unit_length, m->unit_time);
+    fprintf(f, "bodies      %d (%d free, %d fixed)\n", m->nbody, m->nfree, m->nbody - m->nfree);
+    for (int b = 0; b < m->nbody && b < 20; b++) {
+        const double *y0 = m->body_y0 + RC_NB * b;
+        fprintf(f, "  /RBODY/%-6d mass %-11.5g x0 (%.5g, %.5g, %.5g) v0 (%.5g, %.5g, %.5g)%s\n", m->body_id[b],
+                m->body_mass[b], y0[0], y0[1], y0[2], y0[7], y0[8], y0[9], m->body_fixed[b] ? " fixed" : "");
+    }
+    if (m->nbody > 20) fprintf(f, "  ... and %d more bodies (the first 20 in deck order are listed)\n", m->nbody - 20);
+    fprintf(f, "surfaces    %d\n", m->nsurf);
+    fprintf(f, "interfaces  %d\n", m->ninter);
+    for (int i = 0; i < m->ninter && i < 20; i++) {
+        if (m->inter_law[i] == RC_LAW_POWER) {
+            rc_power_print(m, i, f); /* power_compile.c */
+            continue;
+        }
+        fprintf(f, "  %-18s %s, Iform %d, Gap %.5g, Visc %.5g, Stiff %.5g, Inacti %d, Tstart %.5g, Tstop %.5g\n",
+                m->inter_name[i], rc_geom_pair_name(m->inter_pair[i]), m->inter_iform[i], m->inter_gap[i],
+                m->inter_visc[i], m->inter_stiff[i], m->inter_inacti[i], m->inter_tstart[i], m->inter_tstop[i]);
+    }
+    for (int i = 0; i < m->ninter && i < 20; i++) rc_friction_print(m, i, f);
+    if (m->ninter > 20)
+        fprintf(f, "  ... and %d more interfaces (the first 20 in deck order are listed)\n", m->ninter - 20);
+    rc_cpl_print_summary(m, f);
+    rc_imp_print(m, f);
+    fprintf(f, "states      %d, Jacobian nonzeros %lld\n", m->ny, (long long)m->nnz);
+    fprintf(f, "run         end time %.6g s, output every %.6g s\n", m->tend, m->dtout);
+    if (m->ev_state == 0)
+        fprintf(f, "            full-state records at events: %s (Ev_state 0: while bodies <= %d)\n",
+                rc_event_records(m) ? "yes" : "no, events table only", RC_EVREC_MAX_BODIES);
+    else
+        fprintf(f, "            full-state records at events: %s (Ev_state %d)\n",
+                m->ev_state == 1 ? "yes" : "no, events table only", m->ev_state);
+    fprintf(f, "solver      CVODE BDF (max order %d), Newton, KLU; rtol %.3g\n", m->max_order, m->rtol);
+    /* the tolerances in force: given on /SOLVER, or derived from the scales */
+    const int au = m->tol_auto;
+    if (au == 0) {
+        fprintf(f, "            atol: position %.3g m, quaternion %.3g, velocity %.3g m/s, angular %.3g rad/s, energy %.3g J\n",
+                m->atol_pos, m->atol_quat, m->atol_vel, m->atol_omega, m->atol_energy);
+    } else {
+        double lo[4] = {INFINITY, INFINITY, INFINITY, INFINITY}, hi[4] = {0, 0, 0, 0};
+        for (int b = 0; b < m->nbody; b++) {
+            if (m->body_yadr[b] < 0) continue;
+            const int off[4] = {0, 3, 7, 10};
+            for (int k = 0; k < 4; k++) {
+                const double a = m->atol[m->body_yadr[b] + off[k]];
+                lo[k] = fmin(lo[k], a);
+                hi[k] = fmax(hi[k], a);
+            }
+        }
+        fprintf(f, "            atol (%s): position %.3g..%.3g m%s, quaternion %.3g..%.3g, velocity %.3g..%.3g m/s,\n"
+                   "            angular %.3g..%.3g rad/s, energy %.3g J\n",
+                au == (RC_TOL_AUTO_POS | RC_TOL_AUTO_QUAT | RC_TOL_AUTO_VEL | RC_TOL_AUTO_OMEGA | RC_TOL_AUTO_ENERGY)
+                    ? "derived from the contact scales"
+                    : "blank fields derived from the contact scales",
+                lo[0], hi[0], m->ewt_rel ? " (absolute)" : "", lo[1], hi[1], lo[2], hi[2], lo[3], hi[3], m->atol_energy);
+    }
+    int nsc = 0;
+    for (int i = 0; i < m->ninter; i++) nsc += isfinite(m->inter_pscale[i]) != 0;
+    fprintf(f, "scales      %d of %d interfaces scaled (penetration p_s, force F_s, speed v_s)\n", nsc, m->ninter);
+    for (int i = 0, shown = 0; i < m->ninter && shown < 20; i++, shown++) {
+        if (isfinite(m->inter_pscale[i]))
+            fprintf(f, "  %-18s p_s %.4g m, F_s %.4g N, k_s %.4g N/m, v_s %.4g m/s\n", m->inter_name[i],
+                    m->inter_pscale[i], m->inter_fscale[i], m->inter_kscale[i], m->inter_vscale[i]);
+        else
+            fprintf(f, "  %-18s no scale (no gravity or speed reaches it): fixed fallback tolerances\n", m->inter_name[i]);
+    }
+    if (m->ninter > 20) fprintf(f, "  ... %d more\n", m->ninter - 20);
+}

@@ -1,0 +1,272 @@
+/*
+ * Compile the /COUPLING cards into rc_couplings (coupling.h): resolve the
+ * bodies and functions, express the attachment points in the body frames,
+ * default the relaxation length, integrate the form-4 stiffness tables, set
+ * the gravity of the catenary lines; the energy states, their tolerances
+ * and the Jacobian blocks; the run data (warm starts, solver workspace);
+ * the summary of `ricochet check`.
+ */
+#include <gsl/gsl_errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "case/case_coupling.h"
+#include "model/coupling.h"
+#include "base/error.h"
+
+
+static const char *const kind_name[3] = {"", "SPRING", "CATENARY"};
+
+/* Body index of /RBODY id (0: fixed in space, -1; no such body: -2); the
+ * model's bodies are the case's, in the same order. */
+static int body_index(const rc_case *c, int id)
+{
+    if (id == 0) return -1;
+    const int b = rc_case_find_rbody(c, id);
+    return b >= 0 ? b : -2;
+}
+
+/* Gravity of the lines: the /GRAV cards that apply to all bodies. */
+static void line_gravity(const rc_case *c, double g[3])
+{
+    g[0] = g[1] = g[2] = 0;
+    for (int k = 0; k < c->ngrav; k++)
+        if (c->grav[k].grnod_id == 0) g[c->grav[k].dir] += c->grav[k].fscale;
+}
+
+static rc_status alloc_arrays(rc_couplings *p, int n)
+{
+#define CPL_ALLOC(ptr, cnt)                                   \
+    if (!((ptr) = calloc((size_t)(cnt) + 1, sizeof *(ptr)))) \
+        return RC_ENOMEM;
+    p->n = n;
+    CPL_ALLOC(p->id, n);
+    CPL_ALLOC(p->kind, n);
+    CPL_ALLOC(p->type, n);
+    CPL_ALLOC(p->name, n);
+    CPL_ALLOC(p->b1, n);
+    CPL_ALLOC(p->b2, n);
+    CPL_ALLOC(p->s1, 3 * n);
+    CPL_ALLOC(p->s2, 3 * n);
+    CPL_ALLOC(p->eadr, n);
+    CPL_ALLOC(p->form, n);
+    CPL_ALLOC(p->x0, n);
+    CPL_ALLOC(p->kd, n);
+    CPL_ALLOC(p->coef, 3 * n);
+    CPL_ALLOC(p->table, n);
+    CPL_ALLOC(p->fref, n);
+    CPL_ALLOC(p->xref, n);
+    CPL_ALLOC(p->cum, n);
+    CPL_ALLOC(p->lambda0, n);
+    CPL_ALLOC(p->leq, n);
+    CPL_ALLOC(p->ea, n);
+    CPL_ALLOC(p->jb, n);
+#undef CPL_ALLOC
+    return RC_OK;
+}
+
+/* One coupling: ends, then the law of its kind. */
+static rc_status compile_one(const rc_case *c, rc_model *m, int k, rc_error *err)
+{
+    const rc_case_coupling *cc = &c->coupling[k];
+    rc_couplings *p = m->cpl;
+    char card[64];
+    snprintf(card, sizeof card, "/COUPLING/%s/%d", kind_name[cc->kind], cc->id);
+    p->name[k] = malloc(strlen(card) + 1);
+    if (!p->name[k]) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    strcpy(p->name[k], card);
+    p->id[k] = cc->id;
+    p->kind[k] = cc->kind == RC_CASE_CPL_SPRING ? RC_CPL_SPRING : RC_CPL_CATENARY;
+    p->type[k] = kind_name[cc->kind];
+    p->table[k] = -1;
+
+    /* ends: body (or space) and the point in the body frame */
+    int *bs[2] = {&p->b1[k], &p->b2[k]};
+    double *ss[2] = {p->s1 + 3 * k, p->s2 + 3 * k};
+    for (int e = 0; e < 2; e++) {
+        int b = body_index(c, cc->rbody[e]);
+        if (b == -2)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card %s, field rbody_ID%d: expected the id of a /RBODY or 0 (fixed point), got %d (no such body)",
+                     RC_LOC(cc->line_loc[0]), card, e + 1, cc->rbody[e]);
+        *bs[e] = b;
+        /* body frame = global frame at t = 0, origin at the centre of mass */
+        const double *org = b >= 0 ? m->body_y0 + RC_NB * b : m->ground_y0;
+        for (int i = 0; i < 3; i++) ss[e][i] = cc->p[e][i] - org[i];
+    }
+    const double dist = sqrt(pow(cc->p[1][0] - cc->p[0][0], 2) + pow(cc->p[1][1] - cc->p[0][1], 2) +
+                             pow(cc->p[1][2] - cc->p[0][2], 2));
+
+    if (cc->kind == RC_CASE_CPL_CATENARY) {
+        double g[3];
+        line_gravity(c, g);
+        if (!(g[0] * g[0] + g[1] * g[1] + g[2] * g[2] > 0))
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card %s: a catenary hangs in gravity: expected a /GRAV card that applies to all bodies (grnod_ID 0) with a non-zero Fscale_y, found none",
+                     RC_LOC(cc->loc), card);
+        memcpy(p->grav, g, sizeof g);
+        p->lambda0[k] = cc->lambda0;
+        p->leq[k] = cc->leq;
+        p->ea[k] = cc->d * cc->leq;
+        return RC_OK;
+    }
+
+    /* spring-damper */
+    p->form[k] = (rc_keff_form)cc->iform;
+    p->x0[k] = cc->x0_given ? cc->x0 : dist;
+    p->kd[k] = cc->kd;
+    p->coef[3 * k] = cc->a;
+    p->coef[3 * k + 1] = cc->iform == 2 ? cc->b : 0.0;
+    p->coef[3 * k + 2] = cc->iform == 2 ? cc->c : 0.0;
+    if (cc->iform == RC_KEFF_FORCE || cc->iform == RC_KEFF_STIFF) {
+        rc_status st = rc_case_ref_funct(c, cc->fct_id, 1, cc->line_loc[0], card, "fct_ID", &p->table[k], err);
+        if (st) return st;
+    }
+    if (cc->iform == RC_KEFF_STIFF) {
+        const rc_table *t = &m->table[p->table[k]];
+        p->cum[k] = malloc((size_t)t->n * sizeof(double));
+        if (!p->cum[k]) RC_RAISE(err, RC_ENOMEM, "out of memory");
+        rc_status st = rc_cpl_stiff_table(t, p->cum[k], err);
+        if (st) return st;
+        p->fref[k] = cc->ref_given ? cc->fr : 0.0;
+        p->xref[k] = cc->ref_given ? cc->xr : p->x0[k];
+    }
+    return RC_OK;
+}
+
+rc_status rc_cpl_compile(const rc_case *c, rc_model *m, rc_error *err)
+{
+    gsl_set_error_handler_off(); /* GSL reports through return codes */
+    m->cpl = calloc(1, sizeof *m->cpl);
+    if (!m->cpl || alloc_arrays(m->cpl, c->ncoupling)) RC_RAISE(err, RC_ENOMEM, "out of memory compiling the couplings");
+    for (int k = 0; k < c->ncoupling; k++) {
+        rc_status st = compile_one(c, m, k, err);
+        if (st) return st;
+    }
+    return RC_OK;
+}
+
+int rc_cpl_layout(rc_model *m, int ny)
+{
+    for (int k = 0; k < m->cpl->n; k++) {
+        m->cpl->eadr[k] = ny;
+        ny += RC_CE;
+    }
+    return ny;
+}
+
+void rc_cpl_atol(rc_model *m)
+{
+    for (int k = 0; k < m->cpl->n; k++)
+        for (int i = 0; i < RC_CE; i++) m->atol[m->cpl->eadr[k] + i] = m->atol_energy;
+}
+
+void rc_cpl_block(const rc_model *m, int k, rc_jblock *jb)
+{
+    const rc_couplings *p = m->cpl;
+    const int bodies[2] = {p->b1[k], p->b2[k]};
+    jb->nrow = jb->ncol = 0;
+    for (int s = 0; s < 2; s++) {
+        const int b = bodies[s];
+        if (b < 0 || m->body_yadr[b] < 0) continue;
+        for (int i = 0; i < 6; i++) jb->rows[jb->nrow++] = m->body_yadr[b] + 7 + i;
+        for (int i = 0; i < RC_NB; i++) jb->cols[jb->ncol++] = m->body_yadr[b] + i;
+    }
+    for (int i = 0; i < RC_CE; i++) jb->rows[jb->nrow++] = p->eadr[k] + i;
+    if (jb->ncol == 0) jb->nrow = 0; /* both ends fixed: nothing depends on states */
+}
+
+void rc_cpl_free(rc_couplings *p)
+{
+    if (!p) return;
+    for (int k = 0; k < p->n; k++) {
+        if (p->name) free(p->name[k]);
+        if (p->cum) free(p->cum[k]);
+    }
+    void *arrays[] = {p->id,  p->kind, (void *)p->type, p->name, p->b1,   p->b2,   p->s1,      p->s2,  p->eadr,
+                      p->form, p->x0,  p->kd,   p->coef, p->table, p->fref,   p->xref, p->cum,
+                      p->lambda0, p->leq, p->ea, p->jb};
+    for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
+    free(p);
+}
+
+void rc_cpl_print_summary(const rc_model *m, FILE *f)
+{
+    static const char *const form_name[5] = {"", "constant k", "polynomial k_eff", "force table f_e(x)",
+                                             "stiffness table k(x)"};
+    const rc_couplings *p = m->cpl;
+    fprintf(f, "couplings   %d\n", p->n);
+    double *y = malloc(((size_t)m->ny + 1) * sizeof(double));
+    if (y) rc_initial_state(m, y);
+    for (int k = 0; k < p->n && k < 20; k++) {
+        const int ids[2] = {p->b1[k] >= 0 ? m->body_id[p->b1[k]] : 0, p->b2[k] >= 0 ? m->body_id[p->b2[k]] : 0};
+        rc_cpl_report r;
+        const int ok = y && rc_cpl_report_eval(m, NULL, k, 0.0, y, &r) == 0;
+        fprintf(f, "  %-22s bodies %d-%d, ", p->name[k], ids[0], ids[1]);
+        if (p->kind[k] == RC_CPL_SPRING)
+            fprintf(f, "%s, x0 %.5g m, k_d %.5g N s/m; at t = 0: length %.5g m, force %.5g N\n",
+                    form_name[p->form[k]], p->x0[k], p->kd[k], ok ? r.length : NAN, ok ? r.force : NAN);
+        else
+            fprintf(f, "lambda0 %.5g kg/m, L_eq %.5g m, EA %.5g N; at t = 0: distance %.5g m, tension at end 1 %.5g N, "
+                    "lowest point %.5g m along -g%s\n",
+                    p->lambda0[k], p->leq[k], p->ea[k], ok ? r.length : NAN, ok ? r.force : NAN,
+                    ok ? r.lowest : NAN, ok ? "" : " (catenary equations not solved)");
+    }
+    if (p->n > 20) fprintf(f, "  ... and %d more couplings (the first 20 in deck order are listed)\n", p->n - 20);
+    free(y);
+}
+
+/* ---- run data ------------------------------------------------------------ */
+rc_cpl_data *rc_cpl_data_new(const rc_model *m)
+{
+    const rc_couplings *p = m->cpl;
+    rc_cpl_data *cd = calloc(1, sizeof *cd);
+    if (!cd) return NULL;
+    cd->fail = -1;
+    cd->warm = malloc((2 * (size_t)p->n + 1) * sizeof(double));
+    int ncat = 0;
+    for (int k = 0; k < p->n; k++) ncat += p->kind[k] == RC_CPL_CATENARY;
+    if (ncat) cd->ws = rc_cat_ws_new();
+    if (!cd->warm || (ncat && !cd->ws)) {
+        rc_cpl_data_free(cd);
+        return NULL;
+    }
+    for (int k = 0; k < 2 * p->n; k++) cd->warm[k] = NAN;
+    return cd;
+}
+
+void rc_cpl_data_free(rc_cpl_data *cd)
+{
+    if (!cd) return;
+    free(cd->warm);
+    rc_cat_ws_free(cd->ws);
+    free(cd);
+}
+
+void rc_cpl_frame(const rc_model *m, const rc_data *d, double t, const double *y, double *buf)
+{
+    const int n = m->cpl->n;
+    for (int k = 0; k < n; k++) {
+        rc_cpl_report r;
+        rc_cpl_report_eval(m, d, k, t, y, &r);
+        buf[k] = r.force;
+        buf[n + k] = r.length;
+        for (int i = 0; i < 3; i++) {
+            buf[2 * n + 3 * k + i] = r.f1[i];
+            buf[5 * n + 3 * k + i] = r.f2[i];
+        }
+        buf[8 * n + k] = r.lowest;
+    }
+}
+
+const char *rc_cpl_failed(const rc_model *m, const rc_data *d)
+{
+    return d->cpl->fail >= 0 ? m->cpl->name[d->cpl->fail] : NULL;
+}
+
+void rc_cpl_gravity(const rc_model *m, double t, double g[3])
+{
+    const double f = rc_gravity_factor(m, t);
+    for (int k = 0; k < 3; k++) g[k] = m->cpl->grav[k] * f;
+}

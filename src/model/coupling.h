@@ -1,0 +1,169 @@
+/*
+ * Body couplings (SPEC 8, STAR-CCM+ style): spring-dampers [CPL-SPRING] and
+ * elastic catenaries [CPL-CAT] between two body points, or a body point and
+ * a point fixed in space. docs/theory.md section "Couplings" has the
+ * equations as implemented.
+ *
+ * Model side (constant): rc_couplings, one flat array per field, reached
+ * from rc_model.cpl. Data side (mutable): rc_cpl_data in rc_data.cpl, the
+ * catenary warm starts and the GSL workspace, allocated once per run so
+ * that the right-hand side never allocates.
+ *
+ * States: two energy accumulators per coupling, at cpl->eadr[k]:
+ *   spring:   [0] W_el   work of the elastic force (stored energy)  [J]
+ *             [1] W_damp energy dissipated by the damper            [J]
+ *   catenary: [0] W_cat  work done on the line by its ends = change of
+ *                        its elastic + gravitational energy          [J]
+ *             [1] unused (kept at zero)                              [J]
+ */
+#ifndef RC_COUPLING_H
+#define RC_COUPLING_H
+
+#include <stdio.h>
+
+#include "model/model.h"
+
+#define RC_CE 2 /* energy states of a coupling */
+
+/* Coupling kinds. */
+typedef enum { RC_CPL_SPRING = 1, RC_CPL_CATENARY = 2 } rc_cpl_kind;
+
+/* Stiffness forms of a spring-damper (SPEC 8 [CPL-SPRING], card field Iform). */
+typedef enum {
+    RC_KEFF_CONST = 1, /* k_eff = k                                        */
+    RC_KEFF_POLY = 2,  /* k_eff = a + b (x - x0) + c (x - x0)^2             */
+    RC_KEFF_FORCE = 3, /* tabulated elastic force f_e(x)                   */
+    RC_KEFF_STIFF = 4  /* tabulated stiffness k(x), integrated              */
+} rc_keff_form;
+
+/* Horizontal spans below this fraction of L_eq are treated as vertical
+ * lines (docs/theory.md, catenary limits) [-]. */
+#define RC_CAT_XMIN_REL 1e-12
+
+typedef struct rc_couplings {
+    int n;
+    int *id;             /* [n] card id                                       */
+    rc_cpl_kind *kind;   /* [n]                                               */
+    const char **type;   /* [n] "SPRING" or "CATENARY" (static strings)       */
+    char **name;         /* [n] "/COUPLING/SPRING/<id>"                       */
+    int *b1, *b2;        /* [n] body index of each end, -1: fixed in space    */
+    double *s1, *s2;     /* [n*3] attachment points in the body frame (offset
+                            from the centre of mass), or global points for an
+                            end fixed in space [m]                            */
+    int *eadr;           /* [n] offset of the RC_CE energy states in y        */
+    /* spring-damper */
+    rc_keff_form *form;  /* [n]                                               */
+    double *x0;          /* [n] relaxation length [m]                         */
+    double *kd;          /* [n] damping coefficient [N s/m]                   */
+    double *coef;        /* [n*3] form 1: k; form 2: a [N/m], b [N/m^2], c [N/m^3] */
+    int *table;          /* [n] table index of f_e or k (forms 3, 4), else -1 */
+    double *fref, *xref; /* [n] form 4: force [N] at distance [m] where the
+                            integral starts (f_r at x_r, or 0 at x0)          */
+    double **cum;        /* [n] form 4: [table n] integral of k from the first
+                            abscissa to each abscissa [N]; else NULL         */
+    /* catenary */
+    double *lambda0;     /* [n] mass per unstretched length [kg/m]            */
+    double *leq;         /* [n] unstretched length [m]                        */
+    double *ea;          /* [n] axial rigidity EA = D L_eq [N]                */
+    double grav[3];      /* gravity acting on the lines per unit value of the
+                            gravity function (the /GRAV cards with
+                            grnod_ID 0) [m/s^2]                              */
+    rc_jblock *jb;       /* [n] Jacobian blocks                               */
+} rc_couplings;
+
+/* Solution of the catenary equations for one span (X, Y): end forces and
+ * their derivatives by the implicit-function theorem. */
+typedef struct rc_cat_sol {
+    double X, Y;         /* horizontal span >= 0, height of end 2 over end 1 [m] */
+    double w;            /* weight per unstretched length lambda0 |g| [N/m]  */
+    double H;            /* horizontal tension c [N]                         */
+    double V1, V2;       /* vertical tension components c sinh u1, c sinh u2 [N];
+                            V2 = V1 + w L_eq                                 */
+    double dH[2], dV1[2];/* d(H, V1)/d(X, Y) [N/m]                           */
+    double kappa;        /* vertical line (X ~ 0): H = kappa X [N/m]         */
+    int vertical;        /* 1: X below RC_CAT_XMIN_REL L_eq                  */
+    int iter;            /* solver iterations used                           */
+} rc_cat_sol;
+
+/* What the output sees of one coupling. */
+typedef struct rc_cpl_report {
+    double length;       /* distance between the end points [m]              */
+    double rate;         /* its time derivative [m/s]                        */
+    double force;        /* spring: f = f_el + f_damp (> 0 pulls the ends
+                            together); catenary: tension at end 1 [N]       */
+    double f1[3], f2[3]; /* force applied to end 1 and to end 2, global [N]  */
+    double c, u1, u2;    /* catenary parameters (SPEC 8); 0 for springs      */
+    double lowest;       /* catenary: height of its lowest point along -g,
+                            from the origin [m] (an end when the line does
+                            not sag below it); NaN for springs              */
+} rc_cpl_report;
+
+/* Mutable per-run data. */
+typedef struct rc_cpl_data {
+    double *warm;        /* [n*2] last catenary solution (H, V1), NaN: none  */
+    void *ws;            /* catenary solver workspace (GSL)                  */
+    int fail;            /* coupling whose forces failed in the last call, -1 */
+} rc_cpl_data;
+
+/* ---- compile (coupling_compile.c) ---------------------------------- */
+struct rc_case;
+/* Resolve and check the /COUPLING cards into m->cpl (always allocated). */
+rc_status rc_cpl_compile(const struct rc_case *c, rc_model *m, rc_error *err);
+/* Lay out the energy states from offset ny; returns the new state count. */
+int rc_cpl_layout(rc_model *m, int ny);
+/* Absolute tolerances of the coupling states (m->atol allocated). */
+void rc_cpl_atol(rc_model *m);
+/* Jacobian block of coupling k: rows = accelerations of its free bodies and
+ * its energy states, columns = all states of its free bodies. */
+void rc_cpl_block(const rc_model *m, int k, rc_jblock *jb);
+void rc_cpl_free(rc_couplings *cpl);
+void rc_cpl_print_summary(const rc_model *m, FILE *f);
+
+/* ---- data ------------------------------------------------------------ */
+rc_cpl_data *rc_cpl_data_new(const rc_model *m);
+void rc_cpl_data_free(rc_cpl_data *cd);
+
+/* ---- spring stiffness tables (coupling_spring.c) -------------------- */
+/* Form 4: cumulative integral of the stiffness table by GSL quadrature. */
+rc_status rc_cpl_stiff_table(const rc_table *t, double *cum, rc_error *err);
+/* Form 4: elastic force f = fref + integral from xref to x of k, and k(x). */
+void rc_cpl_stiff_force(const rc_couplings *cpl, const rc_table *t, int k, double x, double *f,
+                        double *dfdx);
+
+/* ---- catenary solver (coupling_catenary.c) -------------------------- */
+void *rc_cat_ws_new(void);
+void rc_cat_ws_free(void *ws);
+/* Solve catenary k for span X >= 0, height Y, weight per length w > 0,
+ * starting from warm[2] (H, V1) when finite (updated on success). `ws` may
+ * be NULL (a temporary workspace is used: not for the right-hand side).
+ * Returns 0, or 1 when the solver fails (recoverable). */
+int rc_cat_solve(const rc_couplings *cpl, int k, void *ws, double *warm, double X, double Y,
+                 double w, rc_cat_sol *sol);
+/* Gravity acting on the lines at time t [m/s^2]. */
+void rc_cpl_gravity(const rc_model *m, double t, double g[3]);
+
+/* ---- assembly (coupling_rhs.inc in assemble_rhs.c, coupling_jac.inc in
+ *      assemble_jac.c) --------------------------------------------------- */
+/* Add the coupling forces to the accelerations and write the energy
+ * rates. Returns 0, or 1 (recoverable) when a coupling fails. */
+int rc_cpl_rhs(const rc_model *m, rc_data *d, double t, const double *y, double *ydot);
+/* Report of coupling k at (t, y); returns 0 or 1 (catenary not solved). */
+int rc_cpl_report_eval(const rc_model *m, const rc_data *d, int k, double t, const double *y,
+                       rc_cpl_report *r);
+/* Dense block of coupling k (rows/cols of cpl->jb[k]); d may be NULL. */
+int rc_cpl_dense_block(const rc_model *m, const rc_data *d, int k, double t, const double *y,
+                       double *out);
+/* Add the coupling Jacobian blocks into the CSC values. */
+int rc_cpl_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val);
+
+/* ---- output ------------------------------------------------------------ */
+/* Values per coupling at (t, y) for one output record, into buf [9 n]:
+ * force [n], length [n], force on end 1 [3 n], force on end 2 [3 n],
+ * lowest point of a catenary [n] (NaN for springs) (rc_cpl_report; NaN for
+ * a catenary that cannot be solved). */
+void rc_cpl_frame(const rc_model *m, const rc_data *d, double t, const double *y, double *buf);
+/* Name of the coupling whose forces failed in the last right-hand side or
+ * Jacobian, NULL when none. */
+const char *rc_cpl_failed(const rc_model *m, const rc_data *d);
+
+#endif

@@ -1,0 +1,107 @@
+/* Geometry set-up (geom.h): cylinder and box surfaces, pair kinds. */
+#include <math.h>
+#include <string.h>
+
+#include "base/error.h"
+#include "model/geom.h"
+
+static double norm3(const double *v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+void rc_geom_surface(const rc_case_surf *cs, rc_model *m, int s, const double *org)
+{
+    double *ext = m->surf_ext + RC_SURF_NEXT * s;
+    for (int k = 0; k < 3; k++) m->surf_p[3 * s + k] = cs->c[k] - org[k];
+    if (cs->kind == RC_CASE_SURF_CYL) {
+        /* axis (unit), radius, half-length, ends, contact point */
+        const double l = norm3(cs->axis);
+        m->surf_kind[s] = RC_SURF_CYL;
+        for (int k = 0; k < 3; k++) m->surf_n[3 * s + k] = cs->axis[k] / l;
+        m->surf_r[s] = cs->abc[0];
+        ext[0] = 0.5 * cs->length;
+        ext[1] = cs->ends;
+        ext[2] = cs->cmode;
+        return;
+    }
+    /* box: half-sizes, orthonormal axes u, v (v orthogonalised), w = u x v */
+    m->surf_kind[s] = RC_SURF_BOX;
+    double u[3], v[3], w[3];
+    const double lu = norm3(cs->axis);
+    for (int k = 0; k < 3; k++) u[k] = cs->axis[k] / lu;
+    const double vu = cs->axis2[0] * u[0] + cs->axis2[1] * u[1] + cs->axis2[2] * u[2];
+    for (int k = 0; k < 3; k++) v[k] = cs->axis2[k] - vu * u[k];
+    const double lv = norm3(v);
+    for (int k = 0; k < 3; k++) v[k] /= lv;
+    w[0] = u[1] * v[2] - u[2] * v[1];
+    w[1] = u[2] * v[0] - u[0] * v[2];
+    w[2] = u[0] * v[1] - u[1] * v[0];
+    for (int k = 0; k < 3; k++) {
+        ext[k] = cs->abc[k];
+        ext[3 + k] = u[k];
+        ext[6 + k] = v[k];
+        ext[9 + k] = w[k];
+    }
+    m->surf_r[s] = fmin(cs->abc[0], fmin(cs->abc[1], cs->abc[2]));
+}
+
+const char *rc_geom_pair_name(rc_pair_kind kind)
+{
+    switch (kind) {
+    case RC_PAIR_SPHERE_PLANE: return "sphere-plane";
+    case RC_PAIR_SPHERE_SPHERE: return "sphere-sphere";
+    case RC_PAIR_CYL_PLANE: return "cylinder-plane";
+    case RC_PAIR_CYL_BOX: return "cylinder-box";
+    case RC_PAIR_CYL_CYL: return "cylinder-cylinder";
+    case RC_PAIR_SPHERE_BOX: return "sphere-box";
+    }
+    return "?";
+}
+
+static const char *kind_name(rc_surf_kind k)
+{
+    switch (k) {
+    case RC_SURF_PLANE: return "plane";
+    case RC_SURF_SPHERE: return "sphere";
+    case RC_SURF_CYL: return "cylinder";
+    case RC_SURF_BOX: return "box";
+    }
+    return "?";
+}
+
+/* Moving surfaces first: a sphere or cylinder is surface a. */
+static int is_round(rc_surf_kind k) { return k == RC_SURF_SPHERE || k == RC_SURF_CYL; }
+
+rc_status rc_geom_pair(const rc_model *m, int s1, int s2, int *sa, int *sb, rc_pair_kind *kind, const char *where,
+                       rc_error *err)
+{
+    if (!is_round(m->surf_kind[s1]) && is_round(m->surf_kind[s2])) {
+        int t = s1;
+        s1 = s2;
+        s2 = t;
+    }
+    const rc_surf_kind ka = m->surf_kind[s1], kb = m->surf_kind[s2];
+    *sa = s1;
+    *sb = s2;
+    if (ka == RC_SURF_SPHERE && kb == RC_SURF_PLANE) *kind = RC_PAIR_SPHERE_PLANE;
+    else if (ka == RC_SURF_SPHERE && kb == RC_SURF_SPHERE) *kind = RC_PAIR_SPHERE_SPHERE;
+    else if (ka == RC_SURF_SPHERE && kb == RC_SURF_BOX) *kind = RC_PAIR_SPHERE_BOX;
+    else if (ka == RC_SURF_CYL && kb == RC_SURF_PLANE) *kind = RC_PAIR_CYL_PLANE;
+    else if (ka == RC_SURF_CYL && kb == RC_SURF_BOX) *kind = RC_PAIR_CYL_BOX;
+    else if (ka == RC_SURF_CYL && kb == RC_SURF_CYL) *kind = RC_PAIR_CYL_CYL;
+    else
+        RC_RAISE(err, RC_EINPUT,
+                 "%s, fields surf_ID1/surf_ID2: %s against %s is not a contact pair ricochet supports (supported: "
+                 "sphere-plane, sphere-sphere, sphere-box, cylinder-plane, cylinder-box, cylinder-cylinder with "
+                 "parallel axes)",
+                 where, kind_name(ka), kind_name(kb));
+    /* parallel axes at t = 0 (the body frames are the global frame then) */
+    if (*kind == RC_PAIR_CYL_CYL) {
+        const double *a = m->surf_n + 3 * s1, *b = m->surf_n + 3 * s2;
+        double x[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+        if (norm3(x) > RC_CYL_PARALLEL_TOL)
+            RC_RAISE(err, RC_EINPUT,
+                     "%s, fields surf_ID1/surf_ID2: cylinder-cylinder contact needs parallel axes; the axes of "
+                     "surfaces %d and %d make an angle of %.6g rad",
+                     where, m->surf_id[s1], m->surf_id[s2], asin(fmin(1.0, norm3(x))));
+    }
+    return RC_OK;
+}

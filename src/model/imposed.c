@@ -1,0 +1,245 @@
+/*
+ * Imposed velocities (/IMPVEL): compile, state layout, Jacobian pattern
+ * (imposed.h). The right-hand side and Jacobian parts are imposed_rhs.inc
+ * and imposed_jac.inc, included by assemble_rhs.c and assemble_jac.c.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "case/case.h"
+#include "case/case_power.h"
+#include "base/error.h"
+#include "model/imposed.h"
+
+
+void rc_imp_free(rc_imposed *p)
+{
+    if (!p) return;
+    void *a[] = {p->tbody, p->tdir, p->trow, p->ttab, p->tascale, p->tfscale, p->ttstop, p->rbody, p->rtab,
+                 p->rascale, p->rfscale, p->rtstop, p->rqslot, p->wslot, p->row_imp};
+    for (size_t k = 0; k < sizeof a / sizeof a[0]; k++) free(a[k]);
+    free(p);
+}
+
+rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
+{
+    m->imp = NULL;
+    if (c->nimpvel == 0) return RC_OK;
+    const int n = c->nimpvel, nb = m->nbody;
+    rc_imposed *p = calloc(1, sizeof *p);
+    /* which card drives each body DOF (-1: none) */
+    int *owner = malloc((6 * (size_t)nb + 1) * sizeof(int));
+    if (!p || !owner) {
+        free(owner);
+        rc_imp_free(p);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    m->imp = p;
+    for (int k = 0; k < 6 * nb; k++) owner[k] = -1;
+    rc_status st = RC_OK;
+    for (int k = 0; k < n && !st; k++) {
+        const rc_case_impvel *v = &c->impvel[k];
+        char card[64];
+        snprintf(card, sizeof card, "/IMPVEL/%d", v->id);
+        int tab;
+        if ((st = rc_case_ref_funct(c, v->fct_id, 1, v->line_loc[0], card, "fct_IDT", &tab, err))) break;
+        const int g = rc_case_find_grnod(c, v->grnod_id);
+        if (g < 0) {
+            st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field grnod_ID: expected the id of a /GRNOD, got %d (no such group)",
+                        RC_LOC(v->line_loc[0]), card, v->grnod_id);
+            break;
+        }
+        for (int j = 0; j < c->grnod[g].n && !st; j++) {
+            const int b = rc_case_body_of_node(c, c->grnod[g].nodes[j]);
+            if (b < 0) {
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s: node %d of /GRNOD/%d belongs to no /RBODY (ricochet bodies are rigid)",
+                            RC_LOC(v->line_loc[0]), card, c->grnod[g].nodes[j], v->grnod_id);
+                break;
+            }
+            const int *own = owner + 6 * b;
+            if (own[v->dir] == k) continue; /* the body named twice by the group */
+            if (m->body_fixed[b])
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s: /RBODY/%d is fixed (/BCS 111 111); its velocity cannot be imposed",
+                            RC_LOC(v->line_loc[0]), card, m->body_id[b]);
+            else if (m->body_dofmask[6 * b + v->dir])
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field Dir: this component of /RBODY/%d is held by /BCS; a held DOF cannot also be imposed",
+                            RC_LOC(v->line_loc[0]), card, m->body_id[b]);
+            else if (own[v->dir] >= 0)
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field Dir: this component of /RBODY/%d is already imposed by /IMPVEL/%d",
+                            RC_LOC(v->line_loc[0]), card, m->body_id[b], c->impvel[own[v->dir]].id);
+            for (int r = 3; r < 6 && !st && v->dir >= 3; r++)
+                if (own[r] >= 0 && c->impvel[own[r]].tstop != v->tstop)
+                    st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field Tstop: the rotation of /RBODY/%d is imposed as a whole (docs/theory.md 1.1); all its rotational /IMPVEL must share one Tstop (/IMPVEL/%d has %.6g)",
+                                RC_LOC(v->line_loc[1]), card, m->body_id[b], c->impvel[own[r]].id, c->impvel[own[r]].tstop);
+            if (!st) owner[6 * b + v->dir] = k;
+        }
+    }
+    /* count and fill: translations one by one, rotations per body */
+    for (int b = 0; b < nb && !st; b++) {
+        int rot = 0;
+        for (int j = 0; j < 6; j++) {
+            if (owner[6 * b + j] < 0) continue;
+            if (j < 3) p->nt++;
+            else rot = 1;
+        }
+        p->nr += rot;
+    }
+    if (!st) {
+        p->tbody = calloc((size_t)p->nt + 1, sizeof(int));
+        p->tdir = calloc((size_t)p->nt + 1, sizeof(int));
+        p->trow = calloc((size_t)p->nt + 1, sizeof(int));
+        p->ttab = calloc((size_t)p->nt + 1, sizeof(int));
+        p->tascale = calloc((size_t)p->nt + 1, sizeof(double));
+        p->tfscale = calloc((size_t)p->nt + 1, sizeof(double));
+        p->ttstop = calloc((size_t)p->nt + 1, sizeof(double));
+        p->rbody = calloc((size_t)p->nr + 1, sizeof(int));
+        p->rtab = calloc(3 * (size_t)p->nr + 1, sizeof(int));
+        p->rascale = calloc(3 * (size_t)p->nr + 1, sizeof(double));
+        p->rfscale = calloc(3 * (size_t)p->nr + 1, sizeof(double));
+        p->rtstop = calloc((size_t)p->nr + 1, sizeof(double));
+        p->rqslot = calloc(12 * (size_t)p->nr + 1, sizeof(int64_t));
+        if (!p->tbody || !p->tdir || !p->trow || !p->ttab || !p->tascale || !p->tfscale || !p->ttstop || !p->rbody ||
+            !p->rtab || !p->rascale || !p->rfscale || !p->rtstop || !p->rqslot)
+            st = RC_SET(err, RC_ENOMEM, "out of memory");
+    }
+    int it = 0, ir = 0;
+    for (int b = 0; b < nb && !st; b++) {
+        double *y0 = m->body_y0 + RC_NB * b;
+        int rot = 0;
+        for (int j = 0; j < 6; j++) rot |= j >= 3 && owner[6 * b + j] >= 0;
+        if (rot) {
+            p->rbody[ir] = b;
+            p->rtstop[ir] = -1e300;
+        }
+        for (int j = 0; j < 6; j++) {
+            const int k = owner[6 * b + j];
+            if (j >= 3 && rot && k < 0) {
+                p->rtab[3 * ir + j - 3] = -1; /* a component without a card: zero */
+                y0[7 + j] = 0.0;
+                continue;
+            }
+            if (k < 0) continue;
+            const rc_case_impvel *v = &c->impvel[k];
+            const int tab = rc_case_find_funct(c, v->fct_id);
+            /* the initial value: the imposed function at t = 0 (body frame
+             * = global frame at t = 0) */
+            double f0, df;
+            rc_table_eval(&m->table[tab], 0.0, &f0, &df);
+            if (v->tstop >= 0) y0[7 + j] = v->fscale * f0;
+            if (j < 3) {
+                p->tbody[it] = b;
+                p->tdir[it] = j;
+                p->ttab[it] = tab;
+                p->tascale[it] = v->ascale;
+                p->tfscale[it] = v->fscale;
+                p->ttstop[it] = v->tstop;
+                it++;
+            } else {
+                p->rtab[3 * ir + j - 3] = tab;
+                p->rascale[3 * ir + j - 3] = v->ascale;
+                p->rfscale[3 * ir + j - 3] = v->fscale;
+                p->rtstop[ir] = v->tstop;
+            }
+        }
+        ir += rot;
+    }
+    free(owner);
+    return st; /* on error the model frees m->imp */
+}
+
+int rc_imp_layout(rc_model *m, int ny)
+{
+    rc_imposed *p = m->imp;
+    if (!p) return ny;
+    for (int k = 0; k < p->nt; k++) p->trow[k] = m->body_yadr[p->tbody[k]] + 7 + p->tdir[k];
+    p->wadr = ny;
+    return ny + 1;
+}
+
+/* Rows of the imposed velocities: translations, then 3 per rotating body. */
+static void mark_rows(const rc_model *m, char *row)
+{
+    const rc_imposed *p = m->imp;
+    for (int k = 0; k < p->nt; k++) row[p->trow[k]] = 1;
+    for (int j = 0; j < p->nr; j++)
+        for (int k = 0; k < 3; k++) row[m->body_yadr[p->rbody[j]] + 10 + k] = 1;
+}
+
+rc_status rc_imp_pattern_keys(const rc_model *m, int64_t **key, int64_t *n, rc_error *err)
+{
+    const rc_imposed *p = m->imp;
+    const int64_t ny = m->ny;
+    char *row = calloc((size_t)ny + 1, 1);
+    if (!row) RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
+    mark_rows(m, row);
+    /* the W_imp row depends on everything the imposed rows depend on, on
+     * their velocities, and (rotations) on q; the rotation rows on q */
+    int64_t extra = 1 + 2 * p->nt + 3 * 16 * (int64_t)p->nr;
+    for (int64_t k = 0; k < *n; k++)
+        if (row[(*key)[k] % ny]) extra++;
+    int64_t *nk = realloc(*key, (size_t)(*n + extra) * sizeof(int64_t));
+    if (!nk) {
+        free(row);
+        RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
+    }
+    *key = nk;
+    const int64_t n0 = *n, w = p->wadr;
+    for (int64_t k = 0; k < n0; k++)
+        if (row[nk[k] % ny]) nk[(*n)++] = (nk[k] / ny) * ny + w;
+    nk[(*n)++] = w * ny + w;
+    for (int k = 0; k < p->nt; k++) {
+        nk[(*n)++] = (int64_t)p->trow[k] * ny + w;
+        nk[(*n)++] = (int64_t)p->trow[k] * ny + p->trow[k];
+    }
+    for (int j = 0; j < p->nr; j++) {
+        const int a = m->body_yadr[p->rbody[j]];
+        for (int c = 0; c < 4; c++) {
+            for (int r = 0; r < 3; r++) nk[(*n)++] = (int64_t)(a + 3 + c) * ny + a + 10 + r;
+            nk[(*n)++] = (int64_t)(a + 3 + c) * ny + w;
+        }
+        for (int r = 0; r < 3; r++) nk[(*n)++] = (int64_t)(a + 10 + r) * ny + w;
+    }
+    free(row);
+    return RC_OK;
+}
+
+rc_status rc_imp_slots(rc_model *m, rc_error *err)
+{
+    rc_imposed *p = m->imp;
+    p->wslot = malloc(((size_t)m->ny + 1) * sizeof(int64_t));
+    p->row_imp = calloc((size_t)m->ny + 1, 1);
+    if (!p->wslot || !p->row_imp) RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
+    for (int c = 0; c < m->ny; c++) p->wslot[c] = rc_jac_slot(m, p->wadr, c);
+    mark_rows(m, p->row_imp);
+    for (int j = 0; j < p->nr; j++) {
+        const int a = m->body_yadr[p->rbody[j]];
+        for (int r = 0; r < 3; r++)
+            for (int c = 0; c < 4; c++) p->rqslot[12 * j + 4 * r + c] = rc_jac_slot(m, a + 10 + r, a + 3 + c);
+    }
+    return RC_OK;
+}
+
+void rc_imp_print(const rc_model *m, FILE *f)
+{
+    const rc_imposed *p = m->imp;
+    if (!p) return;
+    static const char *const ax = "XYZ";
+    fprintf(f, "imposed     %d translation component(s), %d body rotation(s)\n", p->nt, p->nr);
+    for (int k = 0; k < p->nt && k < 20; k++)
+        fprintf(f, "  /RBODY/%-6d velocity %c = %.5g f(t / %.5g) (/FUNCT/%d) until %.5g s\n", m->body_id[p->tbody[k]],
+                ax[p->tdir[k]], p->tfscale[k], p->tascale[k], m->table[p->ttab[k]].id, p->ttstop[k]);
+    for (int j = 0; j < p->nr && j < 20; j++) {
+        fprintf(f, "  /RBODY/%-6d angular velocity (global axes) =", m->body_id[p->rbody[j]]);
+        for (int k = 0; k < 3; k++) {
+            const int t = p->rtab[3 * j + k];
+            if (t < 0) fprintf(f, " %c 0", ax[k]);
+            else fprintf(f, " %c %.5g f(t / %.5g)", ax[k], p->rfscale[3 * j + k], p->rascale[3 * j + k]);
+        }
+        fprintf(f, " until %.5g s\n", p->rtstop[j]);
+    }
+    if (p->nt > 20 || p->nr > 20)
+        fprintf(f, "  ... and %d more (the first 20 of each kind are listed)\n",
+                (p->nt > 20 ? p->nt - 20 : 0) + (p->nr > 20 ? p->nr - 20 : 0));
+}

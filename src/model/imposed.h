@@ -1,0 +1,71 @@
+/*
+ * Imposed velocities (/IMPVEL, SPEC 3; docs/theory.md 1.1): a velocity
+ * component of a body follows Fscale f(t / Ascale) for t <= Tstop.
+ *
+ * Like the held DOFs of /BCS, an imposed component is a velocity state
+ * whose rate the right-hand side overwrites, here with the derivative of the
+ * imposed function (its initial value is set at compile time), and whose
+ * Jacobian row is replaced accordingly; the support supplies whatever force
+ * that takes (the reaction).
+ *
+ * Rotations: the angular velocity state is in the body frame. A body with a
+ * rotational /IMPVEL has its whole angular velocity imposed in global axes,
+ * w_g(t) = (f_XX, f_YY, f_ZZ) over its rotational cards (components without
+ * a card are zero): the body-frame state follows omega = R(q)^T w_g(t) with
+ * rate R(q)^T dw_g/dt (the term omega x omega of d(R^T w_g)/dt vanishes on
+ * that path). So a roller spins about a fixed global axis and cannot tilt.
+ *
+ * Energy: one state W_imp with dW_imp/dt = -(power of the reactions), so
+ * that the ledger (kinetic + ... + W_imp) still closes: for an imposed
+ * translation the reaction is m (a_imposed - a_free), for an imposed
+ * rotation the torque J (omegadot_imposed - omegadot_free) (body frame),
+ * a_free being the acceleration the applied forces alone would give.
+ */
+#ifndef RC_IMPOSED_H
+#define RC_IMPOSED_H
+
+#include <stdint.h>
+
+#include "model/model.h"
+
+typedef struct rc_imposed {
+    /* imposed translations */
+    int nt;
+    int *tbody;          /* [nt] body index                                 */
+    int *tdir;           /* [nt] 0, 1, 2: X, Y, Z                            */
+    int *trow;           /* [nt] state index of the velocity component      */
+    int *ttab;           /* [nt] table index of the time function           */
+    double *tascale, *tfscale, *ttstop; /* [nt] [s] [m/s] [s]               */
+    /* bodies with an imposed rotation (all three components) */
+    int nr;
+    int *rbody;          /* [nr] body index                                 */
+    int *rtab;           /* [nr*3] table of the XX, YY, ZZ function, -1: zero */
+    double *rascale, *rfscale; /* [nr*3] [s] [rad/s]                        */
+    double *rtstop;      /* [nr] [s]                                        */
+    int64_t *rqslot;     /* [nr*12] Jacobian slots (omega row k, q column j) */
+    /* the work state and its Jacobian row */
+    int wadr;            /* state index of W_imp                            */
+    int64_t *wslot;      /* [ny] slot of (wadr, column), -1 when absent      */
+    char *row_imp;       /* [ny] 1 for an imposed velocity row               */
+} rc_imposed;
+
+struct rc_case;
+/* /IMPVEL cards into m->imp (NULL when there are none); after the bodies,
+ * before the state layout. Sets the initial velocities. */
+rc_status rc_imp_compile(const struct rc_case *c, rc_model *m, rc_error *err);
+/* State rows and W_imp after the other states; returns the new count. */
+int rc_imp_layout(rc_model *m, int ny);
+/* Jacobian pattern (jacpattern.c): append the keys (col * ny + row) of the
+ * imposed rows' dependence on q and of the W_imp row; *key is grown. */
+rc_status rc_imp_pattern_keys(const rc_model *m, int64_t **key, int64_t *n, rc_error *err);
+/* After the CSC pattern is built: the slots used by rc_imp_jac. */
+rc_status rc_imp_slots(rc_model *m, rc_error *err);
+void rc_imp_free(rc_imposed *imp);
+void rc_imp_print(const rc_model *m, FILE *f);
+
+/* Right-hand side (assemble_rhs.c): overwrite the imposed rows, W_imp'. */
+void rc_imp_rhs(const rc_model *m, rc_data *d, double t, const double *y, double *ydot);
+/* Jacobian (assemble_jac.c): the W_imp row, then the imposed rows replaced. */
+int rc_imp_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val);
+
+#endif

@@ -1,0 +1,351 @@
+/*
+ * The compiled model (constant during a run) and the run data (mutable).
+ *
+ * State layout (y), fixed at compile time:
+ *   free body f, at body_yadr[b] = 13 f:
+ *     [0..2]  x      centre of mass, global frame            [m]
+ *     [3..6]  q      unit quaternion (w, x, y, z), body->global [-]
+ *     [7..9]  v      velocity of the centre of mass, global  [m/s]
+ *     [10..12] w     angular velocity, BODY frame            [rad/s]
+ *   then per interface i, its own states at inter_eadr[i] (inter_ns[i] of them):
+ *     [0] W_load  work of the elastic(-plastic) normal force F        [J]
+ *     [1] W_damp  energy dissipated by the normal damping             [J]
+ *     [inter_hidx] F_h    hysteresis force, Iform 1 and 2              [N]
+ *     [inter_oidx] offset gap reduction of Inacti = 5 (>= 0)           [m]
+ *     [fr.tidx .. +2] F_t tangential (friction) force on body a, global
+ *                     frame, in the contact plane (incremental form)  [N]
+ *     [fr.fidx .. +2] filtered friction force (/FRICTION Ifiltr)       [N]
+ *     [fr.widx]       W_fric work of the friction forces              [J]
+ *   (fr = inter_fr[i], friction.h)
+ * Fixed bodies have no states; their pose is body_y0 (13 values, zero
+ * velocities).
+ *
+ * The body frame coincides with the global frame at t = 0 (q0 = identity),
+ * so the inertia tensor of /RBODY (global axes at t = 0) is the body-frame
+ * tensor.
+ */
+#ifndef RC_MODEL_H
+#define RC_MODEL_H
+
+#include <stdint.h>
+
+#include "ricochet/ricochet.h"
+#include "model/friction.h"
+#include "model/table.h"
+
+#define RC_NB 13 /* states of a free body */
+#define RC_NE 2  /* energy states of an interface */
+/* Stick -> slip needs |F_t| > (1 + RC_SLIP_BAND) F_lim: an undamped stick
+ * spring released from the limit rings back exactly to it, and a touch must
+ * not count as a crossing (docs/theory.md 3.5) [-]. */
+#define RC_SLIP_BAND 1e-6
+#define RC_NS_MAX 11 /* own states of an interface: energies, F_h, offset, F_t, filter, W_fric */
+#define RC_JB_MAX ((2 * 6 + RC_NS_MAX) * (2 * RC_NB + RC_NS_MAX)) /* largest dense block */
+
+/* Analytic surface kinds. */
+typedef enum { RC_SURF_PLANE = 1, RC_SURF_SPHERE = 2, RC_SURF_CYL = 3, RC_SURF_BOX = 4 } rc_surf_kind;
+
+/* Extra parameters of a surface (surf_ext, RC_SURF_NEXT per surface):
+ *   cylinder: [0] half-length of the cylindrical part [m], [1] ends (0 flat,
+ *             1 rounded), [2] contact point (0 mid-length, 1 deepest);
+ *             its axis (unit, body frame) is surf_n, its radius surf_r;
+ *   box:      [0..2] half-sizes along its axes [m], [3..11] the three unit
+ *             axes u, v, w in the body frame (row k at 3 + 3 k). */
+#define RC_SURF_NEXT 12
+
+/* Geometry pair of an interface (surface kinds, ordered). */
+typedef enum {
+    RC_PAIR_SPHERE_PLANE = 1, /* surface a: sphere, surface b: plane */
+    RC_PAIR_SPHERE_SPHERE = 2, /* a, b: spheres                       */
+    RC_PAIR_CYL_PLANE = 3,    /* a: cylinder, b: plane                */
+    RC_PAIR_CYL_BOX = 4,      /* a: cylinder, b: box (nearest face)   */
+    RC_PAIR_CYL_CYL = 5,      /* a, b: cylinders with parallel axes   */
+    RC_PAIR_SPHERE_BOX = 6    /* a: sphere, b: box (nearest face)     */
+} rc_pair_kind;
+
+/* Interface modes (discrete state, changed only at events):
+ *   INACTIVE  outside [Tstart, Tstop]: no force, history frozen
+ *   OPEN      separated, P <= 0: no force
+ *   CLOSED    P > 0 and total normal force > 0: the force acts
+ *   RELEASED  P > 0 but the total force is clipped at zero (damping pulls):
+ *             no force; the hysteresis law still follows P */
+typedef enum { RC_MODE_INACTIVE = 0, RC_MODE_OPEN = 1, RC_MODE_CLOSED = 2, RC_MODE_RELEASED = 3 } rc_inter_mode;
+
+/* Hysteresis branch (Iform 1, 2) while P > 0. */
+typedef enum { RC_BR_LOAD = 0, RC_BR_ELASTIC = 1, RC_BR_UNLOAD = 2 } rc_branch;
+
+/* Root functions per interface, in this order (docs/theory.md). */
+enum {
+    RC_ROOT_TSTART = 0, /* t - Tstart                                  */
+    RC_ROOT_TSTOP,      /* t - Tstop                                   */
+    RC_ROOT_ZONE,       /* P: entering / leaving the contact zone      */
+    RC_ROOT_FORCE,      /* total normal force: release / re-close      */
+    RC_ROOT_HYST_A,     /* LOAD, UNLOAD: dP/dt; ELASTIC: F_L(P) - F_h  */
+    RC_ROOT_HYST_B,     /* ELASTIC: F_h - F_U(P)                       */
+    RC_ROOT_TRK_A,      /* Inacti 5 tracking: dP_raw/dt                */
+    RC_ROOT_TRK_B,      /* Inacti 5 tracking: offset                   */
+    RC_ROOT_SLIP,       /* stick: |F_t|^2 - F_lim^2; slip: v_t . e     */
+    RC_ROOT_REV,        /* saturated stateless friction: v_t . d_ref   */
+    RC_ROOTS_PER_INTER
+};
+
+/* Jacobian entries written by one element: dense block of `nrow` rows by
+ * `ncol` columns (state indices), slot[r * ncol + c] = position in the CSC
+ * value array, or -1 for an entry that is structurally zero (pruned). */
+typedef struct rc_jblock {
+    int nrow, ncol;
+    int rows[RC_NB * 2 + RC_NS_MAX]; /* state indices */
+    int cols[RC_NB * 2 + RC_NS_MAX];
+    int64_t *slot;               /* [nrow*ncol] */
+} rc_jblock;
+
+struct rc_model {
+    /* provenance */
+    char *case_path;
+    char title[101];
+    char unit_mass[21], unit_length[21], unit_time[21];
+    unsigned long checksum;
+
+    /* bodies: all /RBODY, fixed ones included */
+    int nbody;
+    int nfree;
+    int *body_id;        /* [nbody] /RBODY id */
+    int *body_fixed;     /* [nbody] 1: fixed (ground) */
+    int *body_yadr;      /* [nbody] offset in y, -1 when fixed */
+    double *body_mass;   /* [nbody] [kg] */
+    double *body_J;      /* [nbody*9] inertia, body frame, row-major [kg m^2] */
+    double *body_Jinv;   /* [nbody*9] its inverse [1/(kg m^2)] */
+    double *body_y0;     /* [nbody*13] initial state (pose for fixed bodies) */
+    double *body_grav;   /* [nbody*3] gravity per unit function value [m/s^2] */
+    int *body_dofmask;   /* [nbody*6] 1: translation x,y,z / rotation held (/BCS) */
+    int nheld;           /* held acceleration rows */
+    int *held;           /* [nheld] state indices of held velocities (their rates are 0) */
+    char *row_held;      /* [ny] 1 for those rows */
+    double ground_y0[RC_NB]; /* pose of "fixed in space" (identity, at rest) */
+    int grav_table;      /* table index of the gravity time function, -1: constant */
+    double grav_ascale;  /* [s] abscissa scale of the gravity function */
+    int gwork_adr;       /* state: potential energy of a time-varying gravity,
+                            E' = -sum m g(t).v [J]; -1 when gravity is constant */
+    int64_t *gwork_slot; /* [3*nbody] Jacobian slots (row gwork_adr, columns v) */
+    struct rc_imposed *imp; /* /IMPVEL imposed velocities (imposed.h); NULL: none */
+
+    /* analytic surfaces */
+    int nsurf;
+    int *surf_id;        /* [nsurf] */
+    rc_surf_kind *surf_kind;
+    int *surf_body;      /* [nsurf] body index carrying it, -1: fixed in space */
+    double *surf_p;      /* [nsurf*3] local point (plane point / sphere centre) in body frame [m] */
+    double *surf_n;      /* [nsurf*3] local unit outward normal (plane) [-] */
+    double *surf_r;      /* [nsurf] sphere radius [m] */
+    double *surf_ext;    /* [nsurf*RC_SURF_NEXT] cylinder and box parameters (above) */
+
+    /* curves */
+    int ntable;
+    rc_table *table;     /* [ntable] */
+
+    /* TYPE6 interfaces */
+    int ninter;
+    int *inter_id;       /* [ninter] */
+    rc_pair_kind *inter_pair;
+    int *inter_sa, *inter_sb; /* surface indices in pair order (a = sphere) */
+    int *inter_ba, *inter_bb; /* body indices of a and b (-1: fixed in space) */
+    double *inter_gap;   /* Gap [m] */
+    double *inter_tstart, *inter_tstop; /* [s] */
+    double *inter_visc;  /* [N s/m] */
+    double *inter_fscalev; /* [N] */
+    double *inter_ascalex; /* [m] */
+    double *inter_fscaleld; /* [N] */
+    double *inter_ascalef; /* [N] */
+    double *inter_ascalev; /* [m/s] */
+    int *inter_fct_ld, *inter_fct_dv, *inter_fct_df; /* table index or -1 */
+    int *inter_fct_ul;   /* unload curve, table index or -1 */
+    int *inter_iform;    /* 0 elastic, 1 elasto-plastic (unload curve), 2 decoupled hardening */
+    int *inter_icor;     /* Icor: 1 = start on the unload curve (Iform 1) */
+    int *inter_inacti;   /* 0 or 5 */
+    double *inter_stiff; /* Stiff [N/m] */
+    double *inter_fscaleul; /* [N] */
+    int *inter_eadr;     /* [ninter] offset of the interface's own states */
+    int *inter_ns;       /* [ninter] number of own states (2..RC_NS_MAX) */
+    int *inter_hidx;     /* [ninter] index of F_h among them, -1 */
+    int *inter_oidx;     /* [ninter] index of the Inacti offset, -1 */
+    rc_fric *inter_fr;   /* [ninter] friction (friction.h); kind RC_FK_NONE: none */
+    char **inter_name;   /* [ninter] "/INTER/TYPE6/<id>" */
+    int *inter_law;      /* [ninter] normal law RC_LAW_TYPE6 / RC_LAW_POWER (power.h) */
+    struct rc_power *inter_pw; /* [ninter] power-law parameters (power.h), law POWER */
+
+    /* the model's own scales (scales.c, docs/theory.md 7.1), per interface;
+     * NAN when the model gives none (no gravity, no speed reaching it) */
+    double *inter_pscale; /* penetration scale p_s [m] */
+    double *inter_fscale; /* force scale F_L(p_s) [N] */
+    double *inter_kscale; /* normal stiffness at p_s [N/m] */
+    double *inter_vscale; /* contact speed scale p_s omega_s [m/s] */
+    double *inter_mred;   /* reduced mass of the pair [kg] */
+
+    /* state vector */
+    int ny;
+    double *atol;        /* [ny] absolute tolerances (units of each state) */
+    char *ewt_rel;       /* [ny] 1: the weight has the relative part rtol |y_i|;
+                            0: absolute only (positions and rotations under the
+                            derived tolerances); NULL: all relative */
+    int tol_auto;        /* bit mask of the tolerances derived from the model
+                            (RC_TOL_AUTO_*), 0 when all are given */
+    double escale;       /* energy scale of the model [J] */
+    double vscale;       /* speed scale of the model [m/s] (0: none) */
+
+    /* run and solver settings */
+    double tend, dtout;  /* [s] */
+    int ev_state;        /* /RUN Ev_state: 0 auto, 1 always, 2 never (rc_event_records) */
+    double rtol;
+    double atol_pos, atol_quat, atol_vel, atol_omega, atol_energy;
+    int max_order;
+    long max_steps;
+    double hmax, h0;     /* [s] */
+
+    /* Jacobian: CSC pattern over y, full diagonal, and element blocks */
+    int64_t nnz;
+    int64_t *jac_colptr; /* [ny+1] */
+    int64_t *jac_rowind; /* [nnz] */
+    rc_jblock *jb_body;  /* [nbody] (only free bodies used) */
+    rc_jblock *jb_inter; /* [ninter] */
+    int64_t *jac_diag;   /* [ny] slot of each diagonal entry */
+
+    /* body couplings: spring-dampers, catenaries (coupling.h) */
+    struct rc_couplings *cpl;
+};
+
+/* Which tolerances are derived from the model's scales (blank /SOLVER fields). */
+enum { RC_TOL_AUTO_POS = 1, RC_TOL_AUTO_QUAT = 2, RC_TOL_AUTO_VEL = 4, RC_TOL_AUTO_OMEGA = 8, RC_TOL_AUTO_ENERGY = 16 };
+
+/* Mutable run data. */
+typedef struct rc_data {
+    int *inter_mode;     /* [ninter] rc_inter_mode */
+    int *inter_branch;   /* [ninter] rc_branch (Iform 1, 2) */
+    int *inter_track;    /* [ninter] 1: Inacti 5 offset follows the separation */
+    int *inter_slip;     /* [ninter] friction: 0 stick, 1 slip */
+    double *inter_dref;  /* [ninter*3] sliding direction when a stateless friction
+                            law saturated (reversal root) [-] */
+    double *inter_band;  /* [ninter*2] touch bands of a contact closed at zero
+                            penetration or zero force: separation root P + band[0]
+                            [m], release root F_n + band[1] [N]; 0 otherwise */
+    struct rc_cpl_data *cpl; /* couplings: catenary warm starts, workspace (coupling.h) */
+    double *imp_free;    /* [ny] imposed velocities: the free accelerations of
+                            their rows at the last rhs (imposed.h), NULL: none */
+    double *imp_scratch; /* [3*ny] imposed velocities: Jacobian scratch */
+    long n_rhs, n_jac, n_root;
+    int fail_inter;      /* element that produced a non-finite force, -1 */
+    double fail_t;
+} rc_data;
+
+/* What the output and the event logic see of one interface. */
+typedef struct rc_inter_report {
+    double p;            /* penetration past the (effective) Gap [m] */
+    double vn;           /* approach rate dp/dt [m/s] */
+    double p_raw;        /* penetration past the nominal Gap [m] */
+    double vn_raw;       /* its rate [m/s] */
+    double fload;        /* elastic(-plastic) force F of the law [N] */
+    double fdamp;        /* damping force [N] */
+    double fn;           /* total normal force F + F_damp, unclipped [N] */
+    double fl, fu;       /* load and unload curves at P [N] */
+    double fh;           /* hysteresis state F_h (0 when absent) [N] */
+    double offset;       /* Inacti 5 gap reduction [m] */
+    double ft[3];        /* friction force on body a, applied [N] */
+    double fraw[3];      /* friction force of the law, before the filter [N] */
+    double flim;         /* friction limit Sfric + mu F_n [N] */
+    double vslip;        /* sliding speed |v_t| [m/s] */
+    double slip_root;    /* stick: |F_t|^2 - F_lim^2; slip: v_t . e */
+    double vt[3];        /* tangential relative velocity at the contact point [m/s] */
+    double point[3];     /* contact point [m] */
+    double normal[3];    /* unit normal, from a to b [-] */
+} rc_inter_report;
+
+/* ---- data ---------------------------------------------------------- */
+/* Full-state records at events (docs/case-format.md, /RUN Ev_state): with
+ * Ev_state 0, while the model has at most RC_EVREC_MAX_BODIES bodies. */
+#define RC_EVREC_MAX_BODIES 100
+static inline int rc_event_records(const rc_model *m)
+{
+    return m->ev_state == 1 || (m->ev_state == 0 && m->nbody <= RC_EVREC_MAX_BODIES);
+}
+
+rc_data *rc_data_new(const rc_model *m);
+void rc_data_free(rc_data *d);
+
+/* ---- engine (assemble.c) ------------------------------------------- */
+/* Initial state vector [ny]. */
+void rc_initial_state(const rc_model *m, double *y);
+/* ydot = f(t, y; modes). Returns 0, or 1 (recoverable) on a non-finite force. */
+int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, double *ydot);
+/* Jacobian values into `val` [nnz] on the fixed pattern. */
+int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val);
+/* Root functions [ninter*RC_ROOTS_PER_INTER]. */
+void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
+/* Evaluate one interface at (t, y) in the given modes, for reports, roots
+ * and events. */
+void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, double t,
+                          const double *y, rc_inter_report *r);
+/* Gravity acceleration vector of body b at time t [m/s^2]. */
+void rc_gravity(const rc_model *m, int b, double t, double g[3]);
+/* Value of the gravity time function at t [-] (1 when none is given). */
+double rc_gravity_factor(const rc_model *m, double t);
+/* Pose and velocity view of body b: pointer to its 13 values in y, the
+ * fixed pose of a fixed body, or the ground pose for b = -1. */
+const double *rc_body_state(const rc_model *m, int b, const double *y);
+
+/* Energies [J]: kinetic, gravitational potential, work of the normal
+ * elastic(-plastic) forces, damping dissipation, work of the friction forces,
+ * elastic energy stored in the contacts (normal and tangential), hysteresis
+ * dissipation (= normal work - normal stored), friction dissipation (=
+ * friction work - tangential stored), coupling energies (spring elastic,
+ * damper dissipation, catenary lines: coupling.h), minus the work done by
+ * the imposed velocities (/IMPVEL, imposed.h), total (kinetic + potential +
+ * work + damping + friction work + couplings + imposed; constant in exact
+ * arithmetic). */
+enum {
+    RC_E_KIN, RC_E_POT, RC_E_WORK, RC_E_DAMP, RC_E_FWORK, RC_E_STORED, RC_E_HYST, RC_E_FRIC,
+    RC_E_CPL_ELASTIC, RC_E_CPL_DAMP, RC_E_CATENARY, RC_E_IMPOSED, RC_E_TOTAL, RC_NENERGY
+};
+void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, double e[RC_NENERGY]);
+/* Normal elastic energy stored in interface i (recoverable by unloading) [J]. */
+double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double t, const double *y);
+
+/* Dense block of an element (body e, or interface e in the given modes) at
+ * (t, y), row-major over its rc_jblock rows and columns (assemble_jac.c). */
+void rc_jac_dense_block(const rc_model *m, int is_inter, int e, int mode, int branch, int track, int slip,
+                        double t, const double *y, double *out);
+
+/* ---- friction (friction_compile.c) ------------------------------- */
+struct rc_case;
+/* Apply the /FRICTION cards to the interfaces between the parts they name
+ * (after the TYPE6 interfaces are compiled, before the state layout). */
+rc_status rc_friction_compile(const struct rc_case *c, rc_model *m, rc_error *err);
+void rc_friction_print(const rc_model *m, int i, FILE *f);
+/* Friction coefficient of interface i, direction dir, at pressure p [Pa],
+ * sliding speed v [m/s], normal force fn [N] (the kernel's law, for tests). */
+double rc_friction_mu(const rc_model *m, int i, int dir, double p, double v, double fn);
+
+/* ---- Jacobian pattern (jacpattern.c) ------------------------------- */
+rc_status rc_jac_build(rc_model *m, rc_error *err);
+/* CSC position of (row, col), -1 when the entry is not in the pattern. */
+int64_t rc_jac_slot(const rc_model *m, int row, int col);
+void rc_jac_free(rc_model *m);
+
+/* ---- modes and events (events.c) ----------------------------------- */
+/* Consistent modes at (t, y) from scratch (start of run); may set history
+ * states in y (Inacti offset, initial F_h). */
+void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y);
+
+/* ---- scales and tolerances (scales.c) ------------------------------ */
+/* Per-interface scales (penetration, force, stiffness, speed) from the
+ * laws, the masses, gravity and the initial speeds; derived regularisation
+ * lengths; after the state layout, before the tolerances. */
+rc_status rc_model_scales(rc_model *m, rc_error *err);
+/* Absolute tolerances and weight kinds of every state. */
+rc_status rc_model_tolerances(rc_model *m, rc_error *err);
+/* Time derivatives of the reported quantities of interface i (in the given
+ * modes) along the state rate ydot: p, vn (the normal acceleration), p_raw,
+ * vn_raw, fload, fdamp, fn, fl, fu, fh, offset; other fields 0. Exact, by
+ * complex step (assemble_jac.c). */
+void rc_inter_report_rate(const rc_model *m, int i, int mode, int branch, int track, int slip, const double *y,
+                          const double *ydot, rc_inter_report *dr);
+
+#endif

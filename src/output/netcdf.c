@@ -1,0 +1,741 @@
+/*
+ * Output: the netCDF-4 results file (docs/output-format.md).
+ *
+ * Design choices:
+ * - Every variable is described once, in the table `var_spec` below (name,
+ *   type, dimensions, unit kind, long name, comment). Defining the file and
+ *   writing a record are loops over that table, so a variable cannot end up
+ *   without units or with a record slice that disagrees with its dimensions.
+ * - Units follow the unit system declared in the case (/BEGIN). A component
+ *   left undeclared counts as SI; with kg, m, s the derived units are written
+ *   with their SI names (N, J), otherwise as UDUNITS products ("g mm ms-2").
+ * - The file is marked complete="no", status="running" at open and only
+ *   rc_output_close(complete = 1) turns it to "yes".
+ * - Records and event rows are buffered in memory and written in blocks: one
+ *   nc_put_vara per variable per block of up to RC_OUT_BLOCK_RECORDS records
+ *   (fewer when a record is large: the buffer holds about
+ *   RC_OUT_BLOCK_BYTES). A netCDF call per record and variable cost ~30 us
+ *   of HDF5 bookkeeping, 100x the integration of a small model. The buffer
+ *   is written when full, at close (also after a failed run, so the file
+ *   keeps everything computed), and whenever RC_OUT_SYNC_SECONDS of wall
+ *   time have passed since the last write, which is then synced to disk: a
+ *   killed run loses at most that much wall time of results.
+ * - Time-series variables are chunked along time with chunks of about
+ *   RC_OUT_CHUNK_BYTES, at most one block, so a full block writes whole
+ *   chunks; no fill values are written (every record is written).
+ */
+#include "output/output.h"
+
+#include "base/error.h"
+
+#include <errno.h>
+#include <math.h>
+#include <netcdf.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+/* Write and sync the buffered records after this much wall time [s]. */
+#define RC_OUT_SYNC_SECONDS 1.0
+/* Memory for the buffered records, all variables together [bytes]. */
+#define RC_OUT_BLOCK_BYTES (4u << 20)
+/* Most records in one block [records]. */
+#define RC_OUT_BLOCK_RECORDS 8192
+/* Target size of one chunk of a time-series variable [bytes]. */
+#define RC_OUT_CHUNK_BYTES (1u << 20)
+/* Most records in one chunk of a time-series variable [records]. */
+#define RC_OUT_CHUNK_RECORDS 1024
+/* Event rows buffered before a write, and rows in one chunk [rows]. */
+#define RC_OUT_BLOCK_EVENTS 256
+/* Length of a derived unit string [chars]. */
+#define RC_OUT_UNIT_LEN 128
+
+/* Dimensions. */
+enum { D_TIME, D_BODY, D_INTER, D_VEC3, D_QUAT, D_EVENT, D_COUPLING, D_COUNT };
+static const char *const dim_name[D_COUNT] = {"time", "body", "inter", "vec3", "quat", "event", "coupling"};
+
+/* Kinds of units; the strings are derived from the case's unit system. */
+enum { U_ONE, U_TIME, U_LENGTH, U_VELOCITY, U_ANGVEL, U_FORCE, U_ENERGY, U_COUNT };
+
+/* Fixed variables (energies are added per entry of the meta). */
+enum {
+    V_TIME, V_AT_EVENT,
+    V_BODY_ID, V_BODY_FIXED, V_BODY_POS, V_BODY_QUAT, V_BODY_VEL, V_BODY_OMEGA,
+    V_INTER_ID, V_INTER_TYPE, V_INTER_PEN, V_INTER_FLOAD, V_INTER_FDAMP, V_INTER_FNORMAL,
+    V_INTER_POINT, V_INTER_NORMAL, V_INTER_MODE, V_INTER_FFRIC, V_INTER_VSLIP, V_INTER_SLIP,
+    V_EVENT_TIME, V_EVENT_KIND, V_EVENT_ELEMENT, V_EVENT_PEN, V_EVENT_VN, V_EVENT_FN,
+    V_CPL_ID, V_CPL_TYPE, V_CPL_FORCE, V_CPL_LENGTH, V_CPL_F1, V_CPL_F2, V_CPL_LOWEST,
+    V_COUNT
+};
+
+typedef struct var_spec {
+    const char *name;
+    nc_type type;
+    int ndims;
+    int dim[3];          /* D_* */
+    int unit;            /* U_* */
+    const char *long_name;
+    const char *comment; /* NULL: none */
+} var_spec;
+
+static const var_spec var_table[V_COUNT] = {
+    [V_TIME] = {"time", NC_DOUBLE, 1, {D_TIME}, U_TIME, "simulated time", NULL},
+    [V_AT_EVENT] = {"at_event", NC_INT, 1, {D_TIME}, U_ONE,
+                    "record written at an event", "1: at an event, 0: at an output time"},
+    [V_BODY_ID] = {"body_id", NC_INT, 1, {D_BODY}, U_ONE, "rigid body identifier (/RBODY id)",
+                   NULL},
+    [V_BODY_FIXED] = {"body_fixed", NC_INT, 1, {D_BODY}, U_ONE, "body is fixed (ground)",
+                      "1: fixed, 0: free"},
+    [V_BODY_POS] = {"body_position", NC_DOUBLE, 3, {D_TIME, D_BODY, D_VEC3}, U_LENGTH,
+                    "position of the centre of mass", "global frame"},
+    [V_BODY_QUAT] = {"body_quaternion", NC_DOUBLE, 3, {D_TIME, D_BODY, D_QUAT}, U_ONE,
+                     "orientation unit quaternion", "w,x,y,z, body to global"},
+    [V_BODY_VEL] = {"body_velocity", NC_DOUBLE, 3, {D_TIME, D_BODY, D_VEC3}, U_VELOCITY,
+                    "velocity of the centre of mass", "global frame"},
+    [V_BODY_OMEGA] = {"body_angular_velocity", NC_DOUBLE, 3, {D_TIME, D_BODY, D_VEC3},
+                      U_ANGVEL, "angular velocity", "body frame"},
+    [V_INTER_ID] = {"inter_id", NC_INT, 1, {D_INTER}, U_ONE,
+                    "contact interface identifier (/INTER id)", NULL},
+    [V_INTER_TYPE] = {"inter_type", NC_STRING, 1, {D_INTER}, U_ONE, "contact interface type",
+                      "e.g. TYPE6"},
+    [V_INTER_PEN] = {"inter_penetration", NC_DOUBLE, 2, {D_TIME, D_INTER}, U_LENGTH,
+                     "maximum penetration P past the gap", NULL},
+    [V_INTER_FLOAD] = {"inter_force_load", NC_DOUBLE, 2, {D_TIME, D_INTER}, U_FORCE,
+                       "normal force from the loading/unloading law", NULL},
+    [V_INTER_FDAMP] = {"inter_force_damping", NC_DOUBLE, 2, {D_TIME, D_INTER}, U_FORCE,
+                       "normal damping force", NULL},
+    [V_INTER_FNORMAL] = {"inter_force_normal", NC_DOUBLE, 2, {D_TIME, D_INTER}, U_FORCE,
+                         "total normal contact force", ">= 0"},
+    [V_INTER_POINT] = {"inter_contact_point", NC_DOUBLE, 3, {D_TIME, D_INTER, D_VEC3},
+                       U_LENGTH, "contact point", "global frame"},
+    [V_INTER_NORMAL] = {"inter_normal", NC_DOUBLE, 3, {D_TIME, D_INTER, D_VEC3}, U_ONE,
+                        "unit contact normal", "global frame"},
+    [V_INTER_MODE] = {"inter_mode", NC_INT, 2, {D_TIME, D_INTER}, U_ONE, "contact mode", NULL},
+    [V_INTER_FFRIC] = {"inter_force_friction", NC_DOUBLE, 3, {D_TIME, D_INTER, D_VEC3}, U_FORCE,
+                       "friction force on the body of the first surface", "global frame, after the filter"},
+    [V_INTER_VSLIP] = {"inter_slip_speed", NC_DOUBLE, 2, {D_TIME, D_INTER}, U_VELOCITY,
+                       "sliding speed at the contact point", "0 while sticking"},
+    [V_INTER_SLIP] = {"inter_slip", NC_INT, 2, {D_TIME, D_INTER}, U_ONE, "friction mode",
+                      "0 stick (viscous law: below the limit), 1 slip (viscous law: saturated)"},
+    [V_EVENT_TIME] = {"event_time", NC_DOUBLE, 1, {D_EVENT}, U_TIME, "time of the event",
+                      NULL},
+    [V_EVENT_KIND] = {"event_kind", NC_STRING, 1, {D_EVENT}, U_ONE, "kind of event",
+                      "docs/output-format.md lists the kinds"},
+    [V_EVENT_ELEMENT] = {"event_element", NC_STRING, 1, {D_EVENT}, U_ONE,
+                         "element concerned by the event", "e.g. /INTER/TYPE6/3"},
+    [V_EVENT_PEN] = {"event_penetration", NC_DOUBLE, 1, {D_EVENT}, U_LENGTH,
+                     "penetration P of the event's interface at the event",
+                     "NaN when the element is not an interface"},
+    [V_EVENT_VN] = {"event_normal_speed", NC_DOUBLE, 1, {D_EVENT}, U_VELOCITY,
+                    "normal approach speed dP/dt of the event's interface at the event",
+                    "> 0 approaching; NaN when the element is not an interface"},
+    [V_EVENT_FN] = {"event_force_normal", NC_DOUBLE, 1, {D_EVENT}, U_FORCE,
+                    "total normal force of the event's interface just after the event",
+                    "in the mode after the transition, >= 0; NaN when the element is not an interface"},
+    [V_CPL_ID] = {"coupling_id", NC_INT, 1, {D_COUPLING}, U_ONE, "body coupling identifier (/COUPLING id)",
+                  NULL},
+    [V_CPL_TYPE] = {"coupling_type", NC_STRING, 1, {D_COUPLING}, U_ONE, "body coupling type",
+                    "SPRING or CATENARY"},
+    [V_CPL_FORCE] = {"coupling_force", NC_DOUBLE, 2, {D_TIME, D_COUPLING}, U_FORCE, "coupling force",
+                     "spring: elastic + damping force along the line, > 0 pulls the ends together; "
+                     "catenary: line tension at end 1"},
+    [V_CPL_LENGTH] = {"coupling_length", NC_DOUBLE, 2, {D_TIME, D_COUPLING}, U_LENGTH,
+                      "distance between the end points of the coupling", NULL},
+    [V_CPL_F1] = {"coupling_force_end1", NC_DOUBLE, 3, {D_TIME, D_COUPLING, D_VEC3}, U_FORCE,
+                  "force of the coupling on its end 1", "global frame"},
+    [V_CPL_F2] = {"coupling_force_end2", NC_DOUBLE, 3, {D_TIME, D_COUPLING, D_VEC3}, U_FORCE,
+                  "force of the coupling on its end 2", "global frame"},
+    [V_CPL_LOWEST] = {"coupling_lowest", NC_DOUBLE, 2, {D_TIME, D_COUPLING}, U_LENGTH,
+                      "height of the lowest point of a catenary line",
+                      "along the upward direction -g, from the origin; ground contact of the line is not "
+                      "modelled (docs/theory.md); NaN for springs"},
+};
+
+struct rc_output {
+    int ncid;
+    char *path;           /* copy, for messages */
+    size_t dimlen[D_COUNT]; /* fixed lengths; 1 for the unlimited ones (one record) */
+    int dimid[D_COUNT];
+    int var[V_COUNT];     /* varids; -1 when not defined (no interfaces) */
+    int nenergy;
+    int *var_energy;      /* [nenergy] varids */
+    size_t nrec;          /* records written to the file */
+    size_t nevent;        /* event rows written to the file */
+    char unit[U_COUNT][RC_OUT_UNIT_LEN];
+    /* the buffer: records nrec.. and event rows nevent.. not yet written */
+    size_t block;         /* records per block [records] */
+    size_t nbuf;          /* records in the buffer */
+    size_t rec_size[V_COUNT]; /* bytes of one record of each time series; 0: none */
+    unsigned char *buf[V_COUNT]; /* [block * rec_size[v]] */
+    double *ebuf;         /* [nenergy * block] energies, entry k at k * block */
+    size_t nevbuf;        /* event rows in the buffer */
+    double *ev_num;       /* [4 * RC_OUT_BLOCK_EVENTS] time, P, dP/dt, F_n, by column */
+    char *ev_str[2][RC_OUT_BLOCK_EVENTS]; /* kind, element (copies) */
+    double last_sync;     /* wall time of the last write to disk [s] */
+    int broken;           /* a write failed: write nothing more */
+};
+
+/* ---- Error reporting --------------------------------------------------- */
+
+/* Record an RC_EIO "path: what: netCDF message" raised at `line` of `func`. */
+static rc_status nc_fail(rc_error *err, int line, const char *func, const char *path, int st,
+                         const char *fmt, ...) __attribute__((format(printf, 6, 7)));
+static rc_status nc_fail(rc_error *err, int line, const char *func, const char *path, int st,
+                         const char *fmt, ...)
+{
+    char what[1536];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    return rc_error_set(err, RC_EIO, __FILE__, line, func, "%s: %s: %s", path, what,
+                        nc_strerror(st));
+}
+
+/* Run a netCDF call; on failure return RC_EIO from the calling function,
+ * which must have `rc_error *err` in scope. */
+#define NC_TRY(path, call, ...)                                                              \
+    do {                                                                                     \
+        int nc_st_ = (call);                                                                 \
+        if (nc_st_ != NC_NOERR)                                                              \
+            return nc_fail(err, __LINE__, __func__, (path), nc_st_, __VA_ARGS__);            \
+    } while (0)
+
+/* A C string never NULL. */
+static const char *str_or_empty(const char *s) { return s ? s : ""; }
+
+/* ---- Definition -------------------------------------------------------- */
+
+/* Write a text attribute (varid NC_GLOBAL for a global one). */
+static rc_status put_text(const rc_output *o, int varid, const char *name, const char *value,
+                          rc_error *err)
+{
+    const char *v = str_or_empty(value);
+    NC_TRY(o->path, nc_put_att_text(o->ncid, varid, name, strlen(v), v),
+           "writing attribute %s", name);
+    return RC_OK;
+}
+
+/* Write a double global attribute. */
+static rc_status put_double(const rc_output *o, const char *name, double value, rc_error *err)
+{
+    NC_TRY(o->path, nc_put_att_double(o->ncid, NC_GLOBAL, name, NC_DOUBLE, 1, &value),
+           "writing attribute %s", name);
+    return RC_OK;
+}
+
+/* Write a 64-bit integer global attribute. */
+static rc_status put_int64(const rc_output *o, const char *name, long value, rc_error *err)
+{
+    long long v = value;
+    NC_TRY(o->path, nc_put_att_longlong(o->ncid, NC_GLOBAL, name, NC_INT64, 1, &v),
+           "writing attribute %s", name);
+    return RC_OK;
+}
+
+/* Derive the unit strings from the declared unit system (empty = SI). */
+static void derive_units(rc_output *o, const rc_output_meta *meta)
+{
+    const char *m = *str_or_empty(meta->unit_mass) ? meta->unit_mass : "kg";
+    const char *l = *str_or_empty(meta->unit_length) ? meta->unit_length : "m";
+    const char *t = *str_or_empty(meta->unit_time) ? meta->unit_time : "s";
+    int si = !strcmp(m, "kg") && !strcmp(l, "m") && !strcmp(t, "s");
+    snprintf(o->unit[U_ONE], RC_OUT_UNIT_LEN, "1");
+    snprintf(o->unit[U_TIME], RC_OUT_UNIT_LEN, "%s", t);
+    snprintf(o->unit[U_LENGTH], RC_OUT_UNIT_LEN, "%s", l);
+    snprintf(o->unit[U_VELOCITY], RC_OUT_UNIT_LEN, "%s %s-1", l, t);
+    snprintf(o->unit[U_ANGVEL], RC_OUT_UNIT_LEN, "rad %s-1", t);
+    if (si) {
+        snprintf(o->unit[U_FORCE], RC_OUT_UNIT_LEN, "N");
+        snprintf(o->unit[U_ENERGY], RC_OUT_UNIT_LEN, "J");
+    } else {
+        snprintf(o->unit[U_FORCE], RC_OUT_UNIT_LEN, "%s %s %s-2", m, l, t);
+        snprintf(o->unit[U_ENERGY], RC_OUT_UNIT_LEN, "%s %s2 %s-2", m, l, t);
+    }
+}
+
+/* Define one variable with its units and long name; time series and the
+ * events table are chunked along their unlimited dimension. */
+static rc_status def_var(rc_output *o, const char *name, nc_type type, int ndims,
+                         const int *dim, const char *units, const char *long_name, int *varid,
+                         rc_error *err)
+{
+    int dimids[3];
+    size_t chunk[3];
+    size_t elem = type == NC_DOUBLE ? sizeof(double) : type == NC_INT ? sizeof(int)
+                                                                       : sizeof(char *);
+    size_t per_rec = elem;
+    for (int i = 0; i < ndims; i++) {
+        dimids[i] = o->dimid[dim[i]];
+        chunk[i] = o->dimlen[dim[i]];
+        per_rec *= o->dimlen[dim[i]];
+    }
+    NC_TRY(o->path, nc_def_var(o->ncid, name, type, ndims, dimids, varid),
+           "defining variable %s", name);
+    /* chunk of ~RC_OUT_CHUNK_BYTES along the unlimited dimension, at most
+     * one block; every record is written, so no fill values */
+    if (dim[0] == D_TIME || dim[0] == D_EVENT) {
+        size_t n = RC_OUT_CHUNK_BYTES / per_rec;
+        size_t cap = dim[0] == D_TIME ? RC_OUT_CHUNK_RECORDS : RC_OUT_BLOCK_EVENTS;
+        chunk[0] = n < 1 ? 1 : n > cap ? cap : n;
+        NC_TRY(o->path, nc_def_var_chunking(o->ncid, *varid, NC_CHUNKED, chunk),
+               "setting chunks of variable %s", name);
+        if (type != NC_STRING)
+            NC_TRY(o->path, nc_def_var_fill(o->ncid, *varid, NC_NOFILL, NULL),
+                   "setting no fill for variable %s", name);
+    }
+    rc_status rc = put_text(o, *varid, "units", units, err);
+    if (rc == RC_OK) rc = put_text(o, *varid, "long_name", long_name, err);
+    return rc;
+}
+
+/* Does variable `v` use the dimension `d`? */
+static int var_uses_dim(int v, int d)
+{
+    for (int i = 0; i < var_table[v].ndims; i++)
+        if (var_table[v].dim[i] == d) return 1;
+    return 0;
+}
+
+/* Define the dimensions, the fixed variables with their attributes, and one
+ * variable per energy entry. Interface variables only if ninter > 0. */
+static rc_status define_vars(rc_output *o, const rc_output_meta *meta, rc_error *err)
+{
+    rc_status rc = RC_OK;
+    /* dimensions */
+    for (int d = 0; d < D_COUNT; d++) {
+        if ((d == D_INTER && meta->ninter == 0) || (d == D_COUPLING && meta->ncoupling == 0)) continue;
+        size_t len = (d == D_TIME || d == D_EVENT) ? NC_UNLIMITED : o->dimlen[d];
+        NC_TRY(o->path, nc_def_dim(o->ncid, dim_name[d], len, &o->dimid[d]),
+               "defining dimension %s", dim_name[d]);
+    }
+    /* fixed variables from the table */
+    for (int v = 0; v < V_COUNT; v++) {
+        const var_spec *s = &var_table[v];
+        o->var[v] = -1;
+        if (meta->ninter == 0 && var_uses_dim(v, D_INTER)) continue;
+        if (meta->ncoupling == 0 && var_uses_dim(v, D_COUPLING)) continue;
+        rc = def_var(o, s->name, s->type, s->ndims, s->dim, o->unit[s->unit], s->long_name,
+                     &o->var[v], err);
+        if (rc == RC_OK && s->comment) rc = put_text(o, o->var[v], "comment", s->comment, err);
+        if (rc != RC_OK) return rc;
+    }
+    /* CF extras: standard name of time, flags of the contact mode */
+    rc = put_text(o, o->var[V_TIME], "standard_name", "time", err);
+    if (rc == RC_OK) rc = put_text(o, o->var[V_TIME], "axis", "T", err);
+    if (rc != RC_OK) return rc;
+    if (o->var[V_INTER_MODE] >= 0) {
+        static const int flags[4] = {RC_OUT_MODE_INACTIVE, RC_OUT_MODE_OPEN, RC_OUT_MODE_CLOSED,
+                                     RC_OUT_MODE_RELEASED};
+        NC_TRY(o->path,
+               nc_put_att_int(o->ncid, o->var[V_INTER_MODE], "flag_values", NC_INT, 4, flags),
+               "writing attribute flag_values of inter_mode");
+        rc = put_text(o, o->var[V_INTER_MODE], "flag_meanings", "inactive open closed released", err);
+        if (rc != RC_OK) return rc;
+    }
+    /* energy ledger: one time series per entry */
+    static const int time_dim[1] = {D_TIME};
+    for (int k = 0; k < meta->nenergy; k++) {
+        rc = def_var(o, str_or_empty(meta->energy_name[k]), NC_DOUBLE, 1, time_dim,
+                     o->unit[U_ENERGY], str_or_empty(meta->energy_long[k]), &o->var_energy[k],
+                     err);
+        if (rc != RC_OK) return rc;
+    }
+    return RC_OK;
+}
+
+/* Global attributes describing the run; complete="no" until closed. */
+static rc_status define_globals(rc_output *o, const rc_output_meta *meta, rc_error *err)
+{
+    char buf[512];
+    rc_status rc = put_text(o, NC_GLOBAL, "title", meta->title, err);
+    if (rc == RC_OK) rc = put_text(o, NC_GLOBAL, "Conventions", "CF-1.8", err);
+    snprintf(buf, sizeof buf, "ricochet %s", rc_version());
+    if (rc == RC_OK) rc = put_text(o, NC_GLOBAL, "source", buf, err);
+    if (rc == RC_OK) rc = put_text(o, NC_GLOBAL, "case_path", meta->case_path, err);
+    snprintf(buf, sizeof buf, "%016lx", meta->checksum);
+    if (rc == RC_OK) rc = put_text(o, NC_GLOBAL, "case_checksum", buf, err);
+    if (rc != RC_OK) return rc;
+
+    /* unit system: the declared components, or a note that none was declared */
+    const char *comp[3] = {"mass", "length", "time"};
+    const char *val[3] = {meta->unit_mass, meta->unit_length, meta->unit_time};
+    size_t n = 0;
+    buf[0] = '\0';
+    for (int i = 0; i < 3; i++)
+        if (*str_or_empty(val[i]) && n < sizeof buf)
+            n += (size_t)snprintf(buf + n, sizeof buf - n, "%s%s=%s", n ? " " : "", comp[i],
+                                  val[i]);
+    rc = put_text(o, NC_GLOBAL, "unit_system",
+                  buf[0] ? buf : "undeclared (consistent units assumed)", err);
+
+    /* solver settings */
+    if (rc == RC_OK) rc = put_text(o, NC_GLOBAL, "solver", meta->solver, err);
+    if (rc == RC_OK) rc = put_double(o, "rtol", meta->rtol, err);
+    if (rc == RC_OK) rc = put_double(o, "atol_position", meta->atol_pos, err);
+    if (rc == RC_OK) rc = put_double(o, "atol_quaternion", meta->atol_quat, err);
+    if (rc == RC_OK) rc = put_double(o, "atol_velocity", meta->atol_vel, err);
+    if (rc == RC_OK) rc = put_double(o, "atol_angular_velocity", meta->atol_omega, err);
+    if (rc == RC_OK) rc = put_double(o, "atol_energy", meta->atol_energy, err);
+    if (rc == RC_OK && meta->event_records) rc = put_text(o, NC_GLOBAL, "event_records", meta->event_records, err);
+    if (rc != RC_OK) return rc;
+
+    /* provenance and completion */
+    time_t now = time(NULL);
+    struct tm tm;
+    char date[64] = "unknown date";
+    if (now != (time_t)-1 && gmtime_r(&now, &tm)) strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    snprintf(buf, sizeof buf, "created %s", date);
+    rc = put_text(o, NC_GLOBAL, "history", buf, err);
+    if (rc == RC_OK) rc = put_text(o, NC_GLOBAL, "complete", "no", err);
+    if (rc == RC_OK) rc = put_text(o, NC_GLOBAL, "status", "running", err);
+    return rc;
+}
+
+/* Write all n strings of an NC_STRING variable in one call (one HDF5 write,
+ * not one per element: ~40 us each). */
+static rc_status put_strings(const rc_output *o, int v, size_t n, const char *const *s, rc_error *err)
+{
+    const char **p = malloc((n + 1) * sizeof *p);
+    if (!p) RC_RAISE(err, RC_ENOMEM, "output: out of memory writing %s", var_table[v].name);
+    for (size_t i = 0; i < n; i++) p[i] = str_or_empty(s[i]);
+    int st = nc_put_var_string(o->ncid, o->var[v], p);
+    free(p);
+    if (st != NC_NOERR) return nc_fail(err, __LINE__, __func__, o->path, st, "writing %s", var_table[v].name);
+    return RC_OK;
+}
+
+/* Write the variables that do not depend on time (ids, fixed flags, types). */
+static rc_status write_static(rc_output *o, const rc_output_meta *meta, rc_error *err)
+{
+    NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_BODY_ID], meta->body_id),
+           "writing body_id");
+    NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_BODY_FIXED], meta->body_fixed),
+           "writing body_fixed");
+    if (meta->ninter > 0) {
+        NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_INTER_ID], meta->inter_id),
+               "writing inter_id");
+        rc_status rc = put_strings(o, V_INTER_TYPE, (size_t)meta->ninter, meta->inter_type, err);
+        if (rc != RC_OK) return rc;
+    }
+    if (meta->ncoupling > 0) {
+        NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_CPL_ID], meta->coupling_id),
+               "writing coupling_id");
+        rc_status rc = put_strings(o, V_CPL_TYPE, (size_t)meta->ncoupling, meta->coupling_type, err);
+        if (rc != RC_OK) return rc;
+    }
+    return RC_OK;
+}
+
+/* Check that the meta is usable: sizes and the arrays they announce. */
+static rc_status check_meta(const rc_output_meta *meta, rc_error *err)
+{
+    if (!meta || meta->nbody < 1 || meta->ninter < 0 || meta->nenergy < 0 || meta->ncoupling < 0)
+        RC_RAISE(err, RC_EINTERNAL,
+                 "output: bad meta (needs nbody >= 1, ninter >= 0, nenergy >= 0, ncoupling >= 0)");
+    if (!meta->body_id || !meta->body_fixed ||
+        (meta->ninter > 0 && (!meta->inter_id || !meta->inter_type)) ||
+        (meta->ncoupling > 0 && (!meta->coupling_id || !meta->coupling_type)) ||
+        (meta->nenergy > 0 && (!meta->energy_name || !meta->energy_long)))
+        RC_RAISE(err, RC_EINTERNAL, "output: meta array missing for a non-zero count");
+    return RC_OK;
+}
+
+/* Size the record buffer: bytes per record of each time series, records per
+ * block (about RC_OUT_BLOCK_BYTES in all, 1 to RC_OUT_BLOCK_RECORDS), and
+ * allocate it. Returns 0 when out of memory. */
+static int alloc_buffer(rc_output *o, const rc_output_meta *meta)
+{
+    size_t total = (size_t)meta->nenergy * sizeof(double);
+    for (int v = 0; v < V_COUNT; v++) {
+        const var_spec *s = &var_table[v];
+        if (s->dim[0] != D_TIME || (meta->ninter == 0 && var_uses_dim(v, D_INTER)) ||
+            (meta->ncoupling == 0 && var_uses_dim(v, D_COUPLING)))
+            continue;
+        size_t n = s->type == NC_INT ? sizeof(int) : sizeof(double);
+        for (int i = 1; i < s->ndims; i++) n *= o->dimlen[s->dim[i]];
+        o->rec_size[v] = n;
+        total += n;
+    }
+    size_t b = RC_OUT_BLOCK_BYTES / (total ? total : 1);
+    o->block = b < 1 ? 1 : b > RC_OUT_BLOCK_RECORDS ? RC_OUT_BLOCK_RECORDS : b;
+    for (int v = 0; v < V_COUNT; v++)
+        if (o->rec_size[v] && !(o->buf[v] = malloc(o->block * o->rec_size[v]))) return 0;
+    o->ebuf = malloc(((size_t)meta->nenergy * o->block + 1) * sizeof(double));
+    o->ev_num = malloc(4 * RC_OUT_BLOCK_EVENTS * sizeof(double));
+    return o->ebuf && o->ev_num;
+}
+
+/* Monotonic wall clock [s]. */
+static double wall_clock(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Free the handle (not the file). NULL is a no-op. */
+static void output_free(rc_output *o)
+{
+    if (!o) return;
+    free(o->path);
+    free(o->var_energy);
+    for (int v = 0; v < V_COUNT; v++) free(o->buf[v]);
+    free(o->ebuf);
+    free(o->ev_num);
+    for (size_t i = 0; i < o->nevbuf; i++) {
+        free(o->ev_str[0][i]);
+        free(o->ev_str[1][i]);
+    }
+    free(o);
+}
+
+/* netCDF reports any failed create as "Permission denied"; say what is
+ * wrong with the directory when that is the cause. */
+static void directory_problem(const char *path, char *buf, size_t n)
+{
+    const char *slash = strrchr(path, '/');
+    buf[0] = '\0';
+    if (!slash) return;
+    int len = slash == path ? 1 : (int)(slash - path);
+    char dir[1024];
+    snprintf(dir, sizeof dir, "%.*s", len, path);
+    if (access(dir, W_OK) != 0) snprintf(buf, n, " (directory %s: %s)", dir, strerror(errno));
+}
+
+/* ---- Public functions -------------------------------------------------- */
+
+rc_status rc_output_open(rc_output **out, const char *path, const rc_output_meta *meta,
+                         rc_error *err)
+{
+    *out = NULL;
+    rc_status rc = check_meta(meta, err);
+    if (rc != RC_OK) return rc;
+    if (!path) RC_RAISE(err, RC_EINTERNAL, "output: no path");
+
+    /* the handle: copies of what outlives the call */
+    rc_output *o = calloc(1, sizeof *o);
+    if (!o) RC_RAISE(err, RC_ENOMEM, "output: out of memory");
+    o->path = malloc(strlen(path) + 1);
+    o->var_energy = calloc((size_t)meta->nenergy + 1, sizeof *o->var_energy);
+    if (!o->path || !o->var_energy) {
+        output_free(o);
+        RC_RAISE(err, RC_ENOMEM, "output: out of memory");
+    }
+    strcpy(o->path, path);
+    o->nenergy = meta->nenergy;
+    const size_t len[D_COUNT] = {1, (size_t)meta->nbody, (size_t)meta->ninter, 3, 4, 1, (size_t)meta->ncoupling};
+    memcpy(o->dimlen, len, sizeof len);
+    derive_units(o, meta);
+    if (!alloc_buffer(o, meta)) {
+        output_free(o);
+        RC_RAISE(err, RC_ENOMEM, "output: out of memory for the record buffer");
+    }
+    o->last_sync = wall_clock();
+
+    /* create, define, write the fixed data */
+    int st = nc_create(path, NC_NETCDF4 | NC_CLOBBER, &o->ncid);
+    if (st != NC_NOERR) {
+        char why[1200];
+        directory_problem(path, why, sizeof why);
+        output_free(o);
+        return nc_fail(err, __LINE__, __func__, path, st, "cannot create the output file%s", why);
+    }
+    rc = define_vars(o, meta, err);
+    if (rc == RC_OK) rc = define_globals(o, meta, err);
+    if (rc == RC_OK && (st = nc_enddef(o->ncid)) != NC_NOERR)
+        rc = nc_fail(err, __LINE__, __func__, path, st, "ending definitions");
+    if (rc == RC_OK) rc = write_static(o, meta, err);
+    if (rc != RC_OK) {
+        /* a half-made file is not a result: remove it */
+        nc_abort(o->ncid);
+        remove(o->path);
+        output_free(o);
+        return rc;
+    }
+    *out = o;
+    return RC_OK;
+}
+
+/* Write the buffered records (one nc_put_vara per variable) and event rows,
+ * then sync to disk when `sync` or RC_OUT_SYNC_SECONDS have passed since the
+ * last sync. After a failure nothing more is written. */
+static rc_status flush(rc_output *o, int sync, rc_error *err)
+{
+    if (o->broken) return RC_OK;
+    o->broken = 1; /* until this write succeeds */
+    if (o->nbuf > 0) {
+        size_t start[3] = {o->nrec, 0, 0}, count[3] = {o->nbuf, 1, 1};
+        for (int v = 0; v < V_COUNT; v++) {
+            const var_spec *s = &var_table[v];
+            if (!o->rec_size[v]) continue;
+            for (int i = 1; i < s->ndims; i++) count[i] = o->dimlen[s->dim[i]];
+            NC_TRY(o->path, nc_put_vara(o->ncid, o->var[v], start, count, o->buf[v]),
+                   "writing %s, records %zu to %zu", s->name, o->nrec, o->nrec + o->nbuf - 1);
+        }
+        for (int k = 0; k < o->nenergy; k++)
+            NC_TRY(o->path, nc_put_vara_double(o->ncid, o->var_energy[k], start, count, o->ebuf + (size_t)k * o->block),
+                   "writing energy %d, records %zu to %zu", k, o->nrec, o->nrec + o->nbuf - 1);
+        o->nrec += o->nbuf;
+        o->nbuf = 0;
+    }
+    if (o->nevbuf > 0) {
+        size_t start[1] = {o->nevent}, count[1] = {o->nevbuf};
+        static const int num_var[4] = {V_EVENT_TIME, V_EVENT_PEN, V_EVENT_VN, V_EVENT_FN};
+        for (int c = 0; c < 4; c++)
+            NC_TRY(o->path, nc_put_vara_double(o->ncid, o->var[num_var[c]], start, count, o->ev_num + c * RC_OUT_BLOCK_EVENTS),
+                   "writing %s, rows %zu to %zu", var_table[num_var[c]].name, o->nevent, o->nevent + o->nevbuf - 1);
+        static const int str_var[2] = {V_EVENT_KIND, V_EVENT_ELEMENT};
+        for (int c = 0; c < 2; c++)
+            NC_TRY(o->path, nc_put_vara_string(o->ncid, o->var[str_var[c]], start, count, (const char **)o->ev_str[c]),
+                   "writing %s, rows %zu to %zu", var_table[str_var[c]].name, o->nevent, o->nevent + o->nevbuf - 1);
+        for (size_t i = 0; i < o->nevbuf; i++) {
+            free(o->ev_str[0][i]);
+            free(o->ev_str[1][i]);
+            o->ev_str[0][i] = o->ev_str[1][i] = NULL;
+        }
+        o->nevent += o->nevbuf;
+        o->nevbuf = 0;
+    }
+    const double now = wall_clock();
+    if (sync || now - o->last_sync >= RC_OUT_SYNC_SECONDS) {
+        NC_TRY(o->path, nc_sync(o->ncid), "flushing after record %zu", o->nrec);
+        o->last_sync = now;
+    }
+    o->broken = 0;
+    return RC_OK;
+}
+
+rc_status rc_output_frame(rc_output *o, const rc_frame *f, rc_error *err)
+{
+    /* the record's data, in the order of the variable table */
+    const void *data[V_COUNT] = {
+        [V_TIME] = &f->t,
+        [V_AT_EVENT] = &f->at_event,
+        [V_BODY_POS] = f->body_pos,
+        [V_BODY_QUAT] = f->body_quat,
+        [V_BODY_VEL] = f->body_vel,
+        [V_BODY_OMEGA] = f->body_omega,
+        [V_INTER_PEN] = f->inter_pen,
+        [V_INTER_FLOAD] = f->inter_fload,
+        [V_INTER_FDAMP] = f->inter_fdamp,
+        [V_INTER_FNORMAL] = f->inter_fnormal,
+        [V_INTER_POINT] = f->inter_point,
+        [V_INTER_NORMAL] = f->inter_normal,
+        [V_INTER_MODE] = f->inter_mode,
+        [V_INTER_FFRIC] = f->inter_ffric,
+        [V_INTER_VSLIP] = f->inter_vslip,
+        [V_INTER_SLIP] = f->inter_slip,
+        [V_CPL_FORCE] = f->cpl_force,
+        [V_CPL_LENGTH] = f->cpl_length,
+        [V_CPL_F1] = f->cpl_f1,
+        [V_CPL_F2] = f->cpl_f2,
+        [V_CPL_LOWEST] = f->cpl_lowest,
+    };
+    if (o->broken) RC_RAISE(err, RC_EIO, "%s: an earlier write failed", o->path);
+    /* check everything before copying anything: a record is whole or absent */
+    for (int v = 0; v < V_COUNT; v++)
+        if (o->rec_size[v] && !data[v])
+            RC_RAISE(err, RC_EINTERNAL, "output: frame field for %s is NULL", var_table[v].name);
+    if (o->nenergy > 0 && !f->energy) RC_RAISE(err, RC_EINTERNAL, "output: frame field for energy is NULL");
+    /* the buffer is flushed when full, so there is room for one record */
+    for (int v = 0; v < V_COUNT; v++)
+        if (o->rec_size[v]) memcpy(o->buf[v] + o->nbuf * o->rec_size[v], data[v], o->rec_size[v]);
+    for (int k = 0; k < o->nenergy; k++) o->ebuf[(size_t)k * o->block + o->nbuf] = f->energy[k];
+    o->nbuf++;
+    if (o->nbuf == o->block || wall_clock() - o->last_sync >= RC_OUT_SYNC_SECONDS) return flush(o, 0, err);
+    return RC_OK;
+}
+
+/* A copy of s ("" for NULL), or NULL when out of memory. */
+static char *copy_string(const char *s)
+{
+    const char *p = str_or_empty(s);
+    char *c = malloc(strlen(p) + 1);
+    if (c) strcpy(c, p);
+    return c;
+}
+
+rc_status rc_output_event_values(rc_output *o, double t, const char *kind, const char *element,
+                                 const double values[3], rc_error *err)
+{
+    if (o->broken) RC_RAISE(err, RC_EIO, "%s: an earlier write failed", o->path);
+    const size_t i = o->nevbuf;
+    char *k = copy_string(kind), *e = copy_string(element);
+    if (!k || !e) {
+        free(k);
+        free(e);
+        RC_RAISE(err, RC_ENOMEM, "output: out of memory for event row %zu", o->nevent + i);
+    }
+    o->ev_str[0][i] = k;
+    o->ev_str[1][i] = e;
+    o->ev_num[i] = t;
+    for (int c = 0; c < 3; c++) o->ev_num[(c + 1) * RC_OUT_BLOCK_EVENTS + i] = values ? values[c] : NAN;
+    o->nevbuf++;
+    if (o->nevbuf == RC_OUT_BLOCK_EVENTS) return flush(o, 0, err);
+    return RC_OK;
+}
+
+rc_status rc_output_event(rc_output *o, double t, const char *kind, const char *element,
+                          rc_error *err)
+{
+    return rc_output_event_values(o, t, kind, element, NULL, err);
+}
+
+/* Statistics and completion attributes (in define mode). */
+static rc_status write_final(rc_output *o, const rc_stats *st, int complete, const char *reason,
+                             rc_error *err)
+{
+    rc_status rc = RC_OK;
+    if (st) {
+        rc = put_int64(o, "stats_steps", st->steps, err);
+        if (rc == RC_OK) rc = put_int64(o, "stats_rhs_evals", st->rhs_evals, err);
+        if (rc == RC_OK) rc = put_int64(o, "stats_jac_evals", st->jac_evals, err);
+        if (rc == RC_OK) rc = put_int64(o, "stats_lin_setups", st->lin_setups, err);
+        if (rc == RC_OK) rc = put_int64(o, "stats_nonlin_iters", st->nonlin_iters, err);
+        if (rc == RC_OK) rc = put_int64(o, "stats_nonlin_fails", st->nonlin_fails, err);
+        if (rc == RC_OK) rc = put_int64(o, "stats_err_test_fails", st->err_test_fails, err);
+        if (rc == RC_OK) rc = put_int64(o, "stats_root_evals", st->root_evals, err);
+        if (rc == RC_OK) rc = put_int64(o, "stats_events", st->events, err);
+        if (rc == RC_OK) rc = put_int64(o, "stats_reinits", st->reinits, err);
+        if (rc == RC_OK) rc = put_double(o, "stats_t_end", st->t_end, err);
+        if (rc == RC_OK) rc = put_double(o, "stats_wall_time", st->wall_time, err);
+        if (rc == RC_OK) rc = put_double(o, "energy_balance_residual", st->energy_residual, err);
+    }
+    char status[2200]; /* "incomplete: " + an rc_error message */
+    if (complete)
+        snprintf(status, sizeof status, "complete");
+    else
+        snprintf(status, sizeof status, "incomplete: %s",
+                 reason && *reason ? reason : "no reason given");
+    if (rc == RC_OK) rc = put_text(o, NC_GLOBAL, "complete", complete ? "yes" : "no", err);
+    if (rc == RC_OK) rc = put_text(o, NC_GLOBAL, "status", status, err);
+    return rc;
+}
+
+rc_status rc_output_close(rc_output *o, const rc_stats *st, int complete, const char *reason,
+                          rc_error *err)
+{
+    if (!o) return RC_OK;
+    /* the buffered records, then the final attributes; the file is closed
+     * and freed whatever happens */
+    rc_status rc = flush(o, 0, err);
+    /* after a failed write, the attributes say so (first error reported) */
+    rc_error later;
+    rc_error *e = rc == RC_OK ? err : &later;
+    const int ok = rc == RC_OK;
+    rc_status rc2 = RC_OK;
+    int s = nc_redef(o->ncid);
+    if (s != NC_NOERR) rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "entering define mode");
+    if (rc2 == RC_OK) rc2 = write_final(o, st, complete && ok && !o->broken, ok ? reason : err->msg, e);
+    if (rc2 == RC_OK && (s = nc_enddef(o->ncid)) != NC_NOERR)
+        rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "ending definitions");
+    s = nc_close(o->ncid);
+    if (s != NC_NOERR && rc2 == RC_OK) rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "closing the file");
+    if (rc == RC_OK) rc = rc2;
+    output_free(o);
+    return rc;
+}

@@ -1,0 +1,796 @@
+/*
+ * CVODE backend: BDF + Newton + KLU on the fixed sparse pattern, with
+ * rootfinding for the events. The only engine file that includes SUNDIALS.
+ *
+ * Loop: integrate to the next output time; at a root, flip the modes
+ * (events.c), write a record, and restart the integrator only when the
+ * right-hand side jumps by more than the error control tolerates over the
+ * current step (a contact that opens at zero force, or closes without
+ * damping, is continuous: no restart). Quaternion norms are kept by CVODE's
+ * projection (CVodeSetProjFn).
+ */
+#include <cvode/cvode.h>
+#include <cvode/cvode_proj.h>
+#include <float.h>
+#include <math.h>
+#include <nvector/nvector_serial.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sunlinsol/sunlinsol_klu.h>
+#include <sunmatrix/sunmatrix_sparse.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "model/coupling.h"
+#include "base/error.h"
+#include "engine/events.h"
+#include "model/model.h"
+#include "model/imposed.h"
+#include "output/output.h"
+#include "model/power.h"
+
+/* A jump in ydot whose effect over one step, relative to the error weight,
+ * exceeds this fraction triggers a restart after an event [-]. */
+#define RC_REINIT_JUMP 0.1
+/* Event accumulation (Zeno): more than RC_ZENO_MAX consecutive events of one
+ * element, each within RC_ZENO_REL * max(t, dtout) of the previous, end the
+ * run with a message instead of stalling [-]. */
+#define RC_ZENO_MAX 200
+#define RC_ZENO_REL 1e-7
+/* Events kept per root return (more are applied but not itemised). */
+#define RC_MAX_EV 64
+
+typedef struct run_ctx {
+    const rc_model *m;
+    rc_data *d;
+    double *jsave; /* [nnz] the Jacobian values of the last evaluation */
+} run_ctx;
+
+/* ---- CVODE callbacks ----------------------------------------------- */
+static int cb_rhs(realtype t, N_Vector y, N_Vector ydot, void *ud)
+{
+    run_ctx *c = ud;
+    return rc_assemble_rhs(c->m, c->d, t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+}
+
+/* The Newton matrix I - gamma J formed in place (CVodeSetLinSysFn): J is
+ * evaluated into jsave only when CVODE asks for a new one (jok false), and
+ * A is written in one pass over the fixed pattern, instead of CVODE's copy,
+ * zero and scale-add of the whole sparse matrix at every setup. */
+static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleantype jok, booleantype *jcur,
+                     realtype gamma, void *ud, N_Vector t1, N_Vector t2, N_Vector t3)
+{
+    run_ctx *c = ud;
+    const rc_model *m = c->m;
+    (void)fy;
+    (void)t1;
+    (void)t2;
+    (void)t3;
+    if (!jok) {
+        int st = rc_assemble_jac(m, c->d, t, N_VGetArrayPointer(y), c->jsave);
+        if (st) return st;
+        *jcur = SUNTRUE;
+    } else {
+        *jcur = SUNFALSE;
+    }
+    sunindextype *cp = SUNSparseMatrix_IndexPointers(A), *ri = SUNSparseMatrix_IndexValues(A);
+    for (int k = 0; k <= m->ny; k++) cp[k] = (sunindextype)m->jac_colptr[k];
+    for (int64_t k = 0; k < m->nnz; k++) ri[k] = (sunindextype)m->jac_rowind[k];
+    double *a = SUNSparseMatrix_Data(A);
+    for (int64_t k = 0; k < m->nnz; k++) a[k] = -gamma * c->jsave[k];
+    for (int r = 0; r < m->ny; r++) a[m->jac_diag[r]] += 1.0;
+    return 0;
+}
+
+static int cb_root(realtype t, N_Vector y, realtype *g, void *ud)
+{
+    run_ctx *c = ud;
+    c->d->n_root++;
+    rc_assemble_roots(c->m, c->d, t, N_VGetArrayPointer(y), g);
+    return 0;
+}
+
+/* Error weights with an absolute part only where the model asks for it
+ * (model.h ewt_rel): positions and rotations under derived tolerances are
+ * weighed against the contact scales, not against centre coordinates; a
+ * floor of 64 ulps of the value keeps a far-away coordinate testable. */
+static int cb_ewt(N_Vector yv, N_Vector wv, void *ud)
+{
+    const rc_model *m = ((run_ctx *)ud)->m;
+    const double *y = N_VGetArrayPointer(yv);
+    double *w = N_VGetArrayPointer(wv);
+    for (int k = 0; k < m->ny; k++) {
+        const double ay = fabs(y[k]);
+        double s = m->atol[k] + (m->ewt_rel[k] ? m->rtol * ay : 0.0);
+        if (!m->ewt_rel[k]) s = fmax(s, 64.0 * DBL_EPSILON * ay);
+        if (!(s > 0)) return -1;
+        w[k] = 1.0 / s;
+    }
+    return 0;
+}
+
+/* Projection onto unit quaternions; the error estimate loses its radial part. */
+static int cb_proj(realtype t, N_Vector ycur, N_Vector corr, realtype eps, N_Vector err, void *ud)
+{
+    run_ctx *c = ud;
+    const rc_model *m = c->m;
+    double *y = N_VGetArrayPointer(ycur), *cr = N_VGetArrayPointer(corr);
+    double *e = err ? N_VGetArrayPointer(err) : NULL;
+    N_VConst(0.0, corr);
+    for (int b = 0; b < m->nbody; b++) {
+        if (m->body_yadr[b] < 0) continue;
+        const double *q = y + m->body_yadr[b] + 3;
+        double nq = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        for (int k = 0; k < 4; k++) cr[m->body_yadr[b] + 3 + k] = q[k] / nq - q[k];
+        if (e) {
+            double *eq = e + m->body_yadr[b] + 3, dot = 0;
+            for (int k = 0; k < 4; k++) dot += eq[k] * q[k] / nq;
+            for (int k = 0; k < 4; k++) eq[k] -= dot * q[k] / nq;
+        }
+    }
+    return 0;
+}
+
+/* ---- helpers ----------------------------------------------------------- */
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Time breakpoints: instants where the right-hand side jumps by time alone
+ * (the end of an imposed velocity, /IMPVEL Tstop), inside (0, tend), sorted,
+ * distinct. CVODE is stopped exactly there (CVodeSetStopTime) and restarted.
+ * Returns the count; *bp is allocated (free it). */
+static int time_breakpoints(const rc_model *m, double tend, double **bp)
+{
+    const rc_imposed *p = m->imp;
+    int n = 0, cap = p ? p->nt + p->nr : 0;
+    *bp = malloc(((size_t)cap + 1) * sizeof(double));
+    if (!*bp) return -1;
+    for (int k = 0; p && k < p->nt + p->nr; k++) {
+        double ts = k < p->nt ? p->ttstop[k] : p->rtstop[k - p->nt];
+        if (ts > 0 && ts < tend) (*bp)[n++] = ts;
+    }
+    qsort(*bp, (size_t)n, sizeof(double), cmp_double);
+    int u = 0;
+    for (int k = 0; k < n; k++)
+        if (u == 0 || (*bp)[k] > (*bp)[u - 1]) (*bp)[u++] = (*bp)[k];
+    return u;
+}
+
+/* Only the crossing that changes a mode is a root (docs/theory.md 5). */
+static void root_directions(const rc_model *m, const rc_data *d, int *dir)
+{
+    for (int i = 0; i < m->ninter; i++) {
+        int *r = dir + RC_ROOTS_PER_INTER * i;
+        const int mode = d->inter_mode[i], br = d->inter_branch[i];
+        r[RC_ROOT_TSTART] = 1;
+        r[RC_ROOT_TSTOP] = 1;
+        r[RC_ROOT_ZONE] = mode == RC_MODE_OPEN ? 1 : -1;         /* enter / leave */
+        r[RC_ROOT_FORCE] = mode == RC_MODE_RELEASED ? 1 : -1;    /* re-close / release */
+        r[RC_ROOT_HYST_A] = br == RC_BR_UNLOAD ? 1 : -1;          /* reversal, or F_h meets F_L */
+        r[RC_ROOT_HYST_B] = -1;                                   /* F_h meets F_U */
+        r[RC_ROOT_TRK_A] = 1;                                     /* bodies approach again */
+        r[RC_ROOT_TRK_B] = -1;                                    /* offset used up */
+        r[RC_ROOT_SLIP] = 1;                                      /* limit reached / sliding stops */
+        r[RC_ROOT_REV] = -1;                                      /* saturated sliding reverses */
+    }
+}
+
+static int set_root_directions(const rc_model *m, const rc_data *d, void *cv, int *dir)
+{
+    if (m->ninter == 0) return CV_SUCCESS;
+    root_directions(m, d, dir);
+    return CVodeSetRootDirection(cv, dir);
+}
+
+/* Append event `ev` at (t, y) to the events table with its interface's
+ * penetration P [m], approach speed dP/dt [m/s] and normal force [N], in the
+ * mode after the event. */
+static rc_status write_event(const rc_model *m, const rc_data *d, rc_output *o, double t, const double *y,
+                             const rc_event *ev, rc_error *err)
+{
+    const int i = ev->inter;
+    rc_inter_report r;
+    rc_inter_report_eval(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y, &r);
+    const double v[3] = {r.p, r.vn, d->inter_mode[i] == RC_MODE_CLOSED && r.fn > 0 ? r.fn : 0.0};
+    return rc_output_event_values(o, t, ev->kind, m->inter_name[i], v, err);
+}
+
+/* Contacts at zero penetration or zero force, decided by the state after
+ * the start and after every event (events.c, rc_modes_touch): the rate of
+ * the state in the current modes is computed first, for the force rates.
+ * Writes the events; returns their number (*jumped is set when history
+ * states were reset). */
+static int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double *f, rc_output *out,
+                            long *nevents, int *jumped, rc_status *st, rc_error *err)
+{
+    int total = 0;
+    *st = RC_OK;
+    if (m->ninter == 0) return 0;
+    /* a touching contact closed at zero force changes no rate, so one more
+     * round settles what the first one enabled */
+    for (int round = 0; round < 2; round++) {
+        if (rc_assemble_rhs(m, d, t, y, f)) break;
+        rc_event ev[RC_MAX_EV];
+        int jmp = 0, nev = rc_modes_touch(m, d, t, y, f, ev, RC_MAX_EV, &jmp);
+        *jumped |= jmp;
+        total += nev;
+        *nevents += nev;
+        for (int k = 0; k < nev && k < RC_MAX_EV && out; k++)
+            if ((*st = write_event(m, d, out, t, y, &ev[k], err))) return total;
+        if (nev == 0) break;
+    }
+    return total;
+}
+
+/* The roots reported at t are all exactly zero there and were positive (or
+ * negative) at the start of the step: a function that reached zero and stayed
+ * flat (CVODE reports such a root at the step's end, not where it got there).
+ * Bisect on CVODE's interpolant over [t_n - h_u, t] for the first time all of
+ * them are zero; on success the state there is in yref, the time in
+ * *refined_time, and the number of bisections is returned (0: nothing to do). */
+static int refine_flat_roots(const rc_model *m, rc_data *d, void *cv, double t, const int *roots, double *g,
+                             N_Vector yref, double *refined_time)
+{
+    const int nr = RC_ROOTS_PER_INTER * m->ninter;
+    double tn, hu;
+    if (nr == 0 || CVodeGetCurrentTime(cv, &tn) != CV_SUCCESS || CVodeGetLastStep(cv, &hu) != CV_SUCCESS) return 0;
+    double *y = N_VGetArrayPointer(yref);
+    if (CVodeGetDky(cv, t, 0, yref) != CV_SUCCESS) return 0;
+    rc_assemble_roots(m, d, t, y, g);
+    for (int k = 0; k < nr; k++)
+        if (roots[k] != 0 && g[k] != 0.0) return 0; /* a true crossing: located by CVODE */
+    double lo = fmax(tn - hu, 0.0), hi = t;
+    if (CVodeGetDky(cv, lo, 0, yref) != CV_SUCCESS) return 0;
+    rc_assemble_roots(m, d, lo, y, g);
+    for (int k = 0; k < nr; k++)
+        if (roots[k] != 0 && g[k] == 0.0) return 0; /* already zero at the start */
+    int it = 0;
+    for (; it < 200 && hi - lo > 4.0 * DBL_EPSILON * fmax(fabs(hi), 1.0); it++) {
+        const double mid = 0.5 * (lo + hi);
+        if (CVodeGetDky(cv, mid, 0, yref) != CV_SUCCESS) return 0;
+        rc_assemble_roots(m, d, mid, y, g);
+        int all = 1;
+        for (int k = 0; k < nr; k++)
+            if (roots[k] != 0 && g[k] != 0.0) all = 0;
+        if (all) hi = mid;
+        else lo = mid;
+    }
+    if (hi >= t || CVodeGetDky(cv, hi, 0, yref) != CV_SUCCESS) return 0;
+    *refined_time = hi;
+    return it > 0 ? it : 1;
+}
+
+/* A root function exactly zero at the event state (flat to rounding, e.g. a
+ * penetration of two slowly separating bodies) makes CVODE stop with "close
+ * roots" on the next call; after a restart CVODE instead deactivates it until
+ * it moves away from zero. */
+static int root_on_zero(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
+{
+    rc_assemble_roots(m, d, t, y, g);
+    for (int k = 0; k < RC_ROOTS_PER_INTER * m->ninter; k++)
+        if (g[k] == 0.0) return 1;
+    return 0;
+}
+
+static double wall_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Add CVODE's counters to the totals (they restart at every ReInit). */
+static void add_stats(void *cv, rc_stats *s)
+{
+    long v;
+    if (CVodeGetNumSteps(cv, &v) == CV_SUCCESS) s->steps += v;
+    if (CVodeGetNumRhsEvals(cv, &v) == CV_SUCCESS) s->rhs_evals += v;
+    if (CVodeGetNumJacEvals(cv, &v) == CV_SUCCESS) s->jac_evals += v;
+    if (CVodeGetNumLinSolvSetups(cv, &v) == CV_SUCCESS) s->lin_setups += v;
+    if (CVodeGetNumNonlinSolvIters(cv, &v) == CV_SUCCESS) s->nonlin_iters += v;
+    if (CVodeGetNumNonlinSolvConvFails(cv, &v) == CV_SUCCESS) s->nonlin_fails += v;
+    if (CVodeGetNumErrTestFails(cv, &v) == CV_SUCCESS) s->err_test_fails += v;
+    if (CVodeGetNumGEvals(cv, &v) == CV_SUCCESS) s->root_evals += v;
+}
+
+/* Output buffers for one record. */
+typedef struct frame_buf {
+    double *pos, *quat, *vel, *omega, *pen, *fload, *fdamp, *fn, *point, *normal, *ffric, *vslip;
+    int *mode, *slip;
+    double energy[RC_NENERGY];
+    double *cpl; /* [9 ncoupling] coupling values (rc_cpl_frame) */
+} frame_buf;
+
+static void frame_free(frame_buf *f)
+{
+    void *p[] = {f->pos, f->quat, f->vel, f->omega, f->pen, f->fload, f->fdamp, f->fn, f->point, f->normal, f->mode,
+                 f->cpl, f->ffric, f->vslip, f->slip};
+    for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
+}
+
+static int frame_alloc(const rc_model *m, frame_buf *f)
+{
+    memset(f, 0, sizeof *f);
+    size_t nb = (size_t)m->nbody + 1, ni = (size_t)m->ninter + 1;
+    f->pos = malloc(3 * nb * sizeof(double));
+    f->quat = malloc(4 * nb * sizeof(double));
+    f->vel = malloc(3 * nb * sizeof(double));
+    f->omega = malloc(3 * nb * sizeof(double));
+    f->pen = malloc(ni * sizeof(double));
+    f->fload = malloc(ni * sizeof(double));
+    f->fdamp = malloc(ni * sizeof(double));
+    f->fn = malloc(ni * sizeof(double));
+    f->point = malloc(3 * ni * sizeof(double));
+    f->normal = malloc(3 * ni * sizeof(double));
+    f->mode = malloc(ni * sizeof(int));
+    f->ffric = malloc(3 * ni * sizeof(double));
+    f->vslip = malloc(ni * sizeof(double));
+    f->slip = malloc(ni * sizeof(int));
+    f->cpl = malloc((9 * (size_t)m->cpl->n + 1) * sizeof(double));
+    return f->pos && f->quat && f->vel && f->omega && f->pen && f->fload && f->fdamp && f->fn && f->point &&
+           f->normal && f->mode && f->cpl && f->ffric && f->vslip && f->slip;
+}
+
+/* Fill and write one record at (t, y). */
+static rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_buf *f, double t,
+                             const double *y, int at_event, rc_error *err)
+{
+    for (int b = 0; b < m->nbody; b++) {
+        const double *s = rc_body_state(m, b, y);
+        memcpy(f->pos + 3 * b, s, 3 * sizeof(double));
+        memcpy(f->quat + 4 * b, s + 3, 4 * sizeof(double));
+        memcpy(f->vel + 3 * b, s + 7, 3 * sizeof(double));
+        memcpy(f->omega + 3 * b, s + 10, 3 * sizeof(double));
+    }
+    for (int i = 0; i < m->ninter; i++) {
+        rc_inter_report r;
+        int mode = d->inter_mode[i];
+        rc_inter_report_eval(m, i, mode, d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y, &r);
+        const int acts = mode == RC_MODE_CLOSED;
+        f->pen[i] = r.p;
+        f->fload[i] = acts ? r.fload : 0.0;
+        f->fdamp[i] = acts ? r.fdamp : 0.0;
+        f->fn[i] = acts && r.fn > 0 ? r.fn : 0.0;
+        memcpy(f->point + 3 * i, r.point, 3 * sizeof(double));
+        memcpy(f->normal + 3 * i, r.normal, 3 * sizeof(double));
+        for (int k = 0; k < 3; k++) f->ffric[3 * i + k] = acts ? r.ft[k] : 0.0;
+        f->vslip[i] = acts ? r.vslip : 0.0;
+        f->slip[i] = acts && d->inter_slip[i];
+        f->mode[i] = mode == RC_MODE_CLOSED     ? RC_OUT_MODE_CLOSED
+                     : mode == RC_MODE_OPEN     ? RC_OUT_MODE_OPEN
+                     : mode == RC_MODE_RELEASED ? RC_OUT_MODE_RELEASED
+                                                : RC_OUT_MODE_INACTIVE;
+    }
+    rc_energy(m, d, t, y, f->energy);
+    if (!o) return RC_OK;
+    const int nc = m->cpl->n;
+    rc_cpl_frame(m, d, t, y, f->cpl);
+    rc_frame fr = {.t = t, .at_event = at_event, .body_pos = f->pos, .body_quat = f->quat, .body_vel = f->vel,
+                   .body_omega = f->omega, .inter_pen = f->pen, .inter_fload = f->fload, .inter_fdamp = f->fdamp,
+                   .inter_fnormal = f->fn, .inter_point = f->point, .inter_normal = f->normal,
+                   .inter_mode = f->mode, .inter_ffric = f->ffric, .inter_vslip = f->vslip, .inter_slip = f->slip,
+                   .energy = f->energy, .cpl_force = f->cpl, .cpl_length = f->cpl + nc, .cpl_f1 = f->cpl + 2 * nc,
+                   .cpl_f2 = f->cpl + 5 * nc, .cpl_lowest = f->cpl + 8 * nc};
+    return rc_output_frame(o, &fr, err);
+}
+
+static const char *const energy_name[RC_NENERGY] = {
+    "energy_kinetic",        "energy_potential",  "energy_contact_work", "energy_damping", "energy_friction_work",
+    "energy_contact_stored", "energy_hysteresis", "energy_friction",     "energy_coupling_elastic",
+    "energy_coupling_damping", "energy_catenary", "energy_imposed", "energy_total"};
+static const char *const energy_long[RC_NENERGY] = {
+    "kinetic energy of the free bodies",
+    "gravitational potential energy",
+    "work done on the contacts by the elastic(-plastic) normal forces",
+    "energy dissipated by the contact damping",
+    "work done on the contacts by the friction forces",
+    "elastic energy stored in the contacts, normal and tangential (recoverable by unloading)",
+    "energy dissipated by contact hysteresis (normal work - normal stored)",
+    "energy dissipated by friction (friction work - tangential stored)",
+    "elastic energy stored in the spring-damper couplings",
+    "energy dissipated by the coupling dampers",
+    "elastic and gravitational energy of the catenary lines (work done by their ends)",
+    "minus the work done on the bodies by the imposed velocities (/IMPVEL reactions)",
+    "kinetic + potential + contact work + damping + friction work + couplings + imposed (constant in exact "
+    "arithmetic)"};
+
+static rc_status open_output(const rc_model *m, const char *path, rc_output **o, rc_error *err)
+{
+    *o = NULL;
+    if (!path) return RC_OK;
+    const char **types = malloc(((size_t)m->ninter + 1) * sizeof(char *));
+    if (!types) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    for (int i = 0; i < m->ninter; i++) types[i] = m->inter_law[i] == RC_LAW_POWER ? "POWER" : "TYPE6";
+    rc_output_meta meta = {m->title, m->case_path, m->checksum, m->unit_mass, m->unit_length, m->unit_time,
+                           "CVODE BDF, Newton, KLU sparse direct, rootfinding", m->rtol, m->atol_pos,
+                           m->atol_quat, m->atol_vel, m->atol_omega, m->atol_energy, m->nbody, m->body_id,
+                           m->body_fixed, m->ninter, m->inter_id, types, RC_NENERGY, energy_name, energy_long,
+                           m->cpl->n, m->cpl->id, m->cpl->type, NULL};
+    char evrec[160];
+    const int full = rc_event_records(m);
+    if (m->ev_state == 0)
+        snprintf(evrec, sizeof evrec, "%s (/RUN Ev_state 0: %d bodies, %s %d)",
+                 full ? "full-state record at every event" : "events table only", m->nbody,
+                 full ? "at most" : "more than", RC_EVREC_MAX_BODIES);
+    else
+        snprintf(evrec, sizeof evrec, "%s (/RUN Ev_state %d)",
+                 full ? "full-state record at every event" : "events table only", m->ev_state);
+    meta.event_records = evrec;
+    rc_status st = rc_output_open(o, path, &meta, err);
+    free(types);
+    return st;
+}
+
+/* Must the integrator restart after a mode change at troot? CVODE has
+ * already stepped to tn >= troot with the old modes; continuing is right only
+ * if the old and new right-hand sides agree, within the error weights, over
+ * [troot, tn] and over the next step h: compare them at troot and at tn.
+ * old_mode is the mode array before the flip; d->inter_mode after it. */
+static int needs_restart(const rc_model *m, rc_data *d, void *cv, int *old_mode, int *old_branch,
+                         int *old_track, int *old_slip, double troot, const double *yroot, N_Vector ytn, N_Vector f0,
+                         N_Vector f1)
+{
+    double h = 0, tn = troot;
+    CVodeGetCurrentStep(cv, &h);
+    CVodeGetCurrentTime(cv, &tn);
+    if (CVodeGetDky(cv, tn, 0, ytn) != CV_SUCCESS) return 1;
+    const double *y_at[2] = {yroot, N_VGetArrayPointer(ytn)};
+    const double t_at[2] = {troot, tn}, span[2] = {h, (tn - troot) + h};
+    double *a = N_VGetArrayPointer(f0), *b = N_VGetArrayPointer(f1);
+    for (int s = 0; s < 2; s++) {
+        /* old modes, then new modes, at the same state */
+        int *new_mode = d->inter_mode, *new_branch = d->inter_branch, *new_track = d->inter_track;
+        int *new_slip = d->inter_slip;
+        d->inter_mode = old_mode;
+        d->inter_branch = old_branch;
+        d->inter_track = old_track;
+        d->inter_slip = old_slip;
+        int bad = rc_assemble_rhs(m, d, t_at[s], y_at[s], a);
+        d->inter_mode = new_mode;
+        d->inter_branch = new_branch;
+        d->inter_track = new_track;
+        d->inter_slip = new_slip;
+        bad |= rc_assemble_rhs(m, d, t_at[s], y_at[s], b);
+        if (bad) return 1;
+        for (int k = 0; k < m->ny; k++) {
+            double w = m->rtol * fabs(y_at[s][k]) + m->atol[k];
+            if (fabs(b[k] - a[k]) * span[s] > RC_REINIT_JUMP * w) return 1;
+        }
+    }
+    return 0;
+}
+
+static void progress(const rc_model *m, const rc_stats *s, double t, long steps, double t0)
+{
+    fprintf(stderr, "\r  t = %-10.4g s (%5.1f%%)  steps %-9ld events %-7ld wall %.1f s ", t, 100.0 * t / m->tend,
+            steps, s->events, wall_now() - t0);
+}
+
+#define CVCHECK(call, what)                                                            \
+    do {                                                                               \
+        int flag_ = (call);                                                            \
+        if (flag_ < 0) {                                                               \
+            st = RC_SET(err, RC_ESOLVER, "CVODE setup failed in %s: %s", what,         \
+                        CVodeGetReturnFlagName(flag_));                                \
+            goto done;                                                                 \
+        }                                                                              \
+    } while (0)
+
+rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, rc_error *err)
+{
+    rc_status st = RC_OK;
+    double t = 0.0; /* time reached [s] */
+    rc_error local_err;
+    if (!err) err = &local_err;
+    rc_error_clear(err);
+    rc_stats s;
+    memset(&s, 0, sizeof s);
+    SUNContext ctx = NULL;
+    N_Vector y = NULL, av = NULL, f0 = NULL, f1 = NULL, ytn = NULL;
+    int *old_mode = NULL, *old_branch = NULL, *old_track = NULL, *old_slip = NULL, *rootdir = NULL;
+    double *gbuf = NULL, *g2buf = NULL, *ylook = NULL, *flook = NULL, *bp = NULL, *zeno_t = NULL;
+    int *zeno_n = NULL;
+    double *jsave = NULL; /* Jacobian values (run_ctx.jsave) */
+    int nbp = 0, ibp = 0;
+    SUNMatrix A = NULL;
+    SUNLinearSolver LS = NULL;
+    void *cv = NULL;
+    rc_output *out = NULL;
+    frame_buf fb;
+    memset(&fb, 0, sizeof fb);
+    int *roots = NULL;
+    const char *fail_reason = NULL;
+    char reason[1024] = "";
+    rc_data *d = rc_data_new(m);
+    const double tend = opt && opt->t_end_override > 0 ? opt->t_end_override : m->tend;
+    const int show = opt && opt->progress && isatty(2);
+    const int evrec = rc_event_records(m); /* full-state records at events */
+    double wall0 = wall_now(), last_progress = wall0;
+
+    if (!d || !frame_alloc(m, &fb)) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory");
+        goto done;
+    }
+    run_ctx rc = {m, d, NULL};
+    if (SUNContext_Create(NULL, &ctx)) {
+        st = RC_SET(err, RC_ESOLVER, "SUNContext_Create failed");
+        goto done;
+    }
+    y = N_VNew_Serial(m->ny, ctx);
+    av = N_VNew_Serial(m->ny, ctx);
+    f0 = N_VNew_Serial(m->ny, ctx);
+    f1 = N_VNew_Serial(m->ny, ctx);
+    ytn = N_VNew_Serial(m->ny, ctx);
+    old_mode = calloc((size_t)m->ninter + 1, sizeof(int));
+    old_branch = calloc((size_t)m->ninter + 1, sizeof(int));
+    old_track = calloc((size_t)m->ninter + 1, sizeof(int));
+    old_slip = calloc((size_t)m->ninter + 1, sizeof(int));
+    rootdir = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(int));
+    gbuf = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(double));
+    zeno_t = calloc((size_t)m->ninter + 1, sizeof(double));
+    zeno_n = calloc((size_t)m->ninter + 1, sizeof(int));
+    g2buf = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(double));
+    ylook = calloc((size_t)m->ny, sizeof(double));
+    flook = calloc((size_t)m->ny, sizeof(double));
+    A = SUNSparseMatrix(m->ny, m->ny, m->nnz, CSC_MAT, ctx);
+    roots = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(int));
+    if (!y || !av || !f0 || !f1 || !ytn || !old_mode || !old_branch || !old_track || !old_slip || !rootdir || !gbuf || !A ||
+        !roots || !g2buf || !ylook || !flook || !zeno_t || !zeno_n) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory for the solver");
+        goto done;
+    }
+    LS = SUNLinSol_KLU(y, A, ctx);
+    if (!LS) {
+        st = RC_SET(err, RC_ESOLVER, "SUNLinSol_KLU failed");
+        goto done;
+    }
+    /* initial state and modes */
+    double *yd = N_VGetArrayPointer(y);
+    rc_initial_state(m, yd);
+    memcpy(N_VGetArrayPointer(av), m->atol, (size_t)m->ny * sizeof(double));
+    rc_modes_init(m, d, t, yd);
+    if ((st = open_output(m, opt ? opt->output_path : NULL, &out, err))) goto done;
+    {
+        int jmp = 0;
+        resolve_touching(m, d, t, yd, flook, out, &s.events, &jmp, &st, err);
+        if (st) goto done;
+    }
+
+    cv = CVodeCreate(CV_BDF, ctx);
+    if (!cv) {
+        st = RC_SET(err, RC_ESOLVER, "CVodeCreate failed");
+        goto done;
+    }
+    CVCHECK(CVodeInit(cv, cb_rhs, t, y), "CVodeInit");
+    CVCHECK(CVodeSetUserData(cv, &rc), "CVodeSetUserData");
+    if (m->ewt_rel) CVCHECK(CVodeWFtolerances(cv, cb_ewt), "CVodeWFtolerances");
+    else CVCHECK(CVodeSVtolerances(cv, m->rtol, av), "CVodeSVtolerances");
+    CVCHECK(CVodeSetLinearSolver(cv, LS, A), "CVodeSetLinearSolver");
+    if (!(rc.jsave = jsave = calloc((size_t)m->nnz + 1, sizeof(double)))) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory for the Jacobian");
+        goto done;
+    }
+    CVCHECK(CVodeSetLinSysFn(cv, cb_linsys), "CVodeSetLinSysFn");
+    CVCHECK(CVodeSetMaxOrd(cv, m->max_order), "CVodeSetMaxOrd");
+    CVCHECK(CVodeSetMaxNumSteps(cv, m->max_steps), "CVodeSetMaxNumSteps");
+    CVCHECK(CVodeSetStabLimDet(cv, SUNTRUE), "CVodeSetStabLimDet");
+    if (m->hmax > 0) CVCHECK(CVodeSetMaxStep(cv, m->hmax), "CVodeSetMaxStep");
+    if (m->h0 > 0) CVCHECK(CVodeSetInitStep(cv, m->h0), "CVodeSetInitStep");
+    if (m->nfree > 0) CVCHECK(CVodeSetProjFn(cv, cb_proj), "CVodeSetProjFn");
+    if (m->ninter > 0) CVCHECK(CVodeRootInit(cv, RC_ROOTS_PER_INTER * m->ninter, cb_root), "CVodeRootInit");
+    CVCHECK(CVodeSetNoInactiveRootWarn(cv), "CVodeSetNoInactiveRootWarn");
+    CVCHECK(set_root_directions(m, d, cv, rootdir), "CVodeSetRootDirection");
+
+    /* time breakpoints: stop exactly there */
+    if ((nbp = time_breakpoints(m, tend, &bp)) < 0) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory");
+        goto done;
+    }
+    /* and never step past the end time (a single step may overshoot tout) */
+    CVCHECK(CVodeSetStopTime(cv, nbp > 0 ? bp[0] : tend), "CVodeSetStopTime");
+
+    double e0[RC_NENERGY];
+    rc_energy(m, d, t, yd, e0);
+    if ((st = write_frame(m, d, out, &fb, t, yd, 0, err))) goto done;
+
+    /* ---- main loop: output times and events ---- */
+    long nout = 1;
+    double tout = fmin(m->dtout, tend);
+    int fresh = 0; /* modes changed without a restart: the Jacobian is stale */
+    while (t < tend) {
+        /* after such a change, one internal step with a forced linear solver
+         * setup and a new Jacobian: a stale Jacobian of the old mode (a
+         * contact stiffness that is gone, a viscous friction term that
+         * saturated) can make Newton's first small correction pass the
+         * convergence test with a wrong solution */
+        const int one_step = fresh;
+        long nst_before = 0, nst_after = 0;
+        if (fresh) {
+            CVCHECK(CVodeSetLSetupFrequency(cv, 1), "CVodeSetLSetupFrequency");
+            CVCHECK(CVodeSetJacEvalFrequency(cv, 1), "CVodeSetJacEvalFrequency");
+            CVodeGetNumSteps(cv, &nst_before);
+        }
+        int flag = CVode(cv, tout, y, &t, one_step ? CV_ONE_STEP : CV_NORMAL);
+        /* right after a root return, a single-step call may only hand back
+         * the rest of the step already taken: keep the forced setup until a
+         * new step has been taken */
+        if (fresh && CVodeGetNumSteps(cv, &nst_after) == CV_SUCCESS && nst_after > nst_before) {
+            CVCHECK(CVodeSetLSetupFrequency(cv, 0), "CVodeSetLSetupFrequency");
+            CVCHECK(CVodeSetJacEvalFrequency(cv, 0), "CVodeSetJacEvalFrequency");
+            fresh = 0;
+        }
+        if (flag < 0) {
+            const char *cf = rc_cpl_failed(m, d);
+            snprintf(reason, sizeof reason, "CVODE failed at t = %.9g s: %s%s%s%s%s", t, CVodeGetReturnFlagName(flag),
+                     d->fail_inter >= 0 ? "; non-finite force in " : "",
+                     d->fail_inter >= 0 ? m->inter_name[d->fail_inter] : "",
+                     cf ? "; no force from " : "", cf ? cf : "");
+            fail_reason = reason;
+            st = RC_SET(err, RC_ESOLVER, "%s", reason);
+            break;
+        }
+        if (flag == CV_TSTOP_RETURN && ibp < nbp && t >= bp[ibp]) {
+            /* a time breakpoint: an imposed velocity ends; restart there */
+            s.events++;
+            if (out && (st = rc_output_event(out, t, "impvel_stop", "/IMPVEL", err))) goto done;
+            add_stats(cv, &s);
+            CVCHECK(CVodeReInit(cv, t, y), "CVodeReInit");
+            s.reinits++;
+            while (ibp < nbp && bp[ibp] <= t) ibp++;
+            /* the next breakpoint, or the end time */
+            CVCHECK(CVodeSetStopTime(cv, ibp < nbp ? bp[ibp] : tend), "CVodeSetStopTime");
+            /* a full-state record at the event (rc_event_records), or the
+             * output record when the event falls on an output time */
+            const int on_out = tout - t <= 1e-12 * fmax(fabs(t), m->dtout);
+            if ((evrec || on_out) && (st = write_frame(m, d, out, &fb, t, yd, evrec, err))) goto done;
+            if (on_out) {
+                nout++;
+                tout = fmin(nout * m->dtout, tend);
+            }
+            continue;
+        }
+        if (flag == CV_ROOT_RETURN) {
+            /* flip modes; restart only when the right-hand side jumps */
+            CVCHECK(CVodeGetRootInfo(cv, roots), "CVodeGetRootInfo");
+            /* roots that land exactly on zero at the step's end (a law flat at
+             * zero: an unload curve reaching zero before P does) were not
+             * located: bisect on the interpolant for where they reached it */
+            double t_ref = t;
+            const int refined = refine_flat_roots(m, d, cv, t, roots, gbuf, ytn, &t_ref);
+            if (refined > 0) {
+                t = t_ref;
+                memcpy(yd, N_VGetArrayPointer(ytn), (size_t)m->ny * sizeof(double));
+            }
+            rc_event ev[RC_MAX_EV];
+            memcpy(old_mode, d->inter_mode, (size_t)m->ninter * sizeof(int));
+            memcpy(old_branch, d->inter_branch, (size_t)m->ninter * sizeof(int));
+            memcpy(old_track, d->inter_track, (size_t)m->ninter * sizeof(int));
+            memcpy(old_slip, d->inter_slip, (size_t)m->ninter * sizeof(int));
+            int jumped = 0;
+            int nev = rc_events_apply(m, d, t, yd, roots, ev, RC_MAX_EV, &jumped);
+            s.events += nev;
+            for (int k = 0; k < nev && k < RC_MAX_EV && out; k++)
+                if ((st = write_event(m, d, out, t, yd, &ev[k], err))) goto done;
+            /* event accumulation: report it rather than stall */
+            for (int k = 0; k < nev && k < RC_MAX_EV; k++) {
+                const int i = ev[k].inter;
+                zeno_n[i] = t - zeno_t[i] <= RC_ZENO_REL * fmax(fabs(t), m->dtout) ? zeno_n[i] + 1 : 0;
+                zeno_t[i] = t;
+                if (zeno_n[i] > RC_ZENO_MAX) {
+                    snprintf(reason, sizeof reason,
+                             "event accumulation (Zeno) at t = %.9g s in %s: more than %d events within %.2g s of "
+                             "each other (last: %s); the modes of this element switch without the state moving: "
+                             "tighter tolerances or a smoother law may help",
+                             t, m->inter_name[i], RC_ZENO_MAX, RC_ZENO_REL * fmax(fabs(t), m->dtout), ev[k].kind);
+                    fail_reason = reason;
+                    st = RC_SET(err, RC_ESOLVER, "%s", reason);
+                    goto done;
+                }
+            }
+            /* contacts left at zero penetration or zero force: by the state */
+            nev += resolve_touching(m, d, t, yd, flook, out, &s.events, &jumped, &st, err);
+            if (st) goto done;
+            if (nev > 0) CVCHECK(set_root_directions(m, d, cv, rootdir), "CVodeSetRootDirection");
+            if (refined > 0 || jumped || (nev > 0 && needs_restart(m, d, cv, old_mode, old_branch, old_track, old_slip, t, yd, ytn, f0, f1)) ||
+                root_on_zero(m, d, t, yd, gbuf)) {
+                add_stats(cv, &s);
+                CVCHECK(CVodeReInit(cv, t, y), "CVodeReInit");
+                s.reinits++;
+            } else if (nev > 0) {
+                fresh = 1;
+            }
+            /* an event on an output time stands for that output: a
+             * full-state record at the event (rc_event_records), or else the
+             * output record */
+            const int on_out = tout - t <= 1e-12 * fmax(fabs(t), m->dtout);
+            if (nev > 0 && (evrec || on_out) && (st = write_frame(m, d, out, &fb, t, yd, evrec, err))) goto done;
+            if (on_out) {
+                nout++;
+                tout = fmin(nout * m->dtout, tend);
+            }
+        } else if (one_step && t < tout) {
+            /* the single step ended before the output time: carry on */
+        } else {
+            /* output times reached (a single step may pass several) */
+            while (tout <= t) {
+                const double *yo = yd;
+                if (tout < t) {
+                    CVCHECK(CVodeGetDky(cv, tout, 0, ytn), "CVodeGetDky");
+                    yo = N_VGetArrayPointer(ytn);
+                }
+                if ((st = write_frame(m, d, out, &fb, tout, yo, 0, err))) goto done;
+                nout++;
+                const double next = fmin(nout * m->dtout, tend);
+                if (next <= tout) break;
+                tout = next;
+                if (tend - tout < 1e-12 * tend) tout = tend;
+            }
+        }
+        if (show && wall_now() - last_progress > 0.5) {
+            long nst = 0;
+            CVodeGetNumSteps(cv, &nst);
+            progress(m, &s, t, s.steps + nst, wall0);
+            last_progress = wall_now();
+        }
+    }
+    double e1[RC_NENERGY];
+    rc_energy(m, d, t, yd, e1);
+    s.energy_residual = e1[RC_E_TOTAL] - e0[RC_E_TOTAL];
+    s.t_end = t;
+    if (opt && opt->y_end) memcpy(opt->y_end, yd, (size_t)m->ny * sizeof(double));
+
+done:
+    if (cv) add_stats(cv, &s);
+    if (st != RC_OK) s.t_end = t; /* how far a failed run got */
+    s.wall_time = wall_now() - wall0;
+    if (show) fprintf(stderr, "\n");
+    if (out) {
+        rc_error e2;
+        rc_status st2 = rc_output_close(out, &s, st == RC_OK, fail_reason ? fail_reason : err->msg, &e2);
+        if (st == RC_OK && st2) {
+            st = st2;
+            *err = e2;
+        }
+    }
+    if (stats) *stats = s;
+    CVodeFree(&cv);
+    SUNLinSolFree(LS);
+    SUNMatDestroy(A);
+    N_VDestroy(y);
+    N_VDestroy(av);
+    N_VDestroy(f0);
+    N_VDestroy(f1);
+    N_VDestroy(ytn);
+    free(old_mode);
+    free(old_branch);
+    free(old_track);
+    free(old_slip);
+    free(rootdir);
+    free(gbuf);
+    free(zeno_t);
+    free(zeno_n);
+    free(bp);
+    free(g2buf);
+    free(ylook);
+    free(flook);
+    SUNContext_Free(&ctx);
+    free(roots);
+    frame_free(&fb);
+    rc_data_free(d);
+    free(jsave);
+    return st;
+}
+
+void rc_stats_print(const rc_stats *s, FILE *f)
+{
+    fprintf(f, "steps %ld, rhs %ld, jacobians %ld, lin. setups %ld, newton iters %ld, newton fails %ld, "
+               "error-test fails %ld, root evals %ld\n",
+            s->steps, s->rhs_evals, s->jac_evals, s->lin_setups, s->nonlin_iters, s->nonlin_fails,
+            s->err_test_fails, s->root_evals);
+    fprintf(f, "events %ld, restarts %ld, simulated %.6g s in %.3f s wall, energy balance residual %.3g J\n",
+            s->events, s->reinits, s->t_end, s->wall_time, s->energy_residual);
+}

@@ -12,7 +12,6 @@
 
 #include <string.h>
 
-#define RC_NF(arr) ((int)(sizeof(arr) / sizeof((arr)[0])))
 
 /* New coupling of the given kind, its header checked and its title read;
  * lines 2 and 3 (the attachment points) parsed. `nmin`, `nmax`: data lines. */

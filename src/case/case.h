@@ -1,7 +1,7 @@
 /*
  * The parsed case ("spec"): every card of the deck as read, with the
  * file:line of each card and of each data line, before any reference is
- * resolved. Filled by the case reader (case_reader.c, case_cards.c), read by
+ * resolved. Filled by the case reader (src/case: reader.c, cards.c, cards_*.c), read by
  * the compiler (compile.c). Nothing here runs physics.
  *
  * Conventions
@@ -71,7 +71,7 @@ typedef struct rc_case_rbody {
 /* /SURF/PLANE/surf_ID and /SURF/ELLIPS/surf_ID. */
 typedef enum {
     RC_CASE_SURF_PLANE = 1, RC_CASE_SURF_ELLIPS = 2,
-    RC_CASE_SURF_CYL = 3, RC_CASE_SURF_BOX = 4 /* ricochet cards (case_cards_power.c) */
+    RC_CASE_SURF_CYL = 3, RC_CASE_SURF_BOX = 4 /* ricochet cards (cards_surfaces.c) */
 } rc_case_surf_kind;
 
 typedef struct rc_case_surf {

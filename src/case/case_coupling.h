@@ -1,6 +1,6 @@
 /*
  * Parsed /COUPLING cards (ricochet cards, docs/case-format.md): read by
- * case_cards_coupling.c, compiled by coupling_compile.c. Part of rc_case
+ * cards_couplings.c, compiled by model/coupling.c. Part of rc_case
  * (case.h: ncoupling, coupling).
  */
 #ifndef RC_CASE_COUPLING_H

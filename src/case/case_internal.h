@@ -1,7 +1,8 @@
 /*
- * Private interface of the case reader, shared by case_reader.c (files,
- * lines, blocks, fields, numbers, errors) and case_cards.c (one function per
- * card). Nothing outside these two files includes it.
+ * Private interface of the case stage, shared by reader.c (files, lines,
+ * blocks), fields.c (fields, numbers, errors, card headers), cards.c (the
+ * dispatch) and cards_*.c (one function per card, one file per family).
+ * Nothing outside src/case includes it.
  *
  * Reading happens in three passes:
  *  1. lex: every file (main + #include) is read whole, split into lines,
@@ -133,7 +134,7 @@ typedef struct rc_field {
 #define RC_F_STR(nm, buf, w) \
     { .name = (nm), .width = (w), .type = RC_FT_STR, .out = (buf), .cap = sizeof(buf) }
 
-/* ---- Reader services (case_reader.c) ---------------------------------- */
+/* ---- Reader services (fields.c) ---------------------------------------- */
 
 /* Record an input error "FILE:LINE: card C, field F: msg" (card and field
  * may be NULL) and return RC_EINPUT. */
@@ -177,7 +178,7 @@ rc_status rc_note_id(rc_reader *rd, rc_id_kind kind, int id, const rc_loc *loc,
 rc_status rc_case_warn(rc_reader *rd, const rc_loc *loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 
-/* ---- Cards (case_cards.c) --------------------------------------------- */
+/* ---- Card services (fields.c) ----------------------------------------- */
 
 /* How a card's header carries numbers. */
 typedef enum { RC_ID_NONE, RC_ID_REQUIRED, RC_ID_OPTIONAL, RC_ID_UNIT } rc_id_mode;
@@ -185,25 +186,62 @@ typedef enum { RC_ID_NONE, RC_ID_REQUIRED, RC_ID_OPTIONAL, RC_ID_UNIT } rc_id_mo
 /* Check the header of a card with `nkw` keywords: id and unit id. */
 rc_status rc_header(rc_reader *rd, const rc_block *b, int nkw, rc_id_mode mode,
                     const char *idname, const char *usage);
+/* Lines of a card of variable length: title, then any number of lines
+ * (trailing blank lines dropped). */
+rc_status rc_var_lines(rc_reader *rd, const rc_block *b, char *title, const char *desc,
+                       int *ndata);
 
-/* /COUPLING/SPRING and /COUPLING/CATENARY (case_cards_coupling.c). */
+/* Number of entries of a field table. */
+#define RC_NF(arr) ((int)(sizeof(arr) / sizeof((arr)[0])))
+/* An integer field with a "not supported yet" note. */
+#define RC_F_INTN(nm, p, fl, nt) RC_F_SET(nm, p, 0, fl, 0, 0, nt)
+
+/* ---- Card families (cards_*.c), called by the dispatch (cards.c) ------ */
+
+/* Bodies and nodes (cards_bodies.c). */
+rc_status rc_card_node(rc_reader *rd, const rc_block *b);
+rc_status rc_card_grnod(rc_reader *rd, const rc_block *b);
+rc_status rc_card_rbody(rc_reader *rd, const rc_block *b);
+rc_status rc_card_part(rc_reader *rd, const rc_block *b);
+rc_status rc_card_grpart(rc_reader *rd, const rc_block *b);
+
+/* Surfaces (cards_surfaces.c). */
+rc_status rc_card_plane(rc_reader *rd, const rc_block *b);
+rc_status rc_card_ellips(rc_reader *rd, const rc_block *b);
+rc_status rc_card_cyl(rc_reader *rd, const rc_block *b);
+rc_status rc_card_box(rc_reader *rd, const rc_block *b);
+
+/* Interfaces (cards_interfaces.c). */
+rc_status rc_card_type6(rc_reader *rd, const rc_block *b);
+rc_status rc_card_power(rc_reader *rd, const rc_block *b);
+
+/* Friction (cards_friction.c). */
+rc_status rc_card_friction(rc_reader *rd, const rc_block *b);
+rc_status rc_card_fricorient(rc_reader *rd, const rc_block *b);
+
+/* Couplings (cards_couplings.c). */
 rc_status rc_card_coupling_spring(rc_reader *rd, const rc_block *b);
 rc_status rc_card_coupling_catenary(rc_reader *rd, const rc_block *b);
 
-/* /INTER/POWER, /SURF/CYL, /SURF/BOX, /IMPVEL (case_cards_power.c). */
-rc_status rc_card_power(rc_reader *rd, const rc_block *b);
-rc_status rc_card_cyl(rc_reader *rd, const rc_block *b);
-rc_status rc_card_box(rc_reader *rd, const rc_block *b);
+/* Curves, initial and boundary conditions, loads (cards_loads.c). */
+rc_status rc_card_funct(rc_reader *rd, const rc_block *b);
+rc_status rc_card_inivel(rc_reader *rd, const rc_block *b);
+rc_status rc_card_grav(rc_reader *rd, const rc_block *b);
+rc_status rc_card_bcs(rc_reader *rd, const rc_block *b);
 rc_status rc_card_impvel(rc_reader *rd, const rc_block *b);
 
-/* Read one block: dispatch on its keyword. */
-rc_status rc_card_dispatch(rc_reader *rd, const rc_block *b);
+/* Run, solver and output (cards_run.c); deck-level defaults and checks. */
+rc_status rc_card_begin(rc_reader *rd, const rc_block *b);
+rc_status rc_card_run(rc_reader *rd, const rc_block *b);
+rc_status rc_card_solver(rc_reader *rd, const rc_block *b);
 /* Deck-level checks after the last card (/RUN present, defaults). */
 rc_status rc_cards_finish(rc_reader *rd);
 /* Defaults of the optional cards, set before reading. */
 void rc_cards_defaults(rc_case *c);
 
-/* Append a new surface of the given kind for block b (NULL: out of memory). */
-rc_case_surf *rc_new_surf(rc_reader *rd, const rc_block *b, rc_case_surf_kind kind);
+/* ---- Dispatch (cards.c) ------------------------------------------------ */
+
+/* Read one block: dispatch on its keyword. */
+rc_status rc_card_dispatch(rc_reader *rd, const rc_block *b);
 
 #endif

@@ -1,14 +1,19 @@
 /*
  * Parsed cards of the power-law contact and the roller (SPEC 7, 3, 4):
  * /INTER/POWER (ricochet card) and /IMPVEL (Radioss layout), read by
- * case_cards_power.c (with /SURF/CYL and /SURF/BOX, which fill rc_case_surf),
- * compiled by power_compile.c and imposed.c. Part of rc_case (case.h:
+ * cards_interfaces.c and cards_loads.c (/SURF/CYL and /SURF/BOX, in
+ * cards_surfaces.c, fill rc_case_surf), compiled by model/power.c and
+ * model/imposed.c. Part of rc_case (case.h:
  * npower, power, nimpvel, impvel). docs/case-format.md has the field tables.
  */
 #ifndef RC_CASE_POWER_H
 #define RC_CASE_POWER_H
 
 #include "case/case.h"
+
+/* Spline kinds (card field Ispline). */
+enum { RC_SPL_LINEAR = 1, RC_SPL_CUBIC = 2, RC_SPL_AKIMA = 3, RC_SPL_STEFFEN = 4 };
+#define RC_SPL_DEFAULT RC_SPL_STEFFEN
 
 /* /INTER/POWER/inter_ID. */
 typedef struct rc_case_power {

@@ -29,14 +29,11 @@
 /* Normal law of an interface. */
 enum { RC_LAW_TYPE6 = 0, RC_LAW_POWER = 1 };
 
-/* Spline kinds (card field Ispline). */
-enum { RC_SPL_LINEAR = 1, RC_SPL_CUBIC = 2, RC_SPL_AKIMA = 3, RC_SPL_STEFFEN = 4 };
-#define RC_SPL_DEFAULT RC_SPL_STEFFEN
 
 /* A /FUNCT as a GSL spline. */
 typedef struct rc_spline {
     int id;          /* /FUNCT id */
-    int kind;        /* RC_SPL_* */
+    int kind;        /* RC_SPL_* (case/case_power.h) */
     int n;           /* points */
     double *x, *y;   /* [n] */
     void *spl;       /* gsl_spline * (opaque here) */

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "base/error.h"
+#include "case/case_power.h"
 #include "model/power.h"
 
 const char *rc_spline_kind_name(int kind)

@@ -1,0 +1,230 @@
+/*
+ * Cards of friction: /FRICTION (Coulomb, Renard, ricochet's filters) and
+ * /FRIC_ORIENT (orthotropic directions).
+ * Layouts are field tables (case_internal.h), documented in
+ * docs/case-format.md; references between cards are resolved by the
+ * compiler (src/model). Values ricochet cannot honour yet are rejected with
+ * "not supported yet", never ignored.
+ */
+#include "case/case_internal.h"
+#include "base/error.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char rc_note_skew[] = "(skew frames)";
+
+/* ======================================================================
+ * /FRICTION, /FRIC_ORIENT
+ * ====================================================================== */
+
+/* Renard law (Ifric 3) on one coefficient set: 0 < C5 < C6, C1 <= C3,
+ * C2 <= C3, C4 <= C1, C4 <= C2. `f` are the fields C1..C5 of line `ln`. */
+static rc_status rc_renard(rc_reader *rd, const rc_block *b, const rc_line *ln,
+                           const rc_field *f, const rc_case_fricset *s)
+{
+    const double *k = s->c;
+    if (!(k[4] > 0 && k[4] < k[5]))
+        return rc_case_fail(rd, &ln->loc, b->name, "C5",
+                            "expected 0 < C5 < C6 = %.15g (Renard: 0 < V_cr1 < V_cr2), got %s",
+                            k[5], f[4].got);
+    if (!(k[0] <= k[2]))
+        return rc_case_fail(rd, &ln->loc, b->name, "C1",
+                            "expected C1 <= C3 = %.15g (Renard: mu_s <= mu_max), got %s", k[2],
+                            f[0].got);
+    if (!(k[1] <= k[2]))
+        return rc_case_fail(rd, &ln->loc, b->name, "C2",
+                            "expected C2 <= C3 = %.15g (Renard: mu_d <= mu_max), got %s", k[2],
+                            f[1].got);
+    if (!(k[3] <= k[0]))
+        return rc_case_fail(rd, &ln->loc, b->name, "C4",
+                            "expected C4 <= C1 = %.15g (Renard: mu_min <= mu_s), got %s", k[0],
+                            f[3].got);
+    if (!(k[3] <= k[1]))
+        return rc_case_fail(rd, &ln->loc, b->name, "C4",
+                            "expected C4 <= C2 = %.15g (Renard: mu_min <= mu_d), got %s", k[1],
+                            f[3].got);
+    return RC_OK;
+}
+
+/* One coefficient set of /FRICTION: C1..C5 on line l1, C6 Fric VISF on
+ * line l2; the Renard checks when Ifric = 3. */
+static rc_status rc_fricset(rc_reader *rd, const rc_block *b, const rc_line *l1,
+                            const rc_line *l2, int ifric, rc_case_fricset *s)
+{
+    rc_status st;
+    rc_field f1[] = {RC_F_REAL("C1", &s->c[0], 0, 0), RC_F_REAL("C2", &s->c[1], 0, 0),
+                     RC_F_REAL("C3", &s->c[2], 0, 0), RC_F_REAL("C4", &s->c[3], 0, 0),
+                     RC_F_REAL("C5", &s->c[4], 0, 0)};
+    rc_field f2[] = {RC_F_REAL("C6", &s->c[5], 0, 0),
+                     RC_F_REAL("Fric", &s->fric, 0, RC_FF_NONNEG),
+                     RC_F_REAL("VISF", &s->visf, 1, RC_FF_ZDEF | RC_FF_NONNEG)};
+    if ((st = rc_parse_line(rd, b, l1, f1, RC_NF(f1)))) return st;
+    if ((st = rc_parse_line(rd, b, l2, f2, RC_NF(f2)))) return st;
+    return ifric == 3 ? rc_renard(rd, b, l1, f1, s) : RC_OK;
+}
+
+/* /FRICTION/fric_ID: title; Ifric Ifiltr Xfreq Iform, then ricochet's
+ * Dt_ref Area; the default set (C1..C5; C6 Fric VISF); then part-pair
+ * groups of 3 lines, 5 when Idir = 1:
+ * grpart_ID1 grpart_ID2 part_ID1 part_ID2 (unused) Idir; direction 1 set;
+ * [direction 2 set]. */
+rc_status rc_card_friction(rc_reader *rd, const rc_block *b)
+{
+    /* the lines of a group: first field (for messages) and description */
+    static const char *const gfield[5] = {"grpart_ID1", "C1 C2 C3 C4 C5", "C6 Fric VISF",
+                                          "C1 C2 C3 C4 C5", "C6 Fric VISF"};
+    static const char *const gdesc[5] = {
+        "grpart_ID1 grpart_ID2 part_ID1 part_ID2 Idir", "C1 C2 C3 C4 C5", "C6 Fric VISF",
+        "direction 2: C1 C2 C3 C4 C5", "direction 2: C6 Fric VISF"};
+    static const char *const side[2][2] = {{"grpart_ID1", "part_ID1"},
+                                           {"grpart_ID2", "part_ID2"}};
+    rc_case *c = rd->c;
+    int nd, cap = 0;
+    rc_status st;
+    if ((st = rc_header(rd, b, 1, RC_ID_REQUIRED, "fric_ID", "/FRICTION/fric_ID"))) return st;
+    RC_GROW(rd, c->friction, rd->capfriction, c->nfriction);
+    rc_case_friction *fr = &c->friction[c->nfriction++];
+    fr->id = b->id;
+    fr->loc = b->hdr->loc;
+    if ((st = rc_card_lines(rd, b, fr->title, 3, b->n > 0 ? b->n - 1 : 0,
+                            "Ifric Ifiltr Xfreq Iform Dt_ref Area, C1 C2 C3 C4 C5, C6 Fric "
+                            "VISF[, part-pair groups]",
+                            &nd)))
+        return st;
+    for (int k = 0; k < 3; k++) fr->line_loc[k] = b->lines[k + 1].loc;
+
+    /* line A: law, filter, penalty formulation (0 means 1); ricochet
+     * extensions: reference step of Ifiltr 1, 2 and pressure area */
+    rc_field la[] = {RC_F_SET("Ifric", &fr->ifric, 0, 0, 0xFu, 0, NULL),
+                     RC_F_SET("Ifiltr", &fr->ifiltr, 0, 0, 0xFu, 0, NULL),
+                     RC_F_REAL("Xfreq", &fr->xfreq, 1, 0),
+                     RC_F_SET("Iform", &fr->iform, 1, RC_FF_ZDEF, 0x7u, 0, NULL),
+                     RC_F_REAL("Dt_ref", &fr->dt_ref, 0, RC_FF_NONNEG),
+                     RC_F_REAL("Area", &fr->area, 0, RC_FF_NONNEG)};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], la, RC_NF(la)))) return st;
+    if ((fr->ifiltr == 1 || fr->ifiltr == 2) && !(fr->xfreq >= 0 && fr->xfreq <= 1))
+        return rc_case_fail(rd, &fr->line_loc[0], b->name, "Xfreq",
+                            "expected a filtering coefficient in [0, 1] for Ifiltr = %d, got %s",
+                            fr->ifiltr, la[2].got);
+    if (fr->ifiltr == 3 && !(fr->xfreq > 0))
+        return rc_case_fail(rd, &fr->line_loc[0], b->name, "Xfreq",
+                            "expected a cut-off frequency > 0 [Hz] for Ifiltr = 3, got %s",
+                            la[2].got);
+    /* Radioss: Xfreq = 0 switches the filter off */
+    if (fr->xfreq == 0) fr->ifiltr = 0;
+    /* Ifiltr 1, 2 give a coefficient per explicit step: which step? */
+    if ((fr->ifiltr == 1 || fr->ifiltr == 2) && !(fr->dt_ref > 0))
+        return rc_case_fail(rd, &fr->line_loc[0], b->name, "Dt_ref",
+                            "Ifiltr = %d gives its coefficient per explicit time step: expected "
+                            "the reference step Dt_ref > 0 [s] (ricochet extension, columns "
+                            "51-70), got %s",
+                            fr->ifiltr, la[4].got);
+
+    /* lines B and C: the default set */
+    if ((st = rc_fricset(rd, b, &b->lines[2], &b->lines[3], fr->ifric, &fr->def))) return st;
+
+    /* the groups, as many as the lines hold; blank lines after the last
+     * group are ignored, blank lines inside a group are lines of defaults */
+    int last = rc_block_trim(b);
+    for (int i = 4, g = 1; i < last; g++) {
+        const rc_line *ln = &b->lines[i];
+        RC_GROW(rd, fr->pair, cap, fr->npair);
+        rc_case_fricpair *pr = &fr->pair[fr->npair++];
+        pr->loc = ln->loc;
+        rc_field l1[] = {RC_F_INT("grpart_ID1", &pr->grpart1, 0, RC_FF_NONNEG),
+                         RC_F_INT("grpart_ID2", &pr->grpart2, 0, RC_FF_NONNEG),
+                         RC_F_INT("part_ID1", &pr->part1, 0, RC_FF_NONNEG),
+                         RC_F_INT("part_ID2", &pr->part2, 0, RC_FF_NONNEG), RC_F_SKIP(10),
+                         RC_F_SET("Idir", &pr->idir, 0, 0, 0x3u, 0, NULL)};
+        if ((st = rc_parse_line(rd, b, ln, l1, RC_NF(l1)))) return st;
+
+        /* each side names a part group or a part (the group wins, Radioss) */
+        const int grp[2] = {pr->grpart1, pr->grpart2}, prt[2] = {pr->part1, pr->part2};
+        for (int e = 0; e < 2; e++) {
+            char fld[32];
+            snprintf(fld, sizeof fld, "%s %s", side[e][0], side[e][1]);
+            if (grp[e] == 0 && prt[e] == 0)
+                return rc_case_fail(rd, &ln->loc, b->name, fld,
+                                    "expected a part group or a part for side %d of part-pair "
+                                    "group %d (%s or %s > 0), got both blank or 0",
+                                    e + 1, g, side[e][0], side[e][1]);
+            if (grp[e] != 0 && prt[e] != 0 &&
+                (st = rc_case_warn(rd, &ln->loc,
+                                   "card %s: %s = %d ignored: %s = %d is given (Radioss rule)",
+                                   b->name, side[e][1], prt[e], side[e][0], grp[e])))
+                return st;
+        }
+
+        /* 3 lines, 5 with a second direction */
+        int need = pr->idir ? 5 : 3, have = b->n - i;
+        if (have < need)
+            return rc_case_fail(rd, &ln->loc, b->name, gfield[have],
+                                "part-pair group %d (Idir = %d, starting on this line) is "
+                                "truncated: expected %d lines, found %d; missing line %d of "
+                                "the group (%s)",
+                                g, pr->idir, need, have, have + 1, gdesc[have]);
+        for (int d = 0; d <= pr->idir; d++)
+            if ((st = rc_fricset(rd, b, &b->lines[i + 1 + 2 * d], &b->lines[i + 2 + 2 * d],
+                                 fr->ifric, &pr->set[d])))
+                return st;
+        i += need;
+    }
+    return rc_note_id(rd, RC_IDK_FRICTION, fr->id, &fr->loc, b->hdr->text);
+}
+
+/* /FRIC_ORIENT/fric_orient_ID: title; per part or part group two lines:
+ * grpart_ID part_ID; VX VY VZ skew_ID PHI Iorth. */
+rc_status rc_card_fricorient(rc_reader *rd, const rc_block *b)
+{
+    static const char desc[] = "grpart_ID part_ID, VX VY VZ skew_ID PHI Iorth";
+    rc_case *c = rd->c;
+    int nd, cap = 0;
+    rc_status st;
+    if ((st = rc_header(rd, b, 1, RC_ID_REQUIRED, "fric_orient_ID",
+                        "/FRIC_ORIENT/fric_orient_ID")))
+        return st;
+    RC_GROW(rd, c->fricorient, rd->capfricorient, c->nfricorient);
+    rc_case_fricorient *o = &c->fricorient[c->nfricorient++];
+    o->id = b->id;
+    o->loc = b->hdr->loc;
+    if ((st = rc_var_lines(rd, b, o->title, desc, &nd))) return st;
+    if (nd == 0)
+        return rc_case_fail(rd, &b->hdr->loc, b->name, "grpart_ID part_ID",
+                            "expected at least one orientation (two lines: %s), found none",
+                            desc);
+
+    /* the items, two lines each */
+    for (int i = 1, n = 1; i <= nd; i += 2, n++) {
+        const rc_line *ln = &b->lines[i];
+        RC_GROW(rd, o->item, cap, o->n);
+        rc_case_fricorient_item *it = &o->item[o->n++];
+        it->loc = ln->loc;
+        rc_field l1[] = {RC_F_INT("grpart_ID", &it->grpart_id, 0, RC_FF_NONNEG),
+                         RC_F_INT("part_ID", &it->part_id, 0, RC_FF_NONNEG)};
+        if ((st = rc_parse_line(rd, b, ln, l1, RC_NF(l1)))) return st;
+        if (it->grpart_id == 0 && it->part_id == 0)
+            return rc_case_fail(rd, &ln->loc, b->name, "grpart_ID part_ID",
+                                "expected a part group or a part for orientation %d "
+                                "(grpart_ID or part_ID > 0), got both blank or 0",
+                                n);
+        if (i + 1 >= b->n)
+            return rc_case_fail(rd, &ln->loc, b->name, "VX VY VZ",
+                                "orientation %d (starting on this line) is truncated: missing "
+                                "its line 2 (VX VY VZ skew_ID PHI Iorth)",
+                                n);
+        rc_field l2[] = {
+            RC_F_REAL("VX", &it->v[0], 0, 0), RC_F_REAL("VY", &it->v[1], 0, 0),
+            RC_F_REAL("VZ", &it->v[2], 0, 0),
+            RC_F_INTN("skew_ID", &it->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew),
+            RC_F_REAL("PHI", &it->phi, 0, 0),
+            RC_F_SET("Iorth", &it->iorth, 0, 0, 0x3u, 0, NULL)};
+        if ((st = rc_parse_line(rd, b, &b->lines[i + 1], l2, RC_NF(l2)))) return st;
+        if (it->v[0] == 0 && it->v[1] == 0 && it->v[2] == 0)
+            return rc_case_fail(rd, &b->lines[i + 1].loc, b->name, "VX VY VZ",
+                                "expected a non-zero vector V (direction 1 of orthotropy), got "
+                                "(0, 0, 0)");
+    }
+    return rc_note_id(rd, RC_IDK_FRICORIENT, o->id, &o->loc, b->hdr->text);
+}

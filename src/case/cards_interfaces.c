@@ -1,0 +1,190 @@
+/*
+ * Cards of contact interfaces: /INTER/TYPE6 and ricochet's /INTER/POWER
+ * (power-law contact with splines).
+ * Layouts are field tables (case_internal.h), documented in
+ * docs/case-format.md; references between cards are resolved by the
+ * compiler (src/model). Values ricochet cannot honour yet are rejected with
+ * "not supported yet", never ignored.
+ */
+#include "case/case_internal.h"
+#include "base/error.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "case/case_power.h"
+
+/* Default Tstop of /INTER (Radioss). */
+#define RC_DEF_TSTOP 1e30
+
+/* Defaults of /INTER/POWER (docs/case-format.md). */
+#define RC_PW_DEF_M1 2.0      /* stiffness exponent [-]                     */
+#define RC_PW_DEF_M2 1.0      /* damping exponent [-]                       */
+#define RC_PW_DEF_M3 2.0      /* indentation exponent [-]                   */
+#define RC_PW_DEF_RDF 0.001   /* rebound damping factor [-]                 */
+#define RC_PW_DEF_DREG 0.0    /* regularisation length of delta^m, m < 1 [m]; 0: 1e-4 p_s (scales.c) */
+#define RC_PW_DEF_VREG 0.0    /* regularisation speed of |v|^m2, m2 < 1 [m/s]; 0: 1e-4 v_s */
+#define RC_PW_DEF_TSTOP 1e30  /* [s], as /INTER/TYPE6                       */
+
+
+/* ======================================================================
+ * /INTER/TYPE6
+ * ====================================================================== */
+
+/* /INTER/TYPE6/inter_ID: title and the six Radioss lines. */
+rc_status rc_card_type6(rc_reader *rd, const rc_block *b)
+{
+    rc_case *c = rd->c;
+    int nd;
+    rc_status st;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "inter_ID", "/INTER/TYPE6/inter_ID")))
+        return st;
+    RC_GROW(rd, c->type6, rd->captype6, c->ntype6);
+    rc_case_type6 *t = &c->type6[c->ntype6++];
+    t->id = b->id;
+    t->loc = b->hdr->loc;
+    if ((st = rc_card_lines(rd, b, t->title, 6, 6,
+                            "surf_ID1 surf_ID2, Sfric Fric Gap Tstart Tstop, IRS..., "
+                            "fct_IDld..., fct_IDul..., Visc...",
+                            &nd)))
+        return st;
+
+    rc_field l1[] = {RC_F_INT("surf_ID1", &t->surf1, 0, RC_FF_POS),
+                     RC_F_INT("surf_ID2", &t->surf2, 0, RC_FF_POS)};
+    rc_field l2[] = {
+        RC_F_REAL("Sfric", &t->sfric, 0, RC_FF_NONNEG),
+        RC_F_REAL("Fric", &t->fric, 0, RC_FF_NONNEG),
+        RC_F_REAL("Gap", &t->gap, 0, RC_FF_NONNEG),
+        RC_F_REAL("Tstart", &t->tstart, 0, 0),
+        RC_F_REAL("Tstop", &t->tstop, RC_DEF_TSTOP, RC_FF_ZDEF)};
+    rc_field l3[] = {
+        RC_F_SKIP(10),
+        RC_F_SET("IRS", &t->irs, 0, 0, 0x7u, RC_BIT(0),
+                 "(only analytic surfaces exist now; their normals are fixed)"),
+        RC_F_SET("IRm", &t->irm, 0, 0, 0x7u, RC_BIT(0),
+                 "(only analytic surfaces exist now; their normals are fixed)"),
+        RC_F_SET("Inacti", &t->inacti, 0, 0, RC_BIT(0) | RC_BIT(5), RC_BIT(0) | RC_BIT(5), NULL),
+        RC_F_INT("fct_IDff", &t->fct_ff, 0, RC_FF_NONNEG),
+        RC_F_INT("fct_IDfv", &t->fct_fv, 0, RC_FF_NONNEG),
+        RC_F_REAL("Ascalef", &t->ascalef, 1, RC_FF_ZDEF | RC_FF_POS),
+        RC_F_REAL("Ascalev", &t->ascalev, 1, RC_FF_ZDEF | RC_FF_POS)};
+    rc_field l4[] = {
+        RC_F_INT("fct_IDld", &t->fct_ld, 0, RC_FF_POS),
+        RC_F_SET("Iform", &t->iform, 0, 0, 0x7u, 0x7u, NULL),
+        RC_F_REAL("Ascalex", &t->ascalex, 1, RC_FF_ZDEF | RC_FF_POS),
+        RC_F_REAL("FscaleId", &t->fscaleld, 1, RC_FF_ZDEF),
+        RC_F_SET("Icor", &t->icor, 0, 0, 0x3u, 0x3u, NULL)};
+    rc_field l5[] = {
+        RC_F_INT("fct_IDul", &t->fct_ul, 0, RC_FF_NONNEG),
+        RC_F_SKIP(10),
+        RC_F_REAL("Stiff", &t->stiff, 0, RC_FF_NONNEG),
+        RC_F_REAL("Fscaleul", &t->fscaleul, 1, RC_FF_ZDEF)};
+    rc_field l6[] = {
+        RC_F_REAL("Visc", &t->visc, 0, RC_FF_NONNEG),
+        RC_F_INT("fct_IDdv", &t->fct_dv, 0, RC_FF_NONNEG),
+        RC_F_INT("fct_IDdf", &t->fct_df, 0, RC_FF_NONNEG),
+        RC_F_REAL("Fscalev", &t->fscalev, 1, RC_FF_ZDEF)};
+    rc_field *lines[6] = {l1, l2, l3, l4, l5, l6};
+    const int nf[6] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5), RC_NF(l6)};
+
+    /* the six lines, each with its location */
+    for (int k = 0; k < 6; k++) {
+        t->line_loc[k] = b->lines[k + 1].loc;
+        if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
+    }
+    if (t->tstop < t->tstart)
+        return rc_case_fail(rd, &t->line_loc[1], b->name, "Tstop",
+                            "expected Tstop >= Tstart = %.15g, got %s", t->tstart, l2[4].got);
+    /* the elasto-plastic laws move between the curves with slope Stiff */
+    if (t->iform != 0 && !(t->stiff > 0))
+        return rc_case_fail(rd, &t->line_loc[4], b->name, "Stiff",
+                            "expected a positive stiffness [N/m]: Stiff is required for Iform = %d, got %s",
+                            t->iform, l5[2].got);
+    return rc_note_id(rd, RC_IDK_INTER, t->id, &t->loc, b->hdr->text);
+}
+
+/* ======================================================================
+ * /INTER/POWER
+ * ====================================================================== */
+
+/* /INTER/POWER/inter_ID: title;
+ *   surf_ID1 surf_ID2 fct_stiff fct_damp Ispline Irdf;
+ *   K m1 C m2 m3;
+ *   [RDF Dreg Vreg Tstart Tstop;
+ *   [mu_s v_s mu_d v_d f_max;
+ *   [Kt]]] */
+rc_status rc_card_power(rc_reader *rd, const rc_block *b)
+{
+    rc_case *c = rd->c;
+    int nd;
+    rc_status st;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "inter_ID", "/INTER/POWER/inter_ID"))) return st;
+    RC_GROW(rd, c->power, rd->cappower, c->npower);
+    rc_case_power *p = &c->power[c->npower++];
+    p->id = b->id;
+    p->loc = b->hdr->loc;
+    for (int k = 0; k < 5; k++) p->line_loc[k] = p->loc;
+    if ((st = rc_card_lines(rd, b, p->title, 2, 5,
+                            "surf_ID1 surf_ID2 fct_stiff fct_damp Ispline Irdf, K m1 C m2 m3[, RDF Dreg "
+                            "Vreg Tstart Tstop[, mu_s v_s mu_d v_d f_max[, Kt]]]",
+                            &nd)))
+        return st;
+
+    const unsigned zp = RC_FF_ZDEF | RC_FF_POS;
+    rc_field l1[] = {RC_F_INT("surf_ID1", &p->surf1, 0, RC_FF_POS),
+                     RC_F_INT("surf_ID2", &p->surf2, 0, RC_FF_POS),
+                     RC_F_INT("fct_stiff", &p->fct_stiff, 0, RC_FF_NONNEG),
+                     RC_F_INT("fct_damp", &p->fct_damp, 0, RC_FF_NONNEG),
+                     RC_F_SET("Ispline", &p->ispline, RC_SPL_DEFAULT, RC_FF_ZDEF, 0x1Fu, 0, NULL),
+                     RC_F_SET("Irdf", &p->irdf, 1, RC_FF_ZDEF, 0x7u, 0, NULL)};
+    /* exponents: blank is the default, an explicit 0 is 0 */
+    rc_field l2[] = {RC_F_REAL("K", &p->k, 0, RC_FF_NONNEG), RC_F_REAL("m1", &p->m1, RC_PW_DEF_M1, RC_FF_NONNEG),
+                     RC_F_REAL("C", &p->c, 0, RC_FF_NONNEG), RC_F_REAL("m2", &p->m2, RC_PW_DEF_M2, RC_FF_NONNEG),
+                     RC_F_REAL("m3", &p->m3, RC_PW_DEF_M3, RC_FF_NONNEG)};
+    rc_field l3[] = {RC_F_REAL("RDF", &p->rdf, RC_PW_DEF_RDF, zp), RC_F_REAL("Dreg", &p->dreg, RC_PW_DEF_DREG, RC_FF_ZDEF | RC_FF_NONNEG),
+                     RC_F_REAL("Vreg", &p->vreg, RC_PW_DEF_VREG, RC_FF_ZDEF | RC_FF_NONNEG), RC_F_REAL("Tstart", &p->tstart, 0, 0),
+                     RC_F_REAL("Tstop", &p->tstop, RC_PW_DEF_TSTOP, RC_FF_ZDEF)};
+    rc_field l4[] = {RC_F_REAL("mu_s", &p->mus, 0, RC_FF_NONNEG), RC_F_REAL("v_s", &p->vs, 0, RC_FF_NONNEG),
+                     RC_F_REAL("mu_d", &p->mud, 0, RC_FF_NONNEG), RC_F_REAL("v_d", &p->vd, 0, RC_FF_NONNEG),
+                     RC_F_REAL("f_max", &p->fmax, 0, RC_FF_NONNEG)};
+    rc_field l5[] = {RC_F_REAL("Kt", &p->kt, 0, RC_FF_NONNEG)};
+    rc_field *lines[5] = {l1, l2, l3, l4, l5};
+    const int nf[5] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5)};
+    /* absent optional lines take their defaults, like blank ones */
+    static const rc_line blank = {"", 0, {NULL, 0}};
+    for (int k = 0; k < 5; k++) {
+        const rc_line *ln = k < nd ? &b->lines[k + 1] : &blank;
+        if (k < nd) p->line_loc[k] = ln->loc;
+        if ((st = rc_parse_line(rd, b, ln, lines[k], nf[k]))) return st;
+    }
+
+    /* the stiffness term must exist; the splines replace K and C */
+    if (p->fct_stiff == 0 && !(p->k > 0))
+        return rc_case_fail(rd, &p->line_loc[1], b->name, "K",
+                            "expected a stiffness coefficient K > 0 [N/m^m1] (or a stiffness spline "
+                            "fct_stiff), got %s",
+                            l2[0].got);
+    if (p->ispline < RC_SPL_LINEAR || p->ispline > RC_SPL_STEFFEN)
+        return rc_case_fail(rd, &p->line_loc[0], b->name, "Ispline",
+                            "expected 1 linear, 2 cubic, 3 akima or 4 steffen (0: default 4), got %s",
+                            l1[4].got);
+    if (p->irdf != 1 && p->irdf != 2)
+        return rc_case_fail(rd, &p->line_loc[0], b->name, "Irdf",
+                            "expected 1 (rebound damping factor on, the default) or 2 (off), got %s", l1[5].got);
+    if (p->tstop < p->tstart)
+        return rc_case_fail(rd, &p->line_loc[2], b->name, "Tstop", "expected Tstop >= Tstart = %.15g, got %s",
+                            p->tstart, l3[4].got);
+    /* step5 friction: 0 < v_s < v_d */
+    if (p->mus > 0 || p->mud > 0) {
+        if (!(p->vs > 0))
+            return rc_case_fail(rd, &p->line_loc[3], b->name, "v_s",
+                                "friction (mu_s or mu_d > 0) needs the static threshold velocity v_s > 0 "
+                                "[m/s], got %s",
+                                l4[1].got);
+        if (!(p->vd > p->vs))
+            return rc_case_fail(rd, &p->line_loc[3], b->name, "v_d",
+                                "expected the dynamic threshold velocity v_d > v_s = %.15g [m/s], got %s", p->vs,
+                                l4[3].got);
+    }
+    return rc_note_id(rd, RC_IDK_INTER, p->id, &p->loc, b->hdr->text);
+}

@@ -1,0 +1,224 @@
+/*
+ * Cards of curves, initial and boundary conditions and loads: /FUNCT,
+ * /INIVEL, /GRAV, /BCS, /IMPVEL (imposed velocity).
+ * Layouts are field tables (case_internal.h), documented in
+ * docs/case-format.md; references between cards are resolved by the
+ * compiler (src/model). Values ricochet cannot honour yet are rejected with
+ * "not supported yet", never ignored.
+ */
+#include "case/case_internal.h"
+#include "base/error.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "case/case_power.h"
+
+static const char rc_note_skew[] = "(skew frames)";
+static const char rc_note_sensor[] = "(sensors)";
+
+/* Default Tstop of /IMPVEL [s], as /INTER/TYPE6. */
+#define RC_PW_DEF_TSTOP 1e30
+
+/* ======================================================================
+ * /FUNCT
+ * ====================================================================== */
+
+/* /FUNCT/fct_ID: title, then X Y pairs; X strictly increasing. */
+rc_status rc_card_funct(rc_reader *rd, const rc_block *b)
+{
+    rc_case *c = rd->c;
+    int nd;
+    rc_status st;
+    if ((st = rc_header(rd, b, 1, RC_ID_REQUIRED, "fct_ID", "/FUNCT/fct_ID"))) return st;
+    RC_GROW(rd, c->funct, rd->capfunct, c->nfunct);
+    rc_case_funct *fn = &c->funct[c->nfunct++];
+    fn->id = b->id;
+    fn->loc = b->hdr->loc;
+    if ((st = rc_var_lines(rd, b, fn->title, "X Y", &nd))) return st;
+
+    /* a function needs two points at least */
+    if (nd < 2)
+        return rc_case_fail(rd, &b->hdr->loc, b->name, "X",
+                            "not a function: expected at least 2 points (one X Y pair a line), "
+                            "found %d",
+                            nd);
+    fn->x = malloc((size_t)nd * sizeof *fn->x);
+    fn->y = malloc((size_t)nd * sizeof *fn->y);
+    if (!fn->x || !fn->y) return rc_case_nomem(rd);
+
+    /* the points, abscissae strictly increasing */
+    for (int i = 0; i < nd; i++) {
+        const rc_line *ln = &b->lines[i + 1];
+        rc_field f[] = {RC_F_REAL("X", &fn->x[i], 0, 0), RC_F_REAL("Y", &fn->y[i], 0, 0)};
+        if ((st = rc_parse_line(rd, b, ln, f, RC_NF(f)))) return st;
+        if (i > 0 && !(fn->x[i] > fn->x[i - 1]))
+            return rc_case_fail(rd, &ln->loc, b->name, "X",
+                                "not a function: abscissae must increase strictly, got %s "
+                                "after %.15g (line %d)",
+                                f[0].got, fn->x[i - 1], b->lines[i].loc.line);
+        fn->npts = i + 1;
+    }
+    return rc_note_id(rd, RC_IDK_FUNCT, fn->id, &fn->loc, b->hdr->text);
+}
+
+/* ======================================================================
+ * /INIVEL, /GRAV, /BCS
+ * ====================================================================== */
+
+/* /INIVEL/TRA/id and /INIVEL/ROT/id: title; Vx Vy Vz grnod_ID skew_ID. */
+rc_status rc_card_inivel(rc_reader *rd, const rc_block *b)
+{
+    rc_case *c = rd->c;
+    char title[RC_CASE_TITLE_MAX + 1];
+    int nd;
+    rc_status st;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "inivel_ID", "/INIVEL/TRA/inivel_ID"))) return st;
+    RC_GROW(rd, c->inivel, rd->capinivel, c->ninivel);
+    rc_case_inivel *v = &c->inivel[c->ninivel++];
+    v->id = b->id;
+    v->rot = strcmp(b->kw[1], "ROT") == 0;
+    v->loc = b->hdr->loc;
+    if ((st = rc_card_lines(rd, b, title, 1, 1, "Vx Vy Vz grnod_ID skew_ID", &nd))) return st;
+
+    rc_field f[] = {RC_F_REAL("Vx", &v->v[0], 0, 0), RC_F_REAL("Vy", &v->v[1], 0, 0),
+                    RC_F_REAL("Vz", &v->v[2], 0, 0),
+                    RC_F_INT("grnod_ID", &v->grnod_id, 0, RC_FF_NONNEG),
+                    RC_F_INTN("skew_ID", &v->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew)};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], f, RC_NF(f)))) return st;
+    return rc_note_id(rd, RC_IDK_INIVEL, v->id, &v->loc, b->hdr->text);
+}
+
+/* /GRAV/grav_ID: title; fct_IDT DIR skew_ID sensor_ID grnod_ID Ascale_x
+ * Fscale_y. */
+rc_status rc_card_grav(rc_reader *rd, const rc_block *b)
+{
+    rc_case *c = rd->c;
+    char title[RC_CASE_TITLE_MAX + 1], dir[11] = "";
+    int nd;
+    rc_status st;
+    if ((st = rc_header(rd, b, 1, RC_ID_REQUIRED, "grav_ID", "/GRAV/grav_ID"))) return st;
+    RC_GROW(rd, c->grav, rd->capgrav, c->ngrav);
+    rc_case_grav *g = &c->grav[c->ngrav++];
+    g->id = b->id;
+    g->loc = b->hdr->loc;
+    if ((st = rc_card_lines(rd, b, title, 1, 1, "fct_IDT DIR skew_ID sensor_ID grnod_ID "
+                            "Ascale_x Fscale_y", &nd)))
+        return st;
+
+    rc_field f[] = {RC_F_INT("fct_IDT", &g->fct_id, 0, RC_FF_NONNEG),
+                    RC_F_STR("DIR", dir, 10),
+                    RC_F_INTN("skew_ID", &g->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew),
+                    RC_F_INTN("sensor_ID", &g->sensor_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_sensor),
+                    RC_F_INT("grnod_ID", &g->grnod_id, 0, RC_FF_NONNEG),
+                    RC_F_REAL("Ascale_x", &g->ascale, 1, RC_FF_ZDEF | RC_FF_POS),
+                    RC_F_REAL("Fscale_y", &g->fscale, 1, RC_FF_ZDEF)};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], f, RC_NF(f)))) return st;
+
+    /* DIR: one letter, either case, anywhere in its columns */
+    const char *p = strchr("XYZxyz", dir[0]);
+    if (!dir[0] || dir[1] || !p)
+        return rc_case_fail(rd, &b->lines[1].loc, b->name, "DIR", "expected X, Y or Z, got %s",
+                            f[1].got);
+    g->dir = (int)(p - "XYZxyz") % 3;
+    return rc_note_id(rd, RC_IDK_GRAV, g->id, &g->loc, b->hdr->text);
+}
+
+/* Trarot "111 111": the first three 0/1 digits are Tx Ty Tz, the next three
+ * Rx Ry Rz; blanks are ignored, missing digits are 0. */
+static int rc_trarot(const char *s, int fix[6])
+{
+    int k = 0;
+    for (; *s; s++) {
+        if (*s == ' ') continue;
+        if ((*s != '0' && *s != '1') || k == 6) return 0;
+        fix[k++] = *s - '0';
+    }
+    return 1;
+}
+
+/* /BCS/bcs_ID: title; Trarot skew_ID grnod_ID. */
+rc_status rc_card_bcs(rc_reader *rd, const rc_block *b)
+{
+    rc_case *c = rd->c;
+    char title[RC_CASE_TITLE_MAX + 1], tr[11] = "";
+    int nd;
+    rc_status st;
+    if ((st = rc_header(rd, b, 1, RC_ID_REQUIRED, "bcs_ID", "/BCS/bcs_ID"))) return st;
+    RC_GROW(rd, c->bcs, rd->capbcs, c->nbcs);
+    rc_case_bcs *x = &c->bcs[c->nbcs++];
+    x->id = b->id;
+    x->loc = b->hdr->loc;
+    if ((st = rc_card_lines(rd, b, title, 1, 1, "Trarot skew_ID grnod_ID", &nd))) return st;
+
+    rc_field f[] = {RC_F_STR("Trarot", tr, 10),
+                    RC_F_INTN("skew_ID", &x->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew),
+                    RC_F_INT("grnod_ID", &x->grnod_id, 0, RC_FF_NONNEG)};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], f, RC_NF(f)))) return st;
+    if (!rc_trarot(tr, x->fix))
+        return rc_case_fail(rd, &b->lines[1].loc, b->name, "Trarot",
+                            "expected up to six 0/1 flags TxTyTz RxRyRz (e.g. \"111 000\"), got %s",
+                            f[0].got);
+    return rc_note_id(rd, RC_IDK_BCS, x->id, &x->loc, b->hdr->text);
+}
+
+/* ======================================================================
+ * /IMPVEL
+ * ====================================================================== */
+
+/* /IMPVEL/impvel_ID: title; fct_IDT Dir skew_ID sensor_ID grnod_ID frame_ID
+ * Icoor; Ascale_x Fscale_y Tstart Tstop. */
+rc_status rc_card_impvel(rc_reader *rd, const rc_block *b)
+{
+    static const char *const dirs[6] = {"X", "Y", "Z", "XX", "YY", "ZZ"};
+    rc_case *c = rd->c;
+    char dir[11] = "";
+    int nd;
+    rc_status st;
+    if ((st = rc_header(rd, b, 1, RC_ID_REQUIRED, "impvel_ID", "/IMPVEL/impvel_ID"))) return st;
+    RC_GROW(rd, c->impvel, rd->capimpvel, c->nimpvel);
+    rc_case_impvel *v = &c->impvel[c->nimpvel++];
+    v->id = b->id;
+    v->loc = b->hdr->loc;
+    if ((st = rc_card_lines(rd, b, v->title, 1, 2,
+                            "fct_IDT Dir skew_ID sensor_ID grnod_ID frame_ID Icoor[, Ascale_x Fscale_y Tstart "
+                            "Tstop]",
+                            &nd)))
+        return st;
+    v->line_loc[0] = b->lines[1].loc;
+    v->line_loc[1] = nd >= 2 ? b->lines[2].loc : b->lines[1].loc;
+
+    rc_field l1[] = {RC_F_INT("fct_IDT", &v->fct_id, 0, RC_FF_POS),
+                     RC_F_STR("Dir", dir, 10),
+                     RC_F_INTN("skew_ID", &v->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew),
+                     RC_F_INTN("sensor_ID", &v->sensor_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_sensor),
+                     RC_F_INT("grnod_ID", &v->grnod_id, 0, RC_FF_POS),
+                     RC_F_INTN("frame_ID", &v->frame_id, RC_FF_NONNEG | RC_FF_ONLY0, "(moving frames)"),
+                     RC_F_INTN("Icoor", &v->icoor, RC_FF_NONNEG | RC_FF_ONLY0, "(cylindrical coordinates)")};
+    rc_field l2[] = {RC_F_REAL("Ascale_x", &v->ascale, 1, RC_FF_ZDEF | RC_FF_POS),
+                     RC_F_REAL("Fscale_y", &v->fscale, 1, RC_FF_ZDEF), RC_F_REAL("Tstart", &v->tstart, 0, 0),
+                     RC_F_REAL("Tstop", &v->tstop, RC_PW_DEF_TSTOP, RC_FF_ZDEF)};
+    static const rc_line blank = {"", 0, {NULL, 0}};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
+    if ((st = rc_parse_line(rd, b, nd >= 2 ? &b->lines[2] : &blank, l2, RC_NF(l2)))) return st;
+
+    /* Dir: X Y Z XX YY ZZ, either case, anywhere in its columns */
+    v->dir = -1;
+    for (int k = 0; k < 6; k++) {
+        size_t n = strlen(dirs[k]);
+        if (strlen(dir) == n && (dir[0] & ~0x20) == dirs[k][0] && (n == 1 || (dir[1] & ~0x20) == dirs[k][1]))
+            v->dir = k;
+    }
+    if (v->dir < 0)
+        return rc_case_fail(rd, &v->line_loc[0], b->name, "Dir", "expected X, Y, Z, XX, YY or ZZ, got %s",
+                            l1[1].got);
+    if (v->tstop < v->tstart)
+        return rc_case_fail(rd, &v->line_loc[1], b->name, "Tstop", "expected Tstop >= Tstart = %.15g, got %s",
+                            v->tstart, l2[3].got);
+    if (v->tstart > 0)
+        return rc_case_fail(rd, &v->line_loc[1], b->name, "Tstart",
+                            "expected Tstart <= 0, got %s: a later start (a jump of the velocity) is not "
+                            "supported yet; shape the time function instead",
+                            l2[2].got);
+    return rc_note_id(rd, RC_IDK_IMPVEL, v->id, &v->loc, b->hdr->text);
+}

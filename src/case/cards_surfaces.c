@@ -1,0 +1,181 @@
+/*
+ * Cards of surfaces: /SURF/PLANE, /SURF/ELLIPS, and ricochet's /SURF/CYL
+ * (finite cylinder, flat or rounded ends) and /SURF/BOX.
+ * Layouts are field tables (case_internal.h), documented in
+ * docs/case-format.md; references between cards are resolved by the
+ * compiler (src/model). Values ricochet cannot honour yet are rejected with
+ * "not supported yet", never ignored.
+ */
+#include "case/case_internal.h"
+#include "base/error.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char rc_note_skew[] = "(skew frames)";
+
+/* ======================================================================
+ * /SURF/PLANE and /SURF/ELLIPS
+ * ====================================================================== */
+
+/* New surface of the given kind. */
+static rc_case_surf *rc_new_surf(rc_reader *rd, const rc_block *b, rc_case_surf_kind kind)
+{
+    rc_case *c = rd->c;
+    rc_case_surf *arr = rc_case_grow(rd, c->surf, &rd->capsurf, c->nsurf, sizeof *arr);
+    if (!arr) return NULL;
+    c->surf = arr;
+    rc_case_surf *s = &c->surf[c->nsurf++];
+    s->id = b->id;
+    s->kind = kind;
+    s->loc = b->hdr->loc;
+    return s;
+}
+
+/* /SURF/PLANE/surf_ID: title; point M; point M1; ricochet: rbody_ID. */
+rc_status rc_card_plane(rc_reader *rd, const rc_block *b)
+{
+    int nd;
+    rc_status st;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "surf_ID", "/SURF/PLANE/surf_ID"))) return st;
+    rc_case_surf *s = rc_new_surf(rd, b, RC_CASE_SURF_PLANE);
+    if (!s) return RC_ENOMEM;
+    if ((st = rc_card_lines(rd, b, s->title, 2, 3, "XM YM ZM, XM1 YM1 ZM1", &nd))) return st;
+
+    /* M, M1 and the optional carrying body */
+    rc_field l1[] = {RC_F_REAL("XM", &s->m[0], 0, 0), RC_F_REAL("YM", &s->m[1], 0, 0),
+                     RC_F_REAL("ZM", &s->m[2], 0, 0)};
+    rc_field l2[] = {RC_F_REAL("XM1", &s->m1[0], 0, 0), RC_F_REAL("YM1", &s->m1[1], 0, 0),
+                     RC_F_REAL("ZM1", &s->m1[2], 0, 0)};
+    rc_field l3[] = {RC_F_INT("rbody_ID", &s->rbody_id, 0, RC_FF_NONNEG)};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
+    if ((st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
+    if (nd == 3 && (st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
+
+    /* the normal M -> M1 must exist */
+    if (s->m[0] == s->m1[0] && s->m[1] == s->m1[1] && s->m[2] == s->m1[2])
+        return rc_case_fail(rd, &b->lines[2].loc, b->name, "XM1 YM1 ZM1",
+                            "expected a point M1 different from M (the normal points from M "
+                            "towards M1), got M1 = M = (%.9g, %.9g, %.9g)",
+                            s->m[0], s->m[1], s->m[2]);
+    return rc_note_id(rd, RC_IDK_SURF, s->id, &s->loc, b->hdr->text);
+}
+
+/* /SURF/ELLIPS/surf_ID: title; skew_ID n rbody_ID; centre; semi-axes.
+ * Only spheres for now. */
+rc_status rc_card_ellips(rc_reader *rd, const rc_block *b)
+{
+    static const char note[] = "(only spheres: n = 2, a = b = c)";
+    int nd;
+    rc_status st;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "surf_ID", "/SURF/ELLIPS/surf_ID"))) return st;
+    rc_case_surf *s = rc_new_surf(rd, b, RC_CASE_SURF_ELLIPS);
+    if (!s) return RC_ENOMEM;
+    if ((st = rc_card_lines(rd, b, s->title, 3, 3, "skew_ID n rbody_ID, Xc Yc Zc, a b c", &nd)))
+        return st;
+
+    rc_field l1[] = {RC_F_INTN("skew_ID", &s->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew),
+                     RC_F_INT("n", &s->degree, 2, RC_FF_ZDEF | RC_FF_POS),
+                     RC_F_INT("rbody_ID", &s->rbody_id, 0, RC_FF_NONNEG)};
+    rc_field l2[] = {RC_F_REAL("Xc", &s->c[0], 0, 0), RC_F_REAL("Yc", &s->c[1], 0, 0),
+                     RC_F_REAL("Zc", &s->c[2], 0, 0)};
+    rc_field l3[] = {RC_F_REAL("a", &s->abc[0], 0, RC_FF_POS), RC_F_REAL("b", &s->abc[1], 0, RC_FF_POS),
+                     RC_F_REAL("c", &s->abc[2], 0, RC_FF_POS)};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
+    if ((st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
+    if ((st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
+
+    /* spheres only */
+    if (s->degree != 2)
+        return rc_case_fail(rd, &b->lines[1].loc, b->name, "n",
+                            "expected 2, got %s: not supported yet %s", l1[1].got, note);
+    for (int k = 1; k < 3; k++)
+        if (s->abc[k] != s->abc[0])
+            return rc_case_fail(rd, &b->lines[3].loc, b->name, l3[k].name,
+                                "expected %.15g (= a), got %s: not supported yet %s",
+                                s->abc[0], l3[k].got, note);
+    return rc_note_id(rd, RC_IDK_SURF, s->id, &s->loc, b->hdr->text);
+}
+
+/* ======================================================================
+ * /SURF/CYL and /SURF/BOX
+ * ====================================================================== */
+
+static double norm3(const double *v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+/* /SURF/CYL/surf_ID: title; rbody_ID Iend Icont; Xc Yc Zc; AX AY AZ; R L. */
+rc_status rc_card_cyl(rc_reader *rd, const rc_block *b)
+{
+    int nd;
+    rc_status st;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "surf_ID", "/SURF/CYL/surf_ID"))) return st;
+    rc_case_surf *s = rc_new_surf(rd, b, RC_CASE_SURF_CYL);
+    if (!s) return RC_ENOMEM;
+    if ((st = rc_card_lines(rd, b, s->title, 4, 4, "rbody_ID Iend Icont, Xc Yc Zc, AX AY AZ, R L", &nd))) return st;
+
+    rc_field l1[] = {RC_F_INT("rbody_ID", &s->rbody_id, 0, RC_FF_NONNEG),
+                     RC_F_SET("Iend", &s->ends, 0, 0, 0x3u, 0, NULL),
+                     RC_F_SET("Icont", &s->cmode, 0, 0, 0x3u, 0, NULL)};
+    rc_field l2[] = {RC_F_REAL("Xc", &s->c[0], 0, 0), RC_F_REAL("Yc", &s->c[1], 0, 0),
+                     RC_F_REAL("Zc", &s->c[2], 0, 0)};
+    rc_field l3[] = {RC_F_REAL("AX", &s->axis[0], 0, 0), RC_F_REAL("AY", &s->axis[1], 0, 0),
+                     RC_F_REAL("AZ", &s->axis[2], 0, 0)};
+    rc_field l4[] = {RC_F_REAL("R", &s->abc[0], 0, RC_FF_POS), RC_F_REAL("L", &s->length, 0, RC_FF_POS)};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
+    if ((st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
+    if ((st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
+    if ((st = rc_parse_line(rd, b, &b->lines[4], l4, RC_NF(l4)))) return st;
+    if (!(norm3(s->axis) > 0))
+        return rc_case_fail(rd, &b->lines[3].loc, b->name, "AX AY AZ",
+                            "expected a non-zero axis vector, got (0, 0, 0)");
+    s->abc[1] = s->abc[2] = s->abc[0];
+    return rc_note_id(rd, RC_IDK_SURF, s->id, &s->loc, b->hdr->text);
+}
+
+/* /SURF/BOX/surf_ID: title; rbody_ID; Xc Yc Zc; a b c; [UX UY UZ; VX VY VZ]. */
+rc_status rc_card_box(rc_reader *rd, const rc_block *b)
+{
+    int nd;
+    rc_status st;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "surf_ID", "/SURF/BOX/surf_ID"))) return st;
+    rc_case_surf *s = rc_new_surf(rd, b, RC_CASE_SURF_BOX);
+    if (!s) return RC_ENOMEM;
+    if ((st = rc_card_lines(rd, b, s->title, 3, 5, "rbody_ID, Xc Yc Zc, a b c[, UX UY UZ, VX VY VZ]", &nd)))
+        return st;
+
+    rc_field l1[] = {RC_F_INT("rbody_ID", &s->rbody_id, 0, RC_FF_NONNEG)};
+    rc_field l2[] = {RC_F_REAL("Xc", &s->c[0], 0, 0), RC_F_REAL("Yc", &s->c[1], 0, 0),
+                     RC_F_REAL("Zc", &s->c[2], 0, 0)};
+    rc_field l3[] = {RC_F_REAL("a", &s->abc[0], 0, RC_FF_POS), RC_F_REAL("b", &s->abc[1], 0, RC_FF_POS),
+                     RC_F_REAL("c", &s->abc[2], 0, RC_FF_POS)};
+    rc_field l4[] = {RC_F_REAL("UX", &s->axis[0], 0, 0), RC_F_REAL("UY", &s->axis[1], 0, 0),
+                     RC_F_REAL("UZ", &s->axis[2], 0, 0)};
+    rc_field l5[] = {RC_F_REAL("VX", &s->axis2[0], 0, 0), RC_F_REAL("VY", &s->axis2[1], 0, 0),
+                     RC_F_REAL("VZ", &s->axis2[2], 0, 0)};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
+    if ((st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
+    if ((st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
+    /* orientation: global axes when lines 4 and 5 are absent */
+    s->axis[0] = 1.0;
+    s->axis2[1] = 1.0;
+    if (nd >= 4) {
+        s->axis[0] = 0.0;
+        if ((st = rc_parse_line(rd, b, &b->lines[4], l4, RC_NF(l4)))) return st;
+        if (!(norm3(s->axis) > 0))
+            return rc_case_fail(rd, &b->lines[4].loc, b->name, "UX UY UZ",
+                                "expected a non-zero axis vector u, got (0, 0, 0)");
+    }
+    if (nd >= 5) {
+        s->axis2[1] = 0.0;
+        if ((st = rc_parse_line(rd, b, &b->lines[5], l5, RC_NF(l5)))) return st;
+    }
+    /* v must not be parallel to u */
+    const double *u = s->axis, *v = s->axis2;
+    double w[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    if (!(norm3(w) > 1e-9 * norm3(u) * norm3(v)))
+        return rc_case_fail(rd, nd >= 5 ? &b->lines[5].loc : &b->hdr->loc, b->name, "VX VY VZ",
+                            "expected an axis v not parallel to u = (%.9g, %.9g, %.9g), got (%.9g, %.9g, %.9g)",
+                            u[0], u[1], u[2], v[0], v[1], v[2]);
+    return rc_note_id(rd, RC_IDK_SURF, s->id, &s->loc, b->hdr->text);
+}

@@ -297,17 +297,6 @@ done:
 }
 
 /* CSC position of (row, col), -1 when the entry is not in the pattern. */
-int64_t rc_jac_slot(const rc_model *m, int row, int col)
-{
-    int64_t lo = m->jac_colptr[col], hi = m->jac_colptr[col + 1] - 1;
-    while (lo <= hi) {
-        int64_t mid = lo + (hi - lo) / 2;
-        if (m->jac_rowind[mid] == row) return mid;
-        if (m->jac_rowind[mid] < row) lo = mid + 1;
-        else hi = mid - 1;
-    }
-    return -1;
-}
 
 static rc_status fill_slots(const rc_model *m, rc_jblock *jb, rc_error *err)
 {
@@ -413,24 +402,4 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
         if (st) return st;
     }
     return RC_OK;
-}
-
-void rc_jac_free(rc_model *m)
-{
-    if (m->jb_body)
-        for (int b = 0; b < m->nbody; b++) free(m->jb_body[b].slot);
-    if (m->jb_inter)
-        for (int i = 0; i < m->ninter; i++) free(m->jb_inter[i].slot);
-    if (m->cpl)
-        for (int k = 0; k < m->cpl->n; k++) {
-            free(m->cpl->jb[k].slot);
-            m->cpl->jb[k].slot = NULL;
-        }
-    free(m->jb_body);
-    free(m->jb_inter);
-    free(m->jac_colptr);
-    free(m->jac_rowind);
-    free(m->jac_diag);
-    m->jb_body = m->jb_inter = NULL;
-    m->jac_colptr = m->jac_rowind = m->jac_diag = NULL;
 }

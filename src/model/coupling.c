@@ -264,9 +264,3 @@ const char *rc_cpl_failed(const rc_model *m, const rc_data *d)
 {
     return d->cpl->fail >= 0 ? m->cpl->name[d->cpl->fail] : NULL;
 }
-
-void rc_cpl_gravity(const rc_model *m, double t, double g[3])
-{
-    const double f = rc_gravity_factor(m, t);
-    for (int k = 0; k < 3; k++) g[k] = m->cpl->grav[k] * f;
-}

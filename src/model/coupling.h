@@ -139,7 +139,7 @@ void rc_cat_ws_free(void *ws);
  * Returns 0, or 1 when the solver fails (recoverable). */
 int rc_cat_solve(const rc_couplings *cpl, int k, void *ws, double *warm, double X, double Y,
                  double w, rc_cat_sol *sol);
-/* Gravity acting on the lines at time t [m/s^2]. */
+/* Gravity acting on the lines at time t [m/s^2] (engine/body.c). */
 void rc_cpl_gravity(const rc_model *m, double t, double g[3]);
 
 /* ---- assembly (coupling_rhs.inc in assemble_rhs.c, coupling_jac.inc in

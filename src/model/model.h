@@ -304,6 +304,7 @@ enum {
     RC_E_KIN, RC_E_POT, RC_E_WORK, RC_E_DAMP, RC_E_FWORK, RC_E_STORED, RC_E_HYST, RC_E_FRIC,
     RC_E_CPL_ELASTIC, RC_E_CPL_DAMP, RC_E_CATENARY, RC_E_IMPOSED, RC_E_TOTAL, RC_NENERGY
 };
+/* (engine/energy.c) */
 void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, double e[RC_NENERGY]);
 /* Normal elastic energy stored in interface i (recoverable by unloading) [J]. */
 double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double t, const double *y);
@@ -323,7 +324,8 @@ void rc_friction_print(const rc_model *m, int i, FILE *f);
  * sliding speed v [m/s], normal force fn [N] (the kernel's law, for tests). */
 double rc_friction_mu(const rc_model *m, int i, int dir, double p, double v, double fn);
 
-/* ---- Jacobian pattern (jacpattern.c) ------------------------------- */
+/* ---- Jacobian pattern: built by probing (engine/jacpattern.c), read and
+ * released as model data (model/pattern.c) ----------------------------- */
 rc_status rc_jac_build(rc_model *m, rc_error *err);
 /* CSC position of (row, col), -1 when the entry is not in the pattern. */
 int64_t rc_jac_slot(const rc_model *m, int row, int col);

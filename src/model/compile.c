@@ -404,6 +404,7 @@ rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
     m->tol_auto = (m->atol_pos == 0 ? RC_TOL_AUTO_POS : 0) | (m->atol_quat == 0 ? RC_TOL_AUTO_QUAT : 0) |
                   (m->atol_vel == 0 ? RC_TOL_AUTO_VEL : 0) | (m->atol_omega == 0 ? RC_TOL_AUTO_OMEGA : 0) |
                   (m->atol_energy == 0 ? RC_TOL_AUTO_ENERGY : 0);
+    m->method = c->solver.method;
     m->max_order = c->solver.max_order;
     m->max_steps = c->solver.max_steps;
     m->hmax = c->solver.hmax;

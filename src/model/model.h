@@ -197,6 +197,7 @@ struct rc_model {
     int ev_state;        /* /RUN Ev_state: 0 auto, 1 always, 2 never (rc_event_records) */
     double rtol;
     double atol_pos, atol_quat, atol_vel, atol_omega, atol_energy;
+    int method;          /* /SOLVER Method: integration backend (src/solver/solver.h) */
     int max_order;
     long max_steps;
     double hmax, h0;     /* [s] */

@@ -1,6 +1,8 @@
 /*
  * CVODE backend: BDF + Newton + KLU on the fixed sparse pattern, with
- * rootfinding for the events. The only engine file that includes SUNDIALS.
+ * rootfinding for the events: the backend of /SOLVER Method 1 behind the
+ * interface of solver.h (rc_solver_cvode). The only file that includes
+ * SUNDIALS.
  *
  * Loop: integrate to the next output time; at a root, flip the modes
  * (events.c), write a record, and restart the integrator only when the
@@ -29,6 +31,7 @@
 #include "model/imposed.h"
 #include "output/output.h"
 #include "model/power.h"
+#include "solver/solver.h"
 
 /* A jump in ydot whose effect over one step, relative to the error weight,
  * exceeds this fraction triggers a restart after an event [-]. */
@@ -480,7 +483,7 @@ static void progress(const rc_model *m, const rc_stats *s, double t, long steps,
         }                                                                              \
     } while (0)
 
-rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, rc_error *err)
+static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, rc_error *err)
 {
     rc_status st = RC_OK;
     double t = 0.0; /* time reached [s] */
@@ -785,12 +788,5 @@ done:
     return st;
 }
 
-void rc_stats_print(const rc_stats *s, FILE *f)
-{
-    fprintf(f, "steps %ld, rhs %ld, jacobians %ld, lin. setups %ld, newton iters %ld, newton fails %ld, "
-               "error-test fails %ld, root evals %ld\n",
-            s->steps, s->rhs_evals, s->jac_evals, s->lin_setups, s->nonlin_iters, s->nonlin_fails,
-            s->err_test_fails, s->root_evals);
-    fprintf(f, "events %ld, restarts %ld, simulated %.6g s in %.3f s wall, energy balance residual %.3g J\n",
-            s->events, s->reinits, s->t_end, s->wall_time, s->energy_residual);
-}
+/* The backend of /SOLVER Method 1 (solver.h). */
+const rc_solver rc_solver_cvode = {"cvode", RC_METHOD_CVODE, cvode_run};

@@ -191,31 +191,6 @@ void rc_cpl_free(rc_couplings *p)
     free(p);
 }
 
-void rc_cpl_print_summary(const rc_model *m, FILE *f)
-{
-    static const char *const form_name[5] = {"", "constant k", "polynomial k_eff", "force table f_e(x)",
-                                             "stiffness table k(x)"};
-    const rc_couplings *p = m->cpl;
-    fprintf(f, "couplings   %d\n", p->n);
-    double *y = malloc(((size_t)m->ny + 1) * sizeof(double));
-    if (y) rc_initial_state(m, y);
-    for (int k = 0; k < p->n && k < 20; k++) {
-        const int ids[2] = {p->b1[k] >= 0 ? m->body_id[p->b1[k]] : 0, p->b2[k] >= 0 ? m->body_id[p->b2[k]] : 0};
-        rc_cpl_report r;
-        const int ok = y && rc_cpl_report_eval(m, NULL, k, 0.0, y, &r) == 0;
-        fprintf(f, "  %-22s bodies %d-%d, ", p->name[k], ids[0], ids[1]);
-        if (p->kind[k] == RC_CPL_SPRING)
-            fprintf(f, "%s, x0 %.5g m, k_d %.5g N s/m; at t = 0: length %.5g m, force %.5g N\n",
-                    form_name[p->form[k]], p->x0[k], p->kd[k], ok ? r.length : NAN, ok ? r.force : NAN);
-        else
-            fprintf(f, "lambda0 %.5g kg/m, L_eq %.5g m, EA %.5g N; at t = 0: distance %.5g m, tension at end 1 %.5g N, "
-                    "lowest point %.5g m along -g%s\n",
-                    p->lambda0[k], p->leq[k], p->ea[k], ok ? r.length : NAN, ok ? r.force : NAN,
-                    ok ? r.lowest : NAN, ok ? "" : " (catenary equations not solved)");
-    }
-    if (p->n > 20) fprintf(f, "  ... and %d more couplings (the first 20 in deck order are listed)\n", p->n - 20);
-    free(y);
-}
 
 /* ---- run data ------------------------------------------------------------ */
 rc_cpl_data *rc_cpl_data_new(const rc_model *m)
@@ -244,21 +219,6 @@ void rc_cpl_data_free(rc_cpl_data *cd)
     free(cd);
 }
 
-void rc_cpl_frame(const rc_model *m, const rc_data *d, double t, const double *y, double *buf)
-{
-    const int n = m->cpl->n;
-    for (int k = 0; k < n; k++) {
-        rc_cpl_report r;
-        rc_cpl_report_eval(m, d, k, t, y, &r);
-        buf[k] = r.force;
-        buf[n + k] = r.length;
-        for (int i = 0; i < 3; i++) {
-            buf[2 * n + 3 * k + i] = r.f1[i];
-            buf[5 * n + 3 * k + i] = r.f2[i];
-        }
-        buf[8 * n + k] = r.lowest;
-    }
-}
 
 const char *rc_cpl_failed(const rc_model *m, const rc_data *d)
 {

@@ -117,7 +117,7 @@ void rc_cpl_atol(rc_model *m);
  * its energy states, columns = all states of its free bodies. */
 void rc_cpl_block(const rc_model *m, int k, rc_jblock *jb);
 void rc_cpl_free(rc_couplings *cpl);
-void rc_cpl_print_summary(const rc_model *m, FILE *f);
+void rc_cpl_print_summary(const rc_model *m, FILE *f); /* engine/report.c */
 
 /* ---- data ------------------------------------------------------------ */
 rc_cpl_data *rc_cpl_data_new(const rc_model *m);
@@ -161,7 +161,7 @@ int rc_cpl_jac(const rc_model *m, rc_data *d, double t, const double *y, double 
  * force [n], length [n], force on end 1 [3 n], force on end 2 [3 n],
  * lowest point of a catenary [n] (NaN for springs) (rc_cpl_report; NaN for
  * a catenary that cannot be solved). */
-void rc_cpl_frame(const rc_model *m, const rc_data *d, double t, const double *y, double *buf);
+void rc_cpl_frame(const rc_model *m, const rc_data *d, double t, const double *y, double *buf); /* engine/report.c */
 /* Name of the coupling whose forces failed in the last right-hand side or
  * Jacobian, NULL when none. */
 const char *rc_cpl_failed(const rc_model *m, const rc_data *d);

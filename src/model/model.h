@@ -315,6 +315,12 @@ double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double
 void rc_jac_dense_block(const rc_model *m, int is_inter, int e, int mode, int branch, int track, int slip,
                         double t, const double *y, double *out);
 
+/* ---- compile (model/compile.c) ------------------------------------ */
+/* The model of a case up to its state layout, without the scales,
+ * tolerances and Jacobian pattern: those evaluate the kernels and follow in
+ * rc_model_compile (engine/prepare.c). On failure *out stays NULL. */
+rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err);
+
 /* ---- friction (friction_compile.c) ------------------------------- */
 struct rc_case;
 /* Apply the /FRICTION cards to the interfaces between the parts they name

@@ -1,0 +1,23 @@
+/*
+ * rc_model_compile: the model stage's rc_model_build (model/compile.c:
+ * bodies, surfaces, interfaces, friction, couplings, imposed velocities,
+ * state layout), then the two analyses that evaluate the kernels: the
+ * scales and tolerances (scales.c) and the Jacobian pattern by probing
+ * (jacpattern.c). Here, above both, so that src/model never calls the
+ * engine.
+ */
+#include "model/model.h"
+
+rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
+{
+    rc_model *m = NULL;
+    *out = NULL;
+    rc_status st = rc_model_build(c, &m, err);
+    if (st) return st;
+    if ((st = rc_model_scales(m, err)) || (st = rc_model_tolerances(m, err)) || (st = rc_jac_build(m, err))) {
+        rc_model_free(m);
+        return st;
+    }
+    *out = m;
+    return RC_OK;
+}

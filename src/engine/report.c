@@ -1,0 +1,130 @@
+/*
+ * Reports of a model that evaluate the kernels: the summary of `ricochet
+ * check` (rc_model_print_summary, with the couplings at t = 0) and the
+ * coupling values of an output frame (rc_cpl_frame).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "model/coupling.h"
+#include "model/geom.h"
+#include "model/imposed.h"
+#include "model/model.h"
+#include "model/power.h"
+
+void rc_model_print_summary(const rc_model *m, FILE *f)
+{
+    fprintf(f, "case        %s (checksum %016lx)\n", m->case_path, m->checksum);
+    if (m->title[0]) fprintf(f, "title       %s\n", m->title);
+    fprintf(f, "units       %s\n", m->unit_mass[0] ? "" : "undeclared (one consistent system assumed)");
+    if (m->unit_mass[0]) fprintf(f, "            mass %s, length %s, time %s\n", m->unit_mass, m->unit_length, m->unit_time);
+    fprintf(f, "bodies      %d (%d free, %d fixed)\n", m->nbody, m->nfree, m->nbody - m->nfree);
+    for (int b = 0; b < m->nbody && b < 20; b++) {
+        const double *y0 = m->body_y0 + RC_NB * b;
+        fprintf(f, "  /RBODY/%-6d mass %-11.5g x0 (%.5g, %.5g, %.5g) v0 (%.5g, %.5g, %.5g)%s\n", m->body_id[b],
+                m->body_mass[b], y0[0], y0[1], y0[2], y0[7], y0[8], y0[9], m->body_fixed[b] ? " fixed" : "");
+    }
+    if (m->nbody > 20) fprintf(f, "  ... and %d more bodies (the first 20 in deck order are listed)\n", m->nbody - 20);
+    fprintf(f, "surfaces    %d\n", m->nsurf);
+    fprintf(f, "interfaces  %d\n", m->ninter);
+    for (int i = 0; i < m->ninter && i < 20; i++) {
+        if (m->inter_law[i] == RC_LAW_POWER) {
+            rc_power_print(m, i, f); /* power_compile.c */
+            continue;
+        }
+        fprintf(f, "  %-18s %s, Iform %d, Gap %.5g, Visc %.5g, Stiff %.5g, Inacti %d, Tstart %.5g, Tstop %.5g\n",
+                m->inter_name[i], rc_geom_pair_name(m->inter_pair[i]), m->inter_iform[i], m->inter_gap[i],
+                m->inter_visc[i], m->inter_stiff[i], m->inter_inacti[i], m->inter_tstart[i], m->inter_tstop[i]);
+    }
+    for (int i = 0; i < m->ninter && i < 20; i++) rc_friction_print(m, i, f);
+    if (m->ninter > 20)
+        fprintf(f, "  ... and %d more interfaces (the first 20 in deck order are listed)\n", m->ninter - 20);
+    rc_cpl_print_summary(m, f);
+    rc_imp_print(m, f);
+    fprintf(f, "states      %d, Jacobian nonzeros %lld\n", m->ny, (long long)m->nnz);
+    fprintf(f, "run         end time %.6g s, output every %.6g s\n", m->tend, m->dtout);
+    if (m->ev_state == 0)
+        fprintf(f, "            full-state records at events: %s (Ev_state 0: while bodies <= %d)\n",
+                rc_event_records(m) ? "yes" : "no, events table only", RC_EVREC_MAX_BODIES);
+    else
+        fprintf(f, "            full-state records at events: %s (Ev_state %d)\n",
+                m->ev_state == 1 ? "yes" : "no, events table only", m->ev_state);
+    fprintf(f, "solver      CVODE BDF (max order %d), Newton, KLU; rtol %.3g\n", m->max_order, m->rtol);
+    /* the tolerances in force: given on /SOLVER, or derived from the scales */
+    const int au = m->tol_auto;
+    if (au == 0) {
+        fprintf(f, "            atol: position %.3g m, quaternion %.3g, velocity %.3g m/s, angular %.3g rad/s, energy %.3g J\n",
+                m->atol_pos, m->atol_quat, m->atol_vel, m->atol_omega, m->atol_energy);
+    } else {
+        double lo[4] = {INFINITY, INFINITY, INFINITY, INFINITY}, hi[4] = {0, 0, 0, 0};
+        for (int b = 0; b < m->nbody; b++) {
+            if (m->body_yadr[b] < 0) continue;
+            const int off[4] = {0, 3, 7, 10};
+            for (int k = 0; k < 4; k++) {
+                const double a = m->atol[m->body_yadr[b] + off[k]];
+                lo[k] = fmin(lo[k], a);
+                hi[k] = fmax(hi[k], a);
+            }
+        }
+        fprintf(f, "            atol (%s): position %.3g..%.3g m%s, quaternion %.3g..%.3g, velocity %.3g..%.3g m/s,\n"
+                   "            angular %.3g..%.3g rad/s, energy %.3g J\n",
+                au == (RC_TOL_AUTO_POS | RC_TOL_AUTO_QUAT | RC_TOL_AUTO_VEL | RC_TOL_AUTO_OMEGA | RC_TOL_AUTO_ENERGY)
+                    ? "derived from the contact scales"
+                    : "blank fields derived from the contact scales",
+                lo[0], hi[0], m->ewt_rel ? " (absolute)" : "", lo[1], hi[1], lo[2], hi[2], lo[3], hi[3], m->atol_energy);
+    }
+    int nsc = 0;
+    for (int i = 0; i < m->ninter; i++) nsc += isfinite(m->inter_pscale[i]) != 0;
+    fprintf(f, "scales      %d of %d interfaces scaled (penetration p_s, force F_s, speed v_s)\n", nsc, m->ninter);
+    for (int i = 0, shown = 0; i < m->ninter && shown < 20; i++, shown++) {
+        if (isfinite(m->inter_pscale[i]))
+            fprintf(f, "  %-18s p_s %.4g m, F_s %.4g N, k_s %.4g N/m, v_s %.4g m/s\n", m->inter_name[i],
+                    m->inter_pscale[i], m->inter_fscale[i], m->inter_kscale[i], m->inter_vscale[i]);
+        else
+            fprintf(f, "  %-18s no scale (no gravity or speed reaches it): fixed fallback tolerances\n", m->inter_name[i]);
+    }
+    if (m->ninter > 20) fprintf(f, "  ... %d more\n", m->ninter - 20);
+}
+
+void rc_cpl_print_summary(const rc_model *m, FILE *f)
+{
+    static const char *const form_name[5] = {"", "constant k", "polynomial k_eff", "force table f_e(x)",
+                                             "stiffness table k(x)"};
+    const rc_couplings *p = m->cpl;
+    fprintf(f, "couplings   %d\n", p->n);
+    double *y = malloc(((size_t)m->ny + 1) * sizeof(double));
+    if (y) rc_initial_state(m, y);
+    for (int k = 0; k < p->n && k < 20; k++) {
+        const int ids[2] = {p->b1[k] >= 0 ? m->body_id[p->b1[k]] : 0, p->b2[k] >= 0 ? m->body_id[p->b2[k]] : 0};
+        rc_cpl_report r;
+        const int ok = y && rc_cpl_report_eval(m, NULL, k, 0.0, y, &r) == 0;
+        fprintf(f, "  %-22s bodies %d-%d, ", p->name[k], ids[0], ids[1]);
+        if (p->kind[k] == RC_CPL_SPRING)
+            fprintf(f, "%s, x0 %.5g m, k_d %.5g N s/m; at t = 0: length %.5g m, force %.5g N\n",
+                    form_name[p->form[k]], p->x0[k], p->kd[k], ok ? r.length : NAN, ok ? r.force : NAN);
+        else
+            fprintf(f, "lambda0 %.5g kg/m, L_eq %.5g m, EA %.5g N; at t = 0: distance %.5g m, tension at end 1 %.5g N, "
+                    "lowest point %.5g m along -g%s\n",
+                    p->lambda0[k], p->leq[k], p->ea[k], ok ? r.length : NAN, ok ? r.force : NAN,
+                    ok ? r.lowest : NAN, ok ? "" : " (catenary equations not solved)");
+    }
+    if (p->n > 20) fprintf(f, "  ... and %d more couplings (the first 20 in deck order are listed)\n", p->n - 20);
+    free(y);
+}
+
+void rc_cpl_frame(const rc_model *m, const rc_data *d, double t, const double *y, double *buf)
+{
+    const int n = m->cpl->n;
+    for (int k = 0; k < n; k++) {
+        rc_cpl_report r;
+        rc_cpl_report_eval(m, d, k, t, y, &r);
+        buf[k] = r.force;
+        buf[n + k] = r.length;
+        for (int i = 0; i < 3; i++) {
+            buf[2 * n + 3 * k + i] = r.f1[i];
+            buf[5 * n + 3 * k + i] = r.f2[i];
+        }
+        buf[8 * n + k] = r.lowest;
+    }
+}

@@ -4,7 +4,7 @@
  *   /COUPLING/CATENARY/cpl_ID   elastic catenary [CPL-CAT]
  * Layouts as field tables (case_internal.h), documented in
  * docs/case-format.md. References (bodies, functions) are resolved by the
- * compiler (coupling_compile.c).
+ * compiler (model/coupling.c).
  */
 #include "case/case_coupling.h"
 #include "case/case_internal.h"

@@ -279,7 +279,7 @@ struct rc_case {
     rc_case_solver solver;
 
     int nwarnings; char **warnings; /* "file:line: ..." ignored-card warnings */
-    struct rc_case_index *index; /* sorted ids for the look-ups (case_lookup.c); NULL: scan */
+    struct rc_case_index *index; /* sorted ids for the look-ups (case/lookup.c); NULL: scan */
 };
 
 typedef struct rc_case_index rc_case_index;
@@ -289,7 +289,7 @@ typedef struct rc_case_index rc_case_index;
 rc_status rc_case_index_build(rc_case *c, rc_error *err);
 void rc_case_index_free(rc_case_index *x);
 /* Index of the card with this id in its array (the first one), or -1
- * (case_lookup.c); O(log N) with the index. */
+ * (case/lookup.c); O(log N) with the index. */
 int rc_case_find_funct(const rc_case *c, int id);
 int rc_case_find_node(const rc_case *c, int id);
 int rc_case_find_grnod(const rc_case *c, int id);

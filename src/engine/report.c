@@ -8,7 +8,6 @@
 #include <stdlib.h>
 
 #include "model/coupling.h"
-#include "model/geom.h"
 #include "model/imposed.h"
 #include "model/model.h"
 #include "model/power.h"
@@ -30,7 +29,7 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
     fprintf(f, "interfaces  %d\n", m->ninter);
     for (int i = 0; i < m->ninter && i < 20; i++) {
         if (m->inter_law[i] == RC_LAW_POWER) {
-            rc_power_print(m, i, f); /* power_compile.c */
+            rc_power_print(m, i, f); /* model/power.c */
             continue;
         }
         fprintf(f, "  %-18s %s, Iform %d, Gap %.5g, Visc %.5g, Stiff %.5g, Inacti %d, Tstart %.5g, Tstop %.5g\n",

@@ -174,7 +174,7 @@ static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
         /* local frame: body frame = global at t = 0, origin at the CoM */
         const double *org = b >= 0 ? m->body_y0 + RC_NB * b : m->ground_y0;
         if (cs->kind == RC_CASE_SURF_CYL || cs->kind == RC_CASE_SURF_BOX) {
-            rc_geom_surface(cs, m, s, org); /* geom_compile.c */
+            rc_geom_surface(cs, m, s, org); /* model/geom.c */
         } else if (cs->kind == RC_CASE_SURF_PLANE) {
             double n[3], len = 0;
             for (int k = 0; k < 3; k++) {
@@ -260,7 +260,7 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     if (s1 < 0 || s2 < 0)
         RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field %s: expected the id of a /SURF, got %d (no such surface)",
                  RC_LOC(t6->line_loc[0]), card, s1 < 0 ? "surf_ID1" : "surf_ID2", s1 < 0 ? t6->surf1 : t6->surf2);
-    /* order the pair (a: sphere or cylinder) and name its kind (geom_compile.c) */
+    /* order the pair (a: sphere or cylinder) and name its kind (model/geom.c) */
     char where[600];
     snprintf(where, sizeof where, RC_LOCFMT "card %s", RC_LOC(t6->line_loc[0]), card);
     rc_status pst = rc_geom_pair(m, s1, s2, &s1, &s2, &m->inter_pair[i], where, err);
@@ -482,10 +482,10 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->inter_pw, m->ninter);
     for (int i = 0; i < c->ntype6; i++)
         if ((st = compile_type6(c, m, i, err))) goto fail;
-    for (int k = 0; k < c->npower; k++) /* power_compile.c */
+    for (int k = 0; k < c->npower; k++) /* model/power.c */
         if ((st = rc_power_compile(c, m, k, c->ntype6 + k, err))) goto fail;
     if ((st = rc_friction_compile(c, m, err))) goto fail;
-    /* couplings (coupling_compile.c) */
+    /* couplings (model/coupling.c) */
     if ((st = rc_cpl_compile(c, m, err))) goto fail;
     /* imposed velocities (imposed.c) */
     if ((st = rc_imp_compile(c, m, err))) goto fail;

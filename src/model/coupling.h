@@ -105,7 +105,7 @@ typedef struct rc_cpl_data {
     int fail;            /* coupling whose forces failed in the last call, -1 */
 } rc_cpl_data;
 
-/* ---- compile (coupling_compile.c) ---------------------------------- */
+/* ---- compile (model/coupling.c) ---------------------------------- */
 struct rc_case;
 /* Resolve and check the /COUPLING cards into m->cpl (always allocated). */
 rc_status rc_cpl_compile(const struct rc_case *c, rc_model *m, rc_error *err);

@@ -62,7 +62,7 @@ static int cmp_int(const void *a, const void *b)
 /* Part of every surface (index into c->part, -1: none). Each part's
  * surfaces are visited in index order, as a scan of all surfaces would, so
  * the first error reported is the same; look-ups by id are binary searches
- * (case_lookup.c), and the surfaces of a body come from a table built once,
+ * (case/lookup.c), and the surfaces of a body come from a table built once,
  * so that many parts cost O(N log N), not O(parts x surfaces). */
 static rc_status surface_parts(const rc_case *c, const rc_model *m, int *spart, rc_error *err)
 {

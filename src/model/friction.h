@@ -1,7 +1,7 @@
 /*
  * Friction of one interface: TYPE6's own (Sfric + Fric f_ff f_fv) or a
  * /FRICTION law that overrides it (SPEC 6). One parameter record per
- * interface, resolved at compile time (friction_compile.c); the kernel is in
+ * interface, resolved at compile time (model/friction.c); the kernel is in
  * kernels.inc (friction()). docs/theory.md 3.5 and 6.
  */
 #ifndef RC_FRICTION_H

@@ -1,5 +1,5 @@
 /*
- * Geometry set-up at compile time (geom_compile.c): the analytic cylinder
+ * Geometry set-up at compile time (model/geom.c): the analytic cylinder
  * and box surfaces (/SURF/CYL, /SURF/BOX) in the body frame, and the pair
  * kind of an interface from its two surfaces (with an input error for a
  * pair ricochet does not support). The kernels are in kernels.inc and
@@ -24,8 +24,5 @@ void rc_geom_surface(const rc_case_surf *cs, rc_model *m, int s, const double *o
  * pair is not supported. */
 rc_status rc_geom_pair(const rc_model *m, int s1, int s2, int *sa, int *sb, rc_pair_kind *kind, const char *where,
                        rc_error *err);
-
-/* "sphere-plane", "cylinder-box", ... */
-const char *rc_geom_pair_name(rc_pair_kind kind);
 
 #endif

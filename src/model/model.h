@@ -62,6 +62,8 @@ typedef enum {
     RC_PAIR_CYL_CYL = 5,      /* a, b: cylinders with parallel axes   */
     RC_PAIR_SPHERE_BOX = 6    /* a: sphere, b: box (nearest face)     */
 } rc_pair_kind;
+/* "sphere-plane", "cylinder-box", ... (model/geom.c) */
+const char *rc_geom_pair_name(rc_pair_kind kind);
 
 /* Interface modes (discrete state, changed only at events):
  *   INACTIVE  outside [Tstart, Tstop]: no force, history frozen
@@ -321,7 +323,7 @@ void rc_jac_dense_block(const rc_model *m, int is_inter, int e, int mode, int br
  * rc_model_compile (engine/prepare.c). On failure *out stays NULL. */
 rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err);
 
-/* ---- friction (friction_compile.c) ------------------------------- */
+/* ---- friction (model/friction.c) ------------------------------- */
 struct rc_case;
 /* Apply the /FRICTION cards to the interfaces between the parts they name
  * (after the TYPE6 interfaces are compiled, before the state layout). */

@@ -95,7 +95,7 @@ static inline double rc_powreg_slope(double x, double m, double xr)
 }
 
 /* Elastic energy stored in a power-law interface at penetration p [J]:
- * the integral of F_k from 0 to p (power_compile.c). */
+ * the integral of F_k from 0 to p (model/power.c). */
 struct rc_model;
 struct rc_case;
 double rc_power_stored(const struct rc_model *m, int i, double p);

@@ -12,7 +12,6 @@
 
 #include <string.h>
 
-
 /* New coupling of the given kind, its header checked and its title read;
  * lines 2 and 3 (the attachment points) parsed. `nmin`, `nmax`: data lines. */
 static rc_status rc_new_coupling(rc_reader *rd, const rc_block *b, rc_case_cpl_kind kind,

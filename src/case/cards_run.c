@@ -39,9 +39,8 @@ static rc_status rc_single(rc_reader *rd, const rc_block *b, const rc_line **slo
     return RC_OK;
 }
 
-
 /* ======================================================================
- * /BEGIN and /NODE
+ * /BEGIN
  * ====================================================================== */
 
 /* /BEGIN: run name; Invers Irun; input units; work units (= input). */

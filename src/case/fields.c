@@ -398,7 +398,7 @@ rc_status rc_parse_line(rc_reader *rd, const rc_block *b, const rc_line *ln, rc_
 }
 
 /* ======================================================================
- * Duplicate ids (pass 3)
+ * Duplicate ids: the notes (the check, pass 3, is in reader.c)
  * ====================================================================== */
 
 rc_status rc_note_id(rc_reader *rd, rc_id_kind kind, int id, const rc_loc *loc, const char *card)
@@ -442,7 +442,6 @@ rc_status rc_header(rc_reader *rd, const rc_block *b, int nkw, rc_id_mode mode,
                             unit);
     return RC_OK;
 }
-
 
 /* Lines of a card of variable length: title, then any number of lines
  * (trailing blank lines dropped). */

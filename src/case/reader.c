@@ -376,7 +376,6 @@ static rc_status rc_read_blocks(rc_reader *rd)
     return RC_OK;
 }
 
-
 static int rc_cmp_id(const void *pa, const void *pb)
 {
     const rc_id_entry *a = pa, *b = pb;

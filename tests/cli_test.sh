@@ -27,6 +27,12 @@ else expect input_error 2 99 "(message or output wrong: $(head -c 200 "$tmp/e"))
 "$bin" run "$tmp/missing.rad" > "$tmp/e" 2>&1; expect missing_case 4 $? "($(head -c 120 "$tmp/e"))"
 "$bin" run "$demo" -o "$tmp/no/such/dir/out.nc" > "$tmp/e" 2>&1; expect unwritable_output 4 $? "($(head -c 120 "$tmp/e"))"
 
+# the output path is the case file itself: refused, the deck untouched
+cp "$demo" "$tmp/self.rad"
+"$bin" run "$tmp/self.rad" -o "$tmp/self.rad" > "$tmp/e" 2>&1; rc=$?
+if cmp -s "$demo" "$tmp/self.rad" && grep -q "refusing to overwrite" "$tmp/e"; then expect output_is_input 2 $rc "($(head -c 160 "$tmp/e"))"
+else expect output_is_input 2 99 "(deck changed or no message: $(head -c 200 "$tmp/e"))"; fi
+
 # solver failure: too few steps allowed; partial results kept, marked incomplete
 awk '/^\/SOLVER/{print; getline; print "         1         5         5               1e-06"; next} {print}' "$demo" > "$tmp/fail.rad"
 "$bin" run "$tmp/fail.rad" -o "$tmp/fail.nc" > "$tmp/e" 2>&1; rc=$?

@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "ricochet/ricochet.h"
 
@@ -70,6 +71,15 @@ int main(int argc, char **argv)
     }
     if (!case_path || (strcmp(cmd, "run") && strcmp(cmd, "check"))) {
         usage(stderr);
+        return 2;
+    }
+    /* never write the results over the case file itself */
+    struct stat sin, sout;
+    if (out && !strcmp(cmd, "run") && stat(case_path, &sin) == 0 && stat(out, &sout) == 0 &&
+        sin.st_dev == sout.st_dev && sin.st_ino == sout.st_ino) {
+        fprintf(stderr, "ricochet: the output file '%s' is the case file '%s': refusing to overwrite the input "
+                        "(give another -o path)\n",
+                out, case_path);
         return 2;
     }
     rc_case *c = NULL;

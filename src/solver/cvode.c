@@ -477,8 +477,10 @@ static void progress(const rc_model *m, const rc_stats *s, double t, long steps,
     do {                                                                               \
         int flag_ = (call);                                                            \
         if (flag_ < 0) {                                                               \
+            char *name_ = CVodeGetReturnFlagName(flag_); /* malloc'ed by CVODE */      \
             st = RC_SET(err, RC_ESOLVER, "CVODE setup failed in %s: %s", what,         \
-                        CVodeGetReturnFlagName(flag_));                                \
+                        name_ ? name_ : "?");                                          \
+            free(name_);                                                               \
             goto done;                                                                 \
         }                                                                              \
     } while (0)
@@ -628,10 +630,12 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
         }
         if (flag < 0) {
             const char *cf = rc_cpl_failed(m, d);
-            snprintf(reason, sizeof reason, "CVODE failed at t = %.9g s: %s%s%s%s%s", t, CVodeGetReturnFlagName(flag),
+            char *fname = CVodeGetReturnFlagName(flag); /* malloc'ed by CVODE */
+            snprintf(reason, sizeof reason, "CVODE failed at t = %.9g s: %s%s%s%s%s", t, fname ? fname : "?",
                      d->fail_inter >= 0 ? "; non-finite force in " : "",
                      d->fail_inter >= 0 ? m->inter_name[d->fail_inter] : "",
                      cf ? "; no force from " : "", cf ? cf : "");
+            free(fname);
             fail_reason = reason;
             st = RC_SET(err, RC_ESOLVER, "%s", reason);
             break;

@@ -4,6 +4,7 @@
  * and build the Jacobian pattern. Every error names the file:line and card
  * of the reference that is wrong.
  */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -69,12 +70,37 @@ static int inv3(const double *a, double *o)
 /* ---- bodies ------------------------------------------------------------ */
 static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
 {
+    /* main node -> the body that took it (+1), to refuse a second one */
+    int *owner = calloc((size_t)c->nnode + 1, sizeof(int));
+    if (!owner) RC_RAISE(err, RC_ENOMEM, "out of memory");
     for (int b = 0; b < c->nrbody; b++) {
         const rc_case_rbody *rb = &c->rbody[b];
         int nd = rc_case_find_node(c, rb->node_id);
-        if (nd < 0)
+        if (nd < 0) {
+            free(owner);
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field node_ID: expected the id of a /NODE, got %d (no such node)",
                      RC_LOC(rb->loc), rb->id, rb->node_id);
+        }
+        if (owner[nd]) {
+            const rc_case_rbody *first = &c->rbody[owner[nd] - 1];
+            free(owner);
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field node_ID: node %d is already the main node of /RBODY/%d (%s:%d); expected a node of its own",
+                     RC_LOC(rb->loc), rb->id, rb->node_id, first->id, first->loc.file, first->loc.line);
+        }
+        owner[nd] = b + 1;
+        /* a mass or inertia below the smallest normal number is no body:
+         * its inverse overflows the accelerations at t = 0 */
+        if (!(rb->mass >= DBL_MIN) || !isfinite(rb->mass)) {
+            free(owner);
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field Mass: expected a finite mass of at least %g (a normal number) [kg], got %g",
+                     RC_LOC(rb->loc), rb->id, DBL_MIN, rb->mass);
+        }
+        for (int k = 0; k < 3; k++)
+            if (!(rb->J[k] >= DBL_MIN) || !isfinite(rb->J[k])) {
+                free(owner);
+                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field %s: expected a finite moment of inertia of at least %g [kg m^2], got %g",
+                         RC_LOC(rb->loc), rb->id, k == 0 ? "Jxx" : k == 1 ? "Jyy" : "Jzz", DBL_MIN, rb->J[k]);
+            }
         if (rb->grnod_id && rc_case_find_grnod(c, rb->grnod_id) < 0)
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field grnd_ID: expected the id of a /GRNOD, got %d (no such group)",
                      RC_LOC(rb->loc), rb->id, rb->grnod_id);
@@ -86,13 +112,18 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
         J[1] = J[3] = rb->J[3];
         J[5] = J[7] = rb->J[4];
         J[2] = J[6] = rb->J[5];
-        if (inv3(J, m->body_Jinv + 9 * b))
+        int bad = inv3(J, m->body_Jinv + 9 * b);
+        for (int k = 0; k < 9; k++) bad |= !isfinite(m->body_Jinv[9 * b + k]);
+        if (bad) {
+            free(owner);
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, fields Jxx..Jxz: expected a positive-definite inertia tensor",
                      RC_LOC(rb->loc), rb->id);
+        }
         double *y0 = m->body_y0 + RC_NB * b;
         memcpy(y0, c->node[nd].x, 3 * sizeof(double));
         y0[3] = 1.0; /* body frame = global frame at t = 0 */
     }
+    free(owner);
     /* initial velocities */
     int *flag = calloc((size_t)c->nrbody + 1, sizeof(int));
     if (!flag) RC_RAISE(err, RC_ENOMEM, "out of memory");

@@ -39,6 +39,20 @@ awk '/^\/SOLVER/{print; getline; print "         1         5         5          
 if [ -e "$tmp/fail.nc" ] && ncdump -h "$tmp/fail.nc" | grep -q ':complete = "no"'; then expect solver_failure 3 $rc "(partial file kept, complete = no)"
 else expect solver_failure 3 99 "(no partial file marked incomplete: $(head -c 200 "$tmp/e"))"; fi
 
+# interrupted (SIGINT, SIGTERM): the run ends at the next step, keeps what it
+# computed (records flushed, marked incomplete, statistics written), exit 130
+awk '/^\/RUN/{print; getline; print "              100000                   1"; next} {print}' \
+    validation/cpl_spring_cubic/case.rad > "$tmp/long.rad"
+for sig in INT TERM; do
+    timeout --preserve-status -s $sig 2 "$bin" run "$tmp/long.rad" -o "$tmp/long_$sig.nc" -q > "$tmp/e" 2>&1; rc=$?
+    if [ -e "$tmp/long_$sig.nc" ] && ncdump -h "$tmp/long_$sig.nc" | grep -q ':complete = "no"' &&
+       ncdump -h "$tmp/long_$sig.nc" | grep -q 'interrupted at t' && ncdump -h "$tmp/long_$sig.nc" | grep -q 'stats_steps' &&
+       [ "$(ncdump -h "$tmp/long_$sig.nc" | sed -n 's/^[[:space:]]*time = UNLIMITED ; \/\/ (\([0-9]*\) currently).*/\1/p')" -gt 1 ] &&
+       grep -q "interrupted" "$tmp/e"; then
+        expect "interrupt_$sig" 130 $rc "(records kept, complete = no, statistics written: $(head -c 120 "$tmp/e"))"
+    else expect "interrupt_$sig" 130 99 "(exit $rc; file or message wrong: $(head -c 200 "$tmp/e"))"; fi
+done
+
 # determinism: two runs give identical time series
 "$bin" run "$demo" -o "$tmp/a.nc" -q && "$bin" run "$demo" -o "$tmp/b.nc" -q
 if cmp -s <(ncdump -v body_position "$tmp/a.nc" | sed -n '/data:/,$p') <(ncdump -v body_position "$tmp/b.nc" | sed -n '/data:/,$p'); then

@@ -11,6 +11,7 @@
 #ifndef RICOCHET_H
 #define RICOCHET_H
 
+#include <signal.h>
 #include <stdio.h>
 
 #ifdef __cplusplus
@@ -27,7 +28,9 @@ typedef enum {
     RC_ESOLVER = 3,   /* the integrator failed; partial results are kept */
     RC_EIO = 4,       /* a file could not be read or written             */
     RC_ENOMEM = 5,    /* out of memory                                   */
-    RC_EINTERNAL = 6  /* a bug in ricochet                               */
+    RC_EINTERNAL = 6, /* a bug in ricochet                               */
+    RC_EINTERRUPT = 7 /* stopped by the caller (a signal); partial results
+                         are kept, marked incomplete                     */
 } rc_status;
 
 /* An error report. `msg` is complete and printable on its own: for input
@@ -42,7 +45,8 @@ typedef struct rc_error {
 
 /* Static message of a status code (never NULL). */
 const char *rc_status_str(rc_status code);
-/* Process exit code for a status: 0, 2, 3, 4; 1 for other failures. */
+/* Process exit code for a status: 0, 2, 3, 4; 130 when interrupted (the
+ * shell's 128 + SIGINT); 1 for other failures. */
 int rc_status_exit_code(rc_status code);
 /* Version string, e.g. "0.1.0". */
 const char *rc_version(void);
@@ -93,6 +97,11 @@ typedef struct rc_run_options {
     double *y_end;           /* non-NULL: receives the final state vector,
                                 rc_model_state_size(m) values (layout in
                                 docs/theory.md)                          */
+    volatile sig_atomic_t *stop; /* non-NULL: when it becomes non-zero (set
+                                by a signal handler), the run ends at the next
+                                right-hand-side evaluation, writes what it
+                                computed (marked incomplete, with its
+                                statistics) and returns RC_EINTERRUPT   */
 } rc_run_options;
 
 /* Number of values in the state vector of a model. */

@@ -14,6 +14,7 @@ const char *rc_status_str(rc_status code)
     case RC_EIO: return "I/O error";
     case RC_ENOMEM: return "out of memory";
     case RC_EINTERNAL: return "internal error";
+    case RC_EINTERRUPT: return "interrupted";
     }
     return "unknown status";
 }
@@ -25,6 +26,7 @@ int rc_status_exit_code(rc_status code)
     case RC_EINPUT: return 2;
     case RC_ESOLVER: return 3;
     case RC_EIO: return 4;
+    case RC_EINTERRUPT: return 130;
     default: return 1;
     }
 }

@@ -1,4 +1,5 @@
 /* ricochet command-line program: run, check, --help, --version. */
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -44,8 +45,26 @@ static int load(const char *path, rc_case **c, rc_model **m, rc_error *e)
     return 0;
 }
 
+/* Set by SIGINT or SIGTERM; the run polls it (rc_run_options.stop). */
+static volatile sig_atomic_t stop_requested = 0;
+
+static void on_signal(int sig)
+{
+    (void)sig;
+    stop_requested = 1;
+}
+
 int main(int argc, char **argv)
 {
+    /* SIGINT, SIGTERM: end the run at the next step, keep what it computed
+     * (a second signal kills at once) */
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sa.sa_flags = SA_RESETHAND;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
     if (argc < 2) {
         usage(stderr);
         return 2;
@@ -90,7 +109,7 @@ int main(int argc, char **argv)
     if (rc == 0 && !strcmp(cmd, "check")) rc_model_print_summary(m, stdout);
     if (rc == 0 && !strcmp(cmd, "run")) {
         char *def = out ? NULL : default_output(case_path);
-        rc_run_options opt = {out ? out : def, !quiet, 0.0, NULL};
+        rc_run_options opt = {out ? out : def, !quiet, 0.0, NULL, &stop_requested};
         rc_stats s;
         rc_status st = rc_run(m, &opt, &s, &e);
         if (!quiet) {

@@ -48,12 +48,25 @@ typedef struct run_ctx {
     const rc_model *m;
     rc_data *d;
     double *jsave; /* [nnz] the Jacobian values of the last evaluation */
+    volatile sig_atomic_t *stop; /* the caller's stop flag (rc_run_options), NULL */
 } run_ctx;
 
 /* ---- CVODE callbacks ----------------------------------------------- */
+/* CVODE's messages go to stderr as CVODE prints them, except the failure
+ * that an interruption provokes on purpose. */
+static void cb_err(int code, const char *module, const char *function, char *msg, void *ud)
+{
+    const run_ctx *c = ud;
+    if (c && c->stop && *c->stop) return;
+    fprintf(stderr, "[%s %s]  %s\n  %s\n\n", module, code < 0 ? "ERROR" : "WARNING", function, msg);
+}
+
 static int cb_rhs(realtype t, N_Vector y, N_Vector ydot, void *ud)
 {
     run_ctx *c = ud;
+    /* the caller asked to stop (a signal): an unrecoverable failure ends
+     * CVode at the last accepted step; no mode or state is touched */
+    if (c->stop && *c->stop) return -1;
     return rc_assemble_rhs(c->m, c->d, t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
 }
 
@@ -520,7 +533,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
         st = RC_SET(err, RC_ENOMEM, "out of memory");
         goto done;
     }
-    run_ctx rc = {m, d, NULL};
+    run_ctx rc = {m, d, NULL, opt ? opt->stop : NULL};
     if (SUNContext_Create(NULL, &ctx)) {
         st = RC_SET(err, RC_ESOLVER, "SUNContext_Create failed");
         goto done;
@@ -572,6 +585,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
     }
     CVCHECK(CVodeInit(cv, cb_rhs, t, y), "CVodeInit");
     CVCHECK(CVodeSetUserData(cv, &rc), "CVodeSetUserData");
+    CVCHECK(CVodeSetErrHandlerFn(cv, cb_err, &rc), "CVodeSetErrHandlerFn");
     if (m->ewt_rel) CVCHECK(CVodeWFtolerances(cv, cb_ewt), "CVodeWFtolerances");
     else CVCHECK(CVodeSVtolerances(cv, m->rtol, av), "CVodeSVtolerances");
     CVCHECK(CVodeSetLinearSolver(cv, LS, A), "CVodeSetLinearSolver");
@@ -607,6 +621,12 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
     double tout = fmin(m->dtout, tend);
     int fresh = 0; /* modes changed without a restart: the Jacobian is stale */
     while (t < tend) {
+        if (opt && opt->stop && *opt->stop) {
+            snprintf(reason, sizeof reason, "interrupted at t = %.9g s (signal): the results up to there are kept", t);
+            fail_reason = reason;
+            st = RC_SET(err, RC_EINTERRUPT, "%s", reason);
+            break;
+        }
         /* after such a change, one internal step with a forced linear solver
          * setup and a new Jacobian: a stale Jacobian of the old mode (a
          * contact stiffness that is gone, a viscous friction term that
@@ -627,6 +647,12 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
             CVCHECK(CVodeSetLSetupFrequency(cv, 0), "CVodeSetLSetupFrequency");
             CVCHECK(CVodeSetJacEvalFrequency(cv, 0), "CVodeSetJacEvalFrequency");
             fresh = 0;
+        }
+        if (flag < 0 && opt && opt->stop && *opt->stop) {
+            snprintf(reason, sizeof reason, "interrupted at t = %.9g s (signal): the results up to there are kept", t);
+            fail_reason = reason;
+            st = RC_SET(err, RC_EINTERRUPT, "%s", reason);
+            break;
         }
         if (flag < 0) {
             const char *cf = rc_cpl_failed(m, d);

@@ -8,6 +8,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "model/coupling.h"
 #include "engine/events.h"
@@ -430,13 +431,24 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
         /* the force the contact would carry, closed, and its rate */
         const int cbr = mode == RC_MODE_OPEN ? RC_BR_LOAD : br;
         rc_inter_report_eval(m, i, RC_MODE_CLOSED, cbr, 0, d->inter_slip[i], t, y, &c);
-        rc_inter_report_rate(m, i, RC_MODE_CLOSED, cbr, 0, d->inter_slip[i], y, ydot, &dc);
         const double k = isfinite(m->inter_kscale[i]) ? m->inter_kscale[i] : 0.0;
         const double fband = fmax(band * k, RC_TOUCH_ULPS * DBL_EPSILON * (fabs(c.fload) + fabs(c.fdamp)));
-        /* where P is heading: dP/dt, else the normal acceleration */
-        rc_inter_report_rate(m, i, mode, br, d->inter_track[i], d->inter_slip[i], y, ydot, &dr);
-        const int trend = d->inter_track[i] ? p_trend(r.vn_raw, dr.vn_raw, t, m->dtout) : p_trend(r.vn, dr.vn, t, m->dtout);
-        const int ctrend = p_trend(c.vn, dc.vn, t, m->dtout);
+        /* the rates below are needed only by a contact at zero (P or force)
+         * or by a law with branches; the others (most of them, at most
+         * events) skip the two complex-step evaluations */
+        const int need = fabs(r.p) <= band || fabs(c.fn) <= fband ||
+                         (m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0) ||
+                         (m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0);
+        int trend = 0, ctrend = 0;
+        memset(&dr, 0, sizeof dr);
+        memset(&dc, 0, sizeof dc);
+        if (need) {
+            rc_inter_report_rate(m, i, RC_MODE_CLOSED, cbr, 0, d->inter_slip[i], y, ydot, &dc);
+            /* where P is heading: dP/dt, else the normal acceleration */
+            rc_inter_report_rate(m, i, mode, br, d->inter_track[i], d->inter_slip[i], y, ydot, &dr);
+            trend = d->inter_track[i] ? p_trend(r.vn_raw, dr.vn_raw, t, m->dtout) : p_trend(r.vn, dr.vn, t, m->dtout);
+            ctrend = p_trend(c.vn, dc.vn, t, m->dtout);
+        }
         if (mode == RC_MODE_OPEN) {
             /* P at zero (or the Inacti offset tracking it): close unless the
              * bodies separate; a touching contact carries zero force */

@@ -76,7 +76,7 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
     int nsc = 0;
     for (int i = 0; i < m->ninter; i++) nsc += isfinite(m->inter_pscale[i]) != 0;
     fprintf(f, "scales      %d of %d interfaces scaled (penetration p_s, force F_s, speed v_s)\n", nsc, m->ninter);
-    for (int i = 0, shown = 0; i < m->ninter && shown < 20; i++, shown++) {
+    for (int i = 0; i < m->ninter && i < 20; i++) {
         if (isfinite(m->inter_pscale[i]))
             fprintf(f, "  %-18s p_s %.4g m, F_s %.4g N, k_s %.4g N/m, v_s %.4g m/s\n", m->inter_name[i],
                     m->inter_pscale[i], m->inter_fscale[i], m->inter_kscale[i], m->inter_vscale[i]);

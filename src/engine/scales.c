@@ -216,6 +216,17 @@ static double normal_mass(const rc_model *m, int b, const double *n)
     return w > 1e-12 ? m->body_mass[b] / w : INFINITY;
 }
 
+/* Reduced mass of interface i's pair, every free body taking part whatever
+ * its held directions [kg]; INFINITY when neither body is free. */
+static double pair_mass(const rc_model *m, int i)
+{
+    double inv = 0.0;
+    const int bs[2] = {m->inter_ba[i], m->inter_bb[i]};
+    for (int k = 0; k < 2; k++)
+        if (bs[k] >= 0 && m->body_yadr[bs[k]] >= 0) inv += 1.0 / m->body_mass[bs[k]];
+    return inv > 0 ? 1.0 / inv : INFINITY;
+}
+
 rc_status rc_model_scales(rc_model *m, rc_error *err)
 {
     const int n = m->ninter;
@@ -300,13 +311,7 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         m->inter_pscale[i] = p;
         m->inter_fscale[i] = f;
         m->inter_kscale[i] = k;
-        double mv = mred;
-        if (!isfinite(mv)) { /* held along the normal: the plain reduced mass */
-            double inv = 0.0;
-            if (ba >= 0 && m->body_yadr[ba] >= 0) inv += 1.0 / m->body_mass[ba];
-            if (bb >= 0 && m->body_yadr[bb] >= 0) inv += 1.0 / m->body_mass[bb];
-            mv = inv > 0 ? 1.0 / inv : INFINITY;
-        }
+        const double mv = isfinite(mred) ? mred : pair_mass(m, i); /* held along the normal */
         if (!isfinite(mv)) {
             m->inter_pscale[i] = m->inter_fscale[i] = m->inter_kscale[i] = NAN;
             continue;
@@ -333,13 +338,7 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
      * sticking contact comes to rest instead of ringing */
     for (int i = 0; i < n; i++) {
         rc_fric *fr = &m->inter_fr[i];
-        /* the pair's reduced mass, every free body taking part (held
-         * directions included: a held body still carries the damper) */
-        double inv = 0.0;
-        const int bs[2] = {m->inter_ba[i], m->inter_bb[i]};
-        for (int k = 0; k < 2; k++)
-            if (bs[k] >= 0 && m->body_yadr[bs[k]] >= 0) inv += 1.0 / m->body_mass[bs[k]];
-        const double mr = inv > 0 ? 1.0 / inv : INFINITY;
+        const double mr = pair_mass(m, i); /* a held body still carries the damper */
         fr->ct = fr->kind != RC_FK_NONE && fr->form == RC_FF_INCREMENTAL && fr->kt > 0 && isfinite(mr)
                      ? RC_STICK_ZETA * 2.0 * sqrt(fr->kt * mr)
                      : 0.0;

@@ -621,12 +621,6 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
     double tout = fmin(m->dtout, tend);
     int fresh = 0; /* modes changed without a restart: the Jacobian is stale */
     while (t < tend) {
-        if (opt && opt->stop && *opt->stop) {
-            snprintf(reason, sizeof reason, "interrupted at t = %.9g s (signal): the results up to there are kept", t);
-            fail_reason = reason;
-            st = RC_SET(err, RC_EINTERRUPT, "%s", reason);
-            break;
-        }
         /* after such a change, one internal step with a forced linear solver
          * setup and a new Jacobian: a stale Jacobian of the old mode (a
          * contact stiffness that is gone, a viscous friction term that
@@ -648,7 +642,9 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
             CVCHECK(CVodeSetJacEvalFrequency(cv, 0), "CVodeSetJacEvalFrequency");
             fresh = 0;
         }
-        if (flag < 0 && opt && opt->stop && *opt->stop) {
+        /* interrupted (a signal): inside CVode the right-hand side made it
+         * fail; between two calls the next call returns at its first one */
+        if (opt && opt->stop && *opt->stop) {
             snprintf(reason, sizeof reason, "interrupted at t = %.9g s (signal): the results up to there are kept", t);
             fail_reason = reason;
             st = RC_SET(err, RC_EINTERRUPT, "%s", reason);

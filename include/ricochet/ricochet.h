@@ -58,6 +58,10 @@ typedef struct rc_case rc_case;
  * On failure returns RC_EINPUT or RC_EIO, fills *err, sets *out to NULL. */
 rc_status rc_case_load(const char *path, rc_case **out, rc_error *err);
 void rc_case_free(rc_case *c); /* NULL is a no-op */
+/* The files the case was read from: 0 is the case file, then every file it
+ * includes, in reading order. NULL when i is out of range. */
+int rc_case_file_count(const rc_case *c);
+const char *rc_case_file(const rc_case *c, int i);
 
 /* ---- Model (compiled, constant) ------------------------------------- */
 typedef struct rc_model rc_model;

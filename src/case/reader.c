@@ -482,3 +482,10 @@ void rc_case_free(rc_case *c)
     rc_case_index_free(c->index);
     free(c);
 }
+
+int rc_case_file_count(const rc_case *c) { return c ? c->nfiles : 0; }
+
+const char *rc_case_file(const rc_case *c, int i)
+{
+    return c && i >= 0 && i < c->nfiles ? c->files[i] : NULL;
+}

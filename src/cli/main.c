@@ -13,7 +13,8 @@ static void usage(FILE *f)
             "usage: ricochet run CASE [-o OUT.nc] [-q]   run a case, write results (default: CASE stem + .nc)\n"
             "       ricochet check CASE                  read and compile a case, print the model summary\n"
             "       ricochet --help | --version\n"
-            "exit codes: 0 success, 2 input error, 3 solver failure, 4 I/O error\n");
+            "exit codes: 0 success, 2 input error, 3 solver failure, 4 I/O error,\n"
+            "            130 interrupted (SIGINT), 143 terminated (SIGTERM)\n");
 }
 
 /* Default output: the case file name with its extension replaced by .nc, in
@@ -45,13 +46,31 @@ static int load(const char *path, rc_case **c, rc_model **m, rc_error *e)
     return 0;
 }
 
+/* The results must never overwrite an input: the output path may not be the
+ * case file nor any file it includes (same device and inode). Exit code 2. */
+static int check_output_path(const rc_case *c, const char *out)
+{
+    struct stat so;
+    if (!out || stat(out, &so) != 0) return 0; /* a new file overwrites nothing */
+    for (int i = 0; i < rc_case_file_count(c); i++) {
+        struct stat si;
+        if (stat(rc_case_file(c, i), &si) == 0 && si.st_dev == so.st_dev && si.st_ino == so.st_ino) {
+            fprintf(stderr,
+                    "ricochet: the output file '%s' is the input file '%s'%s: refusing to overwrite an input "
+                    "(give another -o path)\n",
+                    out, rc_case_file(c, i), i == 0 ? " (the case file)" : " (included by the case)");
+            return 2;
+        }
+    }
+    return 0;
+}
+
 /* Set by SIGINT or SIGTERM; the run polls it (rc_run_options.stop). */
 static volatile sig_atomic_t stop_requested = 0;
 
 static void on_signal(int sig)
 {
-    (void)sig;
-    stop_requested = 1;
+    stop_requested = sig; /* non-zero; the exit code is 128 + sig */
 }
 
 int main(int argc, char **argv)
@@ -92,23 +111,18 @@ int main(int argc, char **argv)
         usage(stderr);
         return 2;
     }
-    /* never write the results over the case file itself */
-    struct stat sin, sout;
-    if (out && !strcmp(cmd, "run") && stat(case_path, &sin) == 0 && stat(out, &sout) == 0 &&
-        sin.st_dev == sout.st_dev && sin.st_ino == sout.st_ino) {
-        fprintf(stderr, "ricochet: the output file '%s' is the case file '%s': refusing to overwrite the input "
-                        "(give another -o path)\n",
-                out, case_path);
-        return 2;
-    }
     rc_case *c = NULL;
     rc_model *m = NULL;
     rc_error e;
     memset(&e, 0, sizeof e);
     int rc = load(case_path, &c, &m, &e);
+    char *def = NULL;
+    if (rc == 0 && !strcmp(cmd, "run")) {
+        def = out ? NULL : default_output(case_path);
+        rc = check_output_path(c, out ? out : def);
+    }
     if (rc == 0 && !strcmp(cmd, "check")) rc_model_print_summary(m, stdout);
     if (rc == 0 && !strcmp(cmd, "run")) {
-        char *def = out ? NULL : default_output(case_path);
         rc_run_options opt = {out ? out : def, !quiet, 0.0, NULL, &stop_requested};
         rc_stats s;
         rc_status st = rc_run(m, &opt, &s, &e);
@@ -116,9 +130,14 @@ int main(int argc, char **argv)
             printf("ricochet %s: %s -> %s\n", rc_version(), case_path, opt.output_path);
             rc_stats_print(&s, stdout);
         }
-        if (st) rc = fail(&e);
-        free(def);
+        if (st == RC_EINTERRUPT && stop_requested > 0) {
+            fprintf(stderr, "ricochet: %s: %s\n", rc_status_str(e.code), e.msg);
+            rc = 128 + (int)stop_requested;
+        } else if (st) {
+            rc = fail(&e);
+        }
     }
+    free(def);
     rc_model_free(m);
     rc_case_free(c);
     return rc;

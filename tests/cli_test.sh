@@ -4,7 +4,7 @@
 set -u
 bin=${1:-build/ricochet}
 tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+trap 'umount "$tmp/fs" 2>/dev/null; rm -rf "$tmp"' EXIT
 demo=cases/demo_sphere_drop.rad
 
 expect() { # name, expected exit code, actual exit code, detail
@@ -68,6 +68,48 @@ for sig in INT TERM; do
         expect "interrupt_$sig" $want $rc "(records kept, complete = no, statistics written: $(head -c 120 "$tmp/e"))"
     else expect "interrupt_$sig" $want 99 "(exit $rc; file or message wrong: $(head -c 200 "$tmp/e"))"; fi
 done
+
+# I/O faults: a full file system (small tmpfs, needs root and mount; skipped
+# otherwise), a directory removed during the run: exit 4 with a message naming
+# the file and the record, never a crash; what was written stays readable
+awk '/^\/RUN/{print; getline; print "                3000                   1"; next} {print}' \
+    validation/cpl_spring_cubic/case.rad > "$tmp/mid.rad"
+mkdir -p "$tmp/fs"
+if [ "$(id -u)" -eq 0 ] && mount -t tmpfs -o size=16k tmpfs "$tmp/fs" 2>/dev/null; then
+    "$bin" run "$tmp/mid.rad" -o "$tmp/fs/out.nc" -q > "$tmp/e" 2>&1; rc=$?
+    if grep -q "out.nc: file system full" "$tmp/e" && [ ! -e "$tmp/fs/out.nc" ]; then expect disk_full_16k 4 $rc "($(head -c 160 "$tmp/e"))"
+    else expect disk_full_16k 4 99 "(exit $rc: $(head -c 200 "$tmp/e"))"; fi
+    umount "$tmp/fs"
+    mount -t tmpfs -o size=1m tmpfs "$tmp/fs"
+    "$bin" run "$tmp/mid.rad" -o "$tmp/fs/out.nc" -q > "$tmp/e" 2>&1; rc=$?
+    n=$(ncdump -h "$tmp/fs/out.nc" 2>/dev/null | sed -n 's/^[[:space:]]*time = UNLIMITED ; \/\/ (\([0-9]*\) currently).*/\1/p')
+    if grep -q "file system full.*the file keeps records 0 to [0-9]" "$tmp/e" && [ "${n:-0}" -gt 100 ] &&
+       ncdump -h "$tmp/fs/out.nc" | grep -q 'status = "incomplete: .*file system full' &&
+       ncdump -v time "$tmp/fs/out.nc" > /dev/null 2>&1; then expect disk_full_1m 4 $rc "($n records readable; $(head -c 140 "$tmp/e"))"
+    else expect disk_full_1m 4 99 "(exit $rc, records ${n:-none}: $(head -c 200 "$tmp/e"))"; fi
+    umount "$tmp/fs"
+    # the file system filled by another program during the run
+    mount -t tmpfs -o size=8m tmpfs "$tmp/fs"
+    "$bin" run "$tmp/long.rad" -o "$tmp/fs/out.nc" -q > "$tmp/e" 2>&1 &
+    pid=$!
+    sleep 1
+    dd if=/dev/zero of="$tmp/fs/fill" bs=64k > /dev/null 2>&1
+    wait $pid; rc=$?
+    if grep -q "out.nc: file system full" "$tmp/e" && ncdump -v time "$tmp/fs/out.nc" > /dev/null 2>&1; then
+        expect disk_filled_during_run 4 $rc "(file readable; $(head -c 140 "$tmp/e"))"
+    else expect disk_filled_during_run 4 99 "(exit $rc: $(head -c 200 "$tmp/e"))"; fi
+    umount "$tmp/fs"
+else
+    echo "SKIP cli.disk_full: needs root and a tmpfs mount"
+fi
+mkdir -p "$tmp/gone/sub"
+"$bin" run "$tmp/long.rad" -o "$tmp/gone/sub/out.nc" -q > "$tmp/e" 2>&1 &
+pid=$!
+sleep 1
+rm -rf "$tmp/gone/sub"
+wait $pid; rc=$?
+if grep -q "out.nc: the output file is gone.*before record [0-9]" "$tmp/e"; then expect directory_removed 4 $rc "($(head -c 160 "$tmp/e"))"
+else expect directory_removed 4 99 "(exit $rc: $(head -c 200 "$tmp/e"))"; fi
 
 # determinism: two runs give identical time series
 "$bin" run "$demo" -o "$tmp/a.nc" -q && "$bin" run "$demo" -o "$tmp/b.nc" -q

@@ -116,6 +116,13 @@ int rc_model_state_size(const rc_model *m);
  * RC_EIO. `stats` may be NULL. */
 rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats,
                  rc_error *err);
+/* 1 after a write of the results file failed: the HDF5 library cannot be
+ * shut down safely then, so a program should end with _exit() rather than
+ * exit() or a return from main (HDF5's exit-time clean-up would crash). The
+ * file concerned may be unreadable. A full file system is detected before
+ * any write fails: the file is then closed whole, marked incomplete, and
+ * this stays 0. */
+int rc_output_abandoned(void);
 
 /* Print statistics in the format of `ricochet run`. */
 void rc_stats_print(const rc_stats *s, FILE *f);

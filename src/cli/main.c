@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "ricochet/ricochet.h"
 
@@ -140,5 +141,10 @@ int main(int argc, char **argv)
     free(def);
     rc_model_free(m);
     rc_case_free(c);
+    if (rc_output_abandoned()) {
+        /* after a failed write HDF5's exit-time clean-up would crash */
+        fflush(NULL);
+        _exit(rc);
+    }
     return rc;
 }

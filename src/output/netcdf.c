@@ -23,12 +23,25 @@
  * - Time-series variables are chunked along time with chunks of about
  *   RC_OUT_CHUNK_BYTES, at most one block, so a full block writes whole
  *   chunks; no fill values are written (every record is written).
+ * - Every block written is synced at once, so the file on disk is whole
+ *   after each block. Before a block is written, the free space of the file
+ *   system is compared with an upper bound of what the block can take (each
+ *   chunk it starts, at full size, plus HDF5 metadata) and a reserve for
+ *   closing the file: when it does not fit, nothing more is written and the
+ *   file is closed with what it has, marked incomplete. A full disk is thus
+ *   met before HDF5 sees it: HDF5 cannot be shut down safely after a failed
+ *   write (its exit-time clean-up crashes), so after any failed netCDF write
+ *   the handle is abandoned and rc_output_abandoned() tells the program to
+ *   end without that clean-up. The path is also checked to still name the
+ *   file that was created (a removed or renamed directory is reported).
  */
 #include "output/output.h"
 
 #include "base/error.h"
 
 #include <errno.h>
+#include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <math.h>
 #include <netcdf.h>
 #include <stdarg.h>
@@ -50,6 +63,10 @@
 #define RC_OUT_CHUNK_RECORDS 1024
 /* Event rows buffered before a write, and rows in one chunk [rows]. */
 #define RC_OUT_BLOCK_EVENTS 256
+/* HDF5 metadata a block may add (chunk indexes, object headers, heaps):
+ * a fixed part plus a part per variable [bytes]. */
+#define RC_OUT_META_FIXED (64u << 10)
+#define RC_OUT_META_PER_VAR (4u << 10)
 /* Length of a derived unit string [chars]. */
 #define RC_OUT_UNIT_LEN 128
 
@@ -175,8 +192,19 @@ struct rc_output {
     double *ev_num;       /* [4 * RC_OUT_BLOCK_EVENTS] time, P, dP/dt, F_n, by column */
     char *ev_str[2][RC_OUT_BLOCK_EVENTS]; /* kind, element (copies) */
     double last_sync;     /* wall time of the last write to disk [s] */
-    int broken;           /* a write failed: write nothing more */
+    size_t chunk_rec[V_COUNT]; /* rows per chunk of each time series and event variable */
+    size_t echunk;        /* records per chunk of the energies */
+    size_t nvars;         /* variables in the file */
+    dev_t dev;            /* the file created (device, inode) */
+    ino_t ino;
+    int stopped;          /* no room for the next block: nothing more written, the file is whole */
+    int broken;           /* a netCDF write failed: the handle is abandoned */
 };
+
+/* Set after a failed netCDF write: HDF5 cannot be shut down safely. */
+static int output_abandoned;
+
+int rc_output_abandoned(void) { return output_abandoned; }
 
 /* ---- Error reporting --------------------------------------------------- */
 
@@ -261,8 +289,9 @@ static void derive_units(rc_output *o, const rc_output_meta *meta)
  * events table are chunked along their unlimited dimension. */
 static rc_status def_var(rc_output *o, const char *name, nc_type type, int ndims,
                          const int *dim, const char *units, const char *long_name, int *varid,
-                         rc_error *err)
+                         size_t *chunk_rows, rc_error *err)
 {
+    o->nvars++;
     int dimids[3];
     size_t chunk[3];
     size_t elem = type == NC_DOUBLE ? sizeof(double) : type == NC_INT ? sizeof(int)
@@ -281,6 +310,7 @@ static rc_status def_var(rc_output *o, const char *name, nc_type type, int ndims
         size_t n = RC_OUT_CHUNK_BYTES / per_rec;
         size_t cap = dim[0] == D_TIME ? RC_OUT_CHUNK_RECORDS : RC_OUT_BLOCK_EVENTS;
         chunk[0] = n < 1 ? 1 : n > cap ? cap : n;
+        *chunk_rows = chunk[0];
         NC_TRY(o->path, nc_def_var_chunking(o->ncid, *varid, NC_CHUNKED, chunk),
                "setting chunks of variable %s", name);
         if (type != NC_STRING)
@@ -319,7 +349,7 @@ static rc_status define_vars(rc_output *o, const rc_output_meta *meta, rc_error 
         if (meta->ninter == 0 && var_uses_dim(v, D_INTER)) continue;
         if (meta->ncoupling == 0 && var_uses_dim(v, D_COUPLING)) continue;
         rc = def_var(o, s->name, s->type, s->ndims, s->dim, o->unit[s->unit], s->long_name,
-                     &o->var[v], err);
+                     &o->var[v], &o->chunk_rec[v], err);
         if (rc == RC_OK && s->comment) rc = put_text(o, o->var[v], "comment", s->comment, err);
         if (rc != RC_OK) return rc;
     }
@@ -341,7 +371,7 @@ static rc_status define_vars(rc_output *o, const rc_output_meta *meta, rc_error 
     for (int k = 0; k < meta->nenergy; k++) {
         rc = def_var(o, str_or_empty(meta->energy_name[k]), NC_DOUBLE, 1, time_dim,
                      o->unit[U_ENERGY], str_or_empty(meta->energy_long[k]), &o->var_energy[k],
-                     err);
+                     &o->echunk, err);
         if (rc != RC_OK) return rc;
     }
     return RC_OK;
@@ -506,6 +536,76 @@ static void directory_problem(const char *path, char *buf, size_t n)
     if (access(dir, W_OK) != 0) snprintf(buf, n, " (directory %s: %s)", dir, strerror(errno));
 }
 
+/* ---- Room on the file system --------------------------------------------- */
+
+/* Chunks of `c` rows that a write of rows [n0, n1) is the first to touch. */
+static size_t new_chunks(size_t n0, size_t n1, size_t c)
+{
+    if (n1 <= n0 || c == 0) return 0;
+    const size_t first_new = (n0 + c - 1) / c, last = (n1 - 1) / c;
+    return last >= first_new ? last - first_new + 1 : 0;
+}
+
+/* HDF5 metadata a write or the closing of the file may add [bytes]. */
+static size_t meta_bytes(const rc_output *o)
+{
+    return RC_OUT_META_FIXED + RC_OUT_META_PER_VAR * o->nvars;
+}
+
+/* Upper bound of the bytes the buffered block takes in the file: every chunk
+ * it starts at its full size, the event strings in HDF5's heap, metadata. */
+static size_t block_bytes(const rc_output *o)
+{
+    size_t b = meta_bytes(o);
+    for (int v = 0; v < V_COUNT; v++) {
+        if (o->var[v] < 0 || !o->chunk_rec[v]) continue;
+        if (var_table[v].dim[0] == D_TIME && o->rec_size[v])
+            b += new_chunks(o->nrec, o->nrec + o->nbuf, o->chunk_rec[v]) * o->chunk_rec[v] * o->rec_size[v];
+        else if (var_table[v].dim[0] == D_EVENT)
+            b += new_chunks(o->nevent, o->nevent + o->nevbuf, o->chunk_rec[v]) * o->chunk_rec[v] * 16;
+    }
+    b += (size_t)o->nenergy * new_chunks(o->nrec, o->nrec + o->nbuf, o->echunk) * o->echunk * sizeof(double);
+    for (size_t i = 0; i < o->nevbuf; i++)
+        for (int c = 0; c < 2; c++) b += strlen(o->ev_str[c][i]) + 1 + 32;
+    return b;
+}
+
+/* Free bytes on the file system holding `path`, or -1 with errno set. */
+static double free_bytes(const char *path)
+{
+    struct statvfs fs;
+    if (statvfs(path, &fs) != 0) return -1.0;
+    return (double)fs.f_bavail * (double)fs.f_frsize;
+}
+
+/* Before a block is written: the path still names the file created, and the
+ * block plus the reserve for closing fit on the file system. Otherwise
+ * RC_EIO naming the file and the records kept; the file stays whole. */
+static rc_status check_room(rc_output *o, rc_error *err)
+{
+    struct stat st;
+    if (stat(o->path, &st) != 0 || st.st_dev != o->dev || st.st_ino != o->ino)
+        RC_RAISE(err, RC_EIO,
+                 "%s: the output file is gone (%s; was its directory removed or renamed?) before record %zu "
+                 "could be written",
+                 o->path, errno ? strerror(errno) : "replaced by another file", o->nrec);
+    const double need = (double)block_bytes(o) + (double)meta_bytes(o), avail = free_bytes(o->path);
+    if (avail < 0)
+        RC_RAISE(err, RC_EIO, "%s: cannot query the free space of its file system before record %zu: %s",
+                 o->path, o->nrec, strerror(errno));
+    if (avail < need) {
+        char kept[64];
+        if (o->nrec) snprintf(kept, sizeof kept, "records 0 to %zu", o->nrec - 1);
+        else snprintf(kept, sizeof kept, "no records");
+        RC_RAISE(err, RC_EIO,
+                 "%s: file system full: %.0f bytes free, writing the next %zu records (from record %zu) and %zu "
+                 "event rows needs up to %.0f bytes; the file keeps %s (complete = \"no\"); free some space "
+                 "or write elsewhere with -o",
+                 o->path, avail, o->nbuf, o->nrec, o->nevbuf, need, kept);
+    }
+    return RC_OK;
+}
+
 /* ---- Public functions -------------------------------------------------- */
 
 rc_status rc_output_open(rc_output **out, const char *path, const rc_output_meta *meta,
@@ -536,6 +636,22 @@ rc_status rc_output_open(rc_output **out, const char *path, const rc_output_meta
     }
     o->last_sync = wall_clock();
 
+    /* room for the header, the fixed data and closing: the header of ~V_COUNT
+     * variables with their attributes, the names, two metadata reserves */
+    {
+        char dir[1024];
+        const char *slash = strrchr(path, '/');
+        if (slash) snprintf(dir, sizeof dir, "%.*s", slash == path ? 1 : (int)(slash - path), path);
+        else snprintf(dir, sizeof dir, ".");
+        const double need = 2.0 * (double)(RC_OUT_META_FIXED + RC_OUT_META_PER_VAR * (V_COUNT + (size_t)meta->nenergy)) +
+                            256.0 * (double)(meta->nbody + meta->ninter + meta->ncoupling);
+        const double avail = free_bytes(dir);
+        if (avail >= 0 && avail < need) {
+            output_free(o);
+            RC_RAISE(err, RC_EIO, "%s: file system full: %.0f bytes free, the output needs at least %.0f to start",
+                     path, avail, need);
+        }
+    }
     /* create, define, write the fixed data */
     int st = nc_create(path, NC_NETCDF4 | NC_CLOBBER, &o->ncid);
     if (st != NC_NOERR) {
@@ -549,23 +665,38 @@ rc_status rc_output_open(rc_output **out, const char *path, const rc_output_meta
     if (rc == RC_OK && (st = nc_enddef(o->ncid)) != NC_NOERR)
         rc = nc_fail(err, __LINE__, __func__, path, st, "ending definitions");
     if (rc == RC_OK) rc = write_static(o, meta, err);
+    if (rc == RC_OK && (st = nc_sync(o->ncid)) != NC_NOERR)
+        rc = nc_fail(err, __LINE__, __func__, path, st, "writing the header");
+    struct stat fst;
+    if (rc == RC_OK && stat(path, &fst) != 0)
+        rc = RC_SET(err, RC_EIO, "%s: the output file is gone right after its creation: %s", path, strerror(errno));
     if (rc != RC_OK) {
-        /* a half-made file is not a result: remove it */
-        nc_abort(o->ncid);
+        /* a half-made file is not a result: remove it; HDF5 cannot close
+         * it safely after a failed write, so the handle is abandoned */
+        output_abandoned = 1;
         remove(o->path);
         output_free(o);
         return rc;
     }
+    o->dev = fst.st_dev;
+    o->ino = fst.st_ino;
     *out = o;
     return RC_OK;
 }
 
 /* Write the buffered records (one nc_put_vara per variable) and event rows,
- * then sync to disk when `sync` or RC_OUT_SYNC_SECONDS have passed since the
- * last sync. After a failure nothing more is written. */
-static rc_status flush(rc_output *o, int sync, rc_error *err)
+ * then sync to disk, after checking there is room (check_room). No room:
+ * the block is dropped and nothing more is written (o->stopped), the file
+ * stays whole. A failed write abandons the handle (o->broken). */
+static rc_status flush(rc_output *o, rc_error *err)
 {
-    if (o->broken) return RC_OK;
+    if (o->broken || o->stopped) return RC_OK;
+    if (o->nbuf == 0 && o->nevbuf == 0) return RC_OK;
+    rc_status rc = check_room(o, err);
+    if (rc != RC_OK) {
+        o->stopped = 1;
+        return rc;
+    }
     o->broken = 1; /* until this write succeeds */
     if (o->nbuf > 0) {
         size_t start[3] = {o->nrec, 0, 0}, count[3] = {o->nbuf, 1, 1};
@@ -600,11 +731,8 @@ static rc_status flush(rc_output *o, int sync, rc_error *err)
         o->nevent += o->nevbuf;
         o->nevbuf = 0;
     }
-    const double now = wall_clock();
-    if (sync || now - o->last_sync >= RC_OUT_SYNC_SECONDS) {
-        NC_TRY(o->path, nc_sync(o->ncid), "flushing after record %zu", o->nrec);
-        o->last_sync = now;
-    }
+    NC_TRY(o->path, nc_sync(o->ncid), "flushing after record %zu", o->nrec);
+    o->last_sync = wall_clock();
     o->broken = 0;
     return RC_OK;
 }
@@ -635,7 +763,7 @@ rc_status rc_output_frame(rc_output *o, const rc_frame *f, rc_error *err)
         [V_CPL_F2] = f->cpl_f2,
         [V_CPL_LOWEST] = f->cpl_lowest,
     };
-    if (o->broken) RC_RAISE(err, RC_EIO, "%s: an earlier write failed", o->path);
+    if (o->broken || o->stopped) RC_RAISE(err, RC_EIO, "%s: an earlier write failed or found no room", o->path);
     /* check everything before copying anything: a record is whole or absent */
     for (int v = 0; v < V_COUNT; v++)
         if (o->rec_size[v] && !data[v])
@@ -646,7 +774,7 @@ rc_status rc_output_frame(rc_output *o, const rc_frame *f, rc_error *err)
         if (o->rec_size[v]) memcpy(o->buf[v] + o->nbuf * o->rec_size[v], data[v], o->rec_size[v]);
     for (int k = 0; k < o->nenergy; k++) o->ebuf[(size_t)k * o->block + o->nbuf] = f->energy[k];
     o->nbuf++;
-    if (o->nbuf == o->block || wall_clock() - o->last_sync >= RC_OUT_SYNC_SECONDS) return flush(o, 0, err);
+    if (o->nbuf == o->block || wall_clock() - o->last_sync >= RC_OUT_SYNC_SECONDS) return flush(o, err);
     return RC_OK;
 }
 
@@ -662,7 +790,7 @@ static char *copy_string(const char *s)
 rc_status rc_output_event_values(rc_output *o, double t, const char *kind, const char *element,
                                  const double values[3], rc_error *err)
 {
-    if (o->broken) RC_RAISE(err, RC_EIO, "%s: an earlier write failed", o->path);
+    if (o->broken || o->stopped) RC_RAISE(err, RC_EIO, "%s: an earlier write failed or found no room", o->path);
     const size_t i = o->nevbuf;
     char *k = copy_string(kind), *e = copy_string(element);
     if (!k || !e) {
@@ -675,7 +803,7 @@ rc_status rc_output_event_values(rc_output *o, double t, const char *kind, const
     o->ev_num[i] = t;
     for (int c = 0; c < 3; c++) o->ev_num[(c + 1) * RC_OUT_BLOCK_EVENTS + i] = values ? values[c] : NAN;
     o->nevbuf++;
-    if (o->nevbuf == RC_OUT_BLOCK_EVENTS) return flush(o, 0, err);
+    if (o->nevbuf == RC_OUT_BLOCK_EVENTS) return flush(o, err);
     return RC_OK;
 }
 
@@ -721,8 +849,15 @@ rc_status rc_output_close(rc_output *o, const rc_stats *st, int complete, const 
 {
     if (!o) return RC_OK;
     /* the buffered records, then the final attributes; the file is closed
-     * and freed whatever happens */
-    rc_status rc = flush(o, 0, err);
+     * and freed whatever happens, except after a failed write (abandoned) */
+    rc_status rc = flush(o, err);
+    if (o->broken) {
+        output_abandoned = 1;
+        if (rc == RC_OK)
+            rc = RC_SET(err, RC_EIO, "%s: an earlier write failed; the file may be unreadable", o->path);
+        output_free(o);
+        return rc;
+    }
     /* after a failed write, the attributes say so (first error reported) */
     rc_error later;
     rc_error *e = rc == RC_OK ? err : &later;
@@ -730,11 +865,15 @@ rc_status rc_output_close(rc_output *o, const rc_stats *st, int complete, const 
     rc_status rc2 = RC_OK;
     int s = nc_redef(o->ncid);
     if (s != NC_NOERR) rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "entering define mode");
-    if (rc2 == RC_OK) rc2 = write_final(o, st, complete && ok && !o->broken, ok ? reason : err->msg, e);
+    if (rc2 == RC_OK) rc2 = write_final(o, st, complete && ok && !o->stopped, ok ? reason : err->msg, e);
     if (rc2 == RC_OK && (s = nc_enddef(o->ncid)) != NC_NOERR)
         rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "ending definitions");
-    s = nc_close(o->ncid);
-    if (s != NC_NOERR && rc2 == RC_OK) rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "closing the file");
+    if (rc2 != RC_OK) {
+        output_abandoned = 1;
+    } else if ((s = nc_close(o->ncid)) != NC_NOERR) {
+        output_abandoned = 1;
+        rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "closing the file");
+    }
     if (rc == RC_OK) rc = rc2;
     output_free(o);
     return rc;

@@ -273,6 +273,9 @@ static inline int rc_event_records(const rc_model *m)
 rc_data *rc_data_new(const rc_model *m);
 void rc_data_free(rc_data *d);
 
+/* Name of state i for messages: "/RBODY/3, velocity z [m/s]" (statename.c). */
+void rc_state_name(const rc_model *m, int i, char *buf, size_t n);
+
 /* ---- engine (assemble.c) ------------------------------------------- */
 /* Initial state vector [ny]. */
 void rc_initial_state(const rc_model *m, double *y);

@@ -49,16 +49,19 @@ typedef struct run_ctx {
     rc_data *d;
     double *jsave; /* [nnz] the Jacobian values of the last evaluation */
     volatile sig_atomic_t *stop; /* the caller's stop flag (rc_run_options), NULL */
+    char cvmsg[512]; /* CVODE's last error message, quoted in the failure message */
 } run_ctx;
 
 /* ---- CVODE callbacks ----------------------------------------------- */
-/* CVODE's messages go to stderr as CVODE prints them, except the failure
- * that an interruption provokes on purpose. */
+/* CVODE's warnings go to stderr as CVODE prints them; its last error is
+ * kept for the failure message (nothing is said of the failure that an
+ * interruption provokes on purpose). */
 static void cb_err(int code, const char *module, const char *function, char *msg, void *ud)
 {
-    const run_ctx *c = ud;
+    run_ctx *c = ud;
     if (c && c->stop && *c->stop) return;
-    fprintf(stderr, "[%s %s]  %s\n  %s\n\n", module, code < 0 ? "ERROR" : "WARNING", function, msg);
+    if (code < 0 && c) snprintf(c->cvmsg, sizeof c->cvmsg, "%s", msg);
+    else fprintf(stderr, "[%s %s]  %s\n  %s\n\n", module, code < 0 ? "ERROR" : "WARNING", function, msg);
 }
 
 static int cb_rhs(realtype t, N_Vector y, N_Vector ydot, void *ud)
@@ -491,12 +494,92 @@ static void progress(const rc_model *m, const rc_stats *s, double t, long steps,
         int flag_ = (call);                                                            \
         if (flag_ < 0) {                                                               \
             char *name_ = CVodeGetReturnFlagName(flag_); /* malloc'ed by CVODE */      \
-            st = RC_SET(err, RC_ESOLVER, "CVODE setup failed in %s: %s", what,         \
-                        name_ ? name_ : "?");                                          \
+            st = RC_SET(err, RC_ESOLVER, "CVODE call %s failed at t = %.9g s: %s (%s)", \
+                        what, t, name_ ? name_ : "?", rc.cvmsg);                       \
             free(name_);                                                               \
             goto done;                                                                 \
         }                                                                              \
     } while (0)
+
+/* The message of a failed CVode call: where (t, the step, the element whose
+ * state carries the largest weighted local error) and, by the kind of
+ * failure, the likely cause and what to change in the case. */
+static void failure_advice(const rc_model *m, const rc_data *d, void *cv, int flag, double t, double tout,
+                           const char *cvmsg, N_Vector tmp1, N_Vector tmp2, char *buf, size_t n)
+{
+    double h = 0.0;
+    CVodeGetCurrentStep(cv, &h);
+    /* the element: largest |local error| x weight (the error test's measure) */
+    char elem[200] = "";
+    if (CVodeGetEstLocalErrors(cv, tmp1) == CV_SUCCESS && CVodeGetErrWeights(cv, tmp2) == CV_SUCCESS) {
+        const double *e = N_VGetArrayPointer(tmp1), *w = N_VGetArrayPointer(tmp2);
+        int imax = -1;
+        double vmax = 0.0;
+        for (int i = 0; i < m->ny; i++) {
+            const double v = fabs(e[i] * w[i]);
+            if (v > vmax || (isnan(v) && imax < 0)) {
+                vmax = v;
+                imax = i;
+            }
+        }
+        if (imax >= 0) rc_state_name(m, imax, elem, sizeof elem);
+    }
+    const char *cf = rc_cpl_failed(m, d);
+    char where[512];
+    if (d->fail_inter >= 0)
+        snprintf(where, sizeof where, "non-finite force in %s", m->inter_name[d->fail_inter]);
+    else if (cf)
+        snprintf(where, sizeof where, "no force from %s", cf);
+    else if (elem[0])
+        snprintf(where, sizeof where, "largest local error in %s", elem);
+    else
+        snprintf(where, sizeof where, "element not identified");
+    char *fname = CVodeGetReturnFlagName(flag); /* malloc'ed by CVODE */
+    const char *advice;
+    switch (flag) {
+    case CV_TOO_MUCH_WORK:
+        advice = "the run took /SOLVER Max_steps steps without reaching the next output time: raise Max_steps, "
+                 "or, when the steps are tiny, look at the element named (a very stiff, lightly damped law, or "
+                 "events in quick succession) and loosen Rtol/Atol";
+        break;
+    case CV_TOO_MUCH_ACC:
+        advice = "the tolerances ask for more than double precision gives here: raise /SOLVER Rtol (at least "
+                 "1e-13) or the absolute tolerance of the quantity named";
+        break;
+    case CV_ERR_FAILURE:
+        advice = "the error test kept failing as the step shrank: the quantity named changes faster than any "
+                 "step can follow (a jump in a /FUNCT curve, a law with a kink, or a stiffness too high for its "
+                 "absolute tolerance): smooth the curve, check Stiff and the scale factors of that element, or "
+                 "loosen its absolute tolerance in /SOLVER";
+        break;
+    case CV_CONV_FAILURE:
+    case CV_LSETUP_FAIL:
+    case CV_LSOLVE_FAIL:
+        advice = "Newton's iteration did not converge even at small steps: the force of the element named "
+                 "varies faster than its Jacobian says (a kink or jump in a /FUNCT curve), or a body has "
+                 "almost no mass or inertia for the forces on it: check that element's law and the masses, "
+                 "or bound the step with /SOLVER Hmax";
+        break;
+    case CV_RHSFUNC_FAIL:
+    case CV_REPTD_RHSFUNC_ERR:
+    case CV_UNREC_RHSFUNC_ERR:
+    case CV_FIRST_RHSFUNC_ERR:
+        advice = "the forces could not be evaluated (a penetration or speed outside the range where the law "
+                 "is finite): extend the /FUNCT curves of that element, lower its scale factors, or bound the "
+                 "step with /SOLVER Hmax";
+        break;
+    case CV_RTFUNC_FAIL:
+        advice = "the event functions could not be evaluated: an internal error, please report the case";
+        break;
+    default:
+        advice = "see the SUNDIALS CVODE documentation of this flag";
+        break;
+    }
+    snprintf(buf, n, "CVODE failed at t = %.9g s (step h = %.3g s, next output at %.9g s): %s%s%s%s; %s. Likely "
+             "cause: %s",
+             t, h, tout, fname ? fname : "?", cvmsg[0] ? " (\"" : "", cvmsg, cvmsg[0] ? "\")" : "", where, advice);
+    free(fname);
+}
 
 static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, rc_error *err)
 {
@@ -522,7 +605,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
     memset(&fb, 0, sizeof fb);
     int *roots = NULL;
     const char *fail_reason = NULL;
-    char reason[1024] = "";
+    char reason[2048] = "";
     rc_data *d = rc_data_new(m);
     const double tend = opt && opt->t_end_override > 0 ? opt->t_end_override : m->tend;
     const int show = opt && opt->progress && isatty(2);
@@ -533,7 +616,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
         st = RC_SET(err, RC_ENOMEM, "out of memory");
         goto done;
     }
-    run_ctx rc = {m, d, NULL, opt ? opt->stop : NULL};
+    run_ctx rc = {m, d, NULL, opt ? opt->stop : NULL, ""};
     if (SUNContext_Create(NULL, &ctx)) {
         st = RC_SET(err, RC_ESOLVER, "SUNContext_Create failed");
         goto done;
@@ -651,13 +734,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
             break;
         }
         if (flag < 0) {
-            const char *cf = rc_cpl_failed(m, d);
-            char *fname = CVodeGetReturnFlagName(flag); /* malloc'ed by CVODE */
-            snprintf(reason, sizeof reason, "CVODE failed at t = %.9g s: %s%s%s%s%s", t, fname ? fname : "?",
-                     d->fail_inter >= 0 ? "; non-finite force in " : "",
-                     d->fail_inter >= 0 ? m->inter_name[d->fail_inter] : "",
-                     cf ? "; no force from " : "", cf ? cf : "");
-            free(fname);
+            failure_advice(m, d, cv, flag, t, tout, rc.cvmsg, ytn, f0, reason, sizeof reason);
             fail_reason = reason;
             st = RC_SET(err, RC_ESOLVER, "%s", reason);
             break;

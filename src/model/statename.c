@@ -1,0 +1,57 @@
+/*
+ * Names of the entries of the state vector, for messages: the element that
+ * owns a state and the quantity, with its unit (layout in model.h).
+ */
+#include "model/model.h"
+#include "model/coupling.h"
+#include "model/imposed.h"
+
+#include <stdio.h>
+
+void rc_state_name(const rc_model *m, int i, char *buf, size_t n)
+{
+    static const char *const body_q[RC_NB] = {
+        "position x [m]", "position y [m]", "position z [m]", "quaternion w [-]", "quaternion x [-]",
+        "quaternion y [-]", "quaternion z [-]", "velocity x [m/s]", "velocity y [m/s]", "velocity z [m/s]",
+        "angular velocity x (body frame) [rad/s]", "angular velocity y (body frame) [rad/s]",
+        "angular velocity z (body frame) [rad/s]"};
+    for (int b = 0; b < m->nbody; b++) {
+        const int a = m->body_yadr[b];
+        if (a >= 0 && i >= a && i < a + RC_NB) {
+            snprintf(buf, n, "/RBODY/%d, %s", m->body_id[b], body_q[i - a]);
+            return;
+        }
+    }
+    for (int k = 0; k < m->ninter; k++) {
+        const int a = m->inter_eadr[k], j = i - a;
+        if (j < 0 || j >= m->inter_ns[k]) continue;
+        const rc_fric *fr = &m->inter_fr[k];
+        const char *q = j == 0 ? "work of the normal force W_load [J]"
+                        : j == 1 ? "energy of the normal damping W_damp [J]"
+                        : j == m->inter_hidx[k] ? "hysteresis force F_h [N]"
+                        : j == m->inter_oidx[k] ? "Inacti 5 gap offset [m]"
+                        : fr->kind != RC_FK_NONE && fr->form == RC_FF_INCREMENTAL && j >= fr->tidx && j < fr->tidx + 3
+                            ? "tangential (friction) force F_t [N]"
+                        : fr->kind != RC_FK_NONE && fr->tau > 0 && j >= fr->fidx && j < fr->fidx + 3
+                            ? "filtered friction force [N]"
+                        : fr->kind != RC_FK_NONE && j == fr->widx ? "work of the friction force W_fric [J]"
+                                                                   : "own state";
+        snprintf(buf, n, "%s, %s", m->inter_name[k], q);
+        return;
+    }
+    if (m->cpl)
+        for (int k = 0; k < m->cpl->n; k++)
+            if (i >= m->cpl->eadr[k] && i < m->cpl->eadr[k] + RC_CE) {
+                snprintf(buf, n, "%s, energy accumulator [J]", m->cpl->name[k]);
+                return;
+            }
+    if (i == m->gwork_adr) {
+        snprintf(buf, n, "/GRAV, work of the time-varying gravity [J]");
+        return;
+    }
+    if (m->imp && i == m->imp->wadr) {
+        snprintf(buf, n, "/IMPVEL, work of the imposed velocities [J]");
+        return;
+    }
+    snprintf(buf, n, "state %d", i);
+}

@@ -8,7 +8,9 @@
 #include "model/model.h"
 #include "base/error.h"
 
+#include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 static void check_names(const char *path)
 {
@@ -50,8 +52,62 @@ static void test_messages_state_names(void)
     check_names("validation/impvel_release/case.rad");
 }
 
+/* The demo deck with one substring replaced, compiled: the status and the
+ * message of the first failure. */
+static rc_status compile_variant(const char *from, const char *to, char *msg, size_t n)
+{
+    FILE *f = fopen("cases/demo_sphere_drop.rad", "rb");
+    static char text[16384], out[16384];
+    size_t len = f ? fread(text, 1, sizeof text - 1, f) : 0;
+    if (f) fclose(f);
+    text[len] = '\0';
+    const char *at = strstr(text, from);
+    if (!at) return RC_EINTERNAL;
+    snprintf(out, sizeof out, "%.*s%s%s", (int)(at - text), text, to, at + strlen(from));
+    char path[64];
+    snprintf(path, sizeof path, "/tmp/rc_messages_%d.rad", (int)getpid());
+    f = fopen(path, "wb");
+    if (!f) return RC_EIO;
+    fputs(out, f);
+    fclose(f);
+    rc_case *c = NULL;
+    rc_model *m = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    rc_status st = rc_case_load(path, &c, &e);
+    if (st == RC_OK) st = rc_model_compile(c, &m, &e);
+    snprintf(msg, n, "%s", e.msg);
+    rc_model_free(m);
+    rc_case_free(c);
+    remove(path);
+    return st;
+}
+
+/* A contact law beyond double precision is an input error naming the
+ * interface and the fields: a penetration scale below the coordinates'
+ * resolution, a time scale below the time's resolution. */
+static void test_messages_unresolvable_scales(void)
+{
+    char msg[2048];
+    const char *curve = "                   1             1000000\n";
+    /* k = 1e30 N/m: p_s = m g / k ~ 1e-29 m, far below ulp(0.2 m) */
+    ENSURE(compile_variant(curve, "                   1              1e+30\n", msg, sizeof msg) == RC_EINPUT);
+    ENSURE(strstr(msg, "card /INTER/TYPE6/1") && strstr(msg, "below the resolution of the coordinates") &&
+           strstr(msg, "fct_ID"));
+    /* a curve at the edge of the double range (1e308 N at 1 m) */
+    ENSURE(compile_variant(curve, "                   1              1e+308\n", msg, sizeof msg) == RC_EINPUT);
+    ENSURE(strstr(msg, "card /INTER/TYPE6/1") && strstr(msg, "below the resolution of the coordinates"));
+    /* the demo itself is resolvable */
+    ENSURE(compile_variant(curve, curve, msg, sizeof msg) == RC_OK);
+    /* a run of 1e12 s against a contact time of 1e-3 s: time unresolvable */
+    ENSURE(compile_variant("                   1              0.0001\n", "               1e+15              0.0001\n", msg,
+                           sizeof msg) == RC_EINPUT);
+    ENSURE(strstr(msg, "card /INTER/TYPE6/1") && strstr(msg, "below the resolution of the time"));
+}
+
 void suite_messages(void);
 void suite_messages(void)
 {
     RUN_TEST(test_messages_state_names);
+    RUN_TEST(test_messages_unresolvable_scales);
 }

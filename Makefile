@@ -79,10 +79,19 @@ asan: deps
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 build-asan/run_tests
 	@mkdir -p out
 	ASAN_OPTIONS=detect_leaks=1 build-asan/ricochet run cases/demo_sphere_drop.rad -o out/asan_demo.nc
+	@# every command-line path, failures included (a leak or error exits 9)
+	ASAN_OPTIONS=detect_leaks=1:exitcode=9 UBSAN_OPTIONS=print_stacktrace=1 \
+	    bash tests/cli_test.sh build-asan/ricochet > out/asan_cli.log 2>&1; \
+	    cat out/asan_cli.log; ! grep -q '^FAIL ' out/asan_cli.log
 
 valgrind: all
+	@mkdir -p out
 	valgrind --error-exitcode=9 --leak-check=full --errors-for-leak-kinds=definite \
 	    $(BIN) run cases/demo_sphere_drop.rad -o out/valgrind_demo.nc
+	@# every command-line path, failures included (a leak or error exits 9)
+	RICOCHET_WRAP="valgrind -q --error-exitcode=9 --leak-check=full --errors-for-leak-kinds=definite" \
+	    bash tests/cli_test.sh $(BIN) > out/valgrind_cli.log 2>&1; \
+	    cat out/valgrind_cli.log; ! grep -q '^FAIL ' out/valgrind_cli.log
 
 bench: deps
 	@$(MAKE) --no-print-directory all

@@ -4,6 +4,14 @@
 set -u
 bin=${1:-build/ricochet}
 tmp=$(mktemp -d)
+# RICOCHET_WRAP: a command to run the program under (valgrind, for the
+# failure paths); exec keeps the process id, so the signal tests still work
+if [ -n "${RICOCHET_WRAP:-}" ]; then
+    real=$(cd "$(dirname "$bin")" && pwd)/$(basename "$bin")
+    printf '#!/bin/sh\nexec %s %s "$@"\n' "$RICOCHET_WRAP" "$real" > "$tmp/wrapped"
+    chmod +x "$tmp/wrapped"
+    bin=$tmp/wrapped
+fi
 trap 'umount "$tmp/fs" 2>/dev/null; rm -rf "$tmp"' EXIT
 demo=cases/demo_sphere_drop.rad
 

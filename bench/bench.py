@@ -1,7 +1,7 @@
 """ricochet benchmarks: implicit (CVODE BDF + KLU) against an explicit
 central-difference integration of the same equations (bench/explicit_ref.c).
 
-Cases (SPEC section 12, bench/README.md):
+Cases (bench/README.md):
   1. sphere drop on a linear spring-dashpot floor, e = 0.8, 1 s;
      accuracy = rebound ratios v_out/v_in against the closed-form chain;
   2. settling column of N spheres (N = 10, 100, 1000), 5 s;

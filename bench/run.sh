@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Benchmarks (SPEC section 12): `make bench` runs `bash bench/run.sh build`.
+# Benchmarks (bench/README.md): `make bench` runs `bash bench/run.sh build`.
 # Builds the bench programs into BUILD (default build/) after `make all`,
 # then runs bench/bench.py. Extra arguments go to bench.py
 # (e.g. --only drop, --only quasi, --sizes 10,100, --quick).

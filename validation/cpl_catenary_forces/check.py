@@ -6,7 +6,7 @@ vertical plane turned about y. The end forces at t = 0 (coupling_force_end1,
 coupling_force_end2) are compared with (README.md):
   - stiff lines (EA = 1e12 w L): the inextensible catenary through the two
     ends (closed form with one scalar root), within 1e-6 relative;
-  - soft and taut lines: an independent scipy solution of SPEC 8's elastic
+  - soft and taut lines: an independent scipy solution of the elastic
     catenary equations in (c, u1, u2) (validation/lib/catenary_ref.py),
     within 1e-12 relative.
 """

@@ -4,7 +4,7 @@ Two catenaries (/COUPLING/CATENARY) from fixed points (-S, 0, 0) and (S, 0, 0)
 to the centre of mass of a body of mass M, in gravity; a pure damper (a
 /COUPLING/SPRING with k = 0) to a point far below takes the energy out. By
 symmetry the body settles on the axis at the height z where the two lines'
-vertical end forces carry its weight, 2 V(z) = M g, V(z) from SPEC 8's
+vertical end forces carry its weight, 2 V(z) = M g, V(z) from the elastic
 catenary equations solved by scipy (validation/lib/catenary_ref.py), z by
 brentq. Checks the settled height, that the body stays on the axis, and the
 ledger: the energy lost equals what the damper dissipated.

@@ -8,7 +8,7 @@ in 3-D. Checks (README.md):
     W_cat integrated from the work of the end forces) constant to the
     tolerance level, shrinking with rtol;
   - W_cat is the elastic + gravitational energy of the lines: its change
-    equals that of the closed-form line energy evaluated from SPEC 8's
+    equals that of the closed-form line energy evaluated from the elastic
     catenary solved by scipy at the output positions
     (validation/lib/catenary_ref.py).
 """

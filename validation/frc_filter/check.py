@@ -6,8 +6,8 @@ friction mu = 0.3 in the incremental form. From the moment t0 the contact
 acts, the law's force jumps to mu F_n along the belt (the stick damper's
 force c_t V = 2e4 N is beyond the limit at once, so it slips at t0), and the
 force that acts is the output of the continuous first-order filter
-tau dF_f/dt = F - F_f, which starts at zero (SPEC 6 [FR-FILT],
-docs/theory.md 6.3). Reference: F_f = L (1 - e^(-(t - t0)/tau)), 63.2 % at
+tau dF_f/dt = F - F_f, which starts at zero (docs/theory.md
+6.3). Reference: F_f = L (1 - e^(-(t - t0)/tau)), 63.2 % at
 t0 + tau; and the exact solution with the stick phase (the raw force
 c_t V + K_t V (t - t0) up to (1 + 1e-6) L, then L: no stick phase here). tau per Ifiltr: 3: 1/(2 pi Xfreq);
 1: Dt_ref/Xfreq; 2: Dt_ref/(2 pi Xfreq).

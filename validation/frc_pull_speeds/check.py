@@ -5,9 +5,9 @@ its static penetration on a plane carried by a 1e12 kg body (the "belt")
 moving at constant speed V along x. The block is held in x and y (/BCS
 "110 111"), free along z, so it slides at exactly V over the belt and its
 normal force is its weight. The measured coefficient |F_t| / F_n
-(inter_force_friction, inter_force_normal) is compared with the law of SPEC 6
-[FR-LAW], evaluated here at p = F_n / Area and v = V, for Ifric 1, 2, 3 at
-several (p, v) points (README.md), in both formulations: while sliding the
+(inter_force_friction, inter_force_normal) is compared with the law of
+docs/theory.md 6.1, evaluated here at p = F_n / Area and v = V, for Ifric 1, 2,
+3 at several (p, v) points (README.md), in both formulations: while sliding the
 incremental form (Iform 2) and the saturated viscous form (Iform 1) apply
 exactly the limit mu F_n.
 """
@@ -44,7 +44,7 @@ POINTS = {
 
 
 def mu_law(ifric, c, fric, p, v):
-    """SPEC 6 [FR-LAW], written from the specification, floored at zero."""
+    """The laws of docs/theory.md 6.1, written from their definition, floored at zero."""
     c1, c2, c3, c4, c5, c6 = c
     if ifric == 0:
         mu = fric

@@ -29,7 +29,7 @@ MUS, MUD, MUMAX, MUMIN, VCR1, VCR2 = 0.3, 0.25, 0.45, 0.1, 0.15, 0.5
 
 
 def mu(v):
-    """Renard's law, SPEC 6 [FR-LAW], written from the specification."""
+    """Renard's law (docs/theory.md 6.1), written from its definition."""
     if v <= VCR1:
         x = v / VCR1
         return MUS + (MUMAX - MUS) * x * (2.0 - x)

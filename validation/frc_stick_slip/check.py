@@ -50,7 +50,7 @@ RENARD = (MUS, MUK, MUS, MUK, VCR1, VCR2)
 
 
 def mu(s, c=RENARD):
-    """Renard's law, SPEC 6 [FR-LAW]; with mu_max = mu_s and mu_min = mu_d = mu_k
+    """Renard's law (docs/theory.md 6.1); with mu_max = mu_s and mu_min = mu_d = mu_k
     it is mu_s up to V_cr1, a cubic drop to mu_k by V_cr2, mu_k beyond."""
     mus, mud, mumax, mumin, v1, v2 = c
     if s <= v1:

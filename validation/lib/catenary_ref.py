@@ -2,7 +2,8 @@
 of ricochet's solver (which eliminates one equation and solves for the end
 tensions, src/coupling_catenary.c).
 
-elastic(): SPEC 8's three equations in its own unknowns (c, u1, u2), solved by
+elastic(): the three equations of the elastic catenary (docs/theory.md 8.2) in
+its own unknowns (c, u1, u2), solved by
 scipy.optimize.root (MINPACK hybrd, finite-difference Jacobian):
     a (u2 - u1) + b (sinh u2 - sinh u1) = X
     a (cosh u2 - cosh u1) + b/2 (sinh^2 u2 - sinh^2 u1) = Y
@@ -51,7 +52,7 @@ def _guess(X, Y, L, w, EA):
 
 
 def elastic(X, Y, L, w, EA, guess=None):
-    """Elastic catenary: (H, V1, V2) from SPEC 8's equations in (c, u1, u2)."""
+    """Elastic catenary: (H, V1, V2) from its three equations in (c, u1, u2)."""
     def eqs(z):
         c, u1, u2 = z
         a = c / w

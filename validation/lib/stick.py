@@ -1,7 +1,7 @@
 """The stick phase of ricochet's incremental (elastic-plastic) friction law,
 written from its description for the validation references; nothing here is
-read from the engine. The law is that of docs/theory.md 3.5 (SPEC 5
-[T6-FRIC]) with the stick damper of commit aa7c6b5 (docs/theory.md 3.5 still
+read from the engine. The law is that of docs/theory.md 3.5
+with the stick damper of commit aa7c6b5 (docs/theory.md 3.5 still
 describes the undamped stick spring).
 
 While sticking, the tangential force that acts is the spring state plus a

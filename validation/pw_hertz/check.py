@@ -1,4 +1,4 @@
-"""Hertz impact with /INTER/POWER: K delta^1.5, C = 0 (SPEC 7 [PW-FN]).
+"""Hertz impact with /INTER/POWER: K delta^1.5, C = 0 (docs/theory.md 9.1).
 
 Reference: Hertz closed form (README.md): maximum approach, peak force and
 contact duration, within 1e-4; and the same impact with /INTER/TYPE6 and the

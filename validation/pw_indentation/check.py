@@ -1,4 +1,4 @@
-"""The indentation exponent m3 (SPEC 7 [PW-FN]): with m3 = 0 the damping
+"""The indentation exponent m3 (docs/theory.md 9.1): with m3 = 0 the damping
 term C v acts at zero penetration (the force jumps to C v0 at contact and
 pulls, negative, before the bodies separate: ricochet clips it and records
 the release); with m3 > 1 it vanishes at zero penetration (no jump, the pull

@@ -1,7 +1,7 @@
 """Roller driven at a constant angular speed (/IMPVEL YY) on a block held by
 a spring-damper (/COUPLING/SPRING): the traction against the step5 friction
-law at the resulting slip speed, and f_max capping it (SPEC 7 [PW-FRIC],
-[PW-ROLLER]).
+law at the resulting slip speed, and f_max capping it (docs/theory.md
+9.4).
 
 The roller (cylinder, axis Y) presses on the block (box) by its weight; its
 X and Y translations are held (/BCS 110 000), its rotation imposed. The
@@ -50,7 +50,7 @@ def step5(x, x0, h0, x1, h1):
 
 
 def mu(v):
-    """SPEC 7: step5(v, -v_s, -mu_s, v_s, mu_s) below v_s, step5(v, v_s, mu_s, v_d, mu_d) beyond."""
+    """step5 friction (docs/theory.md 9.4): step5(v, -v_s, -mu_s, v_s, mu_s) below v_s, step5(v, v_s, mu_s, v_d, mu_d) beyond."""
     return step5(v, -VS, -MUS, VS, MUS) if v < VS else step5(v, VS, MUS, VD, MUD)
 
 

@@ -1,7 +1,7 @@
 """A solid cylinder rolling down an incline (cylinder-plane, /INTER/POWER
 with step5 friction): acceleration g sin(theta) / (1 + I/(m r^2)) without
-slip, and slip beginning when tan(theta) exceeds 3 mu_s (SPEC 7 [PW-FRIC],
-[PW-ROLLER]).
+slip, and slip beginning when tan(theta) exceeds 3 mu_s (docs/theory.md
+9.4).
 
 step5 friction is a function of the slip speed (mu(0) = 0): rolling needs a
 small creep s* where mu(s*) F_n equals the friction that rolling requires,

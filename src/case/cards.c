@@ -109,7 +109,10 @@ static rc_status rc_bad_subtype(rc_reader *rd, const rc_block *b)
 rc_status rc_card_dispatch(rc_reader *rd, const rc_block *b)
 {
     const char *kw = b->kw[0];
-    int family = 0;
+    int family = 0, mesh = 0;
+    rc_status st;
+    /* the mesh cards (cards_mesh.c) first: /PROP and /MAT are partly read */
+    if ((st = rc_cards_mesh(rd, b, &mesh)) || mesh) return st;
     /* ignored Radioss cards: a warning, whatever their header */
     if (rc_in_list(kw, rc_ignored, RC_NF(rc_ignored)))
         return rc_case_warn(rd, &b->hdr->loc, "card %s ignored: no meaning for rigid bodies",

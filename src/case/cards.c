@@ -2,7 +2,9 @@
  * Card dispatch: the table of supported cards (keyword, subtype, family
  * function), the Radioss cards ignored or planned, and the call of a
  * card's function. The card functions live in one file per family:
- *   cards_bodies.c      /NODE /GRNOD /RBODY /PART /GRPART
+ *   cards_bodies.c      /NODE /GRNOD/NODE /RBODY /PART /GRPART
+ *   cards_mesh.c        /SHELL /SH3N /BRICK /TETRA4 /PROP/SHELL /PROP/SOLID /MAT
+ *                       /SKEW/FIX /GRNOD/PART /GRNOD/GRNOD (called first)
  *   cards_surfaces.c    /SURF/PLANE /SURF/ELLIPS /SURF/CYL /SURF/BOX
  *   cards_interfaces.c  /INTER/TYPE6 /INTER/POWER
  *   cards_friction.c    /FRICTION /FRIC_ORIENT

@@ -155,9 +155,9 @@ typedef struct rc_case_bcs {
     rc_loc loc;
 } rc_case_bcs;
 
-/* /PART/part_ID (ricochet's reading, docs/case-format.md): a part is a rigid
- * body, or a named subset of its surfaces. Radioss's prop/mat/subset fields
- * are read and ignored. */
+/* /PART/part_ID (docs/case-format.md): Radioss's line 1 (prop_ID, mat_ID of
+ * the part's elements); with ricochet's optional line 2, also a rigid body
+ * or a named subset of its surfaces (for /FRICTION). */
 typedef struct rc_case_part {
     int id;
     char title[101];

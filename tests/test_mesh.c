@@ -461,6 +461,35 @@ static void test_mesh_deck_errors(void)
                       "not parallel");
 }
 
+/* /TETRA4 and a /SHELL triangle (node 4 blank) with its element Thick over
+ * the property's; the law and property aliases /MAT/ELAST, /PROP/TYPE14,
+ * /PROP/TYPE1. */
+static void test_mesh_deck_tetra_triangle(void)
+{
+    rc_error e;
+    rc_model *md = compile_text("/NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n10,5,5,5\n"
+                                "11,0,0,3\n12,1,0,3\n13,0,1,3\n20,0,0,3\n"
+                                "/MAT/ELAST/1\nresin\n1200,0\n1e9,0.3\n/PROP/TYPE14/2\ns\n/PROP/TYPE1/3\nsh\n\n\n,,0.5\n"
+                                "/PART/1\ntet\n2,1\n/PART/2\ntri\n3,1\n"
+                                "/TETRA4/1\n1,1,2,3,4\n/SHELL/2\n1,11,12,13,,,0,0.01\n"
+                                "/GRNOD/PART/5\ng\n1\n/GRNOD/PART/6\nh\n2\n"
+                                "/RBODY/1\nt\n10,,,3,,5\n\n\n/RBODY/2\nt\n20,,,3,,6,,3\n\n\n" RUN_TAIL, &e);
+    ENSURE(md != NULL);
+    if (!md) fprintf(stderr, "  %s\n", e.msg);
+    if (md) {
+        ENSURE_NEAR(md->body_mass[0], 200.0, 1e-14, 0);
+        for (int k = 0; k < 3; k++) ENSURE_NEAR(md->body_y0[k], 0.25, 1e-14, 0);
+        ENSURE_NEAR(md->body_J[0], 15.0, 1e-13, 0);
+        ENSURE_NEAR(md->body_J[1], 2.5, 1e-13, 0);
+        /* the triangle: sigma = 1200 x 0.01, m = 6, about node 20 (ICoG 3):
+         * Jzz = sigma (int x^2 + int y^2) = 12 (1/12 + 1/12) = 2 */
+        ENSURE_NEAR(md->body_mass[1], 6.0, 1e-14, 0);
+        ENSURE_NEAR(md->body_J[9 + 8], 2.0, 1e-13, 0);
+        ENSURE_NEAR(md->body_y0[RC_NB + 2], 3.0, 0, 0);
+        rc_model_free(md);
+    }
+}
+
 /* The Radioss 2022 layout as written by a pre-processor: fixed columns,
  * comment lines, line 4 with Ioptoff and Ifail; a 2019 line 4 (Ioptoff,
  * Iexpams); warnings for the sensor and Ifail. */
@@ -514,6 +543,7 @@ void suite_mesh(void)
     RUN_TEST(test_mesh_deck_brick_box_icog);
     RUN_TEST(test_mesh_deck_skew_ispher);
     RUN_TEST(test_mesh_deck_shell_box_groups);
+    RUN_TEST(test_mesh_deck_tetra_triangle);
     RUN_TEST(test_mesh_deck_errors);
     RUN_TEST(test_mesh_rbody_layouts);
 }

@@ -30,7 +30,6 @@
 #define RC_CASE_MAX_FILE_READS 4096      /* files opened per deck         */
 #define RC_CASE_MAX_BYTES (256L << 20)   /* bytes read per deck, all files */
 #define RC_CASE_TITLE_MAX 100            /* title characters              */
-#define RC_CASE_INERTIA_RTOL 1e-12       /* PD test: pivot > rtol * diagonal */
 
 /* One line of the deck, after comment removal. `text` is NUL-terminated,
  * trailing blanks and CR removed; it points into a file buffer. */

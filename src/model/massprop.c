@@ -269,6 +269,8 @@ static int pd_minor(const double *J)
 }
 
 typedef struct mp_work {
+    double *part_rho, *part_t; /* [npart] density, property thickness (resolved once) */
+    char *part_done;  /* [npart] 1: shells resolved, 2: solids resolved */
     int *node_body;   /* [nnode] body index, -1 none, -2 - b: also claimed by a second body */
     int *second;      /* [nnode] the second body claiming a node (-1) */
     rc_mp *acc;       /* [nrbody] about the main node */
@@ -297,8 +299,9 @@ static rc_status mark_nodes(const rc_case *c, mp_work *w, rc_error *err)
     return RC_OK;
 }
 
-/* Density of part p's material, and the plate thickness of element e. */
-static rc_status elem_material(const rc_case *c, const rc_case_part *p, const rc_case_elem *e, double *rho,
+/* Density of part p's material, and the thickness of its /PROP/SHELL (0
+ * for solids), checked against element e (named in the messages). */
+static rc_status part_material(const rc_case *c, const rc_case_part *p, const rc_case_elem *e, double *rho,
                                double *t, rc_error *err)
 {
     const int mi = rc_case_find_mat(c, p->mat_id);
@@ -324,11 +327,7 @@ static rc_status elem_material(const rc_case *c, const rc_case_part *p, const rc
     if (pi >= 0 && (c->mesh->prop[pi].kind == RC_PROP_SHELL) != shell)
         RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field prop_ID: expected a /PROP/%s for the %s elements of the part, got /PROP/%s/%d",
                  RC_LOC(p->prop_loc), card, shell ? "SHELL" : "SOLID", elem_card(e->kind), shell ? "SOLID" : "SHELL", p->prop_id);
-    if (!shell) return RC_OK;
-    *t = e->thick > 0 ? e->thick : pi >= 0 ? c->mesh->prop[pi].thick : 0;
-    if (!(*t > 0))
-        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s/%d, field Thick: expected a shell thickness > 0 [m] for element %d (element Thick or the Thick of /PROP/SHELL/%d), got 0",
-                 RC_LOC(e->loc), elem_card(e->kind), e->part_id, e->id, p->prop_id);
+    if (shell && pi >= 0) *t = c->mesh->prop[pi].thick;
     return RC_OK;
 }
 
@@ -377,9 +376,18 @@ static rc_status mesh_elements(const rc_case *c, mp_work *w, rc_error *err)
                      RC_LOC(el->loc), card, el->part_id, el->id, nin, el->nn, c->rbody[body].id, out);
         }
         w->part_in[pi]++;
-        double rho = 0, t = 0;
-        rc_status st = elem_material(c, &c->part[pi], el, &rho, &t, err);
-        if (st) return st;
+        const int shell = el->kind == RC_ELEM_SHELL || el->kind == RC_ELEM_SH3N;
+        if (w->part_done[pi] != 1 + !shell) {
+            /* first element of the part (or of the other kind): resolve */
+            rc_status st = part_material(c, &c->part[pi], el, &w->part_rho[pi], &w->part_t[pi], err);
+            if (st) return st;
+            w->part_done[pi] = (char)(1 + !shell);
+        }
+        const double rho = w->part_rho[pi];
+        const double t = !shell ? 0 : el->thick > 0 ? el->thick : w->part_t[pi];
+        if (shell && !(t > 0))
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s/%d, field Thick: expected a shell thickness > 0 [m] for element %d (element Thick or the Thick of /PROP/SHELL/%d), got 0",
+                     RC_LOC(el->loc), card, el->part_id, el->id, c->part[pi].prop_id);
         /* vertices relative to the body's main node */
         const int mn = rc_case_find_node(c, c->rbody[body].node_id);
         const double *r0 = mn >= 0 ? c->node[mn].x : c->node[nd[0]].x;
@@ -524,7 +532,10 @@ rc_status rc_massprop_bodies(const rc_case *c, rc_body_mp *out, rc_error *err)
     w.acc = calloc((size_t)c->nrbody + 1, sizeof *w.acc);
     w.part_in = calloc((size_t)c->npart + 1, sizeof(int));
     w.part_out = calloc((size_t)c->npart + 1, sizeof(int));
-    if (!w.node_body || !w.second || !w.acc || !w.part_in || !w.part_out) {
+    w.part_rho = calloc((size_t)c->npart + 1, sizeof(double));
+    w.part_t = calloc((size_t)c->npart + 1, sizeof(double));
+    w.part_done = calloc((size_t)c->npart + 1, 1);
+    if (!w.node_body || !w.second || !w.acc || !w.part_in || !w.part_out || !w.part_rho || !w.part_t || !w.part_done) {
         st = RC_SET(err, RC_ENOMEM, "out of memory computing the mass properties");
         goto done;
     }
@@ -548,5 +559,8 @@ done:
     free(w.acc);
     free(w.part_in);
     free(w.part_out);
+    free(w.part_rho);
+    free(w.part_t);
+    free(w.part_done);
     return st;
 }

@@ -423,11 +423,11 @@ static void test_mesh_deck_errors(void)
     EXPECT_MESH_ERROR(deck, "card /PART/1", "1 part with elements in no rigid body", "/PART/1 (", "1 of 1 elements");
     /* an element partly in a body */
     snprintf(deck, sizeof deck, "%s%s/GRNOD/NODE/7\ng\n1,2,3,4\n/RBODY/1\nb\n9,,,,1.0,7\n1,1,1\n0,0,0\n" RUN_TAIL, BOX_NODES, BOX_MESH);
-    EXPECT_MESH_ERROR(deck, ":25:", "card /BRICK/1", "element 1 has 4 of its 8 nodes in /RBODY/1", "node 5 in no rigid body");
+    EXPECT_MESH_ERROR(deck, ":25:", "card /BRICK/1, field node_ID5", "element 1 has 4 of its 8 nodes in /RBODY/1", "node 5 in no rigid body");
     /* an element across two bodies */
     snprintf(deck, sizeof deck, "%s%s/GRNOD/NODE/7\ng\n1,2,3,4\n/GRNOD/NODE/8\ng\n5,6,7,8\n/NODE\n10,0,0,0\n"
              "/RBODY/1\nb\n9,,,,1.0,7\n1,1,1\n0,0,0\n/RBODY/2\nc\n10,,,,1.0,8\n1,1,1\n0,0,0\n" RUN_TAIL, BOX_NODES, BOX_MESH);
-    EXPECT_MESH_ERROR(deck, "card /BRICK/1", "in /RBODY/1 and in /RBODY/2");
+    EXPECT_MESH_ERROR(deck, "card /BRICK/1, field node_ID5", "in /RBODY/1 and in /RBODY/2");
     /* a law whose density ricochet does not read */
     snprintf(deck, sizeof deck, "%s/MAT/LAW99/3\nx\n7800\n/PROP/SOLID/2\ns\n/PART/1\nbox\n2,3\n/BRICK/1\n1,1,2,3,4,5,6,7,8\n"
              "/GRNOD/PART/7\ng\n1\n/RBODY/1\nb\n9,,,,1.0,7\n1,1,1\n0,0,0\n" RUN_TAIL, BOX_NODES);

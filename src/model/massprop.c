@@ -289,7 +289,7 @@ static rc_status mark_nodes(const rc_case *c, mp_work *w, rc_error *err)
             const int n = rc_case_find_node(c, id);
             if (n < 0) {
                 if (k < 0) continue; /* the main node: the compiler's error */
-                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /GRNOD/%d: expected the id of a /NODE, got %d (no such node; the group is /RBODY/%d's grnd_ID)",
+                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /GRNOD/%d, field node_ID: expected the id of a /NODE, got %d (no such node; the group is /RBODY/%d's grnd_ID)",
                          RC_LOC(c->grnod[g].loc), c->grnod[g].id, id, rb->id);
             }
             if (w->node_body[n] == -1) w->node_body[n] = b;
@@ -354,13 +354,13 @@ static rc_status mesh_elements(const rc_case *c, mp_work *w, rc_error *err)
                          RC_LOC(el->loc), card, el->part_id, k + 1, el->nodes[k], el->id);
             const int b = w->node_body[nd[k]];
             if (b >= 0 && w->second[nd[k]] >= 0)
-                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s/%d: node %d of element %d is in /RBODY/%d and /RBODY/%d: an element's nodes belong to one rigid body",
-                         RC_LOC(el->loc), card, el->part_id, el->nodes[k], el->id, c->rbody[b].id, c->rbody[w->second[nd[k]]].id);
+                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s/%d, field node_ID%d: node %d of element %d is in /RBODY/%d and /RBODY/%d: an element's nodes belong to one rigid body",
+                         RC_LOC(el->loc), card, el->part_id, k + 1, el->nodes[k], el->id, c->rbody[b].id, c->rbody[w->second[nd[k]]].id);
             if (b >= 0) {
                 nin++;
                 if (body >= 0 && b != body)
-                    RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s/%d: element %d has nodes in /RBODY/%d and in /RBODY/%d (node %d): an element belongs to one rigid body whole",
-                             RC_LOC(el->loc), card, el->part_id, el->id, c->rbody[body].id, c->rbody[b].id, el->nodes[k]);
+                    RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s/%d, field node_ID%d: element %d has nodes in /RBODY/%d and in /RBODY/%d (node %d): an element belongs to one rigid body whole",
+                             RC_LOC(el->loc), card, el->part_id, k + 1, el->id, c->rbody[body].id, c->rbody[b].id, el->nodes[k]);
                 body = b;
             }
         }
@@ -369,11 +369,11 @@ static rc_status mesh_elements(const rc_case *c, mp_work *w, rc_error *err)
             continue;
         }
         if (nin < el->nn) {
-            int out = 0;
+            int out = 0, ko = 0;
             for (int k = 0; k < el->nn; k++)
-                if (w->node_body[nd[k]] < 0) { out = el->nodes[k]; break; }
-            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s/%d: element %d has %d of its %d nodes in /RBODY/%d and node %d in no rigid body: an element belongs to one rigid body whole (add its nodes to the body's grnd_ID group)",
-                     RC_LOC(el->loc), card, el->part_id, el->id, nin, el->nn, c->rbody[body].id, out);
+                if (w->node_body[nd[k]] < 0) { out = el->nodes[k]; ko = k; break; }
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s/%d, field node_ID%d: element %d has %d of its %d nodes in /RBODY/%d and node %d in no rigid body: an element belongs to one rigid body whole (add its nodes to the body's grnd_ID group)",
+                     RC_LOC(el->loc), card, el->part_id, ko + 1, el->id, nin, el->nn, c->rbody[body].id, out);
         }
         w->part_in[pi]++;
         const int shell = el->kind == RC_ELEM_SHELL || el->kind == RC_ELEM_SH3N;

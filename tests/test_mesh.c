@@ -490,6 +490,39 @@ static void test_mesh_deck_tetra_triangle(void)
     }
 }
 
+/* /ADMAS: type 0 on each node, type 1 shared; on the main node it acts as
+ * the card's Mass (ICoG 4 keeps it, drops the secondary nodes'). */
+static void test_mesh_deck_admas(void)
+{
+    rc_error e;
+    const char *d1 = "/NODE\n1,0,0,0\n2,2,0,0\n3,0,2,0\n/GRNOD/NODE/5\ng\n2,3\n/GRNOD/NODE/6\nm\n1\n"
+                     "/ADMAS/0/1\nper node\n1.5,5\n/ADMAS/1/2\nshared\n2.0,6\n"
+                     "/RBODY/1\nb\n1,,,3,1.0,5,,1\n0.1,0.1,0.1\n\n" RUN_TAIL;
+    rc_model *md = compile_text(d1, &e);
+    ENSURE(md != NULL);
+    if (!md) fprintf(stderr, "  %s\n", e.msg);
+    if (md) {
+        ENSURE_NEAR(md->body_mass[0], 6.0, 1e-15, 0);
+        ENSURE_NEAR(md->body_y0[0], 0.5, 1e-15, 0);
+        ENSURE_NEAR(md->body_y0[1], 0.5, 1e-15, 0);
+        ENSURE_NEAR(md->body_J[8], 9.1, 1e-14, 0);
+        rc_model_free(md);
+    }
+    md = compile_text("/NODE\n1,0,0,0\n2,2,0,0\n3,0,2,0\n/GRNOD/NODE/5\ng\n2,3\n/GRNOD/NODE/6\nm\n1\n"
+                      "/ADMAS/0/1\nper node\n1.5,5\n/ADMAS/1/2\nshared\n2.0,6\n"
+                      "/RBODY/1\nb\n1,,,3,1.0,5,,4\n0.1,0.1,0.1\n\n" RUN_TAIL, &e);
+    ENSURE(md != NULL);
+    if (md) {
+        ENSURE_NEAR(md->body_mass[0], 3.0, 1e-15, 0);
+        ENSURE_NEAR(md->body_J[8], 0.1, 1e-15, 0);
+        rc_model_free(md);
+    }
+    EXPECT_MESH_ERROR("/NODE\n1,0,0,0\n2,2,0,0\n/GRNOD/NODE/5\ng\n2\n/ADMAS/0/1\nx\n1.5,5\n"
+                      "/RBODY/1\nb\n1,,,,1.0\n0.1,0.1,0.1\n\n" RUN_TAIL,
+                      ":9:", "card /ADMAS/0/1, field grnd_ID", "node 2 of /GRNOD/5 is in no rigid body");
+    EXPECT_MESH_ERROR("/NODE\n1,0,0,0\n/ADMAS/3/1\nx\n1.5,5\n" RUN_TAIL, ":3:", "field type", "not supported yet");
+}
+
 /* The Radioss 2022 layout as written by a pre-processor: fixed columns,
  * comment lines, line 4 with Ioptoff and Ifail; a 2019 line 4 (Ioptoff,
  * Iexpams); warnings for the sensor and Ifail. */
@@ -544,6 +577,7 @@ void suite_mesh(void)
     RUN_TEST(test_mesh_deck_skew_ispher);
     RUN_TEST(test_mesh_deck_shell_box_groups);
     RUN_TEST(test_mesh_deck_tetra_triangle);
+    RUN_TEST(test_mesh_deck_admas);
     RUN_TEST(test_mesh_deck_errors);
     RUN_TEST(test_mesh_rbody_layouts);
 }

@@ -390,6 +390,40 @@ rc_status rc_cards_mesh_finish(rc_reader *rd)
 }
 
 /* ======================================================================
+ * /ADMAS
+ * ====================================================================== */
+
+/* /ADMAS/type/admas_ID (the header's two numbers), types 0 and 1: title;
+ * MASS grnd_ID. */
+static rc_status rc_card_admas(rc_reader *rd, const rc_block *b)
+{
+    rc_case_mesh *ms = rc_mesh(rd);
+    rc_status st;
+    int nd;
+    if (!ms) return RC_ENOMEM;
+    if (b->nkw != 1 || !b->has_id || b->unit_id <= 0)
+        return rc_case_fail(rd, &b->hdr->loc, b->name, "admas_ID",
+                            "expected the header /ADMAS/type/admas_ID with admas_ID > 0");
+    if (b->id > 1)
+        return rc_case_fail(rd, &b->hdr->loc, b->name, "type",
+                            "type %d: not supported yet (supported: 0 mass on each node, 1 mass "
+                            "shared by the nodes of a group)",
+                            b->id);
+    RC_GROW(rd, ms->admas, ms->capadmas, ms->nadmas);
+    rc_case_admas *a = &ms->admas[ms->nadmas++];
+    char title[RC_CASE_TITLE_MAX + 1];
+    a->id = b->unit_id;
+    a->type = b->id;
+    a->loc = b->hdr->loc;
+    if ((st = rc_card_lines(rd, b, title, 1, 1, "MASS grnd_ID", &nd))) return st;
+    rc_field l1[] = {RC_F_REAL("MASS", &a->mass, 0, RC_FF_NONNEG),
+                     RC_F_INT("grnd_ID", &a->grnod_id, 0, RC_FF_POS)};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
+    a->line_loc = b->lines[1].loc;
+    return rc_note_id(rd, RC_IDK_ADMAS, a->id, &a->loc, b->hdr->text);
+}
+
+/* ======================================================================
  * Dispatch and look-ups
  * ====================================================================== */
 
@@ -408,7 +442,12 @@ rc_status rc_cards_mesh(rc_reader *rd, const rc_block *b, int *handled)
     else if (strcmp(kw, "PROP") == 0 && (!strcmp(sub, "SOLID") || !strcmp(sub, "TYPE14"))) pk = RC_PROP_SOLID;
     else if (strcmp(kw, "GRNOD") == 0 && strcmp(sub, "PART") == 0) grnod = 1;
     else if (strcmp(kw, "GRNOD") == 0 && strcmp(sub, "GRNOD") == 0) grnod = 0;
-    else if (strcmp(kw, "MAT") == 0 && b->nkw != 2) return RC_OK; /* e.g. /MAT/GAS/MOLE: ignored */
+    else if (strcmp(kw, "ADMAS") == 0) {
+        *handled = 1;
+        if (b->bad)
+            return rc_case_fail(rd, &b->hdr->loc, b->name, NULL, "malformed card header: %s", b->bad);
+        return rc_card_admas(rd, b);
+    } else if (strcmp(kw, "MAT") == 0 && b->nkw != 2) return RC_OK; /* e.g. /MAT/GAS/MOLE: ignored */
     else if (strcmp(kw, "MAT") != 0 && strcmp(kw, "SKEW") != 0) return RC_OK;
     *handled = 1;
     if (b->bad)
@@ -453,5 +492,6 @@ void rc_case_mesh_free(rc_case_mesh *m)
         free(m->def[k].id_loc);
     }
     free(m->def);
+    free(m->admas);
     free(m);
 }

@@ -74,12 +74,23 @@ typedef struct rc_case_grnod_def {
     rc_loc *id_loc;    /* [n] line of each id */
 } rc_case_grnod_def;
 
+/* /ADMAS/type/admas_ID, types 0 and 1: point masses on the nodes of a group. */
+typedef struct rc_case_admas {
+    int id;
+    int type;          /* 0: Mass on each node; 1: Mass shared equally by the nodes */
+    double mass;       /* [kg] */
+    int grnod_id;
+    rc_loc loc;
+    rc_loc line_loc;   /* the line holding MASS and grnd_ID */
+} rc_case_admas;
+
 typedef struct rc_case_mesh {
     int nelem;  rc_case_elem *elem;  int capelem;
     int nprop;  rc_case_prop *prop;  int capprop;
     int nmat;   rc_case_mat *mat;    int capmat;
     int nskew;  rc_case_skew *skew;  int capskew;
     int ndef;   rc_case_grnod_def *def; int capdef;
+    int nadmas; rc_case_admas *admas; int capadmas;
 } rc_case_mesh;
 
 /* Index of the card with this id, or -1 (linear scans: few cards). */

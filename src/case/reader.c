@@ -391,7 +391,7 @@ static rc_status rc_check_dups(rc_reader *rd)
         "fct_ID", "node_ID", "grnod_ID", "rbody_ID", "surf_ID",
         "inter_ID", "inivel_ID", "grav_ID", "bcs_ID", "cpl_ID", "part_ID", "grpart_ID",
         "fric_ID", "fric_orient_ID", "impvel_ID",
-        "shell_ID", "brick_ID", "prop_ID", "mat_ID", "skew_ID"};
+        "shell_ID", "brick_ID", "prop_ID", "mat_ID", "skew_ID", "admas_ID"};
     const rc_id_entry *worst = NULL, *first = NULL;
     int wkind = 0;
     for (int k = 0; k < RC_IDK_COUNT; k++) {

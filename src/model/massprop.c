@@ -274,6 +274,7 @@ typedef struct mp_work {
     int *node_body;   /* [nnode] body index, -1 none, -2 - b: also claimed by a second body */
     int *second;      /* [nnode] the second body claiming a node (-1) */
     rc_mp *acc;       /* [nrbody] about the main node */
+    double *main_add; /* [nrbody] /ADMAS mass on the main node (acts as the card's Mass) */
     int *part_in, *part_out; /* [npart] elements in a body / in none */
 } mp_work;
 
@@ -411,6 +412,37 @@ static rc_status mesh_elements(const rc_case *c, mp_work *w, rc_error *err)
     return RC_OK;
 }
 
+/* /ADMAS: point masses on nodes of the bodies. */
+static rc_status nodal_masses(const rc_case *c, mp_work *w, rc_error *err)
+{
+    for (int k = 0; c->mesh && k < c->mesh->nadmas; k++) {
+        const rc_case_admas *ad = &c->mesh->admas[k];
+        const int g = rc_case_find_grnod(c, ad->grnod_id);
+        if (g < 0)
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /ADMAS/%d/%d, field grnd_ID: expected the id of a /GRNOD, got %d (no such group)",
+                     RC_LOC(ad->line_loc), ad->type, ad->id, ad->grnod_id);
+        const int nn = c->grnod[g].n;
+        for (int j = 0; j < nn; j++) {
+            const int id = c->grnod[g].nodes[j], n = rc_case_find_node(c, id);
+            const int b = n >= 0 ? w->node_body[n] : -1;
+            if (b < 0 || w->second[n] >= 0)
+                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /ADMAS/%d/%d, field grnd_ID: node %d of /GRNOD/%d %s: an added mass belongs to one rigid body",
+                         RC_LOC(ad->line_loc), ad->type, ad->id, id, ad->grnod_id,
+                         n < 0 ? "does not exist" : b < 0 ? "is in no rigid body" : "is in two rigid bodies");
+            const double mk = ad->type == 0 ? ad->mass : ad->mass / nn;
+            const int mn = rc_case_find_node(c, c->rbody[b].node_id);
+            if (mn == n) {
+                w->main_add[b] += mk;
+                continue;
+            }
+            double r[3];
+            for (int d = 0; d < 3; d++) r[d] = c->node[n].x[d] - (mn >= 0 ? c->node[mn].x[d] : 0);
+            add_point(&w->acc[b], r, mk);
+        }
+    }
+    return RC_OK;
+}
+
 /* Parts with elements in no rigid body: one error listing them. */
 static rc_status orphan_parts(const rc_case *c, const mp_work *w, rc_error *err)
 {
@@ -432,9 +464,10 @@ static rc_status orphan_parts(const rc_case *c, const mp_work *w, rc_error *err)
 }
 
 /* Card terms, ICoG, Ispher, checks for body b. */
-static rc_status finish_body(const rc_case *c, int b, const rc_mp *a, rc_body_mp *o, rc_error *err)
+static rc_status finish_body(const rc_case *c, int b, const rc_mp *a, double main_add, rc_body_mp *o, rc_error *err)
 {
     const rc_case_rbody *rb = &c->rbody[b];
+    const double mc = rb->mass + main_add; /* the main node's mass */
     const int mn = rc_case_find_node(c, rb->node_id);
     const double *xm = c->node[mn].x;
     const int icog = rb->icog ? rb->icog : 1, ispher = rb->ispher ? rb->ispher : 2;
@@ -460,7 +493,7 @@ static rc_status finish_body(const rc_case *c, int b, const rc_mp *a, rc_body_mp
     }
     /* the reference point c (relative to the main node) and the second
      * moment of the mesh about it */
-    double cg[3] = {0, 0, 0}, S[6] = {0, 0, 0, 0, 0, 0}, M = rb->mass;
+    double cg[3] = {0, 0, 0}, S[6] = {0, 0, 0, 0, 0, 0}, M = mc;
     const double me = a->m;
     if (icog == 2 && !(me > 0))
         RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field ICoG: ICoG = 2 puts the centre of mass at the mesh's, but the body has no element (expected ICoG 1, 3 or 4, or elements on its nodes)",
@@ -480,12 +513,12 @@ static rc_status finish_body(const rc_case *c, int b, const rc_mp *a, rc_body_mp
         S[5] = a->S[5] - a->s[0] * cg[2] - cg[0] * a->s[2] + me * cg[0] * cg[2];
         /* the card's mass sits at the main node (ICoG 1, 3) or at cg (2) */
         if (icog != 2) {
-            S[0] += rb->mass * cg[0] * cg[0];
-            S[1] += rb->mass * cg[1] * cg[1];
-            S[2] += rb->mass * cg[2] * cg[2];
-            S[3] += rb->mass * cg[0] * cg[1];
-            S[4] += rb->mass * cg[1] * cg[2];
-            S[5] += rb->mass * cg[0] * cg[2];
+            S[0] += mc * cg[0] * cg[0];
+            S[1] += mc * cg[1] * cg[1];
+            S[2] += mc * cg[2] * cg[2];
+            S[3] += mc * cg[0] * cg[1];
+            S[4] += mc * cg[1] * cg[2];
+            S[5] += mc * cg[0] * cg[2];
         }
     }
     double *J = o->J;
@@ -510,7 +543,7 @@ static rc_status finish_body(const rc_case *c, int b, const rc_mp *a, rc_body_mp
      * inverse overflows the accelerations at t = 0 */
     if (!(M >= DBL_MIN) || !isfinite(M))
         RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field Mass: expected a finite total mass of at least %g (a normal number) [kg], got %g (Mass %g + mesh %g, ICoG %d)",
-                 RC_LOC(l1), rb->id, DBL_MIN, M, rb->mass, o->mesh_mass, icog);
+                 RC_LOC(l1), rb->id, DBL_MIN, M, mc, o->mesh_mass, icog);
     static const char *const names[3] = {"Jxx", "Jyy", "Jzz"};
     for (int k = 0; k < 3; k++)
         if (!(J[4 * k] >= DBL_MIN) || !isfinite(J[4 * k]))
@@ -530,22 +563,24 @@ rc_status rc_massprop_bodies(const rc_case *c, rc_body_mp *out, rc_error *err)
     w.node_body = malloc(((size_t)c->nnode + 1) * sizeof(int));
     w.second = malloc(((size_t)c->nnode + 1) * sizeof(int));
     w.acc = calloc((size_t)c->nrbody + 1, sizeof *w.acc);
+    w.main_add = calloc((size_t)c->nrbody + 1, sizeof(double));
     w.part_in = calloc((size_t)c->npart + 1, sizeof(int));
     w.part_out = calloc((size_t)c->npart + 1, sizeof(int));
     w.part_rho = calloc((size_t)c->npart + 1, sizeof(double));
     w.part_t = calloc((size_t)c->npart + 1, sizeof(double));
     w.part_done = calloc((size_t)c->npart + 1, 1);
-    if (!w.node_body || !w.second || !w.acc || !w.part_in || !w.part_out || !w.part_rho || !w.part_t || !w.part_done) {
+    if (!w.node_body || !w.second || !w.acc || !w.main_add || !w.part_in || !w.part_out || !w.part_rho || !w.part_t || !w.part_done) {
         st = RC_SET(err, RC_ENOMEM, "out of memory computing the mass properties");
         goto done;
     }
     if ((st = mark_nodes(c, &w, err))) goto done;
     if ((st = mesh_elements(c, &w, err))) goto done;
     if ((st = orphan_parts(c, &w, err))) goto done;
+    if ((st = nodal_masses(c, &w, err))) goto done;
     for (int b = 0; b < c->nrbody && !st; b++) {
         memset(&out[b], 0, sizeof out[b]);
         if (rc_case_find_node(c, c->rbody[b].node_id) < 0) continue; /* the compiler's error */
-        st = finish_body(c, b, &w.acc[b], &out[b], err);
+        st = finish_body(c, b, &w.acc[b], w.main_add[b], &out[b], err);
         out[b].nelem = 0;
     }
     /* element counts per body */
@@ -557,6 +592,7 @@ done:
     free(w.node_body);
     free(w.second);
     free(w.acc);
+    free(w.main_add);
     free(w.part_in);
     free(w.part_out);
     free(w.part_rho);

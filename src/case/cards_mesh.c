@@ -302,50 +302,59 @@ static rc_status rc_grnod_fill(rc_reader *rd, int di, int depth)
     rc_case_grnod_def *d = &ms->def[di];
     rc_case_grnod *g = &c->grnod[d->grnod];
     int *nodes = NULL, n = 0, cap = 0;
+    char card[48];
+    snprintf(card, sizeof card, "/GRNOD/%s/%d", d->by_part ? "PART" : "GRNOD", g->id);
     rc_status st = RC_OK;
     if (g->n || g->nodes) return RC_OK; /* done */
     if (depth > c->ngrnod)
-        return rc_case_fail(rd, &g->loc, "/GRNOD/GRNOD", "grnod_ID",
+        return rc_case_fail(rd, &g->loc, card, "grnod_ID",
                             "the groups of /GRNOD/%d form a cycle", g->id);
-    for (int k = 0; k < d->n && !st; k++) {
-        if (d->by_part) {
+    if (d->by_part) {
+        /* every id a part; then one pass over the elements */
+        int *want = malloc(((size_t)d->n + 1) * sizeof *want);
+        if (!want) return rc_case_nomem(rd);
+        for (int k = 0; k < d->n; k++) {
             int found = 0;
-            for (int p = 0; p < c->npart; p++) found |= c->part[p].id == d->ids[k];
+            for (int p = 0; p < c->npart && !found; p++) found = c->part[p].id == d->ids[k];
             if (!found) {
-                st = rc_case_fail(rd, &d->id_loc[k], "/GRNOD/PART", "part_ID",
-                                  "expected the id of a /PART, got %d (no such part)", d->ids[k]);
-                break;
+                free(want);
+                return rc_case_fail(rd, &d->id_loc[k], card, "part_ID",
+                                    "expected the id of a /PART, got %d (no such part)", d->ids[k]);
             }
-            for (int e = 0; ms && e < ms->nelem; e++) {
-                const rc_case_elem *el = &ms->elem[e];
-                if (el->part_id != d->ids[k]) continue;
-                for (int j = 0; j < el->nn; j++) {
-                    if (n == cap) {
-                        int nc = cap ? 2 * cap : 64;
-                        int *p = realloc(nodes, (size_t)nc * sizeof *p);
-                        if (!p) { free(nodes); return rc_case_nomem(rd); }
-                        nodes = p;
-                        cap = nc;
-                    }
-                    nodes[n++] = el->nodes[j];
-                }
-            }
-        } else {
-            int gj = -1;
-            for (int q = 0; q < c->ngrnod; q++)
-                if (c->grnod[q].id == d->ids[k]) { gj = q; break; }
-            if (gj < 0) {
-                st = rc_case_fail(rd, &d->id_loc[k], "/GRNOD/GRNOD", "grnod_ID",
-                                  "expected the id of a /GRNOD, got %d (no such group)", d->ids[k]);
-                break;
-            }
-            if (gj == d->grnod) {
-                st = rc_case_fail(rd, &d->id_loc[k], "/GRNOD/GRNOD", "grnod_ID",
-                                  "group %d names itself", d->ids[k]);
-                break;
-            }
-            st = rc_grnod_expand(rd, gj, depth + 1, &nodes, &n, &cap);
+            want[k] = d->ids[k];
         }
+        qsort(want, (size_t)d->n, sizeof *want, rc_cmp_int);
+        for (int e = 0; ms && e < ms->nelem; e++) {
+            const rc_case_elem *el = &ms->elem[e];
+            if (!bsearch(&el->part_id, want, (size_t)d->n, sizeof *want, rc_cmp_int)) continue;
+            for (int j = 0; j < el->nn; j++) {
+                if (n == cap) {
+                    int nc = cap ? 2 * cap : 64;
+                    int *p = realloc(nodes, (size_t)nc * sizeof *p);
+                    if (!p) { free(nodes); free(want); return rc_case_nomem(rd); }
+                    nodes = p;
+                    cap = nc;
+                }
+                nodes[n++] = el->nodes[j];
+            }
+        }
+        free(want);
+    }
+    for (int k = 0; k < d->n && !st && !d->by_part; k++) {
+        int gj = -1;
+        for (int q = 0; q < c->ngrnod; q++)
+            if (c->grnod[q].id == d->ids[k]) { gj = q; break; }
+        if (gj < 0) {
+            st = rc_case_fail(rd, &d->id_loc[k], card, "grnod_ID",
+                              "expected the id of a /GRNOD, got %d (no such group)", d->ids[k]);
+            break;
+        }
+        if (gj == d->grnod) {
+            st = rc_case_fail(rd, &d->id_loc[k], card, "grnod_ID",
+                              "group %d names itself", d->ids[k]);
+            break;
+        }
+        st = rc_grnod_expand(rd, gj, depth + 1, &nodes, &n, &cap);
     }
     if (st) { free(nodes); return st; }
     /* sorted, each node once */

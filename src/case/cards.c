@@ -2,7 +2,9 @@
  * Card dispatch: the table of supported cards (keyword, subtype, family
  * function), the Radioss cards ignored or planned, and the call of a
  * card's function. The card functions live in one file per family:
- *   cards_bodies.c      /NODE /GRNOD /RBODY /PART /GRPART
+ *   cards_bodies.c      /NODE /GRNOD/NODE /RBODY /PART /GRPART
+ *   cards_mesh.c        /SHELL /SH3N /BRICK /TETRA4 /PROP/SHELL /PROP/SOLID /MAT
+ *                       /SKEW/FIX /GRNOD/PART /GRNOD/GRNOD (called first)
  *   cards_surfaces.c    /SURF/PLANE /SURF/ELLIPS /SURF/CYL /SURF/BOX
  *   cards_interfaces.c  /INTER/TYPE6 /INTER/POWER
  *   cards_friction.c    /FRICTION /FRIC_ORIENT
@@ -109,7 +111,10 @@ static rc_status rc_bad_subtype(rc_reader *rd, const rc_block *b)
 rc_status rc_card_dispatch(rc_reader *rd, const rc_block *b)
 {
     const char *kw = b->kw[0];
-    int family = 0;
+    int family = 0, mesh = 0;
+    rc_status st;
+    /* the mesh cards (cards_mesh.c) first: /PROP and /MAT are partly read */
+    if ((st = rc_cards_mesh(rd, b, &mesh)) || mesh) return st;
     /* ignored Radioss cards: a warning, whatever their header */
     if (rc_in_list(kw, rc_ignored, RC_NF(rc_ignored)))
         return rc_case_warn(rd, &b->hdr->loc, "card %s ignored: no meaning for rigid bodies",

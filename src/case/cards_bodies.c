@@ -13,8 +13,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char rc_note_skew[] = "(skew frames)";
-static const char rc_note_sensor[] = "(sensors)";
 
 /* ======================================================================
  * /NODE and /GRNOD
@@ -75,74 +73,76 @@ rc_status rc_card_grnod(rc_reader *rd, const rc_block *b)
  * /RBODY
  * ====================================================================== */
 
-/* Cholesky test of the inertia tensor [[Jxx,Jxy,Jxz],[Jxy,Jyy,Jyz],
- * [Jxz,Jyz,Jzz]]: 0 when positive definite, else the failing pivot (1..3).
- * A pivot must exceed RC_CASE_INERTIA_RTOL times its diagonal term. */
-static int rc_inertia_pivot(const double J[6])
-{
-    double l11, l21, l31, l22, l32, d;
-    if (!(J[0] > 0)) return 1;
-    l11 = sqrt(J[0]);
-    l21 = J[3] / l11;
-    l31 = J[5] / l11;
-    d = J[1] - l21 * l21;
-    if (!(d > RC_CASE_INERTIA_RTOL * J[1])) return 2;
-    l22 = sqrt(d);
-    l32 = (J[4] - l21 * l31) / l22;
-    d = J[2] - l31 * l31 - l32 * l32;
-    if (!(d > RC_CASE_INERTIA_RTOL * J[2])) return 3;
-    return 0;
-}
-
-/* /RBODY/rbody_ID: title; main node, flags, mass; Jxx Jyy Jzz; Jxy Jyz
- * Jxz; optional Ioptoff Ifail. */
+/* /RBODY/rbody_ID (Radioss 2017..2026): title; main node, sensor, skew,
+ * Ispher, Mass, secondary nodes, Ikrem, ICoG, surface; Jxx Jyy Jzz; Jxy Jyz
+ * Jxz; optional line 4 Ioptoff, Iexpams (internal), Ifail (2021+); line 5
+ * FN FT expN expT when Ifail = 1. The mass and inertia are added to those
+ * of the mesh by the model stage (model/massprop.c). */
 rc_status rc_card_rbody(rc_reader *rd, const rc_block *b)
 {
     rc_case *c = rd->c;
-    int nd, unused = 0;
+    int nd;
     rc_status st;
     if ((st = rc_header(rd, b, 1, RC_ID_REQUIRED, "rbody_ID", "/RBODY/rbody_ID"))) return st;
     RC_GROW(rd, c->rbody, rd->caprbody, c->nrbody);
     rc_case_rbody *r = &c->rbody[c->nrbody++];
     r->id = b->id;
     r->loc = b->hdr->loc;
-    if ((st = rc_card_lines(rd, b, r->title, 3, 4, "node_ID..., Jxx Jyy Jzz, Jxy Jyz Jxz", &nd)))
+    if ((st = rc_card_lines(rd, b, r->title, 3, 5,
+                            "node_ID..., Jxx Jyy Jzz, Jxy Jyz Jxz[, Ioptoff Iexpams Ifail[, FN FT "
+                            "expN expT]]",
+                            &nd)))
         return st;
 
-    /* line 1: main node, unsupported options must be 0, mass > 0 */
     rc_field l1[] = {
         RC_F_INT("node_ID", &r->node_id, 0, RC_FF_POS),
-        RC_F_INTN("sens_ID", &unused, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_sensor),
-        RC_F_INTN("Skew_ID", &r->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew),
+        RC_F_INT("sens_ID", &r->sens_id, 0, RC_FF_NONNEG),
+        RC_F_INT("Skew_ID", &r->skew_id, 0, RC_FF_NONNEG),
         RC_F_SET("Ispher", &r->ispher, 0, 0, 0xFu, 0, NULL),
-        RC_F_REAL("Mass", &r->mass, 0, RC_FF_POS),
+        RC_F_REAL("Mass", &r->mass, 0, RC_FF_NONNEG),
         RC_F_INT("grnd_ID", &r->grnod_id, 0, RC_FF_NONNEG),
-        RC_F_INT("Ikrem", NULL, 0, 0),
-        RC_F_SET("ICoG", &r->icog, 0, 0, 0x1Fu, RC_BIT(0) | RC_BIT(1) | RC_BIT(3),
-                 "(ICoG 2 and 4 need the secondary nodes' masses)"),
-        RC_F_INTN("surf_ID", &unused, RC_FF_NONNEG | RC_FF_ONLY0, "(envelope surfaces)"),
+        RC_F_SET("Ikrem", &r->ikrem, 0, 0, 0x3u, 0, NULL),
+        RC_F_SET("ICoG", &r->icog, 0, 0, 0x1Fu, 0, NULL),
+        RC_F_INT("surf_ID", &r->surf_id, 0, RC_FF_NONNEG),
     };
-    /* lines 2 and 3: the inertia tensor in global axes */
-    rc_field l2[] = {RC_F_REAL("Jxx", &r->J[0], 0, RC_FF_POS), RC_F_REAL("Jyy", &r->J[1], 0, RC_FF_POS),
-                     RC_F_REAL("Jzz", &r->J[2], 0, RC_FF_POS)};
+    /* lines 2 and 3: the added inertia, skew axes (global without skew) */
+    rc_field l2[] = {RC_F_REAL("Jxx", &r->J[0], 0, RC_FF_NONNEG),
+                     RC_F_REAL("Jyy", &r->J[1], 0, RC_FF_NONNEG),
+                     RC_F_REAL("Jzz", &r->J[2], 0, RC_FF_NONNEG)};
     rc_field l3[] = {RC_F_REAL("Jxy", &r->J[3], 0, 0), RC_F_REAL("Jyz", &r->J[4], 0, 0),
                      RC_F_REAL("Jxz", &r->J[5], 0, 0)};
-    /* line 4: HMPP decomposition flag (no meaning here), failure */
-    rc_field l4[] = {RC_F_INT("Ioptoff", NULL, 0, 0),
-                     RC_F_INTN("Ifail", &unused, RC_FF_ONLY0, "(rigid body failure)")};
-    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
-    if ((st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
-    if ((st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
-    if (nd == 4 && (st = rc_parse_line(rd, b, &b->lines[4], l4, RC_NF(l4)))) return st;
-
-    /* the tensor as a whole must be positive definite */
-    int piv = rc_inertia_pivot(r->J);
-    if (piv)
-        return rc_case_fail(rd, &b->lines[3].loc, b->name, "Jxy Jyz Jxz",
-                            "expected a positive-definite inertia tensor, got Jxx Jyy Jzz = "
-                            "%.9g %.9g %.9g and Jxy Jyz Jxz = %.9g %.9g %.9g (leading minor "
-                            "%d is not positive)",
-                            r->J[0], r->J[1], r->J[2], r->J[3], r->J[4], r->J[5], piv);
+    /* line 4: HMPP decomposition flag, an internal AMS flag, failure */
+    rc_field l4[] = {RC_F_INT("Ioptoff", &r->ioptoff, 0, 0), RC_F_INT("Iexpams", &r->iexpams, 0, 0),
+                     RC_F_SET("Ifail", &r->ifail, 0, 0, 0x3u, 0, NULL)};
+    rc_field l5[] = {RC_F_REAL("FN", &r->fail[0], 0, 0), RC_F_REAL("FT", &r->fail[1], 0, 0),
+                     RC_F_REAL("expN", &r->fail[2], 0, 0), RC_F_REAL("expT", &r->fail[3], 0, 0)};
+    rc_field *lf[5] = {l1, l2, l3, l4, l5};
+    const int nf[5] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5)};
+    for (int i = 0; i < nd; i++) {
+        if (i == 4 && r->ifail != 1 && b->lines[5].len == 0) break; /* blank: harmless */
+        if (i == 4 && r->ifail != 1)
+            return rc_case_fail(rd, &b->lines[5].loc, b->name, NULL,
+                                "unexpected data line: line 5 (FN FT expN expT) follows Ifail = 1 "
+                                "only, got Ifail = %d",
+                                r->ifail);
+        if ((st = rc_parse_line(rd, b, &b->lines[i + 1], lf[i], nf[i]))) return st;
+        r->line_loc[i] = b->lines[i + 1].loc;
+    }
+    /* fields with a Radioss meaning ricochet does not model: warned */
+    if (r->sens_id &&
+        (st = rc_case_warn(rd, &r->line_loc[0], "card %s, field sens_ID: sensor %d ignored: the body is "
+                     "active from t = 0 (Radioss activates it when the sensor triggers)",
+                     b->name, r->sens_id)))
+        return st;
+    if (r->surf_id &&
+        (st = rc_case_warn(rd, &r->line_loc[0], "card %s, field surf_ID: envelope surface %d ignored "
+                     "(ricochet's contacts use the analytic surfaces of the body)",
+                     b->name, r->surf_id)))
+        return st;
+    if (r->ifail &&
+        (st = rc_case_warn(rd, &r->line_loc[3], "card %s, field Ifail: rigid body failure ignored: the "
+                     "body never fails", b->name)))
+        return st;
     return rc_note_id(rd, RC_IDK_RBODY, r->id, &r->loc, b->hdr->text);
 }
 
@@ -174,14 +174,15 @@ static rc_status rc_id_lines(rc_reader *rd, const rc_block *b, int first, int la
     return RC_OK;
 }
 
-/* /PART/part_ID (ricochet's reading: a rigid body, or a named subset of its
- * surfaces): title; the Radioss line prop_ID mat_ID subset_ID Thick (read,
- * ignored); rbody_ID and up to nine surface ids; then up to ten surface ids
- * a line. */
+/* /PART/part_ID: title; the Radioss line prop_ID mat_ID subset_ID Thick;
+ * optionally ricochet's line 2, rbody_ID and up to nine surface ids, then up
+ * to ten surface ids a line (a part as a subset of a body's surfaces, for
+ * /FRICTION). Without line 2 the part is a part of the mesh: its elements
+ * (/SHELL/part_ID, ...) give their body its mass. */
 rc_status rc_card_part(rc_reader *rd, const rc_block *b)
 {
-    static const char desc[] = "prop_ID mat_ID subset_ID Thick, rbody_ID surf_ID1 ... surf_ID9"
-                               "[, surf_ID1 ... surf_ID10 ...]";
+    static const char desc[] = "prop_ID mat_ID subset_ID Thick[, rbody_ID surf_ID1 ... surf_ID9"
+                               "[, surf_ID1 ... surf_ID10 ...]]";
     rc_case *c = rd->c;
     int nd, cap = 0, v[10];
     rc_status st;
@@ -191,27 +192,27 @@ rc_status rc_card_part(rc_reader *rd, const rc_block *b)
     p->id = b->id;
     p->loc = b->hdr->loc;
     if ((st = rc_var_lines(rd, b, p->title, desc, &nd))) return st;
+    if (nd < 1)
+        return rc_case_fail(rd, &b->hdr->loc, b->name, "prop_ID",
+                            "expected a title line and the line prop_ID mat_ID subset_ID Thick, "
+                            "found %d data line%s",
+                            nd, nd == 1 ? "" : "s");
 
-    /* the ricochet line is required: a Radioss /PART alone names no body */
-    if (b->n < 3)
-        return rc_case_fail(rd, &b->hdr->loc, b->name, "rbody_ID",
-                            "expected 2 data lines at least (%s), found %d: line 2 (rbody_ID "
-                            "surf_ID1 ... surf_ID9) is a ricochet extension, required: a part "
-                            "is a rigid body or a named subset of its surfaces",
-                            desc, b->n - 1);
-    if (nd < 2) nd = 2; /* a blank line 2 is a line of defaults */
-
-    /* line 1 (Radioss): property, material, subset, thickness */
-    rc_field l1[] = {RC_F_INT("prop_ID", NULL, 0, 0), RC_F_INT("mat_ID", NULL, 0, 0),
+    /* line 1 (Radioss): property, material, subset, (contact) thickness */
+    rc_field l1[] = {RC_F_INT("prop_ID", &p->prop_id, 0, RC_FF_NONNEG),
+                     RC_F_INT("mat_ID", &p->mat_id, 0, RC_FF_NONNEG),
                      RC_F_INT("subset_ID", NULL, 0, 0), RC_F_REAL("Thick", NULL, 0, 0)};
     if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
+    p->prop_loc = b->lines[1].loc;
+    if (nd < 2) return rc_note_id(rd, RC_IDK_PART, p->id, &p->loc, b->hdr->text);
 
-    /* line 2: the body, then surface ids; further lines: surface ids */
+    /* line 2 (ricochet): the body, then surface ids; further lines: surface ids */
     rc_field l2[10];
     for (int k = 0; k < 10; k++) {
         rc_field fk = RC_F_INT(k ? "surf_ID" : "rbody_ID", &v[k], 0, RC_FF_NONNEG);
         l2[k] = fk;
     }
+    p->ext = 1;
     p->line_loc = b->lines[2].loc;
     if ((st = rc_parse_line(rd, b, &b->lines[2], l2, 10))) return st;
     p->rbody_id = v[0];

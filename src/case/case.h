@@ -53,19 +53,25 @@ typedef struct rc_case_grnod {
     rc_loc loc;
 } rc_case_grnod;
 
-/* /RBODY/rbody_ID (Radioss layout). Only the fields ricochet uses are
- * kept; the others are checked to be blank/zero or supported by the reader. */
+/* /RBODY/rbody_ID (Radioss layout, formats 2017..2026). Every field is
+ * kept; the model stage adds the mass of the mesh (model/massprop.c). */
 typedef struct rc_case_rbody {
     int id;
     char title[101];
-    int node_id;   /* main node = centre of mass                        */
-    int skew_id;   /* 0 only (checked by the reader)                    */
-    int ispher;    /* 0..3 as Radioss; ricochet uses the inertia as given */
-    double mass;   /* [kg]                                              */
+    int node_id;   /* main node                                         */
+    int sens_id;   /* sensor (ricochet: none; warned)                   */
+    int skew_id;   /* frame of Jxx..Jxz (0: global axes)                */
+    int ispher;    /* 0..3 as Radioss (0 means 2)                       */
+    double mass;   /* added mass at the main node [kg]                  */
     int grnod_id;  /* secondary nodes group (0: none)                   */
-    int icog;      /* 0..4; ricochet supports 0/1/3 as "CoG at main node" */
-    double J[6];   /* Jxx Jyy Jzz Jxy Jyz Jxz [kg m^2], global axes at t=0 */
+    int ikrem;     /* Radioss rigid-wall flag: read                     */
+    int icog;      /* 0..4 (0 means 1)                                  */
+    int surf_id;   /* envelope surface (ricochet: none; warned)         */
+    double J[6];   /* added Jxx Jyy Jzz Jxy Jyz Jxz [kg m^2], skew axes */
+    int ioptoff, iexpams, ifail; /* line 4: read                        */
+    double fail[4];/* FN FT expN expT (Ifail = 1) [N] [N] [-] [-]       */
     rc_loc loc;
+    rc_loc line_loc[5]; /* data lines 1..5 (file 0 when absent)         */
 } rc_case_rbody;
 
 /* /SURF/PLANE/surf_ID and /SURF/ELLIPS/surf_ID. */
@@ -149,9 +155,9 @@ typedef struct rc_case_bcs {
     rc_loc loc;
 } rc_case_bcs;
 
-/* /PART/part_ID (ricochet's reading, docs/case-format.md): a part is a rigid
- * body, or a named subset of its surfaces. Radioss's prop/mat/subset fields
- * are read and ignored. */
+/* /PART/part_ID (docs/case-format.md): Radioss's line 1 (prop_ID, mat_ID of
+ * the part's elements); with ricochet's optional line 2, also a rigid body
+ * or a named subset of its surfaces (for /FRICTION). */
 typedef struct rc_case_part {
     int id;
     char title[101];
@@ -161,6 +167,9 @@ typedef struct rc_case_part {
                        body's surfaces                                    */
     rc_loc loc;
     rc_loc line_loc;  /* line 2: rbody_ID and the first surface ids       */
+    int ext;          /* 1: the ricochet line 2 is present                */
+    int prop_id, mat_id; /* Radioss line 1 (mesh parts)                  */
+    rc_loc prop_loc;  /* line 1                                           */
 } rc_case_part;
 
 /* /GRPART/PART/grpart_ID: a list of part ids. */
@@ -275,6 +284,7 @@ struct rc_case {
     int ngrpart; rc_case_grpart *grpart;
     int nfriction; rc_case_friction *friction;
     int nfricorient; rc_case_fricorient *fricorient;
+    struct rc_case_mesh *mesh; /* elements, /PROP, /MAT, /SKEW (case_mesh.h); NULL: none */
     rc_case_run run;
     rc_case_solver solver;
 

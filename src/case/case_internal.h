@@ -30,7 +30,6 @@
 #define RC_CASE_MAX_FILE_READS 4096      /* files opened per deck         */
 #define RC_CASE_MAX_BYTES (256L << 20)   /* bytes read per deck, all files */
 #define RC_CASE_TITLE_MAX 100            /* title characters              */
-#define RC_CASE_INERTIA_RTOL 1e-12       /* PD test: pivot > rtol * diagonal */
 
 /* One line of the deck, after comment removal. `text` is NUL-terminated,
  * trailing blanks and CR removed; it points into a file buffer. */
@@ -58,7 +57,9 @@ typedef struct rc_block {
 typedef enum {
     RC_IDK_FUNCT, RC_IDK_NODE, RC_IDK_GRNOD, RC_IDK_RBODY, RC_IDK_SURF,
     RC_IDK_INTER, RC_IDK_INIVEL, RC_IDK_GRAV, RC_IDK_BCS, RC_IDK_COUPLING, RC_IDK_PART,
-    RC_IDK_GRPART, RC_IDK_FRICTION, RC_IDK_FRICORIENT, RC_IDK_IMPVEL, RC_IDK_COUNT
+    RC_IDK_GRPART, RC_IDK_FRICTION, RC_IDK_FRICORIENT, RC_IDK_IMPVEL,
+    RC_IDK_SHELL, RC_IDK_SOLID, RC_IDK_PROP, RC_IDK_MAT, RC_IDK_SKEW, RC_IDK_ADMAS, /* cards_mesh.c */
+    RC_IDK_COUNT
 } rc_id_kind;
 
 /* One id as declared, for the duplicate check. */
@@ -238,6 +239,13 @@ rc_status rc_card_solver(rc_reader *rd, const rc_block *b);
 rc_status rc_cards_finish(rc_reader *rd);
 /* Defaults of the optional cards, set before reading. */
 void rc_cards_defaults(rc_case *c);
+
+/* Mesh cards (cards_mesh.c): /SHELL /SH3N /BRICK /TETRA4 /PROP/SHELL
+ * /PROP/SOLID /MAT /SKEW/FIX /GRNOD/PART /GRNOD/GRNOD /ADMAS. *handled = 0 for a
+ * card that is not one of them (the dispatch goes on). */
+rc_status rc_cards_mesh(rc_reader *rd, const rc_block *b, int *handled);
+/* After the last card: expand /GRNOD/PART and /GRNOD/GRNOD into node lists. */
+rc_status rc_cards_mesh_finish(rc_reader *rd);
 
 /* ---- Dispatch (cards.c) ------------------------------------------------ */
 

@@ -16,6 +16,7 @@
  *    reader terminate quickly on any input, including include bombs.
  */
 #include "case/case_internal.h"
+#include "case/case_mesh.h"
 #include "base/error.h"
 
 #include <ctype.h>
@@ -389,7 +390,8 @@ static rc_status rc_check_dups(rc_reader *rd)
     static const char *const names[RC_IDK_COUNT] = {
         "fct_ID", "node_ID", "grnod_ID", "rbody_ID", "surf_ID",
         "inter_ID", "inivel_ID", "grav_ID", "bcs_ID", "cpl_ID", "part_ID", "grpart_ID",
-        "fric_ID", "fric_orient_ID", "impvel_ID"};
+        "fric_ID", "fric_orient_ID", "impvel_ID",
+        "shell_ID", "brick_ID", "prop_ID", "mat_ID", "skew_ID", "admas_ID"};
     const rc_id_entry *worst = NULL, *first = NULL;
     int wkind = 0;
     for (int k = 0; k < RC_IDK_COUNT; k++) {
@@ -438,6 +440,7 @@ rc_status rc_case_load(const char *path, rc_case **out, rc_error *err)
     if ((st = rc_read_blocks(&rd))) goto fail;
     if ((st = rc_check_dups(&rd))) goto fail;
     if ((st = rc_cards_finish(&rd))) goto fail;
+    if ((st = rc_cards_mesh_finish(&rd))) goto fail;
     if ((st = rc_case_index_build(rd.c, err))) goto fail;
 
     rc_reader_release(&rd);
@@ -461,6 +464,7 @@ void rc_case_free(rc_case *c)
     for (int i = 0; i < c->ngrnod; i++) free(c->grnod[i].nodes);
     free(c->grnod);
     free(c->rbody);
+    rc_case_mesh_free(c->mesh);
     free(c->surf);
     free(c->type6);
     free(c->power);

@@ -23,6 +23,9 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
         const double *y0 = m->body_y0 + RC_NB * b;
         fprintf(f, "  /RBODY/%-6d mass %-11.5g x0 (%.5g, %.5g, %.5g) v0 (%.5g, %.5g, %.5g)%s\n", m->body_id[b],
                 m->body_mass[b], y0[0], y0[1], y0[2], y0[7], y0[8], y0[9], m->body_fixed[b] ? " fixed" : "");
+        const double *J = m->body_J + 9 * b;
+        fprintf(f, "               inertia Jxx Jyy Jzz %.17g %.17g %.17g Jxy Jyz Jxz %.17g %.17g %.17g mass %.17g x0 %.17g %.17g %.17g\n",
+                J[0], J[4], J[8], J[1], J[5], J[2], m->body_mass[b], y0[0], y0[1], y0[2]);
     }
     if (m->nbody > 20) fprintf(f, "  ... and %d more bodies (the first 20 in deck order are listed)\n", m->nbody - 20);
     fprintf(f, "surfaces    %d\n", m->nsurf);

@@ -15,6 +15,7 @@
 #include "base/error.h"
 #include "model/geom.h"
 #include "model/imposed.h"
+#include "model/massprop.h"
 #include "model/model.h"
 #include "model/power.h"
 
@@ -72,58 +73,62 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
 {
     /* main node -> the body that took it (+1), to refuse a second one */
     int *owner = calloc((size_t)c->nnode + 1, sizeof(int));
-    if (!owner) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    rc_body_mp *mp = calloc((size_t)c->nrbody + 1, sizeof *mp);
+    if (!owner || !mp) {
+        free(owner);
+        free(mp);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    {
+        rc_status mst = rc_massprop_bodies(c, mp, err);
+        if (mst) {
+            free(owner);
+            free(mp);
+            return mst;
+        }
+    }
     for (int b = 0; b < c->nrbody; b++) {
         const rc_case_rbody *rb = &c->rbody[b];
         int nd = rc_case_find_node(c, rb->node_id);
         if (nd < 0) {
             free(owner);
+            free(mp);
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field node_ID: expected the id of a /NODE, got %d (no such node)",
                      RC_LOC(rb->loc), rb->id, rb->node_id);
         }
         if (owner[nd]) {
             const rc_case_rbody *first = &c->rbody[owner[nd] - 1];
             free(owner);
+            free(mp);
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field node_ID: node %d is already the main node of /RBODY/%d (%s:%d); expected a node of its own",
                      RC_LOC(rb->loc), rb->id, rb->node_id, first->id, first->loc.file, first->loc.line);
         }
         owner[nd] = b + 1;
-        /* a mass or inertia below the smallest normal number is no body:
-         * its inverse overflows the accelerations at t = 0 */
-        if (!(rb->mass >= DBL_MIN) || !isfinite(rb->mass)) {
+        if (rb->grnod_id && rc_case_find_grnod(c, rb->grnod_id) < 0) {
             free(owner);
-            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field Mass: expected a finite mass of at least %g (a normal number) [kg], got %g",
-                     RC_LOC(rb->loc), rb->id, DBL_MIN, rb->mass);
-        }
-        for (int k = 0; k < 3; k++)
-            if (!(rb->J[k] >= DBL_MIN) || !isfinite(rb->J[k])) {
-                free(owner);
-                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field %s: expected a finite moment of inertia of at least %g [kg m^2], got %g",
-                         RC_LOC(rb->loc), rb->id, k == 0 ? "Jxx" : k == 1 ? "Jyy" : "Jzz", DBL_MIN, rb->J[k]);
-            }
-        if (rb->grnod_id && rc_case_find_grnod(c, rb->grnod_id) < 0)
+            free(mp);
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field grnd_ID: expected the id of a /GRNOD, got %d (no such group)",
                      RC_LOC(rb->loc), rb->id, rb->grnod_id);
+        }
         m->body_id[b] = rb->id;
-        m->body_mass[b] = rb->mass;
-        /* inertia: Jxx Jyy Jzz Jxy Jyz Jxz -> row-major 3x3 */
+        /* mass, centre of mass and inertia: mesh and card (massprop.c) */
+        m->body_mass[b] = mp[b].mass;
         double *J = m->body_J + 9 * b;
-        J[0] = rb->J[0]; J[4] = rb->J[1]; J[8] = rb->J[2];
-        J[1] = J[3] = rb->J[3];
-        J[5] = J[7] = rb->J[4];
-        J[2] = J[6] = rb->J[5];
+        memcpy(J, mp[b].J, 9 * sizeof *J);
         int bad = inv3(J, m->body_Jinv + 9 * b);
         for (int k = 0; k < 9; k++) bad |= !isfinite(m->body_Jinv[9 * b + k]);
         if (bad) {
             free(owner);
+            free(mp);
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, fields Jxx..Jxz: expected a positive-definite inertia tensor",
                      RC_LOC(rb->loc), rb->id);
         }
         double *y0 = m->body_y0 + RC_NB * b;
-        memcpy(y0, c->node[nd].x, 3 * sizeof(double));
+        memcpy(y0, mp[b].x, 3 * sizeof(double));
         y0[3] = 1.0; /* body frame = global frame at t = 0 */
     }
     free(owner);
+    free(mp);
     /* initial velocities */
     int *flag = calloc((size_t)c->nrbody + 1, sizeof(int));
     if (!flag) RC_RAISE(err, RC_ENOMEM, "out of memory");

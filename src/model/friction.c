@@ -91,6 +91,7 @@ static rc_status surface_parts(const rc_case *c, const rc_model *m, int *spart, 
     for (int p = 0; p < c->npart && !st; p++) {
         const rc_case_part *cp = &c->part[p];
         int b = -1, n = 0;
+        if (!cp->rbody_id && !cp->nsurf) continue; /* a part of the mesh (no ricochet line 2) names no surface */
         if (cp->rbody_id && (b = rc_case_find_rbody(c, cp->rbody_id)) < 0) {
             st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /PART/%d, field rbody_ID: expected the id of a /RBODY, got %d (no such body)",
                         RC_LOC(cp->loc), cp->id, cp->rbody_id);

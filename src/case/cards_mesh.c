@@ -1,0 +1,506 @@
+/*
+ * Mesh cards: the elements whose mass makes a rigid body's (/SHELL, /SH3N,
+ * /BRICK, /TETRA4), their properties (/PROP/SHELL, /PROP/SOLID) and
+ * materials (/MAT/<law>: the density), skew frames (/SKEW/FIX) and the node
+ * groups built from parts or groups (/GRNOD/PART, /GRNOD/GRNOD, expanded into
+ * node lists once every card is read). Layouts: docs/case-format.md; the
+ * mass properties are computed by the model stage (model/massprop.c).
+ */
+#include "case/case_internal.h"
+#include "case/case_mesh.h"
+#include "base/error.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The mesh part of the case, created on first use. */
+static rc_case_mesh *rc_mesh(rc_reader *rd)
+{
+    if (!rd->c->mesh) rd->c->mesh = calloc(1, sizeof *rd->c->mesh);
+    if (!rd->c->mesh) rc_case_nomem(rd);
+    return rd->c->mesh;
+}
+
+/* ======================================================================
+ * Elements
+ * ====================================================================== */
+
+/* /SHELL/part_ID, /SH3N/part_ID, /BRICK/part_ID, /TETRA4/part_ID: no title,
+ * one element a line: id, nodes; shells then phi and Thick. */
+static rc_status rc_card_elements(rc_reader *rd, const rc_block *b, rc_elem_kind kind)
+{
+    static const char *const usage[] = {"", "/SHELL/part_ID", "/SH3N/part_ID", "/BRICK/part_ID",
+                                        "/TETRA4/part_ID"};
+    static const char *const idname[] = {"", "shell_ID", "sh3n_ID", "brick_ID", "tetra_ID"};
+    static const int nnode[] = {0, 4, 3, 8, 4};
+    static const char *const nname[] = {"node_ID1", "node_ID2", "node_ID3", "node_ID4",
+                                        "node_ID5", "node_ID6", "node_ID7", "node_ID8"};
+    rc_case_mesh *ms = rc_mesh(rd);
+    rc_status st;
+    if (!ms) return RC_ENOMEM;
+    if ((st = rc_header(rd, b, 1, RC_ID_REQUIRED, "part_ID", usage[kind]))) return st;
+    const int n = rc_block_trim(b), nn = nnode[kind];
+    const int shell = kind == RC_ELEM_SHELL || kind == RC_ELEM_SH3N;
+    for (int i = 0; i < n; i++) {
+        RC_GROW(rd, ms->elem, ms->capelem, ms->nelem);
+        rc_case_elem *e = &ms->elem[ms->nelem++];
+        rc_field f[14];
+        int k = 0;
+        rc_field fid = RC_F_INT(idname[kind], &e->id, 0, RC_FF_POS);
+        f[k++] = fid;
+        for (int j = 0; j < nn; j++) {
+            /* SHELL node 4 may be blank (a triangle) */
+            rc_field fj = RC_F_INT(nname[j], &e->nodes[j], 0,
+                                   kind == RC_ELEM_SHELL && j == 3 ? RC_FF_NONNEG : RC_FF_POS);
+            f[k++] = fj;
+        }
+        if (shell) {
+            rc_field pad = RC_F_SKIP(10), phi = RC_F_REAL("phi", NULL, 0, 0),
+                     th = RC_F_REAL("Thick", &e->thick, 0, RC_FF_NONNEG);
+            if (kind == RC_ELEM_SH3N) f[k++] = pad;
+            f[k++] = pad;
+            f[k++] = phi;
+            f[k++] = th;
+        }
+        if ((st = rc_parse_line(rd, b, &b->lines[i], f, k))) return st;
+        e->kind = kind;
+        e->nn = nn;
+        e->part_id = b->id;
+        e->loc = b->lines[i].loc;
+        if (kind == RC_ELEM_SHELL && (e->nodes[3] == 0 || e->nodes[3] == e->nodes[2])) {
+            e->nodes[3] = 0;
+            e->nn = 3; /* a degenerate quadrilateral is a triangle */
+        }
+        if ((st = rc_note_id(rd, shell ? RC_IDK_SHELL : RC_IDK_SOLID, e->id, &e->loc,
+                             b->hdr->text)))
+            return st;
+    }
+    return RC_OK;
+}
+
+/* ======================================================================
+ * /PROP/SHELL, /PROP/SOLID
+ * ====================================================================== */
+
+/* /PROP/SHELL/prop_ID (TYPE1): title, three lines; Thick on line 3 (21-40).
+ * /PROP/SOLID/prop_ID (TYPE14): title and lines, not read (no thickness). */
+static rc_status rc_card_prop(rc_reader *rd, const rc_block *b, rc_prop_kind kind)
+{
+    rc_case_mesh *ms = rc_mesh(rd);
+    rc_status st;
+    int nd;
+    if (!ms) return RC_ENOMEM;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "prop_ID",
+                        kind == RC_PROP_SHELL ? "/PROP/SHELL/prop_ID" : "/PROP/SOLID/prop_ID")))
+        return st;
+    RC_GROW(rd, ms->prop, ms->capprop, ms->nprop);
+    rc_case_prop *p = &ms->prop[ms->nprop++];
+    p->id = b->id;
+    p->kind = kind;
+    p->loc = b->hdr->loc;
+    if ((st = rc_var_lines(rd, b, p->title, "the property's lines", &nd))) return st;
+    if (kind == RC_PROP_SHELL) {
+        if (nd < 3)
+            return rc_case_fail(rd, &b->hdr->loc, b->name, "Thick",
+                                "expected 3 data lines at least (Ishell..., Hm..., N Istrain "
+                                "Thick ...), found %d",
+                                nd);
+        /* line 3: N, Istrain (blank in the 2024+ formats), Thick, Ashear,
+         * blank, Ithick, Iplas, Ipos */
+        rc_field l3[] = {RC_F_INT("N", NULL, 0, 0),           RC_F_INT("Istrain", NULL, 0, 0),
+                         RC_F_REAL("Thick", &p->thick, 0, RC_FF_NONNEG),
+                         RC_F_REAL("Ashear", NULL, 0, 0),     RC_F_SKIP(10),
+                         RC_F_INT("Ithick", NULL, 0, 0),      RC_F_INT("Iplas", NULL, 0, 0),
+                         RC_F_INT("Ipos", NULL, 0, 0)};
+        if ((st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
+        p->thick_loc = b->lines[3].loc;
+    }
+    return rc_note_id(rd, RC_IDK_PROP, p->id, &p->loc, b->hdr->text);
+}
+
+/* ======================================================================
+ * /MAT
+ * ====================================================================== */
+
+/* Laws whose first data line holds Init. dens. in columns 1-20 (checked
+ * against the Radioss 2017..2026 formats; docs/case-format.md). */
+static const char *const rc_rho_laws[] = {
+    "LAW1",  "ELAST",     "LAW2",     "PLAS_JOHNS", "PLAS_ZERIL", "LAW3",     "HYDPLA",
+    "LAW4",  "HYD_JCOOK", "LAW13",    "RIGID",      "LAW19",      "FABRI",    "LAW27",
+    "PLAS_BRIT", "LAW32", "HILL",     "LAW36",      "PLAS_TAB",   "LAW42",    "OGDEN",
+    "LAW43", "HILL_TAB",  "LAW44",    "COWPER",     "LAW65",      "ELASTOMER", "LAW66",
+    "LAW70", "FOAM_TAB",  "LAW87",    "BARLAT2000"};
+
+/* /MAT/<law>/mat_ID: title, then the law's lines; the density is the real
+ * in columns 1-20 of the first data line (up to the first comma in comma
+ * format), for the laws above. */
+static rc_status rc_card_mat(rc_reader *rd, const rc_block *b)
+{
+    rc_case_mesh *ms = rc_mesh(rd);
+    rc_status st;
+    int nd;
+    if (!ms) return RC_ENOMEM;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "mat_ID", "/MAT/<law>/mat_ID"))) return st;
+    RC_GROW(rd, ms->mat, ms->capmat, ms->nmat);
+    rc_case_mat *m = &ms->mat[ms->nmat++];
+    m->id = b->id;
+    m->loc = b->hdr->loc;
+    snprintf(m->law, sizeof m->law, "%s", b->kw[1]);
+    if ((st = rc_var_lines(rd, b, m->title, "the law's lines", &nd))) return st;
+    for (int i = 0; i < RC_NF(rc_rho_laws); i++)
+        if (strcmp(m->law, rc_rho_laws[i]) == 0) m->has_rho = 1;
+    if (m->has_rho) {
+        if (nd < 1)
+            return rc_case_fail(rd, &b->hdr->loc, b->name, "Init. dens.",
+                                "expected a data line with the density (Init. dens., columns "
+                                "1-20), found none");
+        /* the first field only: columns 1-20, or up to the first comma */
+        const rc_line *ln = &b->lines[1];
+        char buf[RC_CASE_MAX_LINE + 1];
+        const char *comma = strchr(ln->text, ',');
+        int len = comma ? (int)(comma - ln->text) : ln->len < 20 ? ln->len : 20;
+        memcpy(buf, ln->text, (size_t)len);
+        buf[len] = '\0';
+        rc_line one = {buf, len, ln->loc};
+        rc_field f[] = {RC_F_REAL("Init. dens.", &m->rho, 0, RC_FF_NONNEG)};
+        if ((st = rc_parse_line(rd, b, &one, f, 1))) return st;
+        m->rho_loc = ln->loc;
+    } else if ((st = rc_case_warn(rd, &b->hdr->loc,
+                                  "card %s ignored: ricochet reads the density of the laws listed "
+                                  "in docs/case-format.md only; an element using this material "
+                                  "is an error",
+                                  b->name)))
+        return st;
+    return rc_note_id(rd, RC_IDK_MAT, m->id, &m->loc, b->hdr->text);
+}
+
+/* ======================================================================
+ * /SKEW/FIX
+ * ====================================================================== */
+
+static double rc_norm3(const double *v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+static void rc_cross3(const double *a, const double *b, double *o)
+{
+    o[0] = a[1] * b[2] - a[2] * b[1];
+    o[1] = a[2] * b[0] - a[0] * b[2];
+    o[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* /SKEW/FIX/skew_ID: title; origin; vector Y'; vector Z'. */
+static rc_status rc_card_skew(rc_reader *rd, const rc_block *b)
+{
+    rc_case_mesh *ms = rc_mesh(rd);
+    rc_status st;
+    int nd;
+    double v1[3], v2[3], x[3];
+    if (!ms) return RC_ENOMEM;
+    if (b->nkw < 2 || strcmp(b->kw[1], "FIX") != 0)
+        return rc_case_fail(rd, &b->hdr->loc, b->name, NULL,
+                            "%s: not supported yet (supported: /SKEW/FIX)", b->name);
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "skew_ID", "/SKEW/FIX/skew_ID"))) return st;
+    RC_GROW(rd, ms->skew, ms->capskew, ms->nskew);
+    rc_case_skew *s = &ms->skew[ms->nskew++];
+    s->id = b->id;
+    s->loc = b->hdr->loc;
+    if ((st = rc_card_lines(rd, b, s->title, 3, 3, "Ox Oy Oz, X1 Y1 Z1, X2 Y2 Z2", &nd))) return st;
+    rc_field l1[] = {RC_F_REAL("Ox", &s->origin[0], 0, 0), RC_F_REAL("Oy", &s->origin[1], 0, 0),
+                     RC_F_REAL("Oz", &s->origin[2], 0, 0)};
+    rc_field l2[] = {RC_F_REAL("X1", &v1[0], 0, 0), RC_F_REAL("Y1", &v1[1], 0, 0),
+                     RC_F_REAL("Z1", &v1[2], 0, 0)};
+    rc_field l3[] = {RC_F_REAL("X2", &v2[0], 0, 0), RC_F_REAL("Y2", &v2[1], 0, 0),
+                     RC_F_REAL("Z2", &v2[2], 0, 0)};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, 3))) return st;
+    if ((st = rc_parse_line(rd, b, &b->lines[2], l2, 3))) return st;
+    if ((st = rc_parse_line(rd, b, &b->lines[3], l3, 3))) return st;
+    const double n1 = rc_norm3(v1), n2 = rc_norm3(v2);
+    if (!(n1 > 0))
+        return rc_case_fail(rd, &b->lines[2].loc, b->name, "X1 Y1 Z1",
+                            "expected a non-zero vector (axis Y'), got 0");
+    rc_cross3(v1, v2, x);
+    const double nx = rc_norm3(x);
+    if (!(n2 > 0) || !(nx > 1e-10 * n1 * n2))
+        return rc_case_fail(rd, &b->lines[3].loc, b->name, "X2 Y2 Z2",
+                            "expected a vector not parallel to Y' = (%.9g, %.9g, %.9g) (axis Z'), "
+                            "got (%.9g, %.9g, %.9g)",
+                            v1[0], v1[1], v1[2], v2[0], v2[1], v2[2]);
+    for (int k = 0; k < 3; k++) {
+        s->axis[1][k] = v1[k] / n1;
+        s->axis[0][k] = x[k] / nx;
+    }
+    rc_cross3(s->axis[0], s->axis[1], s->axis[2]);
+    return rc_note_id(rd, RC_IDK_SKEW, s->id, &s->loc, b->hdr->text);
+}
+
+/* ======================================================================
+ * /GRNOD/PART, /GRNOD/GRNOD
+ * ====================================================================== */
+
+/* Title, then up to ten part (group) ids a line; expanded at the end. */
+static rc_status rc_card_grnod_def(rc_reader *rd, const rc_block *b, int by_part)
+{
+    rc_case *c = rd->c;
+    rc_case_mesh *ms = rc_mesh(rd);
+    rc_status st;
+    int nd, cap = 0, capl = 0;
+    const char *usage = by_part ? "/GRNOD/PART/grnod_ID" : "/GRNOD/GRNOD/grnod_ID";
+    const char *name = by_part ? "part_ID" : "grnod_ID";
+    if (!ms) return RC_ENOMEM;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "grnod_ID", usage))) return st;
+    RC_GROW(rd, c->grnod, rd->capgrnod, c->ngrnod);
+    rc_case_grnod *g = &c->grnod[c->ngrnod++];
+    g->id = b->id;
+    g->loc = b->hdr->loc;
+    RC_GROW(rd, ms->def, ms->capdef, ms->ndef);
+    rc_case_grnod_def *d = &ms->def[ms->ndef++];
+    d->grnod = c->ngrnod - 1;
+    d->by_part = by_part;
+    if ((st = rc_var_lines(rd, b, g->title, by_part ? "part_ID1 ... part_ID10"
+                                                    : "grnod_ID1 ... grnod_ID10", &nd)))
+        return st;
+    for (int i = 1; i <= nd; i++) {
+        int v[10];
+        rc_field f[10];
+        for (int k = 0; k < 10; k++) {
+            rc_field fk = RC_F_INT(name, &v[k], 0, RC_FF_NONNEG);
+            f[k] = fk;
+        }
+        if ((st = rc_parse_line(rd, b, &b->lines[i], f, 10))) return st;
+        for (int k = 0; k < 10; k++) {
+            if (v[k] == 0) continue;
+            RC_GROW(rd, d->ids, cap, d->n);
+            RC_GROW(rd, d->id_loc, capl, d->n);
+            d->ids[d->n] = v[k];
+            d->id_loc[d->n++] = b->lines[i].loc;
+        }
+    }
+    return rc_note_id(rd, RC_IDK_GRNOD, g->id, &g->loc, b->hdr->text);
+}
+
+static int rc_cmp_int(const void *a, const void *b)
+{
+    const int x = *(const int *)a, y = *(const int *)b;
+    return (x > y) - (x < y);
+}
+
+/* Append the nodes of group index gi (expanded first when it is a
+ * definition) to *out; depth guards against cycles. */
+static rc_status rc_grnod_expand(rc_reader *rd, int gi, int depth, int **out, int *n, int *cap);
+
+static int rc_def_of(const rc_case_mesh *ms, int gi)
+{
+    for (int k = 0; ms && k < ms->ndef; k++)
+        if (ms->def[k].grnod == gi) return k;
+    return -1;
+}
+
+static rc_status rc_grnod_fill(rc_reader *rd, int di, int depth)
+{
+    rc_case *c = rd->c;
+    rc_case_mesh *ms = c->mesh;
+    rc_case_grnod_def *d = &ms->def[di];
+    rc_case_grnod *g = &c->grnod[d->grnod];
+    int *nodes = NULL, n = 0, cap = 0;
+    char card[48];
+    snprintf(card, sizeof card, "/GRNOD/%s/%d", d->by_part ? "PART" : "GRNOD", g->id);
+    rc_status st = RC_OK;
+    if (g->n || g->nodes) return RC_OK; /* done */
+    if (depth > c->ngrnod)
+        return rc_case_fail(rd, &g->loc, card, "grnod_ID",
+                            "the groups of /GRNOD/%d form a cycle", g->id);
+    if (d->by_part) {
+        /* every id a part; then one pass over the elements */
+        int *want = malloc(((size_t)d->n + 1) * sizeof *want);
+        if (!want) return rc_case_nomem(rd);
+        for (int k = 0; k < d->n; k++) {
+            int found = 0;
+            for (int p = 0; p < c->npart && !found; p++) found = c->part[p].id == d->ids[k];
+            if (!found) {
+                free(want);
+                return rc_case_fail(rd, &d->id_loc[k], card, "part_ID",
+                                    "expected the id of a /PART, got %d (no such part)", d->ids[k]);
+            }
+            want[k] = d->ids[k];
+        }
+        qsort(want, (size_t)d->n, sizeof *want, rc_cmp_int);
+        for (int e = 0; ms && e < ms->nelem; e++) {
+            const rc_case_elem *el = &ms->elem[e];
+            if (!bsearch(&el->part_id, want, (size_t)d->n, sizeof *want, rc_cmp_int)) continue;
+            for (int j = 0; j < el->nn; j++) {
+                if (n == cap) {
+                    int nc = cap ? 2 * cap : 64;
+                    int *p = realloc(nodes, (size_t)nc * sizeof *p);
+                    if (!p) { free(nodes); free(want); return rc_case_nomem(rd); }
+                    nodes = p;
+                    cap = nc;
+                }
+                nodes[n++] = el->nodes[j];
+            }
+        }
+        free(want);
+    }
+    for (int k = 0; k < d->n && !st && !d->by_part; k++) {
+        int gj = -1;
+        for (int q = 0; q < c->ngrnod; q++)
+            if (c->grnod[q].id == d->ids[k]) { gj = q; break; }
+        if (gj < 0) {
+            st = rc_case_fail(rd, &d->id_loc[k], card, "grnod_ID",
+                              "expected the id of a /GRNOD, got %d (no such group)", d->ids[k]);
+            break;
+        }
+        if (gj == d->grnod) {
+            st = rc_case_fail(rd, &d->id_loc[k], card, "grnod_ID",
+                              "group %d names itself", d->ids[k]);
+            break;
+        }
+        st = rc_grnod_expand(rd, gj, depth + 1, &nodes, &n, &cap);
+    }
+    if (st) { free(nodes); return st; }
+    /* sorted, each node once */
+    if (n > 1) qsort(nodes, (size_t)n, sizeof *nodes, rc_cmp_int);
+    int u = 0;
+    for (int j = 0; j < n; j++)
+        if (u == 0 || nodes[j] != nodes[u - 1]) nodes[u++] = nodes[j];
+    if (!nodes) nodes = malloc(sizeof *nodes); /* marks "done" for an empty group */
+    if (!nodes) return rc_case_nomem(rd);
+    g->nodes = nodes;
+    g->n = u;
+    return RC_OK;
+}
+
+static rc_status rc_grnod_expand(rc_reader *rd, int gi, int depth, int **out, int *n, int *cap)
+{
+    rc_case *c = rd->c;
+    int di = rc_def_of(c->mesh, gi);
+    rc_status st;
+    if (di >= 0 && (st = rc_grnod_fill(rd, di, depth))) return st;
+    const rc_case_grnod *g = &c->grnod[gi];
+    for (int k = 0; k < g->n; k++) {
+        if (*n == *cap) {
+            int nc = *cap ? 2 * *cap : 64;
+            int *p = realloc(*out, (size_t)nc * sizeof *p);
+            if (!p) return rc_case_nomem(rd);
+            *out = p;
+            *cap = nc;
+        }
+        (*out)[(*n)++] = g->nodes[k];
+    }
+    return RC_OK;
+}
+
+rc_status rc_cards_mesh_finish(rc_reader *rd)
+{
+    rc_case_mesh *ms = rd->c->mesh;
+    rc_status st;
+    for (int k = 0; ms && k < ms->ndef; k++)
+        if ((st = rc_grnod_fill(rd, k, 0))) return st;
+    return RC_OK;
+}
+
+/* ======================================================================
+ * /ADMAS
+ * ====================================================================== */
+
+/* /ADMAS/type/admas_ID (the header's two numbers), types 0 and 1: title;
+ * MASS grnd_ID. */
+static rc_status rc_card_admas(rc_reader *rd, const rc_block *b)
+{
+    rc_case_mesh *ms = rc_mesh(rd);
+    rc_status st;
+    int nd;
+    if (!ms) return RC_ENOMEM;
+    if (b->nkw != 1 || !b->has_id || b->unit_id <= 0)
+        return rc_case_fail(rd, &b->hdr->loc, b->name, "admas_ID",
+                            "expected the header /ADMAS/type/admas_ID with admas_ID > 0");
+    if (b->id > 1)
+        return rc_case_fail(rd, &b->hdr->loc, b->name, "type",
+                            "type %d: not supported yet (supported: 0 mass on each node, 1 mass "
+                            "shared by the nodes of a group)",
+                            b->id);
+    RC_GROW(rd, ms->admas, ms->capadmas, ms->nadmas);
+    rc_case_admas *a = &ms->admas[ms->nadmas++];
+    char title[RC_CASE_TITLE_MAX + 1];
+    a->id = b->unit_id;
+    a->type = b->id;
+    a->loc = b->hdr->loc;
+    if ((st = rc_card_lines(rd, b, title, 1, 1, "MASS grnd_ID", &nd))) return st;
+    rc_field l1[] = {RC_F_REAL("MASS", &a->mass, 0, RC_FF_NONNEG),
+                     RC_F_INT("grnd_ID", &a->grnod_id, 0, RC_FF_POS)};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
+    a->line_loc = b->lines[1].loc;
+    return rc_note_id(rd, RC_IDK_ADMAS, a->id, &a->loc, b->hdr->text);
+}
+
+/* ======================================================================
+ * Dispatch and look-ups
+ * ====================================================================== */
+
+rc_status rc_cards_mesh(rc_reader *rd, const rc_block *b, int *handled)
+{
+    const char *kw = b->kw[0], *sub = b->nkw >= 2 ? b->kw[1] : "";
+    rc_elem_kind ek = 0;
+    rc_prop_kind pk = 0;
+    int grnod = -1;
+    *handled = 0;
+    if (strcmp(kw, "SHELL") == 0) ek = RC_ELEM_SHELL;
+    else if (strcmp(kw, "SH3N") == 0) ek = RC_ELEM_SH3N;
+    else if (strcmp(kw, "BRICK") == 0) ek = RC_ELEM_BRICK;
+    else if (strcmp(kw, "TETRA4") == 0) ek = RC_ELEM_TETRA4;
+    else if (strcmp(kw, "PROP") == 0 && (!strcmp(sub, "SHELL") || !strcmp(sub, "TYPE1"))) pk = RC_PROP_SHELL;
+    else if (strcmp(kw, "PROP") == 0 && (!strcmp(sub, "SOLID") || !strcmp(sub, "TYPE14"))) pk = RC_PROP_SOLID;
+    else if (strcmp(kw, "GRNOD") == 0 && strcmp(sub, "PART") == 0) grnod = 1;
+    else if (strcmp(kw, "GRNOD") == 0 && strcmp(sub, "GRNOD") == 0) grnod = 0;
+    else if (strcmp(kw, "ADMAS") == 0) {
+        *handled = 1;
+        if (b->bad)
+            return rc_case_fail(rd, &b->hdr->loc, b->name, NULL, "malformed card header: %s", b->bad);
+        return rc_card_admas(rd, b);
+    } else if (strcmp(kw, "MAT") == 0 && b->nkw != 2) return RC_OK; /* e.g. /MAT/GAS/MOLE: ignored */
+    else if (strcmp(kw, "MAT") != 0 && strcmp(kw, "SKEW") != 0) return RC_OK;
+    *handled = 1;
+    if (b->bad)
+        return rc_case_fail(rd, &b->hdr->loc, b->name, NULL, "malformed card header: %s", b->bad);
+    if (ek) return rc_card_elements(rd, b, ek);
+    if (pk) return rc_card_prop(rd, b, pk);
+    if (grnod >= 0) return rc_card_grnod_def(rd, b, grnod);
+    if (strcmp(kw, "MAT") == 0) return rc_card_mat(rd, b);
+    return rc_card_skew(rd, b);
+}
+
+int rc_case_find_prop(const rc_case *c, int id)
+{
+    for (int k = 0; c->mesh && k < c->mesh->nprop; k++)
+        if (c->mesh->prop[k].id == id) return k;
+    return -1;
+}
+
+int rc_case_find_mat(const rc_case *c, int id)
+{
+    for (int k = 0; c->mesh && k < c->mesh->nmat; k++)
+        if (c->mesh->mat[k].id == id) return k;
+    return -1;
+}
+
+int rc_case_find_skew(const rc_case *c, int id)
+{
+    for (int k = 0; c->mesh && k < c->mesh->nskew; k++)
+        if (c->mesh->skew[k].id == id) return k;
+    return -1;
+}
+
+void rc_case_mesh_free(rc_case_mesh *m)
+{
+    if (!m) return;
+    free(m->elem);
+    free(m->prop);
+    free(m->mat);
+    free(m->skew);
+    for (int k = 0; k < m->ndef; k++) {
+        free(m->def[k].ids);
+        free(m->def[k].id_loc);
+    }
+    free(m->def);
+    free(m->admas);
+    free(m);
+}

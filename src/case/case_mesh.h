@@ -1,0 +1,103 @@
+/*
+ * The mesh of a case: elements, properties, materials, skew frames and the
+ * node groups defined from parts or other groups (cards_mesh.c,
+ * docs/case-format.md). Read as written; the model stage (model/massprop.c)
+ * turns it into the mass properties of the rigid bodies.
+ */
+#ifndef RC_CASE_MESH_H
+#define RC_CASE_MESH_H
+
+#include "case/case.h"
+
+/* Element kinds and their node counts. */
+typedef enum {
+    RC_ELEM_SHELL = 1,  /* /SHELL: 4 nodes (node 4 = node 3 or blank: triangle) */
+    RC_ELEM_SH3N = 2,   /* /SH3N: 3 nodes */
+    RC_ELEM_BRICK = 3,  /* /BRICK: 8 nodes (repeated nodes allowed: degenerate) */
+    RC_ELEM_TETRA4 = 4  /* /TETRA4: 4 nodes */
+} rc_elem_kind;
+
+/* One element. */
+typedef struct rc_case_elem {
+    int id;
+    int part_id;       /* from the card header /SHELL/part_ID */
+    rc_elem_kind kind;
+    int nn;            /* nodes used: 3, 4 or 8 */
+    int nodes[8];      /* node ids */
+    double thick;      /* shells: element thickness [m] (0: the property's) */
+    rc_loc loc;        /* the element's line */
+} rc_case_elem;
+
+/* /PROP/SHELL (/PROP/TYPE1) and /PROP/SOLID (/PROP/TYPE14). */
+typedef enum { RC_PROP_SHELL = 1, RC_PROP_SOLID = 2 } rc_prop_kind;
+
+typedef struct rc_case_prop {
+    int id;
+    char title[101];
+    rc_prop_kind kind;
+    double thick;      /* SHELL: Thick [m] */
+    rc_loc loc;
+    rc_loc thick_loc;  /* the line holding Thick */
+} rc_case_prop;
+
+/* /MAT/<law>/mat_ID: the density, when ricochet knows where the law keeps
+ * it (has_rho); otherwise the reason is kept for the error raised when an
+ * element uses the material. */
+typedef struct rc_case_mat {
+    int id;
+    char title[101];
+    char law[24];      /* the keyword as written, upper case: "LAW1", "PLAS_JOHNS" */
+    int has_rho;
+    double rho;        /* Init. dens. [kg/m^3] */
+    rc_loc loc;
+    rc_loc rho_loc;    /* the line holding the density */
+} rc_case_mat;
+
+/* /SKEW/FIX/skew_ID: origin and the axes (unit, orthonormal, right-handed):
+ * Y' along (X1, Y1, Z1), X' = Y' x V2, Z' = X' x Y' (docs). */
+typedef struct rc_case_skew {
+    int id;
+    char title[101];
+    double origin[3];  /* [m] */
+    double axis[3][3]; /* axis[k] = unit vector of axis k (X', Y', Z') in global axes */
+    rc_loc loc;
+} rc_case_skew;
+
+/* /GRNOD/PART and /GRNOD/GRNOD before expansion: the ids they name. The
+ * reader expands them into ordinary node lists (rc_case_grnod) once every
+ * card is read. */
+typedef struct rc_case_grnod_def {
+    int grnod;         /* index of the rc_case_grnod it fills */
+    int by_part;       /* 1: part ids, 0: group ids */
+    int n;
+    int *ids;
+    rc_loc *id_loc;    /* [n] line of each id */
+} rc_case_grnod_def;
+
+/* /ADMAS/type/admas_ID, types 0 and 1: point masses on the nodes of a group. */
+typedef struct rc_case_admas {
+    int id;
+    int type;          /* 0: Mass on each node; 1: Mass shared equally by the nodes */
+    double mass;       /* [kg] */
+    int grnod_id;
+    rc_loc loc;
+    rc_loc line_loc;   /* the line holding MASS and grnd_ID */
+} rc_case_admas;
+
+typedef struct rc_case_mesh {
+    int nelem;  rc_case_elem *elem;  int capelem;
+    int nprop;  rc_case_prop *prop;  int capprop;
+    int nmat;   rc_case_mat *mat;    int capmat;
+    int nskew;  rc_case_skew *skew;  int capskew;
+    int ndef;   rc_case_grnod_def *def; int capdef;
+    int nadmas; rc_case_admas *admas; int capadmas;
+} rc_case_mesh;
+
+/* Index of the card with this id, or -1 (linear scans: few cards). */
+int rc_case_find_prop(const rc_case *c, int id);
+int rc_case_find_mat(const rc_case *c, int id);
+int rc_case_find_skew(const rc_case *c, int id);
+
+void rc_case_mesh_free(rc_case_mesh *m);
+
+#endif

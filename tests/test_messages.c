@@ -7,6 +7,9 @@
 #include "harness.h"
 #include "model/model.h"
 #include "base/error.h"
+#include "base/progress.h"
+
+#include <time.h>
 
 #include <stdio.h>
 #include <string.h>
@@ -105,9 +108,42 @@ static void test_messages_unresolvable_scales(void)
     ENSURE(strstr(msg, "card /INTER/TYPE6/1") && strstr(msg, "below the resolution of the time"));
 }
 
+/* Progress: silent by default and for short stages; a stage longer than
+ * RC_PROGRESS_AFTER says so, with its name and time. */
+static void test_messages_progress(void)
+{
+    FILE *f = tmpfile();
+    ENSURE(f != NULL);
+    if (!f) return;
+    rc_progress_stage("short stage"); /* off: nothing */
+    rc_progress_done();
+    rc_set_progress(f);
+    rc_progress_stage("short stage");
+    rc_progress(1, 2);
+    rc_progress_done();
+    rc_progress_stage("long stage");
+    struct timespec t0, t;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    long i = 0;
+    do {
+        rc_progress(i++, 0);
+        clock_gettime(CLOCK_MONOTONIC, &t);
+    } while ((double)(t.tv_sec - t0.tv_sec) + 1e-9 * (double)(t.tv_nsec - t0.tv_nsec) < 1.05 * RC_PROGRESS_AFTER);
+    rc_progress_done();
+    rc_set_progress(NULL);
+    char text[4096] = "";
+    rewind(f);
+    size_t n = fread(text, 1, sizeof text - 1, f);
+    text[n] = '\0';
+    fclose(f);
+    ENSURE(strstr(text, "short stage") == NULL);
+    ENSURE(strstr(text, "ricochet: long stage: done in 1.") != NULL);
+}
+
 void suite_messages(void);
 void suite_messages(void)
 {
     RUN_TEST(test_messages_state_names);
     RUN_TEST(test_messages_unresolvable_scales);
+    RUN_TEST(test_messages_progress);
 }

@@ -51,6 +51,10 @@ int rc_status_exit_code(rc_status code);
 /* Version string, e.g. "0.1.0". */
 const char *rc_version(void);
 
+/* Progress of the long stages (reading, compiling) on `f`; NULL (the
+ * default) says nothing. Printed only for stages that run over a second. */
+void rc_set_progress(FILE *f);
+
 /* ---- Case (parsed deck) --------------------------------------------- */
 typedef struct rc_case rc_case;
 

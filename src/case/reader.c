@@ -18,6 +18,7 @@
 #include "case/case_internal.h"
 #include "case/case_mesh.h"
 #include "base/error.h"
+#include "base/progress.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -226,6 +227,7 @@ static rc_status rc_lex_buffer(rc_reader *rd, char *buf, long size, const char *
     /* a UTF-8 byte order mark is not part of the text */
     if (size >= 3 && memcmp(p, "\xEF\xBB\xBF", 3) == 0) p += 3;
     while (p < end && !rd->ended) {
+        rc_progress((long)(p - buf), (long)size); /* bytes */
         char *eol = memchr(p, '\n', (size_t)(end - p));
         if (!eol) eol = end;
         *eol = '\0';
@@ -341,7 +343,9 @@ static void rc_parse_header(rc_block *b)
 static rc_status rc_read_blocks(rc_reader *rd)
 {
     int i = 0, ncards = 0;
+    rc_progress_stage("reading the cards (lines)");
     while (i < rd->nlines) {
+        rc_progress(i, rd->nlines);
         const rc_line *ln = &rd->lines[i];
         /* before the first card only blank lines may appear */
         if (ln->text[0] != '/') {
@@ -436,12 +440,18 @@ rc_status rc_case_load(const char *path, rc_case **out, rc_error *err)
     if (!(rd.c->path = strdup(path))) { st = rc_case_nomem(&rd); goto fail; }
 
     /* pass 1: lines of every file; pass 2: cards; pass 3: deck checks */
-    if ((st = rc_lex_file(&rd, path, NULL))) goto fail;
-    if ((st = rc_read_blocks(&rd))) goto fail;
-    if ((st = rc_check_dups(&rd))) goto fail;
-    if ((st = rc_cards_finish(&rd))) goto fail;
-    if ((st = rc_cards_mesh_finish(&rd))) goto fail;
-    if ((st = rc_case_index_build(rd.c, err))) goto fail;
+    rc_progress_stage("reading the files");
+    st = rc_lex_file(&rd, path, NULL);
+    rc_progress_done();
+    if (st) goto fail;
+    st = rc_read_blocks(&rd); /* its own progress stage */
+    rc_progress_done();
+    if (st) goto fail;
+    rc_progress_stage("checking ids, groups and the mesh");
+    if (!(st = rc_check_dups(&rd)) && !(st = rc_cards_finish(&rd)) && !(st = rc_cards_mesh_finish(&rd)))
+        st = rc_case_index_build(rd.c, err);
+    rc_progress_done();
+    if (st) goto fail;
 
     rc_reader_release(&rd);
     *out = rd.c;

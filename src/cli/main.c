@@ -112,6 +112,7 @@ int main(int argc, char **argv)
         usage(stderr);
         return 2;
     }
+    if (!quiet) rc_set_progress(stderr);
     rc_case *c = NULL;
     rc_model *m = NULL;
     rc_error e;

@@ -19,6 +19,7 @@
 #include "base/error.h"
 #include "model/imposed.h"
 #include "model/model.h"
+#include "base/progress.h"
 #include "model/power.h"
 
 static int cmp_i64(const void *a, const void *b)
@@ -338,6 +339,7 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
     int64_t n = 0;
     for (int64_t k = 0; k < ny; k++) key[n++] = k * ny + k;
     for (int e = 0; e < m->nbody + m->ninter + m->cpl->n; e++) {
+        rc_progress(e, m->nbody + m->ninter + m->cpl->n);
         const int nbi = m->nbody + m->ninter;
         const rc_jblock *jb = e < m->nbody ? &m->jb_body[e] : e < nbi ? &m->jb_inter[e - m->nbody] : &m->cpl->jb[e - nbi];
         for (int r = 0; r < jb->nrow; r++)

@@ -7,14 +7,26 @@
  * engine.
  */
 #include "model/model.h"
+#include "base/progress.h"
 
 rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
 {
     rc_model *m = NULL;
     *out = NULL;
+    rc_progress_stage("building the model");
     rc_status st = rc_model_build(c, &m, err);
+    rc_progress_done();
     if (st) return st;
-    if ((st = rc_model_scales(m, err)) || (st = rc_model_tolerances(m, err)) || (st = rc_jac_build(m, err))) {
+    rc_progress_stage("scales and tolerances (interfaces)");
+    st = rc_model_scales(m, err);
+    if (!st) st = rc_model_tolerances(m, err);
+    rc_progress_done();
+    if (!st) {
+        rc_progress_stage("Jacobian pattern (bodies, interfaces, couplings)");
+        st = rc_jac_build(m, err);
+        rc_progress_done();
+    }
+    if (st) {
         rc_model_free(m);
         return st;
     }

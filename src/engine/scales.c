@@ -37,6 +37,7 @@
 #include "base/error.h"
 #include "model/imposed.h"
 #include "model/model.h"
+#include "base/progress.h"
 #include "model/power.h"
 
 /* A body without a scaled contact: positions at rtol RC_TOL_FALLBACK_LFRAC
@@ -335,6 +336,7 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
     m->vscale = vmodel;
     double escale = 0.0;
     for (int i = 0; i < n; i++) {
+        rc_progress(i, n);
         const int ba = m->inter_ba[i], bb = m->inter_bb[i];
         rc_inter_report r;
         rc_inter_report_eval(m, i, RC_MODE_OPEN, RC_BR_LOAD, 0, 0, 0.0, y, &r);

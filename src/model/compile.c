@@ -17,6 +17,7 @@
 #include "model/imposed.h"
 #include "model/massprop.h"
 #include "model/model.h"
+#include "base/progress.h"
 #include "model/power.h"
 
 #define ALLOC(ptr, n)                                                               \
@@ -516,8 +517,10 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->inter_name, m->ninter);
     ALLOC(m->inter_law, m->ninter);
     ALLOC(m->inter_pw, m->ninter);
-    for (int i = 0; i < c->ntype6; i++)
+    for (int i = 0; i < c->ntype6; i++) {
+        rc_progress(i, c->ntype6);
         if ((st = compile_type6(c, m, i, err))) goto fail;
+    }
     for (int k = 0; k < c->npower; k++) /* model/power.c */
         if ((st = rc_power_compile(c, m, k, c->ntype6 + k, err))) goto fail;
     if ((st = rc_friction_compile(c, m, err))) goto fail;

@@ -37,7 +37,7 @@ typedef enum {
  * errors it reads "file:line: card /X/Y/id, field F: expected ..., got ...". */
 typedef struct rc_error {
     rc_status code;
-    char msg[2048];
+    char msg[8192]; /* several lines when a deck has several input errors */
     const char *src_file; /* ricochet source location that raised it */
     int src_line;
     const char *src_func;

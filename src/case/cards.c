@@ -14,6 +14,7 @@
 #include "base/error.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* ======================================================================
@@ -47,8 +48,15 @@ static const struct {
 };
 
 /* Radioss cards without meaning for rigid bodies: skipped with a warning. */
-static const char *const rc_ignored[] = {"TITLE", "ANALY",  "DEF_SOLID", "DEF_SHELL", "IOFLAG",
-                                         "SPMD",  "RANDOM", "PROP",      "MAT"};
+static const char *const rc_ignored[] = {"PROP", "MAT"};
+/* Radioss starter and engine options that only matter to explicit runs
+ * (time step, outputs, restart, memory, parallelism): skipped with one
+ * warning per kind. */
+static const char *const rc_explicit[] = {
+    "TITLE", "ANALY", "DEF_SOLID", "DEF_SHELL", "IOFLAG", "SPMD", "RANDOM", "TH", "ANIM",
+    "MEMORY", "DT", "DTIX", "PRINT", "VERS", "STOP", "OUTP", "H3D", "RFILE", "TFILE", "ATFILE",
+    "MON", "PARITH", "CHKPT", "STATE", "DYNAIN", "ADMAS", "KEREL", "DYREL", "ADYREL", "SHFRA",
+    "CAA", "MADYMO", "INSPIRE", "NEGVOL", "MSTOP", "NSTOP"};
 /* Radioss cards ricochet plans to support: an error until then. */
 static const char *const rc_planned[] = {"UNIT", "SKEW", "SENSOR"};
 
@@ -57,6 +65,35 @@ static int rc_in_list(const char *kw, const char *const *list, int n)
     for (int i = 0; i < n; i++)
         if (strcmp(kw, list[i]) == 0) return 1;
     return 0;
+}
+
+/* Skip a card with one warning per kind (its first keyword): the first card
+ * of a kind gets the warning, which then counts the others. */
+static rc_status rc_skip(rc_reader *rd, const rc_block *b, const char *why)
+{
+    rc_case *c = rd->c;
+    for (int i = 0; i < rd->nskipped; i++) {
+        if (strcmp(rd->skipped[i].kw, b->kw[0]) != 0) continue;
+        /* rewrite the kind's warning with the new count */
+        char *w = c->warnings[rd->skipped[i].warning], *e = strstr(w, " (and ");
+        int n = ++rd->skipped[i].count;
+        size_t keep = e ? (size_t)(e - w) : strlen(w);
+        char *nw = malloc(keep + 64);
+        if (!nw) return rc_case_nomem(rd);
+        memcpy(nw, w, keep);
+        snprintf(nw + keep, 64, " (and %d more /%s card%s)", n - 1, b->kw[0], n > 2 ? "s" : "");
+        free(w);
+        c->warnings[rd->skipped[i].warning] = nw;
+        return RC_OK;
+    }
+    int slot = rd->nskipped < (int)(sizeof rd->skipped / sizeof rd->skipped[0]);
+    if (slot) {
+        snprintf(rd->skipped[rd->nskipped].kw, sizeof rd->skipped[0].kw, "%s", b->kw[0]);
+        rd->skipped[rd->nskipped].warning = c->nwarnings;
+        rd->skipped[rd->nskipped].count = 1;
+        rd->nskipped++;
+    }
+    return rc_case_warn(rd, &b->hdr->loc, "card %s ignored: %s", b->name, why);
 }
 
 /* Call the card function of a kind. */
@@ -112,8 +149,9 @@ rc_status rc_card_dispatch(rc_reader *rd, const rc_block *b)
     int family = 0;
     /* ignored Radioss cards: a warning, whatever their header */
     if (rc_in_list(kw, rc_ignored, RC_NF(rc_ignored)))
-        return rc_case_warn(rd, &b->hdr->loc, "card %s ignored: no meaning for rigid bodies",
-                            b->name);
+        return rc_skip(rd, b, "no meaning for rigid bodies");
+    if (rc_in_list(kw, rc_explicit, RC_NF(rc_explicit)))
+        return rc_skip(rd, b, "only meaningful to an explicit run (ricochet integrates implicitly)");
     if (b->bad)
         return rc_case_fail(rd, &b->hdr->loc, b->name, NULL, "malformed card header: %s", b->bad);
     /* supported cards */

@@ -221,10 +221,15 @@ rc_status rc_card_fricorient(rc_reader *rd, const rc_block *b)
             RC_F_REAL("PHI", &it->phi, 0, 0),
             RC_F_SET("Iorth", &it->iorth, 0, 0, 0x3u, 0, NULL)};
         if ((st = rc_parse_line(rd, b, &b->lines[i + 1], l2, RC_NF(l2)))) return st;
-        if (it->v[0] == 0 && it->v[1] == 0 && it->v[2] == 0)
-            return rc_case_fail(rd, &b->lines[i + 1].loc, b->name, "VX VY VZ",
-                                "expected a non-zero vector V (direction 1 of orthotropy), got "
-                                "(0, 0, 0)");
+        /* Radioss: a zero vector V means the global X axis */
+        if (it->v[0] == 0 && it->v[1] == 0 && it->v[2] == 0) {
+            it->v[0] = 1;
+            if ((st = rc_case_warn(rd, &b->lines[i + 1].loc,
+                                   "card %s: orientation %d: V = (0, 0, 0) read as (1, 0, 0), "
+                                   "as Radioss does",
+                                   b->name, n)))
+                return st;
+        }
     }
     return rc_note_id(rd, RC_IDK_FRICORIENT, o->id, &o->loc, b->hdr->text);
 }

@@ -94,11 +94,16 @@ rc_status rc_card_type6(rc_reader *rd, const rc_block *b)
     if (t->tstop < t->tstart)
         return rc_case_fail(rd, &t->line_loc[1], b->name, "Tstop",
                             "expected Tstop >= Tstart = %.15g, got %s", t->tstart, l2[4].got);
-    /* the elasto-plastic laws move between the curves with slope Stiff */
-    if (t->iform != 0 && !(t->stiff > 0))
-        return rc_case_fail(rd, &t->line_loc[4], b->name, "Stiff",
-                            "expected a positive stiffness [N/m]: Stiff is required for Iform = %d, got %s",
-                            t->iform, l5[2].got);
+    /* the elasto-plastic laws move between the curves with slope Stiff;
+     * without it Radioss uses the nonlinear elastic law (Iform 0) */
+    if (t->iform != 0 && !(t->stiff > 0)) {
+        if ((st = rc_case_warn(rd, &t->line_loc[4],
+                               "card %s: Iform = %d with Stiff = 0 (%s) read as Iform = 0 "
+                               "(nonlinear elastic), as Radioss does",
+                               b->name, t->iform, l5[2].blank ? "blank" : "0")))
+            return st;
+        t->iform = 0;
+    }
     return rc_note_id(rd, RC_IDK_INTER, t->id, &t->loc, b->hdr->text);
 }
 

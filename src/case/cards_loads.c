@@ -89,8 +89,8 @@ rc_status rc_card_inivel(rc_reader *rd, const rc_block *b)
     return rc_note_id(rd, RC_IDK_INIVEL, v->id, &v->loc, b->hdr->text);
 }
 
-/* /GRAV/grav_ID: title; fct_IDT DIR skew_ID sensor_ID grnod_ID Ascale_x
- * Fscale_y. */
+/* /GRAV/grav_ID: title; fct_IDT DIR skew_ID sensor_ID grnod_ID (unused)
+ * Ascale_x Fscale_y (Radioss 5.1 and later: Ascale_x in columns 61-80). */
 rc_status rc_card_grav(rc_reader *rd, const rc_block *b)
 {
     rc_case *c = rd->c;
@@ -111,6 +111,7 @@ rc_status rc_card_grav(rc_reader *rd, const rc_block *b)
                     RC_F_INTN("skew_ID", &g->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew),
                     RC_F_INTN("sensor_ID", &g->sensor_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_sensor),
                     RC_F_INT("grnod_ID", &g->grnod_id, 0, RC_FF_NONNEG),
+                    RC_F_SKIP(10),
                     RC_F_REAL("Ascale_x", &g->ascale, 1, RC_FF_ZDEF | RC_FF_POS),
                     RC_F_REAL("Fscale_y", &g->fscale, 1, RC_FF_ZDEF)};
     if ((st = rc_parse_line(rd, b, &b->lines[1], f, RC_NF(f)))) return st;

@@ -43,7 +43,10 @@ static rc_status rc_single(rc_reader *rd, const rc_block *b, const rc_line **slo
  * /BEGIN
  * ====================================================================== */
 
-/* /BEGIN: run name; Invers Irun; input units; work units (= input). */
+/* /BEGIN: run name; Invers Irun; input units; work units. Every line is
+ * optional: the Radioss 5.1 and 9.0 form stops after the version line (the
+ * units then come from /UNIT cards), an empty block gives no name, version
+ * or units. A second /BEGIN (an included model) is ignored with a warning. */
 rc_status rc_card_begin(rc_reader *rd, const rc_block *b)
 {
     static const char *const in_nm[3] = {"Input_mass_unit", "Input_length_unit",
@@ -52,22 +55,39 @@ rc_status rc_card_begin(rc_reader *rd, const rc_block *b)
                                          "Work_time_unit"};
     rc_case *c = rd->c;
     char in[3][21] = {"", "", ""}, wk[3][21] = {"", "", ""};
-    int nd;
+    int nd, invers = 0, lines;
     rc_status st;
     if ((st = rc_header(rd, b, 1, RC_ID_NONE, NULL, "/BEGIN"))) return st;
-    if ((st = rc_single(rd, b, &rd->begin_hdr))) return st;
-    if ((st = rc_card_lines(rd, b, c->title, 3, 3, "Invers Irun, input units, work units", &nd)))
+    if (rd->begin_hdr)
+        return rc_case_warn(rd, &b->hdr->loc,
+                            "card %s ignored: a second /BEGIN (of an included model); the "
+                            "first one, at %s:%d, gives the version and the units",
+                            b->name, rd->begin_hdr->loc.file, rd->begin_hdr->loc.line);
+    rd->begin_hdr = b->hdr;
+    lines = rc_block_trim(b);
+    if (lines == 0)
+        return rc_case_warn(rd, &b->hdr->loc, "card %s is empty: no run name, version or units",
+                            b->name);
+    if ((st = rc_card_lines(rd, b, c->title, 0, 3, "Invers Irun, input units, work units", &nd)))
         return st;
 
-    /* three lines: version flags (ignored), input units, work units */
-    rc_field l1[] = {RC_F_INT("Invers", NULL, 0, 0), RC_F_INT("Irun", NULL, 0, 0)};
+    /* the version (its layouts), input units, work units */
+    rc_field l1[] = {RC_F_INT("Invers", &invers, 0, RC_FF_NONNEG), RC_F_INT("Irun", NULL, 0, 0)};
     rc_field l2[] = {RC_F_STR(in_nm[0], in[0], 20), RC_F_STR(in_nm[1], in[1], 20),
                      RC_F_STR(in_nm[2], in[2], 20)};
     rc_field l3[] = {RC_F_STR(wk_nm[0], wk[0], 20), RC_F_STR(wk_nm[1], wk[1], 20),
                      RC_F_STR(wk_nm[2], wk[2], 20)};
-    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
-    if ((st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
-    if ((st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
+    if (nd >= 1 && (st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
+    if (nd >= 2 && (st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
+    if (nd >= 3 && (st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
+    c->invers = invers;
+    if (invers != 0 && rc_layout_known(invers) == 0 &&
+        (st = rc_case_warn(rd, &b->lines[1].loc,
+                           "card %s: Invers = %d is not a Radioss version ricochet knows (41..44, "
+                           "51, 90, 100..140, 2017..2026): the layouts of the nearest older one "
+                           "are used",
+                           b->name, invers)))
+        return st;
 
     /* work units must be blank or the input units: no conversion yet */
     for (int k = 0; k < 3; k++)
@@ -169,7 +189,7 @@ rc_status rc_cards_finish(rc_reader *rd)
 {
     rc_case *c = rd->c;
     /* the end time is required */
-    if (!c->run.present) {
+    if (!c->run.present && !rd->run_hdr) {
         rc_loc loc = {c->files[0], rd->main_last_line > 0 ? rd->main_last_line : 1};
         return rc_case_fail(rd, &loc, NULL, NULL, "no /RUN card: the end time is required");
     }

@@ -31,6 +31,8 @@
 #define RC_CASE_MAX_BYTES (256L << 20)   /* bytes read per deck, all files */
 #define RC_CASE_TITLE_MAX 100            /* title characters              */
 #define RC_CASE_INERTIA_RTOL 1e-12       /* PD test: pivot > rtol * diagonal */
+#define RC_CASE_MAX_ERRORS 20            /* input errors reported per run  */
+#define RC_CASE_MAX_ERROR_CHARS 380      /* characters of each error after the first */
 
 /* One line of the deck, after comment removal. `text` is NUL-terminated,
  * trailing blanks and CR removed; it points into a file buffer. */
@@ -82,7 +84,8 @@ typedef struct rc_reader {
     int capfiles;
     struct { dev_t dev; ino_t ino; } stack[RC_CASE_MAX_INCLUDE_DEPTH + 1];
     int depth;                                /* include stack              */
-    int ended;                                /* /END seen                  */
+    int file_ended;                           /* /END or #enddata seen in the
+                                                 file being lexed           */
     int main_last_line;                       /* for deck-level messages    */
     long main_bytes;                          /* size of the main file      */
 
@@ -93,6 +96,12 @@ typedef struct rc_reader {
     int nids[RC_IDK_COUNT], capids[RC_IDK_COUNT];
     int seq;
     const rc_line *begin_hdr, *run_hdr, *solver_hdr; /* single cards */
+    int nerrors;                              /* input errors so far        */
+    char *more;                               /* errors after the first, "\n"
+                                                 before each (malloc)       */
+    struct { char kw[24]; int warning, count; } skipped[64]; /* cards skipped
+                                                 with one warning per kind */
+    int nskipped;
 } rc_reader;
 
 /* ---- Field tables ----------------------------------------------------- */
@@ -177,6 +186,16 @@ rc_status rc_note_id(rc_reader *rd, rc_id_kind kind, int id, const rc_loc *loc,
 /* Append a warning "FILE:LINE: msg" to c->warnings. */
 rc_status rc_case_warn(rc_reader *rd, const rc_loc *loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+
+/* ---- Layouts by version (fields.c) ------------------------------------ */
+
+/* The newest Radioss version whose layouts ricochet reads (used when the
+ * deck has no /BEGIN version). */
+#define RC_LATEST_VERSION 2026
+/* The version that picks the layouts: /BEGIN Invers, else the newest. */
+int rc_layout_version(const rc_reader *rd);
+/* 1 when v is a Radioss version listed in docs/case-format.md. */
+int rc_layout_known(int v);
 
 /* ---- Card services (fields.c) ----------------------------------------- */
 

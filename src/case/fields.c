@@ -39,11 +39,26 @@ rc_status rc_case_fail(rc_reader *rd, const rc_loc *loc, const char *card, const
     /* "FILE:LINE: card C, field F: msg", parts present when given */
     const char *file = loc && loc->file ? loc->file : "?";
     int line = loc ? loc->line : 0;
+    char full[2048];
     if (card && field)
-        return RC_SET(rd->err, RC_EINPUT, "%s:%d: card %s, field %s: %s", file, line, card,
-                      field, msg);
-    if (card) return RC_SET(rd->err, RC_EINPUT, "%s:%d: card %s: %s", file, line, card, msg);
-    return RC_SET(rd->err, RC_EINPUT, "%s:%d: %s", file, line, msg);
+        snprintf(full, sizeof full, "%s:%d: card %s, field %s: %s", file, line, card, field, msg);
+    else if (card) snprintf(full, sizeof full, "%s:%d: card %s: %s", file, line, card, msg);
+    else snprintf(full, sizeof full, "%s:%d: %s", file, line, msg);
+    /* the first error is the report; the next ones (up to RC_CASE_MAX_ERRORS)
+     * are kept for the end of the reading */
+    if (rd->nerrors++ == 0) return RC_SET(rd->err, RC_EINPUT, "%s", full);
+    if (rd->nerrors <= RC_CASE_MAX_ERRORS) {
+        size_t n = strlen(full), have = rd->more ? strlen(rd->more) : 0;
+        if (n > RC_CASE_MAX_ERROR_CHARS) n = RC_CASE_MAX_ERROR_CHARS;
+        char *m = realloc(rd->more, have + n + 2);
+        if (m) {
+            m[have] = '\n';
+            memcpy(m + have + 1, full, n);
+            m[have + 1 + n] = '\0';
+            rd->more = m;
+        }
+    }
+    return RC_EINPUT;
 }
 
 rc_status rc_case_nomem(rc_reader *rd)
@@ -348,12 +363,13 @@ static rc_status rc_split_fixed(rc_reader *rd, const rc_block *b, const rc_line 
         st[k] = rc_trim(ln->text + s0, &sn[k]);
         off += f[k].width;
     }
+    /* Radioss reads the layout's columns only: the rest is ignored */
     for (int i = off; i < ln->len; i++)
         if (ln->text[i] != ' ')
-            return rc_case_fail(rd, &ln->loc, b->name, NULL,
-                                "unexpected text after column %d (the last field ends "
-                                "there): \"%.20s\"",
-                                off, ln->text + i);
+            return rc_case_warn(rd, &ln->loc,
+                                "card %s: text after column %d ignored (the last field of "
+                                "the layout ends there): \"%.20s\"",
+                                b->name, off, ln->text + i);
     return RC_OK;
 }
 
@@ -395,6 +411,27 @@ rc_status rc_parse_line(rc_reader *rd, const rc_block *b, const rc_line *ln, rc_
     for (int k = 0; k < nf; k++)
         if ((s = rc_parse_field(rd, b, ln, &f[k], st[k], sn[k]))) return s;
     return RC_OK;
+}
+
+/* ======================================================================
+ * Layouts by Radioss version
+ * ====================================================================== */
+
+/* The Radioss versions whose layouts ricochet knows (/BEGIN Invers). */
+static const int rc_versions[] = {41, 42, 43, 44, 51, 90, 100, 110, 120, 130, 140,
+                                  2017, 2018, 2019, 2020, 2021, 2022, 2023, 2024, 2025, 2026};
+
+int rc_layout_known(int v)
+{
+    for (size_t i = 0; i < sizeof rc_versions / sizeof rc_versions[0]; i++)
+        if (rc_versions[i] == v) return 1;
+    return 0;
+}
+
+int rc_layout_version(const rc_reader *rd)
+{
+    int v = rd->c->invers;
+    return v > 0 ? v : RC_LATEST_VERSION;
 }
 
 /* ======================================================================

@@ -191,10 +191,12 @@ static rc_status rc_lex_line(rc_reader *rd, char *p, int len, const rc_loc *loc)
 {
     rc_status st = rc_line_check(rd, p, &len, loc);
     if (st) return st;
-    /* comments; #include is the one comment with a meaning */
+    /* comments; #include and #enddata are the comments with a meaning */
     if (p[0] == '#' || p[0] == '$') {
         if (strncasecmp(p, "#include", 8) == 0 && (p[8] == ' ' || p[8] == '\t' || !p[8]))
             return rc_include(rd, p, loc);
+        if (strncasecmp(p, "#enddata", 8) == 0 && (p[8] == ' ' || p[8] == '\t' || !p[8]))
+            rd->file_ended = 1; /* ends the file it is in */
         return RC_OK;
     }
     /* fixed format cannot contain tabs; comma format may */
@@ -204,9 +206,17 @@ static rc_status rc_lex_line(rc_reader *rd, char *p, int len, const rc_loc *loc)
                             "column %d: tab character: fixed-format lines cannot contain "
                             "tabs (use spaces, or commas for free format)",
                             (int)(tab - p) + 1);
-    /* /END ends the deck */
+    /* leading blanks before a header's '/' are dropped (Radioss reads the
+     * line as a header) */
+    if (p[0] == ' ') {
+        int k = 0;
+        while (p[k] == ' ') k++;
+        if (p[k] == '/') { p += k; len -= k; }
+    }
+    /* /END ends the file it is in: the deck in the main file, the included
+     * file otherwise (models are assembled from files each ending in /END) */
     if (p[0] == '/' && rc_is_end(p)) {
-        rd->ended = 1;
+        rd->file_ended = 1;
         return RC_OK;
     }
     RC_GROW(rd, rd->lines, rd->caplines, rd->nlines);
@@ -224,7 +234,7 @@ static rc_status rc_lex_buffer(rc_reader *rd, char *buf, long size, const char *
     rc_loc loc = {fname, 0};
     /* a UTF-8 byte order mark is not part of the text */
     if (size >= 3 && memcmp(p, "\xEF\xBB\xBF", 3) == 0) p += 3;
-    while (p < end && !rd->ended) {
+    while (p < end && !rd->file_ended) {
         char *eol = memchr(p, '\n', (size_t)(end - p));
         if (!eol) eol = end;
         *eol = '\0';
@@ -234,6 +244,7 @@ static rc_status rc_lex_buffer(rc_reader *rd, char *buf, long size, const char *
         p = eol + 1;
     }
     if (fname == rd->c->files[0]) rd->main_last_line = loc.line > 0 ? loc.line : 1;
+    rd->file_ended = 0; /* the including file reads on */
     return RC_OK;
 }
 
@@ -312,6 +323,7 @@ static void rc_parse_header(rc_block *b)
         while (s < t && *s == ' ') s++;
         while (t > s && t[-1] == ' ') t--;
         size_t n = (size_t)(t - s), nd = strspn(s, "0123456789");
+        if (n == 0 && !*e && p > b->hdr->text + 1) break; /* a trailing '/' */
         if (n == 0) { *bad = "empty keyword between two '/'"; return; }
         if (nd >= n) {
             /* numeric: id, then unit id */
@@ -336,44 +348,77 @@ static void rc_parse_header(rc_block *b)
     }
 }
 
-/* Cut the lines into blocks and read each card. */
+/* Is block b the card /KW (first keyword)? */
+static int rc_block_is(const rc_block *b, const char *kw)
+{
+    return b->nkw > 0 && strcmp(b->kw[0], kw) == 0;
+}
+
+/* Read one card; an input error is counted (rc_case_fail) and the reading
+ * goes on with the next card until RC_CASE_MAX_ERRORS. */
+static rc_status rc_read_one(rc_reader *rd, const rc_block *b)
+{
+    rc_status st;
+    if (b->bad && b->nkw == 0)
+        st = rc_case_fail(rd, &b->hdr->loc, b->name, NULL, "malformed card header: %s", b->bad);
+    else st = rc_card_dispatch(rd, b);
+    if (st != RC_EINPUT) return st;
+    return rd->nerrors > RC_CASE_MAX_ERRORS ? RC_EINPUT : RC_OK;
+}
+
+/* Cut the lines into blocks and read each card: /BEGIN and /UNIT first
+ * (they give the version, hence the layouts, and the units of the others),
+ * then the other cards in order. */
 static rc_status rc_read_blocks(rc_reader *rd)
 {
-    int i = 0, ncards = 0;
-    while (i < rd->nlines) {
+    int ncards = 0, cap = 0;
+    rc_block *blocks = NULL;
+    rc_status st = RC_OK;
+    for (int i = 0; i < rd->nlines;) {
         const rc_line *ln = &rd->lines[i];
         /* before the first card only blank lines may appear */
         if (ln->text[0] != '/') {
             if (ln->len == 0) { i++; continue; }
-            return rc_case_fail(rd, &ln->loc, NULL, NULL,
-                                "data line outside any card (a card starts with '/' in "
-                                "column 1): \"%.40s\"",
-                                ln->text);
+            st = rc_case_fail(rd, &ln->loc, NULL, NULL,
+                              "data line outside any card (a card starts with '/' in "
+                              "column 1): \"%.40s\"",
+                              ln->text);
+            if (rd->nerrors > RC_CASE_MAX_ERRORS) goto done;
+            while (i < rd->nlines && rd->lines[i].text[0] != '/') i++;
+            continue;
         }
         /* the block runs to the next header */
         int j = i + 1;
         while (j < rd->nlines && rd->lines[j].text[0] != '/') j++;
-        rc_block b;
-        memset(&b, 0, sizeof b);
-        b.hdr = ln;
-        b.lines = ln + 1;
-        b.n = j - i - 1;
-        rc_parse_header(&b);
-        if (b.bad && b.nkw == 0)
-            return rc_case_fail(rd, &ln->loc, b.name, NULL, "malformed card header: %s", b.bad);
-        rc_status st = rc_card_dispatch(rd, &b);
-        if (st) return st;
-        ncards++;
+        rc_block *nb = rc_case_grow(rd, blocks, &cap, ncards, sizeof *blocks);
+        if (!nb) { st = RC_ENOMEM; goto done; }
+        blocks = nb;
+        rc_block *b = &blocks[ncards++];
+        b->hdr = ln;
+        b->lines = ln + 1;
+        b->n = j - i - 1;
+        rc_parse_header(b);
         i = j;
     }
-    if (ncards == 0) {
+    st = RC_OK;
+    for (int pass = 0; pass < 2; pass++)
+        for (int k = 0; k < ncards; k++) {
+            int first = rc_block_is(&blocks[k], "BEGIN") || rc_block_is(&blocks[k], "UNIT");
+            if (first != (pass == 0)) continue;
+            if ((st = rc_read_one(rd, &blocks[k]))) goto done;
+        }
+    if (ncards == 0 && rd->nerrors == 0) {
         rc_loc loc = {rd->c->files[0], rd->main_last_line > 0 ? rd->main_last_line : 1};
         if (rd->main_bytes == 0)
-            return rc_case_fail(rd, &loc, NULL, NULL, "empty file: no cards");
-        return rc_case_fail(rd, &loc, NULL, NULL,
-                            "no cards found (a card starts with '/' in column 1)");
+            st = rc_case_fail(rd, &loc, NULL, NULL, "empty file: no cards");
+        else
+            st = rc_case_fail(rd, &loc, NULL, NULL,
+                              "no cards found (a card starts with '/' in column 1)");
     }
-    return RC_OK;
+done:
+    free(blocks);
+    if (st == RC_EINPUT && rd->nerrors <= RC_CASE_MAX_ERRORS) st = RC_OK;
+    return st;
 }
 
 static int rc_cmp_id(const void *pa, const void *pb)
@@ -411,9 +456,36 @@ static rc_status rc_check_dups(rc_reader *rd)
  * Entry points
  * ====================================================================== */
 
+/* The report of several input errors: the first one, then the others,
+ * one a line, then the count. */
+static void rc_case_report(rc_reader *rd)
+{
+    if (!rd->err || rd->nerrors < 2) return;
+    size_t n = strlen(rd->err->msg), cap = sizeof rd->err->msg;
+    char tail[128];
+    if (rd->nerrors > RC_CASE_MAX_ERRORS)
+        snprintf(tail, sizeof tail, "\ntoo many errors: the reading stopped after %d",
+                 RC_CASE_MAX_ERRORS);
+    else snprintf(tail, sizeof tail, "\n%d input errors", rd->nerrors);
+    size_t room = cap - n - 1 > strlen(tail) ? cap - n - 1 - strlen(tail) : 0;
+    if (rd->more && room > 0) {
+        size_t m = strlen(rd->more);
+        if (m > room) {
+            /* cut at the last whole line */
+            m = room;
+            while (m > 0 && rd->more[m] != '\n') m--;
+        }
+        memcpy(rd->err->msg + n, rd->more, m);
+        n += m;
+        rd->err->msg[n] = '\0';
+    }
+    if (n + strlen(tail) < cap) strcat(rd->err->msg, tail);
+}
+
 /* Free the reader's own memory (not the case). */
 static void rc_reader_release(rc_reader *rd)
 {
+    free(rd->more);
     for (int i = 0; i < rd->nbufs; i++) free(rd->bufs[i]);
     free(rd->bufs);
     free(rd->lines);
@@ -433,11 +505,20 @@ rc_status rc_case_load(const char *path, rc_case **out, rc_error *err)
     rc_cards_defaults(rd.c);
     if (!(rd.c->path = strdup(path))) { st = rc_case_nomem(&rd); goto fail; }
 
-    /* pass 1: lines of every file; pass 2: cards; pass 3: deck checks */
+    /* pass 1: lines of every file; pass 2: cards; pass 3: deck checks.
+     * Input errors of cards are counted and the reading goes on, so that up
+     * to RC_CASE_MAX_ERRORS are reported at once. */
     if ((st = rc_lex_file(&rd, path, NULL))) goto fail;
-    if ((st = rc_read_blocks(&rd))) goto fail;
-    if ((st = rc_check_dups(&rd))) goto fail;
-    if ((st = rc_cards_finish(&rd))) goto fail;
+    if ((st = rc_read_blocks(&rd))) goto report;
+    if ((st = rc_check_dups(&rd)) && st != RC_EINPUT) goto fail;
+    if (rd.nerrors <= RC_CASE_MAX_ERRORS && (st = rc_cards_finish(&rd)) && st != RC_EINPUT) goto fail;
+report:
+    if (st != RC_OK && st != RC_EINPUT) goto fail;
+    if (rd.nerrors > 0) {
+        st = RC_EINPUT;
+        rc_case_report(&rd);
+        goto fail;
+    }
     if ((st = rc_case_index_build(rd.c, err))) goto fail;
 
     rc_reader_release(&rd);

@@ -1,0 +1,361 @@
+/*
+ * Radioss decks read as Radioss reads them: each card written exactly as
+ * Radioss writes it (fixed columns of its layout for the /BEGIN version)
+ * reads to the values Radioss would read; the deck-level rules (/END in
+ * included files, /BEGIN forms, leniencies, cards of explicit runs, several
+ * errors in one run, the engine file, unit systems).
+ *
+ * Decks are written from strings into a private temporary directory,
+ * removed at the end of the suite.
+ */
+#include "harness.h"
+#include "case/case.h"
+#include "base/error.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#define MAX_TMP 128
+static char tmp_dir[64];
+static char tmp_paths[MAX_TMP][160];
+static int ntmp;
+
+/* Write `text` as tmp_dir/name; returns the path (static storage). */
+static const char *tmp_write(const char *name, const char *text)
+{
+    if (!tmp_dir[0]) {
+        snprintf(tmp_dir, sizeof tmp_dir, "/tmp/rc_deck_test_XXXXXX");
+        if (!mkdtemp(tmp_dir)) { perror("mkdtemp"); exit(1); }
+    }
+    char path[160];
+    snprintf(path, sizeof path, "%s/%s", tmp_dir, name);
+    int i;
+    for (i = 0; i < ntmp; i++)
+        if (strcmp(tmp_paths[i], path) == 0) break;
+    if (i == ntmp) {
+        if (ntmp == MAX_TMP) { fprintf(stderr, "too many temp files\n"); exit(1); }
+        snprintf(tmp_paths[ntmp++], sizeof tmp_paths[0], "%s", path);
+    }
+    FILE *f = fopen(path, "wb");
+    size_t len = strlen(text);
+    if (!f || fwrite(text, 1, len, f) != len || fclose(f) != 0) { perror(path); exit(1); }
+    return tmp_paths[i];
+}
+
+static void tmp_cleanup(void)
+{
+    for (int i = 0; i < ntmp; i++) remove(tmp_paths[i]);
+    ntmp = 0;
+    if (tmp_dir[0]) rmdir(tmp_dir);
+    tmp_dir[0] = '\0';
+}
+
+/* Load a deck that must be valid (NULL and the message printed if not). */
+static rc_case *load_ok(const char *path)
+{
+    rc_case *c = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    if (rc_case_load(path, &c, &e) != RC_OK) fprintf(stderr, "  unexpected error loading %s: %s\n", path, e.msg);
+    return c;
+}
+
+/* Load a deck that must fail with RC_EINPUT; the message in *e. */
+static int load_fails(const char *path, rc_error *e)
+{
+    rc_case *c = NULL;
+    rc_error_clear(e);
+    rc_status st = rc_case_load(path, &c, e);
+    if (st == RC_OK) rc_case_free(c);
+    return st == RC_EINPUT && c == NULL;
+}
+
+/* Number of warnings containing every needle (NULL-terminated). */
+static int count_warnings(const rc_case *c, ...)
+{
+    int n = 0;
+    for (int i = 0; i < c->nwarnings; i++) {
+        va_list ap;
+        int all = 1;
+        va_start(ap, c);
+        for (const char *s; (s = va_arg(ap, const char *));)
+            if (!strstr(c->warnings[i], s)) all = 0;
+        va_end(ap);
+        n += all;
+    }
+    return n;
+}
+#define NWARN(c, ...) count_warnings((c), __VA_ARGS__, (const char *)NULL)
+
+/* A /RUN card (ricochet's) closing small decks. */
+#define RUN_CARD "/RUN\n                 1.0                0.01\n"
+
+/* ---- /GRAV --------------------------------------------------------------- */
+
+/* Radioss 5.1 and later: fct_IDT DIR skew_ID sensor_ID grnod_ID, ten blank
+ * columns, Ascale_x in 61-80, Fscale_y in 81-100. */
+static void test_deck_grav_columns(void)
+{
+    const char *p = tmp_write("grav.rad",
+                              "/GRAV/3\n"
+                              "ramped gravity\n"
+                              "#funct_IDT       DIR   skew_ID sensor_ID  grnod_ID                      Ascale_x            Fscale_Y\n"
+                              "         7         Y         0         0        12                             2\n"
+                              "/GRAV/4\n"
+                              "full line\n"
+                              "         0         Z         0         0         0                          0.25               -9.81\n"
+                              RUN_CARD);
+    rc_case *c = load_ok(p);
+    ENSURE(c && c->ngrav == 2);
+    if (c && c->ngrav == 2) {
+        const rc_case_grav *g = &c->grav[0], *h = &c->grav[1];
+        ENSURE(g->id == 3 && g->fct_id == 7 && g->dir == 1 && g->grnod_id == 12);
+        ENSURE(g->ascale == 2.0 && g->fscale == 1.0); /* Fscale_y blank: 1 */
+        ENSURE(h->dir == 2 && h->ascale == 0.25 && h->fscale == -9.81 && h->grnod_id == 0);
+    }
+    rc_case_free(c);
+    /* a value in the unused columns 51-60 is an error naming the field */
+    rc_error e;
+    ENSURE(load_fails(tmp_write("grav2.rad", "/GRAV/3\ng\n         7         Y         0         0        12         2\n" RUN_CARD), &e));
+    ENSURE(strstr(e.msg, "grav2.rad:3:") && strstr(e.msg, "/GRAV/3") && strstr(e.msg, "field blank"));
+}
+
+/* ---- /END and #enddata in included files, a second /BEGIN --------------- */
+
+static void test_deck_end_in_include(void)
+{
+    /* each included model ends with /END (or #enddata): only that file ends */
+    tmp_write("part_a.inc",
+              "#RADIOSS STARTER\n"
+              "/BEGIN\n"
+              "model a\n"
+              "      2022         0\n"
+              "                  kg                   m                   s\n"
+              "                  kg                   m                   s\n"
+              "/FUNCT/1\n"
+              "a\n"
+              "                 0.0                 0.0\n"
+              "                 1.0                 1.0\n"
+              "/END\n"
+              "/FUNCT/99\n"
+              "after the end of a: never read\n");
+    tmp_write("part_b.inc",
+              "/FUNCT/2\n"
+              "b\n"
+              "                 0.0                 0.0\n"
+              "                 2.0                 1.0\n"
+              "#enddata\n"
+              "/FOO/1\n");
+    const char *p = tmp_write("assembled.rad",
+                              "/BEGIN\n"
+                              "assembled\n"
+                              "      2022         0\n"
+                              "                  kg                   m                   s\n"
+                              "                  kg                   m                   s\n"
+                              "#include part_a.inc\n"
+                              "#include part_b.inc\n"
+                              "/FUNCT/3\n"
+                              "after both\n"
+                              "                 0.0                 0.0\n"
+                              "                 3.0                 1.0\n"
+                              RUN_CARD
+                              "/END\n"
+                              "/FUNCT/98\n");
+    rc_case *c = load_ok(p);
+    ENSURE(c != NULL);
+    if (c) {
+        ENSURE(c->nfunct == 3);
+        if (c->nfunct == 3) ENSURE(c->funct[0].id == 1 && c->funct[1].id == 2 && c->funct[2].id == 3);
+        ENSURE(c->run.present && c->run.tend == 1.0);
+        ENSURE(strcmp(c->title, "assembled") == 0 && c->invers == 2022);
+        /* the included model's /BEGIN: ignored with a warning naming the first */
+        ENSURE(NWARN(c, "part_a.inc:2:", "/BEGIN", "ignored", "assembled.rad:1") == 1);
+    }
+    rc_case_free(c);
+}
+
+/* ---- Leniencies ------------------------------------------------------------ */
+
+static void test_deck_lenient_headers_and_text(void)
+{
+    const char *p = tmp_write("lenient.rad",
+                              "/BEGIN/\n"
+                              "lenient\n"
+                              "      2022         0         7\n"
+                              "   /FUNCT/5/\n"
+                              "f\n"
+                              "                 0.0                 0.0\n"
+                              "                 1.0                 2.0      comment\n"
+                              "  /RUN/\n"
+                              "                 1.0                0.01\n");
+    rc_case *c = load_ok(p);
+    ENSURE(c != NULL);
+    if (c) {
+        ENSURE(c->invers == 2022 && strcmp(c->title, "lenient") == 0);
+        ENSURE(c->nfunct == 1 && c->funct[0].id == 5 && c->funct[0].npts == 2);
+        if (c->nfunct == 1 && c->funct[0].npts == 2) ENSURE(c->funct[0].y[1] == 2.0);
+        ENSURE(c->run.present && c->run.tend == 1.0);
+        /* the third field of the version line and the text after Y: warned */
+        ENSURE(NWARN(c, "lenient.rad:3:", "/BEGIN", "after column 20 ignored", "\"7\"") == 1);
+        ENSURE(NWARN(c, "lenient.rad:7:", "/FUNCT/5", "after column 40 ignored", "\"comment\"") == 1);
+        ENSURE(c->nwarnings == 2);
+    }
+    rc_case_free(c);
+}
+
+/* /INTER/TYPE6 written by Radioss 2022 with Iform 1 and Stiff 0: Iform 0. */
+static void test_deck_type6_iform_without_stiff(void)
+{
+    const char *p = tmp_write("t6stiff.rad",
+                              "/INTER/TYPE6/8\n"
+                              "elasto-plastic without Stiff\n"
+                              "# surf_ID1  surf_ID2\n"
+                              "         1         2\n"
+                              "#              Sfric                Fric                 Gap              Tstart               Tstop\n"
+                              "                   0                 0.2                   0                   0                   0\n"
+                              "#                IRS       IRM    Inacti  fct_IDff  fct_IDfv             Ascalef             Ascalev\n"
+                              "                   0         0         0         0         0                   0                   0\n"
+                              "# fct_IDId     Iform             Ascalex            Fscaleid      Icor\n"
+                              "         4         1                   1                   1         0\n"
+                              "# fct_IDul                         Stiff            Fscaleul\n"
+                              "         5                             0                   0\n"
+                              "#               Visc  fct_IDdv  fct_IDdf             Fscalev\n"
+                              "                   0         0         0                   0\n"
+                              RUN_CARD);
+    rc_case *c = load_ok(p);
+    ENSURE(c && c->ntype6 == 1);
+    if (c && c->ntype6 == 1) {
+        const rc_case_type6 *t = &c->type6[0];
+        ENSURE(t->iform == 0 && t->fct_ld == 4 && t->fct_ul == 5 && t->stiff == 0 && t->fric == 0.2);
+        ENSURE(NWARN(c, "t6stiff.rad:12:", "/INTER/TYPE6/8", "Iform = 1 with Stiff = 0", "Iform = 0") == 1);
+    }
+    rc_case_free(c);
+}
+
+/* /FRIC_ORIENT with V = (0, 0, 0): the X axis, with a warning. */
+static void test_deck_fric_orient_zero_vector(void)
+{
+    const char *p = tmp_write("fozero.rad",
+                              "/FRIC_ORIENT/3\n"
+                              "orientation\n"
+                              "#grpart_ID   part_ID\n"
+                              "         0         7\n"
+                              "#                 VX                  VY                  VZ   skew_ID                 PHI     Iorth\n"
+                              "                   0                   0                   0         0                  30         0\n"
+                              RUN_CARD);
+    rc_case *c = load_ok(p);
+    ENSURE(c && c->nfricorient == 1);
+    if (c && c->nfricorient == 1 && c->fricorient[0].n == 1) {
+        const rc_case_fricorient_item *it = &c->fricorient[0].item[0];
+        ENSURE(it->v[0] == 1 && it->v[1] == 0 && it->v[2] == 0 && it->phi == 30 && it->part_id == 7);
+        ENSURE(NWARN(c, "fozero.rad:6:", "/FRIC_ORIENT/3", "(1, 0, 0)") == 1);
+    }
+    rc_case_free(c);
+}
+
+/* ---- Cards of explicit runs ---------------------------------------------- */
+
+static void test_deck_explicit_cards_one_warning_per_kind(void)
+{
+    const char *p = tmp_write("explicit.rad",
+                              "/TITLE\n"
+                              "a Radioss model\n"
+                              "/TH/RBODY/1\n"
+                              "bodies\n"
+                              "DEF\n"
+                              "         1\n"
+                              "/TH/INTER/2\n"
+                              "interfaces\n"
+                              "DEF\n"
+                              "         1\n"
+                              "/TH/NODE/3\n"
+                              "nodes\n"
+                              "DEF\n"
+                              "         1\n"
+                              "/ANIM/DT\n"
+                              "0 1e-3\n"
+                              "/ANIM/VECT/VEL\n"
+                              "/MEMORY/AUTO\n"
+                              "/DT/NODA/CST\n"
+                              "0.9 1e-7\n"
+                              "/PRINT/-1000\n"
+                              "/H3D/DT\n"
+                              "0 1e-3\n"
+                              "/RFILE/5000\n"
+                              RUN_CARD);
+    rc_case *c = load_ok(p);
+    ENSURE(c != NULL);
+    if (c) {
+        ENSURE(NWARN(c, "explicit.rad:3:", "/TH/RBODY/1", "ignored", "explicit", "(and 2 more /TH cards)") == 1);
+        ENSURE(NWARN(c, "explicit.rad:15:", "/ANIM/DT", "(and 1 more /ANIM card)") == 1);
+        ENSURE(NWARN(c, "/TITLE") == 1 && NWARN(c, "/MEMORY/AUTO") == 1 && NWARN(c, "/DT/NODA/CST") == 1 &&
+               NWARN(c, "/PRINT/-1000") == 1 && NWARN(c, "/H3D/DT") == 1 && NWARN(c, "/RFILE/5000") == 1);
+        ENSURE(c->nwarnings == 8);
+        ENSURE(c->run.present && c->run.tend == 1.0);
+    }
+    rc_case_free(c);
+}
+
+/* ---- Several errors in one run -------------------------------------------- */
+
+static void test_deck_several_errors(void)
+{
+    rc_error e;
+    /* three cards in error: the first one is the report's first line, the
+     * others follow, then the count; the reading goes on after each */
+    const char *p = tmp_write("errs.rad",
+                              "/FUNCT/1\n"
+                              "f\n"
+                              "                 0.0                 0.0\n"
+                              "                 abc                 1.0\n"
+                              "/GRAV/2\n"
+                              "g\n"
+                              "         0         W\n"
+                              "/FUNCT/3\n"
+                              "fine\n"
+                              "                 0.0                 0.0\n"
+                              "                 1.0                 1.0\n"
+                              "/RUN\n"
+                              "                -1.0\n");
+    ENSURE(load_fails(p, &e));
+    char first[160];
+    snprintf(first, sizeof first, "%s:4: card /FUNCT/1, field X", p);
+    ENSURE(strncmp(e.msg, first, strlen(first)) == 0);
+    ENSURE(strstr(e.msg, "\n") && strstr(e.msg, "errs.rad:7: card /GRAV/2, field DIR"));
+    ENSURE(strstr(e.msg, "errs.rad:13: card /RUN, field Tend"));
+    ENSURE(strstr(e.msg, "3 input errors") != NULL);
+    ENSURE(strstr(e.msg, "no /RUN") == NULL); /* the /RUN in error is not "missing" */
+
+    /* more than 20: 20 reported, then "too many errors" */
+    char deck[8192] = "";
+    for (int k = 1; k <= 25; k++) {
+        char card[128];
+        snprintf(card, sizeof card, "/GRAV/%d\ng\n         0         Q\n", k);
+        strcat(deck, card);
+    }
+    strcat(deck, RUN_CARD);
+    ENSURE(load_fails(tmp_write("errs25.rad", deck), &e));
+    int n = 0;
+    for (const char *q = e.msg; (q = strstr(q, "field DIR")); q++) n++;
+    ENSURE(n == 20);
+    ENSURE(strstr(e.msg, "errs25.rad:3: card /GRAV/1, field DIR") == strstr(e.msg, "errs25.rad"));
+    ENSURE(strstr(e.msg, "errs25.rad:60: card /GRAV/20, field DIR") != NULL);
+    ENSURE(strstr(e.msg, "/GRAV/21,") == NULL);
+    ENSURE(strstr(e.msg, "too many errors") != NULL);
+}
+
+void suite_deck(void);
+void suite_deck(void)
+{
+    RUN_TEST(test_deck_grav_columns);
+    RUN_TEST(test_deck_end_in_include);
+    RUN_TEST(test_deck_lenient_headers_and_text);
+    RUN_TEST(test_deck_type6_iform_without_stiff);
+    RUN_TEST(test_deck_fric_orient_zero_vector);
+    RUN_TEST(test_deck_explicit_cards_one_warning_per_kind);
+    RUN_TEST(test_deck_several_errors);
+    tmp_cleanup();
+}

@@ -58,6 +58,10 @@ typedef struct rc_case rc_case;
  * On failure returns RC_EINPUT or RC_EIO, fills *err, sets *out to NULL. */
 rc_status rc_case_load(const char *path, rc_case **out, rc_error *err);
 void rc_case_free(rc_case *c); /* NULL is a no-op */
+/* Warnings of the reading ("file:line: ..."): ignored cards, leniencies,
+ * unit conversions; i in [0, rc_case_warning_count(c)). */
+int rc_case_warning_count(const rc_case *c);
+const char *rc_case_warning(const rc_case *c, int i);
 
 /* ---- Model (compiled, constant) ------------------------------------- */
 typedef struct rc_model rc_model;

@@ -290,10 +290,11 @@ static void test_deck_explicit_cards_one_warning_per_kind(void)
     ENSURE(c != NULL);
     if (c) {
         ENSURE(NWARN(c, "explicit.rad:3:", "/TH/RBODY/1", "ignored", "explicit", "(and 2 more /TH cards)") == 1);
-        ENSURE(NWARN(c, "explicit.rad:15:", "/ANIM/DT", "(and 1 more /ANIM card)") == 1);
+        ENSURE(NWARN(c, "explicit.rad:17:", "/ANIM/VECT/VEL", "ignored") == 1);
+        ENSURE(NWARN(c, "explicit.rad:15:", "/ANIM/DT ignored", "ricochet's /RUN") == 1);
         ENSURE(NWARN(c, "/TITLE") == 1 && NWARN(c, "/MEMORY/AUTO") == 1 && NWARN(c, "/DT/NODA/CST") == 1 &&
                NWARN(c, "/PRINT/-1000") == 1 && NWARN(c, "/H3D/DT") == 1 && NWARN(c, "/RFILE/5000") == 1);
-        ENSURE(c->nwarnings == 8);
+        ENSURE(c->nwarnings == 9);
         ENSURE(c->run.present && c->run.tend == 1.0);
     }
     rc_case_free(c);
@@ -347,6 +348,114 @@ static void test_deck_several_errors(void)
     ENSURE(strstr(e.msg, "too many errors") != NULL);
 }
 
+/* ---- /BEGIN forms ---------------------------------------------------------- */
+
+static void test_deck_begin_forms(void)
+{
+    /* Radioss 9.0: run name and version only */
+    rc_case *c = load_ok(tmp_write("begin90.rad", "/BEGIN\nold model\n        90         1\n" RUN_CARD));
+    ENSURE(c && c->invers == 90 && strcmp(c->title, "old model") == 0 && c->unit_mass[0] == 0);
+    rc_case_free(c);
+    /* Radioss 2021 and later: Invers alone; units */
+    c = load_ok(tmp_write("begin2024.rad",
+                          "/BEGIN/\n"
+                          "new model\n"
+                          "      2024\n"
+                          "                  kg                   m                   s\n"
+                          "                  kg                   m                   s\n" RUN_CARD));
+    ENSURE(c && c->invers == 2024 && strcmp(c->unit_length, "m") == 0 && c->nwarnings == 0);
+    rc_case_free(c);
+    /* an empty block: accepted with a warning */
+    c = load_ok(tmp_write("begin0.rad", "/BEGIN\n" RUN_CARD));
+    ENSURE(c && c->invers == 0 && c->title[0] == 0 && NWARN(c, "begin0.rad:1:", "/BEGIN", "empty") == 1);
+    rc_case_free(c);
+    /* an unknown version: the nearest older layouts, with a warning */
+    c = load_ok(tmp_write("begin77.rad", "/BEGIN\nx\n        77\n" RUN_CARD));
+    ENSURE(c && c->invers == 77 && NWARN(c, "begin77.rad:3:", "Invers = 77") == 1);
+    rc_case_free(c);
+    /* a fifth line is an error naming the card */
+    rc_error e;
+    ENSURE(load_fails(tmp_write("begin5.rad", "/BEGIN\nx\n2022\n\n\nextra\n" RUN_CARD), &e));
+    ENSURE(strstr(e.msg, "begin5.rad:6:") && strstr(e.msg, "/BEGIN") && strstr(e.msg, "unexpected data line"));
+}
+
+/* ---- The Radioss engine file ------------------------------------------------ */
+
+/* A single file with the engine card /RUN/name/n: Tend from Tstop, Dt_out
+ * from /ANIM/DT (blank-separated, as engine files often are). */
+static void test_deck_engine_run_single_file(void)
+{
+    const char *p = tmp_write("single.rad",
+                              "/BEGIN\nball\n      2022\n"
+                              "/FUNCT/1\nf\n                 0.0                 0.0\n                 1.0                 1.0\n"
+                              "#RADIOSS ENGINE\n"
+                              "/RUN/ball/1\n"
+                              "               0.137\n"
+                              "/ANIM/DT\n"
+                              "0 0.00137\n"
+                              "/TFILE/0\n"
+                              "1e-4\n"
+                              "/PRINT/-100\n"
+                              "/DT/NODA/CST/0\n"
+                              "0.9 1e-9\n");
+    rc_case *c = load_ok(p);
+    ENSURE(c != NULL);
+    if (c) {
+        ENSURE(c->run.present && c->run.tend == 0.137 && c->run.dtout == 0.00137 && c->run.loc.line == 9);
+        ENSURE(NWARN(c, "single.rad:9:", "/RUN/ball/1", "Tend = Tstop = 0.137", "Tfreq of /ANIM/DT") == 1);
+        ENSURE(NWARN(c, "/TFILE/0", "ignored") == 1 && NWARN(c, "/PRINT/-100", "ignored") == 1 &&
+               NWARN(c, "/DT/NODA/CST/0", "ignored") == 1);
+    }
+    rc_case_free(c);
+    /* without /ANIM/DT: Tend/100; a run name that is a number, a restart letter */
+    c = load_ok(tmp_write("single2.rad", "/RUN/2024/1/C\n2.5\n"));
+    ENSURE(c && c->run.present && c->run.tend == 2.5 && c->run.dtout == 0.025);
+    rc_case_free(c);
+    /* a ricochet /RUN wins, with a warning */
+    c = load_ok(tmp_write("both.rad", RUN_CARD "/RUN/ball/1\n7.0\n"));
+    ENSURE(c && c->run.tend == 1.0 && NWARN(c, "both.rad:3:", "/RUN/ball/1", "ignored", "ricochet /RUN") == 1);
+    rc_case_free(c);
+    /* Tstop must be positive */
+    rc_error e;
+    ENSURE(load_fails(tmp_write("tstop.rad", "/RUN/ball/1\n-1\n"), &e));
+    ENSURE(strstr(e.msg, "tstop.rad:2: card /RUN/ball/1, field Tstop") && !strstr(e.msg, "no /RUN"));
+}
+
+/* A starter and engine pair: NAME_0000.rad reads NAME_0001.rad next to it. */
+static void test_deck_engine_pair(void)
+{
+    tmp_write("drop_0001.rad",
+              "#RADIOSS ENGINE\n"
+              "/RUN/drop/1\n"
+              "                 0.5\n"
+              "/ANIM/DT\n"
+              "                   0               0.005\n"
+              "/VERS/2022\n"
+              "/END\n");
+    const char *p = tmp_write("drop_0000.rad",
+                              "#RADIOSS STARTER\n"
+                              "/BEGIN\ndrop\n      2022         0\n"
+                              "                  kg                   m                   s\n"
+                              "                  kg                   m                   s\n"
+                              "/FUNCT/1\nf\n                 0.0                 0.0\n                 1.0                 1.0\n"
+                              "/END\n");
+    rc_case *c = load_ok(p);
+    ENSURE(c != NULL);
+    if (c) {
+        ENSURE(c->run.present && c->run.tend == 0.5 && c->run.dtout == 0.005);
+        ENSURE(c->nfiles == 2 && strstr(c->files[1], "drop_0001.rad"));
+        ENSURE(c->run.loc.file == c->files[1] && c->run.loc.line == 2);
+        ENSURE(NWARN(c, "drop_0001.rad:1:", "engine file", "drop_0000.rad") == 1);
+        ENSURE(NWARN(c, "/VERS/2022", "ignored") == 1);
+        ENSURE(c->nfunct == 1);
+    }
+    rc_case_free(c);
+    /* without its engine file, a starter file alone has no end time */
+    rc_error e;
+    ENSURE(load_fails(tmp_write("lone_0000.rad", "/FUNCT/1\nf\n0,0\n1,1\n/END\n"), &e));
+    ENSURE(strstr(e.msg, "no /RUN card") != NULL);
+}
+
 void suite_deck(void);
 void suite_deck(void)
 {
@@ -357,5 +466,8 @@ void suite_deck(void)
     RUN_TEST(test_deck_fric_orient_zero_vector);
     RUN_TEST(test_deck_explicit_cards_one_warning_per_kind);
     RUN_TEST(test_deck_several_errors);
+    RUN_TEST(test_deck_begin_forms);
+    RUN_TEST(test_deck_engine_run_single_file);
+    RUN_TEST(test_deck_engine_pair);
     tmp_cleanup();
 }

@@ -147,6 +147,12 @@ rc_status rc_card_dispatch(rc_reader *rd, const rc_block *b)
 {
     const char *kw = b->kw[0];
     int family = 0;
+    /* the Radioss engine /RUN/name/n[/letter] (a run name after RUN, or two
+     * numbers) and /ANIM/DT give the run settings */
+    if (strcmp(kw, "RUN") == 0 && (b->nkw >= 2 || b->unit_id || (b->bad && b->nkw == 1)))
+        return rc_card_engine_run(rd, b);
+    if (strcmp(kw, "ANIM") == 0 && b->nkw == 2 && strcmp(b->kw[1], "DT") == 0 && !b->has_id)
+        return rc_card_anim_dt(rd, b);
     /* ignored Radioss cards: a warning, whatever their header */
     if (rc_in_list(kw, rc_ignored, RC_NF(rc_ignored)))
         return rc_skip(rd, b, "no meaning for rigid bodies");

@@ -126,6 +126,104 @@ rc_status rc_card_run(rc_reader *rd, const rc_block *b)
     return RC_OK;
 }
 
+/* ======================================================================
+ * Radioss engine cards: /RUN/name/n, /ANIM/DT
+ * ====================================================================== */
+
+/* Engine lines are read as Radioss reads them: fixed 20-column fields, or
+ * free format (blank-separated) when a value crosses a field boundary.
+ * `buf` (RC_CASE_MAX_LINE + 1) receives the comma-joined free form. */
+static const rc_line *rc_engine_line(const rc_line *ln, char *buf, rc_line *tmp)
+{
+    int cross = 0, k = 0, last = -1;
+    for (int i = 0; i < ln->len;) {
+        if (ln->text[i] == ' ') { i++; continue; }
+        int j = i;
+        while (j < ln->len && ln->text[j] != ' ') j++;
+        /* a value across two fields, or two values in one field */
+        if (i / 20 != (j - 1) / 20 || i / 20 == last) cross = 1;
+        last = i / 20;
+        i = j;
+    }
+    if (!cross || memchr(ln->text, ',', (size_t)ln->len)) return ln;
+    for (int i = 0; i < ln->len;) {
+        if (ln->text[i] == ' ') { i++; continue; }
+        if (k) buf[k++] = ',';
+        while (i < ln->len && ln->text[i] != ' ' && k < RC_CASE_MAX_LINE) buf[k++] = ln->text[i++];
+    }
+    buf[k] = '\0';
+    *tmp = *ln;
+    tmp->text = buf;
+    tmp->len = k;
+    return tmp;
+}
+
+/* /RUN/run_name/run_number[/restart_letter] (the Radioss engine file
+ * name_0001.rad): one line, Tstop. Gives ricochet's end time when the deck
+ * has no ricochet /RUN. */
+rc_status rc_card_engine_run(rc_reader *rd, const rc_block *b)
+{
+    int nd;
+    rc_status st;
+    if (rd->engine_run_hdr)
+        return rc_case_fail(rd, &b->hdr->loc, b->name, NULL,
+                            "only one Radioss engine /RUN card is allowed, first at %s:%d",
+                            rd->engine_run_hdr->loc.file, rd->engine_run_hdr->loc.line);
+    rd->engine_run_hdr = b->hdr;
+    if ((st = rc_card_lines(rd, b, NULL, 1, 1, "Tstop", &nd))) return st;
+    rc_field f[] = {RC_F_REAL("Tstop", &rd->engine_tstop, 0, RC_FF_POS)};
+    char buf[RC_CASE_MAX_LINE + 1];
+    rc_line tmp;
+    return rc_parse_line(rd, b, rc_engine_line(&b->lines[0], buf, &tmp), f, RC_NF(f));
+}
+
+/* /ANIM/DT (engine): Tstart Tfreq; Tfreq gives the output interval when
+ * the end time comes from the engine /RUN. */
+rc_status rc_card_anim_dt(rc_reader *rd, const rc_block *b)
+{
+    int nd;
+    double tstart = 0;
+    rc_status st;
+    if ((st = rc_card_lines(rd, b, NULL, 1, 1, "Tstart Tfreq", &nd))) return st;
+    rc_field f[] = {RC_F_REAL("Tstart", &tstart, 0, 0), RC_F_REAL("Tfreq", &rd->anim_dt, 0, RC_FF_NONNEG)};
+    char buf[RC_CASE_MAX_LINE + 1];
+    rc_line tmp;
+    if ((st = rc_parse_line(rd, b, rc_engine_line(&b->lines[0], buf, &tmp), f, RC_NF(f)))) return st;
+    rd->anim_dt_hdr = b->hdr;
+    return RC_OK;
+}
+
+/* The run settings from the engine cards: Tend = Tstop of /RUN/name/n,
+ * Dt_out = Tfreq of /ANIM/DT (else Tend/100). A ricochet /RUN wins. */
+static rc_status rc_engine_settings(rc_reader *rd)
+{
+    rc_case *c = rd->c;
+    rc_case_run *r = &c->run;
+    rc_status st;
+    if (rd->anim_dt_hdr && (!rd->engine_run_hdr || rd->run_hdr) &&
+        (st = rc_case_warn(rd, &rd->anim_dt_hdr->loc,
+                           "card /ANIM/DT ignored: the output interval is Dt_out of %s",
+                           rd->run_hdr ? "ricochet's /RUN" : "the deck (no engine /RUN)")))
+        return st;
+    if (!rd->engine_run_hdr) return RC_OK;
+    if (rd->run_hdr)
+        return rc_case_warn(rd, &rd->engine_run_hdr->loc,
+                            "Radioss engine card %s ignored: the ricochet /RUN at %s:%d gives "
+                            "the run settings",
+                            rd->engine_run_hdr->text, rd->run_hdr->loc.file, rd->run_hdr->loc.line);
+    if (!(rd->engine_tstop > 0)) return RC_OK; /* its error is reported */
+    r->present = 1;
+    r->tend = rd->engine_tstop;
+    r->dtout = rd->anim_dt > 0 ? rd->anim_dt : RC_DEF_DTOUT_FRACTION * r->tend;
+    r->ev_state = 0;
+    r->loc = rd->engine_run_hdr->loc;
+    return rc_case_warn(rd, &r->loc,
+                        "run settings from the Radioss engine card %s: Tend = Tstop = %.15g s, "
+                        "Dt_out = %.15g s (%s)",
+                        rd->engine_run_hdr->text, r->tend, r->dtout,
+                        rd->anim_dt > 0 ? "Tfreq of /ANIM/DT" : "Tend/100");
+}
+
 /* /SOLVER: Method Max_order Max_steps Rtol Hmax H0; the four absolute
  * tolerances; Atol_energy. */
 rc_status rc_card_solver(rc_reader *rd, const rc_block *b)
@@ -188,10 +286,14 @@ void rc_cards_defaults(rc_case *c)
 rc_status rc_cards_finish(rc_reader *rd)
 {
     rc_case *c = rd->c;
+    rc_status st;
+    if ((st = rc_engine_settings(rd))) return st;
     /* the end time is required */
-    if (!c->run.present && !rd->run_hdr) {
+    if (!c->run.present && !rd->run_hdr && !rd->engine_run_hdr) {
         rc_loc loc = {c->files[0], rd->main_last_line > 0 ? rd->main_last_line : 1};
-        return rc_case_fail(rd, &loc, NULL, NULL, "no /RUN card: the end time is required");
+        return rc_case_fail(rd, &loc, NULL, NULL,
+                            "no /RUN card: the end time is required (ricochet's /RUN, or the "
+                            "Radioss engine card /RUN/name/n)");
     }
     /* without /SOLVER, the defaults apply at the main file */
     if (!c->solver.present) c->solver.loc = (rc_loc){c->files[0], 0};

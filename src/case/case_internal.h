@@ -96,6 +96,11 @@ typedef struct rc_reader {
     int nids[RC_IDK_COUNT], capids[RC_IDK_COUNT];
     int seq;
     const rc_line *begin_hdr, *run_hdr, *solver_hdr; /* single cards */
+    const rc_line *engine_run_hdr;            /* Radioss engine /RUN/name/n */
+    double engine_tstop;                      /* its Tstop [s]              */
+    const rc_line *anim_dt_hdr;               /* engine /ANIM/DT            */
+    double anim_dt;                           /* its Tfreq [s]              */
+    int engine_pass;                          /* lexing the engine file     */
     int nerrors;                              /* input errors so far        */
     char *more;                               /* errors after the first, "\n"
                                                  before each (malloc)       */
@@ -253,6 +258,10 @@ rc_status rc_card_impvel(rc_reader *rd, const rc_block *b);
 rc_status rc_card_begin(rc_reader *rd, const rc_block *b);
 rc_status rc_card_run(rc_reader *rd, const rc_block *b);
 rc_status rc_card_solver(rc_reader *rd, const rc_block *b);
+/* Radioss engine cards read for the run settings: /RUN/name/n[/letter]
+ * (Tstop) and /ANIM/DT (Tstart Tfreq). */
+rc_status rc_card_engine_run(rc_reader *rd, const rc_block *b);
+rc_status rc_card_anim_dt(rc_reader *rd, const rc_block *b);
 /* Deck-level checks after the last card (/RUN present, defaults). */
 rc_status rc_cards_finish(rc_reader *rd);
 /* Defaults of the optional cards, set before reading. */

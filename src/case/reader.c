@@ -243,7 +243,8 @@ static rc_status rc_lex_buffer(rc_reader *rd, char *buf, long size, const char *
         if (st) return st;
         p = eol + 1;
     }
-    if (fname == rd->c->files[0]) rd->main_last_line = loc.line > 0 ? loc.line : 1;
+    if (fname == rd->c->files[0] && !rd->engine_pass)
+        rd->main_last_line = loc.line > 0 ? loc.line : 1;
     rd->file_ended = 0; /* the including file reads on */
     return RC_OK;
 }
@@ -285,7 +286,7 @@ static rc_status rc_lex_file(rc_reader *rd, const char *path, const rc_loc *inc)
     st = rc_slurp(rd, fp, path, inc, &buf, &size);
     fclose(fp);
     if (st) return st;
-    if (!inc) {
+    if (!inc && !rd->engine_pass) {
         rd->c->checksum = rc_fnv1a64(buf, size);
         rd->main_bytes = size;
     }
@@ -346,6 +347,35 @@ static void rc_parse_header(rc_block *b)
         if (!*e) break;
         p = e + 1;
     }
+}
+
+/* A Radioss starter file NAME_0000.rad: read its engine file
+ * NAME_0001.rad next to it, when it exists, after it (a warning says so). */
+static rc_status rc_lex_engine(rc_reader *rd, const char *path)
+{
+    size_t n = strlen(path);
+    struct stat sb;
+    if (n < 9 || strncmp(path + n - 9, "_0000.", 6) != 0 || strcasecmp(path + n - 3, "rad") != 0)
+        return RC_OK;
+    char *eng = strdup(path);
+    if (!eng) return rc_case_nomem(rd);
+    eng[n - 5] = '1';
+    rc_status st = RC_OK;
+    if (stat(eng, &sb) == 0 && S_ISREG(sb.st_mode)) {
+        rd->engine_pass = 1;
+        st = rc_lex_file(rd, eng, NULL);
+        rd->engine_pass = 0;
+        const char *fname = st ? NULL : rc_file_name(rd, eng);
+        if (fname) {
+            rc_loc loc = {fname, 1};
+            st = rc_case_warn(rd, &loc,
+                              "Radioss engine file read after its starter file %s (the pair "
+                              "NAME_0000.rad, NAME_0001.rad)",
+                              rd->c->files[0]);
+        } else if (!st) st = RC_ENOMEM;
+    }
+    free(eng);
+    return st;
 }
 
 /* Is block b the card /KW (first keyword)? */
@@ -509,6 +539,7 @@ rc_status rc_case_load(const char *path, rc_case **out, rc_error *err)
      * Input errors of cards are counted and the reading goes on, so that up
      * to RC_CASE_MAX_ERRORS are reported at once. */
     if ((st = rc_lex_file(&rd, path, NULL))) goto fail;
+    if ((st = rc_lex_engine(&rd, path))) goto fail;
     if ((st = rc_read_blocks(&rd))) goto report;
     if ((st = rc_check_dups(&rd)) && st != RC_EINPUT) goto fail;
     if (rd.nerrors <= RC_CASE_MAX_ERRORS && (st = rc_cards_finish(&rd)) && st != RC_EINPUT) goto fail;

@@ -456,6 +456,170 @@ static void test_deck_engine_pair(void)
     ENSURE(strstr(e.msg, "no /RUN card") != NULL);
 }
 
+/* ---- Layouts by /BEGIN version -------------------------------------------- */
+
+#define BEGIN_V(v) "/BEGIN\nversioned\n" v "\n"
+
+/* /INTER/TYPE6 as Radioss 4.4, 9.0, 11.0 and 2017 write it. */
+static void test_deck_type6_layouts(void)
+{
+    rc_case *c = load_ok(tmp_write("t6v44.rad",
+                                   BEGIN_V("        44")
+                                   "/INTER/TYPE6/1\n"
+                                   "4.4 layout\n"
+                                   "#surf_id1surf_id2\n"
+                                   "       3       4\n"
+                                   "#          Scale            FRIC             GAP          Tstart          Tstop\n"
+                                   "             1.5             0.3           0.001             0.1             0.9\n"
+                                   "#     If     IRS     IRM\n"
+                                   "       7       0       0\n" RUN_CARD));
+    ENSURE(c && c->ntype6 == 1);
+    if (c && c->ntype6 == 1) {
+        const rc_case_type6 *t = &c->type6[0];
+        ENSURE(t->surf1 == 3 && t->surf2 == 4 && t->sfric == 1.5 && t->fric == 0.3 && t->gap == 0.001 &&
+               t->tstart == 0.1 && t->tstop == 0.9 && t->fct_ld == 7 && t->irs == 0);
+        ENSURE(t->iform == 0 && t->ascalex == 1 && t->fscaleld == 1 && t->ascalef == 1 && t->ascalev == 1 &&
+               t->fscaleul == 1 && t->fscalev == 1 && t->visc == 0 && t->stiff == 0);
+        ENSURE(t->line_loc[2].line == 11 && t->line_loc[5].line == 11);
+    }
+    rc_case_free(c);
+
+    c = load_ok(tmp_write("t6v90.rad",
+                          BEGIN_V("        90         0")
+                          "/INTER/TYPE6/2\n"
+                          "9.0 layout\n"
+                          "# surf_iD1  surf_iD2\n"
+                          "         3         4\n"
+                          "#                                   Fric                 Gap              Tstart               Tstop\n"
+                          "                                     0.2               0.002                   0                 0.8\n"
+                          "#                IRS       IRM\n"
+                          "                   0         0\n"
+                          "#funct_IDf                       Ascalex             FscaleY\n"
+                          "         8                       0.001                1000\n" RUN_CARD));
+    ENSURE(c && c->ntype6 == 1);
+    if (c && c->ntype6 == 1) {
+        const rc_case_type6 *t = &c->type6[0];
+        ENSURE(t->sfric == 0 && t->fric == 0.2 && t->gap == 0.002 && t->tstop == 0.8 && t->fct_ld == 8 &&
+               t->iform == 0 && t->ascalex == 0.001 && t->fscaleld == 1000 && t->fscaleul == 1);
+    }
+    rc_case_free(c);
+
+    c = load_ok(tmp_write("t6v110.rad",
+                          BEGIN_V("       110         0")
+                          "/INTER/TYPE6/3\n"
+                          "11.0 layout\n"
+                          "         3         4\n"
+                          "                                     0.2                   0                   0                   0\n"
+                          "                   0         0\n"
+                          "# fct_IDId     Iform             Ascalex            Fscaleid\n"
+                          "         8         1                 0.5                  20\n"
+                          "# fct_IDul                         Stiff            Fscaleul\n"
+                          "         9                         1e7                  30\n" RUN_CARD));
+    ENSURE(c && c->ntype6 == 1);
+    if (c && c->ntype6 == 1) {
+        const rc_case_type6 *t = &c->type6[0];
+        ENSURE(t->fct_ld == 8 && t->iform == 1 && t->ascalex == 0.5 && t->fscaleld == 20 && t->fct_ul == 9 &&
+               t->stiff == 1e7 && t->fscaleul == 30 && t->tstop == 1e30 && t->icor == 0 && t->visc == 0);
+    }
+    rc_case_free(c);
+
+    /* a 2022 deck needs six lines; a 9.0 deck has four */
+    rc_error e;
+    ENSURE(load_fails(tmp_write("t6v90b.rad", BEGIN_V("        90") "/INTER/TYPE6/2\nx\n3,4\n\n\n8\n9\n" RUN_CARD), &e));
+    ENSURE(strstr(e.msg, "t6v90b.rad:10:") && strstr(e.msg, "unexpected data line") && strstr(e.msg, "5.1/9.0"));
+    ENSURE(load_fails(tmp_write("t6v2022.rad", BEGIN_V("      2022") "/INTER/TYPE6/2\nx\n3,4\n\n\n8\n" RUN_CARD), &e));
+    ENSURE(strstr(e.msg, "t6v2022.rad:4:") && strstr(e.msg, "expected 6 data lines"));
+}
+
+/* /GRAV, /FUNCT, /INIVEL, /BCS, /IMPVEL in the Radioss 4.4 layouts. */
+static void test_deck_loads_layouts_44(void)
+{
+    rc_case *c = load_ok(tmp_write("loads44.rad",
+                                   BEGIN_V("        44")
+                                   "/GRAV/1\n"
+                                   "g\n"
+                                   "# Ifunct     Dir   Iskew Isensor           Scale Gnod_id\n"
+                                   "       2       Z       0       0           -9.81       5\n"
+                                   "/FUNCT/2\n"
+                                   "f\n"
+                                   "             0.0             1.0\n"
+                                   "             2.0             3.0\n"
+                                   "/INIVEL/TRA/3\n"
+                                   "v\n"
+                                   "             1.0             2.0             3.0       5       0\n"
+                                   "/BCS/4\n"
+                                   "b\n"
+                                   "#tra rot Skew_id Gnod_id\n"
+                                   " 111 000       0       5\n"
+                                   "/IMPVEL/5\n"
+                                   "i\n"
+                                   "# Ifunct     DIR   Iskew Isensor Gnod_id\n"
+                                   "       2       X       0       0       5\n"
+                                   "#          Scale          Tstart           Tstop\n"
+                                   "             2.5               0             0.7\n" RUN_CARD));
+    ENSURE(c != NULL);
+    if (c) {
+        ENSURE(c->ngrav == 1 && c->grav[0].fct_id == 2 && c->grav[0].dir == 2 && c->grav[0].fscale == -9.81 &&
+               c->grav[0].grnod_id == 5 && c->grav[0].ascale == 1);
+        ENSURE(c->nfunct == 1 && c->funct[0].npts == 2);
+        if (c->nfunct == 1 && c->funct[0].npts == 2) ENSURE(c->funct[0].x[1] == 2.0 && c->funct[0].y[1] == 3.0);
+        ENSURE(c->ninivel == 1 && c->inivel[0].v[2] == 3.0 && c->inivel[0].grnod_id == 5);
+        ENSURE(c->nbcs == 1 && c->bcs[0].fix[0] == 1 && c->bcs[0].fix[3] == 0 && c->bcs[0].grnod_id == 5);
+        ENSURE(c->nimpvel == 1);
+        ENSURE(c->nwarnings == 0);
+    }
+    rc_case_free(c);
+}
+
+/* /INIVEL of Radioss 2025: an optional line Tstart sens_ID (0 only). */
+static void test_deck_inivel_2025(void)
+{
+    rc_case *c = load_ok(tmp_write("iv2025.rad",
+                                   BEGIN_V("      2025")
+                                   "/INIVEL/ROT/3\n"
+                                   "v\n"
+                                   "                 1.0                 2.0                 3.0         5         0\n"
+                                   "#             tstart   sens_ID\n"
+                                   "                   0         0\n" RUN_CARD));
+    ENSURE(c && c->ninivel == 1 && c->inivel[0].rot == 1 && c->inivel[0].v[1] == 2.0);
+    rc_case_free(c);
+    rc_error e;
+    ENSURE(load_fails(tmp_write("iv2025b.rad", BEGIN_V("      2025")
+                                "/INIVEL/ROT/3\nv\n1,2,3,5\n0.5\n" RUN_CARD), &e));
+    ENSURE(strstr(e.msg, "iv2025b.rad:7: card /INIVEL/ROT/3, field Tstart") && strstr(e.msg, "not supported yet"));
+    /* the line does not exist before 2025 */
+    ENSURE(load_fails(tmp_write("iv2022.rad", BEGIN_V("      2022")
+                                "/INIVEL/ROT/3\nv\n1,2,3,5\n0\n" RUN_CARD), &e));
+    ENSURE(strstr(e.msg, "iv2022.rad:7:") && strstr(e.msg, "unexpected data line"));
+}
+
+/* /FRICTION of Radioss 2018 and 2019: no Idir on the group line. */
+static void test_deck_friction_2019(void)
+{
+    const char *deck = "/FRICTION/5\nf\n0,0,,1\n\n0,0.3\n"
+                       "#grpartID1 grpartID2   partID1   partID2\n"
+                       "         0         0         7         8\n"
+                       "\n"
+                       "                   0                 0.4\n" RUN_CARD;
+    char text[1024];
+    snprintf(text, sizeof text, "%s%s", BEGIN_V("      2019"), deck);
+    rc_case *c = load_ok(tmp_write("fr2019.rad", text));
+    ENSURE(c && c->nfriction == 1 && c->friction[0].npair == 1);
+    if (c && c->nfriction == 1 && c->friction[0].npair == 1) {
+        const rc_case_fricpair *pr = &c->friction[0].pair[0];
+        ENSURE(pr->part1 == 7 && pr->part2 == 8 && pr->idir == 0 && pr->set[0].fric == 0.4);
+    }
+    rc_case_free(c);
+    /* with 2019, a value in the Idir columns is text after the layout */
+    snprintf(text, sizeof text, "%s%s", BEGIN_V("      2019"),
+             "/FRICTION/5\nf\n0,0,,1\n\n0,0.3\n"
+             "         0         0         7         8                   1\n\n\n" RUN_CARD);
+    c = load_ok(tmp_write("fr2019b.rad", text));
+    ENSURE(c && c->nfriction == 1 && c->friction[0].npair == 1 && NWARN(c, "fr2019b.rad:9:", "after column 40 ignored") == 1);
+    if (c && c->nfriction == 1 && c->friction[0].npair == 1) ENSURE(c->friction[0].pair[0].idir == 0);
+    rc_case_free(c);
+}
+
 void suite_deck(void);
 void suite_deck(void)
 {
@@ -469,5 +633,9 @@ void suite_deck(void)
     RUN_TEST(test_deck_begin_forms);
     RUN_TEST(test_deck_engine_run_single_file);
     RUN_TEST(test_deck_engine_pair);
+    RUN_TEST(test_deck_type6_layouts);
+    RUN_TEST(test_deck_loads_layouts_44);
+    RUN_TEST(test_deck_inivel_2025);
+    RUN_TEST(test_deck_friction_2019);
     tmp_cleanup();
 }

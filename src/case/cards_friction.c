@@ -138,7 +138,9 @@ rc_status rc_card_friction(rc_reader *rd, const rc_block *b)
                          RC_F_INT("part_ID1", &pr->part1, 0, RC_FF_NONNEG),
                          RC_F_INT("part_ID2", &pr->part2, 0, RC_FF_NONNEG), RC_F_SKIP(10),
                          RC_F_SET("Idir", &pr->idir, 0, 0, 0x3u, 0, NULL)};
-        if ((st = rc_parse_line(rd, b, ln, l1, RC_NF(l1)))) return st;
+        /* Radioss 2018 and 2019: no Idir (isotropic only) */
+        if ((st = rc_parse_line(rd, b, ln, l1, rc_layout_version(rd) >= 2020 ? RC_NF(l1) : 4)))
+            return st;
 
         /* each side names a part group or a part (the group wins, Radioss) */
         const int grp[2] = {pr->grpart1, pr->grpart2}, prt[2] = {pr->part1, pr->part2};

@@ -145,6 +145,15 @@ typedef struct rc_field {
     { .name = (nm), .width = 10, .type = RC_FT_INT, .out = (p), .def = (d), .flags = (fl), \
       .valid = (v), .supp = (s), .note = (nt) }
 #define RC_F_SKIP(w) { .name = "blank", .width = (w), .type = RC_FT_SKIP }
+/* The same with a width of the older layouts (8-character integers,
+ * 16-character reals of Radioss 4.x). */
+#define RC_F_INTW(nm, p, d, fl, w) \
+    { .name = (nm), .width = (w), .type = RC_FT_INT, .out = (p), .def = (d), .flags = (fl) }
+#define RC_F_REALW(nm, p, d, fl, w) \
+    { .name = (nm), .width = (w), .type = RC_FT_REAL, .out = (p), .def = (d), .flags = (fl) }
+#define RC_F_SETW(nm, p, d, fl, v, s, nt, w)                                          \
+    { .name = (nm), .width = (w), .type = RC_FT_INT, .out = (p), .def = (d), .flags = (fl), \
+      .valid = (v), .supp = (s), .note = (nt) }
 #define RC_F_STR(nm, buf, w) \
     { .name = (nm), .width = (w), .type = RC_FT_STR, .out = (buf), .cap = sizeof(buf) }
 

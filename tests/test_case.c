@@ -816,7 +816,7 @@ static void test_case_error_unknown_card(void)
     EXPECT_INPUT_ERROR("noid.rad", RUN_CARD "/RBODY\nx\n", 3, "card /RBODY", "field rbody_ID",
                        "positive integer id");
     EXPECT_INPUT_ERROR("unitid.rad", RUN_CARD "/FUNCT/1/2\nf\n0,0\n1,1\n", 3, "card /FUNCT/1/2",
-                       "field unit_ID", "not supported yet");
+                       "field unit_ID", "no /UNIT/2 in the deck");
 }
 
 static void test_case_error_duplicate_id(void)
@@ -926,9 +926,11 @@ static void test_case_error_surfaces(void)
 
 static void test_case_error_begin_units(void)
 {
+    /* work units other than the input units are reported, not an error;
+     * an unknown unit name is one */
     EXPECT_INPUT_ERROR("units.rad",
-                       "/BEGIN\nrun\n2022,0\nkg,m,s\nkg,mm,s\n" RUN_CARD, 5, "card /BEGIN",
-                       "field Work_length_unit", "unit conversion not supported yet");
+                       "/BEGIN\nrun\n2022,0\nkg,m,s\nkg,furlong,s\n" RUN_CARD, 5, "card /BEGIN",
+                       "field Work_length_unit", "expected a unit name", "\"furlong\"");
 }
 
 static void test_case_error_grav_bcs_inivel(void)
@@ -1062,7 +1064,7 @@ static void test_case_error_friction_header(void)
     EXPECT_INPUT_ERROR("fr.rad", "/FRICTION/5\nf\n3\n\n" RUN_CARD, 1, "card /FRICTION/5",
                        "expected 3 data lines", "found 2");
     EXPECT_INPUT_ERROR("fr.rad", "/FRICTION/5/2\nf\n\n\n\n" RUN_CARD, 1, "field unit_ID",
-                       "not supported yet");
+                       "no /UNIT/2");
     EXPECT_INPUT_ERROR("fr.rad", "/FRICTION\nf\n\n\n\n" RUN_CARD, 1, "field fric_ID",
                        "positive integer id");
     EXPECT_INPUT_ERROR("frdup.rad", FRIC("", "", "") FRIC("1", "", "") RUN_CARD, 6,

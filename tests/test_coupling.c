@@ -175,7 +175,7 @@ static void test_coupling_card_errors(void)
     EXPECT_ERROR(PRE "/COUPLING/SPRING\nt\n1,0\n0,0,0\n1,0,0\n,\n", 0, 15, "field cpl_ID",
                  "expected a positive integer id");
     EXPECT_ERROR(PRE "/COUPLING/SPRING/3/2\nt\n1,0\n0,0,0\n1,0,0\n,\n", 0, 15, "field unit_ID",
-                 "not supported yet");
+                 "no /UNIT/2");
     /* lines */
     EXPECT_ERROR(PRE "/COUPLING/SPRING/3\nt\n1,0\n0,0,0\n1,0,0\n", 0, 15, "card /COUPLING/SPRING/3",
                  "expected", "X0 Kd");

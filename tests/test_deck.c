@@ -12,6 +12,7 @@
 #include "case/case.h"
 #include "base/error.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -620,6 +621,146 @@ static void test_deck_friction_2019(void)
     rc_case_free(c);
 }
 
+/* ---- Units ------------------------------------------------------------------ */
+
+#define NEAR(a, b) (fabs((a) - (b)) <= 1e-12 * fabs(b))
+
+/* /BEGIN input units g, mm, ms: every value read is converted to SI. */
+static void test_deck_units_begin(void)
+{
+    const char *p = tmp_write("gmmms.rad",
+                              "/BEGIN\n"
+                              "grams, millimetres, milliseconds\n"
+                              "      2022         0\n"
+                              "                   g                  mm                  ms\n"
+                              "                  Mg                  mm                  ms\n"
+                              "/NODE\n"
+                              "         1                 0.0                 0.0               150.0\n"
+                              "/RBODY/1\n"
+                              "ball\n"
+                              "         1         0         0         0              1000.0         0\n"
+                              "           1000000.0           1000000.0           1000000.0\n"
+                              "                 0.0                 0.0                 0.0\n"
+                              "/SURF/ELLIPS/2\n"
+                              "ball surface\n"
+                              "         0         2         1\n"
+                              "                 0.0                 0.0               150.0\n"
+                              "                  50                  50                  50\n"
+                              "/INTER/TYPE6/1\n"
+                              "t6\n"
+                              "         2         3\n"
+                              "                   0                 0.3                   0                   0                   0\n"
+                              "                   0         0         0         0         0                   0                   0\n"
+                              "         1         0                   1                   1         0\n"
+                              "         0                          1000                   0\n"
+                              "                 2.0         0         0                   0\n"
+                              "/GRAV/1\n"
+                              "g\n"
+                              "         0         Z         0         0         0                                      -0.00981\n"
+                              "/INIVEL/TRA/2\n"
+                              "v\n"
+                              "                 1.0                 0.0                -2.0         0         0\n"
+                              "/INIVEL/ROT/3\n"
+                              "w\n"
+                              "                0.01                 0.0                 0.0         0         0\n"
+                              "/RUN\n"
+                              "              1000.0                 1.0\n");
+    rc_case *c = load_ok(p);
+    ENSURE(c != NULL);
+    if (!c) return;
+    ENSURE(strcmp(c->unit_mass, "kg") == 0 && strcmp(c->unit_length, "m") == 0 && strcmp(c->unit_time, "s") == 0);
+    ENSURE(c->nnode == 1 && NEAR(c->node[0].x[2], 0.15));
+    if (c->nrbody == 1) {
+        ENSURE(NEAR(c->rbody[0].mass, 1.0));
+        ENSURE(NEAR(c->rbody[0].J[0], 1e-3) && NEAR(c->rbody[0].J[2], 1e-3) && c->rbody[0].J[3] == 0);
+    }
+    if (c->nsurf == 1) ENSURE(NEAR(c->surf[0].c[2], 0.15) && NEAR(c->surf[0].abc[0], 0.05));
+    if (c->ntype6 == 1) {
+        const rc_case_type6 *t = &c->type6[0];
+        /* Stiff 1000 g/ms^2 = 1e6 N/m; Visc 2 g/ms = 2 N s/m; Fric stays;
+         * Ascalex 1 mm, FscaleId 1 g mm/ms^2 = 1 N; Tstop 1e30 ms */
+        ENSURE(NEAR(t->stiff, 1e6) && NEAR(t->visc, 2.0) && t->fric == 0.3 && NEAR(t->ascalex, 1e-3) &&
+               NEAR(t->fscaleld, 1.0) && NEAR(t->tstop, 1e27) && NEAR(t->ascalev, 1.0));
+    }
+    if (c->ngrav == 1) ENSURE(NEAR(c->grav[0].fscale, -9.81) && NEAR(c->grav[0].ascale, 1e-3));
+    if (c->ninivel == 2) {
+        ENSURE(NEAR(c->inivel[0].v[0], 1.0) && NEAR(c->inivel[0].v[2], -2.0)); /* mm/ms = m/s */
+        ENSURE(NEAR(c->inivel[1].v[0], 10.0));                                  /* 0.01 /ms */
+    }
+    ENSURE(NEAR(c->run.tend, 1.0) && NEAR(c->run.dtout, 1e-3));
+    /* the conversion is reported, and the unused work units */
+    ENSURE(NWARN(c, "gmmms.rad:4:", "input units", "mass g, length mm, time ms", "SI") == 1);
+    ENSURE(NWARN(c, "gmmms.rad:5:", "work units", "not used") == 1);
+    rc_case_free(c);
+}
+
+/* /UNIT/unit_ID and cards naming it in their header. */
+static void test_deck_units_unit_cards(void)
+{
+    const char *p = tmp_write("unitcards.rad",
+                              "/BEGIN\nold form\n        90         0\n"
+                              "/UNIT/2\n"
+                              "millimetres and tonnes\n"
+                              "#              MUNIT               LUNIT               TUNIT\n"
+                              "                   t                  mm                   s\n"
+                              "/UNIT/3\n"
+                              "as numbers\n"
+                              "                   1               0.001               0.001\n"
+                              "/NODE/2\n"
+                              "         1                 0.0                 0.0               150.0\n"
+                              "/RBODY/1/2\n"
+                              "ball\n"
+                              "         1         0         0         0               0.001         0\n"
+                              "                   1                   1                   1\n"
+                              "                 0.0                 0.0                 0.0\n"
+                              "/GRAV/1/3\n"
+                              "g\n"
+                              "         0         Z         0         0         0                                      -0.00981\n"
+                              "/RUN\n"
+                              "                 1.0\n");
+    rc_case *c = load_ok(p);
+    ENSURE(c != NULL);
+    if (!c) return;
+    ENSURE(c->invers == 90 && c->unit_mass[0] == 0); /* no /BEGIN units: recorded as undeclared */
+    if (c->nnode == 1) ENSURE(NEAR(c->node[0].x[2], 0.15));
+    if (c->nrbody == 1) ENSURE(NEAR(c->rbody[0].mass, 1.0) && NEAR(c->rbody[0].J[0], 1e-3));
+    if (c->ngrav == 1) ENSURE(NEAR(c->grav[0].fscale, -9.81));
+    ENSURE(c->run.tend == 1.0); /* /RUN in the /BEGIN system (none: as written) */
+    ENSURE(NWARN(c, "unitcards.rad:4:", "/UNIT/2", "mass t, length mm, time s", "unit_ID 2") == 1);
+    rc_case_free(c);
+
+    rc_error e;
+    /* an unknown unit, a missing /UNIT, a duplicate /UNIT */
+    ENSURE(load_fails(tmp_write("badunit.rad", "/UNIT/2\nu\n                  kg            parsec\n" RUN_CARD), &e));
+    ENSURE(strstr(e.msg, "badunit.rad:3: card /UNIT/2, field LUNIT") && strstr(e.msg, "\"parsec\""));
+    ENSURE(load_fails(tmp_write("nounit.rad", "/NODE/4\n1,0,0,0\n" RUN_CARD), &e));
+    ENSURE(strstr(e.msg, "nounit.rad:1: card /NODE/4, field unit_ID") && strstr(e.msg, "no /UNIT/4"));
+    ENSURE(load_fails(tmp_write("dupunit.rad", "/UNIT/2\nu\nkg,m,s\n/UNIT/2\nu\ng,mm,ms\n" RUN_CARD), &e));
+    ENSURE(strstr(e.msg, "dupunit.rad:4: card /UNIT/2, field unit_ID") && strstr(e.msg, "duplicate id 2"));
+}
+
+/* Values without a fixed dimension cannot be converted: errors naming them. */
+static void test_deck_units_refused(void)
+{
+    rc_error e;
+#define MM_DECK(body) "/BEGIN\nmm\n2022\nkg,mm,s\n" body RUN_CARD
+    /* /INTER/POWER K: N/m^m1 depends on m1 */
+    ENSURE(load_fails(tmp_write("upow.rad", MM_DECK("/INTER/POWER/1\np\n1,2\n1e6,1.5\n")), &e));
+    ENSURE(strstr(e.msg, "upow.rad:8: card /INTER/POWER/1, field K") && strstr(e.msg, "no fixed dimension"));
+    /* a spring's force table */
+    ENSURE(load_fails(tmp_write("uspr.rad", MM_DECK("/COUPLING/SPRING/1\ns\n0,1,3,9\n0,0,0\n1,0,0\n,\n")), &e));
+    ENSURE(strstr(e.msg, "uspr.rad:7: card /COUPLING/SPRING/1, field fct_ID") && strstr(e.msg, "not SI"));
+    /* /FRICTION Ifric 1 coefficients */
+    ENSURE(load_fails(tmp_write("ufr.rad", MM_DECK("/FRICTION/1\nf\n1\n1e-6\n0,0.3\n")), &e));
+    ENSURE(strstr(e.msg, "ufr.rad:8: card /FRICTION/1, field C1") && strstr(e.msg, "no fixed dimension"));
+    /* ...but Renard's velocities and a zero K convert */
+    rc_case *c = load_ok(tmp_write("ufr3.rad", MM_DECK("/FRICTION/1\nf\n3\n0.3,0.2,0.4,0.1,10\n200,0.3\n")));
+    ENSURE(c && c->nfriction == 1 && NEAR(c->friction[0].def.c[4], 0.01) && NEAR(c->friction[0].def.c[5], 0.2) &&
+           c->friction[0].def.c[0] == 0.3);
+    rc_case_free(c);
+#undef MM_DECK
+}
+
 void suite_deck(void);
 void suite_deck(void)
 {
@@ -637,5 +778,8 @@ void suite_deck(void)
     RUN_TEST(test_deck_loads_layouts_44);
     RUN_TEST(test_deck_inivel_2025);
     RUN_TEST(test_deck_friction_2019);
+    RUN_TEST(test_deck_units_begin);
+    RUN_TEST(test_deck_units_unit_cards);
+    RUN_TEST(test_deck_units_refused);
     tmp_cleanup();
 }

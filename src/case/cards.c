@@ -25,7 +25,8 @@ typedef enum {
     RC_CARD_BEGIN, RC_CARD_NODE, RC_CARD_GRNOD, RC_CARD_RBODY, RC_CARD_PLANE, RC_CARD_ELLIPS,
     RC_CARD_TYPE6, RC_CARD_FUNCT, RC_CARD_INIVEL, RC_CARD_GRAV, RC_CARD_BCS, RC_CARD_RUN,
     RC_CARD_SOLVER, RC_CARD_CPL_SPRING, RC_CARD_CPL_CATENARY, RC_CARD_PART, RC_CARD_GRPART,
-    RC_CARD_FRICTION, RC_CARD_FRIC_ORIENT, RC_CARD_POWER, RC_CARD_CYL, RC_CARD_BOX, RC_CARD_IMPVEL
+    RC_CARD_FRICTION, RC_CARD_FRIC_ORIENT, RC_CARD_POWER, RC_CARD_CYL, RC_CARD_BOX, RC_CARD_IMPVEL,
+    RC_CARD_UNIT
 } rc_card_kind;
 
 /* Supported cards; a family (kw with a sub) lists each subtype. */
@@ -45,6 +46,7 @@ static const struct {
     {"FRICTION", NULL, RC_CARD_FRICTION}, {"FRIC_ORIENT", NULL, RC_CARD_FRIC_ORIENT},
     {"INTER", "POWER", RC_CARD_POWER}, {"SURF", "CYL", RC_CARD_CYL},
     {"SURF", "BOX", RC_CARD_BOX},      {"IMPVEL", NULL, RC_CARD_IMPVEL},
+    {"UNIT", NULL, RC_CARD_UNIT},
 };
 
 /* Radioss cards without meaning for rigid bodies: skipped with a warning. */
@@ -58,7 +60,7 @@ static const char *const rc_explicit[] = {
     "MON", "PARITH", "CHKPT", "STATE", "DYNAIN", "ADMAS", "KEREL", "DYREL", "ADYREL", "SHFRA",
     "CAA", "MADYMO", "INSPIRE", "NEGVOL", "MSTOP", "NSTOP"};
 /* Radioss cards ricochet plans to support: an error until then. */
-static const char *const rc_planned[] = {"UNIT", "SKEW", "SENSOR"};
+static const char *const rc_planned[] = {"SKEW", "SENSOR"};
 
 static int rc_in_list(const char *kw, const char *const *list, int n)
 {
@@ -123,6 +125,7 @@ static rc_status rc_card_call(rc_reader *rd, const rc_block *b, rc_card_kind kin
     case RC_CARD_CYL: return rc_card_cyl(rd, b);
     case RC_CARD_BOX: return rc_card_box(rd, b);
     case RC_CARD_IMPVEL: return rc_card_impvel(rd, b);
+    case RC_CARD_UNIT: return rc_card_unit(rd, b);
     }
     return RC_SET(rd->err, RC_EINTERNAL, "unknown card kind %d", (int)kind);
 }

@@ -43,6 +43,28 @@ static rc_status rc_single(rc_reader *rd, const rc_block *b, const rc_line **slo
  * /BEGIN
  * ====================================================================== */
 
+/* A line of three unit names (mass, length, time; 20 characters each) into
+ * `u` and their values in kg, m, s into f (1 when blank). `ln` NULL: all
+ * blank. */
+static rc_status rc_unit_line(rc_reader *rd, const rc_block *b, const rc_line *ln, char u[3][21],
+                              const char *const nm[3], double f[3])
+{
+    static const rc_line blank = {"", 0, {NULL, 0}};
+    rc_field l[] = {RC_F_STR(nm[0], u[0], 20), RC_F_STR(nm[1], u[1], 20), RC_F_STR(nm[2], u[2], 20)};
+    l[0].cap = l[1].cap = l[2].cap = 21;
+    rc_status st = rc_parse_line(rd, b, ln ? ln : &blank, l, 3);
+    if (st) return st;
+    for (int k = 0; k < 3; k++) {
+        f[k] = 1.0;
+        if (u[k][0] && !rc_unit_factor(k, u[k], &f[k]))
+            return rc_case_fail(rd, &ln->loc, b->name, nm[k],
+                                "expected a unit name (%s) or a positive number (the unit in %s), "
+                                "got \"%s\"",
+                                rc_unit_names(k), k == 0 ? "kg" : k == 1 ? "m" : "s", u[k]);
+    }
+    return RC_OK;
+}
+
 /* /BEGIN: run name; Invers Irun; input units; work units. Every line is
  * optional: the Radioss 5.1 and 9.0 form stops after the version line (the
  * units then come from /UNIT cards), an empty block gives no name, version
@@ -73,13 +95,7 @@ rc_status rc_card_begin(rc_reader *rd, const rc_block *b)
 
     /* the version (its layouts), input units, work units */
     rc_field l1[] = {RC_F_INT("Invers", &invers, 0, RC_FF_NONNEG), RC_F_INT("Irun", NULL, 0, 0)};
-    rc_field l2[] = {RC_F_STR(in_nm[0], in[0], 20), RC_F_STR(in_nm[1], in[1], 20),
-                     RC_F_STR(in_nm[2], in[2], 20)};
-    rc_field l3[] = {RC_F_STR(wk_nm[0], wk[0], 20), RC_F_STR(wk_nm[1], wk[1], 20),
-                     RC_F_STR(wk_nm[2], wk[2], 20)};
     if (nd >= 1 && (st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
-    if (nd >= 2 && (st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
-    if (nd >= 3 && (st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
     c->invers = invers;
     if (invers != 0 && rc_layout_known(invers) == 0 &&
         (st = rc_case_warn(rd, &b->lines[1].loc,
@@ -89,17 +105,61 @@ rc_status rc_card_begin(rc_reader *rd, const rc_block *b)
                            b->name, invers)))
         return st;
 
-    /* work units must be blank or the input units: no conversion yet */
-    for (int k = 0; k < 3; k++)
-        if (wk[k][0] && strcmp(wk[k], in[k]) != 0)
-            return rc_case_fail(rd, &b->lines[3].loc, b->name, wk_nm[k],
-                                "expected blank or \"%s\" (the input unit), got \"%s\": unit "
-                                "conversion not supported yet",
-                                in[k], wk[k]);
-    memcpy(c->unit_mass, in[0], sizeof in[0]);
-    memcpy(c->unit_length, in[1], sizeof in[1]);
-    memcpy(c->unit_time, in[2], sizeof in[2]);
+    /* the input units: every value read is converted to SI (ricochet
+     * computes in kg, m, s); the work units are checked and reported only */
+    double fi[3], fw[3];
+    if ((st = rc_unit_line(rd, b, nd >= 2 ? &b->lines[2] : NULL, in, in_nm, fi))) return st;
+    if ((st = rc_unit_line(rd, b, nd >= 3 ? &b->lines[3] : NULL, wk, wk_nm, fw))) return st;
+    memcpy(rd->begin_units, fi, sizeof fi);
+    if (in[0][0] || in[1][0] || in[2][0]) {
+        /* the case holds SI values */
+        strcpy(c->unit_mass, "kg");
+        strcpy(c->unit_length, "m");
+        strcpy(c->unit_time, "s");
+    }
+    if ((fi[0] != 1 || fi[1] != 1 || fi[2] != 1) &&
+        (st = rc_case_warn(rd, &b->lines[2].loc,
+                            "units: the input units of %s (mass %s, length %s, time %s) are "
+                            "converted to SI (kg, m, s): factors %.15g, %.15g, %.15g",
+                            b->name, in[0][0] ? in[0] : "kg", in[1][0] ? in[1] : "m",
+                            in[2][0] ? in[2] : "s", fi[0], fi[1], fi[2])))
+        return st;
+    if (nd >= 3 && (fw[0] != 1 || fw[1] != 1 || fw[2] != 1))
+        return rc_case_warn(rd, &b->lines[3].loc,
+                            "units: the work units of %s (%s, %s, %s) are not used: ricochet "
+                            "computes and writes its results in SI (kg, m, s)",
+                            b->name, wk[0], wk[1], wk[2]);
     return RC_OK;
+}
+
+/* /UNIT/unit_ID: title; MUNIT LUNIT TUNIT (20 characters each). The
+ * values of every card whose header names unit_ID are converted to SI. */
+rc_status rc_card_unit(rc_reader *rd, const rc_block *b)
+{
+    static const char *const nm[3] = {"MUNIT", "LUNIT", "TUNIT"};
+    char title[RC_CASE_TITLE_MAX + 1], u[3][21] = {"", "", ""};
+    double f[3];
+    int nd;
+    rc_status st;
+    if ((st = rc_header(rd, b, 1, RC_ID_REQUIRED, "unit_ID", "/UNIT/unit_ID"))) return st;
+    for (int i = 0; i < rd->nunits; i++)
+        if (rd->units[i].id == b->id)
+            return rc_case_fail(rd, &b->hdr->loc, b->name, "unit_ID",
+                                "duplicate id %d, first defined at %s:%d", b->id,
+                                rd->units[i].loc.file, rd->units[i].loc.line);
+    if ((st = rc_card_lines(rd, b, title, 1, 1, "MUNIT LUNIT TUNIT", &nd))) return st;
+    if ((st = rc_unit_line(rd, b, &b->lines[1], u, nm, f))) return st;
+    RC_GROW(rd, rd->units, rd->capunits, rd->nunits);
+    struct rc_unitsys *us = &rd->units[rd->nunits++];
+    us->id = b->id;
+    memcpy(us->f, f, sizeof f);
+    us->loc = b->hdr->loc;
+    return rc_case_warn(rd, &b->hdr->loc,
+                        "units: card %s (mass %s, length %s, time %s): the values of the cards "
+                        "whose header names unit_ID %d are converted to SI (kg, m, s): factors "
+                        "%.15g, %.15g, %.15g",
+                        b->name, u[0][0] ? u[0] : "kg", u[1][0] ? u[1] : "m", u[2][0] ? u[2] : "s",
+                        b->id, f[0], f[1], f[2]);
 }
 
 /* ======================================================================
@@ -115,8 +175,8 @@ rc_status rc_card_run(rc_reader *rd, const rc_block *b)
     if ((st = rc_header(rd, b, 1, RC_ID_OPTIONAL, NULL, "/RUN or /RUN/1"))) return st;
     if ((st = rc_single(rd, b, &rd->run_hdr))) return st;
     if ((st = rc_card_lines(rd, b, NULL, 1, 1, "Tend Dt_out Ev_state", &nd))) return st;
-    rc_field f[] = {RC_F_REAL("Tend", &r->tend, 0, RC_FF_POS),
-                    RC_F_REAL("Dt_out", &r->dtout, 0, RC_FF_NONNEG),
+    rc_field f[] = {RC_F_REALD("Tend", &r->tend, 0, RC_FF_POS, RC_D_T),
+                    RC_F_REALD("Dt_out", &r->dtout, 0, RC_FF_NONNEG, RC_D_T),
                     RC_F_SET("Ev_state", &r->ev_state, 0, 0, RC_BIT(0) | RC_BIT(1) | RC_BIT(2), 0, NULL)};
     if ((st = rc_parse_line(rd, b, &b->lines[0], f, RC_NF(f)))) return st;
     /* output interval: blank or 0 means Tend/100 */
@@ -171,7 +231,7 @@ rc_status rc_card_engine_run(rc_reader *rd, const rc_block *b)
                             rd->engine_run_hdr->loc.file, rd->engine_run_hdr->loc.line);
     rd->engine_run_hdr = b->hdr;
     if ((st = rc_card_lines(rd, b, NULL, 1, 1, "Tstop", &nd))) return st;
-    rc_field f[] = {RC_F_REAL("Tstop", &rd->engine_tstop, 0, RC_FF_POS)};
+    rc_field f[] = {RC_F_REALD("Tstop", &rd->engine_tstop, 0, RC_FF_POS, RC_D_T)};
     char buf[RC_CASE_MAX_LINE + 1];
     rc_line tmp;
     return rc_parse_line(rd, b, rc_engine_line(&b->lines[0], buf, &tmp), f, RC_NF(f));
@@ -185,7 +245,7 @@ rc_status rc_card_anim_dt(rc_reader *rd, const rc_block *b)
     double tstart = 0;
     rc_status st;
     if ((st = rc_card_lines(rd, b, NULL, 1, 1, "Tstart Tfreq", &nd))) return st;
-    rc_field f[] = {RC_F_REAL("Tstart", &tstart, 0, 0), RC_F_REAL("Tfreq", &rd->anim_dt, 0, RC_FF_NONNEG)};
+    rc_field f[] = {RC_F_REALD("Tstart", &tstart, 0, 0, RC_D_T), RC_F_REALD("Tfreq", &rd->anim_dt, 0, RC_FF_NONNEG, RC_D_T)};
     char buf[RC_CASE_MAX_LINE + 1];
     rc_line tmp;
     if ((st = rc_parse_line(rd, b, rc_engine_line(&b->lines[0], buf, &tmp), f, RC_NF(f)))) return st;
@@ -245,14 +305,14 @@ rc_status rc_card_solver(rc_reader *rd, const rc_block *b)
                  "(2 = IDA is planned)"),
         RC_F_SET("Max_order", &s->max_order, RC_DEF_MAX_ORDER, RC_FF_ZDEF, 0x3Eu, 0, NULL),
         RC_F_INT("Max_steps", &steps, RC_DEF_MAX_STEPS, zp),
-        RC_F_REAL("Rtol", &s->rtol, RC_DEF_RTOL, zp),
-        RC_F_REAL("Hmax", &s->hmax, 0, RC_FF_NONNEG),
-        RC_F_REAL("H0", &s->h0, 0, RC_FF_NONNEG)};
-    rc_field l2[] = {RC_F_REAL("Atol_pos", &s->atol_pos, RC_DEF_ATOL_POS, RC_FF_ZDEF | RC_FF_NONNEG),
-                     RC_F_REAL("Atol_quat", &s->atol_quat, RC_DEF_ATOL_QUAT, RC_FF_ZDEF | RC_FF_NONNEG),
-                     RC_F_REAL("Atol_vel", &s->atol_vel, RC_DEF_ATOL_VEL, RC_FF_ZDEF | RC_FF_NONNEG),
-                     RC_F_REAL("Atol_omega", &s->atol_omega, RC_DEF_ATOL_OMEGA, RC_FF_ZDEF | RC_FF_NONNEG)};
-    rc_field l3[] = {RC_F_REAL("Atol_energy", &s->atol_energy, RC_DEF_ATOL_ENERGY, RC_FF_ZDEF | RC_FF_NONNEG)};
+        RC_F_REALD("Rtol", &s->rtol, RC_DEF_RTOL, zp, RC_D_NONE),
+        RC_F_REALD("Hmax", &s->hmax, 0, RC_FF_NONNEG, RC_D_T),
+        RC_F_REALD("H0", &s->h0, 0, RC_FF_NONNEG, RC_D_T)};
+    rc_field l2[] = {RC_F_REALD("Atol_pos", &s->atol_pos, RC_DEF_ATOL_POS, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_L),
+                     RC_F_REALD("Atol_quat", &s->atol_quat, RC_DEF_ATOL_QUAT, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
+                     RC_F_REALD("Atol_vel", &s->atol_vel, RC_DEF_ATOL_VEL, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_V),
+                     RC_F_REALD("Atol_omega", &s->atol_omega, RC_DEF_ATOL_OMEGA, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_W)};
+    rc_field l3[] = {RC_F_REALD("Atol_energy", &s->atol_energy, RC_DEF_ATOL_ENERGY, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_E)};
     if ((st = rc_parse_line(rd, b, &b->lines[0], l1, RC_NF(l1)))) return st;
     if (nd >= 2 && (st = rc_parse_line(rd, b, &b->lines[1], l2, RC_NF(l2)))) return st;
     if (nd >= 3 && (st = rc_parse_line(rd, b, &b->lines[2], l3, RC_NF(l3)))) return st;

@@ -101,6 +101,12 @@ typedef struct rc_reader {
     const rc_line *anim_dt_hdr;               /* engine /ANIM/DT            */
     double anim_dt;                           /* its Tfreq [s]              */
     int engine_pass;                          /* lexing the engine file     */
+    /* unit systems: /BEGIN's input units (index -1) and the /UNIT cards */
+    double begin_units[3];                    /* kg, m, s values; 1 if blank */
+    struct rc_unitsys { int id; double f[3]; rc_loc loc; } *units;
+    int nunits, capunits;
+    const double *cur_units;                  /* the card being read's system */
+    int converted;                            /* some system is not SI       */
     int nerrors;                              /* input errors so far        */
     char *more;                               /* errors after the first, "\n"
                                                  before each (malloc)       */
@@ -129,6 +135,7 @@ typedef struct rc_field {
     unsigned flags;
     unsigned valid;    /* ints: bit k set = k allowed (0: no set check) */
     unsigned supp;     /* ints: bit k set = k supported (0: all) */
+    int dim;           /* reals: RC_DIM of the value (0: unknown) */
     const char *note;  /* explains a "not supported yet" */
     /* filled by rc_parse_line */
     int blank;
@@ -145,12 +152,16 @@ typedef struct rc_field {
     { .name = (nm), .width = 10, .type = RC_FT_INT, .out = (p), .def = (d), .flags = (fl), \
       .valid = (v), .supp = (s), .note = (nt) }
 #define RC_F_SKIP(w) { .name = "blank", .width = (w), .type = RC_FT_SKIP }
+/* A real with its dimension (converted from the card's unit system to SI). */
+#define RC_F_REALD(nm, p, d, fl, dm) \
+    { .name = (nm), .width = 20, .type = RC_FT_REAL, .out = (p), .def = (d), .flags = (fl), .dim = (dm) }
 /* The same with a width of the older layouts (8-character integers,
  * 16-character reals of Radioss 4.x). */
 #define RC_F_INTW(nm, p, d, fl, w) \
     { .name = (nm), .width = (w), .type = RC_FT_INT, .out = (p), .def = (d), .flags = (fl) }
-#define RC_F_REALW(nm, p, d, fl, w) \
-    { .name = (nm), .width = (w), .type = RC_FT_REAL, .out = (p), .def = (d), .flags = (fl) }
+#define RC_F_REALW(nm, p, d, fl, w, dm)                                                 \
+    { .name = (nm), .width = (w), .type = RC_FT_REAL, .out = (p), .def = (d), .flags = (fl), \
+      .dim = (dm) }
 #define RC_F_SETW(nm, p, d, fl, v, s, nt, w)                                          \
     { .name = (nm), .width = (w), .type = RC_FT_INT, .out = (p), .def = (d), .flags = (fl), \
       .valid = (v), .supp = (s), .note = (nt) }
@@ -200,6 +211,37 @@ rc_status rc_note_id(rc_reader *rd, rc_id_kind kind, int id, const rc_loc *loc,
 /* Append a warning "FILE:LINE: msg" to c->warnings. */
 rc_status rc_case_warn(rc_reader *rd, const rc_loc *loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+
+/* ---- Units (units.c) -------------------------------------------------- */
+
+/* Dimension of a real field: exponents of mass, length, time (-8..7).
+ * 0 is "unknown" (a value that is not 0 cannot be converted). */
+#define RC_DIM(m, l, t) ((1 << 12) | (((m) + 8) << 8) | (((l) + 8) << 4) | ((t) + 8))
+#define RC_D_NONE RC_DIM(0, 0, 0)   /* dimensionless, angles in degrees */
+#define RC_D_M RC_DIM(1, 0, 0)      /* kg */
+#define RC_D_L RC_DIM(0, 1, 0)      /* m */
+#define RC_D_T RC_DIM(0, 0, 1)      /* s */
+#define RC_D_AREA RC_DIM(0, 2, 0)   /* m^2 */
+#define RC_D_V RC_DIM(0, 1, -1)     /* m/s */
+#define RC_D_W RC_DIM(0, 0, -1)     /* rad/s, Hz */
+#define RC_D_ACC RC_DIM(0, 1, -2)   /* m/s^2 */
+#define RC_D_F RC_DIM(1, 1, -2)     /* N */
+#define RC_D_K RC_DIM(1, 0, -2)     /* N/m */
+#define RC_D_K2 RC_DIM(1, -1, -2)   /* N/m^2 */
+#define RC_D_K3 RC_DIM(1, -2, -2)   /* N/m^3 */
+#define RC_D_C RC_DIM(1, 0, -1)     /* N s/m */
+#define RC_D_J RC_DIM(1, 2, 0)      /* kg m^2 */
+#define RC_D_E RC_DIM(1, 2, -2)     /* J */
+#define RC_D_LIN RC_DIM(1, -1, 0)   /* kg/m */
+
+/* Value in kg (kind 0), m (1) or s (2) of a unit name of /BEGIN or /UNIT
+ * (or of a positive number, the unit's value in SI). 0: unknown name. */
+int rc_unit_factor(int kind, const char *name, double *si);
+/* The accepted names of a kind, for messages. */
+const char *rc_unit_names(int kind);
+/* Factor from a unit system (kg, m, s values of its units) to SI for a
+ * dimension. */
+double rc_dim_scale(int dim, const double f[3]);
 
 /* ---- Layouts by version (fields.c) ------------------------------------ */
 
@@ -271,6 +313,10 @@ rc_status rc_card_solver(rc_reader *rd, const rc_block *b);
  * (Tstop) and /ANIM/DT (Tstart Tfreq). */
 rc_status rc_card_engine_run(rc_reader *rd, const rc_block *b);
 rc_status rc_card_anim_dt(rc_reader *rd, const rc_block *b);
+/* /UNIT/unit_ID (cards_run.c): title; MUNIT LUNIT TUNIT. */
+rc_status rc_card_unit(rc_reader *rd, const rc_block *b);
+/* 1 when the card being read has a unit system other than SI. */
+int rc_units_convert(const rc_reader *rd);
 /* Deck-level checks after the last card (/RUN present, defaults). */
 rc_status rc_cards_finish(rc_reader *rd);
 /* Defaults of the optional cards, set before reading. */

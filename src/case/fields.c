@@ -296,6 +296,26 @@ static rc_status rc_check_real(rc_reader *rd, const rc_block *b, const rc_line *
     return RC_OK;
 }
 
+/* Dimensions of the fields of the cards whose tables do not give one
+ * (their fields use RC_F_REAL). */
+static int rc_known_dim(const rc_block *b, const char *name)
+{
+    static const struct { const char *kw, *name; int dim; } t[] = {
+        {"NODE", "X", RC_D_L},     {"NODE", "Y", RC_D_L},     {"NODE", "Z", RC_D_L},
+        {"RBODY", "Mass", RC_D_M}, {"RBODY", "Jxx", RC_D_J},  {"RBODY", "Jyy", RC_D_J},
+        {"RBODY", "Jzz", RC_D_J},  {"RBODY", "Jxy", RC_D_J},  {"RBODY", "Jyz", RC_D_J},
+        {"RBODY", "Jxz", RC_D_J},  {"PART", "Thick", RC_D_L}};
+    for (size_t i = 0; i < sizeof t / sizeof t[0]; i++)
+        if (strcmp(b->kw[0], t[i].kw) == 0 && strcmp(name, t[i].name) == 0) return t[i].dim;
+    return 0;
+}
+
+int rc_units_convert(const rc_reader *rd)
+{
+    const double *u = rd->cur_units;
+    return u && (u[0] != 1 || u[1] != 1 || u[2] != 1);
+}
+
 /* Parse the text s[0..n) (trimmed) of one field, default it, check it and
  * store it. */
 static rc_status rc_parse_field(rc_reader *rd, const rc_block *b, const rc_line *ln, rc_field *f,
@@ -336,6 +356,21 @@ static rc_status rc_parse_field(rc_reader *rd, const rc_block *b, const rc_line 
             return RC_FIELD_FAIL(rd, b, ln, f, "expected a finite real number, got %s", f->got);
         if (f->blank || (dv == 0 && (f->flags & RC_FF_ZDEF))) dv = f->def;
         if ((r = rc_check_real(rd, b, ln, f, dv))) return (rc_status)r;
+        /* into SI from the card's unit system (default values too: they are
+         * in the deck's units, as in Radioss) */
+        if (rc_units_convert(rd) && dv != 0) {
+            int dim = f->dim ? f->dim : rc_known_dim(b, f->name);
+            if (!dim)
+                return RC_FIELD_FAIL(rd, b, ln, f,
+                                     "the deck's units are not SI and this field has no fixed "
+                                     "dimension (it depends on other fields): write it in kg, m, s "
+                                     "(a /UNIT card of kg m s for this card), got %s",
+                                     f->got);
+            dv *= rc_dim_scale(dim, rd->cur_units);
+            if (!isfinite(dv))
+                return RC_FIELD_FAIL(rd, b, ln, f, "the value overflows when converted to SI, got %s",
+                                     f->got);
+        }
         if (f->out) *(double *)f->out = dv;
         return RC_OK;
     }
@@ -471,13 +506,19 @@ rc_status rc_header(rc_reader *rd, const rc_block *b, int nkw, rc_id_mode mode,
     if (mode == RC_ID_OPTIONAL && b->has_id && b->id <= 0)
         return rc_case_fail(rd, loc, b->name, NULL, "expected a positive id or none (%s)",
                             usage);
-    /* a unit system other than the deck's */
+    /* the card's unit system: /BEGIN's, or a /UNIT card's */
     int unit = mode == RC_ID_UNIT ? b->id : b->unit_id;
-    if (unit != 0)
-        return rc_case_fail(rd, loc, b->name, "unit_ID",
-                            "expected 0 or nothing, got %d: unit systems (/UNIT) not supported yet",
-                            unit);
-    return RC_OK;
+    rd->cur_units = rd->begin_units;
+    if (unit == 0) return RC_OK;
+    for (int i = 0; i < rd->nunits; i++)
+        if (rd->units[i].id == unit) {
+            rd->cur_units = rd->units[i].f;
+            return RC_OK;
+        }
+    return rc_case_fail(rd, loc, b->name, "unit_ID",
+                        "expected 0, nothing or the id of a /UNIT card, got %d: no /UNIT/%d in "
+                        "the deck",
+                        unit, unit);
 }
 
 /* Lines of a card of variable length: title, then any number of lines

@@ -389,6 +389,7 @@ static int rc_block_is(const rc_block *b, const char *kw)
 static rc_status rc_read_one(rc_reader *rd, const rc_block *b)
 {
     rc_status st;
+    rd->cur_units = rd->begin_units; /* until the card's header says otherwise */
     if (b->bad && b->nkw == 0)
         st = rc_case_fail(rd, &b->hdr->loc, b->name, NULL, "malformed card header: %s", b->bad);
     else st = rc_card_dispatch(rd, b);
@@ -520,6 +521,7 @@ static void rc_reader_release(rc_reader *rd)
     free(rd->bufs);
     free(rd->lines);
     for (int k = 0; k < RC_IDK_COUNT; k++) free(rd->ids[k]);
+    free(rd->units);
 }
 
 rc_status rc_case_load(const char *path, rc_case **out, rc_error *err)
@@ -530,6 +532,8 @@ rc_status rc_case_load(const char *path, rc_case **out, rc_error *err)
     if (out) *out = NULL;
     if (!path || !out) RC_RAISE(err, RC_EINTERNAL, "rc_case_load: NULL argument");
     rd.err = err;
+    rd.begin_units[0] = rd.begin_units[1] = rd.begin_units[2] = 1.0;
+    rd.cur_units = rd.begin_units;
     /* the case, with the defaults of optional cards */
     if (!(rd.c = calloc(1, sizeof *rd.c))) RC_RAISE(err, RC_ENOMEM, "out of memory");
     rc_cards_defaults(rd.c);

@@ -2,9 +2,9 @@
  * ricochet: stiff rigid-body contact, integrated implicitly with error control.
  *
  * Public API. This header includes only the C library: no SUNDIALS, GSL or
- * netCDF type appears here. Units are SI-consistent: whatever consistent
- * system the case file uses (the one named in /BEGIN) is used throughout;
- * the comments below give SI units for orientation.
+ * netCDF type appears here. Units are SI: a case whose /BEGIN or /UNIT
+ * cards name other units is converted to SI when read; a case naming no
+ * units is used as written (one consistent system).
  *
  * Pipeline:  rc_case_load  ->  rc_model_compile  ->  rc_run
  */

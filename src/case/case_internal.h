@@ -5,11 +5,14 @@
  * Nothing outside src/case includes it.
  *
  * Reading happens in three passes:
- *  1. lex: every file (main + #include) is read whole, split into lines,
- *     comments dropped, and appended to one flat list of lines, each with its
- *     file:line; /END stops the lexing.
+ *  1. lex: every file (main + #include, then a Radioss engine file
+ *     NAME_0001.rad next to a starter NAME_0000.rad) is read whole, split
+ *     into lines, comments dropped, and appended to one flat list of lines,
+ *     each with its file:line; /END or #enddata ends the file it is in.
  *  2. blocks: the flat list is cut at header lines ("/KEYWORD...") into
- *     blocks; each block is dispatched to its card function.
+ *     blocks; /BEGIN and /UNIT are read first (version and units), then
+ *     each other block is dispatched to its card function. An input error
+ *     ends its card; reading goes on up to RC_CASE_MAX_ERRORS errors.
  *  3. checks over the whole deck: duplicate ids, the required /RUN.
  *
  * Data lines are parsed through field tables (rc_field): each card function

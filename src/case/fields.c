@@ -2,9 +2,10 @@
  * Services of the case stage shared by the reader and the card functions:
  * error and warning messages with file:line, growable arrays, block and
  * title helpers, number and field parsing (the field tables of
- * case_internal.h), card headers, duplicate-id notes. The lowest file of
- * src/case: it calls nothing else in the stage (reader.c reads the files
- * and blocks, cards.c dispatches them to the card families cards_*.c).
+ * case_internal.h), card headers and their unit systems, layouts by
+ * version, the conversion of values to SI, duplicate-id notes. It calls
+ * only units.c in the stage (reader.c reads the files and blocks, cards.c
+ * dispatches them to the card families cards_*.c).
  */
 #include "case/case_internal.h"
 #include "base/error.h"

@@ -119,10 +119,10 @@ rc_status rc_card_begin(rc_reader *rd, const rc_block *b)
     }
     if ((fi[0] != 1 || fi[1] != 1 || fi[2] != 1) &&
         (st = rc_case_warn(rd, &b->lines[2].loc,
-                            "units: the input units of %s (mass %s, length %s, time %s) are "
-                            "converted to SI (kg, m, s): factors %.15g, %.15g, %.15g",
-                            b->name, in[0][0] ? in[0] : "kg", in[1][0] ? in[1] : "m",
-                            in[2][0] ? in[2] : "s", fi[0], fi[1], fi[2])))
+                           "units: the input units of %s (mass %s, length %s, time %s) are "
+                           "converted to SI (kg, m, s): factors %.15g, %.15g, %.15g",
+                           b->name, in[0][0] ? in[0] : "kg", in[1][0] ? in[1] : "m",
+                           in[2][0] ? in[2] : "s", fi[0], fi[1], fi[2])))
         return st;
     if (nd >= 3 && (fw[0] != 1 || fw[1] != 1 || fw[2] != 1))
         return rc_case_warn(rd, &b->lines[3].loc,

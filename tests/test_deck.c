@@ -739,6 +739,40 @@ static void test_deck_units_unit_cards(void)
     ENSURE(strstr(e.msg, "dupunit.rad:4: card /UNIT/2, field unit_ID") && strstr(e.msg, "duplicate id 2"));
 }
 
+/* Radioss 5.1 and 9.0: /BEGIN of two lines, the units in /UNIT/kind/name. */
+static void test_deck_units_90_form(void)
+{
+    const char *p = tmp_write("units90.rad",
+                              "/BEGIN\n"
+                              "a 9.0 deck\n"
+                              "        90         0\n"
+                              "/UNIT/LENGTH/mm\n"
+                              "/UNIT/MASS/Mg\n"
+                              "/UNIT/TIME/ms\n"
+                              "/NODE\n"
+                              "         1                 0.0                 0.0               150.0\n"
+                              "/RBODY/1\n"
+                              "ball\n"
+                              "         1         0         0         0               0.001         0\n"
+                              "                   1                   1                   1\n"
+                              "                 0.0                 0.0                 0.0\n"
+                              "/RUN\n"
+                              "              1000.0\n");
+    rc_case *c = load_ok(p);
+    ENSURE(c != NULL);
+    if (!c) return;
+    ENSURE(c->invers == 90 && strcmp(c->unit_length, "m") == 0);
+    if (c->nnode == 1) ENSURE(NEAR(c->node[0].x[2], 0.15));
+    /* 1e-3 Mg = 1 kg; 1 Mg mm^2 = 1e-3 kg m^2 */
+    if (c->nrbody == 1) ENSURE(NEAR(c->rbody[0].mass, 1.0) && NEAR(c->rbody[0].J[0], 1e-3));
+    ENSURE(NEAR(c->run.tend, 1.0));
+    ENSURE(NWARN(c, "units90.rad:5:", "/UNIT/MASS/Mg", "mass unit Mg", "1000") == 1);
+    rc_case_free(c);
+    rc_error e;
+    ENSURE(load_fails(tmp_write("units90b.rad", "/BEGIN\nx\n90\n/UNIT/LENGTH/league\n" RUN_CARD), &e));
+    ENSURE(strstr(e.msg, "units90b.rad:4: card /UNIT/LENGTH/league, field LENGTH") && strstr(e.msg, "\"league\""));
+}
+
 /* Values without a fixed dimension cannot be converted: errors naming them. */
 static void test_deck_units_refused(void)
 {
@@ -780,6 +814,7 @@ void suite_deck(void)
     RUN_TEST(test_deck_friction_2019);
     RUN_TEST(test_deck_units_begin);
     RUN_TEST(test_deck_units_unit_cards);
+    RUN_TEST(test_deck_units_90_form);
     RUN_TEST(test_deck_units_refused);
     tmp_cleanup();
 }

@@ -137,10 +137,48 @@ rc_status rc_card_begin(rc_reader *rd, const rc_block *b)
 rc_status rc_card_unit(rc_reader *rd, const rc_block *b)
 {
     static const char *const nm[3] = {"MUNIT", "LUNIT", "TUNIT"};
+    static const char *const kinds[3] = {"MASS", "LENGTH", "TIME"};
     char title[RC_CASE_TITLE_MAX + 1], u[3][21] = {"", "", ""};
     double f[3];
     int nd;
     rc_status st;
+    /* Radioss 5.1 and 9.0: /UNIT/MASS/name, /UNIT/LENGTH/name,
+     * /UNIT/TIME/name (no line) give the deck's units */
+    for (int k = 0; b->nkw >= 2 && k < 3; k++) {
+        if (strcmp(b->kw[1], kinds[k]) != 0) continue;
+        const char *p = strchr(b->hdr->text + 1, '/');
+        p = p ? strchr(p + 1, '/') : NULL;
+        char name[21] = "";
+        size_t n = 0;
+        if (p) {
+            p++;
+            while (*p == ' ') p++;
+            while (p[n] && p[n] != '/' && p[n] != ' ' && n < sizeof name - 1) n++;
+            memcpy(name, p, n);
+            name[n] = '\0';
+        }
+        double fk;
+        if (!name[0] || !rc_unit_factor(k, name, &fk))
+            return rc_case_fail(rd, &b->hdr->loc, b->name, kinds[k],
+                                "expected /UNIT/%s/name with a unit name (%s) or a positive "
+                                "number, got \"%s\"",
+                                kinds[k], rc_unit_names(k), name);
+        if ((st = rc_card_lines(rd, b, NULL, 0, 0, "no line", &nd))) return st;
+        rd->begin_units[k] = fk;
+        strcpy(rd->c->unit_mass, "kg");
+        strcpy(rd->c->unit_length, "m");
+        strcpy(rd->c->unit_time, "s");
+        if (rd->c->invers > 90 &&
+            (st = rc_case_warn(rd, &b->hdr->loc,
+                               "card %s: a Radioss 5.1/9.0 form, read although /BEGIN gives "
+                               "version %d",
+                               b->name, rd->c->invers)))
+            return st;
+        return rc_case_warn(rd, &b->hdr->loc,
+                            "units: card %s: the deck's %s unit %s is converted to SI (factor "
+                            "%.15g)",
+                            b->name, k == 0 ? "mass" : k == 1 ? "length" : "time", name, fk);
+    }
     if ((st = rc_header(rd, b, 1, RC_ID_REQUIRED, "unit_ID", "/UNIT/unit_ID"))) return st;
     for (int i = 0; i < rd->nunits; i++)
         if (rd->units[i].id == b->id)

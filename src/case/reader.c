@@ -397,9 +397,9 @@ static rc_status rc_read_one(rc_reader *rd, const rc_block *b)
     return rd->nerrors > RC_CASE_MAX_ERRORS ? RC_EINPUT : RC_OK;
 }
 
-/* Cut the lines into blocks and read each card: /BEGIN and /UNIT first
- * (they give the version, hence the layouts, and the units of the others),
- * then the other cards in order. */
+/* Cut the lines into blocks and read each card: /BEGIN first (the version,
+ * hence the layouts, and the deck's units), then the /UNIT cards, then the
+ * other cards in order. */
 static rc_status rc_read_blocks(rc_reader *rd)
 {
     int ncards = 0, cap = 0;
@@ -432,10 +432,10 @@ static rc_status rc_read_blocks(rc_reader *rd)
         i = j;
     }
     st = RC_OK;
-    for (int pass = 0; pass < 2; pass++)
+    for (int pass = 0; pass < 3; pass++)
         for (int k = 0; k < ncards; k++) {
-            int first = rc_block_is(&blocks[k], "BEGIN") || rc_block_is(&blocks[k], "UNIT");
-            if (first != (pass == 0)) continue;
+            int when = rc_block_is(&blocks[k], "BEGIN") ? 0 : rc_block_is(&blocks[k], "UNIT") ? 1 : 2;
+            if (when != pass) continue;
             if ((st = rc_read_one(rd, &blocks[k]))) goto done;
         }
     if (ncards == 0 && rd->nerrors == 0) {

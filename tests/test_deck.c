@@ -347,6 +347,14 @@ static void test_deck_several_errors(void)
     ENSURE(strstr(e.msg, "errs25.rad:60: card /GRAV/20, field DIR") != NULL);
     ENSURE(strstr(e.msg, "/GRAV/21,") == NULL);
     ENSURE(strstr(e.msg, "too many errors") != NULL);
+
+    /* every duplicate id is reported, in the order of the deck */
+    const char *dp;
+    ENSURE(load_fails(dp = tmp_write("dups.rad", "/FUNCT/1\na\n0,0\n1,1\n/GRAV/4\ng\n0,Z\n/FUNCT/1\nb\n0,0\n1,1\n"
+                                             "/GRAV/4\nh\n0,Z\n" RUN_CARD), &e));
+    const char *d1 = strstr(e.msg, "dups.rad:8: card /FUNCT/1, field fct_ID: duplicate id 1");
+    const char *d2 = strstr(e.msg, "dups.rad:12: card /GRAV/4, field grav_ID: duplicate id 4");
+    ENSURE(d1 == e.msg + strlen(dp) - strlen("dups.rad") && d2 > d1 && strstr(e.msg, "2 input errors"));
 }
 
 /* ---- /BEGIN forms ---------------------------------------------------------- */

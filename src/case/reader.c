@@ -459,28 +459,45 @@ static int rc_cmp_id(const void *pa, const void *pb)
     return (a->seq > b->seq) - (a->seq < b->seq);
 }
 
-/* After sorting by (id, order), report the earliest redefinition. */
+/* A redefinition: the entry, the first definition, the id kind. */
+typedef struct { const rc_id_entry *dup, *first; int kind; } rc_dup;
+
+static int rc_cmp_dup(const void *pa, const void *pb)
+{
+    const rc_dup *a = pa, *b = pb;
+    return (a->dup->seq > b->dup->seq) - (a->dup->seq < b->dup->seq);
+}
+
+/* After sorting by (id, order), report every redefinition in the order of
+ * the deck (each an input error, up to RC_CASE_MAX_ERRORS in all). */
 static rc_status rc_check_dups(rc_reader *rd)
 {
     static const char *const names[RC_IDK_COUNT] = {
         "fct_ID", "node_ID", "grnod_ID", "rbody_ID", "surf_ID",
         "inter_ID", "inivel_ID", "grav_ID", "bcs_ID", "cpl_ID", "part_ID", "grpart_ID",
         "fric_ID", "fric_orient_ID", "impvel_ID"};
-    const rc_id_entry *worst = NULL, *first = NULL;
-    int wkind = 0;
+    rc_dup *d = NULL;
+    int nd = 0, cap = 0;
+    rc_status st = RC_OK;
     for (int k = 0; k < RC_IDK_COUNT; k++) {
         rc_id_entry *e = rd->ids[k];
         int g = 0;
         if (rd->nids[k] > 1) qsort(e, (size_t)rd->nids[k], sizeof *e, rc_cmp_id);
         for (int i = 1; i < rd->nids[k]; i++) {
             if (e[i].id != e[g].id) { g = i; continue; }
-            if (!worst || e[i].seq < worst->seq) { worst = &e[i]; first = &e[g]; wkind = k; }
+            rc_dup *nw = rc_case_grow(rd, d, &cap, nd, sizeof *d);
+            if (!nw) { free(d); return RC_ENOMEM; }
+            d = nw;
+            d[nd++] = (rc_dup){&e[i], &e[g], k};
         }
     }
-    if (!worst) return RC_OK;
-    return rc_case_fail(rd, &worst->loc, worst->card, names[wkind],
-                        "duplicate id %d, first defined at %s:%d", worst->id, first->loc.file,
-                        first->loc.line);
+    if (nd > 1) qsort(d, (size_t)nd, sizeof *d, rc_cmp_dup);
+    for (int i = 0; i < nd && rd->nerrors <= RC_CASE_MAX_ERRORS; i++)
+        st = rc_case_fail(rd, &d[i].dup->loc, d[i].dup->card, names[d[i].kind],
+                          "duplicate id %d, first defined at %s:%d", d[i].dup->id,
+                          d[i].first->loc.file, d[i].first->loc.line);
+    free(d);
+    return st;
 }
 
 /* ======================================================================

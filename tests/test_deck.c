@@ -580,6 +580,27 @@ static void test_deck_loads_layouts_44(void)
     rc_case_free(c);
 }
 
+/* /IMPVEL before 12.0 has no Icoor: columns 61-70 are after the layout. */
+static void test_deck_impvel_110(void)
+{
+    rc_case *c = load_ok(tmp_write("iv110.rad",
+                                   BEGIN_V("       110")
+                                   "/IMPVEL/5\n"
+                                   "i\n"
+                                   "#funct_IDT       Dir   skew_ID sensor_ID  grnod_ID  frame_ID\n"
+                                   "         2        XX         0         0         5         0         1\n"
+                                   "#            Scale_x             Scale_y              Tstart               Tstop\n"
+                                   "                   0                 2.0                   0                 0.5\n" RUN_CARD));
+    ENSURE(c && c->nimpvel == 1 && NWARN(c, "iv110.rad:7:", "after column 60 ignored") == 1);
+    rc_case_free(c);
+    /* from 12.0 on the same line is Icoor = 1: not supported */
+    rc_error e;
+    ENSURE(load_fails(tmp_write("iv120.rad", BEGIN_V("       120")
+                                "/IMPVEL/5\ni\n         2        XX         0         0         5         0         1\n" RUN_CARD),
+                      &e));
+    ENSURE(strstr(e.msg, "iv120.rad:6: card /IMPVEL/5, field Icoor") && strstr(e.msg, "not supported yet"));
+}
+
 /* /INIVEL of Radioss 2025: an optional line Tstart sens_ID (0 only). */
 static void test_deck_inivel_2025(void)
 {
@@ -818,6 +839,7 @@ void suite_deck(void)
     RUN_TEST(test_deck_engine_pair);
     RUN_TEST(test_deck_type6_layouts);
     RUN_TEST(test_deck_loads_layouts_44);
+    RUN_TEST(test_deck_impvel_110);
     RUN_TEST(test_deck_inivel_2025);
     RUN_TEST(test_deck_friction_2019);
     RUN_TEST(test_deck_units_begin);

@@ -251,7 +251,10 @@ rc_status rc_card_impvel(rc_reader *rd, const rc_block *b)
         l2[2] = o2[1];
         l2[3] = o2[2];
     } else {
-        if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
+        /* Icoor (61-70) exists from Radioss 12.0 on */
+        const int nl1 = rc_layout_version(rd) >= 120 ? RC_NF(l1) : RC_NF(l1) - 1;
+        if ((st = rc_parse_line(rd, b, &b->lines[1], l1, nl1))) return st;
+        if (nl1 < RC_NF(l1) && (st = rc_parse_line(rd, b, &blank, &l1[nl1], 1))) return st;
         l2[1].dim = strlen(dir) == 2 ? RC_D_W : RC_D_V;
         if ((st = rc_parse_line(rd, b, nd >= 2 ? &b->lines[2] : &blank, l2, RC_NF(l2)))) return st;
     }

@@ -802,6 +802,88 @@ static void test_deck_units_90_form(void)
     ENSURE(strstr(e.msg, "units90b.rad:4: card /UNIT/LENGTH/league, field LENGTH") && strstr(e.msg, "\"league\""));
 }
 
+/* The demo deck written in g, mm, ms runs as the SI deck does: the same
+ * final state (SI) after the bounce. */
+static void test_deck_units_run_matches_si(void)
+{
+    const char *p = tmp_write("demo_gmmms.rad",
+                              "#RADIOSS STARTER\n"
+                              "/BEGIN\n"
+                              "demo in g, mm, ms\n"
+                              "      2022         0\n"
+                              "                   g                  mm                  ms\n"
+                              "                   g                  mm                  ms\n"
+                              "/FUNCT/1\n"
+                              "linear load curve, 1e6 N per 1000 mm\n"
+                              "                   0                   0\n"
+                              "                1000             1000000\n"
+                              "/NODE\n"
+                              "         1                   0                   0                 150\n"
+                              "/RBODY/1\n"
+                              "sphere, 1000 g\n"
+                              "         1                                              1000\n"
+                              "             1000000             1000000             1000000\n"
+                              "                   0                   0                   0\n"
+                              "/SURF/ELLIPS/1\n"
+                              "sphere surface R = 50 mm\n"
+                              "         0         2         1\n"
+                              "                   0                   0                 150\n"
+                              "                  50                  50                  50\n"
+                              "/SURF/PLANE/2\n"
+                              "floor\n"
+                              "                   0                   0                   0\n"
+                              "                   0                   0                1000\n"
+                              "/GRNOD/NODE/1\n"
+                              "sphere node\n"
+                              "         1\n"
+                              "/GRAV/1\n"
+                              "gravity\n"
+                              "         0         Z         0         0         0                                      -0.00981\n"
+                              "/INTER/TYPE6/1\n"
+                              "sphere on floor\n"
+                              "         1         2\n"
+                              "                                                           0\n"
+                              "                   0         0         0         0         0\n"
+                              "         1         0                                                 0\n"
+                              "         0\n"
+                              "       148.710194195         0         0\n"
+                              "/RUN\n"
+                              "                1000                 0.1\n"
+                              "/SOLVER\n"
+                              "         1         5    100000               1e-06                   0                   0\n"
+                              "               1e-06               1e-09               1e-06               1e-09\n"
+                              "               0.001\n"
+                              "/END\n");
+    rc_case *a = load_ok("cases/demo_sphere_drop.rad"), *b = load_ok(p);
+    rc_model *ma = NULL, *mb = NULL;
+    rc_error e;
+    ENSURE(a && b);
+    if (a && b) {
+        ENSURE(rc_model_compile(a, &ma, &e) == RC_OK);
+        ENSURE(rc_model_compile(b, &mb, &e) == RC_OK);
+    }
+    if (ma && mb) {
+        int n = rc_model_state_size(ma);
+        ENSURE(n == rc_model_state_size(mb) && n > 0 && n <= 64);
+        double ya[64], yb[64];
+        rc_run_options oa = {NULL, 0, 0.3, ya, NULL}, ob = {NULL, 0, 0.3, yb, NULL};
+        ENSURE(rc_run(ma, &oa, NULL, &e) == RC_OK);
+        ENSURE(rc_run(mb, &ob, NULL, &e) == RC_OK);
+        double worst = 0;
+        for (int k = 0; k < n && k < 64; k++) {
+            double d = fabs(ya[k] - yb[k]) / (1e-6 + fabs(ya[k]));
+            if (d > worst) worst = d;
+        }
+        printf("    demo in g, mm, ms vs SI after 0.3 s: max relative state difference %.2e\n", worst);
+        ENSURE(worst < 1e-4);
+        ENSURE(NEAR(ya[2], yb[2]) || fabs(ya[2] - yb[2]) < 1e-6); /* the height */
+    }
+    rc_model_free(ma);
+    rc_model_free(mb);
+    rc_case_free(a);
+    rc_case_free(b);
+}
+
 /* Values without a fixed dimension cannot be converted: errors naming them. */
 static void test_deck_units_refused(void)
 {
@@ -845,6 +927,7 @@ void suite_deck(void)
     RUN_TEST(test_deck_units_begin);
     RUN_TEST(test_deck_units_unit_cards);
     RUN_TEST(test_deck_units_90_form);
+    RUN_TEST(test_deck_units_run_matches_si);
     RUN_TEST(test_deck_units_refused);
     tmp_cleanup();
 }

@@ -32,6 +32,22 @@ sed 's/^         1                                                 1$/         1
 if grep -q "bad.rad:[0-9]*:.*RBODY.*Mass" "$tmp/e" && [ ! -e "$tmp/bad.nc" ]; then expect input_error 2 $rc "($(head -c 160 "$tmp/e"))"
 else expect input_error 2 99 "(message or output wrong: $(head -c 200 "$tmp/e"))"; fi
 
+# several input errors: all reported (first one first), exit 2, nothing written
+printf '/GRAV/1\ng\n         0         W\n/RUN\n                -1.0\n' > "$tmp/two.rad"
+"$bin" run "$tmp/two.rad" -o "$tmp/two.nc" > "$tmp/e" 2>&1; rc=$?
+if head -1 "$tmp/e" | grep -q "two.rad:3:.*GRAV.*DIR" && grep -q "two.rad:5:.*RUN.*Tend" "$tmp/e" && grep -q "2 input errors" "$tmp/e" &&
+   [ ! -e "$tmp/two.nc" ]; then expect several_input_errors 2 $rc "($(tr '\n' '|' < "$tmp/e" | head -c 200))"
+else expect several_input_errors 2 99 "(messages wrong: $(head -c 300 "$tmp/e"))"; fi
+
+# a Radioss starter + engine pair: NAME_0000.rad reads NAME_0001.rad (said in a warning)
+awk '/^\/RUN$/{getline; next} {print}' "$demo" > "$tmp/pair_0000.rad"
+printf '#RADIOSS ENGINE\n/RUN/pair/1\n                 0.2\n/ANIM/DT\n0 0.01\n/TFILE/0\n1e-4\n/END\n' > "$tmp/pair_0001.rad"
+"$bin" run "$tmp/pair_0000.rad" -o "$tmp/pair.nc" -q > "$tmp/e" 2>&1; rc=$?
+if grep -q "pair_0001.rad:1: Radioss engine file read" "$tmp/e" && grep -q "Tend = Tstop = 0.2" "$tmp/e" &&
+   [ "$(ncdump -h "$tmp/pair.nc" | sed -n 's/^[[:space:]]*time = UNLIMITED ; \/\/ (\([0-9]*\) currently).*/\1/p')" -ge 21 ]; then
+    expect starter_engine_pair 0 $rc "(engine file read, Tend 0.2 s, Dt_out 0.01 s)"
+else expect starter_engine_pair 0 99 "(exit $rc: $(head -c 300 "$tmp/e"))"; fi
+
 "$bin" run "$tmp/missing.rad" > "$tmp/e" 2>&1; expect missing_case 4 $? "($(head -c 120 "$tmp/e"))"
 "$bin" run "$demo" -o "$tmp/no/such/dir/out.nc" > "$tmp/e" 2>&1; expect unwritable_output 4 $? "($(head -c 120 "$tmp/e"))"
 

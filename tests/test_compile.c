@@ -98,7 +98,7 @@ static void test_compile_scales_and_derived_tolerances(void)
 {
     const double k = 1e5, mass = 1.0, g = 9.81, v0 = 0.37, rtol = 1e-8;
     rc_model *m = compile_ok(deck(6, "/INTER/TYPE6/3\ncontact\n10,20\n,,0\n,0,0,0\n1,0\n0\n0\n",
-                                  "/GRNOD/NODE/1\nball\n1\n/GRAV/1\ngravity\n0,Z,0,0,1,1,-9.81\n"));
+                                  "/GRNOD/NODE/1\nball\n1\n/GRAV/1\ngravity\n0,Z,0,0,1,,1,-9.81\n"));
     ENSURE(m != NULL);
     if (m) {
         ENSURE_NEAR(m->inter_pscale[0], mass * g / k, 1e-9, 0);
@@ -155,7 +155,7 @@ static void test_compile_errors_references(void)
                          "card /INTER/TYPE6/3", "field fct_IDul", "no such function");
     EXPECT_COMPILE_ERROR(deck(3, "/RBODY/1\nball\n5,,,,1.0\n0.001,0.001,0.001\n0,0,0\n", NULL), "card /RBODY/1",
                          "field node_ID", "no such node");
-    EXPECT_COMPILE_ERROR(deck(-1, NULL, "/GRAV/1\ng\n0,Z,0,0,44,1,-9.81\n"), "card /GRAV/1", "field grnod_ID",
+    EXPECT_COMPILE_ERROR(deck(-1, NULL, "/GRAV/1\ng\n0,Z,0,0,44,,1,-9.81\n"), "card /GRAV/1", "field grnod_ID",
                          "no such group");
     EXPECT_COMPILE_ERROR(deck(4, "/SURF/ELLIPS/10\nball\n0,2,8\n0,0,0.05\n0.05,0.05,0.05\n", NULL),
                          "card /SURF/ELLIPS/10", "field rbody_ID", "no such body");

@@ -112,7 +112,7 @@ static const char model_deck[] =
     "/RBODY/3\nfixed body\n3,,,,2.0\n0.1,0.1,0.1\n0,0,0\n"
     "/GRNOD/NODE/1\nfixed\n3\n"
     "/BCS/1\nfix\n111 111,0,1\n"
-    "/GRAV/1\ngravity\n0,Z,0,0,0,1,-9.81\n"
+    "/GRAV/1\ngravity\n0,Z,0,0,0,,1,-9.81\n"
     "/FUNCT/5\nforce f_e(x)\n0,-40\n0.5,-9\n1.0,0\n1.6,23\n2.5,90\n"
     "/FUNCT/6\nstiffness k(x)\n0,10\n1,35\n2,20\n3,80\n"
     "/COUPLING/SPRING/11\nconstant\n1,0,1,0\n0.35,-0.12,0.27\n-0.9,0.4,1.1\n1.21,3.7\n143.0\n"
@@ -175,7 +175,7 @@ static void test_coupling_card_errors(void)
     EXPECT_ERROR(PRE "/COUPLING/SPRING\nt\n1,0\n0,0,0\n1,0,0\n,\n", 0, 15, "field cpl_ID",
                  "expected a positive integer id");
     EXPECT_ERROR(PRE "/COUPLING/SPRING/3/2\nt\n1,0\n0,0,0\n1,0,0\n,\n", 0, 15, "field unit_ID",
-                 "not supported yet");
+                 "no /UNIT/2");
     /* lines */
     EXPECT_ERROR(PRE "/COUPLING/SPRING/3\nt\n1,0\n0,0,0\n1,0,0\n", 0, 15, "card /COUPLING/SPRING/3",
                  "expected", "X0 Kd");
@@ -222,7 +222,7 @@ static void test_coupling_card_errors(void)
                  "got 8 (no such function)");
     EXPECT_ERROR(PRE "/COUPLING/CATENARY/3\nt\n1,0\n0,0,0\n1,0,0\n1,1,1\n", 1, 15, "card /COUPLING/CATENARY/3",
                  "hangs in gravity", "grnod_ID 0");
-    EXPECT_ERROR(PRE "/GRNOD/NODE/1\ng\n1\n/GRAV/1\ng\n0,Z,0,0,1,1,-9.81\n"
+    EXPECT_ERROR(PRE "/GRNOD/NODE/1\ng\n1\n/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"
                      "/COUPLING/CATENARY/3\nt\n1,0\n0,0,0\n1,0,0\n1,1,1\n",
                  1, 21, "card /COUPLING/CATENARY/3", "hangs in gravity");
 #undef PRE

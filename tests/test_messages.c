@@ -91,7 +91,7 @@ static rc_status compile_variant(const char *from, const char *to, char *msg, si
  * resolution, a time scale below the time's resolution. */
 static void test_messages_unresolvable_scales(void)
 {
-    char msg[2048];
+    static char msg[8192];
     const char *curve = "                   1             1000000\n";
     /* k = 1e30 N/m: p_s = m g / k ~ 1e-29 m, far below ulp(0.2 m) */
     ENSURE(compile_variant(curve, "                   1              1e+30\n", msg, sizeof msg) == RC_EINPUT);

@@ -190,7 +190,7 @@ static const char roller_deck[] =
     "/FUNCT/1\nconstant\n0, 1\n10, 1\n"
     "/IMPVEL/1\nspin\n1, YY, 0, 0, 1, 0, 0\n0, 20\n"
     "/BCS/1\nblock held\n111 111, 0, 2\n"
-    "/GRAV/1\ngravity\n0, Z, 0, 0, 0, 1, -9.81\n"
+    "/GRAV/1\ngravity\n0, Z, 0, 0, 0, , 1, -9.81\n"
     "/INTER/POWER/1\nroller on block\n1, 2\n1e8, 1.5, 1e4, 1, 1.5\n,\n0.3, 0.001, 0.2, 0.01\n"
     "/RUN\n0.05, 0.001\n"
     "/SOLVER\n1, 5, 100000, 1e-8\n1e-12, 1e-9, 1e-8, 1e-8\n1e-9\n";
@@ -317,7 +317,7 @@ static const char impvel_deck[] =
     "/GRNOD/NODE/1\nbody\n1\n"
     "/FUNCT/1\nramp\n0, 0.5\n1, 2.5\n"
     "/IMPVEL/1\ndrive\n1, X, 0, 0, 1\n0.5, 1.3, 0, 0.3\n"
-    "/GRAV/1\ng\n0, X, 0, 0, 0, 1, -2.9\n"
+    "/GRAV/1\ng\n0, X, 0, 0, 0, , 1, -2.9\n"
     "/RUN\n0.7, 0.05\n"
     "/SOLVER\n1, 5, 100000, 1e-10\n1e-12, 1e-9, 1e-10, 1e-10\n1e-10\n";
 

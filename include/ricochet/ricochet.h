@@ -2,9 +2,9 @@
  * ricochet: stiff rigid-body contact, integrated implicitly with error control.
  *
  * Public API. This header includes only the C library: no SUNDIALS, GSL or
- * netCDF type appears here. Units are SI-consistent: whatever consistent
- * system the case file uses (the one named in /BEGIN) is used throughout;
- * the comments below give SI units for orientation.
+ * netCDF type appears here. Units are SI: a case whose /BEGIN or /UNIT
+ * cards name other units is converted to SI when read; a case naming no
+ * units is used as written (one consistent system).
  *
  * Pipeline:  rc_case_load  ->  rc_model_compile  ->  rc_run
  */
@@ -37,7 +37,7 @@ typedef enum {
  * errors it reads "file:line: card /X/Y/id, field F: expected ..., got ...". */
 typedef struct rc_error {
     rc_status code;
-    char msg[2048];
+    char msg[8192]; /* several lines when a deck has several input errors */
     const char *src_file; /* ricochet source location that raised it */
     int src_line;
     const char *src_func;
@@ -66,6 +66,10 @@ void rc_case_free(rc_case *c); /* NULL is a no-op */
  * includes, in reading order. NULL when i is out of range. */
 int rc_case_file_count(const rc_case *c);
 const char *rc_case_file(const rc_case *c, int i);
+/* Warnings of the reading ("file:line: ..."): ignored cards, leniencies,
+ * unit conversions; i in [0, rc_case_warning_count(c)). */
+int rc_case_warning_count(const rc_case *c);
+const char *rc_case_warning(const rc_case *c, int i);
 
 /* ---- Model (compiled, constant) ------------------------------------- */
 typedef struct rc_model rc_model;

@@ -16,6 +16,7 @@
 #include "base/error.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* ======================================================================
@@ -26,7 +27,8 @@ typedef enum {
     RC_CARD_BEGIN, RC_CARD_NODE, RC_CARD_GRNOD, RC_CARD_RBODY, RC_CARD_PLANE, RC_CARD_ELLIPS,
     RC_CARD_TYPE6, RC_CARD_FUNCT, RC_CARD_INIVEL, RC_CARD_GRAV, RC_CARD_BCS, RC_CARD_RUN,
     RC_CARD_SOLVER, RC_CARD_CPL_SPRING, RC_CARD_CPL_CATENARY, RC_CARD_PART, RC_CARD_GRPART,
-    RC_CARD_FRICTION, RC_CARD_FRIC_ORIENT, RC_CARD_POWER, RC_CARD_CYL, RC_CARD_BOX, RC_CARD_IMPVEL
+    RC_CARD_FRICTION, RC_CARD_FRIC_ORIENT, RC_CARD_POWER, RC_CARD_CYL, RC_CARD_BOX, RC_CARD_IMPVEL,
+    RC_CARD_UNIT
 } rc_card_kind;
 
 /* Supported cards; a family (kw with a sub) lists each subtype. */
@@ -46,19 +48,56 @@ static const struct {
     {"FRICTION", NULL, RC_CARD_FRICTION}, {"FRIC_ORIENT", NULL, RC_CARD_FRIC_ORIENT},
     {"INTER", "POWER", RC_CARD_POWER}, {"SURF", "CYL", RC_CARD_CYL},
     {"SURF", "BOX", RC_CARD_BOX},      {"IMPVEL", NULL, RC_CARD_IMPVEL},
+    {"UNIT", NULL, RC_CARD_UNIT},
 };
 
 /* Radioss cards without meaning for rigid bodies: skipped with a warning. */
-static const char *const rc_ignored[] = {"TITLE", "ANALY",  "DEF_SOLID", "DEF_SHELL", "IOFLAG",
-                                         "SPMD",  "RANDOM", "PROP",      "MAT"};
+static const char *const rc_ignored[] = {"PROP", "MAT"};
+/* Radioss starter and engine options that only matter to explicit runs
+ * (time step, outputs, restart, memory, parallelism): skipped with one
+ * warning per kind. */
+static const char *const rc_explicit[] = {
+    "TITLE", "ANALY", "DEF_SOLID", "DEF_SHELL", "IOFLAG", "SPMD", "RANDOM", "TH", "ANIM",
+    "MEMORY", "DT", "DTIX", "PRINT", "VERS", "STOP", "OUTP", "H3D", "RFILE", "TFILE", "ATFILE",
+    "MON", "PARITH", "CHKPT", "STATE", "DYNAIN", "KEREL", "DYREL", "ADYREL", "SHFRA",
+    "CAA", "MADYMO", "INSPIRE", "NEGVOL", "MSTOP", "NSTOP"};
 /* Radioss cards ricochet plans to support: an error until then. */
-static const char *const rc_planned[] = {"UNIT", "SKEW", "SENSOR"};
+static const char *const rc_planned[] = {"SKEW", "SENSOR"};
 
 static int rc_in_list(const char *kw, const char *const *list, int n)
 {
     for (int i = 0; i < n; i++)
         if (strcmp(kw, list[i]) == 0) return 1;
     return 0;
+}
+
+/* Skip a card with one warning per kind (its first keyword): the first card
+ * of a kind gets the warning, which then counts the others. */
+static rc_status rc_skip(rc_reader *rd, const rc_block *b, const char *why)
+{
+    rc_case *c = rd->c;
+    for (int i = 0; i < rd->nskipped; i++) {
+        if (strcmp(rd->skipped[i].kw, b->kw[0]) != 0) continue;
+        /* rewrite the kind's warning with the new count */
+        char *w = c->warnings[rd->skipped[i].warning], *e = strstr(w, " (and ");
+        int n = ++rd->skipped[i].count;
+        size_t keep = e ? (size_t)(e - w) : strlen(w);
+        char *nw = malloc(keep + 64);
+        if (!nw) return rc_case_nomem(rd);
+        memcpy(nw, w, keep);
+        snprintf(nw + keep, 64, " (and %d more /%s card%s)", n - 1, b->kw[0], n > 2 ? "s" : "");
+        free(w);
+        c->warnings[rd->skipped[i].warning] = nw;
+        return RC_OK;
+    }
+    int slot = rd->nskipped < (int)(sizeof rd->skipped / sizeof rd->skipped[0]);
+    if (slot) {
+        snprintf(rd->skipped[rd->nskipped].kw, sizeof rd->skipped[0].kw, "%s", b->kw[0]);
+        rd->skipped[rd->nskipped].warning = c->nwarnings;
+        rd->skipped[rd->nskipped].count = 1;
+        rd->nskipped++;
+    }
+    return rc_case_warn(rd, &b->hdr->loc, "card %s ignored: %s", b->name, why);
 }
 
 /* Call the card function of a kind. */
@@ -88,6 +127,7 @@ static rc_status rc_card_call(rc_reader *rd, const rc_block *b, rc_card_kind kin
     case RC_CARD_CYL: return rc_card_cyl(rd, b);
     case RC_CARD_BOX: return rc_card_box(rd, b);
     case RC_CARD_IMPVEL: return rc_card_impvel(rd, b);
+    case RC_CARD_UNIT: return rc_card_unit(rd, b);
     }
     return RC_SET(rd->err, RC_EINTERNAL, "unknown card kind %d", (int)kind);
 }
@@ -113,12 +153,19 @@ rc_status rc_card_dispatch(rc_reader *rd, const rc_block *b)
     const char *kw = b->kw[0];
     int family = 0, mesh = 0;
     rc_status st;
+    /* the Radioss engine /RUN/name/n[/letter] (a run name after RUN, or two
+     * numbers) and /ANIM/DT give the run settings */
+    if (strcmp(kw, "RUN") == 0 && (b->nkw >= 2 || b->unit_id || (b->bad && b->nkw == 1)))
+        return rc_card_engine_run(rd, b);
+    if (strcmp(kw, "ANIM") == 0 && b->nkw == 2 && strcmp(b->kw[1], "DT") == 0 && !b->has_id)
+        return rc_card_anim_dt(rd, b);
     /* the mesh cards (cards_mesh.c) first: /PROP and /MAT are partly read */
     if ((st = rc_cards_mesh(rd, b, &mesh)) || mesh) return st;
     /* ignored Radioss cards: a warning, whatever their header */
     if (rc_in_list(kw, rc_ignored, RC_NF(rc_ignored)))
-        return rc_case_warn(rd, &b->hdr->loc, "card %s ignored: no meaning for rigid bodies",
-                            b->name);
+        return rc_skip(rd, b, "no meaning for rigid bodies");
+    if (rc_in_list(kw, rc_explicit, RC_NF(rc_explicit)))
+        return rc_skip(rd, b, "only meaningful to an explicit run (ricochet integrates implicitly)");
     if (b->bad)
         return rc_case_fail(rd, &b->hdr->loc, b->name, NULL, "malformed card header: %s", b->bad);
     /* supported cards */

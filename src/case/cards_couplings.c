@@ -34,8 +34,8 @@ static rc_status rc_new_coupling(rc_reader *rd, const rc_block *b, rc_case_cpl_k
     /* lines 2 and 3: the two attachment points, global at t = 0 */
     for (int e = 0; e < 2; e++) {
         static const char *const nm[2][3] = {{"X1", "Y1", "Z1"}, {"X2", "Y2", "Z2"}};
-        rc_field f[] = {RC_F_REAL(nm[e][0], &k->p[e][0], 0, 0), RC_F_REAL(nm[e][1], &k->p[e][1], 0, 0),
-                        RC_F_REAL(nm[e][2], &k->p[e][2], 0, 0)};
+        rc_field f[] = {RC_F_REALD(nm[e][0], &k->p[e][0], 0, 0, RC_D_L), RC_F_REALD(nm[e][1], &k->p[e][1], 0, 0, RC_D_L),
+                        RC_F_REALD(nm[e][2], &k->p[e][2], 0, 0, RC_D_L)};
         if ((st = rc_parse_line(rd, b, &b->lines[2 + e], f, RC_NF(f)))) return st;
     }
     /* a spring or a line between two coincident points has no direction */
@@ -83,11 +83,11 @@ rc_status rc_card_coupling_spring(rc_reader *rd, const rc_block *b)
     rc_field l1[] = {RC_F_BODIES(k),
                      RC_F_SET("Iform", &k->iform, 1, RC_FF_ZDEF, 0x1Eu, 0, NULL),
                      RC_F_INT("fct_ID", &k->fct_id, 0, RC_FF_NONNEG)};
-    rc_field l4[] = {RC_F_REAL("X0", &k->x0, 0, RC_FF_NONNEG),
-                     RC_F_REAL("Kd", &k->kd, 0, RC_FF_NONNEG)};
-    rc_field l5[] = {RC_F_REAL("A", &k->a, 0, 0), RC_F_REAL("B", &k->b, 0, 0),
-                     RC_F_REAL("C", &k->c, 0, 0)};
-    rc_field l6[] = {RC_F_REAL("F_r", &k->fr, 0, 0), RC_F_REAL("X_r", &k->xr, 0, RC_FF_NONNEG)};
+    rc_field l4[] = {RC_F_REALD("X0", &k->x0, 0, RC_FF_NONNEG, RC_D_L),
+                     RC_F_REALD("Kd", &k->kd, 0, RC_FF_NONNEG, RC_D_C)};
+    rc_field l5[] = {RC_F_REALD("A", &k->a, 0, 0, RC_D_K), RC_F_REALD("B", &k->b, 0, 0, RC_D_K2),
+                     RC_F_REALD("C", &k->c, 0, 0, RC_D_K3)};
+    rc_field l6[] = {RC_F_REALD("F_r", &k->fr, 0, 0, RC_D_F), RC_F_REALD("X_r", &k->xr, 0, RC_FF_NONNEG, RC_D_L)};
     if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
     if ((st = rc_check_ends(rd, b, k))) return st;
     if ((st = rc_parse_line(rd, b, &b->lines[4], l4, RC_NF(l4)))) return st;
@@ -110,6 +110,14 @@ rc_status rc_card_coupling_spring(rc_reader *rd, const rc_block *b)
             return rc_case_fail(rd, &k->line_loc[0], b->name, "fct_ID",
                                 "expected the id of a /FUNCT (the %s) for Iform = %d, got %s",
                                 k->iform == 3 ? "elastic force f_e(x) [N]" : "stiffness k(x) [N/m]",
+                                k->iform, l1[3].got);
+        /* a table of physical values (N or N/m against m) without scale
+         * factors cannot be converted from other units */
+        if (rc_units_convert(rd))
+            return rc_case_fail(rd, &k->line_loc[0], b->name, "fct_ID",
+                                "the deck's units are not SI: a /FUNCT of forces or stiffnesses "
+                                "(Iform = %d) has no scale factor to convert it; write this card "
+                                "and its function in kg, m, s, got %s",
                                 k->iform, l1[3].got);
         break;
     default: break;
@@ -138,8 +146,8 @@ rc_status rc_card_coupling_catenary(rc_reader *rd, const rc_block *b)
                               "rbody_ID1 rbody_ID2, X1 Y1 Z1, X2 Y2 Z2, Lambda0 L_eq D", &k, &nd)))
         return st;
     rc_field l1[] = {RC_F_BODIES(k)};
-    rc_field l4[] = {RC_F_REAL("Lambda0", &k->lambda0, 0, RC_FF_POS),
-                     RC_F_REAL("L_eq", &k->leq, 0, RC_FF_POS), RC_F_REAL("D", &k->d, 0, RC_FF_POS)};
+    rc_field l4[] = {RC_F_REALD("Lambda0", &k->lambda0, 0, RC_FF_POS, RC_D_LIN),
+                     RC_F_REALD("L_eq", &k->leq, 0, RC_FF_POS, RC_D_L), RC_F_REALD("D", &k->d, 0, RC_FF_POS, RC_D_K)};
     if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
     if ((st = rc_check_ends(rd, b, k))) return st;
     if ((st = rc_parse_line(rd, b, &b->lines[4], l4, RC_NF(l4)))) return st;

@@ -54,12 +54,17 @@ static rc_status rc_fricset(rc_reader *rd, const rc_block *b, const rc_line *l1,
                             const rc_line *l2, int ifric, rc_case_fricset *s)
 {
     rc_status st;
-    rc_field f1[] = {RC_F_REAL("C1", &s->c[0], 0, 0), RC_F_REAL("C2", &s->c[1], 0, 0),
-                     RC_F_REAL("C3", &s->c[2], 0, 0), RC_F_REAL("C4", &s->c[3], 0, 0),
-                     RC_F_REAL("C5", &s->c[4], 0, 0)};
-    rc_field f2[] = {RC_F_REAL("C6", &s->c[5], 0, 0),
-                     RC_F_REAL("Fric", &s->fric, 0, RC_FF_NONNEG),
-                     RC_F_REAL("VISF", &s->visf, 1, RC_FF_ZDEF | RC_FF_NONNEG)};
+    rc_field f1[] = {RC_F_REALD("C1", &s->c[0], 0, 0, 0), RC_F_REALD("C2", &s->c[1], 0, 0, 0),
+                     RC_F_REALD("C3", &s->c[2], 0, 0, 0), RC_F_REALD("C4", &s->c[3], 0, 0, 0),
+                     RC_F_REALD("C5", &s->c[4], 0, 0, 0)};
+    rc_field f2[] = {RC_F_REALD("C6", &s->c[5], 0, 0, 0),
+                     RC_F_REALD("Fric", &s->fric, 0, RC_FF_NONNEG, RC_D_NONE),
+                     RC_F_REALD("VISF", &s->visf, 1, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE)};
+    /* units of C1..C6: none for Coulomb, velocities V_cr1, V_cr2 for Renard;
+     * the laws 1 and 2 mix pressures and velocities: not converted */
+    for (int k = 0; k < 5; k++) f1[k].dim = ifric == 0 || ifric == 3 ? RC_D_NONE : 0;
+    f2[0].dim = ifric == 0 ? RC_D_NONE : ifric == 3 ? RC_D_V : 0;
+    if (ifric == 3) f1[4].dim = RC_D_V;
     if ((st = rc_parse_line(rd, b, l1, f1, RC_NF(f1)))) return st;
     if ((st = rc_parse_line(rd, b, l2, f2, RC_NF(f2)))) return st;
     return ifric == 3 ? rc_renard(rd, b, l1, f1, s) : RC_OK;
@@ -99,11 +104,13 @@ rc_status rc_card_friction(rc_reader *rd, const rc_block *b)
      * extensions: reference step of Ifiltr 1, 2 and pressure area */
     rc_field la[] = {RC_F_SET("Ifric", &fr->ifric, 0, 0, 0xFu, 0, NULL),
                      RC_F_SET("Ifiltr", &fr->ifiltr, 0, 0, 0xFu, 0, NULL),
-                     RC_F_REAL("Xfreq", &fr->xfreq, 1, 0),
+                     RC_F_REALD("Xfreq", &fr->xfreq, 1, 0, RC_D_NONE),
                      RC_F_SET("Iform", &fr->iform, 1, RC_FF_ZDEF, 0x7u, 0, NULL),
-                     RC_F_REAL("Dt_ref", &fr->dt_ref, 0, RC_FF_NONNEG),
-                     RC_F_REAL("Area", &fr->area, 0, RC_FF_NONNEG)};
+                     RC_F_REALD("Dt_ref", &fr->dt_ref, 0, RC_FF_NONNEG, RC_D_T),
+                     RC_F_REALD("Area", &fr->area, 0, RC_FF_NONNEG, RC_D_AREA)};
     if ((st = rc_parse_line(rd, b, &b->lines[1], la, RC_NF(la)))) return st;
+    /* Ifiltr 3: Xfreq is a frequency [1/s] in the card's time unit */
+    if (fr->ifiltr == 3 && rc_units_convert(rd)) fr->xfreq /= rd->cur_units[2];
     if ((fr->ifiltr == 1 || fr->ifiltr == 2) && !(fr->xfreq >= 0 && fr->xfreq <= 1))
         return rc_case_fail(rd, &fr->line_loc[0], b->name, "Xfreq",
                             "expected a filtering coefficient in [0, 1] for Ifiltr = %d, got %s",
@@ -138,7 +145,9 @@ rc_status rc_card_friction(rc_reader *rd, const rc_block *b)
                          RC_F_INT("part_ID1", &pr->part1, 0, RC_FF_NONNEG),
                          RC_F_INT("part_ID2", &pr->part2, 0, RC_FF_NONNEG), RC_F_SKIP(10),
                          RC_F_SET("Idir", &pr->idir, 0, 0, 0x3u, 0, NULL)};
-        if ((st = rc_parse_line(rd, b, ln, l1, RC_NF(l1)))) return st;
+        /* Radioss 2018 and 2019: no Idir (isotropic only) */
+        if ((st = rc_parse_line(rd, b, ln, l1, rc_layout_version(rd) >= 2020 ? RC_NF(l1) : 4)))
+            return st;
 
         /* each side names a part group or a part (the group wins, Radioss) */
         const int grp[2] = {pr->grpart1, pr->grpart2}, prt[2] = {pr->part1, pr->part2};
@@ -215,16 +224,21 @@ rc_status rc_card_fricorient(rc_reader *rd, const rc_block *b)
                                 "its line 2 (VX VY VZ skew_ID PHI Iorth)",
                                 n);
         rc_field l2[] = {
-            RC_F_REAL("VX", &it->v[0], 0, 0), RC_F_REAL("VY", &it->v[1], 0, 0),
-            RC_F_REAL("VZ", &it->v[2], 0, 0),
+            RC_F_REALD("VX", &it->v[0], 0, 0, RC_D_NONE), RC_F_REALD("VY", &it->v[1], 0, 0, RC_D_NONE),
+            RC_F_REALD("VZ", &it->v[2], 0, 0, RC_D_NONE),
             RC_F_INTN("skew_ID", &it->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew),
-            RC_F_REAL("PHI", &it->phi, 0, 0),
+            RC_F_REALD("PHI", &it->phi, 0, 0, RC_D_NONE),
             RC_F_SET("Iorth", &it->iorth, 0, 0, 0x3u, 0, NULL)};
         if ((st = rc_parse_line(rd, b, &b->lines[i + 1], l2, RC_NF(l2)))) return st;
-        if (it->v[0] == 0 && it->v[1] == 0 && it->v[2] == 0)
-            return rc_case_fail(rd, &b->lines[i + 1].loc, b->name, "VX VY VZ",
-                                "expected a non-zero vector V (direction 1 of orthotropy), got "
-                                "(0, 0, 0)");
+        /* Radioss: a zero vector V means the global X axis */
+        if (it->v[0] == 0 && it->v[1] == 0 && it->v[2] == 0) {
+            it->v[0] = 1;
+            if ((st = rc_case_warn(rd, &b->lines[i + 1].loc,
+                                   "card %s: orientation %d: V = (0, 0, 0) read as (1, 0, 0), "
+                                   "as Radioss does",
+                                   b->name, n)))
+                return st;
+        }
     }
     return rc_note_id(rd, RC_IDK_FRICORIENT, o->id, &o->loc, b->hdr->text);
 }

@@ -42,20 +42,29 @@ rc_status rc_card_type6(rc_reader *rd, const rc_block *b)
     rc_case_type6 *t = &c->type6[c->ntype6++];
     t->id = b->id;
     t->loc = b->hdr->loc;
-    if ((st = rc_card_lines(rd, b, t->title, 6, 6,
-                            "surf_ID1 surf_ID2, Sfric Fric Gap Tstart Tstop, IRS..., "
-                            "fct_IDld..., fct_IDul..., Visc...",
-                            &nd)))
-        return st;
+    /* the layout of the /BEGIN version: 6 lines from 14.0 (140), 5 lines
+     * from 10.0 (100), 4 lines in 5.1 and 9.0, 3 lines of 8- and
+     * 16-character fields in 4.x */
+    const int ver = rc_layout_version(rd);
+    const int nl = ver >= 140 ? 6 : ver >= 100 ? 5 : ver >= 51 ? 4 : 3;
+    static const char *const desc[4] = {
+        "surf_ID1 surf_ID2, Scale Fric Gap Tstart Tstop, fct_ID IRS IRM (Radioss 4.x layout)",
+        "surf_ID1 surf_ID2, Fric Gap Tstart Tstop, IRS IRM, fct_ID Ascalex FscaleY (Radioss "
+        "5.1/9.0 layout)",
+        "surf_ID1 surf_ID2, Fric Gap Tstart Tstop, IRS IRM, fct_IDld Iform Ascalex Fscaleld, "
+        "fct_IDul Stiff Fscaleul (Radioss 10.0-13.0 layout)",
+        "surf_ID1 surf_ID2, Sfric Fric Gap Tstart Tstop, IRS..., fct_IDld..., fct_IDul..., "
+        "Visc..."};
+    if ((st = rc_card_lines(rd, b, t->title, nl, nl, desc[nl - 3], &nd))) return st;
 
     rc_field l1[] = {RC_F_INT("surf_ID1", &t->surf1, 0, RC_FF_POS),
                      RC_F_INT("surf_ID2", &t->surf2, 0, RC_FF_POS)};
     rc_field l2[] = {
-        RC_F_REAL("Sfric", &t->sfric, 0, RC_FF_NONNEG),
-        RC_F_REAL("Fric", &t->fric, 0, RC_FF_NONNEG),
-        RC_F_REAL("Gap", &t->gap, 0, RC_FF_NONNEG),
-        RC_F_REAL("Tstart", &t->tstart, 0, 0),
-        RC_F_REAL("Tstop", &t->tstop, RC_DEF_TSTOP, RC_FF_ZDEF)};
+        RC_F_REALD("Sfric", &t->sfric, 0, RC_FF_NONNEG, RC_D_F),
+        RC_F_REALD("Fric", &t->fric, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("Gap", &t->gap, 0, RC_FF_NONNEG, RC_D_L),
+        RC_F_REALD("Tstart", &t->tstart, 0, 0, RC_D_T),
+        RC_F_REALD("Tstop", &t->tstop, RC_DEF_TSTOP, RC_FF_ZDEF, RC_D_T)};
     rc_field l3[] = {
         RC_F_SKIP(10),
         RC_F_SET("IRS", &t->irs, 0, 0, 0x7u, RC_BIT(0),
@@ -65,40 +74,95 @@ rc_status rc_card_type6(rc_reader *rd, const rc_block *b)
         RC_F_SET("Inacti", &t->inacti, 0, 0, RC_BIT(0) | RC_BIT(5), RC_BIT(0) | RC_BIT(5), NULL),
         RC_F_INT("fct_IDff", &t->fct_ff, 0, RC_FF_NONNEG),
         RC_F_INT("fct_IDfv", &t->fct_fv, 0, RC_FF_NONNEG),
-        RC_F_REAL("Ascalef", &t->ascalef, 1, RC_FF_ZDEF | RC_FF_POS),
-        RC_F_REAL("Ascalev", &t->ascalev, 1, RC_FF_ZDEF | RC_FF_POS)};
+        RC_F_REALD("Ascalef", &t->ascalef, 1, RC_FF_ZDEF | RC_FF_POS, RC_D_F),
+        RC_F_REALD("Ascalev", &t->ascalev, 1, RC_FF_ZDEF | RC_FF_POS, RC_D_V)};
     rc_field l4[] = {
         RC_F_INT("fct_IDld", &t->fct_ld, 0, RC_FF_POS),
         RC_F_SET("Iform", &t->iform, 0, 0, 0x7u, 0x7u, NULL),
-        RC_F_REAL("Ascalex", &t->ascalex, 1, RC_FF_ZDEF | RC_FF_POS),
-        RC_F_REAL("FscaleId", &t->fscaleld, 1, RC_FF_ZDEF),
+        RC_F_REALD("Ascalex", &t->ascalex, 1, RC_FF_ZDEF | RC_FF_POS, RC_D_L),
+        RC_F_REALD("FscaleId", &t->fscaleld, 1, RC_FF_ZDEF, RC_D_F),
         RC_F_SET("Icor", &t->icor, 0, 0, 0x3u, 0x3u, NULL)};
     rc_field l5[] = {
         RC_F_INT("fct_IDul", &t->fct_ul, 0, RC_FF_NONNEG),
         RC_F_SKIP(10),
-        RC_F_REAL("Stiff", &t->stiff, 0, RC_FF_NONNEG),
-        RC_F_REAL("Fscaleul", &t->fscaleul, 1, RC_FF_ZDEF)};
+        RC_F_REALD("Stiff", &t->stiff, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("Fscaleul", &t->fscaleul, 1, RC_FF_ZDEF, RC_D_F)};
     rc_field l6[] = {
-        RC_F_REAL("Visc", &t->visc, 0, RC_FF_NONNEG),
+        RC_F_REALD("Visc", &t->visc, 0, RC_FF_NONNEG, RC_D_C),
         RC_F_INT("fct_IDdv", &t->fct_dv, 0, RC_FF_NONNEG),
         RC_F_INT("fct_IDdf", &t->fct_df, 0, RC_FF_NONNEG),
-        RC_F_REAL("Fscalev", &t->fscalev, 1, RC_FF_ZDEF)};
+        RC_F_REALD("Fscalev", &t->fscalev, 1, RC_FF_ZDEF, RC_D_F)};
+    /* older layouts: the lines as their versions wrote them (the fields they
+     * lack keep their defaults) */
+    rc_field o2[] = {
+        RC_F_SKIP(20),
+        RC_F_REALD("Fric", &t->fric, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("Gap", &t->gap, 0, RC_FF_NONNEG, RC_D_L),
+        RC_F_REALD("Tstart", &t->tstart, 0, 0, RC_D_T),
+        RC_F_REALD("Tstop", &t->tstop, RC_DEF_TSTOP, RC_FF_ZDEF, RC_D_T)};
+    rc_field o3[] = {RC_F_SKIP(10), l3[1], l3[2]};
+    rc_field o4_100[] = {l4[0], l4[1], l4[2], l4[3]};
+    rc_field o4_51[] = {l4[0], RC_F_SKIP(10), l4[2], l4[3]};
+    rc_field o1_44[] = {RC_F_INTW("surf_ID1", &t->surf1, 0, RC_FF_POS, 8),
+                        RC_F_INTW("surf_ID2", &t->surf2, 0, RC_FF_POS, 8)};
+    rc_field o2_44[] = {
+        RC_F_REALW("Scale", &t->sfric, 0, RC_FF_NONNEG, 16, RC_D_F),
+        RC_F_REALW("Fric", &t->fric, 0, RC_FF_NONNEG, 16, RC_D_NONE),
+        RC_F_REALW("Gap", &t->gap, 0, RC_FF_NONNEG, 16, RC_D_L),
+        RC_F_REALW("Tstart", &t->tstart, 0, 0, 16, RC_D_T),
+        RC_F_REALW("Tstop", &t->tstop, RC_DEF_TSTOP, RC_FF_ZDEF, 16, RC_D_T)};
+    rc_field o3_44[] = {RC_F_INTW("fct_ID", &t->fct_ld, 0, RC_FF_POS, 8), l3[1], l3[2]};
+    o3_44[1].width = o3_44[2].width = 8;
     rc_field *lines[6] = {l1, l2, l3, l4, l5, l6};
-    const int nf[6] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5), RC_NF(l6)};
-
-    /* the six lines, each with its location */
+    int nf[6] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5), RC_NF(l6)};
+    if (nl < 6) { lines[1] = o2; nf[1] = RC_NF(o2); lines[2] = o3; nf[2] = RC_NF(o3); }
+    if (nl == 5) { lines[3] = o4_100; nf[3] = RC_NF(o4_100); }
+    if (nl == 4) { lines[3] = o4_51; nf[3] = RC_NF(o4_51); }
+    if (nl == 3) {
+        lines[0] = o1_44; nf[0] = RC_NF(o1_44);
+        lines[1] = o2_44; nf[1] = RC_NF(o2_44);
+        lines[2] = o3_44; nf[2] = RC_NF(o3_44);
+    }
+    /* the lines, each with its location; the lines a layout lacks take the
+     * defaults (an older layout's missing fields) at its last line */
+    static const rc_line blank = {"", 0, {NULL, 0}};
     for (int k = 0; k < 6; k++) {
+        if (k >= nl) {
+            /* the fields of lines 4-6 the older layout lacks: defaults */
+            t->line_loc[k] = t->line_loc[nl - 1];
+            if (k == 3 && nl == 3) {
+                rc_field d4[] = {l4[1], l4[2], l4[3], l4[4]};
+                if ((st = rc_parse_line(rd, b, &blank, d4, RC_NF(d4)))) return st;
+                continue;
+            }
+            if ((st = rc_parse_line(rd, b, &blank, lines[k], nf[k]))) return st;
+            continue;
+        }
         t->line_loc[k] = b->lines[k + 1].loc;
         if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
     }
+    /* the fields of lines 2-4 that older layouts lack: defaults */
+    if (nl < 6) {
+        rc_field d3[] = {l3[3], l3[4], l3[5], l3[6], l3[7]};
+        if ((st = rc_parse_line(rd, b, &blank, d3, RC_NF(d3)))) return st;
+        t->sfric = nl == 3 ? t->sfric : 0;
+        rc_field d4[] = {l4[4]};
+        if ((st = rc_parse_line(rd, b, &blank, d4, RC_NF(d4)))) return st;
+        if (nl == 4) t->iform = 0;
+    }
     if (t->tstop < t->tstart)
         return rc_case_fail(rd, &t->line_loc[1], b->name, "Tstop",
-                            "expected Tstop >= Tstart = %.15g, got %s", t->tstart, l2[4].got);
-    /* the elasto-plastic laws move between the curves with slope Stiff */
-    if (t->iform != 0 && !(t->stiff > 0))
-        return rc_case_fail(rd, &t->line_loc[4], b->name, "Stiff",
-                            "expected a positive stiffness [N/m]: Stiff is required for Iform = %d, got %s",
-                            t->iform, l5[2].got);
+                            "expected Tstop >= Tstart = %.15g, got %s", t->tstart, lines[1][nf[1] - 1].got);
+    /* the elasto-plastic laws move between the curves with slope Stiff;
+     * without it Radioss uses the nonlinear elastic law (Iform 0) */
+    if (t->iform != 0 && !(t->stiff > 0)) {
+        if ((st = rc_case_warn(rd, &t->line_loc[4],
+                               "card %s: Iform = %d with Stiff = 0 (%s) read as Iform = 0 "
+                               "(nonlinear elastic), as Radioss does",
+                               b->name, t->iform, l5[2].blank ? "blank" : "0")))
+            return st;
+        t->iform = 0;
+    }
     return rc_note_id(rd, RC_IDK_INTER, t->id, &t->loc, b->hdr->text);
 }
 
@@ -137,16 +201,16 @@ rc_status rc_card_power(rc_reader *rd, const rc_block *b)
                      RC_F_SET("Ispline", &p->ispline, RC_SPL_DEFAULT, RC_FF_ZDEF, 0x1Fu, 0, NULL),
                      RC_F_SET("Irdf", &p->irdf, 1, RC_FF_ZDEF, 0x7u, 0, NULL)};
     /* exponents: blank is the default, an explicit 0 is 0 */
-    rc_field l2[] = {RC_F_REAL("K", &p->k, 0, RC_FF_NONNEG), RC_F_REAL("m1", &p->m1, RC_PW_DEF_M1, RC_FF_NONNEG),
-                     RC_F_REAL("C", &p->c, 0, RC_FF_NONNEG), RC_F_REAL("m2", &p->m2, RC_PW_DEF_M2, RC_FF_NONNEG),
-                     RC_F_REAL("m3", &p->m3, RC_PW_DEF_M3, RC_FF_NONNEG)};
-    rc_field l3[] = {RC_F_REAL("RDF", &p->rdf, RC_PW_DEF_RDF, zp), RC_F_REAL("Dreg", &p->dreg, RC_PW_DEF_DREG, RC_FF_ZDEF | RC_FF_NONNEG),
-                     RC_F_REAL("Vreg", &p->vreg, RC_PW_DEF_VREG, RC_FF_ZDEF | RC_FF_NONNEG), RC_F_REAL("Tstart", &p->tstart, 0, 0),
-                     RC_F_REAL("Tstop", &p->tstop, RC_PW_DEF_TSTOP, RC_FF_ZDEF)};
-    rc_field l4[] = {RC_F_REAL("mu_s", &p->mus, 0, RC_FF_NONNEG), RC_F_REAL("v_s", &p->vs, 0, RC_FF_NONNEG),
-                     RC_F_REAL("mu_d", &p->mud, 0, RC_FF_NONNEG), RC_F_REAL("v_d", &p->vd, 0, RC_FF_NONNEG),
-                     RC_F_REAL("f_max", &p->fmax, 0, RC_FF_NONNEG)};
-    rc_field l5[] = {RC_F_REAL("Kt", &p->kt, 0, RC_FF_NONNEG)};
+    rc_field l2[] = {RC_F_REAL("K", &p->k, 0, RC_FF_NONNEG), RC_F_REALD("m1", &p->m1, RC_PW_DEF_M1, RC_FF_NONNEG, RC_D_NONE),
+                     RC_F_REAL("C", &p->c, 0, RC_FF_NONNEG), RC_F_REALD("m2", &p->m2, RC_PW_DEF_M2, RC_FF_NONNEG, RC_D_NONE),
+                     RC_F_REALD("m3", &p->m3, RC_PW_DEF_M3, RC_FF_NONNEG, RC_D_NONE)};
+    rc_field l3[] = {RC_F_REALD("RDF", &p->rdf, RC_PW_DEF_RDF, zp, RC_D_NONE), RC_F_REALD("Dreg", &p->dreg, RC_PW_DEF_DREG, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_L),
+                     RC_F_REALD("Vreg", &p->vreg, RC_PW_DEF_VREG, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_V), RC_F_REALD("Tstart", &p->tstart, 0, 0, RC_D_T),
+                     RC_F_REALD("Tstop", &p->tstop, RC_PW_DEF_TSTOP, RC_FF_ZDEF, RC_D_T)};
+    rc_field l4[] = {RC_F_REALD("mu_s", &p->mus, 0, RC_FF_NONNEG, RC_D_NONE), RC_F_REALD("v_s", &p->vs, 0, RC_FF_NONNEG, RC_D_V),
+                     RC_F_REALD("mu_d", &p->mud, 0, RC_FF_NONNEG, RC_D_NONE), RC_F_REALD("v_d", &p->vd, 0, RC_FF_NONNEG, RC_D_V),
+                     RC_F_REALD("f_max", &p->fmax, 0, RC_FF_NONNEG, RC_D_F)};
+    rc_field l5[] = {RC_F_REALD("Kt", &p->kt, 0, RC_FF_NONNEG, RC_D_K)};
     rc_field *lines[5] = {l1, l2, l3, l4, l5};
     const int nf[5] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5)};
     /* absent optional lines take their defaults, like blank ones */
@@ -157,6 +221,14 @@ rc_status rc_card_power(rc_reader *rd, const rc_block *b)
         if ((st = rc_parse_line(rd, b, ln, lines[k], nf[k]))) return st;
     }
 
+    /* spline tables of physical values have no scale factors: they cannot
+     * be converted from other units */
+    if (rc_units_convert(rd) && (p->fct_stiff || p->fct_damp))
+        return rc_case_fail(rd, &p->line_loc[0], b->name, p->fct_stiff ? "fct_stiff" : "fct_damp",
+                            "the deck's units are not SI: a spline /FUNCT of forces has no scale "
+                            "factor to convert it; write this card and its functions in kg, m, s, "
+                            "got %s",
+                            p->fct_stiff ? l1[2].got : l1[3].got);
     /* the stiffness term must exist; the splines replace K and C */
     if (p->fct_stiff == 0 && !(p->k > 0))
         return rc_case_fail(rd, &p->line_loc[1], b->name, "K",

@@ -50,7 +50,10 @@ rc_status rc_card_funct(rc_reader *rd, const rc_block *b)
     /* the points, abscissae strictly increasing */
     for (int i = 0; i < nd; i++) {
         const rc_line *ln = &b->lines[i + 1];
-        rc_field f[] = {RC_F_REAL("X", &fn->x[i], 0, 0), RC_F_REAL("Y", &fn->y[i], 0, 0)};
+        /* 20-character columns; 16 in Radioss 4.x */
+        const int w = rc_layout_version(rd) >= 51 ? 20 : 16;
+        rc_field f[] = {RC_F_REALW("X", &fn->x[i], 0, 0, w, RC_D_NONE),
+                        RC_F_REALW("Y", &fn->y[i], 0, 0, w, RC_D_NONE)};
         if ((st = rc_parse_line(rd, b, ln, f, RC_NF(f)))) return st;
         if (i > 0 && !(fn->x[i] > fn->x[i - 1]))
             return rc_case_fail(rd, &ln->loc, b->name, "X",
@@ -79,18 +82,36 @@ rc_status rc_card_inivel(rc_reader *rd, const rc_block *b)
     v->id = b->id;
     v->rot = strcmp(b->kw[1], "ROT") == 0;
     v->loc = b->hdr->loc;
-    if ((st = rc_card_lines(rd, b, title, 1, 1, "Vx Vy Vz grnod_ID skew_ID", &nd))) return st;
+    /* Radioss 2025 adds an optional line: Tstart sens_ID */
+    const int ver = rc_layout_version(rd);
+    if ((st = rc_card_lines(rd, b, title, 1, ver >= 2025 ? 2 : 1,
+                            ver >= 2025 ? "Vx Vy Vz grnod_ID skew_ID[, Tstart sens_ID]"
+                                        : "Vx Vy Vz grnod_ID skew_ID",
+                            &nd)))
+        return st;
 
-    rc_field f[] = {RC_F_REAL("Vx", &v->v[0], 0, 0), RC_F_REAL("Vy", &v->v[1], 0, 0),
-                    RC_F_REAL("Vz", &v->v[2], 0, 0),
-                    RC_F_INT("grnod_ID", &v->grnod_id, 0, RC_FF_NONNEG),
+    /* 20- and 10-character fields; 16 and 8 in Radioss 4.x */
+    const int wr = ver >= 51 ? 20 : 16, wi = ver >= 51 ? 10 : 8;
+    const int dv = v->rot ? RC_D_W : RC_D_V;
+    rc_field f[] = {RC_F_REALW("Vx", &v->v[0], 0, 0, wr, dv), RC_F_REALW("Vy", &v->v[1], 0, 0, wr, dv),
+                    RC_F_REALW("Vz", &v->v[2], 0, 0, wr, dv),
+                    RC_F_INTW("grnod_ID", &v->grnod_id, 0, RC_FF_NONNEG, wi),
                     RC_F_INTN("skew_ID", &v->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew)};
+    f[4].width = wi;
     if ((st = rc_parse_line(rd, b, &b->lines[1], f, RC_NF(f)))) return st;
+    if (nd >= 2) {
+        double tstart = 0;
+        int sens = 0;
+        rc_field f2[] = {RC_F_REALD("Tstart", &tstart, 0, RC_FF_ONLY0, RC_D_T),
+                         RC_F_INTN("sens_ID", &sens, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_sensor)};
+        f2[0].note = "(a later start of the initial velocity)";
+        if ((st = rc_parse_line(rd, b, &b->lines[2], f2, RC_NF(f2)))) return st;
+    }
     return rc_note_id(rd, RC_IDK_INIVEL, v->id, &v->loc, b->hdr->text);
 }
 
-/* /GRAV/grav_ID: title; fct_IDT DIR skew_ID sensor_ID grnod_ID Ascale_x
- * Fscale_y. */
+/* /GRAV/grav_ID: title; fct_IDT DIR skew_ID sensor_ID grnod_ID (unused)
+ * Ascale_x Fscale_y (Radioss 5.1 and later: Ascale_x in columns 61-80). */
 rc_status rc_card_grav(rc_reader *rd, const rc_block *b)
 {
     rc_case *c = rd->c;
@@ -111,9 +132,20 @@ rc_status rc_card_grav(rc_reader *rd, const rc_block *b)
                     RC_F_INTN("skew_ID", &g->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew),
                     RC_F_INTN("sensor_ID", &g->sensor_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_sensor),
                     RC_F_INT("grnod_ID", &g->grnod_id, 0, RC_FF_NONNEG),
-                    RC_F_REAL("Ascale_x", &g->ascale, 1, RC_FF_ZDEF | RC_FF_POS),
-                    RC_F_REAL("Fscale_y", &g->fscale, 1, RC_FF_ZDEF)};
-    if ((st = rc_parse_line(rd, b, &b->lines[1], f, RC_NF(f)))) return st;
+                    RC_F_SKIP(10),
+                    RC_F_REALD("Ascale_x", &g->ascale, 1, RC_FF_ZDEF | RC_FF_POS, RC_D_T),
+                    RC_F_REALD("Fscale_y", &g->fscale, 1, RC_FF_ZDEF, RC_D_ACC)};
+    /* Radioss 4.x: fct_IDT DIR skew_ID sensor_ID (8 characters) Scale (16)
+     * grnod_ID (8); no abscissa scale */
+    rc_field f44[] = {RC_F_INTW("fct_IDT", &g->fct_id, 0, RC_FF_NONNEG, 8),
+                      RC_F_STR("DIR", dir, 8), f[2], f[3],
+                      RC_F_REALW("Scale", &g->fscale, 1, RC_FF_ZDEF, 16, RC_D_ACC),
+                      RC_F_INTW("grnod_ID", &g->grnod_id, 0, RC_FF_NONNEG, 8)};
+    f44[2].width = f44[3].width = 8;
+    const int old = rc_layout_version(rd) < 51;
+    g->ascale = 1;
+    if ((st = rc_parse_line(rd, b, &b->lines[1], old ? f44 : f, old ? RC_NF(f44) : RC_NF(f))))
+        return st;
 
     /* DIR: one letter, either case, anywhere in its columns */
     const char *p = strchr("XYZxyz", dir[0]);
@@ -151,9 +183,12 @@ rc_status rc_card_bcs(rc_reader *rd, const rc_block *b)
     x->loc = b->hdr->loc;
     if ((st = rc_card_lines(rd, b, title, 1, 1, "Trarot skew_ID grnod_ID", &nd))) return st;
 
+    /* 10-character fields; 8 in Radioss 4.x */
+    const int w = rc_layout_version(rd) >= 51 ? 10 : 8;
     rc_field f[] = {RC_F_STR("Trarot", tr, 10),
                     RC_F_INTN("skew_ID", &x->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew),
-                    RC_F_INT("grnod_ID", &x->grnod_id, 0, RC_FF_NONNEG)};
+                    RC_F_INTW("grnod_ID", &x->grnod_id, 0, RC_FF_NONNEG, w)};
+    f[0].width = f[1].width = w;
     if ((st = rc_parse_line(rd, b, &b->lines[1], f, RC_NF(f)))) return st;
     if (!rc_trarot(tr, x->fix))
         return rc_case_fail(rd, &b->lines[1].loc, b->name, "Trarot",
@@ -195,12 +230,34 @@ rc_status rc_card_impvel(rc_reader *rd, const rc_block *b)
                      RC_F_INT("grnod_ID", &v->grnod_id, 0, RC_FF_POS),
                      RC_F_INTN("frame_ID", &v->frame_id, RC_FF_NONNEG | RC_FF_ONLY0, "(moving frames)"),
                      RC_F_INTN("Icoor", &v->icoor, RC_FF_NONNEG | RC_FF_ONLY0, "(cylindrical coordinates)")};
-    rc_field l2[] = {RC_F_REAL("Ascale_x", &v->ascale, 1, RC_FF_ZDEF | RC_FF_POS),
-                     RC_F_REAL("Fscale_y", &v->fscale, 1, RC_FF_ZDEF), RC_F_REAL("Tstart", &v->tstart, 0, 0),
-                     RC_F_REAL("Tstop", &v->tstop, RC_PW_DEF_TSTOP, RC_FF_ZDEF)};
+    /* the velocity scale: m/s (X, Y, Z) or rad/s (XX, YY, ZZ, known once
+     * line 1 is read) */
+    rc_field l2[] = {RC_F_REALD("Ascale_x", &v->ascale, 1, RC_FF_ZDEF | RC_FF_POS, RC_D_T),
+                     RC_F_REALD("Fscale_y", &v->fscale, 1, RC_FF_ZDEF, RC_D_V),
+                     RC_F_REALD("Tstart", &v->tstart, 0, 0, RC_D_T),
+                     RC_F_REALD("Tstop", &v->tstop, RC_PW_DEF_TSTOP, RC_FF_ZDEF, RC_D_T)};
     static const rc_line blank = {"", 0, {NULL, 0}};
-    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
-    if ((st = rc_parse_line(rd, b, nd >= 2 ? &b->lines[2] : &blank, l2, RC_NF(l2)))) return st;
+    if (rc_layout_version(rd) < 51) {
+        /* Radioss 4.x: 8-character fields; Scale Tstart Tstop (16) */
+        for (int k = 0; k < RC_NF(l1); k++) l1[k].width = 8;
+        rc_field o2[] = {RC_F_REALW("Scale", &v->fscale, 1, RC_FF_ZDEF, 16, RC_D_V),
+                         RC_F_REALW("Tstart", &v->tstart, 0, 0, 16, RC_D_T),
+                         RC_F_REALW("Tstop", &v->tstop, RC_PW_DEF_TSTOP, RC_FF_ZDEF, 16, RC_D_T)};
+        if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1) - 1))) return st;
+        o2[0].dim = strlen(dir) == 2 ? RC_D_W : RC_D_V;
+        if ((st = rc_parse_line(rd, b, nd >= 2 ? &b->lines[2] : &blank, o2, RC_NF(o2)))) return st;
+        rc_field d[] = {l1[6], l2[0]};
+        if ((st = rc_parse_line(rd, b, &blank, d, RC_NF(d)))) return st;
+        l2[2] = o2[1];
+        l2[3] = o2[2];
+    } else {
+        /* Icoor (61-70) exists from Radioss 12.0 on */
+        const int nl1 = rc_layout_version(rd) >= 120 ? RC_NF(l1) : RC_NF(l1) - 1;
+        if ((st = rc_parse_line(rd, b, &b->lines[1], l1, nl1))) return st;
+        if (nl1 < RC_NF(l1) && (st = rc_parse_line(rd, b, &blank, &l1[nl1], 1))) return st;
+        l2[1].dim = strlen(dir) == 2 ? RC_D_W : RC_D_V;
+        if ((st = rc_parse_line(rd, b, nd >= 2 ? &b->lines[2] : &blank, l2, RC_NF(l2)))) return st;
+    }
 
     /* Dir: X Y Z XX YY ZZ, either case, anywhere in its columns */
     v->dir = -1;

@@ -44,10 +44,10 @@ rc_status rc_card_plane(rc_reader *rd, const rc_block *b)
     if ((st = rc_card_lines(rd, b, s->title, 2, 3, "XM YM ZM, XM1 YM1 ZM1", &nd))) return st;
 
     /* M, M1 and the optional carrying body */
-    rc_field l1[] = {RC_F_REAL("XM", &s->m[0], 0, 0), RC_F_REAL("YM", &s->m[1], 0, 0),
-                     RC_F_REAL("ZM", &s->m[2], 0, 0)};
-    rc_field l2[] = {RC_F_REAL("XM1", &s->m1[0], 0, 0), RC_F_REAL("YM1", &s->m1[1], 0, 0),
-                     RC_F_REAL("ZM1", &s->m1[2], 0, 0)};
+    rc_field l1[] = {RC_F_REALD("XM", &s->m[0], 0, 0, RC_D_L), RC_F_REALD("YM", &s->m[1], 0, 0, RC_D_L),
+                     RC_F_REALD("ZM", &s->m[2], 0, 0, RC_D_L)};
+    rc_field l2[] = {RC_F_REALD("XM1", &s->m1[0], 0, 0, RC_D_L), RC_F_REALD("YM1", &s->m1[1], 0, 0, RC_D_L),
+                     RC_F_REALD("ZM1", &s->m1[2], 0, 0, RC_D_L)};
     rc_field l3[] = {RC_F_INT("rbody_ID", &s->rbody_id, 0, RC_FF_NONNEG)};
     if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
     if ((st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
@@ -78,10 +78,10 @@ rc_status rc_card_ellips(rc_reader *rd, const rc_block *b)
     rc_field l1[] = {RC_F_INTN("skew_ID", &s->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew),
                      RC_F_INT("n", &s->degree, 2, RC_FF_ZDEF | RC_FF_POS),
                      RC_F_INT("rbody_ID", &s->rbody_id, 0, RC_FF_NONNEG)};
-    rc_field l2[] = {RC_F_REAL("Xc", &s->c[0], 0, 0), RC_F_REAL("Yc", &s->c[1], 0, 0),
-                     RC_F_REAL("Zc", &s->c[2], 0, 0)};
-    rc_field l3[] = {RC_F_REAL("a", &s->abc[0], 0, RC_FF_POS), RC_F_REAL("b", &s->abc[1], 0, RC_FF_POS),
-                     RC_F_REAL("c", &s->abc[2], 0, RC_FF_POS)};
+    rc_field l2[] = {RC_F_REALD("Xc", &s->c[0], 0, 0, RC_D_L), RC_F_REALD("Yc", &s->c[1], 0, 0, RC_D_L),
+                     RC_F_REALD("Zc", &s->c[2], 0, 0, RC_D_L)};
+    rc_field l3[] = {RC_F_REALD("a", &s->abc[0], 0, RC_FF_POS, RC_D_L), RC_F_REALD("b", &s->abc[1], 0, RC_FF_POS, RC_D_L),
+                     RC_F_REALD("c", &s->abc[2], 0, RC_FF_POS, RC_D_L)};
     if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
     if ((st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
     if ((st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
@@ -117,11 +117,11 @@ rc_status rc_card_cyl(rc_reader *rd, const rc_block *b)
     rc_field l1[] = {RC_F_INT("rbody_ID", &s->rbody_id, 0, RC_FF_NONNEG),
                      RC_F_SET("Iend", &s->ends, 0, 0, 0x3u, 0, NULL),
                      RC_F_SET("Icont", &s->cmode, 0, 0, 0x3u, 0, NULL)};
-    rc_field l2[] = {RC_F_REAL("Xc", &s->c[0], 0, 0), RC_F_REAL("Yc", &s->c[1], 0, 0),
-                     RC_F_REAL("Zc", &s->c[2], 0, 0)};
-    rc_field l3[] = {RC_F_REAL("AX", &s->axis[0], 0, 0), RC_F_REAL("AY", &s->axis[1], 0, 0),
-                     RC_F_REAL("AZ", &s->axis[2], 0, 0)};
-    rc_field l4[] = {RC_F_REAL("R", &s->abc[0], 0, RC_FF_POS), RC_F_REAL("L", &s->length, 0, RC_FF_POS)};
+    rc_field l2[] = {RC_F_REALD("Xc", &s->c[0], 0, 0, RC_D_L), RC_F_REALD("Yc", &s->c[1], 0, 0, RC_D_L),
+                     RC_F_REALD("Zc", &s->c[2], 0, 0, RC_D_L)};
+    rc_field l3[] = {RC_F_REALD("AX", &s->axis[0], 0, 0, RC_D_NONE), RC_F_REALD("AY", &s->axis[1], 0, 0, RC_D_NONE),
+                     RC_F_REALD("AZ", &s->axis[2], 0, 0, RC_D_NONE)};
+    rc_field l4[] = {RC_F_REALD("R", &s->abc[0], 0, RC_FF_POS, RC_D_L), RC_F_REALD("L", &s->length, 0, RC_FF_POS, RC_D_L)};
     if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
     if ((st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
     if ((st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
@@ -145,14 +145,14 @@ rc_status rc_card_box(rc_reader *rd, const rc_block *b)
         return st;
 
     rc_field l1[] = {RC_F_INT("rbody_ID", &s->rbody_id, 0, RC_FF_NONNEG)};
-    rc_field l2[] = {RC_F_REAL("Xc", &s->c[0], 0, 0), RC_F_REAL("Yc", &s->c[1], 0, 0),
-                     RC_F_REAL("Zc", &s->c[2], 0, 0)};
-    rc_field l3[] = {RC_F_REAL("a", &s->abc[0], 0, RC_FF_POS), RC_F_REAL("b", &s->abc[1], 0, RC_FF_POS),
-                     RC_F_REAL("c", &s->abc[2], 0, RC_FF_POS)};
-    rc_field l4[] = {RC_F_REAL("UX", &s->axis[0], 0, 0), RC_F_REAL("UY", &s->axis[1], 0, 0),
-                     RC_F_REAL("UZ", &s->axis[2], 0, 0)};
-    rc_field l5[] = {RC_F_REAL("VX", &s->axis2[0], 0, 0), RC_F_REAL("VY", &s->axis2[1], 0, 0),
-                     RC_F_REAL("VZ", &s->axis2[2], 0, 0)};
+    rc_field l2[] = {RC_F_REALD("Xc", &s->c[0], 0, 0, RC_D_L), RC_F_REALD("Yc", &s->c[1], 0, 0, RC_D_L),
+                     RC_F_REALD("Zc", &s->c[2], 0, 0, RC_D_L)};
+    rc_field l3[] = {RC_F_REALD("a", &s->abc[0], 0, RC_FF_POS, RC_D_L), RC_F_REALD("b", &s->abc[1], 0, RC_FF_POS, RC_D_L),
+                     RC_F_REALD("c", &s->abc[2], 0, RC_FF_POS, RC_D_L)};
+    rc_field l4[] = {RC_F_REALD("UX", &s->axis[0], 0, 0, RC_D_NONE), RC_F_REALD("UY", &s->axis[1], 0, 0, RC_D_NONE),
+                     RC_F_REALD("UZ", &s->axis[2], 0, 0, RC_D_NONE)};
+    rc_field l5[] = {RC_F_REALD("VX", &s->axis2[0], 0, 0, RC_D_NONE), RC_F_REALD("VY", &s->axis2[1], 0, 0, RC_D_NONE),
+                     RC_F_REALD("VZ", &s->axis2[2], 0, 0, RC_D_NONE)};
     if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
     if ((st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
     if ((st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;

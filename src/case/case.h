@@ -265,6 +265,7 @@ struct rc_case {
     char title[101];     /* run name from /BEGIN (or empty) */
     char unit_mass[21], unit_length[21], unit_time[21]; /* from /BEGIN, "" if absent */
     unsigned long checksum; /* FNV-1a 64 of the main file's bytes */
+    int invers;          /* Radioss input version from /BEGIN (e.g. 2022, 140, 90); 0: none */
 
     int nfiles; char **files; /* every file read (main + includes); rc_loc.file points here */
 

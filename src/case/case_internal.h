@@ -5,11 +5,14 @@
  * Nothing outside src/case includes it.
  *
  * Reading happens in three passes:
- *  1. lex: every file (main + #include) is read whole, split into lines,
- *     comments dropped, and appended to one flat list of lines, each with its
- *     file:line; /END stops the lexing.
+ *  1. lex: every file (main + #include, then a Radioss engine file
+ *     NAME_0001.rad next to a starter NAME_0000.rad) is read whole, split
+ *     into lines, comments dropped, and appended to one flat list of lines,
+ *     each with its file:line; /END or #enddata ends the file it is in.
  *  2. blocks: the flat list is cut at header lines ("/KEYWORD...") into
- *     blocks; each block is dispatched to its card function.
+ *     blocks; /BEGIN and /UNIT are read first (version and units), then
+ *     each other block is dispatched to its card function. An input error
+ *     ends its card; reading goes on up to RC_CASE_MAX_ERRORS errors.
  *  3. checks over the whole deck: duplicate ids, the required /RUN.
  *
  * Data lines are parsed through field tables (rc_field): each card function
@@ -30,6 +33,9 @@
 #define RC_CASE_MAX_FILE_READS 4096      /* files opened per deck         */
 #define RC_CASE_MAX_BYTES (256L << 20)   /* bytes read per deck, all files */
 #define RC_CASE_TITLE_MAX 100            /* title characters              */
+#define RC_CASE_INERTIA_RTOL 1e-12       /* PD test: pivot > rtol * diagonal */
+#define RC_CASE_MAX_ERRORS 20            /* input errors reported per run  */
+#define RC_CASE_MAX_ERROR_CHARS 380      /* characters of each error after the first */
 
 /* One line of the deck, after comment removal. `text` is NUL-terminated,
  * trailing blanks and CR removed; it points into a file buffer. */
@@ -83,7 +89,8 @@ typedef struct rc_reader {
     int capfiles;
     struct { dev_t dev; ino_t ino; } stack[RC_CASE_MAX_INCLUDE_DEPTH + 1];
     int depth;                                /* include stack              */
-    int ended;                                /* /END seen                  */
+    int file_ended;                           /* /END or #enddata seen in the
+                                                 file being lexed           */
     int main_last_line;                       /* for deck-level messages    */
     long main_bytes;                          /* size of the main file      */
 
@@ -94,6 +101,23 @@ typedef struct rc_reader {
     int nids[RC_IDK_COUNT], capids[RC_IDK_COUNT];
     int seq;
     const rc_line *begin_hdr, *run_hdr, *solver_hdr; /* single cards */
+    const rc_line *engine_run_hdr;            /* Radioss engine /RUN/name/n */
+    double engine_tstop;                      /* its Tstop [s]              */
+    const rc_line *anim_dt_hdr;               /* engine /ANIM/DT            */
+    double anim_dt;                           /* its Tfreq [s]              */
+    int engine_pass;                          /* lexing the engine file     */
+    /* unit systems: /BEGIN's input units (index -1) and the /UNIT cards */
+    double begin_units[3];                    /* kg, m, s values; 1 if blank */
+    struct rc_unitsys { int id; double f[3]; rc_loc loc; } *units;
+    int nunits, capunits;
+    const double *cur_units;                  /* the card being read's system */
+    int converted;                            /* some system is not SI       */
+    int nerrors;                              /* input errors so far        */
+    char *more;                               /* errors after the first, "\n"
+                                                 before each (malloc)       */
+    struct { char kw[24]; int warning, count; } skipped[64]; /* cards skipped
+                                                 with one warning per kind */
+    int nskipped;
 } rc_reader;
 
 /* ---- Field tables ----------------------------------------------------- */
@@ -116,6 +140,7 @@ typedef struct rc_field {
     unsigned flags;
     unsigned valid;    /* ints: bit k set = k allowed (0: no set check) */
     unsigned supp;     /* ints: bit k set = k supported (0: all) */
+    int dim;           /* reals: RC_DIM of the value (0: unknown) */
     const char *note;  /* explains a "not supported yet" */
     /* filled by rc_parse_line */
     int blank;
@@ -132,6 +157,19 @@ typedef struct rc_field {
     { .name = (nm), .width = 10, .type = RC_FT_INT, .out = (p), .def = (d), .flags = (fl), \
       .valid = (v), .supp = (s), .note = (nt) }
 #define RC_F_SKIP(w) { .name = "blank", .width = (w), .type = RC_FT_SKIP }
+/* A real with its dimension (converted from the card's unit system to SI). */
+#define RC_F_REALD(nm, p, d, fl, dm) \
+    { .name = (nm), .width = 20, .type = RC_FT_REAL, .out = (p), .def = (d), .flags = (fl), .dim = (dm) }
+/* The same with a width of the older layouts (8-character integers,
+ * 16-character reals of Radioss 4.x). */
+#define RC_F_INTW(nm, p, d, fl, w) \
+    { .name = (nm), .width = (w), .type = RC_FT_INT, .out = (p), .def = (d), .flags = (fl) }
+#define RC_F_REALW(nm, p, d, fl, w, dm)                                                 \
+    { .name = (nm), .width = (w), .type = RC_FT_REAL, .out = (p), .def = (d), .flags = (fl), \
+      .dim = (dm) }
+#define RC_F_SETW(nm, p, d, fl, v, s, nt, w)                                          \
+    { .name = (nm), .width = (w), .type = RC_FT_INT, .out = (p), .def = (d), .flags = (fl), \
+      .valid = (v), .supp = (s), .note = (nt) }
 #define RC_F_STR(nm, buf, w) \
     { .name = (nm), .width = (w), .type = RC_FT_STR, .out = (buf), .cap = sizeof(buf) }
 
@@ -178,6 +216,47 @@ rc_status rc_note_id(rc_reader *rd, rc_id_kind kind, int id, const rc_loc *loc,
 /* Append a warning "FILE:LINE: msg" to c->warnings. */
 rc_status rc_case_warn(rc_reader *rd, const rc_loc *loc, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+
+/* ---- Units (units.c) -------------------------------------------------- */
+
+/* Dimension of a real field: exponents of mass, length, time (-8..7).
+ * 0 is "unknown" (a value that is not 0 cannot be converted). */
+#define RC_DIM(m, l, t) ((1 << 12) | (((m) + 8) << 8) | (((l) + 8) << 4) | ((t) + 8))
+#define RC_D_NONE RC_DIM(0, 0, 0)   /* dimensionless, angles in degrees */
+#define RC_D_M RC_DIM(1, 0, 0)      /* kg */
+#define RC_D_L RC_DIM(0, 1, 0)      /* m */
+#define RC_D_T RC_DIM(0, 0, 1)      /* s */
+#define RC_D_AREA RC_DIM(0, 2, 0)   /* m^2 */
+#define RC_D_V RC_DIM(0, 1, -1)     /* m/s */
+#define RC_D_W RC_DIM(0, 0, -1)     /* rad/s, Hz */
+#define RC_D_ACC RC_DIM(0, 1, -2)   /* m/s^2 */
+#define RC_D_F RC_DIM(1, 1, -2)     /* N */
+#define RC_D_K RC_DIM(1, 0, -2)     /* N/m */
+#define RC_D_K2 RC_DIM(1, -1, -2)   /* N/m^2 */
+#define RC_D_K3 RC_DIM(1, -2, -2)   /* N/m^3 */
+#define RC_D_C RC_DIM(1, 0, -1)     /* N s/m */
+#define RC_D_J RC_DIM(1, 2, 0)      /* kg m^2 */
+#define RC_D_E RC_DIM(1, 2, -2)     /* J */
+#define RC_D_LIN RC_DIM(1, -1, 0)   /* kg/m */
+
+/* Value in kg (kind 0), m (1) or s (2) of a unit name of /BEGIN or /UNIT
+ * (or of a positive number, the unit's value in SI). 0: unknown name. */
+int rc_unit_factor(int kind, const char *name, double *si);
+/* The accepted names of a kind, for messages. */
+const char *rc_unit_names(int kind);
+/* Factor from a unit system (kg, m, s values of its units) to SI for a
+ * dimension. */
+double rc_dim_scale(int dim, const double f[3]);
+
+/* ---- Layouts by version (fields.c) ------------------------------------ */
+
+/* The newest Radioss version whose layouts ricochet reads (used when the
+ * deck has no /BEGIN version). */
+#define RC_LATEST_VERSION 2026
+/* The version that picks the layouts: /BEGIN Invers, else the newest. */
+int rc_layout_version(const rc_reader *rd);
+/* 1 when v is a Radioss version listed in docs/case-format.md. */
+int rc_layout_known(int v);
 
 /* ---- Card services (fields.c) ----------------------------------------- */
 
@@ -235,6 +314,14 @@ rc_status rc_card_impvel(rc_reader *rd, const rc_block *b);
 rc_status rc_card_begin(rc_reader *rd, const rc_block *b);
 rc_status rc_card_run(rc_reader *rd, const rc_block *b);
 rc_status rc_card_solver(rc_reader *rd, const rc_block *b);
+/* Radioss engine cards read for the run settings: /RUN/name/n[/letter]
+ * (Tstop) and /ANIM/DT (Tstart Tfreq). */
+rc_status rc_card_engine_run(rc_reader *rd, const rc_block *b);
+rc_status rc_card_anim_dt(rc_reader *rd, const rc_block *b);
+/* /UNIT/unit_ID (cards_run.c): title; MUNIT LUNIT TUNIT. */
+rc_status rc_card_unit(rc_reader *rd, const rc_block *b);
+/* 1 when the card being read has a unit system other than SI. */
+int rc_units_convert(const rc_reader *rd);
 /* Deck-level checks after the last card (/RUN present, defaults). */
 rc_status rc_cards_finish(rc_reader *rd);
 /* Defaults of the optional cards, set before reading. */

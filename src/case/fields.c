@@ -2,9 +2,10 @@
  * Services of the case stage shared by the reader and the card functions:
  * error and warning messages with file:line, growable arrays, block and
  * title helpers, number and field parsing (the field tables of
- * case_internal.h), card headers, duplicate-id notes. The lowest file of
- * src/case: it calls nothing else in the stage (reader.c reads the files
- * and blocks, cards.c dispatches them to the card families cards_*.c).
+ * case_internal.h), card headers and their unit systems, layouts by
+ * version, the conversion of values to SI, duplicate-id notes. It calls
+ * only units.c in the stage (reader.c reads the files and blocks, cards.c
+ * dispatches them to the card families cards_*.c).
  */
 #include "case/case_internal.h"
 #include "base/error.h"
@@ -39,11 +40,26 @@ rc_status rc_case_fail(rc_reader *rd, const rc_loc *loc, const char *card, const
     /* "FILE:LINE: card C, field F: msg", parts present when given */
     const char *file = loc && loc->file ? loc->file : "?";
     int line = loc ? loc->line : 0;
+    char full[2048];
     if (card && field)
-        return RC_SET(rd->err, RC_EINPUT, "%s:%d: card %s, field %s: %s", file, line, card,
-                      field, msg);
-    if (card) return RC_SET(rd->err, RC_EINPUT, "%s:%d: card %s: %s", file, line, card, msg);
-    return RC_SET(rd->err, RC_EINPUT, "%s:%d: %s", file, line, msg);
+        snprintf(full, sizeof full, "%s:%d: card %s, field %s: %s", file, line, card, field, msg);
+    else if (card) snprintf(full, sizeof full, "%s:%d: card %s: %s", file, line, card, msg);
+    else snprintf(full, sizeof full, "%s:%d: %s", file, line, msg);
+    /* the first error is the report; the next ones (up to RC_CASE_MAX_ERRORS)
+     * are kept for the end of the reading */
+    if (rd->nerrors++ == 0) return RC_SET(rd->err, RC_EINPUT, "%s", full);
+    if (rd->nerrors <= RC_CASE_MAX_ERRORS) {
+        size_t n = strlen(full), have = rd->more ? strlen(rd->more) : 0;
+        if (n > RC_CASE_MAX_ERROR_CHARS) n = RC_CASE_MAX_ERROR_CHARS;
+        char *m = realloc(rd->more, have + n + 2);
+        if (m) {
+            m[have] = '\n';
+            memcpy(m + have + 1, full, n);
+            m[have + 1 + n] = '\0';
+            rd->more = m;
+        }
+    }
+    return RC_EINPUT;
 }
 
 rc_status rc_case_nomem(rc_reader *rd)
@@ -281,6 +297,26 @@ static rc_status rc_check_real(rc_reader *rd, const rc_block *b, const rc_line *
     return RC_OK;
 }
 
+/* Dimensions of the fields of the cards whose tables do not give one
+ * (their fields use RC_F_REAL). */
+static int rc_known_dim(const rc_block *b, const char *name)
+{
+    static const struct { const char *kw, *name; int dim; } t[] = {
+        {"NODE", "X", RC_D_L},     {"NODE", "Y", RC_D_L},     {"NODE", "Z", RC_D_L},
+        {"RBODY", "Mass", RC_D_M}, {"RBODY", "Jxx", RC_D_J},  {"RBODY", "Jyy", RC_D_J},
+        {"RBODY", "Jzz", RC_D_J},  {"RBODY", "Jxy", RC_D_J},  {"RBODY", "Jyz", RC_D_J},
+        {"RBODY", "Jxz", RC_D_J},  {"PART", "Thick", RC_D_L}};
+    for (size_t i = 0; i < sizeof t / sizeof t[0]; i++)
+        if (strcmp(b->kw[0], t[i].kw) == 0 && strcmp(name, t[i].name) == 0) return t[i].dim;
+    return 0;
+}
+
+int rc_units_convert(const rc_reader *rd)
+{
+    const double *u = rd->cur_units;
+    return u && (u[0] != 1 || u[1] != 1 || u[2] != 1);
+}
+
 /* Parse the text s[0..n) (trimmed) of one field, default it, check it and
  * store it. */
 static rc_status rc_parse_field(rc_reader *rd, const rc_block *b, const rc_line *ln, rc_field *f,
@@ -321,6 +357,21 @@ static rc_status rc_parse_field(rc_reader *rd, const rc_block *b, const rc_line 
             return RC_FIELD_FAIL(rd, b, ln, f, "expected a finite real number, got %s", f->got);
         if (f->blank || (dv == 0 && (f->flags & RC_FF_ZDEF))) dv = f->def;
         if ((r = rc_check_real(rd, b, ln, f, dv))) return (rc_status)r;
+        /* into SI from the card's unit system (default values too: they are
+         * in the deck's units, as in Radioss) */
+        if (rc_units_convert(rd) && dv != 0) {
+            int dim = f->dim ? f->dim : rc_known_dim(b, f->name);
+            if (!dim)
+                return RC_FIELD_FAIL(rd, b, ln, f,
+                                     "the deck's units are not SI and this field has no fixed "
+                                     "dimension (it depends on other fields): write it in kg, m, s "
+                                     "(a /UNIT card of kg m s for this card), got %s",
+                                     f->got);
+            dv *= rc_dim_scale(dim, rd->cur_units);
+            if (!isfinite(dv))
+                return RC_FIELD_FAIL(rd, b, ln, f, "the value overflows when converted to SI, got %s",
+                                     f->got);
+        }
         if (f->out) *(double *)f->out = dv;
         return RC_OK;
     }
@@ -348,12 +399,13 @@ static rc_status rc_split_fixed(rc_reader *rd, const rc_block *b, const rc_line 
         st[k] = rc_trim(ln->text + s0, &sn[k]);
         off += f[k].width;
     }
+    /* Radioss reads the layout's columns only: the rest is ignored */
     for (int i = off; i < ln->len; i++)
         if (ln->text[i] != ' ')
-            return rc_case_fail(rd, &ln->loc, b->name, NULL,
-                                "unexpected text after column %d (the last field ends "
-                                "there): \"%.20s\"",
-                                off, ln->text + i);
+            return rc_case_warn(rd, &ln->loc,
+                                "card %s: text after column %d ignored (the last field of "
+                                "the layout ends there): \"%.20s\"",
+                                b->name, off, ln->text + i);
     return RC_OK;
 }
 
@@ -398,6 +450,27 @@ rc_status rc_parse_line(rc_reader *rd, const rc_block *b, const rc_line *ln, rc_
 }
 
 /* ======================================================================
+ * Layouts by Radioss version
+ * ====================================================================== */
+
+/* The Radioss versions whose layouts ricochet knows (/BEGIN Invers). */
+static const int rc_versions[] = {41, 42, 43, 44, 51, 90, 100, 110, 120, 130, 140,
+                                  2017, 2018, 2019, 2020, 2021, 2022, 2023, 2024, 2025, 2026};
+
+int rc_layout_known(int v)
+{
+    for (size_t i = 0; i < sizeof rc_versions / sizeof rc_versions[0]; i++)
+        if (rc_versions[i] == v) return 1;
+    return 0;
+}
+
+int rc_layout_version(const rc_reader *rd)
+{
+    int v = rd->c->invers;
+    return v > 0 ? v : RC_LATEST_VERSION;
+}
+
+/* ======================================================================
  * Duplicate ids: the notes (the check, pass 3, is in reader.c)
  * ====================================================================== */
 
@@ -434,13 +507,19 @@ rc_status rc_header(rc_reader *rd, const rc_block *b, int nkw, rc_id_mode mode,
     if (mode == RC_ID_OPTIONAL && b->has_id && b->id <= 0)
         return rc_case_fail(rd, loc, b->name, NULL, "expected a positive id or none (%s)",
                             usage);
-    /* a unit system other than the deck's */
+    /* the card's unit system: /BEGIN's, or a /UNIT card's */
     int unit = mode == RC_ID_UNIT ? b->id : b->unit_id;
-    if (unit != 0)
-        return rc_case_fail(rd, loc, b->name, "unit_ID",
-                            "expected 0 or nothing, got %d: unit systems (/UNIT) not supported yet",
-                            unit);
-    return RC_OK;
+    rd->cur_units = rd->begin_units;
+    if (unit == 0) return RC_OK;
+    for (int i = 0; i < rd->nunits; i++)
+        if (rd->units[i].id == unit) {
+            rd->cur_units = rd->units[i].f;
+            return RC_OK;
+        }
+    return rc_case_fail(rd, loc, b->name, "unit_ID",
+                        "expected 0, nothing or the id of a /UNIT card, got %d: no /UNIT/%d in "
+                        "the deck",
+                        unit, unit);
 }
 
 /* Lines of a card of variable length: title, then any number of lines

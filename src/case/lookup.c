@@ -174,3 +174,10 @@ rc_status rc_case_ref_funct(const rc_case *c, int id, int required, rc_loc loc, 
                  RC_LOC(loc), card, field, id);
     return RC_OK;
 }
+
+int rc_case_warning_count(const rc_case *c) { return c ? c->nwarnings : 0; }
+
+const char *rc_case_warning(const rc_case *c, int i)
+{
+    return c && i >= 0 && i < c->nwarnings ? c->warnings[i] : NULL;
+}

@@ -193,10 +193,12 @@ static rc_status rc_lex_line(rc_reader *rd, char *p, int len, const rc_loc *loc)
 {
     rc_status st = rc_line_check(rd, p, &len, loc);
     if (st) return st;
-    /* comments; #include is the one comment with a meaning */
+    /* comments; #include and #enddata are the comments with a meaning */
     if (p[0] == '#' || p[0] == '$') {
         if (strncasecmp(p, "#include", 8) == 0 && (p[8] == ' ' || p[8] == '\t' || !p[8]))
             return rc_include(rd, p, loc);
+        if (strncasecmp(p, "#enddata", 8) == 0 && (p[8] == ' ' || p[8] == '\t' || !p[8]))
+            rd->file_ended = 1; /* ends the file it is in */
         return RC_OK;
     }
     /* fixed format cannot contain tabs; comma format may */
@@ -206,9 +208,17 @@ static rc_status rc_lex_line(rc_reader *rd, char *p, int len, const rc_loc *loc)
                             "column %d: tab character: fixed-format lines cannot contain "
                             "tabs (use spaces, or commas for free format)",
                             (int)(tab - p) + 1);
-    /* /END ends the deck */
+    /* leading blanks before a header's '/' are dropped (Radioss reads the
+     * line as a header) */
+    if (p[0] == ' ') {
+        int k = 0;
+        while (p[k] == ' ') k++;
+        if (p[k] == '/') { p += k; len -= k; }
+    }
+    /* /END ends the file it is in: the deck in the main file, the included
+     * file otherwise (models are assembled from files each ending in /END) */
     if (p[0] == '/' && rc_is_end(p)) {
-        rd->ended = 1;
+        rd->file_ended = 1;
         return RC_OK;
     }
     RC_GROW(rd, rd->lines, rd->caplines, rd->nlines);
@@ -226,7 +236,7 @@ static rc_status rc_lex_buffer(rc_reader *rd, char *buf, long size, const char *
     rc_loc loc = {fname, 0};
     /* a UTF-8 byte order mark is not part of the text */
     if (size >= 3 && memcmp(p, "\xEF\xBB\xBF", 3) == 0) p += 3;
-    while (p < end && !rd->ended) {
+    while (p < end && !rd->file_ended) {
         rc_progress((long)(p - buf), (long)size); /* bytes */
         char *eol = memchr(p, '\n', (size_t)(end - p));
         if (!eol) eol = end;
@@ -236,7 +246,9 @@ static rc_status rc_lex_buffer(rc_reader *rd, char *buf, long size, const char *
         if (st) return st;
         p = eol + 1;
     }
-    if (fname == rd->c->files[0]) rd->main_last_line = loc.line > 0 ? loc.line : 1;
+    if (fname == rd->c->files[0] && !rd->engine_pass)
+        rd->main_last_line = loc.line > 0 ? loc.line : 1;
+    rd->file_ended = 0; /* the including file reads on */
     return RC_OK;
 }
 
@@ -277,7 +289,7 @@ static rc_status rc_lex_file(rc_reader *rd, const char *path, const rc_loc *inc)
     st = rc_slurp(rd, fp, path, inc, &buf, &size);
     fclose(fp);
     if (st) return st;
-    if (!inc) {
+    if (!inc && !rd->engine_pass) {
         rd->c->checksum = rc_fnv1a64(buf, size);
         rd->main_bytes = size;
     }
@@ -315,6 +327,7 @@ static void rc_parse_header(rc_block *b)
         while (s < t && *s == ' ') s++;
         while (t > s && t[-1] == ' ') t--;
         size_t n = (size_t)(t - s), nd = strspn(s, "0123456789");
+        if (n == 0 && !*e && p > b->hdr->text + 1) break; /* a trailing '/' */
         if (n == 0) { *bad = "empty keyword between two '/'"; return; }
         if (nd >= n) {
             /* numeric: id, then unit id */
@@ -339,46 +352,109 @@ static void rc_parse_header(rc_block *b)
     }
 }
 
-/* Cut the lines into blocks and read each card. */
+/* A Radioss starter file NAME_0000.rad: read its engine file
+ * NAME_0001.rad next to it, when it exists, after it (a warning says so). */
+static rc_status rc_lex_engine(rc_reader *rd, const char *path)
+{
+    size_t n = strlen(path);
+    struct stat sb;
+    if (n < 9 || strncmp(path + n - 9, "_0000.", 6) != 0 || strcasecmp(path + n - 3, "rad") != 0)
+        return RC_OK;
+    char *eng = strdup(path);
+    if (!eng) return rc_case_nomem(rd);
+    eng[n - 5] = '1';
+    rc_status st = RC_OK;
+    if (stat(eng, &sb) == 0 && S_ISREG(sb.st_mode)) {
+        rd->engine_pass = 1;
+        st = rc_lex_file(rd, eng, NULL);
+        rd->engine_pass = 0;
+        const char *fname = st ? NULL : rc_file_name(rd, eng);
+        if (fname) {
+            rc_loc loc = {fname, 1};
+            st = rc_case_warn(rd, &loc,
+                              "Radioss engine file read after its starter file %s (the pair "
+                              "NAME_0000.rad, NAME_0001.rad)",
+                              rd->c->files[0]);
+        } else if (!st) st = RC_ENOMEM;
+    }
+    free(eng);
+    return st;
+}
+
+/* Is block b the card /KW (first keyword)? */
+static int rc_block_is(const rc_block *b, const char *kw)
+{
+    return b->nkw > 0 && strcmp(b->kw[0], kw) == 0;
+}
+
+/* Read one card; an input error is counted (rc_case_fail) and the reading
+ * goes on with the next card until RC_CASE_MAX_ERRORS. */
+static rc_status rc_read_one(rc_reader *rd, const rc_block *b)
+{
+    rc_status st;
+    rd->cur_units = rd->begin_units; /* until the card's header says otherwise */
+    if (b->bad && b->nkw == 0)
+        st = rc_case_fail(rd, &b->hdr->loc, b->name, NULL, "malformed card header: %s", b->bad);
+    else st = rc_card_dispatch(rd, b);
+    if (st != RC_EINPUT) return st;
+    return rd->nerrors > RC_CASE_MAX_ERRORS ? RC_EINPUT : RC_OK;
+}
+
+/* Cut the lines into blocks and read each card: /BEGIN first (the version,
+ * hence the layouts, and the deck's units), then the /UNIT cards, then the
+ * other cards in order. */
 static rc_status rc_read_blocks(rc_reader *rd)
 {
-    int i = 0, ncards = 0;
+    int ncards = 0, cap = 0;
+    rc_block *blocks = NULL;
+    rc_status st = RC_OK;
     rc_progress_stage("reading the cards (lines)");
-    while (i < rd->nlines) {
+    for (int i = 0; i < rd->nlines;) {
         rc_progress(i, rd->nlines);
         const rc_line *ln = &rd->lines[i];
         /* before the first card only blank lines may appear */
         if (ln->text[0] != '/') {
             if (ln->len == 0) { i++; continue; }
-            return rc_case_fail(rd, &ln->loc, NULL, NULL,
-                                "data line outside any card (a card starts with '/' in "
-                                "column 1): \"%.40s\"",
-                                ln->text);
+            st = rc_case_fail(rd, &ln->loc, NULL, NULL,
+                              "data line outside any card (a card starts with '/' in "
+                              "column 1): \"%.40s\"",
+                              ln->text);
+            if (rd->nerrors > RC_CASE_MAX_ERRORS) goto done;
+            while (i < rd->nlines && rd->lines[i].text[0] != '/') i++;
+            continue;
         }
         /* the block runs to the next header */
         int j = i + 1;
         while (j < rd->nlines && rd->lines[j].text[0] != '/') j++;
-        rc_block b;
-        memset(&b, 0, sizeof b);
-        b.hdr = ln;
-        b.lines = ln + 1;
-        b.n = j - i - 1;
-        rc_parse_header(&b);
-        if (b.bad && b.nkw == 0)
-            return rc_case_fail(rd, &ln->loc, b.name, NULL, "malformed card header: %s", b.bad);
-        rc_status st = rc_card_dispatch(rd, &b);
-        if (st) return st;
-        ncards++;
+        rc_block *nb = rc_case_grow(rd, blocks, &cap, ncards, sizeof *blocks);
+        if (!nb) { st = RC_ENOMEM; goto done; }
+        blocks = nb;
+        rc_block *b = &blocks[ncards++];
+        b->hdr = ln;
+        b->lines = ln + 1;
+        b->n = j - i - 1;
+        rc_parse_header(b);
         i = j;
     }
-    if (ncards == 0) {
+    st = RC_OK;
+    for (int pass = 0; pass < 3; pass++)
+        for (int k = 0; k < ncards; k++) {
+            int when = rc_block_is(&blocks[k], "BEGIN") ? 0 : rc_block_is(&blocks[k], "UNIT") ? 1 : 2;
+            if (when != pass) continue;
+            if ((st = rc_read_one(rd, &blocks[k]))) goto done;
+        }
+    if (ncards == 0 && rd->nerrors == 0) {
         rc_loc loc = {rd->c->files[0], rd->main_last_line > 0 ? rd->main_last_line : 1};
         if (rd->main_bytes == 0)
-            return rc_case_fail(rd, &loc, NULL, NULL, "empty file: no cards");
-        return rc_case_fail(rd, &loc, NULL, NULL,
-                            "no cards found (a card starts with '/' in column 1)");
+            st = rc_case_fail(rd, &loc, NULL, NULL, "empty file: no cards");
+        else
+            st = rc_case_fail(rd, &loc, NULL, NULL,
+                              "no cards found (a card starts with '/' in column 1)");
     }
-    return RC_OK;
+done:
+    free(blocks);
+    if (st == RC_EINPUT && rd->nerrors <= RC_CASE_MAX_ERRORS) st = RC_OK;
+    return st;
 }
 
 static int rc_cmp_id(const void *pa, const void *pb)
@@ -388,7 +464,17 @@ static int rc_cmp_id(const void *pa, const void *pb)
     return (a->seq > b->seq) - (a->seq < b->seq);
 }
 
-/* After sorting by (id, order), report the earliest redefinition. */
+/* A redefinition: the entry, the first definition, the id kind. */
+typedef struct { const rc_id_entry *dup, *first; int kind; } rc_dup;
+
+static int rc_cmp_dup(const void *pa, const void *pb)
+{
+    const rc_dup *a = pa, *b = pb;
+    return (a->dup->seq > b->dup->seq) - (a->dup->seq < b->dup->seq);
+}
+
+/* After sorting by (id, order), report every redefinition in the order of
+ * the deck (each an input error, up to RC_CASE_MAX_ERRORS in all). */
 static rc_status rc_check_dups(rc_reader *rd)
 {
     static const char *const names[RC_IDK_COUNT] = {
@@ -396,34 +482,69 @@ static rc_status rc_check_dups(rc_reader *rd)
         "inter_ID", "inivel_ID", "grav_ID", "bcs_ID", "cpl_ID", "part_ID", "grpart_ID",
         "fric_ID", "fric_orient_ID", "impvel_ID",
         "shell_ID", "brick_ID", "prop_ID", "mat_ID", "skew_ID", "admas_ID"};
-    const rc_id_entry *worst = NULL, *first = NULL;
-    int wkind = 0;
+    rc_dup *d = NULL;
+    int nd = 0, cap = 0;
+    rc_status st = RC_OK;
     for (int k = 0; k < RC_IDK_COUNT; k++) {
         rc_id_entry *e = rd->ids[k];
         int g = 0;
         if (rd->nids[k] > 1) qsort(e, (size_t)rd->nids[k], sizeof *e, rc_cmp_id);
         for (int i = 1; i < rd->nids[k]; i++) {
             if (e[i].id != e[g].id) { g = i; continue; }
-            if (!worst || e[i].seq < worst->seq) { worst = &e[i]; first = &e[g]; wkind = k; }
+            rc_dup *nw = rc_case_grow(rd, d, &cap, nd, sizeof *d);
+            if (!nw) { free(d); return RC_ENOMEM; }
+            d = nw;
+            d[nd++] = (rc_dup){&e[i], &e[g], k};
         }
     }
-    if (!worst) return RC_OK;
-    return rc_case_fail(rd, &worst->loc, worst->card, names[wkind],
-                        "duplicate id %d, first defined at %s:%d", worst->id, first->loc.file,
-                        first->loc.line);
+    if (nd > 1) qsort(d, (size_t)nd, sizeof *d, rc_cmp_dup);
+    for (int i = 0; i < nd && rd->nerrors <= RC_CASE_MAX_ERRORS; i++)
+        st = rc_case_fail(rd, &d[i].dup->loc, d[i].dup->card, names[d[i].kind],
+                          "duplicate id %d, first defined at %s:%d", d[i].dup->id,
+                          d[i].first->loc.file, d[i].first->loc.line);
+    free(d);
+    return st;
 }
 
 /* ======================================================================
  * Entry points
  * ====================================================================== */
 
+/* The report of several input errors: the first one, then the others,
+ * one a line, then the count. */
+static void rc_case_report(rc_reader *rd)
+{
+    if (!rd->err || rd->nerrors < 2) return;
+    size_t n = strlen(rd->err->msg), cap = sizeof rd->err->msg;
+    char tail[128];
+    if (rd->nerrors > RC_CASE_MAX_ERRORS)
+        snprintf(tail, sizeof tail, "\ntoo many errors: the reading stopped after %d",
+                 RC_CASE_MAX_ERRORS);
+    else snprintf(tail, sizeof tail, "\n%d input errors", rd->nerrors);
+    size_t room = cap - n - 1 > strlen(tail) ? cap - n - 1 - strlen(tail) : 0;
+    if (rd->more && room > 0) {
+        size_t m = strlen(rd->more);
+        if (m > room) {
+            /* cut at the last whole line */
+            m = room;
+            while (m > 0 && rd->more[m] != '\n') m--;
+        }
+        memcpy(rd->err->msg + n, rd->more, m);
+        n += m;
+        rd->err->msg[n] = '\0';
+    }
+    if (n + strlen(tail) < cap) strcat(rd->err->msg, tail);
+}
+
 /* Free the reader's own memory (not the case). */
 static void rc_reader_release(rc_reader *rd)
 {
+    free(rd->more);
     for (int i = 0; i < rd->nbufs; i++) free(rd->bufs[i]);
     free(rd->bufs);
     free(rd->lines);
     for (int k = 0; k < RC_IDK_COUNT; k++) free(rd->ids[k]);
+    free(rd->units);
 }
 
 rc_status rc_case_load(const char *path, rc_case **out, rc_error *err)
@@ -434,24 +555,37 @@ rc_status rc_case_load(const char *path, rc_case **out, rc_error *err)
     if (out) *out = NULL;
     if (!path || !out) RC_RAISE(err, RC_EINTERNAL, "rc_case_load: NULL argument");
     rd.err = err;
+    rd.begin_units[0] = rd.begin_units[1] = rd.begin_units[2] = 1.0;
+    rd.cur_units = rd.begin_units;
     /* the case, with the defaults of optional cards */
     if (!(rd.c = calloc(1, sizeof *rd.c))) RC_RAISE(err, RC_ENOMEM, "out of memory");
     rc_cards_defaults(rd.c);
     if (!(rd.c->path = strdup(path))) { st = rc_case_nomem(&rd); goto fail; }
 
-    /* pass 1: lines of every file; pass 2: cards; pass 3: deck checks */
+    /* pass 1: lines of every file; pass 2: cards; pass 3: deck checks.
+     * Input errors of cards are counted and the reading goes on, so that up
+     * to RC_CASE_MAX_ERRORS are reported at once. */
     rc_progress_stage("reading the files");
     st = rc_lex_file(&rd, path, NULL);
+    if (!st) st = rc_lex_engine(&rd, path);
     rc_progress_done();
     if (st) goto fail;
     st = rc_read_blocks(&rd); /* its own progress stage */
     rc_progress_done();
-    if (st) goto fail;
+    if (st) goto report;
     rc_progress_stage("checking ids, groups and the mesh");
-    if (!(st = rc_check_dups(&rd)) && !(st = rc_cards_finish(&rd)) && !(st = rc_cards_mesh_finish(&rd)))
-        st = rc_case_index_build(rd.c, err);
+    if ((st = rc_check_dups(&rd)) && st != RC_EINPUT) goto fail;
+    if (rd.nerrors <= RC_CASE_MAX_ERRORS && (st = rc_cards_finish(&rd)) && st != RC_EINPUT) goto fail;
+    if (rd.nerrors == 0 && (st = rc_cards_mesh_finish(&rd)) && st != RC_EINPUT) goto fail;
+report:
     rc_progress_done();
-    if (st) goto fail;
+    if (st != RC_OK && st != RC_EINPUT) goto fail;
+    if (rd.nerrors > 0) {
+        st = RC_EINPUT;
+        rc_case_report(&rd);
+        goto fail;
+    }
+    if ((st = rc_case_index_build(rd.c, err))) goto fail;
 
     rc_reader_release(&rd);
     *out = rd.c;

@@ -43,7 +43,10 @@ static int fail(const rc_error *e)
 /* Load and compile; prints the error and returns its exit code on failure. */
 static int load(const char *path, rc_case **c, rc_model **m, rc_error *e)
 {
-    if (rc_case_load(path, c, e) || rc_model_compile(*c, m, e)) return fail(e);
+    if (rc_case_load(path, c, e)) return fail(e);
+    for (int i = 0; i < rc_case_warning_count(*c); i++)
+        fprintf(stderr, "ricochet: warning: %s\n", rc_case_warning(*c, i));
+    if (rc_model_compile(*c, m, e)) return fail(e);
     return 0;
 }
 

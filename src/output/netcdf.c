@@ -833,7 +833,7 @@ static rc_status write_final(rc_output *o, const rc_stats *st, int complete, con
         if (rc == RC_OK) rc = put_double(o, "stats_wall_time", st->wall_time, err);
         if (rc == RC_OK) rc = put_double(o, "energy_balance_residual", st->energy_residual, err);
     }
-    char status[2200]; /* "incomplete: " + an rc_error message */
+    char status[sizeof(((rc_error *)0)->msg) + 16]; /* "incomplete: " + an rc_error message */
     if (complete)
         snprintf(status, sizeof status, "complete");
     else

@@ -55,7 +55,7 @@ def deck(tan_th, tend, ramped=False, dtout=0.01, rtol=1e-6, atol_pos=1e-9, atol_
     if ramped:
         xs, ys = ramp_table()
         d.funct(2, xs, ys, title="smooth ramp 0 -> 1 over 0.5 s (quintic smoothstep)")
-        d.add("/GRAV/1", f"{2:>10d}{'Z':>10s}{0:>10d}{0:>10d}{1:>10d}" + r20(1.0) + r20(-G), title="gravity, ramped")
+        d.add("/GRAV/1", f"{2:>10d}{'Z':>10s}{0:>10d}{0:>10d}{1:>10d}" + " " * 10 + r20(1.0) + r20(-G), title="gravity, ramped")
     else:
         d.grav(1, "Z", -G, 1)
     d.type6(1, 1, 2, 1, visc=VISC, fric=MU, title="Fric 0.3")

@@ -54,8 +54,8 @@ def deck(F, tend, dtout=0.01, rtol=1e-6, atol_pos=1e-9, atol_vel=1e-6, atol_ener
     d.grnod(1, [1])
     d.add("/BCS/1", f"{'000 111':>10s}{0:>10d}{1:>10d}", title="no rotation")
     # /GRAV: fct_IDT, DIR, skew, sensor, grnod, Ascale_x, Fscale_y; one time function for both
-    d.add("/GRAV/1", f"{2:>10d}{'Z':>10s}{0:>10d}{0:>10d}{1:>10d}" + r20(1.0) + r20(-G), title="weight, ramped")
-    d.add("/GRAV/2", f"{2:>10d}{'X':>10s}{0:>10d}{0:>10d}{1:>10d}" + r20(1.0) + r20(F / M), title="pull F/m, ramped")
+    d.add("/GRAV/1", f"{2:>10d}{'Z':>10s}{0:>10d}{0:>10d}{1:>10d}" + " " * 10 + r20(1.0) + r20(-G), title="weight, ramped")
+    d.add("/GRAV/2", f"{2:>10d}{'X':>10s}{0:>10d}{0:>10d}{1:>10d}" + " " * 10 + r20(1.0) + r20(F / M), title="pull F/m, ramped")
     d.type6(1, 1, 2, 1, visc=VISC, sfric=SFRIC, fric=MU, title="Sfric 1 N, Fric 0.3")
     d.run(tend, dtout)
     d.solver(rtol=rtol, atol_pos=atol_pos, atol_vel=atol_vel, atol_energy=atol_energy)

@@ -79,7 +79,7 @@ class Deck:
                  line(("r", v[0]), ("r", v[1]), ("r", v[2]), ("i", grnod), ("i", 0)), title="initial velocity")
 
     def grav(self, gid, direction, fscale, grnod=0):
-        self.add(f"/GRAV/{gid}", f"{0:>10d}{direction:>10s}{0:>10d}{0:>10d}{grnod:>10d}" + r20(1.0) + r20(fscale),
+        self.add(f"/GRAV/{gid}", f"{0:>10d}{direction:>10s}{0:>10d}{0:>10d}{grnod:>10d}" + " " * 10 + r20(1.0) + r20(fscale),
                  title="gravity")
 
     def bcs(self, bid, grnod, trarot="111 111", title="fixed"):
@@ -88,7 +88,7 @@ class Deck:
 
     def grav_fct(self, gid, direction, fscale, fct, grnod=0, ascale=1.0):
         """/GRAV with a time function fct (Fscale_y f(t / Ascale_x))."""
-        self.add(f"/GRAV/{gid}", f"{fct:>10d}{direction:>10s}{0:>10d}{0:>10d}{grnod:>10d}" + r20(ascale) + r20(fscale),
+        self.add(f"/GRAV/{gid}", f"{fct:>10d}{direction:>10s}{0:>10d}{0:>10d}{grnod:>10d}" + " " * 10 + r20(ascale) + r20(fscale),
                  title="gravity")
 
     def part(self, pid, body, surfs=(), title="part"):

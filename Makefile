@@ -89,7 +89,7 @@ valgrind: all
 	valgrind --error-exitcode=9 --leak-check=full --errors-for-leak-kinds=definite \
 	    $(BIN) run cases/demo_sphere_drop.rad -o out/valgrind_demo.nc
 	@# every command-line path, failures included (a leak or error exits 9)
-	RICOCHET_WRAP="valgrind -q --error-exitcode=9 --leak-check=full --errors-for-leak-kinds=definite" \
+	RICOCHET_DELAY=15 RICOCHET_WRAP="valgrind -q --error-exitcode=9 --leak-check=full --errors-for-leak-kinds=definite" \
 	    bash tests/cli_test.sh $(BIN) > out/valgrind_cli.log 2>&1; \
 	    cat out/valgrind_cli.log; ! grep -q '^FAIL ' out/valgrind_cli.log
 

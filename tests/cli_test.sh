@@ -4,6 +4,9 @@
 set -u
 bin=${1:-build/ricochet}
 tmp=$(mktemp -d)
+# RICOCHET_DELAY: seconds a run is given before it is interrupted or its
+# disk filled (1; more under valgrind, whose start takes seconds)
+delay=${RICOCHET_DELAY:-1}
 # RICOCHET_WRAP: a command to run the program under (valgrind, for the
 # failure paths); exec keeps the process id, so the signal tests still work
 if [ -n "${RICOCHET_WRAP:-}" ]; then
@@ -84,7 +87,7 @@ for sig in INT TERM; do
     # process group, and a second signal kills at once by design)
     "$bin" run "$tmp/long.rad" -o "$tmp/long_$sig.nc" -q > "$tmp/e" 2>&1 &
     pid=$!
-    sleep 2
+    sleep $((2 * delay))
     kill -s $sig $pid
     wait $pid; rc=$?
     if [ -e "$tmp/long_$sig.nc" ] && ncdump -h "$tmp/long_$sig.nc" | grep -q ':complete = "no"' &&
@@ -119,7 +122,7 @@ if [ "$(id -u)" -eq 0 ] && mount -t tmpfs -o size=16k tmpfs "$tmp/fs" 2>/dev/nul
     # race between ricochet's check of the room and HDF5's write: then the
     # write fails, the handle is abandoned, exit 4 naming the file, no crash
     mount -t tmpfs -o size=8m tmpfs "$tmp/fs"
-    (sleep 1; dd if=/dev/zero of="$tmp/fs/fill" bs=64k > /dev/null 2>&1) &
+    (sleep $delay; dd if=/dev/zero of="$tmp/fs/fill" bs=64k > /dev/null 2>&1) &
     filler=$!
     "$bin" run "$tmp/long.rad" -o "$tmp/fs/out.nc" -q > "$tmp/e" 2>&1; rc=$?
     wait $filler
@@ -133,7 +136,7 @@ else
     echo "SKIP cli.disk_full: needs root and a tmpfs mount"
 fi
 mkdir -p "$tmp/gone/sub"
-(sleep 1; rm -rf "$tmp/gone/sub") &
+(sleep $delay; rm -rf "$tmp/gone/sub") &
 remover=$!
 "$bin" run "$tmp/long.rad" -o "$tmp/gone/sub/out.nc" -q > "$tmp/e" 2>&1; rc=$?
 wait $remover

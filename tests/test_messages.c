@@ -140,10 +140,30 @@ static void test_messages_progress(void)
     ENSURE(strstr(text, "ricochet: long stage: done in 1.") != NULL);
 }
 
+/* The restitution of a linear contact that cannot pull, printed by
+ * `ricochet check`: no damping gives e = 1 after half a period; zeta =
+ * 1/sqrt(2) leaves at maximum compression (theta = pi/2) with
+ * e = exp(-pi/2); zeta = 0.1 gives the value of the Kelvin-Voigt contact
+ * with a non-adhesive force (e = 0.744079, Schwager and Poschel 2007),
+ * which validation/spring_dashpot also measures. */
+static void test_messages_linear_restitution(void)
+{
+    const double pi = 3.14159265358979323846;
+    double th;
+    ENSURE_NEAR(rc_linear_restitution(0.0, &th), 1.0, 1e-15, 0);
+    ENSURE_NEAR(th, pi, 1e-15, 0);
+    ENSURE_NEAR(rc_linear_restitution(1.0 / sqrt(2.0), &th), exp(-pi / 2), 1e-12, 0);
+    ENSURE_NEAR(th, pi / 2, 1e-12, 0);
+    ENSURE_NEAR(rc_linear_restitution(0.1, &th), 0.744079, 1e-6, 0);
+    ENSURE_NEAR(th / (1000.0 * sqrt(1 - 0.01)), 2.956075e-3, 1e-6, 0); /* k = 1e6 N/m, m = 1 kg */
+    ENSURE(isnan(rc_linear_restitution(1.0, &th)) && isnan(th));
+}
+
 void suite_messages(void);
 void suite_messages(void)
 {
     RUN_TEST(test_messages_state_names);
     RUN_TEST(test_messages_unresolvable_scales);
     RUN_TEST(test_messages_progress);
+    RUN_TEST(test_messages_linear_restitution);
 }

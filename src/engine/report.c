@@ -12,6 +12,87 @@
 #include "model/model.h"
 #include "model/power.h"
 
+#define RC_PI 3.14159265358979323846
+
+/* Restitution of a linear spring-dashpot contact that cannot pull (the
+ * force k x + c x' clipped at zero), damping ratio zeta in [0, 1): the free
+ * response x = v0/wd e^(-zeta w t) sin(wd t) leaves the contact when the
+ * force reaches zero, at wd t = theta = pi - atan2(2 zeta s, 1 - 2 zeta^2)
+ * (s = sqrt(1 - zeta^2)); e = -x'(t)/v0 there. The contact lasts theta/wd.
+ * For zeta >= 1: NaN (no closed form here; the body does not rebound by
+ * much). */
+double rc_linear_restitution(double zeta, double *theta_out)
+{
+    if (!(zeta >= 0) || zeta >= 1) {
+        if (theta_out) *theta_out = NAN;
+        return NAN;
+    }
+    const double s = sqrt(1.0 - zeta * zeta);
+    const double theta = RC_PI - atan2(2.0 * zeta * s, 1.0 - 2.0 * zeta * zeta);
+    if (theta_out) *theta_out = theta;
+    return -exp(-zeta * theta / s) * (cos(theta) - zeta / s * sin(theta));
+}
+
+/* Is the load curve of TYPE6 interface i a straight line through the
+ * origin (F = k P)? Its slope in *k [N/m]. */
+static int linear_load(const rc_model *m, int i, double *k)
+{
+    if (m->inter_law[i] != RC_LAW_TYPE6 || m->inter_fct_ld[i] < 0) return 0;
+    const rc_table *t = &m->table[m->inter_fct_ld[i]];
+    const double sl = t->y[t->n - 1] / t->x[t->n - 1];
+    for (int j = 0; j < t->n; j++)
+        if (fabs(t->y[j] - sl * t->x[j]) > 1e-12 * (fabs(t->y[j]) + fabs(sl * t->x[j])) + 1e-300) return 0;
+    *k = sl * m->inter_fscaleld[i] / m->inter_ascalex[i];
+    return *k > 0;
+}
+
+/* Guidance per interface: the gap at t = 0, the effective mass, the natural
+ * frequency at the force scale, the damping ratio of Visc, the predicted
+ * restitution and contact time (linear contacts), the stable step of an
+ * explicit scheme, and how many output records a contact gets. */
+static void print_guidance(const rc_model *m, FILE *f)
+{
+    double *y = malloc(((size_t)m->ny + 1) * sizeof(double));
+    if (!y) return;
+    rc_initial_state(m, y);
+    fprintf(f, "contacts    guidance per interface (at the force scale F_s; docs/theory.md, \"Guidance\")\n");
+    for (int i = 0; i < m->ninter && i < 20; i++) {
+        rc_inter_report r;
+        rc_inter_report_eval(m, i, RC_MODE_OPEN, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+        if (r.p_raw > 0)
+            fprintf(f, "  %-18s WARNING: overlap at t = 0 of %.4g m (the surfaces start %s)\n", m->inter_name[i], r.p_raw,
+                    m->inter_inacti[i] == 5 ? "inside each other; Inacti 5 takes it as the gap" : "inside each other: a force at once");
+        else
+            fprintf(f, "  %-18s gap at t = 0: %.4g m\n", m->inter_name[i], -r.p_raw);
+        const double mr = m->inter_mred[i], ks = m->inter_kscale[i];
+        if (!(isfinite(mr) && mr > 0 && isfinite(ks) && ks > 0)) {
+            fprintf(f, "  %-18s no effective mass along the normal or no scale: no estimate\n", "");
+            continue;
+        }
+        double k = ks;
+        const int lin = linear_load(m, i, &k);
+        const double w = sqrt(k / mr), c = m->inter_law[i] == RC_LAW_TYPE6 ? m->inter_visc[i] : 0.0;
+        const double zeta = c / (2.0 * sqrt(k * mr));
+        fprintf(f, "  %-18s m_eff %.4g kg, k %.4g N/m%s, natural frequency %.4g Hz, damping ratio of Visc %.4g\n", "", mr, k,
+                lin ? "" : " (at p_s, nonlinear law)", w / (2.0 * RC_PI), zeta);
+        const int curves = m->inter_law[i] == RC_LAW_TYPE6 && (m->inter_fct_dv[i] >= 0 || m->inter_iform[i] != 0);
+        double theta = NAN, e = NAN;
+        if (lin && !curves) e = rc_linear_restitution(zeta, &theta);
+        const double tc = isfinite(theta) ? theta / (w * sqrt(1.0 - zeta * zeta)) : RC_PI / w;
+        if (isfinite(e))
+            fprintf(f, "  %-18s predicted restitution %.6g, contact time %.4g s (linear law, force >= 0, no other load)\n", "", e, tc);
+        else
+            fprintf(f, "  %-18s contact time ~%.4g s (pi/omega; restitution not predicted: %s)\n", "", tc,
+                    lin ? (curves ? "damping curves or hysteresis" : "damping ratio >= 1") : "nonlinear law");
+        const double dt_exp = 2.0 / w; /* central differences, undamped */
+        const double nrec = tc / m->dtout;
+        fprintf(f, "  %-18s explicit stable step %.4g s; output every %.4g s gives %.3g records per contact%s\n", "", dt_exp,
+                m->dtout, nrec, nrec < 10 ? " (WARNING: peaks between records are missed; lower /RUN Dt_out)" : "");
+    }
+    if (m->ninter > 20) fprintf(f, "  ... %d more\n", m->ninter - 20);
+    free(y);
+}
+
 void rc_model_print_summary(const rc_model *m, FILE *f)
 {
     fprintf(f, "case        %s (checksum %016lx)\n", m->case_path, m->checksum);
@@ -87,6 +168,7 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
             fprintf(f, "  %-18s no scale (no gravity or speed reaches it): fixed fallback tolerances\n", m->inter_name[i]);
     }
     if (m->ninter > 20) fprintf(f, "  ... %d more\n", m->ninter - 20);
+    if (m->ninter > 0) print_guidance(m, f);
 }
 
 void rc_cpl_print_summary(const rc_model *m, FILE *f)

@@ -273,6 +273,10 @@ static inline int rc_event_records(const rc_model *m)
 rc_data *rc_data_new(const rc_model *m);
 void rc_data_free(rc_data *d);
 
+/* Restitution of a linear contact that cannot pull at damping ratio zeta
+ * in [0, 1) (NaN otherwise); *theta = omega_d times the contact time
+ * (report.c). */
+double rc_linear_restitution(double zeta, double *theta);
 /* Name of state i for messages: "/RBODY/3, velocity z [m/s]" (statename.c). */
 void rc_state_name(const rc_model *m, int i, char *buf, size_t n);
 

@@ -80,6 +80,7 @@ rc_status rc_card_inivel(rc_reader *rd, const rc_block *b)
     v->rot = strcmp(b->kw[1], "ROT") == 0;
     v->loc = b->hdr->loc;
     if ((st = rc_card_lines(rd, b, title, 1, 1, "Vx Vy Vz grnod_ID skew_ID", &nd))) return st;
+    v->line_loc = b->lines[1].loc;
 
     rc_field f[] = {RC_F_REAL("Vx", &v->v[0], 0, 0), RC_F_REAL("Vy", &v->v[1], 0, 0),
                     RC_F_REAL("Vz", &v->v[2], 0, 0),
@@ -105,6 +106,7 @@ rc_status rc_card_grav(rc_reader *rd, const rc_block *b)
     if ((st = rc_card_lines(rd, b, title, 1, 1, "fct_IDT DIR skew_ID sensor_ID grnod_ID "
                             "Ascale_x Fscale_y", &nd)))
         return st;
+    g->line_loc = b->lines[1].loc;
 
     rc_field f[] = {RC_F_INT("fct_IDT", &g->fct_id, 0, RC_FF_NONNEG),
                     RC_F_STR("DIR", dir, 10),
@@ -150,6 +152,7 @@ rc_status rc_card_bcs(rc_reader *rd, const rc_block *b)
     x->id = b->id;
     x->loc = b->hdr->loc;
     if ((st = rc_card_lines(rd, b, title, 1, 1, "Trarot skew_ID grnod_ID", &nd))) return st;
+    x->line_loc = b->lines[1].loc;
 
     rc_field f[] = {RC_F_STR("Trarot", tr, 10),
                     RC_F_INTN("skew_ID", &x->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew),

@@ -168,12 +168,11 @@ void rc_cards_defaults(rc_case *c)
 rc_status rc_cards_finish(rc_reader *rd)
 {
     rc_case *c = rd->c;
+    /* deck-level messages name the end of the deck (the /END line) */
+    c->end = (rc_loc){c->files[0], rd->main_last_line > 0 ? rd->main_last_line : 1};
     /* the end time is required */
-    if (!c->run.present) {
-        rc_loc loc = {c->files[0], rd->main_last_line > 0 ? rd->main_last_line : 1};
-        return rc_case_fail(rd, &loc, NULL, NULL, "no /RUN card: the end time is required");
-    }
-    /* without /SOLVER, the defaults apply at the main file */
-    if (!c->solver.present) c->solver.loc = (rc_loc){c->files[0], 0};
+    if (!c->run.present) return rc_case_fail(rd, &c->end, NULL, NULL, "no /RUN card: the end time is required");
+    /* without /SOLVER, the defaults apply there too */
+    if (!c->solver.present) c->solver.loc = c->end;
     return RC_OK;
 }

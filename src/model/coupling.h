@@ -21,6 +21,7 @@
 
 #include <stdio.h>
 
+#include "case/case.h"
 #include "model/model.h"
 
 #define RC_CE 2 /* energy states of a coupling */
@@ -69,6 +70,8 @@ typedef struct rc_couplings {
                             gravity function (the /GRAV cards with
                             grnod_ID 0) [m/s^2]                              */
     rc_jblock *jb;       /* [n] Jacobian blocks                               */
+    rc_loc *law_loc;     /* [n] file:line of the card line holding the law's
+                            fields (catenary: Lambda0 L_eq D), for messages  */
 } rc_couplings;
 
 /* Solution of the catenary equations for one span (X, Y): end forces and

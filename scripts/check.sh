@@ -20,6 +20,21 @@ cat "$log"
 pass=$((pass + $(grep -c '^PASS ' "$log")))
 fail=$((fail + $(grep -c '^FAIL ' "$log")))
 
+# malformed decks: exit 2 and a message naming file:line, card and field
+bash tests/malformed_test.sh "$build/ricochet" > "$log" 2>&1
+grep -E '^(PASS|FAIL) ' "$log" | grep -v '^PASS ' ; echo "malformed decks: $(grep -c '^PASS ' "$log") passed, $(grep -c '^FAIL ' "$log") failed"
+pass=$((pass + $(grep -c '^PASS ' "$log")))
+fail=$((fail + $(grep -c '^FAIL ' "$log")))
+[ "$(grep -c '^PASS ' "$log")" -gt 100 ] || { echo "FAIL malformed: the catalogue ran fewer than 100 decks"; fail=$((fail + 1)); }
+
+# fuzz regressions (every crash or hang input the fuzzer found) and the
+# seed corpus, replayed through the reader and compiler (fuzz/README.md)
+"$build"/fuzz_replay fuzz/regressions/* > "$log" 2>&1
+"$build"/fuzz_replay -q fuzz/corpus/* >> "$log" 2>&1
+cat "$log"
+pass=$((pass + $(grep -c '^PASS ' "$log")))
+fail=$((fail + $(grep -c '^FAIL ' "$log")))
+
 # validation problems: each check.py prints PASS/FAIL lines; every problem
 # runs twice, first with the solver settings of its decks, then at ricochet's
 # default settings (RICOCHET_VAL_SOLVER=default: the /SOLVER cards removed,

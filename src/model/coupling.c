@@ -130,8 +130,16 @@ static rc_status compile_one(const rc_case *c, rc_model *m, int k, rc_error *err
         const rc_table *t = &m->table[p->table[k]];
         p->cum[k] = malloc((size_t)t->n * sizeof(double));
         if (!p->cum[k]) RC_RAISE(err, RC_ENOMEM, "out of memory");
-        rc_status st = rc_cpl_stiff_table(t, p->cum[k], err);
-        if (st) return st;
+        rc_error e2;
+        memset(&e2, 0, sizeof e2);
+        rc_status st = rc_cpl_stiff_table(t, p->cum[k], &e2);
+        if (st == RC_EINPUT)
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field fct_ID: %s", RC_LOC(rc_loc_or(cc->line_loc[0], cc->loc)),
+                     card, e2.msg);
+        if (st) {
+            if (err) *err = e2;
+            return st;
+        }
         p->fref[k] = cc->ref_given ? cc->fr : 0.0;
         p->xref[k] = cc->ref_given ? cc->xr : p->x0[k];
     }

@@ -80,11 +80,19 @@ demo: deps
 	/usr/bin/python3 scripts/plot.py out/demo.nc out/demo
 	@echo "results: out/demo.nc, plots: out/demo_*.png"
 
-# AddressSanitizer + UndefinedBehaviorSanitizer build, unit tests and demo case.
+# AddressSanitizer + UndefinedBehaviorSanitizer build: unit tests, the malformed
+# decks, the fuzz regressions and seeds, the demo case.
 asan: deps
 	@$(MAKE) --no-print-directory BUILD=build-asan OPT=-O1 \
 	    CFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" all
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 build-asan/run_tests
+	@# every error path of the catalogue and the fuzz inputs, leaks included
+	ASAN_OPTIONS=detect_leaks=1 bash tests/malformed_test.sh build-asan/ricochet > build-asan/malformed.log; \
+	    grep '^FAIL ' build-asan/malformed.log; \
+	    echo "malformed decks under ASan: $$(grep -c '^PASS ' build-asan/malformed.log) passed"; \
+	    ! grep -q '^FAIL ' build-asan/malformed.log
+	ASAN_OPTIONS=detect_leaks=1 build-asan/fuzz_replay fuzz/regressions/*
+	ASAN_OPTIONS=detect_leaks=1 build-asan/fuzz_replay -q fuzz/corpus/*
 	@mkdir -p out
 	ASAN_OPTIONS=detect_leaks=1 build-asan/ricochet run cases/demo_sphere_drop.rad -o out/asan_demo.nc
 

@@ -114,6 +114,7 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
                      RC_LOC(l1), rb->id, rb->grnod_id);
         }
         m->body_id[b] = rb->id;
+        m->body_loc[b] = rb->loc;
         m->body_mass[b] = rb->mass;
         /* inertia: Jxx Jyy Jzz Jxy Jyz Jxz -> row-major 3x3 */
         double *J = m->body_J + 9 * b;
@@ -315,6 +316,7 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
         RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields surf_ID1/surf_ID2: both surfaces are on the same body; they must belong to two different rigid bodies",
                  RC_LOC(t6->line_loc[0]), card);
     m->inter_id[i] = t6->id;
+    m->inter_loc[i] = t6->loc;
     m->inter_gap[i] = t6->gap;
     m->inter_tstart[i] = t6->tstart;
     m->inter_tstop[i] = t6->tstop;
@@ -411,9 +413,7 @@ static rc_status layout(const rc_case *c, rc_model *m, rc_error *err)
     m->row_held = calloc((size_t)ny + 1, 1);
     if (!m->row_held) RC_RAISE(err, RC_ENOMEM, "out of memory");
     for (int k = 0; k < m->nheld; k++) m->row_held[m->held[k]] = 1;
-    if (ny == 0)
-        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "the case has nothing to integrate (no free body)",
-                 RC_LOC(rc_loc_or(c->end, (rc_loc){c->path, 1})));
+    if (ny == 0) RC_RAISE(err, RC_EINPUT, RC_LOCFMT "the case has nothing to integrate (no free body)", RC_LOC(m->end_loc));
     return RC_OK;
 }
 
@@ -430,6 +430,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
         goto fail;
     }
     strcpy(m->case_path, c->path);
+    m->end_loc = rc_loc_or(c->end, (rc_loc){c->path, 1});
     snprintf(m->title, sizeof m->title, "%s", c->title);
     snprintf(m->unit_mass, sizeof m->unit_mass, "%s", c->unit_mass);
     snprintf(m->unit_length, sizeof m->unit_length, "%s", c->unit_length);
@@ -467,8 +468,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     /* bodies */
     m->nbody = c->nrbody;
     if (m->nbody == 0) {
-        st = RC_SET(err, RC_EINPUT, RC_LOCFMT "no /RBODY card: ricochet needs at least one rigid body",
-                    RC_LOC(rc_loc_or(c->end, (rc_loc){c->path, 1})));
+        st = RC_SET(err, RC_EINPUT, RC_LOCFMT "no /RBODY card: ricochet needs at least one rigid body", RC_LOC(m->end_loc));
         goto fail;
     }
     ALLOC(m->body_id, m->nbody);
@@ -480,6 +480,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->body_y0, RC_NB * m->nbody);
     ALLOC(m->body_grav, 3 * m->nbody);
     ALLOC(m->body_dofmask, 6 * m->nbody);
+    ALLOC(m->body_loc, m->nbody);
     if ((st = compile_bodies(c, m, err))) goto fail;
     /* surfaces */
     m->nsurf = c->nsurf;
@@ -523,6 +524,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->inter_oidx, m->ninter);
     ALLOC(m->inter_fr, m->ninter);
     ALLOC(m->inter_name, m->ninter);
+    ALLOC(m->inter_loc, m->ninter);
     ALLOC(m->inter_law, m->ninter);
     ALLOC(m->inter_pw, m->ninter);
     for (int i = 0; i < c->ntype6; i++)
@@ -566,7 +568,7 @@ void rc_model_free(rc_model *m)
                       m->inter_fscaleul, m->inter_ns, m->inter_hidx, m->inter_oidx, m->inter_fr,
                       m->inter_name, m->atol, m->held, m->row_held, m->gwork_slot, m->surf_ext,
                       m->inter_law, m->inter_pw, m->inter_pscale, m->inter_fscale, m->inter_kscale,
-                      m->inter_vscale, m->inter_mred, m->ewt_rel};
+                      m->inter_vscale, m->inter_mred, m->ewt_rel, m->body_loc, m->inter_loc};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     free(m);
 }

@@ -338,6 +338,8 @@ T('ignored_card_then_error', R1, 'field Mass', chain(before_end(['/MAT/LAW1/1', 
 T('spring_stiffness_integral_overflow', SPR, 'field fct_ID', chain(
   at(F2, 2, 21, 40, '1e+308'), at(F2, 3, 21, 40, '-1e+308'), at(F2, 4, 21, 40, '1e+308'),
   at(SPR, 2, 21, 40, '         4         2')))
+T('t6_load_slope_denormal', T6, 'absolute tolerance', chain(
+  at(T6, 3, 21, 40, '0.3'), at(F1, 3, 21, 40, '1e-320'), lambda l: (l, hidx(l, T6), {})))
 T('include_missing', '-', '#include', before_end(['#include no_such_file.rad']))
 T('include_empty_name', '-', 'missing file name', before_end(['#include']))
 T('include_directory', '-', 'not a regular file', before_end(['#include .']))

@@ -29,8 +29,8 @@ def cols(line, c1, c2, text):
 TESTS = []
 
 
-def T(name, card, field, edit, expect_file=None):
-    TESTS.append((name, card, field, edit, expect_file))
+def T(name, card, field, edit):
+    TESTS.append((name, card, field, edit))
 
 
 def at(hdr, k, c1=None, c2=None, text=None, line=None, expect_k=None):
@@ -366,7 +366,7 @@ def write_all():
         rows.append((fname, '%s:%d' % (efile and ('%03d_%s' % (n, efile)) or fname, idx + 1),
                      card, field))
 
-    for name, card, field, edit, _ in TESTS:
+    for name, card, field, edit in TESTS:
         lines, idx, files = edit(list(BASE))
         if name == 'empty_deck':
             lines = ['']

@@ -33,6 +33,11 @@ if [ -x "$build"/fuzz_replay ]; then
     "$build"/fuzz_replay fuzz/regressions/* > "$log" 2>&1
     "$build"/fuzz_replay -q fuzz/corpus/* >> "$log" 2>&1
 else echo "FAIL fuzz: $build/fuzz_replay is missing" > "$log"; fi
+# field sweep, one variant in 50 (fuzz/sweep.py): hostile values in every field
+if /usr/bin/python3 fuzz/sweep.py --every 50 --replay "$build"/fuzz_replay --out "$build"/sweep-failures > "$log.sweep" 2>&1; then
+    echo "PASS fuzz.sweep: $(tail -n 1 "$log.sweep")" >> "$log"
+else echo "FAIL fuzz.sweep: $(tail -n 1 "$log.sweep")" >> "$log"; fi
+rm -f "$log.sweep"
 cat "$log"
 pass=$((pass + $(grep -c '^PASS ' "$log")))
 fail=$((fail + $(grep -c '^FAIL ' "$log")))

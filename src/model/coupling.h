@@ -21,7 +21,6 @@
 
 #include <stdio.h>
 
-#include "case/case.h"
 #include "model/model.h"
 
 #define RC_CE 2 /* energy states of a coupling */

@@ -538,8 +538,30 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
     free(bps);
     free(bvs);
     rc_cpl_atol(m);
-    for (int k = 0; k < ny; k++)
-        if (!(m->atol[k] > 0)) RC_RAISE(err, RC_EINTERNAL, "absolute tolerance of state %d is %g", k, m->atol[k]);
+    /* a tolerance derived from scales that under- or overflow (values near
+     * the limits of the doubles, e.g. a denormal load curve slope or gap):
+     * an input error at the card owning the state */
+    for (int k = 0; k < ny; k++) {
+        if (m->atol[k] > 0) continue;
+        for (int b = 0; b < m->nbody; b++)
+            if (m->body_yadr[b] >= 0 && k >= m->body_yadr[b] && k < m->body_yadr[b] + RC_NB)
+                RC_RAISE(err, RC_EINPUT,
+                         RC_LOCFMT "card /RBODY/%d: the absolute tolerance derived for its state %d is %g: the scales of its "
+                         "contacts (docs/theory.md 7.1) leave the range of the doubles; expected values of ordinary "
+                         "magnitude",
+                         RC_LOC(m->body_loc[b]), m->body_id[b], k - m->body_yadr[b], m->atol[k]);
+        for (int i = 0; i < m->ninter; i++)
+            if (k >= m->inter_eadr[i] && k < m->inter_eadr[i] + m->inter_ns[i])
+                RC_RAISE(err, RC_EINPUT,
+                         RC_LOCFMT "card %s: the absolute tolerance derived for its state %d is %g: its scales "
+                         "(docs/theory.md 7.1) leave the range of the doubles; expected values of ordinary magnitude",
+                         RC_LOC(m->inter_loc[i]), m->inter_name[i], k - m->inter_eadr[i], m->atol[k]);
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "the absolute tolerance derived for state %d (energy accounting) is %g: the energy scale of "
+                 "the model (docs/theory.md 7.1) leaves the range of the doubles; expected values of ordinary "
+                 "magnitude, or /SOLVER Atol_energy given",
+                 RC_LOC(m->end_loc), k, m->atol[k]);
+    }
     /* all relative: plain per-component tolerances */
     int any = 0;
     for (int k = 0; k < ny; k++) any |= !m->ewt_rel[k];

@@ -30,7 +30,8 @@
     } while (0)
 
 
-/* Bodies of the nodes of group `gid` -> flag array (all bodies when gid = 0). */
+/* Bodies of the nodes of group `gid` -> flag array (all bodies when gid = 0).
+ * `loc`: the line of the referring card that holds grnod_ID. */
 static rc_status group_bodies(const rc_case *c, int gid, rc_loc loc, const char *card, int *flag,
                               rc_error *err)
 {
@@ -42,10 +43,13 @@ static rc_status group_bodies(const rc_case *c, int gid, rc_loc loc, const char 
                  RC_LOC(loc), card, gid);
     for (int k = 0; k < c->grnod[g].n; k++) {
         int b = rc_case_body_of_node(c, c->grnod[g].nodes[k]);
-        if (b < 0)
+        if (b < 0) {
+            const rc_loc nl = rc_loc_at(c->grnod[g].node_loc, k, c->grnod[g].loc);
             RC_RAISE(err, RC_EINPUT,
-                     RC_LOCFMT "card %s: node %d of /GRNOD/%d belongs to no /RBODY (ricochet bodies are rigid)",
-                     RC_LOC(loc), card, c->grnod[g].nodes[k], gid);
+                     RC_LOCFMT "card /GRNOD/NODE/%d, field node_ID: node %d belongs to no /RBODY (ricochet bodies are "
+                     "rigid); the group is used by %s at %s:%d",
+                     RC_LOC(nl), gid, c->grnod[g].nodes[k], card, RC_LOC(loc));
+        }
         flag[b] = 1;
     }
     return RC_OK;
@@ -90,28 +94,31 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
     }
     for (int b = 0; b < c->nrbody; b++) {
         const rc_case_rbody *rb = &c->rbody[b];
+        /* the data lines holding the fields (the header for a case built by hand) */
+        const rc_loc l1 = rc_loc_or(rb->line_loc[0], rb->loc), l3 = rc_loc_or(rb->line_loc[2], rb->loc);
         int nd = rc_case_find_node(c, rb->node_id);
         if (nd < 0) {
             free(owner);
             free(mp);
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field node_ID: expected the id of a /NODE, got %d (no such node)",
-                     RC_LOC(rb->loc), rb->id, rb->node_id);
+                     RC_LOC(l1), rb->id, rb->node_id);
         }
         if (owner[nd]) {
             const rc_case_rbody *first = &c->rbody[owner[nd] - 1];
             free(owner);
             free(mp);
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field node_ID: node %d is already the main node of /RBODY/%d (%s:%d); expected a node of its own",
-                     RC_LOC(rb->loc), rb->id, rb->node_id, first->id, first->loc.file, first->loc.line);
+                     RC_LOC(l1), rb->id, rb->node_id, first->id, first->loc.file, first->loc.line);
         }
         owner[nd] = b + 1;
         if (rb->grnod_id && rc_case_find_grnod(c, rb->grnod_id) < 0) {
             free(owner);
             free(mp);
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field grnd_ID: expected the id of a /GRNOD, got %d (no such group)",
-                     RC_LOC(rb->loc), rb->id, rb->grnod_id);
+                     RC_LOC(l1), rb->id, rb->grnod_id);
         }
         m->body_id[b] = rb->id;
+        m->body_loc[b] = rb->loc;
         /* mass, centre of mass and inertia: mesh and card (massprop.c) */
         m->body_mass[b] = mp[b].mass;
         double *J = m->body_J + 9 * b;
@@ -122,7 +129,7 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
             free(owner);
             free(mp);
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, fields Jxx..Jxz: expected a positive-definite inertia tensor",
-                     RC_LOC(rb->loc), rb->id);
+                     RC_LOC(l3), rb->id);
         }
         double *y0 = m->body_y0 + RC_NB * b;
         memcpy(y0, mp[b].x, 3 * sizeof(double));
@@ -138,7 +145,7 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
         const rc_case_inivel *iv = &c->inivel[k];
         char card[64];
         snprintf(card, sizeof card, "/INIVEL/%s/%d", iv->rot ? "ROT" : "TRA", iv->id);
-        st = group_bodies(c, iv->grnod_id, iv->loc, card, flag, err);
+        st = group_bodies(c, iv->grnod_id, rc_loc_or(iv->line_loc, iv->loc), card, flag, err);
         for (int b = 0; b < c->nrbody && !st; b++)
             if (flag[b]) memcpy(m->body_y0 + RC_NB * b + (iv->rot ? 10 : 7), iv->v, 3 * sizeof(double));
     }
@@ -147,6 +154,7 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
      * (a partial rotation lock is not a simple condition on quaternions) */
     for (int k = 0; k < c->nbcs && !st; k++) {
         const rc_case_bcs *bc = &c->bcs[k];
+        const rc_loc bl = rc_loc_or(bc->line_loc, bc->loc);
         char card[64];
         snprintf(card, sizeof card, "/BCS/%d", bc->id);
         int all = 1, nrot = 0;
@@ -155,10 +163,10 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
         if (nrot != 0 && nrot != 3) {
             st = RC_SET(err, RC_EINPUT,
                         RC_LOCFMT "card %s, field Trarot: rotations must be all fixed or all free (\"xxx 111\" or \"xxx 000\"); a partial rotation lock is not supported yet",
-                        RC_LOC(bc->loc), card);
+                        RC_LOC(bl), card);
             break;
         }
-        st = group_bodies(c, bc->grnod_id, bc->loc, card, flag, err);
+        st = group_bodies(c, bc->grnod_id, bl, card, flag, err);
         for (int b = 0; b < c->nrbody && !st; b++) {
             if (!flag[b]) continue;
             if (all) m->body_fixed[b] = 1;
@@ -172,19 +180,20 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
     /* gravity: one time function for all cards (constant when 0) */
     for (int k = 0; k < c->ngrav && !st; k++) {
         const rc_case_grav *gr = &c->grav[k];
+        const rc_loc gl = rc_loc_or(gr->line_loc, gr->loc);
         char card[64];
         snprintf(card, sizeof card, "/GRAV/%d", gr->id);
         int tab;
-        st = rc_case_ref_funct(c, gr->fct_id, 0, gr->loc, card, "fct_IDT", &tab, err);
+        st = rc_case_ref_funct(c, gr->fct_id, 0, gl, card, "fct_IDT", &tab, err);
         if (st) break;
         if (k > 0 && tab != m->grav_table) {
             st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field fct_IDT: all /GRAV cards must share one time function (not supported yet)",
-                        RC_LOC(gr->loc), card);
+                        RC_LOC(gl), card);
             break;
         }
         m->grav_table = tab;
         m->grav_ascale = gr->ascale;
-        st = group_bodies(c, gr->grnod_id, gr->loc, card, flag, err);
+        st = group_bodies(c, gr->grnod_id, gl, card, flag, err);
         for (int b = 0; b < c->nrbody && !st; b++)
             if (flag[b]) m->body_grav[3 * b + gr->dir] += gr->fscale;
     }
@@ -204,7 +213,7 @@ static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
             b = rc_case_find_rbody(c, cs->rbody_id);
             if (b < 0)
                 RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /SURF/%s/%d, field rbody_ID: expected the id of a /RBODY, got %d (no such body)",
-                         RC_LOC(cs->loc), kind, cs->id, cs->rbody_id);
+                         RC_LOC(rc_loc_or(cs->rbody_loc, cs->loc)), kind, cs->id, cs->rbody_id);
         }
         m->surf_id[s] = cs->id;
         m->surf_body[s] = b;
@@ -310,6 +319,7 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
         RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields surf_ID1/surf_ID2: both surfaces are on the same body; they must belong to two different rigid bodies",
                  RC_LOC(t6->line_loc[0]), card);
     m->inter_id[i] = t6->id;
+    m->inter_loc[i] = t6->loc;
     m->inter_gap[i] = t6->gap;
     m->inter_tstart[i] = t6->tstart;
     m->inter_tstop[i] = t6->tstop;
@@ -360,7 +370,7 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
 }
 
 /* ---- state layout and tolerances -------------------------------------- */
-static rc_status layout(rc_model *m, rc_error *err)
+static rc_status layout(const rc_case *c, rc_model *m, rc_error *err)
 {
     int ny = 0;
     for (int b = 0; b < m->nbody; b++) {
@@ -406,7 +416,7 @@ static rc_status layout(rc_model *m, rc_error *err)
     m->row_held = calloc((size_t)ny + 1, 1);
     if (!m->row_held) RC_RAISE(err, RC_ENOMEM, "out of memory");
     for (int k = 0; k < m->nheld; k++) m->row_held[m->held[k]] = 1;
-    if (ny == 0) RC_RAISE(err, RC_EINPUT, "%s: the case has nothing to integrate (no free body)", m->case_path);
+    if (ny == 0) RC_RAISE(err, RC_EINPUT, RC_LOCFMT "the case has nothing to integrate (no free body)", RC_LOC(m->end_loc));
     return RC_OK;
 }
 
@@ -423,6 +433,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
         goto fail;
     }
     strcpy(m->case_path, c->path);
+    m->end_loc = rc_loc_or(c->end, (rc_loc){c->path, 1});
     snprintf(m->title, sizeof m->title, "%s", c->title);
     snprintf(m->unit_mass, sizeof m->unit_mass, "%s", c->unit_mass);
     snprintf(m->unit_length, sizeof m->unit_length, "%s", c->unit_length);
@@ -460,7 +471,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     /* bodies */
     m->nbody = c->nrbody;
     if (m->nbody == 0) {
-        st = RC_SET(err, RC_EINPUT, "%s: no /RBODY card: ricochet needs at least one rigid body", c->path);
+        st = RC_SET(err, RC_EINPUT, RC_LOCFMT "no /RBODY card: ricochet needs at least one rigid body", RC_LOC(m->end_loc));
         goto fail;
     }
     ALLOC(m->body_id, m->nbody);
@@ -472,6 +483,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->body_y0, RC_NB * m->nbody);
     ALLOC(m->body_grav, 3 * m->nbody);
     ALLOC(m->body_dofmask, 6 * m->nbody);
+    ALLOC(m->body_loc, m->nbody);
     if ((st = compile_bodies(c, m, err))) goto fail;
     /* surfaces */
     m->nsurf = c->nsurf;
@@ -515,6 +527,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->inter_oidx, m->ninter);
     ALLOC(m->inter_fr, m->ninter);
     ALLOC(m->inter_name, m->ninter);
+    ALLOC(m->inter_loc, m->ninter);
     ALLOC(m->inter_law, m->ninter);
     ALLOC(m->inter_pw, m->ninter);
     for (int i = 0; i < c->ntype6; i++) {
@@ -530,7 +543,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     if ((st = rc_imp_compile(c, m, err))) goto fail;
     /* states (the tolerances and the Jacobian pattern follow in
      * engine/prepare.c) */
-    if ((st = layout(m, err))) goto fail;
+    if ((st = layout(c, m, err))) goto fail;
     *out = m;
     return RC_OK;
 fail:
@@ -560,7 +573,7 @@ void rc_model_free(rc_model *m)
                       m->inter_fscaleul, m->inter_ns, m->inter_hidx, m->inter_oidx, m->inter_fr,
                       m->inter_name, m->atol, m->held, m->row_held, m->gwork_slot, m->surf_ext,
                       m->inter_law, m->inter_pw, m->inter_pscale, m->inter_fscale, m->inter_kscale,
-                      m->inter_vscale, m->inter_mred, m->ewt_rel};
+                      m->inter_vscale, m->inter_mred, m->ewt_rel, m->body_loc, m->inter_loc};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     free(m);
 }

@@ -30,6 +30,7 @@
 #include <stdint.h>
 
 #include "ricochet/ricochet.h"
+#include "case/case.h"
 #include "model/friction.h"
 #include "model/table.h"
 
@@ -104,6 +105,7 @@ typedef struct rc_jblock {
 struct rc_model {
     /* provenance */
     char *case_path;
+    rc_loc end_loc;      /* the deck's end (rc_case.end): place of deck-level messages */
     char title[101];
     char unit_mass[21], unit_length[21], unit_time[21];
     unsigned long checksum;
@@ -112,6 +114,7 @@ struct rc_model {
     int nbody;
     int nfree;
     int *body_id;        /* [nbody] /RBODY id */
+    rc_loc *body_loc;    /* [nbody] header of the /RBODY card, for messages */
     int *body_fixed;     /* [nbody] 1: fixed (ground) */
     int *body_yadr;      /* [nbody] offset in y, -1 when fixed */
     double *body_mass;   /* [nbody] [kg] */
@@ -172,6 +175,7 @@ struct rc_model {
     int *inter_oidx;     /* [ninter] index of the Inacti offset, -1 */
     rc_fric *inter_fr;   /* [ninter] friction (friction.h); kind RC_FK_NONE: none */
     char **inter_name;   /* [ninter] "/INTER/TYPE6/<id>" */
+    rc_loc *inter_loc;   /* [ninter] header of the interface card, for messages */
     int *inter_law;      /* [ninter] normal law RC_LAW_TYPE6 / RC_LAW_POWER (power.h) */
     struct rc_power *inter_pw; /* [ninter] power-law parameters (power.h), law POWER */
 

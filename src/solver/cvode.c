@@ -414,8 +414,8 @@ static const char *const energy_long[RC_NENERGY] = {
     "energy dissipated by the coupling dampers",
     "elastic and gravitational energy of the catenary lines (work done by their ends)",
     "minus the work done on the bodies by the imposed velocities (/IMPVEL reactions)",
-    "kinetic + potential + contact work + damping + friction work + couplings + imposed (constant in exact "
-    "arithmetic)"};
+    ("kinetic + potential + contact work + damping + friction work + couplings + imposed (constant in exact "
+     "arithmetic)")};
 
 static rc_status open_output(const rc_model *m, const char *path, rc_output **o, rc_error *err)
 {

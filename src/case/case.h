@@ -128,6 +128,7 @@ typedef struct rc_case_type6 {
     int fct_ul;                               /* line 5 */
     double stiff, fscaleul;                   /* line 5: [N/m] [N] */
     double visc;                              /* line 6: [N s/m] */
+    double e_target;                          /* line 6, ricochet: restitution asked [-]; 0: none */
     int fct_dv, fct_df;                       /* line 6 */
     double fscalev;                           /* line 6: [N] */
     rc_loc loc;

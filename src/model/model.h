@@ -157,6 +157,7 @@ struct rc_model {
     double *inter_gap;   /* Gap [m] */
     double *inter_tstart, *inter_tstop; /* [s] */
     double *inter_visc;  /* [N s/m] */
+    double *inter_etarget; /* restitution asked (TYPE6 e_target) [-]; 0: none; Visc derived from it */
     double *inter_fscalev; /* [N] */
     double *inter_ascalex; /* [m] */
     double *inter_fscaleld; /* [N] */
@@ -277,10 +278,13 @@ static inline int rc_event_records(const rc_model *m)
 rc_data *rc_data_new(const rc_model *m);
 void rc_data_free(rc_data *d);
 
-/* Restitution of a linear contact that cannot pull at damping ratio zeta
- * in [0, 1) (NaN otherwise); *theta = omega_d times the contact time
+/* Restitution of a linear contact that cannot pull at damping ratio
+ * zeta >= 0 (NaN otherwise); *tau = omega times the contact time
  * (report.c). */
-double rc_linear_restitution(double zeta, double *theta);
+double rc_linear_restitution(double zeta, double *tau);
+/* Is the load curve of TYPE6 interface i a straight line through the
+ * origin? Its slope F/P in *k [N/m] (report.c). */
+int rc_type6_linear_slope(const rc_model *m, int i, double *k);
 /* Name of state i for messages: "/RBODY/3, velocity z [m/s]" (statename.c). */
 void rc_state_name(const rc_model *m, int i, char *buf, size_t n);
 

@@ -439,6 +439,27 @@ static void sample_step(void *cv, rc_impacts *im, const rc_model *m, const rc_da
     }
 }
 
+/* Output times strictly before t (not within rounding of it) that a single
+ * step passed before stopping at an event or a breakpoint at t: their
+ * records, from the interpolant of that step, in the modes before the
+ * event. Advances *tout and *nout. */
+static rc_status outputs_before(void *cv, const rc_model *m, const rc_data *d, rc_output *o, frame_buf *fb, double t,
+                                double tend, double *tout, long *nout, N_Vector ytmp, rc_error *err)
+{
+    while (*tout < t && t - *tout > 1e-12 * fmax(fabs(t), m->dtout)) {
+        if (CVodeGetDky(cv, *tout, 0, ytmp) != CV_SUCCESS)
+            RC_RAISE(err, RC_ESOLVER, "CVODE interpolation at the output time %.9g s failed", *tout);
+        rc_status st = write_frame(m, d, o, fb, *tout, N_VGetArrayPointer(ytmp), 0, err);
+        if (st) return st;
+        (*nout)++;
+        const double next = fmin(*nout * m->dtout, tend);
+        if (next <= *tout) break;
+        *tout = next;
+        if (tend - *tout < 1e-12 * tend) *tout = tend;
+    }
+    return RC_OK;
+}
+
 _Static_assert(RC_SURF_NEXT == RC_OUT_SURF_NPARAM, "surface parameters: model and file disagree");
 static const char *const surf_kind_name[] = {"", "PLANE", "SPHERE", "CYLINDER", "BOX"};
 
@@ -821,6 +842,9 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
             fail_reason = reason;
             st = RC_SET(err, RC_ESOLVER, "%s", reason);
             break;
+        }
+        if ((flag == CV_TSTOP_RETURN && ibp < nbp && t >= bp[ibp]) || flag == CV_ROOT_RETURN) {
+            if ((st = outputs_before(cv, m, d, out, &fb, t, tend, &tout, &nout, ytn, err))) goto done;
         }
         if (flag == CV_TSTOP_RETURN && ibp < nbp && t >= bp[ibp]) {
             /* a time breakpoint: an imposed velocity ends; restart there */

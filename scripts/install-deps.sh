@@ -3,7 +3,10 @@
 # Idempotent: does nothing (and needs no privileges) when all are present.
 set -euo pipefail
 PKGS=(gcc make libsundials-dev libsuitesparse-dev libgsl-dev libnetcdf-dev netcdf-bin
-      python3 python3-numpy python3-scipy python3-netcdf4 python3-matplotlib)
+      python3 python3-numpy python3-scipy python3-netcdf4 python3-matplotlib
+      # tests only: reading the results with xarray, the ParaView export read
+      # back and rendered off screen with VTK (xvfb: a display for it)
+      python3-xarray python3-vtk9 xvfb xauth)
 missing=()
 for p in "${PKGS[@]}"; do
     if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

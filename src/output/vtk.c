@@ -301,14 +301,16 @@ static int tessellate(mesh *m, const vtk_src *s, size_t j, const double pos[3], 
 
 static void xml_doubles(FILE *f, const char *name, int ncomp, const double *v, size_t n)
 {
-    fprintf(f, "<DataArray type=\"Float64\" Name=\"%s\" NumberOfComponents=\"%d\" format=\"ascii\">\n", name, ncomp);
+    fprintf(f, "<DataArray type=\"Float64\" Name=\"%s\" NumberOfComponents=\"%d\" NumberOfTuples=\"%zu\" format=\"ascii\">\n",
+            name, ncomp, n);
     for (size_t k = 0; k < n * (size_t)ncomp; k++) fprintf(f, "%.17g%c", v[k], (k + 1) % (size_t)ncomp ? ' ' : '\n');
     fprintf(f, "</DataArray>\n");
 }
 
 static void xml_ints(FILE *f, const char *name, const int *v, size_t n)
 {
-    fprintf(f, "<DataArray type=\"Int32\" Name=\"%s\" NumberOfComponents=\"1\" format=\"ascii\">\n", name);
+    fprintf(f, "<DataArray type=\"Int32\" Name=\"%s\" NumberOfComponents=\"1\" NumberOfTuples=\"%zu\" format=\"ascii\">\n",
+            name, n);
     for (size_t k = 0; k < n; k++) fprintf(f, "%d%c", v[k], (k + 1) % 16 && k + 1 < n ? ' ' : '\n');
     fprintf(f, "</DataArray>\n");
 }

@@ -5,6 +5,8 @@
 #include "output/output.h"
 #include "base/sha256.h"
 #include "ricochet/ricochet.h"
+#include "model/model.h"
+#include "solver/impacts.h"
 
 #include <math.h>
 #include <netcdf.h>
@@ -728,6 +730,17 @@ static void test_output_impacts_demo_closed_form(void)
     ENSURE(nc_get_var1_double(ncid, var_id(ncid, "impact_duration"), start, &dur) == NC_NOERR && dur == r->duration);
     ENSURE(nc_close(ncid) == NC_NOERR);
     remove(path);
+    /* the sampling note: none at the demo's Dt_out = 0.1 ms (~31 records
+     * per contact), given at 1 ms (~3 records) */
+    char note[320];
+    rc_impacts_sampling_note(m, note, sizeof note);
+    ENSURE(note[0] == '\0');
+    const double dt = m->dtout;
+    m->dtout = 1e-3;
+    rc_impacts_sampling_note(m, note, sizeof note);
+    printf("    Dt_out 1 ms: %s\n", note);
+    ENSURE(strstr(note, "output interval 0.001 s samples a contact of ~0.0031 s") && strstr(note, "~3 records"));
+    m->dtout = dt;
     rc_model_free(m);
     rc_case_free(c);
 }

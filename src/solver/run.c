@@ -39,5 +39,5 @@ void rc_stats_print(const rc_stats *s, FILE *f)
                     r->duration, r->pen_max, r->fn_max, r->v_in, r->v_out, r->restitution, r->energy_lost);
         }
     }
-    if (s->sampling_note[0]) fprintf(f, "note: %s\n", s->sampling_note);
+    if (s->sampling_note[0]) fprintf(f, "warning: %s\n", s->sampling_note);
 }

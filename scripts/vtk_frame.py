@@ -4,9 +4,10 @@
     python3 scripts/vtk_frame.py DIR/STEM.pvd OUT.png [--time T | --record K]
                                  [--size WxH] [--force-scale S]
 
-Draws the bodies (coloured by body id, planes grey), the contact points and
-the normal contact forces as arrows (length S x force [m/N]; default: the
-largest force of the record draws as long as the largest body), and prints
+Draws the bodies (coloured by body id, surfaces fixed in space grey), the
+contact points and the normal contact forces on the first body of each
+contact as arrows (length S x force [m/N]; default: the largest force of
+the record draws as long as the largest body), and prints
 the record drawn. Without --time or --record: the record of the largest
 normal force. Needs Debian's python3-vtk9; on a machine without a display
 run it under xvfb-run (package xvfb).
@@ -73,7 +74,8 @@ def render(bodies, contacts, png, size=(800, 600), force_scale=None, title=""):
     lut.SetTableRange(lo, max(hi, lo + 1))
     lut.SetHueRange(0.6, 0.0)
     lut.Build()
-    lut.SetTableValue(0, 0.75, 0.75, 0.75, 1.0)
+    if lo < 0:  # surfaces fixed in space
+        lut.SetTableValue(0, 0.75, 0.75, 0.75, 1.0)
     mapper.SetLookupTable(lut)
     mapper.SetScalarRange(lo, max(hi, lo + 1))
     mapper.ScalarVisibilityOn()
@@ -82,23 +84,21 @@ def render(bodies, contacts, png, size=(800, 600), force_scale=None, title=""):
     actor.GetProperty().SetEdgeVisibility(0)
     actor.GetProperty().SetOpacity(0.45)  # the force arrows run inside the bodies
     ren.AddActor(actor)
-    # body size: the extent of the non-plane points
-    size_body = 0.0
+    # sizes: the largest body (its own points) and the scene (all bodies)
+    size_body, size_scene = 0.0, 0.0
     pts = bodies.GetPoints()
-    if pts is not None and ids is not None:
-        import math
-        lo3 = [math.inf] * 3
-        hi3 = [-math.inf] * 3
-        for i in range(pts.GetNumberOfPoints()):
-            if ids.GetValue(i) < 0:
-                continue
-            p = pts.GetPoint(i)
-            for c in range(3):
-                lo3[c] = min(lo3[c], p[c])
-                hi3[c] = max(hi3[c], p[c])
-        if lo3[0] < math.inf:
-            size_body = max(hi3[c] - lo3[c] for c in range(3))
+    if pts is not None and ids is not None and pts.GetNumberOfPoints():
+        from vtk.util.numpy_support import vtk_to_numpy
+        xyz = vtk_to_numpy(pts.GetData())
+        bid = vtk_to_numpy(ids)
+        movers = xyz[bid >= 0]
+        if len(movers):
+            size_scene = float((movers.max(axis=0) - movers.min(axis=0)).max())
+            lo3, hi3 = movers.min(axis=0), movers.max(axis=0)
             bounds = (lo3[0], hi3[0], lo3[1], hi3[1], lo3[2], hi3[2])
+            for b in set(bid[bid >= 0].tolist()):
+                one = xyz[bid == b]
+                size_body = max(size_body, float((one.max(axis=0) - one.min(axis=0)).max()))
     # contact forces: arrows at the contact points, on the closed contacts
     fn = contacts.GetPointData().GetArray("force_normal")
     fmax = max((fn.GetValue(i) for i in range(fn.GetNumberOfTuples())), default=0.0) if fn else 0.0
@@ -143,7 +143,7 @@ def render(bodies, contacts, png, size=(800, 600), force_scale=None, title=""):
     win.SetSize(*size)
     cam = ren.GetActiveCamera()
     cx, cy, cz = [(bounds[2 * c] + bounds[2 * c + 1]) / 2 for c in range(3)]
-    d = max(size_body, 1e-3) * 4.0
+    d = max(0.9 * size_scene + 2.5 * size_body, 1e-3)
     cam.SetFocalPoint(cx, cy, cz)
     cam.SetPosition(cx + 0.9 * d, cy - 1.6 * d, cz + 0.7 * d)
     cam.SetViewUp(0, 0, 1)

@@ -9,7 +9,7 @@ WARN    := -Wall -Wextra -pedantic -Wshadow -Wstrict-prototypes -Wmissing-protot
 # rule is exact for the finite values the kernels see (docs/design.md).
 CFLAGS  ?= $(OPT) -g
 # the git commit of the sources, in the results files (docs/output-format.md)
-RC_COMMIT := $(shell git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)$(shell git diff --quiet HEAD 2>/dev/null || echo -modified)
+RC_COMMIT := $(shell c=$$(git rev-parse --short=12 HEAD 2>/dev/null) && { git diff --quiet HEAD 2>/dev/null && echo $$c || echo $$c-modified; } || echo unknown)
 ALLCFLAGS = $(CSTD) $(WARN) -fcx-limited-range -Iinclude -Isrc -I/usr/include/suitesparse $(CFLAGS)
 LDLIBS  := -lsundials_cvode -lsundials_ida -lsundials_nvecserial -lsundials_sunmatrixsparse \
            -lsundials_sunlinsolklu -lklu -lgsl -lgslcblas -lnetcdf -lm

@@ -9,6 +9,8 @@ WARN    := -Wall -Wextra -pedantic -Wshadow -Wstrict-prototypes -Wmissing-protot
 # rule is exact for the finite values the kernels see (docs/design.md).
 CFLAGS  ?= $(OPT) -g
 CXFLAGS ?= -fcx-limited-range
+# the git commit of the sources, in the results files (docs/output-format.md)
+RC_COMMIT := $(shell c=$$(git rev-parse --short=12 HEAD 2>/dev/null) && { git diff --quiet HEAD 2>/dev/null && echo $$c || echo $$c-modified; } || echo unknown)
 ALLCFLAGS = $(CSTD) $(WARN) $(CXFLAGS) -Iinclude -Isrc -I/usr/include/suitesparse $(CFLAGS)
 LDLIBS  := -lsundials_cvode -lsundials_ida -lsundials_nvecserial -lsundials_sunmatrixsparse \
            -lsundials_sunlinsolklu -lklu -lgsl -lgslcblas -lnetcdf -lm
@@ -39,6 +41,17 @@ deps:
 $(BUILD)/obj/%.o: src/%.c $(SRC_HDR)
 	@mkdir -p $(dir $@)
 	$(CC) $(ALLCFLAGS) -c $< -o $@
+
+# netcdf.c alone carries the commit; rebuilt when it changes
+$(BUILD)/obj/output/netcdf.o: src/output/netcdf.c $(SRC_HDR) $(BUILD)/commit
+	@mkdir -p $(dir $@)
+	$(CC) $(ALLCFLAGS) -DRC_COMMIT='"$(RC_COMMIT)"' -c $< -o $@
+
+$(BUILD)/commit: FORCE
+	@mkdir -p $(BUILD)
+	@echo '$(RC_COMMIT)' | cmp -s - $@ || echo '$(RC_COMMIT)' > $@
+
+FORCE:
 
 $(BUILD)/tobj/%.o: tests/%.c $(wildcard tests/*.h tests/*.def) $(SRC_HDR)
 	@mkdir -p $(dir $@)

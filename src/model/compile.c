@@ -447,6 +447,17 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     }
     strcpy(m->case_path, c->path);
     m->end_loc = rc_loc_or(c->end, (rc_loc){c->path, 1});
+    /* the files read, for the results file's checksums */
+    m->nfile = rc_case_file_count(c);
+    m->file = calloc((size_t)m->nfile + 1, sizeof *m->file);
+    int files_ok = m->file != NULL;
+    for (int k = 0; m->file && k < m->nfile; k++)
+        if ((m->file[k] = malloc(strlen(rc_case_file(c, k)) + 1))) strcpy(m->file[k], rc_case_file(c, k));
+        else files_ok = 0;
+    if (!files_ok) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory");
+        goto fail;
+    }
     snprintf(m->title, sizeof m->title, "%s", c->title);
     snprintf(m->unit_mass, sizeof m->unit_mass, "%s", c->unit_mass);
     snprintf(m->unit_length, sizeof m->unit_length, "%s", c->unit_length);
@@ -576,6 +587,9 @@ void rc_model_free(rc_model *m)
     rc_cpl_free(m->cpl);
     rc_power_free(m);
     rc_imp_free(m->imp);
+    if (m->file)
+        for (int k = 0; k < m->nfile; k++) free(m->file[k]);
+    free(m->file);
     void *arrays[] = {m->case_path, m->table, m->body_id, m->body_fixed, m->body_yadr, m->body_mass,
                       m->body_J, m->body_Jinv, m->body_y0, m->body_grav, m->body_dofmask, m->surf_id, m->surf_kind,
                       m->surf_body, m->surf_p, m->surf_n, m->surf_r, m->inter_id, m->inter_pair,

@@ -109,6 +109,8 @@ struct rc_model {
     char title[101];
     char unit_mass[21], unit_length[21], unit_time[21];
     unsigned long checksum;
+    int nfile;           /* files read: 0 the case file, then its includes */
+    char **file;         /* [nfile] their paths (as given or resolved) */
 
     /* bodies: all /RBODY, fixed ones included */
     int nbody;

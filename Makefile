@@ -8,11 +8,27 @@ WARN    := -Wall -Wextra -pedantic -Wshadow -Wstrict-prototypes -Wmissing-protot
 # complex-step differentiation uses C99 complex arithmetic; the limited-range
 # rule is exact for the finite values the kernels see (docs/design.md).
 CFLAGS  ?= $(OPT) -g
-ALLCFLAGS = $(CSTD) $(WARN) -fcx-limited-range -Iinclude -Isrc -I/usr/include/suitesparse $(CFLAGS)
-LDLIBS  := -lsundials_cvode -lsundials_ida -lsundials_nvecserial -lsundials_sunmatrixsparse \
-           -lsundials_sunlinsolklu -lklu -lgsl -lgslcblas -lnetcdf -lm
+# the library's objects are position-independent: one set of objects makes
+# both build/libricochet.a and build/libricochet.so
+ALLCFLAGS = $(CSTD) $(WARN) -fcx-limited-range -fPIC -pthread -Iinclude -Isrc -I/usr/include/suitesparse \
+            -DRC_COMMIT='"$(RC_COMMIT)"' $(CFLAGS)
+# what the library links against; also written into ricochet.pc (Libs.private)
+LIBS_PRIVATE := -lsundials_cvode -lsundials_ida -lsundials_nvecserial -lsundials_sunmatrixsparse \
+           -lsundials_sunlinsolklu -lklu -lgsl -lgslcblas -lnetcdf -lm -pthread
+LDLIBS  := $(LIBS_PRIVATE)
 BUILD   ?= build
 PREFIX  ?= /usr/local
+LIBDIR  ?= $(PREFIX)/lib
+# the Python module (python/ricochet) goes where Debian's python3 looks
+PYDIR   ?= $(PREFIX)/lib/python3/dist-packages
+
+# The git commit of the sources, baked in as RC_COMMIT (`ricochet --version`,
+# rc_build_commit()); "unknown" outside a git checkout. Defined here only.
+RC_COMMIT := $(shell git describe --always --dirty --abbrev=12 2>/dev/null || echo unknown)
+# Library version from the public header; the soname carries the major number.
+VERSION := $(shell sed -n 's/^\#define RICOCHET_VERSION "\(.*\)"/\1/p' include/ricochet/ricochet.h)
+SOMAJOR := $(firstword $(subst ., ,$(VERSION)))
+SONAME  := libricochet.so.$(SOMAJOR)
 
 # Sources are discovered stage by stage (docs/design.md, "Pipeline and files");
 # src/cli holds the command-line program, everything else goes into the library.
@@ -23,12 +39,13 @@ SRC_HDR := $(wildcard src/*/*.h src/*/*.inc include/ricochet/*.h)
 TEST_SRC := $(wildcard tests/*.c)
 TEST_OBJ := $(patsubst tests/%.c,$(BUILD)/tobj/%.o,$(TEST_SRC))
 LIB     := $(BUILD)/libricochet.a
+SHLIB   := $(BUILD)/libricochet.so.$(VERSION)
 BIN     := $(BUILD)/ricochet
 TESTBIN := $(BUILD)/run_tests
 
-.PHONY: all demo check validate asan valgrind bench install clean deps test
+.PHONY: all demo check validate asan valgrind bench install clean deps test FORCE
 
-all: $(BIN) $(TESTBIN)
+all: $(BIN) $(TESTBIN) $(SHLIB)
 
 deps:
 	@bash scripts/install-deps.sh
@@ -44,6 +61,19 @@ $(BUILD)/tobj/%.o: tests/%.c $(wildcard tests/*.h tests/*.def) $(SRC_HDR)
 $(LIB): $(LIB_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
+
+# the shared library exports the functions of include/ricochet/ricochet.h only
+$(SHLIB): $(LIB_OBJ) src/libricochet.map
+	$(CC) $(ALLCFLAGS) -shared -Wl,-soname,$(SONAME) -Wl,--version-script=src/libricochet.map \
+	    -o $@ $(LIB_OBJ) $(LDLIBS)
+	ln -sf $(notdir $@) $(BUILD)/$(SONAME)
+	ln -sf $(SONAME) $(BUILD)/libricochet.so
+
+# the commit is rebuilt into versions.o whenever it changes
+$(BUILD)/commit.stamp: FORCE
+	@mkdir -p $(BUILD)
+	@echo '$(RC_COMMIT)' | cmp -s - $@ || echo '$(RC_COMMIT)' > $@
+$(BUILD)/obj/solver/versions.o: $(BUILD)/commit.stamp
 
 $(BIN): $(BUILD)/obj/cli/main.o $(LIB)
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(LDLIBS)
@@ -97,11 +127,21 @@ bench: deps
 	@$(MAKE) --no-print-directory all
 	@bash bench/run.sh $(BUILD)
 
-install: $(BIN) $(LIB)
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/ricochet
+# PREFIX (default /usr/local), LIBDIR, PYDIR and DESTDIR (a staging root)
+# are honoured: bin/ricochet, the static and shared libraries, the header,
+# lib/pkgconfig/ricochet.pc and the Python module.
+install: $(BIN) $(LIB) $(SHLIB)
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(PREFIX)/include/ricochet \
+	    $(DESTDIR)$(PYDIR)/ricochet
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/ricochet
-	install -m 644 $(LIB) $(DESTDIR)$(PREFIX)/lib/libricochet.a
+	install -m 644 $(LIB) $(DESTDIR)$(LIBDIR)/libricochet.a
+	install -m 755 $(SHLIB) $(DESTDIR)$(LIBDIR)/
+	ln -sf $(notdir $(SHLIB)) $(DESTDIR)$(LIBDIR)/$(SONAME)
+	ln -sf $(SONAME) $(DESTDIR)$(LIBDIR)/libricochet.so
 	install -m 644 include/ricochet/*.h $(DESTDIR)$(PREFIX)/include/ricochet/
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@LIBDIR@|$(LIBDIR)|' -e 's|@VERSION@|$(VERSION)|' \
+	    -e 's|@LIBS_PRIVATE@|$(LIBS_PRIVATE)|' ricochet.pc.in > $(DESTDIR)$(LIBDIR)/pkgconfig/ricochet.pc
+	install -m 644 python/ricochet/*.py $(DESTDIR)$(PYDIR)/ricochet/
 
 clean:
 	rm -rf build build-asan out

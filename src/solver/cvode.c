@@ -527,7 +527,7 @@ static void progress(double tend, const rc_stats *s, double t, long steps, doubl
         else if (rem < 7200) snprintf(left, sizeof left, ", about %.0f min left", rem / 60);
         else snprintf(left, sizeof left, ", about %.1f h left", rem / 3600);
     }
-    fprintf(stderr, "%sricochet: t = %.4g of %.4g s (%.1f%%), steps %ld, events %ld, wall %.1f s%s%s", tty ? "\r" : "",
+    fprintf(stderr, "%sricochet: t = %.6g of %.6g s (%.1f%%), steps %ld, events %ld, wall %.1f s%s%s", tty ? "\r" : "",
             t, tend, 100.0 * t / tend, steps, s->events, wall, left, tty ? "   " : "\n");
     fflush(stderr);
 }

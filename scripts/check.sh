@@ -20,6 +20,13 @@ cat "$log"
 pass=$((pass + $(grep -c '^PASS ' "$log")))
 fail=$((fail + $(grep -c '^FAIL ' "$log")))
 
+# installation: make install into a staging root, the embedding example
+# built through pkg-config and run, the Python module as installed
+bash tests/install_test.sh "$build" > "$log" 2>&1
+cat "$log"
+pass=$((pass + $(grep -c '^PASS ' "$log")))
+fail=$((fail + $(grep -c '^FAIL ' "$log")))
+
 # validation problems: each check.py prints PASS/FAIL lines; every problem
 # runs twice, first with the solver settings of its decks, then at ricochet's
 # default settings (RICOCHET_VAL_SOLVER=default: the /SOLVER cards removed,

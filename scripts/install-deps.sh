@@ -2,7 +2,9 @@
 # Install the Debian 12 packages ricochet needs, only those missing.
 # Idempotent: does nothing (and needs no privileges) when all are present.
 set -euo pipefail
-PKGS=(gcc make libsundials-dev libsuitesparse-dev libgsl-dev libnetcdf-dev netcdf-bin
+# (pkgconf: `make check` builds the embedding example through pkg-config;
+# python3-xarray is optional: ricochet.read returns xarray Datasets with it)
+PKGS=(gcc make pkgconf libsundials-dev libsuitesparse-dev libgsl-dev libnetcdf-dev netcdf-bin
       python3 python3-numpy python3-scipy python3-netcdf4 python3-matplotlib)
 missing=()
 for p in "${PKGS[@]}"; do

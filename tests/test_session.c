@@ -203,6 +203,10 @@ static void test_session_close_early(void)
     ENSURE(!strcmp(complete, "no") && strstr(status, "stopped by the caller") != NULL);
     ENSURE(st.t_end >= 0.3 && st.t_end < rc_model_t_end(m));
     ENSURE(rc_session_close(NULL, NULL, NULL) == RC_OK);
+    /* a run that cannot start: the open fails with its status, no session */
+    rc_run_options bad = {.output_path = "/nonexistent_dir_rc_test/x.nc"};
+    rc_session *s2 = (rc_session *)&bad;
+    ENSURE(rc_session_open(m, &bad, &s2, &e) == RC_EIO && s2 == NULL && strstr(e.msg, "nonexistent_dir_rc_test"));
     unlink(path);
     rc_model_free(m);
 }

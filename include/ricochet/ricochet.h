@@ -24,7 +24,7 @@ extern "C" {
 #define RICOCHET_VERSION "0.1.0"
 
 /* Status codes. The values of RC_EINPUT, RC_ESOLVER and RC_EIO are the
- * program's exit codes (SPEC 1). */
+ * program's exit codes. */
 typedef enum {
     RC_OK = 0,
     RC_EINPUT = 2,    /* the case file is wrong; nothing was run         */
@@ -32,7 +32,8 @@ typedef enum {
     RC_EIO = 4,       /* a file could not be read or written             */
     RC_ENOMEM = 5,    /* out of memory                                   */
     RC_EINTERNAL = 6, /* a bug in ricochet                               */
-    RC_EINTERRUPT = 7 /* stopped by the caller (a signal); partial results
+    RC_EINTERRUPT = 7 /* stopped by the caller (a signal, the event
+                         callback, rc_session_close); partial results
                          are kept, marked incomplete                     */
 } rc_status;
 

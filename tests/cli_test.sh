@@ -148,6 +148,16 @@ for sig in INT TERM; do
     fi
 done
 
+# progress on a terminal (script(1) gives the run a pseudo-terminal): one
+# line rewritten (carriage returns), the time remaining, a newline at the end
+if command -v script > /dev/null 2>&1; then
+    script -qec "$bin run $tmp/long.rad -o $tmp/tty.nc --t-end 60" /dev/null > "$tmp/tty" 2>&1; rc=$?
+    if grep -q $'\rricochet: t = [0-9.e+-]* of 60 s ([0-9.]*%), steps [0-9]*, events 0, wall [0-9.]* s, about [0-9.]* [a-z]* left' "$tmp/tty" &&
+       grep -q "simulated 60 s" "$tmp/tty"; then
+        expect progress_terminal 0 $rc "($(grep -o $'\r' "$tmp/tty" | wc -l) updates of one line)"
+    else expect progress_terminal 0 99 "(exit $rc: $(tr '\r' '|' < "$tmp/tty" | head -c 300))"; fi
+fi
+
 # I/O faults: a full file system (small tmpfs, needs root and mount; skipped
 # otherwise), a directory removed during the run: exit 4 with a message naming
 # the file and the record, never a crash; what was written stays readable

@@ -523,7 +523,8 @@ static void progress(double tend, const rc_stats *s, double t, long steps, doubl
     char left[64] = "";
     if (t > 0 && t < tend) {
         const double rem = (tend - t) * wall / t;
-        if (rem < 120) snprintf(left, sizeof left, ", about %.0f s left", rem);
+        if (rem < 10) snprintf(left, sizeof left, ", about %.1f s left", rem);
+        else if (rem < 120) snprintf(left, sizeof left, ", about %.0f s left", rem);
         else if (rem < 7200) snprintf(left, sizeof left, ", about %.0f min left", rem / 60);
         else snprintf(left, sizeof left, ", about %.1f h left", rem / 3600);
     }

@@ -19,8 +19,11 @@ LDLIBS  := $(LIBS_PRIVATE)
 BUILD   ?= build
 PREFIX  ?= /usr/local
 LIBDIR  ?= $(PREFIX)/lib
-# the Python module (python/ricochet) goes where Debian's python3 looks
-PYDIR   ?= $(PREFIX)/lib/python3/dist-packages
+# the Python module (python/ricochet) goes where Debian's python3 looks for
+# a prefix: $(PREFIX)/lib/python3.N/dist-packages (/usr/local/lib/python3.11/
+# dist-packages on Debian 12)
+PYVER   := $(shell /usr/bin/python3 -c 'import sys; print("%d.%d" % sys.version_info[:2])' 2>/dev/null || echo 3)
+PYDIR   ?= $(PREFIX)/lib/python$(PYVER)/dist-packages
 
 # The git commit of the sources, baked in as RC_COMMIT (`ricochet --version`,
 # rc_build_commit()); "unknown" outside a git checkout. Defined here only.

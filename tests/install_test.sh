@@ -17,14 +17,16 @@ if make --no-print-directory -s install BUILD="$build" PREFIX=$prefix DESTDIR="$
 else fail make_install "$(tail -5 "$stage.log" | tr '\n' ' ')"; fi
 rm -f "$stage.log"
 root=$stage$prefix
+pyver=$(/usr/bin/python3 -c 'import sys; print("%d.%d" % sys.version_info[:2])')
+pydir=lib/python$pyver/dist-packages
 version=$(sed -n 's/^#define RICOCHET_VERSION "\(.*\)"/\1/p' include/ricochet/ricochet.h)
 missing=""
 for f in bin/ricochet include/ricochet/ricochet.h lib/libricochet.a "lib/libricochet.so.$version" "lib/libricochet.so.${version%%.*}" \
-         lib/libricochet.so lib/pkgconfig/ricochet.pc lib/python3/dist-packages/ricochet/__init__.py \
-         lib/python3/dist-packages/ricochet/deck.py lib/python3/dist-packages/ricochet/results.py; do
+         lib/libricochet.so lib/pkgconfig/ricochet.pc $pydir/ricochet/__init__.py \
+         $pydir/ricochet/deck.py $pydir/ricochet/results.py; do
     [ -e "$root/$f" ] || missing="$missing $f"
 done
-[ -z "$missing" ] && pass files "bin, header, libricochet.a, libricochet.so.$version (+ soname link), ricochet.pc, python module" ||
+[ -z "$missing" ] && pass files "bin, header, libricochet.a, libricochet.so.$version (+ soname link), ricochet.pc, python module in $pydir" ||
     fail files "missing:$missing"
 
 # pkg-config as for an installed library; the sysroot maps the staged paths
@@ -65,7 +67,11 @@ if cc -std=c11 examples/embed.c $(pkg-config --cflags ricochet) "$root/lib/libri
 else fail embed_static "$(head -c 300 "$stage/cc.log") $(head -c 200 "$stage/out_static" 2>/dev/null)"; fi
 
 # the Python module, as installed
-PYTHONPATH=$root/lib/python3/dist-packages /usr/bin/python3 tests/python_test.py "$root/bin/ricochet" > "$stage/py" 2>&1; rc=$?
+# the module's directory for PREFIX /usr/local is on Debian python3's path
+if /usr/bin/python3 -c "import sys; sys.exit('$prefix/$pydir' not in sys.path)"; then
+    pass python_path "$prefix/$pydir is on /usr/bin/python3's sys.path"
+else fail python_path "$prefix/$pydir is not on /usr/bin/python3's sys.path"; fi
+PYTHONPATH=$root/$pydir /usr/bin/python3 tests/python_test.py "$root/bin/ricochet" > "$stage/py" 2>&1; rc=$?
 cat "$stage/py"
-grep -q "^PASS python.module_location: $root/lib/python3/dist-packages/ricochet/__init__.py" "$stage/py" &&
+grep -q "^PASS python.module_location: $root/$pydir/ricochet/__init__.py" "$stage/py" &&
     pass python_installed "imported from the staged install" || fail python_installed "exit $rc, not imported from $root"

@@ -46,9 +46,12 @@ SHLIB   := $(BUILD)/libricochet.so.$(VERSION)
 BIN     := $(BUILD)/ricochet
 TESTBIN := $(BUILD)/run_tests
 
-.PHONY: all demo check validate asan valgrind bench install clean deps test FORCE
+.PHONY: all lib demo check validate asan valgrind bench install uninstall clean deps test FORCE
 
 all: $(BIN) $(TESTBIN) $(SHLIB)
+
+# the static and the shared library only
+lib: $(LIB) $(SHLIB)
 
 deps:
 	@bash scripts/install-deps.sh
@@ -145,6 +148,14 @@ install: $(BIN) $(LIB) $(SHLIB)
 	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@LIBDIR@|$(LIBDIR)|' -e 's|@VERSION@|$(VERSION)|' \
 	    -e 's|@LIBS_PRIVATE@|$(LIBS_PRIVATE)|' ricochet.pc.in > $(DESTDIR)$(LIBDIR)/pkgconfig/ricochet.pc
 	install -m 644 python/ricochet/*.py $(DESTDIR)$(PYDIR)/ricochet/
+
+# what install wrote (same PREFIX, LIBDIR, PYDIR, DESTDIR)
+uninstall:
+	rm -f $(DESTDIR)$(PREFIX)/bin/ricochet $(DESTDIR)$(LIBDIR)/libricochet.a $(DESTDIR)$(LIBDIR)/libricochet.so \
+	    $(DESTDIR)$(LIBDIR)/$(SONAME) $(DESTDIR)$(LIBDIR)/libricochet.so.$(VERSION) \
+	    $(DESTDIR)$(LIBDIR)/pkgconfig/ricochet.pc $(DESTDIR)$(PREFIX)/include/ricochet/ricochet.h
+	rm -rf $(DESTDIR)$(PYDIR)/ricochet
+	-rmdir $(DESTDIR)$(PREFIX)/include/ricochet
 
 clean:
 	rm -rf build build-asan out

@@ -75,3 +75,9 @@ PYTHONPATH=$root/$pydir /usr/bin/python3 tests/python_test.py "$root/bin/ricoche
 cat "$stage/py"
 grep -q "^PASS python.module_location: $root/$pydir/ricochet/__init__.py" "$stage/py" &&
     pass python_installed "imported from the staged install" || fail python_installed "exit $rc, not imported from $root"
+
+# uninstall removes every file install wrote
+make --no-print-directory -s uninstall BUILD="$build" PREFIX=$prefix DESTDIR="$stage" > /dev/null 2>&1
+left=$(find "$stage" \( -type f -o -type l \) ! -path "$stage/embed*" ! -path "$stage/out*" ! -path "$stage/py" ! -path "$stage/cc.log" \
+       ! -name '*.pyc' | sed "s|^$stage||")
+[ -z "$left" ] && pass uninstall "nothing left of the install" || fail uninstall "left: $(echo $left)"

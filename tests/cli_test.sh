@@ -128,6 +128,9 @@ for sig in INT TERM; do
     # (under valgrind the start is slower: wait for that line, 60 s at most)
     "$bin" run "$tmp/long.rad" -o "$tmp/long_$sig.nc" $([ $sig = TERM ] && echo -q) > "$tmp/e" 2>&1 &
     pid=$!
+    # the run has started (the file is created after the compile; slower
+    # under valgrind), then 2 s of integration
+    for _ in $(seq 60); do [ -e "$tmp/long_$sig.nc" ] && break; sleep 1; done
     sleep 2
     if [ $sig = INT ]; then
         for _ in $(seq 60); do grep -q "^ricochet: t = " "$tmp/e" && break; sleep 1; done

@@ -75,11 +75,11 @@ $(SHLIB): $(LIB_OBJ) src/libricochet.map
 	ln -sf $(notdir $@) $(BUILD)/$(SONAME)
 	ln -sf $(SONAME) $(BUILD)/libricochet.so
 
-# the commit is rebuilt into versions.o whenever it changes
+# the commit is rebuilt into base/commit.o (rc_build_commit) whenever it changes
 $(BUILD)/commit.stamp: FORCE
 	@mkdir -p $(BUILD)
 	@echo '$(RC_COMMIT)' | cmp -s - $@ || echo '$(RC_COMMIT)' > $@
-$(BUILD)/obj/solver/versions.o: $(BUILD)/commit.stamp
+$(BUILD)/obj/base/commit.o: $(BUILD)/commit.stamp
 
 $(BIN): $(BUILD)/obj/cli/main.o $(LIB)
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(LDLIBS)

@@ -1,7 +1,6 @@
 /*
- * Build and library versions for `ricochet --version` (rc_build_commit,
- * rc_print_versions). The git commit is baked in by the Makefile
- * (-DRC_COMMIT, "unknown" outside a git checkout). SUNDIALS and KLU are
+ * Library versions for `ricochet --version` (rc_print_versions; the
+ * build's commit is base/commit.c's rc_build_commit). SUNDIALS and KLU are
  * named by cvode.c, their only user; GSL by its version macro and the
  * library's gsl_version; netCDF by nc_inq_libvers(), the one netCDF call
  * outside src/output (it reads a string, it writes no file).
@@ -12,12 +11,6 @@
 #include <string.h>
 
 #include "solver/solver.h"
-
-#ifndef RC_COMMIT
-#define RC_COMMIT "unknown"
-#endif
-
-const char *rc_build_commit(void) { return RC_COMMIT; }
 
 void rc_print_versions(FILE *f)
 {

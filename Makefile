@@ -11,11 +11,30 @@ CFLAGS  ?= $(OPT) -g
 CXFLAGS ?= -fcx-limited-range
 # the git commit of the sources, in the results files (docs/output-format.md)
 RC_COMMIT := $(shell c=$$(git rev-parse --short=12 HEAD 2>/dev/null) && { git diff --quiet HEAD 2>/dev/null && echo $$c || echo $$c-modified; } || echo unknown)
-ALLCFLAGS = $(CSTD) $(WARN) $(CXFLAGS) -Iinclude -Isrc -I/usr/include/suitesparse $(CFLAGS)
-LDLIBS  := -lsundials_cvode -lsundials_ida -lsundials_nvecserial -lsundials_sunmatrixsparse \
-           -lsundials_sunlinsolklu -lklu -lgsl -lgslcblas -lnetcdf -lm
+# the library's objects are position-independent: one set of objects makes
+# both build/libricochet.a and build/libricochet.so
+ALLCFLAGS = $(CSTD) $(WARN) $(CXFLAGS) -fPIC -pthread -Iinclude -Isrc -I/usr/include/suitesparse \
+            -DRC_COMMIT='"$(RC_COMMIT)"' $(CFLAGS)
+# what the library links against; also written into ricochet.pc (Libs.private)
+LIBS_PRIVATE := -lsundials_cvode -lsundials_ida -lsundials_nvecserial -lsundials_sunmatrixsparse \
+           -lsundials_sunlinsolklu -lklu -lgsl -lgslcblas -lnetcdf -lm -pthread
+LDLIBS  := $(LIBS_PRIVATE)
 BUILD   ?= build
 PREFIX  ?= /usr/local
+LIBDIR  ?= $(PREFIX)/lib
+# the Python module (python/ricochet) goes where Debian's python3 looks for
+# a prefix: $(PREFIX)/lib/python3.N/dist-packages (/usr/local/lib/python3.11/
+# dist-packages on Debian 12)
+PYVER   := $(shell /usr/bin/python3 -c 'import sys; print("%d.%d" % sys.version_info[:2])' 2>/dev/null || echo 3)
+PYDIR   ?= $(PREFIX)/lib/python$(PYVER)/dist-packages
+
+# The git commit of the sources, baked in as RC_COMMIT (`ricochet --version`,
+# rc_build_commit()); "unknown" outside a git checkout. Defined here only.
+RC_COMMIT := $(shell git describe --always --dirty --abbrev=12 2>/dev/null || echo unknown)
+# Library version from the public header; the soname carries the major number.
+VERSION := $(shell sed -n 's/^\#define RICOCHET_VERSION "\(.*\)"/\1/p' include/ricochet/ricochet.h)
+SOMAJOR := $(firstword $(subst ., ,$(VERSION)))
+SONAME  := libricochet.so.$(SOMAJOR)
 
 # Sources are discovered stage by stage (docs/design.md, "Pipeline and files");
 # src/cli holds the command-line program, everything else goes into the library.
@@ -26,14 +45,18 @@ SRC_HDR := $(wildcard src/*/*.h src/*/*.inc include/ricochet/*.h)
 TEST_SRC := $(wildcard tests/*.c)
 TEST_OBJ := $(patsubst tests/%.c,$(BUILD)/tobj/%.o,$(TEST_SRC))
 LIB     := $(BUILD)/libricochet.a
+SHLIB   := $(BUILD)/libricochet.so.$(VERSION)
 BIN     := $(BUILD)/ricochet
 TESTBIN := $(BUILD)/run_tests
 REPLAY  := $(BUILD)/fuzz_replay
 FUZZ_SECONDS ?= 60
 
-.PHONY: all demo check validate asan valgrind bench install clean deps test fuzz
+.PHONY: all lib demo check validate asan valgrind bench install uninstall clean deps test fuzz FORCE
 
-all: $(BIN) $(TESTBIN) $(REPLAY)
+all: $(BIN) $(TESTBIN) $(SHLIB) $(REPLAY)
+
+# the static and the shared library only
+lib: $(LIB) $(SHLIB)
 
 deps:
 	@bash scripts/install-deps.sh
@@ -60,6 +83,19 @@ $(BUILD)/tobj/%.o: tests/%.c $(wildcard tests/*.h tests/*.def) $(SRC_HDR)
 $(LIB): $(LIB_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
+
+# the shared library exports the functions of include/ricochet/ricochet.h only
+$(SHLIB): $(LIB_OBJ) src/libricochet.map
+	$(CC) $(ALLCFLAGS) -shared -Wl,-soname,$(SONAME) -Wl,--version-script=src/libricochet.map \
+	    -o $@ $(LIB_OBJ) $(LDLIBS)
+	ln -sf $(notdir $@) $(BUILD)/$(SONAME)
+	ln -sf $(SONAME) $(BUILD)/libricochet.so
+
+# the commit is rebuilt into base/commit.o (rc_build_commit) whenever it changes
+$(BUILD)/commit.stamp: FORCE
+	@mkdir -p $(BUILD)
+	@echo '$(RC_COMMIT)' | cmp -s - $@ || echo '$(RC_COMMIT)' > $@
+$(BUILD)/obj/base/commit.o: $(BUILD)/commit.stamp
 
 $(BIN): $(BUILD)/obj/cli/main.o $(LIB)
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(LDLIBS)
@@ -140,11 +176,29 @@ bench: deps
 	@$(MAKE) --no-print-directory all
 	@bash bench/run.sh $(BUILD)
 
-install: $(BIN) $(LIB)
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/ricochet
+# PREFIX (default /usr/local), LIBDIR, PYDIR and DESTDIR (a staging root)
+# are honoured: bin/ricochet, the static and shared libraries, the header,
+# lib/pkgconfig/ricochet.pc and the Python module.
+install: $(BIN) $(LIB) $(SHLIB)
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(PREFIX)/include/ricochet \
+	    $(DESTDIR)$(PYDIR)/ricochet
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/ricochet
-	install -m 644 $(LIB) $(DESTDIR)$(PREFIX)/lib/libricochet.a
+	install -m 644 $(LIB) $(DESTDIR)$(LIBDIR)/libricochet.a
+	install -m 755 $(SHLIB) $(DESTDIR)$(LIBDIR)/
+	ln -sf $(notdir $(SHLIB)) $(DESTDIR)$(LIBDIR)/$(SONAME)
+	ln -sf $(SONAME) $(DESTDIR)$(LIBDIR)/libricochet.so
 	install -m 644 include/ricochet/*.h $(DESTDIR)$(PREFIX)/include/ricochet/
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@LIBDIR@|$(LIBDIR)|' -e 's|@VERSION@|$(VERSION)|' \
+	    -e 's|@LIBS_PRIVATE@|$(LIBS_PRIVATE)|' ricochet.pc.in > $(DESTDIR)$(LIBDIR)/pkgconfig/ricochet.pc
+	install -m 644 python/ricochet/*.py $(DESTDIR)$(PYDIR)/ricochet/
+
+# what install wrote (same PREFIX, LIBDIR, PYDIR, DESTDIR)
+uninstall:
+	rm -f $(DESTDIR)$(PREFIX)/bin/ricochet $(DESTDIR)$(LIBDIR)/libricochet.a $(DESTDIR)$(LIBDIR)/libricochet.so \
+	    $(DESTDIR)$(LIBDIR)/$(SONAME) $(DESTDIR)$(LIBDIR)/libricochet.so.$(VERSION) \
+	    $(DESTDIR)$(LIBDIR)/pkgconfig/ricochet.pc $(DESTDIR)$(PREFIX)/include/ricochet/ricochet.h
+	rm -rf $(DESTDIR)$(PYDIR)/ricochet
+	-rmdir $(DESTDIR)$(PREFIX)/include/ricochet
 
 clean:
 	rm -rf build build-asan build-fuzz out

@@ -38,6 +38,13 @@ if /usr/bin/python3 fuzz/sweep.py --every 50 --replay "$build"/fuzz_replay --out
     echo "PASS fuzz.sweep: $(tail -n 1 "$log.sweep")" >> "$log"
 else echo "FAIL fuzz.sweep: $(tail -n 1 "$log.sweep")" >> "$log"; fi
 rm -f "$log.sweep"
+pass=$((pass + $(grep -c '^PASS ' "$log")))
+fail=$((fail + $(grep -c '^FAIL ' "$log")))
+cat "$log"
+
+# installation: make install into a staging root, the embedding example
+# built through pkg-config and run, the Python module as installed
+bash tests/install_test.sh "$build" > "$log" 2>&1
 cat "$log"
 pass=$((pass + $(grep -c '^PASS ' "$log")))
 fail=$((fail + $(grep -c '^FAIL ' "$log")))

@@ -4,10 +4,12 @@
 #   scripts/install-deps.sh        build, tests, plots
 #   scripts/install-deps.sh fuzz   the same, and clang with libFuzzer (make fuzz)
 set -euo pipefail
-PKGS=(gcc make libsundials-dev libsuitesparse-dev libgsl-dev libnetcdf-dev netcdf-bin
+# (pkgconf: `make check` builds the embedding example through pkg-config;
+# python3-xarray: reading the results with xarray in the tests and the module)
+PKGS=(gcc make pkgconf libsundials-dev libsuitesparse-dev libgsl-dev libnetcdf-dev netcdf-bin
       python3 python3-numpy python3-scipy python3-netcdf4 python3-matplotlib
-      # tests only: reading the results with xarray, the ParaView export read
-      # back and rendered off screen with VTK (xvfb: a display for it)
+      # tests only: the ParaView export read back and rendered off screen with
+      # VTK (xvfb: a display for it)
       python3-xarray python3-vtk9 xvfb xauth)
 # clang 14 and its runtime libraries (libFuzzer, ASan, UBSan)
 if [ "${1:-}" = fuzz ]; then PKGS+=(clang libclang-rt-14-dev); fi

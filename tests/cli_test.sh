@@ -24,8 +24,50 @@ expect() { # name, expected exit code, actual exit code, detail
 
 "$bin" --help > "$tmp/h" 2>&1; expect help 0 $? ""
 "$bin" --version > "$tmp/v" 2>&1; rc=$?
-grep -q "^ricochet [0-9]" "$tmp/v" && expect version 0 $rc "($(cat "$tmp/v"))" || expect version 0 1 "(no version line)"
-"$bin" frobnicate "$demo" > /dev/null 2>&1; expect bad_command 2 $? ""
+if grep -q "^ricochet [0-9][0-9.]* (commit [0-9a-z.+-]*)$" "$tmp/v" && grep -q "^SUNDIALS [0-9]" "$tmp/v" && grep -q "^KLU [0-9]" "$tmp/v" &&
+   grep -q "^GSL [0-9]" "$tmp/v" && grep -q "^netCDF [0-9]" "$tmp/v"; then expect version 0 $rc "($(tr '\n' '|' < "$tmp/v"))"
+else expect version 0 99 "(version lines wrong: $(tr '\n' '|' < "$tmp/v"))"; fi
+"$bin" frobnicate "$demo" > "$tmp/e" 2>&1; rc=$?
+grep -q "^ricochet: unknown command 'frobnicate'$" "$tmp/e" && expect bad_command 2 $rc "($(head -1 "$tmp/e"))" ||
+    expect bad_command 2 99 "(no message naming the command: $(head -c 120 "$tmp/e"))"
+for c in run check; do
+    "$bin" $c --help > "$tmp/h" 2>&1; rc=$?
+    grep -q "^usage: ricochet $c CASE" "$tmp/h" && expect "${c}_help" 0 $rc "" || expect "${c}_help" 0 99 "(no usage of $c)"
+done
+grep -q -- "--rtol R" "$tmp/h" && echo "FAIL cli.check_help_options: check lists run's options" || true
+"$bin" run --help | grep -q -- "--t-end T" && "$bin" run --help | grep -q -- "--dt-out DT" && "$bin" run --help | grep -q -- "--rtol R" &&
+    echo "PASS cli.run_help_options: --t-end, --dt-out, --rtol listed" || echo "FAIL cli.run_help_options: options missing"
+
+# overrides of the end time, output interval and relative tolerance
+"$bin" run "$demo" -o "$tmp/ov.nc" --t-end 0.25 --dt-out=0.01 --rtol 1e-7 > "$tmp/o" 2>"$tmp/e"; rc=$?
+nrec=$(ncdump -h "$tmp/ov.nc" 2>/dev/null | sed -n 's/^[[:space:]]*time = UNLIMITED ; \/\/ (\([0-9]*\) currently).*/\1/p')
+last=$(ncdump -v time "$tmp/ov.nc" 2>/dev/null | sed -n '/^ time =/,/;/p' | tr -d ' ;\n' | awk -F, '{print $NF}')
+if grep -q "simulated 0.25 s" "$tmp/o" && ncdump -h "$tmp/ov.nc" | grep -q ":rtol = 1.e-07 ;" && [ "${nrec:-0}" -ge 26 ] &&
+   [ "${nrec:-0}" -le 40 ] && [ "$last" = "0.25" ]; then
+    expect overrides 0 $rc "(simulated 0.25 s, $nrec records, last at $last s, rtol 1e-07 in the file)"
+else expect overrides 0 99 "(exit $rc, records ${nrec:-none}, last ${last:-none}: $(head -c 200 "$tmp/o") $(head -c 200 "$tmp/e"))"; fi
+for bad in "--t-end -1" "--t-end abc" "--dt-out 0" "--dt-out inf" "--rtol nan" "--rtol 1e-3x" "--rtol 2" "--t-end"; do
+    # shellcheck disable=SC2086
+    "$bin" run "$demo" -o "$tmp/bad_ov.nc" $bad > "$tmp/e" 2>&1; rc=$?
+    name=$(echo "$bad" | tr -c 'a-z0-9\n' '_')
+    if grep -q "^ricochet: ${bad%% *}: expected a" "$tmp/e" && [ ! -e "$tmp/bad_ov.nc" ]; then expect "bad_override$name" 2 $rc "($(head -1 "$tmp/e"))"
+    else expect "bad_override$name" 2 99 "(exit $rc: $(head -c 160 "$tmp/e"))"; fi
+done
+# the demo ends at its end time exactly (the end time is the integrator's stop time)
+"$bin" run "$demo" -o "$tmp/end.nc" > "$tmp/o" 2>&1; rc=$?
+grep -q "simulated 1 s in" "$tmp/o" && expect end_time_exact 0 $rc "($(grep -o 'simulated [^,]*' "$tmp/o"))" ||
+    expect end_time_exact 0 99 "($(grep -o 'simulated [^,]*' "$tmp/o"))"
+
+# the shared library exports the functions of the public header, only those
+lib=$(dirname "$bin")/libricochet.so
+if [ -e "$lib" ] && [ -z "${RICOCHET_WRAP:-}" ]; then
+    hdr=$(grep -oE '\brc_[a-z_]+\(' include/ricochet/ricochet.h | tr -d '(' | sort -u)
+    exp=$(nm -D --defined-only "$lib" | awk '$2 == "T" {sub(/@.*/, "", $3); print $3}' | sort -u)
+    soname=$(objdump -p "$lib" | awk '/SONAME/ {print $2}')
+    if [ "$hdr" = "$exp" ] && [ "$soname" = "libricochet.so.$(sed -n 's/^#define RICOCHET_VERSION "\([0-9]*\)\..*/\1/p' include/ricochet/ricochet.h)" ]; then
+        echo "PASS cli.shared_library_symbols: $(echo "$exp" | wc -l) functions exported, as declared; soname $soname"
+    else echo "FAIL cli.shared_library_symbols: soname $soname; header vs exported: $(diff <(echo "$hdr") <(echo "$exp") | tr '\n' ' ')"; fi
+fi
 "$bin" check "$demo" > "$tmp/c" 2>&1; rc=$?
 grep -q "interfaces  1" "$tmp/c" && expect check_summary 0 $rc "" || expect check_summary 0 1 "(no summary)"
 
@@ -85,9 +127,17 @@ for sig in INT TERM; do
     [ $sig = INT ] && want=130 || want=143
     # one signal, sent to the run alone (timeout(1) would also signal its
     # process group, and a second signal kills at once by design)
-    "$bin" run "$tmp/long.rad" -o "$tmp/long_$sig.nc" -q > "$tmp/e" 2>&1 &
+    # the SIGINT run shows its progress: stderr is a file, so a line every 10 s
+    # (under valgrind the start is slower: wait for that line, 60 s at most)
+    "$bin" run "$tmp/long.rad" -o "$tmp/long_$sig.nc" $([ $sig = TERM ] && echo -q) > "$tmp/e" 2>&1 &
     pid=$!
+    # the run has started (the file is created after the compile; slower
+    # under valgrind), then 2 s of integration
+    for _ in $(seq 60); do [ -e "$tmp/long_$sig.nc" ] && break; sleep 1; done
     sleep $((2 * delay))
+    if [ $sig = INT ]; then
+        for _ in $(seq 60); do grep -q "^ricochet: t = " "$tmp/e" && break; sleep 1; done
+    fi
     kill -s $sig $pid
     wait $pid; rc=$?
     if [ -e "$tmp/long_$sig.nc" ] && ncdump -h "$tmp/long_$sig.nc" | grep -q ':complete = "no"' &&
@@ -96,7 +146,23 @@ for sig in INT TERM; do
        grep -q "interrupted" "$tmp/e"; then
         expect "interrupt_$sig" $want $rc "(records kept, complete = no, statistics written: $(head -c 120 "$tmp/e"))"
     else expect "interrupt_$sig" $want 99 "(exit $rc; file or message wrong: $(head -c 200 "$tmp/e"))"; fi
+    if [ $sig = INT ]; then
+        if grep -q "^ricochet: t = [0-9.e+-]* of 100000 s ([0-9.]*%), steps [0-9]*, events [0-9]*, wall [0-9.]* s, about [0-9.]* [a-z]* left$" "$tmp/e" &&
+           ! grep -q $'\r' "$tmp/e" &&
+           grep -m1 "^ricochet: t = " "$tmp/e" | sed 's/.*wall \([0-9.]*\) s.*/\1/' | awk '{exit !($1 >= 10)}'; then echo "PASS cli.progress_log: $(grep -m1 '^ricochet: t = ' "$tmp/e")"
+        else echo "FAIL cli.progress_log: no progress line after 10 s in a log: $(head -c 300 "$tmp/e")"; fi
+    fi
 done
+
+# progress on a terminal (script(1) gives the run a pseudo-terminal): one
+# line rewritten (carriage returns), the time remaining, a newline at the end
+if command -v script > /dev/null 2>&1; then
+    script -qec "$bin run $tmp/long.rad -o $tmp/tty.nc --t-end 60" /dev/null > "$tmp/tty" 2>&1; rc=$?
+    if grep -q $'\rricochet: t = [0-9.e+-]* of 60 s ([0-9.]*%), steps [0-9]*, events 0, wall [0-9.]* s, about [0-9.]* [a-z]* left' "$tmp/tty" &&
+       grep -q "simulated 60 s" "$tmp/tty"; then
+        expect progress_terminal 0 $rc "($(grep -o $'\r' "$tmp/tty" | wc -l) updates of one line)"
+    else expect progress_terminal 0 99 "(exit $rc: $(tr '\r' '|' < "$tmp/tty" | head -c 300))"; fi
+fi
 
 # I/O faults: a full file system (small tmpfs, needs root and mount; skipped
 # otherwise), a directory removed during the run: exit 4 with a message naming

@@ -866,7 +866,7 @@ static void test_deck_units_run_matches_si(void)
         int n = rc_model_state_size(ma);
         ENSURE(n == rc_model_state_size(mb) && n > 0 && n <= 64);
         double ya[64], yb[64];
-        rc_run_options oa = {NULL, 0, 0.3, ya, NULL}, ob = {NULL, 0, 0.3, yb, NULL};
+        rc_run_options oa = {.t_end_override = 0.3, .y_end = ya}, ob = {.t_end_override = 0.3, .y_end = yb};
         ENSURE(rc_run(ma, &oa, NULL, &e) == RC_OK);
         ENSURE(rc_run(mb, &ob, NULL, &e) == RC_OK);
         double worst = 0;

@@ -312,7 +312,7 @@ static void test_engine_quaternion_drift_and_gyroscopic_invariants(void)
     w[0] = 0.37; w[1] = 9.1; w[2] = -0.23;
     double y0[13], y1[13];
     rc_initial_state(m, y0);
-    rc_run_options opt = {NULL, 0, 0.0, y1, NULL};
+    rc_run_options opt = {.y_end = y1};
     rc_stats st;
     ENSURE(rc_run(m, &opt, &st, &e) == RC_OK);
     double nq = sqrt(y1[3] * y1[3] + y1[4] * y1[4] + y1[5] * y1[5] + y1[6] * y1[6]);

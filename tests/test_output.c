@@ -690,7 +690,7 @@ static void test_output_impacts_demo_closed_form(void)
         rc_case_free(c);
         return;
     }
-    rc_run_options opt = {path, 0, 0.3, NULL, NULL};
+    rc_run_options opt = {.output_path = path, .t_end_override = 0.3};
     rc_stats st;
     ENSURE(rc_run(m, &opt, &st, &e) == RC_OK);
     ENSURE(st.impacts >= 1);

@@ -220,7 +220,7 @@ static void test_power_roller_deck_runs_and_ledger_closes(void)
     ENSURE(m->imp && m->imp->nr == 1 && m->imp->nt == 0);
     ENSURE_NEAR(m->body_y0[RC_NB * 0 + 11], 20.0, 0, 0); /* initial spin from the function */
     double *y = calloc((size_t)m->ny, sizeof(double));
-    rc_run_options opt = {NULL, 0, 0.0, y, NULL};
+    rc_run_options opt = {.y_end = y};
     rc_stats s;
     st = rc_run(m, &opt, &s, &e);
     if (st) printf("    %s\n", e.msg);
@@ -335,7 +335,7 @@ static void test_power_impvel_follows_then_releases(void)
     /* v(t) = 1.3 f(t / 0.5), f(x) = 0.5 + 2 x: v(0) = 0.65, v(0.3) = 2.21 */
     ENSURE_NEAR(m->body_y0[7], 0.65, 1e-15, 0);
     double *y = calloc((size_t)m->ny, sizeof(double));
-    rc_run_options opt = {NULL, 0, 0.25, y, NULL};
+    rc_run_options opt = {.t_end_override = 0.25, .y_end = y};
     rc_stats st;
     ENSURE(rc_run(m, &opt, &st, &e) == RC_OK);
     printf("    t = 0.25 s: v_x = %.12f m/s (imposed %.12f), W_imp = %.9f J\n", y[7], 1.3 * (0.5 + 2 * 0.5), y[m->imp->wadr]);
@@ -396,7 +396,7 @@ static void test_power_friction_card_overrides_step5(void)
         ENSURE(m->inter_fr[0].form == (k == 2 ? RC_FF_INCREMENTAL : RC_FF_VISCOUS));
         if (k == 2) ENSURE_NEAR(m->inter_fr[0].kt, 2.3e5, 0, 0);
         rc_stats s;
-        rc_run_options opt = {NULL, 0, 0.0, NULL, NULL};
+        rc_run_options opt = {0};
         ENSURE(rc_run(m, &opt, &s, &e) == RC_OK);
         rc_model_free(m);
     }

@@ -7,6 +7,9 @@
  * units is used as written (one consistent system).
  *
  * Pipeline:  rc_case_load  ->  rc_model_compile  ->  rc_run
+ *            (or rc_session_open, rc_run_until ..., rc_session_close)
+ *
+ * Link with `pkg-config --cflags --libs ricochet` (docs/embedding.md).
  */
 #ifndef RICOCHET_H
 #define RICOCHET_H
@@ -21,7 +24,7 @@ extern "C" {
 #define RICOCHET_VERSION "0.1.0"
 
 /* Status codes. The values of RC_EINPUT, RC_ESOLVER and RC_EIO are the
- * program's exit codes (SPEC 1). */
+ * program's exit codes. */
 typedef enum {
     RC_OK = 0,
     RC_EINPUT = 2,    /* the case file is wrong; nothing was run         */
@@ -29,7 +32,8 @@ typedef enum {
     RC_EIO = 4,       /* a file could not be read or written             */
     RC_ENOMEM = 5,    /* out of memory                                   */
     RC_EINTERNAL = 6, /* a bug in ricochet                               */
-    RC_EINTERRUPT = 7 /* stopped by the caller (a signal); partial results
+    RC_EINTERRUPT = 7 /* stopped by the caller (a signal, the event
+                         callback, rc_session_close); partial results
                          are kept, marked incomplete                     */
 } rc_status;
 
@@ -50,6 +54,11 @@ const char *rc_status_str(rc_status code);
 int rc_status_exit_code(rc_status code);
 /* Version string, e.g. "0.1.0". */
 const char *rc_version(void);
+/* The git commit ricochet was built from ("unknown" outside a git checkout)
+ * and the versions of the libraries it uses, one "name version" per line
+ * (SUNDIALS, KLU, GSL, netCDF), as printed by `ricochet --version`. */
+const char *rc_build_commit(void);
+void rc_print_versions(FILE *f);
 
 /* Progress of the long stages (reading, compiling) on `f`; NULL (the
  * default) says nothing. Printed only for stages that run over a second. */
@@ -81,6 +90,15 @@ void rc_model_free(rc_model *m); /* NULL is a no-op */
 /* Human-readable summary (bodies, surfaces, interfaces, state size, solver
  * settings) as printed by `ricochet check`. */
 void rc_model_print_summary(const rc_model *m, FILE *f);
+/* Replace the relative tolerance (/SOLVER Rtol) of a compiled model and
+ * re-derive the absolute tolerances that scale with it (those left blank
+ * on /SOLVER; docs/theory.md 7.1). rtol must be finite, in (0, 1):
+ * RC_EINPUT otherwise, the model unchanged. */
+rc_status rc_model_set_rtol(rc_model *m, double rtol, rc_error *err);
+/* The relative tolerance, end time and output interval of a model [-, s, s]. */
+double rc_model_rtol(const rc_model *m);
+double rc_model_t_end(const rc_model *m);
+double rc_model_dt_out(const rc_model *m);
 
 /* ---- Running --------------------------------------------------------- */
 
@@ -130,10 +148,28 @@ typedef struct rc_stats {
                                 contacts (printed by rc_stats_print)     */
 } rc_stats;
 
+/* The callback of every event (rc_run_options.on_event): called once per
+ * row of the events table, in order, with
+ *   t        the event time [s]
+ *   kind     the event kind as in the events table ("contact_open",
+ *            "contact_close", "release", ..., "impvel_stop";
+ *            docs/output-format.md)
+ *   element  the element ("/INTER/TYPE6/1", "/IMPVEL")
+ *   values   the interface's penetration [m], approach speed [m/s] and
+ *            normal force [N] after the event (NaN when the element is
+ *            not an interface: "impvel_stop")
+ * Return 0 to go on; non-zero stops the run after this event: the records
+ * up to there are written, the file is marked incomplete with the reason
+ * "stopped by the event callback at t = ...", and rc_run returns
+ * RC_EINTERRUPT. Called from the thread that integrates. */
+typedef int (*rc_event_fn)(void *user, double t, const char *kind, const char *element,
+                           const double values[3]);
+
 /* Options of one run. Zero-initialise, then set what you need. */
 typedef struct rc_run_options {
     const char *output_path; /* netCDF output file; NULL: no file       */
-    int progress;            /* 1: show progress on stderr (terminal)   */
+    int progress;            /* 1: progress on stderr: one line updated
+                                on a terminal, else a line every 10 s   */
     double t_end_override;   /* > 0: replace the case's end time [s]    */
     double *y_end;           /* non-NULL: receives the final state vector,
                                 rc_model_state_size(m) values (layout in
@@ -143,6 +179,9 @@ typedef struct rc_run_options {
                                 right-hand-side evaluation, writes what it
                                 computed (marked incomplete, with its
                                 statistics) and returns RC_EINTERRUPT   */
+    double dt_out_override;  /* > 0: replace the case's output interval [s] */
+    rc_event_fn on_event;    /* non-NULL: called at every event          */
+    void *user;              /* passed to on_event                       */
 } rc_run_options;
 
 /* Number of values in the state vector of a model. */
@@ -160,6 +199,37 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats,
  * any write fails: the file is then closed whole, marked incomplete, and
  * this stays 0. */
 int rc_output_abandoned(void);
+
+/* ---- Stepping ------------------------------------------------------- */
+/* A run advanced in pieces: rc_session_open starts it (the output file is
+ * created, the initial modes set) and stops at t = 0; each rc_run_until
+ * advances it to a time and stops there, with the state available;
+ * rc_session_close ends it. Running in pieces gives the same steps, events
+ * and records as one rc_run when the pieces end on output times (elsewhere
+ * only the first step after a restart may differ, within the tolerances).
+ * The integration runs in a second thread that waits while the caller
+ * holds the session; the callbacks of `opt` are called from that thread. */
+typedef struct rc_session rc_session;
+
+/* Start a run of `m` with the options `opt` (copied; may be NULL). The
+ * model must outlive the session. */
+rc_status rc_session_open(const rc_model *m, const rc_run_options *opt, rc_session **out, rc_error *err);
+/* Advance to min(t, end time). RC_OK, or the status of a run that ended
+ * (RC_ESOLVER, RC_EIO, RC_EINTERRUPT) with *err filled; once ended, every
+ * later call returns that status again. A t at or before the time reached
+ * does nothing. */
+rc_status rc_run_until(rc_session *s, double t, rc_error *err);
+/* The time reached [s] and the state there (rc_model_state_size values,
+ * valid until the next rc_run_until or rc_session_close). */
+double rc_session_time(const rc_session *s);
+const double *rc_session_state(const rc_session *s);
+/* 1 when the run has reached its end time or ended on an error. */
+int rc_session_finished(const rc_session *s);
+/* End the session: a run not at its end time is stopped there (the file
+ * closed, marked incomplete with the reason "stopped by the caller at t =
+ * ...", status RC_EINTERRUPT); else the status of the run. Fills `stats`
+ * (may be NULL) and frees the session. NULL is a no-op (RC_OK). */
+rc_status rc_session_close(rc_session *s, rc_stats *stats, rc_error *err);
 
 /* Print statistics in the format of `ricochet run`: counters, the first
  * impacts and the sampling note. */

@@ -1,4 +1,5 @@
-/* ricochet command-line program: run, check, --help, --version. */
+/* ricochet command-line program: run, check, --help (also per command), --version. */
+#include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -11,12 +12,68 @@
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: ricochet run CASE [-o OUT.nc] [-q]   run a case, write results (default: CASE stem + .nc)\n"
+            "usage: ricochet run CASE [-o OUT.nc] [-q] [--t-end T] [--dt-out DT] [--rtol R]\n"
+            "                                            run a case, write results (default: CASE stem + .nc)\n"
             "       ricochet check CASE                  read and compile a case, print the model summary\n"
             "       ricochet export-vtk RESULTS.nc [-o DIR]  ParaView files (.pvd + .vtp; default DIR: stem_vtk)\n"
+            "       ricochet COMMAND --help              the options of a command\n"
             "       ricochet --help | --version\n"
             "exit codes: 0 success, 2 input error, 3 solver failure, 4 I/O error,\n"
             "            130 interrupted (SIGINT), 143 terminated (SIGTERM)\n");
+}
+
+static void usage_run(FILE *f)
+{
+    fprintf(f,
+            "usage: ricochet run CASE [options]\n"
+            "Read and compile the case (Radioss block format), integrate it from t = 0 to its end time and\n"
+            "write the results (netCDF-4, docs/output-format.md).\n"
+            "options:\n"
+            "  -o OUT.nc      results file (default: the case file's name with .nc, in the current directory)\n"
+            "  -q             quiet: no progress on stderr, no summary on stdout\n"
+            "  --t-end T      end time [s], instead of the case's /RUN Tend\n"
+            "  --dt-out DT    output interval [s], instead of the case's /RUN Dt_out\n"
+            "  --rtol R       relative tolerance, instead of /SOLVER Rtol; the absolute tolerances derived\n"
+            "                 from the model's scales (blank /SOLVER fields) follow it\n"
+            "  -h, --help     this text\n"
+            "T, DT and R are positive finite numbers (R below 1); T and DT in seconds (SI, as the deck is\n"
+            "read: a deck naming its units is converted to SI; one naming none is used as written).\n"
+            "Progress (unless -q): one line updated on a terminal, a line every 10 s in a log, with the time\n"
+            "remaining estimated from the rate of simulated time.\n"
+            "exit codes: 0 success, 2 input error, 3 solver failure, 4 I/O error,\n"
+            "            130 interrupted (SIGINT), 143 terminated (SIGTERM)\n");
+}
+
+static void usage_check(FILE *f)
+{
+    fprintf(f,
+            "usage: ricochet check CASE\n"
+            "Read and compile the case and print the model summary (bodies, surfaces, interfaces, couplings,\n"
+            "state size, solver settings); warnings of the reading on stderr. Nothing is run.\n"
+            "options:\n"
+            "  -q             no progress of the long stages on stderr\n"
+            "  -h, --help     this text\n"
+            "exit codes: 0 the case is valid, 2 input error (file:line, card and field), 4 I/O error\n");
+}
+
+static void version(void)
+{
+    printf("ricochet %s (commit %s)\n", rc_version(), rc_build_commit());
+    rc_print_versions(stdout);
+}
+
+/* A positive finite number for option `opt`; 0 and a message on stderr
+ * otherwise. */
+static int positive(const char *opt, const char *text, double *v)
+{
+    char *end = NULL;
+    double x = text ? strtod(text, &end) : 0.0;
+    if (!text || end == text || *end != '\0' || !isfinite(x) || !(x > 0)) {
+        fprintf(stderr, "ricochet: %s: expected a positive finite number, got '%s'\n", opt, text ? text : "");
+        return 0;
+    }
+    *v = x;
+    return 1;
 }
 
 /* Default output: the case file name with its extension replaced by .nc, in
@@ -112,28 +169,65 @@ int main(int argc, char **argv)
         usage(stderr);
         return 2;
     }
-    if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
+    if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
         usage(stdout);
         return 0;
     }
     if (!strcmp(argv[1], "--version")) {
-        printf("ricochet %s\n", rc_version());
+        version();
         return 0;
     }
     if (!strcmp(argv[1], "export-vtk")) return export_vtk(argc, argv);
     const char *cmd = argv[1], *case_path = NULL, *out = NULL;
-    int quiet = 0;
-    for (int k = 2; k < argc; k++) {
-        if (!strcmp(argv[k], "-o") && k + 1 < argc) out = argv[++k];
-        else if (!strcmp(argv[k], "-q")) quiet = 1;
-        else if (argv[k][0] == '-' || case_path) {
-            fprintf(stderr, "ricochet: unexpected argument '%s'\n", argv[k]);
-            usage(stderr);
-            return 2;
-        } else case_path = argv[k];
-    }
-    if (!case_path || (strcmp(cmd, "run") && strcmp(cmd, "check"))) {
+    const int is_run = !strcmp(cmd, "run");
+    if (!is_run && strcmp(cmd, "check")) {
+        fprintf(stderr, "ricochet: unknown command '%s'\n", cmd);
         usage(stderr);
+        return 2;
+    }
+    int quiet = 0;
+    double t_end = 0.0, dt_out = 0.0, rtol = 0.0;
+    for (int k = 2; k < argc; k++) {
+        const char *a = argv[k];
+        /* --opt VALUE or --opt=VALUE */
+        const char *names[] = {"--t-end", "--dt-out", "--rtol"};
+        double *vals[] = {&t_end, &dt_out, &rtol};
+        int took = 0;
+        for (int j = 0; j < 3 && is_run; j++) {
+            const size_t n = strlen(names[j]);
+            if (strncmp(a, names[j], n) || (a[n] != '\0' && a[n] != '=')) continue;
+            const char *v = a[n] == '=' ? a + n + 1 : (k + 1 < argc ? argv[++k] : NULL);
+            if (!positive(names[j], v, vals[j])) return 2;
+            took = 1;
+        }
+        if (took) continue;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            if (is_run) usage_run(stdout);
+            else usage_check(stdout);
+            return 0;
+        }
+        if (!strcmp(a, "-o") && is_run) {
+            if (k + 1 >= argc) {
+                fprintf(stderr, "ricochet: -o: expected an output file name\n");
+                return 2;
+            }
+            out = argv[++k];
+        } else if (!strcmp(a, "-q")) quiet = 1;
+        else if (a[0] == '-' || case_path) {
+            fprintf(stderr, "ricochet %s: unexpected argument '%s'\n", cmd, a);
+            if (is_run) usage_run(stderr);
+            else usage_check(stderr);
+            return 2;
+        } else case_path = a;
+    }
+    if (rtol >= 1.0) {
+        fprintf(stderr, "ricochet: --rtol: expected a relative tolerance below 1, got %g\n", rtol);
+        return 2;
+    }
+    if (!case_path) {
+        fprintf(stderr, "ricochet %s: no case file given\n", cmd);
+        if (is_run) usage_run(stderr);
+        else usage_check(stderr);
         return 2;
     }
     if (!quiet) rc_set_progress(stderr);
@@ -142,14 +236,17 @@ int main(int argc, char **argv)
     rc_error e;
     memset(&e, 0, sizeof e);
     int rc = load(case_path, &c, &m, &e);
+    /* overrides, after the compile: the derived tolerances follow --rtol */
+    if (rc == 0 && rtol > 0 && rc_model_set_rtol(m, rtol, &e)) rc = fail(&e);
     char *def = NULL;
-    if (rc == 0 && !strcmp(cmd, "run")) {
+    if (rc == 0 && is_run) {
         def = out ? NULL : default_output(case_path);
         rc = check_output_path(c, out ? out : def);
     }
-    if (rc == 0 && !strcmp(cmd, "check")) rc_model_print_summary(m, stdout);
-    if (rc == 0 && !strcmp(cmd, "run")) {
-        rc_run_options opt = {out ? out : def, !quiet, 0.0, NULL, &stop_requested};
+    if (rc == 0 && !is_run) rc_model_print_summary(m, stdout);
+    if (rc == 0 && is_run) {
+        rc_run_options opt = {.output_path = out ? out : def, .progress = !quiet, .t_end_override = t_end,
+                              .dt_out_override = dt_out, .stop = &stop_requested};
         rc_stats s;
         rc_status st = rc_run(m, &opt, &s, &e);
         if (!quiet) {

@@ -6,8 +6,12 @@
  * (jacpattern.c). Here, above both, so that src/model never calls the
  * engine.
  */
-#include "model/model.h"
+#include <math.h>
+#include <stdlib.h>
+
+#include "base/error.h"
 #include "base/progress.h"
+#include "model/model.h"
 
 rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
 {
@@ -33,3 +37,33 @@ rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
     *out = m;
     return RC_OK;
 }
+
+rc_status rc_model_set_rtol(rc_model *m, double rtol, rc_error *err)
+{
+    rc_error local;
+    if (!err) err = &local;
+    if (!(isfinite(rtol) && rtol > 0 && rtol < 1))
+        RC_RAISE(err, RC_EINPUT, "relative tolerance: expected a finite number in (0, 1), got %g", rtol);
+    const double old = m->rtol;
+    double *atol = m->atol;
+    char *rel = m->ewt_rel;
+    m->rtol = rtol;
+    m->atol = NULL;
+    m->ewt_rel = NULL;
+    rc_status st = rc_model_tolerances(m, err);
+    if (st) { /* keep the model as it was */
+        free(m->atol);
+        free(m->ewt_rel);
+        m->rtol = old;
+        m->atol = atol;
+        m->ewt_rel = rel;
+        return st;
+    }
+    free(atol);
+    free(rel);
+    return RC_OK;
+}
+
+double rc_model_rtol(const rc_model *m) { return m->rtol; }
+double rc_model_t_end(const rc_model *m) { return m->tend; }
+double rc_model_dt_out(const rc_model *m) { return m->dtout; }

@@ -19,6 +19,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <klu.h>
+#include <sundials/sundials_config.h>
 #include <sunlinsol/sunlinsol_klu.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 #include <time.h>
@@ -44,6 +46,8 @@
 #define RC_ZENO_REL 1e-7
 /* Events kept per root return (more are applied but not itemised). */
 #define RC_MAX_EV 64
+/* Progress in a log (stderr not a terminal): a line every RC_LOG_EVERY s. */
+#define RC_LOG_EVERY 10.0
 
 typedef struct run_ctx {
     const rc_model *m;
@@ -206,17 +210,44 @@ static int set_root_directions(const rc_model *m, const rc_data *d, void *cv, in
     return CVodeSetRootDirection(cv, dir);
 }
 
+/* Where the events go: the events table of the output file (NULL: none)
+ * and the caller's callback (rc_run_options.on_event, NULL: none), which
+ * may ask to stop (`stop` set, with the event in `why`). */
+typedef struct ev_sink {
+    rc_output *out;
+    rc_event_fn fn;
+    void *user;
+    int stop;
+    char why[300];
+} ev_sink;
+
+/* One event to the sink; RC_OK or the output's error. */
+static rc_status sink_event(ev_sink *k, double t, const char *kind, const char *element, const double v[3],
+                            rc_error *err)
+{
+    rc_status st = RC_OK;
+    if (k->out) st = v ? rc_output_event_values(k->out, t, kind, element, v, err) : rc_output_event(k->out, t, kind, element, err);
+    if (!st && k->fn && !k->stop) {
+        const double none[3] = {NAN, NAN, NAN}; /* not an interface, as in the file */
+        if (k->fn(k->user, t, kind, element, v ? v : none)) {
+            k->stop = 1;
+            snprintf(k->why, sizeof k->why, "stopped by the event callback at t = %.9g s (%s %s)", t, kind, element);
+        }
+    }
+    return st;
+}
+
 /* Append event `ev` at (t, y) to the events table with its interface's
  * penetration P [m], approach speed dP/dt [m/s] and normal force [N], in the
  * mode after the event. */
-static rc_status write_event(const rc_model *m, const rc_data *d, rc_output *o, double t, const double *y,
+static rc_status write_event(const rc_model *m, const rc_data *d, ev_sink *o, double t, const double *y,
                              const rc_event *ev, rc_error *err)
 {
     const int i = ev->inter;
     rc_inter_report r;
     rc_inter_report_eval(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y, &r);
     const double v[3] = {r.p, r.vn, d->inter_mode[i] == RC_MODE_CLOSED && r.fn > 0 ? r.fn : 0.0};
-    return rc_output_event_values(o, t, ev->kind, m->inter_name[i], v, err);
+    return sink_event(o, t, ev->kind, m->inter_name[i], v, err);
 }
 
 /* Contacts at zero penetration or zero force, decided by the state after
@@ -224,7 +255,7 @@ static rc_status write_event(const rc_model *m, const rc_data *d, rc_output *o, 
  * the state in the current modes is computed first, for the force rates.
  * Writes the events; returns their number (*jumped is set when history
  * states were reset). */
-static int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double *f, rc_output *out,
+static int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double *f, ev_sink *out,
                             rc_impacts *im, long *nevents, int *jumped, rc_status *st, rc_error *err)
 {
     int total = 0;
@@ -240,7 +271,7 @@ static int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, 
         total += nev;
         *nevents += nev;
         for (int k = 0; k < nev && k < RC_MAX_EV; k++) rc_impacts_event(im, m, d, ev[k].inter, ev[k].kind, t, y);
-        for (int k = 0; k < nev && k < RC_MAX_EV && out; k++)
+        for (int k = 0; k < nev && k < RC_MAX_EV; k++)
             if ((*st = write_event(m, d, out, t, y, &ev[k], err))) return total;
         if (nev == 0) break;
     }
@@ -573,10 +604,23 @@ static int needs_restart(const rc_model *m, rc_data *d, void *cv, int *old_mode,
     return 0;
 }
 
-static void progress(const rc_model *m, const rc_stats *s, double t, long steps, double t0)
+/* Progress of the integration on stderr: one line rewritten on a terminal,
+ * whole lines in a log. The time remaining is estimated from the rate of
+ * simulated time over the wall time so far. */
+static void progress(double tend, const rc_stats *s, double t, long steps, double t0, int tty)
 {
-    fprintf(stderr, "\r  t = %-10.4g s (%5.1f%%)  steps %-9ld events %-7ld wall %.1f s ", t, 100.0 * t / m->tend,
-            steps, s->events, wall_now() - t0);
+    const double wall = wall_now() - t0;
+    char left[64] = "";
+    if (t > 0 && t < tend) {
+        const double rem = (tend - t) * wall / t;
+        if (rem < 10) snprintf(left, sizeof left, ", about %.1f s left", rem);
+        else if (rem < 120) snprintf(left, sizeof left, ", about %.0f s left", rem);
+        else if (rem < 7200) snprintf(left, sizeof left, ", about %.0f min left", rem / 60);
+        else snprintf(left, sizeof left, ", about %.1f h left", rem / 3600);
+    }
+    fprintf(stderr, "%sricochet: t = %.6g of %.6g s (%.1f%%), steps %ld, events %ld, wall %.1f s%s%s", tty ? "\r" : "",
+            t, tend, 100.0 * t / tend, steps, s->events, wall, left, tty ? "   " : "\n");
+    fflush(stderr);
 }
 
 #define CVCHECK(call, what)                                                            \
@@ -671,7 +715,8 @@ static void failure_advice(const rc_model *m, const rc_data *d, void *cv, int fl
     free(fname);
 }
 
-static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, rc_error *err)
+static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_pause *pause, rc_stats *stats,
+                           rc_error *err)
 {
     rc_status st = RC_OK;
     double t = 0.0; /* time reached [s] */
@@ -702,7 +747,9 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
     char reason[2048] = "";
     rc_data *d = rc_data_new(m);
     const double tend = opt && opt->t_end_override > 0 ? opt->t_end_override : m->tend;
-    const int show = opt && opt->progress && isatty(2);
+    const double dtout = opt && opt->dt_out_override > 0 ? opt->dt_out_override : m->dtout;
+    const int show = opt && opt->progress, tty = show && isatty(2);
+    ev_sink sink = {NULL, opt ? opt->on_event : NULL, opt ? opt->user : NULL, 0, ""};
     const int evrec = rc_event_records(m); /* full-state records at events */
     double wall0 = wall_now(), last_progress = wall0;
 
@@ -750,9 +797,10 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
     memcpy(N_VGetArrayPointer(av), m->atol, (size_t)m->ny * sizeof(double));
     rc_modes_init(m, d, t, yd);
     if ((st = open_output(m, opt ? opt->output_path : NULL, note, &out, err))) goto done;
+    sink.out = out;
     {
         int jmp = 0;
-        resolve_touching(m, d, t, yd, flook, out, &im, &s.events, &jmp, &st, err);
+        resolve_touching(m, d, t, yd, flook, &sink, &im, &s.events, &jmp, &st, err);
         if (st) goto done;
     }
 
@@ -796,11 +844,36 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
 
     /* ---- main loop: output times and events ---- */
     long nout = 1;
-    double tout = fmin(m->dtout, tend);
+    double tout = fmin(dtout, tend);
     int fresh = 0; /* modes changed without a restart: the Jacobian is stale */
     double t_prev = t; /* where the last CVode call ended [s] */
     long single = 0;   /* single steps since the last output time */
     while (t < tend) {
+        /* the event callback asked to stop: end here as an interrupted run */
+        if (sink.stop) {
+            snprintf(reason, sizeof reason, "%s: the results up to there are kept", sink.why);
+            fail_reason = reason;
+            st = RC_SET(err, RC_EINTERRUPT, "%s", reason);
+            break;
+        }
+        /* stepping (rc_run_until): hand over the state at each time asked
+         * for; the caller may stop the run there */
+        int paused_stop = 0;
+        while (pause && t >= pause->until && !paused_stop) {
+            const double tu = pause->until;
+            const double *yu = yd;
+            if (t > tu) {
+                CVCHECK(CVodeGetDky(cv, tu, 0, ytn), "CVodeGetDky");
+                yu = N_VGetArrayPointer(ytn);
+            }
+            paused_stop = pause->reached(pause, tu, yu);
+        }
+        if (paused_stop) {
+            snprintf(reason, sizeof reason, "stopped by the caller at t = %.9g s: the results up to there are kept", t);
+            fail_reason = reason;
+            st = RC_SET(err, RC_EINTERRUPT, "%s", reason);
+            break;
+        }
         /* after such a change, one internal step with a forced linear solver
          * setup and a new Jacobian: a stale Jacobian of the old mode (a
          * contact stiffness that is gone, a viscous friction term that
@@ -817,7 +890,10 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
             CVCHECK(CVodeSetJacEvalFrequency(cv, 1), "CVodeSetJacEvalFrequency");
             CVodeGetNumSteps(cv, &nst_before);
         }
-        int flag = CVode(cv, tout, y, &t, one_step ? CV_ONE_STEP : CV_NORMAL);
+        /* a time asked for by the caller before the next output time: return
+         * there (CV_NORMAL interpolates; the steps are the same) */
+        const double tcall = pause && pause->until < tout ? pause->until : tout;
+        int flag = CVode(cv, tcall, y, &t, one_step ? CV_ONE_STEP : CV_NORMAL);
         /* right after a root return, a single-step call may only hand back
          * the rest of the step already taken: keep the forced setup until a
          * new step has been taken */
@@ -849,7 +925,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
         if (flag == CV_TSTOP_RETURN && ibp < nbp && t >= bp[ibp]) {
             /* a time breakpoint: an imposed velocity ends; restart there */
             s.events++;
-            if (out && (st = rc_output_event(out, t, "impvel_stop", "/IMPVEL", err))) goto done;
+            if ((st = sink_event(&sink, t, "impvel_stop", "/IMPVEL", NULL, err))) goto done;
             add_stats(cv, &s);
             CVCHECK(CVodeReInit(cv, t, y), "CVodeReInit");
             s.reinits++;
@@ -858,11 +934,11 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
             CVCHECK(CVodeSetStopTime(cv, ibp < nbp ? bp[ibp] : tend), "CVodeSetStopTime");
             /* a full-state record at the event (rc_event_records), or the
              * output record when the event falls on an output time */
-            const int on_out = tout - t <= 1e-12 * fmax(fabs(t), m->dtout);
+            const int on_out = tout - t <= 1e-12 * fmax(fabs(t), dtout);
             if ((evrec || on_out) && (st = write_frame(m, d, out, &fb, t, yd, evrec, err))) goto done;
             if (on_out) {
                 nout++;
-                tout = fmin(nout * m->dtout, tend);
+                tout = fmin(nout * dtout, tend);
             }
             continue;
         }
@@ -887,26 +963,26 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
             int nev = rc_events_apply(m, d, t, yd, roots, ev, RC_MAX_EV, &jumped);
             s.events += nev;
             for (int k = 0; k < nev && k < RC_MAX_EV; k++) rc_impacts_event(&im, m, d, ev[k].inter, ev[k].kind, t, yd);
-            for (int k = 0; k < nev && k < RC_MAX_EV && out; k++)
-                if ((st = write_event(m, d, out, t, yd, &ev[k], err))) goto done;
+            for (int k = 0; k < nev && k < RC_MAX_EV; k++)
+                if ((st = write_event(m, d, &sink, t, yd, &ev[k], err))) goto done;
             /* event accumulation: report it rather than stall */
             for (int k = 0; k < nev && k < RC_MAX_EV; k++) {
                 const int i = ev[k].inter;
-                zeno_n[i] = t - zeno_t[i] <= RC_ZENO_REL * fmax(fabs(t), m->dtout) ? zeno_n[i] + 1 : 0;
+                zeno_n[i] = t - zeno_t[i] <= RC_ZENO_REL * fmax(fabs(t), dtout) ? zeno_n[i] + 1 : 0;
                 zeno_t[i] = t;
                 if (zeno_n[i] > RC_ZENO_MAX) {
                     snprintf(reason, sizeof reason,
                              "event accumulation (Zeno) at t = %.9g s in %s: more than %d events within %.2g s of "
                              "each other (last: %s); the modes of this element switch without the state moving: "
                              "tighter tolerances or a smoother law may help",
-                             t, m->inter_name[i], RC_ZENO_MAX, RC_ZENO_REL * fmax(fabs(t), m->dtout), ev[k].kind);
+                             t, m->inter_name[i], RC_ZENO_MAX, RC_ZENO_REL * fmax(fabs(t), dtout), ev[k].kind);
                     fail_reason = reason;
                     st = RC_SET(err, RC_ESOLVER, "%s", reason);
                     goto done;
                 }
             }
             /* contacts left at zero penetration or zero force: by the state */
-            nev += resolve_touching(m, d, t, yd, flook, out, &im, &s.events, &jumped, &st, err);
+            nev += resolve_touching(m, d, t, yd, flook, &sink, &im, &s.events, &jumped, &st, err);
             if (st) goto done;
             if (nev > 0) CVCHECK(set_root_directions(m, d, cv, rootdir), "CVodeSetRootDirection");
             if (refined > 0 || jumped || (nev > 0 && needs_restart(m, d, cv, old_mode, old_branch, old_track, old_slip, t, yd, ytn, f0, f1)) ||
@@ -920,11 +996,11 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
             /* an event on an output time stands for that output: a
              * full-state record at the event (rc_event_records), or else the
              * output record */
-            const int on_out = tout - t <= 1e-12 * fmax(fabs(t), m->dtout);
+            const int on_out = tout - t <= 1e-12 * fmax(fabs(t), dtout);
             if (nev > 0 && (evrec || on_out) && (st = write_frame(m, d, out, &fb, t, yd, evrec, err))) goto done;
             if (on_out) {
                 nout++;
-                tout = fmin(nout * m->dtout, tend);
+                tout = fmin(nout * dtout, tend);
             }
         } else if (one_step && t < tout) {
             /* the single step ended before the output time: carry on */
@@ -939,16 +1015,16 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
                 if ((st = write_frame(m, d, out, &fb, tout, yo, 0, err))) goto done;
                 single = 0;
                 nout++;
-                const double next = fmin(nout * m->dtout, tend);
+                const double next = fmin(nout * dtout, tend);
                 if (next <= tout) break;
                 tout = next;
                 if (tend - tout < 1e-12 * tend) tout = tend;
             }
         }
-        if (show && wall_now() - last_progress > 0.5) {
+        if (show && wall_now() - last_progress > (tty ? 0.5 : RC_LOG_EVERY)) {
             long nst = 0;
             CVodeGetNumSteps(cv, &nst);
-            progress(m, &s, t, s.steps + nst, wall0);
+            progress(tend, &s, t, s.steps + nst, wall0, tty);
             last_progress = wall_now();
         }
     }
@@ -972,7 +1048,7 @@ done:
     }
     if (st != RC_OK) s.t_end = t; /* how far a failed run got */
     s.wall_time = wall_now() - wall0;
-    if (show) fprintf(stderr, "\n");
+    if (tty) fprintf(stderr, "\n");
     if (out) {
         rc_error e2;
         rc_status st2 = rc_output_close(out, &s, st == RC_OK, fail_reason ? fail_reason : err->msg, &e2);
@@ -1014,3 +1090,9 @@ done:
 
 /* The backend of /SOLVER Method 1 (solver.h). */
 const rc_solver rc_solver_cvode = {"cvode", RC_METHOD_CVODE, cvode_run};
+
+void rc_cvode_versions(FILE *f)
+{
+    fprintf(f, "SUNDIALS %s\nKLU %d.%d.%d (%s)\n", SUNDIALS_VERSION, KLU_MAIN_VERSION, KLU_SUB_VERSION,
+            KLU_SUBSUB_VERSION, KLU_DATE);
+}

@@ -12,13 +12,19 @@
 /* The backends, by method. */
 static const rc_solver *const rc_solvers[] = {&rc_solver_cvode};
 
-rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, rc_error *err)
+rc_status rc_run_paused(const rc_model *m, const rc_run_options *opt, rc_pause *pause, rc_stats *stats,
+                        rc_error *err)
 {
     for (size_t k = 0; k < sizeof rc_solvers / sizeof rc_solvers[0]; k++)
-        if (rc_solvers[k]->method == m->method) return rc_solvers[k]->run(m, opt, stats, err);
+        if (rc_solvers[k]->method == m->method) return rc_solvers[k]->run(m, opt, pause, stats, err);
     rc_error local_err;
     return RC_SET(err ? err : &local_err, RC_EINTERNAL, "no solver backend for /SOLVER Method %d",
                   m->method);
+}
+
+rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, rc_error *err)
+{
+    return rc_run_paused(m, opt, NULL, stats, err);
 }
 
 void rc_stats_print(const rc_stats *s, FILE *f)

@@ -15,20 +15,38 @@
 #ifndef RC_SOLVER_H
 #define RC_SOLVER_H
 
+#include <stdio.h>
+
 #include "ricochet/ricochet.h"
 
 /* /SOLVER Method numbers (docs/case-format.md). */
 enum { RC_METHOD_CVODE = 1, RC_METHOD_IDA = 2 };
 
+/* Stepping (session.c): the backend hands the state over whenever the time
+ * reached is at or past `until`, before it goes on. */
+typedef struct rc_pause {
+    double until; /* [s] */
+    /* The state at t = until (interpolated when the integrator is past it).
+     * Returns non-zero to stop the run there (RC_EINTERRUPT, the file
+     * marked incomplete); else `until` has been moved past t. */
+    int (*reached)(struct rc_pause *p, double t, const double *y);
+} rc_pause;
+
 typedef struct rc_solver {
     const char *name; /* "cvode" */
     int method;       /* RC_METHOD_* */
     /* Same contract as rc_run: RC_OK, RC_ESOLVER (partial output kept,
-     * marked incomplete) or RC_EIO; `opt` and `stats` may be NULL, `err`
-     * may be NULL. */
-    rc_status (*run)(const rc_model *m, const rc_run_options *opt, rc_stats *stats,
+     * marked incomplete), RC_EIO or RC_EINTERRUPT; `opt`, `pause` and
+     * `stats` may be NULL, `err` may be NULL. */
+    rc_status (*run)(const rc_model *m, const rc_run_options *opt, rc_pause *pause, rc_stats *stats,
                      rc_error *err);
 } rc_solver;
+
+/* rc_run with stepping (run.c). */
+rc_status rc_run_paused(const rc_model *m, const rc_run_options *opt, rc_pause *pause, rc_stats *stats,
+                        rc_error *err);
+/* "SUNDIALS x.y.z\nKLU x.y.z\n" (cvode.c, the SUNDIALS user). */
+void rc_cvode_versions(FILE *f);
 
 extern const rc_solver rc_solver_cvode; /* cvode.c */
 

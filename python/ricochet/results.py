@@ -1,0 +1,58 @@
+"""Read a ricochet results file (netCDF-4, docs/output-format.md).
+
+``read(path)`` returns an ``xarray.Dataset`` when xarray is installed
+(Debian: python3-xarray), else a ``Results``: a dict of numpy arrays, one
+per variable, with the global attributes in ``.attrs``, the variables'
+attributes in ``.var_attrs`` and the dimensions of each variable in
+``.dims``. Both are read whole into memory and the file is closed: a file
+still being written, or one marked incomplete (``attrs["complete"] ==
+"no"``, the reason in ``attrs["status"]``), reads the records it has.
+"""
+# SPDX-License-Identifier: GPL-3.0-or-later
+import numpy as np
+
+
+class Results(dict):
+    """Variables of a results file as numpy arrays (a dict), with
+    ``attrs`` (global attributes), ``var_attrs`` (per variable) and ``dims``
+    (dimension names per variable)."""
+
+    def __init__(self):
+        super().__init__()
+        self.attrs = {}
+        self.var_attrs = {}
+        self.dims = {}
+
+    def __repr__(self):
+        return "<ricochet.Results %s: %s>" % (self.attrs.get("title", "?"),
+                                              ", ".join(f"{k}{self.dims[k]}" for k in self))
+
+
+def _have_xarray():
+    try:
+        import xarray  # noqa: F401
+        return True
+    except ImportError:
+        return False
+
+
+def read(path, xarray=None):
+    """The results at ``path``: an xarray.Dataset if ``xarray`` is True, or
+    None and xarray is installed; else a Results (dict of numpy arrays).
+    Fill values stay as stored (NaN where the file has NaN)."""
+    if xarray is None:
+        xarray = _have_xarray()
+    if xarray:
+        import xarray as xr
+        with xr.open_dataset(path, engine="netcdf4", mask_and_scale=False) as ds:
+            return ds.load()
+    from netCDF4 import Dataset
+    out = Results()
+    with Dataset(path, "r") as nc:
+        nc.set_auto_mask(False)
+        out.attrs = {k: nc.getncattr(k) for k in nc.ncattrs()}
+        for name, var in nc.variables.items():
+            out[name] = np.asarray(var[...])
+            out.var_attrs[name] = {k: var.getncattr(k) for k in var.ncattrs()}
+            out.dims[name] = tuple(var.dimensions)
+    return out

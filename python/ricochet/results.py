@@ -44,7 +44,9 @@ def read(path, xarray=None):
         xarray = _have_xarray()
     if xarray:
         import xarray as xr
-        with xr.open_dataset(path, engine="netcdf4", mask_and_scale=False) as ds:
+        # time stays in seconds (the file's time axis is CF-decodable to
+        # dates from an arbitrary origin, which is no use here)
+        with xr.open_dataset(path, engine="netcdf4", mask_and_scale=False, decode_times=False) as ds:
             return ds.load()
     from netCDF4 import Dataset
     out = Results()

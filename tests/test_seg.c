@@ -151,8 +151,8 @@ static void test_seg_read_errors(void)
                      "field part_ID", "no such part");
     EXPECT_SEG_ERROR(BOX_NODES BOX_BODY "/SURF/PART/30\nx\n" RUN_TAIL, "card /SURF/PART/30", "at least one part id");
     /* pairs and laws not supported yet */
-    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS "/SURF/ELLIPS/40\ns\n0,2,0\n0,0,-1\n0.5,0.5,0.5\n" LINEAR T6 RUN_TAIL,
-                     "card /INTER/TYPE6/1", "fields surf_ID1/surf_ID2", "segment surface against sphere",
+    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS "/SURF/CYL/40\ns\n0\n0,2,0\n1,0,0\n0.5,1\n" LINEAR T6 RUN_TAIL,
+                     "card /INTER/TYPE6/1", "fields surf_ID1/surf_ID2", "segment surface against cylinder",
                      "not supported yet");
     EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS FLOOR LINEAR "/INTER/TYPE6/1\nbox on floor\n30,40\n,0.3\n\n1\n\n\n"
                      RUN_TAIL, "card /INTER/TYPE6/1", "friction on a segment surface: not supported yet");
@@ -369,6 +369,109 @@ static void test_seg_jacobian_matches_finite_differences(void)
     rc_model_free(m);
 }
 
+/* A sphere (body 1, off its centre of mass) in a V-shaped valley of
+ * triangles and quadrilaterals carried by a moving body 2: two face points
+ * past the surface, every mode, against central differences; and the
+ * force on the sphere along the sum of the two shared normal forces. */
+static void test_seg_sphere_jacobian_matches_finite_differences(void)
+{
+    rc_error e;
+    rc_model *m = seg_compile("/NODE\n1,0.001,-0.002,0.05\n2,0,0,-0.2\n"
+                              "10,-0.2,-0.2,0.06\n11,0.2,-0.2,0.06\n12,0.2,0,0\n13,-0.2,0,0\n14,0.2,0.2,0.06\n"
+                              "15,-0.2,0.2,0.06\n16,0,0.2,0.06\n"
+                              "/GRNOD/NODE/8\nplate\n10,11,12,13,14,15,16\n"
+                              "/RBODY/1\nball\n1,,,,0.731\n2.1e-3,1.7e-3,2.9e-3\n1.3e-4,-2.2e-4,0.7e-4\n"
+                              "/RBODY/2\nvalley\n2,,,,5.0,8\n0.11,0.13,0.2\n0.01,0,0\n"
+                              "/SURF/ELLIPS/20\nball\n0,2,1\n0.0017,-0.0011,0.0521\n0.05,0.05,0.05\n"
+                              "/SURF/SEG/40\nvalley\n1,10,11,12,13\n2,13,12,16\n3,12,14,16\n4,13,16,15\n"
+                              "/FUNCT/1\nload\n-0.01,-3.1e3\n0,0\n0.0013,2.71e3\n0.0041,1.37e4\n0.0097,5.9e4\n"
+                              "/FUNCT/2\nunload\n0,0\n0.002,0\n0.006,5e3\n0.011,3.1e4\n"
+                              "/FUNCT/3\ndv\n-10,-41\n0,0\n0.37,5.3\n3.3,71\n/FUNCT/4\ndf\n0,1\n500,0.83\n9e4,0.61\n"
+                              "/INTER/TYPE6/1\nball in the valley\n40,20\n,,0.0011\n,,,5,,,1.9,0.61\n1,1,1.3,0.77\n"
+                              "2,,7.3e6,0.83\n3.7,3,4,2.3\n" RUN_TAIL,
+                              &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    ENSURE(m->inter_pair[0] == RC_PAIR_SPHERE_SEG);
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    rc_initial_state(m, y);
+    const double s[26] = {0.0011, -0.0023, 0.0497, 0.99, 0.011, -0.013, 0.007, 0.31, -0.23, -0.17, 3.1, -2.3, 4.7,
+                          0.0021, 0.0007, -0.2003, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
+    for (int b = 0; b < 2; b++) memcpy(y + m->body_yadr[b], s + 13 * b, 13 * sizeof(double));
+    for (int k = 26; k < m->ny; k++) y[k] = 0.013 * (k - 25);
+    y[m->inter_eadr[0] + m->inter_hidx[0]] = 731.0;
+    y[m->inter_eadr[0] + m->inter_oidx[0]] = 3.7e-4;
+    rc_inter_report r;
+    rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+    ENSURE(r.p > 0);
+    int bad = 0, outside = 0, combos = 0;
+    double maxerr = 0;
+    const int modes[2] = {RC_MODE_CLOSED, RC_MODE_RELEASED};
+    for (int md = 0; md < 2; md++)
+        for (int br = 0; br < 3; br++)
+            for (int trk = 0; trk < 2; trk++) {
+                d->inter_mode[0] = modes[md];
+                d->inter_branch[0] = br;
+                d->inter_track[0] = trk;
+                maxerr = fmax(maxerr, seg_jac_error(m, d, y, &bad, &outside));
+                combos++;
+            }
+    printf("    sphere-segments jacobian: P = %.3g m, %d states, %lld nonzeros, %d mode combinations, max scaled "
+           "|J - FD| = %.2e\n", r.p, m->ny, (long long)m->nnz, combos, maxerr);
+    ENSURE(bad == 0);
+    ENSURE(outside == 0);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
+/* A sphere at rest in a symmetric V valley (fixed): two face points at the
+ * same depth share F = k P equally; the force on the sphere is vertical,
+ * 2 (F / 2) cos(alpha) with alpha the slope angle, and without moment. */
+static void test_seg_sphere_valley_forces(void)
+{
+    rc_error e;
+    rc_model *m = seg_compile("/NODE\n1,0,0,0.0515\n"
+                              "10,-0.2,-0.2,0.06\n11,0.2,-0.2,0.06\n12,0.2,0,0\n13,-0.2,0,0\n14,0.2,0.2,0.06\n"
+                              "15,-0.2,0.2,0.06\n"
+                              "/RBODY/1\nball\n1,,,,2.0\n0.002,0.002,0.002\n0,0,0\n"
+                              "/SURF/ELLIPS/20\nball\n0,2,1\n0,0,0.0515\n0.05,0.05,0.05\n"
+                              "/SURF/SEG/40\nvalley\n1,10,11,12,13\n2,13,12,14,15\n" LINEAR
+                              "/INTER/TYPE6/1\nball in the valley\n20,40\n\n\n1\n\n\n" RUN_TAIL,
+                              &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    ENSURE(m->surf_body[1] == -1); /* nodes in no body: fixed in space */
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double)), *yd = calloc((size_t)m->ny, sizeof(double));
+    rc_initial_state(m, y);
+    d->inter_mode[0] = RC_MODE_CLOSED;
+    rc_assemble_rhs(m, d, 0.0, y, yd);
+    const double slope = 0.06 / 0.2, ca = 1.0 / sqrt(1 + slope * slope);
+    const double P = 0.05 - 0.0515 * ca, F = 1e6 * P;
+    const double *acc = yd + m->body_yadr[0] + 7;
+    ENSURE_NEAR(acc[2], F * ca / 2.0, 1e-12, 0);
+    ENSURE_NEAR(acc[0], 0.0, 0, 1e-9);
+    ENSURE_NEAR(acc[1], 0.0, 0, 1e-9);
+    for (int k = 3; k < 6; k++) ENSURE_NEAR(acc[k], 0.0, 0, 1e-9);
+    rc_inter_report r;
+    rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+    ENSURE_NEAR(r.p, P, 1e-12, 0);
+    printf("    sphere in a V valley: P = %.6g m, vertical acceleration %.9g m/s^2 (F cos(alpha) / m = %.9g)\n", r.p,
+           acc[2], F * ca / 2.0);
+    free(y);
+    free(yd);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 void suite_seg(void);
 void suite_seg(void)
 {
@@ -376,4 +479,6 @@ void suite_seg(void)
     RUN_TEST(test_seg_read_errors);
     RUN_TEST(test_seg_force_distribution);
     RUN_TEST(test_seg_jacobian_matches_finite_differences);
+    RUN_TEST(test_seg_sphere_valley_forces);
+    RUN_TEST(test_seg_sphere_jacobian_matches_finite_differences);
 }

@@ -373,7 +373,7 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
 static rc_status check_seg_pairs(const rc_case *c, const rc_model *m, rc_error *err)
 {
     for (int i = 0; i < m->ninter; i++) {
-        if (m->inter_pair[i] != RC_PAIR_SEG_PLANE) continue;
+        if (m->inter_pair[i] != RC_PAIR_SEG_PLANE && m->inter_pair[i] != RC_PAIR_SPHERE_SEG) continue;
         if (i >= c->ntype6)
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields surf_ID1/surf_ID2: a segment surface in /INTER/POWER: not supported yet (supported: /INTER/TYPE6)",
                      RC_LOC(c->power[i - c->ntype6].line_loc[0]), m->inter_name[i]);
@@ -511,6 +511,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->surf_nadr, m->nsurf + 1);
     ALLOC(m->surf_sadr, m->nsurf + 1);
     if ((st = compile_surfaces(c, m, err))) goto fail;
+    if ((st = rc_seg_meshes(m, err))) goto fail; /* model/segsurf.c */
     /* interfaces */
     m->ninter = c->ntype6 + c->npower; /* TYPE6, then /INTER/POWER */
     ALLOC(m->inter_id, m->ninter);
@@ -578,6 +579,7 @@ void rc_model_free(rc_model *m)
     rc_cpl_free(m->cpl);
     rc_power_free(m);
     rc_imp_free(m->imp);
+    rc_seg_free(m);
     void *arrays[] = {m->case_path, m->table, m->body_id, m->body_fixed, m->body_yadr, m->body_mass,
                       m->body_J, m->body_Jinv, m->body_y0, m->body_grav, m->body_dofmask, m->surf_id, m->surf_kind,
                       m->surf_body, m->surf_p, m->surf_n, m->surf_r, m->inter_id, m->inter_pair,

@@ -62,8 +62,10 @@ typedef enum {
     RC_PAIR_CYL_BOX = 4,      /* a: cylinder, b: box (nearest face)   */
     RC_PAIR_CYL_CYL = 5,      /* a, b: cylinders with parallel axes   */
     RC_PAIR_SPHERE_BOX = 6,   /* a: sphere, b: box (nearest face)     */
-    RC_PAIR_SEG_PLANE = 7     /* a: segment surface (its nodes), b: plane;
+    RC_PAIR_SEG_PLANE = 7,    /* a: segment surface (its nodes), b: plane;
                                  several contact points (docs/theory.md) */
+    RC_PAIR_SPHERE_SEG = 8    /* a: sphere, b: segment surface (closest
+                                 points on the candidate segments) */
 } rc_pair_kind;
 /* "sphere-plane", "cylinder-box", ... (model/geom.c) */
 const char *rc_geom_pair_name(rc_pair_kind kind);
@@ -152,6 +154,7 @@ struct rc_model {
     double *surf_node;   /* [3*nodes] */
     int *surf_sadr;      /* [nsurf+1] */
     int *surf_seg;       /* [4*segments] */
+    struct rc_segmesh *surf_mesh; /* [nsurf] adjacency and broad-phase grid (segsurf.h) */
 
     /* curves */
     int ntable;

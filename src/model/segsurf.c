@@ -273,3 +273,127 @@ done:
     free(f);
     return st;
 }
+
+/* ---- adjacency and broad-phase grid ------------------------------------ */
+
+static rc_status seg_mesh(rc_model *m, int s, rc_segmesh *g, rc_error *err)
+{
+    const int n0 = m->surf_nadr[s], s0 = m->surf_sadr[s];
+    g->nn = m->surf_nadr[s + 1] - n0;
+    g->ns = m->surf_sadr[s + 1] - s0;
+    const double *x = m->surf_node + 3 * n0;
+    const int *seg = m->surf_seg + 4 * s0;
+    g->vadr = calloc((size_t)g->nn + 1, sizeof(int));
+    g->vseg = malloc((size_t)(4 * g->ns + 1) * sizeof(int));
+    g->srange = malloc((size_t)(6 * g->ns + 1) * sizeof(int));
+    if (!g->vadr || !g->vseg || !g->srange) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    /* segments of each node (a triangle's repeated corner counted once) */
+    for (int k = 0; k < g->ns; k++)
+        for (int j = 0; j < 4; j++)
+            if (j < 3 || seg[4 * k + 3] != seg[4 * k + 2]) g->vadr[seg[4 * k + j] + 1]++;
+    for (int j = 0; j < g->nn; j++) g->vadr[j + 1] += g->vadr[j];
+    int *fill = calloc((size_t)g->nn + 1, sizeof(int));
+    if (!fill) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    for (int k = 0; k < g->ns; k++)
+        for (int j = 0; j < 4; j++)
+            if (j < 3 || seg[4 * k + 3] != seg[4 * k + 2]) {
+                const int v = seg[4 * k + j];
+                g->vseg[g->vadr[v] + fill[v]++] = k;
+            }
+    free(fill);
+    /* grid: bounding box of the nodes, cell size the mean segment extent,
+     * at most about 8 cells per segment */
+    double hi[3], ext = 0;
+    for (int k = 0; k < 3; k++) g->lo[k] = hi[k] = x[k];
+    for (int j = 1; j < g->nn; j++)
+        for (int k = 0; k < 3; k++) {
+            g->lo[k] = fmin(g->lo[k], x[3 * j + k]);
+            hi[k] = fmax(hi[k], x[3 * j + k]);
+        }
+    for (int q = 0; q < g->ns; q++) {
+        double a[3], b[3];
+        for (int k = 0; k < 3; k++) a[k] = b[k] = x[3 * seg[4 * q] + k];
+        for (int j = 1; j < 4; j++)
+            for (int k = 0; k < 3; k++) {
+                a[k] = fmin(a[k], x[3 * seg[4 * q + j] + k]);
+                b[k] = fmax(b[k], x[3 * seg[4 * q + j] + k]);
+            }
+        ext += fmax(b[0] - a[0], fmax(b[1] - a[1], b[2] - a[2]));
+    }
+    g->h = ext / g->ns;
+    const double span = fmax(hi[0] - g->lo[0], fmax(hi[1] - g->lo[1], hi[2] - g->lo[2]));
+    if (!(g->h > 0)) g->h = span > 0 ? span : 1.0;
+    for (;;) {
+        double ncell = 1;
+        for (int k = 0; k < 3; k++) ncell *= floor((hi[k] - g->lo[k]) / g->h) + 1;
+        if (ncell <= 8.0 * g->ns + 64) break;
+        g->h *= 1.5;
+    }
+    int ncell = 1;
+    for (int k = 0; k < 3; k++) {
+        g->dim[k] = (int)floor((hi[k] - g->lo[k]) / g->h) + 1;
+        ncell *= g->dim[k];
+    }
+    g->cadr = calloc((size_t)ncell + 1, sizeof(int));
+    if (!g->cadr) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    for (int pass = 0; pass < 2; pass++) {
+        for (int q = 0; q < g->ns; q++) {
+            int *r = g->srange + 6 * q;
+            if (pass == 0)
+                for (int k = 0; k < 3; k++) {
+                    double a = x[3 * seg[4 * q] + k], b = a;
+                    for (int j = 1; j < 4; j++) {
+                        a = fmin(a, x[3 * seg[4 * q + j] + k]);
+                        b = fmax(b, x[3 * seg[4 * q + j] + k]);
+                    }
+                    r[2 * k] = (int)floor((a - g->lo[k]) / g->h);
+                    r[2 * k + 1] = (int)floor((b - g->lo[k]) / g->h);
+                    if (r[2 * k] < 0) r[2 * k] = 0;
+                    if (r[2 * k + 1] > g->dim[k] - 1) r[2 * k + 1] = g->dim[k] - 1;
+                }
+            for (int i = r[0]; i <= r[1]; i++)
+                for (int j = r[2]; j <= r[3]; j++)
+                    for (int l = r[4]; l <= r[5]; l++) {
+                        const int c = (i * g->dim[1] + j) * g->dim[2] + l;
+                        if (pass == 0) g->cadr[c + 1]++;
+                        else g->cseg[g->cadr[c]++] = q;
+                    }
+        }
+        if (pass == 0) {
+            for (int c = 0; c < ncell; c++) g->cadr[c + 1] += g->cadr[c];
+            g->cseg = malloc((size_t)g->cadr[ncell] * sizeof(int) + sizeof(int));
+            if (!g->cseg) RC_RAISE(err, RC_ENOMEM, "out of memory");
+        } else {
+            for (int c = ncell; c > 0; c--) g->cadr[c] = g->cadr[c - 1];
+            g->cadr[0] = 0;
+        }
+    }
+    return RC_OK;
+}
+
+rc_status rc_seg_meshes(rc_model *m, rc_error *err)
+{
+    m->surf_mesh = calloc((size_t)m->nsurf + 1, sizeof *m->surf_mesh);
+    if (!m->surf_mesh) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    for (int s = 0; s < m->nsurf; s++) {
+        if (m->surf_kind[s] != RC_SURF_SEG) continue;
+        rc_status st = seg_mesh(m, s, &m->surf_mesh[s], err);
+        if (st) return st;
+    }
+    return RC_OK;
+}
+
+void rc_seg_free(rc_model *m)
+{
+    if (!m->surf_mesh) return;
+    for (int s = 0; s < m->nsurf; s++) {
+        rc_segmesh *g = &m->surf_mesh[s];
+        free(g->vadr);
+        free(g->vseg);
+        free(g->srange);
+        free(g->cadr);
+        free(g->cseg);
+    }
+    free(m->surf_mesh);
+    m->surf_mesh = NULL;
+}

@@ -14,4 +14,22 @@
  * and surf_sadr[s] set; fills [s + 1]). Bodies are compiled. */
 rc_status rc_seg_surface(const rc_case *c, rc_model *m, int s, rc_error *err);
 
+/* Adjacency and broad-phase grid of a segment surface (m->surf_mesh[s]),
+ * body frame, built at compile time: the segments of each node, and a
+ * uniform grid of cells of size h over the segments' bounding boxes. */
+typedef struct rc_segmesh {
+    int nn, ns;          /* nodes, segments (local indices) */
+    int *vadr, *vseg;    /* [nn + 1], [4 ns]: segments of node j at vseg[vadr[j] .. vadr[j+1]) */
+    double lo[3], h;     /* grid origin [m] and cell size [m] */
+    int dim[3];          /* cells along each axis */
+    int *cadr, *cseg;    /* [ncell + 1]: segments of cell c at cseg[cadr[c] .. cadr[c+1]) */
+    int *srange;         /* [6 ns]: first and last cell of segment k along x, y, z */
+} rc_segmesh;
+
+/* Build the adjacency and grid of every segment surface (after all
+ * surfaces are compiled). */
+rc_status rc_seg_meshes(rc_model *m, rc_error *err);
+/* Release m->surf_mesh. */
+void rc_seg_free(rc_model *m);
+
 #endif

@@ -286,7 +286,8 @@ static rc_status seg_mesh(rc_model *m, int s, rc_segmesh *g, rc_error *err)
     g->vadr = calloc((size_t)g->nn + 1, sizeof(int));
     g->vseg = malloc((size_t)(4 * g->ns + 1) * sizeof(int));
     g->srange = malloc((size_t)(6 * g->ns + 1) * sizeof(int));
-    if (!g->vadr || !g->vseg || !g->srange) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    g->sbox = malloc((size_t)(6 * g->ns + 1) * sizeof(double));
+    if (!g->vadr || !g->vseg || !g->srange || !g->sbox) RC_RAISE(err, RC_ENOMEM, "out of memory");
     /* segments of each node (a triangle's repeated corner counted once) */
     for (int k = 0; k < g->ns; k++)
         for (int j = 0; j < 4; j++)
@@ -346,6 +347,8 @@ static rc_status seg_mesh(rc_model *m, int s, rc_segmesh *g, rc_error *err)
                         a = fmin(a, x[3 * seg[4 * q + j] + k]);
                         b = fmax(b, x[3 * seg[4 * q + j] + k]);
                     }
+                    g->sbox[6 * q + k] = a;
+                    g->sbox[6 * q + 3 + k] = b;
                     r[2 * k] = (int)floor((a - g->lo[k]) / g->h);
                     r[2 * k + 1] = (int)floor((b - g->lo[k]) / g->h);
                     if (r[2 * k] < 0) r[2 * k] = 0;
@@ -391,6 +394,7 @@ void rc_seg_free(rc_model *m)
         free(g->vadr);
         free(g->vseg);
         free(g->srange);
+        free(g->sbox);
         free(g->cadr);
         free(g->cseg);
     }

@@ -24,6 +24,7 @@ typedef struct rc_segmesh {
     int dim[3];          /* cells along each axis */
     int *cadr, *cseg;    /* [ncell + 1]: segments of cell c at cseg[cadr[c] .. cadr[c+1]) */
     int *srange;         /* [6 ns]: first and last cell of segment k along x, y, z */
+    double *sbox;        /* [6 ns]: bounding box of segment k, lower then upper corner [m] */
 } rc_segmesh;
 
 /* Build the adjacency and grid of every segment surface (after all

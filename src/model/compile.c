@@ -373,7 +373,9 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
 static rc_status check_seg_pairs(const rc_case *c, const rc_model *m, rc_error *err)
 {
     for (int i = 0; i < m->ninter; i++) {
-        if (m->inter_pair[i] != RC_PAIR_SEG_PLANE && m->inter_pair[i] != RC_PAIR_SPHERE_SEG) continue;
+        if (m->inter_pair[i] != RC_PAIR_SEG_PLANE && m->inter_pair[i] != RC_PAIR_SPHERE_SEG &&
+            m->inter_pair[i] != RC_PAIR_SEG_BOX)
+            continue;
         if (i >= c->ntype6)
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields surf_ID1/surf_ID2: a segment surface in /INTER/POWER: not supported yet (supported: /INTER/TYPE6)",
                      RC_LOC(c->power[i - c->ntype6].line_loc[0]), m->inter_name[i]);

@@ -64,8 +64,10 @@ typedef enum {
     RC_PAIR_SPHERE_BOX = 6,   /* a: sphere, b: box (nearest face)     */
     RC_PAIR_SEG_PLANE = 7,    /* a: segment surface (its nodes), b: plane;
                                  several contact points (docs/theory.md) */
-    RC_PAIR_SPHERE_SEG = 8    /* a: sphere, b: segment surface (closest
+    RC_PAIR_SPHERE_SEG = 8,   /* a: sphere, b: segment surface (closest
                                  points on the candidate segments) */
+    RC_PAIR_SEG_BOX = 9       /* a: segment surface (its nodes), b: box
+                                 (each node against its nearest face) */
 } rc_pair_kind;
 /* "sphere-plane", "cylinder-box", ... (model/geom.c) */
 const char *rc_geom_pair_name(rc_pair_kind kind);

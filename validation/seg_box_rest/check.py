@@ -59,7 +59,9 @@ def deck(tilt=None):
     d = Deck("meshed boxes dropped flat on a plane" if TILT == (0.0, 0.0) else "meshed boxes dropped tilted on a plane")
     cb, ob = placed(0.0)
     cs, os_ = placed(1.0)
-    d.nodes([(1, *ob), (2, *os_)] + [(10 + j, *p) for j, p in enumerate(cb)] + [(20 + j, *p) for j, p in enumerate(cs)])
+    ct, ot = placed(3.0)
+    d.nodes([(1, *ob), (2, *os_), (3, *ot)] + [(10 + j, *p) for j, p in enumerate(cb)] +
+            [(20 + j, *p) for j, p in enumerate(cs)] + [(30 + j, *p) for j, p in enumerate(ct)])
     d.add("/MAT/LAW1/1", line(("r", RHO_S), ("r", 0.0)), line(("r", 2.1e11), ("r", 0.3)), title="steel")
     d.add("/MAT/LAW1/2", line(("r", RHO_A), ("r", 0.0)), line(("r", 7e10), ("r", 0.33)), title="aluminium")
     d.add("/PROP/SOLID/3", line(("i", 24), ("i", 4)), line(("r", 0)), line(("r", 0)), title="solid")
@@ -67,12 +69,15 @@ def deck(tilt=None):
           title="2 mm shell")
     d.add("/PART/1", line(("i", 3), ("i", 1), ("i", 0)), title="brick box")
     d.add("/PART/2", line(("i", 4), ("i", 2), ("i", 0)), title="shell box")
+    d.add("/PART/3", line(("i", 3), ("i", 1), ("i", 0)), title="brick box on the table")
     d.add("/BRICK/1", line(*[("i", v) for v in [101] + list(range(10, 18))]))
+    d.add("/BRICK/3", line(*[("i", v) for v in [301] + list(range(30, 38))]))
     faces = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
     d.add("/SHELL/2", *[line(*[("i", v) for v in [201 + k] + [20 + j for j in f]]) for k, f in enumerate(faces)])
     d.add("/GRNOD/PART/101", i10(1), title="brick box nodes")
     d.add("/GRNOD/PART/102", i10(2), title="shell box nodes")
-    for bid, node, grp, title in ((1, 1, 101, "brick box"), (2, 2, 102, "shell box")):
+    d.add("/GRNOD/PART/103", i10(3), title="brick box on the table: nodes")
+    for bid, node, grp, title in ((1, 1, 101, "brick box"), (2, 2, 102, "shell box"), (3, 3, 103, "brick on the table")):
         # mass and inertia from the mesh (ICoG 1: centre of the mesh)
         d.add(f"/RBODY/{bid}", line(("i", node), ("i", 0), ("i", 0), ("i", 0), ("r", 0.0), ("i", grp), ("i", 0),
                                     ("i", 1), ("i", 0)),
@@ -80,10 +85,12 @@ def deck(tilt=None):
               title=title)
     d.add("/SURF/PART/31", i10(1), title="brick box faces")
     d.add("/SURF/PART/32", i10(2), title="shell box faces")
+    d.add("/SURF/PART/33", i10(3), title="brick on the table: faces")
     d.plane(10, (0, 0, 0), (0, 0, 1), title="floor z = 0")
+    d.box(11, 0, (3.0, 0.0, -0.5), (0.5, 0.5, 0.5), title="table: analytic box, top face z = 0")
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e6 N/m")
-    for iid, s, m in ((1, 31, M_BRICK), (2, 32, M_SHELL)):
-        d.type6(iid, s, 10, 1, visc=2 * ZETA * math.sqrt(K * m), title=f"box {iid} on the floor")
+    for iid, s, f, m in ((1, 31, 10, M_BRICK), (2, 32, 10, M_SHELL), (3, 33, 11, M_BRICK)):
+        d.type6(iid, s, f, 1, visc=2 * ZETA * math.sqrt(K * m), title=f"box {iid} on the {'table' if f == 11 else 'floor'}")
     d.grav(1, "Z", -G)
     d.run(T_END, 0.01)
     return d
@@ -104,7 +111,7 @@ def main():
         quat = np.array(nc["body_quaternion"][:])
         omega = np.array(nc["body_angular_velocity"][:])
     t1 = math.sqrt(2 * H0 / G)
-    for b, (name, m) in enumerate((("brick", M_BRICK), ("shell", M_SHELL))):
+    for b, (name, m) in enumerate((("brick", M_BRICK), ("shell", M_SHELL), ("brick_on_box", M_BRICK))):
         close = [t for t, k, el in zip(r.ev_t, r.ev_kind, r.ev_elem) if k == "contact_close" and el.endswith(f"/{b + 1}")]
         e = rcval.rel(close[0], t1) if close else float("inf")
         rcval.check(f"seg_box_rest.{name}.first_contact", e < 1e-8,
@@ -120,7 +127,7 @@ def main():
         rcval.check(f"seg_box_rest.{name}.penetration", e < 1e-6,
                     f"P = {p:.9e} m, m g / k = {m * G / K:.9e} m, rel. error {e:.2e} (< 1e-6)")
         # corner depths from the final pose; the forces by the rule F p_j / sum p
-        x = r.pos[-1, b]
+        x = r.pos[-1, b]  # only the depth (z) enters
         depths = []
         for j, v in enumerate(CORNERS):
             body = np.array(rot(v))  # body frame = global at t = 0, origin at the centre

@@ -8,7 +8,10 @@ WARN    := -Wall -Wextra -pedantic -Wshadow -Wstrict-prototypes -Wmissing-protot
 # complex-step differentiation uses C99 complex arithmetic; the limited-range
 # rule is exact for the finite values the kernels see (docs/design.md).
 CFLAGS  ?= $(OPT) -g
-ALLCFLAGS = $(CSTD) $(WARN) -fcx-limited-range -Iinclude -Isrc -I/usr/include/suitesparse $(CFLAGS)
+CXFLAGS ?= -fcx-limited-range
+# the git commit of the sources, in the results files (docs/output-format.md)
+RC_COMMIT := $(shell c=$$(git rev-parse --short=12 HEAD 2>/dev/null) && { git diff --quiet HEAD 2>/dev/null && echo $$c || echo $$c-modified; } || echo unknown)
+ALLCFLAGS = $(CSTD) $(WARN) $(CXFLAGS) -Iinclude -Isrc -I/usr/include/suitesparse $(CFLAGS)
 LDLIBS  := -lsundials_cvode -lsundials_ida -lsundials_nvecserial -lsundials_sunmatrixsparse \
            -lsundials_sunlinsolklu -lklu -lgsl -lgslcblas -lnetcdf -lm
 BUILD   ?= build
@@ -25,10 +28,12 @@ TEST_OBJ := $(patsubst tests/%.c,$(BUILD)/tobj/%.o,$(TEST_SRC))
 LIB     := $(BUILD)/libricochet.a
 BIN     := $(BUILD)/ricochet
 TESTBIN := $(BUILD)/run_tests
+REPLAY  := $(BUILD)/fuzz_replay
+FUZZ_SECONDS ?= 60
 
-.PHONY: all demo check validate asan valgrind bench install clean deps test
+.PHONY: all demo check validate asan valgrind bench install clean deps test fuzz
 
-all: $(BIN) $(TESTBIN)
+all: $(BIN) $(TESTBIN) $(REPLAY)
 
 deps:
 	@bash scripts/install-deps.sh
@@ -36,6 +41,17 @@ deps:
 $(BUILD)/obj/%.o: src/%.c $(SRC_HDR)
 	@mkdir -p $(dir $@)
 	$(CC) $(ALLCFLAGS) -c $< -o $@
+
+# netcdf.c alone carries the commit; rebuilt when it changes
+$(BUILD)/obj/output/netcdf.o: src/output/netcdf.c $(SRC_HDR) $(BUILD)/commit
+	@mkdir -p $(dir $@)
+	$(CC) $(ALLCFLAGS) -DRC_COMMIT='"$(RC_COMMIT)"' -c $< -o $@
+
+$(BUILD)/commit: FORCE
+	@mkdir -p $(BUILD)
+	@echo '$(RC_COMMIT)' | cmp -s - $@ || echo '$(RC_COMMIT)' > $@
+
+FORCE:
 
 $(BUILD)/tobj/%.o: tests/%.c $(wildcard tests/*.h tests/*.def) $(SRC_HDR)
 	@mkdir -p $(dir $@)
@@ -50,6 +66,11 @@ $(BIN): $(BUILD)/obj/cli/main.o $(LIB)
 
 $(TESTBIN): $(TEST_OBJ) $(LIB)
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(LDLIBS)
+
+# The fuzz target without libFuzzer: replays fuzz/regressions/ and the seeds
+# under make check (fuzz/README.md).
+$(REPLAY): fuzz/replay.c fuzz/fuzz_deck.c $(LIB)
+	$(CC) $(ALLCFLAGS) -o $@ fuzz/replay.c fuzz/fuzz_deck.c $(LIB) $(LDLIBS)
 
 # Unit tests, then the fast validation problems; one closing tally line.
 check: deps
@@ -72,11 +93,19 @@ demo: deps
 	/usr/bin/python3 scripts/plot.py out/demo.nc out/demo
 	@echo "results: out/demo.nc, plots: out/demo_*.png"
 
-# AddressSanitizer + UndefinedBehaviorSanitizer build, unit tests and demo case.
+# AddressSanitizer + UndefinedBehaviorSanitizer build: unit tests, the malformed
+# decks, the fuzz regressions and seeds, the demo case.
 asan: deps
 	@$(MAKE) --no-print-directory BUILD=build-asan OPT=-O1 \
 	    CFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" all
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 build-asan/run_tests
+	@# every error path of the catalogue and the fuzz inputs, leaks included
+	ASAN_OPTIONS=detect_leaks=1 bash tests/malformed_test.sh build-asan/ricochet > build-asan/malformed.log; \
+	    grep '^FAIL ' build-asan/malformed.log; \
+	    echo "malformed decks under ASan: $$(grep -c '^PASS ' build-asan/malformed.log) passed"; \
+	    ! grep -q '^FAIL ' build-asan/malformed.log
+	ASAN_OPTIONS=detect_leaks=1 build-asan/fuzz_replay fuzz/regressions/*
+	ASAN_OPTIONS=detect_leaks=1 build-asan/fuzz_replay -q fuzz/corpus/*
 	@mkdir -p out
 	ASAN_OPTIONS=detect_leaks=1 build-asan/ricochet run cases/demo_sphere_drop.rad -o out/asan_demo.nc
 	@# every command-line path, failures included (a leak or error exits 9)
@@ -89,9 +118,23 @@ valgrind: all
 	valgrind --error-exitcode=9 --leak-check=full --errors-for-leak-kinds=definite \
 	    $(BIN) run cases/demo_sphere_drop.rad -o out/valgrind_demo.nc
 	@# every command-line path, failures included (a leak or error exits 9)
-	RICOCHET_WRAP="valgrind -q --error-exitcode=9 --leak-check=full --errors-for-leak-kinds=definite" \
+	RICOCHET_DELAY=15 RICOCHET_WRAP="valgrind -q --error-exitcode=9 --leak-check=full --errors-for-leak-kinds=definite" \
 	    bash tests/cli_test.sh $(BIN) > out/valgrind_cli.log 2>&1; \
 	    cat out/valgrind_cli.log; ! grep -q '^FAIL ' out/valgrind_cli.log
+
+# libFuzzer on the reader and compiler for FUZZ_SECONDS (default 60) with
+# clang, ASan and UBSan, in build-fuzz; fails when it finds a crash, leak or
+# hang (fuzz/README.md). clang 14 has no -fcx-limited-range: full-range
+# complex arithmetic there.
+FUZZ_CFLAGS := -O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer \
+               -fno-sanitize-recover=all
+fuzz:
+	@bash scripts/install-deps.sh fuzz
+	@$(MAKE) --no-print-directory BUILD=build-fuzz CC=clang CXFLAGS= CFLAGS="$(FUZZ_CFLAGS)" \
+	    build-fuzz/libricochet.a
+	clang $(CSTD) $(WARN) -Iinclude $(FUZZ_CFLAGS) -fsanitize=fuzzer -o build-fuzz/fuzz_deck \
+	    fuzz/fuzz_deck.c build-fuzz/libricochet.a $(LDLIBS)
+	@bash fuzz/run.sh build-fuzz $(FUZZ_SECONDS)
 
 bench: deps
 	@$(MAKE) --no-print-directory all
@@ -104,4 +147,4 @@ install: $(BIN) $(LIB)
 	install -m 644 include/ricochet/*.h $(DESTDIR)$(PREFIX)/include/ricochet/
 
 clean:
-	rm -rf build build-asan out
+	rm -rf build build-asan build-fuzz out

@@ -20,6 +20,28 @@ cat "$log"
 pass=$((pass + $(grep -c '^PASS ' "$log")))
 fail=$((fail + $(grep -c '^FAIL ' "$log")))
 
+# malformed decks: exit 2 and a message naming file:line, card and field
+bash tests/malformed_test.sh "$build/ricochet" > "$log" 2>&1
+grep -E '^(PASS|FAIL) ' "$log" | grep -v '^PASS ' ; echo "malformed decks: $(grep -c '^PASS ' "$log") passed, $(grep -c '^FAIL ' "$log") failed"
+pass=$((pass + $(grep -c '^PASS ' "$log")))
+fail=$((fail + $(grep -c '^FAIL ' "$log")))
+[ "$(grep -c '^PASS ' "$log")" -gt 100 ] || { echo "FAIL malformed: the catalogue ran fewer than 100 decks"; fail=$((fail + 1)); }
+
+# fuzz regressions (every crash or hang input the fuzzer found) and the
+# seed corpus, replayed through the reader and compiler (fuzz/README.md)
+if [ -x "$build"/fuzz_replay ]; then
+    "$build"/fuzz_replay fuzz/regressions/* > "$log" 2>&1
+    "$build"/fuzz_replay -q fuzz/corpus/* >> "$log" 2>&1
+else echo "FAIL fuzz: $build/fuzz_replay is missing" > "$log"; fi
+# field sweep, one variant in 50 (fuzz/sweep.py): hostile values in every field
+if /usr/bin/python3 fuzz/sweep.py --every 50 --replay "$build"/fuzz_replay --out "$build"/sweep-failures > "$log.sweep" 2>&1; then
+    echo "PASS fuzz.sweep: $(tail -n 1 "$log.sweep")" >> "$log"
+else echo "FAIL fuzz.sweep: $(tail -n 1 "$log.sweep")" >> "$log"; fi
+rm -f "$log.sweep"
+cat "$log"
+pass=$((pass + $(grep -c '^PASS ' "$log")))
+fail=$((fail + $(grep -c '^FAIL ' "$log")))
+
 # validation problems: each check.py prints PASS/FAIL lines; every problem
 # runs twice, first with the solver settings of its decks, then at ricochet's
 # default settings (RICOCHET_VAL_SOLVER=default: the /SOLVER cards removed,

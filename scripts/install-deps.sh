@@ -1,9 +1,16 @@
 #!/usr/bin/env bash
 # Install the Debian 12 packages ricochet needs, only those missing.
 # Idempotent: does nothing (and needs no privileges) when all are present.
+#   scripts/install-deps.sh        build, tests, plots
+#   scripts/install-deps.sh fuzz   the same, and clang with libFuzzer (make fuzz)
 set -euo pipefail
 PKGS=(gcc make libsundials-dev libsuitesparse-dev libgsl-dev libnetcdf-dev netcdf-bin
-      python3 python3-numpy python3-scipy python3-netcdf4 python3-matplotlib)
+      python3 python3-numpy python3-scipy python3-netcdf4 python3-matplotlib
+      # tests only: reading the results with xarray, the ParaView export read
+      # back and rendered off screen with VTK (xvfb: a display for it)
+      python3-xarray python3-vtk9 xvfb xauth)
+# clang 14 and its runtime libraries (libFuzzer, ASan, UBSan)
+if [ "${1:-}" = fuzz ]; then PKGS+=(clang libclang-rt-14-dev); fi
 missing=()
 for p in "${PKGS[@]}"; do
     if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

@@ -4,9 +4,11 @@
     python3 scripts/plot.py OUT.nc [PREFIX]
 
 writes PREFIX_trajectory.png (positions of the free bodies vs time),
-PREFIX_force.png (normal force vs time and force-penetration loops, events
-marked; only when the model has contact interfaces) and PREFIX_energy.png
-(every energy_* variable vs time), and prints the names of the files written.
+PREFIX_force.png (normal force vs time with the impacts shaded and their
+peaks from the impacts table, the events summarised by kind, the first,
+largest and last impacts enlarged, force-penetration loops; only when the
+model has contact interfaces) and PREFIX_energy.png (the energy_* variables
+vs time, the dissipated energies in a panel of their own), and prints the names of the files written.
 PREFIX defaults to OUT.nc without its extension. Labels and units come from
 the file's attributes. A file marked incomplete is plotted with a warning.
 
@@ -43,7 +45,13 @@ def values(ds, name):
 
 
 def units(ds, name):
-    return getattr(ds.variables[name], "units", "?")
+    """The units of a variable; of the time axis without its reference date
+    ("seconds since ..." -> "s")."""
+    u = getattr(ds.variables[name], "units", "?")
+    if " since " in u:
+        u = u.split(" since ")[0]
+        u = {"seconds": "s"}.get(u, u)
+    return u
 
 
 def label(ds, name, text=None):
@@ -57,10 +65,6 @@ def title(ds, what):
     if getattr(ds, "complete", "no") != "yes":
         what += f" ({getattr(ds, 'status', 'incomplete')})"
     return f"{run}: {what}"
-
-
-def event_times(ds):
-    return values(ds, "event_time") if "event_time" in ds.variables else np.array([])
 
 
 def save(fig, path, written):
@@ -98,64 +102,155 @@ def plot_trajectory(ds, prefix, written):
     save(fig, f"{prefix}_trajectory.png", written)
 
 
+DISSIPATION = ("energy_damping", "energy_hysteresis", "energy_friction", "energy_coupling_damping")
+ZOOMS = 3  # impacts drawn enlarged
+
+
+def impacts(ds):
+    """Rows of the impacts table as dicts (empty for files without one)."""
+    if "impact_close_time" not in ds.variables or len(ds.dimensions.get("impact", [])) == 0:
+        return []
+    cols = {n[len("impact_"):]: values(ds, n) for n in ds.variables if n.startswith("impact_")}
+    return [{k: v[r] for k, v in cols.items()} for r in range(len(cols["close_time"]))]
+
+
+def event_summary(ds):
+    """'kind count, ...' of the events table, most frequent first."""
+    if "event_kind" not in ds.variables or len(ds.dimensions["event"]) == 0:
+        return "no events"
+    kinds, counts = np.unique(np.asarray(ds.variables["event_kind"][:], dtype=str), return_counts=True)
+    order = np.argsort(-counts)
+    return "events: " + ", ".join(f"{kinds[k]} {counts[k]}" for k in order)
+
+
 def plot_force(ds, prefix, written):
-    """Normal force vs time and vs penetration for up to MAX_CURVES interfaces."""
+    """Normal force against time (impacts shaded, their peaks from the
+    impacts table marked, events summarised in one line instead of one line
+    each), the first, largest and last impacts enlarged, and the
+    force-penetration loops."""
     if "inter_force_normal" not in ds.variables:
         print("plot.py: no contact interfaces, no force plot")
         return
     t = values(ds, "time")
     f = values(ds, "inter_force_normal")  # (time, inter)
     p = values(ds, "inter_penetration")
-    ids = ds.variables["inter_id"][:]
+    ids = list(ds.variables["inter_id"][:])
     at_event = values(ds, "at_event") == 1
-    fig, (ax_t, ax_p) = plt.subplots(1, 2, figsize=(12, 4.8))
+    rows = impacts(ds)
+    fig = plt.figure(figsize=(13, 8))
+    gs = fig.add_gridspec(2, 3, height_ratios=[1.15, 1])
+    ax_t = fig.add_subplot(gs[0, :2])
+    ax_p = fig.add_subplot(gs[0, 2])
+    colors = {}
     for i in range(min(len(ids), MAX_CURVES)):
         name = f"/INTER {ids[i]}"
-        line, = ax_t.plot(t, f[:, i], label=name)
-        # the loops: only records in the contact zone (P >= 0); separated
-        # stretches are masked so that the loops are not joined across flights
-        pz = np.where(p[:, i] >= 0, p[:, i], np.nan)
-        ax_p.plot(pz, np.where(p[:, i] >= 0, f[:, i], np.nan), color=line.get_color(), label=name)
-        sel = at_event & (p[:, i] >= 0)
-        ax_p.plot(p[sel, i], f[sel, i], "o", ms=3, color=line.get_color())
-    # events: vertical lines in time, dots on the loops (records at events)
-    for k, te in enumerate(event_times(ds)):
-        ax_t.axvline(te, color="grey", ls=":", lw=0.8, label="events" if k == 0 else None)
+        line, = ax_t.plot(t, f[:, i], lw=1, label=name)
+        colors[ids[i]] = line.get_color()
+        # loops: only records in the contact zone (P >= 0), flights masked
+        inz = p[:, i] >= 0
+        ax_p.plot(np.where(inz, p[:, i], np.nan), np.where(inz, f[:, i], np.nan), color=line.get_color(),
+                  lw=1, label=name)
+        sel = at_event & inz
+        ax_p.plot(p[sel, i], f[sel, i], "o", ms=2.5, color=line.get_color())
+    for k, r in enumerate(rows):
+        end = r["open_time"] if np.isfinite(r["open_time"]) else t[-1]
+        ax_t.axvspan(r["close_time"], end, color=colors.get(int(r["inter"]), "grey"), alpha=0.15, lw=0)
+        ax_t.plot(r["peak_force_time"], r["peak_force"], "v", ms=5, color="black",
+                  label="impact peaks (every step)" if k == 0 else None)
     ax_t.set_xlabel(label(ds, "time"))
     ax_t.set_ylabel(label(ds, "inter_force_normal"))
-    ax_t.set_title(title(ds, "normal force"))
+    ax_t.set_title(title(ds, f"normal force, {len(rows)} impacts (shaded)"))
+    summary = event_summary(ds)
+    if len(summary) > 150:
+        summary = summary[:147] + "..."
+    ax_t.text(0.01, 0.98, summary, transform=ax_t.transAxes, va="top", fontsize="x-small",
+              bbox=dict(boxstyle="round", fc="white", alpha=0.8))
     ax_p.set_xlabel(label(ds, "inter_penetration"))
     ax_p.set_ylabel(label(ds, "inter_force_normal"))
-    ax_p.set_title("force-penetration in contact (dots: records at events)")
+    ax_p.set_title("force-penetration in contact\n(dots: records at events)", fontsize="medium")
+    ax_p.ticklabel_format(axis="x", style="sci", scilimits=(-2, 3))
     for ax in (ax_t, ax_p):
         ax.grid(True, alpha=0.3)
-        ax.legend(fontsize="small")
+        ax.legend(fontsize="small", loc="upper right")
+    # enlarged impacts: the first, the largest peak force, the last
+    picks = []
+    if rows:
+        big = int(np.nanargmax([r["peak_force"] for r in rows]))
+        for k in (0, big, len(rows) // 2, len(rows) - 1):
+            if k not in picks:
+                picks.append(k)
+    picks = sorted(picks[:ZOOMS])
+    for z in range(ZOOMS):
+        ax = fig.add_subplot(gs[1, z])
+        if z >= len(picks):
+            ax.axis("off")
+            if z == 0:
+                ax.text(0.5, 0.5, "no impacts", ha="center", va="center")
+            continue
+        r = rows[picks[z]]
+        i = ids.index(int(r["inter"])) if int(r["inter"]) in ids else 0
+        t0 = r["close_time"]
+        dur = r["duration"] if np.isfinite(r["duration"]) else (t[-1] - t0)
+        lo, hi = t0 - 0.25 * dur, t0 + 1.25 * dur
+        sel = (t >= lo) & (t <= hi)
+        scale, unit = (1e3, "ms") if dur < 0.1 else (1.0, "s")
+        ax.plot((t[sel] - t0) * scale, f[sel, i], ".-", ms=3, lw=1, color=colors.get(int(r["inter"]), None),
+                label=f"records ({sel.sum()})")
+        ax.plot((r["peak_force_time"] - t0) * scale, r["peak_force"], "v", color="black",
+                label=f"peak {r['peak_force']:.4g}")
+        ax.set_xlim((lo - t0) * scale, (hi - t0) * scale)
+        ax.set_xlabel(f"time since closing at {t0:.6g} s [{unit}]")
+        if z == 0:
+            ax.set_ylabel(label(ds, "inter_force_normal"))
+        e = r.get("restitution", np.nan)
+        ax.set_title(f"impact {picks[z] + 1}: /INTER {int(r['inter'])}, {dur * scale:.3g} {unit}"
+                     + (f", e = {e:.3f}" if np.isfinite(e) else ""), fontsize="medium")
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize="x-small", loc="upper right")
     save(fig, f"{prefix}_force.png", written)
 
 
 def plot_energy(ds, prefix, written):
-    """The energy_* time series that are not identically zero; the total
-    (constant in exact arithmetic) drawn thick and black."""
+    """Top: the energy_* series that are not identically zero except the
+    dissipations, the total (constant in exact arithmetic) thick and black.
+    Bottom: the dissipated energies (damping, hysteresis, friction, coupling
+    dampers) and their sum, on their own scale."""
     t = values(ds, "time")
     names = [n for n, v in ds.variables.items()
              if n.startswith("energy_") and v.dimensions == ("time",)
              and np.any(values(ds, n) != 0)]
-    fig, ax = plt.subplots(figsize=(10, 4.8))
+    diss = [n for n in names if n in DISSIPATION]
+    rest = [n for n in names if n not in DISSIPATION]
+    fig, (ax, ax_d) = plt.subplots(2, 1, sharex=True, figsize=(10, 7.5), height_ratios=[1.4, 1])
     colors = plt.cm.tab10(np.linspace(0, 1, 10))
     k = 0
-    for n in names:
+    for n in rest:
         short = n[len("energy_"):]
         if n == "energy_total":
             ax.plot(t, values(ds, n), color="black", lw=2, label="total")
         else:
             ax.plot(t, values(ds, n), color=colors[k % 10], label=short)
             k += 1
-    ax.set_xlabel(label(ds, "time"))
-    ax.set_ylabel(f"energy [{units(ds, names[0])}]" if names else "energy")
+    unit = units(ds, names[0]) if names else "J"
+    ax.set_ylabel(f"energy [{unit}]")
     ax.set_title(title(ds, "energy ledger (series that are not all zero)"))
-    ax.grid(True, alpha=0.3)
-    if names:
-        ax.legend(fontsize="small", loc="center left", bbox_to_anchor=(1.01, 0.5))
+    total = np.zeros_like(t)
+    for n in diss:
+        v = values(ds, n)
+        total = total + v
+        ax_d.plot(t, v, color=colors[k % 10], label=n[len("energy_"):])
+        k += 1
+    if len(diss) > 1:
+        ax_d.plot(t, total, color="black", lw=1.5, ls="--", label="dissipated, total")
+    if not diss:
+        ax_d.text(0.5, 0.5, "nothing dissipated", ha="center", va="center", transform=ax_d.transAxes)
+    ax_d.set_ylabel(f"dissipated [{unit}]")
+    ax_d.set_title("dissipation (cumulative)", fontsize="medium")
+    ax_d.set_xlabel(label(ds, "time"))
+    for a in (ax, ax_d):
+        a.grid(True, alpha=0.3)
+        if a.get_legend_handles_labels()[0]:
+            a.legend(fontsize="small", loc="center left", bbox_to_anchor=(1.01, 0.5))
     fig.tight_layout()
     save(fig, f"{prefix}_energy.png", written)
 

@@ -4,6 +4,9 @@
 set -u
 bin=${1:-build/ricochet}
 tmp=$(mktemp -d)
+# RICOCHET_DELAY: seconds a run is given before it is interrupted or its
+# disk filled (1; more under valgrind, whose start takes seconds)
+delay=${RICOCHET_DELAY:-1}
 # RICOCHET_WRAP: a command to run the program under (valgrind, for the
 # failure paths); exec keeps the process id, so the signal tests still work
 if [ -n "${RICOCHET_WRAP:-}" ]; then
@@ -84,7 +87,7 @@ for sig in INT TERM; do
     # process group, and a second signal kills at once by design)
     "$bin" run "$tmp/long.rad" -o "$tmp/long_$sig.nc" -q > "$tmp/e" 2>&1 &
     pid=$!
-    sleep 2
+    sleep $((2 * delay))
     kill -s $sig $pid
     wait $pid; rc=$?
     if [ -e "$tmp/long_$sig.nc" ] && ncdump -h "$tmp/long_$sig.nc" | grep -q ':complete = "no"' &&
@@ -119,7 +122,7 @@ if [ "$(id -u)" -eq 0 ] && mount -t tmpfs -o size=16k tmpfs "$tmp/fs" 2>/dev/nul
     # race between ricochet's check of the room and HDF5's write: then the
     # write fails, the handle is abandoned, exit 4 naming the file, no crash
     mount -t tmpfs -o size=8m tmpfs "$tmp/fs"
-    (sleep 1; dd if=/dev/zero of="$tmp/fs/fill" bs=64k > /dev/null 2>&1) &
+    (sleep $delay; dd if=/dev/zero of="$tmp/fs/fill" bs=64k > /dev/null 2>&1) &
     filler=$!
     "$bin" run "$tmp/long.rad" -o "$tmp/fs/out.nc" -q > "$tmp/e" 2>&1; rc=$?
     wait $filler
@@ -133,7 +136,7 @@ else
     echo "SKIP cli.disk_full: needs root and a tmpfs mount"
 fi
 mkdir -p "$tmp/gone/sub"
-(sleep 1; rm -rf "$tmp/gone/sub") &
+(sleep $delay; rm -rf "$tmp/gone/sub") &
 remover=$!
 "$bin" run "$tmp/long.rad" -o "$tmp/gone/sub/out.nc" -q > "$tmp/e" 2>&1; rc=$?
 wait $remover
@@ -145,3 +148,51 @@ else expect directory_removed 4 99 "(exit $rc: $(head -c 200 "$tmp/e"))"; fi
 if cmp -s <(ncdump -v body_position "$tmp/a.nc" | sed -n '/data:/,$p') <(ncdump -v body_position "$tmp/b.nc" | sed -n '/data:/,$p'); then
     echo "PASS cli.determinism: two runs of the demo give identical body_position"
 else echo "FAIL cli.determinism: runs differ"; fi
+
+# export-vtk: a ParaView series of the demo's first bounces, read back with
+# VTK (python3-vtk9) and compared with the results file; one record
+# rendered off screen (xvfb-run when there is no display)
+sed 's/^                   1              0.0001$/                 0.3               0.001/' "$demo" > "$tmp/short.rad"
+"$bin" run "$tmp/short.rad" -o "$tmp/short.nc" -q > "$tmp/e" 2>&1
+"$bin" export-vtk "$tmp/short.nc" -o "$tmp/vtk" > "$tmp/x" 2>&1; rc=$?
+n=$(ls "$tmp/vtk" 2>/dev/null | grep -c '\.vtp$')
+if [ -f "$tmp/vtk/short.pvd" ] && [ "$n" -gt 0 ]; then expect export_vtk 0 $rc "($n .vtp files; $(head -c 120 "$tmp/x"))"
+else expect export_vtk 0 99 "(exit $rc: $(head -c 200 "$tmp/x"))"; fi
+"$bin" export-vtk "$tmp/none.nc" > "$tmp/x" 2>&1; rc=$?
+grep -q "none.nc" "$tmp/x" && expect export_vtk_missing 4 $rc "($(head -c 120 "$tmp/x"))" || expect export_vtk_missing 4 99 "(no message)"
+printf 'netcdf x {\ndimensions:\n  n = 1 ;\nvariables:\n  int n(n) ;\n}\n' | ncgen -4 -o "$tmp/other.nc" 2>/dev/null
+"$bin" export-vtk "$tmp/other.nc" -o "$tmp/vtk2" > "$tmp/x" 2>&1; rc=$?
+grep -q "not a ricochet results file" "$tmp/x" && expect export_vtk_not_results 2 $rc "($(head -c 120 "$tmp/x"))" || expect export_vtk_not_results 2 99 "($(head -c 120 "$tmp/x"))"
+"$bin" export-vtk > /dev/null 2>&1; expect export_vtk_usage 2 $? ""
+if /usr/bin/python3 -c 'import vtk, netCDF4' 2>/dev/null; then
+    render=""
+    if [ -n "${DISPLAY:-}" ]; then render="$tmp/frame.png"; pre=""
+    elif command -v xvfb-run > /dev/null; then render="$tmp/frame.png"; pre="xvfb-run -a"
+    else echo "SKIP vtk.render: no display and no xvfb-run (package xvfb)"; pre=""; fi
+    $pre /usr/bin/python3 tests/vtk_readback.py "$tmp/short.nc" "$tmp/vtk" $render 2>&1 | grep -E '^(PASS|FAIL|SKIP) |Error'
+else
+    echo "SKIP vtk.readback: python3-vtk9 not installed (scripts/install-deps.sh installs it)"
+fi
+
+# the results file in xarray: ids as coordinates, the CF time axis decoded,
+# plain seconds without decoding
+if /usr/bin/python3 -c 'import xarray' 2>/dev/null; then
+    /usr/bin/python3 - "$tmp/short.nc" <<'PY'
+import sys, numpy as np, xarray as xr, netCDF4
+f = sys.argv[1]
+ds = xr.open_dataset(f)
+z = ds["body_position"].sel(body=1, vec3=2) if "vec3" in ds.coords else ds["body_position"].sel(body=1)[:, 2]
+raw = netCDF4.Dataset(f)["time"][:]
+secs = (ds["time"] - ds["time"][0]) / np.timedelta64(1, "s")
+ok = (ds["time"].dtype.kind == "M" and np.allclose(secs.values, raw - raw[0], rtol=0, atol=1e-9)
+      and float(z[0]) == float(netCDF4.Dataset(f)["body_position"][0, 0, 2])
+      and int(ds["impact_inter"].sel(impact=0) if "impact" in ds.coords else ds["impact_inter"][0]) == 1)
+plain = xr.open_dataset(f, decode_times=False)["time"].values
+ok = ok and np.array_equal(plain, raw)
+print(("PASS" if ok else "FAIL") + " cli.xarray: open_dataset decodes time as datetime64 (seconds since the start "
+      f"within 1 ns), .sel(body=1) by /RBODY id, decode_times=False gives the stored seconds; "
+      f"{ds.sizes['impact']} impacts")
+PY
+else
+    echo "SKIP cli.xarray: python3-xarray not installed (scripts/install-deps.sh installs it)"
+fi

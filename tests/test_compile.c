@@ -181,9 +181,9 @@ static void test_compile_errors_physics(void)
                          "field Trarot", "partial rotation lock");
     /* absurd masses and inertias: below the smallest normal number */
     EXPECT_COMPILE_ERROR(deck(3, "/RBODY/1\nball\n1,,,,1e-320\n0.001,0.001,0.001\n0,0,0\n", NULL), "card /RBODY/1",
-                         "field Mass", "normal number");
+                         "field Mass", "normal double");
     EXPECT_COMPILE_ERROR(deck(3, "/RBODY/1\nball\n1,,,3,1.0\n0.001,1e-315,0.001\n0,0,0\n", NULL), "card /RBODY/1",
-                         "field Jyy", "moment of inertia");
+                         "field Jyy", "normal double");
     /* two bodies on one main node */
     EXPECT_COMPILE_ERROR(deck(-1, NULL, "/RBODY/7\nsecond\n1,,,,2.0\n0.002,0.002,0.002\n0,0,0\n"), "card /RBODY/7",
                          "field node_ID", "already the main node of /RBODY/1");

@@ -140,10 +140,64 @@ static void test_messages_progress(void)
     ENSURE(strstr(text, "ricochet: long stage: done in 1.") != NULL);
 }
 
+/* The restitution of a linear contact that cannot pull, printed by
+ * `ricochet check`: no damping gives e = 1 after half a period; zeta =
+ * 1/sqrt(2) leaves at maximum compression (theta = pi/2) with
+ * e = exp(-pi/2); zeta = 0.1 gives the value of the Kelvin-Voigt contact
+ * with a non-adhesive force (e = 0.744079, Schwager and Poschel 2007),
+ * which validation/spring_dashpot also measures. */
+static void test_messages_linear_restitution(void)
+{
+    const double pi = 3.14159265358979323846;
+    double tau;
+    ENSURE_NEAR(rc_linear_restitution(0.0, &tau), 1.0, 1e-15, 0);
+    ENSURE_NEAR(tau, pi, 1e-15, 0);
+    ENSURE_NEAR(rc_linear_restitution(1.0 / sqrt(2.0), &tau), exp(-pi / 2), 1e-12, 0);
+    ENSURE_NEAR(tau, pi / sqrt(2.0), 1e-12, 0);
+    ENSURE_NEAR(rc_linear_restitution(0.1, &tau), 0.744079, 1e-6, 0);
+    ENSURE_NEAR(tau / 1000.0, 2.956075e-3, 1e-6, 0); /* k = 1e6 N/m, m = 1 kg */
+    /* critical damping: x = tau e^-tau leaves at tau = 2 with e^-2; the
+     * branches meet there */
+    ENSURE_NEAR(rc_linear_restitution(1.0, &tau), exp(-2.0), 1e-15, 0);
+    ENSURE_NEAR(tau, 2.0, 1e-15, 0);
+    double t1, t2;
+    ENSURE_NEAR(rc_linear_restitution(1.0 - 1e-7, &t1), exp(-2.0), 1e-6, 0);
+    ENSURE_NEAR(rc_linear_restitution(1.0 + 1e-7, &t2), exp(-2.0), 1e-6, 0);
+    ENSURE_NEAR(t1, 2.0, 1e-5, 0);
+    ENSURE_NEAR(t2, 2.0, 1e-5, 0);
+    /* overdamped, against a direct evaluation of x(tau) = (e^(a tau) -
+     * e^(b tau))/(a - b): the force x + 2 zeta x' vanishes at tau */
+    const double z = 2.0, q = sqrt(3.0), a = -z + q, b = -z - q;
+    const double e = rc_linear_restitution(z, &tau);
+    const double x = (exp(a * tau) - exp(b * tau)) / (a - b), xd = (a * exp(a * tau) - b * exp(b * tau)) / (a - b);
+    ENSURE(fabs(x + 2 * z * xd) < 1e-15);
+    ENSURE_NEAR(e, -xd, 1e-15, 0);
+    ENSURE(e > 0 && e < exp(-2.0));
+    ENSURE(isnan(rc_linear_restitution(-1.0, &tau)) && isnan(tau));
+}
+
+/* A restitution asked (TYPE6 e_target) replaces Visc: Visc 0 required,
+ * a value in (0, 1], a linear load curve; the Visc derived gives it. */
+static void test_messages_restitution_asked(void)
+{
+    static char msg[8192];
+    const char *l6 = "       148.710194195         0         0\n";
+    ENSURE(compile_variant(l6, "       148.710194195         0         0                                     0.5\n", msg,
+                           sizeof msg) == RC_EINPUT);
+    ENSURE(strstr(msg, "card /INTER/TYPE6/1, field e_target") && strstr(msg, "Visc = 0"));
+    ENSURE(compile_variant(l6, "                   0         0         0                                     1.5\n", msg,
+                           sizeof msg) == RC_EINPUT);
+    ENSURE(strstr(msg, "field e_target") && strstr(msg, "(0, 1]"));
+    ENSURE(compile_variant(l6, "                   0         0         0                                     0.5\n", msg,
+                           sizeof msg) == RC_OK);
+}
+
 void suite_messages(void);
 void suite_messages(void)
 {
     RUN_TEST(test_messages_state_names);
     RUN_TEST(test_messages_unresolvable_scales);
     RUN_TEST(test_messages_progress);
+    RUN_TEST(test_messages_linear_restitution);
+    RUN_TEST(test_messages_restitution_asked);
 }

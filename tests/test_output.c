@@ -3,6 +3,10 @@
 #include "harness.h"
 #include "base/error.h"
 #include "output/output.h"
+#include "base/sha256.h"
+#include "ricochet/ricochet.h"
+#include "model/model.h"
+#include "solver/impacts.h"
 
 #include <math.h>
 #include <netcdf.h>
@@ -215,7 +219,7 @@ static void test_output_roundtrip(void)
     ENSURE(write_frames(o, NF, 1) == 0);
     ENSURE(rc_output_event(o, 0.0371, "contact_close", "/INTER/TYPE6/3", &e) == RC_OK);
     ENSURE(rc_output_event(o, 0.1113, "contact_open", "/INTER/TYPE6/3", &e) == RC_OK);
-    rc_stats st = {12345, 23456, 345, 456, 5678, 67, 78, 8901, 2, 1, 0.1855, 0.0421, 3.7e-9};
+    rc_stats st = {12345, 23456, 345, 456, 5678, 67, 78, 8901, 2, 1, 0.1855, 0.0421, 3.7e-9, .impacts = 0};
     ENSURE(rc_output_close(o, &st, 1, NULL, &e) == RC_OK);
 
     int ncid;
@@ -276,7 +280,9 @@ static void test_output_roundtrip(void)
     ENSURE(ids[0] == 17 && ids[1] == 4 && fixed[0] == 0 && fixed[1] == 1 && iid == 3);
     ENSURE(string_is(ncid, "inter_type", 0, "TYPE6"));
     /* units: the expected ones on a few, present on all */
-    ENSURE(att_text(ncid, var_id(ncid, "time"), "units", buf, sizeof buf) && !strcmp(buf, "s"));
+    ENSURE(att_text(ncid, var_id(ncid, "time"), "units", buf, sizeof buf) &&
+           !strcmp(buf, "seconds since 1970-01-01 00:00:00"));
+    ENSURE(att_text(ncid, var_id(ncid, "event_time"), "units", buf, sizeof buf) && !strcmp(buf, "s"));
     ENSURE(att_text(ncid, var_id(ncid, "time"), "standard_name", buf, sizeof buf) &&
            !strcmp(buf, "time"));
     ENSURE(att_text(ncid, var_id(ncid, "body_velocity"), "units", buf, sizeof buf) &&
@@ -451,7 +457,7 @@ static void test_output_units_follow_case(void)
     int ncid;
     ENSURE(nc_open(path, NC_NOWRITE, &ncid) == NC_NOERR);
     static const char *const want[][2] = {
-        {"time", "ms"}, {"body_position", "mm"}, {"body_velocity", "mm ms-1"},
+        {"time", "ms since 1970-01-01 00:00:00"}, {"event_time", "ms"}, {"body_position", "mm"}, {"body_velocity", "mm ms-1"},
         {"body_angular_velocity", "rad ms-1"}, {"inter_force_normal", "g mm ms-2"},
         {"energy_kinetic", "g mm2 ms-2"}, {"body_quaternion", "1"}};
     for (size_t i = 0; i < sizeof want / sizeof want[0]; i++)
@@ -496,6 +502,249 @@ static void test_output_open_bad_name_removes_file(void)
     ENSURE(access(path, F_OK) != 0);
 }
 
+/* SHA-256 against the FIPS 180-4 examples, and of a file. */
+static void test_output_sha256_vectors(void)
+{
+    static const char *const want[4] = {
+        "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855",
+        "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad",
+        "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1",
+        "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0"};
+    char hex[65];
+    rc_sha256_hex("", 0, hex);
+    ENSURE(!strcmp(hex, want[0]));
+    rc_sha256_hex("abc", 3, hex);
+    ENSURE(!strcmp(hex, want[1]));
+    rc_sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq", 56, hex);
+    ENSURE(!strcmp(hex, want[2]));
+    char path[256];
+    tmp_path(path, sizeof path, "million_a");
+    FILE *f = fopen(path, "wb");
+    ENSURE(f != NULL);
+    if (!f) return;
+    for (int k = 0; k < 1000000; k++) fputc('a', f);
+    fclose(f);
+    ENSURE(rc_sha256_file(path, hex) == 0 && !strcmp(hex, want[3]));
+    ENSURE(rc_sha256_file("/nonexistent_rc_test_file", hex) == -1);
+    remove(path);
+}
+
+/* Coordinate variables (ids), the CF time axis, provenance attributes,
+ * solver settings, the surfaces and the impacts table. */
+static void test_output_coordinates_provenance(void)
+{
+    char path[256], deck[256], inc[256], buf[1024];
+    tmp_path(path, sizeof path, "coords");
+    tmp_path(deck, sizeof deck, "deck_abc");
+    tmp_path(inc, sizeof inc, "include_empty");
+    FILE *f = fopen(deck, "wb");
+    if (f) {
+        fputs("abc", f);
+        fclose(f);
+    }
+    f = fopen(inc, "wb");
+    if (f) fclose(f);
+    const char *files[2] = {deck, inc};
+    static const int surf_id[3] = {11, 12, 13}, surf_body[3] = {0, -1, 1}, inter_surf[2] = {0, 1};
+    static const char *const surf_kind[3] = {"SPHERE", "PLANE", "BOX"};
+    static const double spoint[9] = {0, 0, 0, 0, 0, -1, 0.1, 0.2, 0.3}, snormal[9] = {0, 0, 0, 0, 0, 1, 0, 0, 0};
+    static const double srad[3] = {0.05, 0, 0};
+    double sparam[3 * RC_OUT_SURF_NPARAM] = {0};
+    sparam[2 * RC_OUT_SURF_NPARAM + 0] = 0.5;
+    rc_output_meta meta = make_meta(NI);
+    meta.case_path = deck;
+    meta.nfile = 2;
+    meta.file = files;
+    meta.max_order = 4;
+    meta.max_steps = 12345;
+    meta.hmax = 0.25;
+    meta.h0 = 1e-7;
+    meta.t_end = 2.5;
+    meta.dt_out = 1e-3;
+    meta.tol_derived = "atol_position atol_velocity";
+    meta.sampling_note = "output interval 0.001 s samples a contact of ~0.0055 s with ~5 records";
+    meta.nsurf = 3;
+    meta.surf_id = surf_id;
+    meta.surf_kind = surf_kind;
+    meta.surf_body = surf_body;
+    meta.surf_point = spoint;
+    meta.surf_normal = snormal;
+    meta.surf_radius = srad;
+    meta.surf_param = sparam;
+    meta.inter_surf = inter_surf;
+    rc_output *o = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    ENSURE(rc_output_open(&o, path, &meta, &e) == RC_OK);
+    if (!o) return;
+    ENSURE(write_frames(o, NF, 1) == 0);
+    const rc_impact imp[2] = {{3, 0.1, 0.103, 0.003, 1.2e-3, 0.1015, 1275.0, 0.1014, 1.4, 1.12, 0.8, 0.356},
+                              {3, 0.3, NAN, NAN, 1e-5, 0.31, 10.0, 0.31, 0.01, NAN, NAN, NAN}};
+    ENSURE(rc_output_impacts(o, 2, imp, &e) == RC_OK);
+    ENSURE(rc_output_close(o, NULL, 1, NULL, &e) == RC_OK);
+
+    int ncid, ids[NB], iid, sid[3], sbody[3], isurf[2];
+    ENSURE(nc_open(path, NC_NOWRITE, &ncid) == NC_NOERR);
+    /* coordinate variables: named as their dimension, holding the ids */
+    ENSURE(nc_get_var_int(ncid, var_id(ncid, "body"), ids) == NC_NOERR && ids[0] == 17 && ids[1] == 4);
+    ENSURE(nc_get_var_int(ncid, var_id(ncid, "inter"), &iid) == NC_NOERR && iid == 3);
+    int dimid = -1, vdim = -2;
+    ENSURE(nc_inq_dimid(ncid, "body", &dimid) == NC_NOERR && nc_inq_vardimid(ncid, var_id(ncid, "body"), &vdim) == NC_NOERR &&
+           vdim == dimid);
+    /* the CF time axis */
+    ENSURE(att_text(ncid, var_id(ncid, "time"), "units", buf, sizeof buf) &&
+           !strcmp(buf, "seconds since 1970-01-01 00:00:00"));
+    ENSURE(att_text(ncid, var_id(ncid, "time"), "calendar", buf, sizeof buf) && !strcmp(buf, "proleptic_gregorian"));
+    ENSURE(att_text(ncid, var_id(ncid, "time"), "axis", buf, sizeof buf) && !strcmp(buf, "T"));
+    /* provenance */
+    ENSURE(att_text(ncid, NC_GLOBAL, "command_line", buf, sizeof buf) && strstr(buf, "run_tests"));
+    ENSURE(att_text(ncid, NC_GLOBAL, "ricochet_version", buf, sizeof buf) && !strcmp(buf, rc_version()));
+    ENSURE(att_text(ncid, NC_GLOBAL, "ricochet_commit", buf, sizeof buf) && strlen(buf) > 0);
+    ENSURE(att_text(ncid, NC_GLOBAL, "case_sha256", buf, sizeof buf) &&
+           !strcmp(buf, "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad"));
+    char want[1024];
+    snprintf(want, sizeof want, "%s  %s\n%s  %s", "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad",
+             deck, "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855", inc);
+    ENSURE(att_text(ncid, NC_GLOBAL, "input_files_sha256", buf, sizeof buf) && !strcmp(buf, want));
+    /* solver settings */
+    long long ll = 0;
+    double dv = 0;
+    ENSURE(nc_get_att_longlong(ncid, NC_GLOBAL, "max_order", &ll) == NC_NOERR && ll == 4);
+    ENSURE(nc_get_att_longlong(ncid, NC_GLOBAL, "max_steps", &ll) == NC_NOERR && ll == 12345);
+    ENSURE(nc_get_att_double(ncid, NC_GLOBAL, "hmax", &dv) == NC_NOERR && dv == 0.25);
+    ENSURE(nc_get_att_double(ncid, NC_GLOBAL, "h0", &dv) == NC_NOERR && dv == 1e-7);
+    ENSURE(nc_get_att_double(ncid, NC_GLOBAL, "dt_out", &dv) == NC_NOERR && dv == 1e-3);
+    ENSURE(nc_get_att_double(ncid, NC_GLOBAL, "t_end", &dv) == NC_NOERR && dv == 2.5);
+    ENSURE(att_text(ncid, NC_GLOBAL, "tolerances_derived", buf, sizeof buf) &&
+           !strcmp(buf, "atol_position atol_velocity"));
+    ENSURE(att_text(ncid, NC_GLOBAL, "sampling_note", buf, sizeof buf) && strstr(buf, "~5 records"));
+    /* surfaces: ids, kinds, carrying body ids (-1 fixed in space), geometry */
+    ENSURE(dim_len(ncid, "surface") == 3 && dim_len(ncid, "surface_parameter") == RC_OUT_SURF_NPARAM);
+    ENSURE(nc_get_var_int(ncid, var_id(ncid, "surface"), sid) == NC_NOERR && sid[2] == 13);
+    ENSURE(nc_get_var_int(ncid, var_id(ncid, "surface_body"), sbody) == NC_NOERR && sbody[0] == 17 &&
+           sbody[1] == -1 && sbody[2] == 4);
+    ENSURE(string_is(ncid, "surface_kind", 2, "BOX"));
+    ENSURE(nc_get_var_int(ncid, var_id(ncid, "inter_surface"), isurf) == NC_NOERR && isurf[0] == 11 && isurf[1] == 12);
+    double r[3], pt[9], prm[3 * RC_OUT_SURF_NPARAM];
+    ENSURE(nc_get_var_double(ncid, var_id(ncid, "surface_radius"), r) == NC_NOERR && r[0] == 0.05);
+    ENSURE(nc_get_var_double(ncid, var_id(ncid, "surface_point"), pt) == NC_NOERR && pt[8] == 0.3);
+    ENSURE(nc_get_var_double(ncid, var_id(ncid, "surface_parameters"), prm) == NC_NOERR &&
+           prm[2 * RC_OUT_SURF_NPARAM] == 0.5);
+    ENSURE(att_text(ncid, var_id(ncid, "surface_point"), "units", buf, sizeof buf) && !strcmp(buf, "m"));
+    /* impacts table, with units */
+    ENSURE(dim_len(ncid, "impact") == 2);
+    double col[2];
+    int ii[2];
+    ENSURE(nc_get_var_int(ncid, var_id(ncid, "impact_inter"), ii) == NC_NOERR && ii[0] == 3 && ii[1] == 3);
+    ENSURE(nc_get_var_double(ncid, var_id(ncid, "impact_peak_force"), col) == NC_NOERR && col[0] == 1275.0);
+    ENSURE(nc_get_var_double(ncid, var_id(ncid, "impact_restitution"), col) == NC_NOERR && col[0] == 0.8 &&
+           isnan(col[1]));
+    ENSURE(att_text(ncid, var_id(ncid, "impact_peak_force"), "units", buf, sizeof buf) && !strcmp(buf, "N"));
+    ENSURE(att_text(ncid, var_id(ncid, "impact_energy_lost"), "units", buf, sizeof buf) && !strcmp(buf, "J"));
+    ENSURE(att_text(ncid, var_id(ncid, "impact_duration"), "units", buf, sizeof buf) && !strcmp(buf, "s"));
+    ENSURE(nc_close(ncid) == NC_NOERR);
+    remove(path);
+    remove(deck);
+    remove(inc);
+}
+
+/* Closed form of the demo's bounce: a 1 kg sphere reaching the plane at
+ * v0 = sqrt(2 g 0.1 m) on a linear spring-dashpot (k = 1e6 N/m, c =
+ * 148.710194195 N s/m) under gravity g, force clipped at zero:
+ *   P(t) = g/w^2 + e^(-s t) (A cos(wd t) + B sin(wd t)),  A = -g/w^2,
+ *   B = (v0 + s A)/wd, s = zeta w, wd = w sqrt(1 - zeta^2);
+ * the force k P + c P' stops at its zero t_r (the contact releases), then the
+ * sphere flies freely until P = 0. */
+typedef struct bounce { double w, s, wd, A, B, g, k, c; } bounce;
+static double bx(const bounce *b, double t) { return b->g / (b->w * b->w) + exp(-b->s * t) * (b->A * cos(b->wd * t) + b->B * sin(b->wd * t)); }
+static double bv(const bounce *b, double t)
+{
+    return exp(-b->s * t) * ((-b->s * b->A + b->wd * b->B) * cos(b->wd * t) + (-b->s * b->B - b->wd * b->A) * sin(b->wd * t));
+}
+static double bf(const bounce *b, double t) { return b->k * bx(b, t) + b->c * bv(b, t); }
+/* d F / d t = k P' + c P'' with P'' = g - F/m (m = 1) */
+static double bdf(const bounce *b, double t) { return b->k * bv(b, t) + b->c * (b->g - bf(b, t)); }
+/* Root of fn on [lo, hi] by bisection (a sign change there). */
+static double bisect(const bounce *b, double (*fn)(const bounce *, double), double lo, double hi)
+{
+    const double flo = fn(b, lo);
+    for (int k = 0; k < 200; k++) {
+        const double mid = 0.5 * (lo + hi), fm = fn(b, mid);
+        if ((fm > 0) == (flo > 0)) lo = mid;
+        else hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+static void test_output_impacts_demo_closed_form(void)
+{
+    char path[256];
+    tmp_path(path, sizeof path, "demo_impacts");
+    rc_case *c = NULL;
+    rc_model *m = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    ENSURE(rc_case_load("cases/demo_sphere_drop.rad", &c, &e) == RC_OK);
+    ENSURE(c && rc_model_compile(c, &m, &e) == RC_OK);
+    if (!m) {
+        rc_case_free(c);
+        return;
+    }
+    rc_run_options opt = {path, 0, 0.3, NULL, NULL};
+    rc_stats st;
+    ENSURE(rc_run(m, &opt, &st, &e) == RC_OK);
+    ENSURE(st.impacts >= 1);
+    /* closed form of the first impact */
+    const double g = 9.81, k = 1e6, cd = 148.710194195, v0 = sqrt(2 * g * 0.1);
+    bounce b = {sqrt(k), 0, 0, 0, 0, g, k, cd};
+    const double zeta = cd / (2 * sqrt(k));
+    b.s = zeta * b.w;
+    b.wd = b.w * sqrt(1 - zeta * zeta);
+    b.A = -g / k;
+    b.B = (v0 + b.s * b.A) / b.wd;
+    const double T = 3.14159265358979323846 / b.wd;
+    const double t_rel = bisect(&b, bf, 0.5 * T, 1.2 * T), t_pen = bisect(&b, bv, 0.2 * T, 0.8 * T);
+    const double t_fmax = bisect(&b, bdf, 1e-9, t_pen);
+    const double xr = bx(&b, t_rel), vr = bv(&b, t_rel);
+    const double tfly = (-vr - sqrt(vr * vr - 2 * g * xr)) / g, v_out = -(vr + g * tfly);
+    const rc_impact *r = &st.impact[0];
+    const double want[5] = {t_rel, bx(&b, t_pen), bf(&b, t_fmax), v_out, v_out / v0};
+    const double got[5] = {r->duration, r->pen_max, r->fn_max, r->v_out, r->restitution};
+    static const char *const name[5] = {"duration [s]", "max penetration [m]", "peak force [N]", "speed out [m/s]",
+                                        "restitution [-]"};
+    for (int q = 0; q < 5; q++) {
+        printf("    demo impact 1: %-20s ricochet %.7g, closed form %.7g, rel. diff %.1e\n", name[q], got[q], want[q],
+               fabs(got[q] / want[q] - 1));
+        ENSURE(fabs(got[q] / want[q] - 1) < 1e-4);
+    }
+    ENSURE(fabs(r->v_in / v0 - 1) < 1e-5); /* the free fall, integrated within the tolerances */
+    /* energy lost: the damping work; equals the kinetic energy lost less the
+     * gravity work over the penetration, within the tolerances */
+    ENSURE(fabs(r->energy_lost - 0.5 * (v0 * v0 - v_out * v_out)) < 1e-3 * 0.5 * v0 * v0);
+    /* the file has the same table */
+    int ncid;
+    double dur = 0;
+    size_t start[1] = {0};
+    ENSURE(nc_open(path, NC_NOWRITE, &ncid) == NC_NOERR);
+    ENSURE(dim_len(ncid, "impact") == (size_t)st.impacts);
+    ENSURE(nc_get_var1_double(ncid, var_id(ncid, "impact_duration"), start, &dur) == NC_NOERR && dur == r->duration);
+    ENSURE(nc_close(ncid) == NC_NOERR);
+    remove(path);
+    /* the sampling note: none at the demo's Dt_out = 0.1 ms (~31 records
+     * per contact), given at 1 ms (~3 records) */
+    char note[320];
+    rc_impacts_sampling_note(m, note, sizeof note);
+    ENSURE(note[0] == '\0');
+    const double dt = m->dtout;
+    m->dtout = 1e-3;
+    rc_impacts_sampling_note(m, note, sizeof note);
+    printf("    Dt_out 1 ms: %s\n", note);
+    ENSURE(strstr(note, "output interval 0.001 s samples a contact of ~0.0031 s") && strstr(note, "~3 records"));
+    m->dtout = dt;
+    rc_model_free(m);
+    rc_case_free(c);
+}
+
 void suite_output(void);
 void suite_output(void)
 {
@@ -506,4 +755,7 @@ void suite_output(void)
     RUN_TEST(test_output_units_follow_case);
     RUN_TEST(test_output_open_bad_directory);
     RUN_TEST(test_output_open_bad_name_removes_file);
+    RUN_TEST(test_output_sha256_vectors);
+    RUN_TEST(test_output_coordinates_provenance);
+    RUN_TEST(test_output_impacts_demo_closed_form);
 }

@@ -84,6 +84,31 @@ void rc_model_print_summary(const rc_model *m, FILE *f);
 
 /* ---- Running --------------------------------------------------------- */
 
+/* One impact of a contact interface: from the contact closing (P > 0 and
+ * the force acting) to the bodies separating (P back to 0). Peak force and
+ * maximum penetration are tracked at every integrator step (the step's
+ * interpolant sampled at 4 points), not from the output records. */
+typedef struct rc_impact {
+    int inter_id;         /* /INTER id                                         */
+    double t_close;       /* the contact closes (contact_close) [s]            */
+    double t_open;        /* the force stops acting for the last time (released
+                             or separated) [s]; NaN: still acting at the end  */
+    double duration;      /* t_open - t_close [s]                              */
+    double pen_max;       /* maximum penetration P [m]                         */
+    double t_pen_max;     /* when [s]                                          */
+    double fn_max;        /* peak total normal force [N]                       */
+    double t_fn_max;      /* when [s]                                          */
+    double v_in;          /* approach speed dP/dt at closing [m/s]             */
+    double v_out;         /* separation speed -dP/dt at P = 0 [m/s]; NaN: not
+                             separated by the end                              */
+    double restitution;   /* v_out / v_in [-]                                  */
+    double energy_lost;   /* contact damping + hysteresis + friction dissipated
+                             from closing to separation [J]                    */
+} rc_impact;
+
+/* Impacts itemised in rc_stats (all of them are in the results file). */
+#define RC_STATS_IMPACTS 5
+
 /* Solver statistics of a run. */
 typedef struct rc_stats {
     long steps;           /* integrator steps                          */
@@ -99,6 +124,10 @@ typedef struct rc_stats {
     double t_end;         /* simulated time reached [s]                */
     double wall_time;     /* wall-clock time of the integration [s]    */
     double energy_residual; /* energy balance residual at the end [J]  */
+    long impacts;         /* impacts of the contact interfaces (rc_impact) */
+    rc_impact impact[RC_STATS_IMPACTS]; /* the first ones                 */
+    char sampling_note[320]; /* non-empty: /RUN Dt_out is too coarse for the
+                                contacts (printed by rc_stats_print)     */
 } rc_stats;
 
 /* Options of one run. Zero-initialise, then set what you need. */
@@ -132,8 +161,20 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats,
  * this stays 0. */
 int rc_output_abandoned(void);
 
-/* Print statistics in the format of `ricochet run`. */
+/* Print statistics in the format of `ricochet run`: counters, the first
+ * impacts and the sampling note. */
 void rc_stats_print(const rc_stats *s, FILE *f);
+
+/* ---- Export ------------------------------------------------------------ */
+
+/* Write a ParaView time series of a results file: DIR/<stem>.pvd listing
+ * one VTK XML PolyData file per record for the bodies (surfaces
+ * tessellated) and one for the contacts (points with force vectors, the
+ * events since the previous record as field data); docs/output-format.md.
+ * DIR is created when missing. *nframes (may be NULL) receives the number
+ * of records exported. RC_EIO when a file cannot be read or written,
+ * RC_EINPUT when the results file lacks the variables needed. */
+rc_status rc_export_vtk(const char *results_path, const char *dir, int *nframes, rc_error *err);
 
 #ifdef __cplusplus
 }

@@ -42,7 +42,7 @@ rc_status rc_card_node(rc_reader *rd, const rc_block *b)
 rc_status rc_card_grnod(rc_reader *rd, const rc_block *b)
 {
     rc_case *c = rd->c;
-    int nd, cap = 0;
+    int nd, cap = 0, lcap = 0;
     rc_status st;
     if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "grnod_ID", "/GRNOD/NODE/grnod_ID")))
         return st;
@@ -63,6 +63,8 @@ rc_status rc_card_grnod(rc_reader *rd, const rc_block *b)
         for (int k = 0; k < 10; k++) {
             if (v[k] == 0) continue;
             RC_GROW(rd, g->nodes, cap, g->n);
+            RC_GROW(rd, g->node_loc, lcap, g->n);
+            g->node_loc[g->n] = b->lines[i].loc;
             g->nodes[g->n++] = v[k];
         }
     }
@@ -93,6 +95,7 @@ rc_status rc_card_rbody(rc_reader *rd, const rc_block *b)
                             "expN expT]]",
                             &nd)))
         return st;
+    for (int k = 0; k < 3; k++) r->line_loc[k] = b->lines[k + 1].loc;
 
     rc_field l1[] = {
         RC_F_INT("node_ID", &r->node_id, 0, RC_FF_POS),
@@ -154,7 +157,8 @@ rc_status rc_card_rbody(rc_reader *rd, const rc_block *b)
  * every field named `name`, >= 0; blank and 0 fields are skipped. The ids
  * are appended to *ids (count *n, capacity *cap). */
 static rc_status rc_id_lines(rc_reader *rd, const rc_block *b, int first, int last,
-                             const char *name, int **ids, int *n, int *cap)
+                             const char *name, int **ids, rc_loc **locs, int *n, int *cap,
+                             int *lcap)
 {
     rc_status st;
     for (int i = first; i <= last; i++) {
@@ -168,6 +172,8 @@ static rc_status rc_id_lines(rc_reader *rd, const rc_block *b, int first, int la
         for (int k = 0; k < 10; k++) {
             if (v[k] == 0) continue;
             RC_GROW(rd, *ids, *cap, *n);
+            RC_GROW(rd, *locs, *lcap, *n);
+            (*locs)[*n] = b->lines[i].loc;
             (*ids)[(*n)++] = v[k];
         }
     }
@@ -184,7 +190,7 @@ rc_status rc_card_part(rc_reader *rd, const rc_block *b)
     static const char desc[] = "prop_ID mat_ID subset_ID Thick[, rbody_ID surf_ID1 ... surf_ID9"
                                "[, surf_ID1 ... surf_ID10 ...]]";
     rc_case *c = rd->c;
-    int nd, cap = 0, v[10];
+    int nd, cap = 0, lcap = 0, v[10];
     rc_status st;
     if ((st = rc_header(rd, b, 1, RC_ID_REQUIRED, "part_ID", "/PART/part_ID"))) return st;
     RC_GROW(rd, c->part, rd->cappart, c->npart);
@@ -219,9 +225,12 @@ rc_status rc_card_part(rc_reader *rd, const rc_block *b)
     for (int k = 1; k < 10; k++) {
         if (v[k] == 0) continue;
         RC_GROW(rd, p->surf, cap, p->nsurf);
+        RC_GROW(rd, p->surf_loc, lcap, p->nsurf);
+        p->surf_loc[p->nsurf] = p->line_loc;
         p->surf[p->nsurf++] = v[k];
     }
-    if ((st = rc_id_lines(rd, b, 3, nd, "surf_ID", &p->surf, &p->nsurf, &cap))) return st;
+    if ((st = rc_id_lines(rd, b, 3, nd, "surf_ID", &p->surf, &p->surf_loc, &p->nsurf, &cap, &lcap)))
+        return st;
 
     /* a part fixed in space is a set of surfaces */
     if (p->rbody_id == 0 && p->nsurf == 0)
@@ -237,7 +246,7 @@ rc_status rc_card_part(rc_reader *rd, const rc_block *b)
 rc_status rc_card_grpart(rc_reader *rd, const rc_block *b)
 {
     rc_case *c = rd->c;
-    int nd, cap = 0;
+    int nd, cap = 0, lcap = 0;
     rc_status st;
     if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "grpart_ID", "/GRPART/PART/grpart_ID")))
         return st;
@@ -246,6 +255,7 @@ rc_status rc_card_grpart(rc_reader *rd, const rc_block *b)
     g->id = b->id;
     g->loc = b->hdr->loc;
     if ((st = rc_var_lines(rd, b, g->title, "part_ID1 ... part_ID10", &nd))) return st;
-    if ((st = rc_id_lines(rd, b, 1, nd, "part_ID", &g->parts, &g->n, &cap))) return st;
+    if ((st = rc_id_lines(rd, b, 1, nd, "part_ID", &g->parts, &g->part_loc, &g->n, &cap, &lcap)))
+        return st;
     return rc_note_id(rd, RC_IDK_GRPART, g->id, &g->loc, b->hdr->text);
 }

@@ -91,7 +91,9 @@ rc_status rc_card_type6(rc_reader *rd, const rc_block *b)
         RC_F_REALD("Visc", &t->visc, 0, RC_FF_NONNEG, RC_D_C),
         RC_F_INT("fct_IDdv", &t->fct_dv, 0, RC_FF_NONNEG),
         RC_F_INT("fct_IDdf", &t->fct_df, 0, RC_FF_NONNEG),
-        RC_F_REALD("Fscalev", &t->fscalev, 1, RC_FF_ZDEF, RC_D_F)};
+        RC_F_REALD("Fscalev", &t->fscalev, 1, RC_FF_ZDEF, RC_D_F),
+        /* ricochet's extension: a restitution asked instead of Visc */
+        RC_F_REALD("e_target", &t->e_target, 0, RC_FF_NONNEG, RC_D_NONE)};
     /* older layouts: the lines as their versions wrote them (the fields they
      * lack keep their defaults) */
     rc_field o2[] = {

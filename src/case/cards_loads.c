@@ -89,6 +89,7 @@ rc_status rc_card_inivel(rc_reader *rd, const rc_block *b)
                                         : "Vx Vy Vz grnod_ID skew_ID",
                             &nd)))
         return st;
+    v->line_loc = b->lines[1].loc;
 
     /* 20- and 10-character fields; 16 and 8 in Radioss 4.x */
     const int wr = ver >= 51 ? 20 : 16, wi = ver >= 51 ? 10 : 8;
@@ -126,6 +127,7 @@ rc_status rc_card_grav(rc_reader *rd, const rc_block *b)
     if ((st = rc_card_lines(rd, b, title, 1, 1, "fct_IDT DIR skew_ID sensor_ID grnod_ID "
                             "Ascale_x Fscale_y", &nd)))
         return st;
+    g->line_loc = b->lines[1].loc;
 
     rc_field f[] = {RC_F_INT("fct_IDT", &g->fct_id, 0, RC_FF_NONNEG),
                     RC_F_STR("DIR", dir, 10),
@@ -182,6 +184,7 @@ rc_status rc_card_bcs(rc_reader *rd, const rc_block *b)
     x->id = b->id;
     x->loc = b->hdr->loc;
     if ((st = rc_card_lines(rd, b, title, 1, 1, "Trarot skew_ID grnod_ID", &nd))) return st;
+    x->line_loc = b->lines[1].loc;
 
     /* 10-character fields; 8 in Radioss 4.x */
     const int w = rc_layout_version(rd) >= 51 ? 10 : 8;

@@ -386,14 +386,14 @@ rc_status rc_cards_finish(rc_reader *rd)
     rc_case *c = rd->c;
     rc_status st;
     if ((st = rc_engine_settings(rd))) return st;
+    /* deck-level messages name the end of the deck (the /END line) */
+    c->end = (rc_loc){c->files[0], rd->main_last_line > 0 ? rd->main_last_line : 1};
     /* the end time is required */
-    if (!c->run.present && !rd->run_hdr && !rd->engine_run_hdr) {
-        rc_loc loc = {c->files[0], rd->main_last_line > 0 ? rd->main_last_line : 1};
-        return rc_case_fail(rd, &loc, NULL, NULL,
+    if (!c->run.present && !rd->run_hdr && !rd->engine_run_hdr)
+        return rc_case_fail(rd, &c->end, NULL, NULL,
                             "no /RUN card: the end time is required (ricochet's /RUN, or the "
                             "Radioss engine card /RUN/name/n)");
-    }
-    /* without /SOLVER, the defaults apply at the main file */
-    if (!c->solver.present) c->solver.loc = (rc_loc){c->files[0], 0};
+    /* without /SOLVER, the defaults apply there too */
+    if (!c->solver.present) c->solver.loc = c->end;
     return RC_OK;
 }

@@ -30,6 +30,7 @@ static rc_case_surf *rc_new_surf(rc_reader *rd, const rc_block *b, rc_case_surf_
     s->id = b->id;
     s->kind = kind;
     s->loc = b->hdr->loc;
+    s->rbody_loc = b->hdr->loc;
     return s;
 }
 
@@ -52,6 +53,7 @@ rc_status rc_card_plane(rc_reader *rd, const rc_block *b)
     if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
     if ((st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
     if (nd == 3 && (st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
+    if (nd == 3) s->rbody_loc = b->lines[3].loc;
 
     /* the normal M -> M1 must exist */
     if (s->m[0] == s->m1[0] && s->m[1] == s->m1[1] && s->m[2] == s->m1[2])
@@ -82,6 +84,7 @@ rc_status rc_card_ellips(rc_reader *rd, const rc_block *b)
                      RC_F_REALD("Zc", &s->c[2], 0, 0, RC_D_L)};
     rc_field l3[] = {RC_F_REALD("a", &s->abc[0], 0, RC_FF_POS, RC_D_L), RC_F_REALD("b", &s->abc[1], 0, RC_FF_POS, RC_D_L),
                      RC_F_REALD("c", &s->abc[2], 0, RC_FF_POS, RC_D_L)};
+    s->rbody_loc = b->lines[1].loc;
     if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
     if ((st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
     if ((st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
@@ -122,6 +125,7 @@ rc_status rc_card_cyl(rc_reader *rd, const rc_block *b)
     rc_field l3[] = {RC_F_REALD("AX", &s->axis[0], 0, 0, RC_D_NONE), RC_F_REALD("AY", &s->axis[1], 0, 0, RC_D_NONE),
                      RC_F_REALD("AZ", &s->axis[2], 0, 0, RC_D_NONE)};
     rc_field l4[] = {RC_F_REALD("R", &s->abc[0], 0, RC_FF_POS, RC_D_L), RC_F_REALD("L", &s->length, 0, RC_FF_POS, RC_D_L)};
+    s->rbody_loc = b->lines[1].loc;
     if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
     if ((st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
     if ((st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
@@ -153,6 +157,7 @@ rc_status rc_card_box(rc_reader *rd, const rc_block *b)
                      RC_F_REALD("UZ", &s->axis[2], 0, 0, RC_D_NONE)};
     rc_field l5[] = {RC_F_REALD("VX", &s->axis2[0], 0, 0, RC_D_NONE), RC_F_REALD("VY", &s->axis2[1], 0, 0, RC_D_NONE),
                      RC_F_REALD("VZ", &s->axis2[2], 0, 0, RC_D_NONE)};
+    s->rbody_loc = b->lines[1].loc;
     if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
     if ((st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
     if ((st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;

@@ -28,6 +28,15 @@ typedef struct rc_loc {
 #define RC_LOCFMT "%s:%d: "
 #define RC_LOC(l) (l).file, (l).line
 
+/* l when it was recorded (file set), else `fallback`: for cases built by hand
+ * without the lines of their fields. */
+static inline rc_loc rc_loc_or(rc_loc l, rc_loc fallback) { return l.file ? l : fallback; }
+/* Element k of an array of locations, or `fallback` when there is none. */
+static inline rc_loc rc_loc_at(const rc_loc *a, int k, rc_loc fallback)
+{
+    return a ? rc_loc_or(a[k], fallback) : fallback;
+}
+
 /* /FUNCT/fct_ID: tabulated curve y(x), points in file order. */
 typedef struct rc_case_funct {
     int id;
@@ -51,6 +60,7 @@ typedef struct rc_case_grnod {
     int n;
     int *nodes; /* [n] node ids */
     rc_loc loc;
+    rc_loc *node_loc; /* [n] the line of each node id (NULL: not recorded) */
 } rc_case_grnod;
 
 /* /RBODY/rbody_ID (Radioss layout, formats 2017..2026). Every field is
@@ -111,6 +121,7 @@ typedef struct rc_case_surf {
     int npart;
     int *part;                /* [npart] */
     rc_loc *part_loc;         /* [npart] */
+    rc_loc rbody_loc;         /* the line holding rbody_ID (the header's when absent) */
 } rc_case_surf;
 
 /* /INTER/TYPE6/inter_ID: every field of the six data lines. */
@@ -127,6 +138,7 @@ typedef struct rc_case_type6 {
     int fct_ul;                               /* line 5 */
     double stiff, fscaleul;                   /* line 5: [N/m] [N] */
     double visc;                              /* line 6: [N s/m] */
+    double e_target;                          /* line 6, ricochet: restitution asked [-]; 0: none */
     int fct_dv, fct_df;                       /* line 6 */
     double fscalev;                           /* line 6: [N] */
     rc_loc loc;
@@ -141,6 +153,7 @@ typedef struct rc_case_inivel {
     int grnod_id;  /* nodes whose body gets the velocity */
     int skew_id;   /* 0 only */
     rc_loc loc;
+    rc_loc line_loc; /* the data line */
 } rc_case_inivel;
 
 /* /GRAV/grav_ID. Acceleration = Fscale * f(t / Ascale) along DIR. */
@@ -154,6 +167,7 @@ typedef struct rc_case_grav {
     double ascale;  /* [s], default 1 */
     double fscale;  /* [m/s^2], default 1 */
     rc_loc loc;
+    rc_loc line_loc; /* the data line */
 } rc_case_grav;
 
 /* /BCS/bcs_ID: Tx Ty Tz Rx Ry Rz flags (1 = fixed) on a node group. */
@@ -163,6 +177,7 @@ typedef struct rc_case_bcs {
     int skew_id;
     int grnod_id;
     rc_loc loc;
+    rc_loc line_loc; /* the data line */
 } rc_case_bcs;
 
 /* /PART/part_ID (docs/case-format.md): Radioss's line 1 (prop_ID, mat_ID of
@@ -180,6 +195,7 @@ typedef struct rc_case_part {
     int ext;          /* 1: the ricochet line 2 is present                */
     int prop_id, mat_id; /* Radioss line 1 (mesh parts)                  */
     rc_loc prop_loc;  /* line 1                                           */
+    rc_loc *surf_loc; /* [nsurf] the line of each surface id (NULL: not recorded) */
 } rc_case_part;
 
 /* /GRPART/PART/grpart_ID: a list of part ids. */
@@ -189,6 +205,7 @@ typedef struct rc_case_grpart {
     int n;
     int *parts;     /* [n] */
     rc_loc loc;
+    rc_loc *part_loc; /* [n] the line of each part id (NULL: not recorded) */
 } rc_case_grpart;
 
 /* One coefficient set of /FRICTION (a direction of one pair, or the
@@ -299,6 +316,10 @@ struct rc_case {
     rc_case_run run;
     rc_case_solver solver;
 
+    rc_loc end; /* where the deck ends, the place of deck-level messages (no
+                   /RUN, no /RBODY, nothing to integrate): the main file and its
+                   /END line, or its last line (the #include line when /END is
+                   in an included file) */
     int nwarnings; char **warnings; /* "file:line: ..." ignored-card warnings */
     struct rc_case_index *index; /* sorted ids for the look-ups (case/lookup.c); NULL: scan */
 };

@@ -13,6 +13,7 @@
 #include <ctype.h>
 #include <errno.h>
 #include <limits.h>
+#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdint.h>
@@ -355,6 +356,10 @@ static rc_status rc_parse_field(rc_reader *rd, const rc_block *b, const rc_line 
     case RC_FT_REAL:
         if (!f->blank && (r = rc_parse_real(s, n, &dv)) != 0)
             return RC_FIELD_FAIL(rd, b, ln, f, "expected a finite real number, got %s", f->got);
+        /* a subnormal value is no physical quantity: its inverse overflows */
+        if (dv != 0 && fabs(dv) < DBL_MIN)
+            return RC_FIELD_FAIL(rd, b, ln, f, "expected 0 or a number of magnitude at least %g (a normal double), got %s",
+                                 DBL_MIN, f->got);
         if (f->blank || (dv == 0 && (f->flags & RC_FF_ZDEF))) dv = f->def;
         if ((r = rc_check_real(rd, b, ln, f, dv))) return (rc_status)r;
         /* into SI from the card's unit system (default values too: they are

@@ -605,7 +605,7 @@ void rc_case_free(rc_case *c)
     for (int i = 0; i < c->nfunct; i++) { free(c->funct[i].x); free(c->funct[i].y); }
     free(c->funct);
     free(c->node);
-    for (int i = 0; i < c->ngrnod; i++) free(c->grnod[i].nodes);
+    for (int i = 0; i < c->ngrnod; i++) { free(c->grnod[i].nodes); free(c->grnod[i].node_loc); }
     free(c->grnod);
     free(c->rbody);
     rc_case_mesh_free(c->mesh);
@@ -624,9 +624,9 @@ void rc_case_free(rc_case *c)
     free(c->grav);
     free(c->bcs);
     free(c->coupling);
-    for (int i = 0; i < c->npart; i++) free(c->part[i].surf);
+    for (int i = 0; i < c->npart; i++) { free(c->part[i].surf); free(c->part[i].surf_loc); }
     free(c->part);
-    for (int i = 0; i < c->ngrpart; i++) free(c->grpart[i].parts);
+    for (int i = 0; i < c->ngrpart; i++) { free(c->grpart[i].parts); free(c->grpart[i].part_loc); }
     free(c->grpart);
     for (int i = 0; i < c->nfriction; i++) free(c->friction[i].pair);
     free(c->friction);

@@ -13,6 +13,7 @@ static void usage(FILE *f)
     fprintf(f,
             "usage: ricochet run CASE [-o OUT.nc] [-q]   run a case, write results (default: CASE stem + .nc)\n"
             "       ricochet check CASE                  read and compile a case, print the model summary\n"
+            "       ricochet export-vtk RESULTS.nc [-o DIR]  ParaView files (.pvd + .vtp; default DIR: stem_vtk)\n"
             "       ricochet --help | --version\n"
             "exit codes: 0 success, 2 input error, 3 solver failure, 4 I/O error,\n"
             "            130 interrupted (SIGINT), 143 terminated (SIGTERM)\n");
@@ -77,6 +78,25 @@ static void on_signal(int sig)
     stop_requested = sig; /* non-zero; the exit code is 128 + sig */
 }
 
+/* ricochet export-vtk RESULTS.nc [-o DIR] (docs/output-format.md). */
+static int export_vtk(int argc, char **argv)
+{
+    const char *in = argc > 2 ? argv[2] : NULL, *dir = argc == 5 && !strcmp(argv[3], "-o") ? argv[4] : NULL;
+    if (!in || in[0] == '-' || (argc != 3 && !dir)) {
+        usage(stderr);
+        return 2;
+    }
+    char def[1024];
+    const char *b = strrchr(in, '/'), *dot = strrchr(b ? b + 1 : in, '.');
+    snprintf(def, sizeof def, "%.*s_vtk", (int)(dot && dot != (b ? b + 1 : in) ? dot - (b ? b + 1 : in) : 1000),
+             b ? b + 1 : in);
+    rc_error e;
+    int n = 0;
+    if (rc_export_vtk(in, dir ? dir : def, &n, &e)) return fail(&e);
+    printf("ricochet %s: %s -> %s/ (%d records)\n", rc_version(), in, dir ? dir : def, n);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     /* SIGINT, SIGTERM: end the run at the next step, keep what it computed
@@ -100,6 +120,7 @@ int main(int argc, char **argv)
         printf("ricochet %s\n", rc_version());
         return 0;
     }
+    if (!strcmp(argv[1], "export-vtk")) return export_vtk(argc, argv);
     const char *cmd = argv[1], *case_path = NULL, *out = NULL;
     int quiet = 0;
     for (int k = 2; k < argc; k++) {

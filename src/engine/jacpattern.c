@@ -291,8 +291,9 @@ static rc_status probe_blocks(rc_model *m, rc_error *err)
         for (int i = 0; i < n; i++) jb->slot[i] = -1;
         for (int p = 0; p < 2 && !st; p++) {
             if (rc_cpl_dense_block(m, NULL, k, 0.0, y[p], dense))
-                st = RC_SET(err, RC_EINPUT, "%s: the catenary equations have no solution near the initial "
-                            "position (probing the Jacobian pattern)", m->cpl->name[k]);
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, fields Lambda0 L_eq D: the catenary equations have "
+                            "no solution near the initial position (probing the Jacobian pattern)",
+                            RC_LOC(m->cpl->law_loc[k]), m->cpl->name[k]);
             for (int i = 0; i < n; i++)
                 if (dense[i] != 0.0) jb->slot[i] = 0;
         }

@@ -12,6 +12,103 @@
 #include "model/model.h"
 #include "model/power.h"
 
+#define RC_PI 3.14159265358979323846
+
+/* Restitution of a linear spring-dashpot contact that cannot pull (the
+ * force k x + c x' clipped at zero) at damping ratio zeta >= 0, and the
+ * contact time in units of 1/omega (*tau = omega t_c). In units of v0/omega
+ * and 1/omega the free response x(tau) of x'' + 2 zeta x' + x = 0, x(0) = 0,
+ * x'(0) = 1 leaves the contact when x + 2 zeta x' = 0; e = -x'(tau) there:
+ *   zeta < 1: x = e^(-zeta tau) sin(s tau)/s, s = sqrt(1 - zeta^2), and
+ *             s tau = pi - atan2(2 zeta s, 1 - 2 zeta^2);
+ *   zeta = 1: x = tau e^(-tau), tau = 2, e = e^(-2);
+ *   zeta > 1: x = (e^(a tau) - e^(b tau))/(a - b), a, b = -zeta +- q,
+ *             q = sqrt(zeta^2 - 1), and e^((a - b) tau) = (1 + 2 zeta b)/(1 + 2 zeta a).
+ * NaN for zeta < 0 or not finite. */
+double rc_linear_restitution(double zeta, double *tau_out)
+{
+    double tau = NAN, e = NAN;
+    if (zeta >= 0 && zeta < 1) {
+        const double s = sqrt(1.0 - zeta * zeta);
+        const double theta = RC_PI - atan2(2.0 * zeta * s, 1.0 - 2.0 * zeta * zeta);
+        tau = theta / s;
+        e = -exp(-zeta * theta / s) * (cos(theta) - zeta / s * sin(theta));
+    } else if (zeta == 1) {
+        tau = 2.0;
+        e = exp(-2.0);
+    } else if (zeta > 1 && isfinite(zeta)) {
+        const double q = sqrt((zeta - 1.0) * (zeta + 1.0)), a = -zeta + q, b = -zeta - q;
+        /* (1 + 2 zeta a)(1 + 2 zeta b) = 1, so the ratio is (1 + 2 zeta b)^2
+         * and tau = ln(2 zeta^2 + 2 zeta q - 1) / q (no cancellation) */
+        tau = log(2.0 * zeta * zeta + 2.0 * zeta * q - 1.0) / q;
+        e = -(a * exp(a * tau) - b * exp(b * tau)) / (a - b);
+    }
+    if (tau_out) *tau_out = tau;
+    return e;
+}
+
+/* Is the load curve of TYPE6 interface i a straight line through the
+ * origin (F = k P)? Its slope in *k [N/m]. */
+int rc_type6_linear_slope(const rc_model *m, int i, double *k)
+{
+    if (m->inter_law[i] != RC_LAW_TYPE6 || m->inter_fct_ld[i] < 0) return 0;
+    const rc_table *t = &m->table[m->inter_fct_ld[i]];
+    const double sl = t->y[t->n - 1] / t->x[t->n - 1];
+    for (int j = 0; j < t->n; j++)
+        if (fabs(t->y[j] - sl * t->x[j]) > 1e-12 * (fabs(t->y[j]) + fabs(sl * t->x[j])) + 1e-300) return 0;
+    *k = sl * m->inter_fscaleld[i] / m->inter_ascalex[i];
+    return *k > 0;
+}
+
+/* Guidance per interface: the gap at t = 0, the effective mass, the natural
+ * frequency at the force scale, the damping ratio of Visc, the predicted
+ * restitution and contact time (linear contacts), the stable step of an
+ * explicit scheme, and how many output records a contact gets. */
+static void print_guidance(const rc_model *m, FILE *f)
+{
+    double *y = malloc(((size_t)m->ny + 1) * sizeof(double));
+    if (!y) return;
+    rc_initial_state(m, y);
+    fprintf(f, "contacts    guidance per interface (at the force scale F_s; docs/theory.md, \"Guidance\")\n");
+    for (int i = 0; i < m->ninter && i < 20; i++) {
+        rc_inter_report r;
+        rc_inter_report_eval(m, i, RC_MODE_OPEN, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+        if (r.p_raw > 0)
+            fprintf(f, "  %-18s WARNING: overlap at t = 0 of %.4g m (the surfaces start %s)\n", m->inter_name[i], r.p_raw,
+                    m->inter_inacti[i] == 5 ? "inside each other; Inacti 5 takes it as the gap" : "inside each other: a force at once");
+        else
+            fprintf(f, "  %-18s gap at t = 0: %.4g m\n", m->inter_name[i], -r.p_raw);
+        const double mr = m->inter_mred[i], ks = m->inter_kscale[i];
+        if (!(isfinite(mr) && mr > 0 && isfinite(ks) && ks > 0)) {
+            fprintf(f, "  %-18s no effective mass along the normal or no scale: no estimate\n", "");
+            continue;
+        }
+        double k = ks;
+        const int lin = rc_type6_linear_slope(m, i, &k);
+        const double w = sqrt(k / mr), c = m->inter_law[i] == RC_LAW_TYPE6 ? m->inter_visc[i] : 0.0;
+        const double zeta = c / (2.0 * sqrt(k * mr));
+        fprintf(f, "  %-18s m_eff %.4g kg, k %.4g N/m%s, natural frequency %.4g Hz, damping ratio of Visc %.4g\n", "", mr, k,
+                lin ? "" : " (at p_s, nonlinear law)", w / (2.0 * RC_PI), zeta);
+        if (m->inter_etarget[i] > 0)
+            fprintf(f, "  %-18s restitution asked %.9g: Visc derived = %.9g N s/m\n", "", m->inter_etarget[i], c);
+        const int curves = m->inter_law[i] == RC_LAW_TYPE6 && (m->inter_fct_dv[i] >= 0 || m->inter_iform[i] != 0);
+        double tau = NAN, e = NAN;
+        if (lin && !curves) e = rc_linear_restitution(zeta, &tau);
+        const double tc = isfinite(tau) ? tau / w : RC_PI / w;
+        if (isfinite(e))
+            fprintf(f, "  %-18s predicted restitution %.6g, contact time %.4g s (linear law, force >= 0, no other load)\n", "", e, tc);
+        else
+            fprintf(f, "  %-18s contact time ~%.4g s (pi/omega; restitution not predicted: %s)\n", "", tc,
+                    lin ? "damping curves or hysteresis" : "nonlinear law");
+        const double dt_exp = 2.0 / w; /* central differences, undamped */
+        const double nrec = tc / m->dtout;
+        fprintf(f, "  %-18s explicit stable step %.4g s; output every %.4g s gives %.3g records per contact%s\n", "", dt_exp,
+                m->dtout, nrec, nrec < 10 ? " (WARNING: peaks between records are missed; lower /RUN Dt_out)" : "");
+    }
+    if (m->ninter > 20) fprintf(f, "  ... %d more\n", m->ninter - 20);
+    free(y);
+}
+
 void rc_model_print_summary(const rc_model *m, FILE *f)
 {
     fprintf(f, "case        %s (checksum %016lx)\n", m->case_path, m->checksum);
@@ -87,6 +184,7 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
             fprintf(f, "  %-18s no scale (no gravity or speed reaches it): fixed fallback tolerances\n", m->inter_name[i]);
     }
     if (m->ninter > 20) fprintf(f, "  ... %d more\n", m->ninter - 20);
+    if (m->ninter > 0) print_guidance(m, f);
 }
 
 void rc_cpl_print_summary(const rc_model *m, FILE *f)

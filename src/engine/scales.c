@@ -250,10 +250,10 @@ static rc_status check_resolvable(const rc_model *m, int i, double mv, const dou
                                                          : "Stiff, Fscale_ld and the load curve (fct_ID)";
     if (!isfinite(f) || !isfinite(k) || !isfinite(v)) {
         snprintf(scale_msg, sizeof scale_msg,
-                 "%s: card %s: the contact law overflows at its penetration scale p_s = %.3g m (force %.3g N, "
+                 RC_LOCFMT "card %s: the contact law overflows at its penetration scale p_s = %.3g m (force %.3g N, "
                  "stiffness %.3g N/m): %s give values beyond the double range; expected a law whose force "
                  "and stiffness stay finite",
-                 m->case_path, m->inter_name[i], p, f, k, fields);
+                 RC_LOC(m->inter_loc[i]), m->inter_name[i], p, f, k, fields);
         return RC_EINPUT;
     }
     /* the largest coordinate of a body of the pair, and the time reached */
@@ -268,24 +268,74 @@ static rc_status check_resolvable(const rc_model *m, int i, double mv, const dou
     const double ulp_x = L * DBL_EPSILON, tc = sqrt(mv / k), ulp_t = fmax(m->tend, 0.0) * DBL_EPSILON;
     if (p < 4.0 * ulp_x) {
         snprintf(scale_msg, sizeof scale_msg,
-                 "%s: card %s: the contact's penetration scale p_s = %.3g m (its penetration under the lighter "
+                 RC_LOCFMT "card %s: the contact's penetration scale p_s = %.3g m (its penetration under the lighter "
                  "body's weight or at the impact energy) is below the resolution of the coordinates (%.3g m at "
                  "%.3g m from the origin): %s make the contact too stiff for double precision; expected a "
-                 "stiffness that gives p_s of at least %.3g m",
-                 m->case_path, m->inter_name[i], p, ulp_x, L, fields, 4.0 * ulp_x);
+                 "stiffness that gives p_s of at least %.3g m (or coordinates nearer the origin)",
+                 RC_LOC(m->inter_loc[i]), m->inter_name[i], p, ulp_x, L, fields, 4.0 * ulp_x);
         return RC_EINPUT;
     }
     if (tc < 4.0 * ulp_t) {
         snprintf(scale_msg, sizeof scale_msg,
-                 "%s: card %s: the contact's time scale sqrt(m/k) = %.3g s (reduced mass %.3g kg, stiffness "
+                 RC_LOCFMT "card %s: the contact's time scale sqrt(m/k) = %.3g s (reduced mass %.3g kg, stiffness "
                  "%.3g N/m at p_s) is below the resolution of the time at the end of the run (%.3g s at "
                  "T_end = %.3g s): %s make the contact too stiff to integrate; expected a stiffness below "
                  "%.3g N/m or a shorter run",
-                 m->case_path, m->inter_name[i], tc, mv, k, ulp_t, m->tend, fields,
+                 RC_LOC(m->inter_loc[i]), m->inter_name[i], tc, mv, k, ulp_t, m->tend, fields,
                  mv / (16.0 * ulp_t * ulp_t));
         return RC_EINPUT;
     }
     (void)v;
+    return RC_OK;
+}
+
+/* Restitution of the linear contact minus the target, in the damping ratio. */
+static double restitution_gap(double zeta, void *target)
+{
+    return rc_linear_restitution(zeta, NULL) - *(const double *)target;
+}
+
+/* The Visc of TYPE6 interface i that gives its asked restitution e_target:
+ * for a linear load curve k P and the pair's effective mass m_eff along the
+ * normal, the damping ratio zeta solving e(zeta) = e_target (e decreasing
+ * from 1 at zeta = 0 to 0; closed form in report.c) by GSL's Brent
+ * iteration, then Visc = 2 zeta sqrt(k m_eff). */
+static rc_status derive_visc(rc_model *m, int i, rc_error *err)
+{
+    double target = m->inter_etarget[i], k = 0.0;
+    const double mr = m->inter_mred[i];
+    if (!rc_type6_linear_slope(m, i, &k))
+        return RC_SET(err, RC_EINPUT,
+                      RC_LOCFMT "card %s, field e_target: a restitution can be asked of a linear load curve only (a straight line "
+                      "through the origin); for other curves give Visc (not supported yet)",
+                      RC_LOC(m->inter_loc[i]), m->inter_name[i]);
+    if (!(isfinite(mr) && mr > 0))
+        return RC_SET(err, RC_EINPUT,
+                      RC_LOCFMT "card %s, field e_target: the bodies of the pair cannot move along the contact normal (no effective mass), "
+                      "so no restitution can be asked",
+                      RC_LOC(m->inter_loc[i]), m->inter_name[i]);
+    double zeta = 0.0;
+    if (target < 1) {
+        double lo = 0.0, hi = 1.0;
+        while (restitution_gap(hi, &target) > 0 && hi < 1e12) hi *= 10.0;
+        gsl_function fn = {restitution_gap, &target};
+        gsl_root_fsolver *s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+        if (!s) return RC_SET(err, RC_ENOMEM, "out of memory");
+        zeta = NAN;
+        if (gsl_root_fsolver_set(s, &fn, lo, hi) == GSL_SUCCESS)
+            for (int it = 0; it < 300; it++) {
+                if (gsl_root_fsolver_iterate(s) != GSL_SUCCESS) break;
+                zeta = gsl_root_fsolver_root(s);
+                if (gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s), 0.0, 1e-15) ==
+                    GSL_SUCCESS)
+                    break;
+            }
+        gsl_root_fsolver_free(s);
+        if (!isfinite(zeta))
+            return RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field e_target: no damping gives the restitution %g",
+                          RC_LOC(m->inter_loc[i]), m->inter_name[i], target);
+    }
+    m->inter_visc[i] = 2.0 * zeta * sqrt(k * mr);
     return RC_OK;
 }
 
@@ -402,6 +452,16 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         ebody = fmax(ebody, m->body_mass[b] * gmax * size[b]);
     }
     m->escale = escale > 0 ? escale : ebody;
+    /* a restitution asked (TYPE6 e_target): the Visc that gives it */
+    for (int i = 0; i < n; i++) {
+        if (!(m->inter_etarget[i] > 0)) continue;
+        rc_status st = derive_visc(m, i, err);
+        if (st) {
+            free(y);
+            free(size);
+            return st;
+        }
+    }
     /* stick damping of the incremental friction: the stick spring critically
      * damped on the pair's reduced mass, so that a body stopped on a
      * sticking contact comes to rest instead of ringing */
@@ -544,8 +604,30 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
     free(bps);
     free(bvs);
     rc_cpl_atol(m);
-    for (int k = 0; k < ny; k++)
-        if (!(m->atol[k] > 0)) RC_RAISE(err, RC_EINTERNAL, "absolute tolerance of state %d is %g", k, m->atol[k]);
+    /* a tolerance derived from scales that under- or overflow (values near
+     * the limits of the doubles, e.g. a denormal load curve slope or gap):
+     * an input error at the card owning the state */
+    for (int k = 0; k < ny; k++) {
+        if (m->atol[k] > 0) continue;
+        for (int b = 0; b < m->nbody; b++)
+            if (m->body_yadr[b] >= 0 && k >= m->body_yadr[b] && k < m->body_yadr[b] + RC_NB)
+                RC_RAISE(err, RC_EINPUT,
+                         RC_LOCFMT "card /RBODY/%d: the absolute tolerance derived for its state %d is %g: the scales of its "
+                         "contacts (docs/theory.md 7.1) leave the range of the doubles; expected values of ordinary "
+                         "magnitude",
+                         RC_LOC(m->body_loc[b]), m->body_id[b], k - m->body_yadr[b], m->atol[k]);
+        for (int i = 0; i < m->ninter; i++)
+            if (k >= m->inter_eadr[i] && k < m->inter_eadr[i] + m->inter_ns[i])
+                RC_RAISE(err, RC_EINPUT,
+                         RC_LOCFMT "card %s: the absolute tolerance derived for its state %d is %g: its scales "
+                         "(docs/theory.md 7.1) leave the range of the doubles; expected values of ordinary magnitude",
+                         RC_LOC(m->inter_loc[i]), m->inter_name[i], k - m->inter_eadr[i], m->atol[k]);
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "the absolute tolerance derived for state %d (energy accounting) is %g: the energy scale of "
+                 "the model (docs/theory.md 7.1) leaves the range of the doubles; expected values of ordinary "
+                 "magnitude, or /SOLVER Atol_energy given",
+                 RC_LOC(m->end_loc), k, m->atol[k]);
+    }
     /* all relative: plain per-component tolerances */
     int any = 0;
     for (int k = 0; k < ny; k++) any |= !m->ewt_rel[k];

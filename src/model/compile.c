@@ -32,7 +32,8 @@
     } while (0)
 
 
-/* Bodies of the nodes of group `gid` -> flag array (all bodies when gid = 0). */
+/* Bodies of the nodes of group `gid` -> flag array (all bodies when gid = 0).
+ * `loc`: the line of the referring card that holds grnod_ID. */
 static rc_status group_bodies(const rc_case *c, int gid, rc_loc loc, const char *card, int *flag,
                               rc_error *err)
 {
@@ -44,10 +45,13 @@ static rc_status group_bodies(const rc_case *c, int gid, rc_loc loc, const char 
                  RC_LOC(loc), card, gid);
     for (int k = 0; k < c->grnod[g].n; k++) {
         int b = rc_case_body_of_node(c, c->grnod[g].nodes[k]);
-        if (b < 0)
+        if (b < 0) {
+            const rc_loc nl = rc_loc_at(c->grnod[g].node_loc, k, c->grnod[g].loc);
             RC_RAISE(err, RC_EINPUT,
-                     RC_LOCFMT "card %s: node %d of /GRNOD/%d belongs to no /RBODY (ricochet bodies are rigid)",
-                     RC_LOC(loc), card, c->grnod[g].nodes[k], gid);
+                     RC_LOCFMT "card /GRNOD/NODE/%d, field node_ID: node %d belongs to no /RBODY (ricochet bodies are "
+                     "rigid); the group is used by %s at %s:%d",
+                     RC_LOC(nl), gid, c->grnod[g].nodes[k], card, RC_LOC(loc));
+        }
         flag[b] = 1;
     }
     return RC_OK;
@@ -92,28 +96,31 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
     }
     for (int b = 0; b < c->nrbody; b++) {
         const rc_case_rbody *rb = &c->rbody[b];
+        /* the data lines holding the fields (the header for a case built by hand) */
+        const rc_loc l1 = rc_loc_or(rb->line_loc[0], rb->loc), l3 = rc_loc_or(rb->line_loc[2], rb->loc);
         int nd = rc_case_find_node(c, rb->node_id);
         if (nd < 0) {
             free(owner);
             free(mp);
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field node_ID: expected the id of a /NODE, got %d (no such node)",
-                     RC_LOC(rb->loc), rb->id, rb->node_id);
+                     RC_LOC(l1), rb->id, rb->node_id);
         }
         if (owner[nd]) {
             const rc_case_rbody *first = &c->rbody[owner[nd] - 1];
             free(owner);
             free(mp);
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field node_ID: node %d is already the main node of /RBODY/%d (%s:%d); expected a node of its own",
-                     RC_LOC(rb->loc), rb->id, rb->node_id, first->id, first->loc.file, first->loc.line);
+                     RC_LOC(l1), rb->id, rb->node_id, first->id, first->loc.file, first->loc.line);
         }
         owner[nd] = b + 1;
         if (rb->grnod_id && rc_case_find_grnod(c, rb->grnod_id) < 0) {
             free(owner);
             free(mp);
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field grnd_ID: expected the id of a /GRNOD, got %d (no such group)",
-                     RC_LOC(rb->loc), rb->id, rb->grnod_id);
+                     RC_LOC(l1), rb->id, rb->grnod_id);
         }
         m->body_id[b] = rb->id;
+        m->body_loc[b] = rb->loc;
         /* mass, centre of mass and inertia: mesh and card (massprop.c) */
         m->body_mass[b] = mp[b].mass;
         double *J = m->body_J + 9 * b;
@@ -124,7 +131,7 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
             free(owner);
             free(mp);
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, fields Jxx..Jxz: expected a positive-definite inertia tensor",
-                     RC_LOC(rb->loc), rb->id);
+                     RC_LOC(l3), rb->id);
         }
         double *y0 = m->body_y0 + RC_NB * b;
         memcpy(y0, mp[b].x, 3 * sizeof(double));
@@ -140,7 +147,7 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
         const rc_case_inivel *iv = &c->inivel[k];
         char card[64];
         snprintf(card, sizeof card, "/INIVEL/%s/%d", iv->rot ? "ROT" : "TRA", iv->id);
-        st = group_bodies(c, iv->grnod_id, iv->loc, card, flag, err);
+        st = group_bodies(c, iv->grnod_id, rc_loc_or(iv->line_loc, iv->loc), card, flag, err);
         for (int b = 0; b < c->nrbody && !st; b++)
             if (flag[b]) memcpy(m->body_y0 + RC_NB * b + (iv->rot ? 10 : 7), iv->v, 3 * sizeof(double));
     }
@@ -149,6 +156,7 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
      * (a partial rotation lock is not a simple condition on quaternions) */
     for (int k = 0; k < c->nbcs && !st; k++) {
         const rc_case_bcs *bc = &c->bcs[k];
+        const rc_loc bl = rc_loc_or(bc->line_loc, bc->loc);
         char card[64];
         snprintf(card, sizeof card, "/BCS/%d", bc->id);
         int all = 1, nrot = 0;
@@ -157,10 +165,10 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
         if (nrot != 0 && nrot != 3) {
             st = RC_SET(err, RC_EINPUT,
                         RC_LOCFMT "card %s, field Trarot: rotations must be all fixed or all free (\"xxx 111\" or \"xxx 000\"); a partial rotation lock is not supported yet",
-                        RC_LOC(bc->loc), card);
+                        RC_LOC(bl), card);
             break;
         }
-        st = group_bodies(c, bc->grnod_id, bc->loc, card, flag, err);
+        st = group_bodies(c, bc->grnod_id, bl, card, flag, err);
         for (int b = 0; b < c->nrbody && !st; b++) {
             if (!flag[b]) continue;
             if (all) m->body_fixed[b] = 1;
@@ -174,19 +182,20 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
     /* gravity: one time function for all cards (constant when 0) */
     for (int k = 0; k < c->ngrav && !st; k++) {
         const rc_case_grav *gr = &c->grav[k];
+        const rc_loc gl = rc_loc_or(gr->line_loc, gr->loc);
         char card[64];
         snprintf(card, sizeof card, "/GRAV/%d", gr->id);
         int tab;
-        st = rc_case_ref_funct(c, gr->fct_id, 0, gr->loc, card, "fct_IDT", &tab, err);
+        st = rc_case_ref_funct(c, gr->fct_id, 0, gl, card, "fct_IDT", &tab, err);
         if (st) break;
         if (k > 0 && tab != m->grav_table) {
             st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field fct_IDT: all /GRAV cards must share one time function (not supported yet)",
-                        RC_LOC(gr->loc), card);
+                        RC_LOC(gl), card);
             break;
         }
         m->grav_table = tab;
         m->grav_ascale = gr->ascale;
-        st = group_bodies(c, gr->grnod_id, gr->loc, card, flag, err);
+        st = group_bodies(c, gr->grnod_id, gl, card, flag, err);
         for (int b = 0; b < c->nrbody && !st; b++)
             if (flag[b]) m->body_grav[3 * b + gr->dir] += gr->fscale;
     }
@@ -213,7 +222,7 @@ static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
             b = rc_case_find_rbody(c, cs->rbody_id);
             if (b < 0)
                 RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /SURF/%s/%d, field rbody_ID: expected the id of a /RBODY, got %d (no such body)",
-                         RC_LOC(cs->loc), kind, cs->id, cs->rbody_id);
+                         RC_LOC(rc_loc_or(cs->rbody_loc, cs->loc)), kind, cs->id, cs->rbody_id);
         }
         m->surf_id[s] = cs->id;
         m->surf_body[s] = b;
@@ -319,10 +328,24 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
         RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields surf_ID1/surf_ID2: both surfaces are on the same body; they must belong to two different rigid bodies",
                  RC_LOC(t6->line_loc[0]), card);
     m->inter_id[i] = t6->id;
+    m->inter_loc[i] = t6->loc;
     m->inter_gap[i] = t6->gap;
     m->inter_tstart[i] = t6->tstart;
     m->inter_tstop[i] = t6->tstop;
     m->inter_visc[i] = t6->visc;
+    m->inter_etarget[i] = t6->e_target;
+    if (t6->e_target > 0) {
+        /* the damping that gives it is derived with the scales
+         * (engine/scales.c); it needs a law whose restitution is known */
+        const rc_loc l6 = rc_loc_or(t6->line_loc[5], t6->loc);
+        if (!(t6->e_target <= 1))
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field e_target: expected a restitution in (0, 1], got %g",
+                     RC_LOC(l6), card, t6->e_target);
+        if (t6->visc != 0 || t6->fct_dv != 0 || t6->iform != 0)
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field e_target: a restitution asked replaces the damping: "
+                     "expected Visc = 0, fct_IDdv = 0 and Iform = 0 with it, got Visc %g, fct_IDdv %d, Iform %d",
+                     RC_LOC(l6), card, t6->visc, t6->fct_dv, t6->iform);
+    }
     m->inter_fscalev[i] = t6->fscalev;
     m->inter_ascalex[i] = t6->ascalex;
     m->inter_fscaleld[i] = t6->fscaleld;
@@ -388,7 +411,7 @@ static rc_status check_seg_pairs(const rc_case *c, const rc_model *m, rc_error *
 }
 
 /* ---- state layout and tolerances -------------------------------------- */
-static rc_status layout(rc_model *m, rc_error *err)
+static rc_status layout(const rc_case *c, rc_model *m, rc_error *err)
 {
     int ny = 0;
     for (int b = 0; b < m->nbody; b++) {
@@ -434,7 +457,7 @@ static rc_status layout(rc_model *m, rc_error *err)
     m->row_held = calloc((size_t)ny + 1, 1);
     if (!m->row_held) RC_RAISE(err, RC_ENOMEM, "out of memory");
     for (int k = 0; k < m->nheld; k++) m->row_held[m->held[k]] = 1;
-    if (ny == 0) RC_RAISE(err, RC_EINPUT, "%s: the case has nothing to integrate (no free body)", m->case_path);
+    if (ny == 0) RC_RAISE(err, RC_EINPUT, RC_LOCFMT "the case has nothing to integrate (no free body)", RC_LOC(m->end_loc));
     return RC_OK;
 }
 
@@ -451,6 +474,18 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
         goto fail;
     }
     strcpy(m->case_path, c->path);
+    m->end_loc = rc_loc_or(c->end, (rc_loc){c->path, 1});
+    /* the files read, for the results file's checksums */
+    m->nfile = rc_case_file_count(c);
+    m->file = calloc((size_t)m->nfile + 1, sizeof *m->file);
+    int files_ok = m->file != NULL;
+    for (int k = 0; m->file && k < m->nfile; k++)
+        if ((m->file[k] = malloc(strlen(rc_case_file(c, k)) + 1))) strcpy(m->file[k], rc_case_file(c, k));
+        else files_ok = 0;
+    if (!files_ok) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory");
+        goto fail;
+    }
     snprintf(m->title, sizeof m->title, "%s", c->title);
     snprintf(m->unit_mass, sizeof m->unit_mass, "%s", c->unit_mass);
     snprintf(m->unit_length, sizeof m->unit_length, "%s", c->unit_length);
@@ -488,7 +523,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     /* bodies */
     m->nbody = c->nrbody;
     if (m->nbody == 0) {
-        st = RC_SET(err, RC_EINPUT, "%s: no /RBODY card: ricochet needs at least one rigid body", c->path);
+        st = RC_SET(err, RC_EINPUT, RC_LOCFMT "no /RBODY card: ricochet needs at least one rigid body", RC_LOC(m->end_loc));
         goto fail;
     }
     ALLOC(m->body_id, m->nbody);
@@ -500,6 +535,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->body_y0, RC_NB * m->nbody);
     ALLOC(m->body_grav, 3 * m->nbody);
     ALLOC(m->body_dofmask, 6 * m->nbody);
+    ALLOC(m->body_loc, m->nbody);
     if ((st = compile_bodies(c, m, err))) goto fail;
     /* surfaces */
     m->nsurf = c->nsurf;
@@ -526,6 +562,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->inter_tstart, m->ninter);
     ALLOC(m->inter_tstop, m->ninter);
     ALLOC(m->inter_visc, m->ninter);
+    ALLOC(m->inter_etarget, m->ninter);
     ALLOC(m->inter_fscalev, m->ninter);
     ALLOC(m->inter_ascalex, m->ninter);
     ALLOC(m->inter_fscaleld, m->ninter);
@@ -546,6 +583,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->inter_oidx, m->ninter);
     ALLOC(m->inter_fr, m->ninter);
     ALLOC(m->inter_name, m->ninter);
+    ALLOC(m->inter_loc, m->ninter);
     ALLOC(m->inter_law, m->ninter);
     ALLOC(m->inter_pw, m->ninter);
     for (int i = 0; i < c->ntype6; i++) {
@@ -562,7 +600,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     if ((st = rc_imp_compile(c, m, err))) goto fail;
     /* states (the tolerances and the Jacobian pattern follow in
      * engine/prepare.c) */
-    if ((st = layout(m, err))) goto fail;
+    if ((st = layout(c, m, err))) goto fail;
     *out = m;
     return RC_OK;
 fail:
@@ -581,20 +619,23 @@ void rc_model_free(rc_model *m)
     rc_cpl_free(m->cpl);
     rc_power_free(m);
     rc_imp_free(m->imp);
+    if (m->file)
+        for (int k = 0; k < m->nfile; k++) free(m->file[k]);
+    free(m->file);
     rc_seg_free(m);
     void *arrays[] = {m->case_path, m->table, m->body_id, m->body_fixed, m->body_yadr, m->body_mass,
                       m->body_J, m->body_Jinv, m->body_y0, m->body_grav, m->body_dofmask, m->surf_id, m->surf_kind,
                       m->surf_body, m->surf_p, m->surf_n, m->surf_r, m->inter_id, m->inter_pair,
                       m->inter_sa, m->inter_sb, m->inter_ba, m->inter_bb, m->inter_gap,
-                      m->inter_tstart, m->inter_tstop, m->inter_visc, m->inter_fscalev,
+                      m->inter_tstart, m->inter_tstop, m->inter_visc, m->inter_etarget, m->inter_fscalev,
                       m->inter_ascalex, m->inter_fscaleld, m->inter_ascalef, m->inter_ascalev,
                       m->inter_fct_ld, m->inter_fct_dv, m->inter_fct_df, m->inter_eadr,
                       m->inter_fct_ul, m->inter_iform, m->inter_icor, m->inter_inacti, m->inter_stiff,
                       m->inter_fscaleul, m->inter_ns, m->inter_hidx, m->inter_oidx, m->inter_fr,
                       m->inter_name, m->atol, m->held, m->row_held, m->gwork_slot, m->surf_ext,
                       m->inter_law, m->inter_pw, m->inter_pscale, m->inter_fscale, m->inter_kscale,
-                      m->inter_vscale, m->inter_mred, m->ewt_rel, m->surf_nadr, m->surf_node,
-                      m->surf_sadr, m->surf_seg};
+                      m->inter_vscale, m->inter_mred, m->ewt_rel, m->body_loc, m->inter_loc,
+                      m->surf_nadr, m->surf_node, m->surf_sadr, m->surf_seg};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     free(m);
 }

@@ -62,6 +62,7 @@ static rc_status alloc_arrays(rc_couplings *p, int n)
     CPL_ALLOC(p->leq, n);
     CPL_ALLOC(p->ea, n);
     CPL_ALLOC(p->jb, n);
+    CPL_ALLOC(p->law_loc, n);
 #undef CPL_ALLOC
     return RC_OK;
 }
@@ -80,6 +81,8 @@ static rc_status compile_one(const rc_case *c, rc_model *m, int k, rc_error *err
     p->kind[k] = cc->kind == RC_CASE_CPL_SPRING ? RC_CPL_SPRING : RC_CPL_CATENARY;
     p->type[k] = kind_name[cc->kind];
     p->table[k] = -1;
+    /* line 4 of both cards: X0 Kd (spring), Lambda0 L_eq D (catenary) */
+    p->law_loc[k] = rc_loc_or(cc->line_loc[3], cc->loc);
 
     /* ends: body (or space) and the point in the body frame */
     int *bs[2] = {&p->b1[k], &p->b2[k]};
@@ -127,8 +130,16 @@ static rc_status compile_one(const rc_case *c, rc_model *m, int k, rc_error *err
         const rc_table *t = &m->table[p->table[k]];
         p->cum[k] = malloc((size_t)t->n * sizeof(double));
         if (!p->cum[k]) RC_RAISE(err, RC_ENOMEM, "out of memory");
-        rc_status st = rc_cpl_stiff_table(t, p->cum[k], err);
-        if (st) return st;
+        rc_error e2;
+        memset(&e2, 0, sizeof e2);
+        rc_status st = rc_cpl_stiff_table(t, p->cum[k], &e2);
+        if (st == RC_EINPUT)
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field fct_ID: %s", RC_LOC(rc_loc_or(cc->line_loc[0], cc->loc)),
+                     card, e2.msg);
+        if (st) {
+            if (err) *err = e2;
+            return st;
+        }
         p->fref[k] = cc->ref_given ? cc->fr : 0.0;
         p->xref[k] = cc->ref_given ? cc->xr : p->x0[k];
     }
@@ -186,7 +197,7 @@ void rc_cpl_free(rc_couplings *p)
     }
     void *arrays[] = {p->id,  p->kind, (void *)p->type, p->name, p->b1,   p->b2,   p->s1,      p->s2,  p->eadr,
                       p->form, p->x0,  p->kd,   p->coef, p->table, p->fref,   p->xref, p->cum,
-                      p->lambda0, p->leq, p->ea, p->jb};
+                      p->lambda0, p->leq, p->ea, p->jb, p->law_loc};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     free(p);
 }

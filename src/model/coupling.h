@@ -69,6 +69,8 @@ typedef struct rc_couplings {
                             gravity function (the /GRAV cards with
                             grnod_ID 0) [m/s^2]                              */
     rc_jblock *jb;       /* [n] Jacobian blocks                               */
+    rc_loc *law_loc;     /* [n] file:line of the card line holding the law's
+                            fields (catenary: Lambda0 L_eq D), for messages  */
 } rc_couplings;
 
 /* Solution of the catenary equations for one span (X, Y): end forces and

@@ -13,6 +13,8 @@
  * integral of the linear segment [x_i, x]: no quadrature, no allocation, and
  * f_e' = k exactly (what the complex-step Jacobian needs).
  */
+#include <math.h>
+
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_interp.h>
@@ -43,9 +45,12 @@ rc_status rc_cpl_stiff_table(const rc_table *t, double *cum, rc_error *err)
         double r, e;
         int gs = gsl_integration_qag(&fn, t->x[i], t->x[i + 1], 0.0, RC_QUAD_EPSREL, RC_QUAD_LIMIT,
                                      GSL_INTEG_GAUSS15, w, &r, &e);
-        if (gs != GSL_SUCCESS) {
-            st = RC_SET(err, RC_EINTERNAL, "quadrature of /FUNCT/%d on [%g, %g] failed: %s", t->id,
-                        t->x[i], t->x[i + 1], gsl_strerror(gs));
+        /* a table whose integral leaves the doubles is a fault of the input */
+        if (gs != GSL_SUCCESS || !isfinite(r) || !isfinite(cum[i] + r)) {
+            st = RC_SET(err, RC_EINPUT,
+                        "the integral of the stiffness /FUNCT/%d on [%g, %g] cannot be computed (%s); expected "
+                        "values whose integral stays finite",
+                        t->id, t->x[i], t->x[i + 1], gs != GSL_SUCCESS ? gsl_strerror(gs) : "not finite");
             break;
         }
         cum[i + 1] = cum[i] + r;

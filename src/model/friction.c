@@ -94,7 +94,7 @@ static rc_status surface_parts(const rc_case *c, const rc_model *m, int *spart, 
         if (!cp->rbody_id && !cp->nsurf) continue; /* a part of the mesh (no ricochet line 2) names no surface */
         if (cp->rbody_id && (b = rc_case_find_rbody(c, cp->rbody_id)) < 0) {
             st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /PART/%d, field rbody_ID: expected the id of a /RBODY, got %d (no such body)",
-                        RC_LOC(cp->loc), cp->id, cp->rbody_id);
+                        RC_LOC(rc_loc_or(cp->line_loc, cp->loc)), cp->id, cp->rbody_id);
             break;
         }
         if (cp->nsurf == 0) {
@@ -113,19 +113,26 @@ static rc_status surface_parts(const rc_case *c, const rc_model *m, int *spart, 
         }
         for (int j = 0; j < n && !st; j++) {
             const int s = mine[j];
+            /* the line holding this surface id (rbody_ID's: the whole body's surfaces) */
+            rc_loc sl = rc_loc_or(cp->line_loc, cp->loc);
+            for (int k = 0; k < cp->nsurf; k++)
+                if (cp->surf[k] == m->surf_id[s]) {
+                    sl = rc_loc_at(cp->surf_loc, k, cp->loc);
+                    break;
+                }
             if (cp->nsurf > 0 && m->surf_body[s] != b)
                 st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /PART/%d, field surf_ID: surface %d is not carried by rbody_ID %d",
-                            RC_LOC(cp->loc), cp->id, m->surf_id[s], cp->rbody_id);
+                            RC_LOC(sl), cp->id, m->surf_id[s], cp->rbody_id);
             else if (spart[s] >= 0)
-                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /PART/%d: surface %d already belongs to /PART/%d (a surface is in one part only)",
-                            RC_LOC(cp->loc), cp->id, m->surf_id[s], c->part[spart[s]].id);
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /PART/%d%s: surface %d already belongs to /PART/%d (a surface is in one part only)",
+                            RC_LOC(sl), cp->id, cp->nsurf > 0 ? ", field surf_ID" : ", field rbody_ID", m->surf_id[s], c->part[spart[s]].id);
             else
                 spart[s] = p;
         }
         for (int k = 0; k < cp->nsurf && !st; k++)
             if (rc_case_find_surf(c, cp->surf[k]) < 0)
                 st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /PART/%d, field surf_ID: expected the id of a /SURF, got %d (no such surface)",
-                            RC_LOC(cp->loc), cp->id, cp->surf[k]);
+                            RC_LOC(rc_loc_at(cp->surf_loc, k, cp->loc)), cp->id, cp->surf[k]);
     }
 done:
     free(start);
@@ -140,8 +147,9 @@ static rc_status check_refs(const rc_case *c, rc_error *err)
     for (int g = 0; g < c->ngrpart; g++)
         for (int k = 0; k < c->grpart[g].n; k++)
             if (rc_case_find_part(c, c->grpart[g].parts[k]) < 0)
-                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /GRPART/PART/%d: expected the id of a /PART, got %d (no such part)",
-                         RC_LOC(c->grpart[g].loc), c->grpart[g].id, c->grpart[g].parts[k]);
+                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /GRPART/PART/%d, field part_ID: expected the id of a /PART, got %d (no such part)",
+                         RC_LOC(rc_loc_at(c->grpart[g].part_loc, k, c->grpart[g].loc)), c->grpart[g].id,
+                         c->grpart[g].parts[k]);
     for (int f = 0; f < c->nfriction; f++)
         for (int k = 0; k < c->friction[f].npair; k++) {
             const rc_case_fricpair *g = &c->friction[f].pair[k];

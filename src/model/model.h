@@ -30,6 +30,7 @@
 #include <stdint.h>
 
 #include "ricochet/ricochet.h"
+#include "case/case.h"
 #include "model/friction.h"
 #include "model/table.h"
 
@@ -111,14 +112,18 @@ typedef struct rc_jblock {
 struct rc_model {
     /* provenance */
     char *case_path;
+    rc_loc end_loc;      /* the deck's end (rc_case.end): place of deck-level messages */
     char title[101];
     char unit_mass[21], unit_length[21], unit_time[21];
     unsigned long checksum;
+    int nfile;           /* files read: 0 the case file, then its includes */
+    char **file;         /* [nfile] their paths (as given or resolved) */
 
     /* bodies: all /RBODY, fixed ones included */
     int nbody;
     int nfree;
     int *body_id;        /* [nbody] /RBODY id */
+    rc_loc *body_loc;    /* [nbody] header of the /RBODY card, for messages */
     int *body_fixed;     /* [nbody] 1: fixed (ground) */
     int *body_yadr;      /* [nbody] offset in y, -1 when fixed */
     double *body_mass;   /* [nbody] [kg] */
@@ -171,6 +176,7 @@ struct rc_model {
     double *inter_gap;   /* Gap [m] */
     double *inter_tstart, *inter_tstop; /* [s] */
     double *inter_visc;  /* [N s/m] */
+    double *inter_etarget; /* restitution asked (TYPE6 e_target) [-]; 0: none; Visc derived from it */
     double *inter_fscalev; /* [N] */
     double *inter_ascalex; /* [m] */
     double *inter_fscaleld; /* [N] */
@@ -189,6 +195,7 @@ struct rc_model {
     int *inter_oidx;     /* [ninter] index of the Inacti offset, -1 */
     rc_fric *inter_fr;   /* [ninter] friction (friction.h); kind RC_FK_NONE: none */
     char **inter_name;   /* [ninter] "/INTER/TYPE6/<id>" */
+    rc_loc *inter_loc;   /* [ninter] header of the interface card, for messages */
     int *inter_law;      /* [ninter] normal law RC_LAW_TYPE6 / RC_LAW_POWER (power.h) */
     struct rc_power *inter_pw; /* [ninter] power-law parameters (power.h), law POWER */
 
@@ -290,6 +297,13 @@ static inline int rc_event_records(const rc_model *m)
 rc_data *rc_data_new(const rc_model *m);
 void rc_data_free(rc_data *d);
 
+/* Restitution of a linear contact that cannot pull at damping ratio
+ * zeta >= 0 (NaN otherwise); *tau = omega times the contact time
+ * (report.c). */
+double rc_linear_restitution(double zeta, double *tau);
+/* Is the load curve of TYPE6 interface i a straight line through the
+ * origin? Its slope F/P in *k [N/m] (report.c). */
+int rc_type6_linear_slope(const rc_model *m, int i, double *k);
 /* Name of state i for messages: "/RBODY/3, velocity z [m/s]" (statename.c). */
 void rc_state_name(const rc_model *m, int i, char *buf, size_t n);
 

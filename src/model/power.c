@@ -60,6 +60,7 @@ rc_status rc_power_compile(const rc_case *c, rc_model *m, int k, int i, rc_error
                  "to two different rigid bodies", where);
     /* the TYPE6 fields, neutral (no gap, no hysteresis, no curves) */
     m->inter_id[i] = p->id;
+    m->inter_loc[i] = p->loc;
     m->inter_gap[i] = 0.0;
     m->inter_tstart[i] = p->tstart;
     m->inter_tstop[i] = p->tstop;

@@ -38,6 +38,7 @@
 #include "output/output.h"
 
 #include "base/error.h"
+#include "base/sha256.h"
 
 #include <errno.h>
 #include <sys/stat.h>
@@ -67,12 +68,19 @@
  * a fixed part plus a part per variable [bytes]. */
 #define RC_OUT_META_FIXED (64u << 10)
 #define RC_OUT_META_PER_VAR (4u << 10)
+/* The git commit of the sources, baked in by the Makefile. */
+#ifndef RC_COMMIT
+#define RC_COMMIT "unknown"
+#endif
 /* Length of a derived unit string [chars]. */
 #define RC_OUT_UNIT_LEN 128
 
 /* Dimensions. */
-enum { D_TIME, D_BODY, D_INTER, D_VEC3, D_QUAT, D_EVENT, D_COUPLING, D_COUNT };
-static const char *const dim_name[D_COUNT] = {"time", "body", "inter", "vec3", "quat", "event", "coupling"};
+enum { D_TIME, D_BODY, D_INTER, D_VEC3, D_QUAT, D_EVENT, D_COUPLING, D_SURF, D_SPARAM, D_SIDE, D_COUNT };
+static const char *const dim_name[D_COUNT] = {"time",     "body",    "inter",             "vec3", "quat",
+                                              "event",    "coupling", "surface", "surface_parameter", "side"};
+/* Origin of the CF time axis: simulated time 0 (a convention, not a date). */
+#define RC_OUT_TIME_ORIGIN "1970-01-01 00:00:00"
 
 /* Kinds of units; the strings are derived from the case's unit system. */
 enum { U_ONE, U_TIME, U_LENGTH, U_VELOCITY, U_ANGVEL, U_FORCE, U_ENERGY, U_COUNT };
@@ -85,6 +93,8 @@ enum {
     V_INTER_POINT, V_INTER_NORMAL, V_INTER_MODE, V_INTER_FFRIC, V_INTER_VSLIP, V_INTER_SLIP,
     V_EVENT_TIME, V_EVENT_KIND, V_EVENT_ELEMENT, V_EVENT_PEN, V_EVENT_VN, V_EVENT_FN,
     V_CPL_ID, V_CPL_TYPE, V_CPL_FORCE, V_CPL_LENGTH, V_CPL_F1, V_CPL_F2, V_CPL_LOWEST,
+    V_BODY_COORD, V_INTER_COORD, V_CPL_COORD,
+    V_SURF_COORD, V_SURF_KIND, V_SURF_BODY, V_SURF_POINT, V_SURF_NORMAL, V_SURF_RADIUS, V_SURF_PARAM, V_INTER_SURF,
     V_COUNT
 };
 
@@ -169,6 +179,61 @@ static const var_spec var_table[V_COUNT] = {
                       "height of the lowest point of a catenary line",
                       "along the upward direction -g, from the origin; ground contact of the line is not "
                       "modelled (docs/theory.md); NaN for springs"},
+    /* coordinate variables: select by id (xarray: ds.sel(body=2)) */
+    [V_BODY_COORD] = {"body", NC_INT, 1, {D_BODY}, U_ONE, "rigid body identifier (/RBODY id)",
+                      "coordinate variable, same values as body_id"},
+    [V_INTER_COORD] = {"inter", NC_INT, 1, {D_INTER}, U_ONE, "contact interface identifier (/INTER id)",
+                       "coordinate variable, same values as inter_id"},
+    [V_CPL_COORD] = {"coupling", NC_INT, 1, {D_COUPLING}, U_ONE, "body coupling identifier (/COUPLING id)",
+                     "coordinate variable, same values as coupling_id"},
+    /* surface geometry, in the frame of the carrying body */
+    [V_SURF_COORD] = {"surface", NC_INT, 1, {D_SURF}, U_ONE, "surface identifier (/SURF id)",
+                      "coordinate variable"},
+    [V_SURF_KIND] = {"surface_kind", NC_STRING, 1, {D_SURF}, U_ONE, "kind of analytic surface",
+                     "PLANE, SPHERE, CYLINDER or BOX"},
+    [V_SURF_BODY] = {"surface_body", NC_INT, 1, {D_SURF}, U_ONE, "/RBODY id of the body carrying the surface",
+                     "-1: fixed in space (global frame)"},
+    [V_SURF_POINT] = {"surface_point", NC_DOUBLE, 2, {D_SURF, D_VEC3}, U_LENGTH,
+                      "reference point of the surface",
+                      "body frame, from the centre of mass: plane point, sphere centre, cylinder or box centre"},
+    [V_SURF_NORMAL] = {"surface_normal", NC_DOUBLE, 2, {D_SURF, D_VEC3}, U_ONE,
+                       "unit outward normal (plane) or axis (cylinder)", "body frame; 0 for spheres and boxes"},
+    [V_SURF_RADIUS] = {"surface_radius", NC_DOUBLE, 1, {D_SURF}, U_LENGTH, "radius of a sphere or cylinder",
+                       "0 for planes and boxes"},
+    [V_SURF_PARAM] = {"surface_parameters", NC_DOUBLE, 2, {D_SURF, D_SPARAM}, U_ONE,
+                      "extra parameters of cylinders and boxes",
+                      "cylinder: [0] half-length [m], [1] ends (0 flat, 1 rounded), [2] contact point (0 "
+                      "mid-length, 1 deepest); box: [0..2] half-sizes [m], [3..11] unit axes u, v, w (body "
+                      "frame); 0 otherwise"},
+    [V_INTER_SURF] = {"inter_surface", NC_INT, 2, {D_INTER, D_SIDE}, U_ONE,
+                      "surface ids of the interface", "first and second surface (normal from the first to the second)"},
+};
+
+/* Impacts table (dimension impact), defined and written at close. */
+enum { I_INTER, I_CLOSE, I_OPEN, I_DURATION, I_PEN, I_TPEN, I_FN, I_TFN, I_VIN, I_VOUT, I_COR, I_ELOST, I_COUNT };
+static const struct {
+    const char *name;
+    int unit; /* U_* */
+    const char *long_name;
+    const char *comment;
+} impact_table[I_COUNT] = {
+    [I_INTER] = {"impact_inter", U_ONE, "contact interface of the impact (/INTER id)", NULL},
+    [I_CLOSE] = {"impact_close_time", U_TIME, "time the contact closes", "event contact_close"},
+    [I_OPEN] = {"impact_open_time", U_TIME, "time the normal force stops acting for the last time",
+                "contact_open (released) or contact_separate; NaN: still acting at the end of the run"},
+    [I_DURATION] = {"impact_duration", U_TIME, "contact duration (open time - close time)", NULL},
+    [I_PEN] = {"impact_max_penetration", U_LENGTH, "maximum penetration P during the impact",
+               "tracked at every integrator step (interpolant sampled at 4 points per step)"},
+    [I_TPEN] = {"impact_max_penetration_time", U_TIME, "time of the maximum penetration", NULL},
+    [I_FN] = {"impact_peak_force", U_FORCE, "peak total normal force during the impact",
+              "tracked at every integrator step (interpolant sampled at 4 points per step)"},
+    [I_TFN] = {"impact_peak_force_time", U_TIME, "time of the peak normal force", NULL},
+    [I_VIN] = {"impact_speed_in", U_VELOCITY, "approach speed dP/dt when the contact closes", NULL},
+    [I_VOUT] = {"impact_speed_out", U_VELOCITY, "separation speed -dP/dt when P returns to 0",
+                "NaN: not separated by the end of the run"},
+    [I_COR] = {"impact_restitution", U_ONE, "coefficient of restitution speed_out / speed_in", NULL},
+    [I_ELOST] = {"impact_energy_lost", U_ENERGY, "energy dissipated in the impact",
+                 "contact damping + hysteresis + friction dissipation from closing to separation"},
 };
 
 struct rc_output {
@@ -198,6 +263,8 @@ struct rc_output {
     dev_t dev;            /* the file created (device, inode) */
     ino_t ino;
     int stopped;          /* no room for the next block: nothing more written, the file is whole */
+    int nimpact;          /* impacts table (rc_output_impacts), written at close */
+    rc_impact *impact;
     int broken;           /* a netCDF write failed: the handle is abandoned */
 };
 
@@ -330,6 +397,13 @@ static int var_uses_dim(int v, int d)
     return 0;
 }
 
+/* Is variable `v` left out of the file (a dimension of length 0)? */
+static int var_skipped(const rc_output_meta *meta, int v)
+{
+    return (meta->ninter == 0 && (var_uses_dim(v, D_INTER) || var_uses_dim(v, D_SIDE))) ||
+           (meta->ncoupling == 0 && var_uses_dim(v, D_COUPLING)) || (meta->nsurf == 0 && var_uses_dim(v, D_SURF));
+}
+
 /* Define the dimensions, the fixed variables with their attributes, and one
  * variable per energy entry. Interface variables only if ninter > 0. */
 static rc_status define_vars(rc_output *o, const rc_output_meta *meta, rc_error *err)
@@ -337,7 +411,9 @@ static rc_status define_vars(rc_output *o, const rc_output_meta *meta, rc_error 
     rc_status rc = RC_OK;
     /* dimensions */
     for (int d = 0; d < D_COUNT; d++) {
-        if ((d == D_INTER && meta->ninter == 0) || (d == D_COUPLING && meta->ncoupling == 0)) continue;
+        if (((d == D_INTER || d == D_SIDE) && meta->ninter == 0) || (d == D_COUPLING && meta->ncoupling == 0) ||
+            ((d == D_SURF || d == D_SPARAM) && meta->nsurf == 0))
+            continue;
         size_t len = (d == D_TIME || d == D_EVENT) ? NC_UNLIMITED : o->dimlen[d];
         NC_TRY(o->path, nc_def_dim(o->ncid, dim_name[d], len, &o->dimid[d]),
                "defining dimension %s", dim_name[d]);
@@ -346,15 +422,29 @@ static rc_status define_vars(rc_output *o, const rc_output_meta *meta, rc_error 
     for (int v = 0; v < V_COUNT; v++) {
         const var_spec *s = &var_table[v];
         o->var[v] = -1;
-        if (meta->ninter == 0 && var_uses_dim(v, D_INTER)) continue;
-        if (meta->ncoupling == 0 && var_uses_dim(v, D_COUPLING)) continue;
+        if (var_skipped(meta, v)) continue;
         rc = def_var(o, s->name, s->type, s->ndims, s->dim, o->unit[s->unit], s->long_name,
                      &o->var[v], &o->chunk_rec[v], err);
         if (rc == RC_OK && s->comment) rc = put_text(o, o->var[v], "comment", s->comment, err);
         if (rc != RC_OK) return rc;
     }
+    /* CF time axis: a reference time is required; simulated time 0 is put
+     * at RC_OUT_TIME_ORIGIN (proleptic Gregorian), so CF tools decode it as
+     * dates from there while the stored values stay seconds since the start */
+    {
+        char tu[RC_OUT_UNIT_LEN + 64];
+        snprintf(tu, sizeof tu, "%s since %s", !strcmp(o->unit[U_TIME], "s") ? "seconds" : o->unit[U_TIME],
+                 RC_OUT_TIME_ORIGIN);
+        rc = put_text(o, o->var[V_TIME], "units", tu, err);
+    }
+    if (rc == RC_OK) rc = put_text(o, o->var[V_TIME], "calendar", "proleptic_gregorian", err);
+    if (rc == RC_OK)
+        rc = put_text(o, o->var[V_TIME], "comment",
+                      "simulated time from the start of the run; the reference date " RC_OUT_TIME_ORIGIN
+                      " is a convention marking t = 0 (values are seconds since the start; xarray: "
+                      "decode_times=False keeps them as seconds)", err);
     /* CF extras: standard name of time, flags of the contact mode */
-    rc = put_text(o, o->var[V_TIME], "standard_name", "time", err);
+    if (rc == RC_OK) rc = put_text(o, o->var[V_TIME], "standard_name", "time", err);
     if (rc == RC_OK) rc = put_text(o, o->var[V_TIME], "axis", "T", err);
     if (rc != RC_OK) return rc;
     if (o->var[V_INTER_MODE] >= 0) {
@@ -375,6 +465,58 @@ static rc_status define_vars(rc_output *o, const rc_output_meta *meta, rc_error 
         if (rc != RC_OK) return rc;
     }
     return RC_OK;
+}
+
+/* The command line of this process (/proc/self/cmdline, arguments joined
+ * by spaces, quoted when they hold a space); "unknown" when unreadable. */
+static void command_line(char *buf, size_t n)
+{
+    snprintf(buf, n, "unknown");
+    FILE *f = fopen("/proc/self/cmdline", "rb");
+    if (!f) return;
+    char raw[4096];
+    size_t len = fread(raw, 1, sizeof raw - 1, f);
+    fclose(f);
+    if (len == 0) return;
+    raw[len] = '\0';
+    size_t k = 0, w = 0;
+    buf[0] = '\0';
+    while (k < len && w + 1 < n) {
+        const char *arg = raw + k;
+        const int q = strchr(arg, ' ') != NULL || *arg == '\0';
+        w += (size_t)snprintf(buf + w, n - w, "%s%s%s%s", w ? " " : "", q ? "'" : "", arg, q ? "'" : "");
+        k += strlen(arg) + 1;
+    }
+}
+
+/* Provenance: command line, version, commit, and the SHA-256 of every input
+ * file as lines "<sha256>  <path>" (the format of sha256sum -c). */
+static rc_status define_provenance(rc_output *o, const rc_output_meta *meta, rc_error *err)
+{
+    char cmd[4096];
+    command_line(cmd, sizeof cmd);
+    rc_status rc = put_text(o, NC_GLOBAL, "command_line", cmd, err);
+    if (rc == RC_OK) rc = put_text(o, NC_GLOBAL, "ricochet_version", rc_version(), err);
+    if (rc == RC_OK) rc = put_text(o, NC_GLOBAL, "ricochet_commit", RC_COMMIT, err);
+    if (rc != RC_OK) return rc;
+    const char *one[1] = {meta->case_path};
+    const int nf = meta->nfile > 0 && meta->file ? meta->nfile : 1;
+    const char *const *files = meta->nfile > 0 && meta->file ? meta->file : one;
+    size_t cap = 1;
+    for (int i = 0; i < nf; i++) cap += strlen(str_or_empty(files[i])) + 68;
+    char *list = malloc(cap);
+    if (!list) RC_RAISE(err, RC_ENOMEM, "output: out of memory for the input checksums");
+    size_t w = 0;
+    list[0] = '\0';
+    for (int i = 0; i < nf; i++) {
+        char hex[65];
+        if (rc_sha256_file(str_or_empty(files[i]), hex) != 0) snprintf(hex, sizeof hex, "unreadable");
+        if (i == 0) rc = put_text(o, NC_GLOBAL, "case_sha256", hex, err);
+        w += (size_t)snprintf(list + w, cap - w, "%s%s  %s", i ? "\n" : "", hex, str_or_empty(files[i]));
+    }
+    if (rc == RC_OK) rc = put_text(o, NC_GLOBAL, "input_files_sha256", list, err);
+    free(list);
+    return rc;
 }
 
 /* Global attributes describing the run; complete="no" until closed. */
@@ -411,6 +553,16 @@ static rc_status define_globals(rc_output *o, const rc_output_meta *meta, rc_err
     if (rc == RC_OK) rc = put_double(o, "atol_angular_velocity", meta->atol_omega, err);
     if (rc == RC_OK) rc = put_double(o, "atol_energy", meta->atol_energy, err);
     if (rc == RC_OK && meta->event_records) rc = put_text(o, NC_GLOBAL, "event_records", meta->event_records, err);
+    if (rc == RC_OK) rc = put_text(o, NC_GLOBAL, "tolerances_derived", meta->tol_derived, err);
+    if (rc == RC_OK) rc = put_int64(o, "max_order", meta->max_order, err);
+    if (rc == RC_OK) rc = put_int64(o, "max_steps", meta->max_steps, err);
+    if (rc == RC_OK) rc = put_double(o, "hmax", meta->hmax, err);
+    if (rc == RC_OK) rc = put_double(o, "h0", meta->h0, err);
+    if (rc == RC_OK) rc = put_double(o, "t_end", meta->t_end, err);
+    if (rc == RC_OK) rc = put_double(o, "dt_out", meta->dt_out, err);
+    if (rc == RC_OK && meta->sampling_note && *meta->sampling_note)
+        rc = put_text(o, NC_GLOBAL, "sampling_note", meta->sampling_note, err);
+    if (rc == RC_OK) rc = define_provenance(o, meta, err);
     if (rc != RC_OK) return rc;
 
     /* provenance and completion */
@@ -445,6 +597,43 @@ static rc_status write_static(rc_output *o, const rc_output_meta *meta, rc_error
            "writing body_id");
     NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_BODY_FIXED], meta->body_fixed),
            "writing body_fixed");
+    NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_BODY_COORD], meta->body_id), "writing body");
+    if (meta->ninter > 0) NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_INTER_COORD], meta->inter_id), "writing inter");
+    if (meta->ncoupling > 0)
+        NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_CPL_COORD], meta->coupling_id), "writing coupling");
+    if (meta->nsurf > 0) {
+        const size_t ns = (size_t)meta->nsurf;
+        int *body = malloc(ns * sizeof *body);
+        if (!body) RC_RAISE(err, RC_ENOMEM, "output: out of memory writing the surfaces");
+        for (size_t k = 0; k < ns; k++) {
+            const int b = meta->surf_body[k];
+            body[k] = b >= 0 && b < meta->nbody ? meta->body_id[b] : -1;
+        }
+        int st = nc_put_var_int(o->ncid, o->var[V_SURF_BODY], body);
+        free(body);
+        if (st != NC_NOERR) return nc_fail(err, __LINE__, __func__, o->path, st, "writing surface_body");
+        NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_SURF_COORD], meta->surf_id), "writing surface");
+        NC_TRY(o->path, nc_put_var_double(o->ncid, o->var[V_SURF_POINT], meta->surf_point), "writing surface_point");
+        NC_TRY(o->path, nc_put_var_double(o->ncid, o->var[V_SURF_NORMAL], meta->surf_normal),
+               "writing surface_normal");
+        NC_TRY(o->path, nc_put_var_double(o->ncid, o->var[V_SURF_RADIUS], meta->surf_radius),
+               "writing surface_radius");
+        NC_TRY(o->path, nc_put_var_double(o->ncid, o->var[V_SURF_PARAM], meta->surf_param),
+               "writing surface_parameters");
+        rc_status rc = put_strings(o, V_SURF_KIND, ns, meta->surf_kind, err);
+        if (rc != RC_OK) return rc;
+        if (meta->ninter > 0 && meta->inter_surf) {
+            int *is = malloc(2 * (size_t)meta->ninter * sizeof *is);
+            if (!is) RC_RAISE(err, RC_ENOMEM, "output: out of memory writing inter_surface");
+            for (int k = 0; k < 2 * meta->ninter; k++) {
+                const int sf = meta->inter_surf[k];
+                is[k] = sf >= 0 && sf < meta->nsurf ? meta->surf_id[sf] : -1;
+            }
+            st = nc_put_var_int(o->ncid, o->var[V_INTER_SURF], is);
+            free(is);
+            if (st != NC_NOERR) return nc_fail(err, __LINE__, __func__, o->path, st, "writing inter_surface");
+        }
+    }
     if (meta->ninter > 0) {
         NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_INTER_ID], meta->inter_id),
                "writing inter_id");
@@ -469,7 +658,9 @@ static rc_status check_meta(const rc_output_meta *meta, rc_error *err)
     if (!meta->body_id || !meta->body_fixed ||
         (meta->ninter > 0 && (!meta->inter_id || !meta->inter_type)) ||
         (meta->ncoupling > 0 && (!meta->coupling_id || !meta->coupling_type)) ||
-        (meta->nenergy > 0 && (!meta->energy_name || !meta->energy_long)))
+        (meta->nenergy > 0 && (!meta->energy_name || !meta->energy_long)) || meta->nsurf < 0 ||
+        (meta->nsurf > 0 && (!meta->surf_id || !meta->surf_kind || !meta->surf_body || !meta->surf_point ||
+                             !meta->surf_normal || !meta->surf_radius || !meta->surf_param)))
         RC_RAISE(err, RC_EINTERNAL, "output: meta array missing for a non-zero count");
     return RC_OK;
 }
@@ -482,9 +673,7 @@ static int alloc_buffer(rc_output *o, const rc_output_meta *meta)
     size_t total = (size_t)meta->nenergy * sizeof(double);
     for (int v = 0; v < V_COUNT; v++) {
         const var_spec *s = &var_table[v];
-        if (s->dim[0] != D_TIME || (meta->ninter == 0 && var_uses_dim(v, D_INTER)) ||
-            (meta->ncoupling == 0 && var_uses_dim(v, D_COUPLING)))
-            continue;
+        if (s->dim[0] != D_TIME || var_skipped(meta, v)) continue;
         size_t n = s->type == NC_INT ? sizeof(int) : sizeof(double);
         for (int i = 1; i < s->ndims; i++) n *= o->dimlen[s->dim[i]];
         o->rec_size[v] = n;
@@ -516,6 +705,7 @@ static void output_free(rc_output *o)
     for (int v = 0; v < V_COUNT; v++) free(o->buf[v]);
     free(o->ebuf);
     free(o->ev_num);
+    free(o->impact);
     for (size_t i = 0; i < o->nevbuf; i++) {
         free(o->ev_str[0][i]);
         free(o->ev_str[1][i]);
@@ -627,7 +817,8 @@ rc_status rc_output_open(rc_output **out, const char *path, const rc_output_meta
     }
     strcpy(o->path, path);
     o->nenergy = meta->nenergy;
-    const size_t len[D_COUNT] = {1, (size_t)meta->nbody, (size_t)meta->ninter, 3, 4, 1, (size_t)meta->ncoupling};
+    const size_t len[D_COUNT] = {1, (size_t)meta->nbody, (size_t)meta->ninter, 3, 4, 1, (size_t)meta->ncoupling,
+                                 (size_t)meta->nsurf, RC_OUT_SURF_NPARAM, 2};
     memcpy(o->dimlen, len, sizeof len);
     derive_units(o, meta);
     if (!alloc_buffer(o, meta)) {
@@ -844,6 +1035,68 @@ static rc_status write_final(rc_output *o, const rc_stats *st, int complete, con
     return rc;
 }
 
+rc_status rc_output_impacts(rc_output *o, int n, const rc_impact *rows, rc_error *err)
+{
+    rc_impact *c = NULL;
+    if (n > 0) {
+        c = malloc((size_t)n * sizeof *c);
+        if (!c) RC_RAISE(err, RC_ENOMEM, "output: out of memory for %d impacts", n);
+        memcpy(c, rows, (size_t)n * sizeof *c);
+    }
+    free(o->impact);
+    o->impact = c;
+    o->nimpact = n > 0 ? n : 0;
+    return RC_OK;
+}
+
+/* The impacts table: dimension impact (unlimited, so that an empty table
+ * is allowed), one variable per column; varid[I_COUNT] receives the ids.
+ * Only in files with interfaces. Define mode. */
+static rc_status define_impacts(rc_output *o, int *varid, rc_error *err)
+{
+    int dim;
+    NC_TRY(o->path, nc_def_dim(o->ncid, "impact", NC_UNLIMITED, &dim), "defining dimension impact");
+    for (int c = 0; c < I_COUNT; c++) {
+        NC_TRY(o->path, nc_def_var(o->ncid, impact_table[c].name, c == I_INTER ? NC_INT : NC_DOUBLE, 1, &dim, &varid[c]),
+               "defining %s", impact_table[c].name);
+        rc_status rc = put_text(o, varid[c], "units", o->unit[impact_table[c].unit], err);
+        if (rc == RC_OK) rc = put_text(o, varid[c], "long_name", impact_table[c].long_name, err);
+        if (rc == RC_OK && impact_table[c].comment) rc = put_text(o, varid[c], "comment", impact_table[c].comment, err);
+        if (rc != RC_OK) return rc;
+    }
+    return RC_OK;
+}
+
+/* Write the impact rows (data mode). */
+static rc_status write_impacts(rc_output *o, const int *varid, rc_error *err)
+{
+    const size_t n = (size_t)o->nimpact, start[1] = {0}, count[1] = {n};
+    if (n == 0) return RC_OK;
+    double *col = malloc(n * sizeof *col);
+    int *ids = malloc(n * sizeof *ids);
+    if (!col || !ids) {
+        free(col);
+        free(ids);
+        RC_RAISE(err, RC_ENOMEM, "output: out of memory writing the impacts");
+    }
+    int st = NC_NOERR, c = 0;
+    for (size_t k = 0; k < n; k++) ids[k] = o->impact[k].inter_id;
+    st = nc_put_vara_int(o->ncid, varid[I_INTER], start, count, ids);
+    for (c = 1; c < I_COUNT && st == NC_NOERR; c++) {
+        for (size_t k = 0; k < n; k++) {
+            const rc_impact *r = &o->impact[k];
+            const double v[I_COUNT] = {0, r->t_close, r->t_open, r->duration, r->pen_max, r->t_pen_max, r->fn_max,
+                                       r->t_fn_max, r->v_in, r->v_out, r->restitution, r->energy_lost};
+            col[k] = v[c];
+        }
+        st = nc_put_vara_double(o->ncid, varid[c], start, count, col);
+    }
+    free(col);
+    free(ids);
+    if (st != NC_NOERR) return nc_fail(err, __LINE__, __func__, o->path, st, "writing the impacts table");
+    return RC_OK;
+}
+
 rc_status rc_output_close(rc_output *o, const rc_stats *st, int complete, const char *reason,
                           rc_error *err)
 {
@@ -866,8 +1119,12 @@ rc_status rc_output_close(rc_output *o, const rc_stats *st, int complete, const 
     int s = nc_redef(o->ncid);
     if (s != NC_NOERR) rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "entering define mode");
     if (rc2 == RC_OK) rc2 = write_final(o, st, complete && ok && !o->stopped, ok ? reason : err->msg, e);
+    int impact_var[I_COUNT];
+    const int impacts = o->var[V_INTER_ID] >= 0;
+    if (rc2 == RC_OK && impacts) rc2 = define_impacts(o, impact_var, e);
     if (rc2 == RC_OK && (s = nc_enddef(o->ncid)) != NC_NOERR)
         rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "ending definitions");
+    if (rc2 == RC_OK && impacts) rc2 = write_impacts(o, impact_var, e);
     if (rc2 != RC_OK) {
         output_abandoned = 1;
     } else if ((s = nc_close(o->ncid)) != NC_NOERR) {

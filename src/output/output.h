@@ -32,7 +32,34 @@ typedef struct rc_output_meta {
     const int *coupling_id;   /* [ncoupling] /COUPLING ids                 */
     const char *const *coupling_type; /* [ncoupling] "SPRING" or "CATENARY" */
     const char *event_records; /* global attribute event_records (NULL: none) */
+    /* provenance: the files read (0: the case file, then its includes),
+     * hashed with SHA-256 at open; NULL/0: the case_path alone */
+    int nfile;
+    const char *const *file;
+    /* every solver setting */
+    int max_order;            /* BDF order limit [-]                       */
+    long max_steps;           /* steps between two output times [-]        */
+    double hmax, h0;          /* step bounds, 0: CVODE's choice [s]         */
+    double t_end, dt_out;     /* /RUN [s]                                  */
+    const char *tol_derived;  /* which tolerances were derived from the
+                                 model's scales ("" none)                  */
+    const char *sampling_note; /* non-NULL: global attribute sampling_note */
+    /* surfaces: kind ("PLANE", "SPHERE", "CYLINDER", "BOX"), carrying body
+     * index (-1: fixed in space), local point, local normal or axis,
+     * radius, RC_OUT_SURF_NPARAM extra parameters (model.h surf_ext) */
+    int nsurf;
+    const int *surf_id;
+    const char *const *surf_kind;
+    const int *surf_body;
+    const double *surf_point;  /* [nsurf*3] body frame [m]                 */
+    const double *surf_normal; /* [nsurf*3] body frame [-]                 */
+    const double *surf_radius; /* [nsurf] [m]                              */
+    const double *surf_param;  /* [nsurf*RC_OUT_SURF_NPARAM]               */
+    const int *inter_surf;     /* [ninter*2] surface indices of each interface */
 } rc_output_meta;
+
+/* Extra parameters of a surface in the file (variable surface_parameters). */
+#define RC_OUT_SURF_NPARAM 12
 
 /* Interface modes as stored in the file (variable inter_mode). */
 enum { RC_OUT_MODE_INACTIVE = 0, RC_OUT_MODE_OPEN = 1, RC_OUT_MODE_CLOSED = 2, RC_OUT_MODE_RELEASED = 3 };
@@ -80,6 +107,9 @@ rc_status rc_output_event(rc_output *o, double t, const char *kind, const char *
  * total normal force just after the event [N]; NULL: not an interface (NaN). */
 rc_status rc_output_event_values(rc_output *o, double t, const char *kind, const char *element,
                                  const double values[3], rc_error *err);
+/* The impacts table (rc_impact rows), written at close; replaces an
+ * earlier table. The rows are copied. */
+rc_status rc_output_impacts(rc_output *o, int n, const rc_impact *rows, rc_error *err);
 /* Write statistics and completion attributes, close, free. `complete` 0
  * marks the file incomplete with `reason`. o == NULL is a no-op. */
 rc_status rc_output_close(rc_output *o, const rc_stats *st, int complete, const char *reason,

@@ -31,6 +31,7 @@
 #include "model/imposed.h"
 #include "output/output.h"
 #include "model/power.h"
+#include "solver/impacts.h"
 #include "solver/solver.h"
 
 /* A jump in ydot whose effect over one step, relative to the error weight,
@@ -224,7 +225,7 @@ static rc_status write_event(const rc_model *m, const rc_data *d, rc_output *o, 
  * Writes the events; returns their number (*jumped is set when history
  * states were reset). */
 static int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double *f, rc_output *out,
-                            long *nevents, int *jumped, rc_status *st, rc_error *err)
+                            rc_impacts *im, long *nevents, int *jumped, rc_status *st, rc_error *err)
 {
     int total = 0;
     *st = RC_OK;
@@ -238,6 +239,7 @@ static int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, 
         *jumped |= jmp;
         total += nev;
         *nevents += nev;
+        for (int k = 0; k < nev && k < RC_MAX_EV; k++) rc_impacts_event(im, m, d, ev[k].inter, ev[k].kind, t, y);
         for (int k = 0; k < nev && k < RC_MAX_EV && out; k++)
             if ((*st = write_event(m, d, out, t, y, &ev[k], err))) return total;
         if (nev == 0) break;
@@ -414,10 +416,54 @@ static const char *const energy_long[RC_NENERGY] = {
     "energy dissipated by the coupling dampers",
     "elastic and gravitational energy of the catenary lines (work done by their ends)",
     "minus the work done on the bodies by the imposed velocities (/IMPVEL reactions)",
-    "kinetic + potential + contact work + damping + friction work + couplings + imposed (constant in exact "
-    "arithmetic)"};
+    ("kinetic + potential + contact work + damping + friction work + couplings + imposed (constant in exact "
+     "arithmetic)")};
 
-static rc_status open_output(const rc_model *m, const char *path, rc_output **o, rc_error *err)
+/* Sample the last step over (t_prev, t] at 4 points of CVODE's interpolant
+ * for the impacts in progress (peak force, maximum penetration); the part
+ * of the interval before the last step (right after a root return) is not
+ * covered by the interpolant any more and is skipped. */
+static void sample_step(void *cv, rc_impacts *im, const rc_model *m, const rc_data *d, double t_prev, double t,
+                        N_Vector ys)
+{
+    double tn = t, hu = 0.0;
+    if (!rc_impacts_active(im) || CVodeGetCurrentTime(cv, &tn) != CV_SUCCESS ||
+        CVodeGetLastStep(cv, &hu) != CV_SUCCESS)
+        return;
+    const double lo = fmax(t_prev, tn - hu);
+    if (!(t > lo)) return;
+    for (int k = 1; k <= 4; k++) {
+        const double tk = k == 4 ? t : lo + 0.25 * k * (t - lo);
+        if (CVodeGetDky(cv, tk, 0, ys) != CV_SUCCESS) return;
+        rc_impacts_sample(im, m, d, tk, N_VGetArrayPointer(ys));
+    }
+}
+
+/* Output times strictly before t (not within rounding of it) that a single
+ * step passed before stopping at an event or a breakpoint at t: their
+ * records, from the interpolant of that step, in the modes before the
+ * event. Advances *tout and *nout. */
+static rc_status outputs_before(void *cv, const rc_model *m, const rc_data *d, rc_output *o, frame_buf *fb, double t,
+                                double tend, double *tout, long *nout, N_Vector ytmp, rc_error *err)
+{
+    while (*tout < t && t - *tout > 1e-12 * fmax(fabs(t), m->dtout)) {
+        if (CVodeGetDky(cv, *tout, 0, ytmp) != CV_SUCCESS)
+            RC_RAISE(err, RC_ESOLVER, "CVODE interpolation at the output time %.9g s failed", *tout);
+        rc_status st = write_frame(m, d, o, fb, *tout, N_VGetArrayPointer(ytmp), 0, err);
+        if (st) return st;
+        (*nout)++;
+        const double next = fmin(*nout * m->dtout, tend);
+        if (next <= *tout) break;
+        *tout = next;
+        if (tend - *tout < 1e-12 * tend) *tout = tend;
+    }
+    return RC_OK;
+}
+
+_Static_assert(RC_SURF_NEXT == RC_OUT_SURF_NPARAM, "surface parameters: model and file disagree");
+static const char *const surf_kind_name[] = {"", "PLANE", "SPHERE", "CYLINDER", "BOX"};
+
+static rc_status open_output(const rc_model *m, const char *path, const char *note, rc_output **o, rc_error *err)
 {
     *o = NULL;
     if (!path) return RC_OK;
@@ -428,7 +474,49 @@ static rc_status open_output(const rc_model *m, const char *path, rc_output **o,
                            "CVODE BDF, Newton, KLU sparse direct, rootfinding", m->rtol, m->atol_pos,
                            m->atol_quat, m->atol_vel, m->atol_omega, m->atol_energy, m->nbody, m->body_id,
                            m->body_fixed, m->ninter, m->inter_id, types, RC_NENERGY, energy_name, energy_long,
-                           m->cpl->n, m->cpl->id, m->cpl->type, NULL};
+                           m->cpl->n, m->cpl->id, m->cpl->type, NULL, .nfile = 0};
+    /* provenance, every solver setting, the surfaces */
+    meta.nfile = m->nfile;
+    meta.file = (const char *const *)m->file;
+    meta.max_order = m->max_order;
+    meta.max_steps = m->max_steps;
+    meta.hmax = m->hmax;
+    meta.h0 = m->h0;
+    meta.t_end = m->tend;
+    meta.dt_out = m->dtout;
+    char derived[128] = "";
+    static const char *const tol_name[5] = {"atol_position", "atol_quaternion", "atol_velocity",
+                                            "atol_angular_velocity", "atol_energy"};
+    for (int k = 0; k < 5; k++)
+        if (m->tol_auto & (1 << k))
+            snprintf(derived + strlen(derived), sizeof derived - strlen(derived), "%s%s", derived[0] ? " " : "",
+                     tol_name[k]);
+    meta.tol_derived = derived[0] ? derived : "none (all given in /SOLVER)";
+    meta.sampling_note = note;
+    const char **kinds = malloc(((size_t)m->nsurf + 1) * sizeof *kinds);
+    int *isurf = malloc((2 * (size_t)m->ninter + 1) * sizeof *isurf);
+    if (!kinds || !isurf) {
+        free(kinds);
+        free(isurf);
+        free(types);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    for (int k = 0; k < m->nsurf; k++)
+        kinds[k] = m->surf_kind[k] >= RC_SURF_PLANE && m->surf_kind[k] <= RC_SURF_BOX ? surf_kind_name[m->surf_kind[k]]
+                                                                                    : "UNKNOWN";
+    for (int i = 0; i < m->ninter; i++) {
+        isurf[2 * i] = m->inter_sa[i];
+        isurf[2 * i + 1] = m->inter_sb[i];
+    }
+    meta.nsurf = m->nsurf;
+    meta.surf_id = m->surf_id;
+    meta.surf_kind = kinds;
+    meta.surf_body = m->surf_body;
+    meta.surf_point = m->surf_p;
+    meta.surf_normal = m->surf_n;
+    meta.surf_radius = m->surf_r;
+    meta.surf_param = m->surf_ext;
+    meta.inter_surf = isurf;
     char evrec[160];
     const int full = rc_event_records(m);
     if (m->ev_state == 0)
@@ -441,6 +529,8 @@ static rc_status open_output(const rc_model *m, const char *path, rc_output **o,
     meta.event_records = evrec;
     rc_status st = rc_output_open(o, path, &meta, err);
     free(types);
+    free(kinds);
+    free(isurf);
     return st;
 }
 
@@ -591,7 +681,11 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
     rc_stats s;
     memset(&s, 0, sizeof s);
     SUNContext ctx = NULL;
-    N_Vector y = NULL, av = NULL, f0 = NULL, f1 = NULL, ytn = NULL;
+    N_Vector y = NULL, av = NULL, f0 = NULL, f1 = NULL, ytn = NULL, ysamp = NULL;
+    rc_impacts im;
+    memset(&im, 0, sizeof im);
+    char note[sizeof s.sampling_note];
+    rc_impacts_sampling_note(m, note, sizeof note);
     int *old_mode = NULL, *old_branch = NULL, *old_track = NULL, *old_slip = NULL, *rootdir = NULL;
     double *gbuf = NULL, *g2buf = NULL, *ylook = NULL, *flook = NULL, *bp = NULL, *zeno_t = NULL;
     int *zeno_n = NULL;
@@ -626,6 +720,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
     f0 = N_VNew_Serial(m->ny, ctx);
     f1 = N_VNew_Serial(m->ny, ctx);
     ytn = N_VNew_Serial(m->ny, ctx);
+    ysamp = N_VNew_Serial(m->ny, ctx);
     old_mode = calloc((size_t)m->ninter + 1, sizeof(int));
     old_branch = calloc((size_t)m->ninter + 1, sizeof(int));
     old_track = calloc((size_t)m->ninter + 1, sizeof(int));
@@ -639,7 +734,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
     flook = calloc((size_t)m->ny, sizeof(double));
     A = SUNSparseMatrix(m->ny, m->ny, m->nnz, CSC_MAT, ctx);
     roots = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(int));
-    if (!y || !av || !f0 || !f1 || !ytn || !old_mode || !old_branch || !old_track || !old_slip || !rootdir || !gbuf || !A ||
+    if (rc_impacts_init(&im, m) || !ysamp || !y || !av || !f0 || !f1 || !ytn || !old_mode || !old_branch || !old_track || !old_slip || !rootdir || !gbuf || !A ||
         !roots || !g2buf || !ylook || !flook || !zeno_t || !zeno_n) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the solver");
         goto done;
@@ -654,10 +749,10 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
     rc_initial_state(m, yd);
     memcpy(N_VGetArrayPointer(av), m->atol, (size_t)m->ny * sizeof(double));
     rc_modes_init(m, d, t, yd);
-    if ((st = open_output(m, opt ? opt->output_path : NULL, &out, err))) goto done;
+    if ((st = open_output(m, opt ? opt->output_path : NULL, note, &out, err))) goto done;
     {
         int jmp = 0;
-        resolve_touching(m, d, t, yd, flook, out, &s.events, &jmp, &st, err);
+        resolve_touching(m, d, t, yd, flook, out, &im, &s.events, &jmp, &st, err);
         if (st) goto done;
     }
 
@@ -703,13 +798,19 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
     long nout = 1;
     double tout = fmin(m->dtout, tend);
     int fresh = 0; /* modes changed without a restart: the Jacobian is stale */
+    double t_prev = t; /* where the last CVode call ended [s] */
+    long single = 0;   /* single steps since the last output time */
     while (t < tend) {
         /* after such a change, one internal step with a forced linear solver
          * setup and a new Jacobian: a stale Jacobian of the old mode (a
          * contact stiffness that is gone, a viscous friction term that
          * saturated) can make Newton's first small correction pass the
          * convergence test with a wrong solution */
-        const int one_step = fresh;
+        /* single steps also while an impact is in progress: its peak force
+         * and maximum penetration are tracked at every step (sample_step);
+         * /SOLVER Max_steps then bounds the single steps between two output
+         * times, as CVODE bounds the steps of one call */
+        const int one_step = fresh || rc_impacts_active(&im);
         long nst_before = 0, nst_after = 0;
         if (fresh) {
             CVCHECK(CVodeSetLSetupFrequency(cv, 1), "CVodeSetLSetupFrequency");
@@ -733,11 +834,17 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
             st = RC_SET(err, RC_EINTERRUPT, "%s", reason);
             break;
         }
+        if (one_step && flag >= 0 && ++single > m->max_steps) flag = CV_TOO_MUCH_WORK;
+        if (flag >= 0) sample_step(cv, &im, m, d, t_prev, t, ysamp);
+        t_prev = t;
         if (flag < 0) {
             failure_advice(m, d, cv, flag, t, tout, rc.cvmsg, ytn, f0, reason, sizeof reason);
             fail_reason = reason;
             st = RC_SET(err, RC_ESOLVER, "%s", reason);
             break;
+        }
+        if ((flag == CV_TSTOP_RETURN && ibp < nbp && t >= bp[ibp]) || flag == CV_ROOT_RETURN) {
+            if ((st = outputs_before(cv, m, d, out, &fb, t, tend, &tout, &nout, ytn, err))) goto done;
         }
         if (flag == CV_TSTOP_RETURN && ibp < nbp && t >= bp[ibp]) {
             /* a time breakpoint: an imposed velocity ends; restart there */
@@ -779,6 +886,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
             int jumped = 0;
             int nev = rc_events_apply(m, d, t, yd, roots, ev, RC_MAX_EV, &jumped);
             s.events += nev;
+            for (int k = 0; k < nev && k < RC_MAX_EV; k++) rc_impacts_event(&im, m, d, ev[k].inter, ev[k].kind, t, yd);
             for (int k = 0; k < nev && k < RC_MAX_EV && out; k++)
                 if ((st = write_event(m, d, out, t, yd, &ev[k], err))) goto done;
             /* event accumulation: report it rather than stall */
@@ -798,7 +906,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
                 }
             }
             /* contacts left at zero penetration or zero force: by the state */
-            nev += resolve_touching(m, d, t, yd, flook, out, &s.events, &jumped, &st, err);
+            nev += resolve_touching(m, d, t, yd, flook, out, &im, &s.events, &jumped, &st, err);
             if (st) goto done;
             if (nev > 0) CVCHECK(set_root_directions(m, d, cv, rootdir), "CVodeSetRootDirection");
             if (refined > 0 || jumped || (nev > 0 && needs_restart(m, d, cv, old_mode, old_branch, old_track, old_slip, t, yd, ytn, f0, f1)) ||
@@ -829,6 +937,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
                     yo = N_VGetArrayPointer(ytn);
                 }
                 if ((st = write_frame(m, d, out, &fb, tout, yo, 0, err))) goto done;
+                single = 0;
                 nout++;
                 const double next = fmin(nout * m->dtout, tend);
                 if (next <= tout) break;
@@ -851,6 +960,16 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_stat
 
 done:
     if (cv) add_stats(cv, &s);
+    /* the impacts: in the file and, the first ones, in the statistics */
+    rc_impacts_finish(&im);
+    s.impacts = im.n;
+    for (int k = 0; k < im.n && k < RC_STATS_IMPACTS; k++) s.impact[k] = im.row[k];
+    snprintf(s.sampling_note, sizeof s.sampling_note, "%s", note);
+    if (out && st == RC_OK) st = rc_output_impacts(out, im.n, im.row, err);
+    else if (out) {
+        rc_error e3;
+        rc_output_impacts(out, im.n, im.row, &e3);
+    }
     if (st != RC_OK) s.t_end = t; /* how far a failed run got */
     s.wall_time = wall_now() - wall0;
     if (show) fprintf(stderr, "\n");
@@ -871,6 +990,8 @@ done:
     N_VDestroy(f0);
     N_VDestroy(f1);
     N_VDestroy(ytn);
+    N_VDestroy(ysamp);
+    rc_impacts_free(&im);
     free(old_mode);
     free(old_branch);
     free(old_track);

@@ -29,4 +29,15 @@ void rc_stats_print(const rc_stats *s, FILE *f)
             s->err_test_fails, s->root_evals);
     fprintf(f, "events %ld, restarts %ld, simulated %.6g s in %.3f s wall, energy balance residual %.3g J\n",
             s->events, s->reinits, s->t_end, s->wall_time, s->energy_residual);
+    if (s->impacts > 0) {
+        fprintf(f, "impacts %ld%s:\n", s->impacts, s->impacts > RC_STATS_IMPACTS ? " (the first ones; all in the results file)" : "");
+        fprintf(f, "  %-8s %12s %12s %12s %12s %10s %10s %8s %12s\n", "inter", "close [s]", "duration [s]",
+                "max pen [m]", "peak F [N]", "v_in [m/s]", "v_out[m/s]", "e [-]", "E_lost [J]");
+        for (long k = 0; k < s->impacts && k < RC_STATS_IMPACTS; k++) {
+            const rc_impact *r = &s->impact[k];
+            fprintf(f, "  %-8d %12.6g %12.6g %12.5g %12.5g %10.4g %10.4g %8.4f %12.5g\n", r->inter_id, r->t_close,
+                    r->duration, r->pen_max, r->fn_max, r->v_in, r->v_out, r->restitution, r->energy_lost);
+        }
+    }
+    if (s->sampling_note[0]) fprintf(f, "warning: %s\n", s->sampling_note);
 }

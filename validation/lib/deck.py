@@ -64,7 +64,7 @@ class Deck:
     def type6(self, iid, s1, s2, fct_ld, gap=0.0, tstart=None, tstop=None, visc=None,
               ascalex=None, fscaleld=None, iform=0, stiff=None, fct_ul=0, fscaleul=None,
               inacti=0, icor=0, fct_dv=0, fct_df=0, fscalev=None, ascalef=None, ascalev=None,
-              sfric=None, fric=None, fct_ff=0, fct_fv=0, title="contact"):
+              sfric=None, fric=None, fct_ff=0, fct_fv=0, e_target=None, title="contact"):
         self.add(f"/INTER/TYPE6/{iid}",
                  line(("i", s1), ("i", s2)),
                  line(("r", sfric), ("r", fric), ("r", gap), ("r", tstart), ("r", tstop)),
@@ -72,7 +72,7 @@ class Deck:
                       ("r", ascalef), ("r", ascalev)),
                  line(("i", fct_ld), ("i", iform), ("r", ascalex), ("r", fscaleld), ("i", icor)),
                  line(("i", fct_ul), ("i", None), ("r", stiff), ("r", fscaleul)),
-                 line(("r", visc), ("i", fct_dv), ("i", fct_df), ("r", fscalev)), title=title)
+                 line(("r", visc), ("i", fct_dv), ("i", fct_df), ("r", fscalev), ("r", e_target)), title=title)
 
     def inivel(self, iid, v, grnod, rot=False):
         self.add(f"/INIVEL/{'ROT' if rot else 'TRA'}/{iid}",

@@ -93,6 +93,9 @@ class Result:
             self.ev_t = np.array(nc["event_time"][:]) if n else np.zeros(0)
             self.ev_kind = [str(k) for k in nc["event_kind"][:]] if n else []
             self.ev_elem = [str(k) for k in nc["event_element"][:]] if n else []
+            # the interface's approach speed dP/dt at the event [m/s] (NaN
+            # for events of other elements)
+            self.ev_vn = np.array(nc["event_normal_speed"][:]) if n else np.zeros(0)
             self.attrs = {k: nc.getncattr(k) for k in nc.ncattrs()}
             self.energy = {v: np.array(nc[v][:]) for v in nc.variables if v.startswith("energy_")}
 

@@ -1,0 +1,386 @@
+#!/usr/bin/python3
+"""Generate the malformed-deck catalogue from base.rad: one deck per fault,
+NNN_name.rad (plus the extra files some faults need), and expect.tsv with,
+per deck, the file:line the message must name, the card and the field (or,
+for faults outside any field, the substring naming the fault).
+   cd tests/malformed && ./make_catalogue.py
+Each deck is base.rad with exactly one fault; tests/malformed_test.sh runs
+`ricochet check` on each and compares."""
+import glob
+import os
+
+BASE = open('base.rad').read().split('\n')
+if BASE[-1] == '':
+    BASE.pop()
+
+
+def hidx(lines, hdr):
+    """Index of the header line `hdr` (exact text)."""
+    return lines.index(hdr)
+
+
+def cols(line, c1, c2, text):
+    """Put `text` right-justified in columns c1..c2 (1-based, inclusive)."""
+    w = c2 - c1 + 1
+    line = line.ljust(c2)
+    return line[:c1 - 1] + text.rjust(w)[-w:] + line[c2:]
+
+
+TESTS = []
+
+
+def T(name, card, field, edit):
+    TESTS.append((name, card, field, edit))
+
+
+def at(hdr, k, c1=None, c2=None, text=None, line=None, expect_k=None):
+    """Edit line k after header `hdr` (k = 0 the header, 1 the title or the
+    first line of a card without title, ...): columns c1..c2 set to `text`,
+    or the whole line replaced by `line`. The expected line is the edited
+    one, or the line expect_k after the header."""
+    def f(lines):
+        h = hidx(lines, hdr)
+        i = h + k
+        if line is not None:
+            lines[i] = line
+        else:
+            lines[i] = cols(lines[i], c1, c2, text).rstrip()
+        return lines, (h + expect_k if expect_k is not None else i), {}
+    return f
+
+
+def delete(hdr, k, n=1, expect_k=0):
+    def f(lines):
+        h = hidx(lines, hdr)
+        del lines[h + k:h + k + n]
+        return lines, h + expect_k, {}
+    return f
+
+
+def insert(hdr, k, new, expect_k=None):
+    """Insert lines `new` before line k after the header; expected: the first
+    inserted line, or line expect_k after the header."""
+    def f(lines):
+        h = hidx(lines, hdr)
+        lines[h + k:h + k] = new
+        return lines, (h + k if expect_k is None else h + expect_k), {}
+    return f
+
+
+def before_end(new, expect=0):
+    """Insert lines before /END; expected: inserted line number `expect`."""
+    def f(lines):
+        e = hidx(lines, '/END')
+        lines[e:e] = new
+        return lines, e + expect, {}
+    return f
+
+
+def rename(hdr, new):
+    def f(lines):
+        h = hidx(lines, hdr)
+        lines[h] = new
+        return lines, h, {}
+    return f
+
+
+def whole(text, line):
+    """A deck of its own (not derived from base.rad); expected line `line`."""
+    def f(lines):
+        return text.split('\n'), line - 1, {}
+    return f
+
+
+def chain(*edits, expect=-1):
+    """Several edits that make ONE fault (e.g. remove a card and its uses);
+    the expected line is that of edit number `expect`."""
+    def f(lines):
+        res = []
+        for e in edits:
+            lines, i, _ = e(lines)
+            res.append(i)
+        return lines, res[expect], {}
+    return f
+
+
+B = '/BEGIN'
+F1, F2 = '/FUNCT/1', '/FUNCT/2'
+N = '/NODE'
+R1, R2, R3 = '/RBODY/1', '/RBODY/2', '/RBODY/3'
+G1, G2, G3 = '/GRNOD/NODE/1', '/GRNOD/NODE/2', '/GRNOD/NODE/3'
+SE, SP, SC, SB = '/SURF/ELLIPS/1', '/SURF/PLANE/2', '/SURF/CYL/3', '/SURF/BOX/4'
+T6, PW = '/INTER/TYPE6/1', '/INTER/POWER/2'
+IT, IR = '/INIVEL/TRA/1', '/INIVEL/ROT/2'
+GR, BC1, BC2, IV = '/GRAV/1', '/BCS/1', '/BCS/2', '/IMPVEL/1'
+SPR, CAT = '/COUPLING/SPRING/1', '/COUPLING/CATENARY/2'
+P1, P2, GP = '/PART/1', '/PART/2', '/GRPART/PART/1'
+FR, FO = '/FRICTION/1', '/FRIC_ORIENT/1'
+RUN, SOL = '/RUN', '/SOLVER'
+
+# ---- /BEGIN
+T('begin_invers_real', B, 'field Invers', at(B, 2, 1, 10, '2022.5'))
+T('begin_irun_text', B, 'field Irun', at(B, 2, 11, 20, 'one'))
+# ---- /FUNCT
+T('funct_bad_real', F1, 'field Y', at(F1, 3, 21, 40, '1.0e6x'))
+T('funct_nan', F1, 'field X', at(F1, 3, 1, 20, 'nan'))
+T('funct_inf', F1, 'field Y', at(F1, 3, 21, 40, '-inf'))
+T('funct_hex', F1, 'field Y', at(F1, 3, 21, 40, '0x10'))
+T('funct_overflow', F2, 'field Y', at(F2, 3, 21, 40, '1e999'))
+T('funct_letterless_exponent', F2, 'field Y', at(F2, 3, 21, 40, '1.5-3'))
+T('funct_not_increasing', F2, 'field X', at(F2, 4, 1, 20, '0.5'))
+T('funct_equal_abscissae', F2, 'field X', at(F2, 3, 1, 20, '0'))
+T('funct_one_point', F1, 'field X', delete(F1, 3))
+T('funct_dup_id', F1, 'field fct_ID', rename(F2, F1))
+T('funct_no_id', '/FUNCT', 'field fct_ID', rename(F1, '/FUNCT'))
+T('funct_comma_extra', F1, 'comma-separated fields', at(F1, 3, line='1,1000000,7'))
+# ---- /NODE
+T('node_bad_int', N, 'field node_ID', at(N, 1, 1, 10, '1a'))
+T('node_zero_id', N, 'field node_ID', at(N, 1, 1, 10, '0'))
+T('node_int_overflow', N, 'field node_ID', at(N, 1, 1, 10, '2147483648'))
+T('node_real_id', N, 'field node_ID', at(N, 1, 1, 10, '1.0'))
+T('node_inf', N, 'field Z', at(N, 1, 51, 70, 'inf'))
+T('node_dup', N, 'field node_ID', at(N, 4, 1, 10, '3'))
+T('node_unit', '/NODE/3', 'field unit_ID', rename(N, '/NODE/3'))
+T('node_tab', '-', 'tab character', at(N, 2, line='         2\t0\t0\t0.02'))
+# ---- /RBODY
+T('rbody_mass_negative', R1, 'field Mass', at(R1, 2, 41, 60, '-1'))
+T('rbody_mass_zero', R1, 'field Mass', at(R1, 2, 41, 60, '0'))
+T('rbody_mass_blank', R1, 'field Mass', at(R1, 2, 41, 60, ''))
+T('rbody_mass_denormal', R1, 'field Mass', at(R1, 2, 41, 60, '1e-320'))
+T('rbody_mass_nan', R1, 'field Mass', at(R1, 2, 41, 60, 'NaN'))
+T('rbody_jxx_denormal', R1, 'field Jxx', at(R1, 3, 1, 20, '1e-310'))
+T('rbody_jzz_negative', R1, 'field Jzz', at(R1, 3, 41, 60, '-0.001'))
+T('rbody_not_positive_definite', R1, 'Jxx..Jxz', at(R1, 4, 1, 20, '0.002', expect_k=3))
+T('rbody_skew', R1, 'field Skew_ID', at(R1, 2, 21, 30, '3'))
+T('rbody_ispher', R1, 'field Ispher', at(R1, 2, 31, 40, '7'))
+T('rbody_icog', R1, 'field ICoG', at(R1, 2, 81, 90, '2'))
+T('rbody_node_missing', R1, 'field node_ID', at(R1, 2, 1, 10, '99'))
+T('rbody_grnod_missing', R1, 'field grnd_ID', at(R1, 2, 61, 70, '99'))
+T('rbody_same_main_node', R2, 'field node_ID', at(R2, 2, 1, 10, '1'))
+T('rbody_missing_line', R1, 'expected 3 data lines', delete(R1, 4))
+T('rbody_extra_line', R3, 'unexpected data line', insert(R3, 6, ['         1']))
+T('rbody_no_id', '/RBODY', 'field rbody_ID', rename(R1, '/RBODY'))
+T('rbody_dup_id', R1, 'field rbody_ID', rename(R2, R1))
+T('rbody_unit', '/RBODY/1/2', 'field unit_ID', rename(R1, '/RBODY/1/2'))
+T('rbody_title_long', R1, 'field title', at(R1, 1, line='x' * 101))
+T('rbody_comma_mass', R1, 'field Mass', at(R1, 2, line='1,0,0,0,-1'))
+# ---- /GRNOD
+T('grnod_negative', G1, 'field node_ID', at(G1, 2, 1, 10, '-1'))
+T('grnod_text', G1, 'field node_ID', at(G1, 2, 11, 20, 'two'))
+T('grnod_no_subtype', '/GRNOD', 'missing subtype', rename(G1, '/GRNOD'))
+T('grnod_node_no_body', G1, 'field node_ID', at(G1, 2, 11, 20, '77'))
+T('grnod_dup', G2, 'field grnod_ID', rename(G3, G2))
+# ---- /SURF/ELLIPS
+T('ellips_skew', SE, 'field skew_ID', at(SE, 2, 1, 10, '1'))
+T('ellips_degree', SE, 'field n', at(SE, 2, 11, 20, '3'))
+T('ellips_rbody_missing', SE, 'field rbody_ID', at(SE, 2, 21, 30, '9'))
+T('ellips_a_negative', SE, 'field a', at(SE, 4, 1, 20, '-0.05'))
+T('ellips_not_sphere', SE, 'field b', at(SE, 4, 21, 40, '0.06'))
+T('ellips_missing_line', SE, 'expected 3 data lines', delete(SE, 4))
+# ---- /SURF/PLANE
+T('plane_same_points', SP, 'XM1 YM1 ZM1', at(SP, 3, 41, 60, '0'))
+T('plane_rbody_missing', SP, 'field rbody_ID', at(SP, 4, 1, 10, '9'))
+T('plane_rbody_negative', SP, 'field rbody_ID', at(SP, 4, 1, 10, '-1'))
+T('plane_bad_real', SP, 'field XM', at(SP, 2, 1, 20, '1.2.3'))
+# ---- /SURF/CYL
+T('cyl_iend', SC, 'field Iend', at(SC, 2, 11, 20, '2'))
+T('cyl_zero_axis', SC, 'AX AY AZ', at(SC, 4, 21, 40, '0'))
+T('cyl_radius_zero', SC, 'field R', at(SC, 5, 1, 20, '0'))
+T('cyl_length_blank', SC, 'field L', at(SC, 5, 21, 40, ''))
+T('cyl_rbody_missing', SC, 'field rbody_ID', at(SC, 2, 1, 10, '9'))
+# ---- /SURF/BOX
+T('box_c_negative', SB, 'field c', at(SB, 4, 41, 60, '-0.025'))
+T('box_u_zero', SB, 'UX UY UZ', at(SB, 5, 1, 20, '0'))
+T('box_v_parallel', SB, 'VX VY VZ', at(SB, 6, line='                   1                   0                   0'))
+T('box_rbody_missing', SB, 'field rbody_ID', at(SB, 2, 1, 10, '9'))
+T('surf_dup_id', '/SURF/BOX/3', 'field surf_ID', rename(SB, '/SURF/BOX/3'))
+T('surf_seg', '/SURF/SEG/5', 'not supported yet', before_end(['/SURF/SEG/5', 'segments', '         1']))
+# ---- /INTER/TYPE6
+T('t6_surf_missing', T6, 'field surf_ID2', at(T6, 2, 11, 20, '9'))
+T('t6_surf_zero', T6, 'field surf_ID1', at(T6, 2, 1, 10, '0'))
+T('t6_fric_negative', T6, 'field Fric', at(T6, 3, 21, 40, '-0.1'))
+T('t6_tstop_before_tstart', T6, 'field Tstop', at(T6, 3, 61, 100, '                   2                   1'))
+T('t6_unused_not_blank', T6, 'field blank', at(T6, 4, 1, 10, '5'))
+T('t6_irs', T6, 'field IRS', at(T6, 4, 11, 20, '1'))
+T('t6_inacti', T6, 'field Inacti', at(T6, 4, 31, 40, '3'))
+T('t6_fct_ff_missing', T6, 'field fct_IDff', at(T6, 4, 41, 50, '9'))
+T('t6_fct_fv_missing', T6, 'field fct_IDfv', at(T6, 4, 51, 60, '9'))
+T('t6_fct_ld_missing', T6, 'field fct_IDld', at(T6, 5, 1, 10, '9'))
+T('t6_fct_ld_zero', T6, 'field fct_IDld', at(T6, 5, 1, 10, '0'))
+T('t6_iform', T6, 'field Iform', at(T6, 5, 11, 20, '3'))
+T('t6_stiff_negative', T6, 'field Stiff', at(T6, 6, 21, 40, '-5'))
+T('t6_fct_ul_missing', T6, 'field fct_IDul', at(T6, 6, 1, 10, '9'))
+T('t6_fct_dv_missing', T6, 'field fct_IDdv', at(T6, 7, 21, 30, '9'))
+T('t6_fct_df_missing', T6, 'field fct_IDdf', at(T6, 7, 31, 40, '9'))
+T('t6_visc_nan', T6, 'field Visc', at(T6, 7, 1, 20, 'NaN'))
+T('t6_missing_line', T6, 'expected 6 data lines', delete(T6, 7))
+T('t6_same_body', T6, 'surf_ID1/surf_ID2', at(T6, 2, 11, 20, '1'))
+T('t6_unsupported_pair', T6, 'surf_ID1/surf_ID2', at(T6, 2, 1, 10, '4'))
+T('inter_type7', '/INTER/TYPE7/5', 'not supported yet', before_end(['/INTER/TYPE7/5', 'type 7', '         1']))
+T('inter_dup_id', '/INTER/POWER/1', 'field inter_ID', rename(PW, '/INTER/POWER/1'))
+# ---- /INTER/POWER
+T('pw_surf_missing', PW, 'field surf_ID1', at(PW, 2, 1, 10, '9'))
+T('pw_fct_stiff_missing', PW, 'field fct_stiff', at(PW, 2, 21, 30, '9'))
+T('pw_ispline', PW, 'field Ispline', at(PW, 2, 41, 50, '7'))
+T('pw_k_negative', PW, 'field K', at(PW, 3, 1, 20, '-1'))
+T('pw_vd_below_vs', PW, 'field v_d', at(PW, 5, 61, 80, '0.005'))
+T('pw_comma_extra', PW, 'comma-separated fields', at(PW, 3, line='1e9,1.5,5e8,1,1,9'))
+# ---- /INIVEL
+T('inivel_grnod_missing', IT, 'field grnod_ID', at(IT, 2, 61, 70, '9'))
+T('inivel_skew', IT, 'field skew_ID', at(IT, 2, 71, 80, '1'))
+T('inivel_bad_vx', IT, 'field Vx', at(IT, 2, 1, 20, 'fast'))
+T('inivel_rot_grnod_missing', IR, 'field grnod_ID', at(IR, 2, 61, 70, '9'))
+T('inivel_subtype', '/INIVEL/AXIS/3', 'not supported yet', before_end(['/INIVEL/AXIS/3', 'axis', '']))
+# ---- /GRAV
+T('grav_dir', GR, 'field DIR', at(GR, 2, 11, 20, 'W'))
+T('grav_fct_missing', GR, 'field fct_IDT', at(GR, 2, 1, 10, '9'))
+T('grav_grnod_missing', GR, 'field grnod_ID', at(GR, 2, 41, 50, '9'))
+T('grav_ascale_negative', GR, 'field Ascale_x', at(GR, 2, 51, 70, '-1'))
+T('grav_sensor', GR, 'field sensor_ID', at(GR, 2, 31, 40, '1'))
+# ---- /BCS
+T('bcs_trarot', BC1, 'field Trarot', at(BC1, 2, 1, 10, '120 000'))
+T('bcs_partial_rotation', BC1, 'field Trarot', at(BC1, 2, 1, 10, '110 100'))
+T('bcs_grnod_missing', BC2, 'field grnod_ID', at(BC2, 2, 21, 30, '9'))
+# ---- /IMPVEL
+T('impvel_dir', IV, 'field Dir', at(IV, 2, 11, 20, 'XY'))
+T('impvel_fct_missing', IV, 'field fct_IDT', at(IV, 2, 1, 10, '9'))
+T('impvel_grnod_missing', IV, 'field grnod_ID', at(IV, 2, 41, 50, '9'))
+T('impvel_tstart', IV, 'field Tstart', at(IV, 3, 41, 60, '1'))
+T('impvel_held_dof', IV, 'field Dir', at(IV, 2, 11, 20, 'X'))
+T('impvel_frame', IV, 'field frame_ID', at(IV, 2, 51, 60, '1'))
+# ---- /COUPLING/SPRING
+T('spring_same_points', SPR, 'X2 Y2 Z2', at(SPR, 4, 1, 20, '0'))
+T('spring_iform', SPR, 'field Iform', at(SPR, 2, 21, 30, '5'))
+T('spring_rbody_missing', SPR, 'field rbody_ID1', at(SPR, 2, 1, 10, '9'))
+T('spring_both_fixed', SPR, 'rbody_ID1 rbody_ID2', at(SPR, 2, 1, 10, '0'))
+T('spring_fct_missing', SPR, 'field fct_ID', at(SPR, 2, 21, 40, '         3         9'))
+T('spring_iform3_no_fct', SPR, 'field fct_ID', at(SPR, 2, 21, 30, '3'))
+T('spring_kd_negative', SPR, 'field Kd', at(SPR, 5, 21, 40, '-1'))
+T('spring_xr_wrong_form', SPR, 'field X_r', insert(SPR, 7, ['                   1                   1']))
+# ---- /COUPLING/CATENARY
+T('cat_leq_zero', CAT, 'field L_eq', at(CAT, 5, 21, 40, '0'))
+T('cat_same_body', CAT, 'field rbody_ID2', at(CAT, 2, 1, 10, '4'))
+T('cat_rbody_missing', CAT, 'field rbody_ID2', at(CAT, 2, 11, 20, '9'))
+T('cat_no_gravity', CAT, '/GRAV', chain(at(GR, 2, 41, 50, '1'), lambda l: (l, hidx(l, CAT), {})))
+T('cat_no_solution', CAT, 'fields Lambda0 L_eq D', at(CAT, 5, 1, 60,
+  '              1.5e12                 0.1              1e-300'))
+# ---- /PART, /GRPART
+T('part_rbody_missing', P1, 'field rbody_ID', at(P1, 3, 1, 10, '9'))
+T('part_surf_missing', P1, 'field surf_ID', at(P1, 3, 11, 20, '9'))
+T('part_surf_not_carried', P1, 'field surf_ID', at(P1, 3, 11, 20, '2'))
+T('part_surf_twice', '/PART/3', 'field surf_ID', before_end(['/PART/3', 'floor again',
+  '         0         0         0                   0', '         0         2'], expect=3))
+T('part_fixed_no_surface', P2, 'field rbody_ID', at(P2, 3, 11, 20, ''))
+T('part_bad_thick', P1, 'field Thick', at(P1, 2, 31, 50, 'thin'))
+T('grpart_part_missing', GP, 'field part_ID', at(GP, 2, 1, 10, '9'))
+T('grpart_negative', GP, 'field part_ID', at(GP, 2, 1, 10, '-2'))
+# ---- /FRICTION, /FRIC_ORIENT
+T('fric_ifric', FR, 'field Ifric', at(FR, 2, 1, 10, '5'))
+T('fric_xfreq_range', FR, 'field Xfreq', at(FR, 2, 11, 40, '         1                   2'))
+T('fric_fric_negative', FR, 'field Fric', at(FR, 4, 21, 40, '-0.9'))
+T('fric_part_missing', FR, 'field part_ID1', at(FR, 5, 21, 30, '9'))
+T('fric_grpart_missing', FR, 'field grpart_ID2', at(FR, 5, 11, 20, '9'))
+T('fric_group_truncated', FR, 'truncated', delete(FR, 9, expect_k=5))
+T('fric_group_no_side', FR, 'grpart_ID1', at(FR, 5, 1, 40, ''))
+T('fric_renard_c5', FR, 'field C5', chain(at(FR, 2, 1, 10, '3'),
+  at(FR, 3, line='                 0.3                 0.2                 0.5                 0.1                 0.7'),
+  at(FR, 4, 1, 20, '0.5'), expect=1))
+T('fo_part_missing', FO, 'field part_ID', at(FO, 2, 11, 20, '9'))
+T('fo_truncated', FO, 'truncated', delete(FO, 3, expect_k=2))
+T('fo_iorth', FO, 'field Iorth', at(FO, 3, 91, 100, '2'))
+# ---- /RUN, /SOLVER
+T('run_tend_zero', RUN, 'field Tend', at(RUN, 1, 1, 20, '0'))
+T('run_dtout_negative', RUN, 'field Dt_out', at(RUN, 1, 21, 40, '-0.01'))
+T('run_ev_state', RUN, 'field Ev_state', at(RUN, 1, 41, 50, '3'))
+T('run_twice', RUN, 'only one such card', before_end([RUN, '                   2']))
+T('run_missing', '-', 'no /RUN card', chain(delete(RUN, 0, 2), lambda l: (l, hidx(l, '/END'), {})))
+T('solver_method', SOL, 'field Method', at(SOL, 1, 1, 10, '2'))
+T('solver_max_order', SOL, 'field Max_order', at(SOL, 1, 11, 20, '6'))
+T('solver_rtol_negative', SOL, 'field Rtol', at(SOL, 1, 31, 50, '-1e-6'))
+T('solver_atol_negative', SOL, 'field Atol_pos', at(SOL, 2, 1, 20, '-1'))
+T('solver_max_steps_real', SOL, 'field Max_steps', at(SOL, 1, 21, 30, '1e5'))
+# ---- deck level: lines, headers, cards, includes
+T('empty_deck', '-', 'empty file', whole('', 1))
+T('comments_only', '-', 'no cards found', whole('# only a comment\n$ and another', 2))
+T('data_before_card', '-', 'outside any card', insert(B, 0, ['hello']))
+T('unknown_card', '/FOO/1', 'unknown card', before_end(['/FOO/1', 'foo']))
+T('planned_card_skew', '/SKEW/1', 'not supported yet', before_end(['/SKEW/1', 'skew']))
+T('header_three_numbers', '/RBODY/1/0/3', 'more than two numbers', rename(R1, '/RBODY/1/0/3'))
+T('header_keyword_after_id', '/RBODY/1/X', 'keyword after the id', rename(R1, '/RBODY/1/X'))
+T('header_empty_keyword', '/RBODY//1', 'empty keyword', rename(R1, '/RBODY//1'))
+T('no_rbody', '-', 'no /RBODY card', whole('/RUN\n                   1\n/END', 3))
+T('nothing_to_integrate', '-', 'nothing to integrate', whole('\n'.join([
+  '/NODE', '         1                   0                   0                   0',
+  '/RBODY/1', 'fixed body', '         1                                                 1',
+  '               0.001               0.001               0.001', '',
+  '/GRNOD/NODE/1', 'body', '         1',
+  '/BCS/1', 'all fixed', '   111 111         0         1',
+  '/RUN', '                   1', '/END']), 16))
+T('binary_byte', '-', 'not a text file', at(R1, 1, line='sph\x01ere'))
+T('line_too_long', '-', 'characters: at most 1000', at(R1, 1, line='x' * 1001))
+T('ignored_card_then_error', R1, 'field Mass', chain(before_end(['/MAT/LAW1/1', 'steel', '']),
+  at(R1, 2, 41, 60, '-1')))
+
+
+T('spring_stiffness_integral_overflow', SPR, 'field fct_ID', chain(
+  at(F2, 2, 21, 40, '1e+308'), at(F2, 3, 21, 40, '-1e+308'), at(F2, 4, 21, 40, '1e+308'),
+  at(SPR, 2, 21, 40, '         4         2')))
+T('t6_load_slope_denormal', F1, 'field Y', chain(
+  at(T6, 3, 21, 40, '0.3'), at(F1, 3, 21, 40, '1e-320'), lambda l: (l, hidx(l, F1) + 3, {})))
+T('include_missing', '-', '#include', before_end(['#include no_such_file.rad']))
+T('include_empty_name', '-', 'missing file name', before_end(['#include']))
+T('include_directory', '-', 'not a regular file', before_end(['#include .']))
+T('include_self', '-', 'include cycle', before_end(['#include @SELF@']))
+
+
+def write_all():
+    for old in glob.glob('[0-9][0-9][0-9]_*'):
+        os.remove(old)
+    rows = []
+    n = 0
+
+    def emit(name, card, field, lines, idx, files, efile=None):
+        nonlocal n
+        n += 1
+        fname = '%03d_%s.rad' % (n, name)
+        pre = '%03d_' % n
+        lines = [ln.replace('@SELF@', fname).replace('@N@', pre) for ln in lines]
+        with open(fname, 'w') as f:
+            f.write('\n'.join(lines) + ('\n' if lines != [''] else ''))
+        for k, v in files.items():
+            with open(pre + k, 'w') as f:
+                f.write('\n'.join(ln.replace('@N@', pre) for ln in v) + '\n')
+        rows.append((fname, '%s:%d' % (efile and ('%03d_%s' % (n, efile)) or fname, idx + 1),
+                     card, field))
+
+    for name, card, field, edit in TESTS:
+        lines, idx, files = edit(list(BASE))
+        if name == 'empty_deck':
+            lines = ['']
+        emit(name, card, field, lines, idx, files)
+    # faults inside an included file: the message names that file and line
+    inc_cards = ['/NODE', '         5                   0                   0                   1',
+                 '         6                   0                   0                   x']
+    lines = list(BASE)
+    e = hidx(lines, '/END')
+    lines[e:e] = ['#include @N@inc_node_inc.rad']
+    emit('include_field_error', '/NODE', 'field Z', lines, 2, {'inc_node_inc.rad': inc_cards},
+         efile='inc_node_inc.rad')
+    lines = list(BASE)
+    lines[e:e] = ['#include @N@cycle_a_inc.rad']
+    emit('include_cycle', '-', 'include cycle', lines, 0,
+         {'cycle_a_inc.rad': ['#include @N@cycle_b_inc.rad'], 'cycle_b_inc.rad': ['#include @N@cycle_a_inc.rad']},
+         efile='cycle_b_inc.rad')
+    lines = list(BASE)
+    lines[e:e] = ['#include @N@nested_missing_inc.rad']
+    emit('include_nested_missing', '-', '#include', lines, 1,
+         {'nested_missing_inc.rad': ['# a comment', '#include no_such_file.rad']},
+         efile='nested_missing_inc.rad')
+    with open('expect.tsv', 'w') as f:
+        f.write('# file\texpected file:line\tcard (- none)\tfield, or the fault\n')
+        for r in rows:
+            f.write('\t'.join(r) + '\n')
+    print('%d decks' % n)
+
+
+write_all()

@@ -808,7 +808,7 @@ static void test_case_error_unknown_card(void)
     EXPECT_INPUT_ERROR("unknown.rad", RUN_CARD "/FOO/1\nx\n", 3, "card /FOO/1", "unknown card");
     EXPECT_INPUT_ERROR("planned.rad", RUN_CARD "/SKEW/1\nx\n", 3, "card /SKEW/1",
                        "not supported yet");
-    EXPECT_INPUT_ERROR("subtype.rad", RUN_CARD "/SURF/SEG/1\nx\n", 3, "card /SURF/SEG/1",
+    EXPECT_INPUT_ERROR("subtype.rad", RUN_CARD "/SURF/GRSHEL/1\nx\n", 3, "card /SURF/GRSHEL/1",
                        "not supported yet", "/SURF/PLANE");
     EXPECT_INPUT_ERROR("nosub.rad", RUN_CARD "/INTER/5\nx\n", 3, "card /INTER/5", "missing subtype",
                        "/INTER/TYPE6");

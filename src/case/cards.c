@@ -5,7 +5,7 @@
  *   cards_bodies.c      /NODE /GRNOD/NODE /RBODY /PART /GRPART
  *   cards_mesh.c        /SHELL /SH3N /BRICK /TETRA4 /PROP/SHELL /PROP/SOLID /MAT
  *                       /SKEW/FIX /GRNOD/PART /GRNOD/GRNOD (called first)
- *   cards_surfaces.c    /SURF/PLANE /SURF/ELLIPS /SURF/CYL /SURF/BOX
+ *   cards_surfaces.c    /SURF/PLANE /SURF/ELLIPS /SURF/CYL /SURF/BOX /SURF/SEG /SURF/PART
  *   cards_interfaces.c  /INTER/TYPE6 /INTER/POWER
  *   cards_friction.c    /FRICTION /FRIC_ORIENT
  *   cards_couplings.c   /COUPLING/SPRING /COUPLING/CATENARY
@@ -28,7 +28,7 @@ typedef enum {
     RC_CARD_TYPE6, RC_CARD_FUNCT, RC_CARD_INIVEL, RC_CARD_GRAV, RC_CARD_BCS, RC_CARD_RUN,
     RC_CARD_SOLVER, RC_CARD_CPL_SPRING, RC_CARD_CPL_CATENARY, RC_CARD_PART, RC_CARD_GRPART,
     RC_CARD_FRICTION, RC_CARD_FRIC_ORIENT, RC_CARD_POWER, RC_CARD_CYL, RC_CARD_BOX, RC_CARD_IMPVEL,
-    RC_CARD_UNIT
+    RC_CARD_UNIT, RC_CARD_SEG, RC_CARD_SURFPART
 } rc_card_kind;
 
 /* Supported cards; a family (kw with a sub) lists each subtype. */
@@ -49,6 +49,7 @@ static const struct {
     {"INTER", "POWER", RC_CARD_POWER}, {"SURF", "CYL", RC_CARD_CYL},
     {"SURF", "BOX", RC_CARD_BOX},      {"IMPVEL", NULL, RC_CARD_IMPVEL},
     {"UNIT", NULL, RC_CARD_UNIT},
+    {"SURF", "SEG", RC_CARD_SEG},      {"SURF", "PART", RC_CARD_SURFPART},
 };
 
 /* Radioss cards without meaning for rigid bodies: skipped with a warning. */
@@ -128,6 +129,8 @@ static rc_status rc_card_call(rc_reader *rd, const rc_block *b, rc_card_kind kin
     case RC_CARD_BOX: return rc_card_box(rd, b);
     case RC_CARD_IMPVEL: return rc_card_impvel(rd, b);
     case RC_CARD_UNIT: return rc_card_unit(rd, b);
+    case RC_CARD_SEG: return rc_card_seg(rd, b);
+    case RC_CARD_SURFPART: return rc_card_surfpart(rd, b);
     }
     return RC_SET(rd->err, RC_EINTERNAL, "unknown card kind %d", (int)kind);
 }

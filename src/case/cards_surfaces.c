@@ -184,3 +184,79 @@ rc_status rc_card_box(rc_reader *rd, const rc_block *b)
                             u[0], u[1], u[2], v[0], v[1], v[2]);
     return rc_note_id(rd, RC_IDK_SURF, s->id, &s->loc, b->hdr->text);
 }
+
+/* ======================================================================
+ * /SURF/SEG and /SURF/PART (segment surfaces; model/segsurf.c builds them)
+ * ====================================================================== */
+
+/* /SURF/SEG/surf_ID: title; one segment a line: seg_ID node_ID1..node_ID4
+ * (node_ID4 blank or equal to node_ID3: a triangle). */
+rc_status rc_card_seg(rc_reader *rd, const rc_block *b)
+{
+    static const char *const nname[] = {"node_ID1", "node_ID2", "node_ID3", "node_ID4"};
+    int nd, cap = 0, capi = 0, capl = 0;
+    rc_status st;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "surf_ID", "/SURF/SEG/surf_ID"))) return st;
+    rc_case_surf *s = rc_new_surf(rd, b, RC_CASE_SURF_SEG);
+    if (!s) return RC_ENOMEM;
+    if ((st = rc_var_lines(rd, b, s->title, "seg_ID node_ID1 node_ID2 node_ID3 node_ID4", &nd))) return st;
+    for (int i = 1; i <= nd; i++) {
+        int id = 0, nodes[4] = {0, 0, 0, 0};
+        rc_field f[5] = {RC_F_INT("seg_ID", &id, 0, RC_FF_NONNEG), RC_F_INT("node_ID1", &nodes[0], 0, RC_FF_POS),
+                         RC_F_INT("node_ID2", &nodes[1], 0, RC_FF_POS), RC_F_INT("node_ID3", &nodes[2], 0, RC_FF_POS),
+                         RC_F_INT("node_ID4", &nodes[3], 0, RC_FF_NONNEG)};
+        if ((st = rc_parse_line(rd, b, &b->lines[i], f, 5))) return st;
+        if (nodes[3] == nodes[2]) nodes[3] = 0; /* a triangle */
+        for (int j = 1; j < 4; j++)
+            for (int k = 0; k < j; k++)
+                if (nodes[j] != 0 && nodes[j] == nodes[k])
+                    return rc_case_fail(rd, &b->lines[i].loc, b->name, nname[j],
+                                        "expected a node different from %s of the segment, got %d again (a "
+                                        "segment has 3 or 4 distinct nodes; node_ID4 blank or equal to node_ID3 "
+                                        "makes a triangle)",
+                                        nname[k], nodes[j]);
+        RC_GROW(rd, s->seg, cap, 4 * s->nseg + 3);
+        RC_GROW(rd, s->seg_id, capi, s->nseg);
+        RC_GROW(rd, s->seg_loc, capl, s->nseg);
+        memcpy(s->seg + 4 * s->nseg, nodes, sizeof nodes);
+        s->seg_id[s->nseg] = id;
+        s->seg_loc[s->nseg++] = b->lines[i].loc;
+    }
+    if (s->nseg == 0)
+        return rc_case_fail(rd, &b->hdr->loc, b->name, "seg_ID",
+                            "expected at least one segment line (seg_ID node_ID1 node_ID2 node_ID3 node_ID4), got "
+                            "none");
+    return rc_note_id(rd, RC_IDK_SURF, s->id, &s->loc, b->hdr->text);
+}
+
+/* /SURF/PART/surf_ID: title; part ids, ten a line (the outer faces of the
+ * parts' shells and solids). */
+rc_status rc_card_surfpart(rc_reader *rd, const rc_block *b)
+{
+    int nd, cap = 0, capl = 0;
+    rc_status st;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "surf_ID", "/SURF/PART/surf_ID"))) return st;
+    rc_case_surf *s = rc_new_surf(rd, b, RC_CASE_SURF_PART);
+    if (!s) return RC_ENOMEM;
+    if ((st = rc_var_lines(rd, b, s->title, "part_ID1 ... part_ID10", &nd))) return st;
+    for (int i = 1; i <= nd; i++) {
+        int v[10];
+        rc_field f[10];
+        for (int k = 0; k < 10; k++) {
+            rc_field fk = RC_F_INT("part_ID", &v[k], 0, RC_FF_NONNEG);
+            f[k] = fk;
+        }
+        if ((st = rc_parse_line(rd, b, &b->lines[i], f, 10))) return st;
+        for (int k = 0; k < 10; k++) {
+            if (v[k] == 0) continue;
+            RC_GROW(rd, s->part, cap, s->npart);
+            RC_GROW(rd, s->part_loc, capl, s->npart);
+            s->part[s->npart] = v[k];
+            s->part_loc[s->npart++] = b->lines[i].loc;
+        }
+    }
+    if (s->npart == 0)
+        return rc_case_fail(rd, &b->hdr->loc, b->name, "part_ID",
+                            "expected at least one part id (ten a line, 10 characters each), got none");
+    return rc_note_id(rd, RC_IDK_SURF, s->id, &s->loc, b->hdr->text);
+}

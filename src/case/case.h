@@ -87,7 +87,8 @@ typedef struct rc_case_rbody {
 /* /SURF/PLANE/surf_ID and /SURF/ELLIPS/surf_ID. */
 typedef enum {
     RC_CASE_SURF_PLANE = 1, RC_CASE_SURF_ELLIPS = 2,
-    RC_CASE_SURF_CYL = 3, RC_CASE_SURF_BOX = 4 /* ricochet cards (cards_surfaces.c) */
+    RC_CASE_SURF_CYL = 3, RC_CASE_SURF_BOX = 4, /* ricochet cards (cards_surfaces.c) */
+    RC_CASE_SURF_SEG = 5, RC_CASE_SURF_PART = 6 /* segment surfaces (model/segsurf.c) */
 } rc_case_surf_kind;
 
 typedef struct rc_case_surf {
@@ -111,6 +112,15 @@ typedef struct rc_case_surf {
      * space). Read from the documented extension field of each card.   */
     int rbody_id;
     rc_loc loc;
+    /* SEG: segments as written, 4 node ids each (node 4 = 0: a triangle),
+     * their ids and lines; PART: the part ids and their lines. */
+    int nseg;
+    int *seg;                 /* [4*nseg] */
+    int *seg_id;              /* [nseg] */
+    rc_loc *seg_loc;          /* [nseg] */
+    int npart;
+    int *part;                /* [npart] */
+    rc_loc *part_loc;         /* [npart] */
     rc_loc rbody_loc;         /* the line holding rbody_ID (the header's when absent) */
 } rc_case_surf;
 

@@ -290,6 +290,8 @@ rc_status rc_card_plane(rc_reader *rd, const rc_block *b);
 rc_status rc_card_ellips(rc_reader *rd, const rc_block *b);
 rc_status rc_card_cyl(rc_reader *rd, const rc_block *b);
 rc_status rc_card_box(rc_reader *rd, const rc_block *b);
+rc_status rc_card_seg(rc_reader *rd, const rc_block *b);
+rc_status rc_card_surfpart(rc_reader *rd, const rc_block *b);
 
 /* Interfaces (cards_interfaces.c). */
 rc_status rc_card_type6(rc_reader *rd, const rc_block *b);

@@ -609,6 +609,13 @@ void rc_case_free(rc_case *c)
     free(c->grnod);
     free(c->rbody);
     rc_case_mesh_free(c->mesh);
+    for (int i = 0; i < c->nsurf; i++) {
+        free(c->surf[i].seg);
+        free(c->surf[i].seg_id);
+        free(c->surf[i].seg_loc);
+        free(c->surf[i].part);
+        free(c->surf[i].part_loc);
+    }
     free(c->surf);
     free(c->type6);
     free(c->power);

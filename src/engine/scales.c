@@ -162,6 +162,12 @@ static void body_sizes(const rc_model *m, double *size)
         case RC_SURF_SPHERE: ext = m->surf_r[s]; break;
         case RC_SURF_CYL: ext = m->surf_r[s] + e[0] + (e[1] > 0 ? m->surf_r[s] : 0.0); break;
         case RC_SURF_BOX: ext = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]); break;
+        case RC_SURF_SEG: /* the farthest node (p = 0) */
+            for (int j = m->surf_nadr[s]; j < m->surf_nadr[s + 1]; j++) {
+                const double *x = m->surf_node + 3 * j, r = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+                if (r > ext) ext = r;
+            }
+            break;
         default: break; /* a plane carried by a body has no size */
         }
         if (c + ext > size[b]) size[b] = c + ext;

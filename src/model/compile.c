@@ -14,6 +14,8 @@
 #include "model/coupling.h"
 #include "base/error.h"
 #include "model/geom.h"
+#include "model/segsurf.h"
+#include "case/case_power.h"
 #include "model/imposed.h"
 #include "model/massprop.h"
 #include "model/model.h"
@@ -206,6 +208,13 @@ static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
 {
     for (int s = 0; s < c->nsurf; s++) {
         const rc_case_surf *cs = &c->surf[s];
+        m->surf_nadr[s + 1] = m->surf_nadr[s];
+        m->surf_sadr[s + 1] = m->surf_sadr[s];
+        if (cs->kind == RC_CASE_SURF_SEG || cs->kind == RC_CASE_SURF_PART) {
+            rc_status st = rc_seg_surface(c, m, s, err); /* model/segsurf.c */
+            if (st) return st;
+            continue;
+        }
         static const char *const kinds[5] = {"", "PLANE", "ELLIPS", "CYL", "BOX"};
         const char *kind = kinds[cs->kind];
         int b = -1;
@@ -382,6 +391,25 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     return RC_OK;
 }
 
+/* Interfaces on a segment surface: the TYPE6 normal law without friction
+ * for now (docs/theory.md 2.7). */
+static rc_status check_seg_pairs(const rc_case *c, const rc_model *m, rc_error *err)
+{
+    for (int i = 0; i < m->ninter; i++) {
+        if (m->inter_pair[i] != RC_PAIR_SEG_PLANE && m->inter_pair[i] != RC_PAIR_SPHERE_SEG &&
+            m->inter_pair[i] != RC_PAIR_SEG_BOX)
+            continue;
+        if (i >= c->ntype6)
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields surf_ID1/surf_ID2: a segment surface in /INTER/POWER: not supported yet (supported: /INTER/TYPE6)",
+                     RC_LOC(c->power[i - c->ntype6].line_loc[0]), m->inter_name[i]);
+        const rc_loc loc = c->type6[i].line_loc[1];
+        if (m->inter_fr[i].kind != RC_FK_NONE)
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields Sfric/Fric (or a /FRICTION card naming its parts): friction on a segment surface: not supported yet",
+                     RC_LOC(loc), m->inter_name[i]);
+    }
+    return RC_OK;
+}
+
 /* ---- state layout and tolerances -------------------------------------- */
 static rc_status layout(const rc_case *c, rc_model *m, rc_error *err)
 {
@@ -518,7 +546,10 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->surf_n, 3 * m->nsurf);
     ALLOC(m->surf_r, m->nsurf);
     ALLOC(m->surf_ext, RC_SURF_NEXT * m->nsurf);
+    ALLOC(m->surf_nadr, m->nsurf + 1);
+    ALLOC(m->surf_sadr, m->nsurf + 1);
     if ((st = compile_surfaces(c, m, err))) goto fail;
+    if ((st = rc_seg_meshes(m, err))) goto fail; /* model/segsurf.c */
     /* interfaces */
     m->ninter = c->ntype6 + c->npower; /* TYPE6, then /INTER/POWER */
     ALLOC(m->inter_id, m->ninter);
@@ -562,6 +593,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     for (int k = 0; k < c->npower; k++) /* model/power.c */
         if ((st = rc_power_compile(c, m, k, c->ntype6 + k, err))) goto fail;
     if ((st = rc_friction_compile(c, m, err))) goto fail;
+    if ((st = check_seg_pairs(c, m, err))) goto fail;
     /* couplings (model/coupling.c) */
     if ((st = rc_cpl_compile(c, m, err))) goto fail;
     /* imposed velocities (imposed.c) */
@@ -590,6 +622,7 @@ void rc_model_free(rc_model *m)
     if (m->file)
         for (int k = 0; k < m->nfile; k++) free(m->file[k]);
     free(m->file);
+    rc_seg_free(m);
     void *arrays[] = {m->case_path, m->table, m->body_id, m->body_fixed, m->body_yadr, m->body_mass,
                       m->body_J, m->body_Jinv, m->body_y0, m->body_grav, m->body_dofmask, m->surf_id, m->surf_kind,
                       m->surf_body, m->surf_p, m->surf_n, m->surf_r, m->inter_id, m->inter_pair,
@@ -601,7 +634,8 @@ void rc_model_free(rc_model *m)
                       m->inter_fscaleul, m->inter_ns, m->inter_hidx, m->inter_oidx, m->inter_fr,
                       m->inter_name, m->atol, m->held, m->row_held, m->gwork_slot, m->surf_ext,
                       m->inter_law, m->inter_pw, m->inter_pscale, m->inter_fscale, m->inter_kscale,
-                      m->inter_vscale, m->inter_mred, m->ewt_rel, m->body_loc, m->inter_loc};
+                      m->inter_vscale, m->inter_mred, m->ewt_rel, m->body_loc, m->inter_loc,
+                      m->surf_nadr, m->surf_node, m->surf_sadr, m->surf_seg};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     free(m);
 }

@@ -52,6 +52,9 @@ const char *rc_geom_pair_name(rc_pair_kind kind)
     case RC_PAIR_CYL_BOX: return "cylinder-box";
     case RC_PAIR_CYL_CYL: return "cylinder-cylinder";
     case RC_PAIR_SPHERE_BOX: return "sphere-box";
+    case RC_PAIR_SEG_PLANE: return "segments-plane";
+    case RC_PAIR_SPHERE_SEG: return "sphere-segments";
+    case RC_PAIR_SEG_BOX: return "segments-box";
     }
     return "?";
 }
@@ -63,6 +66,7 @@ static const char *kind_name(rc_surf_kind k)
     case RC_SURF_SPHERE: return "sphere";
     case RC_SURF_CYL: return "cylinder";
     case RC_SURF_BOX: return "box";
+    case RC_SURF_SEG: return "segment surface";
     }
     return "?";
 }
@@ -78,6 +82,12 @@ rc_status rc_geom_pair(const rc_model *m, int s1, int s2, int *sa, int *sb, rc_p
         s1 = s2;
         s2 = t;
     }
+    /* a segment surface is surface a (its nodes against b) */
+    if (m->surf_kind[s2] == RC_SURF_SEG && m->surf_kind[s1] != RC_SURF_SEG && !is_round(m->surf_kind[s1])) {
+        int t = s1;
+        s1 = s2;
+        s2 = t;
+    }
     const rc_surf_kind ka = m->surf_kind[s1], kb = m->surf_kind[s2];
     *sa = s1;
     *sb = s2;
@@ -87,6 +97,14 @@ rc_status rc_geom_pair(const rc_model *m, int s1, int s2, int *sa, int *sb, rc_p
     else if (ka == RC_SURF_CYL && kb == RC_SURF_PLANE) *kind = RC_PAIR_CYL_PLANE;
     else if (ka == RC_SURF_CYL && kb == RC_SURF_BOX) *kind = RC_PAIR_CYL_BOX;
     else if (ka == RC_SURF_CYL && kb == RC_SURF_CYL) *kind = RC_PAIR_CYL_CYL;
+    else if (ka == RC_SURF_SEG && kb == RC_SURF_PLANE) *kind = RC_PAIR_SEG_PLANE;
+    else if (ka == RC_SURF_SEG && kb == RC_SURF_BOX) *kind = RC_PAIR_SEG_BOX;
+    else if (ka == RC_SURF_SPHERE && kb == RC_SURF_SEG) *kind = RC_PAIR_SPHERE_SEG;
+    else if (ka == RC_SURF_SEG || kb == RC_SURF_SEG)
+        RC_RAISE(err, RC_EINPUT,
+                 "%s, fields surf_ID1/surf_ID2: a segment surface against %s: not supported yet (supported: a "
+                 "segment surface against a plane, a box or a sphere)",
+                 where, kind_name(ka == RC_SURF_SEG ? kb : ka));
     else
         RC_RAISE(err, RC_EINPUT,
                  "%s, fields surf_ID1/surf_ID2: %s against %s is not a contact pair ricochet supports (supported: "

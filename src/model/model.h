@@ -44,7 +44,8 @@
 #define RC_JB_MAX ((2 * 6 + RC_NS_MAX) * (2 * RC_NB + RC_NS_MAX)) /* largest dense block */
 
 /* Analytic surface kinds. */
-typedef enum { RC_SURF_PLANE = 1, RC_SURF_SPHERE = 2, RC_SURF_CYL = 3, RC_SURF_BOX = 4 } rc_surf_kind;
+typedef enum { RC_SURF_PLANE = 1, RC_SURF_SPHERE = 2, RC_SURF_CYL = 3, RC_SURF_BOX = 4,
+               RC_SURF_SEG = 5 /* segment surface: /SURF/SEG, /SURF/PART (model/segsurf.c) */ } rc_surf_kind;
 
 /* Extra parameters of a surface (surf_ext, RC_SURF_NEXT per surface):
  *   cylinder: [0] half-length of the cylindrical part [m], [1] ends (0 flat,
@@ -61,7 +62,13 @@ typedef enum {
     RC_PAIR_CYL_PLANE = 3,    /* a: cylinder, b: plane                */
     RC_PAIR_CYL_BOX = 4,      /* a: cylinder, b: box (nearest face)   */
     RC_PAIR_CYL_CYL = 5,      /* a, b: cylinders with parallel axes   */
-    RC_PAIR_SPHERE_BOX = 6    /* a: sphere, b: box (nearest face)     */
+    RC_PAIR_SPHERE_BOX = 6,   /* a: sphere, b: box (nearest face)     */
+    RC_PAIR_SEG_PLANE = 7,    /* a: segment surface (its nodes), b: plane;
+                                 several contact points (docs/theory.md) */
+    RC_PAIR_SPHERE_SEG = 8,   /* a: sphere, b: segment surface (closest
+                                 points on the candidate segments) */
+    RC_PAIR_SEG_BOX = 9       /* a: segment surface (its nodes), b: box
+                                 (each node against its nearest face) */
 } rc_pair_kind;
 /* "sphere-plane", "cylinder-box", ... (model/geom.c) */
 const char *rc_geom_pair_name(rc_pair_kind kind);
@@ -145,6 +152,16 @@ struct rc_model {
     double *surf_n;      /* [nsurf*3] local unit outward normal (plane) [-] */
     double *surf_r;      /* [nsurf] sphere radius [m] */
     double *surf_ext;    /* [nsurf*RC_SURF_NEXT] cylinder and box parameters (above) */
+    /* segment surfaces (RC_SURF_SEG; model/segsurf.c): node j of surface s
+     * at surf_node + 3 (surf_nadr[s] + j), j < surf_nadr[s+1] - surf_nadr[s],
+     * body frame [m]; segment k at surf_seg + 4 (surf_sadr[s] + k), four
+     * local node indices (the fourth = the third: a triangle). Analytic
+     * surfaces have none. */
+    int *surf_nadr;      /* [nsurf+1] */
+    double *surf_node;   /* [3*nodes] */
+    int *surf_sadr;      /* [nsurf+1] */
+    int *surf_seg;       /* [4*segments] */
+    struct rc_segmesh *surf_mesh; /* [nsurf] adjacency and broad-phase grid (segsurf.h) */
 
     /* curves */
     int ntable;

@@ -1,0 +1,36 @@
+/*
+ * Segment surfaces (/SURF/SEG, /SURF/PART) into the model (model/segsurf.c):
+ * nodes and segments in the carrying body's frame (model.h, surf_nadr ...).
+ */
+#ifndef RC_SEGSURF_H
+#define RC_SEGSURF_H
+
+#include "case/case.h"
+#include "model/model.h"
+
+/* Surface s of the case (a /SURF/SEG or /SURF/PART card) into the model:
+ * kind RC_SURF_SEG, its body (that of its nodes, -1: fixed in space), its
+ * nodes and segments appended after those of surface s - 1 (surf_nadr[s]
+ * and surf_sadr[s] set; fills [s + 1]). Bodies are compiled. */
+rc_status rc_seg_surface(const rc_case *c, rc_model *m, int s, rc_error *err);
+
+/* Adjacency and broad-phase grid of a segment surface (m->surf_mesh[s]),
+ * body frame, built at compile time: the segments of each node, and a
+ * uniform grid of cells of size h over the segments' bounding boxes. */
+typedef struct rc_segmesh {
+    int nn, ns;          /* nodes, segments (local indices) */
+    int *vadr, *vseg;    /* [nn + 1], [4 ns]: segments of node j at vseg[vadr[j] .. vadr[j+1]) */
+    double lo[3], h;     /* grid origin [m] and cell size [m] */
+    int dim[3];          /* cells along each axis */
+    int *cadr, *cseg;    /* [ncell + 1]: segments of cell c at cseg[cadr[c] .. cadr[c+1]) */
+    int *srange;         /* [6 ns]: first and last cell of segment k along x, y, z */
+    double *sbox;        /* [6 ns]: bounding box of segment k, lower then upper corner [m] */
+} rc_segmesh;
+
+/* Build the adjacency and grid of every segment surface (after all
+ * surfaces are compiled). */
+rc_status rc_seg_meshes(rc_model *m, rc_error *err);
+/* Release m->surf_mesh. */
+void rc_seg_free(rc_model *m);
+
+#endif

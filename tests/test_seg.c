@@ -1,0 +1,500 @@
+/*
+ * Segment surfaces (/SURF/SEG, /SURF/PART; model/segsurf.c) and their
+ * contact with an analytic plane (engine/kernels.inc, seg_spread): reading
+ * and its errors, the outer faces of a part, the force F(P) shared over the
+ * nodes in proportion to their penetrations (against the rule computed
+ * here), and the exact Jacobian against central finite differences.
+ */
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include <float.h>
+#include <math.h>
+
+#include "base/error.h"
+#include "case/case.h"
+#include "model/model.h"
+#include "harness.h"
+
+static char seg_path[128];
+
+static rc_model *seg_compile(const char *text, rc_error *e)
+{
+    snprintf(seg_path, sizeof seg_path, "/tmp/rc_seg_test_%d.rad", (int)getpid());
+    FILE *f = fopen(seg_path, "w");
+    if (f) {
+        fputs(text, f);
+        fclose(f);
+    }
+    rc_case *c = NULL;
+    rc_model *m = NULL;
+    rc_error_clear(e);
+    rc_status st = rc_case_load(seg_path, &c, e);
+    if (st == RC_OK) st = rc_model_compile(c, &m, e);
+    rc_case_free(c);
+    remove(seg_path);
+    if (st != RC_OK) {
+        rc_model_free(m);
+        return NULL;
+    }
+    return m;
+}
+
+/* Expect an input error whose message holds every needle. */
+static int seg_error(const char *text, ...)
+{
+    rc_error e;
+    rc_model *m = seg_compile(text, &e);
+    int bad = m != NULL || e.code != RC_EINPUT;
+    va_list ap;
+    va_start(ap, text);
+    for (const char *s; (s = va_arg(ap, const char *));)
+        if (!strstr(e.msg, s)) {
+            fprintf(stderr, "  missing \"%s\"\n", s);
+            bad++;
+        }
+    va_end(ap);
+    if (bad) fprintf(stderr, "  message: %s\n", m ? "(compiled)" : e.msg);
+    rc_model_free(m);
+    return bad;
+}
+#define EXPECT_SEG_ERROR(text, ...) ENSURE(seg_error((text), __VA_ARGS__, (const char *)NULL) == 0)
+
+/* A box 0.2 x 0.1 x 0.06 on nodes 10..17 (bottom 10..13 at z = 0, top
+ * 14..17 at z = 0.06), body 1 with main node 1 at its centre, mass 2 kg. */
+#define BOX_NODES                                                                                          \
+    "/NODE\n1,0,0,0.03\n10,-0.1,-0.05,0\n11,0.1,-0.05,0\n12,0.1,0.05,0\n13,-0.1,0.05,0\n14,-0.1,-0.05,0.06\n" \
+    "15,0.1,-0.05,0.06\n16,0.1,0.05,0.06\n17,-0.1,0.05,0.06\n"
+#define BOX_BODY "/GRNOD/NODE/7\ng\n10,11,12,13,14,15,16,17\n/RBODY/1\nbox\n1,,,,2.0,7\n0.0023,0.0071,0.0083\n0.0001,0.0002,-0.0001\n"
+#define BOX_SEGS "/SURF/SEG/30\nbox faces\n1,10,13,12,11\n2,14,15,16,17\n3,10,11,15,14\n4,11,12,16,15\n5,12,13,17,16\n6,13,10,14,17\n"
+#define FLOOR "/SURF/PLANE/40\nfloor\n0,0,0\n0,0,1\n"
+#define LINEAR "/FUNCT/1\nlinear\n0,0\n1,1e6\n"
+#define T6 "/INTER/TYPE6/1\nbox on floor\n30,40\n\n\n1\n\n\n"
+#define RUN_TAIL "/RUN\n0.01,0.001\n"
+
+/* ---- reading ----------------------------------------------------------- */
+
+static void test_seg_read_surfaces(void)
+{
+    rc_error e;
+    /* /SURF/SEG with a triangle (node 4 = node 3) and a quadrilateral */
+    rc_model *m = seg_compile(BOX_NODES BOX_BODY "/SURF/SEG/30\ntri and quad\n1,10,11,12,12\n2,10,11,15,14\n"
+                              FLOOR LINEAR T6 RUN_TAIL, &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    ENSURE(m->surf_kind[0] == RC_SURF_SEG && m->surf_body[0] == 0);
+    ENSURE(m->surf_nadr[1] - m->surf_nadr[0] == 5); /* nodes 10, 11, 12, 14, 15 */
+    ENSURE(m->surf_sadr[1] - m->surf_sadr[0] == 2);
+    ENSURE(m->surf_seg[3] == m->surf_seg[2]);      /* the triangle */
+    ENSURE(m->inter_pair[0] == RC_PAIR_SEG_PLANE && m->inter_sa[0] == 0);
+    /* body frame: node 10 relative to the centre of mass (the box centre) */
+    ENSURE_NEAR(m->surf_node[0], -0.1, 0, 1e-15);
+    ENSURE_NEAR(m->surf_node[2], -0.03, 0, 1e-15);
+    rc_model_free(m);
+
+    /* /SURF/PART: a part of two bricks sharing a face: 10 outer faces, 12
+     * nodes, each turned outwards; a shell part on its own body */
+    m = seg_compile("/NODE\n1,0,0,0\n2,0,0,5\n10,0,0,0\n11,1,0,0\n12,1,1,0\n13,0,1,0\n14,0,0,1\n15,1,0,1\n16,1,1,1\n"
+                    "17,0,1,1\n18,0,0,2\n19,1,0,2\n20,1,1,2\n21,0,1,2\n"
+                    "30,0,0,5\n31,1,0,5\n32,1,1,5\n"
+                    "/MAT/LAW1/3\nsteel\n7800\n\n/PROP/SOLID/2\nsolid\n\n\n/PART/1\nbricks\n2,3\n"
+                    "/BRICK/1\n1,10,11,12,13,14,15,16,17\n2,14,15,16,17,18,19,20,21\n"
+                    "/PROP/SHELL/4\nsh\n\n\n         0         0               0.002\n/PART/5\nskin\n4,3\n"
+                    "/SH3N/5\n7,30,31,32\n"
+                    "/GRNOD/PART/7\ng\n1\n/GRNOD/PART/8\nh\n5\n/RBODY/1\nb\n1,,,,,7,,2\n\n\n/RBODY/2\nc\n2,,,,,8,,2\n\n\n"
+                    "/SURF/PART/30\nbricks\n1\n/SURF/PART/31\nskin\n5\n" FLOOR LINEAR T6 RUN_TAIL, &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    ENSURE(m->surf_nadr[1] - m->surf_nadr[0] == 12);
+    ENSURE(m->surf_sadr[1] - m->surf_sadr[0] == 10);
+    ENSURE(m->surf_nadr[2] - m->surf_nadr[1] == 3 && m->surf_sadr[2] - m->surf_sadr[1] == 1);
+    ENSURE(m->surf_body[1] == 1);
+    /* every face of the bricks points away from the centre of the part */
+    int outward = 0;
+    for (int k = m->surf_sadr[0]; k < m->surf_sadr[1]; k++) {
+        const int *q = m->surf_seg + 4 * k;
+        const double *x[4];
+        for (int j = 0; j < 4; j++) x[j] = m->surf_node + 3 * (m->surf_nadr[0] + q[j]);
+        double a[3], b[3], c[3] = {0, 0, 0};
+        for (int j = 0; j < 3; j++) {
+            a[j] = x[2][j] - x[0][j];
+            b[j] = x[3][j] - x[1][j];
+            for (int l = 0; l < 4; l++) c[j] += x[l][j] / 4; /* face centre, body frame (CoM at 0) */
+        }
+        double n[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+        outward += n[0] * c[0] + n[1] * c[1] + n[2] * c[2] > 0;
+    }
+    ENSURE(outward == 10);
+    rc_model_free(m);
+}
+
+static void test_seg_read_errors(void)
+{
+    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY "/SURF/SEG/30\nx\n1,10,11,10,12\n" RUN_TAIL, ":21:", "card /SURF/SEG/30",
+                     "field node_ID3", "different from node_ID1");
+    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY "/SURF/SEG/30\nx\n" RUN_TAIL, ":19:", "card /SURF/SEG/30", "at least one segment");
+    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY "/SURF/SEG/30\nx\n1,10,11,99\n" FLOOR LINEAR T6 RUN_TAIL, ":21:",
+                     "card /SURF/SEG/30", "field node_ID3", "no such node");
+    /* nodes on a body and nodes on none */
+    EXPECT_SEG_ERROR(BOX_NODES "/NODE\n50,1,1,1\n" BOX_BODY "/SURF/SEG/30\nx\n1,10,11,12\n2,10,11,50\n" FLOOR LINEAR T6
+                     RUN_TAIL, ":24:", "card /SURF/SEG/30", "field node_ID3", "node 50 belongs to no /RBODY",
+                     "node 10 (line 23) belongs to /RBODY/1");
+    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY "/SURF/PART/30\nx\n9\n" FLOOR LINEAR T6 RUN_TAIL, ":21:", "card /SURF/PART/30",
+                     "field part_ID", "no such part");
+    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY "/SURF/PART/30\nx\n" RUN_TAIL, "card /SURF/PART/30", "at least one part id");
+    /* pairs and laws not supported yet */
+    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS "/SURF/CYL/40\ns\n0\n0,2,0\n1,0,0\n0.5,1\n" LINEAR T6 RUN_TAIL,
+                     "card /INTER/TYPE6/1", "fields surf_ID1/surf_ID2", "segment surface against cylinder",
+                     "not supported yet");
+    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS FLOOR LINEAR "/INTER/TYPE6/1\nbox on floor\n30,40\n,0.3\n\n1\n\n\n"
+                     RUN_TAIL, "card /INTER/TYPE6/1", "friction on a segment surface: not supported yet");
+    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS FLOOR "/INTER/POWER/1\np\n30,40\n1e6,1\n" RUN_TAIL, "card /INTER/POWER/1",
+                     "segment surface", "not supported yet");
+}
+
+/* ---- the force distribution ------------------------------------------- */
+
+/* Quaternion of a rotation by angle a about unit axis u. */
+static void quat(double a, const double *u, double *q)
+{
+    q[0] = cos(a / 2);
+    for (int k = 0; k < 3; k++) q[k + 1] = sin(a / 2) * u[k];
+}
+
+static void rotate(const double *q, const double *s, double *o)
+{
+    const double w = q[0], x = q[1], y = q[2], z = q[3];
+    const double R[9] = {1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),
+                         2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
+                         2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)};
+    for (int i = 0; i < 3; i++) o[i] = R[3 * i] * s[0] + R[3 * i + 1] * s[1] + R[3 * i + 2] * s[2];
+}
+
+/* The box tilted so that its bottom nodes are at four different heights,
+ * three of them below the floor: the accelerations are those of the
+ * forces f_j = F(P) p_j / S at the nodes, P = max p_j (linear law F = k P). */
+static void test_seg_force_distribution(void)
+{
+    rc_error e;
+    rc_model *m = seg_compile(BOX_NODES BOX_BODY BOX_SEGS FLOOR LINEAR T6 RUN_TAIL, &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double)), *yd = calloc((size_t)m->ny, sizeof(double));
+    rc_initial_state(m, y);
+    double *yb = y + m->body_yadr[0];
+    const double ax[3] = {0.4472135954999579, -0.8944271909999159, 0.0};
+    quat(0.013, ax, yb + 3);
+    yb[0] = 0.003;
+    yb[1] = -0.002;
+    yb[2] = 0.02884;
+    for (int k = 7; k < 13; k++) yb[k] = 0.0; /* at rest: no damping */
+    d->inter_mode[0] = RC_MODE_CLOSED;
+    rc_assemble_rhs(m, d, 0.0, y, yd);
+    /* the rule, computed here */
+    const int nn = m->surf_nadr[1] - m->surf_nadr[0];
+    double p[8], x[8][3], P = -1, S = 0;
+    int npen = 0;
+    for (int j = 0; j < nn; j++) {
+        rotate(yb + 3, m->surf_node + 3 * j, x[j]);
+        for (int k = 0; k < 3; k++) x[j][k] += yb[k];
+        p[j] = -x[j][2];
+        P = fmax(P, p[j]);
+        if (p[j] > 0) {
+            S += p[j];
+            npen++;
+        }
+    }
+    ENSURE(npen == 3);
+    const double F = 1e6 * P;
+    double Fz = 0, tau[3] = {0, 0, 0};
+    for (int j = 0; j < nn; j++) {
+        if (p[j] <= 0) continue;
+        const double f = F * p[j] / S, r[3] = {x[j][0] - yb[0], x[j][1] - yb[1], x[j][2] - yb[2]};
+        Fz += f;
+        tau[0] += r[1] * f;
+        tau[1] -= r[0] * f;
+    }
+    ENSURE_NEAR(Fz, F, 1e-14, 0);
+    const double *acc = yd + m->body_yadr[0] + 7;
+    ENSURE_NEAR(acc[0], 0.0, 0, 1e-12);
+    ENSURE_NEAR(acc[2], Fz / 2.0, 1e-12, 0);
+    /* wdot = J^-1 R^T tau (no gyroscopic term at rest) */
+    const double qc[4] = {yb[3], -yb[4], -yb[5], -yb[6]};
+    double tb[3], wd[3];
+    rotate(qc, tau, tb);
+    const double *Ji = m->body_Jinv;
+    for (int k = 0; k < 3; k++) wd[k] = Ji[3 * k] * tb[0] + Ji[3 * k + 1] * tb[1] + Ji[3 * k + 2] * tb[2];
+    for (int k = 0; k < 3; k++) ENSURE_NEAR(acc[3 + k], wd[k], 1e-10, 1e-9 * fabs(wd[0]));
+    printf("    three nodes past the floor: P = %.4g m, F = %.4g N, angular acceleration %.6g %.6g %.6g rad/s^2\n", P,
+           F, acc[3], acc[4], acc[5]);
+    /* reported: P, the deepest node */
+    rc_inter_report r;
+    rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+    ENSURE_NEAR(r.p, P, 1e-12, 0);
+    ENSURE_NEAR(r.fn, F, 1e-12, 0);
+    free(y);
+    free(yd);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
+/* ---- Jacobian ---------------------------------------------------------- */
+
+/* Max scaled |J - FD| over the whole Jacobian; counts entries above 1e-6
+ * (and above the rounding of the difference, 100 eps |f| / h) and
+ * finite-difference non-zeros outside the pattern. */
+static double seg_jac_error(const rc_model *m, rc_data *d, double *y, int *bad, int *outside)
+{
+    const double t = 0.0;
+    double *f1 = calloc((size_t)m->ny, sizeof(double)), *f2 = calloc((size_t)m->ny, sizeof(double));
+    double *val = calloc((size_t)m->nnz, sizeof(double)), maxerr = 0;
+    rc_assemble_jac(m, d, t, y, val);
+    const int first_own = m->inter_eadr[0];
+    for (int col = 0; col < m->ny; col++) {
+        double h = col < first_own ? 1e-6 * fmax(fabs(y[col]), 1.0) : 1e-4 * fmax(fabs(y[col]), 1e-3);
+        double keep = y[col];
+        y[col] = keep + h;
+        rc_assemble_rhs(m, d, t, y, f1);
+        y[col] = keep - h;
+        rc_assemble_rhs(m, d, t, y, f2);
+        y[col] = keep;
+        double scale = 1.0;
+        for (int r = 0; r < m->ny; r++) scale = fmax(scale, fabs((f1[r] - f2[r]) / (2 * h)));
+        for (int r = 0; r < m->ny; r++) {
+            double fd = (f1[r] - f2[r]) / (2 * h), an = 0;
+            int64_t k;
+            for (k = m->jac_colptr[col]; k < m->jac_colptr[col + 1]; k++)
+                if (m->jac_rowind[k] == r) break;
+            if (k < m->jac_colptr[col + 1]) an = val[k];
+            else if (fabs(fd) > 1e-9 * scale) (*outside)++;
+            /* rounding of the central difference: the rows are large
+             * (contact forces on small inertias), eps |f| / h of them */
+            const double noise = 100.0 * DBL_EPSILON * fmax(fabs(f1[r]), fabs(f2[r])) / h;
+            double er = fabs(an - fd) / scale;
+            maxerr = fmax(maxerr, er);
+            if (er > 1e-6 && fabs(an - fd) > noise) {
+                (*bad)++;
+                if (getenv("RC_DEBUG_JAC"))
+                    printf("      row %d col %d: J %.10g FD %.10g (scale %.3g)\n", r, col, an, fd, scale);
+            }
+        }
+    }
+    free(f1);
+    free(f2);
+    free(val);
+    return maxerr;
+}
+
+/* The box on a tilted plate carried by a second free body, nonlinear load
+ * curve with Visc and both damping curves, Iform 1 with an unload curve and
+ * Inacti 5: every mode, against central differences. */
+static void seg_jacobian_check(int box)
+{
+    rc_error e;
+    char deck[4096];
+    snprintf(deck, sizeof deck, "%s%s%s%s%s", BOX_NODES BOX_BODY BOX_SEGS,
+             "/NODE\n2,0,0,-0.2\n/RBODY/2\nplate\n2,,,,5.0\n0.11,0.13,0.2\n0.01,0,0\n",
+             box ? "/SURF/BOX/40\ntable\n2\n0.01,-0.02,-0.199\n0.4,0.3,0.2\n1,0.05,0.02\n-0.04,1,0.03\n"
+                 : "/SURF/PLANE/40\nplate\n0,0,0.001\n0.05,-0.03,1\n2\n",
+             "",
+                              "/FUNCT/1\nload\n-0.01,-3.1e3\n0,0\n0.0013,2.71e3\n0.0041,1.37e4\n0.0097,5.9e4\n"
+                              "/FUNCT/2\nunload\n0,0\n0.002,0\n0.006,5e3\n0.011,3.1e4\n"
+                              "/FUNCT/3\ndv\n-10,-41\n0,0\n0.37,5.3\n3.3,71\n/FUNCT/4\ndf\n0,1\n500,0.83\n9e4,0.61\n"
+                              "/INTER/TYPE6/1\nbox on plate\n30,40\n,,0.0011\n,,,5,,,1.9,0.61\n1,1,1.3,0.77\n"
+                              "2,,7.3e6,0.83\n3.7,3,4,2.3\n" RUN_TAIL);
+    rc_model *m = seg_compile(deck, &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    ENSURE(m->inter_pair[0] == (box ? RC_PAIR_SEG_BOX : RC_PAIR_SEG_PLANE));
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    rc_initial_state(m, y);
+    const double s[26] = {0.0013, -0.0011, 0.0312, 0.97, 0.011, -0.013, 0.007, 0.31, -0.23, -0.17, 3.1, -2.3, 4.7,
+                          0.0021, 0.0007, -0.2003, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
+    for (int b = 0; b < 2; b++) memcpy(y + m->body_yadr[b], s + 13 * b, 13 * sizeof(double));
+    for (int k = 26; k < m->ny; k++) y[k] = 0.013 * (k - 25);
+    y[m->inter_eadr[0] + m->inter_hidx[0]] = 731.0;
+    y[m->inter_eadr[0] + m->inter_oidx[0]] = 3.7e-4;
+    rc_inter_report r;
+    rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+    ENSURE(r.p > 0);
+    /* several nodes past the plate (the spread is exercised), at distinct depths */
+    int npen = -1;
+    if (!box) {
+        double qa[4], qb[4], na = 0, nb = 0;
+        for (int k = 0; k < 4; k++) {
+            na += s[3 + k] * s[3 + k];
+            nb += s[16 + k] * s[16 + k];
+        }
+        for (int k = 0; k < 4; k++) {
+            qa[k] = s[3 + k] / sqrt(na);
+            qb[k] = s[16 + k] / sqrt(nb);
+        }
+        const double nl[3] = {0.05 / sqrt(1.0034), -0.03 / sqrt(1.0034), 1.0 / sqrt(1.0034)}, pl[3] = {0, 0, 0.201};
+        double ng[3], pg[3];
+        rotate(qb, nl, ng);
+        rotate(qb, pl, pg);
+        npen = 0;
+        for (int j = 0; j < m->surf_nadr[1]; j++) {
+            double x[3];
+            rotate(qa, m->surf_node + 3 * j, x);
+            double dist = 0;
+            for (int k = 0; k < 3; k++) dist += (x[k] + s[k] - pg[k] - s[13 + k]) * ng[k];
+            npen += 0.0011 - dist - 3.7e-4 > 0;
+        }
+    }
+    ENSURE(box || (npen >= 2 && npen < 8));
+    int bad = 0, outside = 0, combos = 0;
+    double maxerr = 0;
+    const int modes[2] = {RC_MODE_CLOSED, RC_MODE_RELEASED};
+    for (int md = 0; md < 2; md++)
+        for (int br = 0; br < 3; br++)
+            for (int trk = 0; trk < 2; trk++) {
+                d->inter_mode[0] = modes[md];
+                d->inter_branch[0] = br;
+                d->inter_track[0] = trk;
+                maxerr = fmax(maxerr, seg_jac_error(m, d, y, &bad, &outside));
+                combos++;
+            }
+    printf("    %s jacobian: P = %.3g m (%d nodes past the plate; -1: not counted), %d states, %lld nonzeros, %d mode combinations, max scaled |J - FD| "
+           "= %.2e\n", box ? "segments-box" : "segments-plane", r.p, npen, m->ny, (long long)m->nnz, combos, maxerr);
+    ENSURE(bad == 0);
+    ENSURE(outside == 0);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
+static void test_seg_jacobian_matches_finite_differences(void) { seg_jacobian_check(0); }
+static void test_seg_box_jacobian_matches_finite_differences(void) { seg_jacobian_check(1); }
+
+/* A sphere (body 1, off its centre of mass) in a V-shaped valley of
+ * triangles and quadrilaterals carried by a moving body 2: two face points
+ * past the surface, every mode, against central differences; and the
+ * force on the sphere along the sum of the two shared normal forces. */
+static void test_seg_sphere_jacobian_matches_finite_differences(void)
+{
+    rc_error e;
+    rc_model *m = seg_compile("/NODE\n1,0.001,-0.002,0.05\n2,0,0,-0.2\n"
+                              "10,-0.2,-0.2,0.06\n11,0.2,-0.2,0.06\n12,0.2,0,0\n13,-0.2,0,0\n14,0.2,0.2,0.06\n"
+                              "15,-0.2,0.2,0.06\n16,0,0.2,0.06\n"
+                              "/GRNOD/NODE/8\nplate\n10,11,12,13,14,15,16\n"
+                              "/RBODY/1\nball\n1,,,,0.731\n2.1e-3,1.7e-3,2.9e-3\n1.3e-4,-2.2e-4,0.7e-4\n"
+                              "/RBODY/2\nvalley\n2,,,,5.0,8\n0.11,0.13,0.2\n0.01,0,0\n"
+                              "/SURF/ELLIPS/20\nball\n0,2,1\n0.0017,-0.0011,0.0521\n0.05,0.05,0.05\n"
+                              "/SURF/SEG/40\nvalley\n1,10,11,12,13\n2,13,12,16\n3,12,14,16\n4,13,16,15\n"
+                              "/FUNCT/1\nload\n-0.01,-3.1e3\n0,0\n0.0013,2.71e3\n0.0041,1.37e4\n0.0097,5.9e4\n"
+                              "/FUNCT/2\nunload\n0,0\n0.002,0\n0.006,5e3\n0.011,3.1e4\n"
+                              "/FUNCT/3\ndv\n-10,-41\n0,0\n0.37,5.3\n3.3,71\n/FUNCT/4\ndf\n0,1\n500,0.83\n9e4,0.61\n"
+                              "/INTER/TYPE6/1\nball in the valley\n40,20\n,,0.0011\n,,,5,,,1.9,0.61\n1,1,1.3,0.77\n"
+                              "2,,7.3e6,0.83\n3.7,3,4,2.3\n" RUN_TAIL,
+                              &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    ENSURE(m->inter_pair[0] == RC_PAIR_SPHERE_SEG);
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    rc_initial_state(m, y);
+    const double s[26] = {0.0011, -0.0023, 0.0497, 0.99, 0.011, -0.013, 0.007, 0.31, -0.23, -0.17, 3.1, -2.3, 4.7,
+                          0.0021, 0.0007, -0.2003, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
+    for (int b = 0; b < 2; b++) memcpy(y + m->body_yadr[b], s + 13 * b, 13 * sizeof(double));
+    for (int k = 26; k < m->ny; k++) y[k] = 0.013 * (k - 25);
+    y[m->inter_eadr[0] + m->inter_hidx[0]] = 731.0;
+    y[m->inter_eadr[0] + m->inter_oidx[0]] = 3.7e-4;
+    rc_inter_report r;
+    rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+    ENSURE(r.p > 0);
+    int bad = 0, outside = 0, combos = 0;
+    double maxerr = 0;
+    const int modes[2] = {RC_MODE_CLOSED, RC_MODE_RELEASED};
+    for (int md = 0; md < 2; md++)
+        for (int br = 0; br < 3; br++)
+            for (int trk = 0; trk < 2; trk++) {
+                d->inter_mode[0] = modes[md];
+                d->inter_branch[0] = br;
+                d->inter_track[0] = trk;
+                maxerr = fmax(maxerr, seg_jac_error(m, d, y, &bad, &outside));
+                combos++;
+            }
+    printf("    sphere-segments jacobian: P = %.3g m, %d states, %lld nonzeros, %d mode combinations, max scaled "
+           "|J - FD| = %.2e\n", r.p, m->ny, (long long)m->nnz, combos, maxerr);
+    ENSURE(bad == 0);
+    ENSURE(outside == 0);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
+/* A sphere at rest in a symmetric V valley (fixed): two face points at the
+ * same depth share F = k P equally; the force on the sphere is vertical,
+ * 2 (F / 2) cos(alpha) with alpha the slope angle, and without moment. */
+static void test_seg_sphere_valley_forces(void)
+{
+    rc_error e;
+    rc_model *m = seg_compile("/NODE\n1,0,0,0.0515\n"
+                              "10,-0.2,-0.2,0.06\n11,0.2,-0.2,0.06\n12,0.2,0,0\n13,-0.2,0,0\n14,0.2,0.2,0.06\n"
+                              "15,-0.2,0.2,0.06\n"
+                              "/RBODY/1\nball\n1,,,,2.0\n0.002,0.002,0.002\n0,0,0\n"
+                              "/SURF/ELLIPS/20\nball\n0,2,1\n0,0,0.0515\n0.05,0.05,0.05\n"
+                              "/SURF/SEG/40\nvalley\n1,10,11,12,13\n2,13,12,14,15\n" LINEAR
+                              "/INTER/TYPE6/1\nball in the valley\n20,40\n\n\n1\n\n\n" RUN_TAIL,
+                              &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    ENSURE(m->surf_body[1] == -1); /* nodes in no body: fixed in space */
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double)), *yd = calloc((size_t)m->ny, sizeof(double));
+    rc_initial_state(m, y);
+    d->inter_mode[0] = RC_MODE_CLOSED;
+    rc_assemble_rhs(m, d, 0.0, y, yd);
+    const double slope = 0.06 / 0.2, ca = 1.0 / sqrt(1 + slope * slope);
+    const double P = 0.05 - 0.0515 * ca, F = 1e6 * P;
+    const double *acc = yd + m->body_yadr[0] + 7;
+    ENSURE_NEAR(acc[2], F * ca / 2.0, 1e-12, 0);
+    ENSURE_NEAR(acc[0], 0.0, 0, 1e-9);
+    ENSURE_NEAR(acc[1], 0.0, 0, 1e-9);
+    for (int k = 3; k < 6; k++) ENSURE_NEAR(acc[k], 0.0, 0, 1e-9);
+    rc_inter_report r;
+    rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+    ENSURE_NEAR(r.p, P, 1e-12, 0);
+    printf("    sphere in a V valley: P = %.6g m, vertical acceleration %.9g m/s^2 (F cos(alpha) / m = %.9g)\n", r.p,
+           acc[2], F * ca / 2.0);
+    free(y);
+    free(yd);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
+void suite_seg(void);
+void suite_seg(void)
+{
+    RUN_TEST(test_seg_read_surfaces);
+    RUN_TEST(test_seg_read_errors);
+    RUN_TEST(test_seg_force_distribution);
+    RUN_TEST(test_seg_jacobian_matches_finite_differences);
+    RUN_TEST(test_seg_box_jacobian_matches_finite_differences);
+    RUN_TEST(test_seg_sphere_valley_forces);
+    RUN_TEST(test_seg_sphere_jacobian_matches_finite_differences);
+}

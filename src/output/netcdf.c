@@ -111,7 +111,8 @@ typedef struct var_spec {
 static const var_spec var_table[V_COUNT] = {
     [V_TIME] = {"time", NC_DOUBLE, 1, {D_TIME}, U_TIME, "simulated time", NULL},
     [V_AT_EVENT] = {"at_event", NC_INT, 1, {D_TIME}, U_ONE,
-                    "record written at an event", "1: at an event, 0: at an output time"},
+                    "record written at an event", "1: at an event, 0: at an output time, 2: inside a contact "
+                    "that the output interval cannot resolve (about 20 per contact)"},
     [V_BODY_ID] = {"body_id", NC_INT, 1, {D_BODY}, U_ONE, "rigid body identifier (/RBODY id)",
                    NULL},
     [V_BODY_FIXED] = {"body_fixed", NC_INT, 1, {D_BODY}, U_ONE, "body is fixed (ground)",

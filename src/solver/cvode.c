@@ -847,6 +847,10 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
     double tout = fmin(dtout, tend);
     int fresh = 0; /* modes changed without a restart: the Jacobian is stale */
     double t_prev = t; /* where the last CVode call ended [s] */
+    /* records inside contacts, at their own time scale, when the output
+     * interval cannot resolve them (with full-state event records only) */
+    const double dt_contact = evrec ? rc_contact_record_interval(m, dtout) : 0.0;
+    double t_contact_rec = -INFINITY; /* time of the last such record [s] */
     long single = 0;   /* single steps since the last output time */
     while (t < tend) {
         /* the event callback asked to stop: end here as an interrupted run */
@@ -943,6 +947,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
             continue;
         }
         if (flag == CV_ROOT_RETURN) {
+            t_contact_rec = t; /* the event's own record stands for a contact record */
             /* flip modes; restart only when the right-hand side jumps */
             CVCHECK(CVodeGetRootInfo(cv, roots), "CVodeGetRootInfo");
             /* roots that land exactly on zero at the step's end (a law flat at
@@ -1003,7 +1008,12 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
                 tout = fmin(nout * dtout, tend);
             }
         } else if (one_step && t < tout) {
-            /* the single step ended before the output time: carry on */
+            /* the single step ended before the output time: carry on, with
+             * a record inside a contact when its time scale calls for one */
+            if (dt_contact > 0 && rc_impacts_active(&im) && t - t_contact_rec >= dt_contact) {
+                if ((st = write_frame(m, d, out, &fb, t, yd, RC_REC_CONTACT, err))) goto done;
+                t_contact_rec = t;
+            }
         } else {
             /* output times reached (a single step may pass several) */
             while (tout <= t) {

@@ -147,3 +147,14 @@ void rc_impacts_sampling_note(const rc_model *m, char *buf, size_t n)
              "the impact table",
              m->dtout, tc, m->inter_name[worst], floor(tc / m->dtout));
 }
+
+double rc_contact_record_interval(const rc_model *m, double dtout)
+{
+    double tc = INFINITY;
+    for (int i = 0; i < m->ninter; i++) {
+        const double p = m->inter_pscale[i], v = m->inter_vscale[i];
+        if (isfinite(p) && isfinite(v) && p > 0 && v > 0) tc = fmin(tc, RC_PI * p / v);
+    }
+    const double dt = tc / RC_CONTACT_RECORDS;
+    return isfinite(dt) && dt < dtout ? dt : 0.0;
+}

@@ -34,6 +34,14 @@ void rc_impacts_finish(rc_impacts *im);
  * RC_IMPACT_MIN_RECORDS records over a contact of the linearised duration
  * pi p_s / v_s); buf[0] = 0 otherwise. */
 void rc_impacts_sampling_note(const rc_model *m, char *buf, size_t n);
+/* Records per contact inside contacts that Dt_out cannot resolve. */
+#define RC_CONTACT_RECORDS 20
+/* at_event value of such a record */
+#define RC_REC_CONTACT 2
+/* The interval of the records inside contacts [s]: the shortest contact
+ * time scale pi p_s / v_s over RC_CONTACT_RECORDS, or 0 when Dt_out
+ * (dtout) already gives that many records per contact. */
+double rc_contact_record_interval(const rc_model *m, double dtout);
 
 /* Records per contact below which the note is given [-]. */
 #define RC_IMPACT_MIN_RECORDS 10

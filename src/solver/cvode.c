@@ -849,7 +849,8 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
     double t_prev = t; /* where the last CVode call ended [s] */
     /* records inside contacts, at their own time scale, when the output
      * interval cannot resolve them (with full-state event records only) */
-    const double dt_contact = evrec ? rc_contact_record_interval(m, dtout) : 0.0;
+    const double dt_contact =
+        evrec && m->nbody <= RC_CONTACT_REC_MAX_BODIES ? rc_contact_record_interval(m, dtout) : 0.0;
     double t_contact_rec = -INFINITY; /* time of the last such record [s] */
     long single = 0;   /* single steps since the last output time */
     while (t < tend) {

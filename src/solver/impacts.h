@@ -36,6 +36,9 @@ void rc_impacts_finish(rc_impacts *im);
 void rc_impacts_sampling_note(const rc_model *m, char *buf, size_t n);
 /* Records per contact inside contacts that Dt_out cannot resolve. */
 #define RC_CONTACT_RECORDS 20
+/* ... written for models of at most this many bodies (impact studies; a
+ * many-body model has contacts in progress all the time) */
+#define RC_CONTACT_REC_MAX_BODIES 10
 /* at_event value of such a record */
 #define RC_REC_CONTACT 2
 /* The interval of the records inside contacts [s]: the shortest contact

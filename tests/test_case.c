@@ -9,6 +9,7 @@
  * The test binary runs from the repository root.
  */
 #include "harness.h"
+#include "testutil.h"
 #include "case/case.h"
 #include "base/error.h"
 
@@ -18,47 +19,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-
-/* ---- Temporary files ---------------------------------------------------- */
-
-#define MAX_TMP 256
-static char tmp_dir[64];
-static char tmp_paths[MAX_TMP][128];
-static int ntmp;
-
-/* Write `len` bytes as tmp_dir/name; returns the path (static storage). */
-static const char *tmp_write_n(const char *name, const char *text, size_t len)
-{
-    if (!tmp_dir[0]) {
-        snprintf(tmp_dir, sizeof tmp_dir, "/tmp/rc_case_test_XXXXXX");
-        if (!mkdtemp(tmp_dir)) { perror("mkdtemp"); exit(1); }
-    }
-    char path[128];
-    snprintf(path, sizeof path, "%s/%s", tmp_dir, name);
-    int i;
-    for (i = 0; i < ntmp; i++)
-        if (strcmp(tmp_paths[i], path) == 0) break;
-    if (i == ntmp) {
-        if (ntmp == MAX_TMP) { fprintf(stderr, "too many temp files\n"); exit(1); }
-        snprintf(tmp_paths[ntmp++], sizeof tmp_paths[0], "%s", path);
-    }
-    FILE *f = fopen(path, "wb");
-    if (!f || fwrite(text, 1, len, f) != len || fclose(f) != 0) { perror(path); exit(1); }
-    return tmp_paths[i];
-}
-
-static const char *tmp_write(const char *name, const char *text)
-{
-    return tmp_write_n(name, text, strlen(text));
-}
-
-static void tmp_cleanup(void)
-{
-    for (int i = 0; i < ntmp; i++) remove(tmp_paths[i]);
-    ntmp = 0;
-    if (tmp_dir[0]) rmdir(tmp_dir);
-    tmp_dir[0] = '\0';
-}
 
 /* ---- Helpers ------------------------------------------------------------ */
 
@@ -94,7 +54,7 @@ static int check_error(const char *path, rc_status code, int line, ...)
 
 /* Write `text` as NAME and expect an input error at LINE with the needles. */
 #define EXPECT_INPUT_ERROR(name, text, line, ...) \
-    ENSURE(check_error(tmp_write((name), (text)), RC_EINPUT, (line), __VA_ARGS__, (const char *)NULL) == 0)
+    ENSURE(check_error(tu_tmp_write((name), (text)), RC_EINPUT, (line), __VA_ARGS__, (const char *)NULL) == 0)
 
 /* Load a deck that must be valid. */
 static rc_case *load_ok(const char *path)
@@ -450,7 +410,7 @@ static void test_case_full_deck_comma_equals_fixed(void)
 
 static void test_case_fortran_reals(void)
 {
-    const char *p = tmp_write("reals.rad",
+    const char *p = tu_tmp_write("reals.rad",
                               "/FUNCT/1\n"
                               "Fortran forms\n"
                               "             -2.                 .5\n"
@@ -475,7 +435,7 @@ static void test_case_fortran_reals(void)
 
 static void test_case_defaults(void)
 {
-    const char *p = tmp_write("defaults.rad",
+    const char *p = tu_tmp_write("defaults.rad",
                               "/INTER/TYPE6/8\n"
                               "\n"          /* blank title */
                               "        12        11\n"
@@ -521,7 +481,7 @@ static void test_case_defaults(void)
 /* A fully blank line inside a card is a line of defaults. */
 static void test_case_blank_line_is_data(void)
 {
-    const char *p = tmp_write("blank.rad",
+    const char *p = tu_tmp_write("blank.rad",
                               "/RBODY/3\n"
                               "\n"
                               "1,,,,0.0371\n"
@@ -540,7 +500,7 @@ static void test_case_blank_line_is_data(void)
 /* Comments, #RADIOSS STARTER, CRLF, trailing blanks, BOM, /END. */
 static void test_case_comments_and_end(void)
 {
-    const char *p = tmp_write("comments.rad",
+    const char *p = tu_tmp_write("comments.rad",
                               "\xEF\xBB\xBF#RADIOSS STARTER\r\n"
                               "# comment\r\n"
                               "$ comment, with a comma and\ta tab\r\n"
@@ -559,7 +519,7 @@ static void test_case_comments_and_end(void)
 /* Ignored Radioss cards leave a warning. */
 static void test_case_ignored_cards_warn(void)
 {
-    const char *p = tmp_write("ignored.rad",
+    const char *p = tu_tmp_write("ignored.rad",
                               "/TITLE\nsome title\n/MAT/LAW99/4\nsteel\n7800 2.1e11 0.3\n"
                               "/PROP/WEIRD//header/\n" RUN_CARD);
     rc_case *c = load_ok(p);
@@ -583,7 +543,7 @@ static uint64_t fnv1a(const char *s, size_t n)
 static void test_case_checksum(void)
 {
     const char *text = "/RUN\n1.0,0.1\n";
-    const char *p = tmp_write("sum.rad", text);
+    const char *p = tu_tmp_write("sum.rad", text);
     rc_case *c = load_ok(p);
     ENSURE(c != NULL);
     ENSURE(fnv1a("a", 1) == 0xaf63dc4c8601ec8cull); /* published test vector */
@@ -617,8 +577,8 @@ static void test_case_include_relative(void)
 
 static void test_case_include_cycle(void)
 {
-    tmp_write("cyc_b.inc", "/FUNCT/1\nf\n0,0\n1,1\n#include cyc_a.rad\n");
-    const char *a = tmp_write("cyc_a.rad", RUN_CARD "#include cyc_b.inc\n");
+    tu_tmp_write("cyc_b.inc", "/FUNCT/1\nf\n0,0\n1,1\n#include cyc_a.rad\n");
+    const char *a = tu_tmp_write("cyc_a.rad", RUN_CARD "#include cyc_b.inc\n");
     ENSURE(check_error(a, RC_EINPUT, 0, "cyc_b.inc:5:", "cyc_a.rad", "cycle", (const char *)NULL) == 0);
     /* a file including itself */
     EXPECT_INPUT_ERROR("self.rad", RUN_CARD "#include self.rad\n", 3, "self.rad", "cycle");
@@ -635,13 +595,13 @@ static void test_case_include_depth_limit(void)
 {
     /* d0 -> d1 -> ... -> d40: deeper than the limit of 32 levels */
     char name[32], text[64];
+    const char *d0 = NULL;
     for (int i = 40; i >= 0; i--) {
         snprintf(name, sizeof name, "d%d.inc", i);
         snprintf(text, sizeof text, "#include d%d.inc\n", i + 1);
-        tmp_write(name, i == 40 ? RUN_CARD : text);
+        d0 = tu_tmp_write(name, i == 40 ? RUN_CARD : text);
     }
-    char path[160];
-    snprintf(path, sizeof path, "%s/d0.inc", tmp_dir);
+    const char *path = d0; /* written last */
     ENSURE(check_error(path, RC_EINPUT, 0, "d32.inc:1:", "d33.inc", "deeper than 32",
                        (const char *)NULL) == 0);
 }
@@ -664,7 +624,7 @@ static void test_case_docs_example(void)
     ENSURE(b && e);
     if (!b || !e) return;
     e[1] = '\0';
-    rc_case *c = load_ok(tmp_write("docs_example.rad", b + 1));
+    rc_case *c = load_ok(tu_tmp_write("docs_example.rad", b + 1));
     ENSURE(c != NULL);
     if (!c) return;
     ENSURE(c->nrbody == 1 && c->nsurf == 2 && c->ntype6 == 1 && c->nfunct == 1 && c->ngrav == 1);
@@ -770,10 +730,10 @@ static void test_case_error_outside_card(void)
 static void test_case_error_binary(void)
 {
     static const char junk[] = "/RUN\n1.0\n\x7f" "ELF\x02\x01\x01\x00\x00\x00\x00\x00\x00\x00\x00\x00";
-    ENSURE(check_error(tmp_write_n("binary.rad", junk, sizeof junk - 1), RC_EINPUT, 3,
+    ENSURE(check_error(tu_tmp_write_n("binary.rad", junk, sizeof junk - 1), RC_EINPUT, 3,
                        "not a text file", (const char *)NULL) == 0);
     static const char nul[] = "/RUN\n1.0\0,0.1\n";
-    ENSURE(check_error(tmp_write_n("nul.rad", nul, sizeof nul - 1), RC_EINPUT, 2,
+    ENSURE(check_error(tu_tmp_write_n("nul.rad", nul, sizeof nul - 1), RC_EINPUT, 2,
                        "byte 0x00", (const char *)NULL) == 0);
 }
 
@@ -876,7 +836,7 @@ static const char *type6_deck(const char *name, int k, const char *text)
     for (int i = 0; i < 6; i++)
         n += snprintf(deck + n, sizeof deck - (size_t)n, "%s\n", i + 1 == k ? text : def[i]);
     snprintf(deck + n, sizeof deck - (size_t)n, RUN_CARD);
-    return tmp_write(name, deck);
+    return tu_tmp_write(name, deck);
 }
 
 #define EXPECT_T6(k, text, ...) \
@@ -960,7 +920,7 @@ static void test_case_error_run_solver(void)
  * Xfreq 0 = no filter), the number of groups from the lines. */
 static void test_case_friction_defaults(void)
 {
-    const char *p = tmp_write("fricdef.rad",
+    const char *p = tu_tmp_write("fricdef.rad",
                               "/FRICTION/7\n"
                               "\n" /* blank title */
                               "\n" /* Ifric Ifiltr Xfreq Iform */
@@ -1014,7 +974,7 @@ static void test_case_friction_defaults(void)
     rc_case_free(c);
 
     /* the Renard checks apply to Ifric 3 only */
-    c = load_ok(tmp_write("fricnorenard.rad", "/FRICTION/1\nf\n2\n0.9,0.8,0.1,0.95,-1\n-2\n" RUN_CARD));
+    c = load_ok(tu_tmp_write("fricnorenard.rad", "/FRICTION/1\nf\n2\n0.9,0.8,0.1,0.95,-1\n-2\n" RUN_CARD));
     ENSURE(c && c->nfriction == 1 && c->friction[0].def.c[4] == -1);
     rc_case_free(c);
 }
@@ -1094,7 +1054,7 @@ static void test_case_error_friction_renard(void)
                        "0.31,0.23,0.41,0.17,0.0137\n0.01\n" RUN_CARD,
                        9, "card /FRICTION/5", "field C5", "C5 < C6 = 0.01", "\"0.0137\"");
     /* and a valid Renard deck with both directions loads */
-    rc_case *c = load_ok(tmp_write("rn.rad", FRIC("3", RENARD_B, RENARD_C) "3,4,,,,1\n" RENARD_B
+    rc_case *c = load_ok(tu_tmp_write("rn.rad", FRIC("3", RENARD_B, RENARD_C) "3,4,,,,1\n" RENARD_B
                                    "\n" RENARD_C "\n" RENARD_B "\n" RENARD_C "\n" RUN_CARD));
     ENSURE(c && c->friction[0].npair == 1 && c->friction[0].pair[0].set[1].c[5] == 0.371);
     rc_case_free(c);
@@ -1181,7 +1141,7 @@ static void test_case_error_part_grpart(void)
     EXPECT_INPUT_ERROR("gpdup.rad", "/GRPART/PART/3\ng\n1\n/GRPART/PART/3\nh\n2\n" RUN_CARD, 4,
                        "field grpart_ID", "duplicate id 3");
     /* a part id and a part group id may coincide: separate id spaces */
-    rc_case *c = load_ok(tmp_write("ptgp.rad", "/PART/3\np\n\n7\n/GRPART/PART/3\ng\n3\n" RUN_CARD));
+    rc_case *c = load_ok(tu_tmp_write("ptgp.rad", "/PART/3\np\n\n7\n/GRPART/PART/3\ng\n3\n" RUN_CARD));
     ENSURE(c && c->npart == 1 && c->ngrpart == 1 && c->nwarnings == 0);
     rc_case_free(c);
 }
@@ -1214,7 +1174,7 @@ static void test_case_robust_truncated_and_mutated(void)
     int bad = 0;
     /* every truncation */
     for (size_t k = 0; k < n; k += 7)
-        bad += !load_any(tmp_write_n("trunc.rad", deck, k));
+        bad += !load_any(tu_tmp_write_n("trunc.rad", deck, k));
     /* random byte mutations (deterministic LCG) */
     uint32_t seed = 0x0371u;
     static const char alphabet[] = " ,./-+0123456789eEdD\t\r\n#$\0\xff" "ZX";
@@ -1226,7 +1186,7 @@ static void test_case_robust_truncated_and_mutated(void)
             seed = seed * 1664525u + 1013904223u;
             buf[pos] = alphabet[(seed >> 8) % (sizeof alphabet - 1)];
         }
-        bad += !load_any(tmp_write_n("mut.rad", buf, n));
+        bad += !load_any(tu_tmp_write_n("mut.rad", buf, n));
     }
     ENSURE(bad == 0);
 }
@@ -1280,5 +1240,5 @@ void suite_case(void)
     RUN_TEST(test_case_error_fric_orient);
     RUN_TEST(test_case_error_part_grpart);
     RUN_TEST(test_case_robust_truncated_and_mutated);
-    tmp_cleanup();
+    tu_tmp_cleanup();
 }

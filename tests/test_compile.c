@@ -12,6 +12,7 @@
 #include "base/error.h"
 #include "model/model.h"
 #include "harness.h"
+#include "testutil.h"
 
 /* A valid deck: a sphere on body 1 dropped on a fixed plane, TYPE6 Iform 1
  * (load k1 = 1e5 N/m, unload curve below), the pieces below replaced by the
@@ -51,25 +52,17 @@ static const char *deck(int k, const char *piece, const char *extra)
 /* Load and compile; expect RC_EINPUT with every needle in the message. */
 static int compile_error(const char *path, ...)
 {
-    rc_case *c = NULL;
     rc_model *m = NULL;
     rc_error e;
-    rc_error_clear(&e);
-    rc_status st = rc_case_load(path, &c, &e);
-    if (st == RC_OK) st = rc_model_compile(c, &m, &e);
+    rc_status st = tu_load_compile(path, &m, &e);
     int bad = st != RC_EINPUT || m != NULL;
     if (!strstr(e.msg, path)) bad++; /* names the file */
     va_list ap;
     va_start(ap, path);
-    for (const char *s; (s = va_arg(ap, const char *));)
-        if (!strstr(e.msg, s)) {
-            fprintf(stderr, "  missing \"%s\"\n", s);
-            bad++;
-        }
+    bad += tu_missing_needles(e.msg, ap);
     va_end(ap);
     if (bad) fprintf(stderr, "  status %d; message: %s\n", st, e.msg);
     rc_model_free(m);
-    rc_case_free(c);
     remove(path);
     return bad;
 }
@@ -79,12 +72,9 @@ static int compile_error(const char *path, ...)
 /* Load and compile a deck that must be valid. */
 static rc_model *compile_ok(const char *path)
 {
-    rc_case *c = NULL;
     rc_model *m = NULL;
     rc_error e;
-    rc_error_clear(&e);
-    if (rc_case_load(path, &c, &e) == RC_OK) rc_model_compile(c, &m, &e);
-    rc_case_free(c);
+    tu_load_compile(path, &m, &e);
     return m;
 }
 

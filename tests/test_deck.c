@@ -9,6 +9,7 @@
  * removed at the end of the suite.
  */
 #include "harness.h"
+#include "testutil.h"
 #include "case/case.h"
 #include "base/error.h"
 
@@ -18,41 +19,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-
-#define MAX_TMP 128
-static char tmp_dir[64];
-static char tmp_paths[MAX_TMP][160];
-static int ntmp;
-
-/* Write `text` as tmp_dir/name; returns the path (static storage). */
-static const char *tmp_write(const char *name, const char *text)
-{
-    if (!tmp_dir[0]) {
-        snprintf(tmp_dir, sizeof tmp_dir, "/tmp/rc_deck_test_XXXXXX");
-        if (!mkdtemp(tmp_dir)) { perror("mkdtemp"); exit(1); }
-    }
-    char path[160];
-    snprintf(path, sizeof path, "%s/%s", tmp_dir, name);
-    int i;
-    for (i = 0; i < ntmp; i++)
-        if (strcmp(tmp_paths[i], path) == 0) break;
-    if (i == ntmp) {
-        if (ntmp == MAX_TMP) { fprintf(stderr, "too many temp files\n"); exit(1); }
-        snprintf(tmp_paths[ntmp++], sizeof tmp_paths[0], "%s", path);
-    }
-    FILE *f = fopen(path, "wb");
-    size_t len = strlen(text);
-    if (!f || fwrite(text, 1, len, f) != len || fclose(f) != 0) { perror(path); exit(1); }
-    return tmp_paths[i];
-}
-
-static void tmp_cleanup(void)
-{
-    for (int i = 0; i < ntmp; i++) remove(tmp_paths[i]);
-    ntmp = 0;
-    if (tmp_dir[0]) rmdir(tmp_dir);
-    tmp_dir[0] = '\0';
-}
 
 /* Load a deck that must be valid (NULL and the message printed if not). */
 static rc_case *load_ok(const char *path)
@@ -100,7 +66,7 @@ static int count_warnings(const rc_case *c, ...)
  * columns, Ascale_x in 61-80, Fscale_y in 81-100. */
 static void test_deck_grav_columns(void)
 {
-    const char *p = tmp_write("grav.rad",
+    const char *p = tu_tmp_write("grav.rad",
                               "/GRAV/3\n"
                               "ramped gravity\n"
                               "#funct_IDT       DIR   skew_ID sensor_ID  grnod_ID                      Ascale_x            Fscale_Y\n"
@@ -120,7 +86,7 @@ static void test_deck_grav_columns(void)
     rc_case_free(c);
     /* a value in the unused columns 51-60 is an error naming the field */
     rc_error e;
-    ENSURE(load_fails(tmp_write("grav2.rad", "/GRAV/3\ng\n         7         Y         0         0        12         2\n" RUN_CARD), &e));
+    ENSURE(load_fails(tu_tmp_write("grav2.rad", "/GRAV/3\ng\n         7         Y         0         0        12         2\n" RUN_CARD), &e));
     ENSURE(strstr(e.msg, "grav2.rad:3:") && strstr(e.msg, "/GRAV/3") && strstr(e.msg, "field blank"));
 }
 
@@ -129,7 +95,7 @@ static void test_deck_grav_columns(void)
 static void test_deck_end_in_include(void)
 {
     /* each included model ends with /END (or #enddata): only that file ends */
-    tmp_write("part_a.inc",
+    tu_tmp_write("part_a.inc",
               "#RADIOSS STARTER\n"
               "/BEGIN\n"
               "model a\n"
@@ -143,14 +109,14 @@ static void test_deck_end_in_include(void)
               "/END\n"
               "/FUNCT/99\n"
               "after the end of a: never read\n");
-    tmp_write("part_b.inc",
+    tu_tmp_write("part_b.inc",
               "/FUNCT/2\n"
               "b\n"
               "                 0.0                 0.0\n"
               "                 2.0                 1.0\n"
               "#enddata\n"
               "/FOO/1\n");
-    const char *p = tmp_write("assembled.rad",
+    const char *p = tu_tmp_write("assembled.rad",
                               "/BEGIN\n"
                               "assembled\n"
                               "      2022         0\n"
@@ -182,7 +148,7 @@ static void test_deck_end_in_include(void)
 
 static void test_deck_lenient_headers_and_text(void)
 {
-    const char *p = tmp_write("lenient.rad",
+    const char *p = tu_tmp_write("lenient.rad",
                               "/BEGIN/\n"
                               "lenient\n"
                               "      2022         0         7\n"
@@ -210,7 +176,7 @@ static void test_deck_lenient_headers_and_text(void)
 /* /INTER/TYPE6 written by Radioss 2022 with Iform 1 and Stiff 0: Iform 0. */
 static void test_deck_type6_iform_without_stiff(void)
 {
-    const char *p = tmp_write("t6stiff.rad",
+    const char *p = tu_tmp_write("t6stiff.rad",
                               "/INTER/TYPE6/8\n"
                               "elasto-plastic without Stiff\n"
                               "# surf_ID1  surf_ID2\n"
@@ -239,7 +205,7 @@ static void test_deck_type6_iform_without_stiff(void)
 /* /FRIC_ORIENT with V = (0, 0, 0): the X axis, with a warning. */
 static void test_deck_fric_orient_zero_vector(void)
 {
-    const char *p = tmp_write("fozero.rad",
+    const char *p = tu_tmp_write("fozero.rad",
                               "/FRIC_ORIENT/3\n"
                               "orientation\n"
                               "#grpart_ID   part_ID\n"
@@ -261,7 +227,7 @@ static void test_deck_fric_orient_zero_vector(void)
 
 static void test_deck_explicit_cards_one_warning_per_kind(void)
 {
-    const char *p = tmp_write("explicit.rad",
+    const char *p = tu_tmp_write("explicit.rad",
                               "/TITLE\n"
                               "a Radioss model\n"
                               "/TH/RBODY/1\n"
@@ -308,7 +274,7 @@ static void test_deck_several_errors(void)
     rc_error e;
     /* three cards in error: the first one is the report's first line, the
      * others follow, then the count; the reading goes on after each */
-    const char *p = tmp_write("errs.rad",
+    const char *p = tu_tmp_write("errs.rad",
                               "/FUNCT/1\n"
                               "f\n"
                               "                 0.0                 0.0\n"
@@ -339,7 +305,7 @@ static void test_deck_several_errors(void)
         strcat(deck, card);
     }
     strcat(deck, RUN_CARD);
-    ENSURE(load_fails(tmp_write("errs25.rad", deck), &e));
+    ENSURE(load_fails(tu_tmp_write("errs25.rad", deck), &e));
     int n = 0;
     for (const char *q = e.msg; (q = strstr(q, "field DIR")); q++) n++;
     ENSURE(n == 20);
@@ -350,7 +316,7 @@ static void test_deck_several_errors(void)
 
     /* every duplicate id is reported, in the order of the deck */
     const char *dp;
-    ENSURE(load_fails(dp = tmp_write("dups.rad", "/FUNCT/1\na\n0,0\n1,1\n/GRAV/4\ng\n0,Z\n/FUNCT/1\nb\n0,0\n1,1\n"
+    ENSURE(load_fails(dp = tu_tmp_write("dups.rad", "/FUNCT/1\na\n0,0\n1,1\n/GRAV/4\ng\n0,Z\n/FUNCT/1\nb\n0,0\n1,1\n"
                                              "/GRAV/4\nh\n0,Z\n" RUN_CARD), &e));
     const char *d1 = strstr(e.msg, "dups.rad:8: card /FUNCT/1, field fct_ID: duplicate id 1");
     const char *d2 = strstr(e.msg, "dups.rad:12: card /GRAV/4, field grav_ID: duplicate id 4");
@@ -362,11 +328,11 @@ static void test_deck_several_errors(void)
 static void test_deck_begin_forms(void)
 {
     /* Radioss 9.0: run name and version only */
-    rc_case *c = load_ok(tmp_write("begin90.rad", "/BEGIN\nold model\n        90         1\n" RUN_CARD));
+    rc_case *c = load_ok(tu_tmp_write("begin90.rad", "/BEGIN\nold model\n        90         1\n" RUN_CARD));
     ENSURE(c && c->invers == 90 && strcmp(c->title, "old model") == 0 && c->unit_mass[0] == 0);
     rc_case_free(c);
     /* Radioss 2021 and later: Invers alone; units */
-    c = load_ok(tmp_write("begin2024.rad",
+    c = load_ok(tu_tmp_write("begin2024.rad",
                           "/BEGIN/\n"
                           "new model\n"
                           "      2024\n"
@@ -375,16 +341,16 @@ static void test_deck_begin_forms(void)
     ENSURE(c && c->invers == 2024 && strcmp(c->unit_length, "m") == 0 && c->nwarnings == 0);
     rc_case_free(c);
     /* an empty block: accepted with a warning */
-    c = load_ok(tmp_write("begin0.rad", "/BEGIN\n" RUN_CARD));
+    c = load_ok(tu_tmp_write("begin0.rad", "/BEGIN\n" RUN_CARD));
     ENSURE(c && c->invers == 0 && c->title[0] == 0 && NWARN(c, "begin0.rad:1:", "/BEGIN", "empty") == 1);
     rc_case_free(c);
     /* an unknown version: the nearest older layouts, with a warning */
-    c = load_ok(tmp_write("begin77.rad", "/BEGIN\nx\n        77\n" RUN_CARD));
+    c = load_ok(tu_tmp_write("begin77.rad", "/BEGIN\nx\n        77\n" RUN_CARD));
     ENSURE(c && c->invers == 77 && NWARN(c, "begin77.rad:3:", "Invers = 77") == 1);
     rc_case_free(c);
     /* a fifth line is an error naming the card */
     rc_error e;
-    ENSURE(load_fails(tmp_write("begin5.rad", "/BEGIN\nx\n2022\n\n\nextra\n" RUN_CARD), &e));
+    ENSURE(load_fails(tu_tmp_write("begin5.rad", "/BEGIN\nx\n2022\n\n\nextra\n" RUN_CARD), &e));
     ENSURE(strstr(e.msg, "begin5.rad:6:") && strstr(e.msg, "/BEGIN") && strstr(e.msg, "unexpected data line"));
 }
 
@@ -394,7 +360,7 @@ static void test_deck_begin_forms(void)
  * from /ANIM/DT (blank-separated, as engine files often are). */
 static void test_deck_engine_run_single_file(void)
 {
-    const char *p = tmp_write("single.rad",
+    const char *p = tu_tmp_write("single.rad",
                               "/BEGIN\nball\n      2022\n"
                               "/FUNCT/1\nf\n                 0.0                 0.0\n                 1.0                 1.0\n"
                               "#RADIOSS ENGINE\n"
@@ -417,23 +383,23 @@ static void test_deck_engine_run_single_file(void)
     }
     rc_case_free(c);
     /* without /ANIM/DT: Tend/100; a run name that is a number, a restart letter */
-    c = load_ok(tmp_write("single2.rad", "/RUN/2024/1/C\n2.5\n"));
+    c = load_ok(tu_tmp_write("single2.rad", "/RUN/2024/1/C\n2.5\n"));
     ENSURE(c && c->run.present && c->run.tend == 2.5 && c->run.dtout == 0.025);
     rc_case_free(c);
     /* a ricochet /RUN wins, with a warning */
-    c = load_ok(tmp_write("both.rad", RUN_CARD "/RUN/ball/1\n7.0\n"));
+    c = load_ok(tu_tmp_write("both.rad", RUN_CARD "/RUN/ball/1\n7.0\n"));
     ENSURE(c && c->run.tend == 1.0 && NWARN(c, "both.rad:3:", "/RUN/ball/1", "ignored", "ricochet /RUN") == 1);
     rc_case_free(c);
     /* Tstop must be positive */
     rc_error e;
-    ENSURE(load_fails(tmp_write("tstop.rad", "/RUN/ball/1\n-1\n"), &e));
+    ENSURE(load_fails(tu_tmp_write("tstop.rad", "/RUN/ball/1\n-1\n"), &e));
     ENSURE(strstr(e.msg, "tstop.rad:2: card /RUN/ball/1, field Tstop") && !strstr(e.msg, "no /RUN"));
 }
 
 /* A starter and engine pair: NAME_0000.rad reads NAME_0001.rad next to it. */
 static void test_deck_engine_pair(void)
 {
-    tmp_write("drop_0001.rad",
+    tu_tmp_write("drop_0001.rad",
               "#RADIOSS ENGINE\n"
               "/RUN/drop/1\n"
               "                 0.5\n"
@@ -441,7 +407,7 @@ static void test_deck_engine_pair(void)
               "                   0               0.005\n"
               "/VERS/2022\n"
               "/END\n");
-    const char *p = tmp_write("drop_0000.rad",
+    const char *p = tu_tmp_write("drop_0000.rad",
                               "#RADIOSS STARTER\n"
                               "/BEGIN\ndrop\n      2022         0\n"
                               "                  kg                   m                   s\n"
@@ -461,7 +427,7 @@ static void test_deck_engine_pair(void)
     rc_case_free(c);
     /* without its engine file, a starter file alone has no end time */
     rc_error e;
-    ENSURE(load_fails(tmp_write("lone_0000.rad", "/FUNCT/1\nf\n0,0\n1,1\n/END\n"), &e));
+    ENSURE(load_fails(tu_tmp_write("lone_0000.rad", "/FUNCT/1\nf\n0,0\n1,1\n/END\n"), &e));
     ENSURE(strstr(e.msg, "no /RUN card") != NULL);
 }
 
@@ -472,7 +438,7 @@ static void test_deck_engine_pair(void)
 /* /INTER/TYPE6 as Radioss 4.4, 9.0, 11.0 and 2017 write it. */
 static void test_deck_type6_layouts(void)
 {
-    rc_case *c = load_ok(tmp_write("t6v44.rad",
+    rc_case *c = load_ok(tu_tmp_write("t6v44.rad",
                                    BEGIN_V("        44")
                                    "/INTER/TYPE6/1\n"
                                    "4.4 layout\n"
@@ -493,7 +459,7 @@ static void test_deck_type6_layouts(void)
     }
     rc_case_free(c);
 
-    c = load_ok(tmp_write("t6v90.rad",
+    c = load_ok(tu_tmp_write("t6v90.rad",
                           BEGIN_V("        90         0")
                           "/INTER/TYPE6/2\n"
                           "9.0 layout\n"
@@ -513,7 +479,7 @@ static void test_deck_type6_layouts(void)
     }
     rc_case_free(c);
 
-    c = load_ok(tmp_write("t6v110.rad",
+    c = load_ok(tu_tmp_write("t6v110.rad",
                           BEGIN_V("       110         0")
                           "/INTER/TYPE6/3\n"
                           "11.0 layout\n"
@@ -534,16 +500,16 @@ static void test_deck_type6_layouts(void)
 
     /* a 2022 deck needs six lines; a 9.0 deck has four */
     rc_error e;
-    ENSURE(load_fails(tmp_write("t6v90b.rad", BEGIN_V("        90") "/INTER/TYPE6/2\nx\n3,4\n\n\n8\n9\n" RUN_CARD), &e));
+    ENSURE(load_fails(tu_tmp_write("t6v90b.rad", BEGIN_V("        90") "/INTER/TYPE6/2\nx\n3,4\n\n\n8\n9\n" RUN_CARD), &e));
     ENSURE(strstr(e.msg, "t6v90b.rad:10:") && strstr(e.msg, "unexpected data line") && strstr(e.msg, "5.1/9.0"));
-    ENSURE(load_fails(tmp_write("t6v2022.rad", BEGIN_V("      2022") "/INTER/TYPE6/2\nx\n3,4\n\n\n8\n" RUN_CARD), &e));
+    ENSURE(load_fails(tu_tmp_write("t6v2022.rad", BEGIN_V("      2022") "/INTER/TYPE6/2\nx\n3,4\n\n\n8\n" RUN_CARD), &e));
     ENSURE(strstr(e.msg, "t6v2022.rad:4:") && strstr(e.msg, "expected 6 data lines"));
 }
 
 /* /GRAV, /FUNCT, /INIVEL, /BCS, /IMPVEL in the Radioss 4.4 layouts. */
 static void test_deck_loads_layouts_44(void)
 {
-    rc_case *c = load_ok(tmp_write("loads44.rad",
+    rc_case *c = load_ok(tu_tmp_write("loads44.rad",
                                    BEGIN_V("        44")
                                    "/GRAV/1\n"
                                    "g\n"
@@ -583,7 +549,7 @@ static void test_deck_loads_layouts_44(void)
 /* /IMPVEL before 12.0 has no Icoor: columns 61-70 are after the layout. */
 static void test_deck_impvel_110(void)
 {
-    rc_case *c = load_ok(tmp_write("iv110.rad",
+    rc_case *c = load_ok(tu_tmp_write("iv110.rad",
                                    BEGIN_V("       110")
                                    "/IMPVEL/5\n"
                                    "i\n"
@@ -595,7 +561,7 @@ static void test_deck_impvel_110(void)
     rc_case_free(c);
     /* from 12.0 on the same line is Icoor = 1: not supported */
     rc_error e;
-    ENSURE(load_fails(tmp_write("iv120.rad", BEGIN_V("       120")
+    ENSURE(load_fails(tu_tmp_write("iv120.rad", BEGIN_V("       120")
                                 "/IMPVEL/5\ni\n         2        XX         0         0         5         0         1\n" RUN_CARD),
                       &e));
     ENSURE(strstr(e.msg, "iv120.rad:6: card /IMPVEL/5, field Icoor") && strstr(e.msg, "not supported yet"));
@@ -604,7 +570,7 @@ static void test_deck_impvel_110(void)
 /* /INIVEL of Radioss 2025: an optional line Tstart sens_ID (0 only). */
 static void test_deck_inivel_2025(void)
 {
-    rc_case *c = load_ok(tmp_write("iv2025.rad",
+    rc_case *c = load_ok(tu_tmp_write("iv2025.rad",
                                    BEGIN_V("      2025")
                                    "/INIVEL/ROT/3\n"
                                    "v\n"
@@ -614,11 +580,11 @@ static void test_deck_inivel_2025(void)
     ENSURE(c && c->ninivel == 1 && c->inivel[0].rot == 1 && c->inivel[0].v[1] == 2.0);
     rc_case_free(c);
     rc_error e;
-    ENSURE(load_fails(tmp_write("iv2025b.rad", BEGIN_V("      2025")
+    ENSURE(load_fails(tu_tmp_write("iv2025b.rad", BEGIN_V("      2025")
                                 "/INIVEL/ROT/3\nv\n1,2,3,5\n0.5\n" RUN_CARD), &e));
     ENSURE(strstr(e.msg, "iv2025b.rad:7: card /INIVEL/ROT/3, field Tstart") && strstr(e.msg, "not supported yet"));
     /* the line does not exist before 2025 */
-    ENSURE(load_fails(tmp_write("iv2022.rad", BEGIN_V("      2022")
+    ENSURE(load_fails(tu_tmp_write("iv2022.rad", BEGIN_V("      2022")
                                 "/INIVEL/ROT/3\nv\n1,2,3,5\n0\n" RUN_CARD), &e));
     ENSURE(strstr(e.msg, "iv2022.rad:7:") && strstr(e.msg, "unexpected data line"));
 }
@@ -633,7 +599,7 @@ static void test_deck_friction_2019(void)
                        "                   0                 0.4\n" RUN_CARD;
     char text[1024];
     snprintf(text, sizeof text, "%s%s", BEGIN_V("      2019"), deck);
-    rc_case *c = load_ok(tmp_write("fr2019.rad", text));
+    rc_case *c = load_ok(tu_tmp_write("fr2019.rad", text));
     ENSURE(c && c->nfriction == 1 && c->friction[0].npair == 1);
     if (c && c->nfriction == 1 && c->friction[0].npair == 1) {
         const rc_case_fricpair *pr = &c->friction[0].pair[0];
@@ -644,7 +610,7 @@ static void test_deck_friction_2019(void)
     snprintf(text, sizeof text, "%s%s", BEGIN_V("      2019"),
              "/FRICTION/5\nf\n0,0,,1\n\n0,0.3\n"
              "         0         0         7         8                   1\n\n\n" RUN_CARD);
-    c = load_ok(tmp_write("fr2019b.rad", text));
+    c = load_ok(tu_tmp_write("fr2019b.rad", text));
     ENSURE(c && c->nfriction == 1 && c->friction[0].npair == 1 && NWARN(c, "fr2019b.rad:9:", "after column 40 ignored") == 1);
     if (c && c->nfriction == 1 && c->friction[0].npair == 1) ENSURE(c->friction[0].pair[0].idir == 0);
     rc_case_free(c);
@@ -657,7 +623,7 @@ static void test_deck_friction_2019(void)
 /* /BEGIN input units g, mm, ms: every value read is converted to SI. */
 static void test_deck_units_begin(void)
 {
-    const char *p = tmp_write("gmmms.rad",
+    const char *p = tu_tmp_write("gmmms.rad",
                               "/BEGIN\n"
                               "grams, millimetres, milliseconds\n"
                               "      2022         0\n"
@@ -726,7 +692,7 @@ static void test_deck_units_begin(void)
 /* /UNIT/unit_ID and cards naming it in their header. */
 static void test_deck_units_unit_cards(void)
 {
-    const char *p = tmp_write("unitcards.rad",
+    const char *p = tu_tmp_write("unitcards.rad",
                               "/BEGIN\nold form\n        90         0\n"
                               "/UNIT/2\n"
                               "millimetres and tonnes\n"
@@ -760,18 +726,18 @@ static void test_deck_units_unit_cards(void)
 
     rc_error e;
     /* an unknown unit, a missing /UNIT, a duplicate /UNIT */
-    ENSURE(load_fails(tmp_write("badunit.rad", "/UNIT/2\nu\n                  kg            parsec\n" RUN_CARD), &e));
+    ENSURE(load_fails(tu_tmp_write("badunit.rad", "/UNIT/2\nu\n                  kg            parsec\n" RUN_CARD), &e));
     ENSURE(strstr(e.msg, "badunit.rad:3: card /UNIT/2, field LUNIT") && strstr(e.msg, "\"parsec\""));
-    ENSURE(load_fails(tmp_write("nounit.rad", "/NODE/4\n1,0,0,0\n" RUN_CARD), &e));
+    ENSURE(load_fails(tu_tmp_write("nounit.rad", "/NODE/4\n1,0,0,0\n" RUN_CARD), &e));
     ENSURE(strstr(e.msg, "nounit.rad:1: card /NODE/4, field unit_ID") && strstr(e.msg, "no /UNIT/4"));
-    ENSURE(load_fails(tmp_write("dupunit.rad", "/UNIT/2\nu\nkg,m,s\n/UNIT/2\nu\ng,mm,ms\n" RUN_CARD), &e));
+    ENSURE(load_fails(tu_tmp_write("dupunit.rad", "/UNIT/2\nu\nkg,m,s\n/UNIT/2\nu\ng,mm,ms\n" RUN_CARD), &e));
     ENSURE(strstr(e.msg, "dupunit.rad:4: card /UNIT/2, field unit_ID") && strstr(e.msg, "duplicate id 2"));
 }
 
 /* Radioss 5.1 and 9.0: /BEGIN of two lines, the units in /UNIT/kind/name. */
 static void test_deck_units_90_form(void)
 {
-    const char *p = tmp_write("units90.rad",
+    const char *p = tu_tmp_write("units90.rad",
                               "/BEGIN\n"
                               "a 9.0 deck\n"
                               "        90         0\n"
@@ -798,7 +764,7 @@ static void test_deck_units_90_form(void)
     ENSURE(NWARN(c, "units90.rad:5:", "/UNIT/MASS/Mg", "mass unit Mg", "1000") == 1);
     rc_case_free(c);
     rc_error e;
-    ENSURE(load_fails(tmp_write("units90b.rad", "/BEGIN\nx\n90\n/UNIT/LENGTH/league\n" RUN_CARD), &e));
+    ENSURE(load_fails(tu_tmp_write("units90b.rad", "/BEGIN\nx\n90\n/UNIT/LENGTH/league\n" RUN_CARD), &e));
     ENSURE(strstr(e.msg, "units90b.rad:4: card /UNIT/LENGTH/league, field LENGTH") && strstr(e.msg, "\"league\""));
 }
 
@@ -806,7 +772,7 @@ static void test_deck_units_90_form(void)
  * final state (SI) after the bounce. */
 static void test_deck_units_run_matches_si(void)
 {
-    const char *p = tmp_write("demo_gmmms.rad",
+    const char *p = tu_tmp_write("demo_gmmms.rad",
                               "#RADIOSS STARTER\n"
                               "/BEGIN\n"
                               "demo in g, mm, ms\n"
@@ -890,16 +856,16 @@ static void test_deck_units_refused(void)
     rc_error e;
 #define MM_DECK(body) "/BEGIN\nmm\n2022\nkg,mm,s\n" body RUN_CARD
     /* /INTER/POWER K: N/m^m1 depends on m1 */
-    ENSURE(load_fails(tmp_write("upow.rad", MM_DECK("/INTER/POWER/1\np\n1,2\n1e6,1.5\n")), &e));
+    ENSURE(load_fails(tu_tmp_write("upow.rad", MM_DECK("/INTER/POWER/1\np\n1,2\n1e6,1.5\n")), &e));
     ENSURE(strstr(e.msg, "upow.rad:8: card /INTER/POWER/1, field K") && strstr(e.msg, "no fixed dimension"));
     /* a spring's force table */
-    ENSURE(load_fails(tmp_write("uspr.rad", MM_DECK("/COUPLING/SPRING/1\ns\n0,1,3,9\n0,0,0\n1,0,0\n,\n")), &e));
+    ENSURE(load_fails(tu_tmp_write("uspr.rad", MM_DECK("/COUPLING/SPRING/1\ns\n0,1,3,9\n0,0,0\n1,0,0\n,\n")), &e));
     ENSURE(strstr(e.msg, "uspr.rad:7: card /COUPLING/SPRING/1, field fct_ID") && strstr(e.msg, "not SI"));
     /* /FRICTION Ifric 1 coefficients */
-    ENSURE(load_fails(tmp_write("ufr.rad", MM_DECK("/FRICTION/1\nf\n1\n1e-6\n0,0.3\n")), &e));
+    ENSURE(load_fails(tu_tmp_write("ufr.rad", MM_DECK("/FRICTION/1\nf\n1\n1e-6\n0,0.3\n")), &e));
     ENSURE(strstr(e.msg, "ufr.rad:8: card /FRICTION/1, field C1") && strstr(e.msg, "no fixed dimension"));
     /* ...but Renard's velocities and a zero K convert */
-    rc_case *c = load_ok(tmp_write("ufr3.rad", MM_DECK("/FRICTION/1\nf\n3\n0.3,0.2,0.4,0.1,10\n200,0.3\n")));
+    rc_case *c = load_ok(tu_tmp_write("ufr3.rad", MM_DECK("/FRICTION/1\nf\n3\n0.3,0.2,0.4,0.1,10\n200,0.3\n")));
     ENSURE(c && c->nfriction == 1 && NEAR(c->friction[0].def.c[4], 0.01) && NEAR(c->friction[0].def.c[5], 0.2) &&
            c->friction[0].def.c[0] == 0.3);
     rc_case_free(c);
@@ -929,5 +895,5 @@ void suite_deck(void)
     RUN_TEST(test_deck_units_90_form);
     RUN_TEST(test_deck_units_run_matches_si);
     RUN_TEST(test_deck_units_refused);
-    tmp_cleanup();
+    tu_tmp_cleanup();
 }

@@ -11,6 +11,7 @@
 #include "model/imposed.h"
 #include "model/model.h"
 #include "harness.h"
+#include "testutil.h"
 
 /* A three-body case: body 1 (sphere, offset from its CoM, full inertia),
  * body 2 (sphere), a tilted plane fixed in space; sphere-plane and
@@ -157,50 +158,6 @@ static void entropy_state(const rc_model *m, double *y)
         }
 }
 
-/* Max scaled |J - FD| over the whole Jacobian in the current modes; counts
- * entries above 1e-6 (bad) and FD non-zeros outside the pattern. */
-static double jac_fd_error(const rc_model *m, rc_data *d, double *y, int *bad, int *outside)
-{
-    const double t = 0.0137;
-    double *f1 = calloc((size_t)m->ny, sizeof(double)), *f2 = calloc((size_t)m->ny, sizeof(double));
-    double *val = calloc((size_t)m->nnz, sizeof(double)), maxerr = 0;
-    rc_assemble_jac(m, d, t, y, val);
-    const int first_own = m->ninter > 0 ? m->inter_eadr[0] : m->ny;
-    for (int col = 0; col < m->ny; col++) {
-        /* body states: small steps (the geometry is strongly nonlinear);
-         * interface states (forces, energies) enter linearly or smoothly,
-         * and their rows are large (K_t v_t): a larger step keeps the
-         * difference clear of rounding */
-        double h = col < first_own ? 1e-6 * fmax(fabs(y[col]), 1.0) : 1e-4 * fmax(fabs(y[col]), 1e-3);
-        double keep = y[col];
-        y[col] = keep + h;
-        rc_assemble_rhs(m, d, t, y, f1);
-        y[col] = keep - h;
-        rc_assemble_rhs(m, d, t, y, f2);
-        y[col] = keep;
-        double scale = 1.0;
-        for (int r = 0; r < m->ny; r++) scale = fmax(scale, fabs((f1[r] - f2[r]) / (2 * h)));
-        for (int r = 0; r < m->ny; r++) {
-            double fd = (f1[r] - f2[r]) / (2 * h), an = 0;
-            int64_t k;
-            for (k = m->jac_colptr[col]; k < m->jac_colptr[col + 1]; k++)
-                if (m->jac_rowind[k] == r) break;
-            if (k < m->jac_colptr[col + 1]) an = val[k];
-            else if (fabs(fd) > 1e-9 * scale) (*outside)++;
-            double er = fabs(an - fd) / scale;
-            maxerr = fmax(maxerr, er);
-            if (er > 1e-6) {
-                (*bad)++;
-                if (getenv("RC_DEBUG_JAC"))
-                    printf("      row %d col %d: J %.10g FD %.10g (scale %.3g)\n", r, col, an, fd, scale);
-            }
-        }
-    }
-    free(f1);
-    free(f2);
-    free(val);
-    return maxerr;
-}
 
 static void jacobian_check(int with_cards)
 {
@@ -234,7 +191,7 @@ static void jacobian_check(int with_cards)
                         d->inter_track[i] = trk && m->inter_oidx[i] >= 0;
                         d->inter_slip[i] = sl;
                     }
-                    maxerr = fmax(maxerr, jac_fd_error(m, d, y, &bad, &outside));
+                    maxerr = fmax(maxerr, tu_jac_fd_error(m, d, 0.0137, y, 0, &bad, &outside));
                     combos++;
                 }
     printf("    jacobian%s: %d states, %lld nonzeros, %d mode combinations, max scaled |J - FD| = %.2e\n", with_cards ? " (/FRICTION)" : "", m->ny,
@@ -506,7 +463,7 @@ static void test_engine_jacobian_power_cylinders_impvel_matches_finite_differenc
                     d->inter_slip[i] = sl;
                 }
                 if (getenv("RC_DEBUG_JAC")) printf("    mode %d branch %d slip %d\n", modes[md], br, sl);
-                maxerr = fmax(maxerr, jac_fd_error(m, d, y, &bad, &outside));
+                maxerr = fmax(maxerr, tu_jac_fd_error(m, d, 0.0137, y, 0, &bad, &outside));
                 combos++;
             }
     printf("    jacobian (power, cylinders, box, /IMPVEL): %d states, %lld nonzeros, %d mode combinations, max scaled "

@@ -17,6 +17,7 @@
 #include "model/massprop.h"
 #include "model/model.h"
 #include "harness.h"
+#include "testutil.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -228,17 +229,9 @@ static const char *write_deck(const char *text)
 
 static rc_model *compile_text(const char *text, rc_error *e)
 {
-    rc_case *c = NULL;
     rc_model *m = NULL;
-    rc_error_clear(e);
-    rc_status st = rc_case_load(write_deck(text), &c, e);
-    if (st == RC_OK) st = rc_model_compile(c, &m, e);
-    rc_case_free(c);
+    tu_load_compile(write_deck(text), &m, e);
     remove(mesh_path);
-    if (st != RC_OK) {
-        rc_model_free(m);
-        return NULL;
-    }
     return m;
 }
 
@@ -250,11 +243,7 @@ static int mesh_error(const char *text, ...)
     int bad = m != NULL || e.code != RC_EINPUT;
     va_list ap;
     va_start(ap, text);
-    for (const char *s; (s = va_arg(ap, const char *));)
-        if (!strstr(e.msg, s)) {
-            fprintf(stderr, "  missing \"%s\"\n", s);
-            bad++;
-        }
+    bad += tu_missing_needles(e.msg, ap);
     va_end(ap);
     if (bad) fprintf(stderr, "  message: %s\n", e.msg);
     rc_model_free(m);

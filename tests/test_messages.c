@@ -5,6 +5,7 @@
  * couplings, imposed velocities).
  */
 #include "harness.h"
+#include "testutil.h"
 #include "model/model.h"
 #include "base/error.h"
 #include "base/progress.h"
@@ -73,15 +74,11 @@ static rc_status compile_variant(const char *from, const char *to, char *msg, si
     if (!f) return RC_EIO;
     fputs(out, f);
     fclose(f);
-    rc_case *c = NULL;
     rc_model *m = NULL;
     rc_error e;
-    rc_error_clear(&e);
-    rc_status st = rc_case_load(path, &c, &e);
-    if (st == RC_OK) st = rc_model_compile(c, &m, &e);
+    rc_status st = tu_load_compile(path, &m, &e);
     snprintf(msg, n, "%s", e.msg);
     rc_model_free(m);
-    rc_case_free(c);
     remove(path);
     return st;
 }

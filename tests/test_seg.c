@@ -18,29 +18,14 @@
 #include "case/case.h"
 #include "model/model.h"
 #include "harness.h"
+#include "testutil.h"
 
 static char seg_path[128];
 
 static rc_model *seg_compile(const char *text, rc_error *e)
 {
     snprintf(seg_path, sizeof seg_path, "/tmp/rc_seg_test_%d.rad", (int)getpid());
-    FILE *f = fopen(seg_path, "w");
-    if (f) {
-        fputs(text, f);
-        fclose(f);
-    }
-    rc_case *c = NULL;
-    rc_model *m = NULL;
-    rc_error_clear(e);
-    rc_status st = rc_case_load(seg_path, &c, e);
-    if (st == RC_OK) st = rc_model_compile(c, &m, e);
-    rc_case_free(c);
-    remove(seg_path);
-    if (st != RC_OK) {
-        rc_model_free(m);
-        return NULL;
-    }
-    return m;
+    return tu_compile_text(text, seg_path, e);
 }
 
 /* Expect an input error whose message holds every needle. */
@@ -51,11 +36,7 @@ static int seg_error(const char *text, ...)
     int bad = m != NULL || e.code != RC_EINPUT;
     va_list ap;
     va_start(ap, text);
-    for (const char *s; (s = va_arg(ap, const char *));)
-        if (!strstr(e.msg, s)) {
-            fprintf(stderr, "  missing \"%s\"\n", s);
-            bad++;
-        }
+    bad += tu_missing_needles(e.msg, ap);
     va_end(ap);
     if (bad) fprintf(stderr, "  message: %s\n", m ? "(compiled)" : e.msg);
     rc_model_free(m);
@@ -253,50 +234,6 @@ static void test_seg_force_distribution(void)
 
 /* ---- Jacobian ---------------------------------------------------------- */
 
-/* Max scaled |J - FD| over the whole Jacobian; counts entries above 1e-6
- * (and above the rounding of the difference, 100 eps |f| / h) and
- * finite-difference non-zeros outside the pattern. */
-static double seg_jac_error(const rc_model *m, rc_data *d, double *y, int *bad, int *outside)
-{
-    const double t = 0.0;
-    double *f1 = calloc((size_t)m->ny, sizeof(double)), *f2 = calloc((size_t)m->ny, sizeof(double));
-    double *val = calloc((size_t)m->nnz, sizeof(double)), maxerr = 0;
-    rc_assemble_jac(m, d, t, y, val);
-    const int first_own = m->inter_eadr[0];
-    for (int col = 0; col < m->ny; col++) {
-        double h = col < first_own ? 1e-6 * fmax(fabs(y[col]), 1.0) : 1e-4 * fmax(fabs(y[col]), 1e-3);
-        double keep = y[col];
-        y[col] = keep + h;
-        rc_assemble_rhs(m, d, t, y, f1);
-        y[col] = keep - h;
-        rc_assemble_rhs(m, d, t, y, f2);
-        y[col] = keep;
-        double scale = 1.0;
-        for (int r = 0; r < m->ny; r++) scale = fmax(scale, fabs((f1[r] - f2[r]) / (2 * h)));
-        for (int r = 0; r < m->ny; r++) {
-            double fd = (f1[r] - f2[r]) / (2 * h), an = 0;
-            int64_t k;
-            for (k = m->jac_colptr[col]; k < m->jac_colptr[col + 1]; k++)
-                if (m->jac_rowind[k] == r) break;
-            if (k < m->jac_colptr[col + 1]) an = val[k];
-            else if (fabs(fd) > 1e-9 * scale) (*outside)++;
-            /* rounding of the central difference: the rows are large
-             * (contact forces on small inertias), eps |f| / h of them */
-            const double noise = 100.0 * DBL_EPSILON * fmax(fabs(f1[r]), fabs(f2[r])) / h;
-            double er = fabs(an - fd) / scale;
-            maxerr = fmax(maxerr, er);
-            if (er > 1e-6 && fabs(an - fd) > noise) {
-                (*bad)++;
-                if (getenv("RC_DEBUG_JAC"))
-                    printf("      row %d col %d: J %.10g FD %.10g (scale %.3g)\n", r, col, an, fd, scale);
-            }
-        }
-    }
-    free(f1);
-    free(f2);
-    free(val);
-    return maxerr;
-}
 
 /* The box on a tilted plate carried by a second free body, nonlinear load
  * curve with Visc and both damping curves, Iform 1 with an unload curve and
@@ -369,7 +306,7 @@ static void seg_jacobian_check(int box)
                 d->inter_mode[0] = modes[md];
                 d->inter_branch[0] = br;
                 d->inter_track[0] = trk;
-                maxerr = fmax(maxerr, seg_jac_error(m, d, y, &bad, &outside));
+                maxerr = fmax(maxerr, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
                 combos++;
             }
     printf("    %s jacobian: P = %.3g m (%d nodes past the plate; -1: not counted), %d states, %lld nonzeros, %d mode combinations, max scaled |J - FD| "
@@ -432,7 +369,7 @@ static void test_seg_sphere_jacobian_matches_finite_differences(void)
                 d->inter_mode[0] = modes[md];
                 d->inter_branch[0] = br;
                 d->inter_track[0] = trk;
-                maxerr = fmax(maxerr, seg_jac_error(m, d, y, &bad, &outside));
+                maxerr = fmax(maxerr, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
                 combos++;
             }
     printf("    sphere-segments jacobian: P = %.3g m, %d states, %lld nonzeros, %d mode combinations, max scaled "

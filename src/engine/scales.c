@@ -234,27 +234,23 @@ static double pair_mass(const rc_model *m, int i)
     return inv > 0 ? 1.0 / inv : INFINITY;
 }
 
-/* The message of check_resolvable (static storage: the model compiler is
- * not re-entrant across threads for one failing model anyway). */
-static char scale_msg[1024];
-
 /* A contact's scales must be finite and resolvable in double precision: its
  * penetration scale above the resolution of the coordinates, its time scale
  * sqrt(m/k) above the resolution of the time over the run. Otherwise the
  * law's numbers (Stiff, the scale factors, the load curve) are beyond what
  * the integrator can follow: an input error naming the interface. */
-static rc_status check_resolvable(const rc_model *m, int i, double mv, const double *y, const double *size)
+static rc_status check_resolvable(const rc_model *m, int i, double mv, const double *y, const double *size,
+                                  rc_error *err)
 {
     const double p = m->inter_pscale[i], f = m->inter_fscale[i], k = m->inter_kscale[i], v = m->inter_vscale[i];
     const char *fields = m->inter_law[i] == RC_LAW_POWER ? "the stiffness and exponent fields"
                                                          : "Stiff, Fscale_ld and the load curve (fct_ID)";
     if (!isfinite(f) || !isfinite(k) || !isfinite(v)) {
-        snprintf(scale_msg, sizeof scale_msg,
+        return RC_SET(err, RC_EINPUT,
                  RC_LOCFMT "card %s: the contact law overflows at its penetration scale p_s = %.3g m (force %.3g N, "
                  "stiffness %.3g N/m): %s give values beyond the double range; expected a law whose force "
                  "and stiffness stay finite",
                  RC_LOC(m->inter_loc[i]), m->inter_name[i], p, f, k, fields);
-        return RC_EINPUT;
     }
     /* the largest coordinate of a body of the pair, and the time reached */
     double L = 0.0;
@@ -267,23 +263,21 @@ static rc_status check_resolvable(const rc_model *m, int i, double mv, const dou
     }
     const double ulp_x = L * DBL_EPSILON, tc = sqrt(mv / k), ulp_t = fmax(m->tend, 0.0) * DBL_EPSILON;
     if (p < 4.0 * ulp_x) {
-        snprintf(scale_msg, sizeof scale_msg,
+        return RC_SET(err, RC_EINPUT,
                  RC_LOCFMT "card %s: the contact's penetration scale p_s = %.3g m (its penetration under the lighter "
                  "body's weight or at the impact energy) is below the resolution of the coordinates (%.3g m at "
                  "%.3g m from the origin): %s make the contact too stiff for double precision; expected a "
                  "stiffness that gives p_s of at least %.3g m (or coordinates nearer the origin)",
                  RC_LOC(m->inter_loc[i]), m->inter_name[i], p, ulp_x, L, fields, 4.0 * ulp_x);
-        return RC_EINPUT;
     }
     if (tc < 4.0 * ulp_t) {
-        snprintf(scale_msg, sizeof scale_msg,
+        return RC_SET(err, RC_EINPUT,
                  RC_LOCFMT "card %s: the contact's time scale sqrt(m/k) = %.3g s (reduced mass %.3g kg, stiffness "
                  "%.3g N/m at p_s) is below the resolution of the time at the end of the run (%.3g s at "
                  "T_end = %.3g s): %s make the contact too stiff to integrate; expected a stiffness below "
                  "%.3g N/m or a shorter run",
                  RC_LOC(m->inter_loc[i]), m->inter_name[i], tc, mv, k, ulp_t, m->tend, fields,
                  mv / (16.0 * ulp_t * ulp_t));
-        return RC_EINPUT;
     }
     (void)v;
     return RC_OK;
@@ -431,11 +425,11 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         }
         m->inter_vscale[i] = p * sqrt(k / mv);
         escale = fmax(escale, law_energy(m, i, p));
-        rc_status st = check_resolvable(m, i, mv, y, size);
+        rc_status st = check_resolvable(m, i, mv, y, size, err);
         if (st) {
             free(y);
             free(size);
-            return RC_SET(err, st, "%s", scale_msg);
+            return st;
         }
     }
     /* energy scale: the contacts' energies at their scales; without any,

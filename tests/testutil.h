@@ -1,0 +1,35 @@
+/*
+ * Helpers shared by the test files: a deck written from text, loaded and
+ * compiled; the needles an error message must hold; the analytic Jacobian
+ * against central differences.
+ */
+#ifndef RC_TESTUTIL_H
+#define RC_TESTUTIL_H
+
+#include <stdarg.h>
+
+#include "model/model.h"
+
+/* Write `len` bytes as <private temporary directory>/name (created on first
+ * use); returns the path (static storage, valid until tu_tmp_cleanup). */
+const char *tu_tmp_write_n(const char *name, const char *text, size_t len);
+const char *tu_tmp_write(const char *name, const char *text);
+/* Remove the files written and the directory. */
+void tu_tmp_cleanup(void);
+
+/* Load the case at `path` and compile it; the case is freed, *m is the
+ * model (NULL on failure, with the message in *e). */
+rc_status tu_load_compile(const char *path, rc_model **m, rc_error *e);
+/* Write `text` to `path`, load and compile it, remove the file. */
+rc_model *tu_compile_text(const char *text, const char *path, rc_error *e);
+/* How many of the NULL-terminated needles `msg` lacks (each printed). */
+int tu_missing_needles(const char *msg, va_list ap);
+/* Max scaled |J - FD| over the whole Jacobian at (t, y) in the current
+ * modes, central differences column by column; counts entries above 1e-6
+ * (*bad) and FD non-zeros outside the pattern (*outside). With
+ * `forgive_rounding`, an entry is also within bounds when |J - FD| is below
+ * the rounding of the difference, 100 eps |f| / h (large rows). */
+double tu_jac_fd_error(const rc_model *m, rc_data *d, double t, double *y, int forgive_rounding, int *bad,
+                       int *outside);
+
+#endif

@@ -34,6 +34,7 @@
 #include "output/output.h"
 #include "model/power.h"
 #include "solver/impacts.h"
+#include "solver/nvfast.h"
 #include "solver/solver.h"
 
 /* A jump in ydot whose effect over one step, relative to the error weight,
@@ -450,12 +451,25 @@ static const char *const energy_long[RC_NENERGY] = {
     ("kinetic + potential + contact work + damping + friction work + couplings + imposed (constant in exact "
      "arithmetic)")};
 
-/* Sample the last step over (t_prev, t] at 4 points of CVODE's interpolant
- * for the impacts in progress (peak force, maximum penetration); the part
- * of the interval before the last step (right after a root return) is not
- * covered by the interpolant any more and is skipped. */
+/* The interpolant of CVODE's last step for the impact table (rc_interp_fn). */
+typedef struct interp_ctx {
+    void *cv;
+    N_Vector ys;
+} interp_ctx;
+
+static int interp_last_step(void *ctx, double t, const double **y)
+{
+    interp_ctx *c = ctx;
+    if (CVodeGetDky(c->cv, t, 0, c->ys) != CV_SUCCESS) return -1;
+    *y = N_VGetArrayPointer(c->ys);
+    return 0;
+}
+
+/* The impacts in progress at the end of a step over (t_prev, t] with the
+ * state y (rc_impacts_step); the part of the interval before the last step
+ * (right after a root return) is not covered by the interpolant. */
 static void sample_step(void *cv, rc_impacts *im, const rc_model *m, const rc_data *d, double t_prev, double t,
-                        N_Vector ys)
+                        N_Vector y, N_Vector ys)
 {
     double tn = t, hu = 0.0;
     if (!rc_impacts_active(im) || CVodeGetCurrentTime(cv, &tn) != CV_SUCCESS ||
@@ -463,11 +477,8 @@ static void sample_step(void *cv, rc_impacts *im, const rc_model *m, const rc_da
         return;
     const double lo = fmax(t_prev, tn - hu);
     if (!(t > lo)) return;
-    for (int k = 1; k <= 4; k++) {
-        const double tk = k == 4 ? t : lo + 0.25 * k * (t - lo);
-        if (CVodeGetDky(cv, tk, 0, ys) != CV_SUCCESS) return;
-        rc_impacts_sample(im, m, d, tk, N_VGetArrayPointer(ys));
-    }
+    interp_ctx c = {cv, ys};
+    rc_impacts_step(im, m, d, lo, t, N_VGetArrayPointer(y), interp_last_step, &c);
 }
 
 /* Output times strictly before t (not within rounding of it) that a single
@@ -768,6 +779,9 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
     f1 = N_VNew_Serial(m->ny, ctx);
     ytn = N_VNew_Serial(m->ny, ctx);
     ysamp = N_VNew_Serial(m->ny, ctx);
+    /* optimised vector operations, inherited by CVODE's clones of y (nvfast.h) */
+    N_Vector vecs[] = {y, av, f0, f1, ytn, ysamp};
+    for (size_t k = 0; k < sizeof vecs / sizeof vecs[0]; k++) rc_nvector_fast(vecs[k]);
     old_mode = calloc((size_t)m->ninter + 1, sizeof(int));
     old_branch = calloc((size_t)m->ninter + 1, sizeof(int));
     old_track = calloc((size_t)m->ninter + 1, sizeof(int));
@@ -916,7 +930,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
             break;
         }
         if (one_step && flag >= 0 && ++single > m->max_steps) flag = CV_TOO_MUCH_WORK;
-        if (flag >= 0) sample_step(cv, &im, m, d, t_prev, t, ysamp);
+        if (flag >= 0) sample_step(cv, &im, m, d, t_prev, t, y, ysamp);
         t_prev = t;
         if (flag < 0) {
             failure_advice(m, d, cv, flag, t, tout, rc.cvmsg, ytn, f0, reason, sizeof reason);

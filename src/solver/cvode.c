@@ -54,6 +54,8 @@ typedef struct run_ctx {
     const rc_model *m;
     rc_data *d;
     double *jsave; /* [nnz] the Jacobian values of the last evaluation */
+    int jac_patched; /* jsave's blocks of the interfaces whose modes an event
+                        changed were refreshed at the event state */
     volatile sig_atomic_t *stop; /* the caller's stop flag (rc_run_options), NULL */
     char cvmsg[512]; /* CVODE's last error message, quoted in the failure message */
 } run_ctx;
@@ -92,7 +94,16 @@ static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleanty
     (void)t1;
     (void)t2;
     (void)t3;
-    if (!jok) {
+    /* the first setup after an event that changed only interface modes
+     * uses jsave with those interfaces' blocks refreshed at the event
+     * (rc_jac_refresh_inter): the modes are right, the other blocks as
+     * stale as CVODE's own Jacobian reuse allows. A convergence failure
+     * then asks again (jok false) and gets a whole new Jacobian. */
+    const int patched = c->jac_patched;
+    c->jac_patched = 0;
+    if (!jok && patched) {
+        *jcur = SUNTRUE;
+    } else if (!jok) {
         int st = rc_assemble_jac(m, c->d, t, N_VGetArrayPointer(y), c->jsave);
         if (st) return st;
         *jcur = SUNTRUE;
@@ -342,7 +353,6 @@ static void add_stats(void *cv, rc_stats *s)
     long v;
     if (CVodeGetNumSteps(cv, &v) == CV_SUCCESS) s->steps += v;
     if (CVodeGetNumRhsEvals(cv, &v) == CV_SUCCESS) s->rhs_evals += v;
-    if (CVodeGetNumJacEvals(cv, &v) == CV_SUCCESS) s->jac_evals += v;
     if (CVodeGetNumLinSolvSetups(cv, &v) == CV_SUCCESS) s->lin_setups += v;
     if (CVodeGetNumNonlinSolvIters(cv, &v) == CV_SUCCESS) s->nonlin_iters += v;
     if (CVodeGetNumNonlinSolvConvFails(cv, &v) == CV_SUCCESS) s->nonlin_fails += v;
@@ -768,7 +778,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
         st = RC_SET(err, RC_ENOMEM, "out of memory");
         goto done;
     }
-    run_ctx rc = {m, d, NULL, opt ? opt->stop : NULL, ""};
+    run_ctx rc = {.m = m, .d = d, .jsave = NULL, .jac_patched = 0, .stop = opt ? opt->stop : NULL, .cvmsg = ""};
     if (SUNContext_Create(NULL, &ctx)) {
         st = RC_SET(err, RC_ESOLVER, "SUNContext_Create failed");
         goto done;
@@ -945,6 +955,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
             /* a time breakpoint: an imposed velocity ends; restart there */
             s.events++;
             if ((st = sink_event(&sink, t, "impvel_stop", "/IMPVEL", NULL, err))) goto done;
+            rc.jac_patched = 0; /* the imposed rows change: a whole new Jacobian */
             add_stats(cv, &s);
             CVCHECK(CVodeReInit(cv, t, y), "CVodeReInit");
             s.reinits++;
@@ -1005,6 +1016,18 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
             nev += resolve_touching(m, d, t, yd, flook, &sink, &im, &s.events, &jumped, &st, err);
             if (st) goto done;
             if (nev > 0) CVCHECK(set_root_directions(m, d, cv, rootdir), "CVodeSetRootDirection");
+            /* the Jacobian blocks of the interfaces whose modes changed, at
+             * the event state (cb_linsys) */
+            if (nev > 0) {
+                int ok = 1, changed = 0;
+                for (int i = 0; ok && i < m->ninter; i++)
+                    if (d->inter_mode[i] != old_mode[i] || d->inter_branch[i] != old_branch[i] ||
+                        d->inter_track[i] != old_track[i] || d->inter_slip[i] != old_slip[i]) {
+                        changed = 1;
+                        ok = rc_jac_refresh_inter(m, d, i, yd, jsave) == 0;
+                    }
+                rc.jac_patched = ok && changed;
+            }
             if (refined > 0 || jumped || (nev > 0 && needs_restart(m, d, cv, old_mode, old_branch, old_track, old_slip, t, yd, ytn, f0, f1)) ||
                 root_on_zero(m, d, t, yd, gbuf)) {
                 add_stats(cv, &s);
@@ -1061,6 +1084,9 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
 
 done:
     if (cv) add_stats(cv, &s);
+    /* whole Jacobian evaluations (CVODE also counts the setups that used
+     * jsave with the blocks refreshed after an event, cb_linsys) */
+    if (d) s.jac_evals = d->n_jac;
     /* the impacts: in the file and, the first ones, in the statistics */
     rc_impacts_finish(&im);
     s.impacts = im.n;

@@ -246,6 +246,13 @@ sed 's/^                   1              0.0001$/                 0.3          
 n=$(ls "$tmp/vtk" 2>/dev/null | grep -c '\.vtp$')
 if [ -f "$tmp/vtk/short.pvd" ] && [ "$n" -gt 0 ]; then expect export_vtk 0 $rc "($n .vtp files; $(head -c 120 "$tmp/x"))"
 else expect export_vtk 0 99 "(exit $rc: $(head -c 200 "$tmp/x"))"; fi
+# segment surfaces drawn: the three meshed boxes of seg_box_rest (18
+# quadrilaterals on 24 nodes), the plane patch and the analytic box (6 faces)
+"$bin" run validation/seg_box_rest/case.rad -o "$tmp/segs.nc" --t-end 0.01 -q > "$tmp/x" 2>&1 &&
+    "$bin" export-vtk "$tmp/segs.nc" -o "$tmp/vtks" >> "$tmp/x" 2>&1; rc=$?
+f=$(ls "$tmp"/vtks/segs_bodies_*.vtp 2>/dev/null | head -1)
+if [ -n "$f" ] && grep -q 'NumberOfPoints="36"' "$f" && grep -q 'NumberOfPolys="25"' "$f"; then expect export_vtk_segments 0 $rc "(36 points, 25 polygons in $(basename "$f"))"
+else expect export_vtk_segments 0 99 "(exit $rc: $(head -c 200 "$tmp/x"); $(grep -o 'NumberOf[A-Za-z]*="[0-9]*"' "${f:-/dev/null}" | tr '\n' ' '))"; fi
 "$bin" export-vtk "$tmp/none.nc" > "$tmp/x" 2>&1; rc=$?
 grep -q "none.nc" "$tmp/x" && expect export_vtk_missing 4 $rc "($(head -c 120 "$tmp/x"))" || expect export_vtk_missing 4 99 "(no message)"
 printf 'netcdf x {\ndimensions:\n  n = 1 ;\nvariables:\n  int n(n) ;\n}\n' | ncgen -4 -o "$tmp/other.nc" 2>/dev/null

@@ -513,7 +513,7 @@ static rc_status outputs_before(void *cv, const rc_model *m, const rc_data *d, r
 }
 
 _Static_assert(RC_SURF_NEXT == RC_OUT_SURF_NPARAM, "surface parameters: model and file disagree");
-static const char *const surf_kind_name[] = {"", "PLANE", "SPHERE", "CYLINDER", "BOX"};
+static const char *const surf_kind_name[] = {"", "PLANE", "SPHERE", "CYLINDER", "BOX", "SEGMENTS"};
 
 static rc_status open_output(const rc_model *m, const char *path, const char *note, rc_output **o, rc_error *err)
 {
@@ -554,7 +554,7 @@ static rc_status open_output(const rc_model *m, const char *path, const char *no
         RC_RAISE(err, RC_ENOMEM, "out of memory");
     }
     for (int k = 0; k < m->nsurf; k++)
-        kinds[k] = m->surf_kind[k] >= RC_SURF_PLANE && m->surf_kind[k] <= RC_SURF_BOX ? surf_kind_name[m->surf_kind[k]]
+        kinds[k] = m->surf_kind[k] >= RC_SURF_PLANE && m->surf_kind[k] <= RC_SURF_SEG ? surf_kind_name[m->surf_kind[k]]
                                                                                     : "UNKNOWN";
     for (int i = 0; i < m->ninter; i++) {
         isurf[2 * i] = m->inter_sa[i];
@@ -569,6 +569,14 @@ static rc_status open_output(const rc_model *m, const char *path, const char *no
     meta.surf_radius = m->surf_r;
     meta.surf_param = m->surf_ext;
     meta.inter_surf = isurf;
+    if (m->surf_nadr && m->surf_sadr) {
+        meta.seg_nadr = m->surf_nadr;
+        meta.seg_sadr = m->surf_sadr;
+        meta.nseg_node = m->surf_nadr[m->nsurf];
+        meta.nseg = m->surf_sadr[m->nsurf];
+        meta.seg_node = m->surf_node;
+        meta.seg_conn = m->surf_seg;
+    }
     char evrec[160];
     const int full = rc_event_records(m);
     if (m->ev_state == 0)

@@ -11,6 +11,7 @@
 #include "model/imposed.h"
 #include "model/model.h"
 #include "model/power.h"
+#include "engine/restitution.h"
 
 #define RC_PI 3.14159265358979323846
 
@@ -89,17 +90,31 @@ static void print_guidance(const rc_model *m, FILE *f)
         const double zeta = c / (2.0 * sqrt(k * mr));
         fprintf(f, "  %-18s m_eff %.4g kg, k %.4g N/m%s, natural frequency %.4g Hz, damping ratio of Visc %.4g\n", "", mr, k,
                 lin ? "" : " (at p_s, nonlinear law)", w / (2.0 * RC_PI), zeta);
-        if (m->inter_etarget[i] > 0)
-            fprintf(f, "  %-18s restitution asked %.9g: Visc derived = %.9g N s/m\n", "", m->inter_etarget[i], c);
-        const int curves = m->inter_law[i] == RC_LAW_TYPE6 && (m->inter_fct_dv[i] >= 0 || m->inter_iform[i] != 0);
-        double tau = NAN, e = NAN;
+        const int curves = m->inter_law[i] == RC_LAW_TYPE6 &&
+                           (m->inter_fct_dv[i] >= 0 || m->inter_fct_df[i] >= 0 || m->inter_iform[i] != 0);
+        double tau = NAN, e = NAN, tcn = NAN;
         if (lin && !curves) e = rc_linear_restitution(zeta, &tau);
-        const double tc = isfinite(tau) ? tau / w : RC_PI / w;
-        if (isfinite(e))
+        /* other laws: the single-contact ODE at the impact speed */
+        int given = 0;
+        const double vimp = rc_restitution_speed(m, i, &given);
+        const char *why = NULL;
+        const int ode = !isfinite(e) && rc_restitution_supported(m, i, &why) && vimp > 0;
+        const double damp = m->inter_law[i] == RC_LAW_POWER ? m->inter_pw[i].c : m->inter_visc[i];
+        if (ode) e = rc_restitution_solve(m, i, mr, vimp, damp, &tcn);
+        if (m->inter_etarget[i] > 0)
+            fprintf(f, "  %-18s restitution asked %.9g%s: %s derived = %.9g %s, predicted %.9g\n", "", m->inter_etarget[i],
+                    ode ? (given ? " at V_imp" : " at the derived impact speed") : " (any impact speed, linear law)",
+                    m->inter_law[i] == RC_LAW_POWER ? "C" : "Visc", damp,
+                    m->inter_law[i] == RC_LAW_POWER ? "N (s/m)^m2/m^m3" : "N s/m", e);
+        const double tc = isfinite(tau) ? tau / w : isfinite(tcn) ? tcn : RC_PI / w;
+        if (isfinite(e) && !ode)
             fprintf(f, "  %-18s predicted restitution %.6g, contact time %.4g s (linear law, force >= 0, no other load)\n", "", e, tc);
+        else if (isfinite(e))
+            fprintf(f, "  %-18s predicted restitution %.6g, contact time %.4g s at impact speed %.6g m/s (%s; "
+                    "single-contact ODE, force >= 0, no other load)\n", "", e, tc, vimp, given ? "V_imp" : "derived from t = 0");
         else
             fprintf(f, "  %-18s contact time ~%.4g s (pi/omega; restitution not predicted: %s)\n", "", tc,
-                    lin ? "damping curves or hysteresis" : "nonlinear law");
+                    why ? why : vimp > 0 ? "the ODE failed" : "no impact speed (give V_imp)");
         const double dt_exp = 2.0 / w; /* central differences, undamped */
         const double nrec = tc / m->dtout;
         fprintf(f, "  %-18s explicit stable step %.4g s; output every %.4g s gives %.3g records per contact%s\n", "", dt_exp,

@@ -201,6 +201,16 @@ class Deck:
         fields = [("r", tend), ("r", dtout)] + ([("i", ev_state)] if ev_state is not None else [])
         self.add("/RUN", line(*fields))
 
+    def contact_coupling(self, cid, s1, s2, d0, k1=None, k2=None, mu=None, kt=None, iside=0, iest=0, vimp=None,
+                         dmin=None, zeta=None, area=None, title="contact coupling"):
+        """/COUPLING/CONTACT: the body's segment surface s1 against the opposing surface s2; effective
+        range d0, k1, k2, mu, k_t; Iest = 1: V_imp, d_min, zeta, A on line 3."""
+        lines = [line(("i", s1), ("i", s2), ("i", iside), ("i", iest)),
+                 line(("r", d0), ("r", k1), ("r", k2), ("r", mu), ("r", kt))]
+        if iest:
+            lines.append(line(("r", vimp), ("r", dmin), ("r", zeta), ("r", area)))
+        self.add(f"/COUPLING/CONTACT/{cid}", *lines, title=title)
+
     def solver(self, rtol=1e-6, atol_pos=1e-9, atol_quat=1e-9, atol_vel=1e-6, atol_omega=1e-6,
                atol_energy=1e-6, max_order=5, max_steps=100000, hmax=0.0, h0=0.0):
         self.add("/SOLVER", line(("i", 1), ("i", max_order), ("i", max_steps), ("r", rtol), ("r", hmax), ("r", h0)),

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 
 #include "model/coupling.h"
+#include "model/coupling_contact.h"
 #include "model/imposed.h"
 #include "model/model.h"
 #include "model/power.h"
@@ -215,7 +216,9 @@ void rc_cpl_print_summary(const rc_model *m, FILE *f)
         rc_cpl_report r;
         const int ok = y && rc_cpl_report_eval(m, NULL, k, 0.0, y, &r) == 0;
         fprintf(f, "  %-22s bodies %d-%d, ", p->name[k], ids[0], ids[1]);
-        if (p->kind[k] == RC_CPL_SPRING)
+        if (p->kind[k] == RC_CPL_CONTACT)
+            rc_cpl_contact_print(m, k, ok ? &r : NULL, f);
+        else if (p->kind[k] == RC_CPL_SPRING)
             fprintf(f, "%s, x0 %.5g m, k_d %.5g N s/m; at t = 0: length %.5g m, force %.5g N\n",
                     form_name[p->form[k]], p->x0[k], p->kd[k], ok ? r.length : NAN, ok ? r.force : NAN);
         else

@@ -96,17 +96,17 @@ rc_status rc_cpl_contact_compile(const rc_case *c, rc_model *m, int k, rc_error 
     if (s1 < 0 || s2 < 0)
         RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field %s: expected the id of a /SURF, got %d (no such surface)",
                  RC_LOC(l1), card, s1 < 0 ? "surf_ID1" : "surf_ID2", s1 < 0 ? cc->surf[0] : cc->surf[1]);
-    if (m->surf_kind[s1] != RC_SURF_SEG || m->surf_body[s1] < 0)
-        RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card %s, field surf_ID1: expected the segment surface (/SURF/SEG or /SURF/PART) of a rigid "
-                 "body, whose faces carry the contact forces, got /SURF %d (%s)",
-                 RC_LOC(l1), card, cc->surf[0], m->surf_kind[s1] != RC_SURF_SEG ? "an analytic surface" : "fixed in space");
     if (m->surf_kind[s2] == RC_SURF_SEG)
         RC_RAISE(err, RC_EINPUT,
                  RC_LOCFMT "card %s, field surf_ID2: an opposing segment surface (/SURF/SEG, /SURF/PART) is not supported "
                  "yet; expected an analytic surface (/SURF/PLANE, /SURF/ELLIPS sphere, /SURF/CYL, /SURF/BOX), fixed "
                  "or on another body",
                  RC_LOC(l1), card);
+    if (m->surf_kind[s1] != RC_SURF_SEG || m->surf_body[s1] < 0)
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card %s, field surf_ID1: expected the segment surface (/SURF/SEG or /SURF/PART) of a rigid "
+                 "body, whose faces carry the contact forces, got /SURF %d (%s)",
+                 RC_LOC(l1), card, cc->surf[0], m->surf_kind[s1] != RC_SURF_SEG ? "an analytic surface" : "fixed in space");
     /* a cylinder acts by its lateral surface only, whatever its ends (theory) */
     const int b1 = m->surf_body[s1], b2 = m->surf_body[s2];
     if (b1 == b2)

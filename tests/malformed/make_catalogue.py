@@ -336,6 +336,32 @@ T('pw_etarget_above_one', PW, 'field e_target', insert(PW, 6, ['', '            
 T('pw_etarget_with_c', PW, 'field e_target', insert(PW, 6, ['', '                 0.5'], expect_k=7))
 T('pw_vimp_text', PW, 'field V_imp', insert(PW, 6, ['', '                 0.5                fast'], expect_k=7))
 T('t6_vimp_negative', T6, 'field V_imp', at(T6, 7, 81, 100, '-1'))
+# ---- /COUPLING/CONTACT (inserted before /END; the line expected is the faulty one)
+CC = '/COUPLING/CONTACT/3'
+
+
+def cc(l1, l2, l3=None, expect=2):
+    lines = [CC, 'contact coupling', l1, l2] + ([l3] if l3 is not None else [])
+    return before_end(lines, expect=expect)
+
+
+CC1 = '         2         4         0         0'
+T('cc_d0_zero', CC, 'field d0', cc(CC1, '                   0                 1e6', expect=3))
+T('cc_k1_missing', CC, 'field k1', cc(CC1, '                0.01', expect=3))
+T('cc_kt_missing', CC, 'field k_t', cc(CC1, '                0.01                 1e6                   0                 0.3', expect=3))
+T('cc_iside', CC, 'field Iside', cc('         2         4         5         0', '                0.01                 1e6', expect=2))
+T('cc_iest_no_line3', CC, 'field V_imp', cc('         2         4         0         1', '                0.01', expect=0))
+T('cc_iest_k1_given', CC, 'field k1', cc('         2         4         0         1', '                0.01                 1e6',
+  '                   1               0.002                   0                0.04', expect=3))
+T('cc_dmin_above_d0', CC, 'field d_min', cc('         2         4         0         1', '                0.01',
+  '                   1                0.02                   0                0.04', expect=4))
+T('cc_surf1_analytic', CC, 'field surf_ID1', cc(CC1, '                0.01                 1e6', expect=2))
+T('cc_surf2_segments', CC, 'not supported yet', before_end([
+  '/NODE', '        20                   5                   5                   0', '        21                   6                   5                   0',
+  '        22                   6                   6                   0', '        23                   5                   6                   0',
+  '/SURF/SEG/5', 'fixed patch', '         1        20        21        22        23',
+  '/SURF/SEG/6', 'second patch', '         1        20        21        22',
+  CC, 'contact coupling', '         5         6         0         0', '                0.01                 1e6'], expect=13))
 
 
 def write_all():

@@ -166,12 +166,15 @@ static void test_contact_cpl_errors(void)
     ENSURE(p);
     if (!p) return;
     char *q = p + strlen("/COUPLING/CONTACT/1\nplate - floor\n");
-    memcpy(q, "         9         5", 20); /* surf_ID1 = the sphere: not a segment surface */
+    memcpy(q, "         9         6", 20); /* surf_ID1 = the sphere: not a segment surface */
     m = tu_compile_text(buf, "contact_err.rad", &e);
     ENSURE(!m && strstr(e.msg, "card /COUPLING/CONTACT/1, field surf_ID1") && strstr(e.msg, "segment surface"));
     memcpy(q, "         5         5", 20);
     m = tu_compile_text(buf, "contact_err.rad", &e);
     ENSURE(!m && strstr(e.msg, "field surf_ID2"));
+    memcpy(q, "         9         5", 20); /* an opposing segment surface */
+    m = tu_compile_text(buf, "contact_err.rad", &e);
+    ENSURE(!m && strstr(e.msg, "field surf_ID2") && strstr(e.msg, "not supported yet"));
     rc_model_free(m);
 }
 

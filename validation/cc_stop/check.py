@@ -36,11 +36,26 @@ TE = (Z0 - D0) / V
 DT = TAU / 200
 
 
-def deck(zeta):
-    d = Deck(f"contact coupling stops a plate: zeta = {zeta}")
+M2 = 6.0   # body-body: a free slab carrying the plane
+MRED = M * M2 / (M + M2)
+
+
+def deck(zeta, body_body=False):
+    d = Deck(f"contact coupling stops a plate: zeta = {zeta}" + (", on a free slab" if body_body else ""))
     plate(d, M, SIDE, Z0)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor")
-    d.inivel(1, (0.0, 0.0, -V), 2)
+    if body_body:
+        # the slab: a body of mass M2 whose top is the plane z = 0, moving
+        # up at V M/(M + M2) while the plate falls at V M2/(M + M2) (no net
+        # momentum): the approach speed is V
+        d.nodes([(2, 0.0, 0.0, -0.05)])
+        d.grnod(3, [2], title="slab node")
+        d.rbody(2, 2, M2, [0.1, 0.1, 0.1], title="slab")
+        d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), body=2, title="slab top")
+        d.inivel(1, (0.0, 0.0, -V * M2 / (M + M2)), 2)
+        d.inivel(2, (0.0, 0.0, V * M / (M + M2)), 3)
+    else:
+        d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor")
+        d.inivel(1, (0.0, 0.0, -V), 2)
     d.contact_coupling(1, 5, 2, D0, iest=1, vimp=V, dmin=DMIN, zeta=zeta, area=A, title="plate - floor, estimated")
     d.run(TE + 3 * TAU, DT)
     return d
@@ -104,6 +119,22 @@ def main():
                 f"the force reaches zero while the plate rebounds (clipped: released at t = "
                 f"{rel[0] if len(rel) else float('nan'):.9f} s), then it leaves d0")
     rcval.check_ledger("cc_stop.damped_ledger", r, 1e-6)
+    # body-body: the plate against a plane on a free slab, approach speed V;
+    # the body-body estimator (m_red = m1 m2/(m1 + m2)) stops the relative
+    # motion at d_min after tau = (pi/2) sqrt(m_red/(A k1))
+    r = rcval.Result(rcval.run(deck(0.0, body_body=True)))
+    gap = r.pos[:, 0, 2] - r.pos[:, 1, 2] - 0.05
+    k1bb = MRED * V * V / (A * (D0 - DMIN) ** 2)
+    wbb = math.sqrt(A * k1bb / MRED)
+    taubb = 0.5 * math.pi / wbb
+    te, tl = r.events("cpl_contact_enter"), r.events("cpl_contact_leave")
+    inside = (r.t > te[0]) & (r.t < tl[0])
+    err = np.max(np.abs((D0 - gap[inside]) - (D0 - DMIN) * np.sin(wbb * (r.t[inside] - te[0])))) / (D0 - DMIN)
+    rcval.check("cc_stop.body_body", err < 1e-6 and abs((tl[0] - te[0]) / 2 - taubb) < 1e-6 * taubb,
+                f"plate on a free 6 kg slab: gap against d0 - (d0 - d_min) sin(w t), w = sqrt(A k1/m_red), "
+                f"m_red = {MRED} kg: max error {err:.2e} of d0 - d_min (< 1e-6); (t_leave - t_enter)/2 = "
+                f"{(tl[0] - te[0]) / 2:.12f} s, tau = {taubb:.12f} s")
+    rcval.check_ledger("cc_stop.body_body_ledger", r, 1e-6)
     rcval.finish()
 
 

@@ -146,6 +146,51 @@ static void test_contact_cpl_estimators(void)
     rc_model_free(m);
 }
 
+/* `ricochet check`: the estimated values, tau, the warning when Dt_out
+ * cannot resolve tau (Dt_out 0.01 s against tau = 0.0126 s), the cost. */
+static void test_contact_cpl_check_prints_estimators(void)
+{
+    static const char *deck =
+        "/BEGIN\nestimators\n      2022         0\n                  kg                   m                   s\n"
+        "                  kg                   m                   s\n"
+        "/NODE\n         1                   0                   0                0.02\n"
+        "        10                -0.1                -0.1                0.02\n"
+        "        11                 0.1                -0.1                0.02\n"
+        "        12                 0.1                 0.1                0.02\n"
+        "        13                -0.1                 0.1                0.02\n"
+        "/GRNOD/NODE/1\nplate\n        10        11        12        13\n"
+        "/RBODY/1\nplate\n         1                                                 2         1\n"
+        "                0.01                0.01                0.02\n                   0                   0                   0\n"
+        "/SURF/SEG/5\nbottom\n         1        10        11        12        13\n"
+        "/SURF/PLANE/2\nfloor\n                   0                   0                   0\n"
+        "                   0                   0                   1\n"
+        "/COUPLING/CONTACT/1\nestimated\n         5         2         0         1\n                0.01\n"
+        "                   1               0.002                 0.1                0.04\n"
+        "/RUN\n                0.05                0.01\n/END\n";
+    rc_error e;
+    rc_model *m = tu_compile_text(deck, "estimators_check.rad", &e);
+    ENSURE(m);
+    if (!m) return;
+    FILE *f = tmpfile();
+    ENSURE(f);
+    if (!f) {
+        rc_model_free(m);
+        return;
+    }
+    rc_model_print_summary(m, f);
+    static char out[16384];
+    rewind(f);
+    size_t n = fread(out, 1, sizeof out - 1, f);
+    out[n] = 0;
+    fclose(f);
+    ENSURE(strstr(out, "/COUPLING/CONTACT/1") && strstr(out, "1 face (0.04 m^2)"));
+    ENSURE(strstr(out, "k1 = m_red V^2/(A (d0 - d_min)^2) = 781250 N/m^3"));
+    ENSURE(strstr(out, "stopping time tau = (pi/2) sqrt(m_red/(A k1)) = 0.012566 s"));
+    ENSURE(strstr(out, "WARNING: the output interval Dt_out = 0.01 s cannot resolve tau"));
+    ENSURE(strstr(out, "cost: about 150 steps per impact"));
+    rc_model_free(m);
+}
+
 /* Errors naming the field: an analytic surface for surf_ID1, an opposing
  * segment surface (not supported yet). */
 static void test_contact_cpl_errors(void)
@@ -185,5 +230,6 @@ void suite_contactcpl(void)
     RUN_TEST(test_contact_cpl_jacobian_matches_finite_differences);
     RUN_TEST(test_contact_cpl_roots);
     RUN_TEST(test_contact_cpl_estimators);
+    RUN_TEST(test_contact_cpl_check_prints_estimators);
     RUN_TEST(test_contact_cpl_errors);
 }

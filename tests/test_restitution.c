@@ -119,6 +119,20 @@ static void test_restitution_power_asked(void)
     ENSURE_NEAR(rc_restitution_solve(m, 0, mr, 1.0, 0.0, NULL), 1.0, 1e-9, 0);
     /* Hertz-type damping: a faster impact loses more */
     ENSURE(rc_restitution_solve(m, 0, mr, 2.0, c, NULL) < 0.3);
+    /* `ricochet check`: asked, derived and predicted */
+    FILE *f = tmpfile();
+    ENSURE(f);
+    if (f) {
+        rc_model_print_summary(m, f);
+        static char out[16384];
+        rewind(f);
+        size_t n = fread(out, 1, sizeof out - 1, f);
+        out[n] = 0;
+        fclose(f);
+        ENSURE(strstr(out, "restitution asked 0.3 at the derived impact speed: C derived = "));
+        ENSURE(strstr(out, "predicted 0.3"));
+        ENSURE(strstr(out, "predicted restitution 0.3, contact time") && strstr(out, "at impact speed 1 m/s"));
+    }
     rc_model_free(m);
 }
 

@@ -36,9 +36,10 @@ void rc_cpl_contact_print(const rc_model *m, int k, const rc_cpl_report *r, FILE
     const int s1 = ct->sf1[k], s2 = ct->sf2[k], kind = m->surf_kind[s2];
     const char *side = kind == RC_SURF_PLANE ? (ct->side[k] > 0 ? "its normal side" : "against its normal")
                                              : (ct->side[k] > 0 ? "outside" : "inside");
-    fprintf(f, "%d faces (%.5g m^2) of /SURF/%d against /SURF/%d (%s, %s, %s); d0 %.5g m, k1 %.5g N/m^3, k2 %.5g N s/m^3, "
+    const int nf = ct->fadr[k + 1] - ct->fadr[k];
+    fprintf(f, "%d face%s (%.5g m^2) of /SURF/%d against /SURF/%d (%s, %s, %s); d0 %.5g m, k1 %.5g N/m^3, k2 %.5g N s/m^3, "
             "mu %.5g, k_t %.5g s/m; at t = 0: nearest face at %.5g m, normal force %.5g N\n",
-            ct->fadr[k + 1] - ct->fadr[k], ct->atot[k], m->surf_id[s1], m->surf_id[s2], surf_name(kind),
+            nf, nf == 1 ? "" : "s", ct->atot[k], m->surf_id[s1], m->surf_id[s2], surf_name(kind),
             c->b2[k] >= 0 ? "body-body" : "fixed", side, ct->d0[k], ct->k1[k], ct->k2[k], ct->mu[k], ct->kt[k],
             r ? r->length : NAN, r ? r->force : NAN);
     const double tau = ct->tau[k];

@@ -2,8 +2,9 @@
  * Contact couplings (/COUPLING/CONTACT; model/coupling_contact.c,
  * engine/contact_coupling.inc): the faces of a segment surface, the
  * estimators, the Jacobian against finite differences (plane, box from
- * inside, cylinder, a sphere on another body; damping and friction; every
- * face pushing, and mixed modes), the face modes and roots, the errors.
+ * inside, cylinder, a sphere and a segment surface on another body, a fixed
+ * segment surface; damping and friction; every face pushing, and mixed
+ * modes), the face modes and roots, the errors.
  */
 #include <math.h>
 #include <stdio.h>
@@ -35,20 +36,21 @@ static void test_contact_cpl_faces(void)
     ENSURE(m);
     if (!m) return;
     const rc_cpl_contact *ct = m->cpl->ct;
-    ENSURE(m->cpl->n == 4 && ct->nface == 16);
-    ENSURE(ct->fadr[0] == 0 && ct->fadr[1] == 4 && ct->fadr[4] == 16);
+    ENSURE(m->cpl->n == 6 && ct->nface == 24);
+    ENSURE(ct->fadr[0] == 0 && ct->fadr[1] == 4 && ct->fadr[6] == 24);
     /* the plate is nearly flat: 3 quadrilaterals of 0.01 m^2 and a triangle of 0.005 m^2 */
     double a = 0;
     for (int f = 0; f < 4; f++) a += ct->face[RC_FACE_NV * f + 6];
     ENSURE_NEAR(a, 0.035, 1e-4, 0);
     ENSURE_NEAR(ct->atot[0], a, 1e-14, 0);
-    ENSURE(ct->side[0] == 1.0 && ct->side[1] == -1.0 && ct->side[2] == 1.0 && ct->side[3] == 1.0);
+    ENSURE(ct->side[0] == 1.0 && ct->side[1] == -1.0 && ct->side[2] == 1.0 && ct->side[3] == 1.0 &&
+           ct->side[4] == 1.0 && ct->side[5] == 1.0);
     ENSURE(m->cpl->b1[3] == 0 && m->cpl->b2[3] == 1 && m->cpl->b2[0] == -1);
     ENSURE_NEAR(ct->mred[3], 2.0 / 3.0, 1e-15, 0);
     rc_model_free(m);
 }
 
-/* The Jacobian of the four couplings against central differences, at a
+/* The Jacobian of the six couplings against central differences, at a
  * state with every body moving, every face pushing, then in mixed modes. */
 static void test_contact_cpl_jacobian_matches_finite_differences(void)
 {
@@ -94,12 +96,12 @@ static void test_contact_cpl_roots(void)
     rc_initial_state(m, y);
     rc_modes_init(m, d, 0.0, y);
     const int off = RC_ROOTS_PER_INTER * m->ninter, nr = off + rc_cpl_nroots(m);
-    ENSURE(rc_cpl_nroots(m) == 32);
+    ENSURE(rc_cpl_nroots(m) == 48);
     double *g = calloc((size_t)nr, sizeof(double));
     int *dir = calloc((size_t)nr, sizeof(int));
     rc_assemble_roots(m, d, 0.0, y, g);
     rc_cpl_root_dirs(m, d, dir + off);
-    for (int f = 0; f < 16; f++) {
+    for (int f = 0; f < 24; f++) {
         ENSURE(g[off + 2 * f] < 0);                         /* every face within d0 = 2 m */
         ENSURE(d->cpl->fmode[f] != RC_FACE_OUT);
         ENSURE(dir[off + 2 * f] == 1);                      /* leaving is the next event */
@@ -217,9 +219,9 @@ static void test_contact_cpl_errors(void)
     memcpy(q, "         5         5", 20);
     m = tu_compile_text(buf, "contact_err.rad", &e);
     ENSURE(!m && strstr(e.msg, "field surf_ID2"));
-    memcpy(q, "         9         5", 20); /* an opposing segment surface */
+    memcpy(q, "        11         6", 20); /* a fixed segment surface: no body to push */
     m = tu_compile_text(buf, "contact_err.rad", &e);
-    ENSURE(!m && strstr(e.msg, "field surf_ID2") && strstr(e.msg, "not supported yet"));
+    ENSURE(!m && strstr(e.msg, "field surf_ID1") && strstr(e.msg, "fixed in space"));
     rc_model_free(m);
 }
 

@@ -25,6 +25,7 @@ static const char *surf_name(int kind)
     case RC_SURF_SPHERE: return "sphere";
     case RC_SURF_CYL: return "cylinder";
     case RC_SURF_BOX: return "box";
+    case RC_SURF_SEG: return "segments";
     default: return "surface";
     }
 }
@@ -34,7 +35,7 @@ void rc_cpl_contact_print(const rc_model *m, int k, const rc_cpl_report *r, FILE
     const rc_couplings *c = m->cpl;
     const rc_cpl_contact *ct = c->ct;
     const int s1 = ct->sf1[k], s2 = ct->sf2[k], kind = m->surf_kind[s2];
-    const char *side = kind == RC_SURF_PLANE ? (ct->side[k] > 0 ? "its normal side" : "against its normal")
+    const char *side = kind == RC_SURF_PLANE || kind == RC_SURF_SEG ? (ct->side[k] > 0 ? "its normal side" : "against its normal")
                                              : (ct->side[k] > 0 ? "outside" : "inside");
     const int nf = ct->fadr[k + 1] - ct->fadr[k];
     fprintf(f, "%d face%s (%.5g m^2) of /SURF/%d against /SURF/%d (%s, %s, %s); d0 %.5g m, k1 %.5g N/m^3, k2 %.5g N s/m^3, "

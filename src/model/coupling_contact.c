@@ -96,12 +96,6 @@ rc_status rc_cpl_contact_compile(const rc_case *c, rc_model *m, int k, rc_error 
     if (s1 < 0 || s2 < 0)
         RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field %s: expected the id of a /SURF, got %d (no such surface)",
                  RC_LOC(l1), card, s1 < 0 ? "surf_ID1" : "surf_ID2", s1 < 0 ? cc->surf[0] : cc->surf[1]);
-    if (m->surf_kind[s2] == RC_SURF_SEG)
-        RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card %s, field surf_ID2: an opposing segment surface (/SURF/SEG, /SURF/PART) is not supported "
-                 "yet; expected an analytic surface (/SURF/PLANE, /SURF/ELLIPS sphere, /SURF/CYL, /SURF/BOX), fixed "
-                 "or on another body",
-                 RC_LOC(l1), card);
     if (m->surf_kind[s1] != RC_SURF_SEG || m->surf_body[s1] < 0)
         RC_RAISE(err, RC_EINPUT,
                  RC_LOCFMT "card %s, field surf_ID1: expected the segment surface (/SURF/SEG or /SURF/PART) of a rigid "
@@ -164,7 +158,8 @@ rc_status rc_cpl_contact_compile(const rc_case *c, rc_model *m, int k, rc_error 
     /* the side: the body's centre at t = 0, unless Iside says */
     double xc[3];
     point0(m, b1, (const double[3]){0, 0, 0}, xc);
-    const int in = cc->iside == 2 || (cc->iside == 0 && inside0(m, s2, xc));
+    /* a segment surface: its segments' normal side unless Iside 2 */
+    const int in = cc->iside == 2 || (cc->iside == 0 && m->surf_kind[s2] != RC_SURF_SEG && inside0(m, s2, xc));
     ct->side[k] = in ? -1.0 : 1.0;
     /* the law */
     ct->d0[k] = cc->d0;

@@ -356,7 +356,7 @@ T('cc_iest_k1_given', CC, 'field k1', cc('         2         4         0        
 T('cc_dmin_above_d0', CC, 'field d_min', cc('         2         4         0         1', '                0.01',
   '                   1                0.02                   0                0.04', expect=4))
 T('cc_surf1_analytic', CC, 'field surf_ID1', cc(CC1, '                0.01                 1e6', expect=2))
-T('cc_surf2_segments', CC, 'not supported yet', before_end([
+T('cc_surf1_fixed_segments', CC, 'field surf_ID1', before_end([
   '/NODE', '        20                   5                   5                   0', '        21                   6                   5                   0',
   '        22                   6                   6                   0', '        23                   5                   6                   0',
   '/SURF/SEG/5', 'fixed patch', '         1        20        21        22        23',

@@ -25,7 +25,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 import rcval  # noqa: E402
 from ccplate import plate  # noqa: E402
-from deck import Deck  # noqa: E402
+from deck import Deck, line  # noqa: E402
 
 M, SIDE, V, D0, DMIN, Z0 = 2.0, 0.2, 1.0, 0.01, 0.002, 0.02
 A = SIDE * SIDE
@@ -40,10 +40,29 @@ M2 = 6.0   # body-body: a free slab carrying the plane
 MRED = M * M2 / (M + M2)
 
 
-def deck(zeta, body_body=False):
-    d = Deck(f"contact coupling stops a plate: zeta = {zeta}" + (", on a free slab" if body_body else ""))
+def deck(zeta, body_body=False, meshed=False):
+    d = Deck(f"contact coupling stops a plate: zeta = {zeta}" + (", on a free slab" if body_body else "")
+             + (" (meshed top)" if meshed else ""))
     plate(d, M, SIDE, Z0)
-    if body_body:
+    if body_body and meshed:
+        # the slab's top z = 0 as a segment surface: 3 x 3 squares of 0.2 m,
+        # each split into two triangles, on the slab's nodes
+        xs = [-0.3, -0.1, 0.1, 0.3]
+        top = [(100 + 4 * i + j, xs[i], xs[j], 0.0) for i in range(4) for j in range(4)]
+        d.nodes([(2, 0.0, 0.0, -0.05)] + top)
+        d.grnod(4, [p[0] for p in top], title="slab top nodes")
+        d.grnod(3, [2], title="slab node")
+        d.rbody(2, 2, M2, [0.1, 0.1, 0.1], grnod=4, title="slab")
+        segs = []
+        for i in range(3):
+            for j in range(3):
+                a, b, c, e = 100 + 4 * i + j, 100 + 4 * (i + 1) + j, 100 + 4 * (i + 1) + j + 1, 100 + 4 * i + j + 1
+                segs.append(line(("i", len(segs) + 1), ("i", a), ("i", b), ("i", c)))
+                segs.append(line(("i", len(segs) + 1), ("i", a), ("i", c), ("i", e)))
+        d.add("/SURF/SEG/2", *segs, title="slab top: 18 triangles")
+        d.inivel(1, (0.0, 0.0, -V * M2 / (M + M2)), 2)
+        d.inivel(2, (0.0, 0.0, V * M / (M + M2)), 3)
+    elif body_body:
         # the slab: a body of mass M2 whose top is the plane z = 0, moving
         # up at V M/(M + M2) while the plate falls at V M2/(M + M2) (no net
         # momentum): the approach speed is V
@@ -122,19 +141,22 @@ def main():
     # body-body: the plate against a plane on a free slab, approach speed V;
     # the body-body estimator (m_red = m1 m2/(m1 + m2)) stops the relative
     # motion at d_min after tau = (pi/2) sqrt(m_red/(A k1))
-    r = rcval.Result(rcval.run(deck(0.0, body_body=True)))
-    gap = r.pos[:, 0, 2] - r.pos[:, 1, 2] - 0.05
-    k1bb = MRED * V * V / (A * (D0 - DMIN) ** 2)
-    wbb = math.sqrt(A * k1bb / MRED)
-    taubb = 0.5 * math.pi / wbb
-    te, tl = r.events("cpl_contact_enter"), r.events("cpl_contact_leave")
-    inside = (r.t > te[0]) & (r.t < tl[0])
-    err = np.max(np.abs((D0 - gap[inside]) - (D0 - DMIN) * np.sin(wbb * (r.t[inside] - te[0])))) / (D0 - DMIN)
-    rcval.check("cc_stop.body_body", err < 1e-6 and abs((tl[0] - te[0]) / 2 - taubb) < 1e-6 * taubb,
-                f"plate on a free 6 kg slab: gap against d0 - (d0 - d_min) sin(w t), w = sqrt(A k1/m_red), "
-                f"m_red = {MRED} kg: max error {err:.2e} of d0 - d_min (< 1e-6); (t_leave - t_enter)/2 = "
-                f"{(tl[0] - te[0]) / 2:.12f} s, tau = {taubb:.12f} s")
-    rcval.check_ledger("cc_stop.body_body_ledger", r, 1e-6)
+    for meshed in (False, True):
+        name = "body_body_meshed" if meshed else "body_body"
+        r = rcval.Result(rcval.run(deck(0.0, body_body=True, meshed=meshed)))
+        gap = r.pos[:, 0, 2] - r.pos[:, 1, 2] - 0.05
+        k1bb = MRED * V * V / (A * (D0 - DMIN) ** 2)
+        wbb = math.sqrt(A * k1bb / MRED)
+        taubb = 0.5 * math.pi / wbb
+        te, tl = r.events("cpl_contact_enter"), r.events("cpl_contact_leave")
+        inside = (r.t > te[0]) & (r.t < tl[0])
+        err = np.max(np.abs((D0 - gap[inside]) - (D0 - DMIN) * np.sin(wbb * (r.t[inside] - te[0])))) / (D0 - DMIN)
+        rcval.check(f"cc_stop.{name}", err < 1e-6 and abs((tl[0] - te[0]) / 2 - taubb) < 1e-6 * taubb,
+                    f"plate on a free 6 kg slab ({'its top a segment surface of 18 triangles' if meshed else 'a plane'}): "
+                    f"gap against d0 - (d0 - d_min) sin(w t), w = sqrt(A k1/m_red), m_red = {MRED} kg: max error "
+                    f"{err:.2e} of d0 - d_min (< 1e-6); (t_leave - t_enter)/2 = {(tl[0] - te[0]) / 2:.12f} s, "
+                    f"tau = {taubb:.12f} s")
+        rcval.check_ledger(f"cc_stop.{name}_ledger", r, 1e-6)
     rcval.finish()
 
 

@@ -205,6 +205,65 @@ static void jacobian_check(int with_cards)
 
 static void test_engine_jacobian_matches_finite_differences(void) { jacobian_check(0); }
 
+/* After a mode change of one interface, its block refreshed in place
+ * (rc_jac_refresh_inter) gives the values of a whole assembly in the new
+ * modes at the same state; the other interface's block is untouched. */
+static void test_engine_jacobian_refresh_after_mode_change(void)
+{
+    rc_case c;
+    build_case(&c);
+    add_friction_cards(&c);
+    rc_model *m = NULL;
+    rc_error e;
+    ENSURE(rc_model_compile(&c, &m, &e) == RC_OK);
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    double *val = calloc((size_t)m->nnz + 1, sizeof(double)), *ref = calloc((size_t)m->nnz + 1, sizeof(double));
+    entropy_state(m, y);
+    ENSURE(d->jcache != NULL);
+    ENSURE(rc_jac_refresh_inter(m, d, 0, y, val) == -1); /* nothing assembled yet */
+    const int modes[3] = {RC_MODE_CLOSED, RC_MODE_RELEASED, RC_MODE_INACTIVE};
+    int changes = 0;
+    double worst = 0.0, moved = 0.0;
+    for (int from = 0; from < 3; from++)
+        for (int to = 0; to < 3; to++)
+            for (int sl = 0; sl < 2; sl++) {
+                if (from == to && sl == 0) continue;
+                for (int i = 0; i < m->ninter; i++) {
+                    d->inter_mode[i] = RC_MODE_CLOSED;
+                    d->inter_slip[i] = 0;
+                    d->inter_branch[i] = RC_BR_LOAD;
+                }
+                d->inter_mode[1] = modes[from];
+                ENSURE(rc_assemble_jac(m, d, 0.0137, y, val) == 0);
+                d->inter_mode[1] = modes[to];
+                d->inter_slip[1] = sl;
+                ENSURE(rc_jac_refresh_inter(m, d, 1, y, val) == 0);
+                ENSURE(rc_assemble_jac(m, d, 0.0137, y, ref) == 0);
+                double scale = 0.0;
+                for (int64_t k = 0; k < m->nnz; k++) scale = fmax(scale, fabs(ref[k]));
+                for (int64_t k = 0; k < m->nnz; k++) worst = fmax(worst, fabs(val[k] - ref[k]) / scale);
+                /* the refresh did change something (the check can fail) */
+                d->inter_mode[1] = modes[from];
+                d->inter_slip[1] = 0;
+                double *alt = calloc((size_t)m->nnz + 1, sizeof(double));
+                ENSURE(rc_assemble_jac(m, d, 0.0137, y, alt) == 0);
+                for (int64_t k = 0; k < m->nnz; k++) moved = fmax(moved, fabs(alt[k] - ref[k]) / scale);
+                free(alt);
+                changes++;
+            }
+    printf("    refresh after %d mode changes of interface 2: max |refreshed - whole| / max|J| = %.2e "
+           "(largest change of a value %.2e)\n", changes, worst, moved);
+    ENSURE(worst < 1e-12);
+    ENSURE(moved > 1e-3);
+    free(val);
+    free(ref);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 static void test_engine_jacobian_friction_cards_matches_finite_differences(void)
 {
     jacobian_check(1);
@@ -481,6 +540,7 @@ void suite_engine(void)
 {
     RUN_TEST(test_engine_jacobian_matches_finite_differences);
     RUN_TEST(test_engine_jacobian_friction_cards_matches_finite_differences);
+    RUN_TEST(test_engine_jacobian_refresh_after_mode_change);
     RUN_TEST(test_engine_renard_continuity);
     RUN_TEST(test_engine_quaternion_drift_and_gyroscopic_invariants);
     RUN_TEST(test_engine_jacobian_power_cylinders_impvel_matches_finite_differences);

@@ -94,11 +94,18 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
             dense_body(m, b, t, y, dense);
             scatter(&m->jb_body[b], dense, val);
         }
-    for (int i = 0; i < m->ninter; i++)
-        if (d->inter_mode[i] != RC_MODE_INACTIVE && m->jb_inter[i].ncol > 0) {
+    for (int i = 0; i < m->ninter; i++) {
+        const rc_jblock *jb = &m->jb_inter[i];
+        const int nd = jb->nrow * jb->ncol;
+        if (d->inter_mode[i] != RC_MODE_INACTIVE && jb->ncol > 0) {
             dense_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], y, dense);
-            scatter(&m->jb_inter[i], dense, val);
+            scatter(jb, dense, val);
+        } else {
+            memset(dense, 0, (size_t)nd * sizeof(double));
         }
+        if (d->jcache) memcpy(d->jcache + d->jcache_off[i], dense, (size_t)nd * sizeof(double));
+    }
+    d->jcache_ok = d->jcache != NULL;
     /* couplings (coupling_jac.inc) */
     if (rc_cpl_jac(m, d, t, y, val)) return 1;
     /* potential of a time-varying gravity: d/dv of -m g(t).v */
@@ -115,6 +122,28 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
     if (m->nheld > 0)
         for (int64_t k = 0; k < m->nnz; k++)
             if (m->row_held[m->jac_rowind[k]]) val[k] = 0.0;
+    return 0;
+}
+
+int rc_jac_refresh_inter(const rc_model *m, rc_data *d, int i, const double *y, double *val)
+{
+    if (!d->jcache || !d->jcache_ok || i < 0 || i >= m->ninter) return -1;
+    const rc_jblock *jb = &m->jb_inter[i];
+    const int nd = jb->nrow * jb->ncol;
+    if (nd == 0) return 0;
+    double dense[RC_JB_MAX];
+    if (d->inter_mode[i] != RC_MODE_INACTIVE)
+        dense_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], y, dense);
+    else
+        memset(dense, 0, (size_t)nd * sizeof(double));
+    double *old = d->jcache + d->jcache_off[i];
+    for (int k = 0; k < nd; k++) {
+        const int64_t sl = jb->slot[k];
+        /* held rows stay zero (rc_assemble_jac) */
+        if (sl >= 0 && !(m->nheld > 0 && m->row_held[m->jac_rowind[sl]])) val[sl] += dense[k] - old[k];
+        old[k] = dense[k];
+    }
+    d->n_jac_refresh++;
     return 0;
 }
 

@@ -38,7 +38,22 @@ rc_data *rc_data_new(const rc_model *m)
         d->imp_scratch = calloc(3 * (size_t)m->ny, sizeof(double));
         imp_ok = d->imp_free && d->imp_scratch;
     }
-    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->cpl || !imp_ok) {
+    int jc_ok = 1;
+    if (m->jb_inter) { /* the interfaces' Jacobian blocks (rc_jac_refresh_inter) */
+        d->jcache_off = malloc(n * sizeof *d->jcache_off);
+        jc_ok = d->jcache_off != NULL;
+        int64_t off = 0;
+        for (int i = 0; jc_ok && i < m->ninter; i++) {
+            d->jcache_off[i] = off;
+            off += (int64_t)m->jb_inter[i].nrow * m->jb_inter[i].ncol;
+        }
+        if (jc_ok) {
+            d->jcache_off[m->ninter] = off;
+            d->jcache = calloc((size_t)off + 1, sizeof(double));
+            jc_ok = d->jcache != NULL;
+        }
+    }
+    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->cpl || !imp_ok || !jc_ok) {
         rc_data_free(d);
         return NULL;
     }
@@ -58,6 +73,8 @@ void rc_data_free(rc_data *d)
     rc_cpl_data_free(d->cpl);
     free(d->imp_free);
     free(d->imp_scratch);
+    free(d->jcache);
+    free(d->jcache_off);
     free(d);
 }
 

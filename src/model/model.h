@@ -259,7 +259,14 @@ typedef struct rc_data {
     double *imp_free;    /* [ny] imposed velocities: the free accelerations of
                             their rows at the last rhs (imposed.h), NULL: none */
     double *imp_scratch; /* [3*ny] imposed velocities: Jacobian scratch */
+    /* the interfaces' dense Jacobian blocks as the last rc_assemble_jac
+     * added them (rc_jac_refresh_inter); NULL when the model had no
+     * Jacobian pattern yet */
+    double *jcache;      /* [sum of nrow*ncol of jb_inter] */
+    int64_t *jcache_off; /* [ninter + 1] offsets into jcache */
+    int jcache_ok;       /* jcache holds the blocks of the values last assembled */
     long n_rhs, n_jac, n_root;
+    long n_jac_refresh;  /* interface blocks refreshed after events */
     int fail_inter;      /* element that produced a non-finite force, -1 */
     double fail_t;
 } rc_data;
@@ -315,6 +322,11 @@ void rc_initial_state(const rc_model *m, double *y);
 int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, double *ydot);
 /* Jacobian values into `val` [nnz] on the fixed pattern. */
 int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val);
+/* After a mode change of interface i: replace its block in `val` (values
+ * last assembled by rc_assemble_jac, with later refreshes) by its block at y
+ * in d's present modes; the rest of `val` stays as it was. 0, or -1 when d
+ * holds no blocks of `val` (assemble it whole then). */
+int rc_jac_refresh_inter(const rc_model *m, rc_data *d, int i, const double *y, double *val);
 /* Root functions [ninter*RC_ROOTS_PER_INTER]. */
 void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
 /* Evaluate one interface at (t, y) in the given modes, for reports, roots

@@ -47,6 +47,11 @@ typedef struct vtk_src {
     int *surf_id, *surf_bidx; /* [nsurf] id, body index (-1: fixed in space) */
     char **surf_kind;   /* [nsurf] */
     double *surf_p, *surf_n, *surf_r, *surf_x; /* geometry, body frame */
+    /* segment surfaces: nodes [nsnode] (body frame), corners [4 nsseg],
+     * each surface's first node and segment (-1: not a segment surface) */
+    size_t nsnode, nsseg;
+    double *snode;
+    int *sseg, *surf_node0, *surf_seg0;
     int *inter_id;      /* [ninter] */
     double *ev_t;       /* [nevent] */
     char **ev_kind, **ev_elem; /* [nevent] */
@@ -120,7 +125,8 @@ static void src_free(vtk_src *s)
     if (s->ev_kind) nc_free_string(s->nevent, s->ev_kind);
     if (s->ev_elem) nc_free_string(s->nevent, s->ev_elem);
     void *p[] = {s->body_id, s->surf_id, s->surf_bidx, s->surf_kind, s->surf_p, s->surf_n, s->surf_r,
-                 s->surf_x, s->inter_id, s->ev_t, s->ev_kind, s->ev_elem};
+                 s->surf_x, s->inter_id, s->ev_t, s->ev_kind, s->ev_elem, s->snode, s->sseg, s->surf_node0,
+                 s->surf_seg0};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     if (s->ncid >= 0) nc_close(s->ncid);
 }
@@ -273,6 +279,25 @@ static int tessellate(mesh *m, const vtk_src *s, size_t j, const double pos[3], 
         for (int f = 0; f < 6; f++)
             bad |= mesh_poly(m, (int[]){base + face[f][0], base + face[f][1], base + face[f][2], base + face[f][3]}, 4,
                              sid);
+    } else if (!strcmp(kind, "SEGMENTS") && s->surf_node0 && s->surf_seg0 && s->surf_node0[j] >= 0 &&
+               s->surf_seg0[j] >= 0) {
+        /* the surface's nodes and segments run to the next segment
+         * surface's first ones */
+        size_t n0 = (size_t)s->surf_node0[j], n1 = s->nsnode, g0 = (size_t)s->surf_seg0[j], g1 = s->nsseg;
+        for (size_t i = 0; i < s->nsurf; i++) {
+            if (s->surf_node0[i] > s->surf_node0[j] && (size_t)s->surf_node0[i] < n1) n1 = (size_t)s->surf_node0[i];
+            if (s->surf_seg0[i] > s->surf_seg0[j] && (size_t)s->surf_seg0[i] < g1) g1 = (size_t)s->surf_seg0[i];
+        }
+        for (size_t a = n0; a < n1; a++) PUT(s->snode[3 * a], s->snode[3 * a + 1], s->snode[3 * a + 2]);
+        for (size_t g = g0; g < g1 && !bad; g++) {
+            const int *c = s->sseg + 4 * g;
+            int idx[4], nc = c[3] == c[2] ? 3 : 4;
+            for (int k = 0; k < nc; k++) {
+                if ((size_t)c[k] < n0 || (size_t)c[k] >= n1) bad = 1; /* a corner of another surface */
+                idx[k] = base + c[k] - (int)n0;
+            }
+            if (!bad) bad |= mesh_poly(m, idx, nc, sid);
+        }
     } else if (!strcmp(kind, "PLANE")) {
         /* a square patch centred on the projection of the motion's centre */
         double a[3], b[3], nl[3], ng[3], pg[3], cg[3];
@@ -448,6 +473,20 @@ static rc_status src_open(vtk_src *s, const char *path, rc_error *err)
                 if (sbody[j] == s->body_id[b]) s->surf_bidx[j] = (int)b;
         }
         free(sbody);
+        /* segment surfaces (files without them have none of these) */
+        s->nsnode = dim_or_zero(s->ncid, "segment_node");
+        s->nsseg = dim_or_zero(s->ncid, "segment");
+        if (rc == RC_OK && s->nsnode > 0 && s->nsseg > 0) {
+            rc = get_all(s, "segment_node_coordinates", NC_DOUBLE, 3 * s->nsnode, (void **)&s->snode, err);
+            if (rc == RC_OK) rc = get_all(s, "segment_nodes", NC_INT, 4 * s->nsseg, (void **)&s->sseg, err);
+            if (rc == RC_OK) rc = get_all(s, "surface_first_node", NC_INT, s->nsurf, (void **)&s->surf_node0, err);
+            if (rc == RC_OK)
+                rc = get_all(s, "surface_first_segment", NC_INT, s->nsurf, (void **)&s->surf_seg0, err);
+            for (size_t k = 0; rc == RC_OK && k < 4 * s->nsseg; k++)
+                if (s->sseg[k] < 0 || (size_t)s->sseg[k] >= s->nsnode)
+                    rc = RC_SET(err, RC_EINPUT, "%s: segment_nodes refers to node %d of %zu", path, s->sseg[k],
+                                s->nsnode);
+        }
     }
     if (rc == RC_OK && s->nevent > 0) {
         rc = get_all(s, "event_time", NC_DOUBLE, s->nevent, (void **)&s->ev_t, err);

@@ -35,6 +35,7 @@
 #include "output/output.h"
 #include "model/power.h"
 #include "solver/impacts.h"
+#include "solver/nvfast.h"
 #include "solver/solver.h"
 
 /* A jump in ydot whose effect over one step, relative to the error weight,
@@ -54,6 +55,8 @@ typedef struct run_ctx {
     const rc_model *m;
     rc_data *d;
     double *jsave; /* [nnz] the Jacobian values of the last evaluation */
+    int jac_patched; /* jsave's blocks of the interfaces whose modes an event
+                        changed were refreshed at the event state */
     volatile sig_atomic_t *stop; /* the caller's stop flag (rc_run_options), NULL */
     char cvmsg[512]; /* CVODE's last error message, quoted in the failure message */
 } run_ctx;
@@ -92,7 +95,16 @@ static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleanty
     (void)t1;
     (void)t2;
     (void)t3;
-    if (!jok) {
+    /* the first setup after an event that changed only interface modes
+     * uses jsave with those interfaces' blocks refreshed at the event
+     * (rc_jac_refresh_inter): the modes are right, the other blocks as
+     * stale as CVODE's own Jacobian reuse allows. A convergence failure
+     * then asks again (jok false) and gets a whole new Jacobian. */
+    const int patched = c->jac_patched;
+    c->jac_patched = 0;
+    if (!jok && patched) {
+        *jcur = SUNTRUE;
+    } else if (!jok) {
         int st = rc_assemble_jac(m, c->d, t, N_VGetArrayPointer(y), c->jsave);
         if (st) return st;
         *jcur = SUNTRUE;
@@ -347,7 +359,6 @@ static void add_stats(void *cv, rc_stats *s)
     long v;
     if (CVodeGetNumSteps(cv, &v) == CV_SUCCESS) s->steps += v;
     if (CVodeGetNumRhsEvals(cv, &v) == CV_SUCCESS) s->rhs_evals += v;
-    if (CVodeGetNumJacEvals(cv, &v) == CV_SUCCESS) s->jac_evals += v;
     if (CVodeGetNumLinSolvSetups(cv, &v) == CV_SUCCESS) s->lin_setups += v;
     if (CVodeGetNumNonlinSolvIters(cv, &v) == CV_SUCCESS) s->nonlin_iters += v;
     if (CVodeGetNumNonlinSolvConvFails(cv, &v) == CV_SUCCESS) s->nonlin_fails += v;
@@ -456,12 +467,25 @@ static const char *const energy_long[RC_NENERGY] = {
     ("kinetic + potential + contact work + damping + friction work + couplings + imposed (constant in exact "
      "arithmetic)")};
 
-/* Sample the last step over (t_prev, t] at 4 points of CVODE's interpolant
- * for the impacts in progress (peak force, maximum penetration); the part
- * of the interval before the last step (right after a root return) is not
- * covered by the interpolant any more and is skipped. */
+/* The interpolant of CVODE's last step for the impact table (rc_interp_fn). */
+typedef struct interp_ctx {
+    void *cv;
+    N_Vector ys;
+} interp_ctx;
+
+static int interp_last_step(void *ctx, double t, const double **y)
+{
+    interp_ctx *c = ctx;
+    if (CVodeGetDky(c->cv, t, 0, c->ys) != CV_SUCCESS) return -1;
+    *y = N_VGetArrayPointer(c->ys);
+    return 0;
+}
+
+/* The impacts in progress at the end of a step over (t_prev, t] with the
+ * state y (rc_impacts_step); the part of the interval before the last step
+ * (right after a root return) is not covered by the interpolant. */
 static void sample_step(void *cv, rc_impacts *im, const rc_model *m, const rc_data *d, double t_prev, double t,
-                        N_Vector ys)
+                        N_Vector y, N_Vector ys)
 {
     double tn = t, hu = 0.0;
     if (!rc_impacts_active(im) || CVodeGetCurrentTime(cv, &tn) != CV_SUCCESS ||
@@ -469,11 +493,8 @@ static void sample_step(void *cv, rc_impacts *im, const rc_model *m, const rc_da
         return;
     const double lo = fmax(t_prev, tn - hu);
     if (!(t > lo)) return;
-    for (int k = 1; k <= 4; k++) {
-        const double tk = k == 4 ? t : lo + 0.25 * k * (t - lo);
-        if (CVodeGetDky(cv, tk, 0, ys) != CV_SUCCESS) return;
-        rc_impacts_sample(im, m, d, tk, N_VGetArrayPointer(ys));
-    }
+    interp_ctx c = {cv, ys};
+    rc_impacts_step(im, m, d, lo, t, N_VGetArrayPointer(y), interp_last_step, &c);
 }
 
 /* Output times strictly before t (not within rounding of it) that a single
@@ -498,7 +519,7 @@ static rc_status outputs_before(void *cv, const rc_model *m, const rc_data *d, r
 }
 
 _Static_assert(RC_SURF_NEXT == RC_OUT_SURF_NPARAM, "surface parameters: model and file disagree");
-static const char *const surf_kind_name[] = {"", "PLANE", "SPHERE", "CYLINDER", "BOX"};
+static const char *const surf_kind_name[] = {"", "PLANE", "SPHERE", "CYLINDER", "BOX", "SEGMENTS"};
 
 static rc_status open_output(const rc_model *m, const char *path, const char *note, rc_output **o, rc_error *err)
 {
@@ -539,7 +560,7 @@ static rc_status open_output(const rc_model *m, const char *path, const char *no
         RC_RAISE(err, RC_ENOMEM, "out of memory");
     }
     for (int k = 0; k < m->nsurf; k++)
-        kinds[k] = m->surf_kind[k] >= RC_SURF_PLANE && m->surf_kind[k] <= RC_SURF_BOX ? surf_kind_name[m->surf_kind[k]]
+        kinds[k] = m->surf_kind[k] >= RC_SURF_PLANE && m->surf_kind[k] <= RC_SURF_SEG ? surf_kind_name[m->surf_kind[k]]
                                                                                     : "UNKNOWN";
     for (int i = 0; i < m->ninter; i++) {
         isurf[2 * i] = m->inter_sa[i];
@@ -554,6 +575,14 @@ static rc_status open_output(const rc_model *m, const char *path, const char *no
     meta.surf_radius = m->surf_r;
     meta.surf_param = m->surf_ext;
     meta.inter_surf = isurf;
+    if (m->surf_nadr && m->surf_sadr) {
+        meta.seg_nadr = m->surf_nadr;
+        meta.seg_sadr = m->surf_sadr;
+        meta.nseg_node = m->surf_nadr[m->nsurf];
+        meta.nseg = m->surf_sadr[m->nsurf];
+        meta.seg_node = m->surf_node;
+        meta.seg_conn = m->surf_seg;
+    }
     char evrec[160];
     const int full = rc_event_records(m);
     if (m->ev_state == 0)
@@ -763,7 +792,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
         st = RC_SET(err, RC_ENOMEM, "out of memory");
         goto done;
     }
-    run_ctx rc = {m, d, NULL, opt ? opt->stop : NULL, ""};
+    run_ctx rc = {.m = m, .d = d, .jsave = NULL, .jac_patched = 0, .stop = opt ? opt->stop : NULL, .cvmsg = ""};
     if (SUNContext_Create(NULL, &ctx)) {
         st = RC_SET(err, RC_ESOLVER, "SUNContext_Create failed");
         goto done;
@@ -774,6 +803,9 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
     f1 = N_VNew_Serial(m->ny, ctx);
     ytn = N_VNew_Serial(m->ny, ctx);
     ysamp = N_VNew_Serial(m->ny, ctx);
+    /* optimised vector operations, inherited by CVODE's clones of y (nvfast.h) */
+    N_Vector vecs[] = {y, av, f0, f1, ytn, ysamp};
+    for (size_t k = 0; k < sizeof vecs / sizeof vecs[0]; k++) rc_nvector_fast(vecs[k]);
     old_mode = calloc((size_t)m->ninter + 1, sizeof(int));
     old_branch = calloc((size_t)m->ninter + 1, sizeof(int));
     old_track = calloc((size_t)m->ninter + 1, sizeof(int));
@@ -922,7 +954,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
             break;
         }
         if (one_step && flag >= 0 && ++single > m->max_steps) flag = CV_TOO_MUCH_WORK;
-        if (flag >= 0) sample_step(cv, &im, m, d, t_prev, t, ysamp);
+        if (flag >= 0) sample_step(cv, &im, m, d, t_prev, t, y, ysamp);
         t_prev = t;
         if (flag < 0) {
             failure_advice(m, d, cv, flag, t, tout, rc.cvmsg, ytn, f0, reason, sizeof reason);
@@ -937,6 +969,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
             /* a time breakpoint: an imposed velocity ends; restart there */
             s.events++;
             if ((st = sink_event(&sink, t, "impvel_stop", "/IMPVEL", NULL, err))) goto done;
+            rc.jac_patched = 0; /* the imposed rows change: a whole new Jacobian */
             add_stats(cv, &s);
             CVCHECK(CVodeReInit(cv, t, y), "CVodeReInit");
             s.reinits++;
@@ -973,6 +1006,8 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
             memcpy(old_slip, d->inter_slip, (size_t)m->ninter * sizeof(int));
             int jumped = 0;
             int nev = rc_events_apply(m, d, t, yd, roots, ev, RC_MAX_EV, &jumped);
+            int cpl_ev = 0; /* a contact coupling's faces changed modes */
+            for (int k = 0; k < nev && k < RC_MAX_EV; k++) cpl_ev |= ev[k].inter < 0;
             s.events += nev;
             for (int k = 0; k < nev && k < RC_MAX_EV; k++) rc_impacts_event(&im, m, d, ev[k].inter, ev[k].kind, t, yd);
             for (int k = 0; k < nev && k < RC_MAX_EV; k++)
@@ -998,6 +1033,20 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
             nev += resolve_touching(m, d, t, yd, flook, &sink, &im, &s.events, &jumped, &st, err);
             if (st) goto done;
             if (nev > 0) CVCHECK(set_root_directions(m, d, cv, rootdir), "CVodeSetRootDirection");
+            /* the Jacobian blocks of the interfaces whose modes changed, at
+             * the event state (cb_linsys) */
+            if (nev > 0) {
+                int ok = 1, changed = 0;
+                for (int i = 0; ok && i < m->ninter; i++)
+                    if (d->inter_mode[i] != old_mode[i] || d->inter_branch[i] != old_branch[i] ||
+                        d->inter_track[i] != old_track[i] || d->inter_slip[i] != old_slip[i]) {
+                        changed = 1;
+                        ok = rc_jac_refresh_inter(m, d, i, yd, jsave) == 0;
+                    }
+                /* coupling blocks are not refreshed in place: a whole new
+                 * Jacobian when a contact coupling changed modes */
+                rc.jac_patched = ok && changed && !cpl_ev;
+            }
             if (refined > 0 || jumped || (nev > 0 && needs_restart(m, d, cv, old_mode, old_branch, old_track, old_slip, t, yd, ytn, f0, f1)) ||
                 root_on_zero(m, d, t, yd, gbuf)) {
                 add_stats(cv, &s);
@@ -1054,6 +1103,9 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
 
 done:
     if (cv) add_stats(cv, &s);
+    /* whole Jacobian evaluations (CVODE also counts the setups that used
+     * jsave with the blocks refreshed after an event, cb_linsys) */
+    if (d) s.jac_evals = d->n_jac;
     /* the impacts: in the file and, the first ones, in the statistics */
     rc_impacts_finish(&im);
     s.impacts = im.n;

@@ -15,7 +15,8 @@ int rc_impacts_init(rc_impacts *im, const rc_model *m)
     im->ninter = m->ninter;
     im->cur = malloc(((size_t)m->ninter + 1) * sizeof *im->cur);
     im->e0 = calloc((size_t)m->ninter + 1, sizeof *im->e0);
-    if (!im->cur || !im->e0) return -1;
+    im->h = calloc((size_t)m->ninter + 1, sizeof *im->h);
+    if (!im->cur || !im->e0 || !im->h) return -1;
     for (int i = 0; i < m->ninter; i++) im->cur[i] = -1;
     return 0;
 }
@@ -24,6 +25,7 @@ void rc_impacts_free(rc_impacts *im)
 {
     free(im->cur);
     free(im->e0);
+    free(im->h);
     free(im->row);
     memset(im, 0, sizeof *im);
 }
@@ -54,10 +56,29 @@ static void update(rc_impact *row, const rc_inter_report *r, int closed, double 
     }
 }
 
+/* Append a sample to an interface's history (the older one dropped). */
+static void hist_push(rc_impact_hist *h, double t, const rc_inter_report *r, int closed)
+{
+    if (h->n == 2) {
+        h->t[0] = h->t[1];
+        h->p[0] = h->p[1];
+        h->vn[0] = h->vn[1];
+        h->fn[0] = h->fn[1];
+        h->n = 1;
+    }
+    h->t[h->n] = t;
+    h->p[h->n] = r->p;
+    h->vn[h->n] = r->vn;
+    h->fn[h->n] = closed && r->fn > 0 ? r->fn : 0.0;
+    h->n++;
+}
+
 void rc_impacts_event(rc_impacts *im, const rc_model *m, const rc_data *d, int i, const char *kind, double t,
                       const double *y)
 {
     if (i < 0 || i >= im->ninter || !kind) return;
+    /* an event changes the law's branch: the fits do not reach across it */
+    im->h[i].n = 0;
     int k = im->cur[i];
     if (!strcmp(kind, "contact_close")) {
         rc_inter_report r;
@@ -78,6 +99,7 @@ void rc_impacts_event(rc_impacts *im, const rc_model *m, const rc_data *d, int i
             im->row[k].t_open = NAN; /* the force acts again */
         }
         update(&im->row[k], &r, d->inter_mode[i] == RC_MODE_CLOSED, t);
+        hist_push(&im->h[i], t, &r, d->inter_mode[i] == RC_MODE_CLOSED);
         return;
     }
     if (k < 0) return;
@@ -105,13 +127,81 @@ int rc_impacts_active(const rc_impacts *im)
     return 0;
 }
 
-void rc_impacts_sample(rc_impacts *im, const rc_model *m, const rc_data *d, double t, const double *y)
+/* The root in (0, 1) of the derivative of the cubic Hermite fit on [0, 1]
+ * of values p0, p1 and scaled slopes m0 > 0 > m1 (exactly one), or NaN. */
+static double hermite_max(double p0, double p1, double m0, double m1)
+{
+    const double a = 6.0 * (p0 - p1) + 3.0 * (m0 + m1), b = -6.0 * (p0 - p1) - 4.0 * m0 - 2.0 * m1, c = m0;
+    double s1 = NAN, s2 = NAN;
+    if (fabs(a) <= 1e-14 * (fabs(b) + fabs(c))) {
+        if (b != 0.0) s1 = -c / b;
+    } else {
+        const double disc = b * b - 4.0 * a * c;
+        if (disc < 0.0) return NAN;
+        const double q = -0.5 * (b + copysign(sqrt(disc), b));
+        s1 = q / a;
+        if (q != 0.0) s2 = c / q;
+    }
+    if (s1 > 0.0 && s1 < 1.0) return s1;
+    if (s2 > 0.0 && s2 < 1.0) return s2;
+    return NAN;
+}
+
+/* One more sample of interface i at ts from the interpolant. */
+static void refine(rc_impacts *im, const rc_model *m, const rc_data *d, int i, double ts, rc_interp_fn interp,
+                   void *ctx)
+{
+    const double *yi = NULL;
+    if (!interp || interp(ctx, ts, &yi) != 0 || !yi) return;
+    rc_inter_report r;
+    report(m, d, i, ts, yi, &r);
+    update(&im->row[im->cur[i]], &r, d->inter_mode[i] == RC_MODE_CLOSED, ts);
+}
+
+void rc_impacts_step(rc_impacts *im, const rc_model *m, const rc_data *d, double lo, double t, const double *y,
+                     rc_interp_fn interp, void *ctx)
 {
     for (int i = 0; i < im->ninter; i++) {
         if (im->cur[i] < 0) continue;
+        const int closed = d->inter_mode[i] == RC_MODE_CLOSED;
         rc_inter_report r;
         report(m, d, i, t, y, &r);
-        update(&im->row[im->cur[i]], &r, d->inter_mode[i] == RC_MODE_CLOSED, t);
+        rc_impact *row = &im->row[im->cur[i]];
+        update(row, &r, closed, t);
+        rc_impact_hist *h = &im->h[i];
+        const int last = h->n - 1;
+        if (last >= 0 && t > h->t[last]) {
+            const double t0 = h->t[last], dt = t - t0, from = fmax(lo, t0);
+            /* P rises at the last sample and falls now: its maximum is
+             * inside, at the maximum of the Hermite fit */
+            if (h->vn[last] > 0.0 && r.vn < 0.0) {
+                const double s = hermite_max(h->p[last], r.p, h->vn[last] * dt, r.vn * dt);
+                const double ts = t0 + s * dt;
+                if (ts > from && ts < t) refine(im, m, d, i, ts, interp, ctx);
+            }
+            /* the force rose to the last sample and falls now: its maximum
+             * is near the vertex of the parabola through the last three */
+            const double f1 = closed && r.fn > 0 ? r.fn : 0.0;
+            if (closed && h->n == 2 && h->fn[1] >= h->fn[0] && h->fn[1] > f1 && h->t[1] > h->t[0]) {
+                const double ta = h->t[0], tb = h->t[1], fa = h->fn[0], fb = h->fn[1];
+                const double dab = (fb - fa) / (tb - ta), dbc = (f1 - fb) / (t - tb), dabc = (dbc - dab) / (t - ta);
+                if (dabc < 0.0) {
+                    const double ts = 0.5 * (ta + tb) - dab / (2.0 * dabc);
+                    if (ts > from && ts < t) {
+                        refine(im, m, d, i, ts, interp, ctx);
+                    } else if (ts > ta && ts < t) {
+                        /* in the previous step, which the interpolant no
+                         * longer covers: the parabola's value */
+                        const double fv = fa + dab * (ts - ta) + dabc * (ts - ta) * (ts - tb);
+                        if (isfinite(fv) && fv > row->fn_max) {
+                            row->fn_max = fv;
+                            row->t_fn_max = ts;
+                        }
+                    }
+                }
+            }
+        }
+        hist_push(h, t, &r, closed);
     }
 }
 

@@ -9,10 +9,23 @@
 
 #include "model/model.h"
 
+/* The last two samples of an interface's impact in progress (step ends and
+ * events): time [s], penetration P [m], its rate dP/dt [m/s], normal force
+ * [N]; [0] the older. */
+typedef struct rc_impact_hist {
+    int n; /* samples held, 0..2 */
+    double t[2], p[2], vn[2], fn[2];
+} rc_impact_hist;
+
+/* The state at time t from the backend's interpolant of its last step
+ * (0), or -1 when t is outside it. */
+typedef int (*rc_interp_fn)(void *ctx, double t, const double **y);
+
 typedef struct rc_impacts {
     int ninter;
     int *cur;       /* [ninter] row of the impact in progress, -1: none */
     double *e0;     /* [ninter] dissipated energy when it closed [J] */
+    rc_impact_hist *h; /* [ninter] */
     rc_impact *row; /* [n] */
     int n, cap;
 } rc_impacts;
@@ -25,8 +38,14 @@ void rc_impacts_event(rc_impacts *im, const rc_model *m, const rc_data *d, int i
                       const double *y);
 /* Is any impact in progress (the backend then samples every step)? */
 int rc_impacts_active(const rc_impacts *im);
-/* A sample of the state at t: updates the maxima of the impacts in progress. */
-void rc_impacts_sample(rc_impacts *im, const rc_model *m, const rc_data *d, double t, const double *y);
+/* The end of an integrator step at t with the state y: updates the maxima of
+ * the impacts in progress from the sample at t and, where the samples
+ * bracket a maximum inside the step, from one more sample at the maximum of
+ * a local fit (a cubic Hermite fit of P on its rate at the step's ends; a
+ * parabola through the last three force samples), taken from the
+ * interpolant `interp`, which covers [lo, t]. */
+void rc_impacts_step(rc_impacts *im, const rc_model *m, const rc_data *d, double lo, double t, const double *y,
+                     rc_interp_fn interp, void *ctx);
 /* Close the table at the end of the run (impacts in progress stay open:
  * open time and separation speed NaN). */
 void rc_impacts_finish(rc_impacts *im);

@@ -73,7 +73,7 @@ class Deck:
     def type6(self, iid, s1, s2, fct_ld, gap=0.0, tstart=None, tstop=None, visc=None,
               ascalex=None, fscaleld=None, iform=0, stiff=None, fct_ul=0, fscaleul=None,
               inacti=0, icor=0, fct_dv=0, fct_df=0, fscalev=None, ascalef=None, ascalev=None,
-              sfric=None, fric=None, fct_ff=0, fct_fv=0, e_target=None, title="contact"):
+              sfric=None, fric=None, fct_ff=0, fct_fv=0, e_target=None, v_imp=None, title="contact"):
         self.add(f"/INTER/TYPE6/{iid}",
                  line(("i", s1), ("i", s2)),
                  line(("r", sfric), ("r", fric), ("r", gap), ("r", tstart), ("r", tstop)),
@@ -81,7 +81,7 @@ class Deck:
                       ("r", ascalef), ("r", ascalev)),
                  line(("i", fct_ld), ("i", iform), ("r", ascalex), ("r", fscaleld), ("i", icor)),
                  line(("i", fct_ul), ("i", None), ("r", stiff), ("r", fscaleul)),
-                 line(("r", visc), ("i", fct_dv), ("i", fct_df), ("r", fscalev), ("r", e_target)), title=title)
+                 line(("r", visc), ("i", fct_dv), ("i", fct_df), ("r", fscalev), ("r", e_target), ("r", v_imp)), title=title)
 
     def inivel(self, iid, v, grnod, rot=False):
         self.add(f"/INIVEL/{'ROT' if rot else 'TRA'}/{iid}",
@@ -160,14 +160,16 @@ class Deck:
 
     def power(self, iid, s1, s2, k=None, m1=None, c=None, m2=None, m3=None, fct_stiff=0, fct_damp=0, ispline=0,
               irdf=0, rdf=None, dreg=None, vreg=None, tstart=None, tstop=None, mus=None, vs=None, mud=None,
-              vd=None, fmax=None, kt=None, title="power-law contact"):
+              vd=None, fmax=None, kt=None, e_target=None, v_imp=None, title="power-law contact"):
         """/INTER/POWER (docs/case-format.md): None leaves a field blank (its default)."""
         lines = [line(("i", s1), ("i", s2), ("i", fct_stiff), ("i", fct_damp), ("i", ispline), ("i", irdf)),
                  line(("r", k), ("r", m1), ("r", c), ("r", m2), ("r", m3)),
                  line(("r", rdf), ("r", dreg), ("r", vreg), ("r", tstart), ("r", tstop)),
                  line(("r", mus), ("r", vs), ("r", mud), ("r", vd), ("r", fmax))]
-        if kt is not None:
+        if kt is not None or e_target is not None or v_imp is not None:
             lines.append(line(("r", kt)))
+        if e_target is not None or v_imp is not None:
+            lines.append(line(("r", e_target), ("r", v_imp)))
         self.add(f"/INTER/POWER/{iid}", *lines, title=title)
 
     def cylinder(self, sid, body, centre, axis, radius, length, ends=0, cmode=0, title="cylinder"):
@@ -198,6 +200,16 @@ class Deck:
         1 always, 2 never); None leaves the field out (default 0)."""
         fields = [("r", tend), ("r", dtout)] + ([("i", ev_state)] if ev_state is not None else [])
         self.add("/RUN", line(*fields))
+
+    def contact_coupling(self, cid, s1, s2, d0, k1=None, k2=None, mu=None, kt=None, iside=0, iest=0, vimp=None,
+                         dmin=None, zeta=None, area=None, title="contact coupling"):
+        """/COUPLING/CONTACT: the body's segment surface s1 against the opposing surface s2; effective
+        range d0, k1, k2, mu, k_t; Iest = 1: V_imp, d_min, zeta, A on line 3."""
+        lines = [line(("i", s1), ("i", s2), ("i", iside), ("i", iest)),
+                 line(("r", d0), ("r", k1), ("r", k2), ("r", mu), ("r", kt))]
+        if iest:
+            lines.append(line(("r", vimp), ("r", dmin), ("r", zeta), ("r", area)))
+        self.add(f"/COUPLING/CONTACT/{cid}", *lines, title=title)
 
     def solver(self, rtol=1e-6, atol_pos=1e-9, atol_quat=1e-9, atol_vel=1e-6, atol_omega=1e-6,
                atol_energy=1e-6, max_order=5, max_steps=100000, hmax=0.0, h0=0.0):

@@ -8,7 +8,7 @@
  *   cards_surfaces.c    /SURF/PLANE /SURF/ELLIPS /SURF/CYL /SURF/BOX /SURF/SEG /SURF/PART
  *   cards_interfaces.c  /INTER/TYPE6 /INTER/POWER
  *   cards_friction.c    /FRICTION /FRIC_ORIENT
- *   cards_couplings.c   /COUPLING/SPRING /COUPLING/CATENARY
+ *   cards_couplings.c   /COUPLING/SPRING /COUPLING/CATENARY /COUPLING/CONTACT
  *   cards_loads.c       /FUNCT /INIVEL /GRAV /BCS /IMPVEL
  *   cards_run.c         /BEGIN /RUN /SOLVER, deck-level defaults and checks
  */
@@ -28,7 +28,7 @@ typedef enum {
     RC_CARD_TYPE6, RC_CARD_FUNCT, RC_CARD_INIVEL, RC_CARD_GRAV, RC_CARD_BCS, RC_CARD_RUN,
     RC_CARD_SOLVER, RC_CARD_CPL_SPRING, RC_CARD_CPL_CATENARY, RC_CARD_PART, RC_CARD_GRPART,
     RC_CARD_FRICTION, RC_CARD_FRIC_ORIENT, RC_CARD_POWER, RC_CARD_CYL, RC_CARD_BOX, RC_CARD_IMPVEL,
-    RC_CARD_UNIT, RC_CARD_SEG, RC_CARD_SURFPART
+    RC_CARD_UNIT, RC_CARD_SEG, RC_CARD_SURFPART, RC_CARD_CPL_CONTACT
 } rc_card_kind;
 
 /* Supported cards; a family (kw with a sub) lists each subtype. */
@@ -50,6 +50,7 @@ static const struct {
     {"SURF", "BOX", RC_CARD_BOX},      {"IMPVEL", NULL, RC_CARD_IMPVEL},
     {"UNIT", NULL, RC_CARD_UNIT},
     {"SURF", "SEG", RC_CARD_SEG},      {"SURF", "PART", RC_CARD_SURFPART},
+    {"COUPLING", "CONTACT", RC_CARD_CPL_CONTACT},
 };
 
 /* Radioss cards without meaning for rigid bodies: skipped with a warning. */
@@ -120,6 +121,7 @@ static rc_status rc_card_call(rc_reader *rd, const rc_block *b, rc_card_kind kin
     case RC_CARD_SOLVER: return rc_card_solver(rd, b);
     case RC_CARD_CPL_SPRING: return rc_card_coupling_spring(rd, b);
     case RC_CARD_CPL_CATENARY: return rc_card_coupling_catenary(rd, b);
+    case RC_CARD_CPL_CONTACT: return rc_card_coupling_contact(rd, b);
     case RC_CARD_PART: return rc_card_part(rd, b);
     case RC_CARD_GRPART: return rc_card_grpart(rd, b);
     case RC_CARD_FRICTION: return rc_card_friction(rd, b);

@@ -153,3 +153,74 @@ rc_status rc_card_coupling_catenary(rc_reader *rd, const rc_block *b)
     if ((st = rc_parse_line(rd, b, &b->lines[4], l4, RC_NF(l4)))) return st;
     return rc_note_id(rd, RC_IDK_COUPLING, k->id, &k->loc, b->hdr->text);
 }
+
+/* /COUPLING/CONTACT/cpl_ID (STAR-CCM+ contact coupling): title;
+ *   surf_ID1 surf_ID2 Iside Iest; d0 k1 k2 mu k_t; [V_imp d_min zeta A] */
+rc_status rc_card_coupling_contact(rc_reader *rd, const rc_block *b)
+{
+    rc_case *c = rd->c;
+    rc_status st;
+    int nd;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "cpl_ID", "/COUPLING/CONTACT/cpl_ID"))) return st;
+    RC_GROW(rd, c->coupling, rd->capcoupling, c->ncoupling);
+    rc_case_coupling *k = &c->coupling[c->ncoupling++];
+    memset(k, 0, sizeof *k);
+    k->id = b->id;
+    k->kind = RC_CASE_CPL_CONTACT;
+    k->loc = b->hdr->loc;
+    for (int i = 0; i < 6; i++) k->line_loc[i] = k->loc;
+    if ((st = rc_card_lines(rd, b, k->title, 2, 3, "surf_ID1 surf_ID2 Iside Iest, d0 k1 k2 mu k_t[, V_imp d_min zeta A]",
+                            &nd)))
+        return st;
+    for (int i = 0; i < nd; i++) k->line_loc[i] = b->lines[i + 1].loc;
+    rc_field l1[] = {RC_F_INT("surf_ID1", &k->surf[0], 0, RC_FF_POS), RC_F_INT("surf_ID2", &k->surf[1], 0, RC_FF_POS),
+                     RC_F_SET("Iside", &k->iside, 0, 0, 0x7u, 0x7u, NULL),
+                     RC_F_SET("Iest", &k->iest, 0, 0, 0x3u, 0x3u, NULL)};
+    rc_field l2[] = {RC_F_REALD("d0", &k->d0, 0, RC_FF_POS, RC_D_L), RC_F_REALD("k1", &k->k1, 0, RC_FF_NONNEG, RC_D_K3),
+                     RC_F_REALD("k2", &k->k2, 0, RC_FF_NONNEG, RC_DIM(1, -2, -1)),
+                     RC_F_REALD("mu", &k->mu, 0, RC_FF_NONNEG, RC_D_NONE),
+                     RC_F_REALD("k_t", &k->kt, 0, RC_FF_NONNEG, RC_DIM(0, -1, 1))};
+    rc_field l3[] = {RC_F_REALD("V_imp", &k->vimp, 0, RC_FF_NONNEG, RC_D_V),
+                     RC_F_REALD("d_min", &k->dmin, 0, RC_FF_NONNEG, RC_D_L),
+                     RC_F_REALD("zeta", &k->zeta, 0, RC_FF_NONNEG, RC_D_NONE),
+                     RC_F_REALD("A", &k->area, 0, RC_FF_NONNEG, RC_D_AREA)};
+    static const rc_line blank = {"", 0, {NULL, 0}};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
+    if ((st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
+    if ((st = rc_parse_line(rd, b, nd >= 3 ? &b->lines[3] : &blank, l3, RC_NF(l3)))) return st;
+    if (k->surf[0] == k->surf[1])
+        return rc_case_fail(rd, &k->line_loc[0], b->name, "surf_ID2",
+                            "expected a surface other than surf_ID1 = %d (the opposing boundary), got %d", k->surf[0],
+                            k->surf[1]);
+    if (k->mu > 0 && !(k->kt > 0))
+        return rc_case_fail(rd, &k->line_loc[1], b->name, "k_t",
+                            "friction (mu > 0) needs the tanh coefficient k_t > 0 [s/m], got %s", l2[4].got);
+    if (k->iest == 0) {
+        if (!(k->k1 > 0))
+            return rc_case_fail(rd, &k->line_loc[1], b->name, "k1",
+                                "expected the elastic coefficient k1 > 0 [N/m^3] (or Iest = 1 to estimate it), got %s",
+                                l2[1].got);
+        if (nd >= 3 && (!l3[0].blank || !l3[1].blank || !l3[2].blank || !l3[3].blank))
+            return rc_case_fail(rd, &k->line_loc[2], b->name, "V_imp",
+                                "the estimator line belongs to Iest = 1; with Iest = 0 expected it blank or absent");
+    } else {
+        if (!l2[1].blank || !l2[2].blank)
+            return rc_case_fail(rd, &k->line_loc[1], b->name, l2[1].blank ? "k2" : "k1",
+                                "with Iest = 1 k1 and k2 are estimated (line 3); expected the field blank, got %s",
+                                l2[1].blank ? l2[2].got : l2[1].got);
+        if (nd < 3)
+            return rc_case_fail(rd, &k->loc, b->name, "V_imp",
+                                "Iest = 1 needs line 3 (V_imp d_min zeta A), found %d data lines", nd);
+        if (!(k->vimp > 0))
+            return rc_case_fail(rd, &k->line_loc[2], b->name, "V_imp",
+                                "expected the normal impact speed V_imp > 0 [m/s], got %s", l3[0].got);
+        if (!(k->dmin < k->d0))
+            return rc_case_fail(rd, &k->line_loc[2], b->name, "d_min",
+                                "expected the minimum distance d_min below the effective range d0 = %.9g [m], got %s",
+                                k->d0, l3[1].got);
+        if (!(k->area > 0))
+            return rc_case_fail(rd, &k->line_loc[2], b->name, "A",
+                                "expected the estimated contact area A > 0 [m^2], got %s", l3[3].got);
+    }
+    return rc_note_id(rd, RC_IDK_COUPLING, k->id, &k->loc, b->hdr->text);
+}

@@ -93,7 +93,8 @@ rc_status rc_card_type6(rc_reader *rd, const rc_block *b)
         RC_F_INT("fct_IDdf", &t->fct_df, 0, RC_FF_NONNEG),
         RC_F_REALD("Fscalev", &t->fscalev, 1, RC_FF_ZDEF, RC_D_F),
         /* ricochet's extension: a restitution asked instead of Visc */
-        RC_F_REALD("e_target", &t->e_target, 0, RC_FF_NONNEG, RC_D_NONE)};
+        RC_F_REALD("e_target", &t->e_target, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("V_imp", &t->v_imp, 0, RC_FF_NONNEG, RC_D_V)};
     /* older layouts: the lines as their versions wrote them (the fields they
      * lack keep their defaults) */
     rc_field o2[] = {
@@ -177,7 +178,8 @@ rc_status rc_card_type6(rc_reader *rd, const rc_block *b)
  *   K m1 C m2 m3;
  *   [RDF Dreg Vreg Tstart Tstop;
  *   [mu_s v_s mu_d v_d f_max;
- *   [Kt]]] */
+ *   [Kt;
+ *   [e_target V_imp]]]] */
 rc_status rc_card_power(rc_reader *rd, const rc_block *b)
 {
     rc_case *c = rd->c;
@@ -188,10 +190,10 @@ rc_status rc_card_power(rc_reader *rd, const rc_block *b)
     rc_case_power *p = &c->power[c->npower++];
     p->id = b->id;
     p->loc = b->hdr->loc;
-    for (int k = 0; k < 5; k++) p->line_loc[k] = p->loc;
-    if ((st = rc_card_lines(rd, b, p->title, 2, 5,
+    for (int k = 0; k < 6; k++) p->line_loc[k] = p->loc;
+    if ((st = rc_card_lines(rd, b, p->title, 2, 6,
                             "surf_ID1 surf_ID2 fct_stiff fct_damp Ispline Irdf, K m1 C m2 m3[, RDF Dreg "
-                            "Vreg Tstart Tstop[, mu_s v_s mu_d v_d f_max[, Kt]]]",
+                            "Vreg Tstart Tstop[, mu_s v_s mu_d v_d f_max[, Kt[, e_target V_imp]]]]",
                             &nd)))
         return st;
 
@@ -213,11 +215,13 @@ rc_status rc_card_power(rc_reader *rd, const rc_block *b)
                      RC_F_REALD("mu_d", &p->mud, 0, RC_FF_NONNEG, RC_D_NONE), RC_F_REALD("v_d", &p->vd, 0, RC_FF_NONNEG, RC_D_V),
                      RC_F_REALD("f_max", &p->fmax, 0, RC_FF_NONNEG, RC_D_F)};
     rc_field l5[] = {RC_F_REALD("Kt", &p->kt, 0, RC_FF_NONNEG, RC_D_K)};
-    rc_field *lines[5] = {l1, l2, l3, l4, l5};
-    const int nf[5] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5)};
+    rc_field l6[] = {RC_F_REALD("e_target", &p->e_target, 0, RC_FF_NONNEG, RC_D_NONE),
+                     RC_F_REALD("V_imp", &p->v_imp, 0, RC_FF_NONNEG, RC_D_V)};
+    rc_field *lines[6] = {l1, l2, l3, l4, l5, l6};
+    const int nf[6] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5), RC_NF(l6)};
     /* absent optional lines take their defaults, like blank ones */
     static const rc_line blank = {"", 0, {NULL, 0}};
-    for (int k = 0; k < 5; k++) {
+    for (int k = 0; k < 6; k++) {
         const rc_line *ln = k < nd ? &b->lines[k + 1] : &blank;
         if (k < nd) p->line_loc[k] = ln->loc;
         if ((st = rc_parse_line(rd, b, ln, lines[k], nf[k]))) return st;

@@ -139,6 +139,7 @@ typedef struct rc_case_type6 {
     double stiff, fscaleul;                   /* line 5: [N/m] [N] */
     double visc;                              /* line 6: [N s/m] */
     double e_target;                          /* line 6, ricochet: restitution asked [-]; 0: none */
+    double v_imp;                             /* line 6, ricochet: impact speed of e_target [m/s]; 0: derived */
     int fct_dv, fct_df;                       /* line 6 */
     double fscalev;                           /* line 6: [N] */
     rc_loc loc;

@@ -8,7 +8,7 @@
 
 #include "case/case.h"
 
-typedef enum { RC_CASE_CPL_SPRING = 1, RC_CASE_CPL_CATENARY = 2 } rc_case_cpl_kind;
+typedef enum { RC_CASE_CPL_SPRING = 1, RC_CASE_CPL_CATENARY = 2, RC_CASE_CPL_CONTACT = 3 } rc_case_cpl_kind;
 
 /* /COUPLING/SPRING/cpl_ID and /COUPLING/CATENARY/cpl_ID. */
 typedef struct rc_case_coupling {
@@ -30,6 +30,15 @@ typedef struct rc_case_coupling {
     double lambda0;    /* mass per unstretched length [kg/m]                 */
     double leq;        /* unstretched length [m]                             */
     double d;          /* stiffness of the whole line [N/m]; EA = D L_eq    */
+    /* contact (/COUPLING/CONTACT, STAR-CCM+ contact coupling) */
+    int surf[2];       /* surf_ID1 (segment surface of the body), surf_ID2 (opposing) */
+    int iside;         /* 0 auto, 1 outside, 2 inside the opposing surface    */
+    int iest;          /* 0: k1, k2 given; 1: estimated (line 3)             */
+    double d0;         /* effective range [m]                               */
+    double k1, k2;     /* elastic [N/m^3] and damping [N s/m^3] coefficients */
+    double mu, kt;     /* friction coefficient [-], tanh coefficient [s/m]   */
+    double vimp, dmin, zeta, area; /* estimator: impact speed [m/s], minimum
+                          distance [m], damping factor [-], contact area [m^2] */
     rc_loc loc;
     rc_loc line_loc[6]; /* each data line (unread lines: the header's)     */
 } rc_case_coupling;

@@ -304,6 +304,7 @@ rc_status rc_card_fricorient(rc_reader *rd, const rc_block *b);
 /* Couplings (cards_couplings.c). */
 rc_status rc_card_coupling_spring(rc_reader *rd, const rc_block *b);
 rc_status rc_card_coupling_catenary(rc_reader *rd, const rc_block *b);
+rc_status rc_card_coupling_contact(rc_reader *rd, const rc_block *b);
 
 /* Curves, initial and boundary conditions, loads (cards_loads.c). */
 rc_status rc_card_funct(rc_reader *rd, const rc_block *b);

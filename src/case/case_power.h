@@ -30,8 +30,10 @@ typedef struct rc_case_power {
     double fmax;               /* line 4: maximum friction force, 0: none [N]   */
     double kt;                 /* line 5: stiffness for an overriding incremental
                                   /FRICTION [N/m], 0: none                      */
+    double e_target;           /* line 6: restitution asked, C derived [-]; 0: none */
+    double v_imp;              /* line 6: impact speed of e_target [m/s]; 0: derived */
     rc_loc loc;
-    rc_loc line_loc[5];        /* each data line (absent: the header's)         */
+    rc_loc line_loc[6];        /* each data line (absent: the header's)         */
 } rc_case_power;
 
 /* /IMPVEL/impvel_ID: velocity component Dir of the bodies of grnod_ID =

@@ -9,6 +9,7 @@
 
 #include "model/imposed.h"
 #include "model/model.h"
+#include "model/coupling_contact.h"
 
 #define T double
 #define RE(x) (x)
@@ -147,6 +148,8 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
             gi[RC_ROOT_TRK_B] = r.offset;
         }
     }
+    /* contact couplings: after the interfaces' roots (contact_rhs.inc) */
+    if (rc_cpl_nroots(m) > 0) rc_cpl_roots(m, d, t, y, g + RC_ROOTS_PER_INTER * m->ninter);
 }
 
 #include "coupling_rhs.inc"

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "model/coupling.h"
+#include "model/coupling_contact.h"
 #include "engine/events.h"
 #include "model/power.h"
 
@@ -213,6 +214,7 @@ void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y)
         d->inter_mode[i] = RC_MODE_INACTIVE;
         if (active) classify(m, d, i, t, y, &changed);
     }
+    rc_cpl_modes_init(m, d, t, y); /* contact coupling faces */
 }
 
 /* Activation window and Inacti tracking; returns the event kind or NULL. */
@@ -407,6 +409,19 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
             }
             n++;
         }
+    }
+    /* contact coupling faces (contact_rhs.inc): their roots follow the
+     * interfaces'; an event names the coupling (inter = -1 - k) */
+    if (rc_cpl_nroots(m) > 0) {
+        const char *kinds[RC_CPL_MAX_EV];
+        int cpls[RC_CPL_MAX_EV];
+        const int nc = rc_cpl_events(m, d, t, y, roots + RC_ROOTS_PER_INTER * m->ninter, kinds, cpls, RC_CPL_MAX_EV,
+                                     restart);
+        for (int j = 0; j < nc && j < RC_CPL_MAX_EV; j++, n++)
+            if (n < max_ev) {
+                ev[n].inter = -1 - cpls[j];
+                ev[n].kind = kinds[j];
+            }
     }
     return n;
 }

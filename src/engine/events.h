@@ -4,8 +4,11 @@
 
 #include "model/model.h"
 
+/* Events of the contact couplings reported per call at most. */
+#define RC_CPL_MAX_EV 32
+
 typedef struct rc_event {
-    int inter;        /* interface index */
+    int inter;        /* interface index; < 0: coupling -1 - inter */
     const char *kind; /* "contact_close", "contact_open", "inter_start", "inter_stop" */
 } rc_event;
 

@@ -8,11 +8,17 @@
 #include <stdlib.h>
 
 #include "model/coupling.h"
+#include "model/coupling_contact.h"
 #include "model/imposed.h"
 #include "model/model.h"
 #include "model/power.h"
+#include "engine/restitution.h"
 
 #define RC_PI 3.14159265358979323846
+/* CVODE steps per impact at the default tolerances, measured on the
+ * restitution validation problems (t6_restitution: 124 steps, pw_restitution:
+ * 217, cc_stop: 267 for an impact and free flight) [-]. */
+#define RC_STEPS_PER_IMPACT 150.0
 
 /* Restitution of a linear spring-dashpot contact that cannot pull (the
  * force k x + c x' clipped at zero) at damping ratio zeta >= 0, and the
@@ -89,21 +95,40 @@ static void print_guidance(const rc_model *m, FILE *f)
         const double zeta = c / (2.0 * sqrt(k * mr));
         fprintf(f, "  %-18s m_eff %.4g kg, k %.4g N/m%s, natural frequency %.4g Hz, damping ratio of Visc %.4g\n", "", mr, k,
                 lin ? "" : " (at p_s, nonlinear law)", w / (2.0 * RC_PI), zeta);
-        if (m->inter_etarget[i] > 0)
-            fprintf(f, "  %-18s restitution asked %.9g: Visc derived = %.9g N s/m\n", "", m->inter_etarget[i], c);
-        const int curves = m->inter_law[i] == RC_LAW_TYPE6 && (m->inter_fct_dv[i] >= 0 || m->inter_iform[i] != 0);
-        double tau = NAN, e = NAN;
+        const int curves = m->inter_law[i] == RC_LAW_TYPE6 &&
+                           (m->inter_fct_dv[i] >= 0 || m->inter_fct_df[i] >= 0 || m->inter_iform[i] != 0);
+        double tau = NAN, e = NAN, tcn = NAN;
         if (lin && !curves) e = rc_linear_restitution(zeta, &tau);
-        const double tc = isfinite(tau) ? tau / w : RC_PI / w;
-        if (isfinite(e))
+        /* other laws: the single-contact ODE at the impact speed */
+        int given = 0;
+        const double vimp = rc_restitution_speed(m, i, &given);
+        const char *why = NULL;
+        const int ode = !isfinite(e) && rc_restitution_supported(m, i, &why) && vimp > 0;
+        const double damp = m->inter_law[i] == RC_LAW_POWER ? m->inter_pw[i].c : m->inter_visc[i];
+        if (ode) e = rc_restitution_solve(m, i, mr, vimp, damp, &tcn);
+        if (m->inter_etarget[i] > 0)
+            fprintf(f, "  %-18s restitution asked %.9g%s: %s derived = %.9g %s, predicted %.9g\n", "", m->inter_etarget[i],
+                    ode ? (given ? " at V_imp" : " at the derived impact speed") : " (any impact speed, linear law)",
+                    m->inter_law[i] == RC_LAW_POWER ? "C" : "Visc", damp,
+                    m->inter_law[i] == RC_LAW_POWER ? "N (s/m)^m2/m^m3" : "N s/m", e);
+        const double tc = isfinite(tau) ? tau / w : isfinite(tcn) ? tcn : RC_PI / w;
+        if (isfinite(e) && !ode)
             fprintf(f, "  %-18s predicted restitution %.6g, contact time %.4g s (linear law, force >= 0, no other load)\n", "", e, tc);
+        else if (isfinite(e))
+            fprintf(f, "  %-18s predicted restitution %.6g, contact time %.4g s at impact speed %.6g m/s (%s; "
+                    "single-contact ODE, force >= 0, no other load)\n", "", e, tc, vimp, given ? "V_imp" : "derived from t = 0");
         else
             fprintf(f, "  %-18s contact time ~%.4g s (pi/omega; restitution not predicted: %s)\n", "", tc,
-                    lin ? "damping curves or hysteresis" : "nonlinear law");
+                    why ? why : vimp > 0 ? "the ODE failed" : "no impact speed (give V_imp)");
         const double dt_exp = 2.0 / w; /* central differences, undamped */
         const double nrec = tc / m->dtout;
         fprintf(f, "  %-18s explicit stable step %.4g s; output every %.4g s gives %.3g records per contact%s\n", "", dt_exp,
                 m->dtout, nrec, nrec < 10 ? " (WARNING: peaks between records are missed; lower /RUN Dt_out)" : "");
+        /* a rough cost: CVODE steps per impact, measured on the validation
+         * problems at the default tolerances (a contact held through the
+         * run, resting, needs far fewer once the BDF order has risen) */
+        fprintf(f, "  %-18s cost: about %.0f steps per impact (measured at the default tolerances); %.3g impacts of "
+                "this contact fit in the run's %.4g s\n", "", RC_STEPS_PER_IMPACT, m->tend / tc, m->tend);
     }
     if (m->ninter > 20) fprintf(f, "  ... %d more\n", m->ninter - 20);
     free(y);
@@ -200,7 +225,9 @@ void rc_cpl_print_summary(const rc_model *m, FILE *f)
         rc_cpl_report r;
         const int ok = y && rc_cpl_report_eval(m, NULL, k, 0.0, y, &r) == 0;
         fprintf(f, "  %-22s bodies %d-%d, ", p->name[k], ids[0], ids[1]);
-        if (p->kind[k] == RC_CPL_SPRING)
+        if (p->kind[k] == RC_CPL_CONTACT)
+            rc_cpl_contact_print(m, k, ok ? &r : NULL, f);
+        else if (p->kind[k] == RC_CPL_SPRING)
             fprintf(f, "%s, x0 %.5g m, k_d %.5g N s/m; at t = 0: length %.5g m, force %.5g N\n",
                     form_name[p->form[k]], p->x0[k], p->kd[k], ok ? r.length : NAN, ok ? r.force : NAN);
         else

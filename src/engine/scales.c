@@ -39,6 +39,7 @@
 #include "model/model.h"
 #include "base/progress.h"
 #include "model/power.h"
+#include "engine/restitution.h"
 
 /* A body without a scaled contact: positions at rtol RC_TOL_FALLBACK_LFRAC
  * L (L its size), velocities at rtol RC_TOL_FALLBACK_LFRAC v_model, both
@@ -446,16 +447,6 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         ebody = fmax(ebody, m->body_mass[b] * gmax * size[b]);
     }
     m->escale = escale > 0 ? escale : ebody;
-    /* a restitution asked (TYPE6 e_target): the Visc that gives it */
-    for (int i = 0; i < n; i++) {
-        if (!(m->inter_etarget[i] > 0)) continue;
-        rc_status st = derive_visc(m, i, err);
-        if (st) {
-            free(y);
-            free(size);
-            return st;
-        }
-    }
     /* stick damping of the incremental friction: the stick spring critically
      * damped on the pair's reduced mass, so that a body stopped on a
      * sticking contact comes to rest instead of ringing */
@@ -473,6 +464,20 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         const int ok = isfinite(m->inter_pscale[i]);
         if (pw->dreg == 0) pw->dreg = ok ? RC_DREG_FRAC * m->inter_pscale[i] : 1e-6;
         if (pw->vreg == 0) pw->vreg = ok ? RC_DREG_FRAC * m->inter_vscale[i] : 1e-6;
+    }
+    /* a restitution asked (e_target): the damping that gives it, in closed
+     * form for a linear TYPE6 load curve, else by the single-contact ODE
+     * (restitution.c; after the regularisation, which it includes) */
+    for (int i = 0; i < n; i++) {
+        if (!(m->inter_etarget[i] > 0)) continue;
+        double k;
+        const int closed_form = m->inter_law[i] == RC_LAW_TYPE6 && m->inter_fct_df[i] < 0 && rc_type6_linear_slope(m, i, &k);
+        rc_status st = closed_form ? derive_visc(m, i, err) : rc_restitution_derive(m, i, err);
+        if (st) {
+            free(y);
+            free(size);
+            return st;
+        }
     }
     free(y);
     free(size);

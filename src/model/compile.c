@@ -334,6 +334,7 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     m->inter_tstop[i] = t6->tstop;
     m->inter_visc[i] = t6->visc;
     m->inter_etarget[i] = t6->e_target;
+    m->inter_vimp[i] = t6->v_imp;
     if (t6->e_target > 0) {
         /* the damping that gives it is derived with the scales
          * (engine/scales.c); it needs a law whose restitution is known */
@@ -563,6 +564,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->inter_tstop, m->ninter);
     ALLOC(m->inter_visc, m->ninter);
     ALLOC(m->inter_etarget, m->ninter);
+    ALLOC(m->inter_vimp, m->ninter);
     ALLOC(m->inter_fscalev, m->ninter);
     ALLOC(m->inter_ascalex, m->ninter);
     ALLOC(m->inter_fscaleld, m->ninter);
@@ -627,7 +629,7 @@ void rc_model_free(rc_model *m)
                       m->body_J, m->body_Jinv, m->body_y0, m->body_grav, m->body_dofmask, m->surf_id, m->surf_kind,
                       m->surf_body, m->surf_p, m->surf_n, m->surf_r, m->inter_id, m->inter_pair,
                       m->inter_sa, m->inter_sb, m->inter_ba, m->inter_bb, m->inter_gap,
-                      m->inter_tstart, m->inter_tstop, m->inter_visc, m->inter_etarget, m->inter_fscalev,
+                      m->inter_tstart, m->inter_tstop, m->inter_visc, m->inter_etarget, m->inter_vimp, m->inter_fscalev,
                       m->inter_ascalex, m->inter_fscaleld, m->inter_ascalef, m->inter_ascalev,
                       m->inter_fct_ld, m->inter_fct_dv, m->inter_fct_df, m->inter_eadr,
                       m->inter_fct_ul, m->inter_iform, m->inter_icor, m->inter_inacti, m->inter_stiff,

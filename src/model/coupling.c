@@ -13,10 +13,11 @@
 
 #include "case/case_coupling.h"
 #include "model/coupling.h"
+#include "model/coupling_contact.h"
 #include "base/error.h"
 
 
-static const char *const kind_name[3] = {"", "SPRING", "CATENARY"};
+static const char *const kind_name[4] = {"", "SPRING", "CATENARY", "CONTACT"};
 
 /* Body index of /RBODY id (0: fixed in space, -1; no such body: -2); the
  * model's bodies are the case's, in the same order. */
@@ -78,8 +79,9 @@ static rc_status compile_one(const rc_case *c, rc_model *m, int k, rc_error *err
     if (!p->name[k]) RC_RAISE(err, RC_ENOMEM, "out of memory");
     strcpy(p->name[k], card);
     p->id[k] = cc->id;
-    p->kind[k] = cc->kind == RC_CASE_CPL_SPRING ? RC_CPL_SPRING : RC_CPL_CATENARY;
+    p->kind[k] = cc->kind == RC_CASE_CPL_SPRING ? RC_CPL_SPRING : cc->kind == RC_CASE_CPL_CATENARY ? RC_CPL_CATENARY : RC_CPL_CONTACT;
     p->type[k] = kind_name[cc->kind];
+    if (cc->kind == RC_CASE_CPL_CONTACT) return rc_cpl_contact_compile(c, m, k, err); /* coupling_contact.c */
     p->table[k] = -1;
     /* line 4 of both cards: X0 Kd (spring), Lambda0 L_eq D (catenary) */
     p->law_loc[k] = rc_loc_or(cc->line_loc[3], cc->loc);
@@ -151,8 +153,11 @@ rc_status rc_cpl_compile(const rc_case *c, rc_model *m, rc_error *err)
     gsl_set_error_handler_off(); /* GSL reports through return codes */
     m->cpl = calloc(1, sizeof *m->cpl);
     if (!m->cpl || alloc_arrays(m->cpl, c->ncoupling)) RC_RAISE(err, RC_ENOMEM, "out of memory compiling the couplings");
+    rc_status st = rc_cpl_contact_alloc(m, err);
+    if (st) return st;
     for (int k = 0; k < c->ncoupling; k++) {
-        rc_status st = compile_one(c, m, k, err);
+        m->cpl->ct->fadr[k + 1] = m->cpl->ct->fadr[k] = m->cpl->ct->nface; /* no faces unless a contact */
+        st = compile_one(c, m, k, err);
         if (st) return st;
     }
     return RC_OK;
@@ -199,6 +204,7 @@ void rc_cpl_free(rc_couplings *p)
                       p->form, p->x0,  p->kd,   p->coef, p->table, p->fref,   p->xref, p->cum,
                       p->lambda0, p->leq, p->ea, p->jb, p->law_loc};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
+    rc_cpl_contact_free(p->ct);
     free(p);
 }
 
@@ -219,6 +225,11 @@ rc_cpl_data *rc_cpl_data_new(const rc_model *m)
         return NULL;
     }
     for (int k = 0; k < 2 * p->n; k++) cd->warm[k] = NAN;
+    cd->fmode = calloc((size_t)(p->ct ? p->ct->nface : 0) + 1, sizeof(int));
+    if (!cd->fmode) {
+        rc_cpl_data_free(cd);
+        return NULL;
+    }
     return cd;
 }
 
@@ -226,6 +237,7 @@ void rc_cpl_data_free(rc_cpl_data *cd)
 {
     if (!cd) return;
     free(cd->warm);
+    free(cd->fmode);
     rc_cat_ws_free(cd->ws);
     free(cd);
 }

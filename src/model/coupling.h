@@ -4,6 +4,8 @@
  * a point fixed in space. docs/theory.md section "Couplings" has the
  * equations as implemented.
  *
+ * Contact couplings (RC_CPL_CONTACT): model/coupling_contact.h.
+ *
  * Model side (constant): rc_couplings, one flat array per field, reached
  * from rc_model.cpl. Data side (mutable): rc_cpl_data in rc_data.cpl, the
  * catenary warm starts and the GSL workspace, allocated once per run so
@@ -26,7 +28,7 @@
 #define RC_CE 2 /* energy states of a coupling */
 
 /* Coupling kinds. */
-typedef enum { RC_CPL_SPRING = 1, RC_CPL_CATENARY = 2 } rc_cpl_kind;
+typedef enum { RC_CPL_SPRING = 1, RC_CPL_CATENARY = 2, RC_CPL_CONTACT = 3 } rc_cpl_kind;
 
 /* Stiffness forms of a spring-damper (SPEC 8 [CPL-SPRING], card field Iform). */
 typedef enum {
@@ -71,6 +73,7 @@ typedef struct rc_couplings {
     rc_jblock *jb;       /* [n] Jacobian blocks                               */
     rc_loc *law_loc;     /* [n] file:line of the card line holding the law's
                             fields (catenary: Lambda0 L_eq D), for messages  */
+    struct rc_cpl_contact *ct; /* contact couplings (coupling_contact.h)      */
 } rc_couplings;
 
 /* Solution of the catenary equations for one span (X, Y): end forces and
@@ -105,6 +108,7 @@ typedef struct rc_cpl_data {
     double *warm;        /* [n*2] last catenary solution (H, V1), NaN: none  */
     void *ws;            /* catenary solver workspace (GSL)                  */
     int fail;            /* coupling whose forces failed in the last call, -1 */
+    int *fmode;          /* [ct->nface] contact coupling face modes RC_FACE_* */
 } rc_cpl_data;
 
 /* ---- compile (model/coupling.c) ---------------------------------- */
@@ -157,6 +161,15 @@ int rc_cpl_dense_block(const rc_model *m, const rc_data *d, int k, double t, con
                        double *out);
 /* Add the coupling Jacobian blocks into the CSC values. */
 int rc_cpl_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val);
+/* Root functions of the contact couplings (rc_cpl_nroots of them), their
+ * directions, the face modes at the start and at events (engine/contact_rhs.inc,
+ * included by assemble_rhs.c). rc_cpl_events returns the events written into
+ * kinds[]/cpls[] (at most max_ev) and sets *restart when a mode changed. */
+void rc_cpl_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
+void rc_cpl_root_dirs(const rc_model *m, const rc_data *d, int *dir);
+void rc_cpl_modes_init(const rc_model *m, rc_data *d, double t, const double *y);
+int rc_cpl_events(const rc_model *m, rc_data *d, double t, const double *y, const int *roots, const char **kinds,
+                  int *cpls, int max_ev, int *restart);
 
 /* ---- output ------------------------------------------------------------ */
 /* Values per coupling at (t, y) for one output record, into buf [9 n]:

@@ -176,7 +176,8 @@ struct rc_model {
     double *inter_gap;   /* Gap [m] */
     double *inter_tstart, *inter_tstop; /* [s] */
     double *inter_visc;  /* [N s/m] */
-    double *inter_etarget; /* restitution asked (TYPE6 e_target) [-]; 0: none; Visc derived from it */
+    double *inter_etarget; /* restitution asked (TYPE6, POWER e_target) [-]; 0: none; Visc or C derived from it */
+    double *inter_vimp;    /* impact speed of e_target (V_imp) [m/s]; 0: derived from the initial state */
     double *inter_fscalev; /* [N] */
     double *inter_ascalex; /* [m] */
     double *inter_fscaleld; /* [N] */

@@ -79,6 +79,19 @@ rc_status rc_power_compile(const rc_case *c, rc_model *m, int k, int i, rc_error
     pw->vreg = p->vreg;
     if ((st = make_spline(c, p, p->fct_stiff, card, "fct_stiff", &pw->stiff, err))) return st;
     if ((st = make_spline(c, p, p->fct_damp, card, "fct_damp", &pw->damp, err))) return st;
+    /* a restitution asked: C is derived with the scales (engine/restitution.c) */
+    m->inter_etarget[i] = p->e_target;
+    m->inter_vimp[i] = p->v_imp;
+    if (p->e_target > 0) {
+        const rc_loc l6 = rc_loc_or(p->line_loc[5], p->loc);
+        if (!(p->e_target <= 1))
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field e_target: expected a restitution in (0, 1], got %g",
+                     RC_LOC(l6), card, p->e_target);
+        if (p->c != 0 || p->fct_damp != 0)
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field e_target: a restitution asked replaces the damping "
+                     "coefficient: expected C = 0 and fct_damp = 0 with it, got C %g, fct_damp %d",
+                     RC_LOC(l6), card, p->c, p->fct_damp);
+    }
     /* step5 friction (a /FRICTION card naming the parts overrides it) */
     rc_fric *fr = &m->inter_fr[i];
     fr->fct_ff = fr->fct_fv = -1;

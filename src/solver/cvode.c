@@ -27,6 +27,7 @@
 #include <unistd.h>
 
 #include "model/coupling.h"
+#include "model/coupling_contact.h"
 #include "base/error.h"
 #include "engine/events.h"
 #include "model/model.h"
@@ -213,11 +214,15 @@ static void root_directions(const rc_model *m, const rc_data *d, int *dir)
         r[RC_ROOT_SLIP] = 1;                                      /* limit reached / sliding stops */
         r[RC_ROOT_REV] = -1;                                      /* saturated sliding reverses */
     }
+    if (rc_cpl_nroots(m) > 0) rc_cpl_root_dirs(m, d, dir + RC_ROOTS_PER_INTER * m->ninter);
 }
+
+/* Root functions: the interfaces', then the contact couplings'. */
+static int n_roots(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter + rc_cpl_nroots(m); }
 
 static int set_root_directions(const rc_model *m, const rc_data *d, void *cv, int *dir)
 {
-    if (m->ninter == 0) return CV_SUCCESS;
+    if (n_roots(m) == 0) return CV_SUCCESS;
     root_directions(m, d, dir);
     return CVodeSetRootDirection(cv, dir);
 }
@@ -256,6 +261,7 @@ static rc_status write_event(const rc_model *m, const rc_data *d, ev_sink *o, do
                              const rc_event *ev, rc_error *err)
 {
     const int i = ev->inter;
+    if (i < 0) return sink_event(o, t, ev->kind, m->cpl->name[-1 - i], NULL, err); /* a coupling */
     rc_inter_report r;
     rc_inter_report_eval(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y, &r);
     const double v[3] = {r.p, r.vn, d->inter_mode[i] == RC_MODE_CLOSED && r.fn > 0 ? r.fn : 0.0};
@@ -299,7 +305,7 @@ static int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, 
 static int refine_flat_roots(const rc_model *m, rc_data *d, void *cv, double t, const int *roots, double *g,
                              N_Vector yref, double *refined_time)
 {
-    const int nr = RC_ROOTS_PER_INTER * m->ninter;
+    const int nr = n_roots(m);
     double tn, hu;
     if (nr == 0 || CVodeGetCurrentTime(cv, &tn) != CV_SUCCESS || CVodeGetLastStep(cv, &hu) != CV_SUCCESS) return 0;
     double *y = N_VGetArrayPointer(yref);
@@ -335,7 +341,7 @@ static int refine_flat_roots(const rc_model *m, rc_data *d, void *cv, double t, 
 static int root_on_zero(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
 {
     rc_assemble_roots(m, d, t, y, g);
-    for (int k = 0; k < RC_ROOTS_PER_INTER * m->ninter; k++)
+    for (int k = 0; k < n_roots(m); k++)
         if (g[k] == 0.0) return 1;
     return 0;
 }
@@ -804,15 +810,15 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
     old_branch = calloc((size_t)m->ninter + 1, sizeof(int));
     old_track = calloc((size_t)m->ninter + 1, sizeof(int));
     old_slip = calloc((size_t)m->ninter + 1, sizeof(int));
-    rootdir = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(int));
-    gbuf = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(double));
+    rootdir = calloc((size_t)n_roots(m) + 1, sizeof(int));
+    gbuf = calloc((size_t)n_roots(m) + 1, sizeof(double));
     zeno_t = calloc((size_t)m->ninter + 1, sizeof(double));
     zeno_n = calloc((size_t)m->ninter + 1, sizeof(int));
-    g2buf = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(double));
+    g2buf = calloc((size_t)n_roots(m) + 1, sizeof(double));
     ylook = calloc((size_t)m->ny, sizeof(double));
     flook = calloc((size_t)m->ny, sizeof(double));
     A = SUNSparseMatrix(m->ny, m->ny, m->nnz, CSC_MAT, ctx);
-    roots = calloc((size_t)RC_ROOTS_PER_INTER * m->ninter + 1, sizeof(int));
+    roots = calloc((size_t)n_roots(m) + 1, sizeof(int));
     if (rc_impacts_init(&im, m) || !ysamp || !y || !av || !f0 || !f1 || !ytn || !old_mode || !old_branch || !old_track || !old_slip || !rootdir || !gbuf || !A ||
         !roots || !g2buf || !ylook || !flook || !zeno_t || !zeno_n) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the solver");
@@ -858,7 +864,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
     if (m->hmax > 0) CVCHECK(CVodeSetMaxStep(cv, m->hmax), "CVodeSetMaxStep");
     if (m->h0 > 0) CVCHECK(CVodeSetInitStep(cv, m->h0), "CVodeSetInitStep");
     if (m->nfree > 0) CVCHECK(CVodeSetProjFn(cv, cb_proj), "CVodeSetProjFn");
-    if (m->ninter > 0) CVCHECK(CVodeRootInit(cv, RC_ROOTS_PER_INTER * m->ninter, cb_root), "CVodeRootInit");
+    if (n_roots(m) > 0) CVCHECK(CVodeRootInit(cv, n_roots(m), cb_root), "CVodeRootInit");
     CVCHECK(CVodeSetNoInactiveRootWarn(cv), "CVodeSetNoInactiveRootWarn");
     CVCHECK(set_root_directions(m, d, cv, rootdir), "CVodeSetRootDirection");
 
@@ -1000,6 +1006,8 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
             memcpy(old_slip, d->inter_slip, (size_t)m->ninter * sizeof(int));
             int jumped = 0;
             int nev = rc_events_apply(m, d, t, yd, roots, ev, RC_MAX_EV, &jumped);
+            int cpl_ev = 0; /* a contact coupling's faces changed modes */
+            for (int k = 0; k < nev && k < RC_MAX_EV; k++) cpl_ev |= ev[k].inter < 0;
             s.events += nev;
             for (int k = 0; k < nev && k < RC_MAX_EV; k++) rc_impacts_event(&im, m, d, ev[k].inter, ev[k].kind, t, yd);
             for (int k = 0; k < nev && k < RC_MAX_EV; k++)
@@ -1007,6 +1015,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
             /* event accumulation: report it rather than stall */
             for (int k = 0; k < nev && k < RC_MAX_EV; k++) {
                 const int i = ev[k].inter;
+                if (i < 0) continue; /* a contact coupling: its faces change modes with the state moving */
                 zeno_n[i] = t - zeno_t[i] <= RC_ZENO_REL * fmax(fabs(t), dtout) ? zeno_n[i] + 1 : 0;
                 zeno_t[i] = t;
                 if (zeno_n[i] > RC_ZENO_MAX) {
@@ -1034,7 +1043,9 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
                         changed = 1;
                         ok = rc_jac_refresh_inter(m, d, i, yd, jsave) == 0;
                     }
-                rc.jac_patched = ok && changed;
+                /* coupling blocks are not refreshed in place: a whole new
+                 * Jacobian when a contact coupling changed modes */
+                rc.jac_patched = ok && changed && !cpl_ev;
             }
             if (refined > 0 || jumped || (nev > 0 && needs_restart(m, d, cv, old_mode, old_branch, old_track, old_slip, t, yd, ytn, f0, f1)) ||
                 root_on_zero(m, d, t, yd, gbuf)) {

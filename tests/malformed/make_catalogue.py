@@ -194,7 +194,7 @@ T('box_u_zero', SB, 'UX UY UZ', at(SB, 5, 1, 20, '0'))
 T('box_v_parallel', SB, 'VX VY VZ', at(SB, 6, line='                   1                   0                   0'))
 T('box_rbody_missing', SB, 'field rbody_ID', at(SB, 2, 1, 10, '9'))
 T('surf_dup_id', '/SURF/BOX/3', 'field surf_ID', rename(SB, '/SURF/BOX/3'))
-T('surf_seg', '/SURF/SEG/5', 'not supported yet', before_end(['/SURF/SEG/5', 'segments', '         1']))
+T('surf_seg', '/SURF/SEG/5', 'field node_ID1', before_end(['/SURF/SEG/5', 'segments', '         1'], expect=2))
 # ---- /INTER/TYPE6
 T('t6_surf_missing', T6, 'field surf_ID2', at(T6, 2, 11, 20, '9'))
 T('t6_surf_zero', T6, 'field surf_ID1', at(T6, 2, 1, 10, '0'))
@@ -331,6 +331,37 @@ T('include_missing', '-', '#include', before_end(['#include no_such_file.rad']))
 T('include_empty_name', '-', 'missing file name', before_end(['#include']))
 T('include_directory', '-', 'not a regular file', before_end(['#include .']))
 T('include_self', '-', 'include cycle', before_end(['#include @SELF@']))
+# ---- restitution asked (e_target, V_imp): /INTER/POWER line 6, TYPE6 line 6
+T('pw_etarget_above_one', PW, 'field e_target', insert(PW, 6, ['', '                 1.5'], expect_k=7))
+T('pw_etarget_with_c', PW, 'field e_target', insert(PW, 6, ['', '                 0.5'], expect_k=7))
+T('pw_vimp_text', PW, 'field V_imp', insert(PW, 6, ['', '                 0.5                fast'], expect_k=7))
+T('t6_vimp_negative', T6, 'field V_imp', at(T6, 7, 81, 100, '-1'))
+# ---- /COUPLING/CONTACT (inserted before /END; the line expected is the faulty one)
+CC = '/COUPLING/CONTACT/3'
+
+
+def cc(l1, l2, l3=None, expect=2):
+    lines = [CC, 'contact coupling', l1, l2] + ([l3] if l3 is not None else [])
+    return before_end(lines, expect=expect)
+
+
+CC1 = '         2         4         0         0'
+T('cc_d0_zero', CC, 'field d0', cc(CC1, '                   0                 1e6', expect=3))
+T('cc_k1_missing', CC, 'field k1', cc(CC1, '                0.01', expect=3))
+T('cc_kt_missing', CC, 'field k_t', cc(CC1, '                0.01                 1e6                   0                 0.3', expect=3))
+T('cc_iside', CC, 'field Iside', cc('         2         4         5         0', '                0.01                 1e6', expect=2))
+T('cc_iest_no_line3', CC, 'field V_imp', cc('         2         4         0         1', '                0.01', expect=0))
+T('cc_iest_k1_given', CC, 'field k1', cc('         2         4         0         1', '                0.01                 1e6',
+  '                   1               0.002                   0                0.04', expect=3))
+T('cc_dmin_above_d0', CC, 'field d_min', cc('         2         4         0         1', '                0.01',
+  '                   1                0.02                   0                0.04', expect=4))
+T('cc_surf1_analytic', CC, 'field surf_ID1', cc(CC1, '                0.01                 1e6', expect=2))
+T('cc_surf1_fixed_segments', CC, 'field surf_ID1', before_end([
+  '/NODE', '        20                   5                   5                   0', '        21                   6                   5                   0',
+  '        22                   6                   6                   0', '        23                   5                   6                   0',
+  '/SURF/SEG/5', 'fixed patch', '         1        20        21        22        23',
+  '/SURF/SEG/6', 'second patch', '         1        20        21        22',
+  CC, 'contact coupling', '         5         6         0         0', '                0.01                 1e6'], expect=13))
 
 
 def write_all():

@@ -1,0 +1,166 @@
+/*
+ * Restitution of a nonlinear law by the single-contact ODE
+ * (engine/restitution.c): against the closed form of the clipped linear
+ * contact, the undamped laws (e = 1), the damping derived for an asked e,
+ * the impact speed derived from the initial state, and the errors.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "base/error.h"
+#include "engine/restitution.h"
+#include "model/model.h"
+#include "model/power.h"
+#include "harness.h"
+#include "testutil.h"
+
+/* A 1 kg sphere 2 mm above a fixed plane at -1 m/s (z), then the interface
+ * card text `inter` and its functions. */
+static const char *deck(char *buf, size_t n, const char *inter, const char *vz)
+{
+    snprintf(buf, n,
+             "#RADIOSS STARTER\n/BEGIN\nrestitution test\n      2022         0\n"
+             "                  kg                   m                   s\n"
+             "                  kg                   m                   s\n"
+             "/FUNCT/1\nlinear\n                   0                   0\n                   1             1000000\n"
+             "/FUNCT/2\nstiffening\n                   0                   0\n              0.0001                 100\n"
+             "               0.001                5000\n                0.01              200000\n"
+             "/NODE\n         1                   0                   0               0.052\n"
+             "/RBODY/1\nsphere 1 kg\n         1                                                 1\n"
+             "               0.001               0.001               0.001\n                   0                   0                   0\n"
+             "/SURF/ELLIPS/1\nsphere\n         0         2         1\n                   0                   0               0.052\n"
+             "                0.05                0.05                0.05\n"
+             "/SURF/PLANE/2\nplane\n                   0                   0                   0\n"
+             "                   0                   0                   1\n"
+             "/GRNOD/NODE/1\ngroup\n         1\n"
+             "/INIVEL/TRA/1\ninitial velocity\n                   0                   0%20s         1         0\n"
+             "%s/RUN\n                0.01               0.001\n/END\n",
+             vz, inter);
+    return buf;
+}
+
+static rc_model *compile(const char *inter, const char *vz, rc_error *e)
+{
+    static char buf[8192];
+    return tu_compile_text(deck(buf, sizeof buf, inter, vz), "restitution.rad", e);
+}
+
+/* TYPE6 with a linear load curve: the ODE gives the closed form of the
+ * clipped linear contact at every damping ratio (under-, critically and
+ * overdamped). */
+static void test_restitution_ode_matches_linear_closed_form(void)
+{
+    rc_error e;
+    rc_model *m = compile("/INTER/TYPE6/1\ncontact\n         1         2\n\n\n         1         0\n         0\n\n", "-1", &e);
+    ENSURE(m);
+    if (!m) return;
+    const double k = 1e6, mr = m->inter_mred[0];
+    ENSURE_NEAR(mr, 1.0, 1e-12, 0);
+    const double zetas[] = {0.0, 0.05, 0.3, 0.7, 1.0, 1.5, 3.0};
+    for (size_t j = 0; j < sizeof zetas / sizeof zetas[0]; j++) {
+        double tc = 0, tau = 0;
+        const double c = 2.0 * zetas[j] * sqrt(k * mr);
+        const double eo = rc_restitution_solve(m, 0, mr, 1.0, c, &tc);
+        const double ecf = rc_linear_restitution(zetas[j], &tau);
+        ENSURE_NEAR(eo, ecf, 1e-9, 1e-11);
+        ENSURE_NEAR(tc, tau / sqrt(k / mr), 1e-8, 0);
+        /* a linear law: the same at any impact speed */
+        ENSURE_NEAR(rc_restitution_solve(m, 0, mr, 7.0, c, NULL), ecf, 1e-9, 1e-11);
+    }
+    int given = 1;
+    ENSURE_NEAR(rc_restitution_speed(m, 0, &given), 1.0, 1e-15, 0);
+    ENSURE(!given);
+    rc_model_free(m);
+}
+
+/* A nonlinear TYPE6 load curve asked e = 0.4 without V_imp: Visc derived at
+ * the initial approach speed (2 m/s) gives 0.4 there and another value at
+ * another speed; V_imp overrides the speed. */
+static void test_restitution_type6_nonlinear_asked(void)
+{
+    rc_error e;
+    const char *t6 = "/INTER/TYPE6/1\ncontact\n         1         2\n\n\n         2         0\n         0\n"
+                     "                             0         0                                     0.4\n";
+    rc_model *m = compile(t6, "-2", &e);
+    ENSURE(m);
+    if (!m) return;
+    const double c = m->inter_visc[0];
+    ENSURE(c > 0);
+    ENSURE_NEAR(rc_restitution_solve(m, 0, m->inter_mred[0], 2.0, c, NULL), 0.4, 1e-9, 0);
+    ENSURE(fabs(rc_restitution_solve(m, 0, m->inter_mred[0], 0.5, c, NULL) - 0.4) > 1e-3);
+    rc_model_free(m);
+    const char *t6v = "/INTER/TYPE6/1\ncontact\n         1         2\n\n\n         2         0\n         0\n"
+                      "                             0         0                                     0.4                 0.5\n";
+    m = compile(t6v, "-2", &e);
+    ENSURE(m);
+    if (!m) return;
+    int given = 0;
+    ENSURE_NEAR(rc_restitution_speed(m, 0, &given), 0.5, 0, 0);
+    ENSURE(given);
+    ENSURE_NEAR(rc_restitution_solve(m, 0, m->inter_mred[0], 0.5, m->inter_visc[0], NULL), 0.4, 1e-9, 0);
+    rc_model_free(m);
+}
+
+/* Power law: undamped Hertz gives e = 1; C derived for e = 0.3 with the
+ * default RDF gives 0.3; the gravity fall over the gap sets the speed. */
+static void test_restitution_power_asked(void)
+{
+    rc_error e;
+    const char *pw = "/INTER/POWER/1\nhertz\n         1         2         0         0         0         0\n"
+                     "         10000000000                 1.5                   0                   1                 1.5\n"
+                     "\n\n\n                 0.3\n";
+    rc_model *m = compile(pw, "-1", &e);
+    ENSURE(m);
+    if (!m) return;
+    const double c = m->inter_pw[0].c, mr = m->inter_mred[0];
+    ENSURE(c > 0);
+    ENSURE_NEAR(rc_restitution_solve(m, 0, mr, 1.0, c, NULL), 0.3, 1e-9, 0);
+    ENSURE_NEAR(rc_restitution_solve(m, 0, mr, 1.0, 0.0, NULL), 1.0, 1e-9, 0);
+    /* Hertz-type damping: a faster impact loses more */
+    ENSURE(rc_restitution_solve(m, 0, mr, 2.0, c, NULL) < 0.3);
+    /* `ricochet check`: asked, derived and predicted */
+    FILE *f = tmpfile();
+    ENSURE(f);
+    if (f) {
+        rc_model_print_summary(m, f);
+        static char out[16384];
+        rewind(f);
+        size_t n = fread(out, 1, sizeof out - 1, f);
+        out[n] = 0;
+        fclose(f);
+        ENSURE(strstr(out, "restitution asked 0.3 at the derived impact speed: C derived = "));
+        ENSURE(strstr(out, "predicted 0.3"));
+        ENSURE(strstr(out, "predicted restitution 0.3, contact time") && strstr(out, "at impact speed 1 m/s"));
+    }
+    rc_model_free(m);
+}
+
+/* Errors: a damping spline, nothing approaching without V_imp, C given. */
+static void test_restitution_errors(void)
+{
+    rc_error e;
+    const char *spl = "/INTER/POWER/1\nhertz\n         1         2         0         2         0         0\n"
+                      "         10000000000                 1.5                   0                   1                 1.5\n"
+                      "\n\n\n                 0.3\n";
+    ENSURE(!compile(spl, "-1", &e));
+    ENSURE(strstr(e.msg, "field e_target") && strstr(e.msg, "C = 0 and fct_damp = 0"));
+    const char *pw = "/INTER/POWER/1\nhertz\n         1         2         0         0         0         0\n"
+                     "         10000000000                 1.5                   0                   1                 1.5\n"
+                     "\n\n\n                 0.3\n";
+    ENSURE(!compile(pw, "0", &e));
+    ENSURE(strstr(e.msg, "card /INTER/POWER/1, field V_imp") && strstr(e.msg, "impact speed"));
+    const char *t6h = "/INTER/TYPE6/1\ncontact\n         1         2\n\n\n         2         1\n"
+                      "         0                             1\n                             0         0                                     0.4\n";
+    ENSURE(!compile(t6h, "-1", &e));
+    ENSURE(strstr(e.msg, "field e_target"));
+}
+
+void suite_restitution(void);
+void suite_restitution(void)
+{
+    RUN_TEST(test_restitution_ode_matches_linear_closed_form);
+    RUN_TEST(test_restitution_type6_nonlinear_asked);
+    RUN_TEST(test_restitution_power_asked);
+    RUN_TEST(test_restitution_errors);
+}

@@ -136,8 +136,10 @@ static void test_seg_read_errors(void)
     EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS "/SURF/CYL/40\ns\n0\n0,2,0\n1,0,0\n0.5,1\n" LINEAR T6 RUN_TAIL,
                      "card /INTER/TYPE6/1", "fields surf_ID1/surf_ID2", "segment surface against cylinder",
                      "not supported yet");
-    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS FLOOR LINEAR "/INTER/TYPE6/1\nbox on floor\n30,40\n,0.3\n\n1\n\n\n"
-                     RUN_TAIL, "card /INTER/TYPE6/1", "friction on a segment surface: not supported yet");
+    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS "/NODE\n2,0,0,-0.2\n/RBODY/2\nball\n2,,,,5.0\n0.1,0.1,0.1\n0,0,0\n"
+                     "/SURF/ELLIPS/40\ns\n0,2,2\n0,0,-0.2\n0.1,0.1,0.1\n" LINEAR
+                     "/INTER/TYPE6/1\nball on box\n40,30\n,0.3\n\n1\n\n\n" RUN_TAIL,
+                     "card /INTER/TYPE6/1", "friction between a sphere and a segment surface: not supported yet");
     EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS FLOOR "/INTER/POWER/1\np\n30,40\n1e6,1\n" RUN_TAIL, "card /INTER/POWER/1",
                      "segment surface", "not supported yet");
 }
@@ -238,20 +240,20 @@ static void test_seg_force_distribution(void)
 /* The box on a tilted plate carried by a second free body, nonlinear load
  * curve with Visc and both damping curves, Iform 1 with an unload curve and
  * Inacti 5: every mode, against central differences. */
-static void seg_jacobian_check(int box)
+static void seg_jacobian_check(int box, int fric)
 {
     rc_error e;
     char deck[4096];
-    snprintf(deck, sizeof deck, "%s%s%s%s%s", BOX_NODES BOX_BODY BOX_SEGS,
+    snprintf(deck, sizeof deck, "%s%s%s%s%s%s", BOX_NODES BOX_BODY BOX_SEGS,
              "/NODE\n2,0,0,-0.2\n/RBODY/2\nplate\n2,,,,5.0\n0.11,0.13,0.2\n0.01,0,0\n",
              box ? "/SURF/BOX/40\ntable\n2\n0.01,-0.02,-0.199\n0.4,0.3,0.2\n1,0.05,0.02\n-0.04,1,0.03\n"
                  : "/SURF/PLANE/40\nplate\n0,0,0.001\n0.05,-0.03,1\n2\n",
-             "",
-                              "/FUNCT/1\nload\n-0.01,-3.1e3\n0,0\n0.0013,2.71e3\n0.0041,1.37e4\n0.0097,5.9e4\n"
-                              "/FUNCT/2\nunload\n0,0\n0.002,0\n0.006,5e3\n0.011,3.1e4\n"
-                              "/FUNCT/3\ndv\n-10,-41\n0,0\n0.37,5.3\n3.3,71\n/FUNCT/4\ndf\n0,1\n500,0.83\n9e4,0.61\n"
-                              "/INTER/TYPE6/1\nbox on plate\n30,40\n,,0.0011\n,,,5,,,1.9,0.61\n1,1,1.3,0.77\n"
-                              "2,,7.3e6,0.83\n3.7,3,4,2.3\n" RUN_TAIL);
+             "/FUNCT/1\nload\n-0.01,-3.1e3\n0,0\n0.0013,2.71e3\n0.0041,1.37e4\n0.0097,5.9e4\n"
+             "/FUNCT/2\nunload\n0,0\n0.002,0\n0.006,5e3\n0.011,3.1e4\n"
+             "/FUNCT/3\ndv\n-10,-41\n0,0\n0.37,5.3\n3.3,71\n/FUNCT/4\ndf\n0,1\n500,0.83\n9e4,0.61\n",
+             fric ? "/INTER/TYPE6/1\nbox on plate\n30,40\n0.7,0.37,0.0011\n,,,5,,,1.9,0.61\n1,1,1.3,0.77\n"
+                  : "/INTER/TYPE6/1\nbox on plate\n30,40\n,,0.0011\n,,,5,,,1.9,0.61\n1,1,1.3,0.77\n",
+             "2,,7.3e6,0.83\n3.7,3,4,2.3\n" RUN_TAIL);
     rc_model *m = seg_compile(deck, &e);
     ENSURE(m != NULL);
     if (!m) {
@@ -300,17 +302,21 @@ static void seg_jacobian_check(int box)
     int bad = 0, outside = 0, combos = 0;
     double maxerr = 0;
     const int modes[2] = {RC_MODE_CLOSED, RC_MODE_RELEASED};
+    /* friction per contact point: all sticking, all slipping, alternating */
+    ENSURE(!fric || m->inter_npt[0] == 8);
     for (int md = 0; md < 2; md++)
         for (int br = 0; br < 3; br++)
-            for (int trk = 0; trk < 2; trk++) {
-                d->inter_mode[0] = modes[md];
-                d->inter_branch[0] = br;
-                d->inter_track[0] = trk;
-                maxerr = fmax(maxerr, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
-                combos++;
-            }
-    printf("    %s jacobian: P = %.3g m (%d nodes past the plate; -1: not counted), %d states, %lld nonzeros, %d mode combinations, max scaled |J - FD| "
-           "= %.2e\n", box ? "segments-box" : "segments-plane", r.p, npen, m->ny, (long long)m->nnz, combos, maxerr);
+            for (int trk = 0; trk < 2; trk++)
+                for (int sl = 0; sl < (fric ? 3 : 1); sl++) {
+                    d->inter_mode[0] = modes[md];
+                    d->inter_branch[0] = br;
+                    d->inter_track[0] = trk;
+                    for (int j = 0; j < m->inter_npt[0]; j++) d->pt_slip[j] = sl == 2 ? j % 2 : sl;
+                    maxerr = fmax(maxerr, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
+                    combos++;
+                }
+    printf("    %s%s jacobian: P = %.3g m (%d nodes past the plate; -1: not counted), %d states, %lld nonzeros, %d mode combinations, max scaled |J - FD| "
+           "= %.2e\n", box ? "segments-box" : "segments-plane", fric ? " with friction per point" : "", r.p, npen, m->ny, (long long)m->nnz, combos, maxerr);
     ENSURE(bad == 0);
     ENSURE(outside == 0);
     free(y);
@@ -318,8 +324,10 @@ static void seg_jacobian_check(int box)
     rc_model_free(m);
 }
 
-static void test_seg_jacobian_matches_finite_differences(void) { seg_jacobian_check(0); }
-static void test_seg_box_jacobian_matches_finite_differences(void) { seg_jacobian_check(1); }
+static void test_seg_jacobian_matches_finite_differences(void) { seg_jacobian_check(0, 0); }
+static void test_seg_box_jacobian_matches_finite_differences(void) { seg_jacobian_check(1, 0); }
+static void test_seg_friction_jacobian_matches_finite_differences(void) { seg_jacobian_check(0, 1); }
+static void test_seg_box_friction_jacobian_matches_finite_differences(void) { seg_jacobian_check(1, 1); }
 
 /* A sphere (body 1, off its centre of mass) in a V-shaped valley of
  * triangles and quadrilaterals carried by a moving body 2: two face points
@@ -432,6 +440,8 @@ void suite_seg(void)
     RUN_TEST(test_seg_force_distribution);
     RUN_TEST(test_seg_jacobian_matches_finite_differences);
     RUN_TEST(test_seg_box_jacobian_matches_finite_differences);
+    RUN_TEST(test_seg_friction_jacobian_matches_finite_differences);
+    RUN_TEST(test_seg_box_friction_jacobian_matches_finite_differences);
     RUN_TEST(test_seg_sphere_valley_forces);
     RUN_TEST(test_seg_sphere_jacobian_matches_finite_differences);
 }

@@ -32,14 +32,15 @@ int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, do
     for (int i = 0; i < m->ninter; i++) {
         double *sdot = ydot + m->inter_eadr[i];
         const int ba = m->inter_ba[i], bb = m->inter_bb[i];
+        const int nst = m->inter_ns[i] + 3 * m->inter_npt[i]; /* own and point states */
         if (d->inter_mode[i] == RC_MODE_INACTIVE) {
-            memset(sdot, 0, (size_t)m->inter_ns[i] * sizeof(double));
+            memset(sdot, 0, (size_t)nst * sizeof(double));
             continue;
         }
-        type6_r(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], rc_body_state(m, ba, y),
-                rc_body_state(m, bb, y), y + m->inter_eadr[i], acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot,
-                NULL);
-        for (int k = 0; k < m->inter_ns[i]; k++)
+        type6_r(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
+                d->pt_slip + m->inter_pbase[i], rc_body_state(m, ba, y), rc_body_state(m, bb, y), y + m->inter_eadr[i],
+                acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot, NULL, NULL);
+        for (int k = 0; k < nst; k++)
             if (!isfinite(sdot[k])) {
                 d->fail_inter = i;
                 d->fail_t = t;
@@ -72,13 +73,12 @@ double rc_friction_mu(const rc_model *m, int i, int dir, double p, double v, dou
     return fric_mu_r(m, &m->inter_fr[i], dir, p, v, fn, i);
 }
 
-void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, double t,
-                          const double *y, rc_inter_report *r)
+static void report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, const int *pslip,
+                        const double *y, rc_inter_report *r)
 {
     t6out_r o;
-    (void)t;
-    type6_r(m, i, mode, branch, track, slip, rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y),
-            y + m->inter_eadr[i], NULL, NULL, NULL, &o);
+    type6_r(m, i, mode, branch, track, slip, pslip, rc_body_state(m, m->inter_ba[i], y),
+            rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, NULL);
     r->p = o.p;
     r->vn = o.vn;
     r->p_raw = o.p_raw;
@@ -104,6 +104,45 @@ void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int tr
     }
 }
 
+void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, double t,
+                          const double *y, rc_inter_report *r)
+{
+    (void)t;
+    report_eval(m, i, mode, branch, track, slip, NULL, y, r);
+}
+
+void rc_inter_report_eval_d(const rc_model *m, const rc_data *d, int i, double t, const double *y, rc_inter_report *r)
+{
+    (void)t;
+    report_eval(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
+                d->pt_slip + m->inter_pbase[i], y, r);
+}
+
+void rc_point_eval(const rc_model *m, const rc_data *d, int i, int j, int slip, double t, const double *y,
+                   double *root, double fraw[3], double *w)
+{
+    (void)t;
+    *root = -1.0;
+    *w = 0.0;
+    for (int k = 0; k < 3; k++) fraw[k] = 0.0;
+    if (d->inter_mode[i] != RC_MODE_CLOSED || m->inter_npt[i] == 0) return;
+    /* the normal law as type6 has it, then point j alone */
+    t6out_r o;
+    type6_r(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
+            d->pt_slip + m->inter_pbase[i], rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y),
+            y + m->inter_eadr[i], NULL, NULL, NULL, &o, NULL);
+    const rc_fric *fr = &m->inter_fr[i];
+    const double *ya = rc_body_state(m, m->inter_ba[i], y), *yb = rc_body_state(m, m->inter_bb[i], y);
+    const double *po = fr->obody < 0 ? m->ground_y0 : rc_body_state(m, fr->obody, y);
+    segctx_r c;
+    segfric_ctx_r(m, i, o.fel + o.fd, o.kn, o.off, ya, yb, &c);
+    segpt_r q;
+    segfric_point_r(m, i, &c, j, slip, ya, yb, y + m->inter_eadr[i] + m->inter_ns[i] + 3 * j, po, &q);
+    *root = q.root;
+    *w = q.w;
+    for (int k = 0; k < 3; k++) fraw[k] = q.fraw[k];
+}
+
 void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
 {
     for (int i = 0; i < m->ninter; i++) {
@@ -114,7 +153,19 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         const int mode = d->inter_mode[i], br = d->inter_branch[i], trk = d->inter_track[i];
         if (mode == RC_MODE_INACTIVE) continue;
         rc_inter_report r;
-        rc_inter_report_eval(m, i, mode, br, trk, d->inter_slip[i], t, y, &r);
+        const int npt = m->inter_npt[i];
+        double *gp = g + RC_ROOTS_PER_INTER * m->ninter + m->inter_pbase[i];
+        for (int j = 0; j < npt; j++) gp[j] = 1.0; /* inactive point roots */
+        if (npt > 0 && mode == RC_MODE_CLOSED) {
+            /* friction per contact point: each point's slip root */
+            double *pout = d->pt_work; /* 5 npt values (rc_data_new) */
+            t6out_r o;
+            type6_r(m, i, mode, br, trk, d->inter_slip[i], d->pt_slip + m->inter_pbase[i],
+                    rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i],
+                    NULL, NULL, NULL, &o, pout);
+            for (int j = 0; j < npt; j++) gp[j] = pout[5 * j];
+        }
+        rc_inter_report_eval_d(m, d, i, t, y, &r);
         /* friction: stick -> slip at the limit, slip -> stick when sliding stops */
         if (mode == RC_MODE_CLOSED && m->inter_fr[i].kind != RC_FK_NONE) gi[RC_ROOT_SLIP] = r.slip_root;
         /* saturated stateless law: its force -L v_t/|v_t| flips when the sliding

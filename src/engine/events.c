@@ -31,13 +31,20 @@ rc_data *rc_data_new(const rc_model *m)
     d->inter_dref = calloc(3 * n, sizeof(double));
     d->inter_band = calloc(2 * n, sizeof(double));
     d->cpl = rc_cpl_data_new(m);
+    /* friction per contact point: modes, and the scratch of the roots (5 per
+     * point) and of the Jacobian (complex own and point states and rates) */
+    int maxpt = 0;
+    for (int i = 0; i < m->ninter; i++) maxpt = m->inter_npt[i] > maxpt ? m->inter_npt[i] : maxpt;
+    d->pt_slip = calloc((size_t)m->npt + 1, sizeof(int));
+    d->pt_work = calloc(5 * (size_t)maxpt + 4 * ((size_t)RC_NS_MAX + 3 * (size_t)maxpt) + 16, sizeof(double));
     int imp_ok = 1;
     if (m->imp) { /* imposed velocities: scratch of rhs and Jacobian (imposed.c) */
         d->imp_free = calloc((size_t)m->ny, sizeof(double));
         d->imp_scratch = calloc(3 * (size_t)m->ny, sizeof(double));
         imp_ok = d->imp_free && d->imp_scratch;
     }
-    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->cpl || !imp_ok) {
+    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->cpl || !imp_ok ||
+        !d->pt_slip || !d->pt_work) {
         rc_data_free(d);
         return NULL;
     }
@@ -54,6 +61,8 @@ void rc_data_free(rc_data *d)
     free(d->inter_slip);
     free(d->inter_dref);
     free(d->inter_band);
+    free(d->pt_slip);
+    free(d->pt_work);
     rc_cpl_data_free(d->cpl);
     free(d->imp_free);
     free(d->imp_scratch);
@@ -76,7 +85,7 @@ static void set_state(double *s, double v, int *changed)
 
 static void report(const rc_model *m, const rc_data *d, int i, double t, const double *y, rc_inter_report *r)
 {
-    rc_inter_report_eval(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y, r);
+    rc_inter_report_eval_d(m, d, i, t, y, r);
 }
 
 /* Friction starts afresh (sticking, no force) whenever the contact closes
@@ -89,6 +98,53 @@ static void reset_friction(const rc_model *m, rc_data *d, int i, double *y, int 
         set_state(own(m, i, fr->tidx >= 0 ? fr->tidx + k : -1, y), 0.0, changed);
         set_state(own(m, i, fr->fidx >= 0 ? fr->fidx + k : -1, y), 0.0, changed);
     }
+    /* friction per contact point: every point sticks afresh */
+    for (int j = 0; j < m->inter_npt[i]; j++) {
+        d->pt_slip[m->inter_pbase[i] + j] = 0;
+        for (int k = 0; k < 3; k++) set_state(own(m, i, m->inter_ns[i] + 3 * j + k, y), 0.0, changed);
+    }
+}
+
+/* Contact point j of interface i from stick to slip: its state takes the
+ * applied force (spring and stick damper), then that direction on the limit;
+ * from slip to stick: the state takes the force where it is (on the limit). */
+static void point_flip(const rc_model *m, rc_data *d, int i, int j, double t, double *y, int *changed)
+{
+    double root, fr1[3], w;
+    int *sl = d->pt_slip + m->inter_pbase[i] + j;
+    double *ft = y + m->inter_eadr[i] + m->inter_ns[i] + 3 * j;
+    rc_point_eval(m, d, i, j, *sl, t, y, &root, fr1, &w);
+    for (int k = 0; k < 3; k++) set_state(ft + k, fr1[k], changed);
+    if (!*sl) {
+        rc_point_eval(m, d, i, j, 1, t, y, &root, fr1, &w);
+        const double nr = fr1[0] * fr1[0] + fr1[1] * fr1[1] + fr1[2] * fr1[2];
+        if (nr > 0 && isfinite(nr)) /* a zero limit (no share) keeps the direction */
+            for (int k = 0; k < 3; k++) set_state(ft + k, fr1[k], changed);
+    }
+    *sl = !*sl;
+    *changed = 1;
+}
+
+/* Friction per contact point of interface i: the points whose slip roots
+ * crossed flip (roots: the interface's point roots; NULL: those whose root
+ * is positive, in stick only, after a mode change). Returns the number of
+ * points flipped. */
+static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y, const int *roots, int *changed)
+{
+    if (m->inter_npt[i] == 0 || d->inter_mode[i] != RC_MODE_CLOSED) return 0;
+    int n = 0;
+    for (int j = 0; j < m->inter_npt[i]; j++) {
+        if (roots && roots[j] == 0) continue;
+        if (!roots) {
+            double root, fr1[3], w;
+            if (d->pt_slip[m->inter_pbase[i] + j]) continue;
+            rc_point_eval(m, d, i, j, 0, t, y, &root, fr1, &w);
+            if (!(root > 0)) continue;
+        }
+        point_flip(m, d, i, j, t, y, changed);
+        n++;
+    }
+    return n;
 }
 
 /* Enter the contact zone at P = 0 from separation: virgin force, on the load
@@ -370,6 +426,7 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
         const int *r = roots + RC_ROOTS_PER_INTER * i;
         int any = 0;
         for (int k = 0; k < RC_ROOTS_PER_INTER; k++) any |= r[k] != 0;
+        for (int j = 0; j < m->inter_npt[i]; j++) any |= roots[RC_ROOTS_PER_INTER * m->ninter + m->inter_pbase[i] + j] != 0;
         if (!any) continue;
         clear_band(d, i); /* the touch bands last until the interface's next event */
         /* window first; then the branch, then the contact, so that crossings
@@ -382,6 +439,18 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
             if (!kind[2]) kind[3] = step_friction(m, d, i, t, y, r, restart);
         }
         if ((kind[0] || kind[2]) && d->inter_mode[i] == RC_MODE_CLOSED) stateless_friction_mode(m, d, i, t, y);
+        /* friction per contact point: the points whose roots crossed (all
+         * reset when the contact changed) */
+        if (!kind[0] && !kind[2] && m->inter_npt[i] > 0) {
+            const int *rp = roots + RC_ROOTS_PER_INTER * m->ninter + m->inter_pbase[i];
+            int nsl = 0, nst = 0;
+            for (int j = 0; j < m->inter_npt[i]; j++)
+                if (rp[j]) {
+                    if (d->pt_slip[m->inter_pbase[i] + j]) nst++;
+                    else nsl++;
+                }
+            if (points_flip(m, d, i, t, y, rp, restart) > 0) kind[3] = nsl >= nst ? "fric_slip" : "fric_stick";
+        }
         for (int k = 0; k < 4; k++) {
             if (!kind[k]) continue;
             if (n < max_ev) {
@@ -508,8 +577,9 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
          * closes while sliding: the stick damper alone exceeds the limit):
          * it slips from the start, the state on the applied force */
         const rc_fric *fr = &m->inter_fr[i];
+        if (!kind && points_flip(m, d, i, t, y, NULL, restart) > 0) kind = "fric_slip";
         if (!kind && d->inter_mode[i] == RC_MODE_CLOSED && fr->kind != RC_FK_NONE && fr->form == RC_FF_INCREMENTAL &&
-            !d->inter_slip[i]) {
+            m->inter_npt[i] == 0 && !d->inter_slip[i]) {
             report(m, d, i, t, y, &r);
             if (r.slip_root > 0) {
                 slip_on_limit(m, d, i, t, y, restart);

@@ -194,6 +194,16 @@ struct rc_model {
     int *inter_hidx;     /* [ninter] index of F_h among them, -1 */
     int *inter_oidx;     /* [ninter] index of the Inacti offset, -1 */
     rc_fric *inter_fr;   /* [ninter] friction (friction.h); kind RC_FK_NONE: none */
+    /* friction per contact point (a segment surface's nodes against a plane
+     * or a box, docs/theory.md 2.7): point j of interface i has its own
+     * tangential force F_t,j (3 states, global frame [N]) at state
+     * inter_eadr[i] + inter_ns[i] + 3 j, right after the interface's own
+     * states, its stick/slip mode rc_data.pt_slip[inter_pbase[i] + j] and
+     * its slip root (rc_root_count). inter_npt[i] = 0: none. */
+    int npt;             /* points of all interfaces */
+    int *inter_npt;      /* [ninter] points of interface i */
+    int *inter_pbase;    /* [ninter] index of its first point */
+    int64_t **inter_ptslot; /* [ninter] Jacobian slots of its points (jacpattern.c), NULL: none */
     char **inter_name;   /* [ninter] "/INTER/TYPE6/<id>" */
     rc_loc *inter_loc;   /* [ninter] header of the interface card, for messages */
     int *inter_law;      /* [ninter] normal law RC_LAW_TYPE6 / RC_LAW_POWER (power.h) */
@@ -249,6 +259,8 @@ typedef struct rc_data {
     int *inter_branch;   /* [ninter] rc_branch (Iform 1, 2) */
     int *inter_track;    /* [ninter] 1: Inacti 5 offset follows the separation */
     int *inter_slip;     /* [ninter] friction: 0 stick, 1 slip */
+    int *pt_slip;        /* [npt] friction per contact point: 0 stick, 1 slip */
+    void *pt_work;       /* Jacobian scratch of the contact points (complex) */
     double *inter_dref;  /* [ninter*3] sliding direction when a stateless friction
                             law saturated (reversal root) [-] */
     double *inter_band;  /* [ninter*2] touch bands of a contact closed at zero
@@ -314,12 +326,22 @@ void rc_initial_state(const rc_model *m, double *y);
 int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, double *ydot);
 /* Jacobian values into `val` [nnz] on the fixed pattern. */
 int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val);
-/* Root functions [ninter*RC_ROOTS_PER_INTER]. */
+/* Number of root functions: RC_ROOTS_PER_INTER per interface, then one
+ * slip root per contact point with friction (model.h, inter_npt). */
+static inline int rc_root_count(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter + m->npt; }
+/* Root functions [rc_root_count(m)]. */
 void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
 /* Evaluate one interface at (t, y) in the given modes, for reports, roots
- * and events. */
+ * and events; contact points with friction all take the mode `slip`. */
 void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, double t,
                           const double *y, rc_inter_report *r);
+/* The same in the modes of d, contact points each in its own. */
+void rc_inter_report_eval_d(const rc_model *m, const rc_data *d, int i, double t, const double *y, rc_inter_report *r);
+/* Contact point j of interface i (friction per point) at (t, y) in the
+ * modes of d, its mode `slip`: its slip root, the law's tangential force on
+ * a before any projection fraw [N] (3), its weight w_j = f_j / F_n [-]. */
+void rc_point_eval(const rc_model *m, const rc_data *d, int i, int j, int slip, double t, const double *y,
+                   double *root, double fraw[3], double *w);
 /* Gravity acceleration vector of body b at time t [m/s^2]. */
 void rc_gravity(const rc_model *m, int b, double t, double g[3]);
 /* Value of the gravity time function at t [-] (1 when none is given). */

@@ -243,11 +243,16 @@ static void test_seg_force_distribution(void)
 static void seg_jacobian_check(int box, int fric)
 {
     rc_error e;
-    char deck[4096];
+    char deck[8192];
     snprintf(deck, sizeof deck, "%s%s%s%s%s%s", BOX_NODES BOX_BODY BOX_SEGS,
-             "/NODE\n2,0,0,-0.2\n/RBODY/2\nplate\n2,,,,5.0\n0.11,0.13,0.2\n0.01,0,0\n",
-             box ? "/SURF/BOX/40\ntable\n2\n0.01,-0.02,-0.199\n0.4,0.3,0.2\n1,0.05,0.02\n-0.04,1,0.03\n"
-                 : "/SURF/PLANE/40\nplate\n0,0,0.001\n0.05,-0.03,1\n2\n",
+             box == 2 ? "/NODE\n2,0,0,-0.2\n/RBODY/2\nplate\n2,,,,5.0,8\n0.11,0.13,0.2\n0.01,0,0\n"
+                      : "/NODE\n2,0,0,-0.2\n/RBODY/2\nplate\n2,,,,5.0\n0.11,0.13,0.2\n0.01,0,0\n",
+             box == 2 ? "/NODE\n20,-0.3,-0.2,-0.1\n21,0.3,-0.2,-0.1\n22,0.3,0.2,-0.1\n23,-0.3,0.2,-0.1\n24,-0.3,-0.2,0.0011\n"
+                        "25,0.3,-0.2,0.0011\n26,0.3,0.2,0.0011\n27,-0.3,0.2,0.0011\n/GRNOD/NODE/8\ng2\n20,21,22,23,24,25,26,27\n"
+                        "/SURF/SEG/40\nplate faces\n1,20,23,22,21\n2,24,25,26,27\n3,20,21,25,24\n4,21,22,26,25\n"
+                        "5,22,23,27,26\n6,23,20,24,27\n"
+             : box ? "/SURF/BOX/40\ntable\n2\n0.01,-0.02,-0.199\n0.4,0.3,0.2\n1,0.05,0.02\n-0.04,1,0.03\n"
+                   : "/SURF/PLANE/40\nplate\n0,0,0.001\n0.05,-0.03,1\n2\n",
              "/FUNCT/1\nload\n-0.01,-3.1e3\n0,0\n0.0013,2.71e3\n0.0041,1.37e4\n0.0097,5.9e4\n"
              "/FUNCT/2\nunload\n0,0\n0.002,0\n0.006,5e3\n0.011,3.1e4\n"
              "/FUNCT/3\ndv\n-10,-41\n0,0\n0.37,5.3\n3.3,71\n/FUNCT/4\ndf\n0,1\n500,0.83\n9e4,0.61\n",
@@ -260,7 +265,7 @@ static void seg_jacobian_check(int box, int fric)
         fprintf(stderr, "  %s\n", e.msg);
         return;
     }
-    ENSURE(m->inter_pair[0] == (box ? RC_PAIR_SEG_BOX : RC_PAIR_SEG_PLANE));
+    ENSURE(m->inter_pair[0] == (box == 2 ? RC_PAIR_SEG_SEG : box ? RC_PAIR_SEG_BOX : RC_PAIR_SEG_PLANE));
     rc_data *d = rc_data_new(m);
     double *y = calloc((size_t)m->ny, sizeof(double));
     rc_initial_state(m, y);
@@ -303,7 +308,7 @@ static void seg_jacobian_check(int box, int fric)
     double maxerr = 0;
     const int modes[2] = {RC_MODE_CLOSED, RC_MODE_RELEASED};
     /* friction per contact point: all sticking, all slipping, alternating */
-    ENSURE(!fric || m->inter_npt[0] == 8);
+    ENSURE(!fric || m->inter_npt[0] == (box == 2 ? 16 : 8));
     for (int md = 0; md < 2; md++)
         for (int br = 0; br < 3; br++)
             for (int trk = 0; trk < 2; trk++)
@@ -316,7 +321,7 @@ static void seg_jacobian_check(int box, int fric)
                     combos++;
                 }
     printf("    %s%s jacobian: P = %.3g m (%d nodes past the plate; -1: not counted), %d states, %lld nonzeros, %d mode combinations, max scaled |J - FD| "
-           "= %.2e\n", box ? "segments-box" : "segments-plane", fric ? " with friction per point" : "", r.p, npen, m->ny, (long long)m->nnz, combos, maxerr);
+           "= %.2e\n", box == 2 ? "segments-segments" : box ? "segments-box" : "segments-plane", fric ? " with friction per point" : "", r.p, npen, m->ny, (long long)m->nnz, combos, maxerr);
     ENSURE(bad == 0);
     ENSURE(outside == 0);
     free(y);
@@ -328,6 +333,8 @@ static void test_seg_jacobian_matches_finite_differences(void) { seg_jacobian_ch
 static void test_seg_box_jacobian_matches_finite_differences(void) { seg_jacobian_check(1, 0); }
 static void test_seg_friction_jacobian_matches_finite_differences(void) { seg_jacobian_check(0, 1); }
 static void test_seg_box_friction_jacobian_matches_finite_differences(void) { seg_jacobian_check(1, 1); }
+static void test_seg_seg_jacobian_matches_finite_differences(void) { seg_jacobian_check(2, 0); }
+static void test_seg_seg_friction_jacobian_matches_finite_differences(void) { seg_jacobian_check(2, 1); }
 
 /* A sphere (body 1, off its centre of mass) in a V-shaped valley of
  * triangles and quadrilaterals carried by a moving body 2: two face points
@@ -442,6 +449,8 @@ void suite_seg(void)
     RUN_TEST(test_seg_box_jacobian_matches_finite_differences);
     RUN_TEST(test_seg_friction_jacobian_matches_finite_differences);
     RUN_TEST(test_seg_box_friction_jacobian_matches_finite_differences);
+    RUN_TEST(test_seg_seg_jacobian_matches_finite_differences);
+    RUN_TEST(test_seg_seg_friction_jacobian_matches_finite_differences);
     RUN_TEST(test_seg_sphere_valley_forces);
     RUN_TEST(test_seg_sphere_jacobian_matches_finite_differences);
 }

@@ -396,9 +396,7 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
 static rc_status check_seg_pairs(const rc_case *c, rc_model *m, rc_error *err)
 {
     for (int i = 0; i < m->ninter; i++) {
-        if (m->inter_pair[i] != RC_PAIR_SEG_PLANE && m->inter_pair[i] != RC_PAIR_SPHERE_SEG &&
-            m->inter_pair[i] != RC_PAIR_SEG_BOX)
-            continue;
+        if (!rc_pair_multi(m->inter_pair[i])) continue;
         if (i >= c->ntype6)
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields surf_ID1/surf_ID2: a segment surface in /INTER/POWER: not supported yet (supported: /INTER/TYPE6)",
                      RC_LOC(c->power[i - c->ntype6].line_loc[0]), m->inter_name[i]);
@@ -439,10 +437,9 @@ static rc_status layout(const rc_case *c, rc_model *m, rc_error *err)
         rc_fric *fr = &m->inter_fr[i];
         /* friction per contact point (a segment surface's nodes): F_t of
          * each point after the own states, none for the interface */
-        const int per_point = fr->kind != RC_FK_NONE &&
-                              (m->inter_pair[i] == RC_PAIR_SEG_PLANE || m->inter_pair[i] == RC_PAIR_SEG_BOX);
+        const int per_point = fr->kind != RC_FK_NONE && rc_pair_nodes(m->inter_pair[i]);
         m->inter_pbase[i] = m->npt;
-        m->inter_npt[i] = per_point ? m->surf_nadr[m->inter_sa[i] + 1] - m->surf_nadr[m->inter_sa[i]] : 0;
+        m->inter_npt[i] = per_point ? rc_seg_points(m, i) : 0;
         m->npt += m->inter_npt[i];
         if (fr->kind != RC_FK_NONE) {
             if (fr->form == RC_FF_INCREMENTAL && !per_point) {

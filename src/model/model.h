@@ -67,9 +67,22 @@ typedef enum {
                                  several contact points (docs/theory.md) */
     RC_PAIR_SPHERE_SEG = 8,   /* a: sphere, b: segment surface (closest
                                  points on the candidate segments) */
-    RC_PAIR_SEG_BOX = 9       /* a: segment surface (its nodes), b: box
+    RC_PAIR_SEG_BOX = 9,      /* a: segment surface (its nodes), b: box
                                  (each node against its nearest face) */
+    RC_PAIR_SEG_SEG = 10      /* a, b: segment surfaces, node to segment
+                                 both ways (the nodes of a against the
+                                 segments of b, then those of b against a's) */
 } rc_pair_kind;
+/* Pairs with several contact points (docs/theory.md 2.7). */
+static inline int rc_pair_multi(rc_pair_kind k)
+{
+    return k == RC_PAIR_SEG_PLANE || k == RC_PAIR_SPHERE_SEG || k == RC_PAIR_SEG_BOX || k == RC_PAIR_SEG_SEG;
+}
+/* Pairs whose contact points are nodes (fixed at compile time). */
+static inline int rc_pair_nodes(rc_pair_kind k)
+{
+    return k == RC_PAIR_SEG_PLANE || k == RC_PAIR_SEG_BOX || k == RC_PAIR_SEG_SEG;
+}
 /* "sphere-plane", "cylinder-box", ... (model/geom.c) */
 const char *rc_geom_pair_name(rc_pair_kind kind);
 

@@ -31,6 +31,7 @@ A, B, C = 0.2, 0.12, 0.08        # box sizes [m]
 RHO = 7800.0                     # steel [kg/m^3]
 M = RHO * A * B * C              # mass from the mesh [kg]
 PHI = math.radians(30.0)         # azimuth of the fall line
+NPLATE, PW = 10, 0.4             # the meshed incline: segments along the fall line, width [m]
 CORNERS = [(-A / 2, -B / 2, -C / 2), (A / 2, -B / 2, -C / 2), (A / 2, B / 2, -C / 2), (-A / 2, B / 2, -C / 2),
            (-A / 2, -B / 2, C / 2), (A / 2, -B / 2, C / 2), (A / 2, B / 2, C / 2), (-A / 2, B / 2, C / 2)]
 
@@ -44,7 +45,10 @@ def rotation(tan_th):
     return rz @ ry
 
 
-def deck(tan_th, tend, dtout):
+def deck(tan_th, tend, dtout, plate=False):
+    """plate: the incline a fixed /SURF/SEG plate (a strip of quadrilaterals
+    along the fall line, its nodes on the strip's long edges, off the box's
+    path) instead of /SURF/PLANE."""
     R = rotation(tan_th)
     th = math.atan(tan_th)
     p0 = M * G * math.cos(th) / K  # static penetration of the four bottom nodes
@@ -62,7 +66,17 @@ def deck(tan_th, tend, dtout):
           line(("r", 0), ("r", 0), ("r", 0)), line(("r", 0), ("r", 0), ("r", 0)), line(("i", 0), ("i", 0), ("i", 0)),
           title="brick box (mass from the mesh)")
     d.add("/SURF/PART/31", i10(1), title="brick box faces")
-    d.plane(10, (0, 0, 0), tuple(R @ np.array([0.0, 0.0, 1.0])), title="inclined plane through the origin")
+    if plate:
+        xs = np.linspace(-0.3, 1.5, NPLATE + 1)
+        pn = [(1000 + 2 * k + e, *(R @ np.array([x, -PW / 2 if e == 0 else PW / 2, 0.0]))) for k, x in enumerate(xs)
+              for e in (0, 1)]
+        d.nodes(pn)
+        # quadrilaterals (x_k, -w/2), (x_k+1, -w/2), (x_k+1, w/2), (x_k, w/2): normal up the plate
+        segs = [line(*[("i", v) for v in (k + 1, 1000 + 2 * k, 1002 + 2 * k, 1003 + 2 * k, 1001 + 2 * k)])
+                for k in range(NPLATE)]
+        d.add("/SURF/SEG/10", *segs, title="inclined plate: fixed segments")
+    else:
+        d.plane(10, (0, 0, 0), tuple(R @ np.array([0.0, 0.0, 1.0])), title="inclined plane through the origin")
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e6 N/m")
     d.type6(1, 31, 10, 1, visc=2 * ZETA * math.sqrt(K * M), fric=MU, title="box on the incline, Fric 0.3")
     d.grav(1, "Z", -G)
@@ -142,6 +156,24 @@ def main():
                 f"[{r.fn[sl, 0].min():.4g}, {r.fn[sl, 0].max():.4g}] N about m g cos(theta) = {M * G * math.cos(th):.4g} N "
                 f"(the pitch)")
     rcval.check_ledger("seg_box_incline.slide.ledger", r, 1e-5)
+
+    # 3. sliding on a meshed incline: the box's surface against a fixed
+    #    segment surface (node to segment both ways), the same references
+    r = rcval.Result(rcval.run(deck(tan_th, 1.0, 0.01, plate=True), name="plate"))
+    xs, xu, vs, vu = along(r, tan_th)
+    cf = np.polyfit(r.t[sl], xs[sl], 2)
+    a = 2 * cf[0]
+    resid = np.max(np.abs(xs[sl] - np.polyval(cf, r.t[sl])))
+    e = rcval.rel(a, a_ref)
+    rcval.check("seg_box_incline.plate.acceleration", e < 1e-5 and resid < 1e-5,
+                f"on a fixed /SURF/SEG plate of {NPLATE} quadrilaterals: a = {a:.9f} m/s^2, g (sin theta - mu cos theta) "
+                f"= {a_ref:.9f}, rel. error {e:.2e} (< 1e-5), max fit residual {resid:.1e} m (< 1e-5), {xs[-1]:.3f} m "
+                f"down, across {np.max(np.abs(vu)):.1e} m/s")
+    ratio = np.linalg.norm(r.ffric[sl, 0], axis=1) / r.fn[sl, 0]
+    e = float(np.max(np.abs(ratio - MU)))
+    rcval.check("seg_box_incline.plate.friction", e < 1e-9 and bool(np.all(r.slip[sl, 0] == 1)),
+                f"|F_t| / F_n over [0.2, 1] s: max |ratio - mu| = {e:.1e} (< 1e-9), every record slipping")
+    rcval.check_ledger("seg_box_incline.plate.ledger", r, 1e-5)
     rcval.finish()
 
 

@@ -118,29 +118,19 @@ void rc_inter_report_eval_d(const rc_model *m, const rc_data *d, int i, double t
                 d->pt_slip + m->inter_pbase[i], y, r);
 }
 
-void rc_point_eval(const rc_model *m, const rc_data *d, int i, int j, int slip, double t, const double *y,
-                   double *root, double fraw[3], double *w)
+void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip, double t, const double *y, double *out)
 {
     (void)t;
-    *root = -1.0;
-    *w = 0.0;
-    for (int k = 0; k < 3; k++) fraw[k] = 0.0;
-    if (d->inter_mode[i] != RC_MODE_CLOSED || m->inter_npt[i] == 0) return;
-    /* the normal law as type6 has it, then point j alone */
+    const int npt = m->inter_npt[i];
+    for (int j = 0; j < npt; j++) {
+        out[5 * j] = -1.0;
+        for (int k = 1; k < 5; k++) out[5 * j + k] = 0.0;
+    }
+    if (d->inter_mode[i] != RC_MODE_CLOSED || npt == 0) return;
     t6out_r o;
     type6_r(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
-            d->pt_slip + m->inter_pbase[i], rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y),
-            y + m->inter_eadr[i], NULL, NULL, NULL, &o, NULL);
-    const rc_fric *fr = &m->inter_fr[i];
-    const double *ya = rc_body_state(m, m->inter_ba[i], y), *yb = rc_body_state(m, m->inter_bb[i], y);
-    const double *po = fr->obody < 0 ? m->ground_y0 : rc_body_state(m, fr->obody, y);
-    segctx_r c;
-    segfric_ctx_r(m, i, o.fel + o.fd, o.kn, o.off, ya, yb, &c);
-    segpt_r q;
-    segfric_point_r(m, i, &c, j, slip, ya, yb, y + m->inter_eadr[i] + m->inter_ns[i] + 3 * j, po, &q);
-    *root = q.root;
-    *w = q.w;
-    for (int k = 0; k < 3; k++) fraw[k] = q.fraw[k];
+            slip ? slip : d->pt_slip + m->inter_pbase[i], rc_body_state(m, m->inter_ba[i], y),
+            rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, out);
 }
 
 void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g)

@@ -105,45 +105,52 @@ static void reset_friction(const rc_model *m, rc_data *d, int i, double *y, int 
     }
 }
 
-/* Contact point j of interface i from stick to slip: its state takes the
- * applied force (spring and stick damper), then that direction on the limit;
- * from slip to stick: the state takes the force where it is (on the limit). */
-static void point_flip(const rc_model *m, rc_data *d, int i, int j, double t, double *y, int *changed)
-{
-    double root, fr1[3], w;
-    int *sl = d->pt_slip + m->inter_pbase[i] + j;
-    double *ft = y + m->inter_eadr[i] + m->inter_ns[i] + 3 * j;
-    rc_point_eval(m, d, i, j, *sl, t, y, &root, fr1, &w);
-    for (int k = 0; k < 3; k++) set_state(ft + k, fr1[k], changed);
-    if (!*sl) {
-        rc_point_eval(m, d, i, j, 1, t, y, &root, fr1, &w);
-        const double nr = fr1[0] * fr1[0] + fr1[1] * fr1[1] + fr1[2] * fr1[2];
-        if (nr > 0 && isfinite(nr)) /* a zero limit (no share) keeps the direction */
-            for (int k = 0; k < 3; k++) set_state(ft + k, fr1[k], changed);
-    }
-    *sl = !*sl;
-    *changed = 1;
-}
-
 /* Friction per contact point of interface i: the points whose slip roots
- * crossed flip (roots: the interface's point roots; NULL: those whose root
- * is positive, in stick only, after a mode change). Returns the number of
- * points flipped. */
+ * crossed flip (roots: the interface's point roots; NULL: those sticking
+ * with a positive root, after a mode change). From stick to slip a point's
+ * state takes the applied force (spring and stick damper), then that
+ * direction on the limit; from slip to stick, the force where it is (on the
+ * limit). Three evaluations of the interface, whatever the number of points
+ * flipped. Returns the number of points flipped. */
 static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y, const int *roots, int *changed)
 {
-    if (m->inter_npt[i] == 0 || d->inter_mode[i] != RC_MODE_CLOSED) return 0;
-    int n = 0;
-    for (int j = 0; j < m->inter_npt[i]; j++) {
-        if (roots && roots[j] == 0) continue;
-        if (!roots) {
-            double root, fr1[3], w;
-            if (d->pt_slip[m->inter_pbase[i] + j]) continue;
-            rc_point_eval(m, d, i, j, 0, t, y, &root, fr1, &w);
-            if (!(root > 0)) continue;
-        }
-        point_flip(m, d, i, j, t, y, changed);
-        n++;
+    const int npt = m->inter_npt[i];
+    if (npt == 0 || d->inter_mode[i] != RC_MODE_CLOSED) return 0;
+    int *sl = d->pt_slip + m->inter_pbase[i];
+    double *out = d->pt_work; /* 5 per point (rc_data_new) */
+    char *sel = calloc((size_t)npt, 1);
+    int *md = malloc((size_t)npt * sizeof(int));
+    if (!sel || !md) {
+        free(sel);
+        free(md);
+        return 0;
     }
+    if (!roots) rc_points_eval(m, d, i, NULL, t, y, out);
+    int n = 0;
+    for (int j = 0; j < npt; j++) {
+        sel[j] = roots ? roots[j] != 0 : !sl[j] && out[5 * j] > 0;
+        n += sel[j];
+    }
+    if (n > 0) {
+        double *ft = y + m->inter_eadr[i] + m->inter_ns[i];
+        rc_points_eval(m, d, i, NULL, t, y, out);
+        for (int j = 0; j < npt; j++)
+            if (sel[j])
+                for (int k = 0; k < 3; k++) set_state(ft + 3 * j + k, out[5 * j + 1 + k], changed);
+        for (int j = 0; j < npt; j++) md[j] = sel[j] ? 1 : sl[j];
+        rc_points_eval(m, d, i, md, t, y, out);
+        for (int j = 0; j < npt; j++) {
+            if (!sel[j] || sl[j]) continue;
+            const double *f = out + 5 * j + 1, nr = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
+            if (nr > 0 && isfinite(nr)) /* a zero limit (no share) keeps the direction */
+                for (int k = 0; k < 3; k++) set_state(ft + 3 * j + k, f[k], changed);
+        }
+        for (int j = 0; j < npt; j++)
+            if (sel[j]) sl[j] = !sl[j];
+        *changed = 1;
+    }
+    free(sel);
+    free(md);
     return n;
 }
 

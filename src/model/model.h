@@ -350,11 +350,11 @@ void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int tr
                           const double *y, rc_inter_report *r);
 /* The same in the modes of d, contact points each in its own. */
 void rc_inter_report_eval_d(const rc_model *m, const rc_data *d, int i, double t, const double *y, rc_inter_report *r);
-/* Contact point j of interface i (friction per point) at (t, y) in the
- * modes of d, its mode `slip`: its slip root, the law's tangential force on
- * a before any projection fraw [N] (3), its weight w_j = f_j / F_n [-]. */
-void rc_point_eval(const rc_model *m, const rc_data *d, int i, int j, int slip, double t, const double *y,
-                   double *root, double fraw[3], double *w);
+/* The contact points of interface i (friction per point) at (t, y), closed
+ * in the modes of d, each point j in mode slip[j] (NULL: its mode in d):
+ * per point 5 values into out: its slip root, the law's tangential force
+ * on a before any projection (3) [N], its share w_j = f_j / F_n [-]. */
+void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip, double t, const double *y, double *out);
 /* Gravity acceleration vector of body b at time t [m/s^2]. */
 void rc_gravity(const rc_model *m, int b, double t, double g[3]);
 /* Value of the gravity time function at t [-] (1 when none is given). */

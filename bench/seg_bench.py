@@ -112,10 +112,13 @@ def run(ricochet, path, out):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--n", default="125,80", help="bottom face quadrilaterals along x, y")
-    ap.add_argument("--plate", type=int, default=130, help="plate quadrilaterals along x (y in proportion)")
+    ap.add_argument("--plate", type=int, default=20, help="plate quadrilaterals along x (y in proportion)")
     ap.add_argument("--ricochet", default=os.path.join(ROOT, "build", "ricochet"))
     ap.add_argument("--out", default=os.path.join(ROOT, "build", "bench", "seg"))
     ap.add_argument("--only", default="", help="analytic or meshed")
+    ap.add_argument("--tslide", type=float, default=0.1, help="simulated time of the sliding runs [s] (the box stops "
+                    "at V0 / (mu g) = 0.34 s)")
+    ap.add_argument("--trest", type=float, default=0.2, help="simulated time of the resting runs [s]")
     args = ap.parse_args()
     nx, ny = (int(v) for v in args.n.split(","))
     os.makedirs(args.out, exist_ok=True)
@@ -123,7 +126,7 @@ def main():
     for meshed in (False, True):
         if args.only and args.only != ("meshed" if meshed else "analytic"):
             continue
-        for slide, tend in ((False, 0.2), (True, 0.4)):
+        for slide, tend in ((False, args.trest), (True, args.tslide)):
             d, (nbox, nplate) = deck(meshed, slide, nx, ny, args.plate, tend)
             name = f"{'meshed' if meshed else 'analytic'}_{'slide' if slide else 'rest'}"
             path = os.path.join(args.out, name + ".rad")

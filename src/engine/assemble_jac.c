@@ -50,7 +50,7 @@ static void dense_body(const rc_model *m, int b, double t, const double *y, doub
  * 3 npt) values; ptslot (NULL: not wanted): the point-state rows of the
  * same columns are added into val through it (inter_ptslot). */
 static void dense_inter(const rc_model *m, int i, int mode, int branch, int track, int slip, const int *pslip,
-                        const double *y, double *out, T *work, const int64_t *ptslot, double *val)
+                        const double *y, double *out, T *work, const int64_t *ptslot, double *val, T *ncache)
 {
     const rc_jblock *jb = &m->jb_inter[i];
     const int ba = m->inter_ba[i], bb = m->inter_bb[i], ns = m->inter_ns[i], np3 = 3 * m->inter_npt[i];
@@ -67,7 +67,7 @@ static void dense_inter(const rc_model *m, int i, int mode, int branch, int trac
         *yp += I * RC_CSTEP;
         T acc[12] = {0};
         type6_c(m, i, mode, branch, track, slip, pslip, ya, yb, ys, fa ? acc : NULL, fb ? acc + 6 : NULL, sdot, NULL,
-                NULL);
+                NULL, ncache);
         *yp = creal(*yp);
         int r = 0;
         if (fa)
@@ -106,9 +106,9 @@ static void points_jac(const rc_model *m, rc_data *d, int i, const double *y, do
     for (int k = 0; k < ns + 3 * npt; k++) ys[k] = yr[k];
     t6out_c o;
     type6_c(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], pslip, ya, yb, ys, NULL,
-            NULL, NULL, &o, NULL);
+            NULL, NULL, &o, NULL, d->node_cache);
     segctx_c c;
-    segfric_ctx_c(m, i, o.fel + o.fd, o.kn, o.off, ya, yb, &c);
+    segfric_ctx_c(m, i, o.fel + o.fd, o.kn, o.off, ya, yb, d->node_cache, &c);
     for (int j = 0; j < npt; j++) {
         T Fj[3] = {yr[ns + 3 * j], yr[ns + 3 * j + 1], yr[ns + 3 * j + 2]};
         for (int k = 0; k < 3; k++) {
@@ -149,7 +149,7 @@ void rc_jac_dense_block(const rc_model *m, int is_inter, int e, int mode, int br
         for (int k = 0; k < m->jb_inter[e].nrow * m->jb_inter[e].ncol; k++) out[k] = NAN;
         return;
     }
-    dense_inter(m, e, mode, branch, track, slip, NULL, y, out, work, NULL, NULL);
+    dense_inter(m, e, mode, branch, track, slip, NULL, y, out, work, NULL, NULL, NULL);
     free(work);
 }
 
@@ -174,7 +174,8 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
         if (d->inter_mode[i] != RC_MODE_INACTIVE && m->jb_inter[i].ncol > 0) {
             const int np = m->inter_npt[i];
             dense_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
-                        d->pt_slip + m->inter_pbase[i], y, dense, d->pt_work, np > 0 ? m->inter_ptslot[i] : NULL, val);
+                        d->pt_slip + m->inter_pbase[i], y, dense, d->pt_work, np > 0 ? m->inter_ptslot[i] : NULL, val,
+                        d->node_cache);
             scatter(&m->jb_inter[i], dense, val);
             if (np > 0 && d->inter_mode[i] == RC_MODE_CLOSED) points_jac(m, d, i, y, val);
         }
@@ -220,7 +221,7 @@ void rc_inter_report_rate(const rc_model *m, int i, int mode, int branch, int tr
         for (int k = 0; k < RC_NB; k++) yb[k] += I * RC_CSTEP * ydot[m->body_yadr[bb] + k];
     for (int k = 0; k < ns; k++) ys[k] = y[m->inter_eadr[i] + k] + I * RC_CSTEP * ydot[m->inter_eadr[i] + k];
     t6out_c o;
-    type6_c(m, i, mode, branch, track, slip, NULL, ya, yb, ys, NULL, NULL, NULL, &o, NULL);
+    type6_c(m, i, mode, branch, track, slip, NULL, ya, yb, ys, NULL, NULL, NULL, &o, NULL, NULL);
     if (ys != ysl) free(ys);
     dr->p = cimag(o.p) / RC_CSTEP;
     dr->vn = cimag(o.vn) / RC_CSTEP;

@@ -39,7 +39,7 @@ int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, do
         }
         type6_r(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
                 d->pt_slip + m->inter_pbase[i], rc_body_state(m, ba, y), rc_body_state(m, bb, y), y + m->inter_eadr[i],
-                acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot, NULL, NULL);
+                acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot, NULL, NULL, d->node_cache);
         for (int k = 0; k < nst; k++)
             if (!isfinite(sdot[k])) {
                 d->fail_inter = i;
@@ -78,7 +78,7 @@ static void report_eval(const rc_model *m, int i, int mode, int branch, int trac
 {
     t6out_r o;
     type6_r(m, i, mode, branch, track, slip, pslip, rc_body_state(m, m->inter_ba[i], y),
-            rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, NULL);
+            rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, NULL, NULL);
     r->p = o.p;
     r->vn = o.vn;
     r->p_raw = o.p_raw;
@@ -130,7 +130,7 @@ void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip,
     t6out_r o;
     type6_r(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
             slip ? slip : d->pt_slip + m->inter_pbase[i], rc_body_state(m, m->inter_ba[i], y),
-            rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, out);
+            rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, out, d->node_cache);
 }
 
 void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
@@ -152,7 +152,7 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
             t6out_r o;
             type6_r(m, i, mode, br, trk, d->inter_slip[i], d->pt_slip + m->inter_pbase[i],
                     rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i],
-                    NULL, NULL, NULL, &o, pout);
+                    NULL, NULL, NULL, &o, pout, d->node_cache);
             for (int j = 0; j < npt; j++) gp[j] = pout[5 * j];
         }
         rc_inter_report_eval_d(m, d, i, t, y, &r);

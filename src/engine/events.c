@@ -13,6 +13,7 @@
 #include "model/coupling.h"
 #include "engine/events.h"
 #include "model/power.h"
+#include "model/segsurf.h"
 
 /* Touch band: RC_TOUCH_ULPS ulps of the coordinates, at least RC_TOUCH_REL
  * of the penetration scale (docs/theory.md 5.1) [-]. */
@@ -35,6 +36,10 @@ rc_data *rc_data_new(const rc_model *m)
      * point) and of the Jacobian (complex own and point states and rates) */
     int maxpt = 0;
     for (int i = 0; i < m->ninter; i++) maxpt = m->inter_npt[i] > maxpt ? m->inter_npt[i] : maxpt;
+    int maxnode = 0;
+    for (int i = 0; i < m->ninter; i++)
+        if (rc_pair_nodes(m->inter_pair[i]) && rc_seg_points(m, i) > maxnode) maxnode = rc_seg_points(m, i);
+    d->node_cache = calloc(2 * RC_NODE_CACHE * (size_t)maxnode + 2, sizeof(double));
     d->pt_slip = calloc((size_t)m->npt + 1, sizeof(int));
     d->pt_work = calloc(5 * (size_t)maxpt + 4 * ((size_t)RC_NS_MAX + 3 * (size_t)maxpt) + 16, sizeof(double));
     int imp_ok = 1;
@@ -44,7 +49,7 @@ rc_data *rc_data_new(const rc_model *m)
         imp_ok = d->imp_free && d->imp_scratch;
     }
     if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->cpl || !imp_ok ||
-        !d->pt_slip || !d->pt_work) {
+        !d->pt_slip || !d->pt_work || !d->node_cache) {
         rc_data_free(d);
         return NULL;
     }
@@ -63,6 +68,7 @@ void rc_data_free(rc_data *d)
     free(d->inter_band);
     free(d->pt_slip);
     free(d->pt_work);
+    free(d->node_cache);
     rc_cpl_data_free(d->cpl);
     free(d->imp_free);
     free(d->imp_scratch);

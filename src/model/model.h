@@ -40,6 +40,7 @@
  * spring released from the limit rings back exactly to it, and a touch must
  * not count as a crossing (docs/theory.md 3.5) [-]. */
 #define RC_SLIP_BAND 1e-6
+#define RC_NODE_CACHE 11 /* values per point of the node geometry cache (rc_data.node_cache) */
 #define RC_NS_MAX 11 /* own states of an interface: energies, F_h, offset, F_t, filter, W_fric */
 #define RC_JB_MAX ((2 * 6 + RC_NS_MAX) * (2 * RC_NB + RC_NS_MAX)) /* largest dense block */
 
@@ -274,6 +275,8 @@ typedef struct rc_data {
     int *inter_slip;     /* [ninter] friction: 0 stick, 1 slip */
     int *pt_slip;        /* [npt] friction per contact point: 0 stick, 1 slip */
     void *pt_work;       /* Jacobian scratch of the contact points (complex) */
+    void *node_cache;    /* node geometry of a node pair, RC_NODE_CACHE complex
+                            values per point (kernels.inc, seg_fill) */
     double *inter_dref;  /* [ninter*3] sliding direction when a stateless friction
                             law saturated (reversal root) [-] */
     double *inter_band;  /* [ninter*2] touch bands of a contact closed at zero

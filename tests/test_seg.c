@@ -133,9 +133,14 @@ static void test_seg_read_errors(void)
                      "field part_ID", "no such part");
     EXPECT_SEG_ERROR(BOX_NODES BOX_BODY "/SURF/PART/30\nx\n" RUN_TAIL, "card /SURF/PART/30", "at least one part id");
     /* pairs and laws not supported yet */
-    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS "/SURF/CYL/40\ns\n0\n0,2,0\n1,0,0\n0.5,1\n" LINEAR T6 RUN_TAIL,
-                     "card /INTER/TYPE6/1", "fields surf_ID1/surf_ID2", "segment surface against cylinder",
-                     "not supported yet");
+    /* a cylinder against a segment surface: one point, TYPE6 and POWER */
+    {
+        rc_error e;
+        rc_model *m = seg_compile(BOX_NODES BOX_BODY BOX_SEGS "/SURF/CYL/40\ns\n0\n0,2,0\n1,0,0\n0.5,1\n" LINEAR T6
+                                  RUN_TAIL, &e);
+        ENSURE(m && m->inter_pair[0] == RC_PAIR_CYL_SEG && m->inter_npt[0] == 0);
+        rc_model_free(m);
+    }
     EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS "/NODE\n2,0,0,-0.2\n/RBODY/2\nball\n2,,,,5.0\n0.1,0.1,0.1\n0,0,0\n"
                      "/SURF/ELLIPS/40\ns\n0,2,2\n0,0,-0.2\n0.1,0.1,0.1\n" LINEAR
                      "/INTER/TYPE6/1\nball on box\n40,30\n,0.3\n\n1\n\n\n" RUN_TAIL,
@@ -336,6 +341,55 @@ static void test_seg_box_friction_jacobian_matches_finite_differences(void) { se
 static void test_seg_seg_jacobian_matches_finite_differences(void) { seg_jacobian_check(2, 0); }
 static void test_seg_seg_friction_jacobian_matches_finite_differences(void) { seg_jacobian_check(2, 1); }
 
+/* A roller (cylinder on body 2, axis y, moving and turning) on the top face
+ * of the meshed box (body 1, moving), TYPE6 with a nonlinear load curve,
+ * Visc and Fric: the plane of the segment under the roller's centre; closed
+ * in stick and slip, released, against central differences. */
+static void test_seg_cyl_jacobian_matches_finite_differences(void)
+{
+    rc_error e;
+    rc_model *m = seg_compile(BOX_NODES BOX_BODY BOX_SEGS
+                              "/NODE\n2,0.01,0.003,0.0785\n/RBODY/2\nroller\n2,,,,0.7\n0.0001,0.00002,0.0001\n0,0,0\n"
+                              "/SURF/CYL/40\nroller\n2\n0.01,0.003,0.0785\n0.02,1,0.01\n0.02,0.03\n"
+                              "/FUNCT/1\nload\n0,0\n0.001,800\n0.004,9000\n"
+                              "/INTER/TYPE6/1\nroller on box\n40,30\n0.2,0.3\n\n1\n\n310\n" RUN_TAIL,
+                              &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    ENSURE(m->inter_pair[0] == RC_PAIR_CYL_SEG);
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    rc_initial_state(m, y);
+    const double s[26] = {0.0003, -0.0002, 0.0301, 0.999, 0.011, -0.013, 0.007, 0.21, -0.13, -0.17, 1.1, -0.3, 0.7,
+                          0.0102, 0.0027, 0.0783, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 13.7, 2.2};
+    for (int b = 0; b < 2; b++) memcpy(y + m->body_yadr[b], s + 13 * b, 13 * sizeof(double));
+    for (int k = 26; k < m->ny; k++) y[k] = 0.013 * (k - 25);
+    rc_inter_report r;
+    rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+    ENSURE(r.p > 0 && r.p < 0.004);
+    int bad = 0, outside = 0, combos = 0;
+    double maxerr = 0;
+    const int modes[2] = {RC_MODE_CLOSED, RC_MODE_RELEASED};
+    for (int md = 0; md < 2; md++)
+        for (int sl = 0; sl < 2; sl++) {
+            d->inter_mode[0] = modes[md];
+            d->inter_slip[0] = sl;
+            maxerr = fmax(maxerr, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
+            combos++;
+        }
+    printf("    cylinder-segments jacobian: P = %.3g m, normal %.3f %.3f %.3f, %d states, %lld nonzeros, %d mode "
+           "combinations, max scaled |J - FD| = %.2e\n",
+           r.p, r.normal[0], r.normal[1], r.normal[2], m->ny, (long long)m->nnz, combos, maxerr);
+    ENSURE(bad == 0);
+    ENSURE(outside == 0);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 /* A sphere (body 1, off its centre of mass) in a V-shaped valley of
  * triangles and quadrilaterals carried by a moving body 2: two face points
  * past the surface, every mode, against central differences; and the
@@ -451,6 +505,7 @@ void suite_seg(void)
     RUN_TEST(test_seg_box_friction_jacobian_matches_finite_differences);
     RUN_TEST(test_seg_seg_jacobian_matches_finite_differences);
     RUN_TEST(test_seg_seg_friction_jacobian_matches_finite_differences);
+    RUN_TEST(test_seg_cyl_jacobian_matches_finite_differences);
     RUN_TEST(test_seg_sphere_valley_forces);
     RUN_TEST(test_seg_sphere_jacobian_matches_finite_differences);
 }

@@ -70,9 +70,11 @@ typedef enum {
                                  points on the candidate segments) */
     RC_PAIR_SEG_BOX = 9,      /* a: segment surface (its nodes), b: box
                                  (each node against its nearest face) */
-    RC_PAIR_SEG_SEG = 10      /* a, b: segment surfaces, node to segment
+    RC_PAIR_SEG_SEG = 10,     /* a, b: segment surfaces, node to segment
                                  both ways (the nodes of a against the
                                  segments of b, then those of b against a's) */
+    RC_PAIR_CYL_SEG = 11      /* a: cylinder, b: segment surface (the plane
+                                 of the segment under the cylinder's centre) */
 } rc_pair_kind;
 /* Pairs with several contact points (docs/theory.md 2.7). */
 static inline int rc_pair_multi(rc_pair_kind k)

@@ -341,6 +341,43 @@ static void test_seg_box_friction_jacobian_matches_finite_differences(void) { se
 static void test_seg_seg_jacobian_matches_finite_differences(void) { seg_jacobian_check(2, 0); }
 static void test_seg_seg_friction_jacobian_matches_finite_differences(void) { seg_jacobian_check(2, 1); }
 
+/* IRS/IRm: the box (surf_ID1, body 1) resting 1.1 mm into the top face of
+ * a meshed plate (surf_ID2, body 2): IRm = 1 reverses the plate's normals
+ * (the side above the plate is then inside it: the box's top nodes, 60 mm
+ * up, are 58.9 mm in), IRS = 1 the box's (which its bottom nodes do not
+ * use), 2 keeps /SURF/SEG as written. */
+static void test_seg_orientation_irs_irm(void)
+{
+    const char *irs[4] = {"", ",1", ",,1", ",2,2"};
+    const double expect[4] = {0.0011, 0.0011, 0.0589, 0.0011};
+    for (int k = 0; k < 4; k++) {
+        char deck[4096];
+        snprintf(deck, sizeof deck, "%s%s%s", BOX_NODES BOX_BODY BOX_SEGS,
+                 "/NODE\n2,0,0,-0.05\n20,-0.3,-0.2,-0.1\n21,0.3,-0.2,-0.1\n22,0.3,0.2,-0.1\n23,-0.3,0.2,-0.1\n"
+                 "24,-0.3,-0.2,0.0011\n25,0.3,-0.2,0.0011\n26,0.3,0.2,0.0011\n27,-0.3,0.2,0.0011\n/GRNOD/NODE/8\ng2\n"
+                 "20,21,22,23,24,25,26,27\n/RBODY/2\nplate\n2,,,,5.0,8\n0.11,0.13,0.2\n0.01,0,0\n"
+                 "/SURF/SEG/40\nplate faces\n1,20,23,22,21\n2,24,25,26,27\n3,20,21,25,24\n4,21,22,26,25\n"
+                 "5,22,23,27,26\n6,23,20,24,27\n" LINEAR "/INTER/TYPE6/1\nbox on plate\n30,40\n\n",
+                 irs[k]);
+        strncat(deck, "\n1\n\n\n" RUN_TAIL, sizeof deck - strlen(deck) - 1);
+        rc_error e;
+        rc_model *m = seg_compile(deck, &e);
+        ENSURE(m != NULL);
+        if (!m) {
+            fprintf(stderr, "  %s\n", e.msg);
+            continue;
+        }
+        double *y = calloc((size_t)m->ny, sizeof(double));
+        rc_initial_state(m, y);
+        rc_inter_report r;
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+        printf("    IRS/IRm line \"%s\": P = %.6g m (expected %.6g)\n", irs[k], r.p, expect[k]);
+        ENSURE_NEAR(r.p, expect[k], 1e-12, 0);
+        free(y);
+        rc_model_free(m);
+    }
+}
+
 /* A roller (cylinder on body 2, axis y, moving and turning) on the top face
  * of the meshed box (body 1, moving), TYPE6 with a nonlinear load curve,
  * Visc and Fric: the plane of the segment under the roller's centre; closed
@@ -506,6 +543,7 @@ void suite_seg(void)
     RUN_TEST(test_seg_seg_jacobian_matches_finite_differences);
     RUN_TEST(test_seg_seg_friction_jacobian_matches_finite_differences);
     RUN_TEST(test_seg_cyl_jacobian_matches_finite_differences);
+    RUN_TEST(test_seg_orientation_irs_irm);
     RUN_TEST(test_seg_sphere_valley_forces);
     RUN_TEST(test_seg_sphere_jacobian_matches_finite_differences);
 }

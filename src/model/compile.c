@@ -318,8 +318,12 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     /* order the pair (a: sphere or cylinder) and name its kind (model/geom.c) */
     char where[600];
     snprintf(where, sizeof where, RC_LOCFMT "card %s", RC_LOC(t6->line_loc[0]), card);
+    const int s1_in = s1;
     rc_status pst = rc_geom_pair(m, s1, s2, &s1, &s2, &m->inter_pair[i], where, err);
     if (pst) return pst;
+    /* IRS belongs to surf_ID1, IRm to surf_ID2, whichever is surface a */
+    m->inter_orient[2 * i] = s1 == s1_in ? t6->irs : t6->irm;
+    m->inter_orient[2 * i + 1] = s1 == s1_in ? t6->irm : t6->irs;
     m->inter_sa[i] = s1;
     m->inter_sb[i] = s2;
     m->inter_ba[i] = m->surf_body[s1];
@@ -597,6 +601,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->inter_oidx, m->ninter);
     ALLOC(m->inter_fr, m->ninter);
     ALLOC(m->inter_npt, m->ninter);
+    ALLOC(m->inter_orient, 2 * m->ninter);
     ALLOC(m->inter_pbase, m->ninter);
     ALLOC(m->inter_ptslot, m->ninter);
     ALLOC(m->inter_name, m->ninter);
@@ -653,7 +658,7 @@ void rc_model_free(rc_model *m)
                       m->inter_law, m->inter_pw, m->inter_pscale, m->inter_fscale, m->inter_kscale,
                       m->inter_vscale, m->inter_mred, m->ewt_rel, m->body_loc, m->inter_loc,
                       m->surf_nadr, m->surf_node, m->surf_sadr, m->surf_seg, m->inter_npt, m->inter_pbase,
-                      m->inter_ptslot};
+                      m->inter_ptslot, m->surf_seg_turned, m->inter_orient};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     free(m);
 }

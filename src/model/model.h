@@ -177,6 +177,8 @@ struct rc_model {
     double *surf_node;   /* [3*nodes] */
     int *surf_sadr;      /* [nsurf+1] */
     int *surf_seg;       /* [4*segments] */
+    signed char *surf_seg_turned; /* [segments] 1: a solid's face turned by /SURF/PART to
+                            point out of its solid (its element numbering points in) */
     struct rc_segmesh *surf_mesh; /* [nsurf] adjacency and broad-phase grid (segsurf.h) */
 
     /* curves */
@@ -210,6 +212,9 @@ struct rc_model {
     int *inter_hidx;     /* [ninter] index of F_h among them, -1 */
     int *inter_oidx;     /* [ninter] index of the Inacti offset, -1 */
     rc_fric *inter_fr;   /* [ninter] friction (friction.h); kind RC_FK_NONE: none */
+    int *inter_orient;   /* [2*ninter] segment normals of surfaces a, b: TYPE6 IRS/IRm of
+                            that surface: 0 as built (solid faces out), 1 reversed,
+                            2 never reversed (solid faces as their element numbers them) */
     /* friction per contact point (a segment surface's nodes against a plane
      * or a box, docs/theory.md 2.7): point j of interface i has its own
      * tangential force F_t,j (3 states, global frame [N]) at state

@@ -26,6 +26,7 @@ typedef struct seg_face {
     int node[4]; /* node ids; node[3] = 0: a triangle */
     int key[4];  /* sorted ids, for finding shared faces */
     int solid;   /* 1: face of a solid (dropped when two solids share it) */
+    int turned;  /* 1: turned to point out of its solid */
     rc_loc loc;  /* the element's or the segment's line */
 } seg_face;
 
@@ -85,6 +86,7 @@ static int solid_face(const rc_case *c, const int *v, int nv, const double *ctr,
     memset(f->node, 0, sizeof f->node);
     for (int k = 0; k < nu; k++) f->node[k] = out < 0 ? u[nu - 1 - k] : u[k];
     f->solid = 1;
+    f->turned = out < 0;
     face_key(f);
     return 1;
 }
@@ -134,6 +136,7 @@ static rc_status part_faces(const rc_case *c, const rc_case_surf *cs, seg_face *
             memset(g, 0, sizeof *g);
             for (int j = 0; j < el->nn && j < 4; j++) g->node[j] = el->nodes[j];
             g->solid = 0;
+            g->turned = 0;
             g->loc = el->loc;
             face_key(g);
             continue;
@@ -191,6 +194,7 @@ rc_status rc_seg_surface(const rc_case *c, rc_model *m, int s, rc_error *err)
             memcpy(f[k].node, cs->seg + 4 * k, sizeof f[k].node);
             f[k].loc = cs->seg_loc[k];
             f[k].solid = 0;
+            f[k].turned = 0;
         }
     }
     /* the nodes: sorted unique ids */
@@ -250,6 +254,13 @@ rc_status rc_seg_surface(const rc_case *c, rc_model *m, int s, rc_error *err)
         goto done;
     }
     m->surf_seg = sg;
+    signed char *tu = realloc(m->surf_seg_turned, (size_t)(s0 + nf + 1));
+    if (!tu) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory");
+        goto done;
+    }
+    m->surf_seg_turned = tu;
+    for (int k = 0; k < nf; k++) tu[s0 + k] = (signed char)f[k].turned;
     for (int k = 0; k < nn; k++) {
         const double *x = node_x(c, ids[k]);
         for (int j = 0; j < 3; j++) nx[3 * (n0 + k) + j] = x[j] - org[j];

@@ -76,9 +76,11 @@
 #define RC_OUT_UNIT_LEN 128
 
 /* Dimensions. */
-enum { D_TIME, D_BODY, D_INTER, D_VEC3, D_QUAT, D_EVENT, D_COUPLING, D_SURF, D_SPARAM, D_SIDE, D_COUNT };
+enum { D_TIME, D_BODY, D_INTER, D_VEC3, D_QUAT, D_EVENT, D_COUPLING, D_SURF, D_SPARAM, D_SIDE, D_SEGNODE, D_SEGMENT,
+       D_CORNER, D_COUNT };
 static const char *const dim_name[D_COUNT] = {"time",     "body",    "inter",             "vec3", "quat",
-                                              "event",    "coupling", "surface", "surface_parameter", "side"};
+                                              "event",    "coupling", "surface", "surface_parameter", "side",
+                                              "segment_node", "segment", "corner"};
 /* Origin of the CF time axis: simulated time 0 (a convention, not a date). */
 #define RC_OUT_TIME_ORIGIN "1970-01-01 00:00:00"
 
@@ -95,6 +97,7 @@ enum {
     V_CPL_ID, V_CPL_TYPE, V_CPL_FORCE, V_CPL_LENGTH, V_CPL_F1, V_CPL_F2, V_CPL_LOWEST,
     V_BODY_COORD, V_INTER_COORD, V_CPL_COORD,
     V_SURF_COORD, V_SURF_KIND, V_SURF_BODY, V_SURF_POINT, V_SURF_NORMAL, V_SURF_RADIUS, V_SURF_PARAM, V_INTER_SURF,
+    V_SURF_NODE0, V_SURF_SEG0, V_SEG_NODE, V_SEG_CORNER,
     V_COUNT
 };
 
@@ -190,8 +193,8 @@ static const var_spec var_table[V_COUNT] = {
     /* surface geometry, in the frame of the carrying body */
     [V_SURF_COORD] = {"surface", NC_INT, 1, {D_SURF}, U_ONE, "surface identifier (/SURF id)",
                       "coordinate variable"},
-    [V_SURF_KIND] = {"surface_kind", NC_STRING, 1, {D_SURF}, U_ONE, "kind of analytic surface",
-                     "PLANE, SPHERE, CYLINDER or BOX"},
+    [V_SURF_KIND] = {"surface_kind", NC_STRING, 1, {D_SURF}, U_ONE, "kind of surface",
+                     "PLANE, SPHERE, CYLINDER, BOX or SEGMENTS (a segment surface: segment_corners)"},
     [V_SURF_BODY] = {"surface_body", NC_INT, 1, {D_SURF}, U_ONE, "/RBODY id of the body carrying the surface",
                      "-1: fixed in space (global frame)"},
     [V_SURF_POINT] = {"surface_point", NC_DOUBLE, 2, {D_SURF, D_VEC3}, U_LENGTH,
@@ -208,6 +211,15 @@ static const var_spec var_table[V_COUNT] = {
                       "frame); 0 otherwise"},
     [V_INTER_SURF] = {"inter_surface", NC_INT, 2, {D_INTER, D_SIDE}, U_ONE,
                       "surface ids of the interface", "first and second surface (normal from the first to the second)"},
+    /* segment surfaces (kind SEGMENTS): their nodes and segments */
+    [V_SURF_NODE0] = {"surface_first_node", NC_INT, 1, {D_SURF}, U_ONE, "first segment_node of the surface",
+                      "0-based; its nodes up to the next surface's first node; other kinds: no nodes"},
+    [V_SURF_SEG0] = {"surface_first_segment", NC_INT, 1, {D_SURF}, U_ONE, "first segment of the surface",
+                     "0-based; its segments up to the next surface's first segment"},
+    [V_SEG_NODE] = {"segment_node_position", NC_DOUBLE, 2, {D_SEGNODE, D_VEC3}, U_LENGTH,
+                    "node of a segment surface", "body frame of the carrying body, from its centre of mass"},
+    [V_SEG_CORNER] = {"segment_corners", NC_INT, 2, {D_SEGMENT, D_CORNER}, U_ONE, "nodes of a segment",
+                      "0-based, local to the surface (add surface_first_node); a triangle repeats its third node"},
 };
 
 /* Impacts table (dimension impact), defined and written at close. */
@@ -402,7 +414,9 @@ static int var_uses_dim(int v, int d)
 static int var_skipped(const rc_output_meta *meta, int v)
 {
     return (meta->ninter == 0 && (var_uses_dim(v, D_INTER) || var_uses_dim(v, D_SIDE))) ||
-           (meta->ncoupling == 0 && var_uses_dim(v, D_COUPLING)) || (meta->nsurf == 0 && var_uses_dim(v, D_SURF));
+           (meta->ncoupling == 0 && var_uses_dim(v, D_COUPLING)) || (meta->nsurf == 0 && var_uses_dim(v, D_SURF)) ||
+           (meta->nseg == 0 && (v == V_SURF_NODE0 || v == V_SURF_SEG0 || var_uses_dim(v, D_SEGNODE) ||
+                                var_uses_dim(v, D_SEGMENT)));
 }
 
 /* Define the dimensions, the fixed variables with their attributes, and one
@@ -413,7 +427,8 @@ static rc_status define_vars(rc_output *o, const rc_output_meta *meta, rc_error 
     /* dimensions */
     for (int d = 0; d < D_COUNT; d++) {
         if (((d == D_INTER || d == D_SIDE) && meta->ninter == 0) || (d == D_COUPLING && meta->ncoupling == 0) ||
-            ((d == D_SURF || d == D_SPARAM) && meta->nsurf == 0))
+            ((d == D_SURF || d == D_SPARAM) && meta->nsurf == 0) ||
+            ((d == D_SEGNODE || d == D_SEGMENT || d == D_CORNER) && meta->nseg == 0))
             continue;
         size_t len = (d == D_TIME || d == D_EVENT) ? NC_UNLIMITED : o->dimlen[d];
         NC_TRY(o->path, nc_def_dim(o->ncid, dim_name[d], len, &o->dimid[d]),
@@ -623,6 +638,15 @@ static rc_status write_static(rc_output *o, const rc_output_meta *meta, rc_error
                "writing surface_parameters");
         rc_status rc = put_strings(o, V_SURF_KIND, ns, meta->surf_kind, err);
         if (rc != RC_OK) return rc;
+        if (meta->nseg > 0) {
+            NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_SURF_NODE0], meta->surf_first_node),
+                   "writing surface_first_node");
+            NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_SURF_SEG0], meta->surf_first_seg),
+                   "writing surface_first_segment");
+            NC_TRY(o->path, nc_put_var_double(o->ncid, o->var[V_SEG_NODE], meta->seg_node),
+                   "writing segment_node_position");
+            NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_SEG_CORNER], meta->seg_corner), "writing segment_corners");
+        }
         if (meta->ninter > 0 && meta->inter_surf) {
             int *is = malloc(2 * (size_t)meta->ninter * sizeof *is);
             if (!is) RC_RAISE(err, RC_ENOMEM, "output: out of memory writing inter_surface");
@@ -819,7 +843,8 @@ rc_status rc_output_open(rc_output **out, const char *path, const rc_output_meta
     strcpy(o->path, path);
     o->nenergy = meta->nenergy;
     const size_t len[D_COUNT] = {1, (size_t)meta->nbody, (size_t)meta->ninter, 3, 4, 1, (size_t)meta->ncoupling,
-                                 (size_t)meta->nsurf, RC_OUT_SURF_NPARAM, 2};
+                                 (size_t)meta->nsurf, RC_OUT_SURF_NPARAM, 2, (size_t)meta->nseg_node,
+                                 (size_t)meta->nseg, 4};
     memcpy(o->dimlen, len, sizeof len);
     derive_units(o, meta);
     if (!alloc_buffer(o, meta)) {

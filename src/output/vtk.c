@@ -50,6 +50,10 @@ typedef struct vtk_src {
     int *inter_id;      /* [ninter] */
     double *ev_t;       /* [nevent] */
     char **ev_kind, **ev_elem; /* [nevent] */
+    size_t nsegnode, nseg; /* segment surfaces: nodes and segments (0: none) */
+    int *surf_node0, *surf_seg0; /* [nsurf] first node and segment of each surface */
+    double *seg_node;   /* [nsegnode*3] body frame [m] */
+    int *seg_corner;    /* [nseg*4] local node indices */
     double plane_half;  /* half-size of the plane patches [m] */
     double plane_c[3];  /* a point of the motion the patches are centred on [m] */
 } vtk_src;
@@ -119,7 +123,8 @@ static void src_free(vtk_src *s)
     if (s->surf_kind) nc_free_string(s->nsurf, s->surf_kind);
     if (s->ev_kind) nc_free_string(s->nevent, s->ev_kind);
     if (s->ev_elem) nc_free_string(s->nevent, s->ev_elem);
-    void *p[] = {s->body_id, s->surf_id, s->surf_bidx, s->surf_kind, s->surf_p, s->surf_n, s->surf_r,
+    void *p[] = {s->surf_node0, s->surf_seg0, s->seg_node, s->seg_corner, s->body_id, s->surf_id, s->surf_bidx,
+                 s->surf_kind, s->surf_p, s->surf_n, s->surf_r,
                  s->surf_x, s->inter_id, s->ev_t, s->ev_kind, s->ev_elem};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     if (s->ncid >= 0) nc_close(s->ncid);
@@ -292,6 +297,27 @@ static int tessellate(mesh *m, const vtk_src *s, size_t j, const double pos[3], 
             if (mesh_point(m, g, bid, sid, v) < 0) bad = 1;
         }
         bad |= mesh_poly(m, (int[]){base, base + 1, base + 2, base + 3}, 4, sid);
+    } else if (!strcmp(kind, "SEGMENTS") && s->nseg > 0) {
+        /* its nodes, then its segments (a triangle repeats its third node) */
+        const size_t n0 = (size_t)s->surf_node0[j], s0 = (size_t)s->surf_seg0[j];
+        size_t n1 = s->nsegnode, s1 = s->nseg;
+        for (size_t k = j + 1; k < s->nsurf; k++)
+            if (!strcmp(s->surf_kind[k], "SEGMENTS")) {
+                n1 = (size_t)s->surf_node0[k];
+                s1 = (size_t)s->surf_seg0[k];
+                break;
+            }
+        for (size_t k = n0; k < n1 && k < s->nsegnode; k++) PUT(s->seg_node[3 * k], s->seg_node[3 * k + 1], s->seg_node[3 * k + 2]);
+        for (size_t k = s0; k < s1 && k < s->nseg; k++) {
+            const int *c = s->seg_corner + 4 * k;
+            const int nc = c[3] == c[2] ? 3 : 4;
+            int idx[4];
+            for (int e = 0; e < nc; e++) {
+                if (c[e] < 0 || (size_t)c[e] >= n1 - n0) bad = 1;
+                idx[e] = base + c[e];
+            }
+            if (!bad) bad |= mesh_poly(m, idx, nc, sid);
+        }
     }
 #undef PUT
     return bad ? -1 : 0;
@@ -448,6 +474,16 @@ static rc_status src_open(vtk_src *s, const char *path, rc_error *err)
                 if (sbody[j] == s->body_id[b]) s->surf_bidx[j] = (int)b;
         }
         free(sbody);
+        /* segment surfaces (kind SEGMENTS) */
+        s->nsegnode = dim_or_zero(s->ncid, "segment_node");
+        s->nseg = has_var(s->ncid, "segment_corners") ? dim_or_zero(s->ncid, "segment") : 0;
+        if (rc == RC_OK && s->nseg > 0) {
+            rc = get_all(s, "surface_first_node", NC_INT, s->nsurf, (void **)&s->surf_node0, err);
+            if (rc == RC_OK) rc = get_all(s, "surface_first_segment", NC_INT, s->nsurf, (void **)&s->surf_seg0, err);
+            if (rc == RC_OK)
+                rc = get_all(s, "segment_node_position", NC_DOUBLE, 3 * s->nsegnode, (void **)&s->seg_node, err);
+            if (rc == RC_OK) rc = get_all(s, "segment_corners", NC_INT, 4 * s->nseg, (void **)&s->seg_corner, err);
+        }
     }
     if (rc == RC_OK && s->nevent > 0) {
         rc = get_all(s, "event_time", NC_DOUBLE, s->nevent, (void **)&s->ev_t, err);

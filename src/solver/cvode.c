@@ -495,7 +495,7 @@ static rc_status outputs_before(void *cv, const rc_model *m, const rc_data *d, r
 }
 
 _Static_assert(RC_SURF_NEXT == RC_OUT_SURF_NPARAM, "surface parameters: model and file disagree");
-static const char *const surf_kind_name[] = {"", "PLANE", "SPHERE", "CYLINDER", "BOX"};
+static const char *const surf_kind_name[] = {"", "PLANE", "SPHERE", "CYLINDER", "BOX", "SEGMENTS"};
 
 static rc_status open_output(const rc_model *m, const char *path, const char *note, rc_output **o, rc_error *err)
 {
@@ -536,7 +536,7 @@ static rc_status open_output(const rc_model *m, const char *path, const char *no
         RC_RAISE(err, RC_ENOMEM, "out of memory");
     }
     for (int k = 0; k < m->nsurf; k++)
-        kinds[k] = m->surf_kind[k] >= RC_SURF_PLANE && m->surf_kind[k] <= RC_SURF_BOX ? surf_kind_name[m->surf_kind[k]]
+        kinds[k] = m->surf_kind[k] >= RC_SURF_PLANE && m->surf_kind[k] <= RC_SURF_SEG ? surf_kind_name[m->surf_kind[k]]
                                                                                     : "UNKNOWN";
     for (int i = 0; i < m->ninter; i++) {
         isurf[2 * i] = m->inter_sa[i];
@@ -551,6 +551,15 @@ static rc_status open_output(const rc_model *m, const char *path, const char *no
     meta.surf_radius = m->surf_r;
     meta.surf_param = m->surf_ext;
     meta.inter_surf = isurf;
+    /* segment surfaces: their nodes and segments */
+    if (m->surf_nadr && m->surf_sadr && m->surf_sadr[m->nsurf] > 0) {
+        meta.nseg_node = m->surf_nadr[m->nsurf];
+        meta.nseg = m->surf_sadr[m->nsurf];
+        meta.surf_first_node = m->surf_nadr;
+        meta.surf_first_seg = m->surf_sadr;
+        meta.seg_node = m->surf_node;
+        meta.seg_corner = m->surf_seg;
+    }
     char evrec[160];
     const int full = rc_event_records(m);
     if (m->ev_state == 0)

@@ -17,6 +17,7 @@
 #include "base/error.h"
 #include "case/case.h"
 #include "model/model.h"
+#include "model/power.h"
 #include "harness.h"
 #include "testutil.h"
 
@@ -145,8 +146,9 @@ static void test_seg_read_errors(void)
                      "/SURF/ELLIPS/40\ns\n0,2,2\n0,0,-0.2\n0.1,0.1,0.1\n" LINEAR
                      "/INTER/TYPE6/1\nball on box\n40,30\n,0.3\n\n1\n\n\n" RUN_TAIL,
                      "card /INTER/TYPE6/1", "friction between a sphere and a segment surface: not supported yet");
-    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS FLOOR "/INTER/POWER/1\np\n30,40\n1e6,1\n" RUN_TAIL, "card /INTER/POWER/1",
-                     "segment surface", "not supported yet");
+    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS FLOOR "/INTER/POWER/1\np\n30,40\n1e6,1\n\n0.3,0.01,0.2,0.05\n" RUN_TAIL,
+                     ":36:", "card /INTER/POWER/1", "fields mu_s/mu_d", "step5 friction on a segment surface",
+                     "not supported yet");
 }
 
 /* ---- the force distribution ------------------------------------------- */
@@ -340,6 +342,53 @@ static void test_seg_friction_jacobian_matches_finite_differences(void) { seg_ja
 static void test_seg_box_friction_jacobian_matches_finite_differences(void) { seg_jacobian_check(1, 1); }
 static void test_seg_seg_jacobian_matches_finite_differences(void) { seg_jacobian_check(2, 0); }
 static void test_seg_seg_friction_jacobian_matches_finite_differences(void) { seg_jacobian_check(2, 1); }
+
+/* The power law on a segment surface (the box on a tilted plate carried by
+ * a moving body): F = K P^m1 at the deepest node, its damping C v^m2 P^m3 at
+ * the penetration-weighted rate, RDF; closed and released, both branches,
+ * against central differences. */
+static void test_seg_power_jacobian_matches_finite_differences(void)
+{
+    rc_error e;
+    rc_model *m = seg_compile(BOX_NODES BOX_BODY BOX_SEGS
+                              "/NODE\n2,0,0,-0.2\n/RBODY/2\nplate\n2,,,,5.0\n0.11,0.13,0.2\n0.01,0,0\n"
+                              "/SURF/PLANE/40\nplate\n0,0,0.001\n0.05,-0.03,1\n2\n"
+                              "/INTER/POWER/1\np\n30,40,0,0,0,1\n1e9,1.5,3e5,1.2,0.8\n0.4\n" RUN_TAIL,
+                              &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    ENSURE(m->inter_pair[0] == RC_PAIR_SEG_PLANE && m->inter_law[0] == RC_LAW_POWER);
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    rc_initial_state(m, y);
+    const double s[26] = {0.0013, -0.0011, 0.0312, 0.97, 0.011, -0.013, 0.007, 0.31, -0.23, -0.17, 3.1, -2.3, 4.7,
+                          0.0021, 0.0007, -0.2003, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
+    for (int b = 0; b < 2; b++) memcpy(y + m->body_yadr[b], s + 13 * b, 13 * sizeof(double));
+    for (int k = 26; k < m->ny; k++) y[k] = 0.013 * (k - 25);
+    rc_inter_report r;
+    rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+    ENSURE(r.p > 0);
+    int bad = 0, outside = 0, combos = 0;
+    double maxerr = 0;
+    const int modes[2] = {RC_MODE_CLOSED, RC_MODE_RELEASED}, brs[2] = {RC_BR_LOAD, RC_BR_UNLOAD};
+    for (int md = 0; md < 2; md++)
+        for (int br = 0; br < 2; br++) {
+            d->inter_mode[0] = modes[md];
+            d->inter_branch[0] = brs[br];
+            maxerr = fmax(maxerr, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
+            combos++;
+        }
+    printf("    segments-plane power law jacobian: P = %.3g m, F = %.4g N, %d states, %d mode combinations, max scaled "
+           "|J - FD| = %.2e\n", r.p, r.fn, m->ny, combos, maxerr);
+    ENSURE(bad == 0);
+    ENSURE(outside == 0);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
 
 /* IRS/IRm: the box (surf_ID1, body 1) resting 1.1 mm into the top face of
  * a meshed plate (surf_ID2, body 2): IRm = 1 reverses the plate's normals
@@ -544,6 +593,7 @@ void suite_seg(void)
     RUN_TEST(test_seg_seg_friction_jacobian_matches_finite_differences);
     RUN_TEST(test_seg_cyl_jacobian_matches_finite_differences);
     RUN_TEST(test_seg_orientation_irs_irm);
+    RUN_TEST(test_seg_power_jacobian_matches_finite_differences);
     RUN_TEST(test_seg_sphere_valley_forces);
     RUN_TEST(test_seg_sphere_jacobian_matches_finite_differences);
 }

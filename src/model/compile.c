@@ -401,9 +401,14 @@ static rc_status check_seg_pairs(const rc_case *c, rc_model *m, rc_error *err)
 {
     for (int i = 0; i < m->ninter; i++) {
         if (!rc_pair_multi(m->inter_pair[i])) continue;
-        if (i >= c->ntype6)
-            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields surf_ID1/surf_ID2: a segment surface with several contact points (against a plane, a box, a sphere or a segment surface) in /INTER/POWER: not supported yet (supported: /INTER/TYPE6; in /INTER/POWER a cylinder against a segment surface)",
-                     RC_LOC(c->power[i - c->ntype6].line_loc[0]), m->inter_name[i]);
+        /* /INTER/POWER: the power law at P, its damping at v_bar; step5
+         * friction per point is not there yet */
+        if (i >= c->ntype6) {
+            if (m->inter_fr[i].kind != RC_FK_NONE)
+                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields mu_s/mu_d: step5 friction on a segment surface with several contact points (against a plane, a box, a sphere or a segment surface): not supported yet (supported: the power law without friction there; with friction a cylinder against a segment surface)",
+                         RC_LOC(c->power[i - c->ntype6].line_loc[3]), m->inter_name[i]);
+            continue;
+        }
         const rc_loc loc = c->type6[i].line_loc[1];
         const rc_fric *fr = &m->inter_fr[i];
         if (fr->kind == RC_FK_NONE) continue;

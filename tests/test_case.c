@@ -847,7 +847,7 @@ static void test_case_error_type6(void)
     /* unsupported but valid Radioss values */
     EXPECT_T6(2, ",-0.1", "field Fric", "non-negative");
     EXPECT_T6(2, "-0.5", "field Sfric", "non-negative");
-    EXPECT_T6(3, ",1", "field IRS", "not supported yet", "analytic");
+    EXPECT_T6(3, ",3", "field IRS", "expected an integer in {0, 1, 2}");
     EXPECT_T6(3, ",,,,-4", "field fct_IDff", "non-negative");
     /* Iform 1, 2 with Stiff = 0 read as Iform 0 with a warning (test_deck.c) */
     EXPECT_T6(5, ",,-1e5", "field Stiff", "non-negative");

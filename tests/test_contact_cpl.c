@@ -95,7 +95,7 @@ static void test_contact_cpl_roots(void)
     double *y = calloc((size_t)m->ny, sizeof(double));
     rc_initial_state(m, y);
     rc_modes_init(m, d, 0.0, y);
-    const int off = RC_ROOTS_PER_INTER * m->ninter, nr = off + rc_cpl_nroots(m);
+    const int off = rc_root_cpl_base(m), nr = rc_root_count(m);
     ENSURE(rc_cpl_nroots(m) == 48);
     double *g = calloc((size_t)nr, sizeof(double));
     int *dir = calloc((size_t)nr, sizeof(int));

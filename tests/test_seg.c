@@ -17,6 +17,7 @@
 #include "base/error.h"
 #include "case/case.h"
 #include "model/model.h"
+#include "model/power.h"
 #include "harness.h"
 #include "testutil.h"
 
@@ -133,13 +134,21 @@ static void test_seg_read_errors(void)
                      "field part_ID", "no such part");
     EXPECT_SEG_ERROR(BOX_NODES BOX_BODY "/SURF/PART/30\nx\n" RUN_TAIL, "card /SURF/PART/30", "at least one part id");
     /* pairs and laws not supported yet */
-    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS "/SURF/CYL/40\ns\n0\n0,2,0\n1,0,0\n0.5,1\n" LINEAR T6 RUN_TAIL,
-                     "card /INTER/TYPE6/1", "fields surf_ID1/surf_ID2", "segment surface against cylinder",
+    /* a cylinder against a segment surface: one point, TYPE6 and POWER */
+    {
+        rc_error e;
+        rc_model *m = seg_compile(BOX_NODES BOX_BODY BOX_SEGS "/SURF/CYL/40\ns\n0\n0,2,0\n1,0,0\n0.5,1\n" LINEAR T6
+                                  RUN_TAIL, &e);
+        ENSURE(m && m->inter_pair[0] == RC_PAIR_CYL_SEG && m->inter_npt[0] == 0);
+        rc_model_free(m);
+    }
+    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS "/NODE\n2,0,0,-0.2\n/RBODY/2\nball\n2,,,,5.0\n0.1,0.1,0.1\n0,0,0\n"
+                     "/SURF/ELLIPS/40\ns\n0,2,2\n0,0,-0.2\n0.1,0.1,0.1\n" LINEAR
+                     "/INTER/TYPE6/1\nball on box\n40,30\n,0.3\n\n1\n\n\n" RUN_TAIL,
+                     "card /INTER/TYPE6/1", "friction between a sphere and a segment surface: not supported yet");
+    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS FLOOR "/INTER/POWER/1\np\n30,40\n1e6,1\n\n0.3,0.01,0.2,0.05\n" RUN_TAIL,
+                     ":36:", "card /INTER/POWER/1", "fields mu_s/mu_d", "step5 friction on a segment surface",
                      "not supported yet");
-    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS FLOOR LINEAR "/INTER/TYPE6/1\nbox on floor\n30,40\n,0.3\n\n1\n\n\n"
-                     RUN_TAIL, "card /INTER/TYPE6/1", "friction on a segment surface: not supported yet");
-    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS FLOOR "/INTER/POWER/1\np\n30,40\n1e6,1\n" RUN_TAIL, "card /INTER/POWER/1",
-                     "segment surface", "not supported yet");
 }
 
 /* ---- the force distribution ------------------------------------------- */
@@ -238,27 +247,32 @@ static void test_seg_force_distribution(void)
 /* The box on a tilted plate carried by a second free body, nonlinear load
  * curve with Visc and both damping curves, Iform 1 with an unload curve and
  * Inacti 5: every mode, against central differences. */
-static void seg_jacobian_check(int box)
+static void seg_jacobian_check(int box, int fric)
 {
     rc_error e;
-    char deck[4096];
-    snprintf(deck, sizeof deck, "%s%s%s%s%s", BOX_NODES BOX_BODY BOX_SEGS,
-             "/NODE\n2,0,0,-0.2\n/RBODY/2\nplate\n2,,,,5.0\n0.11,0.13,0.2\n0.01,0,0\n",
-             box ? "/SURF/BOX/40\ntable\n2\n0.01,-0.02,-0.199\n0.4,0.3,0.2\n1,0.05,0.02\n-0.04,1,0.03\n"
-                 : "/SURF/PLANE/40\nplate\n0,0,0.001\n0.05,-0.03,1\n2\n",
-             "",
-                              "/FUNCT/1\nload\n-0.01,-3.1e3\n0,0\n0.0013,2.71e3\n0.0041,1.37e4\n0.0097,5.9e4\n"
-                              "/FUNCT/2\nunload\n0,0\n0.002,0\n0.006,5e3\n0.011,3.1e4\n"
-                              "/FUNCT/3\ndv\n-10,-41\n0,0\n0.37,5.3\n3.3,71\n/FUNCT/4\ndf\n0,1\n500,0.83\n9e4,0.61\n"
-                              "/INTER/TYPE6/1\nbox on plate\n30,40\n,,0.0011\n,,,5,,,1.9,0.61\n1,1,1.3,0.77\n"
-                              "2,,7.3e6,0.83\n3.7,3,4,2.3\n" RUN_TAIL);
+    char deck[8192];
+    snprintf(deck, sizeof deck, "%s%s%s%s%s%s", BOX_NODES BOX_BODY BOX_SEGS,
+             box == 2 ? "/NODE\n2,0,0,-0.2\n/RBODY/2\nplate\n2,,,,5.0,8\n0.11,0.13,0.2\n0.01,0,0\n"
+                      : "/NODE\n2,0,0,-0.2\n/RBODY/2\nplate\n2,,,,5.0\n0.11,0.13,0.2\n0.01,0,0\n",
+             box == 2 ? "/NODE\n20,-0.3,-0.2,-0.1\n21,0.3,-0.2,-0.1\n22,0.3,0.2,-0.1\n23,-0.3,0.2,-0.1\n24,-0.3,-0.2,0.0011\n"
+                        "25,0.3,-0.2,0.0011\n26,0.3,0.2,0.0011\n27,-0.3,0.2,0.0011\n/GRNOD/NODE/8\ng2\n20,21,22,23,24,25,26,27\n"
+                        "/SURF/SEG/40\nplate faces\n1,20,23,22,21\n2,24,25,26,27\n3,20,21,25,24\n4,21,22,26,25\n"
+                        "5,22,23,27,26\n6,23,20,24,27\n"
+             : box ? "/SURF/BOX/40\ntable\n2\n0.01,-0.02,-0.199\n0.4,0.3,0.2\n1,0.05,0.02\n-0.04,1,0.03\n"
+                   : "/SURF/PLANE/40\nplate\n0,0,0.001\n0.05,-0.03,1\n2\n",
+             "/FUNCT/1\nload\n-0.01,-3.1e3\n0,0\n0.0013,2.71e3\n0.0041,1.37e4\n0.0097,5.9e4\n"
+             "/FUNCT/2\nunload\n0,0\n0.002,0\n0.006,5e3\n0.011,3.1e4\n"
+             "/FUNCT/3\ndv\n-10,-41\n0,0\n0.37,5.3\n3.3,71\n/FUNCT/4\ndf\n0,1\n500,0.83\n9e4,0.61\n",
+             fric ? "/INTER/TYPE6/1\nbox on plate\n30,40\n0.7,0.37,0.0011\n,,,5,,,1.9,0.61\n1,1,1.3,0.77\n"
+                  : "/INTER/TYPE6/1\nbox on plate\n30,40\n,,0.0011\n,,,5,,,1.9,0.61\n1,1,1.3,0.77\n",
+             "2,,7.3e6,0.83\n3.7,3,4,2.3\n" RUN_TAIL);
     rc_model *m = seg_compile(deck, &e);
     ENSURE(m != NULL);
     if (!m) {
         fprintf(stderr, "  %s\n", e.msg);
         return;
     }
-    ENSURE(m->inter_pair[0] == (box ? RC_PAIR_SEG_BOX : RC_PAIR_SEG_PLANE));
+    ENSURE(m->inter_pair[0] == (box == 2 ? RC_PAIR_SEG_SEG : box ? RC_PAIR_SEG_BOX : RC_PAIR_SEG_PLANE));
     rc_data *d = rc_data_new(m);
     double *y = calloc((size_t)m->ny, sizeof(double));
     rc_initial_state(m, y);
@@ -300,17 +314,21 @@ static void seg_jacobian_check(int box)
     int bad = 0, outside = 0, combos = 0;
     double maxerr = 0;
     const int modes[2] = {RC_MODE_CLOSED, RC_MODE_RELEASED};
+    /* friction per contact point: all sticking, all slipping, alternating */
+    ENSURE(!fric || m->inter_npt[0] == (box == 2 ? 16 : 8));
     for (int md = 0; md < 2; md++)
         for (int br = 0; br < 3; br++)
-            for (int trk = 0; trk < 2; trk++) {
-                d->inter_mode[0] = modes[md];
-                d->inter_branch[0] = br;
-                d->inter_track[0] = trk;
-                maxerr = fmax(maxerr, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
-                combos++;
-            }
-    printf("    %s jacobian: P = %.3g m (%d nodes past the plate; -1: not counted), %d states, %lld nonzeros, %d mode combinations, max scaled |J - FD| "
-           "= %.2e\n", box ? "segments-box" : "segments-plane", r.p, npen, m->ny, (long long)m->nnz, combos, maxerr);
+            for (int trk = 0; trk < 2; trk++)
+                for (int sl = 0; sl < (fric ? 3 : 1); sl++) {
+                    d->inter_mode[0] = modes[md];
+                    d->inter_branch[0] = br;
+                    d->inter_track[0] = trk;
+                    for (int j = 0; j < m->inter_npt[0]; j++) d->pt_slip[j] = sl == 2 ? j % 2 : sl;
+                    maxerr = fmax(maxerr, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
+                    combos++;
+                }
+    printf("    %s%s jacobian: P = %.3g m (%d nodes past the plate; -1: not counted), %d states, %lld nonzeros, %d mode combinations, max scaled |J - FD| "
+           "= %.2e\n", box == 2 ? "segments-segments" : box ? "segments-box" : "segments-plane", fric ? " with friction per point" : "", r.p, npen, m->ny, (long long)m->nnz, combos, maxerr);
     ENSURE(bad == 0);
     ENSURE(outside == 0);
     free(y);
@@ -318,8 +336,145 @@ static void seg_jacobian_check(int box)
     rc_model_free(m);
 }
 
-static void test_seg_jacobian_matches_finite_differences(void) { seg_jacobian_check(0); }
-static void test_seg_box_jacobian_matches_finite_differences(void) { seg_jacobian_check(1); }
+static void test_seg_jacobian_matches_finite_differences(void) { seg_jacobian_check(0, 0); }
+static void test_seg_box_jacobian_matches_finite_differences(void) { seg_jacobian_check(1, 0); }
+static void test_seg_friction_jacobian_matches_finite_differences(void) { seg_jacobian_check(0, 1); }
+static void test_seg_box_friction_jacobian_matches_finite_differences(void) { seg_jacobian_check(1, 1); }
+static void test_seg_seg_jacobian_matches_finite_differences(void) { seg_jacobian_check(2, 0); }
+static void test_seg_seg_friction_jacobian_matches_finite_differences(void) { seg_jacobian_check(2, 1); }
+
+/* The power law on a segment surface (the box on a tilted plate carried by
+ * a moving body): F = K P^m1 at the deepest node, its damping C v^m2 P^m3 at
+ * the penetration-weighted rate, RDF; closed and released, both branches,
+ * against central differences. */
+static void test_seg_power_jacobian_matches_finite_differences(void)
+{
+    rc_error e;
+    rc_model *m = seg_compile(BOX_NODES BOX_BODY BOX_SEGS
+                              "/NODE\n2,0,0,-0.2\n/RBODY/2\nplate\n2,,,,5.0\n0.11,0.13,0.2\n0.01,0,0\n"
+                              "/SURF/PLANE/40\nplate\n0,0,0.001\n0.05,-0.03,1\n2\n"
+                              "/INTER/POWER/1\np\n30,40,0,0,0,1\n1e9,1.5,3e5,1.2,0.8\n0.4\n" RUN_TAIL,
+                              &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    ENSURE(m->inter_pair[0] == RC_PAIR_SEG_PLANE && m->inter_law[0] == RC_LAW_POWER);
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    rc_initial_state(m, y);
+    const double s[26] = {0.0013, -0.0011, 0.0312, 0.97, 0.011, -0.013, 0.007, 0.31, -0.23, -0.17, 3.1, -2.3, 4.7,
+                          0.0021, 0.0007, -0.2003, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
+    for (int b = 0; b < 2; b++) memcpy(y + m->body_yadr[b], s + 13 * b, 13 * sizeof(double));
+    for (int k = 26; k < m->ny; k++) y[k] = 0.013 * (k - 25);
+    rc_inter_report r;
+    rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+    ENSURE(r.p > 0);
+    int bad = 0, outside = 0, combos = 0;
+    double maxerr = 0;
+    const int modes[2] = {RC_MODE_CLOSED, RC_MODE_RELEASED}, brs[2] = {RC_BR_LOAD, RC_BR_UNLOAD};
+    for (int md = 0; md < 2; md++)
+        for (int br = 0; br < 2; br++) {
+            d->inter_mode[0] = modes[md];
+            d->inter_branch[0] = brs[br];
+            maxerr = fmax(maxerr, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
+            combos++;
+        }
+    printf("    segments-plane power law jacobian: P = %.3g m, F = %.4g N, %d states, %d mode combinations, max scaled "
+           "|J - FD| = %.2e\n", r.p, r.fn, m->ny, combos, maxerr);
+    ENSURE(bad == 0);
+    ENSURE(outside == 0);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
+/* IRS/IRm: the box (surf_ID1, body 1) resting 1.1 mm into the top face of
+ * a meshed plate (surf_ID2, body 2): IRm = 1 reverses the plate's normals
+ * (the side above the plate is then inside it: the box's top nodes, 60 mm
+ * up, are 58.9 mm in), IRS = 1 the box's (which its bottom nodes do not
+ * use), 2 keeps /SURF/SEG as written. */
+static void test_seg_orientation_irs_irm(void)
+{
+    const char *irs[4] = {"", ",1", ",,1", ",2,2"};
+    const double expect[4] = {0.0011, 0.0011, 0.0589, 0.0011};
+    for (int k = 0; k < 4; k++) {
+        char deck[4096];
+        snprintf(deck, sizeof deck, "%s%s%s", BOX_NODES BOX_BODY BOX_SEGS,
+                 "/NODE\n2,0,0,-0.05\n20,-0.3,-0.2,-0.1\n21,0.3,-0.2,-0.1\n22,0.3,0.2,-0.1\n23,-0.3,0.2,-0.1\n"
+                 "24,-0.3,-0.2,0.0011\n25,0.3,-0.2,0.0011\n26,0.3,0.2,0.0011\n27,-0.3,0.2,0.0011\n/GRNOD/NODE/8\ng2\n"
+                 "20,21,22,23,24,25,26,27\n/RBODY/2\nplate\n2,,,,5.0,8\n0.11,0.13,0.2\n0.01,0,0\n"
+                 "/SURF/SEG/40\nplate faces\n1,20,23,22,21\n2,24,25,26,27\n3,20,21,25,24\n4,21,22,26,25\n"
+                 "5,22,23,27,26\n6,23,20,24,27\n" LINEAR "/INTER/TYPE6/1\nbox on plate\n30,40\n\n",
+                 irs[k]);
+        strncat(deck, "\n1\n\n\n" RUN_TAIL, sizeof deck - strlen(deck) - 1);
+        rc_error e;
+        rc_model *m = seg_compile(deck, &e);
+        ENSURE(m != NULL);
+        if (!m) {
+            fprintf(stderr, "  %s\n", e.msg);
+            continue;
+        }
+        double *y = calloc((size_t)m->ny, sizeof(double));
+        rc_initial_state(m, y);
+        rc_inter_report r;
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+        printf("    IRS/IRm line \"%s\": P = %.6g m (expected %.6g)\n", irs[k], r.p, expect[k]);
+        ENSURE_NEAR(r.p, expect[k], 1e-12, 0);
+        free(y);
+        rc_model_free(m);
+    }
+}
+
+/* A roller (cylinder on body 2, axis y, moving and turning) on the top face
+ * of the meshed box (body 1, moving), TYPE6 with a nonlinear load curve,
+ * Visc and Fric: the plane of the segment under the roller's centre; closed
+ * in stick and slip, released, against central differences. */
+static void test_seg_cyl_jacobian_matches_finite_differences(void)
+{
+    rc_error e;
+    rc_model *m = seg_compile(BOX_NODES BOX_BODY BOX_SEGS
+                              "/NODE\n2,0.01,0.003,0.0785\n/RBODY/2\nroller\n2,,,,0.7\n0.0001,0.00002,0.0001\n0,0,0\n"
+                              "/SURF/CYL/40\nroller\n2\n0.01,0.003,0.0785\n0.02,1,0.01\n0.02,0.03\n"
+                              "/FUNCT/1\nload\n0,0\n0.001,800\n0.004,9000\n"
+                              "/INTER/TYPE6/1\nroller on box\n40,30\n0.2,0.3\n\n1\n\n310\n" RUN_TAIL,
+                              &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    ENSURE(m->inter_pair[0] == RC_PAIR_CYL_SEG);
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    rc_initial_state(m, y);
+    const double s[26] = {0.0003, -0.0002, 0.0301, 0.999, 0.011, -0.013, 0.007, 0.21, -0.13, -0.17, 1.1, -0.3, 0.7,
+                          0.0102, 0.0027, 0.0783, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 13.7, 2.2};
+    for (int b = 0; b < 2; b++) memcpy(y + m->body_yadr[b], s + 13 * b, 13 * sizeof(double));
+    for (int k = 26; k < m->ny; k++) y[k] = 0.013 * (k - 25);
+    rc_inter_report r;
+    rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+    ENSURE(r.p > 0 && r.p < 0.004);
+    int bad = 0, outside = 0, combos = 0;
+    double maxerr = 0;
+    const int modes[2] = {RC_MODE_CLOSED, RC_MODE_RELEASED};
+    for (int md = 0; md < 2; md++)
+        for (int sl = 0; sl < 2; sl++) {
+            d->inter_mode[0] = modes[md];
+            d->inter_slip[0] = sl;
+            maxerr = fmax(maxerr, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
+            combos++;
+        }
+    printf("    cylinder-segments jacobian: P = %.3g m, normal %.3f %.3f %.3f, %d states, %lld nonzeros, %d mode "
+           "combinations, max scaled |J - FD| = %.2e\n",
+           r.p, r.normal[0], r.normal[1], r.normal[2], m->ny, (long long)m->nnz, combos, maxerr);
+    ENSURE(bad == 0);
+    ENSURE(outside == 0);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
 
 /* A sphere (body 1, off its centre of mass) in a V-shaped valley of
  * triangles and quadrilaterals carried by a moving body 2: two face points
@@ -432,6 +587,13 @@ void suite_seg(void)
     RUN_TEST(test_seg_force_distribution);
     RUN_TEST(test_seg_jacobian_matches_finite_differences);
     RUN_TEST(test_seg_box_jacobian_matches_finite_differences);
+    RUN_TEST(test_seg_friction_jacobian_matches_finite_differences);
+    RUN_TEST(test_seg_box_friction_jacobian_matches_finite_differences);
+    RUN_TEST(test_seg_seg_jacobian_matches_finite_differences);
+    RUN_TEST(test_seg_seg_friction_jacobian_matches_finite_differences);
+    RUN_TEST(test_seg_cyl_jacobian_matches_finite_differences);
+    RUN_TEST(test_seg_orientation_irs_irm);
+    RUN_TEST(test_seg_power_jacobian_matches_finite_differences);
     RUN_TEST(test_seg_sphere_valley_forces);
     RUN_TEST(test_seg_sphere_jacobian_matches_finite_differences);
 }

@@ -67,10 +67,8 @@ rc_status rc_card_type6(rc_reader *rd, const rc_block *b)
         RC_F_REALD("Tstop", &t->tstop, RC_DEF_TSTOP, RC_FF_ZDEF, RC_D_T)};
     rc_field l3[] = {
         RC_F_SKIP(10),
-        RC_F_SET("IRS", &t->irs, 0, 0, 0x7u, RC_BIT(0),
-                 "(only analytic surfaces exist now; their normals are fixed)"),
-        RC_F_SET("IRm", &t->irm, 0, 0, 0x7u, RC_BIT(0),
-                 "(only analytic surfaces exist now; their normals are fixed)"),
+        RC_F_SET("IRS", &t->irs, 0, 0, 0x7u, 0x7u, NULL),
+        RC_F_SET("IRm", &t->irm, 0, 0, 0x7u, 0x7u, NULL),
         RC_F_SET("Inacti", &t->inacti, 0, 0, RC_BIT(0) | RC_BIT(5), RC_BIT(0) | RC_BIT(5), NULL),
         RC_F_INT("fct_IDff", &t->fct_ff, 0, RC_FF_NONNEG),
         RC_F_INT("fct_IDfv", &t->fct_fv, 0, RC_FF_NONNEG),

@@ -7,6 +7,7 @@
  */
 #include <complex.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include <tgmath.h>
 
@@ -43,23 +44,30 @@ static void dense_body(const rc_model *m, int b, double t, const double *y, doub
 }
 
 /* Dense block of interface i in the given modes: rows = accelerations of a
- * (if free), of b (if free), own states; columns = states of a, of b, own. */
-static void dense_inter(const rc_model *m, int i, int mode, int branch, int track, int slip, const double *y,
-                        double *out)
+ * (if free), of b (if free), own states; columns = states of a, of b, own.
+ * Contact points with friction (inter_npt): their states are read from y,
+ * modes pslip (NULL: all `slip`); work: complex scratch of 2 (RC_NS_MAX +
+ * 3 npt) values; ptslot (NULL: not wanted): the point-state rows of the
+ * same columns are added into val through it (inter_ptslot). */
+static void dense_inter(const rc_model *m, int i, int mode, int branch, int track, int slip, const int *pslip,
+                        const double *y, double *out, T *work, const int64_t *ptslot, double *val, T *ncache)
 {
     const rc_jblock *jb = &m->jb_inter[i];
-    const int ba = m->inter_ba[i], bb = m->inter_bb[i], ns = m->inter_ns[i];
+    const int ba = m->inter_ba[i], bb = m->inter_bb[i], ns = m->inter_ns[i], np3 = 3 * m->inter_npt[i];
     const int fa = ba >= 0 && m->body_yadr[ba] >= 0, fb = bb >= 0 && m->body_yadr[bb] >= 0;
     const int na = fa ? RC_NB : 0, nb = fb ? RC_NB : 0;
-    T ya[RC_NB], yb[RC_NB], ys[RC_NS_MAX];
+    const int64_t P = 3 * (int64_t)jb->ncol + 3 * (int64_t)jb->nrow + 9;
+    T ya[RC_NB], yb[RC_NB], ysl[RC_NS_MAX], sdl[RC_NS_MAX];
+    T *ys = np3 > 0 ? work : ysl, *sdot = np3 > 0 ? work + RC_NS_MAX + np3 : sdl;
     load_body(m, ba, y, ya);
     load_body(m, bb, y, yb);
-    for (int k = 0; k < ns; k++) ys[k] = y[m->inter_eadr[i] + k];
+    for (int k = 0; k < ns + np3; k++) ys[k] = y[m->inter_eadr[i] + k];
     for (int c = 0; c < jb->ncol; c++) {
         T *yp = c < na ? ya + c : c < na + nb ? yb + (c - na) : ys + (c - na - nb);
         *yp += I * RC_CSTEP;
-        T acc[12] = {0}, sdot[RC_NS_MAX];
-        type6_c(m, i, mode, branch, track, slip, ya, yb, ys, fa ? acc : NULL, fb ? acc + 6 : NULL, sdot, NULL);
+        T acc[12] = {0};
+        type6_c(m, i, mode, branch, track, slip, pslip, ya, yb, ys, fa ? acc : NULL, fb ? acc + 6 : NULL, sdot, NULL,
+                NULL, ncache);
         *yp = creal(*yp);
         int r = 0;
         if (fa)
@@ -67,14 +75,82 @@ static void dense_inter(const rc_model *m, int i, int mode, int branch, int trac
         if (fb)
             for (int k = 0; k < 6; k++, r++) out[r * jb->ncol + c] = cimag(acc[6 + k]) / RC_CSTEP;
         for (int k = 0; k < ns; k++, r++) out[r * jb->ncol + c] = cimag(sdot[k]) / RC_CSTEP;
+        if (ptslot)
+            for (int k = 0; k < np3; k++) {
+                const int64_t sl = ptslot[(k / 3) * P + (k % 3) * jb->ncol + c];
+                if (sl >= 0) val[sl] += cimag(sdot[ns + k]) / RC_CSTEP;
+            }
+    }
+}
+
+/* Contact points with friction of interface i, closed: every row a point's
+ * state moves (the accelerations, W_fric, its own rates) against that state,
+ * into the values through inter_ptslot (jacpattern.c). A point's state moves
+ * only its own force, so its columns take one evaluation of that point. */
+static void points_jac(const rc_model *m, rc_data *d, int i, const double *y, double *val)
+{
+    const rc_jblock *jb = &m->jb_inter[i];
+    const int npt = m->inter_npt[i], ns = m->inter_ns[i], ncol = jb->ncol, nrow = jb->nrow;
+    const int64_t P = 3 * (int64_t)ncol + 3 * (int64_t)nrow + 9, *slot = m->inter_ptslot[i];
+    const int *pslip = d->pt_slip + m->inter_pbase[i];
+    const int ba = m->inter_ba[i], bb = m->inter_bb[i];
+    const int fa = ba >= 0 && m->body_yadr[ba] >= 0, fb = bb >= 0 && m->body_yadr[bb] >= 0;
+    const rc_fric *fr = &m->inter_fr[i];
+    T ya[RC_NB], yb[RC_NB], po[RC_NB];
+    load_body(m, ba, y, ya);
+    load_body(m, bb, y, yb);
+    load_body(m, fr->obody, y, po);
+    /* the shared part at the state (real values) */
+    const double *yr = y + m->inter_eadr[i];
+    T *ys = d->pt_work;
+    for (int k = 0; k < ns + 3 * npt; k++) ys[k] = yr[k];
+    t6out_c o;
+    type6_c(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], pslip, ya, yb, ys, NULL,
+            NULL, NULL, &o, NULL, d->node_cache);
+    segctx_c c;
+    segfric_ctx_c(m, i, o.fel + o.fd, o.kn, o.off, ya, yb, d->node_cache, &c);
+    for (int j = 0; j < npt; j++) {
+        T Fj[3] = {yr[ns + 3 * j], yr[ns + 3 * j + 1], yr[ns + 3 * j + 2]};
+        for (int k = 0; k < 3; k++) {
+            Fj[k] += I * RC_CSTEP;
+            segpt_c q;
+            segfric_point_c(m, i, &c, j, pslip[j], ya, yb, Fj, po, &q);
+            Fj[k] = creal(Fj[k]);
+            T acc[12] = {0}, fbv[3] = {-q.ft[0], -q.ft[1], -q.ft[2]};
+            if (fa) apply_force_c(m, ba, ya, q.ft, q.x, acc);
+            if (fb) apply_force_c(m, bb, yb, fbv, q.x, acc + 6);
+            const int64_t *sb = slot + j * P + 3 * ncol, *sc = sb + 3 * nrow;
+            int r = 0;
+            if (fa)
+                for (int e = 0; e < 6; e++, r++)
+                    if (sb[r * 3 + k] >= 0) val[sb[r * 3 + k]] += cimag(acc[e]) / RC_CSTEP;
+            if (fb)
+                for (int e = 0; e < 6; e++, r++)
+                    if (sb[r * 3 + k] >= 0) val[sb[r * 3 + k]] += cimag(acc[6 + e]) / RC_CSTEP;
+            const int64_t sw = sb[(r + fr->widx) * 3 + k];
+            if (sw >= 0) val[sw] += -cimag(dot_c(q.ft, q.vrel)) / RC_CSTEP;
+            for (int e = 0; e < 3; e++)
+                if (sc[e * 3 + k] >= 0) val[sc[e * 3 + k]] += cimag(q.dF[e]) / RC_CSTEP;
+        }
     }
 }
 
 void rc_jac_dense_block(const rc_model *m, int is_inter, int e, int mode, int branch, int track, int slip,
                         double t, const double *y, double *out)
 {
-    if (is_inter) dense_inter(m, e, mode, branch, track, slip, y, out);
-    else dense_body(m, e, t, y, out);
+    if (!is_inter) {
+        dense_body(m, e, t, y, out);
+        return;
+    }
+    /* contact points: their states in a scratch of their own, all in mode slip */
+    const int np3 = 3 * m->inter_npt[e];
+    T *work = np3 > 0 ? malloc(2 * ((size_t)RC_NS_MAX + (size_t)np3) * sizeof(T)) : NULL;
+    if (np3 > 0 && !work) {
+        for (int k = 0; k < m->jb_inter[e].nrow * m->jb_inter[e].ncol; k++) out[k] = NAN;
+        return;
+    }
+    dense_inter(m, e, mode, branch, track, slip, NULL, y, out, work, NULL, NULL, NULL);
+    free(work);
 }
 
 /* Add a dense block into the CSC values through its slots (-1: pruned). */
@@ -98,8 +174,12 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
         const rc_jblock *jb = &m->jb_inter[i];
         const int nd = jb->nrow * jb->ncol;
         if (d->inter_mode[i] != RC_MODE_INACTIVE && jb->ncol > 0) {
-            dense_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], y, dense);
+            const int np = m->inter_npt[i];
+            dense_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
+                        d->pt_slip + m->inter_pbase[i], y, dense, d->pt_work, np > 0 ? m->inter_ptslot[i] : NULL, val,
+                        d->node_cache);
             scatter(jb, dense, val);
+            if (np > 0 && d->inter_mode[i] == RC_MODE_CLOSED) points_jac(m, d, i, y, val);
         } else {
             memset(dense, 0, (size_t)nd * sizeof(double));
         }
@@ -127,13 +207,16 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
 
 int rc_jac_refresh_inter(const rc_model *m, rc_data *d, int i, const double *y, double *val)
 {
-    if (!d->jcache || !d->jcache_ok || i < 0 || i >= m->ninter) return -1;
+    /* interfaces with contact points write their point rows and columns
+     * outside the dense block (points_jac): assemble whole */
+    if (!d->jcache || !d->jcache_ok || i < 0 || i >= m->ninter || m->inter_npt[i] > 0) return -1;
     const rc_jblock *jb = &m->jb_inter[i];
     const int nd = jb->nrow * jb->ncol;
     if (nd == 0) return 0;
     double dense[RC_JB_MAX];
     if (d->inter_mode[i] != RC_MODE_INACTIVE)
-        dense_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], y, dense);
+        dense_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
+                    d->pt_slip + m->inter_pbase[i], y, dense, d->pt_work, NULL, val, d->node_cache);
     else
         memset(dense, 0, (size_t)nd * sizeof(double));
     double *old = d->jcache + d->jcache_off[i];
@@ -155,7 +238,13 @@ void rc_inter_report_rate(const rc_model *m, int i, int mode, int branch, int tr
 {
     /* d/dt q = Im(q(y + i h ydot)) / h for every reported quantity q */
     const int ba = m->inter_ba[i], bb = m->inter_bb[i], ns = m->inter_ns[i];
-    T ya[RC_NB], yb[RC_NB], ys[RC_NS_MAX];
+    const int np3 = 3 * m->inter_npt[i];
+    T ya[RC_NB], yb[RC_NB], ysl[RC_NS_MAX];
+    /* contact points: their states (read, not differentiated) */
+    T *ys = np3 > 0 ? malloc(((size_t)ns + (size_t)np3) * sizeof(T)) : ysl;
+    memset(dr, 0, sizeof *dr);
+    if (!ys) return;
+    for (int k = 0; k < np3; k++) ys[ns + k] = y[m->inter_eadr[i] + ns + k];
     load_body(m, ba, y, ya);
     load_body(m, bb, y, yb);
     if (ba >= 0 && m->body_yadr[ba] >= 0)
@@ -164,8 +253,8 @@ void rc_inter_report_rate(const rc_model *m, int i, int mode, int branch, int tr
         for (int k = 0; k < RC_NB; k++) yb[k] += I * RC_CSTEP * ydot[m->body_yadr[bb] + k];
     for (int k = 0; k < ns; k++) ys[k] = y[m->inter_eadr[i] + k] + I * RC_CSTEP * ydot[m->inter_eadr[i] + k];
     t6out_c o;
-    type6_c(m, i, mode, branch, track, slip, ya, yb, ys, NULL, NULL, NULL, &o);
-    memset(dr, 0, sizeof *dr);
+    type6_c(m, i, mode, branch, track, slip, NULL, ya, yb, ys, NULL, NULL, NULL, &o, NULL, NULL);
+    if (ys != ysl) free(ys);
     dr->p = cimag(o.p) / RC_CSTEP;
     dr->vn = cimag(o.vn) / RC_CSTEP;
     dr->p_raw = cimag(o.p_raw) / RC_CSTEP;

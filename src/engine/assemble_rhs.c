@@ -33,14 +33,15 @@ int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, do
     for (int i = 0; i < m->ninter; i++) {
         double *sdot = ydot + m->inter_eadr[i];
         const int ba = m->inter_ba[i], bb = m->inter_bb[i];
+        const int nst = m->inter_ns[i] + 3 * m->inter_npt[i]; /* own and point states */
         if (d->inter_mode[i] == RC_MODE_INACTIVE) {
-            memset(sdot, 0, (size_t)m->inter_ns[i] * sizeof(double));
+            memset(sdot, 0, (size_t)nst * sizeof(double));
             continue;
         }
-        type6_r(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], rc_body_state(m, ba, y),
-                rc_body_state(m, bb, y), y + m->inter_eadr[i], acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot,
-                NULL);
-        for (int k = 0; k < m->inter_ns[i]; k++)
+        type6_r(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
+                d->pt_slip + m->inter_pbase[i], rc_body_state(m, ba, y), rc_body_state(m, bb, y), y + m->inter_eadr[i],
+                acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot, NULL, NULL, d->node_cache);
+        for (int k = 0; k < nst; k++)
             if (!isfinite(sdot[k])) {
                 d->fail_inter = i;
                 d->fail_t = t;
@@ -73,13 +74,12 @@ double rc_friction_mu(const rc_model *m, int i, int dir, double p, double v, dou
     return fric_mu_r(m, &m->inter_fr[i], dir, p, v, fn, i);
 }
 
-void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, double t,
-                          const double *y, rc_inter_report *r)
+static void report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, const int *pslip,
+                        const double *y, rc_inter_report *r)
 {
     t6out_r o;
-    (void)t;
-    type6_r(m, i, mode, branch, track, slip, rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y),
-            y + m->inter_eadr[i], NULL, NULL, NULL, &o);
+    type6_r(m, i, mode, branch, track, slip, pslip, rc_body_state(m, m->inter_ba[i], y),
+            rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, NULL, NULL);
     r->p = o.p;
     r->vn = o.vn;
     r->p_raw = o.p_raw;
@@ -105,6 +105,35 @@ void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int tr
     }
 }
 
+void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, double t,
+                          const double *y, rc_inter_report *r)
+{
+    (void)t;
+    report_eval(m, i, mode, branch, track, slip, NULL, y, r);
+}
+
+void rc_inter_report_eval_d(const rc_model *m, const rc_data *d, int i, double t, const double *y, rc_inter_report *r)
+{
+    (void)t;
+    report_eval(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
+                d->pt_slip + m->inter_pbase[i], y, r);
+}
+
+void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip, double t, const double *y, double *out)
+{
+    (void)t;
+    const int npt = m->inter_npt[i];
+    for (int j = 0; j < npt; j++) {
+        out[5 * j] = -1.0;
+        for (int k = 1; k < 5; k++) out[5 * j + k] = 0.0;
+    }
+    if (d->inter_mode[i] != RC_MODE_CLOSED || npt == 0) return;
+    t6out_r o;
+    type6_r(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
+            slip ? slip : d->pt_slip + m->inter_pbase[i], rc_body_state(m, m->inter_ba[i], y),
+            rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, out, d->node_cache);
+}
+
 void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
 {
     for (int i = 0; i < m->ninter; i++) {
@@ -115,7 +144,19 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         const int mode = d->inter_mode[i], br = d->inter_branch[i], trk = d->inter_track[i];
         if (mode == RC_MODE_INACTIVE) continue;
         rc_inter_report r;
-        rc_inter_report_eval(m, i, mode, br, trk, d->inter_slip[i], t, y, &r);
+        const int npt = m->inter_npt[i];
+        double *gp = g + RC_ROOTS_PER_INTER * m->ninter + m->inter_pbase[i];
+        for (int j = 0; j < npt; j++) gp[j] = 1.0; /* inactive point roots */
+        if (npt > 0 && mode == RC_MODE_CLOSED) {
+            /* friction per contact point: each point's slip root */
+            double *pout = d->pt_work; /* 5 npt values (rc_data_new) */
+            t6out_r o;
+            type6_r(m, i, mode, br, trk, d->inter_slip[i], d->pt_slip + m->inter_pbase[i],
+                    rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i],
+                    NULL, NULL, NULL, &o, pout, d->node_cache);
+            for (int j = 0; j < npt; j++) gp[j] = pout[5 * j];
+        }
+        rc_inter_report_eval_d(m, d, i, t, y, &r);
         /* friction: stick -> slip at the limit, slip -> stick when sliding stops */
         if (mode == RC_MODE_CLOSED && m->inter_fr[i].kind != RC_FK_NONE) gi[RC_ROOT_SLIP] = r.slip_root;
         /* saturated stateless law: its force -L v_t/|v_t| flips when the sliding
@@ -149,7 +190,7 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         }
     }
     /* contact couplings: after the interfaces' roots (contact_rhs.inc) */
-    if (rc_cpl_nroots(m) > 0) rc_cpl_roots(m, d, t, y, g + RC_ROOTS_PER_INTER * m->ninter);
+    if (rc_cpl_nroots(m) > 0) rc_cpl_roots(m, d, t, y, g + rc_root_cpl_base(m));
 }
 
 #include "coupling_rhs.inc"

@@ -16,7 +16,7 @@ double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double
     const int mode = d->inter_mode[i];
     if (mode != RC_MODE_CLOSED && mode != RC_MODE_RELEASED) return 0.0;
     rc_inter_report r;
-    rc_inter_report_eval(m, i, mode, d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y, &r);
+    rc_inter_report_eval_d(m, d, i, t, y, &r);
     const double ax = m->inter_ascalex[i], P = r.p, F = r.fload;
     if (P <= 0) return 0.0;
     if (m->inter_law[i] == RC_LAW_POWER) return rc_power_stored(m, i, P); /* integral of F_k */

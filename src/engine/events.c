@@ -14,6 +14,7 @@
 #include "model/coupling_contact.h"
 #include "engine/events.h"
 #include "model/power.h"
+#include "model/segsurf.h"
 
 /* Touch band: RC_TOUCH_ULPS ulps of the coordinates, at least RC_TOUCH_REL
  * of the penetration scale (docs/theory.md 5.1) [-]. */
@@ -32,6 +33,16 @@ rc_data *rc_data_new(const rc_model *m)
     d->inter_dref = calloc(3 * n, sizeof(double));
     d->inter_band = calloc(2 * n, sizeof(double));
     d->cpl = rc_cpl_data_new(m);
+    /* friction per contact point: modes, and the scratch of the roots (5 per
+     * point) and of the Jacobian (complex own and point states and rates) */
+    int maxpt = 0;
+    for (int i = 0; i < m->ninter; i++) maxpt = m->inter_npt[i] > maxpt ? m->inter_npt[i] : maxpt;
+    int maxnode = 0;
+    for (int i = 0; i < m->ninter; i++)
+        if (rc_pair_nodes(m->inter_pair[i]) && rc_seg_points(m, i) > maxnode) maxnode = rc_seg_points(m, i);
+    d->node_cache = calloc(2 * RC_NODE_CACHE * (size_t)maxnode + 2, sizeof(double));
+    d->pt_slip = calloc((size_t)m->npt + 1, sizeof(int));
+    d->pt_work = calloc(5 * (size_t)maxpt + 4 * ((size_t)RC_NS_MAX + 3 * (size_t)maxpt) + 16, sizeof(double));
     int imp_ok = 1;
     if (m->imp) { /* imposed velocities: scratch of rhs and Jacobian (imposed.c) */
         d->imp_free = calloc((size_t)m->ny, sizeof(double));
@@ -53,7 +64,8 @@ rc_data *rc_data_new(const rc_model *m)
             jc_ok = d->jcache != NULL;
         }
     }
-    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->cpl || !imp_ok || !jc_ok) {
+    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->cpl || !imp_ok || !jc_ok ||
+        !d->pt_slip || !d->pt_work || !d->node_cache) {
         rc_data_free(d);
         return NULL;
     }
@@ -70,6 +82,9 @@ void rc_data_free(rc_data *d)
     free(d->inter_slip);
     free(d->inter_dref);
     free(d->inter_band);
+    free(d->pt_slip);
+    free(d->pt_work);
+    free(d->node_cache);
     rc_cpl_data_free(d->cpl);
     free(d->imp_free);
     free(d->imp_scratch);
@@ -94,7 +109,7 @@ static void set_state(double *s, double v, int *changed)
 
 static void report(const rc_model *m, const rc_data *d, int i, double t, const double *y, rc_inter_report *r)
 {
-    rc_inter_report_eval(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y, r);
+    rc_inter_report_eval_d(m, d, i, t, y, r);
 }
 
 /* Friction starts afresh (sticking, no force) whenever the contact closes
@@ -107,6 +122,60 @@ static void reset_friction(const rc_model *m, rc_data *d, int i, double *y, int 
         set_state(own(m, i, fr->tidx >= 0 ? fr->tidx + k : -1, y), 0.0, changed);
         set_state(own(m, i, fr->fidx >= 0 ? fr->fidx + k : -1, y), 0.0, changed);
     }
+    /* friction per contact point: every point sticks afresh */
+    for (int j = 0; j < m->inter_npt[i]; j++) {
+        d->pt_slip[m->inter_pbase[i] + j] = 0;
+        for (int k = 0; k < 3; k++) set_state(own(m, i, m->inter_ns[i] + 3 * j + k, y), 0.0, changed);
+    }
+}
+
+/* Friction per contact point of interface i: the points whose slip roots
+ * crossed flip (roots: the interface's point roots; NULL: those sticking
+ * with a positive root, after a mode change). From stick to slip a point's
+ * state takes the applied force (spring and stick damper), then that
+ * direction on the limit; from slip to stick, the force where it is (on the
+ * limit). Three evaluations of the interface, whatever the number of points
+ * flipped. Returns the number of points flipped. */
+static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y, const int *roots, int *changed)
+{
+    const int npt = m->inter_npt[i];
+    if (npt == 0 || d->inter_mode[i] != RC_MODE_CLOSED) return 0;
+    int *sl = d->pt_slip + m->inter_pbase[i];
+    double *out = d->pt_work; /* 5 per point (rc_data_new) */
+    char *sel = calloc((size_t)npt, 1);
+    int *md = malloc((size_t)npt * sizeof(int));
+    if (!sel || !md) {
+        free(sel);
+        free(md);
+        return 0;
+    }
+    if (!roots) rc_points_eval(m, d, i, NULL, t, y, out);
+    int n = 0;
+    for (int j = 0; j < npt; j++) {
+        sel[j] = roots ? roots[j] != 0 : !sl[j] && out[5 * j] > 0;
+        n += sel[j];
+    }
+    if (n > 0) {
+        double *ft = y + m->inter_eadr[i] + m->inter_ns[i];
+        rc_points_eval(m, d, i, NULL, t, y, out);
+        for (int j = 0; j < npt; j++)
+            if (sel[j])
+                for (int k = 0; k < 3; k++) set_state(ft + 3 * j + k, out[5 * j + 1 + k], changed);
+        for (int j = 0; j < npt; j++) md[j] = sel[j] ? 1 : sl[j];
+        rc_points_eval(m, d, i, md, t, y, out);
+        for (int j = 0; j < npt; j++) {
+            if (!sel[j] || sl[j]) continue;
+            const double *f = out + 5 * j + 1, nr = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
+            if (nr > 0 && isfinite(nr)) /* a zero limit (no share) keeps the direction */
+                for (int k = 0; k < 3; k++) set_state(ft + 3 * j + k, f[k], changed);
+        }
+        for (int j = 0; j < npt; j++)
+            if (sel[j]) sl[j] = !sl[j];
+        *changed = 1;
+    }
+    free(sel);
+    free(md);
+    return n;
 }
 
 /* Enter the contact zone at P = 0 from separation: virgin force, on the load
@@ -389,6 +458,7 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
         const int *r = roots + RC_ROOTS_PER_INTER * i;
         int any = 0;
         for (int k = 0; k < RC_ROOTS_PER_INTER; k++) any |= r[k] != 0;
+        for (int j = 0; j < m->inter_npt[i]; j++) any |= roots[RC_ROOTS_PER_INTER * m->ninter + m->inter_pbase[i] + j] != 0;
         if (!any) continue;
         clear_band(d, i); /* the touch bands last until the interface's next event */
         /* window first; then the branch, then the contact, so that crossings
@@ -401,6 +471,18 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
             if (!kind[2]) kind[3] = step_friction(m, d, i, t, y, r, restart);
         }
         if ((kind[0] || kind[2]) && d->inter_mode[i] == RC_MODE_CLOSED) stateless_friction_mode(m, d, i, t, y);
+        /* friction per contact point: the points whose roots crossed (all
+         * reset when the contact changed) */
+        if (!kind[0] && !kind[2] && m->inter_npt[i] > 0) {
+            const int *rp = roots + RC_ROOTS_PER_INTER * m->ninter + m->inter_pbase[i];
+            int nsl = 0, nst = 0;
+            for (int j = 0; j < m->inter_npt[i]; j++)
+                if (rp[j]) {
+                    if (d->pt_slip[m->inter_pbase[i] + j]) nst++;
+                    else nsl++;
+                }
+            if (points_flip(m, d, i, t, y, rp, restart) > 0) kind[3] = nsl >= nst ? "fric_slip" : "fric_stick";
+        }
         for (int k = 0; k < 4; k++) {
             if (!kind[k]) continue;
             if (n < max_ev) {
@@ -415,7 +497,7 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
     if (rc_cpl_nroots(m) > 0) {
         const char *kinds[RC_CPL_MAX_EV];
         int cpls[RC_CPL_MAX_EV];
-        const int nc = rc_cpl_events(m, d, t, y, roots + RC_ROOTS_PER_INTER * m->ninter, kinds, cpls, RC_CPL_MAX_EV,
+        const int nc = rc_cpl_events(m, d, t, y, roots + rc_root_cpl_base(m), kinds, cpls, RC_CPL_MAX_EV,
                                      restart);
         for (int j = 0; j < nc && j < RC_CPL_MAX_EV; j++, n++)
             if (n < max_ev) {
@@ -540,8 +622,9 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
          * closes while sliding: the stick damper alone exceeds the limit):
          * it slips from the start, the state on the applied force */
         const rc_fric *fr = &m->inter_fr[i];
+        if (!kind && points_flip(m, d, i, t, y, NULL, restart) > 0) kind = "fric_slip";
         if (!kind && d->inter_mode[i] == RC_MODE_CLOSED && fr->kind != RC_FK_NONE && fr->form == RC_FF_INCREMENTAL &&
-            !d->inter_slip[i]) {
+            m->inter_npt[i] == 0 && !d->inter_slip[i]) {
             report(m, d, i, t, y, &r);
             if (r.slip_root > 0) {
                 slip_on_limit(m, d, i, t, y, restart);

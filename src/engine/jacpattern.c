@@ -230,8 +230,7 @@ static rc_status probe_blocks(rc_model *m, rc_error *err)
         /* a segment surface: which of its points act depends on the state,
          * so the probe states cannot tell the structural zeros: the whole
          * block is kept (docs/theory.md 2.7) */
-        if (is_inter && (m->inter_pair[idx] == RC_PAIR_SEG_PLANE || m->inter_pair[idx] == RC_PAIR_SPHERE_SEG ||
-                         m->inter_pair[idx] == RC_PAIR_SEG_BOX)) {
+        if (is_inter && (rc_pair_multi(m->inter_pair[idx]) || m->inter_pair[idx] == RC_PAIR_CYL_SEG)) {
             for (int k = 0; k < n; k++) jb->slot[k] = 0;
             continue;
         }
@@ -343,6 +342,18 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
     rc_status pst = probe_blocks(m, err);
     if (pst) return pst;
     if (m->gwork_adr >= 0) nkey += 3 * (int64_t)m->nbody;
+    /* friction per contact point: all kept (which points act depends on
+     * the state), per point P = 3 ncol + 3 nrow + 9 entries: its rows
+     * against the block's columns, the block's rows against its columns, its
+     * rows against its columns (layout of inter_ptslot) */
+    for (int i = 0; i < m->ninter; i++)
+        if (m->inter_npt[i] > 0) {
+            const rc_jblock *jb = &m->jb_inter[i];
+            const int64_t P = 3 * (int64_t)jb->ncol + 3 * (int64_t)jb->nrow + 9;
+            nkey += P * m->inter_npt[i];
+            m->inter_ptslot[i] = malloc((size_t)(P * m->inter_npt[i]) * sizeof(int64_t));
+            if (!m->inter_ptslot[i]) RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
+        }
     int64_t *key = malloc((size_t)nkey * sizeof(int64_t));
     if (!key) RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
     int64_t n = 0;
@@ -355,6 +366,17 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
             for (int c = 0; c < jb->ncol; c++)
                 if (jb->slot[r * jb->ncol + c] >= 0) key[n++] = (int64_t)jb->cols[c] * ny + jb->rows[r];
     }
+    for (int i = 0; i < m->ninter; i++)
+        for (int j = 0; j < m->inter_npt[i]; j++) {
+            const rc_jblock *jb = &m->jb_inter[i];
+            const int p0 = m->inter_eadr[i] + m->inter_ns[i] + 3 * j;
+            for (int e = 0; e < 3; e++)
+                for (int c = 0; c < jb->ncol; c++) key[n++] = (int64_t)jb->cols[c] * ny + p0 + e;
+            for (int r = 0; r < jb->nrow; r++)
+                for (int e = 0; e < 3; e++) key[n++] = (int64_t)(p0 + e) * ny + jb->rows[r];
+            for (int r = 0; r < 3; r++)
+                for (int e = 0; e < 3; e++) key[n++] = (int64_t)(p0 + e) * ny + p0 + r;
+        }
     /* potential of a time-varying gravity: its row against all velocities */
     if (m->gwork_adr >= 0)
         for (int b = 0; b < m->nbody; b++)
@@ -412,5 +434,18 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
         rc_status st = m->cpl->jb[k].slot ? fill_slots(m, &m->cpl->jb[k], err) : RC_OK;
         if (st) return st;
     }
+    for (int i = 0; i < m->ninter; i++)
+        for (int j = 0; j < m->inter_npt[i]; j++) {
+            const rc_jblock *jb = &m->jb_inter[i];
+            const int64_t P = 3 * (int64_t)jb->ncol + 3 * (int64_t)jb->nrow + 9;
+            int64_t *sl = m->inter_ptslot[i] + j * P;
+            const int p0 = m->inter_eadr[i] + m->inter_ns[i] + 3 * j;
+            for (int e = 0; e < 3; e++)
+                for (int c = 0; c < jb->ncol; c++) *sl++ = rc_jac_slot(m, p0 + e, jb->cols[c]);
+            for (int r = 0; r < jb->nrow; r++)
+                for (int e = 0; e < 3; e++) *sl++ = rc_jac_slot(m, jb->rows[r], p0 + e);
+            for (int r = 0; r < 3; r++)
+                for (int e = 0; e < 3; e++) *sl++ = rc_jac_slot(m, p0 + r, p0 + e);
+        }
     return RC_OK;
 }

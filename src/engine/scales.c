@@ -591,12 +591,16 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
             if (fr->tidx >= 0) a[fr->tidx + k] = af;
             if (fr->fidx >= 0) a[fr->fidx + k] = af;
         }
+        /* friction per contact point: each point's F_t as the interface's */
+        const int npt = m->inter_npt[i];
+        for (int k = 0; k < 3 * npt; k++) a[m->inter_ns[i] + k] = scaled ? rt * m->inter_fscale[i] : fr->kt * apos;
         /* slip-test band: the force tolerance of F_t, and at least RC_SLIP_BAND
          * of the contact's force scale (the relative band of the limit,
          * carried down to small loads: a load ramped from zero, carried by the
          * dampers at first, must not slip on differences of 1e-8 F_s) */
-        double fb = fr->tidx >= 0 ? a[fr->tidx] : 0.0;
-        if (fr->tidx >= 0 && isfinite(m->inter_fscale[i])) fb = fmax(fb, RC_SLIP_BAND * m->inter_fscale[i]);
+        const int tt = fr->tidx >= 0 ? fr->tidx : npt > 0 ? m->inter_ns[i] : -1; /* an F_t state */
+        double fb = tt >= 0 ? a[tt] : 0.0;
+        if (tt >= 0 && isfinite(m->inter_fscale[i])) fb = fmax(fb, RC_SLIP_BAND * m->inter_fscale[i]);
         m->inter_fr[i].fband = fb;
     }
     free(size);

@@ -318,8 +318,12 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     /* order the pair (a: sphere or cylinder) and name its kind (model/geom.c) */
     char where[600];
     snprintf(where, sizeof where, RC_LOCFMT "card %s", RC_LOC(t6->line_loc[0]), card);
+    const int s1_in = s1;
     rc_status pst = rc_geom_pair(m, s1, s2, &s1, &s2, &m->inter_pair[i], where, err);
     if (pst) return pst;
+    /* IRS belongs to surf_ID1, IRm to surf_ID2, whichever is surface a */
+    m->inter_orient[2 * i] = s1 == s1_in ? t6->irs : t6->irm;
+    m->inter_orient[2 * i + 1] = s1 == s1_in ? t6->irm : t6->irs;
     m->inter_sa[i] = s1;
     m->inter_sb[i] = s2;
     m->inter_ba[i] = m->surf_body[s1];
@@ -394,19 +398,32 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
 
 /* Interfaces on a segment surface: the TYPE6 normal law without friction
  * for now (docs/theory.md 2.7). */
-static rc_status check_seg_pairs(const rc_case *c, const rc_model *m, rc_error *err)
+static rc_status check_seg_pairs(const rc_case *c, rc_model *m, rc_error *err)
 {
     for (int i = 0; i < m->ninter; i++) {
-        if (m->inter_pair[i] != RC_PAIR_SEG_PLANE && m->inter_pair[i] != RC_PAIR_SPHERE_SEG &&
-            m->inter_pair[i] != RC_PAIR_SEG_BOX)
+        if (!rc_pair_multi(m->inter_pair[i])) continue;
+        /* /INTER/POWER: the power law at P, its damping at v_bar; step5
+         * friction per point is not there yet */
+        if (i >= c->ntype6) {
+            if (m->inter_fr[i].kind != RC_FK_NONE)
+                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields mu_s/mu_d: step5 friction on a segment surface with several contact points (against a plane, a box, a sphere or a segment surface): not supported yet (supported: the power law without friction there; with friction a cylinder against a segment surface)",
+                         RC_LOC(c->power[i - c->ntype6].line_loc[3]), m->inter_name[i]);
             continue;
-        if (i >= c->ntype6)
-            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields surf_ID1/surf_ID2: a segment surface in /INTER/POWER: not supported yet (supported: /INTER/TYPE6)",
-                     RC_LOC(c->power[i - c->ntype6].line_loc[0]), m->inter_name[i]);
+        }
         const rc_loc loc = c->type6[i].line_loc[1];
-        if (m->inter_fr[i].kind != RC_FK_NONE)
-            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields Sfric/Fric (or a /FRICTION card naming its parts): friction on a segment surface: not supported yet",
+        const rc_fric *fr = &m->inter_fr[i];
+        if (fr->kind == RC_FK_NONE) continue;
+        /* friction per contact point: the nodes against a plane or a box,
+         * incremental form, no filter */
+        if (m->inter_pair[i] == RC_PAIR_SPHERE_SEG)
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields Sfric/Fric (or a /FRICTION card naming its parts): friction between a sphere and a segment surface: not supported yet (supported: a segment surface against a plane or a box)",
                      RC_LOC(loc), m->inter_name[i]);
+        if (fr->form != RC_FF_INCREMENTAL)
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s: friction on a segment surface with the viscous formulation (/FRICTION/%d, Iform 1): not supported yet (supported: the incremental formulation, Iform 2, and TYPE6's own Fric)",
+                     RC_LOC(loc), m->inter_name[i], fr->card_id);
+        if (fr->tau > 0)
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s: friction on a segment surface with a filter (/FRICTION/%d, Ifiltr): not supported yet",
+                     RC_LOC(loc), m->inter_name[i], fr->card_id);
     }
     return RC_OK;
 }
@@ -428,8 +445,14 @@ static rc_status layout(const rc_case *c, rc_model *m, rc_error *err)
         m->inter_hidx[i] = m->inter_iform[i] != 0 ? ns++ : -1;
         m->inter_oidx[i] = m->inter_inacti[i] == 5 ? ns++ : -1;
         rc_fric *fr = &m->inter_fr[i];
+        /* friction per contact point (a segment surface's nodes): F_t of
+         * each point after the own states, none for the interface */
+        const int per_point = fr->kind != RC_FK_NONE && rc_pair_nodes(m->inter_pair[i]);
+        m->inter_pbase[i] = m->npt;
+        m->inter_npt[i] = per_point ? rc_seg_points(m, i) : 0;
+        m->npt += m->inter_npt[i];
         if (fr->kind != RC_FK_NONE) {
-            if (fr->form == RC_FF_INCREMENTAL) {
+            if (fr->form == RC_FF_INCREMENTAL && !per_point) {
                 fr->tidx = ns;
                 ns += 3;
             }
@@ -440,7 +463,7 @@ static rc_status layout(const rc_case *c, rc_model *m, rc_error *err)
             fr->widx = ns++;
         }
         m->inter_ns[i] = ns;
-        ny += ns;
+        ny += ns + 3 * m->inter_npt[i];
     }
     ny = rc_cpl_layout(m, ny);
     /* a gravity that varies in time has no potential: integrate its work */
@@ -584,6 +607,10 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->inter_hidx, m->ninter);
     ALLOC(m->inter_oidx, m->ninter);
     ALLOC(m->inter_fr, m->ninter);
+    ALLOC(m->inter_npt, m->ninter);
+    ALLOC(m->inter_orient, 2 * m->ninter);
+    ALLOC(m->inter_pbase, m->ninter);
+    ALLOC(m->inter_ptslot, m->ninter);
     ALLOC(m->inter_name, m->ninter);
     ALLOC(m->inter_loc, m->ninter);
     ALLOC(m->inter_law, m->ninter);
@@ -637,7 +664,8 @@ void rc_model_free(rc_model *m)
                       m->inter_name, m->atol, m->held, m->row_held, m->gwork_slot, m->surf_ext,
                       m->inter_law, m->inter_pw, m->inter_pscale, m->inter_fscale, m->inter_kscale,
                       m->inter_vscale, m->inter_mred, m->ewt_rel, m->body_loc, m->inter_loc,
-                      m->surf_nadr, m->surf_node, m->surf_sadr, m->surf_seg};
+                      m->surf_nadr, m->surf_node, m->surf_sadr, m->surf_seg, m->inter_npt, m->inter_pbase,
+                      m->inter_ptslot, m->surf_seg_turned, m->inter_orient};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     free(m);
 }

@@ -55,6 +55,8 @@ const char *rc_geom_pair_name(rc_pair_kind kind)
     case RC_PAIR_SEG_PLANE: return "segments-plane";
     case RC_PAIR_SPHERE_SEG: return "sphere-segments";
     case RC_PAIR_SEG_BOX: return "segments-box";
+    case RC_PAIR_SEG_SEG: return "segments-segments";
+    case RC_PAIR_CYL_SEG: return "cylinder-segments";
     }
     return "?";
 }
@@ -100,6 +102,8 @@ rc_status rc_geom_pair(const rc_model *m, int s1, int s2, int *sa, int *sb, rc_p
     else if (ka == RC_SURF_SEG && kb == RC_SURF_PLANE) *kind = RC_PAIR_SEG_PLANE;
     else if (ka == RC_SURF_SEG && kb == RC_SURF_BOX) *kind = RC_PAIR_SEG_BOX;
     else if (ka == RC_SURF_SPHERE && kb == RC_SURF_SEG) *kind = RC_PAIR_SPHERE_SEG;
+    else if (ka == RC_SURF_SEG && kb == RC_SURF_SEG) *kind = RC_PAIR_SEG_SEG;
+    else if (ka == RC_SURF_CYL && kb == RC_SURF_SEG) *kind = RC_PAIR_CYL_SEG;
     else if (ka == RC_SURF_SEG || kb == RC_SURF_SEG)
         RC_RAISE(err, RC_EINPUT,
                  "%s, fields surf_ID1/surf_ID2: a segment surface against %s: not supported yet (supported: a "

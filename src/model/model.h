@@ -40,6 +40,7 @@
  * spring released from the limit rings back exactly to it, and a touch must
  * not count as a crossing (docs/theory.md 3.5) [-]. */
 #define RC_SLIP_BAND 1e-6
+#define RC_NODE_CACHE 11 /* values per point of the node geometry cache (rc_data.node_cache) */
 #define RC_NS_MAX 11 /* own states of an interface: energies, F_h, offset, F_t, filter, W_fric */
 #define RC_JB_MAX ((2 * 6 + RC_NS_MAX) * (2 * RC_NB + RC_NS_MAX)) /* largest dense block */
 
@@ -67,9 +68,24 @@ typedef enum {
                                  several contact points (docs/theory.md) */
     RC_PAIR_SPHERE_SEG = 8,   /* a: sphere, b: segment surface (closest
                                  points on the candidate segments) */
-    RC_PAIR_SEG_BOX = 9       /* a: segment surface (its nodes), b: box
+    RC_PAIR_SEG_BOX = 9,      /* a: segment surface (its nodes), b: box
                                  (each node against its nearest face) */
+    RC_PAIR_SEG_SEG = 10,     /* a, b: segment surfaces, node to segment
+                                 both ways (the nodes of a against the
+                                 segments of b, then those of b against a's) */
+    RC_PAIR_CYL_SEG = 11      /* a: cylinder, b: segment surface (the plane
+                                 of the segment under the cylinder's centre) */
 } rc_pair_kind;
+/* Pairs with several contact points (docs/theory.md 2.7). */
+static inline int rc_pair_multi(rc_pair_kind k)
+{
+    return k == RC_PAIR_SEG_PLANE || k == RC_PAIR_SPHERE_SEG || k == RC_PAIR_SEG_BOX || k == RC_PAIR_SEG_SEG;
+}
+/* Pairs whose contact points are nodes (fixed at compile time). */
+static inline int rc_pair_nodes(rc_pair_kind k)
+{
+    return k == RC_PAIR_SEG_PLANE || k == RC_PAIR_SEG_BOX || k == RC_PAIR_SEG_SEG;
+}
 /* "sphere-plane", "cylinder-box", ... (model/geom.c) */
 const char *rc_geom_pair_name(rc_pair_kind kind);
 
@@ -161,6 +177,8 @@ struct rc_model {
     double *surf_node;   /* [3*nodes] */
     int *surf_sadr;      /* [nsurf+1] */
     int *surf_seg;       /* [4*segments] */
+    signed char *surf_seg_turned; /* [segments] 1: a solid's face turned by /SURF/PART to
+                            point out of its solid (its element numbering points in) */
     struct rc_segmesh *surf_mesh; /* [nsurf] adjacency and broad-phase grid (segsurf.h) */
 
     /* curves */
@@ -195,6 +213,19 @@ struct rc_model {
     int *inter_hidx;     /* [ninter] index of F_h among them, -1 */
     int *inter_oidx;     /* [ninter] index of the Inacti offset, -1 */
     rc_fric *inter_fr;   /* [ninter] friction (friction.h); kind RC_FK_NONE: none */
+    int *inter_orient;   /* [2*ninter] segment normals of surfaces a, b: TYPE6 IRS/IRm of
+                            that surface: 0 as built (solid faces out), 1 reversed,
+                            2 never reversed (solid faces as their element numbers them) */
+    /* friction per contact point (a segment surface's nodes against a plane
+     * or a box, docs/theory.md 2.7): point j of interface i has its own
+     * tangential force F_t,j (3 states, global frame [N]) at state
+     * inter_eadr[i] + inter_ns[i] + 3 j, right after the interface's own
+     * states, its stick/slip mode rc_data.pt_slip[inter_pbase[i] + j] and
+     * its slip root (rc_root_count). inter_npt[i] = 0: none. */
+    int npt;             /* points of all interfaces */
+    int *inter_npt;      /* [ninter] points of interface i */
+    int *inter_pbase;    /* [ninter] index of its first point */
+    int64_t **inter_ptslot; /* [ninter] Jacobian slots of its points (jacpattern.c), NULL: none */
     char **inter_name;   /* [ninter] "/INTER/TYPE6/<id>" */
     rc_loc *inter_loc;   /* [ninter] header of the interface card, for messages */
     int *inter_law;      /* [ninter] normal law RC_LAW_TYPE6 / RC_LAW_POWER (power.h) */
@@ -250,6 +281,10 @@ typedef struct rc_data {
     int *inter_branch;   /* [ninter] rc_branch (Iform 1, 2) */
     int *inter_track;    /* [ninter] 1: Inacti 5 offset follows the separation */
     int *inter_slip;     /* [ninter] friction: 0 stick, 1 slip */
+    int *pt_slip;        /* [npt] friction per contact point: 0 stick, 1 slip */
+    void *pt_work;       /* Jacobian scratch of the contact points (complex) */
+    void *node_cache;    /* node geometry of a node pair, RC_NODE_CACHE complex
+                            values per point (kernels.inc, seg_fill) */
     double *inter_dref;  /* [ninter*3] sliding direction when a stateless friction
                             law saturated (reversal root) [-] */
     double *inter_band;  /* [ninter*2] touch bands of a contact closed at zero
@@ -327,12 +362,25 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
  * in d's present modes; the rest of `val` stays as it was. 0, or -1 when d
  * holds no blocks of `val` (assemble it whole then). */
 int rc_jac_refresh_inter(const rc_model *m, rc_data *d, int i, const double *y, double *val);
-/* Root functions [ninter*RC_ROOTS_PER_INTER]. */
+/* Root functions, in this order: RC_ROOTS_PER_INTER per interface; one slip
+ * root per contact point with friction (inter_npt, at rc_root_point_base);
+ * the contact couplings' (at rc_root_cpl_base; coupling_contact.h). */
+static inline int rc_root_point_base(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter; }
+static inline int rc_root_cpl_base(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter + m->npt; }
+int rc_root_count(const rc_model *m); /* all of them (coupling_contact.c) */
+/* Root functions [rc_root_count(m)]. */
 void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
 /* Evaluate one interface at (t, y) in the given modes, for reports, roots
- * and events. */
+ * and events; contact points with friction all take the mode `slip`. */
 void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, double t,
                           const double *y, rc_inter_report *r);
+/* The same in the modes of d, contact points each in its own. */
+void rc_inter_report_eval_d(const rc_model *m, const rc_data *d, int i, double t, const double *y, rc_inter_report *r);
+/* The contact points of interface i (friction per point) at (t, y), closed
+ * in the modes of d, each point j in mode slip[j] (NULL: its mode in d):
+ * per point 5 values into out: its slip root, the law's tangential force
+ * on a before any projection (3) [N], its share w_j = f_j / F_n [-]. */
+void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip, double t, const double *y, double *out);
 /* Gravity acceleration vector of body b at time t [m/s^2]. */
 void rc_gravity(const rc_model *m, int b, double t, double g[3]);
 /* Value of the gravity time function at t [-] (1 when none is given). */

@@ -24,6 +24,11 @@ void rc_jac_free(rc_model *m)
         for (int b = 0; b < m->nbody; b++) free(m->jb_body[b].slot);
     if (m->jb_inter)
         for (int i = 0; i < m->ninter; i++) free(m->jb_inter[i].slot);
+    if (m->inter_ptslot)
+        for (int i = 0; i < m->ninter; i++) {
+            free(m->inter_ptslot[i]);
+            m->inter_ptslot[i] = NULL;
+        }
     if (m->cpl)
         for (int k = 0; k < m->cpl->n; k++) {
             free(m->cpl->jb[k].slot);

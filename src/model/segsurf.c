@@ -26,6 +26,7 @@ typedef struct seg_face {
     int node[4]; /* node ids; node[3] = 0: a triangle */
     int key[4];  /* sorted ids, for finding shared faces */
     int solid;   /* 1: face of a solid (dropped when two solids share it) */
+    int turned;  /* 1: turned to point out of its solid */
     rc_loc loc;  /* the element's or the segment's line */
 } seg_face;
 
@@ -85,6 +86,7 @@ static int solid_face(const rc_case *c, const int *v, int nv, const double *ctr,
     memset(f->node, 0, sizeof f->node);
     for (int k = 0; k < nu; k++) f->node[k] = out < 0 ? u[nu - 1 - k] : u[k];
     f->solid = 1;
+    f->turned = out < 0;
     face_key(f);
     return 1;
 }
@@ -134,6 +136,7 @@ static rc_status part_faces(const rc_case *c, const rc_case_surf *cs, seg_face *
             memset(g, 0, sizeof *g);
             for (int j = 0; j < el->nn && j < 4; j++) g->node[j] = el->nodes[j];
             g->solid = 0;
+            g->turned = 0;
             g->loc = el->loc;
             face_key(g);
             continue;
@@ -191,6 +194,7 @@ rc_status rc_seg_surface(const rc_case *c, rc_model *m, int s, rc_error *err)
             memcpy(f[k].node, cs->seg + 4 * k, sizeof f[k].node);
             f[k].loc = cs->seg_loc[k];
             f[k].solid = 0;
+            f[k].turned = 0;
         }
     }
     /* the nodes: sorted unique ids */
@@ -250,6 +254,13 @@ rc_status rc_seg_surface(const rc_case *c, rc_model *m, int s, rc_error *err)
         goto done;
     }
     m->surf_seg = sg;
+    signed char *tu = realloc(m->surf_seg_turned, (size_t)(s0 + nf + 1));
+    if (!tu) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory");
+        goto done;
+    }
+    m->surf_seg_turned = tu;
+    for (int k = 0; k < nf; k++) tu[s0 + k] = (signed char)f[k].turned;
     for (int k = 0; k < nn; k++) {
         const double *x = node_x(c, ids[k]);
         for (int j = 0; j < 3; j++) nx[3 * (n0 + k) + j] = x[j] - org[j];
@@ -322,6 +333,27 @@ static rc_status seg_mesh(rc_model *m, int s, rc_segmesh *g, rc_error *err)
         ext += fmax(b[0] - a[0], fmax(b[1] - a[1], b[2] - a[2]));
     }
     g->h = ext / g->ns;
+    g->depth = 0.5 * g->h;
+    /* centres and unit normals (node to segment) */
+    g->scen = malloc((size_t)(3 * g->ns + 1) * sizeof(double));
+    g->snrm = malloc((size_t)(3 * g->ns + 1) * sizeof(double));
+    if (!g->scen || !g->snrm) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    for (int q = 0; q < g->ns; q++) {
+        const int *v = seg + 4 * q, nc = v[3] == v[2] ? 3 : 4;
+        double a[3], b[3], n[3], nn = 0;
+        for (int k = 0; k < 3; k++) {
+            g->scen[3 * q + k] = 0;
+            for (int j = 0; j < nc; j++) g->scen[3 * q + k] += x[3 * v[j] + k] / nc;
+            a[k] = nc == 4 ? x[3 * v[2] + k] - x[3 * v[0] + k] : x[3 * v[1] + k] - x[3 * v[0] + k];
+            b[k] = nc == 4 ? x[3 * v[3] + k] - x[3 * v[1] + k] : x[3 * v[2] + k] - x[3 * v[0] + k];
+        }
+        n[0] = a[1] * b[2] - a[2] * b[1];
+        n[1] = a[2] * b[0] - a[0] * b[2];
+        n[2] = a[0] * b[1] - a[1] * b[0];
+        for (int k = 0; k < 3; k++) nn += n[k] * n[k];
+        nn = sqrt(nn);
+        for (int k = 0; k < 3; k++) g->snrm[3 * q + k] = nn > 0 ? n[k] / nn : 0.0;
+    }
     const double span = fmax(hi[0] - g->lo[0], fmax(hi[1] - g->lo[1], hi[2] - g->lo[2]));
     if (!(g->h > 0)) g->h = span > 0 ? span : 1.0;
     for (;;) {
@@ -395,9 +427,19 @@ void rc_seg_free(rc_model *m)
         free(g->vseg);
         free(g->srange);
         free(g->sbox);
+        free(g->scen);
+        free(g->snrm);
         free(g->cadr);
         free(g->cseg);
     }
     free(m->surf_mesh);
     m->surf_mesh = NULL;
+}
+
+int rc_seg_points(const rc_model *m, int i)
+{
+    const int sa = m->inter_sa[i], sb = m->inter_sb[i];
+    int n = m->surf_nadr[sa + 1] - m->surf_nadr[sa];
+    if (m->inter_pair[i] == RC_PAIR_SEG_SEG) n += m->surf_nadr[sb + 1] - m->surf_nadr[sb];
+    return n;
 }

@@ -25,7 +25,15 @@ typedef struct rc_segmesh {
     int *cadr, *cseg;    /* [ncell + 1]: segments of cell c at cseg[cadr[c] .. cadr[c+1]) */
     int *srange;         /* [6 ns]: first and last cell of segment k along x, y, z */
     double *sbox;        /* [6 ns]: bounding box of segment k, lower then upper corner [m] */
+    /* node to segment (segments-segments pairs, docs/theory.md 2.7) */
+    double *scen, *snrm; /* [3 ns]: centre of segment k [m] and its unit normal [-]
+                            ((x2 - x0) x (x3 - x1), a triangle (x1 - x0) x (x2 - x0)) */
+    double depth;        /* search depth: half the mean segment extent [m] */
 } rc_segmesh;
+
+/* Contact points of interface i whose points are nodes (rc_pair_nodes): the
+ * nodes of surface a, then, segments-segments, those of surface b. */
+int rc_seg_points(const rc_model *m, int i);
 
 /* Build the adjacency and grid of every segment surface (after all
  * surfaces are compiled). */

@@ -24,6 +24,12 @@ void rc_state_name(const rc_model *m, int i, char *buf, size_t n)
     }
     for (int k = 0; k < m->ninter; k++) {
         const int a = m->inter_eadr[k], j = i - a;
+        if (j >= m->inter_ns[k] && j < m->inter_ns[k] + 3 * m->inter_npt[k]) {
+            const int p = (j - m->inter_ns[k]) / 3;
+            snprintf(buf, n, "%s, tangential (friction) force F_t of contact point %d (node %d of the surface) %c [N]",
+                     m->inter_name[k], p + 1, p + 1, "xyz"[(j - m->inter_ns[k]) % 3]);
+            return;
+        }
         if (j < 0 || j >= m->inter_ns[k]) continue;
         const rc_fric *fr = &m->inter_fr[k];
         const char *q = j == 0 ? "work of the normal force W_load [J]"

@@ -76,12 +76,11 @@
 #define RC_OUT_UNIT_LEN 128
 
 /* Dimensions. */
-enum { D_TIME, D_BODY, D_INTER, D_VEC3, D_QUAT, D_EVENT, D_COUPLING, D_SURF, D_SPARAM, D_SIDE, D_SNODE, D_SSEG,
+enum { D_TIME, D_BODY, D_INTER, D_VEC3, D_QUAT, D_EVENT, D_COUPLING, D_SURF, D_SPARAM, D_SIDE, D_SEGNODE, D_SEGMENT,
        D_CORNER, D_COUNT };
-static const char *const dim_name[D_COUNT] = {"time",     "body",     "inter",   "vec3",
-                                              "quat",     "event",    "coupling", "surface",
-                                              "surface_parameter", "side", "segment_node", "segment",
-                                              "corner"};
+static const char *const dim_name[D_COUNT] = {"time",     "body",    "inter",             "vec3", "quat",
+                                              "event",    "coupling", "surface", "surface_parameter", "side",
+                                              "segment_node", "segment", "corner"};
 /* Origin of the CF time axis: simulated time 0 (a convention, not a date). */
 #define RC_OUT_TIME_ORIGIN "1970-01-01 00:00:00"
 
@@ -98,7 +97,7 @@ enum {
     V_CPL_ID, V_CPL_TYPE, V_CPL_FORCE, V_CPL_LENGTH, V_CPL_F1, V_CPL_F2, V_CPL_LOWEST,
     V_BODY_COORD, V_INTER_COORD, V_CPL_COORD,
     V_SURF_COORD, V_SURF_KIND, V_SURF_BODY, V_SURF_POINT, V_SURF_NORMAL, V_SURF_RADIUS, V_SURF_PARAM, V_INTER_SURF,
-    V_SURF_NODE0, V_SURF_SEG0, V_SNODE_COORD, V_SSEG_NODES,
+    V_SURF_NODE0, V_SURF_SEG0, V_SEG_NODE, V_SEG_CORNER,
     V_COUNT
 };
 
@@ -196,8 +195,7 @@ static const var_spec var_table[V_COUNT] = {
     [V_SURF_COORD] = {"surface", NC_INT, 1, {D_SURF}, U_ONE, "surface identifier (/SURF id)",
                       "coordinate variable"},
     [V_SURF_KIND] = {"surface_kind", NC_STRING, 1, {D_SURF}, U_ONE, "kind of surface",
-                     "PLANE, SPHERE, CYLINDER, BOX, or SEGMENTS (a /SURF/SEG or /SURF/PART: its nodes and segments "
-                     "in segment_node_coordinates and segment_nodes)"},
+                     "PLANE, SPHERE, CYLINDER, BOX or SEGMENTS (a segment surface: segment_corners)"},
     [V_SURF_BODY] = {"surface_body", NC_INT, 1, {D_SURF}, U_ONE, "/RBODY id of the body carrying the surface",
                      "-1: fixed in space (global frame)"},
     [V_SURF_POINT] = {"surface_point", NC_DOUBLE, 2, {D_SURF, D_VEC3}, U_LENGTH,
@@ -214,18 +212,15 @@ static const var_spec var_table[V_COUNT] = {
                       "frame); 0 otherwise"},
     [V_INTER_SURF] = {"inter_surface", NC_INT, 2, {D_INTER, D_SIDE}, U_ONE,
                       "surface ids of the interface", "first and second surface (normal from the first to the second)"},
-    /* segment surfaces (/SURF/SEG, /SURF/PART) */
-    [V_SURF_NODE0] = {"surface_first_node", NC_INT, 1, {D_SURF}, U_ONE,
-                      "first node of a segment surface in segment_node_coordinates",
-                      "0-based; the surface's nodes run to the next surface's first node; -1: not a segment surface"},
-    [V_SURF_SEG0] = {"surface_first_segment", NC_INT, 1, {D_SURF}, U_ONE,
-                     "first segment of a segment surface in segment_nodes",
-                     "0-based; the surface's segments run to the next surface's first segment; -1: not a segment "
-                     "surface"},
-    [V_SNODE_COORD] = {"segment_node_coordinates", NC_DOUBLE, 2, {D_SNODE, D_VEC3}, U_LENGTH,
-                       "node of a segment surface", "body frame, from the centre of mass of the carrying body"},
-    [V_SSEG_NODES] = {"segment_nodes", NC_INT, 2, {D_SSEG, D_CORNER}, U_ONE, "corners of a segment",
-                      "0-based indices into segment_node_coordinates; a triangle repeats its third corner"},
+    /* segment surfaces (kind SEGMENTS): their nodes and segments */
+    [V_SURF_NODE0] = {"surface_first_node", NC_INT, 1, {D_SURF}, U_ONE, "first segment_node of the surface",
+                      "0-based; its nodes up to the next surface's first node; other kinds: no nodes"},
+    [V_SURF_SEG0] = {"surface_first_segment", NC_INT, 1, {D_SURF}, U_ONE, "first segment of the surface",
+                     "0-based; its segments up to the next surface's first segment"},
+    [V_SEG_NODE] = {"segment_node_position", NC_DOUBLE, 2, {D_SEGNODE, D_VEC3}, U_LENGTH,
+                    "node of a segment surface", "body frame of the carrying body, from its centre of mass"},
+    [V_SEG_CORNER] = {"segment_corners", NC_INT, 2, {D_SEGMENT, D_CORNER}, U_ONE, "nodes of a segment",
+                      "0-based, local to the surface (add surface_first_node); a triangle repeats its third node"},
 };
 
 /* Impacts table (dimension impact), defined and written at close. */
@@ -416,20 +411,13 @@ static int var_uses_dim(int v, int d)
     return 0;
 }
 
-/* Does the model have segment surfaces (nodes and segments)? */
-static int has_segments(const rc_output_meta *meta)
-{
-    return meta->nsurf > 0 && meta->nseg_node > 0 && meta->nseg > 0 && meta->seg_nadr && meta->seg_sadr &&
-           meta->seg_node && meta->seg_conn;
-}
-
 /* Is variable `v` left out of the file (a dimension of length 0)? */
 static int var_skipped(const rc_output_meta *meta, int v)
 {
     return (meta->ninter == 0 && (var_uses_dim(v, D_INTER) || var_uses_dim(v, D_SIDE))) ||
            (meta->ncoupling == 0 && var_uses_dim(v, D_COUPLING)) || (meta->nsurf == 0 && var_uses_dim(v, D_SURF)) ||
-           (!has_segments(meta) && (v == V_SURF_NODE0 || v == V_SURF_SEG0 || var_uses_dim(v, D_SNODE) ||
-                                    var_uses_dim(v, D_SSEG)));
+           (meta->nseg == 0 && (v == V_SURF_NODE0 || v == V_SURF_SEG0 || var_uses_dim(v, D_SEGNODE) ||
+                                var_uses_dim(v, D_SEGMENT)));
 }
 
 /* Define the dimensions, the fixed variables with their attributes, and one
@@ -441,7 +429,7 @@ static rc_status define_vars(rc_output *o, const rc_output_meta *meta, rc_error 
     for (int d = 0; d < D_COUNT; d++) {
         if (((d == D_INTER || d == D_SIDE) && meta->ninter == 0) || (d == D_COUPLING && meta->ncoupling == 0) ||
             ((d == D_SURF || d == D_SPARAM) && meta->nsurf == 0) ||
-            ((d == D_SNODE || d == D_SSEG || d == D_CORNER) && !has_segments(meta)))
+            ((d == D_SEGNODE || d == D_SEGMENT || d == D_CORNER) && meta->nseg == 0))
             continue;
         size_t len = (d == D_TIME || d == D_EVENT) ? NC_UNLIMITED : o->dimlen[d];
         NC_TRY(o->path, nc_def_dim(o->ncid, dim_name[d], len, &o->dimid[d]),
@@ -651,29 +639,14 @@ static rc_status write_static(rc_output *o, const rc_output_meta *meta, rc_error
                "writing surface_parameters");
         rc_status rc = put_strings(o, V_SURF_KIND, ns, meta->surf_kind, err);
         if (rc != RC_OK) return rc;
-        if (has_segments(meta)) {
-            int *first = malloc(2 * ns * sizeof *first), *conn = malloc(4 * (size_t)meta->nseg * sizeof *conn);
-            if (!first || !conn) {
-                free(first);
-                free(conn);
-                RC_RAISE(err, RC_ENOMEM, "output: out of memory writing the segment surfaces");
-            }
-            /* local corner indices -> indices into segment_node_coordinates */
-            for (size_t k = 0; k < ns; k++) {
-                const int seg = meta->seg_sadr[k + 1] > meta->seg_sadr[k];
-                first[k] = seg ? meta->seg_nadr[k] : -1;
-                first[ns + k] = seg ? meta->seg_sadr[k] : -1;
-                for (int g = meta->seg_sadr[k]; g < meta->seg_sadr[k + 1]; g++)
-                    for (int c = 0; c < 4; c++) conn[4 * g + c] = meta->seg_nadr[k] + meta->seg_conn[4 * g + c];
-            }
-            st = nc_put_var_int(o->ncid, o->var[V_SURF_NODE0], first);
-            if (st == NC_NOERR) st = nc_put_var_int(o->ncid, o->var[V_SURF_SEG0], first + ns);
-            if (st == NC_NOERR) st = nc_put_var_int(o->ncid, o->var[V_SSEG_NODES], conn);
-            free(first);
-            free(conn);
-            if (st != NC_NOERR) return nc_fail(err, __LINE__, __func__, o->path, st, "writing the segment surfaces");
-            NC_TRY(o->path, nc_put_var_double(o->ncid, o->var[V_SNODE_COORD], meta->seg_node),
-                   "writing segment_node_coordinates");
+        if (meta->nseg > 0) {
+            NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_SURF_NODE0], meta->surf_first_node),
+                   "writing surface_first_node");
+            NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_SURF_SEG0], meta->surf_first_seg),
+                   "writing surface_first_segment");
+            NC_TRY(o->path, nc_put_var_double(o->ncid, o->var[V_SEG_NODE], meta->seg_node),
+                   "writing segment_node_position");
+            NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_SEG_CORNER], meta->seg_corner), "writing segment_corners");
         }
         if (meta->ninter > 0 && meta->inter_surf) {
             int *is = malloc(2 * (size_t)meta->ninter * sizeof *is);

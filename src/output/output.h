@@ -56,15 +56,12 @@ typedef struct rc_output_meta {
     const double *surf_radius; /* [nsurf] [m]                              */
     const double *surf_param;  /* [nsurf*RC_OUT_SURF_NPARAM]               */
     const int *inter_surf;     /* [ninter*2] surface indices of each interface */
-    /* segment surfaces (kind "SEGMENTS"): the nodes of surface s at
-     * seg_nadr[s] .. seg_nadr[s+1] - 1 of seg_node (body frame [m]), its
-     * segments at seg_sadr[s] .. seg_sadr[s+1] - 1 of seg_conn, four node
-     * indices local to the surface (the fourth = the third: a triangle);
-     * NULL or zero totals: none */
+    /* segment surfaces (kind "SEGMENTS"): nodes in the body frame, segments
+     * of 4 local node indices; 0 segments: none in the file */
     int nseg_node, nseg;
-    const int *seg_nadr, *seg_sadr; /* [nsurf+1] */
-    const double *seg_node;    /* [3*nseg_node] */
-    const int *seg_conn;       /* [4*nseg] */
+    const int *surf_first_node, *surf_first_seg; /* [nsurf] */
+    const double *seg_node;    /* [nseg_node*3] [m]                        */
+    const int *seg_corner;     /* [nseg*4]                                 */
 } rc_output_meta;
 
 /* Extra parameters of a surface in the file (variable surface_parameters). */

@@ -47,14 +47,13 @@ typedef struct vtk_src {
     int *surf_id, *surf_bidx; /* [nsurf] id, body index (-1: fixed in space) */
     char **surf_kind;   /* [nsurf] */
     double *surf_p, *surf_n, *surf_r, *surf_x; /* geometry, body frame */
-    /* segment surfaces: nodes [nsnode] (body frame), corners [4 nsseg],
-     * each surface's first node and segment (-1: not a segment surface) */
-    size_t nsnode, nsseg;
-    double *snode;
-    int *sseg, *surf_node0, *surf_seg0;
     int *inter_id;      /* [ninter] */
     double *ev_t;       /* [nevent] */
     char **ev_kind, **ev_elem; /* [nevent] */
+    size_t nsegnode, nseg; /* segment surfaces: nodes and segments (0: none) */
+    int *surf_node0, *surf_seg0; /* [nsurf] first node and segment of each surface */
+    double *seg_node;   /* [nsegnode*3] body frame [m] */
+    int *seg_corner;    /* [nseg*4] local node indices */
     double plane_half;  /* half-size of the plane patches [m] */
     double plane_c[3];  /* a point of the motion the patches are centred on [m] */
 } vtk_src;
@@ -124,9 +123,9 @@ static void src_free(vtk_src *s)
     if (s->surf_kind) nc_free_string(s->nsurf, s->surf_kind);
     if (s->ev_kind) nc_free_string(s->nevent, s->ev_kind);
     if (s->ev_elem) nc_free_string(s->nevent, s->ev_elem);
-    void *p[] = {s->body_id, s->surf_id, s->surf_bidx, s->surf_kind, s->surf_p, s->surf_n, s->surf_r,
-                 s->surf_x, s->inter_id, s->ev_t, s->ev_kind, s->ev_elem, s->snode, s->sseg, s->surf_node0,
-                 s->surf_seg0};
+    void *p[] = {s->surf_node0, s->surf_seg0, s->seg_node, s->seg_corner, s->body_id, s->surf_id, s->surf_bidx,
+                 s->surf_kind, s->surf_p, s->surf_n, s->surf_r,
+                 s->surf_x, s->inter_id, s->ev_t, s->ev_kind, s->ev_elem};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     if (s->ncid >= 0) nc_close(s->ncid);
 }
@@ -279,25 +278,6 @@ static int tessellate(mesh *m, const vtk_src *s, size_t j, const double pos[3], 
         for (int f = 0; f < 6; f++)
             bad |= mesh_poly(m, (int[]){base + face[f][0], base + face[f][1], base + face[f][2], base + face[f][3]}, 4,
                              sid);
-    } else if (!strcmp(kind, "SEGMENTS") && s->surf_node0 && s->surf_seg0 && s->surf_node0[j] >= 0 &&
-               s->surf_seg0[j] >= 0) {
-        /* the surface's nodes and segments run to the next segment
-         * surface's first ones */
-        size_t n0 = (size_t)s->surf_node0[j], n1 = s->nsnode, g0 = (size_t)s->surf_seg0[j], g1 = s->nsseg;
-        for (size_t i = 0; i < s->nsurf; i++) {
-            if (s->surf_node0[i] > s->surf_node0[j] && (size_t)s->surf_node0[i] < n1) n1 = (size_t)s->surf_node0[i];
-            if (s->surf_seg0[i] > s->surf_seg0[j] && (size_t)s->surf_seg0[i] < g1) g1 = (size_t)s->surf_seg0[i];
-        }
-        for (size_t a = n0; a < n1; a++) PUT(s->snode[3 * a], s->snode[3 * a + 1], s->snode[3 * a + 2]);
-        for (size_t g = g0; g < g1 && !bad; g++) {
-            const int *c = s->sseg + 4 * g;
-            int idx[4], nc = c[3] == c[2] ? 3 : 4;
-            for (int k = 0; k < nc; k++) {
-                if ((size_t)c[k] < n0 || (size_t)c[k] >= n1) bad = 1; /* a corner of another surface */
-                idx[k] = base + c[k] - (int)n0;
-            }
-            if (!bad) bad |= mesh_poly(m, idx, nc, sid);
-        }
     } else if (!strcmp(kind, "PLANE")) {
         /* a square patch centred on the projection of the motion's centre */
         double a[3], b[3], nl[3], ng[3], pg[3], cg[3];
@@ -317,6 +297,27 @@ static int tessellate(mesh *m, const vtk_src *s, size_t j, const double pos[3], 
             if (mesh_point(m, g, bid, sid, v) < 0) bad = 1;
         }
         bad |= mesh_poly(m, (int[]){base, base + 1, base + 2, base + 3}, 4, sid);
+    } else if (!strcmp(kind, "SEGMENTS") && s->nseg > 0) {
+        /* its nodes, then its segments (a triangle repeats its third node) */
+        const size_t n0 = (size_t)s->surf_node0[j], s0 = (size_t)s->surf_seg0[j];
+        size_t n1 = s->nsegnode, s1 = s->nseg;
+        for (size_t k = j + 1; k < s->nsurf; k++)
+            if (!strcmp(s->surf_kind[k], "SEGMENTS")) {
+                n1 = (size_t)s->surf_node0[k];
+                s1 = (size_t)s->surf_seg0[k];
+                break;
+            }
+        for (size_t k = n0; k < n1 && k < s->nsegnode; k++) PUT(s->seg_node[3 * k], s->seg_node[3 * k + 1], s->seg_node[3 * k + 2]);
+        for (size_t k = s0; k < s1 && k < s->nseg; k++) {
+            const int *c = s->seg_corner + 4 * k;
+            const int nc = c[3] == c[2] ? 3 : 4;
+            int idx[4];
+            for (int e = 0; e < nc; e++) {
+                if (c[e] < 0 || (size_t)c[e] >= n1 - n0) bad = 1;
+                idx[e] = base + c[e];
+            }
+            if (!bad) bad |= mesh_poly(m, idx, nc, sid);
+        }
     }
 #undef PUT
     return bad ? -1 : 0;
@@ -473,19 +474,15 @@ static rc_status src_open(vtk_src *s, const char *path, rc_error *err)
                 if (sbody[j] == s->body_id[b]) s->surf_bidx[j] = (int)b;
         }
         free(sbody);
-        /* segment surfaces (files without them have none of these) */
-        s->nsnode = dim_or_zero(s->ncid, "segment_node");
-        s->nsseg = dim_or_zero(s->ncid, "segment");
-        if (rc == RC_OK && s->nsnode > 0 && s->nsseg > 0) {
-            rc = get_all(s, "segment_node_coordinates", NC_DOUBLE, 3 * s->nsnode, (void **)&s->snode, err);
-            if (rc == RC_OK) rc = get_all(s, "segment_nodes", NC_INT, 4 * s->nsseg, (void **)&s->sseg, err);
-            if (rc == RC_OK) rc = get_all(s, "surface_first_node", NC_INT, s->nsurf, (void **)&s->surf_node0, err);
+        /* segment surfaces (kind SEGMENTS) */
+        s->nsegnode = dim_or_zero(s->ncid, "segment_node");
+        s->nseg = has_var(s->ncid, "segment_corners") ? dim_or_zero(s->ncid, "segment") : 0;
+        if (rc == RC_OK && s->nseg > 0) {
+            rc = get_all(s, "surface_first_node", NC_INT, s->nsurf, (void **)&s->surf_node0, err);
+            if (rc == RC_OK) rc = get_all(s, "surface_first_segment", NC_INT, s->nsurf, (void **)&s->surf_seg0, err);
             if (rc == RC_OK)
-                rc = get_all(s, "surface_first_segment", NC_INT, s->nsurf, (void **)&s->surf_seg0, err);
-            for (size_t k = 0; rc == RC_OK && k < 4 * s->nsseg; k++)
-                if (s->sseg[k] < 0 || (size_t)s->sseg[k] >= s->nsnode)
-                    rc = RC_SET(err, RC_EINPUT, "%s: segment_nodes refers to node %d of %zu", path, s->sseg[k],
-                                s->nsnode);
+                rc = get_all(s, "segment_node_position", NC_DOUBLE, 3 * s->nsegnode, (void **)&s->seg_node, err);
+            if (rc == RC_OK) rc = get_all(s, "segment_corners", NC_INT, 4 * s->nseg, (void **)&s->seg_corner, err);
         }
     }
     if (rc == RC_OK && s->nevent > 0) {

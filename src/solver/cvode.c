@@ -214,15 +214,13 @@ static void root_directions(const rc_model *m, const rc_data *d, int *dir)
         r[RC_ROOT_SLIP] = 1;                                      /* limit reached / sliding stops */
         r[RC_ROOT_REV] = -1;                                      /* saturated sliding reverses */
     }
-    if (rc_cpl_nroots(m) > 0) rc_cpl_root_dirs(m, d, dir + RC_ROOTS_PER_INTER * m->ninter);
+    for (int j = 0; j < m->npt; j++) dir[rc_root_point_base(m) + j] = 1; /* points: as RC_ROOT_SLIP */
+    if (rc_cpl_nroots(m) > 0) rc_cpl_root_dirs(m, d, dir + rc_root_cpl_base(m));
 }
-
-/* Root functions: the interfaces', then the contact couplings'. */
-static int n_roots(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter + rc_cpl_nroots(m); }
 
 static int set_root_directions(const rc_model *m, const rc_data *d, void *cv, int *dir)
 {
-    if (n_roots(m) == 0) return CV_SUCCESS;
+    if (rc_root_count(m) == 0) return CV_SUCCESS;
     root_directions(m, d, dir);
     return CVodeSetRootDirection(cv, dir);
 }
@@ -263,7 +261,7 @@ static rc_status write_event(const rc_model *m, const rc_data *d, ev_sink *o, do
     const int i = ev->inter;
     if (i < 0) return sink_event(o, t, ev->kind, m->cpl->name[-1 - i], NULL, err); /* a coupling */
     rc_inter_report r;
-    rc_inter_report_eval(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y, &r);
+    rc_inter_report_eval_d(m, d, i, t, y, &r);
     const double v[3] = {r.p, r.vn, d->inter_mode[i] == RC_MODE_CLOSED && r.fn > 0 ? r.fn : 0.0};
     return sink_event(o, t, ev->kind, m->inter_name[i], v, err);
 }
@@ -305,7 +303,7 @@ static int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, 
 static int refine_flat_roots(const rc_model *m, rc_data *d, void *cv, double t, const int *roots, double *g,
                              N_Vector yref, double *refined_time)
 {
-    const int nr = n_roots(m);
+    const int nr = rc_root_count(m);
     double tn, hu;
     if (nr == 0 || CVodeGetCurrentTime(cv, &tn) != CV_SUCCESS || CVodeGetLastStep(cv, &hu) != CV_SUCCESS) return 0;
     double *y = N_VGetArrayPointer(yref);
@@ -341,7 +339,7 @@ static int refine_flat_roots(const rc_model *m, rc_data *d, void *cv, double t, 
 static int root_on_zero(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
 {
     rc_assemble_roots(m, d, t, y, g);
-    for (int k = 0; k < n_roots(m); k++)
+    for (int k = 0; k < rc_root_count(m); k++)
         if (g[k] == 0.0) return 1;
     return 0;
 }
@@ -418,7 +416,7 @@ static rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, 
     for (int i = 0; i < m->ninter; i++) {
         rc_inter_report r;
         int mode = d->inter_mode[i];
-        rc_inter_report_eval(m, i, mode, d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y, &r);
+        rc_inter_report_eval_d(m, d, i, t, y, &r);
         const int acts = mode == RC_MODE_CLOSED;
         f->pen[i] = r.p;
         f->fload[i] = acts ? r.fload : 0.0;
@@ -428,7 +426,9 @@ static rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, 
         memcpy(f->normal + 3 * i, r.normal, 3 * sizeof(double));
         for (int k = 0; k < 3; k++) f->ffric[3 * i + k] = acts ? r.ft[k] : 0.0;
         f->vslip[i] = acts ? r.vslip : 0.0;
-        f->slip[i] = acts && d->inter_slip[i];
+        int sl = d->inter_slip[i]; /* friction per point: any point slipping */
+        for (int j = 0; j < m->inter_npt[i]; j++) sl |= d->pt_slip[m->inter_pbase[i] + j];
+        f->slip[i] = acts && sl;
         f->mode[i] = mode == RC_MODE_CLOSED     ? RC_OUT_MODE_CLOSED
                      : mode == RC_MODE_OPEN     ? RC_OUT_MODE_OPEN
                      : mode == RC_MODE_RELEASED ? RC_OUT_MODE_RELEASED
@@ -575,13 +575,14 @@ static rc_status open_output(const rc_model *m, const char *path, const char *no
     meta.surf_radius = m->surf_r;
     meta.surf_param = m->surf_ext;
     meta.inter_surf = isurf;
-    if (m->surf_nadr && m->surf_sadr) {
-        meta.seg_nadr = m->surf_nadr;
-        meta.seg_sadr = m->surf_sadr;
+    /* segment surfaces: their nodes and segments */
+    if (m->surf_nadr && m->surf_sadr && m->surf_sadr[m->nsurf] > 0) {
         meta.nseg_node = m->surf_nadr[m->nsurf];
         meta.nseg = m->surf_sadr[m->nsurf];
+        meta.surf_first_node = m->surf_nadr;
+        meta.surf_first_seg = m->surf_sadr;
         meta.seg_node = m->surf_node;
-        meta.seg_conn = m->surf_seg;
+        meta.seg_corner = m->surf_seg;
     }
     char evrec[160];
     const int full = rc_event_records(m);
@@ -810,15 +811,15 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
     old_branch = calloc((size_t)m->ninter + 1, sizeof(int));
     old_track = calloc((size_t)m->ninter + 1, sizeof(int));
     old_slip = calloc((size_t)m->ninter + 1, sizeof(int));
-    rootdir = calloc((size_t)n_roots(m) + 1, sizeof(int));
-    gbuf = calloc((size_t)n_roots(m) + 1, sizeof(double));
+    rootdir = calloc((size_t)rc_root_count(m) + 1, sizeof(int));
+    gbuf = calloc((size_t)rc_root_count(m) + 1, sizeof(double));
     zeno_t = calloc((size_t)m->ninter + 1, sizeof(double));
     zeno_n = calloc((size_t)m->ninter + 1, sizeof(int));
-    g2buf = calloc((size_t)n_roots(m) + 1, sizeof(double));
+    g2buf = calloc((size_t)rc_root_count(m) + 1, sizeof(double));
     ylook = calloc((size_t)m->ny, sizeof(double));
     flook = calloc((size_t)m->ny, sizeof(double));
     A = SUNSparseMatrix(m->ny, m->ny, m->nnz, CSC_MAT, ctx);
-    roots = calloc((size_t)n_roots(m) + 1, sizeof(int));
+    roots = calloc((size_t)rc_root_count(m) + 1, sizeof(int));
     if (rc_impacts_init(&im, m) || !ysamp || !y || !av || !f0 || !f1 || !ytn || !old_mode || !old_branch || !old_track || !old_slip || !rootdir || !gbuf || !A ||
         !roots || !g2buf || !ylook || !flook || !zeno_t || !zeno_n) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the solver");
@@ -864,7 +865,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
     if (m->hmax > 0) CVCHECK(CVodeSetMaxStep(cv, m->hmax), "CVodeSetMaxStep");
     if (m->h0 > 0) CVCHECK(CVodeSetInitStep(cv, m->h0), "CVodeSetInitStep");
     if (m->nfree > 0) CVCHECK(CVodeSetProjFn(cv, cb_proj), "CVodeSetProjFn");
-    if (n_roots(m) > 0) CVCHECK(CVodeRootInit(cv, n_roots(m), cb_root), "CVodeRootInit");
+    if (rc_root_count(m) > 0) CVCHECK(CVodeRootInit(cv, rc_root_count(m), cb_root), "CVodeRootInit");
     CVCHECK(CVodeSetNoInactiveRootWarn(cv), "CVodeSetNoInactiveRootWarn");
     CVCHECK(set_root_directions(m, d, cv, rootdir), "CVodeSetRootDirection");
 

@@ -40,7 +40,7 @@ static double dissipated(const rc_model *m, const rc_data *d, double t, const do
 
 static void report(const rc_model *m, const rc_data *d, int i, double t, const double *y, rc_inter_report *r)
 {
-    rc_inter_report_eval(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y, r);
+    rc_inter_report_eval_d(m, d, i, t, y, r);
 }
 
 static void update(rc_impact *row, const rc_inter_report *r, int closed, double t)

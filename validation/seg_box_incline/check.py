@@ -1,0 +1,184 @@
+"""A meshed box on an inclined plane with friction per contact point.
+
+A solid box (one /BRICK, mass and inertia from the mesh, contact surface
+/SURF/PART: its eight nodes are the contact points) rests on a fixed plane
+tilted by theta about a horizontal axis at azimuth phi = 30 deg (so the fall
+line is along no global axis), TYPE6 with a linear load curve and Fric = mu.
+Each node carries its own tangential force and stick/slip mode
+(docs/theory.md 2.7). References (README.md), closed forms:
+  - tan(theta) > mu: the box slides down the fall line at
+    a = g (sin theta - mu cos theta) (the four bottom nodes all slip; the
+    limits mu f_j add up to mu F_n = mu m g cos theta);
+  - tan(theta) < mu / 3 (a step load that the critically damped stick spring
+    takes without reaching the limit): it sticks, no slip event; its drift
+    along the fall line stays within the elastic displacement of the stick
+    spring, x_s <= m g sin(theta) / K_t (the point springs w_j K_t add up to
+    K_t), and ends there.
+"""
+import math
+import os
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "lib"))
+import rcval  # noqa: E402
+from deck import Deck, i10, line  # noqa: E402
+
+G, K, ZETA, MU = 9.81, 1.0e6, 0.7, 0.3
+A, B, C = 0.2, 0.12, 0.08        # box sizes [m]
+RHO = 7800.0                     # steel [kg/m^3]
+M = RHO * A * B * C              # mass from the mesh [kg]
+PHI = math.radians(30.0)         # azimuth of the fall line
+NPLATE, PW = 10, 0.4             # the meshed incline: segments along the fall line, width [m]
+CORNERS = [(-A / 2, -B / 2, -C / 2), (A / 2, -B / 2, -C / 2), (A / 2, B / 2, -C / 2), (-A / 2, B / 2, -C / 2),
+           (-A / 2, -B / 2, C / 2), (A / 2, -B / 2, C / 2), (A / 2, B / 2, C / 2), (-A / 2, B / 2, C / 2)]
+
+
+def rotation(tan_th):
+    """R = Rz(phi) Ry(theta): the plane's frame (fall line s = R e_x, across
+    u = R e_y, normal n = R e_z) in global axes."""
+    th = math.atan(tan_th)
+    ry = np.array([[math.cos(th), 0, math.sin(th)], [0, 1, 0], [-math.sin(th), 0, math.cos(th)]])
+    rz = np.array([[math.cos(PHI), -math.sin(PHI), 0], [math.sin(PHI), math.cos(PHI), 0], [0, 0, 1]])
+    return rz @ ry
+
+
+def deck(tan_th, tend, dtout, plate=False):
+    """plate: the incline a fixed /SURF/SEG plate (a strip of quadrilaterals
+    along the fall line, its nodes on the strip's long edges, off the box's
+    path) instead of /SURF/PLANE."""
+    R = rotation(tan_th)
+    th = math.atan(tan_th)
+    p0 = M * G * math.cos(th) / K  # static penetration of the four bottom nodes
+    d = Deck(f"meshed box on a plane tilted by atan({tan_th:g}), friction per node")
+    centre = R @ np.array([0.0, 0.0, C / 2 - p0])
+    nodes = [(1, *centre)] + [(10 + j, *(R @ (np.array(v) + np.array([0.0, 0.0, C / 2 - p0])))) for j, v in
+                              enumerate(CORNERS)]
+    d.nodes(nodes)
+    d.add("/MAT/LAW1/1", line(("r", RHO), ("r", 0.0)), line(("r", 2.1e11), ("r", 0.3)), title="steel")
+    d.add("/PROP/SOLID/3", line(("i", 24), ("i", 4)), line(("r", 0)), line(("r", 0)), title="solid")
+    d.add("/PART/1", line(("i", 3), ("i", 1), ("i", 0)), title="brick box")
+    d.add("/BRICK/1", line(*[("i", v) for v in [101] + list(range(10, 18))]))
+    d.add("/GRNOD/PART/101", i10(1), title="brick box nodes")
+    d.add("/RBODY/1", line(("i", 1), ("i", 0), ("i", 0), ("i", 0), ("r", 0.0), ("i", 101), ("i", 0), ("i", 1), ("i", 0)),
+          line(("r", 0), ("r", 0), ("r", 0)), line(("r", 0), ("r", 0), ("r", 0)), line(("i", 0), ("i", 0), ("i", 0)),
+          title="brick box (mass from the mesh)")
+    d.add("/SURF/PART/31", i10(1), title="brick box faces")
+    if plate:
+        xs = np.linspace(-0.3, 1.5, NPLATE + 1)
+        pn = [(1000 + 2 * k + e, *(R @ np.array([x, -PW / 2 if e == 0 else PW / 2, 0.0]))) for k, x in enumerate(xs)
+              for e in (0, 1)]
+        d.nodes(pn)
+        # quadrilaterals (x_k, -w/2), (x_k+1, -w/2), (x_k+1, w/2), (x_k, w/2): normal up the plate
+        segs = [line(*[("i", v) for v in (k + 1, 1000 + 2 * k, 1002 + 2 * k, 1003 + 2 * k, 1001 + 2 * k)])
+                for k in range(NPLATE)]
+        d.add("/SURF/SEG/10", *segs, title="inclined plate: fixed segments")
+    else:
+        d.plane(10, (0, 0, 0), tuple(R @ np.array([0.0, 0.0, 1.0])), title="inclined plane through the origin")
+    d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e6 N/m")
+    d.type6(1, 31, 10, 1, visc=2 * ZETA * math.sqrt(K * M), fric=MU, title="box on the incline, Fric 0.3")
+    d.grav(1, "Z", -G)
+    d.run(tend, dtout)
+    return d
+
+
+def along(r, tan_th):
+    """Displacement and velocity of the centre of mass along the fall line s
+    and across it (u), from the start."""
+    R = rotation(tan_th)
+    s, u = R[:, 0], R[:, 1]
+    x = r.pos[:, 0] - r.pos[0, 0]
+    v = r.vel[:, 0]
+    return x @ s, x @ u, v @ s, v @ u
+
+
+def main():
+    # 1. sticking: tan(theta) = mu / 3 (case.rad)
+    tan_th = MU / 3
+    th = math.atan(tan_th)
+    r = rcval.Result(rcval.run_file(os.path.join(HERE, "case.rad")))
+    xs, xu, vs, vu = along(r, tan_th)
+    x_el = M * G * math.sin(th) / K  # elastic displacement of the stick spring K_t = k
+    # the friction at the base tips the box downhill by phi, balanced by the
+    # normal forces shared as p_j / sum p (README.md): the centre of mass
+    # moves by phi c/2 along the fall line beyond the base nodes
+    p0 = M * G * math.cos(th) / K
+    phi = 2 * tan_th * C * p0 / (A * A * (1 + tan_th * C / A))
+    x_ref = x_el + phi * C / 2
+    slips = [t for t, k in zip(r.ev_t, r.ev_kind) if k == "fric_slip"]
+    rcval.check("seg_box_incline.stick.events", not slips,
+                f"tan(theta) = mu/3: {len(slips)} fric_slip events (expected none); events {sorted(set(r.ev_kind))}")
+    bound = x_el + phi * C  # a step load: at most twice the static tilt
+    rcval.check("seg_box_incline.stick.drift", xs.max() <= bound and xs.min() > -1e-3 * x_el,
+                f"x_s(t) of the centre along the fall line in [{xs.min():.3e}, {xs.max():.6e}] m, bound m g sin(theta)/K_t "
+                f"+ 2 phi c/2 = {x_el:.6e} + {phi * C:.3e} = {bound:.6e} m")
+    e = rcval.rel(xs[-1], x_ref)
+    rcval.check("seg_box_incline.stick.rest", e < 1e-3 and abs(vs[-1]) < 1e-6,
+                f"x_s at {r.t[-1]:g} s = {xs[-1]:.6e} m, m g sin(theta)/K_t + phi c/2 = {x_el:.6e} + {phi * C / 2:.3e} = "
+                f"{x_ref:.6e} m (phi = {phi:.4e} rad), rel. error {e:.2e} (< 1e-3, terms of order phi); "
+                f"v_s = {vs[-1]:.1e} m/s (< 1e-6)")
+    ft = np.linalg.norm(r.ffric[-1, 0])
+    e = rcval.rel(ft, M * G * math.sin(th))
+    rcval.check("seg_box_incline.stick.force", e < 1e-6,
+                f"friction force at rest {ft:.9g} N, m g sin(theta) = {M * G * math.sin(th):.9g} N, rel. error {e:.2e} "
+                f"(< 1e-6)")
+
+    # 2. sliding: tan(theta) = 0.5 > mu
+    tan_th = 0.5
+    th = math.atan(tan_th)
+    a_ref = G * (math.sin(th) - MU * math.cos(th))
+    r = rcval.Result(rcval.run(deck(tan_th, 1.0, 0.01), name="slide"))
+    xs, xu, vs, vu = along(r, tan_th)
+    # the box pitches about its sliding tilt (the shared force's damping acts
+    # at the weighted rate, which a pitch leaves at zero to first order,
+    # docs/theory.md 2.7): fit the position, where the pitch enters divided by
+    # its frequency
+    sl = r.t >= 0.2
+    cf = np.polyfit(r.t[sl], xs[sl], 2)
+    a = 2 * cf[0]
+    resid = np.max(np.abs(xs[sl] - np.polyval(cf, r.t[sl])))
+    e = rcval.rel(a, a_ref)
+    rcval.check("seg_box_incline.slide.acceleration", e < 1e-5 and resid < 1e-5,
+                f"quadratic fit of x_s over [0.2, 1] s: a = {a:.9f} m/s^2, g (sin theta - mu cos theta) = {a_ref:.9f}, "
+                f"rel. error {e:.2e} (< 1e-5), max fit residual {resid:.1e} m (< 1e-5: the pitch, about 2e-4 rad, "
+                f"moves the centre by c/2 phi)")
+    side = np.max(np.abs(vu))
+    rcval.check("seg_box_incline.slide.fall_line", side < 1e-5,
+                f"max |v_u| across the fall line = {side:.1e} m/s (< 1e-5) after {xs[-1]:.3f} m along it")
+    ratio = np.linalg.norm(r.ffric[sl, 0], axis=1) / r.fn[sl, 0]
+    e = float(np.max(np.abs(ratio - MU)))
+    slipping = bool(np.all(r.slip[sl, 0] == 1))
+    rcval.check("seg_box_incline.slide.friction", e < 1e-9 and slipping,
+                f"|F_t| / F_n over [0.2, 1] s in [{ratio.min():.12f}, {ratio.max():.12f}], mu = {MU:g} (the point limits "
+                f"mu f_j add up to mu F_n while every point slips), max error {e:.1e} (< 1e-9); F_n in "
+                f"[{r.fn[sl, 0].min():.4g}, {r.fn[sl, 0].max():.4g}] N about m g cos(theta) = {M * G * math.cos(th):.4g} N "
+                f"(the pitch)")
+    rcval.check_ledger("seg_box_incline.slide.ledger", r, 1e-5)
+
+    # 3. sliding on a meshed incline: the box's surface against a fixed
+    #    segment surface (node to segment both ways), the same references
+    r = rcval.Result(rcval.run(deck(tan_th, 1.0, 0.01, plate=True), name="plate"))
+    xs, xu, vs, vu = along(r, tan_th)
+    cf = np.polyfit(r.t[sl], xs[sl], 2)
+    a = 2 * cf[0]
+    resid = np.max(np.abs(xs[sl] - np.polyval(cf, r.t[sl])))
+    e = rcval.rel(a, a_ref)
+    rcval.check("seg_box_incline.plate.acceleration", e < 1e-5 and resid < 1e-5,
+                f"on a fixed /SURF/SEG plate of {NPLATE} quadrilaterals: a = {a:.9f} m/s^2, g (sin theta - mu cos theta) "
+                f"= {a_ref:.9f}, rel. error {e:.2e} (< 1e-5), max fit residual {resid:.1e} m (< 1e-5), {xs[-1]:.3f} m "
+                f"down, across {np.max(np.abs(vu)):.1e} m/s")
+    ratio = np.linalg.norm(r.ffric[sl, 0], axis=1) / r.fn[sl, 0]
+    e = float(np.max(np.abs(ratio - MU)))
+    rcval.check("seg_box_incline.plate.friction", e < 1e-9 and bool(np.all(r.slip[sl, 0] == 1)),
+                f"|F_t| / F_n over [0.2, 1] s: max |ratio - mu| = {e:.1e} (< 1e-9), every record slipping")
+    rcval.check_ledger("seg_box_incline.plate.ledger", r, 1e-5)
+    rcval.finish()
+
+
+if __name__ == "__main__":
+    if "--write-case" in sys.argv:
+        deck(MU / 3, 2.0, 0.01).write(os.path.join(HERE, "case.rad"))
+    else:
+        main()

@@ -11,6 +11,7 @@
 
 #include "base/error.h"
 #include "base/progress.h"
+#include "model/joint.h"
 #include "model/model.h"
 
 rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
@@ -61,6 +62,21 @@ rc_status rc_model_set_rtol(rc_model *m, double rtol, rc_error *err)
     }
     free(atol);
     free(rel);
+    return RC_OK;
+}
+
+rc_status rc_model_set_method(rc_model *m, int method, rc_error *err)
+{
+    rc_error local;
+    if (!err) err = &local;
+    if (method != 1 && method != 2)
+        RC_RAISE(err, RC_EINPUT, "integration method: expected 1 (CVODE) or 2 (IDA), got %d", method);
+    if (method == 1 && m->jnt && m->jnt->n > 0)
+        RC_RAISE(err, RC_EINPUT,
+                 "integration method: the model has joints (%d), which only the IDA path (method 2) runs; "
+                 "expected 2, got 1",
+                 m->jnt->n);
+    m->method = method;
     return RC_OK;
 }
 

@@ -471,3 +471,11 @@ void rc_jnt_report(const rc_model *m, int j, const double *Y, double force[3], d
 }
 
 double rc_jnt_work_done(const rc_model *m, const double *Y) { return Y[m->ny + 2 * m->jnt->nrows]; }
+
+void rc_jnt_frame(const rc_model *m, const double *Y, double *force, double *moment, double *drift_pos,
+                  double *drift_ang, double *work)
+{
+    for (int j = 0; j < m->jnt->n; j++)
+        rc_jnt_report(m, j, Y, force + 3 * j, moment + 3 * j, drift_pos + j, drift_ang + j);
+    *work = rc_jnt_work_done(m, Y);
+}

@@ -162,3 +162,5 @@ void rc_jnt_print(const rc_model *m, FILE *f)
         fprintf(f, "\n");
     }
 }
+
+const char *rc_jnt_type_name(const rc_model *m, int j) { return kind_name[m->jnt->kind[j]]; }

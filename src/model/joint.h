@@ -98,5 +98,11 @@ void rc_jnt_report(const rc_model *m, int j, const double *Y, double force[3], d
                    double *drift_ang);
 /* Work of the reactions (the last component of Y) [J]. */
 double rc_jnt_work_done(const rc_model *m, const double *Y);
+/* The values of every joint for a record: force [3n], moment [3n], drifts
+ * [n] and [n], the work [1] (engine/joints.c). */
+void rc_jnt_frame(const rc_model *m, const double *Y, double *force, double *moment, double *drift_pos,
+                  double *drift_ang, double *work);
+/* "REVOLUTE", ... (model/joint.c). */
+const char *rc_jnt_type_name(const rc_model *m, int j);
 
 #endif

@@ -27,6 +27,7 @@
 #include <unistd.h>
 
 #include "model/coupling.h"
+#include "model/joint.h"
 #include "base/error.h"
 #include "engine/events.h"
 #include "model/model.h"
@@ -335,7 +336,7 @@ static void add_stats(void *cv, rc_stats *s)
 void frame_free(frame_buf *f)
 {
     void *p[] = {f->pos, f->quat, f->vel, f->omega, f->pen, f->fload, f->fdamp, f->fn, f->point, f->normal, f->mode,
-                 f->cpl, f->ffric, f->vslip, f->slip};
+                 f->cpl, f->ffric, f->vslip, f->slip, f->jnt};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
 }
 
@@ -358,7 +359,8 @@ int frame_alloc(const rc_model *m, frame_buf *f)
     f->vslip = malloc(ni * sizeof(double));
     f->slip = malloc(ni * sizeof(int));
     f->cpl = malloc((9 * (size_t)m->cpl->n + 1) * sizeof(double));
-    return f->pos && f->quat && f->vel && f->omega && f->pen && f->fload && f->fdamp && f->fn && f->point &&
+    f->jnt = malloc((8 * (size_t)(m->jnt ? m->jnt->n : 0) + 1) * sizeof(double));
+    return f->jnt && f->pos && f->quat && f->vel && f->omega && f->pen && f->fload && f->fdamp && f->fn && f->point &&
            f->normal && f->mode && f->cpl && f->ffric && f->vslip && f->slip;
 }
 
@@ -402,6 +404,15 @@ rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_b
                    .inter_mode = f->mode, .inter_ffric = f->ffric, .inter_vslip = f->vslip, .inter_slip = f->slip,
                    .energy = f->energy, .cpl_force = f->cpl, .cpl_length = f->cpl + nc, .cpl_f1 = f->cpl + 2 * nc,
                    .cpl_f2 = f->cpl + 5 * nc, .cpl_lowest = f->cpl + 8 * nc};
+    if (m->jnt) { /* joints: y is the IDA backend's whole vector (model/joint.h) */
+        const int nj = m->jnt->n;
+        rc_jnt_frame(m, y, f->jnt, f->jnt + 3 * nj, f->jnt + 6 * nj, f->jnt + 7 * nj, f->jnt + 8 * nj);
+        fr.joint_force = f->jnt;
+        fr.joint_moment = f->jnt + 3 * nj;
+        fr.joint_drift_pos = f->jnt + 6 * nj;
+        fr.joint_drift_ang = f->jnt + 7 * nj;
+        fr.joint_work = f->jnt + 8 * nj;
+    }
     return rc_output_frame(o, &fr, err);
 }
 
@@ -524,6 +535,18 @@ rc_status open_output(const rc_model *m, const char *path, const char *note, rc_
     meta.surf_radius = m->surf_r;
     meta.surf_param = m->surf_ext;
     meta.inter_surf = isurf;
+    const int njt = m->jnt ? m->jnt->n : 0;
+    const char **jtype = malloc(((size_t)njt + 1) * sizeof *jtype);
+    if (!jtype) {
+        free(types);
+        free(kinds);
+        free(isurf);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    for (int j = 0; j < njt; j++) jtype[j] = rc_jnt_type_name(m, j);
+    meta.njoint = njt;
+    meta.joint_id = m->jnt ? m->jnt->id : NULL;
+    meta.joint_type = jtype;
     char evrec[160];
     const int full = rc_event_records(m);
     if (m->ev_state == 0)
@@ -535,6 +558,7 @@ rc_status open_output(const rc_model *m, const char *path, const char *note, rc_
                  full ? "full-state record at every event" : "events table only", m->ev_state);
     meta.event_records = evrec;
     rc_status st = rc_output_open(o, path, &meta, err);
+    free(jtype);
     free(types);
     free(kinds);
     free(isurf);

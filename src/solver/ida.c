@@ -436,6 +436,9 @@ static rc_status ida_run(const rc_model *m, const rc_run_options *opt, rc_pause 
     IDACHECK(IDASetJacFn(ida, cb_jac), "IDASetJacFn");
     IDACHECK(IDASetMaxOrd(ida, m->max_order), "IDASetMaxOrd");
     IDACHECK(IDASetMaxNumSteps(ida, m->max_steps), "IDASetMaxNumSteps");
+    /* Newton's convergence test as CVODE's (0.1 of the error test; IDA's
+     * default is 0.33): the same accuracy of the corrections on both paths */
+    IDACHECK(IDASetNonlinConvCoef(ida, 0.1), "IDASetNonlinConvCoef");
     if (m->hmax > 0) IDACHECK(IDASetMaxStep(ida, m->hmax), "IDASetMaxStep");
     if (m->h0 > 0) IDACHECK(IDASetInitStep(ida, m->h0), "IDASetInitStep");
     if (c.jw) {

@@ -60,6 +60,7 @@ typedef struct frame_buf {
     int *mode, *slip;
     double energy[RC_NENERGY];
     double *cpl; /* [9 ncoupling] coupling values (rc_cpl_frame) */
+    double *jnt; /* [8 njoint + 1] joints: force, moment, drifts, work (IDA path) */
 } frame_buf;
 
 /* Time breakpoints (ends of imposed velocities) inside (0, tend), sorted,

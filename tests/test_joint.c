@@ -15,19 +15,21 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Two free bodies, gravity, one joint of each kind (the set over-constrains
- * the bodies: only the rows' values and derivatives are tested here). */
+/* A chain of five free bodies under gravity, one joint of each kind. */
 static const char *all_kinds =
     "/BEGIN\njoints\n2022,0\nkg,m,s\nkg,m,s\n"
-    "/NODE\n1,0.3,-0.8,0.1\n2,1.1,-1.3,-0.2\n"
+    "/NODE\n1,0.3,-0.8,0.1\n2,1.1,-1.3,-0.2\n3,1.5,-1.9,0.4\n4,2.1,-2.2,0.3\n5,2.6,-2.9,-0.1\n"
     "/RBODY/1\nbody 1\n1,,,,1.7\n0.02,0.03,0.04\n0,0,0\n"
     "/RBODY/2\nbody 2\n2,,,,0.6\n0.011,0.017,0.009\n0,0,0\n"
+    "/RBODY/3\nbody 3\n3,,,,0.9\n0.013,0.011,0.02\n0,0,0\n"
+    "/RBODY/4\nbody 4\n4,,,,1.2\n0.03,0.02,0.025\n0,0,0\n"
+    "/RBODY/5\nbody 5\n5,,,,0.4\n0.004,0.005,0.006\n0,0,0\n"
     "/GRAV/1\ng\n0,Y,0,0,0,,1,-9.81\n"
     "/JOINT/REVOLUTE/1\nhinge\n1,0\n0,0,0\n0.2,0.3,1\n"
     "/JOINT/SPHERICAL/2\nball\n2,1\n0.7,-1.0,0.0\n"
-    "/JOINT/DISTANCE/3\nrod\n1,2\n0.4,-0.7,0.15\n1.0,-1.2,-0.25\n"
-    "/JOINT/FIXED/4\nweld\n2,1\n0.9,-1.1,0.05\n"
-    "/JOINT/PRISMATIC/5\nslider\n1,2\n0.5,-0.9,0.0\n1,-0.5,0.25\n"
+    "/JOINT/DISTANCE/3\nrod\n2,3\n1.3,-1.5,0.1\n1.6,-1.8,0.35\n"
+    "/JOINT/FIXED/4\nweld\n4,3\n1.8,-2.0,0.35\n"
+    "/JOINT/PRISMATIC/5\nslider\n5,4\n2.3,-2.5,0.1\n1,-0.5,0.25\n"
     "/RUN\n1,0.01\n/END\n";
 
 /* The full residual F(Y, Y') = [y' - f + joint terms; G u; g; W' - P]. */
@@ -52,17 +54,24 @@ static void test_joint_cards_compile(void)
     if (J && J->n == 5) {
         ENSURE(J->nrow[0] == 5 && J->nrow[1] == 3 && J->nrow[2] == 1 && J->nrow[3] == 6 && J->nrow[4] == 5);
         ENSURE(J->nrows == 20);
-        ENSURE(J->bb[0] == -1 && J->ba[1] == 1 && J->bb[1] == 0);
+        ENSURE(J->bb[0] == -1 && J->ba[1] == 1 && J->bb[1] == 0 && J->ba[4] == 4 && J->bb[4] == 3);
         /* anchor of the ball on body 2 (centre 1.1, -1.3, -0.2): (0.7, -1, 0) - centre */
         ENSURE_NEAR(J->sa[3], -0.4, 0, 1e-15);
         ENSURE_NEAR(J->sa[4], 0.3, 0, 1e-15);
-        ENSURE_NEAR(J->len[2], sqrt(0.36 + 0.25 + 0.16), 1e-15, 0);
+        ENSURE_NEAR(J->len[2], sqrt(0.09 + 0.09 + 0.0625), 1e-15, 0);
         /* the revolute axis normalised */
         const double n = sqrt(0.04 + 0.09 + 1.0);
         ENSURE_NEAR(J->ua[0], 0.2 / n, 1e-15, 0);
     }
     /* automatic method: IDA */
     ENSURE(m->method == 2);
+    /* the rows are independent at the start (a chain) */
+    rc_jnt_work *w = rc_jnt_work_new(m);
+    double *Y = calloc((size_t)(m->ny + rc_jnt_nextra(w)), sizeof *Y);
+    rc_initial_state(m, Y);
+    ENSURE(rc_jnt_dependent(m, w, Y) == -1);
+    free(Y);
+    rc_jnt_work_free(w);
     ENSURE(rc_model_set_method(m, 1, &e) == RC_EINPUT);
     ENSURE(strstr(e.msg, "joints") != NULL);
     rc_model_free(m);
@@ -104,6 +113,23 @@ static void test_joint_card_errors(void)
                                   "0,0,0\n/JOINT/SPHERICAL/1\nx\n1,0\n0,0,0\n/RUN\n1,0.1\n/SOLVER\n1\n/END\n",
                                   "cvode.rad", &e);
     ENSURE(m == NULL && e.code == RC_EINPUT && strstr(e.msg, "Method") && strstr(e.msg, "cvode.rad:"));
+    rc_model_free(m);
+    /* a second spherical joint at the same point: dependent rows, named at
+     * the second card (line 17); velocities the joint forbids (line 14) */
+    const char *head = "/BEGIN\nj\n2022,0\nkg,m,s\nkg,m,s\n/NODE\n1,0,-1,0\n/RBODY/1\nb\n1,,,,1\n0.1,0.1,0.1\n0,0,0\n";
+    char text[1024];
+    snprintf(text, sizeof text, "%s/JOINT/SPHERICAL/1\nx\n1,0\n0,0,0\n/JOINT/SPHERICAL/2\ny\n1,0\n0,0,0\n/RUN\n1,0.1\n/END\n",
+             head);
+    m = tu_compile_text(text, "twice.rad", &e);
+    ENSURE(m == NULL && e.code == RC_EINPUT && strstr(e.msg, "twice.rad:17:") && strstr(e.msg, "/JOINT/SPHERICAL/2") &&
+           strstr(e.msg, "repeat"));
+    rc_model_free(m);
+    snprintf(text, sizeof text, "%s/INIVEL/TRA/1\nv\n0,1,0,0,0\n/JOINT/SPHERICAL/1\nx\n1,0\n0,0,0\n/RUN\n1,0.1\n/END\n", head);
+    m = tu_compile_text(text, "moving.rad", &e);
+    if (m || !strstr(e.msg, "moving.rad:16:") || !strstr(e.msg, "initial velocities")) {
+        fprintf(stderr, "  %s\n", m ? "compiled" : e.msg);
+        rc_test_failed_now++;
+    }
     rc_model_free(m);
 }
 

@@ -343,20 +343,15 @@ static void add_unit_terms(const rc_model *m, int j, int r, const double *Y, dou
     for (int k = 0; ab >= 0 && k < RC_NB; k++) out[ab + k] += s * rb[k];
 }
 
-int rc_jnt_consistent(const rc_model *m, rc_jnt_work *w, double *Y, double *Yp)
+/* A = G M^-1 G^T by rows (A_sr = (dcv_s/dy) z_r, z_r the accelerations of
+ * a unit lambda_r) at the state Y; zero between joints with no body in
+ * common. */
+static void build_A(const rc_model *m, rc_jnt_work *w, const double *Y)
 {
     const rc_joints *J = m->jnt;
     const int nr = J->nrows, ny = m->ny;
-    /* the residual of the bodies is y' - f - (accelerations of lambda) with
-     * mu = 0; the velocity rows stay zero: sum_r A_sr lambda_r = -(dcv_s/dy) f,
-     * A_sr = (dcv_s/dy) z_r, z_r the accelerations of a unit lambda_r */
-    memset(w->A, 0, (size_t)nr * (size_t)nr * sizeof(double));
-    for (int j = 0; j < J->n; j++) {
-        double dcv[RC_JNT_MAXROW];
-        cv_along(m, j, Y, Yp, dcv);
-        for (int r = 0; r < J->nrow[j]; r++) w->b[J->radr[j] + r] = -dcv[r];
-    }
     double *zr = w->z;
+    memset(w->A, 0, (size_t)nr * (size_t)nr * sizeof(double));
     for (int j = 0; j < J->n; j++)
         for (int r = 0; r < J->nrow[j]; r++) {
             memset(zr, 0, (size_t)ny * sizeof(double));
@@ -369,23 +364,62 @@ int rc_jnt_consistent(const rc_model *m, rc_jnt_work *w, double *Y, double *Yp)
                 for (int s = 0; s < J->nrow[i]; s++) w->A[(size_t)(J->radr[i] + s) * nr + col] = dcv[s];
             }
         }
-    gsl_matrix_view A = gsl_matrix_view_array(w->A, (size_t)nr, (size_t)nr);
-    gsl_vector_view b = gsl_vector_view_array(w->b, (size_t)nr);
-    gsl_permutation p = {(size_t)nr, w->perm};
+}
+
+/* LU of the leading n x n block of A (row stride nr) in place; 0, or 1
+ * when a pivot is zero or tiny against the largest (dependent rows). */
+static int lu_leading(rc_jnt_work *w, int nr, int n)
+{
+    gsl_matrix_view A = gsl_matrix_view_array_with_tda(w->A, (size_t)n, (size_t)n, (size_t)nr);
+    gsl_permutation p = {(size_t)n, w->perm};
     int sgn;
     gsl_error_handler_t *old = gsl_set_error_handler_off();
     int bad = gsl_linalg_LU_decomp(&A.matrix, &p, &sgn);
-    /* dependent rows: a zero (or relatively tiny) pivot */
+    gsl_set_error_handler(old);
     double dmax = 0, dmin = INFINITY;
-    for (int k = 0; k < nr; k++) {
+    for (int k = 0; k < n; k++) {
         const double a = fabs(w->A[(size_t)k * nr + k]);
         dmax = fmax(dmax, a);
         dmin = fmin(dmin, a);
     }
-    if (!bad && !(dmin > 1e-12 * dmax)) bad = 1;
-    if (!bad) bad = gsl_linalg_LU_svx(&A.matrix, &p, &b.vector);
-    gsl_set_error_handler(old);
-    if (bad) return -1;
+    return bad || !(dmin > 1e-12 * dmax);
+}
+
+int rc_jnt_dependent(const rc_model *m, rc_jnt_work *w, const double *Y)
+{
+    const rc_joints *J = m->jnt;
+    /* the rows are ordered by joint: the first leading block that is
+     * singular ends with the joint that made them dependent */
+    for (int j = 0; j < J->n; j++) {
+        build_A(m, w, Y);
+        if (lu_leading(w, J->nrows, J->radr[j] + J->nrow[j])) return j;
+    }
+    return -1;
+}
+
+int rc_jnt_consistent(const rc_model *m, rc_jnt_work *w, double *Y, double *Yp)
+{
+    const rc_joints *J = m->jnt;
+    const int nr = J->nrows, ny = m->ny;
+    /* the residual of the bodies is y' - f - (accelerations of lambda) with
+     * mu = 0; the velocity rows stay zero along the motion:
+     * A lambda = -(dcv/dy) f, A = G M^-1 G^T (build_A) */
+    for (int j = 0; j < J->n; j++) {
+        double dcv[RC_JNT_MAXROW];
+        cv_along(m, j, Y, Yp, dcv);
+        for (int r = 0; r < J->nrow[j]; r++) w->b[J->radr[j] + r] = -dcv[r];
+    }
+    build_A(m, w, Y);
+    if (lu_leading(w, nr, nr)) return -1;
+    {
+        gsl_matrix_view A = gsl_matrix_view_array(w->A, (size_t)nr, (size_t)nr);
+        gsl_vector_view b = gsl_vector_view_array(w->b, (size_t)nr);
+        gsl_permutation p = {(size_t)nr, w->perm};
+        gsl_error_handler_t *old = gsl_set_error_handler_off();
+        const int bad = gsl_linalg_LU_svx(&A.matrix, &p, &b.vector);
+        gsl_set_error_handler(old);
+        if (bad) return -1;
+    }
     for (int k = 0; k < nr; k++) {
         Y[ny + k] = w->b[k];
         Yp[ny + k] = 0.0;

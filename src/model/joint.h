@@ -88,6 +88,9 @@ void rc_jnt_id(const rc_model *m, const rc_jnt_work *w, double *id);
  * constraints held along the motion), Y' of the bodies with the reactions.
  * Returns 0, or -1 when the constraint rows are dependent. */
 int rc_jnt_consistent(const rc_model *m, rc_jnt_work *w, double *Y, double *Yp);
+/* The first joint (in card order) whose rows make the constraint rows
+ * dependent at Y, or -1 when they are independent. */
+int rc_jnt_dependent(const rc_model *m, rc_jnt_work *w, const double *Y);
 /* The initial state must satisfy the constraints: RC_EINPUT naming the
  * joint's card otherwise. */
 rc_status rc_jnt_check_initial(const rc_model *m, rc_jnt_work *w, const double *Y, rc_error *err);

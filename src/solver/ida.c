@@ -397,7 +397,6 @@ static rc_status ida_run(const rc_model *m, const rc_run_options *opt, rc_pause 
     N_VConst(0.0, yy);
     rc_initial_state(m, yd);
     rc_modes_init(m, d, t, yd);
-    if (c.jw && (st = rc_jnt_check_initial(m, c.jw, yd, err))) goto done;
     if ((st = open_output(m, opt ? opt->output_path : NULL, note, &out, err,
                           c.jw ? "IDA BDF, Newton, KLU sparse direct, rootfinding; joints: stabilised index-2 "
                                  "constraints (GGL)"
@@ -424,9 +423,8 @@ static rc_status ida_run(const rc_model *m, const rc_run_options *opt, rc_pause 
             goto done;
         }
         if (c.jw && rc_jnt_consistent(m, c.jw, yd, p)) {
-            st = RC_SET(err, RC_EINPUT, "the joints' constraint rows are dependent at t = 0 (a body constrained "
-                                        "twice in the same way, or a closed loop of joints): remove the redundant "
-                                        "joint");
+            st = RC_SET(err, RC_ESOLVER, "the joints' constraint rows are dependent at t = 0 (the model's "
+                                         "compile checks them: an internal error)");
             goto done;
         }
     }

@@ -87,6 +87,7 @@ static void test_joint_card_errors(void)
         {"/JOINT/SPHERICAL/1\nx\n7,0\n0,0,0\n", "no such body"},
         {"/JOINT/DISTANCE/1\nx\n1,0\n1,2,3\n1,2,3\n", "X2 Y2 Z2"},
         {"/JOINT/SPHERICAL/1\nx\n0,1\n0,0,0\n", "rbody_ID1"},
+        {"/GRNOD/NODE/1\ng\n1\n/BCS/1\nb\n111 000,0,1\n/JOINT/SPHERICAL/1\nx\n1,0\n0,0,0\n", "not supported yet"},
     };
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
         char text[1024];

@@ -9,6 +9,7 @@
 
 #include "base/error.h"
 #include "case/case_joint.h"
+#include "model/imposed.h"
 #include "model/joint.h"
 
 static const char *const kind_name[6] = {"", "SPHERICAL", "REVOLUTE", "DISTANCE", "FIXED", "PRISMATIC"};
@@ -123,6 +124,21 @@ rc_status rc_jnt_compile(const rc_case *c, rc_model *m, rc_error *err)
                      RC_LOCFMT "card %s, fields rbody_ID1 rbody_ID2: expected at least one free rigid body, got "
                                "%d and %d (ground or fixed bodies only: the joint constrains nothing)",
                      RC_LOC(cj->line_loc[0]), card, cj->rbody[0], cj->rbody[1]);
+        /* a velocity held or imposed on a jointed body would fight the
+         * reaction (its row carries no reaction term) */
+        for (int e = 0; e < 2; e++) {
+            const int b = *bs[e];
+            if (b < 0 || m->body_yadr[b] < 0) continue;
+            int held = 0;
+            for (int k = 0; k < 6; k++) held |= m->body_dofmask[6 * b + k];
+            for (int k = 0; m->imp && k < m->imp->nt; k++) held |= m->imp->tbody[k] == b;
+            for (int k = 0; m->imp && k < m->imp->nr; k++) held |= m->imp->rbody[k] == b;
+            if (held)
+                RC_RAISE(err, RC_EINPUT,
+                         RC_LOCFMT "card %s, field rbody_ID%d: body %d has degrees of freedom held by /BCS or "
+                                   "imposed by /IMPVEL; a joint on such a body is not supported yet",
+                         RC_LOC(cj->line_loc[0]), card, e + 1, cj->rbody[e]);
+        }
         /* body frames = global frame at t = 0, origins at the centres of mass */
         const double *pb = cj->kind == RC_CASE_JNT_DISTANCE ? cj->p2 : cj->p;
         const double *oa = J->ba[j] >= 0 ? m->body_y0 + RC_NB * J->ba[j] : m->ground_y0;

@@ -210,9 +210,9 @@ static void test_joint_jacobian_matches_finite_differences(void)
 }
 
 /* A pendulum of two bodies (revolute to the ground, spherical between
- * them), moving: after rc_jnt_consistent the velocity constraints have
- * zero rate along Y' (checked by a difference along Y'), mu = 0, and the
- * reactions do no work. */
+ * them), released: after rc_jnt_consistent the residual is zero, the
+ * velocity constraints have zero rate along Y' (a difference along Y'), and
+ * the hinge force balances the momentum of the pair. */
 static void test_joint_consistent_multipliers(void)
 {
     const char *text = "/BEGIN\nj\n2022,0\nkg,m,s\nkg,m,s\n/NODE\n1,0.6,-0.8,0\n2,1.2,-1.6,0.3\n"
@@ -248,6 +248,7 @@ static void test_joint_consistent_multipliers(void)
     /* momentum of the pair: the hinge force and the weights accelerate
      * the two masses, F + (m1 + m2) g = m1 a1 + m2 a2 */
     double F[3], M[3], dp, da;
+    for (int k = 0; k < nr; k++) Y[m->ny + k] = Yp[m->ny + k]; /* the record vector: lambda = Lambda' */
     rc_jnt_report(m, 0, Y, F, M, &dp, &da);
     const double *a1 = Yp + m->body_yadr[0] + 7, *a2 = Yp + m->body_yadr[1] + 7;
     ENSURE_NEAR(F[0], 2.0 * a1[0] + 0.5 * a2[0], 1e-10, 1e-12);
@@ -264,6 +265,35 @@ static void test_joint_consistent_multipliers(void)
     rc_model_free(m);
 }
 
+/* A pendulum that hits a wall: contact events restart IDA with the joint's
+ * multipliers recomputed; the run completes, rebounds, and keeps the energy
+ * ledger (the damping's dissipation included) and the joint. */
+static void test_joint_with_contact_events(void)
+{
+    const char *text =
+        "/BEGIN\nj\n2022,0\nkg,m,s\nkg,m,s\n/FUNCT/1\nlinear\n0,0\n1,1e6\n"
+        "/NODE\n1,0.866025403784,-0.5,0\n/RBODY/1\nbob\n1,,,,1\n0.004,0.004,0.004\n0,0,0\n"
+        "/SURF/ELLIPS/1\nbob\n0,2,1\n0.866025403784,-0.5,0\n0.1,0.1,0.1\n"
+        "/SURF/PLANE/2\nwall\n-0.3,0,0\n1,0,0\n/GRAV/1\ng\n0,Y,0,0,0,,1,-9.81\n"
+        "/JOINT/REVOLUTE/1\nhinge\n1,0\n0,0,0\n0,0,1\n"
+        "/INTER/TYPE6/1\nwall\n1,2\n\n\n1\n\n20\n/RUN\n2,0.01\n/END\n";
+    rc_error e;
+    rc_model *m = tu_compile_text(text, "wall.rad", &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    rc_run_options o = {0};
+    rc_stats st;
+    ENSURE(rc_run(m, &o, &st, &e) == RC_OK);
+    ENSURE(st.events >= 4 && st.reinits >= 4 && st.t_end == 2.0);
+    ENSURE(fabs(st.energy_residual) < 1e-6 * 9.81); /* of m g L */
+    printf("    pendulum against a wall: %ld events, %ld steps, energy residual %.2e J\n", st.events, st.steps,
+           st.energy_residual);
+    rc_model_free(m);
+}
+
 void suite_joint(void);
 void suite_joint(void)
 {
@@ -271,5 +301,6 @@ void suite_joint(void)
     RUN_TEST(test_joint_card_errors);
     RUN_TEST(test_joint_jacobian_matches_finite_differences);
     RUN_TEST(test_joint_consistent_multipliers);
+    RUN_TEST(test_joint_with_contact_events);
     tu_tmp_cleanup();
 }

@@ -98,36 +98,30 @@ void rc_jnt_work_free(rc_jnt_work *w)
 
 #define JMAXB (2 * RC_NB + 2 * RC_JNT_MAXROW + 1)
 
-/* Absolute tolerances of the extras: lambda (out of the error test; in
- * Newton's convergence test) by rtol times the force (moment) scale of its
- * bodies' weights; nu, the projection displacement [m] or rotation [-], by
- * the position (quaternion) tolerances of its bodies; W by the energy
- * tolerance. */
+/* Absolute tolerances of the extras: Lambda, the impulse of a reaction
+ * [N s] or [N m s], by what changes the velocity (angular velocity) of its
+ * lightest body by its tolerance (m atol_v, J atol_omega; out of the error
+ * test, in Newton's convergence test); nu, the projection displacement [m]
+ * or rotation [-], by the position (quaternion) tolerances of its bodies;
+ * W by the energy tolerance. */
 static void extra_tolerances(const rc_model *m, rc_jnt_work *w)
 {
     const rc_joints *J = m->jnt;
     for (int j = 0; j < J->n; j++) {
-        double mass = 0, g = 0, lref = 0, ap = INFINITY, aq = INFINITY;
+        double ap = INFINITY, aq = INFINITY, fv = INFINITY, fw = INFINITY;
         const int bs[2] = {J->ba[j], J->bb[j]};
         for (int e = 0; e < 2; e++) {
             const int b = bs[e];
             if (b < 0 || m->body_yadr[b] < 0) continue;
-            mass += m->body_mass[b];
-            const double *gv = m->body_grav + 3 * b;
-            g = fmax(g, sqrt(gv[0] * gv[0] + gv[1] * gv[1] + gv[2] * gv[2]));
-            const double *Jb = m->body_J + 9 * b;
-            lref = fmax(lref, sqrt((Jb[0] + Jb[4] + Jb[8]) / m->body_mass[b]));
-            ap = fmin(ap, m->atol[m->body_yadr[b]]);
-            aq = fmin(aq, m->atol[m->body_yadr[b] + 3]);
+            const double *Jb = m->body_J + 9 * b, *at = m->atol + m->body_yadr[b];
+            ap = fmin(ap, at[0]);
+            aq = fmin(aq, at[3]);
+            fv = fmin(fv, m->body_mass[b] * at[7]);
+            fw = fmin(fw, fmin(Jb[0], fmin(Jb[4], Jb[8])) * at[10]);
         }
-        const double *s[2] = {J->sa + 3 * j, J->sb + 3 * j};
-        for (int e = 0; e < 2; e++)
-            if (bs[e] >= 0) lref = fmax(lref, sqrt(s[e][0] * s[e][0] + s[e][1] * s[e][1] + s[e][2] * s[e][2]));
-        if (!(lref > 0)) lref = 1.0;
-        const double fs = mass * fmax(g, 1.0); /* [N] */
         for (int r = 0; r < J->nrow[j]; r++) {
             const int row = J->radr[j] + r, ang = J->rkind[row] == RC_JROW_ANGLE;
-            w->atol[row] = m->rtol * (ang ? fs * lref : fs);
+            w->atol[row] = ang ? fw : fv;
             w->atol[J->nrows + row] = ang ? aq : ap;
         }
     }
@@ -223,14 +217,17 @@ double rc_jnt_atol(const rc_model *m, const rc_jnt_work *w, int k)
     return w->atol[k];
 }
 
+/* Lambda has id 0: out of the error test (IDASetSuppressAlg). The residual
+ * holds only lambda = Lambda', so Lambda itself is an accumulator (the
+ * impulse since t = 0) whose accuracy does not matter. */
 void rc_jnt_id(const rc_model *m, const rc_jnt_work *w, double *id)
 {
     for (int k = 0; k < w->n; k++) id[k] = 1.0;
     for (int k = 0; k < w->nrows; k++) id[m->ny + k] = 0.0;
 }
 
-/* Real body states of joint j's bodies and its multipliers: lambda from
- * Y, mu = nu' from Y' (Yp NULL: mu = 0). */
+/* Real body states of joint j's bodies and its multipliers, lambda = Lambda'
+ * and mu = nu', from Y' (Yp NULL: both 0). */
 static void load_real(const rc_model *m, int j, const double *Y, const double *Yp, double *ya, double *yb,
                       double *lam, double *mu)
 {
@@ -238,7 +235,7 @@ static void load_real(const rc_model *m, int j, const double *Y, const double *Y
     memcpy(ya, rc_body_state(m, J->ba[j], Y), RC_NB * sizeof(double));
     memcpy(yb, rc_body_state(m, J->bb[j], Y), RC_NB * sizeof(double));
     for (int r = 0; r < J->nrow[j]; r++) {
-        lam[r] = Y[m->ny + J->radr[j] + r];
+        lam[r] = Yp ? Yp[m->ny + J->radr[j] + r] : 0.0;
         mu[r] = Yp ? Yp[m->ny + J->nrows + J->radr[j] + r] : 0.0;
     }
 }
@@ -292,8 +289,9 @@ void rc_jnt_jacobian(const rc_model *m, const rc_jnt_work *w, double cj, const d
             double complex ra[RC_NB], rb[RC_NB], cv[RC_JNT_MAXROW], cp[RC_JNT_MAXROW], pw;
             jnt_eval_c(m, j, ya, yb, lam, mu, na ? ra : NULL, nb ? rb : NULL, cv, cp, &pw);
             *p = creal(*p);
-            /* the columns of nu: the residual holds nu' = mu, d/dnu = cj d/dmu */
-            const double sc = (c < na + nb + nr ? 1.0 : cj) / RC_JCSTEP;
+            /* the columns of Lambda and nu: the residual holds their
+             * derivatives lambda and mu, d/dLambda = cj d/dlambda */
+            const double sc = (c < na + nb ? 1.0 : cj) / RC_JCSTEP;
             int r = 0;
             for (int k = 0; k < na; k++, r++) val[slot[r * ncl + c]] += sc * cimag(ra[k]);
             for (int k = 0; k < nb; k++, r++) val[slot[r * ncl + c]] += sc * cimag(rb[k]);
@@ -421,8 +419,7 @@ int rc_jnt_consistent(const rc_model *m, rc_jnt_work *w, double *Y, double *Yp)
         if (bad) return -1;
     }
     for (int k = 0; k < nr; k++) {
-        Y[ny + k] = w->b[k];
-        Yp[ny + k] = 0.0;
+        Yp[ny + k] = w->b[k];  /* lambda; Lambda keeps the impulse so far */
         Yp[ny + nr + k] = 0.0; /* mu = 0; nu keeps the projection so far */
     }
     /* y' = f + accelerations of lambda */
@@ -430,7 +427,7 @@ int rc_jnt_consistent(const rc_model *m, rc_jnt_work *w, double *Y, double *Yp)
     for (int j = 0; j < J->n; j++) {
         double ya[RC_NB], yb[RC_NB], lam[RC_JNT_MAXROW], mu[RC_JNT_MAXROW], ra[RC_NB], rb[RC_NB], pw;
         double cv[RC_JNT_MAXROW], cp[RC_JNT_MAXROW];
-        load_real(m, j, Y, NULL, ya, yb, lam, mu);
+        load_real(m, j, Y, Yp, ya, yb, lam, mu);
         const int aa = free_adr(m, J->ba[j]), ab = free_adr(m, J->bb[j]);
         jnt_eval_r(m, j, ya, yb, lam, mu, aa >= 0 ? ra : NULL, ab >= 0 ? rb : NULL, cv, cp, &pw);
         for (int k = 0; aa >= 0 && k < RC_NB; k++) Yp[aa + k] -= ra[k];
@@ -482,6 +479,7 @@ void rc_jnt_report(const rc_model *m, int j, const double *Y, double force[3], d
     const rc_joints *J = m->jnt;
     double ya[RC_NB], yb[RC_NB], lam[RC_JNT_MAXROW], mu[RC_JNT_MAXROW], g[RC_JNT_MAXROW], wr[RC_JNT_MAXROW][12];
     load_real(m, j, Y, NULL, ya, yb, lam, mu);
+    for (int r = 0; r < J->nrow[j]; r++) lam[r] = Y[m->ny + J->radr[j] + r]; /* a record vector: lambda there */
     jnt_rows_r(m, j, ya, yb, g, wr);
     double F[3] = {0, 0, 0}, tau[3] = {0, 0, 0};
     *drift_pos = 0;

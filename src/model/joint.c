@@ -180,3 +180,19 @@ void rc_jnt_print(const rc_model *m, FILE *f)
 }
 
 const char *rc_jnt_type_name(const rc_model *m, int j) { return kind_name[m->jnt->kind[j]]; }
+
+void rc_jnt_extra_name(const rc_model *m, int k, char *buf, size_t n)
+{
+    const rc_joints *J = m->jnt;
+    if (k >= 2 * J->nrows) {
+        snprintf(buf, n, "the work of the joint reactions [J]");
+        return;
+    }
+    const int row = k % J->nrows;
+    int j = 0;
+    while (j + 1 < J->n && J->radr[j + 1] <= row) j++;
+    const int ang = J->rkind[row] == RC_JROW_ANGLE;
+    snprintf(buf, n, "%s, %s of constraint row %d [%s]", J->name[j],
+             k < J->nrows ? "reaction impulse Lambda" : "projection nu", row - J->radr[j] + 1,
+             k < J->nrows ? (ang ? "N m s" : "N s") : (ang ? "-" : "m"));
+}

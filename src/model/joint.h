@@ -62,8 +62,12 @@ void rc_jnt_free(rc_joints *j);
 void rc_jnt_print(const rc_model *m, FILE *f);
 
 /* ---- evaluation (engine/joints.c) -----------------------------------
- * The integrator's vector is Y = [y, lambda, mu, W]: the model's states,
- * the multipliers (nrows each) and the work of the reactions [J]. */
+ * The integrator's vector is Y = [y, Lambda, nu, W]: the model's states,
+ * the integrated multipliers (nrows each; the residual holds their
+ * derivatives, the reactions lambda = Lambda' and the projection
+ * multipliers mu = nu') and the work of the reactions [J]. A record vector
+ * (what the output and rc_jnt_report read) is Y with lambda in place of
+ * Lambda. */
 typedef struct rc_jnt_work rc_jnt_work;
 /* The extended sparse pattern and the scratch of a run; NULL: out of memory. */
 rc_jnt_work *rc_jnt_work_new(const rc_model *m);
@@ -81,11 +85,11 @@ void rc_jnt_jacobian(const rc_model *m, const rc_jnt_work *w, double cj, const d
                      const double *jf, double *val);
 /* Absolute tolerance of extra k (0 <= k < rc_jnt_nextra) in its unit. */
 double rc_jnt_atol(const rc_model *m, const rc_jnt_work *w, int k);
-/* 1 for the differential components of Y, 0 for the multipliers. */
+/* IDA's id: 0 for Lambda (out of the error test), 1 for the others. */
 void rc_jnt_id(const rc_model *m, const rc_jnt_work *w, double *id);
-/* Consistent multipliers and Y' at (t, Y) where Yp[0..ny) holds f(t, y):
- * mu = 0, lambda from the acceleration-level equations (the velocity
- * constraints held along the motion), Y' of the bodies with the reactions.
+/* Consistent Y' at (t, Y) where Yp[0..ny) holds f(t, y): mu = nu' = 0,
+ * lambda = Lambda' from the acceleration-level equations (the velocity
+ * constraints held along the motion), y' of the bodies with the reactions.
  * Returns 0, or -1 when the constraint rows are dependent. */
 int rc_jnt_consistent(const rc_model *m, rc_jnt_work *w, double *Y, double *Yp);
 /* The first joint (in card order) whose rows make the constraint rows
@@ -94,17 +98,20 @@ int rc_jnt_dependent(const rc_model *m, rc_jnt_work *w, const double *Y);
 /* The initial state must satisfy the constraints: RC_EINPUT naming the
  * joint's card otherwise. */
 rc_status rc_jnt_check_initial(const rc_model *m, rc_jnt_work *w, const double *Y, rc_error *err);
-/* Reactions of joint j at Y: force on body a [N] and moment on body a about
+/* Reactions of joint j at a record vector Y: force on body a [N] and moment on body a about
  * its anchor point [N m], global frame; the largest position residual of
  * its point, distance and slide rows [m] and of its angle rows [-]. */
 void rc_jnt_report(const rc_model *m, int j, const double *Y, double force[3], double moment[3], double *drift_pos,
                    double *drift_ang);
 /* Work of the reactions (the last component of Y) [J]. */
 double rc_jnt_work_done(const rc_model *m, const double *Y);
-/* The values of every joint for a record: force [3n], moment [3n], drifts
+/* The values of every joint for a record (Y a record vector): force [3n], moment [3n], drifts
  * [n] and [n], the work [1] (engine/joints.c). */
 void rc_jnt_frame(const rc_model *m, const double *Y, double *force, double *moment, double *drift_pos,
                   double *drift_ang, double *work);
+/* Name of extra k of Y for messages: "/JOINT/REVOLUTE/1, reaction lambda 2
+ * [N]" (model/joint.c). */
+void rc_jnt_extra_name(const rc_model *m, int k, char *buf, size_t n);
 /* "REVOLUTE", ... (model/joint.c). */
 const char *rc_jnt_type_name(const rc_model *m, int j);
 

@@ -49,6 +49,7 @@ typedef struct ida_ctx {
     int n;          /* size of Y */
     double *jsave;  /* [nnz] Jacobian values of f on the model's pattern */
     rc_jnt_work *jw; /* joints: pattern of the extended matrix, scratch (NULL: none) */
+    double *yrec;    /* joints: the record vector, Y with lambda = Lambda' (model/joint.h) */
     volatile sig_atomic_t *stop;
     char msg[512];  /* IDA's last error message */
 } ida_ctx;
@@ -218,15 +219,26 @@ static int refine_flat_roots(const rc_model *m, rc_data *d, void *ida, double t,
     return it > 0 ? it : 1;
 }
 
+/* One record at (t, Y, Y'): with joints, of the record vector (the
+ * reactions lambda = Lambda' in the slots of Lambda). */
+static rc_status record(const ida_ctx *c, rc_output *o, frame_buf *fb, double t, const double *Y, const double *Yp,
+                        int at_event, rc_error *err)
+{
+    if (!c->jw) return write_frame(c->m, c->d, o, fb, t, Y, at_event, err);
+    const int ny = c->m->ny, nr = c->m->jnt->nrows;
+    memcpy(c->yrec, Y, (size_t)c->n * sizeof(double));
+    memcpy(c->yrec + ny, Yp + ny, (size_t)nr * sizeof(double));
+    return write_frame(c->m, c->d, o, fb, t, c->yrec, at_event, err);
+}
+
 /* Records of the output times a step passed before an event at t. */
-static rc_status outputs_before(void *ida, const rc_model *m, const rc_data *d, rc_output *o, frame_buf *fb,
-                                double t, double tend, double dtout, double *tout, long *nout,
-                                N_Vector ytmp, rc_error *err)
+static rc_status outputs_before(void *ida, const ida_ctx *c, rc_output *o, frame_buf *fb, double t, double tend,
+                                double dtout, double *tout, long *nout, N_Vector ytmp, N_Vector yptmp, rc_error *err)
 {
     while (*tout < t && t - *tout > 1e-12 * fmax(fabs(t), dtout)) {
-        if (IDAGetDky(ida, *tout, 0, ytmp) != IDA_SUCCESS)
+        if (IDAGetDky(ida, *tout, 0, ytmp) != IDA_SUCCESS || IDAGetDky(ida, *tout, 1, yptmp) != IDA_SUCCESS)
             RC_RAISE(err, RC_ESOLVER, "IDA interpolation at the output time %.9g s failed", *tout);
-        rc_status st = write_frame(m, d, o, fb, *tout, N_VGetArrayPointer(ytmp), 0, err);
+        rc_status st = record(c, o, fb, *tout, N_VGetArrayPointer(ytmp), N_VGetArrayPointer(yptmp), 0, err);
         if (st) return st;
         (*nout)++;
         const double next = fmin(*nout * dtout, tend);
@@ -248,14 +260,18 @@ static void failure_advice(const rc_model *m, const rc_data *d, void *ida, int f
         const double *e = N_VGetArrayPointer(tmp1), *w = N_VGetArrayPointer(tmp2);
         int imax = -1;
         double vmax = 0.0;
-        for (int i = 0; i < m->ny; i++) {
+        /* the components in the error test: not the multipliers lambda */
+        const int len = (int)N_VGetLength(tmp1), nr = m->jnt ? m->jnt->nrows : 0;
+        for (int i = 0; i < len; i++) {
+            if (i >= m->ny && i < m->ny + nr) continue;
             const double v = fabs(e[i] * w[i]);
             if (v > vmax || (isnan(v) && imax < 0)) {
                 vmax = v;
                 imax = i;
             }
         }
-        if (imax >= 0) rc_state_name(m, imax, elem, sizeof elem);
+        if (imax >= 0 && imax < m->ny) rc_state_name(m, imax, elem, sizeof elem);
+        else if (imax >= 0) rc_jnt_extra_name(m, imax - m->ny, elem, sizeof elem);
     }
     const char *cf = rc_cpl_failed(m, d);
     char where[512];
@@ -327,7 +343,7 @@ static rc_status ida_run(const rc_model *m, const rc_run_options *opt, rc_pause 
     rc_stats s;
     memset(&s, 0, sizeof s);
     SUNContext ctx = NULL;
-    N_Vector yy = NULL, yp = NULL, av = NULL, ytn = NULL, ysamp = NULL, idv = NULL, rr = NULL;
+    N_Vector yy = NULL, yp = NULL, ytn = NULL, ypt = NULL, ysamp = NULL, idv = NULL;
     rc_impacts im;
     memset(&im, 0, sizeof im);
     char note[sizeof s.sampling_note];
@@ -351,7 +367,7 @@ static rc_status ida_run(const rc_model *m, const rc_run_options *opt, rc_pause 
     const int evrec = rc_event_records(m);
     double wall0 = wall_now(), last_progress = wall0;
     const int nr = RC_ROOTS_PER_INTER * m->ninter;
-    ida_ctx c = {m, d, m->ny, NULL, NULL, opt ? opt->stop : NULL, ""};
+    ida_ctx c = {m, d, m->ny, NULL, NULL, NULL, opt ? opt->stop : NULL, ""};
 
     if (!d || !frame_alloc(m, &fb)) {
         st = RC_SET(err, RC_ENOMEM, "out of memory");
@@ -363,6 +379,10 @@ static rc_status ida_run(const rc_model *m, const rc_run_options *opt, rc_pause 
             goto done;
         }
         c.n = m->ny + rc_jnt_nextra(c.jw);
+        if (!(c.yrec = calloc((size_t)c.n, sizeof(double)))) {
+            st = RC_SET(err, RC_ENOMEM, "out of memory for the joints");
+            goto done;
+        }
     }
     if (SUNContext_Create(NULL, &ctx)) {
         st = RC_SET(err, RC_ESOLVER, "SUNContext_Create failed");
@@ -370,9 +390,8 @@ static rc_status ida_run(const rc_model *m, const rc_run_options *opt, rc_pause 
     }
     yy = N_VNew_Serial(c.n, ctx);
     yp = N_VNew_Serial(c.n, ctx);
-    rr = N_VNew_Serial(c.n, ctx);
-    av = N_VNew_Serial(c.n, ctx);
     ytn = N_VNew_Serial(c.n, ctx);
+    ypt = N_VNew_Serial(c.n, ctx);
     ysamp = N_VNew_Serial(c.n, ctx);
     idv = N_VNew_Serial(c.n, ctx);
     rootdir = calloc((size_t)nr + 1, sizeof(int));
@@ -384,7 +403,7 @@ static rc_status ida_run(const rc_model *m, const rc_run_options *opt, rc_pause 
     c.jsave = calloc((size_t)m->nnz + 1, sizeof(double));
     const int64_t nnz = c.jw ? rc_jnt_nnz(c.jw) : m->nnz;
     A = SUNSparseMatrix(c.n, c.n, nnz, CSC_MAT, ctx);
-    if (rc_impacts_init(&im, m) || !yy || !yp || !rr || !av || !ytn || !ysamp || !idv || !rootdir || !roots ||
+    if (rc_impacts_init(&im, m) || !yy || !yp || !ytn || !ypt || !ysamp || !idv || !rootdir || !roots ||
         !gbuf || !zeno_t || !zeno_n || !flook || !c.jsave || !A) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the solver");
         goto done;
@@ -393,7 +412,7 @@ static rc_status ida_run(const rc_model *m, const rc_run_options *opt, rc_pause 
         st = RC_SET(err, RC_ESOLVER, "SUNLinSol_KLU failed");
         goto done;
     }
-    double *yd = N_VGetArrayPointer(yy);
+    double *yd = N_VGetArrayPointer(yy), *ypd = N_VGetArrayPointer(yp);
     N_VConst(0.0, yy);
     rc_initial_state(m, yd);
     rc_modes_init(m, d, t, yd);
@@ -459,7 +478,7 @@ static rc_status ida_run(const rc_model *m, const rc_run_options *opt, rc_pause 
 
     double e0[RC_NENERGY];
     rc_energy(m, d, t, yd, e0);
-    if ((st = write_frame(m, d, out, &fb, t, yd, 0, err))) goto done;
+    if ((st = record(&c, out, &fb, t, yd, ypd, 0, err))) goto done;
 
     long nout = 1;
     double tout = fmin(dtout, tend);
@@ -513,7 +532,7 @@ static rc_status ida_run(const rc_model *m, const rc_run_options *opt, rc_pause 
         }
         const int at_bp = flag == IDA_TSTOP_RETURN && ibp < nbp && t >= bp[ibp];
         if (at_bp || flag == IDA_ROOT_RETURN)
-            if ((st = outputs_before(ida, m, d, out, &fb, t, tend, dtout, &tout, &nout, ytn, err))) goto done;
+            if ((st = outputs_before(ida, &c, out, &fb, t, tend, dtout, &tout, &nout, ytn, ypt, err))) goto done;
         if (at_bp) {
             s.events++;
             if ((st = sink_event(&sink, t, "impvel_stop", "/IMPVEL", NULL, err))) goto done;
@@ -523,7 +542,7 @@ static rc_status ida_run(const rc_model *m, const rc_run_options *opt, rc_pause 
             while (ibp < nbp && bp[ibp] <= t) ibp++;
             IDACHECK(IDASetStopTime(ida, ibp < nbp ? bp[ibp] : tend), "IDASetStopTime");
             const int on_out = tout - t <= 1e-12 * fmax(fabs(t), dtout);
-            if ((evrec || on_out) && (st = write_frame(m, d, out, &fb, t, yd, evrec, err))) goto done;
+            if ((evrec || on_out) && (st = record(&c, out, &fb, t, yd, ypd, evrec, err))) goto done;
             if (on_out) {
                 nout++;
                 tout = fmin(nout * dtout, tend);
@@ -575,24 +594,26 @@ static rc_status ida_run(const rc_model *m, const rc_run_options *opt, rc_pause 
                 s.reinits++;
             }
             const int on_out = tout - t <= 1e-12 * fmax(fabs(t), dtout);
-            if (nev > 0 && (evrec || on_out) && (st = write_frame(m, d, out, &fb, t, yd, evrec, err))) goto done;
+            if (nev > 0 && (evrec || on_out) && (st = record(&c, out, &fb, t, yd, ypd, evrec, err))) goto done;
             if (on_out) {
                 nout++;
                 tout = fmin(nout * dtout, tend);
             }
         } else if (one_step && t < tout) {
             if (dt_contact > 0 && rc_impacts_active(&im) && t - t_contact_rec >= dt_contact) {
-                if ((st = write_frame(m, d, out, &fb, t, yd, RC_REC_CONTACT, err))) goto done;
+                if ((st = record(&c, out, &fb, t, yd, ypd, RC_REC_CONTACT, err))) goto done;
                 t_contact_rec = t;
             }
         } else {
             while (tout <= t) {
-                const double *yo = yd;
+                const double *yo = yd, *ypo = ypd;
                 if (tout < t) {
                     IDACHECK(IDAGetDky(ida, tout, 0, ytn), "IDAGetDky");
+                    IDACHECK(IDAGetDky(ida, tout, 1, ypt), "IDAGetDky");
                     yo = N_VGetArrayPointer(ytn);
+                    ypo = N_VGetArrayPointer(ypt);
                 }
-                if ((st = write_frame(m, d, out, &fb, tout, yo, 0, err))) goto done;
+                if ((st = record(&c, out, &fb, tout, yo, ypo, 0, err))) goto done;
                 single = 0;
                 nout++;
                 const double next = fmin(nout * dtout, tend);
@@ -642,9 +663,8 @@ done:
     SUNMatDestroy(A);
     N_VDestroy(yy);
     N_VDestroy(yp);
-    N_VDestroy(rr);
-    N_VDestroy(av);
     N_VDestroy(ytn);
+    N_VDestroy(ypt);
     N_VDestroy(ysamp);
     N_VDestroy(idv);
     rc_impacts_free(&im);
@@ -657,6 +677,7 @@ done:
     free(bp);
     free(c.jsave);
     rc_jnt_work_free(c.jw);
+    free(c.yrec);
     SUNContext_Free(&ctx);
     frame_free(&fb);
     rc_data_free(d);

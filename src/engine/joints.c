@@ -386,13 +386,27 @@ static int lu_leading(rc_jnt_work *w, int nr, int n)
 int rc_jnt_dependent(const rc_model *m, rc_jnt_work *w, const double *Y)
 {
     const rc_joints *J = m->jnt;
-    /* the rows are ordered by joint: the first leading block that is
-     * singular ends with the joint that made them dependent */
-    for (int j = 0; j < J->n; j++) {
-        build_A(m, w, Y);
-        if (lu_leading(w, J->nrows, J->radr[j] + J->nrow[j])) return j;
+    const size_t na = (size_t)J->nrows * (size_t)J->nrows;
+    double *a0 = malloc((na + 1) * sizeof *a0);
+    if (!a0) return J->n - 1;
+    build_A(m, w, Y);
+    memcpy(a0, w->A, na * sizeof *a0);
+    int bad = -1;
+    /* all rows at once; when they are dependent, the rows being ordered by
+     * joint, the first singular leading block ends with the joint that made
+     * them so (bisection over the joints) */
+    if (lu_leading(w, J->nrows, J->nrows)) {
+        int lo = 0, hi = J->n - 1; /* joints 0..hi are dependent */
+        while (lo < hi) {
+            const int mid = (lo + hi) / 2;
+            memcpy(w->A, a0, na * sizeof *a0);
+            if (lu_leading(w, J->nrows, J->radr[mid] + J->nrow[mid])) hi = mid;
+            else lo = mid + 1;
+        }
+        bad = hi;
     }
-    return -1;
+    free(a0);
+    return bad;
 }
 
 int rc_jnt_consistent(const rc_model *m, rc_jnt_work *w, double *Y, double *Yp)

@@ -231,6 +231,21 @@ static void test_joint_consistent_multipliers(void)
     double *Y2 = calloc((size_t)n, sizeof *Y2);
     rc_initial_state(m, Y);
     ENSURE(rc_jnt_check_initial(m, w, Y, &e) == RC_OK);
+    /* velocities off the constraints, projected back: G u = 0, and the
+     * change is the smallest in kinetic energy, so an allowed motion (the
+     * hinge's rotation) is kept */
+    {
+        double *v1 = Y + m->body_yadr[0] + 7, *w1 = Y + m->body_yadr[0] + 10, *v2 = Y + m->body_yadr[1] + 7;
+        v1[0] += 0.02;
+        v2[2] += 0.03;
+        ENSURE(rc_jnt_project_velocities(m, w, Y) == 0);
+        residual(m, d, w, Y, Yp, r);
+        double cv = 0;
+        for (int k = 0; k < m->jnt->nrows; k++) cv = fmax(cv, fabs(r[m->ny + k]));
+        ENSURE(cv < 1e-14);
+        ENSURE(fabs(w1[2]) > 1e-4); /* the pushes turned the hinge */
+        rc_initial_state(m, Y);
+    }
     rc_assemble_rhs(m, d, 0.0, Y, Yp);
     ENSURE(rc_jnt_consistent(m, w, Y, Yp) == 0);
     residual(m, d, w, Y, Yp, r);

@@ -92,6 +92,11 @@ void rc_jnt_id(const rc_model *m, const rc_jnt_work *w, double *id);
  * constraints held along the motion), y' of the bodies with the reactions.
  * Returns 0, or -1 when the constraint rows are dependent. */
 int rc_jnt_consistent(const rc_model *m, rc_jnt_work *w, double *Y, double *Yp);
+/* Velocities of the bodies made to satisfy the velocity constraints G u = 0
+ * exactly, by the change of smallest kinetic energy (at the start: the
+ * deck's velocities satisfy them to the rounding of their digits). Returns
+ * 0, or -1 when the rows are dependent. */
+int rc_jnt_project_velocities(const rc_model *m, rc_jnt_work *w, double *Y);
 /* The first joint (in card order) whose rows make the constraint rows
  * dependent at Y, or -1 when they are independent. */
 int rc_jnt_dependent(const rc_model *m, rc_jnt_work *w, const double *Y);

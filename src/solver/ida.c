@@ -441,7 +441,8 @@ static rc_status ida_run(const rc_model *m, const rc_run_options *opt, rc_pause 
             st = RC_SET(err, RC_ESOLVER, "the forces at t = 0 could not be evaluated");
             goto done;
         }
-        if (c.jw && rc_jnt_consistent(m, c.jw, yd, p)) {
+        if (c.jw && (rc_jnt_project_velocities(m, c.jw, yd) || rc_assemble_rhs(m, d, t, yd, p) ||
+                     rc_jnt_consistent(m, c.jw, yd, p))) {
             st = RC_SET(err, RC_ESOLVER, "the joints' constraint rows are dependent at t = 0 (the model's "
                                          "compile checks them: an internal error)");
             goto done;

@@ -203,7 +203,6 @@ static int set_root_directions(const rc_model *m, const rc_data *d, void *cv, in
     return CVodeSetRootDirection(cv, dir);
 }
 
-
 /* One event to the sink; RC_OK or the output's error. */
 rc_status sink_event(ev_sink *k, double t, const char *kind, const char *element, const double v[3],
                             rc_error *err)
@@ -331,7 +330,6 @@ static void add_stats(void *cv, rc_stats *s)
     if (CVodeGetNumErrTestFails(cv, &v) == CV_SUCCESS) s->err_test_fails += v;
     if (CVodeGetNumGEvals(cv, &v) == CV_SUCCESS) s->root_evals += v;
 }
-
 
 void frame_free(frame_buf *f)
 {

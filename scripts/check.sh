@@ -68,7 +68,7 @@ for solver in deck default ida; do
     for chk in validation/*/check.py; do
         dir=$(dirname "$chk")
         if [ "$mode" = fast ] && [ -f "$dir/SLOW" ]; then continue; fi
-        if [ "$solver" = deck ]; then echo "== $dir"; else echo "== $dir ($solver)"; fi
+        case $solver in deck) echo "== $dir" ;; default) echo "== $dir (defaults)" ;; *) echo "== $dir ($solver)" ;; esac
         RICOCHET="$PWD/$build/ricochet" RICOCHET_VAL_SOLVER="$solver" RICOCHET_VAL_METHOD="$method" \
             /usr/bin/python3 "$chk" --"$mode" > "$log" 2>&1
         status=$?

@@ -6,20 +6,22 @@
  * solver.h), and the one that runs models with joints (docs/theory.md,
  * "Joints").
  *
- * Y = [y, lambda, mu, W]: the model's states y (model.h), then, when the
- * model has joints (model/joint.h), their multipliers (algebraic: the
- * reactions lambda of the velocity constraints and the projection
- * multipliers mu of the position constraints, stabilised index-2 form of
- * Gear, Gupta and Leimkuhler) and the work W of the reactions [J].
+ * Y = [y, Lambda, nu, W]: the model's states y (model.h), then, when the
+ * model has joints (model/joint.h), the integrated multipliers of their
+ * stabilised index-2 rows (Gear, Gupta and Leimkuhler): the impulses
+ * Lambda of the reactions lambda = Lambda' and the projections nu of the
+ * position constraints, mu = nu'; and the work W of the reactions [J].
  *
- *   F_y      = y' - f(t, y) + (joint terms of the bodies' rows)
- *   F_lambda = G(q) u               (velocity constraints)
- *   F_mu     = g(q)                 (position constraints)
+ *   F_y      = y' - f(t, y) + (joint terms of the bodies' rows: G^T lambda, G^T mu)
+ *   F_Lambda = G(q) u               (velocity constraints)
+ *   F_nu     = g(q)                 (position constraints)
  *   F_W      = W' - lambda . G(q) u (the reactions' power: 0 on the manifold)
  *
  * Without joints F = y' - f(t, y): an ODE, whose consistent derivative is
  * y' = f(t, y) exactly; it is set so at the start and after every restart.
- * With joints IDACalcIC computes the multipliers and y' from y.
+ * With joints the velocities are made to satisfy G u = 0 at the start, and
+ * lambda follows from the acceleration-level equations at every (re)start
+ * (engine/joints.c; IDACalcIC cannot: no algebraic unknown in the rows).
  */
 #include <float.h>
 #include <ida/ida.h>

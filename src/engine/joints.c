@@ -1,5 +1,5 @@
 /*
- * Joints on the integrator's extended vector Y = [y, lambda, mu, W]
+ * Joints on the integrator's extended vector Y = [y, Lambda, nu, W]
  * (model/joint.h, docs/theory.md "Joints"): residual terms, the extended
  * sparse pattern and its exact Jacobian (complex step of joints.inc), the
  * consistent multipliers, the reactions. The residual is pure: no

@@ -28,7 +28,7 @@ Programs (built by bench/run.sh into the build directory):
   peakrss        launcher that reports a child's own ru_maxrss (wait4)
 
 usage: /usr/bin/python3 bench/bench.py [--build DIR] [--quick]
-       [--only drop|column|quasi|ramp|stickslip] [--sizes 10,100,1000]
+       [--only drop|column|quasi|ramp|stickslip|joint] [--sizes 10,100,1000]
        [--qsizes 100,1000] [--ramps 20,100] [--json FILE]
 Prints plain tables; writes the raw numbers to DIR/bench/results.json.
 """
@@ -1085,11 +1085,67 @@ def bench_stickslip(B):
     return res
 
 
+def bench_joint(B):
+    """A pendulum held at 150 degrees: on a /JOINT/DISTANCE (IDA path) and on
+    a stiff critically damped /COUPLING/SPRING of the same length (CVODE
+    path), against the exact period 4 sqrt(L/g) K(sin 75 deg); default
+    solver settings. The spring acts at the centre of mass, as the joint's
+    point does: a point-mass pendulum of length L either way."""
+    from scipy.special import ellipk
+    m, L, g, th0, nper = 1.0, 1.0, 9.81, math.radians(150.0), 10
+    T = 4.0 * math.sqrt(L / g) * ellipk(math.sin(th0 / 2) ** 2)
+    x0 = (L * math.sin(th0), -L * math.cos(th0), 0.0)
+    print("== pendulum at 150 degrees: exact joint (IDA) against a stiff spring (CVODE)")
+    print(f"   exact period {T:.9f} s, {nper} periods, default tolerances")
+    print(f"   {'model':40s} {'steps':>7s} {'wall [ms]':>10s} {'period error':>13s} {'max ||x| - L| [m]':>18s}")
+    rows = []
+    variants = [("joint", None)] + [("spring", k) for k in (1e4, 1e6, 1e8)]
+    for kind, k in variants:
+        d = Deck("pendulum " + (kind if k is None else f"spring k = {k:.0e} N/m"))
+        d.nodes([(1,) + x0])
+        d.rbody(1, 1, m, [1e-3, 1e-3, 1e-3], title="bob")
+        d.grav(1, "Y", -g)
+        if k is None:
+            d.joint(1, "DISTANCE", 1, 0, x0, p2=(0.0, 0.0, 0.0), title="rod")
+        else:
+            d.spring(1, 0, (0.0, 0.0, 0.0), 1, x0, iform=1, x0=L, kd=2.0 * math.sqrt(k * m), a=k, title="stiff rod")
+        d.run(nper * T, T / 200)
+        name = "joint_pendulum" if k is None else f"spring_pendulum_{k:.0e}"
+        case, out = os.path.join(B.work, name + ".rad"), os.path.join(B.work, name + ".nc")
+        d.write(case)
+        rc, so, se, _, _ = B.measured([B.ricochet, "run", case, "-o", out, "-q"], 600)
+        if rc != 0:
+            print(f"   {name}: failed ({se.strip()[-200:]})")
+            rows.append({"model": name, "ok": False})
+            continue
+        with Dataset(out) as nc:
+            t = np.array(nc["time"][:])
+            x = np.array(nc["body_position"][:])[:, 0, :]
+        c = []
+        for i in range(1, len(t) - 2):
+            if x[i, 0] > 0 >= x[i + 1, 0]:
+                p = np.polyfit(t[i - 1:i + 3] - t[i], x[i - 1:i + 3, 0], 3)
+                rr = [z.real for z in np.roots(p) if abs(z.imag) < 1e-12 and 0 <= z.real <= t[i + 1] - t[i]]
+                c.append(t[i] + rr[0])
+        per = np.diff(c)
+        perr = float(np.max(np.abs(per - T)) / T)
+        drift = float(np.max(np.abs(np.linalg.norm(x, axis=1) - L)))
+        rc2, so2, _, _, _ = B.measured([B.rc_time, case, 3], 600)
+        tm = kv(so2) if rc2 == 0 else {}
+        label = "/JOINT/DISTANCE, IDA" if k is None else f"/COUPLING/SPRING k = {k:.0e} N/m, CVODE"
+        print(f"   {label:40s} {int(tm.get('steps', 0)):7d} {1e3 * float(tm.get('wall_time', float('nan'))):10.2f} "
+              f"{perr:13.2e} {drift:18.2e}")
+        rows.append({"model": label, "ok": True, "steps": tm.get("steps"), "wall": tm.get("wall_time"),
+                     "period_error": perr, "radial_drift": drift})
+    print()
+    return rows
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--quick", action="store_true", help="fewer variants (smoke test)")
-    ap.add_argument("--only", choices=["drop", "column", "quasi", "ramp", "stickslip"],
+    ap.add_argument("--only", choices=["drop", "column", "quasi", "ramp", "stickslip", "joint"],
                     help="quasi = ramp + stickslip")
     ap.add_argument("--sizes", default="10,100,1000")
     ap.add_argument("--qsizes", default=None, help="column sizes of the ramp (default 100,1000; --quick: 100)")
@@ -1120,6 +1176,8 @@ def main():
                 B, [int(s) for s in qs.split(",") if s], [float(s) for s in a.ramps.split(",") if s], shape)
     if a.only in (None, "quasi", "stickslip"):
         B.results["stickslip"] = bench_stickslip(B)
+    if a.only in (None, "joint"):
+        B.results["joint"] = bench_joint(B)
     B.results["bench_wall"] = time.time() - t0
     path = a.json or os.path.join(B.work, "results.json")
     with open(path, "w") as f:

@@ -52,27 +52,34 @@ fail=$((fail + $(grep -c '^FAIL ' "$log")))
 # validation problems: each check.py prints PASS/FAIL lines; every problem
 # runs twice, first with the solver settings of its decks, then at ricochet's
 # default settings (RICOCHET_VAL_SOLVER=default: the /SOLVER cards removed,
-# except in the convergence studies over rtol; check names prefixed "default:")
-for solver in deck default; do
+# except in the convergence studies over rtol; check names prefixed "default:"),
+# then once more on the IDA path (RICOCHET_VAL_METHOD=ida: ricochet run
+# --method ida at the decks' settings; check names prefixed "ida:")
+for solver in deck default ida; do
+    method=""
     if [ "$solver" = default ]; then
         echo "==== validation at the default solver settings (/SOLVER removed)"
+    elif [ "$solver" = ida ]; then
+        echo "==== validation on the IDA path (--method ida)"
+        method=ida
     else
         echo "==== validation at the decks' solver settings"
     fi
     for chk in validation/*/check.py; do
         dir=$(dirname "$chk")
         if [ "$mode" = fast ] && [ -f "$dir/SLOW" ]; then continue; fi
-        if [ "$solver" = default ]; then echo "== $dir (defaults)"; else echo "== $dir"; fi
-        RICOCHET="$PWD/$build/ricochet" RICOCHET_VAL_SOLVER="$solver" /usr/bin/python3 "$chk" --"$mode" > "$log" 2>&1
+        case $solver in deck) echo "== $dir" ;; default) echo "== $dir (defaults)" ;; *) echo "== $dir ($solver)" ;; esac
+        RICOCHET="$PWD/$build/ricochet" RICOCHET_VAL_SOLVER="$solver" RICOCHET_VAL_METHOD="$method" \
+            /usr/bin/python3 "$chk" --"$mode" > "$log" 2>&1
         status=$?
         cat "$log"
         p=$(grep -c '^PASS ' "$log")
         f=$(grep -c '^FAIL ' "$log")
         if [ "$status" -ne 0 ] && [ "$f" -eq 0 ]; then
-            if [ "$solver" = default ]; then
-                echo "FAIL default:$dir: check script exited with status $status"
-            else
+            if [ "$solver" = deck ]; then
                 echo "FAIL $dir: check script exited with status $status"
+            else
+                echo "FAIL $solver:$dir: check script exited with status $status"
             fi
             f=1
         fi

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""Table of the validation errors at the decks' solver settings ("tight") and
-at ricochet's default settings (RICOCHET_VAL_SOLVER=default: /SOLVER removed).
+"""Table of the validation errors at the decks' solver settings ("tight"), at
+ricochet's default settings (RICOCHET_VAL_SOLVER=default: /SOLVER removed)
+and on the IDA path at the decks' settings (RICOCHET_VAL_METHOD=ida).
 
-    scripts/val_table.py [--build DIR] [--all] [PROBLEM ...]   run the checks in both modes
+    scripts/val_table.py [--build DIR] [--all] [PROBLEM ...]   run the checks in the three modes
     scripts/val_table.py --log FILE                             read a scripts/check.sh log
 
 Prints a markdown table: problem, check, error (or the detail when the check
@@ -31,7 +32,7 @@ PATTERNS = [re.compile(p) for p in (
     r"= " + SCI + r"[^;]*?\((?:<|<=) ",
 )]
 REL = re.compile(r"\(rel\. " + SCI + r"\)")
-LINE = re.compile(r"^(PASS|FAIL) (default:)?(\S+?): (.*)$")
+LINE = re.compile(r"^(PASS|FAIL) (default:|ida:)?(\S+?): (.*)$")
 
 
 def error_of(detail):
@@ -53,10 +54,10 @@ def parse(lines, results, problem=None, mode=None):
     for ln in lines:
         if re.match(r"^(ricochet: |RuntimeError: |\w+Error: )", ln):
             last_err = ln.strip()
-        h = re.match(r"^== (validation/\S+?)( \(defaults\))?$", ln)
+        h = re.match(r"^== (validation/\S+?)( \((defaults|ida)\))?$", ln)
         if h:
             problem = os.path.basename(h.group(1))
-            mode = "default" if h.group(2) else "tight"
+            mode = {"defaults": "default", "ida": "ida"}.get(h.group(3), "tight")
             continue
         m = LINE.match(ln.rstrip("\n"))
         if not m or problem is None:
@@ -64,7 +65,7 @@ def parse(lines, results, problem=None, mode=None):
         status, pre, name, detail = m.groups()
         if detail.startswith("check script exited") and last_err and ":" not in detail:
             detail += ": " + last_err
-        md = "default" if pre else (mode or "tight")
+        md = {"default:": "default", "ida:": "ida"}.get(pre or "", mode or "tight")
         key = (problem, name.split("/")[-1])
         results.setdefault(key, {})[md] = (status, error_of(detail))
 
@@ -73,15 +74,16 @@ def run_checks(problems, build, full):
     results = {}
     for prob in problems:
         chk = os.path.join(ROOT, "validation", prob, "check.py")
-        for md in ("tight", "default"):
+        for md in ("tight", "default", "ida"):
             env = dict(os.environ, RICOCHET=os.path.join(ROOT, build, "ricochet"),
-                       RICOCHET_VAL_SOLVER="default" if md == "default" else "deck")
+                       RICOCHET_VAL_SOLVER="default" if md == "default" else "deck",
+                       RICOCHET_VAL_METHOD="ida" if md == "ida" else "")
             p = subprocess.run([PYTHON, chk, "--all" if full else "--fast"], capture_output=True,
                                text=True, env=env, cwd=ROOT)
             lines = p.stdout.splitlines()
             if p.returncode != 0 and not any(ln.startswith("FAIL ") for ln in lines):
                 err = (p.stderr.strip().splitlines() or ["?"])[-1]
-                lines.append(f"FAIL {'default:' if md == 'default' else ''}{prob}: check script exited with status "
+                lines.append(f"FAIL {md + ':' if md != 'tight' else ''}{prob}: check script exited with status "
                              f"{p.returncode}: {err}")
             parse(lines, results, prob, md)
             print(f"{prob} ({md}): {sum(ln.startswith('PASS ') for ln in lines)} passed, "
@@ -97,13 +99,13 @@ def cell(v):
 
 
 def table(results):
-    out = ["| problem | check | error, tight (deck /SOLVER) | error, defaults (no /SOLVER) |",
-           "|---|---|---|---|"]
+    out = ["| problem | check | error, tight (deck /SOLVER) | error, defaults (no /SOLVER) | error, IDA (--method ida) |",
+           "|---|---|---|---|---|"]
     for (prob, name), v in results.items():
-        out.append(f"| {prob} | {name} | {cell(v.get('tight'))} | {cell(v.get('default'))} |")
-    n = {md: sum(1 for v in results.values() if v.get(md, ("",))[0] == "FAIL") for md in ("tight", "default")}
+        out.append(f"| {prob} | {name} | {cell(v.get('tight'))} | {cell(v.get('default'))} | {cell(v.get('ida'))} |")
+    n = {md: sum(1 for v in results.values() if v.get(md, ("",))[0] == "FAIL") for md in ("tight", "default", "ida")}
     out.append("")
-    out.append(f"{len(results)} checks; failing: {n['tight']} tight, {n['default']} at defaults")
+    out.append(f"{len(results)} checks; failing: {n['tight']} tight, {n['default']} at defaults, {n['ida']} on IDA")
     return "\n".join(out)
 
 

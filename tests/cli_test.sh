@@ -55,6 +55,19 @@ for bad in "--t-end -1" "--t-end abc" "--dt-out 0" "--dt-out inf" "--rtol nan" "
     if grep -q "^ricochet: ${bad%% *}: expected a" "$tmp/e" && [ ! -e "$tmp/bad_ov.nc" ]; then expect "bad_override$name" 2 $rc "($(head -1 "$tmp/e"))"
     else expect "bad_override$name" 2 99 "(exit $rc: $(head -c 160 "$tmp/e"))"; fi
 done
+# the integration backend: --method ida runs the demo on IDA (the file says
+# so, the same impacts happen); a bad name and cvode on a model with joints
+# are input errors
+"$bin" run "$demo" -o "$tmp/ida.nc" --method ida > "$tmp/o" 2>"$tmp/e"; rc=$?
+if ncdump -h "$tmp/ida.nc" 2>/dev/null | grep -q ':solver = "IDA BDF' && grep -q "simulated 1 s in" "$tmp/o" &&
+   grep -q "^impacts [1-9]" "$tmp/o"; then expect method_ida 0 $rc "($(grep -o 'impacts [0-9]*' "$tmp/o") on IDA)"
+else expect method_ida 0 99 "(exit $rc: $(head -c 200 "$tmp/o") $(head -c 200 "$tmp/e"))"; fi
+"$bin" run "$demo" -o "$tmp/bad_m.nc" --method rk4 > "$tmp/e" 2>&1; rc=$?
+grep -q "^ricochet: --method: expected cvode or ida" "$tmp/e" && [ ! -e "$tmp/bad_m.nc" ] &&
+    expect bad_method 2 $rc "($(head -1 "$tmp/e"))" || expect bad_method 2 99 "(exit $rc: $(head -c 160 "$tmp/e"))"
+"$bin" run validation/joint_pendulum/case.rad -o "$tmp/jc.nc" --method cvode > "$tmp/e" 2>&1; rc=$?
+grep -q "joints" "$tmp/e" && grep -q "IDA" "$tmp/e" && [ ! -e "$tmp/jc.nc" ] &&
+    expect joints_on_cvode 2 $rc "($(head -c 160 "$tmp/e"))" || expect joints_on_cvode 2 99 "(exit $rc: $(head -c 160 "$tmp/e"))"
 # the demo ends at its end time exactly (the end time is the integrator's stop time)
 "$bin" run "$demo" -o "$tmp/end.nc" > "$tmp/o" 2>&1; rc=$?
 grep -q "simulated 1 s in" "$tmp/o" && expect end_time_exact 0 $rc "($(grep -o 'simulated [^,]*' "$tmp/o"))" ||

@@ -470,7 +470,7 @@ static void test_case_defaults(void)
     ENSURE(c->run.tend == 0.371);
     ENSURE_NEAR(c->run.dtout, 0.00371, 1e-15, 0);
     const rc_case_solver *v = &c->solver;
-    ENSURE(v->present == 0 && v->method == 1 && v->max_order == 5 && v->max_steps == 100000);
+    ENSURE(v->present == 0 && v->method == 0 && v->max_order == 5 && v->max_steps == 100000);
     /* blank absolute tolerances: 0, derived from the model at compile time */
     ENSURE(v->rtol == 1e-8 && v->atol_pos == 0 && v->atol_quat == 0 && v->atol_vel == 0 &&
            v->atol_omega == 0 && v->atol_energy == 0 && v->hmax == 0 && v->h0 == 0);
@@ -908,8 +908,7 @@ static void test_case_error_run_solver(void)
     EXPECT_INPUT_ERROR("rtol.rad", RUN_CARD "/SOLVER\n,,,-1e-6\n", 4, "card /SOLVER", "field Rtol",
                        "positive");
     EXPECT_INPUT_ERROR("atol.rad", RUN_CARD "/SOLVER\n\n,,-1e-6\n", 5, "field Atol_vel", "non-negative");
-    EXPECT_INPUT_ERROR("method.rad", RUN_CARD "/SOLVER\n2\n", 4, "field Method",
-                       "not supported yet");
+    EXPECT_INPUT_ERROR("method.rad", RUN_CARD "/SOLVER\n3\n", 4, "field Method", "{0, 1, 2}");
     EXPECT_INPUT_ERROR("order.rad", RUN_CARD "/SOLVER\n1,6\n", 4, "field Max_order",
                        "{1, 2, 3, 4, 5}");
 }

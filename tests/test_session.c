@@ -12,6 +12,7 @@
 
 #define DEMO "cases/demo_sphere_drop.rad"
 #define IMPVEL "validation/impvel_release/case.rad"
+#define JOINTS "validation/joint_double_pendulum/case.rad"
 
 static rc_model *compile(const char *path)
 {
@@ -123,11 +124,15 @@ static void test_session_callback_stops_run(void)
  * rc_run: same final state, bit for bit, same statistics and records. */
 static void test_session_run_until_pieces_equal_one_run(void)
 {
-    const char *cases[] = {DEMO, IMPVEL};
-    for (int k = 0; k < 2; k++) {
+    /* on both backends (method 1 CVODE, 2 IDA), and a model with joints */
+    const char *cases[] = {DEMO, IMPVEL, DEMO, IMPVEL, JOINTS};
+    const int method[] = {1, 1, 2, 2, 2};
+    for (int k = 0; k < 5; k++) {
         rc_model *m = compile(cases[k]);
         ENSURE(m != NULL);
         if (!m) continue;
+        rc_error em;
+        ENSURE(rc_model_set_method(m, method[k], &em) == RC_OK);
         const int ny = rc_model_state_size(m);
         double *y1 = calloc((size_t)ny, sizeof(double)), *y2 = calloc((size_t)ny, sizeof(double));
         char p1[256], p2[256], complete[16], status[512];
@@ -168,9 +173,9 @@ static void test_session_run_until_pieces_equal_one_run(void)
         const size_t r1 = nc_events(p1, complete, sizeof complete, status, sizeof status);
         const size_t r2 = nc_events(p2, complete, sizeof complete, status, sizeof status);
         ENSURE(r1 == r2 && !strcmp(complete, "yes"));
-        printf("    %s: %d pieces + 1 off the output times: %ld steps, %ld events (one run: %ld, %ld), final "
-               "state %s\n",
-               cases[k], pieces, s2.steps, s2.events, s1.steps, s1.events,
+        printf("    %s (method %d): %d pieces + 1 off the output times: %ld steps, %ld events (one run: %ld, %ld), "
+               "final state %s\n",
+               cases[k], method[k], pieces, s2.steps, s2.events, s1.steps, s1.events,
                memcmp(y1, y2, (size_t)ny * sizeof(double)) ? "differs" : "identical");
         unlink(p1);
         unlink(p2);

@@ -95,6 +95,11 @@ void rc_model_print_summary(const rc_model *m, FILE *f);
  * on /SOLVER; docs/theory.md 7.1). rtol must be finite, in (0, 1):
  * RC_EINPUT otherwise, the model unchanged. */
 rc_status rc_model_set_rtol(rc_model *m, double rtol, rc_error *err);
+/* Replace the integration backend (/SOLVER Method) of a compiled model:
+ * 1 CVODE (BDF on y' = f), 2 IDA (BDF on the residual form; the one that
+ * runs joints). RC_EINPUT for another number, or 1 for a model with joints;
+ * the model unchanged then. */
+rc_status rc_model_set_method(rc_model *m, int method, rc_error *err);
 /* The relative tolerance, end time and output interval of a model [-, s, s]. */
 double rc_model_rtol(const rc_model *m);
 double rc_model_t_end(const rc_model *m);

@@ -9,6 +9,7 @@
  *   cards_interfaces.c  /INTER/TYPE6 /INTER/POWER
  *   cards_friction.c    /FRICTION /FRIC_ORIENT
  *   cards_couplings.c   /COUPLING/SPRING /COUPLING/CATENARY /COUPLING/CONTACT
+ *   cards_joints.c      /JOINT/SPHERICAL /JOINT/REVOLUTE /JOINT/DISTANCE /JOINT/FIXED /JOINT/PRISMATIC
  *   cards_loads.c       /FUNCT /INIVEL /GRAV /BCS /IMPVEL
  *   cards_run.c         /BEGIN /RUN /SOLVER, deck-level defaults and checks
  */
@@ -28,7 +29,7 @@ typedef enum {
     RC_CARD_TYPE6, RC_CARD_FUNCT, RC_CARD_INIVEL, RC_CARD_GRAV, RC_CARD_BCS, RC_CARD_RUN,
     RC_CARD_SOLVER, RC_CARD_CPL_SPRING, RC_CARD_CPL_CATENARY, RC_CARD_PART, RC_CARD_GRPART,
     RC_CARD_FRICTION, RC_CARD_FRIC_ORIENT, RC_CARD_POWER, RC_CARD_CYL, RC_CARD_BOX, RC_CARD_IMPVEL,
-    RC_CARD_UNIT, RC_CARD_SEG, RC_CARD_SURFPART, RC_CARD_CPL_CONTACT
+    RC_CARD_UNIT, RC_CARD_SEG, RC_CARD_SURFPART, RC_CARD_CPL_CONTACT, RC_CARD_JOINT
 } rc_card_kind;
 
 /* Supported cards; a family (kw with a sub) lists each subtype. */
@@ -51,6 +52,9 @@ static const struct {
     {"UNIT", NULL, RC_CARD_UNIT},
     {"SURF", "SEG", RC_CARD_SEG},      {"SURF", "PART", RC_CARD_SURFPART},
     {"COUPLING", "CONTACT", RC_CARD_CPL_CONTACT},
+    {"JOINT", "SPHERICAL", RC_CARD_JOINT}, {"JOINT", "REVOLUTE", RC_CARD_JOINT},
+    {"JOINT", "DISTANCE", RC_CARD_JOINT},  {"JOINT", "FIXED", RC_CARD_JOINT},
+    {"JOINT", "PRISMATIC", RC_CARD_JOINT},
 };
 
 /* Radioss cards without meaning for rigid bodies: skipped with a warning. */
@@ -133,6 +137,7 @@ static rc_status rc_card_call(rc_reader *rd, const rc_block *b, rc_card_kind kin
     case RC_CARD_UNIT: return rc_card_unit(rd, b);
     case RC_CARD_SEG: return rc_card_seg(rd, b);
     case RC_CARD_SURFPART: return rc_card_surfpart(rd, b);
+    case RC_CARD_JOINT: return rc_card_joint(rd, b);
     }
     return RC_SET(rd->err, RC_EINTERNAL, "unknown card kind %d", (int)kind);
 }

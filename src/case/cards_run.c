@@ -15,7 +15,7 @@
 #include <string.h>
 
 /* Defaults of /SOLVER (docs/case-format.md). */
-#define RC_DEF_METHOD 1
+#define RC_DEF_METHOD 0 /* automatic: IDA with joints, else CVODE */
 #define RC_DEF_MAX_ORDER 5
 #define RC_DEF_MAX_STEPS 100000
 #define RC_DEF_RTOL 1e-8
@@ -339,8 +339,7 @@ rc_status rc_card_solver(rc_reader *rd, const rc_block *b)
 
     const unsigned zp = RC_FF_ZDEF | RC_FF_POS;
     rc_field l1[] = {
-        RC_F_SET("Method", &s->method, RC_DEF_METHOD, RC_FF_ZDEF, RC_BIT(1) | RC_BIT(2), RC_BIT(1),
-                 "(2 = IDA is planned)"),
+        RC_F_SET("Method", &s->method, RC_DEF_METHOD, 0, RC_BIT(0) | RC_BIT(1) | RC_BIT(2), 0, NULL),
         RC_F_SET("Max_order", &s->max_order, RC_DEF_MAX_ORDER, RC_FF_ZDEF, 0x3Eu, 0, NULL),
         RC_F_INT("Max_steps", &steps, RC_DEF_MAX_STEPS, zp),
         RC_F_REALD("Rtol", &s->rtol, RC_DEF_RTOL, zp, RC_D_NONE),
@@ -357,6 +356,7 @@ rc_status rc_card_solver(rc_reader *rd, const rc_block *b)
     s->max_steps = steps;
     s->present = 1;
     s->loc = b->hdr->loc;
+    s->method_loc = b->lines[0].loc;
     return RC_OK;
 }
 
@@ -394,6 +394,6 @@ rc_status rc_cards_finish(rc_reader *rd)
                             "no /RUN card: the end time is required (ricochet's /RUN, or the "
                             "Radioss engine card /RUN/name/n)");
     /* without /SOLVER, the defaults apply there too */
-    if (!c->solver.present) c->solver.loc = c->end;
+    if (!c->solver.present) c->solver.loc = c->solver.method_loc = c->end;
     return RC_OK;
 }

@@ -273,7 +273,7 @@ typedef struct rc_case_run {
 /* /SOLVER (ricochet): integrator settings. Defaults in docs. */
 typedef struct rc_case_solver {
     int present;
-    int method;        /* 1: CVODE BDF (default) */
+    int method;        /* 0: automatic (default), 1: CVODE BDF, 2: IDA */
     int max_order;     /* 1..5, default 5 */
     long max_steps;    /* per output interval, default 100000 */
     double rtol;       /* default 1e-6 */
@@ -285,6 +285,7 @@ typedef struct rc_case_solver {
     double hmax;       /* [s], 0: no limit */
     double h0;         /* [s], 0: CVODE's estimate */
     rc_loc loc;
+    rc_loc method_loc; /* the line of Method (the deck's end without /SOLVER) */
 } rc_case_solver;
 
 /* The whole deck. Arrays grow as cards are read. */
@@ -309,6 +310,7 @@ struct rc_case {
     int ngrav;   rc_case_grav *grav;
     int nbcs;    rc_case_bcs *bcs;
     int ncoupling; struct rc_case_coupling *coupling; /* case_coupling.h */
+    int njoint;  struct rc_case_joint *joint;       /* case_joint.h */
     int npart;   rc_case_part *part;
     int ngrpart; rc_case_grpart *grpart;
     int nfriction; rc_case_friction *friction;

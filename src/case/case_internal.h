@@ -65,6 +65,7 @@ typedef enum {
     RC_IDK_INTER, RC_IDK_INIVEL, RC_IDK_GRAV, RC_IDK_BCS, RC_IDK_COUPLING, RC_IDK_PART,
     RC_IDK_GRPART, RC_IDK_FRICTION, RC_IDK_FRICORIENT, RC_IDK_IMPVEL,
     RC_IDK_SHELL, RC_IDK_SOLID, RC_IDK_PROP, RC_IDK_MAT, RC_IDK_SKEW, RC_IDK_ADMAS, /* cards_mesh.c */
+    RC_IDK_JOINT, /* cards_joints.c */
     RC_IDK_COUNT
 } rc_id_kind;
 
@@ -95,7 +96,7 @@ typedef struct rc_reader {
     long main_bytes;                          /* size of the main file      */
 
     int capfunct, capnode, capgrnod, caprbody, capsurf, captype6, capinivel,
-        capgrav, capbcs, capwarn, capcoupling, cappart, capgrpart, capfriction, capfricorient,
+        capgrav, capbcs, capwarn, capcoupling, capjoint, cappart, capgrpart, capfriction, capfricorient,
         cappower, capimpvel;
     rc_id_entry *ids[RC_IDK_COUNT];
     int nids[RC_IDK_COUNT], capids[RC_IDK_COUNT];
@@ -284,6 +285,9 @@ rc_status rc_card_grnod(rc_reader *rd, const rc_block *b);
 rc_status rc_card_rbody(rc_reader *rd, const rc_block *b);
 rc_status rc_card_part(rc_reader *rd, const rc_block *b);
 rc_status rc_card_grpart(rc_reader *rd, const rc_block *b);
+
+/* Joints (cards_joints.c). */
+rc_status rc_card_joint(rc_reader *rd, const rc_block *b);
 
 /* Surfaces (cards_surfaces.c). */
 rc_status rc_card_plane(rc_reader *rd, const rc_block *b);

@@ -481,7 +481,7 @@ static rc_status rc_check_dups(rc_reader *rd)
         "fct_ID", "node_ID", "grnod_ID", "rbody_ID", "surf_ID",
         "inter_ID", "inivel_ID", "grav_ID", "bcs_ID", "cpl_ID", "part_ID", "grpart_ID",
         "fric_ID", "fric_orient_ID", "impvel_ID",
-        "shell_ID", "brick_ID", "prop_ID", "mat_ID", "skew_ID", "admas_ID"};
+        "shell_ID", "brick_ID", "prop_ID", "mat_ID", "skew_ID", "admas_ID", "joint_ID"};
     rc_dup *d = NULL;
     int nd = 0, cap = 0;
     rc_status st = RC_OK;
@@ -624,6 +624,7 @@ void rc_case_free(rc_case *c)
     free(c->grav);
     free(c->bcs);
     free(c->coupling);
+    free(c->joint);
     for (int i = 0; i < c->npart; i++) { free(c->part[i].surf); free(c->part[i].surf_loc); }
     free(c->part);
     for (int i = 0; i < c->ngrpart; i++) { free(c->grpart[i].parts); free(c->grpart[i].part_loc); }

@@ -12,7 +12,7 @@
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: ricochet run CASE [-o OUT.nc] [-q] [--t-end T] [--dt-out DT] [--rtol R]\n"
+            "usage: ricochet run CASE [-o OUT.nc] [-q] [--t-end T] [--dt-out DT] [--rtol R] [--method M]\n"
             "                                            run a case, write results (default: CASE stem + .nc)\n"
             "       ricochet check CASE                  read and compile a case, print the model summary\n"
             "       ricochet export-vtk RESULTS.nc [-o DIR]  ParaView files (.pvd + .vtp; default DIR: stem_vtk)\n"
@@ -35,6 +35,8 @@ static void usage_run(FILE *f)
             "  --dt-out DT    output interval [s], instead of the case's /RUN Dt_out\n"
             "  --rtol R       relative tolerance, instead of /SOLVER Rtol; the absolute tolerances derived\n"
             "                 from the model's scales (blank /SOLVER fields) follow it\n"
+            "  --method M     integration backend, instead of /SOLVER Method: cvode (1) or ida (2); a model\n"
+            "                 with joints runs on ida only\n"
             "  -h, --help     this text\n"
             "T, DT and R are positive finite numbers (R below 1); T and DT in seconds (SI, as the deck is\n"
             "read: a deck naming its units is converted to SI; one naming none is used as written).\n"
@@ -185,7 +187,7 @@ int main(int argc, char **argv)
         usage(stderr);
         return 2;
     }
-    int quiet = 0;
+    int quiet = 0, method = 0;
     double t_end = 0.0, dt_out = 0.0, rtol = 0.0;
     for (int k = 2; k < argc; k++) {
         const char *a = argv[k];
@@ -201,6 +203,15 @@ int main(int argc, char **argv)
             took = 1;
         }
         if (took) continue;
+        if (is_run && (!strncmp(a, "--method=", 9) || !strcmp(a, "--method"))) {
+            const char *v = a[8] == '=' ? a + 9 : (k + 1 < argc ? argv[++k] : NULL);
+            method = v && (!strcmp(v, "cvode") || !strcmp(v, "1")) ? 1 : v && (!strcmp(v, "ida") || !strcmp(v, "2")) ? 2 : -1;
+            if (method < 0) {
+                fprintf(stderr, "ricochet: --method: expected cvode or ida (or 1, 2), got %s\n", v ? v : "nothing");
+                return 2;
+            }
+            continue;
+        }
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
             if (is_run) usage_run(stdout);
             else usage_check(stdout);
@@ -238,6 +249,7 @@ int main(int argc, char **argv)
     int rc = load(case_path, &c, &m, &e);
     /* overrides, after the compile: the derived tolerances follow --rtol */
     if (rc == 0 && rtol > 0 && rc_model_set_rtol(m, rtol, &e)) rc = fail(&e);
+    if (rc == 0 && method > 0 && rc_model_set_method(m, method, &e)) rc = fail(&e);
     char *def = NULL;
     if (rc == 0 && is_run) {
         def = out ? NULL : default_output(case_path);

@@ -11,7 +11,34 @@
 
 #include "base/error.h"
 #include "base/progress.h"
+#include "model/joint.h"
 #include "model/model.h"
+
+/* Joints: the initial state satisfies them (positions and velocities) and
+ * their rows are independent (engine/joints.c); else an input error at
+ * the card of the joint concerned. */
+static rc_status check_joints(const rc_model *m, rc_error *err)
+{
+    rc_jnt_work *w = rc_jnt_work_new(m);
+    double *Y = w ? calloc((size_t)(m->ny + rc_jnt_nextra(w)), sizeof *Y) : NULL;
+    if (!Y) {
+        rc_jnt_work_free(w);
+        RC_RAISE(err, RC_ENOMEM, "out of memory for the joints");
+    }
+    rc_initial_state(m, Y);
+    rc_status st = rc_jnt_check_initial(m, w, Y, err);
+    const int j = st ? -1 : rc_jnt_dependent(m, w, Y);
+    if (j >= 0)
+        st = RC_SET(err, RC_EINPUT,
+                    RC_LOCFMT "card %s: its constraints repeat those of the joints before it (dependent rows: "
+                              "a body held twice in the same way, e.g. a closed planar loop of revolute joints "
+                              "with parallel axes); remove the redundant constraint, e.g. use /JOINT/SPHERICAL "
+                              "for one joint of the loop",
+                    RC_LOC(m->jnt->loc[j]), m->jnt->name[j]);
+    free(Y);
+    rc_jnt_work_free(w);
+    return st;
+}
 
 rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
 {
@@ -30,6 +57,7 @@ rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
         st = rc_jac_build(m, err);
         rc_progress_done();
     }
+    if (!st && m->jnt) st = check_joints(m, err);
     if (st) {
         rc_model_free(m);
         return st;
@@ -61,6 +89,21 @@ rc_status rc_model_set_rtol(rc_model *m, double rtol, rc_error *err)
     }
     free(atol);
     free(rel);
+    return RC_OK;
+}
+
+rc_status rc_model_set_method(rc_model *m, int method, rc_error *err)
+{
+    rc_error local;
+    if (!err) err = &local;
+    if (method != 1 && method != 2)
+        RC_RAISE(err, RC_EINPUT, "integration method: expected 1 (CVODE) or 2 (IDA), got %d", method);
+    if (method == 1 && m->jnt && m->jnt->n > 0)
+        RC_RAISE(err, RC_EINPUT,
+                 "integration method: the model has joints (%d), which only the IDA path (method 2) runs; "
+                 "expected 2, got 1",
+                 m->jnt->n);
+    m->method = method;
     return RC_OK;
 }
 

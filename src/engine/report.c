@@ -10,6 +10,7 @@
 #include "model/coupling.h"
 #include "model/coupling_contact.h"
 #include "model/imposed.h"
+#include "model/joint.h"
 #include "model/model.h"
 #include "model/power.h"
 #include "engine/restitution.h"
@@ -165,6 +166,10 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
     if (m->ninter > 20)
         fprintf(f, "  ... and %d more interfaces (the first 20 in deck order are listed)\n", m->ninter - 20);
     rc_cpl_print_summary(m, f);
+    if (m->jnt) {
+        fprintf(f, "joints      %d, %d constraint rows (IDA path)\n", m->jnt->n, m->jnt->nrows);
+        rc_jnt_print(m, f);
+    }
     rc_imp_print(m, f);
     fprintf(f, "states      %d, Jacobian nonzeros %lld\n", m->ny, (long long)m->nnz);
     fprintf(f, "run         end time %.6g s, output every %.6g s\n", m->tend, m->dtout);
@@ -174,7 +179,8 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
     else
         fprintf(f, "            full-state records at events: %s (Ev_state %d)\n",
                 m->ev_state == 1 ? "yes" : "no, events table only", m->ev_state);
-    fprintf(f, "solver      CVODE BDF (max order %d), Newton, KLU; rtol %.3g\n", m->max_order, m->rtol);
+    fprintf(f, "solver      %s BDF (max order %d), Newton, KLU; rtol %.3g\n",
+            m->method == 2 ? "IDA (residual form, Method 2)" : "CVODE (Method 1)", m->max_order, m->rtol);
     /* the tolerances in force: given on /SOLVER, or derived from the scales */
     const int au = m->tol_auto;
     if (au == 0) {

@@ -18,6 +18,7 @@
 #include "case/case_power.h"
 #include "model/imposed.h"
 #include "model/massprop.h"
+#include "model/joint.h"
 #include "model/model.h"
 #include "base/progress.h"
 #include "model/power.h"
@@ -528,7 +529,15 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     m->tol_auto = (m->atol_pos == 0 ? RC_TOL_AUTO_POS : 0) | (m->atol_quat == 0 ? RC_TOL_AUTO_QUAT : 0) |
                   (m->atol_vel == 0 ? RC_TOL_AUTO_VEL : 0) | (m->atol_omega == 0 ? RC_TOL_AUTO_OMEGA : 0) |
                   (m->atol_energy == 0 ? RC_TOL_AUTO_ENERGY : 0);
-    m->method = c->solver.method;
+    /* Method 0: IDA for a model with joints, else CVODE */
+    m->method = c->solver.method ? c->solver.method : c->njoint > 0 ? 2 : 1;
+    if (c->njoint > 0 && m->method == 1) {
+        st = RC_SET(err, RC_EINPUT,
+                 RC_LOCFMT "card /SOLVER, field Method: the model has joints (%d), which only the IDA path (Method "
+                           "2) runs; expected 0 (automatic), blank or 2, got 1",
+                 RC_LOC(c->solver.method_loc), c->njoint);
+        goto fail;
+    }
     m->max_order = c->solver.max_order;
     m->max_steps = c->solver.max_steps;
     m->hmax = c->solver.hmax;
@@ -630,6 +639,8 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     /* states (the tolerances and the Jacobian pattern follow in
      * engine/prepare.c) */
     if ((st = layout(c, m, err))) goto fail;
+    /* joints (model/joint.c), on the state layout */
+    if ((st = rc_jnt_compile(c, m, err))) goto fail;
     *out = m;
     return RC_OK;
 fail:
@@ -646,6 +657,7 @@ void rc_model_free(rc_model *m)
         for (int i = 0; i < m->ninter; i++) free(m->inter_name[i]);
     rc_jac_free(m);
     rc_cpl_free(m->cpl);
+    rc_jnt_free(m->jnt);
     rc_power_free(m);
     rc_imp_free(m->imp);
     if (m->file)

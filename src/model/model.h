@@ -270,6 +270,8 @@ struct rc_model {
 
     /* body couplings: spring-dampers, catenaries (coupling.h) */
     struct rc_couplings *cpl;
+    /* joints (joint.h), run by the IDA backend; NULL: none */
+    struct rc_joints *jnt;
 };
 
 /* Which tolerances are derived from the model's scales (blank /SOLVER fields). */

@@ -77,15 +77,15 @@
 
 /* Dimensions. */
 enum { D_TIME, D_BODY, D_INTER, D_VEC3, D_QUAT, D_EVENT, D_COUPLING, D_SURF, D_SPARAM, D_SIDE, D_SEGNODE, D_SEGMENT,
-       D_CORNER, D_COUNT };
+       D_CORNER, D_JOINT, D_COUNT };
 static const char *const dim_name[D_COUNT] = {"time",     "body",    "inter",             "vec3", "quat",
                                               "event",    "coupling", "surface", "surface_parameter", "side",
-                                              "segment_node", "segment", "corner"};
+                                              "segment_node", "segment", "corner", "joint"};
 /* Origin of the CF time axis: simulated time 0 (a convention, not a date). */
 #define RC_OUT_TIME_ORIGIN "1970-01-01 00:00:00"
 
 /* Kinds of units; the strings are derived from the case's unit system. */
-enum { U_ONE, U_TIME, U_LENGTH, U_VELOCITY, U_ANGVEL, U_FORCE, U_ENERGY, U_COUNT };
+enum { U_ONE, U_TIME, U_LENGTH, U_VELOCITY, U_ANGVEL, U_FORCE, U_ENERGY, U_MOMENT, U_COUNT };
 
 /* Fixed variables (energies are added per entry of the meta). */
 enum {
@@ -98,6 +98,7 @@ enum {
     V_BODY_COORD, V_INTER_COORD, V_CPL_COORD,
     V_SURF_COORD, V_SURF_KIND, V_SURF_BODY, V_SURF_POINT, V_SURF_NORMAL, V_SURF_RADIUS, V_SURF_PARAM, V_INTER_SURF,
     V_SURF_NODE0, V_SURF_SEG0, V_SEG_NODE, V_SEG_CORNER,
+    V_JOINT_COORD, V_JOINT_TYPE, V_JOINT_FORCE, V_JOINT_MOMENT, V_JOINT_DRIFT_POS, V_JOINT_DRIFT_ANG, V_JOINT_WORK,
     V_COUNT
 };
 
@@ -221,6 +222,25 @@ static const var_spec var_table[V_COUNT] = {
                     "node of a segment surface", "body frame of the carrying body, from its centre of mass"},
     [V_SEG_CORNER] = {"segment_corners", NC_INT, 2, {D_SEGMENT, D_CORNER}, U_ONE, "nodes of a segment",
                       "0-based, local to the surface (add surface_first_node); a triangle repeats its third node"},
+    /* joints (IDA path) */
+    [V_JOINT_COORD] = {"joint", NC_INT, 1, {D_JOINT}, U_ONE, "joint identifier (/JOINT id)", "coordinate variable"},
+    [V_JOINT_TYPE] = {"joint_type", NC_STRING, 1, {D_JOINT}, U_ONE, "joint type",
+                      "SPHERICAL, REVOLUTE, DISTANCE, FIXED or PRISMATIC"},
+    [V_JOINT_FORCE] = {"joint_force", NC_DOUBLE, 3, {D_TIME, D_JOINT, D_VEC3}, U_FORCE,
+                       "reaction force of the joint on its first body (rbody_ID1)",
+                       "global frame; the second body (or the ground) takes the opposite force"},
+    [V_JOINT_MOMENT] = {"joint_moment", NC_DOUBLE, 3, {D_TIME, D_JOINT, D_VEC3}, U_MOMENT,
+                        "reaction moment of the joint on its first body, about its anchor point",
+                        "global frame"},
+    [V_JOINT_DRIFT_POS] = {"joint_drift_position", NC_DOUBLE, 2, {D_TIME, D_JOINT}, U_LENGTH,
+                           "largest residual of the joint's position constraints",
+                           "point, distance and slide rows: 0 on the exact solution"},
+    [V_JOINT_DRIFT_ANG] = {"joint_drift_angle", NC_DOUBLE, 2, {D_TIME, D_JOINT}, U_ONE,
+                           "largest residual of the joint's angle constraints",
+                           "dot products of axes that stay normal (radians for small values); 0 on the exact "
+                           "solution"},
+    [V_JOINT_WORK] = {"joint_work", NC_DOUBLE, 1, {D_TIME}, U_ENERGY, "work done by the joint reactions",
+                      "integral of the reactions' power; 0 for ideal joints (not part of energy_total)"},
 };
 
 /* Impacts table (dimension impact), defined and written at close. */
@@ -360,9 +380,11 @@ static void derive_units(rc_output *o, const rc_output_meta *meta)
     if (si) {
         snprintf(o->unit[U_FORCE], RC_OUT_UNIT_LEN, "N");
         snprintf(o->unit[U_ENERGY], RC_OUT_UNIT_LEN, "J");
+        snprintf(o->unit[U_MOMENT], RC_OUT_UNIT_LEN, "N m");
     } else {
         snprintf(o->unit[U_FORCE], RC_OUT_UNIT_LEN, "%s %s %s-2", m, l, t);
         snprintf(o->unit[U_ENERGY], RC_OUT_UNIT_LEN, "%s %s2 %s-2", m, l, t);
+        snprintf(o->unit[U_MOMENT], RC_OUT_UNIT_LEN, "%s %s2 %s-2", m, l, t);
     }
 }
 
@@ -417,7 +439,8 @@ static int var_skipped(const rc_output_meta *meta, int v)
     return (meta->ninter == 0 && (var_uses_dim(v, D_INTER) || var_uses_dim(v, D_SIDE))) ||
            (meta->ncoupling == 0 && var_uses_dim(v, D_COUPLING)) || (meta->nsurf == 0 && var_uses_dim(v, D_SURF)) ||
            (meta->nseg == 0 && (v == V_SURF_NODE0 || v == V_SURF_SEG0 || var_uses_dim(v, D_SEGNODE) ||
-                                var_uses_dim(v, D_SEGMENT)));
+                                var_uses_dim(v, D_SEGMENT))) ||
+           (meta->njoint == 0 && (var_uses_dim(v, D_JOINT) || v == V_JOINT_WORK));
 }
 
 /* Define the dimensions, the fixed variables with their attributes, and one
@@ -429,7 +452,7 @@ static rc_status define_vars(rc_output *o, const rc_output_meta *meta, rc_error 
     for (int d = 0; d < D_COUNT; d++) {
         if (((d == D_INTER || d == D_SIDE) && meta->ninter == 0) || (d == D_COUPLING && meta->ncoupling == 0) ||
             ((d == D_SURF || d == D_SPARAM) && meta->nsurf == 0) ||
-            ((d == D_SEGNODE || d == D_SEGMENT || d == D_CORNER) && meta->nseg == 0))
+            ((d == D_SEGNODE || d == D_SEGMENT || d == D_CORNER) && meta->nseg == 0) || (d == D_JOINT && meta->njoint == 0))
             continue;
         size_t len = (d == D_TIME || d == D_EVENT) ? NC_UNLIMITED : o->dimlen[d];
         NC_TRY(o->path, nc_def_dim(o->ncid, dim_name[d], len, &o->dimid[d]),
@@ -672,6 +695,11 @@ static rc_status write_static(rc_output *o, const rc_output_meta *meta, rc_error
         rc_status rc = put_strings(o, V_CPL_TYPE, (size_t)meta->ncoupling, meta->coupling_type, err);
         if (rc != RC_OK) return rc;
     }
+    if (meta->njoint > 0) {
+        NC_TRY(o->path, nc_put_var_int(o->ncid, o->var[V_JOINT_COORD], meta->joint_id), "writing joint");
+        rc_status rc = put_strings(o, V_JOINT_TYPE, (size_t)meta->njoint, meta->joint_type, err);
+        if (rc != RC_OK) return rc;
+    }
     return RC_OK;
 }
 
@@ -684,6 +712,7 @@ static rc_status check_meta(const rc_output_meta *meta, rc_error *err)
     if (!meta->body_id || !meta->body_fixed ||
         (meta->ninter > 0 && (!meta->inter_id || !meta->inter_type)) ||
         (meta->ncoupling > 0 && (!meta->coupling_id || !meta->coupling_type)) ||
+        meta->njoint < 0 || (meta->njoint > 0 && (!meta->joint_id || !meta->joint_type)) ||
         (meta->nenergy > 0 && (!meta->energy_name || !meta->energy_long)) || meta->nsurf < 0 ||
         (meta->nsurf > 0 && (!meta->surf_id || !meta->surf_kind || !meta->surf_body || !meta->surf_point ||
                              !meta->surf_normal || !meta->surf_radius || !meta->surf_param)))
@@ -845,7 +874,7 @@ rc_status rc_output_open(rc_output **out, const char *path, const rc_output_meta
     o->nenergy = meta->nenergy;
     const size_t len[D_COUNT] = {1, (size_t)meta->nbody, (size_t)meta->ninter, 3, 4, 1, (size_t)meta->ncoupling,
                                  (size_t)meta->nsurf, RC_OUT_SURF_NPARAM, 2, (size_t)meta->nseg_node,
-                                 (size_t)meta->nseg, 4};
+                                 (size_t)meta->nseg, 4, (size_t)meta->njoint};
     memcpy(o->dimlen, len, sizeof len);
     derive_units(o, meta);
     if (!alloc_buffer(o, meta)) {
@@ -980,6 +1009,11 @@ rc_status rc_output_frame(rc_output *o, const rc_frame *f, rc_error *err)
         [V_CPL_F1] = f->cpl_f1,
         [V_CPL_F2] = f->cpl_f2,
         [V_CPL_LOWEST] = f->cpl_lowest,
+        [V_JOINT_FORCE] = f->joint_force,
+        [V_JOINT_MOMENT] = f->joint_moment,
+        [V_JOINT_DRIFT_POS] = f->joint_drift_pos,
+        [V_JOINT_DRIFT_ANG] = f->joint_drift_ang,
+        [V_JOINT_WORK] = f->joint_work,
     };
     if (o->broken || o->stopped) RC_RAISE(err, RC_EIO, "%s: an earlier write failed or found no room", o->path);
     /* check everything before copying anything: a record is whole or absent */

@@ -62,6 +62,10 @@ typedef struct rc_output_meta {
     const int *surf_first_node, *surf_first_seg; /* [nsurf] */
     const double *seg_node;    /* [nseg_node*3] [m]                        */
     const int *seg_corner;     /* [nseg*4]                                 */
+    /* joints (0: none, no joint variables in the file) */
+    int njoint;
+    const int *joint_id;       /* [njoint] /JOINT ids */
+    const char *const *joint_type; /* [njoint] "SPHERICAL", "REVOLUTE", ... */
 } rc_output_meta;
 
 /* Extra parameters of a surface in the file (variable surface_parameters). */
@@ -96,6 +100,12 @@ typedef struct rc_frame {
     const double *cpl_f2;        /* [ncoupling*3] force on end 2, global [N] */
     const double *cpl_lowest;    /* [ncoupling] catenary: height of its lowest
                                     point along -g (NaN for springs) [m] */
+    /* joints (read only when the meta has njoint > 0) */
+    const double *joint_force;   /* [njoint*3] reaction on the first body, global [N] */
+    const double *joint_moment;  /* [njoint*3] its moment about the anchor, global [N m] */
+    const double *joint_drift_pos; /* [njoint] position constraint residual [m] */
+    const double *joint_drift_ang; /* [njoint] angle constraint residual [-] */
+    const double *joint_work;    /* [1] work of the reactions [J] */
 } rc_frame;
 
 /* Create the file (overwrites). RC_EIO with the path and netCDF message. */

@@ -28,6 +28,7 @@
 
 #include "model/coupling.h"
 #include "model/coupling_contact.h"
+#include "model/joint.h"
 #include "base/error.h"
 #include "engine/events.h"
 #include "model/model.h"
@@ -37,19 +38,11 @@
 #include "solver/impacts.h"
 #include "solver/nvfast.h"
 #include "solver/solver.h"
+#include "solver/integrator.h"
 
 /* A jump in ydot whose effect over one step, relative to the error weight,
  * exceeds this fraction triggers a restart after an event [-]. */
 #define RC_REINIT_JUMP 0.1
-/* Event accumulation (Zeno): more than RC_ZENO_MAX consecutive events of one
- * element, each within RC_ZENO_REL * max(t, dtout) of the previous, end the
- * run with a message instead of stalling [-]. */
-#define RC_ZENO_MAX 200
-#define RC_ZENO_REL 1e-7
-/* Events kept per root return (more are applied but not itemised). */
-#define RC_MAX_EV 64
-/* Progress in a log (stderr not a terminal): a line every RC_LOG_EVERY s. */
-#define RC_LOG_EVERY 10.0
 
 typedef struct run_ctx {
     const rc_model *m;
@@ -180,7 +173,7 @@ static int cmp_double(const void *a, const void *b)
  * (the end of an imposed velocity, /IMPVEL Tstop), inside (0, tend), sorted,
  * distinct. CVODE is stopped exactly there (CVodeSetStopTime) and restarted.
  * Returns the count; *bp is allocated (free it). */
-static int time_breakpoints(const rc_model *m, double tend, double **bp)
+int time_breakpoints(const rc_model *m, double tend, double **bp)
 {
     const rc_imposed *p = m->imp;
     int n = 0, cap = p ? p->nt + p->nr : 0;
@@ -198,7 +191,7 @@ static int time_breakpoints(const rc_model *m, double tend, double **bp)
 }
 
 /* Only the crossing that changes a mode is a root (docs/theory.md 5). */
-static void root_directions(const rc_model *m, const rc_data *d, int *dir)
+void root_directions(const rc_model *m, const rc_data *d, int *dir)
 {
     for (int i = 0; i < m->ninter; i++) {
         int *r = dir + RC_ROOTS_PER_INTER * i;
@@ -225,19 +218,8 @@ static int set_root_directions(const rc_model *m, const rc_data *d, void *cv, in
     return CVodeSetRootDirection(cv, dir);
 }
 
-/* Where the events go: the events table of the output file (NULL: none)
- * and the caller's callback (rc_run_options.on_event, NULL: none), which
- * may ask to stop (`stop` set, with the event in `why`). */
-typedef struct ev_sink {
-    rc_output *out;
-    rc_event_fn fn;
-    void *user;
-    int stop;
-    char why[300];
-} ev_sink;
-
 /* One event to the sink; RC_OK or the output's error. */
-static rc_status sink_event(ev_sink *k, double t, const char *kind, const char *element, const double v[3],
+rc_status sink_event(ev_sink *k, double t, const char *kind, const char *element, const double v[3],
                             rc_error *err)
 {
     rc_status st = RC_OK;
@@ -255,7 +237,7 @@ static rc_status sink_event(ev_sink *k, double t, const char *kind, const char *
 /* Append event `ev` at (t, y) to the events table with its interface's
  * penetration P [m], approach speed dP/dt [m/s] and normal force [N], in the
  * mode after the event. */
-static rc_status write_event(const rc_model *m, const rc_data *d, ev_sink *o, double t, const double *y,
+rc_status write_event(const rc_model *m, const rc_data *d, ev_sink *o, double t, const double *y,
                              const rc_event *ev, rc_error *err)
 {
     const int i = ev->inter;
@@ -271,7 +253,7 @@ static rc_status write_event(const rc_model *m, const rc_data *d, ev_sink *o, do
  * the state in the current modes is computed first, for the force rates.
  * Writes the events; returns their number (*jumped is set when history
  * states were reset). */
-static int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double *f, ev_sink *out,
+int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double *f, ev_sink *out,
                             rc_impacts *im, long *nevents, int *jumped, rc_status *st, rc_error *err)
 {
     int total = 0;
@@ -336,7 +318,7 @@ static int refine_flat_roots(const rc_model *m, rc_data *d, void *cv, double t, 
  * penetration of two slowly separating bodies) makes CVODE stop with "close
  * roots" on the next call; after a restart CVODE instead deactivates it until
  * it moves away from zero. */
-static int root_on_zero(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
+int root_on_zero(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
 {
     rc_assemble_roots(m, d, t, y, g);
     for (int k = 0; k < rc_root_count(m); k++)
@@ -344,7 +326,7 @@ static int root_on_zero(const rc_model *m, const rc_data *d, double t, const dou
     return 0;
 }
 
-static double wall_now(void)
+double wall_now(void)
 {
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
@@ -364,22 +346,14 @@ static void add_stats(void *cv, rc_stats *s)
     if (CVodeGetNumGEvals(cv, &v) == CV_SUCCESS) s->root_evals += v;
 }
 
-/* Output buffers for one record. */
-typedef struct frame_buf {
-    double *pos, *quat, *vel, *omega, *pen, *fload, *fdamp, *fn, *point, *normal, *ffric, *vslip;
-    int *mode, *slip;
-    double energy[RC_NENERGY];
-    double *cpl; /* [9 ncoupling] coupling values (rc_cpl_frame) */
-} frame_buf;
-
-static void frame_free(frame_buf *f)
+void frame_free(frame_buf *f)
 {
     void *p[] = {f->pos, f->quat, f->vel, f->omega, f->pen, f->fload, f->fdamp, f->fn, f->point, f->normal, f->mode,
-                 f->cpl, f->ffric, f->vslip, f->slip};
+                 f->cpl, f->ffric, f->vslip, f->slip, f->jnt};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
 }
 
-static int frame_alloc(const rc_model *m, frame_buf *f)
+int frame_alloc(const rc_model *m, frame_buf *f)
 {
     memset(f, 0, sizeof *f);
     size_t nb = (size_t)m->nbody + 1, ni = (size_t)m->ninter + 1;
@@ -398,12 +372,13 @@ static int frame_alloc(const rc_model *m, frame_buf *f)
     f->vslip = malloc(ni * sizeof(double));
     f->slip = malloc(ni * sizeof(int));
     f->cpl = malloc((9 * (size_t)m->cpl->n + 1) * sizeof(double));
-    return f->pos && f->quat && f->vel && f->omega && f->pen && f->fload && f->fdamp && f->fn && f->point &&
+    f->jnt = malloc((8 * (size_t)(m->jnt ? m->jnt->n : 0) + 1) * sizeof(double));
+    return f->jnt && f->pos && f->quat && f->vel && f->omega && f->pen && f->fload && f->fdamp && f->fn && f->point &&
            f->normal && f->mode && f->cpl && f->ffric && f->vslip && f->slip;
 }
 
 /* Fill and write one record at (t, y). */
-static rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_buf *f, double t,
+rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_buf *f, double t,
                              const double *y, int at_event, rc_error *err)
 {
     for (int b = 0; b < m->nbody; b++) {
@@ -444,6 +419,15 @@ static rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, 
                    .inter_mode = f->mode, .inter_ffric = f->ffric, .inter_vslip = f->vslip, .inter_slip = f->slip,
                    .energy = f->energy, .cpl_force = f->cpl, .cpl_length = f->cpl + nc, .cpl_f1 = f->cpl + 2 * nc,
                    .cpl_f2 = f->cpl + 5 * nc, .cpl_lowest = f->cpl + 8 * nc};
+    if (m->jnt) { /* joints: y is the IDA backend's whole vector (model/joint.h) */
+        const int nj = m->jnt->n;
+        rc_jnt_frame(m, y, f->jnt, f->jnt + 3 * nj, f->jnt + 6 * nj, f->jnt + 7 * nj, f->jnt + 8 * nj);
+        fr.joint_force = f->jnt;
+        fr.joint_moment = f->jnt + 3 * nj;
+        fr.joint_drift_pos = f->jnt + 6 * nj;
+        fr.joint_drift_ang = f->jnt + 7 * nj;
+        fr.joint_work = f->jnt + 8 * nj;
+    }
     return rc_output_frame(o, &fr, err);
 }
 
@@ -521,7 +505,8 @@ static rc_status outputs_before(void *cv, const rc_model *m, const rc_data *d, r
 _Static_assert(RC_SURF_NEXT == RC_OUT_SURF_NPARAM, "surface parameters: model and file disagree");
 static const char *const surf_kind_name[] = {"", "PLANE", "SPHERE", "CYLINDER", "BOX", "SEGMENTS"};
 
-static rc_status open_output(const rc_model *m, const char *path, const char *note, rc_output **o, rc_error *err)
+rc_status open_output(const rc_model *m, const char *path, const char *note, rc_output **o, rc_error *err,
+                      const char *integrator)
 {
     *o = NULL;
     if (!path) return RC_OK;
@@ -529,7 +514,7 @@ static rc_status open_output(const rc_model *m, const char *path, const char *no
     if (!types) RC_RAISE(err, RC_ENOMEM, "out of memory");
     for (int i = 0; i < m->ninter; i++) types[i] = m->inter_law[i] == RC_LAW_POWER ? "POWER" : "TYPE6";
     rc_output_meta meta = {m->title, m->case_path, m->checksum, m->unit_mass, m->unit_length, m->unit_time,
-                           "CVODE BDF, Newton, KLU sparse direct, rootfinding", m->rtol, m->atol_pos,
+                           integrator, m->rtol, m->atol_pos,
                            m->atol_quat, m->atol_vel, m->atol_omega, m->atol_energy, m->nbody, m->body_id,
                            m->body_fixed, m->ninter, m->inter_id, types, RC_NENERGY, energy_name, energy_long,
                            m->cpl->n, m->cpl->id, m->cpl->type, NULL, .nfile = 0};
@@ -584,6 +569,18 @@ static rc_status open_output(const rc_model *m, const char *path, const char *no
         meta.seg_node = m->surf_node;
         meta.seg_corner = m->surf_seg;
     }
+    const int njt = m->jnt ? m->jnt->n : 0;
+    const char **jtype = malloc(((size_t)njt + 1) * sizeof *jtype);
+    if (!jtype) {
+        free(types);
+        free(kinds);
+        free(isurf);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    for (int j = 0; j < njt; j++) jtype[j] = rc_jnt_type_name(m, j);
+    meta.njoint = njt;
+    meta.joint_id = m->jnt ? m->jnt->id : NULL;
+    meta.joint_type = jtype;
     char evrec[160];
     const int full = rc_event_records(m);
     if (m->ev_state == 0)
@@ -595,6 +592,7 @@ static rc_status open_output(const rc_model *m, const char *path, const char *no
                  full ? "full-state record at every event" : "events table only", m->ev_state);
     meta.event_records = evrec;
     rc_status st = rc_output_open(o, path, &meta, err);
+    free(jtype);
     free(types);
     free(kinds);
     free(isurf);
@@ -643,7 +641,7 @@ static int needs_restart(const rc_model *m, rc_data *d, void *cv, int *old_mode,
 /* Progress of the integration on stderr: one line rewritten on a terminal,
  * whole lines in a log. The time remaining is estimated from the rate of
  * simulated time over the wall time so far. */
-static void progress(double tend, const rc_stats *s, double t, long steps, double t0, int tty)
+void progress_line(double tend, const rc_stats *s, double t, long steps, double t0, int tty)
 {
     const double wall = wall_now() - t0;
     char left[64] = "";
@@ -835,7 +833,8 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
     rc_initial_state(m, yd);
     memcpy(N_VGetArrayPointer(av), m->atol, (size_t)m->ny * sizeof(double));
     rc_modes_init(m, d, t, yd);
-    if ((st = open_output(m, opt ? opt->output_path : NULL, note, &out, err))) goto done;
+    if ((st = open_output(m, opt ? opt->output_path : NULL, note, &out, err,
+                          "CVODE BDF, Newton, KLU sparse direct, rootfinding"))) goto done;
     sink.out = out;
     {
         int jmp = 0;
@@ -1092,7 +1091,7 @@ static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_paus
         if (show && wall_now() - last_progress > (tty ? 0.5 : RC_LOG_EVERY)) {
             long nst = 0;
             CVodeGetNumSteps(cv, &nst);
-            progress(tend, &s, t, s.steps + nst, wall0, tty);
+            progress_line(tend, &s, t, s.steps + nst, wall0, tty);
             last_progress = wall_now();
         }
     }

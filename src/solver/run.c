@@ -10,7 +10,7 @@
 #include "solver/solver.h"
 
 /* The backends, by method. */
-static const rc_solver *const rc_solvers[] = {&rc_solver_cvode};
+static const rc_solver *const rc_solvers[] = {&rc_solver_cvode, &rc_solver_ida};
 
 rc_status rc_run_paused(const rc_model *m, const rc_run_options *opt, rc_pause *pause, rc_stats *stats,
                         rc_error *err)

@@ -8,9 +8,9 @@
  *
  * rc_run (run.c, the public entry of include/ricochet/ricochet.h) picks the
  * backend whose method is the model's /SOLVER Method and calls its run.
- * Backends: rc_solver_cvode (cvode.c, BDF + KLU). A coming IDA backend
- * (Method 2, which the case reader still rejects as "not supported yet")
- * adds ida.c defining rc_solver_ida and one line to the table of run.c.
+ * Backends: rc_solver_cvode (cvode.c, BDF + KLU, Method 1) and
+ * rc_solver_ida (ida.c, the residual form on IDA, Method 2; the one that
+ * runs joints). What they share is in integrator.h.
  */
 #ifndef RC_SOLVER_H
 #define RC_SOLVER_H
@@ -49,5 +49,6 @@ rc_status rc_run_paused(const rc_model *m, const rc_run_options *opt, rc_pause *
 void rc_cvode_versions(FILE *f);
 
 extern const rc_solver rc_solver_cvode; /* cvode.c */
+extern const rc_solver rc_solver_ida;   /* ida.c */
 
 #endif

@@ -115,6 +115,7 @@ GR, BC1, BC2, IV = '/GRAV/1', '/BCS/1', '/BCS/2', '/IMPVEL/1'
 SPR, CAT = '/COUPLING/SPRING/1', '/COUPLING/CATENARY/2'
 P1, P2, GP = '/PART/1', '/PART/2', '/GRPART/PART/1'
 FR, FO = '/FRICTION/1', '/FRIC_ORIENT/1'
+JT = '/JOINT/REVOLUTE/1'
 RUN, SOL = '/RUN', '/SOLVER'
 
 # ---- /BEGIN
@@ -294,7 +295,15 @@ T('run_dtout_negative', RUN, 'field Dt_out', at(RUN, 1, 21, 40, '-0.01'))
 T('run_ev_state', RUN, 'field Ev_state', at(RUN, 1, 41, 50, '3'))
 T('run_twice', RUN, 'only one such card', before_end([RUN, '                   2']))
 T('run_missing', '-', 'no /RUN card', chain(delete(RUN, 0, 2), lambda l: (l, hidx(l, '/END'), {})))
-T('solver_method', SOL, 'field Method', at(SOL, 1, 1, 10, '2'))
+T('solver_method', SOL, 'field Method', at(SOL, 1, 1, 10, '3'))
+# ---- /JOINT
+T('joint_body_same', JT, 'field rbody_ID2', at(JT, 2, 11, 20, '4'))
+T('joint_body_missing', JT, 'field rbody_ID1', at(JT, 2, 1, 10, '9'))
+T('joint_body1_ground', JT, 'field rbody_ID1', at(JT, 2, 1, 10, '0'))
+T('joint_point_text', JT, 'field Y', at(JT, 3, 21, 40, 'x'))
+T('joint_axis_zero', JT, 'Ax Ay Az', at(JT, 4, line='                   0                   0                   0'))
+T('joint_missing_line', JT, 'expected 3 data lines', delete(JT, 4))
+T('joint_method_cvode', SOL, 'field Method', at(SOL, 1, 1, 10, '1'))
 T('solver_max_order', SOL, 'field Max_order', at(SOL, 1, 11, 20, '6'))
 T('solver_rtol_negative', SOL, 'field Rtol', at(SOL, 1, 31, 50, '-1e-6'))
 T('solver_atol_negative', SOL, 'field Atol_pos', at(SOL, 2, 1, 20, '-1'))

@@ -8,6 +8,9 @@ default solver settings: run() and run_file() remove the deck's /SOLVER card
 before running (unless called with keep_solver=True, for the runs of a
 convergence study over rtol), and check() prefixes each check name with
 "default:" so that the two modes' lines are told apart.
+
+RICOCHET_VAL_METHOD=ida runs every deck on the IDA path (ricochet run
+--method ida) and prefixes the check names with "ida:".
 """
 import os
 import subprocess
@@ -22,7 +25,8 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 RICOCHET = os.environ.get("RICOCHET", os.path.join(ROOT, "build", "ricochet"))
 FAILED = []
 DEFAULTS = os.environ.get("RICOCHET_VAL_SOLVER", "") == "default"
-PREFIX = "default:" if DEFAULTS else ""
+METHOD = os.environ.get("RICOCHET_VAL_METHOD", "")
+PREFIX = ("default:" if DEFAULTS else "") + (METHOD + ":" if METHOD else "")
 
 
 def strip_solver(text):
@@ -38,7 +42,8 @@ def strip_solver(text):
 
 
 def _execute(case, out):
-    p = subprocess.run([RICOCHET, "run", case, "-o", out, "-q"], capture_output=True, text=True)
+    cmd = [RICOCHET, "run", case, "-o", out, "-q"] + (["--method", METHOD] if METHOD else [])
+    p = subprocess.run(cmd, capture_output=True, text=True)
     if p.returncode != 0:
         raise RuntimeError(f"ricochet failed ({p.returncode}): {p.stderr.strip()}")
     return out

@@ -111,9 +111,11 @@ def main():
         ftb, vsb, fnb, fsb, xb = last(ref)
         dx = float(np.max(np.abs(x - xb)))
         e = abs(ft - ftb) / ftb + abs(fn - fnb) / fnb
-        rcval.check(f"pw_roller_mesh.{k + 1}.vs_box", e < 1e-9 and dx < 1e-12,
+        # the two runs differ by the integrators' error (the default rtol 1e-8
+        # and the contact-scaled absolute tolerances), on either backend
+        rcval.check(f"pw_roller_mesh.{k + 1}.vs_box", e < 1e-7 and dx < 1e-10,
                     f"against the analytic-box run: traction {ftb:.10f} N, normal {fnb:.10f} N (sum of rel. differences "
-                    f"{e:.1e} < 1e-9); block path max |x_mesh - x_box| = {dx:.1e} m (< 1e-12)")
+                    f"{e:.1e} < 1e-7); block path max |x_mesh - x_box| = {dx:.1e} m (< 1e-10)")
         en = r.energy
         res = abs(en["energy_total"][-1] - en["energy_total"][0]) / abs(en["energy_imposed"][-1])
         rcval.check(f"pw_roller_mesh.ledger_{k + 1}", res < 1e-6,

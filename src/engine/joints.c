@@ -409,6 +409,21 @@ int rc_jnt_dependent(const rc_model *m, rc_jnt_work *w, const double *Y)
     return bad;
 }
 
+/* A x = b in place (w->b) for A = G M^-1 G^T at Y (build_A), by GSL's LU
+ * of the leading nr x nr block; 0, or -1 when A is singular. */
+static int solve_A(const rc_model *m, rc_jnt_work *w, const double *Y, int nr)
+{
+    build_A(m, w, Y);
+    if (lu_leading(w, nr, nr)) return -1;
+    gsl_matrix_view A = gsl_matrix_view_array(w->A, (size_t)nr, (size_t)nr);
+    gsl_vector_view b = gsl_vector_view_array(w->b, (size_t)nr);
+    gsl_permutation p = {(size_t)nr, w->perm};
+    gsl_error_handler_t *old = gsl_set_error_handler_off();
+    const int bad = gsl_linalg_LU_svx(&A.matrix, &p, &b.vector);
+    gsl_set_error_handler(old);
+    return bad ? -1 : 0;
+}
+
 int rc_jnt_project_velocities(const rc_model *m, rc_jnt_work *w, double *Y)
 {
     const rc_joints *J = m->jnt;
@@ -423,15 +438,7 @@ int rc_jnt_project_velocities(const rc_model *m, rc_jnt_work *w, double *Y)
         jnt_eval_r(m, j, ya, yb, lam, mu, NULL, NULL, cv, cp, &pw);
         for (int r = 0; r < J->nrow[j]; r++) w->b[J->radr[j] + r] = -cv[r];
     }
-    build_A(m, w, Y);
-    if (lu_leading(w, nr, nr)) return -1;
-    gsl_matrix_view A = gsl_matrix_view_array(w->A, (size_t)nr, (size_t)nr);
-    gsl_vector_view b = gsl_vector_view_array(w->b, (size_t)nr);
-    gsl_permutation p = {(size_t)nr, w->perm};
-    gsl_error_handler_t *old = gsl_set_error_handler_off();
-    const int bad = gsl_linalg_LU_svx(&A.matrix, &p, &b.vector);
-    gsl_set_error_handler(old);
-    if (bad) return -1;
+    if (solve_A(m, w, Y, nr)) return -1;
     memset(w->z, 0, (size_t)ny * sizeof(double));
     for (int j = 0; j < J->n; j++)
         for (int r = 0; r < J->nrow[j]; r++) add_unit_terms(m, j, r, Y, -w->b[J->radr[j] + r], w->z);
@@ -451,17 +458,7 @@ int rc_jnt_consistent(const rc_model *m, rc_jnt_work *w, double *Y, double *Yp)
         cv_along(m, j, Y, Yp, dcv);
         for (int r = 0; r < J->nrow[j]; r++) w->b[J->radr[j] + r] = -dcv[r];
     }
-    build_A(m, w, Y);
-    if (lu_leading(w, nr, nr)) return -1;
-    {
-        gsl_matrix_view A = gsl_matrix_view_array(w->A, (size_t)nr, (size_t)nr);
-        gsl_vector_view b = gsl_vector_view_array(w->b, (size_t)nr);
-        gsl_permutation p = {(size_t)nr, w->perm};
-        gsl_error_handler_t *old = gsl_set_error_handler_off();
-        const int bad = gsl_linalg_LU_svx(&A.matrix, &p, &b.vector);
-        gsl_set_error_handler(old);
-        if (bad) return -1;
-    }
+    if (solve_A(m, w, Y, nr)) return -1;
     for (int k = 0; k < nr; k++) {
         Yp[ny + k] = w->b[k];  /* lambda; Lambda keeps the impulse so far */
         Yp[ny + nr + k] = 0.0; /* mu = 0; nu keeps the projection so far */

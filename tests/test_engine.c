@@ -159,7 +159,9 @@ static void entropy_state(const rc_model *m, double *y)
 }
 
 
-static void jacobian_check(int with_cards)
+/* The two-interface model of build_case (with the /FRICTION cards), its
+ * run data and the generic state of entropy_state; NULL on failure. */
+static rc_model *entropy_model(int with_cards, rc_data **d, double **y)
 {
     rc_case c;
     build_case(&c);
@@ -167,10 +169,19 @@ static void jacobian_check(int with_cards)
     rc_model *m = NULL;
     rc_error e;
     ENSURE(rc_model_compile(&c, &m, &e) == RC_OK);
+    if (!m) return NULL;
+    *d = rc_data_new(m);
+    *y = calloc((size_t)m->ny, sizeof(double));
+    entropy_state(m, *y);
+    return m;
+}
+
+static void jacobian_check(int with_cards)
+{
+    rc_data *d = NULL;
+    double *y = NULL;
+    rc_model *m = entropy_model(with_cards, &d, &y);
     if (!m) return;
-    rc_data *d = rc_data_new(m);
-    double *y = calloc((size_t)m->ny, sizeof(double));
-    entropy_state(m, y);
     for (int i = 0; i < m->ninter; i++) {
         rc_inter_report r;
         rc_inter_report_eval(m, i, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
@@ -210,17 +221,11 @@ static void test_engine_jacobian_matches_finite_differences(void) { jacobian_che
  * modes at the same state; the other interface's block is untouched. */
 static void test_engine_jacobian_refresh_after_mode_change(void)
 {
-    rc_case c;
-    build_case(&c);
-    add_friction_cards(&c);
-    rc_model *m = NULL;
-    rc_error e;
-    ENSURE(rc_model_compile(&c, &m, &e) == RC_OK);
+    rc_data *d = NULL;
+    double *y = NULL;
+    rc_model *m = entropy_model(1, &d, &y);
     if (!m) return;
-    rc_data *d = rc_data_new(m);
-    double *y = calloc((size_t)m->ny, sizeof(double));
     double *val = calloc((size_t)m->nnz + 1, sizeof(double)), *ref = calloc((size_t)m->nnz + 1, sizeof(double));
-    entropy_state(m, y);
     ENSURE(d->jcache != NULL);
     ENSURE(rc_jac_refresh_inter(m, d, 0, y, val) == -1); /* nothing assembled yet */
     const int modes[3] = {RC_MODE_CLOSED, RC_MODE_RELEASED, RC_MODE_INACTIVE};

@@ -1,7 +1,7 @@
 /*
- * Coupling tests (SPEC 8): the cards and their input errors, the compiled
+ * Coupling tests (docs/theory.md 8): the cards and their input errors, the compiled
  * model, the spring forms against each other and against the integral of
- * the stiffness table, the catenary solver (equations of SPEC 8 in their
+ * the stiffness table, the catenary solver (equations of docs/theory.md 8 in their
  * (c, u1, u2) form, every regime, warm against cold starts, the
  * implicit-function derivatives against finite differences of the solver,
  * the vertical limit, a failure that is recoverable), and the whole
@@ -330,7 +330,7 @@ static void one_line_init(one_line *o, double leq, double ea)
     o->p.ea = &o->ea;
 }
 
-/* Residual of SPEC 8's equations in (c, u1, u2) for a solution (relative
+/* Residual of the equations of docs/theory.md 8 in (c, u1, u2) for a solution (relative
  * to L_eq): x(u2) - x(u1) = X, y(u2) - y(u1) = Y, c = w L/(sinh u2 - sinh u1). */
 static double spec_residual(const rc_cat_sol *s, double leq, double ea)
 {

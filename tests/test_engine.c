@@ -303,7 +303,7 @@ static void test_engine_renard_continuity(void)
             ENSURE_NEAR(hi, at, 0, 1e-9);
             ENSURE_NEAR(sl, sr, 0, 1e-6);
         }
-        /* the values of SPEC 6: mu_s at rest, mu_max at V_cr1, mu_min at V_cr2, -> mu_d */
+        /* the values of docs/theory.md 6: mu_s at rest, mu_max at V_cr1, mu_min at V_cr2, -> mu_d */
         ENSURE_NEAR(rc_friction_mu(m, 1, dir, 0, 0.0, 731.0), cs[0], 1e-15, 0);
         ENSURE_NEAR(rc_friction_mu(m, 1, dir, 0, cs[4], 731.0), cs[2], 1e-15, 0);
         ENSURE_NEAR(rc_friction_mu(m, 1, dir, 0, cs[5], 731.0), cs[3], 1e-15, 0);

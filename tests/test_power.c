@@ -51,7 +51,7 @@ static void test_power_step5_is_c2(void)
     ENSURE_NEAR(rc_step5_d(-1.0, 0.3, 2.0, 1.7, 5.0), 2.0, 0, 0);
     ENSURE_NEAR(rc_step5_d(9.0, 0.3, 2.0, 1.7, 5.0), 5.0, 0, 0);
     ENSURE_NEAR(rc_step5_d(1.0, 0.3, 2.0, 1.7, 5.0), 3.5, 1e-15, 0);
-    /* mu(v) of SPEC 7, with mu_d below and above mu_s */
+    /* mu(v) of docs/theory.md 9, with mu_d below and above mu_s */
     const double sets[2][4] = {{0.37, 0.013, 0.21, 0.11}, {0.23, 0.07, 0.41, 0.9}};
     for (int s = 0; s < 2; s++) {
         const double *p = sets[s];

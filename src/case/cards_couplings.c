@@ -1,7 +1,7 @@
 /*
- * Coupling cards (ricochet cards for SPEC 8, in the Radioss block style):
- *   /COUPLING/SPRING/cpl_ID     spring-damper [CPL-SPRING]
- *   /COUPLING/CATENARY/cpl_ID   elastic catenary [CPL-CAT]
+ * Coupling cards (ricochet cards for docs/theory.md 8, in the Radioss block style):
+ *   /COUPLING/SPRING/cpl_ID     spring-damper
+ *   /COUPLING/CATENARY/cpl_ID   elastic catenary
  * Layouts as field tables (case_internal.h), documented in
  * docs/case-format.md. References (bodies, functions) are resolved by the
  * compiler (model/coupling.c).

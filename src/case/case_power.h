@@ -1,5 +1,5 @@
 /*
- * Parsed cards of the power-law contact and the roller (SPEC 7, 3, 4):
+ * Parsed cards of the power-law contact and the roller (docs/theory.md 9):
  * /INTER/POWER (ricochet card) and /IMPVEL (Radioss layout), read by
  * cards_interfaces.c and cards_loads.c (/SURF/CYL and /SURF/BOX, in
  * cards_surfaces.c, fill rc_case_surf), compiled by model/power.c and

@@ -1,13 +1,13 @@
 /*
  * step5 and the step5 friction coefficient of the power-law contact
- * (SPEC 7 [PW-FRIC], docs/theory.md 9.4).
+ * (docs/theory.md 9.4).
  *
  * step5(x, x0, h0, x1, h1) is the quintic step of MSC ADAMS and RecurDyn:
  *   h0                                      x <= x0
  *   h0 + (h1 - h0) D^3 (10 - 15 D + 6 D^2)  x0 < x < x1, D = (x - x0)/(x1 - x0)
  *   h1                                      x >= x1
  * Its first and second derivatives vanish at x0 and x1 (the cubic step
- * 3 D^2 - 2 D^3 is only C1): step5 is C2, as SPEC 7 asks.
+ * 3 D^2 - 2 D^3 is only C1): step5 is C2 (docs/theory.md 9.4).
  *
  * Friction coefficient against the sliding speed s = |v| >= 0:
  *   s <  v_s: mu = step5(s, -v_s, -mu_s, v_s, mu_s)

@@ -1,6 +1,6 @@
 /*
- * Body couplings (SPEC 8, STAR-CCM+ style): spring-dampers [CPL-SPRING] and
- * elastic catenaries [CPL-CAT] between two body points, or a body point and
+ * Body couplings (docs/theory.md 8, STAR-CCM+ style): spring-dampers and
+ * elastic catenaries between two body points, or a body point and
  * a point fixed in space. docs/theory.md section "Couplings" has the
  * equations as implemented.
  *
@@ -30,7 +30,7 @@
 /* Coupling kinds. */
 typedef enum { RC_CPL_SPRING = 1, RC_CPL_CATENARY = 2, RC_CPL_CONTACT = 3 } rc_cpl_kind;
 
-/* Stiffness forms of a spring-damper (SPEC 8 [CPL-SPRING], card field Iform). */
+/* Stiffness forms of a spring-damper (docs/theory.md 8, card field Iform). */
 typedef enum {
     RC_KEFF_CONST = 1, /* k_eff = k                                        */
     RC_KEFF_POLY = 2,  /* k_eff = a + b (x - x0) + c (x - x0)^2             */
@@ -97,7 +97,7 @@ typedef struct rc_cpl_report {
     double force;        /* spring: f = f_el + f_damp (> 0 pulls the ends
                             together); catenary: tension at end 1 [N]       */
     double f1[3], f2[3]; /* force applied to end 1 and to end 2, global [N]  */
-    double c, u1, u2;    /* catenary parameters (SPEC 8); 0 for springs      */
+    double c, u1, u2;    /* catenary parameters (docs/theory.md 8); 0 for springs      */
     double lowest;       /* catenary: height of its lowest point along -g,
                             from the origin [m] (an end when the line does
                             not sag below it); NaN for springs              */

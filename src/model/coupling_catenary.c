@@ -1,5 +1,5 @@
 /*
- * Elastic catenary [CPL-CAT]: solution of the catenary equations of SPEC 8
+ * Elastic catenary: solution of the catenary equations of docs/theory.md 8
  * for the end tensions by GSL multiroot solvers with the analytic Jacobian:
  * Newton with line search (gnewton, quadratic) from the last solution (warm
  * start), else Powell's hybrid method (hybridsj, robust) from a cold guess;
@@ -8,7 +8,7 @@
  * implicit-function theorem. docs/theory.md, "Couplings", derives every
  * formula used here.
  *
- * SPEC 8 parametrises the line by (c, u1, u2). With H = c and the vertical
+ * docs/theory.md 8 parametrises the line by (c, u1, u2). With H = c and the vertical
  * tension components V_i = c sinh u_i, its third equation,
  * c (sinh u2 - sinh u1) = lambda0 g L_eq, is linear: V2 = V1 + w L_eq
  * (w = lambda0 g). It is eliminated exactly, and the two span equations

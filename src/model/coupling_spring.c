@@ -1,11 +1,11 @@
 /*
- * Spring-damper stiffness form 4 [CPL-SPRING]: the elastic force from a
+ * Spring-damper stiffness form 4: the elastic force from a
  * tabulated stiffness k(x),
  *
  *     f_e(x) = f_r + integral from x_r to x of k        (x_r, f_r given)
  *     f_e(x) = integral from x0 to x of k               (otherwise)
  *
- * so that k_eff(x) = f_e(x) / (x - x0) as SPEC 8 writes it, without the
+ * so that k_eff(x) = f_e(x) / (x - x0) as docs/theory.md 8 writes it, without the
  * division. The integral is built once, at compile time: the cumulative
  * integral K(x_i) from the first abscissa to each abscissa, each segment by
  * GSL adaptive quadrature (gsl_integration_qag) of the interpolated curve.

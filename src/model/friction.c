@@ -1,5 +1,5 @@
 /*
- * /FRICTION over the interfaces (SPEC 6, docs/theory.md 6): which part each
+ * /FRICTION over the interfaces (docs/theory.md 6): which part each
  * surface belongs to, which card and which coefficient set govern each
  * interface, the orthotropy direction, the filter time constant, the
  * pressure area and the reduced mass. Runs after the TYPE6 interfaces are

@@ -1,6 +1,6 @@
 /*
  * Friction of one interface: TYPE6's own (Sfric + Fric f_ff f_fv) or a
- * /FRICTION law that overrides it (SPEC 6). One parameter record per
+ * /FRICTION law that overrides it (docs/theory.md 6). One parameter record per
  * interface, resolved at compile time (model/friction.c); the kernel is in
  * kernels.inc (friction()). docs/theory.md 3.5 and 6.
  */

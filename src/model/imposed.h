@@ -1,5 +1,5 @@
 /*
- * Imposed velocities (/IMPVEL, SPEC 3; docs/theory.md 1.1): a velocity
+ * Imposed velocities (/IMPVEL, docs/theory.md 1.1): a velocity
  * component of a body follows Fscale f(t / Ascale) for t <= Tstop.
  *
  * Like the held DOFs of /BCS, an imposed component is a velocity state

@@ -1,6 +1,5 @@
 /*
- * Power-law contact with splines, RecurDyn style (SPEC 7 [PW-FN], [PW-RDF];
- * docs/theory.md 9). A second normal law of the interface element: an
+ * Power-law contact with splines, RecurDyn style (docs/theory.md 9). A second normal law of the interface element: an
  * interface has inter_law RC_LAW_TYPE6 or RC_LAW_POWER, and a power-law
  * interface keeps the modes, events, energy states, output and /FRICTION of
  * the element (kernels.inc, type6()).

@@ -259,6 +259,17 @@ sed 's/^                   1              0.0001$/                 0.3          
 n=$(ls "$tmp/vtk" 2>/dev/null | grep -c '\.vtp$')
 if [ -f "$tmp/vtk/short.pvd" ] && [ "$n" -gt 0 ]; then expect export_vtk 0 $rc "($n .vtp files; $(head -c 120 "$tmp/x"))"
 else expect export_vtk 0 99 "(exit $rc: $(head -c 200 "$tmp/x"))"; fi
+# guidance: a restitution asked of a contact off the line of the centres of
+# mass (the sphere moved 0.03 m sideways from the body's centre: the contact
+# drives 1 / (1/m + 0.03^2 / J) = 0.5263 kg, not m = 1 kg) or on a jointed body
+awk 'NR == 21 {print "                0.03                   0               0.052"; next} {print}' \
+    validation/t6_restitution/case.rad > "$tmp/offc.rad"
+"$bin" check "$tmp/offc.rad" > "$tmp/x" 2>&1; rc=$?
+grep -q "off the line of the centres of mass: with the rotations the contact drives 0.5263 kg" "$tmp/x" &&
+    ! "$bin" check validation/t6_restitution/case.rad 2>&1 | grep -q "off the line" &&
+    "$bin" check validation/joint_flap_stop/case.rad 2>&1 | grep -q "WARNING: a body of this contact is on a joint" &&
+    expect guidance_effective_mass 0 $rc "(off-centre and jointed contacts warned, the centred one not)" ||
+    expect guidance_effective_mass 0 99 "($(grep -i warning "$tmp/x" | head -c 200))"
 "$bin" export-vtk "$tmp/none.nc" > "$tmp/x" 2>&1; rc=$?
 grep -q "none.nc" "$tmp/x" && expect export_vtk_missing 4 $rc "($(head -c 120 "$tmp/x"))" || expect export_vtk_missing 4 99 "(no message)"
 printf 'netcdf x {\ndimensions:\n  n = 1 ;\nvariables:\n  int n(n) ;\n}\n' | ncgen -4 -o "$tmp/other.nc" 2>/dev/null

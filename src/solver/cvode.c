@@ -1,15 +1,17 @@
 /*
  * CVODE backend: BDF + Newton + KLU on the fixed sparse pattern, with
  * rootfinding for the events: the backend of /SOLVER Method 1 behind the
- * interface of solver.h (rc_solver_cvode). The only file that includes
- * SUNDIALS.
+ * interface of solver.h (rc_solver_cvode), run by the shared loop rc_drive
+ * (drive.c) through its rc_backend table (integrator.h).
  *
- * Loop: integrate to the next output time; at a root, flip the modes
- * (events.c), write a record, and restart the integrator only when the
- * right-hand side jumps by more than the error control tolerates over the
- * current step (a contact that opens at zero force, or closes without
- * damping, is continuous: no restart). Quaternion norms are kept by CVODE's
- * projection (CVodeSetProjFn).
+ * What is CVODE's own: after a root return the integrator is restarted
+ * only when the right-hand side jumps by more than the error control
+ * tolerates over the current step (a contact that opens at zero force, or
+ * closes without damping, is continuous: no restart, needs_restart); the
+ * Jacobian blocks of the interfaces whose modes changed are refreshed at
+ * the event (jac_patched, cb_linsys), and without a restart the next step
+ * is taken alone with a forced linear solver setup (fresh, cv_solve).
+ * Quaternion norms are kept by CVODE's projection (CVodeSetProjFn).
  */
 #include <cvode/cvode.h>
 #include <cvode/cvode_proj.h>
@@ -23,18 +25,12 @@
 #include <sundials/sundials_config.h>
 #include <sunlinsol/sunlinsol_klu.h>
 #include <sunmatrix/sunmatrix_sparse.h>
-#include <time.h>
-#include <unistd.h>
 
 #include "model/coupling.h"
-#include "model/coupling_contact.h"
 #include "model/joint.h"
 #include "base/error.h"
 #include "engine/events.h"
 #include "model/model.h"
-#include "model/imposed.h"
-#include "output/output.h"
-#include "model/power.h"
 #include "solver/impacts.h"
 #include "solver/nvfast.h"
 #include "solver/solver.h"

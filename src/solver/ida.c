@@ -1,10 +1,11 @@
 /*
  * IDA backend: the model as the implicit system F(t, Y, Y') = 0 integrated
- * by IDA (variable-order BDF, Newton, KLU on a fixed sparse pattern) with
- * the same rootfinding, events, records, impacts table and statistics as
- * the CVODE backend: the backend of /SOLVER Method 2 (rc_solver_ida,
- * solver.h), and the one that runs models with joints (docs/theory.md,
- * "Joints").
+ * by IDA (variable-order BDF, Newton, KLU on a fixed sparse pattern), run
+ * by the same loop as the CVODE backend (rc_drive, drive.c, through the
+ * rc_backend table of integrator.h): the same rootfinding, events, records,
+ * impacts table and statistics. The backend of /SOLVER Method 2
+ * (rc_solver_ida, solver.h), and the one that runs models with joints
+ * (docs/theory.md, "Joints"). Every mode change restarts IDA.
  *
  * Y = [y, Lambda, nu, W]: the model's states y (model.h), then, when the
  * model has joints (model/joint.h), the integrated multipliers of their
@@ -32,15 +33,12 @@
 #include <string.h>
 #include <sunlinsol/sunlinsol_klu.h>
 #include <sunmatrix/sunmatrix_sparse.h>
-#include <unistd.h>
 
 #include "base/error.h"
 #include "engine/events.h"
 #include "model/coupling.h"
-#include "model/imposed.h"
 #include "model/joint.h"
 #include "model/model.h"
-#include "output/output.h"
 #include "solver/impacts.h"
 #include "solver/nvfast.h"
 #include "solver/integrator.h"

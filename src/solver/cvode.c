@@ -65,9 +65,7 @@ typedef struct run_ctx {
 static void cb_err(int code, const char *module, const char *function, char *msg, void *ud)
 {
     run_ctx *c = ud;
-    if (c && c->stop && *c->stop) return;
-    if (code < 0 && c) snprintf(c->cvmsg, sizeof c->cvmsg, "%s", msg);
-    else fprintf(stderr, "[%s %s]  %s\n  %s\n\n", module, code < 0 ? "ERROR" : "WARNING", function, msg);
+    keep_error(c ? c->stop : NULL, c ? c->cvmsg : NULL, sizeof c->cvmsg, code, module, function, msg);
 }
 
 static int cb_rhs(realtype t, N_Vector y, N_Vector ydot, void *ud)

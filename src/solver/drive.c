@@ -498,6 +498,14 @@ void failure_message(const rc_model *m, const rc_data *d, const char *name, doub
              name, t, h, tout, fname ? fname : "?", msg[0] ? " (\"" : "", msg, msg[0] ? "\")" : "", where, advice);
 }
 
+void keep_error(volatile sig_atomic_t *stop, char *keep, size_t n, int code, const char *module,
+                const char *function, const char *msg)
+{
+    if (stop && *stop) return;
+    if (code < 0 && keep) snprintf(keep, n, "%s", msg);
+    else fprintf(stderr, "[%s %s]  %s\n  %s\n\n", module, code < 0 ? "ERROR" : "WARNING", function, msg);
+}
+
 /* A failed call of the integrator: its flag's name and last message. */
 #define BKCHECK(call, what)                                                                                   \
     do {                                                                                                      \

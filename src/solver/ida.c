@@ -65,9 +65,7 @@ typedef struct ida_ctx {
 static void cb_err(int code, const char *module, const char *function, char *msg, void *ud)
 {
     ida_ctx *c = ud;
-    if (c && c->stop && *c->stop) return;
-    if (code < 0 && c) snprintf(c->msg, sizeof c->msg, "%s", msg);
-    else fprintf(stderr, "[%s %s]  %s\n  %s\n\n", module, code < 0 ? "ERROR" : "WARNING", function, msg);
+    keep_error(c ? c->stop : NULL, c ? c->msg : NULL, sizeof c->msg, code, module, function, msg);
 }
 
 /* F(t, Y, Y'): pure, as the right-hand side. */

@@ -45,6 +45,7 @@
 #define open_output rc_bk_open_output
 #define progress_line rc_bk_progress_line
 #define failure_message rc_bk_failure_message
+#define keep_error rc_bk_keep_error
 
 /* Where the events go: the events table of the output file (NULL: none)
  * and the caller's callback (rc_run_options.on_event, NULL: none), which
@@ -100,6 +101,12 @@ void progress_line(double tend, const rc_stats *s, double t, long steps, double 
  * failed force), the integrator's flag name and last message, and advice. */
 void failure_message(const rc_model *m, const rc_data *d, const char *name, double t, double h, double tout,
                      const char *fname, const char *msg, const char *elem, const char *advice, char *buf, size_t n);
+
+/* The integrator's error handler: nothing after an interruption (stop
+ * set), an error kept in keep[n] for the failure message, a warning to
+ * stderr as SUNDIALS prints it. */
+void keep_error(volatile sig_atomic_t *stop, char *keep, size_t n, int code, const char *module,
+                const char *function, const char *msg);
 
 /* Scratch vectors of a backend for its interpolant (rc_backend.dky):
  * RC_BK_TMP for output times, pauses and root refinement (a vector for

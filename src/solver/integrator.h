@@ -1,9 +1,11 @@
 /*
- * What the integration backends share (internal to solver/): the output
- * records, the events' way to the results file and the caller, the time
- * breakpoints, the root directions and the progress line. Defined in
- * cvode.c, the first backend, and used by ida.c; neither of them needs to
- * know which integrator the other drives.
+ * What the integration backends share (internal to solver/): the driver
+ * loop rc_drive and the table of integrator operations it runs on
+ * (rc_backend), and its helpers: the output records, the events' way to
+ * the results file and the caller, the time breakpoints, the root
+ * directions and the progress line. All defined in drive.c; cvode.c and
+ * ida.c each fill one rc_backend and call rc_drive, and neither of them
+ * needs to know which integrator the other drives.
  *
  * The helpers keep their short names inside the backends; the macros below
  * give them an rc_bk_ prefix at link time, so that the static library does
@@ -42,6 +44,8 @@
 #define write_frame rc_bk_write_frame
 #define open_output rc_bk_open_output
 #define progress_line rc_bk_progress_line
+#define failure_message rc_bk_failure_message
+#define keep_error rc_bk_keep_error
 
 /* Where the events go: the events table of the output file (NULL: none)
  * and the caller's callback (rc_run_options.on_event, NULL: none), which
@@ -92,5 +96,75 @@ rc_status open_output(const rc_model *m, const char *path, const char *note, rc_
                       const char *integrator);
 /* The progress line on stderr. */
 void progress_line(double tend, const rc_stats *s, double t, long steps, double t0, int tty);
+
+/* The failure message of a backend: where (the element named elem, or a
+ * failed force), the integrator's flag name and last message, and advice. */
+void failure_message(const rc_model *m, const rc_data *d, const char *name, double t, double h, double tout,
+                     const char *fname, const char *msg, const char *elem, const char *advice, char *buf, size_t n);
+
+/* The integrator's error handler: nothing after an interruption (stop
+ * set), an error kept in keep[n] for the failure message, a warning to
+ * stderr as SUNDIALS prints it. */
+void keep_error(volatile sig_atomic_t *stop, char *keep, size_t n, int code, const char *module,
+                const char *function, const char *msg);
+
+/* Scratch vectors of a backend for its interpolant (rc_backend.dky):
+ * RC_BK_TMP for output times, pauses and root refinement (a vector for
+ * each derivative order k), RC_BK_SAMPLE for the impact table's samples. */
+enum { RC_BK_TMP = 0, RC_BK_SAMPLE = 1 };
+
+/* An integrator behind rc_drive. Flags are the integrator's own return
+ * values (negative: a failure, named by flag_name); `self` is the
+ * backend's state, passed back to every operation. */
+typedef struct rc_backend {
+    const char *name;   /* "CVODE", "IDA": in messages */
+    const char *prefix; /* "CVode", "IDA": prefix of the calls' names in messages */
+    int root_return, tstop_return, too_much_work; /* the solve flags */
+    /* Allocate the integrator's vectors and matrix for the model (d: the
+     * run's data, kept for the callbacks); *y is the state vector the driver
+     * fills with the initial state, *yp its derivative (NULL: none, the ODE
+     * form), *n their length (>= m->ny: IDA's joints add states), and
+     * *integrator the description for the results file. */
+    rc_status (*open)(void *self, const rc_model *m, rc_data *d, const rc_run_options *opt, double **y,
+                      double **yp, int *n, const char **integrator, rc_error *err);
+    /* Create and set up the integrator at t = 0 from the initial state and
+     * modes (may adjust y: joints project the velocities); the root
+     * directions and the stop time are set by the driver afterwards. */
+    rc_status (*start)(void *self, rc_error *err);
+    /* Integrate towards tout (one internal step when *one_step is set, or
+     * when the backend wants one: *one_step then says so); *t the time
+     * reached, y (and yp) the state there. */
+    int (*solve)(void *self, double tout, double *t, int *one_step);
+    /* The k-th derivative of the last step's interpolant at t, into the
+     * scratch vector `slot` (RC_BK_TMP, RC_BK_SAMPLE): *out. */
+    int (*dky)(void *self, double t, int k, int slot, const double **out);
+    int (*last_step)(void *self, double *tn, double *hu); /* end and size of the last step */
+    int (*root_info)(void *self, int *roots);              /* the roots found [rc_root_count] */
+    int (*set_root_dirs)(void *self, int *dir);
+    int (*set_stop_time)(void *self, double tstop);
+    /* Restart at (t, y) (an event or, at_breakpoint, a time breakpoint):
+     * a consistent y' where the backend has one. */
+    int (*restart)(void *self, double t, int at_breakpoint);
+    void (*add_stats)(void *self, rc_stats *s); /* counters since the last restart (and the end) into s */
+    long (*steps)(void *self);                   /* steps since the last restart, for the progress line */
+    void (*failure)(void *self, int flag, double t, double tout, char *buf, size_t n); /* the failure message */
+    char *(*flag_name)(long flag);               /* malloc'ed */
+    const char *(*last_msg)(void *self);         /* the integrator's last error message */
+    /* The vector a record is written from (NULL: y itself). */
+    const double *(*record_vector)(void *self, const double *y, const double *yp);
+    /* Around the events of a root return: before_events (NULL: none) just
+     * before the modes flip; after_events when some changed, with
+     * cpl_ev set when a contact coupling's did and `restart` when the
+     * driver restarts anyway: returns whether to restart; continued (NULL:
+     * none) when modes changed and no restart follows. */
+    void (*before_events)(void *self);
+    int (*after_events)(void *self, double t, const double *y, int cpl_ev, int restart);
+    void (*continued)(void *self);
+    void (*close)(void *self); /* free everything open and start made */
+} rc_backend;
+
+/* Run the model on the backend bk (solver.h rc_solver.run). */
+rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause, rc_stats *stats, rc_error *err,
+                   const rc_backend *bk, void *self);
 
 #endif

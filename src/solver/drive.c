@@ -1,0 +1,826 @@
+/*
+ * The integration driver shared by the backends (integrator.h): the loop
+ * over output times and events that cvode.c and ida.c run through their
+ * rc_backend tables, and the helpers it needs (records, the events' sink,
+ * breakpoints, root directions, touching contacts, the results file,
+ * progress). No SUNDIALS call is made here: every integrator operation goes
+ * through the backend.
+ *
+ * Loop: integrate to the next output time (single steps while an impact is
+ * in progress, or when the backend asks for them); at a time breakpoint,
+ * restart; at a root, flip the modes (events.c), write the events and a
+ * record, and restart the integrator when the modes' change calls for it
+ * (the backend decides, rc_backend.after_events).
+ */
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "base/error.h"
+#include "engine/events.h"
+#include "model/coupling.h"
+#include "model/coupling_contact.h"
+#include "model/imposed.h"
+#include "model/joint.h"
+#include "model/model.h"
+#include "model/power.h"
+#include "output/output.h"
+#include "solver/impacts.h"
+#include "solver/integrator.h"
+#include "solver/solver.h"
+
+/* ---- helpers ----------------------------------------------------------- */
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Time breakpoints: instants where the right-hand side jumps by time alone
+ * (the end of an imposed velocity, /IMPVEL Tstop), inside (0, tend), sorted,
+ * distinct. The integrator is stopped exactly there (its stop time) and restarted.
+ * Returns the count; *bp is allocated (free it). */
+int time_breakpoints(const rc_model *m, double tend, double **bp)
+{
+    const rc_imposed *p = m->imp;
+    int n = 0, cap = p ? p->nt + p->nr : 0;
+    *bp = malloc(((size_t)cap + 1) * sizeof(double));
+    if (!*bp) return -1;
+    for (int k = 0; p && k < p->nt + p->nr; k++) {
+        double ts = k < p->nt ? p->ttstop[k] : p->rtstop[k - p->nt];
+        if (ts > 0 && ts < tend) (*bp)[n++] = ts;
+    }
+    qsort(*bp, (size_t)n, sizeof(double), cmp_double);
+    int u = 0;
+    for (int k = 0; k < n; k++)
+        if (u == 0 || (*bp)[k] > (*bp)[u - 1]) (*bp)[u++] = (*bp)[k];
+    return u;
+}
+
+/* Only the crossing that changes a mode is a root (docs/theory.md 5). */
+void root_directions(const rc_model *m, const rc_data *d, int *dir)
+{
+    for (int i = 0; i < m->ninter; i++) {
+        int *r = dir + RC_ROOTS_PER_INTER * i;
+        const int mode = d->inter_mode[i], br = d->inter_branch[i];
+        r[RC_ROOT_TSTART] = 1;
+        r[RC_ROOT_TSTOP] = 1;
+        r[RC_ROOT_ZONE] = mode == RC_MODE_OPEN ? 1 : -1;         /* enter / leave */
+        r[RC_ROOT_FORCE] = mode == RC_MODE_RELEASED ? 1 : -1;    /* re-close / release */
+        r[RC_ROOT_HYST_A] = br == RC_BR_UNLOAD ? 1 : -1;          /* reversal, or F_h meets F_L */
+        r[RC_ROOT_HYST_B] = -1;                                   /* F_h meets F_U */
+        r[RC_ROOT_TRK_A] = 1;                                     /* bodies approach again */
+        r[RC_ROOT_TRK_B] = -1;                                    /* offset used up */
+        r[RC_ROOT_SLIP] = 1;                                      /* limit reached / sliding stops */
+        r[RC_ROOT_REV] = -1;                                      /* saturated sliding reverses */
+    }
+    for (int j = 0; j < m->npt; j++) dir[rc_root_point_base(m) + j] = 1; /* points: as RC_ROOT_SLIP */
+    if (rc_cpl_nroots(m) > 0) rc_cpl_root_dirs(m, d, dir + rc_root_cpl_base(m));
+}
+
+/* One event to the sink; RC_OK or the output's error. */
+rc_status sink_event(ev_sink *k, double t, const char *kind, const char *element, const double v[3],
+                            rc_error *err)
+{
+    rc_status st = RC_OK;
+    if (k->out) st = v ? rc_output_event_values(k->out, t, kind, element, v, err) : rc_output_event(k->out, t, kind, element, err);
+    if (!st && k->fn && !k->stop) {
+        const double none[3] = {NAN, NAN, NAN}; /* not an interface, as in the file */
+        if (k->fn(k->user, t, kind, element, v ? v : none)) {
+            k->stop = 1;
+            snprintf(k->why, sizeof k->why, "stopped by the event callback at t = %.9g s (%s %s)", t, kind, element);
+        }
+    }
+    return st;
+}
+
+/* Append event `ev` at (t, y) to the events table with its interface's
+ * penetration P [m], approach speed dP/dt [m/s] and normal force [N], in the
+ * mode after the event. */
+rc_status write_event(const rc_model *m, const rc_data *d, ev_sink *o, double t, const double *y,
+                             const rc_event *ev, rc_error *err)
+{
+    const int i = ev->inter;
+    if (i < 0) return sink_event(o, t, ev->kind, m->cpl->name[-1 - i], NULL, err); /* a coupling */
+    rc_inter_report r;
+    rc_inter_report_eval_d(m, d, i, t, y, &r);
+    const double v[3] = {r.p, r.vn, d->inter_mode[i] == RC_MODE_CLOSED && r.fn > 0 ? r.fn : 0.0};
+    return sink_event(o, t, ev->kind, m->inter_name[i], v, err);
+}
+
+/* Contacts at zero penetration or zero force, decided by the state after
+ * the start and after every event (events.c, rc_modes_touch): the rate of
+ * the state in the current modes is computed first, for the force rates.
+ * Writes the events; returns their number (*jumped is set when history
+ * states were reset). */
+int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double *f, ev_sink *out,
+                            rc_impacts *im, long *nevents, int *jumped, rc_status *st, rc_error *err)
+{
+    int total = 0;
+    *st = RC_OK;
+    if (m->ninter == 0) return 0;
+    /* a touching contact closed at zero force changes no rate, so one more
+     * round settles what the first one enabled */
+    for (int round = 0; round < 2; round++) {
+        if (rc_assemble_rhs(m, d, t, y, f)) break;
+        rc_event ev[RC_MAX_EV];
+        int jmp = 0, nev = rc_modes_touch(m, d, t, y, f, ev, RC_MAX_EV, &jmp);
+        *jumped |= jmp;
+        total += nev;
+        *nevents += nev;
+        for (int k = 0; k < nev && k < RC_MAX_EV; k++) rc_impacts_event(im, m, d, ev[k].inter, ev[k].kind, t, y);
+        for (int k = 0; k < nev && k < RC_MAX_EV; k++)
+            if ((*st = write_event(m, d, out, t, y, &ev[k], err))) return total;
+        if (nev == 0) break;
+    }
+    return total;
+}
+
+/* A root function exactly zero at the event state (flat to rounding, e.g. a
+ * penetration of two slowly separating bodies) makes the integrator stop with "close
+ * roots" on the next call; after a restart it instead deactivates it until
+ * it moves away from zero. */
+int root_on_zero(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
+{
+    rc_assemble_roots(m, d, t, y, g);
+    for (int k = 0; k < rc_root_count(m); k++)
+        if (g[k] == 0.0) return 1;
+    return 0;
+}
+
+double wall_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+void frame_free(frame_buf *f)
+{
+    void *p[] = {f->pos, f->quat, f->vel, f->omega, f->pen, f->fload, f->fdamp, f->fn, f->point, f->normal, f->mode,
+                 f->cpl, f->ffric, f->vslip, f->slip, f->jnt};
+    for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
+}
+
+int frame_alloc(const rc_model *m, frame_buf *f)
+{
+    memset(f, 0, sizeof *f);
+    size_t nb = (size_t)m->nbody + 1, ni = (size_t)m->ninter + 1;
+    f->pos = malloc(3 * nb * sizeof(double));
+    f->quat = malloc(4 * nb * sizeof(double));
+    f->vel = malloc(3 * nb * sizeof(double));
+    f->omega = malloc(3 * nb * sizeof(double));
+    f->pen = malloc(ni * sizeof(double));
+    f->fload = malloc(ni * sizeof(double));
+    f->fdamp = malloc(ni * sizeof(double));
+    f->fn = malloc(ni * sizeof(double));
+    f->point = malloc(3 * ni * sizeof(double));
+    f->normal = malloc(3 * ni * sizeof(double));
+    f->mode = malloc(ni * sizeof(int));
+    f->ffric = malloc(3 * ni * sizeof(double));
+    f->vslip = malloc(ni * sizeof(double));
+    f->slip = malloc(ni * sizeof(int));
+    f->cpl = malloc((9 * (size_t)m->cpl->n + 1) * sizeof(double));
+    f->jnt = malloc((8 * (size_t)(m->jnt ? m->jnt->n : 0) + 1) * sizeof(double));
+    return f->jnt && f->pos && f->quat && f->vel && f->omega && f->pen && f->fload && f->fdamp && f->fn && f->point &&
+           f->normal && f->mode && f->cpl && f->ffric && f->vslip && f->slip;
+}
+
+/* Fill and write one record at (t, y). */
+rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_buf *f, double t,
+                             const double *y, int at_event, rc_error *err)
+{
+    for (int b = 0; b < m->nbody; b++) {
+        const double *s = rc_body_state(m, b, y);
+        memcpy(f->pos + 3 * b, s, 3 * sizeof(double));
+        memcpy(f->quat + 4 * b, s + 3, 4 * sizeof(double));
+        memcpy(f->vel + 3 * b, s + 7, 3 * sizeof(double));
+        memcpy(f->omega + 3 * b, s + 10, 3 * sizeof(double));
+    }
+    for (int i = 0; i < m->ninter; i++) {
+        rc_inter_report r;
+        int mode = d->inter_mode[i];
+        rc_inter_report_eval_d(m, d, i, t, y, &r);
+        const int acts = mode == RC_MODE_CLOSED;
+        f->pen[i] = r.p;
+        f->fload[i] = acts ? r.fload : 0.0;
+        f->fdamp[i] = acts ? r.fdamp : 0.0;
+        f->fn[i] = acts && r.fn > 0 ? r.fn : 0.0;
+        memcpy(f->point + 3 * i, r.point, 3 * sizeof(double));
+        memcpy(f->normal + 3 * i, r.normal, 3 * sizeof(double));
+        for (int k = 0; k < 3; k++) f->ffric[3 * i + k] = acts ? r.ft[k] : 0.0;
+        f->vslip[i] = acts ? r.vslip : 0.0;
+        int sl = d->inter_slip[i]; /* friction per point: any point slipping */
+        for (int j = 0; j < m->inter_npt[i]; j++) sl |= d->pt_slip[m->inter_pbase[i] + j];
+        f->slip[i] = acts && sl;
+        f->mode[i] = mode == RC_MODE_CLOSED     ? RC_OUT_MODE_CLOSED
+                     : mode == RC_MODE_OPEN     ? RC_OUT_MODE_OPEN
+                     : mode == RC_MODE_RELEASED ? RC_OUT_MODE_RELEASED
+                                                : RC_OUT_MODE_INACTIVE;
+    }
+    rc_energy(m, d, t, y, f->energy);
+    if (!o) return RC_OK;
+    const int nc = m->cpl->n;
+    rc_cpl_frame(m, d, t, y, f->cpl);
+    rc_frame fr = {.t = t, .at_event = at_event, .body_pos = f->pos, .body_quat = f->quat, .body_vel = f->vel,
+                   .body_omega = f->omega, .inter_pen = f->pen, .inter_fload = f->fload, .inter_fdamp = f->fdamp,
+                   .inter_fnormal = f->fn, .inter_point = f->point, .inter_normal = f->normal,
+                   .inter_mode = f->mode, .inter_ffric = f->ffric, .inter_vslip = f->vslip, .inter_slip = f->slip,
+                   .energy = f->energy, .cpl_force = f->cpl, .cpl_length = f->cpl + nc, .cpl_f1 = f->cpl + 2 * nc,
+                   .cpl_f2 = f->cpl + 5 * nc, .cpl_lowest = f->cpl + 8 * nc};
+    if (m->jnt) { /* joints: y is the IDA backend's whole vector (model/joint.h) */
+        const int nj = m->jnt->n;
+        rc_jnt_frame(m, y, f->jnt, f->jnt + 3 * nj, f->jnt + 6 * nj, f->jnt + 7 * nj, f->jnt + 8 * nj);
+        fr.joint_force = f->jnt;
+        fr.joint_moment = f->jnt + 3 * nj;
+        fr.joint_drift_pos = f->jnt + 6 * nj;
+        fr.joint_drift_ang = f->jnt + 7 * nj;
+        fr.joint_work = f->jnt + 8 * nj;
+    }
+    return rc_output_frame(o, &fr, err);
+}
+
+static const char *const energy_name[RC_NENERGY] = {
+    "energy_kinetic",        "energy_potential",  "energy_contact_work", "energy_damping", "energy_friction_work",
+    "energy_contact_stored", "energy_hysteresis", "energy_friction",     "energy_coupling_elastic",
+    "energy_coupling_damping", "energy_catenary", "energy_imposed", "energy_total"};
+static const char *const energy_long[RC_NENERGY] = {
+    "kinetic energy of the free bodies",
+    "gravitational potential energy",
+    "work done on the contacts by the elastic(-plastic) normal forces",
+    "energy dissipated by the contact damping",
+    "work done on the contacts by the friction forces",
+    "elastic energy stored in the contacts, normal and tangential (recoverable by unloading)",
+    "energy dissipated by contact hysteresis (normal work - normal stored)",
+    "energy dissipated by friction (friction work - tangential stored)",
+    "elastic energy stored in the spring-damper couplings",
+    "energy dissipated by the coupling dampers",
+    "elastic and gravitational energy of the catenary lines (work done by their ends)",
+    "minus the work done on the bodies by the imposed velocities (/IMPVEL reactions)",
+    ("kinetic + potential + contact work + damping + friction work + couplings + imposed (constant in exact "
+     "arithmetic)")};
+
+_Static_assert(RC_SURF_NEXT == RC_OUT_SURF_NPARAM, "surface parameters: model and file disagree");
+static const char *const surf_kind_name[] = {"", "PLANE", "SPHERE", "CYLINDER", "BOX", "SEGMENTS"};
+
+rc_status open_output(const rc_model *m, const char *path, const char *note, rc_output **o, rc_error *err,
+                      const char *integrator)
+{
+    *o = NULL;
+    if (!path) return RC_OK;
+    const char **types = malloc(((size_t)m->ninter + 1) * sizeof(char *));
+    if (!types) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    for (int i = 0; i < m->ninter; i++) types[i] = m->inter_law[i] == RC_LAW_POWER ? "POWER" : "TYPE6";
+    rc_output_meta meta = {m->title, m->case_path, m->checksum, m->unit_mass, m->unit_length, m->unit_time,
+                           integrator, m->rtol, m->atol_pos,
+                           m->atol_quat, m->atol_vel, m->atol_omega, m->atol_energy, m->nbody, m->body_id,
+                           m->body_fixed, m->ninter, m->inter_id, types, RC_NENERGY, energy_name, energy_long,
+                           m->cpl->n, m->cpl->id, m->cpl->type, NULL, .nfile = 0};
+    /* provenance, every solver setting, the surfaces */
+    meta.nfile = m->nfile;
+    meta.file = (const char *const *)m->file;
+    meta.max_order = m->max_order;
+    meta.max_steps = m->max_steps;
+    meta.hmax = m->hmax;
+    meta.h0 = m->h0;
+    meta.t_end = m->tend;
+    meta.dt_out = m->dtout;
+    char derived[128] = "";
+    static const char *const tol_name[5] = {"atol_position", "atol_quaternion", "atol_velocity",
+                                            "atol_angular_velocity", "atol_energy"};
+    for (int k = 0; k < 5; k++)
+        if (m->tol_auto & (1 << k))
+            snprintf(derived + strlen(derived), sizeof derived - strlen(derived), "%s%s", derived[0] ? " " : "",
+                     tol_name[k]);
+    meta.tol_derived = derived[0] ? derived : "none (all given in /SOLVER)";
+    meta.sampling_note = note;
+    const char **kinds = malloc(((size_t)m->nsurf + 1) * sizeof *kinds);
+    int *isurf = malloc((2 * (size_t)m->ninter + 1) * sizeof *isurf);
+    if (!kinds || !isurf) {
+        free(kinds);
+        free(isurf);
+        free(types);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    for (int k = 0; k < m->nsurf; k++)
+        kinds[k] = m->surf_kind[k] >= RC_SURF_PLANE && m->surf_kind[k] <= RC_SURF_SEG ? surf_kind_name[m->surf_kind[k]]
+                                                                                    : "UNKNOWN";
+    for (int i = 0; i < m->ninter; i++) {
+        isurf[2 * i] = m->inter_sa[i];
+        isurf[2 * i + 1] = m->inter_sb[i];
+    }
+    meta.nsurf = m->nsurf;
+    meta.surf_id = m->surf_id;
+    meta.surf_kind = kinds;
+    meta.surf_body = m->surf_body;
+    meta.surf_point = m->surf_p;
+    meta.surf_normal = m->surf_n;
+    meta.surf_radius = m->surf_r;
+    meta.surf_param = m->surf_ext;
+    meta.inter_surf = isurf;
+    /* segment surfaces: their nodes and segments */
+    if (m->surf_nadr && m->surf_sadr && m->surf_sadr[m->nsurf] > 0) {
+        meta.nseg_node = m->surf_nadr[m->nsurf];
+        meta.nseg = m->surf_sadr[m->nsurf];
+        meta.surf_first_node = m->surf_nadr;
+        meta.surf_first_seg = m->surf_sadr;
+        meta.seg_node = m->surf_node;
+        meta.seg_corner = m->surf_seg;
+    }
+    const int njt = m->jnt ? m->jnt->n : 0;
+    const char **jtype = malloc(((size_t)njt + 1) * sizeof *jtype);
+    if (!jtype) {
+        free(types);
+        free(kinds);
+        free(isurf);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    for (int j = 0; j < njt; j++) jtype[j] = rc_jnt_type_name(m, j);
+    meta.njoint = njt;
+    meta.joint_id = m->jnt ? m->jnt->id : NULL;
+    meta.joint_type = jtype;
+    char evrec[160];
+    const int full = rc_event_records(m);
+    if (m->ev_state == 0)
+        snprintf(evrec, sizeof evrec, "%s (/RUN Ev_state 0: %d bodies, %s %d)",
+                 full ? "full-state record at every event" : "events table only", m->nbody,
+                 full ? "at most" : "more than", RC_EVREC_MAX_BODIES);
+    else
+        snprintf(evrec, sizeof evrec, "%s (/RUN Ev_state %d)",
+                 full ? "full-state record at every event" : "events table only", m->ev_state);
+    meta.event_records = evrec;
+    rc_status st = rc_output_open(o, path, &meta, err);
+    free(jtype);
+    free(types);
+    free(kinds);
+    free(isurf);
+    return st;
+}
+
+/* Progress of the integration on stderr: one line rewritten on a terminal,
+ * whole lines in a log. The time remaining is estimated from the rate of
+ * simulated time over the wall time so far. */
+void progress_line(double tend, const rc_stats *s, double t, long steps, double t0, int tty)
+{
+    const double wall = wall_now() - t0;
+    char left[64] = "";
+    if (t > 0 && t < tend) {
+        const double rem = (tend - t) * wall / t;
+        if (rem < 10) snprintf(left, sizeof left, ", about %.1f s left", rem);
+        else if (rem < 120) snprintf(left, sizeof left, ", about %.0f s left", rem);
+        else if (rem < 7200) snprintf(left, sizeof left, ", about %.0f min left", rem / 60);
+        else snprintf(left, sizeof left, ", about %.1f h left", rem / 3600);
+    }
+    fprintf(stderr, "%sricochet: t = %.6g of %.6g s (%.1f%%), steps %ld, events %ld, wall %.1f s%s%s", tty ? "\r" : "",
+            t, tend, 100.0 * t / tend, steps, s->events, wall, left, tty ? "   " : "\n");
+    fflush(stderr);
+}
+
+
+/* ---- the driver ------------------------------------------------------- */
+/* One record at (t, y, y'): the backend's record vector (with joints, the
+ * reactions in the slots of their impulses), or y itself. */
+static rc_status record(const rc_backend *bk, void *self, const rc_model *m, const rc_data *d, rc_output *o,
+                        frame_buf *fb, double t, const double *y, const double *yp, int at_event, rc_error *err)
+{
+    const double *v = bk->record_vector ? bk->record_vector(self, y, yp) : y;
+    return write_frame(m, d, o, fb, t, v, at_event, err);
+}
+
+/* The interpolant of the integrator's last step for the impact table
+ * (rc_interp_fn). */
+typedef struct interp_ctx {
+    const rc_backend *bk;
+    void *self;
+} interp_ctx;
+
+static int interp_last_step(void *ctx, double t, const double **y)
+{
+    interp_ctx *c = ctx;
+    return c->bk->dky(c->self, t, 0, RC_BK_SAMPLE, y) < 0 ? -1 : 0;
+}
+
+/* The impacts in progress at the end of a step over (t_prev, t] with the
+ * state y (rc_impacts_step); the part of the interval before the last step
+ * (right after a root return) is not covered by the interpolant. */
+static void sample_step(const rc_backend *bk, void *self, rc_impacts *im, const rc_model *m, const rc_data *d,
+                        double t_prev, double t, const double *y)
+{
+    double tn = t, hu = 0.0;
+    if (!rc_impacts_active(im) || bk->last_step(self, &tn, &hu) < 0) return;
+    const double lo = fmax(t_prev, tn - hu);
+    if (!(t > lo)) return;
+    interp_ctx c = {bk, self};
+    rc_impacts_step(im, m, d, lo, t, y, interp_last_step, &c);
+}
+
+/* The roots reported at t are all exactly zero there and were positive (or
+ * negative) at the start of the step: a function that reached zero and stayed
+ * flat (the integrator reports such a root at the step's end, not where it
+ * got there). Bisect on the interpolant over [t_n - h_u, t] for the first
+ * time all of them are zero; on success the state there is in *yref (the
+ * backend's scratch), the time in *refined_time, and the number of
+ * bisections is returned (0: nothing to do). */
+static int refine_flat_roots(const rc_backend *bk, void *self, const rc_model *m, rc_data *d, double t,
+                             const int *roots, double *g, const double **yref, double *refined_time)
+{
+    const int nr = rc_root_count(m);
+    double tn, hu;
+    const double *y;
+    if (nr == 0 || bk->last_step(self, &tn, &hu) < 0) return 0;
+    if (bk->dky(self, t, 0, RC_BK_TMP, &y) < 0) return 0;
+    rc_assemble_roots(m, d, t, y, g);
+    for (int k = 0; k < nr; k++)
+        if (roots[k] != 0 && g[k] != 0.0) return 0; /* a true crossing: located by the integrator */
+    double lo = fmax(tn - hu, 0.0), hi = t;
+    if (bk->dky(self, lo, 0, RC_BK_TMP, &y) < 0) return 0;
+    rc_assemble_roots(m, d, lo, y, g);
+    for (int k = 0; k < nr; k++)
+        if (roots[k] != 0 && g[k] == 0.0) return 0; /* already zero at the start */
+    int it = 0;
+    for (; it < 200 && hi - lo > 4.0 * DBL_EPSILON * fmax(fabs(hi), 1.0); it++) {
+        const double mid = 0.5 * (lo + hi);
+        if (bk->dky(self, mid, 0, RC_BK_TMP, &y) < 0) return 0;
+        rc_assemble_roots(m, d, mid, y, g);
+        int all = 1;
+        for (int k = 0; k < nr; k++)
+            if (roots[k] != 0 && g[k] != 0.0) all = 0;
+        if (all) hi = mid;
+        else lo = mid;
+    }
+    if (hi >= t || bk->dky(self, hi, 0, RC_BK_TMP, yref) < 0) return 0;
+    *refined_time = hi;
+    return it > 0 ? it : 1;
+}
+
+/* Output times strictly before t (not within rounding of it) that a single
+ * step passed before stopping at an event or a breakpoint at t: their
+ * records, from the interpolant of that step, in the modes before the
+ * event. Advances *tout and *nout. */
+static rc_status outputs_before(const rc_backend *bk, void *self, const rc_model *m, const rc_data *d, rc_output *o,
+                                frame_buf *fb, double t, double tend, double dtout, int with_yp, double *tout,
+                                long *nout, rc_error *err)
+{
+    while (*tout < t && t - *tout > 1e-12 * fmax(fabs(t), dtout)) {
+        const double *y = NULL, *yp = NULL;
+        if (bk->dky(self, *tout, 0, RC_BK_TMP, &y) < 0 || (with_yp && bk->dky(self, *tout, 1, RC_BK_TMP, &yp) < 0))
+            RC_RAISE(err, RC_ESOLVER, "%s interpolation at the output time %.9g s failed", bk->name, *tout);
+        rc_status st = record(bk, self, m, d, o, fb, *tout, y, yp, 0, err);
+        if (st) return st;
+        (*nout)++;
+        const double next = fmin(*nout * dtout, tend);
+        if (next <= *tout) break;
+        *tout = next;
+        if (tend - *tout < 1e-12 * tend) *tout = tend;
+    }
+    return RC_OK;
+}
+
+void failure_message(const rc_model *m, const rc_data *d, const char *name, double t, double h, double tout,
+                     const char *fname, const char *msg, const char *elem, const char *advice, char *buf, size_t n)
+{
+    const char *cf = rc_cpl_failed(m, d);
+    char where[512];
+    if (d->fail_inter >= 0)
+        snprintf(where, sizeof where, "non-finite force in %s", m->inter_name[d->fail_inter]);
+    else if (cf)
+        snprintf(where, sizeof where, "no force from %s", cf);
+    else if (elem[0])
+        snprintf(where, sizeof where, "largest local error in %s", elem);
+    else
+        snprintf(where, sizeof where, "element not identified");
+    snprintf(buf, n, "%s failed at t = %.9g s (step h = %.3g s, next output at %.9g s): %s%s%s%s; %s. Likely "
+             "cause: %s",
+             name, t, h, tout, fname ? fname : "?", msg[0] ? " (\"" : "", msg, msg[0] ? "\")" : "", where, advice);
+}
+
+void keep_error(volatile sig_atomic_t *stop, char *keep, size_t n, int code, const char *module,
+                const char *function, const char *msg)
+{
+    if (stop && *stop) return;
+    if (code < 0 && keep) snprintf(keep, n, "%s", msg);
+    else fprintf(stderr, "[%s %s]  %s\n  %s\n\n", module, code < 0 ? "ERROR" : "WARNING", function, msg);
+}
+
+/* A failed call of the integrator: its flag's name and last message. */
+#define BKCHECK(call, what)                                                                                   \
+    do {                                                                                                      \
+        int flag_ = (call);                                                                                   \
+        if (flag_ < 0) {                                                                                      \
+            char *name_ = bk->flag_name(flag_); /* malloc'ed by SUNDIALS */                                   \
+            st = RC_SET(err, RC_ESOLVER, "%s call %s%s failed at t = %.9g s: %s (%s)", bk->name, bk->prefix, \
+                        what, t, name_ ? name_ : "?", bk->last_msg(self));                                    \
+            free(name_);                                                                                      \
+            goto done;                                                                                        \
+        }                                                                                                     \
+    } while (0)
+
+/* Stop the run as interrupted, with the reason kept for the file. */
+#define INTERRUPT(...)                                        \
+    do {                                                      \
+        snprintf(reason, sizeof reason, __VA_ARGS__);         \
+        fail_reason = reason;                                 \
+        st = RC_SET(err, RC_EINTERRUPT, "%s", reason);        \
+    } while (0)
+
+rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause, rc_stats *stats, rc_error *err,
+                   const rc_backend *bk, void *self)
+{
+    rc_status st = RC_OK;
+    double t = 0.0; /* time reached [s] */
+    rc_error local_err;
+    if (!err) err = &local_err;
+    rc_error_clear(err);
+    rc_stats s;
+    memset(&s, 0, sizeof s);
+    rc_impacts im;
+    memset(&im, 0, sizeof im);
+    char note[sizeof s.sampling_note];
+    rc_impacts_sampling_note(m, note, sizeof note);
+    int *rootdir = NULL, *roots = NULL, *zeno_n = NULL;
+    double *gbuf = NULL, *flook = NULL, *bp = NULL, *zeno_t = NULL;
+    int nbp = 0, ibp = 0;
+    rc_output *out = NULL;
+    frame_buf fb;
+    memset(&fb, 0, sizeof fb);
+    const char *fail_reason = NULL;
+    char reason[2048] = "";
+    rc_data *d = rc_data_new(m);
+    const double tend = opt && opt->t_end_override > 0 ? opt->t_end_override : m->tend;
+    const double dtout = opt && opt->dt_out_override > 0 ? opt->dt_out_override : m->dtout;
+    const int show = opt && opt->progress, tty = show && isatty(2);
+    ev_sink sink = {NULL, opt ? opt->on_event : NULL, opt ? opt->user : NULL, 0, ""};
+    const int evrec = rc_event_records(m); /* full-state records at events */
+    double wall0 = wall_now(), last_progress = wall0;
+    const int nr = rc_root_count(m);
+    double *y = NULL, *yp = NULL; /* the backend's state (and derivative, NULL: none) */
+    int n = m->ny;                /* their length */
+    const char *integrator = "";
+    int opened = 0;
+
+    if (!d || !frame_alloc(m, &fb)) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory");
+        goto done;
+    }
+    opened = 1;
+    if ((st = bk->open(self, m, d, opt, &y, &yp, &n, &integrator, err))) goto done;
+    rootdir = calloc((size_t)nr + 1, sizeof(int));
+    roots = calloc((size_t)nr + 1, sizeof(int));
+    gbuf = calloc((size_t)nr + 1, sizeof(double));
+    zeno_t = calloc((size_t)m->ninter + 1, sizeof(double));
+    zeno_n = calloc((size_t)m->ninter + 1, sizeof(int));
+    flook = calloc((size_t)n, sizeof(double));
+    if (rc_impacts_init(&im, m) || !rootdir || !roots || !gbuf || !zeno_t || !zeno_n || !flook) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory for the solver");
+        goto done;
+    }
+    /* initial state and modes */
+    rc_initial_state(m, y);
+    rc_modes_init(m, d, t, y);
+    if ((st = open_output(m, opt ? opt->output_path : NULL, note, &out, err, integrator))) goto done;
+    sink.out = out;
+    {
+        int jmp = 0;
+        resolve_touching(m, d, t, y, flook, &sink, &im, &s.events, &jmp, &st, err);
+        if (st) goto done;
+    }
+    if ((st = bk->start(self, err))) goto done;
+    if (nr > 0) {
+        root_directions(m, d, rootdir);
+        BKCHECK(bk->set_root_dirs(self, rootdir), "SetRootDirection");
+    }
+    /* time breakpoints: stop exactly there */
+    if ((nbp = time_breakpoints(m, tend, &bp)) < 0) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory");
+        goto done;
+    }
+    /* and never step past the end time (a single step may overshoot tout) */
+    BKCHECK(bk->set_stop_time(self, nbp > 0 ? bp[0] : tend), "SetStopTime");
+
+    double e0[RC_NENERGY];
+    rc_energy(m, d, t, y, e0);
+    if ((st = record(bk, self, m, d, out, &fb, t, y, yp, 0, err))) goto done;
+
+    /* ---- main loop: output times and events ---- */
+    long nout = 1;
+    double tout = fmin(dtout, tend);
+    double t_prev = t; /* where the last call ended [s] */
+    /* records inside contacts, at their own time scale, when the output
+     * interval cannot resolve them (with full-state event records only) */
+    const double dt_contact =
+        evrec && m->nbody <= RC_CONTACT_REC_MAX_BODIES ? rc_contact_record_interval(m, dtout) : 0.0;
+    double t_contact_rec = -INFINITY; /* time of the last such record [s] */
+    long single = 0;                  /* single steps since the last output time */
+    while (t < tend) {
+        /* the event callback asked to stop: end here as an interrupted run */
+        if (sink.stop) {
+            INTERRUPT("%s: the results up to there are kept", sink.why);
+            break;
+        }
+        /* stepping (rc_run_until): hand over the state at each time asked
+         * for; the caller may stop the run there */
+        int paused_stop = 0;
+        while (pause && t >= pause->until && !paused_stop) {
+            const double tu = pause->until;
+            const double *yu = y;
+            if (t > tu) BKCHECK(bk->dky(self, tu, 0, RC_BK_TMP, &yu), "GetDky");
+            paused_stop = pause->reached(pause, tu, yu);
+        }
+        if (paused_stop) {
+            INTERRUPT("stopped by the caller at t = %.9g s: the results up to there are kept", t);
+            break;
+        }
+        /* single steps while an impact is in progress: its peak force and
+         * maximum penetration are tracked at every step (sample_step);
+         * /SOLVER Max_steps then bounds the single steps between two output
+         * times, as the integrator bounds the steps of one call. The
+         * backend may ask for single steps of its own (rc_backend.solve). */
+        int one_step = rc_impacts_active(&im);
+        /* a time asked for by the caller before the next output time: return
+         * there (interpolated; the steps are the same) */
+        const double tcall = pause && pause->until < tout ? pause->until : tout;
+        int flag = bk->solve(self, tcall, &t, &one_step);
+        /* interrupted (a signal): inside the integrator the right-hand side
+         * made it fail; between two calls the next call returns at its first one */
+        if (opt && opt->stop && *opt->stop) {
+            INTERRUPT("interrupted at t = %.9g s (signal): the results up to there are kept", t);
+            break;
+        }
+        if (one_step && flag >= 0 && ++single > m->max_steps) flag = bk->too_much_work;
+        if (flag >= 0) sample_step(bk, self, &im, m, d, t_prev, t, y);
+        t_prev = t;
+        if (flag < 0) {
+            bk->failure(self, flag, t, tout, reason, sizeof reason);
+            fail_reason = reason;
+            st = RC_SET(err, RC_ESOLVER, "%s", reason);
+            break;
+        }
+        const int at_bp = flag == bk->tstop_return && ibp < nbp && t >= bp[ibp];
+        if (at_bp || flag == bk->root_return)
+            if ((st = outputs_before(bk, self, m, d, out, &fb, t, tend, dtout, yp != NULL, &tout, &nout, err)))
+                goto done;
+        if (at_bp) {
+            /* a time breakpoint: an imposed velocity ends; restart there */
+            s.events++;
+            if ((st = sink_event(&sink, t, "impvel_stop", "/IMPVEL", NULL, err))) goto done;
+            bk->add_stats(self, &s);
+            BKCHECK(bk->restart(self, t, 1), "ReInit");
+            s.reinits++;
+            while (ibp < nbp && bp[ibp] <= t) ibp++;
+            /* the next breakpoint, or the end time */
+            BKCHECK(bk->set_stop_time(self, ibp < nbp ? bp[ibp] : tend), "SetStopTime");
+            /* a full-state record at the event (rc_event_records), or the
+             * output record when the event falls on an output time */
+            const int on_out = tout - t <= 1e-12 * fmax(fabs(t), dtout);
+            if ((evrec || on_out) && (st = record(bk, self, m, d, out, &fb, t, y, yp, evrec, err))) goto done;
+            if (on_out) {
+                nout++;
+                tout = fmin(nout * dtout, tend);
+            }
+            continue;
+        }
+        if (flag == bk->root_return) {
+            t_contact_rec = t; /* the event's own record stands for a contact record */
+            BKCHECK(bk->root_info(self, roots), "GetRootInfo");
+            /* roots that land exactly on zero at the step's end (a law flat at
+             * zero: an unload curve reaching zero before P does) were not
+             * located: bisect on the interpolant for where they reached it */
+            double t_ref = t;
+            const double *yref = NULL;
+            const int refined = refine_flat_roots(bk, self, m, d, t, roots, gbuf, &yref, &t_ref);
+            if (refined > 0) {
+                t = t_ref;
+                memcpy(y, yref, (size_t)n * sizeof(double));
+            }
+            if (bk->before_events) bk->before_events(self);
+            rc_event ev[RC_MAX_EV];
+            int jumped = 0;
+            int nev = rc_events_apply(m, d, t, y, roots, ev, RC_MAX_EV, &jumped);
+            int cpl_ev = 0; /* a contact coupling's faces changed modes */
+            for (int k = 0; k < nev && k < RC_MAX_EV; k++) cpl_ev |= ev[k].inter < 0;
+            s.events += nev;
+            for (int k = 0; k < nev && k < RC_MAX_EV; k++) rc_impacts_event(&im, m, d, ev[k].inter, ev[k].kind, t, y);
+            for (int k = 0; k < nev && k < RC_MAX_EV; k++)
+                if ((st = write_event(m, d, &sink, t, y, &ev[k], err))) goto done;
+            /* event accumulation: report it rather than stall */
+            for (int k = 0; k < nev && k < RC_MAX_EV; k++) {
+                const int i = ev[k].inter;
+                if (i < 0) continue; /* a contact coupling: its faces change modes with the state moving */
+                zeno_n[i] = t - zeno_t[i] <= RC_ZENO_REL * fmax(fabs(t), dtout) ? zeno_n[i] + 1 : 0;
+                zeno_t[i] = t;
+                if (zeno_n[i] > RC_ZENO_MAX) {
+                    snprintf(reason, sizeof reason,
+                             "event accumulation (Zeno) at t = %.9g s in %s: more than %d events within %.2g s of "
+                             "each other (last: %s); the modes of this element switch without the state moving: "
+                             "tighter tolerances or a smoother law may help",
+                             t, m->inter_name[i], RC_ZENO_MAX, RC_ZENO_REL * fmax(fabs(t), dtout), ev[k].kind);
+                    fail_reason = reason;
+                    st = RC_SET(err, RC_ESOLVER, "%s", reason);
+                    goto done;
+                }
+            }
+            /* contacts left at zero penetration or zero force: by the state */
+            nev += resolve_touching(m, d, t, y, flook, &sink, &im, &s.events, &jumped, &st, err);
+            if (st) goto done;
+            if (nev > 0 && nr > 0) {
+                root_directions(m, d, rootdir);
+                BKCHECK(bk->set_root_dirs(self, rootdir), "SetRootDirection");
+            }
+            /* restart at a refined root, a jump of history states, a change
+             * the backend restarts for, or a root function left at zero */
+            int restart = refined > 0 || jumped;
+            if (nev > 0) restart = bk->after_events(self, t, y, cpl_ev, restart);
+            if (!restart) restart = root_on_zero(m, d, t, y, gbuf);
+            if (restart) {
+                bk->add_stats(self, &s);
+                BKCHECK(bk->restart(self, t, 0), "ReInit");
+                s.reinits++;
+            } else if (nev > 0 && bk->continued) {
+                bk->continued(self);
+            }
+            /* an event on an output time stands for that output: a
+             * full-state record at the event (rc_event_records), or else the
+             * output record */
+            const int on_out = tout - t <= 1e-12 * fmax(fabs(t), dtout);
+            if (nev > 0 && (evrec || on_out) && (st = record(bk, self, m, d, out, &fb, t, y, yp, evrec, err)))
+                goto done;
+            if (on_out) {
+                nout++;
+                tout = fmin(nout * dtout, tend);
+            }
+        } else if (one_step && t < tout) {
+            /* the single step ended before the output time: carry on, with
+             * a record inside a contact when its time scale calls for one */
+            if (dt_contact > 0 && rc_impacts_active(&im) && t - t_contact_rec >= dt_contact) {
+                if ((st = record(bk, self, m, d, out, &fb, t, y, yp, RC_REC_CONTACT, err))) goto done;
+                t_contact_rec = t;
+            }
+        } else {
+            /* output times reached (a single step may pass several) */
+            while (tout <= t) {
+                const double *yo = y, *ypo = yp;
+                if (tout < t) {
+                    BKCHECK(bk->dky(self, tout, 0, RC_BK_TMP, &yo), "GetDky");
+                    if (yp) BKCHECK(bk->dky(self, tout, 1, RC_BK_TMP, &ypo), "GetDky");
+                }
+                if ((st = record(bk, self, m, d, out, &fb, tout, yo, ypo, 0, err))) goto done;
+                single = 0;
+                nout++;
+                const double next = fmin(nout * dtout, tend);
+                if (next <= tout) break;
+                tout = next;
+                if (tend - tout < 1e-12 * tend) tout = tend;
+            }
+        }
+        if (show && wall_now() - last_progress > (tty ? 0.5 : RC_LOG_EVERY)) {
+            progress_line(tend, &s, t, s.steps + bk->steps(self), wall0, tty);
+            last_progress = wall_now();
+        }
+    }
+    double e1[RC_NENERGY];
+    rc_energy(m, d, t, y, e1);
+    s.energy_residual = e1[RC_E_TOTAL] - e0[RC_E_TOTAL];
+    s.t_end = t;
+    if (opt && opt->y_end) memcpy(opt->y_end, y, (size_t)m->ny * sizeof(double));
+
+done:
+    if (opened) bk->add_stats(self, &s);
+    /* the impacts: in the file and, the first ones, in the statistics */
+    rc_impacts_finish(&im);
+    s.impacts = im.n;
+    for (int k = 0; k < im.n && k < RC_STATS_IMPACTS; k++) s.impact[k] = im.row[k];
+    snprintf(s.sampling_note, sizeof s.sampling_note, "%s", note);
+    if (out && st == RC_OK) st = rc_output_impacts(out, im.n, im.row, err);
+    else if (out) {
+        rc_error e3;
+        rc_output_impacts(out, im.n, im.row, &e3);
+    }
+    if (st != RC_OK) s.t_end = t; /* how far a failed run got */
+    s.wall_time = wall_now() - wall0;
+    if (tty) fprintf(stderr, "\n");
+    if (out) {
+        rc_error e2;
+        rc_status st2 = rc_output_close(out, &s, st == RC_OK, fail_reason ? fail_reason : err->msg, &e2);
+        if (st == RC_OK && st2) {
+            st = st2;
+            *err = e2;
+        }
+    }
+    if (stats) *stats = s;
+    if (opened) bk->close(self);
+    rc_impacts_free(&im);
+    free(rootdir);
+    free(roots);
+    free(gbuf);
+    free(zeno_t);
+    free(zeno_n);
+    free(flook);
+    free(bp);
+    frame_free(&fb);
+    rc_data_free(d);
+    return st;
+}

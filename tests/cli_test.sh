@@ -265,10 +265,10 @@ else expect export_vtk 0 99 "(exit $rc: $(head -c 200 "$tmp/x"))"; fi
 awk 'NR == 21 {print "                0.03                   0               0.052"; next} {print}' \
     validation/t6_restitution/case.rad > "$tmp/offc.rad"
 "$bin" check "$tmp/offc.rad" > "$tmp/x" 2>&1; rc=$?
-grep -q "off the line of the centres of mass: with the rotations the contact drives 0.5263 kg" "$tmp/x" &&
-    ! "$bin" check validation/t6_restitution/case.rad 2>&1 | grep -q "off the line" &&
+grep -q "m_eff 0.5263 kg" "$tmp/x" && grep -q "m_eff includes the rotations: .* (the translations alone: 1 kg)" "$tmp/x" &&
+    ! "$bin" check validation/t6_restitution/case.rad 2>&1 | grep -q "includes the rotations" &&
     "$bin" check validation/joint_flap_stop/case.rad 2>&1 | grep -q "WARNING: a body of this contact is on a joint" &&
-    expect guidance_effective_mass 0 $rc "(off-centre and jointed contacts warned, the centred one not)" ||
+    expect guidance_effective_mass 0 $rc "(off-centre contact: m_eff with the rotations; jointed contact warned; the centred one plain)" ||
     expect guidance_effective_mass 0 99 "($(grep -i warning "$tmp/x" | head -c 200))"
 "$bin" export-vtk "$tmp/none.nc" > "$tmp/x" 2>&1; rc=$?
 grep -q "none.nc" "$tmp/x" && expect export_vtk_missing 4 $rc "($(head -c 120 "$tmp/x"))" || expect export_vtk_missing 4 99 "(no message)"

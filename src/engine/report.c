@@ -67,58 +67,6 @@ int rc_type6_linear_slope(const rc_model *m, int i, double *k)
     return *k > 0;
 }
 
-/* The mass a unit impulse pair along the normal at the contact point drives
- * at t = 0 when the bodies also turn (free bodies: 1/m on the free
- * translations, J^-1 about the free axes; the body frame is the global one
- * at t = 0) [kg]; INFINITY when nothing moves. Joints are not included. */
-static double point_mass(const rc_model *m, int i, const double *y, const rc_inter_report *r)
-{
-    double inv = 0.0;
-    const int bs[2] = {m->inter_ba[i], m->inter_bb[i]};
-    for (int s = 0; s < 2; s++) {
-        const int b = bs[s];
-        if (b < 0 || m->body_yadr[b] < 0) continue;
-        const double *x = y + m->body_yadr[b], *n = r->normal;
-        const double rv[3] = {r->point[0] - x[0], r->point[1] - x[1], r->point[2] - x[2]};
-        const double c[3] = {rv[1] * n[2] - rv[2] * n[1], rv[2] * n[0] - rv[0] * n[2], rv[0] * n[1] - rv[1] * n[0]};
-        for (int k = 0; k < 3; k++)
-            if (!m->body_dofmask[6 * b + k]) inv += n[k] * n[k] / m->body_mass[b];
-        /* rotation about the free axes: c_F . (J_FF)^-1 c_F (Gauss on <= 3 x 3) */
-        int ax[3], nf = 0;
-        for (int k = 0; k < 3; k++)
-            if (!m->body_dofmask[6 * b + 3 + k]) ax[nf++] = k;
-        double a[3][4];
-        for (int p = 0; p < nf; p++) {
-            for (int q = 0; q < nf; q++) a[p][q] = m->body_J[9 * b + 3 * ax[p] + ax[q]];
-            a[p][nf] = c[ax[p]];
-        }
-        int ok = 1;
-        for (int p = 0; p < nf && ok; p++) {
-            ok = fabs(a[p][p]) > 0.0;
-            for (int q = p + 1; q < nf && ok; q++) {
-                const double f = a[q][p] / a[p][p];
-                for (int k = p; k <= nf; k++) a[q][k] -= f * a[p][k];
-            }
-        }
-        double u[3] = {0.0, 0.0, 0.0};
-        for (int p = nf - 1; p >= 0 && ok; p--) {
-            double v = a[p][nf];
-            for (int q = p + 1; q < nf; q++) v -= a[p][q] * u[q];
-            u[p] = v / a[p][p];
-        }
-        for (int p = 0; p < nf && ok; p++) inv += c[ax[p]] * u[p];
-    }
-    return inv > 0.0 ? 1.0 / inv : INFINITY;
-}
-
-/* Is body b on a joint? */
-static int on_joint(const rc_model *m, int b)
-{
-    for (int j = 0; b >= 0 && m->jnt && j < m->jnt->n; j++)
-        if (m->jnt->ba[j] == b || m->jnt->bb[j] == b) return 1;
-    return 0;
-}
-
 /* Guidance per interface: the gap at t = 0, the effective mass, the natural
  * frequency at the force scale, the damping ratio of Visc, the predicted
  * restitution and contact time (linear contacts), the stable step of an
@@ -137,7 +85,7 @@ static void print_guidance(const rc_model *m, FILE *f)
                     m->inter_inacti[i] == 5 ? "inside each other; Inacti 5 takes it as the gap" : "inside each other: a force at once");
         else
             fprintf(f, "  %-18s gap at t = 0: %.4g m\n", m->inter_name[i], -r.p_raw);
-        const double mr = m->inter_mred[i], ks = m->inter_kscale[i];
+        const double mr = m->inter_mrest[i], ks = m->inter_kscale[i];
         if (!(isfinite(mr) && mr > 0 && isfinite(ks) && ks > 0)) {
             fprintf(f, "  %-18s no effective mass along the normal or no scale: no estimate\n", "");
             continue;
@@ -152,17 +100,13 @@ static void print_guidance(const rc_model *m, FILE *f)
          * of the centres of mass, or on a jointed body, drives another mass
          * (the rotation), and the predictions below (and a derived damping)
          * do not hold for it */
-        const double mp = point_mass(m, i, y, &r);
-        const int jnt = on_joint(m, m->inter_ba[i]) || on_joint(m, m->inter_bb[i]);
-        if (jnt)
+        if (rc_inter_on_joint(m, i))
             fprintf(f, "  %-18s WARNING: a body of this contact is on a joint: m_eff leaves the joint out, the mass the "
                     "contact drives differs (a hinged body hit at r from the hinge: I_h / r^2), and so do the restitution "
                     "and contact time below%s\n", "", m->inter_etarget[i] > 0 ? " and the damping derived from e_target" : "");
-        else if (m->surf_kind[m->inter_sa[i]] != RC_SURF_SEG && m->surf_kind[m->inter_sb[i]] != RC_SURF_SEG &&
-                 isfinite(mp) && fabs(mp - mr) > 1e-3 * mr) /* one point (the several of a segment surface share) */
-            fprintf(f, "  %-18s WARNING: at t = 0 the contact point is off the line of the centres of mass: with the "
-                    "rotations the contact drives %.4g kg, not m_eff; the restitution and contact time below%s differ "
-                    "for an impact there\n", "", mp, m->inter_etarget[i] > 0 ? " and the damping derived from e_target" : "");
+        else if (fabs(m->inter_mrest[i] - m->inter_mred[i]) > 1e-3 * m->inter_mred[i])
+            fprintf(f, "  %-18s m_eff includes the rotations: the contact point at t = 0 is off the line of the centres "
+                    "of mass (the translations alone: %.4g kg)\n", "", m->inter_mred[i]);
         const int curves = m->inter_law[i] == RC_LAW_TYPE6 &&
                            (m->inter_fct_dv[i] >= 0 || m->inter_fct_df[i] >= 0 || m->inter_iform[i] != 0);
         double tau = NAN, e = NAN, tcn = NAN;

@@ -276,7 +276,7 @@ rc_status rc_restitution_derive(rc_model *m, int i, rc_error *err)
 {
     const int pw = m->inter_law[i] == RC_LAW_POWER;
     const char *field = pw ? "e_target (line 6)" : "e_target", *dname = pw ? "C" : "Visc", *why = NULL;
-    const double target = m->inter_etarget[i], meff = m->inter_mred[i];
+    const double target = m->inter_etarget[i], meff = m->inter_mrest[i];
     if (!rc_restitution_supported(m, i, &why))
         return RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field %s: a restitution cannot be asked of a law with %s",
                       RC_LOC(m->inter_loc[i]), m->inter_name[i], field, why);

@@ -36,6 +36,7 @@
 #include "model/coupling.h"
 #include "base/error.h"
 #include "model/imposed.h"
+#include "model/joint.h"
 #include "model/model.h"
 #include "base/progress.h"
 #include "model/power.h"
@@ -298,7 +299,7 @@ static double restitution_gap(double zeta, void *target)
 static rc_status derive_visc(rc_model *m, int i, rc_error *err)
 {
     double target = m->inter_etarget[i], k = 0.0;
-    const double mr = m->inter_mred[i];
+    const double mr = m->inter_mrest[i];
     if (!rc_type6_linear_slope(m, i, &k))
         return RC_SET(err, RC_EINPUT,
                       RC_LOCFMT "card %s, field e_target: a restitution can be asked of a linear load curve only (a straight line "
@@ -334,10 +335,65 @@ static rc_status derive_visc(rc_model *m, int i, rc_error *err)
     return RC_OK;
 }
 
+/* The mass a unit impulse pair along the normal at the contact point drives
+ * at t = 0 when the bodies also turn (free bodies: 1/m on the free
+ * translations, J^-1 about the free axes; the body frame is the global one
+ * at t = 0) [kg]; INFINITY when nothing moves. Joints are not included. */
+double rc_point_mass(const rc_model *m, int i, const double *y, const rc_inter_report *r)
+{
+    double inv = 0.0;
+    const int bs[2] = {m->inter_ba[i], m->inter_bb[i]};
+    for (int s = 0; s < 2; s++) {
+        const int b = bs[s];
+        if (b < 0 || m->body_yadr[b] < 0) continue;
+        const double *x = y + m->body_yadr[b], *n = r->normal;
+        const double rv[3] = {r->point[0] - x[0], r->point[1] - x[1], r->point[2] - x[2]};
+        const double c[3] = {rv[1] * n[2] - rv[2] * n[1], rv[2] * n[0] - rv[0] * n[2], rv[0] * n[1] - rv[1] * n[0]};
+        for (int k = 0; k < 3; k++)
+            if (!m->body_dofmask[6 * b + k]) inv += n[k] * n[k] / m->body_mass[b];
+        /* rotation about the free axes: c_F . (J_FF)^-1 c_F (Gauss on <= 3 x 3) */
+        int ax[3], nf = 0;
+        for (int k = 0; k < 3; k++)
+            if (!m->body_dofmask[6 * b + 3 + k]) ax[nf++] = k;
+        double a[3][4];
+        for (int p = 0; p < nf; p++) {
+            for (int q = 0; q < nf; q++) a[p][q] = m->body_J[9 * b + 3 * ax[p] + ax[q]];
+            a[p][nf] = c[ax[p]];
+        }
+        int ok = 1;
+        for (int p = 0; p < nf && ok; p++) {
+            ok = fabs(a[p][p]) > 0.0;
+            for (int q = p + 1; q < nf && ok; q++) {
+                const double f = a[q][p] / a[p][p];
+                for (int k = p; k <= nf; k++) a[q][k] -= f * a[p][k];
+            }
+        }
+        double u[3] = {0.0, 0.0, 0.0};
+        for (int p = nf - 1; p >= 0 && ok; p--) {
+            double v = a[p][nf];
+            for (int q = p + 1; q < nf; q++) v -= a[p][q] * u[q];
+            u[p] = v / a[p][p];
+        }
+        for (int p = 0; p < nf && ok; p++) inv += c[ax[p]] * u[p];
+    }
+    return inv > 0.0 ? 1.0 / inv : INFINITY;
+}
+
+/* Is body b on a joint? */
+static int on_joint(const rc_model *m, int b)
+{
+    for (int j = 0; b >= 0 && m->jnt && j < m->jnt->n; j++)
+        if (m->jnt->ba[j] == b || m->jnt->bb[j] == b) return 1;
+    return 0;
+}
+
+int rc_inter_on_joint(const rc_model *m, int i) { return on_joint(m, m->inter_ba[i]) || on_joint(m, m->inter_bb[i]); }
+
 rc_status rc_model_scales(rc_model *m, rc_error *err)
 {
     const int n = m->ninter;
-    double **arr[] = {&m->inter_pscale, &m->inter_fscale, &m->inter_kscale, &m->inter_vscale, &m->inter_mred};
+    double **arr[] = {&m->inter_pscale, &m->inter_fscale, &m->inter_kscale, &m->inter_vscale, &m->inter_mred,
+                      &m->inter_mrest};
     for (size_t k = 0; k < sizeof arr / sizeof arr[0]; k++) {
         *arr[k] = malloc(((size_t)n + 1) * sizeof(double));
         if (!*arr[k]) RC_RAISE(err, RC_ENOMEM, "out of memory");
@@ -397,6 +453,15 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         const double mred = isfinite(ma) && isfinite(mb) ? ma * mb / (ma + mb) : isfinite(ma) ? ma : mb;
         const double mmin = fmin(ma, mb);
         m->inter_mred[i] = mred;
+        /* the mass for a derived restitution and the guidance: with the
+         * rotations at a single contact point of free bodies (a segment
+         * surface's several points balance their moments; joints change it
+         * in ways this leaves out, docs/theory.md 12) */
+        const double mp = rc_point_mass(m, i, y, &r);
+        m->inter_mrest[i] = m->surf_kind[m->inter_sa[i]] != RC_SURF_SEG && m->surf_kind[m->inter_sb[i]] != RC_SURF_SEG &&
+                                    !rc_inter_on_joint(m, i) && isfinite(mp) && isfinite(mred)
+                                ? mp
+                                : mred;
         m->inter_pscale[i] = m->inter_fscale[i] = m->inter_kscale[i] = m->inter_vscale[i] = NAN;
         if (!isfinite(mred) && !(r.p_raw > 0)) continue; /* nothing moves along the normal */
         /* speed scale: initial and imposed speeds, fall over the gap */

@@ -238,6 +238,10 @@ struct rc_model {
     double *inter_kscale; /* normal stiffness at p_s [N/m] */
     double *inter_vscale; /* contact speed scale p_s omega_s [m/s] */
     double *inter_mred;   /* reduced mass of the pair [kg] */
+    double *inter_mrest;  /* the mass the contact drives at t = 0: inter_mred, or
+                             with the rotations at the single contact point of
+                             free bodies (rc_point_mass); a derived restitution
+                             uses it [kg] */
 
     /* state vector */
     int ny;
@@ -364,6 +368,12 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
  * in d's present modes; the rest of `val` stays as it was. 0, or -1 when d
  * holds no blocks of `val` (assemble it whole then). */
 int rc_jac_refresh_inter(const rc_model *m, rc_data *d, int i, const double *y, double *val);
+/* The mass a unit normal impulse pair at contact point r->point drives at
+ * the state y when the free bodies also turn (joints left out) [kg];
+ * INFINITY when nothing moves (scales.c). */
+double rc_point_mass(const rc_model *m, int i, const double *y, const rc_inter_report *r);
+/* Is a body of interface i on a joint? (scales.c) */
+int rc_inter_on_joint(const rc_model *m, int i);
 /* Root functions, in this order: RC_ROOTS_PER_INTER per interface; one slip
  * root per contact point with friction (inter_npt, at rc_root_point_base);
  * the contact couplings' (at rc_root_cpl_base; coupling_contact.h). */

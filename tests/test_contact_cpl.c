@@ -114,25 +114,31 @@ static void test_contact_cpl_roots(void)
     rc_model_free(m);
 }
 
+/* A 2 kg plate (four nodes, its bottom a /SURF/SEG of area 0.04 m^2) above
+ * a floor, /COUPLING/CONTACT with Iest 1, d0 = 0.01 m: the deck up to the
+ * estimator line (V_imp, d_min, zeta, A), which the tests append. */
+#define ESTIMATOR_DECK_HEAD \
+    "/BEGIN\nestimators\n      2022         0\n                  kg                   m                   s\n" \
+    "                  kg                   m                   s\n" \
+    "/NODE\n         1                   0                   0                0.02\n" \
+    "        10                -0.1                -0.1                0.02\n" \
+    "        11                 0.1                -0.1                0.02\n" \
+    "        12                 0.1                 0.1                0.02\n" \
+    "        13                -0.1                 0.1                0.02\n" \
+    "/GRNOD/NODE/1\nplate\n        10        11        12        13\n" \
+    "/RBODY/1\nplate\n         1                                                 2         1\n" \
+    "                0.01                0.01                0.02\n                   0                   0                   0\n" \
+    "/SURF/SEG/5\nbottom\n         1        10        11        12        13\n" \
+    "/SURF/PLANE/2\nfloor\n                   0                   0                   0\n" \
+    "                   0                   0                   1\n" \
+    "/COUPLING/CONTACT/1\nestimated\n         5         2         0         1\n                0.01\n"
+
 /* The estimators: k1 = m v^2 / (A (d0 - d_min)^2), k2 = 2 zeta sqrt(m k1 / A),
  * tau = (pi/2) sqrt(m / (A k1)). */
 static void test_contact_cpl_estimators(void)
 {
     static const char *deck =
-        "/BEGIN\nestimators\n      2022         0\n                  kg                   m                   s\n"
-        "                  kg                   m                   s\n"
-        "/NODE\n         1                   0                   0                0.02\n"
-        "        10                -0.1                -0.1                0.02\n"
-        "        11                 0.1                -0.1                0.02\n"
-        "        12                 0.1                 0.1                0.02\n"
-        "        13                -0.1                 0.1                0.02\n"
-        "/GRNOD/NODE/1\nplate\n        10        11        12        13\n"
-        "/RBODY/1\nplate\n         1                                                 2         1\n"
-        "                0.01                0.01                0.02\n                   0                   0                   0\n"
-        "/SURF/SEG/5\nbottom\n         1        10        11        12        13\n"
-        "/SURF/PLANE/2\nfloor\n                   0                   0                   0\n"
-        "                   0                   0                   1\n"
-        "/COUPLING/CONTACT/1\nestimated\n         5         2         0         1\n                0.01\n"
+        ESTIMATOR_DECK_HEAD
         "                   3               0.002                 0.1                0.04\n"
         "/RUN\n                0.05               0.001\n/END\n";
     rc_error e;
@@ -153,20 +159,7 @@ static void test_contact_cpl_estimators(void)
 static void test_contact_cpl_check_prints_estimators(void)
 {
     static const char *deck =
-        "/BEGIN\nestimators\n      2022         0\n                  kg                   m                   s\n"
-        "                  kg                   m                   s\n"
-        "/NODE\n         1                   0                   0                0.02\n"
-        "        10                -0.1                -0.1                0.02\n"
-        "        11                 0.1                -0.1                0.02\n"
-        "        12                 0.1                 0.1                0.02\n"
-        "        13                -0.1                 0.1                0.02\n"
-        "/GRNOD/NODE/1\nplate\n        10        11        12        13\n"
-        "/RBODY/1\nplate\n         1                                                 2         1\n"
-        "                0.01                0.01                0.02\n                   0                   0                   0\n"
-        "/SURF/SEG/5\nbottom\n         1        10        11        12        13\n"
-        "/SURF/PLANE/2\nfloor\n                   0                   0                   0\n"
-        "                   0                   0                   1\n"
-        "/COUPLING/CONTACT/1\nestimated\n         5         2         0         1\n                0.01\n"
+        ESTIMATOR_DECK_HEAD
         "                   1               0.002                 0.1                0.04\n"
         "/RUN\n                0.05                0.01\n/END\n";
     rc_error e;

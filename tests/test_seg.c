@@ -244,6 +244,18 @@ static void test_seg_force_distribution(void)
 /* ---- Jacobian ---------------------------------------------------------- */
 
 
+/* A generic state of a two-body model: the initial state with bodies 1 and
+ * 2 set to s[0..12] and s[13..25] (position, quaternion, velocity, angular
+ * velocity), every later state 0.013 (k - 25). The caller frees it. */
+static double *two_body_state(const rc_model *m, const double s[26])
+{
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    rc_initial_state(m, y);
+    for (int b = 0; b < 2; b++) memcpy(y + m->body_yadr[b], s + 13 * b, 13 * sizeof(double));
+    for (int k = 26; k < m->ny; k++) y[k] = 0.013 * (k - 25);
+    return y;
+}
+
 /* The box on a tilted plate carried by a second free body, nonlinear load
  * curve with Visc and both damping curves, Iform 1 with an unload curve and
  * Inacti 5: every mode, against central differences. */
@@ -274,12 +286,9 @@ static void seg_jacobian_check(int box, int fric)
     }
     ENSURE(m->inter_pair[0] == (box == 2 ? RC_PAIR_SEG_SEG : box ? RC_PAIR_SEG_BOX : RC_PAIR_SEG_PLANE));
     rc_data *d = rc_data_new(m);
-    double *y = calloc((size_t)m->ny, sizeof(double));
-    rc_initial_state(m, y);
     const double s[26] = {0.0013, -0.0011, 0.0312, 0.97, 0.011, -0.013, 0.007, 0.31, -0.23, -0.17, 3.1, -2.3, 4.7,
                           0.0021, 0.0007, -0.2003, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
-    for (int b = 0; b < 2; b++) memcpy(y + m->body_yadr[b], s + 13 * b, 13 * sizeof(double));
-    for (int k = 26; k < m->ny; k++) y[k] = 0.013 * (k - 25);
+    double *y = two_body_state(m, s);
     y[m->inter_eadr[0] + m->inter_hidx[0]] = 731.0;
     y[m->inter_eadr[0] + m->inter_oidx[0]] = 3.7e-4;
     rc_inter_report r;
@@ -362,12 +371,9 @@ static void test_seg_power_jacobian_matches_finite_differences(void)
     }
     ENSURE(m->inter_pair[0] == RC_PAIR_SEG_PLANE && m->inter_law[0] == RC_LAW_POWER);
     rc_data *d = rc_data_new(m);
-    double *y = calloc((size_t)m->ny, sizeof(double));
-    rc_initial_state(m, y);
     const double s[26] = {0.0013, -0.0011, 0.0312, 0.97, 0.011, -0.013, 0.007, 0.31, -0.23, -0.17, 3.1, -2.3, 4.7,
                           0.0021, 0.0007, -0.2003, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
-    for (int b = 0; b < 2; b++) memcpy(y + m->body_yadr[b], s + 13 * b, 13 * sizeof(double));
-    for (int k = 26; k < m->ny; k++) y[k] = 0.013 * (k - 25);
+    double *y = two_body_state(m, s);
     rc_inter_report r;
     rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
     ENSURE(r.p > 0);
@@ -447,12 +453,9 @@ static void test_seg_cyl_jacobian_matches_finite_differences(void)
     }
     ENSURE(m->inter_pair[0] == RC_PAIR_CYL_SEG);
     rc_data *d = rc_data_new(m);
-    double *y = calloc((size_t)m->ny, sizeof(double));
-    rc_initial_state(m, y);
     const double s[26] = {0.0003, -0.0002, 0.0301, 0.999, 0.011, -0.013, 0.007, 0.21, -0.13, -0.17, 1.1, -0.3, 0.7,
                           0.0102, 0.0027, 0.0783, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 13.7, 2.2};
-    for (int b = 0; b < 2; b++) memcpy(y + m->body_yadr[b], s + 13 * b, 13 * sizeof(double));
-    for (int k = 26; k < m->ny; k++) y[k] = 0.013 * (k - 25);
+    double *y = two_body_state(m, s);
     rc_inter_report r;
     rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
     ENSURE(r.p > 0 && r.p < 0.004);
@@ -504,12 +507,9 @@ static void test_seg_sphere_jacobian_matches_finite_differences(void)
     }
     ENSURE(m->inter_pair[0] == RC_PAIR_SPHERE_SEG);
     rc_data *d = rc_data_new(m);
-    double *y = calloc((size_t)m->ny, sizeof(double));
-    rc_initial_state(m, y);
     const double s[26] = {0.0011, -0.0023, 0.0497, 0.99, 0.011, -0.013, 0.007, 0.31, -0.23, -0.17, 3.1, -2.3, 4.7,
                           0.0021, 0.0007, -0.2003, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
-    for (int b = 0; b < 2; b++) memcpy(y + m->body_yadr[b], s + 13 * b, 13 * sizeof(double));
-    for (int k = 26; k < m->ny; k++) y[k] = 0.013 * (k - 25);
+    double *y = two_body_state(m, s);
     y[m->inter_eadr[0] + m->inter_hidx[0]] = 731.0;
     y[m->inter_eadr[0] + m->inter_oidx[0]] = 3.7e-4;
     rc_inter_report r;

@@ -74,12 +74,10 @@ double rc_friction_mu(const rc_model *m, int i, int dir, double p, double v, dou
     return fric_mu_r(m, &m->inter_fr[i], dir, p, v, fn, i);
 }
 
-static void report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, const int *pslip,
-                        const double *y, rc_inter_report *r)
+/* The report of an interface from its kernel's quantities. */
+static void report_of(const t6out_r *po, rc_inter_report *r)
 {
-    t6out_r o;
-    type6_r(m, i, mode, branch, track, slip, pslip, rc_body_state(m, m->inter_ba[i], y),
-            rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, NULL, NULL);
+    const t6out_r o = *po;
     r->p = o.p;
     r->vn = o.vn;
     r->p_raw = o.p_raw;
@@ -105,18 +103,29 @@ static void report_eval(const rc_model *m, int i, int mode, int branch, int trac
     }
 }
 
+/* ncache: the node geometry cache of a node pair (rc_data.node_cache), NULL:
+ * none (each pass over the points computes their geometry again) */
+static void report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, const int *pslip,
+                        const double *y, rc_inter_report *r, void *ncache)
+{
+    t6out_r o;
+    type6_r(m, i, mode, branch, track, slip, pslip, rc_body_state(m, m->inter_ba[i], y),
+            rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, NULL, ncache);
+    report_of(&o, r);
+}
+
 void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, double t,
                           const double *y, rc_inter_report *r)
 {
     (void)t;
-    report_eval(m, i, mode, branch, track, slip, NULL, y, r);
+    report_eval(m, i, mode, branch, track, slip, NULL, y, r, NULL);
 }
 
 void rc_inter_report_eval_d(const rc_model *m, const rc_data *d, int i, double t, const double *y, rc_inter_report *r)
 {
     (void)t;
     report_eval(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
-                d->pt_slip + m->inter_pbase[i], y, r);
+                d->pt_slip + m->inter_pbase[i], y, r, d->node_cache);
 }
 
 void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip, double t, const double *y, double *out)
@@ -155,8 +164,10 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
                     rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i],
                     NULL, NULL, NULL, &o, pout, d->node_cache);
             for (int j = 0; j < npt; j++) gp[j] = pout[5 * j];
+            report_of(&o, &r); /* the same evaluation as rc_inter_report_eval_d */
+        } else {
+            rc_inter_report_eval_d(m, d, i, t, y, &r);
         }
-        rc_inter_report_eval_d(m, d, i, t, y, &r);
         /* friction: stick -> slip at the limit, slip -> stick when sliding stops */
         if (mode == RC_MODE_CLOSED && m->inter_fr[i].kind != RC_FK_NONE) gi[RC_ROOT_SLIP] = r.slip_root;
         /* saturated stateless law: its force -L v_t/|v_t| flips when the sliding

@@ -287,6 +287,78 @@ done:
 
 /* ---- adjacency and broad-phase grid ------------------------------------ */
 
+/* The node grid of surface s (segsurf.h, rc_segmesh.ncadr): the cells of
+ * the broad-phase grid, each segment over its widened box. */
+static rc_status node_grid(const rc_model *m, int s, rc_segmesh *g, int ncell, rc_error *err)
+{
+    const double *x = m->surf_node + 3 * m->surf_nadr[s];
+    const int *seg = m->surf_seg + 4 * m->surf_sadr[s];
+    /* rounding of coordinates far from the origin */
+    double big = 0.0;
+    for (int k = 0; k < 3; k++) big = fmax(big, fmax(fabs(g->lo[k]), fabs(g->lo[k] + g->dim[k] * g->h)));
+    int *rng = malloc((size_t)(6 * g->ns + 1) * sizeof(int));
+    g->ncadr = calloc((size_t)ncell + 1, sizeof(int));
+    if (!rng || !g->ncadr) {
+        free(rng);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    for (int q = 0; q < g->ns; q++) {
+        const int *v = seg + 4 * q, nc = v[3] == v[2] ? 3 : 4;
+        const double *c = g->scen + 3 * q, *n = g->snrm + 3 * q, *bx = g->sbox + 6 * q;
+        double warp = 0.0, ext = 0.0;
+        int convex = n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0;
+        for (int j = 0; j < nc; j++) {
+            const double *p = x + 3 * v[j], *p0 = x + 3 * v[(j + nc - 1) % nc], *p1 = x + 3 * v[(j + 1) % nc];
+            double a[3], b[3];
+            for (int k = 0; k < 3; k++) {
+                a[k] = p[k] - p0[k];
+                b[k] = p1[k] - p[k];
+            }
+            const double turn = (a[1] * b[2] - a[2] * b[1]) * n[0] + (a[2] * b[0] - a[0] * b[2]) * n[1] +
+                                (a[0] * b[1] - a[1] * b[0]) * n[2];
+            convex &= turn > 0.0;
+            warp = fmax(warp, fabs((p[0] - c[0]) * n[0] + (p[1] - c[1]) * n[1] + (p[2] - c[2]) * n[2]));
+        }
+        for (int k = 0; k < 3; k++) ext = fmax(ext, bx[3 + k] - bx[k]);
+        /* the edge tolerance of the foot test and rounding, amply */
+        const double tol = 1e-6 * ext + 1e-12 * big;
+        for (int k = 0; k < 3; k++) {
+            const double e = (convex ? (g->depth + warp) * fabs(n[k]) : g->depth) + tol;
+            int a = (int)floor((bx[k] - e - g->lo[k]) / g->h), b = (int)floor((bx[3 + k] + e - g->lo[k]) / g->h);
+            if (a < 0) a = 0;
+            if (b > g->dim[k] - 1) b = g->dim[k] - 1;
+            if (a > b) a = b + 1; /* wholly outside (not entered) */
+            rng[6 * q + 2 * k] = a;
+            rng[6 * q + 2 * k + 1] = b;
+        }
+    }
+    for (int pass = 0; pass < 2; pass++) {
+        for (int q = 0; q < g->ns; q++) {
+            const int *r = rng + 6 * q;
+            for (int i = r[0]; i <= r[1]; i++)
+                for (int j = r[2]; j <= r[3]; j++)
+                    for (int l = r[4]; l <= r[5]; l++) {
+                        const int c = (i * g->dim[1] + j) * g->dim[2] + l;
+                        if (pass == 0) g->ncadr[c + 1]++;
+                        else g->ncseg[g->ncadr[c]++] = q;
+                    }
+        }
+        if (pass == 0) {
+            for (int c = 0; c < ncell; c++) g->ncadr[c + 1] += g->ncadr[c];
+            g->ncseg = malloc((size_t)g->ncadr[ncell] * sizeof(int) + sizeof(int));
+            if (!g->ncseg) {
+                free(rng);
+                RC_RAISE(err, RC_ENOMEM, "out of memory");
+            }
+        } else {
+            for (int c = ncell; c > 0; c--) g->ncadr[c] = g->ncadr[c - 1];
+            g->ncadr[0] = 0;
+        }
+    }
+    free(rng);
+    return RC_OK;
+}
+
 static rc_status seg_mesh(rc_model *m, int s, rc_segmesh *g, rc_error *err)
 {
     const int n0 = m->surf_nadr[s], s0 = m->surf_sadr[s];
@@ -403,7 +475,7 @@ static rc_status seg_mesh(rc_model *m, int s, rc_segmesh *g, rc_error *err)
             g->cadr[0] = 0;
         }
     }
-    return RC_OK;
+    return node_grid(m, s, g, ncell, err);
 }
 
 rc_status rc_seg_meshes(rc_model *m, rc_error *err)
@@ -431,6 +503,8 @@ void rc_seg_free(rc_model *m)
         free(g->snrm);
         free(g->cadr);
         free(g->cseg);
+        free(g->ncadr);
+        free(g->ncseg);
     }
     free(m->surf_mesh);
     m->surf_mesh = NULL;

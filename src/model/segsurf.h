@@ -29,6 +29,14 @@ typedef struct rc_segmesh {
     double *scen, *snrm; /* [3 ns]: centre of segment k [m] and its unit normal [-]
                             ((x2 - x0) x (x3 - x1), a triangle (x1 - x0) x (x2 - x0)) */
     double depth;        /* search depth: half the mean segment extent [m] */
+    /* node grid (node to segment at the search depth): the same cells,
+     * each segment entered over its box widened by what a point within
+     * depth of its plane, whose foot is inside it, can lie outside the box:
+     * (depth + warp) |n_j| along axis j, warp the largest distance of a
+     * corner from the plane through the centre (the whole box widened by
+     * depth along every axis when its outline, projected on that plane, is
+     * not convex); so the cell of the point alone holds every candidate */
+    int *ncadr, *ncseg;  /* [ncell + 1]: segments of cell c at ncseg[ncadr[c] .. ncadr[c+1]) */
 } rc_segmesh;
 
 /* Contact points of interface i whose points are nodes (rc_pair_nodes): the

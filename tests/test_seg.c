@@ -142,10 +142,17 @@ static void test_seg_read_errors(void)
         ENSURE(m && m->inter_pair[0] == RC_PAIR_CYL_SEG && m->inter_npt[0] == 0);
         rc_model_free(m);
     }
-    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS "/NODE\n2,0,0,-0.2\n/RBODY/2\nball\n2,,,,5.0\n0.1,0.1,0.1\n0,0,0\n"
-                     "/SURF/ELLIPS/40\ns\n0,2,2\n0,0,-0.2\n0.1,0.1,0.1\n" LINEAR
-                     "/INTER/TYPE6/1\nball on box\n40,30\n,0.3\n\n1\n\n\n" RUN_TAIL,
-                     "card /INTER/TYPE6/1", "friction between a sphere and a segment surface: not supported yet");
+    /* a sphere against a segment surface with friction: the interface's
+     * tangential state, no points */
+    {
+        rc_error e;
+        rc_model *m = seg_compile(BOX_NODES BOX_BODY BOX_SEGS "/NODE\n2,0,0,-0.2\n/RBODY/2\nball\n2,,,,5.0\n0.1,0.1,0.1\n"
+                                  "0,0,0\n/SURF/ELLIPS/40\ns\n0,2,2\n0,0,-0.2\n0.1,0.1,0.1\n" LINEAR
+                                  "/INTER/TYPE6/1\nball on box\n40,30\n,0.3\n\n1\n\n\n" RUN_TAIL,
+                                  &e);
+        ENSURE(m && m->inter_pair[0] == RC_PAIR_SPHERE_SEG && m->inter_npt[0] == 0 && m->inter_fr[0].tidx >= 0);
+        rc_model_free(m);
+    }
     EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS FLOOR "/INTER/POWER/1\np\n30,40\n1e6,1\n\n0.3,0.01,0.2,0.05\n" RUN_TAIL,
                      ":36:", "card /INTER/POWER/1", "fields mu_s/mu_d", "step5 friction on a segment surface",
                      "not supported yet");
@@ -536,6 +543,65 @@ static void test_seg_sphere_jacobian_matches_finite_differences(void)
     rc_model_free(m);
 }
 
+/* A sphere with friction (TYPE6 Fric, the interface's tangential state)
+ * against the valley of the previous test: its deepest point a face point
+ * (in the valley), an edge point (beyond the valley's outer edge between
+ * nodes 15 and 16) and a node point (beyond node 15), each closed in stick
+ * and slip, against central differences (the normal's rate of each kind). */
+static void test_seg_sphere_friction_jacobian(void)
+{
+    rc_error e;
+    rc_model *m = seg_compile("/NODE\n1,0.001,-0.002,0.05\n2,0,0,-0.2\n"
+                              "10,-0.2,-0.2,0.06\n11,0.2,-0.2,0.06\n12,0.2,0,0\n13,-0.2,0,0\n14,0.2,0.2,0.06\n"
+                              "15,-0.2,0.2,0.06\n16,0,0.2,0.06\n"
+                              "/GRNOD/NODE/8\nplate\n10,11,12,13,14,15,16\n"
+                              "/RBODY/1\nball\n1,,,,0.731\n2.1e-3,1.7e-3,2.9e-3\n1.3e-4,-2.2e-4,0.7e-4\n"
+                              "/RBODY/2\nvalley\n2,,,,5.0,8\n0.11,0.13,0.2\n0.01,0,0\n"
+                              "/SURF/ELLIPS/20\nball\n0,2,1\n0.0017,-0.0011,0.0521\n0.05,0.05,0.05\n"
+                              "/SURF/SEG/40\nvalley\n1,10,11,12,13\n2,13,12,16\n3,12,14,16\n4,13,16,15\n"
+                              "/FUNCT/1\nload\n-0.01,-3.1e3\n0,0\n0.0013,2.71e3\n0.0041,1.37e4\n0.0097,5.9e4\n"
+                              "/INTER/TYPE6/1\nball in the valley\n40,20\n,0.3,0.0011\n\n1\n\n730\n" RUN_TAIL,
+                              &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    ENSURE(m->inter_pair[0] == RC_PAIR_SPHERE_SEG && m->inter_fr[0].tidx >= 0);
+    rc_data *d = rc_data_new(m);
+    /* body 1 positions: the sphere's centre is 0.0007, 0.0009, 0.0021 from it */
+    const double at[3][3] = {{0.0011, -0.0023, 0.0497}, {-0.1, 0.2307, 0.0934}, {-0.2229, 0.2257, 0.0884}};
+    const char *what[3] = {"face", "edge", "node"};
+    int bad = 0, outside = 0, combos = 0;
+    double maxerr = 0;
+    for (int g = 0; g < 3; g++) {
+        double s[26] = {0, 0, 0, 0.99, 0.011, -0.013, 0.007, 0.31, -0.23, -0.17, 3.1, -2.3, 4.7,
+                        0.0021, 0.0007, -0.2003, 1.0, -0.001, 0.002, 0.001, -0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
+        for (int k = 0; k < 3; k++) s[k] = at[g][k];
+        double *y = two_body_state(m, s);
+        rc_inter_report r;
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+        ENSURE(r.p > 0);
+        double err = 0;
+        for (int sl = 0; sl < 2; sl++) {
+            d->inter_mode[0] = RC_MODE_CLOSED;
+            d->inter_slip[0] = sl;
+            err = fmax(err, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
+            combos++;
+        }
+        printf("    sphere-segments friction jacobian, %s point: P = %.3g m, normal %.3f %.3f %.3f, max scaled "
+               "|J - FD| = %.2e\n", what[g], r.p, r.normal[0], r.normal[1], r.normal[2], err);
+        maxerr = fmax(maxerr, err);
+        free(y);
+    }
+    printf("    sphere-segments friction jacobian: %d states, %d combinations, max scaled |J - FD| = %.2e\n", m->ny,
+           combos, maxerr);
+    ENSURE(bad == 0);
+    ENSURE(outside == 0);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 /* A sphere at rest in a symmetric V valley (fixed): two face points at the
  * same depth share F = k P equally; the force on the sphere is vertical,
  * 2 (F / 2) cos(alpha) with alpha the slope angle, and without moment. */
@@ -596,4 +662,5 @@ void suite_seg(void)
     RUN_TEST(test_seg_power_jacobian_matches_finite_differences);
     RUN_TEST(test_seg_sphere_valley_forces);
     RUN_TEST(test_seg_sphere_jacobian_matches_finite_differences);
+    RUN_TEST(test_seg_sphere_friction_jacobian);
 }

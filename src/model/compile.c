@@ -414,11 +414,10 @@ static rc_status check_seg_pairs(const rc_case *c, rc_model *m, rc_error *err)
         const rc_loc loc = c->type6[i].line_loc[1];
         const rc_fric *fr = &m->inter_fr[i];
         if (fr->kind == RC_FK_NONE) continue;
-        /* friction per contact point: the nodes against a plane or a box,
-         * incremental form, no filter */
-        if (m->inter_pair[i] == RC_PAIR_SPHERE_SEG)
-            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields Sfric/Fric (or a /FRICTION card naming its parts): friction between a sphere and a segment surface: not supported yet (supported: a segment surface against a plane or a box)",
-                     RC_LOC(loc), m->inter_name[i]);
+        /* friction per contact point (the nodes of a segment surface):
+         * incremental form, no filter; a sphere against segments has the
+         * interface's friction at its deepest point (docs/theory.md 2.7) */
+        if (!rc_pair_nodes(m->inter_pair[i])) continue;
         if (fr->form != RC_FF_INCREMENTAL)
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s: friction on a segment surface with the viscous formulation (/FRICTION/%d, Iform 1): not supported yet (supported: the incremental formulation, Iform 2, and TYPE6's own Fric)",
                      RC_LOC(loc), m->inter_name[i], fr->card_id);

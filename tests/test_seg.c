@@ -153,6 +153,9 @@ static void test_seg_read_errors(void)
         ENSURE(m && m->inter_pair[0] == RC_PAIR_SPHERE_SEG && m->inter_npt[0] == 0 && m->inter_fr[0].tidx >= 0);
         rc_model_free(m);
     }
+    /* friction per node: a filter only with the viscous form */
+    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS FLOOR LINEAR T6 "/FRICTION/1\nfiltered\n0,3,50,2\n\n,0.3\n" RUN_TAIL,
+                     "card /INTER/TYPE6/1", "with a filter", "incremental formulation", "not supported yet");
     EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS FLOOR "/INTER/POWER/1\np\n30,40\n1e6,1\n\n0.3,0.01,0.2,0.05\n" RUN_TAIL,
                      ":36:", "card /INTER/POWER/1", "fields mu_s/mu_d", "step5 friction on a segment surface",
                      "not supported yet");
@@ -270,7 +273,7 @@ static void seg_jacobian_check(int box, int fric)
 {
     rc_error e;
     char deck[8192];
-    snprintf(deck, sizeof deck, "%s%s%s%s%s%s", BOX_NODES BOX_BODY BOX_SEGS,
+    snprintf(deck, sizeof deck, "%s%s%s%s%s%s%s", BOX_NODES BOX_BODY BOX_SEGS,
              box == 2 ? "/NODE\n2,0,0,-0.2\n/RBODY/2\nplate\n2,,,,5.0,8\n0.11,0.13,0.2\n0.01,0,0\n"
                       : "/NODE\n2,0,0,-0.2\n/RBODY/2\nplate\n2,,,,5.0\n0.11,0.13,0.2\n0.01,0,0\n",
              box == 2 ? "/NODE\n20,-0.3,-0.2,-0.1\n21,0.3,-0.2,-0.1\n22,0.3,0.2,-0.1\n23,-0.3,0.2,-0.1\n24,-0.3,-0.2,0.0011\n"
@@ -284,7 +287,11 @@ static void seg_jacobian_check(int box, int fric)
              "/FUNCT/3\ndv\n-10,-41\n0,0\n0.37,5.3\n3.3,71\n/FUNCT/4\ndf\n0,1\n500,0.83\n9e4,0.61\n",
              fric ? "/INTER/TYPE6/1\nbox on plate\n30,40\n0.7,0.37,0.0011\n,,,5,,,1.9,0.61\n1,1,1.3,0.77\n"
                   : "/INTER/TYPE6/1\nbox on plate\n30,40\n,,0.0011\n,,,5,,,1.9,0.61\n1,1,1.3,0.77\n",
-             "2,,7.3e6,0.83\n3.7,3,4,2.3\n" RUN_TAIL);
+             "2,,7.3e6,0.83\n3.7,3,4,2.3\n",
+             /* 2, 3: the viscous form (Iform 1), 3 with a filter (Ifiltr 3) */
+             fric == 2   ? "/FRICTION/1\nviscous\n0,0,,1\n\n,0.37,0.8\n" RUN_TAIL
+             : fric == 3 ? "/FRICTION/1\nviscous, filtered\n0,3,50,1\n\n,0.37,0.8\n" RUN_TAIL
+                         : RUN_TAIL);
     rc_model *m = seg_compile(deck, &e);
     ENSURE(m != NULL);
     if (!m) {
@@ -292,6 +299,7 @@ static void seg_jacobian_check(int box, int fric)
         return;
     }
     ENSURE(m->inter_pair[0] == (box == 2 ? RC_PAIR_SEG_SEG : box ? RC_PAIR_SEG_BOX : RC_PAIR_SEG_PLANE));
+    ENSURE(fric < 2 || (m->inter_fr[0].form == RC_FF_VISCOUS && (fric == 3) == (m->inter_fr[0].tau > 0)));
     rc_data *d = rc_data_new(m);
     const double s[26] = {0.0013, -0.0011, 0.0312, 0.97, 0.011, -0.013, 0.007, 0.31, -0.23, -0.17, 3.1, -2.3, 4.7,
                           0.0021, 0.0007, -0.2003, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
@@ -343,8 +351,10 @@ static void seg_jacobian_check(int box, int fric)
                     maxerr = fmax(maxerr, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
                     combos++;
                 }
+    const char *fname[4] = {"", " with friction per point", " with viscous friction per point",
+                            " with filtered viscous friction per point"};
     printf("    %s%s jacobian: P = %.3g m (%d nodes past the plate; -1: not counted), %d states, %lld nonzeros, %d mode combinations, max scaled |J - FD| "
-           "= %.2e\n", box == 2 ? "segments-segments" : box ? "segments-box" : "segments-plane", fric ? " with friction per point" : "", r.p, npen, m->ny, (long long)m->nnz, combos, maxerr);
+           "= %.2e\n", box == 2 ? "segments-segments" : box ? "segments-box" : "segments-plane", fname[fric], r.p, npen, m->ny, (long long)m->nnz, combos, maxerr);
     ENSURE(bad == 0);
     ENSURE(outside == 0);
     free(y);
@@ -358,6 +368,11 @@ static void test_seg_friction_jacobian_matches_finite_differences(void) { seg_ja
 static void test_seg_box_friction_jacobian_matches_finite_differences(void) { seg_jacobian_check(1, 1); }
 static void test_seg_seg_jacobian_matches_finite_differences(void) { seg_jacobian_check(2, 0); }
 static void test_seg_seg_friction_jacobian_matches_finite_differences(void) { seg_jacobian_check(2, 1); }
+static void test_seg_viscous_friction_jacobian(void)
+{
+    seg_jacobian_check(0, 2);
+    seg_jacobian_check(2, 3);
+}
 
 /* The power law on a segment surface (the box on a tilted plate carried by
  * a moving body): F = K P^m1 at the deepest node, its damping C v^m2 P^m3 at
@@ -663,4 +678,5 @@ void suite_seg(void)
     RUN_TEST(test_seg_sphere_valley_forces);
     RUN_TEST(test_seg_sphere_jacobian_matches_finite_differences);
     RUN_TEST(test_seg_sphere_friction_jacobian);
+    RUN_TEST(test_seg_viscous_friction_jacobian);
 }

@@ -155,7 +155,13 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
         sel[j] = roots ? roots[j] != 0 : !sl[j] && out[5 * j] > 0;
         n += sel[j];
     }
-    if (n > 0) {
+    /* the viscous form has no tangential state (a filter's state, if any,
+     * goes on): only the modes flip */
+    if (n > 0 && m->inter_fr[i].form != RC_FF_INCREMENTAL) {
+        for (int j = 0; j < npt; j++)
+            if (sel[j]) sl[j] = !sl[j];
+        *changed = 1;
+    } else if (n > 0) {
         double *ft = y + m->inter_eadr[i] + m->inter_ns[i];
         rc_points_eval(m, d, i, NULL, t, y, out);
         for (int j = 0; j < npt; j++)

@@ -415,14 +415,11 @@ static rc_status check_seg_pairs(const rc_case *c, rc_model *m, rc_error *err)
         const rc_fric *fr = &m->inter_fr[i];
         if (fr->kind == RC_FK_NONE) continue;
         /* friction per contact point (the nodes of a segment surface):
-         * incremental form, no filter; a sphere against segments has the
+         * a filter only with the viscous form; a sphere against segments has the
          * interface's friction at its deepest point (docs/theory.md 2.7) */
         if (!rc_pair_nodes(m->inter_pair[i])) continue;
-        if (fr->form != RC_FF_INCREMENTAL)
-            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s: friction on a segment surface with the viscous formulation (/FRICTION/%d, Iform 1): not supported yet (supported: the incremental formulation, Iform 2, and TYPE6's own Fric)",
-                     RC_LOC(loc), m->inter_name[i], fr->card_id);
-        if (fr->tau > 0)
-            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s: friction on a segment surface with a filter (/FRICTION/%d, Ifiltr): not supported yet",
+        if (fr->tau > 0 && fr->form == RC_FF_INCREMENTAL)
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s: friction per contact point (a segment surface's nodes) with a filter (/FRICTION/%d, Ifiltr) and the incremental formulation (Iform 2 or 0): not supported yet (supported: the filter with the viscous formulation, Iform 1)",
                      RC_LOC(loc), m->inter_name[i], fr->card_id);
     }
     return RC_OK;

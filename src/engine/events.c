@@ -40,7 +40,15 @@ rc_data *rc_data_new(const rc_model *m)
     int maxnode = 0;
     for (int i = 0; i < m->ninter; i++)
         if (rc_pair_nodes(m->inter_pair[i]) && rc_seg_points(m, i) > maxnode) maxnode = rc_seg_points(m, i);
-    d->node_cache = calloc(2 * RC_NODE_CACHE * (size_t)maxnode + 2, sizeof(double));
+    {
+        /* the hints, then the node cache (its offset a multiple of 16 bytes) */
+        const size_t nh = (size_t)rc_seg_hint_len(m);
+        d->seg_hint = calloc(nh * sizeof(int) + (2 * RC_NODE_CACHE * (size_t)maxnode + 2) * sizeof(double), 1);
+        if (d->seg_hint) {
+            for (size_t k = 0; k < nh; k++) d->seg_hint[k] = -1;
+            d->node_cache = d->seg_hint + nh;
+        }
+    }
     d->pt_slip = calloc((size_t)m->npt + 1, sizeof(int));
     d->pt_work = calloc(5 * (size_t)maxpt + 4 * ((size_t)RC_NS_MAX + 3 * (size_t)maxpt) + 16, sizeof(double));
     int imp_ok = 1;
@@ -84,7 +92,7 @@ void rc_data_free(rc_data *d)
     free(d->inter_band);
     free(d->pt_slip);
     free(d->pt_work);
-    free(d->node_cache);
+    free(d->seg_hint); /* and the node cache */
     rc_cpl_data_free(d->cpl);
     free(d->imp_free);
     free(d->imp_scratch);

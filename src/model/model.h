@@ -290,7 +290,10 @@ typedef struct rc_data {
     int *pt_slip;        /* [npt] friction per contact point: 0 stick, 1 slip */
     void *pt_work;       /* Jacobian scratch of the contact points (complex) */
     void *node_cache;    /* node geometry of a node pair, RC_NODE_CACHE complex
-                            values per point (kernels.inc, seg_fill) */
+                            values per point (kernels.inc, seg_fill); it
+                            follows seg_hint in one allocation */
+    int *seg_hint;       /* [rc_seg_hint_len] the segment each surface node met
+                            last, -1: none (geom_seg.inc, node_seg) */
     double *inter_dref;  /* [ninter*3] sliding direction when a stateless friction
                             law saturated (reversal root) [-] */
     double *inter_band;  /* [ninter*2] touch bands of a contact closed at zero

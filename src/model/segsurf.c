@@ -287,6 +287,40 @@ done:
 
 /* ---- adjacency and broad-phase grid ------------------------------------ */
 
+/* 1 when segment q is flat (its corners within 1e-12 of its extent of the
+ * plane through its centre), non-degenerate and convex; *slack (not NULL):
+ * how far outside it the foot test's edge tolerance lets a point lie,
+ * 1e-9 of its longest edge over sin(half its sharpest angle) [m]. */
+static int seg_flat(const double *x, const int *seg, const rc_segmesh *g, int q, double *slack)
+{
+    const int *v = seg + 4 * q, nc = v[3] == v[2] ? 3 : 4;
+    const double *c = g->scen + 3 * q, *n = g->snrm + 3 * q, *bx = g->sbox + 6 * q;
+    const double ext = fmax(bx[3] - bx[0], fmax(bx[4] - bx[1], bx[5] - bx[2]));
+    if (!(ext > 0) || (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0)) return 0;
+    double lmax = 0.0, smin = 1.0;
+    for (int j = 0; j < nc; j++) {
+        const double *p = x + 3 * v[j], *p0 = x + 3 * v[(j + nc - 1) % nc], *p1 = x + 3 * v[(j + 1) % nc];
+        double a[3], b[3];
+        for (int k = 0; k < 3; k++) {
+            a[k] = p[k] - p0[k];
+            b[k] = p1[k] - p[k];
+        }
+        const double turn = (a[1] * b[2] - a[2] * b[1]) * n[0] + (a[2] * b[0] - a[0] * b[2]) * n[1] +
+                            (a[0] * b[1] - a[1] * b[0]) * n[2];
+        if (!(turn > 0.0)) return 0;
+        if (fabs((p[0] - c[0]) * n[0] + (p[1] - c[1]) * n[1] + (p[2] - c[2]) * n[2]) > 1e-12 * ext) return 0;
+        const double la = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]), lb = sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+        if (!(la > 0) || !(lb > 0)) return 0;
+        /* interior angle alpha at p: cos alpha = -a.b / (|a||b|) */
+        const double ca = -(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (la * lb);
+        smin = fmin(smin, sqrt(fmax(0.0, 0.5 * (1.0 - ca))));
+        lmax = fmax(lmax, la);
+    }
+    if (!(smin > 0)) return 0;
+    if (slack) *slack = 1e-9 * lmax / smin;
+    return 1;
+}
+
 /* The node grid of surface s (segsurf.h, rc_segmesh.ncadr): the cells of
  * the broad-phase grid, each segment over its widened box. */
 static rc_status node_grid(const rc_model *m, int s, rc_segmesh *g, int ncell, rc_error *err)
@@ -355,6 +389,68 @@ static rc_status node_grid(const rc_model *m, int s, rc_segmesh *g, int ncell, r
             g->ncadr[0] = 0;
         }
     }
+    /* isolated segments (segsurf.h) */
+    g->iso = calloc((size_t)g->ns + 1, 1);
+    int *stamp = malloc((size_t)(g->ns + 1) * sizeof(int));
+    if (!g->iso || !stamp) {
+        free(rng);
+        free(stamp);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    for (int q = 0; q < g->ns; q++) stamp[q] = -1;
+    for (int q = 0; q < g->ns; q++) {
+        if (!seg_flat(x, seg, g, q, NULL)) continue;
+        const int *r = rng + 6 * q, *v = seg + 4 * q, nc = v[3] == v[2] ? 3 : 4;
+        const double *n = g->snrm + 3 * q, *c = g->scen + 3 * q;
+        double emin = INFINITY;
+        for (int e = 0; e < nc; e++) {
+            const double *p0 = x + 3 * v[e], *p1 = x + 3 * v[(e + 1) % nc];
+            emin = fmin(emin, sqrt((p1[0] - p0[0]) * (p1[0] - p0[0]) + (p1[1] - p0[1]) * (p1[1] - p0[1]) +
+                                   (p1[2] - p0[2]) * (p1[2] - p0[2])));
+        }
+        const double ext = fmax(g->sbox[6 * q + 3] - g->sbox[6 * q],
+                                fmax(g->sbox[6 * q + 4] - g->sbox[6 * q + 1], g->sbox[6 * q + 5] - g->sbox[6 * q + 2]));
+        int ok = emin >= 1e-9 * big; /* rounding of the coordinates well below the margins */
+        for (int i = r[0]; ok && i <= r[1]; i++)
+            for (int j = r[2]; ok && j <= r[3]; j++)
+                for (int l = r[4]; ok && l <= r[5]; l++) {
+                    const int cell = (i * g->dim[1] + j) * g->dim[2] + l;
+                    for (int a = g->ncadr[cell]; ok && a < g->ncadr[cell + 1]; a++) {
+                        const int u = g->ncseg[a];
+                        if (u == q || stamp[u] == q) continue;
+                        stamp[u] = q;
+                        const double *nu = g->snrm + 3 * u;
+                        double slack;
+                        /* the same plane, flat and convex */
+                        ok = nu[0] == n[0] && nu[1] == n[1] && nu[2] == n[2] && seg_flat(x, seg, g, u, &slack);
+                        const int *vu = seg + 4 * u, ncu = vu[3] == vu[2] ? 3 : 4;
+                        for (int t = 0; ok && t < ncu; t++) {
+                            const double *p = x + 3 * vu[t];
+                            ok = fabs((p[0] - c[0]) * n[0] + (p[1] - c[1]) * n[1] + (p[2] - c[2]) * n[2]) <= 1e-12 * ext;
+                        }
+                        /* beyond an edge line of q, with room for u's edge
+                         * tolerance against q's margin (geom_seg.inc) */
+                        ok = ok && slack <= 1e-7 * emin;
+                        int sep = 0;
+                        for (int e = 0; ok && !sep && e < nc; e++) {
+                            const double *p0 = x + 3 * v[e], *p1 = x + 3 * v[(e + 1) % nc];
+                            const double ed[3] = {p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]};
+                            const double l2 = ed[0] * ed[0] + ed[1] * ed[1] + ed[2] * ed[2];
+                            sep = 1;
+                            for (int t = 0; sep && t < ncu; t++) {
+                                const double *p = x + 3 * vu[t], rp[3] = {p[0] - p0[0], p[1] - p0[1], p[2] - p0[2]};
+                                const double cr = (ed[1] * rp[2] - ed[2] * rp[1]) * n[0] +
+                                                  (ed[2] * rp[0] - ed[0] * rp[2]) * n[1] +
+                                                  (ed[0] * rp[1] - ed[1] * rp[0]) * n[2];
+                                sep = cr <= 1e-12 * l2;
+                            }
+                        }
+                        ok = ok && sep;
+                    }
+                }
+        g->iso[q] = (unsigned char)ok;
+    }
+    free(stamp);
     free(rng);
     return RC_OK;
 }
@@ -505,6 +601,7 @@ void rc_seg_free(rc_model *m)
         free(g->cseg);
         free(g->ncadr);
         free(g->ncseg);
+        free(g->iso);
     }
     free(m->surf_mesh);
     m->surf_mesh = NULL;

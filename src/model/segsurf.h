@@ -37,7 +37,18 @@ typedef struct rc_segmesh {
      * depth along every axis when its outline, projected on that plane, is
      * not convex); so the cell of the point alone holds every candidate */
     int *ncadr, *ncseg;  /* [ncell + 1]: segments of cell c at ncseg[ncadr[c] .. ncadr[c+1]) */
+    /* [ns] 1: segment k is isolated: flat, convex, and every segment whose
+     * widened box meets its own is flat, convex, in its plane (the same
+     * normal) and beyond one of its edges; a point whose foot lies inside
+     * k away from its edges then has k as its only candidate (geom_seg.inc,
+     * node_seg: the segment a node met last is tried first) */
+    unsigned char *iso;
 } rc_segmesh;
+
+/* Ints before rc_data.node_cache: the segment each surface node met last
+ * (geom_seg.inc), node j of surface s at [surf_nadr[s] + j]; a multiple of 4
+ * (the node cache after it stays aligned). */
+static inline int rc_seg_hint_len(const rc_model *m) { return (m->surf_nadr[m->nsurf] + 3) / 4 * 4; }
 
 /* Contact points of interface i whose points are nodes (rc_pair_nodes): the
  * nodes of surface a, then, segments-segments, those of surface b. */

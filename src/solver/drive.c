@@ -185,7 +185,7 @@ int frame_alloc(const rc_model *m, frame_buf *f)
     f->vslip = malloc(ni * sizeof(double));
     f->slip = malloc(ni * sizeof(int));
     f->cpl = malloc((9 * (size_t)m->cpl->n + 1) * sizeof(double));
-    f->jnt = malloc((8 * (size_t)(m->jnt ? m->jnt->n : 0) + 1) * sizeof(double));
+    f->jnt = malloc((10 * (size_t)(m->jnt ? m->jnt->n : 0) + 10) * sizeof(double));
     return f->jnt && f->pos && f->quat && f->vel && f->omega && f->pen && f->fload && f->fdamp && f->fn && f->point &&
            f->normal && f->mode && f->cpl && f->ffric && f->vslip && f->slip;
 }
@@ -224,7 +224,7 @@ rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_b
     }
     rc_energy(m, d, t, y, f->energy);
     if (!o) return RC_OK;
-    const int nc = m->cpl->n;
+    const int nc = m->cpl->ncard; /* the joint stops are reported with their joints */
     rc_cpl_frame(m, d, t, y, f->cpl);
     rc_frame fr = {.t = t, .at_event = at_event, .body_pos = f->pos, .body_quat = f->quat, .body_vel = f->vel,
                    .body_omega = f->omega, .inter_pen = f->pen, .inter_fload = f->fload, .inter_fdamp = f->fdamp,
@@ -240,6 +240,17 @@ rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_b
         fr.joint_drift_pos = f->jnt + 6 * nj;
         fr.joint_drift_ang = f->jnt + 7 * nj;
         fr.joint_work = f->jnt + 8 * nj;
+        /* the stops: the generalised force on the joint coordinate, a
+         * force along a prismatic joint's axis, a moment about a revolute's */
+        for (int j = 0; j < nj; j++) {
+            double q;
+            const double Q = rc_cpl_joint_stop(m, d, j, y, &q);
+            const int rev = m->jnt->kind[j] == RC_JNT_REVOLUTE;
+            f->jnt[9 + 8 * nj + j] = rev ? 0.0 : Q;
+            f->jnt[9 + 9 * nj + j] = rev ? Q : 0.0;
+        }
+        fr.joint_stop_force = f->jnt + 9 + 8 * nj;
+        fr.joint_stop_moment = f->jnt + 9 + 9 * nj;
     }
     return rc_output_frame(o, &fr, err);
 }
@@ -257,8 +268,8 @@ static const char *const energy_long[RC_NENERGY] = {
     "elastic energy stored in the contacts, normal and tangential (recoverable by unloading)",
     "energy dissipated by contact hysteresis (normal work - normal stored)",
     "energy dissipated by friction (friction work - tangential stored)",
-    "elastic energy stored in the spring-damper couplings",
-    "energy dissipated by the coupling dampers",
+    "elastic energy stored in the spring-damper couplings, the contact couplings and the joint stops",
+    "energy dissipated by the dampers of the couplings and the joint stops",
     "elastic and gravitational energy of the catenary lines (work done by their ends)",
     "minus the work done on the bodies by the imposed velocities (/IMPVEL reactions)",
     ("kinetic + potential + contact work + damping + friction work + couplings + imposed (constant in exact "
@@ -279,7 +290,7 @@ rc_status open_output(const rc_model *m, const char *path, const char *note, rc_
                            integrator, m->rtol, m->atol_pos,
                            m->atol_quat, m->atol_vel, m->atol_omega, m->atol_energy, m->nbody, m->body_id,
                            m->body_fixed, m->ninter, m->inter_id, types, RC_NENERGY, energy_name, energy_long,
-                           m->cpl->n, m->cpl->id, m->cpl->type, NULL, .nfile = 0};
+                           m->cpl->ncard, m->cpl->id, m->cpl->type, NULL, .nfile = 0};
     /* provenance, every solver setting, the surfaces */
     meta.nfile = m->nfile;
     meta.file = (const char *const *)m->file;

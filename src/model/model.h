@@ -293,6 +293,11 @@ typedef struct rc_data {
                             values per point (kernels.inc, seg_fill) */
     double *inter_dref;  /* [ninter*3] sliding direction when a stateless friction
                             law saturated (reversal root) [-] */
+    int *inter_settled;  /* [ninter] 1: a closed contact held in persistent contact
+                            after its bounces accumulated (the release at zero
+                            force suspended; it opens when P returns to 0;
+                            docs/theory.md 5.2); set by the driver, cleared when
+                            the mode leaves CLOSED */
     double *inter_band;  /* [ninter*2] touch bands of a contact closed at zero
                             penetration or zero force: separation root P + band[0]
                             [m], release root F_n + band[1] [N]; 0 otherwise */

@@ -209,7 +209,7 @@ rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_b
         f->pen[i] = r.p;
         f->fload[i] = acts ? r.fload : 0.0;
         f->fdamp[i] = acts ? r.fdamp : 0.0;
-        f->fn[i] = acts && r.fn > 0 ? r.fn : 0.0;
+        f->fn[i] = acts && (r.fn > 0 || d->inter_settled[i]) ? r.fn : 0.0; /* settled: as it acts */
         memcpy(f->point + 3 * i, r.point, 3 * sizeof(double));
         memcpy(f->normal + 3 * i, r.normal, 3 * sizeof(double));
         for (int k = 0; k < 3; k++) f->ffric[3 * i + k] = acts ? r.ft[k] : 0.0;
@@ -392,6 +392,22 @@ void progress_line(double tend, const rc_stats *s, double t, long steps, double 
 }
 
 
+/* Hold the closed contact of interface i in persistent contact at t
+ * (docs/theory.md 5.2): the event contact_settle, the statistics, a line on
+ * stderr. */
+static rc_status settle(const rc_model *m, rc_data *d, ev_sink *sink, double t, const double *y, int i, rc_stats *s,
+                        rc_error *err)
+{
+    d->inter_settled[i] = 1;
+    s->settles++;
+    s->t_settle = t;
+    s->events++;
+    fprintf(stderr, "ricochet: %s settled into persistent contact at t = %.9g s (bounces accumulated)\n",
+            m->inter_name[i], t);
+    const rc_event ev = {i, "contact_settle"};
+    return write_event(m, d, sink, t, y, &ev, err);
+}
+
 /* ---- the driver ------------------------------------------------------- */
 /* One record at (t, y, y'): the backend's record vector (with joints, the
  * reactions in the slots of their impulses), or y itself. */
@@ -553,7 +569,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     char note[sizeof s.sampling_note];
     rc_impacts_sampling_note(m, note, sizeof note);
     int *rootdir = NULL, *roots = NULL, *zeno_n = NULL;
-    double *gbuf = NULL, *flook = NULL, *bp = NULL, *zeno_t = NULL;
+    double *gbuf = NULL, *flook = NULL, *bp = NULL, *zeno_t = NULL, *t_open = NULL, *t_close = NULL;
     int nbp = 0, ibp = 0;
     rc_output *out = NULL;
     frame_buf fb;
@@ -584,11 +600,18 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     gbuf = calloc((size_t)nr + 1, sizeof(double));
     zeno_t = calloc((size_t)m->ninter + 1, sizeof(double));
     zeno_n = calloc((size_t)m->ninter + 1, sizeof(int));
+    t_open = malloc(((size_t)m->ninter + 1) * sizeof(double));
+    t_close = malloc(((size_t)m->ninter + 1) * sizeof(double));
+    t_flight = malloc(((size_t)m->ninter + 1) * sizeof(double));
+    nshrink = calloc((size_t)m->ninter + 1, sizeof(int));
     flook = calloc((size_t)n, sizeof(double));
-    if (rc_impacts_init(&im, m) || !rootdir || !roots || !gbuf || !zeno_t || !zeno_n || !flook) {
+    if (rc_impacts_init(&im, m) || !rootdir || !roots || !gbuf || !zeno_t || !zeno_n || !flook || !t_open ||
+        !t_close || !t_flight || !nshrink) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the solver");
         goto done;
     }
+    for (int i = 0; i < m->ninter; i++) t_open[i] = t_close[i] = t_flight[i] = NAN; /* no contact phase yet */
+    s.t_settle = NAN;
     /* initial state and modes */
     rc_initial_state(m, y);
     rc_modes_init(m, d, t, y);
@@ -717,12 +740,36 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             for (int k = 0; k < nev && k < RC_MAX_EV; k++) rc_impacts_event(&im, m, d, ev[k].inter, ev[k].kind, t, y);
             for (int k = 0; k < nev && k < RC_MAX_EV; k++)
                 if ((st = write_event(m, d, &sink, t, y, &ev[k], err))) goto done;
-            /* event accumulation: report it rather than stall */
+            /* settling: a contact that closes after a flight short against
+             * its last contact phase is held closed (RC_SETTLE_FLIGHT) */
+            for (int k = 0; k < nev && k < RC_MAX_EV; k++) {
+                const int i = ev[k].inter;
+                if (i < 0) continue;
+                if (!strcmp(ev[k].kind, "contact_open") || !strcmp(ev[k].kind, "contact_separate")) t_open[i] = t;
+                if (strcmp(ev[k].kind, "contact_close")) continue;
+                const double flight = t - t_open[i], phase = t_open[i] - t_close[i];
+                nshrink[i] = flight < t_flight[i] ? nshrink[i] + 1 : 0; /* the flights shrink */
+                t_flight[i] = flight;
+                t_close[i] = t;
+                if (d->inter_mode[i] == RC_MODE_CLOSED && !d->inter_settled[i] && nshrink[i] >= RC_SETTLE_SHRINK &&
+                    flight < RC_SETTLE_FLIGHT * phase && (st = settle(m, d, &sink, t, y, i, &s, err)))
+                    goto done;
+                jumped |= d->inter_settled[i]; /* its root function changed: restart */
+            }
+            /* event accumulation: report it rather than stall; the contact
+             * events of an interface that is closed settle it instead */
             for (int k = 0; k < nev && k < RC_MAX_EV; k++) {
                 const int i = ev[k].inter;
                 if (i < 0) continue; /* a contact coupling: its faces change modes with the state moving */
                 zeno_n[i] = t - zeno_t[i] <= RC_ZENO_REL * fmax(fabs(t), dtout) ? zeno_n[i] + 1 : 0;
                 zeno_t[i] = t;
+                if (zeno_n[i] > RC_ZENO_MAX && !strncmp(ev[k].kind, "contact_", 8) &&
+                    d->inter_mode[i] == RC_MODE_CLOSED) {
+                    if (!d->inter_settled[i] && (st = settle(m, d, &sink, t, y, i, &s, err))) goto done;
+                    zeno_n[i] = 0;
+                    jumped = 1;
+                    continue;
+                }
                 if (zeno_n[i] > RC_ZENO_MAX) {
                     snprintf(reason, sizeof reason,
                              "event accumulation (Zeno) at t = %.9g s in %s: more than %d events within %.2g s of "
@@ -829,6 +876,10 @@ done:
     free(gbuf);
     free(zeno_t);
     free(zeno_n);
+    free(t_open);
+    free(t_close);
+    free(t_flight);
+    free(nshrink);
     free(flook);
     free(bp);
     frame_free(&fb);

@@ -569,7 +569,8 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     char note[sizeof s.sampling_note];
     rc_impacts_sampling_note(m, note, sizeof note);
     int *rootdir = NULL, *roots = NULL, *zeno_n = NULL;
-    double *gbuf = NULL, *flook = NULL, *bp = NULL, *zeno_t = NULL, *t_open = NULL, *t_close = NULL;
+    double *gbuf = NULL, *flook = NULL, *bp = NULL, *zeno_t = NULL, *t_open = NULL, *t_close = NULL, *t_flight = NULL;
+    int *nshrink = NULL;
     int nbp = 0, ibp = 0;
     rc_output *out = NULL;
     frame_buf fb;

@@ -381,7 +381,8 @@ double rc_point_mass(const rc_model *m, int i, const double *y, const rc_inter_r
 int rc_inter_on_joint(const rc_model *m, int i);
 /* Root functions, in this order: RC_ROOTS_PER_INTER per interface; one slip
  * root per contact point with friction (inter_npt, at rc_root_point_base);
- * the contact couplings' (at rc_root_cpl_base; coupling_contact.h). */
+ * the contact couplings' faces (at rc_root_cpl_base; coupling_contact.h),
+ * then RC_LIM_ROOTS per joint with stops (coupling.h). */
 static inline int rc_root_point_base(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter; }
 static inline int rc_root_cpl_base(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter + m->npt; }
 int rc_root_count(const rc_model *m); /* all of them (coupling_contact.c) */

@@ -402,7 +402,8 @@ static void test_joint_stop_errors(void)
     } bad[] = {
         {"0.1,0.5,100,1\n", "REVOLUTE", "Lim_min"},
         {"-0.1,-0.05,100,1\n", "PRISMATIC", "Lim_max"},
-        {"-4,1,100,1\n", "REVOLUTE", "(-pi, pi)"},
+        {"-4,3,100,1\n", "REVOLUTE", "less than a turn apart"},
+        {"-0.5,,100,1\n", "REVOLUTE", "both stops"},
         {"-0.1,0.1,0,1\n", "PRISMATIC", "K_lim"},
         {"-0.1,0.1,100,-1\n", "PRISMATIC", "C_lim"},
         {"-0.1,0.1,100,1\n", "DISTANCE", "no free scalar"},

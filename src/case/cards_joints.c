@@ -49,12 +49,19 @@ static rc_status read_limits(rc_reader *rd, const rc_block *b, rc_case_joint *k)
                             "expected an upper stop >= 0 %s (the joint coordinate is 0 in the initial configuration, "
                             "which must lie within the stops), got %.9g",
                             u, k->lim_hi);
-    const double pi = 3.14159265358979323846;
-    const int bad_lo = rev && k->has_lo && !(k->lim_lo > -pi), bad_hi = rev && k->has_hi && !(k->lim_hi < pi);
-    if (bad_lo || bad_hi)
-        return rc_case_fail(rd, &k->line_loc[3], b->name, bad_lo ? "Lim_min" : "Lim_max",
-                            "expected stops of the rotation angle within (-pi, pi) rad, got %.9g and %.9g rad",
-                            k->has_lo ? k->lim_lo : 0.0, k->has_hi ? k->lim_hi : 0.0);
+    /* a revolute's angle is measured within one turn around the middle of
+     * its stops (docs/theory.md 7.5): both stops, less than a turn apart */
+    const double two_pi = 6.28318530717958647692;
+    if (rev && (!k->has_lo || !k->has_hi))
+        return rc_case_fail(rd, &k->line_loc[3], b->name, k->has_lo ? "Lim_max" : "Lim_min",
+                            "expected both stops of a revolute joint (the angle is measured within one turn around "
+                            "their middle; a single stop would be met again from its other side after a turn: give "
+                            "the other one, e.g. a stop the motion never reaches), got it blank");
+    if (rev && !(k->lim_hi - k->lim_lo < two_pi))
+        return rc_case_fail(rd, &k->line_loc[3], b->name, "Lim_max",
+                            "expected stops less than a turn apart, Lim_max - Lim_min < 2 pi rad, got %.9g - (%.9g) = "
+                            "%.9g rad",
+                            k->lim_hi, k->lim_lo, k->lim_hi - k->lim_lo);
     if (!(k->lim_k > 0))
         return rc_case_fail(rd, &k->line_loc[3], b->name, "K_lim",
                             "expected the stiffness of the stops > 0 %s, got %s", rev ? "N m/rad" : "N/m",

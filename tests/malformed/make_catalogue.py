@@ -391,10 +391,11 @@ def STOP(*vals):
 
 
 TL('joint_stop_lower_positive', JT, 'field Lim_min', insert(JT, 5, [STOP('0.1', '0.5', '100', '1')]))
-TL('joint_stop_angle_range', JT, 'field Lim_max', insert(JT, 5, [STOP('-0.5', '4', '100', '1')]))
+TL('joint_stop_angle_range', JT, 'field Lim_max', insert(JT, 5, [STOP('-3', '4', '100', '1')]))
 TL('joint_stop_stiffness_blank', JT, 'field K_lim', insert(JT, 5, [STOP('-0.5', '0.5', '', '1')]))
 TL('joint_stop_damping_negative', JT, 'field C_lim', insert(JT, 5, [STOP('-0.5', '0.5', '100', '-1')]))
 TL('joint_stop_text', JT, 'field Lim_max', insert(JT, 5, [STOP('-0.5', 'x', '100', '1')]))
+TL('joint_stop_revolute_one_sided', JT, 'field Lim_max', insert(JT, 5, [STOP('-0.5', '', '100', '1')]))
 
 
 def write_all():

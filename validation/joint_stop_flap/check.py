@@ -67,10 +67,13 @@ def deck():
     d.grav(1, "Z", -G, grnod=1)
     d.grnod(2, [2])
     d.grav(2, "Y", -G, grnod=2)
-    d.joint(1, "REVOLUTE", 1, 0, (0.0, 0.0, 0.0), axis=(0.0, 0.0, 1.0), lim_max=TH_S, k_lim=K, c_lim=C,
+    # a revolute joint takes both stops (its angle is measured within one
+    # turn around their middle): the flap's lower one and the pendulum's
+    # upper one are never reached
+    d.joint(1, "REVOLUTE", 1, 0, (0.0, 0.0, 0.0), axis=(0.0, 0.0, 1.0), lim_min=-2.5, lim_max=TH_S, k_lim=K, c_lim=C,
             title="flap hinge, stop at 0.5 rad")
-    d.joint(2, "REVOLUTE", 2, 0, (0.0, 2.0, 5.0), axis=(0.0, 0.0, 1.0), lim_min=TH_MIN - TH0, k_lim=KP, c_lim=CP,
-            title="pendulum hinge, stop 20 degrees past the vertical")
+    d.joint(2, "REVOLUTE", 2, 0, (0.0, 2.0, 5.0), axis=(0.0, 0.0, 1.0), lim_min=TH_MIN - TH0, lim_max=1.0, k_lim=KP,
+            c_lim=CP, title="pendulum hinge, stop 20 degrees past the vertical")
     d.run(T_END, DT_OUT)
     return d
 
@@ -134,8 +137,11 @@ def main():
     wd = wn * math.sqrt(1 - ZETA ** 2)
     t1 = TH_S / OMEGA0
     te, trl = ev("stop_enter", "/JOINT/REVOLUTE/1"), ev("stop_release", "/JOINT/REVOLUTE/1")
-    ok = len(te) == 1 and len(trl) == 1
-    rcval.check("joint_stop_flap.flap.events", ok, f"stop_enter {len(te)}, stop_release {len(trl)} (one each)")
+    tl = ev("stop_leave", "/JOINT/REVOLUTE/1")
+    ok = len(te) == 1 and len(trl) == 1 and len(tl) == 1
+    rcval.check("joint_stop_flap.flap.events", ok,
+                f"stop_enter {len(te)}, stop_release {len(trl)}, stop_leave {len(tl)} (one each: the lower stop "
+                f"at -2.5 rad is not reached)")
     if ok:
         e1 = rcval.rel(te[0], t1)
         rcval.check("joint_stop_flap.flap.onset", e1 < TOL_T1,

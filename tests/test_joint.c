@@ -312,7 +312,8 @@ static void test_joint_with_contact_events(void)
 }
 
 /* Two free bodies on a revolute joint (an oblique axis) and a third on a
- * prismatic joint to the second, with stops. */
+ * prismatic joint to the second, with stops (the prismatic's elastic part
+ * from a curve). */
 static const char *stops_deck =
     "/BEGIN\nstops\n2022,0\nkg,m,s\nkg,m,s\n"
     "/NODE\n1,0.3,-0.8,0.1\n2,1.1,-1.3,-0.2\n3,1.5,-1.9,0.4\n"
@@ -321,7 +322,8 @@ static const char *stops_deck =
     "/RBODY/3\nbody 3\n3,,,,0.9\n0.013,0.011,0.02\n0,0,0\n"
     "/GRAV/1\ng\n0,Y,0,0,0,,1,-9.81\n"
     "/JOINT/REVOLUTE/1\nhinge\n1,2\n0.7,-1.0,0.0\n0.2,0.3,1\n-0.4,0.6,350,2.5\n"
-    "/JOINT/PRISMATIC/2\nslider\n3,2\n1.3,-1.5,0.1\n1,-0.5,0.25\n-0.05,0.02,4e4,30\n"
+    "/FUNCT/7\nstiffening stop\n-0.01,-50\n0,0\n0.005,100\n0.02,1500\n0.1,4e4\n"
+    "/JOINT/PRISMATIC/2\nslider\n3,2\n1.3,-1.5,0.1\n1,-0.5,0.25\n-0.05,0.02,,30,7\n"
     "/RUN\n1,0.01\n/END\n";
 
 /* The stops' Jacobian blocks (complex step) against central differences
@@ -342,6 +344,7 @@ static void test_joint_stop_jacobian(void)
     ENSURE(c->n == 2 && c->ncard == 0 && rc_cpl_nlim(m) == 2 && c->kind[0] == RC_CPL_LIMIT);
     ENSURE(rc_cpl_nroots(m) == 2 * RC_LIM_ROOTS && rc_root_count(m) == 2 * RC_LIM_ROOTS);
     ENSURE(c->lrev[0] == 1 && c->lrev[1] == 0 && c->llo[0] == -0.4 && c->lhi[1] == 0.02);
+    ENSURE(c->table[0] == -1 && c->table[1] >= 0);
     rc_data *d = rc_data_new(m);
     double *y = calloc((size_t)m->ny, sizeof(double)), *f0 = calloc((size_t)m->ny, sizeof(double)),
            *f1 = calloc((size_t)m->ny, sizeof(double));
@@ -407,13 +410,17 @@ static void test_joint_stop_errors(void)
         {"-0.1,0.1,0,1\n", "PRISMATIC", "K_lim"},
         {"-0.1,0.1,100,-1\n", "PRISMATIC", "C_lim"},
         {"-0.1,0.1,100,1\n", "DISTANCE", "no free scalar"},
+        {"-0.1,0.1,100,1,1\n", "PRISMATIC", "K_lim blank"},
+        {"-0.1,0.1,,1,9\n", "PRISMATIC", "no such function"},
+        {"-0.1,0.1,,1,2\n", "PRISMATIC", "through 0"},
     };
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
         char text[1024];
         const int dist = !strcmp(bad[k].kind, "DISTANCE");
         snprintf(text, sizeof text,
                  "/BEGIN\nj\n2022,0\nkg,m,s\nkg,m,s\n/NODE\n1,0,-1,0\n/RBODY/1\nb\n1,,,,1\n0.1,0.1,0.1\n0,0,0\n"
-                 "/JOINT/%s/1\nx\n1,0\n0,0,0\n%s\n%s/RUN\n1,0.1\n/END\n",
+                 "/JOINT/%s/1\nx\n1,0\n0,0,0\n%s\n%s/FUNCT/1\nlin\n0,0\n1,1e3\n/FUNCT/2\noff\n0,5\n1,1e3\n"
+                 "/RUN\n1,0.1\n/END\n",
                  bad[k].kind, dist ? "0,-1,0" : "0,0,1", bad[k].line4);
         rc_error e;
         rc_model *m = tu_compile_text(text, "bad.rad", &e);

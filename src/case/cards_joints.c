@@ -8,8 +8,8 @@
  * Layout (docs/case-format.md): title; rbody_ID1 rbody_ID2; X Y Z (the
  * anchor point); REVOLUTE, PRISMATIC: Ax Ay Az (the axis); DISTANCE: X2 Y2
  * Z2 (the point on body 2); REVOLUTE, PRISMATIC: an optional fourth line
- * Lim_min Lim_max K_lim C_lim (the stops of the joint coordinate, blank:
- * none). References are resolved by model/joint.c, the stops compiled by
+ * Lim_min Lim_max K_lim C_lim fct_lim (the stops of the joint coordinate,
+ * blank: none). References are resolved by model/joint.c, the stops compiled by
  * model/coupling.c (RC_CPL_LIMIT).
  */
 #include <string.h>
@@ -33,7 +33,8 @@ static rc_status read_limits(rc_reader *rd, const rc_block *b, rc_case_joint *k)
                             "/COUPLING/SPRING, or a /JOINT/PRISMATIC with stops)");
     const int dl = rev ? RC_D_NONE : RC_D_L, dk = rev ? RC_D_E : RC_D_K, dc = rev ? RC_DIM(1, 2, -1) : RC_D_C;
     rc_field l4[] = {RC_F_REALD("Lim_min", &k->lim_lo, 0, 0, dl), RC_F_REALD("Lim_max", &k->lim_hi, 0, 0, dl),
-                     RC_F_REALD("K_lim", &k->lim_k, 0, 0, dk), RC_F_REALD("C_lim", &k->lim_c, 0, RC_FF_NONNEG, dc)};
+                     RC_F_REALD("K_lim", &k->lim_k, 0, 0, dk), RC_F_REALD("C_lim", &k->lim_c, 0, RC_FF_NONNEG, dc),
+                     RC_F_INT("fct_lim", &k->lim_fct, 0, RC_FF_NONNEG)};
     if ((st = rc_parse_line(rd, b, &b->lines[4], l4, RC_NF(l4)))) return st;
     k->has_lo = !l4[0].blank;
     k->has_hi = !l4[1].blank;
@@ -62,10 +63,14 @@ static rc_status read_limits(rc_reader *rd, const rc_block *b, rc_case_joint *k)
                             "expected stops less than a turn apart, Lim_max - Lim_min < 2 pi rad, got %.9g - (%.9g) = "
                             "%.9g rad",
                             k->lim_hi, k->lim_lo, k->lim_hi - k->lim_lo);
-    if (!(k->lim_k > 0))
+    if (k->lim_fct > 0 && !l4[2].blank)
         return rc_case_fail(rd, &k->line_loc[3], b->name, "K_lim",
-                            "expected the stiffness of the stops > 0 %s, got %s", rev ? "N m/rad" : "N/m",
-                            l4[2].blank ? "blank" : l4[2].got);
+                            "expected K_lim blank with fct_lim = %d (the curve gives the stops' elastic force), got %s",
+                            k->lim_fct, l4[2].got);
+    if (k->lim_fct == 0 && !(k->lim_k > 0))
+        return rc_case_fail(rd, &k->line_loc[3], b->name, "K_lim",
+                            "expected the stiffness of the stops > 0 %s (or a curve in fct_lim), got %s",
+                            rev ? "N m/rad" : "N/m", l4[2].blank ? "blank" : l4[2].got);
     return RC_OK;
 }
 
@@ -89,7 +94,7 @@ rc_status rc_card_joint(rc_reader *rd, const rc_block *b)
     for (int i = 0; i < 4; i++) k->line_loc[i] = k->loc;
     const int third = kind == RC_CASE_JNT_REVOLUTE || kind == RC_CASE_JNT_PRISMATIC || kind == RC_CASE_JNT_DISTANCE;
     const char *desc = kind == RC_CASE_JNT_DISTANCE ? "rbody_ID1 rbody_ID2, X1 Y1 Z1, X2 Y2 Z2"
-                       : third ? "rbody_ID1 rbody_ID2, X Y Z, Ax Ay Az, optional Lim_min Lim_max K_lim C_lim"
+                       : third ? "rbody_ID1 rbody_ID2, X Y Z, Ax Ay Az, optional Lim_min Lim_max K_lim C_lim fct_lim"
                                : "rbody_ID1 rbody_ID2, X Y Z";
     int nd;
     /* a fourth line: the stops (REVOLUTE, PRISMATIC; DISTANCE reads it to

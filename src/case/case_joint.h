@@ -31,6 +31,7 @@ typedef struct rc_case_joint {
      * stop's contact law */
     int has_lo, has_hi;
     double lim_lo, lim_hi, lim_k, lim_c;
+    int lim_fct;       /* /FUNCT id of the stops' elastic part F_e(p) [N] or [N m] (K_lim blank); 0: K_lim p */
     rc_loc loc;
     rc_loc line_loc[4]; /* the data lines */
 } rc_case_joint;

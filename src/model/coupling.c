@@ -14,6 +14,7 @@
 #include "case/case_coupling.h"
 #include "case/case_joint.h"
 #include "model/joint.h"
+#include "model/table.h"
 #include "model/coupling.h"
 #include "model/coupling_contact.h"
 #include "base/error.h"
@@ -195,6 +196,19 @@ static rc_status compile_stop(const rc_case *c, rc_model *m, int j, int k, rc_er
     p->lhi[k] = cj->has_hi ? cj->lim_hi : INFINITY;
     p->coef[3 * k] = cj->lim_k;
     p->kd[k] = cj->lim_c;
+    if (cj->lim_fct > 0) { /* the elastic part from a curve F_e(p), through 0 */
+        rc_status st = rc_case_ref_funct(c, cj->lim_fct, 1, p->law_loc[k], card, "fct_lim", &p->table[k], err);
+        if (st) return st;
+        double f0, df0;
+        rc_table_eval(&m->table[p->table[k]], 0.0, &f0, &df0);
+        double ymax = 0.0;
+        for (int i = 0; i < m->table[p->table[k]].n; i++) ymax = fmax(ymax, fabs(m->table[p->table[k]].y[i]));
+        if (fabs(f0) > 1e-12 * ymax)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card %s, field fct_lim: expected a curve through 0 at p = 0 (the stop's force starts "
+                               "from zero at the stop), got F_e(0) = %.9g for /FUNCT %d",
+                     RC_LOC(p->law_loc[k]), card, f0, cj->lim_fct);
+    }
     return RC_OK;
 }
 

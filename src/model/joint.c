@@ -12,6 +12,7 @@
 #include "model/imposed.h"
 #include "model/coupling.h"
 #include "model/joint.h"
+#include "model/table.h"
 
 static const char *const kind_name[6] = {"", "SPHERICAL", "REVOLUTE", "DISTANCE", "FIXED", "PRISMATIC"};
 
@@ -179,9 +180,10 @@ void rc_jnt_print(const rc_model *m, FILE *f)
         for (int k = m->cpl ? m->cpl->ncard : 0; m->cpl && k < m->cpl->n; k++) {
             if (m->cpl->ljoint[k] != j) continue;
             const char *u = m->cpl->lrev[k] ? "rad" : "m";
-            fprintf(f, ", stops %.9g %s .. %.9g %s (K %.6g %s, C %.6g %s)", m->cpl->llo[k], u, m->cpl->lhi[k], u,
-                    m->cpl->coef[3 * k], m->cpl->lrev[k] ? "N m/rad" : "N/m", m->cpl->kd[k],
-                    m->cpl->lrev[k] ? "N m s/rad" : "N s/m");
+            fprintf(f, ", stops %.9g %s .. %.9g %s (", m->cpl->llo[k], u, m->cpl->lhi[k], u);
+            if (m->cpl->table[k] >= 0) fprintf(f, "F_e from /FUNCT %d", m->table[m->cpl->table[k]].id);
+            else fprintf(f, "K %.6g %s", m->cpl->coef[3 * k], m->cpl->lrev[k] ? "N m/rad" : "N/m");
+            fprintf(f, ", C %.6g %s)", m->cpl->kd[k], m->cpl->lrev[k] ? "N m s/rad" : "N s/m");
         }
         fprintf(f, "\n");
     }

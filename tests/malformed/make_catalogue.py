@@ -396,6 +396,8 @@ TL('joint_stop_stiffness_blank', JT, 'field K_lim', insert(JT, 5, [STOP('-0.5', 
 TL('joint_stop_damping_negative', JT, 'field C_lim', insert(JT, 5, [STOP('-0.5', '0.5', '100', '-1')]))
 TL('joint_stop_text', JT, 'field Lim_max', insert(JT, 5, [STOP('-0.5', 'x', '100', '1')]))
 TL('joint_stop_revolute_one_sided', JT, 'field Lim_max', insert(JT, 5, [STOP('-0.5', '', '100', '1')]))
+TL('joint_stop_curve_missing', JT, 'field fct_lim', insert(JT, 5, [cols(STOP('-0.5', '0.5', '', '1'), 81, 90, '99')]))
+TL('joint_stop_curve_and_k', JT, 'field K_lim', insert(JT, 5, [cols(STOP('-0.5', '0.5', '100', '1'), 81, 90, '1')]))
 
 
 def write_all():

@@ -394,16 +394,17 @@ void progress_line(double tend, const rc_stats *s, double t, long steps, double 
 
 /* Hold the closed contact of interface i in persistent contact at t
  * (docs/theory.md 5.2): the event contact_settle, the statistics, a line on
- * stderr. */
+ * stderr with the progress. */
 static rc_status settle(const rc_model *m, rc_data *d, ev_sink *sink, double t, const double *y, int i, rc_stats *s,
-                        rc_error *err)
+                        int show, rc_error *err)
 {
     d->inter_settled[i] = 1;
     s->settles++;
     s->t_settle = t;
     s->events++;
-    fprintf(stderr, "ricochet: %s settled into persistent contact at t = %.9g s (bounces accumulated)\n",
-            m->inter_name[i], t);
+    if (show) /* with the progress (not with `ricochet run -q`, nor for an embedding without it) */
+        fprintf(stderr, "ricochet: %s settled into persistent contact at t = %.9g s (bounces accumulated)\n",
+                m->inter_name[i], t);
     const rc_event ev = {i, "contact_settle"};
     return write_event(m, d, sink, t, y, &ev, err);
 }
@@ -753,7 +754,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
                 t_flight[i] = flight;
                 t_close[i] = t;
                 if (d->inter_mode[i] == RC_MODE_CLOSED && !d->inter_settled[i] && nshrink[i] >= RC_SETTLE_SHRINK &&
-                    flight < RC_SETTLE_FLIGHT * phase && (st = settle(m, d, &sink, t, y, i, &s, err)))
+                    flight < RC_SETTLE_FLIGHT * phase && (st = settle(m, d, &sink, t, y, i, &s, show, err)))
                     goto done;
                 jumped |= d->inter_settled[i]; /* its root function changed: restart */
             }
@@ -766,7 +767,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
                 zeno_t[i] = t;
                 if (zeno_n[i] > RC_ZENO_MAX && !strncmp(ev[k].kind, "contact_", 8) &&
                     d->inter_mode[i] == RC_MODE_CLOSED) {
-                    if (!d->inter_settled[i] && (st = settle(m, d, &sink, t, y, i, &s, err))) goto done;
+                    if (!d->inter_settled[i] && (st = settle(m, d, &sink, t, y, i, &s, show, err))) goto done;
                     zeno_n[i] = 0;
                     jumped = 1;
                     continue;

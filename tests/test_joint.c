@@ -8,6 +8,8 @@
 #include "harness.h"
 #include "testutil.h"
 #include "base/error.h"
+#include "model/coupling.h"
+#include "model/coupling_contact.h"
 #include "model/joint.h"
 #include "model/model.h"
 
@@ -309,9 +311,137 @@ static void test_joint_with_contact_events(void)
     rc_model_free(m);
 }
 
+/* Two free bodies on a revolute joint (an oblique axis) and a third on a
+ * prismatic joint to the second, with stops (the prismatic's elastic part
+ * from a curve). */
+static const char *stops_deck =
+    "/BEGIN\nstops\n2022,0\nkg,m,s\nkg,m,s\n"
+    "/NODE\n1,0.3,-0.8,0.1\n2,1.1,-1.3,-0.2\n3,1.5,-1.9,0.4\n"
+    "/RBODY/1\nbody 1\n1,,,,1.7\n0.02,0.03,0.04\n0,0,0\n"
+    "/RBODY/2\nbody 2\n2,,,,0.6\n0.011,0.017,0.009\n0,0,0\n"
+    "/RBODY/3\nbody 3\n3,,,,0.9\n0.013,0.011,0.02\n0,0,0\n"
+    "/GRAV/1\ng\n0,Y,0,0,0,,1,-9.81\n"
+    "/JOINT/REVOLUTE/1\nhinge\n1,2\n0.7,-1.0,0.0\n0.2,0.3,1\n-0.4,0.6,350,2.5\n"
+    "/FUNCT/7\nstiffening stop\n-0.01,-50\n0,0\n0.005,100\n0.02,1500\n0.1,4e4\n"
+    "/JOINT/PRISMATIC/2\nslider\n3,2\n1.3,-1.5,0.1\n1,-0.5,0.25\n-0.05,0.02,,30,7\n"
+    "/RUN\n1,0.01\n/END\n";
+
+/* The stops' Jacobian blocks (complex step) against central differences
+ * of the right-hand side, at a generic state (bodies turned and moving,
+ * off the joints), in every mode of the two stops; and their generalised
+ * force: the stops' power on the bodies balances the rates of their
+ * energy states (the wrench is the exact gradient of the coordinate). */
+static void test_joint_stop_jacobian(void)
+{
+    rc_error e;
+    rc_model *m = tu_compile_text(stops_deck, "stops.rad", &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    const rc_couplings *c = m->cpl;
+    ENSURE(c->n == 2 && c->ncard == 0 && rc_cpl_nlim(m) == 2 && c->kind[0] == RC_CPL_LIMIT);
+    ENSURE(rc_cpl_nroots(m) == 2 * RC_LIM_ROOTS && rc_root_count(m) == 2 * RC_LIM_ROOTS);
+    ENSURE(c->lrev[0] == 1 && c->lrev[1] == 0 && c->llo[0] == -0.4 && c->lhi[1] == 0.02);
+    ENSURE(c->table[0] == -1 && c->table[1] >= 0);
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double)), *f0 = calloc((size_t)m->ny, sizeof(double)),
+           *f1 = calloc((size_t)m->ny, sizeof(double));
+    rc_initial_state(m, y);
+    const double q[3][4] = {{0.99, 0.05, -0.08, 0.03}, {0.97, -0.1, 0.12, 0.2}, {0.9, 0.2, 0.1, -0.3}};
+    const double v[3][6] = {{0.3, -0.2, 0.1, 0.5, -0.7, 0.9}, {-0.4, 0.1, 0.2, -0.3, 0.8, 0.2},
+                            {0.2, 0.6, -0.1, 1.1, 0.4, -0.6}};
+    for (int b = 0; b < 3; b++) {
+        double *s = y + m->body_yadr[b];
+        for (int k = 0; k < 4; k++) s[3 + k] = q[b][k];
+        for (int k = 0; k < 6; k++) s[7 + k] = v[b][k];
+    }
+    int bad = 0, outside = 0;
+    double maxerr = 0, maxpow = 0;
+    const int modes[5] = {RC_LIM_LO_PUSH, RC_LIM_LO_REL, RC_LIM_HI_PUSH, RC_LIM_HI_REL, RC_LIM_FREE};
+    for (int pass = 0; pass < 5; pass++) {
+        d->cpl->lmode[0] = modes[pass];
+        d->cpl->lmode[1] = modes[(pass + 2) % 5];
+        maxerr = fmax(maxerr, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
+        /* power balance: kinetic energy rate from the stops = -(edot) */
+        rc_data *d0 = rc_data_new(m);
+        d0->cpl->lmode[0] = d0->cpl->lmode[1] = RC_LIM_FREE;
+        rc_assemble_rhs(m, d0, 0.0, y, f0);
+        rc_assemble_rhs(m, d, 0.0, y, f1);
+        double pw = 0, ed = 0, scale = 0;
+        for (int b = 0; b < 3; b++) {
+            const double *s = y + m->body_yadr[b], *J = m->body_J + 9 * b;
+            const double *a0 = f0 + m->body_yadr[b] + 7, *a1 = f1 + m->body_yadr[b] + 7;
+            for (int k = 0; k < 3; k++) {
+                pw += m->body_mass[b] * s[7 + k] * (a1[k] - a0[k]);
+                double jw = 0;
+                for (int i = 0; i < 3; i++) jw += J[3 * k + i] * (a1[3 + i] - a0[3 + i]);
+                pw += s[10 + k] * jw;
+                scale += fabs(m->body_mass[b] * s[7 + k] * a1[k]);
+            }
+        }
+        for (int k = 0; k < 2; k++) ed += f1[c->eadr[k]] + f1[c->eadr[k] + 1];
+        maxpow = fmax(maxpow, fabs(pw + ed) / fmax(scale, 1.0));
+        rc_data_free(d0);
+    }
+    printf("    joint stops: max scaled |J - FD| %.2e, %d bad, %d outside the pattern; power balance %.1e\n", maxerr,
+           bad, outside, maxpow);
+    ENSURE(bad == 0 && outside == 0);
+    ENSURE(maxerr < 1e-6);
+    ENSURE(maxpow < 1e-12);
+    free(y);
+    free(f0);
+    free(f1);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
+/* The stops' input errors: file:line, card, field. */
+static void test_joint_stop_errors(void)
+{
+    struct {
+        const char *line4, *kind, *needle;
+    } bad[] = {
+        {"0.1,0.5,100,1\n", "REVOLUTE", "Lim_min"},
+        {"-0.1,-0.05,100,1\n", "PRISMATIC", "Lim_max"},
+        {"-4,3,100,1\n", "REVOLUTE", "less than a turn apart"},
+        {"-0.5,,100,1\n", "REVOLUTE", "both stops"},
+        {"-0.1,0.1,0,1\n", "PRISMATIC", "K_lim"},
+        {"-0.1,0.1,100,-1\n", "PRISMATIC", "C_lim"},
+        {"-0.1,0.1,100,1\n", "DISTANCE", "no free scalar"},
+        {"-0.1,0.1,100,1,1\n", "PRISMATIC", "K_lim blank"},
+        {"-0.1,0.1,,1,9\n", "PRISMATIC", "no such function"},
+        {"-0.1,0.1,,1,2\n", "PRISMATIC", "through 0"},
+    };
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        char text[1024];
+        const int dist = !strcmp(bad[k].kind, "DISTANCE");
+        snprintf(text, sizeof text,
+                 "/BEGIN\nj\n2022,0\nkg,m,s\nkg,m,s\n/NODE\n1,0,-1,0\n/RBODY/1\nb\n1,,,,1\n0.1,0.1,0.1\n0,0,0\n"
+                 "/JOINT/%s/1\nx\n1,0\n0,0,0\n%s\n%s/FUNCT/1\nlin\n0,0\n1,1e3\n/FUNCT/2\noff\n0,5\n1,1e3\n"
+                 "/RUN\n1,0.1\n/END\n",
+                 bad[k].kind, dist ? "0,-1,0" : "0,0,1", bad[k].line4);
+        rc_error e;
+        rc_model *m = tu_compile_text(text, "bad.rad", &e);
+        ENSURE(m == NULL);
+        if (m) {
+            rc_model_free(m);
+            continue;
+        }
+        ENSURE(e.code == RC_EINPUT);
+        if (!strstr(e.msg, bad[k].needle) || !strstr(e.msg, "bad.rad:18:")) {
+            fprintf(stderr, "  case %zu: message lacks '%s' or the line: %s\n", k, bad[k].needle, e.msg);
+            rc_test_failed_now++;
+        }
+    }
+}
+
 void suite_joint(void);
 void suite_joint(void)
 {
+    RUN_TEST(test_joint_stop_jacobian);
+    RUN_TEST(test_joint_stop_errors);
     RUN_TEST(test_joint_cards_compile);
     RUN_TEST(test_joint_card_errors);
     RUN_TEST(test_joint_jacobian_matches_finite_differences);

@@ -5,10 +5,12 @@
  * the impact speed derived from the initial state, and the errors.
  */
 #include <math.h>
+#include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "base/error.h"
+#include "engine/events.h"
 #include "engine/restitution.h"
 #include "model/model.h"
 #include "model/power.h"
@@ -156,9 +158,64 @@ static void test_restitution_errors(void)
     ENSURE(strstr(e.msg, "field e_target"));
 }
 
+/* Settling (docs/theory.md 5.2): a ball bouncing with e = 0.7 under
+ * gravity ends held in persistent contact, once, near the rigid Zeno time;
+ * a settled contact's release root is off, and the mark goes with the
+ * closed mode. */
+static void test_restitution_settling(void)
+{
+    const char *text =
+        "/BEGIN\nsettle\n2022,0\nkg,m,s\nkg,m,s\n/FUNCT/1\nlinear\n0,0\n1,1e8\n"
+        "/NODE\n1,0,0,1.05\n/RBODY/1\nball\n1,,,,1\n0.001,0.001,0.001\n0,0,0\n"
+        "/SURF/ELLIPS/1\nball\n0,2,1\n0,0,1.05\n0.05,0.05,0.05\n/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
+        "/GRAV/1\ng\n0,Z,0,0,0,,1,-9.81\n/INTER/TYPE6/1\nfloor\n         1         2\n"
+        "                                                           0\n"
+        "                   0         0         0         0         0\n"
+        "         1         0                                                 0\n         0\n"
+        "                             0         0                                     0.7\n"
+        "/RUN\n3,0.01\n/END\n";
+    rc_error e;
+    rc_model *m = tu_compile_text(text, "settle.rad", &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    rc_run_options o = {0};
+    rc_stats st;
+    ENSURE(rc_run(m, &o, &st, &e) == RC_OK);
+    /* t_inf = sqrt(2h/g) + 2 v1 e / (g (1 - e)), h = 1 m: 2.558634 s */
+    const double h = 1.0, g = 9.81, v1 = sqrt(2 * g * h), tinf = sqrt(2 * h / g) + 2 * v1 * 0.7 / (g * 0.3);
+    printf("    settled %ld time(s), at %.9f s (rigid Zeno time %.9f s)\n", st.settles, st.t_settle, tinf);
+    ENSURE(st.settles == 1 && fabs(st.t_settle - tinf) < 1e-3 && st.t_end == 3.0);
+    /* the release root of a settled closed contact is off */
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double)), *gr = calloc((size_t)rc_root_count(m), sizeof(double));
+    rc_initial_state(m, y);
+    y[m->body_yadr[0] + 2] = 0.049999; /* 1 um deep */
+    y[m->body_yadr[0] + 9] = 0.5;    /* leaving fast: the force pulls */
+    d->inter_mode[0] = RC_MODE_CLOSED;
+    rc_assemble_roots(m, d, 0.0, y, gr);
+    ENSURE(gr[RC_ROOT_FORCE] < 0);
+    d->inter_settled[0] = 1;
+    rc_assemble_roots(m, d, 0.0, y, gr);
+    ENSURE(gr[RC_ROOT_FORCE] == 1.0 && gr[RC_ROOT_ZONE] > 0);
+    /* separation at P = 0 (the zone root falling) opens it and clears the mark */
+    int roots[64] = {0}, restart = 0;
+    roots[RC_ROOT_ZONE] = -1;
+    rc_event ev[4];
+    ENSURE(rc_events_apply(m, d, 0.0, y, roots, ev, 4, &restart) == 1 && d->inter_mode[0] == RC_MODE_OPEN &&
+           d->inter_settled[0] == 0);
+    free(y);
+    free(gr);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 void suite_restitution(void);
 void suite_restitution(void)
 {
+    RUN_TEST(test_restitution_settling);
     RUN_TEST(test_restitution_ode_matches_linear_closed_form);
     RUN_TEST(test_restitution_type6_nonlinear_asked);
     RUN_TEST(test_restitution_power_asked);

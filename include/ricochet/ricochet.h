@@ -151,6 +151,10 @@ typedef struct rc_stats {
     rc_impact impact[RC_STATS_IMPACTS]; /* the first ones                 */
     char sampling_note[320]; /* non-empty: /RUN Dt_out is too coarse for the
                                 contacts (printed by rc_stats_print)     */
+    long settles;         /* contacts that settled into persistent contact
+                             after their bounces accumulated (event
+                             contact_settle)                           */
+    double t_settle;      /* time of the last settling [s]; NaN: none   */
 } rc_stats;
 
 /* The callback of every event (rc_run_options.on_event): called once per

@@ -158,14 +158,23 @@ class Deck:
                  line(("r", p2[0]), ("r", p2[1]), ("r", p2[2])),
                  line(("r", lambda0), ("r", leq), ("r", d)), title=title)
 
-    def joint(self, jid, kind, b1, b2, p, axis=None, p2=None, title="joint"):
+    def joint(self, jid, kind, b1, b2, p, axis=None, p2=None, lim_min=None, lim_max=None, k_lim=None, c_lim=None,
+              fct_lim=None, title="joint"):
         """/JOINT/<kind> (SPHERICAL, REVOLUTE, DISTANCE, FIXED, PRISMATIC):
         body 1, body 2 (0 = the ground), the anchor point (global, t = 0);
-        REVOLUTE and PRISMATIC: the axis; DISTANCE: the point p2 on body 2."""
+        REVOLUTE and PRISMATIC: the axis and optionally the stops of the joint
+        coordinate (Lim_min, Lim_max [rad] or [m], None: no such stop) with
+        their stiffness K_lim (or the curve fct_lim of their elastic force)
+        and damping C_lim; DISTANCE: the point p2 on body 2."""
         lines = [line(("i", b1), ("i", b2)), line(("r", p[0]), ("r", p[1]), ("r", p[2]))]
         third = axis if axis is not None else p2
         if third is not None:
             lines.append(line(("r", third[0]), ("r", third[1]), ("r", third[2])))
+        if lim_min is not None or lim_max is not None:
+            fields = [("r", lim_min), ("r", lim_max), ("r", k_lim), ("r", c_lim)]
+            if fct_lim is not None:
+                fields.append(("i", fct_lim))
+            lines.append(line(*fields))
         self.add(f"/JOINT/{kind.upper()}/{jid}", *lines, title=title)
 
     def power(self, iid, s1, s2, k=None, m1=None, c=None, m2=None, m3=None, fct_stiff=0, fct_damp=0, ispline=0,

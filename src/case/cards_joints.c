@@ -7,13 +7,72 @@
  *   /JOINT/PRISMATIC/joint_ID   relative translation along one axis only
  * Layout (docs/case-format.md): title; rbody_ID1 rbody_ID2; X Y Z (the
  * anchor point); REVOLUTE, PRISMATIC: Ax Ay Az (the axis); DISTANCE: X2 Y2
- * Z2 (the point on body 2). References are resolved by model/joint.c.
+ * Z2 (the point on body 2); REVOLUTE, PRISMATIC: an optional fourth line
+ * Lim_min Lim_max K_lim C_lim fct_lim (the stops of the joint coordinate,
+ * blank: none). References are resolved by model/joint.c, the stops compiled by
+ * model/coupling.c (RC_CPL_LIMIT).
  */
 #include <string.h>
 
 #include "base/error.h"
 #include "case/case_internal.h"
 #include "case/case_joint.h"
+
+/* Line 4 of REVOLUTE and PRISMATIC: Lim_min Lim_max K_lim C_lim, the stops
+ * of the joint coordinate (the rotation angle about the axis [rad], the
+ * slide along it [m], both zero in the initial configuration); a blank
+ * Lim_min or Lim_max: no such stop. */
+static rc_status read_limits(rc_reader *rd, const rc_block *b, rc_case_joint *k)
+{
+    rc_status st;
+    const int rev = k->kind == RC_CASE_JNT_REVOLUTE;
+    if (k->kind == RC_CASE_JNT_DISTANCE)
+        return rc_case_fail(rd, &k->line_loc[3], b->name, "Lim_min Lim_max",
+                            "expected no fourth line: a distance joint keeps its length, so it has no free scalar "
+                            "coordinate a stop could act on (a length that may vary between bounds is a "
+                            "/COUPLING/SPRING, or a /JOINT/PRISMATIC with stops)");
+    const int dl = rev ? RC_D_NONE : RC_D_L, dk = rev ? RC_D_E : RC_D_K, dc = rev ? RC_DIM(1, 2, -1) : RC_D_C;
+    rc_field l4[] = {RC_F_REALD("Lim_min", &k->lim_lo, 0, 0, dl), RC_F_REALD("Lim_max", &k->lim_hi, 0, 0, dl),
+                     RC_F_REALD("K_lim", &k->lim_k, 0, 0, dk), RC_F_REALD("C_lim", &k->lim_c, 0, RC_FF_NONNEG, dc),
+                     RC_F_INT("fct_lim", &k->lim_fct, 0, RC_FF_NONNEG)};
+    if ((st = rc_parse_line(rd, b, &b->lines[4], l4, RC_NF(l4)))) return st;
+    k->has_lo = !l4[0].blank;
+    k->has_hi = !l4[1].blank;
+    if (!k->has_lo && !k->has_hi) return RC_OK; /* a blank line: no stops */
+    const char *u = rev ? "rad" : "m";
+    if (k->has_lo && !(k->lim_lo <= 0))
+        return rc_case_fail(rd, &k->line_loc[3], b->name, "Lim_min",
+                            "expected a lower stop <= 0 %s (the joint coordinate is 0 in the initial configuration, "
+                            "which must lie within the stops), got %.9g",
+                            u, k->lim_lo);
+    if (k->has_hi && !(k->lim_hi >= 0))
+        return rc_case_fail(rd, &k->line_loc[3], b->name, "Lim_max",
+                            "expected an upper stop >= 0 %s (the joint coordinate is 0 in the initial configuration, "
+                            "which must lie within the stops), got %.9g",
+                            u, k->lim_hi);
+    /* a revolute's angle is measured within one turn around the middle of
+     * its stops (docs/theory.md 7.5): both stops, less than a turn apart */
+    const double two_pi = 6.28318530717958647692;
+    if (rev && (!k->has_lo || !k->has_hi))
+        return rc_case_fail(rd, &k->line_loc[3], b->name, k->has_lo ? "Lim_max" : "Lim_min",
+                            "expected both stops of a revolute joint (the angle is measured within one turn around "
+                            "their middle; a single stop would be met again from its other side after a turn: give "
+                            "the other one, e.g. a stop the motion never reaches), got it blank");
+    if (rev && !(k->lim_hi - k->lim_lo < two_pi))
+        return rc_case_fail(rd, &k->line_loc[3], b->name, "Lim_max",
+                            "expected stops less than a turn apart, Lim_max - Lim_min < 2 pi rad, got %.9g - (%.9g) = "
+                            "%.9g rad",
+                            k->lim_hi, k->lim_lo, k->lim_hi - k->lim_lo);
+    if (k->lim_fct > 0 && !l4[2].blank)
+        return rc_case_fail(rd, &k->line_loc[3], b->name, "K_lim",
+                            "expected K_lim blank with fct_lim = %d (the curve gives the stops' elastic force), got %s",
+                            k->lim_fct, l4[2].got);
+    if (k->lim_fct == 0 && !(k->lim_k > 0))
+        return rc_case_fail(rd, &k->line_loc[3], b->name, "K_lim",
+                            "expected the stiffness of the stops > 0 %s (or a curve in fct_lim), got %s",
+                            rev ? "N m/rad" : "N/m", l4[2].blank ? "blank" : l4[2].got);
+    return RC_OK;
+}
 
 rc_status rc_card_joint(rc_reader *rd, const rc_block *b)
 {
@@ -32,13 +91,15 @@ rc_status rc_card_joint(rc_reader *rd, const rc_block *b)
     k->id = b->id;
     k->kind = kind;
     k->loc = b->hdr->loc;
-    for (int i = 0; i < 3; i++) k->line_loc[i] = k->loc;
+    for (int i = 0; i < 4; i++) k->line_loc[i] = k->loc;
     const int third = kind == RC_CASE_JNT_REVOLUTE || kind == RC_CASE_JNT_PRISMATIC || kind == RC_CASE_JNT_DISTANCE;
     const char *desc = kind == RC_CASE_JNT_DISTANCE ? "rbody_ID1 rbody_ID2, X1 Y1 Z1, X2 Y2 Z2"
-                       : third                      ? "rbody_ID1 rbody_ID2, X Y Z, Ax Ay Az"
-                                                    : "rbody_ID1 rbody_ID2, X Y Z";
+                       : third ? "rbody_ID1 rbody_ID2, X Y Z, Ax Ay Az, optional Lim_min Lim_max K_lim C_lim fct_lim"
+                               : "rbody_ID1 rbody_ID2, X Y Z";
     int nd;
-    if ((st = rc_card_lines(rd, b, k->title, third ? 3 : 2, third ? 3 : 2, desc, &nd))) return st;
+    /* a fourth line: the stops (REVOLUTE, PRISMATIC; DISTANCE reads it to
+     * refuse it with its reason) */
+    if ((st = rc_card_lines(rd, b, k->title, third ? 3 : 2, third ? 4 : 2, desc, &nd))) return st;
     for (int i = 0; i < nd; i++) k->line_loc[i] = b->lines[i + 1].loc;
 
     rc_field l1[] = {RC_F_INT("rbody_ID1", &k->rbody[0], 0, RC_FF_POS),
@@ -70,5 +131,6 @@ rc_status rc_card_joint(rc_reader *rd, const rc_block *b)
             return rc_case_fail(rd, &k->line_loc[2], b->name, "Ax Ay Az",
                                 "expected a non-zero axis direction, got (0, 0, 0)");
     }
+    if (nd >= 4 && (st = read_limits(rd, b, k))) return st;
     return rc_note_id(rd, RC_IDK_JOINT, k->id, &k->loc, b->hdr->text);
 }

@@ -182,6 +182,8 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         if (!trk) gi[RC_ROOT_ZONE] = r.p + (mode != RC_MODE_OPEN ? d->inter_band[2 * i] : 0.0);
         /* total normal force, unclipped: release and re-close */
         if (mode != RC_MODE_OPEN) gi[RC_ROOT_FORCE] = r.fn + (mode == RC_MODE_CLOSED ? d->inter_band[2 * i + 1] : 0.0);
+        /* a settled contact is not released at zero force: it opens with P */
+        if (mode == RC_MODE_CLOSED && d->inter_settled[i]) gi[RC_ROOT_FORCE] = 1.0;
         /* hysteresis: reversal on the curves, bounds on the Stiff line */
         /* power law with RDF: the rate of P (approach / rebound) */
         if (mode != RC_MODE_OPEN && m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0)

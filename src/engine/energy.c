@@ -80,7 +80,7 @@ void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, d
     /* couplings: integrated work of the spring and line forces, dissipation */
     for (int k = 0; k < m->cpl->n; k++) {
         const double *ce = y + m->cpl->eadr[k];
-        if (m->cpl->kind[k] == RC_CPL_SPRING || m->cpl->kind[k] == RC_CPL_CONTACT) {
+        if (m->cpl->kind[k] == RC_CPL_SPRING || m->cpl->kind[k] == RC_CPL_CONTACT || m->cpl->kind[k] == RC_CPL_LIMIT) {
             e[RC_E_CPL_ELASTIC] += ce[0];
             e[RC_E_CPL_DAMP] += ce[1];
         } else {

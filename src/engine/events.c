@@ -32,6 +32,7 @@ rc_data *rc_data_new(const rc_model *m)
     d->inter_slip = calloc(n, sizeof(int));
     d->inter_dref = calloc(3 * n, sizeof(double));
     d->inter_band = calloc(2 * n, sizeof(double));
+    d->inter_settled = calloc(n, sizeof(int));
     d->cpl = rc_cpl_data_new(m);
     /* friction per contact point: modes, and the scratch of the roots (5 per
      * point) and of the Jacobian (complex own and point states and rates) */
@@ -72,7 +73,7 @@ rc_data *rc_data_new(const rc_model *m)
             jc_ok = d->jcache != NULL;
         }
     }
-    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->cpl || !imp_ok || !jc_ok ||
+    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->inter_settled || !d->cpl || !imp_ok || !jc_ok ||
         !d->pt_slip || !d->pt_work || !d->node_cache) {
         rc_data_free(d);
         return NULL;
@@ -90,6 +91,7 @@ void rc_data_free(rc_data *d)
     free(d->inter_slip);
     free(d->inter_dref);
     free(d->inter_band);
+    free(d->inter_settled);
     free(d->pt_slip);
     free(d->pt_work);
     free(d->seg_hint); /* and the node cache */
@@ -463,6 +465,13 @@ static const char *step_friction(const rc_model *m, rc_data *d, int i, double t,
     return fr->form == RC_FF_VISCOUS ? "fric_unsaturate" : "fric_stick";
 }
 
+/* A settled contact (rc_data.inter_settled) stays so while it is closed. */
+static void clear_settled(const rc_model *m, rc_data *d)
+{
+    for (int i = 0; i < m->ninter; i++)
+        if (d->inter_mode[i] != RC_MODE_CLOSED) d->inter_settled[i] = 0;
+}
+
 int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const int *roots, rc_event *ev,
                     int max_ev, int *restart)
 {
@@ -519,6 +528,7 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
                 ev[n].kind = kinds[j];
             }
     }
+    clear_settled(m, d);
     return n;
 }
 
@@ -593,7 +603,8 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             d->inter_mode[i] = RC_MODE_CLOSED;
             reset_friction(m, d, i, y, restart);
             kind = "contact_close";
-        } else if (mode == RC_MODE_CLOSED && fabs(c.fn) <= fband && (dc.fn < 0 || (dc.fn == 0 && ctrend < 0))) {
+        } else if (mode == RC_MODE_CLOSED && !d->inter_settled[i] && fabs(c.fn) <= fband &&
+                   (dc.fn < 0 || (dc.fn == 0 && ctrend < 0))) {
             /* closed at zero force that is about to pull: release */
             d->inter_mode[i] = RC_MODE_RELEASED;
             reset_friction(m, d, i, y, restart);
@@ -661,5 +672,6 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
         }
         n++;
     }
+    clear_settled(m, d);
     return n;
 }

@@ -234,10 +234,10 @@ void rc_cpl_print_summary(const rc_model *m, FILE *f)
     static const char *const form_name[5] = {"", "constant k", "polynomial k_eff", "force table f_e(x)",
                                              "stiffness table k(x)"};
     const rc_couplings *p = m->cpl;
-    fprintf(f, "couplings   %d\n", p->n);
+    fprintf(f, "couplings   %d\n", p->ncard); /* the joint stops: with their joints */
     double *y = malloc(((size_t)m->ny + 1) * sizeof(double));
     if (y) rc_initial_state(m, y);
-    for (int k = 0; k < p->n && k < 20; k++) {
+    for (int k = 0; k < p->ncard && k < 20; k++) {
         const int ids[2] = {p->b1[k] >= 0 ? m->body_id[p->b1[k]] : 0, p->b2[k] >= 0 ? m->body_id[p->b2[k]] : 0};
         rc_cpl_report r;
         const int ok = y && rc_cpl_report_eval(m, NULL, k, 0.0, y, &r) == 0;
@@ -253,13 +253,14 @@ void rc_cpl_print_summary(const rc_model *m, FILE *f)
                     p->lambda0[k], p->leq[k], p->ea[k], ok ? r.length : NAN, ok ? r.force : NAN,
                     ok ? r.lowest : NAN, ok ? "" : " (catenary equations not solved)");
     }
-    if (p->n > 20) fprintf(f, "  ... and %d more couplings (the first 20 in deck order are listed)\n", p->n - 20);
+    if (p->ncard > 20)
+        fprintf(f, "  ... and %d more couplings (the first 20 in deck order are listed)\n", p->ncard - 20);
     free(y);
 }
 
 void rc_cpl_frame(const rc_model *m, const rc_data *d, double t, const double *y, double *buf)
 {
-    const int n = m->cpl->n;
+    const int n = m->cpl->ncard; /* the joint stops: with their joints */
     for (int k = 0; k < n; k++) {
         rc_cpl_report r;
         rc_cpl_report_eval(m, d, k, t, y, &r);

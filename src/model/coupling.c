@@ -12,12 +12,15 @@
 #include <string.h>
 
 #include "case/case_coupling.h"
+#include "case/case_joint.h"
+#include "model/joint.h"
+#include "model/table.h"
 #include "model/coupling.h"
 #include "model/coupling_contact.h"
 #include "base/error.h"
 
 
-static const char *const kind_name[4] = {"", "SPRING", "CATENARY", "CONTACT"};
+static const char *const kind_name[5] = {"", "SPRING", "CATENARY", "CONTACT", "JOINT_STOP"};
 
 /* Body index of /RBODY id (0: fixed in space, -1; no such body: -2); the
  * model's bodies are the case's, in the same order. */
@@ -64,6 +67,11 @@ static rc_status alloc_arrays(rc_couplings *p, int n)
     CPL_ALLOC(p->ea, n);
     CPL_ALLOC(p->jb, n);
     CPL_ALLOC(p->law_loc, n);
+    CPL_ALLOC(p->ljoint, n);
+    CPL_ALLOC(p->lrev, n);
+    CPL_ALLOC(p->lfrm, 9 * n);
+    CPL_ALLOC(p->llo, n);
+    CPL_ALLOC(p->lhi, n);
 #undef CPL_ALLOC
     return RC_OK;
 }
@@ -148,17 +156,83 @@ static rc_status compile_one(const rc_case *c, rc_model *m, int k, rc_error *err
     return RC_OK;
 }
 
+static int has_stops(const rc_case_joint *cj) { return cj->has_lo || cj->has_hi; }
+
+/* The stops of joint card j as coupling k (docs/theory.md, "Joint stops"):
+ * the bodies and anchors as the joint's (model/joint.c, which checks them),
+ * the joint frame, the law. */
+static rc_status compile_stop(const rc_case *c, rc_model *m, int j, int k, rc_error *err)
+{
+    const rc_case_joint *cj = &c->joint[j];
+    rc_couplings *p = m->cpl;
+    static const char *const jname[6] = {"", "SPHERICAL", "REVOLUTE", "DISTANCE", "FIXED", "PRISMATIC"};
+    char card[64];
+    snprintf(card, sizeof card, "/JOINT/%s/%d", jname[cj->kind], cj->id);
+    if (!(p->name[k] = malloc(strlen(card) + 1))) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    strcpy(p->name[k], card);
+    p->id[k] = cj->id;
+    p->kind[k] = RC_CPL_LIMIT;
+    p->type[k] = kind_name[RC_CPL_LIMIT];
+    p->table[k] = -1;
+    p->law_loc[k] = rc_loc_or(cj->line_loc[3], cj->loc);
+    p->ljoint[k] = j;
+    p->lrev[k] = cj->kind == RC_CASE_JNT_REVOLUTE;
+    int *bs[2] = {&p->b1[k], &p->b2[k]};
+    double *ss[2] = {p->s1 + 3 * k, p->s2 + 3 * k};
+    for (int e = 0; e < 2; e++) {
+        const int b = body_index(c, cj->rbody[e]);
+        if (b == -2)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card %s, field rbody_ID%d: expected the id of a /RBODY%s, got %d (no such body)",
+                     RC_LOC(cj->line_loc[0]), card, e + 1, e ? " or 0 (the ground)" : "", cj->rbody[e]);
+        *bs[e] = b;
+        const double *org = b >= 0 ? m->body_y0 + RC_NB * b : m->ground_y0;
+        for (int i = 0; i < 3; i++) ss[e][i] = cj->p[i] - org[i];
+    }
+    const double na = sqrt(cj->axis[0] * cj->axis[0] + cj->axis[1] * cj->axis[1] + cj->axis[2] * cj->axis[2]);
+    const double ax[3] = {cj->axis[0] / na, cj->axis[1] / na, cj->axis[2] / na};
+    rc_jnt_axis_frame(ax, p->lfrm + 9 * k);
+    p->llo[k] = cj->has_lo ? cj->lim_lo : -INFINITY;
+    p->lhi[k] = cj->has_hi ? cj->lim_hi : INFINITY;
+    p->coef[3 * k] = cj->lim_k;
+    p->kd[k] = cj->lim_c;
+    if (cj->lim_fct > 0) { /* the elastic part from a curve F_e(p), through 0 */
+        rc_status st = rc_case_ref_funct(c, cj->lim_fct, 1, p->law_loc[k], card, "fct_lim", &p->table[k], err);
+        if (st) return st;
+        double f0, df0;
+        rc_table_eval(&m->table[p->table[k]], 0.0, &f0, &df0);
+        double ymax = 0.0;
+        for (int i = 0; i < m->table[p->table[k]].n; i++) ymax = fmax(ymax, fabs(m->table[p->table[k]].y[i]));
+        if (fabs(f0) > 1e-12 * ymax)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card %s, field fct_lim: expected a curve through 0 at p = 0 (the stop's force starts "
+                               "from zero at the stop), got F_e(0) = %.9g for /FUNCT %d",
+                     RC_LOC(p->law_loc[k]), card, f0, cj->lim_fct);
+    }
+    return RC_OK;
+}
+
 rc_status rc_cpl_compile(const rc_case *c, rc_model *m, rc_error *err)
 {
     gsl_set_error_handler_off(); /* GSL reports through return codes */
     m->cpl = calloc(1, sizeof *m->cpl);
-    if (!m->cpl || alloc_arrays(m->cpl, c->ncoupling)) RC_RAISE(err, RC_ENOMEM, "out of memory compiling the couplings");
+    int nlim = 0;
+    for (int j = 0; j < c->njoint; j++) nlim += has_stops(&c->joint[j]);
+    if (!m->cpl || alloc_arrays(m->cpl, c->ncoupling + nlim))
+        RC_RAISE(err, RC_ENOMEM, "out of memory compiling the couplings");
+    m->cpl->ncard = c->ncoupling;
     rc_status st = rc_cpl_contact_alloc(m, err);
     if (st) return st;
+    for (int k = 0; k < m->cpl->n; k++) m->cpl->ljoint[k] = -1;
     for (int k = 0; k < c->ncoupling; k++) {
         m->cpl->ct->fadr[k + 1] = m->cpl->ct->fadr[k] = m->cpl->ct->nface; /* no faces unless a contact */
         st = compile_one(c, m, k, err);
         if (st) return st;
+    }
+    for (int j = 0, k = c->ncoupling; j < c->njoint; j++) {
+        if (!has_stops(&c->joint[j])) continue;
+        m->cpl->ct->fadr[k + 1] = m->cpl->ct->fadr[k] = m->cpl->ct->nface;
+        if ((st = compile_stop(c, m, j, k++, err))) return st;
     }
     return RC_OK;
 }
@@ -202,7 +276,7 @@ void rc_cpl_free(rc_couplings *p)
     }
     void *arrays[] = {p->id,  p->kind, (void *)p->type, p->name, p->b1,   p->b2,   p->s1,      p->s2,  p->eadr,
                       p->form, p->x0,  p->kd,   p->coef, p->table, p->fref,   p->xref, p->cum,
-                      p->lambda0, p->leq, p->ea, p->jb, p->law_loc};
+                      p->lambda0, p->leq, p->ea, p->jb, p->law_loc, p->ljoint, p->lrev, p->lfrm, p->llo, p->lhi};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     rc_cpl_contact_free(p->ct);
     free(p);
@@ -226,7 +300,8 @@ rc_cpl_data *rc_cpl_data_new(const rc_model *m)
     }
     for (int k = 0; k < 2 * p->n; k++) cd->warm[k] = NAN;
     cd->fmode = calloc((size_t)(p->ct ? p->ct->nface : 0) + 1, sizeof(int));
-    if (!cd->fmode) {
+    cd->lmode = calloc((size_t)p->n + 1, sizeof(int));
+    if (!cd->fmode || !cd->lmode) {
         rc_cpl_data_free(cd);
         return NULL;
     }
@@ -238,6 +313,7 @@ void rc_cpl_data_free(rc_cpl_data *cd)
     if (!cd) return;
     free(cd->warm);
     free(cd->fmode);
+    free(cd->lmode);
     rc_cat_ws_free(cd->ws);
     free(cd);
 }

@@ -6,6 +6,13 @@
  *
  * Contact couplings (RC_CPL_CONTACT): model/coupling_contact.h.
  *
+ * Joint stops (RC_CPL_LIMIT): the stops of a /JOINT/REVOLUTE or
+ * /JOINT/PRISMATIC (line 4 of the card), compiled as couplings after the
+ * /COUPLING cards (k >= ncard): a contact law on the joint coordinate q
+ * (rotation angle about the axis [rad], slide along it [m], 0 in the
+ * initial configuration) that acts while q is past a stop and its force
+ * does not pull (docs/theory.md, "Joint stops").
+ *
  * Model side (constant): rc_couplings, one flat array per field, reached
  * from rc_model.cpl. Data side (mutable): rc_cpl_data in rc_data.cpl, the
  * catenary warm starts and the GSL workspace, allocated once per run so
@@ -17,6 +24,8 @@
  *   catenary: [0] W_cat  work done on the line by its ends = change of
  *                        its elastic + gravitational energy          [J]
  *             [1] unused (kept at zero)                              [J]
+ *   limit:    [0] W_el   work of the stop's elastic part K pen       [J]
+ *             [1] W_damp energy dissipated by its damper            [J]
  */
 #ifndef RC_COUPLING_H
 #define RC_COUPLING_H
@@ -28,7 +37,15 @@
 #define RC_CE 2 /* energy states of a coupling */
 
 /* Coupling kinds. */
-typedef enum { RC_CPL_SPRING = 1, RC_CPL_CATENARY = 2, RC_CPL_CONTACT = 3 } rc_cpl_kind;
+typedef enum { RC_CPL_SPRING = 1, RC_CPL_CATENARY = 2, RC_CPL_CONTACT = 3, RC_CPL_LIMIT = 4 } rc_cpl_kind;
+
+/* Joint stop modes (rc_cpl_data.lmode): q within the stops, past the lower
+ * (upper) stop pushing, or past it with a force that would pull (released). */
+enum { RC_LIM_FREE = 0, RC_LIM_LO_PUSH = 1, RC_LIM_LO_REL = 2, RC_LIM_HI_PUSH = 3, RC_LIM_HI_REL = 4 };
+/* Root functions per joint stop coupling, after the contact couplings'
+ * faces: q - q_min, q_max - q (1 without that stop), the unclipped force
+ * of the stop q is past (1 within the stops). */
+#define RC_LIM_ROOTS 3
 
 /* Stiffness forms of a spring-damper (docs/theory.md 8, card field Iform). */
 typedef enum {
@@ -44,6 +61,8 @@ typedef enum {
 
 typedef struct rc_couplings {
     int n;
+    int ncard;           /* couplings of /COUPLING cards (0..ncard-1); the
+                            joint stops follow (ncard..n-1)                  */
     int *id;             /* [n] card id                                       */
     rc_cpl_kind *kind;   /* [n]                                               */
     const char **type;   /* [n] "SPRING" or "CATENARY" (static strings)       */
@@ -74,6 +93,14 @@ typedef struct rc_couplings {
     rc_loc *law_loc;     /* [n] file:line of the card line holding the law's
                             fields (catenary: Lambda0 L_eq D), for messages  */
     struct rc_cpl_contact *ct; /* contact couplings (coupling_contact.h)      */
+    /* joint stops (kind RC_CPL_LIMIT; b1, s1: the joint's body a and its
+     * anchor, b2, s2: body b (or the ground); coef[3k] the stiffness K
+     * [N/m] or [N m/rad], kd the damping C [N s/m] or [N m s/rad]) */
+    int *ljoint;         /* [n] index of the joint (case order), -1          */
+    int *lrev;           /* [n] 1: revolute (q an angle), 0: prismatic       */
+    double *lfrm;        /* [9n] joint frame (axis, two normals), the body
+                            frames of a and b (equal at t = 0) [-]           */
+    double *llo, *lhi;   /* [n] stops q_min, q_max; -inf, +inf: none         */
 } rc_couplings;
 
 /* Solution of the catenary equations for one span (X, Y): end forces and
@@ -109,6 +136,7 @@ typedef struct rc_cpl_data {
     void *ws;            /* catenary solver workspace (GSL)                  */
     int fail;            /* coupling whose forces failed in the last call, -1 */
     int *fmode;          /* [ct->nface] contact coupling face modes RC_FACE_* */
+    int *lmode;          /* [n] joint stop modes RC_LIM_* (other kinds: 0)   */
 } rc_cpl_data;
 
 /* ---- compile (model/coupling.c) ---------------------------------- */
@@ -170,6 +198,14 @@ void rc_cpl_root_dirs(const rc_model *m, const rc_data *d, int *dir);
 void rc_cpl_modes_init(const rc_model *m, rc_data *d, double t, const double *y);
 int rc_cpl_events(const rc_model *m, rc_data *d, double t, const double *y, const int *roots, const char **kinds,
                   int *cpls, int max_ev, int *restart);
+
+/* Joint stop couplings: their number (n - ncard). */
+static inline int rc_cpl_nlim(const rc_model *m) { return m->cpl ? m->cpl->n - m->cpl->ncard : 0; }
+/* The stop force or moment of joint j at (t, y) in the modes of d: the
+ * generalised force on the joint coordinate q (along +q on body a) [N] or
+ * [N m]; 0 without stops (engine/coupling_rhs.inc). *q receives q [m] or
+ * [rad] (NaN without stops). */
+double rc_cpl_joint_stop(const rc_model *m, const rc_data *d, int j, const double *y, double *q);
 
 /* ---- output ------------------------------------------------------------ */
 /* Values per coupling at (t, y) for one output record, into buf [9 n]:

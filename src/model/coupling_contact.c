@@ -45,7 +45,8 @@ void rc_cpl_contact_free(rc_cpl_contact *ct)
 
 int rc_cpl_nroots(const rc_model *m)
 {
-    return m->cpl && m->cpl->ct ? RC_FACE_ROOTS * m->cpl->ct->nface : 0;
+    /* the faces of the contact couplings, then the joint stops */
+    return (m->cpl && m->cpl->ct ? RC_FACE_ROOTS * m->cpl->ct->nface : 0) + RC_LIM_ROOTS * rc_cpl_nlim(m);
 }
 
 int rc_root_count(const rc_model *m) { return rc_root_cpl_base(m) + rc_cpl_nroots(m); }

@@ -10,7 +10,9 @@
 #include "base/error.h"
 #include "case/case_joint.h"
 #include "model/imposed.h"
+#include "model/coupling.h"
 #include "model/joint.h"
+#include "model/table.h"
 
 static const char *const kind_name[6] = {"", "SPHERICAL", "REVOLUTE", "DISTANCE", "FIXED", "PRISMATIC"};
 
@@ -26,7 +28,7 @@ void rc_jnt_free(rc_joints *j)
 }
 
 /* A right-handed orthonormal frame with e[0] along the unit axis a. */
-static void frame_of(const double a[3], double e[9])
+void rc_jnt_axis_frame(const double a[3], double e[9])
 {
     memcpy(e, a, 3 * sizeof(double));
     /* the global axis least aligned with a */
@@ -152,7 +154,7 @@ rc_status rc_jnt_compile(const rc_case *c, rc_model *m, rc_error *err)
             const double na = sqrt(cj->axis[0] * cj->axis[0] + cj->axis[1] * cj->axis[1] + cj->axis[2] * cj->axis[2]);
             for (int k = 0; k < 3; k++) ax[k] = cj->axis[k] / na;
         }
-        frame_of(ax, J->ua + 9 * j);
+        rc_jnt_axis_frame(ax, J->ua + 9 * j);
         memcpy(J->ub + 9 * j, J->ua + 9 * j, 9 * sizeof(double));
         if (cj->kind == RC_CASE_JNT_DISTANCE)
             J->len[j] = sqrt(pow(cj->p2[0] - cj->p[0], 2) + pow(cj->p2[1] - cj->p[1], 2) + pow(cj->p2[2] - cj->p[2], 2));
@@ -175,6 +177,14 @@ void rc_jnt_print(const rc_model *m, FILE *f)
         if (J->kind[j] == RC_JNT_REVOLUTE || J->kind[j] == RC_JNT_PRISMATIC)
             fprintf(f, ", axis (%.6g, %.6g, %.6g)", J->ua[9 * j], J->ua[9 * j + 1], J->ua[9 * j + 2]);
         if (J->kind[j] == RC_JNT_DISTANCE) fprintf(f, ", length %.9g m", J->len[j]);
+        for (int k = m->cpl ? m->cpl->ncard : 0; m->cpl && k < m->cpl->n; k++) {
+            if (m->cpl->ljoint[k] != j) continue;
+            const char *u = m->cpl->lrev[k] ? "rad" : "m";
+            fprintf(f, ", stops %.9g %s .. %.9g %s (", m->cpl->llo[k], u, m->cpl->lhi[k], u);
+            if (m->cpl->table[k] >= 0) fprintf(f, "F_e from /FUNCT %d", m->table[m->cpl->table[k]].id);
+            else fprintf(f, "K %.6g %s", m->cpl->coef[3 * k], m->cpl->lrev[k] ? "N m/rad" : "N/m");
+            fprintf(f, ", C %.6g %s)", m->cpl->kd[k], m->cpl->lrev[k] ? "N m s/rad" : "N s/m");
+        }
         fprintf(f, "\n");
     }
 }

@@ -58,6 +58,9 @@ typedef struct rc_joints {
  * model/joint.c. */
 rc_status rc_jnt_compile(const rc_case *c, rc_model *m, rc_error *err);
 void rc_jnt_free(rc_joints *j);
+/* A right-handed orthonormal frame e[9] (rows) with e[0..2] along the unit
+ * axis a: the joint frame of REVOLUTE and PRISMATIC (model/joint.c). */
+void rc_jnt_axis_frame(const double a[3], double e[9]);
 /* Lines of `ricochet check`. */
 void rc_jnt_print(const rc_model *m, FILE *f);
 

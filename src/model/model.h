@@ -296,6 +296,11 @@ typedef struct rc_data {
                             last, -1: none (geom_seg.inc, node_seg) */
     double *inter_dref;  /* [ninter*3] sliding direction when a stateless friction
                             law saturated (reversal root) [-] */
+    int *inter_settled;  /* [ninter] 1: a closed contact held in persistent contact
+                            after its bounces accumulated (the release at zero
+                            force suspended; it opens when P returns to 0;
+                            docs/theory.md 5.2); set by the driver, cleared when
+                            the mode leaves CLOSED */
     double *inter_band;  /* [ninter*2] touch bands of a contact closed at zero
                             penetration or zero force: separation root P + band[0]
                             [m], release root F_n + band[1] [N]; 0 otherwise */
@@ -379,7 +384,8 @@ double rc_point_mass(const rc_model *m, int i, const double *y, const rc_inter_r
 int rc_inter_on_joint(const rc_model *m, int i);
 /* Root functions, in this order: RC_ROOTS_PER_INTER per interface; one slip
  * root per contact point with friction (inter_npt, at rc_root_point_base);
- * the contact couplings' (at rc_root_cpl_base; coupling_contact.h). */
+ * the contact couplings' faces (at rc_root_cpl_base; coupling_contact.h),
+ * then RC_LIM_ROOTS per joint with stops (coupling.h). */
 static inline int rc_root_point_base(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter; }
 static inline int rc_root_cpl_base(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter + m->npt; }
 int rc_root_count(const rc_model *m); /* all of them (coupling_contact.c) */

@@ -99,7 +99,7 @@ enum {
     V_SURF_COORD, V_SURF_KIND, V_SURF_BODY, V_SURF_POINT, V_SURF_NORMAL, V_SURF_RADIUS, V_SURF_PARAM, V_INTER_SURF,
     V_SURF_NODE0, V_SURF_SEG0, V_SEG_NODE, V_SEG_CORNER,
     V_JOINT_COORD, V_JOINT_TYPE, V_JOINT_FORCE, V_JOINT_MOMENT, V_JOINT_DRIFT_POS, V_JOINT_DRIFT_ANG, V_JOINT_WORK,
-    V_COUNT
+    V_JOINT_STOP_FORCE, V_JOINT_STOP_MOMENT, V_COUNT
 };
 
 typedef struct var_spec {
@@ -241,6 +241,14 @@ static const var_spec var_table[V_COUNT] = {
                            "solution"},
     [V_JOINT_WORK] = {"joint_work", NC_DOUBLE, 1, {D_TIME}, U_ENERGY, "work done by the joint reactions",
                       "integral of the reactions' power; 0 for ideal joints (not part of energy_total)"},
+    [V_JOINT_STOP_FORCE] = {"joint_stop_force", NC_DOUBLE, 2, {D_TIME, D_JOINT}, U_FORCE,
+                            "force of the stops of a prismatic joint on its first body, along the axis",
+                            "positive along +axis (pushing the slide back from the lower stop); 0 for other "
+                            "joints, within the stops, or without stops; their work is in energy_coupling_*"},
+    [V_JOINT_STOP_MOMENT] = {"joint_stop_moment", NC_DOUBLE, 2, {D_TIME, D_JOINT}, U_MOMENT,
+                             "moment of the stops of a revolute joint on its first body, about the axis",
+                             "positive about +axis (turning back from the lower stop); 0 for other joints, "
+                             "within the stops, or without stops; their work is in energy_coupling_*"},
 };
 
 /* Impacts table (dimension impact), defined and written at close. */
@@ -1014,6 +1022,8 @@ rc_status rc_output_frame(rc_output *o, const rc_frame *f, rc_error *err)
         [V_JOINT_DRIFT_POS] = f->joint_drift_pos,
         [V_JOINT_DRIFT_ANG] = f->joint_drift_ang,
         [V_JOINT_WORK] = f->joint_work,
+        [V_JOINT_STOP_FORCE] = f->joint_stop_force,
+        [V_JOINT_STOP_MOMENT] = f->joint_stop_moment,
     };
     if (o->broken || o->stopped) RC_RAISE(err, RC_EIO, "%s: an earlier write failed or found no room", o->path);
     /* check everything before copying anything: a record is whole or absent */
@@ -1081,6 +1091,8 @@ static rc_status write_final(rc_output *o, const rc_stats *st, int complete, con
         if (rc == RC_OK) rc = put_int64(o, "stats_root_evals", st->root_evals, err);
         if (rc == RC_OK) rc = put_int64(o, "stats_events", st->events, err);
         if (rc == RC_OK) rc = put_int64(o, "stats_reinits", st->reinits, err);
+        if (rc == RC_OK) rc = put_int64(o, "stats_settles", st->settles, err);
+        if (rc == RC_OK) rc = put_double(o, "stats_t_settle", st->t_settle, err);
         if (rc == RC_OK) rc = put_double(o, "stats_t_end", st->t_end, err);
         if (rc == RC_OK) rc = put_double(o, "stats_wall_time", st->wall_time, err);
         if (rc == RC_OK) rc = put_double(o, "energy_balance_residual", st->energy_residual, err);

@@ -106,6 +106,10 @@ typedef struct rc_frame {
     const double *joint_drift_pos; /* [njoint] position constraint residual [m] */
     const double *joint_drift_ang; /* [njoint] angle constraint residual [-] */
     const double *joint_work;    /* [1] work of the reactions [J] */
+    const double *joint_stop_force;  /* [njoint] stop force along a prismatic joint's axis, on the first
+                                        body, + along the axis [N]; 0 for other joints or no stop */
+    const double *joint_stop_moment; /* [njoint] stop moment about a revolute joint's axis on the first
+                                        body, + about the axis [N m]; 0 for other joints or no stop */
 } rc_frame;
 
 /* Create the file (overwrites). RC_EIO with the path and netCDF message. */

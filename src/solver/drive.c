@@ -185,7 +185,7 @@ int frame_alloc(const rc_model *m, frame_buf *f)
     f->vslip = malloc(ni * sizeof(double));
     f->slip = malloc(ni * sizeof(int));
     f->cpl = malloc((9 * (size_t)m->cpl->n + 1) * sizeof(double));
-    f->jnt = malloc((8 * (size_t)(m->jnt ? m->jnt->n : 0) + 1) * sizeof(double));
+    f->jnt = malloc((10 * (size_t)(m->jnt ? m->jnt->n : 0) + 10) * sizeof(double));
     return f->jnt && f->pos && f->quat && f->vel && f->omega && f->pen && f->fload && f->fdamp && f->fn && f->point &&
            f->normal && f->mode && f->cpl && f->ffric && f->vslip && f->slip;
 }
@@ -209,7 +209,7 @@ rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_b
         f->pen[i] = r.p;
         f->fload[i] = acts ? r.fload : 0.0;
         f->fdamp[i] = acts ? r.fdamp : 0.0;
-        f->fn[i] = acts && r.fn > 0 ? r.fn : 0.0;
+        f->fn[i] = acts && (r.fn > 0 || d->inter_settled[i]) ? r.fn : 0.0; /* settled: as it acts */
         memcpy(f->point + 3 * i, r.point, 3 * sizeof(double));
         memcpy(f->normal + 3 * i, r.normal, 3 * sizeof(double));
         for (int k = 0; k < 3; k++) f->ffric[3 * i + k] = acts ? r.ft[k] : 0.0;
@@ -224,7 +224,7 @@ rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_b
     }
     rc_energy(m, d, t, y, f->energy);
     if (!o) return RC_OK;
-    const int nc = m->cpl->n;
+    const int nc = m->cpl->ncard; /* the joint stops are reported with their joints */
     rc_cpl_frame(m, d, t, y, f->cpl);
     rc_frame fr = {.t = t, .at_event = at_event, .body_pos = f->pos, .body_quat = f->quat, .body_vel = f->vel,
                    .body_omega = f->omega, .inter_pen = f->pen, .inter_fload = f->fload, .inter_fdamp = f->fdamp,
@@ -240,6 +240,17 @@ rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_b
         fr.joint_drift_pos = f->jnt + 6 * nj;
         fr.joint_drift_ang = f->jnt + 7 * nj;
         fr.joint_work = f->jnt + 8 * nj;
+        /* the stops: the generalised force on the joint coordinate, a
+         * force along a prismatic joint's axis, a moment about a revolute's */
+        for (int j = 0; j < nj; j++) {
+            double q;
+            const double Q = rc_cpl_joint_stop(m, d, j, y, &q);
+            const int rev = m->jnt->kind[j] == RC_JNT_REVOLUTE;
+            f->jnt[9 + 8 * nj + j] = rev ? 0.0 : Q;
+            f->jnt[9 + 9 * nj + j] = rev ? Q : 0.0;
+        }
+        fr.joint_stop_force = f->jnt + 9 + 8 * nj;
+        fr.joint_stop_moment = f->jnt + 9 + 9 * nj;
     }
     return rc_output_frame(o, &fr, err);
 }
@@ -257,8 +268,8 @@ static const char *const energy_long[RC_NENERGY] = {
     "elastic energy stored in the contacts, normal and tangential (recoverable by unloading)",
     "energy dissipated by contact hysteresis (normal work - normal stored)",
     "energy dissipated by friction (friction work - tangential stored)",
-    "elastic energy stored in the spring-damper couplings",
-    "energy dissipated by the coupling dampers",
+    "elastic energy stored in the spring-damper couplings, the contact couplings and the joint stops",
+    "energy dissipated by the dampers of the couplings and the joint stops",
     "elastic and gravitational energy of the catenary lines (work done by their ends)",
     "minus the work done on the bodies by the imposed velocities (/IMPVEL reactions)",
     ("kinetic + potential + contact work + damping + friction work + couplings + imposed (constant in exact "
@@ -279,7 +290,7 @@ rc_status open_output(const rc_model *m, const char *path, const char *note, rc_
                            integrator, m->rtol, m->atol_pos,
                            m->atol_quat, m->atol_vel, m->atol_omega, m->atol_energy, m->nbody, m->body_id,
                            m->body_fixed, m->ninter, m->inter_id, types, RC_NENERGY, energy_name, energy_long,
-                           m->cpl->n, m->cpl->id, m->cpl->type, NULL, .nfile = 0};
+                           m->cpl->ncard, m->cpl->id, m->cpl->type, NULL, .nfile = 0};
     /* provenance, every solver setting, the surfaces */
     meta.nfile = m->nfile;
     meta.file = (const char *const *)m->file;
@@ -380,6 +391,23 @@ void progress_line(double tend, const rc_stats *s, double t, long steps, double 
     fflush(stderr);
 }
 
+
+/* Hold the closed contact of interface i in persistent contact at t
+ * (docs/theory.md 5.2): the event contact_settle, the statistics, a line on
+ * stderr with the progress. */
+static rc_status settle(const rc_model *m, rc_data *d, ev_sink *sink, double t, const double *y, int i, rc_stats *s,
+                        int show, rc_error *err)
+{
+    d->inter_settled[i] = 1;
+    s->settles++;
+    s->t_settle = t;
+    s->events++;
+    if (show) /* with the progress (not with `ricochet run -q`, nor for an embedding without it) */
+        fprintf(stderr, "ricochet: %s settled into persistent contact at t = %.9g s (bounces accumulated)\n",
+                m->inter_name[i], t);
+    const rc_event ev = {i, "contact_settle"};
+    return write_event(m, d, sink, t, y, &ev, err);
+}
 
 /* ---- the driver ------------------------------------------------------- */
 /* One record at (t, y, y'): the backend's record vector (with joints, the
@@ -542,7 +570,8 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     char note[sizeof s.sampling_note];
     rc_impacts_sampling_note(m, note, sizeof note);
     int *rootdir = NULL, *roots = NULL, *zeno_n = NULL;
-    double *gbuf = NULL, *flook = NULL, *bp = NULL, *zeno_t = NULL;
+    double *gbuf = NULL, *flook = NULL, *bp = NULL, *zeno_t = NULL, *t_open = NULL, *t_close = NULL, *t_flight = NULL;
+    int *nshrink = NULL;
     int nbp = 0, ibp = 0;
     rc_output *out = NULL;
     frame_buf fb;
@@ -573,11 +602,18 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     gbuf = calloc((size_t)nr + 1, sizeof(double));
     zeno_t = calloc((size_t)m->ninter + 1, sizeof(double));
     zeno_n = calloc((size_t)m->ninter + 1, sizeof(int));
+    t_open = malloc(((size_t)m->ninter + 1) * sizeof(double));
+    t_close = malloc(((size_t)m->ninter + 1) * sizeof(double));
+    t_flight = malloc(((size_t)m->ninter + 1) * sizeof(double));
+    nshrink = calloc((size_t)m->ninter + 1, sizeof(int));
     flook = calloc((size_t)n, sizeof(double));
-    if (rc_impacts_init(&im, m) || !rootdir || !roots || !gbuf || !zeno_t || !zeno_n || !flook) {
+    if (rc_impacts_init(&im, m) || !rootdir || !roots || !gbuf || !zeno_t || !zeno_n || !flook || !t_open ||
+        !t_close || !t_flight || !nshrink) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the solver");
         goto done;
     }
+    for (int i = 0; i < m->ninter; i++) t_open[i] = t_close[i] = t_flight[i] = NAN; /* no contact phase yet */
+    s.t_settle = NAN;
     /* initial state and modes */
     rc_initial_state(m, y);
     rc_modes_init(m, d, t, y);
@@ -706,12 +742,36 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             for (int k = 0; k < nev && k < RC_MAX_EV; k++) rc_impacts_event(&im, m, d, ev[k].inter, ev[k].kind, t, y);
             for (int k = 0; k < nev && k < RC_MAX_EV; k++)
                 if ((st = write_event(m, d, &sink, t, y, &ev[k], err))) goto done;
-            /* event accumulation: report it rather than stall */
+            /* settling: a contact that closes after a flight short against
+             * its last contact phase is held closed (RC_SETTLE_FLIGHT) */
+            for (int k = 0; k < nev && k < RC_MAX_EV; k++) {
+                const int i = ev[k].inter;
+                if (i < 0) continue;
+                if (!strcmp(ev[k].kind, "contact_open") || !strcmp(ev[k].kind, "contact_separate")) t_open[i] = t;
+                if (strcmp(ev[k].kind, "contact_close")) continue;
+                const double flight = t - t_open[i], phase = t_open[i] - t_close[i];
+                nshrink[i] = flight < t_flight[i] ? nshrink[i] + 1 : 0; /* the flights shrink */
+                t_flight[i] = flight;
+                t_close[i] = t;
+                if (d->inter_mode[i] == RC_MODE_CLOSED && !d->inter_settled[i] && nshrink[i] >= RC_SETTLE_SHRINK &&
+                    flight < RC_SETTLE_FLIGHT * phase && (st = settle(m, d, &sink, t, y, i, &s, show, err)))
+                    goto done;
+                jumped |= d->inter_settled[i]; /* its root function changed: restart */
+            }
+            /* event accumulation: report it rather than stall; the contact
+             * events of an interface that is closed settle it instead */
             for (int k = 0; k < nev && k < RC_MAX_EV; k++) {
                 const int i = ev[k].inter;
                 if (i < 0) continue; /* a contact coupling: its faces change modes with the state moving */
                 zeno_n[i] = t - zeno_t[i] <= RC_ZENO_REL * fmax(fabs(t), dtout) ? zeno_n[i] + 1 : 0;
                 zeno_t[i] = t;
+                if (zeno_n[i] > RC_ZENO_MAX && !strncmp(ev[k].kind, "contact_", 8) &&
+                    d->inter_mode[i] == RC_MODE_CLOSED) {
+                    if (!d->inter_settled[i] && (st = settle(m, d, &sink, t, y, i, &s, show, err))) goto done;
+                    zeno_n[i] = 0;
+                    jumped = 1;
+                    continue;
+                }
                 if (zeno_n[i] > RC_ZENO_MAX) {
                     snprintf(reason, sizeof reason,
                              "event accumulation (Zeno) at t = %.9g s in %s: more than %d events within %.2g s of "
@@ -818,6 +878,10 @@ done:
     free(gbuf);
     free(zeno_t);
     free(zeno_n);
+    free(t_open);
+    free(t_close);
+    free(t_flight);
+    free(nshrink);
     free(flook);
     free(bp);
     frame_free(&fb);

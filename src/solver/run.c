@@ -35,6 +35,9 @@ void rc_stats_print(const rc_stats *s, FILE *f)
             s->err_test_fails, s->root_evals);
     fprintf(f, "events %ld, restarts %ld, simulated %.6g s in %.3f s wall, energy balance residual %.3g J\n",
             s->events, s->reinits, s->t_end, s->wall_time, s->energy_residual);
+    if (s->settles > 0)
+        fprintf(f, "settled contacts %ld (bounces accumulated: held closed), the last at t = %.9g s\n", s->settles,
+                s->t_settle);
     if (s->impacts > 0) {
         fprintf(f, "impacts %ld%s:\n", s->impacts, s->impacts > RC_STATS_IMPACTS ? " (the first ones; all in the results file)" : "");
         fprintf(f, "  %-8s %12s %12s %12s %12s %10s %10s %8s %12s\n", "inter", "close [s]", "duration [s]",

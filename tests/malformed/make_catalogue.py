@@ -373,6 +373,33 @@ T('cc_surf1_fixed_segments', CC, 'field surf_ID1', before_end([
   CC, 'contact coupling', '         5         6         0         0', '                0.01                 1e6'], expect=13))
 
 
+# ---- /JOINT stops (optional line 4: Lim_min Lim_max K_lim C_lim); emitted
+# after the include decks, so that the earlier decks keep their numbers
+TESTS_LATE = []
+
+
+def TL(name, card, field, edit):
+    TESTS_LATE.append((name, card, field, edit))
+
+
+def STOP(*vals):
+    ln = ''
+    for i, v in enumerate(vals):
+        if v:
+            ln = cols(ln, 20 * i + 1, 20 * i + 20, v)
+    return ln
+
+
+TL('joint_stop_lower_positive', JT, 'field Lim_min', insert(JT, 5, [STOP('0.1', '0.5', '100', '1')]))
+TL('joint_stop_angle_range', JT, 'field Lim_max', insert(JT, 5, [STOP('-3', '4', '100', '1')]))
+TL('joint_stop_stiffness_blank', JT, 'field K_lim', insert(JT, 5, [STOP('-0.5', '0.5', '', '1')]))
+TL('joint_stop_damping_negative', JT, 'field C_lim', insert(JT, 5, [STOP('-0.5', '0.5', '100', '-1')]))
+TL('joint_stop_text', JT, 'field Lim_max', insert(JT, 5, [STOP('-0.5', 'x', '100', '1')]))
+TL('joint_stop_revolute_one_sided', JT, 'field Lim_max', insert(JT, 5, [STOP('-0.5', '', '100', '1')]))
+TL('joint_stop_curve_missing', JT, 'field fct_lim', insert(JT, 5, [cols(STOP('-0.5', '0.5', '', '1'), 81, 90, '99')]))
+TL('joint_stop_curve_and_k', JT, 'field K_lim', insert(JT, 5, [cols(STOP('-0.5', '0.5', '100', '1'), 81, 90, '1')]))
+
+
 def write_all():
     for old in glob.glob('[0-9][0-9][0-9]_*'):
         os.remove(old)
@@ -416,6 +443,9 @@ def write_all():
     emit('include_nested_missing', '-', '#include', lines, 1,
          {'nested_missing_inc.rad': ['# a comment', '#include no_such_file.rad']},
          efile='nested_missing_inc.rad')
+    for name, card, field, edit in TESTS_LATE:
+        lines, idx, files = edit(list(BASE))
+        emit(name, card, field, lines, idx, files)
     with open('expect.tsv', 'w') as f:
         f.write('# file\texpected file:line\tcard (- none)\tfield, or the fault\n')
         for r in rows:

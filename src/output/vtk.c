@@ -538,10 +538,11 @@ rc_status rc_export_vtk(const char *results_path, const char *dir, int *nframes,
 {
     if (nframes) *nframes = 0;
     if (!results_path || !dir) RC_RAISE(err, RC_EINTERNAL, "export: no path");
-    if (mkdir(dir, 0777) != 0 && errno != EEXIST)
-        RC_RAISE(err, RC_EIO, "%s: cannot create the directory: %s", dir, strerror(errno));
+    /* the results file is opened first: a failed export leaves no directory behind */
     vtk_src s;
     rc_status rc = src_open(&s, results_path, err);
+    if (rc == RC_OK && mkdir(dir, 0777) != 0 && errno != EEXIST)
+        rc = RC_SET(err, RC_EIO, "%s: cannot create the directory: %s", dir, strerror(errno));
     if (rc == RC_OK) rc = plane_extent(&s, err);
     /* the stem of the results file names the outputs */
     const char *base = strrchr(results_path, '/');

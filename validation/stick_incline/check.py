@@ -1,0 +1,107 @@
+"""Exact stick (TYPE6 Istick = 1) of a block on an inclined plane.
+
+A sphere with locked rotations (a "block") on a plane tilted by theta about
+a horizontal axis at azimuth phi = 30 deg (the fall line along no global
+axis), gravity -z, at rest at its static normal penetration. Reference
+(README.md): the textbook block on an incline with rigid Coulomb friction:
+with tan(theta) <= mu_s it stays where it is and the friction force is
+m g sin(theta) up the slope; with tan(theta) > mu_s it slides down the fall
+line at a = g (sin theta - mu cos theta) from t = 0.
+"""
+import math
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
+import incline  # noqa: E402
+import rcval  # noqa: E402
+from deck import Deck  # noqa: E402
+
+M, R, K, G, MU = 1.0, 0.05, 1.0e6, 9.81, 0.3
+VISC = 2.0 * 0.5 * math.sqrt(K * M)  # normal damping ratio 0.5
+PHI = math.radians(30.0)
+
+
+def deck(tan_th, tend, dtout, fric_s=None):
+    th, n, s, u = incline.frame(tan_th, PHI)
+    p = M * G * math.cos(th) / K  # the static normal penetration
+    c = tuple((R - p) * n)
+    d = Deck(f"exact stick: block on a plane tilted by atan({tan_th:g}), Fric {MU:g}"
+             + ("" if fric_s is None else f", Fric_s {fric_s:g}"))
+    d.funct(1, [0.0, 1.0], [0.0, K], title="linear load curve k = 1e6 N/m")
+    d.nodes([(1, *c)])
+    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, grnod=1, title="block 1 kg")
+    d.sphere(1, 1, c, R)
+    d.plane(2, (0.0, 0.0, 0.0), tuple(n), title="inclined plane through the origin")
+    d.grnod(1, [1])
+    d.add("/BCS/1", f"{'000 111':>10s}{0:>10d}{1:>10d}", title="no rotation")
+    d.grav(1, "Z", -G, 1)
+    d.type6(1, 1, 2, 1, visc=VISC, fric=MU, istick=1, fric_s=fric_s, title="exact stick")
+    d.run(tend, dtout)
+    return d
+
+
+def stuck(name, r, tan_th, what):
+    th, n, s, u = incline.frame(tan_th, PHI)
+    xs, xu, vs, vu, vn = incline.along(r, tan_th, PHI)
+    drift = max(np.max(np.abs(xs)), np.max(np.abs(xu)))
+    rcval.check(f"{name}.drift", drift < 1e-9 and len(r.ev_t) == 0 and np.all(r.slip[:, 0] == 0),
+                f"{what}: over {r.t[-1]:g} s, max tangential displacement {drift:.2e} m (< 1e-9), "
+                f"{len(r.ev_t)} events (expected 0), always sticking: {bool(np.all(r.slip[:, 0] == 0))}")
+    f_ref = -M * G * math.sin(th) * s  # up the slope, on the block (body a)
+    err = np.max(np.linalg.norm(r.ffric[:, 0, :] - f_ref, axis=1)) / (M * G * math.sin(th))
+    rcval.check(f"{name}.force", err < 1e-9,
+                f"friction force = m g sin(theta) = {M * G * math.sin(th):.12g} N up the fall line: max "
+                f"|F - F_ref| / |F_ref| = {err:.2e} (< 1e-9); |F| at the end {np.linalg.norm(r.ffric[-1, 0]):.12g} N")
+    fw = np.max(np.abs(r.energy["energy_friction_work"]))
+    et = r.energy["energy_total"]
+    rcval.check(f"{name}.energy", fw < 1e-12 and np.max(np.abs(et - et[0])) < 1e-9,
+                f"friction work {fw:.1e} J (< 1e-12), max |E_total(t) - E_total(0)| = "
+                f"{np.max(np.abs(et - et[0])):.1e} J (< 1e-9)")
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    # 1. stuck, tan(theta) = 0.9 mu, 100 s (case.rad)
+    tan_th = 0.9 * MU
+    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    stuck("stick_incline.stuck", r, tan_th, f"tan(theta) = 0.9 mu = {tan_th:g}")
+
+    # 2. static coefficient: tan(theta) = 0.5 > Fric = 0.3 but < Fric_s = 0.6
+    tan_th = 0.5
+    r = rcval.Result(rcval.run(deck(tan_th, 100.0, 1.0, fric_s=0.6)))
+    stuck("stick_incline.static", r, tan_th, "tan(theta) = 0.5 between Fric 0.3 and Fric_s 0.6")
+
+    # 3. sliding from t = 0: tan(theta) = 0.5 > mu = 0.3 (Fric_s blank: Fric)
+    th = math.atan(tan_th)
+    a_ref = G * (math.sin(th) - MU * math.cos(th))
+    r = rcval.Result(rcval.run(deck(tan_th, 1.5, 0.01)))
+    xs, xu, vs, vu, vn = incline.along(r, tan_th, PHI)
+    rcval.check("stick_incline.slide.events", r.ev_kind == ["fric_slip"] and abs(r.ev_t[0]) == 0.0,
+                f"events {list(zip(np.round(r.ev_t, 12), r.ev_kind))} (expected one fric_slip at t = 0: the force "
+                f"that would hold it, m g sin(theta), is beyond mu m g cos(theta))")
+    sl = r.t >= 0.1
+    a, b = np.polyfit(r.t[sl], vs[sl], 1)
+    e = rcval.rel(a, a_ref)
+    x_ref = 0.5 * a_ref * r.t[-1] ** 2
+    ex = rcval.rel(xs[-1], x_ref)
+    rcval.check("stick_incline.slide.acceleration", e < 1e-6 and ex < 1e-6,
+                f"fit of v_s over [0.1, 1.5] s: a = {a:.10f} m/s^2, g (sin theta - mu cos theta) = {a_ref:.10f}, "
+                f"rel. error {e:.1e} (< 1e-6); x_s(1.5 s) = {xs[-1]:.10f} m, a t^2 / 2 = {x_ref:.10f}, "
+                f"rel. error {ex:.1e} (< 1e-6)")
+    fm = np.linalg.norm(r.ffric[sl, 0, :], axis=1)
+    ef = np.max(np.abs(fm - MU * M * G * math.cos(th))) / (MU * M * G * math.cos(th))
+    rcval.check("stick_incline.slide.force", ef < 1e-6 and np.all(r.slip[sl, 0] == 1),
+                f"sliding force |F| = mu m g cos(theta) = {MU * M * G * math.cos(th):.10f} N: max rel. error "
+                f"{ef:.1e} (< 1e-6), mode slip throughout")
+    rcval.check_ledger("stick_incline.slide.energy", r, 1e-6)
+    rcval.finish()
+
+
+if __name__ == "__main__":
+    if "--write-case" in sys.argv:
+        deck(0.9 * MU, 100.0, 1.0).write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
+    else:
+        main()

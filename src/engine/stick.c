@@ -33,7 +33,11 @@ typedef struct sk_core {
     double *A, *b; /* [(2 ns)^2], [2 ns] */
     size_t *perm; /* [2 ns] */
     double *z;    /* [ny] accelerations of a unit multiplier */
-    int *idx;     /* [ns] the sticking slots */
+    int *idx;     /* [2 ns] the rows in the equations: 2 q + k */
+    char *ron;    /* [2 ns] 1: row k of slot q is a constraint; 0: the
+                     supports (/BCS, /IMPVEL) already hold that direction on
+                     both bodies (no acceleration answers its multiplier),
+                     its multiplier is 0 (set at each restart) */
 } sk_core;
 
 struct rc_stk_work {
@@ -177,31 +181,53 @@ static void c_along(const rc_model *m, const sk_core *K, int q, const double *Y,
     dc[1] = cimag(c[1]) / SK_STEP;
 }
 
-/* The sticking slots in order: their count; idx[j] = slot. */
-static int active_slots(const sk_core *K, int *idx)
+/* A[j][l] = (dc_rows[j] / dy) (accelerations of the unit multiplier of
+ * rows[l]) = G M^-1 G^T over the rows (2 q + k) given. */
+static void build_A(const rc_model *m, sk_core *K, const double *Y, const int *rows, int nr)
 {
-    int na = 0;
-    for (int q = 0; q < K->ns; q++)
-        if (K->act[q]) idx[na++] = q;
-    return na;
+    for (int l = 0; l < nr; l++) {
+        memset(K->z, 0, (size_t)K->ny * sizeof(double));
+        add_unit(m, K, rows[l] / 2, rows[l] % 2, Y, 1.0, K->z);
+        for (int j = 0; j < nr; j++) {
+            double dc[2];
+            c_along(m, K, rows[j] / 2, Y, K->z, dc);
+            K->A[j * nr + l] = dc[rows[j] % 2];
+        }
+    }
 }
 
-/* Solve A x = b (K->b, 2 na rows) with A = G M^-1 G^T of the sticking slots
- * at Y; 0, or -1 when A is singular. */
-static int solve(const rc_model *m, sk_core *K, const double *Y, const int *idx, int na)
+/* The rows of the sticking slots that are constraints (K->ron): a row
+ * whose unit multiplier moves nothing along it (held by the supports on
+ * both bodies) is left out. Their count; K->idx the rows. */
+static int active_rows(const rc_model *m, sk_core *K, const double *Y)
 {
-    const int nr = 2 * na;
-    for (int cq = 0; cq < na; cq++)
-        for (int ck = 0; ck < 2; ck++) {
+    int nr = 0;
+    double dmax = 0;
+    for (int q = 0; q < K->ns; q++)
+        for (int k = 0; k < 2; k++) {
+            K->ron[2 * q + k] = 0;
+            if (!K->act[q]) continue;
             memset(K->z, 0, (size_t)K->ny * sizeof(double));
-            add_unit(m, K, idx[cq], ck, Y, 1.0, K->z);
-            for (int rq = 0; rq < na; rq++) {
-                double dc[2];
-                c_along(m, K, idx[rq], Y, K->z, dc);
-                K->A[(2 * rq) * nr + 2 * cq + ck] = dc[0];
-                K->A[(2 * rq + 1) * nr + 2 * cq + ck] = dc[1];
-            }
+            add_unit(m, K, q, k, Y, 1.0, K->z);
+            double dc[2];
+            c_along(m, K, q, Y, K->z, dc);
+            K->b[2 * q + k] = dc[k];
+            dmax = fmax(dmax, dc[k]);
         }
+    for (int q = 0; q < K->ns; q++)
+        for (int k = 0; k < 2; k++)
+            if (K->act[q] && K->b[2 * q + k] > 1e-12 * dmax) {
+                K->ron[2 * q + k] = 1;
+                K->idx[nr++] = 2 * q + k;
+            }
+    return nr;
+}
+
+/* Solve A x = b (K->b over the rows K->idx[0..nr)) at Y; 0, or -1 when A
+ * is singular (rows that repeat others). */
+static int solve(const rc_model *m, sk_core *K, const double *Y, int nr)
+{
+    build_A(m, K, Y, K->idx, nr);
     gsl_matrix_view A = gsl_matrix_view_array(K->A, (size_t)nr, (size_t)nr);
     gsl_vector_view b = gsl_vector_view_array(K->b, (size_t)nr);
     gsl_permutation p = {(size_t)nr, K->perm};
@@ -219,6 +245,18 @@ static int solve(const rc_model *m, sk_core *K, const double *Y, const int *idx,
     return bad ? -1 : 0;
 }
 
+/* Multipliers of the constraint rows (K->b[0..nr)) at Y with f [ny] the
+ * rates: A lambda = -(dc/dy) f. 0, or -1. */
+static int multipliers(const rc_model *m, sk_core *K, const double *Y, const double *f, int nr)
+{
+    for (int j = 0; j < nr; j++) {
+        double dc[2];
+        c_along(m, K, K->idx[j] / 2, Y, f, dc);
+        K->b[j] = -dc[K->idx[j] % 2];
+    }
+    return solve(m, K, Y, nr);
+}
+
 /* The helper axis of slot q at Y: the global axis least aligned with n. */
 static void set_axis(const rc_model *m, sk_core *K, int q, const double *Y)
 {
@@ -234,15 +272,6 @@ static void set_axis(const rc_model *m, sk_core *K, int q, const double *Y)
     h[j] = 1.0;
 }
 
-/* Multipliers of the sticking slots (x[2 na]) at (t, Y) with Yp[0..ny) = f:
- * A lambda = -(dc/dy) f. 0, or -1. */
-static int multipliers(const rc_model *m, sk_core *K, const double *Y, const double *f, const int *idx, int na)
-{
-    for (int j = 0; j < na; j++) c_along(m, K, idx[j], Y, f, K->b + 2 * j);
-    for (int k = 0; k < 2 * na; k++) K->b[k] = -K->b[k];
-    return solve(m, K, Y, idx, na);
-}
-
 static void core_free(sk_core *K)
 {
     free(K->inter);
@@ -253,6 +282,7 @@ static void core_free(sk_core *K)
     free(K->perm);
     free(K->z);
     free(K->idx);
+    free(K->ron);
 }
 
 static int core_init(const rc_model *m, sk_core *K)
@@ -268,8 +298,9 @@ static int core_init(const rc_model *m, sk_core *K)
     K->b = calloc(2 * ns, sizeof *K->b);
     K->perm = calloc(2 * ns, sizeof *K->perm);
     K->z = calloc((size_t)m->ny + 1, sizeof *K->z);
-    K->idx = calloc(ns, sizeof *K->idx);
-    if (!K->inter || !K->axis || !K->act || !K->A || !K->b || !K->perm || !K->z || !K->idx) {
+    K->idx = calloc(2 * ns, sizeof *K->idx);
+    K->ron = calloc(2 * ns, sizeof *K->ron);
+    if (!K->inter || !K->axis || !K->act || !K->A || !K->b || !K->perm || !K->z || !K->idx || !K->ron) {
         core_free(K);
         return -1;
     }
@@ -431,8 +462,8 @@ void rc_stk_residual(const rc_model *m, const rc_data *d, const rc_stk_work *w, 
             if (aa >= 0 && row_free(m, aa + k)) r[aa + k] += creal(ra[k]);
             if (ab >= 0 && row_free(m, ab + k)) r[ab + k] += creal(rb[k]);
         }
-        r[row] = creal(c[0]);
-        r[row + 1] = creal(c[1]);
+        /* a row the supports hold: its multiplier is 0 */
+        for (int k = 0; k < 2; k++) r[row + k] = w->k.ron[2 * q + k] ? creal(c[k]) : Yp[row + k];
     }
 }
 
@@ -470,8 +501,11 @@ void rc_stk_jacobian(const rc_model *m, const rc_data *d, const rc_stk_work *w, 
                 if (row_free(m, idx[r])) val[slot[r * nc + c]] += sc * cimag(ra[k]);
             for (int k = 0; k < nb; k++, r++)
                 if (row_free(m, idx[r])) val[slot[r * nc + c]] += sc * cimag(rb[k]);
-            for (int k = 0; k < 2; k++, r++) val[slot[r * nc + c]] += sc * cimag(cv[k]);
+            for (int k = 0; k < 2; k++, r++)
+                if (w->k.ron[2 * q + k]) val[slot[r * nc + c]] += sc * cimag(cv[k]);
         }
+        for (int k = 0; k < 2; k++)
+            if (!w->k.ron[2 * q + k]) val[w->diag[row + k]] += cj;
     }
 }
 
@@ -480,39 +514,35 @@ int rc_stk_restart(const rc_model *m, rc_data *d, rc_stk_work *w, double t, doub
 {
     sk_core *K = &w->k;
     const int ny = m->ny;
-    int *idx = K->idx;
     for (int q = 0; q < K->ns; q++) {
         set_axis(m, K, q, Y);
         K->act[q] = sticking(d, K->inter[q]);
         Yp[ny + 2 * q] = Yp[ny + 2 * q + 1] = 0.0;
     }
-    const int na = active_slots(K, idx);
-    if (na > 0) {
+    const int nr = active_rows(m, K, Y);
+    if (nr > 0) {
         /* the velocities made exact: u += M^-1 G^T x, A x = -c (G depends on
          * the positions only; the change of least kinetic energy) */
-        for (int j = 0; j < na; j++) {
-            const int i = K->inter[idx[j]];
+        for (int j = 0; j < nr; j++) {
+            const int q = K->idx[j] / 2, i = K->inter[q];
             cx ya[RC_NB], yb[RC_NB], c[2];
             load(m, i, Y, NULL, ya, yb);
-            kern(m, i, K->axis + 3 * idx[j], ya, yb, NULL, NULL, NULL, c, NULL, NULL, NULL);
-            K->b[2 * j] = -creal(c[0]);
-            K->b[2 * j + 1] = -creal(c[1]);
+            kern(m, i, K->axis + 3 * q, ya, yb, NULL, NULL, NULL, c, NULL, NULL, NULL);
+            K->b[j] = -creal(c[K->idx[j] % 2]);
         }
-        if (solve(m, K, Y, idx, na)) return -1;
+        if (solve(m, K, Y, nr)) return -1;
         memset(K->z, 0, (size_t)ny * sizeof(double));
-        for (int j = 0; j < na; j++)
-            for (int k = 0; k < 2; k++) add_unit(m, K, idx[j], k, Y, K->b[2 * j + k], K->z);
+        for (int j = 0; j < nr; j++) add_unit(m, K, K->idx[j] / 2, K->idx[j] % 2, Y, K->b[j], K->z);
         for (int k = 0; k < ny; k++) Y[k] += K->z[k];
     }
     if (rc_assemble_rhs(m, d, t, Y, Yp)) return -1;
-    if (na == 0) return 0;
-    if (multipliers(m, K, Y, Yp, idx, na)) return -1;
+    if (nr == 0) return 0;
+    if (multipliers(m, K, Y, Yp, nr)) return -1;
     memset(K->z, 0, (size_t)ny * sizeof(double));
-    for (int j = 0; j < na; j++)
-        for (int k = 0; k < 2; k++) {
-            Yp[ny + 2 * idx[j] + k] = K->b[2 * j + k];
-            add_unit(m, K, idx[j], k, Y, K->b[2 * j + k], K->z);
-        }
+    for (int j = 0; j < nr; j++) {
+        Yp[ny + K->idx[j]] = K->b[j];
+        add_unit(m, K, K->idx[j] / 2, K->idx[j] % 2, Y, K->b[j], K->z);
+    }
     for (int k = 0; k < ny; k++) Yp[k] += K->z[k];
     return 0;
 }
@@ -536,7 +566,9 @@ void rc_stk_roots(const rc_model *m, const rc_data *d, const rc_stk_work *w, dou
         rc_inter_report r;
         rc_inter_report_eval_d(m, d, i, t, Y, &r);
         const double *lam = Yp + m->ny + 2 * q;
-        const double s = (1.0 + RC_SLIP_BAND) * r.flim + m->inter_fr[i].fband;
+        /* no band: the multiplier is exact (algebraic), no spring rings
+         * about the limit nor does a damper carry a ramped load */
+        const double s = r.flim;
         g[RC_ROOTS_PER_INTER * i + RC_ROOT_SLIP] = s > 0 ? (lam[0] * lam[0] + lam[1] * lam[1]) / (s * s) - 1.0 : 1.0;
     }
 }
@@ -572,21 +604,20 @@ int rc_stk_decide(const rc_model *m, rc_data *d, int i, double t, const double *
     sk_core K;
     if (core_init(m, &K)) return -1;
     double *f = malloc(((size_t)m->ny + 1) * sizeof *f);
-    int *idx = K.idx, me = -1, st = -1;
+    int me = -1, st = -1;
     for (int q = 0; q < K.ns; q++) {
         K.act[q] = sticking(d, K.inter[q]);
         if (K.inter[q] == i) me = q;
         set_axis(m, &K, q, y);
     }
-    const int na = active_slots(&K, idx);
-    if (f && me >= 0 && !rc_assemble_rhs(m, d, t, y, f) && !multipliers(m, &K, y, f, idx, na)) {
-        int j = 0;
-        while (idx[j] != me) j++;
-        double F[3];
-        force_of(m, &K, me, y, K.b + 2 * j, F);
+    const int nr = me >= 0 ? active_rows(m, &K, y) : 0;
+    if (f && me >= 0 && !rc_assemble_rhs(m, d, t, y, f) && (nr == 0 || !multipliers(m, &K, y, f, nr))) {
+        double lam[2] = {0.0, 0.0}, F[3];
+        for (int j = 0; j < nr; j++)
+            if (K.idx[j] / 2 == me) lam[K.idx[j] % 2] = K.b[j];
+        force_of(m, &K, me, y, lam, F);
         const double nf = sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
-        const double s = (1.0 + RC_SLIP_BAND) * r.flim + m->inter_fr[i].fband;
-        st = nf > s;
+        st = nf > r.flim; /* the slip root's limit */
         for (int k = 0; k < 3; k++) e[k] = nf > 0 ? F[k] / nf : 0.0;
     }
     free(f);

@@ -52,7 +52,8 @@ void rc_stk_id(const rc_model *m, const rc_stk_work *w, double *id);
  * when the sticking rows are dependent (or f fails). */
 int rc_stk_restart(const rc_model *m, rc_data *d, rc_stk_work *w, double t, double *Y, double *Yp);
 /* Slip roots of the sticking exact interfaces, from the multipliers in Yp:
- * |lambda|^2 / ((1 + RC_SLIP_BAND) L_s + F_band)^2 - 1, L_s = Sfric + mu_s F_n. */
+ * |lambda|^2 / L_s^2 - 1, L_s = Sfric + mu_s F_n (no band: the multiplier is
+ * exact). */
 void rc_stk_roots(const rc_model *m, const rc_data *d, const rc_stk_work *w, double t, const double *Y,
                   const double *Yp, double *g);
 /* The friction state F_t of the sticking exact interfaces set to their

@@ -24,7 +24,9 @@ VISC = 2.0 * 0.5 * math.sqrt(K * M)  # normal damping ratio 0.5
 PHI = math.radians(30.0)
 
 
-def deck(tan_th, tend, dtout, fric_s=None):
+def deck(tan_th, tend, dtout, fric_s=None, card=False):
+    """card: the friction of a /FRICTION card (Iform 3, Coulomb Fric) instead
+    of TYPE6's own."""
     th, n, s, u = incline.frame(tan_th, PHI)
     p = M * G * math.cos(th) / K  # the static normal penetration
     c = tuple((R - p) * n)
@@ -38,7 +40,11 @@ def deck(tan_th, tend, dtout, fric_s=None):
     d.grnod(1, [1])
     d.add("/BCS/1", f"{'000 111':>10s}{0:>10d}{1:>10d}", title="no rotation")
     d.grav(1, "Z", -G, 1)
-    d.type6(1, 1, 2, 1, visc=VISC, fric=MU, istick=1, fric_s=fric_s, title="exact stick")
+    if card:
+        d.type6(1, 1, 2, 1, visc=VISC, title="contact, the friction of /FRICTION/1")
+        d.friction(1, iform=3, fric=MU, title="Coulomb, exact stick (Iform 3)")
+    else:
+        d.type6(1, 1, 2, 1, visc=VISC, fric=MU, istick=1, fric_s=fric_s, title="exact stick")
     d.run(tend, dtout)
     return d
 
@@ -97,6 +103,19 @@ def main():
                 f"sliding force |F| = mu m g cos(theta) = {MU * M * G * math.cos(th):.10f} N: max rel. error "
                 f"{ef:.1e} (< 1e-6), mode slip throughout")
     rcval.check_ledger("stick_incline.slide.energy", r, 1e-6)
+
+    # 4. the same through /FRICTION Iform 3: stuck at 0.9 mu, sliding at 0.5
+    tan_th = 0.9 * MU
+    r = rcval.Result(rcval.run(deck(tan_th, 100.0, 1.0, card=True)))
+    stuck("stick_incline.card_stuck", r, tan_th, f"/FRICTION Iform 3, tan(theta) = 0.9 mu = {tan_th:g}")
+    tan_th = 0.5
+    r = rcval.Result(rcval.run(deck(tan_th, 1.5, 0.01, card=True)))
+    xs, xu, vs, vu, vn = incline.along(r, tan_th, PHI)
+    a, b = np.polyfit(r.t[sl], vs[sl], 1)
+    e = rcval.rel(a, a_ref)
+    rcval.check("stick_incline.card_slide", e < 1e-6 and r.ev_kind == ["fric_slip"],
+                f"/FRICTION Iform 3, tan(theta) = 0.5: events {r.ev_kind} (one fric_slip at t = 0), a = {a:.10f} "
+                f"m/s^2, g (sin theta - mu cos theta) = {a_ref:.10f}, rel. error {e:.1e} (< 1e-6)")
     rcval.finish()
 
 

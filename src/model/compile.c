@@ -448,11 +448,12 @@ static rc_status check_exact_stick(const rc_case *c, rc_model *m, rc_error *err)
         const rc_fric *fr = &m->inter_fr[i];
         if (!fr->exact || !rc_pair_multi(m->inter_pair[i])) continue;
         rc_loc loc = m->inter_loc[i];
-        const char *what = "/INTER/TYPE6, field Istick";
+        char what[80];
+        snprintf(what, sizeof what, "%s, field Istick", m->inter_name[i]);
         for (int k = 0; k < c->nfriction; k++)
             if (fr->kind == RC_FK_CARD && c->friction[k].id == fr->card_id) {
                 loc = c->friction[k].line_loc[0];
-                what = "/FRICTION, field Iform";
+                snprintf(what, sizeof what, "/FRICTION/%d, field Iform", fr->card_id);
             }
         for (int k = 0; fr->kind != RC_FK_CARD && k < c->ntype6; k++)
             if (c->type6[k].id == m->inter_id[i]) loc = c->type6[k].line_loc[2];
@@ -568,18 +569,18 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     /* exact stick (TYPE6 Istick 1, /FRICTION Iform 3): a constraint of the IDA path */
     int nexact = 0;
     rc_loc exact_loc = c->end;
-    const char *exact_what = "";
+    char exact_what[80] = "";
     for (int k = c->nfriction - 1; k >= 0; k--)
         if (c->friction[k].iform == 3) {
             nexact++;
             exact_loc = c->friction[k].line_loc[0];
-            exact_what = "/FRICTION, field Iform = 3";
+            snprintf(exact_what, sizeof exact_what, "/FRICTION/%d, field Iform (3)", c->friction[k].id);
         }
     for (int k = c->ntype6 - 1; k >= 0; k--)
         if (c->type6[k].istick == 1) {
             nexact++;
             exact_loc = c->type6[k].line_loc[2];
-            exact_what = "/INTER/TYPE6, field Istick = 1";
+            snprintf(exact_what, sizeof exact_what, "/INTER/TYPE6/%d, field Istick (1)", c->type6[k].id);
         }
     if (nexact > 0 && c->njoint > 0) {
         st = RC_SET(err, RC_EINPUT,

@@ -24,11 +24,12 @@ VISC = 2.0 * 0.5 * math.sqrt(K * M)  # normal damping ratio 0.5
 PHI = math.radians(30.0)
 
 
-def deck(tan_th, tend, dtout, fric_s=None, card=False):
+def deck(tan_th, tend, dtout, fric_s=None, card=False, rolling=False, v0=None, drop=0.0):
     """card: the friction of a /FRICTION card (Iform 3, Coulomb Fric) instead
-    of TYPE6's own."""
+    of TYPE6's own; rolling: the rotations free (a ball); v0: initial
+    velocity; drop: the centre that much higher than at rest [m]."""
     th, n, s, u = incline.frame(tan_th, PHI)
-    p = M * G * math.cos(th) / K  # the static normal penetration
+    p = M * G * math.cos(th) / K - drop  # the static normal penetration
     c = tuple((R - p) * n)
     d = Deck(f"exact stick: block on a plane tilted by atan({tan_th:g}), Fric {MU:g}"
              + ("" if fric_s is None else f", Fric_s {fric_s:g}"))
@@ -38,7 +39,10 @@ def deck(tan_th, tend, dtout, fric_s=None, card=False):
     d.sphere(1, 1, c, R)
     d.plane(2, (0.0, 0.0, 0.0), tuple(n), title="inclined plane through the origin")
     d.grnod(1, [1])
-    d.add("/BCS/1", f"{'000 111':>10s}{0:>10d}{1:>10d}", title="no rotation")
+    if not rolling:
+        d.add("/BCS/1", f"{'000 111':>10s}{0:>10d}{1:>10d}", title="no rotation")
+    if v0 is not None:
+        d.inivel(1, tuple(v0), 1)
     d.grav(1, "Z", -G, 1)
     if card:
         d.type6(1, 1, 2, 1, visc=VISC, title="contact, the friction of /FRICTION/1")
@@ -116,6 +120,47 @@ def main():
     rcval.check("stick_incline.card_slide", e < 1e-6 and r.ev_kind == ["fric_slip"],
                 f"/FRICTION Iform 3, tan(theta) = 0.5: events {r.ev_kind} (one fric_slip at t = 0), a = {a:.10f} "
                 f"m/s^2, g (sin theta - mu cos theta) = {a_ref:.10f}, rel. error {e:.1e} (< 1e-6)")
+
+    # 5. a ball (rotations free) rolls without slipping: the contact point
+    #    sticks, a = (5/7) g sin(theta) (solid sphere, J = 2/5 m R^2), the
+    #    friction force (2/7) m g sin(theta) < mu m g cos(theta) (tan(theta) = 0.5 < 3.5 mu)
+    r = rcval.Result(rcval.run(deck(tan_th, 1.0, 0.01, rolling=True)))
+    xs, xu, vs, vu, vn = incline.along(r, tan_th, PHI)
+    sl = r.t >= 0.1
+    a, b = np.polyfit(r.t[sl], vs[sl], 1)
+    a_roll = 5.0 / 7.0 * G * math.sin(th)
+    e = rcval.rel(a, a_roll)
+    fe = np.max(np.abs(np.linalg.norm(r.ffric[sl, 0, :], axis=1) - 2.0 / 7.0 * M * G * math.sin(th))) / (M * G)
+    rcval.check("stick_incline.rolling", e < 1e-6 and fe < 1e-6 and len(r.ev_t) == 0 and np.all(r.slip[:, 0] == 0),
+                f"ball, rotations free: rolls without slipping, a = {a:.10f} m/s^2, (5/7) g sin(theta) = {a_roll:.10f}, "
+                f"rel. error {e:.1e} (< 1e-6); friction force (2/7) m g sin(theta) to {fe:.1e} m g (< 1e-6); "
+                f"{len(r.ev_t)} events (expected 0)")
+
+    # 6. the ball dropped from 1 mm with a speed of 0.5 m/s across the slope:
+    #    it lands sliding (fric_slip at the contact), bounces, slides, and
+    #    once the contact point stops it rolls: then a = (5/7) g sin(theta)
+    #    down the slope and the speed across the slope constant
+    th, n, s, u = incline.frame(tan_th, PHI)
+    r = rcval.Result(rcval.run(deck(tan_th, 1.0, 0.01, rolling=True, v0=0.5 * u, drop=1e-3)))
+    xs, xu, vs, vu, vn = incline.along(r, tan_th, PHI)
+    t_roll = r.ev_t[-1] if len(r.ev_t) else float("nan")
+    sl = r.t >= t_roll + 0.05
+    a, b = np.polyfit(r.t[sl], vs[sl], 1)
+    e = rcval.rel(a, a_roll)
+    du = np.max(np.abs(vu[sl] - vu[sl][0]))
+    # across the slope the angular momentum about the contact point is kept
+    # (friction acts there, the normal impulses and gravity's slope
+    # component have no moment along s): rolling sets in at (5/7) v_u0
+    eu = rcval.rel(vu[sl][0], 5.0 / 7.0 * 0.5)
+    ok = (len(r.ev_t) > 0 and r.ev_kind[0] == "contact_close" and r.ev_kind[-1] == "fric_stick"
+          and np.all(r.slip[sl, 0] == 0) and e < 1e-6 and du < 1e-9 and eu < 1e-6)
+    rcval.check("stick_incline.landing", ok,
+                f"lands at {r.ev_t[0] if len(r.ev_t) else float('nan'):.6f} s sliding, {len(r.ev_t)} events, the last "
+                f"fric_stick at {t_roll:.6f} s (events: {sorted(set(r.ev_kind))}); then rolling: a = {a:.10f} m/s^2, "
+                f"(5/7) g sin(theta) = {a_roll:.10f}, rel. error {e:.1e} (< 1e-6); speed across the slope "
+                f"{vu[sl][0]:.10f} m/s, (5/7) 0.5 = {2.5 / 7.0:.10f}, rel. error {eu:.1e} (< 1e-6), constant to "
+                f"{du:.1e} m/s (< 1e-9)")
+    rcval.check_ledger("stick_incline.landing.energy", r, 1e-6)
     rcval.finish()
 
 

@@ -105,6 +105,7 @@ static void basis(const double *h, const cx *n, cx *t1, cx *t2)
 static void body_terms(const rc_model *m, int b, const cx *yb, const cx *p, const cx *F, double s, cx *out)
 {
     for (int k = 0; k < RC_NB; k++) out[k] = 0.0;
+    if (b < 0 || m->body_yadr[b] < 0) return; /* the ground or a fixed body: no rows */
     const double *Ji = m->body_Jinv + 9 * b, im = 1.0 / m->body_mass[b];
     cx r[3], f[3], tau[3], taub[3];
     for (int k = 0; k < 3; k++) {

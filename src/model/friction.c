@@ -295,7 +295,7 @@ void rc_friction_print(const rc_model *m, int i, FILE *f)
 {
     const rc_fric *fr = &m->inter_fr[i];
     static const char *const law[4] = {"Coulomb", "generalised viscous", "modified Darmstad", "Renard"};
-    if (fr->kind == RC_FK_TYPE6)
+    if (fr->kind == RC_FK_TYPE6 && !fr->exact)
         fprintf(f, "  %-18s friction (TYPE6) Sfric %.5g N, Fric %.5g, stick stiffness %.5g N/m\n", m->inter_name[i],
                 fr->sfric, fr->fric, fr->kt);
     if (fr->kind == RC_FK_STEP5)
@@ -308,6 +308,8 @@ void rc_friction_print(const rc_model *m, int i, FILE *f)
                 fr->form == RC_FF_VISCOUS ? "viscous (total)" : "incremental",
                 fr->exact ? " with exact stick" : "", fr->tau, fr->area, fr->ortho ? ", orthotropic" : "");
     if (fr->kind == RC_FK_TYPE6 && fr->exact)
-        fprintf(f, "  %-18s exact stick (IDA constraint): stick limit Sfric + %.5g F_n, sliding at Sfric + %.5g F_n\n",
-                m->inter_name[i], fr->mus, fr->fric);
+        fprintf(f, "  %-18s friction (TYPE6) with exact stick (a constraint on IDA, no stick spring): sticks within "
+                   "Sfric + %.5g F_n, slides at Sfric + %.5g F_n (Sfric %.5g N; the sliding direction turns at the "
+                   "rate of %.5g N/m)\n",
+                m->inter_name[i], fr->mus, fr->fric, fr->sfric, fr->kt);
 }

@@ -701,9 +701,14 @@ static void test_case_error_tab(void)
 
 static void test_case_error_blank_field_used(void)
 {
+    /* TYPE6 line 3, columns 1-10 (blank in Radioss): ricochet's Istick */
     EXPECT_INPUT_ERROR("skipfield.rad",
                        "/INTER/TYPE6/3\nt\n12,11\n\n7,0,0,0,0,0\n31\n\n\n" RUN_CARD, 5,
-                       "card /INTER/TYPE6/3", "field blank", "\"7\"");
+                       "card /INTER/TYPE6/3", "field Istick", "{0, 1}", "\"7\"");
+    /* line 5, columns 11-20: ricochet's Fric_s, only with Istick = 1 */
+    EXPECT_INPUT_ERROR("skipfield.rad",
+                       "/INTER/TYPE6/3\nt\n12,11\n,0.3\n\n31\n0,0.5\n\n" RUN_CARD, 7,
+                       "card /INTER/TYPE6/3", "field Fric_s", "Istick = 1", "\"0.5\"");
 }
 
 static void test_case_error_line_too_long(void)
@@ -989,8 +994,8 @@ static void test_case_error_friction_header(void)
     EXPECT_INPUT_ERROR("fr.rad", FRIC("4", "", "") RUN_CARD, 3, "card /FRICTION/5", "field Ifric",
                        "expected an integer in {0, 1, 2, 3}", "\"4\"");
     EXPECT_INPUT_ERROR("fr.rad", FRIC("0,4", "", "") RUN_CARD, 3, "field Ifiltr", "{0, 1, 2, 3}");
-    EXPECT_INPUT_ERROR("fr.rad", FRIC("0,0,,3", "", "") RUN_CARD, 3, "field Iform", "{0, 1, 2}",
-                       "\"3\"");
+    EXPECT_INPUT_ERROR("fr.rad", FRIC("0,0,,4", "", "") RUN_CARD, 3, "field Iform", "{0, 1, 2, 3}",
+                       "\"4\"");
     EXPECT_INPUT_ERROR("fr.rad", FRIC("0,1,1.0371", "", "") RUN_CARD, 3, "card /FRICTION/5",
                        "field Xfreq", "in [0, 1] for Ifiltr = 1", "\"1.0371\"");
     EXPECT_INPUT_ERROR("fr.rad", FRIC("0,2,-0.0371", "", "") RUN_CARD, 3, "field Xfreq",

@@ -73,14 +73,18 @@ class Deck:
     def type6(self, iid, s1, s2, fct_ld, gap=0.0, tstart=None, tstop=None, visc=None,
               ascalex=None, fscaleld=None, iform=0, stiff=None, fct_ul=0, fscaleul=None,
               inacti=0, icor=0, fct_dv=0, fct_df=0, fscalev=None, ascalef=None, ascalev=None,
-              sfric=None, fric=None, fct_ff=0, fct_fv=0, e_target=None, v_imp=None, title="contact"):
+              sfric=None, fric=None, fct_ff=0, fct_fv=0, e_target=None, v_imp=None, istick=None, fric_s=None,
+              title="contact"):
+        """istick, fric_s: ricochet's exact stick (line 3 columns 1-10, line 5
+        columns 11-20, a 10-column real)."""
+        fs = "" if fric_s is None else f"{fric_s:>10.6g}"
         self.add(f"/INTER/TYPE6/{iid}",
                  line(("i", s1), ("i", s2)),
                  line(("r", sfric), ("r", fric), ("r", gap), ("r", tstart), ("r", tstop)),
-                 line(("i", None), ("i", 0), ("i", 0), ("i", inacti), ("i", fct_ff), ("i", fct_fv),
+                 line(("i", istick), ("i", 0), ("i", 0), ("i", inacti), ("i", fct_ff), ("i", fct_fv),
                       ("r", ascalef), ("r", ascalev)),
                  line(("i", fct_ld), ("i", iform), ("r", ascalex), ("r", fscaleld), ("i", icor)),
-                 line(("i", fct_ul), ("i", None), ("r", stiff), ("r", fscaleul)),
+                 (i10(fct_ul) + (fs or " " * 10) + line(("r", stiff), ("r", fscaleul))).rstrip(),
                  line(("r", visc), ("i", fct_dv), ("i", fct_df), ("r", fscalev), ("r", e_target), ("r", v_imp)), title=title)
 
     def inivel(self, iid, v, grnod, rot=False):

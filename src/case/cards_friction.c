@@ -105,7 +105,7 @@ rc_status rc_card_friction(rc_reader *rd, const rc_block *b)
     rc_field la[] = {RC_F_SET("Ifric", &fr->ifric, 0, 0, 0xFu, 0, NULL),
                      RC_F_SET("Ifiltr", &fr->ifiltr, 0, 0, 0xFu, 0, NULL),
                      RC_F_REALD("Xfreq", &fr->xfreq, 1, 0, RC_D_NONE),
-                     RC_F_SET("Iform", &fr->iform, 1, RC_FF_ZDEF, 0x7u, 0, NULL),
+                     RC_F_SET("Iform", &fr->iform, 1, RC_FF_ZDEF, 0xFu, 0, NULL),
                      RC_F_REALD("Dt_ref", &fr->dt_ref, 0, RC_FF_NONNEG, RC_D_T),
                      RC_F_REALD("Area", &fr->area, 0, RC_FF_NONNEG, RC_D_AREA)};
     if ((st = rc_parse_line(rd, b, &b->lines[1], la, RC_NF(la)))) return st;

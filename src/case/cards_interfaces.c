@@ -66,7 +66,8 @@ rc_status rc_card_type6(rc_reader *rd, const rc_block *b)
         RC_F_REALD("Tstart", &t->tstart, 0, 0, RC_D_T),
         RC_F_REALD("Tstop", &t->tstop, RC_DEF_TSTOP, RC_FF_ZDEF, RC_D_T)};
     rc_field l3[] = {
-        RC_F_SKIP(10),
+        /* ricochet's extension in Radioss's blank columns: exact stick */
+        RC_F_SET("Istick", &t->istick, 0, 0, 0x3u, 0x3u, NULL),
         RC_F_SET("IRS", &t->irs, 0, 0, 0x7u, 0x7u, NULL),
         RC_F_SET("IRm", &t->irm, 0, 0, 0x7u, 0x7u, NULL),
         RC_F_SET("Inacti", &t->inacti, 0, 0, RC_BIT(0) | RC_BIT(5), RC_BIT(0) | RC_BIT(5), NULL),
@@ -82,7 +83,8 @@ rc_status rc_card_type6(rc_reader *rd, const rc_block *b)
         RC_F_SET("Icor", &t->icor, 0, 0, 0x3u, 0x3u, NULL)};
     rc_field l5[] = {
         RC_F_INT("fct_IDul", &t->fct_ul, 0, RC_FF_NONNEG),
-        RC_F_SKIP(10),
+        /* ricochet's extension in Radioss's blank columns: static coefficient of exact stick */
+        RC_F_REALW("Fric_s", &t->fric_s, 0, RC_FF_NONNEG, 10, RC_D_NONE),
         RC_F_REALD("Stiff", &t->stiff, 0, RC_FF_NONNEG, RC_D_K),
         RC_F_REALD("Fscaleul", &t->fscaleul, 1, RC_FF_ZDEF, RC_D_F)};
     rc_field l6[] = {
@@ -151,6 +153,13 @@ rc_status rc_card_type6(rc_reader *rd, const rc_block *b)
         if ((st = rc_parse_line(rd, b, &blank, d4, RC_NF(d4)))) return st;
         if (nl == 4) t->iform = 0;
     }
+    if (nl < 6) t->istick = 0;
+    if (nl < 5) t->fric_s = 0;
+    if (t->fric_s > 0 && t->istick != 1)
+        return rc_case_fail(rd, &t->line_loc[4], b->name, "Fric_s",
+                            "the static coefficient is that of exact stick: expected blank or 0 without Istick = 1 "
+                            "(line 3, columns 1-10), got %s",
+                            l5[1].got);
     if (t->tstop < t->tstart)
         return rc_case_fail(rd, &t->line_loc[1], b->name, "Tstop",
                             "expected Tstop >= Tstart = %.15g, got %s", t->tstart, lines[1][nf[1] - 1].got);

@@ -130,12 +130,14 @@ typedef struct rc_case_type6 {
     char title[101];
     int surf1, surf2;                         /* line 1 */
     double sfric, fric, gap, tstart, tstop;   /* line 2: [N] [-] [m] [s] [s] */
+    int istick;                               /* line 3, ricochet: 1 exact stick (IDA constraint) */
     int irs, irm, inacti, fct_ff, fct_fv;     /* line 3 */
     double ascalef, ascalev;                  /* line 3: [N] [m/s] */
     int fct_ld, iform;                        /* line 4 */
     double ascalex, fscaleld;                 /* line 4: [m] [N] */
     int icor;                                 /* line 4 */
     int fct_ul;                               /* line 5 */
+    double fric_s;                            /* line 5, ricochet: static coefficient of exact stick [-]; 0: Fric */
     double stiff, fscaleul;                   /* line 5: [N/m] [N] */
     double visc;                              /* line 6: [N s/m] */
     double e_target;                          /* line 6, ricochet: restitution asked [-]; 0: none */
@@ -233,7 +235,7 @@ typedef struct rc_case_friction {
     int ifric;      /* 0 Coulomb, 1 generalised viscous, 2 Darmstad, 3 Renard */
     int ifiltr;     /* 0..3 */
     double xfreq;   /* filter coefficient/frequency (docs) */
-    int iform;      /* 1 viscous (0 means 1), 2 incremental stiffness */
+    int iform;      /* 1 viscous (0 means 1), 2 incremental stiffness, 3 exact stick (ricochet) */
     double dt_ref;  /* ricochet extension: reference step of Ifiltr 1, 2 [s] (0: none) */
     double area;    /* ricochet extension: contact area for the pressure [m^2] (0: default) */
     rc_case_fricset def;    /* default coefficients */

@@ -13,6 +13,7 @@
 
 #include "model/imposed.h"
 #include "model/model.h"
+#include "model/stick.h"
 
 #define T double complex
 #define RE(x) creal(x)
@@ -266,4 +267,19 @@ void rc_inter_report_rate(const rc_model *m, int i, int mode, int branch, int tr
     dr->fu = cimag(o.fu) / RC_CSTEP;
     dr->fh = cimag(o.fh) / RC_CSTEP;
     dr->offset = cimag(o.off) / RC_CSTEP;
+}
+
+/* Contact point, unit normal (from a to b) and relative velocity of the
+ * material points there, for the exact-stick constraint (model/stick.h;
+ * single-point pairs). Complex, for its complex-step derivatives. */
+void rc_stk_geom_c(const rc_model *m, int i, const double complex *ya, const double complex *yb,
+                   double complex *point, double complex *n, double complex *vrel)
+{
+    geom_c g;
+    geometry_c(m, i, ya, yb, &g, NULL);
+    for (int k = 0; k < 3; k++) {
+        point[k] = g.point[k];
+        n[k] = g.n[k];
+        vrel[k] = g.vrel[k];
+    }
 }

@@ -69,7 +69,8 @@ void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, d
         if (fr->kind == RC_FK_NONE) continue;
         const double *s = y + m->inter_eadr[i];
         double et = 0;
-        if (fr->tidx >= 0 && d->inter_mode[i] == RC_MODE_CLOSED) {
+        /* exact stick has no spring: nothing stored */
+        if (fr->tidx >= 0 && !fr->exact && d->inter_mode[i] == RC_MODE_CLOSED) {
             const double *ft = s + fr->tidx;
             et = 0.5 * (ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2]) / fr->kt;
         }

@@ -13,6 +13,7 @@
 #include "model/coupling.h"
 #include "model/coupling_contact.h"
 #include "engine/events.h"
+#include "model/stick.h"
 #include "model/power.h"
 #include "model/segsurf.h"
 
@@ -654,6 +655,24 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             if (r.slip_root > 0) {
                 slip_on_limit(m, d, i, t, y, restart);
                 d->inter_slip[i] = 1;
+                kind = "fric_slip";
+            }
+        }
+        /* exact stick, sticking: can it stick? Not when it slides (a
+         * contact closing while sliding) or when the force that holds it
+         * lies beyond the static limit (a slip that ended with the force
+         * outside the cone, a load beyond the limit at the start): it
+         * slides on the limit along that direction (the force's on a) */
+        if (!kind && d->inter_mode[i] == RC_MODE_CLOSED && fr->kind != RC_FK_NONE && fr->exact && fr->tidx >= 0 &&
+            !d->inter_slip[i]) {
+            double e[3];
+            if (rc_stk_decide(m, d, i, t, y, e) > 0) {
+                double *ft = y + m->inter_eadr[i] + fr->tidx;
+                for (int q = 0; q < 3; q++) set_state(ft + q, e[q], restart);
+                d->inter_slip[i] = 1;
+                report(m, d, i, t, y, &r); /* slip: on the (kinetic) limit along e */
+                for (int q = 0; q < 3; q++) set_state(ft + q, r.fraw[q], restart);
+                *restart = 1;
                 kind = "fric_slip";
             }
         }

@@ -13,6 +13,7 @@
 #include "base/progress.h"
 #include "model/joint.h"
 #include "model/model.h"
+#include "model/stick.h"
 
 /* Joints: the initial state satisfies them (positions and velocities) and
  * their rows are independent (engine/joints.c); else an input error at
@@ -103,6 +104,11 @@ rc_status rc_model_set_method(rc_model *m, int method, rc_error *err)
                  "integration method: the model has joints (%d), which only the IDA path (method 2) runs; "
                  "expected 2, got 1",
                  m->jnt->n);
+    if (method == 1 && rc_stk_count(m) > 0)
+        RC_RAISE(err, RC_EINPUT,
+                 "integration method: the model has exact stick (%d interfaces), a constraint that only the IDA "
+                 "path (method 2) runs; expected 2, got 1",
+                 rc_stk_count(m));
     m->method = method;
     return RC_OK;
 }

@@ -390,6 +390,17 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     if (m->inter_fct_ld[i] < 0)
         RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field fct_IDld: expected the id of the load curve (required), got 0",
                  RC_LOC(t6->line_loc[3]), card);
+    /* exact stick (ricochet's Istick, Fric_s): the stick limit Sfric + Fric_s F_n */
+    fr->exact = t6->istick == 1;
+    fr->mus = t6->fric_s > 0 ? t6->fric_s : t6->fric;
+    if (fr->exact && fr->kind == RC_FK_NONE)
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field Istick: exact stick (1) asks for friction, but Sfric and Fric "
+                                           "are 0: expected Sfric > 0 or Fric > 0, or Istick blank",
+                 RC_LOC(t6->line_loc[2]), card);
+    if (fr->exact && fr->fct_fv >= 0)
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field Istick: exact stick with a speed-dependent coefficient "
+                                           "(fct_IDfv) is not supported yet: expected Istick blank or fct_IDfv 0",
+                 RC_LOC(t6->line_loc[2]), card);
     if ((st = check_hysteresis(m, i, t6, card, err))) return st;
     m->inter_name[i] = malloc(strlen(card) + 1);
     if (!m->inter_name[i]) RC_RAISE(err, RC_ENOMEM, "out of memory");
@@ -421,6 +432,32 @@ static rc_status check_seg_pairs(const rc_case *c, rc_model *m, rc_error *err)
         if (fr->tau > 0 && fr->form == RC_FF_INCREMENTAL)
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s: friction per contact point (a segment surface's nodes) with a filter (/FRICTION/%d, Ifiltr) and the incremental formulation (Iform 2 or 0): not supported yet (supported: the filter with the viscous formulation, Iform 1)",
                      RC_LOC(loc), m->inter_name[i], fr->card_id);
+    }
+    return RC_OK;
+}
+
+/* Exact stick (docs/theory.md, "Exact stick") holds one contact point:
+ * interfaces with several points are refused. */
+static rc_status check_exact_stick(const rc_case *c, rc_model *m, rc_error *err)
+{
+    for (int i = 0; i < m->ninter; i++) {
+        const rc_fric *fr = &m->inter_fr[i];
+        if (!fr->exact || !rc_pair_multi(m->inter_pair[i])) continue;
+        rc_loc loc = m->inter_loc[i];
+        char what[80];
+        snprintf(what, sizeof what, "%s, field Istick", m->inter_name[i]);
+        for (int k = 0; k < c->nfriction; k++)
+            if (fr->kind == RC_FK_CARD && c->friction[k].id == fr->card_id) {
+                loc = c->friction[k].line_loc[0];
+                snprintf(what, sizeof what, "/FRICTION/%d, field Iform", fr->card_id);
+            }
+        for (int k = 0; fr->kind != RC_FK_CARD && k < c->ntype6; k++)
+            if (c->type6[k].id == m->inter_id[i]) loc = c->type6[k].line_loc[2];
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card %s: exact stick on %s, a %s pair with several contact points, is not supported yet: "
+                           "expected a single-point pair (sphere, cylinder against a plane, box, sphere) or the "
+                           "incremental friction",
+                 RC_LOC(loc), what, m->inter_name[i], rc_geom_pair_name(m->inter_pair[i]));
     }
     return RC_OK;
 }
@@ -525,8 +562,38 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     m->tol_auto = (m->atol_pos == 0 ? RC_TOL_AUTO_POS : 0) | (m->atol_quat == 0 ? RC_TOL_AUTO_QUAT : 0) |
                   (m->atol_vel == 0 ? RC_TOL_AUTO_VEL : 0) | (m->atol_omega == 0 ? RC_TOL_AUTO_OMEGA : 0) |
                   (m->atol_energy == 0 ? RC_TOL_AUTO_ENERGY : 0);
-    /* Method 0: IDA for a model with joints, else CVODE */
-    m->method = c->solver.method ? c->solver.method : c->njoint > 0 ? 2 : 1;
+    /* exact stick (TYPE6 Istick 1, /FRICTION Iform 3): a constraint of the IDA path */
+    int nexact = 0;
+    rc_loc exact_loc = c->end;
+    char exact_what[80] = "";
+    for (int k = c->nfriction - 1; k >= 0; k--)
+        if (c->friction[k].iform == 3) {
+            nexact++;
+            exact_loc = c->friction[k].line_loc[0];
+            snprintf(exact_what, sizeof exact_what, "/FRICTION/%d, field Iform (3)", c->friction[k].id);
+        }
+    for (int k = c->ntype6 - 1; k >= 0; k--)
+        if (c->type6[k].istick == 1) {
+            nexact++;
+            exact_loc = c->type6[k].line_loc[2];
+            snprintf(exact_what, sizeof exact_what, "/INTER/TYPE6/%d, field Istick (1)", c->type6[k].id);
+        }
+    if (nexact > 0 && c->njoint > 0) {
+        st = RC_SET(err, RC_EINPUT,
+                    RC_LOCFMT "card %s: exact stick in a model with joints is not supported yet: expected the "
+                              "incremental friction (Iform 2, Istick blank) or no joints",
+                    RC_LOC(exact_loc), exact_what);
+        goto fail;
+    }
+    if (nexact > 0 && c->solver.method == 1) {
+        st = RC_SET(err, RC_EINPUT,
+                    RC_LOCFMT "card /SOLVER, field Method: exact stick (%s, line %d) is a constraint that only the IDA "
+                              "path (Method 2) runs; expected 0 (automatic), blank or 2, got 1",
+                    RC_LOC(c->solver.method_loc), exact_what, exact_loc.line);
+        goto fail;
+    }
+    /* Method 0: IDA for a model with joints or exact stick, else CVODE */
+    m->method = c->solver.method ? c->solver.method : c->njoint > 0 || nexact > 0 ? 2 : 1;
     if (c->njoint > 0 && m->method == 1) {
         st = RC_SET(err, RC_EINPUT,
                  RC_LOCFMT "card /SOLVER, field Method: the model has joints (%d), which only the IDA path (Method "
@@ -627,6 +694,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     for (int k = 0; k < c->npower; k++) /* model/power.c */
         if ((st = rc_power_compile(c, m, k, c->ntype6 + k, err))) goto fail;
     if ((st = rc_friction_compile(c, m, err))) goto fail;
+    if ((st = check_exact_stick(c, m, err))) goto fail;
     if ((st = check_seg_pairs(c, m, err))) goto fail;
     /* couplings (model/coupling.c) */
     if ((st = rc_cpl_compile(c, m, err))) goto fail;

@@ -198,7 +198,17 @@ static rc_status apply_card(const rc_case *c, rc_model *m, int i, const rc_case_
     memset(fr, 0, sizeof *fr);
     fr->kind = RC_FK_CARD;
     fr->card_id = f->id;
-    fr->form = f->iform == 2 ? RC_FF_INCREMENTAL : RC_FF_VISCOUS;
+    fr->form = f->iform == 2 || f->iform == 3 ? RC_FF_INCREMENTAL : RC_FF_VISCOUS;
+    /* Iform 3 (ricochet): exact stick, the static limit that of Fric */
+    fr->exact = f->iform == 3;
+    const rc_case_fricset *s0 = g ? &g->set[0] : &f->def;
+    fr->mus = s0->fric;
+    if (fr->exact && (f->ifric != 0 || f->ifiltr != 0 || (g && g->idir == 1)))
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card /FRICTION/%d, field Iform: exact stick (3) is supported with the Coulomb law only, "
+                           "isotropic and unfiltered (not supported yet: Ifric %d, Ifiltr %d, Idir %d); expected "
+                           "Iform 2 or Ifric = Ifiltr = Idir = 0",
+                 RC_LOC(f->line_loc[0]), f->id, f->ifric, f->ifiltr, g ? g->idir : 0);
     fr->ifric = f->ifric;
     fr->kt = kt;
     fr->fct_ff = fr->fct_fv = -1;
@@ -285,7 +295,7 @@ void rc_friction_print(const rc_model *m, int i, FILE *f)
 {
     const rc_fric *fr = &m->inter_fr[i];
     static const char *const law[4] = {"Coulomb", "generalised viscous", "modified Darmstad", "Renard"};
-    if (fr->kind == RC_FK_TYPE6)
+    if (fr->kind == RC_FK_TYPE6 && !fr->exact)
         fprintf(f, "  %-18s friction (TYPE6) Sfric %.5g N, Fric %.5g, stick stiffness %.5g N/m\n", m->inter_name[i],
                 fr->sfric, fr->fric, fr->kt);
     if (fr->kind == RC_FK_STEP5)
@@ -296,5 +306,10 @@ void rc_friction_print(const rc_model *m, int i, FILE *f)
         fprintf(f, "  %-18s friction /FRICTION/%d: %s law, %s form%s, filter tau %.5g s, pressure area %.5g m^2%s\n",
                 m->inter_name[i], fr->card_id, law[fr->ifric & 3],
                 fr->form == RC_FF_VISCOUS ? "viscous (total)" : "incremental",
-                fr->form == RC_FF_INCREMENTAL ? "" : "", fr->tau, fr->area, fr->ortho ? ", orthotropic" : "");
+                fr->exact ? " with exact stick" : "", fr->tau, fr->area, fr->ortho ? ", orthotropic" : "");
+    if (fr->kind == RC_FK_TYPE6 && fr->exact)
+        fprintf(f, "  %-18s friction (TYPE6) with exact stick (a constraint on IDA, no stick spring): sticks within "
+                   "Sfric + %.5g F_n, slides at Sfric + %.5g F_n (Sfric %.5g N; the sliding direction turns at the "
+                   "rate of %.5g N/m)\n",
+                m->inter_name[i], fr->mus, fr->fric, fr->sfric, fr->kt);
 }

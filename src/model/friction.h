@@ -40,6 +40,12 @@ typedef struct rc_fric {
     int tidx;             /* own-state index of F_t (incremental), -1          */
     int fidx;             /* own-state index of the filtered force, -1         */
     int widx;             /* own-state index of W_fric, -1 when no friction    */
+    int exact;            /* 1: exact stick (TYPE6 Istick 1, /FRICTION Iform 3): while
+                             sticking the tangential relative velocity is held at
+                             zero by a constraint of the IDA path (model/stick.h),
+                             no stick spring; sliding as the incremental form     */
+    double mus;           /* exact stick: static coefficient of the stick limit
+                             Sfric + mus F_n [-]                                  */
 } rc_fric;
 
 #endif

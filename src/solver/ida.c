@@ -23,6 +23,13 @@
  * With joints the velocities are made to satisfy G u = 0 at the start, and
  * lambda follows from the acceleration-level equations at every (re)start
  * (engine/joints.c; IDACalcIC cannot: no algebraic unknown in the rows).
+ *
+ * Exact stick (model/stick.h; a model has joints or exact stick, not both):
+ * Y = [y, Lambda], two rows per exact interface, F_Lambda = t_k . v_rel
+ * while it sticks (lambda = Lambda' its friction force), Lambda' = 0
+ * otherwise; the multipliers and the velocities of the sticking contacts
+ * are made consistent at every (re)start (engine/stick.c), the slip roots
+ * of the sticking contacts compare |lambda| (from Y') with the limit.
  */
 #include <float.h>
 #include <ida/ida.h>
@@ -39,6 +46,7 @@
 #include "model/coupling.h"
 #include "model/joint.h"
 #include "model/model.h"
+#include "model/stick.h"
 #include "solver/impacts.h"
 #include "solver/nvfast.h"
 #include "solver/integrator.h"
@@ -50,7 +58,9 @@ typedef struct ida_ctx {
     int n;          /* size of Y */
     double *jsave;  /* [nnz] Jacobian values of f on the model's pattern */
     rc_jnt_work *jw; /* joints: pattern of the extended matrix, scratch (NULL: none) */
-    double *yrec;    /* joints: the record vector, Y with lambda = Lambda' (model/joint.h) */
+    double *yrec;    /* joints: the record vector, Y with lambda = Lambda' (model/joint.h);
+                        exact stick: Y with the sticking contacts' F_t = their multipliers */
+    rc_stk_work *sw; /* exact stick: pattern of the extended matrix, scratch (NULL: none) */
     volatile sig_atomic_t *stop;
     char msg[512];  /* IDA's last error message */
     /* the integrator and its vectors (ida_open, ida_start) */
@@ -79,6 +89,7 @@ static int cb_res(realtype t, N_Vector yy, N_Vector yp, N_Vector rr, void *ud)
     if (st) return st;
     for (int k = 0; k < c->m->ny; k++) r[k] = p[k] - r[k];
     if (c->jw) rc_jnt_residual(c->m, c->jw, y, p, r);
+    if (c->sw) rc_stk_residual(c->m, c->d, c->sw, y, p, r);
     return 0;
 }
 
@@ -97,6 +108,14 @@ static int cb_jac(realtype t, realtype cj, N_Vector yy, N_Vector yp, N_Vector rr
     if (st) return st;
     sunindextype *cp = SUNSparseMatrix_IndexPointers(A), *ri = SUNSparseMatrix_IndexValues(A);
     double *a = SUNSparseMatrix_Data(A);
+    if (c->sw) {
+        const int64_t *pc, *pr;
+        rc_stk_pattern(c->sw, &pc, &pr);
+        for (int k = 0; k <= c->n; k++) cp[k] = (sunindextype)pc[k];
+        for (int64_t k = 0; k < pc[c->n]; k++) ri[k] = (sunindextype)pr[k];
+        rc_stk_jacobian(m, c->d, c->sw, cj, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), c->jsave, a);
+        return 0;
+    }
     if (!c->jw) {
         for (int k = 0; k <= m->ny; k++) cp[k] = (sunindextype)m->jac_colptr[k];
         for (int64_t k = 0; k < m->nnz; k++) ri[k] = (sunindextype)m->jac_rowind[k];
@@ -115,9 +134,9 @@ static int cb_jac(realtype t, realtype cj, N_Vector yy, N_Vector yp, N_Vector rr
 static int cb_root(realtype t, N_Vector yy, N_Vector yp, realtype *g, void *ud)
 {
     ida_ctx *c = ud;
-    (void)yp;
     c->d->n_root++;
     rc_assemble_roots(c->m, c->d, t, N_VGetArrayPointer(yy), g);
+    if (c->sw) rc_stk_roots(c->m, c->d, c->sw, t, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), g);
     return 0;
 }
 
@@ -136,7 +155,7 @@ static int cb_ewt(N_Vector yv, N_Vector wv, void *ud)
             s = m->atol[k] + (!m->ewt_rel || m->ewt_rel[k] ? m->rtol * ay : 0.0);
             if (m->ewt_rel && !m->ewt_rel[k]) s = fmax(s, 64.0 * DBL_EPSILON * ay);
         } else {
-            s = rc_jnt_atol(m, c->jw, k - m->ny) + m->rtol * ay;
+            s = (c->sw ? rc_stk_atol(c->sw, k - m->ny) : rc_jnt_atol(m, c->jw, k - m->ny)) + m->rtol * ay;
         }
         if (!(s > 0)) return -1;
         w[k] = 1.0 / s;
@@ -165,6 +184,8 @@ static int restart(ida_ctx *c, void *ida, double t, N_Vector yy, N_Vector yp)
 {
     const rc_model *m = c->m;
     double *y = N_VGetArrayPointer(yy), *p = N_VGetArrayPointer(yp);
+    /* exact stick: the sticking velocities made exact, y' and the multipliers */
+    if (c->sw) return rc_stk_restart(m, c->d, c->sw, t, y, p) ? IDA_CONV_FAIL : IDAReInit(ida, t, yy, yp);
     if (rc_assemble_rhs(m, c->d, t, y, p)) return IDA_FIRST_RES_FAIL;
     /* joints: the multipliers and y' from the acceleration-level equations
      * (IDACalcIC cannot: the constraint rows hold no algebraic unknown) */
@@ -184,7 +205,7 @@ static void failure_advice(const rc_model *m, const rc_data *d, void *ida, int f
         int imax = -1;
         double vmax = 0.0;
         /* the components in the error test: not the multipliers lambda */
-        const int len = (int)N_VGetLength(tmp1), nr = m->jnt ? m->jnt->nrows : 0;
+        const int len = (int)N_VGetLength(tmp1), nr = m->jnt ? m->jnt->nrows : len - m->ny;
         for (int i = 0; i < len; i++) {
             if (i >= m->ny && i < m->ny + nr) continue;
             const double v = fabs(e[i] * w[i]);
@@ -194,7 +215,7 @@ static void failure_advice(const rc_model *m, const rc_data *d, void *ida, int f
             }
         }
         if (imax >= 0 && imax < m->ny) rc_state_name(m, imax, elem, sizeof elem);
-        else if (imax >= 0) rc_jnt_extra_name(m, imax - m->ny, elem, sizeof elem);
+        else if (imax >= 0 && m->jnt) rc_jnt_extra_name(m, imax - m->ny, elem, sizeof elem);
     }
     char *fname = IDAGetReturnFlagName(flag);
     const char *advice;
@@ -261,6 +282,11 @@ static rc_status ida_open(void *self, const rc_model *m, rc_data *d, const rc_ru
         c->n = m->ny + rc_jnt_nextra(c->jw);
         if (!(c->yrec = calloc((size_t)c->n, sizeof(double))))
             return RC_SET(err, RC_ENOMEM, "out of memory for the joints");
+    } else if (rc_stk_count(m) > 0) {
+        if (!(c->sw = rc_stk_work_new(m))) return RC_SET(err, RC_ENOMEM, "out of memory for exact stick");
+        c->n = m->ny + rc_stk_nextra(c->sw);
+        if (!(c->yrec = calloc((size_t)c->n, sizeof(double))))
+            return RC_SET(err, RC_ENOMEM, "out of memory for exact stick");
     }
     if (SUNContext_Create(NULL, &c->ctx)) return RC_SET(err, RC_ESOLVER, "SUNContext_Create failed");
     c->yy = N_VNew_Serial(c->n, c->ctx);
@@ -273,7 +299,7 @@ static rc_status ida_open(void *self, const rc_model *m, rc_data *d, const rc_ru
     N_Vector vecs[] = {c->yy, c->yp, c->ytn, c->ypt, c->ysamp, c->idv};
     for (size_t k = 0; k < sizeof vecs / sizeof vecs[0]; k++) rc_nvector_fast(vecs[k]);
     c->jsave = calloc((size_t)m->nnz + 1, sizeof(double));
-    const int64_t nnz = c->jw ? rc_jnt_nnz(c->jw) : m->nnz;
+    const int64_t nnz = c->jw ? rc_jnt_nnz(c->jw) : c->sw ? rc_stk_nnz(c->sw) : m->nnz;
     c->A = SUNSparseMatrix(c->n, c->n, nnz, CSC_MAT, c->ctx);
     if (!c->yy || !c->yp || !c->ytn || !c->ypt || !c->ysamp || !c->idv || !c->jsave || !c->A)
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
@@ -284,7 +310,8 @@ static rc_status ida_open(void *self, const rc_model *m, rc_data *d, const rc_ru
     *n = c->n;
     *integrator = c->jw ? "IDA BDF, Newton, KLU sparse direct, rootfinding; joints: stabilised index-2 "
                           "constraints (GGL)"
-                        : "IDA BDF, Newton, KLU sparse direct, rootfinding";
+                  : c->sw ? "IDA BDF, Newton, KLU sparse direct, rootfinding; exact stick: velocity constraints"
+                          : "IDA BDF, Newton, KLU sparse direct, rootfinding";
     return RC_OK;
 }
 
@@ -304,6 +331,9 @@ static rc_status ida_start(void *self, rc_error *err)
                   rc_jnt_consistent(m, c->jw, yd, p)))
         return RC_SET(err, RC_ESOLVER, "the joints' constraint rows are dependent at t = 0 (the model's "
                                        "compile checks them: an internal error)");
+    if (c->sw && rc_stk_restart(m, d, c->sw, t, yd, p))
+        return RC_SET(err, RC_ESOLVER, "exact stick at t = 0: the sticking contacts' rows are dependent (two "
+                                       "sticking contacts hold the same motion) or the forces could not be evaluated");
     IDACHECK(IDAInit(ida, cb_res, t, c->yy, c->yp), "IDAInit");
     IDACHECK(IDAWFtolerances(ida, cb_ewt), "IDAWFtolerances");
     IDACHECK(IDASetLinearSolver(ida, c->LS, c->A), "IDASetLinearSolver");
@@ -315,9 +345,10 @@ static rc_status ida_start(void *self, rc_error *err)
     IDACHECK(IDASetNonlinConvCoef(ida, 0.1), "IDASetNonlinConvCoef");
     if (m->hmax > 0) IDACHECK(IDASetMaxStep(ida, m->hmax), "IDASetMaxStep");
     if (m->h0 > 0) IDACHECK(IDASetInitStep(ida, m->h0), "IDASetInitStep");
-    if (c->jw) {
+    if (c->jw || c->sw) {
         /* the multipliers are algebraic, out of the error test */
-        rc_jnt_id(m, c->jw, N_VGetArrayPointer(c->idv));
+        if (c->jw) rc_jnt_id(m, c->jw, N_VGetArrayPointer(c->idv));
+        else rc_stk_id(m, c->sw, N_VGetArrayPointer(c->idv));
         IDACHECK(IDASetId(ida, c->idv), "IDASetId");
         IDACHECK(IDASetSuppressAlg(ida, SUNTRUE), "IDASetSuppressAlg");
     }
@@ -387,11 +418,25 @@ static const char *ida_last_msg(void *self) { return ((ida_ctx *)self)->msg; }
 static const double *ida_record_vector(void *self, const double *Y, const double *Yp)
 {
     ida_ctx *c = self;
+    if (c->sw) {
+        memcpy(c->yrec, Y, (size_t)c->n * sizeof(double));
+        rc_stk_sync(c->m, c->d, c->sw, Y, Yp, c->yrec);
+        return c->yrec;
+    }
     if (!c->jw) return Y;
     const int ny = c->m->ny, nr = c->m->jnt->nrows;
     memcpy(c->yrec, Y, (size_t)c->n * sizeof(double));
     memcpy(c->yrec + ny, Yp + ny, (size_t)nr * sizeof(double));
     return c->yrec;
+}
+
+/* Exact stick: the sticking contacts' F_t take their multipliers' force
+ * before the events (the slip direction, the event records). */
+static void ida_before_events(void *self)
+{
+    ida_ctx *c = self;
+    if (c->sw) rc_stk_sync(c->m, c->d, c->sw, N_VGetArrayPointer(c->yy), N_VGetArrayPointer(c->yp),
+                           N_VGetArrayPointer(c->yy));
 }
 
 /* Every mode change restarts IDA from the event state. */
@@ -419,6 +464,7 @@ static void ida_close(void *self)
     N_VDestroy(c->idv);
     free(c->jsave);
     rc_jnt_work_free(c->jw);
+    rc_stk_work_free(c->sw);
     free(c->yrec);
     SUNContext_Free(&c->ctx);
 }
@@ -429,7 +475,7 @@ static const rc_backend ida_backend = {
     .last_step = ida_last_step, .root_info = ida_root_info, .set_root_dirs = ida_set_root_dirs,
     .set_stop_time = ida_set_stop_time, .restart = ida_restart, .add_stats = ida_add_stats, .steps = ida_steps,
     .failure = ida_failure, .flag_name = IDAGetReturnFlagName, .last_msg = ida_last_msg,
-    .record_vector = ida_record_vector, .before_events = NULL, .after_events = ida_after_events,
+    .record_vector = ida_record_vector, .before_events = ida_before_events, .after_events = ida_after_events,
     .continued = NULL, .close = ida_close};
 
 static rc_status ida_run(const rc_model *m, const rc_run_options *opt, rc_pause *pause, rc_stats *stats,

@@ -1,0 +1,627 @@
+/*
+ * Exact stick on the integrator's extended vector Y = [y, Lambda]
+ * (model/stick.h, docs/theory.md "Exact stick"): the constraint rows
+ * c_k = t_k . v_rel of the sticking contacts, the multipliers' forces on
+ * the bodies, the extended sparse pattern and its exact Jacobian (complex
+ * step), the consistent multipliers at a (re)start, the slip roots and the
+ * stick/slip decision of the events. The residual is pure: no allocation,
+ * no printing, no mode change.
+ */
+#include <complex.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_linalg.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "model/imposed.h"
+#include "model/model.h"
+#include "model/stick.h"
+
+typedef double complex cx;
+
+#define SK_STEP 1e-40            /* complex step, as assemble_jac.c */
+#define SK_MAXB (2 * RC_NB + 2)  /* rows (= columns) of an interface's dense block */
+
+/* The stretch-fixed part of the constraints: the exact interfaces, the
+ * helper axis of each tangent basis, the scratch of the multipliers. */
+typedef struct sk_core {
+    int ny, ns;
+    int *inter;   /* [ns] interface index */
+    double *axis; /* [3 ns] helper axis h: t_1 = (h - (h.n) n) / |.|, t_2 = n x t_1 */
+    int *act;     /* [ns] 1: sticking (closed, exact, not sliding) */
+    double *A, *b; /* [(2 ns)^2], [2 ns] */
+    size_t *perm; /* [2 ns] */
+    double *z;    /* [ny] accelerations of a unit multiplier */
+    int *idx;     /* [2 ns] the rows in the equations: 2 q + k */
+    char *ron;    /* [2 ns] 1: row k of slot q is a constraint; 0: the
+                     supports (/BCS, /IMPVEL) already hold that direction on
+                     both bodies (no acceleration answers its multiplier),
+                     its multiplier is 0 (set at each restart) */
+} sk_core;
+
+struct rc_stk_work {
+    sk_core k;
+    int n; /* ny + 2 ns */
+    int64_t nnz;
+    int64_t *colptr, *rowind, *mslot, *diag, *bslot; /* bslot: [ns SK_MAXB^2] */
+    double *atol; /* [2 ns] */
+};
+
+int rc_stk_count(const rc_model *m)
+{
+    int n = 0;
+    for (int i = 0; i < m->ninter; i++) n += m->inter_fr[i].exact && m->inter_fr[i].tidx >= 0;
+    return n;
+}
+
+static int sticking(const rc_data *d, int i) { return d->inter_mode[i] == RC_MODE_CLOSED && !d->inter_slip[i]; }
+
+/* Rows that take a force: not held by /BCS, not imposed by /IMPVEL (their
+ * supports carry the constraint's share). */
+static int row_free(const rc_model *m, int row)
+{
+    if (m->row_held && m->row_held[row]) return 0;
+    if (m->imp && m->imp->row_imp && m->imp->row_imp[row]) return 0;
+    return 1;
+}
+
+static int free_adr(const rc_model *m, int b) { return b >= 0 ? m->body_yadr[b] : -1; }
+
+/* ---- kernel (complex, for its derivatives) --------------------------- */
+static cx cdot(const cx *a, const cx *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+static void ccross(const cx *a, const cx *b, cx *c)
+{
+    const cx c0 = a[1] * b[2] - a[2] * b[1], c1 = a[2] * b[0] - a[0] * b[2], c2 = a[0] * b[1] - a[1] * b[0];
+    c[0] = c0;
+    c[1] = c1;
+    c[2] = c2;
+}
+
+/* R(q)^T s for the normalised quaternion q / |q| (as the kernels). */
+static void rot_t(const cx *q, const cx *s, cx *out)
+{
+    const cx inv = 1.0 / csqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    const cx w = -q[0] * inv, u[3] = {q[1] * inv, q[2] * inv, q[3] * inv};
+    cx us[3], uus[3];
+    ccross(u, s, us);
+    ccross(u, us, uus);
+    for (int k = 0; k < 3; k++) out[k] = s[k] + 2.0 * w * us[k] + 2.0 * uus[k];
+}
+
+/* Tangent basis of the plane normal to n from the helper axis h. */
+static void basis(const double *h, const cx *n, cx *t1, cx *t2)
+{
+    const cx hn = h[0] * n[0] + h[1] * n[1] + h[2] * n[2];
+    for (int k = 0; k < 3; k++) t1[k] = h[k] - hn * n[k];
+    const cx nt = csqrt(cdot(t1, t1));
+    for (int k = 0; k < 3; k++) t1[k] /= nt;
+    ccross(n, t1, t2);
+}
+
+/* The rows of body b (state yb) under the force sF at point p: the
+ * residual terms -(F/m) and -J^-1 R^T ((p - x) x F) of its velocity rows. */
+static void body_terms(const rc_model *m, int b, const cx *yb, const cx *p, const cx *F, double s, cx *out)
+{
+    for (int k = 0; k < RC_NB; k++) out[k] = 0.0;
+    if (b < 0 || m->body_yadr[b] < 0) return; /* the ground or a fixed body: no rows */
+    const double *Ji = m->body_Jinv + 9 * b, im = 1.0 / m->body_mass[b];
+    cx r[3], f[3], tau[3], taub[3];
+    for (int k = 0; k < 3; k++) {
+        r[k] = p[k] - yb[k];
+        f[k] = s * F[k];
+    }
+    ccross(r, f, tau);
+    rot_t(yb + 3, tau, taub);
+    for (int k = 0; k < 3; k++) {
+        out[7 + k] = -f[k] * im;
+        out[10 + k] = -(Ji[3 * k] * taub[0] + Ji[3 * k + 1] * taub[1] + Ji[3 * k + 2] * taub[2]);
+    }
+}
+
+/* Interface i's constraint rows c[2] and (ra, rb not NULL) the residual
+ * terms of its bodies under the multipliers lam[2]; point and basis out
+ * when asked (pt, t1, t2 not NULL). */
+static void kern(const rc_model *m, int i, const double *h, const cx *ya, const cx *yb, const cx *lam, cx *ra, cx *rb,
+                 cx *c, cx *pt, cx *tb1, cx *tb2)
+{
+    cx p[3], n[3], v[3], t1[3], t2[3];
+    rc_stk_geom_c(m, i, ya, yb, p, n, v);
+    basis(h, n, t1, t2);
+    c[0] = cdot(t1, v);
+    c[1] = cdot(t2, v);
+    for (int k = 0; k < 3 && pt; k++) pt[k] = p[k];
+    for (int k = 0; k < 3 && tb1; k++) tb1[k] = t1[k];
+    for (int k = 0; k < 3 && tb2; k++) tb2[k] = t2[k];
+    if (!ra && !rb) return;
+    cx F[3];
+    for (int k = 0; k < 3; k++) F[k] = lam[0] * t1[k] + lam[1] * t2[k];
+    if (ra) body_terms(m, m->inter_ba[i], ya, p, F, 1.0, ra);
+    if (rb) body_terms(m, m->inter_bb[i], yb, p, F, -1.0, rb);
+}
+
+/* Body states of interface i as complex values, + i h z on the free ones
+ * (z NULL: none). */
+static void load(const rc_model *m, int i, const double *Y, const double *z, cx *ya, cx *yb)
+{
+    const int bs[2] = {m->inter_ba[i], m->inter_bb[i]};
+    cx *out[2] = {ya, yb};
+    for (int e = 0; e < 2; e++) {
+        const double *s = rc_body_state(m, bs[e], Y);
+        const int adr = free_adr(m, bs[e]);
+        for (int k = 0; k < RC_NB; k++) out[e][k] = s[k] + (z && adr >= 0 ? I * SK_STEP * z[adr + k] : 0.0);
+    }
+}
+
+/* ---- the multipliers: A = G M^-1 G^T and its right-hand sides --------- */
+/* Add s times the accelerations of the unit multiplier (row k of
+ * interface slot q) to z [ny]. */
+static void add_unit(const rc_model *m, const sk_core *K, int q, int k, const double *Y, double s, double *z)
+{
+    const int i = K->inter[q];
+    cx ya[RC_NB], yb[RC_NB], lam[2] = {k == 0 ? s : 0.0, k == 1 ? s : 0.0}, ra[RC_NB], rb[RC_NB], c[2];
+    load(m, i, Y, NULL, ya, yb);
+    const int aa = free_adr(m, m->inter_ba[i]), ab = free_adr(m, m->inter_bb[i]);
+    kern(m, i, K->axis + 3 * q, ya, yb, lam, ra, rb, c, NULL, NULL, NULL);
+    /* the residual terms are minus the accelerations */
+    for (int r = 0; r < RC_NB; r++) {
+        if (aa >= 0 && row_free(m, aa + r)) z[aa + r] -= creal(ra[r]);
+        if (ab >= 0 && row_free(m, ab + r)) z[ab + r] -= creal(rb[r]);
+    }
+}
+
+/* dc/dy z of interface slot q's rows, by complex step. */
+static void c_along(const rc_model *m, const sk_core *K, int q, const double *Y, const double *z, double *dc)
+{
+    const int i = K->inter[q];
+    cx ya[RC_NB], yb[RC_NB], c[2];
+    load(m, i, Y, z, ya, yb);
+    kern(m, i, K->axis + 3 * q, ya, yb, NULL, NULL, NULL, c, NULL, NULL, NULL);
+    dc[0] = cimag(c[0]) / SK_STEP;
+    dc[1] = cimag(c[1]) / SK_STEP;
+}
+
+/* A[j][l] = (dc_rows[j] / dy) (accelerations of the unit multiplier of
+ * rows[l]) = G M^-1 G^T over the rows (2 q + k) given. */
+static void build_A(const rc_model *m, sk_core *K, const double *Y, const int *rows, int nr)
+{
+    for (int l = 0; l < nr; l++) {
+        memset(K->z, 0, (size_t)K->ny * sizeof(double));
+        add_unit(m, K, rows[l] / 2, rows[l] % 2, Y, 1.0, K->z);
+        for (int j = 0; j < nr; j++) {
+            double dc[2];
+            c_along(m, K, rows[j] / 2, Y, K->z, dc);
+            K->A[j * nr + l] = dc[rows[j] % 2];
+        }
+    }
+}
+
+/* The rows of the sticking slots that are constraints (K->ron): a row
+ * whose unit multiplier moves nothing along it (held by the supports on
+ * both bodies) is left out. Their count; K->idx the rows. */
+static int active_rows(const rc_model *m, sk_core *K, const double *Y)
+{
+    int nr = 0;
+    double dmax = 0;
+    for (int q = 0; q < K->ns; q++)
+        for (int k = 0; k < 2; k++) {
+            K->ron[2 * q + k] = 0;
+            if (!K->act[q]) continue;
+            memset(K->z, 0, (size_t)K->ny * sizeof(double));
+            add_unit(m, K, q, k, Y, 1.0, K->z);
+            double dc[2];
+            c_along(m, K, q, Y, K->z, dc);
+            K->b[2 * q + k] = dc[k];
+            dmax = fmax(dmax, dc[k]);
+        }
+    for (int q = 0; q < K->ns; q++)
+        for (int k = 0; k < 2; k++)
+            if (K->act[q] && K->b[2 * q + k] > 1e-12 * dmax) {
+                K->ron[2 * q + k] = 1;
+                K->idx[nr++] = 2 * q + k;
+            }
+    return nr;
+}
+
+/* Solve A x = b (K->b over the rows K->idx[0..nr)) at Y; 0, or -1 when A
+ * is singular (rows that repeat others). */
+static int solve(const rc_model *m, sk_core *K, const double *Y, int nr)
+{
+    build_A(m, K, Y, K->idx, nr);
+    gsl_matrix_view A = gsl_matrix_view_array(K->A, (size_t)nr, (size_t)nr);
+    gsl_vector_view b = gsl_vector_view_array(K->b, (size_t)nr);
+    gsl_permutation p = {(size_t)nr, K->perm};
+    int sgn;
+    gsl_error_handler_t *old = gsl_set_error_handler_off();
+    int bad = gsl_linalg_LU_decomp(&A.matrix, &p, &sgn);
+    if (!bad) {
+        double amax = 0, dmin = INFINITY;
+        for (int k = 0; k < nr; k++) dmin = fmin(dmin, fabs(K->A[k * nr + k]));
+        for (int k = 0; k < nr * nr; k++) amax = fmax(amax, fabs(K->A[k]));
+        bad = !(dmin > 1e-13 * amax);
+    }
+    if (!bad) bad = gsl_linalg_LU_svx(&A.matrix, &p, &b.vector);
+    gsl_set_error_handler(old);
+    return bad ? -1 : 0;
+}
+
+/* Multipliers of the constraint rows (K->b[0..nr)) at Y with f [ny] the
+ * rates: A lambda = -(dc/dy) f. 0, or -1. */
+static int multipliers(const rc_model *m, sk_core *K, const double *Y, const double *f, int nr)
+{
+    for (int j = 0; j < nr; j++) {
+        double dc[2];
+        c_along(m, K, K->idx[j] / 2, Y, f, dc);
+        K->b[j] = -dc[K->idx[j] % 2];
+    }
+    return solve(m, K, Y, nr);
+}
+
+/* The helper axis of slot q at Y: the global axis least aligned with n. */
+static void set_axis(const rc_model *m, sk_core *K, int q, const double *Y)
+{
+    const int i = K->inter[q];
+    cx ya[RC_NB], yb[RC_NB], p[3], n[3], v[3];
+    load(m, i, Y, NULL, ya, yb);
+    rc_stk_geom_c(m, i, ya, yb, p, n, v);
+    int j = 0;
+    for (int k = 1; k < 3; k++)
+        if (fabs(creal(n[k])) < fabs(creal(n[j]))) j = k;
+    double *h = K->axis + 3 * q;
+    h[0] = h[1] = h[2] = 0.0;
+    h[j] = 1.0;
+}
+
+static void core_free(sk_core *K)
+{
+    free(K->inter);
+    free(K->axis);
+    free(K->act);
+    free(K->A);
+    free(K->b);
+    free(K->perm);
+    free(K->z);
+    free(K->idx);
+    free(K->ron);
+}
+
+static int core_init(const rc_model *m, sk_core *K)
+{
+    memset(K, 0, sizeof *K);
+    K->ny = m->ny;
+    K->ns = rc_stk_count(m);
+    const size_t ns = (size_t)K->ns + 1;
+    K->inter = calloc(ns, sizeof *K->inter);
+    K->axis = calloc(3 * ns, sizeof *K->axis);
+    K->act = calloc(ns, sizeof *K->act);
+    K->A = calloc(4 * ns * ns, sizeof *K->A);
+    K->b = calloc(2 * ns, sizeof *K->b);
+    K->perm = calloc(2 * ns, sizeof *K->perm);
+    K->z = calloc((size_t)m->ny + 1, sizeof *K->z);
+    K->idx = calloc(2 * ns, sizeof *K->idx);
+    K->ron = calloc(2 * ns, sizeof *K->ron);
+    if (!K->inter || !K->axis || !K->act || !K->A || !K->b || !K->perm || !K->z || !K->idx || !K->ron) {
+        core_free(K);
+        return -1;
+    }
+    int q = 0;
+    for (int i = 0; i < m->ninter; i++)
+        if (m->inter_fr[i].exact && m->inter_fr[i].tidx >= 0) {
+            K->inter[q] = i;
+            K->axis[3 * q] = 1.0;
+            q++;
+        }
+    return 0;
+}
+
+/* ---- work, pattern ----------------------------------------------------- */
+static int cmp_i64(const void *a, const void *b)
+{
+    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+    return (x > y) - (x < y);
+}
+
+static int64_t find_slot(const rc_stk_work *w, int row, int col)
+{
+    int64_t lo = w->colptr[col], hi = w->colptr[col + 1] - 1;
+    while (lo <= hi) {
+        int64_t mid = (lo + hi) / 2;
+        if (w->rowind[mid] == row) return mid;
+        if (w->rowind[mid] < row) lo = mid + 1;
+        else hi = mid - 1;
+    }
+    return -1;
+}
+
+/* The rows (= columns) of slot q's dense block: its free bodies' states,
+ * then its two rows (Lambda columns). */
+static int block_idx(const rc_model *m, const rc_stk_work *w, int q, int *idx)
+{
+    const int i = w->k.inter[q], aa = free_adr(m, m->inter_ba[i]), ab = free_adr(m, m->inter_bb[i]);
+    int n = 0;
+    for (int k = 0; aa >= 0 && k < RC_NB; k++) idx[n++] = aa + k;
+    for (int k = 0; ab >= 0 && k < RC_NB; k++) idx[n++] = ab + k;
+    idx[n++] = m->ny + 2 * q;
+    idx[n++] = m->ny + 2 * q + 1;
+    return n;
+}
+
+void rc_stk_work_free(rc_stk_work *w)
+{
+    if (!w) return;
+    core_free(&w->k);
+    void *p[] = {w->colptr, w->rowind, w->mslot, w->diag, w->bslot, w->atol};
+    for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
+    free(w);
+}
+
+rc_stk_work *rc_stk_work_new(const rc_model *m)
+{
+    rc_stk_work *w = calloc(1, sizeof *w);
+    if (!w) return NULL;
+    if (core_init(m, &w->k)) {
+        free(w);
+        return NULL;
+    }
+    const int ns = w->k.ns, n = w->n = m->ny + 2 * ns;
+    const int64_t cap = m->nnz + n + (int64_t)ns * SK_MAXB * SK_MAXB;
+    int64_t *key = malloc((size_t)cap * sizeof *key);
+    w->atol = calloc(2 * (size_t)ns + 1, sizeof *w->atol);
+    w->diag = calloc((size_t)n, sizeof *w->diag);
+    w->mslot = calloc((size_t)m->nnz + 1, sizeof *w->mslot);
+    w->colptr = calloc((size_t)n + 1, sizeof *w->colptr);
+    w->bslot = malloc(((size_t)ns * SK_MAXB * SK_MAXB + 1) * sizeof *w->bslot);
+    if (!key || !w->atol || !w->diag || !w->mslot || !w->colptr || !w->bslot) {
+        free(key);
+        rc_stk_work_free(w);
+        return NULL;
+    }
+    int64_t nk = 0;
+    for (int c = 0; c < m->ny; c++)
+        for (int64_t k = m->jac_colptr[c]; k < m->jac_colptr[c + 1]; k++) key[nk++] = (int64_t)c * n + m->jac_rowind[k];
+    for (int c = 0; c < n; c++) key[nk++] = (int64_t)c * n + c;
+    for (int q = 0; q < ns; q++) {
+        int idx[SK_MAXB];
+        const int nb = block_idx(m, w, q, idx);
+        for (int r = 0; r < nb; r++)
+            for (int c = 0; c < nb; c++) key[nk++] = (int64_t)idx[c] * n + idx[r];
+    }
+    qsort(key, (size_t)nk, sizeof *key, cmp_i64);
+    int64_t u = 0;
+    for (int64_t k = 0; k < nk; k++)
+        if (u == 0 || key[k] != key[u - 1]) key[u++] = key[k];
+    w->nnz = u;
+    w->rowind = malloc((size_t)u * sizeof *w->rowind);
+    if (!w->rowind) {
+        free(key);
+        rc_stk_work_free(w);
+        return NULL;
+    }
+    for (int64_t k = 0; k < u; k++) {
+        w->rowind[k] = key[k] % n;
+        w->colptr[key[k] / n + 1]++;
+    }
+    free(key);
+    for (int c = 0; c < n; c++) w->colptr[c + 1] += w->colptr[c];
+    for (int c = 0; c < m->ny; c++)
+        for (int64_t k = m->jac_colptr[c]; k < m->jac_colptr[c + 1]; k++)
+            w->mslot[k] = find_slot(w, (int)m->jac_rowind[k], c);
+    for (int c = 0; c < n; c++) w->diag[c] = find_slot(w, c, c);
+    for (int q = 0; q < ns; q++) {
+        int idx[SK_MAXB];
+        const int nb = block_idx(m, w, q, idx);
+        for (int r = 0; r < nb; r++)
+            for (int c = 0; c < nb; c++) w->bslot[(int64_t)q * SK_MAXB * SK_MAXB + r * nb + c] = find_slot(w, idx[r], idx[c]);
+        /* Lambda [N s]: the impulse that changes the velocity of the
+         * lightest free body by its tolerance (in Newton's test only) */
+        const int i = w->k.inter[q], bs[2] = {m->inter_ba[i], m->inter_bb[i]};
+        double a = INFINITY;
+        for (int e = 0; e < 2; e++) {
+            const int adr = free_adr(m, bs[e]);
+            if (adr >= 0) a = fmin(a, m->body_mass[bs[e]] * m->atol[adr + 7]);
+        }
+        w->atol[2 * q] = w->atol[2 * q + 1] = isfinite(a) && a > 0 ? a : 1.0;
+    }
+    return w;
+}
+
+int rc_stk_nextra(const rc_stk_work *w) { return 2 * w->k.ns; }
+int64_t rc_stk_nnz(const rc_stk_work *w) { return w->nnz; }
+
+void rc_stk_pattern(const rc_stk_work *w, const int64_t **colptr, const int64_t **rowind)
+{
+    *colptr = w->colptr;
+    *rowind = w->rowind;
+}
+
+double rc_stk_atol(const rc_stk_work *w, int k) { return w->atol[k]; }
+
+/* Lambda: id 0, out of the error test (only lambda = Lambda' enters). */
+void rc_stk_id(const rc_model *m, const rc_stk_work *w, double *id)
+{
+    for (int k = 0; k < w->n; k++) id[k] = k < m->ny ? 1.0 : 0.0;
+}
+
+/* ---- residual, Jacobian ------------------------------------------------ */
+void rc_stk_residual(const rc_model *m, const rc_data *d, const rc_stk_work *w, const double *Y, const double *Yp,
+                     double *r)
+{
+    const int ny = m->ny;
+    for (int q = 0; q < w->k.ns; q++) {
+        const int i = w->k.inter[q], row = ny + 2 * q;
+        if (!sticking(d, i)) {
+            r[row] = Yp[row];
+            r[row + 1] = Yp[row + 1];
+            continue;
+        }
+        cx ya[RC_NB], yb[RC_NB], ra[RC_NB], rb[RC_NB], c[2], lam[2] = {Yp[row], Yp[row + 1]};
+        load(m, i, Y, NULL, ya, yb);
+        const int aa = free_adr(m, m->inter_ba[i]), ab = free_adr(m, m->inter_bb[i]);
+        kern(m, i, w->k.axis + 3 * q, ya, yb, lam, ra, rb, c, NULL, NULL, NULL);
+        for (int k = 0; k < RC_NB; k++) {
+            if (aa >= 0 && row_free(m, aa + k)) r[aa + k] += creal(ra[k]);
+            if (ab >= 0 && row_free(m, ab + k)) r[ab + k] += creal(rb[k]);
+        }
+        /* a row the supports hold: its multiplier is 0 */
+        for (int k = 0; k < 2; k++) r[row + k] = w->k.ron[2 * q + k] ? creal(c[k]) : Yp[row + k];
+    }
+}
+
+void rc_stk_jacobian(const rc_model *m, const rc_data *d, const rc_stk_work *w, double cj, const double *Y,
+                     const double *Yp, const double *jf, double *val)
+{
+    const int ny = m->ny;
+    memset(val, 0, (size_t)w->nnz * sizeof(double));
+    for (int64_t k = 0; k < m->nnz; k++) val[w->mslot[k]] -= jf[k];
+    for (int k = 0; k < ny; k++) val[w->diag[k]] += cj;
+    for (int q = 0; q < w->k.ns; q++) {
+        const int i = w->k.inter[q], row = ny + 2 * q;
+        if (!sticking(d, i)) {
+            val[w->diag[row]] += cj;
+            val[w->diag[row + 1]] += cj;
+            continue;
+        }
+        const int aa = free_adr(m, m->inter_ba[i]), ab = free_adr(m, m->inter_bb[i]);
+        const int na = aa >= 0 ? RC_NB : 0, nb = ab >= 0 ? RC_NB : 0, nc = na + nb + 2;
+        int idx[SK_MAXB];
+        block_idx(m, w, q, idx);
+        cx ya[RC_NB], yb[RC_NB], lam[2] = {Yp[row], Yp[row + 1]};
+        load(m, i, Y, NULL, ya, yb);
+        const int64_t *slot = w->bslot + (int64_t)q * SK_MAXB * SK_MAXB;
+        for (int c = 0; c < nc; c++) {
+            cx *p = c < na ? ya + c : c < na + nb ? yb + (c - na) : lam + (c - na - nb);
+            *p += I * SK_STEP;
+            cx ra[RC_NB], rb[RC_NB], cv[2];
+            kern(m, i, w->k.axis + 3 * q, ya, yb, lam, na ? ra : NULL, nb ? rb : NULL, cv, NULL, NULL, NULL);
+            *p = creal(*p);
+            /* d/dLambda = cj d/dlambda: the residual holds lambda = Lambda' */
+            const double sc = (c < na + nb ? 1.0 : cj) / SK_STEP;
+            int r = 0;
+            for (int k = 0; k < na; k++, r++)
+                if (row_free(m, idx[r])) val[slot[r * nc + c]] += sc * cimag(ra[k]);
+            for (int k = 0; k < nb; k++, r++)
+                if (row_free(m, idx[r])) val[slot[r * nc + c]] += sc * cimag(rb[k]);
+            for (int k = 0; k < 2; k++, r++)
+                if (w->k.ron[2 * q + k]) val[slot[r * nc + c]] += sc * cimag(cv[k]);
+        }
+        for (int k = 0; k < 2; k++)
+            if (!w->k.ron[2 * q + k]) val[w->diag[row + k]] += cj;
+    }
+}
+
+/* ---- (re)start, roots, records ---------------------------------------- */
+int rc_stk_restart(const rc_model *m, rc_data *d, rc_stk_work *w, double t, double *Y, double *Yp)
+{
+    sk_core *K = &w->k;
+    const int ny = m->ny;
+    for (int q = 0; q < K->ns; q++) {
+        set_axis(m, K, q, Y);
+        K->act[q] = sticking(d, K->inter[q]);
+        Yp[ny + 2 * q] = Yp[ny + 2 * q + 1] = 0.0;
+    }
+    const int nr = active_rows(m, K, Y);
+    if (nr > 0) {
+        /* the velocities made exact: u += M^-1 G^T x, A x = -c (G depends on
+         * the positions only; the change of least kinetic energy) */
+        for (int j = 0; j < nr; j++) {
+            const int q = K->idx[j] / 2, i = K->inter[q];
+            cx ya[RC_NB], yb[RC_NB], c[2];
+            load(m, i, Y, NULL, ya, yb);
+            kern(m, i, K->axis + 3 * q, ya, yb, NULL, NULL, NULL, c, NULL, NULL, NULL);
+            K->b[j] = -creal(c[K->idx[j] % 2]);
+        }
+        if (solve(m, K, Y, nr)) return -1;
+        memset(K->z, 0, (size_t)ny * sizeof(double));
+        for (int j = 0; j < nr; j++) add_unit(m, K, K->idx[j] / 2, K->idx[j] % 2, Y, K->b[j], K->z);
+        for (int k = 0; k < ny; k++) Y[k] += K->z[k];
+    }
+    if (rc_assemble_rhs(m, d, t, Y, Yp)) return -1;
+    if (nr == 0) return 0;
+    if (multipliers(m, K, Y, Yp, nr)) return -1;
+    memset(K->z, 0, (size_t)ny * sizeof(double));
+    for (int j = 0; j < nr; j++) {
+        Yp[ny + K->idx[j]] = K->b[j];
+        add_unit(m, K, K->idx[j] / 2, K->idx[j] % 2, Y, K->b[j], K->z);
+    }
+    for (int k = 0; k < ny; k++) Yp[k] += K->z[k];
+    return 0;
+}
+
+/* The force of slot q's multipliers (global, on a) at Y [N]. */
+static void force_of(const rc_model *m, const sk_core *K, int q, const double *Y, const double *lam, double *F)
+{
+    const int i = K->inter[q];
+    cx ya[RC_NB], yb[RC_NB], c[2], t1[3], t2[3];
+    load(m, i, Y, NULL, ya, yb);
+    kern(m, i, K->axis + 3 * q, ya, yb, NULL, NULL, NULL, c, NULL, t1, t2);
+    for (int k = 0; k < 3; k++) F[k] = lam[0] * creal(t1[k]) + lam[1] * creal(t2[k]);
+}
+
+void rc_stk_roots(const rc_model *m, const rc_data *d, const rc_stk_work *w, double t, const double *Y,
+                  const double *Yp, double *g)
+{
+    for (int q = 0; q < w->k.ns; q++) {
+        const int i = w->k.inter[q];
+        if (!sticking(d, i)) continue;
+        rc_inter_report r;
+        rc_inter_report_eval_d(m, d, i, t, Y, &r);
+        const double *lam = Yp + m->ny + 2 * q;
+        /* no band: the multiplier is exact (algebraic), no spring rings
+         * about the limit nor does a damper carry a ramped load */
+        const double s = r.flim;
+        g[RC_ROOTS_PER_INTER * i + RC_ROOT_SLIP] = s > 0 ? (lam[0] * lam[0] + lam[1] * lam[1]) / (s * s) - 1.0 : 1.0;
+    }
+}
+
+void rc_stk_sync(const rc_model *m, const rc_data *d, const rc_stk_work *w, const double *Y, const double *Yp,
+                 double *Yout)
+{
+    for (int q = 0; q < w->k.ns; q++) {
+        const int i = w->k.inter[q];
+        if (!sticking(d, i)) continue;
+        double F[3];
+        force_of(m, &w->k, q, Y, Yp + m->ny + 2 * q, F);
+        double *ft = Yout + m->inter_eadr[i] + m->inter_fr[i].tidx;
+        for (int k = 0; k < 3; k++) ft[k] = F[k];
+    }
+}
+
+int rc_stk_decide(const rc_model *m, rc_data *d, int i, double t, const double *y, double e[3])
+{
+    rc_inter_report r;
+    rc_inter_report_eval_d(m, d, i, t, y, &r);
+    /* a sliding velocity beyond the tolerances: it slides on */
+    double vtol = INFINITY;
+    const int bs[2] = {m->inter_ba[i], m->inter_bb[i]};
+    for (int k = 0; k < 2; k++)
+        if (free_adr(m, bs[k]) >= 0) vtol = fmin(vtol, 100.0 * m->atol[free_adr(m, bs[k]) + 7]);
+    const double vt = sqrt(r.vt[0] * r.vt[0] + r.vt[1] * r.vt[1] + r.vt[2] * r.vt[2]);
+    if (vt > vtol) {
+        for (int k = 0; k < 3; k++) e[k] = -r.vt[k] / vt;
+        return 1;
+    }
+    /* the force that holds it, with the other sticking contacts */
+    sk_core K;
+    if (core_init(m, &K)) return -1;
+    double *f = malloc(((size_t)m->ny + 1) * sizeof *f);
+    int me = -1, st = -1;
+    for (int q = 0; q < K.ns; q++) {
+        K.act[q] = sticking(d, K.inter[q]);
+        if (K.inter[q] == i) me = q;
+        set_axis(m, &K, q, y);
+    }
+    const int nr = me >= 0 ? active_rows(m, &K, y) : 0;
+    if (f && me >= 0 && !rc_assemble_rhs(m, d, t, y, f) && (nr == 0 || !multipliers(m, &K, y, f, nr))) {
+        double lam[2] = {0.0, 0.0}, F[3];
+        for (int j = 0; j < nr; j++)
+            if (K.idx[j] / 2 == me) lam[K.idx[j] % 2] = K.b[j];
+        force_of(m, &K, me, y, lam, F);
+        const double nf = sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
+        st = nf > r.flim; /* the slip root's limit */
+        for (int k = 0; k < 3; k++) e[k] = nf > 0 ? F[k] / nf : 0.0;
+    }
+    free(f);
+    core_free(&K);
+    return st;
+}

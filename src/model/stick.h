@@ -1,0 +1,75 @@
+/*
+ * Exact stick (docs/theory.md, "Exact stick"): TYPE6 Istick = 1 or
+ * /FRICTION Iform 3. While an interface with exact stick is closed and
+ * sticking, the tangential relative velocity of the material points at its
+ * contact point is held at zero by two constraint rows of the IDA path, in
+ * a tangent basis (t_1, t_2) of the contact plane:
+ *
+ *   c_k = t_k . v_rel = 0,  k = 1, 2                                  [m/s]
+ *
+ * whose multipliers lambda_k [N] are the friction force on body a,
+ * F = lambda_1 t_1 + lambda_2 t_2 at the contact point (-F on b). As for
+ * the joints (model/joint.h), each enters as the derivative of an
+ * integrated impulse Lambda_k [N s]: lambda = Lambda'. The integrator's
+ * vector is Y = [y, Lambda] (2 per exact interface, in interface order);
+ * when an interface slides, is open or inactive its rows are Lambda' = 0.
+ *
+ * Evaluated by engine/stick.c, driven by solver/ida.c and engine/events.c.
+ */
+#ifndef RC_STICK_H
+#define RC_STICK_H
+
+#include <stdint.h>
+
+#include "model/model.h"
+
+/* Interfaces with exact stick (0: none). */
+int rc_stk_count(const rc_model *m);
+
+typedef struct rc_stk_work rc_stk_work;
+/* Extended pattern and scratch of a run; NULL: out of memory. */
+rc_stk_work *rc_stk_work_new(const rc_model *m);
+void rc_stk_work_free(rc_stk_work *w);
+int rc_stk_nextra(const rc_stk_work *w); /* 2 per exact interface */
+int64_t rc_stk_nnz(const rc_stk_work *w);
+void rc_stk_pattern(const rc_stk_work *w, const int64_t **colptr, const int64_t **rowind);
+/* Residual: adds the multipliers' terms to the bodies' rows r[0..ny)
+ * (r = y' - f there) and writes the constraint rows r[ny..). Pure; the
+ * modes are d's. */
+void rc_stk_residual(const rc_model *m, const rc_data *d, const rc_stk_work *w, const double *Y, const double *Yp,
+                     double *r);
+/* dF/dY + cj dF/dY' on the extended pattern, from the model's Jacobian
+ * values jf [m->nnz]. */
+void rc_stk_jacobian(const rc_model *m, const rc_data *d, const rc_stk_work *w, double cj, const double *Y,
+                     const double *Yp, const double *jf, double *val);
+/* Absolute tolerance of extra k [N s]; IDA's id (0 for every Lambda). */
+double rc_stk_atol(const rc_stk_work *w, int k);
+void rc_stk_id(const rc_model *m, const rc_stk_work *w, double *id);
+/* At a (re)start (t, Y) in d's modes: the tangent bases fixed for the next
+ * stretch, the velocities of the sticking contacts made exact (the change
+ * of least kinetic energy), Yp[0..ny) = f with the multipliers of the
+ * acceleration-level equations, Yp of the inactive rows 0. Returns 0, or -1
+ * when the sticking rows are dependent (or f fails). */
+int rc_stk_restart(const rc_model *m, rc_data *d, rc_stk_work *w, double t, double *Y, double *Yp);
+/* Slip roots of the sticking exact interfaces, from the multipliers in Yp:
+ * |lambda|^2 / L_s^2 - 1, L_s = Sfric + mu_s F_n (no band: the multiplier is
+ * exact). */
+void rc_stk_roots(const rc_model *m, const rc_data *d, const rc_stk_work *w, double t, const double *Y,
+                  const double *Yp, double *g);
+/* The friction state F_t of the sticking exact interfaces set to their
+ * multiplier's force (global) [N], in Yout (may be Y). */
+void rc_stk_sync(const rc_model *m, const rc_data *d, const rc_stk_work *w, const double *Y, const double *Yp,
+                 double *Yout);
+/* Can interface i (exact stick, closed, in d sticking) stick at (t, y)?
+ * 0: yes; 1: no, it must slide along the unit direction e (the force's on
+ * a): its sliding velocity is not zero (e = -v_t / |v_t|), or the force
+ * that holds it (the multipliers of all sticking exact contacts) lies
+ * beyond the static limit (e along that force). -1: out of memory or
+ * dependent rows (then it slides along -v_t, or keeps F_t's direction). */
+int rc_stk_decide(const rc_model *m, rc_data *d, int i, double t, const double *y, double e[3]);
+
+/* Geometry of interface i for the constraint (engine/assemble_jac.c). */
+void rc_stk_geom_c(const rc_model *m, int i, const double _Complex *ya, const double _Complex *yb,
+                   double _Complex *point, double _Complex *n, double _Complex *vrel);
+
+#endif

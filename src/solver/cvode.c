@@ -144,7 +144,10 @@ static int cb_ewt(N_Vector yv, N_Vector wv, void *ud)
     for (int k = 0; k < m->ny; k++) {
         const double ay = fabs(y[k]);
         double s = m->atol[k] + (m->ewt_rel[k] ? m->rtol * ay : 0.0);
-        if (!m->ewt_rel[k]) s = fmax(s, 64.0 * DBL_EPSILON * ay);
+        if (!m->ewt_rel[k]) {
+            const double fl = 64.0 * DBL_EPSILON * ay; /* fmax(s, fl) without the libm call */
+            if (fl > s) s = fl;
+        }
         if (!(s > 0)) return -1;
         w[k] = 1.0 / s;
     }

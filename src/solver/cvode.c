@@ -56,8 +56,6 @@ typedef struct run_ctx {
     N_Vector y, av, f0, f1, ytn, ysamp;
     int *old_mode, *old_branch, *old_track, *old_slip; /* the modes before a root return's events */
     int fresh; /* modes changed without a restart: the Jacobian is stale */
-    int klu_factored; /* KLU has a numeric factorisation since the last (re)start:
-                         the next setups are refactorisations (cb_linsys) */
 } run_ctx;
 
 /* ---- CVODE callbacks ----------------------------------------------- */
@@ -110,15 +108,6 @@ static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleanty
     }
     /* the pattern was written once (cv_open): nothing else writes A */
     double *a = SUNSparseMatrix_Data(A);
-    /* KLU's row scaling serves its pivot choice: the first setup after a
-     * (re)start factorises with pivoting on the rows scaled by their
-     * largest entries (KLU's default); the following ones refactorise on
-     * those pivots, where the scaling (a checked pass over the matrix, as
-     * costly as the refactorisation itself) is left out. KLU supports the
-     * change (klu_refactor drops the scale factors). Round-off differs
-     * from scaled refactorisations, the pivots do not. */
-    SUNLinSol_KLUGetCommon(c->LS)->scale = c->klu_factored ? -1 : 2;
-    c->klu_factored = 1;
     for (int64_t k = 0; k < m->nnz; k++) a[k] = -gamma * c->jsave[k];
     for (int r = 0; r < m->ny; r++) a[m->jac_diag[r]] += 1.0;
     return 0;
@@ -350,7 +339,6 @@ static rc_status cv_start(void *self, rc_error *err)
     run_ctx *c = self;
     const rc_model *m = c->m;
     memcpy(N_VGetArrayPointer(c->av), m->atol, (size_t)m->ny * sizeof(double));
-    c->klu_factored = 0;
     void *cv = c->cv = CVodeCreate(CV_BDF, c->ctx);
     if (!cv) return RC_SET(err, RC_ESOLVER, "CVodeCreate failed");
     CVCHECK(CVodeInit(cv, cb_rhs, 0.0, c->y), "CVodeInit");
@@ -424,7 +412,6 @@ static int cv_restart(void *self, double t, int at_breakpoint)
 {
     run_ctx *c = self;
     if (at_breakpoint) c->jac_patched = 0; /* the imposed rows change: a whole new Jacobian */
-    c->klu_factored = 0; /* CVODE re-initialises the linear solver: a full factorisation */
     return CVodeReInit(c->cv, t, c->y);
 }
 

@@ -36,9 +36,10 @@ static void dense_body(const rc_model *m, int b, double t, const double *y, doub
 {
     T yc[RC_NB], yd[RC_NB];
     load_body(m, b, y, yc);
+    const double gf = rc_gravity_factor(m, t);
     for (int c = 0; c < RC_NB; c++) {
         yc[c] += I * RC_CSTEP;
-        body_rhs_c(m, b, t, yc, yd);
+        body_rhs_c(m, b, gf, yc, yd);
         for (int r = 0; r < RC_NB; r++) out[r * RC_NB + c] = cimag(yd[r]) / RC_CSTEP;
         yc[c] = creal(yc[c]);
     }

@@ -26,9 +26,10 @@ static double *acc_slot(const rc_model *m, int b, double *ydot)
 int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, double *ydot)
 {
     d->n_rhs++;
-    /* bodies: free motion */
+    /* bodies: free motion (the gravity time function once) */
+    const double gf = rc_gravity_factor(m, t);
     for (int b = 0; b < m->nbody; b++)
-        if (m->body_yadr[b] >= 0) body_rhs_r(m, b, t, y + m->body_yadr[b], ydot + m->body_yadr[b]);
+        if (m->body_yadr[b] >= 0) body_rhs_r(m, b, gf, y + m->body_yadr[b], ydot + m->body_yadr[b]);
     /* interfaces: forces into the accelerations, own-state rates */
     for (int i = 0; i < m->ninter; i++) {
         double *sdot = ydot + m->inter_eadr[i];
@@ -55,9 +56,9 @@ int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, do
         double w = 0;
         for (int b = 0; b < m->nbody; b++) {
             if (m->body_yadr[b] < 0) continue;
-            double g[3];
+            double g[3]; /* rc_gravity at t */
             const double *v = y + m->body_yadr[b] + 7;
-            rc_gravity(m, b, t, g);
+            for (int k = 0; k < 3; k++) g[k] = m->body_grav[3 * b + k] * gf;
             w -= m->body_mass[b] * (g[0] * v[0] + g[1] * v[1] + g[2] * v[2]);
         }
         ydot[m->gwork_adr] = w;

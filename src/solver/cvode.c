@@ -106,9 +106,7 @@ static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleanty
     } else {
         *jcur = SUNFALSE;
     }
-    sunindextype *cp = SUNSparseMatrix_IndexPointers(A), *ri = SUNSparseMatrix_IndexValues(A);
-    for (int k = 0; k <= m->ny; k++) cp[k] = (sunindextype)m->jac_colptr[k];
-    for (int64_t k = 0; k < m->nnz; k++) ri[k] = (sunindextype)m->jac_rowind[k];
+    /* the pattern was written once (cv_open): nothing else writes A */
     double *a = SUNSparseMatrix_Data(A);
     for (int64_t k = 0; k < m->nnz; k++) a[k] = -gamma * c->jsave[k];
     for (int r = 0; r < m->ny; r++) a[m->jac_diag[r]] += 1.0;
@@ -135,7 +133,10 @@ static int cb_ewt(N_Vector yv, N_Vector wv, void *ud)
     for (int k = 0; k < m->ny; k++) {
         const double ay = fabs(y[k]);
         double s = m->atol[k] + (m->ewt_rel[k] ? m->rtol * ay : 0.0);
-        if (!m->ewt_rel[k]) s = fmax(s, 64.0 * DBL_EPSILON * ay);
+        if (!m->ewt_rel[k]) {
+            const double fl = 64.0 * DBL_EPSILON * ay; /* fmax(s, fl) without the libm call */
+            if (fl > s) s = fl;
+        }
         if (!(s > 0)) return -1;
         w[k] = 1.0 / s;
     }
@@ -321,6 +322,10 @@ static rc_status cv_open(void *self, const rc_model *m, rc_data *d, const rc_run
     if (!c->y || !c->av || !c->f0 || !c->f1 || !c->ytn || !c->ysamp || !c->old_mode || !c->old_branch ||
         !c->old_track || !c->old_slip || !c->jsave || !c->A)
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
+    /* the fixed pattern, once; cb_linsys writes the values */
+    sunindextype *cp = SUNSparseMatrix_IndexPointers(c->A), *ri = SUNSparseMatrix_IndexValues(c->A);
+    for (int k = 0; k <= m->ny; k++) cp[k] = (sunindextype)m->jac_colptr[k];
+    for (int64_t k = 0; k < m->nnz; k++) ri[k] = (sunindextype)m->jac_rowind[k];
     if (!(c->LS = SUNLinSol_KLU(c->y, c->A, c->ctx))) return RC_SET(err, RC_ESOLVER, "SUNLinSol_KLU failed");
     *y = N_VGetArrayPointer(c->y);
     *yp = NULL;

@@ -153,7 +153,10 @@ static int cb_ewt(N_Vector yv, N_Vector wv, void *ud)
         double s;
         if (k < m->ny) {
             s = m->atol[k] + (!m->ewt_rel || m->ewt_rel[k] ? m->rtol * ay : 0.0);
-            if (m->ewt_rel && !m->ewt_rel[k]) s = fmax(s, 64.0 * DBL_EPSILON * ay);
+            if (m->ewt_rel && !m->ewt_rel[k]) {
+                const double fl = 64.0 * DBL_EPSILON * ay; /* fmax(s, fl) without the libm call */
+                if (fl > s) s = fl;
+            }
         } else {
             s = (c->sw ? rc_stk_atol(c->sw, k - m->ny) : rc_jnt_atol(m, c->jw, k - m->ny)) + m->rtol * ay;
         }

@@ -255,8 +255,8 @@ static void failure_advice(const rc_model *m, const rc_data *d, void *ida, int f
     case IDA_LINESEARCH_FAIL:
         advice = "Newton's iteration did not converge: a force varies faster than its Jacobian says, a body "
                  "has almost no mass or inertia, or the joints constrain a body twice (redundant joints make "
-                 "the constraint rows dependent): check the joints and the masses, or bound the step with "
-                 "/SOLVER Hmax";
+                 "the constraint rows dependent; so does a sticking exact-stick contact that holds a motion "
+                 "a joint already holds): check the joints and the masses, or bound the step with /SOLVER Hmax";
         break;
     case IDA_RES_FAIL:
     case IDA_REP_RES_ERR:

@@ -3,13 +3,15 @@
  * the extended residual (the constraint rows and the multipliers' terms in
  * the bodies' rows, complex step) against central finite differences of
  * the residual; the consistent multipliers (the sticking velocities stay
- * zero along the motion); the refusals (CVODE path, joints, several
- * contact points).
+ * zero along the motion); joints and exact stick in one set (the summed
+ * Jacobian against finite differences, the consistent multipliers of both);
+ * the refusals (CVODE path, several contact points).
  */
 #include "harness.h"
 #include "testutil.h"
 #include "base/error.h"
 #include "model/model.h"
+#include "model/joint.h"
 #include "model/stick.h"
 
 #include <math.h>
@@ -175,6 +177,121 @@ static void test_stick_consistent_multipliers(void)
     rc_model_free(m);
 }
 
+/* Joints and exact stick together (engine/stick_joints.c): the two spheres
+ * also tied by a rod between their centres. */
+static const char *rod_tail = "/JOINT/DISTANCE/1\nrod\n1,2\n0.001,-0.002,0.0499\n0.013,0.021,0.1381\n/END\n";
+
+static void both_residual(const rc_model *m, rc_data *d, const rc_both *b, const double *Y, const double *Yp, double *r)
+{
+    rc_assemble_rhs(m, d, 0.0, Y, r);
+    for (int k = 0; k < m->ny; k++) r[k] = Yp[k] - r[k];
+    rc_both_residual(m, d, b, Y, Yp, r);
+}
+
+static char *with_tail(const char *tail);
+
+static void test_stick_joints_jacobian_and_multipliers(void)
+{
+    rc_error e;
+    char *t = with_tail(rod_tail);
+    rc_model *m = tu_compile_text(t, "rod.rad", &e);
+    free(t);
+    ENSURE(m != NULL);
+    if (!m) return;
+    ENSURE(m->method == 2 && m->jnt && m->jnt->n == 1 && rc_stk_count(m) == 2);
+    rc_data *d = rc_data_new(m);
+    rc_both *b = rc_both_new(m);
+    ENSURE(b != NULL);
+    if (!b) return;
+    const int n = m->ny + rc_both_nextra(b);
+    ENSURE(n == m->ny + 2 * m->jnt->nrows + 1 + 2 * rc_stk_count(m));
+    double *Y = calloc((size_t)n, sizeof *Y), *Yp = calloc((size_t)n, sizeof *Yp);
+    double *r1 = calloc((size_t)n, sizeof *r1), *r2 = calloc((size_t)n, sizeof *r2), *Y2 = calloc((size_t)n, sizeof *Y2);
+    double *jf = calloc((size_t)m->nnz + 1, sizeof *jf), *val = calloc((size_t)rc_both_nnz(b), sizeof *val);
+    rc_initial_state(m, Y);
+    perturb(m, Y, Yp, m->ny, 991u, 1e-3); /* moving bodies (the rod's row off zero) */
+    for (int i = 0; i < m->ninter; i++) {
+        d->inter_mode[i] = RC_MODE_CLOSED;
+        d->inter_slip[i] = 0;
+    }
+    /* 1. the consistent start: every residual row zero, the rates of the
+     *    velocity rows of both sets zero along Y', multipliers of both */
+    ENSURE(rc_both_consistent(m, d, b, 0.0, Y, Yp) == 0);
+    both_residual(m, d, b, Y, Yp, r1);
+    const int nr = m->jnt->nrows, base = m->ny + 2 * nr + 1;
+    double rmax = 0;
+    /* all rows but the rod's position row (the perturbed positions are off
+     * the rod's length: the projection multiplier nu takes that back) */
+    for (int k = 0; k < n; k++)
+        if (k < m->ny + nr || k >= m->ny + 2 * nr) rmax = fmax(rmax, fabs(r1[k]));
+    const double h = 1e-7;
+    for (int k = 0; k < n; k++) Y2[k] = Y[k] + h * Yp[k];
+    both_residual(m, d, b, Y2, Yp, r2);
+    double rate = 0, lam_j = fabs(Yp[m->ny]), lam_s = 0;
+    for (int k = m->ny; k < m->ny + nr; k++) rate = fmax(rate, fabs(r2[k] - r1[k]) / h);
+    for (int k = base; k < n; k++) {
+        rate = fmax(rate, fabs(r2[k] - r1[k]) / h);
+        lam_s = fmax(lam_s, fabs(Yp[k]));
+    }
+    printf("    both sets: residual after the start %.1e, rate of the velocity rows %.1e, |lambda| rod %.3g N, "
+           "stick up to %.3g N\n", rmax, rate, lam_j, lam_s);
+    ENSURE(rmax < 1e-9);
+    ENSURE(rate < 1e-5);
+    ENSURE(lam_j > 0.1 && lam_s > 0.1);
+    /* 2. the Jacobian of the union against central differences, off the
+     *    constraints */
+    perturb(m, Y, Yp, n, 4243u, 0.01);
+    const int64_t *cp, *ri;
+    rc_both_pattern(b, &cp, &ri);
+    double worst = 0;
+    int outside = 0;
+    for (int pass = 0; pass < 2; pass++) {
+        const double cj = pass ? 41.0 : 0.0;
+        rc_assemble_jac(m, d, 0.0, Y, jf);
+        rc_both_jacobian(m, d, b, cj, Y, Yp, jf, val);
+        for (int c = 0; c < n; c++) {
+            const double hc = 1e-6 * fmax(fabs(Y[c]), 0.1), keep = Y[c], keepp = Yp[c];
+            Y[c] = keep + hc;
+            Yp[c] = keepp + cj * hc;
+            both_residual(m, d, b, Y, Yp, r1);
+            Y[c] = keep - hc;
+            Yp[c] = keepp - cj * hc;
+            both_residual(m, d, b, Y, Yp, r2);
+            Y[c] = keep;
+            Yp[c] = keepp;
+            for (int r = 0; r < n; r++) {
+                const double fd = (r1[r] - r2[r]) / (2 * hc);
+                double an = 0;
+                int64_t k;
+                for (k = cp[c]; k < cp[c + 1]; k++)
+                    if (ri[k] == r) break;
+                if (k < cp[c + 1]) an = val[k];
+                else if (fabs(fd) > 1e-6 * fmax(1.0, fabs(r1[r]))) outside++;
+                if (r >= m->ny || (r < 26 && r % RC_NB >= 7)) {
+                    const double rnd = 100.0 * 2.2e-16 * fmax(fabs(r1[r]), fabs(r2[r])) / hc;
+                    const double err = fmax(fabs(an - fd) - rnd, 0.0) / fmax(1.0, fabs(fd));
+                    if (err > worst) worst = err;
+                    if (err > 1e-5) fprintf(stderr, "  cj %g: row %d col %d: exact %.9g, FD %.9g\n", cj, r, c, an, fd);
+                }
+            }
+        }
+    }
+    printf("    both sets: max scaled |J - FD| = %.1e beyond the rounding of the differences, %d FD entries outside "
+           "the pattern\n", worst, outside);
+    ENSURE(worst < 1e-5);
+    ENSURE(outside == 0);
+    free(Y);
+    free(Yp);
+    free(Y2);
+    free(r1);
+    free(r2);
+    free(jf);
+    free(val);
+    rc_both_free(b);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 /* The deck with `tail` in place of its /END line. */
 static char *with_tail(const char *tail)
 {
@@ -199,12 +316,6 @@ static void test_stick_refusals(void)
     ENSURE(m != NULL);
     if (m) ENSURE(rc_model_set_method(m, 1, &e) == RC_EINPUT && strstr(e.msg, "exact stick"));
     rc_model_free(m);
-    /* with joints: not supported yet, at the first TYPE6 line 3 (line 44) */
-    t = with_tail("/JOINT/SPHERICAL/1\nj\n1,2\n0.01,0.01,0.1\n/END\n");
-    m = tu_compile_text(t, "joint.rad", &e);
-    ENSURE(m == NULL && e.code == RC_EINPUT && strstr(e.msg, "joint.rad:44:") && strstr(e.msg, "not supported yet"));
-    rc_model_free(m);
-    free(t);
     /* Istick without friction; a speed-dependent coefficient */
     const char *nofric = "/BEGIN\nstick\n2022,0\nkg,m,s\nkg,m,s\n/FUNCT/1\nk\n0,0\n1,1e6\n"
                          "/NODE\n1,0,0,0.0499\n/RBODY/1\nb1\n1,,,,1.3\n0.0013,0.0011,0.0017\n0,0,0\n"
@@ -228,6 +339,7 @@ void suite_stick(void)
 {
     RUN_TEST(test_stick_jacobian_matches_finite_differences);
     RUN_TEST(test_stick_consistent_multipliers);
+    RUN_TEST(test_stick_joints_jacobian_and_multipliers);
     RUN_TEST(test_stick_refusals);
     tu_tmp_cleanup();
 }

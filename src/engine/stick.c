@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "model/imposed.h"
+#include "model/joint.h"
 #include "model/model.h"
 #include "model/stick.h"
 
@@ -42,7 +43,9 @@ typedef struct sk_core {
 
 struct rc_stk_work {
     sk_core k;
-    int n; /* ny + 2 ns */
+    int base; /* index of the first Lambda in Y: ny, or after the joints' extras */
+    int n;    /* base + 2 ns */
+    int nr;   /* constraint rows of the stretch (rc_stk_prepare) */
     int64_t nnz;
     int64_t *colptr, *rowind, *mslot, *diag, *bslot; /* bslot: [ns SK_MAXB^2] */
     double *atol; /* [2 ns] */
@@ -342,8 +345,8 @@ static int block_idx(const rc_model *m, const rc_stk_work *w, int q, int *idx)
     int n = 0;
     for (int k = 0; aa >= 0 && k < RC_NB; k++) idx[n++] = aa + k;
     for (int k = 0; ab >= 0 && k < RC_NB; k++) idx[n++] = ab + k;
-    idx[n++] = m->ny + 2 * q;
-    idx[n++] = m->ny + 2 * q + 1;
+    idx[n++] = w->base + 2 * q;
+    idx[n++] = w->base + 2 * q + 1;
     return n;
 }
 
@@ -356,7 +359,9 @@ void rc_stk_work_free(rc_stk_work *w)
     free(w);
 }
 
-rc_stk_work *rc_stk_work_new(const rc_model *m)
+rc_stk_work *rc_stk_work_new(const rc_model *m) { return rc_stk_work_new_at(m, m->ny); }
+
+rc_stk_work *rc_stk_work_new_at(const rc_model *m, int base)
 {
     rc_stk_work *w = calloc(1, sizeof *w);
     if (!w) return NULL;
@@ -364,7 +369,8 @@ rc_stk_work *rc_stk_work_new(const rc_model *m)
         free(w);
         return NULL;
     }
-    const int ns = w->k.ns, n = w->n = m->ny + 2 * ns;
+    w->base = base;
+    const int ns = w->k.ns, n = w->n = base + 2 * ns;
     const int64_t cap = m->nnz + n + (int64_t)ns * SK_MAXB * SK_MAXB;
     int64_t *key = malloc((size_t)cap * sizeof *key);
     w->atol = calloc(2 * (size_t)ns + 1, sizeof *w->atol);
@@ -440,16 +446,15 @@ double rc_stk_atol(const rc_stk_work *w, int k) { return w->atol[k]; }
 /* Lambda: id 0, out of the error test (only lambda = Lambda' enters). */
 void rc_stk_id(const rc_model *m, const rc_stk_work *w, double *id)
 {
-    for (int k = 0; k < w->n; k++) id[k] = k < m->ny ? 1.0 : 0.0;
+    for (int k = 0; k < w->n; k++) id[k] = k < m->ny ? 1.0 : k < w->base ? id[k] : 0.0;
 }
 
 /* ---- residual, Jacobian ------------------------------------------------ */
 void rc_stk_residual(const rc_model *m, const rc_data *d, const rc_stk_work *w, const double *Y, const double *Yp,
                      double *r)
 {
-    const int ny = m->ny;
     for (int q = 0; q < w->k.ns; q++) {
-        const int i = w->k.inter[q], row = ny + 2 * q;
+        const int i = w->k.inter[q], row = w->base + 2 * q;
         if (!sticking(d, i)) {
             r[row] = Yp[row];
             r[row + 1] = Yp[row + 1];
@@ -476,7 +481,7 @@ void rc_stk_jacobian(const rc_model *m, const rc_data *d, const rc_stk_work *w, 
     for (int64_t k = 0; k < m->nnz; k++) val[w->mslot[k]] -= jf[k];
     for (int k = 0; k < ny; k++) val[w->diag[k]] += cj;
     for (int q = 0; q < w->k.ns; q++) {
-        const int i = w->k.inter[q], row = ny + 2 * q;
+        const int i = w->k.inter[q], row = w->base + 2 * q;
         if (!sticking(d, i)) {
             val[w->diag[row]] += cj;
             val[w->diag[row + 1]] += cj;
@@ -511,41 +516,53 @@ void rc_stk_jacobian(const rc_model *m, const rc_data *d, const rc_stk_work *w, 
 }
 
 /* ---- (re)start, roots, records ---------------------------------------- */
-int rc_stk_restart(const rc_model *m, rc_data *d, rc_stk_work *w, double t, double *Y, double *Yp)
+int rc_stk_prepare(const rc_model *m, rc_data *d, rc_stk_work *w, double *Y)
 {
     sk_core *K = &w->k;
     const int ny = m->ny;
     for (int q = 0; q < K->ns; q++) {
         set_axis(m, K, q, Y);
         K->act[q] = sticking(d, K->inter[q]);
-        Yp[ny + 2 * q] = Yp[ny + 2 * q + 1] = 0.0;
     }
-    const int nr = active_rows(m, K, Y);
-    if (nr > 0) {
-        /* the velocities made exact: u += M^-1 G^T x, A x = -c (G depends on
-         * the positions only; the change of least kinetic energy) */
-        for (int j = 0; j < nr; j++) {
-            const int q = K->idx[j] / 2, i = K->inter[q];
-            cx ya[RC_NB], yb[RC_NB], c[2];
-            load(m, i, Y, NULL, ya, yb);
-            kern(m, i, K->axis + 3 * q, ya, yb, NULL, NULL, NULL, c, NULL, NULL, NULL);
-            K->b[j] = -creal(c[K->idx[j] % 2]);
-        }
-        if (solve(m, K, Y, nr)) return -1;
-        memset(K->z, 0, (size_t)ny * sizeof(double));
-        for (int j = 0; j < nr; j++) add_unit(m, K, K->idx[j] / 2, K->idx[j] % 2, Y, K->b[j], K->z);
-        for (int k = 0; k < ny; k++) Y[k] += K->z[k];
+    const int nr = w->nr = active_rows(m, K, Y);
+    if (nr == 0) return 0;
+    /* the velocities made exact: u += M^-1 G^T x, A x = -c (G depends on
+     * the positions only; the change of least kinetic energy) */
+    for (int j = 0; j < nr; j++) {
+        const int q = K->idx[j] / 2, i = K->inter[q];
+        cx ya[RC_NB], yb[RC_NB], c[2];
+        load(m, i, Y, NULL, ya, yb);
+        kern(m, i, K->axis + 3 * q, ya, yb, NULL, NULL, NULL, c, NULL, NULL, NULL);
+        K->b[j] = -creal(c[K->idx[j] % 2]);
     }
-    if (rc_assemble_rhs(m, d, t, Y, Yp)) return -1;
+    if (solve(m, K, Y, nr)) return -1;
+    memset(K->z, 0, (size_t)ny * sizeof(double));
+    for (int j = 0; j < nr; j++) add_unit(m, K, K->idx[j] / 2, K->idx[j] % 2, Y, K->b[j], K->z);
+    for (int k = 0; k < ny; k++) Y[k] += K->z[k];
+    return 0;
+}
+
+int rc_stk_consistent(const rc_model *m, rc_stk_work *w, const double *Y, double *Yp)
+{
+    sk_core *K = &w->k;
+    const int ny = m->ny, nr = w->nr;
+    for (int q = 0; q < K->ns; q++) Yp[w->base + 2 * q] = Yp[w->base + 2 * q + 1] = 0.0;
     if (nr == 0) return 0;
     if (multipliers(m, K, Y, Yp, nr)) return -1;
     memset(K->z, 0, (size_t)ny * sizeof(double));
     for (int j = 0; j < nr; j++) {
-        Yp[ny + K->idx[j]] = K->b[j];
+        Yp[w->base + K->idx[j]] = K->b[j];
         add_unit(m, K, K->idx[j] / 2, K->idx[j] % 2, Y, K->b[j], K->z);
     }
     for (int k = 0; k < ny; k++) Yp[k] += K->z[k];
     return 0;
+}
+
+int rc_stk_restart(const rc_model *m, rc_data *d, rc_stk_work *w, double t, double *Y, double *Yp)
+{
+    if (rc_stk_prepare(m, d, w, Y)) return -1;
+    if (rc_assemble_rhs(m, d, t, Y, Yp)) return -1;
+    return rc_stk_consistent(m, w, Y, Yp);
 }
 
 /* The force of slot q's multipliers (global, on a) at Y [N]. */
@@ -566,7 +583,7 @@ void rc_stk_roots(const rc_model *m, const rc_data *d, const rc_stk_work *w, dou
         if (!sticking(d, i)) continue;
         rc_inter_report r;
         rc_inter_report_eval_d(m, d, i, t, Y, &r);
-        const double *lam = Yp + m->ny + 2 * q;
+        const double *lam = Yp + w->base + 2 * q;
         /* no band: the multiplier is exact (algebraic), no spring rings
          * about the limit nor does a damper carry a ramped load */
         const double s = r.flim;
@@ -581,10 +598,40 @@ void rc_stk_sync(const rc_model *m, const rc_data *d, const rc_stk_work *w, cons
         const int i = w->k.inter[q];
         if (!sticking(d, i)) continue;
         double F[3];
-        force_of(m, &w->k, q, Y, Yp + m->ny + 2 * q, F);
+        force_of(m, &w->k, q, Y, Yp + w->base + 2 * q, F);
         double *ft = Yout + m->inter_eadr[i] + m->inter_fr[i].tidx;
         for (int k = 0; k < 3; k++) ft[k] = F[k];
     }
+}
+
+/* rc_stk_decide in a model with joints: the multipliers of the sticking
+ * contacts solved with the joints' (engine/stick_joints.c) on a copy of
+ * the state. */
+static int decide_with_joints(const rc_model *m, rc_data *d, int i, double t, const double *y, double flim,
+                              double e[3])
+{
+    rc_both *b = rc_both_new(m);
+    const int n = b ? m->ny + rc_both_nextra(b) : 0;
+    double *Y = b ? calloc((size_t)n, sizeof *Y) : NULL, *Yp = b ? calloc((size_t)n, sizeof *Yp) : NULL;
+    int st = -1;
+    if (Y && Yp) {
+        memcpy(Y, y, (size_t)m->ny * sizeof *Y);
+        const rc_stk_work *w = rc_both_stk(b);
+        int me = -1;
+        for (int q = 0; q < w->k.ns; q++)
+            if (w->k.inter[q] == i) me = q;
+        if (me >= 0 && !rc_both_consistent(m, d, b, t, Y, Yp)) {
+            double F[3];
+            force_of(m, &w->k, me, Y, Yp + w->base + 2 * me, F);
+            const double nf = sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
+            st = nf > flim;
+            for (int k = 0; k < 3; k++) e[k] = nf > 0 ? F[k] / nf : 0.0;
+        }
+    }
+    free(Y);
+    free(Yp);
+    rc_both_free(b);
+    return st;
 }
 
 int rc_stk_decide(const rc_model *m, rc_data *d, int i, double t, const double *y, double e[3])
@@ -602,6 +649,7 @@ int rc_stk_decide(const rc_model *m, rc_data *d, int i, double t, const double *
         return 1;
     }
     /* the force that holds it, with the other sticking contacts */
+    if (m->jnt && m->jnt->n > 0) return decide_with_joints(m, d, i, t, y, r.flim, e);
     sk_core K;
     if (core_init(m, &K)) return -1;
     double *f = malloc(((size_t)m->ny + 1) * sizeof *f);

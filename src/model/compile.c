@@ -578,13 +578,6 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
             exact_loc = c->type6[k].line_loc[2];
             snprintf(exact_what, sizeof exact_what, "/INTER/TYPE6/%d, field Istick (1)", c->type6[k].id);
         }
-    if (nexact > 0 && c->njoint > 0) {
-        st = RC_SET(err, RC_EINPUT,
-                    RC_LOCFMT "card %s: exact stick in a model with joints is not supported yet: expected the "
-                              "incremental friction (Iform 2, Istick blank) or no joints",
-                    RC_LOC(exact_loc), exact_what);
-        goto fail;
-    }
     if (nexact > 0 && c->solver.method == 1) {
         st = RC_SET(err, RC_EINPUT,
                     RC_LOCFMT "card /SOLVER, field Method: exact stick (%s, line %d) is a constraint that only the IDA "

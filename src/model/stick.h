@@ -29,6 +29,10 @@ int rc_stk_count(const rc_model *m);
 typedef struct rc_stk_work rc_stk_work;
 /* Extended pattern and scratch of a run; NULL: out of memory. */
 rc_stk_work *rc_stk_work_new(const rc_model *m);
+/* The same with the Lambda of the interfaces from Y[base] on (a model with
+ * joints: after their extras, model/joint.h); rc_stk_work_new: base = ny.
+ * The pattern then spans Y[0 .. base + 2 ns). */
+rc_stk_work *rc_stk_work_new_at(const rc_model *m, int base);
 void rc_stk_work_free(rc_stk_work *w);
 int rc_stk_nextra(const rc_stk_work *w); /* 2 per exact interface */
 int64_t rc_stk_nnz(const rc_stk_work *w);
@@ -51,6 +55,14 @@ void rc_stk_id(const rc_model *m, const rc_stk_work *w, double *id);
  * acceleration-level equations, Yp of the inactive rows 0. Returns 0, or -1
  * when the sticking rows are dependent (or f fails). */
 int rc_stk_restart(const rc_model *m, rc_data *d, rc_stk_work *w, double t, double *Y, double *Yp);
+/* rc_stk_restart in two parts, for a model with joints as well (the
+ * multipliers of both sets solved together, solver/ida.c): the bases and
+ * the sticking rows of the stretch, the velocities made exact (0 or -1);
+ * then, with Yp[0..ny) holding the rates (f and the other constraints'
+ * accelerations), the multipliers into Yp and their accelerations added to
+ * Yp[0..ny) (0 or -1). */
+int rc_stk_prepare(const rc_model *m, rc_data *d, rc_stk_work *w, double *Y);
+int rc_stk_consistent(const rc_model *m, rc_stk_work *w, const double *Y, double *Yp);
 /* Slip roots of the sticking exact interfaces, from the multipliers in Yp:
  * |lambda|^2 / L_s^2 - 1, L_s = Sfric + mu_s F_n (no band: the multiplier is
  * exact). */
@@ -67,6 +79,29 @@ void rc_stk_sync(const rc_model *m, const rc_data *d, const rc_stk_work *w, cons
  * beyond the static limit (e along that force). -1: out of memory or
  * dependent rows (then it slides along -v_t, or keeps F_t's direction). */
 int rc_stk_decide(const rc_model *m, rc_data *d, int i, double t, const double *y, double e[3]);
+
+/* ---- joints and exact stick together (engine/stick_joints.c) ----------
+ * One constraint set on Y = [y, the joints' extras (model/joint.h), the
+ * stick's Lambda]: the same calls as the two sets', over both. */
+typedef struct rc_both rc_both;
+rc_both *rc_both_new(const rc_model *m); /* NULL: out of memory */
+void rc_both_free(rc_both *c);
+struct rc_jnt_work *rc_both_jnt(const rc_both *c);
+rc_stk_work *rc_both_stk(const rc_both *c);
+int rc_both_nextra(const rc_both *c);
+int64_t rc_both_nnz(const rc_both *c);
+void rc_both_pattern(const rc_both *c, const int64_t **colptr, const int64_t **rowind);
+double rc_both_atol(const rc_model *m, const rc_both *c, int k);
+void rc_both_id(const rc_model *m, const rc_both *c, double *id);
+void rc_both_residual(const rc_model *m, const rc_data *d, const rc_both *c, const double *Y, const double *Yp,
+                      double *r);
+void rc_both_jacobian(const rc_model *m, const rc_data *d, const rc_both *c, double cj, const double *Y,
+                      const double *Yp, const double *jf, double *val);
+/* The consistent (re)start of both sets (rc_stk_restart and the joints'
+ * rc_jnt_consistent in one, the velocities of both made exact). 0, or -1
+ * when the rows are dependent (a sticking contact holds a motion a joint
+ * holds) or f fails. */
+int rc_both_consistent(const rc_model *m, rc_data *d, rc_both *c, double t, double *Y, double *Yp);
 
 /* Geometry of interface i for the constraint (engine/assemble_jac.c). */
 void rc_stk_geom_c(const rc_model *m, int i, const double _Complex *ya, const double _Complex *yb,

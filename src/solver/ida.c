@@ -24,12 +24,14 @@
  * lambda follows from the acceleration-level equations at every (re)start
  * (engine/joints.c; IDACalcIC cannot: no algebraic unknown in the rows).
  *
- * Exact stick (model/stick.h; a model has joints or exact stick, not both):
- * Y = [y, Lambda], two rows per exact interface, F_Lambda = t_k . v_rel
+ * Exact stick (model/stick.h): Y = [y, Lambda], two rows per exact interface, F_Lambda = t_k . v_rel
  * while it sticks (lambda = Lambda' its friction force), Lambda' = 0
  * otherwise; the multipliers and the velocities of the sticking contacts
  * are made consistent at every (re)start (engine/stick.c), the slip roots
  * of the sticking contacts compare |lambda| (from Y') with the limit.
+ * Joints and exact stick together (engine/stick_joints.c): Y = [y, the
+ * joints' extras, the stick's Lambda], one constraint set whose
+ * multipliers are made consistent together at every (re)start.
  */
 #include <float.h>
 #include <ida/ida.h>
@@ -61,6 +63,7 @@ typedef struct ida_ctx {
     double *yrec;    /* joints: the record vector, Y with lambda = Lambda' (model/joint.h);
                         exact stick: Y with the sticking contacts' F_t = their multipliers */
     rc_stk_work *sw; /* exact stick: pattern of the extended matrix, scratch (NULL: none) */
+    rc_both *bw;     /* joints and exact stick together (jw, sw then its parts) */
     volatile sig_atomic_t *stop;
     char msg[512];  /* IDA's last error message */
     /* the integrator and its vectors (ida_open, ida_start) */
@@ -88,8 +91,9 @@ static int cb_res(realtype t, N_Vector yy, N_Vector yp, N_Vector rr, void *ud)
     int st = rc_assemble_rhs(c->m, c->d, t, y, r);
     if (st) return st;
     for (int k = 0; k < c->m->ny; k++) r[k] = p[k] - r[k];
-    if (c->jw) rc_jnt_residual(c->m, c->jw, y, p, r);
-    if (c->sw) rc_stk_residual(c->m, c->d, c->sw, y, p, r);
+    if (c->bw) rc_both_residual(c->m, c->d, c->bw, y, p, r);
+    else if (c->jw) rc_jnt_residual(c->m, c->jw, y, p, r);
+    else if (c->sw) rc_stk_residual(c->m, c->d, c->sw, y, p, r);
     return 0;
 }
 
@@ -108,6 +112,14 @@ static int cb_jac(realtype t, realtype cj, N_Vector yy, N_Vector yp, N_Vector rr
     if (st) return st;
     sunindextype *cp = SUNSparseMatrix_IndexPointers(A), *ri = SUNSparseMatrix_IndexValues(A);
     double *a = SUNSparseMatrix_Data(A);
+    if (c->bw) {
+        const int64_t *pc, *pr;
+        rc_both_pattern(c->bw, &pc, &pr);
+        for (int k = 0; k <= c->n; k++) cp[k] = (sunindextype)pc[k];
+        for (int64_t k = 0; k < pc[c->n]; k++) ri[k] = (sunindextype)pr[k];
+        rc_both_jacobian(m, c->d, c->bw, cj, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), c->jsave, a);
+        return 0;
+    }
     if (c->sw) {
         const int64_t *pc, *pr;
         rc_stk_pattern(c->sw, &pc, &pr);
@@ -158,7 +170,10 @@ static int cb_ewt(N_Vector yv, N_Vector wv, void *ud)
                 if (fl > s) s = fl;
             }
         } else {
-            s = (c->sw ? rc_stk_atol(c->sw, k - m->ny) : rc_jnt_atol(m, c->jw, k - m->ny)) + m->rtol * ay;
+            s = (c->bw   ? rc_both_atol(m, c->bw, k - m->ny)
+                 : c->sw ? rc_stk_atol(c->sw, k - m->ny)
+                         : rc_jnt_atol(m, c->jw, k - m->ny)) +
+                m->rtol * ay;
         }
         if (!(s > 0)) return -1;
         w[k] = 1.0 / s;
@@ -187,6 +202,7 @@ static int restart(ida_ctx *c, void *ida, double t, N_Vector yy, N_Vector yp)
 {
     const rc_model *m = c->m;
     double *y = N_VGetArrayPointer(yy), *p = N_VGetArrayPointer(yp);
+    if (c->bw) return rc_both_consistent(m, c->d, c->bw, t, y, p) ? IDA_CONV_FAIL : IDAReInit(ida, t, yy, yp);
     /* exact stick: the sticking velocities made exact, y' and the multipliers */
     if (c->sw) return rc_stk_restart(m, c->d, c->sw, t, y, p) ? IDA_CONV_FAIL : IDAReInit(ida, t, yy, yp);
     if (rc_assemble_rhs(m, c->d, t, y, p)) return IDA_FIRST_RES_FAIL;
@@ -218,7 +234,7 @@ static void failure_advice(const rc_model *m, const rc_data *d, void *ida, int f
             }
         }
         if (imax >= 0 && imax < m->ny) rc_state_name(m, imax, elem, sizeof elem);
-        else if (imax >= 0 && m->jnt) rc_jnt_extra_name(m, imax - m->ny, elem, sizeof elem);
+        else if (imax >= 0 && m->jnt && imax - m->ny < 2 * m->jnt->nrows + 1) rc_jnt_extra_name(m, imax - m->ny, elem, sizeof elem);
     }
     char *fname = IDAGetReturnFlagName(flag);
     const char *advice;
@@ -242,8 +258,8 @@ static void failure_advice(const rc_model *m, const rc_data *d, void *ida, int f
     case IDA_LINESEARCH_FAIL:
         advice = "Newton's iteration did not converge: a force varies faster than its Jacobian says, a body "
                  "has almost no mass or inertia, or the joints constrain a body twice (redundant joints make "
-                 "the constraint rows dependent): check the joints and the masses, or bound the step with "
-                 "/SOLVER Hmax";
+                 "the constraint rows dependent; so does a sticking exact-stick contact that holds a motion "
+                 "a joint already holds): check the joints and the masses, or bound the step with /SOLVER Hmax";
         break;
     case IDA_RES_FAIL:
     case IDA_REP_RES_ERR:
@@ -280,7 +296,15 @@ static rc_status ida_open(void *self, const rc_model *m, rc_data *d, const rc_ru
     c->d = d;
     c->n = m->ny;
     c->stop = opt ? opt->stop : NULL;
-    if (m->jnt && m->jnt->n > 0) {
+    if (m->jnt && m->jnt->n > 0 && rc_stk_count(m) > 0) {
+        /* both: Y = [y, the joints' extras, the stick's Lambda] */
+        if (!(c->bw = rc_both_new(m))) return RC_SET(err, RC_ENOMEM, "out of memory for the joints and exact stick");
+        c->jw = rc_both_jnt(c->bw);
+        c->sw = rc_both_stk(c->bw);
+        c->n = m->ny + rc_both_nextra(c->bw);
+        if (!(c->yrec = calloc((size_t)c->n, sizeof(double))))
+            return RC_SET(err, RC_ENOMEM, "out of memory for the joints and exact stick");
+    } else if (m->jnt && m->jnt->n > 0) {
         if (!(c->jw = rc_jnt_work_new(m))) return RC_SET(err, RC_ENOMEM, "out of memory for the joints");
         c->n = m->ny + rc_jnt_nextra(c->jw);
         if (!(c->yrec = calloc((size_t)c->n, sizeof(double))))
@@ -302,7 +326,7 @@ static rc_status ida_open(void *self, const rc_model *m, rc_data *d, const rc_ru
     N_Vector vecs[] = {c->yy, c->yp, c->ytn, c->ypt, c->ysamp, c->idv};
     for (size_t k = 0; k < sizeof vecs / sizeof vecs[0]; k++) rc_nvector_fast(vecs[k]);
     c->jsave = calloc((size_t)m->nnz + 1, sizeof(double));
-    const int64_t nnz = c->jw ? rc_jnt_nnz(c->jw) : c->sw ? rc_stk_nnz(c->sw) : m->nnz;
+    const int64_t nnz = c->bw ? rc_both_nnz(c->bw) : c->jw ? rc_jnt_nnz(c->jw) : c->sw ? rc_stk_nnz(c->sw) : m->nnz;
     c->A = SUNSparseMatrix(c->n, c->n, nnz, CSC_MAT, c->ctx);
     if (!c->yy || !c->yp || !c->ytn || !c->ypt || !c->ysamp || !c->idv || !c->jsave || !c->A)
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
@@ -311,7 +335,9 @@ static rc_status ida_open(void *self, const rc_model *m, rc_data *d, const rc_ru
     *y = N_VGetArrayPointer(c->yy);
     *yp = N_VGetArrayPointer(c->yp);
     *n = c->n;
-    *integrator = c->jw ? "IDA BDF, Newton, KLU sparse direct, rootfinding; joints: stabilised index-2 "
+    *integrator = c->bw ? "IDA BDF, Newton, KLU sparse direct, rootfinding; joints: stabilised index-2 "
+                                   "constraints (GGL); exact stick: velocity constraints"
+                  : c->jw ? "IDA BDF, Newton, KLU sparse direct, rootfinding; joints: stabilised index-2 "
                           "constraints (GGL)"
                   : c->sw ? "IDA BDF, Newton, KLU sparse direct, rootfinding; exact stick: velocity constraints"
                           : "IDA BDF, Newton, KLU sparse direct, rootfinding";
@@ -330,11 +356,16 @@ static rc_status ida_start(void *self, rc_error *err)
     IDACHECK(IDASetErrHandlerFn(ida, cb_err, c), "IDASetErrHandlerFn");
     double *yd = N_VGetArrayPointer(c->yy), *p = N_VGetArrayPointer(c->yp);
     if (rc_assemble_rhs(m, d, t, yd, p)) return RC_SET(err, RC_ESOLVER, "the forces at t = 0 could not be evaluated");
-    if (c->jw && (rc_jnt_project_velocities(m, c->jw, yd) || rc_assemble_rhs(m, d, t, yd, p) ||
+    if (c->bw) {
+        if (rc_both_consistent(m, d, c->bw, t, yd, p))
+            return RC_SET(err, RC_ESOLVER, "joints and exact stick at t = 0: the constraint rows are dependent (a "
+                                           "sticking contact holds a motion a joint already holds, or two sticking "
+                                           "contacts the same) or the forces could not be evaluated");
+    } else if (c->jw && (rc_jnt_project_velocities(m, c->jw, yd) || rc_assemble_rhs(m, d, t, yd, p) ||
                   rc_jnt_consistent(m, c->jw, yd, p)))
         return RC_SET(err, RC_ESOLVER, "the joints' constraint rows are dependent at t = 0 (the model's "
                                        "compile checks them: an internal error)");
-    if (c->sw && rc_stk_restart(m, d, c->sw, t, yd, p))
+    else if (c->sw && rc_stk_restart(m, d, c->sw, t, yd, p))
         return RC_SET(err, RC_ESOLVER, "exact stick at t = 0: the sticking contacts' rows are dependent (two "
                                        "sticking contacts hold the same motion) or the forces could not be evaluated");
     IDACHECK(IDAInit(ida, cb_res, t, c->yy, c->yp), "IDAInit");
@@ -350,7 +381,8 @@ static rc_status ida_start(void *self, rc_error *err)
     if (m->h0 > 0) IDACHECK(IDASetInitStep(ida, m->h0), "IDASetInitStep");
     if (c->jw || c->sw) {
         /* the multipliers are algebraic, out of the error test */
-        if (c->jw) rc_jnt_id(m, c->jw, N_VGetArrayPointer(c->idv));
+        if (c->bw) rc_both_id(m, c->bw, N_VGetArrayPointer(c->idv));
+        else if (c->jw) rc_jnt_id(m, c->jw, N_VGetArrayPointer(c->idv));
         else rc_stk_id(m, c->sw, N_VGetArrayPointer(c->idv));
         IDACHECK(IDASetId(ida, c->idv), "IDASetId");
         IDACHECK(IDASetSuppressAlg(ida, SUNTRUE), "IDASetSuppressAlg");
@@ -421,15 +453,13 @@ static const char *ida_last_msg(void *self) { return ((ida_ctx *)self)->msg; }
 static const double *ida_record_vector(void *self, const double *Y, const double *Yp)
 {
     ida_ctx *c = self;
-    if (c->sw) {
-        memcpy(c->yrec, Y, (size_t)c->n * sizeof(double));
-        rc_stk_sync(c->m, c->d, c->sw, Y, Yp, c->yrec);
-        return c->yrec;
-    }
-    if (!c->jw) return Y;
-    const int ny = c->m->ny, nr = c->m->jnt->nrows;
+    if (!c->jw && !c->sw) return Y;
     memcpy(c->yrec, Y, (size_t)c->n * sizeof(double));
-    memcpy(c->yrec + ny, Yp + ny, (size_t)nr * sizeof(double));
+    if (c->sw) rc_stk_sync(c->m, c->d, c->sw, Y, Yp, c->yrec);
+    if (c->jw) {
+        const int ny = c->m->ny, nr = c->m->jnt->nrows;
+        memcpy(c->yrec + ny, Yp + ny, (size_t)nr * sizeof(double));
+    }
     return c->yrec;
 }
 
@@ -466,8 +496,11 @@ static void ida_close(void *self)
     N_VDestroy(c->ysamp);
     N_VDestroy(c->idv);
     free(c->jsave);
-    rc_jnt_work_free(c->jw);
-    rc_stk_work_free(c->sw);
+    if (c->bw) rc_both_free(c->bw); /* jw and sw are its parts */
+    else {
+        rc_jnt_work_free(c->jw);
+        rc_stk_work_free(c->sw);
+    }
     free(c->yrec);
     SUNContext_Free(&c->ctx);
 }

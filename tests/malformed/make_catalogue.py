@@ -204,7 +204,6 @@ T('t6_tstop_before_tstart', T6, 'field Tstop', at(T6, 3, 61, 100, '             
 T('t6_istick', T6, 'field Istick', at(T6, 4, 1, 10, '5'))
 T('t6_fric_s_without_istick', T6, 'field Fric_s', at(T6, 6, 11, 20, '0.5'))
 T('t6_fric_s_negative', T6, 'field Fric_s', chain(at(T6, 4, 1, 10, '1'), at(T6, 6, 11, 20, '-0.5'), expect=1))
-T('t6_istick_with_joints', T6, 'not supported yet', at(T6, 4, 1, 10, '1'))
 T('t6_irs', T6, 'field IRS', at(T6, 4, 11, 20, '3'))
 T('t6_inacti', T6, 'field Inacti', at(T6, 4, 31, 40, '3'))
 T('t6_fct_ff_missing', T6, 'field fct_IDff', at(T6, 4, 41, 50, '9'))

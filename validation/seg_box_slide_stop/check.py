@@ -39,11 +39,15 @@ V0 = 1.0                         # initial speed along x [m/s]
 TEND, DTOUT = 0.8, 0.01          # [s]
 HOLD = 0.25                      # the hold window starts this long after the stop [s]
 FLOOR = (1.0, 0.6, 8)            # meshed floor: length, width [m], quadrilaterals along x
+S5_MUS, S5_VS, S5_VD = 0.5, 0.01, 0.05  # step5: mu_s at v_s [m/s], mu_d = MU beyond v_d [m/s]
+S5_FMAX = 20.0                   # step5 cap of the capped variant [N]
+S5_TEND, S5_FIT = 0.3, 0.1       # step5 run [s] (the box still above v_d), fit from [s]
 
 
-def deck(nx, ny, floor):
+def deck(nx, ny, floor, step5=False, fmax=None):
     """The box with its bottom face in nx x ny quadrilaterals on a plane
-    (floor = None) or on a fixed meshed floor (floor = (L, W, n))."""
+    (floor = None) or on a fixed meshed floor (floor = (L, W, n)); step5:
+    the power-law contact with step5 friction instead of TYPE6."""
     p0 = M * G / K
     z0 = -p0
     d = Deck(f"box {nx}x{ny} sliding to rest on a {'plane' if floor is None else 'meshed floor'}")
@@ -90,10 +94,14 @@ def deck(nx, ny, floor):
         ps = [line(*[("i", v) for v in (k + 1, pid[(i, j)], pid[(i + 1, j)], pid[(i + 1, j + 1)], pid[(i, j + 1)])])
               for k, (i, j) in enumerate((i, j) for i in range(n) for j in range(py))]
         d.add("/SURF/SEG/40", *ps, title="meshed floor (fixed)")
-    d.type6(1, 30, 40, 1, visc=2 * ZETA * math.sqrt(K * M), fric=MU, title="box on the floor")
+    if step5:
+        d.power(1, 30, 40, k=K, m1=1.0, c=2 * ZETA * math.sqrt(K * M), m2=1.0, m3=0.0, irdf=2, mus=S5_MUS, vs=S5_VS,
+                mud=MU, vd=S5_VD, fmax=fmax, title="box on the floor, step5 friction")
+    else:
+        d.type6(1, 30, 40, 1, visc=2 * ZETA * math.sqrt(K * M), fric=MU, title="box on the floor")
     d.inivel(1, (V0, 0.0, 0.0), 7)
     d.grav(1, "Z", -G)
-    d.run(TEND, DTOUT)
+    d.run(S5_TEND if step5 else TEND, DTOUT)
     return d
 
 
@@ -177,6 +185,49 @@ def result(path):
     return r
 
 
+def step5_variant(r):
+    """Beyond v_d every node's law is mu_d w_j F_n against its sliding: the
+    box decelerates at mu_d g (closed form), |F_t| = mu_d F_n."""
+    name = "step5"
+    n_ev = len(r.ev_t)
+    rcval.check(f"seg_box_slide_stop.{name}.run", r.attrs.get("status") == "complete" and n_ev < 100,
+                f"status '{r.attrs.get('status')}', {n_ev} events, {r.attrs.get('stats_steps')} steps")
+    sl = r.t >= S5_FIT
+    cf = np.polyfit(r.t[sl], r.pos[sl, 0, 0], 2)
+    a = -2 * cf[0]
+    resid = float(np.max(np.abs(r.pos[sl, 0, 0] - np.polyval(cf, r.t[sl]))))
+    e = rcval.rel(a, MU * G)
+    vmin = float(np.min(r.vel[sl, 0, 0]))
+    rcval.check(f"seg_box_slide_stop.{name}.deceleration", e < 1e-6 and resid < 1e-8 and vmin > S5_VD,
+                f"442 bottom nodes, step5 per node: quadratic fit of x over [{S5_FIT:g}, {S5_TEND:g}] s: deceleration "
+                f"{a:.9f} m/s^2, mu_d g = {MU * G:.9f}, rel. error {e:.2e} (< 1e-6), max residual {resid:.1e} m "
+                f"(< 1e-8); v >= {vmin:.3f} m/s > v_d")
+    ratio = np.linalg.norm(r.ffric[sl, 0], axis=1) / r.fn[sl, 0]
+    e = float(np.max(np.abs(ratio - MU)))
+    rcval.check(f"seg_box_slide_stop.{name}.friction", e < 1e-6,
+                f"|F_t| / F_n over [{S5_FIT:g}, {S5_TEND:g}] s in [{ratio.min():.9f}, {ratio.max():.9f}], mu_d = {MU:g} "
+                f"(the node laws mu_d w_j F_n add up to mu_d F_n), max error {e:.1e} (< 1e-6)")
+    rcval.check_ledger(f"seg_box_slide_stop.{name}.ledger", r, 1e-6)
+
+
+def step5_cap_variant(r):
+    """Every node capped at w_j f_max: the caps add up to f_max, the box
+    decelerates at f_max / m (closed form)."""
+    name = "step5_cap"
+    rcval.check(f"seg_box_slide_stop.{name}.run", r.attrs.get("status") == "complete" and len(r.ev_t) < 100,
+                f"status '{r.attrs.get('status')}', {len(r.ev_t)} events {sorted(set(r.ev_kind))}")
+    sl = r.t >= S5_FIT
+    cf = np.polyfit(r.t[sl], r.pos[sl, 0, 0], 2)
+    a = -2 * cf[0]
+    resid = float(np.max(np.abs(r.pos[sl, 0, 0] - np.polyval(cf, r.t[sl]))))
+    e = rcval.rel(a, S5_FMAX / M)
+    ft = np.linalg.norm(r.ffric[sl, 0], axis=1)
+    ef = float(np.max(np.abs(ft - S5_FMAX))) / S5_FMAX
+    rcval.check(f"seg_box_slide_stop.{name}.deceleration", e < 1e-6 and resid < 1e-8 and ef < 1e-9,
+                f"f_max = {S5_FMAX:g} N < mu_d m g: deceleration {a:.9f} m/s^2, f_max / m = {S5_FMAX / M:.9f}, rel. error "
+                f"{e:.2e} (< 1e-6), max residual {resid:.1e} m (< 1e-8); |F_t| = f_max to {ef:.1e} (< 1e-9)")
+
+
 def main():
     runs = [("corners", 1, 1, None, None), ("meshed", 25, 16, None, "meshed"),
             ("meshed_floor", 25, 16, FLOOR, "meshed_floor")]
@@ -188,6 +239,14 @@ def main():
             rcval.check(f"seg_box_slide_stop.{name}.run", False, str(err))
             continue
         variant(name, nx, ny, floor, result(path))
+    try:
+        step5_variant(result(rcval.run(deck(25, 16, None, step5=True), name="step5")))
+    except RuntimeError as err:
+        rcval.check("seg_box_slide_stop.step5.run", False, str(err))
+    try:
+        step5_cap_variant(result(rcval.run(deck(25, 16, None, step5=True, fmax=S5_FMAX), name="step5_cap")))
+    except RuntimeError as err:
+        rcval.check("seg_box_slide_stop.step5_cap.run", False, str(err))
     rcval.finish()
 
 

@@ -40,11 +40,12 @@ TEND, DTOUT = 0.8, 0.01          # [s]
 HOLD = 0.25                      # the hold window starts this long after the stop [s]
 FLOOR = (1.0, 0.6, 8)            # meshed floor: length, width [m], quadrilaterals along x
 S5_MUS, S5_VS, S5_VD = 0.5, 0.01, 0.05  # step5: mu_s at v_s [m/s], mu_d = MU beyond v_d [m/s]
+GX = 0.15                        # held variant: gravity's component along -x [g] (< mu)
 S5_FMAX = 20.0                   # step5 cap of the capped variant [N]
 S5_TEND, S5_FIT = 0.3, 0.1       # step5 run [s] (the box still above v_d), fit from [s]
 
 
-def deck(nx, ny, floor, step5=False, fmax=None):
+def deck(nx, ny, floor, step5=False, fmax=None, gx=0.0):
     """The box with its bottom face in nx x ny quadrilaterals on a plane
     (floor = None) or on a fixed meshed floor (floor = (L, W, n)); step5:
     the power-law contact with step5 friction instead of TYPE6."""
@@ -101,6 +102,8 @@ def deck(nx, ny, floor, step5=False, fmax=None):
         d.type6(1, 30, 40, 1, visc=2 * ZETA * math.sqrt(K * M), fric=MU, title="box on the floor")
     d.inivel(1, (V0, 0.0, 0.0), 7)
     d.grav(1, "Z", -G)
+    if gx:
+        d.grav(2, "X", -gx * G)
     d.run(S5_TEND if step5 else TEND, DTOUT)
     return d
 
@@ -228,6 +231,31 @@ def step5_cap_variant(r):
                 f"{e:.2e} (< 1e-6), max residual {resid:.1e} m (< 1e-8); |F_t| = f_max to {ef:.1e} (< 1e-9)")
 
 
+def held_variant(r):
+    """Gravity with a component s g along -x (an incline in its own frame):
+    the box decelerates at (s + mu) g, stops at v0 / ((s + mu) g) and, s < mu,
+    stays: the stick springs hold m g s."""
+    name = "held"
+    rcval.check(f"seg_box_slide_stop.{name}.run", r.attrs.get("status") == "complete" and len(r.ev_t) < 100,
+                f"status '{r.attrs.get('status')}', {len(r.ev_t)} events {sorted(set(r.ev_kind))}")
+    sticks = r.events("fric_stick")
+    ts_ref = V0 / ((GX + MU) * G)
+    ts = float(sticks[0]) if len(sticks) else float("nan")
+    e = rcval.rel(ts, ts_ref)
+    rcval.check(f"seg_box_slide_stop.{name}.stop_time", e < 1e-6,
+                f"442 bottom nodes: first fric_stick at {ts:.10f} s, v0 / ((s + mu) g) = {ts_ref:.10f} s, rel. error "
+                f"{e:.2e} (< 1e-6)")
+    hold = r.t >= ts + HOLD
+    vmax = float(np.max(np.linalg.norm(r.vel[hold, 0], axis=1)))
+    drift = float(np.max(np.linalg.norm(r.pos[hold, 0] - r.pos[-1, 0], axis=1)))
+    ft = r.ffric[-1, 0]
+    e = float(np.linalg.norm(ft - np.array([GX * M * G, 0.0, 0.0]))) / (GX * M * G)
+    rcval.check(f"seg_box_slide_stop.{name}.hold", vmax < 1e-6 and drift < 1e-8 and e < 1e-6,
+                f"over [{ts + HOLD:.3f}, {TEND:g}] s: max |v| = {vmax:.1e} m/s (< 1e-6), max |x - x_end| = {drift:.1e} m "
+                f"(< 1e-8); friction at rest ({ft[0]:.9f}, {ft[1]:.1e}, {ft[2]:.1e}) N, m g s = {GX * M * G:.9f} N along "
+                f"+x, rel. error {e:.2e} (< 1e-6)")
+
+
 def main():
     runs = [("corners", 1, 1, None, None), ("meshed", 25, 16, None, "meshed"),
             ("meshed_floor", 25, 16, FLOOR, "meshed_floor")]
@@ -239,6 +267,10 @@ def main():
             rcval.check(f"seg_box_slide_stop.{name}.run", False, str(err))
             continue
         variant(name, nx, ny, floor, result(path))
+    try:
+        held_variant(result(rcval.run(deck(25, 16, None, gx=GX), name="held")))
+    except RuntimeError as err:
+        rcval.check("seg_box_slide_stop.held.run", False, str(err))
     try:
         step5_variant(result(rcval.run(deck(25, 16, None, step5=True), name="step5")))
     except RuntimeError as err:

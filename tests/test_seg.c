@@ -156,8 +156,11 @@ static void test_seg_read_errors(void)
     /* friction per node: a filter only with the viscous form */
     EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS FLOOR LINEAR T6 "/FRICTION/1\nfiltered\n0,3,50,2\n\n,0.3\n" RUN_TAIL,
                      "card /INTER/TYPE6/1", "with a filter", "incremental formulation", "not supported yet");
-    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS FLOOR "/INTER/POWER/1\np\n30,40\n1e6,1\n\n0.3,0.01,0.2,0.05\n" RUN_TAIL,
-                     ":36:", "card /INTER/POWER/1", "fields mu_s/mu_d", "step5 friction on a segment surface",
+    /* step5 friction: per node (test_seg_step5_jacobian); against a sphere not yet */
+    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS "/NODE\n2,0,0,-0.2\n/RBODY/2\nball\n2,,,,5.0\n0.1,0.1,0.1\n"
+                     "0,0,0\n/SURF/ELLIPS/40\ns\n0,2,2\n0,0,-0.2\n0.1,0.1,0.1\n"
+                     "/INTER/POWER/1\np\n40,30\n1e6,1\n\n0.3,0.01,0.2,0.05\n" RUN_TAIL,
+                     "card /INTER/POWER/1", "fields mu_s/mu_d", "step5 friction of a sphere against a segment surface",
                      "not supported yet");
 }
 
@@ -413,6 +416,61 @@ static void test_seg_power_jacobian_matches_finite_differences(void)
            "|J - FD| = %.2e\n", r.p, r.fn, m->ny, combos, maxerr);
     ENSURE(bad == 0);
     ENSURE(outside == 0);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
+/* step5 friction per node (the power law on the box against a moving,
+ * tilted plate): each node's law at its share w_j of F_n and of the cap;
+ * nodes uncapped, capped and mixed, against central differences. */
+static void test_seg_step5_jacobian(void)
+{
+    rc_error e;
+    rc_model *m = seg_compile(BOX_NODES BOX_BODY BOX_SEGS
+                              "/NODE\n2,0,0,-0.2\n/RBODY/2\nplate\n2,,,,5.0\n0.11,0.13,0.2\n0.01,0,0\n"
+                              "/SURF/PLANE/40\nplate\n0,0,0.001\n0.05,-0.03,1\n2\n"
+                              "/INTER/POWER/1\np\n30,40,0,0,0,1\n1e9,1.5,3e5,1.2,0.8\n0.4\n0.5,0.7,0.3,2.9,40\n"
+                              RUN_TAIL,
+                              &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    ENSURE(m->inter_npt[0] == 8 && m->inter_fr[0].kind == RC_FK_STEP5);
+    rc_data *d = rc_data_new(m);
+    const double s[26] = {0.0013, -0.0011, 0.0312, 0.97, 0.011, -0.013, 0.007, 0.31, -0.23, -0.17, 3.1, -2.3, 4.7,
+                          0.0021, 0.0007, -0.2003, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
+    double *y = two_body_state(m, s);
+    rc_inter_report r;
+    rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+    ENSURE(r.p > 0);
+    int bad = 0, outside = 0, npen = 0;
+    double maxerr = 0;
+    d->inter_mode[0] = RC_MODE_CLOSED;
+    d->inter_branch[0] = RC_BR_LOAD;
+    int *ps = d->pt_slip + m->inter_pbase[0];
+    for (int pat = 0; pat < 3; pat++) {
+        for (int j = 0; j < 8; j++) ps[j] = pat == 0 ? 0 : pat == 1 ? 1 : j % 2;
+        maxerr = fmax(maxerr, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
+    }
+    /* the points' forces add up to the interface's friction; each point's
+     * law force is its share of the whole-contact law (uncapped) */
+    double *out = calloc(5 * 8, sizeof(double));
+    for (int j = 0; j < 8; j++) ps[j] = 0;
+    rc_points_eval(m, d, 0, NULL, 0.0, y, out);
+    double wsum = 0;
+    for (int j = 0; j < 8; j++) {
+        wsum += out[5 * j + 4];
+        npen += out[5 * j + 4] > 0;
+    }
+    ENSURE(npen >= 2 && fabs(wsum - 1.0) < 1e-12);
+    printf("    segments-plane step5 friction per node: %d nodes in contact, F_n = %.4g N, max scaled |J - FD| = %.2e "
+           "(uncapped, capped, mixed)\n", npen, r.fn, maxerr);
+    ENSURE(bad == 0);
+    ENSURE(outside == 0);
+    free(out);
     free(y);
     rc_data_free(d);
     rc_model_free(m);
@@ -679,4 +737,5 @@ void suite_seg(void)
     RUN_TEST(test_seg_sphere_jacobian_matches_finite_differences);
     RUN_TEST(test_seg_sphere_friction_jacobian);
     RUN_TEST(test_seg_viscous_friction_jacobian);
+    RUN_TEST(test_seg_step5_jacobian);
 }

@@ -186,9 +186,77 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
             if (nr > 0 && isfinite(nr)) /* a zero limit (no share) keeps the direction */
                 for (int k = 0; k < 3; k++) set_state(ft + 3 * j + k, f[k], changed);
         }
-        for (int j = 0; j < npt; j++)
+        int nst = 0; /* slip -> stick flips */
+        for (int j = 0; j < npt; j++) {
+            nst += sel[j] && sl[j];
             if (sel[j]) sl[j] = !sl[j];
+        }
         *changed = 1;
+        /* points stopping together: when some points stick at an event,
+         * every other sliding point that can stick there (its stick force,
+         * the state on the limit less the damper w c_t v_t, within the
+         * limit: |v_t| below about 1e-6 L_j / (w_j c_t)) sticks with them,
+         * instead of at an event of its own a fraction of a nanosecond
+         * later (a meshed block stopping: hundreds of points at once) */
+        double *keep = roots && nst > 0 ? malloc(3 * (size_t)npt * sizeof(double)) : NULL;
+        if (keep) {
+            int ng = 0;
+            rc_points_eval(m, d, i, NULL, t, y, out); /* sliding points: on the limit */
+            for (int j = 0; j < npt; j++) {
+                md[j] = sl[j];
+                if (sel[j] || !sl[j] || !(out[5 * j + 4] > 0)) continue;
+                double nr = 0.0;
+                for (int k = 0; k < 3; k++) nr += out[5 * j + 1 + k] * out[5 * j + 1 + k];
+                if (!(nr > 0) || !isfinite(nr)) continue;
+                for (int k = 0; k < 3; k++) {
+                    keep[3 * j + k] = ft[3 * j + k];
+                    ft[3 * j + k] = out[5 * j + 1 + k];
+                }
+                md[j] = 0;
+                ng++;
+            }
+            if (ng > 0) {
+                rc_points_eval(m, d, i, md, t, y, out);
+                for (int j = 0; j < npt; j++) {
+                    if (md[j] == sl[j]) continue;
+                    if (out[5 * j] <= 0) {
+                        sl[j] = 0; /* sticks with them, on the limit */
+                        sel[j] = 1;
+                        n++;
+                    } else {
+                        for (int k = 0; k < 3; k++) ft[3 * j + k] = keep[3 * j + k];
+                    }
+                }
+            }
+            free(keep);
+        }
+        /* slip -> stick only where the stick holds: a point whose sliding
+         * along its force stopped while it still slides across it (the
+         * direction lags behind the velocity; a box rocking as it comes to
+         * rest) would carry a stick damper force beyond its limit at once.
+         * It slides on, its state on the limit opposite to its sliding
+         * velocity (maximum dissipation), so that its root starts at
+         * -|v_t| and no stick/slip pair repeats at one instant. The stick
+         * force is the state (on the limit) less the damper w c_t v_t. */
+        int nback = 0;
+        for (int j = 0; j < npt; j++) nback += sel[j] && !sl[j];
+        if (nback > 0 && m->inter_fr[i].ct > 0) {
+            rc_points_eval(m, d, i, NULL, t, y, out);
+            for (int j = 0; j < npt; j++) {
+                if (!sel[j] || sl[j] || !(out[5 * j] > 0)) continue;
+                double *fj = ft + 3 * j, dv[3], nd = 0.0, nf = 0.0;
+                for (int k = 0; k < 3; k++) {
+                    dv[k] = out[5 * j + 1 + k] - fj[k]; /* -w c_t v_t */
+                    nd += dv[k] * dv[k];
+                    nf += fj[k] * fj[k];
+                }
+                if (!(nd > 0) || !(nf > 0) || !isfinite(nd)) continue;
+                nd = sqrt(nd);
+                nf = sqrt(nf);
+                for (int k = 0; k < 3; k++) set_state(fj + k, nf * dv[k] / nd, changed);
+                sl[j] = 1;
+            }
+        }
     }
     free(sel);
     free(md);
@@ -499,13 +567,17 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
          * reset when the contact changed) */
         if (!kind[0] && !kind[2] && m->inter_npt[i] > 0) {
             const int *rp = roots + RC_ROOTS_PER_INTER * m->ninter + m->inter_pbase[i];
-            int nsl = 0, nst = 0;
-            for (int j = 0; j < m->inter_npt[i]; j++)
-                if (rp[j]) {
-                    if (d->pt_slip[m->inter_pbase[i] + j]) nst++;
-                    else nsl++;
-                }
-            if (points_flip(m, d, i, t, y, rp, restart) > 0) kind[3] = nsl >= nst ? "fric_slip" : "fric_stick";
+            if (points_flip(m, d, i, t, y, rp, restart) > 0) {
+                /* the kind most of them took (a point refused the stick
+                 * slides on: points_flip) */
+                int nsl = 0, nst = 0;
+                for (int j = 0; j < m->inter_npt[i]; j++)
+                    if (rp[j]) {
+                        if (d->pt_slip[m->inter_pbase[i] + j]) nsl++;
+                        else nst++;
+                    }
+                kind[3] = nsl >= nst ? "fric_slip" : "fric_stick";
+            }
         }
         for (int k = 0; k < 4; k++) {
             if (!kind[k]) continue;

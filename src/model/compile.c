@@ -415,10 +415,11 @@ static rc_status check_seg_pairs(const rc_case *c, rc_model *m, rc_error *err)
     for (int i = 0; i < m->ninter; i++) {
         if (!rc_pair_multi(m->inter_pair[i])) continue;
         /* /INTER/POWER: the power law at P, its damping at v_bar; step5
-         * friction per point is not there yet */
+         * friction per point on the nodes (docs/theory.md 2.7), not yet
+         * against a sphere */
         if (i >= c->ntype6) {
-            if (m->inter_fr[i].kind != RC_FK_NONE)
-                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields mu_s/mu_d: step5 friction on a segment surface with several contact points (against a plane, a box, a sphere or a segment surface): not supported yet (supported: the power law without friction there; with friction a cylinder against a segment surface)",
+            if (m->inter_fr[i].kind != RC_FK_NONE && !rc_pair_nodes(m->inter_pair[i]))
+                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields mu_s/mu_d: step5 friction of a sphere against a segment surface: not supported yet (supported: step5 friction per node of a segment surface against a plane, a box or a segment surface, and a cylinder against a segment surface)",
                          RC_LOC(c->power[i - c->ntype6].line_loc[3]), m->inter_name[i]);
             continue;
         }

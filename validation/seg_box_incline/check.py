@@ -131,10 +131,9 @@ def main():
     a_ref = G * (math.sin(th) - MU * math.cos(th))
     r = rcval.Result(rcval.run(deck(tan_th, 1.0, 0.01), name="slide"))
     xs, xu, vs, vu = along(r, tan_th)
-    # the box pitches about its sliding tilt (the shared force's damping acts
-    # at the weighted rate, which a pitch leaves at zero to first order,
-    # docs/theory.md 2.7): fit the position, where the pitch enters divided by
-    # its frequency
+    # fit the position over the steady slide (the pitch after the slip onset
+    # is damped by the damping per contact point, docs/theory.md 2.7; a
+    # remaining pitch would enter the position divided by its frequency)
     sl = r.t >= 0.2
     cf = np.polyfit(r.t[sl], xs[sl], 2)
     a = 2 * cf[0]

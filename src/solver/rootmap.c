@@ -26,7 +26,9 @@ int rc_rootmap_init(rc_rootmap *rm, const rc_model *m, const rc_run_options *opt
     rm->nfull = rm->n = rc_root_count(m);
     if (rm->nfull == 0 || !compact_on) return 0;
     const int n = rc_roots_live(m, tend, NULL);
-    if (n == rm->nfull) return 0; /* all live: the integrator writes the engine's vector */
+    /* all live: the integrator writes the engine's vector (none live cannot
+     * happen: every interface keeps ZONE and FORCE; kept whole anyway) */
+    if (n == rm->nfull || n == 0) return 0;
     rm->live = malloc(((size_t)n + 1) * sizeof(int));
     rm->g = malloc((size_t)rm->nfull * sizeof(double));
     rm->iv = malloc((size_t)rm->nfull * sizeof(int));

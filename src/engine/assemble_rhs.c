@@ -207,5 +207,46 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
     if (rc_cpl_nroots(m) > 0) rc_cpl_roots(m, d, t, y, g + rc_root_cpl_base(m));
 }
 
+/* Which of an interface's root functions can change sign in a run from
+ * t = 0 to tend, from its static configuration alone (what
+ * rc_assemble_roots above writes in each case); the others stay at a
+ * constant value or keep one sign, and the integrator is not given them
+ * (solver/rootmap.c). In doubt a root is live. */
+static int inter_root_live(const rc_model *m, int i, int k, double tend)
+{
+    const rc_fric *fr = &m->inter_fr[i];
+    switch (k) {
+    case RC_ROOT_TSTART: /* t - Tstart >= 0 from t = 0 on; < 0 up to tend */
+        return m->inter_tstart[i] > 0.0 && m->inter_tstart[i] <= tend;
+    case RC_ROOT_TSTOP: /* t - Tstop < 0 up to tend (the stop time of the run) */
+        return m->inter_tstop[i] <= tend;
+    case RC_ROOT_HYST_A: /* the curves' bounds, or the rate of P: power law with RDF */
+        return m->inter_iform[i] != 0 || (m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0);
+    case RC_ROOT_HYST_B: /* the Stiff line's upper bound */
+        return m->inter_iform[i] != 0;
+    case RC_ROOT_TRK_A:
+    case RC_ROOT_TRK_B: /* Inacti 5 tracking needs the offset state */
+        return m->inter_oidx[i] >= 0;
+    case RC_ROOT_SLIP: /* friction; exact stick writes it too (engine/stick.c) */
+        return fr->kind != RC_FK_NONE || fr->exact;
+    case RC_ROOT_REV: /* a saturated stateless (viscous) friction law */
+        return fr->kind != RC_FK_NONE && fr->form == RC_FF_VISCOUS;
+    default: /* zone, normal force */
+        return 1;
+    }
+}
+
+int rc_roots_live(const rc_model *m, double tend, int *live)
+{
+    const int nr = rc_root_count(m), base = rc_root_point_base(m);
+    int n = 0;
+    for (int k = 0; k < nr; k++) {
+        const int on = k >= base || inter_root_live(m, k / RC_ROOTS_PER_INTER, k % RC_ROOTS_PER_INTER, tend);
+        if (on && live) live[n] = k;
+        n += on;
+    }
+    return n;
+}
+
 #include "coupling_rhs.inc"
 #include "imposed_rhs.inc"

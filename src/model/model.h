@@ -391,6 +391,12 @@ static inline int rc_root_cpl_base(const rc_model *m) { return RC_ROOTS_PER_INTE
 int rc_root_count(const rc_model *m); /* all of them (coupling_contact.c) */
 /* Root functions [rc_root_count(m)]. */
 void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
+/* The root functions that can change sign in a run from t = 0 to tend,
+ * from the interfaces' static configuration (no hysteresis law, no
+ * Inacti 5, no friction, an activation window wider than the run: those
+ * roots keep one sign); their indices ascending into live (NULL: only
+ * counted); returns their number (assemble_rhs.c). */
+int rc_roots_live(const rc_model *m, double tend, int *live);
 /* Evaluate one interface at (t, y) in the given modes, for reports, roots
  * and events; contact points with friction all take the mode `slip`. */
 void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, double t,

@@ -56,6 +56,7 @@ typedef struct run_ctx {
     N_Vector y, av, f0, f1, ytn, ysamp;
     int *old_mode, *old_branch, *old_track, *old_slip; /* the modes before a root return's events */
     int fresh; /* modes changed without a restart: the Jacobian is stale */
+    rc_rootmap rm; /* the root functions CVODE is given (integrator.h) */
 } run_ctx;
 
 /* ---- CVODE callbacks ----------------------------------------------- */
@@ -117,7 +118,8 @@ static int cb_root(realtype t, N_Vector y, realtype *g, void *ud)
 {
     run_ctx *c = ud;
     c->d->n_root++;
-    rc_assemble_roots(c->m, c->d, t, N_VGetArrayPointer(y), g);
+    rc_assemble_roots(c->m, c->d, t, N_VGetArrayPointer(y), rc_rootmap_full(&c->rm, g));
+    rc_rootmap_gather(&c->rm, g);
     return 0;
 }
 
@@ -303,6 +305,7 @@ static rc_status cv_open(void *self, const rc_model *m, rc_data *d, const rc_run
     c->m = m;
     c->d = d;
     c->stop = opt ? opt->stop : NULL;
+    if (rc_rootmap_init(&c->rm, m, opt)) return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     if (SUNContext_Create(NULL, &c->ctx)) return RC_SET(err, RC_ESOLVER, "SUNContext_Create failed");
     c->y = N_VNew_Serial(m->ny, c->ctx);
     c->av = N_VNew_Serial(m->ny, c->ctx);
@@ -354,7 +357,7 @@ static rc_status cv_start(void *self, rc_error *err)
     if (m->hmax > 0) CVCHECK(CVodeSetMaxStep(cv, m->hmax), "CVodeSetMaxStep");
     if (m->h0 > 0) CVCHECK(CVodeSetInitStep(cv, m->h0), "CVodeSetInitStep");
     if (m->nfree > 0) CVCHECK(CVodeSetProjFn(cv, cb_proj), "CVodeSetProjFn");
-    if (rc_root_count(m) > 0) CVCHECK(CVodeRootInit(cv, rc_root_count(m), cb_root), "CVodeRootInit");
+    if (c->rm.n > 0) CVCHECK(CVodeRootInit(cv, c->rm.n, cb_root), "CVodeRootInit");
     CVCHECK(CVodeSetNoInactiveRootWarn(cv), "CVodeSetNoInactiveRootWarn");
     return RC_OK;
 }
@@ -404,8 +407,19 @@ static int cv_last_step(void *self, double *tn, double *hu)
     return flag < 0 ? flag : CVodeGetLastStep(c->cv, hu);
 }
 
-static int cv_root_info(void *self, int *roots) { return CVodeGetRootInfo(((run_ctx *)self)->cv, roots); }
-static int cv_set_root_dirs(void *self, int *dir) { return CVodeSetRootDirection(((run_ctx *)self)->cv, dir); }
+/* roots and directions in the engine's full layout (integrator.h rc_rootmap) */
+static int cv_root_info(void *self, int *roots)
+{
+    run_ctx *c = self;
+    int flag = CVodeGetRootInfo(c->cv, rc_rootmap_info(&c->rm, roots));
+    if (flag == CV_SUCCESS) rc_rootmap_found(&c->rm, roots);
+    return flag;
+}
+static int cv_set_root_dirs(void *self, int *dir)
+{
+    run_ctx *c = self;
+    return CVodeSetRootDirection(c->cv, (int *)rc_rootmap_dirs(&c->rm, dir));
+}
 static int cv_set_stop_time(void *self, double tstop) { return CVodeSetStopTime(((run_ctx *)self)->cv, tstop); }
 
 static int cv_restart(void *self, double t, int at_breakpoint)
@@ -491,6 +505,7 @@ static void cv_close(void *self)
     free(c->old_track);
     free(c->old_slip);
     free(c->jsave);
+    rc_rootmap_free(&c->rm);
     SUNContext_Free(&c->ctx);
 }
 

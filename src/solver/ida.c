@@ -72,6 +72,7 @@ typedef struct ida_ctx {
     SUNMatrix A;
     SUNLinearSolver LS;
     N_Vector yy, yp, ytn, ypt, ysamp, idv;
+    rc_rootmap rm; /* the root functions IDA is given (integrator.h) */
 } ida_ctx;
 
 /* ---- IDA callbacks -------------------------------------------------- */
@@ -147,8 +148,10 @@ static int cb_root(realtype t, N_Vector yy, N_Vector yp, realtype *g, void *ud)
 {
     ida_ctx *c = ud;
     c->d->n_root++;
-    rc_assemble_roots(c->m, c->d, t, N_VGetArrayPointer(yy), g);
-    if (c->sw) rc_stk_roots(c->m, c->d, c->sw, t, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), g);
+    double *gf = rc_rootmap_full(&c->rm, g);
+    rc_assemble_roots(c->m, c->d, t, N_VGetArrayPointer(yy), gf);
+    if (c->sw) rc_stk_roots(c->m, c->d, c->sw, t, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), gf);
+    rc_rootmap_gather(&c->rm, g);
     return 0;
 }
 
@@ -296,6 +299,7 @@ static rc_status ida_open(void *self, const rc_model *m, rc_data *d, const rc_ru
     c->d = d;
     c->n = m->ny;
     c->stop = opt ? opt->stop : NULL;
+    if (rc_rootmap_init(&c->rm, m, opt)) return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     if (m->jnt && m->jnt->n > 0 && rc_stk_count(m) > 0) {
         /* both: Y = [y, the joints' extras, the stick's Lambda] */
         if (!(c->bw = rc_both_new(m))) return RC_SET(err, RC_ENOMEM, "out of memory for the joints and exact stick");
@@ -387,7 +391,7 @@ static rc_status ida_start(void *self, rc_error *err)
         IDACHECK(IDASetId(ida, c->idv), "IDASetId");
         IDACHECK(IDASetSuppressAlg(ida, SUNTRUE), "IDASetSuppressAlg");
     }
-    if (rc_root_count(m) > 0) IDACHECK(IDARootInit(ida, rc_root_count(m), cb_root), "IDARootInit");
+    if (c->rm.n > 0) IDACHECK(IDARootInit(ida, c->rm.n, cb_root), "IDARootInit");
     IDACHECK(IDASetNoInactiveRootWarn(ida), "IDASetNoInactiveRootWarn");
     return RC_OK;
 }
@@ -414,8 +418,19 @@ static int ida_last_step(void *self, double *tn, double *hu)
     return flag < 0 ? flag : IDAGetLastStep(c->ida, hu);
 }
 
-static int ida_root_info(void *self, int *roots) { return IDAGetRootInfo(((ida_ctx *)self)->ida, roots); }
-static int ida_set_root_dirs(void *self, int *dir) { return IDASetRootDirection(((ida_ctx *)self)->ida, dir); }
+/* roots and directions in the engine's full layout (integrator.h rc_rootmap) */
+static int ida_root_info(void *self, int *roots)
+{
+    ida_ctx *c = self;
+    int flag = IDAGetRootInfo(c->ida, rc_rootmap_info(&c->rm, roots));
+    if (flag == IDA_SUCCESS) rc_rootmap_found(&c->rm, roots);
+    return flag;
+}
+static int ida_set_root_dirs(void *self, int *dir)
+{
+    ida_ctx *c = self;
+    return IDASetRootDirection(c->ida, (int *)rc_rootmap_dirs(&c->rm, dir));
+}
 static int ida_set_stop_time(void *self, double tstop) { return IDASetStopTime(((ida_ctx *)self)->ida, tstop); }
 
 /* Every restart (an event, a breakpoint) from the state with a consistent
@@ -502,6 +517,7 @@ static void ida_close(void *self)
         rc_stk_work_free(c->sw);
     }
     free(c->yrec);
+    rc_rootmap_free(&c->rm);
     SUNContext_Free(&c->ctx);
 }
 

@@ -121,6 +121,33 @@ void keep_error(volatile sig_atomic_t *stop, char *keep, size_t n, int code, con
  * each derivative order k), RC_BK_SAMPLE for the impact table's samples. */
 enum { RC_BK_TMP = 0, RC_BK_SAMPLE = 1 };
 
+/* The root functions the integrator is given (rootmap.c): the live ones
+ * of the engine's layout (model.h rc_roots_live), in its order. The
+ * backend's root callback has the engine write the whole layout into
+ * rc_rootmap_full(rm, g) and then calls rc_rootmap_gather(rm, g); the
+ * directions go through rc_rootmap_dirs, and the integrator's roots found,
+ * read into rc_rootmap_info(rm, roots), come back to the full indices
+ * with rc_rootmap_found. With every root live (or compaction off) all of
+ * these pass the engine's vectors through. */
+typedef struct rc_rootmap {
+    int nfull, n; /* the engine's root functions, the integrator's */
+    int *live;    /* [n] the integrator's roots' full indices (NULL: all, n = nfull) */
+    double *g;    /* [nfull] scratch: the engine's root values */
+    int *iv;      /* [nfull] scratch: the integrator's directions or roots found */
+} rc_rootmap;
+/* 0, or -1 out of memory (rc_rootmap_free it anyway). */
+int rc_rootmap_init(rc_rootmap *rm, const rc_model *m, const rc_run_options *opt);
+void rc_rootmap_free(rc_rootmap *rm);
+static inline double *rc_rootmap_full(const rc_rootmap *rm, double *g) { return rm->live ? rm->g : g; }
+void rc_rootmap_gather(const rc_rootmap *rm, double *g);
+/* The directions dir[nfull] as the integrator's [n] (valid until the next call). */
+const int *rc_rootmap_dirs(const rc_rootmap *rm, const int *dir);
+static inline int *rc_rootmap_info(const rc_rootmap *rm, int *roots) { return rm->live ? rm->iv : roots; }
+/* The integrator's roots found (in rc_rootmap_info) into roots[nfull]. */
+void rc_rootmap_found(const rc_rootmap *rm, int *roots);
+/* Tests only: 0 gives the integrator every root function (default 1). */
+void rc_rootmap_set_compact(int on);
+
 /* An integrator behind rc_drive. Flags are the integrator's own return
  * values (negative: a failure, named by flag_name); `self` is the
  * backend's state, passed back to every operation. */

@@ -1,0 +1,161 @@
+/* The root functions given to the integrators (solver/rootmap.c): the live
+ * list of each interface from its configuration (model.h rc_roots_live),
+ * and runs with the compact list against runs with every root function:
+ * the same events (time, kind, element, values) and the same final state,
+ * bit for bit, on both backends. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "harness.h"
+#include "model/model.h"
+#include "solver/integrator.h"
+#include "solver/solver.h"
+#include "testutil.h"
+
+#define MAXEV 4096
+
+typedef struct {
+    int n;
+    double t[MAXEV], v[MAXEV][3];
+    char kind[MAXEV][32], elem[MAXEV][32];
+} evlog;
+
+static int on_event(void *user, double t, const char *kind, const char *element, const double values[3])
+{
+    evlog *l = user;
+    if (l->n < MAXEV) {
+        l->t[l->n] = t;
+        memcpy(l->v[l->n], values, sizeof l->v[0]);
+        snprintf(l->kind[l->n], sizeof l->kind[0], "%s", kind);
+        snprintf(l->elem[l->n], sizeof l->elem[0], "%s", element);
+    }
+    l->n++;
+    return 0;
+}
+
+/* 1 when interface i's root k is in the live list */
+static int is_live(const int *live, int n, int i, int k)
+{
+    for (int j = 0; j < n; j++)
+        if (live[j] == RC_ROOTS_PER_INTER * i + k) return 1;
+    return 0;
+}
+
+/* Run m on solver s with compaction on and off: the same events and state. */
+static void same_runs(const rc_model *m, const rc_solver *s, const char *what)
+{
+    const int ny = m->ny;
+    double *ya = calloc((size_t)ny, sizeof(double)), *yb = calloc((size_t)ny, sizeof(double));
+    evlog *la = calloc(1, sizeof *la), *lb = calloc(1, sizeof *lb);
+    ENSURE(ya && yb && la && lb);
+    if (!ya || !yb || !la || !lb) goto out;
+    rc_error e;
+    rc_stats sa, sb;
+    rc_run_options oa = {.y_end = ya, .on_event = on_event, .user = la};
+    rc_run_options ob = {.y_end = yb, .on_event = on_event, .user = lb};
+    rc_rootmap_set_compact(1);
+    ENSURE(s->run(m, &oa, NULL, &sa, &e) == RC_OK);
+    rc_rootmap_set_compact(0);
+    ENSURE(s->run(m, &ob, NULL, &sb, &e) == RC_OK);
+    rc_rootmap_set_compact(1);
+    printf("    %s, %s: %d events, %ld / %ld steps (compact / all roots)\n", what, s->name, la->n, sa.steps, sb.steps);
+    ENSURE(la->n > 0 && la->n == lb->n && la->n <= MAXEV);
+    ENSURE(sa.steps == sb.steps);
+    for (int k = 0; k < la->n && k < lb->n && k < MAXEV; k++) {
+        ENSURE(la->t[k] == lb->t[k]);
+        ENSURE(strcmp(la->kind[k], lb->kind[k]) == 0 && strcmp(la->elem[k], lb->elem[k]) == 0);
+        ENSURE(memcmp(la->v[k], lb->v[k], sizeof la->v[k]) == 0);
+    }
+    ENSURE(memcmp(ya, yb, (size_t)ny * sizeof(double)) == 0);
+out:
+    free(ya);
+    free(yb);
+    free(la);
+    free(lb);
+}
+
+/* The block on a floor with Coulomb friction (incremental) and a pusher
+ * without friction, active from 1 ms to 20 ms of a 0.4 s run. */
+static void test_roots_live_mixed(void)
+{
+    FILE *f = fopen("validation/frc_iform_compare/case.rad", "r");
+    ENSURE(f != NULL);
+    if (!f) return;
+    static char text[16384];
+    size_t len = fread(text, 1, sizeof text - 1, f);
+    fclose(f);
+    text[len] = 0;
+    /* the pusher's interface: Tstart 0.001 s (columns 61-80) */
+    const char *old = "                                                           0                                    0.02";
+    const char *rep = "                                                           0               0.001                0.02";
+    char *p = strstr(text, old);
+    ENSURE(p != NULL && strlen(old) == strlen(rep));
+    if (!p) return;
+    memcpy(p, rep, strlen(rep));
+    rc_error e;
+    rc_model *m = tu_compile_text(text, "mixed.rad", &e);
+    ENSURE(m != NULL);
+    if (!m) return;
+    ENSURE(m->ninter == 2);
+    const int nr = rc_root_count(m);
+    int *live = calloc((size_t)nr + 1, sizeof(int));
+    const int n = rc_roots_live(m, m->tend, live);
+    printf("    %d of %d root functions live\n", n, nr);
+    /* the block on the floor: contact, friction (incremental: no reversal root) */
+    ENSURE(!is_live(live, n, 0, RC_ROOT_TSTART) && !is_live(live, n, 0, RC_ROOT_TSTOP));
+    ENSURE(is_live(live, n, 0, RC_ROOT_ZONE) && is_live(live, n, 0, RC_ROOT_FORCE));
+    ENSURE(!is_live(live, n, 0, RC_ROOT_HYST_A) && !is_live(live, n, 0, RC_ROOT_HYST_B));
+    ENSURE(!is_live(live, n, 0, RC_ROOT_TRK_A) && !is_live(live, n, 0, RC_ROOT_TRK_B));
+    ENSURE(is_live(live, n, 0, RC_ROOT_SLIP) && !is_live(live, n, 0, RC_ROOT_REV));
+    /* the pusher: its window, contact, nothing else */
+    ENSURE(is_live(live, n, 1, RC_ROOT_TSTART) && is_live(live, n, 1, RC_ROOT_TSTOP));
+    ENSURE(is_live(live, n, 1, RC_ROOT_ZONE) && is_live(live, n, 1, RC_ROOT_FORCE));
+    for (int k = RC_ROOT_HYST_A; k < RC_ROOTS_PER_INTER; k++) ENSURE(!is_live(live, n, 1, k));
+    /* the point roots and after: all live, in order */
+    for (int k = rc_root_point_base(m); k < nr; k++) ENSURE(is_live(live, n, 0, k));
+    for (int j = 1; j < n; j++) ENSURE(live[j] > live[j - 1]);
+    /* a run ending before Tstop: no stop root; before Tstart: no start root */
+    const int n2 = rc_roots_live(m, 0.01, live);
+    ENSURE(n2 == n - 1 && !is_live(live, n2, 1, RC_ROOT_TSTOP) && is_live(live, n2, 1, RC_ROOT_TSTART));
+    ENSURE(rc_roots_live(m, 0.0005, live) == n - 2);
+    free(live);
+    /* the events of the window, the contacts and the friction all seen */
+    same_runs(m, &rc_solver_cvode, "block and pusher");
+    same_runs(m, &rc_solver_ida, "block and pusher");
+    rc_model_free(m);
+}
+
+/* Hysteresis (Iform 1) and Inacti 5: their roots live and their events
+ * the same. */
+static void test_roots_live_hysteresis_inacti(void)
+{
+    const char *decks[] = {"validation/t6_unload_curve/case.rad", "validation/t6_inacti_icor/case.rad"};
+    for (int q = 0; q < 2; q++) {
+        rc_model *m = NULL;
+        rc_error e;
+        ENSURE(tu_load_compile(decks[q], &m, &e) == RC_OK);
+        if (!m) continue;
+        const int nr = rc_root_count(m);
+        int *live = calloc((size_t)nr + 1, sizeof(int));
+        const int n = rc_roots_live(m, m->tend, live);
+        for (int i = 0; i < m->ninter; i++) {
+            ENSURE(is_live(live, n, i, RC_ROOT_HYST_A) == (m->inter_iform[i] != 0));
+            ENSURE(is_live(live, n, i, RC_ROOT_HYST_B) == (m->inter_iform[i] != 0));
+            ENSURE(is_live(live, n, i, RC_ROOT_TRK_A) == (m->inter_inacti[i] == 5));
+            ENSURE(is_live(live, n, i, RC_ROOT_TRK_B) == (m->inter_inacti[i] == 5));
+        }
+        ENSURE(q == 0 ? m->inter_iform[0] != 0 : m->inter_inacti[0] == 5);
+        free(live);
+        same_runs(m, &rc_solver_cvode, decks[q]);
+        same_runs(m, &rc_solver_ida, decks[q]);
+        rc_model_free(m);
+    }
+}
+
+void suite_roots(void);
+void suite_roots(void)
+{
+    RUN_TEST(test_roots_live_mixed);
+    RUN_TEST(test_roots_live_hysteresis_inacti);
+}

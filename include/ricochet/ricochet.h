@@ -21,7 +21,7 @@
 extern "C" {
 #endif
 
-#define RICOCHET_VERSION "0.1.0"
+#define RICOCHET_VERSION "0.2.0"
 
 /* Status codes. The values of RC_EINPUT, RC_ESOLVER and RC_EIO are the
  * program's exit codes. */

@@ -52,6 +52,16 @@ static void perturb(const rc_model *m, double *Y, double *Yp, int n, unsigned s,
     }
 }
 
+/* The residuals and the rows compared, for tu_dae_jac_fd_error. */
+typedef struct {
+    const rc_model *m;
+    rc_data *d;
+    const rc_stk_work *w;
+    const rc_both *b;
+} fd_ctx;
+static void fd_residual(void *ctx, const double *Y, const double *Yp, double *r);
+static int fd_compare(void *ctx, int r);
+
 static void test_stick_jacobian_matches_finite_differences(void)
 {
     rc_error e;
@@ -64,7 +74,6 @@ static void test_stick_jacobian_matches_finite_differences(void)
     rc_stk_work *w = rc_stk_work_new(m);
     const int n = m->ny + rc_stk_nextra(w);
     double *Y = calloc((size_t)n, sizeof *Y), *Yp = calloc((size_t)n, sizeof *Yp);
-    double *r1 = calloc((size_t)n, sizeof *r1), *r2 = calloc((size_t)n, sizeof *r2);
     double *jf = calloc((size_t)m->nnz + 1, sizeof *jf), *val = calloc((size_t)rc_stk_nnz(w), sizeof *val);
     rc_initial_state(m, Y);
     for (int i = 0; i < m->ninter; i++) {
@@ -78,41 +87,19 @@ static void test_stick_jacobian_matches_finite_differences(void)
     const int64_t *cp, *ri;
     rc_stk_pattern(w, &cp, &ri);
     double worst = 0, raw = 0;
-    int outside = 0;
+    int outside = 0, outside_raw = 0;
+    fd_ctx fc = {m, d, w, NULL};
+    tu_dae_fd_opts o = {0.1, 1e-6, 1e-5, 1, 1, fd_compare};
     for (int pass = 0; pass < 2; pass++) {
         const double cj = pass ? 37.5 : 0.0;
         rc_assemble_jac(m, d, 0.0, Y, jf);
         rc_stk_jacobian(m, d, w, cj, Y, Yp, jf, val);
-        for (int c = 0; c < n; c++) {
-            const double h = 1e-6 * fmax(fabs(Y[c]), 0.1), keep = Y[c], keepp = Yp[c];
-            Y[c] = keep + h;
-            Yp[c] = keepp + cj * h;
-            residual(m, d, w, Y, Yp, r1);
-            Y[c] = keep - h;
-            Yp[c] = keepp - cj * h;
-            residual(m, d, w, Y, Yp, r2);
-            Y[c] = keep;
-            Yp[c] = keepp;
-            for (int r = 0; r < n; r++) {
-                const double fd = (r1[r] - r2[r]) / (2 * h);
-                double an = 0;
-                int64_t k;
-                for (k = cp[c]; k < cp[c + 1]; k++)
-                    if (ri[k] == r) break;
-                if (k < cp[c + 1]) an = val[k];
-                else if (fabs(fd) > 1e-6 * fmax(1.0, fabs(r1[r]))) outside++;
-                /* only the rows of the constraints and the bodies (the
-                 * model's own block is test_engine's) */
-                if (r >= m->ny || (r < 26 && r % RC_NB >= 7)) {
-                    /* less the rounding of the difference (contact rows of 1e3 N) */
-                    const double rnd = 100.0 * 2.2e-16 * fmax(fabs(r1[r]), fabs(r2[r])) / h;
-                    const double err = fmax(fabs(an - fd) - rnd, 0.0) / fmax(1.0, fabs(fd));
-                    if (err > worst) worst = err;
-                    raw = fmax(raw, fabs(an - fd) / fmax(1.0, fabs(fd)));
-                    if (err > 1e-5) fprintf(stderr, "  cj %g: row %d col %d: exact %.9g, FD %.9g\n", cj, r, c, an, fd);
-                }
-            }
-        }
+        /* less the rounding of the difference (contact rows of 1e3 N) */
+        worst = fmax(worst, tu_dae_jac_fd_error(n, Y, Yp, cj, cp, ri, val, fd_residual, &fc, &o, &outside));
+        tu_dae_fd_opts o_raw = o;
+        o_raw.forgive_rounding = 0;
+        o_raw.print_tol = INFINITY;
+        raw = fmax(raw, tu_dae_jac_fd_error(n, Y, Yp, cj, cp, ri, val, fd_residual, &fc, &o_raw, &outside_raw));
     }
     printf("    max scaled |J - FD| = %.1e beyond the rounding of the differences (%.1e with it), %d FD entries "
            "outside the pattern\n",
@@ -121,8 +108,6 @@ static void test_stick_jacobian_matches_finite_differences(void)
     ENSURE(outside == 0);
     free(Y);
     free(Yp);
-    free(r1);
-    free(r2);
     free(jf);
     free(val);
     rc_stk_work_free(w);
@@ -188,6 +173,21 @@ static void both_residual(const rc_model *m, rc_data *d, const rc_both *b, const
     rc_both_residual(m, d, b, Y, Yp, r);
 }
 
+static void fd_residual(void *ctx, const double *Y, const double *Yp, double *r)
+{
+    const fd_ctx *c = ctx;
+    if (c->b) both_residual(c->m, c->d, c->b, Y, Yp, r);
+    else residual(c->m, c->d, c->w, Y, Yp, r);
+}
+
+/* only the rows of the constraints and the bodies' rate rows (the model's
+ * own block is test_engine's) */
+static int fd_compare(void *ctx, int r)
+{
+    const fd_ctx *c = ctx;
+    return r >= c->m->ny || (r < 26 && r % RC_NB >= 7);
+}
+
 static char *with_tail(const char *tail);
 
 static void test_stick_joints_jacobian_and_multipliers(void)
@@ -245,36 +245,13 @@ static void test_stick_joints_jacobian_and_multipliers(void)
     rc_both_pattern(b, &cp, &ri);
     double worst = 0;
     int outside = 0;
+    fd_ctx fc = {m, d, NULL, b};
+    const tu_dae_fd_opts o = {0.1, 1e-6, 1e-5, 1, 1, fd_compare};
     for (int pass = 0; pass < 2; pass++) {
         const double cj = pass ? 41.0 : 0.0;
         rc_assemble_jac(m, d, 0.0, Y, jf);
         rc_both_jacobian(m, d, b, cj, Y, Yp, jf, val);
-        for (int c = 0; c < n; c++) {
-            const double hc = 1e-6 * fmax(fabs(Y[c]), 0.1), keep = Y[c], keepp = Yp[c];
-            Y[c] = keep + hc;
-            Yp[c] = keepp + cj * hc;
-            both_residual(m, d, b, Y, Yp, r1);
-            Y[c] = keep - hc;
-            Yp[c] = keepp - cj * hc;
-            both_residual(m, d, b, Y, Yp, r2);
-            Y[c] = keep;
-            Yp[c] = keepp;
-            for (int r = 0; r < n; r++) {
-                const double fd = (r1[r] - r2[r]) / (2 * hc);
-                double an = 0;
-                int64_t k;
-                for (k = cp[c]; k < cp[c + 1]; k++)
-                    if (ri[k] == r) break;
-                if (k < cp[c + 1]) an = val[k];
-                else if (fabs(fd) > 1e-6 * fmax(1.0, fabs(r1[r]))) outside++;
-                if (r >= m->ny || (r < 26 && r % RC_NB >= 7)) {
-                    const double rnd = 100.0 * 2.2e-16 * fmax(fabs(r1[r]), fabs(r2[r])) / hc;
-                    const double err = fmax(fabs(an - fd) - rnd, 0.0) / fmax(1.0, fabs(fd));
-                    if (err > worst) worst = err;
-                    if (err > 1e-5) fprintf(stderr, "  cj %g: row %d col %d: exact %.9g, FD %.9g\n", cj, r, c, an, fd);
-                }
-            }
-        }
+        worst = fmax(worst, tu_dae_jac_fd_error(n, Y, Yp, cj, cp, ri, val, fd_residual, &fc, &o, &outside));
     }
     printf("    both sets: max scaled |J - FD| = %.1e beyond the rounding of the differences, %d FD entries outside "
            "the pattern\n", worst, outside);

@@ -128,3 +128,42 @@ double tu_jac_fd_error(const rc_model *m, rc_data *d, double t, double *y, int f
     free(val);
     return maxerr;
 }
+
+double tu_dae_jac_fd_error(int n, double *Y, double *Yp, double cj, const int64_t *cp, const int64_t *ri,
+                           const double *val, tu_residual_fn res, void *ctx, const tu_dae_fd_opts *o, int *outside)
+{
+    double *r1 = calloc((size_t)n, sizeof(double)), *r2 = calloc((size_t)n, sizeof(double)), worst = 0;
+    if (!r1 || !r2) {
+        free(r1);
+        free(r2);
+        return INFINITY;
+    }
+    for (int c = 0; c < n; c++) {
+        const double h = 1e-6 * fmax(fabs(Y[c]), o->hfloor), keep = Y[c], keepp = Yp[c];
+        Y[c] = keep + h;
+        Yp[c] = keepp + cj * h;
+        res(ctx, Y, Yp, r1);
+        Y[c] = keep - h;
+        Yp[c] = keepp - cj * h;
+        res(ctx, Y, Yp, r2);
+        Y[c] = keep;
+        Yp[c] = keepp;
+        for (int r = 0; r < n; r++) {
+            const double fd = (r1[r] - r2[r]) / (2 * h);
+            double an = 0;
+            int64_t k;
+            for (k = cp[c]; k < cp[c + 1]; k++)
+                if (ri[k] == r) break;
+            if (k < cp[c + 1]) an = val[k];
+            else if (fabs(fd) > o->out_tol * (o->out_rel ? fmax(1.0, fabs(r1[r])) : 1.0)) (*outside)++;
+            if (o->compare && !o->compare(ctx, r)) continue;
+            const double rnd = o->forgive_rounding ? 100.0 * DBL_EPSILON * fmax(fabs(r1[r]), fabs(r2[r])) / h : 0.0;
+            const double err = fmax(fabs(an - fd) - rnd, 0.0) / fmax(1.0, fabs(fd));
+            if (err > worst) worst = err;
+            if (err > o->print_tol) fprintf(stderr, "  cj %g: row %d col %d: exact %.9g, FD %.9g\n", cj, r, c, an, fd);
+        }
+    }
+    free(r1);
+    free(r2);
+    return worst;
+}

@@ -32,4 +32,22 @@ int tu_missing_needles(const char *msg, va_list ap);
 double tu_jac_fd_error(const rc_model *m, rc_data *d, double t, double *y, int forgive_rounding, int *bad,
                        int *outside);
 
+/* The iteration matrix dF/dY + cj dF/dY' of a residual F(Y, Y') of n rows
+ * against central differences, column by column, Y and Y' perturbed
+ * together (Y' by cj h, h = 1e-6 max(|Y_c|, hfloor)); the exact values are
+ * `val` on the CSC pattern (cp, ri). An FD entry off the pattern counts in
+ * *outside when |FD| > out_tol (times max(1, |F_r|) with out_rel). Rows r
+ * with compare(ctx, r) == 0 are not compared (compare NULL: all rows). With
+ * `forgive_rounding` the rounding of the difference, 100 eps |F| / h, is
+ * subtracted. Entries above print_tol are printed. Returns the max of
+ * |J - FD| / max(1, |FD|). */
+typedef void (*tu_residual_fn)(void *ctx, const double *Y, const double *Yp, double *r);
+typedef struct {
+    double hfloor, out_tol, print_tol;
+    int out_rel, forgive_rounding;
+    int (*compare)(void *ctx, int r);
+} tu_dae_fd_opts;
+double tu_dae_jac_fd_error(int n, double *Y, double *Yp, double cj, const int64_t *cp, const int64_t *ri,
+                           const double *val, tu_residual_fn res, void *ctx, const tu_dae_fd_opts *o, int *outside);
+
 #endif

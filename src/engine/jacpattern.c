@@ -22,12 +22,6 @@
 #include "base/progress.h"
 #include "model/power.h"
 
-static int cmp_i64(const void *a, const void *b)
-{
-    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
-    return (x > y) - (x < y);
-}
-
 /* Body block: its 13 rows by its 13 columns. */
 static void block_body(const rc_model *m, int b, rc_jblock *jb)
 {
@@ -391,7 +385,7 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
         }
     }
     /* sort, unique, split into CSC */
-    qsort(key, (size_t)n, sizeof(int64_t), cmp_i64);
+    qsort(key, (size_t)n, sizeof(int64_t), rc_cmp_i64);
     int64_t u = 0;
     for (int64_t k = 0; k < n; k++)
         if (u == 0 || key[k] != key[u - 1]) key[u++] = key[k];

@@ -70,22 +70,9 @@ static int block_cols(const rc_model *m, int j, int *cols)
     return n - 1; /* the W column is not one of the joint's (its row has W' only) */
 }
 
-static int cmp_i64(const void *a, const void *b)
-{
-    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
-    return (x > y) - (x < y);
-}
-
 static int64_t find_slot(const rc_jnt_work *w, int row, int col)
 {
-    int64_t lo = w->colptr[col], hi = w->colptr[col + 1] - 1;
-    while (lo <= hi) {
-        int64_t mid = (lo + hi) / 2;
-        if (w->rowind[mid] == row) return mid;
-        if (w->rowind[mid] < row) lo = mid + 1;
-        else hi = mid - 1;
-    }
-    return -1;
+    return rc_csc_slot(w->colptr, w->rowind, row, col);
 }
 
 void rc_jnt_work_free(rc_jnt_work *w)
@@ -169,7 +156,7 @@ rc_jnt_work *rc_jnt_work_new(const rc_model *m)
         nb += nrw * ncl;
     }
     w->badr[J->n] = nb;
-    qsort(key, (size_t)nk, sizeof *key, cmp_i64);
+    qsort(key, (size_t)nk, sizeof *key, rc_cmp_i64);
     int64_t u = 0;
     for (int64_t k = 0; k < nk; k++)
         if (u == 0 || key[k] != key[u - 1]) key[u++] = key[k];

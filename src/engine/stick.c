@@ -319,22 +319,9 @@ static int core_init(const rc_model *m, sk_core *K)
 }
 
 /* ---- work, pattern ----------------------------------------------------- */
-static int cmp_i64(const void *a, const void *b)
-{
-    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
-    return (x > y) - (x < y);
-}
-
 static int64_t find_slot(const rc_stk_work *w, int row, int col)
 {
-    int64_t lo = w->colptr[col], hi = w->colptr[col + 1] - 1;
-    while (lo <= hi) {
-        int64_t mid = (lo + hi) / 2;
-        if (w->rowind[mid] == row) return mid;
-        if (w->rowind[mid] < row) lo = mid + 1;
-        else hi = mid - 1;
-    }
-    return -1;
+    return rc_csc_slot(w->colptr, w->rowind, row, col);
 }
 
 /* The rows (= columns) of slot q's dense block: its free bodies' states,
@@ -393,7 +380,7 @@ rc_stk_work *rc_stk_work_new_at(const rc_model *m, int base)
         for (int r = 0; r < nb; r++)
             for (int c = 0; c < nb; c++) key[nk++] = (int64_t)idx[c] * n + idx[r];
     }
-    qsort(key, (size_t)nk, sizeof *key, cmp_i64);
+    qsort(key, (size_t)nk, sizeof *key, rc_cmp_i64);
     int64_t u = 0;
     for (int64_t k = 0; k < nk; k++)
         if (u == 0 || key[k] != key[u - 1]) key[u++] = key[k];

@@ -27,22 +27,9 @@ struct rc_both {
     double *f0, *zj, *zs;   /* [ny] consistent start: f, the joints' and the stick's accelerations */
 };
 
-static int cmp_i64(const void *a, const void *b)
-{
-    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
-    return (x > y) - (x < y);
-}
-
 static int64_t union_slot(const rc_both *c, int64_t row, int64_t col)
 {
-    int64_t lo = c->ucol[col], hi = c->ucol[col + 1] - 1;
-    while (lo <= hi) {
-        const int64_t mid = (lo + hi) / 2;
-        if (c->urow[mid] == row) return mid;
-        if (c->urow[mid] < row) lo = mid + 1;
-        else hi = mid - 1;
-    }
-    return -1;
+    return rc_csc_slot(c->ucol, c->urow, row, col);
 }
 
 void rc_both_free(rc_both *c)
@@ -91,7 +78,7 @@ rc_both *rc_both_new(const rc_model *m)
         for (int64_t k = jc[col]; k < jc[col + 1]; k++) key[nk++] = (int64_t)col * n + jr[k];
     for (int col = 0; col < n; col++)
         for (int64_t k = sc[col]; k < sc[col + 1]; k++) key[nk++] = (int64_t)col * n + sr[k];
-    qsort(key, (size_t)nk, sizeof *key, cmp_i64);
+    qsort(key, (size_t)nk, sizeof *key, rc_cmp_i64);
     int64_t u = 0;
     for (int64_t k = 0; k < nk; k++)
         if (u == 0 || key[k] != key[u - 1]) key[u++] = key[k];

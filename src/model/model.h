@@ -460,6 +460,10 @@ double rc_friction_mu(const rc_model *m, int i, int dir, double p, double v, dou
 rc_status rc_jac_build(rc_model *m, rc_error *err);
 /* CSC position of (row, col), -1 when the entry is not in the pattern. */
 int64_t rc_jac_slot(const rc_model *m, int row, int col);
+/* The position of (row, col) in a CSC pattern with sorted row indices, -1
+ * when absent; the order of int64_t for qsort (pattern.c). */
+int64_t rc_csc_slot(const int64_t *colptr, const int64_t *rowind, int64_t row, int64_t col);
+int rc_cmp_i64(const void *a, const void *b);
 void rc_jac_free(rc_model *m);
 
 /* ---- modes and events (events.c) ----------------------------------- */

@@ -6,16 +6,27 @@
 #include "model/coupling.h"
 #include "model/model.h"
 
-int64_t rc_jac_slot(const rc_model *m, int row, int col)
+int64_t rc_csc_slot(const int64_t *colptr, const int64_t *rowind, int64_t row, int64_t col)
 {
-    int64_t lo = m->jac_colptr[col], hi = m->jac_colptr[col + 1] - 1;
+    int64_t lo = colptr[col], hi = colptr[col + 1] - 1;
     while (lo <= hi) {
         int64_t mid = lo + (hi - lo) / 2;
-        if (m->jac_rowind[mid] == row) return mid;
-        if (m->jac_rowind[mid] < row) lo = mid + 1;
+        if (rowind[mid] == row) return mid;
+        if (rowind[mid] < row) lo = mid + 1;
         else hi = mid - 1;
     }
     return -1;
+}
+
+int rc_cmp_i64(const void *a, const void *b)
+{
+    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+    return (x > y) - (x < y);
+}
+
+int64_t rc_jac_slot(const rc_model *m, int row, int col)
+{
+    return rc_csc_slot(m->jac_colptr, m->jac_rowind, row, col);
 }
 
 void rc_jac_free(rc_model *m)

@@ -559,6 +559,20 @@ static void test_seg_cyl_jacobian_matches_finite_differences(void)
     rc_model_free(m);
 }
 
+/* The sphere (body 1, off its centre of mass) and the V-shaped valley of
+ * triangles and quadrilaterals on body 2 of the sphere-segment tests, with
+ * the load curve 1. */
+#define VALLEY_DECK_HEAD                                                                                        \
+    "/NODE\n1,0.001,-0.002,0.05\n2,0,0,-0.2\n"                                                                \
+    "10,-0.2,-0.2,0.06\n11,0.2,-0.2,0.06\n12,0.2,0,0\n13,-0.2,0,0\n14,0.2,0.2,0.06\n"                            \
+    "15,-0.2,0.2,0.06\n16,0,0.2,0.06\n"                                                                        \
+    "/GRNOD/NODE/8\nplate\n10,11,12,13,14,15,16\n"                                                          \
+    "/RBODY/1\nball\n1,,,,0.731\n2.1e-3,1.7e-3,2.9e-3\n1.3e-4,-2.2e-4,0.7e-4\n"                                \
+    "/RBODY/2\nvalley\n2,,,,5.0,8\n0.11,0.13,0.2\n0.01,0,0\n"                                                  \
+    "/SURF/ELLIPS/20\nball\n0,2,1\n0.0017,-0.0011,0.0521\n0.05,0.05,0.05\n"                                    \
+    "/SURF/SEG/40\nvalley\n1,10,11,12,13\n2,13,12,16\n3,12,14,16\n4,13,16,15\n"                                \
+    "/FUNCT/1\nload\n-0.01,-3.1e3\n0,0\n0.0013,2.71e3\n0.0041,1.37e4\n0.0097,5.9e4\n"
+
 /* A sphere (body 1, off its centre of mass) in a V-shaped valley of
  * triangles and quadrilaterals carried by a moving body 2: two face points
  * past the surface, every mode, against central differences; and the
@@ -566,15 +580,7 @@ static void test_seg_cyl_jacobian_matches_finite_differences(void)
 static void test_seg_sphere_jacobian_matches_finite_differences(void)
 {
     rc_error e;
-    rc_model *m = seg_compile("/NODE\n1,0.001,-0.002,0.05\n2,0,0,-0.2\n"
-                              "10,-0.2,-0.2,0.06\n11,0.2,-0.2,0.06\n12,0.2,0,0\n13,-0.2,0,0\n14,0.2,0.2,0.06\n"
-                              "15,-0.2,0.2,0.06\n16,0,0.2,0.06\n"
-                              "/GRNOD/NODE/8\nplate\n10,11,12,13,14,15,16\n"
-                              "/RBODY/1\nball\n1,,,,0.731\n2.1e-3,1.7e-3,2.9e-3\n1.3e-4,-2.2e-4,0.7e-4\n"
-                              "/RBODY/2\nvalley\n2,,,,5.0,8\n0.11,0.13,0.2\n0.01,0,0\n"
-                              "/SURF/ELLIPS/20\nball\n0,2,1\n0.0017,-0.0011,0.0521\n0.05,0.05,0.05\n"
-                              "/SURF/SEG/40\nvalley\n1,10,11,12,13\n2,13,12,16\n3,12,14,16\n4,13,16,15\n"
-                              "/FUNCT/1\nload\n-0.01,-3.1e3\n0,0\n0.0013,2.71e3\n0.0041,1.37e4\n0.0097,5.9e4\n"
+    rc_model *m = seg_compile(VALLEY_DECK_HEAD
                               "/FUNCT/2\nunload\n0,0\n0.002,0\n0.006,5e3\n0.011,3.1e4\n"
                               "/FUNCT/3\ndv\n-10,-41\n0,0\n0.37,5.3\n3.3,71\n/FUNCT/4\ndf\n0,1\n500,0.83\n9e4,0.61\n"
                               "/INTER/TYPE6/1\nball in the valley\n40,20\n,,0.0011\n,,,5,,,1.9,0.61\n1,1,1.3,0.77\n"
@@ -624,15 +630,7 @@ static void test_seg_sphere_jacobian_matches_finite_differences(void)
 static void test_seg_sphere_friction_jacobian(void)
 {
     rc_error e;
-    rc_model *m = seg_compile("/NODE\n1,0.001,-0.002,0.05\n2,0,0,-0.2\n"
-                              "10,-0.2,-0.2,0.06\n11,0.2,-0.2,0.06\n12,0.2,0,0\n13,-0.2,0,0\n14,0.2,0.2,0.06\n"
-                              "15,-0.2,0.2,0.06\n16,0,0.2,0.06\n"
-                              "/GRNOD/NODE/8\nplate\n10,11,12,13,14,15,16\n"
-                              "/RBODY/1\nball\n1,,,,0.731\n2.1e-3,1.7e-3,2.9e-3\n1.3e-4,-2.2e-4,0.7e-4\n"
-                              "/RBODY/2\nvalley\n2,,,,5.0,8\n0.11,0.13,0.2\n0.01,0,0\n"
-                              "/SURF/ELLIPS/20\nball\n0,2,1\n0.0017,-0.0011,0.0521\n0.05,0.05,0.05\n"
-                              "/SURF/SEG/40\nvalley\n1,10,11,12,13\n2,13,12,16\n3,12,14,16\n4,13,16,15\n"
-                              "/FUNCT/1\nload\n-0.01,-3.1e3\n0,0\n0.0013,2.71e3\n0.0041,1.37e4\n0.0097,5.9e4\n"
+    rc_model *m = seg_compile(VALLEY_DECK_HEAD
                               "/INTER/TYPE6/1\nball in the valley\n40,20\n,0.3,0.0011\n\n1\n\n730\n" RUN_TAIL,
                               &e);
     ENSURE(m != NULL);

@@ -156,25 +156,13 @@ rc_jnt_work *rc_jnt_work_new(const rc_model *m)
         nb += nrw * ncl;
     }
     w->badr[J->n] = nb;
-    qsort(key, (size_t)nk, sizeof *key, rc_cmp_i64);
-    int64_t u = 0;
-    for (int64_t k = 0; k < nk; k++)
-        if (u == 0 || key[k] != key[u - 1]) key[u++] = key[k];
-    w->nnz = u;
-    w->rowind = malloc((size_t)u * sizeof *w->rowind);
+    w->rowind = rc_csc_from_keys(key, nk, n, w->colptr, &w->nnz);
+    free(key);
     w->bslot = malloc(((size_t)nb + 1) * sizeof *w->bslot);
     if (!w->rowind || !w->bslot) {
-        free(key);
         rc_jnt_work_free(w);
         return NULL;
     }
-    for (int64_t k = 0; k < u; k++) {
-        const int c = (int)(key[k] / n);
-        w->rowind[k] = key[k] % n;
-        w->colptr[c + 1]++;
-    }
-    free(key);
-    for (int c = 0; c < n; c++) w->colptr[c + 1] += w->colptr[c];
     for (int c = 0; c < m->ny; c++)
         for (int64_t k = m->jac_colptr[c]; k < m->jac_colptr[c + 1]; k++)
             w->mslot[k] = find_slot(w, (int)m->jac_rowind[k], c);

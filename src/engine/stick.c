@@ -380,23 +380,12 @@ rc_stk_work *rc_stk_work_new_at(const rc_model *m, int base)
         for (int r = 0; r < nb; r++)
             for (int c = 0; c < nb; c++) key[nk++] = (int64_t)idx[c] * n + idx[r];
     }
-    qsort(key, (size_t)nk, sizeof *key, rc_cmp_i64);
-    int64_t u = 0;
-    for (int64_t k = 0; k < nk; k++)
-        if (u == 0 || key[k] != key[u - 1]) key[u++] = key[k];
-    w->nnz = u;
-    w->rowind = malloc((size_t)u * sizeof *w->rowind);
+    w->rowind = rc_csc_from_keys(key, nk, n, w->colptr, &w->nnz);
+    free(key);
     if (!w->rowind) {
-        free(key);
         rc_stk_work_free(w);
         return NULL;
     }
-    for (int64_t k = 0; k < u; k++) {
-        w->rowind[k] = key[k] % n;
-        w->colptr[key[k] / n + 1]++;
-    }
-    free(key);
-    for (int c = 0; c < n; c++) w->colptr[c + 1] += w->colptr[c];
     for (int c = 0; c < m->ny; c++)
         for (int64_t k = m->jac_colptr[c]; k < m->jac_colptr[c + 1]; k++)
             w->mslot[k] = find_slot(w, (int)m->jac_rowind[k], c);

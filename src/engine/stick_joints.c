@@ -78,21 +78,9 @@ rc_both *rc_both_new(const rc_model *m)
         for (int64_t k = jc[col]; k < jc[col + 1]; k++) key[nk++] = (int64_t)col * n + jr[k];
     for (int col = 0; col < n; col++)
         for (int64_t k = sc[col]; k < sc[col + 1]; k++) key[nk++] = (int64_t)col * n + sr[k];
-    qsort(key, (size_t)nk, sizeof *key, rc_cmp_i64);
-    int64_t u = 0;
-    for (int64_t k = 0; k < nk; k++)
-        if (u == 0 || key[k] != key[u - 1]) key[u++] = key[k];
-    c->nnz = u;
-    if (!(c->urow = malloc((size_t)u * sizeof *c->urow))) {
-        free(key);
-        goto fail;
-    }
-    for (int64_t k = 0; k < u; k++) {
-        c->urow[k] = key[k] % n;
-        c->ucol[key[k] / n + 1]++;
-    }
+    c->urow = rc_csc_from_keys(key, nk, n, c->ucol, &c->nnz);
     free(key);
-    for (int col = 0; col < n; col++) c->ucol[col + 1] += c->ucol[col];
+    if (!c->urow) goto fail;
     for (int col = 0; col < m->ny + c->nj; col++)
         for (int64_t k = jc[col]; k < jc[col + 1]; k++) c->jmap[k] = union_slot(c, jr[k], col);
     for (int col = 0; col < n; col++)

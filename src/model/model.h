@@ -464,6 +464,10 @@ int64_t rc_jac_slot(const rc_model *m, int row, int col);
  * when absent; the order of int64_t for qsort (pattern.c). */
 int64_t rc_csc_slot(const int64_t *colptr, const int64_t *rowind, int64_t row, int64_t col);
 int rc_cmp_i64(const void *a, const void *b);
+/* The CSC pattern of n columns from entries keyed col * n + row (sorted and
+ * made unique in place): colptr[n + 1] (zeroed by the caller) filled, the
+ * row indices returned (malloc'd; NULL: out of memory), their count in *nnz. */
+int64_t *rc_csc_from_keys(int64_t *key, int64_t nk, int64_t n, int64_t *colptr, int64_t *nnz);
 void rc_jac_free(rc_model *m);
 
 /* ---- modes and events (events.c) ----------------------------------- */

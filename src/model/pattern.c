@@ -24,6 +24,23 @@ int rc_cmp_i64(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+int64_t *rc_csc_from_keys(int64_t *key, int64_t nk, int64_t n, int64_t *colptr, int64_t *nnz)
+{
+    qsort(key, (size_t)nk, sizeof *key, rc_cmp_i64);
+    int64_t u = 0;
+    for (int64_t k = 0; k < nk; k++)
+        if (u == 0 || key[k] != key[u - 1]) key[u++] = key[k];
+    *nnz = u;
+    int64_t *rowind = malloc((size_t)u * sizeof *rowind + sizeof *rowind);
+    if (!rowind) return NULL;
+    for (int64_t k = 0; k < u; k++) {
+        rowind[k] = key[k] % n;
+        colptr[key[k] / n + 1]++;
+    }
+    for (int64_t c = 0; c < n; c++) colptr[c + 1] += colptr[c];
+    return rowind;
+}
+
 int64_t rc_jac_slot(const rc_model *m, int row, int col)
 {
     return rc_csc_slot(m->jac_colptr, m->jac_rowind, row, col);

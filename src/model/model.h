@@ -224,6 +224,8 @@ struct rc_model {
      * its slip root (rc_root_count). inter_npt[i] = 0: none. */
     int npt;             /* points of all interfaces */
     int *inter_npt;      /* [ninter] points of interface i */
+    int *inter_pst;      /* [ninter] states per point: 3 (F_t, or the filtered force of the viscous
+                            form), 6 (incremental form with a filter: F_t, then the filtered force F_f) */
     int *inter_pbase;    /* [ninter] index of its first point */
     int64_t **inter_ptslot; /* [ninter] Jacobian slots of its points (jacpattern.c), NULL: none */
     char **inter_name;   /* [ninter] "/INTER/TYPE6/<id>" */

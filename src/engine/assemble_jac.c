@@ -242,7 +242,7 @@ void rc_inter_report_rate(const rc_model *m, int i, int mode, int branch, int tr
 {
     /* d/dt q = Im(q(y + i h ydot)) / h for every reported quantity q */
     const int ba = m->inter_ba[i], bb = m->inter_bb[i], ns = m->inter_ns[i];
-    const int np3 = 3 * m->inter_npt[i];
+    const int np3 = m->inter_pst[i] * m->inter_npt[i];
     T ya[RC_NB], yb[RC_NB], ysl[RC_NS_MAX];
     /* contact points: their states (read, not differentiated) */
     T *ys = np3 > 0 ? malloc(((size_t)ns + (size_t)np3) * sizeof(T)) : ysl;

@@ -149,7 +149,7 @@ static void reset_friction(const rc_model *m, rc_data *d, int i, double *y, int 
  * flipped. Returns the number of points flipped. */
 static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y, const int *roots, int *changed)
 {
-    const int npt = m->inter_npt[i];
+    const int npt = m->inter_npt[i], ps = m->inter_pst[i]; /* points, states per point */
     if (npt == 0 || d->inter_mode[i] != RC_MODE_CLOSED) return 0;
     int *sl = d->pt_slip + m->inter_pbase[i];
     double *out = d->pt_work; /* 5 per point (rc_data_new) */
@@ -177,14 +177,14 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
         rc_points_eval(m, d, i, NULL, t, y, out);
         for (int j = 0; j < npt; j++)
             if (sel[j])
-                for (int k = 0; k < 3; k++) set_state(ft + m->inter_pst[i] * j + k, out[5 * j + 1 + k], changed);
+                for (int k = 0; k < 3; k++) set_state(ft + ps * j + k, out[5 * j + 1 + k], changed);
         for (int j = 0; j < npt; j++) md[j] = sel[j] ? 1 : sl[j];
         rc_points_eval(m, d, i, md, t, y, out);
         for (int j = 0; j < npt; j++) {
             if (!sel[j] || sl[j]) continue;
             const double *f = out + 5 * j + 1, nr = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
             if (nr > 0 && isfinite(nr)) /* a zero limit (no share) keeps the direction */
-                for (int k = 0; k < 3; k++) set_state(ft + m->inter_pst[i] * j + k, f[k], changed);
+                for (int k = 0; k < 3; k++) set_state(ft + ps * j + k, f[k], changed);
         }
         int nst = 0; /* slip -> stick flips */
         for (int j = 0; j < npt; j++) {
@@ -209,8 +209,8 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
                 for (int k = 0; k < 3; k++) nr += out[5 * j + 1 + k] * out[5 * j + 1 + k];
                 if (!(nr > 0) || !isfinite(nr)) continue;
                 for (int k = 0; k < 3; k++) {
-                    keep[3 * j + k] = ft[3 * j + k];
-                    ft[3 * j + k] = out[5 * j + 1 + k];
+                    keep[3 * j + k] = ft[ps * j + k];
+                    ft[ps * j + k] = out[5 * j + 1 + k];
                 }
                 md[j] = 0;
                 ng++;
@@ -224,7 +224,7 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
                         sel[j] = 1;
                         n++;
                     } else {
-                        for (int k = 0; k < 3; k++) ft[3 * j + k] = keep[3 * j + k];
+                        for (int k = 0; k < 3; k++) ft[ps * j + k] = keep[3 * j + k];
                     }
                 }
             }
@@ -244,7 +244,7 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
             rc_points_eval(m, d, i, NULL, t, y, out);
             for (int j = 0; j < npt; j++) {
                 if (!sel[j] || sl[j] || !(out[5 * j] > 0)) continue;
-                double *fj = ft + 3 * j, dv[3], nd = 0.0, nf = 0.0;
+                double *fj = ft + ps * j, dv[3], nd = 0.0, nf = 0.0;
                 for (int k = 0; k < 3; k++) {
                     dv[k] = out[5 * j + 1 + k] - fj[k]; /* -w c_t v_t */
                     nd += dv[k] * dv[k];

@@ -153,9 +153,26 @@ static void test_seg_read_errors(void)
         ENSURE(m && m->inter_pair[0] == RC_PAIR_SPHERE_SEG && m->inter_npt[0] == 0 && m->inter_fr[0].tidx >= 0);
         rc_model_free(m);
     }
-    /* friction per node: a filter only with the viscous form */
-    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS FLOOR LINEAR T6 "/FRICTION/1\nfiltered\n0,3,50,2\n\n,0.3\n" RUN_TAIL,
-                     "card /INTER/TYPE6/1", "with a filter", "incremental formulation", "not supported yet");
+    /* friction per node, the incremental form with a filter: 6 states per
+     * point (F_t, then the filtered force), 3 otherwise */
+    {
+        rc_error e;
+        rc_model *m = seg_compile(BOX_NODES BOX_BODY BOX_SEGS FLOOR LINEAR T6 "/FRICTION/1\nfiltered\n0,3,50,2\n\n,0.3\n" RUN_TAIL,
+                                  &e);
+        ENSURE(m && m->inter_npt[0] == 8 && m->inter_pst[0] == 6 && m->inter_fr[0].tau > 0 &&
+               m->inter_fr[0].form == RC_FF_INCREMENTAL && m->inter_fr[0].tidx < 0);
+        if (m) {
+            char nm[256];
+            rc_state_name(m, m->inter_eadr[0] + m->inter_ns[0] + 6 + 1, nm, sizeof nm);
+            ENSURE(strstr(nm, "tangential (friction) force F_t of contact point 2") && strstr(nm, " y [N]"));
+            rc_state_name(m, m->inter_eadr[0] + m->inter_ns[0] + 6 + 5, nm, sizeof nm);
+            ENSURE(strstr(nm, "filtered friction force F_f of contact point 2") && strstr(nm, " z [N]"));
+        }
+        rc_model_free(m);
+        m = seg_compile(BOX_NODES BOX_BODY BOX_SEGS FLOOR LINEAR T6 "/FRICTION/1\nunfiltered\n0,0,,2\n\n,0.3\n" RUN_TAIL, &e);
+        ENSURE(m && m->inter_npt[0] == 8 && m->inter_pst[0] == 3);
+        rc_model_free(m);
+    }
     /* step5 friction: per node (test_seg_step5_jacobian); against a sphere not yet */
     EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS "/NODE\n2,0,0,-0.2\n/RBODY/2\nball\n2,,,,5.0\n0.1,0.1,0.1\n"
                      "0,0,0\n/SURF/ELLIPS/40\ns\n0,2,2\n0,0,-0.2\n0.1,0.1,0.1\n"
@@ -294,6 +311,7 @@ static void seg_jacobian_check(int box, int fric)
              /* 2, 3: the viscous form (Iform 1), 3 with a filter (Ifiltr 3) */
              fric == 2   ? "/FRICTION/1\nviscous\n0,0,,1\n\n,0.37,0.8\n" RUN_TAIL
              : fric == 3 ? "/FRICTION/1\nviscous, filtered\n0,3,50,1\n\n,0.37,0.8\n" RUN_TAIL
+             : fric == 4 ? "/FRICTION/1\nincremental, filtered\n0,3,50,2\n\n,0.37,0.8\n" RUN_TAIL
                          : RUN_TAIL);
     rc_model *m = seg_compile(deck, &e);
     ENSURE(m != NULL);
@@ -302,7 +320,8 @@ static void seg_jacobian_check(int box, int fric)
         return;
     }
     ENSURE(m->inter_pair[0] == (box == 2 ? RC_PAIR_SEG_SEG : box ? RC_PAIR_SEG_BOX : RC_PAIR_SEG_PLANE));
-    ENSURE(fric < 2 || (m->inter_fr[0].form == RC_FF_VISCOUS && (fric == 3) == (m->inter_fr[0].tau > 0)));
+    ENSURE(fric < 2 || fric == 4 || (m->inter_fr[0].form == RC_FF_VISCOUS && (fric == 3) == (m->inter_fr[0].tau > 0)));
+    ENSURE(fric != 4 || (m->inter_fr[0].form == RC_FF_INCREMENTAL && m->inter_fr[0].tau > 0 && m->inter_pst[0] == 6));
     rc_data *d = rc_data_new(m);
     const double s[26] = {0.0013, -0.0011, 0.0312, 0.97, 0.011, -0.013, 0.007, 0.31, -0.23, -0.17, 3.1, -2.3, 4.7,
                           0.0021, 0.0007, -0.2003, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
@@ -354,8 +373,8 @@ static void seg_jacobian_check(int box, int fric)
                     maxerr = fmax(maxerr, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
                     combos++;
                 }
-    const char *fname[4] = {"", " with friction per point", " with viscous friction per point",
-                            " with filtered viscous friction per point"};
+    const char *fname[5] = {"", " with friction per point", " with viscous friction per point",
+                            " with filtered viscous friction per point", " with filtered incremental friction per point"};
     printf("    %s%s jacobian: P = %.3g m (%d nodes past the plate; -1: not counted), %d states, %lld nonzeros, %d mode combinations, max scaled |J - FD| "
            "= %.2e\n", box == 2 ? "segments-segments" : box ? "segments-box" : "segments-plane", fname[fric], r.p, npen, m->ny, (long long)m->nnz, combos, maxerr);
     ENSURE(bad == 0);
@@ -375,6 +394,13 @@ static void test_seg_viscous_friction_jacobian(void)
 {
     seg_jacobian_check(0, 2);
     seg_jacobian_check(2, 3);
+}
+/* the incremental form with a filter: 6 states per point */
+static void test_seg_filtered_incremental_jacobian(void)
+{
+    seg_jacobian_check(0, 4);
+    seg_jacobian_check(1, 4);
+    seg_jacobian_check(2, 4);
 }
 
 /* The power law on a segment surface (the box on a tilted plate carried by
@@ -735,5 +761,6 @@ void suite_seg(void)
     RUN_TEST(test_seg_sphere_jacobian_matches_finite_differences);
     RUN_TEST(test_seg_sphere_friction_jacobian);
     RUN_TEST(test_seg_viscous_friction_jacobian);
+    RUN_TEST(test_seg_filtered_incremental_jacobian);
     RUN_TEST(test_seg_step5_jacobian);
 }

@@ -49,16 +49,17 @@ static void dense_body(const rc_model *m, int b, double t, const double *y, doub
  * (if free), of b (if free), own states; columns = states of a, of b, own.
  * Contact points with friction (inter_npt): their states are read from y,
  * modes pslip (NULL: all `slip`); work: complex scratch of 2 (RC_NS_MAX +
- * 3 npt) values; ptslot (NULL: not wanted): the point-state rows of the
+ * inter_pst npt) values; ptslot (NULL: not wanted): the point-state rows of the
  * same columns are added into val through it (inter_ptslot). */
 static void dense_inter(const rc_model *m, int i, int mode, int branch, int track, int slip, const int *pslip,
                         const double *y, double *out, T *work, const int64_t *ptslot, double *val, T *ncache)
 {
     const rc_jblock *jb = &m->jb_inter[i];
-    const int ba = m->inter_ba[i], bb = m->inter_bb[i], ns = m->inter_ns[i], np3 = 3 * m->inter_npt[i];
+    const int ba = m->inter_ba[i], bb = m->inter_bb[i], ns = m->inter_ns[i], ps = m->inter_pst[i];
+    const int np3 = ps * m->inter_npt[i];
     const int fa = ba >= 0 && m->body_yadr[ba] >= 0, fb = bb >= 0 && m->body_yadr[bb] >= 0;
     const int na = fa ? RC_NB : 0, nb = fb ? RC_NB : 0;
-    const int64_t P = 3 * (int64_t)jb->ncol + 3 * (int64_t)jb->nrow + 9;
+    const int64_t P = (int64_t)ps * jb->ncol + (int64_t)ps * jb->nrow + ps * ps;
     T ya[RC_NB], yb[RC_NB], ysl[RC_NS_MAX], sdl[RC_NS_MAX];
     T *ys = np3 > 0 ? work : ysl, *sdot = np3 > 0 ? work + RC_NS_MAX + np3 : sdl;
     load_body(m, ba, y, ya);
@@ -79,7 +80,7 @@ static void dense_inter(const rc_model *m, int i, int mode, int branch, int trac
         for (int k = 0; k < ns; k++, r++) out[r * jb->ncol + c] = cimag(sdot[k]) / RC_CSTEP;
         if (ptslot)
             for (int k = 0; k < np3; k++) {
-                const int64_t sl = ptslot[(k / 3) * P + (k % 3) * jb->ncol + c];
+                const int64_t sl = ptslot[(k / ps) * P + (k % ps) * jb->ncol + c];
                 if (sl >= 0) val[sl] += cimag(sdot[ns + k]) / RC_CSTEP;
             }
     }
@@ -92,8 +93,8 @@ static void dense_inter(const rc_model *m, int i, int mode, int branch, int trac
 static void points_jac(const rc_model *m, rc_data *d, int i, const double *y, double *val)
 {
     const rc_jblock *jb = &m->jb_inter[i];
-    const int npt = m->inter_npt[i], ns = m->inter_ns[i], ncol = jb->ncol, nrow = jb->nrow;
-    const int64_t P = 3 * (int64_t)ncol + 3 * (int64_t)nrow + 9, *slot = m->inter_ptslot[i];
+    const int npt = m->inter_npt[i], ns = m->inter_ns[i], ncol = jb->ncol, nrow = jb->nrow, ps = m->inter_pst[i];
+    const int64_t P = (int64_t)ps * ncol + (int64_t)ps * nrow + ps * ps, *slot = m->inter_ptslot[i];
     const int *pslip = d->pt_slip + m->inter_pbase[i];
     const int ba = m->inter_ba[i], bb = m->inter_bb[i];
     const int fa = ba >= 0 && m->body_yadr[ba] >= 0, fb = bb >= 0 && m->body_yadr[bb] >= 0;
@@ -105,15 +106,16 @@ static void points_jac(const rc_model *m, rc_data *d, int i, const double *y, do
     /* the shared part at the state (real values) */
     const double *yr = y + m->inter_eadr[i];
     T *ys = d->pt_work;
-    for (int k = 0; k < ns + 3 * npt; k++) ys[k] = yr[k];
+    for (int k = 0; k < ns + ps * npt; k++) ys[k] = yr[k];
     t6out_c o;
     type6_c(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], pslip, ya, yb, ys, NULL,
             NULL, NULL, &o, NULL, d->node_cache);
     segctx_c c;
     segfric_ctx_c(m, i, o.fel + o.fd, o.kn, o.off, ya, yb, d->node_cache, &c);
     for (int j = 0; j < npt; j++) {
-        T Fj[3] = {yr[ns + 3 * j], yr[ns + 3 * j + 1], yr[ns + 3 * j + 2]};
-        for (int k = 0; k < 3; k++) {
+        T Fj[6];
+        for (int k = 0; k < ps; k++) Fj[k] = yr[ns + ps * j + k];
+        for (int k = 0; k < ps; k++) {
             Fj[k] += I * RC_CSTEP;
             segpt_c q;
             segfric_point_c(m, i, &c, j, pslip[j], ya, yb, Fj, po, &q);
@@ -121,18 +123,18 @@ static void points_jac(const rc_model *m, rc_data *d, int i, const double *y, do
             T acc[12] = {0}, fbv[3] = {-q.ft[0], -q.ft[1], -q.ft[2]};
             if (fa) apply_force_c(m, ba, ya, q.ft, q.x, acc);
             if (fb) apply_force_c(m, bb, yb, fbv, q.x, acc + 6);
-            const int64_t *sb = slot + j * P + 3 * ncol, *sc = sb + 3 * nrow;
+            const int64_t *sb = slot + j * P + ps * ncol, *sc = sb + ps * nrow;
             int r = 0;
             if (fa)
                 for (int e = 0; e < 6; e++, r++)
-                    if (sb[r * 3 + k] >= 0) val[sb[r * 3 + k]] += cimag(acc[e]) / RC_CSTEP;
+                    if (sb[r * ps + k] >= 0) val[sb[r * ps + k]] += cimag(acc[e]) / RC_CSTEP;
             if (fb)
                 for (int e = 0; e < 6; e++, r++)
-                    if (sb[r * 3 + k] >= 0) val[sb[r * 3 + k]] += cimag(acc[6 + e]) / RC_CSTEP;
-            const int64_t sw = sb[(r + fr->widx) * 3 + k];
+                    if (sb[r * ps + k] >= 0) val[sb[r * ps + k]] += cimag(acc[6 + e]) / RC_CSTEP;
+            const int64_t sw = sb[(r + fr->widx) * ps + k];
             if (sw >= 0) val[sw] += -cimag(dot_c(q.ft, q.vrel)) / RC_CSTEP;
-            for (int e = 0; e < 3; e++)
-                if (sc[e * 3 + k] >= 0) val[sc[e * 3 + k]] += cimag(q.dF[e]) / RC_CSTEP;
+            for (int e = 0; e < ps; e++)
+                if (sc[e * ps + k] >= 0) val[sc[e * ps + k]] += cimag(q.dF[e]) / RC_CSTEP;
         }
     }
 }
@@ -145,7 +147,7 @@ void rc_jac_dense_block(const rc_model *m, int is_inter, int e, int mode, int br
         return;
     }
     /* contact points: their states in a scratch of their own, all in mode slip */
-    const int np3 = 3 * m->inter_npt[e];
+    const int np3 = m->inter_pst[e] * m->inter_npt[e];
     T *work = np3 > 0 ? malloc(2 * ((size_t)RC_NS_MAX + (size_t)np3) * sizeof(T)) : NULL;
     if (np3 > 0 && !work) {
         for (int k = 0; k < m->jb_inter[e].nrow * m->jb_inter[e].ncol; k++) out[k] = NAN;
@@ -240,7 +242,7 @@ void rc_inter_report_rate(const rc_model *m, int i, int mode, int branch, int tr
 {
     /* d/dt q = Im(q(y + i h ydot)) / h for every reported quantity q */
     const int ba = m->inter_ba[i], bb = m->inter_bb[i], ns = m->inter_ns[i];
-    const int np3 = 3 * m->inter_npt[i];
+    const int np3 = m->inter_pst[i] * m->inter_npt[i];
     T ya[RC_NB], yb[RC_NB], ysl[RC_NS_MAX];
     /* contact points: their states (read, not differentiated) */
     T *ys = np3 > 0 ? malloc(((size_t)ns + (size_t)np3) * sizeof(T)) : ysl;

@@ -34,7 +34,7 @@ int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, do
     for (int i = 0; i < m->ninter; i++) {
         double *sdot = ydot + m->inter_eadr[i];
         const int ba = m->inter_ba[i], bb = m->inter_bb[i];
-        const int nst = m->inter_ns[i] + 3 * m->inter_npt[i]; /* own and point states */
+        const int nst = m->inter_ns[i] + m->inter_pst[i] * m->inter_npt[i]; /* own and point states */
         if (d->inter_mode[i] == RC_MODE_INACTIVE) {
             memset(sdot, 0, (size_t)nst * sizeof(double));
             continue;

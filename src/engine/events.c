@@ -52,7 +52,7 @@ rc_data *rc_data_new(const rc_model *m)
         }
     }
     d->pt_slip = calloc((size_t)m->npt + 1, sizeof(int));
-    d->pt_work = calloc(5 * (size_t)maxpt + 4 * ((size_t)RC_NS_MAX + 3 * (size_t)maxpt) + 16, sizeof(double));
+    d->pt_work = calloc(5 * (size_t)maxpt + 4 * ((size_t)RC_NS_MAX + 6 * (size_t)maxpt) + 16, sizeof(double));
     int imp_ok = 1;
     if (m->imp) { /* imposed velocities: scratch of rhs and Jacobian (imposed.c) */
         d->imp_free = calloc((size_t)m->ny, sizeof(double));
@@ -136,7 +136,7 @@ static void reset_friction(const rc_model *m, rc_data *d, int i, double *y, int 
     /* friction per contact point: every point sticks afresh */
     for (int j = 0; j < m->inter_npt[i]; j++) {
         d->pt_slip[m->inter_pbase[i] + j] = 0;
-        for (int k = 0; k < 3; k++) set_state(own(m, i, m->inter_ns[i] + 3 * j + k, y), 0.0, changed);
+        for (int k = 0; k < m->inter_pst[i]; k++) set_state(own(m, i, m->inter_ns[i] + m->inter_pst[i] * j + k, y), 0.0, changed);
     }
 }
 
@@ -149,7 +149,7 @@ static void reset_friction(const rc_model *m, rc_data *d, int i, double *y, int 
  * flipped. Returns the number of points flipped. */
 static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y, const int *roots, int *changed)
 {
-    const int npt = m->inter_npt[i];
+    const int npt = m->inter_npt[i], ps = m->inter_pst[i]; /* points, states per point */
     if (npt == 0 || d->inter_mode[i] != RC_MODE_CLOSED) return 0;
     int *sl = d->pt_slip + m->inter_pbase[i];
     double *out = d->pt_work; /* 5 per point (rc_data_new) */
@@ -177,14 +177,14 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
         rc_points_eval(m, d, i, NULL, t, y, out);
         for (int j = 0; j < npt; j++)
             if (sel[j])
-                for (int k = 0; k < 3; k++) set_state(ft + 3 * j + k, out[5 * j + 1 + k], changed);
+                for (int k = 0; k < 3; k++) set_state(ft + ps * j + k, out[5 * j + 1 + k], changed);
         for (int j = 0; j < npt; j++) md[j] = sel[j] ? 1 : sl[j];
         rc_points_eval(m, d, i, md, t, y, out);
         for (int j = 0; j < npt; j++) {
             if (!sel[j] || sl[j]) continue;
             const double *f = out + 5 * j + 1, nr = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
             if (nr > 0 && isfinite(nr)) /* a zero limit (no share) keeps the direction */
-                for (int k = 0; k < 3; k++) set_state(ft + 3 * j + k, f[k], changed);
+                for (int k = 0; k < 3; k++) set_state(ft + ps * j + k, f[k], changed);
         }
         int nst = 0; /* slip -> stick flips */
         for (int j = 0; j < npt; j++) {
@@ -209,8 +209,8 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
                 for (int k = 0; k < 3; k++) nr += out[5 * j + 1 + k] * out[5 * j + 1 + k];
                 if (!(nr > 0) || !isfinite(nr)) continue;
                 for (int k = 0; k < 3; k++) {
-                    keep[3 * j + k] = ft[3 * j + k];
-                    ft[3 * j + k] = out[5 * j + 1 + k];
+                    keep[3 * j + k] = ft[ps * j + k];
+                    ft[ps * j + k] = out[5 * j + 1 + k];
                 }
                 md[j] = 0;
                 ng++;
@@ -224,7 +224,7 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
                         sel[j] = 1;
                         n++;
                     } else {
-                        for (int k = 0; k < 3; k++) ft[3 * j + k] = keep[3 * j + k];
+                        for (int k = 0; k < 3; k++) ft[ps * j + k] = keep[3 * j + k];
                     }
                 }
             }
@@ -244,7 +244,7 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
             rc_points_eval(m, d, i, NULL, t, y, out);
             for (int j = 0; j < npt; j++) {
                 if (!sel[j] || sl[j] || !(out[5 * j] > 0)) continue;
-                double *fj = ft + 3 * j, dv[3], nd = 0.0, nf = 0.0;
+                double *fj = ft + ps * j, dv[3], nd = 0.0, nf = 0.0;
                 for (int k = 0; k < 3; k++) {
                     dv[k] = out[5 * j + 1 + k] - fj[k]; /* -w c_t v_t */
                     nd += dv[k] * dv[k];

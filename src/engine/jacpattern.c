@@ -337,13 +337,14 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
     if (pst) return pst;
     if (m->gwork_adr >= 0) nkey += 3 * (int64_t)m->nbody;
     /* friction per contact point: all kept (which points act depends on
-     * the state), per point P = 3 ncol + 3 nrow + 9 entries: its rows
+     * the state), per point of s states (inter_pst) P = s ncol + s nrow +
+     * s^2 entries: its rows
      * against the block's columns, the block's rows against its columns, its
      * rows against its columns (layout of inter_ptslot) */
     for (int i = 0; i < m->ninter; i++)
         if (m->inter_npt[i] > 0) {
             const rc_jblock *jb = &m->jb_inter[i];
-            const int64_t P = 3 * (int64_t)jb->ncol + 3 * (int64_t)jb->nrow + 9;
+            const int64_t s = m->inter_pst[i], P = s * jb->ncol + s * jb->nrow + s * s;
             nkey += P * m->inter_npt[i];
             m->inter_ptslot[i] = malloc((size_t)(P * m->inter_npt[i]) * sizeof(int64_t));
             if (!m->inter_ptslot[i]) RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
@@ -363,13 +364,13 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
     for (int i = 0; i < m->ninter; i++)
         for (int j = 0; j < m->inter_npt[i]; j++) {
             const rc_jblock *jb = &m->jb_inter[i];
-            const int p0 = m->inter_eadr[i] + m->inter_ns[i] + 3 * j;
-            for (int e = 0; e < 3; e++)
+            const int s = m->inter_pst[i], p0 = m->inter_eadr[i] + m->inter_ns[i] + s * j;
+            for (int e = 0; e < s; e++)
                 for (int c = 0; c < jb->ncol; c++) key[n++] = (int64_t)jb->cols[c] * ny + p0 + e;
             for (int r = 0; r < jb->nrow; r++)
-                for (int e = 0; e < 3; e++) key[n++] = (int64_t)(p0 + e) * ny + jb->rows[r];
-            for (int r = 0; r < 3; r++)
-                for (int e = 0; e < 3; e++) key[n++] = (int64_t)(p0 + e) * ny + p0 + r;
+                for (int e = 0; e < s; e++) key[n++] = (int64_t)(p0 + e) * ny + jb->rows[r];
+            for (int r = 0; r < s; r++)
+                for (int e = 0; e < s; e++) key[n++] = (int64_t)(p0 + e) * ny + p0 + r;
         }
     /* potential of a time-varying gravity: its row against all velocities */
     if (m->gwork_adr >= 0)
@@ -431,15 +432,16 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
     for (int i = 0; i < m->ninter; i++)
         for (int j = 0; j < m->inter_npt[i]; j++) {
             const rc_jblock *jb = &m->jb_inter[i];
-            const int64_t P = 3 * (int64_t)jb->ncol + 3 * (int64_t)jb->nrow + 9;
+            const int s = m->inter_pst[i];
+            const int64_t P = (int64_t)s * jb->ncol + (int64_t)s * jb->nrow + s * s;
             int64_t *sl = m->inter_ptslot[i] + j * P;
-            const int p0 = m->inter_eadr[i] + m->inter_ns[i] + 3 * j;
-            for (int e = 0; e < 3; e++)
+            const int p0 = m->inter_eadr[i] + m->inter_ns[i] + s * j;
+            for (int e = 0; e < s; e++)
                 for (int c = 0; c < jb->ncol; c++) *sl++ = rc_jac_slot(m, p0 + e, jb->cols[c]);
             for (int r = 0; r < jb->nrow; r++)
-                for (int e = 0; e < 3; e++) *sl++ = rc_jac_slot(m, jb->rows[r], p0 + e);
-            for (int r = 0; r < 3; r++)
-                for (int e = 0; e < 3; e++) *sl++ = rc_jac_slot(m, p0 + r, p0 + e);
+                for (int e = 0; e < s; e++) *sl++ = rc_jac_slot(m, jb->rows[r], p0 + e);
+            for (int r = 0; r < s; r++)
+                for (int e = 0; e < s; e++) *sl++ = rc_jac_slot(m, p0 + r, p0 + e);
         }
     return RC_OK;
 }

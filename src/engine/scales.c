@@ -658,7 +658,7 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         }
         /* friction per contact point: each point's F_t as the interface's */
         const int npt = m->inter_npt[i];
-        for (int k = 0; k < 3 * npt; k++) a[m->inter_ns[i] + k] = scaled ? rt * m->inter_fscale[i] : fr->kt * apos;
+        for (int k = 0; k < m->inter_pst[i] * npt; k++) a[m->inter_ns[i] + k] = scaled ? rt * m->inter_fscale[i] : fr->kt * apos;
         /* slip-test band: the force tolerance of F_t, and at least RC_SLIP_BAND
          * of the contact's force scale (the relative band of the limit,
          * carried down to small loads: a load ramped from zero, carried by the

@@ -423,16 +423,6 @@ static rc_status check_seg_pairs(const rc_case *c, rc_model *m, rc_error *err)
                          RC_LOC(c->power[i - c->ntype6].line_loc[3]), m->inter_name[i]);
             continue;
         }
-        const rc_loc loc = c->type6[i].line_loc[1];
-        const rc_fric *fr = &m->inter_fr[i];
-        if (fr->kind == RC_FK_NONE) continue;
-        /* friction per contact point (the nodes of a segment surface):
-         * a filter only with the viscous form; a sphere against segments has the
-         * interface's friction at its deepest point (docs/theory.md 2.7) */
-        if (!rc_pair_nodes(m->inter_pair[i])) continue;
-        if (fr->tau > 0 && fr->form == RC_FF_INCREMENTAL)
-            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s: friction per contact point (a segment surface's nodes) with a filter (/FRICTION/%d, Ifiltr) and the incremental formulation (Iform 2 or 0): not supported yet (supported: the filter with the viscous formulation, Iform 1)",
-                     RC_LOC(loc), m->inter_name[i], fr->card_id);
     }
     return RC_OK;
 }
@@ -486,6 +476,7 @@ static rc_status layout(const rc_case *c, rc_model *m, rc_error *err)
         m->inter_pbase[i] = m->npt;
         m->inter_npt[i] = per_point ? rc_seg_points(m, i) : 0;
         m->npt += m->inter_npt[i];
+        m->inter_pst[i] = per_point && fr->form == RC_FF_INCREMENTAL && fr->tau > 0 ? 6 : 3;
         if (fr->kind != RC_FK_NONE) {
             if (fr->form == RC_FF_INCREMENTAL && !per_point) {
                 fr->tidx = ns;
@@ -498,7 +489,7 @@ static rc_status layout(const rc_case *c, rc_model *m, rc_error *err)
             fr->widx = ns++;
         }
         m->inter_ns[i] = ns;
-        ny += ns + 3 * m->inter_npt[i];
+        ny += ns + m->inter_pst[i] * m->inter_npt[i];
     }
     ny = rc_cpl_layout(m, ny);
     /* a gravity that varies in time has no potential: integrate its work */
@@ -674,6 +665,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->inter_oidx, m->ninter);
     ALLOC(m->inter_fr, m->ninter);
     ALLOC(m->inter_npt, m->ninter);
+    ALLOC(m->inter_pst, m->ninter);
     ALLOC(m->inter_orient, 2 * m->ninter);
     ALLOC(m->inter_pbase, m->ninter);
     ALLOC(m->inter_ptslot, m->ninter);
@@ -734,7 +726,7 @@ void rc_model_free(rc_model *m)
                       m->inter_name, m->atol, m->held, m->row_held, m->gwork_slot, m->surf_ext,
                       m->inter_law, m->inter_pw, m->inter_pscale, m->inter_fscale, m->inter_kscale,
                       m->inter_vscale, m->inter_mred, m->inter_mrest, m->ewt_rel, m->body_loc, m->inter_loc,
-                      m->surf_nadr, m->surf_node, m->surf_sadr, m->surf_seg, m->inter_npt, m->inter_pbase,
+                      m->surf_nadr, m->surf_node, m->surf_sadr, m->surf_seg, m->inter_npt, m->inter_pst, m->inter_pbase,
                       m->inter_ptslot, m->surf_seg_turned, m->inter_orient};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     free(m);

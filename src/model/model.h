@@ -218,12 +218,16 @@ struct rc_model {
                             2 never reversed (solid faces as their element numbers them) */
     /* friction per contact point (a segment surface's nodes against a plane
      * or a box, docs/theory.md 2.7): point j of interface i has its own
-     * tangential force F_t,j (3 states, global frame [N]) at state
-     * inter_eadr[i] + inter_ns[i] + 3 j, right after the interface's own
+     * states (inter_pst[i] of them, global frame [N]: F_t,j, or the filtered
+     * force of the viscous form; F_t,j then its filtered force with the
+     * incremental form and a filter) at state
+     * inter_eadr[i] + inter_ns[i] + inter_pst[i] j, right after the interface's own
      * states, its stick/slip mode rc_data.pt_slip[inter_pbase[i] + j] and
      * its slip root (rc_root_count). inter_npt[i] = 0: none. */
     int npt;             /* points of all interfaces */
     int *inter_npt;      /* [ninter] points of interface i */
+    int *inter_pst;      /* [ninter] states per point: 3 (F_t, or the filtered force of the viscous
+                            form), 6 (incremental form with a filter: F_t, then the filtered force F_f) */
     int *inter_pbase;    /* [ninter] index of its first point */
     int64_t **inter_ptslot; /* [ninter] Jacobian slots of its points (jacpattern.c), NULL: none */
     char **inter_name;   /* [ninter] "/INTER/TYPE6/<id>" */

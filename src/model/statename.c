@@ -24,10 +24,16 @@ void rc_state_name(const rc_model *m, int i, char *buf, size_t n)
     }
     for (int k = 0; k < m->ninter; k++) {
         const int a = m->inter_eadr[k], j = i - a;
-        if (j >= m->inter_ns[k] && j < m->inter_ns[k] + 3 * m->inter_npt[k]) {
-            const int p = (j - m->inter_ns[k]) / 3;
-            snprintf(buf, n, "%s, tangential (friction) force F_t of contact point %d (node %d of the surface) %c [N]",
-                     m->inter_name[k], p + 1, p + 1, "xyz"[(j - m->inter_ns[k]) % 3]);
+        const int ps = m->inter_pst[k];
+        if (j >= m->inter_ns[k] && j < m->inter_ns[k] + ps * m->inter_npt[k]) {
+            const int p = (j - m->inter_ns[k]) / ps, e = (j - m->inter_ns[k]) % ps;
+            const rc_fric *fp = &m->inter_fr[k];
+            /* 3 states: F_t (incremental) or the filtered force (viscous with
+             * a filter); 6: F_t, then the filtered force F_f */
+            const int filt = e >= 3 || (fp->form != RC_FF_INCREMENTAL && fp->tau > 0);
+            snprintf(buf, n, "%s, %s of contact point %d (node %d of the surface) %c [N]", m->inter_name[k],
+                     filt ? "filtered friction force F_f" : "tangential (friction) force F_t", p + 1, p + 1,
+                     "xyz"[e % 3]);
             return;
         }
         if (j < 0 || j >= m->inter_ns[k]) continue;

@@ -209,7 +209,8 @@ rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_b
         f->pen[i] = r.p;
         f->fload[i] = acts ? r.fload : 0.0;
         f->fdamp[i] = acts ? r.fdamp : 0.0;
-        f->fn[i] = acts && (r.fn > 0 || d->inter_settled[i]) ? r.fn : 0.0; /* settled: as it acts */
+        /* settled: as it acts, with its constraint's force on the IDA path */
+        f->fn[i] = acts && (r.fn > 0 || d->inter_settled[i]) ? r.fn + (d->inter_settled[i] ? d->inter_fcstr[i] : 0.0) : 0.0;
         memcpy(f->point + 3 * i, r.point, 3 * sizeof(double));
         memcpy(f->normal + 3 * i, r.normal, 3 * sizeof(double));
         for (int k = 0; k < 3; k++) f->ffric[3 * i + k] = acts ? r.ft[k] : 0.0;
@@ -415,7 +416,7 @@ static rc_status settle(const rc_model *m, rc_data *d, ev_sink *sink, double t, 
 static rc_status record(const rc_backend *bk, void *self, const rc_model *m, const rc_data *d, rc_output *o,
                         frame_buf *fb, double t, const double *y, const double *yp, int at_event, rc_error *err)
 {
-    const double *v = bk->record_vector ? bk->record_vector(self, y, yp) : y;
+    const double *v = bk->record_vector ? bk->record_vector(self, t, y, yp) : y;
     return write_frame(m, d, o, fb, t, v, at_event, err);
 }
 

@@ -27,6 +27,7 @@
 #include "model/imposed.h"
 #include "model/joint.h"
 #include "model/model.h"
+#include "model/stick.h"
 #include "model/power.h"
 #include "output/output.h"
 #include "solver/impacts.h"
@@ -404,8 +405,11 @@ static rc_status settle(const rc_model *m, rc_data *d, ev_sink *sink, double t, 
     s->t_settle = t;
     s->events++;
     if (show) /* with the progress (not with `ricochet run -q`, nor for an embedding without it) */
-        fprintf(stderr, "ricochet: %s settled into persistent contact at t = %.9g s (bounces accumulated)\n",
-                m->inter_name[i], t);
+        fprintf(stderr, "ricochet: %s settled into persistent contact at t = %.9g s (bounces accumulated; %s)\n",
+                m->inter_name[i], t,
+                m->method == 2 && rc_stk_settle_capable(m, i)
+                    ? "held by a unilateral constraint until its force turns tensile"
+                    : "its penalty law held closed until P returns to 0");
     const rc_event ev = {i, "contact_settle"};
     return write_event(m, d, sink, t, y, &ev, err);
 }

@@ -204,7 +204,7 @@ static void test_stick_joints_jacobian_and_multipliers(void)
     ENSURE(b != NULL);
     if (!b) return;
     const int n = m->ny + rc_both_nextra(b);
-    ENSURE(n == m->ny + 2 * m->jnt->nrows + 1 + 2 * rc_stk_count(m));
+    ENSURE(n == m->ny + 2 * m->jnt->nrows + 1 + 3 * rc_stk_slots(m));
     double *Y = calloc((size_t)n, sizeof *Y), *Yp = calloc((size_t)n, sizeof *Yp);
     double *r1 = calloc((size_t)n, sizeof *r1), *r2 = calloc((size_t)n, sizeof *r2), *Y2 = calloc((size_t)n, sizeof *Y2);
     double *jf = calloc((size_t)m->nnz + 1, sizeof *jf), *val = calloc((size_t)rc_both_nnz(b), sizeof *val);
@@ -278,6 +278,103 @@ static char *with_tail(const char *tail)
     return t;
 }
 
+/* A ball resting on a frictionless plane (TYPE6, no friction), settled: the
+ * normal row of the constraint set (its multiplier the normal force), the
+ * Jacobian against central differences, the consistent multiplier m g. */
+static const char *ball_on_plane =
+    "/BEGIN\nsettle\n2022,0\nkg,m,s\nkg,m,s\n"
+    "/FUNCT/1\nk\n0,0\n1,1e6\n"
+    "/NODE\n1,0.001,-0.002,0.0499\n"
+    "/RBODY/1\nb1\n1,,,,1.3\n0.0013,0.0011,0.0017\n0,0,0\n"
+    "/SURF/ELLIPS/1\ns1\n0,2,1\n0.001,-0.002,0.0499\n0.05,0.05,0.05\n"
+    "/SURF/PLANE/2\nfloor\n0,0,0\n0.1,0.05,1\n"
+    "/GRAV/1\ng\n0,Z,0,0,0,,1,-9.81\n"
+    "/INTER/TYPE6/1\nfloor\n1,2\n\n\n1\n\n300\n"
+    "/RUN\n1,0.01\n/END\n";
+
+static void test_stick_settled_normal_row(void)
+{
+    rc_error e;
+    rc_model *m = tu_compile_text(ball_on_plane, "settle.rad", &e);
+    ENSURE(m != NULL);
+    if (!m) return;
+    ENSURE(rc_stk_count(m) == 0 && rc_stk_slots(m) == 1 && rc_stk_settle_capable(m, 0));
+    rc_data *d = rc_data_new(m);
+    rc_stk_work *w = rc_stk_work_new(m);
+    const int n = m->ny + rc_stk_nextra(w);
+    ENSURE(n == m->ny + 3);
+    double *Y = calloc((size_t)n, sizeof *Y), *Yp = calloc((size_t)n, sizeof *Yp);
+    double *r1 = calloc((size_t)n, sizeof *r1), *r2 = calloc((size_t)n, sizeof *r2);
+    double *jf = calloc((size_t)m->nnz + 1, sizeof *jf), *val = calloc((size_t)rc_stk_nnz(w), sizeof *val);
+    rc_initial_state(m, Y);
+    Y[7] = 0.01; /* moving along the plane and spinning: the row holds the normal rate only */
+    Y[10] = 0.3;
+    Y[12] = -0.2;
+    d->inter_mode[0] = RC_MODE_CLOSED;
+    d->inter_settled[0] = 1;
+    /* consistent start: the normal rate zeroed, the multiplier m g cos(tilt)
+     * less the penalty force, the constrained acceleration zero along n */
+    ENSURE(rc_stk_restart(m, d, w, 0.0, Y, Yp) == 0);
+    rc_inter_report rep;
+    rc_inter_report_eval_d(m, d, 0, 0.0, Y, &rep);
+    const double nz = 1.0 / sqrt(0.1 * 0.1 + 0.05 * 0.05 + 1.0);
+    const double lam = Yp[m->ny + 2], want = 1.3 * 9.81 * nz - rep.fn;
+    printf("    settled ball: multiplier %.9g N (m g n_z - F_pen = %.9g N), gap rate %.1e m/s\n", lam, want,
+           rep.vn);
+    ENSURE(fabs(lam - want) < 1e-6 * fabs(want));
+    ENSURE(fabs(rep.vn) < 1e-12);
+    rc_stk_fcstr(m, d, w, 0.0, Y, Yp);
+    ENSURE(fabs(d->inter_fcstr[0] - want) < 1e-6 * fabs(want));
+    perturb(m, Y, Yp, n, 777u, 0.01);
+    const int64_t *cp, *ri;
+    rc_stk_pattern(w, &cp, &ri);
+    double worst = 0;
+    int outside = 0;
+    for (int pass = 0; pass < 2; pass++) {
+        const double cj = pass ? 37.5 : 0.0;
+        rc_assemble_jac(m, d, 0.0, Y, jf);
+        rc_stk_jacobian(m, d, w, cj, Y, Yp, jf, val);
+        for (int c = 0; c < n; c++) {
+            const double h = 1e-6 * fmax(fabs(Y[c]), 0.1), keep = Y[c], keepp = Yp[c];
+            Y[c] = keep + h;
+            Yp[c] = keepp + cj * h;
+            residual(m, d, w, Y, Yp, r1);
+            Y[c] = keep - h;
+            Yp[c] = keepp - cj * h;
+            residual(m, d, w, Y, Yp, r2);
+            Y[c] = keep;
+            Yp[c] = keepp;
+            for (int r = 0; r < n; r++) {
+                const double fd = (r1[r] - r2[r]) / (2 * h);
+                double an = 0;
+                int64_t k;
+                for (k = cp[c]; k < cp[c + 1]; k++)
+                    if (ri[k] == r) break;
+                if (k < cp[c + 1]) an = val[k];
+                else if (fabs(fd) > 1e-6 * fmax(1.0, fabs(r1[r]))) outside++;
+                if (r >= m->ny || r % RC_NB >= 7) {
+                    const double rnd = 100.0 * 2.2e-16 * fmax(fabs(r1[r]), fabs(r2[r])) / h;
+                    const double err = fmax(fabs(an - fd) - rnd, 0.0) / fmax(1.0, fabs(fd));
+                    if (err > worst) worst = err;
+                    if (err > 1e-5) fprintf(stderr, "  cj %g: row %d col %d: exact %.9g, FD %.9g\n", cj, r, c, an, fd);
+                }
+            }
+        }
+    }
+    printf("    settled ball: max scaled |J - FD| = %.1e, %d FD entries outside the pattern\n", worst, outside);
+    ENSURE(worst < 1e-5);
+    ENSURE(outside == 0);
+    free(Y);
+    free(Yp);
+    free(r1);
+    free(r2);
+    free(jf);
+    free(val);
+    rc_stk_work_free(w);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 static void test_stick_refusals(void)
 {
     rc_error e;
@@ -317,6 +414,7 @@ void suite_stick(void)
     RUN_TEST(test_stick_jacobian_matches_finite_differences);
     RUN_TEST(test_stick_consistent_multipliers);
     RUN_TEST(test_stick_joints_jacobian_and_multipliers);
+    RUN_TEST(test_stick_settled_normal_row);
     RUN_TEST(test_stick_refusals);
     tu_tmp_cleanup();
 }

@@ -276,10 +276,11 @@ void rc_inter_report_rate(const rc_model *m, int i, int mode, int branch, int tr
  * material points there, for the exact-stick constraint (model/stick.h;
  * single-point pairs). Complex, for its complex-step derivatives. */
 void rc_stk_geom_c(const rc_model *m, int i, const double complex *ya, const double complex *yb,
-                   double complex *point, double complex *n, double complex *vrel)
+                   double complex *point, double complex *n, double complex *vrel, double complex *ddot)
 {
     geom_c g;
     geometry_c(m, i, ya, yb, &g, NULL);
+    *ddot = g.ddot; /* the exact rate of the signed distance [m/s] */
     for (int k = 0; k < 3; k++) {
         point[k] = g.point[k];
         n[k] = g.n[k];

@@ -34,6 +34,7 @@ rc_data *rc_data_new(const rc_model *m)
     d->inter_dref = calloc(3 * n, sizeof(double));
     d->inter_band = calloc(2 * n, sizeof(double));
     d->inter_settled = calloc(n, sizeof(int));
+    d->inter_fcstr = calloc(n, sizeof(double));
     d->cpl = rc_cpl_data_new(m);
     /* friction per contact point: modes, and the scratch of the roots (5 per
      * point) and of the Jacobian (complex own and point states and rates) */
@@ -74,7 +75,7 @@ rc_data *rc_data_new(const rc_model *m)
             jc_ok = d->jcache != NULL;
         }
     }
-    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->inter_settled || !d->cpl || !imp_ok || !jc_ok ||
+    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->inter_settled || !d->inter_fcstr || !d->cpl || !imp_ok || !jc_ok ||
         !d->pt_slip || !d->pt_work || !d->node_cache) {
         rc_data_free(d);
         return NULL;
@@ -93,6 +94,7 @@ void rc_data_free(rc_data *d)
     free(d->inter_dref);
     free(d->inter_band);
     free(d->inter_settled);
+    free(d->inter_fcstr);
     free(d->pt_slip);
     free(d->pt_work);
     free(d->seg_hint); /* and the node cache */

@@ -11,6 +11,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -22,7 +23,8 @@
 typedef double complex cx;
 
 #define SK_STEP 1e-40            /* complex step, as assemble_jac.c */
-#define SK_MAXB (2 * RC_NB + 2)  /* rows (= columns) of an interface's dense block */
+#define SK_R 3                  /* rows per slot: t_1, t_2 (exact stick), n (settled) */
+#define SK_MAXB (2 * RC_NB + SK_R)  /* rows (= columns) of an interface's dense block */
 
 /* The stretch-fixed part of the constraints: the exact interfaces, the
  * helper axis of each tangent basis, the scratch of the multipliers. */
@@ -48,17 +50,43 @@ struct rc_stk_work {
     int nr;   /* constraint rows of the stretch (rc_stk_prepare) */
     int64_t nnz;
     int64_t *colptr, *rowind, *mslot, *diag, *bslot; /* bslot: [ns SK_MAXB^2] */
-    double *atol; /* [2 ns] */
+    double *atol; /* [SK_R ns] */
+    double *f;    /* [ny] scratch of the roots: the rates without the constraints */
 };
+
+
+static int sticking(const rc_data *d, int i) { return d->inter_mode[i] == RC_MODE_CLOSED && !d->inter_slip[i]; }
+
+static int exact_of(const rc_model *m, int i) { return m->inter_fr[i].exact && m->inter_fr[i].tidx >= 0; }
+
+int rc_stk_settle_capable(const rc_model *m, int i)
+{
+    return !(m->jnt && m->jnt->n > 0) && m->inter_npt[i] == 0 && !rc_pair_multi(m->inter_pair[i]) && m->inter_fr[i].kind == RC_FK_NONE &&
+           !m->inter_fr[i].exact;
+}
+
+/* The rows of interface i that are constraints in d's modes (bits 0, 1:
+ * the tangential rows of a sticking exact contact; bit 2: the normal row
+ * of a settled contact). */
+static int act_of(const rc_model *m, const rc_data *d, int i)
+{
+    if (exact_of(m, i)) return sticking(d, i) ? 3 : 0;
+    return d->inter_mode[i] == RC_MODE_CLOSED && d->inter_settled[i] ? 4 : 0;
+}
 
 int rc_stk_count(const rc_model *m)
 {
     int n = 0;
-    for (int i = 0; i < m->ninter; i++) n += m->inter_fr[i].exact && m->inter_fr[i].tidx >= 0;
+    for (int i = 0; i < m->ninter; i++) n += exact_of(m, i);
     return n;
 }
 
-static int sticking(const rc_data *d, int i) { return d->inter_mode[i] == RC_MODE_CLOSED && !d->inter_slip[i]; }
+int rc_stk_slots(const rc_model *m)
+{
+    int n = 0;
+    for (int i = 0; i < m->ninter; i++) n += exact_of(m, i) || rc_stk_settle_capable(m, i);
+    return n;
+}
 
 /* Rows that take a force: not held by /BCS, not imposed by /IMPVEL (their
  * supports carry the constraint's share). */
@@ -123,23 +151,25 @@ static void body_terms(const rc_model *m, int b, const cx *yb, const cx *p, cons
     }
 }
 
-/* Interface i's constraint rows c[2] and (ra, rb not NULL) the residual
- * terms of its bodies under the multipliers lam[2]; point and basis out
+/* Interface i's constraint rows c[SK_R] and (ra, rb not NULL) the residual
+ * terms of its bodies under the multipliers lam[SK_R]; point and basis out
  * when asked (pt, t1, t2 not NULL). */
 static void kern(const rc_model *m, int i, const double *h, const cx *ya, const cx *yb, const cx *lam, cx *ra, cx *rb,
                  cx *c, cx *pt, cx *tb1, cx *tb2)
 {
-    cx p[3], n[3], v[3], t1[3], t2[3];
-    rc_stk_geom_c(m, i, ya, yb, p, n, v);
+    cx p[3], n[3], v[3], t1[3], t2[3], dd;
+    rc_stk_geom_c(m, i, ya, yb, p, n, v, &dd);
     basis(h, n, t1, t2);
     c[0] = cdot(t1, v);
     c[1] = cdot(t2, v);
+    c[2] = dd; /* the rate of the signed distance (a settled contact: P frozen) */
     for (int k = 0; k < 3 && pt; k++) pt[k] = p[k];
     for (int k = 0; k < 3 && tb1; k++) tb1[k] = t1[k];
     for (int k = 0; k < 3 && tb2; k++) tb2[k] = t2[k];
     if (!ra && !rb) return;
     cx F[3];
-    for (int k = 0; k < 3; k++) F[k] = lam[0] * t1[k] + lam[1] * t2[k];
+    /* lam[2] the normal force (>= 0 in compression): -lam[2] n on a */
+    for (int k = 0; k < 3; k++) F[k] = lam[0] * t1[k] + lam[1] * t2[k] - lam[2] * n[k];
     if (ra) body_terms(m, m->inter_ba[i], ya, p, F, 1.0, ra);
     if (rb) body_terms(m, m->inter_bb[i], yb, p, F, -1.0, rb);
 }
@@ -163,7 +193,7 @@ static void load(const rc_model *m, int i, const double *Y, const double *z, cx 
 static void add_unit(const rc_model *m, const sk_core *K, int q, int k, const double *Y, double s, double *z)
 {
     const int i = K->inter[q];
-    cx ya[RC_NB], yb[RC_NB], lam[2] = {k == 0 ? s : 0.0, k == 1 ? s : 0.0}, ra[RC_NB], rb[RC_NB], c[2];
+    cx ya[RC_NB], yb[RC_NB], lam[SK_R] = {k == 0 ? s : 0.0, k == 1 ? s : 0.0, k == 2 ? s : 0.0}, ra[RC_NB], rb[RC_NB], c[SK_R];
     load(m, i, Y, NULL, ya, yb);
     const int aa = free_adr(m, m->inter_ba[i]), ab = free_adr(m, m->inter_bb[i]);
     kern(m, i, K->axis + 3 * q, ya, yb, lam, ra, rb, c, NULL, NULL, NULL);
@@ -178,11 +208,10 @@ static void add_unit(const rc_model *m, const sk_core *K, int q, int k, const do
 static void c_along(const rc_model *m, const sk_core *K, int q, const double *Y, const double *z, double *dc)
 {
     const int i = K->inter[q];
-    cx ya[RC_NB], yb[RC_NB], c[2];
+    cx ya[RC_NB], yb[RC_NB], c[SK_R];
     load(m, i, Y, z, ya, yb);
     kern(m, i, K->axis + 3 * q, ya, yb, NULL, NULL, NULL, c, NULL, NULL, NULL);
-    dc[0] = cimag(c[0]) / SK_STEP;
-    dc[1] = cimag(c[1]) / SK_STEP;
+    for (int k = 0; k < SK_R; k++) dc[k] = cimag(c[k]) / SK_STEP;
 }
 
 /* A[j][l] = (dc_rows[j] / dy) (accelerations of the unit multiplier of
@@ -191,11 +220,11 @@ static void build_A(const rc_model *m, sk_core *K, const double *Y, const int *r
 {
     for (int l = 0; l < nr; l++) {
         memset(K->z, 0, (size_t)K->ny * sizeof(double));
-        add_unit(m, K, rows[l] / 2, rows[l] % 2, Y, 1.0, K->z);
+        add_unit(m, K, rows[l] / SK_R, rows[l] % SK_R, Y, 1.0, K->z);
         for (int j = 0; j < nr; j++) {
-            double dc[2];
-            c_along(m, K, rows[j] / 2, Y, K->z, dc);
-            K->A[j * nr + l] = dc[rows[j] % 2];
+            double dc[SK_R];
+            c_along(m, K, rows[j] / SK_R, Y, K->z, dc);
+            K->A[j * nr + l] = dc[rows[j] % SK_R];
         }
     }
 }
@@ -208,21 +237,22 @@ static int active_rows(const rc_model *m, sk_core *K, const double *Y)
     int nr = 0;
     double dmax = 0;
     for (int q = 0; q < K->ns; q++)
-        for (int k = 0; k < 2; k++) {
-            K->ron[2 * q + k] = 0;
-            if (!K->act[q]) continue;
+        for (int k = 0; k < SK_R; k++) {
+            K->ron[SK_R * q + k] = 0;
+            K->b[SK_R * q + k] = 0.0;
+            if (!(K->act[q] >> k & 1)) continue;
             memset(K->z, 0, (size_t)K->ny * sizeof(double));
             add_unit(m, K, q, k, Y, 1.0, K->z);
-            double dc[2];
+            double dc[SK_R];
             c_along(m, K, q, Y, K->z, dc);
-            K->b[2 * q + k] = dc[k];
+            K->b[SK_R * q + k] = dc[k];
             dmax = fmax(dmax, dc[k]);
         }
     for (int q = 0; q < K->ns; q++)
-        for (int k = 0; k < 2; k++)
-            if (K->act[q] && K->b[2 * q + k] > 1e-12 * dmax) {
-                K->ron[2 * q + k] = 1;
-                K->idx[nr++] = 2 * q + k;
+        for (int k = 0; k < SK_R; k++)
+            if ((K->act[q] >> k & 1) && K->b[SK_R * q + k] > 1e-12 * dmax) {
+                K->ron[SK_R * q + k] = 1;
+                K->idx[nr++] = SK_R * q + k;
             }
     return nr;
 }
@@ -254,9 +284,9 @@ static int solve(const rc_model *m, sk_core *K, const double *Y, int nr)
 static int multipliers(const rc_model *m, sk_core *K, const double *Y, const double *f, int nr)
 {
     for (int j = 0; j < nr; j++) {
-        double dc[2];
-        c_along(m, K, K->idx[j] / 2, Y, f, dc);
-        K->b[j] = -dc[K->idx[j] % 2];
+        double dc[SK_R];
+        c_along(m, K, K->idx[j] / SK_R, Y, f, dc);
+        K->b[j] = -dc[K->idx[j] % SK_R];
     }
     return solve(m, K, Y, nr);
 }
@@ -265,9 +295,9 @@ static int multipliers(const rc_model *m, sk_core *K, const double *Y, const dou
 static void set_axis(const rc_model *m, sk_core *K, int q, const double *Y)
 {
     const int i = K->inter[q];
-    cx ya[RC_NB], yb[RC_NB], p[3], n[3], v[3];
+    cx ya[RC_NB], yb[RC_NB], p[3], n[3], v[3], dd;
     load(m, i, Y, NULL, ya, yb);
-    rc_stk_geom_c(m, i, ya, yb, p, n, v);
+    rc_stk_geom_c(m, i, ya, yb, p, n, v, &dd);
     int j = 0;
     for (int k = 1; k < 3; k++)
         if (fabs(creal(n[k])) < fabs(creal(n[j]))) j = k;
@@ -293,24 +323,24 @@ static int core_init(const rc_model *m, sk_core *K)
 {
     memset(K, 0, sizeof *K);
     K->ny = m->ny;
-    K->ns = rc_stk_count(m);
+    K->ns = rc_stk_slots(m);
     const size_t ns = (size_t)K->ns + 1;
     K->inter = calloc(ns, sizeof *K->inter);
     K->axis = calloc(3 * ns, sizeof *K->axis);
     K->act = calloc(ns, sizeof *K->act);
-    K->A = calloc(4 * ns * ns, sizeof *K->A);
-    K->b = calloc(2 * ns, sizeof *K->b);
-    K->perm = calloc(2 * ns, sizeof *K->perm);
+    K->A = calloc(SK_R * SK_R * ns * ns, sizeof *K->A);
+    K->b = calloc(SK_R * ns, sizeof *K->b);
+    K->perm = calloc(SK_R * ns, sizeof *K->perm);
     K->z = calloc((size_t)m->ny + 1, sizeof *K->z);
-    K->idx = calloc(2 * ns, sizeof *K->idx);
-    K->ron = calloc(2 * ns, sizeof *K->ron);
+    K->idx = calloc(SK_R * ns, sizeof *K->idx);
+    K->ron = calloc(SK_R * ns, sizeof *K->ron);
     if (!K->inter || !K->axis || !K->act || !K->A || !K->b || !K->perm || !K->z || !K->idx || !K->ron) {
         core_free(K);
         return -1;
     }
     int q = 0;
     for (int i = 0; i < m->ninter; i++)
-        if (m->inter_fr[i].exact && m->inter_fr[i].tidx >= 0) {
+        if (exact_of(m, i) || rc_stk_settle_capable(m, i)) {
             K->inter[q] = i;
             K->axis[3 * q] = 1.0;
             q++;
@@ -332,8 +362,7 @@ static int block_idx(const rc_model *m, const rc_stk_work *w, int q, int *idx)
     int n = 0;
     for (int k = 0; aa >= 0 && k < RC_NB; k++) idx[n++] = aa + k;
     for (int k = 0; ab >= 0 && k < RC_NB; k++) idx[n++] = ab + k;
-    idx[n++] = w->base + 2 * q;
-    idx[n++] = w->base + 2 * q + 1;
+    for (int k = 0; k < SK_R; k++) idx[n++] = w->base + SK_R * q + k;
     return n;
 }
 
@@ -341,7 +370,7 @@ void rc_stk_work_free(rc_stk_work *w)
 {
     if (!w) return;
     core_free(&w->k);
-    void *p[] = {w->colptr, w->rowind, w->mslot, w->diag, w->bslot, w->atol};
+    void *p[] = {w->colptr, w->rowind, w->mslot, w->diag, w->bslot, w->atol, w->f};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     free(w);
 }
@@ -357,15 +386,16 @@ rc_stk_work *rc_stk_work_new_at(const rc_model *m, int base)
         return NULL;
     }
     w->base = base;
-    const int ns = w->k.ns, n = w->n = base + 2 * ns;
+    const int ns = w->k.ns, n = w->n = base + SK_R * ns;
     const int64_t cap = m->nnz + n + (int64_t)ns * SK_MAXB * SK_MAXB;
     int64_t *key = malloc((size_t)cap * sizeof *key);
-    w->atol = calloc(2 * (size_t)ns + 1, sizeof *w->atol);
+    w->atol = calloc(SK_R * (size_t)ns + 1, sizeof *w->atol);
+    w->f = calloc((size_t)m->ny + 1, sizeof *w->f);
     w->diag = calloc((size_t)n, sizeof *w->diag);
     w->mslot = calloc((size_t)m->nnz + 1, sizeof *w->mslot);
     w->colptr = calloc((size_t)n + 1, sizeof *w->colptr);
     w->bslot = malloc(((size_t)ns * SK_MAXB * SK_MAXB + 1) * sizeof *w->bslot);
-    if (!key || !w->atol || !w->diag || !w->mslot || !w->colptr || !w->bslot) {
+    if (!key || !w->atol || !w->f || !w->diag || !w->mslot || !w->colptr || !w->bslot) {
         free(key);
         rc_stk_work_free(w);
         return NULL;
@@ -403,12 +433,12 @@ rc_stk_work *rc_stk_work_new_at(const rc_model *m, int base)
             const int adr = free_adr(m, bs[e]);
             if (adr >= 0) a = fmin(a, m->body_mass[bs[e]] * m->atol[adr + 7]);
         }
-        w->atol[2 * q] = w->atol[2 * q + 1] = isfinite(a) && a > 0 ? a : 1.0;
+        for (int k = 0; k < SK_R; k++) w->atol[SK_R * q + k] = isfinite(a) && a > 0 ? a : 1.0;
     }
     return w;
 }
 
-int rc_stk_nextra(const rc_stk_work *w) { return 2 * w->k.ns; }
+int rc_stk_nextra(const rc_stk_work *w) { return SK_R * w->k.ns; }
 int64_t rc_stk_nnz(const rc_stk_work *w) { return w->nnz; }
 
 void rc_stk_pattern(const rc_stk_work *w, const int64_t **colptr, const int64_t **rowind)
@@ -430,13 +460,12 @@ void rc_stk_residual(const rc_model *m, const rc_data *d, const rc_stk_work *w, 
                      double *r)
 {
     for (int q = 0; q < w->k.ns; q++) {
-        const int i = w->k.inter[q], row = w->base + 2 * q;
-        if (!sticking(d, i)) {
-            r[row] = Yp[row];
-            r[row + 1] = Yp[row + 1];
+        const int i = w->k.inter[q], row = w->base + SK_R * q;
+        if (!act_of(m, d, i)) {
+            for (int k = 0; k < SK_R; k++) r[row + k] = Yp[row + k];
             continue;
         }
-        cx ya[RC_NB], yb[RC_NB], ra[RC_NB], rb[RC_NB], c[2], lam[2] = {Yp[row], Yp[row + 1]};
+        cx ya[RC_NB], yb[RC_NB], ra[RC_NB], rb[RC_NB], c[SK_R], lam[SK_R] = {Yp[row], Yp[row + 1], Yp[row + 2]};
         load(m, i, Y, NULL, ya, yb);
         const int aa = free_adr(m, m->inter_ba[i]), ab = free_adr(m, m->inter_bb[i]);
         kern(m, i, w->k.axis + 3 * q, ya, yb, lam, ra, rb, c, NULL, NULL, NULL);
@@ -445,7 +474,7 @@ void rc_stk_residual(const rc_model *m, const rc_data *d, const rc_stk_work *w, 
             if (ab >= 0 && row_free(m, ab + k)) r[ab + k] += creal(rb[k]);
         }
         /* a row the supports hold: its multiplier is 0 */
-        for (int k = 0; k < 2; k++) r[row + k] = w->k.ron[2 * q + k] ? creal(c[k]) : Yp[row + k];
+        for (int k = 0; k < SK_R; k++) r[row + k] = w->k.ron[SK_R * q + k] ? creal(c[k]) : Yp[row + k];
     }
 }
 
@@ -457,23 +486,22 @@ void rc_stk_jacobian(const rc_model *m, const rc_data *d, const rc_stk_work *w, 
     for (int64_t k = 0; k < m->nnz; k++) val[w->mslot[k]] -= jf[k];
     for (int k = 0; k < ny; k++) val[w->diag[k]] += cj;
     for (int q = 0; q < w->k.ns; q++) {
-        const int i = w->k.inter[q], row = w->base + 2 * q;
-        if (!sticking(d, i)) {
-            val[w->diag[row]] += cj;
-            val[w->diag[row + 1]] += cj;
+        const int i = w->k.inter[q], row = w->base + SK_R * q;
+        if (!act_of(m, d, i)) {
+            for (int k = 0; k < SK_R; k++) val[w->diag[row + k]] += cj;
             continue;
         }
         const int aa = free_adr(m, m->inter_ba[i]), ab = free_adr(m, m->inter_bb[i]);
-        const int na = aa >= 0 ? RC_NB : 0, nb = ab >= 0 ? RC_NB : 0, nc = na + nb + 2;
+        const int na = aa >= 0 ? RC_NB : 0, nb = ab >= 0 ? RC_NB : 0, nc = na + nb + SK_R;
         int idx[SK_MAXB];
         block_idx(m, w, q, idx);
-        cx ya[RC_NB], yb[RC_NB], lam[2] = {Yp[row], Yp[row + 1]};
+        cx ya[RC_NB], yb[RC_NB], lam[SK_R] = {Yp[row], Yp[row + 1], Yp[row + 2]};
         load(m, i, Y, NULL, ya, yb);
         const int64_t *slot = w->bslot + (int64_t)q * SK_MAXB * SK_MAXB;
         for (int c = 0; c < nc; c++) {
             cx *p = c < na ? ya + c : c < na + nb ? yb + (c - na) : lam + (c - na - nb);
             *p += I * SK_STEP;
-            cx ra[RC_NB], rb[RC_NB], cv[2];
+            cx ra[RC_NB], rb[RC_NB], cv[SK_R];
             kern(m, i, w->k.axis + 3 * q, ya, yb, lam, na ? ra : NULL, nb ? rb : NULL, cv, NULL, NULL, NULL);
             *p = creal(*p);
             /* d/dLambda = cj d/dlambda: the residual holds lambda = Lambda' */
@@ -483,11 +511,11 @@ void rc_stk_jacobian(const rc_model *m, const rc_data *d, const rc_stk_work *w, 
                 if (row_free(m, idx[r])) val[slot[r * nc + c]] += sc * cimag(ra[k]);
             for (int k = 0; k < nb; k++, r++)
                 if (row_free(m, idx[r])) val[slot[r * nc + c]] += sc * cimag(rb[k]);
-            for (int k = 0; k < 2; k++, r++)
-                if (w->k.ron[2 * q + k]) val[slot[r * nc + c]] += sc * cimag(cv[k]);
+            for (int k = 0; k < SK_R; k++, r++)
+                if (w->k.ron[SK_R * q + k]) val[slot[r * nc + c]] += sc * cimag(cv[k]);
         }
-        for (int k = 0; k < 2; k++)
-            if (!w->k.ron[2 * q + k]) val[w->diag[row + k]] += cj;
+        for (int k = 0; k < SK_R; k++)
+            if (!w->k.ron[SK_R * q + k]) val[w->diag[row + k]] += cj;
     }
 }
 
@@ -498,22 +526,22 @@ int rc_stk_prepare(const rc_model *m, rc_data *d, rc_stk_work *w, double *Y)
     const int ny = m->ny;
     for (int q = 0; q < K->ns; q++) {
         set_axis(m, K, q, Y);
-        K->act[q] = sticking(d, K->inter[q]);
+        K->act[q] = act_of(m, d, K->inter[q]);
     }
     const int nr = w->nr = active_rows(m, K, Y);
     if (nr == 0) return 0;
     /* the velocities made exact: u += M^-1 G^T x, A x = -c (G depends on
      * the positions only; the change of least kinetic energy) */
     for (int j = 0; j < nr; j++) {
-        const int q = K->idx[j] / 2, i = K->inter[q];
-        cx ya[RC_NB], yb[RC_NB], c[2];
+        const int q = K->idx[j] / SK_R, i = K->inter[q];
+        cx ya[RC_NB], yb[RC_NB], c[SK_R];
         load(m, i, Y, NULL, ya, yb);
         kern(m, i, K->axis + 3 * q, ya, yb, NULL, NULL, NULL, c, NULL, NULL, NULL);
-        K->b[j] = -creal(c[K->idx[j] % 2]);
+        K->b[j] = -creal(c[K->idx[j] % SK_R]);
     }
     if (solve(m, K, Y, nr)) return -1;
     memset(K->z, 0, (size_t)ny * sizeof(double));
-    for (int j = 0; j < nr; j++) add_unit(m, K, K->idx[j] / 2, K->idx[j] % 2, Y, K->b[j], K->z);
+    for (int j = 0; j < nr; j++) add_unit(m, K, K->idx[j] / SK_R, K->idx[j] % SK_R, Y, K->b[j], K->z);
     for (int k = 0; k < ny; k++) Y[k] += K->z[k];
     return 0;
 }
@@ -522,13 +550,14 @@ int rc_stk_consistent(const rc_model *m, rc_stk_work *w, const double *Y, double
 {
     sk_core *K = &w->k;
     const int ny = m->ny, nr = w->nr;
-    for (int q = 0; q < K->ns; q++) Yp[w->base + 2 * q] = Yp[w->base + 2 * q + 1] = 0.0;
+    for (int q = 0; q < K->ns; q++)
+        for (int k = 0; k < SK_R; k++) Yp[w->base + SK_R * q + k] = 0.0;
     if (nr == 0) return 0;
     if (multipliers(m, K, Y, Yp, nr)) return -1;
     memset(K->z, 0, (size_t)ny * sizeof(double));
     for (int j = 0; j < nr; j++) {
         Yp[w->base + K->idx[j]] = K->b[j];
-        add_unit(m, K, K->idx[j] / 2, K->idx[j] % 2, Y, K->b[j], K->z);
+        add_unit(m, K, K->idx[j] / SK_R, K->idx[j] % SK_R, Y, K->b[j], K->z);
     }
     for (int k = 0; k < ny; k++) Yp[k] += K->z[k];
     return 0;
@@ -545,21 +574,51 @@ int rc_stk_restart(const rc_model *m, rc_data *d, rc_stk_work *w, double t, doub
 static void force_of(const rc_model *m, const sk_core *K, int q, const double *Y, const double *lam, double *F)
 {
     const int i = K->inter[q];
-    cx ya[RC_NB], yb[RC_NB], c[2], t1[3], t2[3];
+    cx ya[RC_NB], yb[RC_NB], c[SK_R], t1[3], t2[3];
     load(m, i, Y, NULL, ya, yb);
     kern(m, i, K->axis + 3 * q, ya, yb, NULL, NULL, NULL, c, NULL, t1, t2);
     for (int k = 0; k < 3; k++) F[k] = lam[0] * creal(t1[k]) + lam[1] * creal(t2[k]);
 }
 
-void rc_stk_roots(const rc_model *m, const rc_data *d, const rc_stk_work *w, double t, const double *Y,
-                  const double *Yp, double *g)
+/* The normal force of the settled contacts: their multipliers from the
+ * acceleration-level equations at (t, Y), in K->b (the integrator's
+ * interpolated Lambda' of an algebraic row is not reliable between its
+ * steps: the roots and the records take these). 1: solved. */
+static int settled_solve(const rc_model *m, rc_data *d, rc_stk_work *w, double t, const double *Y)
 {
+    sk_core *K = &w->k;
+    int settled = 0;
+    for (int q = 0; q < K->ns; q++) settled |= (act_of(m, d, K->inter[q]) & 4) && K->ron[SK_R * q + 2];
+    return settled && w->nr > 0 && !rc_assemble_rhs(m, d, t, Y, w->f) && !multipliers(m, K, Y, w->f, w->nr);
+}
+
+/* Slot q's normal multiplier [N]: solved (settled_solve), else Yp's. */
+static double settled_force(const rc_stk_work *w, int solved, int q, const double *Yp)
+{
+    for (int j = 0; solved && j < w->nr; j++)
+        if (w->k.idx[j] == SK_R * q + 2) return w->k.b[j];
+    return Yp[w->base + SK_R * q + 2];
+}
+
+void rc_stk_roots(const rc_model *m, rc_data *d, rc_stk_work *w, double t, const double *Y, const double *Yp,
+                  double *g)
+{
+    sk_core *K = &w->k;
+    const int solved = settled_solve(m, d, w, t, Y);
     for (int q = 0; q < w->k.ns; q++) {
         const int i = w->k.inter[q];
-        if (!sticking(d, i)) continue;
+        const int act = act_of(m, d, i);
+        if (!act) continue;
         rc_inter_report r;
         rc_inter_report_eval_d(m, d, i, t, Y, &r);
-        const double *lam = Yp + w->base + 2 * q;
+        const double *lam = Yp + w->base + SK_R * q;
+        if (act & 4) {
+            /* settled: released when the normal force (the multiplier and
+             * the penalty force of the frozen penetration) turns tensile */
+            if (!K->ron[SK_R * q + 2]) continue;
+            g[RC_ROOTS_PER_INTER * i + RC_ROOT_FORCE] = settled_force(w, solved, q, Yp) + r.fn;
+            continue;
+        }
         /* no band: the multiplier is exact (algebraic), no spring rings
          * about the limit nor does a damper carry a ramped load */
         const double s = r.flim;
@@ -572,9 +631,9 @@ void rc_stk_sync(const rc_model *m, const rc_data *d, const rc_stk_work *w, cons
 {
     for (int q = 0; q < w->k.ns; q++) {
         const int i = w->k.inter[q];
-        if (!sticking(d, i)) continue;
+        if (act_of(m, d, i) != 3) continue;
         double F[3];
-        force_of(m, &w->k, q, Y, Yp + w->base + 2 * q, F);
+        force_of(m, &w->k, q, Y, Yp + w->base + SK_R * q, F);
         double *ft = Yout + m->inter_eadr[i] + m->inter_fr[i].tidx;
         for (int k = 0; k < 3; k++) ft[k] = F[k];
     }
@@ -598,7 +657,7 @@ static int decide_with_joints(const rc_model *m, rc_data *d, int i, double t, co
             if (w->k.inter[q] == i) me = q;
         if (me >= 0 && !rc_both_consistent(m, d, b, t, Y, Yp)) {
             double F[3];
-            force_of(m, &w->k, me, Y, Yp + w->base + 2 * me, F);
+            force_of(m, &w->k, me, Y, Yp + w->base + SK_R * me, F);
             const double nf = sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
             st = nf > flim;
             for (int k = 0; k < 3; k++) e[k] = nf > 0 ? F[k] / nf : 0.0;
@@ -631,15 +690,15 @@ int rc_stk_decide(const rc_model *m, rc_data *d, int i, double t, const double *
     double *f = malloc(((size_t)m->ny + 1) * sizeof *f);
     int me = -1, st = -1;
     for (int q = 0; q < K.ns; q++) {
-        K.act[q] = sticking(d, K.inter[q]);
+        K.act[q] = act_of(m, d, K.inter[q]);
         if (K.inter[q] == i) me = q;
         set_axis(m, &K, q, y);
     }
     const int nr = me >= 0 ? active_rows(m, &K, y) : 0;
     if (f && me >= 0 && !rc_assemble_rhs(m, d, t, y, f) && (nr == 0 || !multipliers(m, &K, y, f, nr))) {
-        double lam[2] = {0.0, 0.0}, F[3];
+        double lam[SK_R] = {0.0, 0.0, 0.0}, F[3];
         for (int j = 0; j < nr; j++)
-            if (K.idx[j] / 2 == me) lam[K.idx[j] % 2] = K.b[j];
+            if (K.idx[j] / SK_R == me) lam[K.idx[j] % SK_R] = K.b[j];
         force_of(m, &K, me, y, lam, F);
         const double nf = sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
         st = nf > r.flim; /* the slip root's limit */
@@ -648,4 +707,13 @@ int rc_stk_decide(const rc_model *m, rc_data *d, int i, double t, const double *
     free(f);
     core_free(&K);
     return st;
+}
+
+void rc_stk_fcstr(const rc_model *m, rc_data *d, rc_stk_work *w, double t, const double *Y, const double *Yp)
+{
+    for (int i = 0; i < m->ninter; i++) d->inter_fcstr[i] = 0.0;
+    const int solved = settled_solve(m, d, w, t, Y);
+    for (int q = 0; q < w->k.ns; q++)
+        if (act_of(m, d, w->k.inter[q]) & 4 && w->k.ron[SK_R * q + 2])
+            d->inter_fcstr[w->k.inter[q]] = settled_force(w, solved, q, Yp);
 }

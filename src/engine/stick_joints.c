@@ -18,7 +18,7 @@
 struct rc_both {
     rc_jnt_work *jw;
     rc_stk_work *sw;
-    int ny, nj, n;          /* n = ny + nj + 2 ns */
+    int ny, nj, n;          /* n = ny + nj + 3 ns (rc_stk_nextra) */
     int64_t nnz;            /* entries of the union */
     int64_t *ucol, *urow;   /* [n + 1], [nnz] */
     int64_t *jmap, *smap;   /* slot of each entry of the joints' / stick's pattern */

@@ -300,6 +300,9 @@ typedef struct rc_data {
                             last, -1: none (geom_seg.inc, node_seg) */
     double *inter_dref;  /* [ninter*3] sliding direction when a stateless friction
                             law saturated (reversal root) [-] */
+    double *inter_fcstr; /* [ninter] the normal force a settled contact's
+                            constraint carries (IDA path, engine/stick.c;
+                            set at records, 0 otherwise) [N] */
     int *inter_settled;  /* [ninter] 1: a closed contact held in persistent contact
                             after its bounces accumulated (the release at zero
                             force suspended; it opens when P returns to 0;

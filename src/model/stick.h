@@ -11,8 +11,12 @@
  * F = lambda_1 t_1 + lambda_2 t_2 at the contact point (-F on b). As for
  * the joints (model/joint.h), each enters as the derivative of an
  * integrated impulse Lambda_k [N s]: lambda = Lambda'. The integrator's
- * vector is Y = [y, Lambda] (2 per exact interface, in interface order);
+ * vector is Y = [y, Lambda] (3 per slot, in interface order: below);
  * when an interface slides, is open or inactive its rows are Lambda' = 0.
+ * A third row per slot holds a settled contact (docs/theory.md 5.2): the
+ * rate of the signed distance dd/dt = 0, its multiplier lambda_n [N] the
+ * normal force beyond the penalty law (-lambda_n n on a); the slots are
+ * the exact interfaces and the settle-capable ones, three rows each.
  *
  * Evaluated by engine/stick.c, driven by solver/ida.c and engine/events.c.
  */
@@ -25,6 +29,13 @@
 
 /* Interfaces with exact stick (0: none). */
 int rc_stk_count(const rc_model *m);
+/* Can interface i settle into a unilateral constraint (a normal row, its
+ * multiplier the normal force; docs/theory.md 5.2)? Single-point analytic
+ * pairs without friction. */
+int rc_stk_settle_capable(const rc_model *m, int i);
+/* Slots of the constraint set: the exact interfaces and the settle-capable
+ * ones, three rows each (t_1, t_2, n). */
+int rc_stk_slots(const rc_model *m);
 
 typedef struct rc_stk_work rc_stk_work;
 /* Extended pattern and scratch of a run; NULL: out of memory. */
@@ -34,7 +45,11 @@ rc_stk_work *rc_stk_work_new(const rc_model *m);
  * The pattern then spans Y[0 .. base + 2 ns). */
 rc_stk_work *rc_stk_work_new_at(const rc_model *m, int base);
 void rc_stk_work_free(rc_stk_work *w);
-int rc_stk_nextra(const rc_stk_work *w); /* 2 per exact interface */
+/* d->inter_fcstr: the normal multipliers of the settled contacts [N] at
+ * (t, Y), from the acceleration-level equations (Yp's Lambda' if they
+ * fail); 0 for the others. */
+void rc_stk_fcstr(const rc_model *m, rc_data *d, rc_stk_work *w, double t, const double *Y, const double *Yp);
+int rc_stk_nextra(const rc_stk_work *w); /* 3 per slot (rc_stk_slots) */
 int64_t rc_stk_nnz(const rc_stk_work *w);
 void rc_stk_pattern(const rc_stk_work *w, const int64_t **colptr, const int64_t **rowind);
 /* Residual: adds the multipliers' terms to the bodies' rows r[0..ny)
@@ -66,7 +81,7 @@ int rc_stk_consistent(const rc_model *m, rc_stk_work *w, const double *Y, double
 /* Slip roots of the sticking exact interfaces, from the multipliers in Yp:
  * |lambda|^2 / L_s^2 - 1, L_s = Sfric + mu_s F_n (no band: the multiplier is
  * exact). */
-void rc_stk_roots(const rc_model *m, const rc_data *d, const rc_stk_work *w, double t, const double *Y,
+void rc_stk_roots(const rc_model *m, rc_data *d, rc_stk_work *w, double t, const double *Y,
                   const double *Yp, double *g);
 /* The friction state F_t of the sticking exact interfaces set to their
  * multiplier's force (global) [N], in Yout (may be Y). */
@@ -105,6 +120,6 @@ int rc_both_consistent(const rc_model *m, rc_data *d, rc_both *c, double t, doub
 
 /* Geometry of interface i for the constraint (engine/assemble_jac.c). */
 void rc_stk_geom_c(const rc_model *m, int i, const double _Complex *ya, const double _Complex *yb,
-                   double _Complex *point, double _Complex *n, double _Complex *vrel);
+                   double _Complex *point, double _Complex *n, double _Complex *vrel, double _Complex *ddot);
 
 #endif

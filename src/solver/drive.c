@@ -27,6 +27,7 @@
 #include "model/imposed.h"
 #include "model/joint.h"
 #include "model/model.h"
+#include "model/stick.h"
 #include "model/power.h"
 #include "output/output.h"
 #include "solver/impacts.h"
@@ -209,7 +210,8 @@ rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_b
         f->pen[i] = r.p;
         f->fload[i] = acts ? r.fload : 0.0;
         f->fdamp[i] = acts ? r.fdamp : 0.0;
-        f->fn[i] = acts && (r.fn > 0 || d->inter_settled[i]) ? r.fn : 0.0; /* settled: as it acts */
+        /* settled: as it acts, with its constraint's force on the IDA path */
+        f->fn[i] = acts && (r.fn > 0 || d->inter_settled[i]) ? r.fn + (d->inter_settled[i] ? d->inter_fcstr[i] : 0.0) : 0.0;
         memcpy(f->point + 3 * i, r.point, 3 * sizeof(double));
         memcpy(f->normal + 3 * i, r.normal, 3 * sizeof(double));
         for (int k = 0; k < 3; k++) f->ffric[3 * i + k] = acts ? r.ft[k] : 0.0;
@@ -403,8 +405,11 @@ static rc_status settle(const rc_model *m, rc_data *d, ev_sink *sink, double t, 
     s->t_settle = t;
     s->events++;
     if (show) /* with the progress (not with `ricochet run -q`, nor for an embedding without it) */
-        fprintf(stderr, "ricochet: %s settled into persistent contact at t = %.9g s (bounces accumulated)\n",
-                m->inter_name[i], t);
+        fprintf(stderr, "ricochet: %s settled into persistent contact at t = %.9g s (bounces accumulated; %s)\n",
+                m->inter_name[i], t,
+                m->method == 2 && rc_stk_settle_capable(m, i)
+                    ? "held by a unilateral constraint until its force turns tensile"
+                    : "its penalty law held closed until P returns to 0");
     const rc_event ev = {i, "contact_settle"};
     return write_event(m, d, sink, t, y, &ev, err);
 }
@@ -415,7 +420,7 @@ static rc_status settle(const rc_model *m, rc_data *d, ev_sink *sink, double t, 
 static rc_status record(const rc_backend *bk, void *self, const rc_model *m, const rc_data *d, rc_output *o,
                         frame_buf *fb, double t, const double *y, const double *yp, int at_event, rc_error *err)
 {
-    const double *v = bk->record_vector ? bk->record_vector(self, y, yp) : y;
+    const double *v = bk->record_vector ? bk->record_vector(self, t, y, yp) : y;
     return write_frame(m, d, o, fb, t, v, at_event, err);
 }
 

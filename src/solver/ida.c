@@ -300,7 +300,7 @@ static rc_status ida_open(void *self, const rc_model *m, rc_data *d, const rc_ru
     c->n = m->ny;
     c->stop = opt ? opt->stop : NULL;
     if (rc_rootmap_init(&c->rm, m, opt)) return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
-    if (m->jnt && m->jnt->n > 0 && rc_stk_count(m) > 0) {
+    if (m->jnt && m->jnt->n > 0 && rc_stk_slots(m) > 0) {
         /* both: Y = [y, the joints' extras, the stick's Lambda] */
         if (!(c->bw = rc_both_new(m))) return RC_SET(err, RC_ENOMEM, "out of memory for the joints and exact stick");
         c->jw = rc_both_jnt(c->bw);
@@ -313,7 +313,7 @@ static rc_status ida_open(void *self, const rc_model *m, rc_data *d, const rc_ru
         c->n = m->ny + rc_jnt_nextra(c->jw);
         if (!(c->yrec = calloc((size_t)c->n, sizeof(double))))
             return RC_SET(err, RC_ENOMEM, "out of memory for the joints");
-    } else if (rc_stk_count(m) > 0) {
+    } else if (rc_stk_slots(m) > 0) {
         if (!(c->sw = rc_stk_work_new(m))) return RC_SET(err, RC_ENOMEM, "out of memory for exact stick");
         c->n = m->ny + rc_stk_nextra(c->sw);
         if (!(c->yrec = calloc((size_t)c->n, sizeof(double))))
@@ -465,12 +465,15 @@ static const char *ida_last_msg(void *self) { return ((ida_ctx *)self)->msg; }
 
 /* A record of (Y, Y'): with joints, the record vector (the reactions
  * lambda = Lambda' in the slots of Lambda). */
-static const double *ida_record_vector(void *self, const double *Y, const double *Yp)
+static const double *ida_record_vector(void *self, double t, const double *Y, const double *Yp)
 {
     ida_ctx *c = self;
     if (!c->jw && !c->sw) return Y;
     memcpy(c->yrec, Y, (size_t)c->n * sizeof(double));
-    if (c->sw) rc_stk_sync(c->m, c->d, c->sw, Y, Yp, c->yrec);
+    if (c->sw) {
+        rc_stk_sync(c->m, c->d, c->sw, Y, Yp, c->yrec);
+        rc_stk_fcstr(c->m, c->d, c->sw, t, Y, Yp);
+    }
     if (c->jw) {
         const int ny = c->m->ny, nr = c->m->jnt->nrows;
         memcpy(c->yrec + ny, Yp + ny, (size_t)nr * sizeof(double));

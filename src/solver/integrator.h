@@ -186,7 +186,7 @@ typedef struct rc_backend {
     char *(*flag_name)(long flag);               /* malloc'ed */
     const char *(*last_msg)(void *self);         /* the integrator's last error message */
     /* The vector a record is written from (NULL: y itself). */
-    const double *(*record_vector)(void *self, const double *y, const double *yp);
+    const double *(*record_vector)(void *self, double t, const double *y, const double *yp);
     /* Around the events of a root return: before_events (NULL: none) just
      * before the modes flip; after_events when some changed, with
      * cpl_ev set when a contact coupling's did and `restart` when the

@@ -73,6 +73,20 @@ rc_model *tu_compile_text(const char *text, const char *path, rc_error *e)
     return m;
 }
 
+int tu_text_error(const char *text, const char *path, ...)
+{
+    rc_error e;
+    rc_model *m = tu_compile_text(text, path, &e);
+    int bad = m != NULL || e.code != RC_EINPUT;
+    va_list ap;
+    va_start(ap, path);
+    bad += tu_missing_needles(m ? "" : e.msg, ap);
+    va_end(ap);
+    if (bad) fprintf(stderr, "  message: %s\n", m ? "(compiled)" : e.msg);
+    rc_model_free(m);
+    return bad;
+}
+
 int tu_missing_needles(const char *msg, va_list ap)
 {
     int bad = 0;

@@ -24,6 +24,11 @@ rc_status tu_load_compile(const char *path, rc_model **m, rc_error *e);
 rc_model *tu_compile_text(const char *text, const char *path, rc_error *e);
 /* How many of the NULL-terminated needles `msg` lacks (each printed). */
 int tu_missing_needles(const char *msg, va_list ap);
+/* Write `text` to `path` and compile it, expecting an input error whose
+ * message holds every needle (NULL-terminated); returns the number of
+ * faults (0: as expected), each printed with the message. */
+int tu_text_error(const char *text, const char *path, ...);
+#define TU_EXPECT_TEXT_ERROR(text, path, ...) ENSURE(tu_text_error((text), (path), __VA_ARGS__, (const char *)NULL) == 0)
 /* Max scaled |J - FD| over the whole Jacobian at (t, y) in the current
  * modes, central differences column by column; counts entries above 1e-6
  * (*bad) and FD non-zeros outside the pattern (*outside). With

@@ -29,6 +29,7 @@ from scipy.integrate import solve_ivp
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import rcval  # noqa: E402
+import belt  # noqa: E402
 from deck import Deck  # noqa: E402
 
 M, R, K, G = 1.0, 0.05, 1.0e6, 9.81
@@ -137,21 +138,8 @@ def classical():
 
 
 def deck(rtol=1e-10, atol_pos=1e-13, atol_vel=1e-12, dtout=1e-3):
-    z0 = R - M * G / K  # static penetration: F_n = m g
     d = Deck("stick-slip oscillator: block on a belt, spring to a fixed point, /FRICTION Renard two-level")
-    d.funct(1, [0.0, 1.0], [0.0, K], title="linear load curve k = 1e6 N/m")
-    d.nodes([(1, 0.0, 0.0, z0), (2, 0.0, 0.0, -1.0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, grnod=1, title="block 1 kg")
-    d.rbody(2, 2, MBELT, [MBELT] * 3, grnod=2, title="belt 1e12 kg")
-    d.sphere(1, 1, (0.0, 0.0, z0), R, title="block sphere")
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), body=2, title="belt surface z = 0")
-    d.grnod(1, [1], title="block")
-    d.grnod(2, [2], title="belt")
-    d.bcs(1, 1, "010 111", title="block held in y, no rotation")
-    d.bcs(2, 2, "011 111", title="belt moves along x only")
-    d.inivel(1, (V, 0.0, 0.0), 2)
-    d.inivel(2, (V, 0.0, 0.0), 1)
-    d.grav(1, "Z", -G, 1)  # on the block only
+    z0 = belt.add_block_on_belt(d, R, M, K, G, MBELT, V)
     d.type6(1, 1, 2, 1, visc=VISC, title="contact (no TYPE6 friction)")
     d.friction(1, ifric=3, iform=1, c=RENARD, visf=VISF,
                title="Renard two-level: mu_s = mu_max 0.4, mu_k = mu_d = mu_min 0.25, V_cr 2.8, 5.6 um/s; viscous VISF 1e6")

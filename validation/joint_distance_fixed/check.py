@@ -65,16 +65,6 @@ def weld_deck():
     return d
 
 
-def crossings(t, x):
-    out = []
-    for k in range(1, len(t) - 2):
-        if x[k] > 0 >= x[k + 1]:
-            p = np.polyfit(t[k - 1:k + 3] - t[k], x[k - 1:k + 3], 3)
-            r = [z.real for z in np.roots(p) if abs(z.imag) < 1e-12 and 0 <= z.real <= t[k + 1] - t[k]]
-            out.append(t[k] + r[0])
-    return np.array(out)
-
-
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
     # 1. conical pendulum
@@ -84,7 +74,7 @@ def main():
     h = np.max(np.abs(x[:, 1] + L * math.cos(ALPHA)))
     rcval.check("joint_distance_fixed.cone_height", h < 1e-8 * L,
                 f"height of the conical pendulum constant to {h:.2e} m (< 1e-8 L) over 3 turns")
-    per = np.diff(crossings(r.t, x[:, 0]))
+    per = np.diff(rcval.down_crossings(r.t, x[:, 0]))
     err = np.max(np.abs(per - T_CONE)) / T_CONE
     rcval.check("joint_distance_fixed.cone_period", len(per) >= 2 and err < 1e-8,
                 f"turns {', '.join(f'{p:.9f}' for p in per)} s; exact 2 pi sqrt(L cos(alpha) / g) = {T_CONE:.9f} s; "
@@ -101,7 +91,7 @@ def main():
     path2 = rcval.run(weld_deck(), name="weld")
     r2 = rcval.Result(path2)
     x1, x2 = r2.pos[:, 0, :], r2.pos[:, 1, :]
-    per2 = np.diff(crossings(r2.t, x1[:, 0]))
+    per2 = np.diff(rcval.down_crossings(r2.t, x1[:, 0]))
     err2 = np.max(np.abs(per2 - T_WELD)) / T_WELD
     rcval.check("joint_distance_fixed.weld_period", len(per2) >= 3 and err2 < 1e-8,
                 f"periods {', '.join(f'{p:.9f}' for p in per2)} s; exact 4 sqrt(I_p / (M g d)) K(sin 45 deg) = "

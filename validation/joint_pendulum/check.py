@@ -43,24 +43,12 @@ def deck(kind="REVOLUTE"):
     return d
 
 
-def crossings(t, x):
-    """Times where x crosses 0 downwards (the bob passes the bottom towards
-    -x), by a cubic through the 4 nearest records."""
-    out = []
-    for k in range(1, len(t) - 2):
-        if x[k] > 0 >= x[k + 1]:
-            p = np.polyfit(t[k - 1:k + 3] - t[k], x[k - 1:k + 3], 3)
-            r = [z.real for z in np.roots(p) if abs(z.imag) < 1e-12 and 0 <= z.real <= t[k + 1] - t[k]]
-            out.append(t[k] + r[0])
-    return np.array(out)
-
-
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
     path = rcval.run_file(os.path.join(here, "case.rad"))
     r = rcval.Result(path)
     x = r.pos[:, 0, :]
-    periods = np.diff(crossings(r.t, x[:, 0]))
+    periods = np.diff(rcval.down_crossings(r.t, x[:, 0]))
     err = np.max(np.abs(periods - T_EXACT)) / T_EXACT
     rcval.check("joint_pendulum.period", len(periods) >= 5 and err < 1e-8,
                 f"{len(periods)} periods {', '.join(f'{p:.9f}' for p in periods)} s; exact "
@@ -100,7 +88,7 @@ def main():
     # the same body on a spherical joint
     r2 = rcval.Result(rcval.run(deck("SPHERICAL"), name="spherical"))
     x2 = r2.pos[:, 0, :]
-    p2 = np.diff(crossings(r2.t, x2[:, 0]))
+    p2 = np.diff(rcval.down_crossings(r2.t, x2[:, 0]))
     err2 = np.max(np.abs(p2 - T_EXACT)) / T_EXACT
     rcval.check("joint_pendulum.spherical", len(p2) >= 5 and err2 < 1e-6 and np.max(np.abs(x2[:, 2])) < 1e-9,
                 f"spherical joint: max rel. period error {err2:.2e} (< 1e-6), max |z| {np.max(np.abs(x2[:, 2])):.2e} m "

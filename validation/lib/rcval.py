@@ -137,5 +137,17 @@ def rel(a, b):
     return abs(a - b) / abs(b)
 
 
+def down_crossings(t, x):
+    """Times where the record series x crosses 0 downwards, by a cubic
+    through the 4 nearest records."""
+    out = []
+    for k in range(1, len(t) - 2):
+        if x[k] > 0 >= x[k + 1]:
+            p = np.polyfit(t[k - 1:k + 3] - t[k], x[k - 1:k + 3], 3)
+            r = [z.real for z in np.roots(p) if abs(z.imag) < 1e-12 and 0 <= z.real <= t[k + 1] - t[k]]
+            out.append(t[k] + r[0])
+    return np.array(out)
+
+
 def finish():
     sys.exit(1 if FAILED else 0)

@@ -31,6 +31,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 import rcval  # noqa: E402
 from deck import Deck, line  # noqa: E402
+import meshbox  # noqa: E402
 
 A, B, C = 0.2, 0.12, 0.08        # box [m]
 M = 15.0                         # [kg]
@@ -53,33 +54,7 @@ def deck(nx, ny, floor, step5=False, fmax=None, gx=0.0):
     z0 = -p0
     d = Deck(f"box {nx}x{ny} sliding to rest on a {'plane' if floor is None else 'meshed floor'}")
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear load curve")
-    nodes, bottom = [], {}
-    for i in range(nx + 1):
-        for j in range(ny + 1):
-            nid = 100000 + i * (ny + 1) + j
-            bottom[(i, j)] = nid
-            nodes.append((nid, -A / 2 + A * i / nx, -B / 2 + B * j / ny, z0))
-    top = {}
-    for k, (sx, sy) in enumerate(((-1, -1), (1, -1), (1, 1), (-1, 1))):
-        top[(sx, sy)] = 90001 + k
-        nodes.append((90001 + k, sx * A / 2, sy * B / 2, z0 + C))
-    d.nodes([(1, 0.0, 0.0, z0 + C / 2)] + nodes)
-    d.grnod(7, [n[0] for n in nodes], title="box nodes")
-    d.rbody(1, 1, M, (M * (B * B + C * C) / 12, M * (A * A + C * C) / 12, M * (A * A + B * B) / 12), grnod=7,
-            title="box")
-    segs, sid = [], 1
-    for i in range(nx):  # bottom: normals down, out of the box
-        for j in range(ny):
-            q = (bottom[(i, j)], bottom[(i, j + 1)], bottom[(i + 1, j + 1)], bottom[(i + 1, j)])
-            segs.append(line(*[("i", v) for v in (sid,) + q]))
-            sid += 1
-    c00, c10, c11, c01 = bottom[(0, 0)], bottom[(nx, 0)], bottom[(nx, ny)], bottom[(0, ny)]
-    t00, t10, t11, t01 = top[(-1, -1)], top[(1, -1)], top[(1, 1)], top[(-1, 1)]
-    for q in ((t00, t10, t11, t01), (c00, c10, t10, t00), (c10, c11, t11, t10), (c11, c01, t01, t11),
-              (c01, c00, t00, t01)):
-        segs.append(line(*[("i", v) for v in (sid,) + q]))
-        sid += 1
-    d.add("/SURF/SEG/30", *segs, title="box faces")
+    meshbox.add_box(d, nx, ny, A, B, C, M, z0)
     if floor is None:
         d.plane(40, (0, 0, 0), (0, 0, 1), title="floor")
     else:

@@ -17,6 +17,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import rcval  # noqa: E402
+import belt  # noqa: E402
 from deck import Deck  # noqa: E402
 
 M, R, K, G = 1.0, 0.05, 1.0e6, 9.81     # block [kg], sphere radius [m], contact stiffness [N/m], gravity
@@ -58,21 +59,8 @@ def peak(x, sign):
 
 
 def deck(dtout=1e-3):
-    z0 = R - M * G / K  # static penetration: F_n = m g
     d = Deck("exact stick-slip: block on a belt, spring to a fixed point, TYPE6 Istick 1, Fric_s 0.4, Fric 0.25")
-    d.funct(1, [0.0, 1.0], [0.0, K], title="linear load curve k = 1e6 N/m")
-    d.nodes([(1, 0.0, 0.0, z0), (2, 0.0, 0.0, -1.0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, grnod=1, title="block 1 kg")
-    d.rbody(2, 2, MBELT, [MBELT] * 3, grnod=2, title="belt 1e12 kg")
-    d.sphere(1, 1, (0.0, 0.0, z0), R, title="block sphere")
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), body=2, title="belt surface z = 0")
-    d.grnod(1, [1], title="block")
-    d.grnod(2, [2], title="belt")
-    d.bcs(1, 1, "010 111", title="block held in y, no rotation")
-    d.bcs(2, 2, "011 111", title="belt moves along x only")
-    d.inivel(1, (V, 0.0, 0.0), 2)
-    d.inivel(2, (V, 0.0, 0.0), 1)
-    d.grav(1, "Z", -G, 1)  # on the block only
+    z0 = belt.add_block_on_belt(d, R, M, K, G, MBELT, V)
     d.type6(1, 1, 2, 1, visc=VISC, fric=MU_K, istick=1, fric_s=MU_S,
             title="exact stick: static 0.4, sliding 0.25")
     d.spring(1, 0, (-L0, 0.0, z0), 1, (0.0, 0.0, z0), a=KS, title="spring k = 100 N/m to a fixed point, relaxed at t = 0")

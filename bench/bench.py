@@ -474,9 +474,11 @@ def bench_drop(B):
 COL = dict(R=0.01, m=0.01, k=1.0e5, zeta=1.0, gap=1.0e-4, tend=5.0, dtout=0.5)
 
 
-def column_deck(N, rtol, p=COL):
+def column_deck(N, rtol, p=COL, locked=False):
+    """The settling column; locked: /BCS holds the x, y translations and
+    the rotations of every sphere (the 1-D model of cvode_ref)."""
     R, m, k, gap = p["R"], p["m"], p["k"], p["gap"]
-    d = Deck(f"bench: settling column of {N} spheres")
+    d = Deck(f"bench: settling column of {N} spheres" + (", locked to z" if locked else ""))
     d.funct(1, [0.0, 1.0], [0.0, k], title="linear load curve")
     z = [R + gap + i * (2 * R + gap) for i in range(N)]
     d.nodes([(i + 1, 0.0, 0.0, z[i]) for i in range(N)])
@@ -488,6 +490,9 @@ def column_deck(N, rtol, p=COL):
     floor = N + 1
     d.plane(floor, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor")
     d.grav(1, "Z", -G)
+    if locked:
+        d.grnod(1, list(range(1, N + 1)), title="all spheres")
+        d.bcs(1, 1, trarot="110 111", title="x, y and rotations held")
     c_floor = 2 * p["zeta"] * math.sqrt(k * m)       # m_red = m
     c_ss = 2 * p["zeta"] * math.sqrt(k * m / 2)      # m_red = m/2
     d.type6(1, 1, floor, 1, visc=c_floor, title="floor contact")

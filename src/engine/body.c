@@ -49,3 +49,49 @@ void rc_initial_state(const rc_model *m, double *y)
             y[m->gwork_adr] -= m->body_mass[b] * (g[0] * x[0] + g[1] * x[1] + g[2] * x[2]);
         }
 }
+
+int rc_constant_states(const rc_model *m, const double *y0, const char *written, char *cst)
+{
+    memset(cst, 0, (size_t)m->ny);
+    int n = 0;
+#define RC_W(k) (written && written[k])
+    /* an imposed velocity's row has its own rate (a held component cannot
+     * be imposed: the compiler refuses it; checked again here) */
+    const rc_imposed *p = m->imp;
+    for (int b = 0; b < m->nbody; b++) {
+        const int a = m->body_yadr[b];
+        if (a < 0) continue;
+        int held[6];
+        for (int j = 0; j < 6; j++) held[j] = m->body_dofmask[6 * b + j];
+        for (int k = 0; p && k < p->nt; k++)
+            if (p->trow[k] >= a + 7 && p->trow[k] < a + 10) held[p->trow[k] - a - 7] = 0;
+        for (int k = 0; p && k < p->nr; k++)
+            if (p->rbody[k] == b) held[3] = held[4] = held[5] = 0;
+        /* translations: v_j held; x_j also when v_j starts at exactly 0 */
+        for (int j = 0; j < 3; j++) {
+            if (!held[j] || !m->row_held[a + 7 + j] || RC_W(a + 7 + j)) continue;
+            cst[a + 7 + j] = 1;
+            n++;
+            if (y0[a + 7 + j] == 0.0 && !RC_W(a + j)) {
+                cst[a + j] = 1;
+                n++;
+            }
+        }
+        /* rotations: all held (a partial lock is refused), omega held; q
+         * also when omega starts at exactly 0 (q' = q (0, omega) / 2 = 0) */
+        int rot = 1, still = 1;
+        for (int j = 3; j < 6; j++) {
+            rot &= held[j] && m->row_held[a + 7 + j] && !RC_W(a + 7 + j);
+            still &= y0[a + 7 + j] == 0.0;
+        }
+        if (!rot) continue;
+        for (int j = 3; j < 6; j++) cst[a + 7 + j] = 1;
+        n += 3;
+        for (int k = 3; k < 7; k++) still &= !RC_W(a + k);
+        if (!still) continue;
+        for (int k = 3; k < 7; k++) cst[a + k] = 1;
+        n += 4;
+    }
+#undef RC_W
+    return n;
+}

@@ -12,6 +12,16 @@
  * the event (jac_patched, cb_linsys), and without a restart the next step
  * is taken alone with a forced linear solver setup (fresh, cv_solve).
  * Quaternion norms are kept by CVODE's projection (CVodeSetProjFn).
+ *
+ * What CVODE carries: the states that can change (docs/theory.md 7.2).
+ * The driver and the engine keep the model's whole state vector (yfull,
+ * m->ny values); the states that keep their initial values whatever
+ * happens (rc_constant_states: held velocity components, positions along
+ * held translations at rest, the quaternions of bodies whose rotations are
+ * all held at rest) are left out of CVODE's vector. Every callback scatters
+ * CVODE's vector into a whole-state scratch (the constant states in place)
+ * and gathers what it returns; the Newton matrix is the part of the
+ * model's Jacobian pattern on the kept states (subpat.h).
  */
 #include <cvode/cvode.h>
 #include <cvode/cvode_proj.h>
@@ -35,10 +45,15 @@
 #include "solver/nvfast.h"
 #include "solver/solver.h"
 #include "solver/integrator.h"
+#include "solver/subpat.h"
 
 /* A jump in ydot whose effect over one step, relative to the error weight,
  * exceeds this fraction triggers a restart after an event [-]. */
 #define RC_REINIT_JUMP 0.1
+
+/* Tests only (integrator.h rc_cvode_set_reduce): 0 gives CVODE every state. */
+static int reduce_on = 1;
+void rc_cvode_set_reduce(int on) { reduce_on = on; }
 
 typedef struct run_ctx {
     const rc_model *m;
@@ -53,7 +68,19 @@ typedef struct run_ctx {
     void *cv;
     SUNMatrix A;
     SUNLinearSolver LS;
+    /* CVODE's vectors, over the kept states (nr of them) */
     N_Vector y, av, f0, f1, ytn, ysamp;
+    /* the kept states: nr of m->ny; kidx[nr] their indices in the whole
+     * state, ridx[ny] the reverse (-1: constant, not in CVODE's vector) */
+    int nr, red; /* red: some state left out (nr < ny) */
+    int *kidx, *ridx;
+    int nq, *qoff; /* kept quaternions: their offsets in CVODE's vector */
+    rc_subpat sp;  /* the Newton matrix's pattern: the kept part of the model's */
+    /* whole-state vectors [ny]: the driver's state, and scratch for the
+     * callbacks (rhs state and rate, interpolants of order 0 and higher,
+     * impact samples, restart test); the constant states hold their values
+     * (0 in dyf, the derivatives) */
+    double *yfull, *ysc, *fsc, *ytf, *dyf, *ysf, *fa, *fb;
     int *old_mode, *old_branch, *old_track, *old_slip; /* the modes before a root return's events */
     int fresh; /* modes changed without a restart: the Jacobian is stale */
     rc_rootmap rm; /* the root functions CVODE is given (integrator.h) */
@@ -75,7 +102,22 @@ static int cb_rhs(realtype t, N_Vector y, N_Vector ydot, void *ud)
     /* the caller asked to stop (a signal): an unrecoverable failure ends
      * CVode at the last accepted step; no mode or state is touched */
     if (c->stop && *c->stop) return -1;
-    return rc_assemble_rhs(c->m, c->d, t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+    if (!c->red) return rc_assemble_rhs(c->m, c->d, t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+    const double *yr = N_VGetArrayPointer(y);
+    double *fr = N_VGetArrayPointer(ydot);
+    for (int j = 0; j < c->nr; j++) c->ysc[c->kidx[j]] = yr[j];
+    const int st = rc_assemble_rhs(c->m, c->d, t, c->ysc, c->fsc);
+    for (int j = 0; j < c->nr; j++) fr[j] = c->fsc[c->kidx[j]];
+    return st;
+}
+
+/* CVODE's vector into the whole state (the constant states stay). */
+static const double *whole(const run_ctx *c, N_Vector v, double *full)
+{
+    const double *r = N_VGetArrayPointer(v);
+    if (!c->red) return r;
+    for (int j = 0; j < c->nr; j++) full[c->kidx[j]] = r[j];
+    return full;
 }
 
 /* The Newton matrix I - gamma J formed in place (CVodeSetLinSysFn): J is
@@ -101,16 +143,16 @@ static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleanty
     if (!jok && patched) {
         *jcur = SUNTRUE;
     } else if (!jok) {
-        int st = rc_assemble_jac(m, c->d, t, N_VGetArrayPointer(y), c->jsave);
+        int st = rc_assemble_jac(m, c->d, t, whole(c, y, c->ysc), c->jsave);
         if (st) return st;
         *jcur = SUNTRUE;
     } else {
         *jcur = SUNFALSE;
     }
-    /* the pattern was written once (cv_open): nothing else writes A */
+    /* the pattern was written once (cv_start): nothing else writes A */
     double *a = SUNSparseMatrix_Data(A);
-    for (int64_t k = 0; k < m->nnz; k++) a[k] = -gamma * c->jsave[k];
-    for (int r = 0; r < m->ny; r++) a[m->jac_diag[r]] += 1.0;
+    rc_subpat_gather(&c->sp, m->nnz, -gamma, c->jsave, a);
+    for (int r = 0; r < c->sp.n; r++) a[c->sp.diag[r]] += 1.0;
     return 0;
 }
 
@@ -118,7 +160,7 @@ static int cb_root(realtype t, N_Vector y, realtype *g, void *ud)
 {
     run_ctx *c = ud;
     c->d->n_root++;
-    rc_assemble_roots(c->m, c->d, t, N_VGetArrayPointer(y), rc_rootmap_full(&c->rm, g));
+    rc_assemble_roots(c->m, c->d, t, whole(c, y, c->ysc), rc_rootmap_full(&c->rm, g));
     rc_rootmap_gather(&c->rm, g);
     return 0;
 }
@@ -129,18 +171,20 @@ static int cb_root(realtype t, N_Vector y, realtype *g, void *ud)
  * floor of 64 ulps of the value keeps a far-away coordinate testable. */
 static int cb_ewt(N_Vector yv, N_Vector wv, void *ud)
 {
-    const rc_model *m = ((run_ctx *)ud)->m;
+    const run_ctx *c = ud;
+    const rc_model *m = c->m;
     const double *y = N_VGetArrayPointer(yv);
     double *w = N_VGetArrayPointer(wv);
-    for (int k = 0; k < m->ny; k++) {
-        const double ay = fabs(y[k]);
+    for (int j = 0; j < c->nr; j++) {
+        const int k = c->kidx[j];
+        const double ay = fabs(y[j]);
         double s = m->atol[k] + (m->ewt_rel[k] ? m->rtol * ay : 0.0);
         if (!m->ewt_rel[k]) {
             const double fl = 64.0 * DBL_EPSILON * ay; /* fmax(s, fl) without the libm call */
             if (fl > s) s = fl;
         }
         if (!(s > 0)) return -1;
-        w[k] = 1.0 / s;
+        w[j] = 1.0 / s;
     }
     return 0;
 }
@@ -149,17 +193,16 @@ static int cb_ewt(N_Vector yv, N_Vector wv, void *ud)
 static int cb_proj(realtype t, N_Vector ycur, N_Vector corr, realtype eps, N_Vector err, void *ud)
 {
     run_ctx *c = ud;
-    const rc_model *m = c->m;
     double *y = N_VGetArrayPointer(ycur), *cr = N_VGetArrayPointer(corr);
     double *e = err ? N_VGetArrayPointer(err) : NULL;
     N_VConst(0.0, corr);
-    for (int b = 0; b < m->nbody; b++) {
-        if (m->body_yadr[b] < 0) continue;
-        const double *q = y + m->body_yadr[b] + 3;
+    for (int b = 0; b < c->nq; b++) {
+        const int o = c->qoff[b]; /* the kept quaternions (a constant one is exactly unit) */
+        const double *q = y + o;
         double nq = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-        for (int k = 0; k < 4; k++) cr[m->body_yadr[b] + 3 + k] = q[k] / nq - q[k];
+        for (int k = 0; k < 4; k++) cr[o + k] = q[k] / nq - q[k];
         if (e) {
-            double *eq = e + m->body_yadr[b] + 3, dot = 0;
+            double *eq = e + o, dot = 0;
             for (int k = 0; k < 4; k++) dot += eq[k] * q[k] / nq;
             for (int k = 0; k < 4; k++) eq[k] -= dot * q[k] / nq;
         }
@@ -185,17 +228,19 @@ static void add_stats(void *cv, rc_stats *s)
  * if the old and new right-hand sides agree, within the error weights, over
  * [troot, tn] and over the next step h: compare them at troot and at tn.
  * old_mode is the mode array before the flip; d->inter_mode after it. */
-static int needs_restart(const rc_model *m, rc_data *d, void *cv, int *old_mode, int *old_branch,
-                         int *old_track, int *old_slip, double troot, const double *yroot, N_Vector ytn, N_Vector f0,
-                         N_Vector f1)
+static int needs_restart(run_ctx *c, double troot, const double *yroot)
 {
+    const rc_model *m = c->m;
+    rc_data *d = c->d;
+    void *cv = c->cv;
+    int *old_mode = c->old_mode, *old_branch = c->old_branch, *old_track = c->old_track, *old_slip = c->old_slip;
     double h = 0, tn = troot;
     CVodeGetCurrentStep(cv, &h);
     CVodeGetCurrentTime(cv, &tn);
-    if (CVodeGetDky(cv, tn, 0, ytn) != CV_SUCCESS) return 1;
-    const double *y_at[2] = {yroot, N_VGetArrayPointer(ytn)};
+    if (CVodeGetDky(cv, tn, 0, c->ytn) != CV_SUCCESS) return 1;
+    const double *y_at[2] = {yroot, whole(c, c->ytn, c->ytf)};
     const double t_at[2] = {troot, tn}, span[2] = {h, (tn - troot) + h};
-    double *a = N_VGetArrayPointer(f0), *b = N_VGetArrayPointer(f1);
+    double *a = c->fa, *b = c->fb;
     for (int s = 0; s < 2; s++) {
         /* old modes, then new modes, at the same state */
         int *new_mode = d->inter_mode, *new_branch = d->inter_branch, *new_track = d->inter_track;
@@ -223,7 +268,7 @@ static int needs_restart(const rc_model *m, rc_data *d, void *cv, int *old_mode,
  * state carries the largest weighted local error) and, by the kind of
  * failure, the likely cause and what to change in the case. */
 static void failure_advice(const rc_model *m, const rc_data *d, void *cv, int flag, double t, double tout,
-                           const char *cvmsg, N_Vector tmp1, N_Vector tmp2, char *buf, size_t n)
+                           const char *cvmsg, N_Vector tmp1, N_Vector tmp2, const int *kidx, char *buf, size_t n)
 {
     double h = 0.0;
     CVodeGetCurrentStep(cv, &h);
@@ -233,14 +278,14 @@ static void failure_advice(const rc_model *m, const rc_data *d, void *cv, int fl
         const double *e = N_VGetArrayPointer(tmp1), *w = N_VGetArrayPointer(tmp2);
         int imax = -1;
         double vmax = 0.0;
-        for (int i = 0; i < m->ny; i++) {
+        for (int i = 0; i < (int)N_VGetLength(tmp1); i++) {
             const double v = fabs(e[i] * w[i]);
             if (v > vmax || (isnan(v) && imax < 0)) {
                 vmax = v;
                 imax = i;
             }
         }
-        if (imax >= 0) rc_state_name(m, imax, elem, sizeof elem);
+        if (imax >= 0) rc_state_name(m, kidx[imax], elem, sizeof elem);
     }
     char *fname = CVodeGetReturnFlagName(flag); /* malloc'ed by CVODE */
     const char *advice;
@@ -307,33 +352,53 @@ static rc_status cv_open(void *self, const rc_model *m, rc_data *d, const rc_run
     c->stop = opt ? opt->stop : NULL;
     if (rc_rootmap_init(&c->rm, m, opt)) return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     if (SUNContext_Create(NULL, &c->ctx)) return RC_SET(err, RC_ESOLVER, "SUNContext_Create failed");
-    c->y = N_VNew_Serial(m->ny, c->ctx);
-    c->av = N_VNew_Serial(m->ny, c->ctx);
-    c->f0 = N_VNew_Serial(m->ny, c->ctx);
-    c->f1 = N_VNew_Serial(m->ny, c->ctx);
-    c->ytn = N_VNew_Serial(m->ny, c->ctx);
-    c->ysamp = N_VNew_Serial(m->ny, c->ctx);
-    /* optimised vector operations, inherited by CVODE's clones of y (nvfast.h) */
-    N_Vector vecs[] = {c->y, c->av, c->f0, c->f1, c->ytn, c->ysamp};
-    for (size_t k = 0; k < sizeof vecs / sizeof vecs[0]; k++) rc_nvector_fast(vecs[k]);
+    const size_t ny = (size_t)m->ny + 1;
+    double **full[] = {&c->yfull, &c->ysc, &c->fsc, &c->ytf, &c->dyf, &c->ysf, &c->fa, &c->fb};
+    for (size_t k = 0; k < sizeof full / sizeof full[0]; k++)
+        if (!(*full[k] = calloc(ny, sizeof(double)))) return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     c->old_mode = calloc((size_t)m->ninter + 1, sizeof(int));
     c->old_branch = calloc((size_t)m->ninter + 1, sizeof(int));
     c->old_track = calloc((size_t)m->ninter + 1, sizeof(int));
     c->old_slip = calloc((size_t)m->ninter + 1, sizeof(int));
     c->jsave = calloc((size_t)m->nnz + 1, sizeof(double));
-    c->A = SUNSparseMatrix(m->ny, m->ny, m->nnz, CSC_MAT, c->ctx);
-    if (!c->y || !c->av || !c->f0 || !c->f1 || !c->ytn || !c->ysamp || !c->old_mode || !c->old_branch ||
-        !c->old_track || !c->old_slip || !c->jsave || !c->A)
+    c->kidx = malloc(ny * sizeof(int));
+    c->ridx = malloc(ny * sizeof(int));
+    c->qoff = malloc(((size_t)m->nbody + 1) * sizeof(int));
+    if (!c->old_mode || !c->old_branch || !c->old_track || !c->old_slip || !c->jsave || !c->kidx || !c->ridx ||
+        !c->qoff)
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
-    /* the fixed pattern, once; cb_linsys writes the values */
-    sunindextype *cp = SUNSparseMatrix_IndexPointers(c->A), *ri = SUNSparseMatrix_IndexValues(c->A);
-    for (int k = 0; k <= m->ny; k++) cp[k] = (sunindextype)m->jac_colptr[k];
-    for (int64_t k = 0; k < m->nnz; k++) ri[k] = (sunindextype)m->jac_rowind[k];
-    if (!(c->LS = SUNLinSol_KLU(c->y, c->A, c->ctx))) return RC_SET(err, RC_ESOLVER, "SUNLinSol_KLU failed");
-    *y = N_VGetArrayPointer(c->y);
+    /* the driver fills the whole state; CVODE's vectors follow in cv_start,
+     * once the initial state says which states are constant */
+    *y = c->yfull;
     *yp = NULL;
     *n = m->ny;
     *integrator = "CVODE BDF, Newton, KLU sparse direct, rootfinding";
+    return RC_OK;
+}
+
+/* The states CVODE carries (rc_constant_states at the initial state y0):
+ * kidx, ridx, the kept quaternions and the Newton matrix's pattern. */
+static rc_status plan_states(run_ctx *c, const double *y0, rc_error *err)
+{
+    const rc_model *m = c->m;
+    char *cst = calloc((size_t)m->ny + 1, 1);
+    if (!cst) return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
+    if (reduce_on) rc_constant_states(m, y0, NULL, cst);
+    c->nr = 0;
+    for (int k = 0; k < m->ny; k++) {
+        c->ridx[k] = cst[k] ? -1 : c->nr;
+        if (!cst[k]) c->kidx[c->nr++] = k;
+    }
+    free(cst);
+    c->red = c->nr < m->ny;
+    c->nq = 0;
+    for (int b = 0; b < m->nbody; b++)
+        if (m->body_yadr[b] >= 0 && c->ridx[m->body_yadr[b] + 3] >= 0) c->qoff[c->nq++] = c->ridx[m->body_yadr[b] + 3];
+    /* the Newton matrix on the kept states (a keep mask over the model's
+     * entries can be passed in the same call) */
+    const int sb = rc_subpat_build(&c->sp, m->ny, m->jac_colptr, m->jac_rowind, c->red ? c->ridx : NULL, NULL);
+    if (sb == -1) return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
+    if (sb) return RC_SET(err, RC_EINTERNAL, "the Newton matrix's pattern lacks a diagonal entry");
     return RC_OK;
 }
 
@@ -341,7 +406,34 @@ static rc_status cv_start(void *self, rc_error *err)
 {
     run_ctx *c = self;
     const rc_model *m = c->m;
-    memcpy(N_VGetArrayPointer(c->av), m->atol, (size_t)m->ny * sizeof(double));
+    rc_status st = plan_states(c, c->yfull, err);
+    if (st) return st;
+    const sunindextype nr = c->nr;
+    c->y = N_VNew_Serial(nr, c->ctx);
+    c->av = N_VNew_Serial(nr, c->ctx);
+    c->f0 = N_VNew_Serial(nr, c->ctx);
+    c->f1 = N_VNew_Serial(nr, c->ctx);
+    c->ytn = N_VNew_Serial(nr, c->ctx);
+    c->ysamp = N_VNew_Serial(nr, c->ctx);
+    c->A = SUNSparseMatrix(nr, nr, c->sp.nnz, CSC_MAT, c->ctx);
+    if (!c->y || !c->av || !c->f0 || !c->f1 || !c->ytn || !c->ysamp || !c->A)
+        return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
+    /* optimised vector operations, inherited by CVODE's clones of y (nvfast.h) */
+    N_Vector vecs[] = {c->y, c->av, c->f0, c->f1, c->ytn, c->ysamp};
+    for (size_t k = 0; k < sizeof vecs / sizeof vecs[0]; k++) rc_nvector_fast(vecs[k]);
+    /* the fixed pattern, once; cb_linsys writes the values */
+    sunindextype *cp = SUNSparseMatrix_IndexPointers(c->A), *ri = SUNSparseMatrix_IndexValues(c->A);
+    for (int k = 0; k <= c->sp.n; k++) cp[k] = (sunindextype)c->sp.colptr[k];
+    for (int64_t k = 0; k < c->sp.nnz; k++) ri[k] = (sunindextype)c->sp.rowind[k];
+    if (!(c->LS = SUNLinSol_KLU(c->y, c->A, c->ctx))) return RC_SET(err, RC_ESOLVER, "SUNLinSol_KLU failed");
+    /* the constant states of the scratch vectors, once */
+    for (int k = 0; k < m->ny; k++)
+        if (c->ridx[k] < 0) c->ysc[k] = c->ytf[k] = c->ysf[k] = c->yfull[k];
+    double *yr = N_VGetArrayPointer(c->y), *av = N_VGetArrayPointer(c->av);
+    for (int j = 0; j < c->nr; j++) {
+        yr[j] = c->yfull[c->kidx[j]];
+        av[j] = m->atol[c->kidx[j]];
+    }
     void *cv = c->cv = CVodeCreate(CV_BDF, c->ctx);
     if (!cv) return RC_SET(err, RC_ESOLVER, "CVodeCreate failed");
     CVCHECK(CVodeInit(cv, cb_rhs, 0.0, c->y), "CVodeInit");
@@ -356,10 +448,23 @@ static rc_status cv_start(void *self, rc_error *err)
     CVCHECK(CVodeSetStabLimDet(cv, SUNTRUE), "CVodeSetStabLimDet");
     if (m->hmax > 0) CVCHECK(CVodeSetMaxStep(cv, m->hmax), "CVodeSetMaxStep");
     if (m->h0 > 0) CVCHECK(CVodeSetInitStep(cv, m->h0), "CVodeSetInitStep");
-    if (m->nfree > 0) CVCHECK(CVodeSetProjFn(cv, cb_proj), "CVodeSetProjFn");
+    if (c->nq > 0) CVCHECK(CVodeSetProjFn(cv, cb_proj), "CVodeSetProjFn");
     if (c->rm.n > 0) CVCHECK(CVodeRootInit(cv, c->rm.n, cb_root), "CVodeRootInit");
     CVCHECK(CVodeSetNoInactiveRootWarn(cv), "CVodeSetNoInactiveRootWarn");
     return RC_OK;
+}
+
+/* The driver's whole state into CVODE's vector (at a restart), and back
+ * (after a solve). */
+static void gather_state(run_ctx *c)
+{
+    double *yr = N_VGetArrayPointer(c->y);
+    for (int j = 0; j < c->nr; j++) yr[j] = c->yfull[c->kidx[j]];
+}
+static void scatter_state(run_ctx *c)
+{
+    const double *yr = N_VGetArrayPointer(c->y);
+    for (int j = 0; j < c->nr; j++) c->yfull[c->kidx[j]] = yr[j];
 }
 
 /* After modes changed without a restart (cv_continued), one internal step
@@ -379,6 +484,7 @@ static int cv_solve(void *self, double tout, double *t, int *one_step)
         CVodeGetNumSteps(c->cv, &nst_before);
     }
     flag = CVode(c->cv, tout, c->y, t, *one_step ? CV_ONE_STEP : CV_NORMAL);
+    scatter_state(c);
     /* right after a root return, a single-step call may only hand back the
      * rest of the step already taken: keep the forced setup until a new
      * step has been taken */
@@ -396,7 +502,9 @@ static int cv_dky(void *self, double t, int k, int slot, const double **out)
     run_ctx *c = self;
     N_Vector v = slot == RC_BK_SAMPLE ? c->ysamp : c->ytn;
     int flag = CVodeGetDky(c->cv, t, k, v);
-    *out = N_VGetArrayPointer(v);
+    /* the whole state: the constant states at their values, their
+     * derivatives 0 */
+    *out = whole(c, v, k > 0 ? c->dyf : slot == RC_BK_SAMPLE ? c->ysf : c->ytf);
     return flag;
 }
 
@@ -426,6 +534,7 @@ static int cv_restart(void *self, double t, int at_breakpoint)
 {
     run_ctx *c = self;
     if (at_breakpoint) c->jac_patched = 0; /* the imposed rows change: a whole new Jacobian */
+    gather_state(c);
     return CVodeReInit(c->cv, t, c->y);
 }
 
@@ -449,7 +558,7 @@ static long cv_steps(void *self)
 static void cv_failure(void *self, int flag, double t, double tout, char *buf, size_t n)
 {
     run_ctx *c = self;
-    failure_advice(c->m, c->d, c->cv, flag, t, tout, c->cvmsg, c->ytn, c->f0, buf, n);
+    failure_advice(c->m, c->d, c->cv, flag, t, tout, c->cvmsg, c->ytn, c->f0, c->kidx, buf, n);
 }
 
 static const char *cv_last_msg(void *self) { return ((run_ctx *)self)->cvmsg; }
@@ -482,8 +591,7 @@ static int cv_after_events(void *self, double t, const double *y, int cpl_ev, in
     /* coupling blocks are not refreshed in place: a whole new Jacobian when
      * a contact coupling changed modes */
     c->jac_patched = ok && changed && !cpl_ev;
-    return restart || needs_restart(m, d, c->cv, c->old_mode, c->old_branch, c->old_track, c->old_slip, t, y,
-                                    c->ytn, c->f0, c->f1);
+    return restart || needs_restart(c, t, y);
 }
 
 static void cv_continued(void *self) { ((run_ctx *)self)->fresh = 1; }
@@ -505,6 +613,12 @@ static void cv_close(void *self)
     free(c->old_track);
     free(c->old_slip);
     free(c->jsave);
+    free(c->kidx);
+    free(c->ridx);
+    free(c->qoff);
+    double *full[] = {c->yfull, c->ysc, c->fsc, c->ytf, c->dyf, c->ysf, c->fa, c->fb};
+    for (size_t k = 0; k < sizeof full / sizeof full[0]; k++) free(full[k]);
+    rc_subpat_free(&c->sp);
     rc_rootmap_free(&c->rm);
     SUNContext_Free(&c->ctx);
 }

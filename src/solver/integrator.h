@@ -147,6 +147,9 @@ static inline int *rc_rootmap_info(const rc_rootmap *rm, int *roots) { return rm
 void rc_rootmap_found(const rc_rootmap *rm, int *roots);
 /* Tests only: 0 gives the integrator every root function (default 1). */
 void rc_rootmap_set_compact(int on);
+/* Tests only: 0 gives CVODE every state, the constant ones included
+ * (cvode.c; default 1: rc_constant_states left out). */
+void rc_cvode_set_reduce(int on);
 
 /* An integrator behind rc_drive. Flags are the integrator's own return
  * values (negative: a failure, named by flag_name); `self` is the

@@ -1,0 +1,369 @@
+/* The states CVODE carries (solver/cvode.c, model.h rc_constant_states):
+ * which states are constant, that their rates are exactly 0 wherever the
+ * engine evaluates them, that a state an event may write stays in, and
+ * runs with the constant states left out of CVODE's vector against runs
+ * with every state: the same events and final states within the
+ * tolerance that the different error norm explains (below). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "harness.h"
+#include "model/model.h"
+#include "solver/integrator.h"
+#include "solver/solver.h"
+#include "testutil.h"
+
+#define MAXEV 4096
+
+typedef struct {
+    int n;
+    double t[MAXEV];
+    char kind[MAXEV][32], elem[MAXEV][32];
+} evlog;
+
+static int on_event(void *user, double t, const char *kind, const char *element, const double values[3])
+{
+    (void)values;
+    evlog *l = user;
+    if (l->n < MAXEV) {
+        l->t[l->n] = t;
+        snprintf(l->kind[l->n], sizeof l->kind[0], "%s", kind);
+        snprintf(l->elem[l->n], sizeof l->elem[0], "%s", element);
+    }
+    l->n++;
+    return 0;
+}
+
+/* Three bodies on a floor plane (z = 0), gravity -z:
+ *  1 a sphere whose translations are held (/BCS 111 000), spinning freely
+ *    at omega0 = (3, -2, 5) rad/s with an isotropic inertia: no torque, so
+ *    omega stays omega0 and q(t) = (cos(|w| t/2), sin(|w| t/2) w/|w|);
+ *  2 a sphere with x and the rotations held, given v = (1, 0.5, -0.3) m/s
+ *    (the held x component is set to 0 by the compiler), bouncing on the
+ *    floor (damped TYPE6): impacts;
+ *  3 a sphere with y held (/BCS 010 000), rotations free, sliding along x
+ *    on the floor with Coulomb friction (Fric 0.3): it rolls up, its
+ *    quaternion and omega change, its y and v_y are constant. */
+static const char *DECK =
+    "/BEGIN\nreduce\n      2022         0\n"
+    "                  kg                   m                   s\n"
+    "                  kg                   m                   s\n"
+    "/FUNCT/1\nload\n                   0                   0\n                   1              100000\n"
+    "/NODE\n"
+    "         1                   0                   0                0.05\n"
+    "         2                 0.3                   0                 0.2\n"
+    "         3                -0.3                   0                0.05\n"
+    "/RBODY/1\nspinner\n         1                                                 1\n"
+    "               0.001               0.001               0.001\n"
+    "                   0                   0                   0\n"
+    "/RBODY/2\nbouncer\n         2                                               0.5\n"
+    "              0.0005              0.0008              0.0011\n"
+    "                   0                   0                   0\n"
+    "/RBODY/3\nslider\n         3                                                 1\n"
+    "               0.001               0.001               0.001\n"
+    "                   0                   0                   0\n"
+    "/GRNOD/NODE/1\ng1\n         1\n/GRNOD/NODE/2\ng2\n         2\n/GRNOD/NODE/3\ng3\n         3\n"
+    "/INIVEL/ROT/1\nspin\n                   3                  -2                   5         1         0\n"
+    "/INIVEL/TRA/2\nthrow\n                   1                 0.5                -0.3         2         0\n"
+    "/INIVEL/TRA/3\nslide\n                   1                   0                   0         3         0\n"
+    "/SURF/ELLIPS/1\ns1\n         0         2         1\n"
+    "                   0                   0                0.05\n"
+    "                0.05                0.05                0.05\n"
+    "/SURF/ELLIPS/2\ns2\n         0         2         2\n"
+    "                 0.3                   0                 0.2\n"
+    "                0.04                0.04                0.04\n"
+    "/SURF/ELLIPS/3\ns3\n         0         2         3\n"
+    "                -0.3                   0                0.05\n"
+    "                0.05                0.05                0.05\n"
+    "/SURF/PLANE/4\nfloor\n                   0                   0                   0\n"
+    "                   0                   0                   1\n"
+    "/GRAV/1\ngravity\n         0         Z         0         0         0                             1"
+    "               -9.81\n"
+    "/BCS/1\ntranslations held\n   111 000         0         1\n"
+    "/BCS/2\nx and rotations held\n   100 111         0         2\n"
+    "/BCS/3\ny held\n   010 000         0         3\n"
+    "/INTER/TYPE6/1\nbounce\n         2         4\n"
+    "                                                           0\n"
+    "                   0         0         0         0         0\n"
+    "         1         0                                                 0\n"
+    "         0\n"
+    "                  50         0         0\n"
+    "/INTER/TYPE6/2\nslide\n         3         4\n"
+    "                                     0.3                   0\n"
+    "                   0         0         0         0         0\n"
+    "         1         0                                                 0\n"
+    "         0\n"
+    "                  90         0         0\n"
+    "/RUN\n                 0.5                0.05\n"
+    "/END\n";
+
+/* The settling column locked to z (bench.py column_deck, locked): five
+ * spheres with x, y and the rotations held, dropped on a floor. */
+static char *column_deck(int n)
+{
+    size_t cap = 4096 + (size_t)n * 600, len = 0;
+    char *t = malloc(cap);
+    if (!t) return NULL;
+#define OUT(...) len += (size_t)snprintf(t + len, cap - len, __VA_ARGS__)
+    OUT("/BEGIN\ncolumn\n      2022         0\n");
+    OUT("                  kg                   m                   s\n");
+    OUT("                  kg                   m                   s\n");
+    OUT("/FUNCT/1\nload\n                   0                   0\n                   1              100000\n");
+    OUT("/NODE\n");
+    const double R = 0.01, gap = 1e-4;
+    for (int i = 0; i < n; i++) OUT("%10d%20.6g%20.6g%20.9g\n", i + 1, 0.0, 0.0, R + gap + i * (2 * R + gap));
+    for (int i = 0; i < n; i++)
+        OUT("/RBODY/%d\nsphere\n%10d%30s%20.6g\n%20.6g%20.6g%20.6g\n%20.6g%20.6g%20.6g\n", i + 1, i + 1, "", 0.01,
+            4e-7, 4e-7, 4e-7, 0.0, 0.0, 0.0);
+    for (int i = 0; i < n; i++)
+        OUT("/SURF/ELLIPS/%d\nsphere\n%10d%10d%10d\n%20.6g%20.6g%20.9g\n%20.6g%20.6g%20.6g\n", i + 1, 0, 2, i + 1, 0.0,
+            0.0, R + gap + i * (2 * R + gap), R, R, R);
+    OUT("/SURF/PLANE/%d\nfloor\n%20d%20d%20d\n%20d%20d%20d\n", n + 1, 0, 0, 0, 0, 0, 1);
+    OUT("/GRAV/1\ngravity\n         0         Z         0         0         0                             1"
+        "               -9.81\n");
+    OUT("/GRNOD/NODE/1\nall\n");
+    for (int i = 0; i < n; i++) OUT("%10d%s", i + 1, (i % 10 == 9 || i == n - 1) ? "\n" : "");
+    OUT("/BCS/1\nlocked\n   110 111         0         1\n");
+    for (int i = 0; i < n; i++) {
+        const double c = i == 0 ? 2 * sqrt(1e5 * 0.01) : 2 * sqrt(1e5 * 0.005);
+        OUT("/INTER/TYPE6/%d\ncontact\n%10d%10d\n%60s\n%20s%10d%10d%10d%10d%10d\n%10d%10d%50s\n%10d\n%20.9g%10d%10d\n",
+            i + 1, i == 0 ? 1 : i, i == 0 ? n + 1 : i + 1, "0", "0", 0, 0, 0, 0, 0, 1, 0, "0", 0, c, 0, 0);
+    }
+    OUT("/RUN\n                0.05                0.01\n/END\n");
+#undef OUT
+    return t;
+}
+
+/* Every constant state: its rate exactly 0 at the initial state and at a
+ * perturbed one (the rhs sets the held rows after every force; a position
+ * or quaternion moves only through a velocity that is constant at 0). */
+static void rates_zero(const rc_model *m, const char *what)
+{
+    const int ny = m->ny;
+    double *y = calloc((size_t)ny + 1, sizeof(double)), *f = calloc((size_t)ny + 1, sizeof(double));
+    char *cst = calloc((size_t)ny + 1, 1);
+    rc_data *d = rc_data_new(m);
+    ENSURE(y && f && cst && d);
+    if (!y || !f || !cst || !d) goto out;
+    rc_initial_state(m, y);
+    rc_modes_init(m, d, 0.0, y);
+    const int n = rc_constant_states(m, y, NULL, cst);
+    for (int pass = 0; pass < 2; pass++) {
+        if (pass == 1) /* move the kept states: the rates of the constant ones stay 0 */
+            for (int k = 0; k < ny; k++)
+                if (!cst[k]) y[k] += 1e-4 * (1 + k % 7);
+        ENSURE(rc_assemble_rhs(m, d, 0.01, y, f) == 0);
+        int bad = 0;
+        for (int k = 0; k < ny; k++) bad += cst[k] && f[k] != 0.0;
+        ENSURE(bad == 0);
+    }
+    printf("    %s: %d of %d states constant\n", what, n, ny);
+out:
+    free(y);
+    free(f);
+    free(cst);
+    rc_data_free(d);
+}
+
+static void test_reduce_constant_states(void)
+{
+    rc_error e;
+    rc_model *m = tu_compile_text(DECK, "reduce.rad", &e);
+    ENSURE(m != NULL);
+    if (!m) return;
+    const int ny = m->ny;
+    double *y = calloc((size_t)ny + 1, sizeof(double));
+    char *cst = calloc((size_t)ny + 1, 1), *w = calloc((size_t)ny + 1, 1);
+    ENSURE(y && cst && w);
+    if (!y || !cst || !w) goto out;
+    rc_initial_state(m, y);
+    const int a1 = m->body_yadr[0], a2 = m->body_yadr[1], a3 = m->body_yadr[2];
+    /* the held x velocity of body 2 was set to 0 by the compiler */
+    ENSURE(y[a2 + 7] == 0.0 && y[a2 + 8] == 0.5);
+    const int n = rc_constant_states(m, y, NULL, cst);
+    /* body 1: x (3) and v (3); body 2: x, v_x, q (4), omega (3); body 3: y, v_y */
+    ENSURE(n == 6 + 9 + 2);
+    for (int k = 0; k < 13; k++) {
+        ENSURE(cst[a1 + k] == (k < 3 || (k >= 7 && k < 10)));
+        ENSURE(cst[a2 + k] == (k == 0 || k == 7 || (k >= 3 && k < 7) || k >= 10));
+        ENSURE(cst[a3 + k] == (k == 1 || k == 8));
+    }
+    for (int k = 3 * 13; k < ny; k++) ENSURE(cst[k] == 0); /* interface states */
+    /* a held velocity that starts non-zero: the velocity is constant, its
+     * position is not */
+    y[a2 + 7] = 0.25;
+    ENSURE(rc_constant_states(m, y, NULL, cst) == n - 1);
+    ENSURE(cst[a2 + 7] && !cst[a2 + 0]);
+    /* held rotations with a non-zero omega: omega constant, q not */
+    y[a2 + 7] = 0.0;
+    y[a2 + 11] = 1.0;
+    ENSURE(rc_constant_states(m, y, NULL, cst) == n - 4);
+    ENSURE(cst[a2 + 10] && cst[a2 + 11] && cst[a2 + 12] && !cst[a2 + 3] && !cst[a2 + 6]);
+    y[a2 + 11] = 0.0;
+    /* a state an event may write stays in, and so does what depends on it:
+     * v_x of body 2 (then x too), one omega of body 2 (then all of omega
+     * and q), the x position of body 1 alone */
+    w[a2 + 7] = 1;
+    ENSURE(rc_constant_states(m, y, w, cst) == n - 2);
+    ENSURE(!cst[a2 + 7] && !cst[a2 + 0] && cst[a2 + 3]);
+    memset(w, 0, (size_t)ny);
+    w[a2 + 11] = 1;
+    ENSURE(rc_constant_states(m, y, w, cst) == n - 7);
+    for (int k = 3; k < 13; k++) ENSURE(!cst[a2 + k] || k == 7);
+    memset(w, 0, (size_t)ny);
+    w[a1 + 0] = 1;
+    ENSURE(rc_constant_states(m, y, w, cst) == n - 1);
+    ENSURE(!cst[a1 + 0] && cst[a1 + 7]);
+    rates_zero(m, "three bodies");
+out:
+    free(y);
+    free(cst);
+    free(w);
+    rc_model_free(m);
+}
+
+/* The rates of the constant states are exactly 0 on the validation decks
+ * with held degrees of freedom. */
+static void test_reduce_rates_zero_decks(void)
+{
+    const char *decks[] = {"validation/frc_incline/case.rad", "validation/stick_belt/case.rad",
+                           "validation/pw_roller_traction/case1.rad", "validation/seg_sphere_incline/case.rad",
+                           "validation/fric_slide_stop/case.rad", "validation/frc_iform_compare/case.rad"};
+    for (size_t q = 0; q < sizeof decks / sizeof decks[0]; q++) {
+        rc_model *m = NULL;
+        rc_error e;
+        ENSURE(tu_load_compile(decks[q], &m, &e) == RC_OK);
+        if (!m) continue;
+        rates_zero(m, decks[q]);
+        rc_model_free(m);
+    }
+}
+
+/* Largest |a - b| over the states of a kind, against scale. */
+static double maxdiff(const double *a, const double *b, const int *idx, int n)
+{
+    double d = 0;
+    for (int k = 0; k < n; k++) d = fmax(d, fabs(a[idx[k]] - b[idx[k]]));
+    return d;
+}
+
+/* Run m on CVODE with the constant states left out and with every state:
+ * the same events (kind, element; times within dt_ev) and final states
+ * within the tolerances (positions tol_x [m], velocities tol_v [m/s],
+ * quaternions and omega tol_r [-, rad/s]); the constant states equal to
+ * their initial values in both. Returns the reduced run's final state
+ * (malloc'd) for the caller's checks. */
+static double *same_runs(const rc_model *m, const char *what, double dt_ev, double tol_x, double tol_v, double tol_r)
+{
+    const int ny = m->ny;
+    double *ya = calloc((size_t)ny + 1, sizeof(double)), *yb = calloc((size_t)ny + 1, sizeof(double));
+    double *y0 = calloc((size_t)ny + 1, sizeof(double));
+    char *cst = calloc((size_t)ny + 1, 1);
+    evlog *la = calloc(1, sizeof *la), *lb = calloc(1, sizeof *lb);
+    int *ix = malloc(((size_t)ny + 1) * sizeof(int)), *iv = malloc(((size_t)ny + 1) * sizeof(int));
+    int *ir = malloc(((size_t)ny + 1) * sizeof(int));
+    ENSURE(ya && yb && y0 && cst && la && lb && ix && iv && ir);
+    if (!ya || !yb || !y0 || !cst || !la || !lb || !ix || !iv || !ir) goto out;
+    rc_initial_state(m, y0);
+    const int nc = rc_constant_states(m, y0, NULL, cst);
+    rc_error e;
+    rc_stats sa, sb;
+    rc_run_options oa = {.y_end = ya, .on_event = on_event, .user = la};
+    rc_run_options ob = {.y_end = yb, .on_event = on_event, .user = lb};
+    rc_cvode_set_reduce(1);
+    ENSURE(rc_solver_cvode.run(m, &oa, NULL, &sa, &e) == RC_OK);
+    rc_cvode_set_reduce(0);
+    ENSURE(rc_solver_cvode.run(m, &ob, NULL, &sb, &e) == RC_OK);
+    rc_cvode_set_reduce(1);
+    ENSURE(nc > 0);
+    ENSURE(la->n == lb->n && la->n <= MAXEV);
+    double dt = 0;
+    for (int k = 0; k < la->n && k < lb->n && k < MAXEV; k++) {
+        ENSURE(strcmp(la->kind[k], lb->kind[k]) == 0 && strcmp(la->elem[k], lb->elem[k]) == 0);
+        dt = fmax(dt, fabs(la->t[k] - lb->t[k]));
+    }
+    ENSURE(dt <= dt_ev);
+    int nx = 0, nv = 0, nr = 0;
+    for (int b = 0; b < m->nbody; b++) {
+        const int a = m->body_yadr[b];
+        if (a < 0) continue;
+        for (int k = 0; k < 3; k++) ix[nx++] = a + k, iv[nv++] = a + 7 + k, ir[nr++] = a + 10 + k;
+        for (int k = 3; k < 7; k++) ir[nr++] = a + k;
+    }
+    const double dx = maxdiff(ya, yb, ix, nx), dv = maxdiff(ya, yb, iv, nv), dr = maxdiff(ya, yb, ir, nr);
+    ENSURE(dx <= tol_x && dv <= tol_v && dr <= tol_r);
+    int moved = 0;
+    for (int k = 0; k < ny; k++) moved += cst[k] && (ya[k] != y0[k] || yb[k] != y0[k]);
+    ENSURE(moved == 0);
+    printf("    %s: %d of %d states constant; %d events, %ld / %ld steps (reduced / all states); "
+           "largest differences: event times %.2g s, x %.2g m, v %.2g m/s, q and omega %.2g\n",
+           what, nc, ny, la->n, sa.steps, sb.steps, dt, dx, dv, dr);
+out:
+    free(yb);
+    free(y0);
+    free(cst);
+    free(la);
+    free(lb);
+    free(ix);
+    free(iv);
+    free(ir);
+    return ya;
+}
+
+/* The tolerances of the comparisons. Both runs are within CVODE's error
+ * control of the same solution, with the same error weights per state;
+ * the reduced run's WRMS norm divides by fewer components (sqrt(ny / nr)
+ * tighter: 1.7 on the three bodies, 1.9 on the locked column), so its
+ * steps differ and the two runs differ by about what the local error
+ * tests admit (Rtol 1e-6, positions weighed against the contact
+ * penetration scales, 5e-5 m on the bodies' floor contacts, 1e-6 m in
+ * the column). Measured: three bodies 2.5e-10 s, 3e-10 m, 7.4e-9 m/s,
+ * 1.4e-9; column 4.9e-11 s, 2e-13 m, 6.5e-11 m/s. The bounds are about
+ * 30x those and 1e-4 of the penetration scales: a constant state that
+ * moved, a lost event or a state scattered to the wrong place fail them. */
+static void test_reduce_runs(void)
+{
+    rc_error e;
+    rc_model *m = tu_compile_text(DECK, "reduce.rad", &e);
+    ENSURE(m != NULL);
+    if (m) {
+        double *y = same_runs(m, "three bodies", 1e-8, 1e-8, 3e-7, 3e-8);
+        if (y) {
+            /* the spinner against the closed form of torque-free rotation
+             * with an isotropic inertia */
+            const double *s = y + m->body_yadr[0], w0[3] = {3, -2, 5}, T = m->tend;
+            const double wn = sqrt(38.0), c = cos(0.5 * wn * T), sn = sin(0.5 * wn * T);
+            ENSURE_NEAR(s[3], c, 0, 1e-5);
+            for (int k = 0; k < 3; k++) ENSURE_NEAR(s[4 + k], sn * w0[k] / wn, 0, 1e-5);
+            for (int k = 0; k < 3; k++) ENSURE_NEAR(s[10 + k], w0[k], 0, 1e-9);
+            ENSURE(s[0] == 0.0 && s[1] == 0.0 && s[2] == 0.05);
+            /* the bouncer kept its x and stays unrotated; the slider its y */
+            const double *b2 = y + m->body_yadr[1], *b3 = y + m->body_yadr[2];
+            ENSURE(b2[0] == 0.3 && b2[7] == 0.0 && b2[3] == 1.0 && b2[10] == 0.0);
+            ENSURE(b3[1] == 0.0 && b3[8] == 0.0);
+            ENSURE(fabs(b2[1] - 0.25) < 1e-9); /* y = 0.5 m/s x 0.5 s: no friction on the bouncer */
+            ENSURE(b3[0] > -0.3 + 0.1 && fabs(b3[11]) > 1.0); /* the slider moved and rolls */
+        }
+        free(y);
+        rc_model_free(m);
+    }
+    char *t = column_deck(5);
+    ENSURE(t != NULL);
+    if (!t) return;
+    m = tu_compile_text(t, "column.rad", &e);
+    free(t);
+    ENSURE(m != NULL);
+    if (!m) return;
+    free(same_runs(m, "locked column of 5", 2e-9, 1e-11, 3e-9, 0.0));
+    rc_model_free(m);
+}
+
+void suite_reduce(void);
+void suite_reduce(void)
+{
+    RUN_TEST(test_reduce_constant_states);
+    RUN_TEST(test_reduce_rates_zero_decks);
+    RUN_TEST(test_reduce_runs);
+}

@@ -241,6 +241,82 @@ static void test_reduce_rates_zero_decks(void)
     }
 }
 
+/* The Jacobian with the constant states' columns skipped (rc_data
+ * jac_skip, set by the CVODE backend): every entry in a kept row and a
+ * kept column bit for bit the whole Jacobian's (complex-step columns are
+ * independent), the skipped columns 0; the same after an interface's
+ * block is refreshed at an event (rc_jac_refresh_inter). */
+static void test_reduce_jacobian_skip(void)
+{
+    rc_error e;
+    rc_model *m = tu_compile_text(DECK, "reduce.rad", &e);
+    ENSURE(m != NULL);
+    if (!m) return;
+    const int ny = m->ny;
+    double *y = calloc((size_t)ny + 1, sizeof(double));
+    double *ja = calloc((size_t)m->nnz + 1, sizeof(double)), *jb = calloc((size_t)m->nnz + 1, sizeof(double));
+    char *cst = calloc((size_t)ny + 1, 1);
+    rc_data *d = rc_data_new(m);
+    ENSURE(y && ja && jb && cst && d);
+    if (!y || !ja || !jb || !cst || !d) goto out;
+    rc_initial_state(m, y);
+    const int n = rc_constant_states(m, y, NULL, cst);
+    ENSURE(n == 17);
+    /* both contacts closed, bodies moving and turning */
+    const int a2 = m->body_yadr[1], a3 = m->body_yadr[2];
+    y[a2 + 2] = 0.0395;
+    y[a2 + 9] = -0.4;
+    y[a3 + 2] = 0.0497;
+    y[a3 + 4] = 0.1;
+    y[a3 + 11] = 2.0;
+    rc_modes_init(m, d, 0.0, y);
+    ENSURE(d->inter_mode[0] == RC_MODE_CLOSED && d->inter_mode[1] == RC_MODE_CLOSED);
+    for (int pass = 0; pass < 2; pass++) {
+        d->jac_skip = NULL;
+        ENSURE(rc_assemble_jac(m, d, 0.01, y, ja) == 0);
+        d->jac_skip = cst;
+        ENSURE(rc_assemble_jac(m, d, 0.01, y, jb) == 0);
+        int differ = 0, nonzero = 0, kept = 0, skipped_nz = 0;
+        for (int c = 0; c < ny; c++)
+            for (int64_t k = m->jac_colptr[c]; k < m->jac_colptr[c + 1]; k++) {
+                const int r = (int)m->jac_rowind[k];
+                if (!cst[r] && !cst[c]) {
+                    kept++;
+                    differ += memcmp(&ja[k], &jb[k], sizeof(double)) != 0;
+                    nonzero += ja[k] != 0.0;
+                } else if (cst[c]) {
+                    skipped_nz += jb[k] != 0.0;
+                }
+            }
+        ENSURE(differ == 0 && skipped_nz == 0 && nonzero > 20);
+        printf("    pass %d: %d kept entries (%d non-zero) identical, skipped columns 0\n", pass, kept, nonzero);
+        /* refresh the slider's interface in another mode (released) after
+         * a whole assembly, each way (the block cache is the last assembly's) */
+        for (int v = 0; v < 2; v++) {
+            d->jac_skip = v ? cst : NULL;
+            ENSURE(rc_assemble_jac(m, d, 0.01, y, v ? jb : ja) == 0);
+            d->inter_mode[1] = RC_MODE_RELEASED;
+            ENSURE(rc_jac_refresh_inter(m, d, 1, y, v ? jb : ja) == 0);
+            d->inter_mode[1] = RC_MODE_CLOSED;
+        }
+        differ = 0;
+        for (int c = 0; c < ny; c++)
+            for (int64_t k = m->jac_colptr[c]; k < m->jac_colptr[c + 1]; k++)
+                if (!cst[m->jac_rowind[k]] && !cst[c]) differ += memcmp(&ja[k], &jb[k], sizeof(double)) != 0;
+        ENSURE(differ == 0);
+        /* the second pass at another state of the slider */
+        y[a3 + 11] += 1.0;
+    }
+    d->jac_skip = NULL;
+out:
+    free(y);
+    free(ja);
+    free(jb);
+    free(cst);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 /* Largest |a - b| over the states of a kind, against scale. */
 static double maxdiff(const double *a, const double *b, const int *idx, int n)
 {
@@ -365,5 +441,6 @@ void suite_reduce(void)
 {
     RUN_TEST(test_reduce_constant_states);
     RUN_TEST(test_reduce_rates_zero_decks);
+    RUN_TEST(test_reduce_jacobian_skip);
     RUN_TEST(test_reduce_runs);
 }

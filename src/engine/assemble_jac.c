@@ -31,13 +31,18 @@ static void load_body(const rc_model *m, int b, const double *y, T *yc)
     for (int k = 0; k < RC_NB; k++) yc[k] = s[k];
 }
 
-/* Dense 13 x 13 block of body b: d(ydot_b)/d(y_b). */
-static void dense_body(const rc_model *m, int b, double t, const double *y, double *out)
+/* Dense 13 x 13 block of body b: d(ydot_b)/d(y_b); the columns of the
+ * states in skip (NULL: none) are left 0. */
+static void dense_body(const rc_model *m, int b, double t, const double *y, double *out, const char *skip)
 {
     T yc[RC_NB], yd[RC_NB];
     load_body(m, b, y, yc);
     const double gf = rc_gravity_factor(m, t);
     for (int c = 0; c < RC_NB; c++) {
+        if (skip && skip[m->body_yadr[b] + c]) {
+            for (int r = 0; r < RC_NB; r++) out[r * RC_NB + c] = 0.0;
+            continue;
+        }
         yc[c] += I * RC_CSTEP;
         body_rhs_c(m, b, gf, yc, yd);
         for (int r = 0; r < RC_NB; r++) out[r * RC_NB + c] = cimag(yd[r]) / RC_CSTEP;
@@ -50,9 +55,11 @@ static void dense_body(const rc_model *m, int b, double t, const double *y, doub
  * Contact points with friction (inter_npt): their states are read from y,
  * modes pslip (NULL: all `slip`); work: complex scratch of 2 (RC_NS_MAX +
  * inter_pst npt) values; ptslot (NULL: not wanted): the point-state rows of the
- * same columns are added into val through it (inter_ptslot). */
+ * same columns are added into val through it (inter_ptslot); the columns of
+ * the states in skip (NULL: none) are left 0. */
 static void dense_inter(const rc_model *m, int i, int mode, int branch, int track, int slip, const int *pslip,
-                        const double *y, double *out, T *work, const int64_t *ptslot, double *val, T *ncache)
+                        const double *y, double *out, T *work, const int64_t *ptslot, double *val, T *ncache,
+                        const char *skip)
 {
     const rc_jblock *jb = &m->jb_inter[i];
     const int ba = m->inter_ba[i], bb = m->inter_bb[i], ns = m->inter_ns[i], ps = m->inter_pst[i];
@@ -66,6 +73,10 @@ static void dense_inter(const rc_model *m, int i, int mode, int branch, int trac
     load_body(m, bb, y, yb);
     for (int k = 0; k < ns + np3; k++) ys[k] = y[m->inter_eadr[i] + k];
     for (int c = 0; c < jb->ncol; c++) {
+        if (skip && skip[jb->cols[c]]) {
+            for (int r = 0; r < jb->nrow; r++) out[r * jb->ncol + c] = 0.0;
+            continue;
+        }
         T *yp = c < na ? ya + c : c < na + nb ? yb + (c - na) : ys + (c - na - nb);
         *yp += I * RC_CSTEP;
         T acc[12] = {0};
@@ -143,7 +154,7 @@ void rc_jac_dense_block(const rc_model *m, int is_inter, int e, int mode, int br
                         double t, const double *y, double *out)
 {
     if (!is_inter) {
-        dense_body(m, e, t, y, out);
+        dense_body(m, e, t, y, out, NULL);
         return;
     }
     /* contact points: their states in a scratch of their own, all in mode slip */
@@ -153,7 +164,7 @@ void rc_jac_dense_block(const rc_model *m, int is_inter, int e, int mode, int br
         for (int k = 0; k < m->jb_inter[e].nrow * m->jb_inter[e].ncol; k++) out[k] = NAN;
         return;
     }
-    dense_inter(m, e, mode, branch, track, slip, NULL, y, out, work, NULL, NULL, NULL);
+    dense_inter(m, e, mode, branch, track, slip, NULL, y, out, work, NULL, NULL, NULL, NULL);
     free(work);
 }
 
@@ -171,7 +182,7 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
     memset(val, 0, (size_t)m->nnz * sizeof(double));
     for (int b = 0; b < m->nbody; b++)
         if (m->body_yadr[b] >= 0) {
-            dense_body(m, b, t, y, dense);
+            dense_body(m, b, t, y, dense, d->jac_skip);
             scatter(&m->jb_body[b], dense, val);
         }
     for (int i = 0; i < m->ninter; i++) {
@@ -181,7 +192,7 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
             const int np = m->inter_npt[i];
             dense_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
                         d->pt_slip + m->inter_pbase[i], y, dense, d->pt_work, np > 0 ? m->inter_ptslot[i] : NULL, val,
-                        d->node_cache);
+                        d->node_cache, d->jac_skip);
             scatter(jb, dense, val);
             if (np > 0 && d->inter_mode[i] == RC_MODE_CLOSED) points_jac(m, d, i, y, val);
         } else {
@@ -220,7 +231,7 @@ int rc_jac_refresh_inter(const rc_model *m, rc_data *d, int i, const double *y, 
     double dense[RC_JB_MAX];
     if (d->inter_mode[i] != RC_MODE_INACTIVE)
         dense_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
-                    d->pt_slip + m->inter_pbase[i], y, dense, d->pt_work, NULL, val, d->node_cache);
+                    d->pt_slip + m->inter_pbase[i], y, dense, d->pt_work, NULL, val, d->node_cache, d->jac_skip);
     else
         memset(dense, 0, (size_t)nd * sizeof(double));
     double *old = d->jcache + d->jcache_off[i];

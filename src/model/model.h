@@ -321,6 +321,10 @@ typedef struct rc_data {
     double *jcache;      /* [sum of nrow*ncol of jb_inter] */
     int64_t *jcache_off; /* [ninter + 1] offsets into jcache */
     int jcache_ok;       /* jcache holds the blocks of the values last assembled */
+    const char *jac_skip; /* [ny] set by a backend that leaves these states out
+                            of its Newton matrix (cvode.c): the Jacobian's
+                            columns of these states are not evaluated (their
+                            values are left 0); NULL: every column */
     long n_rhs, n_jac, n_root;
     long n_jac_refresh;  /* interface blocks refreshed after events */
     int fail_inter;      /* element that produced a non-finite force, -1 */

@@ -74,8 +74,11 @@ typedef struct run_ctx {
      * state, ridx[ny] the reverse (-1: constant, not in CVODE's vector) */
     int nr, red; /* red: some state left out (nr < ny) */
     int *kidx, *ridx;
+    char *cst; /* [ny] 1: constant, left out (the engine skips their Jacobian columns) */
     int nq, *qoff; /* kept quaternions: their offsets in CVODE's vector */
     rc_subpat sp;  /* the Newton matrix's pattern: the kept part of the model's */
+    int64_t *src;  /* [sp.nnz] each entry's slot in the model's pattern (from sp.map);
+                      NULL: the same pattern (nothing left out) */
     /* whole-state vectors [ny]: the driver's state, and scratch for the
      * callbacks (rhs state and rate, interpolants of order 0 and higher,
      * impact samples, restart test); the constant states hold their values
@@ -151,7 +154,11 @@ static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleanty
     }
     /* the pattern was written once (cv_start): nothing else writes A */
     double *a = SUNSparseMatrix_Data(A);
-    rc_subpat_gather(&c->sp, m->nnz, -gamma, c->jsave, a);
+    const double *js = c->jsave;
+    if (c->src) /* the kept entries only (a loop over the part, not the whole) */
+        for (int64_t k = 0; k < c->sp.nnz; k++) a[k] = -gamma * js[c->src[k]];
+    else
+        for (int64_t k = 0; k < c->sp.nnz; k++) a[k] = -gamma * js[k];
     for (int r = 0; r < c->sp.n; r++) a[c->sp.diag[r]] += 1.0;
     return 0;
 }
@@ -381,7 +388,7 @@ static rc_status cv_open(void *self, const rc_model *m, rc_data *d, const rc_run
 static rc_status plan_states(run_ctx *c, const double *y0, rc_error *err)
 {
     const rc_model *m = c->m;
-    char *cst = calloc((size_t)m->ny + 1, 1);
+    char *cst = c->cst = calloc((size_t)m->ny + 1, 1);
     if (!cst) return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     if (reduce_on) rc_constant_states(m, y0, NULL, cst);
     c->nr = 0;
@@ -389,8 +396,10 @@ static rc_status plan_states(run_ctx *c, const double *y0, rc_error *err)
         c->ridx[k] = cst[k] ? -1 : c->nr;
         if (!cst[k]) c->kidx[c->nr++] = k;
     }
-    free(cst);
     c->red = c->nr < m->ny;
+    /* the Jacobian's columns of the constant states are not needed: the
+     * engine leaves them out (their rows and columns are not in the part) */
+    c->d->jac_skip = c->red ? cst : NULL;
     c->nq = 0;
     for (int b = 0; b < m->nbody; b++)
         if (m->body_yadr[b] >= 0 && c->ridx[m->body_yadr[b] + 3] >= 0) c->qoff[c->nq++] = c->ridx[m->body_yadr[b] + 3];
@@ -399,6 +408,16 @@ static rc_status plan_states(run_ctx *c, const double *y0, rc_error *err)
     const int sb = rc_subpat_build(&c->sp, m->ny, m->jac_colptr, m->jac_rowind, c->red ? c->ridx : NULL, NULL);
     if (sb == -1) return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     if (sb) return RC_SET(err, RC_EINTERNAL, "the Newton matrix's pattern lacks a diagonal entry");
+    /* the inverse of sp.map, for the values (cb_linsys); none when the part
+     * is the whole pattern (map the identity) */
+    free(c->src);
+    c->src = NULL;
+    if (c->sp.nnz < m->nnz) {
+        if (!(c->src = malloc(((size_t)c->sp.nnz + 1) * sizeof(int64_t))))
+            return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
+        for (int64_t k = 0; k < m->nnz; k++)
+            if (c->sp.map[k] >= 0) c->src[c->sp.map[k]] = k;
+    }
     return RC_OK;
 }
 
@@ -613,12 +632,15 @@ static void cv_close(void *self)
     free(c->old_track);
     free(c->old_slip);
     free(c->jsave);
+    if (c->d) c->d->jac_skip = NULL;
+    free(c->cst);
     free(c->kidx);
     free(c->ridx);
     free(c->qoff);
     double *full[] = {c->yfull, c->ysc, c->fsc, c->ytf, c->dyf, c->ysf, c->fa, c->fb};
     for (size_t k = 0; k < sizeof full / sizeof full[0]; k++) free(full[k]);
     rc_subpat_free(&c->sp);
+    free(c->src);
     rc_rootmap_free(&c->rm);
     SUNContext_Free(&c->ctx);
 }

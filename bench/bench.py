@@ -1146,12 +1146,102 @@ def bench_joint(B):
     return rows
 
 
+def only_rtol_text(d, rtol):
+    """A deck's text with the /SOLVER card reduced to Rtol (absolute
+    tolerances derived from the model, docs/theory.md 7.1)."""
+    t = d.text()
+    i = t.index("/SOLVER")
+    rest = t[i:].split("\n")
+    return t[:i] + "\n".join([rest[0], "%10d%10d%10d%20.6g" % (1, 5, 10**7, rtol), "", ""] + rest[4:])
+
+
+def bench_stepcost(B, old_build, repeat=3, cases=((100, 5.0), (1000, 0.02))):
+    """Per-step cost against cvode_ref (target 1): the free column and the
+    locked column (x, y and rotations held by /BCS: the 1-D ODE of
+    cvode_ref), Rtol 1e-6 with derived absolute tolerances. rc_time of this
+    build and, when old_build is given, of that build, interleaved, best of
+    `repeat`; cvode_ref in the same rounds; the final-force error of each
+    (CLI run, netCDF) against the event-located RK4 reference."""
+    p = dict(COL)
+    rtol = 1e-6
+    builds = [("new", B.build)] + ([("old", os.path.abspath(old_build))] if old_build else [])
+    res = {"rtol": rtol, "repeat": repeat, "builds": dict(builds), "cases": []}
+    for N, tend in cases:
+        q = dict(p)
+        q["tend"], q["dtout"] = tend, tend / 10
+        scale = N * q["m"] * G
+        ff = os.path.join(B.work, f"step{N}_ref.txt")
+        ref = B.explicit_run(["reference", N, q["R"], q["m"], q["k"], q["zeta"], -1, q["gap"], tend, 2e-5, "clip", ff])
+        F = np.loadtxt(ff, ndmin=1)
+        cases_out = {}
+        decks = {}
+        for var in ("free", "locked"):
+            name = f"step{N}_{tend:g}_{var}"
+            path = os.path.join(B.work, name + ".rad")
+            with open(path, "w") as f:
+                f.write(only_rtol_text(column_deck(N, rtol, q, locked=(var == "locked")), rtol))
+            decks[var] = path
+        walls = {(b, v): [] for b, _ in builds for v in decks}
+        steps = {}
+        cv = []
+        for _ in range(repeat):
+            for var, path in decks.items():
+                for b, bdir in builds:
+                    rc, so, se, _, _ = B.measured([os.path.join(bdir, "rc_time"), path, 1], 1200)
+                    t = kv(so)
+                    if rc == 0 and t.get("status") == "ok":
+                        walls[(b, var)].append(t["wall_time"])
+                        steps[(b, var)] = t["steps"]
+            c = B.cvode_run(["column", N, q["R"], q["m"], q["k"], q["zeta"], q["gap"], tend, rtol,
+                             os.path.join(B.work, f"step{N}_cvode.txt")])
+            if c.get("ok"):
+                cv.append(c)
+        cbest = min(cv, key=lambda c: c["wall_time"])
+        cF = np.loadtxt(os.path.join(B.work, f"step{N}_cvode.txt"), ndmin=1)
+        c_err = float(np.max(np.abs(cF - F)) / scale)
+        c_step = cbest["wall_time"] / cbest["steps"]
+        rows = []
+        for var, path in decks.items():
+            for b, bdir in builds:
+                ws = walls[(b, var)]
+                if not ws:
+                    rows.append([var, b, "FAILED"])
+                    continue
+                out = os.path.join(B.work, f"{os.path.basename(path)[:-4]}_{b}.nc")
+                subprocess.run([os.path.join(bdir, "ricochet"), "run", path, "-o", out, "-q"], capture_output=True)
+                err = float("nan")
+                try:
+                    with Dataset(out) as nc:
+                        err = float(np.max(np.abs(np.array(nc["inter_force_normal"][-1, :]) - F)) / scale)
+                    os.remove(out)
+                except Exception:  # noqa: BLE001
+                    pass
+                best = min(ws)
+                per = best / steps[(b, var)]
+                cases_out[f"{var}_{b}"] = {"walls": ws, "steps": steps[(b, var)], "per_step": per,
+                                           "ratio": per / c_step, "error": err}
+                rows.append([var, b, ", ".join(f"{w:.3g}" for w in ws), steps[(b, var)], f"{1e3 * per:.4f}",
+                             f"{per / c_step:.2f}", fmt_e(err)])
+        rows.append(["cvode_ref", "", ", ".join(f"{c['wall_time']:.3g}" for c in cv), cbest["steps"],
+                     f"{1e3 * c_step:.4f}", "1", fmt_e(c_err)])
+        table(f"N = {N}, {tend:g} s, Rtol {rtol:g} (derived atol): per-step cost against cvode_ref (best of {repeat})",
+              ["deck", "build", "wall [s]", "steps", "ms/step", "x cvode_ref", "final-force error"], rows,
+              note=f"reference: event-located RK4 h = 2e-5 s ({ref.get('events')} events); error = max over contacts "
+                   "|F - F_ref| / (N m g) at the end")
+        res["cases"].append({"N": N, "tend": tend, "runs": cases_out, "cvode_ref": {
+            "walls": [c["wall_time"] for c in cv], "steps": cbest["steps"], "per_step": c_step, "error": c_err}})
+    return res
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--quick", action="store_true", help="fewer variants (smoke test)")
-    ap.add_argument("--only", choices=["drop", "column", "quasi", "ramp", "stickslip", "joint"],
-                    help="quasi = ramp + stickslip")
+    ap.add_argument("--only", choices=["drop", "column", "quasi", "ramp", "stickslip", "joint", "stepcost"],
+                    help="quasi = ramp + stickslip; stepcost (not in the full run): the per-step cost of the free "
+                         "and the locked column against cvode_ref")
+    ap.add_argument("--old-build", default=None,
+                    help="stepcost: a second build directory (its rc_time and ricochet) run interleaved")
     ap.add_argument("--sizes", default="10,100,1000")
     ap.add_argument("--qsizes", default=None, help="column sizes of the ramp (default 100,1000; --quick: 100)")
     ap.add_argument("--ramps", default="20,100", help="ramp durations [s]")
@@ -1183,6 +1273,8 @@ def main():
         B.results["stickslip"] = bench_stickslip(B)
     if a.only in (None, "joint"):
         B.results["joint"] = bench_joint(B)
+    if a.only == "stepcost":
+        B.results["stepcost"] = bench_stepcost(B, a.old_build)
     B.results["bench_wall"] = time.time() - t0
     path = a.json or os.path.join(B.work, "results.json")
     with open(path, "w") as f:

@@ -436,6 +436,41 @@ static void test_reduce_runs(void)
     rc_model_free(m);
 }
 
+/* A body held in all six directions by two cards (not fixed: it keeps
+ * its states) and nothing else: every state constant; CVODE is then given
+ * them all (a vector of none cannot be integrated) and the run ends with
+ * the state unchanged. */
+static void test_reduce_all_constant(void)
+{
+    const char *deck = "/BEGIN\nheld\n      2022         0\n"
+                       "                  kg                   m                   s\n"
+                       "                  kg                   m                   s\n"
+                       "/NODE\n         1                   0                   0                   1\n"
+                       "/RBODY/1\nbody\n         1                                                 1\n"
+                       "                 0.1                 0.1                 0.1\n"
+                       "                   0                   0                   0\n"
+                       "/GRNOD/NODE/1\ng\n         1\n"
+                       "/GRAV/1\ngravity\n         0         Z         0         0         0"
+                       "                             1               -9.81\n"
+                       "/BCS/1\ntranslations\n   111 000         0         1\n"
+                       "/BCS/2\nrotations\n   000 111         0         1\n"
+                       "/RUN\n                 0.1                0.05\n/END\n";
+    rc_error e;
+    rc_model *m = tu_compile_text(deck, "held.rad", &e);
+    ENSURE(m != NULL);
+    if (!m) return;
+    double y0[RC_NB], y[RC_NB];
+    char cst[RC_NB];
+    ENSURE(m->ny == RC_NB);
+    rc_initial_state(m, y0);
+    ENSURE(rc_constant_states(m, y0, NULL, cst) == RC_NB);
+    rc_run_options o = {.y_end = y};
+    rc_stats st;
+    ENSURE(rc_solver_cvode.run(m, &o, NULL, &st, &e) == RC_OK);
+    ENSURE(memcmp(y, y0, sizeof y) == 0);
+    rc_model_free(m);
+}
+
 void suite_reduce(void);
 void suite_reduce(void)
 {
@@ -443,4 +478,5 @@ void suite_reduce(void)
     RUN_TEST(test_reduce_rates_zero_decks);
     RUN_TEST(test_reduce_jacobian_skip);
     RUN_TEST(test_reduce_runs);
+    RUN_TEST(test_reduce_all_constant);
 }

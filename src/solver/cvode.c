@@ -390,7 +390,9 @@ static rc_status plan_states(run_ctx *c, const double *y0, rc_error *err)
     const rc_model *m = c->m;
     char *cst = c->cst = calloc((size_t)m->ny + 1, 1);
     if (!cst) return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
-    if (reduce_on) rc_constant_states(m, y0, NULL, cst);
+    /* (every state constant: a body held in all six directions by two
+     * cards and nothing else; CVODE is given them all) */
+    if (reduce_on && rc_constant_states(m, y0, NULL, cst) == m->ny) memset(cst, 0, (size_t)m->ny);
     c->nr = 0;
     for (int k = 0; k < m->ny; k++) {
         c->ridx[k] = cst[k] ? -1 : c->nr;

@@ -430,7 +430,9 @@ static rc_status cv_start(void *self, rc_error *err)
     rc_status st = plan_states(c, c->yfull, err);
     if (st) return st;
     const sunindextype nr = c->nr;
-    c->y = N_VNew_Serial(nr, c->ctx);
+    /* nothing left out: CVODE's vector is the driver's state itself (no copy
+     * after each call) */
+    c->y = c->red ? N_VNew_Serial(nr, c->ctx) : N_VMake_Serial(nr, c->yfull, c->ctx);
     c->av = N_VNew_Serial(nr, c->ctx);
     c->f0 = N_VNew_Serial(nr, c->ctx);
     c->f1 = N_VNew_Serial(nr, c->ctx);
@@ -479,11 +481,13 @@ static rc_status cv_start(void *self, rc_error *err)
  * (after a solve). */
 static void gather_state(run_ctx *c)
 {
+    if (!c->red) return; /* the same array */
     double *yr = N_VGetArrayPointer(c->y);
     for (int j = 0; j < c->nr; j++) yr[j] = c->yfull[c->kidx[j]];
 }
 static void scatter_state(run_ctx *c)
 {
+    if (!c->red) return;
     const double *yr = N_VGetArrayPointer(c->y);
     for (int j = 0; j < c->nr; j++) c->yfull[c->kidx[j]] = yr[j];
 }

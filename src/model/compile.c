@@ -231,6 +231,11 @@ static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
         const double *org = b >= 0 ? m->body_y0 + RC_NB * b : m->ground_y0;
         if (cs->kind == RC_CASE_SURF_CYL || cs->kind == RC_CASE_SURF_BOX) {
             rc_geom_surface(cs, m, s, org); /* model/geom.c */
+            /* a box against a plane or a box: its corners and faces too */
+            if (rc_geom_box_needs_corners(c, s)) {
+                rc_status st = rc_geom_box_corners(m, s, err);
+                if (st) return st;
+            }
         } else if (cs->kind == RC_CASE_SURF_PLANE) {
             double n[3], len = 0;
             for (int k = 0; k < 3; k++) {
@@ -325,6 +330,9 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     /* IRS belongs to surf_ID1, IRm to surf_ID2, whichever is surface a */
     m->inter_orient[2 * i] = s1 == s1_in ? t6->irs : t6->irm;
     m->inter_orient[2 * i + 1] = s1 == s1_in ? t6->irm : t6->irs;
+    /* no effect on an analytic surface: a box's faces point out of it */
+    for (int e = 0; e < 2; e++)
+        if (m->surf_kind[e ? s2 : s1] != RC_SURF_SEG) m->inter_orient[2 * i + e] = 0;
     m->inter_sa[i] = s1;
     m->inter_sb[i] = s2;
     m->inter_ba[i] = m->surf_body[s1];
@@ -448,7 +456,7 @@ static rc_status check_exact_stick(const rc_case *c, rc_model *m, rc_error *err)
                  RC_LOCFMT "card %s: exact stick on %s, a %s pair with several contact points, is not supported yet: "
                            "expected a single-point pair (sphere, cylinder against a plane, box, sphere) or the "
                            "incremental friction",
-                 RC_LOC(loc), what, m->inter_name[i], rc_geom_pair_name(m->inter_pair[i]));
+                 RC_LOC(loc), what, m->inter_name[i], rc_geom_inter_pair_name(m, i));
     }
     return RC_OK;
 }

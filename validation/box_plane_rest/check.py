@@ -26,6 +26,7 @@ import sys
 
 import numpy as np
 from netCDF4 import Dataset
+from scipy.integrate import quad
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
@@ -83,6 +84,75 @@ def deck():
     return d
 
 
+KP2, TH0 = 1.0e8, 0.3                    # pivot: contact stiffness [N/m], initial tilt [rad]
+
+
+def deck_pivot():
+    """A box standing on its +x bottom edge, tilted by TH0 about y, released
+    at rest on a frictionless plane (stiff contact): it falls back flat."""
+    d = Deck("analytic box falling back from its edge, frictionless plane")
+    R = np.array([[math.cos(TH0), 0, math.sin(TH0)], [0, 1, 0], [-math.sin(TH0), 0, math.cos(TH0)]])
+    # the edge's penetration at t = 0: the normal force of the released box,
+    # m (g + z''(0)), z'' = z' th'' with th'' = -m g z' / (m z'^2 + J_yy)
+    dz0 = A / 2 * math.cos(TH0) - C / 2 * math.sin(TH0)
+    p0 = M * (G - dz0 * M * G * dz0 / (M * dz0 * dz0 + JD[1])) / KP2
+    zc = A / 2 * math.sin(TH0) + C / 2 * math.cos(TH0) - p0
+    J = R @ np.diag(JD) @ R.T
+    d.nodes([(1, 0.0, 0.0, zc)])
+    d.grnod(1, [1], title="box")
+    d.rbody(1, 1, M, (J[0, 0], J[1, 1], J[2, 2]), Joff=(J[0, 1], J[1, 2], J[0, 2]), grnod=1, title="box")
+    d.box(11, 1, (0.0, 0.0, zc), (A / 2, B / 2, C / 2), u=tuple(R[:, 0]), v=tuple(R[:, 1]), title="box on its edge")
+    d.plane(10, (0, 0, 0), (0, 0, 1), title="floor z = 0")
+    d.funct(1, [0.0, 1.0], [0.0, KP2], title="linear k = 1e8 N/m")
+    d.type6(1, 11, 10, 1, visc=2 * ZETA * math.sqrt(KP2 * M), title="box on the floor, frictionless")
+    d.grav(1, "Z", -G)
+    d.run(0.3, 0.001)
+    return d
+
+
+def pivot_reference(th):
+    """Rigid box on its edge, frictionless plane: the centre moves only
+    vertically, z(th) = a/2 sin th + c/2 cos th, and the energy
+    m g (z(TH0) - z(th)) = (m z'(th)^2 + J_yy) th'^2 / 2 gives |th'|."""
+    z = lambda t: A / 2 * math.sin(t) + C / 2 * math.cos(t)  # noqa: E731
+    dz = A / 2 * math.cos(th) - C / 2 * math.sin(th)
+    return math.sqrt(2 * M * G * (z(TH0) - z(th)) / (M * dz * dz + JD[1]))
+
+
+def check_pivot():
+    path = rcval.run(deck_pivot(), name="pivot")
+    r = rcval.Result(path)
+    with Dataset(path) as nc:
+        quat = np.array(nc["body_quaternion"][:])
+        omega = np.array(nc["body_angular_velocity"][:])
+    th = TH0 + 2 * np.arctan2(quat[:, 0, 2], quat[:, 0, 0])  # rotation about y from the start
+    land = np.where(th <= 0)[0]
+    k1 = int(land[0]) if len(land) else len(th)
+    # the tilt rate against the closed form while the box turns on its edge
+    win = [k for k in range(k1) if 0.02 <= th[k] <= TH0 - 0.02]
+    err = max(abs(-omega[k, 0, 1] - pivot_reference(th[k])) / pivot_reference(th[k]) for k in win) if win else float("inf")
+    rcval.check("box_plane_rest.pivot.rate", len(win) > 20 and err < 1e-4,
+                f"box falling back from its edge (tilt {TH0:g} rad, frictionless, k = {KP2:.0e} N/m): over {len(win)} "
+                f"records with the tilt in [0.02, {TH0 - 0.02:g}] rad, max rel. error of |d tilt/dt| against the "
+                f"rigid-body energy closed form {err:.2e} (< 1e-4: the penetration m g / k = {M * G / KP2:.1e} m "
+                f"against the drop {A / 2 * math.sin(TH0) + C / 2 * math.cos(TH0) - C / 2:.4f} m)")
+    # the fall: the tilt reaches TH1 (just before the flat landing, whose
+    # impact stops the turn) at T = int_TH1^TH0 dth / |th'(th)|
+    TH1 = 0.01
+    T = quad(lambda t: 1.0 / pivot_reference(t), TH1, TH0, limit=200)[0]
+    below = np.where(th <= TH1)[0]
+    k2 = int(below[0]) if len(below) else 0
+    tl = r.t[k2 - 1] + (r.t[k2] - r.t[k2 - 1]) * (th[k2 - 1] - TH1) / (th[k2 - 1] - th[k2]) if k2 > 0 else float("nan")
+    e = abs(tl - T) / T
+    rcval.check("box_plane_rest.pivot.fall_time", e < 1e-4,
+                f"tilt {TH1:g} rad at {tl:.7f} s (records every 1 ms, linear interpolation), closed form "
+                f"int dth / |th'| from {TH0:g} to {TH1:g} rad = {T:.7f} s (scipy quad), rel. error {e:.2e} (< 1e-4)")
+    dx = float(np.max(np.abs(r.pos[:k1, 0, 0] - r.pos[0, 0, 0])))
+    rcval.check("box_plane_rest.pivot.no_drift", dx < 1e-9,
+                f"frictionless: no horizontal force, the centre's x stays put until the landing: max |dx| = {dx:.1e} m "
+                f"(< 1e-9)")
+
+
 def quat_matrix(q):
     w, x, y, z = q / np.linalg.norm(q)
     return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
@@ -128,6 +198,7 @@ def main():
         rcval.check(f"box_plane_rest.{name}.rest", v < 1e-6,
                     f"|v| + |omega| a = {v:.2e} m/s at t = {r.t[-1]:g} s (< 1e-6: at rest)")
     rcval.check_ledger("box_plane_rest.ledger", r, 1e-5)
+    check_pivot()
     rcval.finish()
 
 

@@ -207,13 +207,17 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
 /* ---- surfaces ---------------------------------------------------------- */
 static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
 {
-    for (int s = 0; s < c->nsurf; s++) {
+    /* the boxes that meet a plane or a box: their corners and faces too */
+    unsigned char *corners = malloc((size_t)c->nsurf + 1);
+    if (!corners) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    rc_geom_box_corner_flags(c, corners); /* model/geom.c */
+    rc_status st = RC_OK;
+    for (int s = 0; s < c->nsurf && !st; s++) {
         const rc_case_surf *cs = &c->surf[s];
         m->surf_nadr[s + 1] = m->surf_nadr[s];
         m->surf_sadr[s + 1] = m->surf_sadr[s];
         if (cs->kind == RC_CASE_SURF_SEG || cs->kind == RC_CASE_SURF_PART) {
-            rc_status st = rc_seg_surface(c, m, s, err); /* model/segsurf.c */
-            if (st) return st;
+            st = rc_seg_surface(c, m, s, err); /* model/segsurf.c */
             continue;
         }
         static const char *const kinds[5] = {"", "PLANE", "ELLIPS", "CYL", "BOX"};
@@ -221,9 +225,11 @@ static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
         int b = -1;
         if (cs->rbody_id) {
             b = rc_case_find_rbody(c, cs->rbody_id);
-            if (b < 0)
-                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /SURF/%s/%d, field rbody_ID: expected the id of a /RBODY, got %d (no such body)",
-                         RC_LOC(rc_loc_or(cs->rbody_loc, cs->loc)), kind, cs->id, cs->rbody_id);
+            if (b < 0) {
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /SURF/%s/%d, field rbody_ID: expected the id of a /RBODY, got %d (no such body)",
+                            RC_LOC(rc_loc_or(cs->rbody_loc, cs->loc)), kind, cs->id, cs->rbody_id);
+                break;
+            }
         }
         m->surf_id[s] = cs->id;
         m->surf_body[s] = b;
@@ -231,11 +237,7 @@ static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
         const double *org = b >= 0 ? m->body_y0 + RC_NB * b : m->ground_y0;
         if (cs->kind == RC_CASE_SURF_CYL || cs->kind == RC_CASE_SURF_BOX) {
             rc_geom_surface(cs, m, s, org); /* model/geom.c */
-            /* a box against a plane or a box: its corners and faces too */
-            if (rc_geom_box_needs_corners(c, s)) {
-                rc_status st = rc_geom_box_corners(m, s, err);
-                if (st) return st;
-            }
+            if (corners[s]) st = rc_geom_box_corners(m, s, err);
         } else if (cs->kind == RC_CASE_SURF_PLANE) {
             double n[3], len = 0;
             for (int k = 0; k < 3; k++) {
@@ -254,7 +256,8 @@ static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
             for (int k = 0; k < 3; k++) m->surf_p[3 * s + k] = cs->c[k] - org[k];
         }
     }
-    return RC_OK;
+    free(corners);
+    return st;
 }
 
 /* ---- interfaces -------------------------------------------------------- */

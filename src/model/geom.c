@@ -77,18 +77,17 @@ rc_status rc_geom_box_corners(rc_model *m, int s, rc_error *err)
     return RC_OK;
 }
 
-int rc_geom_box_needs_corners(const rc_case *c, int s)
+void rc_geom_box_corner_flags(const rc_case *c, unsigned char *flag)
 {
-    if (c->surf[s].kind != RC_CASE_SURF_BOX) return 0;
-    const int id = c->surf[s].id;
+    for (int s = 0; s < c->nsurf; s++) flag[s] = 0;
     for (int k = 0; k < c->ntype6 + c->npower; k++) {
-        const int a = k < c->ntype6 ? c->type6[k].surf1 : c->power[k - c->ntype6].surf1;
-        const int b = k < c->ntype6 ? c->type6[k].surf2 : c->power[k - c->ntype6].surf2;
-        if (a != id && b != id) continue;
-        const int o = rc_case_find_surf(c, a == id ? b : a);
-        if (o >= 0 && (c->surf[o].kind == RC_CASE_SURF_PLANE || c->surf[o].kind == RC_CASE_SURF_BOX)) return 1;
+        const int a = rc_case_find_surf(c, k < c->ntype6 ? c->type6[k].surf1 : c->power[k - c->ntype6].surf1);
+        const int b = rc_case_find_surf(c, k < c->ntype6 ? c->type6[k].surf2 : c->power[k - c->ntype6].surf2);
+        if (a < 0 || b < 0) continue; /* an input error later */
+        const rc_case_surf_kind ka = c->surf[a].kind, kb = c->surf[b].kind;
+        if (ka == RC_CASE_SURF_BOX && (kb == RC_CASE_SURF_PLANE || kb == RC_CASE_SURF_BOX)) flag[a] = 1;
+        if (kb == RC_CASE_SURF_BOX && (ka == RC_CASE_SURF_PLANE || ka == RC_CASE_SURF_BOX)) flag[b] = 1;
     }
-    return 0;
 }
 
 const char *rc_geom_inter_pair_name(const rc_model *m, int i)

@@ -25,9 +25,10 @@ void rc_geom_surface(const rc_case_surf *cs, rc_model *m, int s, const double *o
 rc_status rc_geom_pair(const rc_model *m, int s1, int s2, int *sa, int *sb, rc_pair_kind *kind, const char *where,
                        rc_error *err);
 
-/* Does box surface s of the case (index in c->surf) meet a plane or a box in
- * an interface (TYPE6 or POWER)? Those pairs use its corners and faces. */
-int rc_geom_box_needs_corners(const rc_case *c, int s);
+/* flag[s] = 1 for each box surface s of the case (index in c->surf) that
+ * meets a plane or a box in an interface (TYPE6 or POWER): those pairs use
+ * its corners and faces; 0 otherwise. flag: [c->nsurf]. */
+void rc_geom_box_corner_flags(const rc_case *c, unsigned char *flag);
 
 /* The corners and faces of box surface s (compiled by rc_geom_surface) as
  * segment-surface data on the same surface (docs/theory.md 2.7): 8 nodes

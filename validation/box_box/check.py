@@ -95,6 +95,26 @@ def deck_collide():
     return d
 
 
+KP, M1, CP = 1.0e9, 1.5, 5.0e8          # power law K [N/m^1.5], m1, damping C (m2 = m3 = 1)
+MUS, VS, MUD, VD = 0.5, 0.01, 0.3, 0.05  # step5 friction
+
+
+def deck_power():
+    """/INTER/POWER box-box: the small box resting on the table, and a second
+    one sliding on it with step5 friction per corner."""
+    d = base("analytic boxes on a box, power law and step5 friction")
+    d.box(1, 0, (0.0, 0.0, -0.5), (0.5, 0.5, 0.5), title="table: fixed 1 m cube, top face z = 0")
+    pz = (M * G / KP) ** (1 / M1)
+    add_box(d, 5, (0.2, -0.2, C / 2 + H0), M, (A / 2, B / 2, C / 2), title="box dropped on the table")
+    add_box(d, 6, (-0.3, 0.2, C / 2 - pz), M, (A / 2, B / 2, C / 2), v0=(V0, 0.0, 0.0), title="box sliding on the table")
+    d.power(1, 15, 1, k=KP, m1=M1, c=CP, m2=1.0, m3=1.0, irdf=2, title="dropped box on the table (box first)")
+    d.power(2, 1, 16, k=KP, m1=M1, c=CP, m2=1.0, m3=1.0, irdf=2, mus=MUS, vs=VS, mud=MUD, vd=VD,
+            title="sliding box on the table (table first), step5")
+    d.grav(1, "Z", -G)
+    d.run(0.3, 0.005)
+    return d
+
+
 def quat_matrix(q):
     w, x, y, z = q / np.linalg.norm(q)
     return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
@@ -170,6 +190,30 @@ def main():
     rcval.check("box_box.slide.rest", abs(r.vel[-1, 0, 0]) < 1e-6 and bool(r.slip[-1, 0] == 0),
                 f"v at {r.t[-1]:g} s = {r.vel[-1, 0, 0]:.1e} m/s (< 1e-6), sticking: {bool(r.slip[-1, 0] == 0)}")
     rcval.check_ledger("box_box.slide.ledger", r, 1e-5)
+
+    # 2b. the power law: at rest P = (m g / K)^(1 / m1); step5 beyond v_d: mu_d g
+    path = rcval.run(deck_power(), name="power")
+    r = rcval.Result(path)
+    with Dataset(path) as nc:
+        quat = np.array(nc["body_quaternion"][:])
+    pref = (M * G / KP) ** (1 / M1)
+    e1, e2 = rcval.rel(r.fn[-1, 0], M * G), rcval.rel(r.pen[-1, 0], pref)
+    f = corner_forces(r.fn[-1, 0], r.pos[-1, 0], quat[-1, 0], (A / 2, B / 2, C / 2), lambda x: -x[2])
+    e3 = float(np.max(np.abs(f - M * G / 4)) / (M * G / 4)) if len(f) == 4 else float("inf")
+    rcval.check("box_box.power.rest", e1 < 1e-6 and e2 < 1e-6 and e3 < 1e-5,
+                f"/INTER/POWER at rest on the table: F = {r.fn[-1, 0]:.9g} N against m g, rel. error {e1:.2e}; "
+                f"P = {r.pen[-1, 0]:.9e} m, (m g / K)^(1/m1) = {pref:.9e} m, rel. error {e2:.2e} (< 1e-6); "
+                f"{len(f)} corner forces against m g / 4, max rel. error {e3:.2e} (< 1e-5)")
+    sl = (r.t >= 0.05) & (r.vel[:, 1, 0] > 2 * VD)
+    cf = np.polyfit(r.t[sl], r.pos[sl, 1, 0], 2)
+    a = -2 * cf[0]
+    e = rcval.rel(a, MUD * G)
+    ratio = np.linalg.norm(r.ffric[sl, 1], axis=1) / r.fn[sl, 1]
+    er = float(np.max(np.abs(ratio - MUD)))
+    rcval.check("box_box.power.step5", e < 1e-5 and er < 1e-6 and int(sl.sum()) > 20,
+                f"step5 per corner beyond v_d: deceleration {a:.9f} m/s^2 over {int(sl.sum())} records, mu_d g = "
+                f"{MUD * G:.9f}, rel. error {e:.2e} (< 1e-5); max ||F_t| / F_n - mu_d| = {er:.1e} (< 1e-6)")
+    rcval.check_ledger("box_box.power.ledger", r, 1e-5)
 
     # 3. collision of two free boxes: momentum conserved
     path = rcval.run(deck_collide(), name="collide")

@@ -13,7 +13,7 @@ of each box against the faces of the other, both ways (docs/theory.md 2.7).
    TYPE6 Fric = mu: it decelerates at mu g, stops at t_s = v0 / (mu g) and
    rests at v0^2 / (2 mu g) from its start less the tilt and stick-spring
    terms of validation/seg_box_slide_stop (README.md).
-3. Collision (generated, no gravity): two free boxes of different sizes and
+4. Collision (generated, no gravity): two free boxes of different sizes and
    masses, one launched at the other off-centre and spinning: the total
    linear and angular momentum (about the origin) are conserved.
 """

@@ -13,6 +13,9 @@ of each box against the faces of the other, both ways (docs/theory.md 2.7).
    TYPE6 Fric = mu: it decelerates at mu g, stops at t_s = v0 / (mu g) and
    rests at v0^2 / (2 mu g) from its start less the tilt and stick-spring
    terms of validation/seg_box_slide_stop (README.md).
+3. Power law (generated): /INTER/POWER between the table and a box at rest,
+   P = (m g / K)^(1 / m1), four corner forces m g / 4; and a box sliding on
+   it with step5 friction per corner: beyond v_d it decelerates at mu_d g.
 4. Collision (generated, no gravity): two free boxes of different sizes and
    masses, one launched at the other off-centre and spinning: the total
    linear and angular momentum (about the origin) are conserved.

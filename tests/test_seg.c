@@ -16,6 +16,7 @@
 
 #include "base/error.h"
 #include "case/case.h"
+#include "model/geom.h"
 #include "model/model.h"
 #include "model/power.h"
 #include "harness.h"
@@ -742,6 +743,161 @@ static void test_seg_sphere_valley_forces(void)
     rc_model_free(m);
 }
 
+/* ---- analytic boxes against a plane or a box (their corners) ---------- */
+/* Body 1: a box 0.2 x 0.1 x 0.06 (half-sizes 0.1, 0.05, 0.03) at (0, 0, 0.03),
+ * its axes slightly turned; body 2 at (0, 0, -0.2) carrying the other
+ * surface (40). */
+#define ABOX_BODY "/NODE\n1,0,0,0.03\n/RBODY/1\nbox\n1,,,,2.0\n0.0023,0.0071,0.0083\n0.0001,0.0002,-0.0001\n" \
+                  "/SURF/BOX/30\nbox\n1\n0,0,0.03\n0.1,0.05,0.03\n1,0.02,-0.01\n-0.02,1,0.015\n"
+#define ABOX_BODY2 "/NODE\n2,0,0,-0.2\n/RBODY/2\nplate\n2,,,,5.0\n0.11,0.13,0.2\n0.01,0,0\n"
+
+/* The corners and faces of a box used against a plane: 8 nodes, 6
+ * quadrilaterals whose normals (x2 - x0) x (x3 - x1) point out of the box
+ * along its axes, the box's kind kept (a sphere still meets the analytic
+ * box), either order on the card, and the listing's name. */
+static void test_box_pairs_corners(void)
+{
+    rc_error e;
+    rc_model *m = seg_compile(ABOX_BODY ABOX_BODY2 "/SURF/PLANE/40\nplate\n0,0,0.001\n0.05,-0.03,1\n2\n"
+                              "/NODE\n3,0.5,0,0.2\n/RBODY/3\nball\n3,,,,1.0\n0.001,0.001,0.001\n0,0,0\n"
+                              "/SURF/ELLIPS/50\nball\n0,2,3\n0.5,0,0.2\n0.05,0.05,0.05\n" LINEAR
+                              "/INTER/TYPE6/1\nbox first\n30,40\n\n\n1\n\n\n"
+                              "/INTER/TYPE6/2\nplane first\n40,30\n\n\n1\n\n\n"
+                              "/INTER/TYPE6/3\nsphere on the box\n50,30\n\n\n1\n\n\n" RUN_TAIL,
+                              &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    const int sb = 0; /* the box: first surface of the deck */
+    ENSURE(m->surf_kind[sb] == RC_SURF_BOX);
+    ENSURE(m->surf_nadr[sb + 1] - m->surf_nadr[sb] == 8 && m->surf_sadr[sb + 1] - m->surf_sadr[sb] == 6);
+    for (int i = 0; i < 2; i++) ENSURE(m->inter_pair[i] == RC_PAIR_SEG_PLANE && m->inter_sa[i] == sb);
+    ENSURE(m->inter_pair[2] == RC_PAIR_SPHERE_BOX && m->inter_sb[2] == sb);
+    ENSURE(strstr(rc_geom_inter_pair_name(m, 0), "box-plane") != NULL);
+    const double *c = m->surf_p + 3 * sb, *ext = m->surf_ext + RC_SURF_NEXT * sb;
+    int bad = 0, axis_hit[6] = {0, 0, 0, 0, 0, 0};
+    for (int q = 0; q < 6; q++) {
+        const int *v = m->surf_seg + 4 * (m->surf_sadr[sb] + q);
+        const double *x[4];
+        for (int j = 0; j < 4; j++) x[j] = m->surf_node + 3 * (m->surf_nadr[sb] + v[j]);
+        double a[3], b[3], n[3], fc[3];
+        for (int k = 0; k < 3; k++) {
+            a[k] = x[2][k] - x[0][k];
+            b[k] = x[3][k] - x[1][k];
+            fc[k] = 0.25 * (x[0][k] + x[1][k] + x[2][k] + x[3][k]) - c[k];
+        }
+        n[0] = a[1] * b[2] - a[2] * b[1];
+        n[1] = a[2] * b[0] - a[0] * b[2];
+        n[2] = a[0] * b[1] - a[1] * b[0];
+        const double nn = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        /* the face centre lies at a half-size along its own axis, the
+         * normal is that axis, outward */
+        for (int ax = 0; ax < 3; ax++) {
+            const double *u = ext + 3 + 3 * ax;
+            const double cu = (n[0] * u[0] + n[1] * u[1] + n[2] * u[2]) / nn;
+            const double du = fc[0] * u[0] + fc[1] * u[1] + fc[2] * u[2];
+            if (fabs(fabs(cu) - 1.0) < 1e-12) {
+                bad += fabs(du - cu * ext[ax]) > 1e-12;
+                axis_hit[2 * ax + (cu > 0)]++;
+            }
+        }
+    }
+    for (int k = 0; k < 6; k++) bad += axis_hit[k] != 1;
+    ENSURE(bad == 0);
+    printf("    box 0.2 x 0.1 x 0.06: 8 corners, 6 faces, each normal along its axis, outward; pair \"%s\"\n",
+           rc_geom_inter_pair_name(m, 0));
+    rc_model_free(m);
+}
+
+/* Jacobians of the box pairs against central differences: kind 0 the box
+ * against a tilted plane carried by body 2; 1 against a larger tilted box
+ * on body 2 (the upper box's corners act); 2 against a smaller one (the
+ * lower box's corners act on the upper box's bottom face); fric 0 none, 1
+ * TYPE6 friction per corner, 4 a /FRICTION card (incremental, filtered),
+ * 5 /INTER/POWER with step5 friction; every mode. */
+static void box_pair_jacobian_check(int kind, int fric)
+{
+    rc_error e;
+    char deck[8192];
+    const char *other = kind == 0 ? "/SURF/PLANE/40\nplate\n0,0,0.001\n0.05,-0.03,1\n2\n"
+                        : kind == 1 ? "/SURF/BOX/40\ntable\n2\n0.01,-0.02,-0.199\n0.4,0.3,0.2\n1,0.05,0.02\n-0.04,1,0.03\n"
+                                    : "/SURF/BOX/40\npost\n2\n0.01,-0.02,-0.199\n0.06,0.035,0.2\n1,0.05,0.02\n-0.04,1,0.03\n";
+    const char *inter =
+        fric == 5 ? "/INTER/POWER/1\np\n30,40,0,0,0,1\n1e9,1.5,3e5,1.2,0.8\n0.4\n0.5,0.05,0.3,0.2,40\n"
+        : fric == 1 ? "/INTER/TYPE6/1\nbox pair\n30,40\n0.7,0.37,0.0011\n,,,5,,,1.9,0.61\n1,1,1.3,0.77\n2,,7.3e6,0.83\n3.7,3,4,2.3\n"
+                    : "/INTER/TYPE6/1\nbox pair\n40,30\n,,0.0011\n,,,5,,,1.9,0.61\n1,1,1.3,0.77\n2,,7.3e6,0.83\n3.7,3,4,2.3\n";
+    snprintf(deck, sizeof deck, "%s%s%s%s%s%s", ABOX_BODY, ABOX_BODY2, other,
+             "/FUNCT/1\nload\n-0.01,-3.1e3\n0,0\n0.0013,2.71e3\n0.0041,1.37e4\n0.0097,5.9e4\n"
+             "/FUNCT/2\nunload\n0,0\n0.002,0\n0.006,5e3\n0.011,3.1e4\n"
+             "/FUNCT/3\ndv\n-10,-41\n0,0\n0.37,5.3\n3.3,71\n/FUNCT/4\ndf\n0,1\n500,0.83\n9e4,0.61\n",
+             inter, fric == 4 ? "/FRICTION/1\nincremental, filtered\n0,3,50,2\n\n,0.37,0.8\n" RUN_TAIL : RUN_TAIL);
+    rc_model *m = seg_compile(deck, &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    ENSURE(m->inter_pair[0] == (kind ? RC_PAIR_SEG_SEG : RC_PAIR_SEG_PLANE));
+    ENSURE(!fric || m->inter_npt[0] == (kind ? 16 : 8));
+    rc_data *d = rc_data_new(m);
+    const double s[26] = {0.0013, -0.0011, 0.0312, 0.97, 0.011, -0.013, 0.007, 0.31, -0.23, -0.17, 3.1, -2.3, 4.7,
+                          0.0021, 0.0007, -0.2003, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
+    double *y = two_body_state(m, s);
+    if (m->inter_hidx[0] >= 0) y[m->inter_eadr[0] + m->inter_hidx[0]] = 731.0;
+    if (m->inter_oidx[0] >= 0) y[m->inter_eadr[0] + m->inter_oidx[0]] = 3.7e-4;
+    rc_inter_report r;
+    rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+    ENSURE(r.p > 0);
+    /* the deepest point is a corner of the surface expected: kind 2 one of
+     * the lower box (|x| about 0.05), else one of the upper box (0.1) */
+    ENSURE(kind == 2 ? fabs(r.point[0]) < 0.075 : fabs(r.point[0]) > 0.075);
+    int bad = 0, outside = 0, combos = 0;
+    double maxerr = 0;
+    const int modes[2] = {RC_MODE_CLOSED, RC_MODE_RELEASED};
+    const int nbr = fric == 5 ? 2 : 3, ntrk = fric == 5 ? 1 : 2;
+    for (int md = 0; md < 2; md++)
+        for (int br = 0; br < nbr; br++)
+            for (int trk = 0; trk < ntrk; trk++)
+                for (int sl = 0; sl < (fric ? 3 : 1); sl++) {
+                    d->inter_mode[0] = modes[md];
+                    d->inter_branch[0] = fric == 5 && br == 1 ? RC_BR_UNLOAD : br;
+                    d->inter_track[0] = trk;
+                    for (int j = 0; j < m->inter_npt[0]; j++) d->pt_slip[j] = sl == 2 ? j % 2 : sl;
+                    maxerr = fmax(maxerr, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
+                    combos++;
+                }
+    static const char *const fname[6] = {"", ", TYPE6 friction per corner", "", "", ", /FRICTION (incremental, filtered)",
+                                         ", power law with step5 friction"};
+    printf("    %s%s jacobian: P = %.3g m at (%.3g, %.3g, %.3g), %d states, %d mode combinations, max scaled |J - FD| = "
+           "%.2e\n", kind == 0 ? "box-plane" : kind == 1 ? "box-box (upper corners)" : "box-box (lower corners)",
+           fname[fric], r.p, r.point[0], r.point[1], r.point[2], m->ny, combos, maxerr);
+    ENSURE(bad == 0);
+    ENSURE(outside == 0);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
+static void test_box_plane_jacobian(void)
+{
+    box_pair_jacobian_check(0, 0);
+    box_pair_jacobian_check(0, 1);
+    box_pair_jacobian_check(0, 4);
+    box_pair_jacobian_check(0, 5);
+}
+
+static void test_box_box_jacobian(void)
+{
+    for (int k = 1; k <= 2; k++) {
+        box_pair_jacobian_check(k, 0);
+        box_pair_jacobian_check(k, 1);
+        box_pair_jacobian_check(k, 4);
+        box_pair_jacobian_check(k, 5);
+    }
+}
+
 void suite_seg(void);
 void suite_seg(void)
 {
@@ -763,4 +919,7 @@ void suite_seg(void)
     RUN_TEST(test_seg_viscous_friction_jacobian);
     RUN_TEST(test_seg_filtered_incremental_jacobian);
     RUN_TEST(test_seg_step5_jacobian);
+    RUN_TEST(test_box_pairs_corners);
+    RUN_TEST(test_box_plane_jacobian);
+    RUN_TEST(test_box_box_jacobian);
 }

@@ -9,6 +9,7 @@
 
 #include "model/coupling.h"
 #include "model/coupling_contact.h"
+#include "model/geom.h"
 #include "model/imposed.h"
 #include "model/joint.h"
 #include "model/model.h"
@@ -170,7 +171,7 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
             continue;
         }
         fprintf(f, "  %-18s %s, Iform %d, Gap %.5g, Visc %.5g, Stiff %.5g, Inacti %d, Tstart %.5g, Tstop %.5g\n",
-                m->inter_name[i], rc_geom_pair_name(m->inter_pair[i]), m->inter_iform[i], m->inter_gap[i],
+                m->inter_name[i], rc_geom_inter_pair_name(m, i), m->inter_iform[i], m->inter_gap[i],
                 m->inter_visc[i], m->inter_stiff[i], m->inter_inacti[i], m->inter_tstart[i], m->inter_tstop[i]);
     }
     for (int i = 0; i < m->ninter && i < 20; i++) rc_friction_print(m, i, f);

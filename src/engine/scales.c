@@ -459,6 +459,7 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
          * in ways this leaves out, docs/theory.md 12) */
         const double mp = rc_point_mass(m, i, y, &r);
         m->inter_mrest[i] = m->surf_kind[m->inter_sa[i]] != RC_SURF_SEG && m->surf_kind[m->inter_sb[i]] != RC_SURF_SEG &&
+                                    !rc_pair_nodes(m->inter_pair[i]) &&
                                     !rc_inter_on_joint(m, i) && isfinite(mp) && isfinite(mred)
                                 ? mp
                                 : mred;

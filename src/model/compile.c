@@ -207,13 +207,17 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
 /* ---- surfaces ---------------------------------------------------------- */
 static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
 {
-    for (int s = 0; s < c->nsurf; s++) {
+    /* the boxes that meet a plane or a box: their corners and faces too */
+    unsigned char *corners = malloc((size_t)c->nsurf + 1);
+    if (!corners) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    rc_geom_box_corner_flags(c, corners); /* model/geom.c */
+    rc_status st = RC_OK;
+    for (int s = 0; s < c->nsurf && !st; s++) {
         const rc_case_surf *cs = &c->surf[s];
         m->surf_nadr[s + 1] = m->surf_nadr[s];
         m->surf_sadr[s + 1] = m->surf_sadr[s];
         if (cs->kind == RC_CASE_SURF_SEG || cs->kind == RC_CASE_SURF_PART) {
-            rc_status st = rc_seg_surface(c, m, s, err); /* model/segsurf.c */
-            if (st) return st;
+            st = rc_seg_surface(c, m, s, err); /* model/segsurf.c */
             continue;
         }
         static const char *const kinds[5] = {"", "PLANE", "ELLIPS", "CYL", "BOX"};
@@ -221,9 +225,11 @@ static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
         int b = -1;
         if (cs->rbody_id) {
             b = rc_case_find_rbody(c, cs->rbody_id);
-            if (b < 0)
-                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /SURF/%s/%d, field rbody_ID: expected the id of a /RBODY, got %d (no such body)",
-                         RC_LOC(rc_loc_or(cs->rbody_loc, cs->loc)), kind, cs->id, cs->rbody_id);
+            if (b < 0) {
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /SURF/%s/%d, field rbody_ID: expected the id of a /RBODY, got %d (no such body)",
+                            RC_LOC(rc_loc_or(cs->rbody_loc, cs->loc)), kind, cs->id, cs->rbody_id);
+                break;
+            }
         }
         m->surf_id[s] = cs->id;
         m->surf_body[s] = b;
@@ -231,6 +237,7 @@ static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
         const double *org = b >= 0 ? m->body_y0 + RC_NB * b : m->ground_y0;
         if (cs->kind == RC_CASE_SURF_CYL || cs->kind == RC_CASE_SURF_BOX) {
             rc_geom_surface(cs, m, s, org); /* model/geom.c */
+            if (corners[s]) st = rc_geom_box_corners(m, s, err);
         } else if (cs->kind == RC_CASE_SURF_PLANE) {
             double n[3], len = 0;
             for (int k = 0; k < 3; k++) {
@@ -249,7 +256,8 @@ static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
             for (int k = 0; k < 3; k++) m->surf_p[3 * s + k] = cs->c[k] - org[k];
         }
     }
-    return RC_OK;
+    free(corners);
+    return st;
 }
 
 /* ---- interfaces -------------------------------------------------------- */
@@ -325,6 +333,9 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     /* IRS belongs to surf_ID1, IRm to surf_ID2, whichever is surface a */
     m->inter_orient[2 * i] = s1 == s1_in ? t6->irs : t6->irm;
     m->inter_orient[2 * i + 1] = s1 == s1_in ? t6->irm : t6->irs;
+    /* no effect on an analytic surface: a box's faces point out of it */
+    for (int e = 0; e < 2; e++)
+        if (m->surf_kind[e ? s2 : s1] != RC_SURF_SEG) m->inter_orient[2 * i + e] = 0;
     m->inter_sa[i] = s1;
     m->inter_sb[i] = s2;
     m->inter_ba[i] = m->surf_body[s1];
@@ -448,7 +459,7 @@ static rc_status check_exact_stick(const rc_case *c, rc_model *m, rc_error *err)
                  RC_LOCFMT "card %s: exact stick on %s, a %s pair with several contact points, is not supported yet: "
                            "expected a single-point pair (sphere, cylinder against a plane, box, sphere) or the "
                            "incremental friction",
-                 RC_LOC(loc), what, m->inter_name[i], rc_geom_pair_name(m->inter_pair[i]));
+                 RC_LOC(loc), what, m->inter_name[i], rc_geom_inter_pair_name(m, i));
     }
     return RC_OK;
 }

@@ -1,8 +1,10 @@
 /* Geometry set-up (geom.h): cylinder and box surfaces, pair kinds. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "base/error.h"
+#include "case/case_power.h"
 #include "model/geom.h"
 
 static double norm3(const double *v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
@@ -41,6 +43,61 @@ void rc_geom_surface(const rc_case_surf *cs, rc_model *m, int s, const double *o
         ext[9 + k] = w[k];
     }
     m->surf_r[s] = fmin(cs->abc[0], fmin(cs->abc[1], cs->abc[2]));
+}
+
+/* Corner j = sx + 2 sy + 4 sz of a box at centre + (2 sx - 1) a u
+ * + (2 sy - 1) b v + (2 sz - 1) c w; the faces -w, +w, -u, +u, -v, +v, each
+ * ordered so that (x2 - x0) x (x3 - x1) points out of the box. */
+static const int box_face[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}};
+
+rc_status rc_geom_box_corners(rc_model *m, int s, rc_error *err)
+{
+    const int n0 = m->surf_nadr[s], s0 = m->surf_sadr[s];
+    double *nx = realloc(m->surf_node, (size_t)(3 * (n0 + 8) + 1) * sizeof(double));
+    if (!nx) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    m->surf_node = nx;
+    int *sg = realloc(m->surf_seg, (size_t)(4 * (s0 + 6) + 1) * sizeof(int));
+    if (!sg) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    m->surf_seg = sg;
+    signed char *tu = realloc(m->surf_seg_turned, (size_t)(s0 + 6 + 1));
+    if (!tu) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    m->surf_seg_turned = tu;
+    const double *p = m->surf_p + 3 * s, *e = m->surf_ext + RC_SURF_NEXT * s;
+    for (int j = 0; j < 8; j++) {
+        const double sx = (j & 1) ? 1.0 : -1.0, sy = (j & 2) ? 1.0 : -1.0, sz = (j & 4) ? 1.0 : -1.0;
+        for (int k = 0; k < 3; k++)
+            nx[3 * (n0 + j) + k] = p[k] + sx * e[0] * e[3 + k] + sy * e[1] * e[6 + k] + sz * e[2] * e[9 + k];
+    }
+    for (int f = 0; f < 6; f++) {
+        for (int j = 0; j < 4; j++) sg[4 * (s0 + f) + j] = box_face[f][j];
+        tu[s0 + f] = 0;
+    }
+    m->surf_nadr[s + 1] = n0 + 8;
+    m->surf_sadr[s + 1] = s0 + 6;
+    return RC_OK;
+}
+
+void rc_geom_box_corner_flags(const rc_case *c, unsigned char *flag)
+{
+    for (int s = 0; s < c->nsurf; s++) flag[s] = 0;
+    for (int k = 0; k < c->ntype6 + c->npower; k++) {
+        const int a = rc_case_find_surf(c, k < c->ntype6 ? c->type6[k].surf1 : c->power[k - c->ntype6].surf1);
+        const int b = rc_case_find_surf(c, k < c->ntype6 ? c->type6[k].surf2 : c->power[k - c->ntype6].surf2);
+        if (a < 0 || b < 0) continue; /* an input error later */
+        const rc_case_surf_kind ka = c->surf[a].kind, kb = c->surf[b].kind;
+        if (ka == RC_CASE_SURF_BOX && (kb == RC_CASE_SURF_PLANE || kb == RC_CASE_SURF_BOX)) flag[a] = 1;
+        if (kb == RC_CASE_SURF_BOX && (ka == RC_CASE_SURF_PLANE || ka == RC_CASE_SURF_BOX)) flag[b] = 1;
+    }
+}
+
+const char *rc_geom_inter_pair_name(const rc_model *m, int i)
+{
+    const rc_pair_kind k = m->inter_pair[i];
+    const int ba = m->surf_kind[m->inter_sa[i]] == RC_SURF_BOX, bb = m->surf_kind[m->inter_sb[i]] == RC_SURF_BOX;
+    if (k == RC_PAIR_SEG_PLANE && ba) return "box-plane (the box's 8 corners are the contact points)";
+    if (k == RC_PAIR_SEG_SEG && ba && bb)
+        return "box-box (the 8 corners of each box against the 6 faces of the other)";
+    return rc_geom_pair_name(k);
 }
 
 const char *rc_geom_pair_name(rc_pair_kind kind)
@@ -84,6 +141,22 @@ rc_status rc_geom_pair(const rc_model *m, int s1, int s2, int *sa, int *sb, rc_p
         s1 = s2;
         s2 = t;
     }
+    /* a box against a plane or a box: the box's corners and faces (its
+     * corner segment surface, rc_geom_box_corners) as a segment surface */
+    const int box_seg = (m->surf_kind[s1] == RC_SURF_BOX &&
+                         (m->surf_kind[s2] == RC_SURF_PLANE || m->surf_kind[s2] == RC_SURF_BOX)) ||
+                        (m->surf_kind[s2] == RC_SURF_BOX && m->surf_kind[s1] == RC_SURF_PLANE);
+    if (box_seg) {
+        if (m->surf_kind[s1] == RC_SURF_PLANE) {
+            int t = s1;
+            s1 = s2;
+            s2 = t;
+        }
+        *sa = s1;
+        *sb = s2;
+        *kind = m->surf_kind[s2] == RC_SURF_PLANE ? RC_PAIR_SEG_PLANE : RC_PAIR_SEG_SEG;
+        return RC_OK;
+    }
     /* a segment surface is surface a (its nodes against b) */
     if (m->surf_kind[s2] == RC_SURF_SEG && m->surf_kind[s1] != RC_SURF_SEG && !is_round(m->surf_kind[s1])) {
         int t = s1;
@@ -113,7 +186,7 @@ rc_status rc_geom_pair(const rc_model *m, int s1, int s2, int *sa, int *sb, rc_p
         RC_RAISE(err, RC_EINPUT,
                  "%s, fields surf_ID1/surf_ID2: %s against %s is not a contact pair ricochet supports (supported: "
                  "sphere-plane, sphere-sphere, sphere-box, cylinder-plane, cylinder-box, cylinder-cylinder with "
-                 "parallel axes)",
+                 "parallel axes, box-plane, box-box)",
                  where, kind_name(ka), kind_name(kb));
     /* parallel axes at t = 0 (the body frames are the global frame then) */
     if (*kind == RC_PAIR_CYL_CYL) {

@@ -145,7 +145,7 @@ double rc_power_stored(const rc_model *m, int i, double p)
 void rc_power_print(const rc_model *m, int i, FILE *f)
 {
     const rc_power *pw = &m->inter_pw[i];
-    fprintf(f, "  %-18s %s, ", m->inter_name[i], rc_geom_pair_name(m->inter_pair[i]));
+    fprintf(f, "  %-18s %s, ", m->inter_name[i], rc_geom_inter_pair_name(m, i));
     if (pw->stiff) fprintf(f, "stiffness %s spline /FUNCT/%d, ", rc_spline_kind_name(pw->stiff->kind), pw->stiff->id);
     else fprintf(f, "K %.5g m1 %.5g, ", pw->k, pw->m1);
     if (pw->damp) fprintf(f, "damping %s spline /FUNCT/%d", rc_spline_kind_name(pw->damp->kind), pw->damp->id);

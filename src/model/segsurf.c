@@ -579,7 +579,7 @@ rc_status rc_seg_meshes(rc_model *m, rc_error *err)
     m->surf_mesh = calloc((size_t)m->nsurf + 1, sizeof *m->surf_mesh);
     if (!m->surf_mesh) RC_RAISE(err, RC_ENOMEM, "out of memory");
     for (int s = 0; s < m->nsurf; s++) {
-        if (m->surf_kind[s] != RC_SURF_SEG) continue;
+        if (m->surf_nadr[s + 1] == m->surf_nadr[s]) continue; /* no nodes (a box's corners have some) */
         rc_status st = seg_mesh(m, s, &m->surf_mesh[s], err);
         if (st) return st;
     }

@@ -301,12 +301,10 @@ static int tessellate(mesh *m, const vtk_src *s, size_t j, const double pos[3], 
         /* its nodes, then its segments (a triangle repeats its third node) */
         const size_t n0 = (size_t)s->surf_node0[j], s0 = (size_t)s->surf_seg0[j];
         size_t n1 = s->nsegnode, s1 = s->nseg;
-        for (size_t k = j + 1; k < s->nsurf; k++)
-            if (!strcmp(s->surf_kind[k], "SEGMENTS")) {
-                n1 = (size_t)s->surf_node0[k];
-                s1 = (size_t)s->surf_seg0[k];
-                break;
-            }
+        if (j + 1 < s->nsurf) { /* every surface has its first node (a box with corners some) */
+            n1 = (size_t)s->surf_node0[j + 1];
+            s1 = (size_t)s->surf_seg0[j + 1];
+        }
         for (size_t k = n0; k < n1 && k < s->nsegnode; k++) PUT(s->seg_node[3 * k], s->seg_node[3 * k + 1], s->seg_node[3 * k + 2]);
         for (size_t k = s0; k < s1 && k < s->nseg; k++) {
             const int *c = s->seg_corner + 4 * k;

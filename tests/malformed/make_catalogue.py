@@ -218,7 +218,7 @@ T('t6_fct_df_missing', T6, 'field fct_IDdf', at(T6, 7, 31, 40, '9'))
 T('t6_visc_nan', T6, 'field Visc', at(T6, 7, 1, 20, 'NaN'))
 T('t6_missing_line', T6, 'expected 6 data lines', delete(T6, 7))
 T('t6_same_body', T6, 'surf_ID1/surf_ID2', at(T6, 2, 11, 20, '1'))
-T('t6_unsupported_pair', T6, 'surf_ID1/surf_ID2', at(T6, 2, 1, 10, '4'))
+T('t6_unsupported_pair', T6, 'surf_ID1/surf_ID2', at(T6, 2, 1, 10, '2'))  # plane against plane
 T('inter_type7', '/INTER/TYPE7/5', 'not supported yet', before_end(['/INTER/TYPE7/5', 'type 7', '         1']))
 T('inter_dup_id', '/INTER/POWER/1', 'field inter_ID', rename(PW, '/INTER/POWER/1'))
 # ---- /INTER/POWER

@@ -1,0 +1,253 @@
+"""Analytic boxes against analytic boxes (/SURF/BOX - /SURF/BOX): the corners
+of each box against the faces of the other, both ways (docs/theory.md 2.7).
+
+1. Resting (case.rad): a small box (a x b x c, mass M) dropped level on a
+   fixed table box (1 m cube, top face z = 0; the table first on the card),
+   and a stack of two free boxes on the fixed plane z = 0: box 3 (mass M3)
+   on the plane (box-plane), box 4 (mass M4, smaller) on box 3 (box-box,
+   box 4 first on the card). At rest: the interface forces M g on the table,
+   M4 g between 3 and 4, (M3 + M4) g on the plane; the penetrations
+   M g / k, M4 g / k, (M3 + M4) g / k; the resting boxes level, so their four
+   bottom corners carry F / 4 each.
+2. Sliding (generated): the small box launched at v0 along x on the table,
+   TYPE6 Fric = mu: it decelerates at mu g, stops at t_s = v0 / (mu g) and
+   rests at v0^2 / (2 mu g) from its start less the tilt and stick-spring
+   terms of validation/seg_box_slide_stop (README.md).
+3. Power law (generated): /INTER/POWER between the table and a box at rest,
+   P = (m g / K)^(1 / m1), four corner forces m g / 4; and a box sliding on
+   it with step5 friction per corner: beyond v_d it decelerates at mu_d g.
+4. Collision (generated, no gravity): two free boxes of different sizes and
+   masses, one launched at the other off-centre and spinning: the total
+   linear and angular momentum (about the origin) are conserved.
+"""
+import math
+import os
+import sys
+
+import numpy as np
+from netCDF4 import Dataset
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "lib"))
+import rcval  # noqa: E402
+from deck import Deck  # noqa: E402
+
+G, K, ZETA, MU = 9.81, 1.0e6, 0.7, 0.3
+A, B, C, M = 0.2, 0.12, 0.08, 15.0       # small box [m], [kg]
+A3, B3, C3, M3 = 0.4, 0.3, 0.1, 30.0     # lower box of the stack
+A4, B4, C4, M4 = 0.2, 0.16, 0.06, 8.0    # upper box of the stack
+H0 = 0.005                               # drop height of the small box and of the stack [m]
+V0 = 1.0                                 # launch speed of the sliding box [m/s]
+
+
+def jbox(m, a, b, c):
+    return (m * (b * b + c * c) / 12, m * (a * a + c * c) / 12, m * (a * a + b * b) / 12)
+
+
+def add_box(d, bid, x, m, half, v0=None, w0=None, title="box"):
+    """Free body bid with node bid at x, a box surface 10 + bid around it."""
+    d.nodes([(bid, *x)])
+    d.grnod(bid, [bid], title=title)
+    d.rbody(bid, bid, m, jbox(m, *(2 * h for h in half)), grnod=bid, title=title)
+    d.box(10 + bid, bid, x, half, title=title)
+    if v0 is not None:
+        d.inivel(bid, v0, bid)
+    if w0 is not None:
+        d.inivel(100 + bid, w0, bid, rot=True)
+
+
+def base(title):
+    d = Deck(title)
+    d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e6 N/m")
+    return d
+
+
+def deck_rest():
+    d = base("analytic boxes resting on a box and stacked")
+    d.box(1, 0, (0.0, 0.0, -0.5), (0.5, 0.5, 0.5), title="table: fixed 1 m cube, top face z = 0")
+    d.plane(2, (0, 0, 0), (0, 0, 1), title="floor z = 0")
+    add_box(d, 5, (0.1, -0.05, C / 2 + H0), M, (A / 2, B / 2, C / 2), title="small box on the table")
+    add_box(d, 3, (2.0, 0.0, C3 / 2 + H0), M3, (A3 / 2, B3 / 2, C3 / 2), title="lower box of the stack")
+    add_box(d, 4, (2.0, 0.0, C3 + 2 * H0 + C4 / 2), M4, (A4 / 2, B4 / 2, C4 / 2), title="upper box of the stack")
+    d.type6(1, 1, 15, 1, visc=2 * ZETA * math.sqrt(K * M), title="table and small box (table first)")
+    d.type6(2, 13, 2, 1, visc=2 * ZETA * math.sqrt(K * (M3 + M4)), title="lower box on the floor")
+    d.type6(3, 14, 13, 1, visc=2 * ZETA * math.sqrt(K * M4), title="upper box on the lower box")
+    d.grav(1, "Z", -G)
+    d.run(1.0, 0.01)
+    return d
+
+
+def deck_slide():
+    d = base("analytic box sliding on a box, friction per corner")
+    d.box(1, 0, (0.0, 0.0, -0.5), (0.5, 0.5, 0.5), title="table: fixed 1 m cube, top face z = 0")
+    p0 = M * G / K
+    add_box(d, 5, (-0.3, 0.0, C / 2 - p0), M, (A / 2, B / 2, C / 2), v0=(V0, 0.0, 0.0), title="sliding box")
+    d.type6(1, 15, 1, 1, visc=2 * ZETA * math.sqrt(K * M), fric=MU, title="box on the table, Fric 0.3")
+    d.grav(1, "Z", -G)
+    d.run(0.6, 0.005)
+    return d
+
+
+def deck_collide():
+    d = base("two free boxes colliding, no gravity")
+    add_box(d, 6, (0.0, 0.0, 0.0), M3, (A3 / 2, B3 / 2, C3 / 2), title="box 6 at rest")
+    add_box(d, 7, (-0.35, 0.05, 0.03), M4, (A4 / 2, B4 / 2, C4 / 2), v0=(2.0, 0.1, -0.05), w0=(0.5, -1.0, 2.0),
+            title="box 7 launched at box 6, spinning")
+    d.type6(1, 17, 16, 1, visc=2 * 0.3 * math.sqrt(K * M3 * M4 / (M3 + M4)), title="box 7 against box 6")
+    d.run(0.4, 0.005)
+    return d
+
+
+KP, M1, CP = 1.0e9, 1.5, 5.0e8          # power law K [N/m^1.5], m1, damping C (m2 = m3 = 1)
+MUS, VS, MUD, VD = 0.5, 0.01, 0.3, 0.05  # step5 friction
+
+
+def deck_power():
+    """/INTER/POWER box-box: the small box resting on the table, and a second
+    one sliding on it with step5 friction per corner."""
+    d = base("analytic boxes on a box, power law and step5 friction")
+    d.box(1, 0, (0.0, 0.0, -0.5), (0.5, 0.5, 0.5), title="table: fixed 1 m cube, top face z = 0")
+    pz = (M * G / KP) ** (1 / M1)
+    add_box(d, 5, (0.2, -0.2, C / 2 + H0), M, (A / 2, B / 2, C / 2), title="box dropped on the table")
+    add_box(d, 6, (-0.3, 0.2, C / 2 - pz), M, (A / 2, B / 2, C / 2), v0=(V0, 0.0, 0.0), title="box sliding on the table")
+    d.power(1, 15, 1, k=KP, m1=M1, c=CP, m2=1.0, m3=1.0, irdf=2, title="dropped box on the table (box first)")
+    d.power(2, 1, 16, k=KP, m1=M1, c=CP, m2=1.0, m3=1.0, irdf=2, mus=MUS, vs=VS, mud=MUD, vd=VD,
+            title="sliding box on the table (table first), step5")
+    d.grav(1, "Z", -G)
+    d.run(0.3, 0.005)
+    return d
+
+
+def quat_matrix(q):
+    w, x, y, z = q / np.linalg.norm(q)
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+
+
+def corner_forces(fn, pos, quat, half, depth_of):
+    """Forces of the bottom corners by the rule F p_j / sum p, from the
+    corner depths depth_of(x) (> 0: past the surface)."""
+    Q = quat_matrix(quat)
+    cs = [np.array([sx * half[0], sy * half[1], sz * half[2]]) for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)]
+    dep = np.array([depth_of(pos + Q @ v) for v in cs])
+    pen = dep[dep > 0]
+    return fn * pen / pen.sum() if len(pen) else pen
+
+
+def main():
+    # 1. resting
+    path = rcval.run_file(os.path.join(HERE, "case.rad"))
+    r = rcval.Result(path)
+    with Dataset(path) as nc:
+        quat = np.array(nc["body_quaternion"][:])
+        omega = np.array(nc["body_angular_velocity"][:])
+    # bodies in deck order: 5, 3, 4; interfaces 1, 2, 3
+    top3 = lambda: r.pos[-1, 1, 2] + C3 / 2  # noqa: E731 (top face of the lower box, level)
+    cases = (("table", 0, 0, M, (A / 2, B / 2, C / 2), lambda x: -x[2]),
+             ("stack_floor", 1, 1, M3 + M4, (A3 / 2, B3 / 2, C3 / 2), lambda x: -x[2]),
+             ("stack_top", 2, 2, M4, (A4 / 2, B4 / 2, C4 / 2), lambda x: top3() - x[2]))
+    for name, i, b, mload, half, depth in cases:
+        fn, p = r.fn[-1, i], r.pen[-1, i]
+        e1, e2 = rcval.rel(fn, mload * G), rcval.rel(p, mload * G / K)
+        rcval.check(f"box_box.rest.{name}.force", e1 < 1e-6 and e2 < 1e-6,
+                    f"interface {i + 1}: F = {fn:.9g} N, m g = {mload * G:.9g} N, rel. error {e1:.2e}; P = {p:.9e} m, "
+                    f"m g / k = {mload * G / K:.9e} m, rel. error {e2:.2e} (< 1e-6)")
+        f = corner_forces(fn, r.pos[-1, b], quat[-1, b], half, depth)
+        e = float(np.max(np.abs(f - mload * G / 4)) / (mload * G / 4)) if len(f) == 4 else float("inf")
+        rcval.check(f"box_box.rest.{name}.corners", len(f) == 4 and e < 1e-5,
+                    f"{len(f)} corners past the surface below (expected 4), forces {', '.join(f'{x:.9g}' for x in f)} N, "
+                    f"m g / 4 = {mload * G / 4:.9g} N, max rel. error {e:.2e} (< 1e-5)")
+    v = float(np.max(np.linalg.norm(r.vel[-1], axis=1)) + np.max(np.linalg.norm(omega[-1], axis=1)) * A3)
+    rcval.check("box_box.rest.at_rest", v < 1e-6, f"max |v| + |omega| a over the boxes = {v:.2e} m/s (< 1e-6)")
+    rcval.check_ledger("box_box.rest.ledger", r, 1e-5)
+
+    # 2. sliding to a stop on the table
+    r = rcval.Result(rcval.run(deck_slide(), name="slide"))
+    # references of validation/seg_box_slide_stop (README.md there): the
+    # friction moment tilts the sliding box by phi (balanced by the shared
+    # normal forces over the 4 bottom corners, <x^2> = a^2 / 4), the centre
+    # rising by dz; after the stop the stick springs give back mu m g / K_t
+    ts, D = V0 / (MU * G), V0 * V0 / (2 * MU * G)
+    p0 = M * G / K
+    phi = MU * C * p0 / (2 * A * A / 4 + MU * C * A / 2)
+    dz = phi * A / 2
+    sl = (r.t > 0.05) & (r.t < ts - 0.05)
+    cf = np.polyfit(r.t[sl], r.pos[sl, 0, 0], 2)
+    a = -2 * cf[0]
+    e = rcval.rel(a, MU * G)
+    rcval.check("box_box.slide.deceleration", e < 1e-5,
+                f"quadratic fit of x over [0.05, t_s - 0.05] s: deceleration {a:.9f} m/s^2, mu g = {MU * G:.9f}, "
+                f"rel. error {e:.2e} (< 1e-5)")
+    stick = [t for t, kd in zip(r.ev_t, r.ev_kind) if kd == "fric_stick"]
+    e = rcval.rel(stick[0], ts) if stick else float("inf")
+    rcval.check("box_box.slide.stop_time", e < 1e-6,
+                f"first fric_stick at {stick[0] if stick else float('nan'):.9f} s, v0 / (mu g) = {ts:.9f} s, rel. error "
+                f"{e:.2e} (< 1e-6)")
+    x_rest = D - MU * dz - MU * M * G / K - dz * C / A
+    dx = r.pos[-1, 0, 0] - r.pos[0, 0, 0]
+    e = abs(dx - x_rest) / D
+    rcval.check("box_box.slide.rest_position", e < 1e-6,
+                f"at rest {dx:.9f} m from the start, D - mu dz - mu m g / K_t - dz c / a = {x_rest:.9f} m "
+                f"(D = v0^2 / (2 mu g) = {D:.9f} m, phi = {phi:.4e} rad), error {e:.2e} of D (< 1e-6)")
+    rcval.check("box_box.slide.rest", abs(r.vel[-1, 0, 0]) < 1e-6 and bool(r.slip[-1, 0] == 0),
+                f"v at {r.t[-1]:g} s = {r.vel[-1, 0, 0]:.1e} m/s (< 1e-6), sticking: {bool(r.slip[-1, 0] == 0)}")
+    rcval.check_ledger("box_box.slide.ledger", r, 1e-5)
+
+    # 2b. the power law: at rest P = (m g / K)^(1 / m1); step5 beyond v_d: mu_d g
+    path = rcval.run(deck_power(), name="power")
+    r = rcval.Result(path)
+    with Dataset(path) as nc:
+        quat = np.array(nc["body_quaternion"][:])
+    pref = (M * G / KP) ** (1 / M1)
+    e1, e2 = rcval.rel(r.fn[-1, 0], M * G), rcval.rel(r.pen[-1, 0], pref)
+    f = corner_forces(r.fn[-1, 0], r.pos[-1, 0], quat[-1, 0], (A / 2, B / 2, C / 2), lambda x: -x[2])
+    e3 = float(np.max(np.abs(f - M * G / 4)) / (M * G / 4)) if len(f) == 4 else float("inf")
+    rcval.check("box_box.power.rest", e1 < 1e-6 and e2 < 1e-6 and e3 < 1e-5,
+                f"/INTER/POWER at rest on the table: F = {r.fn[-1, 0]:.9g} N against m g, rel. error {e1:.2e}; "
+                f"P = {r.pen[-1, 0]:.9e} m, (m g / K)^(1/m1) = {pref:.9e} m, rel. error {e2:.2e} (< 1e-6); "
+                f"{len(f)} corner forces against m g / 4, max rel. error {e3:.2e} (< 1e-5)")
+    sl = (r.t >= 0.05) & (r.vel[:, 1, 0] > 2 * VD)
+    cf = np.polyfit(r.t[sl], r.pos[sl, 1, 0], 2)
+    a = -2 * cf[0]
+    e = rcval.rel(a, MUD * G)
+    ratio = np.linalg.norm(r.ffric[sl, 1], axis=1) / r.fn[sl, 1]
+    er = float(np.max(np.abs(ratio - MUD)))
+    rcval.check("box_box.power.step5", e < 1e-5 and er < 1e-6 and int(sl.sum()) > 20,
+                f"step5 per corner beyond v_d: deceleration {a:.9f} m/s^2 over {int(sl.sum())} records, mu_d g = "
+                f"{MUD * G:.9f}, rel. error {e:.2e} (< 1e-5); max ||F_t| / F_n - mu_d| = {er:.1e} (< 1e-6)")
+    rcval.check_ledger("box_box.power.ledger", r, 1e-5)
+
+    # 3. collision of two free boxes: momentum conserved
+    path = rcval.run(deck_collide(), name="collide")
+    r = rcval.Result(path)
+    with Dataset(path) as nc:
+        quat = np.array(nc["body_quaternion"][:])
+        omega = np.array(nc["body_angular_velocity"][:])
+    ms = (M3, M4)
+    Js = (np.diag(jbox(M3, A3, B3, C3)), np.diag(jbox(M4, A4, B4, C4)))
+    p = sum(ms[b] * r.vel[:, b] for b in range(2))
+    L = []
+    for k in range(len(r.t)):
+        tot = np.zeros(3)
+        for b in range(2):
+            Q = quat_matrix(quat[k, b])
+            tot += ms[b] * np.cross(r.pos[k, b], r.vel[k, b]) + Q @ (Js[b] @ omega[k, b])
+        L.append(tot)
+    L = np.array(L)
+    ep = float(np.max(np.linalg.norm(p - p[0], axis=1)) / np.linalg.norm(p[0]))
+    eL = float(np.max(np.linalg.norm(L - L[0], axis=1)) / np.linalg.norm(L[0]))
+    hit = [t for t, kd in zip(r.ev_t, r.ev_kind) if kd == "contact_close"]
+    dv = float(np.linalg.norm(r.vel[-1, 0]))
+    rcval.check("box_box.collide.momentum", ep < 1e-8 and eL < 1e-7 and len(hit) > 0 and dv > 0.1,
+                f"{len(hit)} contact_close (first at {hit[0] if hit else float('nan'):.6g} s), box 6 leaves at "
+                f"{dv:.4g} m/s; max |p(t) - p(0)| / |p(0)| = {ep:.2e}, max |L(t) - L(0)| / |L(0)| = {eL:.2e} (< 1e-8, < 1e-7: the rotations integrated at rtol 1e-8)")
+    rcval.check_ledger("box_box.collide.ledger", r, 1e-5)
+    rcval.finish()
+
+
+if __name__ == "__main__":
+    if "--write-case" in sys.argv:
+        deck_rest().write(os.path.join(HERE, "case.rad"))
+    else:
+        main()

@@ -166,6 +166,43 @@ static void test_sphcyl_geometry_regions(void)
     }
 }
 
+/* Across the borders of the regions with the centre outside the solid
+ * (lateral/rim, rim/end disc, rounded lateral/cap) the distance and the
+ * normal are continuous: points 1e-9 m either side. */
+static void test_sphcyl_continuity(void)
+{
+    const double eps = 1e-9, dd = 0.01;
+    /* iend, (z, rho) of the two sides */
+    const struct {
+        const char *name;
+        int iend;
+        double z1, r1, z2, r2;
+    } b[3] = {{"lateral | rim", 0, HC - eps, RC + dd, HC + eps, RC + dd},
+              {"rim | end disc", 0, HC + dd, RC + eps, HC + dd, RC - eps},
+              {"rounded lateral | cap", 1, -HC + eps, RC + dd, -HC - eps, RC + dd}};
+    for (int k = 0; k < 3; k++) {
+        rc_error e;
+        rc_model *m = sc_compile(b[k].iend, sc_type6, &e);
+        ENSURE(m != NULL);
+        if (!m) return;
+        double cb[3], ea[3], xc[3];
+        rc_inter_report r1, r2;
+        double *y = sc_state(m, b[k].z1, b[k].r1, cb, ea, xc);
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r1);
+        free(y);
+        y = sc_state(m, b[k].z2, b[k].r2, cb, ea, xc);
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r2);
+        free(y);
+        double dn = 0;
+        for (int i = 0; i < 3; i++) dn = fmax(dn, fabs(r1.normal[i] - r2.normal[i]));
+        printf("    %-22s |P1 - P2| = %.2e m, |n1 - n2| = %.2e (points %.0e m apart)\n", b[k].name, fabs(r1.p - r2.p), dn,
+               2 * eps);
+        ENSURE(fabs(r1.p - r2.p) < 1e-8);
+        ENSURE(dn < 1e-6);
+        rc_model_free(m);
+    }
+}
+
 /* The Jacobian in every region against central differences: TYPE6 with
  * friction (stick, slip), power law with step5 friction (uncapped, capped),
  * closed and released. */
@@ -215,5 +252,6 @@ void suite_sphcyl(void);
 void suite_sphcyl(void)
 {
     RUN_TEST(test_sphcyl_geometry_regions);
+    RUN_TEST(test_sphcyl_continuity);
     RUN_TEST(test_sphcyl_jacobian_regions);
 }

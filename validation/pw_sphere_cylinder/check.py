@@ -188,6 +188,24 @@ def along_deck(kind, tend=0.3):
     return d, np.array(e), p0
 
 
+def rest_deck():
+    """5: the ball dropped 0.05 m onto the flat end disc of a fixed upright
+    cylinder, 0.03 m off the axis, TYPE6 linear with damping ratio 0.1,
+    gravity: it bounces and comes to rest on the disc."""
+    z0 = 0.5 * LC + RS + 0.05
+    d = Deck("ball bouncing to rest on the end disc of a fixed cylinder")
+    d.nodes([(1, 0.03, 0.0, z0)])
+    d.rbody(1, 1, MS, js(MS, RS), title="ball")
+    d.grnod(1, [1], title="ball")
+    d.sphere(1, 1, (0.03, 0.0, z0), RS, title="ball")
+    d.cylinder(2, 0, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), RC, LC, title="fixed upright cylinder")
+    d.funct(1, [0.0, 1.0], [0.0, 2.0e6], title="linear load curve")
+    d.type6(1, 2, 1, 1, visc=2.0 * 0.1 * math.sqrt(2.0e6 * MS), title="TYPE6, damping ratio 0.1")
+    d.grav(1, "Z", -G)
+    d.run(3.0, 0.01)
+    return d
+
+
 def hertz(m, v0):
     dmax = (5.0 * m * v0**2 / (4.0 * KH)) ** 0.4
     return dmax, 2.0 * dmax / v0 * math.sqrt(math.pi) * gamma(1.4) / gamma(0.9)
@@ -298,6 +316,14 @@ def main():
                     f"{what} = {a_ref:.9f}, rel. error {e1:.2e} (< 1e-5), max residual {resid:.1e} m (< 1e-6), "
                     f"{xs[-1]:.3f} m travelled, {len(slips)} fric_slip events")
         rcval.check_ledger(f"pw_sphere_cylinder.{kind}.ledger", r, 1e-5)
+
+    # 5. bouncing to rest on the end disc: the resting force m g
+    r = rcval.Result(rcval.run(rest_deck(), name="rest"))
+    ef = abs(r.fn[-1, 0] / (MS * G) - 1.0)
+    v = float(np.max(np.abs(r.vel[-1, 0])))
+    rcval.check("pw_sphere_cylinder.rest_on_disc", ef < 1e-9 and v < 1e-9 and r.mode[-1, 0] == 2,
+                f"at {r.t[-1]:g} s: F_n = {r.fn[-1, 0]:.12f} N, m g = {MS * G:.12f} N, rel. error {ef:.1e} (< 1e-9), "
+                f"|v| = {v:.1e} m/s (< 1e-9), contact closed")
     rcval.finish()
 
 

@@ -14,12 +14,16 @@ L = 0.4 m). References (README.md), independent of ricochet:
      the ball's mass; the same on the cap of a rounded cylinder, head-on;
   3. the ball released at the top of a fixed horizontal cylinder with a
      small speed across the axis, gravity, frictionless, linear law: it
-     slides round and leaves the cylinder; the leaving time and angle
+     slides round and leaves the cylinder (Hertz and linear laws); the leaving time and angle
      against a SciPy solve (DOP853) of the centre's equations in the plane
      across the axis, written here (the same penalty law), and the angle
      against the rigid closed form cos(theta) = 2/3 cos(theta0) +
      v0^2 / (3 g (R_c + R_s)) (the small-ball limit with the ball's radius
-     in the radius of the centre's path).
+     in the radius of the centre's path);
+  4. along the top of a tilted cylinder with friction: rolling (TYPE6) at
+     g sin / (1 + J / (m r^2)), sliding (power law, step5) at
+     g (sin - mu_d cos);
+  5. bouncing to rest on a flat end disc: F_n = m g.
 Default solver settings (no /SOLVER card).
 """
 import math

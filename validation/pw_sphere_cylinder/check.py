@@ -13,8 +13,8 @@ L = 0.4 m). References (README.md), independent of ricochet:
      the axis, Hertz law K delta^1.5: Hertz closed form (as pw_hertz) with
      the ball's mass; the same on the cap of a rounded cylinder, head-on;
   3. the ball released at the top of a fixed horizontal cylinder with a
-     small speed across the axis, gravity, frictionless, linear law: it
-     slides round and leaves the cylinder (Hertz and linear laws); the leaving time and angle
+     small speed across the axis, gravity, frictionless, Hertz and linear
+     laws: it slides round and leaves the cylinder; the leaving time and angle
      against a SciPy solve (DOP853) of the centre's equations in the plane
      across the axis, written here (the same penalty law), and the angle
      against the rigid closed form cos(theta) = 2/3 cos(theta0) +

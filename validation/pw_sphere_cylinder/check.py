@@ -20,8 +20,8 @@ L = 0.4 m). References (README.md), independent of ricochet:
      against the rigid closed form cos(theta) = 2/3 cos(theta0) +
      v0^2 / (3 g (R_c + R_s)) (the small-ball limit with the ball's radius
      in the radius of the centre's path);
-  4. along the top of a tilted cylinder with friction: rolling (TYPE6) at
-     g sin / (1 + J / (m r^2)), sliding (power law, step5) at
+  4. along the top of a tilted cylinder with friction: rolling (TYPE6, also
+     with exact stick) at g sin / (1 + J / (m r^2)), sliding (power law, step5) at
      g (sin - mu_d cos);
   5. bouncing to rest on a flat end disc: F_n = m g.
 Default solver settings (no /SOLVER card).
@@ -179,9 +179,10 @@ def along_deck(kind, tend=0.3):
     d.sphere(1, 1, c, RS, title="ball")
     d.cylinder(2, 0, (0.0, 0.0, 0.0), e, RC, LC, title="fixed cylinder, tilted axis")
     visc = 2.0 * 0.5 * math.sqrt(KLIN * MS)
-    if kind == "roll":
+    if kind in ("roll", "roll_exact_stick"):
         d.funct(1, [0.0, 1.0], [0.0, KLIN], title="linear load curve")
-        d.type6(1, 2, 1, 1, visc=visc, fric=MU, title="TYPE6, Fric 0.3, cylinder first")
+        d.type6(1, 2, 1, 1, visc=visc, fric=MU, istick=1 if kind == "roll_exact_stick" else None,
+                title="TYPE6, Fric 0.3, cylinder first")
     else:
         d.bcs(1, 1, "000 111", title="no rotation")
         d.inivel(1, tuple(0.5 * e[k] for k in range(3)), 1)
@@ -295,7 +296,7 @@ def main():
     # 4. along the top of a tilted cylinder with friction: rolling (TYPE6)
     # and sliding at mu_d (power law, step5)
     al = math.atan(TAN_A)
-    for kind in ("roll", "slide"):
+    for kind in ("roll", "roll_exact_stick", "slide"):
         dk, e, p0 = along_deck(kind)
         path = rcval.run(dk, name=kind)
         r = rcval.Result(path)
@@ -303,8 +304,8 @@ def main():
         sl = r.t >= 0.05
         cf = np.polyfit(r.t[sl], xs[sl], 2)
         a, resid = 2 * cf[0], float(np.max(np.abs(xs[sl] - np.polyval(cf, r.t[sl]))))
-        if kind == "roll":
-            # rolling on the radius R_s - p0/2 of the contact point (midway
+        if kind != "slide":
+            # rolling (TYPE6's stick spring, or exact stick on the IDA path) on the radius R_s - p0/2 of the contact point (midway
             # between the surfaces)
             rr = RS - 0.5 * p0
             a_ref = G * math.sin(al) / (1.0 + 0.4 * MS * RS * RS / (MS * rr * rr))

@@ -3,8 +3,9 @@
  * distance and normal in every region (flat ends: lateral surface, end disc,
  * rim, centre inside the solid; rounded ends: lateral surface, cap) against
  * the closed forms written here, and the Jacobian against central
- * differences in each region, TYPE6 with friction (stick, slip) and the
- * power law with step5 friction (uncapped, capped), closed and released.
+ * differences in each region, TYPE6 with friction (stick, slip), the
+ * power law with step5 friction (uncapped, capped) and with /FRICTION
+ * cards (viscous and incremental forms with a filter), closed and released.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -32,6 +33,22 @@ static char sc_path[128];
 static const char sc_type6[] = "/INTER/TYPE6/1\nball on cylinder\n40,20\n,0.3\n\n1\n\n730\n/RUN\n0.01,0.001\n";
 static const char sc_power[] =
     "/INTER/POWER/1\nball on cylinder\n40,20\n3.7e8,1.5,2.1e5,1.1,1.2\n\n0.4,0.3,0.25,1.1,7.5\n/RUN\n0.01,0.001\n";
+
+/* /FRICTION cards replacing step5 on the power law: the viscous form with a
+ * filter, the incremental form (Kt of the power card) with a filter, the
+ * viscous form on the stiffness spline (its C follows the spline's slope). */
+#define SC_PARTS "/PART/1\nball\n0,0,0,0\n1,20\n/PART/2\ncarrier\n0,0,0,0\n2,40\n/GRAV/1\ng\n0,Z,0,0,0,,1,-9.81\n"
+static const char sc_frc_viscous[] =
+    SC_PARTS "/FRICTION/1\nf\n0,3,45,1\n,\n,0.4,0.2\n0,0,1,2\n,\n,0.37,0.2\n"
+             "/INTER/POWER/1\nball on cylinder\n40,20\n3.7e8,1.5,2.1e5,1.1,1.2\n\n0.4,0.3,0.25,1.1\n/RUN\n0.01,0.001\n";
+static const char sc_frc_incremental[] =
+    SC_PARTS "/FRICTION/1\nf\n0,3,45,2\n,\n,0.4\n0,0,1,2\n,\n,0.37\n"
+             "/INTER/POWER/1\nball on cylinder\n40,20\n3.7e8,1.5,2.1e5,1.1,1.2\n\n0.4,0.3,0.25,1.1\n2.3e6\n"
+             "/RUN\n0.01,0.001\n";
+
+static const char sc_frc_spline[] =
+    SC_PARTS "/FRICTION/1\nf\n0,0,0,1\n,\n,0.4,0.2\n0,0,1,2\n,\n,0.37,0.2\n"
+             "/INTER/POWER/1\nball on cylinder\n40,20,1\n,,2.1e5,1.1,1.2\n\n0.4,0.3,0.25,1.1\n/RUN\n0.01,0.001\n";
 
 static rc_model *sc_compile(int iend, const char *inter, rc_error *e)
 {
@@ -204,18 +221,22 @@ static void test_sphcyl_continuity(void)
 }
 
 /* The Jacobian in every region against central differences: TYPE6 with
- * friction (stick, slip), power law with step5 friction (uncapped, capped),
- * closed and released. */
+ * friction (stick, slip), power law with step5 friction (uncapped, capped)
+ * or a /FRICTION card (viscous and incremental, filtered), closed and
+ * released. */
 static void test_sphcyl_jacobian_regions(void)
 {
     sc_region g[7];
     sc_regions(g);
     int bad = 0, outside = 0, combos = 0;
     double maxerr = 0;
-    for (int law = 0; law < 2; law++)
+    const char *decks[5] = {sc_type6, sc_power, sc_frc_viscous, sc_frc_incremental, sc_frc_spline};
+    const char *names[5] = {"type6+fric", "power+step5", "power+/FRICTION viscous, filter",
+                            "power+/FRICTION incremental, filter", "power spline+/FRICTION viscous"};
+    for (int law = 0; law < 5; law++)
         for (int k = 0; k < 7; k++) {
             rc_error e;
-            rc_model *m = sc_compile(g[k].iend, law ? sc_power : sc_type6, &e);
+            rc_model *m = sc_compile(g[k].iend, decks[law], &e);
             ENSURE(m != NULL);
             if (!m) {
                 fprintf(stderr, "  %s\n", e.msg);
@@ -237,7 +258,7 @@ static void test_sphcyl_jacobian_regions(void)
             rc_inter_report r;
             rc_inter_report_eval(m, 0, RC_MODE_CLOSED, d->inter_branch[0], 0, 0, 0.0, y, &r);
             printf("    %s, %-30s P = %.4g m, F_n = %.4g N, slip speed %.3g m/s, max scaled |J - FD| = %.2e\n",
-                   law ? "power+step5" : "type6+fric", g[k].name, r.p, r.fn, r.vslip, err);
+                   names[law], g[k].name, r.p, r.fn, r.vslip, err);
             maxerr = fmax(maxerr, err);
             free(y);
             rc_data_free(d);

@@ -282,10 +282,6 @@ static void test_power_card_errors(void)
     /* compile-time: pairs, references, conflicts */
     expect_error("pair.rad", BODY_DECK "/SURF/PLANE/3\nq\n0,0,1\n0,0,2\n/INTER/POWER/1\nt\n2,3\n1e6\n", 1,
                  "plane against plane", "not a contact pair");
-    expect_error("sphcyl.rad",
-                 BODY_DECK "/SURF/ELLIPS/1\ns\n0,2,1\n0,0,0.05\n0.05,0.05,0.05\n/SURF/CYL/3\nc\n0\n0,0,0\n1,0,0\n0.1,1\n"
-                           "/INTER/POWER/1\nt\n1,3\n1e6\n",
-                 1, "sphere against cylinder", NULL);
     expect_error("parallel.rad",
                  BODY_DECK "/SURF/CYL/1\nc\n1\n0,0,0.05\n1,0,0\n0.05,0.1\n/SURF/CYL/3\nd\n0\n0,0,0\n1,0.1,0\n0.1,1\n"
                            "/INTER/POWER/1\nt\n1,3\n1e6\n",

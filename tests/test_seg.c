@@ -174,12 +174,16 @@ static void test_seg_read_errors(void)
         ENSURE(m && m->inter_npt[0] == 8 && m->inter_pst[0] == 3);
         rc_model_free(m);
     }
-    /* step5 friction: per node (test_seg_step5_jacobian); against a sphere not yet */
-    EXPECT_SEG_ERROR(BOX_NODES BOX_BODY BOX_SEGS "/NODE\n2,0,0,-0.2\n/RBODY/2\nball\n2,,,,5.0\n0.1,0.1,0.1\n"
-                     "0,0,0\n/SURF/ELLIPS/40\ns\n0,2,2\n0,0,-0.2\n0.1,0.1,0.1\n"
-                     "/INTER/POWER/1\np\n40,30\n1e6,1\n\n0.3,0.01,0.2,0.05\n" RUN_TAIL,
-                     "card /INTER/POWER/1", "fields mu_s/mu_d", "step5 friction of a sphere against a segment surface",
-                     "not supported yet");
+    /* step5 friction: per node (test_seg_step5_jacobian); against a sphere
+     * the interface's, at the deepest point (test_seg_sphere_step5_jacobian) */
+    rc_error e;
+    rc_model *m = seg_compile(BOX_NODES BOX_BODY BOX_SEGS "/NODE\n2,0,0,-0.2\n/RBODY/2\nball\n2,,,,5.0\n0.1,0.1,0.1\n"
+                    "0,0,0\n/SURF/ELLIPS/40\ns\n0,2,2\n0,0,-0.2\n0.1,0.1,0.1\n"
+                    "/INTER/POWER/1\np\n40,30\n1e6,1\n\n0.3,0.01,0.2,0.05\n" RUN_TAIL,
+                    &e);
+    ENSURE(m && m->inter_pair[0] == RC_PAIR_SPHERE_SEG && m->inter_fr[0].kind == RC_FK_STEP5 && m->inter_npt[0] == 0);
+    if (!m) fprintf(stderr, "  %s\n", e.msg);
+    rc_model_free(m);
 }
 
 /* ---- the force distribution ------------------------------------------- */
@@ -700,6 +704,62 @@ static void test_seg_sphere_friction_jacobian(void)
     rc_model_free(m);
 }
 
+/* A sphere with step5 friction of the power law (the interface's, at the
+ * deepest kept point with the whole normal force) against the valley: a
+ * face, an edge and a node point, uncapped and capped, against central
+ * differences; v_s and v_d span the sliding speeds of the states (the
+ * inner polynomial and the step). */
+static void test_seg_sphere_step5_jacobian(void)
+{
+    rc_error e;
+    rc_model *m = seg_compile(VALLEY_DECK_HEAD
+                              "/INTER/POWER/1\nball in the valley\n40,20\n3.7e7,1.3,2.1e4,1.1,1.2\n\n"
+                              "0.4,0.9,0.25,4.5,31\n" RUN_TAIL,
+                              &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    ENSURE(m->inter_pair[0] == RC_PAIR_SPHERE_SEG && m->inter_fr[0].kind == RC_FK_STEP5);
+    rc_data *d = rc_data_new(m);
+    const double at[3][3] = {{0.0011, -0.0023, 0.0497}, {-0.1, 0.2307, 0.0934}, {-0.2229, 0.2257, 0.0884}};
+    const char *what[3] = {"face", "edge", "node"};
+    int bad = 0, outside = 0, combos = 0;
+    double maxerr = 0;
+    for (int g = 0; g < 3; g++)
+        for (int slow = 0; slow < 2; slow++) {
+            double s[26] = {0, 0, 0, 0.99, 0.011, -0.013, 0.007, 0.31, -0.23, -0.17, 3.1, -2.3, 4.7,
+                            0.0021, 0.0007, -0.2003, 1.0, -0.001, 0.002, 0.001, -0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
+            for (int k = 0; k < 3; k++) s[k] = at[g][k];
+            if (slow) /* a slow sliding (below v_s): the ball moving with the valley, spinning slowly */
+                for (int k = 0; k < 6; k++) s[7 + k] = (k < 3 ? s[20 + k] : 0.1 * s[20 + k]);
+            double *y = two_body_state(m, s);
+            rc_inter_report r;
+            rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+            ENSURE(r.p > 0);
+            double err = 0;
+            for (int sl = 0; sl < 2; sl++)
+                for (int br = 0; br < 2; br++) {
+                    d->inter_mode[0] = RC_MODE_CLOSED;
+                    d->inter_branch[0] = br ? RC_BR_UNLOAD : RC_BR_LOAD;
+                    d->inter_slip[0] = sl;
+                    err = fmax(err, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
+                    combos++;
+                }
+            printf("    sphere-segments step5 jacobian, %s point: P = %.3g m, F_n = %.4g N, slip speed %.3g m/s, max "
+                   "scaled |J - FD| = %.2e\n", what[g], r.p, r.fn, r.vslip, err);
+            maxerr = fmax(maxerr, err);
+            free(y);
+        }
+    printf("    sphere-segments step5 jacobian: %d states, %d combinations, max scaled |J - FD| = %.2e\n", m->ny, combos,
+           maxerr);
+    ENSURE(bad == 0);
+    ENSURE(outside == 0);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 /* A sphere at rest in a symmetric V valley (fixed): two face points at the
  * same depth share F = k P equally; the force on the sphere is vertical,
  * 2 (F / 2) cos(alpha) with alpha the slope angle, and without moment. */
@@ -922,4 +982,5 @@ void suite_seg(void)
     RUN_TEST(test_box_pairs_corners);
     RUN_TEST(test_box_plane_jacobian);
     RUN_TEST(test_box_box_jacobian);
+    RUN_TEST(test_seg_sphere_step5_jacobian);
 }

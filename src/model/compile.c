@@ -419,25 +419,6 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     return RC_OK;
 }
 
-/* Interfaces on a segment surface: the TYPE6 normal law without friction
- * for now (docs/theory.md 2.7). */
-static rc_status check_seg_pairs(const rc_case *c, rc_model *m, rc_error *err)
-{
-    for (int i = 0; i < m->ninter; i++) {
-        if (!rc_pair_multi(m->inter_pair[i])) continue;
-        /* /INTER/POWER: the power law at P, its damping at v_bar; step5
-         * friction per point on the nodes (docs/theory.md 2.7), not yet
-         * against a sphere */
-        if (i >= c->ntype6) {
-            if (m->inter_fr[i].kind != RC_FK_NONE && !rc_pair_nodes(m->inter_pair[i]))
-                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, fields mu_s/mu_d: step5 friction of a sphere against a segment surface: not supported yet (supported: step5 friction per node of a segment surface against a plane, a box or a segment surface, and a cylinder against a segment surface)",
-                         RC_LOC(c->power[i - c->ntype6].line_loc[3]), m->inter_name[i]);
-            continue;
-        }
-    }
-    return RC_OK;
-}
-
 /* Exact stick (docs/theory.md, "Exact stick") holds one contact point:
  * interfaces with several points are refused. */
 static rc_status check_exact_stick(const rc_case *c, rc_model *m, rc_error *err)
@@ -692,7 +673,6 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
         if ((st = rc_power_compile(c, m, k, c->ntype6 + k, err))) goto fail;
     if ((st = rc_friction_compile(c, m, err))) goto fail;
     if ((st = check_exact_stick(c, m, err))) goto fail;
-    if ((st = check_seg_pairs(c, m, err))) goto fail;
     /* couplings (model/coupling.c) */
     if ((st = rc_cpl_compile(c, m, err))) goto fail;
     /* imposed velocities (imposed.c) */

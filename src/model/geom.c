@@ -114,6 +114,7 @@ const char *rc_geom_pair_name(rc_pair_kind kind)
     case RC_PAIR_SEG_BOX: return "segments-box";
     case RC_PAIR_SEG_SEG: return "segments-segments";
     case RC_PAIR_CYL_SEG: return "cylinder-segments";
+    case RC_PAIR_SPHERE_CYL: return "sphere-cylinder";
     }
     return "?";
 }
@@ -157,6 +158,12 @@ rc_status rc_geom_pair(const rc_model *m, int s1, int s2, int *sa, int *sb, rc_p
         *kind = m->surf_kind[s2] == RC_SURF_PLANE ? RC_PAIR_SEG_PLANE : RC_PAIR_SEG_SEG;
         return RC_OK;
     }
+    /* sphere-cylinder: the sphere is surface a */
+    if (m->surf_kind[s1] == RC_SURF_CYL && m->surf_kind[s2] == RC_SURF_SPHERE) {
+        int t = s1;
+        s1 = s2;
+        s2 = t;
+    }
     /* a segment surface is surface a (its nodes against b) */
     if (m->surf_kind[s2] == RC_SURF_SEG && m->surf_kind[s1] != RC_SURF_SEG && !is_round(m->surf_kind[s1])) {
         int t = s1;
@@ -169,6 +176,7 @@ rc_status rc_geom_pair(const rc_model *m, int s1, int s2, int *sa, int *sb, rc_p
     if (ka == RC_SURF_SPHERE && kb == RC_SURF_PLANE) *kind = RC_PAIR_SPHERE_PLANE;
     else if (ka == RC_SURF_SPHERE && kb == RC_SURF_SPHERE) *kind = RC_PAIR_SPHERE_SPHERE;
     else if (ka == RC_SURF_SPHERE && kb == RC_SURF_BOX) *kind = RC_PAIR_SPHERE_BOX;
+    else if (ka == RC_SURF_SPHERE && kb == RC_SURF_CYL) *kind = RC_PAIR_SPHERE_CYL;
     else if (ka == RC_SURF_CYL && kb == RC_SURF_PLANE) *kind = RC_PAIR_CYL_PLANE;
     else if (ka == RC_SURF_CYL && kb == RC_SURF_BOX) *kind = RC_PAIR_CYL_BOX;
     else if (ka == RC_SURF_CYL && kb == RC_SURF_CYL) *kind = RC_PAIR_CYL_CYL;
@@ -185,8 +193,8 @@ rc_status rc_geom_pair(const rc_model *m, int s1, int s2, int *sa, int *sb, rc_p
     else
         RC_RAISE(err, RC_EINPUT,
                  "%s, fields surf_ID1/surf_ID2: %s against %s is not a contact pair ricochet supports (supported: "
-                 "sphere-plane, sphere-sphere, sphere-box, cylinder-plane, cylinder-box, cylinder-cylinder with "
-                 "parallel axes, box-plane, box-box)",
+                 "sphere-plane, sphere-sphere, sphere-box, sphere-cylinder, cylinder-plane, cylinder-box, "
+                 "cylinder-cylinder with parallel axes, box-plane, box-box)",
                  where, kind_name(ka), kind_name(kb));
     /* parallel axes at t = 0 (the body frames are the global frame then) */
     if (*kind == RC_PAIR_CYL_CYL) {

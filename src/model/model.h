@@ -73,8 +73,10 @@ typedef enum {
     RC_PAIR_SEG_SEG = 10,     /* a, b: segment surfaces, node to segment
                                  both ways (the nodes of a against the
                                  segments of b, then those of b against a's) */
-    RC_PAIR_CYL_SEG = 11      /* a: cylinder, b: segment surface (the plane
+    RC_PAIR_CYL_SEG = 11,     /* a: cylinder, b: segment surface (the plane
                                  of the segment under the cylinder's centre) */
+    RC_PAIR_SPHERE_CYL = 12   /* a: sphere, b: cylinder of finite length
+                                 (distance from the centre to the solid) */
 } rc_pair_kind;
 /* Pairs with several contact points (docs/theory.md 2.7). */
 static inline int rc_pair_multi(rc_pair_kind k)

@@ -44,6 +44,8 @@ rc_status rc_spline_init(rc_spline *s, int kind, int id, int n, const double *x,
 void rc_spline_free(rc_spline *s);
 /* Value and slope at x (linear extension outside [x0, xn]). */
 void rc_spline_eval(const rc_spline *s, double x, double *f, double *dfdx);
+/* The same with the second derivative (0 on the linear extension). */
+void rc_spline_eval2(const rc_spline *s, double x, double *f, double *dfdx, double *d2f);
 /* Integral of the spline (with its extension) from a to b. */
 double rc_spline_integral(const rc_spline *s, double a, double b);
 /* Name of a spline kind ("steffen", ...). */
@@ -91,6 +93,15 @@ static inline double rc_powreg_slope(double x, double m, double xr)
     if (m == 1.0) return 1.0;
     if (m < 1.0 && ax < xr) return (2.0 - m) * pow(xr, m - 1.0) + 2.0 * (m - 1.0) * pow(xr, m - 2.0) * ax;
     return ax == 0 ? 0.0 : m * pow(ax, m - 1.0);
+}
+
+/* Curvature of rc_powreg at x (real): the slope's derivative, odd in x. */
+static inline double rc_powreg_curv(double x, double m, double xr)
+{
+    const double ax = x < 0 ? -x : x, sg = x < 0 ? -1.0 : 1.0;
+    if (m == 1.0 || ax == 0) return 0.0;
+    if (m < 1.0 && ax < xr) return sg * 2.0 * (m - 1.0) * pow(xr, m - 2.0);
+    return sg * m * (m - 1.0) * pow(ax, m - 2.0);
 }
 
 /* Elastic energy stored in a power-law interface at penetration p [J]:

@@ -90,6 +90,12 @@ void rc_spline_eval(const rc_spline *s, double x, double *f, double *dfdx)
     *dfdx = gsl_spline_eval_deriv(s->spl, x, NULL);
 }
 
+void rc_spline_eval2(const rc_spline *s, double x, double *f, double *dfdx, double *d2f)
+{
+    rc_spline_eval(s, x, f, dfdx);
+    *d2f = x <= s->x[0] || x >= s->x[s->n - 1] ? 0.0 : gsl_spline_eval_deriv2(s->spl, x, NULL);
+}
+
 /* Integral of the linear extension f(x) = y_e + s (x - x_e) from a to b. */
 static double line_integral(double ye, double sl, double xe, double a, double b)
 {

@@ -7,6 +7,8 @@ import math
 
 import numpy as np
 
+from deck import line
+
 
 def frame(tan_th, phi):
     """theta, plane normal n, fall-line direction s (down the slope), in-plane u = n x s."""
@@ -14,6 +16,24 @@ def frame(tan_th, phi):
     n = np.array([math.sin(th) * math.cos(phi), math.sin(th) * math.sin(phi), math.cos(th)])
     s = np.array([math.cos(th) * math.cos(phi), math.cos(th) * math.sin(phi), -math.sin(th)])
     return th, n, s, np.cross(n, s)
+
+
+def add_strip_plate(d, s, u, s0, s1, ns, width, sid=10, node0=1000, title="inclined plate: fixed triangles"):
+    """A fixed /SURF/SEG plate in the plane through the origin spanned by s
+    (along the strips) and u: ns strips from s0 to s1 [m], width [m], each
+    split into two triangles by a diagonal that a path along u = 0 crosses;
+    normals along s x u. Nodes from node0 on."""
+    xs = np.linspace(s0, s1, ns + 1)
+    pn = [(node0 + 2 * k + e, *(xs[k] * s + (-width / 2 if e == 0 else width / 2) * u))
+          for k in range(ns + 1) for e in (0, 1)]
+    d.nodes(pn)
+    segs = []
+    for k in range(ns):
+        # (s_k,-), (s_k+1,-), (s_k+1,+), (s_k,+)
+        a, b, cc, dd = node0 + 2 * k, node0 + 2 + 2 * k, node0 + 3 + 2 * k, node0 + 1 + 2 * k
+        segs.append(line(*[("i", v) for v in (2 * k + 1, a, b, cc)]))
+        segs.append(line(*[("i", v) for v in (2 * k + 2, a, cc, dd)]))
+    d.add(f"/SURF/SEG/{sid}", *segs, title=title)
 
 
 def ramp_table(tr, n=501):

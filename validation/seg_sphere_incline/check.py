@@ -28,7 +28,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 import incline  # noqa: E402
 import rcval  # noqa: E402
-from deck import Deck, line  # noqa: E402
+from deck import Deck  # noqa: E402
 
 M, R, K, G, MU = 1.0, 0.05, 1.0e6, 9.81, 0.3
 VISC = 2.0 * 0.5 * math.sqrt(K * M)  # normal damping ratio 0.5
@@ -51,15 +51,7 @@ def deck(tan_th, tend, locked=True, dtout=0.01):
         d.bcs(1, 1, "000 111", title="no rotation")
     # the plate: strips of 0.1 m along s, each split into two triangles by a
     # diagonal that the sphere's path (u = 0) crosses; normals up the plate
-    xs = np.linspace(S0, S1, NS + 1)
-    pn = [(1000 + 2 * k + e, *(xs[k] * s + (-W / 2 if e == 0 else W / 2) * u)) for k in range(NS + 1) for e in (0, 1)]
-    d.nodes(pn)
-    segs = []
-    for k in range(NS):
-        a, b, cc, dd = 1000 + 2 * k, 1002 + 2 * k, 1003 + 2 * k, 1001 + 2 * k  # (s_k,-), (s_k+1,-), (s_k+1,+), (s_k,+)
-        segs.append(line(*[("i", v) for v in (2 * k + 1, a, b, cc)]))
-        segs.append(line(*[("i", v) for v in (2 * k + 2, a, cc, dd)]))
-    d.add("/SURF/SEG/10", *segs, title="inclined plate: fixed triangles")
+    incline.add_strip_plate(d, s, u, S0, S1, NS, W)
     d.type6(1, 1, 10, 1, visc=VISC, fric=MU, title="sphere on the plate, Fric 0.3")
     d.grav(1, "Z", -G)
     d.run(tend, dtout)

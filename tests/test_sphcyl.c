@@ -1,0 +1,278 @@
+/*
+ * Sphere against a cylinder of finite length (docs/theory.md 2): the signed
+ * distance and normal in every region (flat ends: lateral surface, end disc,
+ * rim, centre inside the solid; rounded ends: lateral surface, cap) against
+ * the closed forms written here, and the Jacobian against central
+ * differences in each region, TYPE6 with friction (stick, slip), the
+ * power law with step5 friction (uncapped, capped) and with /FRICTION
+ * cards (viscous and incremental forms with a filter), closed and released.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "base/error.h"
+#include "model/model.h"
+#include "harness.h"
+#include "testutil.h"
+
+static char sc_path[128];
+
+/* Body 1: a ball (sphere of radius 0.03 off the body's reference point);
+ * body 2: the carrier of the cylinder (radius 0.05, length 0.2, axis
+ * (1, 0.1, 0.05), centre off the reference point). %d: Iend. */
+#define SC_HEAD                                                                                                  \
+    "/NODE\n1,0.001,-0.002,0.3\n2,0,0,0\n"                                                                      \
+    "/RBODY/1\nball\n1,,,,0.731\n2.1e-3,1.7e-3,2.9e-3\n1.3e-4,-2.2e-4,0.7e-4\n"                                  \
+    "/RBODY/2\ncarrier\n2,,,,5.0\n0.11,0.13,0.2\n0.01,0,0\n"                                                     \
+    "/SURF/ELLIPS/20\nball\n0,2,1\n0.0027,-0.0011,0.3021\n0.03,0.03,0.03\n"                                      \
+    "/SURF/CYL/40\ncylinder\n2,%d\n0.003,-0.002,0.001\n1,0.1,0.05\n0.05,0.2\n"                                   \
+    "/FUNCT/1\nload\n-0.01,-3.1e3\n0,0\n0.0013,2.71e3\n0.0041,1.37e4\n0.0097,5.9e4\n"
+
+static const char sc_type6[] = "/INTER/TYPE6/1\nball on cylinder\n40,20\n,0.3\n\n1\n\n730\n/RUN\n0.01,0.001\n";
+static const char sc_power[] =
+    "/INTER/POWER/1\nball on cylinder\n40,20\n3.7e8,1.5,2.1e5,1.1,1.2\n\n0.4,0.3,0.25,1.1,7.5\n/RUN\n0.01,0.001\n";
+
+/* /FRICTION cards replacing step5 on the power law: the viscous form with a
+ * filter, the incremental form (Kt of the power card) with a filter, the
+ * viscous form on the stiffness spline (its C follows the spline's slope). */
+#define SC_PARTS "/PART/1\nball\n0,0,0,0\n1,20\n/PART/2\ncarrier\n0,0,0,0\n2,40\n/GRAV/1\ng\n0,Z,0,0,0,,1,-9.81\n"
+static const char sc_frc_viscous[] =
+    SC_PARTS "/FRICTION/1\nf\n0,3,45,1\n,\n,0.4,0.2\n0,0,1,2\n,\n,0.37,0.2\n"
+             "/INTER/POWER/1\nball on cylinder\n40,20\n3.7e8,1.5,2.1e5,1.1,1.2\n\n0.4,0.3,0.25,1.1\n/RUN\n0.01,0.001\n";
+static const char sc_frc_incremental[] =
+    SC_PARTS "/FRICTION/1\nf\n0,3,45,2\n,\n,0.4\n0,0,1,2\n,\n,0.37\n"
+             "/INTER/POWER/1\nball on cylinder\n40,20\n3.7e8,1.5,2.1e5,1.1,1.2\n\n0.4,0.3,0.25,1.1\n2.3e6\n"
+             "/RUN\n0.01,0.001\n";
+
+static const char sc_frc_spline[] =
+    SC_PARTS "/FRICTION/1\nf\n0,0,0,1\n,\n,0.4,0.2\n0,0,1,2\n,\n,0.37,0.2\n"
+             "/INTER/POWER/1\nball on cylinder\n40,20,1\n,,2.1e5,1.1,1.2\n\n0.4,0.3,0.25,1.1\n/RUN\n0.01,0.001\n";
+
+static rc_model *sc_compile(int iend, const char *inter, rc_error *e)
+{
+    char text[4096];
+    snprintf(text, sizeof text, SC_HEAD "%s", iend, inter);
+    snprintf(sc_path, sizeof sc_path, "/tmp/rc_sphcyl_test_%d.rad", (int)getpid());
+    return tu_compile_text(text, sc_path, e);
+}
+
+static void quat(double a, const double *u, double *q)
+{
+    const double l = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    q[0] = cos(0.5 * a);
+    for (int k = 0; k < 3; k++) q[k + 1] = sin(0.5 * a) * u[k] / l;
+}
+
+/* out = R(q) s, q a unit quaternion */
+static void rot(const double *q, const double *s, double *out)
+{
+    const double w = q[0], x = q[1], y = q[2], z = q[3];
+    const double R[9] = {1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),
+                         2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
+                         2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)};
+    for (int k = 0; k < 3; k++) out[k] = R[3 * k] * s[0] + R[3 * k + 1] * s[1] + R[3 * k + 2] * s[2];
+}
+
+/* A state with the carrier turned and moving, the ball's centre at axial
+ * coordinate z and radial coordinate rho (along a fixed direction across
+ * the axis) of the cylinder: the cylinder's centre and axis in cb, e. */
+static double *sc_state(const rc_model *m, double z, double rho, double *cb, double *e, double *xc)
+{
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    rc_initial_state(m, y);
+    double *b1 = y + m->body_yadr[0], *b2 = y + m->body_yadr[1];
+    /* carrier: position, a turn, velocity, spin */
+    const double p2[3] = {0.0021, 0.0007, -0.0003}, ax2[3] = {0.3, -1.0, 0.7};
+    double q2[4];
+    quat(0.37, ax2, q2);
+    const double v2[6] = {-0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
+    memcpy(b2, p2, sizeof p2);
+    memcpy(b2 + 3, q2, sizeof q2);
+    memcpy(b2 + 7, v2, sizeof v2);
+    const double cl[3] = {0.003, -0.002, 0.001};
+    const double el[3] = {1 / sqrt(1.0125), 0.1 / sqrt(1.0125), 0.05 / sqrt(1.0125)};
+    double cr[3];
+    rot(q2, cl, cr);
+    rot(q2, el, e);
+    for (int k = 0; k < 3; k++) cb[k] = p2[k] + cr[k];
+    /* a unit direction across the axis */
+    const double t[3] = {0.2, 0.3, 1.0};
+    double te = t[0] * e[0] + t[1] * e[1] + t[2] * e[2], u[3], ul = 0;
+    for (int k = 0; k < 3; k++) u[k] = t[k] - te * e[k];
+    for (int k = 0; k < 3; k++) ul += u[k] * u[k];
+    for (int k = 0; k < 3; k++) u[k] /= sqrt(ul);
+    for (int k = 0; k < 3; k++) xc[k] = cb[k] + z * e[k] + rho * u[k];
+    /* ball: a turn, its centre at xc (offset (0.0017, 0.0009, 0.0021) from
+     * the reference point in the body frame) */
+    const double ax1[3] = {1.0, 0.4, -0.2}, off[3] = {0.0017, 0.0009, 0.0021};
+    double q1[4], o[3];
+    quat(0.21, ax1, q1);
+    rot(q1, off, o);
+    for (int k = 0; k < 3; k++) b1[k] = xc[k] - o[k];
+    memcpy(b1 + 3, q1, sizeof q1);
+    const double v1[6] = {0.31, -0.23, -0.17, 3.1, -2.3, 4.7};
+    memcpy(b1 + 7, v1, sizeof v1);
+    for (int k = 26; k < m->ny; k++) y[k] = 0.013 * (k - 25);
+    return y;
+}
+
+/* Regions as (z, rho) of the ball's centre, radius 0.03, cylinder radius
+ * 0.05, half-length 0.1, penetration 0.0011 (0.0311 for the centre inside). */
+typedef struct {
+    const char *name;
+    int iend;
+    double z, rho, d;      /* centre coordinates; expected distance      */
+    double nz, nr;         /* expected normal (a to b) along e and across */
+} sc_region;
+
+static const double P0 = 0.0011, RB = 0.03, RC = 0.05, HC = 0.1;
+
+static void sc_regions(sc_region *g)
+{
+    const double a = 0.6, dd = RB - P0; /* rim: the centre at dd from the rim, angle a from the axis */
+    const sc_region r[7] = {
+        {"flat, lateral", 0, 0.037, RC + dd, -P0, 0, -1},
+        {"flat, end disc", 0, HC + dd, 0.021, -P0, -1, 0},
+        {"flat, rim", 0, HC + dd * cos(a), RC + dd * sin(a), -P0, -cos(a), -sin(a)},
+        {"flat, centre inside (lateral)", 0, 0.02, RC - 0.0011, -0.0011 - RB, 0, -1},
+        {"flat, centre inside (disc)", 0, -(HC - 0.0011), 0.01, -0.0011 - RB, 1, 0},
+        {"rounded, lateral", 1, -0.043, RC + dd, -P0, 0, -1},
+        {"rounded, cap", 1, -(HC + (RC + dd) * cos(a)), (RC + dd) * sin(a), -P0, cos(a), -sin(a)},
+    };
+    memcpy(g, r, sizeof r);
+}
+
+/* The distance and the normal of every region against the closed forms. */
+static void test_sphcyl_geometry_regions(void)
+{
+    sc_region g[7];
+    sc_regions(g);
+    for (int k = 0; k < 7; k++) {
+        rc_error e;
+        rc_model *m = sc_compile(g[k].iend, sc_type6, &e);
+        ENSURE(m != NULL);
+        if (!m) {
+            fprintf(stderr, "  %s\n", e.msg);
+            return;
+        }
+        ENSURE(m->inter_pair[0] == RC_PAIR_SPHERE_CYL);
+        ENSURE(m->surf_id[m->inter_sa[0]] == 20); /* the sphere is surface a, whatever the card's order */
+        double cb[3], ea[3], xc[3];
+        double *y = sc_state(m, g[k].z, g[k].rho, cb, ea, xc);
+        rc_inter_report r;
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+        /* expected normal: nz e + nr u, u the direction across the axis */
+        double rel[3], z = 0, u[3], ul = 0, nx[3];
+        for (int i = 0; i < 3; i++) rel[i] = xc[i] - cb[i];
+        for (int i = 0; i < 3; i++) z += rel[i] * ea[i];
+        for (int i = 0; i < 3; i++) u[i] = rel[i] - z * ea[i];
+        for (int i = 0; i < 3; i++) ul += u[i] * u[i];
+        double nerr = 0;
+        for (int i = 0; i < 3; i++) {
+            nx[i] = g[k].nz * ea[i] + g[k].nr * u[i] / sqrt(ul);
+            nerr = fmax(nerr, fabs(r.normal[i] - nx[i]));
+        }
+        printf("    %-30s P = %.6g m (expected %.6g), |n - n_exact| = %.2e, F_n = %.4g N\n", g[k].name, r.p, -g[k].d,
+               nerr, r.fn);
+        ENSURE_NEAR(r.p, -g[k].d, 0, 1e-15);
+        ENSURE(nerr < 1e-13);
+        free(y);
+        rc_model_free(m);
+    }
+}
+
+/* Across the borders of the regions with the centre outside the solid
+ * (lateral/rim, rim/end disc, rounded lateral/cap) the distance and the
+ * normal are continuous: points 1e-9 m either side. */
+static void test_sphcyl_continuity(void)
+{
+    const double eps = 1e-9, dd = 0.01;
+    /* iend, (z, rho) of the two sides */
+    const struct {
+        const char *name;
+        int iend;
+        double z1, r1, z2, r2;
+    } b[3] = {{"lateral | rim", 0, HC - eps, RC + dd, HC + eps, RC + dd},
+              {"rim | end disc", 0, HC + dd, RC + eps, HC + dd, RC - eps},
+              {"rounded lateral | cap", 1, -HC + eps, RC + dd, -HC - eps, RC + dd}};
+    for (int k = 0; k < 3; k++) {
+        rc_error e;
+        rc_model *m = sc_compile(b[k].iend, sc_type6, &e);
+        ENSURE(m != NULL);
+        if (!m) return;
+        double cb[3], ea[3], xc[3];
+        rc_inter_report r1, r2;
+        double *y = sc_state(m, b[k].z1, b[k].r1, cb, ea, xc);
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r1);
+        free(y);
+        y = sc_state(m, b[k].z2, b[k].r2, cb, ea, xc);
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r2);
+        free(y);
+        double dn = 0;
+        for (int i = 0; i < 3; i++) dn = fmax(dn, fabs(r1.normal[i] - r2.normal[i]));
+        printf("    %-22s |P1 - P2| = %.2e m, |n1 - n2| = %.2e (points %.0e m apart)\n", b[k].name, fabs(r1.p - r2.p), dn,
+               2 * eps);
+        ENSURE(fabs(r1.p - r2.p) < 1e-8);
+        ENSURE(dn < 1e-6);
+        rc_model_free(m);
+    }
+}
+
+/* The Jacobian in every region against central differences: TYPE6 with
+ * friction (stick, slip), power law with step5 friction (uncapped, capped)
+ * or a /FRICTION card (viscous and incremental, filtered), closed and
+ * released. */
+static void test_sphcyl_jacobian_regions(void)
+{
+    sc_region g[7];
+    sc_regions(g);
+    int bad = 0, outside = 0, combos = 0;
+    double maxerr = 0;
+    const char *decks[5] = {sc_type6, sc_power, sc_frc_viscous, sc_frc_incremental, sc_frc_spline};
+    const char *names[5] = {"type6+fric", "power+step5", "power+/FRICTION viscous, filter",
+                            "power+/FRICTION incremental, filter", "power spline+/FRICTION viscous"};
+    for (int law = 0; law < 5; law++)
+        for (int k = 0; k < 7; k++) {
+            rc_error e;
+            rc_model *m = sc_compile(g[k].iend, decks[law], &e);
+            ENSURE(m != NULL);
+            if (!m) {
+                fprintf(stderr, "  %s\n", e.msg);
+                return;
+            }
+            rc_data *d = rc_data_new(m);
+            double cb[3], ea[3], xc[3];
+            double *y = sc_state(m, g[k].z, g[k].rho, cb, ea, xc);
+            double err = 0;
+            const int modes[2] = {RC_MODE_CLOSED, RC_MODE_RELEASED};
+            for (int md = 0; md < 2; md++)
+                for (int sl = 0; sl < 2; sl++) {
+                    d->inter_mode[0] = modes[md];
+                    d->inter_branch[0] = law ? RC_BR_UNLOAD : RC_BR_LOAD;
+                    d->inter_slip[0] = sl;
+                    err = fmax(err, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
+                    combos++;
+                }
+            rc_inter_report r;
+            rc_inter_report_eval(m, 0, RC_MODE_CLOSED, d->inter_branch[0], 0, 0, 0.0, y, &r);
+            printf("    %s, %-30s P = %.4g m, F_n = %.4g N, slip speed %.3g m/s, max scaled |J - FD| = %.2e\n",
+                   names[law], g[k].name, r.p, r.fn, r.vslip, err);
+            maxerr = fmax(maxerr, err);
+            free(y);
+            rc_data_free(d);
+            rc_model_free(m);
+        }
+    printf("    sphere-cylinder jacobian: %d combinations, max scaled |J - FD| = %.2e\n", combos, maxerr);
+    ENSURE(bad == 0);
+    ENSURE(outside == 0);
+}
+
+void suite_sphcyl(void);
+void suite_sphcyl(void)
+{
+    RUN_TEST(test_sphcyl_geometry_regions);
+    RUN_TEST(test_sphcyl_continuity);
+    RUN_TEST(test_sphcyl_jacobian_regions);
+}

@@ -31,6 +31,7 @@
 #include "base/error.h"
 #include "engine/events.h"
 #include "model/model.h"
+#include "solver/activepart.h"
 #include "solver/impacts.h"
 #include "solver/nvfast.h"
 #include "solver/solver.h"
@@ -57,6 +58,7 @@ typedef struct run_ctx {
     int *old_mode, *old_branch, *old_track, *old_slip; /* the modes before a root return's events */
     int fresh; /* modes changed without a restart: the Jacobian is stale */
     rc_rootmap rm; /* the root functions CVODE is given (integrator.h) */
+    rc_actpart ap; /* the Newton matrix on the active part of the pattern (activepart.h) */
 } run_ctx;
 
 /* ---- CVODE callbacks ----------------------------------------------- */
@@ -98,20 +100,19 @@ static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleanty
      * then asks again (jok false) and gets a whole new Jacobian. */
     const int patched = c->jac_patched;
     c->jac_patched = 0;
-    if (!jok && patched) {
+    if (!jok) {
+        if (!patched) {
+            int st = rc_assemble_jac(m, c->d, t, N_VGetArrayPointer(y), c->jsave);
+            if (st) return st;
+        }
         *jcur = SUNTRUE;
-    } else if (!jok) {
-        int st = rc_assemble_jac(m, c->d, t, N_VGetArrayPointer(y), c->jsave);
-        if (st) return st;
-        *jcur = SUNTRUE;
+        /* new values, perhaps new active slots: the part follows */
+        if (rc_actpart_follow(&c->ap, m, c->d, t, N_VGetArrayPointer(y), patched ? NULL : c->jsave)) return -1;
     } else {
         *jcur = SUNFALSE;
     }
-    /* the pattern was written once (cv_open): nothing else writes A */
-    double *a = SUNSparseMatrix_Data(A);
-    for (int64_t k = 0; k < m->nnz; k++) a[k] = -gamma * c->jsave[k];
-    for (int r = 0; r < m->ny; r++) a[m->jac_diag[r]] += 1.0;
-    return 0;
+    /* nothing else writes A: its pattern is written when the part changes */
+    return rc_actpart_load(&c->ap, m, A, c->LS, -gamma, c->jsave, 1.0, 0) ? -1 : 0;
 }
 
 static int cb_root(realtype t, N_Vector y, realtype *g, void *ud)
@@ -330,6 +331,7 @@ static rc_status cv_open(void *self, const rc_model *m, rc_data *d, const rc_run
     for (int k = 0; k <= m->ny; k++) cp[k] = (sunindextype)m->jac_colptr[k];
     for (int64_t k = 0; k < m->nnz; k++) ri[k] = (sunindextype)m->jac_rowind[k];
     if (!(c->LS = SUNLinSol_KLU(c->y, c->A, c->ctx))) return RC_SET(err, RC_ESOLVER, "SUNLinSol_KLU failed");
+    if (rc_actpart_open(&c->ap, m, c->LS, 1)) return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     *y = N_VGetArrayPointer(c->y);
     *yp = NULL;
     *n = m->ny;
@@ -436,7 +438,11 @@ static void cv_add_stats(void *self, rc_stats *s)
 {
     run_ctx *c = self;
     if (c->cv) add_stats(c->cv, s);
-    if (c->d) s->jac_evals = c->d->n_jac;
+    if (c->d) {
+        s->jac_evals = c->d->n_jac;
+        c->d->n_klu_sym = c->ap.nsym;
+        c->d->newton_nnz = (long)c->ap.nnz_max;
+    }
 }
 
 static long cv_steps(void *self)
@@ -505,6 +511,7 @@ static void cv_close(void *self)
     free(c->old_track);
     free(c->old_slip);
     free(c->jsave);
+    rc_actpart_close(&c->ap);
     rc_rootmap_free(&c->rm);
     SUNContext_Free(&c->ctx);
 }

@@ -1,0 +1,119 @@
+/*
+ * The Newton matrix on the active part of the Jacobian pattern
+ * (activepart.h).
+ */
+#include <stdlib.h>
+#include <string.h>
+#include <sunlinsol/sunlinsol_klu.h>
+#include <sunmatrix/sunmatrix_sparse.h>
+
+#include "solver/activepart.h"
+
+static int g_enabled = 1;
+static rc_actpart_probe g_probe;
+static void *g_probe_ctx;
+
+void rc_actpart_set_enabled(int on) { g_enabled = on != 0; }
+int rc_actpart_enabled(void) { return g_enabled; }
+void rc_actpart_set_probe(rc_actpart_probe fn, void *ctx)
+{
+    g_probe = fn;
+    g_probe_ctx = ctx;
+}
+
+/* KLU's initialisation (called by the integrator at every (re)start) without
+ * forcing a new symbolic analysis: the pattern is the part's, analysed
+ * again when it changes (SUNLinSol_KLUReInit in rc_actpart_load). The
+ * refactorisation on the kept analysis checks its conditioning and
+ * factorises anew with pivoting when it is poor (SUNLinSolSetup_KLU). */
+static int klu_init_keep(SUNLinearSolver S)
+{
+    ((SUNLinearSolverContent_KLU)S->content)->last_flag = 0;
+    return 0;
+}
+
+int rc_actpart_open(rc_actpart *ap, const rc_model *m, SUNLinearSolver LS, int on)
+{
+    memset(ap, 0, sizeof *ap);
+    ap->on = on && g_enabled;
+    ap->nnz_max = m->nnz;
+    if (!ap->on) return 0;
+    ap->nnz_max = 0;
+    ap->need = malloc((size_t)m->nnz + 1);
+    ap->seen = calloc((size_t)m->nnz + 1, 1);
+    if (!ap->need || !ap->seen) return -1;
+    LS->ops->initialize = klu_init_keep;
+    return 0;
+}
+
+void rc_actpart_close(rc_actpart *ap)
+{
+    rc_subpat_free(&ap->sp);
+    free(ap->need);
+    free(ap->seen);
+    ap->need = ap->seen = NULL;
+}
+
+static int rebuild(rc_actpart *ap, const rc_model *m, const unsigned char *keep)
+{
+    if (rc_subpat_build(&ap->sp, m->ny, m->jac_colptr, m->jac_rowind, NULL, keep)) return -1;
+    ap->built = ap->changed = 1;
+    ap->nbuild++;
+    if (ap->sp.nnz > ap->nnz_max) ap->nnz_max = ap->sp.nnz;
+    return 0;
+}
+
+int rc_actpart_follow(rc_actpart *ap, const rc_model *m, const rc_data *d, double t, const double *y,
+                      const double *jsave)
+{
+    if (g_probe) g_probe(g_probe_ctx, m, d, t, y, jsave);
+    if (!ap->on) return 0;
+    rc_jac_active(m, d, t, y, ap->need);
+    const int64_t nz = m->nnz, *map = ap->sp.map;
+    if (!ap->built) {
+        memcpy(ap->seen, ap->need, (size_t)nz);
+        return rebuild(ap, m, ap->need);
+    }
+    int out = 0;
+    for (int64_t k = 0; k < nz; k++) {
+        out |= ap->need[k] && map[k] < 0;
+        ap->seen[k] |= ap->need[k];
+    }
+    if (!out) return 0;
+    /* the part: every slot active since the last rebuild; then count anew */
+    int st = rebuild(ap, m, ap->seen);
+    memcpy(ap->seen, ap->need, (size_t)nz);
+    return st;
+}
+
+int rc_actpart_load(rc_actpart *ap, const rc_model *m, SUNMatrix A, SUNLinearSolver LS, double a,
+                    const double *jsave, double c, int pattern)
+{
+    sunindextype *cp = SUNSparseMatrix_IndexPointers(A), *ri = SUNSparseMatrix_IndexValues(A);
+    double *v = SUNSparseMatrix_Data(A);
+    const int n = m->ny;
+    if (!ap->on) {
+        if (pattern) {
+            for (int k = 0; k <= n; k++) cp[k] = (sunindextype)m->jac_colptr[k];
+            for (int64_t k = 0; k < m->nnz; k++) ri[k] = (sunindextype)m->jac_rowind[k];
+        }
+        for (int64_t k = 0; k < m->nnz; k++) v[k] = a * jsave[k];
+        for (int r = 0; r < n; r++) v[m->jac_diag[r]] += c;
+    } else {
+        const rc_subpat *sp = &ap->sp;
+        if (pattern || ap->changed) {
+            /* A was made with the whole pattern's capacity: the part fits */
+            for (int k = 0; k <= n; k++) cp[k] = (sunindextype)sp->colptr[k];
+            for (int64_t k = 0; k < sp->nnz; k++) ri[k] = (sunindextype)sp->rowind[k];
+        }
+        if (ap->changed) {
+            if (SUNLinSol_KLUReInit(LS, A, SUNSparseMatrix_NNZ(A), SUNKLU_REINIT_PARTIAL) != 0) return -1;
+            ap->changed = 0;
+        }
+        rc_subpat_gather(sp, m->nnz, a, jsave, v);
+        for (int r = 0; r < n; r++) v[sp->diag[r]] += c;
+    }
+    /* the setup that follows analyses the pattern when KLU has none */
+    if (((SUNLinearSolverContent_KLU)LS->content)->first_factorize) ap->nsym++;
+    return 0;
+}

@@ -113,6 +113,8 @@ static const deck_case decks[] = {
     {"validation/seg_box_filter_slide/case.rad", 0, 1e-6, 1e-6}, /* per point with a filter */
     {"validation/seg_box_viscous/case.rad", 0, 1e-6, 1e-6},     /* viscous friction per point */
     {"validation/seg_sphere_floor/case.rad", 0, 1e-6, 1e-6},    /* a sphere on a meshed floor */
+    {"validation/bounce_settle/case.rad", 0, 1e-6, 1e-6},       /* settling (IDA: a settled contact's constraint) */
+    {"validation/stick_incline/case.rad", 0, 1e-6, 1e-6},       /* exact stick (IDA: velocity constraints) */
 };
 
 static void check_deck(const deck_case *dc, const rc_solver *s)
@@ -131,7 +133,9 @@ static void check_deck(const deck_case *dc, const rc_solver *s)
     if (!p.keep || !ya || !yb || !la || !lb) goto out;
     rc_stats sa, sb;
     rc_actpart_set_probe(probe, &p);
+    rc_actpart_probe_outside();
     ENSURE(run_once(m, s, 1, la, ya, &sa) == RC_OK);
+    const long xout = rc_actpart_probe_outside();
     rc_actpart_set_probe(NULL, NULL);
     ENSURE(run_once(m, s, 0, lb, yb, &sb) == RC_OK);
     double dt = 0;
@@ -142,14 +146,15 @@ static void check_deck(const deck_case *dc, const rc_solver *s)
     }
     const double dy = state_diff(m, ya, yb);
     printf("    %s, %s: %ld Jacobians checked, %.1f%% of the slots kept on average, %ld outside (mutated: %ld in %ld); "
-           "%d / %d events, times %.2g, state %.2g; steps %ld / %ld\n",
+           "%d / %d events, times %.2g, state %.2g; steps %ld / %ld; extended matrix: %ld outside\n",
            dc->path, s->name, p.checked, 100.0 * p.kept / fmax(p.total, 1), p.outside, p.outside_mut, p.mut_evals,
-           la->n, lb->n, dt, dy, sa.steps, sb.steps);
+           la->n, lb->n, dt, dy, sa.steps, sb.steps, xout);
     /* IDA with a constraint set (joints, exact stick, contacts that can
      * settle) runs on its whole extended pattern */
-    const int whole = s == &rc_solver_ida && ((m->jnt && m->jnt->n > 0) || rc_stk_slots(m) > 0);
+    const int whole = s == &rc_solver_ida && m->jnt && m->jnt->n > 0;
     ENSURE(whole ? p.checked == 0 : p.checked > 0);
     ENSURE(p.outside == 0);
+    ENSURE(xout == 0);
     ENSURE(p.mut_evals == 0 || p.outside_mut > 0);
     ENSURE(same);
     ENSURE(dt <= dc->tol_t);

@@ -12,9 +12,17 @@
 static int g_enabled = 1;
 static rc_actpart_probe g_probe;
 static void *g_probe_ctx;
+static long g_xoutside; /* with a probe: nonzeros of the extended matrix outside its active slots */
 
 void rc_actpart_set_enabled(int on) { g_enabled = on != 0; }
 int rc_actpart_enabled(void) { return g_enabled; }
+long rc_actpart_probe_outside(void)
+{
+    const long n = g_xoutside;
+    g_xoutside = 0;
+    return n;
+}
+
 void rc_actpart_set_probe(rc_actpart_probe fn, void *ctx)
 {
     g_probe = fn;
@@ -32,16 +40,28 @@ static int klu_init_keep(SUNLinearSolver S)
     return 0;
 }
 
-int rc_actpart_open(rc_actpart *ap, const rc_model *m, SUNLinearSolver LS, int on)
+int rc_actpart_open(rc_actpart *ap, const rc_model *m, SUNLinearSolver LS, int on, const rc_stk_work *sw)
 {
     memset(ap, 0, sizeof *ap);
     ap->on = on && g_enabled;
-    ap->nnz_max = m->nnz;
+    ap->sw = sw;
+    ap->n = m->ny;
+    ap->nnz = m->nnz;
+    ap->cp = m->jac_colptr;
+    ap->ri = m->jac_rowind;
+    if (sw) {
+        ap->n = m->ny + rc_stk_nextra(sw);
+        ap->nnz = rc_stk_nnz(sw);
+        rc_stk_pattern(sw, &ap->cp, &ap->ri);
+    }
+    ap->nnz_max = ap->nnz;
     if (!ap->on) return 0;
     ap->nnz_max = 0;
     ap->need = malloc((size_t)m->nnz + 1);
-    ap->seen = calloc((size_t)m->nnz + 1, 1);
-    if (!ap->need || !ap->seen) return -1;
+    ap->seen = calloc((size_t)ap->nnz + 1, 1);
+    ap->xneed = sw ? malloc((size_t)ap->nnz + 1) : ap->need;
+    ap->xval = sw ? malloc(((size_t)ap->nnz + 1) * sizeof(double)) : NULL;
+    if (!ap->need || !ap->seen || !ap->xneed || (sw && !ap->xval)) return -1;
     LS->ops->initialize = klu_init_keep;
     return 0;
 }
@@ -49,14 +69,17 @@ int rc_actpart_open(rc_actpart *ap, const rc_model *m, SUNLinearSolver LS, int o
 void rc_actpart_close(rc_actpart *ap)
 {
     rc_subpat_free(&ap->sp);
+    if (ap->xneed != ap->need) free(ap->xneed);
     free(ap->need);
     free(ap->seen);
-    ap->need = ap->seen = NULL;
+    free(ap->xval);
+    ap->need = ap->seen = ap->xneed = NULL;
+    ap->xval = NULL;
 }
 
-static int rebuild(rc_actpart *ap, const rc_model *m, const unsigned char *keep)
+static int rebuild(rc_actpart *ap, const unsigned char *keep)
 {
-    if (rc_subpat_build(&ap->sp, m->ny, m->jac_colptr, m->jac_rowind, NULL, keep)) return -1;
+    if (rc_subpat_build(&ap->sp, ap->n, ap->cp, ap->ri, NULL, keep)) return -1;
     ap->built = ap->changed = 1;
     ap->nbuild++;
     if (ap->sp.nnz > ap->nnz_max) ap->nnz_max = ap->sp.nnz;
@@ -69,35 +92,39 @@ int rc_actpart_follow(rc_actpart *ap, const rc_model *m, const rc_data *d, doubl
     if (g_probe) g_probe(g_probe_ctx, m, d, t, y, jsave);
     if (!ap->on) return 0;
     rc_jac_active(m, d, t, y, ap->need);
-    const int64_t nz = m->nnz, *map = ap->sp.map;
+    if (ap->sw) rc_stk_keep(m, d, ap->sw, ap->need, ap->xneed);
+    const unsigned char *need = ap->xneed;
+    const int64_t nz = ap->nnz, *map = ap->sp.map;
+    if (g_probe && ap->sw)
+        for (int64_t k = 0; k < nz; k++) g_xoutside += ap->xval[k] != 0.0 && !need[k];
     if (!ap->built) {
-        memcpy(ap->seen, ap->need, (size_t)nz);
-        return rebuild(ap, m, ap->need);
+        memcpy(ap->seen, need, (size_t)nz);
+        return rebuild(ap, need);
     }
     int out = 0;
     for (int64_t k = 0; k < nz; k++) {
-        out |= ap->need[k] && map[k] < 0;
-        ap->seen[k] |= ap->need[k];
+        out |= need[k] && map[k] < 0;
+        ap->seen[k] |= need[k];
     }
     if (!out) return 0;
     /* the part: every slot active since the last rebuild; then count anew */
-    int st = rebuild(ap, m, ap->seen);
-    memcpy(ap->seen, ap->need, (size_t)nz);
+    int st = rebuild(ap, ap->seen);
+    memcpy(ap->seen, need, (size_t)nz);
     return st;
 }
 
 int rc_actpart_load(rc_actpart *ap, const rc_model *m, SUNMatrix A, SUNLinearSolver LS, double a,
-                    const double *jsave, double c, int pattern)
+                    const double *val, double c, int pattern)
 {
     sunindextype *cp = SUNSparseMatrix_IndexPointers(A), *ri = SUNSparseMatrix_IndexValues(A);
     double *v = SUNSparseMatrix_Data(A);
-    const int n = m->ny;
-    if (!ap->on) {
+    const int n = ap->n;
+    if (!ap->on) { /* the model's pattern (IDA's extended ones do not come here when off) */
         if (pattern) {
             for (int k = 0; k <= n; k++) cp[k] = (sunindextype)m->jac_colptr[k];
             for (int64_t k = 0; k < m->nnz; k++) ri[k] = (sunindextype)m->jac_rowind[k];
         }
-        for (int64_t k = 0; k < m->nnz; k++) v[k] = a * jsave[k];
+        for (int64_t k = 0; k < m->nnz; k++) v[k] = a * val[k];
         for (int r = 0; r < n; r++) v[m->jac_diag[r]] += c;
     } else {
         const rc_subpat *sp = &ap->sp;
@@ -110,7 +137,7 @@ int rc_actpart_load(rc_actpart *ap, const rc_model *m, SUNMatrix A, SUNLinearSol
             if (SUNLinSol_KLUReInit(LS, A, SUNSparseMatrix_NNZ(A), SUNKLU_REINIT_PARTIAL) != 0) return -1;
             ap->changed = 0;
         }
-        rc_subpat_gather(sp, m->nnz, a, jsave, v);
+        rc_subpat_gather(sp, ap->nnz, a, val, v);
         for (int r = 0; r < n; r++) v[sp->diag[r]] += c;
     }
     /* the setup that follows analyses the pattern when KLU has none */

@@ -22,32 +22,44 @@
 #include <sundials/sundials_matrix.h>
 
 #include "model/model.h"
+#include "model/stick.h"
 #include "solver/subpat.h"
 
 typedef struct rc_actpart {
     int on;              /* 0: the whole pattern (SUNDIALS's re-analysis at every restart) */
     int built;           /* the part exists */
     int changed;         /* rebuilt since A's pattern was last written */
+    /* the matrix's whole pattern: the model's, or IDA's extended one with
+     * exact stick or settled contacts (sw) */
+    int n;
+    int64_t nnz;
+    const int64_t *cp, *ri;
+    const rc_stk_work *sw;
     rc_subpat sp;        /* the part (idx NULL: every state) */
-    unsigned char *need; /* [nnz] the active slots at the last new Jacobian */
+    unsigned char *need; /* [m->nnz] the model's active slots at the last new Jacobian */
+    unsigned char *xneed; /* [nnz] the matrix's (need itself without sw) */
     unsigned char *seen; /* [nnz] active at some new Jacobian since the last rebuild */
+    double *xval;        /* [nnz] with sw: the extended matrix's values before the gather */
     long nsym;           /* KLU symbolic analyses */
     long nbuild;         /* builds of the part */
     int64_t nnz_max;     /* largest part (the whole pattern when off) */
 } rc_actpart;
 
 /* Set up for model m and KLU solver LS (with on: LS's initialisation keeps
- * the analysis of an unchanged pattern). 0, or -1 out of memory. */
-int rc_actpart_open(rc_actpart *ap, const rc_model *m, SUNLinearSolver LS, int on);
+ * the analysis of an unchanged pattern); sw: IDA's exact-stick work, whose
+ * extended pattern is the matrix's (NULL: the model's pattern). 0, or -1
+ * out of memory. */
+int rc_actpart_open(rc_actpart *ap, const rc_model *m, SUNLinearSolver LS, int on, const rc_stk_work *sw);
 void rc_actpart_close(rc_actpart *ap);
 /* A new Jacobian jsave [nnz] at (t, y) in the modes of d: the part follows
  * the active slots (rebuilt when one is outside it). 0, or -1 out of memory. */
 int rc_actpart_follow(rc_actpart *ap, const rc_model *m, const rc_data *d, double t, const double *y,
                       const double *jsave);
-/* The Newton matrix into A: a jsave + c I on the part (on the whole
- * pattern when off); A's pattern written when the part changed or
- * `pattern` is set (IDA zeroes A before its Jacobian callback), KLU told
- * to analyse a changed pattern. 0, or -1 (KLU re-initialisation failed). */
+/* The Newton matrix into A: a val + c I on the part (on the whole pattern
+ * when off), val the values of the matrix's whole pattern (jsave, or with
+ * sw ap->xval); A's pattern written when the part changed or `pattern` is
+ * set (IDA zeroes A before its Jacobian callback), KLU told to analyse a
+ * changed pattern. 0, or -1 (KLU re-initialisation failed). */
 int rc_actpart_load(rc_actpart *ap, const rc_model *m, SUNMatrix A, SUNLinearSolver LS, double a,
                     const double *jsave, double c, int pattern);
 
@@ -59,5 +71,9 @@ int rc_actpart_enabled(void);
 typedef void (*rc_actpart_probe)(void *ctx, const rc_model *m, const rc_data *d, double t, const double *y,
                                  const double *jsave);
 void rc_actpart_set_probe(rc_actpart_probe fn, void *ctx);
+/* With a probe set, IDA's extended matrix (exact stick, settled contacts)
+ * is checked too: its nonzeros outside the active slots since the last
+ * call. */
+long rc_actpart_probe_outside(void);
 
 #endif

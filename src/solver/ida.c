@@ -74,8 +74,8 @@ typedef struct ida_ctx {
     SUNLinearSolver LS;
     N_Vector yy, yp, ytn, ypt, ysamp, idv;
     rc_rootmap rm; /* the root functions IDA is given (integrator.h) */
-    rc_actpart ap; /* the Newton matrix on the active part of the pattern (activepart.h; not with
-                      joints or exact stick: their extended patterns are whole) */
+    rc_actpart ap; /* the Newton matrix on the active part of the pattern (activepart.h; with
+                      exact stick on the extended pattern; not with joints: whole) */
 } ida_ctx;
 
 /* ---- IDA callbacks -------------------------------------------------- */
@@ -123,6 +123,12 @@ static int cb_jac(realtype t, realtype cj, N_Vector yy, N_Vector yp, N_Vector rr
         for (int64_t k = 0; k < pc[c->n]; k++) ri[k] = (sunindextype)pr[k];
         rc_both_jacobian(m, c->d, c->bw, cj, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), c->jsave, a);
         return 0;
+    }
+    if (c->sw && c->ap.on) {
+        /* the extended matrix on its active part (activepart.h) */
+        rc_stk_jacobian(m, c->d, c->sw, cj, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), c->jsave, c->ap.xval);
+        if (rc_actpart_follow(&c->ap, m, c->d, t, N_VGetArrayPointer(yy), c->jsave)) return -1;
+        return rc_actpart_load(&c->ap, m, A, c->LS, 1.0, c->ap.xval, 0.0, 1) ? -1 : 0;
     }
     if (c->sw) {
         const int64_t *pc, *pr;
@@ -336,7 +342,7 @@ static rc_status ida_open(void *self, const rc_model *m, rc_data *d, const rc_ru
     if (!c->yy || !c->yp || !c->ytn || !c->ypt || !c->ysamp || !c->idv || !c->jsave || !c->A)
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     if (!(c->LS = SUNLinSol_KLU(c->yy, c->A, c->ctx))) return RC_SET(err, RC_ESOLVER, "SUNLinSol_KLU failed");
-    if (rc_actpart_open(&c->ap, m, c->LS, !c->jw && !c->sw))
+    if (rc_actpart_open(&c->ap, m, c->LS, !c->jw, c->jw ? NULL : c->sw))
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     N_VConst(0.0, c->yy);
     *y = N_VGetArrayPointer(c->yy);
@@ -449,7 +455,7 @@ static void ida_add_stats(void *self, rc_stats *s)
 {
     ida_ctx *c = self;
     if (c->ida) add_stats(c->ida, s);
-    if (c->d && !c->jw && !c->sw) { /* counted on the model's pattern only */
+    if (c->d && c->ap.on) { /* counted on the active part only */
         c->d->n_klu_sym = c->ap.nsym;
         c->d->newton_nnz = (long)c->ap.nnz_max;
     }

@@ -73,13 +73,21 @@ void rc_actpart_close(rc_actpart *ap)
     free(ap->need);
     free(ap->seen);
     free(ap->xval);
+    free(ap->src);
     ap->need = ap->seen = ap->xneed = NULL;
     ap->xval = NULL;
+    ap->src = NULL;
 }
 
 static int rebuild(rc_actpart *ap, const unsigned char *keep)
 {
     if (rc_subpat_build(&ap->sp, ap->n, ap->cp, ap->ri, NULL, keep)) return -1;
+    /* the gather runs over the part's entries, not the whole pattern's */
+    int64_t *src = realloc(ap->src, ((size_t)ap->sp.nnz + 1) * sizeof *src);
+    if (!src) return -1;
+    ap->src = src;
+    for (int64_t k = 0; k < ap->nnz; k++)
+        if (ap->sp.map[k] >= 0) src[ap->sp.map[k]] = k;
     ap->built = ap->changed = 1;
     ap->nbuild++;
     if (ap->sp.nnz > ap->nnz_max) ap->nnz_max = ap->sp.nnz;
@@ -137,7 +145,8 @@ int rc_actpart_load(rc_actpart *ap, const rc_model *m, SUNMatrix A, SUNLinearSol
             if (SUNLinSol_KLUReInit(LS, A, SUNSparseMatrix_NNZ(A), SUNKLU_REINIT_PARTIAL) != 0) return -1;
             ap->changed = 0;
         }
-        rc_subpat_gather(sp, ap->nnz, a, val, v);
+        const int64_t *src = ap->src; /* rc_subpat_gather over the part's entries */
+        for (int64_t p = 0; p < sp->nnz; p++) v[p] = a * val[src[p]];
         for (int r = 0; r < n; r++) v[sp->diag[r]] += c;
     }
     /* the setup that follows analyses the pattern when KLU has none */

@@ -40,6 +40,7 @@ typedef struct rc_actpart {
     unsigned char *xneed; /* [nnz] the matrix's (need itself without sw) */
     unsigned char *seen; /* [nnz] active at some new Jacobian since the last rebuild */
     double *xval;        /* [nnz] with sw: the extended matrix's values before the gather */
+    int64_t *src;        /* [sp.nnz] the whole pattern's slot of each of the part's entries */
     long nsym;           /* KLU symbolic analyses */
     long nbuild;         /* builds of the part */
     int64_t nnz_max;     /* largest part (the whole pattern when off) */

@@ -115,6 +115,8 @@ static const deck_case decks[] = {
     {"validation/seg_sphere_floor/case.rad", 0, 1e-6, 1e-6},    /* a sphere on a meshed floor */
     {"validation/bounce_settle/case.rad", 0, 1e-6, 1e-6},       /* settling (IDA: a settled contact's constraint) */
     {"validation/stick_incline/case.rad", 0, 1e-6, 1e-6},       /* exact stick (IDA: velocity constraints) */
+    {"validation/bounce_release/case.rad", 0, 1e-6, 1e-6},      /* a settled contact's constraint released (IDA:
+                                                                   the kept pivots fail, analysed anew) */
 };
 
 static void check_deck(const deck_case *dc, const rc_solver *s)

@@ -40,6 +40,27 @@ static int klu_init_keep(SUNLinearSolver S)
     return 0;
 }
 
+/* Analyses after a failed refactorisation, in the integrating thread (read
+ * into rc_actpart.nsym by rc_actpart_count). */
+static _Thread_local long g_retry;
+
+/* KLU's setup; when the refactorisation on the kept analysis fails (a pivot
+ * of the old order is zero now: a constraint or contact that stopped
+ * acting left only its diagonal), the pattern is analysed and factorised
+ * anew with pivoting, once. */
+static int klu_setup_retry(SUNLinearSolver S, SUNMatrix A)
+{
+    SUNLinearSolverContent_KLU k = S->content;
+    const int fresh = k->first_factorize;
+    int flag = SUNLinSolSetup_KLU(S, A);
+    if (flag != 0 && !fresh) {
+        k->first_factorize = 1;
+        g_retry++;
+        flag = SUNLinSolSetup_KLU(S, A);
+    }
+    return flag;
+}
+
 int rc_actpart_open(rc_actpart *ap, const rc_model *m, SUNLinearSolver LS, int on, const rc_stk_work *sw)
 {
     memset(ap, 0, sizeof *ap);
@@ -63,6 +84,8 @@ int rc_actpart_open(rc_actpart *ap, const rc_model *m, SUNLinearSolver LS, int o
     ap->xval = sw ? malloc(((size_t)ap->nnz + 1) * sizeof(double)) : NULL;
     if (!ap->need || !ap->seen || !ap->xneed || (sw && !ap->xval)) return -1;
     LS->ops->initialize = klu_init_keep;
+    LS->ops->setup = klu_setup_retry;
+    ap->retry0 = g_retry;
     return 0;
 }
 
@@ -120,6 +143,8 @@ int rc_actpart_follow(rc_actpart *ap, const rc_model *m, const rc_data *d, doubl
     memcpy(ap->seen, need, (size_t)nz);
     return st;
 }
+
+long rc_actpart_analyses(const rc_actpart *ap) { return ap->nsym + (ap->on ? g_retry - ap->retry0 : 0); }
 
 int rc_actpart_load(rc_actpart *ap, const rc_model *m, SUNMatrix A, SUNLinearSolver LS, double a,
                     const double *val, double c, int pattern)

@@ -12,7 +12,8 @@
  * contacts that opened since then are likely to close again, a bouncing
  * contact does not rebuild at each bounce). KLU's own re-analysis at every
  * integrator restart (SUNLinSolInitialize) is replaced by one that keeps
- * the analysis while the pattern is the same.
+ * the analysis while the pattern is the same; a refactorisation that fails
+ * on the kept pivot order is followed by a new analysis (SUNLinSolSetup).
  */
 #ifndef RC_ACTIVEPART_H
 #define RC_ACTIVEPART_H
@@ -41,7 +42,8 @@ typedef struct rc_actpart {
     unsigned char *seen; /* [nnz] active at some new Jacobian since the last rebuild */
     double *xval;        /* [nnz] with sw: the extended matrix's values before the gather */
     int64_t *src;        /* [sp.nnz] the whole pattern's slot of each of the part's entries */
-    long nsym;           /* KLU symbolic analyses */
+    long nsym;           /* KLU symbolic analyses at the setups after a load (rc_actpart_analyses: all) */
+    long retry0;         /* the thread's count of analyses after failed refactorisations at open */
     long nbuild;         /* builds of the part */
     int64_t nnz_max;     /* largest part (the whole pattern when off) */
 } rc_actpart;
@@ -63,6 +65,9 @@ int rc_actpart_follow(rc_actpart *ap, const rc_model *m, const rc_data *d, doubl
  * changed pattern. 0, or -1 (KLU re-initialisation failed). */
 int rc_actpart_load(rc_actpart *ap, const rc_model *m, SUNMatrix A, SUNLinearSolver LS, double a,
                     const double *jsave, double c, int pattern);
+
+/* KLU symbolic analyses so far (after failed refactorisations included). */
+long rc_actpart_analyses(const rc_actpart *ap);
 
 /* Tests only: run the part (1, default) or the whole pattern (0); a probe
  * called at every new Jacobian with the state, the modes and its values

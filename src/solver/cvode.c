@@ -440,7 +440,7 @@ static void cv_add_stats(void *self, rc_stats *s)
     if (c->cv) add_stats(c->cv, s);
     if (c->d) {
         s->jac_evals = c->d->n_jac;
-        c->d->n_klu_sym = c->ap.nsym;
+        c->d->n_klu_sym = rc_actpart_analyses(&c->ap);
         c->d->newton_nnz = (long)c->ap.nnz_max;
     }
 }

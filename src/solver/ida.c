@@ -456,7 +456,7 @@ static void ida_add_stats(void *self, rc_stats *s)
     ida_ctx *c = self;
     if (c->ida) add_stats(c->ida, s);
     if (c->d && c->ap.on) { /* counted on the active part only */
-        c->d->n_klu_sym = c->ap.nsym;
+        c->d->n_klu_sym = rc_actpart_analyses(&c->ap);
         c->d->newton_nnz = (long)c->ap.nnz_max;
     }
 }

@@ -99,24 +99,28 @@ typedef struct deck_case {
     double tend;   /* shortened run [s] (0: the deck's) */
     double tol_t;  /* event times, relative to the run's end */
     double tol_y;  /* final state, relative (absolute below 1) */
+    int ida_only;  /* joints: the IDA path only */
 } deck_case;
 
 static const deck_case decks[] = {
-    {"validation/seg_box_slide_stop/case.rad", 0, 1e-6, 1e-6},  /* meshed box landing and sliding to rest */
-    {"validation/stack10_rest/case.rad", 1.0, 1e-6, 1e-6},      /* a column of ten spheres */
-    {"validation/cradle5/case.rad", 0, 1e-6, 1e-6},             /* five interfaces, contacts passing on */
-    {"validation/frc_iform_compare/case.rad", 0, 1e-6, 1e-6},   /* friction, two interfaces */
-    {"validation/t6_inacti_icor/case.rad", 0, 1e-6, 1e-6},      /* Inacti 5 tracking */
-    {"validation/seg_seg_collide/case.rad", 0, 1e-6, 1e-6},     /* two meshed boxes */
-    {"validation/cc_stop/case.rad", 0, 1e-6, 1e-6},             /* a contact coupling */
-    {"validation/seg_box_incline/case.rad", 0, 1e-6, 1e-6},     /* friction per point, sticking */
-    {"validation/seg_box_filter_slide/case.rad", 0, 1e-6, 1e-6}, /* per point with a filter */
-    {"validation/seg_box_viscous/case.rad", 0, 1e-6, 1e-6},     /* viscous friction per point */
-    {"validation/seg_sphere_floor/case.rad", 0, 1e-6, 1e-6},    /* a sphere on a meshed floor */
-    {"validation/bounce_settle/case.rad", 0, 1e-6, 1e-6},       /* settling (IDA: a settled contact's constraint) */
-    {"validation/stick_incline/case.rad", 0, 1e-6, 1e-6},       /* exact stick (IDA: velocity constraints) */
-    {"validation/bounce_release/case.rad", 0, 1e-6, 1e-6},      /* a settled contact's constraint released (IDA:
+    {"validation/seg_box_slide_stop/case.rad", 0, 1e-6, 1e-6, 0},  /* meshed box landing and sliding to rest */
+    {"validation/stack10_rest/case.rad", 1.0, 1e-6, 1e-6, 0},      /* a column of ten spheres */
+    {"validation/cradle5/case.rad", 0, 1e-6, 1e-6, 0},             /* five interfaces, contacts passing on */
+    {"validation/frc_iform_compare/case.rad", 0, 1e-6, 1e-6, 0},   /* friction, two interfaces */
+    {"validation/t6_inacti_icor/case.rad", 0, 1e-6, 1e-6, 0},      /* Inacti 5 tracking */
+    {"validation/seg_seg_collide/case.rad", 0, 1e-6, 1e-6, 0},     /* two meshed boxes */
+    {"validation/cc_stop/case.rad", 0, 1e-6, 1e-6, 0},             /* a contact coupling */
+    {"validation/seg_box_incline/case.rad", 0, 1e-6, 1e-6, 0},     /* friction per point, sticking */
+    {"validation/seg_box_filter_slide/case.rad", 0, 1e-6, 1e-6, 0}, /* per point with a filter */
+    {"validation/seg_box_viscous/case.rad", 0, 1e-6, 1e-6, 0},     /* viscous friction per point */
+    {"validation/seg_sphere_floor/case.rad", 0, 1e-6, 1e-6, 0},    /* a sphere on a meshed floor */
+    {"validation/bounce_settle/case.rad", 0, 1e-6, 1e-6, 0},       /* settling (IDA: a settled contact's constraint) */
+    {"validation/stick_incline/case.rad", 0, 1e-6, 1e-6, 0},       /* exact stick (IDA: velocity constraints) */
+    {"validation/bounce_release/case.rad", 0, 1e-6, 1e-6, 0},      /* a settled contact's constraint released (IDA:
                                                                    the kept pivots fail, analysed anew) */
+    {"validation/joint_slider_crank/case.rad", 0, 1e-6, 1e-6, 1}, /* joints (IDA: their extended pattern) */
+    {"validation/joint_stop_flap/case.rad", 0, 1e-6, 1e-6, 1},  /* a joint's stops */
+    {"validation/stick_joint_train/case.rad", 0, 1e-6, 1e-6, 1}, /* joints and exact stick: the whole pattern */
 };
 
 static void check_deck(const deck_case *dc, const rc_solver *s)
@@ -153,7 +157,7 @@ static void check_deck(const deck_case *dc, const rc_solver *s)
            la->n, lb->n, dt, dy, sa.steps, sb.steps, xout);
     /* IDA with a constraint set (joints, exact stick, contacts that can
      * settle) runs on its whole extended pattern */
-    const int whole = s == &rc_solver_ida && m->jnt && m->jnt->n > 0;
+    const int whole = s == &rc_solver_ida && m->jnt && m->jnt->n > 0 && rc_stk_slots(m) > 0;
     ENSURE(whole ? p.checked == 0 : p.checked > 0);
     ENSURE(p.outside == 0);
     ENSURE(xout == 0);
@@ -174,7 +178,7 @@ out:
 static void test_actpat_decks(void)
 {
     for (size_t k = 0; k < sizeof decks / sizeof decks[0]; k++) {
-        check_deck(&decks[k], &rc_solver_cvode);
+        if (!decks[k].ida_only) check_deck(&decks[k], &rc_solver_cvode);
         check_deck(&decks[k], &rc_solver_ida);
     }
 }

@@ -61,7 +61,8 @@ static int klu_setup_retry(SUNLinearSolver S, SUNMatrix A)
     return flag;
 }
 
-int rc_actpart_open(rc_actpart *ap, const rc_model *m, SUNLinearSolver LS, int on, const rc_stk_work *sw)
+int rc_actpart_open(rc_actpart *ap, const rc_model *m, SUNLinearSolver LS, int on, const rc_stk_work *sw,
+                    const rc_jnt_work *jw)
 {
     memset(ap, 0, sizeof *ap);
     ap->on = on && g_enabled;
@@ -74,15 +75,21 @@ int rc_actpart_open(rc_actpart *ap, const rc_model *m, SUNLinearSolver LS, int o
         ap->n = m->ny + rc_stk_nextra(sw);
         ap->nnz = rc_stk_nnz(sw);
         rc_stk_pattern(sw, &ap->cp, &ap->ri);
+    } else if (jw) {
+        ap->jw = jw;
+        ap->n = m->ny + rc_jnt_nextra(jw);
+        ap->nnz = rc_jnt_nnz(jw);
+        rc_jnt_pattern(jw, &ap->cp, &ap->ri);
     }
+    const int ext = sw || jw;
     ap->nnz_max = ap->nnz;
     if (!ap->on) return 0;
     ap->nnz_max = 0;
     ap->need = malloc((size_t)m->nnz + 1);
     ap->seen = calloc((size_t)ap->nnz + 1, 1);
-    ap->xneed = sw ? malloc((size_t)ap->nnz + 1) : ap->need;
-    ap->xval = sw ? malloc(((size_t)ap->nnz + 1) * sizeof(double)) : NULL;
-    if (!ap->need || !ap->seen || !ap->xneed || (sw && !ap->xval)) return -1;
+    ap->xneed = ext ? malloc((size_t)ap->nnz + 1) : ap->need;
+    ap->xval = ext ? malloc(((size_t)ap->nnz + 1) * sizeof(double)) : NULL;
+    if (!ap->need || !ap->seen || !ap->xneed || (ext && !ap->xval)) return -1;
     LS->ops->initialize = klu_init_keep;
     LS->ops->setup = klu_setup_retry;
     ap->retry0 = g_retry;
@@ -124,9 +131,10 @@ int rc_actpart_follow(rc_actpart *ap, const rc_model *m, const rc_data *d, doubl
     if (!ap->on) return 0;
     rc_jac_active(m, d, t, y, ap->need);
     if (ap->sw) rc_stk_keep(m, d, ap->sw, ap->need, ap->xneed);
+    else if (ap->jw) rc_jnt_keep(m, ap->jw, ap->need, ap->xneed);
     const unsigned char *need = ap->xneed;
     const int64_t nz = ap->nnz, *map = ap->sp.map;
-    if (g_probe && ap->sw)
+    if (g_probe && ap->xval)
         for (int64_t k = 0; k < nz; k++) g_xoutside += ap->xval[k] != 0.0 && !need[k];
     if (!ap->built) {
         memcpy(ap->seen, need, (size_t)nz);

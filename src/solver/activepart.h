@@ -22,6 +22,7 @@
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_matrix.h>
 
+#include "model/joint.h"
 #include "model/model.h"
 #include "model/stick.h"
 #include "solver/subpat.h"
@@ -36,11 +37,12 @@ typedef struct rc_actpart {
     int64_t nnz;
     const int64_t *cp, *ri;
     const rc_stk_work *sw;
+    const rc_jnt_work *jw; /* IDA's joints: their extended pattern is the matrix's */
     rc_subpat sp;        /* the part (idx NULL: every state) */
     unsigned char *need; /* [m->nnz] the model's active slots at the last new Jacobian */
-    unsigned char *xneed; /* [nnz] the matrix's (need itself without sw) */
+    unsigned char *xneed; /* [nnz] the matrix's (need itself without sw, jw) */
     unsigned char *seen; /* [nnz] active at some new Jacobian since the last rebuild */
-    double *xval;        /* [nnz] with sw: the extended matrix's values before the gather */
+    double *xval;        /* [nnz] with sw or jw: the extended matrix's values before the gather */
     int64_t *src;        /* [sp.nnz] the whole pattern's slot of each of the part's entries */
     long nsym;           /* KLU symbolic analyses at the setups after a load (rc_actpart_analyses: all) */
     long retry0;         /* the thread's count of analyses after failed refactorisations at open */
@@ -49,10 +51,11 @@ typedef struct rc_actpart {
 } rc_actpart;
 
 /* Set up for model m and KLU solver LS (with on: LS's initialisation keeps
- * the analysis of an unchanged pattern); sw: IDA's exact-stick work, whose
- * extended pattern is the matrix's (NULL: the model's pattern). 0, or -1
- * out of memory. */
-int rc_actpart_open(rc_actpart *ap, const rc_model *m, SUNLinearSolver LS, int on, const rc_stk_work *sw);
+ * the analysis of an unchanged pattern); sw: IDA's exact-stick work, or jw:
+ * its joints' work, whose extended pattern is the matrix's (both NULL: the
+ * model's pattern; not both). 0, or -1 out of memory. */
+int rc_actpart_open(rc_actpart *ap, const rc_model *m, SUNLinearSolver LS, int on, const rc_stk_work *sw,
+                    const rc_jnt_work *jw);
 void rc_actpart_close(rc_actpart *ap);
 /* A new Jacobian jsave [nnz] at (t, y) in the modes of d: the part follows
  * the active slots (rebuilt when one is outside it). 0, or -1 out of memory. */

@@ -331,7 +331,7 @@ static rc_status cv_open(void *self, const rc_model *m, rc_data *d, const rc_run
     for (int k = 0; k <= m->ny; k++) cp[k] = (sunindextype)m->jac_colptr[k];
     for (int64_t k = 0; k < m->nnz; k++) ri[k] = (sunindextype)m->jac_rowind[k];
     if (!(c->LS = SUNLinSol_KLU(c->y, c->A, c->ctx))) return RC_SET(err, RC_ESOLVER, "SUNLinSol_KLU failed");
-    if (rc_actpart_open(&c->ap, m, c->LS, 1, NULL)) return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
+    if (rc_actpart_open(&c->ap, m, c->LS, 1, NULL, NULL)) return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     *y = N_VGetArrayPointer(c->y);
     *yp = NULL;
     *n = m->ny;

@@ -75,7 +75,7 @@ typedef struct ida_ctx {
     N_Vector yy, yp, ytn, ypt, ysamp, idv;
     rc_rootmap rm; /* the root functions IDA is given (integrator.h) */
     rc_actpart ap; /* the Newton matrix on the active part of the pattern (activepart.h; with
-                      exact stick on the extended pattern; not with joints: whole) */
+                      exact stick or joints on the extended pattern; both: whole) */
 } ida_ctx;
 
 /* ---- IDA callbacks -------------------------------------------------- */
@@ -142,6 +142,11 @@ static int cb_jac(realtype t, realtype cj, N_Vector yy, N_Vector yp, N_Vector rr
         /* IDA zeroed A (pattern included): cj I - J_f on the active part */
         if (rc_actpart_follow(&c->ap, m, c->d, t, N_VGetArrayPointer(yy), c->jsave)) return -1;
         return rc_actpart_load(&c->ap, m, A, c->LS, -1.0, c->jsave, cj, 1) ? -1 : 0;
+    }
+    if (c->ap.on) { /* joints: the extended matrix on its active part (activepart.h) */
+        rc_jnt_jacobian(m, c->jw, cj, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), c->jsave, c->ap.xval);
+        if (rc_actpart_follow(&c->ap, m, c->d, t, N_VGetArrayPointer(yy), c->jsave)) return -1;
+        return rc_actpart_load(&c->ap, m, A, c->LS, 1.0, c->ap.xval, 0.0, 1) ? -1 : 0;
     }
     const int64_t *pc, *pr;
     rc_jnt_pattern(c->jw, &pc, &pr);
@@ -342,7 +347,8 @@ static rc_status ida_open(void *self, const rc_model *m, rc_data *d, const rc_ru
     if (!c->yy || !c->yp || !c->ytn || !c->ypt || !c->ysamp || !c->idv || !c->jsave || !c->A)
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     if (!(c->LS = SUNLinSol_KLU(c->yy, c->A, c->ctx))) return RC_SET(err, RC_ESOLVER, "SUNLinSol_KLU failed");
-    if (rc_actpart_open(&c->ap, m, c->LS, !c->jw, c->jw ? NULL : c->sw))
+    /* joints and exact stick together: the whole extended pattern */
+    if (rc_actpart_open(&c->ap, m, c->LS, !c->bw, c->bw ? NULL : c->sw, c->bw ? NULL : c->jw))
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     N_VConst(0.0, c->yy);
     *y = N_VGetArrayPointer(c->yy);

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "model/coupling.h"
+#include "model/coupling_contact.h"
 #include "model/friction.h"
 #include "base/error.h"
 #include "model/imposed.h"
@@ -446,4 +447,100 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
                 for (int e = 0; e < s; e++) *sl++ = rc_jac_slot(m, p0 + r, p0 + e);
         }
     return RC_OK;
+}
+
+/* ---- The slots that can be nonzero in the present modes ----------------
+ * (model.h rc_jac_active; docs/theory.md 7, "The Newton matrix follows the
+ * contacts"). A slot is dropped when every element that writes it is
+ * inactive: an interface neither closed nor released (no force, its own
+ * rates zero) unless its Inacti 5 offset tracks the separation; the
+ * contact points of an interface that is not closed; the rows of a contact
+ * point out of the contact (share w_j = 0) against the interface's columns
+ * when the point's law gives them no value (it slips, its law has no
+ * tangential spring state, or that state is zero); a contact coupling with
+ * no face pushing. Bodies, joints' stops, springs, catenaries, gravity's
+ * and imposed velocities' rows, and the diagonal are always kept. */
+enum { AP_NONE = 0, AP_KEEP = 1, AP_DROP = 2 };
+
+static void ap_mark(unsigned char *mk, const int64_t *slot, int64_t n, unsigned char v)
+{
+    for (int64_t k = 0; k < n; k++)
+        if (slot[k] >= 0 && (v == AP_KEEP || mk[slot[k]] == AP_NONE)) mk[slot[k]] = v;
+}
+
+/* Is interface i's block (forces and own rates) nonzero in its modes? */
+static int ap_inter_on(const rc_data *d, int i)
+{
+    const int mode = d->inter_mode[i];
+    return mode == RC_MODE_CLOSED || mode == RC_MODE_RELEASED || (mode == RC_MODE_OPEN && d->inter_track[i]);
+}
+
+static void ap_points(const rc_model *m, const rc_data *d, int i, double t, const double *y, unsigned char *mk,
+                      int pass)
+{
+    const rc_jblock *jb = &m->jb_inter[i];
+    const int npt = m->inter_npt[i], s = m->inter_pst[i];
+    const int64_t P = (int64_t)s * jb->ncol + (int64_t)s * jb->nrow + (int64_t)s * s, rows = (int64_t)s * jb->ncol;
+    const int64_t *sl = m->inter_ptslot[i];
+    if (d->inter_mode[i] != RC_MODE_CLOSED) { /* no point writes (assemble_jac.c) */
+        if (pass == AP_DROP) ap_mark(mk, sl, P * npt, AP_DROP);
+        return;
+    }
+    if (pass == AP_DROP) return;
+    double *w = d->pt_work; /* 5 per point (rc_data_new), free outside the root and Jacobian evaluations */
+    rc_points_eval(m, d, i, NULL, t, y, w);
+    const rc_fric *fr = &m->inter_fr[i];
+    const int *pslip = d->pt_slip + m->inter_pbase[i];
+    for (int j = 0; j < npt; j++) {
+        const int64_t *pj = sl + j * P;
+        int quiet = 0; /* a point out of the contact whose rows have no value */
+        if (!(w[5 * j + 4] > 0)) {
+            const double *ft = y + m->inter_eadr[i] + m->inter_ns[i] + s * j; /* F_t,j: its first 3 states */
+            quiet = fr->form != RC_FF_INCREMENTAL || pslip[j] || (ft[0] == 0 && ft[1] == 0 && ft[2] == 0);
+        }
+        /* its rows against the interface's columns; the columns of its states
+         * (its force on the bodies, its own rates) are kept: a sticking point
+         * out of the contact still applies its state */
+        ap_mark(mk, pj, rows, quiet ? AP_DROP : AP_KEEP);
+        ap_mark(mk, pj + rows, P - rows, AP_KEEP);
+    }
+}
+
+int64_t rc_jac_active(const rc_model *m, const rc_data *d, double t, const double *y, unsigned char *keep)
+{
+    memset(keep, AP_NONE, (size_t)m->nnz);
+    /* drops first, then every slot an active element writes is kept */
+    for (int pass = AP_DROP; pass >= AP_KEEP; pass--) {
+        for (int i = 0; i < m->ninter; i++) {
+            const rc_jblock *jb = &m->jb_inter[i];
+            const int on = ap_inter_on(d, i);
+            if (jb->slot && (on ? AP_KEEP : AP_DROP) == pass) ap_mark(keep, jb->slot, (int64_t)jb->nrow * jb->ncol, (unsigned char)pass);
+            if (m->inter_npt[i] > 0) ap_points(m, d, i, t, y, keep, pass);
+        }
+        const rc_couplings *c = m->cpl;
+        for (int k = 0; c && k < c->n; k++) {
+            const rc_jblock *jb = &c->jb[k];
+            if (!jb->slot) continue;
+            int on = 1;
+            if (c->kind[k] == RC_CPL_CONTACT && d->cpl) {
+                on = 0;
+                for (int f = c->ct->fadr[k]; f < c->ct->fadr[k + 1]; f++) on |= d->cpl->fmode[f] == RC_FACE_PUSH;
+            }
+            if ((on ? AP_KEEP : AP_DROP) == pass) ap_mark(keep, jb->slot, (int64_t)jb->nrow * jb->ncol, (unsigned char)pass);
+        }
+    }
+    /* bodies, the imposed velocities' slots, the diagonal: kept */
+    for (int b = 0; b < m->nbody; b++)
+        if (m->jb_body[b].slot) ap_mark(keep, m->jb_body[b].slot, (int64_t)m->jb_body[b].nrow * m->jb_body[b].ncol, AP_KEEP);
+    if (m->imp) {
+        ap_mark(keep, m->imp->rqslot, 12 * (int64_t)m->imp->nr, AP_KEEP);
+        ap_mark(keep, m->imp->wslot, m->ny, AP_KEEP);
+    }
+    ap_mark(keep, m->jac_diag, m->ny, AP_KEEP);
+    int64_t n = 0;
+    for (int64_t k = 0; k < m->nnz; k++) {
+        keep[k] = keep[k] != AP_DROP;
+        n += keep[k];
+    }
+    return n;
 }

@@ -277,6 +277,18 @@ void rc_jnt_jacobian(const rc_model *m, const rc_jnt_work *w, double cj, const d
     }
 }
 
+void rc_jnt_keep(const rc_model *m, const rc_jnt_work *w, const unsigned char *keep, unsigned char *ext)
+{
+    /* what rc_jnt_jacobian writes: the model's values, the diagonal, the
+     * joints' blocks */
+    memset(ext, 0, (size_t)w->nnz);
+    for (int64_t k = 0; k < m->nnz; k++)
+        if (keep[k]) ext[w->mslot[k]] = 1;
+    for (int c = 0; c < w->n; c++) ext[w->diag[c]] = 1;
+    for (int k = 0; k < w->badr[m->jnt->n]; k++)
+        if (w->bslot[k] >= 0) ext[w->bslot[k]] = 1;
+}
+
 /* Derivatives of joint j's velocity rows along the direction z of the
  * state (z [ny], its body slices): dcv[r] = (d cv_r / dy) z. */
 static void cv_along(const rc_model *m, int j, const double *Y, const double *z, double *dcv)

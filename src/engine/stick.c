@@ -519,6 +519,24 @@ void rc_stk_jacobian(const rc_model *m, const rc_data *d, const rc_stk_work *w, 
     }
 }
 
+void rc_stk_keep(const rc_model *m, const rc_data *d, const rc_stk_work *w, const unsigned char *keep,
+                 unsigned char *ext)
+{
+    /* what rc_stk_jacobian writes: the model's values, the diagonal, the
+     * blocks of the acting constraints */
+    memset(ext, 0, (size_t)w->nnz);
+    for (int64_t k = 0; k < m->nnz; k++)
+        if (keep[k]) ext[w->mslot[k]] = 1;
+    for (int c = 0; c < w->n; c++) ext[w->diag[c]] = 1;
+    for (int q = 0; q < w->k.ns; q++) {
+        if (!act_of(m, d, w->k.inter[q])) continue;
+        int idx[SK_MAXB];
+        const int nb = block_idx(m, w, q, idx);
+        const int64_t *slot = w->bslot + (int64_t)q * SK_MAXB * SK_MAXB;
+        for (int k = 0; k < nb * nb; k++) ext[slot[k]] = 1;
+    }
+}
+
 /* ---- (re)start, roots, records ---------------------------------------- */
 int rc_stk_prepare(const rc_model *m, rc_data *d, rc_stk_work *w, double *Y)
 {

@@ -86,6 +86,10 @@ void rc_jnt_pattern(const rc_jnt_work *w, const int64_t **colptr, const int64_t 
  * values jf [m->nnz] of f. */
 void rc_jnt_jacobian(const rc_model *m, const rc_jnt_work *w, double cj, const double *Y, const double *Yp,
                      const double *jf, double *val);
+/* The slots of the extended pattern that can be nonzero: ext[rc_jnt_nnz]
+ * from the model's active slots keep[m->nnz] (rc_jac_active), the
+ * diagonal, and every joint's block (joints always act) (engine/joints.c). */
+void rc_jnt_keep(const rc_model *m, const rc_jnt_work *w, const unsigned char *keep, unsigned char *ext);
 /* Absolute tolerance of extra k (0 <= k < rc_jnt_nextra) in its unit. */
 double rc_jnt_atol(const rc_model *m, const rc_jnt_work *w, int k);
 /* IDA's id: 0 for Lambda (out of the error test), 1 for the others. */

@@ -329,6 +329,8 @@ typedef struct rc_data {
                             values are left 0); NULL: every column */
     long n_rhs, n_jac, n_root;
     long n_jac_refresh;  /* interface blocks refreshed after events */
+    long n_klu_sym;      /* KLU symbolic analyses of the Newton matrix so far (0: not counted) */
+    long newton_nnz;     /* entries of the largest Newton matrix so far (0: not counted) */
     int fail_inter;      /* element that produced a non-finite force, -1 */
     double fail_t;
 } rc_data;
@@ -494,6 +496,14 @@ int rc_cmp_i64(const void *a, const void *b);
  * row indices returned (malloc'd; NULL: out of memory), their count in *nnz. */
 int64_t *rc_csc_from_keys(int64_t *key, int64_t nk, int64_t n, int64_t *colptr, int64_t *nnz);
 void rc_jac_free(rc_model *m);
+/* The slots of the pattern that can be nonzero at (t, y) in the modes of d
+ * (engine/jacpattern.c): keep[nnz] 1, or 0 where every element writing
+ * the slot is inactive (an open interface, the contact points of an
+ * interface that is not closed, the rows of a point out of the contact
+ * whose law gives them no value, a contact coupling with no face pushing);
+ * returns the count kept. Uses d->pt_work as scratch (not during a root or
+ * Jacobian evaluation). */
+int64_t rc_jac_active(const rc_model *m, const rc_data *d, double t, const double *y, unsigned char *keep);
 
 /* ---- modes and events (events.c) ----------------------------------- */
 /* Consistent modes at (t, y) from scratch (start of run); may set history

@@ -61,6 +61,12 @@ void rc_stk_residual(const rc_model *m, const rc_data *d, const rc_stk_work *w, 
  * values jf [m->nnz]. */
 void rc_stk_jacobian(const rc_model *m, const rc_data *d, const rc_stk_work *w, double cj, const double *Y,
                      const double *Yp, const double *jf, double *val);
+/* The slots of the extended pattern that can be nonzero in d's modes:
+ * ext[rc_stk_nnz] from the model's active slots keep[m->nnz]
+ * (rc_jac_active), the diagonal, and the blocks of the constraints that act
+ * (engine/stick.c). */
+void rc_stk_keep(const rc_model *m, const rc_data *d, const rc_stk_work *w, const unsigned char *keep,
+                 unsigned char *ext);
 /* Absolute tolerance of extra k [N s]; IDA's id (0 for every Lambda). */
 double rc_stk_atol(const rc_stk_work *w, int k);
 void rc_stk_id(const rc_model *m, const rc_stk_work *w, double *id);

@@ -308,6 +308,7 @@ struct rc_output {
     int nimpact;          /* impacts table (rc_output_impacts), written at close */
     rc_impact *impact;
     int broken;           /* a netCDF write failed: the handle is abandoned */
+    long linalg[3];       /* rc_output_linalg: analyses, Newton entries, pattern entries; -1 unknown */
 };
 
 /* Set after a failed netCDF write: HDF5 cannot be shut down safely. */
@@ -872,6 +873,7 @@ rc_status rc_output_open(rc_output **out, const char *path, const rc_output_meta
     /* the handle: copies of what outlives the call */
     rc_output *o = calloc(1, sizeof *o);
     if (!o) RC_RAISE(err, RC_ENOMEM, "output: out of memory");
+    o->linalg[0] = o->linalg[1] = o->linalg[2] = -1;
     o->path = malloc(strlen(path) + 1);
     o->var_energy = calloc((size_t)meta->nenergy + 1, sizeof *o->var_energy);
     if (!o->path || !o->var_energy) {
@@ -1096,6 +1098,9 @@ static rc_status write_final(rc_output *o, const rc_stats *st, int complete, con
         if (rc == RC_OK) rc = put_double(o, "stats_t_end", st->t_end, err);
         if (rc == RC_OK) rc = put_double(o, "stats_wall_time", st->wall_time, err);
         if (rc == RC_OK) rc = put_double(o, "energy_balance_residual", st->energy_residual, err);
+        static const char *const lname[3] = {"stats_klu_analyses", "stats_newton_nnz", "stats_pattern_nnz"};
+        for (int k = 0; k < 3; k++)
+            if (rc == RC_OK && o->linalg[k] >= 0) rc = put_int64(o, lname[k], o->linalg[k], err);
     }
     char status[sizeof(((rc_error *)0)->msg) + 16]; /* "incomplete: " + an rc_error message */
     if (complete)
@@ -1168,6 +1173,14 @@ static rc_status write_impacts(rc_output *o, const int *varid, rc_error *err)
     free(ids);
     if (st != NC_NOERR) return nc_fail(err, __LINE__, __func__, o->path, st, "writing the impacts table");
     return RC_OK;
+}
+
+void rc_output_linalg(rc_output *o, long klu_analyses, long newton_nnz, long pattern_nnz)
+{
+    if (!o) return;
+    o->linalg[0] = klu_analyses;
+    o->linalg[1] = newton_nnz;
+    o->linalg[2] = pattern_nnz;
 }
 
 rc_status rc_output_close(rc_output *o, const rc_stats *st, int complete, const char *reason,

@@ -130,6 +130,10 @@ rc_status rc_output_event_values(rc_output *o, double t, const char *kind, const
 /* The impacts table (rc_impact rows), written at close; replaces an
  * earlier table. The rows are copied. */
 rc_status rc_output_impacts(rc_output *o, int n, const rc_impact *rows, rc_error *err);
+/* The linear algebra of the run, written with the statistics at close:
+ * KLU symbolic analyses, entries of the largest Newton matrix, entries of
+ * the model's whole Jacobian pattern (-1: not known, not written). */
+void rc_output_linalg(rc_output *o, long klu_analyses, long newton_nnz, long pattern_nnz);
 /* Write statistics and completion attributes, close, free. `complete` 0
  * marks the file incomplete with `reason`. o == NULL is a no-op. */
 rc_status rc_output_close(rc_output *o, const rc_stats *st, int complete, const char *reason,

@@ -21,7 +21,8 @@
  * all held at rest) are left out of CVODE's vector. Every callback scatters
  * CVODE's vector into a whole-state scratch (the constant states in place)
  * and gathers what it returns; the Newton matrix is the part of the
- * model's Jacobian pattern on the kept states (subpat.h).
+ * model's Jacobian pattern on the kept states, and of it the active part
+ * (activepart.h).
  */
 #include <cvode/cvode.h>
 #include <cvode/cvode_proj.h>
@@ -41,11 +42,11 @@
 #include "base/error.h"
 #include "engine/events.h"
 #include "model/model.h"
+#include "solver/activepart.h"
 #include "solver/impacts.h"
 #include "solver/nvfast.h"
 #include "solver/solver.h"
 #include "solver/integrator.h"
-#include "solver/subpat.h"
 
 /* A jump in ydot whose effect over one step, relative to the error weight,
  * exceeds this fraction triggers a restart after an event [-]. */
@@ -76,9 +77,6 @@ typedef struct run_ctx {
     int *kidx, *ridx;
     char *cst; /* [ny] 1: constant, left out (the engine skips their Jacobian columns) */
     int nq, *qoff; /* kept quaternions: their offsets in CVODE's vector */
-    rc_subpat sp;  /* the Newton matrix's pattern: the kept part of the model's */
-    int64_t *src;  /* [sp.nnz] each entry's slot in the model's pattern (from sp.map);
-                      NULL: the same pattern (nothing left out) */
     /* whole-state vectors [ny]: the driver's state, and scratch for the
      * callbacks (rhs state and rate, interpolants of order 0 and higher,
      * impact samples, restart test); the constant states hold their values
@@ -87,6 +85,7 @@ typedef struct run_ctx {
     int *old_mode, *old_branch, *old_track, *old_slip; /* the modes before a root return's events */
     int fresh; /* modes changed without a restart: the Jacobian is stale */
     rc_rootmap rm; /* the root functions CVODE is given (integrator.h) */
+    rc_actpart ap; /* the Newton matrix on the active part of the pattern (activepart.h) */
 } run_ctx;
 
 /* ---- CVODE callbacks ----------------------------------------------- */
@@ -143,24 +142,20 @@ static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleanty
      * then asks again (jok false) and gets a whole new Jacobian. */
     const int patched = c->jac_patched;
     c->jac_patched = 0;
-    if (!jok && patched) {
+    if (!jok) {
+        const double *yf = whole(c, y, c->ysc); /* the whole state (the part's slots depend on it) */
+        if (!patched) {
+            int st = rc_assemble_jac(m, c->d, t, yf, c->jsave);
+            if (st) return st;
+        }
         *jcur = SUNTRUE;
-    } else if (!jok) {
-        int st = rc_assemble_jac(m, c->d, t, whole(c, y, c->ysc), c->jsave);
-        if (st) return st;
-        *jcur = SUNTRUE;
+        /* new values, perhaps new active slots: the part follows */
+        if (rc_actpart_follow(&c->ap, m, c->d, t, yf, patched ? NULL : c->jsave)) return -1;
     } else {
         *jcur = SUNFALSE;
     }
-    /* the pattern was written once (cv_start): nothing else writes A */
-    double *a = SUNSparseMatrix_Data(A);
-    const double *js = c->jsave;
-    if (c->src) /* the kept entries only (a loop over the part, not the whole) */
-        for (int64_t k = 0; k < c->sp.nnz; k++) a[k] = -gamma * js[c->src[k]];
-    else
-        for (int64_t k = 0; k < c->sp.nnz; k++) a[k] = -gamma * js[k];
-    for (int r = 0; r < c->sp.n; r++) a[c->sp.diag[r]] += 1.0;
-    return 0;
+    /* nothing else writes A: its pattern is written when the part changes */
+    return rc_actpart_load(&c->ap, m, A, c->LS, -gamma, c->jsave, 1.0, 0) ? -1 : 0;
 }
 
 static int cb_root(realtype t, N_Vector y, realtype *g, void *ud)
@@ -405,21 +400,6 @@ static rc_status plan_states(run_ctx *c, const double *y0, rc_error *err)
     c->nq = 0;
     for (int b = 0; b < m->nbody; b++)
         if (m->body_yadr[b] >= 0 && c->ridx[m->body_yadr[b] + 3] >= 0) c->qoff[c->nq++] = c->ridx[m->body_yadr[b] + 3];
-    /* the Newton matrix on the kept states (a keep mask over the model's
-     * entries can be passed in the same call) */
-    const int sb = rc_subpat_build(&c->sp, m->ny, m->jac_colptr, m->jac_rowind, c->red ? c->ridx : NULL, NULL);
-    if (sb == -1) return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
-    if (sb) return RC_SET(err, RC_EINTERNAL, "the Newton matrix's pattern lacks a diagonal entry");
-    /* the inverse of sp.map, for the values (cb_linsys); none when the part
-     * is the whole pattern (map the identity) */
-    free(c->src);
-    c->src = NULL;
-    if (c->sp.nnz < m->nnz) {
-        if (!(c->src = malloc(((size_t)c->sp.nnz + 1) * sizeof(int64_t))))
-            return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
-        for (int64_t k = 0; k < m->nnz; k++)
-            if (c->sp.map[k] >= 0) c->src[c->sp.map[k]] = k;
-    }
     return RC_OK;
 }
 
@@ -438,17 +418,27 @@ static rc_status cv_start(void *self, rc_error *err)
     c->f1 = N_VNew_Serial(nr, c->ctx);
     c->ytn = N_VNew_Serial(nr, c->ctx);
     c->ysamp = N_VNew_Serial(nr, c->ctx);
-    c->A = SUNSparseMatrix(nr, nr, c->sp.nnz, CSC_MAT, c->ctx);
+    /* A has the whole pattern's capacity: every part of it fits */
+    c->A = SUNSparseMatrix(nr, nr, m->nnz, CSC_MAT, c->ctx);
     if (!c->y || !c->av || !c->f0 || !c->f1 || !c->ytn || !c->ysamp || !c->A)
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     /* optimised vector operations, inherited by CVODE's clones of y (nvfast.h) */
     N_Vector vecs[] = {c->y, c->av, c->f0, c->f1, c->ytn, c->ysamp};
     for (size_t k = 0; k < sizeof vecs / sizeof vecs[0]; k++) rc_nvector_fast(vecs[k]);
-    /* the fixed pattern, once; cb_linsys writes the values */
-    sunindextype *cp = SUNSparseMatrix_IndexPointers(c->A), *ri = SUNSparseMatrix_IndexValues(c->A);
-    for (int k = 0; k <= c->sp.n; k++) cp[k] = (sunindextype)c->sp.colptr[k];
-    for (int64_t k = 0; k < c->sp.nnz; k++) ri[k] = (sunindextype)c->sp.rowind[k];
+    /* every state kept: the model's pattern, once (it stays when the active
+     * part is off); cb_linsys writes the values */
+    if (!c->red) {
+        sunindextype *cp = SUNSparseMatrix_IndexPointers(c->A), *ri = SUNSparseMatrix_IndexValues(c->A);
+        for (int k = 0; k <= m->ny; k++) cp[k] = (sunindextype)m->jac_colptr[k];
+        for (int64_t k = 0; k < m->nnz; k++) ri[k] = (sunindextype)m->jac_rowind[k];
+    }
     if (!(c->LS = SUNLinSol_KLU(c->y, c->A, c->ctx))) return RC_SET(err, RC_ESOLVER, "SUNLinSol_KLU failed");
+    /* the Newton matrix: the kept states' rows and columns, of them the
+     * active part (activepart.h) */
+    const int ap = rc_actpart_open(&c->ap, m, c->LS, 1, NULL, NULL);
+    const int as = ap ? -1 : rc_actpart_set_states(&c->ap, c->red ? c->ridx : NULL);
+    if (as == -1) return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
+    if (as) return RC_SET(err, RC_EINTERNAL, "the Newton matrix's pattern lacks a diagonal entry");
     /* the constant states of the scratch vectors, once */
     for (int k = 0; k < m->ny; k++)
         if (c->ridx[k] < 0) c->ysc[k] = c->ytf[k] = c->ysf[k] = c->yfull[k];
@@ -570,7 +560,11 @@ static void cv_add_stats(void *self, rc_stats *s)
 {
     run_ctx *c = self;
     if (c->cv) add_stats(c->cv, s);
-    if (c->d) s->jac_evals = c->d->n_jac;
+    if (c->d) {
+        s->jac_evals = c->d->n_jac;
+        c->d->n_klu_sym = rc_actpart_analyses(&c->ap);
+        c->d->newton_nnz = (long)c->ap.nnz_max;
+    }
 }
 
 static long cv_steps(void *self)
@@ -645,8 +639,7 @@ static void cv_close(void *self)
     free(c->qoff);
     double *full[] = {c->yfull, c->ysc, c->fsc, c->ytf, c->dyf, c->ysf, c->fa, c->fb};
     for (size_t k = 0; k < sizeof full / sizeof full[0]; k++) free(full[k]);
-    rc_subpat_free(&c->sp);
-    free(c->src);
+    rc_actpart_close(&c->ap);
     rc_rootmap_free(&c->rm);
     SUNContext_Free(&c->ctx);
 }

@@ -869,6 +869,8 @@ done:
     if (tty) fprintf(stderr, "\n");
     if (out) {
         rc_error e2;
+        rc_output_linalg(out, d && d->n_klu_sym > 0 ? d->n_klu_sym : -1, d && d->newton_nnz > 0 ? d->newton_nnz : -1,
+                         (long)m->nnz);
         rc_status st2 = rc_output_close(out, &s, st == RC_OK, fail_reason ? fail_reason : err->msg, &e2);
         if (st == RC_OK && st2) {
             st = st2;

@@ -49,6 +49,7 @@
 #include "model/joint.h"
 #include "model/model.h"
 #include "model/stick.h"
+#include "solver/activepart.h"
 #include "solver/impacts.h"
 #include "solver/nvfast.h"
 #include "solver/integrator.h"
@@ -73,6 +74,8 @@ typedef struct ida_ctx {
     SUNLinearSolver LS;
     N_Vector yy, yp, ytn, ypt, ysamp, idv;
     rc_rootmap rm; /* the root functions IDA is given (integrator.h) */
+    rc_actpart ap; /* the Newton matrix on the active part of the pattern (activepart.h; with
+                      exact stick or joints on the extended pattern; both: whole) */
 } ida_ctx;
 
 /* ---- IDA callbacks -------------------------------------------------- */
@@ -121,6 +124,12 @@ static int cb_jac(realtype t, realtype cj, N_Vector yy, N_Vector yp, N_Vector rr
         rc_both_jacobian(m, c->d, c->bw, cj, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), c->jsave, a);
         return 0;
     }
+    if (c->sw && c->ap.on) {
+        /* the extended matrix on its active part (activepart.h) */
+        rc_stk_jacobian(m, c->d, c->sw, cj, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), c->jsave, c->ap.xval);
+        if (rc_actpart_follow(&c->ap, m, c->d, t, N_VGetArrayPointer(yy), c->jsave)) return -1;
+        return rc_actpart_load(&c->ap, m, A, c->LS, 1.0, c->ap.xval, 0.0, 1) ? -1 : 0;
+    }
     if (c->sw) {
         const int64_t *pc, *pr;
         rc_stk_pattern(c->sw, &pc, &pr);
@@ -130,11 +139,14 @@ static int cb_jac(realtype t, realtype cj, N_Vector yy, N_Vector yp, N_Vector rr
         return 0;
     }
     if (!c->jw) {
-        for (int k = 0; k <= m->ny; k++) cp[k] = (sunindextype)m->jac_colptr[k];
-        for (int64_t k = 0; k < m->nnz; k++) ri[k] = (sunindextype)m->jac_rowind[k];
-        for (int64_t k = 0; k < m->nnz; k++) a[k] = -c->jsave[k];
-        for (int r = 0; r < m->ny; r++) a[m->jac_diag[r]] += cj;
-        return 0;
+        /* IDA zeroed A (pattern included): cj I - J_f on the active part */
+        if (rc_actpart_follow(&c->ap, m, c->d, t, N_VGetArrayPointer(yy), c->jsave)) return -1;
+        return rc_actpart_load(&c->ap, m, A, c->LS, -1.0, c->jsave, cj, 1) ? -1 : 0;
+    }
+    if (c->ap.on) { /* joints: the extended matrix on its active part (activepart.h) */
+        rc_jnt_jacobian(m, c->jw, cj, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), c->jsave, c->ap.xval);
+        if (rc_actpart_follow(&c->ap, m, c->d, t, N_VGetArrayPointer(yy), c->jsave)) return -1;
+        return rc_actpart_load(&c->ap, m, A, c->LS, 1.0, c->ap.xval, 0.0, 1) ? -1 : 0;
     }
     const int64_t *pc, *pr;
     rc_jnt_pattern(c->jw, &pc, &pr);
@@ -335,6 +347,9 @@ static rc_status ida_open(void *self, const rc_model *m, rc_data *d, const rc_ru
     if (!c->yy || !c->yp || !c->ytn || !c->ypt || !c->ysamp || !c->idv || !c->jsave || !c->A)
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     if (!(c->LS = SUNLinSol_KLU(c->yy, c->A, c->ctx))) return RC_SET(err, RC_ESOLVER, "SUNLinSol_KLU failed");
+    /* joints and exact stick together: the whole extended pattern */
+    if (rc_actpart_open(&c->ap, m, c->LS, !c->bw, c->bw ? NULL : c->sw, c->bw ? NULL : c->jw))
+        return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     N_VConst(0.0, c->yy);
     *y = N_VGetArrayPointer(c->yy);
     *yp = N_VGetArrayPointer(c->yp);
@@ -446,6 +461,10 @@ static void ida_add_stats(void *self, rc_stats *s)
 {
     ida_ctx *c = self;
     if (c->ida) add_stats(c->ida, s);
+    if (c->d && c->ap.on) { /* counted on the active part only */
+        c->d->n_klu_sym = rc_actpart_analyses(&c->ap);
+        c->d->newton_nnz = (long)c->ap.nnz_max;
+    }
 }
 
 static long ida_steps(void *self)
@@ -520,6 +539,7 @@ static void ida_close(void *self)
         rc_stk_work_free(c->sw);
     }
     free(c->yrec);
+    rc_actpart_close(&c->ap);
     rc_rootmap_free(&c->rm);
     SUNContext_Free(&c->ctx);
 }

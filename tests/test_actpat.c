@@ -1,0 +1,187 @@
+/* The Newton matrix on the active part of the Jacobian pattern
+ * (solver/activepart.h, engine rc_jac_active):
+ * - at every new Jacobian of real runs (several decks, both backends) every
+ *   nonzero of the assembled Jacobian lies in a slot rc_jac_active keeps,
+ *   and slots are dropped; a mask with the closed interfaces' blocks
+ *   dropped (a wrong rule) fails the same check;
+ * - runs on the part and on the whole pattern give the same events and
+ *   final states (within a tolerance: the pivot order changes rounding). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "harness.h"
+#include "model/joint.h"
+#include "model/model.h"
+#include "model/stick.h"
+#include "solver/activepart.h"
+#include "solver/solver.h"
+#include "testutil.h"
+
+typedef struct probe_log {
+    long evals, checked, outside, outside_mut, mut_evals;
+    double kept, total;
+    unsigned char *keep;
+} probe_log;
+
+/* Every nonzero of jsave in a kept slot; the mutated mask (the blocks of the
+ * closed interfaces dropped, the diagonal kept) must miss some. */
+static void probe(void *ctx, const rc_model *m, const rc_data *d, double t, const double *y, const double *jsave)
+{
+    probe_log *p = ctx;
+    p->evals++;
+    if (!jsave) return; /* CVODE's Jacobian patched after an event: not a whole evaluation */
+    p->checked++;
+    p->kept += (double)rc_jac_active(m, d, t, y, p->keep);
+    p->total += (double)m->nnz;
+    for (int64_t k = 0; k < m->nnz; k++)
+        if (jsave[k] != 0.0 && !p->keep[k]) p->outside++;
+    int any = 0;
+    for (int i = 0; i < m->ninter; i++) {
+        if (d->inter_mode[i] != RC_MODE_CLOSED) continue;
+        const rc_jblock *jb = &m->jb_inter[i];
+        for (int k = 0; k < jb->nrow * jb->ncol; k++)
+            if (jb->slot[k] >= 0 && jb->rows[k / jb->ncol] != jb->cols[k % jb->ncol]) p->keep[jb->slot[k]] = 0;
+        any = 1;
+    }
+    if (!any) return;
+    p->mut_evals++;
+    for (int64_t k = 0; k < m->nnz; k++)
+        if (jsave[k] != 0.0 && !p->keep[k]) p->outside_mut++;
+}
+
+typedef struct evlog {
+    int n;
+    double t[4096];
+    char kind[4096][24], elem[4096][32];
+} evlog;
+
+static int on_event(void *user, double t, const char *kind, const char *element, const double values[3])
+{
+    (void)values;
+    evlog *l = user;
+    if (l->n < 4096) {
+        l->t[l->n] = t;
+        snprintf(l->kind[l->n], sizeof l->kind[0], "%s", kind);
+        snprintf(l->elem[l->n], sizeof l->elem[0], "%s", element);
+    }
+    l->n++;
+    return 0;
+}
+
+/* One run of m on s with the part on or off: events, final state, stats. */
+static rc_status run_once(const rc_model *m, const rc_solver *s, int on, evlog *l, double *yend, rc_stats *st)
+{
+    rc_error e;
+    rc_run_options o = {.y_end = yend, .on_event = on_event, .user = l};
+    rc_actpart_set_enabled(on);
+    rc_status r = s->run(m, &o, NULL, st, &e);
+    rc_actpart_set_enabled(1);
+    if (r) printf("    run failed: %s\n", e.msg);
+    return r;
+}
+
+/* The state's scale for the comparison: per body block the largest of its
+ * position, velocity, ... magnitudes over both runs, at least 1. */
+static double state_diff(const rc_model *m, const double *a, const double *b)
+{
+    double worst = 0;
+    for (int k = 0; k < m->ny; k++) {
+        const double sc = fmax(1.0, fmax(fabs(a[k]), fabs(b[k])));
+        worst = fmax(worst, fabs(a[k] - b[k]) / sc);
+    }
+    return worst;
+}
+
+typedef struct deck_case {
+    const char *path;
+    double tend;   /* shortened run [s] (0: the deck's) */
+    double tol_t;  /* event times, relative to the run's end */
+    double tol_y;  /* final state, relative (absolute below 1) */
+    int ida_only;  /* joints: the IDA path only */
+} deck_case;
+
+static const deck_case decks[] = {
+    {"validation/seg_box_slide_stop/case.rad", 0, 1e-6, 1e-6, 0},  /* meshed box landing and sliding to rest */
+    {"validation/stack10_rest/case.rad", 1.0, 1e-6, 1e-6, 0},      /* a column of ten spheres */
+    {"validation/cradle5/case.rad", 0, 1e-6, 1e-6, 0},             /* five interfaces, contacts passing on */
+    {"validation/frc_iform_compare/case.rad", 0, 1e-6, 1e-6, 0},   /* friction, two interfaces */
+    {"validation/t6_inacti_icor/case.rad", 0, 1e-6, 1e-6, 0},      /* Inacti 5 tracking */
+    {"validation/seg_seg_collide/case.rad", 0, 1e-6, 1e-6, 0},     /* two meshed boxes */
+    {"validation/cc_stop/case.rad", 0, 1e-6, 1e-6, 0},             /* a contact coupling */
+    {"validation/seg_box_incline/case.rad", 0, 1e-6, 1e-6, 0},     /* friction per point, sticking */
+    {"validation/seg_box_filter_slide/case.rad", 0, 1e-6, 1e-6, 0}, /* per point with a filter */
+    {"validation/seg_box_viscous/case.rad", 0, 1e-6, 1e-6, 0},     /* viscous friction per point */
+    {"validation/seg_sphere_floor/case.rad", 0, 1e-6, 1e-6, 0},    /* a sphere on a meshed floor */
+    {"validation/bounce_settle/case.rad", 0, 1e-6, 1e-6, 0},       /* settling (IDA: a settled contact's constraint) */
+    {"validation/stick_incline/case.rad", 0, 1e-6, 1e-6, 0},       /* exact stick (IDA: velocity constraints) */
+    {"validation/bounce_release/case.rad", 0, 1e-6, 1e-6, 0},      /* a settled contact's constraint released (IDA:
+                                                                   the kept pivots fail, analysed anew) */
+    {"validation/joint_slider_crank/case.rad", 0, 1e-6, 1e-6, 1}, /* joints (IDA: their extended pattern) */
+    {"validation/joint_stop_flap/case.rad", 0, 1e-6, 1e-6, 1},  /* a joint's stops */
+    {"validation/stick_joint_train/case.rad", 0, 1e-6, 1e-6, 1}, /* joints and exact stick: the whole pattern */
+};
+
+static void check_deck(const deck_case *dc, const rc_solver *s)
+{
+    rc_model *m = NULL;
+    rc_error e;
+    ENSURE(tu_load_compile(dc->path, &m, &e) == RC_OK);
+    if (!m) return;
+    if (dc->tend > 0) m->tend = dc->tend;
+    probe_log p;
+    memset(&p, 0, sizeof p);
+    p.keep = malloc((size_t)m->nnz + 1);
+    double *ya = calloc((size_t)m->ny, sizeof(double)), *yb = calloc((size_t)m->ny, sizeof(double));
+    evlog *la = calloc(1, sizeof *la), *lb = calloc(1, sizeof *lb);
+    ENSURE(p.keep && ya && yb && la && lb);
+    if (!p.keep || !ya || !yb || !la || !lb) goto out;
+    rc_stats sa, sb;
+    rc_actpart_set_probe(probe, &p);
+    rc_actpart_probe_outside();
+    ENSURE(run_once(m, s, 1, la, ya, &sa) == RC_OK);
+    const long xout = rc_actpart_probe_outside();
+    rc_actpart_set_probe(NULL, NULL);
+    ENSURE(run_once(m, s, 0, lb, yb, &sb) == RC_OK);
+    double dt = 0;
+    int same = la->n == lb->n;
+    for (int k = 0; same && k < la->n && k < 4096; k++) {
+        same = strcmp(la->kind[k], lb->kind[k]) == 0 && strcmp(la->elem[k], lb->elem[k]) == 0;
+        dt = fmax(dt, fabs(la->t[k] - lb->t[k]) / m->tend);
+    }
+    const double dy = state_diff(m, ya, yb);
+    printf("    %s, %s: %ld Jacobians checked, %.1f%% of the slots kept on average, %ld outside (mutated: %ld in %ld); "
+           "%d / %d events, times %.2g, state %.2g; steps %ld / %ld; extended matrix: %ld outside\n",
+           dc->path, s->name, p.checked, 100.0 * p.kept / fmax(p.total, 1), p.outside, p.outside_mut, p.mut_evals,
+           la->n, lb->n, dt, dy, sa.steps, sb.steps, xout);
+    /* IDA with a constraint set (joints, exact stick, contacts that can
+     * settle) runs on its whole extended pattern */
+    const int whole = s == &rc_solver_ida && m->jnt && m->jnt->n > 0 && rc_stk_slots(m) > 0;
+    ENSURE(whole ? p.checked == 0 : p.checked > 0);
+    ENSURE(p.outside == 0);
+    ENSURE(xout == 0);
+    ENSURE(p.mut_evals == 0 || p.outside_mut > 0);
+    ENSURE(same);
+    ENSURE(dt <= dc->tol_t);
+    ENSURE(dy <= dc->tol_y);
+out:
+    rc_actpart_set_probe(NULL, NULL);
+    free(p.keep);
+    free(ya);
+    free(yb);
+    free(la);
+    free(lb);
+    rc_model_free(m);
+}
+
+static void test_actpat_decks(void)
+{
+    for (size_t k = 0; k < sizeof decks / sizeof decks[0]; k++) {
+        if (!decks[k].ida_only) check_deck(&decks[k], &rc_solver_cvode);
+        check_deck(&decks[k], &rc_solver_ida);
+    }
+}
+
+void suite_actpat(void);
+void suite_actpat(void) { RUN_TEST(test_actpat_decks); }

@@ -32,6 +32,7 @@
 #include "engine/events.h"
 #include "model/model.h"
 #include "solver/impacts.h"
+#include "solver/klukeep.h"
 #include "solver/nvfast.h"
 #include "solver/solver.h"
 #include "solver/integrator.h"
@@ -333,6 +334,7 @@ static rc_status cv_open(void *self, const rc_model *m, rc_data *d, const rc_run
     for (int k = 0; k <= m->ny; k++) cp[k] = (sunindextype)m->jac_colptr[k];
     for (int64_t k = 0; k < m->nnz; k++) ri[k] = (sunindextype)m->jac_rowind[k];
     if (!(c->LS = SUNLinSol_KLU(c->y, c->A, c->ctx))) return RC_SET(err, RC_ESOLVER, "SUNLinSol_KLU failed");
+    rc_klu_keep_symbolic(c->LS); /* the pattern is fixed: one analysis for every restart */
     *y = N_VGetArrayPointer(c->y);
     *yp = NULL;
     *n = m->ny;

@@ -52,6 +52,7 @@
 #include "solver/impacts.h"
 #include "solver/nvfast.h"
 #include "solver/integrator.h"
+#include "solver/klukeep.h"
 #include "solver/solver.h"
 
 typedef struct ida_ctx {
@@ -338,6 +339,8 @@ static rc_status ida_open(void *self, const rc_model *m, rc_data *d, const rc_ru
     if (!c->yy || !c->yp || !c->ytn || !c->ypt || !c->ysamp || !c->idv || !c->jsave || !c->A)
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     if (!(c->LS = SUNLinSol_KLU(c->yy, c->A, c->ctx))) return RC_SET(err, RC_ESOLVER, "SUNLinSol_KLU failed");
+    /* the model's fixed pattern (no joints, no exact stick): one analysis for every restart */
+    if (!c->bw && !c->jw && !c->sw) rc_klu_keep_symbolic(c->LS);
     N_VConst(0.0, c->yy);
     *y = N_VGetArrayPointer(c->yy);
     *yp = N_VGetArrayPointer(c->yp);

@@ -12,6 +12,7 @@
 #include "harness.h"
 #include "model/model.h"
 #include "solver/integrator.h"
+#include "solver/klukeep.h"
 #include "solver/solver.h"
 #include "testutil.h"
 
@@ -190,10 +191,53 @@ static void test_restart_first_step(void)
     rc_model_free(m);
 }
 
+/* KLU's analysis kept across restarts (solver/klukeep.c): the same events
+ * and final state, bit for bit, as with a new analysis at every restart,
+ * on both backends (the stiff bounce: 60-80 restarts; a block on a floor
+ * with friction and a pusher). */
+static void test_klu_analysis_kept(void)
+{
+    const char *decks[] = {"validation/bounce_settle/case.rad", "validation/fric_slide_stop/case.rad"};
+    const rc_solver *sv[2] = {&rc_solver_cvode, &rc_solver_ida};
+    for (int q = 0; q < 2; q++) {
+        rc_model *m = NULL;
+        rc_error e;
+        ENSURE(tu_load_compile(decks[q], &m, &e) == RC_OK);
+        if (!m) continue;
+        for (int k = 0; k < 2; k++) {
+            double *ya = calloc((size_t)m->ny, sizeof(double)), *yb = calloc((size_t)m->ny, sizeof(double));
+            evlog *la = calloc(1, sizeof *la), *lb = calloc(1, sizeof *lb);
+            ENSURE(ya && yb && la && lb);
+            if (ya && yb && la && lb) {
+                rc_stats sa, sb;
+                rc_run_options oa = {.y_end = ya, .on_event = on_event, .user = la};
+                rc_run_options ob = {.y_end = yb, .on_event = on_event, .user = lb};
+                rc_klu_keep_set(1);
+                ENSURE(sv[k]->run(m, &oa, NULL, &sa, &e) == RC_OK);
+                rc_klu_keep_set(0);
+                ENSURE(sv[k]->run(m, &ob, NULL, &sb, &e) == RC_OK);
+                rc_klu_keep_set(1);
+                printf("    %s, %s: %d events, %ld restarts, %ld / %ld steps (kept / new analysis)\n", decks[q],
+                       sv[k]->name, la->n, sa.reinits, sa.steps, sb.steps);
+                ENSURE(la->n > 0 && la->n == lb->n && sa.reinits > 0 && sa.steps == sb.steps);
+                for (int j = 0; j < la->n && j < lb->n && j < MAXEV; j++)
+                    ENSURE(la->t[j] == lb->t[j] && memcmp(la->v[j], lb->v[j], sizeof la->v[j]) == 0);
+                ENSURE(memcmp(ya, yb, (size_t)m->ny * sizeof(double)) == 0);
+            }
+            free(ya);
+            free(yb);
+            free(la);
+            free(lb);
+        }
+        rc_model_free(m);
+    }
+}
+
 void suite_roots(void);
 void suite_roots(void)
 {
     RUN_TEST(test_roots_live_mixed);
     RUN_TEST(test_roots_live_hysteresis_inacti);
     RUN_TEST(test_restart_first_step);
+    RUN_TEST(test_klu_analysis_kept);
 }

@@ -26,7 +26,11 @@ static int setup_keep(SUNLinearSolver S, SUNMatrix A)
     return k->last_flag = SUNLS_SUCCESS;
 }
 
+static int keep_on = 1;
+
+void rc_klu_keep_set(int on) { keep_on = on; }
+
 void rc_klu_keep_symbolic(SUNLinearSolver S)
 {
-    if (S && S->ops) S->ops->setup = setup_keep;
+    if (keep_on && S && S->ops) S->ops->setup = setup_keep;
 }

@@ -10,5 +10,8 @@
  * integrator re-initialises it (every CVodeReInit / IDAReInit): only for a
  * matrix whose pattern never changes after the first setup. */
 void rc_klu_keep_symbolic(SUNLinearSolver S);
+/* Tests only: 0 leaves SUNDIALS' setup in place (a new analysis at every
+ * restart; default 1). */
+void rc_klu_keep_set(int on);
 
 #endif

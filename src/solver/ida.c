@@ -52,7 +52,6 @@
 #include "solver/impacts.h"
 #include "solver/nvfast.h"
 #include "solver/integrator.h"
-#include "solver/klukeep.h"
 #include "solver/solver.h"
 
 typedef struct ida_ctx {
@@ -339,8 +338,6 @@ static rc_status ida_open(void *self, const rc_model *m, rc_data *d, const rc_ru
     if (!c->yy || !c->yp || !c->ytn || !c->ypt || !c->ysamp || !c->idv || !c->jsave || !c->A)
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     if (!(c->LS = SUNLinSol_KLU(c->yy, c->A, c->ctx))) return RC_SET(err, RC_ESOLVER, "SUNLinSol_KLU failed");
-    /* the model's fixed pattern (no joints, no exact stick): one analysis for every restart */
-    if (!c->bw && !c->jw && !c->sw) rc_klu_keep_symbolic(c->LS);
     N_VConst(0.0, c->yy);
     *y = N_VGetArrayPointer(c->yy);
     *yp = N_VGetArrayPointer(c->yp);
@@ -456,7 +453,7 @@ static int ida_set_stop_time(void *self, double tstop) { return IDASetStopTime((
 
 /* Every restart (an event, a breakpoint) from the state with a consistent
  * Y' (docs/theory.md, "IDA backend"). */
-static int ida_restart(void *self, double t, int at_breakpoint)
+static int ida_restart(void *self, double t, int at_breakpoint, int onset)
 {
     ida_ctx *c = self;
     (void)at_breakpoint;
@@ -465,7 +462,7 @@ static int ida_restart(void *self, double t, int at_breakpoint)
     if (c->m->h0 <= 0) {
         double hu = 0.0;
         if (IDAGetLastStep(c->ida, &hu) != IDA_SUCCESS || !(hu > 0)) hu = c->h_restart;
-        c->h_restart = restart_step(c->m, t, hu);
+        c->h_restart = restart_step(c->m, t, hu, onset);
         const int flag = IDASetInitStep(c->ida, c->h_restart);
         if (flag < 0) return flag;
         c->own_h0 = c->h_restart > 0;

@@ -4,8 +4,8 @@
  * KLU module then analyses the matrix pattern again at the next setup
  * (ordering, block triangular form) before factorising it. The Newton
  * matrix of a backend with a fixed pattern has the same pattern at every
- * restart, and the analysis depends on the pattern alone, so its result
- * would be the same: the setup below skips it and factorises with the
+ * restart (the CVODE backend's: written once, cvode.c), and the analysis
+ * depends on the pattern alone, so its result would be the same: the setup below skips it and factorises with the
  * analysis kept (klu_factor, as SUNDIALS' first setup does: the same
  * numbers bit for bit). Every other setup is SUNDIALS' own.
  */

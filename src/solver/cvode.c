@@ -442,7 +442,7 @@ static int cv_set_root_dirs(void *self, int *dir)
 }
 static int cv_set_stop_time(void *self, double tstop) { return CVodeSetStopTime(((run_ctx *)self)->cv, tstop); }
 
-static int cv_restart(void *self, double t, int at_breakpoint, int onset)
+static int cv_restart(void *self, double t, int at_breakpoint)
 {
     run_ctx *c = self;
     if (at_breakpoint) c->jac_patched = 0; /* the imposed rows change: a whole new Jacobian */
@@ -451,7 +451,7 @@ static int cv_restart(void *self, double t, int at_breakpoint, int onset)
     if (c->m->h0 <= 0) {
         double hu = 0.0;
         if (CVodeGetLastStep(c->cv, &hu) != CV_SUCCESS || !(hu > 0)) hu = c->h_restart;
-        c->h_restart = restart_step(c->m, t, hu, onset);
+        c->h_restart = restart_step(c->m, t, hu);
         const int flag = CVodeSetInitStep(c->cv, c->h_restart);
         if (flag < 0) return flag;
         c->own_h0 = c->h_restart > 0;

@@ -154,16 +154,16 @@ int root_on_zero(const rc_model *m, const rc_data *d, double t, const double *y,
 }
 
 /* The first step after a restart (docs/theory.md 7.7): the last accepted
- * step h_last; when a contact closed at the event (onset), bounded by
- * rtol / omega_s over the contacts with scales (omega_s = v_s / p_s their
- * frequency: the first step moves a contact's state by rtol of its
- * scales); not below 100 ulps of t (CVODE's own lower bound on its
- * estimate). 0 (the integrator's own estimate) when neither is known. */
-double restart_step(const rc_model *m, double t, double h_last, int onset)
+ * step h_last, bounded by rtol / omega_s over the contacts with scales
+ * (omega_s = v_s / p_s their frequency: the first step moves a contact's
+ * state by rtol of its scales), and not below 100 ulps of t (CVODE's own
+ * lower bound on its estimate). 0 (the integrator's own estimate) when
+ * neither is known. */
+double restart_step(const rc_model *m, double t, double h_last)
 {
     double h = h_last > 0 && isfinite(h_last) ? h_last : INFINITY;
     const double frac = m->rtol; /* h omega_s = rtol */
-    for (int i = 0; onset && i < m->ninter; i++) {
+    for (int i = 0; i < m->ninter; i++) {
         const double p = m->inter_pscale[i], v = m->inter_vscale[i];
         if (isfinite(p) && isfinite(v) && p > 0 && v > 0) h = fmin(h, frac * p / v);
     }
@@ -727,7 +727,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             s.events++;
             if ((st = sink_event(&sink, t, "impvel_stop", "/IMPVEL", NULL, err))) goto done;
             bk->add_stats(self, &s);
-            BKCHECK(bk->restart(self, t, 1, 0), "ReInit");
+            BKCHECK(bk->restart(self, t, 1), "ReInit");
             s.reinits++;
             while (ibp < nbp && bp[ibp] <= t) ibp++;
             /* the next breakpoint, or the end time */
@@ -759,8 +759,6 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             rc_event ev[RC_MAX_EV];
             int jumped = 0;
             int nev = rc_events_apply(m, d, t, y, roots, ev, RC_MAX_EV, &jumped);
-            int onset = 0; /* a contact closing here: its first step by its scales (restart_step) */
-            for (int k = 0; k < nev && k < RC_MAX_EV; k++) onset |= !strcmp(ev[k].kind, "contact_close");
             int cpl_ev = 0; /* a contact coupling's faces changed modes */
             for (int k = 0; k < nev && k < RC_MAX_EV; k++) cpl_ev |= ev[k].inter < 0;
             s.events += nev;
@@ -822,7 +820,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             if (!restart) restart = root_on_zero(m, d, t, y, gbuf);
             if (restart) {
                 bk->add_stats(self, &s);
-                BKCHECK(bk->restart(self, t, 0, onset), "ReInit");
+                BKCHECK(bk->restart(self, t, 0), "ReInit");
                 s.reinits++;
             } else if (nev > 0 && bk->continued) {
                 bk->continued(self);

@@ -453,7 +453,7 @@ static int ida_set_stop_time(void *self, double tstop) { return IDASetStopTime((
 
 /* Every restart (an event, a breakpoint) from the state with a consistent
  * Y' (docs/theory.md, "IDA backend"). */
-static int ida_restart(void *self, double t, int at_breakpoint, int onset)
+static int ida_restart(void *self, double t, int at_breakpoint)
 {
     ida_ctx *c = self;
     (void)at_breakpoint;
@@ -462,7 +462,7 @@ static int ida_restart(void *self, double t, int at_breakpoint, int onset)
     if (c->m->h0 <= 0) {
         double hu = 0.0;
         if (IDAGetLastStep(c->ida, &hu) != IDA_SUCCESS || !(hu > 0)) hu = c->h_restart;
-        c->h_restart = restart_step(c->m, t, hu, onset);
+        c->h_restart = restart_step(c->m, t, hu);
         const int flag = IDASetInitStep(c->ida, c->h_restart);
         if (flag < 0) return flag;
         c->own_h0 = c->h_restart > 0;

@@ -95,9 +95,8 @@ int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double 
 int root_on_zero(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
 double wall_now(void); /* [s], monotonic */
 /* The first step [s] after a restart at t, h_last the last accepted step
- * before it (0: none), onset: a contact closed there; 0: let the
- * integrator estimate it. */
-double restart_step(const rc_model *m, double t, double h_last, int onset);
+ * before it (0: none); 0: let the integrator estimate it. */
+double restart_step(const rc_model *m, double t, double h_last);
 void frame_free(frame_buf *f);
 int frame_alloc(const rc_model *m, frame_buf *f);
 /* Fill and write one record at (t, y) (o NULL: only f->energy is filled). */
@@ -183,9 +182,8 @@ typedef struct rc_backend {
     int (*set_root_dirs)(void *self, int *dir);
     int (*set_stop_time)(void *self, double tstop);
     /* Restart at (t, y) (an event or, at_breakpoint, a time breakpoint):
-     * a consistent y' where the backend has one; onset: a contact closed
-     * at this event (its first step, restart_step). */
-    int (*restart)(void *self, double t, int at_breakpoint, int onset);
+     * a consistent y' where the backend has one. */
+    int (*restart)(void *self, double t, int at_breakpoint);
     void (*add_stats)(void *self, rc_stats *s); /* counters since the last restart (and the end) into s */
     long (*steps)(void *self);                   /* steps since the last restart, for the progress line */
     void (*failure)(void *self, int flag, double t, double tout, char *buf, size_t n); /* the failure message */

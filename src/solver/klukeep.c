@@ -5,9 +5,10 @@
  * (ordering, block triangular form) before factorising it. The Newton
  * matrix of a backend with a fixed pattern has the same pattern at every
  * restart (the CVODE backend's: written once, cvode.c), and the analysis
- * depends on the pattern alone, so its result would be the same: the setup below skips it and factorises with the
- * analysis kept (klu_factor, as SUNDIALS' first setup does: the same
- * numbers bit for bit). Every other setup is SUNDIALS' own.
+ * depends on the pattern alone, so its result would be the same: the
+ * setup below skips it and factorises with the analysis kept (klu_factor,
+ * as SUNDIALS' first setup does: the same numbers bit for bit). Every
+ * other setup is SUNDIALS' own.
  */
 #include <sunlinsol/sunlinsol_klu.h>
 #include <sunmatrix/sunmatrix_sparse.h>

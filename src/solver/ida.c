@@ -65,9 +65,6 @@ typedef struct ida_ctx {
     rc_stk_work *sw; /* exact stick: pattern of the extended matrix, scratch (NULL: none) */
     rc_both *bw;     /* joints and exact stick together (jw, sw then its parts) */
     volatile sig_atomic_t *stop;
-    double h_restart; /* the first step of the last restart [s] (restart_step) */
-    int own_h0;       /* IDA runs from a restart with h_restart, no step taken yet */
-    rc_stats lost;    /* the counters of a first attempt redone (ida_solve) */
     char msg[512];  /* IDA's last error message */
     /* the integrator and its vectors (ida_open, ida_start) */
     SUNContext ctx;
@@ -402,22 +399,7 @@ static rc_status ida_start(void *self, rc_error *err)
 static int ida_solve(void *self, double tout, double *t, int *one_step)
 {
     ida_ctx *c = self;
-    int flag = IDASolve(c->ida, tout, t, c->yy, c->yp, *one_step ? IDA_ONE_STEP : IDA_NORMAL);
-    /* the first step after a restart failed from h_restart (restart_step):
-     * once more from the same state with IDA's own estimate */
-    long nst = 0;
-    if ((flag == IDA_ERR_FAIL || flag == IDA_CONV_FAIL) && c->own_h0 && IDAGetNumSteps(c->ida, &nst) == IDA_SUCCESS &&
-        nst == 0) {
-        double t0 = 0.0;
-        add_stats(c->ida, &c->lost);
-        c->own_h0 = 0;
-        if ((flag = IDAGetCurrentTime(c->ida, &t0)) < 0 || (flag = IDASetInitStep(c->ida, 0.0)) < 0 ||
-            (flag = restart(c, c->ida, t0, c->yy, c->yp)) < 0)
-            return flag;
-        flag = IDASolve(c->ida, tout, t, c->yy, c->yp, *one_step ? IDA_ONE_STEP : IDA_NORMAL);
-    }
-    if (c->own_h0 && IDAGetNumSteps(c->ida, &nst) == IDA_SUCCESS && nst > 0) c->own_h0 = 0;
-    return flag;
+    return IDASolve(c->ida, tout, t, c->yy, c->yp, *one_step ? IDA_ONE_STEP : IDA_NORMAL);
 }
 
 static int ida_dky(void *self, double t, int k, int slot, const double **out)
@@ -457,16 +439,9 @@ static int ida_restart(void *self, double t, int at_breakpoint)
 {
     ida_ctx *c = self;
     (void)at_breakpoint;
-    /* the first step: /SOLVER H0 when given (set once, ida_start), else from
-     * the last accepted step and the contact scales (restart_step) */
-    if (c->m->h0 <= 0) {
-        double hu = 0.0;
-        if (IDAGetLastStep(c->ida, &hu) != IDA_SUCCESS || !(hu > 0)) hu = c->h_restart;
-        c->h_restart = restart_step(c->m, t, hu);
-        const int flag = IDASetInitStep(c->ida, c->h_restart);
-        if (flag < 0) return flag;
-        c->own_h0 = c->h_restart > 0;
-    }
+    /* the first step: IDA's own estimate (docs/theory.md 7.7: the CVODE
+     * backend's restart_step cost IDA steps, its step growing at most
+     * twofold per step), or /SOLVER H0 */
     return restart(c, c->ida, t, c->yy, c->yp);
 }
 
@@ -474,14 +449,6 @@ static void ida_add_stats(void *self, rc_stats *s)
 {
     ida_ctx *c = self;
     if (c->ida) add_stats(c->ida, s);
-    s->steps += c->lost.steps;
-    s->rhs_evals += c->lost.rhs_evals;
-    s->lin_setups += c->lost.lin_setups;
-    s->nonlin_iters += c->lost.nonlin_iters;
-    s->nonlin_fails += c->lost.nonlin_fails;
-    s->err_test_fails += c->lost.err_test_fails;
-    s->root_evals += c->lost.root_evals;
-    memset(&c->lost, 0, sizeof c->lost);
 }
 
 static long ida_steps(void *self)

@@ -3,6 +3,8 @@
  * and runs with the compact list against runs with every root function:
  * the same events (time, kind, element, values) and the same final state,
  * bit for bit, on both backends. */
+#include <float.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -153,9 +155,45 @@ static void test_roots_live_hysteresis_inacti(void)
     }
 }
 
+/* The first step after a restart (drive.c restart_step, docs/theory.md
+ * 7.7): min(h_last, rtol / omega_s), not below 100 ulps of t; the
+ * integrator's estimate (0) when neither is known; and a run of the stiff
+ * bounce (the deck whose first impact drew CVODE's "t + h = t") on both
+ * backends. */
+static void test_restart_first_step(void)
+{
+    rc_model *m = NULL;
+    rc_error e;
+    ENSURE(tu_load_compile("validation/bounce_settle/case.rad", &m, &e) == RC_OK);
+    if (!m) return;
+    ENSURE(m->h0 == 0.0 && m->ninter == 1);
+    const double p = m->inter_pscale[0], v = m->inter_vscale[0], hc = m->rtol * p / v;
+    printf("    p_s = %.3g m, v_s = %.3g m/s, rtol / omega_s = %.3g s\n", p, v, hc);
+    ENSURE(isfinite(hc) && hc > 0);
+    ENSURE(restart_step(m, 0.5, 1e-3) == hc);              /* a flight step: the contact bound */
+    ENSURE(restart_step(m, 0.5, 0.5 * hc) == 0.5 * hc);    /* a smaller last step is kept */
+    ENSURE(restart_step(m, 0.5, 0.0) == hc);               /* no step yet */
+    ENSURE(restart_step(m, 1e6, 1e-3) == 100.0 * DBL_EPSILON * 1e6); /* late: the floor moves t */
+    const double keep = m->inter_pscale[0];
+    m->inter_pscale[0] = NAN; /* no scales: the last step, or the integrator's estimate */
+    ENSURE(restart_step(m, 0.5, 1e-3) == 1e-3);
+    ENSURE(restart_step(m, 0.5, 0.0) == 0.0);
+    m->inter_pscale[0] = keep;
+    const rc_solver *sv[2] = {&rc_solver_cvode, &rc_solver_ida};
+    for (int k = 0; k < 2; k++) {
+        rc_stats s;
+        rc_run_options o = {.t_end_override = 1.2};
+        ENSURE(sv[k]->run(m, &o, NULL, &s, &e) == RC_OK);
+        printf("    %s: %ld steps, %ld events, %ld restarts\n", sv[k]->name, s.steps, s.events, s.reinits);
+        ENSURE(s.events >= 4 && s.reinits >= 2);
+    }
+    rc_model_free(m);
+}
+
 void suite_roots(void);
 void suite_roots(void)
 {
     RUN_TEST(test_roots_live_mixed);
     RUN_TEST(test_roots_live_hysteresis_inacti);
+    RUN_TEST(test_restart_first_step);
 }

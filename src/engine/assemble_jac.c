@@ -225,6 +225,10 @@ int rc_jac_refresh_inter(const rc_model *m, rc_data *d, int i, const double *y, 
     /* interfaces with contact points write their point rows and columns
      * outside the dense block (points_jac): assemble whole */
     if (!d->jcache || !d->jcache_ok || i < 0 || i >= m->ninter || m->inter_npt[i] > 0) return -1;
+    /* imposed velocities replace their rows and derive the W_imp row from
+     * every free acceleration after the elements (rc_imp_jac): a block
+     * added here would put the contact's entries back in those rows */
+    if (m->imp) return -1;
     const rc_jblock *jb = &m->jb_inter[i];
     const int nd = jb->nrow * jb->ncol;
     if (nd == 0) return 0;

@@ -401,7 +401,8 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
 /* After a mode change of interface i: replace its block in `val` (values
  * last assembled by rc_assemble_jac, with later refreshes) by its block at y
  * in d's present modes; the rest of `val` stays as it was. 0, or -1 when d
- * holds no blocks of `val` (assemble it whole then). */
+ * holds no blocks of `val`, or when the model has imposed velocities (their
+ * rows are rewritten after every element): assemble it whole then. */
 int rc_jac_refresh_inter(const rc_model *m, rc_data *d, int i, const double *y, double *val);
 /* The mass a unit normal impulse pair at contact point r->point drives at
  * the state y when the free bodies also turn (joints left out) [kg];

@@ -84,6 +84,9 @@ typedef struct run_ctx {
     double *yfull, *ysc, *fsc, *ytf, *dyf, *ysf, *fa, *fb;
     int *old_mode, *old_branch, *old_track, *old_slip; /* the modes before a root return's events */
     int fresh; /* modes changed without a restart: the Jacobian is stale */
+    double h_restart; /* the first step of the last restart [s] (restart_step) */
+    int own_h0;       /* the integrator runs from a restart with h_restart, no step taken yet */
+    rc_stats lost;    /* the counters of a first attempt redone (cv_solve) */
     rc_rootmap rm; /* the root functions CVODE is given (integrator.h) */
     rc_actpart ap; /* the Newton matrix on the active part of the pattern (activepart.h) */
 } run_ctx;
@@ -499,6 +502,21 @@ static int cv_solve(void *self, double tout, double *t, int *one_step)
         CVodeGetNumSteps(c->cv, &nst_before);
     }
     flag = CVode(c->cv, tout, c->y, t, *one_step ? CV_ONE_STEP : CV_NORMAL);
+    /* the first step after a restart failed from h_restart (a state whose
+     * error weights ask for a far smaller step than the contact scales,
+     * restart_step): once more from the same state with CVODE's estimate */
+    long nst = 0;
+    if ((flag == CV_ERR_FAILURE || flag == CV_CONV_FAILURE) && c->own_h0 &&
+        CVodeGetNumSteps(c->cv, &nst) == CV_SUCCESS && nst == 0) {
+        double t0 = 0.0;
+        add_stats(c->cv, &c->lost);
+        c->own_h0 = 0;
+        if ((flag = CVodeGetCurrentTime(c->cv, &t0)) < 0 || (flag = CVodeSetInitStep(c->cv, 0.0)) < 0 ||
+            (flag = CVodeReInit(c->cv, t0, c->y)) < 0)
+            return flag;
+        flag = CVode(c->cv, tout, c->y, t, *one_step ? CV_ONE_STEP : CV_NORMAL);
+    }
+    if (c->own_h0 && CVodeGetNumSteps(c->cv, &nst) == CV_SUCCESS && nst > 0) c->own_h0 = 0;
     scatter_state(c);
     /* right after a root return, a single-step call may only hand back the
      * rest of the step already taken: keep the forced setup until a new
@@ -550,6 +568,16 @@ static int cv_restart(void *self, double t, int at_breakpoint)
     run_ctx *c = self;
     if (at_breakpoint) c->jac_patched = 0; /* the imposed rows change: a whole new Jacobian */
     gather_state(c);
+    /* the first step: /SOLVER H0 when given (set once, cv_start), else from
+     * the last accepted step and the contact scales (restart_step) */
+    if (c->m->h0 <= 0) {
+        double hu = 0.0;
+        if (CVodeGetLastStep(c->cv, &hu) != CV_SUCCESS || !(hu > 0)) hu = c->h_restart;
+        c->h_restart = restart_step(c->m, t, hu);
+        const int flag = CVodeSetInitStep(c->cv, c->h_restart);
+        if (flag < 0) return flag;
+        c->own_h0 = c->h_restart > 0;
+    }
     return CVodeReInit(c->cv, t, c->y);
 }
 
@@ -560,6 +588,14 @@ static void cv_add_stats(void *self, rc_stats *s)
 {
     run_ctx *c = self;
     if (c->cv) add_stats(c->cv, s);
+    s->steps += c->lost.steps;
+    s->rhs_evals += c->lost.rhs_evals;
+    s->lin_setups += c->lost.lin_setups;
+    s->nonlin_iters += c->lost.nonlin_iters;
+    s->nonlin_fails += c->lost.nonlin_fails;
+    s->err_test_fails += c->lost.err_test_fails;
+    s->root_evals += c->lost.root_evals;
+    memset(&c->lost, 0, sizeof c->lost);
     if (c->d) {
         s->jac_evals = c->d->n_jac;
         c->d->n_klu_sym = rc_actpart_analyses(&c->ap);

@@ -153,6 +153,24 @@ int root_on_zero(const rc_model *m, const rc_data *d, double t, const double *y,
     return 0;
 }
 
+/* The first step after a restart (docs/theory.md 7.7): the last accepted
+ * step h_last, bounded by rtol / omega_s over the contacts with scales
+ * (omega_s = v_s / p_s their frequency: the first step moves a contact's
+ * state by rtol of its scales), and not below 100 ulps of t (CVODE's own
+ * lower bound on its estimate). 0 (the integrator's own estimate) when
+ * neither is known. */
+double restart_step(const rc_model *m, double t, double h_last)
+{
+    double h = h_last > 0 && isfinite(h_last) ? h_last : INFINITY;
+    const double frac = m->rtol; /* h omega_s = rtol */
+    for (int i = 0; i < m->ninter; i++) {
+        const double p = m->inter_pscale[i], v = m->inter_vscale[i];
+        if (isfinite(p) && isfinite(v) && p > 0 && v > 0) h = fmin(h, frac * p / v);
+    }
+    if (!isfinite(h)) return 0.0;
+    return fmax(h, 100.0 * DBL_EPSILON * fabs(t));
+}
+
 double wall_now(void)
 {
     struct timespec ts;

@@ -454,6 +454,9 @@ static int ida_restart(void *self, double t, int at_breakpoint)
 {
     ida_ctx *c = self;
     (void)at_breakpoint;
+    /* the first step: IDA's own estimate (docs/theory.md 7.7: the CVODE
+     * backend's restart_step cost IDA steps, its step growing at most
+     * twofold per step), or /SOLVER H0 */
     return restart(c, c->ida, t, c->yy, c->yp);
 }
 

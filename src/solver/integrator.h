@@ -47,6 +47,7 @@
 #define resolve_touching rc_bk_resolve_touching
 #define root_on_zero rc_bk_root_on_zero
 #define wall_now rc_bk_wall_now
+#define restart_step rc_bk_restart_step
 #define frame_free rc_bk_frame_free
 #define frame_alloc rc_bk_frame_alloc
 #define write_frame rc_bk_write_frame
@@ -93,6 +94,9 @@ int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double 
 /* 1 when a root function is exactly zero at (t, y); g is scratch. */
 int root_on_zero(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
 double wall_now(void); /* [s], monotonic */
+/* The first step [s] after a restart at t, h_last the last accepted step
+ * before it (0: none); 0: let the integrator estimate it. */
+double restart_step(const rc_model *m, double t, double h_last);
 void frame_free(frame_buf *f);
 int frame_alloc(const rc_model *m, frame_buf *f);
 /* Fill and write one record at (t, y) (o NULL: only f->energy is filled). */

@@ -25,10 +25,10 @@ import os
 import sys
 
 import numpy as np
-from netCDF4 import Dataset
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
+import boxrest  # noqa: E402
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
 
@@ -118,30 +118,9 @@ def deck_power():
     return d
 
 
-def quat_matrix(q):
-    w, x, y, z = q / np.linalg.norm(q)
-    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
-
-
-def corner_forces(fn, pos, quat, half, depth_of):
-    """Forces of the bottom corners by the rule F p_j / sum p, from the
-    corner depths depth_of(x) (> 0: past the surface)."""
-    Q = quat_matrix(quat)
-    cs = [np.array([sx * half[0], sy * half[1], sz * half[2]]) for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)]
-    dep = np.array([depth_of(pos + Q @ v) for v in cs])
-    pen = dep[dep > 0]
-    return fn * pen / pen.sum() if len(pen) else pen
-
-
 def main():
     # 1. resting
-    path = rcval.run_file(os.path.join(HERE, "case.rad"))
-    r = rcval.Result(path)
-    with Dataset(path) as nc:
-        quat = np.array(nc["body_quaternion"][:])
-        omega = np.array(nc["body_angular_velocity"][:])
+    r, quat, omega = boxrest.load(rcval.run_file(os.path.join(HERE, "case.rad")))
     # bodies in deck order: 5, 3, 4; interfaces 1, 2, 3
     top3 = lambda: r.pos[-1, 1, 2] + C3 / 2  # noqa: E731 (top face of the lower box, level)
     cases = (("table", 0, 0, M, (A / 2, B / 2, C / 2), lambda x: -x[2]),
@@ -153,11 +132,8 @@ def main():
         rcval.check(f"box_box.rest.{name}.force", e1 < 1e-6 and e2 < 1e-6,
                     f"interface {i + 1}: F = {fn:.9g} N, m g = {mload * G:.9g} N, rel. error {e1:.2e}; P = {p:.9e} m, "
                     f"m g / k = {mload * G / K:.9e} m, rel. error {e2:.2e} (< 1e-6)")
-        f = corner_forces(fn, r.pos[-1, b], quat[-1, b], half, depth)
-        e = float(np.max(np.abs(f - mload * G / 4)) / (mload * G / 4)) if len(f) == 4 else float("inf")
-        rcval.check(f"box_box.rest.{name}.corners", len(f) == 4 and e < 1e-5,
-                    f"{len(f)} corners past the surface below (expected 4), forces {', '.join(f'{x:.9g}' for x in f)} N, "
-                    f"m g / 4 = {mload * G / 4:.9g} N, max rel. error {e:.2e} (< 1e-5)")
+        f = boxrest.corner_forces(fn, r.pos[-1, b], quat[-1, b], boxrest.box_corners(half), depth)
+        boxrest.check_corners(f"box_box.rest.{name}.corners", f, mload, G, where="the surface below")
     v = float(np.max(np.linalg.norm(r.vel[-1], axis=1)) + np.max(np.linalg.norm(omega[-1], axis=1)) * A3)
     rcval.check("box_box.rest.at_rest", v < 1e-6, f"max |v| + |omega| a over the boxes = {v:.2e} m/s (< 1e-6)")
     rcval.check_ledger("box_box.rest.ledger", r, 1e-5)
@@ -195,13 +171,10 @@ def main():
     rcval.check_ledger("box_box.slide.ledger", r, 1e-5)
 
     # 2b. the power law: at rest P = (m g / K)^(1 / m1); step5 beyond v_d: mu_d g
-    path = rcval.run(deck_power(), name="power")
-    r = rcval.Result(path)
-    with Dataset(path) as nc:
-        quat = np.array(nc["body_quaternion"][:])
+    r, quat, _ = boxrest.load(rcval.run(deck_power(), name="power"))
     pref = (M * G / KP) ** (1 / M1)
     e1, e2 = rcval.rel(r.fn[-1, 0], M * G), rcval.rel(r.pen[-1, 0], pref)
-    f = corner_forces(r.fn[-1, 0], r.pos[-1, 0], quat[-1, 0], (A / 2, B / 2, C / 2), lambda x: -x[2])
+    f = boxrest.corner_forces(r.fn[-1, 0], r.pos[-1, 0], quat[-1, 0], boxrest.box_corners((A / 2, B / 2, C / 2)))
     e3 = float(np.max(np.abs(f - M * G / 4)) / (M * G / 4)) if len(f) == 4 else float("inf")
     rcval.check("box_box.power.rest", e1 < 1e-6 and e2 < 1e-6 and e3 < 1e-5,
                 f"/INTER/POWER at rest on the table: F = {r.fn[-1, 0]:.9g} N against m g, rel. error {e1:.2e}; "
@@ -219,11 +192,7 @@ def main():
     rcval.check_ledger("box_box.power.ledger", r, 1e-5)
 
     # 3. collision of two free boxes: momentum conserved
-    path = rcval.run(deck_collide(), name="collide")
-    r = rcval.Result(path)
-    with Dataset(path) as nc:
-        quat = np.array(nc["body_quaternion"][:])
-        omega = np.array(nc["body_angular_velocity"][:])
+    r, quat, omega = boxrest.load(rcval.run(deck_collide(), name="collide"))
     ms = (M3, M4)
     Js = (np.diag(jbox(M3, A3, B3, C3)), np.diag(jbox(M4, A4, B4, C4)))
     p = sum(ms[b] * r.vel[:, b] for b in range(2))
@@ -231,7 +200,7 @@ def main():
     for k in range(len(r.t)):
         tot = np.zeros(3)
         for b in range(2):
-            Q = quat_matrix(quat[k, b])
+            Q = boxrest.quat_matrix(quat[k, b])
             tot += ms[b] * np.cross(r.pos[k, b], r.vel[k, b]) + Q @ (Js[b] @ omega[k, b])
         L.append(tot)
     L = np.array(L)

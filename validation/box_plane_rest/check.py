@@ -25,11 +25,11 @@ import os
 import sys
 
 import numpy as np
-from netCDF4 import Dataset
 from scipy.integrate import quad
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
+import boxrest  # noqa: E402
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
 
@@ -120,11 +120,7 @@ def pivot_reference(th):
 
 
 def check_pivot():
-    path = rcval.run(deck_pivot(), name="pivot")
-    r = rcval.Result(path)
-    with Dataset(path) as nc:
-        quat = np.array(nc["body_quaternion"][:])
-        omega = np.array(nc["body_angular_velocity"][:])
+    r, quat, omega = boxrest.load(rcval.run(deck_pivot(), name="pivot"))
     th = TH0 + 2 * np.arctan2(quat[:, 0, 2], quat[:, 0, 0])  # rotation about y from the start
     land = np.where(th <= 0)[0]
     k1 = int(land[0]) if len(land) else len(th)
@@ -153,19 +149,8 @@ def check_pivot():
                 f"(< 1e-9)")
 
 
-def quat_matrix(q):
-    w, x, y, z = q / np.linalg.norm(q)
-    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
-
-
 def main():
-    path = rcval.run_file(os.path.join(HERE, "case.rad"))
-    r = rcval.Result(path)
-    with Dataset(path) as nc:
-        quat = np.array(nc["body_quaternion"][:])
-        omega = np.array(nc["body_angular_velocity"][:])
+    r, quat, omega = boxrest.load(rcval.run_file(os.path.join(HERE, "case.rad")))
     t1 = math.sqrt(2 * H0 / G)
     Rs = (np.eye(3), np.eye(3), rotation(TILT), np.eye(3))
     names = ("box_first", "plane_first", "tilted", "power")
@@ -186,17 +171,9 @@ def main():
                     f"P = {p:.9e} m, {'(M g / K)^(1/m1)' if b == 3 else 'M g / k'} = {pref:.9e} m, rel. error {e:.2e} "
                     f"(< 1e-6)")
         # corner depths from the final pose (body frame = global at t = 0)
-        Q = quat_matrix(quat[-1, b])
-        depths = np.array([-(r.pos[-1, b] + Q @ (Rs[b] @ np.array(v)))[2] for v in CORNERS])
-        pen = depths[depths > 0]
-        forces = fn * pen / pen.sum()
-        e = float(np.max(np.abs(forces - M * G / 4)) / (M * G / 4)) if len(pen) == 4 else float("inf")
-        rcval.check(f"box_plane_rest.{name}.corners", len(pen) == 4 and e < 1e-5,
-                    f"{len(pen)} corners past the floor (expected 4), forces {', '.join(f'{f:.9g}' for f in forces)} N, "
-                    f"M g / 4 = {M * G / 4:.9g} N, max rel. error {e:.2e} (< 1e-5)")
-        v = float(np.linalg.norm(r.vel[-1, b])) + float(np.linalg.norm(omega[-1, b])) * A
-        rcval.check(f"box_plane_rest.{name}.rest", v < 1e-6,
-                    f"|v| + |omega| a = {v:.2e} m/s at t = {r.t[-1]:g} s (< 1e-6: at rest)")
+        forces = boxrest.corner_forces(fn, r.pos[-1, b], quat[-1, b], [Rs[b] @ np.array(v) for v in CORNERS])
+        boxrest.check_corners(f"box_plane_rest.{name}.corners", forces, M, G, mg="M g")
+        boxrest.check_rest(f"box_plane_rest.{name}.rest", r.vel[-1, b], omega[-1, b], A, f"at t = {r.t[-1]:g} s")
     rcval.check_ledger("box_plane_rest.ledger", r, 1e-5)
     check_pivot()
     rcval.finish()

@@ -15,10 +15,9 @@ import math
 import os
 import sys
 
-import numpy as np
-
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
+import boxrest  # noqa: E402
 import rcval  # noqa: E402
 from deck import Deck, i10, line  # noqa: E402
 
@@ -51,21 +50,8 @@ def deck():
     return d
 
 
-def quat_rotate(q, v):
-    w, x, y, z = q / np.linalg.norm(q)
-    R = np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-                  [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-                  [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
-    return R @ v
-
-
 def main():
-    from netCDF4 import Dataset
-    path = rcval.run_file(os.path.join(HERE, "case.rad"))
-    r = rcval.Result(path)
-    with Dataset(path) as nc:
-        quat = np.array(nc["body_quaternion"][:])
-        omega = np.array(nc["body_angular_velocity"][:])
+    r, quat, omega = boxrest.load(rcval.run_file(os.path.join(HERE, "case.rad")))
     t1 = math.sqrt(2 * H0 / G)
     close = [t for t, k in zip(r.ev_t, r.ev_kind) if k == "contact_close"]
     e = rcval.rel(close[0], t1) if close else float("inf")
@@ -81,15 +67,9 @@ def main():
     e = rcval.rel(r.pen[-1, 0], p_ref)
     rcval.check("pw_seg_box_rest.penetration", e < 1e-6,
                 f"P = {r.pen[-1, 0]:.9e} m, (m g / K)^(1/m1) = {p_ref:.9e} m, rel. error {e:.2e} (< 1e-6)")
-    depths = np.array([-(r.pos[-1, 0] + quat_rotate(quat[-1, 0], np.array(v)))[2] for v in CORNERS])
-    pen = depths[depths > 0]
-    forces = fn * pen / pen.sum()
-    e = float(np.max(np.abs(forces - M * G / 4)) / (M * G / 4)) if len(pen) == 4 else float("inf")
-    rcval.check("pw_seg_box_rest.corners", len(pen) == 4 and e < 1e-5,
-                f"{len(pen)} corners past the floor (expected 4), forces {', '.join(f'{f:.9g}' for f in forces)} N, "
-                f"m g / 4 = {M * G / 4:.9g} N, max rel. error {e:.2e} (< 1e-5)")
-    v = float(np.linalg.norm(r.vel[-1, 0])) + float(np.linalg.norm(omega[-1, 0])) * A
-    rcval.check("pw_seg_box_rest.rest", v < 1e-6, f"|v| + |omega| a = {v:.2e} m/s at {r.t[-1]:g} s (< 1e-6: at rest)")
+    forces = boxrest.corner_forces(fn, r.pos[-1, 0], quat[-1, 0], CORNERS)
+    boxrest.check_corners("pw_seg_box_rest.corners", forces, M, G)
+    boxrest.check_rest("pw_seg_box_rest.rest", r.vel[-1, 0], omega[-1, 0], A, f"at {r.t[-1]:g} s")
     rcval.check_ledger("pw_seg_box_rest.ledger", r, 1e-5)
     rcval.finish()
 

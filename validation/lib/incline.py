@@ -1,4 +1,5 @@
-"""Geometry shared by the inclined-plane problems (fric_incline, frc_incline).
+"""Geometry shared by the inclined-plane problems (fric_incline, frc_incline,
+seg_sphere_incline, pw_seg_sphere_step5 ...).
 
 The plane is tilted by theta about a horizontal axis at azimuth phi, so the
 fall line is along no global axis; gravity is -z.
@@ -34,6 +35,18 @@ def add_strip_plate(d, s, u, s0, s1, ns, width, sid=10, node0=1000, title="incli
         segs.append(line(*[("i", v) for v in (2 * k + 1, a, b, cc)]))
         segs.append(line(*[("i", v) for v in (2 * k + 2, a, cc, dd)]))
     d.add(f"/SURF/SEG/{sid}", *segs, title=title)
+
+
+def add_sphere(d, c, m, r, locked):
+    """A solid sphere of mass m [kg] and radius r [m] centred at c [m]: node
+    1, body 1 (inertia 2/5 m r^2), /SURF/SPHERE 1 and node group 1; locked:
+    its rotations fixed by /BCS 1."""
+    d.nodes([(1, *c)])
+    d.rbody(1, 1, m, [0.4 * m * r * r] * 3, grnod=1, title=f"sphere {m:g} kg")
+    d.sphere(1, 1, c, r, title="sphere")
+    d.grnod(1, [1], title="sphere node")
+    if locked:
+        d.bcs(1, 1, "000 111", title="no rotation")
 
 
 def ramp_table(tr, n=501):

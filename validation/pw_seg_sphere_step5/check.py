@@ -45,12 +45,7 @@ def deck(tan_th, tend, v0=0.0, locked=True, fmax=None, dtout=0.01):
     c = tuple((R - p0) * n)
     d = Deck(f"sphere on a meshed plate tilted by atan({tan_th:g}), power law, step5 friction, rotations "
              f"{'locked' if locked else 'free'}{'' if fmax is None else f', f_max {fmax:g} N'}")
-    d.nodes([(1, *c)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, grnod=1, title="sphere 1 kg")
-    d.sphere(1, 1, c, R, title="sphere")
-    d.grnod(1, [1], title="sphere node")
-    if locked:
-        d.bcs(1, 1, "000 111", title="no rotation")
+    incline.add_sphere(d, c, M, R, locked)
     if v0:
         d.inivel(1, tuple(v0 * s), 1)
     incline.add_strip_plate(d, s, u, S0, S1, NS, W, title="meshed plate: fixed triangles")

@@ -43,12 +43,7 @@ def deck(tan_th, tend, locked=True, dtout=0.01):
     d = Deck(f"sphere on a meshed plate tilted by atan({tan_th:g}), Fric {MU:g}, rotations "
              f"{'locked' if locked else 'free'}")
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear load curve k = 1e6 N/m")
-    d.nodes([(1, *c)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, grnod=1, title="sphere 1 kg")
-    d.sphere(1, 1, c, R, title="sphere")
-    d.grnod(1, [1], title="sphere node")
-    if locked:
-        d.bcs(1, 1, "000 111", title="no rotation")
+    incline.add_sphere(d, c, M, R, locked)
     # the plate: strips of 0.1 m along s, each split into two triangles by a
     # diagonal that the sphere's path (u = 0) crosses; normals up the plate
     incline.add_strip_plate(d, s, u, S0, S1, NS, W)

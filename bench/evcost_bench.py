@@ -20,24 +20,18 @@ share of it is in the profiles that bench/README.md quotes).
 import argparse
 import math
 import os
-import resource
-import subprocess
 import sys
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(ROOT, "validation", "lib"))
-from deck import Deck, line  # noqa: E402
+from benchlib import A, B, C, G, K, M, MU, V0, ZETA, attrs, run_timed  # noqa: E402
+from deck import Deck  # noqa: E402
 import meshbox  # noqa: E402
 from netCDF4 import Dataset  # noqa: E402
 
-A, B, C = 0.2, 0.12, 0.08          # box [m]
-M = 15.0                           # [kg]
-K, ZETA, MU, G = 1.0e6, 0.7, 0.3, 9.81
 PLATE = (1.0, 0.6, 20)             # meshed floor: length, width [m], quadrilaterals along x
 GAP = 1.0e-3                       # landing: initial gap of the bottom face [m]
-V0 = 1.0                           # sliding: initial speed along x [m/s] (stops at V0 / (mu g) = 0.34 s)
 T_LAND, T_SLIDE = 0.1, 0.45        # simulated [s]
 W_TILT = 0.5                       # tilted landing: initial angular velocity about y [rad/s]
 
@@ -50,18 +44,7 @@ def deck(case, nx, ny):
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear load curve")
     meshbox.add_box(d, nx, ny, A, B, C, M, z0)
     if meshed:
-        L, W, n = PLATE
-        py = max(1, round(n * W / L))
-        pid, pn = {}, []
-        for i in range(n + 1):
-            for j in range(py + 1):
-                nid = 200000 + i * (py + 1) + j
-                pid[(i, j)] = nid
-                pn.append((nid, -0.3 + L * i / n, -W / 2 + W * j / py, 0.0))
-        d.nodes(pn)
-        ps = [line(*[("i", v) for v in (k + 1, pid[(i, j)], pid[(i + 1, j)], pid[(i + 1, j + 1)], pid[(i, j + 1)])])
-              for k, (i, j) in enumerate((i, j) for i in range(n) for j in range(py))]
-        d.add("/SURF/SEG/40", *ps, title="meshed floor (fixed)")
+        meshbox.add_floor(d, *PLATE, x0=-0.3)
     else:
         d.plane(40, (0, 0, 0), (0, 0, 1), title="floor")
     d.type6(1, 30, 40, 1, visc=2 * ZETA * math.sqrt(K * M), fric=MU, title="box on the floor")
@@ -76,17 +59,12 @@ def deck(case, nx, ny):
 
 
 def run(ricochet, path, out):
-    t0 = time.perf_counter()
-    c0 = resource.getrusage(resource.RUSAGE_CHILDREN)
-    p = subprocess.run([ricochet, "run", path, "-o", out, "-q"], capture_output=True, text=True)
-    wall = time.perf_counter() - t0
-    c1 = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (c1.ru_utime - c0.ru_utime) + (c1.ru_stime - c0.ru_stime)
+    p, wall, cpu = run_timed(ricochet, path, out)
     warn = p.stderr.count("WARNING")
     if p.returncode != 0:
         return dict(wall=wall, fail=p.stderr.strip().splitlines()[-1] if p.stderr.strip() else str(p.returncode))
     with Dataset(out) as nc:
-        a = {k: nc.getncattr(k) for k in nc.ncattrs()}
+        a = attrs(nc)
         nev = len(nc.dimensions["event"])
         kinds = {}
         if nev:

@@ -16,13 +16,12 @@ import argparse
 import math
 import os
 import random
-import subprocess
 import sys
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(ROOT, "validation", "lib"))
+from benchlib import attrs, run_timed  # noqa: E402
 from deck import Deck  # noqa: E402
 from netCDF4 import Dataset  # noqa: E402
 
@@ -72,13 +71,11 @@ def pile_deck(layers, side, tend, seed=1):
 
 
 def run(prog, path, out):
-    t0 = time.perf_counter()
-    p = subprocess.run([prog, "run", path, "-o", out, "-q"], capture_output=True, text=True)
-    wall = time.perf_counter() - t0
+    p, wall, _ = run_timed(prog, path, out)
     if p.returncode != 0:
         raise RuntimeError(p.stderr)
     with Dataset(out) as nc:
-        a = {k: nc.getncattr(k) for k in nc.ncattrs()}
+        a = attrs(nc)
         pos = nc["body_position"][-1, :, :].filled()
         nev = len(nc.dimensions["event"]) if "event" in nc.dimensions else -1
     return wall, a, pos, nev

@@ -15,36 +15,17 @@ a table (bench/README.md, "Segment surfaces").
 import argparse
 import math
 import os
-import subprocess
 import sys
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(ROOT, "validation", "lib"))
-from deck import Deck, i10, line  # noqa: E402
+from benchlib import A, B, C, G, K, M, MU, V0, ZETA, attrs, run_timed  # noqa: E402
+from deck import Deck  # noqa: E402
+import meshbox  # noqa: E402
 from netCDF4 import Dataset  # noqa: E402
 
-A, B, C = 0.2, 0.12, 0.08          # box [m]
-M = 15.0                           # [kg]
-K, ZETA, MU, G = 1.0e6, 0.7, 0.3, 9.81
 PLATE = (1.0, 0.6)                 # plate size [m], centred at the origin, z = 0
-V0 = 1.0                           # sliding: initial speed along x [m/s]
-
-
-def box_nodes(nx, ny, z0):
-    """Bottom grid nodes (ids 100000 + i (ny + 1) + j), top corners 90001..90004."""
-    nodes, bottom = [], {}
-    for i in range(nx + 1):
-        for j in range(ny + 1):
-            nid = 100000 + i * (ny + 1) + j
-            bottom[(i, j)] = nid
-            nodes.append((nid, -A / 2 + A * i / nx, -B / 2 + B * j / ny, z0))
-    top = {}
-    for k, (sx, sy) in enumerate(((-1, -1), (1, -1), (1, 1), (-1, 1))):
-        top[(sx, sy)] = 90001 + k
-        nodes.append((90001 + k, sx * A / 2, sy * B / 2, z0 + C))
-    return nodes, bottom, top
 
 
 def deck(meshed, slide, nx, ny, nplate, tend):
@@ -52,40 +33,11 @@ def deck(meshed, slide, nx, ny, nplate, tend):
     z0 = -p0
     d = Deck(f"box {'meshed' if meshed else 'analytic'} {'sliding' if slide else 'resting'}")
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear k")
-    n = (nx, ny) if meshed else (1, 1)
-    nodes, bottom, top = box_nodes(*n, z0)
-    d.nodes([(1, 0.0, 0.0, z0 + C / 2)] + nodes)
-    ids = [nd[0] for nd in nodes]
-    d.grnod(7, ids, title="box nodes")
-    Jx, Jy, Jz = M * (B * B + C * C) / 12, M * (A * A + C * C) / 12, M * (A * A + B * B) / 12
-    d.rbody(1, 1, M, (Jx, Jy, Jz), grnod=7, title="box")
-    bx, by = n
-    segs, sid = [], 1
-    # bottom: normals down (out of the box)
-    for i in range(bx):
-        for j in range(by):
-            q = (bottom[(i, j)], bottom[(i, j + 1)], bottom[(i + 1, j + 1)], bottom[(i + 1, j)])
-            segs.append(line(*[("i", v) for v in (sid,) + q]))
-            sid += 1
-    c00, c10, c11, c01 = bottom[(0, 0)], bottom[(bx, 0)], bottom[(bx, by)], bottom[(0, by)]
-    t00, t10, t11, t01 = top[(-1, -1)], top[(1, -1)], top[(1, 1)], top[(-1, 1)]
-    for q in ((t00, t10, t11, t01), (c00, c10, t10, t00), (c10, c11, t11, t10), (c11, c01, t01, t11),
-              (c01, c00, t00, t01)):
-        segs.append(line(*[("i", v) for v in (sid,) + q]))
-        sid += 1
-    d.add("/SURF/SEG/30", *segs, title="box faces")
+    # the analytic box: the same surface with its bottom face one quadrilateral
+    nbox = meshbox.add_box(d, *((nx, ny) if meshed else (1, 1)), A, B, C, M, z0)
+    nplate_seg = 0
     if meshed:
-        px, py = nplate, max(1, round(nplate * PLATE[1] / PLATE[0]))
-        pn, pid = [], {}
-        for i in range(px + 1):
-            for j in range(py + 1):
-                nid = 200000 + i * (py + 1) + j
-                pid[(i, j)] = nid
-                pn.append((nid, -PLATE[0] / 2 + PLATE[0] * i / px, -PLATE[1] / 2 + PLATE[1] * j / py, 0.0))
-        d.nodes(pn)
-        ps = [line(*[("i", v) for v in (k + 1, pid[(i, j)], pid[(i + 1, j)], pid[(i + 1, j + 1)], pid[(i, j + 1)])])
-              for k, (i, j) in enumerate((i, j) for i in range(px) for j in range(py))]
-        d.add("/SURF/SEG/40", *ps, title="plate (fixed)")
+        nplate_seg = meshbox.add_floor(d, PLATE[0], PLATE[1], nplate, x0=-PLATE[0] / 2, title="plate (fixed)")
     else:
         d.plane(40, (0, 0, 0), (0, 0, 1), title="floor")
     d.type6(1, 30, 40, 1, visc=2 * ZETA * math.sqrt(K * M), fric=MU, title="box on the floor")
@@ -93,17 +45,15 @@ def deck(meshed, slide, nx, ny, nplate, tend):
         d.inivel(1, (V0, 0.0, 0.0), 7)
     d.grav(1, "Z", -G)
     d.run(tend, tend / 20)
-    return d, (sid - 1, len(ps) if meshed else 0)
+    return d, (nbox, nplate_seg)
 
 
 def run(ricochet, path, out):
-    t0 = time.perf_counter()
-    p = subprocess.run([ricochet, "run", path, "-o", out, "-q"], capture_output=True, text=True)
-    wall = time.perf_counter() - t0
+    p, wall, _ = run_timed(ricochet, path, out)
     if p.returncode != 0:
         raise RuntimeError(p.stderr)
     with Dataset(out) as nc:
-        a = {k: nc.getncattr(k) for k in nc.ncattrs()}
+        a = attrs(nc)
         x = float(nc["body_position"][-1, 0, 0])
         v = float(nc["body_velocity"][-1, 0, 0])
     return wall, a, x, v

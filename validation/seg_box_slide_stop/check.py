@@ -30,7 +30,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 import rcval  # noqa: E402
-from deck import Deck, line  # noqa: E402
+from deck import Deck  # noqa: E402
 import meshbox  # noqa: E402
 
 A, B, C = 0.2, 0.12, 0.08        # box [m]
@@ -58,18 +58,7 @@ def deck(nx, ny, floor, step5=False, fmax=None, gx=0.0):
     if floor is None:
         d.plane(40, (0, 0, 0), (0, 0, 1), title="floor")
     else:
-        L, W, n = floor
-        py = max(1, round(n * W / L))
-        pid, pn = {}, []
-        for i in range(n + 1):
-            for j in range(py + 1):
-                nid = 200000 + i * (py + 1) + j
-                pid[(i, j)] = nid
-                pn.append((nid, -0.3 + L * i / n, -W / 2 + W * j / py, 0.0))
-        d.nodes(pn)
-        ps = [line(*[("i", v) for v in (k + 1, pid[(i, j)], pid[(i + 1, j)], pid[(i + 1, j + 1)], pid[(i, j + 1)])])
-              for k, (i, j) in enumerate((i, j) for i in range(n) for j in range(py))]
-        d.add("/SURF/SEG/40", *ps, title="meshed floor (fixed)")
+        meshbox.add_floor(d, *floor, x0=-0.3)
     if step5:
         d.power(1, 30, 40, k=K, m1=1.0, c=2 * ZETA * math.sqrt(K * M), m2=1.0, m3=0.0, irdf=2, mus=S5_MUS, vs=S5_VS,
                 mud=MU, vd=S5_VD, fmax=fmax, title="box on the floor, step5 friction")

@@ -23,7 +23,6 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 import boxincline  # noqa: E402
-import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
 
 G, K, ZETA, MU = 9.81, 1.0e6, 0.7, 0.3
@@ -59,17 +58,10 @@ def deck(tan_th, tend, dtout, card=False):
 
 
 def main():
-    # 1. sticking: tan(theta) = mu / 3 (case.rad)
-    r = rcval.Result(rcval.run_file(os.path.join(HERE, "case.rad")))
-    boxincline.check_stick("box_plane_incline", r, MU / 3, PHI, M, G, K, A, C)
-    # 2. sliding: tan(theta) = 0.5 > mu
-    r = rcval.Result(rcval.run(deck(0.5, 1.0, 0.01), name="slide"))
-    boxincline.check_slide("box_plane_incline", r, 0.5, PHI, M, G, MU)
-    # 3. sliding, friction from a /FRICTION card, the plane first on the card
-    r = rcval.Result(rcval.run(deck(0.5, 1.0, 0.01, card=True), name="card"))
-    boxincline.check_slide_variant("box_plane_incline.card", r, 0.5, PHI, G, MU,
-                                   f"/FRICTION Fric {MU:g}, plane first on the card")
-    rcval.finish()
+    # 1. sticking: tan(theta) = mu / 3 (case.rad); 2. sliding: tan(theta) =
+    # 0.5 > mu; 3. sliding, friction from a /FRICTION card, the plane first on the card
+    boxincline.run_checks("box_plane_incline", HERE, deck, "card", f"/FRICTION Fric {MU:g}, plane first on the card",
+                          PHI, M, G, K, MU, A, C)
 
 
 if __name__ == "__main__":

@@ -9,6 +9,7 @@ rests on it with its four bottom corners (nodes) in contact, linear contact
 stiffness k (the stick spring K_t = k), Coulomb mu.
 """
 import math
+import os
 
 import numpy as np
 
@@ -66,14 +67,21 @@ def check_stick(name, r, tan_th, phi_az, m, g, k, a, c):
                 f"(< 1e-6)")
 
 
-def _fit(r, xs):
-    """Quadratic fit of x_s over the steady slide t >= 0.2 s: the mask, the
-    acceleration and the largest residual. (The pitch after the slip onset
-    is damped by the damping per contact point, docs/theory.md 2.7; a
-    remaining pitch would enter the position divided by its frequency.)"""
+def _slide(r, tan_th, phi_az, g, mu):
+    """Quadratic fit of x_s over the steady slide t >= 0.2 s against
+    a = g (sin theta - mu cos theta): x_s, v_u, the mask, the fitted and
+    the reference acceleration, the largest fit residual, the relative error.
+    (The pitch after the slip onset is damped by the damping per contact
+    point, docs/theory.md 2.7; a remaining pitch would enter the position
+    divided by its frequency.)"""
+    th = math.atan(tan_th)
+    a_ref = g * (math.sin(th) - mu * math.cos(th))
+    xs, xu, vs, vu = along(r, tan_th, phi_az)
     sl = r.t >= 0.2
     cf = np.polyfit(r.t[sl], xs[sl], 2)
-    return sl, 2 * cf[0], np.max(np.abs(xs[sl] - np.polyval(cf, r.t[sl])))
+    a = 2 * cf[0]
+    resid = np.max(np.abs(xs[sl] - np.polyval(cf, r.t[sl])))
+    return xs, vu, sl, a, a_ref, resid, rcval.rel(a, a_ref)
 
 
 def check_slide(name, r, tan_th, phi_az, m, g, mu):
@@ -81,10 +89,7 @@ def check_slide(name, r, tan_th, phi_az, m, g, mu):
     no motion across the fall line, |F_t| / F_n = mu with every point
     slipping, the energy ledger."""
     th = math.atan(tan_th)
-    a_ref = g * (math.sin(th) - mu * math.cos(th))
-    xs, xu, vs, vu = along(r, tan_th, phi_az)
-    sl, a, resid = _fit(r, xs)
-    e = rcval.rel(a, a_ref)
+    xs, vu, sl, a, a_ref, resid, e = _slide(r, tan_th, phi_az, g, mu)
     rcval.check(f"{name}.slide.acceleration", e < 1e-5 and resid < 1e-5,
                 f"quadratic fit of x_s over [0.2, 1] s: a = {a:.9f} m/s^2, g (sin theta - mu cos theta) = {a_ref:.9f}, "
                 f"rel. error {e:.2e} (< 1e-5), max fit residual {resid:.1e} m (< 1e-5: the pitch, about 2e-4 rad, "
@@ -106,11 +111,7 @@ def check_slide(name, r, tan_th, phi_az, m, g, mu):
 def check_slide_variant(name, r, tan_th, phi_az, g, mu, what):
     """The sliding references of check_slide for a variant of the deck (name:
     the full check prefix; what: the variant, for the message)."""
-    th = math.atan(tan_th)
-    a_ref = g * (math.sin(th) - mu * math.cos(th))
-    xs, xu, vs, vu = along(r, tan_th, phi_az)
-    sl, a, resid = _fit(r, xs)
-    e = rcval.rel(a, a_ref)
+    xs, vu, sl, a, a_ref, resid, e = _slide(r, tan_th, phi_az, g, mu)
     rcval.check(f"{name}.acceleration", e < 1e-5 and resid < 1e-5,
                 f"{what}: a = {a:.9f} m/s^2, g (sin theta - mu cos theta) "
                 f"= {a_ref:.9f}, rel. error {e:.2e} (< 1e-5), max fit residual {resid:.1e} m (< 1e-5), {xs[-1]:.3f} m "
@@ -120,3 +121,17 @@ def check_slide_variant(name, r, tan_th, phi_az, g, mu, what):
     rcval.check(f"{name}.friction", e < 1e-9 and bool(np.all(r.slip[sl, 0] == 1)),
                 f"|F_t| / F_n over [0.2, 1] s: max |ratio - mu| = {e:.1e} (< 1e-9), every record slipping")
     rcval.check_ledger(f"{name}.ledger", r, 1e-5)
+
+
+def run_checks(name, here, deck, variant, what, phi_az, m, g, k, mu, a, c):
+    """Both problems' runs: 1. sticking at tan(theta) = mu / 3 (here/case.rad);
+    2. sliding at tan(theta) = 0.5 > mu, deck(0.5, 1.0, 0.01); 3. the same
+    with deck's flag variant set (checks name.variant; what: the variant,
+    for the messages)."""
+    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    check_stick(name, r, mu / 3, phi_az, m, g, k, a, c)
+    r = rcval.Result(rcval.run(deck(0.5, 1.0, 0.01), name="slide"))
+    check_slide(name, r, 0.5, phi_az, m, g, mu)
+    r = rcval.Result(rcval.run(deck(0.5, 1.0, 0.01, **{variant: True}), name=variant))
+    check_slide_variant(f"{name}.{variant}", r, 0.5, phi_az, g, mu, what)
+    rcval.finish()

@@ -24,7 +24,6 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 import boxincline  # noqa: E402
-import rcval  # noqa: E402
 from deck import Deck, i10, line  # noqa: E402
 
 G, K, ZETA, MU = 9.81, 1.0e6, 0.7, 0.3
@@ -77,18 +76,11 @@ def deck(tan_th, tend, dtout, plate=False):
 
 
 def main():
-    # 1. sticking: tan(theta) = mu / 3 (case.rad)
-    r = rcval.Result(rcval.run_file(os.path.join(HERE, "case.rad")))
-    boxincline.check_stick("seg_box_incline", r, MU / 3, PHI, M, G, K, A, C)
-    # 2. sliding: tan(theta) = 0.5 > mu
-    r = rcval.Result(rcval.run(deck(0.5, 1.0, 0.01), name="slide"))
-    boxincline.check_slide("seg_box_incline", r, 0.5, PHI, M, G, MU)
-    # 3. sliding on a meshed incline: the box's surface against a fixed
-    #    segment surface (node to segment both ways), the same references
-    r = rcval.Result(rcval.run(deck(0.5, 1.0, 0.01, plate=True), name="plate"))
-    boxincline.check_slide_variant("seg_box_incline.plate", r, 0.5, PHI, G, MU,
-                                   f"on a fixed /SURF/SEG plate of {NPLATE} quadrilaterals")
-    rcval.finish()
+    # 1. sticking: tan(theta) = mu / 3 (case.rad); 2. sliding: tan(theta) =
+    # 0.5 > mu; 3. sliding on a meshed incline: the box's surface against a
+    # fixed segment surface (node to segment both ways), the same references
+    boxincline.run_checks("seg_box_incline", HERE, deck, "plate", f"on a fixed /SURF/SEG plate of {NPLATE} quadrilaterals",
+                          PHI, M, G, K, MU, A, C)
 
 
 if __name__ == "__main__":

@@ -24,6 +24,15 @@ def run_timed(prog, path, out):
     return p, wall, (c1.ru_utime - c0.ru_utime) + (c1.ru_stime - c0.ru_stime)
 
 
+def run_ok(prog, path, out):
+    """run_timed, raising RuntimeError with ricochet's messages when the run
+    fails; the wall time [s]."""
+    p, wall, _ = run_timed(prog, path, out)
+    if p.returncode != 0:
+        raise RuntimeError(p.stderr)
+    return wall
+
+
 def attrs(nc):
     """The global attributes of an open results file (the solver's counters
     stats_*), as a dict."""

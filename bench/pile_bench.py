@@ -21,7 +21,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(ROOT, "validation", "lib"))
-from benchlib import attrs, run_timed  # noqa: E402
+from benchlib import attrs, run_ok  # noqa: E402
 from deck import Deck  # noqa: E402
 from netCDF4 import Dataset  # noqa: E402
 
@@ -71,9 +71,7 @@ def pile_deck(layers, side, tend, seed=1):
 
 
 def run(prog, path, out):
-    p, wall, _ = run_timed(prog, path, out)
-    if p.returncode != 0:
-        raise RuntimeError(p.stderr)
+    wall = run_ok(prog, path, out)
     with Dataset(out) as nc:
         a = attrs(nc)
         pos = nc["body_position"][-1, :, :].filled()

@@ -155,11 +155,7 @@ def main():
     Rs = (np.eye(3), np.eye(3), rotation(TILT), np.eye(3))
     names = ("box_first", "plane_first", "tilted", "power")
     for b, name in enumerate(names):
-        close = [t for t, k, el in zip(r.ev_t, r.ev_kind, r.ev_elem) if k == "contact_close" and el.endswith(f"/{b + 1}")]
-        e = rcval.rel(close[0], t1) if close else float("inf")
-        rcval.check(f"box_plane_rest.{name}.first_contact", e < 1e-8,
-                    f"first contact_close at {close[0] if close else float('nan'):.12g} s, sqrt(2 h0 / g) = {t1:.12g} s "
-                    f"(lowest corner), rel. error {e:.2e} (< 1e-8)")
+        boxrest.check_first_contact(f"box_plane_rest.{name}.first_contact", r, t1, b + 1, after=" (lowest corner)")
         fn = r.fn[-1, b]
         e = rcval.rel(fn, M * G)
         rcval.check(f"box_plane_rest.{name}.force", e < 1e-6,

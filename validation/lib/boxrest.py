@@ -1,7 +1,7 @@
-"""Boxes at rest on a surface, shared by the resting-box problems
-(box_plane_rest, seg_box_rest, pw_seg_box_rest, box_box): the bodies'
-orientations from the results file, and the corner forces at rest checked
-against m g / 4.
+"""Boxes dropped on and resting on a surface, shared by the resting-box
+problems (box_plane_rest, seg_box_rest, pw_seg_box_rest, box_box): the
+bodies' orientations from the results file, the first contact at the
+free-fall time, and the corner forces at rest checked against m g / 4.
 
 The forces of the bottom corners follow the rule F p_j / sum p (the total
 normal force F shared by the corners' depths p_j, docs/theory.md 2.7); at
@@ -21,6 +21,18 @@ def load(path):
         quat = np.array(nc["body_quaternion"][:])
         omega = np.array(nc["body_angular_velocity"][:])
     return r, quat, omega
+
+
+def check_first_contact(name, r, t1, iface=None, before="", after=""):
+    """The first contact_close event (of interface iface, or of any) at the
+    free-fall time t1 = sqrt(2 h0 / g) [s], rel. 1e-8; before, after: words
+    around the message's times."""
+    close = [t for t, k, el in zip(r.ev_t, r.ev_kind, r.ev_elem)
+             if k == "contact_close" and (iface is None or el.endswith(f"/{iface}"))]
+    e = rcval.rel(close[0], t1) if close else float("inf")
+    rcval.check(name, e < 1e-8,
+                f"{before}first contact_close at {close[0] if close else float('nan'):.12g} s, sqrt(2 h0 / g) = "
+                f"{t1:.12g} s{after}, rel. error {e:.2e} (< 1e-8)")
 
 
 def quat_matrix(q):

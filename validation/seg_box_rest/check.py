@@ -100,11 +100,7 @@ def main():
     r, quat, omega = boxrest.load(rcval.run_file(os.path.join(HERE, "case.rad")))
     t1 = math.sqrt(2 * H0 / G)
     for b, (name, m) in enumerate((("brick", M_BRICK), ("shell", M_SHELL), ("brick_on_box", M_BRICK))):
-        close = [t for t, k, el in zip(r.ev_t, r.ev_kind, r.ev_elem) if k == "contact_close" and el.endswith(f"/{b + 1}")]
-        e = rcval.rel(close[0], t1) if close else float("inf")
-        rcval.check(f"seg_box_rest.{name}.first_contact", e < 1e-8,
-                    f"first contact_close at {close[0] if close else float('nan'):.12g} s, sqrt(2 h0 / g) = {t1:.12g} s, "
-                    f"rel. error {e:.2e} (< 1e-8)")
+        boxrest.check_first_contact(f"seg_box_rest.{name}.first_contact", r, t1, b + 1)
         fn = r.fn[-1, b]
         e = rcval.rel(fn, m * G)
         rcval.check(f"seg_box_rest.{name}.force", e < 1e-6,
@@ -126,11 +122,8 @@ def main():
     # shared forces (not conservative, README) integrated as their power
     flat = TILT
     r = rcval.Result(rcval.run(deck(tilt=(0.04, -0.025)), name="tilted"))
-    close = [t for t, k, el in zip(r.ev_t, r.ev_kind, r.ev_elem) if k == "contact_close" and el.endswith("/1")]
-    e = rcval.rel(close[0], t1) if close else float("inf")
-    rcval.check("seg_box_rest.tilted.first_corner", e < 1e-8,
-                f"tilted brick box: first contact_close at {close[0] if close else float('nan'):.12g} s, sqrt(2 h0 / g) "
-                f"= {t1:.12g} s for the lowest corner, rel. error {e:.2e} (< 1e-8)")
+    boxrest.check_first_contact("seg_box_rest.tilted.first_corner", r, t1, 1, before="tilted brick box: ",
+                                after=" for the lowest corner")
     rcval.check_ledger("seg_box_rest.tilted.ledger", r, 1e-5)
     hy = float(r.energy["energy_hysteresis"].min())
     print(f"info: tilted brick box: lowest energy_hysteresis (work - law energy at P) {hy:.3e} J, kinetic energy "

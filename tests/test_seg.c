@@ -378,6 +378,59 @@ static void seg_jacobian_check(int box, int fric)
                     maxerr = fmax(maxerr, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
                     combos++;
                 }
+    /* stick/slip flips of a few points, each refreshed in place
+     * (rc_jac_refresh_points) into values assembled whole once: they equal
+     * a whole assembly in the new modes at the same state, flip after flip */
+    double rworst = 0.0, rmoved = 0.0;
+    int nref = 0;
+    if (fric) {
+        const int npt = m->inter_npt[0];
+        double *val = calloc((size_t)m->nnz + 1, sizeof(double)), *ref = calloc((size_t)m->nnz + 1, sizeof(double));
+        double *alt = calloc((size_t)m->nnz + 1, sizeof(double));
+        int *old = calloc((size_t)npt, sizeof(int)), *ps = d->pt_slip + m->inter_pbase[0];
+        d->inter_mode[0] = RC_MODE_CLOSED;
+        d->inter_branch[0] = RC_BR_LOAD;
+        d->inter_track[0] = 0;
+        for (int j = 0; j < npt; j++) ps[j] = j % 3 == 0;
+        ENSURE(rc_assemble_jac(m, d, 0.0, y, val) == 0);
+        unsigned seed = 12345u;
+        for (int it = 0; it < 60; it++) {
+            ENSURE(rc_assemble_jac(m, d, 0.0, y, alt) == 0); /* the old modes, whole */
+            memcpy(old, ps, (size_t)npt * sizeof(int));
+            for (int f = 0; f < 1 + it % 3; f++) {
+                seed = seed * 1103515245u + 12345u;
+                const int j = (int)((seed >> 8) % (unsigned)npt);
+                ps[j] = !ps[j];
+            }
+            int nflip = 0;
+            for (int j = 0; j < npt; j++) nflip += ps[j] != old[j];
+            const int st = rc_jac_refresh_points(m, d, 0, old, y, val);
+            ENSURE(st == (nflip > 0 && 2 * nflip >= npt ? -1 : 0));
+            ENSURE(rc_assemble_jac(m, d, 0.0, y, ref) == 0); /* the new modes, whole */
+            double scale = 0.0, diff = 0.0, mv = 0.0;
+            for (int64_t k = 0; k < m->nnz; k++) scale = fmax(scale, fabs(ref[k]));
+            for (int64_t k = 0; k < m->nnz; k++) {
+                diff = fmax(diff, fabs(val[k] - ref[k]) / scale);
+                mv = fmax(mv, fabs(alt[k] - ref[k]) / scale);
+            }
+            if (st) {
+                memcpy(val, ref, (size_t)m->nnz * sizeof(double));
+                continue;
+            }
+            rworst = fmax(rworst, diff);
+            if (nflip > 0) rmoved = fmax(rmoved, mv);
+            nref += nflip > 0;
+        }
+        free(old);
+        free(val);
+        free(ref);
+        free(alt);
+        printf("    refresh in place after %d flips of 1 to 3 of %d points: max |refreshed - whole| / max|J| = %.2e "
+               "(largest change of a value %.2e)\n", nref, npt, rworst, rmoved);
+        ENSURE(nref > 20);
+        ENSURE(rworst < 1e-12);
+        ENSURE(rmoved > 1e-6);
+    }
     const char *fname[5] = {"", " with friction per point", " with viscous friction per point",
                             " with filtered viscous friction per point", " with filtered incremental friction per point"};
     printf("    %s%s jacobian: P = %.3g m (%d nodes past the plate; -1: not counted), %d states, %lld nonzeros, %d mode combinations, max scaled |J - FD| "

@@ -249,6 +249,141 @@ int rc_jac_refresh_inter(const rc_model *m, rc_data *d, int i, const double *y, 
     return 0;
 }
 
+/* The pose carrying the orthotropy vector of interface i's friction, as
+ * type6 takes it: a's or b's (complex) states, else the ground's. */
+static const T *fric_pose(const rc_model *m, int i, const T *ya, const T *yb, T *yo)
+{
+    const int ob = m->inter_fr[i].obody;
+    if (ob >= 0 && ob == m->inter_ba[i]) return ya;
+    if (ob >= 0 && ob == m->inter_bb[i]) return yb;
+    for (int k = 0; k < RC_NB; k++) yo[k] = m->ground_y0[k];
+    return yo;
+}
+
+/* A slot of `val` written by a refresh: not in a held row (those stay 0). */
+static int live_slot(const rc_model *m, int64_t sl)
+{
+    return sl >= 0 && !(m->nheld > 0 && m->row_held[m->jac_rowind[sl]]);
+}
+
+int rc_jac_refresh_points(const rc_model *m, rc_data *d, int i, const int *old_slip, const double *y, double *val)
+{
+    if (!d->jcache || !d->jcache_ok || i < 0 || i >= m->ninter || m->inter_npt[i] == 0 || !old_slip) return -1;
+    if (m->imp) return -1; /* as rc_jac_refresh_inter */
+    /* the point modes act only while the interface is closed */
+    if (d->inter_mode[i] != RC_MODE_CLOSED || m->inter_fr[i].kind == RC_FK_NONE) return 0;
+    const int npt = m->inter_npt[i], ns = m->inter_ns[i], ps = m->inter_pst[i];
+    const int *pslip = d->pt_slip + m->inter_pbase[i];
+    int nflip = 0;
+    for (int j = 0; j < npt; j++) nflip += pslip[j] != old_slip[j];
+    if (nflip == 0) return 0;
+    /* each column below evaluates the shared part and two laws per flipped
+     * point; the whole assembly evaluates every point: no gain past half */
+    if (2 * nflip >= npt) return -1;
+    const rc_jblock *jb = &m->jb_inter[i];
+    const int ncol = jb->ncol, nrow = jb->nrow, nd = nrow * ncol;
+    const int64_t P = (int64_t)ps * ncol + (int64_t)ps * nrow + ps * ps, *slot = m->inter_ptslot[i];
+    const int ba = m->inter_ba[i], bb = m->inter_bb[i];
+    const int fa = ba >= 0 && m->body_yadr[ba] >= 0, fb = bb >= 0 && m->body_yadr[bb] >= 0;
+    const int na = fa ? RC_NB : 0, nb = fb ? RC_NB : 0, racc = (fa ? 6 : 0) + (fb ? 6 : 0);
+    const int widx = m->inter_fr[i].widx;
+    T *nc = rc_pair_nodes(m->inter_pair[i]) ? d->node_cache : NULL;
+    const double *yr = y + m->inter_eadr[i];
+    double delta[RC_JB_MAX];
+    memset(delta, 0, (size_t)nd * sizeof(double));
+    T ya[RC_NB], yb[RC_NB], ys[RC_NS_MAX], yo[RC_NB];
+    load_body(m, ba, y, ya);
+    load_body(m, bb, y, yb);
+    for (int k = 0; k < ns; k++) ys[k] = yr[k];
+    /* 1. the block's columns: the flipped points' forces on a and b and
+     * their friction power, new law less old law; their own rows anew */
+    for (int c = 0; c <= ncol; c++) {
+        const int real = c == ncol; /* last: unperturbed, for step 2 */
+        if (!real && d->jac_skip && d->jac_skip[jb->cols[c]]) continue;
+        T *yp = real ? NULL : c < na ? ya + c : c < na + nb ? yb + (c - na) : ys + (c - na - nb);
+        if (yp) *yp += I * RC_CSTEP;
+        if (nc) seg_fill_c(m, i, ya, yb, nc);
+        t6out_c r;
+        memset(&r, 0, sizeof r);
+        T kn, dfh;
+        const T fn = type6_normal_c(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], ya, yb, ys, nc, &r,
+                                    &kn, &dfh);
+        segctx_c cx;
+        segfric_ctx_c(m, i, fn, kn, r.off, ya, yb, nc, &cx);
+        const T *po = fric_pose(m, i, ya, yb, yo);
+        if (real) {
+            /* 2. the flipped points' columns anew (points_jac) */
+            for (int j = 0; j < npt; j++) {
+                if (pslip[j] == old_slip[j]) continue;
+                const int64_t *sb = slot + j * P + ps * ncol, *sc = sb + ps * nrow;
+                for (int k = 0; k < ps * nrow; k++)
+                    if (live_slot(m, sb[k])) val[sb[k]] = 0.0;
+                for (int k = 0; k < ps * ps; k++)
+                    if (live_slot(m, sc[k])) val[sc[k]] = 0.0;
+                T Fj[6];
+                for (int k = 0; k < ps; k++) Fj[k] = yr[ns + ps * j + k];
+                for (int k = 0; k < ps; k++) {
+                    Fj[k] += I * RC_CSTEP;
+                    segpt_c q;
+                    segfric_point_c(m, i, &cx, j, pslip[j], ya, yb, Fj, po, &q);
+                    Fj[k] = creal(Fj[k]);
+                    T acc[12] = {0}, fbv[3] = {-q.ft[0], -q.ft[1], -q.ft[2]};
+                    if (fa) apply_force_c(m, ba, ya, q.ft, q.x, acc);
+                    if (fb) apply_force_c(m, bb, yb, fbv, q.x, acc + 6);
+                    int e = 0;
+                    for (int a = 0; a < 12; a++) {
+                        if ((a < 6 && !fa) || (a >= 6 && !fb)) continue;
+                        if (live_slot(m, sb[e * ps + k])) val[sb[e * ps + k]] += cimag(acc[a]) / RC_CSTEP;
+                        e++;
+                    }
+                    const int64_t sw = sb[(racc + widx) * ps + k];
+                    if (live_slot(m, sw)) val[sw] += -cimag(dot_c(q.ft, q.vrel)) / RC_CSTEP;
+                    for (int e2 = 0; e2 < ps; e2++)
+                        if (live_slot(m, sc[e2 * ps + k])) val[sc[e2 * ps + k]] += cimag(q.dF[e2]) / RC_CSTEP;
+                }
+            }
+            break;
+        }
+        T acc[12] = {0}, dw = 0.0;
+        for (int j = 0; j < npt; j++) {
+            if (pslip[j] == old_slip[j]) continue;
+            T Fj[6];
+            for (int k = 0; k < ps; k++) Fj[k] = yr[ns + ps * j + k];
+            segpt_c qn, qo;
+            segfric_point_c(m, i, &cx, j, pslip[j], ya, yb, Fj, po, &qn);
+            segfric_point_c(m, i, &cx, j, old_slip[j], ya, yb, Fj, po, &qo);
+            T df[3], mdf[3];
+            for (int k = 0; k < 3; k++) {
+                df[k] = qn.ft[k] - qo.ft[k];
+                mdf[k] = -df[k];
+            }
+            /* the old and new points sit at the same place (the geometry) */
+            if (fa) apply_force_c(m, ba, ya, df, qn.x, acc);
+            if (fb) apply_force_c(m, bb, yb, mdf, qn.x, acc + 6);
+            dw += -(dot_c(qn.ft, qn.vrel) - dot_c(qo.ft, qo.vrel));
+            /* the point's rows against this column, anew */
+            for (int k = 0; k < ps; k++) {
+                const int64_t sl = slot[j * P + k * ncol + c];
+                if (live_slot(m, sl)) val[sl] = cimag(qn.dF[k]) / RC_CSTEP;
+            }
+        }
+        *yp = creal(*yp);
+        int rr = 0;
+        if (fa)
+            for (int k = 0; k < 6; k++, rr++) delta[rr * ncol + c] = cimag(acc[k]) / RC_CSTEP;
+        if (fb)
+            for (int k = 0; k < 6; k++, rr++) delta[rr * ncol + c] = cimag(acc[6 + k]) / RC_CSTEP;
+        delta[(racc + widx) * ncol + c] = cimag(dw) / RC_CSTEP;
+    }
+    double *old = d->jcache + d->jcache_off[i];
+    for (int k = 0; k < nd; k++) {
+        if (live_slot(m, jb->slot[k])) val[jb->slot[k]] += delta[k];
+        old[k] += delta[k];
+    }
+    d->n_jac_refresh++;
+    return 0;
+}
+
 #include "coupling_jac.inc"
 #include "imposed_jac.inc"
 

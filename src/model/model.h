@@ -404,6 +404,14 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
  * holds no blocks of `val`, or when the model has imposed velocities (their
  * rows are rewritten after every element): assemble it whole then. */
 int rc_jac_refresh_inter(const rc_model *m, rc_data *d, int i, const double *y, double *val);
+/* After stick/slip flips of some contact points of interface i (their modes
+ * before in old_slip[inter_npt], now in d->pt_slip), its modes otherwise
+ * unchanged: the flipped points' part of `val` at y in their new modes (their
+ * rows and columns anew, their forces' share of the interface block replaced
+ * by the change new law less old law); the rest stays. 0 (also when nothing
+ * acts), or -1: assemble whole (as rc_jac_refresh_inter, or when half the
+ * points or more flipped). */
+int rc_jac_refresh_points(const rc_model *m, rc_data *d, int i, const int *old_slip, const double *y, double *val);
 /* The mass a unit normal impulse pair at contact point r->point drives at
  * the state y when the free bodies also turn (joints left out) [kg];
  * INFINITY when nothing moves (scales.c). */

@@ -83,6 +83,7 @@ typedef struct run_ctx {
      * (0 in dyf, the derivatives) */
     double *yfull, *ysc, *fsc, *ytf, *dyf, *ysf, *fa, *fb;
     int *old_mode, *old_branch, *old_track, *old_slip; /* the modes before a root return's events */
+    int *old_pslip;                                    /* [npt] the contact points' modes before them */
     int fresh; /* modes changed without a restart: the Jacobian is stale */
     double h_restart; /* the first step of the last restart [s] (restart_step) */
     int own_h0;       /* the integrator runs from a restart with h_restart, no step taken yet */
@@ -365,12 +366,13 @@ static rc_status cv_open(void *self, const rc_model *m, rc_data *d, const rc_run
     c->old_branch = calloc((size_t)m->ninter + 1, sizeof(int));
     c->old_track = calloc((size_t)m->ninter + 1, sizeof(int));
     c->old_slip = calloc((size_t)m->ninter + 1, sizeof(int));
+    c->old_pslip = calloc((size_t)m->npt + 1, sizeof(int));
     c->jsave = calloc((size_t)m->nnz + 1, sizeof(double));
     c->kidx = malloc(ny * sizeof(int));
     c->ridx = malloc(ny * sizeof(int));
     c->qoff = malloc(((size_t)m->nbody + 1) * sizeof(int));
-    if (!c->old_mode || !c->old_branch || !c->old_track || !c->old_slip || !c->jsave || !c->kidx || !c->ridx ||
-        !c->qoff)
+    if (!c->old_mode || !c->old_branch || !c->old_track || !c->old_slip || !c->old_pslip || !c->jsave || !c->kidx ||
+        !c->ridx || !c->qoff)
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     /* the driver fills the whole state; CVODE's vectors follow in cv_start,
      * once the initial state says which states are constant */
@@ -626,6 +628,7 @@ static void cv_before_events(void *self)
     memcpy(c->old_branch, c->d->inter_branch, ni);
     memcpy(c->old_track, c->d->inter_track, ni);
     memcpy(c->old_slip, c->d->inter_slip, ni);
+    if (c->m->npt > 0) memcpy(c->old_pslip, c->d->pt_slip, (size_t)c->m->npt * sizeof(int));
 }
 
 /* The Jacobian blocks of the interfaces whose modes changed, refreshed at
@@ -637,12 +640,25 @@ static int cv_after_events(void *self, double t, const double *y, int cpl_ev, in
     const rc_model *m = c->m;
     rc_data *d = c->d;
     int ok = 1, changed = 0;
-    for (int i = 0; ok && i < m->ninter; i++)
-        if (d->inter_mode[i] != c->old_mode[i] || d->inter_branch[i] != c->old_branch[i] ||
-            d->inter_track[i] != c->old_track[i] || d->inter_slip[i] != c->old_slip[i]) {
+    for (int i = 0; ok && i < m->ninter; i++) {
+        const int npt = m->inter_npt[i], *op = c->old_pslip + m->inter_pbase[i];
+        const int same = d->inter_mode[i] == c->old_mode[i] && d->inter_branch[i] == c->old_branch[i] &&
+                         d->inter_track[i] == c->old_track[i];
+        int pflip = 0;
+        for (int j = 0; j < npt && !pflip; j++) pflip = d->pt_slip[m->inter_pbase[i] + j] != op[j];
+        if (npt > 0 && same && !m->inter_fr[i].exact) {
+            /* contact points: their interface-level slip flag is only a
+             * report (the points carry their own modes); the points that
+             * flipped are refreshed (rc_jac_refresh_points) */
+            if (pflip) {
+                changed = 1;
+                ok = rc_jac_refresh_points(m, d, i, op, y, c->jsave) == 0;
+            }
+        } else if (!same || d->inter_slip[i] != c->old_slip[i] || pflip) {
             changed = 1;
             ok = rc_jac_refresh_inter(m, d, i, y, c->jsave) == 0;
         }
+    }
     /* coupling blocks are not refreshed in place: a whole new Jacobian when
      * a contact coupling changed modes */
     c->jac_patched = ok && changed && !cpl_ev;
@@ -667,6 +683,7 @@ static void cv_close(void *self)
     free(c->old_branch);
     free(c->old_track);
     free(c->old_slip);
+    free(c->old_pslip);
     free(c->jsave);
     if (c->d) c->d->jac_skip = NULL;
     free(c->cst);

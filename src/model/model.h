@@ -526,6 +526,11 @@ void rc_jac_free(rc_model *m);
  * returns the count kept. Uses d->pt_work as scratch (not during a root or
  * Jacobian evaluation). */
 int64_t rc_jac_active(const rc_model *m, const rc_data *d, double t, const double *y, unsigned char *keep);
+/* What rc_jac_active's result depends on when that is each interface's
+ * on/off state alone (no contact points, no contact couplings): those
+ * states into key[ninter] (1 on) and 1; otherwise 0 (key untouched). Equal
+ * keys give equal results. */
+int rc_jac_active_key(const rc_model *m, const rc_data *d, unsigned char *key);
 
 /* ---- modes and events (events.c) ----------------------------------- */
 /* Consistent modes at (t, y) from scratch (start of run); may set history

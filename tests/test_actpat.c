@@ -184,4 +184,60 @@ static void test_actpat_decks(void)
 }
 
 void suite_actpat(void);
-void suite_actpat(void) { RUN_TEST(test_actpat_decks); }
+
+/* The key of the active slots (rc_jac_active_key): the same key gives the
+ * same slots (a closed and a released contact are both on), another key
+ * other slots; models whose slots follow more than the interfaces' on/off
+ * states (contact points) have none. */
+static void test_actpat_key(void)
+{
+    rc_error e;
+    rc_model *m = NULL;
+    ENSURE(tu_load_compile("validation/cradle5/case.rad", &m, &e) == RC_OK && m != NULL);
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    unsigned char *k1 = calloc((size_t)m->ninter + 1, 1), *k2 = calloc((size_t)m->ninter + 1, 1);
+    unsigned char *a1 = calloc((size_t)m->nnz + 1, 1), *a2 = calloc((size_t)m->nnz + 1, 1);
+    ENSURE(d && y && k1 && k2 && a1 && a2 && m->ninter >= 2);
+    if (!d || !y || !k1 || !k2 || !a1 || !a2) goto out;
+    rc_initial_state(m, y);
+    rc_modes_init(m, d, 0.0, y);
+    for (int i = 0; i < m->ninter; i++) d->inter_mode[i] = RC_MODE_CLOSED;
+    ENSURE(rc_jac_active_key(m, d, k1) == 1);
+    rc_jac_active(m, d, 0.0, y, a1);
+    d->inter_mode[0] = RC_MODE_RELEASED;
+    ENSURE(rc_jac_active_key(m, d, k2) == 1 && memcmp(k1, k2, (size_t)m->ninter) == 0);
+    rc_jac_active(m, d, 0.0, y, a2);
+    ENSURE(memcmp(a1, a2, (size_t)m->nnz) == 0);
+    d->inter_mode[0] = RC_MODE_OPEN;
+    ENSURE(rc_jac_active_key(m, d, k2) == 1 && memcmp(k1, k2, (size_t)m->ninter) != 0);
+    rc_jac_active(m, d, 0.0, y, a2);
+    ENSURE(memcmp(a1, a2, (size_t)m->nnz) != 0);
+out:
+    free(y);
+    free(k1);
+    free(k2);
+    free(a1);
+    free(a2);
+    rc_data_free(d);
+    rc_model_free(m);
+    /* contact points: no key */
+    m = NULL;
+    ENSURE(tu_load_compile("validation/seg_box_slide_stop/case.rad", &m, &e) == RC_OK && m != NULL);
+    if (!m) return;
+    ENSURE(m->npt > 0);
+    d = rc_data_new(m);
+    unsigned char *k = calloc((size_t)m->ninter + 1, 1);
+    ENSURE(d && k);
+    if (d && k) ENSURE(rc_jac_active_key(m, d, k) == 0);
+    free(k);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
+void suite_actpat(void)
+{
+    RUN_TEST(test_actpat_decks);
+    RUN_TEST(test_actpat_key);
+}

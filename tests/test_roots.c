@@ -190,10 +190,65 @@ static void test_restart_first_step(void)
     rc_model_free(m);
 }
 
+/* The reports the root functions keep for the impact samples
+ * (rc_report_cache_*): the same as a fresh evaluation, bit for bit, and
+ * refused at another state, in other modes, or when not kept. */
+static void test_report_cache(void)
+{
+    rc_error e;
+    rc_model *m = NULL;
+    ENSURE(tu_load_compile("validation/cradle5/case.rad", &m, &e) == RC_OK && m != NULL);
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    double *g = calloc((size_t)rc_root_count(m) + 1, sizeof(double));
+    ENSURE(d && y && g && m->ninter >= 2);
+    if (!d || !y || !g) goto out;
+    rc_initial_state(m, y);
+    rc_modes_init(m, d, 0.0, y);
+    for (int i = 0; i < m->ninter; i++) d->inter_mode[i] = RC_MODE_CLOSED; /* every kernel evaluated */
+    /* not kept unless the driver asks */
+    d->repc->on = 0;
+    rc_assemble_roots(m, d, 0.0, y, g);
+    ENSURE(!rc_report_cache_state(m, d, y));
+    d->repc->on = 1;
+    rc_assemble_roots(m, d, 0.0, y, g);
+    ENSURE(rc_report_cache_state(m, d, y));
+    int hits = 0;
+    for (int i = 0; i < m->ninter; i++) {
+        rc_inter_report a, b;
+        memset(&a, 0, sizeof a);
+        memset(&b, 0, sizeof b);
+        if (!rc_report_cache_get(d, i, &a)) continue;
+        rc_inter_report_eval_d(m, d, i, 0.0, y, &b);
+        ENSURE(memcmp(&a, &b, sizeof a) == 0);
+        hits++;
+    }
+    ENSURE(hits == m->ninter);
+    /* another mode of interface 0: its report is refused, the others kept */
+    rc_inter_report r;
+    d->inter_mode[0] = RC_MODE_OPEN;
+    ENSURE(!rc_report_cache_get(d, 0, &r) && rc_report_cache_get(d, 1, &r));
+    d->inter_mode[0] = RC_MODE_CLOSED;
+    d->inter_branch[0] = d->inter_branch[0] + 1;
+    ENSURE(!rc_report_cache_get(d, 0, &r));
+    d->inter_branch[0] = d->inter_branch[0] - 1;
+    ENSURE(rc_report_cache_get(d, 0, &r));
+    /* another state, by one ulp of one coordinate: refused */
+    y[m->body_yadr[0]] = nextafter(y[m->body_yadr[0]], INFINITY);
+    ENSURE(!rc_report_cache_state(m, d, y));
+out:
+    free(y);
+    free(g);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 void suite_roots(void);
 void suite_roots(void)
 {
     RUN_TEST(test_roots_live_mixed);
     RUN_TEST(test_roots_live_hysteresis_inacti);
     RUN_TEST(test_restart_first_step);
+    RUN_TEST(test_report_cache);
 }

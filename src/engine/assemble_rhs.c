@@ -78,29 +78,29 @@ double rc_friction_mu(const rc_model *m, int i, int dir, double p, double v, dou
 /* The report of an interface from its kernel's quantities. */
 static void report_of(const t6out_r *po, rc_inter_report *r)
 {
-    const t6out_r o = *po;
-    r->p = o.p;
-    r->vn = o.vn;
-    r->p_raw = o.p_raw;
-    r->vn_raw = o.vn_raw;
-    r->fload = o.fel;
-    r->fdamp = o.fd;
-    r->fn = o.fel + o.fd;
-    r->fl = o.fl;
-    r->fu = o.fu;
-    r->fh = o.fh;
-    r->offset = o.off;
-    r->flim = o.flim;
-    r->vslip = o.vslip;
-    r->slip_root = o.slip_root;
+    /* read in place (a copy of the struct cost as much as the rest) */
+    r->p = po->p;
+    r->vn = po->vn;
+    r->p_raw = po->p_raw;
+    r->vn_raw = po->vn_raw;
+    r->fload = po->fel;
+    r->fdamp = po->fd;
+    r->fn = po->fel + po->fd;
+    r->fl = po->fl;
+    r->fu = po->fu;
+    r->fh = po->fh;
+    r->offset = po->off;
+    r->flim = po->flim;
+    r->vslip = po->vslip;
+    r->slip_root = po->slip_root;
     for (int k = 0; k < 3; k++) {
-        r->ft[k] = o.ft[k];
-        r->fraw[k] = o.fraw[k];
-        r->vt[k] = o.vt[k];
+        r->ft[k] = po->ft[k];
+        r->fraw[k] = po->fraw[k];
+        r->vt[k] = po->vt[k];
     }
     for (int k = 0; k < 3; k++) {
-        r->point[k] = o.g.point[k];
-        r->normal[k] = o.g.n[k];
+        r->point[k] = po->g.point[k];
+        r->normal[k] = po->g.n[k];
     }
 }
 
@@ -144,9 +144,38 @@ void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip,
             rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, out, d->node_cache);
 }
 
+/* The state of the reports kept (rc_data.repc): the caller compares once
+ * and reads per interface. */
+int rc_report_cache_state(const rc_model *m, const rc_data *d, const double *y)
+{
+    const rc_repcache *c = d->repc;
+    return c && c->ok && memcmp(c->y, y, (size_t)m->ny * sizeof(double)) == 0;
+}
+
+int rc_report_cache_get(const rc_data *d, int i, rc_inter_report *r)
+{
+    const rc_repcache *c = d->repc;
+    const int *k = c->key + 4 * i;
+    if (k[0] < 0 || k[0] != d->inter_mode[i] || k[1] != d->inter_branch[i] || k[2] != d->inter_track[i] ||
+        k[3] != d->inter_slip[i])
+        return 0;
+    *r = c->rep[i];
+    return 1;
+}
+
 void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
 {
+    /* the reports are kept for samples at the same state (rc_report_cache_get):
+     * the interfaces without contact points, whose report depends on the
+     * state and the four modes alone */
+    rc_repcache *rc = d->repc;
+    if (rc) {
+        rc->ok = rc->on;
+        if (rc->on) memcpy(rc->y, y, (size_t)m->ny * sizeof(double));
+        else rc = NULL;
+    }
     for (int i = 0; i < m->ninter; i++) {
+        if (rc) rc->key[4 * i] = -1;
         double *gi = g + RC_ROOTS_PER_INTER * i;
         for (int k = 0; k < RC_ROOTS_PER_INTER; k++) gi[k] = 1.0; /* inactive roots */
         gi[RC_ROOT_TSTART] = t - m->inter_tstart[i];
@@ -168,6 +197,14 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
             report_of(&o, &r); /* the same evaluation as rc_inter_report_eval_d */
         } else {
             rc_inter_report_eval_d(m, d, i, t, y, &r);
+            if (rc && npt == 0) {
+                int *k = rc->key + 4 * i;
+                k[0] = mode;
+                k[1] = br;
+                k[2] = trk;
+                k[3] = d->inter_slip[i];
+                rc->rep[i] = r;
+            }
         }
         /* friction: stick -> slip at the limit, slip -> stick when sliding stops */
         if (mode == RC_MODE_CLOSED && m->inter_fr[i].kind != RC_FK_NONE) gi[RC_ROOT_SLIP] = r.slip_root;

@@ -54,6 +54,17 @@ rc_data *rc_data_new(const rc_model *m)
     }
     d->pt_slip = calloc((size_t)m->npt + 1, sizeof(int));
     d->pt_work = calloc(5 * (size_t)maxpt + 4 * ((size_t)RC_NS_MAX + 6 * (size_t)maxpt) + 16, sizeof(double));
+    /* the reports of the last root evaluation (rc_report_cache_state) */
+    int rc_ok = 0;
+    d->repc = calloc(1, sizeof *d->repc);
+    if (d->repc) {
+        d->repc->y = calloc((size_t)m->ny + 1, sizeof(double));
+        d->repc->rep = calloc(n, sizeof *d->repc->rep);
+        d->repc->key = malloc(4 * n * sizeof(int));
+        rc_ok = d->repc->y && d->repc->rep && d->repc->key;
+        if (rc_ok)
+            for (size_t k = 0; k < 4 * n; k++) d->repc->key[k] = -1;
+    }
     int imp_ok = 1;
     if (m->imp) { /* imposed velocities: scratch of rhs and Jacobian (imposed.c) */
         d->imp_free = calloc((size_t)m->ny, sizeof(double));
@@ -75,7 +86,7 @@ rc_data *rc_data_new(const rc_model *m)
             jc_ok = d->jcache != NULL;
         }
     }
-    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->inter_settled || !d->inter_fcstr || !d->cpl || !imp_ok || !jc_ok ||
+    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->inter_settled || !d->inter_fcstr || !d->cpl || !imp_ok || !jc_ok || !rc_ok ||
         !d->pt_slip || !d->pt_work || !d->node_cache) {
         rc_data_free(d);
         return NULL;
@@ -103,6 +114,12 @@ void rc_data_free(rc_data *d)
     free(d->imp_scratch);
     free(d->jcache);
     free(d->jcache_off);
+    if (d->repc) {
+        free(d->repc->y);
+        free(d->repc->rep);
+        free(d->repc->key);
+        free(d->repc);
+    }
     free(d);
 }
 

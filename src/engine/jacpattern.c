@@ -506,6 +506,16 @@ static void ap_points(const rc_model *m, const rc_data *d, int i, double t, cons
     }
 }
 
+int rc_jac_active_key(const rc_model *m, const rc_data *d, unsigned char *key)
+{
+    if (m->npt > 0) return 0; /* the points' rows follow their laws and modes */
+    const rc_couplings *c = m->cpl;
+    for (int k = 0; c && k < c->n; k++)
+        if (c->jb[k].slot && c->kind[k] == RC_CPL_CONTACT) return 0; /* their faces' modes */
+    for (int i = 0; i < m->ninter; i++) key[i] = (unsigned char)ap_inter_on(d, i);
+    return 1;
+}
+
 int64_t rc_jac_active(const rc_model *m, const rc_data *d, double t, const double *y, unsigned char *keep)
 {
     memset(keep, AP_NONE, (size_t)m->nnz);

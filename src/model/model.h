@@ -327,6 +327,9 @@ typedef struct rc_data {
                             of its Newton matrix (cvode.c): the Jacobian's
                             columns of these states are not evaluated (their
                             values are left 0); NULL: every column */
+    /* the reports of the last root evaluation (rc_report_cache_*): read by
+     * the driver's samples at the same state; NULL: none */
+    struct rc_repcache *repc;
     long n_rhs, n_jac, n_root;
     long n_jac_refresh;  /* interface blocks refreshed after events */
     long n_klu_sym;      /* KLU symbolic analyses of the Newton matrix so far (0: not counted) */
@@ -334,6 +337,17 @@ typedef struct rc_data {
     int fail_inter;      /* element that produced a non-finite force, -1 */
     double fail_t;
 } rc_data;
+
+/* The reports of the last root evaluation (rc_data.repc): the state they
+ * were evaluated at, and per interface its report and the modes it was
+ * evaluated in (rc_assemble_roots writes it; engine/assemble_rhs.c). */
+typedef struct rc_repcache {
+    double *y;                   /* [ny] the state of the evaluation */
+    int on;                      /* kept (set by the driver while it samples) */
+    int ok;                      /* y holds a state */
+    struct rc_inter_report *rep; /* [ninter] */
+    int *key;                    /* [4 ninter] mode, branch, track, slip; mode -1: not evaluated */
+} rc_repcache;
 
 /* What the output and the event logic see of one interface. */
 typedef struct rc_inter_report {
@@ -444,6 +458,13 @@ void rc_inter_report_eval_d(const rc_model *m, const rc_data *d, int i, double t
  * per point 5 values into out: its slip root, the law's tangential force
  * on a before any projection (3) [N], its share w_j = f_j / F_n [-]. */
 void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip, double t, const double *y, double *out);
+/* The reports kept by the last rc_assemble_roots: 1 when y is, bit for bit,
+ * the state of that evaluation (then rc_report_cache_get may be asked). */
+int rc_report_cache_state(const rc_model *m, const rc_data *d, const double *y);
+/* Interface i's report of that evaluation into r, when it was evaluated
+ * there in the modes d holds now (1), else 0 (r untouched). Only after
+ * rc_report_cache_state returned 1 for the same y. */
+int rc_report_cache_get(const rc_data *d, int i, rc_inter_report *r);
 /* Gravity acceleration vector of body b at time t [m/s^2]. */
 void rc_gravity(const rc_model *m, int b, double t, double g[3]);
 /* Value of the gravity time function at t [-] (1 when none is given). */
@@ -513,6 +534,11 @@ void rc_jac_free(rc_model *m);
  * returns the count kept. Uses d->pt_work as scratch (not during a root or
  * Jacobian evaluation). */
 int64_t rc_jac_active(const rc_model *m, const rc_data *d, double t, const double *y, unsigned char *keep);
+/* What rc_jac_active's result depends on when that is each interface's
+ * on/off state alone (no contact points, no contact couplings): those
+ * states into key[ninter] (1 on) and 1; otherwise 0 (key untouched). Equal
+ * keys give equal results. */
+int rc_jac_active_key(const rc_model *m, const rc_data *d, unsigned char *key);
 
 /* ---- modes and events (events.c) ----------------------------------- */
 /* Consistent modes at (t, y) from scratch (start of run); may set history

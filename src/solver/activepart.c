@@ -89,7 +89,9 @@ int rc_actpart_open(rc_actpart *ap, const rc_model *m, SUNLinearSolver LS, int o
     ap->seen = calloc((size_t)ap->nnz + 1, 1);
     ap->xneed = ext ? malloc((size_t)ap->nnz + 1) : ap->need;
     ap->xval = ext ? malloc(((size_t)ap->nnz + 1) * sizeof(double)) : NULL;
-    if (!ap->need || !ap->seen || !ap->xneed || (ext && !ap->xval)) return -1;
+    ap->akey = malloc(2 * ((size_t)m->ninter + 1));
+    ap->akey_new = ap->akey ? ap->akey + m->ninter + 1 : NULL;
+    if (!ap->need || !ap->seen || !ap->xneed || (ext && !ap->xval) || !ap->akey) return -1;
     LS->ops->initialize = klu_init_keep;
     LS->ops->setup = klu_setup_retry;
     ap->retry0 = g_retry;
@@ -105,6 +107,9 @@ void rc_actpart_close(rc_actpart *ap)
     free(ap->xval);
     free(ap->src);
     free(ap->inpart);
+    free(ap->akey);
+    ap->akey = ap->akey_new = NULL;
+    ap->akey_ok = 0;
     ap->inpart = NULL;
     ap->need = ap->seen = ap->xneed = NULL;
     ap->xval = NULL;
@@ -147,6 +152,11 @@ int rc_actpart_follow(rc_actpart *ap, const rc_model *m, const rc_data *d, doubl
 {
     if (g_probe) g_probe(g_probe_ctx, m, d, t, y, jsave);
     if (!ap->on) return 0;
+    /* the interfaces on and off as at the last follow (nothing else
+     * decides): the same active slots, already in the part and in seen */
+    const int keyed = !g_probe && !ap->sw && !ap->jw && ap->akey && rc_jac_active_key(m, d, ap->akey_new);
+    if (keyed && ap->built && ap->akey_ok && memcmp(ap->akey, ap->akey_new, (size_t)m->ninter) == 0) return 0;
+    ap->akey_ok = 0;
     rc_jac_active(m, d, t, y, ap->need);
     if (ap->sw) rc_stk_keep(m, d, ap->sw, ap->need, ap->xneed);
     else if (ap->jw) rc_jnt_keep(m, ap->jw, ap->need, ap->xneed);
@@ -156,19 +166,26 @@ int rc_actpart_follow(rc_actpart *ap, const rc_model *m, const rc_data *d, doubl
     const unsigned char *need = ap->xneed;
     if (g_probe && ap->xval)
         for (int64_t k = 0; k < nz; k++) g_xoutside += ap->xval[k] != 0.0 && !need[k];
+    int st = 0;
     if (!ap->built) {
         memcpy(ap->seen, need, (size_t)nz);
-        return rebuild(ap, need);
+        st = rebuild(ap, need);
+    } else {
+        int out = 0;
+        for (int64_t k = 0; k < nz; k++) {
+            out |= need[k] && map[k] < 0;
+            ap->seen[k] |= need[k];
+        }
+        if (out) {
+            /* the part: every slot active since the last rebuild; then count anew */
+            st = rebuild(ap, ap->seen);
+            memcpy(ap->seen, need, (size_t)nz);
+        }
     }
-    int out = 0;
-    for (int64_t k = 0; k < nz; k++) {
-        out |= need[k] && map[k] < 0;
-        ap->seen[k] |= need[k];
+    if (keyed && !st) {
+        memcpy(ap->akey, ap->akey_new, (size_t)m->ninter);
+        ap->akey_ok = 1;
     }
-    if (!out) return 0;
-    /* the part: every slot active since the last rebuild; then count anew */
-    int st = rebuild(ap, ap->seen);
-    memcpy(ap->seen, need, (size_t)nz);
     return st;
 }
 

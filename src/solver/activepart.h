@@ -51,6 +51,10 @@ typedef struct rc_actpart {
     long retry0;         /* the thread's count of analyses after failed refactorisations at open */
     long nbuild;         /* builds of the part */
     int64_t nnz_max;     /* largest part (the whole pattern when off) */
+    /* rc_jac_active_key of the last follow (akey_ok) and scratch: the same
+     * key gives the same active slots, so the follow has nothing to do */
+    unsigned char *akey, *akey_new; /* [ninter + 1] each */
+    int akey_ok;
 } rc_actpart;
 
 /* Set up for model m and KLU solver LS (with on: LS's initialisation keeps

@@ -699,6 +699,8 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
          * times, as the integrator bounds the steps of one call. The
          * backend may ask for single steps of its own (rc_backend.solve). */
         int one_step = rc_impacts_active(&im);
+        /* the root functions keep their reports for the samples (sample_step) */
+        if (d->repc) d->repc->on = one_step;
         /* a time asked for by the caller before the next output time: return
          * there (interpolated; the steps are the same) */
         const double tcall = pause && pause->until < tout ? pause->until : tout;

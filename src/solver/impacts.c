@@ -161,11 +161,13 @@ static void refine(rc_impacts *im, const rc_model *m, const rc_data *d, int i, d
 void rc_impacts_step(rc_impacts *im, const rc_model *m, const rc_data *d, double lo, double t, const double *y,
                      rc_interp_fn interp, void *ctx)
 {
+    /* the root functions at the step's end evaluated the same reports */
+    const int cached = rc_report_cache_state(m, d, y);
     for (int i = 0; i < im->ninter; i++) {
         if (im->cur[i] < 0) continue;
         const int closed = d->inter_mode[i] == RC_MODE_CLOSED;
         rc_inter_report r;
-        report(m, d, i, t, y, &r);
+        if (!cached || !rc_report_cache_get(d, i, &r)) report(m, d, i, t, y, &r);
         rc_impact *row = &im->row[im->cur[i]];
         update(row, &r, closed, t);
         rc_impact_hist *h = &im->h[i];

@@ -97,6 +97,48 @@ static void dense_inter(const rc_model *m, int i, int mode, int branch, int trac
     }
 }
 
+/* A slot of `val` written by a refresh: not in a held row (those stay 0). */
+static int live_slot(const rc_model *m, int64_t sl)
+{
+    return sl >= 0 && !(m->nheld > 0 && m->row_held[m->jac_rowind[sl]]);
+}
+
+/* Contact point j of interface i (closed, in mode `slip`, its state fj at
+ * the evaluation), the columns of its own state: one complex step per
+ * component, added into the values of its rows on the bodies (sb: the
+ * point's accelerations of a then b, then W_fric at racc + widx) and of its
+ * own rates (sc). only_live: not into held rows (a refresh: no assembly
+ * clears them afterwards). */
+static void point_columns(const rc_model *m, int i, const segctx_c *c, int j, int slip, const T *ya, const T *yb,
+                          const T *po, const double *fj, const int64_t *sb, const int64_t *sc, int only_live,
+                          double *val)
+{
+    const int ps = m->inter_pst[i], ba = m->inter_ba[i], bb = m->inter_bb[i];
+    const int fa = ba >= 0 && m->body_yadr[ba] >= 0, fb = bb >= 0 && m->body_yadr[bb] >= 0;
+    const int racc = (fa ? 6 : 0) + (fb ? 6 : 0), widx = m->inter_fr[i].widx;
+#define PUT(sl, v) do { const int64_t s_ = (sl); if (only_live ? live_slot(m, s_) : s_ >= 0) val[s_] += (v); } while (0)
+    T Fj[6];
+    for (int k = 0; k < ps; k++) Fj[k] = fj[k];
+    for (int k = 0; k < ps; k++) {
+        Fj[k] += I * RC_CSTEP;
+        segpt_c q;
+        segfric_point_c(m, i, c, j, slip, ya, yb, Fj, po, &q);
+        Fj[k] = creal(Fj[k]);
+        T acc[12] = {0}, fbv[3] = {-q.ft[0], -q.ft[1], -q.ft[2]};
+        if (fa) apply_force_c(m, ba, ya, q.ft, q.x, acc);
+        if (fb) apply_force_c(m, bb, yb, fbv, q.x, acc + 6);
+        int r = 0;
+        for (int a = 0; a < 12; a++) {
+            if ((a < 6 && !fa) || (a >= 6 && !fb)) continue;
+            PUT(sb[r * ps + k], cimag(acc[a]) / RC_CSTEP);
+            r++;
+        }
+        PUT(sb[(racc + widx) * ps + k], -cimag(dot_c(q.ft, q.vrel)) / RC_CSTEP);
+        for (int e = 0; e < ps; e++) PUT(sc[e * ps + k], cimag(q.dF[e]) / RC_CSTEP);
+    }
+#undef PUT
+}
+
 /* Contact points with friction of interface i, closed: every row a point's
  * state moves (the accelerations, W_fric, its own rates) against that state,
  * into the values through inter_ptslot (jacpattern.c). A point's state moves
@@ -108,7 +150,6 @@ static void points_jac(const rc_model *m, rc_data *d, int i, const double *y, do
     const int64_t P = (int64_t)ps * ncol + (int64_t)ps * nrow + ps * ps, *slot = m->inter_ptslot[i];
     const int *pslip = d->pt_slip + m->inter_pbase[i];
     const int ba = m->inter_ba[i], bb = m->inter_bb[i];
-    const int fa = ba >= 0 && m->body_yadr[ba] >= 0, fb = bb >= 0 && m->body_yadr[bb] >= 0;
     const rc_fric *fr = &m->inter_fr[i];
     T ya[RC_NB], yb[RC_NB], po[RC_NB];
     load_body(m, ba, y, ya);
@@ -124,29 +165,8 @@ static void points_jac(const rc_model *m, rc_data *d, int i, const double *y, do
     segctx_c c;
     segfric_ctx_c(m, i, o.fel + o.fd, o.kn, o.off, ya, yb, d->node_cache, &c);
     for (int j = 0; j < npt; j++) {
-        T Fj[6];
-        for (int k = 0; k < ps; k++) Fj[k] = yr[ns + ps * j + k];
-        for (int k = 0; k < ps; k++) {
-            Fj[k] += I * RC_CSTEP;
-            segpt_c q;
-            segfric_point_c(m, i, &c, j, pslip[j], ya, yb, Fj, po, &q);
-            Fj[k] = creal(Fj[k]);
-            T acc[12] = {0}, fbv[3] = {-q.ft[0], -q.ft[1], -q.ft[2]};
-            if (fa) apply_force_c(m, ba, ya, q.ft, q.x, acc);
-            if (fb) apply_force_c(m, bb, yb, fbv, q.x, acc + 6);
-            const int64_t *sb = slot + j * P + ps * ncol, *sc = sb + ps * nrow;
-            int r = 0;
-            if (fa)
-                for (int e = 0; e < 6; e++, r++)
-                    if (sb[r * ps + k] >= 0) val[sb[r * ps + k]] += cimag(acc[e]) / RC_CSTEP;
-            if (fb)
-                for (int e = 0; e < 6; e++, r++)
-                    if (sb[r * ps + k] >= 0) val[sb[r * ps + k]] += cimag(acc[6 + e]) / RC_CSTEP;
-            const int64_t sw = sb[(r + fr->widx) * ps + k];
-            if (sw >= 0) val[sw] += -cimag(dot_c(q.ft, q.vrel)) / RC_CSTEP;
-            for (int e = 0; e < ps; e++)
-                if (sc[e * ps + k] >= 0) val[sc[e * ps + k]] += cimag(q.dF[e]) / RC_CSTEP;
-        }
+        const int64_t *sb = slot + j * P + ps * ncol, *sc = sb + ps * nrow;
+        point_columns(m, i, &c, j, pslip[j], ya, yb, po, yr + ns + ps * j, sb, sc, 0, val);
     }
 }
 
@@ -260,12 +280,6 @@ static const T *fric_pose(const rc_model *m, int i, const T *ya, const T *yb, T 
     return yo;
 }
 
-/* A slot of `val` written by a refresh: not in a held row (those stay 0). */
-static int live_slot(const rc_model *m, int64_t sl)
-{
-    return sl >= 0 && !(m->nheld > 0 && m->row_held[m->jac_rowind[sl]]);
-}
-
 int rc_jac_refresh_points(const rc_model *m, rc_data *d, int i, const int *old_slip, const double *y, double *val)
 {
     if (!d->jcache || !d->jcache_ok || i < 0 || i >= m->ninter || m->inter_npt[i] == 0 || !old_slip) return -1;
@@ -320,27 +334,7 @@ int rc_jac_refresh_points(const rc_model *m, rc_data *d, int i, const int *old_s
                     if (live_slot(m, sb[k])) val[sb[k]] = 0.0;
                 for (int k = 0; k < ps * ps; k++)
                     if (live_slot(m, sc[k])) val[sc[k]] = 0.0;
-                T Fj[6];
-                for (int k = 0; k < ps; k++) Fj[k] = yr[ns + ps * j + k];
-                for (int k = 0; k < ps; k++) {
-                    Fj[k] += I * RC_CSTEP;
-                    segpt_c q;
-                    segfric_point_c(m, i, &cx, j, pslip[j], ya, yb, Fj, po, &q);
-                    Fj[k] = creal(Fj[k]);
-                    T acc[12] = {0}, fbv[3] = {-q.ft[0], -q.ft[1], -q.ft[2]};
-                    if (fa) apply_force_c(m, ba, ya, q.ft, q.x, acc);
-                    if (fb) apply_force_c(m, bb, yb, fbv, q.x, acc + 6);
-                    int e = 0;
-                    for (int a = 0; a < 12; a++) {
-                        if ((a < 6 && !fa) || (a >= 6 && !fb)) continue;
-                        if (live_slot(m, sb[e * ps + k])) val[sb[e * ps + k]] += cimag(acc[a]) / RC_CSTEP;
-                        e++;
-                    }
-                    const int64_t sw = sb[(racc + widx) * ps + k];
-                    if (live_slot(m, sw)) val[sw] += -cimag(dot_c(q.ft, q.vrel)) / RC_CSTEP;
-                    for (int e2 = 0; e2 < ps; e2++)
-                        if (live_slot(m, sc[e2 * ps + k])) val[sc[e2 * ps + k]] += cimag(q.dF[e2]) / RC_CSTEP;
-                }
+                point_columns(m, i, &cx, j, pslip[j], ya, yb, po, yr + ns + ps * j, sb, sc, 1, val);
             }
             break;
         }

@@ -321,6 +321,35 @@ static int seg_flat(const double *x, const int *seg, const rc_segmesh *g, int q,
     return 1;
 }
 
+/* Bin n items into the grid's cells (counting sort): item q covers the
+ * cells of rng[6 q .. 6 q + 5] (i, j, l ranges, inclusive; empty when a
+ * lower bound passes its upper one); adr [ncell + 1] zeroed on entry gets
+ * the offsets, *list (allocated) the items of each cell in order. 0, or
+ * -1 out of memory. */
+static int grid_bin(const rc_segmesh *g, int ncell, const int *rng, int n, int *adr, int **list)
+{
+    for (int pass = 0; pass < 2; pass++) {
+        for (int q = 0; q < n; q++) {
+            const int *r = rng + 6 * q;
+            for (int i = r[0]; i <= r[1]; i++)
+                for (int j = r[2]; j <= r[3]; j++)
+                    for (int l = r[4]; l <= r[5]; l++) {
+                        const int c = (i * g->dim[1] + j) * g->dim[2] + l;
+                        if (pass == 0) adr[c + 1]++;
+                        else (*list)[adr[c]++] = q;
+                    }
+        }
+        if (pass == 0) {
+            for (int c = 0; c < ncell; c++) adr[c + 1] += adr[c];
+            if (!(*list = malloc((size_t)adr[ncell] * sizeof(int) + sizeof(int)))) return -1;
+        } else {
+            for (int c = ncell; c > 0; c--) adr[c] = adr[c - 1];
+            adr[0] = 0;
+        }
+    }
+    return 0;
+}
+
 /* The node grid of surface s (segsurf.h, rc_segmesh.ncadr): the cells of
  * the broad-phase grid, each segment over its widened box. */
 static rc_status node_grid(const rc_model *m, int s, rc_segmesh *g, int ncell, rc_error *err)
@@ -366,28 +395,9 @@ static rc_status node_grid(const rc_model *m, int s, rc_segmesh *g, int ncell, r
             rng[6 * q + 2 * k + 1] = b;
         }
     }
-    for (int pass = 0; pass < 2; pass++) {
-        for (int q = 0; q < g->ns; q++) {
-            const int *r = rng + 6 * q;
-            for (int i = r[0]; i <= r[1]; i++)
-                for (int j = r[2]; j <= r[3]; j++)
-                    for (int l = r[4]; l <= r[5]; l++) {
-                        const int c = (i * g->dim[1] + j) * g->dim[2] + l;
-                        if (pass == 0) g->ncadr[c + 1]++;
-                        else g->ncseg[g->ncadr[c]++] = q;
-                    }
-        }
-        if (pass == 0) {
-            for (int c = 0; c < ncell; c++) g->ncadr[c + 1] += g->ncadr[c];
-            g->ncseg = malloc((size_t)g->ncadr[ncell] * sizeof(int) + sizeof(int));
-            if (!g->ncseg) {
-                free(rng);
-                RC_RAISE(err, RC_ENOMEM, "out of memory");
-            }
-        } else {
-            for (int c = ncell; c > 0; c--) g->ncadr[c] = g->ncadr[c - 1];
-            g->ncadr[0] = 0;
-        }
+    if (grid_bin(g, ncell, rng, g->ns, g->ncadr, &g->ncseg)) {
+        free(rng);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
     }
     /* isolated segments (segsurf.h) */
     g->iso = calloc((size_t)g->ns + 1, 1);
@@ -537,40 +547,24 @@ static rc_status seg_mesh(rc_model *m, int s, rc_segmesh *g, rc_error *err)
     }
     g->cadr = calloc((size_t)ncell + 1, sizeof(int));
     if (!g->cadr) RC_RAISE(err, RC_ENOMEM, "out of memory");
-    for (int pass = 0; pass < 2; pass++) {
-        for (int q = 0; q < g->ns; q++) {
-            int *r = g->srange + 6 * q;
-            if (pass == 0)
-                for (int k = 0; k < 3; k++) {
-                    double a = x[3 * seg[4 * q] + k], b = a;
-                    for (int j = 1; j < 4; j++) {
-                        a = fmin(a, x[3 * seg[4 * q + j] + k]);
-                        b = fmax(b, x[3 * seg[4 * q + j] + k]);
-                    }
-                    g->sbox[6 * q + k] = a;
-                    g->sbox[6 * q + 3 + k] = b;
-                    r[2 * k] = (int)floor((a - g->lo[k]) / g->h);
-                    r[2 * k + 1] = (int)floor((b - g->lo[k]) / g->h);
-                    if (r[2 * k] < 0) r[2 * k] = 0;
-                    if (r[2 * k + 1] > g->dim[k] - 1) r[2 * k + 1] = g->dim[k] - 1;
-                }
-            for (int i = r[0]; i <= r[1]; i++)
-                for (int j = r[2]; j <= r[3]; j++)
-                    for (int l = r[4]; l <= r[5]; l++) {
-                        const int c = (i * g->dim[1] + j) * g->dim[2] + l;
-                        if (pass == 0) g->cadr[c + 1]++;
-                        else g->cseg[g->cadr[c]++] = q;
-                    }
-        }
-        if (pass == 0) {
-            for (int c = 0; c < ncell; c++) g->cadr[c + 1] += g->cadr[c];
-            g->cseg = malloc((size_t)g->cadr[ncell] * sizeof(int) + sizeof(int));
-            if (!g->cseg) RC_RAISE(err, RC_ENOMEM, "out of memory");
-        } else {
-            for (int c = ncell; c > 0; c--) g->cadr[c] = g->cadr[c - 1];
-            g->cadr[0] = 0;
+    /* each segment's box and its cells */
+    for (int q = 0; q < g->ns; q++) {
+        int *r = g->srange + 6 * q;
+        for (int k = 0; k < 3; k++) {
+            double a = x[3 * seg[4 * q] + k], b = a;
+            for (int j = 1; j < 4; j++) {
+                a = fmin(a, x[3 * seg[4 * q + j] + k]);
+                b = fmax(b, x[3 * seg[4 * q + j] + k]);
+            }
+            g->sbox[6 * q + k] = a;
+            g->sbox[6 * q + 3 + k] = b;
+            r[2 * k] = (int)floor((a - g->lo[k]) / g->h);
+            r[2 * k + 1] = (int)floor((b - g->lo[k]) / g->h);
+            if (r[2 * k] < 0) r[2 * k] = 0;
+            if (r[2 * k + 1] > g->dim[k] - 1) r[2 * k + 1] = g->dim[k] - 1;
         }
     }
+    if (grid_bin(g, ncell, g->srange, g->ns, g->cadr, &g->cseg)) RC_RAISE(err, RC_ENOMEM, "out of memory");
     return node_grid(m, s, g, ncell, err);
 }
 

@@ -54,6 +54,8 @@ rc_data *rc_data_new(const rc_model *m)
     }
     d->pt_slip = calloc((size_t)m->npt + 1, sizeof(int));
     d->pt_work = calloc(5 * (size_t)maxpt + 4 * ((size_t)RC_NS_MAX + 6 * (size_t)maxpt) + 16, sizeof(double));
+    /* the point flips' scratch (points_flip): 3 doubles, an int and a flag per point */
+    d->pt_flip = malloc((size_t)maxpt * (3 * sizeof(double) + sizeof(int) + 1) + 1);
     /* the reports of the last root evaluation (rc_report_cache_state) */
     int rc_ok = 0;
     d->repc = calloc(1, sizeof *d->repc);
@@ -87,7 +89,7 @@ rc_data *rc_data_new(const rc_model *m)
         }
     }
     if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->inter_settled || !d->inter_fcstr || !d->cpl || !imp_ok || !jc_ok || !rc_ok ||
-        !d->pt_slip || !d->pt_work || !d->node_cache) {
+        !d->pt_slip || !d->pt_work || !d->pt_flip || !d->node_cache) {
         rc_data_free(d);
         return NULL;
     }
@@ -108,6 +110,7 @@ void rc_data_free(rc_data *d)
     free(d->inter_fcstr);
     free(d->pt_slip);
     free(d->pt_work);
+    free(d->pt_flip);
     free(d->seg_hint); /* and the node cache */
     rc_cpl_data_free(d->cpl);
     free(d->imp_free);
@@ -172,13 +175,10 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
     if (npt == 0 || d->inter_mode[i] != RC_MODE_CLOSED) return 0;
     int *sl = d->pt_slip + m->inter_pbase[i];
     double *out = d->pt_work; /* 5 per point (rc_data_new) */
-    char *sel = calloc((size_t)npt, 1);
-    int *md = malloc((size_t)npt * sizeof(int));
-    if (!sel || !md) {
-        free(sel);
-        free(md);
-        return 0;
-    }
+    /* scratch (rc_data_new): keep [3 npt], md [npt], sel [npt] */
+    double *keep = d->pt_flip;
+    int *md = (int *)(keep + 3 * npt);
+    char *sel = (char *)(md + npt);
     if (!roots) rc_points_eval(m, d, i, NULL, t, y, out);
     int n = 0;
     for (int j = 0; j < npt; j++) {
@@ -217,8 +217,7 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
          * limit: |v_t| below about 1e-6 L_j / (w_j c_t)) sticks with them,
          * instead of at an event of its own a fraction of a nanosecond
          * later (a meshed block stopping: hundreds of points at once) */
-        double *keep = roots && nst > 0 ? malloc(3 * (size_t)npt * sizeof(double)) : NULL;
-        if (keep) {
+        if (roots && nst > 0) {
             int ng = 0;
             rc_points_eval(m, d, i, NULL, t, y, out); /* sliding points: on the limit */
             for (int j = 0; j < npt; j++) {
@@ -247,7 +246,6 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
                     }
                 }
             }
-            free(keep);
         }
         /* slip -> stick only where the stick holds: a point whose sliding
          * along its force stopped while it still slides across it (the
@@ -277,8 +275,6 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
             }
         }
     }
-    free(sel);
-    free(md);
     return n;
 }
 

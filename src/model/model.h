@@ -295,6 +295,8 @@ typedef struct rc_data {
     int *inter_slip;     /* [ninter] friction: 0 stick, 1 slip */
     int *pt_slip;        /* [npt] friction per contact point: 0 stick, 1 slip */
     void *pt_work;       /* Jacobian scratch of the contact points (complex) */
+    void *pt_flip;       /* scratch of the contact points' stick/slip flips at events
+                            (events.c points_flip): 3 doubles, an int, a flag per point */
     void *node_cache;    /* node geometry of a node pair, RC_NODE_CACHE complex
                             values per point (kernels.inc, seg_fill); it
                             follows seg_hint in one allocation */

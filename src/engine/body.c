@@ -1,9 +1,11 @@
 /* Rigid bodies: state views, gravity (of the bodies and of the coupling
  * lines), initial state. Energies are in energy.c. */
+#include <stdlib.h>
 #include <string.h>
 
 #include "model/coupling.h"
 #include "model/imposed.h"
+#include "model/joint.h"
 #include "model/model.h"
 #include "model/power.h"
 
@@ -50,10 +52,67 @@ void rc_initial_state(const rc_model *m, double *y)
         }
 }
 
+/* May side `side` (0: a, 1: b) of interface i act on its body with a
+ * moment about the body's centre of mass? No only when that side is a
+ * sphere centred exactly on the centre of mass (the kernel takes its
+ * normal force at the sphere's centre: geometry's act_a / act_b, and
+ * apply_force then adds no moment) in a pair that acts through that
+ * centre, and the interface has nothing tangential (no friction of any
+ * kind, no exact stick, no contact points with their own states). */
+static int side_moment_free(const rc_model *m, int i, int side)
+{
+    const rc_fric *fr = &m->inter_fr[i];
+    if (fr->kind != RC_FK_NONE || fr->exact || fr->widx >= 0 || m->inter_npt[i] != 0) return 0;
+    const int s = side ? m->inter_sb[i] : m->inter_sa[i];
+    const double *c = m->surf_p + 3 * s;
+    if (m->surf_kind[s] != RC_SURF_SPHERE || c[0] != 0.0 || c[1] != 0.0 || c[2] != 0.0) return 0;
+    switch (m->inter_pair[i]) {
+    case RC_PAIR_SPHERE_SPHERE: /* both centres */
+        return 1;
+    case RC_PAIR_SPHERE_PLANE:
+    case RC_PAIR_SPHERE_BOX:
+    case RC_PAIR_SPHERE_CYL: /* the sphere is a: its centre */
+        return side == 0;
+    default: /* several points, or not a sphere's side: in doubt a moment */
+        return 0;
+    }
+}
+
+void rc_moment_free_bodies(const rc_model *m, char *mf)
+{
+    for (int b = 0; b < m->nbody; b++) mf[b] = m->body_yadr[b] >= 0;
+    /* imposed velocities: their reactions (a rotation's is a torque) */
+    const rc_imposed *p = m->imp;
+    for (int k = 0; p && k < p->nt; k++) mf[p->tbody[k]] = 0;
+    for (int k = 0; p && k < p->nr; k++) mf[p->rbody[k]] = 0;
+    /* couplings (springs, catenaries, contact couplings, joint stops) and
+     * joints: forces at attachment points, moments */
+    const rc_couplings *cp = m->cpl;
+    for (int k = 0; cp && k < cp->n; k++) {
+        if (cp->b1[k] >= 0) mf[cp->b1[k]] = 0;
+        if (cp->b2[k] >= 0) mf[cp->b2[k]] = 0;
+    }
+    const rc_joints *jn = m->jnt;
+    for (int k = 0; jn && k < jn->n; k++) {
+        if (jn->ba[k] >= 0) mf[jn->ba[k]] = 0;
+        if (jn->bb[k] >= 0) mf[jn->bb[k]] = 0;
+    }
+    /* interfaces: each side on a body must act through its centre */
+    for (int i = 0; i < m->ninter; i++) {
+        const int ba = m->inter_ba[i], bb = m->inter_bb[i];
+        if (ba >= 0 && !side_moment_free(m, i, 0)) mf[ba] = 0;
+        if (bb >= 0 && !side_moment_free(m, i, 1)) mf[bb] = 0;
+    }
+}
+
 int rc_constant_states(const rc_model *m, const double *y0, const char *written, char *cst)
 {
     memset(cst, 0, (size_t)m->ny);
     int n = 0;
+    /* bodies on which no moment can act (out of memory: none, which only
+     * keeps more states) */
+    char *mf = malloc((size_t)m->nbody + 1);
+    if (mf) rc_moment_free_bodies(m, mf);
 #define RC_W(k) (written && written[k])
     /* an imposed velocity's row has its own rate (a held component cannot
      * be imposed: the compiler refuses it; checked again here) */
@@ -84,7 +143,19 @@ int rc_constant_states(const rc_model *m, const double *y0, const char *written,
             rot &= held[j] && m->row_held[a + 7 + j] && !RC_W(a + 7 + j);
             still &= y0[a + 7 + j] == 0.0;
         }
-        if (!rot) continue;
+        if (!rot) {
+            /* rotations free, but no moment about the centre of mass can
+             * ever act and omega starts at exactly 0: omega' = J^-1 (0 -
+             * omega x J omega) = 0 and q' = 0 at all times, both constant */
+            if (!mf || !mf[b] || !still) continue;
+            for (int k = 3; k < 7; k++) still &= !RC_W(a + k);
+            for (int j = 3; j < 6; j++) still &= !RC_W(a + 7 + j);
+            if (!still) continue;
+            for (int k = 3; k < 7; k++) cst[a + k] = 1;
+            for (int j = 3; j < 6; j++) cst[a + 7 + j] = 1;
+            n += 7;
+            continue;
+        }
         for (int j = 3; j < 6; j++) cst[a + 7 + j] = 1;
         n += 3;
         for (int k = 3; k < 7; k++) still &= !RC_W(a + k);
@@ -93,5 +164,6 @@ int rc_constant_states(const rc_model *m, const double *y0, const char *written,
         n += 4;
     }
 #undef RC_W
+    free(mf);
     return n;
 }

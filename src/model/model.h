@@ -402,14 +402,23 @@ void rc_initial_state(const rc_model *m, double *y);
  * the ODE path (docs/theory.md 7.2, "What the integrator carries"): a held
  * velocity component (/BCS; its rate is set to 0 after every force, and
  * an imposed velocity cannot name it), the position along a held
- * translation whose velocity is exactly 0 in y0, and the quaternion of a
- * body whose rotations are all held with omega exactly 0 in y0. `written`
+ * translation whose velocity is exactly 0 in y0, the quaternion of a
+ * body whose rotations are all held with omega exactly 0 in y0, and the
+ * quaternion and omega of a body on which no moment can act
+ * (rc_moment_free_bodies) with omega exactly 0 in y0. `written`
  * [ny] marks the states an event may write (NULL: the events of events.c,
  * which write interface and contact-point states only, never a body's);
  * such a state is never constant, nor the position or quaternion that
  * depends on it. cst[ny] receives 1 for the constant states; returns
  * their number (body.c). */
 int rc_constant_states(const rc_model *m, const double *y0, const char *written, char *cst);
+/* mf[nbody] receives 1 for the free bodies on which no moment about the
+ * centre of mass can act in any state and mode (docs/theory.md 7.2): every
+ * interface side on the body a sphere centred exactly on its centre of
+ * mass in a sphere-plane, sphere-sphere, sphere-box or sphere-cylinder
+ * pair without friction of any kind; no coupling, joint or imposed
+ * velocity on it. Gravity acts at the centre of mass. (body.c) */
+void rc_moment_free_bodies(const rc_model *m, char *mf);
 /* ydot = f(t, y; modes). Returns 0, or 1 (recoverable) on a non-finite force. */
 int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, double *ydot);
 /* Jacobian values into `val` [nnz] on the fixed pattern. */

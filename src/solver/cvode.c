@@ -18,7 +18,8 @@
  * m->ny values); the states that keep their initial values whatever
  * happens (rc_constant_states: held velocity components, positions along
  * held translations at rest, the quaternions of bodies whose rotations are
- * all held at rest) are left out of CVODE's vector. Every callback scatters
+ * all held at rest, the rotation states of bodies without spin on which no
+ * moment can act) are left out of CVODE's vector. Every callback scatters
  * CVODE's vector into a whole-state scratch (the constant states in place)
  * and gathers what it returns; the Newton matrix is the part of the
  * model's Jacobian pattern on the kept states, and of it the active part

@@ -1,5 +1,7 @@
 /* Rigid bodies: state views, gravity (of the bodies and of the coupling
- * lines), initial state. Energies are in energy.c. */
+ * lines), initial state, the states that stay constant in any run (held
+ * ones; the rotations at rest of bodies on which no moment can act).
+ * Energies are in energy.c. */
 #include <stdlib.h>
 #include <string.h>
 

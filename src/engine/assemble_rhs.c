@@ -18,6 +18,14 @@
 #include "kernels_coupling.inc"
 #include "kernel_fast.inc"
 
+/* rc_body_state (body.c) inlined: the interfaces' loops call it twice per
+ * interface and evaluation. */
+static inline const double *body_state(const rc_model *m, int b, const double *y)
+{
+    if (b < 0) return m->ground_y0;
+    return m->body_yadr[b] >= 0 ? y + m->body_yadr[b] : m->body_y0 + RC_NB * b;
+}
+
 /* Interface i goes the fast path (kernel_fast.inc). */
 static inline int is_fast(const rc_model *m, int i) { return m->inter_fast && m->inter_fast[i]; }
 
@@ -45,12 +53,12 @@ int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, do
         }
         if (is_fast(m, i)) {
             t6out_r o;
-            t6fast(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], rc_body_state(m, ba, y),
-                   rc_body_state(m, bb, y), y + m->inter_eadr[i], acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot,
+            t6fast(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], body_state(m, ba, y),
+                   body_state(m, bb, y), y + m->inter_eadr[i], acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot,
                    &o, 0);
         } else {
             type6_r(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
-                    d->pt_slip + m->inter_pbase[i], rc_body_state(m, ba, y), rc_body_state(m, bb, y),
+                    d->pt_slip + m->inter_pbase[i], body_state(m, ba, y), body_state(m, bb, y),
                     y + m->inter_eadr[i], acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot, NULL, NULL,
                     d->node_cache);
         }
@@ -123,11 +131,11 @@ static void report_eval(const rc_model *m, int i, int mode, int branch, int trac
 {
     t6out_r o;
     if (is_fast(m, i))
-        t6fast(m, i, mode, branch, track, rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y),
+        t6fast(m, i, mode, branch, track, body_state(m, m->inter_ba[i], y), body_state(m, m->inter_bb[i], y),
                y + m->inter_eadr[i], NULL, NULL, NULL, &o, T6F_LAW | T6F_FULL);
     else
-        type6_r(m, i, mode, branch, track, slip, pslip, rc_body_state(m, m->inter_ba[i], y),
-                rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, NULL, ncache);
+        type6_r(m, i, mode, branch, track, slip, pslip, body_state(m, m->inter_ba[i], y),
+                body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, NULL, ncache);
     report_of(&o, r);
 }
 
@@ -156,8 +164,8 @@ void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip,
     if (d->inter_mode[i] != RC_MODE_CLOSED || npt == 0) return;
     t6out_r o;
     type6_r(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
-            slip ? slip : d->pt_slip + m->inter_pbase[i], rc_body_state(m, m->inter_ba[i], y),
-            rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, out, d->node_cache);
+            slip ? slip : d->pt_slip + m->inter_pbase[i], body_state(m, m->inter_ba[i], y),
+            body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, out, d->node_cache);
 }
 
 /* The state of the reports kept (rc_data.repc): the caller compares once
@@ -203,7 +211,7 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
             double *pout = d->pt_work; /* 5 npt values (rc_data_new) */
             t6out_r o;
             type6_r(m, i, mode, br, trk, d->inter_slip[i], d->pt_slip + m->inter_pbase[i],
-                    rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i],
+                    body_state(m, m->inter_ba[i], y), body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i],
                     NULL, NULL, NULL, &o, pout, d->node_cache);
             for (int j = 0; j < npt; j++) gp[j] = pout[5 * j];
             report_of(&o, &r); /* the same evaluation as rc_inter_report_eval_d */
@@ -214,7 +222,7 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
              * at about the cost of the copy, the root functions evaluate
              * them all */
             t6out_r o;
-            t6fast(m, i, mode, br, trk, rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y),
+            t6fast(m, i, mode, br, trk, body_state(m, m->inter_ba[i], y), body_state(m, m->inter_bb[i], y),
                    y + m->inter_eadr[i], NULL, NULL, NULL, &o, mode != RC_MODE_OPEN ? T6F_LAW : 0);
             r.p = o.p;
             r.vn = o.vn;

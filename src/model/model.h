@@ -448,7 +448,8 @@ int rc_root_count(const rc_model *m); /* all of them (coupling_contact.c) */
 /* Root functions [rc_root_count(m)]. */
 void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
 /* The interfaces the fast path evaluates (m->inter_fast, allocated here;
- * engine/assemble_rhs.c); RC_ENOMEM when out of memory. */
+ * engine/prepare.c, rule in engine/kernel_fast.inc); RC_ENOMEM when out of
+ * memory. */
 rc_status rc_fast_select(rc_model *m, rc_error *err);
 /* Whether interface i qualifies for the fast path (the rule of rc_fast_select). */
 int rc_fast_eligible(const rc_model *m, int i);

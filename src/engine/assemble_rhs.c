@@ -190,8 +190,8 @@ int rc_report_cache_get(const rc_data *d, int i, rc_inter_report *r)
 void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
 {
     /* the reports are kept for samples at the same state (rc_report_cache_get):
-     * the interfaces without contact points, whose report depends on the
-     * state and the four modes alone */
+     * the interfaces of the general kernel without contact points, whose
+     * report depends on the state and the four modes alone */
     rc_repcache *rc = d->repc && d->repc->on ? d->repc : NULL;
     int kept = 0; /* reports kept */
     for (int i = 0; i < m->ninter; i++) {
@@ -218,9 +218,9 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         } else if (is_fast(m, i)) {
             /* only what the roots below read of such an interface: P, the
              * approach rate, and the force when not open. Its report is not
-             * kept: a sample evaluates the few interfaces it samples afresh
-             * at about the cost of the copy, the root functions evaluate
-             * them all */
+             * kept: the sampler evaluates afresh the few interfaces whose
+             * impact is in progress, which costs less than a full report of
+             * every interface at every root evaluation */
             t6out_r o;
             t6fast(m, i, mode, br, trk, body_state(m, m->inter_ba[i], y), body_state(m, m->inter_bb[i], y),
                    y + m->inter_eadr[i], NULL, NULL, NULL, &o, mode != RC_MODE_OPEN ? T6F_LAW : 0);

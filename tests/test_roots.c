@@ -207,6 +207,16 @@ static void test_report_cache(void)
     rc_initial_state(m, y);
     rc_modes_init(m, d, 0.0, y);
     for (int i = 0; i < m->ninter; i++) d->inter_mode[i] = RC_MODE_CLOSED; /* every kernel evaluated */
+    /* the fast path's interfaces (all of cradle5's) keep none: the state is
+     * not kept either */
+    int nfast = 0;
+    for (int i = 0; i < m->ninter; i++) nfast += m->inter_fast[i];
+    ENSURE(nfast == m->ninter);
+    d->repc->on = 1;
+    rc_assemble_roots(m, d, 0.0, y, g);
+    ENSURE(!rc_report_cache_state(m, d, y));
+    /* the general kernel's reports are kept */
+    for (int i = 0; i < m->ninter; i++) m->inter_fast[i] = 0;
     /* not kept unless the driver asks */
     d->repc->on = 0;
     rc_assemble_roots(m, d, 0.0, y, g);

@@ -16,6 +16,18 @@
 #define RCK(name) name##_r
 #include "kernels.inc"
 #include "kernels_coupling.inc"
+#include "kernel_fast.inc"
+
+/* rc_body_state (body.c) inlined: the interfaces' loops call it twice per
+ * interface and evaluation. */
+static inline const double *body_state(const rc_model *m, int b, const double *y)
+{
+    if (b < 0) return m->ground_y0;
+    return m->body_yadr[b] >= 0 ? y + m->body_yadr[b] : m->body_y0 + RC_NB * b;
+}
+
+/* Interface i goes the fast path (kernel_fast.inc). */
+static inline int is_fast(const rc_model *m, int i) { return m->inter_fast && m->inter_fast[i]; }
 
 /* Acceleration slot (vdot, wdot) of body b in ydot, NULL when b has no states. */
 static double *acc_slot(const rc_model *m, int b, double *ydot)
@@ -39,9 +51,17 @@ int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, do
             memset(sdot, 0, (size_t)nst * sizeof(double));
             continue;
         }
-        type6_r(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
-                d->pt_slip + m->inter_pbase[i], rc_body_state(m, ba, y), rc_body_state(m, bb, y), y + m->inter_eadr[i],
-                acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot, NULL, NULL, d->node_cache);
+        if (is_fast(m, i)) {
+            t6out_r o;
+            t6fast(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], body_state(m, ba, y),
+                   body_state(m, bb, y), y + m->inter_eadr[i], acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot,
+                   &o, 0);
+        } else {
+            type6_r(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
+                    d->pt_slip + m->inter_pbase[i], body_state(m, ba, y), body_state(m, bb, y),
+                    y + m->inter_eadr[i], acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot, NULL, NULL,
+                    d->node_cache);
+        }
         for (int k = 0; k < nst; k++)
             if (!isfinite(sdot[k])) {
                 d->fail_inter = i;
@@ -110,8 +130,12 @@ static void report_eval(const rc_model *m, int i, int mode, int branch, int trac
                         const double *y, rc_inter_report *r, void *ncache)
 {
     t6out_r o;
-    type6_r(m, i, mode, branch, track, slip, pslip, rc_body_state(m, m->inter_ba[i], y),
-            rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, NULL, ncache);
+    if (is_fast(m, i))
+        t6fast(m, i, mode, branch, track, body_state(m, m->inter_ba[i], y), body_state(m, m->inter_bb[i], y),
+               y + m->inter_eadr[i], NULL, NULL, NULL, &o, T6F_LAW | T6F_FULL);
+    else
+        type6_r(m, i, mode, branch, track, slip, pslip, body_state(m, m->inter_ba[i], y),
+                body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, NULL, ncache);
     report_of(&o, r);
 }
 
@@ -140,8 +164,8 @@ void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip,
     if (d->inter_mode[i] != RC_MODE_CLOSED || npt == 0) return;
     t6out_r o;
     type6_r(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
-            slip ? slip : d->pt_slip + m->inter_pbase[i], rc_body_state(m, m->inter_ba[i], y),
-            rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, out, d->node_cache);
+            slip ? slip : d->pt_slip + m->inter_pbase[i], body_state(m, m->inter_ba[i], y),
+            body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, out, d->node_cache);
 }
 
 /* The state of the reports kept (rc_data.repc): the caller compares once
@@ -166,14 +190,10 @@ int rc_report_cache_get(const rc_data *d, int i, rc_inter_report *r)
 void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
 {
     /* the reports are kept for samples at the same state (rc_report_cache_get):
-     * the interfaces without contact points, whose report depends on the
-     * state and the four modes alone */
-    rc_repcache *rc = d->repc;
-    if (rc) {
-        rc->ok = rc->on;
-        if (rc->on) memcpy(rc->y, y, (size_t)m->ny * sizeof(double));
-        else rc = NULL;
-    }
+     * the interfaces of the general kernel without contact points, whose
+     * report depends on the state and the four modes alone */
+    rc_repcache *rc = d->repc && d->repc->on ? d->repc : NULL;
+    int kept = 0; /* reports kept */
     for (int i = 0; i < m->ninter; i++) {
         if (rc) rc->key[4 * i] = -1;
         double *gi = g + RC_ROOTS_PER_INTER * i;
@@ -191,10 +211,29 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
             double *pout = d->pt_work; /* 5 npt values (rc_data_new) */
             t6out_r o;
             type6_r(m, i, mode, br, trk, d->inter_slip[i], d->pt_slip + m->inter_pbase[i],
-                    rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i],
+                    body_state(m, m->inter_ba[i], y), body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i],
                     NULL, NULL, NULL, &o, pout, d->node_cache);
             for (int j = 0; j < npt; j++) gp[j] = pout[5 * j];
             report_of(&o, &r); /* the same evaluation as rc_inter_report_eval_d */
+        } else if (is_fast(m, i)) {
+            /* only what the roots below read of such an interface: P, the
+             * approach rate, and the force when not open. Its report is not
+             * kept: the sampler evaluates afresh the few interfaces whose
+             * impact is in progress, which costs less than a full report of
+             * every interface at every root evaluation */
+            t6out_r o;
+            t6fast(m, i, mode, br, trk, body_state(m, m->inter_ba[i], y), body_state(m, m->inter_bb[i], y),
+                   y + m->inter_eadr[i], NULL, NULL, NULL, &o, mode != RC_MODE_OPEN ? T6F_LAW : 0);
+            r.p = o.p;
+            r.vn = o.vn;
+            r.vn_raw = o.vn_raw;
+            r.offset = o.off;
+            r.fn = o.fel + o.fd;
+            r.fl = o.fl;
+            r.fu = o.fu;
+            r.fh = o.fh;
+            r.slip_root = 1.0;
+            for (int k = 0; k < 3; k++) r.vt[k] = 0.0;
         } else {
             rc_inter_report_eval_d(m, d, i, t, y, &r);
             if (rc && npt == 0) {
@@ -204,6 +243,7 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
                 k[2] = trk;
                 k[3] = d->inter_slip[i];
                 rc->rep[i] = r;
+                kept = 1;
             }
         }
         /* friction: stick -> slip at the limit, slip -> stick when sliding stops */
@@ -239,6 +279,11 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
             gi[RC_ROOT_TRK_A] = r.vn_raw;
             gi[RC_ROOT_TRK_B] = r.offset;
         }
+    }
+    /* the state of the reports kept (none kept: none to compare) */
+    if (d->repc) {
+        d->repc->ok = kept;
+        if (kept) memcpy(d->repc->y, y, (size_t)m->ny * sizeof(double));
     }
     /* contact couplings: after the interfaces' roots (contact_rhs.inc) */
     if (rc_cpl_nroots(m) > 0) rc_cpl_roots(m, d, t, y, g + rc_root_cpl_base(m));

@@ -41,6 +41,18 @@ static rc_status check_joints(const rc_model *m, rc_error *err)
     return st;
 }
 
+/* The interfaces the fast path evaluates (engine/kernel_fast.inc). */
+rc_status rc_fast_select(rc_model *m, rc_error *err)
+{
+    free(m->inter_fast);
+    m->inter_fast = NULL;
+    if (m->ninter == 0) return RC_OK;
+    m->inter_fast = malloc((size_t)m->ninter);
+    if (!m->inter_fast) RC_RAISE(err, RC_ENOMEM, "out of memory for the interfaces' kernel paths");
+    for (int i = 0; i < m->ninter; i++) m->inter_fast[i] = (unsigned char)rc_fast_eligible(m, i);
+    return RC_OK;
+}
+
 rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
 {
     rc_model *m = NULL;
@@ -49,6 +61,11 @@ rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
     rc_status st = rc_model_build(c, &m, err);
     rc_progress_done();
     if (st) return st;
+    st = rc_fast_select(m, err); /* the fast path per interface (kernel_fast.inc) */
+    if (st) {
+        rc_model_free(m);
+        return st;
+    }
     rc_progress_stage("scales and tolerances (interfaces)");
     st = rc_model_scales(m, err);
     if (!st) st = rc_model_tolerances(m, err);

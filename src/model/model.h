@@ -236,6 +236,10 @@ struct rc_model {
     rc_loc *inter_loc;   /* [ninter] header of the interface card, for messages */
     int *inter_law;      /* [ninter] normal law RC_LAW_TYPE6 / RC_LAW_POWER (power.h) */
     struct rc_power *inter_pw; /* [ninter] power-law parameters (power.h), law POWER */
+    unsigned char *inter_fast; /* [ninter] 1: evaluated in real arithmetic by the fast path
+                            (engine/kernel_fast.inc: a centred sphere against a sphere or a
+                            plane, no friction, no hysteresis state, no Inacti offset), set by
+                            rc_model_compile (rc_fast_select); NULL or 0: the general kernel */
 
     /* the model's own scales (scales.c, docs/theory.md 7.1), per interface;
      * NAN when the model gives none (no gravity, no speed reaching it) */
@@ -452,6 +456,12 @@ static inline int rc_root_cpl_base(const rc_model *m) { return RC_ROOTS_PER_INTE
 int rc_root_count(const rc_model *m); /* all of them (coupling_contact.c) */
 /* Root functions [rc_root_count(m)]. */
 void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
+/* The interfaces the fast path evaluates (m->inter_fast, allocated here;
+ * engine/prepare.c, rule in engine/kernel_fast.inc); RC_ENOMEM when out of
+ * memory. */
+rc_status rc_fast_select(rc_model *m, rc_error *err);
+/* Whether interface i qualifies for the fast path (the rule of rc_fast_select). */
+int rc_fast_eligible(const rc_model *m, int i);
 /* The root functions that can change sign in a run from t = 0 to tend,
  * from the interfaces' static configuration (no hysteresis law, no
  * Inacti 5, no friction, an activation window wider than the run: those

@@ -58,6 +58,18 @@ void rc_table_eval(const rc_table *t, double x, double *f, double *dfdx)
     *dfdx = gsl_interp_eval_deriv(t->interp, t->x, t->y, x, NULL);
 }
 
+double rc_table_value(const rc_table *t, double x)
+{
+    const int n = t->n;
+    /* the same operations as rc_table_eval, without the slope inside */
+    if (x <= t->x[0] || x >= t->x[n - 1]) {
+        int k = x <= t->x[0] ? 0 : n - 2;
+        double s = (t->y[k + 1] - t->y[k]) / (t->x[k + 1] - t->x[k]);
+        return t->y[k] + s * (x - t->x[k]);
+    }
+    return gsl_interp_eval(t->interp, t->x, t->y, x, NULL);
+}
+
 /* Exact integral of the piecewise-linear curve (with its linear extension)
  * from a to b: trapezoids between the breakpoints inside [a, b]. */
 double rc_table_integral(const rc_table *t, double a, double b)

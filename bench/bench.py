@@ -28,8 +28,9 @@ Programs (built by bench/run.sh into the build directory):
   peakrss        launcher that reports a child's own ru_maxrss (wait4)
 
 usage: /usr/bin/python3 bench/bench.py [--build DIR] [--quick]
-       [--only drop|column|quasi|ramp|stickslip|joint] [--sizes 10,100,1000]
-       [--qsizes 100,1000] [--ramps 20,100] [--json FILE]
+       [--only drop|column|quasi|ramp|stickslip|joint|stepcost|cascade] [--sizes 10,100,1000]
+       [--qsizes 100,1000] [--ramps 20,100] [--clock wall|cpu] [--work DIR] [--json FILE]
+       (ramp, stick-slip and cascade options: --help)
 Prints plain tables; writes the raw numbers to DIR/bench/results.json.
 """
 import argparse

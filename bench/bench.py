@@ -28,8 +28,9 @@ Programs (built by bench/run.sh into the build directory):
   peakrss        launcher that reports a child's own ru_maxrss (wait4)
 
 usage: /usr/bin/python3 bench/bench.py [--build DIR] [--quick]
-       [--only drop|column|quasi|ramp|stickslip|joint] [--sizes 10,100,1000]
-       [--qsizes 100,1000] [--ramps 20,100] [--json FILE]
+       [--only drop|column|quasi|ramp|stickslip|joint|stepcost|cascade] [--sizes 10,100,1000]
+       [--qsizes 100,1000] [--ramps 20,100] [--clock wall|cpu] [--work DIR] [--json FILE]
+       (ramp, stick-slip and cascade options: --help)
 Prints plain tables; writes the raw numbers to DIR/bench/results.json.
 """
 import argparse
@@ -119,16 +120,20 @@ def machine():
 
 
 class Bench:
-    def __init__(self, build, quick=False):
+    def __init__(self, build, quick=False, work=None, clock="wall"):
         self.build = os.path.abspath(build)
         self.ricochet = os.environ.get("RICOCHET", os.path.join(self.build, "ricochet"))
         self.rc_time = os.path.join(self.build, "rc_time")
         self.explicit = os.path.join(self.build, "explicit_ref")
         self.cvode = os.path.join(self.build, "cvode_ref")
         self.peakrss = os.path.join(self.build, "peakrss")
-        self.work = os.path.join(self.build, "bench")
+        self.work = os.path.abspath(work) if work else os.path.join(self.build, "bench")
         os.makedirs(self.work, exist_ok=True)
         self.quick = quick
+        # clock "cpu": every time in the tables is the CPU time of the timed part (cpu_time of explicit_ref,
+        # cvode_ref and rc_time; peakrss's cpu for a CLI process) instead of its wall time
+        self.clock = clock
+        self.last_cpu = None
         self.results = {"machine": machine()}
 
     def measured(self, argv, timeout=None):
@@ -148,7 +153,16 @@ class Bench:
         info = {}
         if os.path.exists(rssf):
             info = kv(open(rssf).read())
+        self.last_cpu = info.get("cpu")
         return rc, so, se, info.get("elapsed"), info.get("maxrss_kb")
+
+    def timed(self, d):
+        """key=value output d of a timed program: with the CPU clock, its
+        wall_time replaced by its cpu_time (the wall time kept as wall_clock)."""
+        if self.clock == "cpu" and "cpu_time" in d:
+            d["wall_clock"] = d["wall_time"]
+            d["wall_time"] = d["cpu_time"]
+        return d
 
     # ------------------------------------------------------------ ricochet
     def ricochet_run(self, deck, name, timeout=None, time_repeat=1):
@@ -161,7 +175,8 @@ class Bench:
         if os.path.exists(out):
             os.remove(out)
         rc, so, se, elapsed, rss = self.measured([self.ricochet, "run", case, "-o", out, "-q"], timeout)
-        r = {"ok": rc == 0, "rc": rc, "stderr": se.strip()[-400:], "elapsed": elapsed, "rss_kb": rss, "case": case}
+        r = {"ok": rc == 0, "rc": rc, "stderr": se.strip()[-400:], "elapsed": elapsed, "rss_kb": rss, "case": case,
+             "process_cpu": self.last_cpu}
         if not os.path.exists(out):
             return r
         try:
@@ -186,11 +201,13 @@ class Bench:
             os.remove(out)
         r["cli_wall"] = float(r["stats"].get("wall_time", float("nan")))
         r["wall"] = r["cli_wall"]
+        if self.clock == "cpu" and r["process_cpu"] is not None:
+            r["wall"] = r["process_cpu"]  # the CLI process's CPU time: load, compile and output included
         r["wall_src"] = "cli"
         if r["ok"] and time_repeat > 0:
             rc2, so2, se2, _, rss2 = self.measured([self.rc_time, case, time_repeat], timeout)
             if rc2 == 0:
-                t = kv(so2)
+                t = self.timed(kv(so2))
                 r["timing"] = t
                 r["wall"] = t["wall_time"]
                 r["wall_src"] = "rc_time"
@@ -204,7 +221,7 @@ class Bench:
             rc, so, se, elapsed, rss = self.measured([self.explicit] + list(args), timeout)
             if rc != 0:
                 return {"ok": False, "rc": rc, "stderr": (se + so).strip()}
-            d = kv(so)
+            d = self.timed(kv(so))
             d["ok"] = d.get("status") == "ok"
             d["rss_kb"] = rss
             d["elapsed"] = elapsed
@@ -218,7 +235,7 @@ class Bench:
         best = None
         for _ in range(repeat):
             rc, so, se, elapsed, rss = self.measured([self.cvode] + list(args), timeout)
-            d = kv(so)
+            d = self.timed(kv(so))
             if rc != 0 or d.get("status") != "ok":
                 return {"ok": False, "rc": rc, "stderr": (se + so).strip()[-300:]}
             d["ok"] = True
@@ -670,6 +687,13 @@ def settled_heights(N, p=QS):
     return z
 
 
+# options of case 3a (command line): the ricochet decks' absolute tolerances ("scaled": atol_pos = 1e-3 rtol m,
+# atol_vel = rtol m/s; "derived": only Rtol, the rest from the model's scales), their BDF Max_order, the
+# ricochet rtols and the explicit dt_factors run (None: the defaults of bench_ramp)
+# reuse_ref: take the RK4 references of an earlier run with the same arguments (files in the work directory)
+RAMP_OPTS = {"atol": "scaled", "max_order": 5, "rtols": None, "cvode_rtols": None, "dt_factors": None,
+             "reuse_ref": False}
+
 SMOOTH_POINTS = 20000  # samples of the smooth ramp in the deck's /FUNCT
 
 
@@ -704,7 +728,12 @@ def ramp_deck(N, T, rtol, p=QS, shape="linear"):
     for i in range(1, N):
         d.type6(i + 1, i, i + 1, 1, visc=c_ss, title=f"spheres {i}-{i + 1}")
     d.run(tend, tend / 20)
-    d.solver(rtol=rtol, atol_pos=1e-3 * rtol, atol_vel=rtol, atol_energy=rtol, max_steps=10**7)
+    if RAMP_OPTS["atol"] == "derived":  # blank Atol fields: derived from the model's scales (theory 7.1)
+        d.solver(rtol=rtol, atol_pos=0.0, atol_quat=0.0, atol_vel=0.0, atol_omega=0.0, atol_energy=0.0,
+                 max_order=RAMP_OPTS["max_order"], max_steps=10**7)
+    else:
+        d.solver(rtol=rtol, atol_pos=1e-3 * rtol, atol_vel=rtol, atol_energy=rtol,
+                 max_order=RAMP_OPTS["max_order"], max_steps=10**7)
     return d
 
 
@@ -736,9 +765,21 @@ def bench_ramp(B, sizes, ramps, shape="linear"):
             refs = {}
             for tag, hh in (("ref", h), ("ref2h", 2 * h)):
                 ff = os.path.join(B.work, f"ramp{key}_{tag}.txt")
-                x = B.explicit_run([sub[1]] + ramp_args(N, T) + [hh, ff])
-                if not x["ok"]:
-                    sys.exit(f"bench: RK4 reference failed: {x}")
+                argv = [sub[1]] + ramp_args(N, T) + [hh, ff]
+                saved = ff + ".json"  # the run's key=value output, for --reuse-ref
+                x = None
+                if RAMP_OPTS["reuse_ref"] and os.path.exists(saved) and os.path.exists(ff) \
+                        and os.path.getmtime(saved) > os.path.getmtime(B.explicit):
+                    with open(saved) as f:
+                        x = json.load(f)
+                    if x.get("argv") != [str(a) for a in argv]:
+                        x = None
+                if x is None:
+                    x = B.explicit_run(argv)
+                    if not x["ok"]:
+                        sys.exit(f"bench: RK4 reference failed: {x}")
+                    with open(saved, "w") as f:
+                        json.dump(dict(x, argv=[str(a) for a in argv]), f)
                 x["F"] = np.loadtxt(ff, ndmin=1)
                 refs[tag] = x
             F = refs["ref"]["F"]
@@ -759,9 +800,11 @@ def bench_ramp(B, sizes, ramps, shape="linear"):
 
             # ---- ricochet
             rows = []
-            rtols = (1e-4, 1e-6) if B.quick else (1e-4, 1e-6, 1e-8)
+            rtols = RAMP_OPTS["rtols"] or ((1e-4, 1e-6) if B.quick else (1e-4, 1e-6, 1e-8))
+            tag = ("_derived" if RAMP_OPTS["atol"] == "derived" else "") + (
+                f"_q{RAMP_OPTS['max_order']}" if RAMP_OPTS["max_order"] != 5 else "")
             for rtol in rtols:
-                r = B.ricochet_run(ramp_deck(N, T, rtol, shape=shape), f"ramp{key}_rtol{rtol:.0e}", timeout=1800,
+                r = B.ricochet_run(ramp_deck(N, T, rtol, shape=shape), f"ramp{key}_rtol{rtol:.0e}{tag}", timeout=1800,
                                    time_repeat=1 if N <= 100 else 0)
                 if "stats" not in r:
                     rows.append([f"{rtol:.0e}", "FAILED", fmt_t(r["elapsed"]), r["stderr"][:70]])
@@ -778,7 +821,10 @@ def bench_ramp(B, sizes, ramps, shape="linear"):
                 rows.append([f"{rtol:.0e}", fmt_t(r["wall"]) + ("" if r["wall_src"] == "rc_time" else " (CLI)"),
                              st.get("steps"), st.get("rhs_evals"), st.get("jac_evals"), st.get("lin_setups"),
                              st.get("events"), st.get("reinits"), st.get("err_test_fails"), fmt_e(err), fmt_e(es)])
-            table(f"N = {N}, T = {T:g} s: ricochet (atol_pos = 1e-3 rtol m, atol_vel = rtol m/s)",
+            table(f"N = {N}, T = {T:g} s: ricochet ("
+                  + ("absolute tolerances derived from the model" if RAMP_OPTS["atol"] == "derived"
+                     else "atol_pos = 1e-3 rtol m, atol_vel = rtol m/s")
+                  + f", BDF max order {RAMP_OPTS['max_order']})",
                   ["rtol", "wall", "steps", "RHS", "Jac", "LU", "events", "restarts", "err fails", "err vs RK4",
                    "err vs statics"], rows,
                   note="wall: rc_time (no output file), (CLI): the CLI's stats_wall_time (N = 1000); err = max over "
@@ -786,7 +832,9 @@ def bench_ramp(B, sizes, ramps, shape="linear"):
 
             # ---- plain CVODE
             rows = []
-            rtols = (1e-2, 1e-4, 1e-6) if B.quick else (1e-2, 1e-3, 1e-4, 1e-6, 1e-8)
+            rtols = RAMP_OPTS["cvode_rtols"]
+            if rtols is None:
+                rtols = (1e-2, 1e-4, 1e-6) if B.quick else (1e-2, 1e-3, 1e-4, 1e-6, 1e-8)
             for rtol in rtols:
                 ff = os.path.join(B.work, f"ramp{key}_cvode{rtol:.0e}.txt")
                 x = B.cvode_run([sub[0]] + ramp_args(N, T) + [rtol, ff], timeout=1800)
@@ -806,7 +854,7 @@ def bench_ramp(B, sizes, ramps, shape="linear"):
 
             # ---- explicit
             rows = []
-            factors = (1, 0.5) if B.quick else (1, 0.5, 0.2, 0.1)
+            factors = RAMP_OPTS["dt_factors"] or ((1, 0.5) if B.quick else (1, 0.5, 0.2, 0.1))
             for f in factors:
                 ff = os.path.join(B.work, f"ramp{key}_cd{f:g}.txt")
                 x = B.explicit_run([sub[0]] + ramp_args(N, T) + [f, ff], repeat=1)
@@ -831,6 +879,9 @@ def bench_ramp(B, sizes, ramps, shape="linear"):
 
 
 # -------------------------------------------------------------- stick-slip
+# options of case 3b (command line): the ricochet decks' absolute tolerances ("scaled": atol_pos = 1e-3 rtol m,
+# atol_vel = 1e-2 rtol m/s; "derived": only Rtol) and the ricochet rtols run
+SS_OPTS = {"atol": "scaled", "rtols": (1e-6, 1e-8, 1e-10), "dt_factors": None}
 SS = dict(m=1.0, R=0.05, k=1.0e6, ks=100.0, V=0.01, mus=0.4, muk=0.25, v1=2.8e-6, v2=5.6e-6, visf=1.0e6,
           manchor=1.0e12, L0=1.0, tend=100.0)
 
@@ -877,7 +928,11 @@ def ss_deck(tend, rtol, p=SS):
                title="Renard two-level: mu_s 0.4, mu_k 0.25, V_cr 2.8, 5.6 um/s; viscous VISF 1e6")
     d.spring(1, 2, (-p["L0"], 0.0, z0), 1, (0.0, 0.0, z0), a=p["ks"], title="spring 100 N/m to the anchor")
     d.run(tend, 0.5)
-    d.solver(rtol=rtol, atol_pos=1e-3 * rtol, atol_vel=1e-2 * rtol, atol_energy=rtol, max_steps=10**8)
+    if SS_OPTS["atol"] == "derived":  # blank Atol fields: derived from the model's scales (theory 7.1)
+        d.solver(rtol=rtol, atol_pos=0.0, atol_quat=0.0, atol_vel=0.0, atol_omega=0.0, atol_energy=0.0,
+                 max_steps=10**8)
+    else:
+        d.solver(rtol=rtol, atol_pos=1e-3 * rtol, atol_vel=1e-2 * rtol, atol_energy=rtol, max_steps=10**8)
     return d
 
 
@@ -1015,8 +1070,10 @@ def bench_stickslip(B):
                "sharp drop) differs from the regularised law by ~1e-3 and from the first cycle (start at rest)")
 
     rows = []
-    for rtol in (1e-6, 1e-8, 1e-10):
-        r = B.ricochet_run(ss_deck(p["tend"], rtol, p), f"stickslip_rtol{rtol:.0e}", timeout=900, time_repeat=3)
+    for rtol in SS_OPTS["rtols"]:
+        tag = "_derived" if SS_OPTS["atol"] == "derived" else ""
+        r = B.ricochet_run(ss_deck(p["tend"], rtol, p), f"stickslip_rtol{rtol:.0e}{tag}", timeout=900,
+                           time_repeat=3)
         if "stats" not in r:
             rows.append([f"{rtol:.0e}", "FAILED", r["stderr"][:70]])
             res["ricochet"].append({"rtol": rtol, "ok": False, "stderr": r["stderr"]})
@@ -1028,7 +1085,8 @@ def bench_stickslip(B):
         rows.append([f"{rtol:.0e}", fmt_t(r["wall"]), st.get("steps"), st.get("rhs_evals"), st.get("jac_evals"),
                      st.get("lin_setups"), st.get("events"), st.get("reinits"), m["slips"], f"{m['period']:.7f}",
                      fmt_e(m["period_err"]), fmt_e(m["dist_err"]), fmt_e(m["time_err"])])
-    table("stick-slip: ricochet (atol_pos = 1e-3 rtol m, atol_vel = 1e-2 rtol m/s)",
+    table("stick-slip: ricochet (" + ("absolute tolerances derived from the model" if SS_OPTS["atol"] == "derived"
+                                      else "atol_pos = 1e-3 rtol m, atol_vel = 1e-2 rtol m/s") + ")",
           ["rtol", "wall", "steps", "RHS", "Jac", "LU", "events", "restarts", "slips", "period [s]", "period err",
            "slip dist err", "switch time err"], rows,
           note="wall: rc_time (no output file); errors against the reference: period and slip distance relative, "
@@ -1062,7 +1120,7 @@ def bench_stickslip(B):
            "slip dist err", "switch time err"], rows)
 
     rows = []
-    for f in ((1, 0.5) if B.quick else (1, 0.5, 0.25, 0.1, 0.05)):
+    for f in SS_OPTS["dt_factors"] or ((1, 0.5) if B.quick else (1, 0.5, 0.25, 0.1, 0.05)):
         ff = os.path.join(B.work, f"stickslip_cd{f:g}.txt")
         x = B.explicit_run(["stickslip", p["m"], p["ks"], C, p["mus"], p["muk"], p["v1"], p["v2"], p["V"], p["tend"],
                             f, ff])
@@ -1233,13 +1291,105 @@ def bench_stepcost(B, old_build, repeat=3, cases=((100, 5.0), (1000, 0.02))):
     return res
 
 
+def bench_cascade(B, sizes, tend=5.0, rtol=1e-6, repeat=1, factors=(1, 0.1, 0.01), cli_from=None):
+    """Target 3, the impact cascade: the settling column (column_deck) over
+    tend at Rtol rtol with derived absolute tolerances, locked (the 1-D ODE)
+    and free, at each N of sizes. ricochet: the CLI run (netCDF: final-force
+    error, statistics) and, when repeat > 0, rc_time (integration without
+    output, best of repeat); the explicit scheme at each dt_factor; errors
+    against the event-located RK4 (h = 2e-5 s). Sizes >= cli_from are timed
+    by the CLI run alone (no rc_time run). Ends with the cost growth
+    exponents between successive sizes."""
+    q = dict(COL)
+    q["tend"], q["dtout"] = tend, tend / 10
+    res = {"rtol": rtol, "tend": tend, "sizes": {}}
+    print(f"== Impact cascade: settling column over {tend:g} s, ricochet Rtol {rtol:g} (derived atol) ==\n")
+    for N in sizes:
+        scale = N * q["m"] * G
+        ff = os.path.join(B.work, f"casc{N}_{tend:g}_ref.txt")
+        ref = B.explicit_run(["reference", N, q["R"], q["m"], q["k"], q["zeta"], -1, q["gap"], tend, 2e-5, "clip", ff])
+        if not ref["ok"]:
+            sys.exit(f"bench: RK4 reference failed: {ref}")
+        F = np.loadtxt(ff, ndmin=1)
+        S = {"N": N, "reference": {"events": ref["events"], "wall": ref["wall_time"]}, "ricochet": {}, "explicit": []}
+        rows = []
+        for var in ("locked", "free"):
+            name = f"casc{N}_{tend:g}_{var}_rtol{rtol:.0e}"
+            path = os.path.join(B.work, name + ".rad")
+            out = os.path.join(B.work, name + ".nc")
+            with open(path, "w") as f:
+                f.write(only_rtol_text(column_deck(N, rtol, q, locked=(var == "locked")), rtol))
+            rc, so, se, elapsed, rss = B.measured([B.ricochet, "run", path, "-o", out, "-q"], 7200)
+            pcpu = B.last_cpu
+            if rc != 0 or not os.path.exists(out):
+                rows.append([var, "FAILED", se.strip()[-70:]])
+                continue
+            with Dataset(out) as nc:
+                st = {k[len("stats_"):]: float(nc.getncattr(k)) for k in nc.ncattrs() if k.startswith("stats_")}
+                t_last = float(nc["time"][-1])
+                err = float(np.max(np.abs(np.array(nc["inter_force_normal"][-1, :]) - F)) / scale)
+            os.remove(out)
+            if abs(t_last - tend) > 1e-9:
+                err = float("nan")
+            walls = []
+            for _ in range(repeat if cli_from is None or N < cli_from else 0):
+                rc2, so2, _, _, _ = B.measured([B.rc_time, path, 1], 7200)
+                t = B.timed(kv(so2))
+                if rc2 == 0 and t.get("status") == "ok":
+                    walls.append(t["wall_time"])
+            wall = min(walls) if walls else (pcpu if B.clock == "cpu" and pcpu else st["wall_time"])
+            S["ricochet"][var] = {"wall": wall, "walls": walls, "cli_wall": st["wall_time"], "process": elapsed,
+                                  "process_cpu": pcpu, "stats": st, "error": err}
+            rows.append([var, fmt_t(wall) + ("" if walls else " (CLI)"), fmt_t(st["wall_time"]),
+                         fmt_t(pcpu if B.clock == "cpu" else elapsed),
+                         int(st["steps"]), int(st["events"]), int(st["reinits"]),
+                         f"{1e3 * wall / st['steps']:.4f}", fmt_e(err)])
+        table(f"N = {N}, {tend:g} s: ricochet Rtol {rtol:g} (RK4 reference: {ref['events']} events)",
+              ["deck", "time", "CLI wall", "process " + B.clock, "steps", "events", "restarts", "ms/step",
+               "final-force err"],
+              rows, note=f"time ({B.clock}): rc_time, best of {repeat} ((CLI): the CLI process's CPU time with "
+                         "--clock cpu, else its stats_wall_time); error = max over contacts |F - F_ref| / (N m g) "
+                         "at the end")
+        rows = []
+        for f in factors:
+            fx = os.path.join(B.work, f"casc{N}_{tend:g}_cd{f:g}.txt")
+            x = B.explicit_run(["column", N, q["R"], q["m"], q["k"], q["zeta"], q["gap"], tend, f, fx], repeat=1)
+            if not x["ok"]:
+                rows.append([f"{f:g}", "FAILED"])
+                continue
+            err = float(np.max(np.abs(np.loadtxt(fx, ndmin=1) - F)) / scale)
+            S["explicit"].append({"dt_factor": f, "dt": x["dt"], "steps": x["steps"], "wall": x["wall_time"],
+                                  "error": err, "events": x["events"]})
+            rows.append([f"{f:g}", f"{x['dt']:.3e}", fmt_t(x["wall_time"]), x["steps"], x["events"], fmt_e(err)])
+        table(f"N = {N}, {tend:g} s: explicit central difference", ["dt_factor", "dt [s]", "wall", "steps", "events",
+              "final-force err"], rows)
+        res["sizes"][str(N)] = S
+    rows = []
+    for a, b in zip(sizes, sizes[1:]):
+        Sa, Sb = res["sizes"][str(a)], res["sizes"][str(b)]
+        for var in ("locked", "free"):
+            if var in Sa["ricochet"] and var in Sb["ricochet"]:
+                ra, rb = Sa["ricochet"][var], Sb["ricochet"][var]
+                lr = math.log(b / a)
+                rows.append([f"{a} -> {b}", var, f"{math.log(rb['wall'] / ra['wall']) / lr:.2f}",
+                             f"{math.log(rb['stats']['steps'] / ra['stats']['steps']) / lr:.2f}"])
+        ea = next((x for x in Sa["explicit"] if x["dt_factor"] == 1), None)
+        eb = next((x for x in Sb["explicit"] if x["dt_factor"] == 1), None)
+        if ea and eb:
+            rows.append([f"{a} -> {b}", "explicit", f"{math.log(eb['wall'] / ea['wall']) / math.log(b / a):.2f}", "-"])
+    table("Cost growth exponents d log(cost) / d log(N)", ["N", "program", "wall", "steps"], rows)
+    return res
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--quick", action="store_true", help="fewer variants (smoke test)")
-    ap.add_argument("--only", choices=["drop", "column", "quasi", "ramp", "stickslip", "joint", "stepcost"],
+    ap.add_argument("--only",
+                    choices=["drop", "column", "quasi", "ramp", "stickslip", "joint", "stepcost", "cascade"],
                     help="quasi = ramp + stickslip; stepcost (not in the full run): the per-step cost of the free "
-                         "and the locked column against cvode_ref")
+                         "and the locked column against cvode_ref; cascade (not in the full run): target 3, the "
+                         "settling column locked and free at --sizes against the explicit scheme")
     ap.add_argument("--old-build", default=None,
                     help="stepcost: a second build directory (its rc_time and ricochet) run interleaved")
     ap.add_argument("--sizes", default="10,100,1000")
@@ -1247,9 +1397,42 @@ def main():
     ap.add_argument("--ramps", default="20,100", help="ramp durations [s]")
     ap.add_argument("--ramp-shape", default="linear", choices=["linear", "smooth", "both"],
                     help="linear (the default) or smooth: 1 + (1 - cos(pi t/T))/2, no kink at either end")
+    ap.add_argument("--ramp-atol", default="scaled", choices=["scaled", "derived"],
+                    help="ramp decks: atol_pos = 1e-3 rtol m, atol_vel = rtol m/s (scaled, the default) or only Rtol "
+                         "with the absolute tolerances derived from the model's scales (derived)")
+    ap.add_argument("--ramp-max-order", type=int, default=5, help="ramp decks: /SOLVER Max_order (1-5)")
+    ap.add_argument("--ramp-rtols", default=None, help="ramp: ricochet rtols, comma-separated")
+    ap.add_argument("--ramp-cvode-rtols", default=None,
+                    help="ramp: cvode_ref rtols, comma-separated (an empty string: none)")
+    ap.add_argument("--ramp-dt-factors", default=None, help="ramp: explicit dt_factors, comma-separated")
+    ap.add_argument("--reuse-ref", action="store_true",
+                    help="ramp: reuse the RK4 references of an earlier run with the same arguments (work directory)")
+    ap.add_argument("--cascade-tend", type=float, default=5.0, help="cascade: end time [s]")
+    ap.add_argument("--cascade-rtol", type=float, default=1e-6, help="cascade: ricochet Rtol (derived atol)")
+    ap.add_argument("--cascade-dt-factors", default="1,0.1,0.01", help="cascade: explicit dt_factors")
+    ap.add_argument("--cascade-cli-from", type=int, default=None,
+                    help="cascade: sizes >= this are timed by their CLI run only (no rc_time run)")
+    ap.add_argument("--repeat", type=int, default=1, help="cascade: rc_time runs per deck (best of; 0: CLI wall)")
+    ap.add_argument("--ss-atol", default="scaled", choices=["scaled", "derived"],
+                    help="stick-slip decks: atol_pos = 1e-3 rtol m, atol_vel = 1e-2 rtol m/s (scaled, the default) "
+                         "or only Rtol, the absolute tolerances derived from the model's scales (derived)")
+    ap.add_argument("--ss-dt-factors", default=None, help="stick-slip: explicit dt_factors, comma-separated")
+    ap.add_argument("--ss-rtols", default="1e-6,1e-8,1e-10", help="stick-slip: ricochet rtols, comma-separated")
+    ap.add_argument("--clock", default="wall", choices=["wall", "cpu"],
+                    help="times in the tables: wall (the default) or the CPU time of the same timed part (steadier "
+                         "on a shared machine)")
+    ap.add_argument("--work", default=None, help="directory of the decks and outputs (default BUILD/bench)")
     ap.add_argument("--json", default=None)
     a = ap.parse_args()
-    B = Bench(a.build, a.quick)
+
+    def floats(text):
+        return None if text is None else tuple(float(x) for x in text.split(",") if x)
+
+    RAMP_OPTS.update(atol=a.ramp_atol, max_order=a.ramp_max_order, rtols=floats(a.ramp_rtols),
+                     cvode_rtols=floats(a.ramp_cvode_rtols), dt_factors=floats(a.ramp_dt_factors),
+                     reuse_ref=a.reuse_ref)
+    SS_OPTS.update(atol=a.ss_atol, rtols=floats(a.ss_rtols), dt_factors=floats(a.ss_dt_factors))
+    B = Bench(a.build, a.quick, a.work, a.clock)
     for exe in (B.ricochet, B.rc_time, B.explicit, B.peakrss, B.cvode):
         if not os.access(exe, os.X_OK):
             sys.exit(f"bench: {exe} missing (run `make bench`, or `make all` then `bash bench/run.sh build`)")
@@ -1258,7 +1441,7 @@ def main():
         sys.exit(f"bench: {B.rc_time} is older than {lib}: rebuild it (bash bench/run.sh {a.build})")
     m = B.results["machine"]
     print(f"machine: {m['cpu']}, {m['cores']} cores, Linux {m['kernel']}")
-    print(f"ricochet: {B.ricochet}\n")
+    print(f"ricochet: {B.ricochet}; times: {a.clock}\n")
     t0 = time.time()
     if a.only in (None, "drop"):
         B.results["drop"] = bench_drop(B)
@@ -1273,6 +1456,11 @@ def main():
         B.results["stickslip"] = bench_stickslip(B)
     if a.only in (None, "joint"):
         B.results["joint"] = bench_joint(B)
+    if a.only == "cascade":
+        B.results["cascade"] = bench_cascade(B, [int(s) for s in a.sizes.split(",") if s], a.cascade_tend,
+                                             a.cascade_rtol, a.repeat,
+                                             tuple(float(x) for x in a.cascade_dt_factors.split(",") if x),
+                                             a.cascade_cli_from)
     if a.only == "stepcost":
         B.results["stepcost"] = bench_stepcost(B, a.old_build)
     B.results["bench_wall"] = time.time() - t0

@@ -103,6 +103,15 @@ static double now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* CPU time of this process (user + system) [s]: less sensitive than the
+ * wall time to other jobs on a shared machine */
+static double cpu_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 static long peak_rss_kb(void)
 {
     struct rusage ru;
@@ -331,7 +340,7 @@ static int run(long N, double R, double m, double k, double zeta, double gap, in
     memset(&tot, 0, sizeof tot);
     int fresh = 0;
     double t = 0.0;
-    const double t0 = now();
+    const double t0 = now(), cpu0 = cpu_now();
     while (t < t_end) {
         long nst0 = 0, nst1 = 0;
         if (fresh) {
@@ -382,6 +391,7 @@ static int run(long N, double R, double m, double k, double zeta, double gap, in
         }
     }
     const double wall = now() - t0;
+    printf("cpu_time=%.9e\n", cpu_now() - cpu0);
 
     add_counts(cv, &tot);
 
@@ -552,7 +562,7 @@ static int run_stickslip(double m, double ks, double C, double mus, double muk, 
     memset(&tot, 0, sizeof tot);
     int fresh = 0;
     double t = 0.0;
-    const double t0 = now();
+    const double t0 = now(), cpu0 = cpu_now();
     while (t < t_end) {
         long nst0 = 0, nst1 = 0;
         if (fresh) {
@@ -599,6 +609,7 @@ static int run_stickslip(double m, double ks, double C, double mus, double muk, 
         }
     }
     const double wall = now() - t0;
+    printf("cpu_time=%.9e\n", cpu_now() - cpu0);
     add_counts(cv, &tot);
     printf("case=stickslip\nstatus=ok\nrtol=%.3e\n", rtol);
     printf("steps=%ld\nrhs_evals=%ld\njac_evals=%ld\nlin_setups=%ld\nerr_test_fails=%ld\nnewton_iters=%ld\n"

@@ -106,6 +106,15 @@ static double now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* CPU time of this process (user + system) [s]: less sensitive than the
+ * wall time to other jobs on a shared machine */
+static double cpu_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 static long peak_rss_kb(void)
 {
     struct rusage ru;
@@ -162,7 +171,7 @@ static int run_drop(double m, double k, double c, double h, double t_end, double
     int nin = 0, nout = 0;
     long events = 0, force_evals = 0;
 
-    const double t0 = now();
+    const double t0 = now(), cpu0 = cpu_now();
     double d = h, v = 0.0;            /* d_n, v at whole step n (start) */
     double f_raw = 0.0, f = 0.0;
     int active = 0;
@@ -206,6 +215,7 @@ static int run_drop(double m, double k, double c, double h, double t_end, double
         d += dt * vh;
     }
     const double wall = now() - t0;
+    printf("cpu_time=%.9e\n", cpu_now() - cpu0);
     if (!isfinite(d) || !isfinite(vh)) {
         printf("status=unstable\n");
         return 3;
@@ -278,7 +288,7 @@ static int run_column(long N, double R, double m, double k, double zeta, double 
         for (long j = 0; j < N; j++) active[j] = 1;
     long events = 0, force_evals = 0;
 
-    const double t0 = now();
+    const double t0 = now(), cpu0 = cpu_now();
     /* v_{-1/2} = v_0 - dt/2 a_0 */
     column_forces(N, k, c0, c1, R, z, vh, f, active, &events);
     for (long i = 0; i < N; i++) {
@@ -299,6 +309,7 @@ static int run_column(long N, double R, double m, double k, double zeta, double 
     column_forces(N, k, c0, c1, R, z, vh, f, active, &events);
     force_evals++;
     const double wall = now() - t0;
+    printf("cpu_time=%.9e\n", cpu_now() - cpu0);
 
     double vmax = 0.0, ekin = 0.0;
     int finite = 1;
@@ -476,7 +487,7 @@ static int run_reference(long N, double R, double m, double k, double zeta, doub
     long events = 0, steps = 0, cuts = 0;
     const double ttol = 1e-13;
 
-    const double t0 = now();
+    const double t0 = now(), cpu0 = cpu_now();
     double t = 0.0;
     while (t < t_end) {
         double hs = fmin(h, t_end - t);
@@ -523,6 +534,7 @@ static int run_reference(long N, double R, double m, double k, double zeta, doub
         steps++;
     }
     const double wall = now() - t0;
+    printf("cpu_time=%.9e\n", cpu_now() - cpu0);
     double vmax = 0.0;
     int finite = 1;
     for (long i = 0; i < N; i++) {
@@ -611,7 +623,7 @@ static int run_stickslip(double m, double ks, double C, double mus, double muk, 
     long events = 0, slips = 0;
     int slipping = 0;
 
-    const double t0 = now();
+    const double t0 = now(), cpu0 = cpu_now();
     double x = 0.0, uh = 0.0, a = 0.0;
     /* force at t = 0 (at rest, spring relaxed): 0; u_{-1/2} = u_0 - dt/2 a_0 */
     uh = 0.0;
@@ -642,6 +654,7 @@ static int run_stickslip(double m, double ks, double C, double mus, double muk, 
         x += dt * uh;
     }
     const double wall = now() - t0;
+    printf("cpu_time=%.9e\n", cpu_now() - cpu0);
     if (!isfinite(x) || !isfinite(uh)) {
         printf("status=unstable\n");
         return 3;

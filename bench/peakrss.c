@@ -4,7 +4,8 @@
  *   peakrss OUTFILE PROGRAM [ARGS...]
  *
  * Forks, execs PROGRAM, waits with wait4() and writes the child's ru_maxrss
- * [kB] and its elapsed wall time to OUTFILE ("maxrss_kb=... elapsed=...");
+ * [kB], its elapsed wall time and its CPU time (user + system) to OUTFILE
+ * ("maxrss_kb=... elapsed=... cpu=...");
  * exits with the child's exit code. SIGTERM or SIGINT to peakrss kills the
  * child (SIGKILL), so that a timeout in the driver stops the measured run. The benchmark driver starts every
  * measured program through this small process: a program forked directly
@@ -69,8 +70,10 @@ int main(int argc, char **argv)
     clock_gettime(CLOCK_MONOTONIC, &t1);
     FILE *f = fopen(argv[1], "w");
     if (f) {
-        fprintf(f, "maxrss_kb=%ld\nelapsed=%.9e\n", ru.ru_maxrss,
-                (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
+        fprintf(f, "maxrss_kb=%ld\nelapsed=%.9e\ncpu=%.9e\n", ru.ru_maxrss,
+                (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec),
+                (double)(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec)
+                    + 1e-6 * (double)(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec));
         fclose(f);
     }
     if (WIFEXITED(status)) return WEXITSTATUS(status);

@@ -28,6 +28,15 @@ static double now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* CPU time of this process (user + system) [s]: less sensitive than the
+ * wall time to other jobs on a shared machine */
+static double cpu_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2 || argc > 4) {
@@ -54,12 +63,15 @@ int main(int argc, char **argv)
     rc_stats best;
     memset(&best, 0, sizeof best);
     int status = 0;
+    double best_cpu = 0.0; /* the least CPU time of the runs (rc_run whole, set-up included) */
     for (int k = 0; k < (repeat > 0 ? repeat : 1); k++) {
         rc_run_options opt;
         memset(&opt, 0, sizeof opt);
         opt.t_end_override = t_end;
         rc_stats s;
+        const double c0 = cpu_now();
         rc_status st = rc_run(m, &opt, &s, &e);
+        const double cpu = cpu_now() - c0;
         if (st) {
             fprintf(stderr, "rc_time: %s\n", e.msg);
             status = rc_status_exit_code(st);
@@ -67,6 +79,7 @@ int main(int argc, char **argv)
             break;
         }
         if (k == 0 || s.wall_time < best.wall_time) best = s;
+        if (k == 0 || cpu < best_cpu) best_cpu = cpu;
     }
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
@@ -78,6 +91,7 @@ int main(int argc, char **argv)
            best.err_test_fails, best.root_evals, best.events, best.reinits);
     printf("t_end=%.12e\nwall_time=%.9e\nenergy_residual=%.9e\npeak_rss_kb=%ld\n", best.t_end, best.wall_time,
            best.energy_residual, ru.ru_maxrss);
+    printf("cpu_time=%.9e\n", best_cpu);
     rc_model_free(m);
     rc_case_free(c);
     return status;

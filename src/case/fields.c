@@ -327,8 +327,21 @@ static rc_status rc_parse_field(rc_reader *rd, const rc_block *b, const rc_line 
     double dv = 0;
     /* the text as found, for messages */
     f->blank = n == 0;
-    if (f->blank) snprintf(f->got, sizeof f->got, "blank");
-    else snprintf(f->got, sizeof f->got, "\"%.*s%s\"", n > 40 ? 40 : n, s, n > 40 ? "..." : "");
+    if (f->blank) memcpy(f->got, "blank", 6);
+    else { /* "text" quoted, cut after 40 characters with "..." (written
+            * directly: a printf per field was a fifth of reading a deck) */
+        const int k = n > 40 ? 40 : n;
+        char *g = f->got;
+        *g++ = '"';
+        memcpy(g, s, (size_t)k);
+        g += k;
+        if (n > 40) {
+            memcpy(g, "...", 3);
+            g += 3;
+        }
+        *g++ = '"';
+        *g = '\0';
+    }
 
     switch (f->type) {
     case RC_FT_SKIP:

@@ -51,30 +51,11 @@ static void probe(void *ctx, const rc_model *m, const rc_data *d, double t, cons
         if (jsave[k] != 0.0 && !p->keep[k]) p->outside_mut++;
 }
 
-typedef struct evlog {
-    int n;
-    double t[4096];
-    char kind[4096][24], elem[4096][32];
-} evlog;
-
-static int on_event(void *user, double t, const char *kind, const char *element, const double values[3])
-{
-    (void)values;
-    evlog *l = user;
-    if (l->n < 4096) {
-        l->t[l->n] = t;
-        snprintf(l->kind[l->n], sizeof l->kind[0], "%s", kind);
-        snprintf(l->elem[l->n], sizeof l->elem[0], "%s", element);
-    }
-    l->n++;
-    return 0;
-}
-
 /* One run of m on s with the part on or off: events, final state, stats. */
-static rc_status run_once(const rc_model *m, const rc_solver *s, int on, evlog *l, double *yend, rc_stats *st)
+static rc_status run_once(const rc_model *m, const rc_solver *s, int on, tu_evlog *l, double *yend, rc_stats *st)
 {
     rc_error e;
-    rc_run_options o = {.y_end = yend, .on_event = on_event, .user = l};
+    rc_run_options o = {.y_end = yend, .on_event = tu_evlog_event, .user = l};
     rc_actpart_set_enabled(on);
     rc_status r = s->run(m, &o, NULL, st, &e);
     rc_actpart_set_enabled(1);
@@ -134,7 +115,7 @@ static void check_deck(const deck_case *dc, const rc_solver *s)
     memset(&p, 0, sizeof p);
     p.keep = malloc((size_t)m->nnz + 1);
     double *ya = calloc((size_t)m->ny, sizeof(double)), *yb = calloc((size_t)m->ny, sizeof(double));
-    evlog *la = calloc(1, sizeof *la), *lb = calloc(1, sizeof *lb);
+    tu_evlog *la = calloc(1, sizeof *la), *lb = calloc(1, sizeof *lb);
     ENSURE(p.keep && ya && yb && la && lb);
     if (!p.keep || !ya || !yb || !la || !lb) goto out;
     rc_stats sa, sb;
@@ -146,7 +127,7 @@ static void check_deck(const deck_case *dc, const rc_solver *s)
     ENSURE(run_once(m, s, 0, lb, yb, &sb) == RC_OK);
     double dt = 0;
     int same = la->n == lb->n;
-    for (int k = 0; same && k < la->n && k < 4096; k++) {
+    for (int k = 0; same && k < la->n && k < TU_MAXEV; k++) {
         same = strcmp(la->kind[k], lb->kind[k]) == 0 && strcmp(la->elem[k], lb->elem[k]) == 0;
         dt = fmax(dt, fabs(la->t[k] - lb->t[k]) / m->tend);
     }

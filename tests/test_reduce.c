@@ -15,27 +15,6 @@
 #include "solver/solver.h"
 #include "testutil.h"
 
-#define MAXEV 4096
-
-typedef struct {
-    int n;
-    double t[MAXEV];
-    char kind[MAXEV][32], elem[MAXEV][32];
-} evlog;
-
-static int on_event(void *user, double t, const char *kind, const char *element, const double values[3])
-{
-    (void)values;
-    evlog *l = user;
-    if (l->n < MAXEV) {
-        l->t[l->n] = t;
-        snprintf(l->kind[l->n], sizeof l->kind[0], "%s", kind);
-        snprintf(l->elem[l->n], sizeof l->elem[0], "%s", element);
-    }
-    l->n++;
-    return 0;
-}
-
 /* Three bodies on a floor plane (z = 0), gravity -z:
  *  1 a sphere whose translations are held (/BCS 111 000), spinning freely
  *    at omega0 = (3, -2, 5) rad/s with an isotropic inertia: no torque, so
@@ -345,7 +324,7 @@ static double *same_runs(const rc_model *m, const char *what, double dt_ev, doub
     double *ya = calloc((size_t)ny + 1, sizeof(double)), *yb = calloc((size_t)ny + 1, sizeof(double));
     double *y0 = calloc((size_t)ny + 1, sizeof(double));
     char *cst = calloc((size_t)ny + 1, 1);
-    evlog *la = calloc(1, sizeof *la), *lb = calloc(1, sizeof *lb);
+    tu_evlog *la = calloc(1, sizeof *la), *lb = calloc(1, sizeof *lb);
     int *ix = malloc(((size_t)ny + 1) * sizeof(int)), *iv = malloc(((size_t)ny + 1) * sizeof(int));
     int *ir = malloc(((size_t)ny + 1) * sizeof(int));
     ENSURE(ya && yb && y0 && cst && la && lb && ix && iv && ir);
@@ -354,17 +333,17 @@ static double *same_runs(const rc_model *m, const char *what, double dt_ev, doub
     const int nc = rc_constant_states(m, y0, NULL, cst);
     rc_error e;
     rc_stats sa, sb;
-    rc_run_options oa = {.y_end = ya, .on_event = on_event, .user = la};
-    rc_run_options ob = {.y_end = yb, .on_event = on_event, .user = lb};
+    rc_run_options oa = {.y_end = ya, .on_event = tu_evlog_event, .user = la};
+    rc_run_options ob = {.y_end = yb, .on_event = tu_evlog_event, .user = lb};
     rc_cvode_set_reduce(1);
     ENSURE(rc_solver_cvode.run(m, &oa, NULL, &sa, &e) == RC_OK);
     rc_cvode_set_reduce(0);
     ENSURE(rc_solver_cvode.run(m, &ob, NULL, &sb, &e) == RC_OK);
     rc_cvode_set_reduce(1);
     ENSURE(nc > 0);
-    ENSURE(la->n == lb->n && la->n <= MAXEV);
+    ENSURE(la->n == lb->n && la->n <= TU_MAXEV);
     double dt = 0;
-    for (int k = 0; k < la->n && k < lb->n && k < MAXEV; k++) {
+    for (int k = 0; k < la->n && k < lb->n && k < TU_MAXEV; k++) {
         ENSURE(strcmp(la->kind[k], lb->kind[k]) == 0 && strcmp(la->elem[k], lb->elem[k]) == 0);
         dt = fmax(dt, fabs(la->t[k] - lb->t[k]));
     }

@@ -15,27 +15,6 @@
 #include "solver/solver.h"
 #include "testutil.h"
 
-#define MAXEV 4096
-
-typedef struct {
-    int n;
-    double t[MAXEV], v[MAXEV][3];
-    char kind[MAXEV][32], elem[MAXEV][32];
-} evlog;
-
-static int on_event(void *user, double t, const char *kind, const char *element, const double values[3])
-{
-    evlog *l = user;
-    if (l->n < MAXEV) {
-        l->t[l->n] = t;
-        memcpy(l->v[l->n], values, sizeof l->v[0]);
-        snprintf(l->kind[l->n], sizeof l->kind[0], "%s", kind);
-        snprintf(l->elem[l->n], sizeof l->elem[0], "%s", element);
-    }
-    l->n++;
-    return 0;
-}
-
 /* 1 when interface i's root k is in the live list */
 static int is_live(const int *live, int n, int i, int k)
 {
@@ -49,22 +28,22 @@ static void same_runs(const rc_model *m, const rc_solver *s, const char *what)
 {
     const int ny = m->ny;
     double *ya = calloc((size_t)ny, sizeof(double)), *yb = calloc((size_t)ny, sizeof(double));
-    evlog *la = calloc(1, sizeof *la), *lb = calloc(1, sizeof *lb);
+    tu_evlog *la = calloc(1, sizeof *la), *lb = calloc(1, sizeof *lb);
     ENSURE(ya && yb && la && lb);
     if (!ya || !yb || !la || !lb) goto out;
     rc_error e;
     rc_stats sa, sb;
-    rc_run_options oa = {.y_end = ya, .on_event = on_event, .user = la};
-    rc_run_options ob = {.y_end = yb, .on_event = on_event, .user = lb};
+    rc_run_options oa = {.y_end = ya, .on_event = tu_evlog_event, .user = la};
+    rc_run_options ob = {.y_end = yb, .on_event = tu_evlog_event, .user = lb};
     rc_rootmap_set_compact(1);
     ENSURE(s->run(m, &oa, NULL, &sa, &e) == RC_OK);
     rc_rootmap_set_compact(0);
     ENSURE(s->run(m, &ob, NULL, &sb, &e) == RC_OK);
     rc_rootmap_set_compact(1);
     printf("    %s, %s: %d events, %ld / %ld steps (compact / all roots)\n", what, s->name, la->n, sa.steps, sb.steps);
-    ENSURE(la->n > 0 && la->n == lb->n && la->n <= MAXEV);
+    ENSURE(la->n > 0 && la->n == lb->n && la->n <= TU_MAXEV);
     ENSURE(sa.steps == sb.steps);
-    for (int k = 0; k < la->n && k < lb->n && k < MAXEV; k++) {
+    for (int k = 0; k < la->n && k < lb->n && k < TU_MAXEV; k++) {
         ENSURE(la->t[k] == lb->t[k]);
         ENSURE(strcmp(la->kind[k], lb->kind[k]) == 0 && strcmp(la->elem[k], lb->elem[k]) == 0);
         ENSURE(memcmp(la->v[k], lb->v[k], sizeof la->v[k]) == 0);

@@ -404,26 +404,6 @@ out:
     rc_model_free(m);
 }
 
-#define TF_MAXEV 4096
-typedef struct {
-    int n;
-    double t[TF_MAXEV];
-    char kind[TF_MAXEV][32], elem[TF_MAXEV][32];
-} tf_evlog;
-
-static int tf_event(void *user, double t, const char *kind, const char *element, const double values[3])
-{
-    (void)values;
-    tf_evlog *l = user;
-    if (l->n < TF_MAXEV) {
-        l->t[l->n] = t;
-        snprintf(l->kind[l->n], sizeof l->kind[0], "%s", kind);
-        snprintf(l->elem[l->n], sizeof l->elem[0], "%s", element);
-    }
-    l->n++;
-    return 0;
-}
-
 /* The column of 5 (staggered, pushed sideways: the spheres move in 3-D)
  * on CVODE with the rotations left out and with every state: the same
  * events within 5e-9 s, final positions within 1e-10 m, velocities within
@@ -441,23 +421,23 @@ static void test_torquefree_runs(void)
     const int ny = m->ny;
     double *ya = calloc((size_t)ny + 1, sizeof(double)), *yb = calloc((size_t)ny + 1, sizeof(double));
     double *y0 = calloc((size_t)ny + 1, sizeof(double));
-    tf_evlog *la = calloc(1, sizeof *la), *lb = calloc(1, sizeof *lb);
+    tu_evlog *la = calloc(1, sizeof *la), *lb = calloc(1, sizeof *lb);
     rc_data *da = rc_data_new(m), *db = rc_data_new(m);
     ENSURE(ya && yb && y0 && la && lb && da && db);
     if (!ya || !yb || !y0 || !la || !lb || !da || !db) goto out;
     rc_initial_state(m, y0);
     rc_error e;
     rc_stats sa, sb;
-    rc_run_options oa = {.y_end = ya, .on_event = tf_event, .user = la};
-    rc_run_options ob = {.y_end = yb, .on_event = tf_event, .user = lb};
+    rc_run_options oa = {.y_end = ya, .on_event = tu_evlog_event, .user = la};
+    rc_run_options ob = {.y_end = yb, .on_event = tu_evlog_event, .user = lb};
     rc_cvode_set_reduce(1);
     ENSURE(rc_solver_cvode.run(m, &oa, NULL, &sa, &e) == RC_OK);
     rc_cvode_set_reduce(0);
     ENSURE(rc_solver_cvode.run(m, &ob, NULL, &sb, &e) == RC_OK);
     rc_cvode_set_reduce(1);
-    ENSURE(la->n == lb->n && la->n > 5 && la->n <= TF_MAXEV);
+    ENSURE(la->n == lb->n && la->n > 5 && la->n <= TU_MAXEV);
     double dt = 0.0, dx = 0.0, dv = 0.0, dfn = 0.0, fbig = 0.0;
-    for (int k = 0; k < la->n && k < lb->n && k < TF_MAXEV; k++) {
+    for (int k = 0; k < la->n && k < lb->n && k < TU_MAXEV; k++) {
         ENSURE(strcmp(la->kind[k], lb->kind[k]) == 0 && strcmp(la->elem[k], lb->elem[k]) == 0);
         dt = fmax(dt, fabs(la->t[k] - lb->t[k]));
     }

@@ -181,3 +181,16 @@ double tu_dae_jac_fd_error(int n, double *Y, double *Yp, double cj, const int64_
     free(r2);
     return worst;
 }
+
+int tu_evlog_event(void *user, double t, const char *kind, const char *element, const double values[3])
+{
+    tu_evlog *l = user;
+    if (l->n < TU_MAXEV) {
+        l->t[l->n] = t;
+        memcpy(l->v[l->n], values, sizeof l->v[0]);
+        snprintf(l->kind[l->n], sizeof l->kind[0], "%s", kind);
+        snprintf(l->elem[l->n], sizeof l->elem[0], "%s", element);
+    }
+    l->n++;
+    return 0;
+}

@@ -55,4 +55,14 @@ typedef struct {
 double tu_dae_jac_fd_error(int n, double *Y, double *Yp, double cj, const int64_t *cp, const int64_t *ri,
                            const double *val, tu_residual_fn res, void *ctx, const tu_dae_fd_opts *o, int *outside);
 
+/* A run's events as the on_event callback of rc_run_options reports them
+ * (the first TU_MAXEV kept; n counts all): user = a tu_evlog, zeroed. */
+#define TU_MAXEV 4096
+typedef struct {
+    int n;
+    double t[TU_MAXEV], v[TU_MAXEV][3];
+    char kind[TU_MAXEV][32], elem[TU_MAXEV][32];
+} tu_evlog;
+int tu_evlog_event(void *user, double t, const char *kind, const char *element, const double values[3]);
+
 #endif

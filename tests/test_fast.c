@@ -250,7 +250,31 @@ static void test_fast_path_matches_general_kernel(void)
  * (assemble_jac.c, fast_inter) against the general kernel's complex-step
  * blocks (m->inter_fast NULL) at random states in every mode; entries
  * compared relative to the largest of their row (a sum that cancels to
- * near zero carries its terms' rounding). Returns the largest difference. */
+ * near zero carries its terms' rounding); then after mode changes the
+ * fast blocks refreshed alone against a whole general assembly. Returns
+ * the largest difference. */
+/* Largest |a - b| over the pattern, relative to the largest entry of its
+ * row (keep: or of the row's scale in rmax from before); counts the entries
+ * (n) and the non-zero ones (nz). */
+static double jac_diff(const rc_model *m, const double *va, const double *vb, double *rmax, int keep, long *n,
+                       long *nz)
+{
+    double worst = 0.0;
+    if (!keep) memset(rmax, 0, (size_t)m->ny * sizeof(double));
+    for (int64_t k = 0; k < m->nnz; k++) {
+        const int r = m->jac_rowind[k];
+        rmax[r] = fmax(rmax[r], fmax(fabs(va[k]), fabs(vb[k])));
+    }
+    for (int64_t k = 0; k < m->nnz; k++) {
+        (*n)++;
+        *nz += va[k] != 0.0;
+        const double den = rmax[m->jac_rowind[k]];
+        const double rel = isnan(va[k]) || isnan(vb[k]) ? INFINITY : den > 0 ? fabs(va[k] - vb[k]) / den : 0.0;
+        if (!(rel <= worst)) worst = rel;
+    }
+    return worst;
+}
+
 static double compare_jac(const char *path, int trials, long *n, long *nz)
 {
     rc_error e;
@@ -279,21 +303,29 @@ static double compare_jac(const char *path, int trials, long *n, long *nz)
         const double t = 0.29 * (trial + 1) / trials;
         m->inter_fast = NULL;
         const int sta = rc_assemble_jac(m, d, t, y, va);
+        /* the blocks cached for the refresh below: the fast assembly's own
+         * (it writes only its positions once the cache holds blocks) */
+        ENSURE(d->jcache != NULL && d->jcache_ok);
+        if (d->jcache)
+            for (int64_t k = 0; k < d->jcache_off[m->ninter]; k++) d->jcache[k] = 12345.0;
         m->inter_fast = fast;
         const int stb = rc_assemble_jac(m, d, t, y, vb);
         ENSURE(sta == stb);
-        memset(rmax, 0, (size_t)ny * sizeof(double));
-        for (int64_t k = 0; k < m->nnz; k++) {
-            const int r = m->jac_rowind[k];
-            rmax[r] = fmax(rmax[r], fmax(fabs(va[k]), fabs(vb[k])));
+        worst = fmax(worst, jac_diff(m, va, vb, rmax, 0, n, nz));
+        /* a mode change refreshes the fast blocks alone (rc_jac_refresh_inter,
+         * through the cached blocks), against a whole general assembly */
+        for (int i = 0; i < m->ninter; i++) {
+            if (urand() < 0.3) continue;
+            d->inter_mode[i] = d->inter_mode[i] == RC_MODE_CLOSED ? RC_MODE_RELEASED : RC_MODE_CLOSED;
+            ENSURE(rc_jac_refresh_inter(m, d, i, y, vb) == 0);
         }
-        for (int64_t k = 0; k < m->nnz; k++) {
-            (*n)++;
-            *nz += va[k] != 0.0;
-            const double den = rmax[m->jac_rowind[k]];
-            const double rel = isnan(va[k]) || isnan(vb[k]) ? INFINITY : den > 0 ? fabs(va[k] - vb[k]) / den : 0.0;
-            if (!(rel <= worst)) worst = rel;
-        }
+        m->inter_fast = NULL;
+        rc_assemble_jac(m, d, t, y, va);
+        m->inter_fast = fast;
+        /* a refresh adds new less old: entries that become 0 keep the
+         * rounding of the sum they were part of, relative to the row's scale
+         * before the change */
+        worst = fmax(worst, jac_diff(m, va, vb, rmax, 1, n, nz));
     }
 out:
     free(y0);

@@ -109,19 +109,42 @@ static void dense_inter(const rc_model *m, int i, int mode, int branch, int trac
  * geometry only (d, dd/dt, n) and the chain rule. Columns nothing reads are
  * left 0: a centred sphere's orientation and angular velocity (its centre
  * and the centre's velocity are its body's own states) and the own states
- * (the work integrals; the law has no state). tests/test_fast.c compares
- * the blocks with dense_inter's at random states in every mode. */
-static void fast_inter(const rc_model *m, int i, int mode, int branch, int track, const double *y, double *out,
-                       const char *skip)
+ * (the work integrals; the law has no state). Writes only the positions
+ * (row * ncol + column) it lists in pos (their number returned), 0 where
+ * nothing acts; the rest of `out` is left as it is (the caller keeps it 0).
+ * tests/test_fast.c compares the blocks with dense_inter's at random
+ * states in every mode. */
+static int fast_inter(const rc_model *m, int i, int mode, int branch, int track, const double *y, double *out,
+                      const char *skip, int *pos)
 {
     const rc_jblock *jb = &m->jb_inter[i];
     const int ncol = jb->ncol;
-    memset(out, 0, (size_t)jb->nrow * (size_t)ncol * sizeof(double));
-    if (mode != RC_MODE_CLOSED) return; /* no force, no work rates */
     const int ba = m->inter_ba[i], bb = m->inter_bb[i], ns = m->inter_ns[i];
     const int fa = ba >= 0 && m->body_yadr[ba] >= 0, fb = bb >= 0 && m->body_yadr[bb] >= 0;
     const int na = fa ? RC_NB : 0, nb = fb ? RC_NB : 0;
     const int ss = m->inter_pair[i] == RC_PAIR_SPHERE_SPHERE, sb = m->inter_sb[i];
+    const int rs = (fa ? 6 : 0) + (fb ? 6 : 0); /* first own-state row */
+    /* the positions written: rows a's force (3), b's force (3) or force
+     * and moment (6, the plane's body), the own rates (ns <= 2 read); the
+     * columns below */
+    int rows[14], nr = 0, np = 0;
+    if (fa)
+        for (int e = 0; e < 3; e++) rows[nr++] = e;
+    if (fb)
+        for (int e = 0; e < (ss ? 3 : 6); e++) rows[nr++] = (fa ? 6 : 0) + e;
+    for (int e = 0; e < ns && e < 2; e++) rows[nr++] = rs + e;
+    int cols[2 * RC_NB], nc = 0;
+    for (int c = 0; c < na + nb; c++) {
+        const int onb = c >= na, k = onb ? c - na : c;
+        /* a sphere's centre and its velocity; the plane's body: all */
+        if ((onb && !ss) || k < 3 || (k >= 7 && k < 10)) cols[nc++] = c;
+    }
+    for (int a = 0; a < nr; a++)
+        for (int c = 0; c < nc; c++) {
+            pos[np] = rows[a] * ncol + cols[c];
+            out[pos[np++]] = 0.0;
+        }
+    if (mode != RC_MODE_CLOSED) return np; /* no force, no work rates */
     const double ra = m->surf_r[m->inter_sa[i]], rb = ss ? m->surf_r[sb] : 0.0;
     T ya[RC_NB], yb[RC_NB];
     load_body(m, ba, y, ya);
@@ -157,11 +180,8 @@ static void fast_inter(const rc_model *m, int i, int mode, int branch, int track
         dfd[k] = cimag(r.fd) / RC_CSTEP;
     }
     const double ima = fa ? 1.0 / m->body_mass[ba] : 0.0, imb = fb ? 1.0 / m->body_mass[bb] : 0.0;
-    const int rs = (fa ? 6 : 0) + (fb ? 6 : 0); /* first own-state row */
-    for (int c = 0; c < na + nb; c++) {
-        const int onb = c >= na, k = onb ? c - na : c;
-        /* a sphere's centre and its velocity; the plane's body: all */
-        if (!(onb && !ss) && !(k < 3 || (k >= 7 && k < 10))) continue;
+    for (int q = 0; q < nc; q++) {
+        const int c = cols[q], onb = c >= na, k = onb ? c - na : c;
         if (skip && skip[jb->cols[c]]) continue;
         T *yp = onb ? yb + k : ya + k;
         *yp += I * RC_CSTEP;
@@ -193,6 +213,7 @@ static void fast_inter(const rc_model *m, int i, int mode, int branch, int track
         if (ns > 1) out[(rs + 1) * ncol + c] = ddf * vn0 + fd0 * dv;
     }
 #undef FAST_GEOM
+    return np;
 }
 
 /* dense_inter, or fast_inter for an interface on the fast path. */
@@ -200,7 +221,9 @@ static void inter_block(const rc_model *m, rc_data *d, int i, const double *y, d
                         double *val)
 {
     if (m->inter_fast && m->inter_fast[i]) {
-        fast_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], y, out, d->jac_skip);
+        int pos[RC_JB_MAX];
+        memset(out, 0, (size_t)m->jb_inter[i].nrow * (size_t)m->jb_inter[i].ncol * sizeof(double));
+        fast_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], y, out, d->jac_skip, pos);
         return;
     }
     dense_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
@@ -315,9 +338,28 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
             dense_body(m, b, t, y, dense, d->jac_skip);
             scatter(&m->jb_body[b], dense, val);
         }
+    /* fast interfaces: a block kept 0 but where fast_inter writes, those
+     * positions alone scattered and cached (the cache's other entries of
+     * the block stay 0 from the first assembly on) */
+    double fdense[RC_JB_MAX];
+    int pos[RC_JB_MAX];
+    memset(fdense, 0, sizeof fdense);
     for (int i = 0; i < m->ninter; i++) {
         const rc_jblock *jb = &m->jb_inter[i];
         const int nd = jb->nrow * jb->ncol;
+        if (m->inter_fast && m->inter_fast[i] && jb->ncol > 0) {
+            const int np = fast_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], y, fdense,
+                                      d->jac_skip, pos);
+            double *jc = d->jcache ? d->jcache + d->jcache_off[i] : NULL;
+            if (jc && !d->jcache_ok) memcpy(jc, fdense, (size_t)nd * sizeof(double));
+            for (int q = 0; q < np; q++) {
+                const int k = pos[q];
+                if (jb->slot[k] >= 0) val[jb->slot[k]] += fdense[k];
+                if (jc) jc[k] = fdense[k];
+                fdense[k] = 0.0;
+            }
+            continue;
+        }
         if (d->inter_mode[i] != RC_MODE_INACTIVE && jb->ncol > 0) {
             const int np = m->inter_npt[i];
             inter_block(m, d, i, y, dense, np > 0 ? m->inter_ptslot[i] : NULL, val);

@@ -104,9 +104,10 @@ static void dense_inter(const rc_model *m, int i, int mode, int branch, int trac
  * cost (docs/design.md, "The fast contact path"). Only a closed contact
  * acts: its force is fn(p, vn) n through the sphere centres, with p = gap -
  * d and vn = -dd/dt (0 when tracking), and its own rates are fel vn and fd
- * vn. The law's two partial derivatives are taken once, each by one complex
- * step of the law alone; each column then takes one complex step of the
- * geometry only (d, dd/dt, n) and the chain rule. Columns nothing reads are
+ * vn. The law's partial derivatives (of fel and fd, by p and by vn) are
+ * taken once, by one complex step of the law alone for each variable; each
+ * column then takes one complex step of the geometry only (d, dd/dt, n) and
+ * the chain rule. Columns nothing reads are
  * left 0: a centred sphere's orientation and angular velocity (its centre
  * and the centre's velocity are its body's own states) and the own states
  * (the work integrals; the law has no state). Writes only the positions

@@ -97,6 +97,140 @@ static void dense_inter(const rc_model *m, int i, int mode, int branch, int trac
     }
 }
 
+/* Dense block of interface i on the fast contact path (rc_fast_eligible in
+ * kernel_fast.inc: a centred sphere against a centred sphere or a plane,
+ * TYPE6 Iform 0 or the power law, no friction, no offset, no contact
+ * points), the same values as dense_inter to rounding at a fraction of the
+ * cost (docs/design.md, "The fast contact path"). Only a closed contact
+ * acts: its force is fn(p, vn) n through the sphere centres, with p = gap -
+ * d and vn = -dd/dt (0 when tracking), and its own rates are fel vn and fd
+ * vn. The law's partial derivatives (of fel and fd, by p and by vn) are
+ * taken once, by one complex step of the law alone for each variable; each
+ * column then takes one complex step of the geometry only (d, dd/dt, n) and
+ * the chain rule. Columns nothing reads are
+ * left 0: a centred sphere's orientation and angular velocity (its centre
+ * and the centre's velocity are its body's own states) and the own states
+ * (the work integrals; the law has no state). Writes only the positions
+ * (row * ncol + column) it lists in pos (their number returned), 0 where
+ * nothing acts; the rest of `out` is left as it is (the caller keeps it 0).
+ * tests/test_fast.c compares the blocks with dense_inter's at random
+ * states in every mode. */
+static int fast_inter(const rc_model *m, int i, int mode, int branch, int track, const double *y, double *out,
+                      const char *skip, int *pos)
+{
+    const rc_jblock *jb = &m->jb_inter[i];
+    const int ncol = jb->ncol;
+    const int ba = m->inter_ba[i], bb = m->inter_bb[i], ns = m->inter_ns[i];
+    const int fa = ba >= 0 && m->body_yadr[ba] >= 0, fb = bb >= 0 && m->body_yadr[bb] >= 0;
+    const int na = fa ? RC_NB : 0, nb = fb ? RC_NB : 0;
+    const int ss = m->inter_pair[i] == RC_PAIR_SPHERE_SPHERE, sb = m->inter_sb[i];
+    const int rs = (fa ? 6 : 0) + (fb ? 6 : 0); /* first own-state row */
+    /* the positions written: rows a's force (3), b's force (3) or force
+     * and moment (6, the plane's body), the own rates (ns <= 2 read); the
+     * columns below */
+    int rows[14], nr = 0, np = 0;
+    if (fa)
+        for (int e = 0; e < 3; e++) rows[nr++] = e;
+    if (fb)
+        for (int e = 0; e < (ss ? 3 : 6); e++) rows[nr++] = (fa ? 6 : 0) + e;
+    for (int e = 0; e < ns && e < 2; e++) rows[nr++] = rs + e;
+    int cols[2 * RC_NB], nc = 0;
+    for (int c = 0; c < na + nb; c++) {
+        const int onb = c >= na, k = onb ? c - na : c;
+        /* a sphere's centre and its velocity; the plane's body: all */
+        if ((onb && !ss) || k < 3 || (k >= 7 && k < 10)) cols[nc++] = c;
+    }
+    for (int a = 0; a < nr; a++)
+        for (int c = 0; c < nc; c++) {
+            pos[np] = rows[a] * ncol + cols[c];
+            out[pos[np++]] = 0.0;
+        }
+    if (mode != RC_MODE_CLOSED) return np; /* no force, no work rates */
+    const double ra = m->surf_r[m->inter_sa[i]], rb = ss ? m->surf_r[sb] : 0.0;
+    T ya[RC_NB], yb[RC_NB];
+    load_body(m, ba, y, ya);
+    load_body(m, bb, y, yb);
+    geom_c g;
+#define FAST_GEOM()                                                                                                    \
+    do {                                                                                                               \
+        if (ss)                                                                                                        \
+            geom_sph_sph_c(ya, ya + 7, ra, yb, yb + 7, rb, 0, 0, &g);                                                  \
+        else                                                                                                           \
+            geom_sph_plane_c(m, sb, ya, ya + 7, ra, yb, &g);                                                           \
+    } while (0)
+    FAST_GEOM();
+    const double p0 = m->inter_gap[i] - creal(g.d), vn0 = track ? 0.0 : -creal(g.ddot);
+    /* the law at (p0, vn0): fel, fd and their derivatives by p (k = 0) and
+     * by vn (k = 1) */
+    double fel0 = 0.0, fd0 = 0.0, dfel[2], dfd[2];
+    for (int k = 0; k < 2; k++) {
+        t6out_c r;
+        memset(&r, 0, sizeof r);
+        r.p = p0 + (k == 0 ? I * RC_CSTEP : 0.0);
+        r.vn = vn0 + (k == 1 ? I * RC_CSTEP : 0.0);
+        if (m->inter_law[i] == RC_LAW_POWER) {
+            T kn;
+            power_law_c(m, i, 1, branch, &r, &kn);
+        } else {
+            T kn, dfh, ys0[RC_NS_MAX] = {0};
+            type6_law_c(m, i, mode, branch, ys0, &r, &kn, &dfh);
+        }
+        fel0 = creal(r.fel);
+        fd0 = creal(r.fd);
+        dfel[k] = cimag(r.fel) / RC_CSTEP;
+        dfd[k] = cimag(r.fd) / RC_CSTEP;
+    }
+    const double ima = fa ? 1.0 / m->body_mass[ba] : 0.0, imb = fb ? 1.0 / m->body_mass[bb] : 0.0;
+    for (int q = 0; q < nc; q++) {
+        const int c = cols[q], onb = c >= na, k = onb ? c - na : c;
+        if (skip && skip[jb->cols[c]]) continue;
+        T *yp = onb ? yb + k : ya + k;
+        *yp += I * RC_CSTEP;
+        FAST_GEOM();
+        const double dp = -cimag(g.d) / RC_CSTEP, dv = track ? 0.0 : -cimag(g.ddot) / RC_CSTEP;
+        const double del = dfel[0] * dp + dfel[1] * dv, ddf = dfd[0] * dp + dfd[1] * dv;
+        const T fn = fel0 + fd0 + I * RC_CSTEP * (del + ddf);
+        T f[3];
+        for (int e = 0; e < 3; e++) f[e] = fn * g.n[e];
+        int r = 0;
+        if (fa) {
+            /* through a's centre: no moment (rows 3..5 stay 0) */
+            for (int e = 0; e < 3; e++) out[(r + e) * ncol + c] = -cimag(f[e]) / RC_CSTEP * ima;
+            r += 6;
+        }
+        if (fb) {
+            if (ss) {
+                for (int e = 0; e < 3; e++) out[(r + e) * ncol + c] = cimag(f[e]) / RC_CSTEP * imb;
+            } else {
+                /* the plane's body: the force at the sphere's centre */
+                T acc[6] = {0};
+                apply_force_c(m, bb, yb, f, g.act_b, acc);
+                for (int e = 0; e < 6; e++) out[(r + e) * ncol + c] = cimag(acc[e]) / RC_CSTEP;
+            }
+        }
+        *yp = creal(*yp);
+        /* the work rates fel vn and fd vn */
+        out[rs * ncol + c] = del * vn0 + fel0 * dv;
+        if (ns > 1) out[(rs + 1) * ncol + c] = ddf * vn0 + fd0 * dv;
+    }
+#undef FAST_GEOM
+    return np;
+}
+
+/* dense_inter, or fast_inter for an interface on the fast path. */
+static void inter_block(const rc_model *m, rc_data *d, int i, const double *y, double *out, const int64_t *ptslot,
+                        double *val)
+{
+    if (m->inter_fast && m->inter_fast[i]) {
+        int pos[RC_JB_MAX];
+        memset(out, 0, (size_t)m->jb_inter[i].nrow * (size_t)m->jb_inter[i].ncol * sizeof(double));
+        fast_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], y, out, d->jac_skip, pos);
+        return;
+    }
+    dense_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
+                d->pt_slip + m->inter_pbase[i], y, out, d->pt_work, ptslot, val, d->node_cache, d->jac_skip);
+}
+
 /* A slot of `val` written by a refresh: not in a held row (those stay 0). */
 static int live_slot(const rc_model *m, int64_t sl)
 {
@@ -205,14 +339,31 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
             dense_body(m, b, t, y, dense, d->jac_skip);
             scatter(&m->jb_body[b], dense, val);
         }
+    /* fast interfaces: a block kept 0 but where fast_inter writes, those
+     * positions alone scattered and cached (the cache's other entries of
+     * the block stay 0 from the first assembly on) */
+    double fdense[RC_JB_MAX];
+    int pos[RC_JB_MAX];
+    memset(fdense, 0, sizeof fdense);
     for (int i = 0; i < m->ninter; i++) {
         const rc_jblock *jb = &m->jb_inter[i];
         const int nd = jb->nrow * jb->ncol;
+        if (m->inter_fast && m->inter_fast[i] && jb->ncol > 0) {
+            const int np = fast_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], y, fdense,
+                                      d->jac_skip, pos);
+            double *jc = d->jcache ? d->jcache + d->jcache_off[i] : NULL;
+            if (jc && !d->jcache_ok) memcpy(jc, fdense, (size_t)nd * sizeof(double));
+            for (int q = 0; q < np; q++) {
+                const int k = pos[q];
+                if (jb->slot[k] >= 0) val[jb->slot[k]] += fdense[k];
+                if (jc) jc[k] = fdense[k];
+                fdense[k] = 0.0;
+            }
+            continue;
+        }
         if (d->inter_mode[i] != RC_MODE_INACTIVE && jb->ncol > 0) {
             const int np = m->inter_npt[i];
-            dense_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
-                        d->pt_slip + m->inter_pbase[i], y, dense, d->pt_work, np > 0 ? m->inter_ptslot[i] : NULL, val,
-                        d->node_cache, d->jac_skip);
+            inter_block(m, d, i, y, dense, np > 0 ? m->inter_ptslot[i] : NULL, val);
             scatter(jb, dense, val);
             if (np > 0 && d->inter_mode[i] == RC_MODE_CLOSED) points_jac(m, d, i, y, val);
         } else {
@@ -254,8 +405,7 @@ int rc_jac_refresh_inter(const rc_model *m, rc_data *d, int i, const double *y, 
     if (nd == 0) return 0;
     double dense[RC_JB_MAX];
     if (d->inter_mode[i] != RC_MODE_INACTIVE)
-        dense_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
-                    d->pt_slip + m->inter_pbase[i], y, dense, d->pt_work, NULL, val, d->node_cache, d->jac_skip);
+        inter_block(m, d, i, y, dense, NULL, val);
     else
         memset(dense, 0, (size_t)nd * sizeof(double));
     double *old = d->jcache + d->jcache_off[i];

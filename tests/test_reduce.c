@@ -78,43 +78,6 @@ static const char *DECK =
     "/RUN\n                 0.5                0.05\n"
     "/END\n";
 
-/* The settling column locked to z (bench.py column_deck, locked): five
- * spheres with x, y and the rotations held, dropped on a floor. */
-static char *column_deck(int n)
-{
-    size_t cap = 4096 + (size_t)n * 600, len = 0;
-    char *t = malloc(cap);
-    if (!t) return NULL;
-#define OUT(...) len += (size_t)snprintf(t + len, cap - len, __VA_ARGS__)
-    OUT("/BEGIN\ncolumn\n      2022         0\n");
-    OUT("                  kg                   m                   s\n");
-    OUT("                  kg                   m                   s\n");
-    OUT("/FUNCT/1\nload\n                   0                   0\n                   1              100000\n");
-    OUT("/NODE\n");
-    const double R = 0.01, gap = 1e-4;
-    for (int i = 0; i < n; i++) OUT("%10d%20.6g%20.6g%20.9g\n", i + 1, 0.0, 0.0, R + gap + i * (2 * R + gap));
-    for (int i = 0; i < n; i++)
-        OUT("/RBODY/%d\nsphere\n%10d%30s%20.6g\n%20.6g%20.6g%20.6g\n%20.6g%20.6g%20.6g\n", i + 1, i + 1, "", 0.01,
-            4e-7, 4e-7, 4e-7, 0.0, 0.0, 0.0);
-    for (int i = 0; i < n; i++)
-        OUT("/SURF/ELLIPS/%d\nsphere\n%10d%10d%10d\n%20.6g%20.6g%20.9g\n%20.6g%20.6g%20.6g\n", i + 1, 0, 2, i + 1, 0.0,
-            0.0, R + gap + i * (2 * R + gap), R, R, R);
-    OUT("/SURF/PLANE/%d\nfloor\n%20d%20d%20d\n%20d%20d%20d\n", n + 1, 0, 0, 0, 0, 0, 1);
-    OUT("/GRAV/1\ngravity\n         0         Z         0         0         0                             1"
-        "               -9.81\n");
-    OUT("/GRNOD/NODE/1\nall\n");
-    for (int i = 0; i < n; i++) OUT("%10d%s", i + 1, (i % 10 == 9 || i == n - 1) ? "\n" : "");
-    OUT("/BCS/1\nlocked\n   110 111         0         1\n");
-    for (int i = 0; i < n; i++) {
-        const double c = i == 0 ? 2 * sqrt(1e5 * 0.01) : 2 * sqrt(1e5 * 0.005);
-        OUT("/INTER/TYPE6/%d\ncontact\n%10d%10d\n%60s\n%20s%10d%10d%10d%10d%10d\n%10d%10d%50s\n%10d\n%20.9g%10d%10d\n",
-            i + 1, i == 0 ? 1 : i, i == 0 ? n + 1 : i + 1, "0", "0", 0, 0, 0, 0, 0, 1, 0, "0", 0, c, 0, 0);
-    }
-    OUT("/RUN\n                0.05                0.01\n/END\n");
-#undef OUT
-    return t;
-}
-
 /* Every constant state: its rate exactly 0 at the initial state and at a
  * perturbed one (the rhs sets the held rows after every force; a position
  * or quaternion moves only through a velocity that is constant at 0). */
@@ -412,7 +375,7 @@ static void test_reduce_runs(void)
         free(y);
         rc_model_free(m);
     }
-    char *t = column_deck(5);
+    char *t = tu_column_deck(5, TU_COL_LOCK);
     ENSURE(t != NULL);
     if (!t) return;
     m = tu_compile_text(t, "column.rad", &e);

@@ -27,64 +27,9 @@
 /* Variants of the free settling column (bench.py column_deck, not locked):
  * n spheres of radius 0.01 m stacked on a floor, gaps 1e-4 m, gravity -z,
  * TYPE6 linear contacts with damping. */
-enum {
-    TF_FRIC = 1,   /* Fric 0.3 on every contact */
-    TF_OFF = 2,    /* sphere 2's surface 1e-3 m off its centre of mass (x) */
-    TF_SPRING = 4, /* a spring from sphere 2's centre to a point in space */
-    TF_SPIN = 8,   /* sphere 2 starts spinning about z (1 rad/s) */
-    TF_TILT = 16   /* the spheres staggered in x (contact normals not vertical)
-                      and given sideways velocities */
-};
-
-static char *column(int n, int flags)
-{
-    size_t cap = 4096 + (size_t)n * 700, len = 0;
-    char *t = malloc(cap);
-    if (!t) return NULL;
-#define OUT(...) len += (size_t)snprintf(t + len, cap - len, __VA_ARGS__)
-    OUT("/BEGIN\ncolumn\n      2022         0\n");
-    OUT("                  kg                   m                   s\n");
-    OUT("                  kg                   m                   s\n");
-    OUT("/FUNCT/1\nload\n                   0                   0\n                   1              100000\n");
-    OUT("/NODE\n");
-    const double R = 0.01, gap = 1e-4;
-    for (int i = 0; i < n; i++) {
-        const double x = (flags & TF_TILT) ? 0.0015 * (i % 3) : 0.0;
-        OUT("%10d%20.9g%20.6g%20.9g\n", i + 1, x, 0.0, R + gap + i * (2 * R + gap));
-    }
-    for (int i = 0; i < n; i++)
-        OUT("/RBODY/%d\nsphere\n%10d%30s%20.6g\n%20.6g%20.6g%20.6g\n%20.6g%20.6g%20.6g\n", i + 1, i + 1, "", 0.01,
-            4e-7, 4e-7, 4e-7, 0.0, 0.0, 0.0);
-    for (int i = 0; i < n; i++) {
-        double x = (flags & TF_TILT) ? 0.0015 * (i % 3) : 0.0;
-        if ((flags & TF_OFF) && i == 1) x += 1e-3;
-        OUT("/SURF/ELLIPS/%d\nsphere\n%10d%10d%10d\n%20.9g%20.6g%20.9g\n%20.6g%20.6g%20.6g\n", i + 1, 0, 2, i + 1, x,
-            0.0, R + gap + i * (2 * R + gap), R, R, R);
-    }
-    OUT("/SURF/PLANE/%d\nfloor\n%20d%20d%20d\n%20d%20d%20d\n", n + 1, 0, 0, 0, 0, 0, 1);
-    OUT("/GRAV/1\ngravity\n         0         Z         0         0         0                             1"
-        "               -9.81\n");
-    OUT("/GRNOD/NODE/1\nall\n");
-    for (int i = 0; i < n; i++) OUT("%10d%s", i + 1, (i % 10 == 9 || i == n - 1) ? "\n" : "");
-    OUT("/GRNOD/NODE/2\nsecond\n         2\n");
-    if (flags & TF_SPIN) OUT("/INIVEL/ROT/1\nspin\n%20d%20d%20d%10d%10d\n", 0, 0, 1, 2, 0);
-    if (flags & TF_TILT) OUT("/INIVEL/TRA/2\npush\n%20g%20g%20g%10d%10d\n", 0.1, -0.05, 0.0, 2, 0);
-    if (flags & TF_SPRING)
-        OUT("/COUPLING/SPRING/1\nspring\n2,0,1,0\n0,0,0\n0.05,0,%.9g\n,0.01\n20.0\n", R + gap + (2 * R + gap));
-    for (int i = 0; i < n; i++) {
-        const double c = i == 0 ? 2 * sqrt(1e5 * 0.01) : 2 * sqrt(1e5 * 0.005);
-        OUT("/INTER/TYPE6/%d\ncontact\n%10d%10d\n%40s%20s\n%20s%10d%10d%10d%10d%10d\n%10d%10d%50s\n%10d\n%20.9g%10d%10d\n",
-            i + 1, i == 0 ? 1 : i, i == 0 ? n + 1 : i + 1, (flags & TF_FRIC) ? "0.3" : "", "0", "0", 0, 0, 0, 0, 0,
-            1, 0, "0", 0, c, 0, 0);
-    }
-    OUT("/RUN\n%20g%20g\n/END\n", (flags & TF_TILT) ? 0.1 : 0.05, 0.01);
-#undef OUT
-    return t;
-}
-
 static rc_model *column_model(int n, int flags)
 {
-    char *t = column(n, flags);
+    char *t = tu_column_deck(n, flags);
     ENSURE(t != NULL);
     if (!t) return NULL;
     rc_error e;
@@ -183,7 +128,7 @@ out:
  * run as if all were accepted, finds moments (it would fail). */
 static void test_torquefree_column_rows(void)
 {
-    const int flagset[2] = {0, TF_TILT};
+    const int flagset[2] = {0, TU_COL_TILT};
     for (int v = 0; v < 2; v++) {
         rc_model *m = column_model(5, flagset[v]);
         if (!m) return;
@@ -212,7 +157,7 @@ static void test_torquefree_column_rows(void)
         rc_model_free(m);
     }
     /* the negative case: friction */
-    rc_model *m = column_model(5, TF_FRIC);
+    rc_model *m = column_model(5, TU_COL_FRIC);
     if (!m) return;
     char mf[5], all[5] = {1, 1, 1, 1, 1}, *cst = calloc((size_t)m->ny + 1, 1);
     double *y0 = calloc((size_t)m->ny + 1, sizeof(double));
@@ -237,7 +182,7 @@ static void test_torquefree_column_rows(void)
  * only (sphere 2); the others of the column are still accepted. */
 static void test_torquefree_refused(void)
 {
-    const int flags[3] = {TF_OFF, TF_SPRING, TF_SPIN};
+    const int flags[3] = {TU_COL_OFF, TU_COL_SPRING, TU_COL_SPIN};
     const char *what[3] = {"off-centre sphere", "spring", "initial spin"};
     for (int v = 0; v < 3; v++) {
         rc_model *m = column_model(5, flags[v]);
@@ -250,7 +195,7 @@ static void test_torquefree_refused(void)
             rc_moment_free_bodies(m, mf);
             const int n = rc_constant_states(m, y0, NULL, cst);
             /* the spin: the body is moment-free, but omega is not 0 */
-            for (int b = 0; b < 5; b++) ENSURE(mf[b] == (b != 1 || flags[v] == TF_SPIN));
+            for (int b = 0; b < 5; b++) ENSURE(mf[b] == (b != 1 || flags[v] == TU_COL_SPIN));
             ENSURE(n == 4 * 7);
             const int a = m->body_yadr[1];
             for (int k = 3; k < RC_NB; k++) ENSURE(cst[a + k] == 0);
@@ -347,7 +292,7 @@ static void test_torquefree_validation_decks(void)
  * every contact closed and the spheres moving. */
 static void test_torquefree_jacobian(void)
 {
-    rc_model *m = column_model(5, TF_TILT);
+    rc_model *m = column_model(5, TU_COL_TILT);
     if (!m) return;
     const int ny = m->ny;
     double *y = calloc((size_t)ny + 1, sizeof(double));
@@ -416,7 +361,7 @@ out:
  * state scattered to the wrong place fail the bounds. */
 static void test_torquefree_runs(void)
 {
-    rc_model *m = column_model(5, TF_TILT);
+    rc_model *m = column_model(5, TU_COL_TILT);
     if (!m) return;
     const int ny = m->ny;
     double *ya = calloc((size_t)ny + 1, sizeof(double)), *yb = calloc((size_t)ny + 1, sizeof(double));

@@ -194,3 +194,54 @@ int tu_evlog_event(void *user, double t, const char *kind, const char *element, 
     l->n++;
     return 0;
 }
+
+/* The settling column of the benchmarks (bench.py column_deck): n spheres
+ * (R 0.01 m, m 0.01 kg) 1e-4 m apart over a floor, TYPE6 k = 1e5 N/m
+ * critically damped, gravity; variants by flags (testutil.h). */
+char *tu_column_deck(int n, int flags)
+{
+    size_t cap = 4096 + (size_t)n * 700, len = 0;
+    char *t = malloc(cap);
+    if (!t) return NULL;
+#define OUT(...) len += (size_t)snprintf(t + len, cap - len, __VA_ARGS__)
+    OUT("/BEGIN\ncolumn\n      2022         0\n");
+    OUT("                  kg                   m                   s\n");
+    OUT("                  kg                   m                   s\n");
+    OUT("/FUNCT/1\nload\n                   0                   0\n                   1              100000\n");
+    OUT("/NODE\n");
+    const double R = 0.01, gap = 1e-4;
+    for (int i = 0; i < n; i++) {
+        const double x = (flags & TU_COL_TILT) ? 0.0015 * (i % 3) : 0.0;
+        OUT("%10d%20.9g%20.6g%20.9g\n", i + 1, x, 0.0, R + gap + i * (2 * R + gap));
+    }
+    for (int i = 0; i < n; i++)
+        OUT("/RBODY/%d\nsphere\n%10d%30s%20.6g\n%20.6g%20.6g%20.6g\n%20.6g%20.6g%20.6g\n", i + 1, i + 1, "", 0.01,
+            4e-7, 4e-7, 4e-7, 0.0, 0.0, 0.0);
+    for (int i = 0; i < n; i++) {
+        double x = (flags & TU_COL_TILT) ? 0.0015 * (i % 3) : 0.0;
+        if ((flags & TU_COL_OFF) && i == 1) x += 1e-3;
+        OUT("/SURF/ELLIPS/%d\nsphere\n%10d%10d%10d\n%20.9g%20.6g%20.9g\n%20.6g%20.6g%20.6g\n", i + 1, 0, 2, i + 1, x,
+            0.0, R + gap + i * (2 * R + gap), R, R, R);
+    }
+    OUT("/SURF/PLANE/%d\nfloor\n%20d%20d%20d\n%20d%20d%20d\n", n + 1, 0, 0, 0, 0, 0, 1);
+    OUT("/GRAV/1\ngravity\n         0         Z         0         0         0                             1"
+        "               -9.81\n");
+    OUT("/GRNOD/NODE/1\nall\n");
+    for (int i = 0; i < n; i++) OUT("%10d%s", i + 1, (i % 10 == 9 || i == n - 1) ? "\n" : "");
+    OUT("/GRNOD/NODE/2\nsecond\n         2\n");
+    if (flags & TU_COL_LOCK) OUT("/BCS/1\nlocked\n   110 111         0         1\n");
+    if (flags & TU_COL_SPIN) OUT("/INIVEL/ROT/1\nspin\n%20d%20d%20d%10d%10d\n", 0, 0, 1, 2, 0);
+    if (flags & TU_COL_TILT) OUT("/INIVEL/TRA/2\npush\n%20g%20g%20g%10d%10d\n", 0.1, -0.05, 0.0, 2, 0);
+    if (flags & TU_COL_SPRING)
+        OUT("/COUPLING/SPRING/1\nspring\n2,0,1,0\n0,0,0\n0.05,0,%.9g\n,0.01\n20.0\n", R + gap + (2 * R + gap));
+    for (int i = 0; i < n; i++) {
+        const double c = i == 0 ? 2 * sqrt(1e5 * 0.01) : 2 * sqrt(1e5 * 0.005);
+        OUT("/INTER/TYPE6/%d\ncontact\n%10d%10d\n%40s%20s\n%20s%10d%10d%10d%10d%10d\n%10d%10d%50s\n%10d\n%20.9g%10d%10d\n",
+            i + 1, i == 0 ? 1 : i, i == 0 ? n + 1 : i + 1, (flags & TU_COL_FRIC) ? "0.3" : "", "0", "0", 0, 0, 0, 0, 0,
+            1, 0, "0", 0, c, 0, 0);
+    }
+    OUT("/RUN\n%20g%20g\n/END\n", (flags & TU_COL_TILT) ? 0.1 : 0.05, 0.01);
+#undef OUT
+    return t;
+}
+

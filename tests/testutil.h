@@ -65,4 +65,17 @@ typedef struct {
 } tu_evlog;
 int tu_evlog_event(void *user, double t, const char *kind, const char *element, const double values[3]);
 
+/* The settling column deck (text, malloc'd; NULL out of memory): n spheres
+ * over a floor; flags: */
+enum {
+    TU_COL_FRIC = 1,   /* Fric 0.3 on every contact */
+    TU_COL_OFF = 2,    /* sphere 2's surface 1e-3 m off its centre of mass (x) */
+    TU_COL_SPRING = 4, /* a spring from sphere 2's centre to a point in space */
+    TU_COL_SPIN = 8,   /* sphere 2 starts spinning about z (1 rad/s) */
+    TU_COL_TILT = 16,  /* the spheres staggered in x (contact normals not
+                          vertical) and given sideways velocities */
+    TU_COL_LOCK = 32   /* x, y and the rotations held (/BCS 110 111): the 1-D column */
+};
+char *tu_column_deck(int n, int flags);
+
 #endif

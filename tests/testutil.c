@@ -245,3 +245,28 @@ char *tu_column_deck(int n, int flags)
     return t;
 }
 
+
+int tu_jac_skip_compare(const rc_model *m, rc_data *d, double t, const double *y, const char *cst, double *ja,
+                        double *jb, int *kept, int *nonzero)
+{
+    const char *keep = d->jac_skip;
+    d->jac_skip = NULL;
+    int st = rc_assemble_jac(m, d, t, y, ja);
+    d->jac_skip = cst;
+    st |= rc_assemble_jac(m, d, t, y, jb);
+    d->jac_skip = keep;
+    int bad = st != 0;
+    *kept = *nonzero = 0;
+    for (int c = 0; c < m->ny; c++)
+        for (int64_t k = m->jac_colptr[c]; k < m->jac_colptr[c + 1]; k++) {
+            const int r = (int)m->jac_rowind[k];
+            if (!cst[r] && !cst[c]) {
+                (*kept)++;
+                bad += memcmp(&ja[k], &jb[k], sizeof(double)) != 0;
+                *nonzero += ja[k] != 0.0;
+            } else if (cst[c]) {
+                bad += jb[k] != 0.0;
+            }
+        }
+    return bad;
+}

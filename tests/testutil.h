@@ -78,4 +78,12 @@ enum {
 };
 char *tu_column_deck(int n, int flags);
 
+/* The Jacobian assembled whole (into ja) and with the columns of the
+ * states in cst skipped (rc_data.jac_skip; into jb): the number of entries
+ * of kept rows and columns that are not bit-identical plus the non-zero
+ * entries of skipped columns (0: as it should be); kept, nonzero: counts of
+ * the kept entries. d->jac_skip is restored. */
+int tu_jac_skip_compare(const rc_model *m, rc_data *d, double t, const double *y, const char *cst, double *ja,
+                        double *jb, int *kept, int *nonzero);
+
 #endif

@@ -97,6 +97,18 @@ static void dense_inter(const rc_model *m, int i, int mode, int branch, int trac
     }
 }
 
+/* The geometry of a fast interface: sphere a (radius ra) against sphere
+ * b (rb; ss) or the plane of surface sb, the centres the bodies' own
+ * states (kernel_fast.inc's t6fast, in complex arithmetic). */
+static inline void fast_geom(const rc_model *m, int ss, int sb, const T *ya, const T *yb, double ra, double rb,
+                             geom_c *g)
+{
+    if (ss)
+        geom_sph_sph_c(ya, ya + 7, ra, yb, yb + 7, rb, 0, 0, g);
+    else
+        geom_sph_plane_c(m, sb, ya, ya + 7, ra, yb, g);
+}
+
 /* Dense block of interface i on the fast contact path (rc_fast_eligible in
  * kernel_fast.inc: a centred sphere against a centred sphere or a plane,
  * TYPE6 Iform 0 or the power law, no friction, no offset, no contact
@@ -151,14 +163,7 @@ static int fast_inter(const rc_model *m, int i, int mode, int branch, int track,
     load_body(m, ba, y, ya);
     load_body(m, bb, y, yb);
     geom_c g;
-#define FAST_GEOM()                                                                                                    \
-    do {                                                                                                               \
-        if (ss)                                                                                                        \
-            geom_sph_sph_c(ya, ya + 7, ra, yb, yb + 7, rb, 0, 0, &g);                                                  \
-        else                                                                                                           \
-            geom_sph_plane_c(m, sb, ya, ya + 7, ra, yb, &g);                                                           \
-    } while (0)
-    FAST_GEOM();
+    fast_geom(m, ss, sb, ya, yb, ra, rb, &g);
     const double p0 = m->inter_gap[i] - creal(g.d), vn0 = track ? 0.0 : -creal(g.ddot);
     /* the law at (p0, vn0): fel, fd and their derivatives by p (k = 0) and
      * by vn (k = 1) */
@@ -186,7 +191,7 @@ static int fast_inter(const rc_model *m, int i, int mode, int branch, int track,
         if (skip && skip[jb->cols[c]]) continue;
         T *yp = onb ? yb + k : ya + k;
         *yp += I * RC_CSTEP;
-        FAST_GEOM();
+        fast_geom(m, ss, sb, ya, yb, ra, rb, &g);
         const double dp = -cimag(g.d) / RC_CSTEP, dv = track ? 0.0 : -cimag(g.ddot) / RC_CSTEP;
         const double del = dfel[0] * dp + dfel[1] * dv, ddf = dfd[0] * dp + dfd[1] * dv;
         const T fn = fel0 + fd0 + I * RC_CSTEP * (del + ddf);
@@ -213,7 +218,6 @@ static int fast_inter(const rc_model *m, int i, int mode, int branch, int track,
         out[rs * ncol + c] = del * vn0 + fel0 * dv;
         if (ns > 1) out[(rs + 1) * ncol + c] = ddf * vn0 + fd0 * dv;
     }
-#undef FAST_GEOM
     return np;
 }
 

@@ -18,14 +18,6 @@
 #include "kernels_coupling.inc"
 #include "kernel_fast.inc"
 
-/* rc_body_state (body.c) inlined: the interfaces' loops call it twice per
- * interface and evaluation. */
-static inline const double *body_state(const rc_model *m, int b, const double *y)
-{
-    if (b < 0) return m->ground_y0;
-    return m->body_yadr[b] >= 0 ? y + m->body_yadr[b] : m->body_y0 + RC_NB * b;
-}
-
 /* Interface i goes the fast path (kernel_fast.inc). */
 static inline int is_fast(const rc_model *m, int i) { return m->inter_fast && m->inter_fast[i]; }
 
@@ -53,12 +45,12 @@ int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, do
         }
         if (is_fast(m, i)) {
             t6out_r o;
-            t6fast(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], body_state(m, ba, y),
-                   body_state(m, bb, y), y + m->inter_eadr[i], acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot,
+            t6fast(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], rc_body_state(m, ba, y),
+                   rc_body_state(m, bb, y), y + m->inter_eadr[i], acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot,
                    &o, 0);
         } else {
             type6_r(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
-                    d->pt_slip + m->inter_pbase[i], body_state(m, ba, y), body_state(m, bb, y),
+                    d->pt_slip + m->inter_pbase[i], rc_body_state(m, ba, y), rc_body_state(m, bb, y),
                     y + m->inter_eadr[i], acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot, NULL, NULL,
                     d->node_cache);
         }
@@ -95,10 +87,10 @@ double rc_friction_mu(const rc_model *m, int i, int dir, double p, double v, dou
     return fric_mu_r(m, &m->inter_fr[i], dir, p, v, fn, i);
 }
 
-/* The report of an interface from its kernel's quantities. */
-static void report_of(const t6out_r *po, rc_inter_report *r)
+/* The normal part of an interface's report from its kernel's quantities
+ * (all that the root functions read of a fast interface). */
+static inline void report_normal_of(const t6out_r *po, rc_inter_report *r)
 {
-    /* read in place (a copy of the struct cost as much as the rest) */
     r->p = po->p;
     r->vn = po->vn;
     r->p_raw = po->p_raw;
@@ -110,6 +102,13 @@ static void report_of(const t6out_r *po, rc_inter_report *r)
     r->fu = po->fu;
     r->fh = po->fh;
     r->offset = po->off;
+}
+
+/* The report of an interface from its kernel's quantities. */
+static void report_of(const t6out_r *po, rc_inter_report *r)
+{
+    /* read in place (a copy of the struct cost as much as the rest) */
+    report_normal_of(po, r);
     r->flim = po->flim;
     r->vslip = po->vslip;
     r->slip_root = po->slip_root;
@@ -131,11 +130,11 @@ static void report_eval(const rc_model *m, int i, int mode, int branch, int trac
 {
     t6out_r o;
     if (is_fast(m, i))
-        t6fast(m, i, mode, branch, track, body_state(m, m->inter_ba[i], y), body_state(m, m->inter_bb[i], y),
+        t6fast(m, i, mode, branch, track, rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y),
                y + m->inter_eadr[i], NULL, NULL, NULL, &o, T6F_LAW | T6F_FULL);
     else
-        type6_r(m, i, mode, branch, track, slip, pslip, body_state(m, m->inter_ba[i], y),
-                body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, NULL, ncache);
+        type6_r(m, i, mode, branch, track, slip, pslip, rc_body_state(m, m->inter_ba[i], y),
+                rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, NULL, ncache);
     report_of(&o, r);
 }
 
@@ -164,8 +163,8 @@ void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip,
     if (d->inter_mode[i] != RC_MODE_CLOSED || npt == 0) return;
     t6out_r o;
     type6_r(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
-            slip ? slip : d->pt_slip + m->inter_pbase[i], body_state(m, m->inter_ba[i], y),
-            body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, out, d->node_cache);
+            slip ? slip : d->pt_slip + m->inter_pbase[i], rc_body_state(m, m->inter_ba[i], y),
+            rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, out, d->node_cache);
 }
 
 /* The state of the reports kept (rc_data.repc): the caller compares once
@@ -211,7 +210,7 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
             double *pout = d->pt_work; /* 5 npt values (rc_data_new) */
             t6out_r o;
             type6_r(m, i, mode, br, trk, d->inter_slip[i], d->pt_slip + m->inter_pbase[i],
-                    body_state(m, m->inter_ba[i], y), body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i],
+                    rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i],
                     NULL, NULL, NULL, &o, pout, d->node_cache);
             for (int j = 0; j < npt; j++) gp[j] = pout[5 * j];
             report_of(&o, &r); /* the same evaluation as rc_inter_report_eval_d */
@@ -222,16 +221,9 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
              * impact is in progress, which costs less than a full report of
              * every interface at every root evaluation */
             t6out_r o;
-            t6fast(m, i, mode, br, trk, body_state(m, m->inter_ba[i], y), body_state(m, m->inter_bb[i], y),
+            t6fast(m, i, mode, br, trk, rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y),
                    y + m->inter_eadr[i], NULL, NULL, NULL, &o, mode != RC_MODE_OPEN ? T6F_LAW : 0);
-            r.p = o.p;
-            r.vn = o.vn;
-            r.vn_raw = o.vn_raw;
-            r.offset = o.off;
-            r.fn = o.fel + o.fd;
-            r.fl = o.fl;
-            r.fu = o.fu;
-            r.fh = o.fh;
+            report_normal_of(&o, &r);
             r.slip_root = 1.0;
             for (int k = 0; k < 3; k++) r.vt[k] = 0.0;
         } else {

@@ -11,12 +11,6 @@
 #include "model/model.h"
 #include "model/power.h"
 
-const double *rc_body_state(const rc_model *m, int b, const double *y)
-{
-    if (b < 0) return m->ground_y0;
-    return m->body_yadr[b] >= 0 ? y + m->body_yadr[b] : m->body_y0 + RC_NB * b;
-}
-
 double rc_gravity_factor(const rc_model *m, double t)
 {
     /* f(t / Ascale), 1 when no function is given */
@@ -63,11 +57,9 @@ void rc_initial_state(const rc_model *m, double *y)
  * kind, no exact stick, no contact points with their own states). */
 static int side_moment_free(const rc_model *m, int i, int side)
 {
-    const rc_fric *fr = &m->inter_fr[i];
-    if (fr->kind != RC_FK_NONE || fr->exact || fr->widx >= 0 || m->inter_npt[i] != 0) return 0;
+    if (!rc_inter_frictionless(m, i) || m->inter_npt[i] != 0) return 0;
     const int s = side ? m->inter_sb[i] : m->inter_sa[i];
-    const double *c = m->surf_p + 3 * s;
-    if (m->surf_kind[s] != RC_SURF_SPHERE || c[0] != 0.0 || c[1] != 0.0 || c[2] != 0.0) return 0;
+    if (m->surf_kind[s] != RC_SURF_SPHERE || !rc_surf_centred(m, s)) return 0;
     switch (m->inter_pair[i]) {
     case RC_PAIR_SPHERE_SPHERE: /* both centres */
         return 1;

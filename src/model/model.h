@@ -491,8 +491,27 @@ void rc_gravity(const rc_model *m, int b, double t, double g[3]);
 /* Value of the gravity time function at t [-] (1 when none is given). */
 double rc_gravity_factor(const rc_model *m, double t);
 /* Pose and velocity view of body b: pointer to its 13 values in y, the
- * fixed pose of a fixed body, or the ground pose for b = -1. */
-const double *rc_body_state(const rc_model *m, int b, const double *y);
+ * fixed pose of a fixed body, or the ground pose for b = -1 (inline: the
+ * interfaces' loops call it twice per interface and evaluation). */
+static inline const double *rc_body_state(const rc_model *m, int b, const double *y)
+{
+    if (b < 0) return m->ground_y0;
+    return m->body_yadr[b] >= 0 ? y + m->body_yadr[b] : m->body_y0 + RC_NB * b;
+}
+/* Surface s's reference point (a sphere's centre) is its body's reference
+ * point: the offset is exactly 0. */
+static inline int rc_surf_centred(const rc_model *m, int s)
+{
+    const double *c = m->surf_p + 3 * s;
+    return c[0] == 0.0 && c[1] == 0.0 && c[2] == 0.0;
+}
+/* Interface i has nothing tangential: no friction law, no exact stick, no
+ * friction work state. */
+static inline int rc_inter_frictionless(const rc_model *m, int i)
+{
+    const rc_fric *fr = &m->inter_fr[i];
+    return fr->kind == RC_FK_NONE && !fr->exact && fr->widx < 0;
+}
 
 /* Energies [J]: kinetic, gravitational potential, work of the normal
  * elastic(-plastic) forces, damping dissipation, work of the friction forces,

@@ -42,17 +42,22 @@ void rc_table_free(rc_table *t)
     memset(t, 0, sizeof *t);
 }
 
-void rc_table_eval(const rc_table *t, double x, double *f, double *dfdx)
+/* Below the first point and above the last: the end segment extended;
+ * returns 1 with its value and slope there, 0 inside. */
+static int table_outside(const rc_table *t, double x, double *f, double *dfdx)
 {
     const int n = t->n;
-    /* Below the first point and above the last: end segment extended. */
-    if (x <= t->x[0] || x >= t->x[n - 1]) {
-        int k = x <= t->x[0] ? 0 : n - 2;
-        double s = (t->y[k + 1] - t->y[k]) / (t->x[k + 1] - t->x[k]);
-        *dfdx = s;
-        *f = t->y[k] + s * (x - t->x[k]);
-        return;
-    }
+    if (!(x <= t->x[0] || x >= t->x[n - 1])) return 0;
+    const int k = x <= t->x[0] ? 0 : n - 2;
+    const double s = (t->y[k + 1] - t->y[k]) / (t->x[k + 1] - t->x[k]);
+    *dfdx = s;
+    *f = t->y[k] + s * (x - t->x[k]);
+    return 1;
+}
+
+void rc_table_eval(const rc_table *t, double x, double *f, double *dfdx)
+{
+    if (table_outside(t, x, f, dfdx)) return;
     /* Inside: GSL (no accelerator: the right-hand side stays pure). */
     *f = gsl_interp_eval(t->interp, t->x, t->y, x, NULL);
     *dfdx = gsl_interp_eval_deriv(t->interp, t->x, t->y, x, NULL);
@@ -60,13 +65,9 @@ void rc_table_eval(const rc_table *t, double x, double *f, double *dfdx)
 
 double rc_table_value(const rc_table *t, double x)
 {
-    const int n = t->n;
-    /* the same operations as rc_table_eval, without the slope inside */
-    if (x <= t->x[0] || x >= t->x[n - 1]) {
-        int k = x <= t->x[0] ? 0 : n - 2;
-        double s = (t->y[k + 1] - t->y[k]) / (t->x[k + 1] - t->x[k]);
-        return t->y[k] + s * (x - t->x[k]);
-    }
+    /* rc_table_eval without the slope inside */
+    double f, s;
+    if (table_outside(t, x, &f, &s)) return f;
     return gsl_interp_eval(t->interp, t->x, t->y, x, NULL);
 }
 

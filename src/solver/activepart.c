@@ -92,6 +92,11 @@ int rc_actpart_open(rc_actpart *ap, const rc_model *m, SUNLinearSolver LS, int o
     ap->akey = malloc(2 * ((size_t)m->ninter + 1));
     ap->akey_new = ap->akey ? ap->akey + m->ninter + 1 : NULL;
     if (!ap->need || !ap->seen || !ap->xneed || (ext && !ap->xval) || !ap->akey) return -1;
+    /* the parts rebuilt in the linear-system callback allocate nothing:
+     * room for the whole pattern, the largest part, now */
+    if (rc_subpat_reserve(&ap->sp, ap->n, ap->nnz)) return -1;
+    if (!(ap->src = malloc(((size_t)ap->nnz + 1) * sizeof *ap->src))) return -1;
+    ap->src_cap = ap->nnz;
     LS->ops->initialize = klu_init_keep;
     LS->ops->setup = klu_setup_retry;
     ap->retry0 = g_retry;
@@ -121,9 +126,13 @@ static int rebuild(rc_actpart *ap, const unsigned char *keep)
     const int st = rc_subpat_build(&ap->sp, ap->n, ap->cp, ap->ri, ap->idx, keep);
     if (st) return st;
     /* the gather runs over the part's entries, not the whole pattern's */
-    int64_t *src = realloc(ap->src, ((size_t)ap->sp.nnz + 1) * sizeof *src);
-    if (!src) return -1;
-    ap->src = src;
+    if (!ap->src || ap->sp.nnz > ap->src_cap) { /* reserved at open when on: never */
+        int64_t *q = realloc(ap->src, ((size_t)ap->sp.nnz + 1) * sizeof *q);
+        if (!q) return -1;
+        ap->src = q;
+        ap->src_cap = ap->sp.nnz;
+    }
+    int64_t *src = ap->src;
     for (int64_t k = 0; k < ap->nnz; k++)
         if (ap->sp.map[k] >= 0) src[ap->sp.map[k]] = k;
     ap->built = ap->changed = 1;

@@ -47,6 +47,7 @@ typedef struct rc_actpart {
     unsigned char *seen; /* [nnz] active at some new Jacobian since the last rebuild */
     double *xval;        /* [nnz] with sw or jw: the extended matrix's values before the gather */
     int64_t *src;        /* [sp.nnz] the whole pattern's slot of each of the part's entries */
+    int64_t src_cap;     /* entries allocated in src */
     long nsym;           /* KLU symbolic analyses at the setups after a load (rc_actpart_analyses: all) */
     long retry0;         /* the thread's count of analyses after failed refactorisations at open */
     long nbuild;         /* builds of the part */

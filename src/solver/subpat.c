@@ -16,11 +16,28 @@ void rc_subpat_free(rc_subpat *s)
     memset(s, 0, sizeof *s);
 }
 
-static int grow(int64_t **p, int64_t n)
+/* *p holds at least n + 1 values (*cap counts them; grown, never shrunk). */
+static int grow(int64_t **p, int64_t n, int64_t *cap)
 {
+    if (*p && n <= *cap) return 0;
     int64_t *q = realloc(*p, ((size_t)n + 1) * sizeof(int64_t));
     if (!q) return -1;
     *p = q;
+    *cap = n;
+    return 0;
+}
+
+int rc_subpat_reserve(rc_subpat *s, int n, int64_t nnz)
+{
+    if (grow(&s->map, nnz, &s->cap_map) || grow(&s->rowind, nnz, &s->cap)) return -1;
+    if (s->colptr && s->diag && n <= s->cap_n) return 0;
+    int64_t *cp = realloc(s->colptr, ((size_t)n + 1) * sizeof *cp);
+    if (!cp) return -1;
+    s->colptr = cp;
+    int64_t *dg = realloc(s->diag, ((size_t)n + 1) * sizeof *dg);
+    if (!dg) return -1;
+    s->diag = dg;
+    s->cap_n = n;
     return 0;
 }
 
@@ -38,8 +55,7 @@ int rc_subpat_build(rc_subpat *s, int nfull, const int64_t *colptr, const int64_
     }
     /* the map and the column pointers are sized by the whole pattern and
      * the part's state count; the row indices by the kept entries */
-    if (grow(&s->map, nz)) return -1;
-    if (grow(&s->colptr, n + 1) || grow(&s->diag, n)) return -1;
+    if (rc_subpat_reserve(s, n, 0) || grow(&s->map, nz, &s->cap_map)) return -1;
     int64_t cnt = 0;
     for (int j = 0; j < nfull; j++) {
         const int cj = idx ? idx[j] : j;
@@ -48,10 +64,7 @@ int rc_subpat_build(rc_subpat *s, int nfull, const int64_t *colptr, const int64_
             s->map[k] = ri >= 0 && (!keep || keep[k] || rowind[k] == j) ? cnt++ : -1;
         }
     }
-    if (cnt > s->cap) {
-        if (grow(&s->rowind, cnt)) return -1;
-        s->cap = cnt;
-    }
+    if (grow(&s->rowind, cnt, &s->cap)) return -1;
     s->n = n;
     s->nnz = cnt;
     int c = 0;

@@ -18,9 +18,16 @@ typedef struct rc_subpat {
     int64_t *diag;   /* [n] slot of each diagonal entry (always kept) */
     int64_t *map;    /* [nnz of the whole] slot in the part, -1: dropped */
     int64_t cap;     /* entries allocated in rowind */
+    int64_t cap_map; /* entries allocated in map */
+    int cap_n;       /* columns allocated in colptr (+ 1) and diag */
 } rc_subpat;
 
-/* Build (or rebuild in place: the arrays are reallocated as needed) the
+/* Allocate for parts of up to n states and nnz entries of a whole pattern
+ * of nnz entries, so that later builds of such parts allocate nothing
+ * (a backend's Newton matrix rebuilt in its linear-system callback).
+ * Returns 0 or -1 out of memory. */
+int rc_subpat_reserve(rc_subpat *s, int n, int64_t nnz);
+/* Build (or rebuild in place: the arrays are grown when too small) the
  * part of the nfull x nfull pattern (colptr, rowind) with the states
  * idx[i] >= 0 renumbered to idx[i] (increasing in i; NULL: all, in order)
  * and the entries with keep[k] != 0 (NULL: all); a kept state's diagonal

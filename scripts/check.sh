@@ -42,6 +42,19 @@ pass=$((pass + $(grep -c '^PASS ' "$log")))
 fail=$((fail + $(grep -c '^FAIL ' "$log")))
 cat "$log"
 
+# ThreadSanitizer: the library built with -fsanitize=thread (build-tsan),
+# two simulations in two threads writing two files and a session stepped
+# from another thread; any report fails (make tsan, scripts/tsan.sh)
+make --no-print-directory tsan > "$log" 2>&1
+st=$?
+grep -E '^(PASS|FAIL) ' "$log"
+if [ "$(grep -c '^PASS ' "$log")" -eq 0 ] || { [ "$st" -ne 0 ] && [ "$(grep -c '^FAIL ' "$log")" -eq 0 ]; }; then
+    echo "FAIL tsan.build: make tsan exited with status $st:"; grep -v '^HDF5-DIAG\|^  #\|^    ' "$log" | tail -n 30
+    fail=$((fail + 1))
+fi
+pass=$((pass + $(grep -c '^PASS ' "$log")))
+fail=$((fail + $(grep -c '^FAIL ' "$log")))
+
 # installation: make install into a staging root, the embedding example
 # built through pkg-config and run, the Python module as installed
 bash tests/install_test.sh "$build" > "$log" 2>&1

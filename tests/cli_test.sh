@@ -117,6 +117,31 @@ cp "$demo" "$tmp/self.rad"
 if cmp -s "$demo" "$tmp/self.rad" && grep -q "refusing to overwrite" "$tmp/e"; then expect output_is_input 2 $rc "($(head -c 160 "$tmp/e"))"
 else expect output_is_input 2 99 "(deck changed or no message: $(head -c 200 "$tmp/e"))"; fi
 
+# the output path is the case file through a symbolic link: refused too
+ln -s self.rad "$tmp/self_link.nc"
+"$bin" run "$tmp/self.rad" -o "$tmp/self_link.nc" > "$tmp/e" 2>&1; rc=$?
+if cmp -s "$demo" "$tmp/self.rad" && grep -q "refusing to overwrite" "$tmp/e" && ! grep -q "^steps" "$tmp/e"; then
+    expect output_is_input_link 2 $rc "($(head -c 160 "$tmp/e"))"
+else expect output_is_input_link 2 99 "(deck changed or no message: $(head -c 200 "$tmp/e"))"; fi
+
+# a named pipe as the case file or as an included file: refused at once
+# (not opened for reading, which would wait for a writer), exit 2
+mkdir -p "$tmp/inc"
+mkfifo "$tmp/pipe.rad" "$tmp/inc/pipe.inc"
+timeout 20 "$bin" run "$tmp/pipe.rad" -o "$tmp/pipe.nc" > "$tmp/e" 2>&1; rc=$?
+grep -q "pipe.rad: cannot read the case file: not a regular file (a named pipe)" "$tmp/e" && [ ! -e "$tmp/pipe.nc" ] &&
+    expect fifo_case 2 $rc "($(head -c 160 "$tmp/e"))" || expect fifo_case 2 99 "(exit $rc: $(head -c 200 "$tmp/e"))"
+awk '/^\/RUN/{print "#include pipe.inc"} {print}' "$demo" > "$tmp/inc/pipe_main.rad"
+timeout 20 "$bin" check "$tmp/inc/pipe_main.rad" > "$tmp/e" 2>&1; rc=$?
+grep -q "pipe_main.rad:[0-9]*: #include \"$tmp/inc/pipe.inc\": cannot read it: not a regular file (a named pipe)" "$tmp/e" &&
+    expect fifo_include 2 $rc "($(head -c 200 "$tmp/e"))" || expect fifo_include 2 99 "(exit $rc: $(head -c 200 "$tmp/e"))"
+
+# an output interval giving more records than the limit (RC_MAX_RECORDS):
+# exit 2 with the count, nothing written
+"$bin" run "$demo" -o "$tmp/many.nc" --dt-out 1e-300 > "$tmp/e" 2>&1; rc=$?
+grep -q "gives 1e+300 records, more than the limit of 10000000" "$tmp/e" && [ ! -e "$tmp/many.nc" ] &&
+    expect too_many_records 2 $rc "($(head -c 200 "$tmp/e"))" || expect too_many_records 2 99 "(exit $rc: $(head -c 200 "$tmp/e"))"
+
 # the output path is a file the case includes: refused, the file untouched
 mkdir -p "$tmp/inc"
 awk '/^\/RUN/{print "#include run.inc"; skip=1; next} skip && /^\//{skip=0} !skip{print}' "$demo" > "$tmp/inc/main.rad"
@@ -134,17 +159,18 @@ if [ -e "$tmp/fail.nc" ] && ncdump -h "$tmp/fail.nc" | grep -q ':complete = "no"
     expect solver_failure 3 $rc "(partial file kept, complete = no; $(head -c 200 "$tmp/e"))"
 else expect solver_failure 3 99 "(no partial file marked incomplete: $(head -c 200 "$tmp/e"))"; fi
 
-# interrupted (SIGINT, SIGTERM): the run ends at the next step, keeps what it
-# computed (records flushed, marked incomplete, statistics written), exit 130
+# interrupted (SIGINT, SIGTERM, SIGHUP: the terminal closed): the run ends
+# at the next step, keeps what it computed (records flushed, marked
+# incomplete, statistics written, the file readable), exit 128 + signal
 awk '/^\/RUN/{print; getline; print "              100000                   1"; next} {print}' \
     validation/cpl_spring_cubic/case.rad > "$tmp/long.rad"
-for sig in INT TERM; do
-    [ $sig = INT ] && want=130 || want=143
+for sig in INT TERM HUP; do
+    case $sig in INT) want=130 ;; TERM) want=143 ;; *) want=129 ;; esac
     # one signal, sent to the run alone (timeout(1) would also signal its
     # process group, and a second signal kills at once by design)
     # the SIGINT run shows its progress: stderr is a file, so a line every 10 s
     # (under valgrind the start is slower: wait for that line, 60 s at most)
-    "$bin" run "$tmp/long.rad" -o "$tmp/long_$sig.nc" $([ $sig = TERM ] && echo -q) > "$tmp/e" 2>&1 &
+    "$bin" run "$tmp/long.rad" -o "$tmp/long_$sig.nc" $([ $sig != INT ] && echo -q) > "$tmp/e" 2>&1 &
     pid=$!
     # the run has started (the file is created after the compile; slower
     # under valgrind), then 2 s of integration
@@ -158,6 +184,7 @@ for sig in INT TERM; do
     if [ -e "$tmp/long_$sig.nc" ] && ncdump -h "$tmp/long_$sig.nc" | grep -q ':complete = "no"' &&
        ncdump -h "$tmp/long_$sig.nc" | grep -q 'interrupted at t' && ncdump -h "$tmp/long_$sig.nc" | grep -q 'stats_steps' &&
        [ "$(ncdump -h "$tmp/long_$sig.nc" | sed -n 's/^[[:space:]]*time = UNLIMITED ; \/\/ (\([0-9]*\) currently).*/\1/p')" -gt 1 ] &&
+       ncdump -v time "$tmp/long_$sig.nc" > /dev/null 2>&1 && ! ncdump -h "$tmp/long_$sig.nc" | grep -q 'status = "running"' &&
        grep -q "interrupted" "$tmp/e"; then
         expect "interrupt_$sig" $want $rc "(records kept, complete = no, statistics written: $(head -c 120 "$tmp/e"))"
     else expect "interrupt_$sig" $want 99 "(exit $rc; file or message wrong: $(head -c 200 "$tmp/e"))"; fi
@@ -180,6 +207,26 @@ if command -v script > /dev/null 2>&1; then
         expect progress_terminal 0 $rc "($(grep -o $'\r' "$tmp/tty" | wc -l) updates of one line)"
     else expect progress_terminal 0 99 "(exit $rc: $(tr '\r' '|' < "$tmp/tty" | head -c 300))"; fi
 fi
+
+# After a failed write the message says what the file keeps, as read back:
+# "it keeps records 0 to N" of a file that ncdump reads with at least N + 1
+# records, or "it was removed" of a file that is gone.
+write_failure_honest() { # results file, message file
+    local n last
+    if grep -q "it was removed; no results were kept" "$2"; then [ ! -e "$1" ]; return; fi
+    last=$(sed -n 's/.*it keeps records 0 to \([0-9]*\).*/\1/p' "$2" | head -1)
+    [ -n "$last" ] || return 1
+    n=$(ncdump -h "$1" 2>/dev/null | sed -n 's/^[[:space:]]*time = UNLIMITED ; \/\/ (\([0-9]*\) currently).*/\1/p')
+    [ "${n:-0}" -gt "$last" ]
+}
+# a write that fails in the middle of the run (a file size limit, SIGXFSZ
+# ignored: the write fails with EFBIG after ricochet found room on the file
+# system, as when another program fills it): exit 4, the message true of
+# the file, no crash
+(trap '' XFSZ; ulimit -f 2048; exec "$bin" run "$demo" -o "$tmp/fsize.nc" -q --t-end 3) > "$tmp/e" 2>&1; rc=$?
+if grep -q "I/O error: .*fsize.nc: .*record [0-9]" "$tmp/e" && write_failure_honest "$tmp/fsize.nc" "$tmp/e"; then
+    expect write_fails_mid_run 4 $rc "($(grep -v '^HDF5-DIAG\|^  ' "$tmp/e" | head -c 300))"
+else expect write_fails_mid_run 4 99 "(exit $rc: $(grep -v '^HDF5-DIAG\|^  ' "$tmp/e" | head -c 300))"; fi
 
 # I/O faults: a full file system (small tmpfs, needs root and mount; skipped
 # otherwise), a directory removed during the run: exit 4 with a message naming
@@ -211,9 +258,9 @@ if [ "$(id -u)" -eq 0 ] && mount -t tmpfs -o size=16k tmpfs "$tmp/fs" 2>/dev/nul
     wait $filler
     if grep -q "out.nc: file system full" "$tmp/e" && ncdump -v time "$tmp/fs/out.nc" > /dev/null 2>&1; then
         expect disk_filled_during_run 4 $rc "(file readable; $(head -c 140 "$tmp/e"))"
-    elif grep -q "I/O error: .*out.nc: .*record [0-9]" "$tmp/e"; then
-        expect disk_filled_during_run 4 $rc "(write failed in HDF5, no crash; $(head -c 140 "$tmp/e"))"
-    else expect disk_filled_during_run 4 99 "(exit $rc: $(head -c 200 "$tmp/e"))"; fi
+    elif grep -q "I/O error: .*out.nc: .*record [0-9]" "$tmp/e" && write_failure_honest "$tmp/fs/out.nc" "$tmp/e"; then
+        expect disk_filled_during_run 4 $rc "(write failed in HDF5, no crash, the message true of the file; $(head -c 200 "$tmp/e"))"
+    else expect disk_filled_during_run 4 99 "(exit $rc: $(head -c 300 "$tmp/e"))"; fi
     umount "$tmp/fs"
 else
     echo "SKIP cli.disk_full: needs root and a tmpfs mount"

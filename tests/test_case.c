@@ -762,8 +762,9 @@ static void test_case_error_main_missing_is_eio(void)
     rc_error_clear(&e);
     ENSURE(rc_case_load("tests/data/no_such_deck.rad", &c, &e) == RC_EIO);
     ENSURE(c == NULL && e.code == RC_EIO && strstr(e.msg, "tests/data/no_such_deck.rad"));
-    ENSURE(rc_case_load("tests/data", &c, &e) == RC_EIO); /* a directory */
-    ENSURE(strstr(e.msg, "not a regular file") != NULL);
+    /* a directory is no case file: an input error naming it */
+    ENSURE(rc_case_load("tests/data", &c, &e) == RC_EINPUT);
+    ENSURE(strstr(e.msg, "tests/data") && strstr(e.msg, "not a regular file (a directory)"));
 }
 
 /* ---- Errors: cards ------------------------------------------------------ */

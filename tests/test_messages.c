@@ -99,8 +99,9 @@ static void test_messages_unresolvable_scales(void)
     ENSURE(strstr(msg, "card /INTER/TYPE6/1") && strstr(msg, "below the resolution of the coordinates"));
     /* the demo itself is resolvable */
     ENSURE(compile_variant(curve, curve, msg, sizeof msg) == RC_OK);
-    /* a run of 1e12 s against a contact time of 1e-3 s: time unresolvable */
-    ENSURE(compile_variant("                   1              0.0001\n", "               1e+15              0.0001\n", msg,
+    /* a run of 1e15 s against a contact time of 1e-3 s: time unresolvable
+     * (an output interval of 1e9 s: 1e6 records, within RC_MAX_RECORDS) */
+    ENSURE(compile_variant("                   1              0.0001\n", "               1e+15               1e+09\n", msg,
                            sizeof msg) == RC_EINPUT);
     ENSURE(strstr(msg, "card /INTER/TYPE6/1") && strstr(msg, "below the resolution of the time"));
 }

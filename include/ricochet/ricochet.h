@@ -9,6 +9,20 @@
  * Pipeline:  rc_case_load  ->  rc_model_compile  ->  rc_run
  *            (or rc_session_open, rc_run_until ..., rc_session_close)
  *
+ * Pointer arguments: every function checks them. Each declaration says
+ * which may be NULL and what NULL does; a NULL where none is allowed is
+ * refused with RC_EINPUT (nothing done) by the functions that return a
+ * status, and gives the stated value (0, NaN, NULL, a no-op) elsewhere.
+ * `err` may be NULL everywhere: the status is returned, the message lost.
+ *
+ * Threads: separate cases, models and sessions may be used from separate
+ * threads at once (each run writing its own results file: the library
+ * serialises its netCDF calls, as HDF5 under netCDF is not thread-safe).
+ * One object is used from one thread at a time; a compiled model may be
+ * run by several threads at once (rc_run and sessions only read it), but
+ * not changed (rc_model_set_rtol, rc_model_set_method, rc_model_free)
+ * while a run or session uses it.
+ *
  * Link with `pkg-config --cflags --libs ricochet` (docs/embedding.md).
  */
 #ifndef RICOCHET_H
@@ -27,9 +41,13 @@ extern "C" {
  * program's exit codes. */
 typedef enum {
     RC_OK = 0,
-    RC_EINPUT = 2,    /* the case file is wrong; nothing was run         */
+    RC_EINPUT = 2,    /* the input is wrong: the case file, an option or
+                         an argument of the call (a NULL pointer, a call
+                         from a callback that would deadlock); nothing was
+                         run or written                                  */
     RC_ESOLVER = 3,   /* the integrator failed; partial results are kept */
-    RC_EIO = 4,       /* a file could not be read or written             */
+    RC_EIO = 4,       /* a file could not be read or written; for the
+                         results file the message says what it keeps    */
     RC_ENOMEM = 5,    /* out of memory                                   */
     RC_EINTERNAL = 6, /* a bug in ricochet                               */
     RC_EINTERRUPT = 7 /* stopped by the caller (a signal, the event
@@ -47,7 +65,8 @@ typedef struct rc_error {
     const char *src_func;
 } rc_error;
 
-/* Static message of a status code (never NULL). */
+/* Static message of a status code (never NULL; "unknown status" for a
+ * value outside the enum). */
 const char *rc_status_str(rc_status code);
 /* Process exit code for a status: 0, 2, 3, 4; 130 when interrupted (the
  * shell's 128 + SIGINT); 1 for other failures. */
@@ -56,27 +75,36 @@ int rc_status_exit_code(rc_status code);
 const char *rc_version(void);
 /* The git commit ricochet was built from ("unknown" outside a git checkout)
  * and the versions of the libraries it uses, one "name version" per line
- * (SUNDIALS, KLU, GSL, netCDF), as printed by `ricochet --version`. */
+ * (SUNDIALS, KLU, GSL, netCDF), as printed by `ricochet --version`. A NULL
+ * `f` prints nothing. */
 const char *rc_build_commit(void);
 void rc_print_versions(FILE *f);
 
 /* Progress of the long stages (reading, compiling) on `f`; NULL (the
- * default) says nothing. Printed only for stages that run over a second. */
+ * default) says nothing. Printed only for stages that run over a second.
+ * One setting for the process: set it before starting threads. */
 void rc_set_progress(FILE *f);
 
 /* ---- Case (parsed deck) --------------------------------------------- */
 typedef struct rc_case rc_case;
 
 /* Read a case file (Radioss block format, see docs/case-format.md).
- * On failure returns RC_EINPUT or RC_EIO, fills *err, sets *out to NULL. */
+ * `path` and `out` must not be NULL. The case file and every file it
+ * includes must be regular files: a named pipe, device, socket or directory
+ * is refused (RC_EINPUT naming the path, and the file:line of the #include)
+ * without waiting on it. On failure returns RC_EINPUT (the deck, or a file
+ * that is not a regular file) or RC_EIO (the case file cannot be opened or
+ * read), fills *err, sets *out to NULL. */
 rc_status rc_case_load(const char *path, rc_case **out, rc_error *err);
 void rc_case_free(rc_case *c); /* NULL is a no-op */
 /* The files the case was read from: 0 is the case file, then every file it
- * includes, in reading order. NULL when i is out of range. */
+ * includes, in reading order. NULL when i is out of range or c is NULL
+ * (whose count is 0). */
 int rc_case_file_count(const rc_case *c);
 const char *rc_case_file(const rc_case *c, int i);
 /* Warnings of the reading ("file:line: ..."): ignored cards, leniencies,
- * unit conversions; i in [0, rc_case_warning_count(c)). */
+ * unit conversions; i in [0, rc_case_warning_count(c)). A NULL c has no
+ * warnings (count 0, rc_case_warning NULL). */
 int rc_case_warning_count(const rc_case *c);
 const char *rc_case_warning(const rc_case *c, int i);
 
@@ -84,23 +112,30 @@ const char *rc_case_warning(const rc_case *c, int i);
 typedef struct rc_model rc_model;
 
 /* Resolve references, check physics, build the state layout and the
- * Jacobian pattern. Returns RC_EINPUT with file:line in *err on bad input. */
+ * Jacobian pattern. Returns RC_EINPUT with file:line in *err on bad input;
+ * among the checks, values whose products overflow (a body's weight,
+ * kinetic, rotational or potential energy beyond 1e300, docs/case-format.md)
+ * are refused naming the field. `c` and `out` must not be NULL (RC_EINPUT);
+ * *out is NULL on failure. The case may be freed once compiled. */
 rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err);
 void rc_model_free(rc_model *m); /* NULL is a no-op */
 /* Human-readable summary (bodies, surfaces, interfaces, state size, solver
- * settings) as printed by `ricochet check`. */
+ * settings) as printed by `ricochet check`. A NULL m or f prints nothing. */
 void rc_model_print_summary(const rc_model *m, FILE *f);
 /* Replace the relative tolerance (/SOLVER Rtol) of a compiled model and
  * re-derive the absolute tolerances that scale with it (those left blank
  * on /SOLVER; docs/theory.md 7.1). rtol must be finite, in (0, 1):
- * RC_EINPUT otherwise, the model unchanged. */
+ * RC_EINPUT otherwise, the model unchanged. RC_EINPUT for a NULL m. Not
+ * while a run or session uses the model. */
 rc_status rc_model_set_rtol(rc_model *m, double rtol, rc_error *err);
 /* Replace the integration backend (/SOLVER Method) of a compiled model:
  * 1 CVODE (BDF on y' = f), 2 IDA (BDF on the residual form; the one that
- * runs joints). RC_EINPUT for another number, or 1 for a model with joints;
- * the model unchanged then. */
+ * runs joints). RC_EINPUT for another number, or 1 for a model with joints,
+ * or a NULL m; the model unchanged then. Not while a run or session uses
+ * the model. */
 rc_status rc_model_set_method(rc_model *m, int method, rc_error *err);
-/* The relative tolerance, end time and output interval of a model [-, s, s]. */
+/* The relative tolerance, end time and output interval of a model [-, s, s];
+ * NaN for a NULL m. */
 double rc_model_rtol(const rc_model *m);
 double rc_model_t_end(const rc_model *m);
 double rc_model_dt_out(const rc_model *m);
@@ -170,16 +205,35 @@ typedef struct rc_stats {
  * Return 0 to go on; non-zero stops the run after this event: the records
  * up to there are written, the file is marked incomplete with the reason
  * "stopped by the event callback at t = ...", and rc_run returns
- * RC_EINTERRUPT. Called from the thread that integrates. */
+ * RC_EINTERRUPT. Called from the thread that integrates: rc_run's caller,
+ * or a session's integration thread; what it may call is listed under
+ * "Stepping" below. `kind` and `element` are valid during the call only. */
 typedef int (*rc_event_fn)(void *user, double t, const char *kind, const char *element,
                            const double values[3]);
 
-/* Options of one run. Zero-initialise, then set what you need. */
+/* The most output records a run may write: an output interval that gives
+ * more over the end time (floor(t_end / dt_out) + 2 records, the events'
+ * records not counted) is refused with RC_EINPUT saying the count, whether
+ * it comes from the case (/RUN) or from rc_run_options. */
+#define RC_MAX_RECORDS 10000000
+
+/* Options of one run. Zero-initialise, then set what you need. The options
+ * are checked as the case's values are, before anything runs or is
+ * written: a wrong one is RC_EINPUT naming it. */
 typedef struct rc_run_options {
-    const char *output_path; /* netCDF output file; NULL: no file       */
+    const char *output_path; /* netCDF output file; NULL: no file. Created,
+                                or replaced when it is a regular file;
+                                refused (RC_EINPUT, nothing written) when it
+                                names the case file or a file it includes
+                                (compared by device and inode, so another
+                                spelling or a link is recognised) or
+                                something that is not a regular file      */
     int progress;            /* 1: progress on stderr: one line updated
                                 on a terminal, else a line every 10 s   */
-    double t_end_override;   /* > 0: replace the case's end time [s]    */
+    double t_end_override;   /* 0: the case's end time; else the end time
+                                [s], finite and > 0 (NaN, infinite or
+                                negative: RC_EINPUT), with at most
+                                RC_MAX_RECORDS records                   */
     double *y_end;           /* non-NULL: receives the final state vector,
                                 rc_model_state_size(m) values (layout in
                                 docs/theory.md)                          */
@@ -188,25 +242,34 @@ typedef struct rc_run_options {
                                 right-hand-side evaluation, writes what it
                                 computed (marked incomplete, with its
                                 statistics) and returns RC_EINTERRUPT   */
-    double dt_out_override;  /* > 0: replace the case's output interval [s] */
+    double dt_out_override;  /* 0: the case's output interval; else the
+                                interval [s], finite and > 0 (otherwise
+                                RC_EINPUT), giving at most RC_MAX_RECORDS
+                                records over the end time               */
     rc_event_fn on_event;    /* non-NULL: called at every event          */
     void *user;              /* passed to on_event                       */
 } rc_run_options;
 
-/* Number of values in the state vector of a model. */
+/* Number of values in the state vector of a model; 0 for a NULL m. */
 int rc_model_state_size(const rc_model *m);
 
 /* Integrate the model from t = 0 to its end time, writing the output.
- * Returns RC_OK, RC_ESOLVER (partial output kept, marked incomplete) or
- * RC_EIO. `stats` may be NULL. */
+ * Returns RC_OK; RC_EINPUT (a NULL m, a wrong option, an output path that
+ * names an input: nothing run, nothing written); RC_ESOLVER (partial output
+ * kept, marked incomplete); RC_EINTERRUPT (the stop flag or the event
+ * callback); RC_EIO (the results file could not be written: after a failed
+ * write the file is closed as far as HDF5 can, read back from the disk, and
+ * the message says exactly what it keeps, or that it did not read back and
+ * was removed). `opt`, `stats` and `err` may be NULL (NULL opt: the case's
+ * settings, no file). `stats` is zeroed when nothing ran. */
 rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats,
                  rc_error *err);
-/* 1 after a write of the results file failed: the HDF5 library cannot be
- * shut down safely then, so a program should end with _exit() rather than
- * exit() or a return from main (HDF5's exit-time clean-up would crash). The
- * file concerned may be unreadable. A full file system is detected before
- * any write fails: the file is then closed whole, marked incomplete, and
- * this stays 0. */
+/* 1 after HDF5 could not close a results file whose write had failed
+ * (rc_run's message says so): the HDF5 library cannot be shut down safely
+ * then, so a program should end with _exit() rather than exit() or a
+ * return from main (HDF5's exit-time clean-up would crash). A full file
+ * system is detected before any write fails: the file is then closed
+ * whole, marked incomplete, and this stays 0. */
 int rc_output_abandoned(void);
 
 /* ---- Stepping ------------------------------------------------------- */
@@ -216,32 +279,62 @@ int rc_output_abandoned(void);
  * rc_session_close ends it. Running in pieces gives the same steps, events
  * and records as one rc_run when the pieces end on output times (elsewhere
  * only the first step after a restart may differ, within the tolerances).
- * The integration runs in a second thread that waits while the caller
- * holds the session; the callbacks of `opt` are called from that thread. */
+ * The integration runs in a second thread (the session's integration
+ * thread) that waits while the caller holds the session; the callbacks of
+ * `opt` are called from that thread, while the thread that called
+ * rc_run_until (or rc_session_open, rc_session_close) waits for it.
+ *
+ * From the event callback of a session:
+ *   - rc_run_until and rc_session_close of that same session, or of a
+ *     session whose integration thread waits for this one (its callback
+ *     stepping this session), would wait for themselves: they return
+ *     RC_EINPUT and do nothing (the session goes on). To stop the run,
+ *     return non-zero from the callback; close the session after the
+ *     callback has returned.
+ *   - rc_session_time, rc_session_state and rc_session_finished of that
+ *     session may be called: they give the time and state where the
+ *     caller last stopped the session (not the event's; the callback's
+ *     own arguments give the event).
+ *   - Its model must not be changed or freed (rc_model_set_rtol,
+ *     rc_model_set_method, rc_model_free).
+ *   - Everything else may be called: other cases, models, runs and
+ *     sessions (opened, stepped or closed there).
+ * The same holds for the callback of rc_run, which is called from the
+ * thread that called rc_run. A session is used from one thread at a time
+ * (not necessarily the one that opened it). */
 typedef struct rc_session rc_session;
 
-/* Start a run of `m` with the options `opt` (copied; may be NULL). The
- * model must outlive the session. */
+/* Start a run of `m` with the options `opt` (copied; may be NULL: the
+ * case's settings, no file). The options are checked as rc_run checks them
+ * (RC_EINPUT, nothing run or written). `m` and `out` must not be NULL
+ * (RC_EINPUT); *out is NULL on failure. The model must outlive the
+ * session. */
 rc_status rc_session_open(const rc_model *m, const rc_run_options *opt, rc_session **out, rc_error *err);
-/* Advance to min(t, end time). RC_OK, or the status of a run that ended
- * (RC_ESOLVER, RC_EIO, RC_EINTERRUPT) with *err filled; once ended, every
- * later call returns that status again. A t at or before the time reached
- * does nothing. */
+/* Advance to min(t, end time) [s] (t = +infinity: to the end time). RC_OK,
+ * or the status of a run that ended (RC_ESOLVER, RC_EIO, RC_EINTERRUPT)
+ * with *err filled; once ended, every later call returns that status
+ * again. A t at or before the time reached does nothing. RC_EINPUT, and
+ * nothing done, for a NULL s, a NaN t, or a call from the event callback
+ * that would wait for itself (above). */
 rc_status rc_run_until(rc_session *s, double t, rc_error *err);
 /* The time reached [s] and the state there (rc_model_state_size values,
- * valid until the next rc_run_until or rc_session_close). */
+ * valid until the next rc_run_until or rc_session_close). NaN and NULL for
+ * a NULL s. */
 double rc_session_time(const rc_session *s);
 const double *rc_session_state(const rc_session *s);
-/* 1 when the run has reached its end time or ended on an error. */
+/* 1 when the run has reached its end time or ended on an error; 1 for a
+ * NULL s (nothing left to run). */
 int rc_session_finished(const rc_session *s);
 /* End the session: a run not at its end time is stopped there (the file
  * closed, marked incomplete with the reason "stopped by the caller at t =
  * ...", status RC_EINTERRUPT); else the status of the run. Fills `stats`
- * (may be NULL) and frees the session. NULL is a no-op (RC_OK). */
+ * (may be NULL) and frees the session. NULL is a no-op (RC_OK). From the
+ * event callback that would wait for itself (above): RC_EINPUT, the
+ * session left open. */
 rc_status rc_session_close(rc_session *s, rc_stats *stats, rc_error *err);
 
 /* Print statistics in the format of `ricochet run`: counters, the first
- * impacts and the sampling note. */
+ * impacts and the sampling note. A NULL s or f prints nothing. */
 void rc_stats_print(const rc_stats *s, FILE *f);
 
 /* ---- Export ------------------------------------------------------------ */
@@ -252,7 +345,8 @@ void rc_stats_print(const rc_stats *s, FILE *f);
  * events since the previous record as field data); docs/output-format.md.
  * DIR is created when missing. *nframes (may be NULL) receives the number
  * of records exported. RC_EIO when a file cannot be read or written,
- * RC_EINPUT when the results file lacks the variables needed. */
+ * RC_EINPUT when the results file lacks the variables needed, or for a
+ * NULL results_path or dir. */
 rc_status rc_export_vtk(const char *results_path, const char *dir, int *nframes, rc_error *err);
 
 #ifdef __cplusplus

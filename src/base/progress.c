@@ -5,12 +5,14 @@
 #include <time.h>
 #include <unistd.h>
 
-static FILE *stream;     /* NULL: off */
+static FILE *stream;     /* NULL: off (set once, before threads start) */
 static int tty;          /* the stream is a terminal: one line, overwritten */
-static const char *stage;
-static double t_stage, t_last;
-static int printed;
-static unsigned long calls;
+/* the stage under way, per thread: threads reading or compiling their own
+ * cases at once each time their own stage */
+static _Thread_local const char *stage;
+static _Thread_local double t_stage, t_last;
+static _Thread_local int printed;
+static _Thread_local unsigned long calls;
 
 static double now(void)
 {

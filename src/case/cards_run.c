@@ -219,6 +219,13 @@ rc_status rc_card_run(rc_reader *rd, const rc_block *b)
     if ((st = rc_parse_line(rd, b, &b->lines[0], f, RC_NF(f)))) return st;
     /* output interval: blank or 0 means Tend/100 */
     if (r->dtout == 0) r->dtout = RC_DEF_DTOUT_FRACTION * r->tend;
+    /* records at 0, Dt_out, ..., Tend: at most RC_MAX_RECORDS */
+    const double nrec = floor(r->tend / r->dtout) + 2.0;
+    if (!(nrec <= (double)RC_MAX_RECORDS))
+        return rc_case_fail(rd, &b->lines[0].loc, b->name, "Dt_out",
+                            "the output interval %g s over Tend = %g s gives %.4g records, more than the limit of %d; "
+                            "expected an output interval of at least %g s (or a shorter Tend)",
+                            r->dtout, r->tend, nrec, RC_MAX_RECORDS, r->tend / (RC_MAX_RECORDS - 2.0));
     r->present = 1;
     r->loc = b->hdr->loc;
     return RC_OK;
@@ -315,6 +322,13 @@ static rc_status rc_engine_settings(rc_reader *rd)
     r->dtout = rd->anim_dt > 0 ? rd->anim_dt : RC_DEF_DTOUT_FRACTION * r->tend;
     r->ev_state = 0;
     r->loc = rd->engine_run_hdr->loc;
+    const double nrec = floor(r->tend / r->dtout) + 2.0;
+    if (!(nrec <= (double)RC_MAX_RECORDS))
+        return rc_case_fail(rd, &(rd->anim_dt > 0 ? rd->anim_dt_hdr : rd->engine_run_hdr)->loc, NULL, NULL,
+                            "the output interval %g s (%s) over Tend = Tstop = %g s gives %.4g records, more than the "
+                            "limit of %d; expected an output interval of at least %g s",
+                            r->dtout, rd->anim_dt > 0 ? "Tfreq of /ANIM/DT" : "Tend/100", r->tend, nrec,
+                            RC_MAX_RECORDS, r->tend / (RC_MAX_RECORDS - 2.0));
     return rc_case_warn(rd, &r->loc,
                         "run settings from the Radioss engine card %s: Tend = Tstop = %.15g s, "
                         "Dt_out = %.15g s (%s)",

@@ -299,6 +299,8 @@ struct rc_case {
     int invers;          /* Radioss input version from /BEGIN (e.g. 2022, 140, 90); 0: none */
 
     int nfiles; char **files; /* every file read (main + includes); rc_loc.file points here */
+    unsigned long long *file_id; /* [2*nfiles] device and inode of each file as it was read
+                                    (NULL in a case built by hand) */
 
     int nfunct;  rc_case_funct *funct;
     int nnode;   rc_case_node *node;

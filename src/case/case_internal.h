@@ -87,7 +87,7 @@ typedef struct rc_reader {
     rc_line *lines; int nlines, caplines;     /* flat list of lines         */
     long bytes_read;                          /* all files                  */
     int file_reads;                           /* files opened               */
-    int capfiles;
+    int capfiles, capfileid;
     struct { dev_t dev; ino_t ino; } stack[RC_CASE_MAX_INCLUDE_DEPTH + 1];
     int depth;                                /* include stack              */
     int file_ended;                           /* /END or #enddata seen in the

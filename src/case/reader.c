@@ -30,7 +30,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #define RC_MAX_PATH 4096
 
@@ -40,20 +42,27 @@
 
 static rc_status rc_lex_file(rc_reader *rd, const char *path, const rc_loc *inc);
 
-/* Register a file name in c->files (once) and return the stored copy. */
-static const char *rc_file_name(rc_reader *rd, const char *path)
+/* Register a file name in c->files (once), with the device and inode it
+ * was read from, and return the stored copy. */
+static const char *rc_file_name(rc_reader *rd, const char *path, const struct stat *sb)
 {
     rc_case *c = rd->c;
     for (int i = 0; i < c->nfiles; i++)
         if (strcmp(c->files[i], path) == 0) return c->files[i];
     char *s = strdup(path);
     char **f = s ? rc_case_grow(rd, c->files, &rd->capfiles, c->nfiles, sizeof *f) : NULL;
-    if (!f) {
+    if (f) c->files = f;
+    /* two entries per file: a pair of ids grown as one element */
+    unsigned long long(*id)[2] =
+        f ? rc_case_grow(rd, c->file_id, &rd->capfileid, c->nfiles, sizeof *id) : NULL;
+    if (!f || !id) {
         free(s);
         rc_case_nomem(rd);
         return NULL;
     }
-    c->files = f;
+    c->file_id = &id[0][0];
+    id[c->nfiles][0] = (unsigned long long)sb->st_dev;
+    id[c->nfiles][1] = (unsigned long long)sb->st_ino;
     c->files[c->nfiles++] = s;
     return s;
 }
@@ -269,12 +278,29 @@ static rc_status rc_lex_file(rc_reader *rd, const char *path, const rc_loc *inc)
         return rc_case_fail(rd, inc, NULL, NULL, "#include \"%s\": more than %d files read",
                             path, RC_CASE_MAX_FILE_READS);
 
-    /* open; a regular file only (no directory, device or pipe) */
-    FILE *fp = fopen(path, "rb");
-    if (!fp) return rc_file_error(rd, path, inc, strerror(errno));
-    if (fstat(fileno(fp), &sb) != 0 || !S_ISREG(sb.st_mode)) {
-        fclose(fp);
-        return rc_file_error(rd, path, inc, "not a regular file");
+    /* open; a regular file only (no directory, device or pipe). Opened
+     * without blocking: opening a FIFO with no writer, or some devices,
+     * would wait for ever; checked with fstat before anything is read */
+    const int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) return rc_file_error(rd, path, inc, strerror(errno));
+    if (fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode)) {
+        const char *kind = S_ISDIR(sb.st_mode) ? "a directory" : S_ISFIFO(sb.st_mode) ? "a named pipe"
+                         : S_ISCHR(sb.st_mode) || S_ISBLK(sb.st_mode) ? "a device" : S_ISSOCK(sb.st_mode) ? "a socket"
+                                                                                                           : "not a file";
+        close(fd);
+        if (!inc)
+            return RC_SET(rd->err, RC_EINPUT, "%s: cannot read the case file: not a regular file (%s); expected a "
+                          "case file", path, kind);
+        return rc_case_fail(rd, inc, NULL, NULL, "#include \"%s\": cannot read it: not a regular file (%s)", path,
+                            kind);
+    }
+    /* a regular file: reads never block; back to ordinary reads */
+    const int fl = fcntl(fd, F_GETFL);
+    FILE *fp = fl >= 0 && fcntl(fd, F_SETFL, fl & ~O_NONBLOCK) == 0 ? fdopen(fd, "rb") : NULL;
+    if (!fp) {
+        const int e = errno;
+        close(fd);
+        return rc_file_error(rd, path, inc, strerror(e));
     }
 
     /* a file already on the include stack is a cycle */
@@ -293,7 +319,7 @@ static rc_status rc_lex_file(rc_reader *rd, const char *path, const rc_loc *inc)
         rd->c->checksum = rc_fnv1a64(buf, size);
         rd->main_bytes = size;
     }
-    const char *fname = rc_file_name(rd, path);
+    const char *fname = rc_file_name(rd, path, &sb);
     if (!fname) return RC_ENOMEM;
 
     /* lex with the file on the include stack */
@@ -368,7 +394,7 @@ static rc_status rc_lex_engine(rc_reader *rd, const char *path)
         rd->engine_pass = 1;
         st = rc_lex_file(rd, eng, NULL);
         rd->engine_pass = 0;
-        const char *fname = st ? NULL : rc_file_name(rd, eng);
+        const char *fname = st ? NULL : rc_file_name(rd, eng, &sb);
         if (fname) {
             rc_loc loc = {fname, 1};
             st = rc_case_warn(rd, &loc,
@@ -553,7 +579,8 @@ rc_status rc_case_load(const char *path, rc_case **out, rc_error *err)
     rc_status st;
     memset(&rd, 0, sizeof rd);
     if (out) *out = NULL;
-    if (!path || !out) RC_RAISE(err, RC_EINTERNAL, "rc_case_load: NULL argument");
+    if (!out) RC_RAISE(err, RC_EINPUT, "rc_case_load: out is NULL; expected where to store the case");
+    if (!path) RC_RAISE(err, RC_EINPUT, "rc_case_load: the path is NULL; expected a case file name");
     rd.err = err;
     rd.begin_units[0] = rd.begin_units[1] = rd.begin_units[2] = 1.0;
     rd.cur_units = rd.begin_units;
@@ -602,6 +629,7 @@ void rc_case_free(rc_case *c)
     free(c->path);
     for (int i = 0; i < c->nfiles; i++) free(c->files[i]);
     free(c->files);
+    free(c->file_id);
     for (int i = 0; i < c->nfunct; i++) { free(c->funct[i].x); free(c->funct[i].y); }
     free(c->funct);
     free(c->node);

@@ -4,7 +4,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include "ricochet/ricochet.h"
@@ -19,7 +18,7 @@ static void usage(FILE *f)
             "       ricochet COMMAND --help              the options of a command\n"
             "       ricochet --help | --version\n"
             "exit codes: 0 success, 2 input error, 3 solver failure, 4 I/O error,\n"
-            "            130 interrupted (SIGINT), 143 terminated (SIGTERM)\n");
+            "            129 hung up (SIGHUP), 130 interrupted (SIGINT), 143 terminated (SIGTERM)\n");
 }
 
 static void usage_run(FILE *f)
@@ -39,11 +38,14 @@ static void usage_run(FILE *f)
             "                 with joints runs on ida only\n"
             "  -h, --help     this text\n"
             "T, DT and R are positive finite numbers (R below 1); T and DT in seconds (SI, as the deck is\n"
-            "read: a deck naming its units is converted to SI; one naming none is used as written).\n"
+            "read: a deck naming its units is converted to SI; one naming none is used as written); T / DT\n"
+            "may give at most 10000000 records. OUT.nc may not be the case file nor a file it includes.\n"
             "Progress (unless -q): one line updated on a terminal, a line every 10 s in a log, with the time\n"
             "remaining estimated from the rate of simulated time.\n"
+            "SIGHUP, SIGINT, SIGTERM: the run stops at its next step, the results file is closed with what\n"
+            "was computed, marked incomplete (\"interrupted at t = ...\"); a second signal kills at once.\n"
             "exit codes: 0 success, 2 input error, 3 solver failure, 4 I/O error,\n"
-            "            130 interrupted (SIGINT), 143 terminated (SIGTERM)\n");
+            "            129 hung up (SIGHUP), 130 interrupted (SIGINT), 143 terminated (SIGTERM)\n");
 }
 
 static void usage_check(FILE *f)
@@ -110,26 +112,7 @@ static int load(const char *path, rc_case **c, rc_model **m, rc_error *e)
     return 0;
 }
 
-/* The results must never overwrite an input: the output path may not be the
- * case file nor any file it includes (same device and inode). Exit code 2. */
-static int check_output_path(const rc_case *c, const char *out)
-{
-    struct stat so;
-    if (!out || stat(out, &so) != 0) return 0; /* a new file overwrites nothing */
-    for (int i = 0; i < rc_case_file_count(c); i++) {
-        struct stat si;
-        if (stat(rc_case_file(c, i), &si) == 0 && si.st_dev == so.st_dev && si.st_ino == so.st_ino) {
-            fprintf(stderr,
-                    "ricochet: the output file '%s' is the input file '%s'%s: refusing to overwrite an input "
-                    "(give another -o path)\n",
-                    out, rc_case_file(c, i), i == 0 ? " (the case file)" : " (included by the case)");
-            return 2;
-        }
-    }
-    return 0;
-}
-
-/* Set by SIGINT or SIGTERM; the run polls it (rc_run_options.stop). */
+/* Set by SIGHUP, SIGINT or SIGTERM; the run polls it (rc_run_options.stop). */
 static volatile sig_atomic_t stop_requested = 0;
 
 static void on_signal(int sig)
@@ -158,15 +141,19 @@ static int export_vtk(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
-    /* SIGINT, SIGTERM: end the run at the next step, keep what it computed
-     * (a second signal kills at once) */
-    struct sigaction sa;
+    /* SIGHUP (the terminal closed), SIGINT, SIGTERM: end the run at the next
+     * step, close the results file with what it computed (a second signal
+     * kills at once). SIGHUP ignored when the program starts (nohup) stays
+     * ignored; SIGINT is handled even when ignored at the start (a job in
+     * the background of a script starts with it ignored) */
+    struct sigaction sa, old;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_signal;
     sa.sa_flags = SA_RESETHAND;
     sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
+    if (sigaction(SIGHUP, NULL, &old) == 0 && old.sa_handler != SIG_IGN) sigaction(SIGHUP, &sa, NULL);
     if (argc < 2) {
         usage(stderr);
         return 2;
@@ -251,17 +238,19 @@ int main(int argc, char **argv)
     if (rc == 0 && rtol > 0 && rc_model_set_rtol(m, rtol, &e)) rc = fail(&e);
     if (rc == 0 && method > 0 && rc_model_set_method(m, method, &e)) rc = fail(&e);
     char *def = NULL;
-    if (rc == 0 && is_run) {
-        def = out ? NULL : default_output(case_path);
-        rc = check_output_path(c, out ? out : def);
+    if (rc == 0 && is_run && !out && !(def = default_output(case_path))) {
+        fprintf(stderr, "ricochet: out of memory\n");
+        rc = rc_status_exit_code(RC_ENOMEM);
     }
     if (rc == 0 && !is_run) rc_model_print_summary(m, stdout);
     if (rc == 0 && is_run) {
+        /* the library refuses an output that names an input, and options
+         * out of range (RC_EINPUT, nothing run or written) */
         rc_run_options opt = {.output_path = out ? out : def, .progress = !quiet, .t_end_override = t_end,
                               .dt_out_override = dt_out, .stop = &stop_requested};
         rc_stats s;
         rc_status st = rc_run(m, &opt, &s, &e);
-        if (!quiet) {
+        if (!quiet && st != RC_EINPUT) {
             printf("ricochet %s: %s -> %s\n", rc_version(), case_path, opt.output_path);
             rc_stats_print(&s, stdout);
         }

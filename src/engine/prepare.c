@@ -56,7 +56,9 @@ rc_status rc_fast_select(rc_model *m, rc_error *err)
 rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
 {
     rc_model *m = NULL;
+    if (!out) RC_RAISE(err, RC_EINPUT, "rc_model_compile: out is NULL; expected where to store the model");
     *out = NULL;
+    if (!c) RC_RAISE(err, RC_EINPUT, "rc_model_compile: the case is NULL; expected one from rc_case_load");
     rc_progress_stage("building the model");
     rc_status st = rc_model_build(c, &m, err);
     rc_progress_done();
@@ -88,6 +90,7 @@ rc_status rc_model_set_rtol(rc_model *m, double rtol, rc_error *err)
 {
     rc_error local;
     if (!err) err = &local;
+    if (!m) RC_RAISE(err, RC_EINPUT, "rc_model_set_rtol: the model is NULL; expected a compiled model");
     if (!(isfinite(rtol) && rtol > 0 && rtol < 1))
         RC_RAISE(err, RC_EINPUT, "relative tolerance: expected a finite number in (0, 1), got %g", rtol);
     const double old = m->rtol;
@@ -114,6 +117,7 @@ rc_status rc_model_set_method(rc_model *m, int method, rc_error *err)
 {
     rc_error local;
     if (!err) err = &local;
+    if (!m) RC_RAISE(err, RC_EINPUT, "rc_model_set_method: the model is NULL; expected a compiled model");
     if (method != 1 && method != 2)
         RC_RAISE(err, RC_EINPUT, "integration method: expected 1 (CVODE) or 2 (IDA), got %d", method);
     if (method == 1 && m->jnt && m->jnt->n > 0)
@@ -130,6 +134,6 @@ rc_status rc_model_set_method(rc_model *m, int method, rc_error *err)
     return RC_OK;
 }
 
-double rc_model_rtol(const rc_model *m) { return m->rtol; }
-double rc_model_t_end(const rc_model *m) { return m->tend; }
-double rc_model_dt_out(const rc_model *m) { return m->dtout; }
+double rc_model_rtol(const rc_model *m) { return m ? m->rtol : NAN; }
+double rc_model_t_end(const rc_model *m) { return m ? m->tend : NAN; }
+double rc_model_dt_out(const rc_model *m) { return m ? m->dtout : NAN; }

@@ -149,6 +149,7 @@ static void print_guidance(const rc_model *m, FILE *f)
 
 void rc_model_print_summary(const rc_model *m, FILE *f)
 {
+    if (!m || !f) return;
     fprintf(f, "case        %s (checksum %016lx)\n", m->case_path, m->checksum);
     if (m->title[0]) fprintf(f, "title       %s\n", m->title);
     fprintf(f, "units       %s\n", m->unit_mass[0] ? "" : "undeclared (one consistent system assumed)");

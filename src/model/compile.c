@@ -77,6 +77,106 @@ static int inv3(const double *a, double *o)
 }
 
 /* ---- bodies ------------------------------------------------------------ */
+
+/* Products of physical values must stay finite: a body of 1e308 kg weighs
+ * inf N under gravity, a velocity of 1e200 m/s gives an infinite kinetic
+ * energy, and the energies of the results (and their sums) would be inf or
+ * NaN. Every free body's weight m |g| [N], kinetic energy m v^2 / 2 and
+ * rotational energy w.J w / 2 [J] and potential energy m |g| |x| [J] at
+ * t = 0 stay below RC_MAX_DERIVED (docs/case-format.md); otherwise an input
+ * error names the field with the largest share of the product (in orders of
+ * magnitude). The magnitudes are compared in logarithms, so that nothing
+ * here overflows. Gravity is taken at Fscale_y (a time function scales it
+ * during the run). */
+#define RC_MAX_DERIVED 1e300
+
+/* A factor of a product: log10 of its magnitude (counted `pow` times), and
+ * where it was read. */
+typedef struct factor {
+    double lg;
+    int pow;
+    rc_loc loc;
+    char card[64];
+    const char *field;
+    const char *what, *unit; /* "mass", "kg" */
+    double value;
+} factor;
+
+static double lg10(double x) { return x > 0 ? log10(x) : -INFINITY; }
+
+static double norm3(const double *v) { return hypot(hypot(v[0], v[1]), v[2]); }
+
+/* Refuse `name` = coef * prod(f[k].value^f[k].pow) [unit] above RC_MAX_DERIVED. */
+static rc_status check_product(const char *name, const char *unit, double coef, const factor *f, int n, int body_id,
+                               rc_error *err)
+{
+    double lg = log10(coef);
+    for (int k = 0; k < n; k++) lg += f[k].pow * f[k].lg;
+    if (lg <= log10(RC_MAX_DERIVED)) return RC_OK;
+    int big = 0;
+    for (int k = 1; k < n; k++)
+        if (f[k].pow * f[k].lg > f[big].pow * f[big].lg) big = k;
+    char parts[512] = "";
+    for (int k = 0; k < n; k++)
+        snprintf(parts + strlen(parts), sizeof parts - strlen(parts), "%s%s %.3g %s", k ? ", " : "", f[k].what,
+                 f[k].value, f[k].unit);
+    RC_RAISE(err, RC_EINPUT,
+             RC_LOCFMT "card %s, field %s: the %s of /RBODY/%d at t = 0 is about 1e%.0f %s (%s), beyond %.0e: "
+             "its energies would not be finite; expected values whose products stay within the double range",
+             RC_LOC(f[big].loc), f[big].card, f[big].field, name, body_id, lg, unit, parts, RC_MAX_DERIVED);
+}
+
+static rc_status check_derived(const rc_case *c, const rc_model *m, const int *tra, const int *rot, const int *grav,
+                               rc_error *err)
+{
+    for (int b = 0; b < c->nrbody; b++) {
+        if (m->body_fixed[b]) continue;
+        const rc_case_rbody *rb = &c->rbody[b];
+        const double *y0 = m->body_y0 + RC_NB * b, *J = m->body_J + 9 * b;
+        const double g = norm3(m->body_grav + 3 * b), v = norm3(y0 + 7), w = norm3(y0 + 10), x = norm3(y0);
+        factor fm = {lg10(m->body_mass[b]), 1, rc_loc_or(rb->line_loc[0], rb->loc), "", "Mass", "mass", "kg",
+                     m->body_mass[b]};
+        snprintf(fm.card, sizeof fm.card, "/RBODY/%d", rb->id);
+        factor fj = fm;
+        fj.lg = lg10(J[0] + J[4] + J[8]);
+        fj.loc = rc_loc_or(rb->line_loc[1], rb->loc);
+        fj.field = "Jxx..Jxz";
+        fj.what = "inertia (trace)";
+        fj.unit = "kg m^2";
+        fj.value = J[0] + J[4] + J[8];
+        factor fg = {lg10(g), 1, rb->loc, "", "Fscale_y", "gravity", "m/s^2", g};
+        if (grav[b] >= 0) {
+            fg.loc = rc_loc_or(c->grav[grav[b]].line_loc, c->grav[grav[b]].loc);
+            snprintf(fg.card, sizeof fg.card, "/GRAV/%d", c->grav[grav[b]].id);
+        }
+        factor fv = {lg10(v), 2, rb->loc, "", "Vx, Vy, Vz", "speed", "m/s", v};
+        if (tra[b] >= 0) {
+            fv.loc = rc_loc_or(c->inivel[tra[b]].line_loc, c->inivel[tra[b]].loc);
+            snprintf(fv.card, sizeof fv.card, "/INIVEL/TRA/%d", c->inivel[tra[b]].id);
+        }
+        factor fw = {lg10(w), 2, rb->loc, "", "Vx, Vy, Vz", "angular speed", "rad/s", w};
+        if (rot[b] >= 0) {
+            fw.loc = rc_loc_or(c->inivel[rot[b]].line_loc, c->inivel[rot[b]].loc);
+            snprintf(fw.card, sizeof fw.card, "/INIVEL/ROT/%d", c->inivel[rot[b]].id);
+        }
+        factor fx = {lg10(x), 1, rb->loc, "", "node_ID", "distance from the origin", "m", x};
+        snprintf(fx.card, sizeof fx.card, "/RBODY/%d", rb->id);
+        const int nd = rc_case_find_node(c, rb->node_id);
+        if (nd >= 0) {
+            fx.loc = c->node[nd].loc;
+            snprintf(fx.card, sizeof fx.card, "/NODE");
+            fx.field = "X, Y, Z";
+        }
+        const factor weight[2] = {fm, fg}, kin[2] = {fm, fv}, spin[2] = {fj, fw}, pot[3] = {fm, fg, fx};
+        rc_status st = check_product("weight m |g|", "N", 1.0, weight, 2, rb->id, err);
+        if (!st) st = check_product("kinetic energy m v^2 / 2", "J", 0.5, kin, 2, rb->id, err);
+        if (!st) st = check_product("rotational energy w.J w / 2", "J", 0.5, spin, 2, rb->id, err);
+        if (!st) st = check_product("potential energy m |g| |x|", "J", 1.0, pot, 3, rb->id, err);
+        if (st) return st;
+    }
+    return RC_OK;
+}
+
 static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
 {
     /* main node -> the body that took it (+1), to refuse a second one */
@@ -142,7 +242,15 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
     free(mp);
     /* initial velocities */
     int *flag = calloc((size_t)c->nrbody + 1, sizeof(int));
-    if (!flag) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    /* the cards that gave each body its velocities and gravity (-1: none) */
+    int *tra = malloc(3 * ((size_t)c->nrbody + 1) * sizeof(int)), *rot = tra ? tra + c->nrbody + 1 : NULL,
+        *grav = tra ? rot + c->nrbody + 1 : NULL;
+    if (!flag || !tra) {
+        free(flag);
+        free(tra);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    for (int b = 0; b < 3 * (c->nrbody + 1); b++) tra[b] = -1;
     rc_status st = RC_OK;
     for (int k = 0; k < c->ninivel && !st; k++) {
         const rc_case_inivel *iv = &c->inivel[k];
@@ -150,7 +258,10 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
         snprintf(card, sizeof card, "/INIVEL/%s/%d", iv->rot ? "ROT" : "TRA", iv->id);
         st = group_bodies(c, iv->grnod_id, rc_loc_or(iv->line_loc, iv->loc), card, flag, err);
         for (int b = 0; b < c->nrbody && !st; b++)
-            if (flag[b]) memcpy(m->body_y0 + RC_NB * b + (iv->rot ? 10 : 7), iv->v, 3 * sizeof(double));
+            if (flag[b]) {
+                memcpy(m->body_y0 + RC_NB * b + (iv->rot ? 10 : 7), iv->v, 3 * sizeof(double));
+                (iv->rot ? rot : tra)[b] = k;
+            }
     }
     /* /BCS on a node of a body: all six flags fix the body; otherwise the
      * flagged global translations are held, and the rotations all or none
@@ -198,9 +309,14 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
         m->grav_ascale = gr->ascale;
         st = group_bodies(c, gr->grnod_id, gl, card, flag, err);
         for (int b = 0; b < c->nrbody && !st; b++)
-            if (flag[b]) m->body_grav[3 * b + gr->dir] += gr->fscale;
+            if (flag[b]) {
+                m->body_grav[3 * b + gr->dir] += gr->fscale;
+                grav[b] = k;
+            }
     }
+    if (!st) st = check_derived(c, m, tra, rot, grav, err);
     free(flag);
+    free(tra);
     return st;
 }
 
@@ -524,6 +640,12 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     for (int k = 0; m->file && k < m->nfile; k++)
         if ((m->file[k] = malloc(strlen(rc_case_file(c, k)) + 1))) strcpy(m->file[k], rc_case_file(c, k));
         else files_ok = 0;
+    /* and their device and inode as read: the results never overwrite them */
+    if (files_ok && c->file_id) {
+        m->file_id = malloc(2 * ((size_t)m->nfile + 1) * sizeof *m->file_id);
+        if (m->file_id) memcpy(m->file_id, c->file_id, 2 * (size_t)m->nfile * sizeof *m->file_id);
+        else files_ok = 0;
+    }
     if (!files_ok) {
         st = RC_SET(err, RC_ENOMEM, "out of memory");
         goto fail;
@@ -704,6 +826,7 @@ void rc_model_free(rc_model *m)
     if (m->file)
         for (int k = 0; k < m->nfile; k++) free(m->file[k]);
     free(m->file);
+    free(m->file_id);
     rc_seg_free(m);
     void *arrays[] = {m->case_path, m->table, m->body_id, m->body_fixed, m->body_yadr, m->body_mass,
                       m->body_J, m->body_Jinv, m->body_y0, m->body_grav, m->body_dofmask, m->surf_id, m->surf_kind,
@@ -723,4 +846,4 @@ void rc_model_free(rc_model *m)
     free(m);
 }
 
-int rc_model_state_size(const rc_model *m) { return m->ny; }
+int rc_model_state_size(const rc_model *m) { return m ? m->ny : 0; }

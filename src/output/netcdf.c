@@ -34,6 +34,18 @@
  *   the handle is abandoned and rc_output_abandoned() tells the program to
  *   end without that clean-up. The path is also checked to still name the
  *   file that was created (a removed or renamed directory is reported).
+ * - A write that fails all the same (the file system filled by another
+ *   program between the check and the write, a file size limit, a device
+ *   error) leaves HDF5's handle unusable: the file is then closed as far as
+ *   HDF5 can, and read back from its bytes on disk (read_back: a second,
+ *   in-memory netCDF handle on a read-only mapping of the file, so that
+ *   HDF5 cannot answer from the handle it still holds) to say exactly what
+ *   it keeps; a file that does not read back is removed, and the message
+ *   says so. Nothing is claimed of a file that was not read back.
+ * - HDF5 under netCDF keeps library-wide state and Debian builds it without
+ *   thread safety: every netCDF call of the library runs holding one
+ *   process-wide lock (rc_nc_lock), so that threads running their own
+ *   simulations, each writing its own file, never call it at once.
  */
 #include "output/output.h"
 
@@ -41,10 +53,14 @@
 #include "base/sha256.h"
 
 #include <errno.h>
+#include <fcntl.h>
+#include <pthread.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <sys/statvfs.h>
 #include <math.h>
 #include <netcdf.h>
+#include <netcdf_mem.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -307,14 +323,38 @@ struct rc_output {
     int stopped;          /* no room for the next block: nothing more written, the file is whole */
     int nimpact;          /* impacts table (rc_output_impacts), written at close */
     rc_impact *impact;
-    int broken;           /* a netCDF write failed: the handle is abandoned */
+    int broken;           /* a netCDF write failed: the handle is unusable */
+    char fail[2048];      /* the first failed write's message (broken) */
     long linalg[3];       /* rc_output_linalg: analyses, Newton entries, pattern entries; -1 unknown */
 };
 
-/* Set after a failed netCDF write: HDF5 cannot be shut down safely. */
+/* ---- One lock for every netCDF call --------------------------------------- */
+
+static pthread_mutex_t nc_mutex = PTHREAD_MUTEX_INITIALIZER;
+
+void rc_nc_lock(void) { pthread_mutex_lock(&nc_mutex); }
+
+void rc_nc_unlock(void) { pthread_mutex_unlock(&nc_mutex); }
+
+const char *rc_output_netcdf_version(void)
+{
+    rc_nc_lock();
+    const char *v = nc_inq_libvers();
+    rc_nc_unlock();
+    return v;
+}
+
+/* Set when HDF5 could not close a file after a failed write: it cannot be
+ * shut down safely then. Written and read under the lock. */
 static int output_abandoned;
 
-int rc_output_abandoned(void) { return output_abandoned; }
+int rc_output_abandoned(void)
+{
+    rc_nc_lock();
+    const int a = output_abandoned;
+    rc_nc_unlock();
+    return a;
+}
 
 /* ---- Error reporting --------------------------------------------------- */
 
@@ -862,8 +902,7 @@ static rc_status check_room(rc_output *o, rc_error *err)
 
 /* ---- Public functions -------------------------------------------------- */
 
-rc_status rc_output_open(rc_output **out, const char *path, const rc_output_meta *meta,
-                         rc_error *err)
+static rc_status output_open(rc_output **out, const char *path, const rc_output_meta *meta, rc_error *err)
 {
     *out = NULL;
     rc_status rc = check_meta(meta, err);
@@ -928,9 +967,9 @@ rc_status rc_output_open(rc_output **out, const char *path, const rc_output_meta
     if (rc == RC_OK && stat(path, &fst) != 0)
         rc = RC_SET(err, RC_EIO, "%s: the output file is gone right after its creation: %s", path, strerror(errno));
     if (rc != RC_OK) {
-        /* a half-made file is not a result: remove it; HDF5 cannot close
-         * it safely after a failed write, so the handle is abandoned */
-        output_abandoned = 1;
+        /* a half-made file is not a result: remove it; a handle HDF5
+         * cannot close after a failed write is abandoned */
+        if (nc_close(o->ncid) != NC_NOERR) output_abandoned = 1;
         remove(o->path);
         output_free(o);
         return rc;
@@ -941,11 +980,19 @@ rc_status rc_output_open(rc_output **out, const char *path, const rc_output_meta
     return RC_OK;
 }
 
+rc_status rc_output_open(rc_output **out, const char *path, const rc_output_meta *meta, rc_error *err)
+{
+    rc_nc_lock();
+    const rc_status rc = output_open(out, path, meta, err);
+    rc_nc_unlock();
+    return rc;
+}
+
 /* Write the buffered records (one nc_put_vara per variable) and event rows,
  * then sync to disk, after checking there is room (check_room). No room:
  * the block is dropped and nothing more is written (o->stopped), the file
- * stays whole. A failed write abandons the handle (o->broken). */
-static rc_status flush(rc_output *o, rc_error *err)
+ * stays whole. A failed write makes the handle unusable (o->broken). */
+static rc_status write_block(rc_output *o, rc_error *err)
 {
     if (o->broken || o->stopped) return RC_OK;
     if (o->nbuf == 0 && o->nevbuf == 0) return RC_OK;
@@ -994,6 +1041,26 @@ static rc_status flush(rc_output *o, rc_error *err)
     return RC_OK;
 }
 
+/* write_block, keeping the message of a failed write for the close. Holds
+ * the netCDF lock. */
+static rc_status flush(rc_output *o, rc_error *err)
+{
+    rc_error local;
+    if (!err) err = &local;
+    const rc_status rc = write_block(o, err);
+    if (rc != RC_OK && o->broken && !o->fail[0]) snprintf(o->fail, sizeof o->fail, "%.2000s", err->msg);
+    return rc;
+}
+
+/* flush, taking the lock (from the record and event calls). */
+static rc_status flush_locked(rc_output *o, rc_error *err)
+{
+    rc_nc_lock();
+    const rc_status rc = flush(o, err);
+    rc_nc_unlock();
+    return rc;
+}
+
 rc_status rc_output_frame(rc_output *o, const rc_frame *f, rc_error *err)
 {
     /* the record's data, in the order of the variable table */
@@ -1038,7 +1105,7 @@ rc_status rc_output_frame(rc_output *o, const rc_frame *f, rc_error *err)
         if (o->rec_size[v]) memcpy(o->buf[v] + o->nbuf * o->rec_size[v], data[v], o->rec_size[v]);
     for (int k = 0; k < o->nenergy; k++) o->ebuf[(size_t)k * o->block + o->nbuf] = f->energy[k];
     o->nbuf++;
-    if (o->nbuf == o->block || wall_clock() - o->last_sync >= RC_OUT_SYNC_SECONDS) return flush(o, err);
+    if (o->nbuf == o->block || wall_clock() - o->last_sync >= RC_OUT_SYNC_SECONDS) return flush_locked(o, err);
     return RC_OK;
 }
 
@@ -1067,7 +1134,7 @@ rc_status rc_output_event_values(rc_output *o, double t, const char *kind, const
     o->ev_num[i] = t;
     for (int c = 0; c < 3; c++) o->ev_num[(c + 1) * RC_OUT_BLOCK_EVENTS + i] = values ? values[c] : NAN;
     o->nevbuf++;
-    if (o->nevbuf == RC_OUT_BLOCK_EVENTS) return flush(o, err);
+    if (o->nevbuf == RC_OUT_BLOCK_EVENTS) return flush_locked(o, err);
     return RC_OK;
 }
 
@@ -1183,41 +1250,256 @@ void rc_output_linalg(rc_output *o, long klu_analyses, long newton_nnz, long pat
     o->linalg[2] = pattern_nnz;
 }
 
-rc_status rc_output_close(rc_output *o, const rc_stats *st, int complete, const char *reason,
-                          rc_error *err)
+/* ---- After a failed write ------------------------------------------------ */
+
+/* What a results file holds, read back from its bytes on disk. */
+typedef struct readback {
+    size_t nrec;      /* records (length of the time axis)                */
+    size_t nvalid;    /* of them, the first ones with finite, increasing times */
+    double t_last;    /* time of record nvalid - 1 [s]                    */
+    size_t nevent;    /* event rows                                       */
+    char complete[16], status[256]; /* the attributes as written      */
+} readback;
+
+/* Every attribute of variable v (NC_GLOBAL: the file's) read: NC_NOERR or
+ * the first failure, its name in `what`. */
+static int read_attributes(int nc, int v, char *what, size_t nwhat)
+{
+    int natt = 0, st = v == NC_GLOBAL ? nc_inq_natts(nc, &natt) : nc_inq_varnatts(nc, v, &natt);
+    for (int a = 0; st == NC_NOERR && a < natt; a++) {
+        char name[NC_MAX_NAME + 1];
+        nc_type type;
+        size_t len = 0, size = 0;
+        if ((st = nc_inq_attname(nc, v, a, name)) != NC_NOERR) break;
+        snprintf(what, nwhat, "attribute %.100s", name);
+        if ((st = nc_inq_att(nc, v, name, &type, &len)) != NC_NOERR ||
+            (st = nc_inq_type(nc, type, NULL, &size)) != NC_NOERR)
+            break;
+        void *buf = calloc(len + 1, size + 1);
+        if (!buf) return NC_ENOMEM;
+        if (type == NC_STRING) {
+            if ((st = nc_get_att_string(nc, v, name, buf)) == NC_NOERR) nc_free_string(len, buf);
+        } else
+            st = nc_get_att(nc, v, name, buf);
+        free(buf);
+    }
+    return st;
+}
+
+/* The whole header of an open file read (every variable and its attributes,
+ * the file's attributes), and the last row of every variable along an
+ * unlimited dimension (the time series, the events, the impacts): what a
+ * reader of the file (ncdump, xarray) meets first. NC_NOERR or the first
+ * failure, named in `what`. */
+static int read_header_and_ends(int nc, char *what, size_t nwhat)
+{
+    int nvar = 0, nunlim = 0, unlim[8];
+    int st = read_attributes(nc, NC_GLOBAL, what, nwhat);
+    if (st == NC_NOERR) st = nc_inq_nvars(nc, &nvar);
+    if (st == NC_NOERR) st = nc_inq_unlimdims(nc, &nunlim, NULL);
+    if (st == NC_NOERR && nunlim > 8) return NC_EMAXDIMS;
+    if (st == NC_NOERR) st = nc_inq_unlimdims(nc, &nunlim, unlim);
+    for (int v = 0; st == NC_NOERR && v < nvar; v++) {
+        char name[NC_MAX_NAME + 1];
+        nc_type type;
+        int ndims = 0, dim[NC_MAX_VAR_DIMS];
+        size_t size = 0, n = 1, start[NC_MAX_VAR_DIMS] = {0}, count[NC_MAX_VAR_DIMS];
+        if ((st = nc_inq_var(nc, v, name, &type, &ndims, dim, NULL)) != NC_NOERR) break;
+        snprintf(what, nwhat, "variable %.100s", name);
+        if ((st = nc_inq_type(nc, type, NULL, &size)) != NC_NOERR) break;
+        char vwhat[128];
+        if ((st = read_attributes(nc, v, vwhat, sizeof vwhat)) != NC_NOERR) {
+            snprintf(what, nwhat, "variable %.60s, %.110s", name, vwhat);
+            break;
+        }
+        int along = 0;
+        for (int k = 0; k < nunlim; k++) along |= ndims > 0 && dim[0] == unlim[k];
+        if (!along) continue;
+        for (int d = 0; d < ndims && st == NC_NOERR; d++) st = nc_inq_dimlen(nc, dim[d], &count[d]);
+        if (st != NC_NOERR || count[0] == 0) continue;
+        start[0] = count[0] - 1; /* the last row */
+        count[0] = 1;
+        for (int d = 1; d < ndims; d++) n *= count[d];
+        void *buf = calloc(n + 1, size + 1);
+        if (!buf) return NC_ENOMEM;
+        if (type == NC_STRING) {
+            if ((st = nc_get_vara_string(nc, v, start, count, buf)) == NC_NOERR) nc_free_string(n, buf);
+        } else
+            st = nc_get_vara(nc, v, start, count, buf);
+        free(buf);
+    }
+    return st;
+}
+
+/* Read back the file at `path` (created as o->dev, o->ino) from its bytes
+ * on disk: a read-only mapping opened as an in-memory netCDF file, not
+ * through HDF5's handle (which may still be open in this process and would
+ * answer from its own cache). It reads back when its whole header, the
+ * times of all records and the last row of every series read. Returns 1
+ * when it reads back (rb filled), 0 when it does not (the file is
+ * unusable), -1 when it could not be checked; `why` says why not. Holds the
+ * netCDF lock. */
+static int read_back(const rc_output *o, readback *rb, char *why, size_t nwhy)
+{
+    memset(rb, 0, sizeof *rb);
+    int fd = open(o->path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    struct stat sb;
+    if (fd < 0) {
+        snprintf(why, nwhy, "cannot open it: %s", strerror(errno));
+        return -1;
+    }
+    if (fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode) || sb.st_dev != o->dev || sb.st_ino != o->ino) {
+        snprintf(why, nwhy, "the path no longer names the file written");
+        close(fd);
+        return -1;
+    }
+    if (sb.st_size == 0) {
+        snprintf(why, nwhy, "the file is empty");
+        close(fd);
+        return 0;
+    }
+    void *p = mmap(NULL, (size_t)sb.st_size, PROT_READ, MAP_PRIVATE, fd, 0);
+    close(fd);
+    if (p == MAP_FAILED) {
+        snprintf(why, nwhy, "cannot map it: %s", strerror(errno));
+        return -1;
+    }
+    NC_memio mem = {(size_t)sb.st_size, p, NC_MEMIO_LOCKED};
+    int nc, st = nc_open_memio(o->path, NC_NOWRITE, &mem, &nc);
+    if (st != NC_NOERR) {
+        snprintf(why, nwhy, "netCDF cannot open it: %s", nc_strerror(st));
+        munmap(p, (size_t)sb.st_size);
+        return 0;
+    }
+    int dim, var;
+    size_t len = 0;
+    if ((st = nc_inq_dimid(nc, "time", &dim)) == NC_NOERR && (st = nc_inq_dimlen(nc, dim, &rb->nrec)) == NC_NOERR)
+        st = nc_inq_varid(nc, "time", &var);
+    /* the times, in pieces: the records whose time is finite and increasing */
+    double piece[4096], prev = -INFINITY;
+    int valid = 1;
+    for (size_t k = 0; st == NC_NOERR && valid && k < rb->nrec; k += 4096) {
+        const size_t start[1] = {k}, count[1] = {rb->nrec - k < 4096 ? rb->nrec - k : 4096};
+        if ((st = nc_get_vara_double(nc, var, start, count, piece)) != NC_NOERR) break;
+        for (size_t i = 0; i < count[0] && valid; i++) {
+            valid = isfinite(piece[i]) && piece[i] >= prev && (k + i > 0 || piece[i] == 0.0);
+            if (valid) {
+                prev = rb->t_last = piece[i];
+                rb->nvalid++;
+            }
+        }
+    }
+    char what[192] = "the time axis";
+    if (st == NC_NOERR && nc_inq_dimid(nc, "event", &dim) == NC_NOERR) st = nc_inq_dimlen(nc, dim, &rb->nevent);
+    if (st == NC_NOERR) st = read_header_and_ends(nc, what, sizeof what);
+    /* the completion attributes, which every file has */
+    if (st == NC_NOERR) snprintf(what, sizeof what, "attribute complete");
+    if (st == NC_NOERR && (st = nc_inq_attlen(nc, NC_GLOBAL, "complete", &len)) == NC_NOERR)
+        st = len < sizeof rb->complete ? nc_get_att_text(nc, NC_GLOBAL, "complete", rb->complete) : NC_EINVAL;
+    if (st == NC_NOERR) snprintf(what, sizeof what, "attribute status");
+    if (st == NC_NOERR && (st = nc_inq_attlen(nc, NC_GLOBAL, "status", &len)) == NC_NOERR) {
+        char *t = calloc(len + 1, 1);
+        st = t ? nc_get_att_text(nc, NC_GLOBAL, "status", t) : NC_ENOMEM;
+        if (st == NC_NOERR) snprintf(rb->status, sizeof rb->status, "%s", t);
+        free(t);
+    }
+    nc_close(nc);
+    munmap(p, (size_t)sb.st_size);
+    if (st != NC_NOERR) {
+        snprintf(why, nwhy, "netCDF cannot read %s: %s", what, nc_strerror(st));
+        return 0;
+    }
+    return 1;
+}
+
+/* A write failed (o->fail): close the file as far as HDF5 can, read it back
+ * from the disk and say what it keeps; a file that does not read back is
+ * removed. `closed`: nc_close was already called (and failed). RC_EIO.
+ * Holds the netCDF lock. */
+static rc_status salvage(rc_output *o, int closed, rc_error *err)
+{
+    char close_why[256] = "";
+    if (!closed) {
+        const int s = nc_close(o->ncid);
+        if (s != NC_NOERR) snprintf(close_why, sizeof close_why, "%s", nc_strerror(s));
+    } else
+        snprintf(close_why, sizeof close_why, "it failed at the close");
+    /* HDF5 keeps a file it could not close, and its exit-time clean-up
+     * would crash on it (rc_output_abandoned) */
+    if (close_why[0]) output_abandoned = 1;
+    const char *failed = o->fail[0] ? o->fail : "a write of the results file failed";
+    readback rb;
+    char why[512] = "";
+    const int r = read_back(o, &rb, why, sizeof why);
+    if (r > 0) {
+        char kept[160];
+        if (rb.nvalid > 0)
+            snprintf(kept, sizeof kept, "records 0 to %zu (t = 0 to %.9g s)", rb.nvalid - 1, rb.t_last);
+        else
+            snprintf(kept, sizeof kept, "no records");
+        char beyond[96] = "";
+        if (rb.nrec > rb.nvalid)
+            snprintf(beyond, sizeof beyond, "; records %zu to %zu are not valid (never written)", rb.nvalid,
+                     rb.nrec - 1);
+        RC_RAISE(err, RC_EIO,
+                 "%s; the file was then %s and read back from the disk: it keeps %s and %zu event rows%s, "
+                 "marked complete = \"%s\" with the status \"%.120s\"%s",
+                 failed, close_why[0] ? "left as HDF5 had written it (it could not close it)" : "closed", kept,
+                 rb.nevent, beyond, rb.complete, rb.status,
+                 strcmp(rb.status, "running") ? "" : " (the closing attributes could not be written)");
+    }
+    if (r == 0) {
+        const int removed = remove(o->path) == 0;
+        RC_RAISE(err, RC_EIO, "%s; the file %s and does not read back from the disk (%s): %s; no results were kept",
+                 failed, close_why[0] ? "could not be closed whole" : "was closed", why,
+                 removed ? "it was removed" : "it could not be removed either");
+    }
+    RC_RAISE(err, RC_EIO, "%s; the file could not be read back to check it (%s): it may be unreadable", failed, why);
+}
+
+static rc_status output_close(rc_output *o, const rc_stats *st, int complete, const char *reason, rc_error *err)
+{
+    /* the buffered records, then the final attributes and the close; after
+     * a failed write, salvage says what the file keeps */
+    rc_status rc = flush(o, err);
+    int closed = 0;
+    if (!o->broken) {
+        /* after a refused write (no room), the attributes say so (first error reported) */
+        rc_error later;
+        rc_error *e = rc == RC_OK ? err : &later;
+        const int ok = rc == RC_OK;
+        rc_status rc2 = RC_OK;
+        o->broken = 1; /* until the file is closed */
+        int s = nc_redef(o->ncid);
+        if (s != NC_NOERR) rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "entering define mode");
+        if (rc2 == RC_OK) rc2 = write_final(o, st, complete && ok && !o->stopped, ok ? reason : err->msg, e);
+        int impact_var[I_COUNT];
+        const int impacts = o->var[V_INTER_ID] >= 0;
+        if (rc2 == RC_OK && impacts) rc2 = define_impacts(o, impact_var, e);
+        if (rc2 == RC_OK && (s = nc_enddef(o->ncid)) != NC_NOERR)
+            rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "ending definitions");
+        if (rc2 == RC_OK && impacts) rc2 = write_impacts(o, impact_var, e);
+        if (rc2 == RC_OK) {
+            closed = 1;
+            if ((s = nc_close(o->ncid)) == NC_NOERR) {
+                o->broken = 0;
+                return rc;
+            }
+            rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "closing the file");
+        }
+        if (!o->fail[0]) snprintf(o->fail, sizeof o->fail, "%.2000s", e->msg);
+    }
+    return salvage(o, closed, err);
+}
+
+rc_status rc_output_close(rc_output *o, const rc_stats *st, int complete, const char *reason, rc_error *err)
 {
     if (!o) return RC_OK;
-    /* the buffered records, then the final attributes; the file is closed
-     * and freed whatever happens, except after a failed write (abandoned) */
-    rc_status rc = flush(o, err);
-    if (o->broken) {
-        output_abandoned = 1;
-        if (rc == RC_OK)
-            rc = RC_SET(err, RC_EIO, "%s: an earlier write failed; the file may be unreadable", o->path);
-        output_free(o);
-        return rc;
-    }
-    /* after a failed write, the attributes say so (first error reported) */
-    rc_error later;
-    rc_error *e = rc == RC_OK ? err : &later;
-    const int ok = rc == RC_OK;
-    rc_status rc2 = RC_OK;
-    int s = nc_redef(o->ncid);
-    if (s != NC_NOERR) rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "entering define mode");
-    if (rc2 == RC_OK) rc2 = write_final(o, st, complete && ok && !o->stopped, ok ? reason : err->msg, e);
-    int impact_var[I_COUNT];
-    const int impacts = o->var[V_INTER_ID] >= 0;
-    if (rc2 == RC_OK && impacts) rc2 = define_impacts(o, impact_var, e);
-    if (rc2 == RC_OK && (s = nc_enddef(o->ncid)) != NC_NOERR)
-        rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "ending definitions");
-    if (rc2 == RC_OK && impacts) rc2 = write_impacts(o, impact_var, e);
-    if (rc2 != RC_OK) {
-        output_abandoned = 1;
-    } else if ((s = nc_close(o->ncid)) != NC_NOERR) {
-        output_abandoned = 1;
-        rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "closing the file");
-    }
-    if (rc == RC_OK) rc = rc2;
+    rc_error local;
+    if (!err) err = &local;
+    rc_nc_lock();
+    const rc_status rc = output_close(o, st, complete, reason, err);
+    rc_nc_unlock();
     output_free(o);
     return rc;
 }

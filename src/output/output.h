@@ -10,6 +10,15 @@
 
 typedef struct rc_output rc_output;
 
+/* HDF5 under netCDF is not thread-safe (Debian builds it so): every netCDF
+ * call of the library runs holding this one process-wide lock. The writer
+ * (netcdf.c) and the export (vtk.c) take it themselves; a caller never
+ * holds it across a callback. */
+void rc_nc_lock(void);
+void rc_nc_unlock(void);
+/* netCDF's version string ("4.9.0 of ..."), read under the lock. */
+const char *rc_output_netcdf_version(void);
+
 /* What the file describes; copied at open. */
 typedef struct rc_output_meta {
     const char *title;        /* run title ("" allowed)                    */
@@ -135,7 +144,11 @@ rc_status rc_output_impacts(rc_output *o, int n, const rc_impact *rows, rc_error
  * the model's whole Jacobian pattern (-1: not known, not written). */
 void rc_output_linalg(rc_output *o, long klu_analyses, long newton_nnz, long pattern_nnz);
 /* Write statistics and completion attributes, close, free. `complete` 0
- * marks the file incomplete with `reason`. o == NULL is a no-op. */
+ * marks the file incomplete with `reason`. o == NULL is a no-op. After a
+ * failed write (here or earlier) the file is closed as far as HDF5 can, read
+ * back from the disk, and RC_EIO says what it keeps (records, time reached,
+ * event rows, its attributes as read) or that it did not read back and was
+ * removed. */
 rc_status rc_output_close(rc_output *o, const rc_stats *st, int complete, const char *reason,
                           rc_error *err);
 

@@ -535,12 +535,16 @@ static rc_status plane_extent(vtk_src *s, rc_error *err)
 rc_status rc_export_vtk(const char *results_path, const char *dir, int *nframes, rc_error *err)
 {
     if (nframes) *nframes = 0;
-    if (!results_path || !dir) RC_RAISE(err, RC_EINTERNAL, "export: no path");
+    if (!results_path) RC_RAISE(err, RC_EINPUT, "rc_export_vtk: the results path is NULL; expected a results file");
+    if (!dir) RC_RAISE(err, RC_EINPUT, "rc_export_vtk: the directory is NULL; expected where to write");
     /* the results file is opened first: a failed export leaves no directory behind */
     vtk_src s;
+    rc_nc_lock(); /* every netCDF call under the library's lock (output.h) */
     rc_status rc = src_open(&s, results_path, err);
+    rc_nc_unlock();
     if (rc == RC_OK && mkdir(dir, 0777) != 0 && errno != EEXIST)
         rc = RC_SET(err, RC_EIO, "%s: cannot create the directory: %s", dir, strerror(errno));
+    rc_nc_lock();
     if (rc == RC_OK) rc = plane_extent(&s, err);
     /* the stem of the results file names the outputs */
     const char *base = strrchr(results_path, '/');
@@ -566,6 +570,8 @@ rc_status rc_export_vtk(const char *results_path, const char *dir, int *nframes,
     if (rc == RC_OK && nc_inq_varid(s.ncid, "time", &vtime) == NC_NOERR && s.nrec > 0 &&
         nc_get_var_double(s.ncid, vtime, tt) != NC_NOERR)
         rc = RC_SET(err, RC_EIO, "%s: reading time", results_path);
+    const int has_fric = s.ncid >= 0 && has_var(s.ncid, "inter_force_friction");
+    rc_nc_unlock();
     const size_t plen = strlen(dir) + strlen(stem) + 64;
     char *path = malloc(plen);
     FILE *pvd = NULL;
@@ -577,13 +583,14 @@ rc_status rc_export_vtk(const char *results_path, const char *dir, int *nframes,
             fprintf(pvd, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" "
                          "byte_order=\"LittleEndian\">\n<Collection>\n");
     }
-    const int has_fric = has_var(s.ncid, "inter_force_friction");
     for (size_t i = 0; i < ni && c.seq; i++) c.seq[i] = (int)i;
     size_t ev = 0;
     for (size_t k = 0; rc == RC_OK && k < s.nrec; k++) {
+        rc_nc_lock();
         rc = get_rec(&s, "body_position", k, nb, 3, pos, err);
         if (rc == RC_OK) rc = get_rec(&s, "body_quaternion", k, nb, 4, quat, err);
         if (rc == RC_OK) rc = get_rec(&s, "body_velocity", k, nb, 3, vel, err);
+        rc_nc_unlock();
         if (rc != RC_OK) break;
         m.np = m.nconn = m.npoly = 0;
         static const double ident[4] = {1, 0, 0, 0}, zero[3] = {0, 0, 0};
@@ -597,6 +604,7 @@ rc_status rc_export_vtk(const char *results_path, const char *dir, int *nframes,
         if (rc == RC_OK) rc = write_bodies(path, &m, tt[k], err);
         if (rc != RC_OK) break;
         if (ni > 0) {
+            rc_nc_lock();
             rc = get_rec(&s, "inter_contact_point", k, ni, 3, c.point, err);
             if (rc == RC_OK) rc = get_rec(&s, "inter_normal", k, ni, 3, c.normal, err);
             if (rc == RC_OK) rc = get_rec(&s, "inter_penetration", k, ni, 1, c.pen, err);
@@ -604,6 +612,7 @@ rc_status rc_export_vtk(const char *results_path, const char *dir, int *nframes,
             if (rc == RC_OK) rc = get_rec_int(&s, "inter_mode", k, ni, c.mode, err);
             if (rc == RC_OK && has_fric) rc = get_rec(&s, "inter_force_friction", k, ni, 3, c.ffric, err);
             else if (rc == RC_OK) memset(c.ffric, 0, 3 * ni * sizeof(double));
+            rc_nc_unlock();
             if (rc != RC_OK) break;
             for (size_t i = 0; i < 3 * ni; i++) c.fvec[i] = -c.fn[i / 3] * c.normal[i]; /* on the first body */
         }
@@ -634,6 +643,8 @@ rc_status rc_export_vtk(const char *results_path, const char *dir, int *nframes,
     void *cp[] = {c.point, c.normal, c.pen, c.fn, c.ffric, c.fvec, c.mode, c.seq, m.pt, m.body, m.surf, m.vel,
                   m.conn, m.off, m.csurf};
     for (size_t k = 0; k < sizeof cp / sizeof cp[0]; k++) free(cp[k]);
+    rc_nc_lock();
     src_free(&s);
+    rc_nc_unlock();
     return rc;
 }

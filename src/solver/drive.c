@@ -570,6 +570,10 @@ void keep_error(volatile sig_atomic_t *stop, char *keep, size_t n, int code, con
         }                                                                                                     \
     } while (0)
 
+/* What an interrupted run's message says of its results: true once the
+ * file is closed (else rc_output_close's message says what it keeps). */
+#define RC_KEPT ": the results up to there are kept"
+
 /* Stop the run as interrupted, with the reason kept for the file. */
 #define INTERRUPT(...)                                        \
     do {                                                      \
@@ -677,7 +681,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     while (t < tend) {
         /* the event callback asked to stop: end here as an interrupted run */
         if (sink.stop) {
-            INTERRUPT("%s: the results up to there are kept", sink.why);
+            INTERRUPT("%s" RC_KEPT, sink.why);
             break;
         }
         /* stepping (rc_run_until): hand over the state at each time asked
@@ -690,7 +694,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             paused_stop = pause->reached(pause, tu, yu);
         }
         if (paused_stop) {
-            INTERRUPT("stopped by the caller at t = %.9g s: the results up to there are kept", t);
+            INTERRUPT("stopped by the caller at t = %.9g s" RC_KEPT, t);
             break;
         }
         /* single steps while an impact is in progress: its peak force and
@@ -708,7 +712,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
         /* interrupted (a signal): inside the integrator the right-hand side
          * made it fail; between two calls the next call returns at its first one */
         if (opt && opt->stop && *opt->stop) {
-            INTERRUPT("interrupted at t = %.9g s (signal): the results up to there are kept", t);
+            INTERRUPT("interrupted at t = %.9g s (signal)" RC_KEPT, t);
             break;
         }
         if (one_step && flag >= 0 && ++single > m->max_steps) flag = bk->too_much_work;
@@ -892,7 +896,15 @@ done:
         rc_output_linalg(out, d && d->n_klu_sym > 0 ? d->n_klu_sym : -1, d && d->newton_nnz > 0 ? d->newton_nnz : -1,
                          (long)m->nnz);
         rc_status st2 = rc_output_close(out, &s, st == RC_OK, fail_reason ? fail_reason : err->msg, &e2);
-        if (st == RC_OK && st2) {
+        if (st2 && st != RC_OK && st != RC_EIO) {
+            /* the file failed after the run stopped: its fate first, then why
+             * the run stopped, less the claim that the results are kept */
+            char *kept = strstr(err->msg, RC_KEPT);
+            if (kept) *kept = '\0';
+            snprintf(reason, sizeof reason, "%.2000s", err->msg);
+            RC_SET(err, st2, "%s\n(the run had stopped before: %s)", e2.msg, reason);
+            st = st2;
+        } else if (st2) {
             st = st2;
             *err = e2;
         }

@@ -1,9 +1,15 @@
 /*
- * rc_run: the backend-neutral entry of the integration stage. Picks the
- * backend of the model's /SOLVER Method (solver.h) and runs it; prints the
- * statistics of a run.
+ * rc_run: the backend-neutral entry of the integration stage. Checks the
+ * arguments and options of a run as the reader checks a deck (nothing runs
+ * and nothing is written when they are wrong), picks the backend of the
+ * model's /SOLVER Method (solver.h) and runs it; prints the statistics of a
+ * run.
  */
+#include <errno.h>
+#include <math.h>
 #include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
 
 #include "base/error.h"
 #include "model/model.h"
@@ -12,14 +18,84 @@
 /* The backends, by method. */
 static const rc_solver *const rc_solvers[] = {&rc_solver_cvode, &rc_solver_ida};
 
+/* The kind of a file that is not a regular one, for messages. */
+static const char *file_kind(mode_t mode)
+{
+    return S_ISDIR(mode) ? "a directory" : S_ISFIFO(mode) ? "a named pipe" : S_ISCHR(mode) || S_ISBLK(mode) ? "a device"
+         : S_ISSOCK(mode) ? "a socket" : "not a file";
+}
+
+/* The output path must not name an input of the model: the case file or a
+ * file it includes, compared by device and inode (as read, and as the paths
+ * resolve now), so that another spelling, a link or a symbolic link of an
+ * input is recognised; nor anything but a regular file. RC_EINPUT. */
+static rc_status check_output_path(const rc_model *m, const char *out, rc_error *err)
+{
+    struct stat so;
+    if (stat(out, &so) != 0) return RC_OK; /* a new file overwrites nothing; a bad path fails at its creation */
+    if (!S_ISREG(so.st_mode))
+        RC_RAISE(err, RC_EINPUT,
+                 "%s: the output path is %s, not a regular file: expected a new file or a results file to replace; "
+                 "nothing was written",
+                 out, file_kind(so.st_mode));
+    for (int i = 0; i < m->nfile; i++) {
+        struct stat si;
+        const int as_read = m->file_id && m->file_id[2 * i] == (unsigned long long)so.st_dev &&
+                            m->file_id[2 * i + 1] == (unsigned long long)so.st_ino;
+        const int as_now = stat(m->file[i], &si) == 0 && si.st_dev == so.st_dev && si.st_ino == so.st_ino;
+        if (as_read || as_now)
+            RC_RAISE(err, RC_EINPUT,
+                     "%s: the output file is the input file '%s'%s: refusing to overwrite an input; nothing was "
+                     "written (give another output path)",
+                     out, m->file[i], i == 0 ? " (the case file)" : " (included by the case)");
+    }
+    return RC_OK;
+}
+
+/* A run's arguments and options, checked before anything runs or is
+ * written: RC_EINPUT naming the option. */
+static rc_status check_run(const rc_model *m, const rc_run_options *opt, rc_error *err)
+{
+    if (!m) RC_RAISE(err, RC_EINPUT, "rc_run: the model is NULL; expected a compiled model (rc_model_compile)");
+    const double te = opt ? opt->t_end_override : 0.0, dt = opt ? opt->dt_out_override : 0.0;
+    if (te != 0.0 && !(isfinite(te) && te > 0))
+        RC_RAISE(err, RC_EINPUT,
+                 "run option t_end_override: expected 0 (the case's end time) or a positive finite end time [s], got %g",
+                 te);
+    if (dt != 0.0 && !(isfinite(dt) && dt > 0))
+        RC_RAISE(err, RC_EINPUT,
+                 "run option dt_out_override: expected 0 (the case's output interval) or a positive finite interval "
+                 "[s], got %g",
+                 dt);
+    const double tend = te > 0 ? te : m->tend, dtout = dt > 0 ? dt : m->dtout;
+    /* records at the output times 0, dt, ..., tend (events add their own) */
+    const double nrec = floor(tend / dtout) + 2.0;
+    if (!(nrec <= (double)RC_MAX_RECORDS))
+        RC_RAISE(err, RC_EINPUT,
+                 "run options: the output interval %g s (%s) over the end time %g s (%s) gives %.4g records, more "
+                 "than the limit of %d (RC_MAX_RECORDS); expected an output interval of at least %g s or a shorter "
+                 "end time",
+                 dtout, dt > 0 ? "dt_out_override, --dt-out" : "the case's /RUN Dt_out", tend,
+                 te > 0 ? "t_end_override, --t-end" : "the case's /RUN Tend", nrec, RC_MAX_RECORDS,
+                 tend / (RC_MAX_RECORDS - 2.0));
+    if (opt && opt->output_path) return check_output_path(m, opt->output_path, err);
+    return RC_OK;
+}
+
 rc_status rc_run_paused(const rc_model *m, const rc_run_options *opt, rc_pause *pause, rc_stats *stats,
                         rc_error *err)
 {
+    rc_error local_err;
+    if (!err) err = &local_err;
+    if (stats) {
+        memset(stats, 0, sizeof *stats);
+        stats->t_settle = NAN;
+    }
+    rc_status st = check_run(m, opt, err);
+    if (st != RC_OK) return st;
     for (size_t k = 0; k < sizeof rc_solvers / sizeof rc_solvers[0]; k++)
         if (rc_solvers[k]->method == m->method) return rc_solvers[k]->run(m, opt, pause, stats, err);
-    rc_error local_err;
-    return RC_SET(err ? err : &local_err, RC_EINTERNAL, "no solver backend for /SOLVER Method %d",
-                  m->method);
+    return RC_SET(err, RC_EINTERNAL, "no solver backend for /SOLVER Method %d", m->method);
 }
 
 rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, rc_error *err)
@@ -29,6 +105,7 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
 
 void rc_stats_print(const rc_stats *s, FILE *f)
 {
+    if (!s || !f) return;
     fprintf(f, "steps %ld, rhs %ld, jacobians %ld, lin. setups %ld, newton iters %ld, newton fails %ld, "
                "error-test fails %ld, root evals %ld\n",
             s->steps, s->rhs_evals, s->jac_evals, s->lin_setups, s->nonlin_iters, s->nonlin_fails,

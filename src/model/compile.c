@@ -536,6 +536,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     m->tend = c->run.tend;
     m->dtout = c->run.dtout;
     m->ev_state = c->run.ev_state;
+    m->on_violation = c->run.on_violation;
     m->rtol = c->solver.rtol;
     m->atol_pos = c->solver.atol_pos;
     m->atol_quat = c->solver.atol_quat;

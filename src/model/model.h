@@ -267,6 +267,7 @@ struct rc_model {
     /* run and solver settings */
     double tend, dtout;  /* [s] */
     int ev_state;        /* /RUN Ev_state: 0 auto, 1 always, 2 never (rc_event_records) */
+    int on_violation;    /* /RUN On_viol: a failed physics check 0, 1 stops the run, 2 warns (solver/guards.h) */
     double rtol;
     double atol_pos, atol_quat, atol_vel, atol_omega, atol_energy;
     int method;          /* /SOLVER Method: integration backend (src/solver/solver.h) */

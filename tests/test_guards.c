@@ -566,6 +566,21 @@ static void test_guards_start_overlap(void)
     rc_model *m = sphere_model(&o, &e);
     ENSURE(m != NULL);
     rc_model_free(m);
+    /* the deck accepts it (/RUN On_viol 2): the run's first violation */
+    o.inacti = 0;
+    o.on_viol = 2;
+    o.tend = 0.01;
+    m = sphere_model(&o, &e);
+    ENSURE(m != NULL && m->start_note != NULL);
+    if (m) {
+        rc_stats st;
+        ENSURE(rc_run(m, NULL, &st, &e) == RC_OK);
+        printf("    accepted: %.160s...\n", st.physics_note);
+        ENSURE(st.violations >= 1 && strstr(st.physics_note, "the first: ") && strstr(st.physics_note, "overlap at t = 0"));
+        rc_run_options opt = {.on_violation = RC_ON_VIOLATION_STOP};
+        ENSURE(rc_run(m, &opt, &st, &e) == RC_EPHYSICS && st.t_end == 0.0);
+    }
+    rc_model_free(m);
     /* at its static penetration, and 10 times deeper: still a resting start */
     const double depth[2] = {9.81e-6, 9.81e-5};
     for (int k = 0; k < 2; k++) {

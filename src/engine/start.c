@@ -3,8 +3,9 @@
  * "Physics checks of every run", the start).
  *
  * A contact that starts penetrating, in the modes the run starts in (an
- * Inacti 5 offset takes the penetration as a gap reduction; Icor 1 starts
- * Iform 1 on its unload curve), holds the elastic energy E_0 of its law at
+ * Inacti 5 offset takes the penetration as a gap reduction; Icor 1 with
+ * Iform 1 declares it a plastic deformation already there, started on the
+ * unload curve: both account for it), holds the elastic energy E_0 of its law at
  * that penetration, which it releases into the bodies at once. A resting
  * start (a body placed at its static penetration under its weight, a stack)
  * holds E_0 = F p / 2 (linear law) with F at most the scene's weight and p
@@ -114,6 +115,7 @@ rc_status rc_start_check(const rc_case *c, rc_model *m, rc_error *err)
     for (int i = 0; i < m->ninter && !st; i++) {
         const int mode = d->inter_mode[i];
         if (mode != RC_MODE_CLOSED && mode != RC_MODE_RELEASED) continue; /* apart, touching, or not yet active */
+        if (m->inter_icor[i] == 1 && m->inter_iform[i] == 1) continue; /* Icor 1: a plastic overlap declared */
         rc_inter_report r;
         rc_inter_report_eval(m, i, RC_MODE_OPEN, RC_BR_LOAD, 0, 0, 0.0, y, &r);
         const double band = touch_band(m, i, y, &r);
@@ -137,6 +139,20 @@ rc_status rc_start_check(const rc_case *c, rc_model *m, rc_error *err)
                     "at t = 0, or Inacti = 5 (the initial penetration taken as a reduction of the gap)",
                     RC_LOC(m->inter_loc[i]), m->inter_name[i], sa, sb, r.p_raw, m->inter_gap[i], rc.fn, e0, speed,
                     sc.escale, adv);
+        /* /RUN On_viol 2: the deck asks to go on; the overlap is kept for
+         * the run's physics checks (the first row of its violations) */
+        if (m->on_violation == 2) {
+            if (!m->start_note) {
+                m->start_note = malloc(strlen(err->msg) + 1);
+                if (!m->start_note) break;
+                strcpy(m->start_note, err->msg);
+                m->start_inter = i;
+                m->start_energy = e0;
+                m->start_escale = sc.escale;
+            }
+            rc_error_clear(err);
+            st = RC_OK;
+        }
     }
     free(y);
     rc_data_free(d);

@@ -656,7 +656,10 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
         int jmp = 0;
         resolve_touching(m, d, t, y, flook, &sink, &im, &s.events, &jmp, &st, err);
         if (st) goto done;
-        rc_guards_started(gd, d);
+        if (rc_guards_started(gd, d)) {
+            st = RC_SET(err, RC_EPHYSICS, "%s", rc_guards_message(gd));
+            goto done;
+        }
     }
     if ((st = bk->start(self, err))) goto done;
     if (nr > 0) {

@@ -485,13 +485,19 @@ int rc_guards_before_events(rc_guards *g, const rc_data *d, double t, const doub
 }
 
 /* ---- contacts' history ------------------------------------------------- */
-void rc_guards_started(rc_guards *g, const rc_data *d)
+int rc_guards_started(rc_guards *g, const rc_data *d)
 {
-    if (!g) return;
-    for (int i = 0; i < g->m->ninter; i++) {
+    if (!g) return 0;
+    const rc_model *m = g->m;
+    for (int i = 0; i < m->ninter; i++) {
         g->closed0[i] = g->ever[i] = d->inter_mode[i] == RC_MODE_CLOSED;
         g->prev_mode[i] = d->inter_mode[i];
     }
+    /* an overlap at t = 0 the deck accepted (/RUN On_viol 2, engine/start.c) */
+    if (m->start_note)
+        return violate(g, 0.0, 0.0, "start_overlap", m->inter_name[m->start_inter], m->start_energy, m->start_escale,
+                       "%s (accepted by /RUN On_viol 2)", m->start_note);
+    return 0;
 }
 
 void rc_guards_event(rc_guards *g, const rc_data *d, int i, const char *kind, double t)

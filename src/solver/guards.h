@@ -56,8 +56,10 @@ typedef struct rc_guards rc_guards;
  * prints violations on stderr (warn mode). NULL when out of memory. */
 rc_guards *rc_guards_new(const rc_model *m, int warn, int show);
 void rc_guards_free(rc_guards *g); /* NULL: no-op */
-/* The modes the run starts in (after the contacts at zero were decided). */
-void rc_guards_started(rc_guards *g, const rc_data *d);
+/* The modes the run starts in (after the contacts at zero were decided),
+ * and an overlap at t = 0 the deck accepted (model.h start_note): a
+ * violation. 1: stop. */
+int rc_guards_started(rc_guards *g, const rc_data *d);
 /* An accepted state (t, y[n]) returned by the integrator. zone: the zone
  * root values of the interfaces (rc_rootmap_at) at (t, y) in the present
  * modes, NULL: evaluated here; at_root: the state of a located root,

@@ -442,9 +442,12 @@ static rc_status record(const rc_backend *bk, void *self, const rc_model *m, con
 {
     const double *v = bk->record_vector ? bk->record_vector(self, t, y, yp) : y;
     rc_status st = write_frame(m, d, o, fb, t, v, at_event, err);
-    /* the physics checks of the record's energies and forces (guards.h) */
-    if (!st && rc_guards_record(fb->guards, d, t, v, fb))
-        st = RC_SET(err, RC_EPHYSICS, "%s", rc_guards_message(fb->guards));
+    /* the physics checks of the record's energies and forces (guards.h),
+     * once per step: the records in between interpolate the same step */
+    if (!st && fb->guards_due) {
+        fb->guards_due = 0;
+        if (rc_guards_record(fb->guards, d, t, v, fb)) st = RC_SET(err, RC_EPHYSICS, "%s", rc_guards_message(fb->guards));
+    }
     return st;
 }
 
@@ -628,6 +631,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
         goto done;
     }
     fb.guards = sink.guards = gd;
+    fb.guards_due = 1; /* the first record: the baseline */
     opened = 1;
     if ((st = bk->open(self, m, d, opt, &y, &yp, &n, &integrator, err))) goto done;
     rootdir = calloc((size_t)nr + 1, sizeof(int));
@@ -688,6 +692,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
         evrec && m->nbody <= RC_CONTACT_REC_MAX_BODIES ? rc_contact_record_interval(m, dtout) : 0.0;
     double t_contact_rec = -INFINITY; /* time of the last such record [s] */
     long single = 0;                  /* single steps since the last output time */
+    long rhs_seen = -1;               /* d->n_rhs at the last return (the physics checks) */
     while (t < tend) {
         /* the event callback asked to stop: end here as an interrupted run */
         if (sink.stop) {
@@ -736,8 +741,14 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
         }
         /* the physics checks of the accepted state, on the zone roots the
          * integrator evaluated there (guards.h) */
-        if (rc_guards_step(gd, d, t, y, n, bk->roots_at ? bk->roots_at(self, t) : NULL, flag == bk->root_return,
-                           s.steps + bk->steps(self))) {
+        const int at_root = flag == bk->root_return;
+        /* no right-hand side evaluated since the last return: no step taken */
+        const int moved = at_root || d->n_rhs != rhs_seen;
+        rhs_seen = d->n_rhs;
+        const int due = moved && rc_guards_due(gd, s.steps + bk->steps(self), at_root);
+        fb.guards_due |= due;
+        if (due && rc_guards_step(gd, d, t, y, bk->roots_at ? bk->roots_at(self, t) : NULL, at_root,
+                                  s.steps + bk->steps(self))) {
             st = RC_SET(err, RC_EPHYSICS, "%s", rc_guards_message(gd));
             break;
         }
@@ -781,6 +792,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             if (bk->before_events) bk->before_events(self);
             /* the ledger just before the events: a jump at them is measured
              * against it (guards.h) */
+            fb.guards_due = 1; /* the record after the events is checked against this state */
             if (rc_guards_before_events(gd, d, t, y)) {
                 st = RC_SET(err, RC_EPHYSICS, "%s", rc_guards_message(gd));
                 goto done;

@@ -9,6 +9,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -52,6 +53,8 @@ struct rc_guards {
     double mech_done;         /* excess already reported (warn) [J] */
     mono gmax[CH_N];          /* channels in total */
     mono *emax;               /* [3 ninter + ncpl]: per interface damping, hysteresis, friction; per coupling */
+    double *hyst;             /* [ninter] scratch: each interface's hysteresis at the record */
+    double *pmax;             /* [ninter] largest penetration checked [m] */
     mono balance;             /* minus energy_total: the balance never rises */
     /* excursions in progress (reported once each): penetration, centres, open */
     unsigned char *on;        /* [3 ninter] */
@@ -63,6 +66,9 @@ struct rc_guards {
     char stop_msg[sizeof(((rc_violation *)0)->message)];
     double ratio[3];          /* energy excess, channel decrease, penetration: largest over its tolerance */
     double epre[RC_NENERGY];  /* the energies before the events of a root return */
+    /* once per integrator step: the states in between are the integrator's
+     * interpolant of the same step */
+    long step_checked;        /* steps at the last state check (-1: none) */
     /* contact history */
     unsigned char *closed0, *ever, *settled;
     int *prev_mode, *hist;
@@ -71,6 +77,23 @@ struct rc_guards {
 };
 
 static void *zalloc(size_t n, size_t size) { return calloc(n ? n : 1, size); }
+/* max without the libm call (the operands are never NaN here) */
+static inline double dmax(double a, double b) { return a > b ? a : b; }
+
+/* Whether every value of v[n] is finite: an exponent of all ones (inf,
+ * NaN) carries into the sign bit when one is added to it; an OR of
+ * integers, which the compiler vectorises. */
+static int all_finite(const double *v, int n)
+{
+    const uint64_t expo = 0x7FF0000000000000u, one = 0x0010000000000000u;
+    uint64_t acc = 0;
+    for (int k = 0; k < n; k++) {
+        uint64_t b;
+        memcpy(&b, v + k, sizeof b);
+        acc |= (b & expo) + one;
+    }
+    return !(acc >> 63);
+}
 
 rc_guards *rc_guards_new(const rc_model *m, int warn, int show)
 {
@@ -85,6 +108,8 @@ rc_guards *rc_guards_new(const rc_model *m, int warn, int show)
     g->size = zalloc((size_t)m->nbody, sizeof(double));
     g->gscratch = zalloc((size_t)rc_root_count(m), sizeof(double));
     g->emax = zalloc(3 * ni + nc, sizeof(mono));
+    g->hyst = zalloc(ni, sizeof(double));
+    g->pmax = zalloc(ni, sizeof(double));
     g->on = zalloc(3 * ni, 1);
     g->row = zalloc(RC_GUARD_ROWS, sizeof(rc_violation));
     g->closed0 = zalloc(ni, 1);
@@ -95,11 +120,12 @@ rc_guards *rc_guards_new(const rc_model *m, int warn, int show)
     g->ncl = zalloc(ni, sizeof(long));
     g->nleave = zalloc(ni, sizeof(long));
     g->t_settle = zalloc(ni, sizeof(double));
-    if (!g->pbound || !g->fbound || !g->size || !g->gscratch || !g->emax || !g->on || !g->row ||
+    if (!g->pbound || !g->fbound || !g->size || !g->gscratch || !g->emax || !g->hyst || !g->pmax || !g->on || !g->row ||
         !g->closed0 || !g->ever || !g->settled || !g->prev_mode || !g->hist || !g->ncl || !g->nleave || !g->t_settle) {
         rc_guards_free(g);
         return NULL;
     }
+    g->step_checked = -1;
     rc_scene_scales(m, &g->scene);
     for (int b = 0; b < m->nbody; b++) g->size[b] = rc_body_size(m, b);
     for (int i = 0; i < m->ninter; i++) g->pbound[i] = rc_pen_bound(m, i, &g->scene, &g->fbound[i]);
@@ -109,7 +135,7 @@ rc_guards *rc_guards_new(const rc_model *m, int warn, int show)
 void rc_guards_free(rc_guards *g)
 {
     if (!g) return;
-    void *p[] = {g->pbound, g->fbound, g->size, g->gscratch, g->emax, g->on, g->row, g->closed0,
+    void *p[] = {g->pbound, g->fbound, g->size, g->gscratch, g->emax, g->hyst, g->pmax, g->on, g->row, g->closed0,
                  g->ever, g->settled, g->prev_mode, g->hist, g->ncl, g->nleave, g->t_settle};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     free(g);
@@ -187,28 +213,41 @@ static double open_band(const rc_guards *g, int i, const double *y)
     return band;
 }
 
-int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, int n, const double *zone, int at_root,
-                   long steps)
+/* A finite state y[n] (at the records: the integrator's error test rejects
+ * a step to a non-finite state, and the states it leaves out are
+ * constant); 1: a violation stops the run. */
+static int state_finite(rc_guards *g, double t, const double *y, int n)
+{
+    const rc_model *m = g->m;
+    if (g->nonfinite || all_finite(y, n)) return 0;
+    for (int k = 0; k < n; k++) {
+        if (isfinite(y[k])) continue;
+        char name[160], el[64] = "";
+        rc_state_name(m, k, name, sizeof name);
+        for (int b = 0; b < m->nbody; b++)
+            if (m->body_yadr[b] >= 0 && k >= m->body_yadr[b] && k < m->body_yadr[b] + RC_NB)
+                snprintf(el, sizeof el, "/RBODY/%d", m->body_id[b]);
+        g->nonfinite = 1;
+        return violate(g, t, t, "non_finite", el, y[k], 0.0, "non-finite state at t = %.9g s: %s = %g", t, name, y[k]);
+    }
+    return 0;
+}
+
+int rc_guards_due(rc_guards *g, long steps, int at_root)
 {
     if (!g) return 0;
-    const rc_model *m = g->m;
     g->steps = steps;
-    /* a finite state */
-    if (!g->nonfinite)
-        for (int k = 0; k < n; k++) {
-            if (isfinite(y[k])) continue;
-            char name[160];
-            if (k < m->ny) rc_state_name(m, k, name, sizeof name);
-            else snprintf(name, sizeof name, "joint multiplier %d", k - m->ny);
-            g->nonfinite = 1;
-            char el[64] = "";
-            for (int b = 0; b < m->nbody; b++)
-                if (m->body_yadr[b] >= 0 && k >= m->body_yadr[b] && k < m->body_yadr[b] + RC_NB)
-                    snprintf(el, sizeof el, "/RBODY/%d", m->body_id[b]);
-            if (violate(g, t, t, "non_finite", el, y[k], 0.0, "non-finite state at t = %.9g s: %s = %g", t, name, y[k]))
-                return 1;
-            break;
-        }
+    /* an output time inside the last step: its interpolant, checked at the
+     * step (a located root is checked: its events follow) */
+    return at_root || steps != g->step_checked;
+}
+
+int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, const double *zone, int at_root,
+                   long steps)
+{
+    if (!rc_guards_due(g, steps, at_root)) return 0;
+    const rc_model *m = g->m;
+    g->step_checked = steps;
     if (m->ninter == 0) return 0;
     const int per = zone ? 1 : RC_ROOTS_PER_INTER, off = zone ? 0 : RC_ROOT_ZONE;
     if (!zone) { /* the integrator's values are not at hand: evaluate them */
@@ -222,7 +261,7 @@ int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, in
         unsigned char *on = g->on + 3 * i;
         /* beyond the contact's scales */
         const double pb = g->pbound[i];
-        if (isfinite(pb) && pb > 0) g->ratio[2] = fmax(g->ratio[2], P / pb);
+        if (P > g->pmax[i]) g->pmax[i] = P; /* over its bound at the end (rc_guards_finish) */
         if (!(P <= pb) && !on[0]) {
             on[0] = 1;
             char why[200];
@@ -238,14 +277,19 @@ int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, in
         } else if (P <= pb) {
             on[0] = 0;
         }
-        /* two spheres' centres */
+        /* two spheres' centres: from P = Gap - (|c_b - c_a| - R_a - R_b)
+         * (an Inacti offset moves P: from the state then) */
         if (m->inter_pair[i] == RC_PAIR_SPHERE_SPHERE) {
-            double ca[3], cb[3];
-            sphere_centre(m, m->inter_sa[i], y, ca);
-            sphere_centre(m, m->inter_sb[i], y, cb);
-            const double dc = sqrt((ca[0] - cb[0]) * (ca[0] - cb[0]) + (ca[1] - cb[1]) * (ca[1] - cb[1]) +
-                                   (ca[2] - cb[2]) * (ca[2] - cb[2]));
-            const double lim = RC_SPHERE_CENTRE_FRAC * (m->surf_r[m->inter_sa[i]] + m->surf_r[m->inter_sb[i]]);
+            const double rs = m->surf_r[m->inter_sa[i]] + m->surf_r[m->inter_sb[i]];
+            double dc = rs + m->inter_gap[i] - P;
+            if (m->inter_oidx[i] >= 0) {
+                double ca[3], cb[3];
+                sphere_centre(m, m->inter_sa[i], y, ca);
+                sphere_centre(m, m->inter_sb[i], y, cb);
+                dc = sqrt((ca[0] - cb[0]) * (ca[0] - cb[0]) + (ca[1] - cb[1]) * (ca[1] - cb[1]) +
+                          (ca[2] - cb[2]) * (ca[2] - cb[2]));
+            }
+            const double lim = RC_SPHERE_CENTRE_FRAC * rs;
             if (dc < lim && !on[1]) {
                 on[1] = 1;
                 if (violate(g, t, t, "sphere_centres", m->inter_name[i], dc, lim,
@@ -258,7 +302,7 @@ int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, in
         }
         /* open while penetrating: a contact the engine did not close (at a
          * located root the event is still to be applied) */
-        if (mode == RC_MODE_OPEN && !at_root) {
+        if (mode == RC_MODE_OPEN && !at_root && (P > 0 || on[2])) {
             const double band = open_band(g, i, y);
             if (P > band && !on[2]) {
                 on[2] = 1;
@@ -275,6 +319,25 @@ int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, in
 }
 
 /* ---- every record ------------------------------------------------------ */
+/* Each interface's hysteresis at the record y into g->hyst: its W_load
+ * minus its stored energy (energy.c), the stored energy evaluated for the
+ * interfaces in contact but the last, whose value follows from the total
+ * e_hyst (one evaluation fewer: none in a model of one contact). */
+static void hysteresis_values(rc_guards *g, const rc_data *d, double t, const double *y, double e_hyst)
+{
+    const rc_model *m = g->m;
+    int last = -1;
+    for (int i = 0; i < m->ninter; i++)
+        if (d->inter_mode[i] == RC_MODE_CLOSED || d->inter_mode[i] == RC_MODE_RELEASED) last = i;
+    double others = 0.0;
+    for (int i = 0; i < m->ninter; i++) {
+        if (i == last) continue;
+        g->hyst[i] = y[m->inter_eadr[i]] - rc_inter_stored_energy(m, d, i, t, y);
+        others += g->hyst[i];
+    }
+    if (last >= 0) g->hyst[last] = e_hyst - others;
+}
+
 /* Per-element channel values at the record y: per interface damping,
  * hysteresis and friction (as energy.c sums them), per coupling damping. */
 static double element_channel(const rc_guards *g, const rc_data *d, double t, const double *y, int k)
@@ -289,7 +352,7 @@ static double element_channel(const rc_guards *g, const rc_data *d, double t, co
     const int i = k / 3, ch = k % 3;
     const double *s = y + m->inter_eadr[i];
     if (ch == CH_DAMP) return s[1];
-    if (ch == CH_HYST) return s[0] - rc_inter_stored_energy(m, d, i, t, y);
+    if (ch == CH_HYST) return g->hyst[i]; /* hysteresis_values */
     const rc_fric *fr = &m->inter_fr[i];
     if (fr->kind == RC_FK_NONE) return 0.0;
     double et = 0.0;
@@ -308,7 +371,7 @@ static double drift_tol(const rc_guards *g, double v, long steps, double factor,
 {
     const rc_model *m = g->m;
     return factor * (double)(1 + (steps > 0 ? steps : 0)) *
-           (m->rtol * fmax(g->eref, fabs(v)) + (nacc > 1 ? nacc : 1) * m->atol_energy);
+           (m->rtol * dmax(g->eref, fabs(v)) + (nacc > 1 ? nacc : 1) * m->atol_energy);
 }
 
 /* Check a quantity v that must not decrease (a dissipation channel, or
@@ -328,7 +391,7 @@ static int nondecreasing(rc_guards *g, double t, double v, mono *k, int balance,
         tol[j] = drift_tol(g, balance ? 0.0 : from[j], steps[j], balance ? RC_GUARD_ENERGY : RC_GUARD_CHANNEL, nacc);
         if (!(drop > 0) || !(tol[j] > 0)) continue;
         const double r = drop / tol[j];
-        g->ratio[balance ? 0 : 1] = fmax(g->ratio[balance ? 0 : 1], r);
+        g->ratio[balance ? 0 : 1] = dmax(g->ratio[balance ? 0 : 1], r);
         if (r > 1.0 && r > worst_ratio) {
             worst = j;
             worst_ratio = r;
@@ -393,6 +456,7 @@ static int ledger(rc_guards *g, const rc_data *d, double t, const double *y, con
     const rc_model *m = g->m;
     const int ni = m->ninter, nc = m->cpl ? m->cpl->n : 0;
     const double mech = e[RC_E_KIN] + e[RC_E_POT] + e[RC_E_STORED] + e[RC_E_CPL_ELASTIC] + e[RC_E_CATENARY];
+    hysteresis_values(g, d, t, y, e[RC_E_HYST]);
     if (!g->started) { /* the first record: the baseline */
         g->started = 1;
         g->mech0 = mech;
@@ -420,8 +484,11 @@ static int ledger(rc_guards *g, const rc_data *d, double t, const double *y, con
         if (nondecreasing(g, t, element_channel(g, d, t, y, k), &g->emax[k], 0, 1, ch_name[c], el, &fired[c]))
             return 1;
     }
+    int nel[CH_N] = {ni, ni, 0, nc}; /* elements of each channel */
+    for (int i = 0; i < ni; i++) nel[CH_FRIC] += m->inter_fr[i].kind != RC_FK_NONE;
     for (int c = 0; c < CH_N; c++) {
         int dummy = 0;
+        if (nel[c] <= 1) continue; /* the total is its one element, checked */
         if (fired[c]) { /* already named per element: the total starts afresh */
             g->gmax[c] = mono_start(e[ch_energy[c]], t, g->steps);
             continue;
@@ -458,6 +525,8 @@ int rc_guards_record(rc_guards *g, const rc_data *d, double t, const double *y, 
 {
     if (!g) return 0;
     const rc_model *m = g->m;
+
+    if (state_finite(g, t, y, m->ny)) return 1;
     int stop = 0;
     if (energies_finite(g, t, fb->energy, &stop)) return stop; /* the ledger of this record cannot be compared */
     for (int i = 0; i < m->ninter; i++) {
@@ -529,6 +598,8 @@ void rc_guards_finish(rc_guards *g, const rc_data *d, rc_stats *s, rc_output *o,
 {
     if (!g) return;
     const rc_model *m = g->m;
+    for (int i = 0; i < m->ninter; i++)
+        if (g->pbound[i] > 0 && isfinite(g->pbound[i])) g->ratio[2] = dmax(g->ratio[2], g->pmax[i] / g->pbound[i]);
     /* the contacts' history */
     char never[300] = "", pers[300] = "", stayed[300] = "", sett[300] = "";
     int nn = 0, np = 0, ns = 0, nt = 0, nr = 0;

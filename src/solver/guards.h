@@ -3,15 +3,16 @@
  * every run"), run by the driver (drive.c) between integrator calls, on
  * values the run computes anyway:
  *
- *   at every return of the integrator (rc_guards_step): the state is
- *   finite; each interface's penetration P (the zone root values the
+ *   at every step the integrator takes (rc_guards_step, at its first
+ *   return after the step, and at every located root): each interface's
+ *   penetration P (the zone root values the
  *   integrator evaluated at that state) stays below its bound
  *   (engine/bounds.c); two spheres' centres stay (R1 + R2)/2 apart; an
  *   open interface does not penetrate beyond its touch band;
  *
  *   at every record (rc_guards_record), and at the state of a root just
- *   before its events (rc_guards_before_events): the energies and forces
- *   written are finite; every dissipation channel (damping, hysteresis,
+ *   before its events (rc_guards_before_events): the state, the energies
+ *   and the forces written are finite; every dissipation channel (damping, hysteresis,
  *   friction, coupling damping; in total and per interface and coupling)
  *   does not decrease; the mechanical energy (kinetic + potential + stored
  *   contact and coupling energy) does not exceed its initial value plus
@@ -60,14 +61,21 @@ void rc_guards_free(rc_guards *g); /* NULL: no-op */
  * and an overlap at t = 0 the deck accepted (model.h start_note): a
  * violation. 1: stop. */
 int rc_guards_started(rc_guards *g, const rc_data *d);
-/* An accepted state (t, y[n]) returned by the integrator. zone: the zone
+/* An accepted state (t, y) returned by the integrator. zone: the zone
  * root values of the interfaces (rc_rootmap_at) at (t, y) in the present
  * modes, NULL: evaluated here; at_root: the state of a located root,
  * whose events are not applied yet; steps: the integrator's steps so far
  * (the energy tolerances grow with them). 1: a violation stops the run. */
-int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, int n, const double *zone, int at_root,
+int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, const double *zone, int at_root,
                    long steps);
-/* A record at (t, y) whose values are in fb (write_frame). 1: stop. */
+/* Whether rc_guards_step has anything to check at this return: a step was
+ * taken since its last check, or a root was located (else the state is the
+ * interpolant of a step already checked, and the run's step count is
+ * noted). */
+int rc_guards_due(rc_guards *g, long steps, int at_root);
+/* A record at (t, y) whose values are in fb (write_frame); the driver
+ * asks at the first record after each step or events (frame_buf
+ * guards_due). 1: stop. */
 int rc_guards_record(rc_guards *g, const rc_data *d, double t, const double *y, const frame_buf *fb);
 /* The state (t, y) of a root return before its events are applied: the
  * ledger checked there as at a record, so that a jump at the events is

@@ -76,6 +76,7 @@ typedef struct frame_buf {
     double *cpl; /* [9 ncoupling] coupling values (rc_cpl_frame) */
     double *jnt; /* [8 njoint + 1] joints: force, moment, drifts, work (IDA path) */
     struct rc_guards *guards; /* the physics checks of every record (guards.h); NULL: none */
+    int guards_due;           /* a step was taken or events applied since the last record checked */
 } frame_buf;
 
 /* Time breakpoints (ends of imposed velocities) inside (0, tend), sorted,

@@ -161,7 +161,7 @@ void rc_scene_scales(const rc_model *m, rc_scene *s)
     s->eavail = s->ekin0 + s->weight * s->height + 0.5 * s->mass * s->vimp * s->vimp;
 }
 
-double rc_pen_bound(const rc_model *m, int i, const rc_scene *s, double *fbound)
+double rc_pen_bound(const rc_model *m, int i, const rc_scene *s, const double *size, double *fbound)
 {
     /* the impact force at the scene's energy, the weight */
     const double pa = rc_law_reach(m, i, 1, s->eavail);
@@ -174,7 +174,7 @@ double rc_pen_bound(const rc_model *m, int i, const rc_scene *s, double *fbound)
     double lb = INFINITY;
     const int bs[2] = {m->inter_ba[i], m->inter_bb[i]};
     for (int k = 0; k < 2; k++) {
-        const double l = bs[k] >= 0 ? rc_body_size(m, bs[k]) : 0.0;
+        const double l = bs[k] < 0 ? 0.0 : size ? size[bs[k]] : rc_body_size(m, bs[k]);
         if (l > 0) lb = fmin(lb, l);
     }
     return fmin(p, lb);

@@ -49,8 +49,9 @@ double rc_law_reach(const rc_model *m, int i, int energy, double target);
  * RC_PEN_FORCE_FACTOR max(weight, F_imp) (F_imp the force where its
  * energy reaches s->eavail), and at most the size of the smaller body of
  * the pair (beyond it a body has passed through); INFINITY when neither
- * exists. *fbound receives the force limit [N] (NAN: none). */
-double rc_pen_bound(const rc_model *m, int i, const rc_scene *s, double *fbound);
+ * exists. size: the bodies' sizes (rc_body_size; NULL: computed here).
+ * *fbound receives the force limit [N] (NAN: none). */
+double rc_pen_bound(const rc_model *m, int i, const rc_scene *s, const double *size, double *fbound);
 
 /* The start: an overlap at t = 0 that no option accounts for (Inacti 5,
  * Icor) is an input error naming both surfaces, the interface and the

@@ -61,8 +61,8 @@ struct rc_guards {
     unsigned char nonfinite;  /* reported once */
     /* results */
     long total;
-    int nrow;
-    rc_violation *row;        /* [RC_GUARD_ROWS] */
+    int nrow, caprow;
+    rc_violation *row;        /* [caprow] the first RC_GUARD_ROWS violations (grown as they come) */
     char stop_msg[sizeof(((rc_violation *)0)->message)];
     double ratio[3];          /* energy excess, channel decrease, penetration: largest over its tolerance */
     double epre[RC_NENERGY];  /* the energies before the events of a root return */
@@ -111,7 +111,6 @@ rc_guards *rc_guards_new(const rc_model *m, int warn, int show)
     g->hyst = zalloc(ni, sizeof(double));
     g->pmax = zalloc(ni, sizeof(double));
     g->on = zalloc(3 * ni, 1);
-    g->row = zalloc(RC_GUARD_ROWS, sizeof(rc_violation));
     g->closed0 = zalloc(ni, 1);
     g->ever = zalloc(ni, 1);
     g->settled = zalloc(ni, 1);
@@ -120,7 +119,7 @@ rc_guards *rc_guards_new(const rc_model *m, int warn, int show)
     g->ncl = zalloc(ni, sizeof(long));
     g->nleave = zalloc(ni, sizeof(long));
     g->t_settle = zalloc(ni, sizeof(double));
-    if (!g->pbound || !g->fbound || !g->size || !g->gscratch || !g->emax || !g->hyst || !g->pmax || !g->on || !g->row ||
+    if (!g->pbound || !g->fbound || !g->size || !g->gscratch || !g->emax || !g->hyst || !g->pmax || !g->on ||
         !g->closed0 || !g->ever || !g->settled || !g->prev_mode || !g->hist || !g->ncl || !g->nleave || !g->t_settle) {
         rc_guards_free(g);
         return NULL;
@@ -128,7 +127,7 @@ rc_guards *rc_guards_new(const rc_model *m, int warn, int show)
     g->step_checked = -1;
     rc_scene_scales(m, &g->scene);
     for (int b = 0; b < m->nbody; b++) g->size[b] = rc_body_size(m, b);
-    for (int i = 0; i < m->ninter; i++) g->pbound[i] = rc_pen_bound(m, i, &g->scene, &g->fbound[i]);
+    for (int i = 0; i < m->ninter; i++) g->pbound[i] = rc_pen_bound(m, i, &g->scene, g->size, &g->fbound[i]);
     return g;
 }
 
@@ -167,7 +166,15 @@ static int violate(rc_guards *g, double t, double t_from, const char *check, con
     va_start(ap, fmt);
     vsnprintf(v.message, sizeof v.message, fmt, ap);
     va_end(ap);
-    if (g->nrow < RC_GUARD_ROWS) g->row[g->nrow++] = v;
+    if (g->nrow == g->caprow && g->caprow < RC_GUARD_ROWS) { /* only when a check fails */
+        const int cap = g->caprow ? 2 * g->caprow : 16;
+        rc_violation *r = realloc(g->row, (size_t)(cap < RC_GUARD_ROWS ? cap : RC_GUARD_ROWS) * sizeof *r);
+        if (r) {
+            g->row = r;
+            g->caprow = cap < RC_GUARD_ROWS ? cap : RC_GUARD_ROWS;
+        }
+    }
+    if (g->nrow < g->caprow) g->row[g->nrow++] = v;
     g->total++;
     if (!g->warn) {
         snprintf(g->stop_msg, sizeof g->stop_msg, "%s", v.message);

@@ -25,7 +25,8 @@
  * A violation stops the run (RC_EPHYSICS, exit code 5) or, when the run
  * was asked to go on (on_violation warn), is kept and the run continues;
  * either way every violation is in the results file and in the run's
- * statistics. Nothing here allocates after rc_guards_new.
+ * statistics. Nothing here allocates after rc_guards_new, but the table of
+ * violations when a check fails.
  */
 #ifndef RC_GUARDS_H
 #define RC_GUARDS_H
@@ -47,7 +48,7 @@
 #define RC_GUARD_CHANNEL 30.0
 #define RC_GUARD_ENERGY 30.0
 /* Violations kept for the results file (more are counted) [-]. */
-#define RC_GUARD_ROWS 1000
+#define RC_GUARD_ROWS 10000
 /* Violations printed on stderr in warn mode with the progress [-]. */
 #define RC_GUARD_PRINT 20
 

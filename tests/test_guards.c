@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "engine/bounds.h"
+#include "model/coupling.h"
 #include "model/model.h"
 #include "ricochet/ricochet.h"
 #include "solver/guards.h"
@@ -204,6 +205,29 @@ static void test_guards_channel_decrease_fires(void)
     }
 }
 
+/* A coupling's damper: its dissipation running backwards fires, naming
+ * the coupling. */
+static void test_guards_coupling_damping_fires(void)
+{
+    rc_case *c = NULL;
+    rc_model *m = NULL;
+    rc_error e;
+    ENSURE(rc_case_load("validation/cpl_spring_damped/case.rad", &c, &e) == RC_OK && rc_model_compile(c, &m, &e) == RC_OK);
+    rc_case_free(c);
+    if (!m) return;
+    ENSURE(m->cpl->n >= 1 && m->cpl->kind[0] == RC_CPL_SPRING);
+    bench b;
+    ENSURE(bench_open(&b, m, 0));
+    ENSURE(bench_record(&b, 0.0) == 0);
+    b.y[m->cpl->eadr[0] + 1] -= 0.01; /* W_damp of the first coupling */
+    ENSURE(bench_record(&b, 0.001) == 1);
+    printf("    %s\n", rc_guards_message(b.g));
+    char want[96];
+    snprintf(want, sizeof want, "energy_coupling_damping of %s decreased by 0.01 J", m->cpl->name[0]);
+    ENSURE(strstr(rc_guards_message(b.g), want) != NULL);
+    bench_close(&b);
+}
+
 /* The tolerance follows the run's rtol: a decrease of 1e-4 J fires at
  * rtol 1e-8 and is within the numerical drift rtol 1e-3 allows. */
 static void test_guards_channel_tolerance_follows_rtol(void)
@@ -287,6 +311,18 @@ static void test_guards_non_finite_fires(void)
     ENSURE(bench_record(&b, 0.0) == 1);
     printf("    %s\n", rc_guards_message(b.g));
     ENSURE(strstr(rc_guards_message(b.g), "non-finite energy_potential") != NULL);
+    bench_close(&b);
+    /* a non-finite force in a record */
+    m = sphere_model(&DROP, &e);
+    ENSURE(m != NULL);
+    if (!m) return;
+    ENSURE(bench_open(&b, m, 0));
+    ENSURE(bench_record(&b, 0.0) == 0);
+    write_frame(m, b.d, NULL, &b.fb, 0.001, b.y, 0, &e);
+    b.fb.fdamp[0] = INFINITY;
+    ENSURE(rc_guards_record(b.g, b.d, 0.001, b.y, &b.fb) == 1);
+    printf("    %s\n", rc_guards_message(b.g));
+    ENSURE(strstr(rc_guards_message(b.g), "non-finite damping force of /INTER/TYPE6/1") != NULL);
     bench_close(&b);
 }
 
@@ -616,6 +652,7 @@ void suite_guards(void);
 void suite_guards(void)
 {
     RUN_TEST(test_guards_channel_decrease_fires);
+    RUN_TEST(test_guards_coupling_damping_fires);
     RUN_TEST(test_guards_channel_tolerance_follows_rtol);
     RUN_TEST(test_guards_energy_created_fires);
     RUN_TEST(test_guards_non_finite_fires);

@@ -424,15 +424,15 @@ static int nondecreasing(rc_guards *g, double t, double v, mono *k, int balance,
     if (balance)
         return violate(g, t, tf[worst], name, "", drop, tol[worst],
                        "energy_total (the energies plus everything dissipated and supplied: constant in exact "
-                       "arithmetic) rose by %.6g J (from %.9g to %.9g J) %s, beyond the tolerance %.3g J (%g x %ld "
-                       "steps x the energy error weight): energy created",
-                       drop, -from[worst], -v, when, tol[worst], RC_GUARD_ENERGY, 1 + steps[worst]);
+                       "arithmetic) rose by %.6g J (from %.9g to %.9g J) %s, beyond the tolerance %.3g J (%g (1 + "
+                       "k) energy error weights, k = %ld steps): energy created",
+                       drop, -from[worst], -v, when, tol[worst], RC_GUARD_ENERGY, steps[worst]);
     char el[80] = "";
     if (element) snprintf(el, sizeof el, " of %s", element);
     return violate(g, t, tf[worst], name, element, drop, tol[worst],
-                   "%s%s decreased by %.6g J (from %.9g to %.9g J) %s, beyond the tolerance %.3g J (%g x %ld "
-                   "steps x the energy error weight): a dissipation never decreases",
-                   name, el, drop, from[worst], v, when, tol[worst], RC_GUARD_CHANNEL, 1 + steps[worst]);
+                   "%s%s decreased by %.6g J (from %.9g to %.9g J) %s, beyond the tolerance %.3g J (%g (1 + k) "
+                   "energy error weights, k = %ld steps): a dissipation never decreases",
+                   name, el, drop, from[worst], v, when, tol[worst], RC_GUARD_CHANNEL, steps[worst]);
 }
 
 /* Finite energies; 0 when all are (else a violation is recorded, once;
@@ -507,15 +507,15 @@ static int ledger(rc_guards *g, const rc_data *d, double t, const double *y, con
      * the drift the error control allows over the run's steps */
     const double tol = drift_tol(g, 0.0, g->steps, RC_GUARD_ENERGY, nc + 1);
     const double excess = mech - g->mech0 - supply;
-    if (tol > 0) g->ratio[0] = fmax(g->ratio[0], excess / tol);
+    if (tol > 0) g->ratio[0] = dmax(g->ratio[0], excess / tol);
     if (excess > tol + g->mech_done) {
         g->mech_done = excess; /* warn: reported again when it grows by another tolerance */
         if (violate(g, t, g->t_prev, "mechanical_energy", "", excess, tol,
                     "the mechanical energy (kinetic + potential + stored in contacts and couplings) is %.9g J at "
                     "t = %.9g s, %.6g J above its initial %.9g J plus the supply %.6g J (the work of imposed "
-                    "velocities), beyond the tolerance %.3g J (%g x %ld steps x the energy error weight): energy "
-                    "created %s %.9g s",
-                    mech, t, excess, g->mech0, supply, tol, RC_GUARD_ENERGY, 1 + g->steps,
+                    "velocities), beyond the tolerance %.3g J (%g (1 + k) energy error weights, k = %ld steps): "
+                    "energy created %s %.9g s",
+                    mech, t, excess, g->mech0, supply, tol, RC_GUARD_ENERGY, g->steps,
                     g->t_prev < t ? "since the record before, at t =" : "at the events at t =", g->t_prev < t ? g->t_prev : t))
             return 1;
     }

@@ -159,6 +159,50 @@ if [ -e "$tmp/fail.nc" ] && ncdump -h "$tmp/fail.nc" | grep -q ':complete = "no"
     expect solver_failure 3 $rc "(partial file kept, complete = no; $(head -c 200 "$tmp/e"))"
 else expect solver_failure 3 99 "(no partial file marked incomplete: $(head -c 200 "$tmp/e"))"; fi
 
+# physics checks (docs/theory.md 13): a 1000 kg sphere on a soft floor
+# (k = 1e3 N/m) sinks through it: exit 5, the message names the check, the
+# interface, the time and the numbers; the file is kept, its status says so
+sed -e 's/^                   1             1000000$/                   1                1000/' \
+    -e 's/^         1                                                 1$/         1                                              1000/' "$demo" > "$tmp/soft.rad"
+"$bin" run "$tmp/soft.rad" -o "$tmp/soft.nc" > "$tmp/o" 2>"$tmp/e"; rc=$?
+if grep -q "^ricochet: physics check failed: penetration of /INTER/TYPE6/1 is [0-9.e+-]* m at t = [0-9.e+-]* s, beyond its bound 0.05 m" "$tmp/e" &&
+   ncdump -h "$tmp/soft.nc" | grep -q ':status = "physics check failed: penetration of /INTER/TYPE6/1' &&
+   ncdump -h "$tmp/soft.nc" | grep -q ':complete = "no"' && ncdump -h "$tmp/soft.nc" | grep -q 'violation = UNLIMITED ; // (1 currently)' &&
+   grep -q "^physics checks: failed: penetration" "$tmp/o"; then
+    expect physics_stop 5 $rc "(file kept, status physics check failed; $(head -c 200 "$tmp/e"))"
+else expect physics_stop 5 99 "(exit $rc: $(head -c 300 "$tmp/e") $(grep physics "$tmp/o"))"; fi
+# --on-violation warn: the run goes on to its end, exit 0, never in silence
+# (a warning on stderr even with -q), every violation in the file
+"$bin" run "$tmp/soft.rad" -o "$tmp/soft_w.nc" -q --on-violation warn > "$tmp/o" 2>"$tmp/e"; rc=$?
+if grep -q "^ricochet: warning: physics checks: 1 violation (the run went on: on-violation warn); the first: penetration of /INTER/TYPE6/1" "$tmp/e" &&
+   ncdump -h "$tmp/soft_w.nc" | grep -q ':status = "complete"' && ncdump -h "$tmp/soft_w.nc" | grep -q ':physics_violations = 1LL' &&
+   ncdump -v violation_check "$tmp/soft_w.nc" | grep -q 'violation_check = "penetration"'; then
+    expect physics_warn 0 $rc "($(head -c 200 "$tmp/e"))"
+else expect physics_warn 0 99 "(exit $rc: $(head -c 300 "$tmp/e"))"; fi
+"$bin" run "$tmp/soft.rad" -o "$tmp/soft_b.nc" --on-violation=ignore > "$tmp/e" 2>&1; rc=$?
+grep -q "^ricochet: --on-violation: expected stop or warn, got ignore" "$tmp/e" && [ ! -e "$tmp/soft_b.nc" ] &&
+    expect bad_on_violation 2 $rc "($(head -1 "$tmp/e"))" || expect bad_on_violation 2 99 "(exit $rc: $(head -c 160 "$tmp/e"))"
+"$bin" run "$demo" -o "$tmp/pass.nc" > "$tmp/o" 2>&1; rc=$?
+grep -q "^physics checks: passed" "$tmp/o" && ncdump -h "$tmp/pass.nc" | grep -q ':physics_checks = "passed' &&
+    ncdump -h "$tmp/pass.nc" | grep -q 'int inter_contact_history(inter)' &&
+    expect physics_passed 0 $rc "($(grep '^physics checks' "$tmp/o"))" || expect physics_passed 0 99 "(exit $rc: $(grep physics "$tmp/o"))"
+# the start: a sphere 4 cm inside the floor is an input error naming both
+# surfaces, the interface and the depth; nothing runs
+sed -e 's/^         1                   0                   0                0.15$/         1                   0                   0                0.01/' \
+    -e 's/^                   0                   0                0.15$/                   0                   0                0.01/' "$demo" > "$tmp/inside.rad"
+"$bin" run "$tmp/inside.rad" -o "$tmp/inside.nc" > "$tmp/e" 2>&1; rc=$?
+if grep -q "^ricochet: input error: .*inside.rad:36: card /INTER/TYPE6/1: the surfaces /SURF/ELLIPS/1 and /SURF/PLANE/2 overlap at t = 0: penetration 0.04 m" "$tmp/e" &&
+   [ ! -e "$tmp/inside.nc" ]; then expect start_overlap 2 $rc "($(head -c 200 "$tmp/e"))"
+else expect start_overlap 2 99 "(exit $rc: $(head -c 300 "$tmp/e"))"; fi
+# a meshed box on a meshed box whose normals are reversed (IRm 1): the
+# message says that the surfaces do not face each other and what to set
+awk '/^\/INTER\/TYPE6\/1$/{n=NR} n && NR == n + 4 {$0 = substr($0, 1, 20) "         1" substr($0, 31)} {print}' \
+    validation/seg_seg_collide/case.rad > "$tmp/irm.rad"
+"$bin" check "$tmp/irm.rad" > "$tmp/e" 2>&1; rc=$?
+if grep -q "the segment normals of /SURF/PART/32 point away from /SURF/PART/31 (IRm = 1: reversed), so the surfaces do not face each other: with IRm = 0 (as built) they start apart" "$tmp/e"; then
+    expect start_facing 2 $rc "($(head -c 160 "$tmp/e"))"
+else expect start_facing 2 99 "(exit $rc: $(head -c 300 "$tmp/e"))"; fi
+
 # interrupted (SIGINT, SIGTERM, SIGHUP: the terminal closed): the run ends
 # at the next step, keeps what it computed (records flushed, marked
 # incomplete, statistics written, the file readable), exit 128 + signal

@@ -690,8 +690,8 @@ static void test_case_error_extra_line(void)
 static void test_case_error_text_after_layout(void)
 {
     /* text after the last fixed field is ignored with a warning (test_deck.c) */
-    EXPECT_INPUT_ERROR("commas.rad", "/RUN\n1.0,0.01,0,5\n", 2, "card /RUN",
-                       "at most 3 comma-separated fields");
+    EXPECT_INPUT_ERROR("commas.rad", "/RUN\n1.0,0.01,0,1,5\n", 2, "card /RUN",
+                       "at most 4 comma-separated fields");
 }
 
 static void test_case_error_tab(void)

@@ -132,7 +132,7 @@ static void build_case(rc_case *c)
     c->ngrav = 1;
     c->grav = &gr;
     add_couplings(c);
-    c->run = (rc_case_run){1, 0.01, 0.001, {0}, 0};
+    c->run = (rc_case_run){1, 0.01, 0.001, {0}, 0, 0};
     c->solver = (rc_case_solver){0, 1, 5, 100000, 1e-8, 1e-11, 1e-11, 1e-8, 1e-8, 1e-9, 0, 0, {0}, {0}};
 }
 
@@ -467,7 +467,7 @@ static void build_power_case(rc_case *c)
     gr = (rc_case_grav){.id = 1, .fct_id = 0, .dir = 2, .ascale = 1.0, .fscale = -9.81};
     c->ngrav = 1;
     c->grav = &gr;
-    c->run = (rc_case_run){1, 0.01, 0.001, {0}, 0};
+    c->run = (rc_case_run){1, 0.01, 0.001, {0}, 0, 0};
     c->solver = (rc_case_solver){0, 1, 5, 100000, 1e-8, 1e-11, 1e-11, 1e-8, 1e-8, 1e-9, 0, 0, {0}, {0}};
 }
 

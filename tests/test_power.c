@@ -366,7 +366,7 @@ static void test_power_friction_card_overrides_step5(void)
         "/PART/2\nfloor\n0, 0, 0, 0\n0, 2\n"
         "/FRICTION/1\nf\n0, 0, 0, %d\n,\n, 0.4, 0.5\n0, 0, 1, 2\n,\n, 0.37, 0.5\n"
         "/INTER/POWER/1\nt\n1, 2\n1e8, 1.5\n,\n0.3, 0.01, 0.2, 0.05\n%s"
-        "/RUN\n0.01\n";
+        "/RUN\n0.01,0,0,2\n"; /* On_viol 2: the ball starts 0.1 mm into the floor (accepted) */
     char text[2048];
     const int forms[3] = {1, 2, 2};
     const char *kt[3] = {"", "", "2.3e5\n"};

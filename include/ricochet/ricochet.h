@@ -50,9 +50,13 @@ typedef enum {
                          results file the message says what it keeps    */
     RC_ENOMEM = 5,    /* out of memory                                   */
     RC_EINTERNAL = 6, /* a bug in ricochet                               */
-    RC_EINTERRUPT = 7 /* stopped by the caller (a signal, the event
+    RC_EINTERRUPT = 7, /* stopped by the caller (a signal, the event
                          callback, rc_session_close); partial results
                          are kept, marked incomplete                     */
+    RC_EPHYSICS = 8   /* a physics check of the run failed (energy
+                         created, a dissipation decreasing, bodies passing
+                         through each other, non-finite values): the run
+                         stopped there, results kept; exit code 5        */
 } rc_status;
 
 /* An error report. `msg` is complete and printable on its own: for input
@@ -68,8 +72,9 @@ typedef struct rc_error {
 /* Static message of a status code (never NULL; "unknown status" for a
  * value outside the enum). */
 const char *rc_status_str(rc_status code);
-/* Process exit code for a status: 0, 2, 3, 4; 130 when interrupted (the
- * shell's 128 + SIGINT); 1 for other failures. */
+/* Process exit code for a status: 0, 2, 3, 4; 5 when a physics check
+ * failed; 130 when interrupted (the shell's 128 + SIGINT); 1 for other
+ * failures. */
 int rc_status_exit_code(rc_status code);
 /* Version string, e.g. "0.1.0". */
 const char *rc_version(void);
@@ -190,6 +195,15 @@ typedef struct rc_stats {
                              after their bounces accumulated (event
                              contact_settle)                           */
     double t_settle;      /* time of the last settling [s]; NaN: none   */
+    long violations;      /* physics checks that failed (docs/theory.md,
+                             "Physics checks of every run"); 0: passed  */
+    char physics_note[640]; /* the checks' outcome: "passed (...)", or
+                             the violation that stopped the run, or the
+                             count and the first (on-violation warn)    */
+    char contacts_note[640]; /* interfaces that never closed, contacts
+                             closed from the start or never reopened,
+                             settled contacts ("" when every interface
+                             closed and reopened)                       */
 } rc_stats;
 
 /* The callback of every event (rc_run_options.on_event): called once per
@@ -248,7 +262,13 @@ typedef struct rc_run_options {
                                 records over the end time               */
     rc_event_fn on_event;    /* non-NULL: called at every event          */
     void *user;              /* passed to on_event                       */
+    int on_violation;        /* what a failed physics check does:
+                                RC_ON_VIOLATION_STOP ends the run with
+                                RC_EPHYSICS, RC_ON_VIOLATION_WARN records it
+                                (results file, rc_stats) and goes on; 0: the
+                                deck's /RUN On_viol (default: stop)       */
 } rc_run_options;
+enum { RC_ON_VIOLATION_STOP = 1, RC_ON_VIOLATION_WARN = 2 };
 
 /* Number of values in the state vector of a model; 0 for a NULL m. */
 int rc_model_state_size(const rc_model *m);
@@ -256,7 +276,8 @@ int rc_model_state_size(const rc_model *m);
 /* Integrate the model from t = 0 to its end time, writing the output.
  * Returns RC_OK; RC_EINPUT (a NULL m, a wrong option, an output path that
  * names an input: nothing run, nothing written); RC_ESOLVER (partial output
- * kept, marked incomplete); RC_EINTERRUPT (the stop flag or the event
+ * kept, marked incomplete); RC_EPHYSICS (a physics check failed: partial
+ * output kept, its status "physics check failed: ..."); RC_EINTERRUPT (the stop flag or the event
  * callback); RC_EIO (the results file could not be written: after a failed
  * write the file is closed as far as HDF5 can, read back from the disk, and
  * the message says exactly what it keeps, or that it did not read back and

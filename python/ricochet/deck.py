@@ -218,10 +218,16 @@ class Deck:
         self.add(f"/IMPVEL/{iid}", f"{fct:>10d}{direction:>10s}{0:>10d}{0:>10d}{grnod:>10d}{0:>10d}{0:>10d}",
                  line(("r", ascale), ("r", fscale), ("r", tstart), ("r", tstop)), title=title)
 
-    def run(self, tend, dtout, ev_state=None):
+    def run(self, tend, dtout, ev_state=None, on_viol=None):
         """ev_state: /RUN Ev_state (full-state records at events: 0 auto,
-        1 always, 2 never); None leaves the field out (default 0)."""
-        fields = [("r", tend), ("r", dtout)] + ([("i", ev_state)] if ev_state is not None else [])
+        1 always, 2 never); None leaves the field out (default 0). on_viol:
+        /RUN On_viol (a failed physics check: 1 stops the run, 2 records it
+        and goes on); None leaves the field out (default 1)."""
+        fields = [("r", tend), ("r", dtout)]
+        if ev_state is not None or on_viol is not None:
+            fields.append(("i", ev_state or 0))
+        if on_viol is not None:
+            fields.append(("i", on_viol))
         self.add("/RUN", line(*fields))
 
     def contact_coupling(self, cid, s1, s2, d0, k1=None, k2=None, mu=None, kt=None, iside=0, iest=0, vimp=None,

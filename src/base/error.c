@@ -15,6 +15,7 @@ const char *rc_status_str(rc_status code)
     case RC_ENOMEM: return "out of memory";
     case RC_EINTERNAL: return "internal error";
     case RC_EINTERRUPT: return "interrupted";
+    case RC_EPHYSICS: return "physics check failed";
     }
     return "unknown status";
 }
@@ -26,6 +27,7 @@ int rc_status_exit_code(rc_status code)
     case RC_EINPUT: return 2;
     case RC_ESOLVER: return 3;
     case RC_EIO: return 4;
+    case RC_EPHYSICS: return 5;
     case RC_EINTERRUPT: return 130;
     default: return 1;
     }

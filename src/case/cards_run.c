@@ -204,7 +204,7 @@ rc_status rc_card_unit(rc_reader *rd, const rc_block *b)
  * /RUN and /SOLVER (ricochet cards)
  * ====================================================================== */
 
-/* /RUN: Tend Dt_out Ev_state. */
+/* /RUN: Tend Dt_out Ev_state On_viol. */
 rc_status rc_card_run(rc_reader *rd, const rc_block *b)
 {
     rc_case_run *r = &rd->c->run;
@@ -212,10 +212,11 @@ rc_status rc_card_run(rc_reader *rd, const rc_block *b)
     rc_status st;
     if ((st = rc_header(rd, b, 1, RC_ID_OPTIONAL, NULL, "/RUN or /RUN/1"))) return st;
     if ((st = rc_single(rd, b, &rd->run_hdr))) return st;
-    if ((st = rc_card_lines(rd, b, NULL, 1, 1, "Tend Dt_out Ev_state", &nd))) return st;
+    if ((st = rc_card_lines(rd, b, NULL, 1, 1, "Tend Dt_out Ev_state On_viol", &nd))) return st;
     rc_field f[] = {RC_F_REALD("Tend", &r->tend, 0, RC_FF_POS, RC_D_T),
                     RC_F_REALD("Dt_out", &r->dtout, 0, RC_FF_NONNEG, RC_D_T),
-                    RC_F_SET("Ev_state", &r->ev_state, 0, 0, RC_BIT(0) | RC_BIT(1) | RC_BIT(2), 0, NULL)};
+                    RC_F_SET("Ev_state", &r->ev_state, 0, 0, RC_BIT(0) | RC_BIT(1) | RC_BIT(2), 0, NULL),
+                    RC_F_SET("On_viol", &r->on_violation, 0, 0, RC_BIT(0) | RC_BIT(1) | RC_BIT(2), 0, NULL)};
     if ((st = rc_parse_line(rd, b, &b->lines[0], f, RC_NF(f)))) return st;
     /* output interval: blank or 0 means Tend/100 */
     if (r->dtout == 0) r->dtout = RC_DEF_DTOUT_FRACTION * r->tend;

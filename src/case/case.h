@@ -270,6 +270,7 @@ typedef struct rc_case_run {
     double dtout; /* [s], default tend/100 */
     rc_loc loc;
     int ev_state; /* full-state records at events: 0 auto, 1 always, 2 never */
+    int on_violation; /* a failed physics check: 0 default (1), 1 stop the run, 2 warn and go on */
 } rc_case_run;
 
 /* /SOLVER (ricochet): integrator settings. Defaults in docs. */

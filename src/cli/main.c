@@ -12,12 +12,13 @@ static void usage(FILE *f)
 {
     fprintf(f,
             "usage: ricochet run CASE [-o OUT.nc] [-q] [--t-end T] [--dt-out DT] [--rtol R] [--method M]\n"
+            "                         [--on-violation stop|warn]\n"
             "                                            run a case, write results (default: CASE stem + .nc)\n"
             "       ricochet check CASE                  read and compile a case, print the model summary\n"
             "       ricochet export-vtk RESULTS.nc [-o DIR]  ParaView files (.pvd + .vtp; default DIR: stem_vtk)\n"
             "       ricochet COMMAND --help              the options of a command\n"
             "       ricochet --help | --version\n"
-            "exit codes: 0 success, 2 input error, 3 solver failure, 4 I/O error,\n"
+            "exit codes: 0 success, 2 input error, 3 solver failure, 4 I/O error, 5 physics check failed,\n"
             "            129 hung up (SIGHUP), 130 interrupted (SIGINT), 143 terminated (SIGTERM)\n");
 }
 
@@ -36,6 +37,11 @@ static void usage_run(FILE *f)
             "                 from the model's scales (blank /SOLVER fields) follow it\n"
             "  --method M     integration backend, instead of /SOLVER Method: cvode (1) or ida (2); a model\n"
             "                 with joints runs on ida only\n"
+            "  --on-violation stop|warn\n"
+            "                 what a failed physics check does (energy created, a dissipation decreasing, bodies\n"
+            "                 passing through each other, non-finite values): stop ends the run there with exit\n"
+            "                 code 5, warn records it (results file, summary, stderr) and goes on; default: the\n"
+            "                 deck's /RUN On_viol, else stop\n"
             "  -h, --help     this text\n"
             "T, DT and R are positive finite numbers (R below 1); T and DT in seconds (SI, as the deck is\n"
             "read: a deck naming its units is converted to SI; one naming none is used as written); T / DT\n"
@@ -44,8 +50,11 @@ static void usage_run(FILE *f)
             "remaining estimated from the rate of simulated time.\n"
             "SIGHUP, SIGINT, SIGTERM: the run stops at its next step, the results file is closed with what\n"
             "was computed, marked incomplete (\"interrupted at t = ...\"); a second signal kills at once.\n"
-            "exit codes: 0 success, 2 input error, 3 solver failure, 4 I/O error,\n"
-            "            129 hung up (SIGHUP), 130 interrupted (SIGINT), 143 terminated (SIGTERM)\n");
+            "Every run checks its own physics (docs/theory.md, \"Physics checks of every run\"); the summary\n"
+            "says whether the checks passed and which contacts never closed, stayed closed or settled.\n"
+            "exit codes: 0 success, 2 input error, 3 solver failure, 4 I/O error, 5 physics check failed\n"
+            "            (results kept, their status \"physics check failed: ...\"), 129 hung up (SIGHUP),\n"
+            "            130 interrupted (SIGINT), 143 terminated (SIGTERM)\n");
 }
 
 static void usage_check(FILE *f)
@@ -174,7 +183,7 @@ int main(int argc, char **argv)
         usage(stderr);
         return 2;
     }
-    int quiet = 0, method = 0;
+    int quiet = 0, method = 0, on_violation = 0;
     double t_end = 0.0, dt_out = 0.0, rtol = 0.0;
     for (int k = 2; k < argc; k++) {
         const char *a = argv[k];
@@ -195,6 +204,15 @@ int main(int argc, char **argv)
             method = v && (!strcmp(v, "cvode") || !strcmp(v, "1")) ? 1 : v && (!strcmp(v, "ida") || !strcmp(v, "2")) ? 2 : -1;
             if (method < 0) {
                 fprintf(stderr, "ricochet: --method: expected cvode or ida (or 1, 2), got %s\n", v ? v : "nothing");
+                return 2;
+            }
+            continue;
+        }
+        if (is_run && (!strncmp(a, "--on-violation=", 15) || !strcmp(a, "--on-violation"))) {
+            const char *v = a[14] == '=' ? a + 15 : (k + 1 < argc ? argv[++k] : NULL);
+            on_violation = v && !strcmp(v, "stop") ? RC_ON_VIOLATION_STOP : v && !strcmp(v, "warn") ? RC_ON_VIOLATION_WARN : -1;
+            if (on_violation < 0) {
+                fprintf(stderr, "ricochet: --on-violation: expected stop or warn, got %s\n", v ? v : "nothing");
                 return 2;
             }
             continue;
@@ -247,13 +265,17 @@ int main(int argc, char **argv)
         /* the library refuses an output that names an input, and options
          * out of range (RC_EINPUT, nothing run or written) */
         rc_run_options opt = {.output_path = out ? out : def, .progress = !quiet, .t_end_override = t_end,
-                              .dt_out_override = dt_out, .stop = &stop_requested};
+                              .dt_out_override = dt_out, .stop = &stop_requested, .on_violation = on_violation};
         rc_stats s;
         rc_status st = rc_run(m, &opt, &s, &e);
         if (!quiet && st != RC_EINPUT) {
             printf("ricochet %s: %s -> %s\n", rc_version(), case_path, opt.output_path);
             rc_stats_print(&s, stdout);
         }
+        /* violations the run went on after (on-violation warn): never in silence */
+        if (st == RC_OK && s.violations > 0)
+            fprintf(stderr, "ricochet: warning: physics checks: %s (all of them in the violation table of %s)\n",
+                    s.physics_note, opt.output_path);
         if (st == RC_EINTERRUPT && stop_requested > 0) {
             fprintf(stderr, "ricochet: %s: %s\n", rc_status_str(e.code), e.msg);
             rc = 128 + (int)stop_requested;

@@ -11,6 +11,7 @@
 
 #include "base/error.h"
 #include "base/progress.h"
+#include "engine/bounds.h"
 #include "model/joint.h"
 #include "model/model.h"
 #include "model/stick.h"
@@ -72,6 +73,8 @@ rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
     st = rc_model_scales(m, err);
     if (!st) st = rc_model_tolerances(m, err);
     rc_progress_done();
+    /* bodies overlapping at t = 0 that no option accounts for (start.c) */
+    if (!st) st = rc_start_check(c, m, err);
     if (!st) {
         rc_progress_stage("Jacobian pattern (bodies, interfaces, couplings)");
         st = rc_jac_build(m, err);

@@ -165,6 +165,7 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
     }
     if (m->nbody > 20) fprintf(f, "  ... and %d more bodies (the first 20 in deck order are listed)\n", m->nbody - 20);
     fprintf(f, "surfaces    %d\n", m->nsurf);
+    if (m->start_note) fprintf(f, "warning     accepted by /RUN On_viol 2: %s\n", m->start_note); /* engine/start.c */
     fprintf(f, "interfaces  %d\n", m->ninter);
     for (int i = 0; i < m->ninter && i < 20; i++) {
         if (m->inter_law[i] == RC_LAW_POWER) {

@@ -658,6 +658,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     m->tend = c->run.tend;
     m->dtout = c->run.dtout;
     m->ev_state = c->run.ev_state;
+    m->on_violation = c->run.on_violation;
     m->rtol = c->solver.rtol;
     m->atol_pos = c->solver.atol_pos;
     m->atol_quat = c->solver.atol_quat;
@@ -841,7 +842,7 @@ void rc_model_free(rc_model *m)
                       m->inter_law, m->inter_pw, m->inter_pscale, m->inter_fscale, m->inter_kscale,
                       m->inter_vscale, m->inter_mred, m->inter_mrest, m->ewt_rel, m->body_loc, m->inter_loc,
                       m->surf_nadr, m->surf_node, m->surf_sadr, m->surf_seg, m->inter_npt, m->inter_pst, m->inter_pbase,
-                      m->inter_ptslot, m->surf_seg_turned, m->inter_orient, m->inter_fast};
+                      m->inter_ptslot, m->surf_seg_turned, m->inter_orient, m->inter_fast, m->start_note};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     free(m);
 }

@@ -268,6 +268,10 @@ struct rc_model {
     /* run and solver settings */
     double tend, dtout;  /* [s] */
     int ev_state;        /* /RUN Ev_state: 0 auto, 1 always, 2 never (rc_event_records) */
+    int on_violation;    /* /RUN On_viol: a failed physics check 0, 1 stops the run, 2 warns (solver/guards.h) */
+    char *start_note;    /* an overlap at t = 0 accepted by On_viol 2 (engine/start.c): its message; NULL: none */
+    int start_inter;     /* its interface */
+    double start_energy, start_escale; /* its elastic energy and the scene's E_s [J] */
     double rtol;
     double atol_pos, atol_quat, atol_vel, atol_omega, atol_energy;
     int method;          /* /SOLVER Method: integration backend (src/solver/solver.h) */

@@ -326,6 +326,13 @@ struct rc_output {
     int broken;           /* a netCDF write failed: the handle is unusable */
     char fail[2048];      /* the first failed write's message (broken) */
     long linalg[3];       /* rc_output_linalg: analyses, Newton entries, pattern entries; -1 unknown */
+    /* the physics checks (rc_output_physics), written at close */
+    int phys_set, phys_stopped, phys_n;
+    long phys_total;
+    char *phys_summary, *phys_contacts;
+    rc_violation *phys_row;
+    int *phys_hist;        /* [ninter] or NULL */
+    double phys_ratio[3];
 };
 
 /* ---- One lock for every netCDF call --------------------------------------- */
@@ -810,6 +817,10 @@ static void output_free(rc_output *o)
     free(o->ebuf);
     free(o->ev_num);
     free(o->impact);
+    free(o->phys_summary);
+    free(o->phys_contacts);
+    free(o->phys_row);
+    free(o->phys_hist);
     for (size_t i = 0; i < o->nevbuf; i++) {
         free(o->ev_str[0][i]);
         free(o->ev_str[1][i]);
@@ -1172,6 +1183,8 @@ static rc_status write_final(rc_output *o, const rc_stats *st, int complete, con
     char status[sizeof(((rc_error *)0)->msg) + 16]; /* "incomplete: " + an rc_error message */
     if (complete)
         snprintf(status, sizeof status, "complete");
+    else if (o->phys_stopped) /* "physics check failed: ..." */
+        snprintf(status, sizeof status, "%s", reason && *reason ? reason : "physics check failed");
     else
         snprintf(status, sizeof status, "incomplete: %s",
                  reason && *reason ? reason : "no reason given");
@@ -1239,6 +1252,120 @@ static rc_status write_impacts(rc_output *o, const int *varid, rc_error *err)
     free(col);
     free(ids);
     if (st != NC_NOERR) return nc_fail(err, __LINE__, __func__, o->path, st, "writing the impacts table");
+    return RC_OK;
+}
+
+rc_status rc_output_physics(rc_output *o, const rc_out_physics *p, rc_error *err)
+{
+    if (!o) return RC_OK;
+    free(o->phys_summary);
+    free(o->phys_contacts);
+    free(o->phys_row);
+    free(o->phys_hist);
+    o->phys_set = 1;
+    o->phys_stopped = p->stopped;
+    o->phys_total = p->total;
+    o->phys_n = p->n > 0 ? p->n : 0;
+    memcpy(o->phys_ratio, p->ratio, sizeof o->phys_ratio);
+    o->phys_summary = copy_string(p->summary);
+    o->phys_contacts = copy_string(p->contacts);
+    o->phys_row = malloc(((size_t)o->phys_n + 1) * sizeof *o->phys_row);
+    const size_t ni = o->dimlen[D_INTER];
+    o->phys_hist = p->inter_history && o->var[V_INTER_ID] >= 0 ? malloc(ni * sizeof(int)) : NULL;
+    if (!o->phys_summary || !o->phys_contacts || !o->phys_row || (p->inter_history && o->var[V_INTER_ID] >= 0 && !o->phys_hist)) {
+        o->phys_set = 0;
+        RC_RAISE(err, RC_ENOMEM, "output: out of memory for the physics checks");
+    }
+    if (o->phys_n) memcpy(o->phys_row, p->row, (size_t)o->phys_n * sizeof *o->phys_row);
+    if (o->phys_hist) memcpy(o->phys_hist, p->inter_history, ni * sizeof(int));
+    return RC_OK;
+}
+
+/* The physics checks (docs/output-format.md): global attributes, the
+ * violation table (dimension violation, unlimited: an empty table is
+ * allowed) and the contacts' history per interface. Define mode; varid[8]
+ * receives the ids (-1: not defined). */
+enum { PV_TIME, PV_FROM, PV_CHECK, PV_ELEMENT, PV_VALUE, PV_LIMIT, PV_MESSAGE, PV_HIST, PV_COUNT };
+static rc_status define_physics(rc_output *o, int *varid, rc_error *err)
+{
+    static const struct {
+        const char *name;
+        nc_type type;
+        const char *long_name, *comment;
+    } col[PV_HIST] = {
+        {"violation_time", NC_DOUBLE, "time the physics check failed", NULL},
+        {"violation_time_from", NC_DOUBLE, "start of the interval the violation concerns",
+         "the earlier record for a decrease or an excess of energy; the same time for a state"},
+        {"violation_check", NC_STRING, "physics check that failed",
+         "energy_damping, energy_hysteresis, energy_friction, energy_coupling_damping, mechanical_energy, "
+         "energy_balance, penetration, sphere_centres, open_penetrating, non_finite, start_overlap (docs/theory.md)"},
+        {"violation_element", NC_STRING, "element concerned", "e.g. /INTER/TYPE6/3, /RBODY/2; empty: the whole model"},
+        {"violation_value", NC_DOUBLE, "value found",
+         "a decrease or an excess [J], a penetration or a distance [m]; non_finite: the value"},
+        {"violation_limit", NC_DOUBLE, "tolerance or bound it was compared with", "in the unit of violation_value"},
+        {"violation_message", NC_STRING, "the violation in words", NULL}};
+    for (int c = 0; c < PV_COUNT; c++) varid[c] = -1;
+    rc_status rc = put_text(o, NC_GLOBAL, "physics_checks", o->phys_summary, err);
+    if (rc == RC_OK) rc = put_int64(o, "physics_violations", o->phys_total, err);
+    if (rc == RC_OK) rc = put_double(o, "physics_max_energy_excess_ratio", o->phys_ratio[0], err);
+    if (rc == RC_OK) rc = put_double(o, "physics_max_channel_decrease_ratio", o->phys_ratio[1], err);
+    if (rc == RC_OK) rc = put_double(o, "physics_max_penetration_ratio", o->phys_ratio[2], err);
+    if (rc == RC_OK) rc = put_text(o, NC_GLOBAL, "contact_summary", o->phys_contacts, err);
+    if (rc != RC_OK) return rc;
+    int dim;
+    NC_TRY(o->path, nc_def_dim(o->ncid, "violation", NC_UNLIMITED, &dim), "defining dimension violation");
+    for (int c = 0; c < PV_HIST; c++) {
+        NC_TRY(o->path, nc_def_var(o->ncid, col[c].name, col[c].type, 1, &dim, &varid[c]), "defining %s", col[c].name);
+        rc = put_text(o, varid[c], "long_name", col[c].long_name, err);
+        if (rc == RC_OK && (c == PV_TIME || c == PV_FROM)) rc = put_text(o, varid[c], "units", o->unit[U_TIME], err);
+        if (rc == RC_OK && col[c].comment) rc = put_text(o, varid[c], "comment", col[c].comment, err);
+        if (rc != RC_OK) return rc;
+    }
+    if (!o->phys_hist) return RC_OK;
+    static const int flags[5] = {0, 1, 2, 3, 4};
+    NC_TRY(o->path, nc_def_var(o->ncid, "inter_contact_history", NC_INT, 1, &o->dimid[D_INTER], &varid[PV_HIST]),
+           "defining inter_contact_history");
+    rc = put_text(o, varid[PV_HIST], "long_name", "what the contact did over the run", err);
+    if (rc == RC_OK)
+        NC_TRY(o->path, nc_put_att_int(o->ncid, varid[PV_HIST], "flag_values", NC_INT, 5, flags),
+               "writing attribute flag_values");
+    if (rc == RC_OK)
+        rc = put_text(o, varid[PV_HIST], "flag_meanings",
+                      "never_closed closed_and_reopened closed_from_the_start_never_reopened "
+                      "closed_during_the_run_never_reopened settled",
+                      err);
+    return rc;
+}
+
+/* Write the violation rows and the contacts' history (data mode). */
+static rc_status write_physics(rc_output *o, const int *varid, rc_error *err)
+{
+    const size_t n = (size_t)o->phys_n, start[1] = {0}, count[1] = {n};
+    if (o->phys_hist)
+        NC_TRY(o->path, nc_put_var_int(o->ncid, varid[PV_HIST], o->phys_hist), "writing inter_contact_history");
+    if (n == 0) return RC_OK;
+    double *num = malloc(n * sizeof *num);
+    const char **str = malloc(n * sizeof *str);
+    if (!num || !str) {
+        free(num);
+        free(str);
+        RC_RAISE(err, RC_ENOMEM, "output: out of memory writing the violations");
+    }
+    int st = NC_NOERR;
+    for (int c = 0; c < PV_HIST && st == NC_NOERR; c++) {
+        for (size_t k = 0; k < n; k++) {
+            const rc_violation *v = &o->phys_row[k];
+            num[k] = c == PV_TIME ? v->t : c == PV_FROM ? v->t_from : c == PV_VALUE ? v->value : v->limit;
+            str[k] = c == PV_CHECK ? v->check : c == PV_ELEMENT ? v->element : v->message;
+        }
+        if (c == PV_CHECK || c == PV_ELEMENT || c == PV_MESSAGE)
+            st = nc_put_vara_string(o->ncid, varid[c], start, count, str);
+        else
+            st = nc_put_vara_double(o->ncid, varid[c], start, count, num);
+    }
+    free(num);
+    free(str);
+    if (st != NC_NOERR) return nc_fail(err, __LINE__, __func__, o->path, st, "writing the violation table");
     return RC_OK;
 }
 
@@ -1476,9 +1603,12 @@ static rc_status output_close(rc_output *o, const rc_stats *st, int complete, co
         int impact_var[I_COUNT];
         const int impacts = o->var[V_INTER_ID] >= 0;
         if (rc2 == RC_OK && impacts) rc2 = define_impacts(o, impact_var, e);
+        int phys_var[PV_COUNT];
+        if (rc2 == RC_OK && o->phys_set) rc2 = define_physics(o, phys_var, e);
         if (rc2 == RC_OK && (s = nc_enddef(o->ncid)) != NC_NOERR)
             rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "ending definitions");
         if (rc2 == RC_OK && impacts) rc2 = write_impacts(o, impact_var, e);
+        if (rc2 == RC_OK && o->phys_set) rc2 = write_physics(o, phys_var, e);
         if (rc2 == RC_OK) {
             closed = 1;
             if ((s = nc_close(o->ncid)) == NC_NOERR) {

@@ -143,6 +143,34 @@ rc_status rc_output_impacts(rc_output *o, int n, const rc_impact *rows, rc_error
  * KLU symbolic analyses, entries of the largest Newton matrix, entries of
  * the model's whole Jacobian pattern (-1: not known, not written). */
 void rc_output_linalg(rc_output *o, long klu_analyses, long newton_nnz, long pattern_nnz);
+/* A physics check that failed (docs/output-format.md, the violation table). */
+typedef struct rc_violation {
+    double t;           /* when it was found [s] */
+    double t_from;      /* start of the interval it concerns (the earlier record) [s]; t for a state */
+    char check[40];     /* energy_damping, energy_hysteresis, energy_friction, energy_coupling_damping,
+                           mechanical_energy, energy_balance, penetration, sphere_centres, open_penetrating,
+                           non_finite, start_overlap */
+    char element[64];   /* "/INTER/TYPE6/3", "/RBODY/2", "/COUPLING/SPRING/4"; "" the whole model */
+    double value;       /* what was found: a decrease or an excess [J], a penetration or a distance [m] */
+    double limit;       /* what it was compared with, in the same unit */
+    char message[600];
+} rc_violation;
+
+/* The physics checks of the run (docs/theory.md), written at close. */
+typedef struct rc_out_physics {
+    const char *summary;        /* global attribute physics_checks */
+    const char *contacts;       /* global attribute contact_summary ("" none) */
+    int stopped;                /* 1: a violation stopped the run (the status is the close's reason) */
+    long total;                 /* violations found */
+    int n;                      /* rows given (the first ones) */
+    const rc_violation *row;    /* [n] */
+    const int *inter_history;   /* [ninter] contact history (docs/output-format.md); NULL: none */
+    double ratio[3];            /* largest mechanical energy excess, channel decrease and penetration,
+                                   each over its tolerance or bound [-] */
+} rc_out_physics;
+/* Keep the physics checks' results for rc_output_close (copied). */
+rc_status rc_output_physics(rc_output *o, const rc_out_physics *p, rc_error *err);
+
 /* Write statistics and completion attributes, close, free. `complete` 0
  * marks the file incomplete with `reason`. o == NULL is a no-op. After a
  * failed write (here or earlier) the file is closed as far as HDF5 can, read

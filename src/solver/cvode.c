@@ -168,6 +168,7 @@ static int cb_root(realtype t, N_Vector y, realtype *g, void *ud)
     run_ctx *c = ud;
     c->d->n_root++;
     rc_assemble_roots(c->m, c->d, t, whole(c, y, c->ysc), rc_rootmap_full(&c->rm, g));
+    rc_rootmap_keep(&c->rm, t, rc_rootmap_full(&c->rm, g)); /* for the physics checks */
     rc_rootmap_gather(&c->rm, g);
     return 0;
 }
@@ -698,6 +699,8 @@ static void cv_close(void *self)
     SUNContext_Free(&c->ctx);
 }
 
+static const double *cv_roots_at(void *self, double t) { return rc_rootmap_at(&((run_ctx *)self)->rm, t); }
+
 static const rc_backend cvode_backend = {
     .name = "CVODE", .prefix = "CVode", .root_return = CV_ROOT_RETURN, .tstop_return = CV_TSTOP_RETURN,
     .too_much_work = CV_TOO_MUCH_WORK, .open = cv_open, .start = cv_start, .solve = cv_solve, .dky = cv_dky,
@@ -705,7 +708,7 @@ static const rc_backend cvode_backend = {
     .set_stop_time = cv_set_stop_time, .restart = cv_restart, .add_stats = cv_add_stats, .steps = cv_steps,
     .failure = cv_failure, .flag_name = CVodeGetReturnFlagName, .last_msg = cv_last_msg,
     .record_vector = NULL, .before_events = cv_before_events, .after_events = cv_after_events,
-    .continued = cv_continued, .close = cv_close};
+    .continued = cv_continued, .close = cv_close, .roots_at = cv_roots_at};
 
 static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_pause *pause, rc_stats *stats,
                            rc_error *err)

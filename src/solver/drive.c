@@ -30,6 +30,7 @@
 #include "model/stick.h"
 #include "model/power.h"
 #include "output/output.h"
+#include "solver/guards.h"
 #include "solver/impacts.h"
 #include "solver/integrator.h"
 #include "solver/solver.h"
@@ -110,6 +111,7 @@ rc_status write_event(const rc_model *m, const rc_data *d, ev_sink *o, double t,
     rc_inter_report r;
     rc_inter_report_eval_d(m, d, i, t, y, &r);
     const double v[3] = {r.p, r.vn, d->inter_mode[i] == RC_MODE_CLOSED && r.fn > 0 ? r.fn : 0.0};
+    rc_guards_event(o->guards, d, i, ev->kind, t); /* the contact's history */
     return sink_event(o, t, ev->kind, m->inter_name[i], v, err);
 }
 
@@ -439,7 +441,14 @@ static rc_status record(const rc_backend *bk, void *self, const rc_model *m, con
                         frame_buf *fb, double t, const double *y, const double *yp, int at_event, rc_error *err)
 {
     const double *v = bk->record_vector ? bk->record_vector(self, t, y, yp) : y;
-    return write_frame(m, d, o, fb, t, v, at_event, err);
+    rc_status st = write_frame(m, d, o, fb, t, v, at_event, err);
+    /* the physics checks of the record's energies and forces (guards.h),
+     * once per step: the records in between interpolate the same step */
+    if (!st && fb->guards_due) {
+        fb->guards_due = 0;
+        if (rc_guards_record(fb->guards, d, t, v, fb)) st = RC_SET(err, RC_EPHYSICS, "%s", rc_guards_message(fb->guards));
+    }
+    return st;
 }
 
 /* The interpolant of the integrator's last step for the impact table
@@ -609,7 +618,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     const double tend = opt && opt->t_end_override > 0 ? opt->t_end_override : m->tend;
     const double dtout = opt && opt->dt_out_override > 0 ? opt->dt_out_override : m->dtout;
     const int show = opt && opt->progress, tty = show && isatty(2);
-    ev_sink sink = {NULL, opt ? opt->on_event : NULL, opt ? opt->user : NULL, 0, ""};
+    ev_sink sink = {NULL, opt ? opt->on_event : NULL, opt ? opt->user : NULL, 0, "", NULL};
     const int evrec = rc_event_records(m); /* full-state records at events */
     double wall0 = wall_now(), last_progress = wall0;
     const int nr = rc_root_count(m);
@@ -617,11 +626,16 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     int n = m->ny;                /* their length */
     const char *integrator = "";
     int opened = 0;
+    /* the physics checks (guards.h): stop at a violation unless asked to go on */
+    const int on_viol = opt && opt->on_violation ? opt->on_violation : m->on_violation;
+    rc_guards *gd = rc_guards_new(m, on_viol == RC_ON_VIOLATION_WARN, show);
 
-    if (!d || !frame_alloc(m, &fb)) {
+    if (!d || !gd || !frame_alloc(m, &fb)) {
         st = RC_SET(err, RC_ENOMEM, "out of memory");
         goto done;
     }
+    fb.guards = sink.guards = gd;
+    fb.guards_due = 1; /* the first record: the baseline */
     opened = 1;
     if ((st = bk->open(self, m, d, opt, &y, &yp, &n, &integrator, err))) goto done;
     rootdir = calloc((size_t)nr + 1, sizeof(int));
@@ -650,6 +664,10 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
         int jmp = 0;
         resolve_touching(m, d, t, y, flook, &sink, &im, &s.events, &jmp, &st, err);
         if (st) goto done;
+        if (rc_guards_started(gd, d)) {
+            st = RC_SET(err, RC_EPHYSICS, "%s", rc_guards_message(gd));
+            goto done;
+        }
     }
     if ((st = bk->start(self, err))) goto done;
     if (nr > 0) {
@@ -678,6 +696,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
         evrec && m->nbody <= RC_CONTACT_REC_MAX_BODIES ? rc_contact_record_interval(m, dtout) : 0.0;
     double t_contact_rec = -INFINITY; /* time of the last such record [s] */
     long single = 0;                  /* single steps since the last output time */
+    long rhs_seen = -1;               /* d->n_rhs at the last return (the physics checks) */
     while (t < tend) {
         /* the event callback asked to stop: end here as an interrupted run */
         if (sink.stop) {
@@ -724,6 +743,19 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             st = RC_SET(err, RC_ESOLVER, "%s", reason);
             break;
         }
+        /* the physics checks of the accepted state, on the zone roots the
+         * integrator evaluated there (guards.h) */
+        const int at_root = flag == bk->root_return;
+        /* no right-hand side evaluated since the last return: no step taken */
+        const int moved = at_root || d->n_rhs != rhs_seen;
+        rhs_seen = d->n_rhs;
+        const int due = moved && rc_guards_due(gd, s.steps + bk->steps(self), at_root);
+        fb.guards_due |= due;
+        if (due && rc_guards_step(gd, d, t, y, bk->roots_at ? bk->roots_at(self, t) : NULL, at_root,
+                                  s.steps + bk->steps(self))) {
+            st = RC_SET(err, RC_EPHYSICS, "%s", rc_guards_message(gd));
+            break;
+        }
         const int at_bp = flag == bk->tstop_return && ibp < nbp && t >= bp[ibp];
         if (at_bp || flag == bk->root_return)
             if ((st = outputs_before(bk, self, m, d, out, &fb, t, tend, dtout, yp != NULL, &tout, &nout, err)))
@@ -762,6 +794,13 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
                 memcpy(y, yref, (size_t)n * sizeof(double));
             }
             if (bk->before_events) bk->before_events(self);
+            /* the ledger just before the events: a jump at them is measured
+             * against it (guards.h) */
+            fb.guards_due = 1; /* the record after the events is checked against this state */
+            if (rc_guards_before_events(gd, d, t, y)) {
+                st = RC_SET(err, RC_EPHYSICS, "%s", rc_guards_message(gd));
+                goto done;
+            }
             rc_event ev[RC_MAX_EV];
             int jumped = 0;
             int nev = rc_events_apply(m, d, t, y, roots, ev, RC_MAX_EV, &jumped);
@@ -891,6 +930,12 @@ done:
     if (st != RC_OK) s.t_end = t; /* how far a failed run got */
     s.wall_time = wall_now() - wall0;
     if (tty) fprintf(stderr, "\n");
+    /* the physics checks' outcome: statistics and results file */
+    if (st == RC_EPHYSICS) {
+        snprintf(reason, sizeof reason, "physics check failed: %s", rc_guards_message(gd));
+        fail_reason = reason;
+    }
+    if (opened) rc_guards_finish(gd, d, &s, out, st == RC_EPHYSICS);
     if (out) {
         rc_error e2;
         rc_output_linalg(out, d && d->n_klu_sym > 0 ? d->n_klu_sym : -1, d && d->newton_nnz > 0 ? d->newton_nnz : -1,
@@ -924,6 +969,7 @@ done:
     free(flook);
     free(bp);
     frame_free(&fb);
+    rc_guards_free(gd);
     rc_data_free(d);
     return st;
 }

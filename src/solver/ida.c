@@ -163,6 +163,7 @@ static int cb_root(realtype t, N_Vector yy, N_Vector yp, realtype *g, void *ud)
     double *gf = rc_rootmap_full(&c->rm, g);
     rc_assemble_roots(c->m, c->d, t, N_VGetArrayPointer(yy), gf);
     if (c->sw) rc_stk_roots(c->m, c->d, c->sw, t, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), gf);
+    rc_rootmap_keep(&c->rm, t, gf); /* for the physics checks */
     rc_rootmap_gather(&c->rm, g);
     return 0;
 }
@@ -547,6 +548,8 @@ static void ida_close(void *self)
     SUNContext_Free(&c->ctx);
 }
 
+static const double *ida_roots_at(void *self, double t) { return rc_rootmap_at(&((ida_ctx *)self)->rm, t); }
+
 static const rc_backend ida_backend = {
     .name = "IDA", .prefix = "IDA", .root_return = IDA_ROOT_RETURN, .tstop_return = IDA_TSTOP_RETURN,
     .too_much_work = IDA_TOO_MUCH_WORK, .open = ida_open, .start = ida_start, .solve = ida_solve, .dky = ida_dky,
@@ -554,7 +557,7 @@ static const rc_backend ida_backend = {
     .set_stop_time = ida_set_stop_time, .restart = ida_restart, .add_stats = ida_add_stats, .steps = ida_steps,
     .failure = ida_failure, .flag_name = IDAGetReturnFlagName, .last_msg = ida_last_msg,
     .record_vector = ida_record_vector, .before_events = ida_before_events, .after_events = ida_after_events,
-    .continued = NULL, .close = ida_close};
+    .continued = NULL, .close = ida_close, .roots_at = ida_roots_at};
 
 static rc_status ida_run(const rc_model *m, const rc_run_options *opt, rc_pause *pause, rc_stats *stats,
                          rc_error *err)

@@ -65,6 +65,7 @@ typedef struct ev_sink {
     void *user;
     int stop;
     char why[300];
+    struct rc_guards *guards; /* the physics checks (guards.h): the contacts' history; NULL: none */
 } ev_sink;
 
 /* Output buffers for one record. */
@@ -74,6 +75,8 @@ typedef struct frame_buf {
     double energy[RC_NENERGY];
     double *cpl; /* [9 ncoupling] coupling values (rc_cpl_frame) */
     double *jnt; /* [8 njoint + 1] joints: force, moment, drifts, work (IDA path) */
+    struct rc_guards *guards; /* the physics checks of every record (guards.h); NULL: none */
+    int guards_due;           /* a step was taken or events applied since the last record checked */
 } frame_buf;
 
 /* Time breakpoints (ends of imposed velocities) inside (0, tend), sorted,
@@ -138,12 +141,23 @@ typedef struct rc_rootmap {
     int *live;    /* [n] the integrator's roots' full indices (NULL: all, n = nfull) */
     double *g;    /* [nfull] scratch: the engine's root values */
     int *iv;      /* [nfull] scratch: the integrator's directions or roots found */
+    /* the interfaces' zone root values of the last evaluation, and its
+     * time, for the physics checks (guards.h) */
+    int ninter;
+    double *zone; /* [ninter] */
+    double tzone; /* [s] */
+    int zone_ok;  /* 1: zone holds an evaluation */
 } rc_rootmap;
 /* 0, or -1 out of memory (rc_rootmap_free it anyway). */
 int rc_rootmap_init(rc_rootmap *rm, const rc_model *m, const rc_run_options *opt);
 void rc_rootmap_free(rc_rootmap *rm);
 static inline double *rc_rootmap_full(const rc_rootmap *rm, double *g) { return rm->live ? rm->g : g; }
 void rc_rootmap_gather(const rc_rootmap *rm, double *g);
+/* Keep the zone values of the engine's whole layout gfull, evaluated at
+ * t (each root callback, after the engine wrote them). */
+void rc_rootmap_keep(rc_rootmap *rm, double t, const double *gfull);
+/* The zone values kept when they were evaluated at exactly t, else NULL. */
+const double *rc_rootmap_at(const rc_rootmap *rm, double t);
 /* The directions dir[nfull] as the integrator's [n] (valid until the next call). */
 const int *rc_rootmap_dirs(const rc_rootmap *rm, const int *dir);
 static inline int *rc_rootmap_info(const rc_rootmap *rm, int *roots) { return rm->live ? rm->iv : roots; }
@@ -202,6 +216,10 @@ typedef struct rc_backend {
     void (*before_events)(void *self);
     int (*after_events)(void *self, double t, const double *y, int cpl_ev, int restart);
     void (*continued)(void *self);
+    /* The interfaces' zone root values the integrator evaluated at exactly
+     * t (rc_rootmap_at), NULL when its last evaluation was elsewhere (NULL
+     * operation: never). */
+    const double *(*roots_at)(void *self, double t);
     void (*close)(void *self); /* free everything open and start made */
 } rc_backend;
 

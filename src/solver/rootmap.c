@@ -24,6 +24,8 @@ int rc_rootmap_init(rc_rootmap *rm, const rc_model *m, const rc_run_options *opt
     memset(rm, 0, sizeof *rm);
     const double tend = opt && opt->t_end_override > 0 ? opt->t_end_override : m->tend;
     rm->nfull = rm->n = rc_root_count(m);
+    rm->ninter = m->ninter;
+    if (m->ninter > 0 && !(rm->zone = malloc((size_t)m->ninter * sizeof(double)))) return -1;
     if (rm->nfull == 0 || !compact_on) return 0;
     const int n = rc_roots_live(m, tend, NULL);
     /* all live: the integrator writes the engine's vector (none live cannot
@@ -42,7 +44,21 @@ void rc_rootmap_free(rc_rootmap *rm)
     free(rm->live);
     free(rm->g);
     free(rm->iv);
+    free(rm->zone);
     memset(rm, 0, sizeof *rm);
+}
+
+void rc_rootmap_keep(rc_rootmap *rm, double t, const double *gfull)
+{
+    if (!rm->zone) return;
+    for (int i = 0; i < rm->ninter; i++) rm->zone[i] = gfull[RC_ROOTS_PER_INTER * i + RC_ROOT_ZONE];
+    rm->tzone = t;
+    rm->zone_ok = 1;
+}
+
+const double *rc_rootmap_at(const rc_rootmap *rm, double t)
+{
+    return rm->zone_ok && rm->tzone == t ? rm->zone : NULL;
 }
 
 void rc_rootmap_gather(const rc_rootmap *rm, double *g)

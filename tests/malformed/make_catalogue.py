@@ -402,6 +402,23 @@ TL('joint_stop_revolute_one_sided', JT, 'field Lim_max', insert(JT, 5, [STOP('-0
 TL('joint_stop_curve_missing', JT, 'field fct_lim', insert(JT, 5, [cols(STOP('-0.5', '0.5', '', '1'), 81, 90, '99')]))
 TL('joint_stop_curve_and_k', JT, 'field K_lim', insert(JT, 5, [cols(STOP('-0.5', '0.5', '100', '1'), 81, 90, '1')]))
 
+# ---- the start (docs/theory.md, "Physics checks of every run"): a sphere
+# placed 4 cm inside the floor (its surface centre at z = 0.01, R = 0.05),
+# and 3 cm inside it; the message names the interface card's header
+
+
+def start_overlap(z):
+    def f(lines):
+        h = hidx(lines, SE)
+        lines[h + 3] = cols(lines[h + 3], 41, 60, z).rstrip()
+        return lines, hidx(lines, '/INTER/TYPE6/1'), {}
+    return f
+
+
+TL('start_sphere_inside_floor', '/INTER/TYPE6/1', 'overlap at t = 0: penetration 0.04 m', start_overlap('0.01'))
+TL('start_sphere_half_inside_floor', '/INTER/TYPE6/1', 'surfaces /SURF/ELLIPS/1 and /SURF/PLANE/2 overlap',
+   start_overlap('0.02'))
+
 
 def write_all():
     for old in glob.glob('[0-9][0-9][0-9]_*'):

@@ -1,0 +1,659 @@
+/*
+ * The physics checks of every run (guards.h; docs/theory.md, "Physics
+ * checks of every run"). Everything is allocated in rc_guards_new; the
+ * checks read values the run has already computed (the state, the zone
+ * root values the integrator evaluated, the energies and forces of the
+ * records) and add only the stored energy of the interfaces in contact at
+ * each record (the per-interface hysteresis).
+ */
+#include <float.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "engine/bounds.h"
+#include "model/coupling.h"
+#include "solver/guards.h"
+
+/* The dissipation channels, in the order of their per-element arrays. */
+enum { CH_DAMP, CH_HYST, CH_FRIC, CH_CPL, CH_N };
+static const char *const ch_name[CH_N] = {"energy_damping", "energy_hysteresis", "energy_friction",
+                                          "energy_coupling_damping"};
+static const int ch_energy[CH_N] = {RC_E_DAMP, RC_E_HYST, RC_E_FRIC, RC_E_CPL_DAMP};
+
+/* Contact history of an interface (the results file's inter_contact_history). */
+enum { HIST_NEVER = 0, HIST_REOPENED = 1, HIST_PERSISTENT = 2, HIST_STAYED = 3, HIST_SETTLED = 4 };
+
+/* A quantity that must not decrease: its largest value so far and when
+ * (time [s], integrator steps), and its value at the previous record. */
+typedef struct mono {
+    double max, t;
+    long n;
+    double prev, tp;
+    long np;
+} mono;
+static mono mono_start(double v, double t, long n) { return (mono){v, t, n, v, t, n}; }
+
+struct rc_guards {
+    const rc_model *m;
+    int warn, show;
+    rc_scene scene;
+    double *pbound, *fbound;  /* [ninter] penetration bound [m] (INFINITY: none), its force [N] */
+    double *size;             /* [nbody] body sizes [m] */
+    double *gscratch;         /* [root count] zone values when the integrator's are not at hand */
+    /* energies */
+    int started;
+    long steps;               /* integrator steps so far (rc_guards_step) */
+    double t_prev;            /* the previous record [s] */
+    double mech0, imp0, pot0; /* at the first record [J] */
+    double eref;              /* the largest energy in play so far [J] */
+    double mech_done;         /* excess already reported (warn) [J] */
+    mono gmax[CH_N];          /* channels in total */
+    mono *emax;               /* [3 ninter + ncpl]: per interface damping, hysteresis, friction; per coupling */
+    double *hyst;             /* [ninter] scratch: each interface's hysteresis at the record */
+    double *pmax;             /* [ninter] largest penetration checked [m] */
+    mono balance;             /* minus energy_total: the balance never rises */
+    /* excursions in progress (reported once each): penetration, centres, open */
+    unsigned char *on;        /* [3 ninter] */
+    unsigned char nonfinite;  /* reported once */
+    /* results */
+    long total;
+    int nrow, caprow;
+    rc_violation *row;        /* [caprow] the first RC_GUARD_ROWS violations (grown as they come) */
+    char stop_msg[sizeof(((rc_violation *)0)->message)];
+    double ratio[3];          /* energy excess, channel decrease, penetration: largest over its tolerance */
+    double epre[RC_NENERGY];  /* the energies before the events of a root return */
+    /* once per integrator step: the states in between are the integrator's
+     * interpolant of the same step */
+    long step_checked;        /* steps at the last state check (-1: none) */
+    /* contact history */
+    unsigned char *closed0, *ever, *settled;
+    int *prev_mode, *hist;
+    long *ncl, *nleave;
+    double *t_settle;
+};
+
+static void *zalloc(size_t n, size_t size) { return calloc(n ? n : 1, size); }
+/* max without the libm call (the operands are never NaN here) */
+static inline double dmax(double a, double b) { return a > b ? a : b; }
+
+/* Whether every value of v[n] is finite: an exponent of all ones (inf,
+ * NaN) carries into the sign bit when one is added to it; an OR of
+ * integers, which the compiler vectorises. */
+static int all_finite(const double *v, int n)
+{
+    const uint64_t expo = 0x7FF0000000000000u, one = 0x0010000000000000u;
+    uint64_t acc = 0;
+    for (int k = 0; k < n; k++) {
+        uint64_t b;
+        memcpy(&b, v + k, sizeof b);
+        acc |= (b & expo) + one;
+    }
+    return !(acc >> 63);
+}
+
+rc_guards *rc_guards_new(const rc_model *m, int warn, int show)
+{
+    rc_guards *g = calloc(1, sizeof *g);
+    if (!g) return NULL;
+    const size_t ni = (size_t)m->ninter, nc = (size_t)(m->cpl ? m->cpl->n : 0);
+    g->m = m;
+    g->warn = warn;
+    g->show = show;
+    g->pbound = zalloc(ni, sizeof(double));
+    g->fbound = zalloc(ni, sizeof(double));
+    g->size = zalloc((size_t)m->nbody, sizeof(double));
+    g->gscratch = zalloc((size_t)rc_root_count(m), sizeof(double));
+    g->emax = zalloc(3 * ni + nc, sizeof(mono));
+    g->hyst = zalloc(ni, sizeof(double));
+    g->pmax = zalloc(ni, sizeof(double));
+    g->on = zalloc(3 * ni, 1);
+    g->closed0 = zalloc(ni, 1);
+    g->ever = zalloc(ni, 1);
+    g->settled = zalloc(ni, 1);
+    g->prev_mode = zalloc(ni, sizeof(int));
+    g->hist = zalloc(ni, sizeof(int));
+    g->ncl = zalloc(ni, sizeof(long));
+    g->nleave = zalloc(ni, sizeof(long));
+    g->t_settle = zalloc(ni, sizeof(double));
+    if (!g->pbound || !g->fbound || !g->size || !g->gscratch || !g->emax || !g->hyst || !g->pmax || !g->on ||
+        !g->closed0 || !g->ever || !g->settled || !g->prev_mode || !g->hist || !g->ncl || !g->nleave || !g->t_settle) {
+        rc_guards_free(g);
+        return NULL;
+    }
+    g->step_checked = -1;
+    rc_scene_scales(m, &g->scene);
+    for (int b = 0; b < m->nbody; b++) g->size[b] = rc_body_size(m, b);
+    for (int i = 0; i < m->ninter; i++) g->pbound[i] = rc_pen_bound(m, i, &g->scene, g->size, &g->fbound[i]);
+    return g;
+}
+
+void rc_guards_free(rc_guards *g)
+{
+    if (!g) return;
+    void *p[] = {g->pbound, g->fbound, g->size, g->gscratch, g->emax, g->hyst, g->pmax, g->on, g->row, g->closed0,
+                 g->ever, g->settled, g->prev_mode, g->hist, g->ncl, g->nleave, g->t_settle};
+    for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
+    free(g);
+}
+
+const char *rc_guards_message(const rc_guards *g) { return g ? g->stop_msg : ""; }
+
+int rc_guards_rows(const rc_guards *g, const rc_violation **rows)
+{
+    *rows = g ? g->row : NULL;
+    return g ? g->nrow : 0;
+}
+
+/* Record a violation; 1 when it stops the run. */
+static int violate(rc_guards *g, double t, double t_from, const char *check, const char *element, double value,
+                   double limit, const char *fmt, ...) __attribute__((format(printf, 8, 9)));
+static int violate(rc_guards *g, double t, double t_from, const char *check, const char *element, double value,
+                   double limit, const char *fmt, ...)
+{
+    rc_violation v;
+    memset(&v, 0, sizeof v);
+    v.t = t;
+    v.t_from = t_from;
+    snprintf(v.check, sizeof v.check, "%s", check);
+    snprintf(v.element, sizeof v.element, "%s", element ? element : "");
+    v.value = value;
+    v.limit = limit;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(v.message, sizeof v.message, fmt, ap);
+    va_end(ap);
+    if (g->nrow == g->caprow && g->caprow < RC_GUARD_ROWS) { /* only when a check fails */
+        const int cap = g->caprow ? 2 * g->caprow : 16;
+        rc_violation *r = realloc(g->row, (size_t)(cap < RC_GUARD_ROWS ? cap : RC_GUARD_ROWS) * sizeof *r);
+        if (r) {
+            g->row = r;
+            g->caprow = cap < RC_GUARD_ROWS ? cap : RC_GUARD_ROWS;
+        }
+    }
+    if (g->nrow < g->caprow) g->row[g->nrow++] = v;
+    g->total++;
+    if (!g->warn) {
+        snprintf(g->stop_msg, sizeof g->stop_msg, "%s", v.message);
+        return 1;
+    }
+    if (g->show && g->total <= RC_GUARD_PRINT)
+        fprintf(stderr, "ricochet: physics check failed (the run goes on: on-violation warn): %s\n", v.message);
+    return 0;
+}
+
+/* ---- every accepted state ------------------------------------------ */
+/* Rotate v by the unit quaternion q (w, x, y, z). */
+static void qrot(const double *q, const double *v, double *out)
+{
+    const double w = q[0], x = q[1], y = q[2], z = q[3];
+    const double t[3] = {2.0 * (y * v[2] - z * v[1]), 2.0 * (z * v[0] - x * v[2]), 2.0 * (x * v[1] - y * v[0])};
+    out[0] = v[0] + w * t[0] + (y * t[2] - z * t[1]);
+    out[1] = v[1] + w * t[1] + (z * t[0] - x * t[2]);
+    out[2] = v[2] + w * t[2] + (x * t[1] - y * t[0]);
+}
+
+/* Centre of sphere surface s at the state y, global frame [m]. */
+static void sphere_centre(const rc_model *m, int s, const double *y, double *c)
+{
+    const double *x = rc_body_state(m, m->surf_body[s], y), *p = m->surf_p + 3 * s;
+    double r[3];
+    qrot(x + 3, p, r);
+    for (int k = 0; k < 3; k++) c[k] = x[k] + r[k];
+}
+
+/* The band within which an open interface i may penetrate at y: the
+ * rounding of P (a thousand ulps of the coordinates and sizes involved)
+ * and the position tolerance rtol p_s [m]. */
+static double open_band(const rc_guards *g, int i, const double *y)
+{
+    const rc_model *m = g->m;
+    const int ba = m->inter_ba[i], bb = m->inter_bb[i];
+    const double *xa = rc_body_state(m, ba, y), *xb = rc_body_state(m, bb, y);
+    double L = (ba >= 0 ? g->size[ba] : 0.0) + (bb >= 0 ? g->size[bb] : 0.0);
+    for (int k = 0; k < 3; k++) L += fabs(xa[k]) + fabs(xb[k]);
+    double band = 1e3 * DBL_EPSILON * L;
+    if (isfinite(m->inter_pscale[i])) band = fmax(band, fmax(1e-9, m->rtol) * m->inter_pscale[i]);
+    return band;
+}
+
+/* A finite state y[n] (at the records: the integrator's error test rejects
+ * a step to a non-finite state, and the states it leaves out are
+ * constant); 1: a violation stops the run. */
+static int state_finite(rc_guards *g, double t, const double *y, int n)
+{
+    const rc_model *m = g->m;
+    if (g->nonfinite || all_finite(y, n)) return 0;
+    for (int k = 0; k < n; k++) {
+        if (isfinite(y[k])) continue;
+        char name[160], el[64] = "";
+        rc_state_name(m, k, name, sizeof name);
+        for (int b = 0; b < m->nbody; b++)
+            if (m->body_yadr[b] >= 0 && k >= m->body_yadr[b] && k < m->body_yadr[b] + RC_NB)
+                snprintf(el, sizeof el, "/RBODY/%d", m->body_id[b]);
+        g->nonfinite = 1;
+        return violate(g, t, t, "non_finite", el, y[k], 0.0, "non-finite state at t = %.9g s: %s = %g", t, name, y[k]);
+    }
+    return 0;
+}
+
+int rc_guards_due(rc_guards *g, long steps, int at_root)
+{
+    if (!g) return 0;
+    g->steps = steps;
+    /* an output time inside the last step: its interpolant, checked at the
+     * step (a located root is checked: its events follow) */
+    return at_root || steps != g->step_checked;
+}
+
+int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, const double *zone, int at_root,
+                   long steps)
+{
+    if (!rc_guards_due(g, steps, at_root)) return 0;
+    const rc_model *m = g->m;
+    g->step_checked = steps;
+    if (m->ninter == 0) return 0;
+    const int per = zone ? 1 : RC_ROOTS_PER_INTER, off = zone ? 0 : RC_ROOT_ZONE;
+    if (!zone) { /* the integrator's values are not at hand: evaluate them */
+        rc_assemble_roots(m, d, t, y, g->gscratch);
+        zone = g->gscratch;
+    }
+    for (int i = 0; i < m->ninter; i++) {
+        const int mode = d->inter_mode[i];
+        if (mode == RC_MODE_INACTIVE || d->inter_track[i]) continue; /* not acting, or P = 0 by construction */
+        const double P = zone[per * i + off] - (mode != RC_MODE_OPEN ? d->inter_band[2 * i] : 0.0);
+        unsigned char *on = g->on + 3 * i;
+        /* beyond the contact's scales */
+        const double pb = g->pbound[i];
+        if (P > g->pmax[i]) g->pmax[i] = P; /* over its bound at the end (rc_guards_finish) */
+        if (!(P <= pb) && !on[0]) {
+            on[0] = 1;
+            char why[200];
+            if (isfinite(g->fbound[i]) && rc_law_force(m, i, pb) >= (1.0 - 1e-9) * g->fbound[i])
+                snprintf(why, sizeof why, "where the law's force reaches %.3g N, %g x the larger of the scene's weight %.3g N and "
+                         "its impact force", g->fbound[i], RC_PEN_FORCE_FACTOR, g->scene.weight);
+            else
+                snprintf(why, sizeof why, "the size of the smaller body");
+            if (violate(g, t, t, "penetration", m->inter_name[i], P, pb,
+                        "penetration of %s is %.6g m at t = %.9g s, beyond its bound %.6g m (%s): the bodies pass "
+                        "through each other", m->inter_name[i], P, t, pb, why))
+                return 1;
+        } else if (P <= pb) {
+            on[0] = 0;
+        }
+        /* two spheres' centres: from P = Gap - (|c_b - c_a| - R_a - R_b)
+         * (an Inacti offset moves P: from the state then) */
+        if (m->inter_pair[i] == RC_PAIR_SPHERE_SPHERE) {
+            const double rs = m->surf_r[m->inter_sa[i]] + m->surf_r[m->inter_sb[i]];
+            double dc = rs + m->inter_gap[i] - P;
+            if (m->inter_oidx[i] >= 0) {
+                double ca[3], cb[3];
+                sphere_centre(m, m->inter_sa[i], y, ca);
+                sphere_centre(m, m->inter_sb[i], y, cb);
+                dc = sqrt((ca[0] - cb[0]) * (ca[0] - cb[0]) + (ca[1] - cb[1]) * (ca[1] - cb[1]) +
+                          (ca[2] - cb[2]) * (ca[2] - cb[2]));
+            }
+            const double lim = RC_SPHERE_CENTRE_FRAC * rs;
+            if (dc < lim && !on[1]) {
+                on[1] = 1;
+                if (violate(g, t, t, "sphere_centres", m->inter_name[i], dc, lim,
+                            "the sphere centres of %s are %.6g m apart at t = %.9g s, closer than (R1 + R2)/2 = "
+                            "%.6g m: the spheres pass through each other", m->inter_name[i], dc, t, lim))
+                    return 1;
+            } else if (dc >= lim) {
+                on[1] = 0;
+            }
+        }
+        /* open while penetrating: a contact the engine did not close (at a
+         * located root the event is still to be applied) */
+        if (mode == RC_MODE_OPEN && !at_root && (P > 0 || on[2])) {
+            const double band = open_band(g, i, y);
+            if (P > band && !on[2]) {
+                on[2] = 1;
+                if (violate(g, t, t, "open_penetrating", m->inter_name[i], P, band,
+                            "%s is open (no force) while penetrating by %.6g m at t = %.9g s, beyond its touch band "
+                            "%.3g m: the contact was never closed", m->inter_name[i], P, t, band))
+                    return 1;
+            } else if (P <= band) {
+                on[2] = 0;
+            }
+        }
+    }
+    return 0;
+}
+
+/* ---- every record ------------------------------------------------------ */
+/* Each interface's hysteresis at the record y into g->hyst: its W_load
+ * minus its stored energy (energy.c), the stored energy evaluated for the
+ * interfaces in contact but the last, whose value follows from the total
+ * e_hyst (one evaluation fewer: none in a model of one contact). */
+static void hysteresis_values(rc_guards *g, const rc_data *d, double t, const double *y, double e_hyst)
+{
+    const rc_model *m = g->m;
+    int last = -1;
+    for (int i = 0; i < m->ninter; i++)
+        if (d->inter_mode[i] == RC_MODE_CLOSED || d->inter_mode[i] == RC_MODE_RELEASED) last = i;
+    double others = 0.0;
+    for (int i = 0; i < m->ninter; i++) {
+        if (i == last) continue;
+        g->hyst[i] = y[m->inter_eadr[i]] - rc_inter_stored_energy(m, d, i, t, y);
+        others += g->hyst[i];
+    }
+    if (last >= 0) g->hyst[last] = e_hyst - others;
+}
+
+/* Per-element channel values at the record y: per interface damping,
+ * hysteresis and friction (as energy.c sums them), per coupling damping. */
+static double element_channel(const rc_guards *g, const rc_data *d, double t, const double *y, int k)
+{
+    const rc_model *m = g->m;
+    const int ni = m->ninter;
+    if (k >= 3 * ni) { /* a coupling's damper */
+        const int c = k - 3 * ni;
+        const rc_cpl_kind kind = m->cpl->kind[c];
+        return kind == RC_CPL_CATENARY ? 0.0 : y[m->cpl->eadr[c] + 1];
+    }
+    const int i = k / 3, ch = k % 3;
+    const double *s = y + m->inter_eadr[i];
+    if (ch == CH_DAMP) return s[1];
+    if (ch == CH_HYST) return g->hyst[i]; /* hysteresis_values */
+    const rc_fric *fr = &m->inter_fr[i];
+    if (fr->kind == RC_FK_NONE) return 0.0;
+    double et = 0.0;
+    if (fr->tidx >= 0 && !fr->exact && d->inter_mode[i] == RC_MODE_CLOSED) {
+        const double *ft = s + fr->tidx;
+        et = 0.5 * (ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2]) / fr->kt;
+    }
+    return s[fr->widx] - et;
+}
+
+/* The error weight of an energy accumulator at the energies in play,
+ * rtol max(E_ref, |v|) + atol_E [J] (a sum of nacc accumulators: nacc
+ * atol_E), and the tolerance of a drift over `steps` integrator steps:
+ * `factor` (1 + steps) weights. */
+static double drift_tol(const rc_guards *g, double v, long steps, double factor, int nacc)
+{
+    const rc_model *m = g->m;
+    return factor * (double)(1 + (steps > 0 ? steps : 0)) *
+           (m->rtol * dmax(g->eref, fabs(v)) + (nacc > 1 ? nacc : 1) * m->atol_energy);
+}
+
+/* Check a quantity v that must not decrease (a dissipation channel, or
+ * minus energy_total for the balance) against its previous record (a jump
+ * at an event) and its largest value so far (a slow drift), each within
+ * the drift the error control allows over the steps since (drift_tol).
+ * balance: the quantity is -energy_total. 1: stop. */
+static int nondecreasing(rc_guards *g, double t, double v, mono *k, int balance, int nacc, const char *name,
+                         const char *element, int *fired)
+{
+    const double from[2] = {k->prev, k->max}, tf[2] = {k->tp, k->t};
+    const long steps[2] = {g->steps - k->np, g->steps - k->n};
+    int worst = -1;
+    double worst_ratio = 0.0, tol[2];
+    for (int j = 0; j < 2; j++) {
+        const double drop = from[j] - v;
+        tol[j] = drift_tol(g, balance ? 0.0 : from[j], steps[j], balance ? RC_GUARD_ENERGY : RC_GUARD_CHANNEL, nacc);
+        if (!(drop > 0) || !(tol[j] > 0)) continue;
+        const double r = drop / tol[j];
+        g->ratio[balance ? 0 : 1] = dmax(g->ratio[balance ? 0 : 1], r);
+        if (r > 1.0 && r > worst_ratio) {
+            worst = j;
+            worst_ratio = r;
+        }
+    }
+    k->prev = v;
+    k->tp = t;
+    k->np = g->steps;
+    if (worst < 0) {
+        if (v > k->max) {
+            k->max = v;
+            k->t = t;
+            k->n = g->steps;
+        }
+        return 0;
+    }
+    *k = mono_start(v, t, g->steps); /* warn: a further decrease is reported anew */
+    *fired = 1;
+    const double drop = from[worst] - v;
+    char when[120];
+    if (tf[worst] < t) snprintf(when, sizeof when, "between t = %.9g and %.9g s", tf[worst], t);
+    else snprintf(when, sizeof when, "at the events at t = %.9g s", t);
+    if (balance)
+        return violate(g, t, tf[worst], name, "", drop, tol[worst],
+                       "energy_total (the energies plus everything dissipated and supplied: constant in exact "
+                       "arithmetic) rose by %.6g J (from %.9g to %.9g J) %s, beyond the tolerance %.3g J (%g (1 + "
+                       "k) energy error weights, k = %ld steps): energy created",
+                       drop, -from[worst], -v, when, tol[worst], RC_GUARD_ENERGY, steps[worst]);
+    char el[80] = "";
+    if (element) snprintf(el, sizeof el, " of %s", element);
+    return violate(g, t, tf[worst], name, element, drop, tol[worst],
+                   "%s%s decreased by %.6g J (from %.9g to %.9g J) %s, beyond the tolerance %.3g J (%g (1 + k) "
+                   "energy error weights, k = %ld steps): a dissipation never decreases",
+                   name, el, drop, from[worst], v, when, tol[worst], RC_GUARD_CHANNEL, steps[worst]);
+}
+
+/* Finite energies; 0 when all are (else a violation is recorded, once;
+ * *stop set when it stops the run). */
+static int energies_finite(rc_guards *g, double t, const double *e, int *stop)
+{
+    static const char *const ename[RC_NENERGY] = {
+        "energy_kinetic", "energy_potential", "energy_contact_work", "energy_damping", "energy_friction_work",
+        "energy_contact_stored", "energy_hysteresis", "energy_friction", "energy_coupling_elastic",
+        "energy_coupling_damping", "energy_catenary", "energy_imposed", "energy_total"};
+    for (int k = 0; k < RC_NENERGY; k++)
+        if (!isfinite(e[k])) {
+            if (!g->nonfinite) {
+                g->nonfinite = 1;
+                *stop = violate(g, t, t, "non_finite", "", e[k], 0.0,
+                                "non-finite %s = %g at t = %.9g s (masses, speeds or gravity beyond the range of the "
+                                "doubles?)", ename[k], e[k], t);
+            }
+            return 1;
+        }
+    return 0;
+}
+
+/* The ledger at (t, y) with its energies e: the dissipation channels, the
+ * mechanical energy and the balance. 1: stop. */
+static int ledger(rc_guards *g, const rc_data *d, double t, const double *y, const double *e)
+{
+    const rc_model *m = g->m;
+    const int ni = m->ninter, nc = m->cpl ? m->cpl->n : 0;
+    const double mech = e[RC_E_KIN] + e[RC_E_POT] + e[RC_E_STORED] + e[RC_E_CPL_ELASTIC] + e[RC_E_CATENARY];
+    hysteresis_values(g, d, t, y, e[RC_E_HYST]);
+    if (!g->started) { /* the first record: the baseline */
+        g->started = 1;
+        g->mech0 = mech;
+        g->imp0 = e[RC_E_IMPOSED];
+        g->pot0 = e[RC_E_POT];
+        g->eref = g->scene.escale;
+        for (int c = 0; c < CH_N; c++) g->gmax[c] = mono_start(e[ch_energy[c]], t, g->steps);
+        for (int k = 0; k < 3 * ni + nc; k++) g->emax[k] = mono_start(element_channel(g, d, t, y, k), t, g->steps);
+        g->balance = mono_start(-e[RC_E_TOTAL], t, g->steps);
+        g->t_prev = t;
+        return 0;
+    }
+    /* the largest energy in play so far */
+    const double supply = -(e[RC_E_IMPOSED] - g->imp0);
+    const double inplay[] = {e[RC_E_KIN], e[RC_E_POT] - g->pot0, e[RC_E_STORED], e[RC_E_CPL_ELASTIC], e[RC_E_CATENARY],
+                             supply};
+    for (size_t k = 0; k < sizeof inplay / sizeof inplay[0]; k++) g->eref = fmax(g->eref, fabs(inplay[k]));
+    /* the dissipation channels: per element, then in total (a sum of
+     * ninter or ncoupling accumulators) */
+    int fired[CH_N] = {0, 0, 0, 0};
+    for (int k = 0; k < 3 * ni + nc; k++) {
+        const int c = k >= 3 * ni ? CH_CPL : k % 3;
+        if (c == CH_FRIC && m->inter_fr[k / 3].kind == RC_FK_NONE) continue;
+        const char *el = k >= 3 * ni ? m->cpl->name[k - 3 * ni] : m->inter_name[k / 3];
+        if (nondecreasing(g, t, element_channel(g, d, t, y, k), &g->emax[k], 0, 1, ch_name[c], el, &fired[c]))
+            return 1;
+    }
+    int nel[CH_N] = {ni, ni, 0, nc}; /* elements of each channel */
+    for (int i = 0; i < ni; i++) nel[CH_FRIC] += m->inter_fr[i].kind != RC_FK_NONE;
+    for (int c = 0; c < CH_N; c++) {
+        int dummy = 0;
+        if (nel[c] <= 1) continue; /* the total is its one element, checked */
+        if (fired[c]) { /* already named per element: the total starts afresh */
+            g->gmax[c] = mono_start(e[ch_energy[c]], t, g->steps);
+            continue;
+        }
+        if (nondecreasing(g, t, e[ch_energy[c]], &g->gmax[c], 0, c == CH_CPL ? nc : ni, ch_name[c], NULL, &dummy))
+            return 1;
+    }
+    /* no energy from nothing: mechanical energy <= initial + supply, within
+     * the drift the error control allows over the run's steps */
+    const double tol = drift_tol(g, 0.0, g->steps, RC_GUARD_ENERGY, nc + 1);
+    const double excess = mech - g->mech0 - supply;
+    if (tol > 0) g->ratio[0] = dmax(g->ratio[0], excess / tol);
+    if (excess > tol + g->mech_done) {
+        g->mech_done = excess; /* warn: reported again when it grows by another tolerance */
+        if (violate(g, t, g->t_prev, "mechanical_energy", "", excess, tol,
+                    "the mechanical energy (kinetic + potential + stored in contacts and couplings) is %.9g J at "
+                    "t = %.9g s, %.6g J above its initial %.9g J plus the supply %.6g J (the work of imposed "
+                    "velocities), beyond the tolerance %.3g J (%g (1 + k) energy error weights, k = %ld steps): "
+                    "energy created %s %.9g s",
+                    mech, t, excess, g->mech0, supply, tol, RC_GUARD_ENERGY, g->steps,
+                    g->t_prev < t ? "since the record before, at t =" : "at the events at t =", g->t_prev < t ? g->t_prev : t))
+            return 1;
+    }
+    /* the balance: energy_total (constant in exact arithmetic, a sum of
+     * all the accumulators) never rises */
+    int dummy = 0;
+    if (nondecreasing(g, t, -e[RC_E_TOTAL], &g->balance, 1, 3 * ni + 2 * nc + 2, "energy_balance", NULL, &dummy))
+        return 1;
+    g->t_prev = t;
+    return 0;
+}
+
+int rc_guards_record(rc_guards *g, const rc_data *d, double t, const double *y, const frame_buf *fb)
+{
+    if (!g) return 0;
+    const rc_model *m = g->m;
+
+    if (state_finite(g, t, y, m->ny)) return 1;
+    int stop = 0;
+    if (energies_finite(g, t, fb->energy, &stop)) return stop; /* the ledger of this record cannot be compared */
+    for (int i = 0; i < m->ninter; i++) {
+        const double v[6] = {fb->fn[i], fb->fload[i], fb->fdamp[i], fb->ffric[3 * i], fb->ffric[3 * i + 1],
+                             fb->ffric[3 * i + 2]};
+        for (int k = 0; k < 6; k++) {
+            if (isfinite(v[k])) continue;
+            if (g->nonfinite) return 0;
+            g->nonfinite = 1;
+            static const char *const what[6] = {"normal", "load", "damping", "friction", "friction", "friction"};
+            return violate(g, t, t, "non_finite", m->inter_name[i], v[k], 0.0,
+                           "non-finite %s force of %s at t = %.9g s: %g", what[k], m->inter_name[i], t, v[k]);
+        }
+    }
+    return ledger(g, d, t, y, fb->energy);
+}
+
+int rc_guards_before_events(rc_guards *g, const rc_data *d, double t, const double *y)
+{
+    if (!g || !g->started) return 0;
+    rc_energy(g->m, d, t, y, g->epre);
+    int stop = 0;
+    if (energies_finite(g, t, g->epre, &stop)) return stop;
+    return ledger(g, d, t, y, g->epre);
+}
+
+/* ---- contacts' history ------------------------------------------------- */
+int rc_guards_started(rc_guards *g, const rc_data *d)
+{
+    if (!g) return 0;
+    const rc_model *m = g->m;
+    for (int i = 0; i < m->ninter; i++) {
+        g->closed0[i] = g->ever[i] = d->inter_mode[i] == RC_MODE_CLOSED;
+        g->prev_mode[i] = d->inter_mode[i];
+    }
+    /* an overlap at t = 0 the deck accepted (/RUN On_viol 2, engine/start.c) */
+    if (m->start_note)
+        return violate(g, 0.0, 0.0, "start_overlap", m->inter_name[m->start_inter], m->start_energy, m->start_escale,
+                       "%s (accepted by /RUN On_viol 2)", m->start_note);
+    return 0;
+}
+
+void rc_guards_event(rc_guards *g, const rc_data *d, int i, const char *kind, double t)
+{
+    if (!g || i < 0 || i >= g->m->ninter || t <= 0.0) return; /* t = 0: the start (rc_guards_started) */
+    const int mode = d->inter_mode[i], was = g->prev_mode[i];
+    if (mode == RC_MODE_CLOSED && was != RC_MODE_CLOSED) {
+        g->ever[i] = 1;
+        g->ncl[i]++;
+    }
+    if (mode != RC_MODE_CLOSED && was == RC_MODE_CLOSED) g->nleave[i]++;
+    g->prev_mode[i] = mode;
+    if (!strcmp(kind, "contact_settle")) {
+        g->settled[i] = 1;
+        g->t_settle[i] = t;
+    }
+}
+
+/* Append "name" to a list of at most `most` names in buf. */
+static void list_add(char *buf, size_t n, int *count, const char *name, int most)
+{
+    (*count)++;
+    const size_t l = strlen(buf);
+    if (*count <= most) snprintf(buf + l, n - l, "%s%s", *count > 1 ? ", " : "", name);
+    else if (*count == most + 1) snprintf(buf + l, n - l, ", ...");
+}
+
+void rc_guards_finish(rc_guards *g, const rc_data *d, rc_stats *s, rc_output *o, int stopped)
+{
+    if (!g) return;
+    const rc_model *m = g->m;
+    for (int i = 0; i < m->ninter; i++)
+        if (g->pbound[i] > 0 && isfinite(g->pbound[i])) g->ratio[2] = dmax(g->ratio[2], g->pmax[i] / g->pbound[i]);
+    /* the contacts' history */
+    char never[300] = "", pers[300] = "", stayed[300] = "", sett[300] = "";
+    int nn = 0, np = 0, ns = 0, nt = 0, nr = 0;
+    for (int i = 0; i < m->ninter; i++) {
+        int h = HIST_REOPENED;
+        if (g->settled[i]) h = HIST_SETTLED;
+        else if (!g->ever[i]) h = HIST_NEVER;
+        else if (g->closed0[i] && g->nleave[i] == 0) h = HIST_PERSISTENT;
+        else if (g->nleave[i] == 0) h = HIST_STAYED;
+        g->hist[i] = h;
+        switch (h) {
+        case HIST_NEVER: list_add(never, sizeof never, &nn, m->inter_name[i], 4); break;
+        case HIST_PERSISTENT: list_add(pers, sizeof pers, &np, m->inter_name[i], 4); break;
+        case HIST_STAYED: list_add(stayed, sizeof stayed, &nt, m->inter_name[i], 4); break;
+        case HIST_SETTLED: list_add(sett, sizeof sett, &ns, m->inter_name[i], 4); break;
+        default: nr++;
+        }
+    }
+    char contacts[sizeof s->contacts_note] = "";
+    size_t l = 0;
+#define ADD(...) (l = strlen(contacts), snprintf(contacts + l, sizeof contacts - l, __VA_ARGS__))
+    if (nn) ADD("%s%d never closed (%s)", l ? "; " : "", nn, never);
+    if (np) ADD("%s%d closed from the start and never reopened (%s)", strlen(contacts) ? "; " : "", np, pers);
+    if (nt) ADD("%s%d closed during the run and never reopened (%s)", strlen(contacts) ? "; " : "", nt, stayed);
+    if (ns) ADD("%s%d settled into persistent contact after accumulating bounces (%s)", strlen(contacts) ? "; " : "", ns,
+                sett);
+    if (nr && strlen(contacts)) ADD("; %d closed and reopened", nr);
+#undef ADD
+    (void)d;
+    /* the checks */
+    char summary[sizeof s->physics_note];
+    if (g->total == 0)
+        snprintf(summary, sizeof summary, "passed (finite values, penetrations, dissipation channels, energy balance)");
+    else if (stopped)
+        snprintf(summary, sizeof summary, "failed: %s", g->stop_msg);
+    else
+        snprintf(summary, sizeof summary, "%ld violation%s (the run went on: on-violation warn); the first: %.500s",
+                 g->total, g->total > 1 ? "s" : "", g->row[0].message);
+    if (s) {
+        s->violations = g->total;
+        snprintf(s->physics_note, sizeof s->physics_note, "%s", summary);
+        snprintf(s->contacts_note, sizeof s->contacts_note, "%s", contacts);
+    }
+    if (o) {
+        rc_out_physics p = {summary, contacts, stopped, g->total, g->nrow, g->row, m->ninter ? g->hist : NULL,
+                            {g->ratio[0], g->ratio[1], g->ratio[2]}};
+        rc_error e;
+        rc_output_physics(o, &p, &e);
+    }
+}

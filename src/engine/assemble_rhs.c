@@ -249,9 +249,11 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
             gi[RC_ROOT_REV] = r.vt[0] * dr[0] + r.vt[1] * dr[1] + r.vt[2] * dr[2];
         }
         /* zone: P (not while the Inacti offset tracks it, P = 0 there) */
-        if (!trk) gi[RC_ROOT_ZONE] = r.p + (mode != RC_MODE_OPEN ? d->inter_band[2 * i] : 0.0);
+        /* the touch bands (events.c, signed: a contact left at zero waits
+         * a band away on the side of its next crossing) */
+        if (!trk) gi[RC_ROOT_ZONE] = r.p + d->inter_band[2 * i];
         /* total normal force, unclipped: release and re-close */
-        if (mode != RC_MODE_OPEN) gi[RC_ROOT_FORCE] = r.fn + (mode == RC_MODE_CLOSED ? d->inter_band[2 * i + 1] : 0.0);
+        if (mode != RC_MODE_OPEN) gi[RC_ROOT_FORCE] = r.fn + d->inter_band[2 * i + 1];
         /* a settled contact is not released at zero force: it opens with P */
         if (mode == RC_MODE_CLOSED && d->inter_settled[i]) gi[RC_ROOT_FORCE] = 1.0;
         /* hysteresis: reversal on the curves, bounds on the Stiff line */

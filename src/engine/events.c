@@ -485,6 +485,27 @@ static const char *step_contact(const rc_model *m, rc_data *d, int i, double *y,
     return NULL;
 }
 
+/* |v| of a 3-vector. */
+static double norm3(const double *v)
+{
+    return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
+
+/* A friction reset (stick -> slip, slip -> stick) never stores tangential
+ * energy |F_t|^2 / (2 K_t) that no work put there: the new state ft keeps
+ * its direction and at most the magnitude the state had before (old), or
+ * the slip band fb, so that a slipping state keeps a direction (at most
+ * fb^2 / (2 K_t) then: the force tolerance's energy). A contact that closes
+ * sliding thus slides at the limit with an unloaded spring, and a contact
+ * that sticks after its limit grew keeps the force its spring had. */
+static void cap_state(double *ft, double old, double fb, int *changed)
+{
+    const double nf = norm3(ft), cap = fmax(old, fb);
+    if (!(nf > cap) || !isfinite(nf)) return;
+    for (int k = 0; k < 3; k++) ft[k] *= cap / nf;
+    *changed = 1;
+}
+
 /* Incremental friction going from stick to slip: the state takes the
  * applied force (spring and stick damper) returned radially onto the limit
  * (in the scaled plane when orthotropic), so that the sliding force keeps
@@ -494,6 +515,7 @@ static void slip_on_limit(const rc_model *m, rc_data *d, int i, double t, double
     const rc_fric *fr = &m->inter_fr[i];
     rc_inter_report q;
     double *ft = y + m->inter_eadr[i] + fr->tidx;
+    const double old = norm3(ft);
     report(m, d, i, t, y, &q); /* stick: the applied force */
     for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
     const int slip = d->inter_slip[i];
@@ -504,6 +526,23 @@ static void slip_on_limit(const rc_model *m, rc_data *d, int i, double t, double
     const double nr = q.fraw[0] * q.fraw[0] + q.fraw[1] * q.fraw[1] + q.fraw[2] * q.fraw[2];
     if (nr > 0 && isfinite(nr))
         for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
+    if (!fr->exact) cap_state(ft, old, fr->fband, changed); /* exact stick: no spring */
+}
+
+/* Incremental friction going from slip to stick: the state is put where
+ * the force is, on the limit along its direction, its magnitude capped
+ * (cap_state). */
+static void stick_on_state(const rc_model *m, rc_data *d, int i, double t, double *y, int *changed)
+{
+    const rc_fric *fr = &m->inter_fr[i];
+    rc_inter_report q;
+    report(m, d, i, t, y, &q);
+    d->inter_slip[i] = 0;
+    if (fr->tidx < 0) return;
+    double *ft = y + m->inter_eadr[i] + fr->tidx;
+    const double old = norm3(ft);
+    for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
+    if (!fr->exact) cap_state(ft, old, fr->fband, changed);
 }
 
 /* Friction. Incremental: stick -> slip when the force reaches the limit;
@@ -541,10 +580,7 @@ static const char *step_friction(const rc_model *m, rc_data *d, int i, double t,
         }
         return fr->form == RC_FF_VISCOUS ? "fric_saturate" : "fric_slip";
     }
-    report(m, d, i, t, y, &q);
-    d->inter_slip[i] = 0;
-    if (fr->tidx >= 0)
-        for (int k = 0; k < 3; k++) set_state(y + m->inter_eadr[i] + fr->tidx + k, q.fraw[k], changed);
+    stick_on_state(m, d, i, t, y, changed);
     if (fr->form == RC_FF_VISCOUS) *changed = 1; /* restart, as for saturation */
     return fr->form == RC_FF_VISCOUS ? "fric_unsaturate" : "fric_stick";
 }
@@ -675,7 +711,25 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             trend = d->inter_track[i] ? p_trend(r.vn_raw, dr.vn_raw, t, m->dtout) : p_trend(r.vn, dr.vn, t, m->dtout);
             ctrend = p_trend(c.vn, dc.vn, t, m->dtout);
         }
-        if (mode == RC_MODE_OPEN) {
+        if (mode == RC_MODE_OPEN && !d->inter_track[i] && r.p > band) {
+            /* a state already past a crossing of its mode cannot wait for
+             * it: open while penetrating beyond the band (a closing the
+             * integrator could not see, its root having started on the far
+             * side) closes now; the three cases below likewise */
+            enter_zone(m, d, i, y, restart);
+            kind = "contact_close";
+        } else if (mode != RC_MODE_OPEN && r.p < -band) {
+            leave_zone(m, d, i, y, restart); /* closed or released while apart */
+            kind = "contact_separate";
+        } else if (mode == RC_MODE_CLOSED && !d->inter_settled[i] && c.fn < -fband) {
+            d->inter_mode[i] = RC_MODE_RELEASED; /* closed under a tensile force */
+            reset_friction(m, d, i, y, restart);
+            kind = "contact_open";
+        } else if (mode == RC_MODE_RELEASED && c.fn > fband) {
+            d->inter_mode[i] = RC_MODE_CLOSED; /* released under a compressive force */
+            reset_friction(m, d, i, y, restart);
+            kind = "contact_close";
+        } else if (mode == RC_MODE_OPEN) {
             /* P at zero (or the Inacti offset tracking it): close unless the
              * bodies separate; a touching contact carries zero force */
             if (fabs(r.p) <= band && trend >= 0 && c.fn >= -fband) {
@@ -736,15 +790,29 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
          * it slips from the start, the state on the applied force */
         const rc_fric *fr = &m->inter_fr[i];
         if (!kind && points_flip(m, d, i, t, y, NULL, restart) > 0) kind = "fric_slip";
-        if (!kind && d->inter_mode[i] == RC_MODE_CLOSED && fr->kind != RC_FK_NONE && fr->form == RC_FF_INCREMENTAL &&
-            m->inter_npt[i] == 0 && !d->inter_slip[i]) {
+        const int incr1 = d->inter_mode[i] == RC_MODE_CLOSED && fr->kind != RC_FK_NONE &&
+                          fr->form == RC_FF_INCREMENTAL && m->inter_npt[i] == 0 && !fr->exact;
+        /* incremental friction slipping along its force (v_t . e > 0: the
+         * force would push the sliding, its root started past zero and
+         * could not see the stop): it sticks now, and slips again below if
+         * its stick force exceeds the limit, along that force */
+        const char *fkind = NULL;
+        if (!kind && incr1 && d->inter_slip[i]) {
+            report(m, d, i, t, y, &r);
+            if (r.slip_root > 0) {
+                stick_on_state(m, d, i, t, y, restart);
+                fkind = "fric_stick";
+            }
+        }
+        if (!kind && incr1 && !d->inter_slip[i]) {
             report(m, d, i, t, y, &r);
             if (r.slip_root > 0) {
                 slip_on_limit(m, d, i, t, y, restart);
                 d->inter_slip[i] = 1;
-                kind = "fric_slip";
+                fkind = "fric_slip";
             }
         }
+        if (!kind) kind = fkind;
         /* exact stick, sticking: can it stick? Not when it slides (a
          * contact closing while sliding) or when the force that holds it
          * lies beyond the static limit (a slip that ended with the force
@@ -763,13 +831,19 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
                 kind = "fric_slip";
             }
         }
-        /* a contact left closed at P = 0 or at zero force separates at
-         * P = -band and releases at F_n = -fband: its roots start off zero,
-         * so CVODE sees them leave */
-        if (d->inter_mode[i] == RC_MODE_CLOSED) {
+        /* a contact left at P = 0 or at zero force waits a band away, on
+         * the side of its next crossing: closed or released, it separates
+         * at P = -band; open, it closes at P = +band; closed, it releases
+         * at F_n = -fband; released, it closes again at F_n = +fband. Its
+         * roots thus start strictly on their waiting side, so the
+         * integrator sees the crossing whichever way rounding left them */
+        clear_band(d, i);
+        if (d->inter_mode[i] != RC_MODE_INACTIVE) {
+            const int md = d->inter_mode[i];
             report(m, d, i, t, y, &r);
-            if (fabs(r.p) <= band) d->inter_band[2 * i] = band;
-            if (fabs(r.fn) <= fband) d->inter_band[2 * i + 1] = fband;
+            if (fabs(r.p) <= band && !(md == RC_MODE_OPEN && d->inter_track[i]))
+                d->inter_band[2 * i] = md == RC_MODE_OPEN ? -band : band;
+            if (md != RC_MODE_OPEN && fabs(r.fn) <= fband) d->inter_band[2 * i + 1] = md == RC_MODE_CLOSED ? fband : -fband;
         }
         if (!kind) continue;
         if (n < max_ev) {

@@ -236,6 +236,10 @@ struct rc_model {
     rc_loc *inter_loc;   /* [ninter] header of the interface card, for messages */
     int *inter_law;      /* [ninter] normal law RC_LAW_TYPE6 / RC_LAW_POWER (power.h) */
     struct rc_power *inter_pw; /* [ninter] power-law parameters (power.h), law POWER */
+    int probing;         /* 1 while the Jacobian pattern is probed (jacpattern.c): the
+                            friction limit then takes the normal force with its sign,
+                            so that the probe states, whose contacts may pull, see the
+                            structure of a pressing contact (kernels.inc, type6) */
     unsigned char *inter_fast; /* [ninter] 1: evaluated in real arithmetic by the fast path
                             (engine/kernel_fast.inc: a centred sphere against a sphere or a
                             plane, no friction, no hysteresis state, no Inacti offset), set by
@@ -316,9 +320,12 @@ typedef struct rc_data {
                             force suspended; it opens when P returns to 0;
                             docs/theory.md 5.2); set by the driver, cleared when
                             the mode leaves CLOSED */
-    double *inter_band;  /* [ninter*2] touch bands of a contact closed at zero
-                            penetration or zero force: separation root P + band[0]
-                            [m], release root F_n + band[1] [N]; 0 otherwise */
+    double *inter_band;  /* [ninter*2] signed touch bands of a contact left at
+                            zero penetration or zero force (events.c): zone root
+                            P + band[0] [m] (closed or released: +band, it
+                            separates at P = -band; open: -band, it closes at
+                            P = +band), force root F_n + band[1] [N] (closed:
+                            +fband; released: -fband); 0 otherwise */
     struct rc_cpl_data *cpl; /* couplings: catenary warm starts, workspace (coupling.h) */
     double *imp_free;    /* [ny] imposed velocities: the free accelerations of
                             their rows at the last rhs (imposed.h), NULL: none */

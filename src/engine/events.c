@@ -54,8 +54,8 @@ rc_data *rc_data_new(const rc_model *m)
     }
     d->pt_slip = calloc((size_t)m->npt + 1, sizeof(int));
     d->pt_work = calloc(5 * (size_t)maxpt + 4 * ((size_t)RC_NS_MAX + 6 * (size_t)maxpt) + 16, sizeof(double));
-    /* the point flips' scratch (points_flip): 3 doubles, an int and a flag per point */
-    d->pt_flip = malloc((size_t)maxpt * (3 * sizeof(double) + sizeof(int) + 1) + 1);
+    /* the point flips' scratch (points_flip): 4 doubles, an int and a flag per point */
+    d->pt_flip = malloc((size_t)maxpt * (4 * sizeof(double) + sizeof(int) + 1) + 1);
     /* the reports of the last root evaluation (rc_report_cache_state) */
     int rc_ok = 0;
     d->repc = calloc(1, sizeof *d->repc);
@@ -162,6 +162,32 @@ static void reset_friction(const rc_model *m, rc_data *d, int i, double *y, int 
     }
 }
 
+/* |v| of a 3-vector. */
+static double norm3(const double *v)
+{
+    return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
+
+/* A friction reset (stick -> slip, slip -> stick) never stores tangential
+ * energy |F_t|^2 / (2 K_t) that no work put there: the new state ft keeps
+ * its direction with at most the magnitude the state had before (old), or
+ * the slip band fb (docs/theory.md 3.5). A slipping state (slip = 1) also
+ * has at least the magnitude fb, so that it keeps a direction that turns at
+ * a finite rate (K_t |v_t| / |F_t|); a state without direction is left as
+ * it is. So a contact that closes sliding slides at the limit with an
+ * unloaded spring, and a contact that sticks after its limit grew keeps the
+ * force its spring had. */
+static void cap_state(double *ft, double old, double fb, int slip, int *changed)
+{
+    const double nf = norm3(ft), cap = fmax(old, fb);
+    if (!(nf > 0) || !isfinite(nf)) return;
+    double to = fmin(nf, cap);
+    if (slip) to = fmax(to, fb);
+    if (to == nf) return;
+    for (int k = 0; k < 3; k++) ft[k] *= to / nf;
+    *changed = 1;
+}
+
 /* Friction per contact point of interface i: the points whose slip roots
  * crossed flip (roots: the interface's point roots; NULL: those sticking
  * with a positive root, after a mode change). From stick to slip a point's
@@ -175,14 +201,16 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
     if (npt == 0 || d->inter_mode[i] != RC_MODE_CLOSED) return 0;
     int *sl = d->pt_slip + m->inter_pbase[i];
     double *out = d->pt_work; /* 5 per point (rc_data_new) */
-    /* scratch (rc_data_new): keep [3 npt], md [npt], sel [npt] */
-    double *keep = d->pt_flip;
-    int *md = (int *)(keep + 3 * npt);
+    /* scratch (rc_data_new): keep [3 npt], oldn [npt], md [npt], sel [npt] */
+    double *keep = d->pt_flip, *oldn = keep + 3 * npt;
+    int *md = (int *)(oldn + npt);
     char *sel = (char *)(md + npt);
     if (!roots) rc_points_eval(m, d, i, NULL, t, y, out);
     int n = 0;
+    /* without roots (after a mode change): every point whose root is past
+     * its crossing, sticking beyond its limit or slipping along its force */
     for (int j = 0; j < npt; j++) {
-        sel[j] = roots ? roots[j] != 0 : !sl[j] && out[5 * j] > 0;
+        sel[j] = roots ? roots[j] != 0 : out[5 * j] > 0;
         n += sel[j];
     }
     /* the viscous form has no tangential state (a filter's state, if any,
@@ -193,6 +221,7 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
         *changed = 1;
     } else if (n > 0) {
         double *ft = y + m->inter_eadr[i] + m->inter_ns[i];
+        for (int j = 0; j < npt; j++) oldn[j] = norm3(ft + ps * j);
         rc_points_eval(m, d, i, NULL, t, y, out);
         for (int j = 0; j < npt; j++)
             if (sel[j])
@@ -274,6 +303,11 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
                 sl[j] = 1;
             }
         }
+        /* no stored energy without work (cap_state), each point at its
+         * share w_j of the slip band */
+        const double fb = m->inter_fr[i].fband;
+        for (int j = 0; j < npt; j++)
+            if (sel[j] && out[5 * j + 4] > 0) cap_state(ft + ps * j, oldn[j], out[5 * j + 4] * fb, sl[j], changed);
     }
     return n;
 }
@@ -485,27 +519,6 @@ static const char *step_contact(const rc_model *m, rc_data *d, int i, double *y,
     return NULL;
 }
 
-/* |v| of a 3-vector. */
-static double norm3(const double *v)
-{
-    return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-}
-
-/* A friction reset (stick -> slip, slip -> stick) never stores tangential
- * energy |F_t|^2 / (2 K_t) that no work put there: the new state ft keeps
- * its direction and at most the magnitude the state had before (old), or
- * the slip band fb, so that a slipping state keeps a direction (at most
- * fb^2 / (2 K_t) then: the force tolerance's energy). A contact that closes
- * sliding thus slides at the limit with an unloaded spring, and a contact
- * that sticks after its limit grew keeps the force its spring had. */
-static void cap_state(double *ft, double old, double fb, int *changed)
-{
-    const double nf = norm3(ft), cap = fmax(old, fb);
-    if (!(nf > cap) || !isfinite(nf)) return;
-    for (int k = 0; k < 3; k++) ft[k] *= cap / nf;
-    *changed = 1;
-}
-
 /* Incremental friction going from stick to slip: the state takes the
  * applied force (spring and stick damper) returned radially onto the limit
  * (in the scaled plane when orthotropic), so that the sliding force keeps
@@ -526,7 +539,7 @@ static void slip_on_limit(const rc_model *m, rc_data *d, int i, double t, double
     const double nr = q.fraw[0] * q.fraw[0] + q.fraw[1] * q.fraw[1] + q.fraw[2] * q.fraw[2];
     if (nr > 0 && isfinite(nr))
         for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
-    if (!fr->exact) cap_state(ft, old, fr->fband, changed); /* exact stick: no spring */
+    if (!fr->exact) cap_state(ft, old, fr->fband, 1, changed); /* exact stick: no spring */
 }
 
 /* Incremental friction going from slip to stick: the state is put where
@@ -542,7 +555,7 @@ static void stick_on_state(const rc_model *m, rc_data *d, int i, double t, doubl
     double *ft = y + m->inter_eadr[i] + fr->tidx;
     const double old = norm3(ft);
     for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
-    if (!fr->exact) cap_state(ft, old, fr->fband, changed);
+    if (!fr->exact) cap_state(ft, old, fr->fband, 0, changed);
 }
 
 /* Friction. Incremental: stick -> slip when the force reaches the limit;
@@ -785,26 +798,28 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             }
         }
         if (kind && d->inter_mode[i] == RC_MODE_CLOSED) stateless_friction_mode(m, d, i, t, y);
-        /* incremental friction sticking beyond its limit (a contact that
-         * closes while sliding: the stick damper alone exceeds the limit):
-         * it slips from the start, the state on the applied force */
+        /* friction after whatever the contact did above (a contact that has
+         * just closed sticks afresh): incremental friction sticking beyond
+         * its limit (a contact that closes while sliding: the stick damper
+         * alone exceeds the limit) slips from the start, its state on the
+         * applied force; per contact point likewise */
         const rc_fric *fr = &m->inter_fr[i];
-        if (!kind && points_flip(m, d, i, t, y, NULL, restart) > 0) kind = "fric_slip";
+        const char *fkind = NULL;
+        if (points_flip(m, d, i, t, y, NULL, restart) > 0) fkind = "fric_slip";
         const int incr1 = d->inter_mode[i] == RC_MODE_CLOSED && fr->kind != RC_FK_NONE &&
                           fr->form == RC_FF_INCREMENTAL && m->inter_npt[i] == 0 && !fr->exact;
         /* incremental friction slipping along its force (v_t . e > 0: the
          * force would push the sliding, its root started past zero and
          * could not see the stop): it sticks now, and slips again below if
          * its stick force exceeds the limit, along that force */
-        const char *fkind = NULL;
-        if (!kind && incr1 && d->inter_slip[i]) {
+        if (incr1 && d->inter_slip[i]) {
             report(m, d, i, t, y, &r);
             if (r.slip_root > 0) {
                 stick_on_state(m, d, i, t, y, restart);
                 fkind = "fric_stick";
             }
         }
-        if (!kind && incr1 && !d->inter_slip[i]) {
+        if (incr1 && !d->inter_slip[i]) {
             report(m, d, i, t, y, &r);
             if (r.slip_root > 0) {
                 slip_on_limit(m, d, i, t, y, restart);
@@ -812,13 +827,12 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
                 fkind = "fric_slip";
             }
         }
-        if (!kind) kind = fkind;
         /* exact stick, sticking: can it stick? Not when it slides (a
          * contact closing while sliding) or when the force that holds it
          * lies beyond the static limit (a slip that ended with the force
          * outside the cone, a load beyond the limit at the start): it
          * slides on the limit along that direction (the force's on a) */
-        if (!kind && d->inter_mode[i] == RC_MODE_CLOSED && fr->kind != RC_FK_NONE && fr->exact && fr->tidx >= 0 &&
+        if (d->inter_mode[i] == RC_MODE_CLOSED && fr->kind != RC_FK_NONE && fr->exact && fr->tidx >= 0 &&
             !d->inter_slip[i]) {
             double e[3];
             if (rc_stk_decide(m, d, i, t, y, e) > 0) {
@@ -828,7 +842,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
                 report(m, d, i, t, y, &r); /* slip: on the (kinetic) limit along e */
                 for (int q = 0; q < 3; q++) set_state(ft + q, r.fraw[q], restart);
                 *restart = 1;
-                kind = "fric_slip";
+                fkind = "fric_slip";
             }
         }
         /* a contact left at P = 0 or at zero force waits a band away, on
@@ -845,12 +859,15 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
                 d->inter_band[2 * i] = md == RC_MODE_OPEN ? -band : band;
             if (md != RC_MODE_OPEN && fabs(r.fn) <= fband) d->inter_band[2 * i + 1] = md == RC_MODE_CLOSED ? fband : -fband;
         }
-        if (!kind) continue;
-        if (n < max_ev) {
-            ev[n].inter = i;
-            ev[n].kind = kind;
+        const char *kinds[2] = {kind, fkind};
+        for (int q = 0; q < 2; q++) {
+            if (!kinds[q]) continue;
+            if (n < max_ev) {
+                ev[n].inter = i;
+                ev[n].kind = kinds[q];
+            }
+            n++;
         }
-        n++;
     }
     clear_settled(m, d);
     return n;

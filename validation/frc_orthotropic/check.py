@@ -182,7 +182,7 @@ def main():
     max_dissipation("frc_orthotropic.default", r, 10.0 * KT * 1e-9 / (MU1 * M * G),
                     "the integration error of the direction at atol(F_t) = 1e-3 N")
     # tight tolerances: the incremental law exactly; the rigid law within its regularisation
-    r = rcval.Result(rcval.run(deck(rtol=1e-10, atol_pos=1e-13, atol_vel=1e-10)))
+    r = rcval.Result(rcval.run(deck(rtol=1e-11, atol_pos=1e-14, atol_vel=1e-11)))
     compare("frc_orthotropic.tight", r, inc, 1e-8, 1e-8, 1e-8, "the incremental law (solve_ivp)")
     max_dissipation("frc_orthotropic.tight", r, 1e-3, "the lag of the incremental direction, README.md")
     slip = r.events("fric_slip")

@@ -95,6 +95,8 @@ static inline void report_normal_of(const t6out_r *po, rc_inter_report *r)
     r->vn = po->vn;
     r->p_raw = po->p_raw;
     r->vn_raw = po->vn_raw;
+    r->pl = po->pl;
+    r->vl = po->vl;
     r->fload = po->fel;
     r->fdamp = po->fd;
     r->fn = po->fel + po->fd;
@@ -110,6 +112,7 @@ static void report_of(const t6out_r *po, rc_inter_report *r)
     /* read in place (a copy of the struct cost as much as the rest) */
     report_normal_of(po, r);
     r->flim = po->flim;
+    r->fstored = po->estore;
     r->vslip = po->vslip;
     r->slip_root = po->slip_root;
     for (int k = 0; k < 3; k++) {
@@ -259,13 +262,13 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         /* hysteresis: reversal on the curves, bounds on the Stiff line */
         /* power law with RDF: the rate of P (approach / rebound) */
         if (mode != RC_MODE_OPEN && m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0)
-            gi[RC_ROOT_HYST_A] = r.vn;
+            gi[RC_ROOT_HYST_A] = r.vl;
         if (mode != RC_MODE_OPEN && m->inter_iform[i] != 0) {
             if (br == RC_BR_ELASTIC) {
                 gi[RC_ROOT_HYST_A] = r.fl - r.fh;
                 gi[RC_ROOT_HYST_B] = r.fh - r.fu;
             } else {
-                gi[RC_ROOT_HYST_A] = r.vn;
+                gi[RC_ROOT_HYST_A] = r.vl; /* the law's rate */
             }
         }
         /* Inacti 5: tracking stops when P_raw turns, or the offset is used up */

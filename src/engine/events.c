@@ -162,6 +162,15 @@ static void reset_friction(const rc_model *m, rc_data *d, int i, double *y, int 
     }
 }
 
+/* The sliding speed below which a slipping contact's v_t . e > 0 (its
+ * sliding along its force) is rounding rather than a push: RC_SLIP_BAND of
+ * the contact's speed scale, or the velocity tolerance without one [m/s]. */
+static double slip_vband(const rc_model *m, int i)
+{
+    const double vs = m->inter_vscale[i];
+    return isfinite(vs) && vs > 0 ? RC_SLIP_BAND * vs : m->atol_vel;
+}
+
 /* |v| of a 3-vector. */
 static double norm3(const double *v)
 {
@@ -208,9 +217,12 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
     if (!roots) rc_points_eval(m, d, i, NULL, t, y, out);
     int n = 0;
     /* without roots (after a mode change): every point whose root is past
-     * its crossing, sticking beyond its limit or slipping along its force */
+     * its crossing, sticking beyond its limit, or slipping along its force
+     * faster than the slip speed band (a point at rest slides along its
+     * force at the velocities' rounding) */
+    const double vb = slip_vband(m, i);
     for (int j = 0; j < npt; j++) {
-        sel[j] = roots ? roots[j] != 0 : out[5 * j] > 0;
+        sel[j] = roots ? roots[j] != 0 : out[5 * j] > (sl[j] ? vb : 0.0);
         n += sel[j];
     }
     /* the viscous form has no tangential state (a filter's state, if any,
@@ -326,6 +338,10 @@ static void enter_zone(const rc_model *m, rc_data *d, int i, double *y, int *cha
     d->inter_branch[i] = RC_BR_LOAD;
     d->inter_track[i] = 0;
     set_state(own(m, i, m->inter_hidx[i], y), 0.0, changed);
+    /* several points: the law's penetration starts at zero (a contact
+     * found already penetrating, whose closing was missed, is not given a
+     * force no work loaded) */
+    set_state(own(m, i, m->inter_peidx[i], y), 0.0, changed);
     reset_friction(m, d, i, y, changed);
 }
 
@@ -336,6 +352,7 @@ static void leave_zone(const rc_model *m, rc_data *d, int i, double *y, int *cha
     d->inter_mode[i] = RC_MODE_OPEN;
     d->inter_branch[i] = RC_BR_LOAD;
     set_state(own(m, i, m->inter_hidx[i], y), 0.0, changed);
+    set_state(own(m, i, m->inter_peidx[i], y), 0.0, changed); /* its stored energy is lost */
     double *off = own(m, i, m->inter_oidx[i], y);
     d->inter_track[i] = off && *off > 0; /* Inacti 5: the gap recovers */
     reset_friction(m, d, i, y, changed);
@@ -389,7 +406,9 @@ static void classify(const rc_model *m, rc_data *d, int i, double t, double *y, 
         return;
     }
     /* initial penetration P0 > 0: on the load curve, or (Icor 1 with Iform 1)
-     * on the unload curve; off the curve when moving away from it */
+     * on the unload curve; off the curve when moving away from it; several
+     * points: the law's penetration P_e starts at P0 */
+    set_state(own(m, i, m->inter_peidx[i], y), r.p, changed);
     if (fh && m->inter_icor[i] == 1 && m->inter_iform[i] == 1) {
         set_state(fh, r.fu, changed);
         d->inter_branch[i] = r.vn < 0 ? RC_BR_UNLOAD : RC_BR_ELASTIC;
@@ -714,7 +733,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
         const int need = fabs(r.p) <= band || fabs(c.fn) <= fband ||
                          (m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0) ||
                          (m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0);
-        int trend = 0, ctrend = 0;
+        int trend = 0, ctrend = 0, ltrend = 0; /* P, P closed, the law's penetration */
         memset(&dr, 0, sizeof dr);
         memset(&dc, 0, sizeof dc);
         if (need) {
@@ -723,6 +742,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             rc_inter_report_rate(m, i, mode, br, d->inter_track[i], d->inter_slip[i], y, ydot, &dr);
             trend = d->inter_track[i] ? p_trend(r.vn_raw, dr.vn_raw, t, m->dtout) : p_trend(r.vn, dr.vn, t, m->dtout);
             ctrend = p_trend(c.vn, dc.vn, t, m->dtout);
+            ltrend = d->inter_track[i] ? trend : p_trend(r.vl, dr.vl, t, m->dtout);
         }
         if (mode == RC_MODE_OPEN && !d->inter_track[i] && r.p > band) {
             /* a state already past a crossing of its mode cannot wait for
@@ -768,31 +788,31 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             /* hysteresis at a bound or a reversal with dP/dt = 0 */
             double *fh = own(m, i, m->inter_hidx[i], y);
             const double hb = fmax(fband, RC_TOUCH_ULPS * DBL_EPSILON * (fabs(r.fh) + fabs(r.fl) + fabs(r.fu)));
-            const int still = fabs(r.vn) <= fabs(dr.vn) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
-            if (br == RC_BR_ELASTIC && fabs(r.fh - r.fu) <= hb && trend < 0) {
+            const int still = fabs(r.vl) <= fabs(dr.vl) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
+            if (br == RC_BR_ELASTIC && fabs(r.fh - r.fu) <= hb && ltrend < 0) {
                 d->inter_branch[i] = RC_BR_UNLOAD;
                 set_state(fh, r.fu, restart);
                 kind = "hyst_unload_curve";
-            } else if (br == RC_BR_ELASTIC && fabs(r.fl - r.fh) <= hb && trend > 0) {
+            } else if (br == RC_BR_ELASTIC && fabs(r.fl - r.fh) <= hb && ltrend > 0) {
                 d->inter_branch[i] = RC_BR_LOAD;
                 set_state(fh, r.fl, restart);
                 kind = "hyst_load_curve";
-            } else if (br == RC_BR_LOAD && still && trend < 0) {
+            } else if (br == RC_BR_LOAD && still && ltrend < 0) {
                 d->inter_branch[i] = RC_BR_ELASTIC;
                 set_state(fh, r.fl, restart);
                 kind = "hyst_unloading";
-            } else if (br == RC_BR_UNLOAD && still && trend > 0) {
+            } else if (br == RC_BR_UNLOAD && still && ltrend > 0) {
                 d->inter_branch[i] = RC_BR_ELASTIC;
                 set_state(fh, r.fu, restart);
                 kind = "hyst_reloading";
             }
         } else if (m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0) {
             /* rebound damping branch at dP/dt = 0 */
-            const int still = fabs(r.vn) <= fabs(dr.vn) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
-            if (br == RC_BR_LOAD && still && trend < 0) {
+            const int still = fabs(r.vl) <= fabs(dr.vl) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
+            if (br == RC_BR_LOAD && still && ltrend < 0) {
                 d->inter_branch[i] = RC_BR_UNLOAD;
                 kind = "rdf_rebound";
-            } else if (br == RC_BR_UNLOAD && still && trend > 0) {
+            } else if (br == RC_BR_UNLOAD && still && ltrend > 0) {
                 d->inter_branch[i] = RC_BR_LOAD;
                 kind = "rdf_approach";
             }
@@ -814,7 +834,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
          * its stick force exceeds the limit, along that force */
         if (incr1 && d->inter_slip[i]) {
             report(m, d, i, t, y, &r);
-            if (r.slip_root > 0) {
+            if (r.slip_root > slip_vband(m, i)) {
                 stick_on_state(m, d, i, t, y, restart);
                 fkind = "fric_stick";
             }

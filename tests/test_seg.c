@@ -208,7 +208,8 @@ static void rotate(const double *q, const double *s, double *o)
 
 /* The box tilted so that its bottom nodes are at four different heights,
  * three of them below the floor: the accelerations are those of the
- * forces f_j = F(P) p_j / S at the nodes, P = max p_j (linear law F = k P). */
+ * forces f_j = F(P_e) p_j / S at the nodes, the law at its effective
+ * penetration P_e, set here to P = max p_j (linear law F = k P). */
 static void test_seg_force_distribution(void)
 {
     rc_error e;
@@ -245,6 +246,8 @@ static void test_seg_force_distribution(void)
         }
     }
     ENSURE(npen == 3);
+    y[m->inter_eadr[0] + m->inter_peidx[0]] = P; /* P_e = P */
+    rc_assemble_rhs(m, d, 0.0, y, yd);
     const double F = 1e6 * P;
     double Fz = 0, tau[3] = {0, 0, 0};
     for (int j = 0; j < nn; j++) {
@@ -816,7 +819,7 @@ static void test_seg_sphere_step5_jacobian(void)
 }
 
 /* A sphere at rest in a symmetric V valley (fixed): two face points at the
- * same depth share F = k P equally; the force on the sphere is vertical,
+ * same depth share F = k P equally (the law at P_e = P); the force on the sphere is vertical,
  * 2 (F / 2) cos(alpha) with alpha the slope angle, and without moment. */
 static void test_seg_sphere_valley_forces(void)
 {
@@ -839,9 +842,10 @@ static void test_seg_sphere_valley_forces(void)
     double *y = calloc((size_t)m->ny, sizeof(double)), *yd = calloc((size_t)m->ny, sizeof(double));
     rc_initial_state(m, y);
     d->inter_mode[0] = RC_MODE_CLOSED;
-    rc_assemble_rhs(m, d, 0.0, y, yd);
     const double slope = 0.06 / 0.2, ca = 1.0 / sqrt(1 + slope * slope);
     const double P = 0.05 - 0.0515 * ca, F = 1e6 * P;
+    y[m->inter_eadr[0] + m->inter_peidx[0]] = P; /* the law's P_e = P */
+    rc_assemble_rhs(m, d, 0.0, y, yd);
     const double *acc = yd + m->body_yadr[0] + 7;
     ENSURE_NEAR(acc[2], F * ca / 2.0, 1e-12, 0);
     ENSURE_NEAR(acc[0], 0.0, 0, 1e-9);

@@ -171,8 +171,8 @@ static int fast_inter(const rc_model *m, int i, int mode, int branch, int track,
     for (int k = 0; k < 2; k++) {
         t6out_c r;
         memset(&r, 0, sizeof r);
-        r.p = p0 + (k == 0 ? I * RC_CSTEP : 0.0);
-        r.vn = vn0 + (k == 1 ? I * RC_CSTEP : 0.0);
+        r.p = r.pl = p0 + (k == 0 ? I * RC_CSTEP : 0.0); /* one point: the law at P */
+        r.vn = r.vl = vn0 + (k == 1 ? I * RC_CSTEP : 0.0);
         if (m->inter_law[i] == RC_LAW_POWER) {
             T kn;
             power_law_c(m, i, 1, branch, &r, &kn);
@@ -561,6 +561,8 @@ void rc_inter_report_rate(const rc_model *m, int i, int mode, int branch, int tr
     dr->vn = cimag(o.vn) / RC_CSTEP;
     dr->p_raw = cimag(o.p_raw) / RC_CSTEP;
     dr->vn_raw = cimag(o.vn_raw) / RC_CSTEP;
+    dr->pl = cimag(o.pl) / RC_CSTEP;
+    dr->vl = cimag(o.vl) / RC_CSTEP;
     dr->fload = cimag(o.fel) / RC_CSTEP;
     dr->fdamp = cimag(o.fd) / RC_CSTEP;
     dr->fn = dr->fload + dr->fdamp;

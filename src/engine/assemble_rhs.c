@@ -95,6 +95,8 @@ static inline void report_normal_of(const t6out_r *po, rc_inter_report *r)
     r->vn = po->vn;
     r->p_raw = po->p_raw;
     r->vn_raw = po->vn_raw;
+    r->pl = po->pl;
+    r->vl = po->vl;
     r->fload = po->fel;
     r->fdamp = po->fd;
     r->fn = po->fel + po->fd;
@@ -110,6 +112,7 @@ static void report_of(const t6out_r *po, rc_inter_report *r)
     /* read in place (a copy of the struct cost as much as the rest) */
     report_normal_of(po, r);
     r->flim = po->flim;
+    r->fstored = po->estore;
     r->vslip = po->vslip;
     r->slip_root = po->slip_root;
     for (int k = 0; k < 3; k++) {
@@ -249,21 +252,23 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
             gi[RC_ROOT_REV] = r.vt[0] * dr[0] + r.vt[1] * dr[1] + r.vt[2] * dr[2];
         }
         /* zone: P (not while the Inacti offset tracks it, P = 0 there) */
-        if (!trk) gi[RC_ROOT_ZONE] = r.p + (mode != RC_MODE_OPEN ? d->inter_band[2 * i] : 0.0);
+        /* the touch bands (events.c, signed: a contact left at zero waits
+         * a band away on the side of its next crossing) */
+        if (!trk) gi[RC_ROOT_ZONE] = r.p + d->inter_band[2 * i];
         /* total normal force, unclipped: release and re-close */
-        if (mode != RC_MODE_OPEN) gi[RC_ROOT_FORCE] = r.fn + (mode == RC_MODE_CLOSED ? d->inter_band[2 * i + 1] : 0.0);
+        if (mode != RC_MODE_OPEN) gi[RC_ROOT_FORCE] = r.fn + d->inter_band[2 * i + 1];
         /* a settled contact is not released at zero force: it opens with P */
         if (mode == RC_MODE_CLOSED && d->inter_settled[i]) gi[RC_ROOT_FORCE] = 1.0;
         /* hysteresis: reversal on the curves, bounds on the Stiff line */
         /* power law with RDF: the rate of P (approach / rebound) */
         if (mode != RC_MODE_OPEN && m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0)
-            gi[RC_ROOT_HYST_A] = r.vn;
+            gi[RC_ROOT_HYST_A] = r.vl;
         if (mode != RC_MODE_OPEN && m->inter_iform[i] != 0) {
             if (br == RC_BR_ELASTIC) {
                 gi[RC_ROOT_HYST_A] = r.fl - r.fh;
                 gi[RC_ROOT_HYST_B] = r.fh - r.fu;
             } else {
-                gi[RC_ROOT_HYST_A] = r.vn;
+                gi[RC_ROOT_HYST_A] = r.vl; /* the law's rate */
             }
         }
         /* Inacti 5: tracking stops when P_raw turns, or the offset is used up */

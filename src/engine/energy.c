@@ -17,7 +17,7 @@ double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double
     if (mode != RC_MODE_CLOSED && mode != RC_MODE_RELEASED) return 0.0;
     rc_inter_report r;
     rc_inter_report_eval_d(m, d, i, t, y, &r);
-    const double ax = m->inter_ascalex[i], P = r.p, F = r.fload;
+    const double ax = m->inter_ascalex[i], P = r.pl, F = r.fload; /* the law's penetration */
     if (P <= 0) return 0.0;
     if (m->inter_law[i] == RC_LAW_POWER) return rc_power_stored(m, i, P); /* integral of F_k */
     if (m->inter_iform[i] == 0)
@@ -64,15 +64,16 @@ void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, d
         const double en = rc_inter_stored_energy(m, d, i, t, y);
         e[RC_E_STORED] += en;
         e[RC_E_HYST] += y[m->inter_eadr[i]] - en;
-        /* friction: work, and the elastic energy of the stick spring */
+        /* friction: work, and the elastic energy of the stick springs (one,
+         * or one per contact point; exact stick has no spring) */
         const rc_fric *fr = &m->inter_fr[i];
         if (fr->kind == RC_FK_NONE) continue;
         const double *s = y + m->inter_eadr[i];
         double et = 0;
-        /* exact stick has no spring: nothing stored */
-        if (fr->tidx >= 0 && !fr->exact && d->inter_mode[i] == RC_MODE_CLOSED) {
-            const double *ft = s + fr->tidx;
-            et = 0.5 * (ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2]) / fr->kt;
+        if (d->inter_mode[i] == RC_MODE_CLOSED && !fr->exact) {
+            rc_inter_report r;
+            rc_inter_report_eval_d(m, d, i, t, y, &r);
+            et = r.fstored;
         }
         e[RC_E_FWORK] += s[fr->widx];
         e[RC_E_STORED] += et;

@@ -54,8 +54,8 @@ rc_data *rc_data_new(const rc_model *m)
     }
     d->pt_slip = calloc((size_t)m->npt + 1, sizeof(int));
     d->pt_work = calloc(5 * (size_t)maxpt + 4 * ((size_t)RC_NS_MAX + 6 * (size_t)maxpt) + 16, sizeof(double));
-    /* the point flips' scratch (points_flip): 3 doubles, an int and a flag per point */
-    d->pt_flip = malloc((size_t)maxpt * (3 * sizeof(double) + sizeof(int) + 1) + 1);
+    /* the point flips' scratch (points_flip): 4 doubles, an int and a flag per point */
+    d->pt_flip = malloc((size_t)maxpt * (4 * sizeof(double) + sizeof(int) + 1) + 1);
     /* the reports of the last root evaluation (rc_report_cache_state) */
     int rc_ok = 0;
     d->repc = calloc(1, sizeof *d->repc);
@@ -162,6 +162,41 @@ static void reset_friction(const rc_model *m, rc_data *d, int i, double *y, int 
     }
 }
 
+/* The sliding speed below which a slipping contact's v_t . e > 0 (its
+ * sliding along its force) is rounding rather than a push: RC_SLIP_BAND of
+ * the contact's speed scale, or the velocity tolerance without one [m/s]. */
+static double slip_vband(const rc_model *m, int i)
+{
+    const double vs = m->inter_vscale[i];
+    return isfinite(vs) && vs > 0 ? RC_SLIP_BAND * vs : m->atol_vel;
+}
+
+/* |v| of a 3-vector. */
+static double norm3(const double *v)
+{
+    return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
+
+/* A friction reset (stick -> slip, slip -> stick) never stores tangential
+ * energy |F_t|^2 / (2 K_t) that no work put there: the new state ft keeps
+ * its direction with at most the magnitude the state had before (old), or
+ * the slip band fb (docs/theory.md 3.5). A slipping state (slip = 1) also
+ * has at least the magnitude fb, so that it keeps a direction that turns at
+ * a finite rate (K_t |v_t| / |F_t|); a state without direction is left as
+ * it is. So a contact that closes sliding slides at the limit with an
+ * unloaded spring, and a contact that sticks after its limit grew keeps the
+ * force its spring had. */
+static void cap_state(double *ft, double old, double fb, int slip, int *changed)
+{
+    const double nf = norm3(ft), cap = fmax(old, fb);
+    if (!(nf > 0) || !isfinite(nf)) return;
+    double to = fmin(nf, cap);
+    if (slip) to = fmax(to, fb);
+    if (to == nf) return;
+    for (int k = 0; k < 3; k++) ft[k] *= to / nf;
+    *changed = 1;
+}
+
 /* Friction per contact point of interface i: the points whose slip roots
  * crossed flip (roots: the interface's point roots; NULL: those sticking
  * with a positive root, after a mode change). From stick to slip a point's
@@ -175,14 +210,19 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
     if (npt == 0 || d->inter_mode[i] != RC_MODE_CLOSED) return 0;
     int *sl = d->pt_slip + m->inter_pbase[i];
     double *out = d->pt_work; /* 5 per point (rc_data_new) */
-    /* scratch (rc_data_new): keep [3 npt], md [npt], sel [npt] */
-    double *keep = d->pt_flip;
-    int *md = (int *)(keep + 3 * npt);
+    /* scratch (rc_data_new): keep [3 npt], oldn [npt], md [npt], sel [npt] */
+    double *keep = d->pt_flip, *oldn = keep + 3 * npt;
+    int *md = (int *)(oldn + npt);
     char *sel = (char *)(md + npt);
     if (!roots) rc_points_eval(m, d, i, NULL, t, y, out);
     int n = 0;
+    /* without roots (after a mode change): every point whose root is past
+     * its crossing, sticking beyond its limit, or slipping along its force
+     * faster than the slip speed band (a point at rest slides along its
+     * force at the velocities' rounding) */
+    const double vb = slip_vband(m, i);
     for (int j = 0; j < npt; j++) {
-        sel[j] = roots ? roots[j] != 0 : !sl[j] && out[5 * j] > 0;
+        sel[j] = roots ? roots[j] != 0 : out[5 * j] > (sl[j] ? vb : 0.0);
         n += sel[j];
     }
     /* the viscous form has no tangential state (a filter's state, if any,
@@ -193,6 +233,7 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
         *changed = 1;
     } else if (n > 0) {
         double *ft = y + m->inter_eadr[i] + m->inter_ns[i];
+        for (int j = 0; j < npt; j++) oldn[j] = norm3(ft + ps * j);
         rc_points_eval(m, d, i, NULL, t, y, out);
         for (int j = 0; j < npt; j++)
             if (sel[j])
@@ -274,6 +315,11 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
                 sl[j] = 1;
             }
         }
+        /* no stored energy without work (cap_state), each point at its
+         * share w_j of the slip band */
+        const double fb = m->inter_fr[i].fband;
+        for (int j = 0; j < npt; j++)
+            if (sel[j] && out[5 * j + 4] > 0) cap_state(ft + ps * j, oldn[j], out[5 * j + 4] * fb, sl[j], changed);
     }
     return n;
 }
@@ -292,6 +338,10 @@ static void enter_zone(const rc_model *m, rc_data *d, int i, double *y, int *cha
     d->inter_branch[i] = RC_BR_LOAD;
     d->inter_track[i] = 0;
     set_state(own(m, i, m->inter_hidx[i], y), 0.0, changed);
+    /* several points: the law's penetration starts at zero (a contact
+     * found already penetrating, whose closing was missed, is not given a
+     * force no work loaded) */
+    set_state(own(m, i, m->inter_peidx[i], y), 0.0, changed);
     reset_friction(m, d, i, y, changed);
 }
 
@@ -302,6 +352,7 @@ static void leave_zone(const rc_model *m, rc_data *d, int i, double *y, int *cha
     d->inter_mode[i] = RC_MODE_OPEN;
     d->inter_branch[i] = RC_BR_LOAD;
     set_state(own(m, i, m->inter_hidx[i], y), 0.0, changed);
+    set_state(own(m, i, m->inter_peidx[i], y), 0.0, changed); /* its stored energy is lost */
     double *off = own(m, i, m->inter_oidx[i], y);
     d->inter_track[i] = off && *off > 0; /* Inacti 5: the gap recovers */
     reset_friction(m, d, i, y, changed);
@@ -355,7 +406,9 @@ static void classify(const rc_model *m, rc_data *d, int i, double t, double *y, 
         return;
     }
     /* initial penetration P0 > 0: on the load curve, or (Icor 1 with Iform 1)
-     * on the unload curve; off the curve when moving away from it */
+     * on the unload curve; off the curve when moving away from it; several
+     * points: the law's penetration P_e starts at P0 */
+    set_state(own(m, i, m->inter_peidx[i], y), r.p, changed);
     if (fh && m->inter_icor[i] == 1 && m->inter_iform[i] == 1) {
         set_state(fh, r.fu, changed);
         d->inter_branch[i] = r.vn < 0 ? RC_BR_UNLOAD : RC_BR_ELASTIC;
@@ -494,6 +547,7 @@ static void slip_on_limit(const rc_model *m, rc_data *d, int i, double t, double
     const rc_fric *fr = &m->inter_fr[i];
     rc_inter_report q;
     double *ft = y + m->inter_eadr[i] + fr->tidx;
+    const double old = norm3(ft);
     report(m, d, i, t, y, &q); /* stick: the applied force */
     for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
     const int slip = d->inter_slip[i];
@@ -504,6 +558,23 @@ static void slip_on_limit(const rc_model *m, rc_data *d, int i, double t, double
     const double nr = q.fraw[0] * q.fraw[0] + q.fraw[1] * q.fraw[1] + q.fraw[2] * q.fraw[2];
     if (nr > 0 && isfinite(nr))
         for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
+    if (!fr->exact) cap_state(ft, old, fr->fband, 1, changed); /* exact stick: no spring */
+}
+
+/* Incremental friction going from slip to stick: the state is put where
+ * the force is, on the limit along its direction, its magnitude capped
+ * (cap_state). */
+static void stick_on_state(const rc_model *m, rc_data *d, int i, double t, double *y, int *changed)
+{
+    const rc_fric *fr = &m->inter_fr[i];
+    rc_inter_report q;
+    report(m, d, i, t, y, &q);
+    d->inter_slip[i] = 0;
+    if (fr->tidx < 0) return;
+    double *ft = y + m->inter_eadr[i] + fr->tidx;
+    const double old = norm3(ft);
+    for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
+    if (!fr->exact) cap_state(ft, old, fr->fband, 0, changed);
 }
 
 /* Friction. Incremental: stick -> slip when the force reaches the limit;
@@ -541,10 +612,7 @@ static const char *step_friction(const rc_model *m, rc_data *d, int i, double t,
         }
         return fr->form == RC_FF_VISCOUS ? "fric_saturate" : "fric_slip";
     }
-    report(m, d, i, t, y, &q);
-    d->inter_slip[i] = 0;
-    if (fr->tidx >= 0)
-        for (int k = 0; k < 3; k++) set_state(y + m->inter_eadr[i] + fr->tidx + k, q.fraw[k], changed);
+    stick_on_state(m, d, i, t, y, changed);
     if (fr->form == RC_FF_VISCOUS) *changed = 1; /* restart, as for saturation */
     return fr->form == RC_FF_VISCOUS ? "fric_unsaturate" : "fric_stick";
 }
@@ -665,7 +733,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
         const int need = fabs(r.p) <= band || fabs(c.fn) <= fband ||
                          (m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0) ||
                          (m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0);
-        int trend = 0, ctrend = 0;
+        int trend = 0, ctrend = 0, ltrend = 0; /* P, P closed, the law's penetration */
         memset(&dr, 0, sizeof dr);
         memset(&dc, 0, sizeof dc);
         if (need) {
@@ -674,8 +742,27 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             rc_inter_report_rate(m, i, mode, br, d->inter_track[i], d->inter_slip[i], y, ydot, &dr);
             trend = d->inter_track[i] ? p_trend(r.vn_raw, dr.vn_raw, t, m->dtout) : p_trend(r.vn, dr.vn, t, m->dtout);
             ctrend = p_trend(c.vn, dc.vn, t, m->dtout);
+            ltrend = d->inter_track[i] ? trend : p_trend(r.vl, dr.vl, t, m->dtout);
         }
-        if (mode == RC_MODE_OPEN) {
+        if (mode == RC_MODE_OPEN && !d->inter_track[i] && r.p > band) {
+            /* a state already past a crossing of its mode cannot wait for
+             * it: open while penetrating beyond the band (a closing the
+             * integrator could not see, its root having started on the far
+             * side) closes now; the three cases below likewise */
+            enter_zone(m, d, i, y, restart);
+            kind = "contact_close";
+        } else if (mode != RC_MODE_OPEN && r.p < -band) {
+            leave_zone(m, d, i, y, restart); /* closed or released while apart */
+            kind = "contact_separate";
+        } else if (mode == RC_MODE_CLOSED && !d->inter_settled[i] && c.fn < -fband) {
+            d->inter_mode[i] = RC_MODE_RELEASED; /* closed under a tensile force */
+            reset_friction(m, d, i, y, restart);
+            kind = "contact_open";
+        } else if (mode == RC_MODE_RELEASED && c.fn > fband) {
+            d->inter_mode[i] = RC_MODE_CLOSED; /* released under a compressive force */
+            reset_friction(m, d, i, y, restart);
+            kind = "contact_close";
+        } else if (mode == RC_MODE_OPEN) {
             /* P at zero (or the Inacti offset tracking it): close unless the
              * bodies separate; a touching contact carries zero force */
             if (fabs(r.p) <= band && trend >= 0 && c.fn >= -fband) {
@@ -701,48 +788,63 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             /* hysteresis at a bound or a reversal with dP/dt = 0 */
             double *fh = own(m, i, m->inter_hidx[i], y);
             const double hb = fmax(fband, RC_TOUCH_ULPS * DBL_EPSILON * (fabs(r.fh) + fabs(r.fl) + fabs(r.fu)));
-            const int still = fabs(r.vn) <= fabs(dr.vn) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
-            if (br == RC_BR_ELASTIC && fabs(r.fh - r.fu) <= hb && trend < 0) {
+            const int still = fabs(r.vl) <= fabs(dr.vl) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
+            if (br == RC_BR_ELASTIC && fabs(r.fh - r.fu) <= hb && ltrend < 0) {
                 d->inter_branch[i] = RC_BR_UNLOAD;
                 set_state(fh, r.fu, restart);
                 kind = "hyst_unload_curve";
-            } else if (br == RC_BR_ELASTIC && fabs(r.fl - r.fh) <= hb && trend > 0) {
+            } else if (br == RC_BR_ELASTIC && fabs(r.fl - r.fh) <= hb && ltrend > 0) {
                 d->inter_branch[i] = RC_BR_LOAD;
                 set_state(fh, r.fl, restart);
                 kind = "hyst_load_curve";
-            } else if (br == RC_BR_LOAD && still && trend < 0) {
+            } else if (br == RC_BR_LOAD && still && ltrend < 0) {
                 d->inter_branch[i] = RC_BR_ELASTIC;
                 set_state(fh, r.fl, restart);
                 kind = "hyst_unloading";
-            } else if (br == RC_BR_UNLOAD && still && trend > 0) {
+            } else if (br == RC_BR_UNLOAD && still && ltrend > 0) {
                 d->inter_branch[i] = RC_BR_ELASTIC;
                 set_state(fh, r.fu, restart);
                 kind = "hyst_reloading";
             }
         } else if (m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0) {
             /* rebound damping branch at dP/dt = 0 */
-            const int still = fabs(r.vn) <= fabs(dr.vn) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
-            if (br == RC_BR_LOAD && still && trend < 0) {
+            const int still = fabs(r.vl) <= fabs(dr.vl) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
+            if (br == RC_BR_LOAD && still && ltrend < 0) {
                 d->inter_branch[i] = RC_BR_UNLOAD;
                 kind = "rdf_rebound";
-            } else if (br == RC_BR_UNLOAD && still && trend > 0) {
+            } else if (br == RC_BR_UNLOAD && still && ltrend > 0) {
                 d->inter_branch[i] = RC_BR_LOAD;
                 kind = "rdf_approach";
             }
         }
         if (kind && d->inter_mode[i] == RC_MODE_CLOSED) stateless_friction_mode(m, d, i, t, y);
-        /* incremental friction sticking beyond its limit (a contact that
-         * closes while sliding: the stick damper alone exceeds the limit):
-         * it slips from the start, the state on the applied force */
+        /* friction after whatever the contact did above (a contact that has
+         * just closed sticks afresh): incremental friction sticking beyond
+         * its limit (a contact that closes while sliding: the stick damper
+         * alone exceeds the limit) slips from the start, its state on the
+         * applied force; per contact point likewise */
         const rc_fric *fr = &m->inter_fr[i];
-        if (!kind && points_flip(m, d, i, t, y, NULL, restart) > 0) kind = "fric_slip";
-        if (!kind && d->inter_mode[i] == RC_MODE_CLOSED && fr->kind != RC_FK_NONE && fr->form == RC_FF_INCREMENTAL &&
-            m->inter_npt[i] == 0 && !d->inter_slip[i]) {
+        const char *fkind = NULL;
+        if (points_flip(m, d, i, t, y, NULL, restart) > 0) fkind = "fric_slip";
+        const int incr1 = d->inter_mode[i] == RC_MODE_CLOSED && fr->kind != RC_FK_NONE &&
+                          fr->form == RC_FF_INCREMENTAL && m->inter_npt[i] == 0 && !fr->exact;
+        /* incremental friction slipping along its force (v_t . e > 0: the
+         * force would push the sliding, its root started past zero and
+         * could not see the stop): it sticks now, and slips again below if
+         * its stick force exceeds the limit, along that force */
+        if (incr1 && d->inter_slip[i]) {
+            report(m, d, i, t, y, &r);
+            if (r.slip_root > slip_vband(m, i)) {
+                stick_on_state(m, d, i, t, y, restart);
+                fkind = "fric_stick";
+            }
+        }
+        if (incr1 && !d->inter_slip[i]) {
             report(m, d, i, t, y, &r);
             if (r.slip_root > 0) {
                 slip_on_limit(m, d, i, t, y, restart);
                 d->inter_slip[i] = 1;
-                kind = "fric_slip";
+                fkind = "fric_slip";
             }
         }
         /* exact stick, sticking: can it stick? Not when it slides (a
@@ -750,7 +852,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
          * lies beyond the static limit (a slip that ended with the force
          * outside the cone, a load beyond the limit at the start): it
          * slides on the limit along that direction (the force's on a) */
-        if (!kind && d->inter_mode[i] == RC_MODE_CLOSED && fr->kind != RC_FK_NONE && fr->exact && fr->tidx >= 0 &&
+        if (d->inter_mode[i] == RC_MODE_CLOSED && fr->kind != RC_FK_NONE && fr->exact && fr->tidx >= 0 &&
             !d->inter_slip[i]) {
             double e[3];
             if (rc_stk_decide(m, d, i, t, y, e) > 0) {
@@ -760,23 +862,32 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
                 report(m, d, i, t, y, &r); /* slip: on the (kinetic) limit along e */
                 for (int q = 0; q < 3; q++) set_state(ft + q, r.fraw[q], restart);
                 *restart = 1;
-                kind = "fric_slip";
+                fkind = "fric_slip";
             }
         }
-        /* a contact left closed at P = 0 or at zero force separates at
-         * P = -band and releases at F_n = -fband: its roots start off zero,
-         * so CVODE sees them leave */
-        if (d->inter_mode[i] == RC_MODE_CLOSED) {
+        /* a contact left at P = 0 or at zero force waits a band away, on
+         * the side of its next crossing: closed or released, it separates
+         * at P = -band; open, it closes at P = +band; closed, it releases
+         * at F_n = -fband; released, it closes again at F_n = +fband. Its
+         * roots thus start strictly on their waiting side, so the
+         * integrator sees the crossing whichever way rounding left them */
+        clear_band(d, i);
+        if (d->inter_mode[i] != RC_MODE_INACTIVE) {
+            const int md = d->inter_mode[i];
             report(m, d, i, t, y, &r);
-            if (fabs(r.p) <= band) d->inter_band[2 * i] = band;
-            if (fabs(r.fn) <= fband) d->inter_band[2 * i + 1] = fband;
+            if (fabs(r.p) <= band && !(md == RC_MODE_OPEN && d->inter_track[i]))
+                d->inter_band[2 * i] = md == RC_MODE_OPEN ? -band : band;
+            if (md != RC_MODE_OPEN && fabs(r.fn) <= fband) d->inter_band[2 * i + 1] = md == RC_MODE_CLOSED ? fband : -fband;
         }
-        if (!kind) continue;
-        if (n < max_ev) {
-            ev[n].inter = i;
-            ev[n].kind = kind;
+        const char *kinds[2] = {kind, fkind};
+        for (int q = 0; q < 2; q++) {
+            if (!kinds[q]) continue;
+            if (n < max_ev) {
+                ev[n].inter = i;
+                ev[n].kind = kinds[q];
+            }
+            n++;
         }
-        n++;
     }
     clear_settled(m, d);
     return n;

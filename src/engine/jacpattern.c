@@ -336,7 +336,9 @@ rc_status rc_jac_build(rc_model *m, rc_error *err)
         rc_cpl_block(m, k, &m->cpl->jb[k]);
         nkey += (int64_t)m->cpl->jb[k].nrow * m->cpl->jb[k].ncol;
     }
+    m->probing = 1;
     rc_status pst = probe_blocks(m, err);
+    m->probing = 0;
     if (pst) return pst;
     if (m->gwork_adr >= 0) nkey += 3 * (int64_t)m->nbody;
     /* friction per contact point: all kept (which points act depends on

@@ -393,7 +393,7 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
 {
     const int n = m->ninter;
     double **arr[] = {&m->inter_pscale, &m->inter_fscale, &m->inter_kscale, &m->inter_vscale, &m->inter_mred,
-                      &m->inter_mrest};
+                      &m->inter_mrest, &m->inter_sband, &m->inter_perelax};
     for (size_t k = 0; k < sizeof arr / sizeof arr[0]; k++) {
         *arr[k] = malloc(((size_t)n + 1) * sizeof(double));
         if (!*arr[k]) RC_RAISE(err, RC_ENOMEM, "out of memory");
@@ -513,6 +513,19 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         ebody = fmax(ebody, m->body_mass[b] * gmax * size[b]);
     }
     m->escale = escale > 0 ? escale : ebody;
+    /* pairs with several contact points (docs/theory.md 2.7): the share
+     * band, RC_SHARE_BAND of the penetration scale (or of the bodies' sizes
+     * without one), and the relaxation rate of P_e down to P,
+     * RC_PE_RELAX times the contact's frequency omega_s = v_s / p_s */
+    for (int i = 0; i < n; i++) {
+        m->inter_sband[i] = m->inter_perelax[i] = 0.0;
+        if (!rc_pair_multi(m->inter_pair[i])) continue;
+        const int ba = m->inter_ba[i], bb = m->inter_bb[i];
+        const double L = fmax(ba >= 0 ? size[ba] : 0.0, bb >= 0 ? size[bb] : 0.0);
+        const double ps = m->inter_pscale[i], vs = m->inter_vscale[i];
+        m->inter_sband[i] = isfinite(ps) && ps > 0 ? RC_SHARE_BAND * ps : RC_SHARE_BAND * 1e-3 * (L > 0 ? L : 1.0);
+        if (isfinite(ps) && isfinite(vs) && ps > 0 && vs > 0) m->inter_perelax[i] = RC_PE_RELAX * vs / ps;
+    }
     /* stick damping of the incremental friction: the stick spring critically
      * damped on the pair's reduced mass, so that a body stopped on a
      * sticking contact comes to rest instead of ringing */
@@ -651,6 +664,7 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         double *a = m->atol + m->inter_eadr[i];
         if (m->inter_hidx[i] >= 0) a[m->inter_hidx[i]] = scaled ? rt * m->inter_fscale[i] : m->inter_stiff[i] * apos;
         if (m->inter_oidx[i] >= 0) a[m->inter_oidx[i]] = apos;
+        if (m->inter_peidx[i] >= 0) a[m->inter_peidx[i]] = apos;
         const rc_fric *fr = &m->inter_fr[i];
         for (int k = 0; k < 3; k++) {
             const double af = scaled ? rt * m->inter_fscale[i] : fr->kt * apos;

@@ -577,6 +577,7 @@ static rc_status layout(const rc_case *c, rc_model *m, rc_error *err)
         int ns = RC_NE;
         m->inter_hidx[i] = m->inter_iform[i] != 0 ? ns++ : -1;
         m->inter_oidx[i] = m->inter_inacti[i] == 5 ? ns++ : -1;
+        m->inter_peidx[i] = rc_pair_multi(m->inter_pair[i]) ? ns++ : -1;
         rc_fric *fr = &m->inter_fr[i];
         /* friction per contact point (a segment surface's nodes): F_t of
          * each point after the own states, none for the interface */
@@ -778,6 +779,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->inter_ns, m->ninter);
     ALLOC(m->inter_hidx, m->ninter);
     ALLOC(m->inter_oidx, m->ninter);
+    ALLOC(m->inter_peidx, m->ninter);
     ALLOC(m->inter_fr, m->ninter);
     ALLOC(m->inter_npt, m->ninter);
     ALLOC(m->inter_pst, m->ninter);
@@ -837,10 +839,10 @@ void rc_model_free(rc_model *m)
                       m->inter_ascalex, m->inter_fscaleld, m->inter_ascalef, m->inter_ascalev,
                       m->inter_fct_ld, m->inter_fct_dv, m->inter_fct_df, m->inter_eadr,
                       m->inter_fct_ul, m->inter_iform, m->inter_icor, m->inter_inacti, m->inter_stiff,
-                      m->inter_fscaleul, m->inter_ns, m->inter_hidx, m->inter_oidx, m->inter_fr,
+                      m->inter_fscaleul, m->inter_ns, m->inter_hidx, m->inter_oidx, m->inter_peidx, m->inter_fr,
                       m->inter_name, m->atol, m->held, m->row_held, m->gwork_slot, m->surf_ext,
                       m->inter_law, m->inter_pw, m->inter_pscale, m->inter_fscale, m->inter_kscale,
-                      m->inter_vscale, m->inter_mred, m->inter_mrest, m->ewt_rel, m->body_loc, m->inter_loc,
+                      m->inter_vscale, m->inter_mred, m->inter_mrest, m->inter_sband, m->inter_perelax, m->ewt_rel, m->body_loc, m->inter_loc,
                       m->surf_nadr, m->surf_node, m->surf_sadr, m->surf_seg, m->inter_npt, m->inter_pst, m->inter_pbase,
                       m->inter_ptslot, m->surf_seg_turned, m->inter_orient, m->inter_fast, m->start_note};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);

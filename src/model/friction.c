@@ -21,6 +21,7 @@
 
 #include "case/case.h"
 #include "base/error.h"
+#include "model/geom.h"
 #include "model/model.h"
 
 #define RC_PI 3.14159265358979323846
@@ -188,6 +189,19 @@ static const rc_case_fricorient_item *orient_of(const rc_case *c, int p)
     return found;
 }
 
+/* 1 when the law of card f (group g, NULL: the defaults) reads the contact
+ * pressure: a non-zero coefficient of p in Ifric 1 (C1, C3, C4) or 2 (C1,
+ * C3; C2, C4 are rates of its exponentials). */
+static int uses_pressure(const rc_case_friction *f, const rc_case_fricpair *g)
+{
+    if (f->ifric != 1 && f->ifric != 2) return 0;
+    for (int d = 0; d < (g && g->idir == 1 ? 2 : 1); d++) {
+        const double *c = g ? g->set[d].c : f->def.c;
+        if (c[0] != 0 || c[2] != 0 || (f->ifric == 1 && c[3] != 0)) return 1;
+    }
+    return 0;
+}
+
 /* Fill interface i's friction from card f and coefficient group g (NULL:
  * the card's defaults). */
 static rc_status apply_card(const rc_case *c, rc_model *m, int i, const rc_case_friction *f, const rc_case_fricpair *g,
@@ -229,10 +243,22 @@ static rc_status apply_card(const rc_case *c, rc_model *m, int i, const rc_case_
                      RC_LOC(f->line_loc[0]), f->id, f->ifiltr);
         fr->tau = f->ifiltr == 1 ? f->dt_ref / f->xfreq : f->dt_ref / (2.0 * RC_PI * f->xfreq);
     }
-    /* pressure area: the card's, or the projected area of the smaller sphere */
+    /* pressure area: the card's, or the projected area of the (smaller)
+     * sphere of a sphere pair; a law that reads the pressure on any other
+     * pair needs the card's (a box or a mesh has no area ricochet could
+     * take for its contact patch without guessing) */
+    const int sphere = m->inter_pair[i] == RC_PAIR_SPHERE_PLANE || m->inter_pair[i] == RC_PAIR_SPHERE_SPHERE ||
+                       m->inter_pair[i] == RC_PAIR_SPHERE_BOX || m->inter_pair[i] == RC_PAIR_SPHERE_SEG ||
+                       m->inter_pair[i] == RC_PAIR_SPHERE_CYL;
     double r = m->surf_r[m->inter_sa[i]];
     if (m->inter_pair[i] == RC_PAIR_SPHERE_SPHERE) r = fmin(r, m->surf_r[m->inter_sb[i]]);
-    fr->area = f->area > 0 ? f->area : RC_PI * r * r;
+    fr->area = f->area > 0 ? f->area : sphere ? RC_PI * r * r : 0.0;
+    if (!(fr->area > 0) && uses_pressure(f, g))
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card /FRICTION/%d, field Area: the law (Ifric %d) reads the contact pressure p = F_n / Area "
+                           "on %s, a %s pair, whose contact area ricochet takes only for a sphere (pi R^2): expected "
+                           "Area > 0 [m^2], got blank",
+                 RC_LOC(f->line_loc[0]), f->id, f->ifric, m->inter_name[i], rc_geom_inter_pair_name(m, i));
     /* reduced mass of the two bodies (a body without states is infinitely heavy) */
     const int b[2] = {m->inter_ba[i], m->inter_bb[i]};
     double inv = 0;

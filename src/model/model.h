@@ -12,6 +12,8 @@
  *     [1] W_damp  energy dissipated by the normal damping             [J]
  *     [inter_hidx] F_h    hysteresis force, Iform 1 and 2              [N]
  *     [inter_oidx] offset gap reduction of Inacti = 5 (>= 0)           [m]
+ *     [inter_peidx] P_e, the effective penetration of the law of a pair
+ *                   with several contact points (docs/theory.md 2.7)   [m]
  *     [fr.tidx .. +2] F_t tangential (friction) force on body a, global
  *                     frame, in the contact plane (incremental form)  [N]
  *     [fr.fidx .. +2] filtered friction force (/FRICTION Ifiltr)       [N]
@@ -41,7 +43,13 @@
  * not count as a crossing (docs/theory.md 3.5) [-]. */
 #define RC_SLIP_BAND 1e-6
 #define RC_NODE_CACHE 11 /* values per point of the node geometry cache (rc_data.node_cache) */
-#define RC_NS_MAX 11 /* own states of an interface: energies, F_h, offset, F_t, filter, W_fric */
+/* Pairs with several contact points (docs/theory.md 2.7): the share band,
+ * relative to the penetration scale [-], and the relaxation rate of the
+ * effective penetration P_e down to P, relative to the contact's frequency
+ * [-]. */
+#define RC_SHARE_BAND 1e-6
+#define RC_PE_RELAX 10.0
+#define RC_NS_MAX 12 /* own states of an interface: energies, F_h, offset, P_e, F_t, filter, W_fric */
 #define RC_JB_MAX ((2 * 6 + RC_NS_MAX) * (2 * RC_NB + RC_NS_MAX)) /* largest dense block */
 
 /* Analytic surface kinds. */
@@ -215,6 +223,8 @@ struct rc_model {
     int *inter_ns;       /* [ninter] number of own states (2..RC_NS_MAX) */
     int *inter_hidx;     /* [ninter] index of F_h among them, -1 */
     int *inter_oidx;     /* [ninter] index of the Inacti offset, -1 */
+    int *inter_peidx;    /* [ninter] index of P_e, the effective penetration of a pair
+                            with several contact points (rc_pair_multi), -1 */
     rc_fric *inter_fr;   /* [ninter] friction (friction.h); kind RC_FK_NONE: none */
     int *inter_orient;   /* [2*ninter] segment normals of surfaces a, b: TYPE6 IRS/IRm of
                             that surface: 0 as built (solid faces out), 1 reversed,
@@ -237,6 +247,10 @@ struct rc_model {
     rc_loc *inter_loc;   /* [ninter] header of the interface card, for messages */
     int *inter_law;      /* [ninter] normal law RC_LAW_TYPE6 / RC_LAW_POWER (power.h) */
     struct rc_power *inter_pw; /* [ninter] power-law parameters (power.h), law POWER */
+    int probing;         /* 1 while the Jacobian pattern is probed (jacpattern.c): the
+                            friction limit then takes the normal force with its sign,
+                            so that the probe states, whose contacts may pull, see the
+                            structure of a pressing contact (kernels.inc, type6) */
     unsigned char *inter_fast; /* [ninter] 1: evaluated in real arithmetic by the fast path
                             (engine/kernel_fast.inc: a centred sphere against a sphere or a
                             plane, no friction, no hysteresis state, no Inacti offset), set by
@@ -249,6 +263,11 @@ struct rc_model {
     double *inter_kscale; /* normal stiffness at p_s [N/m] */
     double *inter_vscale; /* contact speed scale p_s omega_s [m/s] */
     double *inter_mred;   /* reduced mass of the pair [kg] */
+    double *inter_sband;  /* share band b of a pair with several contact points:
+                             below P = b the points within b of the deepest share
+                             the force (docs/theory.md 2.7) [m] */
+    double *inter_perelax; /* relaxation rate kappa of P_e down to P [1/s]
+                             (docs/theory.md 2.7; 0: none) */
     double *inter_mrest;  /* the mass the contact drives at t = 0: inter_mred, or
                              with the rotations at the single contact point of
                              free bodies (rc_point_mass); a derived restitution
@@ -321,9 +340,12 @@ typedef struct rc_data {
                             force suspended; it opens when P returns to 0;
                             docs/theory.md 5.2); set by the driver, cleared when
                             the mode leaves CLOSED */
-    double *inter_band;  /* [ninter*2] touch bands of a contact closed at zero
-                            penetration or zero force: separation root P + band[0]
-                            [m], release root F_n + band[1] [N]; 0 otherwise */
+    double *inter_band;  /* [ninter*2] signed touch bands of a contact left at
+                            zero penetration or zero force (events.c): zone root
+                            P + band[0] [m] (closed or released: +band, it
+                            separates at P = -band; open: -band, it closes at
+                            P = +band), force root F_n + band[1] [N] (closed:
+                            +fband; released: -fband); 0 otherwise */
     struct rc_cpl_data *cpl; /* couplings: catenary warm starts, workspace (coupling.h) */
     double *imp_free;    /* [ny] imposed velocities: the free accelerations of
                             their rows at the last rhs (imposed.h), NULL: none */
@@ -366,6 +388,8 @@ typedef struct rc_inter_report {
     double vn;           /* approach rate dp/dt [m/s] */
     double p_raw;        /* penetration past the nominal Gap [m] */
     double vn_raw;       /* its rate [m/s] */
+    double pl, vl;       /* the law's penetration and rate: p and vn, or with
+                            several contact points P_e and v_bar [m], [m/s] */
     double fload;        /* elastic(-plastic) force F of the law [N] */
     double fdamp;        /* damping force [N] */
     double fn;           /* total normal force F + F_damp, unclipped [N] */
@@ -375,6 +399,8 @@ typedef struct rc_inter_report {
     double ft[3];        /* friction force on body a, applied [N] */
     double fraw[3];      /* friction force of the law, before the filter [N] */
     double flim;         /* friction limit Sfric + mu F_n [N] */
+    double fstored;      /* energy in the stick springs, |F_t|^2 / (2 K_t) per
+                            contact point (K_t its share) [J] */
     double vslip;        /* sliding speed |v_t| [m/s] */
     double slip_root;    /* stick: |F_t|^2 - F_lim^2; slip: v_t . e */
     double vt[3];        /* tangential relative velocity at the contact point [m/s] */

@@ -163,9 +163,9 @@ def main():
         pref = (M * G / KP) ** (1 / M1) if b == 3 else M * G / K
         p = r.pen[-1, b]
         e = rcval.rel(p, pref)
-        rcval.check(f"box_plane_rest.{name}.penetration", e < 1e-6,
+        rcval.check(f"box_plane_rest.{name}.penetration", e < 5e-5,
                     f"P = {p:.9e} m, {'(M g / K)^(1/m1)' if b == 3 else 'M g / k'} = {pref:.9e} m, rel. error {e:.2e} "
-                    f"(< 1e-6)")
+                    f"(< 5e-5: the law's penetration P_e, at which the force is the weight exactly, lies below the deepest corner by what the last rockings left unpaid: theory 2.7)")
         # corner depths from the final pose (body frame = global at t = 0)
         forces = boxrest.corner_forces(fn, r.pos[-1, b], quat[-1, b], [Rs[b] @ np.array(v) for v in CORNERS])
         boxrest.check_corners(f"box_plane_rest.{name}.corners", forces, M, G, mg="M g")

@@ -61,8 +61,8 @@ def main():
                 f"rel. error {e:.2e} (< 1e-6)")
     p_ref = (M * G / KP) ** (1 / M1)
     e = rcval.rel(r.pen[-1, 0], p_ref)
-    rcval.check("pw_seg_box_rest.penetration", e < 1e-6,
-                f"P = {r.pen[-1, 0]:.9e} m, (m g / K)^(1/m1) = {p_ref:.9e} m, rel. error {e:.2e} (< 1e-6)")
+    rcval.check("pw_seg_box_rest.penetration", e < 5e-5,
+                f"P = {r.pen[-1, 0]:.9e} m, (m g / K)^(1/m1) = {p_ref:.9e} m, rel. error {e:.2e} (< 5e-5: P_e, at which the force is the load exactly, below the deepest corner by what the last rockings left unpaid: theory 2.7)")
     forces = boxrest.corner_forces(fn, r.pos[-1, 0], quat[-1, 0], CORNERS)
     boxrest.check_corners("pw_seg_box_rest.corners", forces, M, G)
     boxrest.check_rest("pw_seg_box_rest.rest", r.vel[-1, 0], omega[-1, 0], A, f"at {r.t[-1]:g} s")

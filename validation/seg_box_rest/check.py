@@ -108,8 +108,8 @@ def main():
                     f"the mesh, closed form), rel. error {e:.2e} (< 1e-6)")
         p = r.pen[-1, b]
         e = rcval.rel(p, m * G / K)
-        rcval.check(f"seg_box_rest.{name}.penetration", e < 1e-6,
-                    f"P = {p:.9e} m, m g / k = {m * G / K:.9e} m, rel. error {e:.2e} (< 1e-6)")
+        rcval.check(f"seg_box_rest.{name}.penetration", e < 5e-5,
+                    f"P = {p:.9e} m, m g / k = {m * G / K:.9e} m, rel. error {e:.2e} (< 5e-5: the law's penetration P_e, at which the force is the weight exactly, lies below the deepest corner by what the last rockings left unpaid: theory 2.7)")
         # corner depths from the final pose (body frame = global at t = 0,
         # origin at the centre); the forces by the rule F p_j / sum p.
         # 1e-5: the corner depths differ at the solver's position tolerance

@@ -101,11 +101,5 @@ for solver in deck default ida; do
     done
 done
 rm -f "$log"
-# the validation problems that run on after a failed physics check until an
-# engine defect is fixed (validation/lib/rcval.py; the list must become empty)
-/usr/bin/python3 -c 'import sys; sys.argv = ["x"]; sys.path.insert(0, "validation/lib"); import rcval
-w = rcval.PHYSICS_WARN_PENDING
-print("physics checks: %d validation problems run with --on-violation warn until their engine defect is fixed%s" % (len(w), ": " if w else ""))
-for k in sorted(w): print("  %s: %s" % (k, w[k]))'
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -5,6 +5,7 @@ the deck writer shared with validation/lib. Prints PASS/FAIL lines.
 """
 # SPDX-License-Identifier: GPL-3.0-or-later
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -25,7 +26,7 @@ def check(name, ok, detail=""):
     failed += not ok
 
 
-tmp = tempfile.mkdtemp()
+tmp = tempfile.mkdtemp(prefix="rc-python-test-")
 out = os.path.join(tmp, "demo.nc")
 subprocess.run([BIN, "run", os.path.join(ROOT, "cases", "demo_sphere_drop.rad"), "-o", out, "-q"], check=True)
 
@@ -80,4 +81,5 @@ p = subprocess.run([BIN, "check", path], capture_output=True, text=True)
 msg = (p.stdout + p.stderr).strip().splitlines()
 check("deck_written", p.returncode == 0 and "interfaces  1" in p.stdout and text.startswith("#RADIOSS STARTER"),
       f"ricochet check exit {p.returncode}: {msg[0][:100] if msg else ''}")
+shutil.rmtree(tmp, ignore_errors=True)
 sys.exit(1 if failed else 0)

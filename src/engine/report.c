@@ -217,6 +217,11 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
                     ? "derived from the contact scales"
                     : "blank fields derived from the contact scales",
                 lo[0], hi[0], m->ewt_rel ? " (absolute)" : "", lo[1], hi[1], lo[2], hi[2], lo[3], hi[3], m->atol_energy);
+        if (m->tol_floored > 0)
+            fprintf(f, "            note: rtol p_s is below what the coordinates resolve for %d bod%s: their position\n"
+                       "            tolerance raised to %.3g m (%d roundings of the contacts' coordinates; docs/theory.md 7.1):\n"
+                       "            the run cannot be as accurate as rtol asks; coordinates nearer the origin resolve more\n",
+                    m->tol_floored, m->tol_floored == 1 ? "y" : "ies", m->tol_floor_pos, (int)RC_TOL_ULPS);
     }
     int nsc = 0;
     for (int i = 0; i < m->ninter; i++) nsc += isfinite(m->inter_pscale[i]) != 0;

@@ -587,9 +587,6 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
     memset(m->ewt_rel, 1, (size_t)ny);
     const int au = m->tol_auto;
     const double rt = m->rtol;
-    /* energies */
-    if (au & RC_TOL_AUTO_ENERGY) m->atol_energy = m->escale > 0 ? RC_TOL_EFRAC * rt * m->escale : RC_TOL_FALLBACK_ENERGY;
-    for (int k = 0; k < ny; k++) m->atol[k] = m->atol_energy; /* accounting states unless set below */
     /* bodies: the smallest scales of their contacts (one pass over the
      * interfaces) */
     const size_t nb = (size_t)m->nbody + 1;
@@ -601,17 +598,76 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         RC_RAISE(err, RC_ENOMEM, "out of memory");
     }
     body_sizes(m, size);
+    /* the resolution of the coordinates: a penetration is the difference of
+     * coordinates, rounded at DBL_EPSILON times their magnitude, so that no
+     * tolerance below RC_TOL_ULPS of it can be met (the Newton corrections
+     * and the error estimates stay at the rounding). For each contact, the
+     * largest coordinate of its pair at t = 0 (bodies' centres plus sizes,
+     * fixed surfaces' points) gives the floor pf_i of its position
+     * tolerances; the body's floor is the largest of its contacts', and its
+     * velocity floor is pf times the contact's frequency v_s / p_s. */
+    double *pfl = malloc(((size_t)m->ninter + 1) * sizeof(double)), *pflb = malloc(nb * sizeof(double)),
+           *vflb = malloc(nb * sizeof(double));
+    if (!pfl || !pflb || !vflb) {
+        free(pfl);
+        free(pflb);
+        free(vflb);
+        free(size);
+        free(bps);
+        free(bvs);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    m->tol_floored = 0;
+    m->tol_floor_pos = 0.0;
     for (int b = 0; b < m->nbody; b++) bps[b] = bvs[b] = INFINITY;
+    for (int b = 0; b < m->nbody; b++) pflb[b] = vflb[b] = 0.0;
     for (int i = 0; i < m->ninter; i++) {
+        pfl[i] = 0.0;
         if (!isfinite(m->inter_pscale[i])) continue;
         const double vi = fmin(m->inter_vscale[i], m->inter_fscale[i] / inter_damping(m, i));
         const int bs[2] = {m->inter_ba[i], m->inter_bb[i]};
+        double X = 0.0;
+        for (int k = 0; k < 2; k++) {
+            const int b = bs[k];
+            if (b < 0) continue;
+            const double *x = m->body_y0 + RC_NB * b;
+            for (int c = 0; c < 3; c++) X = fmax(X, fabs(x[c]) + size[b]);
+        }
+        const int ss[2] = {m->inter_sa[i], m->inter_sb[i]};
+        for (int k = 0; k < 2; k++) {
+            if (ss[k] < 0 || m->surf_body[ss[k]] >= 0) continue;
+            const double *p = m->surf_p + 3 * ss[k];
+            for (int c = 0; c < 3; c++) X = fmax(X, fabs(p[c]));
+        }
+        pfl[i] = RC_TOL_ULPS * DBL_EPSILON * X;
+        const double om = m->inter_vscale[i] / m->inter_pscale[i];
         for (int k = 0; k < 2; k++) {
             if (bs[k] < 0) continue;
             bps[bs[k]] = fmin(bps[bs[k]], m->inter_pscale[i]);
             bvs[bs[k]] = fmin(bvs[bs[k]], vi);
+            pflb[bs[k]] = fmax(pflb[bs[k]], pfl[i]);
+            if (isfinite(om)) vflb[bs[k]] = fmax(vflb[bs[k]], om * pfl[i]);
         }
     }
+    /* every body: at least the rounding of its own coordinates (a body on
+     * joints or couplings only) */
+    for (int b = 0; b < m->nbody; b++) {
+        const double *x = m->body_y0 + RC_NB * b;
+        double X = 0.0;
+        for (int c = 0; c < 3; c++) X = fmax(X, fabs(x[c]) + size[b]);
+        pflb[b] = fmax(pflb[b], RC_TOL_ULPS * DBL_EPSILON * X);
+    }
+    /* energies: 0.1 rtol of the model's energy scale, at least the work of
+     * the contact forces over the rounding of the penetrations (the
+     * accounting states integrate F v, whose rounding is F_s pf) */
+    if (au & RC_TOL_AUTO_ENERGY) {
+        m->atol_energy = m->escale > 0 ? RC_TOL_EFRAC * rt * m->escale : RC_TOL_FALLBACK_ENERGY;
+        double ef = 0.0;
+        for (int i = 0; i < m->ninter; i++)
+            if (isfinite(m->inter_fscale[i])) ef += m->inter_fscale[i] * pfl[i];
+        m->atol_energy = fmax(m->atol_energy, ef);
+    }
+    for (int k = 0; k < ny; k++) m->atol[k] = m->atol_energy; /* accounting states unless set below */
     for (int b = 0; b < m->nbody; b++) {
         if (m->body_yadr[b] < 0) continue;
         const double ps = bps[b], vs = bvs[b];
@@ -624,7 +680,12 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         char *rel = m->ewt_rel + m->body_yadr[b];
         for (int k = 0; k < 3; k++) {
             if (au & RC_TOL_AUTO_POS) {
-                a[k] = scaled ? rt * ps : rt * RC_TOL_FALLBACK_LFRAC * L;
+                const double d = scaled ? rt * ps : rt * RC_TOL_FALLBACK_LFRAC * L;
+                if (k == 0 && pflb[b] > d) {
+                    m->tol_floored++;
+                    m->tol_floor_pos = fmax(m->tol_floor_pos, pflb[b]);
+                }
+                a[k] = fmax(d, pflb[b]);
                 rel[k] = 0;
             } else {
                 a[k] = m->atol_pos;
@@ -632,21 +693,25 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         }
         for (int k = 3; k < 7; k++) {
             if (au & RC_TOL_AUTO_QUAT) {
-                a[k] = scaled ? rt * ps / L : rt * RC_TOL_FALLBACK_LFRAC;
+                a[k] = fmax(scaled ? rt * ps / L : rt * RC_TOL_FALLBACK_LFRAC, pflb[b] / L);
                 rel[k] = 0;
             } else {
                 a[k] = m->atol_quat;
             }
         }
         for (int k = 7; k < 10; k++) {
-            a[k] = (au & RC_TOL_AUTO_VEL) ? (scaled ? rt * vs : rt * RC_TOL_FALLBACK_LFRAC * vb) : m->atol_vel;
+            a[k] = (au & RC_TOL_AUTO_VEL)
+                       ? fmax(scaled ? rt * vs : rt * RC_TOL_FALLBACK_LFRAC * vb, vflb[b])
+                       : m->atol_vel;
             /* velocities absolutely as well: what sets the forces is the
              * relative velocity at the contacts (a block sticking on a belt
              * at 0.05 m/s creeps at um/s), not |v| */
             if (au & RC_TOL_AUTO_VEL) rel[k] = 0;
         }
         for (int k = 10; k < 13; k++)
-            a[k] = (au & RC_TOL_AUTO_OMEGA) ? (scaled ? rt * vs / L : rt * RC_TOL_FALLBACK_LFRAC * vb / L) : m->atol_omega;
+            a[k] = (au & RC_TOL_AUTO_OMEGA)
+                       ? fmax(scaled ? rt * vs / L : rt * RC_TOL_FALLBACK_LFRAC * vb / L, vflb[b] / L)
+                       : m->atol_omega;
     }
     /* interface states: forces at rtol of the force scale (or the
      * stiffness times the position tolerance when given), lengths at the
@@ -658,22 +723,25 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         const int ba = m->inter_ba[i], bb = m->inter_bb[i];
         double Li = (ba >= 0 ? size[ba] : 0.0) + (bb >= 0 ? size[bb] : 0.0);
         if (!(Li > 0)) Li = 1.0;
-        const double apos = scaled                      ? rt * m->inter_pscale[i]
+        const double apos = scaled                      ? fmax(rt * m->inter_pscale[i], pfl[i])
                             : (au & RC_TOL_AUTO_POS) ? rt * RC_TOL_FALLBACK_LFRAC * Li
                                                      : m->atol_pos;
+        /* forces: rtol F_s, at least the force of the coordinates' rounding */
+        const double ffl = scaled ? m->inter_kscale[i] * pfl[i] : 0.0;
         double *a = m->atol + m->inter_eadr[i];
-        if (m->inter_hidx[i] >= 0) a[m->inter_hidx[i]] = scaled ? rt * m->inter_fscale[i] : m->inter_stiff[i] * apos;
+        if (m->inter_hidx[i] >= 0) a[m->inter_hidx[i]] = scaled ? fmax(rt * m->inter_fscale[i], ffl) : m->inter_stiff[i] * apos;
         if (m->inter_oidx[i] >= 0) a[m->inter_oidx[i]] = apos;
         if (m->inter_peidx[i] >= 0) a[m->inter_peidx[i]] = apos;
         const rc_fric *fr = &m->inter_fr[i];
         for (int k = 0; k < 3; k++) {
-            const double af = scaled ? rt * m->inter_fscale[i] : fr->kt * apos;
+            const double af = scaled ? fmax(rt * m->inter_fscale[i], ffl) : fr->kt * apos;
             if (fr->tidx >= 0) a[fr->tidx + k] = af;
             if (fr->fidx >= 0) a[fr->fidx + k] = af;
         }
         /* friction per contact point: each point's F_t as the interface's */
         const int npt = m->inter_npt[i];
-        for (int k = 0; k < m->inter_pst[i] * npt; k++) a[m->inter_ns[i] + k] = scaled ? rt * m->inter_fscale[i] : fr->kt * apos;
+        for (int k = 0; k < m->inter_pst[i] * npt; k++)
+            a[m->inter_ns[i] + k] = scaled ? fmax(rt * m->inter_fscale[i], ffl) : fr->kt * apos;
         /* slip-test band: the force tolerance of F_t, and at least RC_SLIP_BAND
          * of the contact's force scale (the relative band of the limit,
          * carried down to small loads: a load ramped from zero, carried by the
@@ -683,6 +751,9 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         if (tt >= 0 && isfinite(m->inter_fscale[i])) fb = fmax(fb, RC_SLIP_BAND * m->inter_fscale[i]);
         m->inter_fr[i].fband = fb;
     }
+    free(pfl);
+    free(pflb);
+    free(vflb);
     free(size);
     free(bps);
     free(bvs);

@@ -135,6 +135,12 @@ typedef struct rc_jblock {
     int64_t *slot;               /* [nrow*ncol] */
 } rc_jblock;
 
+/* the smallest derived position tolerance, in roundings of the contact's
+ * coordinates (DBL_EPSILON times their magnitude) */
+#ifndef RC_TOL_ULPS
+#define RC_TOL_ULPS 64.0
+#endif
+
 struct rc_model {
     /* provenance */
     char *case_path;
@@ -293,6 +299,9 @@ struct rc_model {
     double start_energy, start_escale; /* its elastic energy and the scene's E_s [J] */
     double rtol;
     double atol_pos, atol_quat, atol_vel, atol_omega, atol_energy;
+    int tol_floored;       /* bodies whose derived position tolerance was raised to RC_TOL_ULPS
+                            * roundings of their contacts' coordinates */
+    double tol_floor_pos;  /* the largest such floor [m] */
     int method;          /* /SOLVER Method: integration backend (src/solver/solver.h) */
     int max_order;
     long max_steps;

@@ -12,7 +12,9 @@ convergence study over rtol), and check() prefixes each check name with
 RICOCHET_VAL_METHOD=ida runs every deck on the IDA path (ricochet run
 --method ida) and prefixes the check names with "ida:".
 """
+import atexit
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -24,38 +26,24 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 RICOCHET = os.environ.get("RICOCHET", os.path.join(ROOT, "build", "ricochet"))
 FAILED = []
-# The validation problems whose runs go on after a failed physics check
-# (`ricochet run --on-violation warn`, docs/theory.md 13) because the check
-# found an engine defect that is being fixed; every other run stops at a
-# violation (exit 5) and its check fails. Each entry names the check that
-# fires and why. THIS LIST MUST BECOME EMPTY: remove a problem as soon as
-# the defect behind it is fixed (its runs then pass the checks).
-PHYSICS_WARN_PENDING = {
-    # multi-point contacts (box corners, mesh nodes): the interface's force
-    # is shared among its points by a rule that is not conservative, and its
-    # stored energy is the law's at the largest penetration, so
-    # energy_hysteresis goes negative (and the mechanical energy can rise)
-    "box_box": "energy_hysteresis of the box-box and segment-segment contacts decreases",
-    "box_plane_incline": "energy_hysteresis of the box on the incline decreases (multi-point)",
-    "box_plane_rest": "energy_hysteresis of the box corners decreases (multi-point)",
-    "seg_box_filter_slide": "energy_hysteresis and energy_friction of the meshed box decrease (multi-point)",
-    "seg_box_incline": "energy_hysteresis of the meshed box decreases (multi-point)",
-    "seg_box_rest": "energy_hysteresis of the meshed boxes decreases (multi-point)",
-    "seg_box_slide_stop": "energy_hysteresis of the meshed box decreases (multi-point)",
-    "seg_seg_collide": "energy_hysteresis decreases and the mechanical energy rises (segment-segment)",
-    # friction: the stick spring's stored energy F_t^2 / (2 K_t) appears
-    # without work when the state is put on the limit at a slip onset (the
-    # radial return along the applied force, damper included)
-    "frc_incline": "energy_friction decreases at the slip onset (stored energy without work)",
-    "fric_incline": "energy_friction decreases at the slip onset (stored energy without work)",
-    "seg_sphere_incline": "energy_friction decreases at the slip onset (stored energy without work)",
-    "fric_multipliers": "energy_friction decreases at a friction event (stored energy without work)",
-    "frc_renard_decel": "energy_friction decreases at a friction event (stored energy without work)",
-}
 PROBLEM = os.path.basename(os.path.dirname(os.path.abspath(sys.argv[0])))
 DEFAULTS = os.environ.get("RICOCHET_VAL_SOLVER", "") == "default"
 METHOD = os.environ.get("RICOCHET_VAL_METHOD", "")
 PREFIX = ("default:" if DEFAULTS else "") + (METHOD + ":" if METHOD else "")
+
+
+_TMPROOT = []
+
+
+def tmpdir():
+    """A fresh directory for one run's deck and results, inside one directory
+    per process that is removed when the process ends (RICOCHET_VAL_KEEP=1
+    keeps it, for looking at the files)."""
+    if not _TMPROOT:
+        _TMPROOT.append(tempfile.mkdtemp(prefix="rcval-"))
+        if os.environ.get("RICOCHET_VAL_KEEP", "") != "1":
+            atexit.register(shutil.rmtree, _TMPROOT[0], True)
+    return tempfile.mkdtemp(dir=_TMPROOT[0])
 
 
 def strip_solver(text):
@@ -72,8 +60,6 @@ def strip_solver(text):
 
 def _execute(case, out):
     cmd = [RICOCHET, "run", case, "-o", out, "-q"] + (["--method", METHOD] if METHOD else [])
-    if PROBLEM in PHYSICS_WARN_PENDING:
-        cmd += ["--on-violation", "warn"]
     p = subprocess.run(cmd, capture_output=True, text=True)
     if p.returncode != 0:
         raise RuntimeError(f"ricochet failed ({p.returncode}): {p.stderr.strip()}")
@@ -87,7 +73,7 @@ def _execute(case, out):
 def run(deck, name="case", keep_solver=False):
     """Write the deck to a temporary directory, run it, return the output path.
     In the defaults mode the /SOLVER card is removed unless keep_solver."""
-    d = tempfile.mkdtemp(prefix="rcval-")
+    d = tmpdir()
     case = os.path.join(d, name + ".rad")
     out = os.path.join(d, name + ".nc")
     text = deck.text()
@@ -101,7 +87,7 @@ def run(deck, name="case", keep_solver=False):
 def run_file(case, keep_solver=False):
     """Run a deck file, return the output path. In the defaults mode a copy
     without the /SOLVER card is run unless keep_solver."""
-    d = tempfile.mkdtemp(prefix="rcval-")
+    d = tmpdir()
     out = os.path.join(d, "out.nc")
     if DEFAULTS and not keep_solver:
         with open(case) as f:

@@ -7,7 +7,6 @@ import os
 import re
 import subprocess
 import sys
-import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
@@ -25,7 +24,7 @@ def body_props(cards):
              "                  kg                   m                   s",
              "                  kg                   m                   s"]
     lines += cards + ["/RUN", M.r20(0.01) + M.r20(0.001), "/END", ""]
-    d = tempfile.mkdtemp(prefix="rcval-mass-")
+    d = rcval.tmpdir()
     path = os.path.join(d, "case.rad")
     with open(path, "w") as f:
         f.write("\n".join(lines))

@@ -26,7 +26,6 @@ import os
 import re
 import subprocess
 import sys
-import tempfile
 
 import numpy as np
 from scipy.integrate import solve_ivp
@@ -84,7 +83,7 @@ def deck(law, e):
 
 def derived_c(d):
     """C from `ricochet check` ("C derived = ...")."""
-    tmp = tempfile.mkdtemp(prefix="rcval-")
+    tmp = rcval.tmpdir()
     path = os.path.join(tmp, "case.rad")
     with open(path, "w") as f:
         f.write(d.text())

@@ -286,11 +286,17 @@ def _task(job):
 
 def _replay_task(job):
     path, opts = job
-    with open(path) as f:
-        text = f.read()
-    scene = DW.read_scene(text)
-    variants = scene.get("replay_variants", {})
-    rec = process(scene, variants, opts["ricochet"], opts["timeout"], opts.get("keep_dir"), base_text=text)
+    try:
+        with open(path) as f:
+            text = f.read()
+        scene = DW.read_scene(text)
+        if scene is None:
+            raise ValueError(f"{path}: no #PHYSFUZZ-SCENE lines (not a physfuzz regression deck)")
+        variants = scene.get("replay_variants", {})
+        rec = process(scene, variants, opts["ricochet"], opts["timeout"], opts.get("keep_dir"), base_text=text)
+    except Exception as e:
+        rec = {"seed": -1, "kind": "?", "runs": {}, "variants": [],
+               "violations": [{"inv": "fuzzer_error", "run": "-", "msg": repr(e)}]}
     rec["file"] = path
     return rec
 
@@ -383,7 +389,7 @@ def regression_files(paths):
     for p in paths:
         if os.path.isdir(p):
             out += sorted(os.path.join(p, f) for f in os.listdir(p) if f.endswith(".rad"))
-        else:
+        elif os.path.exists(p) or not p.endswith("regressions"):
             out.append(p)
     return out
 

@@ -745,6 +745,13 @@ def k_box_box(B, rng):
     fields, law = make_law(B, rng, m * gm, m, v_imp, float(min(half)))
     fm = pick_friction_mode(rng, 0.3)
     lower = half * np.array([rng.uniform(1.5, 4.0), rng.uniform(1.5, 4.0), rng.uniform(0.5, 2.0)])
+    tend = math.sqrt(2 * max(h, half[2]) / gm) * rng.uniform(3.0, 12.0)
+    if variant == "sliding_on_fixed":
+        tend = max(tend, min(1.5, np.linalg.norm(v) / (0.3 * gm) * 1.5))
+    if variant != "free_stack":
+        # the fixed box is wide enough for the whole slide: a box hanging
+        # over an edge is outside what node to surface models (theory 2.7)
+        lower[:2] = np.maximum(lower[:2], np.linalg.norm(v) * tend + 2 * float(np.linalg.norm(half)))
     zc = lower[2] * 2 + h + max(abs(Q[2, :]) @ half, 0.0)
     b, sb = B.box(half, m, (0.0, 0.0, zc), Q, v)
     if variant == "free_stack":
@@ -762,9 +769,6 @@ def k_box_box(B, rng):
         B.inter(s2, sb, fields, label="lower box - upper box")
     it["law_curve"] = law
     add_friction(B, rng, it, law, fm, m * gm, m, max(np.linalg.norm(v), 0.5), 4 * half[0] * half[1])
-    tend = math.sqrt(2 * max(h, half[2]) / gm) * rng.uniform(3.0, 12.0)
-    if variant == "sliding_on_fixed":
-        tend = max(tend, min(1.5, np.linalg.norm(v) / (0.3 * gm) * 1.5))
     H = zc + float(np.linalg.norm(half))
     E_s = energy_scale(B.s, H)
     B.s["notes"].append(f"{variant}, law {law['name']}, friction {fm}")
@@ -797,21 +801,25 @@ def k_meshbox(B, rng):
     zc = h + max(abs(Q[2, :]) @ half, 0.0) - pen0
     nmesh = (int(rng.integers(1, 5)), int(rng.integers(1, 5)))
     b, sb = B.meshbox(half, m, (0.0, 0.0, zc), Q, nmesh, v)
+    tend = math.sqrt(2 * max(h, half[2]) / gm) * rng.uniform(3.0, 12.0)
+    if start == "sliding":
+        tend = max(tend, min(1.5, np.linalg.norm(v) / (0.3 * gm) * 1.5))
+    # how far it can slide: launched, or down the tilt of the gravity
+    travel = np.linalg.norm(v) * tend + 0.5 * math.hypot(g[0], g[1]) * tend ** 2 + 2 * float(np.linalg.norm(half))
     if target == "plane":
         sf = B.plane((0, 0, 0), (0, 0, 1), label="floor")
     elif target == "fixedbox":
+        # wide enough for the slide: a box hanging over the edge of a box is
+        # outside what node to surface models (docs/theory.md 2.7)
         hb = float(max(half)) * 2
-        sf = B.surf(type="box", body=0, c=[0.0, 0.0, -hb], half=[hb * 10, hb * 10, hb], u=[1.0, 0, 0], v=[0, 1.0, 0],
-                    label="fixed box (floor)")
+        sf = B.surf(type="box", body=0, c=[0.0, 0.0, -hb], half=[max(hb * 10, travel), max(hb * 10, travel), hb],
+                    u=[1.0, 0, 0], v=[0, 1.0, 0], label="fixed box (floor)")
     else:
         sf = B.meshfloor(float(max(half)) * 20, int(rng.integers(2, 8)))
     it = B.inter(sb, sf, fields) if rng.random() < 0.5 else B.inter(sf, sb, fields)
     it["law_curve"] = law
     fm = pick_friction_mode(rng, 0.3)
     add_friction(B, rng, it, law, fm, m * gm, m, max(np.linalg.norm(v), 0.5), 4 * half[0] * half[1])
-    tend = math.sqrt(2 * max(h, half[2]) / gm) * rng.uniform(3.0, 12.0)
-    if start == "sliding":
-        tend = max(tend, min(1.5, np.linalg.norm(v) / (0.3 * gm) * 1.5))
     H = h + float(np.linalg.norm(half))
     E_s = energy_scale(B.s, H)
     B.s["notes"].append(f"target {target}, start {start}, mesh {nmesh}, gravity {gmode}, law {law['name']}, friction {fm}")

@@ -11,10 +11,11 @@ unit (the unit-invariance variant). Fields without a fixed dimension
 written in cards whose header names /UNIT/9 (kg, m, s), as
 docs/case-format.md section 1 requires.
 
-Reals are written in 20 columns with the shortest representation that reads
-back to the same double (repr), falling back to fewer digits only when that
-does not fit (exponents: at least 14 significant digits), so the deck is the
-scene to the last bit in almost every field (the deck writer of
+Reals are written in 20 columns (19 characters and a blank) with the
+shortest representation that reads back to the same double (repr), falling
+back to fewer digits only when that does not fit (at least 13 significant
+digits with an exponent, 16 without), so the deck is the scene to the last
+bit or ulp in every field (the deck writer of
 python/ricochet/deck.py keeps 12 digits, which is not enough for a
 millimetre scene 1 km from the origin).
 """
@@ -38,21 +39,21 @@ SI_UNIT_ID = 9          # the /UNIT card in kg, m, s of every deck
 
 
 def freal(v):
-    """A real in at most 20 characters, reading back to the same double when
-    it can."""
+    """A real in at most 19 characters (a blank between fields keeps the
+    deck readable), reading back to the same double when it can."""
     v = float(v)
     if not np.isfinite(v):
         raise ValueError(f"non-finite value {v} in a scene")
     if v == 0.0:
         return "0.0"
     s = repr(v)
-    if len(s) <= 20:
+    if len(s) <= 19:
         return s
     for p in range(16, 5, -1):
         s = f"{v:.{p}g}"
-        if len(s) <= 20:
+        if len(s) <= 19:
             return s
-    raise ValueError(f"cannot write {v} in 20 columns")
+    raise ValueError(f"cannot write {v} in 19 columns")
 
 
 class Writer:
@@ -225,6 +226,15 @@ def write(scene, units=("kg", "m", "s"), header=()):
             w.add(vec(w, j["p2"]))
         elif j["kind"].upper() in ("REVOLUTE", "PRISMATIC"):
             w.add(vec(w, j["axis"], NONE))
+
+    for k, bc in enumerate(scene.get("bcs", [])):
+        w.add(f"/BCS/{k + 1}", "held degrees of freedom",
+              w.line(("s", bc["trarot"], 10), ("i", 0), ("i", 100000 + bc["body"])))
+    for k, iv in enumerate(scene.get("impvel", [])):
+        w.add(f"/IMPVEL/{k + 1}", "imposed velocity",
+              w.line(("i", iv["fct"]), ("s", iv["dir"], 10), ("i", 0), ("i", 0), ("i", 100000 + iv["body"]), ("i", 0),
+                     ("i", 0)),
+              w.line(("r", 1.0, TIME), ("r", iv["scale"], ANGVEL if len(iv["dir"]) == 2 else VEL)))
 
     gvec = scene.get("gravity", [0.0, 0.0, 0.0])
     for k, (dname, gk) in enumerate(zip("XYZ", gvec)):

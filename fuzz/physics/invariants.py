@@ -58,7 +58,7 @@ def load(path):
             return np.array(v[:])
         for name in ("time", "at_event", "body_id", "body_fixed", "body_position", "body_quaternion", "body_velocity",
                      "body_angular_velocity", "inter_id", "inter_penetration", "inter_mode", "inter_force_normal",
-                     "event_time", "energy_kinetic", "energy_potential", "energy_contact_work", "energy_damping",
+                     "event_time", "event_penetration", "event_force_normal", "event_normal_speed", "energy_kinetic", "energy_potential", "energy_contact_work", "energy_damping",
                      "energy_friction_work", "energy_contact_stored", "energy_hysteresis", "energy_friction",
                      "energy_coupling_elastic", "energy_coupling_damping", "energy_catenary", "energy_imposed",
                      "energy_total", "impact_speed_in", "impact_peak_force"):
@@ -160,7 +160,10 @@ def mechanical_energy(scene, res):
 
 def check_exit(scene, run, rc, stderr, timed_out):
     out = []
-    msg = " | ".join(ln for ln in (stderr or "").splitlines() if "warning" not in ln)[:400]
+    lines = [ln for ln in (stderr or "").splitlines() if ln.strip() and "warning" not in ln.lower()]
+    # the program's own message first (CVODE's warnings may precede it)
+    main = [ln for ln in lines if ln.startswith("ricochet:")]
+    msg = " | ".join(main or lines)[:600]
     if scene.get("expect") == "input_error":
         if rc != 2:
             out.append(viol("start_not_refused", run, f"deliberately ill-posed start (overlap "

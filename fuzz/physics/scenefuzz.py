@@ -9,6 +9,7 @@ against physical invariants (README.md).
   scenefuzz.py check --scenes N --seed S [--jobs J]        the make-check sample (PASS/FAIL/XFAIL lines)
   scenefuzz.py minimise --seed S [--kind K] --inv KEY [-o FILE]   shrink a failing scene
   scenefuzz.py deck --seed S [--kind K] [--variant frame|units] -o FILE
+  scenefuzz.py summary DIR [-v]                            tables of a run's report.json
 
 Scene i of `run --seed S` has the seed S * 1000000 + i; `one --seed` that
 number regenerates it. Only numpy and netCDF4 besides the standard library.
@@ -184,6 +185,10 @@ def process(scene, variants, ricochet, timeout=60.0, keep_dir=None, keep_all=Fal
         V += INV.check_single(scene, "tight", tight["res"], tight["rc"])
         if "frame" in variants:
             fp = variants["frame"]
+            if scene.get("bcs") or scene.get("impvel"):
+                # /BCS and /IMPVEL act along the global axes (skew_ID not
+                # supported): the frame variant of such a scene is a translation
+                fp = dict(fp, R=[[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
             vs = DW.transform(scene, fp["R"], fp["t"])
             r = do("frame", DW.write(vs), base_args(scene))
             V += [dict(v, inv="g_frame", msg=f"frame variant: {v['msg']}") for v in
@@ -486,6 +491,23 @@ def drop_body(scene, bid):
     return s
 
 
+def drop_inter(scene, iid):
+    """The scene without interface iid (and its fixed surface, if no other
+    interface uses it)."""
+    s = copy.deepcopy(scene)
+    if len(s["inters"]) < 2:
+        return None
+    s["inters"] = [i for i in s["inters"] if i["id"] != iid]
+    used = {i["s1"] for i in s["inters"]} | {i["s2"] for i in s["inters"]}
+    s["surfaces"] = [f for f in s["surfaces"] if f["id"] in used or f.get("body")]
+    keepn = {n for f in s["surfaces"] if f["type"] == "seg" for seg in f["segs"] for n in seg}
+    s["nodes"] = [n for n in s["nodes"] if n.get("body") or n["id"] in keepn]
+    fids = {i.get(k) for i in s["inters"] for k in ("fct_ld", "fct_ul")} | {iv["fct"] for iv in s.get("impvel", [])}
+    s["funcs"] = [f for f in s["funcs"] if f["id"] in fids]
+    s["shapes"] = SC.shapes_of(s)
+    return s
+
+
 def no_friction(scene):
     s = copy.deepcopy(scene)
     changed = s.get("friction") is not None
@@ -509,55 +531,166 @@ def no_damping(scene):
     return s if changed else None
 
 
+def severity(hit):
+    """How far past its tolerance a violation is (1 when it has no numbers):
+    the minimiser keeps a reduction only while the violation stays strong."""
+    v, tol = hit.get("value"), hit.get("tol") or hit.get("bound") or hit.get("allowed")
+    if v is None or not tol:
+        return 1.0
+    if hit["inv"] == "d_centres":
+        return tol / max(v, 1e-300)
+    return abs(v) / tol
+
+
+def violation_time(hit):
+    """The time of a violation: its own, or the one its message names."""
+    import re
+    if hit.get("t") is not None:
+        return float(hit["t"])
+    m = re.search(r"at t = ([0-9.eE+-]+) s", hit["msg"])
+    return float(m.group(1)) if m else None
+
+
+def linear_law(scene, iid):
+    """The scene with the TYPE6 interface iid's law made linear (its secant
+    at the law's reference penetration), no hysteresis."""
+    s = copy.deepcopy(scene)
+    it = next(i for i in s["inters"] if i["id"] == iid)
+    law = it["law_curve"]
+    if it["law"] != "type6" or law.get("name") == "t6lin":
+        return None
+    x, y = law["x"][2], law["y"][2]
+    fid = max([f["id"] for f in s["funcs"]] + [0]) + 1
+    s["funcs"].append({"id": fid, "x": [0.0, x], "y": [0.0, y], "label": "linear load curve [m, N]"})
+    for k in ("iform", "stiff", "fct_ul", "fscaleul", "e_target", "v_imp"):
+        it.pop(k, None)
+    it.update({"fct_ld": fid, "ascalex": 1.0, "fscaleld": 1.0})
+    it["law_curve"] = {"kind": "curve", "x": [0.0, x], "y": [0.0, y], "name": "t6lin"}
+    used = {i.get(k) for i in s["inters"] for k in ("fct_ld", "fct_ul")}
+    s["funcs"] = [f for f in s["funcs"] if f["id"] in used or f["id"] in {iv["fct"] for iv in s.get("impvel", [])}]
+    return s
+
+
 def cmd_minimise(a):
-    scene = SC.generate(a.seed, kind=a.kind)
+    if a.scene:
+        with open(a.scene) as f:
+            text = f.read()
+        scene = DW.read_scene(text) if a.scene.endswith(".rad") else json.loads(text)
+    else:
+        scene = SC.generate(a.seed, kind=a.kind)
     ricochet = os.path.abspath(a.ricochet)
-    variants = variants_for(a.inv, a.seed)
+    variants = scene.get("replay_variants") or variants_for(a.inv, scene["seed"])
     hit = still_fails(scene, a.inv, variants, ricochet, a.timeout)
     if not hit:
-        print(f"seed {a.seed}: {a.inv} does not fail")
+        print(f"seed {scene['seed']}: {a.inv} does not fail")
         return 1
-    print(f"seed {a.seed} ({scene['kind']}): {hit['msg']}")
+    print(f"seed {scene['seed']} ({scene['kind']}): {hit['msg']}")
+    hit0 = hit
+    tend0 = scene["run"]["tend"]
     changed = True
     while changed:
         changed = False
         cands = []
-        tv = hit.get("t")
+        tv = violation_time(hit)
         tend = scene["run"]["tend"]
-        if tv is not None and tv < 0.8 * tend:
-            cands.append(("end time", dict(scene, run={"tend": max(tv * 1.25, tend * 0.02),
-                                                       "dtout": max(tv * 1.25, tend * 0.02) / 200})))
+        if a.keep_time:
+            pass
+        elif tv is not None:
+            te = max(tv * 1.1, tend * 0.01, tend0 * 1e-3)
+            if te < 0.8 * tend:
+                cands.append(("end time", dict(scene, run={"tend": te, "dtout": te / 200})))
         elif tend > 1e-3:
             cands.append(("end time / 2", dict(scene, run={"tend": tend / 2, "dtout": tend / 400})))
         for b in scene["bodies"]:
             cands.append((f"without body {b['id']}", drop_body(scene, b["id"])))
+        for it in scene["inters"]:
+            cands.append((f"without /INTER/{it['id']}", drop_inter(scene, it["id"])))
         cands.append(("without friction", no_friction(scene)))
         cands.append(("without damping", no_damping(scene)))
+        for it in scene["inters"]:
+            cands.append((f"/INTER/{it['id']} linear", linear_law(scene, it["id"])))
         for what, cand in cands:
             if cand is None:
                 continue
             h = still_fails(cand, a.inv, variants, ricochet, a.timeout)
+            if h and h["inv"] in ("a_solver_failure", "a_timeout", "g_frame", "h_backend") and \
+                    failure_signature(h["msg"]) != failure_signature(hit0["msg"]):
+                print(f"  {what}: fails otherwise ({h['msg'][:100]})")
+                continue
+            if h and severity(h) < min(0.1 * severity(hit0), 1000.0):
+                print(f"  {what}: still fails, but weakly ({h['msg'][:100]})")
+                continue
             if h:
                 print(f"  {what}: still fails ({h['msg'][:120]})")
                 scene, hit, changed = cand, h, True
                 break
             print(f"  {what}: passes")
     scene["replay_variants"] = variants
-    out = a.o or f"{a.inv}-{a.seed}.rad"
-    write_regression(scene, hit, out)
+    out = a.o or f"{a.inv}-{scene['seed']}.rad"
+    write_regression(scene, hit, out, a.note)
     print(f"written {out}")
     return 0
 
 
-def write_regression(scene, hit, path):
+def write_regression(scene, hit, path, note=None):
     hdr = [f"physfuzz regression: {hit['inv']}",
            f"found {datetime.date.today().isoformat()} by fuzz/physics/scenefuzz.py, seed {scene['seed']}, "
            f"kind {scene['kind']} ({'; '.join(scene.get('notes', []))})"[:990],
            f"what it showed: {hit['msg']}"[:990],
            f"replay: /usr/bin/python3 fuzz/physics/scenefuzz.py replay {os.path.basename(path)}",
            f"variants replayed: {', '.join(sorted(scene.get('replay_variants', {}))) or 'none (the base run)'}"]
+    for k in range(0, len(note or ""), 900):
+        hdr.append(("mechanism: " if k == 0 else "  ") + note[k:k + 900])
     with open(path, "w") as f:
         f.write(DW.write(scene, header=hdr))
+
+
+def failure_signature(msg):
+    """A short class of a solver-failure message."""
+    for key in ("Zeno", "CV_TOO_MUCH_WORK", "CV_ERR_FAILURE", "CV_CONV_FAILURE", "IDA_CONV_FAIL", "IDA_ERR_FAIL",
+                "IDA_TOO_MUCH_WORK", "CV_REPTD", "IDA_REPTD", "too much", "time limit"):
+        if key in msg:
+            if key == "Zeno":
+                last = msg.split("(last: ")[-1].split(")")[0] if "(last: " in msg else "?"
+                return f"Zeno ({last})"
+            if "at t = 0 s" in msg:
+                return key + " at t = 0"
+            return key
+    return msg[:40]
+
+
+def cmd_summary(a):
+    rep = json.load(open(os.path.join(a.dir, "report.json") if os.path.isdir(a.dir) else a.dir))
+    recs = rep["scenes"]
+    inv, kinds = tally(recs)
+    print(f"{len(recs)} scenes, {sum(1 for r in recs if r['violations'])} with violations, wall {rep['wall']:.0f} s")
+    keys = sorted(inv)
+    print("\nscenes violating each invariant, per kind:")
+    print("| kind | scenes | violating | " + " | ".join(keys) + " |")
+    print("|---|---|---|" + "---|" * len(keys))
+    for k in sorted(kinds):
+        d = kinds[k]
+        print(f"| {k} | {d['scenes']} | {d['violating']} | " + " | ".join(str(d['inv'].get(x, '')) for x in keys) + " |")
+    print(f"| all | {len(recs)} | {sum(1 for r in recs if r['violations'])} | " +
+          " | ".join(str(inv[x]) for x in keys) + " |")
+    sig = {}
+    for r in recs:
+        for v in r["violations"]:
+            if v["inv"] in ("a_solver_failure", "g_frame", "h_backend", "i_rtol", "a_timeout") and "exit" in v["msg"] \
+                    or v["inv"] in ("a_solver_failure", "a_timeout"):
+                s = (v["inv"], v["run"], failure_signature(v["msg"]))
+                sig.setdefault(s, []).append(r["seed"])
+    if sig:
+        print("\nrun failures by class (invariant, run, class: scenes):")
+        for s, seeds in sorted(sig.items(), key=lambda x: -len(x[1])):
+            print(f"  {s[0]} [{s[1]}] {s[2]}: {len(seeds)}  e.g. {seeds[:4]}")
+    if a.verbose:
+        for r in recs:
+            if r["violations"]:
+                print(f"\n{r['seed']} {r['kind']}: {'; '.join(r.get('notes', []))}")
+                for v in r["violations"]:
+                    print(f"    {v['inv']} [{v['run']}]: {v['msg'][:260]}")
+    return 0
 
 
 def cmd_deck(a):
@@ -618,10 +751,16 @@ def main(argv=None):
     q.add_argument("--out", default=None)
     q = sub.add_parser("minimise")
     common(q)
-    q.add_argument("--seed", type=int, required=True)
+    q.add_argument("--seed", type=int, default=None)
+    q.add_argument("--scene", default=None, help="a scene.json of a kept scene, or a deck with its scene")
     q.add_argument("--kind", default=None)
     q.add_argument("--inv", required=True)
+    q.add_argument("--note", default=None, help="a line on the mechanism for the deck's header")
+    q.add_argument("--keep-time", action="store_true", help="do not shorten the run")
     q.add_argument("-o", default=None)
+    q = sub.add_parser("summary")
+    q.add_argument("dir", help="a run's output folder or its report.json")
+    q.add_argument("-v", "--verbose", action="store_true")
     q = sub.add_parser("deck")
     q.add_argument("--seed", type=int, required=True)
     q.add_argument("--kind", default=None)
@@ -629,7 +768,7 @@ def main(argv=None):
     q.add_argument("-o", required=True)
     a = p.parse_args(argv)
     return {"run": cmd_run, "one": cmd_one, "replay": cmd_replay, "check": cmd_check, "minimise": cmd_minimise,
-            "deck": cmd_deck}[a.cmd](a)
+            "deck": cmd_deck, "summary": cmd_summary}[a.cmd](a)
 
 
 if __name__ == "__main__":

@@ -21,7 +21,7 @@ G0 = 9.81
 KINDS = {
     "sphere_drop": 3, "sphere_incline": 2, "ramp_wall": 2, "cradle": 2, "stack": 2,
     "box_floor": 3, "box_incline": 2, "box_box": 2, "meshbox": 2, "cylinder": 2,
-    "free": 3, "pendulum_wall": 1, "illposed": 1,
+    "free": 3, "pendulum_wall": 1, "illposed": 1, "belt": 2,
 }
 
 LAWS = ("t6lin", "t6tab", "t6hyst1", "t6hyst1n", "t6hyst2", "power")
@@ -278,7 +278,9 @@ def make_law(B, rng, W, m_red, v_imp, size, laws=LAWS, allow_visc=True, delta_re
             if rng.random() < 0.5:
                 fields["irdf"] = 2
         elif rng.random() < 0.15 and v_imp > 0.05:
+            # the restitution of a power law depends on the impact speed: give it
             fields["e_target"] = float(rng.uniform(0.3, 0.95))
+            fields["v_imp"] = float(v_imp)
         law["name"] = name
         return fields, law
     # TYPE6: a curve written normalised (x in units of delta, y in units of
@@ -1072,11 +1074,72 @@ def k_illposed(B, rng):
     return finish(B, L, E_s, math.sqrt(2 * gm * L), L, tend, extra={"overlap": float(depth)})
 
 
+def k_belt(B, rng):
+    """A body on a driven belt (a box body moving at an imposed speed, /IMPVEL
+    along x, its other motions held by /BCS), with friction, optionally held
+    back by a fixed wall: the work of the imposed velocity is the scene's
+    energy supply (energy_imposed)."""
+    what = str(rng.choice(["sphere", "box", "box", "meshbox"]))
+    s = pick_size(rng, 5e-3, 0.2)
+    gm = G0
+    B.s["gravity"] = [0.0, 0.0, -gm]
+    V = loguniform(rng, 0.01, 3.0) * float(rng.choice([-1.0, 1.0]))
+    tend = rng.uniform(0.2, 1.5)
+    wall = rng.random() < 0.4
+    span = abs(V) * tend + 10 * s
+    hb = s
+    belt_half = np.array([span * 2, 4 * s + span * 0.1, hb])
+    Mb = pick_mass(rng, 8 * np.prod(belt_half))
+    b_belt, s_belt = B.box(belt_half, Mb, (0.0, 0.0, -hb), np.eye(3), v=(V, 0.0, 0.0), label="belt")
+    fid = B.func([0.0, 1e3], [1.0, 1.0], label="constant 1 (belt speed, scaled)")
+    B.s["impvel"] = [{"body": b_belt, "dir": "X", "fct": fid, "scale": V}]
+    B.s["bcs"] = [{"body": b_belt, "trarot": "011 111"}]
+    B.s["driven"] = [b_belt]
+    pen0 = 0.0
+    if what == "sphere":
+        R = s
+        m = pick_mass(rng, 4 / 3 * math.pi * R ** 3)
+        fields, law = make_law(B, rng, m * gm, m, 0.0, R)
+        b, sb = B.sphere(R, m, (0.0, 0.0, R))
+        area = math.pi * R * R
+        half = np.array([R, R, R])
+    else:
+        half = np.array([s, s * rng.uniform(0.5, 1.0), s * rng.uniform(0.3, 1.0)])
+        m = pick_mass(rng, 8 * np.prod(half))
+        fields, law = make_law(B, rng, m * gm, m, 0.0, float(min(half)))
+        Q = rot_axis((0, 0, 1), rng.uniform(0, 2 * math.pi))
+        if what == "box":
+            b, sb = B.box(half, m, (0.0, 0.0, half[2]), Q)
+        else:
+            b, sb = B.meshbox(half, m, (0.0, 0.0, half[2]), Q, (int(rng.integers(1, 4)), int(rng.integers(1, 4))))
+        area = 4 * half[0] * half[1]
+    it = B.inter(sb, s_belt, fields, label="object on belt") if rng.random() < 0.5 else \
+        B.inter(s_belt, sb, fields, label="belt - object")
+    it["law_curve"] = law
+    fm = "t6" if rng.random() < 0.6 else "card"
+    add_friction(B, rng, it, law, fm, m * gm, m, abs(V), area)
+    if wall:
+        # a fixed wall downstream, facing the object
+        xw = math.copysign(float(np.linalg.norm(half)) * 1.5 + abs(V) * tend * 0.2, V)
+        sw = B.plane((xw, 0.0, 0.0), (-math.copysign(1.0, V), 0.0, 0.0), label="wall")
+        f2, law2 = make_law(B, rng, m * gm, m, abs(V), float(min(half)))
+        it2 = B.inter(sb, sw, f2, label="object against wall")
+        it2["law_curve"] = law2
+        add_friction(B, rng, it2, law2, fm, m * gm, m, abs(V), area)
+    # energy scale: the object's kinetic energy at the belt speed and its weight
+    # over its size (the belt's own kinetic energy is constant)
+    E_s = max(0.5 * m * V * V, m * gm * float(np.linalg.norm(half)))
+    B.s["notes"].append(f"{what} on a belt at {V:.3g} m/s, {'wall, ' if wall else ''}law {law['name']}, friction {fm}")
+    s_ = finish(B, 2 * float(max(half)), E_s, 2 * abs(V), float(np.linalg.norm(half)), tend)
+    s_["scales"]["m_total"] = m
+    return s_
+
+
 GENERATORS = {
     "sphere_drop": k_sphere_drop, "sphere_incline": k_sphere_incline, "ramp_wall": k_ramp_wall,
     "cradle": k_cradle, "stack": k_stack, "box_floor": k_box_floor, "box_incline": k_box_incline,
     "box_box": k_box_box, "meshbox": k_meshbox, "cylinder": k_cylinder, "free": k_free,
-    "pendulum_wall": k_pendulum_wall, "illposed": k_illposed,
+    "pendulum_wall": k_pendulum_wall, "illposed": k_illposed, "belt": k_belt,
 }
 
 

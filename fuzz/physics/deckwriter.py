@@ -11,11 +11,10 @@ unit (the unit-invariance variant). Fields without a fixed dimension
 written in cards whose header names /UNIT/9 (kg, m, s), as
 docs/case-format.md section 1 requires.
 
-Reals are written in 20 columns (19 characters and a blank) with the
-shortest representation that reads back to the same double (repr), falling
-back to fewer digits only when that does not fit (at least 13 significant
-digits with an exponent, 16 without), so the deck is the scene to the last
-bit or ulp in every field (the deck writer of
+Reals are written in 20 columns with the shortest representation that
+reads back to the same double (repr), falling back to fewer digits only when
+that does not fit (at least 14 significant digits with an exponent), so the
+deck is the scene to the last bit in almost every field (the deck writer of
 python/ricochet/deck.py keeps 12 digits, which is not enough for a
 millimetre scene 1 km from the origin).
 """
@@ -39,21 +38,22 @@ SI_UNIT_ID = 9          # the /UNIT card in kg, m, s of every deck
 
 
 def freal(v):
-    """A real in at most 19 characters (a blank between fields keeps the
-    deck readable), reading back to the same double when it can."""
+    """A real in at most 20 characters, reading back to the same double when
+    it can (repr; 17 significant digits can take all 20 columns, so two
+    fields may touch: the format is column-based)."""
     v = float(v)
     if not np.isfinite(v):
         raise ValueError(f"non-finite value {v} in a scene")
     if v == 0.0:
         return "0.0"
     s = repr(v)
-    if len(s) <= 19:
+    if len(s) <= 20:
         return s
     for p in range(16, 5, -1):
         s = f"{v:.{p}g}"
-        if len(s) <= 19:
+        if len(s) <= 20:
             return s
-    raise ValueError(f"cannot write {v} in 19 columns")
+    raise ValueError(f"cannot write {v} in 20 columns")
 
 
 class Writer:

@@ -613,7 +613,8 @@ def cmd_minimise(a):
             if cand is None:
                 continue
             h = still_fails(cand, a.inv, variants, ricochet, a.timeout)
-            if h and h["inv"] in ("a_solver_failure", "a_timeout", "g_frame", "h_backend") and \
+            if h and h["inv"] in ("a_solver_failure", "a_timeout", "g_frame", "g_units", "h_backend") and \
+                    ("exit" in h["msg"] or "exit" in hit0["msg"]) and \
                     failure_signature(h["msg"]) != failure_signature(hit0["msg"]):
                 print(f"  {what}: fails otherwise ({h['msg'][:100]})")
                 continue
@@ -648,7 +649,7 @@ def write_regression(scene, hit, path, note=None):
 def failure_signature(msg):
     """A short class of a solver-failure message."""
     for key in ("Zeno", "CV_TOO_MUCH_WORK", "CV_ERR_FAILURE", "CV_CONV_FAILURE", "IDA_CONV_FAIL", "IDA_ERR_FAIL",
-                "IDA_TOO_MUCH_WORK", "CV_REPTD", "IDA_REPTD", "too much", "time limit"):
+                "IDA_TOO_MUCH_WORK", "CV_REPTD", "IDA_REP_RES", "CV_ILL_INPUT", "IDA_ILL_INPUT", "too much", "time limit"):
         if key in msg:
             if key == "Zeno":
                 last = msg.split("(last: ")[-1].split(")")[0] if "(last: " in msg else "?"

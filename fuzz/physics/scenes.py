@@ -567,8 +567,12 @@ def k_cradle(B, rng):
     flaw = None
     if on_floor:
         ff, flaw = make_law(B, rng, m * gm, m, 0.0, R, laws=("t6lin", "power"))
+    gap = 0.0
     for i in range(n):
-        gap = 0.0 if touching else R * loguniform(rng, 1e-4, 0.2) * i
+        # touching: centres x0 + i*2R exactly as written; gaps: each pair apart
+        # by its own gap of 1e-4 .. 0.2 R (cumulative, so no pair overlaps)
+        if not touching and i > 0:
+            gap += R * loguniform(rng, 1e-4, 0.2)
         x = x0 + i * 2 * R + gap
         vb = (v0, 0.0, 0.0) if i == 0 else (0.0, 0.0, 0.0)
         b, s = B.sphere(R, m, (x, 0.0, z - pen0), vb)

@@ -5,7 +5,7 @@ one and why.
 
 A violation is a dict: {"inv": key, "run": run name, "msg": text, plus
 numbers}. Keys:
-  a_solver_failure a_input_error a_crash a_incomplete a_timeout a_slow
+  a_solver_failure a_input_error a_crash a_incomplete a_timeout a_slow a_output_size
   start_not_refused
   b_energy_created
   c_damping c_hysteresis c_friction c_coupling_damping
@@ -158,8 +158,12 @@ def mechanical_energy(scene, res):
 # single-run invariants
 
 
-def check_exit(scene, run, rc, stderr, timed_out):
+def check_exit(scene, run, rc, stderr, timed_out, stopped=0.0):
+    """a: the exit code (stopped: the runner stopped the run, its results
+    file too large: reported by the runner as a_output_size)."""
     out = []
+    if stopped:
+        return out
     lines = [ln for ln in (stderr or "").splitlines() if ln.strip() and "warning" not in ln.lower()]
     # the program's own message first (CVODE's warnings may precede it)
     main = [ln for ln in lines if ln.startswith("ricochet:")]

@@ -111,32 +111,52 @@ def scene_extent(scene):
 # running
 
 
+MAX_OUTPUT_MB = 200.0   # a results file larger than this stops the run (a_output_size)
+KEEP_NC_MB = 20.0       # results files kept with a violating scene, in all
+
+
 def run_deck(text, workdir, name, ricochet, args=(), timeout=60.0):
     """Write and run one deck. Returns a dict with the exit code, stderr,
-    wall time, whether it timed out, and the loaded results."""
+    wall time, whether it timed out or outgrew MAX_OUTPUT_MB, and the loaded
+    results. The results file is watched while the run goes: a scene of a
+    few seconds has no business writing hundreds of megabytes (a disk filled
+    by one run stops every other one)."""
     deck = os.path.join(workdir, name + ".rad")
     out = os.path.join(workdir, name + ".nc")
     with open(deck, "w") as f:
         f.write(text)
     cmd = [ricochet, "run", deck, "-o", out, "-q"] + list(args)
     t0 = time.time()
-    p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=workdir)
+    errf = open(os.path.join(workdir, name + ".stderr"), "w+")
+    p = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=errf, cwd=workdir)
     timed_out = 0.0
-    try:
-        so, se = p.communicate(timeout=timeout)
-    except subprocess.TimeoutExpired:
-        timed_out = timeout
-        p.send_signal(signal.SIGTERM)     # ricochet closes its results file on SIGTERM
+    too_large = 0.0
+    while p.poll() is None:
         try:
-            so, se = p.communicate(timeout=10)
+            p.wait(timeout=0.2)
         except subprocess.TimeoutExpired:
-            p.kill()
-            so, se = p.communicate()
+            pass
+        size = os.path.getsize(out) / 1e6 if os.path.exists(out) else 0.0
+        if time.time() - t0 > timeout or size > MAX_OUTPUT_MB:
+            if size > MAX_OUTPUT_MB:
+                too_large = size
+            else:
+                timed_out = timeout
+            p.send_signal(signal.SIGTERM)     # ricochet closes its results file on SIGTERM
+            try:
+                p.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                p.kill()
+                p.wait()
+            break
     wall = time.time() - t0
-    res = INV.load(out) if os.path.exists(out) else None
+    errf.seek(0)
+    se = errf.read()[-20000:]
+    errf.close()
+    res = INV.load(out) if (os.path.exists(out) and os.path.getsize(out) <= 2e6 * MAX_OUTPUT_MB) else None
     steps = int(res["attrs"].get("stats_steps", -1)) if res else -1
-    return {"name": name, "rc": p.returncode, "stderr": se, "wall": wall, "timed_out": timed_out, "res": res,
-            "steps": steps, "args": list(args), "deck": deck}
+    return {"name": name, "rc": p.returncode, "stderr": se, "wall": wall, "timed_out": timed_out,
+            "too_large": too_large, "res": res, "steps": steps, "args": list(args), "deck": deck}
 
 
 def base_args(scene):
@@ -157,6 +177,10 @@ def process(scene, variants, ricochet, timeout=60.0, keep_dir=None, keep_all=Fal
         runs[name] = r
         rec["runs"][name] = {"rc": r["rc"], "wall": round(r["wall"], 3), "steps": r["steps"], "args": r["args"],
                              "timed_out": r["timed_out"]}
+        if r["too_large"]:
+            V.append(INV.viol("a_output_size", name, f"the results file grew past {MAX_OUTPUT_MB:g} MB "
+                              f"({r['too_large']:.0f} MB after {r['wall']:.1f} s of a {scene['run']['tend']:.3g} s "
+                              f"scene, {r['steps']} steps): run stopped", size_mb=r["too_large"]))
         if log:
             log(f"  run {name:8s} exit {r['rc']}  {r['wall']:.2f} s  {r['steps']} steps  {' '.join(args)}")
         return r
@@ -164,7 +188,7 @@ def process(scene, variants, ricochet, timeout=60.0, keep_dir=None, keep_all=Fal
     try:
         text = base_text if base_text is not None else DW.write(scene)
         b = do("base", text, base_args(scene))
-        V += INV.check_exit(scene, "base", b["rc"], b["stderr"], b["timed_out"])
+        V += INV.check_exit(scene, "base", b["rc"], b["stderr"], b["timed_out"], b["too_large"])
         if scene.get("expect") == "input_error":
             if b["rc"] == 0 and b["res"] is not None:
                 # what the run made of the overlap: the largest speed reached
@@ -179,8 +203,7 @@ def process(scene, variants, ricochet, timeout=60.0, keep_dir=None, keep_all=Fal
             return rec
         tight = do("tight", text, base_args(scene) + ["--rtol", repr(RTOL_TIGHT)])
         if tight["rc"] != 0 or tight["res"] is None:
-            V += [dict(v, inv=v["inv"], run="tight") for v in INV.check_exit(scene, "tight", tight["rc"], tight["stderr"],
-                                                                              tight["timed_out"])]
+            V += [dict(v, inv=v["inv"], run="tight") for v in INV.check_exit(scene, "tight", tight["rc"], tight["stderr"], tight["timed_out"], tight["too_large"])]
             return rec
         V += INV.check_single(scene, "tight", tight["res"], tight["rc"])
         if "frame" in variants:
@@ -192,7 +215,7 @@ def process(scene, variants, ricochet, timeout=60.0, keep_dir=None, keep_all=Fal
             vs = DW.transform(scene, fp["R"], fp["t"])
             r = do("frame", DW.write(vs), base_args(scene))
             V += [dict(v, inv="g_frame", msg=f"frame variant: {v['msg']}") for v in
-                  INV.check_exit(vs, "frame", r["rc"], r["stderr"], r["timed_out"])]
+                  INV.check_exit(vs, "frame", r["rc"], r["stderr"], r["timed_out"], r["too_large"])]
             if r["res"] is not None:
                 V += INV.check_single(vs, "frame", r["res"], r["rc"])
                 viol = INV.compare(scene, "g_frame", b["res"], r["res"], tight["res"], frame=vs["frame"])
@@ -210,7 +233,7 @@ def process(scene, variants, ricochet, timeout=60.0, keep_dir=None, keep_all=Fal
             u = tuple(variants["units"])
             r = do("units", DW.write(scene, units=u), base_args(scene))
             V += [dict(v, inv="g_units", msg=f"units {u}: {v['msg']}") for v in
-                  INV.check_exit(scene, "units", r["rc"], r["stderr"], r["timed_out"])]
+                  INV.check_exit(scene, "units", r["rc"], r["stderr"], r["timed_out"], r["too_large"])]
             if r["res"] is not None:
                 V += INV.check_single(scene, "units", r["res"], r["rc"])
                 viol = INV.compare(scene, "g_units", b["res"], r["res"], tight["res"])
@@ -224,7 +247,7 @@ def process(scene, variants, ricochet, timeout=60.0, keep_dir=None, keep_all=Fal
         if "ida" in variants and not scene.get("joints"):
             r = do("ida", text, ["--method", "ida"])
             V += [dict(v, inv="h_backend", msg=f"IDA: {v['msg']}") for v in
-                  INV.check_exit(scene, "ida", r["rc"], r["stderr"], r["timed_out"])]
+                  INV.check_exit(scene, "ida", r["rc"], r["stderr"], r["timed_out"], r["too_large"])]
             if r["res"] is not None:
                 V += INV.check_single(scene, "ida", r["res"], r["rc"])
                 V += INV.compare(scene, "h_backend", b["res"], r["res"], tight["res"])
@@ -236,7 +259,7 @@ def process(scene, variants, ricochet, timeout=60.0, keep_dir=None, keep_all=Fal
                 V += INV.check_rtol(scene, b["res"], r["res"], tight["res"])
             else:
                 V += [dict(v, inv="i_rtol", msg=f"rtol 1e-6: {v['msg']}") for v in
-                      INV.check_exit(scene, "loose", r["rc"], r["stderr"], r["timed_out"])]
+                      INV.check_exit(scene, "loose", r["rc"], r["stderr"], r["timed_out"], r["too_large"])]
         return rec
     finally:
         for v in V:
@@ -244,9 +267,21 @@ def process(scene, variants, ricochet, timeout=60.0, keep_dir=None, keep_all=Fal
                 if isinstance(val, (np.floating, np.integer)):
                     v[k] = val.item()
         if keep_dir and (V or keep_all):
+            # the decks always (they reproduce everything), the results files
+            # up to KEEP_NC_MB in all, the base run's first
             dst = os.path.join(keep_dir, f"{scene['seed']}-{scene['kind']}")
             shutil.rmtree(dst, ignore_errors=True)
-            shutil.copytree(work, dst)
+            os.makedirs(dst)
+            budget = KEEP_NC_MB * 1e6
+            names = sorted(os.listdir(work), key=lambda n: (not n.startswith("base."), n))
+            for n in names:
+                src_path = os.path.join(work, n)
+                if n.endswith(".nc"):
+                    size = os.path.getsize(src_path)
+                    if size > budget:
+                        continue
+                    budget -= size
+                shutil.copy2(src_path, os.path.join(dst, n))
             with open(os.path.join(dst, "scene.json"), "w") as f:
                 json.dump(scene, f, indent=1)
             with open(os.path.join(dst, "violations.json"), "w") as f:

@@ -50,8 +50,16 @@ BIN     := $(BUILD)/ricochet
 TESTBIN := $(BUILD)/run_tests
 REPLAY  := $(BUILD)/fuzz_replay
 FUZZ_SECONDS ?= 60
+# the physics scene fuzzer (fuzz/physics/README.md): scenes, first seed, jobs;
+# PHYSFUZZ_STRICT=1 makes its make-check sample count failures (0: XFAIL)
+SCENES  ?= 200
+SEED    ?= 1
+JOBS    ?= 2
+PHYSFUZZ_OUT ?= $(BUILD)/physfuzz
+PHYSFUZZ_STRICT ?= 0
+export PHYSFUZZ_STRICT
 
-.PHONY: all lib demo check validate asan tsan valgrind bench install uninstall clean deps test fuzz FORCE
+.PHONY: all lib demo check validate asan tsan valgrind bench install uninstall clean deps test fuzz physics-fuzz FORCE
 
 all: $(BIN) $(TESTBIN) $(SHLIB) $(REPLAY)
 
@@ -190,6 +198,14 @@ fuzz:
 	clang $(CSTD) $(WARN) -Iinclude $(FUZZ_CFLAGS) -fsanitize=fuzzer -o build-fuzz/fuzz_deck \
 	    fuzz/fuzz_deck.c build-fuzz/libricochet.a $(LDLIBS)
 	@bash fuzz/run.sh build-fuzz $(FUZZ_SECONDS)
+
+# Random physics scenes run and checked against physical invariants
+# (energy, dissipation, penetration, momentum, frame/unit invariance,
+# backends, rtol convergence): a tally line and $(PHYSFUZZ_OUT)/report.json,
+# the decks and results of every violating scene kept there.
+physics-fuzz: all
+	/usr/bin/python3 fuzz/physics/scenefuzz.py run --scenes $(SCENES) --seed $(SEED) --jobs $(JOBS) \
+	    --out $(PHYSFUZZ_OUT) --ricochet $(BIN) $(if $(filter 1,$(PHYSFUZZ_STRICT)),--strict)
 
 bench: deps
 	@$(MAKE) --no-print-directory all

@@ -1,0 +1,482 @@
+"""Invariants of one run (a..e, f) and of pairs of runs (g, h, i), checked
+from the netCDF results (docs/output-format.md). Every tolerance is derived
+from the scene's own scales and the run's tolerances; README.md gives each
+one and why.
+
+A violation is a dict: {"inv": key, "run": run name, "msg": text, plus
+numbers}. Keys:
+  a_solver_failure a_input_error a_crash a_incomplete a_timeout a_slow a_output_size
+  start_not_refused
+  b_energy_created
+  c_damping c_hysteresis c_friction c_coupling_damping
+  d_penetration d_centres
+  e_nonfinite
+  f_linear_momentum f_angular_momentum
+  g_frame g_frame_events g_frame_slow g_units g_units_events
+  h_backend h_backend_events
+  i_rtol
+"""
+# SPDX-License-Identifier: GPL-3.0-or-later
+import math
+
+import numpy as np
+
+import scenes as SC
+
+C_YARD = 10.0          # variant vs base against C x (base vs tight)
+REL_MOTION = 1e-5      # of L: the motion's tolerance (SPEC 14)
+ENERGY_RTOL_FACTOR = 100.0   # energy tolerance = 100 rtol E_s
+LIN_MOM_REL = 1e-8
+ANG_MOM_REL = 1e-7
+PEN_FORCE_FACTOR = 1e3
+DIV_REL = 1e-3          # divergence threshold of the rtol study (of L)
+RTOL_FLOOR_REL = 1e-7   # below this (of L) differences are not compared
+
+CHANNELS = {"energy_damping": "c_damping", "energy_hysteresis": "c_hysteresis",
+            "energy_friction": "c_friction", "energy_coupling_damping": "c_coupling_damping"}
+
+
+# --------------------------------------------------------------------------
+# results
+
+
+def load(path):
+    """The arrays the checks need from a results file (None if unreadable)."""
+    import netCDF4
+    try:
+        d = netCDF4.Dataset(path)
+    except OSError:
+        return None
+    try:
+        r = {"attrs": {k: d.getncattr(k) for k in d.ncattrs()}}
+
+        def arr(name):
+            if name not in d.variables:
+                return None
+            v = d.variables[name]
+            v.set_auto_mask(False)
+            return np.array(v[:])
+        for name in ("time", "at_event", "body_id", "body_fixed", "body_position", "body_quaternion", "body_velocity",
+                     "body_angular_velocity", "inter_id", "inter_penetration", "inter_mode", "inter_force_normal",
+                     "event_time", "event_penetration", "event_force_normal", "event_normal_speed", "energy_kinetic", "energy_potential", "energy_contact_work", "energy_damping",
+                     "energy_friction_work", "energy_contact_stored", "energy_hysteresis", "energy_friction",
+                     "energy_coupling_elastic", "energy_coupling_damping", "energy_catenary", "energy_imposed",
+                     "energy_total", "impact_speed_in", "impact_peak_force"):
+            r[name] = arr(name)
+        for name in ("event_kind", "event_element"):
+            r[name] = list(d.variables[name][:]) if name in d.variables else []
+        for name in ("inter_type",):
+            r[name] = list(d.variables[name][:]) if name in d.variables else []
+        return r
+    finally:
+        d.close()
+
+
+# --------------------------------------------------------------------------
+# helpers
+
+
+def quat_mats(q):
+    """(..., 4) quaternions (w, x, y, z) -> (..., 3, 3) rotation matrices."""
+    q = q / np.linalg.norm(q, axis=-1, keepdims=True)
+    w, x, y, z = q[..., 0], q[..., 1], q[..., 2], q[..., 3]
+    R = np.empty(q.shape[:-1] + (3, 3))
+    R[..., 0, 0] = 1 - 2 * (y * y + z * z)
+    R[..., 0, 1] = 2 * (x * y - w * z)
+    R[..., 0, 2] = 2 * (x * z + w * y)
+    R[..., 1, 0] = 2 * (x * y + w * z)
+    R[..., 1, 1] = 1 - 2 * (x * x + z * z)
+    R[..., 1, 2] = 2 * (y * z - w * x)
+    R[..., 2, 0] = 2 * (x * z - w * y)
+    R[..., 2, 1] = 2 * (y * z + w * x)
+    R[..., 2, 2] = 1 - 2 * (x * x + y * y)
+    return R
+
+
+def rot_angle(Ra, Rb):
+    """Angle of the rotation Ra^T Rb, (..., 3, 3) each."""
+    M = np.einsum("...ji,...jk->...ik", Ra, Rb)
+    s = 0.5 * np.sqrt((M[..., 2, 1] - M[..., 1, 2]) ** 2 + (M[..., 0, 2] - M[..., 2, 0]) ** 2 +
+                      (M[..., 1, 0] - M[..., 0, 1]) ** 2)
+    c = 0.5 * (M[..., 0, 0] + M[..., 1, 1] + M[..., 2, 2] - 1.0)
+    return np.arctan2(s, c)
+
+
+def body_radius(b):
+    sh = b.get("shape", {})
+    t = sh.get("type")
+    if t == "sphere":
+        return sh["r"]
+    if t == "box":
+        return float(np.linalg.norm(sh["half"]))
+    if t == "cyl":
+        return math.hypot(sh["r"], sh["len"] / 2 + sh["r"] * sh.get("iend", 0))
+    return 0.0
+
+
+def free_bodies(scene):
+    return [b for b in scene["bodies"]]
+
+
+def viol(inv, run, msg, **kw):
+    d = {"inv": inv, "run": run, "msg": msg}
+    d.update({k: (float(v) if isinstance(v, (np.floating, float)) else v) for k, v in kw.items()})
+    return d
+
+
+def energy_tol(scene, res):
+    rtol = float(res["attrs"].get("rtol", 1e-8))
+    return ENERGY_RTOL_FACTOR * rtol * scene["scales"]["E_s"]
+
+
+def mechanical_energy(scene, res):
+    """Kinetic (from the bodies' states and the scene's masses and inertia),
+    potential (from the positions and the scene's gravity), and the stored
+    contact and coupling energies of the ledger."""
+    pos, vel, om = res["body_position"], res["body_velocity"], res["body_angular_velocity"]
+    g = np.asarray(scene.get("gravity", [0, 0, 0]), float)
+    ek = np.zeros(len(res["time"]))
+    ep = np.zeros(len(res["time"]))
+    ids = list(res["body_id"])
+    for b in scene["bodies"]:
+        k = ids.index(b["id"])
+        if res["body_fixed"] is not None and res["body_fixed"][k]:
+            continue
+        m, J = b["mass"], np.asarray(b["J"], float)
+        v, w = vel[:, k, :], om[:, k, :]
+        ek += 0.5 * m * np.einsum("ti,ti->t", v, v) + 0.5 * np.einsum("ti,ij,tj->t", w, J, w)
+        ep += -m * pos[:, k, :] @ g
+    stored = np.zeros(len(res["time"]))
+    for name in ("energy_contact_stored", "energy_coupling_elastic", "energy_catenary"):
+        if res.get(name) is not None:
+            stored = stored + res[name]
+    supply = -res["energy_imposed"] if res.get("energy_imposed") is not None else 0.0
+    return ek, ep, stored, supply
+
+
+# --------------------------------------------------------------------------
+# single-run invariants
+
+
+def check_exit(scene, run, rc, stderr, timed_out, stopped=0.0):
+    """a: the exit code (stopped: the runner stopped the run, its results
+    file too large: reported by the runner as a_output_size)."""
+    out = []
+    if stopped:
+        return out
+    lines = [ln for ln in (stderr or "").splitlines() if ln.strip() and "warning" not in ln.lower()]
+    # the program's own message first (CVODE's warnings may precede it)
+    main = [ln for ln in lines if ln.startswith("ricochet:")]
+    msg = " | ".join(main or lines)[:600]
+    if scene.get("expect") == "input_error":
+        if rc != 2:
+            out.append(viol("start_not_refused", run, f"deliberately ill-posed start (overlap "
+                            f"{scene['scales'].get('overlap', 0):.3g} m) not refused: exit {rc}" +
+                            (f": {msg}" if msg else ""), exit=rc))
+        return out
+    if timed_out:
+        out.append(viol("a_timeout", run, f"run exceeded the time limit ({timed_out:g} s)"))
+    elif rc == 3:
+        out.append(viol("a_solver_failure", run, f"exit 3: {msg}", exit=rc))
+    elif rc == 2:
+        out.append(viol("a_input_error", run, f"exit 2 on a well-posed scene: {msg}", exit=rc))
+    elif rc != 0:
+        out.append(viol("a_crash", run, f"exit {rc}: {msg}", exit=rc))
+    return out
+
+
+def check_single(scene, run, res, rc):
+    """Invariants a (complete), b, c, d, e, f on one run's results."""
+    out = []
+    if res is None or res["time"] is None or len(res["time"]) == 0:
+        if rc == 0:
+            out.append(viol("a_incomplete", run, "exit 0 but no readable results"))
+        return out
+    A = res["attrs"]
+    t = res["time"]
+    if rc == 0:
+        if A.get("complete") != "yes" or abs(t[-1] - scene["run"]["tend"]) > 1e-9 * scene["run"]["tend"]:
+            out.append(viol("a_incomplete", run, f"exit 0 but complete = {A.get('complete')}, "
+                            f"last record at {t[-1]:.9g} s of {scene['run']['tend']:.9g}"))
+    # e: finite values
+    bad = []
+    for name, v in res.items():
+        if name in ("attrs", "event_kind", "event_element", "inter_type", "impact_speed_in", "impact_peak_force"):
+            continue
+        if isinstance(v, np.ndarray) and v.dtype.kind == "f" and not np.all(np.isfinite(v)):
+            k = int(np.argmax(~np.all(np.isfinite(v.reshape(len(v), -1)), axis=1))) if v.ndim and len(v) else 0
+            bad.append(f"{name} (first at record {k}, t = {t[min(k, len(t) - 1)]:.6g} s)")
+    if bad:
+        out.append(viol("e_nonfinite", run, "non-finite values: " + ", ".join(bad[:5])))
+        return out
+    sc = scene["scales"]
+    tolE = energy_tol(scene, res)
+    # b: no energy created
+    ek, ep, st, supply = mechanical_energy(scene, res)
+    emech = ek + ep + st
+    excess = emech - emech[0] - supply
+    k = int(np.argmax(excess))
+    if excess[k] > tolE:
+        out.append(viol("b_energy_created", run,
+                        f"kinetic + potential + stored rose by {excess[k]:.4g} J above its initial {emech[0]:.4g} J "
+                        f"at t = {t[k]:.6g} s (E_s = {sc['E_s']:.4g} J, tolerance {tolE:.3g} J; "
+                        f"{excess[k] / sc['E_s']:.3g} E_s)",
+                        value=excess[k], tol=tolE, t=t[k], E_s=sc["E_s"], E0=emech[0]))
+    # c: dissipation channels non-decreasing
+    for name, key in CHANNELS.items():
+        c = res.get(name)
+        if c is None:
+            continue
+        drop = np.maximum.accumulate(c) - c
+        k = int(np.argmax(drop))
+        if drop[k] > tolE:
+            out.append(viol(key, run, f"{name} decreased by {drop[k]:.4g} J (to {c[k]:.4g} J at t = {t[k]:.6g} s; "
+                            f"min {c.min():.4g} J; tolerance {tolE:.3g} J, E_s = {sc['E_s']:.4g} J)",
+                            value=drop[k], tol=tolE, t=t[k], minimum=float(c.min())))
+    # d: penetration bounded
+    out += check_penetration(scene, run, res)
+    # f: momentum
+    out += check_momentum(scene, run, res)
+    return out
+
+
+def pen_bound(scene, it):
+    """The penetration at which the interface's elastic law reaches 1e3 x
+    the larger of the scene's weight and the impact force at its speed, and
+    the geometric bound (half the thinner body's thickness)."""
+    sc = scene["scales"]
+    law = it["law_curve"]
+    M = sc["m_total"]
+    W = M * sc["g"]
+    v = sc["v"]
+    p_imp = SC.law_pen_at_energy(law, 0.5 * M * v * v)
+    F_imp = float(SC.law_force(law, p_imp)) if np.isfinite(p_imp) else math.inf
+    F = PEN_FORCE_FACTOR * max(W, F_imp)
+    p_law = SC.law_pen_at_force(law, F)
+    sh = scene["shapes"]
+    h1 = sh[str(it["s1"])]["half_thickness"]
+    h2 = sh[str(it["s2"])]["half_thickness"]
+    if sh[str(it["s1"])]["type"] == "sphere" and sh[str(it["s2"])]["type"] == "sphere":
+        p_geo = 0.5 * (h1 + h2)
+    else:
+        p_geo = min(h1, h2)
+    return p_law, p_geo, F
+
+
+def check_penetration(scene, run, res):
+    out = []
+    pen = res.get("inter_penetration")
+    if pen is None or pen.size == 0:
+        return out
+    ids = list(res["inter_id"])
+    t = res["time"]
+    for it in scene["inters"]:
+        if it["id"] not in ids:
+            continue
+        p = pen[:, ids.index(it["id"])]
+        p_law, p_geo, F = pen_bound(scene, it)
+        bound = min(p_law, p_geo)
+        k = int(np.argmax(p))
+        if p[k] > bound:
+            out.append(viol("d_penetration", run,
+                            f"{it.get('label', '')} (/INTER/{it['law'].upper()}/{it['id']}): penetration {p[k]:.4g} m at "
+                            f"t = {t[k]:.6g} s beyond {bound:.4g} m ({'law at 1e3 x the load: ' + format(F, '.3g') + ' N' if p_law <= p_geo else 'half the thinner body'})",
+                            value=p[k], bound=bound, t=t[k], inter=it["id"]))
+    # centres of two spheres in contact never closer than (R1 + R2)/2
+    surf = {f["id"]: f for f in scene["surfaces"]}
+    bids = list(res["body_id"])
+    pos = res["body_position"]
+    for it in scene["inters"]:
+        a, b = surf[it["s1"]], surf[it["s2"]]
+        if a["type"] != "sphere" or b["type"] != "sphere" or not a.get("body") or not b.get("body"):
+            continue
+        d = np.linalg.norm(pos[:, bids.index(a["body"])] - pos[:, bids.index(b["body"])], axis=1)
+        lim = 0.5 * (a["r"] + b["r"])
+        k = int(np.argmin(d))
+        if d[k] < lim:
+            out.append(viol("d_centres", run, f"sphere centres of /INTER/{it['law'].upper()}/{it['id']} "
+                            f"{d[k]:.4g} m apart at t = {t[k]:.6g} s (radii {a['r']:.4g}, {b['r']:.4g} m)",
+                            value=d[k], bound=lim, t=t[k], inter=it["id"]))
+    return out
+
+
+def momentum_applies(scene):
+    g = np.asarray(scene.get("gravity", [0, 0, 0]), float)
+    if np.any(g != 0.0) or scene.get("joints"):
+        return False
+    return all(f.get("body") for f in scene["surfaces"])
+
+
+def momenta(scene, res):
+    ids = list(res["body_id"])
+    c0 = None
+    M = 0.0
+    for b in scene["bodies"]:
+        M += b["mass"]
+    c0 = sum(b["mass"] * np.asarray(b["x"], float) for b in scene["bodies"]) / M
+    P = 0.0
+    L = 0.0
+    for b in scene["bodies"]:
+        k = ids.index(b["id"])
+        x, v, w = res["body_position"][:, k], res["body_velocity"][:, k], res["body_angular_velocity"][:, k]
+        R = quat_mats(res["body_quaternion"][:, k])
+        P = P + b["mass"] * v
+        Jw = np.einsum("ij,tj->ti", np.asarray(b["J"], float), w)
+        L = L + b["mass"] * np.cross(x - c0, v) + np.einsum("tij,tj->ti", R, Jw)
+    return P, L, c0
+
+
+def check_momentum(scene, run, res):
+    if not momentum_applies(scene):
+        return []
+    out = []
+    sc = scene["scales"]
+    P, L, c0 = momenta(scene, res)
+    t = res["time"]
+    Ps = sum(b["mass"] for b in scene["bodies"]) * sc["v"]
+    Ls = sum(b["mass"] * sc["v"] * (np.linalg.norm(np.asarray(b["x"]) - c0) + sc["L"]) for b in scene["bodies"])
+    dP = np.linalg.norm(P - P[0], axis=1)
+    dL = np.linalg.norm(L - L[0], axis=1)
+    k = int(np.argmax(dP))
+    if dP[k] > LIN_MOM_REL * Ps:
+        out.append(viol("f_linear_momentum", run, f"linear momentum changed by {dP[k]:.4g} kg m/s at t = {t[k]:.6g} s "
+                        f"({dP[k] / Ps:.3g} of the scale {Ps:.4g})", value=dP[k] / Ps, t=t[k]))
+    k = int(np.argmax(dL))
+    if dL[k] > ANG_MOM_REL * Ls:
+        out.append(viol("f_angular_momentum", run, f"angular momentum changed by {dL[k]:.4g} kg m^2/s at t = {t[k]:.6g} s "
+                        f"({dL[k] / Ls:.3g} of the scale {Ls:.4g})", value=dL[k] / Ls, t=t[k]))
+    return out
+
+
+# --------------------------------------------------------------------------
+# comparisons of two runs
+
+
+def output_records(res):
+    """Indices of the records at output times, keyed by their output index."""
+    dt = float(res["attrs"]["dt_out"])
+    t = res["time"]
+    keep = np.nonzero(res["at_event"] == 0)[0]
+    keys = np.rint(t[keep] / dt).astype(np.int64)
+    ok = np.abs(t[keep] - keys * dt) <= 1e-6 * dt + 1e-12 * abs(t[keep])
+    return dict(zip(keys[ok].tolist(), keep[ok].tolist()))
+
+
+def poses(res, scene, frame=None):
+    """Positions and rotation matrices of the scene's bodies, (T, B, 3) and
+    (T, B, 3, 3), mapped back to the base frame when frame = (R, t)."""
+    ids = list(res["body_id"])
+    k = [ids.index(b["id"]) for b in scene["bodies"]]
+    x = res["body_position"][:, k]
+    R = quat_mats(res["body_quaternion"][:, k])
+    if frame is not None:
+        Rf, tf = np.asarray(frame["R"], float), np.asarray(frame["t"], float)
+        x = (x - tf) @ Rf
+        R = np.einsum("ji,tbjk,kl->tbil", Rf, R, Rf)
+    return x, R
+
+
+def distance(ra, rb, scene, frame_b=None):
+    """D(t) at the output times both runs have: max over bodies of
+    |dx| + radius x rotation angle. Returns (times, D)."""
+    ka, kb = output_records(ra), output_records(rb)
+    common = sorted(set(ka) & set(kb))
+    if not common:
+        return np.zeros(0), np.zeros(0)
+    ia = [ka[c] for c in common]
+    ib = [kb[c] for c in common]
+    xa, Ra = poses(ra, scene)
+    xb, Rb = poses(rb, scene, frame_b)
+    xa, Ra, xb, Rb = xa[ia], Ra[ia], xb[ib], Rb[ib]
+    rad = np.array([body_radius(b) for b in scene["bodies"]])
+    D = np.linalg.norm(xa - xb, axis=2) + rad[None, :] * np.abs(rot_angle(Ra, Rb))
+    return ra["time"][ia], D.max(axis=1)
+
+
+def compare(scene, key, base, var, yard, frame=None, extra_yard=None):
+    """Variant against base with the yardstick base vs tight: at every output
+    time D(var, base) <= C x max_{s <= t} D(base, tight)(s) + 1e-5 L."""
+    L = scene["scales"]["L"]
+    tv, Dv = distance(base, var, scene, frame)
+    ty, Dy = distance(base, yard, scene)
+    if len(tv) == 0:
+        return [viol(key, key, "no output time in common with the base")]
+    Y = np.zeros_like(Dv)
+    if len(ty):
+        Yrun = np.maximum.accumulate(Dy)
+        Y = np.interp(tv, ty, Yrun, right=Yrun[-1])
+        # beyond the yardstick's last common time nothing is known: no bound
+        Y[tv > ty[-1]] = np.inf
+    if extra_yard is not None:
+        te, De = extra_yard
+        if len(te):
+            Ye = np.interp(tv, te, np.maximum.accumulate(De), right=np.inf)
+            Y = np.maximum(Y, Ye)
+    allowed = C_YARD * Y + REL_MOTION * L
+    ex = Dv / allowed
+    k = int(np.argmax(ex))
+    if ex[k] > 1.0:
+        return [viol(key, key, f"motion differs from the base by {Dv[k]:.4g} m at t = {tv[k]:.6g} s; allowed "
+                     f"{allowed[k]:.4g} m (10 x base-vs-tight {Y[k]:.3g} m + 1e-5 L, L = {L:.4g} m)",
+                     value=Dv[k], allowed=allowed[k], t=tv[k], ratio=ex[k], max_diff=float(Dv.max()))]
+    return []
+
+
+EVENT_KINDS = ("contact_close", "contact_open", "contact_separate")
+
+
+def event_counts(res):
+    """Counts of the contact events (impacts, releases, separations) after
+    t = 0. The modes decided at t = 0 are left out: a touching start is
+    classified by the sign of a gap that is a rounding error (1e-13 m) in
+    the moved scene, with or without a contact_close event at t = 0 for the
+    same motion (README, invariant g)."""
+    c = {}
+    for t, k, e in zip(res["event_time"], res["event_kind"], res["event_element"]):
+        if k not in EVENT_KINDS or not t > 0.0:
+            continue
+        c[(k, e)] = c.get((k, e), 0) + 1
+    return c
+
+
+def compare_events(key, base, var, tight, elem_map=None):
+    """The same events: for every (kind, element) whose count base and tight
+    agree on, the variant must have that count too."""
+    cb, ct, cv = event_counts(base), event_counts(tight), event_counts(var)
+    diffs = []
+    for ke in sorted(set(cb) | set(ct) | set(cv)):
+        if cb.get(ke, 0) == ct.get(ke, 0) and cv.get(ke, 0) != cb.get(ke, 0):
+            diffs.append(f"{ke[0]} {ke[1]}: {cv.get(ke, 0)} vs {cb.get(ke, 0)}")
+    if diffs:
+        return [viol(key, key, "event counts differ from the base (where base and tight agree): " +
+                     "; ".join(diffs[:6]), n=len(diffs))]
+    return []
+
+
+def divergence_time(t, D, thr):
+    k = np.nonzero(D > thr)[0]
+    return t[k[0]] if len(k) else math.inf
+
+
+def check_rtol(scene, base, loose, tight):
+    """i: refining rtol converges: D(base, tight) < D(loose, tight) when the
+    scene is not chaotic; when it is, base must not diverge from tight
+    earlier than loose does."""
+    L = scene["scales"]["L"]
+    t6, d6 = distance(loose, tight, scene)
+    t8, d8 = distance(base, tight, scene)
+    if len(t6) == 0 or len(t8) == 0:
+        return []
+    thr = DIV_REL * L
+    dt = float(base["attrs"]["dt_out"])
+    if d6.max() < thr:
+        m6, m8 = d6.max(), d8.max()
+        if m8 > max(m6, RTOL_FLOOR_REL * L):
+            return [viol("i_rtol", "i_rtol", f"rtol 1e-8 is farther from rtol 1e-10 ({m8:.4g} m) than rtol 1e-6 is "
+                         f"({m6:.4g} m)", d8=m8, d6=m6)]
+        return []
+    td6, td8 = divergence_time(t6, d6, thr), divergence_time(t8, d8, thr)
+    if td8 < td6 - 1.5 * dt:
+        return [viol("i_rtol", "i_rtol", f"rtol 1e-8 departs from rtol 1e-10 by 1e-3 L at t = {td8:.6g} s, earlier than "
+                     f"rtol 1e-6 does (t = {td6:.6g} s)", t8=td8, t6=td6)]
+    return []

@@ -1019,7 +1019,7 @@ def k_pendulum_wall(B, rng):
 
 def k_illposed(B, rng):
     """Deliberately ill-posed starts: a body well inside another at t = 0
-    with no Inacti or Gap that accounts for it (docs SPEC 14, Starts). The
+    with no Inacti or Gap that accounts for it. The
     expected outcome is an input error (exit code 2)."""
     variant = str(rng.choice(["sphere_in_floor", "box_in_floor", "sphere_in_sphere", "mesh_irs_reversed"]))
     gm = G0

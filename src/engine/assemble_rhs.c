@@ -207,7 +207,10 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         rc_inter_report r;
         const int npt = m->inter_npt[i];
         double *gp = g + RC_ROOTS_PER_INTER * m->ninter + m->inter_pbase[i];
-        for (int j = 0; j < npt; j++) gp[j] = 1.0; /* inactive point roots */
+        for (int j = 0; j < npt; j++) {
+            gp[j] = 1.0; /* inactive point roots */
+            d->pt_share[m->inter_pbase[i] + j] = 0.0;
+        }
         if (npt > 0 && mode == RC_MODE_CLOSED) {
             /* friction per contact point: each point's slip root */
             double *pout = d->pt_work; /* 5 npt values (rc_data_new) */
@@ -215,7 +218,10 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
             type6_r(m, i, mode, br, trk, d->inter_slip[i], d->pt_slip + m->inter_pbase[i],
                     rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i],
                     NULL, NULL, NULL, &o, pout, d->node_cache);
-            for (int j = 0; j < npt; j++) gp[j] = pout[5 * j];
+            for (int j = 0; j < npt; j++) {
+                gp[j] = pout[5 * j];
+                d->pt_share[m->inter_pbase[i] + j] = pout[5 * j + 4];
+            }
             report_of(&o, &r); /* the same evaluation as rc_inter_report_eval_d */
         } else if (is_fast(m, i)) {
             /* only what the roots below read of such an interface: P, the

@@ -1,16 +1,116 @@
 /* Energies of the state: kinetic, potential, interface work and stored
  * energy, friction, couplings, imposed velocities (docs/theory.md). Reads
  * the interface reports of assemble_rhs.c and the body views of body.c. */
+#include <math.h>
 #include <string.h>
 
 #include "model/coupling.h"
 #include "model/imposed.h"
 #include "model/model.h"
 #include "model/power.h"
+#include "model/table.h"
+
+/* The curves of interface i's law, scaled: F(x) = fscale f(x / Ascalex). */
+typedef struct {
+    const rc_table *t; /* NULL: none (0) */
+    double fs, ax;
+} scurve;
+
+static double sc_value(const scurve *c, double x)
+{
+    return c->t ? c->fs * rc_table_value(c->t, x / c->ax) : 0.0;
+}
+
+/* The largest breakpoint of curve c strictly inside (lo, hi), or lo. */
+static double sc_break_below(const scurve *c, double lo, double hi)
+{
+    double b = lo;
+    if (!c->t) return b;
+    for (int k = 0; k < c->t->n; k++) {
+        const double x = c->t->x[k] * c->ax;
+        if (x > b && x < hi) b = x;
+    }
+    return b;
+}
+
+/* Energy recovered by unloading interface i (Iform 1, 2) completely from
+ * penetration P at elastic force F along its law: the Stiff line, held
+ * below the load curve (where the load curve falls faster than the line,
+ * the law follows it: branch LOAD, a hyst_load_curve event) and above the
+ * unload curve or zero (once met the law follows it: branch UNLOAD) [J].
+ * The curves are piecewise linear, so the path is too: exact, interval by
+ * interval between their breakpoints and the path's switching points. */
+static double unload_path_energy(const rc_model *m, int i, double P, double F)
+{
+    const double ax = m->inter_ascalex[i], k = m->inter_stiff[i];
+    const scurve L = {&m->table[m->inter_fct_ld[i]], m->inter_fscaleld[i], ax};
+    const scurve U = {m->inter_fct_ul[i] >= 0 ? &m->table[m->inter_fct_ul[i]] : NULL, m->inter_fscaleul[i], ax};
+    enum { LINE, LOAD, UNLOAD } st = LINE;
+    double x = P, E = 0.0;
+    const double fl0 = sc_value(&L, P), fu0 = fmax(sc_value(&U, P), 0.0);
+    F = fmin(fmax(F, fu0), fl0);
+    if (F <= fu0) st = UNLOAD;
+    for (int guard = 0; x > 0 && guard < 100000; guard++) {
+        /* the interval [a, x]: both curves linear on it */
+        double a = fmax(sc_break_below(&L, 0.0, x), sc_break_below(&U, 0.0, x));
+        const double flx = sc_value(&L, x), fla = sc_value(&L, a), sL = (flx - fla) / (x - a);
+        const double fux = sc_value(&U, x), fua = sc_value(&U, a), sU = (fux - fua) / (x - a);
+        /* the floor max(F_U, 0) is linear on [a, x] after a split where F_U
+         * crosses zero */
+        if (U.t && (fux > 0) != (fua > 0) && fux != fua) {
+            const double z = x - fux / sU;
+            if (z > a && z < x) {
+                a = z;
+                continue; /* again with the split interval (its a is the crossing) */
+            }
+        }
+        const double flo_x = fmax(fux, 0.0), sF = fux > 0 || fua > 0 ? sU : 0.0;
+        if (st == UNLOAD) { /* along the floor to a */
+            E += 0.5 * (flo_x + fmax(sc_value(&U, a), 0.0)) * (x - a);
+            x = a;
+            continue;
+        }
+        if (st == LOAD) {
+            if (sL >= k) { /* the load curve falls at least as fast as the line: on it to a */
+                E += 0.5 * (flx + fla) * (x - a);
+                F = fla;
+                x = a;
+                continue;
+            }
+            st = LINE;
+            F = flx;
+        }
+        /* on the line F - k (x - s): the first of meeting the load curve
+         * (when it falls slower) and the floor (when it falls faster) */
+        double s = a;
+        int next = LINE;
+        if (k < sL) {
+            const double d = (F - flx) / (k - sL); /* F - flx <= 0 */
+            if (x - d > s) {
+                s = x - d;
+                next = LOAD;
+            }
+        }
+        if (k > sF) {
+            const double d = (F - flo_x) / (k - sF); /* F - floor >= 0 */
+            if (x - d > s) {
+                s = x - d;
+                next = UNLOAD;
+            }
+        }
+        const double Fs = F - k * (x - s);
+        E += 0.5 * (F + Fs) * (x - s);
+        F = Fs;
+        x = s;
+        if (next != LINE) st = next;
+    }
+    return E;
+}
 
 /* Elastic energy stored in interface i: what the bodies would recover by
  * unloading it completely along the law (Iform 0: the load curve; Iform 1, 2:
- * the Stiff line down to the unload curve or zero, then the unload curve). */
+ * the Stiff line between the load curve and the unload curve or zero, then
+ * the unload curve, unload_path_energy). */
 double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double t, const double *y)
 {
     const int mode = d->inter_mode[i];
@@ -22,22 +122,16 @@ double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double
     if (m->inter_law[i] == RC_LAW_POWER) return rc_power_stored(m, i, P); /* integral of F_k */
     if (m->inter_iform[i] == 0)
         return m->inter_fscaleld[i] * ax * rc_table_integral(&m->table[m->inter_fct_ld[i]], 0.0, P / ax);
-    const double k = m->inter_stiff[i];
-    if (m->inter_fct_ul[i] < 0 || F <= 0) return F > 0 ? 0.5 * F * F / k : 0.0;
-    /* the Stiff line meets the unload curve at P*: bisection on
-     * g(P*) = F - k (P - P*) - F_U(P*), g(P - F/k) <= 0 <= g(P) */
-    const rc_table *tu = &m->table[m->inter_fct_ul[i]];
-    const double fs = m->inter_fscaleul[i];
-    double lo = P - F / k, hi = P, fu, dd;
-    for (int it = 0; it < 80; it++) {
-        double mid = 0.5 * (lo + hi);
-        rc_table_eval(tu, mid / ax, &fu, &dd);
-        if (F - k * (P - mid) - fs * fu > 0) hi = mid;
-        else lo = mid;
-    }
-    rc_table_eval(tu, hi / ax, &fu, &dd);
-    double tri = 0.5 * (F + fs * fu) * (P - hi);
-    return tri + (hi > 0 ? fs * ax * rc_table_integral(tu, 0.0, hi / ax) : 0.0);
+    return F > 0 ? unload_path_energy(m, i, P, F) : 0.0;
+}
+
+double rc_inter_friction_stored(const rc_model *m, const rc_data *d, int i, double t, const double *y)
+{
+    const rc_fric *fr = &m->inter_fr[i];
+    if (fr->kind == RC_FK_NONE || fr->exact || d->inter_mode[i] != RC_MODE_CLOSED) return 0.0;
+    rc_inter_report r;
+    rc_inter_report_eval_d(m, d, i, t, y, &r);
+    return r.fstored;
 }
 
 void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, double e[RC_NENERGY])
@@ -69,12 +163,7 @@ void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, d
         const rc_fric *fr = &m->inter_fr[i];
         if (fr->kind == RC_FK_NONE) continue;
         const double *s = y + m->inter_eadr[i];
-        double et = 0;
-        if (d->inter_mode[i] == RC_MODE_CLOSED && !fr->exact) {
-            rc_inter_report r;
-            rc_inter_report_eval_d(m, d, i, t, y, &r);
-            et = r.fstored;
-        }
+        const double et = rc_inter_friction_stored(m, d, i, t, y);
         e[RC_E_FWORK] += s[fr->widx];
         e[RC_E_STORED] += et;
         e[RC_E_FRIC] += s[fr->widx] - et;

@@ -53,6 +53,9 @@ rc_data *rc_data_new(const rc_model *m)
         }
     }
     d->pt_slip = calloc((size_t)m->npt + 1, sizeof(int));
+    d->pt_share = malloc(((size_t)m->npt + 1) * sizeof(double));
+    if (d->pt_share)
+        for (int j = 0; j <= m->npt; j++) d->pt_share[j] = 1.0;
     d->pt_work = calloc(5 * (size_t)maxpt + 4 * ((size_t)RC_NS_MAX + 6 * (size_t)maxpt) + 16, sizeof(double));
     /* the point flips' scratch (points_flip): 4 doubles, an int and a flag per point */
     d->pt_flip = malloc((size_t)maxpt * (4 * sizeof(double) + sizeof(int) + 1) + 1);
@@ -89,7 +92,7 @@ rc_data *rc_data_new(const rc_model *m)
         }
     }
     if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->inter_settled || !d->inter_fcstr || !d->cpl || !imp_ok || !jc_ok || !rc_ok ||
-        !d->pt_slip || !d->pt_work || !d->pt_flip || !d->node_cache) {
+        !d->pt_slip || !d->pt_share || !d->pt_work || !d->pt_flip || !d->node_cache) {
         rc_data_free(d);
         return NULL;
     }
@@ -109,6 +112,7 @@ void rc_data_free(rc_data *d)
     free(d->inter_settled);
     free(d->inter_fcstr);
     free(d->pt_slip);
+    free(d->pt_share);
     free(d->pt_work);
     free(d->pt_flip);
     free(d->seg_hint); /* and the node cache */
@@ -255,7 +259,7 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
         /* points stopping together: when some points stick at an event,
          * every other sliding point that can stick there (its stick force,
          * the state on the limit less the damper w c_t v_t, within the
-         * limit: |v_t| below about 1e-6 L_j / (w_j c_t)) sticks with them,
+         * limit: |v_t| below about 1e-6 L / c_t at unit share) sticks with them,
          * instead of at an event of its own a fraction of a nanosecond
          * later (a meshed block stopping: hundreds of points at once) */
         if (roots && nst > 0) {
@@ -295,7 +299,8 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
          * It slides on, its state on the limit opposite to its sliding
          * velocity (maximum dissipation), so that its root starts at
          * -|v_t| and no stick/slip pair repeats at one instant. The stick
-         * force is the state (on the limit) less the damper w c_t v_t. */
+         * force is the state (on the limit) less the damper c_t v_t (the
+         * points' states and forces here at unit share). */
         int nback = 0;
         for (int j = 0; j < npt; j++) nback += sel[j] && !sl[j];
         if (nback > 0 && m->inter_fr[i].ct > 0) {
@@ -304,7 +309,7 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
                 if (!sel[j] || sl[j] || !(out[5 * j] > 0)) continue;
                 double *fj = ft + ps * j, dv[3], nd = 0.0, nf = 0.0;
                 for (int k = 0; k < 3; k++) {
-                    dv[k] = out[5 * j + 1 + k] - fj[k]; /* -w c_t v_t */
+                    dv[k] = out[5 * j + 1 + k] - fj[k]; /* -c_t v_t */
                     nd += dv[k] * dv[k];
                     nf += fj[k] * fj[k];
                 }
@@ -315,11 +320,11 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
                 sl[j] = 1;
             }
         }
-        /* no stored energy without work (cap_state), each point at its
-         * share w_j of the slip band */
+        /* no stored energy without work (cap_state); the points' states are
+         * at unit share (the whole contact's slip band) */
         const double fb = m->inter_fr[i].fband;
         for (int j = 0; j < npt; j++)
-            if (sel[j] && out[5 * j + 4] > 0) cap_state(ft + ps * j, oldn[j], out[5 * j + 4] * fb, sl[j], changed);
+            if (sel[j] && out[5 * j + 4] > 0) cap_state(ft + ps * j, oldn[j], fb, sl[j], changed);
     }
     return n;
 }
@@ -785,23 +790,52 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             reset_friction(m, d, i, y, restart);
             kind = "contact_open";
         } else if (m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0) {
-            /* hysteresis at a bound or a reversal with dP/dt = 0 */
+            /* hysteresis: each branch's root on its waiting side. On the
+             * Stiff line (ELASTIC) F_U <= F_h <= F_L: at or past a bound
+             * (within hb) that the line is heading across, join that curve
+             * (the trend of F_L - F_h, F_h - F_U: (F_L' - Stiff) dP/dt, so
+             * that a load curve steeper than Stiff is joined while
+             * unloading too); on a curve the law's rate must keep its sign
+             * (LOAD: loading, UNLOAD: unloading), else back on the Stiff
+             * line at the curve. A branch left on the wrong side would
+             * follow its curve back (energy from the hysteresis ledger) */
             double *fh = own(m, i, m->inter_hidx[i], y);
             const double hb = fmax(fband, RC_TOUCH_ULPS * DBL_EPSILON * (fabs(r.fh) + fabs(r.fl) + fabs(r.fu)));
+            const int has_ul = m->inter_fct_ul[i] >= 0;
+            /* the curves' slopes at the law's penetration: a curve steeper
+             * than Stiff is followed both ways (the line would cross it) */
+            double fv, sl = 0.0, su = 0.0;
+            const double ax = m->inter_ascalex[i], kst = m->inter_stiff[i];
+            rc_table_eval(&m->table[m->inter_fct_ld[i]], r.pl / ax, &fv, &sl);
+            sl *= m->inter_fscaleld[i] / ax;
+            if (has_ul) {
+                rc_table_eval(&m->table[m->inter_fct_ul[i]], r.pl / ax, &fv, &su);
+                su *= m->inter_fscaleul[i] / ax;
+            }
+            /* on the Stiff line F_h moves at Stiff dP/dt, the curves at
+             * their slopes: the trends of F_L - F_h and F_h - F_U are the
+             * law's trend (second order where dP/dt is zero) times the sign
+             * of the slopes' difference */
+            const int up = ((sl > kst) - (sl < kst)) * ltrend, lo = ((kst > su) - (kst < su)) * ltrend;
+            /* a reversal on a curve: at a located root (dP/dt zero to its
+             * precision), or a law clearly moving the wrong way for its
+             * branch (beyond the slip speed band: a branch left on its far
+             * side), not the rounding of a rate at rest */
             const int still = fabs(r.vl) <= fabs(dr.vl) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
-            if (br == RC_BR_ELASTIC && fabs(r.fh - r.fu) <= hb && ltrend < 0) {
+            const double vb = slip_vband(m, i);
+            if (br == RC_BR_ELASTIC && has_ul && (r.fh - r.fu < -hb || (r.fh - r.fu <= hb && lo < 0))) {
                 d->inter_branch[i] = RC_BR_UNLOAD;
                 set_state(fh, r.fu, restart);
                 kind = "hyst_unload_curve";
-            } else if (br == RC_BR_ELASTIC && fabs(r.fl - r.fh) <= hb && ltrend > 0) {
+            } else if (br == RC_BR_ELASTIC && (r.fl - r.fh < -hb || (r.fl - r.fh <= hb && up < 0))) {
                 d->inter_branch[i] = RC_BR_LOAD;
                 set_state(fh, r.fl, restart);
                 kind = "hyst_load_curve";
-            } else if (br == RC_BR_LOAD && still && ltrend < 0) {
+            } else if (br == RC_BR_LOAD && ltrend < 0 && kst > sl && (still || r.vl < -vb)) {
                 d->inter_branch[i] = RC_BR_ELASTIC;
                 set_state(fh, r.fl, restart);
                 kind = "hyst_unloading";
-            } else if (br == RC_BR_UNLOAD && still && ltrend > 0) {
+            } else if (br == RC_BR_UNLOAD && ltrend > 0 && kst > su && (still || r.vl > vb)) {
                 d->inter_branch[i] = RC_BR_ELASTIC;
                 set_state(fh, r.fu, restart);
                 kind = "hyst_reloading";

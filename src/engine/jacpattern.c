@@ -491,18 +491,13 @@ static void ap_points(const rc_model *m, const rc_data *d, int i, double t, cons
     if (pass == AP_DROP) return;
     double *w = d->pt_work; /* 5 per point (rc_data_new), free outside the root and Jacobian evaluations */
     rc_points_eval(m, d, i, NULL, t, y, w);
-    const rc_fric *fr = &m->inter_fr[i];
-    const int *pslip = d->pt_slip + m->inter_pbase[i];
     for (int j = 0; j < npt; j++) {
         const int64_t *pj = sl + j * P;
-        int quiet = 0; /* a point out of the contact whose rows have no value */
-        if (!(w[5 * j + 4] > 0)) {
-            const double *ft = y + m->inter_eadr[i] + m->inter_ns[i] + s * j; /* F_t,j: its first 3 states */
-            quiet = fr->form != RC_FF_INCREMENTAL || pslip[j] || (ft[0] == 0 && ft[1] == 0 && ft[2] == 0);
-        }
-        /* its rows against the interface's columns; the columns of its states
-         * (its force on the bodies, its own rates) are kept: a sticking point
-         * out of the contact still applies its state */
+        /* a point out of the contact applies no force and its states relax
+         * on their own (segfric_point): its rows against the interface's
+         * columns have no value; the columns of its states (its force on
+         * the bodies, its own rates) are kept */
+        const int quiet = !(w[5 * j + 4] > 0);
         ap_mark(mk, pj, rows, quiet ? AP_DROP : AP_KEEP);
         ap_mark(mk, pj + rows, P - rows, AP_KEEP);
     }

@@ -615,6 +615,15 @@ static rc_status layout(const rc_case *c, rc_model *m, rc_error *err)
             if (m->body_dofmask[6 * b + j]) m->held[m->nheld++] = m->body_yadr[b] + 7 + j;
     m->row_held = calloc((size_t)ny + 1, 1);
     if (!m->row_held) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    /* each state's contact point (its error weight follows the point's
+     * share, rc_point_ewt_scale), -1 for the others */
+    m->state_pt = malloc(((size_t)ny + 1) * sizeof(int));
+    if (!m->state_pt) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    for (int k = 0; k < ny; k++) m->state_pt[k] = -1;
+    for (int i = 0; i < m->ninter; i++)
+        for (int j = 0; j < m->inter_npt[i]; j++)
+            for (int k = 0; k < m->inter_pst[i]; k++)
+                m->state_pt[m->inter_eadr[i] + m->inter_ns[i] + m->inter_pst[i] * j + k] = m->inter_pbase[i] + j;
     for (int k = 0; k < m->nheld; k++) m->row_held[m->held[k]] = 1;
     if (ny == 0) RC_RAISE(err, RC_EINPUT, RC_LOCFMT "the case has nothing to integrate (no free body)", RC_LOC(m->end_loc));
     return RC_OK;
@@ -844,7 +853,7 @@ void rc_model_free(rc_model *m)
                       m->inter_law, m->inter_pw, m->inter_pscale, m->inter_fscale, m->inter_kscale,
                       m->inter_vscale, m->inter_mred, m->inter_mrest, m->inter_sband, m->inter_perelax, m->ewt_rel, m->body_loc, m->inter_loc,
                       m->surf_nadr, m->surf_node, m->surf_sadr, m->surf_seg, m->inter_npt, m->inter_pst, m->inter_pbase,
-                      m->inter_ptslot, m->surf_seg_turned, m->inter_orient, m->inter_fast, m->start_note};
+                      m->inter_ptslot, m->surf_seg_turned, m->inter_orient, m->inter_fast, m->start_note, m->state_pt};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     free(m);
 }

@@ -42,6 +42,10 @@
  * spring released from the limit rings back exactly to it, and a touch must
  * not count as a crossing (docs/theory.md 3.5) [-]. */
 #define RC_SLIP_BAND 1e-6
+/* The smallest limit scale of the slip law's rates, as a fraction of the
+ * interface's force scale F_s (times a contact point's share): docs/theory.md
+ * 3.5 */
+#define RC_SLIP_LFLOOR 1e-2
 #define RC_NODE_CACHE 11 /* values per point of the node geometry cache (rc_data.node_cache) */
 /* Pairs with several contact points (docs/theory.md 2.7): the share band,
  * relative to the penetration scale [-], and the relaxation rate of the
@@ -140,6 +144,15 @@ typedef struct rc_jblock {
 #ifndef RC_TOL_ULPS
 #define RC_TOL_ULPS 64.0
 #endif
+
+/* The error weight of a contact point's friction states s_j (its force at
+ * unit share, segfric_point) follows its share w_j of the interface's
+ * force: their tolerance is divided by sqrt(max(w_j, this)), so that the
+ * error controlled is that of sqrt(w_j) s_j, whose square sets the energy
+ * the point's spring stores (w_j |s_j|^2 / (2 K_t)), and the state of a
+ * point out of the contact (no force) does not set the steps
+ * (docs/theory.md 2.7). */
+#define RC_EWT_SHARE_MIN 1e-12
 
 struct rc_model {
     /* provenance */
@@ -244,6 +257,7 @@ struct rc_model {
      * states, its stick/slip mode rc_data.pt_slip[inter_pbase[i] + j] and
      * its slip root (rc_root_count). inter_npt[i] = 0: none. */
     int npt;             /* points of all interfaces */
+    int *state_pt;       /* [ny] the contact point (0..npt-1) a state belongs to, -1: none */
     int *inter_npt;      /* [ninter] points of interface i */
     int *inter_pst;      /* [ninter] states per point: 3 (F_t, or the filtered force of the viscous
                             form), 6 (incremental form with a filter: F_t, then the filtered force F_f) */
@@ -331,6 +345,9 @@ typedef struct rc_data {
     int *inter_track;    /* [ninter] 1: Inacti 5 offset follows the separation */
     int *inter_slip;     /* [ninter] friction: 0 stick, 1 slip */
     int *pt_slip;        /* [npt] friction per contact point: 0 stick, 1 slip */
+    double *pt_share;    /* [npt] each contact point's share w_j at the last evaluation of the
+                            roots (the integrator's step ends; 0 while its interface is not
+                            closed): its states' error weights (rc_point_ewt_scale) */
     void *pt_work;       /* Jacobian scratch of the contact points (complex) */
     void *pt_flip;       /* scratch of the contact points' stick/slip flips at events
                             (events.c points_flip): 3 doubles, an int, a flag per point */
@@ -570,6 +587,10 @@ enum {
 void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, double e[RC_NENERGY]);
 /* Normal elastic energy stored in interface i (recoverable by unloading) [J]. */
 double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double t, const double *y);
+/* The energy held in the stick springs of interface i's friction at (t, y)
+ * (one, or one per contact point; 0 unless closed, none for exact stick)
+ * [J]: its friction work less this is its energy_friction. */
+double rc_inter_friction_stored(const rc_model *m, const rc_data *d, int i, double t, const double *y);
 
 /* Dense block of an element (body e, or interface e in the given modes) at
  * (t, y), row-major over its rc_jblock rows and columns (assemble_jac.c). */

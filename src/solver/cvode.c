@@ -186,10 +186,15 @@ static int cb_ewt(N_Vector yv, N_Vector wv, void *ud)
     for (int j = 0; j < c->nr; j++) {
         const int k = c->kidx[j];
         const double ay = fabs(y[j]);
-        double s = m->atol[k] + (m->ewt_rel[k] ? m->rtol * ay : 0.0);
-        if (!m->ewt_rel[k]) {
+        const int rel = !m->ewt_rel || m->ewt_rel[k];
+        double s = m->atol[k] + (rel ? m->rtol * ay : 0.0);
+        if (!rel) {
             const double fl = 64.0 * DBL_EPSILON * ay; /* fmax(s, fl) without the libm call */
             if (fl > s) s = fl;
+        }
+        if (m->state_pt[k] >= 0) { /* a contact point's state: at its share (RC_EWT_SHARE_MIN) */
+            const double sh = c->d->pt_share[m->state_pt[k]];
+            s /= sqrt(sh > RC_EWT_SHARE_MIN ? sh : RC_EWT_SHARE_MIN);
         }
         if (!(s > 0)) return -1;
         w[j] = 1.0 / s;
@@ -252,16 +257,18 @@ static int needs_restart(run_ctx *c, double troot, const double *yroot)
     for (int s = 0; s < 2; s++) {
         /* old modes, then new modes, at the same state */
         int *new_mode = d->inter_mode, *new_branch = d->inter_branch, *new_track = d->inter_track;
-        int *new_slip = d->inter_slip;
+        int *new_slip = d->inter_slip, *new_pslip = d->pt_slip;
         d->inter_mode = old_mode;
         d->inter_branch = old_branch;
         d->inter_track = old_track;
         d->inter_slip = old_slip;
+        if (m->npt > 0) d->pt_slip = c->old_pslip; /* the contact points' modes too */
         int bad = rc_assemble_rhs(m, d, t_at[s], y_at[s], a);
         d->inter_mode = new_mode;
         d->inter_branch = new_branch;
         d->inter_track = new_track;
         d->inter_slip = new_slip;
+        d->pt_slip = new_pslip;
         bad |= rc_assemble_rhs(m, d, t_at[s], y_at[s], b);
         if (bad) return 1;
         for (int k = 0; k < m->ny; k++) {
@@ -459,7 +466,7 @@ static rc_status cv_start(void *self, rc_error *err)
     CVCHECK(CVodeInit(cv, cb_rhs, 0.0, c->y), "CVodeInit");
     CVCHECK(CVodeSetUserData(cv, c), "CVodeSetUserData");
     CVCHECK(CVodeSetErrHandlerFn(cv, cb_err, c), "CVodeSetErrHandlerFn");
-    if (m->ewt_rel) CVCHECK(CVodeWFtolerances(cv, cb_ewt), "CVodeWFtolerances");
+    if (m->ewt_rel || m->npt > 0) CVCHECK(CVodeWFtolerances(cv, cb_ewt), "CVodeWFtolerances");
     else CVCHECK(CVodeSVtolerances(cv, m->rtol, c->av), "CVodeSVtolerances");
     CVCHECK(CVodeSetLinearSolver(cv, c->LS, c->A), "CVodeSetLinearSolver");
     CVCHECK(CVodeSetLinSysFn(cv, cb_linsys), "CVodeSetLinSysFn");

@@ -883,7 +883,8 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
         } else if (one_step && t < tout) {
             /* the single step ended before the output time: carry on, with
              * a record inside a contact when its time scale calls for one */
-            if (dt_contact > 0 && rc_impacts_active(&im) && t - t_contact_rec >= dt_contact) {
+            if (dt_contact > 0 && t - t_contact_rec >= dt_contact &&
+                rc_impacts_recent(&im, t, RC_CONTACT_REC_SPAN * RC_CONTACT_RECORDS * dt_contact)) {
                 if ((st = record(bk, self, m, d, out, &fb, t, y, yp, RC_REC_CONTACT, err))) goto done;
                 t_contact_rec = t;
             }

@@ -362,12 +362,8 @@ static double element_channel(const rc_guards *g, const rc_data *d, double t, co
     if (ch == CH_HYST) return g->hyst[i]; /* hysteresis_values */
     const rc_fric *fr = &m->inter_fr[i];
     if (fr->kind == RC_FK_NONE) return 0.0;
-    double et = 0.0;
-    if (fr->tidx >= 0 && !fr->exact && d->inter_mode[i] == RC_MODE_CLOSED) {
-        const double *ft = s + fr->tidx;
-        et = 0.5 * (ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2]) / fr->kt;
-    }
-    return s[fr->widx] - et;
+    /* as energy.c: the stick springs of the interface or of its points */
+    return s[fr->widx] - rc_inter_friction_stored(m, d, i, t, y);
 }
 
 /* The error weight of an energy accumulator at the energies in play,

@@ -185,6 +185,10 @@ static int cb_ewt(N_Vector yv, N_Vector wv, void *ud)
                 const double fl = 64.0 * DBL_EPSILON * ay; /* fmax(s, fl) without the libm call */
                 if (fl > s) s = fl;
             }
+            if (m->state_pt[k] >= 0) { /* a contact point's state: at its share (RC_EWT_SHARE_MIN) */
+                const double sh = c->d->pt_share[m->state_pt[k]];
+                s /= sqrt(sh > RC_EWT_SHARE_MIN ? sh : RC_EWT_SHARE_MIN);
+            }
         } else {
             s = (c->bw   ? rc_both_atol(m, c->bw, k - m->ny)
                  : c->sw ? rc_stk_atol(c->sw, k - m->ny)

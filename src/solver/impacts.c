@@ -120,6 +120,13 @@ void rc_impacts_event(rc_impacts *im, const rc_model *m, const rc_data *d, int i
     }
 }
 
+int rc_impacts_recent(const rc_impacts *im, double t, double span)
+{
+    for (int i = 0; i < im->ninter; i++)
+        if (im->cur[i] >= 0 && t - im->row[im->cur[i]].t_close <= span) return 1;
+    return 0;
+}
+
 int rc_impacts_active(const rc_impacts *im)
 {
     for (int i = 0; i < im->ninter; i++)

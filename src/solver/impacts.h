@@ -55,6 +55,12 @@ void rc_impacts_finish(rc_impacts *im);
 void rc_impacts_sampling_note(const rc_model *m, char *buf, size_t n);
 /* Records per contact inside contacts that Dt_out cannot resolve. */
 #define RC_CONTACT_RECORDS 20
+/* ... written over the first this many contact times of an impact: a
+ * contact that lasts (a body coming to rest, a persistent contact) gets no
+ * more records than an impact, whatever the length of the run */
+#define RC_CONTACT_REC_SPAN 4
+/* Is an impact in progress that closed at most `span` seconds before t? */
+int rc_impacts_recent(const rc_impacts *im, double t, double span);
 /* ... written for models of at most this many bodies (impact studies; a
  * many-body model has contacts in progress all the time) */
 #define RC_CONTACT_REC_MAX_BODIES 10

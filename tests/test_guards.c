@@ -349,7 +349,7 @@ static void test_guards_penetration_fires(void)
     ENSURE_NEAR(pb, fmin(fb / 1e6, 0.05), 1e-9, 0); /* at most the sphere's radius */
     double *s = b.y + m->body_yadr[0];
     /* open, the sphere 1 mm into the floor: the contact was never closed */
-    s[2] = 0.049;
+    s[2] = 0.049 - m->origin[2]; /* the model's coordinates */
     ENSURE(b.d->inter_mode[0] == RC_MODE_OPEN);
     ENSURE(rc_guards_step(b.g, b.d, 0.1, b.y, NULL, 0, ++b.steps) == 0);
     char note[700];
@@ -357,20 +357,20 @@ static void test_guards_penetration_fires(void)
     printf("    %s\n", note);
     ENSURE(strstr(note, "is open (no force) while penetrating by 0.001 m") != NULL);
     /* at a located root the event is still to come: nothing */
-    s[2] = 0.0495;
+    s[2] = 0.0495 - m->origin[2]; /* the model's coordinates */
     ENSURE(rc_guards_step(b.g, b.d, 0.11, b.y, NULL, 1, ++b.steps) == 0);
     ENSURE(bench_violations(&b, NULL, 0) == 1);
     /* closed, far beyond the bound: the sphere passes through */
     b.d->inter_mode[0] = RC_MODE_CLOSED;
-    s[2] = 0.05 - 1.5 * pb;
+    s[2] = 0.05 - 1.5 * pb - m->origin[2]; /* the model's coordinates */
     rc_guards_step(b.g, b.d, 0.2, b.y, NULL, 0, ++b.steps);
     ENSURE(bench_violations(&b, note, sizeof note) == 2);
     ENSURE(b.g != NULL && strstr(note, "open") != NULL); /* the first one stays first */
     /* back within the bound: no new row; beyond again: a new one */
-    s[2] = 0.049;
+    s[2] = 0.049 - m->origin[2]; /* the model's coordinates */
     rc_guards_step(b.g, b.d, 0.3, b.y, NULL, 0, ++b.steps);
     ENSURE(bench_violations(&b, NULL, 0) == 2);
-    s[2] = 0.05 - 2 * pb;
+    s[2] = 0.05 - 2 * pb - m->origin[2]; /* the model's coordinates */
     rc_guards_step(b.g, b.d, 0.4, b.y, NULL, 0, ++b.steps);
     ENSURE(bench_violations(&b, NULL, 0) == 3);
     bench_close(&b);
@@ -439,11 +439,11 @@ static void test_guards_sphere_centres_fire(void)
     bench b;
     ENSURE(bench_open(&b, m, 1));
     double *s = b.y + m->body_yadr[1];
-    s[0] = 0.06; /* apart by 0.06 m: 0.06 < (0.05 + 0.05)/2 is false */
+    s[0] = 0.06 - m->origin[0]; /* apart by 0.06 m: 0.06 < (0.05 + 0.05)/2 is false */
     b.d->inter_mode[0] = RC_MODE_CLOSED;
     rc_guards_step(b.g, b.d, 0.01, b.y, NULL, 0, ++b.steps);
     long n0 = bench_violations(&b, NULL, 0);
-    s[0] = 0.04;
+    s[0] = 0.04 - m->origin[0];
     rc_guards_step(b.g, b.d, 0.02, b.y, NULL, 0, ++b.steps);
     const long n1 = bench_violations(&b, NULL, 0);
     const rc_violation *v = NULL;

@@ -444,7 +444,7 @@ static void test_friction_pressure_area_needed(void)
  * over that rounding. With the floors the far copy takes about the steps
  * of the near one (18 518 against 6 without them, for the pair without
  * gravity). */
-static const char *stack_deck(double X, double Z)
+static const char *stack_deck(double X, double Z, int far_node)
 {
     static char buf[6144];
     const double r = 0.0026, m = 0.0015, g = 9.81, k1 = 2.2e4, k2 = 2.3e5;
@@ -456,7 +456,7 @@ static const char *stack_deck(double X, double Z)
              "                  kg                   m                   s\n"
              "/FUNCT/1\nfloor\n                   0                   0\n                   1%20.13g\n"
              "/FUNCT/2\nballs\n                   0                   0\n                   1%20.13g\n"
-             "/NODE\n         1%20.13g%20d%20.13g\n         2%20.13g%20d%20.13g\n"
+             "/NODE\n         1%20.13g%20d%20.13g\n         2%20.13g%20d%20.13g\n%s"
              "/RBODY/1\nball\n         1%30s%20.13g         1\n"
              "%20.13g%20.13g%20.13g\n                   0                   0                   0\n"
              "/RBODY/2\nball\n         2%30s%20.13g         2\n"
@@ -469,15 +469,15 @@ static const char *stack_deck(double X, double Z)
              "/INTER/TYPE6/1\nball on floor\n         1         3\n\n\n         1         0\n\n\n"
              "/INTER/TYPE6/2\nball on ball\n         1         2\n\n\n         2         0\n\n\n"
              "/RUN\n                0.06              0.0003\n/END\n",
-             k1, k2, X, 0, z1, X, 0, z2, "", m, 0.4 * m * r * r, 0.4 * m * r * r, 0.4 * m * r * r, "", m,
+             k1, k2, X, 0, z1, X, 0, z2, far_node ? "        99                   0                   0                   0\n" : "", "", m, 0.4 * m * r * r, 0.4 * m * r * r, 0.4 * m * r * r, "", m,
              0.4 * m * r * r, 0.4 * m * r * r, 0.4 * m * r * r, X, 0, z1, r, r, r, X, 0, z2, r, r, r, X, 0, Z, X, 0, Z + 1, -g);
     return buf;
 }
 
-static long stack_steps(double X, double Z, double *patol)
+static long stack_steps(double X, double Z, int far_node, double *patol, double *origin)
 {
     rc_error e;
-    rc_model *m = tu_compile_text(stack_deck(X, Z), "stack.rad", &e);
+    rc_model *m = tu_compile_text(stack_deck(X, Z, far_node), "stack.rad", &e);
     ENSURE(m != NULL);
     if (!m) {
         printf("    %s\n", e.msg);
@@ -485,6 +485,7 @@ static long stack_steps(double X, double Z, double *patol)
     }
     ENSURE(rc_model_set_rtol(m, 1e-8, &e) == RC_OK);
     *patol = m->atol[m->body_yadr[1]];
+    *origin = m->origin[0];
     rc_stats st;
     const rc_status s = rc_run(m, NULL, &st, &e);
     ENSURE(s == RC_OK);
@@ -495,14 +496,27 @@ static long stack_steps(double X, double Z, double *patol)
 
 static void test_tolerances_above_the_coordinates_rounding(void)
 {
-    double a0, a1;
-    const long n0 = stack_steps(0, 0, &a0), n1 = stack_steps(800, 600, &a1);
-    printf("    resting column: %ld steps at the origin (position atol %.3g m), %ld at 1 km (%.3g m)\n", n0, a0, n1, a1);
-    ENSURE(n0 > 0 && n1 > 0 && n1 <= 3 * n0 + 10);
-    ENSURE(a1 >= 64 * 2.220446049250313e-16 * 800 * 0.999);
+    double a0, a1, a2, o0, o1, o2;
+    const long n0 = stack_steps(0, 0, 0, &a0, &o0), n1 = stack_steps(800, 600, 0, &a1, &o1);
+    const long n2 = stack_steps(800, 600, 1, &a2, &o2);
+    printf("    resting column: %ld steps at the origin (position atol %.3g m); 1 km away: %ld steps (%.3g m, the "
+           "model's origin moved to x = %g m); 1 km away with a node at the deck's origin (no move: %g m): %ld "
+           "steps (%.3g m)\n", n0, a0, n1, a1, o1, o2, n2, a2);
+    /* a scene far from the deck's origin is computed about its centre,
+     * with tolerances at 4 roundings of the deck's coordinates (its input
+     * known to that, not better): no Newton iteration chasing the rounding
+     * of 1 km (18 518 steps before the move). This deck writes 13 digits,
+     * so the column 1 km away starts about 1e-10 m off its equilibrium,
+     * and the run follows that oscillation (some hundred steps, not tens
+     * of thousands) */
+    ENSURE(o0 == 0 && o1 == 800 && a1 >= 4 * 2.220446049250313e-16 * 800 * 0.999 && a1 < 1e-12);
+    ENSURE(n1 > 0 && n1 <= 2000);
+    /* a scene that spans from the origin to 1 km keeps the deck's
+     * coordinates: its tolerances are floored at their rounding */
+    ENSURE(o2 == 0 && a2 >= 64 * 2.220446049250313e-16 * 800 * 0.999);
+    ENSURE(n2 > 0 && n2 <= 3 * n0 + 10);
     ENSURE(a0 < 1e-13); /* the floor changes nothing at the origin */
 }
-
 
 /* A ball thrown at 1 m/s on a floor (no gravity) whose TYPE6 Iform 1 load
  * curve is linear (k_L = 1e6 N/m) and whose Stiff is k_S: the law unloads
@@ -563,6 +577,80 @@ static void test_iform1_unloads_along_the_law(void)
         rc_model_free(m);
     }
     TU_EXPECT_TEXT_ERROR(iform1_deck(3e5), "iform1.rad", "field Stiff", "steeper than the load curve");
+}
+
+/* The stored energy of Iform 1 where the unload curve leaves zero at a
+ * breakpoint (F_U = 0 up to 3 um, then 1.43e6 N/m): the path down the
+ * Stiff line meets the unload curve and follows it to its zero. Computing
+ * where F_U crosses zero could land a rounding above the breakpoint, and
+ * the path then stopped at 0 J (the hysteresis jumped by the whole stored
+ * energy at a friction event of a box, 7.6e-6 J). Against the path
+ * integrated by hand at 2001 states of the elastic branch. */
+static void test_iform1_stored_energy_on_the_unload_path(void)
+{
+    static const char *deck =
+        "/BEGIN\nIform 1 stored energy\n      2022         0\n"
+        "                  kg                   m                   s\n"
+        "                  kg                   m                   s\n"
+        "/FUNCT/1\nload\n                   0                   0\n                1e-6                   1\n"
+        "                1e-5                  20\n"
+        "/FUNCT/2\nunload\n                   0                   0\n                3e-6                   0\n"
+        "                1e-5                  10\n"
+        "/NODE\n         1                   0                   0                0.05\n"
+        "/RBODY/1\nball\n         1                                                 1         1\n"
+        "               0.001               0.001               0.001\n"
+        "                   0                   0                   0\n"
+        "/SURF/ELLIPS/1\nball\n         0         2         1\n"
+        "                   0                   0                0.05\n"
+        "                0.05                0.05                0.05\n"
+        "/SURF/PLANE/2\nfloor\n                   0                   0                   0\n"
+        "                   0                   0                   1\n"
+        "/GRNOD/NODE/1\nball\n         1\n"
+        "/INTER/TYPE6/1\nball on floor\n         1         2\n\n"
+        "                                                 0         0\n"
+        "         1         1                 1.0                 1.0\n"
+        "         2                 1e8                 1.0\n"
+        "                             0         0\n"
+        "/RUN\n                0.01              0.0001\n/END\n";
+    rc_error e;
+    rc_model *m = tu_compile_text(deck, "iform1e.rad", &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        printf("    %s\n", e.msg);
+        return;
+    }
+    ENSURE(m->inter_hidx[0] >= 0);
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    rc_initial_state(m, y);
+    d->inter_mode[0] = RC_MODE_CLOSED;
+    d->inter_branch[0] = RC_BR_ELASTIC;
+    const double k = 1e8, su = 10.0 / 7e-6;
+    double worst = 0.0, wp = 0.0;
+    int zero = 0;
+    for (int n = 0; n <= 2000; n++) {
+        const double P = 4e-6 + 5e-6 * n / 2000.0;
+        const double fl = 1.0 + 19.0 * (P - 1e-6) / 9e-6, fu = su * (P - 3e-6);
+        const double F = fu + 0.1 * (fl - fu);
+        y[m->body_yadr[0] + 2] = 0.05 - P; /* the centre: the ball penetrates by P */
+        y[m->inter_eadr[0] + m->inter_hidx[0]] = F;
+        /* by hand: down the Stiff line to F_U at s, then along F_U to 3 um */
+        const double s = (F - k * P + su * 3e-6) / (su - k);
+        const double expect = 0.5 * (F + su * (s - 3e-6)) * (P - s) + 0.5 * su * (s - 3e-6) * (s - 3e-6);
+        const double got = rc_inter_stored_energy(m, d, 0, 0.0, y);
+        zero += got == 0.0;
+        if (fabs(got - expect) / expect > worst) {
+            worst = fabs(got - expect) / expect;
+            wp = P;
+        }
+    }
+    printf("    2001 states from P = 4 to 9 um on the elastic branch: %d at 0 J, largest relative error %.3g "
+           "(P = %.4g m)\n", zero, worst, wp);
+    ENSURE(zero == 0);
+    ENSURE(worst < 1e-9);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
 }
 
 /* A box sliding from a touching start at every tolerance: its friction
@@ -659,6 +747,7 @@ void suite_passive(void)
     RUN_TEST(test_friction_pressure_area_needed);
     RUN_TEST(test_tolerances_above_the_coordinates_rounding);
     RUN_TEST(test_iform1_unloads_along_the_law);
+    RUN_TEST(test_iform1_stored_energy_on_the_unload_path);
     RUN_TEST(test_box_sliding_start_at_every_rtol);
     RUN_TEST(test_contact_records_bounded);
 }

@@ -192,7 +192,7 @@ static void test_restitution_settling(void)
     rc_data *d = rc_data_new(m);
     double *y = calloc((size_t)m->ny, sizeof(double)), *gr = calloc((size_t)rc_root_count(m), sizeof(double));
     rc_initial_state(m, y);
-    y[m->body_yadr[0] + 2] = 0.049999; /* 1 um deep */
+    y[m->body_yadr[0] + 2] = 0.049999 - m->origin[2]; /* 1 um deep (the model's coordinates) */
     y[m->body_yadr[0] + 9] = 0.5;    /* leaving fast: the force pulls */
     d->inter_mode[0] = RC_MODE_CLOSED;
     rc_assemble_roots(m, d, 0.0, y, gr);

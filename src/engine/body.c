@@ -42,10 +42,17 @@ void rc_initial_state(const rc_model *m, double *y)
         for (int b = 0; b < m->nbody; b++) {
             if (m->body_yadr[b] < 0) continue;
             double g[3];
-            const double *x = y + m->body_yadr[b];
+            const double *x = y + m->body_yadr[b], *o = m->origin; /* in the deck's coordinates */
             rc_gravity(m, b, 0.0, g);
-            y[m->gwork_adr] -= m->body_mass[b] * (g[0] * x[0] + g[1] * x[1] + g[2] * x[2]);
+            y[m->gwork_adr] -= m->body_mass[b] * (g[0] * (x[0] + o[0]) + g[1] * (x[1] + o[1]) + g[2] * (x[2] + o[2]));
         }
+}
+
+void rc_state_to_deck(const rc_model *m, double *y)
+{
+    for (int b = 0; b < m->nbody; b++)
+        if (m->body_yadr[b] >= 0)
+            for (int k = 0; k < 3; k++) y[m->body_yadr[b] + k] += m->origin[k];
 }
 
 /* May side `side` (0: a, 1: b) of interface i act on its body with a

@@ -53,17 +53,19 @@ static double unload_path_energy(const rc_model *m, int i, double P, double F)
     for (int guard = 0; x > 0 && guard < 100000; guard++) {
         /* the interval [a, x]: both curves linear on it */
         double a = fmax(sc_break_below(&L, 0.0, x), sc_break_below(&U, 0.0, x));
-        const double flx = sc_value(&L, x), fla = sc_value(&L, a), sL = (flx - fla) / (x - a);
-        const double fux = sc_value(&U, x), fua = sc_value(&U, a), sU = (fux - fua) / (x - a);
+        const double fux = sc_value(&U, x);
+        double fua = sc_value(&U, a);
         /* the floor max(F_U, 0) is linear on [a, x] after a split where F_U
          * crosses zero */
         if (U.t && (fux > 0) != (fua > 0) && fux != fua) {
-            const double z = x - fux / sU;
+            const double z = x - fux * (x - a) / (fux - fua);
             if (z > a && z < x) {
                 a = z;
-                continue; /* again with the split interval (its a is the crossing) */
+                fua = sc_value(&U, a);
             }
         }
+        const double flx = sc_value(&L, x), fla = sc_value(&L, a), sL = (flx - fla) / (x - a);
+        const double sU = (fux - fua) / (x - a);
         const double flo_x = fmax(fux, 0.0), sF = fux > 0 || fua > 0 ? sU : 0.0;
         if (st == UNLOAD) { /* along the floor to a */
             E += 0.5 * (flo_x + fmax(sc_value(&U, a), 0.0)) * (x - a);
@@ -125,6 +127,35 @@ double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double
     return F > 0 ? unload_path_energy(m, i, P, F) : 0.0;
 }
 
+/* An elastic law loads and unloads along one curve: its hysteresis is 0.
+ * Not so with several contact points (they dissipate through P_e, 2.7 of
+ * the theory), with the Inacti offset (it moves the law's penetration by
+ * itself), or where the contact can release at P > 0 and lose its stored
+ * energy: a damper (Visc, the power law's C or spline), or a load curve
+ * that goes negative at some P > 0 (its points, or its linear extensions
+ * at 0 and beyond the last point). */
+static int inter_elastic(const rc_model *m, int i)
+{
+    if (m->inter_peidx[i] >= 0 || m->inter_inacti[i] != 0) return 0;
+    if (m->inter_law[i] == RC_LAW_POWER) {
+        const rc_power *pw = &m->inter_pw[i];
+        return pw->c == 0.0 && pw->damp == NULL;
+    }
+    if (m->inter_iform[i] != 0 || m->inter_visc[i] != 0.0) return 0;
+    const rc_table *tb = &m->table[m->inter_fct_ld[i]];
+    const int n = tb->n;
+    if (rc_table_value(tb, 0.0) < 0.0 || tb->y[n - 1] < tb->y[n - 2]) return 0;
+    for (int k = 0; k < n; k++)
+        if (tb->y[k] < 0.0) return 0;
+    return 1;
+}
+
+double rc_inter_hysteresis(const rc_model *m, const rc_data *d, int i, double t, const double *y)
+{
+    if (inter_elastic(m, i)) return 0.0;
+    return y[m->inter_eadr[i]] - rc_inter_stored_energy(m, d, i, t, y);
+}
+
 double rc_inter_friction_stored(const rc_model *m, const rc_data *d, int i, double t, const double *y)
 {
     const rc_fric *fr = &m->inter_fr[i];
@@ -149,7 +180,8 @@ void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, d
         for (int k = 0; k < 3; k++)
             rot += w[k] * (J[3 * k] * w[0] + J[3 * k + 1] * w[1] + J[3 * k + 2] * w[2]);
         e[RC_E_KIN] += 0.5 * m->body_mass[b] * (s[7] * s[7] + s[8] * s[8] + s[9] * s[9]) + 0.5 * rot;
-        e[RC_E_POT] -= m->body_mass[b] * (g[0] * s[0] + g[1] * s[1] + g[2] * s[2]);
+        const double *o = m->origin; /* the positions in the deck's coordinates */
+        e[RC_E_POT] -= m->body_mass[b] * (g[0] * (s[0] + o[0]) + g[1] * (s[1] + o[1]) + g[2] * (s[2] + o[2]));
     }
     if (m->gwork_adr >= 0) e[RC_E_POT] = y[m->gwork_adr]; /* time-varying gravity */
     for (int i = 0; i < m->ninter; i++) {
@@ -157,7 +189,7 @@ void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, d
         e[RC_E_DAMP] += y[m->inter_eadr[i] + 1];
         const double en = rc_inter_stored_energy(m, d, i, t, y);
         e[RC_E_STORED] += en;
-        e[RC_E_HYST] += y[m->inter_eadr[i]] - en;
+        if (!inter_elastic(m, i)) e[RC_E_HYST] += y[m->inter_eadr[i]] - en;
         /* friction: work, and the elastic energy of the stick springs (one,
          * or one per contact point; exact stick has no spring) */
         const rc_fric *fr = &m->inter_fr[i];

@@ -157,11 +157,12 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
     fprintf(f, "bodies      %d (%d free, %d fixed)\n", m->nbody, m->nfree, m->nbody - m->nfree);
     for (int b = 0; b < m->nbody && b < 20; b++) {
         const double *y0 = m->body_y0 + RC_NB * b;
+        const double x0[3] = {y0[0] + m->origin[0], y0[1] + m->origin[1], y0[2] + m->origin[2]}; /* the deck's */
         fprintf(f, "  /RBODY/%-6d mass %-11.5g x0 (%.5g, %.5g, %.5g) v0 (%.5g, %.5g, %.5g)%s\n", m->body_id[b],
-                m->body_mass[b], y0[0], y0[1], y0[2], y0[7], y0[8], y0[9], m->body_fixed[b] ? " fixed" : "");
+                m->body_mass[b], x0[0], x0[1], x0[2], y0[7], y0[8], y0[9], m->body_fixed[b] ? " fixed" : "");
         const double *J = m->body_J + 9 * b;
         fprintf(f, "               inertia Jxx Jyy Jzz %.17g %.17g %.17g Jxy Jyz Jxz %.17g %.17g %.17g mass %.17g x0 %.17g %.17g %.17g\n",
-                J[0], J[4], J[8], J[1], J[5], J[2], m->body_mass[b], y0[0], y0[1], y0[2]);
+                J[0], J[4], J[8], J[1], J[5], J[2], m->body_mass[b], x0[0], x0[1], x0[2]);
     }
     if (m->nbody > 20) fprintf(f, "  ... and %d more bodies (the first 20 in deck order are listed)\n", m->nbody - 20);
     fprintf(f, "surfaces    %d\n", m->nsurf);
@@ -219,9 +220,11 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
                 lo[0], hi[0], m->ewt_rel ? " (absolute)" : "", lo[1], hi[1], lo[2], hi[2], lo[3], hi[3], m->atol_energy);
         if (m->tol_floored > 0)
             fprintf(f, "            note: rtol p_s is below what the coordinates resolve for %d bod%s: their position\n"
-                       "            tolerance raised to %.3g m (%d roundings of the contacts' coordinates; docs/theory.md 7.1):\n"
-                       "            the run cannot be as accurate as rtol asks; coordinates nearer the origin resolve more\n",
-                    m->tol_floored, m->tol_floored == 1 ? "y" : "ies", m->tol_floor_pos, (int)RC_TOL_ULPS);
+                       "            tolerance raised to %.3g m (%d roundings of the contacts' coordinates about the model's\n"
+                       "            origin, %d of the deck's; docs/theory.md 7.1): the run cannot be as accurate as rtol asks;\n"
+                       "            bodies nearer the deck's origin, or smaller, resolve more\n",
+                    m->tol_floored, m->tol_floored == 1 ? "y" : "ies", m->tol_floor_pos, (int)RC_TOL_ULPS,
+                    (int)RC_TOL_DECK_ULPS);
     }
     int nsc = 0;
     for (int i = 0; i < m->ninter; i++) nsc += isfinite(m->inter_pscale[i]) != 0;

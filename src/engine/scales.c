@@ -578,6 +578,13 @@ static double inter_damping(const rc_model *m, int i)
     return c > 0 ? c : 1e-300;
 }
 
+/* The position floor of coordinates of magnitude X in the model and Xd
+ * in the deck [m]. */
+static double coordinate_floor(double X, double Xd)
+{
+    return fmax(RC_TOL_ULPS * DBL_EPSILON * X, RC_TOL_DECK_ULPS * DBL_EPSILON * Xd);
+}
+
 rc_status rc_model_tolerances(rc_model *m, rc_error *err)
 {
     const int ny = m->ny;
@@ -599,11 +606,14 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
     }
     body_sizes(m, size);
     /* the resolution of the coordinates: a penetration is the difference of
-     * coordinates, rounded at DBL_EPSILON times their magnitude, so that no
-     * tolerance below RC_TOL_ULPS of it can be met (the Newton corrections
-     * and the error estimates stay at the rounding). For each contact, the
-     * largest coordinate of its pair at t = 0 (bodies' centres plus sizes,
-     * fixed surfaces' points) gives the floor pf_i of its position
+     * coordinates, rounded at DBL_EPSILON times their magnitude in the
+     * model, so that no tolerance below RC_TOL_ULPS of it can be met; and
+     * the deck gave the positions to DBL_EPSILON times their magnitude
+     * there (the model may compute about another origin, compile.c): no
+     * tolerance below RC_TOL_DECK_ULPS of that means anything (a resting
+     * stack 1 km away starts 1e-13 m off its equilibrium). For each
+     * contact, the largest coordinate of its pair at t = 0 (bodies'
+     * centres plus sizes, fixed surfaces' points) gives the floor pf_i of its position
      * tolerances; the body's floor is the largest of its contacts', and its
      * velocity floor is pf times the contact's frequency v_s / p_s. */
     double *pfl = malloc(((size_t)m->ninter + 1) * sizeof(double)), *pflb = malloc(nb * sizeof(double)),
@@ -626,20 +636,26 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         if (!isfinite(m->inter_pscale[i])) continue;
         const double vi = fmin(m->inter_vscale[i], m->inter_fscale[i] / inter_damping(m, i));
         const int bs[2] = {m->inter_ba[i], m->inter_bb[i]};
-        double X = 0.0;
+        double X = 0.0, Xd = 0.0; /* model and deck coordinates */
         for (int k = 0; k < 2; k++) {
             const int b = bs[k];
             if (b < 0) continue;
             const double *x = m->body_y0 + RC_NB * b;
-            for (int c = 0; c < 3; c++) X = fmax(X, fabs(x[c]) + size[b]);
+            for (int c = 0; c < 3; c++) {
+                X = fmax(X, fabs(x[c]) + size[b]);
+                Xd = fmax(Xd, fabs(x[c] + m->origin[c]) + size[b]);
+            }
         }
         const int ss[2] = {m->inter_sa[i], m->inter_sb[i]};
         for (int k = 0; k < 2; k++) {
             if (ss[k] < 0 || m->surf_body[ss[k]] >= 0) continue;
             const double *p = m->surf_p + 3 * ss[k];
-            for (int c = 0; c < 3; c++) X = fmax(X, fabs(p[c]));
+            for (int c = 0; c < 3; c++) {
+                X = fmax(X, fabs(p[c]));
+                Xd = fmax(Xd, fabs(p[c] + m->origin[c]));
+            }
         }
-        pfl[i] = RC_TOL_ULPS * DBL_EPSILON * X;
+        pfl[i] = coordinate_floor(X, Xd);
         const double om = m->inter_vscale[i] / m->inter_pscale[i];
         for (int k = 0; k < 2; k++) {
             if (bs[k] < 0) continue;
@@ -653,9 +669,12 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
      * joints or couplings only) */
     for (int b = 0; b < m->nbody; b++) {
         const double *x = m->body_y0 + RC_NB * b;
-        double X = 0.0;
-        for (int c = 0; c < 3; c++) X = fmax(X, fabs(x[c]) + size[b]);
-        pflb[b] = fmax(pflb[b], RC_TOL_ULPS * DBL_EPSILON * X);
+        double X = 0.0, Xd = 0.0;
+        for (int c = 0; c < 3; c++) {
+            X = fmax(X, fabs(x[c]) + size[b]);
+            Xd = fmax(Xd, fabs(x[c] + m->origin[c]) + size[b]);
+        }
+        pflb[b] = fmax(pflb[b], coordinate_floor(X, Xd));
     }
     /* energies: 0.1 rtol of the model's energy scale, at least the work of
      * the contact forces over the rounding of the penetrations (the

@@ -362,10 +362,15 @@ static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
             }
             len = sqrt(len);
             m->surf_kind[s] = RC_SURF_PLANE;
+            /* its point: the foot of the perpendicular from the frame's
+             * origin (the same plane; a point of the order of the scene, not
+             * of wherever M was given) */
+            double dn = 0.0;
             for (int k = 0; k < 3; k++) {
-                m->surf_p[3 * s + k] = cs->m[k] - org[k];
                 m->surf_n[3 * s + k] = n[k] / len;
+                dn += (cs->m[k] - org[k]) * m->surf_n[3 * s + k];
             }
+            for (int k = 0; k < 3; k++) m->surf_p[3 * s + k] = dn * m->surf_n[3 * s + k];
         } else {
             m->surf_kind[s] = RC_SURF_SPHERE;
             m->surf_r[s] = cs->abc[0];
@@ -716,6 +721,31 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     m->hmax = c->solver.hmax;
     m->h0 = c->solver.h0;
     m->ground_y0[3] = 1.0;
+    /* the model's origin: the centre of the nodes' bounding box. The model
+     * works in coordinates relative to it (x - origin), so that its
+     * numbers are those of the scene's size, not of its distance from the
+     * deck's origin (a scene 1 km away resolves as one at the origin;
+     * docs/theory.md 7.1). While compiling, the deck's global points are
+     * made local to the ground frame placed at the origin; at the end the
+     * bodies' poses move to it (shift_origin) */
+    if (c->nnode > 0) {
+        double lo[3], hi[3];
+        for (int k = 0; k < 3; k++) lo[k] = hi[k] = c->node[0].x[k];
+        for (int j = 1; j < c->nnode; j++)
+            for (int k = 0; k < 3; k++) {
+                lo[k] = fmin(lo[k], c->node[j].x[k]);
+                hi[k] = fmax(hi[k], c->node[j].x[k]);
+            }
+        /* only a scene far from the deck's origin for its size: one near it
+         * keeps the deck's coordinates (its rounding is that of its size) */
+        double cmax = 0.0, half = 0.0;
+        for (int k = 0; k < 3; k++) {
+            cmax = fmax(cmax, fabs(0.5 * (lo[k] + hi[k])));
+            half = fmax(half, 0.5 * (hi[k] - lo[k]));
+        }
+        if (cmax > RC_ORIGIN_FAR * half && cmax > RC_ORIGIN_MIN)
+            for (int k = 0; k < 3; k++) m->origin[k] = m->ground_y0[k] = 0.5 * (lo[k] + hi[k]);
+    }
     m->grav_table = -1;
     m->grav_ascale = 1.0;
 
@@ -816,6 +846,11 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     if ((st = layout(c, m, err))) goto fail;
     /* joints (model/joint.c), on the state layout */
     if ((st = rc_jnt_compile(c, m, err))) goto fail;
+    /* into the origin's coordinates: the bodies' poses; the ground frame,
+     * whose local points were taken from the origin, becomes the global */
+    for (int b = 0; b < m->nbody; b++)
+        for (int k = 0; k < 3; k++) m->body_y0[RC_NB * b + k] -= m->origin[k];
+    for (int k = 0; k < 3; k++) m->ground_y0[k] = 0.0;
     *out = m;
     return RC_OK;
 fail:

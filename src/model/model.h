@@ -144,6 +144,11 @@ typedef struct rc_jblock {
 #ifndef RC_TOL_ULPS
 #define RC_TOL_ULPS 64.0
 #endif
+/* ... and at least this many roundings of the deck's coordinates (the
+ * positions the deck gave, before the model moved its origin) */
+#ifndef RC_TOL_DECK_ULPS
+#define RC_TOL_DECK_ULPS 4.0
+#endif
 
 /* The error weight of a contact point's friction states s_j (its force at
  * unit share, segfric_point) follows its share w_j of the interface's
@@ -153,6 +158,12 @@ typedef struct rc_jblock {
  * point out of the contact (no force) does not set the steps
  * (docs/theory.md 2.7). */
 #define RC_EWT_SHARE_MIN 1e-12
+
+/* A scene whose nodes' centre lies farther from the deck's origin than this
+ * many times their half extent, and than RC_ORIGIN_MIN [m], is computed in
+ * coordinates relative to that centre (compile.c, docs/theory.md 7.1). */
+#define RC_ORIGIN_FAR 4.0
+#define RC_ORIGIN_MIN 0.1
 
 struct rc_model {
     /* provenance */
@@ -182,6 +193,11 @@ struct rc_model {
     int *held;           /* [nheld] state indices of held velocities (their rates are 0) */
     char *row_held;      /* [ny] 1 for those rows */
     double ground_y0[RC_NB]; /* pose of "fixed in space" (identity, at rest) */
+    double origin[3];        /* the model's origin in the deck's coordinates [m] (0, or the
+                                centre of the nodes of a scene more than RC_ORIGIN_FAR times
+                                its half size and RC_ORIGIN_MIN from the deck's): the
+                                model's positions are relative to it (compile.c);
+                                outputs add it back */
     int grav_table;      /* table index of the gravity time function, -1: constant */
     double grav_ascale;  /* [s] abscissa scale of the gravity function */
     int gwork_adr;       /* state: potential energy of a time-varying gravity,
@@ -459,6 +475,10 @@ void rc_state_name(const rc_model *m, int i, char *buf, size_t n);
 /* ---- engine (assemble.c) ------------------------------------------- */
 /* Initial state vector [ny]. */
 void rc_initial_state(const rc_model *m, double *y);
+/* A state vector y (ny values) from the model's coordinates into the deck's:
+ * the bodies' positions plus the model's origin (what the caller sees:
+ * rc_run_options.y_end, rc_session_state, the results). */
+void rc_state_to_deck(const rc_model *m, double *y);
 /* The states that keep their initial values y0 through any run of m on
  * the ODE path (docs/theory.md 7.2, "What the integrator carries"): a held
  * velocity component (/BCS; its rate is set to 0 after every force, and
@@ -587,6 +607,11 @@ enum {
 void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, double e[RC_NENERGY]);
 /* Normal elastic energy stored in interface i (recoverable by unloading) [J]. */
 double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double t, const double *y);
+/* The hysteresis of interface i at (t, y): its normal work less its stored
+ * energy [J]; exactly 0 for an elastic law (Iform 0 or the power law, one
+ * contact point, no Inacti offset), whose work differs from its stored
+ * energy only by the integration error of the work accumulator. */
+double rc_inter_hysteresis(const rc_model *m, const rc_data *d, int i, double t, const double *y);
 /* The energy held in the stick springs of interface i's friction at (t, y)
  * (one, or one per contact point; 0 unless closed, none for exact stick)
  * [J]: its friction work less this is its energy_friction. */

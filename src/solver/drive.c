@@ -217,7 +217,7 @@ rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_b
 {
     for (int b = 0; b < m->nbody; b++) {
         const double *s = rc_body_state(m, b, y);
-        memcpy(f->pos + 3 * b, s, 3 * sizeof(double));
+        for (int k = 0; k < 3; k++) f->pos[3 * b + k] = s[k] + m->origin[k]; /* the deck's coordinates */
         memcpy(f->quat + 4 * b, s + 3, 4 * sizeof(double));
         memcpy(f->vel + 3 * b, s + 7, 3 * sizeof(double));
         memcpy(f->omega + 3 * b, s + 10, 3 * sizeof(double));
@@ -232,7 +232,7 @@ rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_b
         f->fdamp[i] = acts ? r.fdamp : 0.0;
         /* settled: as it acts, with its constraint's force on the IDA path */
         f->fn[i] = acts && (r.fn > 0 || d->inter_settled[i]) ? r.fn + (d->inter_settled[i] ? d->inter_fcstr[i] : 0.0) : 0.0;
-        memcpy(f->point + 3 * i, r.point, 3 * sizeof(double));
+        for (int k = 0; k < 3; k++) f->point[3 * i + k] = r.point[k] + m->origin[k];
         memcpy(f->normal + 3 * i, r.normal, 3 * sizeof(double));
         for (int k = 0; k < 3; k++) f->ffric[3 * i + k] = acts ? r.ft[k] : 0.0;
         f->vslip[i] = acts ? r.vslip : 0.0;
@@ -333,11 +333,24 @@ rc_status open_output(const rc_model *m, const char *path, const char *note, rc_
     meta.sampling_note = note;
     const char **kinds = malloc(((size_t)m->nsurf + 1) * sizeof *kinds);
     int *isurf = malloc((2 * (size_t)m->ninter + 1) * sizeof *isurf);
-    if (!kinds || !isurf) {
+    /* the surfaces fixed in space in the deck's coordinates (the model's
+     * are relative to its origin); the others in their body frames */
+    const size_t nnode = m->surf_nadr ? (size_t)m->surf_nadr[m->nsurf] : 0;
+    double *spt = malloc((3 * (size_t)m->nsurf + 1) * sizeof *spt), *snd = malloc((3 * nnode + 1) * sizeof *snd);
+    if (!kinds || !isurf || !spt || !snd) {
         free(kinds);
         free(isurf);
         free(types);
+        free(spt);
+        free(snd);
         RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    for (int s = 0; s < m->nsurf; s++) {
+        const int fixed = m->surf_body[s] < 0;
+        for (int k = 0; k < 3; k++) spt[3 * s + k] = m->surf_p[3 * s + k] + (fixed ? m->origin[k] : 0.0);
+        if (m->surf_nadr)
+            for (int j = m->surf_nadr[s]; j < m->surf_nadr[s + 1]; j++)
+                for (int k = 0; k < 3; k++) snd[3 * j + k] = m->surf_node[3 * j + k] + (fixed ? m->origin[k] : 0.0);
     }
     for (int k = 0; k < m->nsurf; k++)
         kinds[k] = m->surf_kind[k] >= RC_SURF_PLANE && m->surf_kind[k] <= RC_SURF_SEG ? surf_kind_name[m->surf_kind[k]]
@@ -350,7 +363,7 @@ rc_status open_output(const rc_model *m, const char *path, const char *note, rc_
     meta.surf_id = m->surf_id;
     meta.surf_kind = kinds;
     meta.surf_body = m->surf_body;
-    meta.surf_point = m->surf_p;
+    meta.surf_point = spt;
     meta.surf_normal = m->surf_n;
     meta.surf_radius = m->surf_r;
     meta.surf_param = m->surf_ext;
@@ -361,7 +374,7 @@ rc_status open_output(const rc_model *m, const char *path, const char *note, rc_
         meta.nseg = m->surf_sadr[m->nsurf];
         meta.surf_first_node = m->surf_nadr;
         meta.surf_first_seg = m->surf_sadr;
-        meta.seg_node = m->surf_node;
+        meta.seg_node = snd;
         meta.seg_corner = m->surf_seg;
     }
     const int njt = m->jnt ? m->jnt->n : 0;
@@ -370,6 +383,8 @@ rc_status open_output(const rc_model *m, const char *path, const char *note, rc_
         free(types);
         free(kinds);
         free(isurf);
+        free(spt);
+        free(snd);
         RC_RAISE(err, RC_ENOMEM, "out of memory");
     }
     for (int j = 0; j < njt; j++) jtype[j] = rc_jnt_type_name(m, j);
@@ -391,6 +406,8 @@ rc_status open_output(const rc_model *m, const char *path, const char *note, rc_
     free(types);
     free(kinds);
     free(isurf);
+    free(spt);
+    free(snd);
     return st;
 }
 
@@ -914,7 +931,10 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     rc_energy(m, d, t, y, e1);
     s.energy_residual = e1[RC_E_TOTAL] - e0[RC_E_TOTAL];
     s.t_end = t;
-    if (opt && opt->y_end) memcpy(opt->y_end, y, (size_t)m->ny * sizeof(double));
+    if (opt && opt->y_end) {
+        memcpy(opt->y_end, y, (size_t)m->ny * sizeof(double));
+        rc_state_to_deck(m, opt->y_end);
+    }
 
 done:
     if (opened) bk->add_stats(self, &s);

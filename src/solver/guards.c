@@ -339,7 +339,7 @@ static void hysteresis_values(rc_guards *g, const rc_data *d, double t, const do
     double others = 0.0;
     for (int i = 0; i < m->ninter; i++) {
         if (i == last) continue;
-        g->hyst[i] = y[m->inter_eadr[i]] - rc_inter_stored_energy(m, d, i, t, y);
+        g->hyst[i] = rc_inter_hysteresis(m, d, i, t, y);
         others += g->hyst[i];
     }
     if (last >= 0) g->hyst[last] = e_hyst - others;

@@ -67,6 +67,7 @@ static int reached(rc_pause *p, double t, const double *y)
     pthread_mutex_lock(&s->mu);
     s->t = t;
     memcpy(s->y, y, (size_t)s->m->ny * sizeof(double));
+    rc_state_to_deck(s->m, s->y);
     s->running = 0;
     pthread_cond_broadcast(&s->cv);
     while (!s->running) pthread_cond_wait(&s->cv, &s->mu);

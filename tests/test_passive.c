@@ -579,6 +579,34 @@ static void test_iform1_unloads_along_the_law(void)
     TU_EXPECT_TEXT_ERROR(iform1_deck(3e5), "iform1.rad", "field Stiff", "steeper than the load curve");
 }
 
+/* Iform 2 reversals in a cradle (tests/data/cradle_iform2_reversal.rad, a
+ * fuzzer scene): at a ball's deepest point the law leaves the load curve
+ * for the Stiff line (F_h := F_L), where the root F_L - F_h starts at zero.
+ * Its integration error crossed zero at the next step and put the law back
+ * on the load curve while unloading: it followed the curve down and
+ * energy_hysteresis fell by 1.4e-5 J at rtol 1e-10. The roots now wait the
+ * accuracy of F_h and of the curve at P past the curve. */
+static void test_iform2_reversals_stay_on_the_stiff_line(void)
+{
+    const double rts[3] = {1e-6, 1e-8, 1e-10};
+    for (int c = 0; c < 3; c++) {
+        rc_model *m = NULL;
+        rc_error e;
+        ENSURE(tu_load_compile("tests/data/cradle_iform2_reversal.rad", &m, &e) == RC_OK);
+        if (!m) {
+            printf("    %s\n", e.msg);
+            return;
+        }
+        ENSURE(rc_model_set_rtol(m, rts[c], &e) == RC_OK);
+        rc_stats st;
+        const rc_status s = rc_run(m, NULL, &st, &e);
+        printf("    rtol %g: %s, %ld steps, %ld events; physics checks: %s\n", rts[c], s ? e.msg : "ok", st.steps,
+               st.events, st.physics_note);
+        ENSURE(s == RC_OK && st.violations == 0);
+        rc_model_free(m);
+    }
+}
+
 /* The stored energy of Iform 1 where the unload curve leaves zero at a
  * breakpoint (F_U = 0 up to 3 um, then 1.43e6 N/m): the path down the
  * Stiff line meets the unload curve and follows it to its zero. Computing
@@ -748,6 +776,7 @@ void suite_passive(void)
     RUN_TEST(test_tolerances_above_the_coordinates_rounding);
     RUN_TEST(test_iform1_unloads_along_the_law);
     RUN_TEST(test_iform1_stored_energy_on_the_unload_path);
+    RUN_TEST(test_iform2_reversals_stay_on_the_stiff_line);
     RUN_TEST(test_box_sliding_start_at_every_rtol);
     RUN_TEST(test_contact_records_bounded);
 }

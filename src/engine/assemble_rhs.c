@@ -3,6 +3,7 @@
  * Pure: reads (t, y, modes), writes ydot; no allocation, no printing, no
  * mode change.
  */
+#include <float.h>
 #include <math.h>
 #include <string.h>
 #include <tgmath.h>
@@ -271,8 +272,16 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
             gi[RC_ROOT_HYST_A] = r.vl;
         if (mode != RC_MODE_OPEN && m->inter_iform[i] != 0) {
             if (br == RC_BR_ELASTIC) {
-                gi[RC_ROOT_HYST_A] = r.fl - r.fh;
-                gi[RC_ROOT_HYST_B] = r.fh - r.fu;
+                /* F_h starts on the curve it left (F_L at a reversal, F_U
+                 * at a re-loading): the roots wait past it by the accuracy
+                 * of F_h and of the curves at P (inter_hband) and a
+                 * thousand roundings of the forces, so that the error of a
+                 * line leaving the curve is not a crossing (a reversal put
+                 * back on the load curve unloaded along it, 1.4e-5 J drawn
+                 * from the hysteresis ledger) */
+                const double hb = m->inter_hband[i] + RC_TOUCH_ULPS * DBL_EPSILON * (fabs(r.fl) + fabs(r.fh) + fabs(r.fu));
+                gi[RC_ROOT_HYST_A] = r.fl - r.fh + hb;
+                gi[RC_ROOT_HYST_B] = r.fh - r.fu + hb;
             } else {
                 gi[RC_ROOT_HYST_A] = r.vl; /* the law's rate */
             }

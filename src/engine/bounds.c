@@ -50,6 +50,16 @@ double rc_body_size(const rc_model *m, int b)
     return size;
 }
 
+double rc_touch_band(const rc_model *m, int i, const double *y, const rc_inter_report *r, double ulps, double rel)
+{
+    const double *xa = rc_body_state(m, m->inter_ba[i], y), *xb = rc_body_state(m, m->inter_bb[i], y);
+    double L = 0.0;
+    for (int k = 0; k < 3; k++) L += fabs(xa[k]) + fabs(xb[k]) + fabs(r->point[k]);
+    double band = ulps * DBL_EPSILON * L;
+    if (isfinite(m->inter_pscale[i])) band = fmax(band, rel * m->inter_pscale[i]);
+    return band;
+}
+
 double rc_law_force(const rc_model *m, int i, double p)
 {
     double f, df;

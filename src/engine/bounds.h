@@ -38,6 +38,10 @@ void rc_scene_scales(const rc_model *m, rc_scene *s);
 /* Size of body b: the largest distance from its centre to the far side of
  * one of its surfaces [m] (0 without surfaces). */
 double rc_body_size(const rc_model *m, int b);
+/* A band about P = 0 of interface i at the state y with its report r [m]:
+ * ulps roundings of the coordinates involved (the pair's centres and the
+ * contact point), at least rel times the penetration scale. */
+double rc_touch_band(const rc_model *m, int i, const double *y, const rc_inter_report *r, double ulps, double rel);
 /* The load law of interface i (no hysteresis, no damping) at penetration
  * p >= 0: its force [N] and its energy integral_0^p F [J]. */
 double rc_law_force(const rc_model *m, int i, double p);

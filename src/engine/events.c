@@ -12,14 +12,14 @@
 
 #include "model/coupling.h"
 #include "model/coupling_contact.h"
+#include "engine/bounds.h"
 #include "engine/events.h"
 #include "model/stick.h"
 #include "model/power.h"
 #include "model/segsurf.h"
 
-/* Touch band: RC_TOUCH_ULPS ulps of the coordinates, at least RC_TOUCH_REL
- * of the penetration scale (docs/theory.md 5.1) [-]. */
-#define RC_TOUCH_ULPS 1e3
+/* Touch band: RC_TOUCH_ULPS ulps of the coordinates (model.h), at least
+ * RC_TOUCH_REL of the penetration scale (docs/theory.md 5.1) [-]. */
 #define RC_TOUCH_REL 1e-9
 
 rc_data *rc_data_new(const rc_model *m)
@@ -699,11 +699,7 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
  * scale. */
 static double touch_band(const rc_model *m, int i, const double *y, const rc_inter_report *r)
 {
-    const double *xa = rc_body_state(m, m->inter_ba[i], y), *xb = rc_body_state(m, m->inter_bb[i], y);
-    double L = 0.0;
-    for (int k = 0; k < 3; k++) L += fabs(xa[k]) + fabs(xb[k]) + fabs(r->point[k]);
-    double band = RC_TOUCH_ULPS * DBL_EPSILON * L;
-    if (isfinite(m->inter_pscale[i])) band = fmax(band, RC_TOUCH_REL * m->inter_pscale[i]);
+    const double band = rc_touch_band(m, i, y, r, RC_TOUCH_ULPS, RC_TOUCH_REL);
     return band > 0 ? band : DBL_MIN;
 }
 
@@ -823,7 +819,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
              * side), not the rounding of a rate at rest */
             const int still = fabs(r.vl) <= fabs(dr.vl) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
             const double vb = slip_vband(m, i);
-            if (br == RC_BR_ELASTIC && has_ul && (r.fh - r.fu < -hb || (r.fh - r.fu <= hb && lo < 0))) {
+            if (br == RC_BR_ELASTIC && (r.fh - r.fu < -hb || (r.fh - r.fu <= hb && lo < 0))) {
                 d->inter_branch[i] = RC_BR_UNLOAD;
                 set_state(fh, r.fu, restart);
                 kind = "hyst_unload_curve";

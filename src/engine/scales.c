@@ -37,6 +37,7 @@
 #include "base/error.h"
 #include "model/imposed.h"
 #include "model/joint.h"
+#include "engine/bounds.h"
 #include "model/model.h"
 #include "base/progress.h"
 #include "model/power.h"
@@ -149,31 +150,12 @@ static double invert(const rc_model *m, int i, int energy, double target)
 }
 
 /* ---- body properties ------------------------------------------------- */
-/* Sizes of all bodies, one pass over the surfaces: the largest distance
+/* Sizes of all bodies (rc_body_size): the largest distance
  * from a body's centre to the far side of one of its surfaces [m] (0 when
  * it carries none). */
 static void body_sizes(const rc_model *m, double *size)
 {
-    for (int b = 0; b < m->nbody; b++) size[b] = 0.0;
-    for (int s = 0; s < m->nsurf; s++) {
-        const int b = m->surf_body[s];
-        if (b < 0) continue;
-        const double *p = m->surf_p + 3 * s, *e = m->surf_ext + RC_SURF_NEXT * s;
-        double c = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), ext = 0.0;
-        switch (m->surf_kind[s]) {
-        case RC_SURF_SPHERE: ext = m->surf_r[s]; break;
-        case RC_SURF_CYL: ext = m->surf_r[s] + e[0] + (e[1] > 0 ? m->surf_r[s] : 0.0); break;
-        case RC_SURF_BOX: ext = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]); break;
-        case RC_SURF_SEG: /* the farthest node (p = 0) */
-            for (int j = m->surf_nadr[s]; j < m->surf_nadr[s + 1]; j++) {
-                const double *x = m->surf_node + 3 * j, r = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-                if (r > ext) ext = r;
-            }
-            break;
-        default: break; /* a plane carried by a body has no size */
-        }
-        if (c + ext > size[b]) size[b] = c + ext;
-    }
+    for (int b = 0; b < m->nbody; b++) size[b] = rc_body_size(m, b);
 }
 
 /* Largest speed of body b at t = 0: |v| + |omega| L [m/s]. */
@@ -393,7 +375,7 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
 {
     const int n = m->ninter;
     double **arr[] = {&m->inter_pscale, &m->inter_fscale, &m->inter_kscale, &m->inter_vscale, &m->inter_mred,
-                      &m->inter_mrest, &m->inter_sband, &m->inter_perelax};
+                      &m->inter_mrest, &m->inter_sband, &m->inter_perelax, &m->inter_hband};
     for (size_t k = 0; k < sizeof arr / sizeof arr[0]; k++) {
         *arr[k] = malloc(((size_t)n + 1) * sizeof(double));
         if (!*arr[k]) RC_RAISE(err, RC_ENOMEM, "out of memory");
@@ -518,7 +500,7 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
      * without one), and the relaxation rate of P_e down to P,
      * RC_PE_RELAX times the contact's frequency omega_s = v_s / p_s */
     for (int i = 0; i < n; i++) {
-        m->inter_sband[i] = m->inter_perelax[i] = 0.0;
+        m->inter_sband[i] = m->inter_perelax[i] = m->inter_hband[i] = 0.0;
         if (!rc_pair_multi(m->inter_pair[i])) continue;
         const int ba = m->inter_ba[i], bb = m->inter_bb[i];
         const double L = fmax(ba >= 0 ? size[ba] : 0.0, bb >= 0 ? size[bb] : 0.0);
@@ -769,6 +751,18 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         double fb = tt >= 0 ? a[tt] : 0.0;
         if (tt >= 0 && isfinite(m->inter_fscale[i])) fb = fmax(fb, RC_SLIP_BAND * m->inter_fscale[i]);
         m->inter_fr[i].fband = fb;
+        /* the Stiff line's roots (F_L - F_h, F_h - F_U): F_h is integrated
+         * to its tolerance, the curves follow P to the stiffness times the
+         * position tolerance; a line that has just left a curve stays
+         * within that of it without crossing it */
+        if (m->inter_hidx[i] >= 0) {
+            double ap = 0.0;
+            for (int k = 0; k < 2; k++) {
+                const int b = k ? bb : ba;
+                if (b >= 0 && m->body_yadr[b] >= 0) ap = fmax(ap, m->atol[m->body_yadr[b]]);
+            }
+            m->inter_hband[i] = a[m->inter_hidx[i]] + m->inter_stiff[i] * ap;
+        }
     }
     free(pfl);
     free(pflb);

@@ -57,12 +57,7 @@ static const rc_case_type6 *type6_card(const rc_case *c, const rc_model *m, int 
 /* Touching band of interface i at the state y [m]. */
 static double touch_band(const rc_model *m, int i, const double *y, const rc_inter_report *r)
 {
-    const double *xa = rc_body_state(m, m->inter_ba[i], y), *xb = rc_body_state(m, m->inter_bb[i], y);
-    double L = 0.0;
-    for (int k = 0; k < 3; k++) L += fabs(xa[k]) + fabs(xb[k]) + fabs(r->point[k]);
-    double band = RC_START_TOUCH_ULPS * DBL_EPSILON * L;
-    if (isfinite(m->inter_pscale[i])) band = fmax(band, RC_START_TOUCH_REL * m->inter_pscale[i]);
-    return band;
+    return rc_touch_band(m, i, y, r, RC_START_TOUCH_ULPS, RC_START_TOUCH_REL);
 }
 
 /* The IRS/IRm advice for interface i: the side whose reversed normals

@@ -886,7 +886,7 @@ void rc_model_free(rc_model *m)
                       m->inter_fscaleul, m->inter_ns, m->inter_hidx, m->inter_oidx, m->inter_peidx, m->inter_fr,
                       m->inter_name, m->atol, m->held, m->row_held, m->gwork_slot, m->surf_ext,
                       m->inter_law, m->inter_pw, m->inter_pscale, m->inter_fscale, m->inter_kscale,
-                      m->inter_vscale, m->inter_mred, m->inter_mrest, m->inter_sband, m->inter_perelax, m->ewt_rel, m->body_loc, m->inter_loc,
+                      m->inter_vscale, m->inter_mred, m->inter_mrest, m->inter_sband, m->inter_perelax, m->inter_hband, m->ewt_rel, m->body_loc, m->inter_loc,
                       m->surf_nadr, m->surf_node, m->surf_sadr, m->surf_seg, m->inter_npt, m->inter_pst, m->inter_pbase,
                       m->inter_ptslot, m->surf_seg_turned, m->inter_orient, m->inter_fast, m->start_note, m->state_pt};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);

@@ -144,6 +144,10 @@ typedef struct rc_jblock {
 #ifndef RC_TOL_ULPS
 #define RC_TOL_ULPS 64.0
 #endif
+/* Bands about zero at events, in roundings (ulps) of the quantities
+ * involved: touch bands of the coordinates, the hysteresis roots' band of
+ * the forces (engine/events.c, assemble_rhs.c) */
+#define RC_TOUCH_ULPS 1e3
 /* ... and at least this many roundings of the deck's coordinates (the
  * positions the deck gave, before the model moved its origin) */
 #ifndef RC_TOL_DECK_ULPS
@@ -304,6 +308,9 @@ struct rc_model {
                              the force (docs/theory.md 2.7) [m] */
     double *inter_perelax; /* relaxation rate kappa of P_e down to P [1/s]
                              (docs/theory.md 2.7; 0: none) */
+    double *inter_hband;  /* band of the Stiff line's roots (Iform 1, 2): F_h and
+                             F_L(P), F_U(P) are integrated to about this [N]
+                             (rc_model_tolerances) */
     double *inter_mrest;  /* the mass the contact drives at t = 0: inter_mred, or
                              with the rotations at the single contact point of
                              free bodies (rc_point_mass); a derived restitution

@@ -564,6 +564,17 @@ static void slip_on_limit(const rc_model *m, rc_data *d, int i, double t, double
     if (nr > 0 && isfinite(nr))
         for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
     if (!fr->exact) cap_state(ft, old, fr->fband, 1, changed); /* exact stick: no spring */
+    /* a force that would push the sliding (v_t . e > 0 beyond the slip
+     * speed band: the applied force carried the stick damper's part across
+     * a sliding that had turned) slides against the sliding instead, at the
+     * same magnitude; else it sticks again at once, and slips, every 1e-9 s
+     * (a ball rolling down an incline: 250 000 stick/slip pairs) */
+    d->inter_slip[i] = 1;
+    report(m, d, i, t, y, &q);
+    d->inter_slip[i] = slip;
+    const double vs = norm3(q.vt), n1 = norm3(ft);
+    if (q.slip_root > slip_vband(m, i) && vs > 0 && n1 > 0)
+        for (int k = 0; k < 3; k++) set_state(ft + k, -n1 * q.vt[k] / vs, changed);
 }
 
 /* Incremental friction going from slip to stick: the state is put where
@@ -579,7 +590,15 @@ static void stick_on_state(const rc_model *m, rc_data *d, int i, double t, doubl
     double *ft = y + m->inter_eadr[i] + fr->tidx;
     const double old = norm3(ft);
     for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
-    if (!fr->exact) cap_state(ft, old, fr->fband, 0, changed);
+    if (fr->exact) return;
+    cap_state(ft, old, fr->fband, 0, changed);
+    /* and within the limit of the stick it starts: a law whose coefficient
+     * rises with the sliding speed (Renard's, mu_s below mu_max) slid on a
+     * limit above the static one, and a spring left there would slip
+     * again at once; the part above is dissipated */
+    rc_inter_report s;
+    report(m, d, i, t, y, &s);
+    if (norm3(ft) > s.flim && s.flim > fr->fband) cap_state(ft, s.flim, 0.0, 0, changed);
 }
 
 /* Friction. Incremental: stick -> slip when the force reaches the limit;
@@ -617,8 +636,30 @@ static const char *step_friction(const rc_model *m, rc_data *d, int i, double t,
         }
         return fr->form == RC_FF_VISCOUS ? "fric_saturate" : "fric_slip";
     }
+    double f0[3] = {0.0, 0.0, 0.0};
+    if (fr->tidx >= 0)
+        for (int k = 0; k < 3; k++) f0[k] = y[m->inter_eadr[i] + fr->tidx + k];
     stick_on_state(m, d, i, t, y, changed);
     if (fr->form == RC_FF_VISCOUS) *changed = 1; /* restart, as for saturation */
+    if (fr->form == RC_FF_INCREMENTAL && !fr->exact && fr->tidx >= 0) {
+        /* the sliding along the force stopped, but not the sliding: it
+         * turned across the force (v_t . e = 0 with v_t not zero, a spring
+         * whose direction turns at K_t |v_t| / L_r lagging a slow sliding
+         * that turns), and the stick it would start slips at once (200
+         * stick/slip events within 1e-8 s of a ball rolling onto an
+         * incline). It slides on, its force turned against the sliding at
+         * the same magnitude: no energy stored or released, the friction
+         * power -F . v_t positive from there */
+        rc_inter_report u;
+        report(m, d, i, t, y, &u);
+        const double vs = norm3(u.vt), n0 = norm3(f0);
+        if (u.slip_root > 0 && vs > 0 && n0 > 0) {
+            d->inter_slip[i] = 1;
+            double *ft = y + m->inter_eadr[i] + fr->tidx;
+            for (int k = 0; k < 3; k++) set_state(ft + k, -n0 * u.vt[k] / vs, changed);
+            return "fric_turn";
+        }
+    }
     return fr->form == RC_FF_VISCOUS ? "fric_unsaturate" : "fric_stick";
 }
 

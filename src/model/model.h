@@ -45,7 +45,7 @@
 /* The smallest limit scale of the slip law's rates, as a fraction of the
  * interface's force scale F_s (times a contact point's share): docs/theory.md
  * 3.5 */
-#define RC_SLIP_LFLOOR 1e-2
+#define RC_SLIP_LFLOOR 1.0
 #define RC_NODE_CACHE 11 /* values per point of the node geometry cache (rc_data.node_cache) */
 /* Pairs with several contact points (docs/theory.md 2.7): the share band,
  * relative to the penetration scale [-], and the relaxation rate of the

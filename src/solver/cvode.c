@@ -61,7 +61,6 @@ typedef struct run_ctx {
     const rc_model *m;
     rc_data *d;
     double *jsave; /* [nnz] the Jacobian values of the last evaluation */
-    long netf_jac;   /* CVODE's error-test failures when jsave was last evaluated */
     int jac_patched; /* jsave's blocks of the interfaces whose modes an event
                         changed were refreshed at the event state */
     volatile sig_atomic_t *stop; /* the caller's stop flag (rc_run_options), NULL */
@@ -146,24 +145,9 @@ static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleanty
      * (rc_jac_refresh_inter): the modes are right, the other blocks as
      * stale as CVODE's own Jacobian reuse allows. A convergence failure
      * then asks again (jok false) and gets a whole new Jacobian. */
-    int patched = c->jac_patched;
+    const int patched = c->jac_patched;
     c->jac_patched = 0;
-    /* an error-test failure since jsave was evaluated: a new Jacobian.
-     * CVODE keeps its Jacobian through error-test failures (only a Newton
-     * convergence failure asks for a new one), but the right-hand side is
-     * piecewise (a friction limit at its floor, then growing with F_n; the
-     * branches of a law): a Jacobian from another piece lets Newton
-     * converge loosely on a stiff state, and the error test then fails at
-     * every smaller step down to hmin (a box sliding down an incline with
-     * friction: CV_ERR_FAILURE at 0.69 s; a box sliding from a touching
-     * start: at 0.19 s, on a corner's friction force) */
-    long netf = 0;
-    if (CVodeGetNumErrTestFails(c->cv, &netf) == CV_SUCCESS && netf > c->netf_jac) {
-        jok = SUNFALSE;
-        patched = 0;
-    }
     if (!jok) {
-        c->netf_jac = netf;
         const double *yf = whole(c, y, c->ysc); /* the whole state (the part's slots depend on it) */
         if (!patched) {
             int st = rc_assemble_jac(m, c->d, t, yf, c->jsave);

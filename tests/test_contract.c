@@ -5,6 +5,7 @@
  * what the file keeps, values whose products overflow are refused. */
 #include "harness.h"
 #include "testutil.h"
+#include "ncrecords.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -461,23 +462,6 @@ static rc_status run_limited(const char *out, long limit, char *msg, size_t n)
     return (rc_status)code;
 }
 
-/* The records and the completion flag of a results file, as another
- * process reads them; -1: unreadable. */
-static long read_records(const char *path, char *complete, size_t n)
-{
-    int nc, dim;
-    size_t len = 0, alen = 0;
-    complete[0] = '\0';
-    if (nc_open(path, NC_NOWRITE, &nc) != NC_NOERR) return -1;
-    if (nc_inq_dimid(nc, "time", &dim) != NC_NOERR || nc_inq_dimlen(nc, dim, &len) != NC_NOERR) len = 0;
-    if (nc_inq_attlen(nc, NC_GLOBAL, "complete", &alen) == NC_NOERR && alen < n) {
-        nc_get_att_text(nc, NC_GLOBAL, "complete", complete);
-        complete[alen] = '\0';
-    }
-    nc_close(nc);
-    return (long)len;
-}
-
 /* A write that fails during the run (the file size limit reached before the
  * first block, or after one): RC_EIO whose message says exactly what the
  * file keeps, checked by reading the file from another process: the
@@ -493,7 +477,7 @@ static void test_contract_write_failure_says_what_is_kept(void)
         const rc_status st = run_limited(out, limits[k], msg, sizeof msg);
         printf("    file size limit %ld bytes: status %d: %s\n", limits[k], (int)st, msg);
         ENSURE(st == RC_EIO && strstr(msg, out) && strstr(msg, "record"));
-        const long nrec = read_records(out, complete, sizeof complete);
+        const long nrec = tu_nc_records(out, complete, sizeof complete);
         const char *keeps = strstr(msg, "it keeps records 0 to ");
         if (strstr(msg, "it was removed")) {
             ENSURE(strstr(msg, "no results were kept") && access(out, F_OK) != 0 && !keeps);

@@ -135,13 +135,8 @@ static int roots_waiting(const rc_model *m, const rc_data *d, double t, const do
  * after rc_modes_touch every root waits on its side. */
 static void roots_wait_on_their_side(const char *deck, const char *name, int trials)
 {
-    rc_error e;
-    rc_model *m = tu_compile_text(deck, name, &e);
-    ENSURE(m != NULL);
-    if (!m) {
-        printf("    %s\n", e.msg);
-        return;
-    }
+    rc_model *m = TU_COMPILE_OK(deck, name);
+    if (!m) return;
     rc_data *d = rc_data_new(m);
     double *y0 = calloc((size_t)m->ny, sizeof(double)), *y = calloc((size_t)m->ny, sizeof(double));
     double *f = calloc((size_t)m->ny, sizeof(double)), *g = calloc((size_t)rc_root_count(m) + 1, sizeof(double));
@@ -324,12 +319,8 @@ static double ledger_drop(int ncid, const char *var, size_t nt, double *last)
 static void ledger_monotone(const char *deck, const char *name, double rel)
 {
     rc_error e;
-    rc_model *m = tu_compile_text(deck, name, &e);
-    ENSURE(m != NULL);
-    if (!m) {
-        printf("    %s\n", e.msg);
-        return;
-    }
+    rc_model *m = TU_COMPILE_OK(deck, name);
+    if (!m) return;
     char out[512];
     snprintf(out, sizeof out, "%s.nc", tu_tmp_write(name, ""));
     rc_run_options o;
@@ -477,12 +468,8 @@ static const char *stack_deck(double X, double Z, int far_node)
 static long stack_steps(double X, double Z, int far_node, double *patol, double *origin)
 {
     rc_error e;
-    rc_model *m = tu_compile_text(stack_deck(X, Z, far_node), "stack.rad", &e);
-    ENSURE(m != NULL);
-    if (!m) {
-        printf("    %s\n", e.msg);
-        return -1;
-    }
+    rc_model *m = TU_COMPILE_OK(stack_deck(X, Z, far_node), "stack.rad");
+    if (!m) return -1;
     ENSURE(rc_model_set_rtol(m, 1e-8, &e) == RC_OK);
     *patol = m->atol[m->body_yadr[1]];
     *origin = m->origin[0];
@@ -559,12 +546,8 @@ static void test_iform1_unloads_along_the_law(void)
     const double ks[3] = {3e6, 1e7, 1e8};
     for (int c = 0; c < 3; c++) {
         rc_error e;
-        rc_model *m = tu_compile_text(iform1_deck(ks[c]), "iform1.rad", &e);
-        ENSURE(m != NULL);
-        if (!m) {
-            printf("    %s\n", e.msg);
-            continue;
-        }
+        rc_model *m = TU_COMPILE_OK(iform1_deck(ks[c]), "iform1.rad");
+        if (!m) continue;
         rc_stats st;
         const rc_status s = rc_run(m, NULL, &st, &e);
         ENSURE(s == RC_OK);
@@ -695,13 +678,8 @@ static void test_iform1_stored_energy_on_the_unload_path(void)
         "         2                 1e8                 1.0\n"
         "                             0         0\n"
         "/RUN\n                0.01              0.0001\n/END\n";
-    rc_error e;
-    rc_model *m = tu_compile_text(deck, "iform1e.rad", &e);
-    ENSURE(m != NULL);
-    if (!m) {
-        printf("    %s\n", e.msg);
-        return;
-    }
+    rc_model *m = TU_COMPILE_OK(deck, "iform1e.rad");
+    if (!m) return;
     ENSURE(m->inter_hidx[0] >= 0);
     rc_data *d = rc_data_new(m);
     double *y = calloc((size_t)m->ny, sizeof(double));

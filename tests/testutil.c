@@ -1,5 +1,6 @@
 /* Helpers shared by the test files (testutil.h). */
 #include "testutil.h"
+#include "harness.h"
 #include "base/error.h"
 
 #include <float.h>
@@ -70,6 +71,18 @@ rc_model *tu_compile_text(const char *text, const char *path, rc_error *e)
     rc_model *m = NULL;
     tu_load_compile(path, &m, e);
     remove(path);
+    return m;
+}
+
+rc_model *tu_compile_ok(const char *text, const char *path, const char *file, int line)
+{
+    rc_error e;
+    rc_model *m = tu_compile_text(text, path, &e);
+    if (!m) {
+        fprintf(stderr, "  %s:%d: %s does not compile\n", file, line, path);
+        printf("    %s\n", e.msg);
+        rc_test_failed_now++;
+    }
     return m;
 }
 

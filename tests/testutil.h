@@ -22,6 +22,10 @@ void tu_tmp_cleanup(void);
 rc_status tu_load_compile(const char *path, rc_model **m, rc_error *e);
 /* Write `text` to `path`, load and compile it, remove the file. */
 rc_model *tu_compile_text(const char *text, const char *path, rc_error *e);
+/* A deck text that must compile: its model, or NULL after a failed check
+ * (the failure and the error message printed at file:line). */
+rc_model *tu_compile_ok(const char *text, const char *path, const char *file, int line);
+#define TU_COMPILE_OK(text, path) tu_compile_ok((text), (path), __FILE__, __LINE__)
 /* How many of the NULL-terminated needles `msg` lacks (each printed). */
 int tu_missing_needles(const char *msg, va_list ap);
 /* Write `text` to `path` and compile it, expecting an input error whose

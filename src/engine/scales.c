@@ -579,13 +579,12 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
     /* bodies: the smallest scales of their contacts (one pass over the
      * interfaces) */
     const size_t nb = (size_t)m->nbody + 1;
-    double *size = malloc(nb * sizeof(double)), *bps = malloc(nb * sizeof(double)), *bvs = malloc(nb * sizeof(double));
-    if (!size || !bps || !bvs) {
-        free(size);
-        free(bps);
-        free(bvs);
-        RC_RAISE(err, RC_ENOMEM, "out of memory");
-    }
+    /* scratch: per body its size, smallest scales and floors (below), per
+     * interface its position floor; one block */
+    double *scratch = malloc((5 * nb + (size_t)m->ninter + 1) * sizeof(double));
+    if (!scratch) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    double *size = scratch, *bps = size + nb, *bvs = bps + nb, *pflb = bvs + nb, *vflb = pflb + nb,
+           *pfl = vflb + nb;
     body_sizes(m, size);
     /* the resolution of the coordinates: a penetration is the difference of
      * coordinates, rounded at DBL_EPSILON times their magnitude in the
@@ -598,17 +597,6 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
      * centres plus sizes, fixed surfaces' points) gives the floor pf_i of its position
      * tolerances; the body's floor is the largest of its contacts', and its
      * velocity floor is pf times the contact's frequency v_s / p_s. */
-    double *pfl = malloc(((size_t)m->ninter + 1) * sizeof(double)), *pflb = malloc(nb * sizeof(double)),
-           *vflb = malloc(nb * sizeof(double));
-    if (!pfl || !pflb || !vflb) {
-        free(pfl);
-        free(pflb);
-        free(vflb);
-        free(size);
-        free(bps);
-        free(bvs);
-        RC_RAISE(err, RC_ENOMEM, "out of memory");
-    }
     m->tol_floored = 0;
     m->tol_floor_pos = 0.0;
     for (int b = 0; b < m->nbody; b++) bps[b] = bvs[b] = INFINITY;
@@ -764,12 +752,7 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
             m->inter_hband[i] = a[m->inter_hidx[i]] + m->inter_stiff[i] * ap;
         }
     }
-    free(pfl);
-    free(pflb);
-    free(vflb);
-    free(size);
-    free(bps);
-    free(bvs);
+    free(scratch);
     rc_cpl_atol(m);
     /* a tolerance derived from scales that under- or overflow (values near
      * the limits of the doubles, e.g. a denormal load curve slope or gap):

@@ -26,6 +26,7 @@
 #include <string.h>
 
 #include "ricochet/ricochet.h"
+#include "../ncrecords.h"
 
 /* ---- HDF5's library-wide state, as ThreadSanitizer sees it ---------------- */
 
@@ -137,22 +138,6 @@ static void *step(void *arg)
     return NULL;
 }
 
-/* Records in a results file (-1: unreadable) and its completion flag. */
-static long records(const char *path, char *complete, size_t n)
-{
-    int nc, dim;
-    size_t len = 0, alen = 0;
-    complete[0] = '\0';
-    if (nc_open(path, NC_NOWRITE, &nc) != NC_NOERR) return -1;
-    if (nc_inq_dimid(nc, "time", &dim) != NC_NOERR || nc_inq_dimlen(nc, dim, &len) != NC_NOERR) len = 0;
-    if (nc_inq_attlen(nc, NC_GLOBAL, "complete", &alen) == NC_NOERR && alen < n) {
-        nc_get_att_text(nc, NC_GLOBAL, "complete", complete);
-        complete[alen] = '\0';
-    }
-    nc_close(nc);
-    return (long)len;
-}
-
 int main(int argc, char **argv)
 {
     if (argc != 3) {
@@ -192,8 +177,8 @@ int main(int argc, char **argv)
     rc_case_free(c);
 
     char ca[8], cb[8], cs[8];
-    const long na = records(a.out, ca, sizeof ca), nb = records(b.out, cb, sizeof cb),
-               ns = records(sess_out, cs, sizeof cs);
+    const long na = tu_nc_records(a.out, ca, sizeof ca), nb = tu_nc_records(b.out, cb, sizeof cb),
+               ns = tu_nc_records(sess_out, cs, sizeof cs);
     if (a.st || b.st) {
         printf("FAIL tsan.two_runs: statuses %d, %d: %s %s\n", a.st, b.st, a.msg, b.msg);
         fail = 1;

@@ -26,7 +26,7 @@ import scenes as SC
 
 C_YARD = 10.0          # variant vs base against C x (base vs tight)
 REL_MOTION = 1e-5      # of L: the motion's tolerance
-ENERGY_RTOL_FACTOR = 100.0   # energy tolerance = 100 rtol E_s
+ENERGY_RTOL_FACTOR = 100.0   # energy tolerance = 100 max(rtol E_s, atol_energy)
 LIN_MOM_REL = 1e-8
 ANG_MOM_REL = 1e-7
 PEN_FORCE_FACTOR = 1e3
@@ -126,8 +126,19 @@ def viol(inv, run, msg, **kw):
 
 
 def energy_tol(scene, res):
+    """100 rtol E_s, or 100 times the run's own absolute energy tolerance
+    where that is larger: ricochet raises it to the work of the contact
+    forces over the rounding of the penetrations (F_s times the position
+    floor, when the coordinates cannot resolve rtol of the penetration
+    scale), and no run can keep its ledger closer than that."""
     rtol = float(res["attrs"].get("rtol", 1e-8))
-    return ENERGY_RTOL_FACTOR * rtol * scene["scales"]["E_s"]
+    try:
+        atol_e = float(res["attrs"].get("atol_energy", 0.0))
+    except (TypeError, ValueError):
+        atol_e = 0.0
+    if not math.isfinite(atol_e):
+        atol_e = 0.0
+    return ENERGY_RTOL_FACTOR * max(rtol * scene["scales"]["E_s"], atol_e)
 
 
 def mechanical_energy(scene, res):

@@ -860,11 +860,20 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
              * side), not the rounding of a rate at rest */
             const int still = fabs(r.vl) <= fabs(dr.vl) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
             const double vb = slip_vband(m, i);
-            if (br == RC_BR_ELASTIC && (r.fh - r.fu < -hb || (r.fh - r.fu <= hb && lo < 0))) {
+            /* a curve joined on the trend alone (the line on it within hb)
+             * must find its rate root on the waiting side: the load curve
+             * less steep than Stiff with the law already unloading (dP/dt
+             * < 0 at a located reversal whose second derivative reads the
+             * other way, a corner of the rate) would follow the curve back
+             * down with no root left to stop it (energy_hysteresis fell
+             * 2.6e-3 J in a box dropped on a box); the line stays, its
+             * roots a band away on both sides */
+            const int up_ok = !(kst > sl && r.vl < 0), lo_ok = !(kst > su && r.vl > 0);
+            if (br == RC_BR_ELASTIC && (r.fh - r.fu < -hb || (r.fh - r.fu <= hb && lo < 0 && lo_ok))) {
                 d->inter_branch[i] = RC_BR_UNLOAD;
                 set_state(fh, r.fu, restart);
                 kind = "hyst_unload_curve";
-            } else if (br == RC_BR_ELASTIC && (r.fl - r.fh < -hb || (r.fl - r.fh <= hb && up < 0))) {
+            } else if (br == RC_BR_ELASTIC && (r.fl - r.fh < -hb || (r.fl - r.fh <= hb && up < 0 && up_ok))) {
                 d->inter_branch[i] = RC_BR_LOAD;
                 set_state(fh, r.fl, restart);
                 kind = "hyst_load_curve";

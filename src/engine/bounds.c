@@ -53,9 +53,17 @@ double rc_body_size(const rc_model *m, int b)
 double rc_touch_band(const rc_model *m, int i, const double *y, const rc_inter_report *r, double ulps, double rel)
 {
     const double *xa = rc_body_state(m, m->inter_ba[i], y), *xb = rc_body_state(m, m->inter_bb[i], y);
-    double L = 0.0;
-    for (int k = 0; k < 3; k++) L += fabs(xa[k]) + fabs(xb[k]) + fabs(r->point[k]);
-    double band = ulps * DBL_EPSILON * L;
+    /* the model's coordinates, and the deck's (where the positions were
+     * rounded when read: a touching start moved 1 km away begins with a
+     * gap of 2e-14 m, a fifth of a rounding there, that 1000 roundings of
+     * the model's coordinates about its origin do not cover) */
+    const double *o = m->origin;
+    double L = 0.0, Ld = 0.0;
+    for (int k = 0; k < 3; k++) {
+        L += fabs(xa[k]) + fabs(xb[k]) + fabs(r->point[k]);
+        Ld += fabs(xa[k] + o[k]) + fabs(xb[k] + o[k]) + fabs(r->point[k] + o[k]);
+    }
+    double band = fmax(ulps * L, RC_TOL_DECK_ULPS * Ld) * DBL_EPSILON;
     if (isfinite(m->inter_pscale[i])) band = fmax(band, rel * m->inter_pscale[i]);
     return band;
 }

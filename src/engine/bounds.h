@@ -40,7 +40,8 @@ void rc_scene_scales(const rc_model *m, rc_scene *s);
 double rc_body_size(const rc_model *m, int b);
 /* A band about P = 0 of interface i at the state y with its report r [m]:
  * ulps roundings of the coordinates involved (the pair's centres and the
- * contact point), at least rel times the penetration scale. */
+ * contact point), at least RC_TOL_DECK_ULPS roundings of the same in the
+ * deck's coordinates and rel times the penetration scale. */
 double rc_touch_band(const rc_model *m, int i, const double *y, const rc_inter_report *r, double ulps, double rel);
 /* The load law of interface i (no hysteresis, no damping) at penetration
  * p >= 0: its force [N] and its energy integral_0^p F [J]. */

@@ -744,13 +744,38 @@ static double touch_band(const rc_model *m, int i, const double *y, const rc_int
     return band > 0 ? band : DBL_MIN;
 }
 
+/* Accelerations below this many times band omega_s^2 (what a contact
+ * overlapping by its touch band gives a body of its effective mass) are
+ * the rounding of the touching contacts around (the stiffer neighbours of
+ * a chain: 3.5 times that in a stack of three balls 1 km away) */
+#define RC_TOUCH_AFAC 100.0
+
 /* Sign of the first non-zero time derivative of P: dP/dt, or, when it is
- * zero to the precision of a located root, d2P/dt2 (0: both zero). */
-static int p_trend(double vn, double an, double t, double dtout)
+ * zero to the precision of a located root or to the rounding of the
+ * velocities (below vband), d2P/dt2 unless that is below its own rounding
+ * RC_TOUCH_AFAC vband omega (0: both zero). */
+static int p_trend(double vn, double an, double t, double dtout, double vband, double omega)
 {
     const double tau = RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + dtout); /* [s] */
-    if (fabs(vn) > fabs(an) * tau) return vn > 0 ? 1 : -1;
+    if (fabs(vn) > fmax(fabs(an) * tau, vband)) return vn > 0 ? 1 : -1;
+    if (fabs(an) <= RC_TOUCH_AFAC * vband * omega) return 0;
     return (an > 0) - (an < 0);
+}
+
+/* The contact frequency omega_s = v_s / p_s of interface i [1/s] (0: not
+ * scaled). The rounding of dP/dt for its trend is the rate that moves P by
+ * its touch band within 1 / omega_s, and that of d2P/dt2 the acceleration
+ * that reaches that rate within 1 / omega_s. A normal built from rounded
+ * coordinates turns a tangential velocity into an approach rate of that
+ * rounding (2e-14 m/s for a ball rolling on a floor mesh 1 km from the
+ * origin), which must not decide a separation that gravity reverses within
+ * a nanosecond and a fraction of the band; nor may the rounding of the
+ * accelerations in a resting chain decide which of its touching contacts
+ * start open. */
+static double trend_omega(const rc_model *m, int i)
+{
+    const double ps = m->inter_pscale[i], vs = m->inter_vscale[i];
+    return isfinite(ps) && isfinite(vs) && ps > 0 && vs > 0 ? vs / ps : 0.0;
 }
 
 int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const double *ydot, rc_event *ev, int max_ev,
@@ -778,13 +803,21 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
         int trend = 0, ctrend = 0, ltrend = 0; /* P, P closed, the law's penetration */
         memset(&dr, 0, sizeof dr);
         memset(&dc, 0, sizeof dc);
+        /* rates at the rounding of the velocities (trend_omega): an
+         * approach rate below vband; a force rate below RC_TOUCH_AFAC k vband,
+         * the stiffness times the rounding of the approach rate and a
+         * damper (of order k / omega_s) times that of the acceleration (a
+         * damped ball in a stack 1 km away released at t = 0 on a force
+         * rate of -3.6e-4 N/s, its damper on an acceleration of 7e-5 m/s^2) */
+        const double om = trend_omega(m, i), vband = band * om, frate = RC_TOUCH_AFAC * k * vband;
         if (need) {
             rc_inter_report_rate(m, i, RC_MODE_CLOSED, cbr, 0, d->inter_slip[i], y, ydot, &dc);
             /* where P is heading: dP/dt, else the normal acceleration */
             rc_inter_report_rate(m, i, mode, br, d->inter_track[i], d->inter_slip[i], y, ydot, &dr);
-            trend = d->inter_track[i] ? p_trend(r.vn_raw, dr.vn_raw, t, m->dtout) : p_trend(r.vn, dr.vn, t, m->dtout);
-            ctrend = p_trend(c.vn, dc.vn, t, m->dtout);
-            ltrend = d->inter_track[i] ? trend : p_trend(r.vl, dr.vl, t, m->dtout);
+            trend = d->inter_track[i] ? p_trend(r.vn_raw, dr.vn_raw, t, m->dtout, vband, om)
+                                      : p_trend(r.vn, dr.vn, t, m->dtout, vband, om);
+            ctrend = p_trend(c.vn, dc.vn, t, m->dtout, vband, om);
+            ltrend = d->inter_track[i] ? trend : p_trend(r.vl, dr.vl, t, m->dtout, vband, om);
         }
         if (mode == RC_MODE_OPEN && !d->inter_track[i] && r.p > band) {
             /* a state already past a crossing of its mode cannot wait for
@@ -815,13 +848,13 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             /* closed or released at P = 0 while separating */
             leave_zone(m, d, i, y, restart);
             kind = "contact_separate";
-        } else if (mode == RC_MODE_RELEASED && fabs(c.fn) <= fband && (dc.fn > 0 || (dc.fn == 0 && ctrend >= 0))) {
+        } else if (mode == RC_MODE_RELEASED && fabs(c.fn) <= fband && (dc.fn > frate || (fabs(dc.fn) <= frate && ctrend >= 0))) {
             /* released at zero force that would grow again: close */
             d->inter_mode[i] = RC_MODE_CLOSED;
             reset_friction(m, d, i, y, restart);
             kind = "contact_close";
         } else if (mode == RC_MODE_CLOSED && !d->inter_settled[i] && fabs(c.fn) <= fband &&
-                   (dc.fn < 0 || (dc.fn == 0 && ctrend < 0))) {
+                   (dc.fn < -frate || (fabs(dc.fn) <= frate && ctrend < 0))) {
             /* closed at zero force that is about to pull: release */
             d->inter_mode[i] = RC_MODE_RELEASED;
             reset_friction(m, d, i, y, restart);

@@ -376,6 +376,39 @@ static void test_guards_penetration_fires(void)
     bench_close(&b);
 }
 
+/* A thin box on a soft floor: the law's bound (1e3 x the weight over a soft
+ * stiffness) and the box's half-diagonal both lie beyond its thickness; the
+ * bound is half the thinner surface's thickness, the box's smallest
+ * half-size (a box 0.25 m thick sank 0.18 m into a belt under a bound of
+ * its half-diagonal, 0.26 m). A sphere's is its radius, a plane has none. */
+static void test_guards_penetration_bound_half_thickness(void)
+{
+    static const char deck[] = "/NODE\n1,0,0,0.03\n"
+                               "/RBODY/1\nplate\n1,,,,2.0\n0.01,0.02,0.03\n0,0,0\n"
+                               "/SURF/BOX/1\nplate\n1\n0,0,0.03\n0.18,0.14,0.03\n"
+                               "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
+                               "/GRNOD/NODE/1\nplate\n1\n"
+                               "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"
+                               "/FUNCT/1\nload\n0,0\n1,1\n"
+                               "/INTER/TYPE6/1\nplate on floor\n1,2\n\n\n1,0,1.0,10.0\n\n0\n"
+                               "/RUN\n0.01,0.001\n";
+    rc_error e;
+    rc_model *m = tu_compile_text(deck, "guards_plate.rad", &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        printf("    %s\n", e.msg);
+        return;
+    }
+    double fb;
+    rc_scene sc;
+    rc_scene_scales(m, &sc);
+    const double pb = rc_pen_bound(m, 0, &sc, NULL, &fb), size = rc_body_size(m, m->inter_ba[0]);
+    printf("    bound %.6g m; the law's %.6g m (k = 10 N/m), the box's half-diagonal %.6g m\n", pb, fb / 10.0, size);
+    ENSURE(size > 0.2 && fb / 10.0 > 1.0);
+    ENSURE_NEAR(pb, 0.03, 0, 1e-12);
+    rc_model_free(m);
+}
+
 /* Two spheres: centres closer than (R1 + R2)/2. */
 static void test_guards_sphere_centres_fire(void)
 {
@@ -661,6 +694,7 @@ void suite_guards(void)
     RUN_TEST(test_guards_energy_created_fires);
     RUN_TEST(test_guards_non_finite_fires);
     RUN_TEST(test_guards_penetration_fires);
+    RUN_TEST(test_guards_penetration_bound_half_thickness);
     RUN_TEST(test_guards_sphere_centres_fire);
     RUN_TEST(test_guards_good_runs_pass);
     RUN_TEST(test_guards_soft_floor_stops_run);

@@ -55,7 +55,6 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <pthread.h>
-#include <sys/mman.h>
 #include <sys/stat.h>
 #include <sys/statvfs.h>
 #include <math.h>
@@ -1459,7 +1458,7 @@ static int read_header_and_ends(int nc, char *what, size_t nwhat)
 }
 
 /* Read back the file at `path` (created as o->dev, o->ino) from its bytes
- * on disk: a read-only mapping opened as an in-memory netCDF file, not
+ * on disk: a copy in memory opened as an in-memory netCDF file, not
  * through HDF5's handle (which may still be open in this process and would
  * answer from its own cache). It reads back when its whole header, the
  * times of all records and the last row of every series read. Returns 1
@@ -1485,17 +1484,33 @@ static int read_back(const rc_output *o, readback *rb, char *why, size_t nwhy)
         close(fd);
         return 0;
     }
-    void *p = mmap(NULL, (size_t)sb.st_size, PROT_READ, MAP_PRIVATE, fd, 0);
-    close(fd);
-    if (p == MAP_FAILED) {
-        snprintf(why, nwhy, "cannot map it: %s", strerror(errno));
+    /* read into memory, not mapped: a mapped page of a file on a full
+     * tmpfs that falls on a hole the failed writes left faults (tmpfs
+     * allocates the page then) and kills the process with SIGBUS, where
+     * read() returns the hole's zeros or an error */
+    unsigned char *p = malloc((size_t)sb.st_size);
+    if (!p) {
+        snprintf(why, nwhy, "no memory to read its %lld bytes", (long long)sb.st_size);
+        close(fd);
         return -1;
     }
+    for (size_t got = 0; got < (size_t)sb.st_size;) {
+        const ssize_t n = pread(fd, p + got, (size_t)sb.st_size - got, (off_t)got);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            snprintf(why, nwhy, "cannot read it: %s", n < 0 ? strerror(errno) : "it became shorter");
+            free(p);
+            close(fd);
+            return -1;
+        }
+        got += (size_t)n;
+    }
+    close(fd);
     NC_memio mem = {(size_t)sb.st_size, p, NC_MEMIO_LOCKED};
     int nc, st = nc_open_memio(o->path, NC_NOWRITE, &mem, &nc);
     if (st != NC_NOERR) {
         snprintf(why, nwhy, "netCDF cannot open it: %s", nc_strerror(st));
-        munmap(p, (size_t)sb.st_size);
+        free(p);
         return 0;
     }
     int dim, var;
@@ -1531,7 +1546,7 @@ static int read_back(const rc_output *o, readback *rb, char *why, size_t nwhy)
         free(t);
     }
     nc_close(nc);
-    munmap(p, (size_t)sb.st_size);
+    free(p);
     if (st != NC_NOERR) {
         snprintf(why, nwhy, "netCDF cannot read %s: %s", what, nc_strerror(st));
         return 0;

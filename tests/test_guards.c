@@ -392,13 +392,8 @@ static void test_guards_penetration_bound_half_thickness(void)
                                "/FUNCT/1\nload\n0,0\n1,1\n"
                                "/INTER/TYPE6/1\nplate on floor\n1,2\n\n\n1,0,1.0,10.0\n\n0\n"
                                "/RUN\n0.01,0.001\n";
-    rc_error e;
-    rc_model *m = tu_compile_text(deck, "guards_plate.rad", &e);
-    ENSURE(m != NULL);
-    if (!m) {
-        printf("    %s\n", e.msg);
-        return;
-    }
+    rc_model *m = TU_COMPILE_OK(deck, "guards_plate.rad");
+    if (!m) return;
     double fb;
     rc_scene sc;
     rc_scene_scales(m, &sc);

@@ -239,15 +239,10 @@ static const char cp_deck[] =
 
 static void test_cylinder_plane_depth_near_upright(void)
 {
-    rc_error e;
     char path[128];
     snprintf(path, sizeof path, "/tmp/rc_cylplane_test_%d.rad", (int)getpid());
-    rc_model *m = tu_compile_text(cp_deck, path, &e);
-    ENSURE(m != NULL);
-    if (!m) {
-        fprintf(stderr, "  %s\n", e.msg);
-        return;
-    }
+    rc_model *m = TU_COMPILE_OK(cp_deck, path);
+    if (!m) return;
     ENSURE(m->inter_pair[0] == RC_PAIR_CYL_PLANE);
     const int sa = m->inter_sa[0];
     const double r = m->surf_r[sa], h = m->surf_ext[RC_SURF_NEXT * sa], p0 = 1e-7;

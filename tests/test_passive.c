@@ -573,13 +573,9 @@ static void test_iform2_reversals_stay_on_the_stiff_line(void)
 {
     const double rts[3] = {1e-6, 1e-8, 1e-10};
     for (int c = 0; c < 3; c++) {
-        rc_model *m = NULL;
+        rc_model *m = TU_LOAD_OK("tests/data/cradle_iform2_reversal.rad");
+        if (!m) return;
         rc_error e;
-        ENSURE(tu_load_compile("tests/data/cradle_iform2_reversal.rad", &m, &e) == RC_OK);
-        if (!m) {
-            printf("    %s\n", e.msg);
-            return;
-        }
         ENSURE(rc_model_set_rtol(m, rts[c], &e) == RC_OK);
         rc_stats st;
         const rc_status s = rc_run(m, NULL, &st, &e);
@@ -610,13 +606,9 @@ static void test_ball_rolls_onto_incline(void)
     const double gt = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
     for (int k = 0; k < 3; k++) u[k] /= gt;
     for (int c = 0; c < 2; c++) {
-        rc_model *m = NULL;
+        rc_model *m = TU_LOAD_OK("tests/data/ball_rolls_onto_incline.rad");
+        if (!m) return;
         rc_error e;
-        ENSURE(tu_load_compile("tests/data/ball_rolls_onto_incline.rad", &m, &e) == RC_OK);
-        if (!m) {
-            printf("    %s\n", e.msg);
-            return;
-        }
         rc_run_options o;
         memset(&o, 0, sizeof o);
         double y[64];

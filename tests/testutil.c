@@ -86,6 +86,19 @@ rc_model *tu_compile_ok(const char *text, const char *path, const char *file, in
     return m;
 }
 
+rc_model *tu_load_ok(const char *path, const char *file, int line)
+{
+    rc_error e;
+    rc_model *m = NULL;
+    if (tu_load_compile(path, &m, &e) != RC_OK || !m) {
+        fprintf(stderr, "  %s:%d: %s does not load and compile\n", file, line, path);
+        printf("    %s\n", e.msg);
+        rc_test_failed_now++;
+        return NULL;
+    }
+    return m;
+}
+
 int tu_text_error(const char *text, const char *path, ...)
 {
     rc_error e;

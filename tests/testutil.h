@@ -26,6 +26,10 @@ rc_model *tu_compile_text(const char *text, const char *path, rc_error *e);
  * (the failure and the error message printed at file:line). */
 rc_model *tu_compile_ok(const char *text, const char *path, const char *file, int line);
 #define TU_COMPILE_OK(text, path) tu_compile_ok((text), (path), __FILE__, __LINE__)
+/* A case file that must load and compile: its model, or NULL after a failed
+ * check (the failure and the error message printed at file:line). */
+rc_model *tu_load_ok(const char *path, const char *file, int line);
+#define TU_LOAD_OK(path) tu_load_ok((path), __FILE__, __LINE__)
 /* How many of the NULL-terminated needles `msg` lacks (each printed). */
 int tu_missing_needles(const char *msg, va_list ap);
 /* Write `text` to `path` and compile it, expecting an input error whose

@@ -181,6 +181,17 @@ static double norm3(const double *v)
     return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
 }
 
+/* A friction state turned to magnitude mag along sgn dir (sgn -1: against
+ * a sliding velocity dir) without storing or releasing energy; 0 (and the
+ * state as it was) where dir or mag gives no direction. */
+static int turn_state(double *ft, double mag, const double *dir, double sgn, int *changed)
+{
+    const double nd = norm3(dir);
+    if (!(nd > 0) || !(mag > 0) || !isfinite(nd)) return 0;
+    for (int k = 0; k < 3; k++) set_state(ft + k, sgn * mag * dir[k] / nd, changed);
+    return 1;
+}
+
 /* A friction reset (stick -> slip, slip -> stick) never stores tangential
  * energy |F_t|^2 / (2 K_t) that no work put there: the new state ft keeps
  * its direction with at most the magnitude the state had before (old), or
@@ -307,17 +318,9 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
             rc_points_eval(m, d, i, NULL, t, y, out);
             for (int j = 0; j < npt; j++) {
                 if (!sel[j] || sl[j] || !(out[5 * j] > 0)) continue;
-                double *fj = ft + ps * j, dv[3], nd = 0.0, nf = 0.0;
-                for (int k = 0; k < 3; k++) {
-                    dv[k] = out[5 * j + 1 + k] - fj[k]; /* -c_t v_t */
-                    nd += dv[k] * dv[k];
-                    nf += fj[k] * fj[k];
-                }
-                if (!(nd > 0) || !(nf > 0) || !isfinite(nd)) continue;
-                nd = sqrt(nd);
-                nf = sqrt(nf);
-                for (int k = 0; k < 3; k++) set_state(fj + k, nf * dv[k] / nd, changed);
-                sl[j] = 1;
+                double *fj = ft + ps * j, dv[3];
+                for (int k = 0; k < 3; k++) dv[k] = out[5 * j + 1 + k] - fj[k]; /* -c_t v_t */
+                if (turn_state(fj, norm3(fj), dv, 1.0, changed)) sl[j] = 1;
             }
         }
         /* no stored energy without work (cap_state); the points' states are
@@ -572,9 +575,7 @@ static void slip_on_limit(const rc_model *m, rc_data *d, int i, double t, double
     d->inter_slip[i] = 1;
     report(m, d, i, t, y, &q);
     d->inter_slip[i] = slip;
-    const double vs = norm3(q.vt), n1 = norm3(ft);
-    if (q.slip_root > slip_vband(m, i) && vs > 0 && n1 > 0)
-        for (int k = 0; k < 3; k++) set_state(ft + k, -n1 * q.vt[k] / vs, changed);
+    if (q.slip_root > slip_vband(m, i)) turn_state(ft, norm3(ft), q.vt, -1.0, changed);
 }
 
 /* Incremental friction going from slip to stick: the state is put where
@@ -652,11 +653,8 @@ static const char *step_friction(const rc_model *m, rc_data *d, int i, double t,
          * power -F . v_t positive from there */
         rc_inter_report u;
         report(m, d, i, t, y, &u);
-        const double vs = norm3(u.vt), n0 = norm3(f0);
-        if (u.slip_root > 0 && vs > 0 && n0 > 0) {
+        if (u.slip_root > 0 && turn_state(y + m->inter_eadr[i] + fr->tidx, norm3(f0), u.vt, -1.0, changed)) {
             d->inter_slip[i] = 1;
-            double *ft = y + m->inter_eadr[i] + fr->tidx;
-            for (int k = 0; k < 3; k++) set_state(ft + k, -n0 * u.vt[k] / vs, changed);
             return "fric_turn";
         }
     }

@@ -436,6 +436,47 @@ static void seg_jacobian_check(int box, int fric)
         ENSURE(rworst < 1e-12);
         ENSURE(rmoved > 1e-6);
     }
+    /* sliding points whose states are of the size of the slip band or
+     * rounding (a point that lands with the state it relaxed to, a state an
+     * iteration put through zero): the slip law's force and rates are smooth
+     * functions of the state there (before, written with e = F_t/|F_t|,
+     * their derivatives were of size 1/|F_t|: 1e20 where the differences
+     * gave 1e9) */
+    if (fric == 1 && box == 0) {
+        const double fb = m->inter_fr[0].fband;
+        const int npt = m->inter_npt[0], ps = m->inter_pst[0];
+        /* against differences where the step (1e-7 N) does not cross F_t = 0
+         * (|F_t| has a kink there, bounded); at 1e-9 bands, the largest
+         * entry of the states' columns against that at 0.3 bands */
+        const double sizes[4] = {0.02, 0.3, 3.0, 1e-9};
+        double sworst = 0.0, jmax[4] = {0, 0, 0, 0};
+        int sbad = 0, sout = 0;
+        double *val = calloc((size_t)m->nnz + 1, sizeof(double));
+        d->inter_mode[0] = RC_MODE_CLOSED;
+        d->inter_branch[0] = RC_BR_LOAD;
+        d->inter_track[0] = 0;
+        const int c0 = m->inter_eadr[0] + m->inter_ns[0];
+        double *st = y + c0;
+        for (int k = 0; k < 4; k++) {
+            for (int j = 0; j < npt; j++) {
+                d->pt_slip[m->inter_pbase[0] + j] = 1;
+                const double a = 0.7 * j + 0.3 * k, dir[3] = {cos(a), sin(a), 0.2 * sin(3.0 * a)};
+                for (int c = 0; c < 3; c++) st[ps * j + c] = sizes[k] * fb * dir[c];
+            }
+            if (k < 3) sworst = fmax(sworst, tu_jac_fd_error(m, d, 0.0, y, 1, &sbad, &sout));
+            ENSURE(rc_assemble_jac(m, d, 0.0, y, val) == 0);
+            for (int col = c0; col < c0 + ps * npt; col++)
+                for (int64_t q = m->jac_colptr[col]; q < m->jac_colptr[col + 1]; q++) jmax[k] = fmax(jmax[k], fabs(val[q]));
+        }
+        free(val);
+        for (int j = 0; j < npt * ps; j++) st[j] = 0.0;
+        printf("    sliding points with states of 0.02, 0.3 and 3 slip bands (%.3g N): max scaled |J - FD| = %.2e; largest "
+               "entry of their columns at 1e-9 bands %.3g, at 0.3 bands %.3g\n", fb, sworst, jmax[3], jmax[1]);
+        ENSURE(fb > 1e-5); /* the differences' step on these states, 1e-7 N, stays within 0.02 bands */
+        ENSURE(sbad == 0);
+        ENSURE(sout == 0);
+        ENSURE(jmax[3] < 10.0 * jmax[1]);
+    }
     const char *fname[5] = {"", " with friction per point", " with viscous friction per point",
                             " with filtered viscous friction per point", " with filtered incremental friction per point"};
     printf("    %s%s jacobian: P = %.3g m (%d nodes past the plate; -1: not counted), %d states, %lld nonzeros, %d mode combinations, max scaled |J - FD| "
@@ -546,13 +587,13 @@ static void test_seg_step5_jacobian(void)
     }
     /* the points' forces add up to the interface's friction; each point's
      * law force is its share of the whole-contact law (uncapped) */
-    double *out = calloc(5 * 8, sizeof(double));
+    double *out = calloc(RC_PT_OUT * 8, sizeof(double));
     for (int j = 0; j < 8; j++) ps[j] = 0;
     rc_points_eval(m, d, 0, NULL, 0.0, y, out);
     double wsum = 0;
     for (int j = 0; j < 8; j++) {
-        wsum += out[5 * j + 4];
-        npen += out[5 * j + 4] > 0;
+        wsum += out[RC_PT_OUT * j + 4];
+        npen += out[RC_PT_OUT * j + 4] > 0;
     }
     ENSURE(npen >= 2 && fabs(wsum - 1.0) < 1e-12);
     printf("    segments-plane step5 friction per node: %d nodes in contact, F_n = %.4g N, max scaled |J - FD| = %.2e "

@@ -161,8 +161,9 @@ void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip,
     (void)t;
     const int npt = m->inter_npt[i];
     for (int j = 0; j < npt; j++) {
-        out[5 * j] = -1.0;
-        for (int k = 1; k < 5; k++) out[5 * j + k] = 0.0;
+        out[RC_PT_OUT * j] = -1.0;
+        for (int k = 1; k < 5; k++) out[RC_PT_OUT * j + k] = 0.0;
+        out[RC_PT_OUT * j + 5] = -1.0;
     }
     if (d->inter_mode[i] != RC_MODE_CLOSED || npt == 0) return;
     t6out_r o;
@@ -207,21 +208,27 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         if (mode == RC_MODE_INACTIVE) continue;
         rc_inter_report r;
         const int npt = m->inter_npt[i];
-        double *gp = g + RC_ROOTS_PER_INTER * m->ninter + m->inter_pbase[i];
+        double *gp = g + rc_root_point_base(m) + m->inter_pbase[i];
+        double *gl = g + rc_root_land_base(m) + m->inter_pbase[i];
         for (int j = 0; j < npt; j++) {
-            gp[j] = 1.0; /* inactive point roots */
+            gp[j] = 1.0;  /* inactive point roots */
+            gl[j] = -1.0; /* no landing while the contact is not closed */
             d->pt_share[m->inter_pbase[i] + j] = 0.0;
         }
         if (npt > 0 && mode == RC_MODE_CLOSED) {
-            /* friction per contact point: each point's slip root */
-            double *pout = d->pt_work; /* 5 npt values (rc_data_new) */
+            /* friction per contact point: each point's slip root, and its
+             * depth below the level of the shares (rising through 0: the
+             * point lands, events.c) */
+            double *pout = d->pt_work; /* RC_PT_OUT npt values (rc_data_new) */
             t6out_r o;
             type6_r(m, i, mode, br, trk, d->inter_slip[i], d->pt_slip + m->inter_pbase[i],
                     rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i],
                     NULL, NULL, NULL, &o, pout, d->node_cache);
             for (int j = 0; j < npt; j++) {
-                gp[j] = pout[5 * j];
-                d->pt_share[m->inter_pbase[i] + j] = pout[5 * j + 4];
+                gp[j] = pout[RC_PT_OUT * j];
+                if (m->inter_fr[i].form == RC_FF_INCREMENTAL)
+                    gl[j] = pout[RC_PT_OUT * j + 5] + d->pt_lband[m->inter_pbase[i] + j];
+                d->pt_share[m->inter_pbase[i] + j] = pout[RC_PT_OUT * j + 4];
             }
             report_of(&o, &r); /* the same evaluation as rc_inter_report_eval_d */
         } else if (is_fast(m, i)) {

@@ -36,8 +36,8 @@ rc_data *rc_data_new(const rc_model *m)
     d->inter_settled = calloc(n, sizeof(int));
     d->inter_fcstr = calloc(n, sizeof(double));
     d->cpl = rc_cpl_data_new(m);
-    /* friction per contact point: modes, and the scratch of the roots (5 per
-     * point) and of the Jacobian (complex own and point states and rates) */
+    /* friction per contact point: modes, and the scratch of the roots
+     * (RC_PT_OUT per point) and of the Jacobian (complex own and point states and rates) */
     int maxpt = 0;
     for (int i = 0; i < m->ninter; i++) maxpt = m->inter_npt[i] > maxpt ? m->inter_npt[i] : maxpt;
     int maxnode = 0;
@@ -54,9 +54,10 @@ rc_data *rc_data_new(const rc_model *m)
     }
     d->pt_slip = calloc((size_t)m->npt + 1, sizeof(int));
     d->pt_share = malloc(((size_t)m->npt + 1) * sizeof(double));
+    d->pt_lband = calloc((size_t)m->npt + 1, sizeof(double));
     if (d->pt_share)
         for (int j = 0; j <= m->npt; j++) d->pt_share[j] = 1.0;
-    d->pt_work = calloc(5 * (size_t)maxpt + 4 * ((size_t)RC_NS_MAX + 6 * (size_t)maxpt) + 16, sizeof(double));
+    d->pt_work = calloc(RC_PT_OUT * (size_t)maxpt + 4 * ((size_t)RC_NS_MAX + 6 * (size_t)maxpt) + 16, sizeof(double));
     /* the point flips' scratch (points_flip): 4 doubles, an int and a flag per point */
     d->pt_flip = malloc((size_t)maxpt * (4 * sizeof(double) + sizeof(int) + 1) + 1);
     /* the reports of the last root evaluation (rc_report_cache_state) */
@@ -92,7 +93,7 @@ rc_data *rc_data_new(const rc_model *m)
         }
     }
     if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->inter_settled || !d->inter_fcstr || !d->cpl || !imp_ok || !jc_ok || !rc_ok ||
-        !d->pt_slip || !d->pt_share || !d->pt_work || !d->pt_flip || !d->node_cache) {
+        !d->pt_slip || !d->pt_share || !d->pt_lband || !d->pt_work || !d->pt_flip || !d->node_cache) {
         rc_data_free(d);
         return NULL;
     }
@@ -113,6 +114,7 @@ void rc_data_free(rc_data *d)
     free(d->inter_fcstr);
     free(d->pt_slip);
     free(d->pt_share);
+    free(d->pt_lband);
     free(d->pt_work);
     free(d->pt_flip);
     free(d->seg_hint); /* and the node cache */
@@ -224,7 +226,7 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
     const int npt = m->inter_npt[i], ps = m->inter_pst[i]; /* points, states per point */
     if (npt == 0 || d->inter_mode[i] != RC_MODE_CLOSED) return 0;
     int *sl = d->pt_slip + m->inter_pbase[i];
-    double *out = d->pt_work; /* 5 per point (rc_data_new) */
+    double *out = d->pt_work; /* RC_PT_OUT per point (rc_data_new) */
     /* scratch (rc_data_new): keep [3 npt], oldn [npt], md [npt], sel [npt] */
     double *keep = d->pt_flip, *oldn = keep + 3 * npt;
     int *md = (int *)(oldn + npt);
@@ -237,7 +239,7 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
      * force at the velocities' rounding) */
     const double vb = slip_vband(m, i);
     for (int j = 0; j < npt; j++) {
-        sel[j] = roots ? roots[j] != 0 : out[5 * j] > (sl[j] ? vb : 0.0);
+        sel[j] = roots ? roots[j] != 0 : out[RC_PT_OUT * j] > (sl[j] ? vb : 0.0);
         n += sel[j];
     }
     /* the viscous form has no tangential state (a filter's state, if any,
@@ -252,12 +254,12 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
         rc_points_eval(m, d, i, NULL, t, y, out);
         for (int j = 0; j < npt; j++)
             if (sel[j])
-                for (int k = 0; k < 3; k++) set_state(ft + ps * j + k, out[5 * j + 1 + k], changed);
+                for (int k = 0; k < 3; k++) set_state(ft + ps * j + k, out[RC_PT_OUT * j + 1 + k], changed);
         for (int j = 0; j < npt; j++) md[j] = sel[j] ? 1 : sl[j];
         rc_points_eval(m, d, i, md, t, y, out);
         for (int j = 0; j < npt; j++) {
             if (!sel[j] || sl[j]) continue;
-            const double *f = out + 5 * j + 1, nr = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
+            const double *f = out + RC_PT_OUT * j + 1, nr = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
             if (nr > 0 && isfinite(nr)) /* a zero limit (no share) keeps the direction */
                 for (int k = 0; k < 3; k++) set_state(ft + ps * j + k, f[k], changed);
         }
@@ -278,13 +280,13 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
             rc_points_eval(m, d, i, NULL, t, y, out); /* sliding points: on the limit */
             for (int j = 0; j < npt; j++) {
                 md[j] = sl[j];
-                if (sel[j] || !sl[j] || !(out[5 * j + 4] > 0)) continue;
+                if (sel[j] || !sl[j] || !(out[RC_PT_OUT * j + 4] > 0)) continue;
                 double nr = 0.0;
-                for (int k = 0; k < 3; k++) nr += out[5 * j + 1 + k] * out[5 * j + 1 + k];
+                for (int k = 0; k < 3; k++) nr += out[RC_PT_OUT * j + 1 + k] * out[RC_PT_OUT * j + 1 + k];
                 if (!(nr > 0) || !isfinite(nr)) continue;
                 for (int k = 0; k < 3; k++) {
                     keep[3 * j + k] = ft[ps * j + k];
-                    ft[ps * j + k] = out[5 * j + 1 + k];
+                    ft[ps * j + k] = out[RC_PT_OUT * j + 1 + k];
                 }
                 md[j] = 0;
                 ng++;
@@ -293,7 +295,7 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
                 rc_points_eval(m, d, i, md, t, y, out);
                 for (int j = 0; j < npt; j++) {
                     if (md[j] == sl[j]) continue;
-                    if (out[5 * j] <= 0) {
+                    if (out[RC_PT_OUT * j] <= 0) {
                         sl[j] = 0; /* sticks with them, on the limit */
                         sel[j] = 1;
                         n++;
@@ -317,9 +319,9 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
         if (nback > 0 && m->inter_fr[i].ct > 0) {
             rc_points_eval(m, d, i, NULL, t, y, out);
             for (int j = 0; j < npt; j++) {
-                if (!sel[j] || sl[j] || !(out[5 * j] > 0)) continue;
+                if (!sel[j] || sl[j] || !(out[RC_PT_OUT * j] > 0)) continue;
                 double *fj = ft + ps * j, dv[3];
-                for (int k = 0; k < 3; k++) dv[k] = out[5 * j + 1 + k] - fj[k]; /* -c_t v_t */
+                for (int k = 0; k < 3; k++) dv[k] = out[RC_PT_OUT * j + 1 + k] - fj[k]; /* -c_t v_t */
                 if (turn_state(fj, norm3(fj), dv, 1.0, changed)) sl[j] = 1;
             }
         }
@@ -327,7 +329,40 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
          * at unit share (the whole contact's slip band) */
         const double fb = m->inter_fr[i].fband;
         for (int j = 0; j < npt; j++)
-            if (sel[j] && out[5 * j + 4] > 0) cap_state(ft + ps * j, oldn[j], fb, sl[j], changed);
+            if (sel[j] && out[RC_PT_OUT * j + 4] > 0) cap_state(ft + ps * j, oldn[j], fb, sl[j], changed);
+    }
+    return n;
+}
+
+/* Contact points of interface i landing (their roots `land` crossed: the
+ * depth q_j below the level of the shares rose through 0, a share begins):
+ * such a point lands unloaded and sticking, F_t = 0 (its force w_j F_t is 0
+ * at w_j = 0, so nothing is stored or released), and slips at once when its
+ * stick force, the damper's -c_t v_t, exceeds the limit (points_flip after a
+ * mode change). The state it relaxed to while away would otherwise enter
+ * the growing share's rate -(dw/dt / w) F_t, which sends it to zero within
+ * a vanishing time, and the law's rate would start without an event
+ * (docs/theory.md 2.7). Returns the number of points landed. */
+static int points_land(const rc_model *m, rc_data *d, int i, double t, double *y, const int *land, int *changed)
+{
+    const int npt = m->inter_npt[i], ps = m->inter_pst[i];
+    if (d->inter_mode[i] != RC_MODE_CLOSED || m->inter_fr[i].form != RC_FF_INCREMENTAL) return 0;
+    int n = 0;
+    double *ft = y + m->inter_eadr[i] + m->inter_ns[i], *out = d->pt_work;
+    rc_points_eval(m, d, i, NULL, t, y, out);
+    /* the landing band: the position tolerance of the interface, or more
+     * where the root was located at a depth beyond it */
+    const double apos = m->inter_peidx[i] >= 0 ? m->atol[m->inter_eadr[i] + m->inter_peidx[i]] : m->atol_pos;
+    for (int j = 0; j < npt; j++) {
+        if (!land[j]) continue;
+        for (int k = 0; k < 3; k++) set_state(ft + ps * j + k, 0.0, changed);
+        d->pt_slip[m->inter_pbase[i] + j] = 0;
+        d->pt_lband[m->inter_pbase[i] + j] = fmax(apos, 4.0 * fabs(out[RC_PT_OUT * j + 5]));
+        n++;
+    }
+    if (n > 0) {
+        *changed = 1;
+        points_flip(m, d, i, t, y, NULL, changed);
     }
     return n;
 }
@@ -677,9 +712,12 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
         const int *r = roots + RC_ROOTS_PER_INTER * i;
         int any = 0;
         for (int k = 0; k < RC_ROOTS_PER_INTER; k++) any |= r[k] != 0;
-        for (int j = 0; j < m->inter_npt[i]; j++) any |= roots[RC_ROOTS_PER_INTER * m->ninter + m->inter_pbase[i] + j] != 0;
+        for (int j = 0; j < m->inter_npt[i]; j++)
+            any |= roots[rc_root_point_base(m) + m->inter_pbase[i] + j] != 0 ||
+                   roots[rc_root_land_base(m) + m->inter_pbase[i] + j] != 0;
         if (!any) continue;
         clear_band(d, i); /* the touch bands last until the interface's next event */
+        for (int j = 0; j < m->inter_npt[i]; j++) d->pt_lband[m->inter_pbase[i] + j] = 0.0; /* and the landing bands */
         /* window first; then the branch, then the contact, so that crossings
          * falling together (the Stiff line reaching zero releases the force)
          * are all applied, in the order of the law */
@@ -693,8 +731,10 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
         /* friction per contact point: the points whose roots crossed (all
          * reset when the contact changed) */
         if (!kind[0] && !kind[2] && m->inter_npt[i] > 0) {
-            const int *rp = roots + RC_ROOTS_PER_INTER * m->ninter + m->inter_pbase[i];
-            if (points_flip(m, d, i, t, y, rp, restart) > 0) {
+            const int *rp = roots + rc_root_point_base(m) + m->inter_pbase[i];
+            if (points_land(m, d, i, t, y, roots + rc_root_land_base(m) + m->inter_pbase[i], restart) > 0) {
+                kind[3] = "fric_land";
+            } else if (points_flip(m, d, i, t, y, rp, restart) > 0) {
                 /* the kind most of them took (a point refused the stick
                  * slides on: points_flip) */
                 int nsl = 0, nst = 0;

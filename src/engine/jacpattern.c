@@ -489,7 +489,7 @@ static void ap_points(const rc_model *m, const rc_data *d, int i, double t, cons
         return;
     }
     if (pass == AP_DROP) return;
-    double *w = d->pt_work; /* 5 per point (rc_data_new), free outside the root and Jacobian evaluations */
+    double *w = d->pt_work; /* RC_PT_OUT per point (rc_data_new), free outside the root and Jacobian evaluations */
     rc_points_eval(m, d, i, NULL, t, y, w);
     for (int j = 0; j < npt; j++) {
         const int64_t *pj = sl + j * P;
@@ -497,7 +497,7 @@ static void ap_points(const rc_model *m, const rc_data *d, int i, double t, cons
          * on their own (segfric_point): its rows against the interface's
          * columns have no value; the columns of its states (its force on
          * the bodies, its own rates) are kept */
-        const int quiet = !(w[5 * j + 4] > 0);
+        const int quiet = !(w[RC_PT_OUT * j + 4] > 0);
         ap_mark(mk, pj, rows, quiet ? AP_DROP : AP_KEEP);
         ap_mark(mk, pj + rows, P - rows, AP_KEEP);
     }

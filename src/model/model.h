@@ -46,6 +46,11 @@
  * interface's force scale F_s (times a contact point's share): docs/theory.md
  * 3.5 */
 #define RC_SLIP_LFLOOR 1.0
+/* Values per contact point that the points' evaluation returns
+ * (rc_points_eval): the slip root, the applied force at unit share (3), the
+ * share w_j, the depth q_j [m] below the level of the shares (> 0: it takes
+ * a share) */
+#define RC_PT_OUT 6
 #define RC_NODE_CACHE 11 /* values per point of the node geometry cache (rc_data.node_cache) */
 /* Pairs with several contact points (docs/theory.md 2.7): the share band,
  * relative to the penetration scale [-], and the relaxation rate of the
@@ -368,6 +373,10 @@ typedef struct rc_data {
     int *inter_track;    /* [ninter] 1: Inacti 5 offset follows the separation */
     int *inter_slip;     /* [ninter] friction: 0 stick, 1 slip */
     int *pt_slip;        /* [npt] friction per contact point: 0 stick, 1 slip */
+    double *pt_lband;    /* [npt] each contact point's landing band [m]: its landing root is
+                            q_j + band, set at its landing so that the root it crossed
+                            does not cross again at the same instant; 0 again at the
+                            interface's next event (events.c) */
     double *pt_share;    /* [npt] each contact point's share w_j at the last evaluation of the
                             roots (the integrator's step ends; 0 while its interface is not
                             closed): its states' error weights (rc_point_ewt_scale) */
@@ -532,11 +541,14 @@ double rc_point_mass(const rc_model *m, int i, const double *y, const rc_inter_r
 /* Is a body of interface i on a joint? (scales.c) */
 int rc_inter_on_joint(const rc_model *m, int i);
 /* Root functions, in this order: RC_ROOTS_PER_INTER per interface; one slip
- * root per contact point with friction (inter_npt, at rc_root_point_base);
- * the contact couplings' faces (at rc_root_cpl_base; coupling_contact.h),
- * then RC_LIM_ROOTS per joint with stops (coupling.h). */
+ * root per contact point with friction (inter_npt, at rc_root_point_base),
+ * then one landing root per such point (its depth q_j below the level of the
+ * shares, rising through 0 as it takes a share; at rc_root_land_base); the
+ * contact couplings' faces (at rc_root_cpl_base; coupling_contact.h), then
+ * RC_LIM_ROOTS per joint with stops (coupling.h). */
 static inline int rc_root_point_base(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter; }
-static inline int rc_root_cpl_base(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter + m->npt; }
+static inline int rc_root_land_base(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter + m->npt; }
+static inline int rc_root_cpl_base(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter + 2 * m->npt; }
 int rc_root_count(const rc_model *m); /* all of them (coupling_contact.c) */
 /* Root functions [rc_root_count(m)]. */
 void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
@@ -560,8 +572,9 @@ void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int tr
 void rc_inter_report_eval_d(const rc_model *m, const rc_data *d, int i, double t, const double *y, rc_inter_report *r);
 /* The contact points of interface i (friction per point) at (t, y), closed
  * in the modes of d, each point j in mode slip[j] (NULL: its mode in d):
- * per point 5 values into out: its slip root, the law's tangential force
- * on a before any projection (3) [N], its share w_j = f_j / F_n [-]. */
+ * per point RC_PT_OUT values into out: its slip root, the law's tangential
+ * force on a before any projection (3) [N], its share w_j = f_j / F_n [-],
+ * its depth q_j below the level of the shares [m] (> 0: it has a share). */
 void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip, double t, const double *y, double *out);
 /* The reports kept by the last rc_assemble_roots: 1 when y is, bit for bit,
  * the state of that evaluation (then rc_report_cache_get may be asked). */

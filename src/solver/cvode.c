@@ -85,6 +85,7 @@ typedef struct run_ctx {
     double *yfull, *ysc, *fsc, *ytf, *dyf, *ysf, *fa, *fb;
     int *old_mode, *old_branch, *old_track, *old_slip; /* the modes before a root return's events */
     int *old_pslip;                                    /* [npt] the contact points' modes before them */
+    double *jshare; /* [npt] the contact points' shares when the Jacobian was last evaluated */
     int fresh; /* modes changed without a restart: the Jacobian is stale */
     double h_restart; /* the first step of the last restart [s] (restart_step) */
     int own_h0;       /* the integrator runs from a restart with h_restart, no step taken yet */
@@ -131,6 +132,32 @@ static const double *whole(const run_ctx *c, N_Vector v, double *full)
  * evaluated into jsave only when CVODE asks for a new one (jok false), and
  * A is written in one pass over the fixed pattern, instead of CVODE's copy,
  * zero and scale-add of the whole sparse matrix at every setup. */
+/* Has a contact point's share moved since the Jacobian was evaluated
+ * (jshare)? Its friction's rows and columns scale with the share: a point
+ * that lands (w_j from 0) reaches shares 1e4 to 1e10 times those of the
+ * Jacobian within microseconds, and a Newton iteration on such a matrix can
+ * pass its convergence test in one iteration, away from the solution (a
+ * friction state driven past its limit against its own rate, then steps of
+ * 1e-12 s). The state's own rows move with the share's relative rate
+ * too: -(dw/dt / w) s_j, of order 1/(t - t_landing), is 1e9 /s at the
+ * landing and gone a few microseconds later; a Jacobian that keeps it
+ * damps every Newton correction of that state, which then follows the
+ * predictor (seen: a landed point's state driven to 1000 times its limit
+ * against its own rate, energy_friction falling). A share that doubled or
+ * halved (above RC_JSHARE_FLOOR), or moved by more than RC_JSHARE_MOVE,
+ * asks for a new Jacobian. */
+#define RC_JSHARE_MOVE 0.05
+#define RC_JSHARE_FLOOR 1e-12
+static int shares_moved(const run_ctx *c)
+{
+    const double *w = c->d->pt_share, *wj = c->jshare;
+    for (int j = 0; j < c->m->npt; j++) {
+        const double a = w[j], b = wj[j];
+        if (fabs(a - b) > RC_JSHARE_MOVE || a > 2.0 * b + RC_JSHARE_FLOOR || b > 2.0 * a + RC_JSHARE_FLOOR) return 1;
+    }
+    return 0;
+}
+
 static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleantype jok, booleantype *jcur,
                      realtype gamma, void *ud, N_Vector t1, N_Vector t2, N_Vector t3)
 {
@@ -147,7 +174,9 @@ static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleanty
      * then asks again (jok false) and gets a whole new Jacobian. */
     const int patched = c->jac_patched;
     c->jac_patched = 0;
+    if (jok && !patched && m->npt > 0 && shares_moved(c)) jok = SUNFALSE;
     if (!jok) {
+        if (m->npt > 0) memcpy(c->jshare, c->d->pt_share, (size_t)m->npt * sizeof(double));
         const double *yf = whole(c, y, c->ysc); /* the whole state (the part's slots depend on it) */
         if (!patched) {
             int st = rc_assemble_jac(m, c->d, t, yf, c->jsave);
@@ -377,10 +406,11 @@ static rc_status cv_open(void *self, const rc_model *m, rc_data *d, const rc_run
     c->old_slip = calloc((size_t)m->ninter + 1, sizeof(int));
     c->old_pslip = calloc((size_t)m->npt + 1, sizeof(int));
     c->jsave = calloc((size_t)m->nnz + 1, sizeof(double));
+    c->jshare = calloc((size_t)m->npt + 1, sizeof(double));
     c->kidx = malloc(ny * sizeof(int));
     c->ridx = malloc(ny * sizeof(int));
     c->qoff = malloc(((size_t)m->nbody + 1) * sizeof(int));
-    if (!c->old_mode || !c->old_branch || !c->old_track || !c->old_slip || !c->old_pslip || !c->jsave || !c->kidx ||
+    if (!c->old_mode || !c->old_branch || !c->old_track || !c->old_slip || !c->old_pslip || !c->jsave || !c->jshare || !c->kidx ||
         !c->ridx || !c->qoff)
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     /* the driver fills the whole state; CVODE's vectors follow in cv_start,
@@ -694,6 +724,7 @@ static void cv_close(void *self)
     free(c->old_slip);
     free(c->old_pslip);
     free(c->jsave);
+    free(c->jshare);
     if (c->d) c->d->jac_skip = NULL;
     free(c->cst);
     free(c->kidx);

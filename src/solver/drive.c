@@ -80,7 +80,10 @@ void root_directions(const rc_model *m, const rc_data *d, int *dir)
         r[RC_ROOT_SLIP] = 1;                                      /* limit reached / sliding stops */
         r[RC_ROOT_REV] = -1;                                      /* saturated sliding reverses */
     }
-    for (int j = 0; j < m->npt; j++) dir[rc_root_point_base(m) + j] = 1; /* points: as RC_ROOT_SLIP */
+    for (int j = 0; j < m->npt; j++) {
+        dir[rc_root_point_base(m) + j] = 1; /* points: as RC_ROOT_SLIP */
+        dir[rc_root_land_base(m) + j] = 1;  /* a point lands (its share rises from 0) */
+    }
     if (rc_cpl_nroots(m) > 0) rc_cpl_root_dirs(m, d, dir + rc_root_cpl_base(m));
 }
 

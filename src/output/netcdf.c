@@ -38,10 +38,12 @@
  *   program between the check and the write, a file size limit, a device
  *   error) leaves HDF5's handle unusable: the file is then closed as far as
  *   HDF5 can, and read back from its bytes on disk (read_back: a second,
- *   in-memory netCDF handle on a read-only mapping of the file, so that
- *   HDF5 cannot answer from the handle it still holds) to say exactly what
- *   it keeps; a file that does not read back is removed, and the message
- *   says so. Nothing is claimed of a file that was not read back.
+ *   in-memory netCDF handle on a copy of the file read into memory, so that
+ *   HDF5 cannot answer from the handle it still holds; in a child process,
+ *   read_back_apart, because HDF5 can crash on the damaged file) to say
+ *   exactly what it keeps; a file that does not read back is removed, and
+ *   the message says so. Nothing is claimed of a file that was not read
+ *   back.
  * - HDF5 under netCDF keeps library-wide state and Debian builds it without
  *   thread safety: every netCDF call of the library runs holding one
  *   process-wide lock (rc_nc_lock), so that threads running their own
@@ -55,8 +57,10 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <pthread.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <sys/statvfs.h>
+#include <sys/wait.h>
 #include <math.h>
 #include <netcdf.h>
 #include <netcdf_mem.h>
@@ -1554,6 +1558,101 @@ static int read_back(const rc_output *o, readback *rb, char *why, size_t nwhy)
     return 1;
 }
 
+/* Longest a read-back may take before its child process is killed [s]. */
+#define RC_READBACK_SECONDS 60.0
+
+/* What read_back says, sent from the child process to the parent. */
+typedef struct readback_msg {
+    int r;
+    readback rb;
+    char why[512];
+} readback_msg;
+
+/* read_back in a child process: HDF5 parsing the bytes that a filled disk
+ * left damaged can read through a garbage pointer (seen: SIGBUS in
+ * H5MM_xfree under nc_open_memio), which must not take the program down
+ * with it. The calling thread holds the netCDF lock, so no other thread is
+ * inside netCDF or HDF5 at the fork; the child only reads, sends its answer
+ * through a pipe and leaves with _exit (HDF5's exit-time clean-up would
+ * crash on the abandoned handle). A child that dies, or takes longer than
+ * RC_READBACK_SECONDS, is a file that does not read back (0). Without a
+ * child (fork or pipe failing) the read-back runs here. */
+static int read_back_apart(const rc_output *o, readback *rb, char *why, size_t nwhy)
+{
+    int fds[2];
+    if (pipe(fds) != 0) return read_back(o, rb, why, nwhy);
+    fflush(NULL);
+    const pid_t pid = fork();
+    if (pid < 0) {
+        close(fds[0]);
+        close(fds[1]);
+        return read_back(o, rb, why, nwhy);
+    }
+    if (pid == 0) {
+        close(fds[0]);
+        /* what HDF5 (or a sanitizer) prints of a crash there is not the
+         * run's: the parent reports the outcome */
+        const int dn = open("/dev/null", O_WRONLY | O_CLOEXEC);
+        if (dn >= 0) dup2(dn, 2);
+        readback_msg msg;
+        memset(&msg, 0, sizeof msg);
+        msg.r = read_back(o, &msg.rb, msg.why, sizeof msg.why);
+        const char *b = (const char *)&msg;
+        for (size_t put = 0; put < sizeof msg;) {
+            const ssize_t n = write(fds[1], b + put, sizeof msg - put);
+            if (n < 0 && errno == EINTR) continue;
+            if (n <= 0) _exit(3);
+            put += (size_t)n;
+        }
+        _exit(0);
+    }
+    close(fds[1]);
+    readback_msg msg;
+    memset(&msg, 0, sizeof msg);
+    size_t got = 0;
+    int status = 0, reaped = 1;
+    const struct timespec nap = {0, 10 * 1000 * 1000}; /* 0.01 s */
+    for (double waited = 0.0;; waited += 0.01) {
+        const pid_t w = waitpid(pid, &status, WNOHANG);
+        if (w == pid) break;
+        if (w < 0 && errno != EINTR) {
+            /* reaped elsewhere (SIGCHLD ignored by the program): its
+             * answer, if whole in the pipe, is all there is */
+            reaped = 0;
+            break;
+        }
+        if (waited > RC_READBACK_SECONDS) {
+            kill(pid, SIGKILL);
+            while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+            }
+            close(fds[0]);
+            snprintf(why, nwhy, "reading it back took longer than %.0f s", RC_READBACK_SECONDS);
+            return 0;
+        }
+        nanosleep(&nap, NULL);
+    }
+    /* the child has ended: its answer is whole in the pipe, or missing */
+    for (char *b = (char *)&msg; got < sizeof msg;) {
+        const ssize_t n = read(fds[0], b + got, sizeof msg - got);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;
+        got += (size_t)n;
+    }
+    close(fds[0]);
+    if (!reaped) status = got == sizeof msg ? 0 : SIGKILL; /* whole: as exited 0; else as killed */
+    if (WIFSIGNALED(status)) {
+        snprintf(why, nwhy, "netCDF crashed reading it (signal %d, in a child process)", WTERMSIG(status));
+        return 0;
+    }
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || got != sizeof msg) {
+        snprintf(why, nwhy, "the child process reading it ended without an answer");
+        return 0;
+    }
+    *rb = msg.rb;
+    snprintf(why, nwhy, "%s", msg.why);
+    return msg.r;
+}
+
 /* A write failed (o->fail): close the file as far as HDF5 can, read it back
  * from the disk and say what it keeps; a file that does not read back is
  * removed. `closed`: nc_close was already called (and failed). RC_EIO.
@@ -1572,7 +1671,7 @@ static rc_status salvage(rc_output *o, int closed, rc_error *err)
     const char *failed = o->fail[0] ? o->fail : "a write of the results file failed";
     readback rb;
     char why[512] = "";
-    const int r = read_back(o, &rb, why, sizeof why);
+    const int r = read_back_apart(o, &rb, why, sizeof why);
     if (r > 0) {
         char kept[160];
         if (rb.nvalid > 0)

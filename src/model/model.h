@@ -404,6 +404,11 @@ typedef struct rc_data {
                             separates at P = -band; open: -band, it closes at
                             P = +band), force root F_n + band[1] [N] (closed:
                             +fband; released: -fband); 0 otherwise */
+    double *inter_rband; /* [ninter] the power law's RDF rate root band [m/s]: root dP_e/dt +
+                            band, signed (LOAD: +band, the rebound waits for the rate to
+                            fall below -band; UNLOAD: -band), set where the branch was
+                            decided at a rate within its rounding (events.c); 0 again
+                            at the interface's next event */
     struct rc_cpl_data *cpl; /* couplings: catenary warm starts, workspace (coupling.h) */
     double *imp_free;    /* [ny] imposed velocities: the free accelerations of
                             their rows at the last rhs (imposed.h), NULL: none */

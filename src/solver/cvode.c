@@ -128,10 +128,6 @@ static const double *whole(const run_ctx *c, N_Vector v, double *full)
     return full;
 }
 
-/* The Newton matrix I - gamma J formed in place (CVodeSetLinSysFn): J is
- * evaluated into jsave only when CVODE asks for a new one (jok false), and
- * A is written in one pass over the fixed pattern, instead of CVODE's copy,
- * zero and scale-add of the whole sparse matrix at every setup. */
 /* Has a contact point's share moved since the Jacobian was evaluated
  * (jshare)? Its friction's rows and columns scale with the share: a point
  * that lands (w_j from 0) reaches shares 1e4 to 1e10 times those of the
@@ -158,6 +154,11 @@ static int shares_moved(const run_ctx *c)
     return 0;
 }
 
+/* The Newton matrix I - gamma J formed in place (CVodeSetLinSysFn): J is
+ * evaluated into jsave only when CVODE asks for a new one (jok false, or
+ * a contact point's share moved: shares_moved), and
+ * A is written in one pass over the fixed pattern, instead of CVODE's copy,
+ * zero and scale-add of the whole sparse matrix at every setup. */
 static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleantype jok, booleantype *jcur,
                      realtype gamma, void *ud, N_Vector t1, N_Vector t2, N_Vector t3)
 {

@@ -177,11 +177,13 @@ static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleanty
     c->jac_patched = 0;
     if (jok && !patched && m->npt > 0 && shares_moved(c)) jok = SUNFALSE;
     if (!jok) {
-        if (m->npt > 0) memcpy(c->jshare, c->d->pt_share, (size_t)m->npt * sizeof(double));
         const double *yf = whole(c, y, c->ysc); /* the whole state (the part's slots depend on it) */
         if (!patched) {
             int st = rc_assemble_jac(m, c->d, t, yf, c->jsave);
             if (st) return st;
+            /* the shares of a whole Jacobian (a patched one keeps the other
+             * points' blocks, and their shares, from the last whole one) */
+            if (m->npt > 0) memcpy(c->jshare, c->d->pt_share, (size_t)m->npt * sizeof(double));
         }
         *jcur = SUNTRUE;
         /* new values, perhaps new active slots: the part follows */

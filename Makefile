@@ -36,12 +36,13 @@ VERSION := $(shell sed -n 's/^\#define RICOCHET_VERSION "\(.*\)"/\1/p' include/r
 SOMAJOR := $(firstword $(subst ., ,$(VERSION)))
 SONAME  := libricochet.so.$(SOMAJOR)
 
-# Sources are discovered stage by stage (docs/design.md, "Pipeline and files");
-# src/cli holds the command-line program, everything else goes into the library.
+# Sources are discovered stage by stage and room by room (src/README.md): a
+# stage's files and its rooms' (src/<stage>/<room>/); src/cli holds the
+# command-line program, everything else goes into the library.
 STAGES  := base case model engine solver output
-LIB_SRC := $(foreach d,$(STAGES),$(wildcard src/$(d)/*.c))
+LIB_SRC := $(foreach d,$(STAGES),$(wildcard src/$(d)/*.c src/$(d)/*/*.c))
 LIB_OBJ := $(patsubst src/%.c,$(BUILD)/obj/%.o,$(LIB_SRC))
-SRC_HDR := $(wildcard src/*/*.h src/*/*.inc include/ricochet/*.h)
+SRC_HDR := $(wildcard src/*/*.h src/*/*/*.h src/*/*/*.inc include/ricochet/*.h)
 TEST_SRC := $(wildcard tests/*.c)
 TEST_OBJ := $(patsubst tests/%.c,$(BUILD)/tobj/%.o,$(TEST_SRC))
 LIB     := $(BUILD)/libricochet.a

@@ -14,6 +14,14 @@ read -r up uf < <(tail -n 1 "$log" | sed -E 's/^([0-9]+) passed, ([0-9]+) failed
 pass=$((pass + ${up:-0}))
 fail=$((fail + ${uf:-1}))
 
+# layering: includes and calls between files follow the rules in the
+# folders' README.md files, no call cycle (scripts/check-layers.py)
+/usr/bin/python3 scripts/check-layers.py "$build" > "$log" 2>&1
+cat "$log"
+pass=$((pass + $(grep -c '^PASS ' "$log")))
+fail=$((fail + $(grep -c '^FAIL ' "$log")))
+grep -qE '^(PASS|FAIL) ' "$log" || { echo "FAIL layers: scripts/check-layers.py printed no verdict"; fail=$((fail + 1)); }
+
 # command-line behaviour
 bash tests/cli_test.sh "$build/ricochet" > "$log" 2>&1
 cat "$log"

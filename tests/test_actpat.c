@@ -14,10 +14,13 @@
 #include "harness.h"
 #include "model/joint.h"
 #include "model/model.h"
-#include "model/stick.h"
+#include "engine/constraints/stick.h"
 #include "solver/activepart.h"
 #include "solver/solver.h"
 #include "testutil.h"
+#include "engine/assembly/assembly.h"
+#include "engine/events/events.h"
+#include "engine/analyses/analyses.h"
 
 typedef struct probe_log {
     long evals, checked, outside, outside_mut, mut_evals;

@@ -1,6 +1,6 @@
 /*
  * Contact couplings (/COUPLING/CONTACT; model/coupling_contact.c,
- * engine/contact_coupling.inc): the faces of a segment surface, the
+ * engine/kernels/contact_coupling.inc): the faces of a segment surface, the
  * estimators, the Jacobian against finite differences (plane, box from
  * inside, cylinder, a sphere and a segment surface on another body, a fixed
  * segment surface; damping and friction; every face pushing, and mixed
@@ -17,6 +17,8 @@
 #include "model/model.h"
 #include "harness.h"
 #include "testutil.h"
+#include "engine/assembly/assembly.h"
+#include "engine/events/events.h"
 
 static rc_model *load(const char *path)
 {

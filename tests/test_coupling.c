@@ -24,6 +24,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include "engine/assembly/assembly.h"
 
 /* ---- decks in a temporary directory -------------------------------------- */
 static char tdir[64];

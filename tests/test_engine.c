@@ -12,6 +12,7 @@
 #include "model/model.h"
 #include "harness.h"
 #include "testutil.h"
+#include "engine/assembly/assembly.h"
 
 /* A three-body case: body 1 (sphere, offset from its CoM, full inertia),
  * body 2 (sphere), a tilted plane fixed in space; sphere-plane and

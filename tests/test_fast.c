@@ -1,5 +1,5 @@
 /*
- * The fast path of the contact kernel (engine/kernel_fast.inc) against the
+ * The fast path of the contact kernel (engine/kernels/kernel_fast.inc) against the
  * general kernel (kernels.inc): right-hand side, root functions (with and
  * without the reports kept for the impact samples) and reports, at random
  * states in every mode, on decks whose interfaces take it (spheres against
@@ -16,6 +16,8 @@
 #include "harness.h"
 #include "model/power.h"
 #include "testutil.h"
+#include "engine/assembly/assembly.h"
+#include "engine/events/events.h"
 
 static uint64_t rng_state = 0x9e3779b97f4a7c15ULL;
 /* uniform in (-1, 1) (xorshift64*) */

@@ -1,5 +1,5 @@
 /* The physics checks of every run (solver/guards.c) and of the start
- * (engine/start.c): each check fires on a deliberately bad state or deck,
+ * (engine/analyses/start.c): each check fires on a deliberately bad state or deck,
  * and stays quiet on good ones; a violation stops the run with
  * RC_EPHYSICS and a results file marked "physics check failed", or is
  * recorded when the run was asked to go on. */
@@ -9,13 +9,15 @@
 #include <stdlib.h>
 #include <unistd.h>
 
-#include "engine/bounds.h"
+#include "engine/assembly/bounds.h"
 #include "model/coupling.h"
 #include "model/model.h"
 #include "ricochet/ricochet.h"
 #include "solver/guards.h"
 #include "solver/integrator.h"
 #include "testutil.h"
+#include "engine/assembly/assembly.h"
+#include "engine/events/events.h"
 
 #define DEMO "cases/demo_sphere_drop.rad"
 

@@ -16,6 +16,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "engine/assembly/assembly.h"
+#include "engine/constraints/joints.h"
 
 /* A chain of five free bodies under gravity, one joint of each kind. */
 static const char *all_kinds =

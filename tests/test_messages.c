@@ -15,6 +15,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
+#include "engine/analyses/restitution.h"
 
 static void check_names(const char *path)
 {

@@ -14,11 +14,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "engine/events.h"
+#include "engine/events/events.h"
 #include "harness.h"
 #include "model/friction.h"
 #include "model/model.h"
 #include "testutil.h"
+#include "engine/assembly/assembly.h"
 
 /* A row of five touching balls at x = i 2R (not exactly representable: the
  * pairs overlap or part by rounding), the first one moving; Hertz contacts. */

@@ -14,7 +14,7 @@
 #include "model/imposed.h"
 #include "model/model.h"
 #include "model/power.h"
-#include "engine/step5.h"
+#include "engine/kernels/step5.h"
 #include "base/error.h"
 #include "harness.h"
 

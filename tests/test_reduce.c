@@ -14,6 +14,8 @@
 #include "solver/integrator.h"
 #include "solver/solver.h"
 #include "testutil.h"
+#include "engine/assembly/assembly.h"
+#include "engine/events/events.h"
 
 /* Three bodies on a floor plane (z = 0), gravity -z:
  *  1 a sphere whose translations are held (/BCS 111 000), spinning freely

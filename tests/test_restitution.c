@@ -1,6 +1,6 @@
 /*
  * Restitution of a nonlinear law by the single-contact ODE
- * (engine/restitution.c): against the closed form of the clipped linear
+ * (engine/analyses/restitution.c): against the closed form of the clipped linear
  * contact, the undamped laws (e = 1), the damping derived for an asked e,
  * the impact speed derived from the initial state, and the errors.
  */
@@ -10,12 +10,13 @@
 #include <string.h>
 
 #include "base/error.h"
-#include "engine/events.h"
-#include "engine/restitution.h"
+#include "engine/events/events.h"
+#include "engine/analyses/restitution.h"
 #include "model/model.h"
 #include "model/power.h"
 #include "harness.h"
 #include "testutil.h"
+#include "engine/assembly/assembly.h"
 
 /* A 1 kg sphere 2 mm above a fixed plane at -1 m/s (z), then the interface
  * card text `inter` and its functions. */

@@ -14,6 +14,8 @@
 #include "solver/integrator.h"
 #include "solver/solver.h"
 #include "testutil.h"
+#include "engine/assembly/assembly.h"
+#include "engine/events/events.h"
 
 /* 1 when interface i's root k is in the live list */
 static int is_live(const int *live, int n, int i, int k)

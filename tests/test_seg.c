@@ -1,6 +1,6 @@
 /*
  * Segment surfaces (/SURF/SEG, /SURF/PART; model/segsurf.c) and their
- * contact with an analytic plane (engine/kernels.inc, seg_spread): reading
+ * contact with an analytic plane (engine/kernels/kernels.inc, seg_spread): reading
  * and its errors, the outer faces of a part, the force F(P) shared over the
  * nodes in proportion to their penetrations (against the rule computed
  * here), and the exact Jacobian against central finite differences.
@@ -21,6 +21,7 @@
 #include "model/power.h"
 #include "harness.h"
 #include "testutil.h"
+#include "engine/assembly/assembly.h"
 
 static char seg_path[128];
 

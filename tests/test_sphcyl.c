@@ -18,6 +18,7 @@
 #include "model/model.h"
 #include "harness.h"
 #include "testutil.h"
+#include "engine/assembly/assembly.h"
 
 static char sc_path[128];
 

@@ -1,5 +1,5 @@
 /*
- * Exact stick tests (model/stick.h, engine/stick.c): the exact Jacobian of
+ * Exact stick tests (engine/constraints/stick.h, engine/constraints/stick.c): the exact Jacobian of
  * the extended residual (the constraint rows and the multipliers' terms in
  * the bodies' rows, complex step) against central finite differences of
  * the residual; the consistent multipliers (the sticking velocities stay
@@ -12,11 +12,13 @@
 #include "base/error.h"
 #include "model/model.h"
 #include "model/joint.h"
-#include "model/stick.h"
+#include "engine/constraints/stick.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "engine/assembly/assembly.h"
+#include "engine/constraints/stick_joints.h"
 
 /* Two free spheres, full rotations, on a fixed plane and on each other,
  * both interfaces with exact stick (the second with a static coefficient). */
@@ -162,7 +164,7 @@ static void test_stick_consistent_multipliers(void)
     rc_model_free(m);
 }
 
-/* Joints and exact stick together (engine/stick_joints.c): the two spheres
+/* Joints and exact stick together (engine/constraints/stick_joints.c): the two spheres
  * also tied by a rod between their centres. */
 static const char *rod_tail = "/JOINT/DISTANCE/1\nrod\n1,2\n0.001,-0.002,0.0499\n0.013,0.021,0.1381\n/END\n";
 

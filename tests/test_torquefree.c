@@ -23,6 +23,8 @@
 #include "solver/integrator.h"
 #include "solver/solver.h"
 #include "testutil.h"
+#include "engine/assembly/assembly.h"
+#include "engine/events/events.h"
 
 /* Variants of the free settling column (bench.py column_deck, not locked):
  * n spheres of radius 0.01 m stacked on a floor, gaps 1e-4 m, gravity -z,

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include "engine/assembly/assembly.h"
 
 #define TU_MAX_TMP 256
 static char tmp_dir[64];

@@ -9,6 +9,7 @@
 #include <stdarg.h>
 
 #include "model/model.h"
+#include "engine/assembly/data.h"
 
 /* Write `len` bytes as <private temporary directory>/name (created on first
  * use); returns the path (static storage, valid until tu_tmp_cleanup). */

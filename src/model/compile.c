@@ -474,7 +474,7 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     m->inter_vimp[i] = t6->v_imp;
     if (t6->e_target > 0) {
         /* the damping that gives it is derived with the scales
-         * (engine/scales.c); it needs a law whose restitution is known */
+         * (engine/analyses/scales.c); it needs a law whose restitution is known */
         const rc_loc l6 = rc_loc_or(t6->line_loc[5], t6->loc);
         if (!(t6->e_target <= 1))
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field e_target: expected a restitution in (0, 1], got %g",
@@ -842,7 +842,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     /* imposed velocities (imposed.c) */
     if ((st = rc_imp_compile(c, m, err))) goto fail;
     /* states (the tolerances and the Jacobian pattern follow in
-     * engine/prepare.c) */
+     * engine/analyses/prepare.c) */
     if ((st = layout(c, m, err))) goto fail;
     /* joints (model/joint.c), on the state layout */
     if ((st = rc_jnt_compile(c, m, err))) goto fail;

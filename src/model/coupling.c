@@ -317,9 +317,3 @@ void rc_cpl_data_free(rc_cpl_data *cd)
     rc_cat_ws_free(cd->ws);
     free(cd);
 }
-
-
-const char *rc_cpl_failed(const rc_model *m, const rc_data *d)
-{
-    return d->cpl->fail >= 0 ? m->cpl->name[d->cpl->fail] : NULL;
-}

@@ -151,7 +151,6 @@ void rc_cpl_atol(rc_model *m);
  * its energy states, columns = all states of its free bodies. */
 void rc_cpl_block(const rc_model *m, int k, rc_jblock *jb);
 void rc_cpl_free(rc_couplings *cpl);
-void rc_cpl_print_summary(const rc_model *m, FILE *f); /* engine/report.c */
 
 /* ---- data ------------------------------------------------------------ */
 rc_cpl_data *rc_cpl_data_new(const rc_model *m);
@@ -173,48 +172,7 @@ void rc_cat_ws_free(void *ws);
  * Returns 0, or 1 when the solver fails (recoverable). */
 int rc_cat_solve(const rc_couplings *cpl, int k, void *ws, double *warm, double X, double Y,
                  double w, rc_cat_sol *sol);
-/* Gravity acting on the lines at time t [m/s^2] (engine/body.c). */
-void rc_cpl_gravity(const rc_model *m, double t, double g[3]);
-
-/* ---- assembly (coupling_rhs.inc in assemble_rhs.c, coupling_jac.inc in
- *      assemble_jac.c) --------------------------------------------------- */
-/* Add the coupling forces to the accelerations and write the energy
- * rates. Returns 0, or 1 (recoverable) when a coupling fails. */
-int rc_cpl_rhs(const rc_model *m, rc_data *d, double t, const double *y, double *ydot);
-/* Report of coupling k at (t, y); returns 0 or 1 (catenary not solved). */
-int rc_cpl_report_eval(const rc_model *m, const rc_data *d, int k, double t, const double *y,
-                       rc_cpl_report *r);
-/* Dense block of coupling k (rows/cols of cpl->jb[k]); d may be NULL. */
-int rc_cpl_dense_block(const rc_model *m, const rc_data *d, int k, double t, const double *y,
-                       double *out);
-/* Add the coupling Jacobian blocks into the CSC values. */
-int rc_cpl_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val);
-/* Root functions of the contact couplings (rc_cpl_nroots of them), their
- * directions, the face modes at the start and at events (engine/contact_rhs.inc,
- * included by assemble_rhs.c). rc_cpl_events returns the events written into
- * kinds[]/cpls[] (at most max_ev) and sets *restart when a mode changed. */
-void rc_cpl_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
-void rc_cpl_root_dirs(const rc_model *m, const rc_data *d, int *dir);
-void rc_cpl_modes_init(const rc_model *m, rc_data *d, double t, const double *y);
-int rc_cpl_events(const rc_model *m, rc_data *d, double t, const double *y, const int *roots, const char **kinds,
-                  int *cpls, int max_ev, int *restart);
 
 /* Joint stop couplings: their number (n - ncard). */
 static inline int rc_cpl_nlim(const rc_model *m) { return m->cpl ? m->cpl->n - m->cpl->ncard : 0; }
-/* The stop force or moment of joint j at (t, y) in the modes of d: the
- * generalised force on the joint coordinate q (along +q on body a) [N] or
- * [N m]; 0 without stops (engine/coupling_rhs.inc). *q receives q [m] or
- * [rad] (NaN without stops). */
-double rc_cpl_joint_stop(const rc_model *m, const rc_data *d, int j, const double *y, double *q);
-
-/* ---- output ------------------------------------------------------------ */
-/* Values per coupling at (t, y) for one output record, into buf [9 n]:
- * force [n], length [n], force on end 1 [3 n], force on end 2 [3 n],
- * lowest point of a catenary [n] (NaN for springs) (rc_cpl_report; NaN for
- * a catenary that cannot be solved). */
-void rc_cpl_frame(const rc_model *m, const rc_data *d, double t, const double *y, double *buf); /* engine/report.c */
-/* Name of the coupling whose forces failed in the last right-hand side or
- * Jacobian, NULL when none. */
-const char *rc_cpl_failed(const rc_model *m, const rc_data *d);
-
 #endif

@@ -54,9 +54,4 @@ rc_status rc_cpl_contact_compile(const struct rc_case *c, rc_model *m, int k, rc
 void rc_cpl_contact_free(rc_cpl_contact *ct);
 /* Total number of root functions of the couplings. */
 int rc_cpl_nroots(const rc_model *m);
-/* `ricochet check` lines of contact coupling k (engine/contact_report.c);
- * r: its report at t = 0 (NULL: none). */
-struct rc_cpl_report;
-void rc_cpl_contact_print(const rc_model *m, int k, const struct rc_cpl_report *r, FILE *f);
-
 #endif

@@ -42,7 +42,7 @@ typedef struct rc_fric {
     int widx;             /* own-state index of W_fric, -1 when no friction    */
     int exact;            /* 1: exact stick (TYPE6 Istick 1, /FRICTION Iform 3): while
                              sticking the tangential relative velocity is held at
-                             zero by a constraint of the IDA path (model/stick.h),
+                             zero by a constraint of the IDA path (engine/constraints/stick.h),
                              no stick spring; sliding as the incremental form     */
     double mus;           /* exact stick: static coefficient of the stick limit
                              Sfric + mus F_n [-]                                  */

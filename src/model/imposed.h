@@ -63,9 +63,4 @@ rc_status rc_imp_slots(rc_model *m, rc_error *err);
 void rc_imp_free(rc_imposed *imp);
 void rc_imp_print(const rc_model *m, FILE *f);
 
-/* Right-hand side (assemble_rhs.c): overwrite the imposed rows, W_imp'. */
-void rc_imp_rhs(const rc_model *m, rc_data *d, double t, const double *y, double *ydot);
-/* Jacobian (assemble_jac.c): the W_imp row, then the imposed rows replaced. */
-int rc_imp_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val);
-
 #endif

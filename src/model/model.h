@@ -151,7 +151,7 @@ typedef struct rc_jblock {
 #endif
 /* Bands about zero at events, in roundings (ulps) of the quantities
  * involved: touch bands of the coordinates, the hysteresis roots' band of
- * the forces (engine/events.c, assemble_rhs.c) */
+ * the forces (engine/events/events.c, assemble_rhs.c) */
 #define RC_TOUCH_ULPS 1e3
 /* ... and at least this many roundings of the deck's coordinates (the
  * positions the deck gave, before the model moved its origin) */
@@ -297,7 +297,7 @@ struct rc_model {
                             so that the probe states, whose contacts may pull, see the
                             structure of a pressing contact (kernels.inc, type6) */
     unsigned char *inter_fast; /* [ninter] 1: evaluated in real arithmetic by the fast path
-                            (engine/kernel_fast.inc: a centred sphere against a sphere or a
+                            (engine/kernels/kernel_fast.inc: a centred sphere against a sphere or a
                             plane, no friction, no hysteresis state, no Inacti offset), set by
                             rc_model_compile (rc_fast_select); NULL or 0: the general kernel */
 
@@ -336,7 +336,7 @@ struct rc_model {
     double tend, dtout;  /* [s] */
     int ev_state;        /* /RUN Ev_state: 0 auto, 1 always, 2 never (rc_event_records) */
     int on_violation;    /* /RUN On_viol: a failed physics check 0, 1 stops the run, 2 warns (solver/guards.h) */
-    char *start_note;    /* an overlap at t = 0 accepted by On_viol 2 (engine/start.c): its message; NULL: none */
+    char *start_note;    /* an overlap at t = 0 accepted by On_viol 2 (engine/analyses/start.c): its message; NULL: none */
     int start_inter;     /* its interface */
     double start_energy, start_escale; /* its elastic energy and the scene's E_s [J] */
     double rtol;
@@ -366,112 +366,7 @@ struct rc_model {
 /* Which tolerances are derived from the model's scales (blank /SOLVER fields). */
 enum { RC_TOL_AUTO_POS = 1, RC_TOL_AUTO_QUAT = 2, RC_TOL_AUTO_VEL = 4, RC_TOL_AUTO_OMEGA = 8, RC_TOL_AUTO_ENERGY = 16 };
 
-/* Mutable run data. */
-typedef struct rc_data {
-    int *inter_mode;     /* [ninter] rc_inter_mode */
-    int *inter_branch;   /* [ninter] rc_branch (Iform 1, 2) */
-    int *inter_track;    /* [ninter] 1: Inacti 5 offset follows the separation */
-    int *inter_slip;     /* [ninter] friction: 0 stick, 1 slip */
-    int *pt_slip;        /* [npt] friction per contact point: 0 stick, 1 slip */
-    double *pt_lband;    /* [npt] each contact point's landing band [m]: its landing root is
-                            q_j + band, set at its landing so that the root it crossed
-                            does not cross again at the same instant; 0 again at the
-                            interface's next event (events.c) */
-    double *pt_share;    /* [npt] each contact point's share w_j at the last evaluation of the
-                            roots (the integrator's step ends; 0 while its interface is not
-                            closed): its states' error weights (rc_point_ewt_scale) */
-    void *pt_work;       /* Jacobian scratch of the contact points (complex) */
-    void *pt_flip;       /* scratch of the contact points' stick/slip flips at events
-                            (events.c points_flip): 3 doubles, an int, a flag per point */
-    void *node_cache;    /* node geometry of a node pair, RC_NODE_CACHE complex
-                            values per point (kernels.inc, seg_fill); it
-                            follows seg_hint in one allocation */
-    int *seg_hint;       /* [rc_seg_hint_len] the segment each surface node met
-                            last, -1: none (geom_seg.inc, node_seg) */
-    double *inter_dref;  /* [ninter*3] sliding direction when a stateless friction
-                            law saturated (reversal root) [-] */
-    double *inter_fcstr; /* [ninter] the normal force a settled contact's
-                            constraint carries (IDA path, engine/stick.c;
-                            set at records, 0 otherwise) [N] */
-    int *inter_settled;  /* [ninter] 1: a closed contact held in persistent contact
-                            after its bounces accumulated (the release at zero
-                            force suspended; it opens when P returns to 0;
-                            docs/theory.md 5.2); set by the driver, cleared when
-                            the mode leaves CLOSED */
-    double *inter_band;  /* [ninter*2] signed touch bands of a contact left at
-                            zero penetration or zero force (events.c): zone root
-                            P + band[0] [m] (closed or released: +band, it
-                            separates at P = -band; open: -band, it closes at
-                            P = +band), force root F_n + band[1] [N] (closed:
-                            +fband; released: -fband); 0 otherwise */
-    double *inter_rband; /* [ninter] the power law's RDF rate root band [m/s]: root dP_e/dt +
-                            band, signed (LOAD: +band, the rebound waits for the rate to
-                            fall below -band; UNLOAD: -band), set where the branch was
-                            decided at a rate within its rounding (events.c); 0 again
-                            at the interface's next event */
-    struct rc_cpl_data *cpl; /* couplings: catenary warm starts, workspace (coupling.h) */
-    double *imp_free;    /* [ny] imposed velocities: the free accelerations of
-                            their rows at the last rhs (imposed.h), NULL: none */
-    double *imp_scratch; /* [3*ny] imposed velocities: Jacobian scratch */
-    /* the interfaces' dense Jacobian blocks as the last rc_assemble_jac
-     * added them (rc_jac_refresh_inter); NULL when the model had no
-     * Jacobian pattern yet */
-    double *jcache;      /* [sum of nrow*ncol of jb_inter] */
-    int64_t *jcache_off; /* [ninter + 1] offsets into jcache */
-    int jcache_ok;       /* jcache holds the blocks of the values last assembled */
-    const char *jac_skip; /* [ny] set by a backend that leaves these states out
-                            of its Newton matrix (cvode.c): the Jacobian's
-                            columns of these states are not evaluated (their
-                            values are left 0); NULL: every column */
-    /* the reports of the last root evaluation (rc_report_cache_*): read by
-     * the driver's samples at the same state; NULL: none */
-    struct rc_repcache *repc;
-    long n_rhs, n_jac, n_root;
-    long n_jac_refresh;  /* interface blocks refreshed after events */
-    long n_klu_sym;      /* KLU symbolic analyses of the Newton matrix so far (0: not counted) */
-    long newton_nnz;     /* entries of the largest Newton matrix so far (0: not counted) */
-    int fail_inter;      /* element that produced a non-finite force, -1 */
-    double fail_t;
-} rc_data;
-
-/* The reports of the last root evaluation (rc_data.repc): the state they
- * were evaluated at, and per interface its report and the modes it was
- * evaluated in (rc_assemble_roots writes it; engine/assemble_rhs.c). */
-typedef struct rc_repcache {
-    double *y;                   /* [ny] the state of the evaluation */
-    int on;                      /* kept (set by the driver while it samples) */
-    int ok;                      /* y holds a state */
-    struct rc_inter_report *rep; /* [ninter] */
-    int *key;                    /* [4 ninter] mode, branch, track, slip; mode -1: not evaluated */
-} rc_repcache;
-
-/* What the output and the event logic see of one interface. */
-typedef struct rc_inter_report {
-    double p;            /* penetration past the (effective) Gap [m] */
-    double vn;           /* approach rate dp/dt [m/s] */
-    double p_raw;        /* penetration past the nominal Gap [m] */
-    double vn_raw;       /* its rate [m/s] */
-    double pl, vl;       /* the law's penetration and rate: p and vn, or with
-                            several contact points P_e and v_bar [m], [m/s] */
-    double fload;        /* elastic(-plastic) force F of the law [N] */
-    double fdamp;        /* damping force [N] */
-    double fn;           /* total normal force F + F_damp, unclipped [N] */
-    double fl, fu;       /* load and unload curves at P [N] */
-    double fh;           /* hysteresis state F_h (0 when absent) [N] */
-    double offset;       /* Inacti 5 gap reduction [m] */
-    double ft[3];        /* friction force on body a, applied [N] */
-    double fraw[3];      /* friction force of the law, before the filter [N] */
-    double flim;         /* friction limit Sfric + mu F_n [N] */
-    double fstored;      /* energy in the stick springs, |F_t|^2 / (2 K_t) per
-                            contact point (K_t its share) [J] */
-    double vslip;        /* sliding speed |v_t| [m/s] */
-    double slip_root;    /* stick: |F_t|^2 - F_lim^2; slip: v_t . e */
-    double vt[3];        /* tangential relative velocity at the contact point [m/s] */
-    double point[3];     /* contact point [m] */
-    double normal[3];    /* unit normal, from a to b [-] */
-} rc_inter_report;
-
-/* ---- data ---------------------------------------------------------- */
+/* ---- records, state names ------------------------------------------ */
 /* Full-state records at events (docs/case-format.md, /RUN Ev_state): with
  * Ev_state 0, while the model has at most RC_EVREC_MAX_BODIES bodies. */
 #define RC_EVREC_MAX_BODIES 100
@@ -480,71 +375,11 @@ static inline int rc_event_records(const rc_model *m)
     return m->ev_state == 1 || (m->ev_state == 0 && m->nbody <= RC_EVREC_MAX_BODIES);
 }
 
-rc_data *rc_data_new(const rc_model *m);
-void rc_data_free(rc_data *d);
-
-/* Restitution of a linear contact that cannot pull at damping ratio
- * zeta >= 0 (NaN otherwise); *tau = omega times the contact time
- * (report.c). */
-double rc_linear_restitution(double zeta, double *tau);
-/* Is the load curve of TYPE6 interface i a straight line through the
- * origin? Its slope F/P in *k [N/m] (report.c). */
-int rc_type6_linear_slope(const rc_model *m, int i, double *k);
 /* Name of state i for messages: "/RBODY/3, velocity z [m/s]" (statename.c). */
 void rc_state_name(const rc_model *m, int i, char *buf, size_t n);
 
-/* ---- engine (assemble.c) ------------------------------------------- */
-/* Initial state vector [ny]. */
-void rc_initial_state(const rc_model *m, double *y);
-/* A state vector y (ny values) from the model's coordinates into the deck's:
- * the bodies' positions plus the model's origin (what the caller sees:
- * rc_run_options.y_end, rc_session_state, the results). */
-void rc_state_to_deck(const rc_model *m, double *y);
-/* The states that keep their initial values y0 through any run of m on
- * the ODE path (docs/theory.md 7.2, "What the integrator carries"): a held
- * velocity component (/BCS; its rate is set to 0 after every force, and
- * an imposed velocity cannot name it), the position along a held
- * translation whose velocity is exactly 0 in y0, the quaternion of a
- * body whose rotations are all held with omega exactly 0 in y0, and the
- * quaternion and omega of a body on which no moment can act
- * (rc_moment_free_bodies) with omega exactly 0 in y0. `written`
- * [ny] marks the states an event may write (NULL: the events of events.c,
- * which write interface and contact-point states only, never a body's);
- * such a state is never constant, nor the position or quaternion that
- * depends on it. cst[ny] receives 1 for the constant states; returns
- * their number (body.c). */
-int rc_constant_states(const rc_model *m, const double *y0, const char *written, char *cst);
-/* mf[nbody] receives 1 for the free bodies on which no moment about the
- * centre of mass can act in any state and mode (docs/theory.md 7.2): every
- * interface side on the body a sphere centred exactly on its centre of
- * mass in a sphere-plane, sphere-sphere, sphere-box or sphere-cylinder
- * pair without friction of any kind; no coupling, joint or imposed
- * velocity on it. Gravity acts at the centre of mass. (body.c) */
-void rc_moment_free_bodies(const rc_model *m, char *mf);
-/* ydot = f(t, y; modes). Returns 0, or 1 (recoverable) on a non-finite force. */
-int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, double *ydot);
-/* Jacobian values into `val` [nnz] on the fixed pattern. */
-int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val);
-/* After a mode change of interface i: replace its block in `val` (values
- * last assembled by rc_assemble_jac, with later refreshes) by its block at y
- * in d's present modes; the rest of `val` stays as it was. 0, or -1 when d
- * holds no blocks of `val`, or when the model has imposed velocities (their
- * rows are rewritten after every element): assemble it whole then. */
-int rc_jac_refresh_inter(const rc_model *m, rc_data *d, int i, const double *y, double *val);
-/* After stick/slip flips of some contact points of interface i (their modes
- * before in old_slip[inter_npt], now in d->pt_slip), its modes otherwise
- * unchanged: the flipped points' part of `val` at y in their new modes (their
- * rows and columns anew, their forces' share of the interface block replaced
- * by the change new law less old law); the rest stays. 0 (also when nothing
- * acts), or -1: assemble whole (as rc_jac_refresh_inter, or when half the
- * points or more flipped). */
-int rc_jac_refresh_points(const rc_model *m, rc_data *d, int i, const int *old_slip, const double *y, double *val);
-/* The mass a unit normal impulse pair at contact point r->point drives at
- * the state y when the free bodies also turn (joints left out) [kg];
- * INFINITY when nothing moves (scales.c). */
-double rc_point_mass(const rc_model *m, int i, const double *y, const rc_inter_report *r);
-/* Is a body of interface i on a joint? (scales.c) */
-int rc_inter_on_joint(const rc_model *m, int i);
+/* ---- layout views (the engine's functions over a model are declared in
+ *      the engine's headers: engine/assembly/assembly.h, ...) ---------- */
 /* Root functions, in this order: RC_ROOTS_PER_INTER per interface; one slip
  * root per contact point with friction (inter_npt, at rc_root_point_base),
  * then one landing root per such point (its depth q_j below the level of the
@@ -555,43 +390,6 @@ static inline int rc_root_point_base(const rc_model *m) { return RC_ROOTS_PER_IN
 static inline int rc_root_land_base(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter + m->npt; }
 static inline int rc_root_cpl_base(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter + 2 * m->npt; }
 int rc_root_count(const rc_model *m); /* all of them (coupling_contact.c) */
-/* Root functions [rc_root_count(m)]. */
-void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
-/* The interfaces the fast path evaluates (m->inter_fast, allocated here;
- * engine/prepare.c, rule in engine/kernel_fast.inc); RC_ENOMEM when out of
- * memory. */
-rc_status rc_fast_select(rc_model *m, rc_error *err);
-/* Whether interface i qualifies for the fast path (the rule of rc_fast_select). */
-int rc_fast_eligible(const rc_model *m, int i);
-/* The root functions that can change sign in a run from t = 0 to tend,
- * from the interfaces' static configuration (no hysteresis law, no
- * Inacti 5, no friction, an activation window wider than the run: those
- * roots keep one sign); their indices ascending into live (NULL: only
- * counted); returns their number (assemble_rhs.c). */
-int rc_roots_live(const rc_model *m, double tend, int *live);
-/* Evaluate one interface at (t, y) in the given modes, for reports, roots
- * and events; contact points with friction all take the mode `slip`. */
-void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, double t,
-                          const double *y, rc_inter_report *r);
-/* The same in the modes of d, contact points each in its own. */
-void rc_inter_report_eval_d(const rc_model *m, const rc_data *d, int i, double t, const double *y, rc_inter_report *r);
-/* The contact points of interface i (friction per point) at (t, y), closed
- * in the modes of d, each point j in mode slip[j] (NULL: its mode in d):
- * per point RC_PT_OUT values into out: its slip root, the law's tangential
- * force on a before any projection (3) [N], its share w_j = f_j / F_n [-],
- * its depth q_j below the level of the shares [m] (> 0: it has a share). */
-void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip, double t, const double *y, double *out);
-/* The reports kept by the last rc_assemble_roots: 1 when y is, bit for bit,
- * the state of that evaluation (then rc_report_cache_get may be asked). */
-int rc_report_cache_state(const rc_model *m, const rc_data *d, const double *y);
-/* Interface i's report of that evaluation into r, when it was evaluated
- * there in the modes d holds now (1), else 0 (r untouched). Only after
- * rc_report_cache_state returned 1 for the same y. */
-int rc_report_cache_get(const rc_data *d, int i, rc_inter_report *r);
-/* Gravity acceleration vector of body b at time t [m/s^2]. */
-void rc_gravity(const rc_model *m, int b, double t, double g[3]);
-/* Value of the gravity time function at t [-] (1 when none is given). */
-double rc_gravity_factor(const rc_model *m, double t);
 /* Pose and velocity view of body b: pointer to its 13 values in y, the
  * fixed pose of a fixed body, or the ground pose for b = -1 (inline: the
  * interfaces' loops call it twice per interface and evaluation). */
@@ -615,42 +413,10 @@ static inline int rc_inter_frictionless(const rc_model *m, int i)
     return fr->kind == RC_FK_NONE && !fr->exact && fr->widx < 0;
 }
 
-/* Energies [J]: kinetic, gravitational potential, work of the normal
- * elastic(-plastic) forces, damping dissipation, work of the friction forces,
- * elastic energy stored in the contacts (normal and tangential), hysteresis
- * dissipation (= normal work - normal stored), friction dissipation (=
- * friction work - tangential stored), coupling energies (spring elastic,
- * damper dissipation, catenary lines: coupling.h), minus the work done by
- * the imposed velocities (/IMPVEL, imposed.h), total (kinetic + potential +
- * work + damping + friction work + couplings + imposed; constant in exact
- * arithmetic). */
-enum {
-    RC_E_KIN, RC_E_POT, RC_E_WORK, RC_E_DAMP, RC_E_FWORK, RC_E_STORED, RC_E_HYST, RC_E_FRIC,
-    RC_E_CPL_ELASTIC, RC_E_CPL_DAMP, RC_E_CATENARY, RC_E_IMPOSED, RC_E_TOTAL, RC_NENERGY
-};
-/* (engine/energy.c) */
-void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, double e[RC_NENERGY]);
-/* Normal elastic energy stored in interface i (recoverable by unloading) [J]. */
-double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double t, const double *y);
-/* The hysteresis of interface i at (t, y): its normal work less its stored
- * energy [J]; exactly 0 for an elastic law (Iform 0 or the power law, one
- * contact point, no Inacti offset), whose work differs from its stored
- * energy only by the integration error of the work accumulator. */
-double rc_inter_hysteresis(const rc_model *m, const rc_data *d, int i, double t, const double *y);
-/* The energy held in the stick springs of interface i's friction at (t, y)
- * (one, or one per contact point; 0 unless closed, none for exact stick)
- * [J]: its friction work less this is its energy_friction. */
-double rc_inter_friction_stored(const rc_model *m, const rc_data *d, int i, double t, const double *y);
-
-/* Dense block of an element (body e, or interface e in the given modes) at
- * (t, y), row-major over its rc_jblock rows and columns (assemble_jac.c). */
-void rc_jac_dense_block(const rc_model *m, int is_inter, int e, int mode, int branch, int track, int slip,
-                        double t, const double *y, double *out);
-
 /* ---- compile (model/compile.c) ------------------------------------ */
 /* The model of a case up to its state layout, without the scales,
  * tolerances and Jacobian pattern: those evaluate the kernels and follow in
- * rc_model_compile (engine/prepare.c). On failure *out stays NULL. */
+ * rc_model_compile (engine/analyses/prepare.c). On failure *out stays NULL. */
 rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err);
 
 /* ---- friction (model/friction.c) ------------------------------- */
@@ -659,13 +425,9 @@ struct rc_case;
  * (after the TYPE6 interfaces are compiled, before the state layout). */
 rc_status rc_friction_compile(const struct rc_case *c, rc_model *m, rc_error *err);
 void rc_friction_print(const rc_model *m, int i, FILE *f);
-/* Friction coefficient of interface i, direction dir, at pressure p [Pa],
- * sliding speed v [m/s], normal force fn [N] (the kernel's law, for tests). */
-double rc_friction_mu(const rc_model *m, int i, int dir, double p, double v, double fn);
 
-/* ---- Jacobian pattern: built by probing (engine/jacpattern.c), read and
- * released as model data (model/pattern.c) ----------------------------- */
-rc_status rc_jac_build(rc_model *m, rc_error *err);
+/* ---- Jacobian pattern: built by probing (engine/analyses/jacpattern.c),
+ *      read and released as model data (model/pattern.c) ---------------- */
 /* CSC position of (row, col), -1 when the entry is not in the pattern. */
 int64_t rc_jac_slot(const rc_model *m, int row, int col);
 /* The position of (row, col) in a CSC pattern with sorted row indices, -1
@@ -677,37 +439,5 @@ int rc_cmp_i64(const void *a, const void *b);
  * row indices returned (malloc'd; NULL: out of memory), their count in *nnz. */
 int64_t *rc_csc_from_keys(int64_t *key, int64_t nk, int64_t n, int64_t *colptr, int64_t *nnz);
 void rc_jac_free(rc_model *m);
-/* The slots of the pattern that can be nonzero at (t, y) in the modes of d
- * (engine/jacpattern.c): keep[nnz] 1, or 0 where every element writing
- * the slot is inactive (an open interface, the contact points of an
- * interface that is not closed, the rows of a point out of the contact
- * whose law gives them no value, a contact coupling with no face pushing);
- * returns the count kept. Uses d->pt_work as scratch (not during a root or
- * Jacobian evaluation). */
-int64_t rc_jac_active(const rc_model *m, const rc_data *d, double t, const double *y, unsigned char *keep);
-/* What rc_jac_active's result depends on when that is each interface's
- * on/off state alone (no contact points, no contact couplings): those
- * states into key[ninter] (1 on) and 1; otherwise 0 (key untouched). Equal
- * keys give equal results. */
-int rc_jac_active_key(const rc_model *m, const rc_data *d, unsigned char *key);
-
-/* ---- modes and events (events.c) ----------------------------------- */
-/* Consistent modes at (t, y) from scratch (start of run); may set history
- * states in y (Inacti offset, initial F_h). */
-void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y);
-
-/* ---- scales and tolerances (scales.c) ------------------------------ */
-/* Per-interface scales (penetration, force, stiffness, speed) from the
- * laws, the masses, gravity and the initial speeds; derived regularisation
- * lengths; after the state layout, before the tolerances. */
-rc_status rc_model_scales(rc_model *m, rc_error *err);
-/* Absolute tolerances and weight kinds of every state. */
-rc_status rc_model_tolerances(rc_model *m, rc_error *err);
-/* Time derivatives of the reported quantities of interface i (in the given
- * modes) along the state rate ydot: p, vn (the normal acceleration), p_raw,
- * vn_raw, fload, fdamp, fn, fl, fu, fh, offset; other fields 0. Exact, by
- * complex step (assemble_jac.c). */
-void rc_inter_report_rate(const rc_model *m, int i, int mode, int branch, int track, int slip, const double *y,
-                          const double *ydot, rc_inter_report *dr);
 
 #endif

@@ -1,6 +1,6 @@
 /* The model's Jacobian pattern as data: the CSC position of an entry, and
  * the release of the pattern and of the element slots. The pattern is
- * built by probing the kernels (engine/jacpattern.c). */
+ * built by probing the kernels (engine/analyses/jacpattern.c). */
 #include <stdlib.h>
 
 #include "model/coupling.h"

@@ -79,7 +79,7 @@ rc_status rc_power_compile(const rc_case *c, rc_model *m, int k, int i, rc_error
     pw->vreg = p->vreg;
     if ((st = make_spline(c, p, p->fct_stiff, card, "fct_stiff", &pw->stiff, err))) return st;
     if ((st = make_spline(c, p, p->fct_damp, card, "fct_damp", &pw->damp, err))) return st;
-    /* a restitution asked: C is derived with the scales (engine/restitution.c) */
+    /* a restitution asked: C is derived with the scales (engine/analyses/restitution.c) */
     m->inter_etarget[i] = p->e_target;
     m->inter_vimp[i] = p->v_imp;
     if (p->e_target > 0) {

@@ -8,6 +8,9 @@
 #include <sunmatrix/sunmatrix_sparse.h>
 
 #include "solver/activepart.h"
+#include "engine/analyses/analyses.h"
+#include "engine/constraints/joints.h"
+#include "engine/constraints/stick.h"
 
 static int g_enabled = 1;
 static rc_actpart_probe g_probe;

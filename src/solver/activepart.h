@@ -22,9 +22,9 @@
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_matrix.h>
 
-#include "model/joint.h"
+#include "engine/constraints/joints.h"
 #include "model/model.h"
-#include "model/stick.h"
+#include "engine/constraints/stick.h"
 #include "solver/subpat.h"
 
 typedef struct rc_actpart {

@@ -41,13 +41,14 @@
 #include "model/coupling.h"
 #include "model/joint.h"
 #include "base/error.h"
-#include "engine/events.h"
+#include "engine/events/events.h"
 #include "model/model.h"
 #include "solver/activepart.h"
 #include "solver/impacts.h"
 #include "solver/nvfast.h"
 #include "solver/solver.h"
 #include "solver/integrator.h"
+#include "engine/assembly/assembly.h"
 
 /* A jump in ydot whose effect over one step, relative to the error weight,
  * exceeds this fraction triggers a restart after an event [-]. */

@@ -21,19 +21,22 @@
 #include <unistd.h>
 
 #include "base/error.h"
-#include "engine/events.h"
+#include "engine/events/events.h"
 #include "model/coupling.h"
 #include "model/coupling_contact.h"
 #include "model/imposed.h"
 #include "model/joint.h"
 #include "model/model.h"
-#include "model/stick.h"
+#include "engine/constraints/stick.h"
 #include "model/power.h"
 #include "output/output.h"
 #include "solver/guards.h"
 #include "solver/impacts.h"
 #include "solver/integrator.h"
 #include "solver/solver.h"
+#include "engine/assembly/assembly.h"
+#include "engine/constraints/joints.h"
+#include "engine/reports/reports.h"
 
 /* ---- helpers ----------------------------------------------------------- */
 static int cmp_double(const void *a, const void *b)

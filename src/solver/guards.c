@@ -14,9 +14,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "engine/bounds.h"
+#include "engine/assembly/bounds.h"
 #include "model/coupling.h"
 #include "solver/guards.h"
+#include "engine/assembly/assembly.h"
 
 /* The dissipation channels, in the order of their per-element arrays. */
 enum { CH_DAMP, CH_HYST, CH_FRIC, CH_CPL, CH_N };
@@ -565,7 +566,7 @@ int rc_guards_started(rc_guards *g, const rc_data *d)
         g->closed0[i] = g->ever[i] = d->inter_mode[i] == RC_MODE_CLOSED;
         g->prev_mode[i] = d->inter_mode[i];
     }
-    /* an overlap at t = 0 the deck accepted (/RUN On_viol 2, engine/start.c) */
+    /* an overlap at t = 0 the deck accepted (/RUN On_viol 2, engine/analyses/start.c) */
     if (m->start_note)
         return violate(g, 0.0, 0.0, "start_overlap", m->inter_name[m->start_inter], m->start_energy, m->start_escale,
                        "%s (accepted by /RUN On_viol 2)", m->start_note);

@@ -7,7 +7,7 @@
  *   return after the step, and at every located root): each interface's
  *   penetration P (the zone root values the
  *   integrator evaluated at that state) stays below its bound
- *   (engine/bounds.c); two spheres' centres stay (R1 + R2)/2 apart; an
+ *   (engine/assembly/bounds.c); two spheres' centres stay (R1 + R2)/2 apart; an
  *   open interface does not penetrate beyond its touch band;
  *
  *   at every record (rc_guards_record), and at the state of a root just
@@ -34,6 +34,7 @@
 #include "model/model.h"
 #include "output/output.h"
 #include "solver/integrator.h"
+#include "engine/assembly/data.h"
 
 /* Tolerances (docs/theory.md 13.1): with E_ref the largest energy in play
  * so far (the scene's E_s, the kinetic energy, the change of the potential

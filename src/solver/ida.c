@@ -22,14 +22,14 @@
  * y' = f(t, y) exactly; it is set so at the start and after every restart.
  * With joints the velocities are made to satisfy G u = 0 at the start, and
  * lambda follows from the acceleration-level equations at every (re)start
- * (engine/joints.c; IDACalcIC cannot: no algebraic unknown in the rows).
+ * (engine/constraints/joints.c; IDACalcIC cannot: no algebraic unknown in the rows).
  *
- * Exact stick (model/stick.h): Y = [y, Lambda], two rows per exact interface, F_Lambda = t_k . v_rel
+ * Exact stick (engine/constraints/stick.h): Y = [y, Lambda], two rows per exact interface, F_Lambda = t_k . v_rel
  * while it sticks (lambda = Lambda' its friction force), Lambda' = 0
  * otherwise; the multipliers and the velocities of the sticking contacts
- * are made consistent at every (re)start (engine/stick.c), the slip roots
+ * are made consistent at every (re)start (engine/constraints/stick.c), the slip roots
  * of the sticking contacts compare |lambda| (from Y') with the limit.
- * Joints and exact stick together (engine/stick_joints.c): Y = [y, the
+ * Joints and exact stick together (engine/constraints/stick_joints.c): Y = [y, the
  * joints' extras, the stick's Lambda], one constraint set whose
  * multipliers are made consistent together at every (re)start.
  */
@@ -44,16 +44,19 @@
 #include <sunmatrix/sunmatrix_sparse.h>
 
 #include "base/error.h"
-#include "engine/events.h"
+#include "engine/events/events.h"
 #include "model/coupling.h"
 #include "model/joint.h"
 #include "model/model.h"
-#include "model/stick.h"
+#include "engine/constraints/stick.h"
 #include "solver/activepart.h"
 #include "solver/impacts.h"
 #include "solver/nvfast.h"
 #include "solver/integrator.h"
 #include "solver/solver.h"
+#include "engine/assembly/assembly.h"
+#include "engine/constraints/joints.h"
+#include "engine/constraints/stick_joints.h"
 
 typedef struct ida_ctx {
     const rc_model *m;

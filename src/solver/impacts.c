@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "engine/assembly/assembly.h"
 
 /* pi [-] (M_PI is not in C11) */
 #define RC_PI 3.14159265358979323846

@@ -8,6 +8,7 @@
 #define RC_IMPACTS_H
 
 #include "model/model.h"
+#include "engine/assembly/data.h"
 
 /* The last two samples of an interface's impact in progress (step ends and
  * events): time [s], penetration P [m], its rate dP/dt [m/s], normal force

@@ -16,11 +16,12 @@
 
 #include <signal.h>
 
-#include "engine/events.h"
+#include "engine/events/events.h"
 #include "model/model.h"
 #include "output/output.h"
 #include "solver/impacts.h"
 #include "solver/solver.h"
+#include "engine/assembly/assembly.h"
 
 /* Event accumulation (Zeno): more than RC_ZENO_MAX consecutive events of one
  * element, each within RC_ZENO_REL * max(t, dtout) of the previous, end the

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "solver/integrator.h"
+#include "engine/assembly/assembly.h"
 
 static int compact_on = 1;
 

@@ -24,6 +24,7 @@
 #include "base/error.h"
 #include "model/model.h"
 #include "solver/solver.h"
+#include "engine/assembly/assembly.h"
 
 struct rc_session {
     rc_pause pause; /* first: the backend's callback gets it */

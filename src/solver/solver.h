@@ -1,7 +1,7 @@
 /*
  * The integration stage's backend interface. A backend integrates a
  * compiled model from t = 0 to its end time: it owns the integrator, the
- * event loop (roots, engine/events.c), the restarts and the output writer
+ * event loop (roots, engine/events/events.c), the restarts and the output writer
  * (output/output.h), and fills rc_stats. It sees the model only through
  * model/model.h and the engine's functions (right-hand side, Jacobian
  * values on the fixed pattern, roots, energies).

@@ -3,6 +3,7 @@
 #define RC_EVENTS_H
 
 #include "model/model.h"
+#include "engine/assembly/data.h"
 
 /* Events of the contact couplings reported per call at most. */
 #define RC_CPL_MAX_EV 32
@@ -30,5 +31,9 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
  * Writes up to max_ev events; returns the number of transitions. */
 int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const double *ydot, rc_event *ev, int max_ev,
                    int *restart);
+
+/* Consistent modes at (t, y) from scratch (start of run); may set history
+ * states in y (Inacti offset, initial F_h). */
+void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y);
 
 #endif

@@ -9,6 +9,7 @@
 #include "model/model.h"
 #include "model/power.h"
 #include "model/table.h"
+#include "engine/assembly/assembly.h"
 
 /* The curves of interface i's law, scaled: F(x) = fscale f(x / Ascalex). */
 typedef struct {

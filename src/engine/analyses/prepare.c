@@ -11,13 +11,16 @@
 
 #include "base/error.h"
 #include "base/progress.h"
-#include "engine/bounds.h"
+#include "engine/assembly/bounds.h"
 #include "model/joint.h"
 #include "model/model.h"
-#include "model/stick.h"
+#include "engine/constraints/stick.h"
+#include "engine/assembly/assembly.h"
+#include "engine/analyses/analyses.h"
+#include "engine/constraints/joints.h"
 
 /* Joints: the initial state satisfies them (positions and velocities) and
- * their rows are independent (engine/joints.c); else an input error at
+ * their rows are independent (engine/constraints/joints.c); else an input error at
  * the card of the joint concerned. */
 static rc_status check_joints(const rc_model *m, rc_error *err)
 {
@@ -42,7 +45,7 @@ static rc_status check_joints(const rc_model *m, rc_error *err)
     return st;
 }
 
-/* The interfaces the fast path evaluates (engine/kernel_fast.inc). */
+/* The interfaces the fast path evaluates (engine/kernels/kernel_fast.inc). */
 rc_status rc_fast_select(rc_model *m, rc_error *err)
 {
     free(m->inter_fast);

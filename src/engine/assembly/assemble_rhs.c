@@ -11,13 +11,14 @@
 #include "model/imposed.h"
 #include "model/model.h"
 #include "model/coupling_contact.h"
+#include "engine/assembly/assembly.h"
 
 #define T double
 #define RE(x) (x)
 #define RCK(name) name##_r
-#include "kernels.inc"
-#include "kernels_coupling.inc"
-#include "kernel_fast.inc"
+#include "engine/kernels/kernels.inc"
+#include "engine/kernels/kernels_coupling.inc"
+#include "engine/kernels/kernel_fast.inc"
 
 /* Interface i goes the fast path (kernel_fast.inc). */
 static inline int is_fast(const rc_model *m, int i) { return m->inter_fast && m->inter_fast[i]; }
@@ -328,7 +329,7 @@ static int inter_root_live(const rc_model *m, int i, int k, double tend)
     case RC_ROOT_TRK_A:
     case RC_ROOT_TRK_B: /* Inacti 5 tracking needs the offset state */
         return m->inter_oidx[i] >= 0;
-    case RC_ROOT_SLIP: /* friction; exact stick writes it too (engine/stick.c) */
+    case RC_ROOT_SLIP: /* friction; exact stick writes it too (engine/constraints/stick.c) */
         return fr->kind != RC_FK_NONE || fr->exact;
     case RC_ROOT_REV: /* a saturated stateless (viscous) friction law */
         return fr->kind != RC_FK_NONE && fr->form == RC_FF_VISCOUS;

@@ -10,6 +10,7 @@
 #include "model/coupling.h"
 #include "model/coupling_contact.h"
 #include "model/model.h"
+#include "engine/reports/reports.h"
 
 /* CVODE steps per stopping time tau, measured on the validation problems
  * at the default tolerances (a full impact, 2 tau, takes 124 to 267 steps

@@ -18,14 +18,16 @@
  * normal force beyond the penalty law (-lambda_n n on a); the slots are
  * the exact interfaces and the settle-capable ones, three rows each.
  *
- * Evaluated by engine/stick.c, driven by solver/ida.c and engine/events.c.
+ * Evaluated by engine/constraints/stick.c, driven by solver/ida.c and
+ * engine/events/events.c.
  */
-#ifndef RC_STICK_H
-#define RC_STICK_H
+#ifndef RC_ENGINE_STICK_H
+#define RC_ENGINE_STICK_H
 
 #include <stdint.h>
 
 #include "model/model.h"
+#include "engine/assembly/data.h"
 
 /* Interfaces with exact stick (0: none). */
 int rc_stk_count(const rc_model *m);
@@ -93,39 +95,20 @@ void rc_stk_roots(const rc_model *m, rc_data *d, rc_stk_work *w, double t, const
  * multiplier's force (global) [N], in Yout (may be Y). */
 void rc_stk_sync(const rc_model *m, const rc_data *d, const rc_stk_work *w, const double *Y, const double *Yp,
                  double *Yout);
-/* Can interface i (exact stick, closed, in d sticking) stick at (t, y)?
- * 0: yes; 1: no, it must slide along the unit direction e (the force's on
- * a): its sliding velocity is not zero (e = -v_t / |v_t|), or the force
- * that holds it (the multipliers of all sticking exact contacts) lies
- * beyond the static limit (e along that force). -1: out of memory or
- * dependent rows (then it slides along -v_t, or keeps F_t's direction). */
-int rc_stk_decide(const rc_model *m, rc_data *d, int i, double t, const double *y, double e[3]);
-
-/* ---- joints and exact stick together (engine/stick_joints.c) ----------
- * One constraint set on Y = [y, the joints' extras (model/joint.h), the
- * stick's Lambda]: the same calls as the two sets', over both. */
-typedef struct rc_both rc_both;
-rc_both *rc_both_new(const rc_model *m); /* NULL: out of memory */
-void rc_both_free(rc_both *c);
-struct rc_jnt_work *rc_both_jnt(const rc_both *c);
-rc_stk_work *rc_both_stk(const rc_both *c);
-int rc_both_nextra(const rc_both *c);
-int64_t rc_both_nnz(const rc_both *c);
-void rc_both_pattern(const rc_both *c, const int64_t **colptr, const int64_t **rowind);
-double rc_both_atol(const rc_model *m, const rc_both *c, int k);
-void rc_both_id(const rc_model *m, const rc_both *c, double *id);
-void rc_both_residual(const rc_model *m, const rc_data *d, const rc_both *c, const double *Y, const double *Yp,
-                      double *r);
-void rc_both_jacobian(const rc_model *m, const rc_data *d, const rc_both *c, double cj, const double *Y,
-                      const double *Yp, const double *jf, double *val);
-/* The consistent (re)start of both sets (rc_stk_restart and the joints'
- * rc_jnt_consistent in one, the velocities of both made exact). 0, or -1
- * when the rows are dependent (a sticking contact holds a motion a joint
- * holds) or f fails. */
-int rc_both_consistent(const rc_model *m, rc_data *d, rc_both *c, double t, double *Y, double *Yp);
-
-/* Geometry of interface i for the constraint (engine/assemble_jac.c). */
-void rc_stk_geom_c(const rc_model *m, int i, const double _Complex *ya, const double _Complex *yb,
-                   double _Complex *point, double _Complex *n, double _Complex *vrel, double _Complex *ddot);
+/* The pieces of the stick/slip decision (rc_stk_decide,
+ * engine/constraints/stick_joints.h): 1 when interface i slides at (t, y)
+ * with a speed beyond the tolerances (e = -v_t / |v_t|), else 0; r receives
+ * its report in d's modes. */
+int rc_stk_sliding(const rc_model *m, const rc_data *d, int i, double t, const double *y, rc_inter_report *r,
+                   double e[3]);
+/* The force that holds sticking exact interface i (on a, global) [N]: the
+ * multipliers of all sticking exact contacts at (t, y) in a model without
+ * joints. 0, or -1 (out of memory, dependent rows, f fails). */
+int rc_stk_hold_force(const rc_model *m, rc_data *d, int i, double t, const double *y, double F[3]);
+/* Interface i's slot in w, -1: none. */
+int rc_stk_slot_of(const rc_stk_work *w, int i);
+/* The force of slot q's multipliers (from Yp, the extended vector) at Y,
+ * global, on a [N]. */
+void rc_stk_slot_force(const rc_model *m, const rc_stk_work *w, int q, const double *Y, const double *Yp, double F[3]);
 
 #endif

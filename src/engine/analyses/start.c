@@ -29,7 +29,10 @@
 #include <string.h>
 
 #include "base/error.h"
-#include "engine/bounds.h"
+#include "engine/assembly/bounds.h"
+#include "engine/assembly/assembly.h"
+#include "engine/events/events.h"
+#include "engine/analyses/analyses.h"
 
 /* Overlaps within RC_START_TOUCH_ULPS ulps of the coordinates, or
  * RC_START_TOUCH_REL of the penetration scale, are touching [-]. */

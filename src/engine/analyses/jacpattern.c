@@ -22,6 +22,8 @@
 #include "model/model.h"
 #include "base/progress.h"
 #include "model/power.h"
+#include "engine/assembly/assembly.h"
+#include "engine/analyses/analyses.h"
 
 /* Body block: its 13 rows by its 13 columns. */
 static void block_body(const rc_model *m, int b, rc_jblock *jb)

@@ -33,4 +33,12 @@ double rc_restitution_speed(const rc_model *m, int i, int *given);
  * Sets it in the model; an input error when it cannot. */
 rc_status rc_restitution_derive(rc_model *m, int i, rc_error *err);
 
+/* Restitution of a linear contact that cannot pull at damping ratio
+ * zeta >= 0 (NaN otherwise); *tau = omega times the contact time
+ * (restitution.c). */
+double rc_linear_restitution(double zeta, double *tau);
+/* Is the load curve of TYPE6 interface i a straight line through the
+ * origin? Its slope F/P in *k [N/m] (restitution.c). */
+int rc_type6_linear_slope(const rc_model *m, int i, double *k);
+
 #endif

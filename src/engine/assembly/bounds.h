@@ -8,6 +8,7 @@
 #define RC_BOUNDS_H
 
 #include "model/model.h"
+#include "engine/assembly/data.h"
 
 /* A penetration is beyond its contact's scales when the law's force there
  * reaches RC_PEN_FORCE_FACTOR times the larger of the scene's weight and
@@ -58,12 +59,5 @@ double rc_law_reach(const rc_model *m, int i, int energy, double target);
  * *fbound receives the force limit [N] (NAN: none). */
 double rc_pen_bound(const rc_model *m, int i, const rc_scene *s, const double *size, double *fbound);
 
-/* The start: an overlap at t = 0 that no option accounts for (Inacti 5,
- * Icor) is an input error naming both surfaces, the interface and the
- * depth, when the elastic energy it holds exceeds RC_START_ENERGY_FACTOR
- * E_s (a resting start at the static penetration holds far less). Segment
- * surfaces whose normals point away from the other surface are named as
- * such, with the IRS/IRm value that makes them face it. (start.c) */
-rc_status rc_start_check(const rc_case *c, rc_model *m, rc_error *err);
 
 #endif

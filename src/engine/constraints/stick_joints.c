@@ -1,5 +1,5 @@
 /*
- * Joints and exact stick in one model (model/stick.h, "together"; docs/
+ * Joints and exact stick in one model (engine/constraints/stick.h, "together"; docs/
  * theory.md "Exact stick"): one constraint set on the integrator's vector
  * Y = [y, Lambda_J, nu, W, Lambda_S], the joints' extras (model/joint.h)
  * then the stick's Lambda. Its residual is the sum of both sets' terms; its
@@ -13,7 +13,10 @@
 
 #include "model/joint.h"
 #include "model/model.h"
-#include "model/stick.h"
+#include "engine/constraints/stick.h"
+#include "engine/assembly/assembly.h"
+#include "engine/constraints/joints.h"
+#include "engine/constraints/stick_joints.h"
 
 struct rc_both {
     rc_jnt_work *jw;
@@ -183,4 +186,41 @@ int rc_both_consistent(const rc_model *m, rc_data *d, rc_both *c, double t, doub
         if (dz <= 1e-14 * zmax) return 0;
     }
     return -1;
+}
+
+/* The force that holds sticking exact interface i with the joints: the
+ * multipliers of the sticking contacts solved with the joints' on a copy
+ * of the state. 0, or -1. */
+static int hold_with_joints(const rc_model *m, rc_data *d, int i, double t, const double *y, double F[3])
+{
+    rc_both *b = rc_both_new(m);
+    const int n = b ? m->ny + rc_both_nextra(b) : 0;
+    double *Y = b ? calloc((size_t)n, sizeof *Y) : NULL, *Yp = b ? calloc((size_t)n, sizeof *Yp) : NULL;
+    int st = -1;
+    if (Y && Yp) {
+        memcpy(Y, y, (size_t)m->ny * sizeof *Y);
+        const rc_stk_work *w = rc_both_stk(b);
+        const int me = rc_stk_slot_of(w, i);
+        if (me >= 0 && !rc_both_consistent(m, d, b, t, Y, Yp)) {
+            rc_stk_slot_force(m, w, me, Y, Yp, F);
+            st = 0;
+        }
+    }
+    free(Y);
+    free(Yp);
+    rc_both_free(b);
+    return st;
+}
+
+int rc_stk_decide(const rc_model *m, rc_data *d, int i, double t, const double *y, double e[3])
+{
+    rc_inter_report r;
+    if (rc_stk_sliding(m, d, i, t, y, &r, e)) return 1;
+    /* the force that holds it, with the other sticking contacts (and the joints) */
+    double F[3];
+    const int st = m->jnt && m->jnt->n > 0 ? hold_with_joints(m, d, i, t, y, F) : rc_stk_hold_force(m, d, i, t, y, F);
+    if (st) return -1;
+    const double nf = sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
+    for (int k = 0; k < 3; k++) e[k] = nf > 0 ? F[k] / nf : 0.0;
+    return nf > r.flim; /* the slip root's limit */
 }

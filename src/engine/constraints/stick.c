@@ -1,6 +1,6 @@
 /*
  * Exact stick on the integrator's extended vector Y = [y, Lambda]
- * (model/stick.h, docs/theory.md "Exact stick"): the constraint rows
+ * (engine/constraints/stick.h, docs/theory.md "Exact stick"): the constraint rows
  * c_k = t_k . v_rel of the sticking contacts, the multipliers' forces on
  * the bodies, the extended sparse pattern and its exact Jacobian (complex
  * step), the consistent multipliers at a (re)start, the slip roots and the
@@ -18,7 +18,8 @@
 #include "model/imposed.h"
 #include "model/joint.h"
 #include "model/model.h"
-#include "model/stick.h"
+#include "engine/constraints/stick.h"
+#include "engine/assembly/assembly.h"
 
 typedef double complex cx;
 
@@ -657,52 +658,38 @@ void rc_stk_sync(const rc_model *m, const rc_data *d, const rc_stk_work *w, cons
     }
 }
 
-/* rc_stk_decide in a model with joints: the multipliers of the sticking
- * contacts solved with the joints' (engine/stick_joints.c) on a copy of
- * the state. */
-static int decide_with_joints(const rc_model *m, rc_data *d, int i, double t, const double *y, double flim,
-                              double e[3])
+int rc_stk_slot_of(const rc_stk_work *w, int i)
 {
-    rc_both *b = rc_both_new(m);
-    const int n = b ? m->ny + rc_both_nextra(b) : 0;
-    double *Y = b ? calloc((size_t)n, sizeof *Y) : NULL, *Yp = b ? calloc((size_t)n, sizeof *Yp) : NULL;
-    int st = -1;
-    if (Y && Yp) {
-        memcpy(Y, y, (size_t)m->ny * sizeof *Y);
-        const rc_stk_work *w = rc_both_stk(b);
-        int me = -1;
-        for (int q = 0; q < w->k.ns; q++)
-            if (w->k.inter[q] == i) me = q;
-        if (me >= 0 && !rc_both_consistent(m, d, b, t, Y, Yp)) {
-            double F[3];
-            force_of(m, &w->k, me, Y, Yp + w->base + SK_R * me, F);
-            const double nf = sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
-            st = nf > flim;
-            for (int k = 0; k < 3; k++) e[k] = nf > 0 ? F[k] / nf : 0.0;
-        }
-    }
-    free(Y);
-    free(Yp);
-    rc_both_free(b);
-    return st;
+    int me = -1;
+    for (int q = 0; q < w->k.ns; q++)
+        if (w->k.inter[q] == i) me = q;
+    return me;
 }
 
-int rc_stk_decide(const rc_model *m, rc_data *d, int i, double t, const double *y, double e[3])
+void rc_stk_slot_force(const rc_model *m, const rc_stk_work *w, int q, const double *Y, const double *Yp, double F[3])
 {
-    rc_inter_report r;
-    rc_inter_report_eval_d(m, d, i, t, y, &r);
+    force_of(m, &w->k, q, Y, Yp + w->base + SK_R * q, F);
+}
+
+int rc_stk_sliding(const rc_model *m, const rc_data *d, int i, double t, const double *y, rc_inter_report *r,
+                   double e[3])
+{
+    rc_inter_report_eval_d(m, d, i, t, y, r);
     /* a sliding velocity beyond the tolerances: it slides on */
     double vtol = INFINITY;
     const int bs[2] = {m->inter_ba[i], m->inter_bb[i]};
     for (int k = 0; k < 2; k++)
         if (free_adr(m, bs[k]) >= 0) vtol = fmin(vtol, 100.0 * m->atol[free_adr(m, bs[k]) + 7]);
-    const double vt = sqrt(r.vt[0] * r.vt[0] + r.vt[1] * r.vt[1] + r.vt[2] * r.vt[2]);
+    const double vt = sqrt(r->vt[0] * r->vt[0] + r->vt[1] * r->vt[1] + r->vt[2] * r->vt[2]);
     if (vt > vtol) {
-        for (int k = 0; k < 3; k++) e[k] = -r.vt[k] / vt;
+        for (int k = 0; k < 3; k++) e[k] = -r->vt[k] / vt;
         return 1;
     }
-    /* the force that holds it, with the other sticking contacts */
-    if (m->jnt && m->jnt->n > 0) return decide_with_joints(m, d, i, t, y, r.flim, e);
+    return 0;
+}
+
+int rc_stk_hold_force(const rc_model *m, rc_data *d, int i, double t, const double *y, double F[3])
+{
     sk_core K;
     if (core_init(m, &K)) return -1;
     double *f = malloc(((size_t)m->ny + 1) * sizeof *f);
@@ -714,13 +701,11 @@ int rc_stk_decide(const rc_model *m, rc_data *d, int i, double t, const double *
     }
     const int nr = me >= 0 ? active_rows(m, &K, y) : 0;
     if (f && me >= 0 && !rc_assemble_rhs(m, d, t, y, f) && (nr == 0 || !multipliers(m, &K, y, f, nr))) {
-        double lam[SK_R] = {0.0, 0.0, 0.0}, F[3];
+        double lam[SK_R] = {0.0, 0.0, 0.0};
         for (int j = 0; j < nr; j++)
             if (K.idx[j] / SK_R == me) lam[K.idx[j] % SK_R] = K.b[j];
         force_of(m, &K, me, y, lam, F);
-        const double nf = sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
-        st = nf > r.flim; /* the slip root's limit */
-        for (int k = 0; k < 3; k++) e[k] = nf > 0 ? F[k] / nf : 0.0;
+        st = 0;
     }
     free(f);
     core_free(&K);

@@ -14,59 +14,16 @@
 #include "model/joint.h"
 #include "model/model.h"
 #include "model/power.h"
-#include "engine/restitution.h"
+#include "engine/analyses/restitution.h"
+#include "engine/assembly/assembly.h"
+#include "engine/analyses/analyses.h"
+#include "engine/reports/reports.h"
 
 #define RC_PI 3.14159265358979323846
 /* CVODE steps per impact at the default tolerances, measured on the
  * restitution validation problems (t6_restitution: 124 steps, pw_restitution:
  * 217, cc_stop: 267 for an impact and free flight) [-]. */
 #define RC_STEPS_PER_IMPACT 150.0
-
-/* Restitution of a linear spring-dashpot contact that cannot pull (the
- * force k x + c x' clipped at zero) at damping ratio zeta >= 0, and the
- * contact time in units of 1/omega (*tau = omega t_c). In units of v0/omega
- * and 1/omega the free response x(tau) of x'' + 2 zeta x' + x = 0, x(0) = 0,
- * x'(0) = 1 leaves the contact when x + 2 zeta x' = 0; e = -x'(tau) there:
- *   zeta < 1: x = e^(-zeta tau) sin(s tau)/s, s = sqrt(1 - zeta^2), and
- *             s tau = pi - atan2(2 zeta s, 1 - 2 zeta^2);
- *   zeta = 1: x = tau e^(-tau), tau = 2, e = e^(-2);
- *   zeta > 1: x = (e^(a tau) - e^(b tau))/(a - b), a, b = -zeta +- q,
- *             q = sqrt(zeta^2 - 1), and e^((a - b) tau) = (1 + 2 zeta b)/(1 + 2 zeta a).
- * NaN for zeta < 0 or not finite. */
-double rc_linear_restitution(double zeta, double *tau_out)
-{
-    double tau = NAN, e = NAN;
-    if (zeta >= 0 && zeta < 1) {
-        const double s = sqrt(1.0 - zeta * zeta);
-        const double theta = RC_PI - atan2(2.0 * zeta * s, 1.0 - 2.0 * zeta * zeta);
-        tau = theta / s;
-        e = -exp(-zeta * theta / s) * (cos(theta) - zeta / s * sin(theta));
-    } else if (zeta == 1) {
-        tau = 2.0;
-        e = exp(-2.0);
-    } else if (zeta > 1 && isfinite(zeta)) {
-        const double q = sqrt((zeta - 1.0) * (zeta + 1.0)), a = -zeta + q, b = -zeta - q;
-        /* (1 + 2 zeta a)(1 + 2 zeta b) = 1, so the ratio is (1 + 2 zeta b)^2
-         * and tau = ln(2 zeta^2 + 2 zeta q - 1) / q (no cancellation) */
-        tau = log(2.0 * zeta * zeta + 2.0 * zeta * q - 1.0) / q;
-        e = -(a * exp(a * tau) - b * exp(b * tau)) / (a - b);
-    }
-    if (tau_out) *tau_out = tau;
-    return e;
-}
-
-/* Is the load curve of TYPE6 interface i a straight line through the
- * origin (F = k P)? Its slope in *k [N/m]. */
-int rc_type6_linear_slope(const rc_model *m, int i, double *k)
-{
-    if (m->inter_law[i] != RC_LAW_TYPE6 || m->inter_fct_ld[i] < 0) return 0;
-    const rc_table *t = &m->table[m->inter_fct_ld[i]];
-    const double sl = t->y[t->n - 1] / t->x[t->n - 1];
-    for (int j = 0; j < t->n; j++)
-        if (fabs(t->y[j] - sl * t->x[j]) > 1e-12 * (fabs(t->y[j]) + fabs(sl * t->x[j])) + 1e-300) return 0;
-    *k = sl * m->inter_fscaleld[i] / m->inter_ascalex[i];
-    return *k > 0;
-}
 
 /* Guidance per interface: the gap at t = 0, the effective mass, the natural
  * frequency at the force scale, the damping ratio of Visc, the predicted
@@ -166,7 +123,7 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
     }
     if (m->nbody > 20) fprintf(f, "  ... and %d more bodies (the first 20 in deck order are listed)\n", m->nbody - 20);
     fprintf(f, "surfaces    %d\n", m->nsurf);
-    if (m->start_note) fprintf(f, "warning     accepted by /RUN On_viol 2: %s\n", m->start_note); /* engine/start.c */
+    if (m->start_note) fprintf(f, "warning     accepted by /RUN On_viol 2: %s\n", m->start_note); /* engine/analyses/start.c */
     fprintf(f, "interfaces  %d\n", m->ninter);
     for (int i = 0; i < m->ninter && i < 20; i++) {
         if (m->inter_law[i] == RC_LAW_POWER) {

@@ -13,13 +13,13 @@
 
 #include "model/imposed.h"
 #include "model/model.h"
-#include "model/stick.h"
+#include "engine/assembly/assembly.h"
 
 #define T double complex
 #define RE(x) creal(x)
 #define RCK(name) name##_c
-#include "kernels.inc"
-#include "kernels_coupling.inc"
+#include "engine/kernels/kernels.inc"
+#include "engine/kernels/kernels_coupling.inc"
 
 /* Complex step [state units]; any tiny value works, no cancellation. */
 #define RC_CSTEP 1e-40
@@ -573,7 +573,7 @@ void rc_inter_report_rate(const rc_model *m, int i, int mode, int branch, int tr
 }
 
 /* Contact point, unit normal (from a to b) and relative velocity of the
- * material points there, for the exact-stick constraint (model/stick.h;
+ * material points there, for the exact-stick constraint (engine/constraints/stick.h;
  * single-point pairs). Complex, for its complex-step derivatives. */
 void rc_stk_geom_c(const rc_model *m, int i, const double complex *ya, const double complex *yb,
                    double complex *point, double complex *n, double complex *vrel, double complex *ddot)

@@ -10,6 +10,7 @@
 #include "model/joint.h"
 #include "model/model.h"
 #include "model/power.h"
+#include "engine/assembly/assembly.h"
 
 double rc_gravity_factor(const rc_model *m, double t)
 {

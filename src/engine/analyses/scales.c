@@ -37,11 +37,13 @@
 #include "base/error.h"
 #include "model/imposed.h"
 #include "model/joint.h"
-#include "engine/bounds.h"
+#include "engine/assembly/bounds.h"
 #include "model/model.h"
 #include "base/progress.h"
 #include "model/power.h"
-#include "engine/restitution.h"
+#include "engine/analyses/restitution.h"
+#include "engine/assembly/assembly.h"
+#include "engine/analyses/analyses.h"
 
 /* A body without a scaled contact: positions at rtol RC_TOL_FALLBACK_LFRAC
  * L (L its size), velocities at rtol RC_TOL_FALLBACK_LFRAC v_model, both

@@ -21,9 +21,10 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "engine/bounds.h"
+#include "engine/assembly/bounds.h"
 #include "model/imposed.h"
 #include "model/power.h"
+#include "engine/assembly/data.h"
 
 double rc_body_size(const rc_model *m, int b)
 {

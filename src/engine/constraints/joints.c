@@ -15,6 +15,7 @@
 #include "base/error.h"
 #include "model/joint.h"
 #include "model/model.h"
+#include "engine/constraints/joints.h"
 
 #define T double
 #define RE(x) (x)

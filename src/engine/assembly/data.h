@@ -1,0 +1,127 @@
+/*
+ * The run data of the engine: what changes while a model runs (modes,
+ * bands, caches, scratch, counters), next to the immutable rc_model.
+ * Modes, bands and history change only at events (engine/events); the
+ * right-hand side, Jacobian and root functions write the caches, the
+ * scratch and the counters only (docs/design.md, "Model and run data").
+ */
+#ifndef RC_ENGINE_DATA_H
+#define RC_ENGINE_DATA_H
+
+#include <stdint.h>
+
+#include "model/model.h"
+
+/* Mutable run data. */
+typedef struct rc_data {
+    int *inter_mode;     /* [ninter] rc_inter_mode */
+    int *inter_branch;   /* [ninter] rc_branch (Iform 1, 2) */
+    int *inter_track;    /* [ninter] 1: Inacti 5 offset follows the separation */
+    int *inter_slip;     /* [ninter] friction: 0 stick, 1 slip */
+    int *pt_slip;        /* [npt] friction per contact point: 0 stick, 1 slip */
+    double *pt_lband;    /* [npt] each contact point's landing band [m]: its landing root is
+                            q_j + band, set at its landing so that the root it crossed
+                            does not cross again at the same instant; 0 again at the
+                            interface's next event (events.c) */
+    double *pt_share;    /* [npt] each contact point's share w_j at the last evaluation of the
+                            roots (the integrator's step ends; 0 while its interface is not
+                            closed): its states' error weights (rc_point_ewt_scale) */
+    void *pt_work;       /* Jacobian scratch of the contact points (complex) */
+    void *pt_flip;       /* scratch of the contact points' stick/slip flips at events
+                            (events.c points_flip): 3 doubles, an int, a flag per point */
+    void *node_cache;    /* node geometry of a node pair, RC_NODE_CACHE complex
+                            values per point (kernels.inc, seg_fill); it
+                            follows seg_hint in one allocation */
+    int *seg_hint;       /* [rc_seg_hint_len] the segment each surface node met
+                            last, -1: none (geom_seg.inc, node_seg) */
+    double *inter_dref;  /* [ninter*3] sliding direction when a stateless friction
+                            law saturated (reversal root) [-] */
+    double *inter_fcstr; /* [ninter] the normal force a settled contact's
+                            constraint carries (IDA path, engine/stick.c;
+                            set at records, 0 otherwise) [N] */
+    int *inter_settled;  /* [ninter] 1: a closed contact held in persistent contact
+                            after its bounces accumulated (the release at zero
+                            force suspended; it opens when P returns to 0;
+                            docs/theory.md 5.2); set by the driver, cleared when
+                            the mode leaves CLOSED */
+    double *inter_band;  /* [ninter*2] signed touch bands of a contact left at
+                            zero penetration or zero force (events.c): zone root
+                            P + band[0] [m] (closed or released: +band, it
+                            separates at P = -band; open: -band, it closes at
+                            P = +band), force root F_n + band[1] [N] (closed:
+                            +fband; released: -fband); 0 otherwise */
+    double *inter_rband; /* [ninter] the power law's RDF rate root band [m/s]: root dP_e/dt +
+                            band, signed (LOAD: +band, the rebound waits for the rate to
+                            fall below -band; UNLOAD: -band), set where the branch was
+                            decided at a rate within its rounding (events.c); 0 again
+                            at the interface's next event */
+    struct rc_cpl_data *cpl; /* couplings: catenary warm starts, workspace (coupling.h) */
+    double *imp_free;    /* [ny] imposed velocities: the free accelerations of
+                            their rows at the last rhs (imposed.h), NULL: none */
+    double *imp_scratch; /* [3*ny] imposed velocities: Jacobian scratch */
+    /* the interfaces' dense Jacobian blocks as the last rc_assemble_jac
+     * added them (rc_jac_refresh_inter); NULL when the model had no
+     * Jacobian pattern yet */
+    double *jcache;      /* [sum of nrow*ncol of jb_inter] */
+    int64_t *jcache_off; /* [ninter + 1] offsets into jcache */
+    int jcache_ok;       /* jcache holds the blocks of the values last assembled */
+    const char *jac_skip; /* [ny] set by a backend that leaves these states out
+                            of its Newton matrix (cvode.c): the Jacobian's
+                            columns of these states are not evaluated (their
+                            values are left 0); NULL: every column */
+    /* the reports of the last root evaluation (rc_report_cache_*): read by
+     * the driver's samples at the same state; NULL: none */
+    struct rc_repcache *repc;
+    long n_rhs, n_jac, n_root;
+    long n_jac_refresh;  /* interface blocks refreshed after events */
+    long n_klu_sym;      /* KLU symbolic analyses of the Newton matrix so far (0: not counted) */
+    long newton_nnz;     /* entries of the largest Newton matrix so far (0: not counted) */
+    int fail_inter;      /* element that produced a non-finite force, -1 */
+    double fail_t;
+} rc_data;
+
+/* The reports of the last root evaluation (rc_data.repc): the state they
+ * were evaluated at, and per interface its report and the modes it was
+ * evaluated in (rc_assemble_roots writes it; engine/assemble_rhs.c). */
+typedef struct rc_repcache {
+    double *y;                   /* [ny] the state of the evaluation */
+    int on;                      /* kept (set by the driver while it samples) */
+    int ok;                      /* y holds a state */
+    struct rc_inter_report *rep; /* [ninter] */
+    int *key;                    /* [4 ninter] mode, branch, track, slip; mode -1: not evaluated */
+} rc_repcache;
+
+/* What the output and the event logic see of one interface. */
+typedef struct rc_inter_report {
+    double p;            /* penetration past the (effective) Gap [m] */
+    double vn;           /* approach rate dp/dt [m/s] */
+    double p_raw;        /* penetration past the nominal Gap [m] */
+    double vn_raw;       /* its rate [m/s] */
+    double pl, vl;       /* the law's penetration and rate: p and vn, or with
+                            several contact points P_e and v_bar [m], [m/s] */
+    double fload;        /* elastic(-plastic) force F of the law [N] */
+    double fdamp;        /* damping force [N] */
+    double fn;           /* total normal force F + F_damp, unclipped [N] */
+    double fl, fu;       /* load and unload curves at P [N] */
+    double fh;           /* hysteresis state F_h (0 when absent) [N] */
+    double offset;       /* Inacti 5 gap reduction [m] */
+    double ft[3];        /* friction force on body a, applied [N] */
+    double fraw[3];      /* friction force of the law, before the filter [N] */
+    double flim;         /* friction limit Sfric + mu F_n [N] */
+    double fstored;      /* energy in the stick springs, |F_t|^2 / (2 K_t) per
+                            contact point (K_t its share) [J] */
+    double vslip;        /* sliding speed |v_t| [m/s] */
+    double slip_root;    /* stick: |F_t|^2 - F_lim^2; slip: v_t . e */
+    double vt[3];        /* tangential relative velocity at the contact point [m/s] */
+    double point[3];     /* contact point [m] */
+    double normal[3];    /* unit normal, from a to b [-] */
+} rc_inter_report;
+
+rc_data *rc_data_new(const rc_model *m);
+void rc_data_free(rc_data *d);
+
+/* Name of the coupling whose forces failed in the last right-hand side or
+ * Jacobian, NULL when none. */
+const char *rc_cpl_failed(const rc_model *m, const rc_data *d);
+
+#endif

@@ -1,0 +1,30 @@
+/*
+ * Reports of a compiled model: the `ricochet check` summary
+ * (rc_model_print_summary, ricochet.h), the couplings' lines of it, and the
+ * couplings' values of an output record. (engine/reports)
+ */
+#ifndef RC_ENGINE_REPORTS_H
+#define RC_ENGINE_REPORTS_H
+
+#include <stdio.h>
+
+#include "model/model.h"
+#include "model/coupling.h"
+#include "model/coupling_contact.h"
+#include "engine/assembly/data.h"
+
+void rc_cpl_print_summary(const rc_model *m, FILE *f); /* engine/report.c */
+
+/* ---- output ------------------------------------------------------------ */
+/* Values per coupling at (t, y) for one output record, into buf [9 n]:
+ * force [n], length [n], force on end 1 [3 n], force on end 2 [3 n],
+ * lowest point of a catenary [n] (NaN for springs) (rc_cpl_report; NaN for
+ * a catenary that cannot be solved). */
+void rc_cpl_frame(const rc_model *m, const rc_data *d, double t, const double *y, double *buf); /* engine/report.c */
+
+/* `ricochet check` lines of contact coupling k (engine/contact_report.c);
+ * r: its report at t = 0 (NULL: none). */
+struct rc_cpl_report;
+void rc_cpl_contact_print(const rc_model *m, int k, const struct rc_cpl_report *r, FILE *f);
+
+#endif

@@ -98,7 +98,7 @@ def last(out):
 
 def main():
     for k, vr in enumerate(CASES):
-        out = rcval.run_file(os.path.join(HERE, f"case{k + 1}.rad")) if k == 0 else rcval.run(deck(vr, True), name="mesh")
+        out = rcval.run_case(f"case{k + 1}.rad") if k == 0 else rcval.run(deck(vr, True), name="mesh")
         r = rcval.Result(out)
         ft, vs, fn, fs, x = last(out)
         law, expect = mu(vs) * fn, mu(vr) * MR * G
@@ -124,7 +124,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck(CASES[0], True).write(os.path.join(HERE, "case1.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: {"case1.rad": deck(CASES[0], True)})

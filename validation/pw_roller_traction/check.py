@@ -83,7 +83,7 @@ def deck(vr, fmax):
 
 def main():
     for k, (vr, fmax) in enumerate(CASES):
-        out = rcval.run_file(os.path.join(HERE, f"case{k + 1}.rad"))
+        out = rcval.run_case(f"case{k + 1}.rad")
         r = rcval.Result(out)
         with Dataset(out) as nc:
             ff = np.array(nc["inter_force_friction"][-1, 0, :])
@@ -110,8 +110,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        for k, (vr, fmax) in enumerate(CASES):
-            deck(vr, fmax).write(os.path.join(HERE, f"case{k + 1}.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: {f"case{k + 1}.rad": deck(vr, fmax) for k, (vr, fmax) in enumerate(CASES)})

@@ -11,10 +11,10 @@ import os
 import sys
 
 import numpy as np
-from scipy.integrate import quad
 from scipy.optimize import brentq
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
+import laws  # noqa: E402
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
 from sphereplane import add_sphere_over_plane  # noqa: E402
@@ -44,22 +44,17 @@ def f_unload(p):
     return np.interp(p, XU, YU)
 
 
-def integral(f, xs, a, b):
-    pts = [x for x in xs if a < x < b]
-    return quad(f, a, b, points=pts or None, limit=200, epsabs=0.0, epsrel=1e-13)[0]
-
-
 def impact(vin):
     """One impact at speed vin from P = 0, under gravity (energy balances)."""
     # loading: 1/2 m vin^2 + m g Pmax = integral_0^Pmax F_L
-    pmax = brentq(lambda p: integral(f_load, XL, 0.0, p) - M * G * p - 0.5 * M * vin**2, 1e-9, XL[-1],
+    pmax = brentq(lambda p: laws.curve_integral(f_load, XL, 0.0, p) - M * G * p - 0.5 * M * vin**2, 1e-9, XL[-1],
                   xtol=1e-16, rtol=1e-15)
     fmax = f_load(pmax)
     pstar = brentq(lambda p: fmax - STIFF * (pmax - p) - f_unload(p), pmax - fmax / STIFF, pmax,
                    xtol=1e-16, rtol=1e-15)
     fstar = f_unload(pstar)
-    back = 0.5 * (fmax + fstar) * (pmax - pstar) + integral(f_unload, XU, 0.0, pstar)
-    diss = integral(f_load, XL, 0.0, pmax) - back
+    back = 0.5 * (fmax + fstar) * (pmax - pstar) + laws.curve_integral(f_unload, XU, 0.0, pstar)
+    diss = laws.curve_integral(f_load, XL, 0.0, pmax) - back
     # force-free from P = PP (F_U = 0) to P = 0: 1/2 m vout^2 = back - m g pmax
     vout = math.sqrt(2.0 * (back - M * G * pmax) / M)
     return dict(vin=vin, pmax=pmax, fmax=fmax, pstar=pstar, fstar=fstar, diss=diss, vout=vout)

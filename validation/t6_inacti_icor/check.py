@@ -11,10 +11,10 @@ import sys
 
 import numpy as np
 from netCDF4 import Dataset
-from scipy.integrate import quad
 from scipy.optimize import brentq
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
+import laws  # noqa: E402
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
 from sphereplane import add_sphere_over_plane  # noqa: E402
@@ -81,17 +81,12 @@ def f_unload(p):
     return np.interp(p, XU, YU)
 
 
-def integral(f, xs, a, b):
-    pts = [x for x in xs if a < x < b]
-    return quad(f, a, b, points=pts or None, limit=200, epsabs=0.0, epsrel=1e-13)[0]
-
-
 def icor_reference():
     """Exit speeds: Icor 1 rides F_U from P0 down; Icor 0 leaves F_L(P0) along Stiff to F_U."""
-    v1 = math.sqrt(2.0 * integral(f_unload, XU, 0.0, P0I) / M)
+    v1 = math.sqrt(2.0 * laws.curve_integral(f_unload, XU, 0.0, P0I) / M)
     f0 = f_load(P0I)
     ps = brentq(lambda p: f0 - STIFF * (P0I - p) - f_unload(p), P0I - f0 / STIFF, P0I, xtol=1e-16, rtol=1e-15)
-    back = 0.5 * (f0 + f_unload(ps)) * (P0I - ps) + integral(f_unload, XU, 0.0, ps)
+    back = 0.5 * (f0 + f_unload(ps)) * (P0I - ps) + laws.curve_integral(f_unload, XU, 0.0, ps)
     return v1, math.sqrt(2.0 * back / M), ps
 
 

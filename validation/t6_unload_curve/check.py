@@ -13,10 +13,10 @@ import os
 import sys
 
 import numpy as np
-from scipy.integrate import quad
 from scipy.optimize import brentq
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
+import laws  # noqa: E402
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
 from sphereplane import add_sphere_over_plane  # noqa: E402
@@ -51,9 +51,8 @@ def f_unload(p):
 
 
 def integral(f, xs, a, b):
-    """quad of a piecewise-linear curve, breakpoints passed explicitly."""
-    pts = [ASCALEX * x for x in xs if a < ASCALEX * x < b]
-    return quad(f, a, b, points=pts or None, limit=200, epsabs=0.0, epsrel=1e-13)[0]
+    """quad of a piecewise-linear curve, breakpoints (scaled by Ascalex) passed explicitly."""
+    return laws.curve_integral(f, xs, a, b, scale=ASCALEX)
 
 
 def reference():

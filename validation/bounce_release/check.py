@@ -36,6 +36,7 @@ from netCDF4 import Dataset
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 M, R, G, H, E, K = 1.0, 0.05, 9.81, 0.02, 0.7, 1e10
 T1, T2, T_END, DT_OUT = 1.0, 1.5, 1.4, 1e-2
@@ -51,11 +52,7 @@ def deck():
     d.funct(1, [0.0, 1.0], [0.0, K], title=f"linear load curve k = {K:g} N/m")
     d.funct(2, [0.0, T1, T2, 10.0], [1.0, 1.0, -1.0, -1.0], title="gravity factor: 1, turning to -1")
     z0 = R + H
-    d.nodes([(1, 0.0, 0.0, z0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="ball")
-    d.sphere(1, 1, (0.0, 0.0, z0), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
+    add_sphere_over_plane(d, M, R, z0, title="ball")
     d.grav_fct(1, "Z", -G, 2)
     d.type6(1, 1, 2, 1, e_target=E, title="floor, restitution asked")
     d.run(T_END, DT_OUT)
@@ -63,9 +60,8 @@ def deck():
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
     ida = rcval.METHOD == "ida"
-    path = rcval.run_file(os.path.join(here, "case.rad"))
+    path = rcval.run_case()
     r = rcval.Result(path)
     with Dataset(path) as nc:
         status = nc.getncattr("status")
@@ -124,7 +120,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

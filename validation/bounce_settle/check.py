@@ -36,6 +36,7 @@ from netCDF4 import Dataset
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 M, R, G, H, E = 1.0, 0.05, 9.81, 1.0, 0.7
 K_MAIN = 1e10
@@ -48,11 +49,7 @@ def deck(k=K_MAIN):
     d = Deck(f"ball settling on a penalty contact, restitution {E} asked, k = {k:g} N/m")
     d.funct(1, [0.0, 1.0], [0.0, k], title=f"linear load curve k = {k:g} N/m")
     z0 = R + H
-    d.nodes([(1, 0.0, 0.0, z0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="ball")
-    d.sphere(1, 1, (0.0, 0.0, z0), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
+    add_sphere_over_plane(d, M, R, z0, title="ball")
     d.grav(1, "Z", -G)
     d.type6(1, 1, 2, 1, e_target=E, title="floor, restitution asked")
     d.run(T_END, DT_OUT)
@@ -80,9 +77,8 @@ def settle_time(path):
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
     tj, tinf = rigid()
-    path = rcval.run_file(os.path.join(here, "case.rad"))
+    path = rcval.run_case()
     r, ts = settle_time(path)
     with Dataset(path) as nc:
         st_n, st_t = int(nc.getncattr("stats_settles")), float(nc.getncattr("stats_t_settle"))
@@ -139,7 +135,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -15,6 +15,7 @@ from scipy.optimize import brentq
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 M, R, K, ZETA, G, H = 1.0, 0.05, 1.0e8, 0.2, 9.81, 1.0
 C = 2.0 * ZETA * math.sqrt(K * M)
@@ -72,11 +73,7 @@ def deck():
     d = Deck("bouncing ball")
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e8 N/m")
     z0 = R + H
-    d.nodes([(1, 0.0, 0.0, z0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="ball")
-    d.sphere(1, 1, (0.0, 0.0, z0), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
+    add_sphere_over_plane(d, M, R, z0, title="ball")
     d.grav(1, "Z", -G)
     d.type6(1, 1, 2, 1, visc=C, title="floor")
     d.run(1.65, 1e-3)
@@ -103,8 +100,7 @@ def apex_heights(r, closes):
 
 def main():
     times, apex = reference()
-    here = os.path.dirname(os.path.abspath(__file__))
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     closes = r.events("contact_close")
     t1 = math.sqrt(2 * H / G)
     rcval.check("bouncing_ball.first_impact", abs(closes[0] - t1) < 1e-9,
@@ -132,7 +128,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -120,7 +120,7 @@ def deck_power():
 
 def main():
     # 1. resting
-    r, quat, omega = boxrest.load(rcval.run_file(os.path.join(HERE, "case.rad")))
+    r, quat, omega = boxrest.load(rcval.run_case())
     # bodies in deck order: 5, 3, 4; interfaces 1, 2, 3
     top3 = lambda: r.pos[-1, 1, 2] + C3 / 2  # noqa: E731 (top face of the lower box, level)
     cases = (("table", 0, 0, M, (A / 2, B / 2, C / 2), lambda x: -x[2]),
@@ -217,7 +217,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck_rest().write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck_rest)

@@ -23,6 +23,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 import boxincline  # noqa: E402
+import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
 
 G, K, ZETA, MU = 9.81, 1.0e6, 0.7, 0.3
@@ -65,7 +66,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck(MU / 3, 2.0, 0.01).write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: deck(MU / 3, 2.0, 0.01))

@@ -150,7 +150,7 @@ def check_pivot():
 
 
 def main():
-    r, quat, omega = boxrest.load(rcval.run_file(os.path.join(HERE, "case.rad")))
+    r, quat, omega = boxrest.load(rcval.run_case())
     t1 = math.sqrt(2 * H0 / G)
     Rs = (np.eye(3), np.eye(3), rotation(TILT), np.eye(3))
     names = ("box_first", "plane_first", "tilted", "power")
@@ -176,7 +176,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

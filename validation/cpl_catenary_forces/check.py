@@ -68,9 +68,8 @@ def deck():
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
     from netCDF4 import Dataset
-    with Dataset(rcval.run_file(os.path.join(here, "case.rad"))) as nc:
+    with Dataset(rcval.run_case()) as nc:
         f1 = np.array(nc["coupling_force_end1"][0])
         f2 = np.array(nc["coupling_force_end2"][0])
         low = np.array(nc["coupling_lowest"][0])
@@ -111,7 +110,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -49,8 +49,7 @@ def deck():
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     z_ref = equilibrium()
     z = r.pos[-1, 0, 2]
     rcval.check("cpl_catenary_hanging.equilibrium", abs(z - z_ref) < 1e-7,
@@ -72,7 +71,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -67,8 +67,7 @@ def line_energies(r):
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     e = r.energy
     scale = M * G * LEQ
     drift = np.max(np.abs(e["energy_total"] - e["energy_total"][0])) / scale
@@ -91,7 +90,7 @@ def main():
         rr = rcval.Result(rcval.run(deck(rtol), keep_solver=True))
         drifts.append(np.max(np.abs(rr.energy["energy_total"] - rr.energy["energy_total"][0])) / scale)
     if rcval.DEFAULTS:  # the study's rtol 1e-9 point is case.rad with its /SOLVER card
-        et = rcval.Result(rcval.run_file(os.path.join(here, "case.rad"), keep_solver=True)).energy["energy_total"]
+        et = rcval.Result(rcval.run_case(keep_solver=True)).energy["energy_total"]
         drift = np.max(np.abs(et - et[0])) / scale
     rcval.check("cpl_catenary_swing.convergence", drifts[1] < drifts[0] and drift < drifts[1],
                 f"ledger drift at rtol 1e-6, 1e-8, 1e-9: {drifts[0]:.2e}, {drifts[1]:.2e}, {drift:.2e}")
@@ -99,7 +98,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -72,8 +72,7 @@ def measure(path):
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    T, n, ledger, physical, steps, rtol_run = measure(rcval.run_file(os.path.join(here, "case.rad")))
+    T, n, ledger, physical, steps, rtol_run = measure(rcval.run_case())
     e = rcval.rel(T, T_REF)
     rcval.check("cpl_spring_cubic.period", e < 1e-6,
                 f"T = {T:.12f} s over {n} periods, quadrature {T_REF:.12f} s, rel. error {e:.2e} (< 1e-6); "
@@ -88,14 +87,11 @@ def main():
                 f"{steps} steps (< min(1e-6, steps x rtol) = {bound:.1e})")
     res = [measure(rcval.run(deck(rtol), keep_solver=True))[3] for rtol in (1e-8, 1e-10)]
     if rcval.DEFAULTS:  # the study's rtol 1e-11 point is case.rad with its /SOLVER card
-        physical = measure(rcval.run_file(os.path.join(here, "case.rad"), keep_solver=True))[3]
+        physical = measure(rcval.run_case(keep_solver=True))[3]
     rcval.check("cpl_spring_cubic.energy_convergence", res[1] < res[0] and physical < res[1],
                 f"energy drift over {NPER} periods at rtol 1e-8, 1e-10, 1e-11: {res[0]:.2e}, {res[1]:.2e}, {physical:.2e}")
     rcval.finish()
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -52,8 +52,7 @@ def errors(path):
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    r, err, off = errors(rcval.run_file(os.path.join(here, "case.rad")))
+    r, err, off = errors(rcval.run_case())
     rcval.check("cpl_spring_damped.history", err < 1e-6,
                 f"max |u - u_exact| / u0 = {err:.2e} over {len(r.t)} outputs, 10 periods (< 1e-6)")
     rcval.check("cpl_spring_damped.on_line", off < 1e-9 * X0, f"max distance from the line {off:.2e} m (< 1e-9 x0)")
@@ -72,7 +71,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

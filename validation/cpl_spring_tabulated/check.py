@@ -107,8 +107,7 @@ def deck(rtol=1e-10):
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     x = {name: r.pos[:, k, 0] for k, name in enumerate(LAWS)}
     ref = {name: scipy_motion(law, r.t) for name, law in LAWS.items()}
     err = np.max(np.abs(x["polynomial"] - ref["polynomial"])) / AMP
@@ -129,7 +128,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -10,25 +10,8 @@ no ball passing into the next (overlap < 3 x the two-ball Hertz approach).
 import os
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "lib"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import cradle  # noqa: E402
-import rcval  # noqa: E402
-
-N, V0, T_END, DT_OUT = 3, 0.2, 3.0e-4, 1.0e-7
-
-
-def deck():
-    return cradle.deck(N, V0, T_END, DT_OUT)
-
-
-def main():
-    cradle.check("cradle3", N, V0, T_END, os.path.join(HERE, "case.rad"))
-    rcval.finish()
-
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    cradle.main("cradle3", n=3, v0=0.2, t_end=3.0e-4, dt_out=1.0e-7)

@@ -137,7 +137,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck(*CASES["ifiltr3"]).write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: deck(*CASES["ifiltr3"]))

@@ -168,7 +168,7 @@ def compare(name, here, stiff, visf, tol_same):
           f"stops rigid {xr:.9f}, Iform 1 {ref[1]['stop'][1]:.9f}, Iform 2 {ref[2]['stop'][1]:.9f} m")
 
     # Iform 2: stops at rest (fric_stick) where its reference does
-    r2 = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")) if stiff is None and here
+    r2 = rcval.Result(rcval.run_case() if stiff is None and here
                       else rcval.run(deck(2, stiff=stiff, visf=visf)))
     ts = r2.events("fric_stick")
     t2, x2 = ts[0], r2.pos[r2.state_at(ts[0]), 0, 0]
@@ -263,7 +263,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck(2).write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: deck(2))

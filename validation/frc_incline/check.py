@@ -17,7 +17,6 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import incline  # noqa: E402
 import rcval  # noqa: E402
-import stick  # noqa: E402
 from deck import Deck  # noqa: E402
 
 M, R, K, G, MU = 1.0, 0.05, 1.0e6, 9.81, 0.3
@@ -76,12 +75,11 @@ def deck(tan_th, tend, ramped=False, dtout=0.01):
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
 
     # 1. stuck, tan(theta) = 0.9 mu, gravity ramped (case.rad)
     tan_th = 0.9 * MU
     th = math.atan(tan_th)
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     # the reference of the damped model (lib/block_ref.py) at the force band
     # of the derived tolerances (no /SOLVER card: both modes run them)
     tol = incline.tolerances(M, G, K)
@@ -101,28 +99,11 @@ def main():
     # 2. sliding, tan(theta) = 0.5 > mu, constant gravity
     tan_th = 0.5
     th = math.atan(tan_th)
-    a_ref = G * (math.sin(th) - MU * math.cos(th))
     r = rcval.Result(rcval.run(deck(tan_th, 1.5)))
-    xs, xu, vs, vu, vn = along(r, tan_th)
-    rcval.check("frc_incline.slide.events", r.ev_kind == ["fric_slip"],
-                f"events {list(zip(np.round(r.ev_t, 9), r.ev_kind))} (expected a single fric_slip at the stick onset)")
-    # stick onset from rest under the step load P = m g sin(theta): the applied
-    # force of the critically damped stick spring, P (1 - (1 - w t) e^(-w t)),
-    # reaches (1 + 1e-6) mu m g cos(theta) at w t = 1 - W((1 - r) e), r = (1 + 1e-6) mu/tan(theta)
-    t_on = stick.step_onset(K, M, M * G * math.sin(th), MU * M * G * math.cos(th))
-    e = abs(r.ev_t[0] - t_on) if len(r.ev_t) else float("inf")
-    rcval.check("frc_incline.slide.onset", e < 1e-6,
-                f"fric_slip at {r.ev_t[0] if len(r.ev_t) else float('nan'):.9e} s, damped stick spring from rest: "
-                f"(1 - W((1 - r) e))/w = {t_on:.9e} s, error {e:.1e} s (< 1e-6)")
-    sl = r.t >= 0.2
-    a, b = np.polyfit(r.t[sl], vs[sl], 1)
-    resid = np.max(np.abs(vs[sl] - (a * r.t[sl] + b)))
-    e = rcval.rel(a, a_ref)
     others = ", ".join(f"mu {m:g}: {G * (math.sin(th) - m * math.cos(th)):.4f}" for m in (MU_DEFAULT,))
-    rcval.check("frc_incline.slide.acceleration", e < 1e-5 and resid < 1e-6,
-                f"fit of v_s over [0.2, 1.5] s: a = {a:.9f} m/s^2, g (sin theta - mu cos theta) = {a_ref:.9f}, "
-                f"rel. error {e:.2e} (< 1e-5), max fit residual {resid:.1e} m/s (< 1e-6) "
-                f"(the sets that must not apply would give {others}, or stick: mu 0.6, 0.9)")
+    xs, xu, vs, vu, vn, sl = incline.check_slide(
+        "frc_incline.slide", r, M, K, MU, G, tan_th, PHI, rcval,
+        accel_note=f" (the sets that must not apply would give {others}, or stick: mu 0.6, 0.9)")
     mu_meas = np.linalg.norm(r.ffric[-1, 0]) / r.fn[-1, 0]
     e = rcval.rel(mu_meas, MU)
     rcval.check("frc_incline.slide.limit", e < 1e-9 and r.slip[-1, 0] == 1,
@@ -135,7 +116,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck(0.9 * MU, 11.0, ramped=True).write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: deck(0.9 * MU, 11.0, ramped=True))

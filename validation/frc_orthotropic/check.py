@@ -160,7 +160,6 @@ def max_dissipation(name, r, tol, why):
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
     rigid = reference()
     rigid = (0.0, rigid[0], rigid[1], rigid[2])
     inc = incremental()
@@ -173,7 +172,7 @@ def main():
           f"{math.degrees(math.atan2(rigid[3][1], rigid[3][0])):.3f} deg from the launch line "
           f"(isotropic mu_1: {V0**2 / (2 * MU1 * G):.6f} m along x, mu_2: {V0**2 / (2 * MU2 * G):.6f} m)")
     # default tolerances (case.rad): the rigid law, within the incremental form's regularisation
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     compare("frc_orthotropic.default", r, rigid, 1e-5, 1e-4, 1e-5, "the rigid elliptic law (solve_ivp)")
     # sliding: on the ellipse, along the maximum-dissipation direction; at
     # the deck's tolerances within the integration error of the direction
@@ -196,7 +195,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

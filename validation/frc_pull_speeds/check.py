@@ -113,7 +113,6 @@ def point(name, ifric, area, v, m=M, c=None, fric=None, iform=2):
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
     names = {1: "gen_viscous", 2: "darmstad", 3: "renard"}
     worst = 0.0
     for iform, form in ((2, "iform2"), (1, "iform1")):
@@ -125,7 +124,7 @@ def main():
         point(f"frc_pull_speeds.{form}.floor_zero", 1, 1e-4, 1.0, c=(0.0, -0.2, 0.0, 0.0, 0.0, 0.0), fric=0.1,
               iform=iform)
     # case.rad: the first Darmstad point, as written by --write-case
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     mu, fn, vs, slip, ft = measure(r)
     area, v, m = POINTS[2][0]
     ref = mu_law(2, *LAWS[2], fn / area, v)
@@ -137,8 +136,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        area, v, m = POINTS[2][0]
-        deck(2, area, v, m=m).write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: deck(2, POINTS[2][0][0], POINTS[2][0][1], m=POINTS[2][0][2]))

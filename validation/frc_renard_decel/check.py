@@ -112,12 +112,11 @@ def compare(name, r, ref, tol_v, tol_stop):
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
     ref = reference()
     (t1, x1, v1), segs, t_stop, x_stop = ref
     print(f"reference: slip at {t1:.3e} s, v1 = {v1:.9f} m/s; stop at {t_stop:.9f} s, {x_stop:.9f} m "
           f"(crossing V_cr2 at {segs[0][1]:.6f} s, V_cr1 at {segs[1][1]:.6f} s)")
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     rcval.check("frc_renard_decel.slip", len(r.events("fric_slip")) > 0 and abs(r.events("fric_slip")[0] - t1) < 1e-9,
                 f"first fric_slip at {r.events('fric_slip')[0]:.6e} s, exact stick onset {t1:.6e} s (the stick damper's "
                 f"c_t v0 = {stick.ct(KT, M) * V0:g} N against mu_s m g = {MUS * M * G:.6g} N)")
@@ -133,7 +132,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -149,16 +149,6 @@ def deck(rtol=1e-10, atol_pos=1e-13, atol_vel=1e-12, dtout=1e-3):
     return d
 
 
-def peak(t, x, sign):
-    """Extreme of x (sign +1: max, -1: min) refined by the parabola through the
-    three records around the extreme record."""
-    i = int(np.argmax(sign * x))
-    i = min(max(i, 1), len(x) - 2)
-    a, b, c = x[i - 1], x[i], x[i + 1]
-    den = a - 2 * b + c
-    return b - 0.125 * (c - a) ** 2 / den if den != 0 else b
-
-
 def cycle(ev):
     """Period, slip duration from the last two saturations; times."""
     sat = [t for t, k in ev if k == "fric_saturate"]
@@ -167,8 +157,7 @@ def cycle(ev):
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     ev_m = list(zip(r.ev_t, r.ev_kind))
     ev_r, segs = reference()
     cl = classical()
@@ -192,7 +181,7 @@ def main():
                 f"period {T_m:.9f} s, reference {T_r:.9f} s, rel. error {e1:.1e}; slip phase {S_m:.9f} s, "
                 f"reference {S_r:.9f} s, rel. error {e2:.1e} (< 1e-5)")
     cyc = (r.t >= sat_m[-2]) & (r.t <= sat_m[-1])
-    xmax_m, xmin_m = peak(r.t[cyc], r.pos[cyc, 0, 0], 1), peak(r.t[cyc], r.pos[cyc, 0, 0], -1)
+    xmax_m, xmin_m = rcval.refined_extreme(r.pos[cyc, 0, 0], 1), rcval.refined_extreme(r.pos[cyc, 0, 0], -1)
     tt = np.linspace(sat_r[-2], sat_r[-1], 400001)
     xr = ref_x(segs, tt)
     xmax_r, xmin_r = xr.max(), xr.min()
@@ -219,7 +208,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

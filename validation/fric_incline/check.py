@@ -65,12 +65,11 @@ def deck(tan_th, tend, ramped=False, dtout=0.01, rtol=1e-6, atol_pos=1e-9, atol_
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
 
     # 1. stuck, tan(theta) = 0.9 mu, gravity ramped (case.rad)
     tan_th = 0.9 * MU
     th = math.atan(tan_th)
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     # the reference of the damped model (lib/block_ref.py) at the force band
     # of the run's tolerances: the deck's /SOLVER card, or the derived ones
     tol = (incline.tolerances(M, G, K) if rcval.DEFAULTS else
@@ -111,28 +110,8 @@ def main():
 
     # 3. sliding, tan(theta) = 0.5 > mu, constant gravity
     tan_th = 0.5
-    th = math.atan(tan_th)
-    a_ref = G * (math.sin(th) - MU * math.cos(th))
     r = rcval.Result(rcval.run(deck(tan_th, 1.5)))
-    xs, xu, vs, vu, vn = along(r, tan_th)
-    kinds = [k for k in r.ev_kind]
-    rcval.check("fric_incline.slide.events", kinds == ["fric_slip"],
-                f"events {list(zip(np.round(r.ev_t, 9), kinds))} (expected a single fric_slip at the stick onset)")
-    # stick onset from rest under the step load P = m g sin(theta): the applied
-    # force of the critically damped stick spring, P (1 - (1 - w t) e^(-w t)),
-    # reaches (1 + 1e-6) mu m g cos(theta) at w t = 1 - W((1 - r) e), r = (1 + 1e-6) mu/tan(theta)
-    t_on = stick.step_onset(K, M, M * G * math.sin(th), MU * M * G * math.cos(th))
-    e = abs(r.ev_t[0] - t_on) if len(r.ev_t) else float("inf")
-    rcval.check("fric_incline.slide.onset", e < 1e-6,
-                f"fric_slip at {r.ev_t[0] if len(r.ev_t) else float('nan'):.9e} s, damped stick spring from rest: "
-                f"(1 - W((1 - r) e))/w = {t_on:.9e} s, error {e:.1e} s (< 1e-6)")
-    sl = r.t >= 0.2
-    a, b = np.polyfit(r.t[sl], vs[sl], 1)
-    resid = np.max(np.abs(vs[sl] - (a * r.t[sl] + b)))
-    e = rcval.rel(a, a_ref)
-    rcval.check("fric_incline.slide.acceleration", e < 1e-5 and resid < 1e-6,
-                f"fit of v_s over [0.2, 1.5] s: a = {a:.9f} m/s^2, g (sin theta - mu cos theta) = {a_ref:.9f}, "
-                f"rel. error {e:.2e} (< 1e-5), max fit residual {resid:.1e} m/s (< 1e-6)")
+    xs, xu, vs, vu, vn, sl = incline.check_slide("fric_incline.slide", r, M, K, MU, G, tan_th, PHI, rcval)
     # across the fall line: only the integration error (the law damps a lateral
     # velocity at the rate F_lim/(m |v|), README.md), bounded by atol_vel = 1e-6 m/s
     side = np.max(np.abs(vu))
@@ -143,7 +122,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck(0.9 * MU, 11.0, ramped=True).write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: deck(0.9 * MU, 11.0, ramped=True))

@@ -107,14 +107,13 @@ def measure(path):
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
     errs = {}
     for name, m, sfric, use_fv, use_ff in VARIANTS:
         flim = flim_fn(m, sfric, use_fv, use_ff)
         t_ref, x_ref, tq, xq = reference(m, flim)
         eq = max(rcval.rel(tq, t_ref), rcval.rel(xq, x_ref))
         if name == VARIANTS[-1][0]:
-            path = rcval.run_file(os.path.join(here, "case.rad"))  # the case deck is the combined variant
+            path = rcval.run_case()  # the case deck is the combined variant
         else:
             path = rcval.run(deck(m, sfric, use_fv, use_ff))
         t_stop, x_stop, before = measure(path)
@@ -138,7 +137,7 @@ def main():
                                               keep_solver=True))
         conv.append(max(rcval.rel(x_stop, x_ref), rcval.rel(t_stop, t_ref)))
     if rcval.DEFAULTS:  # the study's rtol 1e-8 point is case.rad with its /SOLVER card
-        t_stop, x_stop, _ = measure(rcval.run_file(os.path.join(here, "case.rad"), keep_solver=True))
+        t_stop, x_stop, _ = measure(rcval.run_case(keep_solver=True))
         errs[name] = max(rcval.rel(x_stop, x_ref), rcval.rel(t_stop, t_ref))
     conv.insert(1, errs[name])
     ok = conv[2] < conv[1] < conv[0] and conv[2] < 1e-8
@@ -149,8 +148,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        _, m, sfric, use_fv, use_ff = VARIANTS[-1]
-        deck(m, sfric, use_fv, use_ff).write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: deck(*VARIANTS[-1][1:]))  # (m, sfric, use_fv, use_ff) of the last variant

@@ -89,11 +89,10 @@ def onset(F):
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
 
     # below the threshold (case.rad): F = 3.5 N
     F = 3.5
-    stuck("below", rcval.Result(rcval.run_file(os.path.join(here, "case.rad"))), F)
+    stuck("below", rcval.Result(rcval.run_case()), F)
     # just below: F = 0.99 (Sfric + mu m g)
     F = 0.99 * FTH
     stuck("just_below", rcval.Result(rcval.run(deck(F, 11.0))), F)
@@ -143,7 +142,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck(3.5, 11.0).write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: deck(3.5, 11.0))

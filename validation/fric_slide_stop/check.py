@@ -80,11 +80,10 @@ def measure(r, direction=(1.0, 0.0)):
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
     x_c, t_c = coulomb()
 
     # 1. default solver tolerances, against the rigid Coulomb block
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     q = measure(r)
     rcval.check("fric_slide_stop.events", q["before"] == ["fric_slip", "fric_stick"],
                 f"events up to the stop: {q['before']} (expected fric_slip at the launch, then fric_stick)")
@@ -165,7 +164,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

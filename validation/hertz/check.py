@@ -13,6 +13,7 @@ from scipy.special import gamma
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 R, RHO, ESTAR, V0 = 0.01, 7850.0, 1.15e11, 0.5
 M = RHO * 4.0 / 3.0 * math.pi * R**3
@@ -35,12 +36,7 @@ def deck():
     d = Deck("Hertz impact, steel sphere on rigid plane")
     d.funct(1, xs, K * xs**1.5, title=f"Hertz F = K P^1.5, K = {K:.6g} N/m^1.5")
     z0 = R + 1e-5
-    d.nodes([(1, 0.0, 0.0, z0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="steel sphere R = 10 mm")
-    d.sphere(1, 1, (0.0, 0.0, z0), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
-    d.inivel(1, (0.0, 0.0, -V0), 1)
+    add_sphere_over_plane(d, M, R, z0, V0, title="steel sphere R = 10 mm")
     d.type6(1, 1, 2, 1, title="Hertz contact")
     d.run(2.0e-4, 1.0e-7)
     d.solver(rtol=1e-6, atol_pos=1e-12, atol_vel=1e-7)
@@ -49,15 +45,11 @@ def deck():
 
 def main():
     dmax, fmax, tc_ref = reference()
-    here = os.path.dirname(os.path.abspath(__file__))
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     t1, t2 = r.events("contact_close")[0], r.contact_ends()[0]
     # peak values: the time series (dt 1e-7 s, ~1000 records in contact), refined by a parabola
     k = int(np.argmax(r.pen[:, 0]))
-    def peak(v):
-        a, b, c = v[k - 1], v[k], v[k + 1]
-        return b + 0.125 * (a - c) ** 2 / (2 * b - a - c) if 2 * b - a - c != 0 else b
-    pm, fm = peak(r.pen[:, 0]), peak(r.fn[:, 0])
+    pm, fm = rcval.parabola_peak(r.pen[:, 0], k), rcval.parabola_peak(r.fn[:, 0], k)
     tc = t2 - t1
     for name, got, ref, unit in (("max_approach", pm, dmax, "m"), ("peak_force", fm, fmax, "N"),
                                  ("contact_time", tc, tc_ref, "s")):
@@ -67,7 +59,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

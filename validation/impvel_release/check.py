@@ -32,8 +32,7 @@ def deck():
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     ev = r.events("impvel_stop")
     ok = len(ev) == 1 and abs(ev[0] - TSTOP) <= 1e-14
     rcval.check("impvel_release.event", ok, f"impvel_stop at {ev} s (Tstop = {TSTOP} s)")
@@ -51,7 +50,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -66,9 +66,8 @@ def weld_deck():
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
     # 1. conical pendulum
-    path = rcval.run_file(os.path.join(here, "case.rad"))
+    path = rcval.run_case()
     r = rcval.Result(path)
     x = r.pos[:, 0, :]
     h = np.max(np.abs(x[:, 1] + L * math.cos(ALPHA)))
@@ -112,8 +111,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"), "w") as f:
-            f.write(cone_deck().text())
-    else:
-        main()
+    rcval.entry(main, cone_deck)

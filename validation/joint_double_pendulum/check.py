@@ -66,8 +66,7 @@ def reference(t):
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    path = rcval.run_file(os.path.join(here, "case.rad"))
+    path = rcval.run_case()
     r = rcval.Result(path)
     x1, x2 = r.pos[:, 0, :], r.pos[:, 1, :]
     th1 = np.arctan2(x1[:, 0], -x1[:, 1])
@@ -100,8 +99,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"), "w") as f:
-            f.write(deck().text())
-    else:
-        main()
+    rcval.entry(main, deck)

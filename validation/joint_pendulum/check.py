@@ -44,8 +44,7 @@ def deck(kind="REVOLUTE"):
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    path = rcval.run_file(os.path.join(here, "case.rad"))
+    path = rcval.run_case()
     r = rcval.Result(path)
     x = r.pos[:, 0, :]
     periods = np.diff(rcval.down_crossings(r.t, x[:, 0]))
@@ -97,8 +96,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"), "w") as f:
-            f.write(deck().text())
-    else:
-        main()
+    rcval.entry(main, deck)

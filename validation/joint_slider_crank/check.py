@@ -46,8 +46,7 @@ def deck():
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    path = rcval.run_file(os.path.join(here, "case.rad"))
+    path = rcval.run_case()
     r = rcval.Result(path)
     crank, slider = r.pos[:, 0, :], r.pos[:, 2, :]
     phi = np.arctan2(crank[:, 1], crank[:, 0])
@@ -81,8 +80,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"), "w") as f:
-            f.write(deck().text())
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -121,8 +121,7 @@ def pendulum_reference():
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    path = rcval.run_file(os.path.join(here, "case.rad"))
+    path = rcval.run_case()
     r = rcval.Result(path)
     with Dataset(path) as nc:
         mstop = np.array(nc["joint_stop_moment"][:])
@@ -202,7 +201,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

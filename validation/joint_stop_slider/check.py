@@ -109,8 +109,7 @@ def curve_stop():
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    path = rcval.run_file(os.path.join(here, "case.rad"))
+    path = rcval.run_case()
     r = rcval.Result(path)
     with Dataset(path) as nc:
         fstop = np.array(nc["joint_stop_force"][:])
@@ -210,7 +209,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

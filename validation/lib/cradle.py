@@ -9,6 +9,8 @@ unilateral Hertz contacts, restarted at every contact opening or closing
 (event location).
 """
 import math
+import os
+import sys
 
 import numpy as np
 from scipy.integrate import solve_ivp
@@ -151,3 +153,17 @@ def check(name, n, v0, t_end, case):
                 f"{max(pmax, deepest):.3e} m (penetration output {pmax:.3e} m, from the centres {deepest:.3e} m), "
                 f"dmax {dpair:.3e} m")
     return r
+
+
+def main(name, n, v0, t_end, dt_out):
+    """The whole of a cradle problem's check.py: n balls, ball 1 launched at
+    v0 [m/s], run to t_end [s] with records every dt_out [s]. Runs the
+    checks on case.rad in the problem's folder, or with --write-case writes
+    that deck there."""
+    here = os.path.dirname(os.path.abspath(sys.argv[0]))
+
+    def run_checks():
+        check(name, n, v0, t_end, os.path.join(here, "case.rad"))
+        rcval.finish()
+
+    rcval.entry(run_checks, lambda: deck(n, v0, t_end, dt_out))

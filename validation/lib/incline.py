@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 
+import stick
 from deck import line
 
 
@@ -160,3 +161,36 @@ def check_stuck(name, r, m, k, cn, mu, g, tan_th, tr, phi, tol, rcval):
     # the tolerance of the slipped distance
     u_tol = 1e-6 * x_ref if kinds else 1e-15
     return xs, xu, e, x_end, u_tol
+
+
+def check_slide(name, r, m, k, mu, g, tan_th, phi, rcval, accel_note=""):
+    """The checks `name`.events, .onset and .acceleration of a block sliding
+    from rest down a plane with tan(theta) > mu under constant gravity g
+    [m/s^2] (mass m [kg], stick stiffness k [N/m]; records from 0 to 1.5 s):
+    a single fric_slip at the stick onset of the damped stick spring
+    (stick.step_onset, within 1e-6 s), then v_s(t) linear from 0.2 s with
+    a = g (sin theta - mu cos theta) [m/s^2] (rel. error < 1e-5, fit residual
+    < 1e-6 m/s). accel_note is appended to the acceleration line. Returns
+    x_s, x_u, v_s, v_u, v_n (incline.along) and the fit window (t >= 0.2 s)."""
+    th = math.atan(tan_th)
+    a_ref = g * (math.sin(th) - mu * math.cos(th))
+    xs, xu, vs, vu, vn = along(r, tan_th, phi)
+    kinds = [kd for kd in r.ev_kind]
+    rcval.check(f"{name}.events", kinds == ["fric_slip"],
+                f"events {list(zip(np.round(r.ev_t, 9), kinds))} (expected a single fric_slip at the stick onset)")
+    # stick onset from rest under the step load P = m g sin(theta): the applied
+    # force of the critically damped stick spring, P (1 - (1 - w t) e^(-w t)),
+    # reaches (1 + 1e-6) mu m g cos(theta) at w t = 1 - W((1 - r) e), r = (1 + 1e-6) mu/tan(theta)
+    t_on = stick.step_onset(k, m, m * g * math.sin(th), mu * m * g * math.cos(th))
+    e = abs(r.ev_t[0] - t_on) if len(r.ev_t) else float("inf")
+    rcval.check(f"{name}.onset", e < 1e-6,
+                f"fric_slip at {r.ev_t[0] if len(r.ev_t) else float('nan'):.9e} s, damped stick spring from rest: "
+                f"(1 - W((1 - r) e))/w = {t_on:.9e} s, error {e:.1e} s (< 1e-6)")
+    sl = r.t >= 0.2
+    a, b = np.polyfit(r.t[sl], vs[sl], 1)
+    resid = np.max(np.abs(vs[sl] - (a * r.t[sl] + b)))
+    e = rcval.rel(a, a_ref)
+    rcval.check(f"{name}.acceleration", e < 1e-5 and resid < 1e-6,
+                f"fit of v_s over [0.2, 1.5] s: a = {a:.9f} m/s^2, g (sin theta - mu cos theta) = {a_ref:.9f}, "
+                f"rel. error {e:.2e} (< 1e-5), max fit residual {resid:.1e} m/s (< 1e-6)" + accel_note)
+    return xs, xu, vs, vu, vn, sl

@@ -98,6 +98,12 @@ def run_file(case, keep_solver=False):
     return _execute(case, out)
 
 
+def run_case(name="case.rad", keep_solver=False):
+    """Run the deck file `name` of the problem's folder (that of the check.py
+    being run), as run_file; return the output path."""
+    return run_file(os.path.join(os.path.dirname(os.path.abspath(sys.argv[0])), name), keep_solver=keep_solver)
+
+
 class Result:
     """The parts of an output file the checks use."""
 
@@ -171,5 +177,38 @@ def down_crossings(t, x):
     return np.array(out)
 
 
+def parabola_peak(v, k):
+    """The extreme of the record series v near record k: the vertex of the
+    parabola through v[k - 1], v[k], v[k + 1] (v[k] where the three lie on a
+    line); in v's units."""
+    a, b, c = v[k - 1], v[k], v[k + 1]
+    return b + 0.125 * (a - c) ** 2 / (2 * b - a - c) if 2 * b - a - c != 0 else b
+
+
+def refined_extreme(x, sign):
+    """The extreme of the record series x (sign +1: max, -1: min), refined by
+    parabola_peak around the extreme record (kept off the ends); in x's units."""
+    i = int(np.argmax(sign * x))
+    i = min(max(i, 1), len(x) - 2)
+    return parabola_peak(x, i)
+
+
 def finish():
     sys.exit(1 if FAILED else 0)
+
+
+def entry(main, cases):
+    """The end of every check.py: with --write-case on the command line, write
+    the problem's deck(s) into its folder, else run main().
+
+    cases: a callable returning the Deck written as case.rad, or a dict
+    {file name: Deck} for problems with several case files."""
+    if "--write-case" in sys.argv:
+        made = cases()
+        if not isinstance(made, dict):
+            made = {"case.rad": made}
+        here = os.path.dirname(os.path.abspath(sys.argv[0]))
+        for name, d in made.items():
+            d.write(os.path.join(here, name))
+    else:
+        main()

@@ -72,7 +72,7 @@ def deck():
 
 def main():
     alpha, delta, F, h = groove()
-    out = rcval.run_file(os.path.join(HERE, "case.rad"))
+    out = rcval.run_case()
     with Dataset(out) as nc:
         x = np.array(nc["body_position"][-1])
         fn = np.array(nc["inter_force_normal"][-1])
@@ -101,7 +101,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

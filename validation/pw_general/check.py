@@ -21,6 +21,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 R, M = 0.01, 7850.0 * 4.0 / 3.0 * math.pi * 0.01**3
 DREG = 1e-6  # regularisation length set on the card [m] (the reference integrates the same law)
@@ -79,12 +80,7 @@ def reference(v0, K, m1, C, m2, m3, rdf):
 def deck(v0, K, m1, C, m2, m3, rdf, rtol=1e-10):
     d = Deck(f"power-law impact K {K:g} m1 {m1} C {C:g} m2 {m2} m3 {m3} RDF {rdf}")
     z0 = R + 1e-7
-    d.nodes([(1, 0.0, 0.0, z0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="steel sphere R = 10 mm")
-    d.sphere(1, 1, (0.0, 0.0, z0), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
-    d.inivel(1, (0.0, 0.0, -v0), 1)
+    add_sphere_over_plane(d, M, R, z0, v0, title="steel sphere R = 10 mm")
     d.power(1, 1, 2, k=K, m1=m1, c=C, m2=m2, m3=m3, irdf=0 if rdf else 2, rdf=rdf, dreg=DREG, vreg=1e-6)
     d.run(4e-4, 1.0e-6)
     d.solver(rtol=rtol, atol_pos=1e-15, atol_vel=1e-10, atol_energy=1e-12)
@@ -104,7 +100,7 @@ def main():
         v0 = cs[0]
         vr_ref, tc_ref = reference(*cs)
         name = "case.rad" if k == 0 else f"case{k + 1}.rad"
-        vout, tc, nrel, r = measure(rcval.run_file(os.path.join(HERE, name)))
+        vout, tc, nrel, r = measure(rcval.run_case(name))
         ev, et = rcval.rel(vout, vr_ref), rcval.rel(tc, tc_ref)
         rcval.check(f"pw_general.rebound_{k + 1}", ev < 1e-6 and et < 1e-6,
                     f"K {cs[1]:g} m1 {cs[2]} C {cs[3]:g} m2 {cs[4]} m3 {cs[5]} RDF {cs[6]}: rebound {vout:.9f} m/s, "
@@ -123,8 +119,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        for k, cs in enumerate(CASES):
-            deck(*cs).write(os.path.join(HERE, "case.rad" if k == 0 else f"case{k + 1}.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: {"case.rad" if k == 0 else f"case{k + 1}.rad": deck(*cs) for k, cs in enumerate(CASES)})

@@ -15,6 +15,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 R, RHO, ESTAR, V0 = 0.01, 7850.0, 1.15e11, 0.5
 M = RHO * 4.0 / 3.0 * math.pi * R**3
@@ -31,12 +32,7 @@ def reference():
 def deck(rtol=1e-8):
     d = Deck("Hertz impact with the power-law contact")
     z0 = R + 1e-5
-    d.nodes([(1, 0.0, 0.0, z0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="steel sphere R = 10 mm")
-    d.sphere(1, 1, (0.0, 0.0, z0), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
-    d.inivel(1, (0.0, 0.0, -V0), 1)
+    add_sphere_over_plane(d, M, R, z0, V0, title="steel sphere R = 10 mm")
     d.power(1, 1, 2, k=K, m1=1.5, c=0.0, title="Hertz: K delta^1.5, no damping")
     d.run(2.0e-4, 1.0e-7)
     d.solver(rtol=rtol, atol_pos=1e-13, atol_vel=1e-8)
@@ -46,16 +42,12 @@ def deck(rtol=1e-8):
 def measure(r):
     t1, t2 = r.events("contact_close")[0], r.contact_ends()[0]
     k = int(np.argmax(r.pen[:, 0]))
-
-    def peak(v):
-        a, b, c = v[k - 1], v[k], v[k + 1]
-        return b + 0.125 * (a - c) ** 2 / (2 * b - a - c) if 2 * b - a - c != 0 else b
-    return peak(r.pen[:, 0]), peak(r.fn[:, 0]), t2 - t1
+    return rcval.parabola_peak(r.pen[:, 0], k), rcval.parabola_peak(r.fn[:, 0], k), t2 - t1
 
 
 def main():
     ref = reference()
-    got = measure(rcval.Result(rcval.run_file(os.path.join(HERE, "case.rad"))))
+    got = measure(rcval.Result(rcval.run_case()))
     t6 = measure(rcval.Result(rcval.run_file(os.path.join(HERE, "..", "hertz", "case.rad"))))
     names = (("max_approach", "m"), ("peak_force", "N"), ("contact_time", "s"))
     for (name, unit), g, rf, b in zip(names, got, ref, t6):
@@ -68,7 +60,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -19,6 +19,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 R, RHO, ESTAR = 0.01, 7850.0, 1.15e11
 M = RHO * 4.0 / 3.0 * math.pi * R**3
@@ -38,12 +39,7 @@ def restitution(v0, alpha):
 def deck(v0, alpha, rtol=1e-10):
     d = Deck(f"Hunt-Crossley impact, v0 = {v0} m/s, alpha = {alpha} s/m")
     z0 = R + 1e-6
-    d.nodes([(1, 0.0, 0.0, z0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="steel sphere R = 10 mm")
-    d.sphere(1, 1, (0.0, 0.0, z0), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
-    d.inivel(1, (0.0, 0.0, -v0), 1)
+    add_sphere_over_plane(d, M, R, z0, v0, title="steel sphere R = 10 mm")
     d.power(1, 1, 2, k=K, m1=1.5, c=alpha * K, m2=1.0, m3=1.5, irdf=2, title="Hunt-Crossley, RDF off")
     d.run(1.5e-4, 1.0e-6)
     d.solver(rtol=rtol, atol_pos=1e-15, atol_vel=1e-10, atol_energy=1e-12)
@@ -63,7 +59,7 @@ def main():
     for k, (v0, alpha) in enumerate(CASES):
         e_ref = restitution(v0, alpha)
         name = "case.rad" if k == 0 else f"case{k + 1}.rad"
-        vout, released, r = measure(rcval.run_file(os.path.join(HERE, name)))
+        vout, released, r = measure(rcval.run_case(name))
         e = vout / v0
         err = abs(e - e_ref)
         rcval.check(f"pw_hunt_crossley.restitution_{k + 1}", err < 1e-4 and released == 0,
@@ -84,8 +80,5 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        for k, (v0, alpha) in enumerate(CASES):
-            deck(v0, alpha).write(os.path.join(HERE, "case.rad" if k == 0 else f"case{k + 1}.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: {"case.rad" if k == 0 else f"case{k + 1}.rad": deck(v0, alpha)
+                               for k, (v0, alpha) in enumerate(CASES)})

@@ -22,6 +22,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 R, RHO, ESTAR, V0, ALPHA = 0.01, 7850.0, 1.15e11, 0.5, 0.4
 M = RHO * 4.0 / 3.0 * math.pi * R**3
@@ -37,12 +38,7 @@ def coef(m3):
 def deck(m3):
     d = Deck(f"indentation exponent m3 = {m3}")
     z0 = R + 1e-6
-    d.nodes([(1, 0.0, 0.0, z0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="steel sphere R = 10 mm")
-    d.sphere(1, 1, (0.0, 0.0, z0), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
-    d.inivel(1, (0.0, 0.0, -V0), 1)
+    add_sphere_over_plane(d, M, R, z0, V0, title="steel sphere R = 10 mm")
     d.power(1, 1, 2, k=K, m1=1.5, c=coef(m3), m2=1.0, m3=m3, irdf=2, dreg=1e-9)
     d.run(1.5e-4, 2.0e-7)
     d.solver(rtol=1e-10, atol_pos=1e-15, atol_vel=1e-10, atol_energy=1e-12)
@@ -52,7 +48,7 @@ def deck(m3):
 def main():
     rows, p_first = {}, {}
     for k, m3 in enumerate(M3S):
-        r = rcval.Result(rcval.run_file(os.path.join(HERE, f"case{k + 1}.rad")))
+        r = rcval.Result(rcval.run_case(f"case{k + 1}.rad"))
         t_in = r.events("contact_close")[0]
         # damping term at the first record in contact (P well above Dreg):
         # the recorded force minus the elastic term, against C v P^m3
@@ -91,8 +87,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        for k, m3 in enumerate(M3S):
-            deck(m3).write(os.path.join(HERE, f"case{k + 1}.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: {f"case{k + 1}.rad": deck(m3) for k, m3 in enumerate(M3S)})

@@ -34,6 +34,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 R, RHO, ESTAR = 0.01, 7850.0, 1.15e11
 M = RHO * 4.0 / 3.0 * math.pi * R**3
@@ -65,12 +66,7 @@ def deck(law, e):
     p = LAWS[law]
     d = Deck(f"restitution asked of a {law} power law: e = {e}")
     z0 = R + 1e-5
-    d.nodes([(1, 0.0, 0.0, z0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="steel sphere R = 10 mm")
-    d.sphere(1, 1, (0.0, 0.0, z0), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
-    d.inivel(1, (0.0, 0.0, -V0), 1)
+    add_sphere_over_plane(d, M, R, z0, V0, title="steel sphere R = 10 mm")
     if law == "t6_table":
         d.funct(1, list(T6_X), list(T6_Y), title="Hertz force tabulated")
         d.type6(1, 1, 2, 1, e_target=e, title="TYPE6 nonlinear load curve, restitution asked")
@@ -196,7 +192,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck("hertz", 0.5).write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: deck("hertz", 0.5))

@@ -21,6 +21,7 @@ from netCDF4 import Dataset
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
+import laws  # noqa: E402
 import rcval  # noqa: E402
 from deck import Deck, line  # noqa: E402
 
@@ -35,17 +36,8 @@ NX, NY = 20, 10                        # top face quadrilaterals
 T_END = 3.0
 
 
-def step5(x, x0, h0, x1, h1):
-    if x <= x0:
-        return h0
-    if x >= x1:
-        return h1
-    d = (x - x0) / (x1 - x0)
-    return h0 + (h1 - h0) * d**3 * (10 - 15 * d + 6 * d * d)
-
-
 def mu(v):
-    return step5(v, -VS, -MUS, VS, MUS) if v < VS else step5(v, VS, MUS, VD, MUD)
+    return laws.step5_mu(v, MUS, VS, MUD, VD)
 
 
 def deck(vr, meshed):
@@ -98,7 +90,7 @@ def last(out):
 
 def main():
     for k, vr in enumerate(CASES):
-        out = rcval.run_file(os.path.join(HERE, f"case{k + 1}.rad")) if k == 0 else rcval.run(deck(vr, True), name="mesh")
+        out = rcval.run_case(f"case{k + 1}.rad") if k == 0 else rcval.run(deck(vr, True), name="mesh")
         r = rcval.Result(out)
         ft, vs, fn, fs, x = last(out)
         law, expect = mu(vs) * fn, mu(vr) * MR * G
@@ -124,7 +116,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck(CASES[0], True).write(os.path.join(HERE, "case1.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: {"case1.rad": deck(CASES[0], True)})

@@ -26,6 +26,7 @@ from netCDF4 import Dataset
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
+import laws  # noqa: E402
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
 
@@ -40,18 +41,9 @@ CASES = ((0.004, 0.0), (0.03, 0.0), (0.2, 0.0), (0.2, 3.0))
 T_END = 3.0
 
 
-def step5(x, x0, h0, x1, h1):
-    if x <= x0:
-        return h0
-    if x >= x1:
-        return h1
-    d = (x - x0) / (x1 - x0)
-    return h0 + (h1 - h0) * d**3 * (10 - 15 * d + 6 * d * d)
-
-
 def mu(v):
     """step5 friction (docs/theory.md 9.4): step5(v, -v_s, -mu_s, v_s, mu_s) below v_s, step5(v, v_s, mu_s, v_d, mu_d) beyond."""
-    return step5(v, -VS, -MUS, VS, MUS) if v < VS else step5(v, VS, MUS, VD, MUD)
+    return laws.step5_mu(v, MUS, VS, MUD, VD)
 
 
 def deck(vr, fmax):
@@ -83,7 +75,7 @@ def deck(vr, fmax):
 
 def main():
     for k, (vr, fmax) in enumerate(CASES):
-        out = rcval.run_file(os.path.join(HERE, f"case{k + 1}.rad"))
+        out = rcval.run_case(f"case{k + 1}.rad")
         r = rcval.Result(out)
         with Dataset(out) as nc:
             ff = np.array(nc["inter_force_friction"][-1, 0, :])
@@ -110,8 +102,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        for k, (vr, fmax) in enumerate(CASES):
-            deck(vr, fmax).write(os.path.join(HERE, f"case{k + 1}.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: {f"case{k + 1}.rad": deck(vr, fmax) for k, (vr, fmax) in enumerate(CASES)})

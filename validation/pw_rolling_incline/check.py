@@ -65,7 +65,7 @@ def main():
     for k, ratio in enumerate(CASES):
         _, th = deck(ratio)
         dirn = np.array([math.cos(th), 0.0, -math.sin(th)])   # downhill
-        out = rcval.run_file(os.path.join(HERE, f"case{k + 1}.rad"))
+        out = rcval.run_case(f"case{k + 1}.rad")
         r = rcval.Result(out)
         with Dataset(out) as nc:
             slip = np.array(nc["inter_slip_speed"][:, 0])
@@ -95,8 +95,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        for k, ratio in enumerate(CASES):
-            deck(ratio)[0].write(os.path.join(HERE, f"case{k + 1}.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: {f"case{k + 1}.rad": deck(ratio)[0] for k, ratio in enumerate(CASES)})

@@ -51,7 +51,7 @@ def deck():
 
 
 def main():
-    r, quat, omega = boxrest.load(rcval.run_file(os.path.join(HERE, "case.rad")))
+    r, quat, omega = boxrest.load(rcval.run_case())
     t1 = math.sqrt(2 * H0 / G)
     boxrest.check_first_contact("pw_seg_box_rest.first_contact", r, t1)
     fn = r.fn[-1, 0]
@@ -71,7 +71,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

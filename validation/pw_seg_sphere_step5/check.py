@@ -89,7 +89,7 @@ def main():
     # 3. incline (case.rad), rotations locked, v0 = 0.5 m/s down the slope
     th = math.atan(0.5)
     slide("incline", 0.5, 0.5, 0.5, 0.5, G * (math.sin(th) - MUD * math.cos(th)), "g (sin theta - mu_d cos theta)",
-          path=rcval.run_file(os.path.join(HERE, "case.rad")))
+          path=rcval.run_case())
     # 4. rolling with creep, rotations free, from rest
     r = rcval.Result(rcval.run(deck(0.5, 0.6, locked=False), name="roll"))
     xs, xu, vs, vu, vn = incline.along(r, 0.5, PHI)
@@ -110,7 +110,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck(0.5, 0.5, v0=0.5).write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: deck(0.5, 0.5, v0=0.5))

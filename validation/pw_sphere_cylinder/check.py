@@ -216,11 +216,6 @@ def hertz(m, v0):
     return dmax, 2.0 * dmax / v0 * math.sqrt(math.pi) * gamma(1.4) / gamma(0.9)
 
 
-def peak(v, k):
-    a, b, c = v[k - 1], v[k], v[k + 1]
-    return b + 0.125 * (a - c) ** 2 / (2 * b - a - c) if 2 * b - a - c != 0 else b
-
-
 def main():
     # 1. free-free impact on the lateral surface, power and TYPE6
     v0 = 0.5
@@ -228,12 +223,12 @@ def main():
     tc_ref, dmax_ref = math.pi * math.sqrt(mred / KLIN), v0 * math.sqrt(mred / KLIN)
     vs_ref, vc_ref = v0 * (MS - MC) / (MS + MC), 2 * MS * v0 / (MS + MC)
     for law in ("power", "type6"):
-        path = (rcval.run_file(os.path.join(HERE, "case.rad")) if law == "power"
+        path = (rcval.run_case() if law == "power"
                 else rcval.run(impact_deck(law), name=law))
         r, w = rcval.Result(path), omega(path)
         t1, t2 = r.events("contact_close")[0], r.contact_ends()[0]
         k = int(np.argmax(r.pen[:, 0]))
-        dm = peak(r.pen[:, 0], k)
+        dm = rcval.parabola_peak(r.pen[:, 0], k)
         e1, e2 = rcval.rel(t2 - t1, tc_ref), rcval.rel(dm, dmax_ref)
         rcval.check(f"pw_sphere_cylinder.lateral_{law}.contact_time", e1 < 1e-5,
                     f"{t2 - t1:.9e} s, pi sqrt(m_red / K) = {tc_ref:.9e} s, rel. error {e1:.2e} (< 1e-5)")
@@ -254,7 +249,7 @@ def main():
         r = rcval.Result(rcval.run(end_deck(ends, v0), name=name))
         t1, t2 = r.events("contact_close")[0], r.contact_ends()[0]
         k = int(np.argmax(r.pen[:, 0]))
-        dm = peak(r.pen[:, 0], k)
+        dm = rcval.parabola_peak(r.pen[:, 0], k)
         e1, e2 = rcval.rel(t2 - t1, tc_ref), rcval.rel(dm, dmax_ref)
         vz = r.vel[-1, 0, 2]
         e3 = abs(vz - v0) / v0 + float(np.max(np.abs(r.vel[-1, 0, :2]))) / v0
@@ -333,7 +328,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        impact_deck("power").write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: impact_deck("power"))

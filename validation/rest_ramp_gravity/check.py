@@ -64,7 +64,7 @@ def deck():
 
 
 def main():
-    r = rcval.Result(rcval.run_file(os.path.join(HERE, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     ev = list(zip(r.ev_t, r.ev_kind))
     ok = all(t == 0.0 and k == "contact_close" for t, k in ev) and len(ev) <= 1
     rcval.check("rest_ramp_gravity.events", ok,
@@ -100,7 +100,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

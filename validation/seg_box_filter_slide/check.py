@@ -127,7 +127,7 @@ def variant(name, nx, ny, r):
 def main():
     for name, nx, ny, tag in (("corners", 1, 1, None), ("meshed", 10, 6, "meshed")):
         try:
-            path = rcval.run_file(os.path.join(HERE, "case.rad")) if tag is None else \
+            path = rcval.run_case() if tag is None else \
                 rcval.run(deck(nx, ny), name=tag)
         except RuntimeError as err:
             rcval.check(f"seg_box_filter_slide.{name}.run", False, str(err))
@@ -137,7 +137,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -97,7 +97,7 @@ def deck(tilt=None):
 
 
 def main():
-    r, quat, omega = boxrest.load(rcval.run_file(os.path.join(HERE, "case.rad")))
+    r, quat, omega = boxrest.load(rcval.run_case())
     t1 = math.sqrt(2 * H0 / G)
     for b, (name, m) in enumerate((("brick", M_BRICK), ("shell", M_SHELL), ("brick_on_box", M_BRICK))):
         boxrest.check_first_contact(f"seg_box_rest.{name}.first_contact", r, t1, b + 1)
@@ -133,7 +133,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

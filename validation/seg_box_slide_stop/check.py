@@ -225,7 +225,7 @@ def main():
             ("meshed_floor", 25, 16, FLOOR, "meshed_floor")]
     for name, nx, ny, floor, tag in runs:
         try:
-            path = rcval.run_file(os.path.join(HERE, "case.rad")) if tag is None else \
+            path = rcval.run_case() if tag is None else \
                 rcval.run(deck(nx, ny, floor), name=tag)
         except RuntimeError as err:
             rcval.check(f"seg_box_slide_stop.{name}.run", False, str(err))
@@ -247,7 +247,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck(1, 1, None).write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: deck(1, 1, None))

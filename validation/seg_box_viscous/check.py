@@ -63,7 +63,7 @@ def reference(t):
 
 
 def main():
-    r = rcval.Result(rcval.run_file(os.path.join(HERE, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     x = r.pos[:, 0, 0] - r.pos[0, 0, 0]
     v = r.vel[:, 0, 0]
     xr, vr, ts, vs = reference(r.t)
@@ -90,7 +90,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -125,7 +125,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck(LEVELS[-1]).write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: deck(LEVELS[-1]))

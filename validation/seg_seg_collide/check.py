@@ -121,7 +121,7 @@ def momenta(path, sa, sb, ra):
 def main():
     # 1. small on large, central, elastic
     d, (sa, sb, ra, ca, cb, va, wa) = deck(1)
-    path = rcval.run_file(os.path.join(HERE, "case.rad"))
+    path = rcval.run_case()
     r = rcval.Result(path)
     ma, mb = mass(sa), mass(sb)
     v0 = va[2]
@@ -178,7 +178,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck(1)[0].write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: deck(1)[0])

@@ -91,7 +91,7 @@ def deck():
 
 
 def main():
-    path = rcval.run_file(os.path.join(HERE, "case.rad"))
+    path = rcval.run_case()
     r = rcval.Result(path)
     with Dataset(path) as nc:
         omega = np.array(nc["body_angular_velocity"][:])
@@ -123,7 +123,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -64,7 +64,7 @@ def main():
     tan_th = 0.5
     th, n, s, u = incline.frame(tan_th, PHI)
     a_ref = G * (math.sin(th) - MU * math.cos(th))
-    r = rcval.Result(rcval.run_file(os.path.join(HERE, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     xs, xu, vs, vu, vn = incline.along(r, tan_th, PHI)
     a, resid, sl = fit_acc(r, xs, 0.1)
     e = rcval.rel(a, a_ref)
@@ -127,7 +127,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck(0.5, 1.0).write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: deck(0.5, 1.0))

@@ -40,7 +40,7 @@ def deck():
 
 
 def main():
-    r = rcval.Result(rcval.run_file(os.path.join(HERE, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     sticks = r.events("fric_stick")
     if len(sticks) == 0:
         rcval.check("slide_stop_rest.stops", False, f"no fric_stick event up to {r.t[-1]:g} s; events {r.ev_kind[:10]}")
@@ -83,7 +83,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -11,6 +11,7 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 M, R, K, ZETA, V0, GAP0 = 1.0, 0.05, 1.0e6, 0.1, 1.0, 0.002
 C = 2.0 * ZETA * math.sqrt(K * M)
@@ -28,12 +29,7 @@ def reference():
 def deck(rtol=1e-6, atol_pos=1e-9, atol_vel=1e-6):
     d = Deck("linear spring-dashpot impact")
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear load curve k = 1e6 N/m")
-    d.nodes([(1, 0.0, 0.0, R + GAP0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="sphere 1 kg")
-    d.sphere(1, 1, (0.0, 0.0, R + GAP0), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
-    d.inivel(1, (0.0, 0.0, -V0), 1)
+    add_sphere_over_plane(d, M, R, R + GAP0, V0, title="sphere 1 kg")
     d.type6(1, 1, 2, 1, visc=C, title="spring-dashpot")
     d.run(0.01, 0.001)
     d.solver(rtol=rtol, atol_pos=atol_pos, atol_vel=atol_vel)
@@ -50,8 +46,7 @@ def measure(path):
 
 def main():
     e_ref, tc_ref = reference()
-    here = os.path.dirname(os.path.abspath(__file__))
-    e, tc = measure(rcval.run_file(os.path.join(here, "case.rad")))
+    e, tc = measure(rcval.run_case())
     rcval.check("spring_dashpot.restitution", rcval.rel(e, e_ref) < 1e-4,
                 f"e = {e:.9f}, closed form {e_ref:.9f}, rel. error {rcval.rel(e, e_ref):.2e} (< 1e-4)")
     rcval.check("spring_dashpot.contact_time", rcval.rel(tc, tc_ref) < 1e-4,
@@ -68,7 +63,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -47,7 +47,7 @@ def deck():
 
 
 def main():
-    r = rcval.Result(rcval.run_file(os.path.join(HERE, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     ids = list(r.inter_id)
     col = [ids.index(i + 1) for i in range(N)]  # interface i + 1: below sphere i + 1
     load = np.array([(N - i) * M * G for i in range(N)])  # interface i + 1 carries the N - i spheres above it
@@ -81,7 +81,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(HERE, "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -48,16 +48,6 @@ def reference(ncycle):
     return ev, t_slip, t_slip + t_stick, (xk - A, xk + A)
 
 
-def peak(x, sign):
-    """Extreme of the records x (sign +1: max, -1: min) refined by the
-    parabola through the three records around the extreme record."""
-    i = int(np.argmax(sign * x))
-    i = min(max(i, 1), len(x) - 2)
-    a, b, c = x[i - 1], x[i], x[i + 1]
-    den = a - 2 * b + c
-    return b - 0.125 * (c - a) ** 2 / den if den != 0 else b
-
-
 def deck(dtout=1e-3):
     d = Deck("exact stick-slip: block on a belt, spring to a fixed point, TYPE6 Istick 1, Fric_s 0.4, Fric 0.25")
     z0 = belt.add_block_on_belt(d, R, M, K, G, MBELT, V)
@@ -69,8 +59,7 @@ def deck(dtout=1e-3):
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     ev = [(t, k) for t, k in zip(r.ev_t, r.ev_kind) if k in ("fric_slip", "fric_stick")]
     ref, t_slip, period, (xmin, xmax) = reference(20)
     ref = [e for e in ref if e[0] < TEND]
@@ -103,7 +92,7 @@ def main():
                 f"(mu_s m g) = {f_st:.1e} (< 1e-6); sliding ({int(slid.sum())} records): max |F - mu_k m g| / (mu_k m g) "
                 f"= {f_sl:.1e} (< 1e-6)")
     c = (r.t >= sl[-2]) & (r.at_event == 0)
-    lo, hi = peak(x[c], -1), peak(x[c], 1)
+    lo, hi = rcval.refined_extreme(x[c], -1), rcval.refined_extreme(x[c], 1)
     rcval.check("stick_belt.extremes", abs(lo - xmin) < 1e-6 * xmax and abs(hi - xmax) < 1e-6 * xmax,
                 f"last cycle: x in [{lo:.10f}, {hi:.10f}] m (records every 1 ms, each extreme refined by the parabola "
                 f"through its three records), closed form [x_k - A, x_k + A] = [{xmin:.10f}, {xmax:.10f}]; errors "
@@ -113,7 +102,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -73,10 +73,9 @@ def stuck(name, r, tan_th, what):
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
     # 1. stuck, tan(theta) = 0.9 mu, 100 s (case.rad)
     tan_th = 0.9 * MU
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     stuck("stick_incline.stuck", r, tan_th, f"tan(theta) = 0.9 mu = {tan_th:g}")
 
     # 2. static coefficient: tan(theta) = 0.5 > Fric = 0.3 but < Fric_s = 0.6
@@ -165,7 +164,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck(0.9 * MU, 100.0, 1.0).write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: deck(0.9 * MU, 100.0, 1.0))

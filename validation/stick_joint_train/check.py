@@ -60,7 +60,6 @@ def load(path):
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
     # 1. rolling (case.rad): tan(theta) = 0.5, mu = 0.3. Rolling of A, both
     #    balls at the same speed: (2 m + J/R^2) a = 2 m g sin(theta); the
     #    friction on A, J a / R^2 = (1/3) m g sin(theta) up the slope, is
@@ -68,7 +67,7 @@ def main():
     #    down the slope with m g sin(theta) - m a = m g sin(theta) / 6.
     tan_th, mu = 0.5, 0.3
     th, n, s, u = incline.frame(tan_th, PHI)
-    r = load(rcval.run_file(os.path.join(here, "case.rad")))
+    r = load(rcval.run_case())
     a_ref = 2.0 * M * G * math.sin(th) / (2.0 * M + J / R**2)
     xa = (r.pos[:, 0, :] - r.pos[0, 0, :]) @ s
     xb = (r.pos[:, 1, :] - r.pos[0, 1, :]) @ s
@@ -124,7 +123,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck(0.5, 0.3, 1.0, 0.01).write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: deck(0.5, 0.3, 1.0, 0.01))

@@ -15,6 +15,7 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 M, R, K1, K2, V0, GAP0 = 1.0, 0.05, 1.0e5, 4.0e5, 1.0, 0.002
 TOL = 1e-6
@@ -38,12 +39,7 @@ def reference():
 def deck():
     d = Deck("bilinear hysteresis (Iform 2)")
     d.funct(1, [0.0, 1.0], [0.0, K1], title="linear load curve k1 = 1e5 N/m")
-    d.nodes([(1, 0.0, 0.0, R + GAP0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="sphere 1 kg")
-    d.sphere(1, 1, (0.0, 0.0, R + GAP0), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
-    d.inivel(1, (0.0, 0.0, -V0), 1)
+    add_sphere_over_plane(d, M, R, R + GAP0, V0, title="sphere 1 kg")
     d.type6(1, 1, 2, 1, iform=2, stiff=K2, title="bilinear, Stiff k2 = 4e5 N/m")
     d.run(0.02, 2e-4)
     d.solver(rtol=1e-10, atol_pos=1e-13, atol_vel=1e-10, atol_energy=1e-10)
@@ -52,8 +48,7 @@ def deck():
 
 def main():
     ref = reference()
-    here = os.path.dirname(os.path.abspath(__file__))
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     t_close = r.events("contact_close")
     t_turn = r.events("hyst_unloading")
     t_zero = r.events("hyst_unload_curve")
@@ -128,7 +123,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

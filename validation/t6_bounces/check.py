@@ -11,12 +11,13 @@ import os
 import sys
 
 import numpy as np
-from scipy.integrate import quad
 from scipy.optimize import brentq
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
+import laws  # noqa: E402
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 M, R, G, H = 1.0, 0.05, 9.81, 0.1
 KL, KU, PP, STIFF = 1.0e8, 1.2e8, 2.0e-4, 1.0e7   # F_L = KL P^1.5, F_U = KU (P - PP)^1.5
@@ -43,22 +44,17 @@ def f_unload(p):
     return np.interp(p, XU, YU)
 
 
-def integral(f, xs, a, b):
-    pts = [x for x in xs if a < x < b]
-    return quad(f, a, b, points=pts or None, limit=200, epsabs=0.0, epsrel=1e-13)[0]
-
-
 def impact(vin):
     """One impact at speed vin from P = 0, under gravity (energy balances)."""
     # loading: 1/2 m vin^2 + m g Pmax = integral_0^Pmax F_L
-    pmax = brentq(lambda p: integral(f_load, XL, 0.0, p) - M * G * p - 0.5 * M * vin**2, 1e-9, XL[-1],
+    pmax = brentq(lambda p: laws.curve_integral(f_load, XL, 0.0, p) - M * G * p - 0.5 * M * vin**2, 1e-9, XL[-1],
                   xtol=1e-16, rtol=1e-15)
     fmax = f_load(pmax)
     pstar = brentq(lambda p: fmax - STIFF * (pmax - p) - f_unload(p), pmax - fmax / STIFF, pmax,
                    xtol=1e-16, rtol=1e-15)
     fstar = f_unload(pstar)
-    back = 0.5 * (fmax + fstar) * (pmax - pstar) + integral(f_unload, XU, 0.0, pstar)
-    diss = integral(f_load, XL, 0.0, pmax) - back
+    back = 0.5 * (fmax + fstar) * (pmax - pstar) + laws.curve_integral(f_unload, XU, 0.0, pstar)
+    diss = laws.curve_integral(f_load, XL, 0.0, pmax) - back
     # force-free from P = PP (F_U = 0) to P = 0: 1/2 m vout^2 = back - m g pmax
     vout = math.sqrt(2.0 * (back - M * G * pmax) / M)
     return dict(vin=vin, pmax=pmax, fmax=fmax, pstar=pstar, fstar=fstar, diss=diss, vout=vout)
@@ -77,11 +73,7 @@ def deck():
     d.funct(1, XL, YL, title="load curve 1e8 P^1.5")
     d.funct(2, XU, YU, title="unload curve 1.2e8 (P - 2e-4)^1.5")
     z0 = R + H
-    d.nodes([(1, 0.0, 0.0, z0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="ball 1 kg")
-    d.sphere(1, 1, (0.0, 0.0, z0), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
+    add_sphere_over_plane(d, M, R, z0, title="ball 1 kg")
     d.grav(1, "Z", -G)
     d.type6(1, 1, 2, 1, iform=1, stiff=STIFF, fct_ul=2, title="elasto-plastic floor, Stiff 1e7 N/m")
     d.run(TEND, 1e-4)
@@ -91,8 +83,7 @@ def deck():
 
 def main():
     ref = reference()
-    here = os.path.dirname(os.path.abspath(__file__))
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     seq = ["contact_close", "hyst_unloading", "hyst_unload_curve", "contact_open", "contact_separate"]
     ok = r.ev_kind == seq * NB
     rcval.check("t6_bounces.events", ok,
@@ -158,7 +149,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -20,6 +20,7 @@ from scipy.integrate import solve_ivp
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 M, R, K, V0, GAP0 = 1.0, 0.05, 1.0e5, 1.0, 0.002
 ZETA = 0.1
@@ -87,12 +88,7 @@ def deck(use_dv=True, use_df=True):
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear load curve k = 1e5 N/m")
     d.funct(2, XV, YV, title="f_dv(u) = u |u|, u = v_n / Ascalev")
     d.funct(3, XF, YF, title="f_df(x) = 1 / (1 + x), x = F / Ascalef")
-    d.nodes([(1, 0.0, 0.0, R + GAP0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="sphere 1 kg")
-    d.sphere(1, 1, (0.0, 0.0, R + GAP0), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
-    d.inivel(1, (0.0, 0.0, -V0), 1)
+    add_sphere_over_plane(d, M, R, R + GAP0, V0, title="sphere 1 kg")
     d.type6(1, 1, 2, 1, visc=VISC, fct_dv=2 if use_dv else 0, fct_df=3 if use_df else 0,
             fscalev=FSCALEV if use_dv else None, ascalev=ASCALEV if use_dv else None,
             ascalef=ASCALEF if use_df else None, title="damped contact")
@@ -133,7 +129,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -11,12 +11,13 @@ import sys
 
 import numpy as np
 from netCDF4 import Dataset
-from scipy.integrate import quad
 from scipy.optimize import brentq
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
+import laws  # noqa: E402
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 M, R, G = 1.0, 0.05, 9.81
 K, ZETA, P0 = 1.0e5, 0.2, 1.0e-3             # Inacti: linear spring-dashpot
@@ -48,11 +49,7 @@ def deck_inacti(inacti, tend, dtout):
     d = Deck(f"sphere at rest with an initial penetration, Inacti {inacti}")
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear load curve k = 1e5 N/m")
     z0 = R - P0
-    d.nodes([(1, 0.0, 0.0, z0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="sphere 1 kg")
-    d.sphere(1, 1, (0.0, 0.0, z0), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
+    add_sphere_over_plane(d, M, R, z0, title="sphere 1 kg")
     d.grav(1, "Z", -G)
     d.type6(1, 1, 2, 1, visc=C, inacti=inacti, title="spring-dashpot, zeta 0.2")
     d.run(tend, dtout)
@@ -65,11 +62,7 @@ def deck_icor(icor, tend=0.02, dtout=5e-4):
     d.funct(1, XL, YL, title="load curve A P + B P^2")
     d.funct(2, XU, YU, title="unload curve C (P - PP)^2")
     z0 = R - P0I
-    d.nodes([(1, 0.0, 0.0, z0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="sphere 1 kg")
-    d.sphere(1, 1, (0.0, 0.0, z0), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
+    add_sphere_over_plane(d, M, R, z0, title="sphere 1 kg")
     d.type6(1, 1, 2, 1, iform=1, stiff=STIFF, fct_ul=2, icor=icor, title="elasto-plastic")
     # Icor 1 declares the initial penetration (a plastic overlap); Icor 0
     # starts the same overlap on the load curve, an overlap no option
@@ -88,25 +81,19 @@ def f_unload(p):
     return np.interp(p, XU, YU)
 
 
-def integral(f, xs, a, b):
-    pts = [x for x in xs if a < x < b]
-    return quad(f, a, b, points=pts or None, limit=200, epsabs=0.0, epsrel=1e-13)[0]
-
-
 def icor_reference():
     """Exit speeds: Icor 1 rides F_U from P0 down; Icor 0 leaves F_L(P0) along Stiff to F_U."""
-    v1 = math.sqrt(2.0 * integral(f_unload, XU, 0.0, P0I) / M)
+    v1 = math.sqrt(2.0 * laws.curve_integral(f_unload, XU, 0.0, P0I) / M)
     f0 = f_load(P0I)
     ps = brentq(lambda p: f0 - STIFF * (P0I - p) - f_unload(p), P0I - f0 / STIFF, P0I, xtol=1e-16, rtol=1e-15)
-    back = 0.5 * (f0 + f_unload(ps)) * (P0I - ps) + integral(f_unload, XU, 0.0, ps)
+    back = 0.5 * (f0 + f_unload(ps)) * (P0I - ps) + laws.curve_integral(f_unload, XU, 0.0, ps)
     return v1, math.sqrt(2.0 * back / M), ps
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
 
     # ---- Inacti 5: force-free start, settles at P0 + m g / k (case.rad)
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     rs = rcval.Result(rcval.run(deck_inacti(5, 10 * T1, T1)))
     a0 = rs.vel[1, 0, 2] / rs.t[1]
     p1, v1 = osc(rs.t[1], 0.0, 0.0)
@@ -167,7 +154,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck_inacti(5, TEND_SETTLE, 1e-3).write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: deck_inacti(5, TEND_SETTLE, 1e-3))

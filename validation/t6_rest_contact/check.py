@@ -19,6 +19,7 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 M, R, K, G = 1.0, 0.05, 1.0e5, 9.81
 C = 2 * 0.5 * math.sqrt(K * M)
@@ -27,11 +28,7 @@ C = 2 * 0.5 * math.sqrt(K * M)
 def deck_rest():
     d = Deck("sphere touching a plane at rest under gravity")
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e5 N/m")
-    d.nodes([(1, 0.0, 0.0, R)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3)
-    d.sphere(1, 1, (0.0, 0.0, R), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
+    add_sphere_over_plane(d, M, R, R)
     d.grav(1, "Z", -G)
     d.type6(1, 1, 2, 1, visc=C)
     d.run(0.3, 1e-3)
@@ -43,11 +40,7 @@ def deck_reload():
     d = Deck("Iform 2 drop: release and reloading")
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e5 N/m")
     z0 = R + 1e-3
-    d.nodes([(1, 0.0, 0.0, z0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3)
-    d.sphere(1, 1, (0.0, 0.0, z0), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
+    add_sphere_over_plane(d, M, R, z0)
     d.grav(1, "Z", -G)
     d.type6(1, 1, 2, 1, iform=2, stiff=4 * K, visc=0.2 * C)
     d.run(1.0, 1e-3)
@@ -56,8 +49,7 @@ def deck_reload():
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     closes = r.events("contact_close")
     ok = len(closes) > 0 and closes[0] == 0.0
     rcval.check("t6_rest_contact.closes_at_start", ok, f"first contact_close at t = {closes[0] if len(closes) else None} s (expected 0)")
@@ -80,7 +72,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck_rest().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck_rest)

@@ -17,6 +17,7 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 M, R, K, V0, GAP0 = 1.0, 0.05, 1.0e6, 1.0, 0.002
 E_ASKED = (0.05, 0.1, 0.135, 0.2, 0.3, 0.5, 0.7, 0.8, 0.95, 1.0)
@@ -26,12 +27,7 @@ TOL = 1e-6
 def deck(e):
     d = Deck(f"restitution asked: e = {e}")
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear load curve k = 1e6 N/m")
-    d.nodes([(1, 0.0, 0.0, R + GAP0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="sphere 1 kg")
-    d.sphere(1, 1, (0.0, 0.0, R + GAP0), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
-    d.inivel(1, (0.0, 0.0, -V0), 1)
+    add_sphere_over_plane(d, M, R, R + GAP0, V0, title="sphere 1 kg")
     d.type6(1, 1, 2, 1, e_target=e, title="restitution asked")
     d.run(0.01, 0.001)
     return d
@@ -62,7 +58,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck(0.3).write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: deck(0.3))

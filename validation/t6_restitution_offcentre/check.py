@@ -110,7 +110,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck(0.3).write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, lambda: deck(0.3))

@@ -18,6 +18,7 @@ from scipy.optimize import brentq
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 M, R, K, ZETA, V0, GAP0 = 1.0, 0.05, 1.0e5, 0.1, 1.0, 0.002
 C = 2.0 * ZETA * math.sqrt(K * M)
@@ -59,12 +60,7 @@ TSTOP = TSTART + 0.5 * reference()["t_release"]
 def deck(tstop=None):
     d = Deck("Tstart / Tstop" if tstop else "Tstart: pass through, then pushed back")
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear load curve k = 1e5 N/m")
-    d.nodes([(1, 0.0, 0.0, R + GAP0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="sphere 1 kg")
-    d.sphere(1, 1, (0.0, 0.0, R + GAP0), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
-    d.inivel(1, (0.0, 0.0, -V0), 1)
+    add_sphere_over_plane(d, M, R, R + GAP0, V0, title="sphere 1 kg")
     d.type6(1, 1, 2, 1, visc=C, tstart=TSTART, tstop=tstop, title="spring-dashpot, active from Tstart")
     # activated 3 mm deep, the contact releases its elastic energy k P0^2 / 2
     # (0.45 J): energy created by the deck's design, which the physics
@@ -76,8 +72,7 @@ def deck(tstop=None):
 
 def main():
     ref = reference()
-    here = os.path.dirname(os.path.abspath(__file__))
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
 
     # the physics checks report the energy the activation creates: the
     # mechanical energy jumps by k P0^2 / 2 at Tstart
@@ -156,7 +151,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

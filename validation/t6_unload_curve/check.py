@@ -13,12 +13,13 @@ import os
 import sys
 
 import numpy as np
-from scipy.integrate import quad
 from scipy.optimize import brentq
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
+import laws  # noqa: E402
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 M, R, V0, GAP0 = 1.0, 0.05, 1.0, 0.002
 # curves in scaled units: P = Ascalex x, F_L = Fscaleld f_ld(x), F_U = Fscaleul f_ul(x)
@@ -50,9 +51,8 @@ def f_unload(p):
 
 
 def integral(f, xs, a, b):
-    """quad of a piecewise-linear curve, breakpoints passed explicitly."""
-    pts = [ASCALEX * x for x in xs if a < ASCALEX * x < b]
-    return quad(f, a, b, points=pts or None, limit=200, epsabs=0.0, epsrel=1e-13)[0]
+    """quad of a piecewise-linear curve, breakpoints (scaled by Ascalex) passed explicitly."""
+    return laws.curve_integral(f, xs, a, b, scale=ASCALEX)
 
 
 def reference():
@@ -77,12 +77,7 @@ def deck():
     d = Deck("Iform 1, nonlinear load and unload curves")
     d.funct(1, XL, YL, title="load curve (A P + B P^2) / Fscaleld, P = Ascalex x")
     d.funct(2, XU, YU, title="unload curve C (P - PP)^2 / Fscaleul")
-    d.nodes([(1, 0.0, 0.0, R + GAP0)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="sphere 1 kg")
-    d.sphere(1, 1, (0.0, 0.0, R + GAP0), R)
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0))
-    d.grnod(1, [1])
-    d.inivel(1, (0.0, 0.0, -V0), 1)
+    add_sphere_over_plane(d, M, R, R + GAP0, V0, title="sphere 1 kg")
     d.type6(1, 1, 2, 1, iform=1, stiff=STIFF, fct_ul=2, ascalex=ASCALEX, fscaleld=FSCALELD,
             fscaleul=FSCALEUL, title="elasto-plastic, Stiff 5e5 N/m")
     d.run(0.02, 2e-4)
@@ -92,8 +87,7 @@ def deck():
 
 def main():
     ref = reference()
-    here = os.path.dirname(os.path.abspath(__file__))
-    r = rcval.Result(rcval.run_file(os.path.join(here, "case.rad")))
+    r = rcval.Result(rcval.run_case())
     ev = {k: r.events(k) for k in ("contact_close", "hyst_unloading", "hyst_unload_curve", "contact_open",
                                    "contact_separate")}
     ok = all(len(v) == 1 for v in ev.values()) and len(r.ev_t) == 5
@@ -162,7 +156,4 @@ def main():
 
 
 if __name__ == "__main__":
-    if "--write-case" in sys.argv:
-        deck().write(os.path.join(os.path.dirname(os.path.abspath(__file__)), "case.rad"))
-    else:
-        main()
+    rcval.entry(main, deck)

@@ -15,7 +15,7 @@ Several --ricochet programs are run interleaved (program A, program B, A, B,
 load. For each run: CPU time (user + system, of the child) and wall time of
 `ricochet run` (whole program), the events (the results file's events
 table), restarts, steps, Jacobians, and CPU time / events (the events' own
-share of it is in the profiles that bench/README.md quotes).
+share of it is in the profiles that bench/HISTORY.md quotes).
 """
 import argparse
 import math

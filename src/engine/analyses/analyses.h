@@ -16,7 +16,7 @@
 /* ---- Jacobian pattern (jacpattern.c) ---------------------------------- */
 rc_status rc_jac_build(rc_model *m, rc_error *err);
 /* The slots of the pattern that can be nonzero at (t, y) in the modes of d
- * (engine/jacpattern.c): keep[nnz] 1, or 0 where every element writing
+ * (engine/analyses/jacpattern.c): keep[nnz] 1, or 0 where every element writing
  * the slot is inactive (an open interface, the contact points of an
  * interface that is not closed, the rows of a point out of the contact
  * whose law gives them no value, a contact coupling with no face pushing);
@@ -45,7 +45,7 @@ int rc_inter_on_joint(const rc_model *m, int i);
 
 /* ---- the fast contact path (prepare.c) ---------------------------------- */
 /* The interfaces the fast path evaluates (m->inter_fast, allocated here;
- * engine/prepare.c, rule in engine/kernel_fast.inc); RC_ENOMEM when out of
+ * engine/analyses/prepare.c, rule in engine/kernels/kernel_fast.inc); RC_ENOMEM when out of
  * memory. */
 rc_status rc_fast_select(rc_model *m, rc_error *err);
 

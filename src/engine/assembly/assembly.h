@@ -120,7 +120,7 @@ enum {
     RC_E_KIN, RC_E_POT, RC_E_WORK, RC_E_DAMP, RC_E_FWORK, RC_E_STORED, RC_E_HYST, RC_E_FRIC,
     RC_E_CPL_ELASTIC, RC_E_CPL_DAMP, RC_E_CATENARY, RC_E_IMPOSED, RC_E_TOTAL, RC_NENERGY
 };
-/* (engine/energy.c) */
+/* (engine/assembly/energy.c) */
 void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, double e[RC_NENERGY]);
 /* Normal elastic energy stored in interface i (recoverable by unloading) [J]. */
 double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double t, const double *y);
@@ -139,14 +139,14 @@ double rc_inter_friction_stored(const rc_model *m, const rc_data *d, int i, doub
 void rc_jac_dense_block(const rc_model *m, int is_inter, int e, int mode, int branch, int track, int slip,
                         double t, const double *y, double *out);
 
-/* Geometry of interface i for the constraint (engine/assemble_jac.c). */
+/* Geometry of interface i for the constraint (engine/assembly/assemble_jac.c). */
 void rc_stk_geom_c(const rc_model *m, int i, const double _Complex *ya, const double _Complex *yb,
                    double _Complex *point, double _Complex *n, double _Complex *vrel, double _Complex *ddot);
 
 
 /* ---- couplings (coupling_rhs.inc, contact_rhs.inc, coupling_jac.inc;
  *      gravity of the lines in body.c) -------------------------------- */
-/* Gravity acting on the lines at time t [m/s^2] (engine/body.c). */
+/* Gravity acting on the lines at time t [m/s^2] (engine/assembly/body.c). */
 void rc_cpl_gravity(const rc_model *m, double t, double g[3]);
 /* Add the coupling forces to the accelerations and write the energy
  * rates. Returns 0, or 1 (recoverable) when a coupling fails. */
@@ -160,7 +160,7 @@ int rc_cpl_dense_block(const rc_model *m, const rc_data *d, int k, double t, con
 /* Add the coupling Jacobian blocks into the CSC values. */
 int rc_cpl_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val);
 /* Root functions of the contact couplings (rc_cpl_nroots of them), their
- * directions, the face modes at the start and at events (engine/contact_rhs.inc,
+ * directions, the face modes at the start and at events (engine/assembly/contact_rhs.inc,
  * included by assemble_rhs.c). rc_cpl_events returns the events written into
  * kinds[]/cpls[] (at most max_ev) and sets *restart when a mode changed. */
 void rc_cpl_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
@@ -171,7 +171,7 @@ int rc_cpl_events(const rc_model *m, rc_data *d, double t, const double *y, cons
 
 /* The stop force or moment of joint j at (t, y) in the modes of d: the
  * generalised force on the joint coordinate q (along +q on body a) [N] or
- * [N m]; 0 without stops (engine/coupling_rhs.inc). *q receives q [m] or
+ * [N m]; 0 without stops (engine/assembly/coupling_rhs.inc). *q receives q [m] or
  * [rad] (NaN without stops). */
 double rc_cpl_joint_stop(const rc_model *m, const rc_data *d, int j, const double *y, double *q);
 

@@ -37,7 +37,7 @@ typedef struct rc_data {
     double *inter_dref;  /* [ninter*3] sliding direction when a stateless friction
                             law saturated (reversal root) [-] */
     double *inter_fcstr; /* [ninter] the normal force a settled contact's
-                            constraint carries (IDA path, engine/stick.c;
+                            constraint carries (IDA path, engine/constraints/stick.c;
                             set at records, 0 otherwise) [N] */
     int *inter_settled;  /* [ninter] 1: a closed contact held in persistent contact
                             after its bounces accumulated (the release at zero
@@ -82,7 +82,7 @@ typedef struct rc_data {
 
 /* The reports of the last root evaluation (rc_data.repc): the state they
  * were evaluated at, and per interface its report and the modes it was
- * evaluated in (rc_assemble_roots writes it; engine/assemble_rhs.c). */
+ * evaluated in (rc_assemble_roots writes it; engine/assembly/assemble_rhs.c). */
 typedef struct rc_repcache {
     double *y;                   /* [ny] the state of the evaluation */
     int on;                      /* kept (set by the driver while it samples) */

@@ -10,7 +10,7 @@
 #include "model/joint.h"
 #include "engine/assembly/data.h"
 
-/* ---- evaluation (engine/joints.c) -----------------------------------
+/* ---- evaluation (engine/constraints/joints.c) -----------------------------------
  * The integrator's vector is Y = [y, Lambda, nu, W]: the model's states,
  * the integrated multipliers (nrows each; the residual holds their
  * derivatives, the reactions lambda = Lambda' and the projection
@@ -34,7 +34,7 @@ void rc_jnt_jacobian(const rc_model *m, const rc_jnt_work *w, double cj, const d
                      const double *jf, double *val);
 /* The slots of the extended pattern that can be nonzero: ext[rc_jnt_nnz]
  * from the model's active slots keep[m->nnz] (rc_jac_active), the
- * diagonal, and every joint's block (joints always act) (engine/joints.c). */
+ * diagonal, and every joint's block (joints always act) (engine/constraints/joints.c). */
 void rc_jnt_keep(const rc_model *m, const rc_jnt_work *w, const unsigned char *keep, unsigned char *ext);
 /* Absolute tolerance of extra k (0 <= k < rc_jnt_nextra) in its unit. */
 double rc_jnt_atol(const rc_model *m, const rc_jnt_work *w, int k);
@@ -64,7 +64,7 @@ void rc_jnt_report(const rc_model *m, int j, const double *Y, double force[3], d
 /* Work of the reactions (the last component of Y) [J]. */
 double rc_jnt_work_done(const rc_model *m, const double *Y);
 /* The values of every joint for a record (Y a record vector): force [3n], moment [3n], drifts
- * [n] and [n], the work [1] (engine/joints.c). */
+ * [n] and [n], the work [1] (engine/constraints/joints.c). */
 void rc_jnt_frame(const rc_model *m, const double *Y, double *force, double *moment, double *drift_pos,
                   double *drift_ang, double *work);
 

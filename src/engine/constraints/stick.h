@@ -66,7 +66,7 @@ void rc_stk_jacobian(const rc_model *m, const rc_data *d, const rc_stk_work *w, 
 /* The slots of the extended pattern that can be nonzero in d's modes:
  * ext[rc_stk_nnz] from the model's active slots keep[m->nnz]
  * (rc_jac_active), the diagonal, and the blocks of the constraints that act
- * (engine/stick.c). */
+ * (engine/constraints/stick.c). */
 void rc_stk_keep(const rc_model *m, const rc_data *d, const rc_stk_work *w, const unsigned char *keep,
                  unsigned char *ext);
 /* Absolute tolerance of extra k [N s]; IDA's id (0 for every Lambda). */

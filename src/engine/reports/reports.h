@@ -13,16 +13,16 @@
 #include "model/coupling_contact.h"
 #include "engine/assembly/data.h"
 
-void rc_cpl_print_summary(const rc_model *m, FILE *f); /* engine/report.c */
+void rc_cpl_print_summary(const rc_model *m, FILE *f); /* engine/reports/report.c */
 
 /* ---- output ------------------------------------------------------------ */
 /* Values per coupling at (t, y) for one output record, into buf [9 n]:
  * force [n], length [n], force on end 1 [3 n], force on end 2 [3 n],
  * lowest point of a catenary [n] (NaN for springs) (rc_cpl_report; NaN for
  * a catenary that cannot be solved). */
-void rc_cpl_frame(const rc_model *m, const rc_data *d, double t, const double *y, double *buf); /* engine/report.c */
+void rc_cpl_frame(const rc_model *m, const rc_data *d, double t, const double *y, double *buf); /* engine/reports/report.c */
 
-/* `ricochet check` lines of contact coupling k (engine/contact_report.c);
+/* `ricochet check` lines of contact coupling k (engine/reports/contact_report.c);
  * r: its report at t = 0 (NULL: none). */
 struct rc_cpl_report;
 void rc_cpl_contact_print(const rc_model *m, int k, const struct rc_cpl_report *r, FILE *f);

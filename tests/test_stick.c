@@ -18,7 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "engine/assembly/assembly.h"
-#include "engine/constraints/stick_joints.h"
+#include "engine/constraints/cset.h"
 
 /* Two free spheres, full rotations, on a fixed plane and on each other,
  * both interfaces with exact stick (the second with a static coefficient). */
@@ -59,7 +59,7 @@ typedef struct {
     const rc_model *m;
     rc_data *d;
     const rc_stk_work *w;
-    const rc_both *b;
+    const rc_cset *b;
 } fd_ctx;
 static void fd_residual(void *ctx, const double *Y, const double *Yp, double *r);
 static int fd_compare(void *ctx, int r);
@@ -164,15 +164,15 @@ static void test_stick_consistent_multipliers(void)
     rc_model_free(m);
 }
 
-/* Joints and exact stick together (engine/constraints/stick_joints.c): the two spheres
+/* Joints and exact stick together (engine/constraints/cset.c): the two spheres
  * also tied by a rod between their centres. */
 static const char *rod_tail = "/JOINT/DISTANCE/1\nrod\n1,2\n0.001,-0.002,0.0499\n0.013,0.021,0.1381\n/END\n";
 
-static void both_residual(const rc_model *m, rc_data *d, const rc_both *b, const double *Y, const double *Yp, double *r)
+static void both_residual(const rc_model *m, rc_data *d, const rc_cset *b, const double *Y, const double *Yp, double *r)
 {
     rc_assemble_rhs(m, d, 0.0, Y, r);
     for (int k = 0; k < m->ny; k++) r[k] = Yp[k] - r[k];
-    rc_both_residual(m, d, b, Y, Yp, r);
+    rc_cset_residual(m, d, b, Y, Yp, r);
 }
 
 static void fd_residual(void *ctx, const double *Y, const double *Yp, double *r)
@@ -202,14 +202,14 @@ static void test_stick_joints_jacobian_and_multipliers(void)
     if (!m) return;
     ENSURE(m->method == 2 && m->jnt && m->jnt->n == 1 && rc_stk_count(m) == 2);
     rc_data *d = rc_data_new(m);
-    rc_both *b = rc_both_new(m);
+    rc_cset *b = rc_cset_new(m);
     ENSURE(b != NULL);
     if (!b) return;
-    const int n = m->ny + rc_both_nextra(b);
+    const int n = m->ny + rc_cset_nextra(b);
     ENSURE(n == m->ny + 2 * m->jnt->nrows + 1 + 3 * rc_stk_slots(m));
     double *Y = calloc((size_t)n, sizeof *Y), *Yp = calloc((size_t)n, sizeof *Yp);
     double *r1 = calloc((size_t)n, sizeof *r1), *r2 = calloc((size_t)n, sizeof *r2), *Y2 = calloc((size_t)n, sizeof *Y2);
-    double *jf = calloc((size_t)m->nnz + 1, sizeof *jf), *val = calloc((size_t)rc_both_nnz(b), sizeof *val);
+    double *jf = calloc((size_t)m->nnz + 1, sizeof *jf), *val = calloc((size_t)rc_cset_nnz(b), sizeof *val);
     rc_initial_state(m, Y);
     perturb(m, Y, Yp, m->ny, 991u, 1e-3); /* moving bodies (the rod's row off zero) */
     for (int i = 0; i < m->ninter; i++) {
@@ -218,7 +218,7 @@ static void test_stick_joints_jacobian_and_multipliers(void)
     }
     /* 1. the consistent start: every residual row zero, the rates of the
      *    velocity rows of both sets zero along Y', multipliers of both */
-    ENSURE(rc_both_consistent(m, d, b, 0.0, Y, Yp) == 0);
+    ENSURE(rc_cset_consistent(m, d, b, 0.0, Y, Yp, 1) == 0);
     both_residual(m, d, b, Y, Yp, r1);
     const int nr = m->jnt->nrows, base = m->ny + 2 * nr + 1;
     double rmax = 0;
@@ -244,7 +244,7 @@ static void test_stick_joints_jacobian_and_multipliers(void)
      *    constraints */
     perturb(m, Y, Yp, n, 4243u, 0.01);
     const int64_t *cp, *ri;
-    rc_both_pattern(b, &cp, &ri);
+    rc_cset_pattern(b, &cp, &ri);
     double worst = 0;
     int outside = 0;
     fd_ctx fc = {m, d, NULL, b};
@@ -252,7 +252,7 @@ static void test_stick_joints_jacobian_and_multipliers(void)
     for (int pass = 0; pass < 2; pass++) {
         const double cj = pass ? 41.0 : 0.0;
         rc_assemble_jac(m, d, 0.0, Y, jf);
-        rc_both_jacobian(m, d, b, cj, Y, Yp, jf, val);
+        rc_cset_jacobian(m, d, b, cj, Y, Yp, jf, val);
         worst = fmax(worst, tu_dae_jac_fd_error(n, Y, Yp, cj, cp, ri, val, fd_residual, &fc, &o, &outside));
     }
     printf("    both sets: max scaled |J - FD| = %.1e beyond the rounding of the differences, %d FD entries outside "
@@ -266,7 +266,7 @@ static void test_stick_joints_jacobian_and_multipliers(void)
     free(r2);
     free(jf);
     free(val);
-    rc_both_free(b);
+    rc_cset_free(b);
     rc_data_free(d);
     rc_model_free(m);
 }

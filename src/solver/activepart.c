@@ -64,27 +64,21 @@ static int klu_setup_retry(SUNLinearSolver S, SUNMatrix A)
     return flag;
 }
 
-int rc_actpart_open(rc_actpart *ap, const rc_model *m, SUNLinearSolver LS, int on, const rc_stk_work *sw,
-                    const rc_jnt_work *jw)
+int rc_actpart_open(rc_actpart *ap, const rc_model *m, SUNLinearSolver LS, int on, const rc_cset *cs)
 {
     memset(ap, 0, sizeof *ap);
     ap->on = on && g_enabled;
-    ap->sw = sw;
+    ap->cs = cs;
     ap->n = m->ny;
     ap->nnz = m->nnz;
     ap->cp = m->jac_colptr;
     ap->ri = m->jac_rowind;
-    if (sw) {
-        ap->n = m->ny + rc_stk_nextra(sw);
-        ap->nnz = rc_stk_nnz(sw);
-        rc_stk_pattern(sw, &ap->cp, &ap->ri);
-    } else if (jw) {
-        ap->jw = jw;
-        ap->n = m->ny + rc_jnt_nextra(jw);
-        ap->nnz = rc_jnt_nnz(jw);
-        rc_jnt_pattern(jw, &ap->cp, &ap->ri);
+    if (cs) {
+        ap->n = m->ny + rc_cset_nextra(cs);
+        ap->nnz = rc_cset_nnz(cs);
+        rc_cset_pattern(cs, &ap->cp, &ap->ri);
     }
-    const int ext = sw || jw;
+    const int ext = cs != NULL;
     ap->nnz_max = ap->nnz;
     if (!ap->on) return 0;
     ap->nnz_max = 0;
@@ -166,12 +160,11 @@ int rc_actpart_follow(rc_actpart *ap, const rc_model *m, const rc_data *d, doubl
     if (!ap->on) return 0;
     /* the interfaces on and off as at the last follow (nothing else
      * decides): the same active slots, already in the part and in seen */
-    const int keyed = !g_probe && !ap->sw && !ap->jw && ap->akey && rc_jac_active_key(m, d, ap->akey_new);
+    const int keyed = !g_probe && !ap->cs && ap->akey && rc_jac_active_key(m, d, ap->akey_new);
     if (keyed && ap->built && ap->akey_ok && memcmp(ap->akey, ap->akey_new, (size_t)m->ninter) == 0) return 0;
     ap->akey_ok = 0;
     rc_jac_active(m, d, t, y, ap->need);
-    if (ap->sw) rc_stk_keep(m, d, ap->sw, ap->need, ap->xneed);
-    else if (ap->jw) rc_jnt_keep(m, ap->jw, ap->need, ap->xneed);
+    if (ap->cs) rc_cset_keep(m, d, ap->cs, ap->need, ap->xneed);
     const int64_t nz = ap->nnz, *map = ap->sp.map;
     if (ap->inpart) /* slots of states the integrator does not carry */
         for (int64_t k = 0; k < nz; k++) ap->xneed[k] &= ap->inpart[k];

@@ -22,9 +22,8 @@
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_matrix.h>
 
-#include "engine/constraints/joints.h"
 #include "model/model.h"
-#include "engine/constraints/stick.h"
+#include "engine/constraints/cset.h"
 #include "solver/subpat.h"
 
 typedef struct rc_actpart {
@@ -32,20 +31,19 @@ typedef struct rc_actpart {
     int built;           /* the part exists */
     int changed;         /* rebuilt since A's pattern was last written */
     /* the matrix's whole pattern: the model's, or IDA's extended one with
-     * exact stick or settled contacts (sw) */
+     * constraint sets (cs) */
     int n;
     int64_t nnz;
     const int64_t *cp, *ri;
-    const rc_stk_work *sw;
-    const rc_jnt_work *jw; /* IDA's joints: their extended pattern is the matrix's */
+    const rc_cset *cs;   /* IDA's constraint sets: their extended pattern is the matrix's */
     const int *idx;      /* [n] the states' indices in the integrator's vector, -1: left out
                             (rc_actpart_set_states); NULL: every state */
     unsigned char *inpart; /* [nnz] with idx: the slot's row and column are kept */
     rc_subpat sp;        /* the part */
     unsigned char *need; /* [m->nnz] the model's active slots at the last new Jacobian */
-    unsigned char *xneed; /* [nnz] the matrix's (need itself without sw, jw) */
+    unsigned char *xneed; /* [nnz] the matrix's (need itself without cs) */
     unsigned char *seen; /* [nnz] active at some new Jacobian since the last rebuild */
-    double *xval;        /* [nnz] with sw or jw: the extended matrix's values before the gather */
+    double *xval;        /* [nnz] with cs: the extended matrix's values before the gather */
     int64_t *src;        /* [sp.nnz] the whole pattern's slot of each of the part's entries */
     int64_t src_cap;     /* entries allocated in src */
     long nsym;           /* KLU symbolic analyses at the setups after a load (rc_actpart_analyses: all) */
@@ -59,11 +57,10 @@ typedef struct rc_actpart {
 } rc_actpart;
 
 /* Set up for model m and KLU solver LS (with on: LS's initialisation keeps
- * the analysis of an unchanged pattern); sw: IDA's exact-stick work, or jw:
- * its joints' work, whose extended pattern is the matrix's (both NULL: the
- * model's pattern; not both). 0, or -1 out of memory. */
-int rc_actpart_open(rc_actpart *ap, const rc_model *m, SUNLinearSolver LS, int on, const rc_stk_work *sw,
-                    const rc_jnt_work *jw);
+ * the analysis of an unchanged pattern); cs: IDA's constraint sets, whose
+ * extended pattern is the matrix's (NULL: the model's pattern; with on,
+ * they give their active slots: rc_cset_keeps). 0, or -1 out of memory. */
+int rc_actpart_open(rc_actpart *ap, const rc_model *m, SUNLinearSolver LS, int on, const rc_cset *cs);
 void rc_actpart_close(rc_actpart *ap);
 /* The integrator carries only the states idx[i] >= 0 (increasing; the
  * model's pattern only, no extended one): the part is on their rows and
@@ -76,7 +73,7 @@ int rc_actpart_follow(rc_actpart *ap, const rc_model *m, const rc_data *d, doubl
                       const double *jsave);
 /* The Newton matrix into A: a val + c I on the part (on the whole pattern
  * when off), val the values of the matrix's whole pattern (jsave, or with
- * sw ap->xval); A's pattern written when the part changed or `pattern` is
+ * cs ap->xval); A's pattern written when the part changed or `pattern` is
  * set (IDA zeroes A before its Jacobian callback), KLU told to analyse a
  * changed pattern. 0, or -1 (KLU re-initialisation failed). */
 int rc_actpart_load(rc_actpart *ap, const rc_model *m, SUNMatrix A, SUNLinearSolver LS, double a,

@@ -483,7 +483,7 @@ static rc_status cv_start(void *self, rc_error *err)
     if (!(c->LS = SUNLinSol_KLU(c->y, c->A, c->ctx))) return RC_SET(err, RC_ESOLVER, "SUNLinSol_KLU failed");
     /* the Newton matrix: the kept states' rows and columns, of them the
      * active part (activepart.h) */
-    const int ap = rc_actpart_open(&c->ap, m, c->LS, 1, NULL, NULL);
+    const int ap = rc_actpart_open(&c->ap, m, c->LS, 1, NULL);
     const int as = ap ? -1 : rc_actpart_set_states(&c->ap, c->red ? c->ridx : NULL);
     if (as == -1) return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     if (as) return RC_SET(err, RC_EINTERNAL, "the Newton matrix's pattern lacks a diagonal entry");

@@ -29,9 +29,10 @@
  * otherwise; the multipliers and the velocities of the sticking contacts
  * are made consistent at every (re)start (engine/constraints/stick.c), the slip roots
  * of the sticking contacts compare |lambda| (from Y') with the limit.
- * Joints and exact stick together (engine/constraints/stick_joints.c): Y = [y, the
- * joints' extras, the stick's Lambda], one constraint set whose
- * multipliers are made consistent together at every (re)start.
+ * Joints and exact stick together: Y = [y, the joints' extras, the
+ * stick's Lambda], whose multipliers are made consistent together at every
+ * (re)start. The callbacks see one constraint set whatever the model holds
+ * (engine/constraints/cset.h).
  */
 #include <float.h>
 #include <ida/ida.h>
@@ -55,21 +56,21 @@
 #include "solver/integrator.h"
 #include "solver/solver.h"
 #include "engine/assembly/assembly.h"
+#include "engine/constraints/cset.h"
 #include "engine/constraints/joints.h"
-#include "engine/constraints/stick_joints.h"
 
 typedef struct ida_ctx {
     const rc_model *m;
     rc_data *d;
     int n;          /* size of Y */
     double *jsave;  /* [nnz] Jacobian values of f on the model's pattern */
-    rc_jnt_work *jw; /* joints: pattern of the extended matrix, scratch (NULL: none) */
-    double *yrec;    /* joints: the record vector, Y with lambda = Lambda' (model/joint.h);
-                        exact stick: Y with the sticking contacts' F_t = their multipliers */
-    rc_stk_work *sw; /* exact stick: pattern of the extended matrix, scratch (NULL: none) */
-    rc_both *bw;     /* joints and exact stick together (jw, sw then its parts) */
+    rc_cset *cs;     /* the model's constraint sets (joints, exact stick) composed into one:
+                        the extended vector, pattern, residual, Jacobian (NULL: none) */
+    double *yrec;    /* with constraint sets: the record vector (joints: Y with lambda =
+                        Lambda'; exact stick: the sticking contacts' F_t = their multipliers) */
     volatile sig_atomic_t *stop;
     char msg[512];  /* IDA's last error message */
+    char integrator[320]; /* the integrator's line */
     /* the integrator and its vectors (ida_open, ida_start) */
     SUNContext ctx;
     void *ida;
@@ -98,14 +99,13 @@ static int cb_res(realtype t, N_Vector yy, N_Vector yp, N_Vector rr, void *ud)
     int st = rc_assemble_rhs(c->m, c->d, t, y, r);
     if (st) return st;
     for (int k = 0; k < c->m->ny; k++) r[k] = p[k] - r[k];
-    if (c->bw) rc_both_residual(c->m, c->d, c->bw, y, p, r);
-    else if (c->jw) rc_jnt_residual(c->m, c->jw, y, p, r);
-    else if (c->sw) rc_stk_residual(c->m, c->d, c->sw, y, p, r);
+    if (c->cs) rc_cset_residual(c->m, c->d, c->cs, y, p, r);
     return 0;
 }
 
 /* dF/dY + cj dF/dY' on the fixed pattern: cj I - J_f on the model's
- * block (J_f from the engine's Jacobian), the joints' exact blocks. */
+ * block (J_f from the engine's Jacobian), the constraint sets' exact
+ * blocks; on the active part of the pattern where it is on (activepart.h). */
 static int cb_jac(realtype t, realtype cj, N_Vector yy, N_Vector yp, N_Vector rr, SUNMatrix A, void *ud,
                   N_Vector t1, N_Vector t2, N_Vector t3)
 {
@@ -117,45 +117,23 @@ static int cb_jac(realtype t, realtype cj, N_Vector yy, N_Vector yp, N_Vector rr
     (void)t3;
     int st = rc_assemble_jac(m, c->d, t, N_VGetArrayPointer(yy), c->jsave);
     if (st) return st;
-    sunindextype *cp = SUNSparseMatrix_IndexPointers(A), *ri = SUNSparseMatrix_IndexValues(A);
-    double *a = SUNSparseMatrix_Data(A);
-    if (c->bw) {
-        const int64_t *pc, *pr;
-        rc_both_pattern(c->bw, &pc, &pr);
-        for (int k = 0; k <= c->n; k++) cp[k] = (sunindextype)pc[k];
-        for (int64_t k = 0; k < pc[c->n]; k++) ri[k] = (sunindextype)pr[k];
-        rc_both_jacobian(m, c->d, c->bw, cj, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), c->jsave, a);
-        return 0;
-    }
-    if (c->sw && c->ap.on) {
-        /* the extended matrix on its active part (activepart.h) */
-        rc_stk_jacobian(m, c->d, c->sw, cj, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), c->jsave, c->ap.xval);
-        if (rc_actpart_follow(&c->ap, m, c->d, t, N_VGetArrayPointer(yy), c->jsave)) return -1;
-        return rc_actpart_load(&c->ap, m, A, c->LS, 1.0, c->ap.xval, 0.0, 1) ? -1 : 0;
-    }
-    if (c->sw) {
-        const int64_t *pc, *pr;
-        rc_stk_pattern(c->sw, &pc, &pr);
-        for (int k = 0; k <= c->n; k++) cp[k] = (sunindextype)pc[k];
-        for (int64_t k = 0; k < pc[c->n]; k++) ri[k] = (sunindextype)pr[k];
-        rc_stk_jacobian(m, c->d, c->sw, cj, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), c->jsave, a);
-        return 0;
-    }
-    if (!c->jw) {
+    if (!c->cs) {
         /* IDA zeroed A (pattern included): cj I - J_f on the active part */
         if (rc_actpart_follow(&c->ap, m, c->d, t, N_VGetArrayPointer(yy), c->jsave)) return -1;
         return rc_actpart_load(&c->ap, m, A, c->LS, -1.0, c->jsave, cj, 1) ? -1 : 0;
     }
-    if (c->ap.on) { /* joints: the extended matrix on its active part (activepart.h) */
-        rc_jnt_jacobian(m, c->jw, cj, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), c->jsave, c->ap.xval);
+    if (c->ap.on) { /* the extended matrix on its active part */
+        rc_cset_jacobian(m, c->d, c->cs, cj, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), c->jsave, c->ap.xval);
         if (rc_actpart_follow(&c->ap, m, c->d, t, N_VGetArrayPointer(yy), c->jsave)) return -1;
         return rc_actpart_load(&c->ap, m, A, c->LS, 1.0, c->ap.xval, 0.0, 1) ? -1 : 0;
     }
+    sunindextype *cp = SUNSparseMatrix_IndexPointers(A), *ri = SUNSparseMatrix_IndexValues(A);
     const int64_t *pc, *pr;
-    rc_jnt_pattern(c->jw, &pc, &pr);
+    rc_cset_pattern(c->cs, &pc, &pr);
     for (int k = 0; k <= c->n; k++) cp[k] = (sunindextype)pc[k];
     for (int64_t k = 0; k < pc[c->n]; k++) ri[k] = (sunindextype)pr[k];
-    rc_jnt_jacobian(m, c->jw, cj, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), c->jsave, a);
+    rc_cset_jacobian(m, c->d, c->cs, cj, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), c->jsave,
+                     SUNSparseMatrix_Data(A));
     return 0;
 }
 
@@ -165,14 +143,14 @@ static int cb_root(realtype t, N_Vector yy, N_Vector yp, realtype *g, void *ud)
     c->d->n_root++;
     double *gf = rc_rootmap_full(&c->rm, g);
     rc_assemble_roots(c->m, c->d, t, N_VGetArrayPointer(yy), gf);
-    if (c->sw) rc_stk_roots(c->m, c->d, c->sw, t, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), gf);
+    if (c->cs) rc_cset_roots(c->m, c->d, c->cs, t, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), gf);
     rc_rootmap_keep(&c->rm, t, gf); /* for the physics checks */
     rc_rootmap_gather(&c->rm, g);
     return 0;
 }
 
-/* Error weights as in the CVODE backend (model.h ewt_rel); the multipliers
- * and the joint work by their own absolute tolerances (rc_jnt_atol). */
+/* Error weights as in the CVODE backend (model.h ewt_rel); the constraint
+ * sets' extras by their own absolute tolerances (rc_cset_atol). */
 static int cb_ewt(N_Vector yv, N_Vector wv, void *ud)
 {
     const ida_ctx *c = ud;
@@ -193,10 +171,7 @@ static int cb_ewt(N_Vector yv, N_Vector wv, void *ud)
                 s /= sqrt(sh > RC_EWT_SHARE_MIN ? sh : RC_EWT_SHARE_MIN);
             }
         } else {
-            s = (c->bw   ? rc_both_atol(m, c->bw, k - m->ny)
-                 : c->sw ? rc_stk_atol(c->sw, k - m->ny)
-                         : rc_jnt_atol(m, c->jw, k - m->ny)) +
-                m->rtol * ay;
+            s = rc_cset_atol(m, c->cs, k - m->ny) + m->rtol * ay;
         }
         if (!(s > 0)) return -1;
         w[k] = 1.0 / s;
@@ -219,19 +194,18 @@ static void add_stats(void *ida, rc_stats *s)
 }
 
 /* Consistent Y' (and multipliers) at (t, Y), then IDA restarted there.
- * Without joints Y' = f(t, y) exactly; with joints the multipliers follow
- * from the acceleration-level equations (rc_jnt_consistent). */
+ * Without constraint sets Y' = f(t, y) exactly; with them the velocities
+ * and multipliers of every set are made consistent (rc_cset_consistent:
+ * IDACalcIC cannot, the constraint rows hold no algebraic unknown). */
 static int restart(ida_ctx *c, void *ida, double t, N_Vector yy, N_Vector yp)
 {
     const rc_model *m = c->m;
     double *y = N_VGetArrayPointer(yy), *p = N_VGetArrayPointer(yp);
-    if (c->bw) return rc_both_consistent(m, c->d, c->bw, t, y, p) ? IDA_CONV_FAIL : IDAReInit(ida, t, yy, yp);
-    /* exact stick: the sticking velocities made exact, y' and the multipliers */
-    if (c->sw) return rc_stk_restart(m, c->d, c->sw, t, y, p) ? IDA_CONV_FAIL : IDAReInit(ida, t, yy, yp);
-    if (rc_assemble_rhs(m, c->d, t, y, p)) return IDA_FIRST_RES_FAIL;
-    /* joints: the multipliers and y' from the acceleration-level equations
-     * (IDACalcIC cannot: the constraint rows hold no algebraic unknown) */
-    if (c->jw && rc_jnt_consistent(m, c->jw, y, p)) return IDA_CONV_FAIL;
+    if (c->cs) {
+        const int st = rc_cset_consistent(m, c->d, c->cs, t, y, p, 0);
+        if (st) return st == -2 ? IDA_FIRST_RES_FAIL : IDA_CONV_FAIL;
+    } else if (rc_assemble_rhs(m, c->d, t, y, p))
+        return IDA_FIRST_RES_FAIL;
     return IDAReInit(ida, t, yy, yp);
 }
 
@@ -320,24 +294,10 @@ static rc_status ida_open(void *self, const rc_model *m, rc_data *d, const rc_ru
     c->n = m->ny;
     c->stop = opt ? opt->stop : NULL;
     if (rc_rootmap_init(&c->rm, m, opt)) return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
-    if (m->jnt && m->jnt->n > 0 && rc_stk_slots(m) > 0) {
-        /* both: Y = [y, the joints' extras, the stick's Lambda] */
-        if (!(c->bw = rc_both_new(m))) return RC_SET(err, RC_ENOMEM, "out of memory for the joints and exact stick");
-        c->jw = rc_both_jnt(c->bw);
-        c->sw = rc_both_stk(c->bw);
-        c->n = m->ny + rc_both_nextra(c->bw);
-        if (!(c->yrec = calloc((size_t)c->n, sizeof(double))))
-            return RC_SET(err, RC_ENOMEM, "out of memory for the joints and exact stick");
-    } else if (m->jnt && m->jnt->n > 0) {
-        if (!(c->jw = rc_jnt_work_new(m))) return RC_SET(err, RC_ENOMEM, "out of memory for the joints");
-        c->n = m->ny + rc_jnt_nextra(c->jw);
-        if (!(c->yrec = calloc((size_t)c->n, sizeof(double))))
-            return RC_SET(err, RC_ENOMEM, "out of memory for the joints");
-    } else if (rc_stk_slots(m) > 0) {
-        if (!(c->sw = rc_stk_work_new(m))) return RC_SET(err, RC_ENOMEM, "out of memory for exact stick");
-        c->n = m->ny + rc_stk_nextra(c->sw);
-        if (!(c->yrec = calloc((size_t)c->n, sizeof(double))))
-            return RC_SET(err, RC_ENOMEM, "out of memory for exact stick");
+    if (rc_cset_needed(m)) { /* Y = [y, the extras of each set] */
+        if (!(c->cs = rc_cset_new(m)) || !(c->yrec = calloc((size_t)m->ny + rc_cset_nextra(c->cs), sizeof(double))))
+            return RC_SET(err, RC_ENOMEM, "out of memory for the constraint sets (joints, exact stick)");
+        c->n = m->ny + rc_cset_nextra(c->cs);
     }
     if (SUNContext_Create(NULL, &c->ctx)) return RC_SET(err, RC_ESOLVER, "SUNContext_Create failed");
     c->yy = N_VNew_Serial(c->n, c->ctx);
@@ -350,24 +310,21 @@ static rc_status ida_open(void *self, const rc_model *m, rc_data *d, const rc_ru
     N_Vector vecs[] = {c->yy, c->yp, c->ytn, c->ypt, c->ysamp, c->idv};
     for (size_t k = 0; k < sizeof vecs / sizeof vecs[0]; k++) rc_nvector_fast(vecs[k]);
     c->jsave = calloc((size_t)m->nnz + 1, sizeof(double));
-    const int64_t nnz = c->bw ? rc_both_nnz(c->bw) : c->jw ? rc_jnt_nnz(c->jw) : c->sw ? rc_stk_nnz(c->sw) : m->nnz;
+    const int64_t nnz = c->cs ? rc_cset_nnz(c->cs) : m->nnz;
     c->A = SUNSparseMatrix(c->n, c->n, nnz, CSC_MAT, c->ctx);
     if (!c->yy || !c->yp || !c->ytn || !c->ypt || !c->ysamp || !c->idv || !c->jsave || !c->A)
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     if (!(c->LS = SUNLinSol_KLU(c->yy, c->A, c->ctx))) return RC_SET(err, RC_ESOLVER, "SUNLinSol_KLU failed");
-    /* joints and exact stick together: the whole extended pattern */
-    if (rc_actpart_open(&c->ap, m, c->LS, !c->bw, c->bw ? NULL : c->sw, c->bw ? NULL : c->jw))
+    /* a set that gives no active slots (a composition): the whole pattern */
+    if (rc_actpart_open(&c->ap, m, c->LS, !c->cs || rc_cset_keeps(c->cs), c->cs))
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     N_VConst(0.0, c->yy);
     *y = N_VGetArrayPointer(c->yy);
     *yp = N_VGetArrayPointer(c->yp);
     *n = c->n;
-    *integrator = c->bw ? "IDA BDF, Newton, KLU sparse direct, rootfinding; joints: stabilised index-2 "
-                                   "constraints (GGL); exact stick: velocity constraints"
-                  : c->jw ? "IDA BDF, Newton, KLU sparse direct, rootfinding; joints: stabilised index-2 "
-                          "constraints (GGL)"
-                  : c->sw ? "IDA BDF, Newton, KLU sparse direct, rootfinding; exact stick: velocity constraints"
-                          : "IDA BDF, Newton, KLU sparse direct, rootfinding";
+    snprintf(c->integrator, sizeof c->integrator, "IDA BDF, Newton, KLU sparse direct, rootfinding%s%s",
+             c->cs ? "; " : "", c->cs ? rc_cset_what(c->cs) : "");
+    *integrator = c->integrator;
     return RC_OK;
 }
 
@@ -383,18 +340,8 @@ static rc_status ida_start(void *self, rc_error *err)
     IDACHECK(IDASetErrHandlerFn(ida, cb_err, c), "IDASetErrHandlerFn");
     double *yd = N_VGetArrayPointer(c->yy), *p = N_VGetArrayPointer(c->yp);
     if (rc_assemble_rhs(m, d, t, yd, p)) return RC_SET(err, RC_ESOLVER, "the forces at t = 0 could not be evaluated");
-    if (c->bw) {
-        if (rc_both_consistent(m, d, c->bw, t, yd, p))
-            return RC_SET(err, RC_ESOLVER, "joints and exact stick at t = 0: the constraint rows are dependent (a "
-                                           "sticking contact holds a motion a joint already holds, or two sticking "
-                                           "contacts the same) or the forces could not be evaluated");
-    } else if (c->jw && (rc_jnt_project_velocities(m, c->jw, yd) || rc_assemble_rhs(m, d, t, yd, p) ||
-                  rc_jnt_consistent(m, c->jw, yd, p)))
-        return RC_SET(err, RC_ESOLVER, "the joints' constraint rows are dependent at t = 0 (the model's "
-                                       "compile checks them: an internal error)");
-    else if (c->sw && rc_stk_restart(m, d, c->sw, t, yd, p))
-        return RC_SET(err, RC_ESOLVER, "exact stick at t = 0: the sticking contacts' rows are dependent (two "
-                                       "sticking contacts hold the same motion) or the forces could not be evaluated");
+    if (c->cs && rc_cset_consistent(m, d, c->cs, t, yd, p, 1))
+        return RC_SET(err, RC_ESOLVER, "%s", rc_cset_start_failed(c->cs));
     IDACHECK(IDAInit(ida, cb_res, t, c->yy, c->yp), "IDAInit");
     IDACHECK(IDAWFtolerances(ida, cb_ewt), "IDAWFtolerances");
     IDACHECK(IDASetLinearSolver(ida, c->LS, c->A), "IDASetLinearSolver");
@@ -406,11 +353,9 @@ static rc_status ida_start(void *self, rc_error *err)
     IDACHECK(IDASetNonlinConvCoef(ida, 0.1), "IDASetNonlinConvCoef");
     if (m->hmax > 0) IDACHECK(IDASetMaxStep(ida, m->hmax), "IDASetMaxStep");
     if (m->h0 > 0) IDACHECK(IDASetInitStep(ida, m->h0), "IDASetInitStep");
-    if (c->jw || c->sw) {
+    if (c->cs) {
         /* the multipliers are algebraic, out of the error test */
-        if (c->bw) rc_both_id(m, c->bw, N_VGetArrayPointer(c->idv));
-        else if (c->jw) rc_jnt_id(m, c->jw, N_VGetArrayPointer(c->idv));
-        else rc_stk_id(m, c->sw, N_VGetArrayPointer(c->idv));
+        rc_cset_id(m, c->cs, N_VGetArrayPointer(c->idv));
         IDACHECK(IDASetId(ida, c->idv), "IDASetId");
         IDACHECK(IDASetSuppressAlg(ida, SUNTRUE), "IDASetSuppressAlg");
     }
@@ -493,31 +438,24 @@ static void ida_failure(void *self, int flag, double t, double tout, char *buf, 
 
 static const char *ida_last_msg(void *self) { return ((ida_ctx *)self)->msg; }
 
-/* A record of (Y, Y'): with joints, the record vector (the reactions
- * lambda = Lambda' in the slots of Lambda). */
+/* A record of (Y, Y'): with constraint sets, the record vector (the
+ * joints' reactions lambda = Lambda' in the slots of Lambda, the sticking
+ * contacts' F_t their multipliers' force). */
 static const double *ida_record_vector(void *self, double t, const double *Y, const double *Yp)
 {
     ida_ctx *c = self;
-    if (!c->jw && !c->sw) return Y;
-    memcpy(c->yrec, Y, (size_t)c->n * sizeof(double));
-    if (c->sw) {
-        rc_stk_sync(c->m, c->d, c->sw, Y, Yp, c->yrec);
-        rc_stk_fcstr(c->m, c->d, c->sw, t, Y, Yp);
-    }
-    if (c->jw) {
-        const int ny = c->m->ny, nr = c->m->jnt->nrows;
-        memcpy(c->yrec + ny, Yp + ny, (size_t)nr * sizeof(double));
-    }
+    if (!c->cs) return Y;
+    rc_cset_record(c->m, c->d, c->cs, t, Y, Yp, c->yrec);
     return c->yrec;
 }
 
-/* Exact stick: the sticking contacts' F_t take their multipliers' force
- * before the events (the slip direction, the event records). */
+/* The sets' state before the events of a root return (exact stick: the
+ * sticking contacts' F_t take their multipliers' force, for the slip
+ * direction and the event records). */
 static void ida_before_events(void *self)
 {
     ida_ctx *c = self;
-    if (c->sw) rc_stk_sync(c->m, c->d, c->sw, N_VGetArrayPointer(c->yy), N_VGetArrayPointer(c->yp),
-                           N_VGetArrayPointer(c->yy));
+    if (c->cs) rc_cset_before_events(c->m, c->d, c->cs, N_VGetArrayPointer(c->yy), N_VGetArrayPointer(c->yp));
 }
 
 /* Every mode change restarts IDA from the event state. */
@@ -544,11 +482,7 @@ static void ida_close(void *self)
     N_VDestroy(c->ysamp);
     N_VDestroy(c->idv);
     free(c->jsave);
-    if (c->bw) rc_both_free(c->bw); /* jw and sw are its parts */
-    else {
-        rc_jnt_work_free(c->jw);
-        rc_stk_work_free(c->sw);
-    }
+    rc_cset_free(c->cs);
     free(c->yrec);
     rc_actpart_close(&c->ap);
     rc_rootmap_free(&c->rm);

@@ -16,6 +16,7 @@
 #include "model/joint.h"
 #include "model/model.h"
 #include "engine/constraints/joints.h"
+#include "engine/constraints/cset.h"
 
 #define T double
 #define RE(x) (x)
@@ -540,3 +541,63 @@ void rc_jnt_frame(const rc_model *m, const double *Y, double *force, double *mom
         rc_jnt_report(m, j, Y, force + 3 * j, moment + 3 * j, drift_pos + j, drift_ang + j);
     *work = rc_jnt_work_done(m, Y);
 }
+
+/* ---- the joints as a constraint set (cset.h) -------------------------- */
+static int jset_needed(const rc_model *m) { return m->jnt && m->jnt->n > 0; }
+/* their extras start at ny: the first set of a composition */
+static void *jset_open(const rc_model *m, int base) { return base == m->ny ? rc_jnt_work_new(m) : NULL; }
+static void jset_close(void *w) { rc_jnt_work_free(w); }
+static int jset_nextra(const void *w) { return rc_jnt_nextra(w); }
+static int64_t jset_nnz(const void *w) { return rc_jnt_nnz(w); }
+static void jset_pattern(const void *w, const int64_t **colptr, const int64_t **rowind)
+{
+    rc_jnt_pattern(w, colptr, rowind);
+}
+static double jset_atol(const rc_model *m, const void *w, int k) { return rc_jnt_atol(m, w, k); }
+static void jset_id(const rc_model *m, const void *w, double *id) { rc_jnt_id(m, w, id); }
+static void jset_residual(const rc_model *m, const rc_data *d, const void *w, const double *Y, const double *Yp,
+                          double *r)
+{
+    (void)d;
+    rc_jnt_residual(m, w, Y, Yp, r);
+}
+static void jset_jacobian(const rc_model *m, const rc_data *d, const void *w, double cj, const double *Y,
+                          const double *Yp, const double *jf, double *val)
+{
+    (void)d;
+    rc_jnt_jacobian(m, w, cj, Y, Yp, jf, val);
+}
+static void jset_keep(const rc_model *m, const rc_data *d, const void *w, const unsigned char *keep,
+                      unsigned char *ext)
+{
+    (void)d;
+    rc_jnt_keep(m, w, keep, ext);
+}
+static int jset_project(const rc_model *m, rc_data *d, void *w, double *Y)
+{
+    (void)d;
+    return rc_jnt_project_velocities(m, w, Y);
+}
+static int jset_multipliers(const rc_model *m, void *w, double *Y, double *Yp)
+{
+    return rc_jnt_consistent(m, w, Y, Yp);
+}
+/* the reactions lambda = Lambda' in the slots of Lambda */
+static void jset_record(const rc_model *m, rc_data *d, void *w, double t, const double *Y, const double *Yp,
+                        double *Yrec)
+{
+    (void)d;
+    (void)w;
+    (void)t;
+    (void)Y;
+    memcpy(Yrec + m->ny, Yp + m->ny, (size_t)m->jnt->nrows * sizeof(double));
+}
+
+const rc_cset_ops rc_jnt_set_ops = {
+    .what = "joints: stabilised index-2 constraints (GGL)",
+    .start_failed = "the joints' constraint rows are dependent at t = 0 (the model's compile checks them: an "
+                    "internal error)",
+    .needed = jset_needed, .open = jset_open, .close = jset_close, .nextra = jset_nextra, .nnz = jset_nnz,
+    .pattern = jset_pattern, .atol = jset_atol, .id = jset_id, .residual = jset_residual, .jacobian = jset_jacobian,
+    .keep = jset_keep, .project = jset_project, .project_at_restart = 0, .multipliers = jset_multipliers,
+    .roots = NULL, .record = jset_record, .before_events = NULL};

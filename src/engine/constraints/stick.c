@@ -19,6 +19,7 @@
 #include "model/joint.h"
 #include "model/model.h"
 #include "engine/constraints/stick.h"
+#include "engine/constraints/cset.h"
 #include "engine/assembly/assembly.h"
 
 typedef double complex cx;
@@ -720,3 +721,69 @@ void rc_stk_fcstr(const rc_model *m, rc_data *d, rc_stk_work *w, double t, const
         if (act_of(m, d, w->k.inter[q]) & 4 && w->k.ron[SK_R * q + 2])
             d->inter_fcstr[w->k.inter[q]] = settled_force(w, solved, q, Yp);
 }
+
+/* ---- exact stick as a constraint set (cset.h) ------------------------- */
+static int sset_needed(const rc_model *m) { return rc_stk_slots(m) > 0; }
+static void *sset_open(const rc_model *m, int base) { return rc_stk_work_new_at(m, base); }
+static void sset_close(void *w) { rc_stk_work_free(w); }
+static int sset_nextra(const void *w) { return rc_stk_nextra(w); }
+static int64_t sset_nnz(const void *w) { return rc_stk_nnz(w); }
+static void sset_pattern(const void *w, const int64_t **colptr, const int64_t **rowind)
+{
+    rc_stk_pattern(w, colptr, rowind);
+}
+static double sset_atol(const rc_model *m, const void *w, int k)
+{
+    (void)m;
+    return rc_stk_atol(w, k);
+}
+static void sset_id(const rc_model *m, const void *w, double *id) { rc_stk_id(m, w, id); }
+static void sset_residual(const rc_model *m, const rc_data *d, const void *w, const double *Y, const double *Yp,
+                          double *r)
+{
+    rc_stk_residual(m, d, w, Y, Yp, r);
+}
+static void sset_jacobian(const rc_model *m, const rc_data *d, const void *w, double cj, const double *Y,
+                          const double *Yp, const double *jf, double *val)
+{
+    rc_stk_jacobian(m, d, w, cj, Y, Yp, jf, val);
+}
+static void sset_keep(const rc_model *m, const rc_data *d, const void *w, const unsigned char *keep,
+                      unsigned char *ext)
+{
+    rc_stk_keep(m, d, w, keep, ext);
+}
+/* the tangent bases of the stretch and the sticking velocities made exact */
+static int sset_project(const rc_model *m, rc_data *d, void *w, double *Y) { return rc_stk_prepare(m, d, w, Y); }
+static int sset_multipliers(const rc_model *m, void *w, double *Y, double *Yp)
+{
+    return rc_stk_consistent(m, w, Y, Yp);
+}
+static void sset_roots(const rc_model *m, rc_data *d, void *w, double t, const double *Y, const double *Yp,
+                       double *g)
+{
+    rc_stk_roots(m, d, w, t, Y, Yp, g);
+}
+/* the sticking contacts' F_t as their multipliers' force; the settled
+ * contacts' normal force into d */
+static void sset_record(const rc_model *m, rc_data *d, void *w, double t, const double *Y, const double *Yp,
+                        double *Yrec)
+{
+    rc_stk_sync(m, d, w, Y, Yp, Yrec);
+    rc_stk_fcstr(m, d, w, t, Y, Yp);
+}
+/* the sticking contacts' F_t as their multipliers' force before the events
+ * (the slip direction, the event records) */
+static void sset_before_events(const rc_model *m, const rc_data *d, void *w, double *Y, const double *Yp)
+{
+    rc_stk_sync(m, d, w, Y, Yp, Y);
+}
+
+const rc_cset_ops rc_stk_set_ops = {
+    .what = "exact stick: velocity constraints",
+    .start_failed = "exact stick at t = 0: the sticking contacts' rows are dependent (two sticking contacts hold "
+                    "the same motion) or the forces could not be evaluated",
+    .needed = sset_needed, .open = sset_open, .close = sset_close, .nextra = sset_nextra, .nnz = sset_nnz,
+    .pattern = sset_pattern, .atol = sset_atol, .id = sset_id, .residual = sset_residual, .jacobian = sset_jacobian,
+    .keep = sset_keep, .project = sset_project, .project_at_restart = 1, .multipliers = sset_multipliers,
+    .roots = sset_roots, .record = sset_record, .before_events = sset_before_events};

@@ -96,7 +96,7 @@ void rc_stk_roots(const rc_model *m, rc_data *d, rc_stk_work *w, double t, const
 void rc_stk_sync(const rc_model *m, const rc_data *d, const rc_stk_work *w, const double *Y, const double *Yp,
                  double *Yout);
 /* The pieces of the stick/slip decision (rc_stk_decide,
- * engine/constraints/stick_joints.h): 1 when interface i slides at (t, y)
+ * engine/constraints/cset.h): 1 when interface i slides at (t, y)
  * with a speed beyond the tolerances (e = -v_t / |v_t|), else 0; r receives
  * its report in d's modes. */
 int rc_stk_sliding(const rc_model *m, const rc_data *d, int i, double t, const double *y, rc_inter_report *r,

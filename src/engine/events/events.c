@@ -18,7 +18,7 @@
 #include "model/power.h"
 #include "model/segsurf.h"
 #include "engine/assembly/assembly.h"
-#include "engine/constraints/stick_joints.h"
+#include "engine/constraints/cset.h"
 
 /* Touch band: RC_TOUCH_ULPS ulps of the coordinates (model.h), at least
  * RC_TOUCH_REL of the penetration scale (docs/theory.md 5.1) [-]. */

@@ -17,6 +17,7 @@
 #include "model/model.h"
 #include "engine/constraints/joints.h"
 #include "engine/constraints/cset.h"
+#include "engine/constraints/xpattern.h"
 
 #define T double
 #define RE(x) (x)
@@ -41,7 +42,7 @@ struct rc_jnt_work {
     int64_t *colptr, *rowind;
     int64_t *mslot;       /* [m->nnz] slot of each entry of the model's pattern */
     int64_t *diag;        /* [n] slot of each diagonal entry */
-    int *badr;            /* [njoint + 1] offsets into bslot */
+    int64_t *badr;        /* [njoint + 1] offsets into bslot */
     int64_t *bslot;       /* dense block slots, row-major per joint */
     double *atol;         /* [2 nrows + 1] */
     double *A, *b;        /* consistent multipliers: [nrows^2], [nrows] */
@@ -72,9 +73,12 @@ static int block_cols(const rc_model *m, int j, int *cols)
     return n - 1; /* the W column is not one of the joint's (its row has W' only) */
 }
 
-static int64_t find_slot(const rc_jnt_work *w, int row, int col)
+/* Joint j's dense block for the extended pattern (xpattern.h). */
+static void xblock(const rc_model *m, const void *ctx, int j, int *rows, int *nrow, int *cols, int *ncol)
 {
-    return rc_csc_slot(w->colptr, w->rowind, row, col);
+    (void)ctx;
+    *nrow = block_rows(m, j, rows);
+    *ncol = block_cols(m, j, cols);
 }
 
 void rc_jnt_work_free(rc_jnt_work *w)
@@ -126,10 +130,6 @@ rc_jnt_work *rc_jnt_work_new(const rc_model *m)
     w->nrows = J->nrows;
     w->n = m->ny + 2 * J->nrows + 1;
     const int n = w->n;
-    /* entries: the model's, the diagonal, the joints' dense blocks */
-    int64_t cap = m->nnz + n;
-    for (int j = 0; j < J->n; j++) cap += (int64_t)JMAXB * JMAXB;
-    int64_t *key = malloc((size_t)cap * sizeof *key);
     w->badr = calloc((size_t)J->n + 1, sizeof *w->badr);
     w->atol = calloc(2 * (size_t)J->nrows + 1, sizeof *w->atol);
     w->A = calloc((size_t)J->nrows * (size_t)J->nrows + 1, sizeof *w->A);
@@ -139,41 +139,23 @@ rc_jnt_work *rc_jnt_work_new(const rc_model *m)
     w->z = calloc((size_t)m->ny + 1, sizeof *w->z);
     w->mslot = calloc((size_t)m->nnz + 1, sizeof *w->mslot);
     w->colptr = calloc((size_t)n + 1, sizeof *w->colptr);
-    if (!key || !w->badr || !w->atol || !w->A || !w->b || !w->perm || !w->diag || !w->z || !w->mslot || !w->colptr) {
-        free(key);
+    if (!w->badr || !w->atol || !w->A || !w->b || !w->perm || !w->diag || !w->z || !w->mslot || !w->colptr) {
         rc_jnt_work_free(w);
         return NULL;
     }
-    int64_t nk = 0;
-    for (int c = 0; c < m->ny; c++)
-        for (int64_t k = m->jac_colptr[c]; k < m->jac_colptr[c + 1]; k++) key[nk++] = (int64_t)c * n + m->jac_rowind[k];
-    for (int c = 0; c < n; c++) key[nk++] = (int64_t)c * n + c;
-    int nb = 0;
+    /* the joints' dense blocks, row-major one after the other */
+    int64_t nb = 0;
     for (int j = 0; j < J->n; j++) {
         int rows[JMAXB], cols[JMAXB];
-        const int nrw = block_rows(m, j, rows), ncl = block_cols(m, j, cols);
-        for (int r = 0; r < nrw; r++)
-            for (int c = 0; c < ncl; c++) key[nk++] = (int64_t)cols[c] * n + rows[r];
         w->badr[j] = nb;
-        nb += nrw * ncl;
+        nb += (int64_t)block_rows(m, j, rows) * block_cols(m, j, cols);
     }
     w->badr[J->n] = nb;
-    w->rowind = rc_csc_from_keys(key, nk, n, w->colptr, &w->nnz);
-    free(key);
     w->bslot = malloc(((size_t)nb + 1) * sizeof *w->bslot);
-    if (!w->rowind || !w->bslot) {
+    if (!w->bslot || !(w->rowind = rc_xpat_build(m, n, J->n, JMAXB, xblock, NULL, w->badr, w->colptr, &w->nnz,
+                                                 w->mslot, w->diag, w->bslot))) {
         rc_jnt_work_free(w);
         return NULL;
-    }
-    for (int c = 0; c < m->ny; c++)
-        for (int64_t k = m->jac_colptr[c]; k < m->jac_colptr[c + 1]; k++)
-            w->mslot[k] = find_slot(w, (int)m->jac_rowind[k], c);
-    for (int c = 0; c < n; c++) w->diag[c] = find_slot(w, c, c);
-    for (int j = 0; j < J->n; j++) {
-        int rows[JMAXB], cols[JMAXB];
-        const int nrw = block_rows(m, j, rows), ncl = block_cols(m, j, cols);
-        for (int r = 0; r < nrw; r++)
-            for (int c = 0; c < ncl; c++) w->bslot[w->badr[j] + r * ncl + c] = find_slot(w, rows[r], cols[c]);
     }
     extra_tolerances(m, w);
     return w;

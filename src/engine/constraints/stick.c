@@ -20,6 +20,7 @@
 #include "model/model.h"
 #include "engine/constraints/stick.h"
 #include "engine/constraints/cset.h"
+#include "engine/constraints/xpattern.h"
 #include "engine/assembly/assembly.h"
 
 typedef double complex cx;
@@ -351,10 +352,6 @@ static int core_init(const rc_model *m, sk_core *K)
 }
 
 /* ---- work, pattern ----------------------------------------------------- */
-static int64_t find_slot(const rc_stk_work *w, int row, int col)
-{
-    return rc_csc_slot(w->colptr, w->rowind, row, col);
-}
 
 /* The rows (= columns) of slot q's dense block: its free bodies' states,
  * then its two rows (Lambda columns). */
@@ -366,6 +363,13 @@ static int block_idx(const rc_model *m, const rc_stk_work *w, int q, int *idx)
     for (int k = 0; ab >= 0 && k < RC_NB; k++) idx[n++] = ab + k;
     for (int k = 0; k < SK_R; k++) idx[n++] = w->base + SK_R * q + k;
     return n;
+}
+
+/* Slot q's dense block for the extended pattern (xpattern.h). */
+static void xblock(const rc_model *m, const void *ctx, int q, int *rows, int *nrow, int *cols, int *ncol)
+{
+    *nrow = *ncol = block_idx(m, ctx, q, rows);
+    for (int k = 0; k < *nrow; k++) cols[k] = rows[k];
 }
 
 void rc_stk_work_free(rc_stk_work *w)
@@ -389,44 +393,27 @@ rc_stk_work *rc_stk_work_new_at(const rc_model *m, int base)
     }
     w->base = base;
     const int ns = w->k.ns, n = w->n = base + SK_R * ns;
-    const int64_t cap = m->nnz + n + (int64_t)ns * SK_MAXB * SK_MAXB;
-    int64_t *key = malloc((size_t)cap * sizeof *key);
     w->atol = calloc(SK_R * (size_t)ns + 1, sizeof *w->atol);
     w->f = calloc((size_t)m->ny + 1, sizeof *w->f);
     w->diag = calloc((size_t)n, sizeof *w->diag);
     w->mslot = calloc((size_t)m->nnz + 1, sizeof *w->mslot);
     w->colptr = calloc((size_t)n + 1, sizeof *w->colptr);
     w->bslot = malloc(((size_t)ns * SK_MAXB * SK_MAXB + 1) * sizeof *w->bslot);
-    if (!key || !w->atol || !w->f || !w->diag || !w->mslot || !w->colptr || !w->bslot) {
-        free(key);
+    int64_t *badr = malloc(((size_t)ns + 1) * sizeof *badr);
+    if (!w->atol || !w->f || !w->diag || !w->mslot || !w->colptr || !w->bslot || !badr) {
+        free(badr);
         rc_stk_work_free(w);
         return NULL;
     }
-    int64_t nk = 0;
-    for (int c = 0; c < m->ny; c++)
-        for (int64_t k = m->jac_colptr[c]; k < m->jac_colptr[c + 1]; k++) key[nk++] = (int64_t)c * n + m->jac_rowind[k];
-    for (int c = 0; c < n; c++) key[nk++] = (int64_t)c * n + c;
-    for (int q = 0; q < ns; q++) {
-        int idx[SK_MAXB];
-        const int nb = block_idx(m, w, q, idx);
-        for (int r = 0; r < nb; r++)
-            for (int c = 0; c < nb; c++) key[nk++] = (int64_t)idx[c] * n + idx[r];
-    }
-    w->rowind = rc_csc_from_keys(key, nk, n, w->colptr, &w->nnz);
-    free(key);
+    /* slot q's block (its bodies' states and its rows, square) at q SK_MAXB^2 */
+    for (int q = 0; q <= ns; q++) badr[q] = (int64_t)q * SK_MAXB * SK_MAXB;
+    w->rowind = rc_xpat_build(m, n, ns, SK_MAXB, xblock, w, badr, w->colptr, &w->nnz, w->mslot, w->diag, w->bslot);
+    free(badr);
     if (!w->rowind) {
         rc_stk_work_free(w);
         return NULL;
     }
-    for (int c = 0; c < m->ny; c++)
-        for (int64_t k = m->jac_colptr[c]; k < m->jac_colptr[c + 1]; k++)
-            w->mslot[k] = find_slot(w, (int)m->jac_rowind[k], c);
-    for (int c = 0; c < n; c++) w->diag[c] = find_slot(w, c, c);
     for (int q = 0; q < ns; q++) {
-        int idx[SK_MAXB];
-        const int nb = block_idx(m, w, q, idx);
-        for (int r = 0; r < nb; r++)
-            for (int c = 0; c < nb; c++) w->bslot[(int64_t)q * SK_MAXB * SK_MAXB + r * nb + c] = find_slot(w, idx[r], idx[c]);
         /* Lambda [N s]: the impulse that changes the velocity of the
          * lightest free body by its tolerance (in Newton's test only) */
         const int i = w->k.inter[q], bs[2] = {m->inter_ba[i], m->inter_bb[i]};

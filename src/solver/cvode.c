@@ -47,6 +47,7 @@
 #include "solver/impacts.h"
 #include "solver/nvfast.h"
 #include "solver/solver.h"
+#include "solver/common.h"
 #include "solver/integrator.h"
 #include "engine/assembly/assembly.h"
 
@@ -206,29 +207,15 @@ static int cb_root(realtype t, N_Vector y, realtype *g, void *ud)
     return 0;
 }
 
-/* Error weights with an absolute part only where the model asks for it
- * (model.h ewt_rel): positions and rotations under derived tolerances are
- * weighed against the contact scales, not against centre coordinates; a
- * floor of 64 ulps of the value keeps a far-away coordinate testable. */
+/* Error weights: the rule every backend shares (common.h rc_bk_state_tol),
+ * on the states the integrator carries. */
 static int cb_ewt(N_Vector yv, N_Vector wv, void *ud)
 {
     const run_ctx *c = ud;
-    const rc_model *m = c->m;
     const double *y = N_VGetArrayPointer(yv);
     double *w = N_VGetArrayPointer(wv);
     for (int j = 0; j < c->nr; j++) {
-        const int k = c->kidx[j];
-        const double ay = fabs(y[j]);
-        const int rel = !m->ewt_rel || m->ewt_rel[k];
-        double s = m->atol[k] + (rel ? m->rtol * ay : 0.0);
-        if (!rel) {
-            const double fl = 64.0 * DBL_EPSILON * ay; /* fmax(s, fl) without the libm call */
-            if (fl > s) s = fl;
-        }
-        if (m->state_pt[k] >= 0) { /* a contact point's state: at its share (RC_EWT_SHARE_MIN) */
-            const double sh = c->d->pt_share[m->state_pt[k]];
-            s /= sqrt(sh > RC_EWT_SHARE_MIN ? sh : RC_EWT_SHARE_MIN);
-        }
+        const double s = rc_bk_state_tol(c->m, c->d, c->kidx[j], y[j]);
         if (!(s > 0)) return -1;
         w[j] = 1.0 / s;
     }
@@ -323,59 +310,27 @@ static void failure_advice(const rc_model *m, const rc_data *d, void *cv, int fl
     /* the element: largest |local error| x weight (the error test's measure) */
     char elem[200] = "";
     if (CVodeGetEstLocalErrors(cv, tmp1) == CV_SUCCESS && CVodeGetErrWeights(cv, tmp2) == CV_SUCCESS) {
-        const double *e = N_VGetArrayPointer(tmp1), *w = N_VGetArrayPointer(tmp2);
-        int imax = -1;
-        double vmax = 0.0;
-        for (int i = 0; i < (int)N_VGetLength(tmp1); i++) {
-            const double v = fabs(e[i] * w[i]);
-            if (v > vmax || (isnan(v) && imax < 0)) {
-                vmax = v;
-                imax = i;
-            }
-        }
+        const int imax = rc_bk_worst_error(N_VGetArrayPointer(tmp1), N_VGetArrayPointer(tmp2),
+                                           (int)N_VGetLength(tmp1), 0, 0);
         if (imax >= 0) rc_state_name(m, kidx[imax], elem, sizeof elem);
     }
     char *fname = CVodeGetReturnFlagName(flag); /* malloc'ed by CVODE */
-    const char *advice;
+    rc_fail_kind kind = RC_FAIL_OTHER;
     switch (flag) {
-    case CV_TOO_MUCH_WORK:
-        advice = "the run took /SOLVER Max_steps steps without reaching the next output time: raise Max_steps, "
-                 "or, when the steps are tiny, look at the element named (a very stiff, lightly damped law, or "
-                 "events in quick succession) and loosen Rtol/Atol";
-        break;
-    case CV_TOO_MUCH_ACC:
-        advice = "the tolerances ask for more than double precision gives here: raise /SOLVER Rtol (at least "
-                 "1e-13) or the absolute tolerance of the quantity named";
-        break;
-    case CV_ERR_FAILURE:
-        advice = "the error test kept failing as the step shrank: the quantity named changes faster than any "
-                 "step can follow (a jump in a /FUNCT curve, a law with a kink, or a stiffness too high for its "
-                 "absolute tolerance): smooth the curve, check Stiff and the scale factors of that element, or "
-                 "loosen its absolute tolerance in /SOLVER";
-        break;
+    case CV_TOO_MUCH_WORK: kind = RC_FAIL_MAX_STEPS; break;
+    case CV_TOO_MUCH_ACC: kind = RC_FAIL_ACCURACY; break;
+    case CV_ERR_FAILURE: kind = RC_FAIL_ERROR_TEST; break;
     case CV_CONV_FAILURE:
     case CV_LSETUP_FAIL:
-    case CV_LSOLVE_FAIL:
-        advice = "Newton's iteration did not converge even at small steps: the force of the element named "
-                 "varies faster than its Jacobian says (a kink or jump in a /FUNCT curve), or a body has "
-                 "almost no mass or inertia for the forces on it: check that element's law and the masses, "
-                 "or bound the step with /SOLVER Hmax";
-        break;
+    case CV_LSOLVE_FAIL: kind = RC_FAIL_NEWTON; break;
     case CV_RHSFUNC_FAIL:
     case CV_REPTD_RHSFUNC_ERR:
     case CV_UNREC_RHSFUNC_ERR:
-    case CV_FIRST_RHSFUNC_ERR:
-        advice = "the forces could not be evaluated (a penetration or speed outside the range where the law "
-                 "is finite): extend the /FUNCT curves of that element, lower its scale factors, or bound the "
-                 "step with /SOLVER Hmax";
-        break;
-    case CV_RTFUNC_FAIL:
-        advice = "the event functions could not be evaluated: an internal error, please report the case";
-        break;
-    default:
-        advice = "see the SUNDIALS CVODE documentation of this flag";
-        break;
+    case CV_FIRST_RHSFUNC_ERR: kind = RC_FAIL_FORCES; break;
+    case CV_RTFUNC_FAIL: kind = RC_FAIL_ROOTS; break;
+    default: break;
     }
+    const char *advice = rc_bk_advice(kind, m);
     failure_message(m, d, "CVODE", t, h, tout, fname, cvmsg, elem, advice, buf, n);
     free(fname);
 }

@@ -53,6 +53,7 @@
 #include "solver/activepart.h"
 #include "solver/impacts.h"
 #include "solver/nvfast.h"
+#include "solver/common.h"
 #include "solver/integrator.h"
 #include "solver/solver.h"
 #include "engine/assembly/assembly.h"
@@ -149,8 +150,9 @@ static int cb_root(realtype t, N_Vector yy, N_Vector yp, realtype *g, void *ud)
     return 0;
 }
 
-/* Error weights as in the CVODE backend (model.h ewt_rel); the constraint
- * sets' extras by their own absolute tolerances (rc_cset_atol). */
+/* Error weights: the model's states by the rule every backend shares
+ * (common.h rc_bk_state_tol), the constraint sets' extras by their own
+ * absolute tolerances (rc_cset_atol). */
 static int cb_ewt(N_Vector yv, N_Vector wv, void *ud)
 {
     const ida_ctx *c = ud;
@@ -158,21 +160,8 @@ static int cb_ewt(N_Vector yv, N_Vector wv, void *ud)
     const double *y = N_VGetArrayPointer(yv);
     double *w = N_VGetArrayPointer(wv);
     for (int k = 0; k < c->n; k++) {
-        const double ay = fabs(y[k]);
-        double s;
-        if (k < m->ny) {
-            s = m->atol[k] + (!m->ewt_rel || m->ewt_rel[k] ? m->rtol * ay : 0.0);
-            if (m->ewt_rel && !m->ewt_rel[k]) {
-                const double fl = 64.0 * DBL_EPSILON * ay; /* fmax(s, fl) without the libm call */
-                if (fl > s) s = fl;
-            }
-            if (m->state_pt[k] >= 0) { /* a contact point's state: at its share (RC_EWT_SHARE_MIN) */
-                const double sh = c->d->pt_share[m->state_pt[k]];
-                s /= sqrt(sh > RC_EWT_SHARE_MIN ? sh : RC_EWT_SHARE_MIN);
-            }
-        } else {
-            s = rc_cset_atol(m, c->cs, k - m->ny) + m->rtol * ay;
-        }
+        const double s = k < m->ny ? rc_bk_state_tol(m, c->d, k, y[k])
+                                   : rc_cset_atol(m, c->cs, k - m->ny) + m->rtol * fabs(y[k]);
         if (!(s > 0)) return -1;
         w[k] = 1.0 / s;
     }
@@ -217,57 +206,30 @@ static void failure_advice(const rc_model *m, const rc_data *d, void *ida, int f
     IDAGetCurrentStep(ida, &h);
     char elem[200] = "";
     if (IDAGetEstLocalErrors(ida, tmp1) == IDA_SUCCESS && IDAGetErrWeights(ida, tmp2) == IDA_SUCCESS) {
-        const double *e = N_VGetArrayPointer(tmp1), *w = N_VGetArrayPointer(tmp2);
-        int imax = -1;
-        double vmax = 0.0;
         /* the components in the error test: not the multipliers lambda */
         const int len = (int)N_VGetLength(tmp1), nr = m->jnt ? m->jnt->nrows : len - m->ny;
-        for (int i = 0; i < len; i++) {
-            if (i >= m->ny && i < m->ny + nr) continue;
-            const double v = fabs(e[i] * w[i]);
-            if (v > vmax || (isnan(v) && imax < 0)) {
-                vmax = v;
-                imax = i;
-            }
-        }
+        const int imax = rc_bk_worst_error(N_VGetArrayPointer(tmp1), N_VGetArrayPointer(tmp2), len, m->ny, m->ny + nr);
         if (imax >= 0 && imax < m->ny) rc_state_name(m, imax, elem, sizeof elem);
         else if (imax >= 0 && m->jnt && imax - m->ny < 2 * m->jnt->nrows + 1) rc_jnt_extra_name(m, imax - m->ny, elem, sizeof elem);
     }
     char *fname = IDAGetReturnFlagName(flag);
-    const char *advice;
+    rc_fail_kind kind = RC_FAIL_OTHER;
     switch (flag) {
-    case IDA_TOO_MUCH_WORK:
-        advice = "the run took /SOLVER Max_steps steps without reaching the next output time: raise Max_steps, "
-                 "or look at the element named and loosen Rtol/Atol";
-        break;
-    case IDA_TOO_MUCH_ACC:
-        advice = "the tolerances ask for more than double precision gives here: raise /SOLVER Rtol";
-        break;
-    case IDA_ERR_FAIL:
-        advice = "the error test kept failing as the step shrank: the quantity named changes faster than any "
-                 "step can follow (a jump in a /FUNCT curve, a law with a kink, a stiffness too high for its "
-                 "absolute tolerance)";
-        break;
+    case IDA_TOO_MUCH_WORK: kind = RC_FAIL_MAX_STEPS; break;
+    case IDA_TOO_MUCH_ACC: kind = RC_FAIL_ACCURACY; break;
+    case IDA_ERR_FAIL: kind = RC_FAIL_ERROR_TEST; break;
     case IDA_CONV_FAIL:
     case IDA_LSETUP_FAIL:
     case IDA_LSOLVE_FAIL:
     case IDA_NO_RECOVERY:
-    case IDA_LINESEARCH_FAIL:
-        advice = "Newton's iteration did not converge: a force varies faster than its Jacobian says, a body "
-                 "has almost no mass or inertia, or the joints constrain a body twice (redundant joints make "
-                 "the constraint rows dependent; so does a sticking exact-stick contact that holds a motion "
-                 "a joint already holds): check the joints and the masses, or bound the step with /SOLVER Hmax";
-        break;
+    case IDA_LINESEARCH_FAIL: kind = RC_FAIL_NEWTON; break;
     case IDA_RES_FAIL:
     case IDA_REP_RES_ERR:
-    case IDA_FIRST_RES_FAIL:
-        advice = "the forces could not be evaluated (a penetration or speed outside the range where the law "
-                 "is finite): extend the /FUNCT curves of that element or bound the step with /SOLVER Hmax";
-        break;
-    default:
-        advice = "see the SUNDIALS IDA documentation of this flag";
-        break;
+    case IDA_FIRST_RES_FAIL: kind = RC_FAIL_FORCES; break;
+    case IDA_RTFUNC_FAIL: kind = RC_FAIL_ROOTS; break;
+    default: break;
     }
+    const char *advice = rc_bk_advice(kind, m);
     failure_message(m, d, "IDA", t, h, tout, fname, msg, elem, advice, buf, n);
     free(fname);
 }

@@ -1,7 +1,7 @@
 /*
  * Imposed velocities (/IMPVEL): compile, state layout, Jacobian pattern
- * (imposed.h). The right-hand side and Jacobian parts are imposed_rhs.inc
- * and imposed_jac.inc, included by assemble_rhs.c and assemble_jac.c.
+ * (imposed.h). The right-hand side and Jacobian parts are
+ * engine/assembly/imposed_rhs.c and imposed_jac.c.
  */
 #include <math.h>
 #include <stdio.h>

@@ -14,21 +14,16 @@
 #include "model/imposed.h"
 #include "model/model.h"
 #include "engine/assembly/assembly.h"
+#include "engine/kernels/cstep.h"
 
-#define T double complex
-#define RE(x) creal(x)
-#define RCK(name) name##_c
+#include "engine/kernels/as_complex.h"
 #include "engine/kernels/kernels.inc"
 #include "engine/kernels/kernels_coupling.inc"
-
-/* Complex step [state units]; any tiny value works, no cancellation. */
-#define RC_CSTEP 1e-40
 
 /* Complex copy of a body's 13 states (ground/fixed pose when b has none). */
 static void load_body(const rc_model *m, int b, const double *y, T *yc)
 {
-    const double *s = rc_body_state(m, b, y);
-    for (int k = 0; k < RC_NB; k++) yc[k] = s[k];
+    rc_cs_load(rc_body_state(m, b, y), RC_NB, yc);
 }
 
 /* Dense 13 x 13 block of body b: d(ydot_b)/d(y_b); the columns of the
@@ -43,10 +38,10 @@ static void dense_body(const rc_model *m, int b, double t, const double *y, doub
             for (int r = 0; r < RC_NB; r++) out[r * RC_NB + c] = 0.0;
             continue;
         }
-        yc[c] += I * RC_CSTEP;
+        rc_cs_step(&yc[c]);
         body_rhs_c(m, b, gf, yc, yd);
-        for (int r = 0; r < RC_NB; r++) out[r * RC_NB + c] = cimag(yd[r]) / RC_CSTEP;
-        yc[c] = creal(yc[c]);
+        for (int r = 0; r < RC_NB; r++) out[r * RC_NB + c] = rc_cs_deriv(yd[r]);
+        rc_cs_unstep(&yc[c]);
     }
 }
 
@@ -71,28 +66,28 @@ static void dense_inter(const rc_model *m, int i, int mode, int branch, int trac
     T *ys = np3 > 0 ? work : ysl, *sdot = np3 > 0 ? work + RC_NS_MAX + np3 : sdl;
     load_body(m, ba, y, ya);
     load_body(m, bb, y, yb);
-    for (int k = 0; k < ns + np3; k++) ys[k] = y[m->inter_eadr[i] + k];
+    rc_cs_load(y + m->inter_eadr[i], ns + np3, ys);
     for (int c = 0; c < jb->ncol; c++) {
         if (skip && skip[jb->cols[c]]) {
             for (int r = 0; r < jb->nrow; r++) out[r * jb->ncol + c] = 0.0;
             continue;
         }
         T *yp = c < na ? ya + c : c < na + nb ? yb + (c - na) : ys + (c - na - nb);
-        *yp += I * RC_CSTEP;
+        rc_cs_step(yp);
         T acc[12] = {0};
         type6_c(m, i, mode, branch, track, slip, pslip, ya, yb, ys, fa ? acc : NULL, fb ? acc + 6 : NULL, sdot, NULL,
                 NULL, ncache);
-        *yp = creal(*yp);
+        rc_cs_unstep(yp);
         int r = 0;
         if (fa)
-            for (int k = 0; k < 6; k++, r++) out[r * jb->ncol + c] = cimag(acc[k]) / RC_CSTEP;
+            for (int k = 0; k < 6; k++, r++) out[r * jb->ncol + c] = rc_cs_deriv(acc[k]);
         if (fb)
-            for (int k = 0; k < 6; k++, r++) out[r * jb->ncol + c] = cimag(acc[6 + k]) / RC_CSTEP;
-        for (int k = 0; k < ns; k++, r++) out[r * jb->ncol + c] = cimag(sdot[k]) / RC_CSTEP;
+            for (int k = 0; k < 6; k++, r++) out[r * jb->ncol + c] = rc_cs_deriv(acc[6 + k]);
+        for (int k = 0; k < ns; k++, r++) out[r * jb->ncol + c] = rc_cs_deriv(sdot[k]);
         if (ptslot)
             for (int k = 0; k < np3; k++) {
                 const int64_t sl = ptslot[(k / ps) * P + (k % ps) * jb->ncol + c];
-                if (sl >= 0) val[sl] += cimag(sdot[ns + k]) / RC_CSTEP;
+                if (sl >= 0) val[sl] += rc_cs_deriv(sdot[ns + k]);
             }
     }
 }
@@ -171,8 +166,8 @@ static int fast_inter(const rc_model *m, int i, int mode, int branch, int track,
     for (int k = 0; k < 2; k++) {
         t6out_c r;
         memset(&r, 0, sizeof r);
-        r.p = r.pl = p0 + (k == 0 ? I * RC_CSTEP : 0.0); /* one point: the law at P */
-        r.vn = r.vl = vn0 + (k == 1 ? I * RC_CSTEP : 0.0);
+        r.p = r.pl = rc_cs_seed(p0, k == 0); /* one point: the law at P */
+        r.vn = r.vl = rc_cs_seed(vn0, k == 1);
         if (m->inter_law[i] == RC_LAW_POWER) {
             T kn;
             power_law_c(m, i, 1, branch, &r, &kn);
@@ -182,38 +177,38 @@ static int fast_inter(const rc_model *m, int i, int mode, int branch, int track,
         }
         fel0 = creal(r.fel);
         fd0 = creal(r.fd);
-        dfel[k] = cimag(r.fel) / RC_CSTEP;
-        dfd[k] = cimag(r.fd) / RC_CSTEP;
+        dfel[k] = rc_cs_deriv(r.fel);
+        dfd[k] = rc_cs_deriv(r.fd);
     }
     const double ima = fa ? 1.0 / m->body_mass[ba] : 0.0, imb = fb ? 1.0 / m->body_mass[bb] : 0.0;
     for (int q = 0; q < nc; q++) {
         const int c = cols[q], onb = c >= na, k = onb ? c - na : c;
         if (skip && skip[jb->cols[c]]) continue;
         T *yp = onb ? yb + k : ya + k;
-        *yp += I * RC_CSTEP;
+        rc_cs_step(yp);
         fast_geom(m, ss, sb, ya, yb, ra, rb, &g);
-        const double dp = -cimag(g.d) / RC_CSTEP, dv = track ? 0.0 : -cimag(g.ddot) / RC_CSTEP;
+        const double dp = -rc_cs_deriv(g.d), dv = track ? 0.0 : -rc_cs_deriv(g.ddot);
         const double del = dfel[0] * dp + dfel[1] * dv, ddf = dfd[0] * dp + dfd[1] * dv;
-        const T fn = fel0 + fd0 + I * RC_CSTEP * (del + ddf);
+        const T fn = rc_cs_seed(fel0 + fd0, del + ddf);
         T f[3];
         for (int e = 0; e < 3; e++) f[e] = fn * g.n[e];
         int r = 0;
         if (fa) {
             /* through a's centre: no moment (rows 3..5 stay 0) */
-            for (int e = 0; e < 3; e++) out[(r + e) * ncol + c] = -cimag(f[e]) / RC_CSTEP * ima;
+            for (int e = 0; e < 3; e++) out[(r + e) * ncol + c] = -rc_cs_deriv(f[e]) * ima;
             r += 6;
         }
         if (fb) {
             if (ss) {
-                for (int e = 0; e < 3; e++) out[(r + e) * ncol + c] = cimag(f[e]) / RC_CSTEP * imb;
+                for (int e = 0; e < 3; e++) out[(r + e) * ncol + c] = rc_cs_deriv(f[e]) * imb;
             } else {
                 /* the plane's body: the force at the sphere's centre */
                 T acc[6] = {0};
                 apply_force_c(m, bb, yb, f, g.act_b, acc);
-                for (int e = 0; e < 6; e++) out[(r + e) * ncol + c] = cimag(acc[e]) / RC_CSTEP;
+                for (int e = 0; e < 6; e++) out[(r + e) * ncol + c] = rc_cs_deriv(acc[e]);
             }
         }
-        *yp = creal(*yp);
+        rc_cs_unstep(yp);
         /* the work rates fel vn and fd vn */
         out[rs * ncol + c] = del * vn0 + fel0 * dv;
         if (ns > 1) out[(rs + 1) * ncol + c] = ddf * vn0 + fd0 * dv;
@@ -256,23 +251,23 @@ static void point_columns(const rc_model *m, int i, const segctx_c *c, int j, in
     const int racc = (fa ? 6 : 0) + (fb ? 6 : 0), widx = m->inter_fr[i].widx;
 #define PUT(sl, v) do { const int64_t s_ = (sl); if (only_live ? live_slot(m, s_) : s_ >= 0) val[s_] += (v); } while (0)
     T Fj[6];
-    for (int k = 0; k < ps; k++) Fj[k] = fj[k];
+    rc_cs_load(fj, ps, Fj);
     for (int k = 0; k < ps; k++) {
-        Fj[k] += I * RC_CSTEP;
+        rc_cs_step(&Fj[k]);
         segpt_c q;
         segfric_point_c(m, i, c, j, slip, ya, yb, Fj, po, &q);
-        Fj[k] = creal(Fj[k]);
+        rc_cs_unstep(&Fj[k]);
         T acc[12] = {0}, fbv[3] = {-q.ft[0], -q.ft[1], -q.ft[2]};
         if (fa) apply_force_c(m, ba, ya, q.ft, q.x, acc);
         if (fb) apply_force_c(m, bb, yb, fbv, q.x, acc + 6);
         int r = 0;
         for (int a = 0; a < 12; a++) {
             if ((a < 6 && !fa) || (a >= 6 && !fb)) continue;
-            PUT(sb[r * ps + k], cimag(acc[a]) / RC_CSTEP);
+            PUT(sb[r * ps + k], rc_cs_deriv(acc[a]));
             r++;
         }
-        PUT(sb[(racc + widx) * ps + k], -cimag(dot_c(q.ft, q.vrel)) / RC_CSTEP);
-        for (int e = 0; e < ps; e++) PUT(sc[e * ps + k], cimag(q.dF[e]) / RC_CSTEP);
+        PUT(sb[(racc + widx) * ps + k], -rc_cs_deriv(dot_c(q.ft, q.vrel)));
+        for (int e = 0; e < ps; e++) PUT(sc[e * ps + k], rc_cs_deriv(q.dF[e]));
     }
 #undef PUT
 }
@@ -296,7 +291,7 @@ static void points_jac(const rc_model *m, rc_data *d, int i, const double *y, do
     /* the shared part at the state (real values) */
     const double *yr = y + m->inter_eadr[i];
     T *ys = d->pt_work;
-    for (int k = 0; k < ns + ps * npt; k++) ys[k] = yr[k];
+    rc_cs_load(yr, ns + ps * npt, ys);
     t6out_c o;
     type6_c(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], pslip, ya, yb, ys, NULL,
             NULL, NULL, &o, NULL, d->node_cache);
@@ -376,7 +371,7 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
         if (d->jcache) memcpy(d->jcache + d->jcache_off[i], dense, (size_t)nd * sizeof(double));
     }
     d->jcache_ok = d->jcache != NULL;
-    /* couplings (coupling_jac.inc) */
+    /* couplings (rc_cpl_jac) */
     if (rc_cpl_jac(m, d, t, y, val)) return 1;
     /* potential of a time-varying gravity: d/dv of -m g(t).v */
     if (m->gwork_adr >= 0)
@@ -386,7 +381,7 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
             rc_gravity(m, b, t, g);
             for (int k = 0; k < 3; k++) val[m->gwork_slot[3 * b + k]] -= m->body_mass[b] * g[k];
         }
-    /* imposed velocities (imposed_jac.inc): the work row, their rows */
+    /* imposed velocities (imposed_jac.c): the work row, their rows */
     if (m->imp && rc_imp_jac(m, d, t, y, val)) return 1;
     /* held DOFs: their rows are zero */
     if (m->nheld > 0)
@@ -430,7 +425,7 @@ static const T *fric_pose(const rc_model *m, int i, const T *ya, const T *yb, T 
     const int ob = m->inter_fr[i].obody;
     if (ob >= 0 && ob == m->inter_ba[i]) return ya;
     if (ob >= 0 && ob == m->inter_bb[i]) return yb;
-    for (int k = 0; k < RC_NB; k++) yo[k] = m->ground_y0[k];
+    rc_cs_load(m->ground_y0, RC_NB, yo);
     return yo;
 }
 
@@ -462,14 +457,14 @@ int rc_jac_refresh_points(const rc_model *m, rc_data *d, int i, const int *old_s
     T ya[RC_NB], yb[RC_NB], ys[RC_NS_MAX], yo[RC_NB];
     load_body(m, ba, y, ya);
     load_body(m, bb, y, yb);
-    for (int k = 0; k < ns; k++) ys[k] = yr[k];
+    rc_cs_load(yr, ns, ys);
     /* 1. the block's columns: the flipped points' forces on a and b and
      * their friction power, new law less old law; their own rows anew */
     for (int c = 0; c <= ncol; c++) {
         const int real = c == ncol; /* last: unperturbed, for step 2 */
         if (!real && d->jac_skip && d->jac_skip[jb->cols[c]]) continue;
         T *yp = real ? NULL : c < na ? ya + c : c < na + nb ? yb + (c - na) : ys + (c - na - nb);
-        if (yp) *yp += I * RC_CSTEP;
+        if (yp) rc_cs_step(yp);
         if (nc) seg_fill_c(m, i, ya, yb, nc);
         t6out_c r;
         memset(&r, 0, sizeof r);
@@ -496,7 +491,7 @@ int rc_jac_refresh_points(const rc_model *m, rc_data *d, int i, const int *old_s
         for (int j = 0; j < npt; j++) {
             if (pslip[j] == old_slip[j]) continue;
             T Fj[6];
-            for (int k = 0; k < ps; k++) Fj[k] = yr[ns + ps * j + k];
+            rc_cs_load(yr + ns + ps * j, ps, Fj);
             segpt_c qn, qo;
             segfric_point_c(m, i, &cx, j, pslip[j], ya, yb, Fj, po, &qn);
             segfric_point_c(m, i, &cx, j, old_slip[j], ya, yb, Fj, po, &qo);
@@ -512,16 +507,16 @@ int rc_jac_refresh_points(const rc_model *m, rc_data *d, int i, const int *old_s
             /* the point's rows against this column, anew */
             for (int k = 0; k < ps; k++) {
                 const int64_t sl = slot[j * P + k * ncol + c];
-                if (live_slot(m, sl)) val[sl] = cimag(qn.dF[k]) / RC_CSTEP;
+                if (live_slot(m, sl)) val[sl] = rc_cs_deriv(qn.dF[k]);
             }
         }
-        *yp = creal(*yp);
+        rc_cs_unstep(yp);
         int rr = 0;
         if (fa)
-            for (int k = 0; k < 6; k++, rr++) delta[rr * ncol + c] = cimag(acc[k]) / RC_CSTEP;
+            for (int k = 0; k < 6; k++, rr++) delta[rr * ncol + c] = rc_cs_deriv(acc[k]);
         if (fb)
-            for (int k = 0; k < 6; k++, rr++) delta[rr * ncol + c] = cimag(acc[6 + k]) / RC_CSTEP;
-        delta[(racc + widx) * ncol + c] = cimag(dw) / RC_CSTEP;
+            for (int k = 0; k < 6; k++, rr++) delta[rr * ncol + c] = rc_cs_deriv(acc[6 + k]);
+        delta[(racc + widx) * ncol + c] = rc_cs_deriv(dw);
     }
     double *old = d->jcache + d->jcache_off[i];
     for (int k = 0; k < nd; k++) {
@@ -532,8 +527,61 @@ int rc_jac_refresh_points(const rc_model *m, rc_data *d, int i, const int *old_s
     return 0;
 }
 
-#include "coupling_jac.inc"
-#include "imposed_jac.inc"
+/* Coupling Jacobian blocks. A catenary is solved once in real arithmetic
+ * at the current state; every column then reuses that solution, lifted by
+ * its implicit-function derivatives. */
+int rc_cpl_dense_block(const rc_model *m, const rc_data *d, int k, double t, const double *y,
+                       double *out)
+{
+    const rc_couplings *c = m->cpl;
+    const rc_jblock *jb = &c->jb[k];
+    const int b1 = c->b1[k], b2 = c->b2[k];
+    const int n1 = b1 >= 0 && m->body_yadr[b1] >= 0 ? RC_NB : 0;
+    const int f2 = b2 >= 0 && m->body_yadr[b2] >= 0;
+    T ya[RC_NB], yb[RC_NB];
+    load_body(m, b1, y, ya);
+    load_body(m, b2, y, yb);
+    double eup[3];
+    rc_cat_sol s;
+    if (c->kind[k] == RC_CPL_CATENARY && cat_solve_at_c(m, d, k, t, y, eup, &s)) return 1;
+    for (int col = 0; col < jb->ncol; col++) {
+        T *yp = col < n1 ? ya + col : yb + (col - n1);
+        rc_cs_step(yp);
+        T acc[12] = {0}, edot[RC_CE];
+        if (c->kind[k] == RC_CPL_SPRING)
+            spring_c(m, k, ya, yb, n1 ? acc : NULL, f2 ? acc + 6 : NULL, edot, NULL);
+        else if (c->kind[k] == RC_CPL_LIMIT) /* no data (the pattern's probe): pushing past a stop */
+            jlimit_c(m, k, d ? d->cpl->lmode[k] : isfinite(c->llo[k]) ? RC_LIM_LO_PUSH : RC_LIM_HI_PUSH, ya, yb, n1 ? acc : NULL, f2 ? acc + 6 : NULL, edot,
+                     NULL, NULL, NULL, NULL, NULL);
+        else if (c->kind[k] == RC_CPL_CONTACT)
+            contact_cpl_c(m, k, d ? d->cpl->fmode : NULL, 0, ya, yb, n1 ? acc : NULL, f2 ? acc + 6 : NULL, edot, NULL);
+        else
+            catenary_c(m, k, eup, &s, ya, yb, n1 ? acc : NULL, f2 ? acc + 6 : NULL, edot, NULL, NULL);
+        rc_cs_unstep(yp);
+        int r = 0;
+        if (n1)
+            for (int i = 0; i < 6; i++, r++) out[r * jb->ncol + col] = rc_cs_deriv(acc[i]);
+        if (f2)
+            for (int i = 0; i < 6; i++, r++) out[r * jb->ncol + col] = rc_cs_deriv(acc[6 + i]);
+        for (int i = 0; i < RC_CE; i++, r++) out[r * jb->ncol + col] = rc_cs_deriv(edot[i]);
+    }
+    return 0;
+}
+
+int rc_cpl_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val)
+{
+    double dense[RC_JB_MAX];
+    for (int k = 0; k < m->cpl->n; k++) {
+        if (m->cpl->jb[k].ncol == 0) continue;
+        if (rc_cpl_dense_block(m, d, k, t, y, dense)) {
+            d->cpl->fail = k;
+            d->fail_t = t;
+            return 1;
+        }
+        scatter(&m->cpl->jb[k], dense, val);
+    }
+    return 0;
+}
 
 void rc_inter_report_rate(const rc_model *m, int i, int mode, int branch, int track, int slip, const double *y,
                           const double *ydot, rc_inter_report *dr)
@@ -546,30 +594,30 @@ void rc_inter_report_rate(const rc_model *m, int i, int mode, int branch, int tr
     T *ys = np3 > 0 ? malloc(((size_t)ns + (size_t)np3) * sizeof(T)) : ysl;
     memset(dr, 0, sizeof *dr);
     if (!ys) return;
-    for (int k = 0; k < np3; k++) ys[ns + k] = y[m->inter_eadr[i] + ns + k];
+    rc_cs_load(y + m->inter_eadr[i] + ns, np3, ys + ns);
     load_body(m, ba, y, ya);
     load_body(m, bb, y, yb);
     if (ba >= 0 && m->body_yadr[ba] >= 0)
-        for (int k = 0; k < RC_NB; k++) ya[k] += I * RC_CSTEP * ydot[m->body_yadr[ba] + k];
+        for (int k = 0; k < RC_NB; k++) rc_cs_step_along(&ya[k], ydot[m->body_yadr[ba] + k]);
     if (bb >= 0 && m->body_yadr[bb] >= 0)
-        for (int k = 0; k < RC_NB; k++) yb[k] += I * RC_CSTEP * ydot[m->body_yadr[bb] + k];
-    for (int k = 0; k < ns; k++) ys[k] = y[m->inter_eadr[i] + k] + I * RC_CSTEP * ydot[m->inter_eadr[i] + k];
+        for (int k = 0; k < RC_NB; k++) rc_cs_step_along(&yb[k], ydot[m->body_yadr[bb] + k]);
+    for (int k = 0; k < ns; k++) ys[k] = rc_cs_seed(y[m->inter_eadr[i] + k], ydot[m->inter_eadr[i] + k]);
     t6out_c o;
     type6_c(m, i, mode, branch, track, slip, NULL, ya, yb, ys, NULL, NULL, NULL, &o, NULL, NULL);
     if (ys != ysl) free(ys);
-    dr->p = cimag(o.p) / RC_CSTEP;
-    dr->vn = cimag(o.vn) / RC_CSTEP;
-    dr->p_raw = cimag(o.p_raw) / RC_CSTEP;
-    dr->vn_raw = cimag(o.vn_raw) / RC_CSTEP;
-    dr->pl = cimag(o.pl) / RC_CSTEP;
-    dr->vl = cimag(o.vl) / RC_CSTEP;
-    dr->fload = cimag(o.fel) / RC_CSTEP;
-    dr->fdamp = cimag(o.fd) / RC_CSTEP;
+    dr->p = rc_cs_deriv(o.p);
+    dr->vn = rc_cs_deriv(o.vn);
+    dr->p_raw = rc_cs_deriv(o.p_raw);
+    dr->vn_raw = rc_cs_deriv(o.vn_raw);
+    dr->pl = rc_cs_deriv(o.pl);
+    dr->vl = rc_cs_deriv(o.vl);
+    dr->fload = rc_cs_deriv(o.fel);
+    dr->fdamp = rc_cs_deriv(o.fd);
     dr->fn = dr->fload + dr->fdamp;
-    dr->fl = cimag(o.fl) / RC_CSTEP;
-    dr->fu = cimag(o.fu) / RC_CSTEP;
-    dr->fh = cimag(o.fh) / RC_CSTEP;
-    dr->offset = cimag(o.off) / RC_CSTEP;
+    dr->fl = rc_cs_deriv(o.fl);
+    dr->fu = rc_cs_deriv(o.fu);
+    dr->fh = rc_cs_deriv(o.fh);
+    dr->offset = rc_cs_deriv(o.off);
 }
 
 /* Contact point, unit normal (from a to b) and relative velocity of the

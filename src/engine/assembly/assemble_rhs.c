@@ -13,9 +13,7 @@
 #include "model/coupling_contact.h"
 #include "engine/assembly/assembly.h"
 
-#define T double
-#define RE(x) (x)
-#define RCK(name) name##_r
+#include "engine/kernels/as_real.h"
 #include "engine/kernels/kernels.inc"
 #include "engine/kernels/kernels_coupling.inc"
 #include "engine/kernels/kernel_fast.inc"
@@ -79,7 +77,7 @@ int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, do
     }
     /* held DOFs (/BCS): the support takes whatever force acts */
     for (int k = 0; k < m->nheld; k++) ydot[m->held[k]] = 0.0;
-    /* imposed velocities (imposed_rhs.inc): their rates, the reactions' work */
+    /* imposed velocities (imposed_rhs.c): their rates, the reactions' work */
     if (m->imp) rc_imp_rhs(m, d, t, y, ydot);
     return 0;
 }
@@ -351,4 +349,3 @@ int rc_roots_live(const rc_model *m, double tend, int *live)
 }
 
 #include "coupling_rhs.inc"
-#include "imposed_rhs.inc"

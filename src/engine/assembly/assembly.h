@@ -2,7 +2,8 @@
  * The engine's evaluation of a model at (t, y) in the modes of the run
  * data: initial state, right-hand side, Jacobian values, root functions,
  * the interfaces' reports, energies; couplings and imposed velocities.
- * (engine/assembly: body.c, assemble_rhs.c, assemble_jac.c, energy.c)
+ * (engine/assembly: body.c, assemble_rhs.c, assemble_jac.c, imposed_rhs.c,
+ * imposed_jac.c, energy.c)
  */
 #ifndef RC_ENGINE_ASSEMBLY_H
 #define RC_ENGINE_ASSEMBLY_H
@@ -144,7 +145,7 @@ void rc_stk_geom_c(const rc_model *m, int i, const double _Complex *ya, const do
                    double _Complex *point, double _Complex *n, double _Complex *vrel, double _Complex *ddot);
 
 
-/* ---- couplings (coupling_rhs.inc, contact_rhs.inc, coupling_jac.inc;
+/* ---- couplings (coupling_rhs.inc, contact_rhs.inc, assemble_jac.c;
  *      gravity of the lines in body.c) -------------------------------- */
 /* Gravity acting on the lines at time t [m/s^2] (engine/assembly/body.c). */
 void rc_cpl_gravity(const rc_model *m, double t, double g[3]);
@@ -176,10 +177,13 @@ int rc_cpl_events(const rc_model *m, rc_data *d, double t, const double *y, cons
 double rc_cpl_joint_stop(const rc_model *m, const rc_data *d, int j, const double *y, double *q);
 
 
-/* ---- imposed velocities (imposed_rhs.inc, imposed_jac.inc) -------- */
-/* Right-hand side (assemble_rhs.c): overwrite the imposed rows, W_imp'. */
+/* ---- imposed velocities (imposed_rhs.c, imposed_jac.c) ------------ */
+/* Rate of an imposed component at t: Fscale f'(t / Ascale) / Ascale, f the
+ * table tab (imposed_rhs.c). */
+double rc_imp_rate(const rc_model *m, int tab, double ascale, double fscale, double t);
+/* Right-hand side (imposed_rhs.c): overwrite the imposed rows, W_imp'. */
 void rc_imp_rhs(const rc_model *m, rc_data *d, double t, const double *y, double *ydot);
-/* Jacobian (assemble_jac.c): the W_imp row, then the imposed rows replaced. */
+/* Jacobian (imposed_jac.c): the W_imp row, then the imposed rows replaced. */
 int rc_imp_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val);
 
 #endif

@@ -18,23 +18,18 @@
 #include "engine/constraints/joints.h"
 #include "engine/constraints/cset.h"
 #include "engine/constraints/xpattern.h"
+#include "engine/kernels/cstep.h"
 
-#define T double
-#define RE(x) (x)
-#define RCK(name) name##_r
+/* the joint kernels and the vector helpers they use, in real arithmetic
+ * (the residual) and complex (its Jacobian by complex step) */
+#include "engine/kernels/as_real.h"
+#include "engine/kernels/vec.inc"
 #include "joints.inc"
-#undef T
-#undef RE
-#undef RCK
-#define T double complex
-#define RE(x) creal(x)
-#define RCK(name) name##_c
+#include "engine/kernels/as_done.h"
+#include "engine/kernels/as_complex.h"
+#include "engine/kernels/vec.inc"
 #include "joints.inc"
-#undef T
-#undef RE
-#undef RCK
-
-#define RC_JCSTEP 1e-40 /* complex step, as assemble_jac.c */
+#include "engine/kernels/as_done.h"
 
 struct rc_jnt_work {
     int ny, nrows, n;     /* n = ny + 2 nrows + 1 */
@@ -231,26 +226,22 @@ void rc_jnt_jacobian(const rc_model *m, const rc_jnt_work *w, double cj, const d
         const int ncl = na + nb + 2 * nr;
         double yar[RC_NB], ybr[RC_NB], lr[RC_JNT_MAXROW], mr[RC_JNT_MAXROW];
         load_real(m, j, Y, Yp, yar, ybr, lr, mr);
-        double complex ya[RC_NB], yb[RC_NB], lam[RC_JNT_MAXROW], mu[RC_JNT_MAXROW];
-        for (int k = 0; k < RC_NB; k++) {
-            ya[k] = yar[k];
-            yb[k] = ybr[k];
-        }
-        for (int k = 0; k < nr; k++) {
-            lam[k] = lr[k];
-            mu[k] = mr[k];
-        }
+        rc_cx ya[RC_NB], yb[RC_NB], lam[RC_JNT_MAXROW], mu[RC_JNT_MAXROW];
+        rc_cs_load(yar, RC_NB, ya);
+        rc_cs_load(ybr, RC_NB, yb);
+        rc_cs_load(lr, nr, lam);
+        rc_cs_load(mr, nr, mu);
         const int64_t *slot = w->bslot + w->badr[j];
         for (int c = 0; c < ncl; c++) {
-            double complex *p = c < na ? ya + c : c < na + nb ? yb + (c - na) : c < na + nb + nr ? lam + (c - na - nb)
+            rc_cx *p = c < na ? ya + c : c < na + nb ? yb + (c - na) : c < na + nb + nr ? lam + (c - na - nb)
                                                                                                  : mu + (c - na - nb - nr);
-            *p += I * RC_JCSTEP;
-            double complex ra[RC_NB], rb[RC_NB], cv[RC_JNT_MAXROW], cp[RC_JNT_MAXROW], pw;
+            rc_cs_step(p);
+            rc_cx ra[RC_NB], rb[RC_NB], cv[RC_JNT_MAXROW], cp[RC_JNT_MAXROW], pw;
             jnt_eval_c(m, j, ya, yb, lam, mu, na ? ra : NULL, nb ? rb : NULL, cv, cp, &pw);
-            *p = creal(*p);
+            rc_cs_unstep(p);
             /* the columns of Lambda and nu: the residual holds their
              * derivatives lambda and mu, d/dLambda = cj d/dlambda */
-            const double sc = (c < na + nb ? 1.0 : cj) / RC_JCSTEP;
+            const double sc = (c < na + nb ? 1.0 : cj) / RC_CSTEP;
             int r = 0;
             for (int k = 0; k < na; k++, r++) val[slot[r * ncl + c]] += sc * cimag(ra[k]);
             for (int k = 0; k < nb; k++, r++) val[slot[r * ncl + c]] += sc * cimag(rb[k]);
@@ -281,14 +272,14 @@ static void cv_along(const rc_model *m, int j, const double *Y, const double *z,
     double yar[RC_NB], ybr[RC_NB], lr[RC_JNT_MAXROW], mr[RC_JNT_MAXROW];
     load_real(m, j, Y, NULL, yar, ybr, lr, mr);
     const int aa = free_adr(m, J->ba[j]), ab = free_adr(m, J->bb[j]);
-    double complex ya[RC_NB], yb[RC_NB], lam[RC_JNT_MAXROW] = {0}, mu[RC_JNT_MAXROW] = {0};
+    rc_cx ya[RC_NB], yb[RC_NB], lam[RC_JNT_MAXROW] = {0}, mu[RC_JNT_MAXROW] = {0};
     for (int k = 0; k < RC_NB; k++) {
-        ya[k] = yar[k] + (aa >= 0 ? I * RC_JCSTEP * z[aa + k] : 0.0);
-        yb[k] = ybr[k] + (ab >= 0 ? I * RC_JCSTEP * z[ab + k] : 0.0);
+        ya[k] = rc_cs_seed(yar[k], aa >= 0 ? z[aa + k] : 0.0);
+        yb[k] = rc_cs_seed(ybr[k], ab >= 0 ? z[ab + k] : 0.0);
     }
-    double complex cv[RC_JNT_MAXROW], cp[RC_JNT_MAXROW], pw;
+    rc_cx cv[RC_JNT_MAXROW], cp[RC_JNT_MAXROW], pw;
     jnt_eval_c(m, j, ya, yb, lam, mu, NULL, NULL, cv, cp, &pw);
-    for (int r = 0; r < J->nrow[j]; r++) dcv[r] = cimag(cv[r]) / RC_JCSTEP;
+    for (int r = 0; r < J->nrow[j]; r++) dcv[r] = rc_cs_deriv(cv[r]);
 }
 
 static int shares_body(const rc_joints *J, int i, int j)
@@ -463,7 +454,7 @@ rc_status rc_jnt_check_initial(const rc_model *m, rc_jnt_work *w, const double *
         jrot_r(yb + 3, yb + 10, wb, 0);
         for (int r = 0; r < J->nrow[j]; r++) {
             const double *F = wr[r];
-            const double t[4] = {jdot_r(F, ya + 7), jdot_r(F + 3, wa), jdot_r(F + 6, yb + 7), jdot_r(F + 9, wb)};
+            const double t[4] = {dot_r(F, ya + 7), dot_r(F + 3, wa), dot_r(F + 6, yb + 7), dot_r(F + 9, wb)};
             const double cv = t[0] + t[1] + t[2] + t[3];
             const double scale = fabs(t[0]) + fabs(t[1]) + fabs(t[2]) + fabs(t[3]);
             const int row = J->radr[j] + r, ang = J->rkind[row] == RC_JROW_ANGLE;
@@ -475,7 +466,7 @@ rc_status rc_jnt_check_initial(const rc_model *m, rc_jnt_work *w, const double *
                          RC_LOC(J->loc[j]), J->name[j], r + 1, ang ? "relative rotation rate" : "relative velocity",
                          ang ? "rate of the axes' dot product" : "relative velocity along the row", cv,
                          ang ? "1/s" : "m/s");
-            if (fabs(g[r]) > 1e-9 * (1.0 + sqrt(jdot_r(ya, ya)) + sqrt(jdot_r(yb, yb))))
+            if (fabs(g[r]) > 1e-9 * (1.0 + sqrt(dot_r(ya, ya)) + sqrt(dot_r(yb, yb))))
                 RC_RAISE(err, RC_EINPUT,
                          RC_LOCFMT "card %s: the initial positions of its bodies violate the joint (constraint row "
                                    "%d): residual %.6g %s, expected 0",
@@ -507,7 +498,7 @@ void rc_jnt_report(const rc_model *m, int j, const double *Y, double force[3], d
     /* moment about the anchor point of a: tau - r_a x F */
     double ra[3], rxf[3];
     jrot_r(ya + 3, J->sa + 3 * j, ra, 0);
-    jcross_r(ra, F, rxf);
+    cross_r(ra, F, rxf);
     for (int k = 0; k < 3; k++) {
         force[k] = F[k];
         moment[k] = tau[k] - rxf[k];

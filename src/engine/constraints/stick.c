@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <tgmath.h>
 
 #include "model/imposed.h"
 #include "model/joint.h"
@@ -22,10 +23,13 @@
 #include "engine/constraints/cset.h"
 #include "engine/constraints/xpattern.h"
 #include "engine/assembly/assembly.h"
+#include "engine/kernels/cstep.h"
 
-typedef double complex cx;
+/* the kernels' vector helpers, complex (dot_c, cross_c, rotate_unit_c) */
+#include "engine/kernels/as_complex.h"
+#include "engine/kernels/vec.inc"
+#include "engine/kernels/as_done.h"
 
-#define SK_STEP 1e-40            /* complex step, as assemble_jac.c */
 #define SK_R 3                  /* rows per slot: t_1, t_2 (exact stick), n (settled) */
 #define SK_MAXB (2 * RC_NB + SK_R)  /* rows (= columns) of an interface's dense block */
 
@@ -103,50 +107,38 @@ static int row_free(const rc_model *m, int row)
 static int free_adr(const rc_model *m, int b) { return b >= 0 ? m->body_yadr[b] : -1; }
 
 /* ---- kernel (complex, for its derivatives) --------------------------- */
-static cx cdot(const cx *a, const cx *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-static void ccross(const cx *a, const cx *b, cx *c)
+/* R(q)^T s for the normalised quaternion q / |q| (as the kernels' rotate_c
+ * with transpose, w = (-q_0) / |q|). */
+static void rot_t(const rc_cx *q, const rc_cx *s, rc_cx *out)
 {
-    const cx c0 = a[1] * b[2] - a[2] * b[1], c1 = a[2] * b[0] - a[0] * b[2], c2 = a[0] * b[1] - a[1] * b[0];
-    c[0] = c0;
-    c[1] = c1;
-    c[2] = c2;
-}
-
-/* R(q)^T s for the normalised quaternion q / |q| (as the kernels). */
-static void rot_t(const cx *q, const cx *s, cx *out)
-{
-    const cx inv = 1.0 / csqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-    const cx w = -q[0] * inv, u[3] = {q[1] * inv, q[2] * inv, q[3] * inv};
-    cx us[3], uus[3];
-    ccross(u, s, us);
-    ccross(u, us, uus);
-    for (int k = 0; k < 3; k++) out[k] = s[k] + 2.0 * w * us[k] + 2.0 * uus[k];
+    const rc_cx inv = 1.0 / csqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    const rc_cx w = -q[0] * inv, u[3] = {q[1] * inv, q[2] * inv, q[3] * inv};
+    rotate_unit_c(w, u, s, out);
 }
 
 /* Tangent basis of the plane normal to n from the helper axis h. */
-static void basis(const double *h, const cx *n, cx *t1, cx *t2)
+static void basis(const double *h, const rc_cx *n, rc_cx *t1, rc_cx *t2)
 {
-    const cx hn = h[0] * n[0] + h[1] * n[1] + h[2] * n[2];
+    const rc_cx hn = h[0] * n[0] + h[1] * n[1] + h[2] * n[2];
     for (int k = 0; k < 3; k++) t1[k] = h[k] - hn * n[k];
-    const cx nt = csqrt(cdot(t1, t1));
+    const rc_cx nt = csqrt(dot_c(t1, t1));
     for (int k = 0; k < 3; k++) t1[k] /= nt;
-    ccross(n, t1, t2);
+    cross_c(n, t1, t2);
 }
 
 /* The rows of body b (state yb) under the force sF at point p: the
  * residual terms -(F/m) and -J^-1 R^T ((p - x) x F) of its velocity rows. */
-static void body_terms(const rc_model *m, int b, const cx *yb, const cx *p, const cx *F, double s, cx *out)
+static void body_terms(const rc_model *m, int b, const rc_cx *yb, const rc_cx *p, const rc_cx *F, double s, rc_cx *out)
 {
     for (int k = 0; k < RC_NB; k++) out[k] = 0.0;
     if (b < 0 || m->body_yadr[b] < 0) return; /* the ground or a fixed body: no rows */
     const double *Ji = m->body_Jinv + 9 * b, im = 1.0 / m->body_mass[b];
-    cx r[3], f[3], tau[3], taub[3];
+    rc_cx r[3], f[3], tau[3], taub[3];
     for (int k = 0; k < 3; k++) {
         r[k] = p[k] - yb[k];
         f[k] = s * F[k];
     }
-    ccross(r, f, tau);
+    cross_c(r, f, tau);
     rot_t(yb + 3, tau, taub);
     for (int k = 0; k < 3; k++) {
         out[7 + k] = -f[k] * im;
@@ -157,20 +149,20 @@ static void body_terms(const rc_model *m, int b, const cx *yb, const cx *p, cons
 /* Interface i's constraint rows c[SK_R] and (ra, rb not NULL) the residual
  * terms of its bodies under the multipliers lam[SK_R]; point and basis out
  * when asked (pt, t1, t2 not NULL). */
-static void kern(const rc_model *m, int i, const double *h, const cx *ya, const cx *yb, const cx *lam, cx *ra, cx *rb,
-                 cx *c, cx *pt, cx *tb1, cx *tb2)
+static void kern(const rc_model *m, int i, const double *h, const rc_cx *ya, const rc_cx *yb, const rc_cx *lam, rc_cx *ra, rc_cx *rb,
+                 rc_cx *c, rc_cx *pt, rc_cx *tb1, rc_cx *tb2)
 {
-    cx p[3], n[3], v[3], t1[3], t2[3], dd;
+    rc_cx p[3], n[3], v[3], t1[3], t2[3], dd;
     rc_stk_geom_c(m, i, ya, yb, p, n, v, &dd);
     basis(h, n, t1, t2);
-    c[0] = cdot(t1, v);
-    c[1] = cdot(t2, v);
+    c[0] = dot_c(t1, v);
+    c[1] = dot_c(t2, v);
     c[2] = dd; /* the rate of the signed distance (a settled contact: P frozen) */
     for (int k = 0; k < 3 && pt; k++) pt[k] = p[k];
     for (int k = 0; k < 3 && tb1; k++) tb1[k] = t1[k];
     for (int k = 0; k < 3 && tb2; k++) tb2[k] = t2[k];
     if (!ra && !rb) return;
-    cx F[3];
+    rc_cx F[3];
     /* lam[2] the normal force (>= 0 in compression): -lam[2] n on a */
     for (int k = 0; k < 3; k++) F[k] = lam[0] * t1[k] + lam[1] * t2[k] - lam[2] * n[k];
     if (ra) body_terms(m, m->inter_ba[i], ya, p, F, 1.0, ra);
@@ -179,14 +171,14 @@ static void kern(const rc_model *m, int i, const double *h, const cx *ya, const 
 
 /* Body states of interface i as complex values, + i h z on the free ones
  * (z NULL: none). */
-static void load(const rc_model *m, int i, const double *Y, const double *z, cx *ya, cx *yb)
+static void load(const rc_model *m, int i, const double *Y, const double *z, rc_cx *ya, rc_cx *yb)
 {
     const int bs[2] = {m->inter_ba[i], m->inter_bb[i]};
-    cx *out[2] = {ya, yb};
+    rc_cx *out[2] = {ya, yb};
     for (int e = 0; e < 2; e++) {
         const double *s = rc_body_state(m, bs[e], Y);
         const int adr = free_adr(m, bs[e]);
-        for (int k = 0; k < RC_NB; k++) out[e][k] = s[k] + (z && adr >= 0 ? I * SK_STEP * z[adr + k] : 0.0);
+        for (int k = 0; k < RC_NB; k++) out[e][k] = rc_cs_seed(s[k], z && adr >= 0 ? z[adr + k] : 0.0);
     }
 }
 
@@ -196,7 +188,7 @@ static void load(const rc_model *m, int i, const double *Y, const double *z, cx 
 static void add_unit(const rc_model *m, const sk_core *K, int q, int k, const double *Y, double s, double *z)
 {
     const int i = K->inter[q];
-    cx ya[RC_NB], yb[RC_NB], lam[SK_R] = {k == 0 ? s : 0.0, k == 1 ? s : 0.0, k == 2 ? s : 0.0}, ra[RC_NB], rb[RC_NB], c[SK_R];
+    rc_cx ya[RC_NB], yb[RC_NB], lam[SK_R] = {k == 0 ? s : 0.0, k == 1 ? s : 0.0, k == 2 ? s : 0.0}, ra[RC_NB], rb[RC_NB], c[SK_R];
     load(m, i, Y, NULL, ya, yb);
     const int aa = free_adr(m, m->inter_ba[i]), ab = free_adr(m, m->inter_bb[i]);
     kern(m, i, K->axis + 3 * q, ya, yb, lam, ra, rb, c, NULL, NULL, NULL);
@@ -211,10 +203,10 @@ static void add_unit(const rc_model *m, const sk_core *K, int q, int k, const do
 static void c_along(const rc_model *m, const sk_core *K, int q, const double *Y, const double *z, double *dc)
 {
     const int i = K->inter[q];
-    cx ya[RC_NB], yb[RC_NB], c[SK_R];
+    rc_cx ya[RC_NB], yb[RC_NB], c[SK_R];
     load(m, i, Y, z, ya, yb);
     kern(m, i, K->axis + 3 * q, ya, yb, NULL, NULL, NULL, c, NULL, NULL, NULL);
-    for (int k = 0; k < SK_R; k++) dc[k] = cimag(c[k]) / SK_STEP;
+    for (int k = 0; k < SK_R; k++) dc[k] = rc_cs_deriv(c[k]);
 }
 
 /* A[j][l] = (dc_rows[j] / dy) (accelerations of the unit multiplier of
@@ -298,7 +290,7 @@ static int multipliers(const rc_model *m, sk_core *K, const double *Y, const dou
 static void set_axis(const rc_model *m, sk_core *K, int q, const double *Y)
 {
     const int i = K->inter[q];
-    cx ya[RC_NB], yb[RC_NB], p[3], n[3], v[3], dd;
+    rc_cx ya[RC_NB], yb[RC_NB], p[3], n[3], v[3], dd;
     load(m, i, Y, NULL, ya, yb);
     rc_stk_geom_c(m, i, ya, yb, p, n, v, &dd);
     int j = 0;
@@ -454,7 +446,7 @@ void rc_stk_residual(const rc_model *m, const rc_data *d, const rc_stk_work *w, 
             for (int k = 0; k < SK_R; k++) r[row + k] = Yp[row + k];
             continue;
         }
-        cx ya[RC_NB], yb[RC_NB], ra[RC_NB], rb[RC_NB], c[SK_R], lam[SK_R] = {Yp[row], Yp[row + 1], Yp[row + 2]};
+        rc_cx ya[RC_NB], yb[RC_NB], ra[RC_NB], rb[RC_NB], c[SK_R], lam[SK_R] = {Yp[row], Yp[row + 1], Yp[row + 2]};
         load(m, i, Y, NULL, ya, yb);
         const int aa = free_adr(m, m->inter_ba[i]), ab = free_adr(m, m->inter_bb[i]);
         kern(m, i, w->k.axis + 3 * q, ya, yb, lam, ra, rb, c, NULL, NULL, NULL);
@@ -484,17 +476,17 @@ void rc_stk_jacobian(const rc_model *m, const rc_data *d, const rc_stk_work *w, 
         const int na = aa >= 0 ? RC_NB : 0, nb = ab >= 0 ? RC_NB : 0, nc = na + nb + SK_R;
         int idx[SK_MAXB];
         block_idx(m, w, q, idx);
-        cx ya[RC_NB], yb[RC_NB], lam[SK_R] = {Yp[row], Yp[row + 1], Yp[row + 2]};
+        rc_cx ya[RC_NB], yb[RC_NB], lam[SK_R] = {Yp[row], Yp[row + 1], Yp[row + 2]};
         load(m, i, Y, NULL, ya, yb);
         const int64_t *slot = w->bslot + (int64_t)q * SK_MAXB * SK_MAXB;
         for (int c = 0; c < nc; c++) {
-            cx *p = c < na ? ya + c : c < na + nb ? yb + (c - na) : lam + (c - na - nb);
-            *p += I * SK_STEP;
-            cx ra[RC_NB], rb[RC_NB], cv[SK_R];
+            rc_cx *p = c < na ? ya + c : c < na + nb ? yb + (c - na) : lam + (c - na - nb);
+            rc_cs_step(p);
+            rc_cx ra[RC_NB], rb[RC_NB], cv[SK_R];
             kern(m, i, w->k.axis + 3 * q, ya, yb, lam, na ? ra : NULL, nb ? rb : NULL, cv, NULL, NULL, NULL);
-            *p = creal(*p);
+            rc_cs_unstep(p);
             /* d/dLambda = cj d/dlambda: the residual holds lambda = Lambda' */
-            const double sc = (c < na + nb ? 1.0 : cj) / SK_STEP;
+            const double sc = (c < na + nb ? 1.0 : cj) / RC_CSTEP;
             int r = 0;
             for (int k = 0; k < na; k++, r++)
                 if (row_free(m, idx[r])) val[slot[r * nc + c]] += sc * cimag(ra[k]);
@@ -541,7 +533,7 @@ int rc_stk_prepare(const rc_model *m, rc_data *d, rc_stk_work *w, double *Y)
      * the positions only; the change of least kinetic energy) */
     for (int j = 0; j < nr; j++) {
         const int q = K->idx[j] / SK_R, i = K->inter[q];
-        cx ya[RC_NB], yb[RC_NB], c[SK_R];
+        rc_cx ya[RC_NB], yb[RC_NB], c[SK_R];
         load(m, i, Y, NULL, ya, yb);
         kern(m, i, K->axis + 3 * q, ya, yb, NULL, NULL, NULL, c, NULL, NULL, NULL);
         K->b[j] = -creal(c[K->idx[j] % SK_R]);
@@ -581,7 +573,7 @@ int rc_stk_restart(const rc_model *m, rc_data *d, rc_stk_work *w, double t, doub
 static void force_of(const rc_model *m, const sk_core *K, int q, const double *Y, const double *lam, double *F)
 {
     const int i = K->inter[q];
-    cx ya[RC_NB], yb[RC_NB], c[SK_R], t1[3], t2[3];
+    rc_cx ya[RC_NB], yb[RC_NB], c[SK_R], t1[3], t2[3];
     load(m, i, Y, NULL, ya, yb);
     kern(m, i, K->axis + 3 * q, ya, yb, NULL, NULL, NULL, c, NULL, t1, t2);
     for (int k = 0; k < 3; k++) F[k] = lam[0] * creal(t1[k]) + lam[1] * creal(t2[k]);

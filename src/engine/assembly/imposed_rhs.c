@@ -1,13 +1,21 @@
 /*
- * Imposed velocities in the right-hand side (imposed.h), included by
- * assemble_rhs.c after the kernels. Overwrites the rates of the imposed
- * rows, after every force has been added to them (their values are then
- * the free accelerations), and integrates minus the power of the reactions
- * into W_imp.
+ * Imposed velocities in the right-hand side (model/imposed.h), in real
+ * arithmetic. Overwrites the rates of the imposed rows, after every force
+ * has been added to them (their values are then the free accelerations),
+ * and integrates minus the power of the reactions into W_imp.
  */
+#include <math.h>
+#include <tgmath.h>
 
-/* Rate of an imposed component: Fscale f'(t / Ascale) / Ascale. */
-static double imp_rate(const rc_model *m, int tab, double ascale, double fscale, double t)
+#include "model/imposed.h"
+#include "model/model.h"
+#include "model/table.h"
+#include "engine/assembly/assembly.h"
+
+#include "engine/kernels/as_real.h"
+#include "engine/kernels/vec.inc"
+
+double rc_imp_rate(const rc_model *m, int tab, double ascale, double fscale, double t)
 {
     double f, df;
     rc_table_eval(&m->table[tab], t / ascale, &f, &df);
@@ -22,7 +30,7 @@ void rc_imp_rhs(const rc_model *m, rc_data *d, double t, const double *y, double
     for (int k = 0; k < p->nt; k++) {
         if (t > p->ttstop[k]) continue;
         const int r = p->trow[k];
-        const double a = imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t);
+        const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t);
         d->imp_free[r] = ydot[r];
         power += m->body_mass[p->tbody[k]] * (a - ydot[r]) * y[r];
         ydot[r] = a;
@@ -36,7 +44,7 @@ void rc_imp_rhs(const rc_model *m, rc_data *d, double t, const double *y, double
         double wgd[3], wd[3], dw[3];
         for (int k = 0; k < 3; k++) {
             const int tab = p->rtab[3 * j + k];
-            wgd[k] = tab < 0 ? 0.0 : imp_rate(m, tab, p->rascale[3 * j + k], p->rfscale[3 * j + k], t);
+            wgd[k] = tab < 0 ? 0.0 : rc_imp_rate(m, tab, p->rascale[3 * j + k], p->rfscale[3 * j + k], t);
         }
         rotate_r(y + a + 3, wgd, wd, 1);
         for (int k = 0; k < 3; k++) {

@@ -1,17 +1,23 @@
 /*
- * Imposed velocities in the Jacobian (imposed.h), included by
- * assemble_jac.c after the kernels. Called when every element has added
- * its entries: the imposed rows then hold the derivatives of the free
- * accelerations, which give the W_imp row; then the rows are replaced by
- * the derivatives of the imposed rates (zero for translations; for
- * rotations, of R(q)^T dw_g/dt with respect to q, by complex step).
+ * Imposed velocities in the Jacobian (model/imposed.h). Called when every
+ * element has added its entries: the imposed rows then hold the
+ * derivatives of the free accelerations, which give the W_imp row; then the
+ * rows are replaced by the derivatives of the imposed rates (zero for
+ * translations; for rotations, of R(q)^T dw_g/dt with respect to q, by
+ * complex step).
  */
-static double imp_rate_j(const rc_model *m, int tab, double ascale, double fscale, double t)
-{
-    double f, df;
-    rc_table_eval(&m->table[tab], t / ascale, &f, &df);
-    return fscale * df / ascale;
-}
+#include <complex.h>
+#include <math.h>
+#include <string.h>
+#include <tgmath.h>
+
+#include "model/imposed.h"
+#include "model/model.h"
+#include "engine/assembly/assembly.h"
+#include "engine/kernels/cstep.h"
+
+#include "engine/kernels/as_complex.h"
+#include "engine/kernels/vec.inc"
 
 int rc_imp_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val)
 {
@@ -29,7 +35,7 @@ int rc_imp_jac(const rc_model *m, rc_data *d, double t, const double *y, double 
         if (t > p->ttstop[k]) continue;
         const int r = p->trow[k];
         const double mass = m->body_mass[p->tbody[k]];
-        const double a = imp_rate_j(m, p->ttab[k], p->tascale[k], p->tfscale[k], t);
+        const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t);
         act[r] = 1.0;
         cf[r] = -mass * y[r];
         dp[r] += mass * (a - d->imp_free[r]);
@@ -41,11 +47,11 @@ int rc_imp_jac(const rc_model *m, rc_data *d, double t, const double *y, double 
         double wgd[3], jw[3];
         for (int k = 0; k < 3; k++) {
             const int tab = p->rtab[3 * j + k];
-            wgd[k] = tab < 0 ? 0.0 : imp_rate_j(m, tab, p->rascale[3 * j + k], p->rfscale[3 * j + k], t);
+            wgd[k] = tab < 0 ? 0.0 : rc_imp_rate(m, tab, p->rascale[3 * j + k], p->rfscale[3 * j + k], t);
             jw[k] = J[3 * k] * w[0] + J[3 * k + 1] * w[1] + J[3 * k + 2] * w[2];
         }
         T q[4], wg[3] = {wgd[0], wgd[1], wgd[2]}, wd[3];
-        for (int c = 0; c < 4; c++) q[c] = y[a + 3 + c];
+        rc_cs_load(y + a + 3, 4, q);
         rotate_c(q, wg, wd, 1);
         double tau[3], dwv[3];
         for (int k = 0; k < 3; k++) dwv[k] = creal(wd[k]) - d->imp_free[a + 10 + k];
@@ -57,9 +63,9 @@ int rc_imp_jac(const rc_model *m, rc_data *d, double t, const double *y, double 
         }
         /* q-dependence of the imposed rate, exact by complex step */
         for (int c = 0; c < 4; c++) {
-            q[c] += I * RC_CSTEP;
+            rc_cs_step(&q[c]);
             rotate_c(q, wg, wd, 1);
-            q[c] = creal(q[c]);
+            rc_cs_unstep(&q[c]);
             for (int k = 0; k < 3; k++) dp[a + 3 + c] += jw[k] * cimag(wd[k]) / RC_CSTEP;
         }
     }
@@ -78,16 +84,16 @@ int rc_imp_jac(const rc_model *m, rc_data *d, double t, const double *y, double 
         double wgd[3];
         for (int k = 0; k < 3; k++) {
             const int tab = p->rtab[3 * j + k];
-            wgd[k] = tab < 0 ? 0.0 : imp_rate_j(m, tab, p->rascale[3 * j + k], p->rfscale[3 * j + k], t);
+            wgd[k] = tab < 0 ? 0.0 : rc_imp_rate(m, tab, p->rascale[3 * j + k], p->rfscale[3 * j + k], t);
         }
         T q[4], wg[3] = {wgd[0], wgd[1], wgd[2]}, wd[3];
-        for (int c = 0; c < 4; c++) q[c] = y[a + 3 + c];
+        rc_cs_load(y + a + 3, 4, q);
         for (int c = 0; c < 4; c++) {
-            q[c] += I * RC_CSTEP;
+            rc_cs_step(&q[c]);
             rotate_c(q, wg, wd, 1);
-            q[c] = creal(q[c]);
+            rc_cs_unstep(&q[c]);
             for (int k = 0; k < 3; k++)
-                if (p->rqslot[12 * j + 4 * k + c] >= 0) val[p->rqslot[12 * j + 4 * k + c]] = cimag(wd[k]) / RC_CSTEP;
+                if (p->rqslot[12 * j + 4 * k + c] >= 0) val[p->rqslot[12 * j + 4 * k + c]] = rc_cs_deriv(wd[k]);
         }
     }
     /* the W_imp row: dW_imp/dt = -P */

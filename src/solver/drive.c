@@ -91,10 +91,11 @@ void root_directions(const rc_model *m, const rc_data *d, int *dir)
 }
 
 /* One event to the sink; RC_OK or the output's error. */
-rc_status sink_event(ev_sink *k, double t, const char *kind, const char *element, const double v[3],
+rc_status sink_event(ev_sink *k, double t, rc_event_kind ek, const char *element, const double v[3],
                             rc_error *err)
 {
     rc_status st = RC_OK;
+    const char *kind = rc_event_kind_name(ek);
     if (k->out) st = v ? rc_output_event_values(k->out, t, kind, element, v, err) : rc_output_event(k->out, t, kind, element, err);
     if (!st && k->fn && !k->stop) {
         const double none[3] = {NAN, NAN, NAN}; /* not an interface, as in the file */
@@ -453,7 +454,7 @@ static rc_status settle(const rc_model *m, rc_data *d, ev_sink *sink, double t, 
                 m->method == 2 && rc_stk_settle_capable(m, i)
                     ? "held by a unilateral constraint until its force turns tensile"
                     : "its penalty law held closed until P returns to 0");
-    const rc_event ev = {i, "contact_settle"};
+    const rc_event ev = {i, RC_EV_CONTACT_SETTLE};
     return write_event(m, d, sink, t, y, &ev, err);
 }
 
@@ -786,7 +787,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
         if (at_bp) {
             /* a time breakpoint: an imposed velocity ends; restart there */
             s.events++;
-            if ((st = sink_event(&sink, t, "impvel_stop", "/IMPVEL", NULL, err))) goto done;
+            if ((st = sink_event(&sink, t, RC_EV_IMPVEL_STOP, "/IMPVEL", NULL, err))) goto done;
             bk->add_stats(self, &s);
             BKCHECK(bk->restart(self, t, 1), "ReInit");
             s.reinits++;
@@ -838,8 +839,8 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             for (int k = 0; k < nev && k < RC_MAX_EV; k++) {
                 const int i = ev[k].inter;
                 if (i < 0) continue;
-                if (!strcmp(ev[k].kind, "contact_open") || !strcmp(ev[k].kind, "contact_separate")) t_open[i] = t;
-                if (strcmp(ev[k].kind, "contact_close")) continue;
+                if (ev[k].kind == RC_EV_CONTACT_OPEN || ev[k].kind == RC_EV_CONTACT_SEPARATE) t_open[i] = t;
+                if (ev[k].kind != RC_EV_CONTACT_CLOSE) continue;
                 const double flight = t - t_open[i], phase = t_open[i] - t_close[i];
                 nshrink[i] = flight < t_flight[i] ? nshrink[i] + 1 : 0; /* the flights shrink */
                 t_flight[i] = flight;
@@ -856,7 +857,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
                 if (i < 0) continue; /* a contact coupling: its faces change modes with the state moving */
                 zeno_n[i] = t - zeno_t[i] <= RC_ZENO_REL * fmax(fabs(t), dtout) ? zeno_n[i] + 1 : 0;
                 zeno_t[i] = t;
-                if (zeno_n[i] > RC_ZENO_MAX && !strncmp(ev[k].kind, "contact_", 8) &&
+                if (zeno_n[i] > RC_ZENO_MAX && (ev[k].kind == RC_EV_CONTACT_CLOSE || ev[k].kind == RC_EV_CONTACT_OPEN || ev[k].kind == RC_EV_CONTACT_SEPARATE || ev[k].kind == RC_EV_CONTACT_SETTLE) &&
                     d->inter_mode[i] == RC_MODE_CLOSED) {
                     if (!d->inter_settled[i] && (st = settle(m, d, &sink, t, y, i, &s, show, err))) goto done;
                     zeno_n[i] = 0;
@@ -868,7 +869,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
                              "event accumulation (Zeno) at t = %.9g s in %s: more than %d events within %.2g s of "
                              "each other (last: %s); the modes of this element switch without the state moving: "
                              "tighter tolerances or a smoother law may help",
-                             t, m->inter_name[i], RC_ZENO_MAX, RC_ZENO_REL * fmax(fabs(t), dtout), ev[k].kind);
+                             t, m->inter_name[i], RC_ZENO_MAX, RC_ZENO_REL * fmax(fabs(t), dtout), rc_event_kind_name(ev[k].kind));
                     fail_reason = reason;
                     st = RC_SET(err, RC_ESOLVER, "%s", reason);
                     goto done;

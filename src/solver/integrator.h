@@ -86,8 +86,9 @@ int time_breakpoints(const rc_model *m, double tend, double **bp);
 /* The root directions of the current modes (only the crossing that changes
  * a mode is a root) into dir[RC_ROOTS_PER_INTER ninter]. */
 void root_directions(const rc_model *m, const rc_data *d, int *dir);
-/* One event to the sink; v: the interface's values, NULL when none. */
-rc_status sink_event(ev_sink *k, double t, const char *kind, const char *element, const double v[3], rc_error *err);
+/* One event to the sink, under its kind's name (rc_event_kind_name); v: the
+ * interface's values, NULL when none. */
+rc_status sink_event(ev_sink *k, double t, rc_event_kind kind, const char *element, const double v[3], rc_error *err);
 /* Event `ev` at (t, y) with its interface's P, dP/dt and normal force. */
 rc_status write_event(const rc_model *m, const rc_data *d, ev_sink *o, double t, const double *y, const rc_event *ev,
                       rc_error *err);

@@ -7,6 +7,7 @@
 #include "ricochet/ricochet.h"
 #include "model/model.h"
 #include "solver/impacts.h"
+#include "engine/assembly/event_kind.h"
 
 #include <math.h>
 #include <netcdf.h>
@@ -745,6 +746,32 @@ static void test_output_impacts_demo_closed_form(void)
     rc_case_free(c);
 }
 
+/* Every event kind has one name, distinct from the others, listed in the
+ * events table's kinds of docs/output-format.md. */
+static void test_output_event_kind_names_documented(void)
+{
+    FILE *f = fopen("docs/output-format.md", "rb");
+    ENSURE(f != NULL);
+    if (!f) return;
+    static char doc[1 << 17];
+    size_t n = fread(doc, 1, sizeof doc - 1, f);
+    fclose(f);
+    doc[n] = '\0';
+    const char *kinds = strstr(doc, "Kinds (element");
+    ENSURE(kinds != NULL);
+    ENSURE(rc_event_kind_name(RC_EV_NONE) == NULL && rc_event_kind_name(RC_EV_NKINDS) == NULL);
+    for (int k = RC_EV_NONE + 1; k < RC_EV_NKINDS; k++) {
+        const char *name = rc_event_kind_name((rc_event_kind)k);
+        ENSURE(name != NULL && name[0] != '\0');
+        if (!name) continue;
+        for (int j = RC_EV_NONE + 1; j < k; j++) ENSURE(strcmp(name, rc_event_kind_name((rc_event_kind)j)) != 0);
+        char quoted[64];
+        snprintf(quoted, sizeof quoted, "`%s`", name);
+        if (kinds && !strstr(kinds, quoted)) printf("    %s not in docs/output-format.md\n", name);
+        ENSURE(kinds && strstr(kinds, quoted));
+    }
+}
+
 void suite_output(void);
 void suite_output(void)
 {
@@ -758,4 +785,5 @@ void suite_output(void)
     RUN_TEST(test_output_sha256_vectors);
     RUN_TEST(test_output_coordinates_provenance);
     RUN_TEST(test_output_impacts_demo_closed_form);
+    RUN_TEST(test_output_event_kind_names_documented);
 }

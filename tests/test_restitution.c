@@ -11,6 +11,7 @@
 
 #include "base/error.h"
 #include "engine/events/events.h"
+#include "engine/events/settle.h"
 #include "engine/analyses/restitution.h"
 #include "model/model.h"
 #include "model/power.h"
@@ -213,10 +214,94 @@ static void test_restitution_settling(void)
     rc_model_free(m);
 }
 
+/* The engine's verdict after events (engine/events/settle.c): flights
+ * shrinking twice in a row, the last shorter than the contact phase before
+ * it, settle the closed contact; more than RC_ZENO_MAX crowded events
+ * settle a closed contact when they are its contact events, and end the
+ * run otherwise, with the message naming the element and the last kind. */
+static void test_restitution_settle_verdicts(void)
+{
+    const char *text =
+        "/BEGIN\nsettle\n2022,0\nkg,m,s\nkg,m,s\n/FUNCT/1\nlinear\n0,0\n1,1e8\n"
+        "/NODE\n1,0,0,1.05\n/RBODY/1\nball\n1,,,,1\n0.001,0.001,0.001\n0,0,0\n"
+        "/SURF/ELLIPS/1\nball\n0,2,1\n0,0,1.05\n0.05,0.05,0.05\n/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
+        "/INTER/TYPE6/1\nfloor\n         1         2\n"
+        "                                                           0\n"
+        "                   0         0         0         0         0\n"
+        "         1         0                                                 0\n         0\n"
+        "                             0         0                                     0.7\n"
+        "/RUN\n3,0.01\n/END\n";
+    rc_error e;
+    rc_model *m = tu_compile_text(text, "settle_verdicts.rad", &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    rc_data *d = rc_data_new(m);
+    rc_settle *h = rc_settle_new(m);
+    ENSURE(d && h);
+    if (!d || !h) goto out;
+    rc_event sev[4];
+    char why[512] = "";
+    int ns = 0, restart = 0;
+    /* bounces: closes at 1.0, 1.5, 1.8, 1.95, separations 0.1 s after the
+     * first three: flights 0.4, 0.2, 0.05 against a contact phase of 0.1 */
+    const double tc[4] = {1.0, 1.5, 1.8, 1.95};
+    for (int k = 0; k < 4; k++) {
+        d->inter_mode[0] = RC_MODE_CLOSED;
+        const rc_event close = {0, RC_EV_CONTACT_CLOSE};
+        restart = 0;
+        ENSURE(rc_settle_after_events(h, m, d, tc[k], 0.01, &close, 1, sev, 4, &ns, &restart, why, sizeof why) ==
+               RC_SETTLE_GO_ON);
+        ENSURE(ns == (k == 3) && restart == (k == 3) && d->inter_settled[0] == (k == 3));
+        if (k == 3) ENSURE(sev[0].inter == 0 && sev[0].kind == RC_EV_CONTACT_SETTLE);
+        if (k == 3) break;
+        d->inter_mode[0] = RC_MODE_OPEN;
+        const rc_event sep = {0, RC_EV_CONTACT_SEPARATE};
+        ENSURE(rc_settle_after_events(h, m, d, tc[k] + 0.1, 0.01, &sep, 1, sev, 4, &ns, &restart, why, sizeof why) ==
+                   RC_SETTLE_GO_ON &&
+               ns == 0);
+    }
+    ENSURE(strstr(rc_settle_hold(m, 0), "penalty law"));
+    /* crowded contact events of a closed contact: it settles */
+    rc_settle_free(h);
+    h = rc_settle_new(m);
+    d->inter_settled[0] = 0;
+    d->inter_mode[0] = RC_MODE_CLOSED;
+    const rc_event open = {0, RC_EV_CONTACT_OPEN}, slip = {0, RC_EV_FRIC_SLIP};
+    int go = 1;
+    for (int k = 0; k <= RC_ZENO_MAX + 1; k++) {
+        restart = 0;
+        go &= rc_settle_after_events(h, m, d, 2.0, 0.01, &open, 1, sev, 4, &ns, &restart, why, sizeof why) ==
+              RC_SETTLE_GO_ON;
+        if (k < RC_ZENO_MAX + 1) go &= ns == 0 && !restart;
+    }
+    ENSURE(go && ns == 1 && restart && d->inter_settled[0] == 1 && sev[0].kind == RC_EV_CONTACT_SETTLE);
+    /* crowded events of another kind: Zeno */
+    rc_settle_free(h);
+    h = rc_settle_new(m);
+    go = 1;
+    for (int k = 0; k < RC_ZENO_MAX + 1; k++)
+        go &= rc_settle_after_events(h, m, d, 2.0, 0.01, &slip, 1, sev, 4, &ns, &restart, why, sizeof why) ==
+              RC_SETTLE_GO_ON;
+    ENSURE(go);
+    ENSURE(rc_settle_after_events(h, m, d, 2.0, 0.01, &slip, 1, sev, 4, &ns, &restart, why, sizeof why) ==
+           RC_SETTLE_ZENO);
+    printf("    %s\n", why);
+    ENSURE(strstr(why, "event accumulation (Zeno) at t = 2 s in ") && strstr(why, m->inter_name[0]) &&
+           strstr(why, "more than 200 events within 2e-07 s of each other (last: fric_slip)"));
+out:
+    rc_settle_free(h);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 void suite_restitution(void);
 void suite_restitution(void)
 {
     RUN_TEST(test_restitution_settling);
+    RUN_TEST(test_restitution_settle_verdicts);
     RUN_TEST(test_restitution_ode_matches_linear_closed_form);
     RUN_TEST(test_restitution_type6_nonlinear_asked);
     RUN_TEST(test_restitution_power_asked);

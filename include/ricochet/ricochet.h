@@ -210,7 +210,7 @@ typedef struct rc_stats {
  * row of the events table, in order, with
  *   t        the event time [s]
  *   kind     the event kind as in the events table ("contact_open",
- *            "contact_close", "release", ..., "impvel_stop";
+ *            "contact_close", "contact_separate", ..., "impvel_stop";
  *            docs/output-format.md)
  *   element  the element ("/INTER/TYPE6/1", "/IMPVEL")
  *   values   the interface's penetration [m], approach speed [m/s] and

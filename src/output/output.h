@@ -128,7 +128,8 @@ rc_status rc_output_open(rc_output **out, const char *path, const rc_output_meta
  * buffered and written in blocks; rc_output_close writes what is left. */
 rc_status rc_output_frame(rc_output *o, const rc_frame *f, rc_error *err);
 /* Append one row to the events table: time [s], kind (e.g. "contact_close",
- * "contact_open", "inter_start", "inter_stop"), element (e.g. "/INTER/TYPE6/3"). */
+ * "contact_open", "inter_start", "inter_stop": the engine's names of its
+ * event kinds), element (e.g. "/INTER/TYPE6/3"). */
 rc_status rc_output_event(rc_output *o, double t, const char *kind, const char *element,
                           rc_error *err);
 /* The same with the event's own values: values[0] penetration P of the

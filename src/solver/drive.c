@@ -8,9 +8,11 @@
  *
  * Loop: integrate to the next output time (single steps while an impact is
  * in progress, or when the backend asks for them); at a time breakpoint,
- * restart; at a root, flip the modes (events.c), write the events and a
- * record, and restart the integrator when the modes' change calls for it
- * (the backend decides, rc_backend.after_events).
+ * restart; at a root, flip the modes (engine/events/events.c), write the
+ * events, act on the engine's verdict on settling and event accumulation
+ * (engine/events/settle.c), write a record, and restart the integrator when
+ * the modes' change calls for it (the backend decides,
+ * rc_backend.after_events).
  */
 #include <float.h>
 #include <math.h>
@@ -22,12 +24,12 @@
 
 #include "base/error.h"
 #include "engine/events/events.h"
+#include "engine/events/settle.h"
 #include "model/coupling.h"
 #include "model/coupling_contact.h"
 #include "model/imposed.h"
 #include "model/joint.h"
 #include "model/model.h"
-#include "engine/constraints/stick.h"
 #include "model/power.h"
 #include "output/output.h"
 #include "solver/guards.h"
@@ -91,10 +93,11 @@ void root_directions(const rc_model *m, const rc_data *d, int *dir)
 }
 
 /* One event to the sink; RC_OK or the output's error. */
-rc_status sink_event(ev_sink *k, double t, const char *kind, const char *element, const double v[3],
+rc_status sink_event(ev_sink *k, double t, rc_event_kind ek, const char *element, const double v[3],
                             rc_error *err)
 {
     rc_status st = RC_OK;
+    const char *kind = rc_event_kind_name(ek);
     if (k->out) st = v ? rc_output_event_values(k->out, t, kind, element, v, err) : rc_output_event(k->out, t, kind, element, err);
     if (!st && k->fn && !k->stop) {
         const double none[3] = {NAN, NAN, NAN}; /* not an interface, as in the file */
@@ -437,24 +440,19 @@ void progress_line(double tend, const rc_stats *s, double t, long steps, double 
 }
 
 
-/* Hold the closed contact of interface i in persistent contact at t
- * (docs/theory.md 5.2): the event contact_settle, the statistics, a line on
- * stderr with the progress. */
-static rc_status settle(const rc_model *m, rc_data *d, ev_sink *sink, double t, const double *y, int i, rc_stats *s,
-                        int show, rc_error *err)
+/* A contact the engine settled into persistent contact at t (its event
+ * contact_settle, engine/events/settle.c; docs/theory.md 5.2): the event
+ * written, the statistics, a line on stderr with the progress. */
+static rc_status settled(const rc_model *m, const rc_data *d, ev_sink *sink, double t, const double *y,
+                         const rc_event *ev, rc_stats *s, int show, rc_error *err)
 {
-    d->inter_settled[i] = 1;
     s->settles++;
     s->t_settle = t;
     s->events++;
     if (show) /* with the progress (not with `ricochet run -q`, nor for an embedding without it) */
         fprintf(stderr, "ricochet: %s settled into persistent contact at t = %.9g s (bounces accumulated; %s)\n",
-                m->inter_name[i], t,
-                m->method == 2 && rc_stk_settle_capable(m, i)
-                    ? "held by a unilateral constraint until its force turns tensile"
-                    : "its penalty law held closed until P returns to 0");
-    const rc_event ev = {i, "contact_settle"};
-    return write_event(m, d, sink, t, y, &ev, err);
+                m->inter_name[ev->inter], t, rc_settle_hold(m, ev->inter));
+    return write_event(m, d, sink, t, y, ev, err);
 }
 
 /* ---- the driver ------------------------------------------------------- */
@@ -628,9 +626,9 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     memset(&im, 0, sizeof im);
     char note[sizeof s.sampling_note];
     rc_impacts_sampling_note(m, note, sizeof note);
-    int *rootdir = NULL, *roots = NULL, *zeno_n = NULL;
-    double *gbuf = NULL, *flook = NULL, *bp = NULL, *zeno_t = NULL, *t_open = NULL, *t_close = NULL, *t_flight = NULL;
-    int *nshrink = NULL;
+    int *rootdir = NULL, *roots = NULL;
+    double *gbuf = NULL, *flook = NULL, *bp = NULL;
+    rc_settle *hist = NULL; /* the interfaces' closes and openings (settling, Zeno guard) */
     int nbp = 0, ibp = 0;
     rc_output *out = NULL;
     frame_buf fb;
@@ -664,19 +662,12 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     rootdir = calloc((size_t)nr + 1, sizeof(int));
     roots = calloc((size_t)nr + 1, sizeof(int));
     gbuf = calloc((size_t)nr + 1, sizeof(double));
-    zeno_t = calloc((size_t)m->ninter + 1, sizeof(double));
-    zeno_n = calloc((size_t)m->ninter + 1, sizeof(int));
-    t_open = malloc(((size_t)m->ninter + 1) * sizeof(double));
-    t_close = malloc(((size_t)m->ninter + 1) * sizeof(double));
-    t_flight = malloc(((size_t)m->ninter + 1) * sizeof(double));
-    nshrink = calloc((size_t)m->ninter + 1, sizeof(int));
+    hist = rc_settle_new(m);
     flook = calloc((size_t)n, sizeof(double));
-    if (rc_impacts_init(&im, m) || !rootdir || !roots || !gbuf || !zeno_t || !zeno_n || !flook || !t_open ||
-        !t_close || !t_flight || !nshrink) {
+    if (rc_impacts_init(&im, m) || !rootdir || !roots || !gbuf || !hist || !flook) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the solver");
         goto done;
     }
-    for (int i = 0; i < m->ninter; i++) t_open[i] = t_close[i] = t_flight[i] = NAN; /* no contact phase yet */
     s.t_settle = NAN;
     /* initial state and modes */
     rc_initial_state(m, y);
@@ -786,7 +777,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
         if (at_bp) {
             /* a time breakpoint: an imposed velocity ends; restart there */
             s.events++;
-            if ((st = sink_event(&sink, t, "impvel_stop", "/IMPVEL", NULL, err))) goto done;
+            if ((st = sink_event(&sink, t, RC_EV_IMPVEL_STOP, "/IMPVEL", NULL, err))) goto done;
             bk->add_stats(self, &s);
             BKCHECK(bk->restart(self, t, 1), "ReInit");
             s.reinits++;
@@ -833,46 +824,21 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             for (int k = 0; k < nev && k < RC_MAX_EV; k++) rc_impacts_event(&im, m, d, ev[k].inter, ev[k].kind, t, y);
             for (int k = 0; k < nev && k < RC_MAX_EV; k++)
                 if ((st = write_event(m, d, &sink, t, y, &ev[k], err))) goto done;
-            /* settling: a contact that closes after a flight short against
-             * its last contact phase is held closed (RC_SETTLE_FLIGHT) */
-            for (int k = 0; k < nev && k < RC_MAX_EV; k++) {
-                const int i = ev[k].inter;
-                if (i < 0) continue;
-                if (!strcmp(ev[k].kind, "contact_open") || !strcmp(ev[k].kind, "contact_separate")) t_open[i] = t;
-                if (strcmp(ev[k].kind, "contact_close")) continue;
-                const double flight = t - t_open[i], phase = t_open[i] - t_close[i];
-                nshrink[i] = flight < t_flight[i] ? nshrink[i] + 1 : 0; /* the flights shrink */
-                t_flight[i] = flight;
-                t_close[i] = t;
-                if (d->inter_mode[i] == RC_MODE_CLOSED && !d->inter_settled[i] && nshrink[i] >= RC_SETTLE_SHRINK &&
-                    flight < RC_SETTLE_FLIGHT * phase && (st = settle(m, d, &sink, t, y, i, &s, show, err)))
-                    goto done;
-                jumped |= d->inter_settled[i]; /* its root function changed: restart */
-            }
-            /* event accumulation: report it rather than stall; the contact
-             * events of an interface that is closed settle it instead */
-            for (int k = 0; k < nev && k < RC_MAX_EV; k++) {
-                const int i = ev[k].inter;
-                if (i < 0) continue; /* a contact coupling: its faces change modes with the state moving */
-                zeno_n[i] = t - zeno_t[i] <= RC_ZENO_REL * fmax(fabs(t), dtout) ? zeno_n[i] + 1 : 0;
-                zeno_t[i] = t;
-                if (zeno_n[i] > RC_ZENO_MAX && !strncmp(ev[k].kind, "contact_", 8) &&
-                    d->inter_mode[i] == RC_MODE_CLOSED) {
-                    if (!d->inter_settled[i] && (st = settle(m, d, &sink, t, y, i, &s, show, err))) goto done;
-                    zeno_n[i] = 0;
-                    jumped = 1;
-                    continue;
-                }
-                if (zeno_n[i] > RC_ZENO_MAX) {
-                    snprintf(reason, sizeof reason,
-                             "event accumulation (Zeno) at t = %.9g s in %s: more than %d events within %.2g s of "
-                             "each other (last: %s); the modes of this element switch without the state moving: "
-                             "tighter tolerances or a smoother law may help",
-                             t, m->inter_name[i], RC_ZENO_MAX, RC_ZENO_REL * fmax(fabs(t), dtout), ev[k].kind);
-                    fail_reason = reason;
-                    st = RC_SET(err, RC_ESOLVER, "%s", reason);
-                    goto done;
-                }
+            /* settling of accumulating bounces and the event accumulation
+             * (Zeno) guard: the engine's verdict on these events
+             * (engine/events/settle.c); the contacts it settled are written
+             * and counted here, a Zeno verdict ends the run */
+            rc_event sev[RC_MAX_EV];
+            int nsev = 0;
+            const rc_settle_verdict verdict =
+                rc_settle_after_events(hist, m, d, t, dtout, ev, nev < RC_MAX_EV ? nev : RC_MAX_EV, sev, RC_MAX_EV,
+                                       &nsev, &jumped, reason, sizeof reason);
+            for (int k = 0; k < nsev && k < RC_MAX_EV; k++)
+                if ((st = settled(m, d, &sink, t, y, &sev[k], &s, show, err))) goto done;
+            if (verdict == RC_SETTLE_ZENO) {
+                fail_reason = reason;
+                st = RC_SET(err, RC_ESOLVER, "%s", reason);
+                goto done;
             }
             /* contacts left at zero penetration or zero force: by the state */
             nev += resolve_touching(m, d, t, y, flook, &sink, &im, &s.events, &jumped, &st, err);
@@ -987,12 +953,7 @@ done:
     free(rootdir);
     free(roots);
     free(gbuf);
-    free(zeno_t);
-    free(zeno_n);
-    free(t_open);
-    free(t_close);
-    free(t_flight);
-    free(nshrink);
+    rc_settle_free(hist);
     free(flook);
     free(bp);
     frame_free(&fb);

@@ -573,7 +573,7 @@ int rc_guards_started(rc_guards *g, const rc_data *d)
     return 0;
 }
 
-void rc_guards_event(rc_guards *g, const rc_data *d, int i, const char *kind, double t)
+void rc_guards_event(rc_guards *g, const rc_data *d, int i, rc_event_kind kind, double t)
 {
     if (!g || i < 0 || i >= g->m->ninter || t <= 0.0) return; /* t = 0: the start (rc_guards_started) */
     const int mode = d->inter_mode[i], was = g->prev_mode[i];
@@ -583,7 +583,7 @@ void rc_guards_event(rc_guards *g, const rc_data *d, int i, const char *kind, do
     }
     if (mode != RC_MODE_CLOSED && was == RC_MODE_CLOSED) g->nleave[i]++;
     g->prev_mode[i] = mode;
-    if (!strcmp(kind, "contact_settle")) {
+    if (kind == RC_EV_CONTACT_SETTLE) {
         g->settled[i] = 1;
         g->t_settle[i] = t;
     }

@@ -84,7 +84,7 @@ int rc_guards_record(rc_guards *g, const rc_data *d, double t, const double *y, 
  * measured against it (no record is written). 1: stop. */
 int rc_guards_before_events(rc_guards *g, const rc_data *d, double t, const double *y);
 /* An event of interface i (>= 0) at t, after its modes changed. */
-void rc_guards_event(rc_guards *g, const rc_data *d, int i, const char *kind, double t);
+void rc_guards_event(rc_guards *g, const rc_data *d, int i, rc_event_kind kind, double t);
 /* The violation that stopped the run ("" none). */
 const char *rc_guards_message(const rc_guards *g);
 /* The violations kept so far (the first RC_GUARD_ROWS): *rows, their count. */

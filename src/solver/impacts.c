@@ -74,14 +74,14 @@ static void hist_push(rc_impact_hist *h, double t, const rc_inter_report *r, int
     h->n++;
 }
 
-void rc_impacts_event(rc_impacts *im, const rc_model *m, const rc_data *d, int i, const char *kind, double t,
+void rc_impacts_event(rc_impacts *im, const rc_model *m, const rc_data *d, int i, rc_event_kind kind, double t,
                       const double *y)
 {
-    if (i < 0 || i >= im->ninter || !kind) return;
+    if (i < 0 || i >= im->ninter || kind == RC_EV_NONE) return;
     /* an event changes the law's branch: the fits do not reach across it */
     im->h[i].n = 0;
     int k = im->cur[i];
-    if (!strcmp(kind, "contact_close")) {
+    if (kind == RC_EV_CONTACT_CLOSE) {
         rc_inter_report r;
         report(m, d, i, t, y, &r);
         if (k < 0) {
@@ -105,14 +105,14 @@ void rc_impacts_event(rc_impacts *im, const rc_model *m, const rc_data *d, int i
     }
     if (k < 0) return;
     rc_impact *w = &im->row[k];
-    if (!strcmp(kind, "contact_open")) {
+    if (kind == RC_EV_CONTACT_OPEN) {
         w->t_open = t; /* released: the force stopped (until it closes again) */
-    } else if (!strcmp(kind, "contact_separate") || !strcmp(kind, "inter_stop")) {
+    } else if (kind == RC_EV_CONTACT_SEPARATE || kind == RC_EV_INTER_STOP) {
         rc_inter_report r;
         report(m, d, i, t, y, &r);
         if (isnan(w->t_open)) w->t_open = t;
         w->duration = w->t_open - w->t_close;
-        if (!strcmp(kind, "contact_separate")) {
+        if (kind == RC_EV_CONTACT_SEPARATE) {
             w->v_out = -r.vn;
             w->restitution = w->v_in > 0 ? w->v_out / w->v_in : NAN;
         }

@@ -9,6 +9,7 @@
 
 #include "model/model.h"
 #include "engine/assembly/data.h"
+#include "engine/assembly/event_kind.h"
 
 /* The last two samples of an interface's impact in progress (step ends and
  * events): time [s], penetration P [m], its rate dP/dt [m/s], normal force
@@ -35,7 +36,7 @@ typedef struct rc_impacts {
 int rc_impacts_init(rc_impacts *im, const rc_model *m);
 void rc_impacts_free(rc_impacts *im);
 /* An event `kind` of interface i at (t, y), modes of d after the event. */
-void rc_impacts_event(rc_impacts *im, const rc_model *m, const rc_data *d, int i, const char *kind, double t,
+void rc_impacts_event(rc_impacts *im, const rc_model *m, const rc_data *d, int i, rc_event_kind kind, double t,
                       const double *y);
 /* Is any impact in progress (the backend then samples every step)? */
 int rc_impacts_active(const rc_impacts *im);

@@ -23,19 +23,6 @@
 #include "solver/solver.h"
 #include "engine/assembly/assembly.h"
 
-/* Event accumulation (Zeno): more than RC_ZENO_MAX consecutive events of one
- * element, each within RC_ZENO_REL * max(t, dtout) of the previous, end the
- * run with a message instead of stalling [-]. */
-#define RC_ZENO_MAX 200
-#define RC_ZENO_REL 1e-7
-/* Settling (docs/theory.md 5.2): a contact of a TYPE6 (POWER) interface
- * that closes after a flight shorter than RC_SETTLE_FLIGHT times the
- * contact phase before it (the time between its previous close and its
- * opening), its flights having shrunk RC_SETTLE_SHRINK times in a row, is
- * held closed ("settled"): its release at zero force is suspended, it opens
- * when its penetration returns to zero [-]. */
-#define RC_SETTLE_FLIGHT 1.0
-#define RC_SETTLE_SHRINK 2
 /* Events kept per root return (more are applied but not itemised). */
 #define RC_MAX_EV 64
 /* Progress in a log (stderr not a terminal): a line every RC_LOG_EVERY s. */
@@ -86,8 +73,9 @@ int time_breakpoints(const rc_model *m, double tend, double **bp);
 /* The root directions of the current modes (only the crossing that changes
  * a mode is a root) into dir[RC_ROOTS_PER_INTER ninter]. */
 void root_directions(const rc_model *m, const rc_data *d, int *dir);
-/* One event to the sink; v: the interface's values, NULL when none. */
-rc_status sink_event(ev_sink *k, double t, const char *kind, const char *element, const double v[3], rc_error *err);
+/* One event to the sink, under its kind's name (rc_event_kind_name); v: the
+ * interface's values, NULL when none. */
+rc_status sink_event(ev_sink *k, double t, rc_event_kind kind, const char *element, const double v[3], rc_error *err);
 /* Event `ev` at (t, y) with its interface's P, dP/dt and normal force. */
 rc_status write_event(const rc_model *m, const rc_data *d, ev_sink *o, double t, const double *y, const rc_event *ev,
                       rc_error *err);

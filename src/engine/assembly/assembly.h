@@ -14,6 +14,7 @@
 #include "model/coupling.h"
 #include "model/imposed.h"
 #include "engine/assembly/data.h"
+#include "engine/assembly/event_kind.h"
 
 /* ---- states, right-hand side, Jacobian, roots, reports (body.c,
  *      assemble_rhs.c, assemble_jac.c) ---------------------------------- */
@@ -163,11 +164,12 @@ int rc_cpl_jac(const rc_model *m, rc_data *d, double t, const double *y, double 
 /* Root functions of the contact couplings (rc_cpl_nroots of them), their
  * directions, the face modes at the start and at events (engine/assembly/contact_rhs.inc,
  * included by assemble_rhs.c). rc_cpl_events returns the events written into
- * kinds[]/cpls[] (at most max_ev) and sets *restart when a mode changed. */
+ * kinds[]/cpls[] (at most max_ev; the kinds RC_EV_CPL_CONTACT_*, RC_EV_STOP_*,
+ * event_kind.h) and sets *restart when a mode changed. */
 void rc_cpl_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
 void rc_cpl_root_dirs(const rc_model *m, const rc_data *d, int *dir);
 void rc_cpl_modes_init(const rc_model *m, rc_data *d, double t, const double *y);
-int rc_cpl_events(const rc_model *m, rc_data *d, double t, const double *y, const int *roots, const char **kinds,
+int rc_cpl_events(const rc_model *m, rc_data *d, double t, const double *y, const int *roots, rc_event_kind *kinds,
                   int *cpls, int max_ev, int *restart);
 
 /* The stop force or moment of joint j at (t, y) in the modes of d: the

@@ -375,35 +375,35 @@ void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y)
     rc_cpl_modes_init(m, d, t, y); /* contact coupling faces */
 }
 
-/* Activation window and Inacti tracking; returns the event kind or NULL. */
-static const char *step_window(const rc_model *m, rc_data *d, int i, double t, double *y, const int *r,
+/* Activation window and Inacti tracking; returns the event kind or RC_EV_NONE. */
+static rc_event_kind step_window(const rc_model *m, rc_data *d, int i, double t, double *y, const int *r,
                                int *changed)
 {
     const int mode = d->inter_mode[i];
     if (r[RC_ROOT_TSTOP] > 0 && mode != RC_MODE_INACTIVE) {
         d->inter_mode[i] = RC_MODE_INACTIVE; /* history frozen */
-        return "inter_stop";
+        return RC_EV_INTER_STOP;
     }
     if (r[RC_ROOT_TSTART] > 0 && mode == RC_MODE_INACTIVE && t <= m->inter_tstop[i]) {
         classify(m, d, i, t, y, changed);
-        return "inter_start";
+        return RC_EV_INTER_START;
     }
     /* Inacti 5 tracking: the full Gap is back, or the bodies approach again */
     if (d->inter_track[i] && r[RC_ROOT_TRK_B] < 0) {
         d->inter_track[i] = 0;
         set_state(own(m, i, m->inter_oidx[i], y), 0.0, changed);
-        return "inacti_gap_recovered";
+        return RC_EV_INACTI_GAP_RECOVERED;
     }
     if (d->inter_track[i] && r[RC_ROOT_TRK_A] > 0) {
         enter_zone(m, d, i, y, changed);
-        return "contact_close";
+        return RC_EV_CONTACT_CLOSE;
     }
-    return NULL;
+    return RC_EV_NONE;
 }
 
 /* Hysteresis branches (in the zone); F_h is put exactly on the curve it
  * leaves or joins. */
-static const char *step_branch(const rc_model *m, rc_data *d, int i, double t, double *y, const int *r,
+static rc_event_kind step_branch(const rc_model *m, rc_data *d, int i, double t, double *y, const int *r,
                                int *changed)
 {
     const int mode = d->inter_mode[i], br = d->inter_branch[i];
@@ -411,67 +411,67 @@ static const char *step_branch(const rc_model *m, rc_data *d, int i, double t, d
     if (m->inter_law[i] == RC_LAW_POWER && (mode == RC_MODE_CLOSED || mode == RC_MODE_RELEASED)) {
         if (br == RC_BR_LOAD && r[RC_ROOT_HYST_A] < 0) {
             d->inter_branch[i] = RC_BR_UNLOAD;
-            return "rdf_rebound";
+            return RC_EV_RDF_REBOUND;
         }
         if (br == RC_BR_UNLOAD && r[RC_ROOT_HYST_A] > 0) {
             d->inter_branch[i] = RC_BR_LOAD;
-            return "rdf_approach";
+            return RC_EV_RDF_APPROACH;
         }
-        return NULL;
+        return RC_EV_NONE;
     }
-    if (m->inter_iform[i] == 0 || (mode != RC_MODE_CLOSED && mode != RC_MODE_RELEASED)) return NULL;
+    if (m->inter_iform[i] == 0 || (mode != RC_MODE_CLOSED && mode != RC_MODE_RELEASED)) return RC_EV_NONE;
     double *fh = own(m, i, m->inter_hidx[i], y);
     rc_inter_report q;
     report(m, d, i, t, y, &q);
     if (br == RC_BR_LOAD && r[RC_ROOT_HYST_A] < 0) {
         d->inter_branch[i] = RC_BR_ELASTIC;
         set_state(fh, q.fl, changed);
-        return "hyst_unloading";
+        return RC_EV_HYST_UNLOADING;
     }
     if (br == RC_BR_UNLOAD && r[RC_ROOT_HYST_A] > 0) {
         d->inter_branch[i] = RC_BR_ELASTIC;
         set_state(fh, q.fu, changed);
-        return "hyst_reloading";
+        return RC_EV_HYST_RELOADING;
     }
     if (br == RC_BR_ELASTIC && r[RC_ROOT_HYST_A] < 0) {
         d->inter_branch[i] = RC_BR_LOAD;
         set_state(fh, q.fl, changed);
-        return "hyst_load_curve";
+        return RC_EV_HYST_LOAD_CURVE;
     }
     if (br == RC_BR_ELASTIC && r[RC_ROOT_HYST_B] < 0) {
         d->inter_branch[i] = RC_BR_UNLOAD;
         set_state(fh, q.fu, changed);
-        return "hyst_unload_curve";
+        return RC_EV_HYST_UNLOAD_CURVE;
     }
-    return NULL;
+    return RC_EV_NONE;
 }
 
 /* Contact zone (P) and force clipping (total normal force). */
-static const char *step_contact(const rc_model *m, rc_data *d, int i, double *y, const int *r, int *changed)
+static rc_event_kind step_contact(const rc_model *m, rc_data *d, int i, double *y, const int *r, int *changed)
 {
     const int mode = d->inter_mode[i];
-    if (mode == RC_MODE_INACTIVE || d->inter_track[i]) return NULL;
+    if (mode == RC_MODE_INACTIVE || d->inter_track[i]) return RC_EV_NONE;
     if (mode == RC_MODE_OPEN && r[RC_ROOT_ZONE] > 0) {
         enter_zone(m, d, i, y, changed);
-        return "contact_close";
+        return RC_EV_CONTACT_CLOSE;
     }
     if (mode != RC_MODE_OPEN && r[RC_ROOT_ZONE] < 0) {
         leave_zone(m, d, i, y, changed);
-        return "contact_separate";
+        return RC_EV_CONTACT_SEPARATE;
     }
     if (mode == RC_MODE_CLOSED && r[RC_ROOT_FORCE] < 0) {
         clear_band(d, i);
         d->inter_mode[i] = RC_MODE_RELEASED;
         reset_friction(m, d, i, y, changed);
-        return "contact_open";
+        return RC_EV_CONTACT_OPEN;
     }
     if (mode == RC_MODE_RELEASED && r[RC_ROOT_FORCE] > 0) {
         clear_band(d, i);
         d->inter_mode[i] = RC_MODE_CLOSED;
         reset_friction(m, d, i, y, changed);
-        return "contact_close";
+        return RC_EV_CONTACT_CLOSE;
     }
-    return NULL;
+    return RC_EV_NONE;
 }
 
 /* Incremental friction going from stick to slip: the state takes the
@@ -534,20 +534,20 @@ static void stick_on_state(const rc_model *m, rc_data *d, int i, double t, doubl
  * slip -> stick when the sliding velocity along the force vanishes (the state
  * is then put where the force already is, on the limit). Viscous (total):
  * the adhesion force saturates at the limit and comes back below it. */
-static const char *step_friction(const rc_model *m, rc_data *d, int i, double t, double *y, const int *r,
+static rc_event_kind step_friction(const rc_model *m, rc_data *d, int i, double t, double *y, const int *r,
                                  int *changed)
 {
     const rc_fric *fr = &m->inter_fr[i];
-    if (fr->kind == RC_FK_NONE || d->inter_mode[i] != RC_MODE_CLOSED) return NULL;
+    if (fr->kind == RC_FK_NONE || d->inter_mode[i] != RC_MODE_CLOSED) return RC_EV_NONE;
     rc_inter_report q;
     /* saturated stateless law: the sliding reversed; its mode then follows
      * from the state, saturated again in the new direction or not */
     if (fr->form == RC_FF_VISCOUS && d->inter_slip[i] && r[RC_ROOT_REV] < 0) {
         stateless_friction_mode(m, d, i, t, y);
         *changed = 1; /* ask for a restart: see below */
-        return "fric_reverse";
+        return RC_EV_FRIC_REVERSE;
     }
-    if (r[RC_ROOT_SLIP] <= 0) return NULL;
+    if (r[RC_ROOT_SLIP] <= 0) return RC_EV_NONE;
     if (!d->inter_slip[i]) {
         /* incremental: the state takes the applied force (spring and stick
          * damper), so that the sliding force keeps its direction */
@@ -563,7 +563,7 @@ static const char *step_friction(const rc_model *m, rc_data *d, int i, double t,
              * viscous law chatter across the limit; restart from the event */
             *changed = 1;
         }
-        return fr->form == RC_FF_VISCOUS ? "fric_saturate" : "fric_slip";
+        return fr->form == RC_FF_VISCOUS ? RC_EV_FRIC_SATURATE : RC_EV_FRIC_SLIP;
     }
     double f0[3] = {0.0, 0.0, 0.0};
     if (fr->tidx >= 0)
@@ -583,10 +583,10 @@ static const char *step_friction(const rc_model *m, rc_data *d, int i, double t,
         report(m, d, i, t, y, &u);
         if (u.slip_root > 0 && turn_state(y + m->inter_eadr[i] + fr->tidx, norm3(f0), u.vt, -1.0, changed)) {
             d->inter_slip[i] = 1;
-            return "fric_turn";
+            return RC_EV_FRIC_TURN;
         }
     }
-    return fr->form == RC_FF_VISCOUS ? "fric_unsaturate" : "fric_stick";
+    return fr->form == RC_FF_VISCOUS ? RC_EV_FRIC_UNSATURATE : RC_EV_FRIC_STICK;
 }
 
 /* A settled contact (rc_data.inter_settled) stays so while it is closed. */
@@ -614,19 +614,19 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
         /* window first; then the branch, then the contact, so that crossings
          * falling together (the Stiff line reaching zero releases the force)
          * are all applied, in the order of the law */
-        const char *kind[4] = {step_window(m, d, i, t, y, r, restart), NULL, NULL, NULL};
-        if (!kind[0]) {
+        rc_event_kind kind[4] = {step_window(m, d, i, t, y, r, restart), RC_EV_NONE, RC_EV_NONE, RC_EV_NONE};
+        if (kind[0] == RC_EV_NONE) {
             kind[1] = step_branch(m, d, i, t, y, r, restart);
             kind[2] = step_contact(m, d, i, y, r, restart);
-            if (!kind[2]) kind[3] = step_friction(m, d, i, t, y, r, restart);
+            if (kind[2] == RC_EV_NONE) kind[3] = step_friction(m, d, i, t, y, r, restart);
         }
-        if ((kind[0] || kind[2]) && d->inter_mode[i] == RC_MODE_CLOSED) stateless_friction_mode(m, d, i, t, y);
+        if ((kind[0] != RC_EV_NONE || kind[2] != RC_EV_NONE) && d->inter_mode[i] == RC_MODE_CLOSED) stateless_friction_mode(m, d, i, t, y);
         /* friction per contact point: the points whose roots crossed (all
          * reset when the contact changed) */
-        if (!kind[0] && !kind[2] && m->inter_npt[i] > 0) {
+        if (kind[0] == RC_EV_NONE && kind[2] == RC_EV_NONE && m->inter_npt[i] > 0) {
             const int *rp = roots + rc_root_point_base(m) + m->inter_pbase[i];
             if (points_land(m, d, i, t, y, roots + rc_root_land_base(m) + m->inter_pbase[i], restart) > 0) {
-                kind[3] = "fric_land";
+                kind[3] = RC_EV_FRIC_LAND;
             } else if (points_flip(m, d, i, t, y, rp, restart) > 0) {
                 /* the kind most of them took (a point refused the stick
                  * slides on: points_flip) */
@@ -636,11 +636,11 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
                         if (d->pt_slip[m->inter_pbase[i] + j]) nsl++;
                         else nst++;
                     }
-                kind[3] = nsl >= nst ? "fric_slip" : "fric_stick";
+                kind[3] = nsl >= nst ? RC_EV_FRIC_SLIP : RC_EV_FRIC_STICK;
             }
         }
         for (int k = 0; k < 4; k++) {
-            if (!kind[k]) continue;
+            if (kind[k] == RC_EV_NONE) continue;
             if (n < max_ev) {
                 ev[n].inter = i;
                 ev[n].kind = kind[k];
@@ -651,7 +651,7 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
     /* contact coupling faces (contact_rhs.inc): their roots follow the
      * interfaces'; an event names the coupling (inter = -1 - k) */
     if (rc_cpl_nroots(m) > 0) {
-        const char *kinds[RC_CPL_MAX_EV];
+        rc_event_kind kinds[RC_CPL_MAX_EV];
         int cpls[RC_CPL_MAX_EV];
         const int nc = rc_cpl_events(m, d, t, y, roots + rc_root_cpl_base(m), kinds, cpls, RC_CPL_MAX_EV,
                                      restart);
@@ -719,7 +719,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
         rc_inter_report r, c, dr, dc;
         report(m, d, i, t, y, &r);
         const double band = touch_band(m, i, y, &r);
-        const char *kind = NULL;
+        rc_event_kind kind = RC_EV_NONE;
         /* the force the contact would carry, closed, and its rate */
         const int cbr = mode == RC_MODE_OPEN ? RC_BR_LOAD : br;
         rc_inter_report_eval(m, i, RC_MODE_CLOSED, cbr, 0, d->inter_slip[i], t, y, &c);
@@ -756,40 +756,40 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
              * integrator could not see, its root having started on the far
              * side) closes now; the three cases below likewise */
             enter_zone(m, d, i, y, restart);
-            kind = "contact_close";
+            kind = RC_EV_CONTACT_CLOSE;
         } else if (mode != RC_MODE_OPEN && r.p < -band) {
             leave_zone(m, d, i, y, restart); /* closed or released while apart */
-            kind = "contact_separate";
+            kind = RC_EV_CONTACT_SEPARATE;
         } else if (mode == RC_MODE_CLOSED && !d->inter_settled[i] && c.fn < -fband) {
             d->inter_mode[i] = RC_MODE_RELEASED; /* closed under a tensile force */
             reset_friction(m, d, i, y, restart);
-            kind = "contact_open";
+            kind = RC_EV_CONTACT_OPEN;
         } else if (mode == RC_MODE_RELEASED && c.fn > fband) {
             d->inter_mode[i] = RC_MODE_CLOSED; /* released under a compressive force */
             reset_friction(m, d, i, y, restart);
-            kind = "contact_close";
+            kind = RC_EV_CONTACT_CLOSE;
         } else if (mode == RC_MODE_OPEN) {
             /* P at zero (or the Inacti offset tracking it): close unless the
              * bodies separate; a touching contact carries zero force */
             if (fabs(r.p) <= band && trend >= 0 && c.fn >= -fband) {
                 enter_zone(m, d, i, y, restart);
-                kind = "contact_close";
+                kind = RC_EV_CONTACT_CLOSE;
             }
         } else if (fabs(r.p) <= band && ctrend < 0) {
             /* closed or released at P = 0 while separating */
             leave_zone(m, d, i, y, restart);
-            kind = "contact_separate";
+            kind = RC_EV_CONTACT_SEPARATE;
         } else if (mode == RC_MODE_RELEASED && fabs(c.fn) <= fband && (dc.fn > frate || (fabs(dc.fn) <= frate && ctrend >= 0))) {
             /* released at zero force that would grow again: close */
             d->inter_mode[i] = RC_MODE_CLOSED;
             reset_friction(m, d, i, y, restart);
-            kind = "contact_close";
+            kind = RC_EV_CONTACT_CLOSE;
         } else if (mode == RC_MODE_CLOSED && !d->inter_settled[i] && fabs(c.fn) <= fband &&
                    (dc.fn < -frate || (fabs(dc.fn) <= frate && ctrend < 0))) {
             /* closed at zero force that is about to pull: release */
             d->inter_mode[i] = RC_MODE_RELEASED;
             reset_friction(m, d, i, y, restart);
-            kind = "contact_open";
+            kind = RC_EV_CONTACT_OPEN;
         } else if (m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0) {
             /* hysteresis: each branch's root on its waiting side. On the
              * Stiff line (ELASTIC) F_U <= F_h <= F_L: at or past a bound
@@ -836,40 +836,40 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             if (br == RC_BR_ELASTIC && (r.fh - r.fu < -hb || (r.fh - r.fu <= hb && lo < 0 && lo_ok))) {
                 d->inter_branch[i] = RC_BR_UNLOAD;
                 set_state(fh, r.fu, restart);
-                kind = "hyst_unload_curve";
+                kind = RC_EV_HYST_UNLOAD_CURVE;
             } else if (br == RC_BR_ELASTIC && (r.fl - r.fh < -hb || (r.fl - r.fh <= hb && up < 0 && up_ok))) {
                 d->inter_branch[i] = RC_BR_LOAD;
                 set_state(fh, r.fl, restart);
-                kind = "hyst_load_curve";
+                kind = RC_EV_HYST_LOAD_CURVE;
             } else if (br == RC_BR_LOAD && ltrend < 0 && kst > sl && (still || r.vl < -vb)) {
                 d->inter_branch[i] = RC_BR_ELASTIC;
                 set_state(fh, r.fl, restart);
-                kind = "hyst_unloading";
+                kind = RC_EV_HYST_UNLOADING;
             } else if (br == RC_BR_UNLOAD && ltrend > 0 && kst > su && (still || r.vl > vb)) {
                 d->inter_branch[i] = RC_BR_ELASTIC;
                 set_state(fh, r.fu, restart);
-                kind = "hyst_reloading";
+                kind = RC_EV_HYST_RELOADING;
             }
         } else if (m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0) {
             /* rebound damping branch at dP/dt = 0 */
             const int still = fabs(r.vl) <= fabs(dr.vl) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
             if (br == RC_BR_LOAD && still && ltrend < 0) {
                 d->inter_branch[i] = RC_BR_UNLOAD;
-                kind = "rdf_rebound";
+                kind = RC_EV_RDF_REBOUND;
             } else if (br == RC_BR_UNLOAD && still && ltrend > 0) {
                 d->inter_branch[i] = RC_BR_LOAD;
-                kind = "rdf_approach";
+                kind = RC_EV_RDF_APPROACH;
             }
         }
-        if (kind && d->inter_mode[i] == RC_MODE_CLOSED) stateless_friction_mode(m, d, i, t, y);
+        if (kind != RC_EV_NONE && d->inter_mode[i] == RC_MODE_CLOSED) stateless_friction_mode(m, d, i, t, y);
         /* friction after whatever the contact did above (a contact that has
          * just closed sticks afresh): incremental friction sticking beyond
          * its limit (a contact that closes while sliding: the stick damper
          * alone exceeds the limit) slips from the start, its state on the
          * applied force; per contact point likewise */
         const rc_fric *fr = &m->inter_fr[i];
-        const char *fkind = NULL;
-        if (points_flip(m, d, i, t, y, NULL, restart) > 0) fkind = "fric_slip";
+        rc_event_kind fkind = RC_EV_NONE;
+        if (points_flip(m, d, i, t, y, NULL, restart) > 0) fkind = RC_EV_FRIC_SLIP;
         const int incr1 = d->inter_mode[i] == RC_MODE_CLOSED && fr->kind != RC_FK_NONE &&
                           fr->form == RC_FF_INCREMENTAL && m->inter_npt[i] == 0 && !fr->exact;
         /* incremental friction slipping along its force (v_t . e > 0: the
@@ -880,7 +880,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             report(m, d, i, t, y, &r);
             if (r.slip_root > slip_vband(m, i)) {
                 stick_on_state(m, d, i, t, y, restart);
-                fkind = "fric_stick";
+                fkind = RC_EV_FRIC_STICK;
             }
         }
         if (incr1 && !d->inter_slip[i]) {
@@ -888,7 +888,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             if (r.slip_root > 0) {
                 slip_on_limit(m, d, i, t, y, restart);
                 d->inter_slip[i] = 1;
-                fkind = "fric_slip";
+                fkind = RC_EV_FRIC_SLIP;
             }
         }
         /* exact stick, sticking: can it stick? Not when it slides (a
@@ -906,7 +906,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
                 report(m, d, i, t, y, &r); /* slip: on the (kinetic) limit along e */
                 for (int q = 0; q < 3; q++) set_state(ft + q, r.fraw[q], restart);
                 *restart = 1;
-                fkind = "fric_slip";
+                fkind = RC_EV_FRIC_SLIP;
             }
         }
         /* a contact left at P = 0 or at zero force waits a band away, on
@@ -931,9 +931,9 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
                 fabs(r.vl) <= vband)
                 d->inter_rband[i] = d->inter_branch[i] == RC_BR_LOAD ? 2.0 * vband : -2.0 * vband;
         }
-        const char *kinds[2] = {kind, fkind};
+        const rc_event_kind kinds[2] = {kind, fkind};
         for (int q = 0; q < 2; q++) {
-            if (!kinds[q]) continue;
+            if (kinds[q] == RC_EV_NONE) continue;
             if (n < max_ev) {
                 ev[n].inter = i;
                 ev[n].kind = kinds[q];

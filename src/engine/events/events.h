@@ -4,13 +4,14 @@
 
 #include "model/model.h"
 #include "engine/assembly/data.h"
+#include "engine/assembly/event_kind.h"
 
 /* Events of the contact couplings reported per call at most. */
 #define RC_CPL_MAX_EV 32
 
 typedef struct rc_event {
-    int inter;        /* interface index; < 0: coupling -1 - inter */
-    const char *kind; /* "contact_close", "contact_open", "inter_start", "inter_stop" */
+    int inter;          /* interface index; < 0: coupling -1 - inter */
+    rc_event_kind kind; /* RC_EV_CONTACT_CLOSE, ... (engine/assembly/event_kind.h) */
 } rc_event;
 
 /* Flip the modes named by the root directions `roots` (CVODE rootsfound:

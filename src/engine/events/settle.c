@@ -1,0 +1,123 @@
+/*
+ * Settling of accumulating bounces and the event accumulation (Zeno) guard
+ * (settle.h; docs/theory.md 5.1, 5.2), applied after each root return's
+ * events: a contact that closes after a flight short against its last
+ * contact phase, its flights shrinking, is held closed; more than
+ * RC_ZENO_MAX crowded events of one interface settle it when they are
+ * contact events of a closed contact, and end the run otherwise.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "engine/events/settle.h"
+#include "engine/constraints/stick.h"
+
+struct rc_settle {
+    double *t_open;   /* [ninter] last contact_open or contact_separate [s] (NaN: none) */
+    double *t_close;  /* [ninter] last contact_close [s] (NaN: none) */
+    double *t_flight; /* [ninter] the last flight, t_close - t_open [s] (NaN: none) */
+    int *nshrink;     /* [ninter] flights shrunk in a row */
+    double *zeno_t;   /* [ninter] time of the interface's last event [s] */
+    int *zeno_n;      /* [ninter] its events in a row, each within the Zeno window of the previous */
+};
+
+rc_settle *rc_settle_new(const rc_model *m)
+{
+    rc_settle *s = calloc(1, sizeof *s);
+    if (!s) return NULL;
+    const size_t n = (size_t)m->ninter + 1;
+    s->t_open = malloc(n * sizeof(double));
+    s->t_close = malloc(n * sizeof(double));
+    s->t_flight = malloc(n * sizeof(double));
+    s->nshrink = calloc(n, sizeof(int));
+    s->zeno_t = calloc(n, sizeof(double));
+    s->zeno_n = calloc(n, sizeof(int));
+    if (!s->t_open || !s->t_close || !s->t_flight || !s->nshrink || !s->zeno_t || !s->zeno_n) {
+        rc_settle_free(s);
+        return NULL;
+    }
+    for (int i = 0; i < m->ninter; i++) s->t_open[i] = s->t_close[i] = s->t_flight[i] = NAN; /* no contact phase yet */
+    return s;
+}
+
+void rc_settle_free(rc_settle *s)
+{
+    if (!s) return;
+    free(s->t_open);
+    free(s->t_close);
+    free(s->t_flight);
+    free(s->nshrink);
+    free(s->zeno_t);
+    free(s->zeno_n);
+    free(s);
+}
+
+const char *rc_settle_hold(const rc_model *m, int i)
+{
+    return m->method == 2 && rc_stk_settle_capable(m, i) ? "held by a unilateral constraint until its force turns tensile"
+                                                         : "its penalty law held closed until P returns to 0";
+}
+
+/* Hold the closed contact of interface i in persistent contact: its event
+ * contact_settle. */
+static void settle(rc_data *d, int i, rc_event *settled, int max_settled, int *nsettled)
+{
+    d->inter_settled[i] = 1;
+    if (*nsettled < max_settled) settled[*nsettled] = (rc_event){i, RC_EV_CONTACT_SETTLE};
+    (*nsettled)++;
+}
+
+/* The contact's own events (contact_close, _open, _separate, _settle). */
+static int contact_kind(rc_event_kind k)
+{
+    return k == RC_EV_CONTACT_CLOSE || k == RC_EV_CONTACT_OPEN || k == RC_EV_CONTACT_SEPARATE ||
+           k == RC_EV_CONTACT_SETTLE;
+}
+
+rc_settle_verdict rc_settle_after_events(rc_settle *s, const rc_model *m, rc_data *d, double t, double dtout,
+                                         const rc_event *ev, int nev, rc_event *settled, int max_settled,
+                                         int *nsettled, int *restart, char *why, size_t n)
+{
+    *nsettled = 0;
+    /* settling: a contact that closes after a flight short against its
+     * last contact phase is held closed (RC_SETTLE_FLIGHT) */
+    for (int k = 0; k < nev; k++) {
+        const int i = ev[k].inter;
+        if (i < 0) continue;
+        if (ev[k].kind == RC_EV_CONTACT_OPEN || ev[k].kind == RC_EV_CONTACT_SEPARATE) s->t_open[i] = t;
+        if (ev[k].kind != RC_EV_CONTACT_CLOSE) continue;
+        const double flight = t - s->t_open[i], phase = s->t_open[i] - s->t_close[i];
+        s->nshrink[i] = flight < s->t_flight[i] ? s->nshrink[i] + 1 : 0; /* the flights shrink */
+        s->t_flight[i] = flight;
+        s->t_close[i] = t;
+        if (d->inter_mode[i] == RC_MODE_CLOSED && !d->inter_settled[i] && s->nshrink[i] >= RC_SETTLE_SHRINK &&
+            flight < RC_SETTLE_FLIGHT * phase)
+            settle(d, i, settled, max_settled, nsettled);
+        *restart |= d->inter_settled[i]; /* its root function changed: restart */
+    }
+    /* event accumulation: report it rather than stall; the contact events
+     * of an interface that is closed settle it instead */
+    for (int k = 0; k < nev; k++) {
+        const int i = ev[k].inter;
+        if (i < 0) continue; /* a contact coupling: its faces change modes with the state moving */
+        s->zeno_n[i] = t - s->zeno_t[i] <= RC_ZENO_REL * fmax(fabs(t), dtout) ? s->zeno_n[i] + 1 : 0;
+        s->zeno_t[i] = t;
+        if (s->zeno_n[i] > RC_ZENO_MAX && contact_kind(ev[k].kind) && d->inter_mode[i] == RC_MODE_CLOSED) {
+            if (!d->inter_settled[i]) settle(d, i, settled, max_settled, nsettled);
+            s->zeno_n[i] = 0;
+            *restart = 1;
+            continue;
+        }
+        if (s->zeno_n[i] > RC_ZENO_MAX) {
+            snprintf(why, n,
+                     "event accumulation (Zeno) at t = %.9g s in %s: more than %d events within %.2g s of "
+                     "each other (last: %s); the modes of this element switch without the state moving: "
+                     "tighter tolerances or a smoother law may help",
+                     t, m->inter_name[i], RC_ZENO_MAX, RC_ZENO_REL * fmax(fabs(t), dtout),
+                     rc_event_kind_name(ev[k].kind));
+            return RC_SETTLE_ZENO;
+        }
+    }
+    return RC_SETTLE_GO_ON;
+}

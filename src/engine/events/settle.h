@@ -1,0 +1,66 @@
+/* Settling of accumulating bounces and the event accumulation (Zeno) guard
+ * (docs/theory.md 5.1, 5.2): after each root return's events, the
+ * interfaces' history of closes and openings decides which closed contacts
+ * are held in persistent contact (rc_data.inter_settled) and whether events
+ * accumulate on an element that cannot settle. The history lives in an
+ * rc_settle that the driver allocates for the run. */
+#ifndef RC_SETTLE_H
+#define RC_SETTLE_H
+
+#include <stddef.h>
+
+#include "model/model.h"
+#include "engine/assembly/data.h"
+#include "engine/events/events.h"
+
+/* Event accumulation (Zeno): more than RC_ZENO_MAX consecutive events of one
+ * element, each within RC_ZENO_REL * max(t, dtout) of the previous, end the
+ * run with a message instead of stalling, unless they are contact events of
+ * an interface left closed: that contact settles [-]. */
+#define RC_ZENO_MAX 200
+#define RC_ZENO_REL 1e-7
+/* Settling (docs/theory.md 5.2): a contact of a TYPE6 (POWER) interface
+ * that closes after a flight shorter than RC_SETTLE_FLIGHT times the
+ * contact phase before it (the time between its previous close and its
+ * opening), its flights having shrunk RC_SETTLE_SHRINK times in a row, is
+ * held closed ("settled"): its release at zero force is suspended, it opens
+ * when its penetration returns to zero [-]. */
+#define RC_SETTLE_FLIGHT 1.0
+#define RC_SETTLE_SHRINK 2
+
+/* The interfaces' history: times of their last close and opening, the last
+ * flight, how many times in a row the flights shrank, and the run of
+ * crowded events. */
+typedef struct rc_settle rc_settle;
+
+/* A fresh history for the run of model m (no contact phase yet); NULL when
+ * out of memory. */
+rc_settle *rc_settle_new(const rc_model *m);
+void rc_settle_free(rc_settle *s);
+
+/* What the driver does after the events. */
+typedef enum {
+    RC_SETTLE_GO_ON = 0, /* carry on (restart if *restart was set) */
+    RC_SETTLE_ZENO = 1   /* events accumulate: end the run with the message */
+} rc_settle_verdict;
+
+/* The events ev[0..nev) just applied at t (rc_events_apply, modes of d
+ * after them; dtout the run's output interval): updates the history, marks
+ * the closed contacts that settle (d->inter_settled) and writes one event
+ * of kind RC_EV_CONTACT_SETTLE per contact settled into settled[] (at most
+ * max_settled, in the order they settled; *nsettled their number). Sets
+ * *restart when a settled contact's root function changed. Returns
+ * RC_SETTLE_ZENO, with the message in why[0..n), when more than
+ * RC_ZENO_MAX crowded events of an element cannot be settled (the events
+ * after that one are not looked at); the contacts settled before it are
+ * still in settled[]. */
+rc_settle_verdict rc_settle_after_events(rc_settle *s, const rc_model *m, rc_data *d, double t, double dtout,
+                                         const rc_event *ev, int nev, rc_event *settled, int max_settled,
+                                         int *nsettled, int *restart, char *why, size_t n);
+
+/* How the settled contact of interface i is held, for messages: by a
+ * unilateral constraint (IDA, a settle-capable contact) or by its penalty
+ * law. */
+const char *rc_settle_hold(const rc_model *m, int i);
+
+#endif

@@ -230,7 +230,7 @@ static void test_engine_jacobian_refresh_after_mode_change(void)
     rc_model *m = entropy_model(1, &d, &y);
     if (!m) return;
     double *val = calloc((size_t)m->nnz + 1, sizeof(double)), *ref = calloc((size_t)m->nnz + 1, sizeof(double));
-    ENSURE(d->jcache != NULL);
+    ENSURE(d->sc->jcache != NULL);
     ENSURE(rc_jac_refresh_inter(m, d, 0, y, val) == -1); /* nothing assembled yet */
     const int modes[3] = {RC_MODE_CLOSED, RC_MODE_RELEASED, RC_MODE_INACTIVE};
     int changes = 0;

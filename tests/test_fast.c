@@ -134,14 +134,14 @@ static void compare_deck(const char *path, int trials, fast_count *fc, cmp_stats
         cmp_values(s, fa, fb, ny);
         /* root functions, with and without the reports kept */
         for (int on = 0; on < 2; on++) {
-            d->repc->on = on;
+            d->sc->repc->on = on;
             m->inter_fast = NULL;
             rc_assemble_roots(m, d, t, y, ga);
             m->inter_fast = fast;
             rc_assemble_roots(m, d, t, y, gb);
             cmp_values(s, ga, gb, nr);
         }
-        d->repc->on = 0;
+        d->sc->repc->on = 0;
         /* reports */
         for (int i = 0; i < m->ninter; i++) {
             rc_inter_report ra, rb;
@@ -307,9 +307,9 @@ static double compare_jac(const char *path, int trials, long *n, long *nz)
         const int sta = rc_assemble_jac(m, d, t, y, va);
         /* the blocks cached for the refresh below: the fast assembly's own
          * (it writes only its positions once the cache holds blocks) */
-        ENSURE(d->jcache != NULL && d->jcache_ok);
-        if (d->jcache)
-            for (int64_t k = 0; k < d->jcache_off[m->ninter]; k++) d->jcache[k] = 12345.0;
+        ENSURE(d->sc->jcache != NULL && d->sc->jcache_ok);
+        if (d->sc->jcache)
+            for (int64_t k = 0; k < d->sc->jcache_off[m->ninter]; k++) d->sc->jcache[k] = 12345.0;
         m->inter_fast = fast;
         const int stb = rc_assemble_jac(m, d, t, y, vb);
         ENSURE(sta == stb);

@@ -193,16 +193,16 @@ static void test_report_cache(void)
     int nfast = 0;
     for (int i = 0; i < m->ninter; i++) nfast += m->inter_fast[i];
     ENSURE(nfast == m->ninter);
-    d->repc->on = 1;
+    d->sc->repc->on = 1;
     rc_assemble_roots(m, d, 0.0, y, g);
     ENSURE(!rc_report_cache_state(m, d, y));
     /* the general kernel's reports are kept */
     for (int i = 0; i < m->ninter; i++) m->inter_fast[i] = 0;
     /* not kept unless the driver asks */
-    d->repc->on = 0;
+    d->sc->repc->on = 0;
     rc_assemble_roots(m, d, 0.0, y, g);
     ENSURE(!rc_report_cache_state(m, d, y));
-    d->repc->on = 1;
+    d->sc->repc->on = 1;
     rc_assemble_roots(m, d, 0.0, y, g);
     ENSURE(rc_report_cache_state(m, d, y));
     int hits = 0;

@@ -32,7 +32,7 @@ static inline double rc_bk_state_tol(const rc_model *m, const rc_data *d, int k,
         if (fl > s) s = fl;
     }
     if (m->state_pt[k] >= 0) {
-        const double sh = d->pt_share[m->state_pt[k]];
+        const double sh = d->sc->pt_share[m->state_pt[k]];
         s /= sqrt(sh > RC_EWT_SHARE_MIN ? sh : RC_EWT_SHARE_MIN);
     }
     return s;

@@ -148,7 +148,7 @@ static const double *whole(const run_ctx *c, N_Vector v, double *full)
 #define RC_JSHARE_FLOOR 1e-12
 static int shares_moved(const run_ctx *c)
 {
-    const double *w = c->d->pt_share, *wj = c->jshare;
+    const double *w = c->d->sc->pt_share, *wj = c->jshare;
     for (int j = 0; j < c->m->npt; j++) {
         const double a = w[j], b = wj[j];
         if (fabs(a - b) > RC_JSHARE_MOVE || a > 2.0 * b + RC_JSHARE_FLOOR || b > 2.0 * a + RC_JSHARE_FLOOR) return 1;
@@ -185,7 +185,7 @@ static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleanty
             if (st) return st;
             /* the shares of a whole Jacobian (a patched one keeps the other
              * points' blocks, and their shares, from the last whole one) */
-            if (m->npt > 0) memcpy(c->jshare, c->d->pt_share, (size_t)m->npt * sizeof(double));
+            if (m->npt > 0) memcpy(c->jshare, c->d->sc->pt_share, (size_t)m->npt * sizeof(double));
         }
         *jcur = SUNTRUE;
         /* new values, perhaps new active slots: the part follows */
@@ -200,7 +200,7 @@ static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleanty
 static int cb_root(realtype t, N_Vector y, realtype *g, void *ud)
 {
     run_ctx *c = ud;
-    c->d->n_root++;
+    c->d->sc->n_root++;
     rc_assemble_roots(c->m, c->d, t, whole(c, y, c->ysc), rc_rootmap_full(&c->rm, g));
     rc_rootmap_keep(&c->rm, t, rc_rootmap_full(&c->rm, g)); /* for the physics checks */
     rc_rootmap_gather(&c->rm, g);
@@ -597,7 +597,7 @@ static void cv_add_stats(void *self, rc_stats *s)
     s->root_evals += c->lost.root_evals;
     memset(&c->lost, 0, sizeof c->lost);
     if (c->d) {
-        s->jac_evals = c->d->n_jac;
+        s->jac_evals = c->d->sc->n_jac;
         c->d->n_klu_sym = rc_actpart_analyses(&c->ap);
         c->d->newton_nnz = (long)c->ap.nnz_max;
     }

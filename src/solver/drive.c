@@ -566,8 +566,8 @@ void failure_message(const rc_model *m, const rc_data *d, const char *name, doub
 {
     const char *cf = rc_cpl_failed(m, d);
     char where[512];
-    if (d->fail_inter >= 0)
-        snprintf(where, sizeof where, "non-finite force in %s", m->inter_name[d->fail_inter]);
+    if (d->sc->fail_inter >= 0)
+        snprintf(where, sizeof where, "non-finite force in %s", m->inter_name[d->sc->fail_inter]);
     else if (cf)
         snprintf(where, sizeof where, "no force from %s", cf);
     else if (elem[0])
@@ -710,7 +710,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
         evrec && m->nbody <= RC_CONTACT_REC_MAX_BODIES ? rc_contact_record_interval(m, dtout) : 0.0;
     double t_contact_rec = -INFINITY; /* time of the last such record [s] */
     long single = 0;                  /* single steps since the last output time */
-    long rhs_seen = -1;               /* d->n_rhs at the last return (the physics checks) */
+    long rhs_seen = -1;               /* d->sc->n_rhs at the last return (the physics checks) */
     while (t < tend) {
         /* the event callback asked to stop: end here as an interrupted run */
         if (sink.stop) {
@@ -737,7 +737,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
          * backend may ask for single steps of its own (rc_backend.solve). */
         int one_step = rc_impacts_active(&im);
         /* the root functions keep their reports for the samples (sample_step) */
-        if (d->repc) d->repc->on = one_step;
+        if (d->sc->repc) d->sc->repc->on = one_step;
         /* a time asked for by the caller before the next output time: return
          * there (interpolated; the steps are the same) */
         const double tcall = pause && pause->until < tout ? pause->until : tout;
@@ -761,8 +761,8 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
          * integrator evaluated there (guards.h) */
         const int at_root = flag == bk->root_return;
         /* no right-hand side evaluated since the last return: no step taken */
-        const int moved = at_root || d->n_rhs != rhs_seen;
-        rhs_seen = d->n_rhs;
+        const int moved = at_root || d->sc->n_rhs != rhs_seen;
+        rhs_seen = d->sc->n_rhs;
         const int due = moved && rc_guards_due(gd, s.steps + bk->steps(self), at_root);
         fb.guards_due |= due;
         if (due && rc_guards_step(gd, d, t, y, bk->roots_at ? bk->roots_at(self, t) : NULL, at_root,

@@ -141,7 +141,7 @@ static int cb_jac(realtype t, realtype cj, N_Vector yy, N_Vector yp, N_Vector rr
 static int cb_root(realtype t, N_Vector yy, N_Vector yp, realtype *g, void *ud)
 {
     ida_ctx *c = ud;
-    c->d->n_root++;
+    c->d->sc->n_root++;
     double *gf = rc_rootmap_full(&c->rm, g);
     rc_assemble_roots(c->m, c->d, t, N_VGetArrayPointer(yy), gf);
     if (c->cs) rc_cset_roots(c->m, c->d, c->cs, t, N_VGetArrayPointer(yy), N_VGetArrayPointer(yp), gf);

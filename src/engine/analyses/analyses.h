@@ -20,7 +20,7 @@ rc_status rc_jac_build(rc_model *m, rc_error *err);
  * the slot is inactive (an open interface, the contact points of an
  * interface that is not closed, the rows of a point out of the contact
  * whose law gives them no value, a contact coupling with no face pushing);
- * returns the count kept. Uses d->pt_work as scratch (not during a root or
+ * returns the count kept. Uses d->sc->pt_work as scratch (not during a root or
  * Jacobian evaluation). */
 int64_t rc_jac_active(const rc_model *m, const rc_data *d, double t, const double *y, unsigned char *keep);
 /* What rc_jac_active's result depends on when that is each interface's

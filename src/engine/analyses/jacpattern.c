@@ -491,7 +491,7 @@ static void ap_points(const rc_model *m, const rc_data *d, int i, double t, cons
         return;
     }
     if (pass == AP_DROP) return;
-    double *w = d->pt_work; /* RC_PT_OUT per point (rc_data_new), free outside the root and Jacobian evaluations */
+    double *w = d->sc->pt_work; /* RC_PT_OUT per point (rc_data_new), free outside the root and Jacobian evaluations */
     rc_points_eval(m, d, i, NULL, t, y, w);
     for (int j = 0; j < npt; j++) {
         const int64_t *pj = sl + j * P;

@@ -217,7 +217,7 @@ static int fast_inter(const rc_model *m, int i, int mode, int branch, int track,
 }
 
 /* dense_inter, or fast_inter for an interface on the fast path. */
-static void inter_block(const rc_model *m, rc_data *d, int i, const double *y, double *out, const int64_t *ptslot,
+static void inter_block(const rc_model *m, const rc_data *d, int i, const double *y, double *out, const int64_t *ptslot,
                         double *val)
 {
     if (m->inter_fast && m->inter_fast[i]) {
@@ -227,7 +227,7 @@ static void inter_block(const rc_model *m, rc_data *d, int i, const double *y, d
         return;
     }
     dense_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
-                d->pt_slip + m->inter_pbase[i], y, out, d->pt_work, ptslot, val, d->node_cache, d->jac_skip);
+                d->pt_slip + m->inter_pbase[i], y, out, d->sc->pt_work, ptslot, val, d->sc->node_cache, d->jac_skip);
 }
 
 /* A slot of `val` written by a refresh: not in a held row (those stay 0). */
@@ -276,7 +276,7 @@ static void point_columns(const rc_model *m, int i, const segctx_c *c, int j, in
  * state moves (the accelerations, W_fric, its own rates) against that state,
  * into the values through inter_ptslot (jacpattern.c). A point's state moves
  * only its own force, so its columns take one evaluation of that point. */
-static void points_jac(const rc_model *m, rc_data *d, int i, const double *y, double *val)
+static void points_jac(const rc_model *m, const rc_data *d, int i, const double *y, double *val)
 {
     const rc_jblock *jb = &m->jb_inter[i];
     const int npt = m->inter_npt[i], ns = m->inter_ns[i], ncol = jb->ncol, nrow = jb->nrow, ps = m->inter_pst[i];
@@ -290,13 +290,13 @@ static void points_jac(const rc_model *m, rc_data *d, int i, const double *y, do
     load_body(m, fr->obody, y, po);
     /* the shared part at the state (real values) */
     const double *yr = y + m->inter_eadr[i];
-    T *ys = d->pt_work;
+    T *ys = d->sc->pt_work;
     rc_cs_load(yr, ns + ps * npt, ys);
     t6out_c o;
     type6_c(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], pslip, ya, yb, ys, NULL,
-            NULL, NULL, &o, NULL, d->node_cache);
+            NULL, NULL, &o, NULL, d->sc->node_cache);
     segctx_c c;
-    segfric_ctx_c(m, i, o.fel + o.fd, o.kn, o.off, ya, yb, d->node_cache, &c);
+    segfric_ctx_c(m, i, o.fel + o.fd, o.kn, o.off, ya, yb, d->sc->node_cache, &c);
     for (int j = 0; j < npt; j++) {
         const int64_t *sb = slot + j * P + ps * ncol, *sc = sb + ps * nrow;
         point_columns(m, i, &c, j, pslip[j], ya, yb, po, yr + ns + ps * j, sb, sc, 0, val);
@@ -328,10 +328,10 @@ static void scatter(const rc_jblock *jb, const double *dense, double *val)
         if (jb->slot[k] >= 0) val[jb->slot[k]] += dense[k];
 }
 
-int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val)
+int rc_assemble_jac(const rc_model *m, const rc_data *d, double t, const double *y, double *val)
 {
     double dense[RC_JB_MAX];
-    d->n_jac++;
+    d->sc->n_jac++;
     memset(val, 0, (size_t)m->nnz * sizeof(double));
     for (int b = 0; b < m->nbody; b++)
         if (m->body_yadr[b] >= 0) {
@@ -350,8 +350,8 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
         if (m->inter_fast && m->inter_fast[i] && jb->ncol > 0) {
             const int np = fast_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], y, fdense,
                                       d->jac_skip, pos);
-            double *jc = d->jcache ? d->jcache + d->jcache_off[i] : NULL;
-            if (jc && !d->jcache_ok) memcpy(jc, fdense, (size_t)nd * sizeof(double));
+            double *jc = d->sc->jcache ? d->sc->jcache + d->sc->jcache_off[i] : NULL;
+            if (jc && !d->sc->jcache_ok) memcpy(jc, fdense, (size_t)nd * sizeof(double));
             for (int q = 0; q < np; q++) {
                 const int k = pos[q];
                 if (jb->slot[k] >= 0) val[jb->slot[k]] += fdense[k];
@@ -368,9 +368,9 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
         } else {
             memset(dense, 0, (size_t)nd * sizeof(double));
         }
-        if (d->jcache) memcpy(d->jcache + d->jcache_off[i], dense, (size_t)nd * sizeof(double));
+        if (d->sc->jcache) memcpy(d->sc->jcache + d->sc->jcache_off[i], dense, (size_t)nd * sizeof(double));
     }
-    d->jcache_ok = d->jcache != NULL;
+    d->sc->jcache_ok = d->sc->jcache != NULL;
     /* couplings (rc_cpl_jac) */
     if (rc_cpl_jac(m, d, t, y, val)) return 1;
     /* potential of a time-varying gravity: d/dv of -m g(t).v */
@@ -390,11 +390,11 @@ int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, do
     return 0;
 }
 
-int rc_jac_refresh_inter(const rc_model *m, rc_data *d, int i, const double *y, double *val)
+int rc_jac_refresh_inter(const rc_model *m, const rc_data *d, int i, const double *y, double *val)
 {
     /* interfaces with contact points write their point rows and columns
      * outside the dense block (points_jac): assemble whole */
-    if (!d->jcache || !d->jcache_ok || i < 0 || i >= m->ninter || m->inter_npt[i] > 0) return -1;
+    if (!d->sc->jcache || !d->sc->jcache_ok || i < 0 || i >= m->ninter || m->inter_npt[i] > 0) return -1;
     /* imposed velocities replace their rows and derive the W_imp row from
      * every free acceleration after the elements (rc_imp_jac): a block
      * added here would put the contact's entries back in those rows */
@@ -407,14 +407,14 @@ int rc_jac_refresh_inter(const rc_model *m, rc_data *d, int i, const double *y, 
         inter_block(m, d, i, y, dense, NULL, val);
     else
         memset(dense, 0, (size_t)nd * sizeof(double));
-    double *old = d->jcache + d->jcache_off[i];
+    double *old = d->sc->jcache + d->sc->jcache_off[i];
     for (int k = 0; k < nd; k++) {
         const int64_t sl = jb->slot[k];
         /* held rows stay zero (rc_assemble_jac) */
         if (sl >= 0 && !(m->nheld > 0 && m->row_held[m->jac_rowind[sl]])) val[sl] += dense[k] - old[k];
         old[k] = dense[k];
     }
-    d->n_jac_refresh++;
+    d->sc->n_jac_refresh++;
     return 0;
 }
 
@@ -429,9 +429,9 @@ static const T *fric_pose(const rc_model *m, int i, const T *ya, const T *yb, T 
     return yo;
 }
 
-int rc_jac_refresh_points(const rc_model *m, rc_data *d, int i, const int *old_slip, const double *y, double *val)
+int rc_jac_refresh_points(const rc_model *m, const rc_data *d, int i, const int *old_slip, const double *y, double *val)
 {
-    if (!d->jcache || !d->jcache_ok || i < 0 || i >= m->ninter || m->inter_npt[i] == 0 || !old_slip) return -1;
+    if (!d->sc->jcache || !d->sc->jcache_ok || i < 0 || i >= m->ninter || m->inter_npt[i] == 0 || !old_slip) return -1;
     if (m->imp) return -1; /* as rc_jac_refresh_inter */
     /* the point modes act only while the interface is closed */
     if (d->inter_mode[i] != RC_MODE_CLOSED || m->inter_fr[i].kind == RC_FK_NONE) return 0;
@@ -450,7 +450,7 @@ int rc_jac_refresh_points(const rc_model *m, rc_data *d, int i, const int *old_s
     const int fa = ba >= 0 && m->body_yadr[ba] >= 0, fb = bb >= 0 && m->body_yadr[bb] >= 0;
     const int na = fa ? RC_NB : 0, nb = fb ? RC_NB : 0, racc = (fa ? 6 : 0) + (fb ? 6 : 0);
     const int widx = m->inter_fr[i].widx;
-    T *nc = rc_pair_nodes(m->inter_pair[i]) ? d->node_cache : NULL;
+    T *nc = rc_pair_nodes(m->inter_pair[i]) ? d->sc->node_cache : NULL;
     const double *yr = y + m->inter_eadr[i];
     double delta[RC_JB_MAX];
     memset(delta, 0, (size_t)nd * sizeof(double));
@@ -518,12 +518,12 @@ int rc_jac_refresh_points(const rc_model *m, rc_data *d, int i, const int *old_s
             for (int k = 0; k < 6; k++, rr++) delta[rr * ncol + c] = rc_cs_deriv(acc[6 + k]);
         delta[(racc + widx) * ncol + c] = rc_cs_deriv(dw);
     }
-    double *old = d->jcache + d->jcache_off[i];
+    double *old = d->sc->jcache + d->sc->jcache_off[i];
     for (int k = 0; k < nd; k++) {
         if (live_slot(m, jb->slot[k])) val[jb->slot[k]] += delta[k];
         old[k] += delta[k];
     }
-    d->n_jac_refresh++;
+    d->sc->n_jac_refresh++;
     return 0;
 }
 
@@ -568,14 +568,14 @@ int rc_cpl_dense_block(const rc_model *m, const rc_data *d, int k, double t, con
     return 0;
 }
 
-int rc_cpl_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val)
+int rc_cpl_jac(const rc_model *m, const rc_data *d, double t, const double *y, double *val)
 {
     double dense[RC_JB_MAX];
     for (int k = 0; k < m->cpl->n; k++) {
         if (m->cpl->jb[k].ncol == 0) continue;
         if (rc_cpl_dense_block(m, d, k, t, y, dense)) {
             d->cpl->fail = k;
-            d->fail_t = t;
+            d->sc->fail_t = t;
             return 1;
         }
         scatter(&m->cpl->jb[k], dense, val);

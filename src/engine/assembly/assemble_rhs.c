@@ -27,9 +27,9 @@ static double *acc_slot(const rc_model *m, int b, double *ydot)
     return (b >= 0 && m->body_yadr[b] >= 0) ? ydot + m->body_yadr[b] + 7 : NULL;
 }
 
-int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, double *ydot)
+int rc_assemble_rhs(const rc_model *m, const rc_data *d, double t, const double *y, double *ydot)
 {
-    d->n_rhs++;
+    d->sc->n_rhs++;
     /* bodies: free motion (the gravity time function once) */
     const double gf = rc_gravity_factor(m, t);
     for (int b = 0; b < m->nbody; b++)
@@ -52,12 +52,12 @@ int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, do
             type6_r(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
                     d->pt_slip + m->inter_pbase[i], rc_body_state(m, ba, y), rc_body_state(m, bb, y),
                     y + m->inter_eadr[i], acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot, NULL, NULL,
-                    d->node_cache);
+                    d->sc->node_cache);
         }
         for (int k = 0; k < nst; k++)
             if (!isfinite(sdot[k])) {
-                d->fail_inter = i;
-                d->fail_t = t;
+                d->sc->fail_inter = i;
+                d->sc->fail_t = t;
                 return 1; /* recoverable: CVODE retries with a smaller step */
             }
     }
@@ -152,7 +152,7 @@ void rc_inter_report_eval_d(const rc_model *m, const rc_data *d, int i, double t
 {
     (void)t;
     report_eval(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
-                d->pt_slip + m->inter_pbase[i], y, r, d->node_cache);
+                d->pt_slip + m->inter_pbase[i], y, r, d->sc->node_cache);
 }
 
 void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip, double t, const double *y, double *out)
@@ -168,20 +168,20 @@ void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip,
     t6out_r o;
     type6_r(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
             slip ? slip : d->pt_slip + m->inter_pbase[i], rc_body_state(m, m->inter_ba[i], y),
-            rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, out, d->node_cache);
+            rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, out, d->sc->node_cache);
 }
 
 /* The state of the reports kept (rc_data.repc): the caller compares once
  * and reads per interface. */
 int rc_report_cache_state(const rc_model *m, const rc_data *d, const double *y)
 {
-    const rc_repcache *c = d->repc;
+    const rc_repcache *c = d->sc->repc;
     return c && c->ok && memcmp(c->y, y, (size_t)m->ny * sizeof(double)) == 0;
 }
 
 int rc_report_cache_get(const rc_data *d, int i, rc_inter_report *r)
 {
-    const rc_repcache *c = d->repc;
+    const rc_repcache *c = d->sc->repc;
     const int *k = c->key + 4 * i;
     if (k[0] < 0 || k[0] != d->inter_mode[i] || k[1] != d->inter_branch[i] || k[2] != d->inter_track[i] ||
         k[3] != d->inter_slip[i])
@@ -195,7 +195,7 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
     /* the reports are kept for samples at the same state (rc_report_cache_get):
      * the interfaces of the general kernel without contact points, whose
      * report depends on the state and the four modes alone */
-    rc_repcache *rc = d->repc && d->repc->on ? d->repc : NULL;
+    rc_repcache *rc = d->sc->repc && d->sc->repc->on ? d->sc->repc : NULL;
     int kept = 0; /* reports kept */
     for (int i = 0; i < m->ninter; i++) {
         if (rc) rc->key[4 * i] = -1;
@@ -212,22 +212,22 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         for (int j = 0; j < npt; j++) {
             gp[j] = 1.0;  /* inactive point roots */
             gl[j] = -1.0; /* no landing while the contact is not closed */
-            d->pt_share[m->inter_pbase[i] + j] = 0.0;
+            d->sc->pt_share[m->inter_pbase[i] + j] = 0.0;
         }
         if (npt > 0 && mode == RC_MODE_CLOSED) {
             /* friction per contact point: each point's slip root, and its
              * depth below the level of the shares (rising through 0: the
              * point lands, events.c) */
-            double *pout = d->pt_work; /* RC_PT_OUT npt values (rc_data_new) */
+            double *pout = d->sc->pt_work; /* RC_PT_OUT npt values (rc_data_new) */
             t6out_r o;
             type6_r(m, i, mode, br, trk, d->inter_slip[i], d->pt_slip + m->inter_pbase[i],
                     rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i],
-                    NULL, NULL, NULL, &o, pout, d->node_cache);
+                    NULL, NULL, NULL, &o, pout, d->sc->node_cache);
             for (int j = 0; j < npt; j++) {
                 gp[j] = pout[RC_PT_OUT * j];
                 if (m->inter_fr[i].form == RC_FF_INCREMENTAL)
                     gl[j] = pout[RC_PT_OUT * j + 5] + d->pt_lband[m->inter_pbase[i] + j];
-                d->pt_share[m->inter_pbase[i] + j] = pout[RC_PT_OUT * j + 4];
+                d->sc->pt_share[m->inter_pbase[i] + j] = pout[RC_PT_OUT * j + 4];
             }
             report_of(&o, &r); /* the same evaluation as rc_inter_report_eval_d */
         } else if (is_fast(m, i)) {
@@ -299,9 +299,9 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         }
     }
     /* the state of the reports kept (none kept: none to compare) */
-    if (d->repc) {
-        d->repc->ok = kept;
-        if (kept) memcpy(d->repc->y, y, (size_t)m->ny * sizeof(double));
+    if (d->sc->repc) {
+        d->sc->repc->ok = kept;
+        if (kept) memcpy(d->sc->repc->y, y, (size_t)m->ny * sizeof(double));
     }
     /* contact couplings: after the interfaces' roots (contact_rhs.inc) */
     if (rc_cpl_nroots(m) > 0) rc_cpl_roots(m, d, t, y, g + rc_root_cpl_base(m));

@@ -46,15 +46,15 @@ int rc_constant_states(const rc_model *m, const double *y0, const char *written,
  * velocity on it. Gravity acts at the centre of mass. (body.c) */
 void rc_moment_free_bodies(const rc_model *m, char *mf);
 /* ydot = f(t, y; modes). Returns 0, or 1 (recoverable) on a non-finite force. */
-int rc_assemble_rhs(const rc_model *m, rc_data *d, double t, const double *y, double *ydot);
+int rc_assemble_rhs(const rc_model *m, const rc_data *d, double t, const double *y, double *ydot);
 /* Jacobian values into `val` [nnz] on the fixed pattern. */
-int rc_assemble_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val);
+int rc_assemble_jac(const rc_model *m, const rc_data *d, double t, const double *y, double *val);
 /* After a mode change of interface i: replace its block in `val` (values
  * last assembled by rc_assemble_jac, with later refreshes) by its block at y
  * in d's present modes; the rest of `val` stays as it was. 0, or -1 when d
  * holds no blocks of `val`, or when the model has imposed velocities (their
  * rows are rewritten after every element): assemble it whole then. */
-int rc_jac_refresh_inter(const rc_model *m, rc_data *d, int i, const double *y, double *val);
+int rc_jac_refresh_inter(const rc_model *m, const rc_data *d, int i, const double *y, double *val);
 /* After stick/slip flips of some contact points of interface i (their modes
  * before in old_slip[inter_npt], now in d->pt_slip), its modes otherwise
  * unchanged: the flipped points' part of `val` at y in their new modes (their
@@ -62,7 +62,7 @@ int rc_jac_refresh_inter(const rc_model *m, rc_data *d, int i, const double *y, 
  * by the change new law less old law); the rest stays. 0 (also when nothing
  * acts), or -1: assemble whole (as rc_jac_refresh_inter, or when half the
  * points or more flipped). */
-int rc_jac_refresh_points(const rc_model *m, rc_data *d, int i, const int *old_slip, const double *y, double *val);
+int rc_jac_refresh_points(const rc_model *m, const rc_data *d, int i, const int *old_slip, const double *y, double *val);
 
 /* Root functions [rc_root_count(m)]. */
 void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
@@ -152,7 +152,7 @@ void rc_stk_geom_c(const rc_model *m, int i, const double _Complex *ya, const do
 void rc_cpl_gravity(const rc_model *m, double t, double g[3]);
 /* Add the coupling forces to the accelerations and write the energy
  * rates. Returns 0, or 1 (recoverable) when a coupling fails. */
-int rc_cpl_rhs(const rc_model *m, rc_data *d, double t, const double *y, double *ydot);
+int rc_cpl_rhs(const rc_model *m, const rc_data *d, double t, const double *y, double *ydot);
 /* Report of coupling k at (t, y); returns 0 or 1 (catenary not solved). */
 int rc_cpl_report_eval(const rc_model *m, const rc_data *d, int k, double t, const double *y,
                        rc_cpl_report *r);
@@ -160,7 +160,7 @@ int rc_cpl_report_eval(const rc_model *m, const rc_data *d, int k, double t, con
 int rc_cpl_dense_block(const rc_model *m, const rc_data *d, int k, double t, const double *y,
                        double *out);
 /* Add the coupling Jacobian blocks into the CSC values. */
-int rc_cpl_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val);
+int rc_cpl_jac(const rc_model *m, const rc_data *d, double t, const double *y, double *val);
 /* Root functions of the contact couplings (rc_cpl_nroots of them), their
  * directions, the face modes at the start and at events (engine/assembly/contact_rhs.inc,
  * included by assemble_rhs.c). rc_cpl_events returns the events written into
@@ -184,8 +184,8 @@ double rc_cpl_joint_stop(const rc_model *m, const rc_data *d, int j, const doubl
  * table tab (imposed_rhs.c). */
 double rc_imp_rate(const rc_model *m, int tab, double ascale, double fscale, double t);
 /* Right-hand side (imposed_rhs.c): overwrite the imposed rows, W_imp'. */
-void rc_imp_rhs(const rc_model *m, rc_data *d, double t, const double *y, double *ydot);
+void rc_imp_rhs(const rc_model *m, const rc_data *d, double t, const double *y, double *ydot);
 /* Jacobian (imposed_jac.c): the W_imp row, then the imposed rows replaced. */
-int rc_imp_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val);
+int rc_imp_jac(const rc_model *m, const rc_data *d, double t, const double *y, double *val);
 
 #endif

@@ -13,6 +13,10 @@ rc_data *rc_data_new(const rc_model *m)
 {
     rc_data *d = calloc(1, sizeof *d);
     if (!d) return NULL;
+    if (!(d->sc = calloc(1, sizeof *d->sc))) {
+        free(d);
+        return NULL;
+    }
     size_t n = (size_t)m->ninter + 1;
     d->inter_mode = calloc(n, sizeof(int));
     d->inter_branch = calloc(n, sizeof(int));
@@ -34,58 +38,58 @@ rc_data *rc_data_new(const rc_model *m)
     {
         /* the hints, then the node cache (its offset a multiple of 16 bytes) */
         const size_t nh = (size_t)rc_seg_hint_len(m);
-        d->seg_hint = calloc(nh * sizeof(int) + (2 * RC_NODE_CACHE * (size_t)maxnode + 2) * sizeof(double), 1);
-        if (d->seg_hint) {
-            for (size_t k = 0; k < nh; k++) d->seg_hint[k] = -1;
-            d->node_cache = d->seg_hint + nh;
+        d->sc->seg_hint = calloc(nh * sizeof(int) + (2 * RC_NODE_CACHE * (size_t)maxnode + 2) * sizeof(double), 1);
+        if (d->sc->seg_hint) {
+            for (size_t k = 0; k < nh; k++) d->sc->seg_hint[k] = -1;
+            d->sc->node_cache = d->sc->seg_hint + nh;
         }
     }
     d->pt_slip = calloc((size_t)m->npt + 1, sizeof(int));
-    d->pt_share = malloc(((size_t)m->npt + 1) * sizeof(double));
+    d->sc->pt_share = malloc(((size_t)m->npt + 1) * sizeof(double));
     d->pt_lband = calloc((size_t)m->npt + 1, sizeof(double));
-    if (d->pt_share)
-        for (int j = 0; j <= m->npt; j++) d->pt_share[j] = 1.0;
-    d->pt_work = calloc(RC_PT_OUT * (size_t)maxpt + 4 * ((size_t)RC_NS_MAX + 6 * (size_t)maxpt) + 16, sizeof(double));
+    if (d->sc->pt_share)
+        for (int j = 0; j <= m->npt; j++) d->sc->pt_share[j] = 1.0;
+    d->sc->pt_work = calloc(RC_PT_OUT * (size_t)maxpt + 4 * ((size_t)RC_NS_MAX + 6 * (size_t)maxpt) + 16, sizeof(double));
     /* the point flips' scratch (points_flip): 4 doubles, an int and a flag per point */
     d->pt_flip = malloc((size_t)maxpt * (4 * sizeof(double) + sizeof(int) + 1) + 1);
     /* the reports of the last root evaluation (rc_report_cache_state) */
     int rc_ok = 0;
-    d->repc = calloc(1, sizeof *d->repc);
-    if (d->repc) {
-        d->repc->y = calloc((size_t)m->ny + 1, sizeof(double));
-        d->repc->rep = calloc(n, sizeof *d->repc->rep);
-        d->repc->key = malloc(4 * n * sizeof(int));
-        rc_ok = d->repc->y && d->repc->rep && d->repc->key;
+    d->sc->repc = calloc(1, sizeof *d->sc->repc);
+    if (d->sc->repc) {
+        d->sc->repc->y = calloc((size_t)m->ny + 1, sizeof(double));
+        d->sc->repc->rep = calloc(n, sizeof *d->sc->repc->rep);
+        d->sc->repc->key = malloc(4 * n * sizeof(int));
+        rc_ok = d->sc->repc->y && d->sc->repc->rep && d->sc->repc->key;
         if (rc_ok)
-            for (size_t k = 0; k < 4 * n; k++) d->repc->key[k] = -1;
+            for (size_t k = 0; k < 4 * n; k++) d->sc->repc->key[k] = -1;
     }
     int imp_ok = 1;
     if (m->imp) { /* imposed velocities: scratch of rhs and Jacobian (imposed.c) */
-        d->imp_free = calloc((size_t)m->ny, sizeof(double));
-        d->imp_scratch = calloc(3 * (size_t)m->ny, sizeof(double));
-        imp_ok = d->imp_free && d->imp_scratch;
+        d->sc->imp_free = calloc((size_t)m->ny, sizeof(double));
+        d->sc->imp_scratch = calloc(3 * (size_t)m->ny, sizeof(double));
+        imp_ok = d->sc->imp_free && d->sc->imp_scratch;
     }
     int jc_ok = 1;
     if (m->jb_inter) { /* the interfaces' Jacobian blocks (rc_jac_refresh_inter) */
-        d->jcache_off = malloc(n * sizeof *d->jcache_off);
-        jc_ok = d->jcache_off != NULL;
+        d->sc->jcache_off = malloc(n * sizeof *d->sc->jcache_off);
+        jc_ok = d->sc->jcache_off != NULL;
         int64_t off = 0;
         for (int i = 0; jc_ok && i < m->ninter; i++) {
-            d->jcache_off[i] = off;
+            d->sc->jcache_off[i] = off;
             off += (int64_t)m->jb_inter[i].nrow * m->jb_inter[i].ncol;
         }
         if (jc_ok) {
-            d->jcache_off[m->ninter] = off;
-            d->jcache = calloc((size_t)off + 1, sizeof(double));
-            jc_ok = d->jcache != NULL;
+            d->sc->jcache_off[m->ninter] = off;
+            d->sc->jcache = calloc((size_t)off + 1, sizeof(double));
+            jc_ok = d->sc->jcache != NULL;
         }
     }
     if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->inter_rband || !d->inter_settled || !d->inter_fcstr || !d->cpl || !imp_ok || !jc_ok || !rc_ok ||
-        !d->pt_slip || !d->pt_share || !d->pt_lband || !d->pt_work || !d->pt_flip || !d->node_cache) {
+        !d->pt_slip || !d->sc->pt_share || !d->pt_lband || !d->sc->pt_work || !d->pt_flip || !d->sc->node_cache) {
         rc_data_free(d);
         return NULL;
     }
-    d->fail_inter = -1;
+    d->sc->fail_inter = -1;
     return d;
 }
 
@@ -102,22 +106,23 @@ void rc_data_free(rc_data *d)
     free(d->inter_settled);
     free(d->inter_fcstr);
     free(d->pt_slip);
-    free(d->pt_share);
+    free(d->sc->pt_share);
     free(d->pt_lband);
-    free(d->pt_work);
+    free(d->sc->pt_work);
     free(d->pt_flip);
-    free(d->seg_hint); /* and the node cache */
+    free(d->sc->seg_hint); /* and the node cache */
     rc_cpl_data_free(d->cpl);
-    free(d->imp_free);
-    free(d->imp_scratch);
-    free(d->jcache);
-    free(d->jcache_off);
-    if (d->repc) {
-        free(d->repc->y);
-        free(d->repc->rep);
-        free(d->repc->key);
-        free(d->repc);
+    free(d->sc->imp_free);
+    free(d->sc->imp_scratch);
+    free(d->sc->jcache);
+    free(d->sc->jcache_off);
+    if (d->sc->repc) {
+        free(d->sc->repc->y);
+        free(d->sc->repc->rep);
+        free(d->sc->repc->key);
+        free(d->sc->repc);
     }
+    free(d->sc);
     free(d);
 }
 

@@ -1,9 +1,10 @@
 /*
- * The run data of the engine: what changes while a model runs (modes,
- * bands, caches, scratch, counters), next to the immutable rc_model.
- * Modes, bands and history change only at events (engine/events); the
- * right-hand side, Jacobian and root functions write the caches, the
- * scratch and the counters only (docs/design.md, "Model and run data").
+ * The run data of the engine: what changes while a model runs, next to
+ * the immutable rc_model. Modes, bands and history (rc_data) change only
+ * at the start and at events (engine/events); the right-hand side, the
+ * Jacobian and the root functions take rc_data const and write only what
+ * it reaches through sc (rc_scratch: caches, scratch, counters), so the
+ * compiler holds them to it (docs/design.md, "Pipeline and files").
  */
 #ifndef RC_ENGINE_DATA_H
 #define RC_ENGINE_DATA_H
@@ -12,7 +13,40 @@
 
 #include "model/model.h"
 
-/* Mutable run data. */
+/* What the right-hand side, the Jacobian and the root functions may write
+ * (rc_data.sc): caches, scratch and counters. They take the run data const;
+ * only what is reached through sc is theirs to write. */
+typedef struct rc_scratch {
+    double *pt_share;    /* [npt] each contact point's share w_j at the last evaluation of the
+                            roots (the integrator's step ends; 0 while its interface is not
+                            closed): its states' error weights (rc_point_ewt_scale) */
+    void *pt_work;       /* Jacobian scratch of the contact points (complex) */
+    void *node_cache;    /* node geometry of a node pair, RC_NODE_CACHE complex
+                            values per point (kernels.inc, seg_fill); it
+                            follows seg_hint in one allocation */
+    int *seg_hint;       /* [rc_seg_hint_len] the segment each surface node met
+                            last, -1: none (geom_seg.inc, node_seg) */
+    double *imp_free;    /* [ny] imposed velocities: the free accelerations of
+                            their rows at the last rhs (imposed.h), NULL: none */
+    double *imp_scratch; /* [3*ny] imposed velocities: Jacobian scratch */
+    /* the interfaces' dense Jacobian blocks as the last rc_assemble_jac
+     * added them (rc_jac_refresh_inter); NULL when the model had no
+     * Jacobian pattern yet */
+    double *jcache;      /* [sum of nrow*ncol of jb_inter] */
+    int64_t *jcache_off; /* [ninter + 1] offsets into jcache */
+    int jcache_ok;       /* jcache holds the blocks of the values last assembled */
+    /* the reports of the last root evaluation (rc_report_cache_*): read by
+     * the driver's samples at the same state; NULL: none */
+    struct rc_repcache *repc;
+    long n_rhs, n_jac, n_root;
+    long n_jac_refresh;  /* interface blocks refreshed after events */
+    int fail_inter;      /* element that produced a non-finite force, -1 */
+    double fail_t;
+} rc_scratch;
+
+/* The run data: modes, bands and history, changed only at the start and
+ * at events (engine/events) and by the backends' settings; the
+ * evaluation's own writable part behind sc. */
 typedef struct rc_data {
     int *inter_mode;     /* [ninter] rc_inter_mode */
     int *inter_branch;   /* [ninter] rc_branch (Iform 1, 2) */
@@ -23,17 +57,8 @@ typedef struct rc_data {
                             q_j + band, set at its landing so that the root it crossed
                             does not cross again at the same instant; 0 again at the
                             interface's next event (events.c) */
-    double *pt_share;    /* [npt] each contact point's share w_j at the last evaluation of the
-                            roots (the integrator's step ends; 0 while its interface is not
-                            closed): its states' error weights (rc_point_ewt_scale) */
-    void *pt_work;       /* Jacobian scratch of the contact points (complex) */
     void *pt_flip;       /* scratch of the contact points' stick/slip flips at events
                             (events.c points_flip): 3 doubles, an int, a flag per point */
-    void *node_cache;    /* node geometry of a node pair, RC_NODE_CACHE complex
-                            values per point (kernels.inc, seg_fill); it
-                            follows seg_hint in one allocation */
-    int *seg_hint;       /* [rc_seg_hint_len] the segment each surface node met
-                            last, -1: none (geom_seg.inc, node_seg) */
     double *inter_dref;  /* [ninter*3] sliding direction when a stateless friction
                             law saturated (reversal root) [-] */
     double *inter_fcstr; /* [ninter] the normal force a settled contact's
@@ -56,31 +81,16 @@ typedef struct rc_data {
                             decided at a rate within its rounding (events.c); 0 again
                             at the interface's next event */
     struct rc_cpl_data *cpl; /* couplings: catenary warm starts, workspace (coupling.h) */
-    double *imp_free;    /* [ny] imposed velocities: the free accelerations of
-                            their rows at the last rhs (imposed.h), NULL: none */
-    double *imp_scratch; /* [3*ny] imposed velocities: Jacobian scratch */
-    /* the interfaces' dense Jacobian blocks as the last rc_assemble_jac
-     * added them (rc_jac_refresh_inter); NULL when the model had no
-     * Jacobian pattern yet */
-    double *jcache;      /* [sum of nrow*ncol of jb_inter] */
-    int64_t *jcache_off; /* [ninter + 1] offsets into jcache */
-    int jcache_ok;       /* jcache holds the blocks of the values last assembled */
     const char *jac_skip; /* [ny] set by a backend that leaves these states out
                             of its Newton matrix (cvode.c): the Jacobian's
                             columns of these states are not evaluated (their
                             values are left 0); NULL: every column */
-    /* the reports of the last root evaluation (rc_report_cache_*): read by
-     * the driver's samples at the same state; NULL: none */
-    struct rc_repcache *repc;
-    long n_rhs, n_jac, n_root;
-    long n_jac_refresh;  /* interface blocks refreshed after events */
     long n_klu_sym;      /* KLU symbolic analyses of the Newton matrix so far (0: not counted) */
     long newton_nnz;     /* entries of the largest Newton matrix so far (0: not counted) */
-    int fail_inter;      /* element that produced a non-finite force, -1 */
-    double fail_t;
+    rc_scratch *sc;      /* what an evaluation writes */
 } rc_data;
 
-/* The reports of the last root evaluation (rc_data.repc): the state they
+/* The reports of the last root evaluation (rc_scratch.repc): the state they
  * were evaluated at, and per interface its report and the modes it was
  * evaluated in (rc_assemble_roots writes it; engine/assembly/assemble_rhs.c). */
 typedef struct rc_repcache {

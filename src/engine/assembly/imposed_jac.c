@@ -19,15 +19,15 @@
 #include "engine/kernels/as_complex.h"
 #include "engine/kernels/vec.inc"
 
-int rc_imp_jac(const rc_model *m, rc_data *d, double t, const double *y, double *val)
+int rc_imp_jac(const rc_model *m, const rc_data *d, double t, const double *y, double *val)
 {
     const rc_imposed *p = m->imp;
     const int ny = m->ny;
-    double *act = d->imp_scratch, *dp = d->imp_scratch + ny, *cf = d->imp_scratch + 2 * ny;
+    double *act = d->sc->imp_scratch, *dp = d->sc->imp_scratch + ny, *cf = d->sc->imp_scratch + 2 * ny;
     /* the free accelerations at (t, y) (the rhs keeps them in imp_free) */
-    const long nrhs = d->n_rhs;
+    const long nrhs = d->sc->n_rhs;
     if (rc_assemble_rhs(m, d, t, y, act)) return 1;
-    d->n_rhs = nrhs;
+    d->sc->n_rhs = nrhs;
     memset(act, 0, (size_t)ny * sizeof(double));
     memset(dp, 0, (size_t)ny * sizeof(double));
     /* dP/dy, P the power of the reactions; cf[r]: dP/d(free rate of row r) */
@@ -38,7 +38,7 @@ int rc_imp_jac(const rc_model *m, rc_data *d, double t, const double *y, double 
         const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t);
         act[r] = 1.0;
         cf[r] = -mass * y[r];
-        dp[r] += mass * (a - d->imp_free[r]);
+        dp[r] += mass * (a - d->sc->imp_free[r]);
     }
     for (int j = 0; j < p->nr; j++) {
         if (t > p->rtstop[j]) continue;
@@ -54,7 +54,7 @@ int rc_imp_jac(const rc_model *m, rc_data *d, double t, const double *y, double 
         rc_cs_load(y + a + 3, 4, q);
         rotate_c(q, wg, wd, 1);
         double tau[3], dwv[3];
-        for (int k = 0; k < 3; k++) dwv[k] = creal(wd[k]) - d->imp_free[a + 10 + k];
+        for (int k = 0; k < 3; k++) dwv[k] = creal(wd[k]) - d->sc->imp_free[a + 10 + k];
         for (int k = 0; k < 3; k++) tau[k] = J[3 * k] * dwv[0] + J[3 * k + 1] * dwv[1] + J[3 * k + 2] * dwv[2];
         for (int k = 0; k < 3; k++) {
             act[a + 10 + k] = 1.0;

@@ -22,7 +22,7 @@ double rc_imp_rate(const rc_model *m, int tab, double ascale, double fscale, dou
     return fscale * df / ascale;
 }
 
-void rc_imp_rhs(const rc_model *m, rc_data *d, double t, const double *y, double *ydot)
+void rc_imp_rhs(const rc_model *m, const rc_data *d, double t, const double *y, double *ydot)
 {
     const rc_imposed *p = m->imp;
     double power = 0.0; /* of the reactions [W] */
@@ -31,7 +31,7 @@ void rc_imp_rhs(const rc_model *m, rc_data *d, double t, const double *y, double
         if (t > p->ttstop[k]) continue;
         const int r = p->trow[k];
         const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t);
-        d->imp_free[r] = ydot[r];
+        d->sc->imp_free[r] = ydot[r];
         power += m->body_mass[p->tbody[k]] * (a - ydot[r]) * y[r];
         ydot[r] = a;
     }
@@ -48,7 +48,7 @@ void rc_imp_rhs(const rc_model *m, rc_data *d, double t, const double *y, double
         }
         rotate_r(y + a + 3, wgd, wd, 1);
         for (int k = 0; k < 3; k++) {
-            d->imp_free[a + 10 + k] = ydot[a + 10 + k];
+            d->sc->imp_free[a + 10 + k] = ydot[a + 10 + k];
             dw[k] = wd[k] - ydot[a + 10 + k];
             ydot[a + 10 + k] = wd[k];
         }

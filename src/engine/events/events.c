@@ -118,7 +118,7 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
     const int npt = m->inter_npt[i], ps = m->inter_pst[i]; /* points, states per point */
     if (npt == 0 || d->inter_mode[i] != RC_MODE_CLOSED) return 0;
     int *sl = d->pt_slip + m->inter_pbase[i];
-    double *out = d->pt_work; /* RC_PT_OUT per point (rc_data_new) */
+    double *out = d->sc->pt_work; /* RC_PT_OUT per point (rc_data_new) */
     /* scratch (rc_data_new): keep [3 npt], oldn [npt], md [npt], sel [npt] */
     double *keep = d->pt_flip, *oldn = keep + 3 * npt;
     int *md = (int *)(oldn + npt);
@@ -240,7 +240,7 @@ static int points_land(const rc_model *m, rc_data *d, int i, double t, double *y
     const int npt = m->inter_npt[i], ps = m->inter_pst[i];
     if (d->inter_mode[i] != RC_MODE_CLOSED || m->inter_fr[i].form != RC_FF_INCREMENTAL) return 0;
     int n = 0;
-    double *ft = y + m->inter_eadr[i] + m->inter_ns[i], *out = d->pt_work;
+    double *ft = y + m->inter_eadr[i] + m->inter_ns[i], *out = d->sc->pt_work;
     rc_points_eval(m, d, i, NULL, t, y, out);
     /* the landing band: the position tolerance of the interface, or more
      * where the root was located at a depth beyond it */

@@ -160,29 +160,37 @@ static void test_restitution_errors(void)
     ENSURE(strstr(e.msg, "field e_target"));
 }
 
+/* A ball 1 m above a floor (TYPE6, linear 1e8 N/m, restitution 0.7),
+ * under gravity or not, compiled; NULL (message printed) on an error. */
+static rc_model *settle_ball(int gravity, const char *name, rc_error *e)
+{
+    char text[1024];
+    snprintf(text, sizeof text,
+             "/BEGIN\nsettle\n2022,0\nkg,m,s\nkg,m,s\n/FUNCT/1\nlinear\n0,0\n1,1e8\n"
+             "/NODE\n1,0,0,1.05\n/RBODY/1\nball\n1,,,,1\n0.001,0.001,0.001\n0,0,0\n"
+             "/SURF/ELLIPS/1\nball\n0,2,1\n0,0,1.05\n0.05,0.05,0.05\n/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
+             "%s/INTER/TYPE6/1\nfloor\n         1         2\n"
+             "                                                           0\n"
+             "                   0         0         0         0         0\n"
+             "         1         0                                                 0\n         0\n"
+             "                             0         0                                     0.7\n"
+             "/RUN\n3,0.01\n/END\n",
+             gravity ? "/GRAV/1\ng\n0,Z,0,0,0,,1,-9.81\n" : "");
+    rc_model *m = tu_compile_text(text, name, e);
+    ENSURE(m != NULL);
+    if (!m) fprintf(stderr, "  %s\n", e->msg);
+    return m;
+}
+
 /* Settling (docs/theory.md 5.2): a ball bouncing with e = 0.7 under
  * gravity ends held in persistent contact, once, near the rigid Zeno time;
  * a settled contact's release root is off, and the mark goes with the
  * closed mode. */
 static void test_restitution_settling(void)
 {
-    const char *text =
-        "/BEGIN\nsettle\n2022,0\nkg,m,s\nkg,m,s\n/FUNCT/1\nlinear\n0,0\n1,1e8\n"
-        "/NODE\n1,0,0,1.05\n/RBODY/1\nball\n1,,,,1\n0.001,0.001,0.001\n0,0,0\n"
-        "/SURF/ELLIPS/1\nball\n0,2,1\n0,0,1.05\n0.05,0.05,0.05\n/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
-        "/GRAV/1\ng\n0,Z,0,0,0,,1,-9.81\n/INTER/TYPE6/1\nfloor\n         1         2\n"
-        "                                                           0\n"
-        "                   0         0         0         0         0\n"
-        "         1         0                                                 0\n         0\n"
-        "                             0         0                                     0.7\n"
-        "/RUN\n3,0.01\n/END\n";
     rc_error e;
-    rc_model *m = tu_compile_text(text, "settle.rad", &e);
-    ENSURE(m != NULL);
-    if (!m) {
-        fprintf(stderr, "  %s\n", e.msg);
-        return;
-    }
+    rc_model *m = settle_ball(1, "settle.rad", &e);
+    if (!m) return;
     rc_run_options o = {0};
     rc_stats st;
     ENSURE(rc_run(m, &o, &st, &e) == RC_OK);
@@ -221,23 +229,9 @@ static void test_restitution_settling(void)
  * run otherwise, with the message naming the element and the last kind. */
 static void test_restitution_settle_verdicts(void)
 {
-    const char *text =
-        "/BEGIN\nsettle\n2022,0\nkg,m,s\nkg,m,s\n/FUNCT/1\nlinear\n0,0\n1,1e8\n"
-        "/NODE\n1,0,0,1.05\n/RBODY/1\nball\n1,,,,1\n0.001,0.001,0.001\n0,0,0\n"
-        "/SURF/ELLIPS/1\nball\n0,2,1\n0,0,1.05\n0.05,0.05,0.05\n/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
-        "/INTER/TYPE6/1\nfloor\n         1         2\n"
-        "                                                           0\n"
-        "                   0         0         0         0         0\n"
-        "         1         0                                                 0\n         0\n"
-        "                             0         0                                     0.7\n"
-        "/RUN\n3,0.01\n/END\n";
     rc_error e;
-    rc_model *m = tu_compile_text(text, "settle_verdicts.rad", &e);
-    ENSURE(m != NULL);
-    if (!m) {
-        fprintf(stderr, "  %s\n", e.msg);
-        return;
-    }
+    rc_model *m = settle_ball(0, "settle_verdicts.rad", &e);
+    if (!m) return;
     rc_data *d = rc_data_new(m);
     rc_settle *h = rc_settle_new(m);
     ENSURE(d && h);

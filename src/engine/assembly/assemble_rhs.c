@@ -61,7 +61,7 @@ int rc_assemble_rhs(const rc_model *m, const rc_data *d, double t, const double 
                 return 1; /* recoverable: CVODE retries with a smaller step */
             }
     }
-    /* couplings (coupling_rhs.inc) */
+    /* couplings (below) */
     if (rc_cpl_rhs(m, d, t, y, ydot)) return 1;
     /* potential of a time-varying gravity: E' = -sum m g(t).v */
     if (m->gwork_adr >= 0) {
@@ -303,7 +303,7 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         d->sc->repc->ok = kept;
         if (kept) memcpy(d->sc->repc->y, y, (size_t)m->ny * sizeof(double));
     }
-    /* contact couplings: after the interfaces' roots (contact_rhs.inc) */
+    /* contact couplings: after the interfaces' roots (below) */
     if (rc_cpl_nroots(m) > 0) rc_cpl_roots(m, d, t, y, g + rc_root_cpl_base(m));
 }
 
@@ -348,4 +348,346 @@ int rc_roots_live(const rc_model *m, double tend, int *live)
     return n;
 }
 
-#include "coupling_rhs.inc"
+/* ---- couplings ------------------------------------------------------ */
+/*
+ * Coupling drivers in real arithmetic: right-hand side and reports.
+ * (After kernels_coupling.inc and acc_slot.) Pure like the rest of the right-hand side, except for the
+ * catenary warm starts in d->cpl, which change only the starting point of
+ * the solver, not its converged result.
+ */
+
+int rc_cpl_rhs(const rc_model *m, const rc_data *d, double t, const double *y, double *ydot)
+{
+    const rc_couplings *c = m->cpl;
+    d->cpl->fail = -1;
+    for (int k = 0; k < c->n; k++) {
+        double *edot = ydot + c->eadr[k];
+        const int b1 = c->b1[k], b2 = c->b2[k];
+        const double *y1 = rc_body_state(m, b1, y), *y2 = rc_body_state(m, b2, y);
+        double *a1 = acc_slot(m, b1, ydot), *a2 = acc_slot(m, b2, ydot);
+        int bad = 0;
+        if (c->kind[k] == RC_CPL_SPRING) {
+            spring_r(m, k, y1, y2, a1, a2, edot, NULL);
+        } else if (c->kind[k] == RC_CPL_CONTACT) {
+            contact_cpl_r(m, k, d->cpl->fmode, 0, y1, y2, a1, a2, edot, NULL);
+        } else if (c->kind[k] == RC_CPL_LIMIT) {
+            jlimit_r(m, k, d->cpl->lmode[k], y1, y2, a1, a2, edot, NULL, NULL, NULL, NULL, NULL);
+        } else {
+            double eup[3];
+            rc_cat_sol s;
+            bad = cat_solve_at_r(m, d, k, t, y, eup, &s);
+            if (!bad) catenary_r(m, k, eup, &s, y1, y2, a1, a2, edot, NULL, NULL);
+        }
+        if (bad || !isfinite(edot[0]) || !isfinite(edot[1])) {
+            d->cpl->fail = k;
+            d->sc->fail_t = t;
+            return 1; /* recoverable: CVODE retries with a smaller step */
+        }
+    }
+    return 0;
+}
+
+static int contact_report(const rc_model *m, const rc_data *d, int k, const double *y, rc_cpl_report *r);
+
+int rc_cpl_report_eval(const rc_model *m, const rc_data *d, int k, double t, const double *y,
+                       rc_cpl_report *r)
+{
+    const rc_couplings *c = m->cpl;
+    const double *y1 = rc_body_state(m, c->b1[k], y), *y2 = rc_body_state(m, c->b2[k], y);
+    if (c->kind[k] == RC_CPL_SPRING) {
+        spring_r(m, k, y1, y2, NULL, NULL, NULL, r);
+        r->lowest = NAN;
+        return !isfinite(r->force);
+    }
+    if (c->kind[k] == RC_CPL_CONTACT) return contact_report(m, d, k, y, r);
+    if (c->kind[k] == RC_CPL_LIMIT) {
+        /* the joint coordinate as the length, the generalised force */
+        double fa[6];
+        memset(r, 0, sizeof *r);
+        jlimit_r(m, k, d ? d->cpl->lmode[k] : RC_LIM_FREE, y1, y2, NULL, NULL, NULL, &r->force, &r->length, &r->rate,
+                 NULL, fa);
+        for (int i = 0; i < 3; i++) {
+            r->f1[i] = fa[i];
+            r->f2[i] = fa[3 + i];
+        }
+        r->lowest = NAN;
+        return !isfinite(r->force);
+    }
+    /* catenary: solve, end forces, parameters, lowest point */
+    double eup[3], X, Y, h[3], p1[3], v1[3], p2[3], v2[3];
+    rc_cat_sol s;
+    memset(r, 0, sizeof *r);
+    if (cat_solve_at_r(m, d, k, t, y, eup, &s)) {
+        r->force = r->length = r->c = r->u1 = r->u2 = r->lowest = NAN;
+        for (int i = 0; i < 3; i++) r->f1[i] = r->f2[i] = NAN;
+        return 1;
+    }
+    catenary_r(m, k, eup, &s, y1, y2, NULL, NULL, NULL, r->f1, r->f2);
+    cat_span_r(m, k, eup, y1, y2, &X, &Y, h, p1, v1, p2, v2);
+    double del[3] = {p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2]};
+    double vdel[3] = {v2[0] - v1[0], v2[1] - v1[1], v2[2] - v1[2]};
+    r->length = sqrt(dot_r(del, del));
+    r->rate = dot_r(del, vdel) / r->length;
+    r->force = sqrt(dot_r(r->f1, r->f1));
+    r->c = s.H;
+    r->u1 = asinh(s.V1 / s.H);
+    r->u2 = asinh(s.V2 / s.H);
+    /* lowest point: end 1 when the line rises from it, end 2 when it falls
+     * to it, else the vertex, (T1 - H)/w + V1^2/(2 w EA) below end 1 */
+    const double z1 = dot_r(p1, eup) + dot_r(m->origin, eup), T1 = hypot(s.H, s.V1); /* the deck's heights */
+    if (s.V1 >= 0) r->lowest = z1;
+    else if (s.V2 <= 0) r->lowest = z1 + Y;
+    else r->lowest = z1 - s.V1 * s.V1 * (1.0 / (T1 + s.H) + 0.5 / c->ea[k]) / s.w;
+    return 0;
+}
+
+double rc_cpl_joint_stop(const rc_model *m, const rc_data *d, int j, const double *y, double *q)
+{
+    const rc_couplings *c = m->cpl;
+    *q = NAN;
+    for (int k = c->ncard; k < c->n; k++) {
+        if (c->ljoint[k] != j) continue;
+        double Q;
+        jlimit_r(m, k, d->cpl->lmode[k], rc_body_state(m, c->b1[k], y), rc_body_state(m, c->b2[k], y), NULL, NULL,
+                 NULL, &Q, q, NULL, NULL, NULL);
+        return Q;
+    }
+    return 0.0;
+}
+
+/* ---- contact couplings: face modes, roots and events; joint stops ---- */
+/*
+ * Contact coupling face modes, roots and events (model/coupling_contact.h),
+ * in real arithmetic.
+ *
+ * Face f has two root functions: g[2f] = d - d0 (entering the effective
+ * range, falling; leaving it, rising) and g[2f + 1] = the unclipped normal
+ * force a_f (k1 (d0 - d) - k2 dd/dt) while in range (released when it
+ * falls through zero, pushing again when it rises), 1 out of range.
+ */
+
+/* Unclipped normal force of face f at the real state [N], its distance. */
+static double cface_force(const rc_model *m, int k, int f, const double *y1, const double *y2, double *dist)
+{
+    const rc_cpl_contact *ct = m->cpl->ct;
+    double x[3], d, dd, n[3], vt[3];
+    cface_r(m, k, f, y1, y2, x, &d, &dd, n, vt);
+    *dist = d;
+    return ct->face[RC_FACE_NV * f + 6] * (ct->k1[k] * (ct->d0[k] - d) - ct->k2[k] * dd);
+}
+
+/* The mode a face takes from the state: out of range, pushing, or in range
+ * with a force that would pull (released). */
+static int cface_mode(const rc_model *m, int k, int f, const double *y1, const double *y2)
+{
+    const rc_cpl_contact *ct = m->cpl->ct;
+    double x[3], d, dd, n[3], vt[3];
+    cface_r(m, k, f, y1, y2, x, &d, &dd, n, vt);
+    const double d0 = ct->d0[k], fn = ct->face[RC_FACE_NV * f + 6] * (ct->k1[k] * (d0 - d) - ct->k2[k] * dd);
+    /* a face exactly at d0 (to rounding) that approaches is entering: its
+     * root is zero here and would not be seen to cross */
+    const int at_d0 = fabs(d - d0) <= 1.5e-14 * (fabs(d0) + fabs(x[0]) + fabs(x[1]) + fabs(x[2])); /* 64 ulps */
+    if (!(d < d0) && !(at_d0 && dd < 0)) return RC_FACE_OUT;
+    return fn > 0 || dd < 0 ? RC_FACE_PUSH : RC_FACE_RELEASED;
+}
+
+static void cface_modes(const rc_model *m, int k, const double *y, int *modes)
+{
+    const rc_couplings *c = m->cpl;
+    const double *y1 = rc_body_state(m, c->b1[k], y), *y2 = rc_body_state(m, c->b2[k], y);
+    for (int f = c->ct->fadr[k]; f < c->ct->fadr[k + 1]; f++) modes[f] = cface_mode(m, k, f, y1, y2);
+}
+
+static int contact_report(const rc_model *m, const rc_data *d, int k, const double *y, rc_cpl_report *r)
+{
+    const rc_couplings *c = m->cpl;
+    const double *y1 = rc_body_state(m, c->b1[k], y), *y2 = rc_body_state(m, c->b2[k], y);
+    contact_cpl_r(m, k, d ? d->cpl->fmode : NULL, !d, y1, y2, NULL, NULL, NULL, r);
+    return !isfinite(r->force);
+}
+
+/* ---- joint stops (after the faces' roots: RC_LIM_ROOTS per stop coupling) */
+static int lim_root0(const rc_model *m, int k)
+{
+    return RC_FACE_ROOTS * m->cpl->ct->nface + RC_LIM_ROOTS * (k - m->cpl->ncard);
+}
+
+/* q, dq/dt and the unclipped force F of stop coupling k past the stop of
+ * `mode` at the real state. */
+static void lim_eval(const rc_model *m, int k, int mode, const double *y, double *q, double *qd, double *F)
+{
+    const rc_couplings *c = m->cpl;
+    double Q;
+    jlimit_r(m, k, mode, rc_body_state(m, c->b1[k], y), rc_body_state(m, c->b2[k], y), NULL, NULL, NULL, &Q, q, qd,
+             F, NULL);
+}
+
+/* The mode a stop takes from the state: past a stop (or on it and moving
+ * past it), pushing when its force is positive or the coordinate moves on
+ * past it, released otherwise. */
+static int lim_mode(const rc_model *m, int k, const double *y)
+{
+    const rc_couplings *c = m->cpl;
+    double q, qd, F;
+    lim_eval(m, k, RC_LIM_FREE, y, &q, &qd, &F);
+    const double tiny = 1.5e-14 * (1.0 + fabs(q)); /* on the stop to rounding */
+    if (q < c->llo[k] || (q - c->llo[k] <= tiny && qd < 0)) {
+        lim_eval(m, k, RC_LIM_LO_PUSH, y, &q, &qd, &F);
+        return F > 0 || qd < 0 ? RC_LIM_LO_PUSH : RC_LIM_LO_REL;
+    }
+    if (q > c->lhi[k] || (c->lhi[k] - q <= tiny && qd > 0)) {
+        lim_eval(m, k, RC_LIM_HI_PUSH, y, &q, &qd, &F);
+        return F > 0 || qd > 0 ? RC_LIM_HI_PUSH : RC_LIM_HI_REL;
+    }
+    return RC_LIM_FREE;
+}
+
+static void lim_roots(const rc_model *m, const rc_data *d, const double *y, double *g)
+{
+    const rc_couplings *c = m->cpl;
+    for (int k = c->ncard; k < c->n; k++) {
+        double *gk = g + lim_root0(m, k), q, qd, F;
+        const int mode = d->cpl->lmode[k];
+        lim_eval(m, k, mode, y, &q, &qd, &F);
+        gk[0] = isfinite(c->llo[k]) ? q - c->llo[k] : 1.0;
+        gk[1] = isfinite(c->lhi[k]) ? c->lhi[k] - q : 1.0;
+        gk[2] = mode == RC_LIM_FREE ? 1.0 : F;
+    }
+}
+
+static void lim_root_dirs(const rc_model *m, const rc_data *d, int *dir)
+{
+    const rc_couplings *c = m->cpl;
+    for (int k = c->ncard; k < c->n; k++) {
+        int *r = dir + lim_root0(m, k);
+        const int mode = d->cpl->lmode[k];
+        const int lo = mode == RC_LIM_LO_PUSH || mode == RC_LIM_LO_REL;
+        const int hi = mode == RC_LIM_HI_PUSH || mode == RC_LIM_HI_REL;
+        r[0] = lo ? 1 : -1; /* leave / reach the lower stop */
+        r[1] = hi ? 1 : -1; /* leave / reach the upper stop */
+        r[2] = mode == RC_LIM_LO_PUSH || mode == RC_LIM_HI_PUSH ? -1 : 1; /* release / push again */
+    }
+}
+
+static int lim_events(const rc_model *m, rc_data *d, const double *y, const int *roots, rc_event_kind *kinds,
+                      int *cpls, int max_ev, int *restart, int n)
+{
+    static const rc_event_kind names[4] = {RC_EV_STOP_ENTER, RC_EV_STOP_LEAVE, RC_EV_STOP_RELEASE, RC_EV_STOP_CLOSE};
+    const rc_couplings *c = m->cpl;
+    for (int k = c->ncard; k < c->n; k++) {
+        const int *r = roots + lim_root0(m, k);
+        int *mode = d->cpl->lmode + k, kind = -1;
+        const int lo = *mode == RC_LIM_LO_PUSH || *mode == RC_LIM_LO_REL;
+        const int hi = *mode == RC_LIM_HI_PUSH || *mode == RC_LIM_HI_REL;
+        if (*mode == RC_LIM_FREE && (r[0] != 0 || r[1] != 0)) {
+            /* reaching a stop: pushing when the force is positive or the
+             * coordinate moves on past it (the elastic part grows from 0) */
+            double q, qd, F;
+            const int lower = r[0] != 0;
+            lim_eval(m, k, lower ? RC_LIM_LO_PUSH : RC_LIM_HI_PUSH, y, &q, &qd, &F);
+            const int on = lower ? qd < 0 : qd > 0;
+            *mode = lower ? (F > 0 || on ? RC_LIM_LO_PUSH : RC_LIM_LO_REL) : (F > 0 || on ? RC_LIM_HI_PUSH : RC_LIM_HI_REL);
+            kind = 0;
+        } else if ((lo && r[0] != 0) || (hi && r[1] != 0)) {
+            *mode = RC_LIM_FREE;
+            kind = 1;
+        } else if ((*mode == RC_LIM_LO_PUSH || *mode == RC_LIM_HI_PUSH) && r[2] != 0) {
+            *mode = *mode == RC_LIM_LO_PUSH ? RC_LIM_LO_REL : RC_LIM_HI_REL;
+            kind = 2;
+        } else if ((*mode == RC_LIM_LO_REL || *mode == RC_LIM_HI_REL) && r[2] != 0) {
+            *mode = *mode == RC_LIM_LO_REL ? RC_LIM_LO_PUSH : RC_LIM_HI_PUSH;
+            kind = 3;
+        }
+        if (kind < 0) continue;
+        *restart = 1;
+        if (n < max_ev) {
+            kinds[n] = names[kind];
+            cpls[n] = k;
+        }
+        n++;
+    }
+    return n;
+}
+
+void rc_cpl_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
+{
+    (void)t;
+    const rc_couplings *c = m->cpl;
+    for (int k = 0; k < c->n; k++) {
+        if (c->kind[k] != RC_CPL_CONTACT) continue;
+        const double *y1 = rc_body_state(m, c->b1[k], y), *y2 = rc_body_state(m, c->b2[k], y);
+        for (int f = c->ct->fadr[k]; f < c->ct->fadr[k + 1]; f++) {
+            double dist;
+            const double fn = cface_force(m, k, f, y1, y2, &dist);
+            g[RC_FACE_ROOTS * f] = dist - c->ct->d0[k];
+            g[RC_FACE_ROOTS * f + 1] = d->cpl->fmode[f] == RC_FACE_OUT ? 1.0 : fn;
+        }
+    }
+    lim_roots(m, d, y, g);
+}
+
+void rc_cpl_root_dirs(const rc_model *m, const rc_data *d, int *dir)
+{
+    const rc_cpl_contact *ct = m->cpl->ct;
+    for (int f = 0; f < ct->nface; f++) {
+        const int mode = d->cpl->fmode[f];
+        dir[RC_FACE_ROOTS * f] = mode == RC_FACE_OUT ? -1 : 1;
+        dir[RC_FACE_ROOTS * f + 1] = mode == RC_FACE_PUSH ? -1 : 1;
+    }
+    lim_root_dirs(m, d, dir);
+}
+
+void rc_cpl_modes_init(const rc_model *m, rc_data *d, double t, const double *y)
+{
+    (void)t;
+    const rc_couplings *c = m->cpl;
+    for (int k = 0; k < c->n; k++)
+        if (c->kind[k] == RC_CPL_CONTACT) cface_modes(m, k, y, d->cpl->fmode);
+        else if (c->kind[k] == RC_CPL_LIMIT) d->cpl->lmode[k] = lim_mode(m, k, y);
+}
+
+int rc_cpl_events(const rc_model *m, rc_data *d, double t, const double *y, const int *roots, rc_event_kind *kinds,
+                  int *cpls, int max_ev, int *restart)
+{
+    (void)t;
+    static const rc_event_kind names[4] = {RC_EV_CPL_CONTACT_ENTER, RC_EV_CPL_CONTACT_LEAVE,
+                                           RC_EV_CPL_CONTACT_RELEASE, RC_EV_CPL_CONTACT_CLOSE};
+    const rc_couplings *c = m->cpl;
+    int n = 0;
+    for (int k = 0; k < c->n; k++) {
+        if (c->kind[k] != RC_CPL_CONTACT) continue;
+        const double *y1 = rc_body_state(m, c->b1[k], y), *y2 = rc_body_state(m, c->b2[k], y);
+        int seen[4] = {0, 0, 0, 0};
+        for (int f = c->ct->fadr[k]; f < c->ct->fadr[k + 1]; f++) {
+            const int *r = roots + RC_FACE_ROOTS * f;
+            int *mode = d->cpl->fmode + f, kind = -1;
+            if (*mode == RC_FACE_OUT && r[0] != 0) {
+                /* entering at d = d0: pushing when the force is positive or
+                 * the face approaches (the elastic part grows from zero) */
+                double x[3], dist, dd, nn[3], vt[3];
+                cface_r(m, k, f, y1, y2, x, &dist, &dd, nn, vt);
+                const double fn = c->ct->face[RC_FACE_NV * f + 6] * (c->ct->k1[k] * (c->ct->d0[k] - dist) - c->ct->k2[k] * dd);
+                *mode = fn > 0 || dd < 0 ? RC_FACE_PUSH : RC_FACE_RELEASED;
+                kind = 0;
+            } else if (*mode != RC_FACE_OUT && r[0] != 0) {
+                *mode = RC_FACE_OUT;
+                kind = 1;
+            } else if (*mode == RC_FACE_PUSH && r[1] != 0) {
+                *mode = RC_FACE_RELEASED;
+                kind = 2;
+            } else if (*mode == RC_FACE_RELEASED && r[1] != 0) {
+                *mode = RC_FACE_PUSH;
+                kind = 3;
+            }
+            if (kind < 0) continue;
+            *restart = 1;
+            if (seen[kind]++) continue;
+            if (n < max_ev) {
+                kinds[n] = names[kind];
+                cpls[n] = k;
+            }
+            n++;
+        }
+    }
+    return lim_events(m, d, y, roots, kinds, cpls, max_ev, restart, n);
+}

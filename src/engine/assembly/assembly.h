@@ -146,7 +146,7 @@ void rc_stk_geom_c(const rc_model *m, int i, const double _Complex *ya, const do
                    double _Complex *point, double _Complex *n, double _Complex *vrel, double _Complex *ddot);
 
 
-/* ---- couplings (coupling_rhs.inc, contact_rhs.inc, assemble_jac.c;
+/* ---- couplings (assemble_rhs.c, assemble_jac.c;
  *      gravity of the lines in body.c) -------------------------------- */
 /* Gravity acting on the lines at time t [m/s^2] (engine/assembly/body.c). */
 void rc_cpl_gravity(const rc_model *m, double t, double g[3]);
@@ -162,8 +162,8 @@ int rc_cpl_dense_block(const rc_model *m, const rc_data *d, int k, double t, con
 /* Add the coupling Jacobian blocks into the CSC values. */
 int rc_cpl_jac(const rc_model *m, const rc_data *d, double t, const double *y, double *val);
 /* Root functions of the contact couplings (rc_cpl_nroots of them), their
- * directions, the face modes at the start and at events (engine/assembly/contact_rhs.inc,
- * included by assemble_rhs.c). rc_cpl_events returns the events written into
+ * directions, the face modes at the start and at events (assemble_rhs.c).
+ * rc_cpl_events returns the events written into
  * kinds[]/cpls[] (at most max_ev; the kinds RC_EV_CPL_CONTACT_*, RC_EV_STOP_*,
  * event_kind.h) and sets *restart when a mode changed. */
 void rc_cpl_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
@@ -174,7 +174,7 @@ int rc_cpl_events(const rc_model *m, rc_data *d, double t, const double *y, cons
 
 /* The stop force or moment of joint j at (t, y) in the modes of d: the
  * generalised force on the joint coordinate q (along +q on body a) [N] or
- * [N m]; 0 without stops (engine/assembly/coupling_rhs.inc). *q receives q [m] or
+ * [N m]; 0 without stops (engine/assembly/assemble_rhs.c). *q receives q [m] or
  * [rad] (NaN without stops). */
 double rc_cpl_joint_stop(const rc_model *m, const rc_data *d, int j, const double *y, double *q);
 

@@ -648,7 +648,7 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
             n++;
         }
     }
-    /* contact coupling faces (contact_rhs.inc): their roots follow the
+    /* contact coupling faces (assemble_rhs.c): their roots follow the
      * interfaces'; an event names the coupling (inter = -1 - k) */
     if (rc_cpl_nroots(m) > 0) {
         rc_event_kind kinds[RC_CPL_MAX_EV];

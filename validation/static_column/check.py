@@ -8,6 +8,12 @@ Closed form (README.md): the contact between sphere j and j + 1 (j = 0 the
 floor) carries (N - j) m g f(t), its penetration (N - j) m g f(t) / k; the
 Hertz contact carries m g f(t), its penetration (m g f(t) / K)^(1/1.5).
 
+A second deck (case_active.rad): one sphere hung from a spring above the
+floor with a gap, under a gravity that rises to g at t_end / 2 and falls
+back to 0: it meets the floor and leaves it again (the unilateral active
+set). It sinks by d = W / k_s while d <= gap, else d = (W + k gap) /
+(k_s + k), its contact carrying k (d - gap).
+
 The deck forces Method 3 and keeps it in every mode of scripts/check.sh:
 the checks are of the static analysis itself (closed forms to 1e-9, which
 no dynamic run of this deck reaches: the gravity ramp excites the column's
@@ -31,6 +37,7 @@ XH = 1.0                          # its x [m]
 T_END, DT_OUT = 1.0, 0.1
 FLOOR = N + 2                     # surface id of the floor
 TOL = 1e-9
+MS, RS, GAP, KS = 1.0, 0.05, 1.0e-3, 1.0e3   # the hung sphere: mass, radius, gap, spring [N/m]
 
 
 def deck():
@@ -56,6 +63,25 @@ def deck():
     for i in range(1, N):
         d.type6(i + 1, i, i + 1, 1, title=f"sphere {i} - sphere {i + 1}")
     d.power(N + 1, N + 1, FLOOR, k=KH, m1=1.5, c=0.0, title="Hertz sphere - floor")
+    d.run(T_END, DT_OUT)
+    d.solver(method=3)
+    return d
+
+
+def deck_active():
+    d = Deck("static active set: a sphere hung from a spring meets the floor and leaves it")
+    d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e5 N/m")
+    d.funct(2, [0.0, 0.5 * T_END, T_END], [0.0, 1.0, 0.0], title="gravity up and down")
+    d.nodes([(1, 0.0, 0.0, RS + GAP)])
+    d.rbody(1, 1, MS, [0.4 * MS * RS * RS] * 3, grnod=1, title="hung sphere")
+    d.sphere(1, 1, (0.0, 0.0, RS + GAP), RS, title="hung sphere")
+    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0")
+    d.grnod(1, [1], title="hung sphere")
+    # the spring, attached at the centre, holds no rotation nor sideways: held
+    d.bcs(1, 1, "110 111", title="vertical translation only")
+    d.grav_fct(1, "Z", -G, 2)
+    d.type6(1, 1, 2, 1, title="hung sphere - floor")
+    d.spring(2, 1, (0.0, 0.0, RS + GAP), 0, (0.0, 0.0, RS + GAP + 0.5), iform=1, a=KS, title="hanger")
     d.run(T_END, DT_OUT)
     d.solver(method=3)
     return d
@@ -106,8 +132,24 @@ def main():
                 f"Hertz sphere: max rel. error of F against m g f(t) {eF.max():.2e}, of P against (F/K)^(1/1.5) "
                 f"{eP.max():.2e}, at f = 0 {e0:.2e} (< {TOL:g}); P at t_end {r.pen[-1, c]:.12e} m "
                 f"(closed form {P[-1]:.12e} m)")
+    # the hung sphere: the active set (closes on the way up, opens on the way down)
+    r = rcval.Result(rcval.run_case("case_active.rad", keep_solver=True))
+    fs = np.where(r.t <= 0.5 * T_END, r.t / (0.5 * T_END), (T_END - r.t) / (0.5 * T_END))
+    W = MS * G * fs
+    dfree = W / KS
+    dd = np.where(dfree <= GAP, dfree, (W + K * GAP) / (KS + K))
+    Fc = np.where(dfree <= GAP, 0.0, K * (dd - GAP))
+    eF = float(np.abs(r.fn[:, 0] - Fc).max() / (MS * G))
+    ez = float(np.abs((RS + GAP - r.pos[:, 0, 2]) - dd).max() / GAP)
+    modes = [int(x) for x in r.mode[:, 0]]
+    want = [2 if x > 0 else 1 for x in Fc]
+    evs = [(round(float(t), 12), k) for t, k in zip(r.ev_t, r.ev_kind)]
+    rcval.check("static_column.active_set", modes == want and [k for _, k in evs] == ["contact_close", "contact_open"],
+                f"hung sphere's contact modes {modes} (expected {want}; 1 open, 2 closed); events {evs}")
+    rcval.check("static_column.active_set_forces", max(eF, ez) < TOL,
+                f"hung sphere: max |F - F_ref| / (m g) {eF:.2e}, max |d - d_ref| / gap {ez:.2e} (< {TOL:g})")
     rcval.finish()
 
 
 if __name__ == "__main__":
-    rcval.entry(main, deck)
+    rcval.entry(main, lambda: {"case.rad": deck(), "case_active.rad": deck_active()})

@@ -63,8 +63,24 @@ if ncdump -h "$tmp/ida.nc" 2>/dev/null | grep -q ':solver = "IDA BDF' && grep -q
    grep -q "^impacts [1-9]" "$tmp/o"; then expect method_ida 0 $rc "($(grep -o 'impacts [0-9]*' "$tmp/o") on IDA)"
 else expect method_ida 0 99 "(exit $rc: $(head -c 200 "$tmp/o") $(head -c 200 "$tmp/e"))"; fi
 "$bin" run "$demo" -o "$tmp/bad_m.nc" --method rk4 > "$tmp/e" 2>&1; rc=$?
-grep -q "^ricochet: --method: expected cvode or ida" "$tmp/e" && [ ! -e "$tmp/bad_m.nc" ] &&
+grep -q "^ricochet: --method: expected cvode, ida or static" "$tmp/e" && [ ! -e "$tmp/bad_m.nc" ] &&
     expect bad_method 2 $rc "($(head -1 "$tmp/e"))" || expect bad_method 2 99 "(exit $rc: $(head -c 160 "$tmp/e"))"
+# the static analysis (/SOLVER Method 3): --method static runs an equilibrium
+# deck; a deck outside its scope is refused at the card, exit 2, nothing written
+"$bin" run validation/stack10_rest/case.rad -o "$tmp/st.nc" --method static --t-end 0.5 --dt-out 0.25 > "$tmp/e" 2>&1; rc=$?
+if [ $rc -ne 0 ] && grep -q "no support" "$tmp/e" && grep -q "/RBODY/" "$tmp/e"; then
+    expect static_singular 3 $rc "($(head -c 200 "$tmp/e"))"
+else expect static_singular 3 99 "(exit $rc: $(head -c 200 "$tmp/e"))"; fi
+"$bin" run validation/static_column/case.rad -o "$tmp/sc.nc" -q --method static > "$tmp/e" 2>&1; rc=$?
+[ -s "$tmp/sc.nc" ] && expect method_static 0 $rc "" || expect method_static 0 99 "(exit $rc: $(head -c 200 "$tmp/e"))"
+"$bin" run validation/fric_incline/case.rad -o "$tmp/sf.nc" --method static > "$tmp/e" 2>&1; rc=$?
+grep -q "static analysis" "$tmp/e" && grep -q "friction" "$tmp/e" && grep -q "/INTER/" "$tmp/e" && [ ! -e "$tmp/sf.nc" ] &&
+    expect static_refuses_friction 2 $rc "($(head -c 200 "$tmp/e"))" ||
+    expect static_refuses_friction 2 99 "(exit $rc: $(head -c 200 "$tmp/e"))"
+"$bin" run validation/joint_pendulum/case.rad -o "$tmp/sj.nc" --method static > "$tmp/e" 2>&1; rc=$?
+grep -q "static analysis" "$tmp/e" && grep -q "/JOINT/" "$tmp/e" && [ ! -e "$tmp/sj.nc" ] &&
+    expect static_refuses_joints 2 $rc "($(head -c 200 "$tmp/e"))" ||
+    expect static_refuses_joints 2 99 "(exit $rc: $(head -c 200 "$tmp/e"))"
 "$bin" run validation/joint_pendulum/case.rad -o "$tmp/jc.nc" --method cvode > "$tmp/e" 2>&1; rc=$?
 grep -q "joints" "$tmp/e" && grep -q "IDA" "$tmp/e" && [ ! -e "$tmp/jc.nc" ] &&
     expect joints_on_cvode 2 $rc "($(head -c 160 "$tmp/e"))" || expect joints_on_cvode 2 99 "(exit $rc: $(head -c 160 "$tmp/e"))"

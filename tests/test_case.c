@@ -914,7 +914,7 @@ static void test_case_error_run_solver(void)
     EXPECT_INPUT_ERROR("rtol.rad", RUN_CARD "/SOLVER\n,,,-1e-6\n", 4, "card /SOLVER", "field Rtol",
                        "positive");
     EXPECT_INPUT_ERROR("atol.rad", RUN_CARD "/SOLVER\n\n,,-1e-6\n", 5, "field Atol_vel", "non-negative");
-    EXPECT_INPUT_ERROR("method.rad", RUN_CARD "/SOLVER\n3\n", 4, "field Method", "{0, 1, 2}");
+    EXPECT_INPUT_ERROR("method.rad", RUN_CARD "/SOLVER\n4\n", 4, "field Method", "{0, 1, 2, 3}");
     EXPECT_INPUT_ERROR("order.rad", RUN_CARD "/SOLVER\n1,6\n", 4, "field Max_order",
                        "{1, 2, 3, 4, 5}");
 }

@@ -135,8 +135,10 @@ void rc_model_print_summary(const rc_model *m, FILE *f);
 rc_status rc_model_set_rtol(rc_model *m, double rtol, rc_error *err);
 /* Replace the integration backend (/SOLVER Method) of a compiled model:
  * 1 CVODE (BDF on y' = f), 2 IDA (BDF on the residual form; the one that
- * runs joints). RC_EINPUT for another number, or 1 for a model with joints,
- * or a NULL m; the model unchanged then. Not while a run or session uses
+ * runs joints), 3 static analysis (equilibrium at each output time, KINSOL;
+ * docs/case-format.md /SOLVER). RC_EINPUT for another number, or 1 for a
+ * model with joints, or 3 for a model outside the static analysis' scope
+ * (the message names the card), or a NULL m; the model unchanged then. Not while a run or session uses
  * the model. */
 rc_status rc_model_set_method(rc_model *m, int method, rc_error *err);
 /* The relative tolerance, end time and output interval of a model [-, s, s];

@@ -354,7 +354,7 @@ rc_status rc_card_solver(rc_reader *rd, const rc_block *b)
 
     const unsigned zp = RC_FF_ZDEF | RC_FF_POS;
     rc_field l1[] = {
-        RC_F_SET("Method", &s->method, RC_DEF_METHOD, 0, RC_BIT(0) | RC_BIT(1) | RC_BIT(2), 0, NULL),
+        RC_F_SET("Method", &s->method, RC_DEF_METHOD, 0, RC_BIT(0) | RC_BIT(1) | RC_BIT(2) | RC_BIT(3), 0, NULL),
         RC_F_SET("Max_order", &s->max_order, RC_DEF_MAX_ORDER, RC_FF_ZDEF, 0x3Eu, 0, NULL),
         RC_F_INT("Max_steps", &steps, RC_DEF_MAX_STEPS, zp),
         RC_F_REALD("Rtol", &s->rtol, RC_DEF_RTOL, zp, RC_D_NONE),

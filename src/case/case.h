@@ -276,7 +276,7 @@ typedef struct rc_case_run {
 /* /SOLVER (ricochet): integrator settings. Defaults in docs. */
 typedef struct rc_case_solver {
     int present;
-    int method;        /* 0: automatic (default), 1: CVODE BDF, 2: IDA */
+    int method;        /* 0: automatic (default), 1: CVODE BDF, 2: IDA, 3: static analysis (KINSOL) */
     int max_order;     /* 1..5, default 5 */
     long max_steps;    /* per output interval, default 100000 */
     double rtol;       /* default 1e-6 */

@@ -35,8 +35,8 @@ static void usage_run(FILE *f)
             "  --dt-out DT    output interval [s], instead of the case's /RUN Dt_out\n"
             "  --rtol R       relative tolerance, instead of /SOLVER Rtol; the absolute tolerances derived\n"
             "                 from the model's scales (blank /SOLVER fields) follow it\n"
-            "  --method M     integration backend, instead of /SOLVER Method: cvode (1) or ida (2); a model\n"
-            "                 with joints runs on ida only\n"
+            "  --method M     integration backend, instead of /SOLVER Method: cvode (1), ida (2) or static (3:\n"
+            "                 equilibrium at each output time, KINSOL); a model with joints runs on ida only\n"
             "  --on-violation stop|warn\n"
             "                 what a failed physics check does (energy created, a dissipation decreasing, bodies\n"
             "                 passing through each other, non-finite values): stop ends the run there with exit\n"
@@ -201,9 +201,13 @@ int main(int argc, char **argv)
         if (took) continue;
         if (is_run && (!strncmp(a, "--method=", 9) || !strcmp(a, "--method"))) {
             const char *v = a[8] == '=' ? a + 9 : (k + 1 < argc ? argv[++k] : NULL);
-            method = v && (!strcmp(v, "cvode") || !strcmp(v, "1")) ? 1 : v && (!strcmp(v, "ida") || !strcmp(v, "2")) ? 2 : -1;
+            method = v && (!strcmp(v, "cvode") || !strcmp(v, "1"))    ? 1
+                     : v && (!strcmp(v, "ida") || !strcmp(v, "2"))    ? 2
+                     : v && (!strcmp(v, "static") || !strcmp(v, "3")) ? 3
+                                                                      : -1;
             if (method < 0) {
-                fprintf(stderr, "ricochet: --method: expected cvode or ida (or 1, 2), got %s\n", v ? v : "nothing");
+                fprintf(stderr, "ricochet: --method: expected cvode, ida or static (or 1, 2, 3), got %s\n",
+                        v ? v : "nothing");
                 return 2;
             }
             continue;

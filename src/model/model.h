@@ -419,6 +419,14 @@ static inline int rc_inter_frictionless(const rc_model *m, int i)
  * rc_model_compile (engine/analyses/prepare.c). On failure *out stays NULL. */
 rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err);
 
+/* ---- static analysis (model/static_scope.c) ---------------------- */
+/* The first element of m that the static analysis (/SOLVER Method 3,
+ * solver/static.c) does not support in this version: RC_EINPUT naming its
+ * card (joints, /IMPVEL, friction and exact stick, TYPE6 Iform 1 and 2,
+ * Inacti 5, pairs with several contact points,
+ * couplings other than springs); `how` says how Method 3 was chosen. */
+rc_status rc_static_scope(const rc_model *m, const char *how, rc_error *err);
+
 /* ---- friction (model/friction.c) ------------------------------- */
 struct rc_case;
 /* Apply the /FRICTION cards to the interfaces between the parts they name

@@ -16,7 +16,7 @@
 #include "solver/solver.h"
 
 /* The backends, by method. */
-static const rc_solver *const rc_solvers[] = {&rc_solver_cvode, &rc_solver_ida};
+static const rc_solver *const rc_solvers[] = {&rc_solver_cvode, &rc_solver_ida, &rc_solver_static};
 
 /* The kind of a file that is not a regular one, for messages. */
 static const char *file_kind(mode_t mode)

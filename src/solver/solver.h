@@ -20,7 +20,7 @@
 #include "ricochet/ricochet.h"
 
 /* /SOLVER Method numbers (docs/case-format.md). */
-enum { RC_METHOD_CVODE = 1, RC_METHOD_IDA = 2 };
+enum { RC_METHOD_CVODE = 1, RC_METHOD_IDA = 2, RC_METHOD_STATIC = 3 };
 
 /* Stepping (session.c): the backend hands the state over whenever the time
  * reached is at or past `until`, before it goes on. */
@@ -50,5 +50,6 @@ void rc_cvode_versions(FILE *f);
 
 extern const rc_solver rc_solver_cvode; /* cvode.c */
 extern const rc_solver rc_solver_ida;   /* ida.c */
+extern const rc_solver rc_solver_static; /* static.c: equilibrium, KINSOL (Method 3) */
 
 #endif

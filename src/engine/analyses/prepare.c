@@ -7,6 +7,7 @@
  * engine.
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "base/error.h"
@@ -67,6 +68,16 @@ rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
     rc_status st = rc_model_build(c, &m, err);
     rc_progress_done();
     if (st) return st;
+    if (m->method == 3) { /* the static analysis: its scope (model/static_scope.c) */
+        char how[400];
+        snprintf(how, sizeof how, "chosen by /SOLVER Method 3 at %s:%d", c->solver.method_loc.file ? c->solver.method_loc.file : "?",
+                 c->solver.method_loc.line);
+        st = rc_static_scope(m, how, err);
+        if (st) {
+            rc_model_free(m);
+            return st;
+        }
+    }
     st = rc_fast_select(m, err); /* the fast path per interface (kernel_fast.inc) */
     if (st) {
         rc_model_free(m);
@@ -124,8 +135,13 @@ rc_status rc_model_set_method(rc_model *m, int method, rc_error *err)
     rc_error local;
     if (!err) err = &local;
     if (!m) RC_RAISE(err, RC_EINPUT, "rc_model_set_method: the model is NULL; expected a compiled model");
-    if (method != 1 && method != 2)
-        RC_RAISE(err, RC_EINPUT, "integration method: expected 1 (CVODE) or 2 (IDA), got %d", method);
+    if (method != 1 && method != 2 && method != 3)
+        RC_RAISE(err, RC_EINPUT, "integration method: expected 1 (CVODE), 2 (IDA) or 3 (static, KINSOL), got %d",
+                 method);
+    if (method == 3) {
+        rc_status st = rc_static_scope(m, "chosen by the method 3 (static) option", err);
+        if (st) return st;
+    }
     if (method == 1 && m->jnt && m->jnt->n > 0)
         RC_RAISE(err, RC_EINPUT,
                  "integration method: the model has joints (%d), which only the IDA path (method 2) runs; "

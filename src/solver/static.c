@@ -1,0 +1,784 @@
+/*
+ * Static analysis backend (/SOLVER Method 3; static.h, docs/theory.md
+ * "Static analysis"): at each output time t_k of the run (0, dt_out, ...,
+ * t_end) the equilibrium of the free bodies under the loads at t_k
+ * (gravity times its time function, the couplings' forces, the contacts),
+ * velocities zero, from the previous equilibrium. KINSOL (Newton with line
+ * search) on the forces and moments, KLU on the stiffness: the rows of the
+ * velocity and angular-velocity rates of the engine's Jacobian
+ * (rc_assemble_jac), times the mass and the inertia, on the columns of the
+ * positions and of the quaternions chained through the rotation vector of
+ * each body about its orientation at the start of the solve.
+ *
+ * Load steps: from t_{k-1} to t_k in substeps of the load time, halved when
+ * a solve fails (down to RC_STATIC_MIN_CUT of the output interval, then an
+ * error naming the load time), doubled after a solve in few iterations.
+ * Contacts are unilateral: after each converged solve the modes that
+ * contradict the state flip (an open contact penetrating closes; a closed
+ * one separated or pulling opens; set here, as the events do in
+ * engine/events) and the load step is solved again, to a fixed point.
+ *
+ * The results file is that of a dynamic run (drive.c's open_output and
+ * write_frame), one record per output time, velocities zero; the mode
+ * flips go to its events table.
+ */
+#include <complex.h>
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <kinsol/kinsol.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_klu.h>
+#include <sunmatrix/sunmatrix_sparse.h>
+
+#include "base/error.h"
+#include "engine/assembly/assembly.h"
+#include "engine/events/events.h"
+#include "model/model.h"
+#include "output/output.h"
+#include "solver/integrator.h"
+#include "solver/solver.h"
+#include "solver/static.h"
+
+/* The smallest load substep, relative to the output interval [-]. */
+#define RC_STATIC_MIN_CUT 1e-6
+/* Newton: the residual's tolerance (max norm of force / force scale),
+ * iterations per solve, the largest Newton step in scaled units (lengths
+ * over the body's penetration scale), the iterations of a quick solve
+ * (the next substep doubles). */
+#define RC_STATIC_FTOL 1e-11
+#define RC_STATIC_MAXIT 60
+#define RC_STATIC_MAXSTEP 10.0
+#define RC_STATIC_QUICK 4
+/* Solves of the active set per load substep, and mode flips of one
+ * interface in them, before the active set is said to cycle. */
+#define RC_STATIC_ROUNDS_MIN 8
+#define RC_STATIC_FLIPS 3
+
+struct rc_static {
+    const rc_model *m;
+    rc_data *d;
+    int nb, n;       /* free bodies, unknowns (6 nb) */
+    int *fb;         /* [nb] body index of slot s */
+    int *slot;       /* [nbody] slot of body b, -1: fixed */
+    double *ys;      /* [ny] the start state of the solve */
+    double *y;       /* [ny] the state at the unknowns */
+    double *f;       /* [ny] rates */
+    double *jv;      /* [nnz] the engine's Jacobian values */
+    char *held;      /* [n] 1: held unknown */
+    double *us, *fs; /* [n] unknown and residual scales (length or angle; force or moment) */
+    /* the stiffness pattern: 6x6 blocks (row slot, column slot), sorted
+     * by column slot then row slot */
+    int nblk;
+    int *brow, *bcol; /* [nblk] */
+    int *bfirst;      /* [nb+1] first block of each column slot */
+    int64_t *colptr;  /* [n+1] */
+    int64_t *rowind;  /* [36 nblk] */
+    int *ent_blk;     /* [nnz] block of each entry of the model's pattern, -1: none */
+    signed char *ent_rc; /* [nnz] its place in the block's raw 6x7 */
+    double *raw;      /* [42 nblk] */
+    double *kval;     /* [36 nblk] the stiffness, in CSC order */
+    long nfev, njev;
+};
+
+/* ---- rotations ------------------------------------------------------- */
+/* exp(theta) as a unit quaternion (w, x, y, z); analytic in theta (complex
+ * step): the even functions of |theta| written in theta.theta. */
+static void qexp(const double complex th[3], double complex e[4])
+{
+    const double complex s2 = th[0] * th[0] + th[1] * th[1] + th[2] * th[2];
+    double complex c, sc; /* cos(s/2), sin(s/2)/s */
+    if (cabs(s2) < 1e-6) {
+        c = 1.0 - s2 / 8.0 + s2 * s2 / 384.0 - s2 * s2 * s2 / 46080.0;
+        sc = 0.5 - s2 / 48.0 + s2 * s2 / 3840.0 - s2 * s2 * s2 / 645120.0;
+    } else {
+        const double complex s = csqrt(s2);
+        c = ccos(0.5 * s);
+        sc = csin(0.5 * s) / s;
+    }
+    e[0] = c;
+    for (int k = 0; k < 3; k++) e[k + 1] = sc * th[k];
+}
+
+/* p (x) q, p real */
+static void qmul(const double p[4], const double complex q[4], double complex r[4])
+{
+    r[0] = p[0] * q[0] - p[1] * q[1] - p[2] * q[2] - p[3] * q[3];
+    r[1] = p[0] * q[1] + p[1] * q[0] + p[2] * q[3] - p[3] * q[2];
+    r[2] = p[0] * q[2] - p[1] * q[3] + p[2] * q[0] + p[3] * q[1];
+    r[3] = p[0] * q[3] + p[1] * q[2] - p[2] * q[1] + p[3] * q[0];
+}
+
+/* q = q0 (x) exp(theta) and dq/dtheta (4x3 row-major, NULL: not wanted). */
+static void orient(const double q0[4], const double th[3], double q[4], double *dq)
+{
+    double complex t[3] = {th[0], th[1], th[2]}, e[4], r[4];
+    qexp(t, e);
+    qmul(q0, e, r);
+    for (int k = 0; k < 4; k++) q[k] = creal(r[k]);
+    if (!dq) return;
+    const double h = 1e-30;
+    for (int j = 0; j < 3; j++) {
+        double complex tj[3] = {th[0], th[1], th[2]};
+        tj[j] += h * I;
+        qexp(tj, e);
+        qmul(q0, e, r);
+        for (int k = 0; k < 4; k++) dq[3 * k + j] = cimag(r[k]) / h;
+    }
+}
+
+/* ---- the problem ------------------------------------------------------ */
+static int cmp_i64(const void *a, const void *b)
+{
+    const int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+    return (x > y) - (x < y);
+}
+
+void rc_static_free(rc_static *s)
+{
+    if (!s) return;
+    void *p[] = {s->fb, s->slot, s->ys, s->y, s->f, s->jv, s->held, s->us, s->fs, s->brow, s->bcol, s->bfirst,
+                 s->colptr, s->rowind, s->ent_blk, s->ent_rc, s->raw, s->kval};
+    for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
+    free(s);
+}
+
+int rc_static_size(const rc_static *s) { return s->n; }
+
+/* The slot and the local index (0..12) of state i, -1 when it is not a
+ * free body's. */
+static int state_body(const rc_static *s, int i, int *k)
+{
+    const rc_model *m = s->m;
+    *k = 0;
+    for (int q = 0; q < s->nb; q++) { /* bodies come first in y, 13 each */
+        const int a = m->body_yadr[s->fb[q]];
+        if (i >= a && i < a + RC_NB) {
+            *k = i - a;
+            return q;
+        }
+    }
+    return -1;
+}
+
+rc_static *rc_static_new(const rc_model *m, rc_data *d)
+{
+    rc_static *s = calloc(1, sizeof *s);
+    if (!s) return NULL;
+    s->m = m;
+    s->d = d;
+    s->nb = m->nfree;
+    s->n = 6 * s->nb;
+    const size_t n1 = (size_t)s->n + 1, ny1 = (size_t)m->ny + 1, nnz1 = (size_t)m->nnz + 1;
+    s->fb = malloc(((size_t)s->nb + 1) * sizeof(int));
+    s->slot = malloc(((size_t)m->nbody + 1) * sizeof(int));
+    s->ys = calloc(ny1, sizeof(double));
+    s->y = calloc(ny1, sizeof(double));
+    s->f = calloc(ny1, sizeof(double));
+    s->jv = calloc(nnz1, sizeof(double));
+    s->held = calloc(n1, 1);
+    s->us = calloc(n1, sizeof(double));
+    s->fs = calloc(n1, sizeof(double));
+    s->ent_blk = malloc(nnz1 * sizeof(int));
+    s->ent_rc = malloc(nnz1);
+    int64_t *key = malloc((nnz1 + (size_t)s->nb) * sizeof(int64_t));
+    char *mf = calloc((size_t)m->nbody + 1, 1);
+    if (!s->fb || !s->slot || !s->ys || !s->y || !s->f || !s->jv || !s->held || !s->us || !s->fs || !s->ent_blk ||
+        !s->ent_rc || !key || !mf) {
+        free(key);
+        free(mf);
+        rc_static_free(s);
+        return NULL;
+    }
+    int q = 0;
+    for (int b = 0; b < m->nbody; b++) {
+        s->slot[b] = m->body_yadr[b] >= 0 ? q : -1;
+        if (m->body_yadr[b] >= 0) s->fb[q++] = b;
+    }
+    s->nb = q;
+    s->n = 6 * q;
+    /* scales and held unknowns */
+    rc_moment_free_bodies(m, mf);
+    for (q = 0; q < s->nb; q++) {
+        const int b = s->fb[q];
+        const double mass = m->body_mass[b], *J = m->body_J + 9 * b, *g = m->body_grav + 3 * b;
+        double rg = sqrt(fmax(0.5 * (J[0] + J[4] + J[8]) / mass, 0.0));
+        if (!(rg > 0) || !isfinite(rg)) rg = 1.0;
+        double ps = INFINITY, fsc = mass * sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]), fi = 0.0;
+        for (int i = 0; i < m->ninter; i++)
+            if (m->inter_ba[i] == b || m->inter_bb[i] == b) {
+                if (isfinite(m->inter_pscale[i]) && m->inter_pscale[i] > 0) ps = fmin(ps, m->inter_pscale[i]);
+                if (isfinite(m->inter_fscale[i]) && m->inter_fscale[i] > fi) fi = m->inter_fscale[i];
+            }
+        if (!isfinite(ps)) ps = 1e-3 * rg;
+        if (!(fsc > 0)) fsc = fi > 0 ? fi : 1.0;
+        const int *mask = m->body_dofmask + 6 * b;
+        for (int k = 0; k < 3; k++) {
+            s->us[6 * q + k] = ps;
+            s->fs[6 * q + k] = fsc;
+            s->held[6 * q + k] = mask[k] != 0;
+            s->us[6 * q + 3 + k] = ps / rg;
+            s->fs[6 * q + 3 + k] = fsc * rg;
+            s->held[6 * q + 3 + k] = mask[3 + k] != 0 || mf[b];
+        }
+    }
+    free(mf);
+    /* the blocks: the entries of the rate rows (7..12) of a body in the
+     * position and quaternion columns (0..6) of a body, and the diagonal */
+    int64_t nk = 0;
+    for (int j = 0; j < m->ny; j++) {
+        int kc, kr;
+        const int cs = state_body(s, j, &kc);
+        for (int64_t p = m->jac_colptr[j]; p < m->jac_colptr[j + 1]; p++) {
+            s->ent_blk[p] = -1;
+            if (cs < 0 || kc > 6) continue;
+            const int rs = state_body(s, (int)m->jac_rowind[p], &kr);
+            if (rs < 0 || kr < 7) continue;
+            key[nk++] = (int64_t)cs * s->nb + rs;
+        }
+    }
+    for (q = 0; q < s->nb; q++) key[nk++] = (int64_t)q * s->nb + q;
+    qsort(key, (size_t)nk, sizeof *key, cmp_i64);
+    int64_t u = 0;
+    for (int64_t k = 0; k < nk; k++)
+        if (u == 0 || key[k] != key[u - 1]) key[u++] = key[k];
+    s->nblk = (int)u;
+    s->brow = malloc(((size_t)u + 1) * sizeof(int));
+    s->bcol = malloc(((size_t)u + 1) * sizeof(int));
+    s->bfirst = calloc((size_t)s->nb + 2, sizeof(int));
+    s->colptr = calloc(n1, sizeof(int64_t));
+    s->rowind = malloc((36 * (size_t)u + 1) * sizeof(int64_t));
+    s->raw = calloc(42 * (size_t)u + 1, sizeof(double));
+    s->kval = calloc(36 * (size_t)u + 1, sizeof(double));
+    if (!s->brow || !s->bcol || !s->bfirst || !s->colptr || !s->rowind || !s->raw || !s->kval) {
+        free(key);
+        rc_static_free(s);
+        return NULL;
+    }
+    for (int k = 0; k < s->nblk; k++) {
+        s->bcol[k] = (int)(key[k] / s->nb);
+        s->brow[k] = (int)(key[k] % s->nb);
+        s->bfirst[s->bcol[k] + 1]++;
+    }
+    for (q = 0; q < s->nb; q++) s->bfirst[q + 1] += s->bfirst[q];
+    for (q = 0; q < s->nb; q++) {
+        const int nbq = s->bfirst[q + 1] - s->bfirst[q];
+        for (int c = 0; c < 6; c++) {
+            const int col = 6 * q + c;
+            s->colptr[col + 1] = s->colptr[col] + 6 * nbq;
+            for (int k = s->bfirst[q]; k < s->bfirst[q + 1]; k++)
+                for (int r = 0; r < 6; r++) s->rowind[s->colptr[col] + 6 * (k - s->bfirst[q]) + r] = 6 * s->brow[k] + r;
+        }
+    }
+    for (int j = 0; j < m->ny; j++) {
+        int kc, kr;
+        const int cs = state_body(s, j, &kc);
+        for (int64_t p = m->jac_colptr[j]; p < m->jac_colptr[j + 1]; p++) {
+            if (cs < 0 || kc > 6) continue;
+            const int rs = state_body(s, (int)m->jac_rowind[p], &kr);
+            if (rs < 0 || kr < 7) continue;
+            const int64_t kk = (int64_t)cs * s->nb + rs;
+            const int64_t *hit = bsearch(&kk, key, (size_t)s->nblk, sizeof *key, cmp_i64);
+            s->ent_blk[p] = (int)(hit - key);
+            s->ent_rc[p] = (signed char)((kr - 7) * 7 + kc);
+        }
+    }
+    free(key);
+    return s;
+}
+
+void rc_static_set_start(rc_static *s, const double *y0)
+{
+    memcpy(s->ys, y0, (size_t)s->m->ny * sizeof(double));
+    for (int q = 0; q < s->nb; q++)
+        for (int k = 7; k < RC_NB; k++) s->ys[s->m->body_yadr[s->fb[q]] + k] = 0.0;
+}
+
+/* The state at the unknowns u into s->y (quaternions' dq/dtheta into dq
+ * [12 nb] when not NULL). */
+static void state_at(rc_static *s, const double *u, double *dq)
+{
+    memcpy(s->y, s->ys, (size_t)s->m->ny * sizeof(double));
+    for (int q = 0; q < s->nb; q++) {
+        const int a = s->m->body_yadr[s->fb[q]];
+        for (int k = 0; k < 3; k++) s->y[a + k] = s->ys[a + k] + u[6 * q + k];
+        orient(s->ys + a + 3, u + 6 * q + 3, s->y + a + 3, dq ? dq + 12 * q : NULL);
+    }
+}
+
+int rc_static_residual(rc_static *s, double t, const double *u, double *r)
+{
+    const rc_model *m = s->m;
+    state_at(s, u, NULL);
+    s->nfev++;
+    if (rc_assemble_rhs(m, s->d, t, s->y, s->f)) return 1;
+    for (int q = 0; q < s->nb; q++) {
+        const int b = s->fb[q], a = m->body_yadr[b];
+        const double *J = m->body_J + 9 * b, *w = s->f + a + 10;
+        for (int k = 0; k < 3; k++) {
+            r[6 * q + k] = m->body_mass[b] * s->f[a + 7 + k];
+            r[6 * q + 3 + k] = J[3 * k] * w[0] + J[3 * k + 1] * w[1] + J[3 * k + 2] * w[2];
+        }
+    }
+    for (int i = 0; i < s->n; i++) {
+        if (s->held[i]) r[i] = s->fs[i] / s->us[i] * u[i];
+        if (!isfinite(r[i])) return 1;
+    }
+    return 0;
+}
+
+/* The stiffness at u into s->kval (CSC on s->colptr, s->rowind): 0 or 1. */
+static int stiffness(rc_static *s, double t, const double *u)
+{
+    const rc_model *m = s->m;
+    double *dq = malloc((12 * (size_t)s->nb + 1) * sizeof(double));
+    if (!dq) return 1;
+    state_at(s, u, dq);
+    s->njev++;
+    if (rc_assemble_jac(m, s->d, t, s->y, s->jv)) {
+        free(dq);
+        return 1;
+    }
+    memset(s->raw, 0, 42 * (size_t)s->nblk * sizeof(double));
+    for (int64_t p = 0; p < m->nnz; p++)
+        if (s->ent_blk[p] >= 0) s->raw[42 * (size_t)s->ent_blk[p] + s->ent_rc[p]] += s->jv[p];
+    for (int k = 0; k < s->nblk; k++) {
+        const int rs = s->brow[k], cs = s->bcol[k], b = s->fb[rs];
+        const double *R = s->raw + 42 * (size_t)k, *J = m->body_J + 9 * b, *D = dq + 12 * cs;
+        double A[6][6]; /* rate rows, unknown columns */
+        for (int r = 0; r < 6; r++) {
+            for (int c = 0; c < 3; c++) A[r][c] = R[7 * r + c];
+            for (int c = 0; c < 3; c++)
+                A[r][3 + c] = R[7 * r + 3] * D[c] + R[7 * r + 4] * D[3 + c] + R[7 * r + 5] * D[6 + c] +
+                              R[7 * r + 6] * D[9 + c];
+        }
+        for (int c = 0; c < 6; c++) {
+            const int col = 6 * cs + c;
+            double *out = s->kval + s->colptr[col] + 6 * (k - s->bfirst[cs]);
+            for (int r = 0; r < 3; r++) out[r] = m->body_mass[b] * A[r][c];
+            for (int r = 0; r < 3; r++) out[3 + r] = J[3 * r] * A[3][c] + J[3 * r + 1] * A[4][c] + J[3 * r + 2] * A[5][c];
+            for (int r = 0; r < 6; r++) {
+                const int row = 6 * rs + r;
+                if (s->held[row]) out[r] = row == col ? s->fs[row] / s->us[row] : 0.0;
+            }
+        }
+    }
+    free(dq);
+    for (int64_t p = 0; p < 36 * (int64_t)s->nblk; p++)
+        if (!isfinite(s->kval[p])) return 1;
+    return 0;
+}
+
+int rc_static_stiffness(rc_static *s, double t, const double *u, double *K)
+{
+    if (stiffness(s, t, u)) return 1;
+    memset(K, 0, (size_t)s->n * (size_t)s->n * sizeof(double));
+    for (int c = 0; c < s->n; c++)
+        for (int64_t p = s->colptr[c]; p < s->colptr[c + 1]; p++) K[(size_t)c * (size_t)s->n + (size_t)s->rowind[p]] = s->kval[p];
+    return 0;
+}
+
+/* ---- KINSOL ----------------------------------------------------------- */
+typedef struct st_run {
+    rc_static *s;
+    double t;           /* the load time of the solve [s] */
+    char kmsg[512];     /* KINSOL's last error message */
+} st_run;
+
+static int kin_f(N_Vector u, N_Vector r, void *user)
+{
+    st_run *c = user;
+    return rc_static_residual(c->s, c->t, N_VGetArrayPointer(u), N_VGetArrayPointer(r)) ? 1 : 0;
+}
+
+static int kin_jac(N_Vector u, N_Vector fu, SUNMatrix A, void *user, N_Vector t1, N_Vector t2)
+{
+    st_run *c = user;
+    rc_static *s = c->s;
+    if (stiffness(s, c->t, N_VGetArrayPointer(u))) return 1;
+    sunindextype *cp = SUNSparseMatrix_IndexPointers(A), *ri = SUNSparseMatrix_IndexValues(A);
+    double *v = SUNSparseMatrix_Data(A);
+    for (int k = 0; k <= s->n; k++) cp[k] = (sunindextype)s->colptr[k];
+    const int64_t nz = s->colptr[s->n];
+    for (int64_t p = 0; p < nz; p++) {
+        ri[p] = (sunindextype)s->rowind[p];
+        v[p] = s->kval[p];
+    }
+    /* A loaded unknown without stiffness (a contact just touching whose law
+     * starts with zero slope, Hertz at P = 0): the secant stiffness that
+     * moves it by its scale (the contact's penetration scale), so that
+     * Newton enters the contact; an unloaded one stays singular (KLU
+     * names it). */
+    const double *r = N_VGetArrayPointer(fu);
+    for (int i = 0; i < s->n; i++) {
+        const double ks = s->fs[i] / s->us[i];
+        double cmax = 0.0;
+        int64_t pd = -1;
+        for (int64_t p = s->colptr[i]; p < s->colptr[i + 1]; p++) {
+            cmax = fmax(cmax, fabs(v[p]));
+            if (s->rowind[p] == i) pd = p;
+        }
+        if (s->held[i] || pd < 0 || cmax > RC_STATIC_FTOL * ks || !(fabs(r[i]) > RC_STATIC_FTOL * s->fs[i])) continue;
+        v[pd] = fabs(r[i]) / s->us[i];
+    }
+    return 0;
+}
+
+static void kin_err(int code, const char *module, const char *function, char *msg, void *user)
+{
+    st_run *c = user;
+    if (code < 0) snprintf(c->kmsg, sizeof c->kmsg, "%s", msg);
+}
+
+/* The static run's solver: KINSOL, its matrix and KLU. */
+typedef struct st_kin {
+    SUNContext ctx;
+    void *kin;
+    N_Vector u, us, fs;
+    SUNMatrix A;
+    SUNLinearSolver LS;
+} st_kin;
+
+static void kin_close(st_kin *k)
+{
+    if (k->kin) KINFree(&k->kin);
+    if (k->LS) SUNLinSolFree(k->LS);
+    if (k->A) SUNMatDestroy(k->A);
+    if (k->u) N_VDestroy(k->u);
+    if (k->us) N_VDestroy(k->us);
+    if (k->fs) N_VDestroy(k->fs);
+    if (k->ctx) SUNContext_Free(&k->ctx);
+}
+
+static rc_status kin_open(st_kin *k, st_run *c, rc_error *err)
+{
+    rc_static *s = c->s;
+    const sunindextype n = s->n > 0 ? s->n : 1;
+    if (SUNContext_Create(NULL, &k->ctx)) RC_RAISE(err, RC_ESOLVER, "SUNContext_Create failed");
+    k->u = N_VNew_Serial(n, k->ctx);
+    k->us = N_VNew_Serial(n, k->ctx);
+    k->fs = N_VNew_Serial(n, k->ctx);
+    k->A = SUNSparseMatrix(n, n, s->colptr[s->n] > 0 ? (sunindextype)s->colptr[s->n] : 1, CSC_MAT, k->ctx);
+    if (!k->u || !k->us || !k->fs || !k->A) RC_RAISE(err, RC_ENOMEM, "out of memory for KINSOL");
+    for (int i = 0; i < s->n; i++) {
+        NV_Ith_S(k->us, i) = 1.0 / s->us[i];
+        NV_Ith_S(k->fs, i) = 1.0 / s->fs[i];
+    }
+    N_VConst(0.0, k->u);
+    if (!(k->LS = SUNLinSol_KLU(k->u, k->A, k->ctx))) RC_RAISE(err, RC_ESOLVER, "SUNLinSol_KLU failed");
+    if (!(k->kin = KINCreate(k->ctx))) RC_RAISE(err, RC_ENOMEM, "KINCreate failed");
+    if (KINInit(k->kin, kin_f, k->u) || KINSetUserData(k->kin, c) || KINSetErrHandlerFn(k->kin, kin_err, c) ||
+        KINSetLinearSolver(k->kin, k->LS, k->A) || KINSetJacFn(k->kin, kin_jac) || KINSetMaxSetupCalls(k->kin, 1) ||
+        KINSetNumMaxIters(k->kin, RC_STATIC_MAXIT) || KINSetFuncNormTol(k->kin, RC_STATIC_FTOL) ||
+        KINSetScaledStepTol(k->kin, 1e-15) || KINSetMaxNewtonStep(k->kin, RC_STATIC_MAXSTEP * sqrt((double)n)))
+        RC_RAISE(err, RC_ESOLVER, "KINSOL set-up failed");
+    return RC_OK;
+}
+
+/* A solve's outcome: converged, failed (cut the step), or an error. */
+typedef struct st_out {
+    int ok;
+    long iters;
+    int flag;
+    int singular_col; /* KLU's singular column, -1: none */
+    double fnorm;
+} st_out;
+
+/* One KINSOL solve at the load time t from the state s->ys. */
+static st_out kin_solve(st_kin *k, st_run *c, double t)
+{
+    st_out o = {0, 0, 0, -1, NAN};
+    c->t = t;
+    c->kmsg[0] = '\0';
+    N_VConst(0.0, k->u);
+    if (c->s->n == 0) {
+        o.ok = 1;
+        return o;
+    }
+    o.flag = KINSol(k->kin, k->u, KIN_LINESEARCH, k->us, k->fs);
+    KINGetNumNonlinSolvIters(k->kin, &o.iters);
+    KINGetFuncNorm(k->kin, &o.fnorm);
+    o.ok = o.flag == KIN_SUCCESS || o.flag == KIN_INITIAL_GUESS_OK || (o.flag == KIN_STEP_LT_STPTOL && o.fnorm <= 1e-8);
+    if (!o.ok) {
+        sun_klu_common *kc = SUNLinSol_KLUGetCommon(k->LS);
+        if (kc && kc->status == KLU_SINGULAR) o.singular_col = (int)kc->singular_col;
+    }
+    return o;
+}
+
+/* ---- the run ------------------------------------------------------------ */
+static const char *const dof_name[6] = {"translation x", "translation y", "translation z",
+                                        "rotation about the body's x axis", "rotation about the body's y axis",
+                                        "rotation about the body's z axis"};
+
+/* The modes of the interfaces at the load time t from the state y: the
+ * activation windows, then the unilateral rule (an open contact
+ * penetrating closes; a closed one separated or pulling opens). Writes
+ * the events, counts the flips per interface in flips[] (NULL: none);
+ * returns the number of mode changes, or -1 on an output error. */
+static int update_modes(const rc_model *m, rc_data *d, double t, const double *y, const double *ptol, double ftol,
+                        ev_sink *sink, int *flips, long *nev, rc_error *err)
+{
+    int changed = 0;
+    for (int i = 0; i < m->ninter; i++) {
+        const int active = t >= m->inter_tstart[i] && t <= m->inter_tstop[i];
+        const int mode = d->inter_mode[i];
+        rc_event_kind kind = RC_EV_NONE;
+        int next = mode;
+        rc_inter_report r;
+        if (!active) {
+            if (mode != RC_MODE_INACTIVE) {
+                next = RC_MODE_INACTIVE;
+                kind = RC_EV_INTER_STOP;
+            }
+        } else {
+            rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y,
+                                 &r);
+            if (mode == RC_MODE_INACTIVE) {
+                next = r.p >= -ptol[i] ? RC_MODE_CLOSED : RC_MODE_OPEN;
+                kind = RC_EV_INTER_START;
+            } else if (mode != RC_MODE_CLOSED && r.p > ptol[i]) {
+                next = RC_MODE_CLOSED;
+                kind = RC_EV_CONTACT_CLOSE;
+            } else if (mode == RC_MODE_CLOSED && (r.p < -ptol[i] || r.fn < -ftol)) {
+                next = RC_MODE_OPEN;
+                kind = RC_EV_CONTACT_OPEN;
+            }
+        }
+        if (next == mode) continue;
+        d->inter_mode[i] = next; /* the static analysis' own active set (docs/theory.md) */
+        changed++;
+        (*nev)++;
+        if (flips) flips[i]++;
+        rc_inter_report_eval_d(m, d, i, t, y, &r);
+        const double v[3] = {r.p, 0.0, next == RC_MODE_CLOSED && r.fn > 0 ? r.fn : 0.0};
+        if (sink_event(sink, t, kind, m->inter_name[i], v, err)) return -1;
+    }
+    return changed;
+}
+
+static rc_status static_run(const rc_model *m, const rc_run_options *opt, rc_pause *pause, rc_stats *stats,
+                            rc_error *err)
+{
+    rc_error local_err;
+    if (!err) err = &local_err;
+    rc_error_clear(err);
+    rc_stats st0;
+    memset(&st0, 0, sizeof st0);
+    st0.t_settle = NAN;
+    rc_stats *S = &st0;
+    rc_status st = rc_static_scope(m, "the static analysis, /SOLVER Method 3", err);
+    if (st) {
+        if (stats) *stats = st0;
+        return st;
+    }
+    const double wall0 = wall_now();
+    const double tend = opt && opt->t_end_override > 0 ? opt->t_end_override : m->tend;
+    const double dtout = opt && opt->dt_out_override > 0 ? opt->dt_out_override : m->dtout;
+    rc_data *d = rc_data_new(m);
+    rc_static *s = d ? rc_static_new(m, d) : NULL;
+    st_run c = {s, 0.0, ""};
+    st_kin k;
+    memset(&k, 0, sizeof k);
+    rc_output *out = NULL;
+    frame_buf fb;
+    memset(&fb, 0, sizeof fb);
+    ev_sink sink = {NULL, opt ? opt->on_event : NULL, opt ? opt->user : NULL, 0, "", NULL};
+    double *y = calloc((size_t)m->ny + 1, sizeof(double)), *ysave = calloc((size_t)m->ny + 1, sizeof(double));
+    double *ptol = calloc((size_t)m->ninter + 1, sizeof(double));
+    int *msave = calloc((size_t)m->ninter + 1, sizeof(int)), *flips = calloc((size_t)m->ninter + 1, sizeof(int));
+    char reason[1536] = "";
+    const char *fail_reason = NULL;
+    double t = 0.0;
+    int fb_ok = 0;
+    if (!d || !s || !y || !ysave || !ptol || !msave || !flips || !(fb_ok = frame_alloc(m, &fb))) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory for the static analysis");
+        goto done;
+    }
+    if ((st = kin_open(&k, &c, err))) goto done;
+    /* tolerances of the active set: a penetration within rounding of the
+     * coordinates (RC_TOUCH_ULPS), a force within rounding of the loads */
+    double ftol = 0.0;
+    for (int i = 0; i < s->n; i++)
+        if (i % 6 < 3) ftol = fmax(ftol, s->fs[i]);
+    ftol *= 1e3 * DBL_EPSILON;
+    rc_initial_state(m, y);
+    rc_modes_init(m, d, 0.0, y);
+    for (int i = 0; i < m->ninter; i++) {
+        rc_inter_report r;
+        rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], d->inter_slip[i], 0.0, y, &r);
+        const double L = fabs(r.point[0]) + fabs(r.point[1]) + fabs(r.point[2]) + fabs(r.p);
+        ptol[i] = RC_TOUCH_ULPS * DBL_EPSILON * fmax(L, 1e-300);
+        /* at the start: a contact touching or penetrating is closed */
+        if (d->inter_mode[i] != RC_MODE_INACTIVE) d->inter_mode[i] = r.p >= -ptol[i] ? RC_MODE_CLOSED : RC_MODE_OPEN;
+    }
+    if ((st = open_output(m, opt ? opt->output_path : NULL, "", &out, err,
+                          "static (KINSOL, Newton with line search; KLU sparse direct on the stiffness)")))
+        goto done;
+    sink.out = out;
+
+    /* the output times: t_0 = 0, then each from the last */
+    double dtau = dtout;          /* the load substep [s] */
+    const double dmin = RC_STATIC_MIN_CUT * dtout;
+    for (long kout = 0;; kout++) {
+        double tk = fmin((double)kout * dtout, tend);
+        if (tend - tk < 1e-12 * tend) tk = tend;
+        if (kout > 0 && tk <= t) break;
+        /* from t to tk in substeps of the load time */
+        int first = kout == 0;
+        while (first || t < tk) {
+            const double tn = first ? 0.0 : (tk - t <= dtau * (1 + 1e-12) ? tk : t + dtau);
+            memcpy(ysave, y, (size_t)m->ny * sizeof(double));
+            memcpy(msave, d->inter_mode, (size_t)m->ninter * sizeof(int));
+            memset(flips, 0, (size_t)m->ninter * sizeof(int));
+            long iters = 0;
+            int ok = 0, rounds = 0;
+            const int max_rounds = RC_STATIC_ROUNDS_MIN + 2 * m->ninter;
+            for (;;) {
+                int ch = update_modes(m, d, tn, y, ptol, ftol, &sink, NULL, &S->events, err);
+                if (ch < 0) {
+                    st = RC_EIO;
+                    goto done;
+                }
+                rc_static_set_start(s, y);
+                st_out o = kin_solve(&k, &c, tn);
+                iters += o.iters;
+                S->nonlin_iters += o.iters;
+                if (!o.ok) {
+                    if (o.singular_col >= 0 && o.singular_col < s->n) {
+                        const int b = s->fb[o.singular_col / 6];
+                        snprintf(reason, sizeof reason,
+                                 "static analysis: no equilibrium at the load time t = %.9g s: the stiffness is "
+                                 "singular: " RC_LOCFMT "/RBODY/%d has no support in %s (nothing holds it in that "
+                                 "direction: add a contact or a spring, or hold it with /BCS)",
+                                 tn, RC_LOC(m->body_loc[b]), m->body_id[b], dof_name[o.singular_col % 6]);
+                        fail_reason = reason;
+                        st = RC_SET(err, RC_ESOLVER, "%s", reason);
+                        goto done;
+                    }
+                    char *fname = KINGetReturnFlagName(o.flag);
+                    snprintf(reason, sizeof reason, "%s%s%s%s", fname ? fname : "?", c.kmsg[0] ? " (\"" : "", c.kmsg,
+                             c.kmsg[0] ? "\")" : "");
+                    free(fname);
+                    break;
+                }
+                /* the state at the solution */
+                state_at(s, N_VGetArrayPointer(k.u), NULL);
+                memcpy(y, s->y, (size_t)m->ny * sizeof(double));
+                S->reinits += rounds > 0;
+                ch = update_modes(m, d, tn, y, ptol, ftol, &sink, flips, &S->events, err);
+                if (ch < 0) {
+                    st = RC_EIO;
+                    goto done;
+                }
+                if (ch == 0) {
+                    ok = 1;
+                    break;
+                }
+                rounds++;
+                for (int i = 0; i < m->ninter; i++)
+                    if (flips[i] > RC_STATIC_FLIPS || rounds > max_rounds) {
+                        const int ii = flips[i] > RC_STATIC_FLIPS ? i : 0;
+                        snprintf(reason, sizeof reason,
+                                 "static analysis: the contacts' active set cycles at the load time t = %.9g s: "
+                                 "%s " RC_LOCFMT "opened and closed %d times (a contact at the limit of its "
+                                 "support); try another output interval or check the deck's supports",
+                                 tn, m->ninter ? m->inter_name[ii] : "?", RC_LOC(m->inter_loc[ii]), flips[ii]);
+                        fail_reason = reason;
+                        st = RC_SET(err, RC_ESOLVER, "%s", reason);
+                        goto done;
+                    }
+            }
+            if (ok) {
+                t = tn;
+                S->steps++;
+                if (!first && iters <= RC_STATIC_QUICK) dtau = fmin(2.0 * dtau, dtout);
+                first = 0;
+                continue;
+            }
+            /* failed: back to t, half the substep */
+            S->nonlin_fails++;
+            memcpy(y, ysave, (size_t)m->ny * sizeof(double));
+            memcpy(d->inter_mode, msave, (size_t)m->ninter * sizeof(int));
+            if (first || dtau * 0.5 < dmin) {
+                char what[768];
+                snprintf(what, sizeof what, "%s", reason);
+                snprintf(reason, sizeof reason,
+                         "static analysis: no equilibrium found at the load time t = %.9g s (from the equilibrium "
+                         "at t = %.9g s, load substeps down to %.3g s): KINSOL %s; the loads may exceed what the "
+                         "contacts can hold, or a body may have lost its support",
+                         tn, t, dtau, what);
+                fail_reason = reason;
+                st = RC_SET(err, RC_ESOLVER, "%s", reason);
+                goto done;
+            }
+            dtau *= 0.5;
+        }
+        if ((st = write_frame(m, d, out, &fb, tk, y, 0, err))) goto done;
+        if (opt && opt->stop && *opt->stop) {
+            snprintf(reason, sizeof reason, "interrupted at t = %.9g s (signal): the results up to there are kept", t);
+            fail_reason = reason;
+            st = RC_SET(err, RC_EINTERRUPT, "%s", reason);
+            goto done;
+        }
+        if (sink.stop) {
+            snprintf(reason, sizeof reason, "%s: the results up to there are kept", sink.why);
+            fail_reason = reason;
+            st = RC_SET(err, RC_EINTERRUPT, "%s", reason);
+            goto done;
+        }
+        /* stepping: the equilibrium of the first output time at or after
+         * the time asked for */
+        int pstop = 0;
+        while (pause && tk >= pause->until && !pstop) pstop = pause->reached(pause, pause->until, y);
+        if (pstop) {
+            snprintf(reason, sizeof reason, "stopped by the caller at t = %.9g s: the results up to there are kept", t);
+            fail_reason = reason;
+            st = RC_SET(err, RC_EINTERRUPT, "%s", reason);
+            goto done;
+        }
+        if (tk >= tend) break;
+    }
+    if (opt && opt->y_end) {
+        memcpy(opt->y_end, y, (size_t)m->ny * sizeof(double));
+        rc_state_to_deck(m, opt->y_end);
+    }
+
+done:
+    S->t_end = t;
+    if (s) {
+        S->rhs_evals = s->nfev;
+        S->jac_evals = s->njev;
+        S->lin_setups = s->njev;
+    }
+    snprintf(S->physics_note, sizeof S->physics_note,
+             "not run (static analysis: equilibria, no motion; the contact forces balance the loads to the "
+             "residual tolerance)");
+    S->wall_time = wall_now() - wall0;
+    if (out) {
+        rc_error e2;
+        rc_output_linalg(out, -1, s ? (long)s->colptr[s->n] : -1, (long)m->nnz);
+        rc_status st2 = rc_output_close(out, S, st == RC_OK, fail_reason ? fail_reason : err->msg, &e2);
+        if (st2 && st == RC_OK) {
+            st = st2;
+            *err = e2;
+        }
+    }
+    if (stats) *stats = *S;
+    kin_close(&k);
+    frame_free(&fb);
+    rc_static_free(s);
+    rc_data_free(d);
+    free(y);
+    free(ysave);
+    free(ptol);
+    free(msave);
+    free(flips);
+    return st;
+}
+
+const rc_solver rc_solver_static = {"static", RC_METHOD_STATIC, static_run};

@@ -1,0 +1,41 @@
+/*
+ * The static analysis (/SOLVER Method 3, static.c; docs/theory.md "Static
+ * analysis"): the equilibrium of the free bodies' forces and moments at
+ * each output time, solved by KINSOL (Newton with line search) and KLU on
+ * the stiffness. The unknowns are, per free body (in the order of the
+ * model's bodies), its displacement u = x - x0 (global, [m]) and the
+ * rotation vector theta of its orientation about the orientation q0 at the
+ * start of the solve (body frame, q = q0 (x) exp(theta), [rad]); the
+ * residual is the force (global, [N]) and the moment about the centre of
+ * mass (body frame, [N m]) on it at zero velocities, in the modes of the
+ * run data. A held unknown (a translation held by /BCS, the rotation of a
+ * body whose rotations are held or on which no moment can act) has the
+ * residual k_s u instead (k_s: its stiffness scale).
+ *
+ * Exposed here for the tests (tests/test_static.c): the residual and the
+ * stiffness of a model in given modes, about a start state.
+ */
+#ifndef RC_SOLVER_STATIC_H
+#define RC_SOLVER_STATIC_H
+
+#include "engine/assembly/data.h"
+#include "model/model.h"
+
+typedef struct rc_static rc_static;
+
+/* The static problem of m with the run data d (its modes are used as
+ * they are); NULL: out of memory. */
+rc_static *rc_static_new(const rc_model *m, rc_data *d);
+void rc_static_free(rc_static *s);
+/* Unknowns: 6 per free body. */
+int rc_static_size(const rc_static *s);
+/* Set the start state of the solve (the state y0 [ny]; its velocities are
+ * ignored, taken as zero). */
+void rc_static_set_start(rc_static *s, const double *y0);
+/* The residual r[n] at the unknowns u[n] at the load time t: 0, or 1 when
+ * the forces could not be evaluated. */
+int rc_static_residual(rc_static *s, double t, const double *u, double *r);
+/* The stiffness dr/du at u, dense column-major into K[n n]: 0, or 1. */
+int rc_static_stiffness(rc_static *s, double t, const double *u, double *K);
+
+#endif

@@ -1,0 +1,276 @@
+/* The static analysis (solver/static.c, docs/theory.md "Static analysis"):
+ * its stiffness (the force part of the engine's Jacobian, the quaternion
+ * columns chained through the rotation vector about the start orientation)
+ * against central finite differences of its residual, on a sphere whose
+ * surface is off its centre of mass resting on a plane (forces and
+ * moments) and on two such spheres stacked, the upper one on a Hertz
+ * contact and held by a spring to a fixed point; at the start orientation
+ * and at rotated states. And the scope: what Method 3 refuses. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "harness.h"
+#include "model/model.h"
+#include "solver/static.h"
+#include "testutil.h"
+#include "engine/assembly/assembly.h"
+#include "engine/events/events.h"
+
+static const char *deck_one =
+    "#RADIOSS STARTER\n"
+    "/BEGIN\n"
+    "static jacobian: an off-centre sphere on a plane\n"
+    "      2022         0\n"
+    "                  kg                   m                   s\n"
+    "                  kg                   m                   s\n"
+    "/FUNCT/1\n"
+    "curve\n"
+    "                   0                   0\n"
+    "                   1              100000\n"
+    "/NODE\n"
+    "         1                   0                   0                 0.1\n"
+    "/RBODY/1\n"
+    "body\n"
+    "         1                                                 1         1\n"
+    "               0.002               0.003               0.004\n"
+    "                   0                   0                   0\n"
+    "/SURF/ELLIPS/1\n"
+    "sphere\n"
+    "         0         2         1\n"
+    "                0.01               0.005                 0.1\n"
+    "              0.1005              0.1005              0.1005\n"
+    "/SURF/PLANE/2\n"
+    "plane\n"
+    "                   0                   0                   0\n"
+    "                   0                   0                   1\n"
+    "/GRNOD/NODE/1\n"
+    "group\n"
+    "         1\n"
+    "/GRAV/1\n"
+    "gravity\n"
+    "         0         Z         0         0         0                             1               -9.81\n"
+    "/INTER/TYPE6/1\n"
+    "contact\n"
+    "         1         2\n"
+    "                                                           0\n"
+    "                   0         0         0         0         0\n"
+    "         1         0                                                 0\n"
+    "         0\n"
+    "                             0         0\n"
+    "/RUN\n"
+    "                   1                 0.1\n"
+    "/SOLVER\n"
+    "         3         5    100000               1e-06                   0                   0\n"
+    "               1e-09               1e-09               1e-06               1e-06\n"
+    "               1e-06\n"
+    "/END\n";
+
+static const char *deck_two =
+    "#RADIOSS STARTER\n"
+    "/BEGIN\n"
+    "static jacobian: two spheres stacked\n"
+    "      2022         0\n"
+    "                  kg                   m                   s\n"
+    "                  kg                   m                   s\n"
+    "/FUNCT/1\n"
+    "curve\n"
+    "                   0                   0\n"
+    "                   1              100000\n"
+    "/NODE\n"
+    "         1                   0                   0                 0.1\n"
+    "         2               0.003                   0                 0.3\n"
+    "/RBODY/1\n"
+    "body\n"
+    "         1                                                 1         1\n"
+    "               0.002               0.003               0.004\n"
+    "                   0                   0                   0\n"
+    "/RBODY/2\n"
+    "body\n"
+    "         2                                                 2         2\n"
+    "               0.005               0.004               0.003\n"
+    "                   0                   0                   0\n"
+    "/SURF/ELLIPS/1\n"
+    "sphere\n"
+    "         0         2         1\n"
+    "               0.004               0.002                 0.1\n"
+    "              0.1002              0.1002              0.1002\n"
+    "/SURF/ELLIPS/3\n"
+    "sphere\n"
+    "         0         2         2\n"
+    "               0.003              -0.004                 0.3\n"
+    "              0.1002              0.1002              0.1002\n"
+    "/SURF/PLANE/2\n"
+    "plane\n"
+    "                   0                   0                   0\n"
+    "                   0                   0                   1\n"
+    "/GRNOD/NODE/1\n"
+    "group\n"
+    "         1\n"
+    "/GRNOD/NODE/2\n"
+    "group\n"
+    "         2\n"
+    "/GRAV/1\n"
+    "gravity\n"
+    "         0         Z         0         0         0                             1               -9.81\n"
+    "/INTER/TYPE6/1\n"
+    "contact\n"
+    "         1         2\n"
+    "                                                           0\n"
+    "                   0         0         0         0         0\n"
+    "         1         0                                                 0\n"
+    "         0\n"
+    "                             0         0\n"
+    "/INTER/POWER/2\n"
+    "power-law contact\n"
+    "         3         1         0         0         0         0\n"
+    "           100000000                 1.5                   0\n"
+    "\n"
+    "\n"
+    "/COUPLING/SPRING/3\n"
+    "spring-damper\n"
+    "         2         0         1\n"
+    "                0.02                   0                 0.3\n"
+    "                 0.3                   0                 0.4\n"
+    "                 0.2\n"
+    "                 500\n"
+    "/RUN\n"
+    "                   1                 0.1\n"
+    "/SOLVER\n"
+    "         3         5    100000               1e-06                   0                   0\n"
+    "               1e-09               1e-09               1e-06               1e-06\n"
+    "               1e-06\n"
+    "/END\n";
+
+/* max |K - FD| / max(|K|) per column over the stiffness at u, h scaled per
+ * unknown (2e-8 m or rad: the Hertz law's third derivative at small P bounds it) */
+static double stiffness_fd_error(rc_static *s, double t, const double *u0)
+{
+    const int n = rc_static_size(s);
+    double *K = calloc((size_t)n * n, sizeof(double)), *u = calloc((size_t)n, sizeof(double));
+    double *rp = calloc((size_t)n, sizeof(double)), *rm = calloc((size_t)n, sizeof(double));
+    double worst = INFINITY;
+    ENSURE(K && u && rp && rm);
+    if (!K || !u || !rp || !rm) goto out;
+    ENSURE(rc_static_stiffness(s, t, u0, K) == 0);
+    double kmax = 0.0;
+    for (int i = 0; i < n * n; i++) kmax = fmax(kmax, fabs(K[i]));
+    worst = 0.0;
+    for (int c = 0; c < n; c++) {
+        const double h = 2e-8;
+        memcpy(u, u0, (size_t)n * sizeof(double));
+        u[c] = u0[c] + h;
+        ENSURE(rc_static_residual(s, t, u, rp) == 0);
+        u[c] = u0[c] - h;
+        ENSURE(rc_static_residual(s, t, u, rm) == 0);
+        for (int r = 0; r < n; r++) {
+            const double fd = (rp[r] - rm[r]) / (2 * h), e = fabs(K[(size_t)c * n + r] - fd) / kmax;
+            if (e > 1e-6) fprintf(stderr, "  K[%d][%d] = %.9g, FD %.9g\n", r, c, K[(size_t)c * n + r], fd);
+            worst = fmax(worst, e);
+        }
+    }
+out:
+    free(K);
+    free(u);
+    free(rp);
+    free(rm);
+    return worst;
+}
+
+/* The model of `text`, its data with every active contact closed, the
+ * stiffness checked at u = 0 and at displaced and rotated states. */
+static void check_deck(const char *text, const char *name, int nfree)
+{
+    rc_error e;
+    rc_model *m = tu_compile_text(text, name, &e);
+    if (!m) fprintf(stderr, "  %s\n", e.msg);
+    ENSURE(m != NULL);
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny + 1, sizeof(double));
+    rc_static *s = d ? rc_static_new(m, d) : NULL;
+    ENSURE(d && y && s);
+    if (d && y && s) {
+        ENSURE(rc_static_size(s) == 6 * nfree);
+        rc_initial_state(m, y);
+        rc_modes_init(m, d, 0.0, y);
+        for (int i = 0; i < m->ninter; i++) d->inter_mode[i] = RC_MODE_CLOSED;
+        rc_static_set_start(s, y);
+        const int n = rc_static_size(s);
+        double *u = calloc((size_t)n, sizeof(double));
+        ENSURE(u != NULL);
+        if (u) {
+            double err0 = stiffness_fd_error(s, 0.5, u);
+            ENSURE(err0 < 1e-6);
+            /* displaced by up to 0.2 mm and rotated by up to 0.05 rad */
+            for (int i = 0; i < n; i++) u[i] = (i % 6 < 3 ? 2e-4 : 0.05) * sin(1.7 * i + 0.3);
+            double err1 = stiffness_fd_error(s, 0.5, u);
+            ENSURE(err1 < 1e-6);
+            /* the same about a start orientation that is not the identity */
+            double *y2 = calloc((size_t)m->ny + 1, sizeof(double));
+            ENSURE(y2 != NULL);
+            if (y2) {
+                memcpy(y2, y, (size_t)m->ny * sizeof(double));
+                for (int b = 0; b < m->nbody; b++) {
+                    const int a = m->body_yadr[b];
+                    if (a < 0) continue;
+                    const double q[4] = {cos(0.2), sin(0.2) * 0.6, sin(0.2) * 0.8, 0.0};
+                    memcpy(y2 + a + 3, q, sizeof q);
+                }
+                rc_static_set_start(s, y2);
+                double err2 = stiffness_fd_error(s, 0.5, u);
+                ENSURE(err2 < 1e-6);
+                free(y2);
+            }
+            free(u);
+        }
+    }
+    rc_static_free(s);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
+static void test_static_stiffness_fd(void)
+{
+    check_deck(deck_one, "static_one.rad", 1);
+    check_deck(deck_two, "static_two.rad", 2);
+}
+
+/* Method 3 refuses what this version does not solve, naming the card. */
+static void test_static_scope(void)
+{
+    char *t = malloc(strlen(deck_one) + 400);
+    ENSURE(t != NULL);
+    if (!t) return;
+    /* friction on the contact: the TYPE6 card's Fric field */
+    strcpy(t, deck_one);
+    char *p = strstr(t, "/INTER/TYPE6/1");
+    ENSURE(p != NULL);
+    if (p) {
+        p = strchr(p, '\n'); /* title line */
+        p = p ? strchr(p + 1, '\n') : NULL; /* surfaces */
+        p = p ? strchr(p + 1, '\n') : NULL; /* Sfric Fric Gap ... */
+        if (p) memcpy(p + 1 + 20, "                 0.3", 20);
+        TU_EXPECT_TEXT_ERROR(t, "static_fric.rad", "/INTER/TYPE6/1", "static analysis", "friction");
+    }
+    /* a joint-free model accepts the method through the setter, and 4 is refused */
+    rc_error e;
+    rc_model *m = tu_compile_text(deck_two, "static_set.rad", &e);
+    ENSURE(m != NULL);
+    if (m) {
+        ENSURE(rc_model_set_method(m, 1, &e) == RC_OK);
+        ENSURE(rc_model_set_method(m, 3, &e) == RC_OK);
+        ENSURE(rc_model_set_method(m, 4, &e) == RC_EINPUT);
+        rc_model_free(m);
+    }
+    free(t);
+}
+
+void suite_static(void);
+void suite_static(void)
+{
+    RUN_TEST(test_static_stiffness_fd);
+    RUN_TEST(test_static_scope);
+}

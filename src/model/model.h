@@ -153,8 +153,9 @@ typedef struct rc_jblock {
  * involved: touch bands of the coordinates, the hysteresis roots' band of
  * the forces (engine/events/events.c, assemble_rhs.c) */
 #define RC_TOUCH_ULPS 1e3
-/* ... and at least this many roundings of the deck's coordinates (the
- * positions the deck gave, before the model moved its origin) */
+/* ... and the touch bands at least this many roundings of the deck's
+ * coordinates (the positions the deck gave, before the model moved its
+ * origin: an error of the initial state; engine/assembly/bounds.c) */
 #ifndef RC_TOL_DECK_ULPS
 #define RC_TOL_DECK_ULPS 4.0
 #endif

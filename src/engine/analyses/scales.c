@@ -562,11 +562,10 @@ static double inter_damping(const rc_model *m, int i)
     return c > 0 ? c : 1e-300;
 }
 
-/* The position floor of coordinates of magnitude X in the model and Xd
- * in the deck [m]. */
-static double coordinate_floor(double X, double Xd)
+/* The position floor of coordinates of magnitude X in the model [m]. */
+static double coordinate_floor(double X)
 {
-    return fmax(RC_TOL_ULPS * DBL_EPSILON * X, RC_TOL_DECK_ULPS * DBL_EPSILON * Xd);
+    return RC_TOL_ULPS * DBL_EPSILON * X;
 }
 
 rc_status rc_model_tolerances(rc_model *m, rc_error *err)
@@ -590,11 +589,15 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
     body_sizes(m, size);
     /* the resolution of the coordinates: a penetration is the difference of
      * coordinates, rounded at DBL_EPSILON times their magnitude in the
-     * model, so that no tolerance below RC_TOL_ULPS of it can be met; and
-     * the deck gave the positions to DBL_EPSILON times their magnitude
-     * there (the model may compute about another origin, compile.c): no
-     * tolerance below RC_TOL_DECK_ULPS of that means anything (a resting
-     * stack 1 km away starts 1e-13 m off its equilibrium). For each
+     * model, so that no tolerance below RC_TOL_ULPS of it can be met. The
+     * deck's own rounding (its positions 1 km from its origin are given to
+     * 1e-13 m) is an error of the initial state, not a bound on the
+     * integration's: the model computes about its own origin (compile.c),
+     * and a floor from the deck's coordinates would control the error of
+     * every body far from the deck's origin more loosely than the same
+     * scene's at the origin (its motion then departs from it by far more
+     * than the rounding of its start explains); the deck's rounding enters
+     * the touch bands only (bounds.c rc_touch_band). For each
      * contact, the largest coordinate of its pair at t = 0 (bodies'
      * centres plus sizes, fixed surfaces' points) gives the floor pf_i of its position
      * tolerances; the body's floor is the largest of its contacts', and its
@@ -608,26 +611,20 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         if (!isfinite(m->inter_pscale[i])) continue;
         const double vi = fmin(m->inter_vscale[i], m->inter_fscale[i] / inter_damping(m, i));
         const int bs[2] = {m->inter_ba[i], m->inter_bb[i]};
-        double X = 0.0, Xd = 0.0; /* model and deck coordinates */
+        double X = 0.0; /* model coordinates */
         for (int k = 0; k < 2; k++) {
             const int b = bs[k];
             if (b < 0) continue;
             const double *x = m->body_y0 + RC_NB * b;
-            for (int c = 0; c < 3; c++) {
-                X = fmax(X, fabs(x[c]) + size[b]);
-                Xd = fmax(Xd, fabs(x[c] + m->origin[c]) + size[b]);
-            }
+            for (int c = 0; c < 3; c++) X = fmax(X, fabs(x[c]) + size[b]);
         }
         const int ss[2] = {m->inter_sa[i], m->inter_sb[i]};
         for (int k = 0; k < 2; k++) {
             if (ss[k] < 0 || m->surf_body[ss[k]] >= 0) continue;
             const double *p = m->surf_p + 3 * ss[k];
-            for (int c = 0; c < 3; c++) {
-                X = fmax(X, fabs(p[c]));
-                Xd = fmax(Xd, fabs(p[c] + m->origin[c]));
-            }
+            for (int c = 0; c < 3; c++) X = fmax(X, fabs(p[c]));
         }
-        pfl[i] = coordinate_floor(X, Xd);
+        pfl[i] = coordinate_floor(X);
         const double om = m->inter_vscale[i] / m->inter_pscale[i];
         for (int k = 0; k < 2; k++) {
             if (bs[k] < 0) continue;
@@ -641,12 +638,9 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
      * joints or couplings only) */
     for (int b = 0; b < m->nbody; b++) {
         const double *x = m->body_y0 + RC_NB * b;
-        double X = 0.0, Xd = 0.0;
-        for (int c = 0; c < 3; c++) {
-            X = fmax(X, fabs(x[c]) + size[b]);
-            Xd = fmax(Xd, fabs(x[c] + m->origin[c]) + size[b]);
-        }
-        pflb[b] = fmax(pflb[b], coordinate_floor(X, Xd));
+        double X = 0.0;
+        for (int c = 0; c < 3; c++) X = fmax(X, fabs(x[c]) + size[b]);
+        pflb[b] = fmax(pflb[b], coordinate_floor(X));
     }
     /* energies: 0.1 rtol of the model's energy scale, at least the work of
      * the contact forces over the rounding of the penetrations (the

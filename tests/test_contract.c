@@ -406,7 +406,7 @@ static void test_contract_named_pipe_refused(void)
     ENSURE(strstr(e.msg, pipe_deck) && strstr(e.msg, "not a regular file (a named pipe)"));
     printf("    %s\n", e.msg);
     ENSURE(rc_case_load(main_deck, &c, &e) == RC_EINPUT && c == NULL);
-    char place[192];
+    char place[512];
     snprintf(place, sizeof place, "%s:%d: #include \"%s/run.inc\"", main_deck, line_of(main_deck, "#include"), dir);
     ENSURE(strstr(e.msg, place) && strstr(e.msg, "not a regular file (a named pipe)"));
     printf("    %s\n", e.msg);

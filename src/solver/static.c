@@ -705,8 +705,8 @@ static rc_status static_run(const rc_model *m, const rc_run_options *opt, rc_pau
             memcpy(y, ysave, (size_t)m->ny * sizeof(double));
             memcpy(d->inter_mode, msave, (size_t)m->ninter * sizeof(int));
             if (first || dtau * 0.5 < dmin) {
-                char what[768];
-                snprintf(what, sizeof what, "%s", reason);
+                char what[1024]; /* KINSOL's reason, cut to leave room for the message around it */
+                snprintf(what, sizeof what, "%.1000s", reason);
                 snprintf(reason, sizeof reason,
                          "static analysis: no equilibrium found at the load time t = %.9g s (from the equilibrium "
                          "at t = %.9g s, load substeps down to %.3g s): KINSOL %s; the loads may exceed what the "

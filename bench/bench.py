@@ -12,7 +12,9 @@ Cases (bench/README.md):
      a. the settled column (N = 100, 1000) under gravity ramped G -> 2 G over
         T = 20 s and 100 s, then held 1 s; accuracy = contact forces at the
         end against an RK4 reference of the same equations (and the statics
-        2 (N - j) m g for information);
+        2 (N - j) m g for information); beside them the static analysis
+        (/SOLVER Method 3, the column locked to z) of the same ramp, against
+        both references (the exact statics is the right one for it);
      b. stick-slip: a block dragged across a floor through a spring, 100 s,
         Renard two-level friction in the viscous form; accuracy = period,
         slip distances and switch times against a scipy Radau reference of
@@ -691,20 +693,28 @@ def settled_heights(N, p=QS):
 # atol_vel = rtol m/s; "derived": only Rtol, the rest from the model's scales), their BDF Max_order, the
 # ricochet rtols and the explicit dt_factors run (None: the defaults of bench_ramp)
 # reuse_ref: take the RK4 references of an earlier run with the same arguments (files in the work directory)
+# static_dtouts: the output intervals of the static analysis runs ("end": one equilibrium, at the end; a number:
+# every that many seconds); repeat: best of how many timed runs of explicit_ref, cvode_ref, rc_time (N <= 100
+# for ricochet's dynamic runs; the static runs always by rc_time)
 RAMP_OPTS = {"atol": "scaled", "max_order": 5, "rtols": None, "cvode_rtols": None, "dt_factors": None,
-             "reuse_ref": False}
+             "reuse_ref": False, "static_dtouts": ("end", 1.0), "repeat": 1}
 
 SMOOTH_POINTS = 20000  # samples of the smooth ramp in the deck's /FUNCT
 
 
-def ramp_deck(N, T, rtol, p=QS, shape="linear"):
+def ramp_deck(N, T, rtol, p=QS, shape="linear", static_dtout=None):
     """The settled column, gravity ramped G -> 2 G over T (a /GRAV with a
     /FUNCT time function), held for p["hold"] s. shape "smooth": the ramp
     1 + (1 - cos(pi t/T))/2, sampled at SMOOTH_POINTS + 1 points (the linear
-    interpolation departs from it by at most pi^2/(16 n^2) = 1.5e-9 of G)."""
+    interpolation departs from it by at most pi^2/(16 n^2) = 1.5e-9 of G).
+    static_dtout (> 0): the static analysis (/SOLVER Method 3) with output
+    (and equilibrium) times every static_dtout s up to the end, the column
+    locked to z by /BCS 110 111 as the locked settling column (statics
+    needs the lateral support a frictionless column lacks); rtol unused."""
     R, m, k = p["R"], p["m"], p["k"]
     tend = T + p["hold"]
-    d = Deck(f"bench: settled column of {N} spheres, gravity ramped G -> 2 G over {T:g} s ({shape})")
+    d = Deck(f"bench: static column of {N} spheres, G -> 2 G over {T:g} s ({shape}), output every {static_dtout:g} s"
+             if static_dtout else f"bench: settled column of {N} spheres, gravity ramped G -> 2 G over {T:g} s ({shape})")
     d.funct(1, [0.0, 1.0], [0.0, k], title="linear load curve")
     if shape == "smooth":
         ts = [T * i / SMOOTH_POINTS for i in range(SMOOTH_POINTS + 1)]
@@ -722,11 +732,18 @@ def ramp_deck(N, T, rtol, p=QS, shape="linear"):
     floor = N + 1
     d.plane(floor, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor")
     d.grav_fct(1, "Z", -G, 2)
+    if static_dtout:
+        d.grnod(1, list(range(1, N + 1)), title="all spheres")
+        d.bcs(1, 1, trarot="110 111", title="x, y and rotations held")
     c_floor = 2 * p["zeta"] * math.sqrt(k * m)
     c_ss = 2 * p["zeta"] * math.sqrt(k * m / 2)
     d.type6(1, 1, floor, 1, visc=c_floor, title="floor contact")
     for i in range(1, N):
         d.type6(i + 1, i, i + 1, 1, visc=c_ss, title=f"spheres {i}-{i + 1}")
+    if static_dtout:
+        d.run(tend, static_dtout)
+        d.solver(method=3)
+        return d
     d.run(tend, tend / 20)
     if RAMP_OPTS["atol"] == "derived":  # blank Atol fields: derived from the model's scales (theory 7.1)
         d.solver(rtol=rtol, atol_pos=0.0, atol_quat=0.0, atol_vel=0.0, atol_omega=0.0, atol_energy=0.0,
@@ -759,7 +776,8 @@ def bench_ramp(B, sizes, ramps, shape="linear"):
         F_stat = np.array([2.0 * (N - j) * p["m"] * G for j in range(N)])
         for T in ramps:
             key = f"N{N}_T{T:g}" + ("" if shape == "linear" else "_smooth")
-            S = {"N": N, "T": T, "ricochet": [], "cvode": [], "explicit": []}
+            S = {"N": N, "T": T, "ricochet": [], "cvode": [], "explicit": [], "static": []}
+            rep = RAMP_OPTS["repeat"]
             # ---- reference: RK4 (no events in this problem) at h and 2h
             h = 5e-5
             refs = {}
@@ -800,12 +818,14 @@ def bench_ramp(B, sizes, ramps, shape="linear"):
 
             # ---- ricochet
             rows = []
-            rtols = RAMP_OPTS["rtols"] or ((1e-4, 1e-6) if B.quick else (1e-4, 1e-6, 1e-8))
+            rtols = RAMP_OPTS["rtols"]
+            if rtols is None:
+                rtols = (1e-4, 1e-6) if B.quick else (1e-4, 1e-6, 1e-8)
             tag = ("_derived" if RAMP_OPTS["atol"] == "derived" else "") + (
                 f"_q{RAMP_OPTS['max_order']}" if RAMP_OPTS["max_order"] != 5 else "")
             for rtol in rtols:
                 r = B.ricochet_run(ramp_deck(N, T, rtol, shape=shape), f"ramp{key}_rtol{rtol:.0e}{tag}", timeout=1800,
-                                   time_repeat=1 if N <= 100 else 0)
+                                   time_repeat=rep if N <= 100 else 0)
                 if "stats" not in r:
                     rows.append([f"{rtol:.0e}", "FAILED", fmt_t(r["elapsed"]), r["stderr"][:70]])
                     S["ricochet"].append({"rtol": rtol, "ok": False, "stderr": r["stderr"]})
@@ -837,7 +857,7 @@ def bench_ramp(B, sizes, ramps, shape="linear"):
                 rtols = (1e-2, 1e-4, 1e-6) if B.quick else (1e-2, 1e-3, 1e-4, 1e-6, 1e-8)
             for rtol in rtols:
                 ff = os.path.join(B.work, f"ramp{key}_cvode{rtol:.0e}.txt")
-                x = B.cvode_run([sub[0]] + ramp_args(N, T) + [rtol, ff], timeout=1800)
+                x = B.cvode_run([sub[0]] + ramp_args(N, T) + [rtol, ff], repeat=rep, timeout=1800)
                 if not x["ok"]:
                     rows.append([f"{rtol:.0e}", "FAILED", x.get("stderr", "")[:70]])
                     continue
@@ -857,7 +877,7 @@ def bench_ramp(B, sizes, ramps, shape="linear"):
             factors = RAMP_OPTS["dt_factors"] or ((1, 0.5) if B.quick else (1, 0.5, 0.2, 0.1))
             for f in factors:
                 ff = os.path.join(B.work, f"ramp{key}_cd{f:g}.txt")
-                x = B.explicit_run([sub[0]] + ramp_args(N, T) + [f, ff], repeat=1)
+                x = B.explicit_run([sub[0]] + ramp_args(N, T) + [f, ff], repeat=rep)
                 if not x["ok"]:
                     rows.append([f"{f:g}", "FAILED"])
                     continue
@@ -870,12 +890,74 @@ def bench_ramp(B, sizes, ramps, shape="linear"):
                              fmt_e(es)])
             table(f"N = {N}, T = {T:g} s: explicit central difference", ["dt_factor", "dt [s]", "wall", "steps",
                   "events", "err vs RK4", "err vs statics"], rows)
+            # ---- static analysis (Method 3, locked column): the equilibrium under 2 G at the end
+            bench_ramp_static(B, S, N, T, key, shape, F, F_stat, scale)
             S["equal"] = equal_rows(B, f"Ramp N = {N}, T = {T:g} s", S, "ricochet", "ricochet")
             S["equal_cvode"] = equal_rows(B, f"Ramp N = {N}, T = {T:g} s, plain CVODE", S, "cvode", "cvode_ref")
             S["equal_reverse"] = equal_reverse(f"Ramp N = {N}, T = {T:g} s", S["explicit"],
                                                {"ricochet": S["ricochet"], "cvode_ref": S["cvode"]})
             res["cases"][key] = S
     return res
+
+
+def bench_ramp_static(B, S, N, T, key, shape, F, F_stat, scale, p=QS):
+    """The static analysis of the ramped column (ramp_deck with
+    static_dtout): its end forces against the RK4 reference F (the dynamic
+    answer, with the ringing the ramp left) and against the exact statics
+    F_stat = 2 (N - j) m g (the right reference of a static question), and
+    explicit/static at equal accuracy on each measure. Appends to S["static"]."""
+    tend = T + p["hold"]
+    rows = []
+    for dto in RAMP_OPTS["static_dtouts"]:
+        dt = tend if dto == "end" else float(dto)
+        label = "end" if dto == "end" else f"{dt:g} s"
+        name = f"ramp{key}_static_" + ("end" if dto == "end" else f"{dt:g}s")
+        r = B.ricochet_run(ramp_deck(N, T, 0.0, shape=shape, static_dtout=dt), name, timeout=1800,
+                           time_repeat=max(3, RAMP_OPTS["repeat"]))
+        complete = r.get("ok") and "t" in r and abs(float(r["t"][-1]) - tend) < 1e-9
+        if not complete:
+            why = r.get("stderr", "").replace(r.get("case", ""), "DECK")
+            rows.append([label, "FAILED", fmt_t(r.get("elapsed")), why[:200]])
+            S["static"].append({"dtout": label, "ok": False, "stderr": r.get("stderr")})
+            continue
+        st = r["stats"]
+        fn = r["fn"][-1, :]
+        err = float(np.max(np.abs(fn - F)) / scale)
+        es = float(np.max(np.abs(fn - F_stat)) / scale)
+        S["static"].append({"dtout": label, "rtol": label, "ok": True, "error": err, "error_statics": es,
+                            "wall": r["wall"], "wall_src": r["wall_src"], "cli_wall": r["cli_wall"],
+                            "process_cpu": r["process_cpu"], "elapsed": r["elapsed"], "rss_kb": r["rss_kb"],
+                            "records": int(len(r["t"])), "stats": st})
+        rows.append([label, len(r["t"]), fmt_t(r["wall"]) + ("" if r["wall_src"] == "rc_time" else " (CLI)"),
+                     fmt_t(r["elapsed"]), st.get("steps"), st.get("nonlin_iters"), st.get("jac_evals"),
+                     st.get("events"), fmt_e(err), fmt_e(es)])
+    table(f"N = {N}, T = {T:g} s: ricochet static analysis (Method 3, column locked to z)",
+          ["output every", "records", "wall", "CLI process", "load steps", "Newton its", "Jac", "flips",
+           "err vs RK4", "err vs statics"], rows,
+          note="wall: rc_time, best of 3 (no output file); CLI process: the whole `ricochet run` (wall). err vs "
+               "statics = max |F - 2 (N - j) m g| / (N m g): the right measure of a static answer; err vs RK4 "
+               "includes the ringing the ramp left in the dynamic reference (its |ref - statics|)")
+    ok = [r for r in S["static"] if r["ok"]]
+    ex = [x for x in S["explicit"] if not math.isnan(x.get("error", float("nan")))]
+    if not ok or not ex:
+        return
+    rows = []
+    S["static_equal"] = {}
+    for meas, ek in (("RK4", "error"), ("statics", "error_statics")):
+        eq = equal_accuracy([dict(r, error=r[ek]) for r in ok], [dict(x, error=x[ek]) for x in ex])
+        S["static_equal"][meas] = eq
+        stable = max(ex, key=lambda x: x["dt"])
+        for r, q in zip(ok, eq):
+            m = (f"dt_factor {q['explicit_dt_factor']:g}: {fmt_t(q['explicit_wall'])} ({fmt_e(q['explicit_error'])})"
+                 if q["explicit_wall"] is not None else f"none (finest {fmt_e(q['finest_explicit_error'])})")
+            rows.append([meas, r["dtout"], fmt_e(r[ek]), fmt_t(r["wall"]), m,
+                         f"{q['ratio']:.3g}" if q["ratio"] else "-",
+                         f"{fmt_t(stable['wall'])} ({fmt_e(stable[ek])})", f"{stable['wall'] / r['wall']:.3g}"])
+    table(f"Ramp N = {N}, T = {T:g} s: static analysis against explicit",
+          ["measure", "static every", "static err", "static wall", "explicit as accurate", "explicit/static",
+           "explicit stable step (err)", "stable/static"], rows,
+          note="explicit/static > 1: the static analysis faster; 'none': no explicit run of the scan is as "
+               "accurate (against the statics the explicit error is the ringing left at the end, not its step)")
 
 
 # -------------------------------------------------------------- stick-slip
@@ -1401,10 +1483,17 @@ def main():
                     help="ramp decks: atol_pos = 1e-3 rtol m, atol_vel = rtol m/s (scaled, the default) or only Rtol "
                          "with the absolute tolerances derived from the model's scales (derived)")
     ap.add_argument("--ramp-max-order", type=int, default=5, help="ramp decks: /SOLVER Max_order (1-5)")
-    ap.add_argument("--ramp-rtols", default=None, help="ramp: ricochet rtols, comma-separated")
+    ap.add_argument("--ramp-rtols", default=None,
+                    help="ramp: ricochet rtols (dynamic runs), comma-separated (an empty string: none)")
     ap.add_argument("--ramp-cvode-rtols", default=None,
                     help="ramp: cvode_ref rtols, comma-separated (an empty string: none)")
     ap.add_argument("--ramp-dt-factors", default=None, help="ramp: explicit dt_factors, comma-separated")
+    ap.add_argument("--ramp-static-dtouts", default="end,1",
+                    help="ramp: output intervals of the static analysis runs (Method 3, locked column), "
+                         "comma-separated seconds or 'end' (one equilibrium, at the end); an empty string: none")
+    ap.add_argument("--ramp-repeat", type=int, default=1,
+                    help="ramp: best of how many timed runs (explicit_ref, cvode_ref; rc_time at N <= 100); "
+                         "the static runs: at least 3")
     ap.add_argument("--reuse-ref", action="store_true",
                     help="ramp: reuse the RK4 references of an earlier run with the same arguments (work directory)")
     ap.add_argument("--cascade-tend", type=float, default=5.0, help="cascade: end time [s]")
@@ -1430,6 +1519,9 @@ def main():
 
     RAMP_OPTS.update(atol=a.ramp_atol, max_order=a.ramp_max_order, rtols=floats(a.ramp_rtols),
                      cvode_rtols=floats(a.ramp_cvode_rtols), dt_factors=floats(a.ramp_dt_factors),
+                     static_dtouts=tuple(v if v == "end" else float(v)
+                                         for v in (t.strip() for t in a.ramp_static_dtouts.split(",")) if v),
+                     repeat=a.ramp_repeat,
                      reuse_ref=a.reuse_ref)
     SS_OPTS.update(atol=a.ss_atol, rtols=floats(a.ss_rtols), dt_factors=floats(a.ss_dt_factors))
     B = Bench(a.build, a.quick, a.work, a.clock)

@@ -37,6 +37,7 @@
 
 #include "base/error.h"
 #include "engine/assembly/assembly.h"
+#include "engine/assembly/bounds.h"
 #include "engine/events/events.h"
 #include "model/model.h"
 #include "output/output.h"
@@ -46,13 +47,17 @@
 
 /* The smallest load substep, relative to the output interval [-]. */
 #define RC_STATIC_MIN_CUT 1e-6
-/* Newton: the residual's tolerance (max norm of force / force scale),
- * iterations per solve, the largest Newton step in scaled units (lengths
- * over the body's penetration scale), the iterations of a quick solve
- * (the next substep doubles). */
+/* Newton: the residual's tolerance (max norm of force / force scale; raised
+ * to the rounding of the forces where that is larger: rc_static_ftol),
+ * iterations per solve, the largest Newton step in scaled norm (none that
+ * binds: what a body may move in one step is set by its neighbours, not by
+ * a scale of its own; the top of a column of 1000 spheres loaded anew
+ * moves 49 radii, 5e5 penetration scales, while no contact moves more than
+ * 1 mm; the line search keeps each step from raising the residual), the
+ * iterations of a quick solve (the next substep doubles). */
 #define RC_STATIC_FTOL 1e-11
 #define RC_STATIC_MAXIT 60
-#define RC_STATIC_MAXSTEP 10.0
+#define RC_STATIC_MAXSTEP 1e30
 #define RC_STATIC_QUICK 4
 /* Solves of the active set per load substep, and mode flips of one
  * interface in them, before the active set is said to cycle. */
@@ -71,6 +76,7 @@ struct rc_static {
     double *jv;      /* [nnz] the engine's Jacobian values */
     char *held;      /* [n] 1: held unknown */
     double *us, *fs; /* [n] unknown and residual scales (length or angle; force or moment) */
+    double *kb;      /* [nb] the summed stiffness scales of each body's contacts, F_s / p_s [N/m] */
     /* the stiffness pattern: 6x6 blocks (row slot, column slot), sorted
      * by column slot then row slot */
     int nblk;
@@ -141,7 +147,7 @@ static int cmp_i64(const void *a, const void *b)
 void rc_static_free(rc_static *s)
 {
     if (!s) return;
-    void *p[] = {s->fb, s->slot, s->ys, s->y, s->f, s->jv, s->held, s->us, s->fs, s->brow, s->bcol, s->bfirst,
+    void *p[] = {s->fb, s->slot, s->ys, s->y, s->f, s->jv, s->held, s->us, s->fs, s->kb, s->brow, s->bcol, s->bfirst,
                  s->colptr, s->rowind, s->ent_blk, s->ent_rc, s->raw, s->kval};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     free(s);
@@ -183,11 +189,12 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     s->held = calloc(n1, 1);
     s->us = calloc(n1, sizeof(double));
     s->fs = calloc(n1, sizeof(double));
+    s->kb = calloc((size_t)s->nb + 1, sizeof(double));
     s->ent_blk = malloc(nnz1 * sizeof(int));
     s->ent_rc = malloc(nnz1);
     int64_t *key = malloc((nnz1 + (size_t)s->nb) * sizeof(int64_t));
     char *mf = calloc((size_t)m->nbody + 1, 1);
-    if (!s->fb || !s->slot || !s->ys || !s->y || !s->f || !s->jv || !s->held || !s->us || !s->fs || !s->ent_blk ||
+    if (!s->fb || !s->slot || !s->ys || !s->y || !s->f || !s->jv || !s->held || !s->us || !s->fs || !s->kb || !s->ent_blk ||
         !s->ent_rc || !key || !mf) {
         free(key);
         free(mf);
@@ -211,8 +218,10 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
         double ps = INFINITY, fsc = mass * sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]), fi = 0.0;
         for (int i = 0; i < m->ninter; i++)
             if (m->inter_ba[i] == b || m->inter_bb[i] == b) {
-                if (isfinite(m->inter_pscale[i]) && m->inter_pscale[i] > 0) ps = fmin(ps, m->inter_pscale[i]);
-                if (isfinite(m->inter_fscale[i]) && m->inter_fscale[i] > fi) fi = m->inter_fscale[i];
+                const double pi = m->inter_pscale[i], fsi = m->inter_fscale[i];
+                if (isfinite(pi) && pi > 0) ps = fmin(ps, pi);
+                if (isfinite(fsi) && fsi > fi) fi = fsi;
+                if (isfinite(pi) && pi > 0 && isfinite(fsi)) s->kb[q] += fsi / pi;
             }
         if (!isfinite(ps)) ps = 1e-3 * rg;
         if (!(fsc > 0)) fsc = fi > 0 ? fi : 1.0;
@@ -382,6 +391,27 @@ int rc_static_stiffness(rc_static *s, double t, const double *u, double *K)
     return 0;
 }
 
+/* The residual's tolerance (KINSOL's max norm of the scaled forces and
+ * moments): RC_STATIC_FTOL, or the rounding of the forces where that is
+ * larger: a body's contacts (their stiffness scales F_s / p_s summed) over
+ * RC_TOL_ULPS roundings of its coordinates (model.h, as the dynamic
+ * floors), in units of its force scale. A column 20 m high of contacts of
+ * 1e5 N/m cannot balance its forces better than about 6e-8 N. */
+static double rc_static_ftol(const rc_static *s)
+{
+    const rc_model *m = s->m;
+    double ftol = RC_STATIC_FTOL;
+    for (int q = 0; q < s->nb; q++) {
+        const int b = s->fb[q];
+        const double *x = s->ys + m->body_yadr[b];
+        double X = rc_body_size(m, b);
+        if (!isfinite(X)) X = 0.0;
+        X += fmax(fabs(x[0]), fmax(fabs(x[1]), fabs(x[2])));
+        ftol = fmax(ftol, s->kb[q] * RC_TOL_ULPS * DBL_EPSILON * X / s->fs[6 * q]);
+    }
+    return ftol;
+}
+
 /* ---- KINSOL ----------------------------------------------------------- */
 typedef struct st_run {
     rc_static *s;
@@ -474,7 +504,7 @@ static rc_status kin_open(st_kin *k, st_run *c, rc_error *err)
     if (KINInit(k->kin, kin_f, k->u) || KINSetUserData(k->kin, c) || KINSetErrHandlerFn(k->kin, kin_err, c) ||
         KINSetLinearSolver(k->kin, k->LS, k->A) || KINSetJacFn(k->kin, kin_jac) || KINSetMaxSetupCalls(k->kin, 1) ||
         KINSetNumMaxIters(k->kin, RC_STATIC_MAXIT) || KINSetFuncNormTol(k->kin, RC_STATIC_FTOL) ||
-        KINSetScaledStepTol(k->kin, 1e-15) || KINSetMaxNewtonStep(k->kin, RC_STATIC_MAXSTEP * sqrt((double)n)))
+        KINSetScaledStepTol(k->kin, 1e-15) || KINSetMaxNewtonStep(k->kin, RC_STATIC_MAXSTEP))
         RC_RAISE(err, RC_ESOLVER, "KINSOL set-up failed");
     return RC_OK;
 }
@@ -499,10 +529,15 @@ static st_out kin_solve(st_kin *k, st_run *c, double t)
         o.ok = 1;
         return o;
     }
+    const double ftol = rc_static_ftol(c->s);
+    KINSetFuncNormTol(k->kin, ftol);
     o.flag = KINSol(k->kin, k->u, KIN_LINESEARCH, k->us, k->fs);
     KINGetNumNonlinSolvIters(k->kin, &o.iters);
     KINGetFuncNorm(k->kin, &o.fnorm);
-    o.ok = o.flag == KIN_SUCCESS || o.flag == KIN_INITIAL_GUESS_OK || (o.flag == KIN_STEP_LT_STPTOL && o.fnorm <= 1e-8);
+    /* a search that stalls within a few roundings of the forces has
+     * converged as far as the coordinates resolve */
+    const int stalled = o.flag == KIN_STEP_LT_STPTOL || o.flag == KIN_LINESEARCH_NONCONV;
+    o.ok = o.flag == KIN_SUCCESS || o.flag == KIN_INITIAL_GUESS_OK || (stalled && o.fnorm <= 16.0 * ftol);
     if (!o.ok) {
         sun_klu_common *kc = SUNLinSol_KLUGetCommon(k->LS);
         if (kc && kc->status == KLU_SINGULAR) o.singular_col = (int)kc->singular_col;

@@ -18,9 +18,19 @@
  * one separated or pulling opens; set here, as the events do in
  * engine/events) and the load step is solved again, to a fixed point.
  *
+ * Friction (one contact point, the stick spring): an incremental return
+ * mapping over the load substeps. The trial force F_t0 - K_t (relative
+ * displacement of the contact's material points since the substep's
+ * start) goes into the contact's friction state before the engine
+ * evaluates; stick within Sfric + mu F_n, else slip (d->inter_slip: the
+ * engine applies the limit along the state); the stiffness adds the
+ * engine's columns of that state times the trial's derivatives. A load
+ * beyond friction (a contact sliding where Newton fails, at the smallest
+ * substep) is an error naming the interface and the load time.
+ *
  * The results file is that of a dynamic run (drive.c's open_output and
  * write_frame), one record per output time, velocities zero; the mode
- * flips go to its events table.
+ * flips (contact, stick/slip) go to its events table.
  */
 #include <complex.h>
 #include <float.h>

@@ -5,7 +5,9 @@
  * surface is off its centre of mass resting on a plane (forces and
  * moments) and on two such spheres stacked, the upper one on a Hertz
  * contact and held by a spring to a fixed point; at the start orientation
- * and at rotated states. And the scope: what Method 3 refuses. */
+ * and at rotated states; with friction on the contact (the return
+ * mapping's trial force, sticking and sliding). And the scope: what
+ * Method 3 refuses. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -5,7 +5,9 @@
  * surface is off its centre of mass resting on a plane (forces and
  * moments) and on two such spheres stacked, the upper one on a Hertz
  * contact and held by a spring to a fixed point; at the start orientation
- * and at rotated states. And the scope: what Method 3 refuses. */
+ * and at rotated states; with friction on the contact (the return
+ * mapping's trial force, sticking and sliding). And the scope: what
+ * Method 3 refuses. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -238,13 +240,95 @@ static void test_static_stiffness_fd(void)
     check_deck(deck_two, "static_two.rad", 2);
 }
 
+/* deck_one with friction on its contact: Fric 0.3, Stiff K_t = 1e4 N/m
+ * (the sphere is 0.5 mm into the plane at the start: F_n = 50 N, limit
+ * 15 N). NULL: out of memory. */
+static char *deck_one_friction(void)
+{
+    static const char *const rep[][2] = {
+        {"\n                                                           0\n",
+         "\n                                     0.3                   0\n"},
+        {"\n         0\n                             0         0\n/RUN",
+         "\n         0                         10000\n                             0         0\n/RUN"}};
+    char *t = malloc(strlen(deck_one) + 200);
+    if (!t) return NULL;
+    strcpy(t, deck_one);
+    for (int k = 0; k < 2; k++) {
+        char *p = strstr(t, rep[k][0]);
+        ENSURE(p != NULL);
+        if (!p) continue;
+        const size_t lo = strlen(rep[k][0]), ln = strlen(rep[k][1]);
+        memmove(p + ln, p + lo, strlen(p + lo) + 1);
+        memcpy(p, rep[k][1], ln);
+    }
+    return t;
+}
+
+/* Friction in the static residual (docs/theory.md 7.8): the stiffness with
+ * the return mapping's trial force F_t0 - K_t (p_a - p_b) against central
+ * differences of the residual, sticking (the elastic tangent through the
+ * engine's projection on the contact plane) and sliding (the limit along
+ * the trial force: the projected tangent L/|F| (I - e e') K_t), at the
+ * start orientation and displaced and rotated; and the modes it sets. */
+static void test_static_stiffness_friction(void)
+{
+    char *text = deck_one_friction();
+    ENSURE(text != NULL);
+    if (!text) return;
+    rc_error e;
+    rc_model *m = tu_compile_text(text, "static_fric_jac.rad", &e);
+    if (!m) fprintf(stderr, "  %s\n", e.msg);
+    ENSURE(m != NULL);
+    rc_data *d = m ? rc_data_new(m) : NULL;
+    double *y = m ? calloc((size_t)m->ny + 1, sizeof(double)) : NULL;
+    rc_static *s = d ? rc_static_new(m, d) : NULL;
+    ENSURE(!m || (d && y && s));
+    if (m && d && y && s) {
+        ENSURE(m->inter_fr[0].tidx >= 0 && m->inter_fr[0].kt == 1e4);
+        const int n = rc_static_size(s);
+        double u[6] = {0}, *r = calloc((size_t)n, sizeof(double));
+        ENSURE(n == 6 && r != NULL);
+        const double ft0[2][3] = {{3.0, -2.0, 0.0}, {13.5, 6.0, 0.0}}; /* sticks; slides once displaced */
+        for (int c = 0; c < 2 && r; c++) {
+            rc_initial_state(m, y);
+            rc_modes_init(m, d, 0.0, y);
+            d->inter_mode[0] = RC_MODE_CLOSED;
+            memcpy(y + m->inter_eadr[0] + m->inter_fr[0].tidx, ft0[c], sizeof ft0[c]);
+            rc_static_set_start(s, y);
+            rc_static_set_friction_start(s, 0.5, y);
+            /* displaced by up to 0.2 mm (2 N of the spring) and rotated by up to 0.01 rad */
+            for (int i = 0; i < n; i++) u[i] = (i % 6 < 3 ? 2e-4 : 0.01) * sin(1.7 * i + 0.3);
+            if (c == 1) u[0] = -4e-4; /* the trial force past the limit */
+            ENSURE(rc_static_residual(s, 0.5, u, r) == 0);
+            ENSURE(d->inter_slip[0] == c);
+            const double err0 = stiffness_fd_error(s, 0.5, u);
+            if (!(err0 < 1e-6)) fprintf(stderr, "  friction (%s): stiffness error %.3g\n", c ? "slip" : "stick", err0);
+            ENSURE(err0 < 1e-6);
+            /* at the substep's start (u = 0) the spring keeps F_t0 (within
+             * the limit in both cases): the tangential force residual */
+            double u0[6] = {0};
+            ENSURE(rc_static_residual(s, 0.5, u0, r) == 0);
+            ENSURE(d->inter_slip[0] == 0);
+            ENSURE_NEAR(r[0], ft0[c][0], 1e-12, 1e-12);
+            ENSURE_NEAR(r[1], ft0[c][1], 1e-12, 1e-12);
+        }
+        free(r);
+    }
+    rc_static_free(s);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+    free(text);
+}
+
 /* Method 3 refuses what this version does not solve, naming the card. */
 static void test_static_scope(void)
 {
     char *t = malloc(strlen(deck_one) + 400);
     ENSURE(t != NULL);
     if (!t) return;
-    /* friction on the contact: the TYPE6 card's Fric field */
+    /* friction with a speed multiplier (TYPE6 fct_IDfv): the static
+     * analysis has no sliding speed */
     strcpy(t, deck_one);
     char *p = strstr(t, "/INTER/TYPE6/1");
     ENSURE(p != NULL);
@@ -253,7 +337,9 @@ static void test_static_scope(void)
         p = p ? strchr(p + 1, '\n') : NULL; /* surfaces */
         p = p ? strchr(p + 1, '\n') : NULL; /* Sfric Fric Gap ... */
         if (p) memcpy(p + 1 + 20, "                 0.3", 20);
-        TU_EXPECT_TEXT_ERROR(t, "static_fric.rad", "/INTER/TYPE6/1", "static analysis", "friction");
+        p = p ? strchr(p + 1, '\n') : NULL; /* Istick, Inacti, fct_IDff, fct_IDfv */
+        if (p) memcpy(p + 1 + 50, "         1", 10);
+        TU_EXPECT_TEXT_ERROR(t, "static_fric.rad", "/INTER/TYPE6/1", "static analysis", "speed multiplier");
     }
     /* a joint-free model accepts the method through the setter, and 4 is refused */
     rc_error e;
@@ -272,5 +358,6 @@ void suite_static(void);
 void suite_static(void)
 {
     RUN_TEST(test_static_stiffness_fd);
+    RUN_TEST(test_static_stiffness_friction);
     RUN_TEST(test_static_scope);
 }

@@ -423,10 +423,15 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err);
 /* ---- static analysis (model/static_scope.c) ---------------------- */
 /* The first element of m that the static analysis (/SOLVER Method 3,
  * solver/static.c) does not support in this version: RC_EINPUT naming its
- * card (joints, /IMPVEL, friction and exact stick, TYPE6 Iform 1 and 2,
- * Inacti 5, pairs with several contact points,
- * couplings other than springs); `how` says how Method 3 was chosen. */
+ * card (joints, /IMPVEL, friction other than the stick spring of
+ * rc_static_friction_ok and exact stick, TYPE6 Iform 1 and 2, Inacti 5,
+ * pairs with several contact points, couplings other than springs); `how`
+ * says how Method 3 was chosen. */
 rc_status rc_static_scope(const rc_model *m, const char *how, rc_error *err);
+/* 1: friction fr is the incremental stick spring that the static
+ * analysis' return mapping takes (TYPE6 Fric/Sfric without a speed
+ * multiplier, /FRICTION Coulomb; isotropic, unfiltered, not exact stick). */
+int rc_static_friction_ok(const rc_fric *fr);
 
 /* ---- friction (model/friction.c) ------------------------------- */
 struct rc_case;

@@ -14,6 +14,19 @@
 #include "model/model.h"
 #include "model/power.h"
 
+/* Friction the static analysis' return mapping takes (solver/static.c,
+ * docs/theory.md 7.8): the incremental stick spring of TYPE6 (Fric, Sfric,
+ * fct_IDff; no speed multiplier) or of a /FRICTION Coulomb law (Ifric 0),
+ * isotropic, unfiltered, not exact stick. */
+int rc_static_friction_ok(const rc_fric *fr)
+{
+    if (fr->exact || fr->form != RC_FF_INCREMENTAL || fr->tidx < 0 || fr->ortho || fr->tau > 0 || !(fr->kt > 0))
+        return 0;
+    if (fr->kind == RC_FK_TYPE6) return fr->fct_fv < 0;
+    if (fr->kind == RC_FK_CARD) return fr->ifric == 0;
+    return 0;
+}
+
 #define RC_STATIC_NOT "static analysis (/SOLVER Method 3) does not support %s in this version"
 
 rc_status rc_static_scope(const rc_model *m, const char *how, rc_error *err)
@@ -32,9 +45,16 @@ rc_status rc_static_scope(const rc_model *m, const char *how, rc_error *err)
         const char *what = NULL;
         char fbuf[96];
         if (fr->exact) what = "exact stick (TYPE6 Istick 1, /FRICTION Iform 3)";
-        else if (!rc_inter_frictionless(m, i)) {
-            if (fr->card_id > 0) snprintf(fbuf, sizeof fbuf, "friction (/FRICTION/%d on it)", fr->card_id);
-            else snprintf(fbuf, sizeof fbuf, "friction (its own friction fields)");
+        else if (!rc_inter_frictionless(m, i) && !rc_static_friction_ok(fr)) {
+            const char *why = fr->kind == RC_FK_STEP5             ? "the power law's step5 friction"
+                              : fr->form != RC_FF_INCREMENTAL     ? "viscous friction"
+                              : fr->ortho                         ? "orthotropic friction"
+                              : fr->tau > 0                       ? "a friction filter (Ifiltr)"
+                              : fr->kind == RC_FK_CARD            ? "a friction law other than Coulomb (Ifric 0)"
+                              : fr->kind == RC_FK_TYPE6           ? "a speed multiplier of friction (fct_IDfv)"
+                                                                  : "this friction";
+            if (fr->card_id > 0) snprintf(fbuf, sizeof fbuf, "%s (/FRICTION/%d on it)", why, fr->card_id);
+            else snprintf(fbuf, sizeof fbuf, "%s (its own friction fields)", why);
             what = fbuf;
         } else if (m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0)
             what = m->inter_iform[i] == 1 ? "TYPE6 Iform 1 (elasto-plastic hysteresis)"
@@ -45,8 +65,9 @@ rc_status rc_static_scope(const rc_model *m, const char *how, rc_error *err)
             what = "pairs with several contact points (segment surfaces)";
         if (what)
             RC_RAISE(err, RC_EINPUT,
-                     RC_LOCFMT "card %s: " RC_STATIC_NOT " (%s); expected a frictionless elastic contact (TYPE6 "
-                               "Iform 0, or the power law) between spheres, planes, boxes or "
+                     RC_LOCFMT "card %s: " RC_STATIC_NOT " (%s); expected an elastic contact (TYPE6 Iform 0, "
+                               "frictionless or with the stick-spring friction of TYPE6 Fric/Sfric or a /FRICTION "
+                               "Coulomb law; or the power law without friction) between spheres, planes, boxes or "
                                "cylinders, or Method 1 or 2",
                      RC_LOC(m->inter_loc[i]), m->inter_name[i], what, how);
     }

@@ -18,9 +18,19 @@
  * one separated or pulling opens; set here, as the events do in
  * engine/events) and the load step is solved again, to a fixed point.
  *
+ * Friction (one contact point, the stick spring): an incremental return
+ * mapping over the load substeps. The trial force F_t0 - K_t (relative
+ * displacement of the contact's material points since the substep's
+ * start) goes into the contact's friction state before the engine
+ * evaluates; stick within Sfric + mu F_n, else slip (d->inter_slip: the
+ * engine applies the limit along the state); the stiffness adds the
+ * engine's columns of that state times the trial's derivatives. A load
+ * beyond friction (a contact sliding where Newton fails, at the smallest
+ * substep) is an error naming the interface and the load time.
+ *
  * The results file is that of a dynamic run (drive.c's open_output and
  * write_frame), one record per output time, velocities zero; the mode
- * flips go to its events table.
+ * flips (contact, stick/slip) go to its events table.
  */
 #include <complex.h>
 #include <float.h>
@@ -89,6 +99,18 @@ struct rc_static {
     double *raw;      /* [42 nblk] */
     double *kval;     /* [36 nblk] the stiffness, in CSC order */
     long nfev, njev;
+    /* friction, the return mapping (docs/theory.md 7.8): per interface
+     * whose stick spring the static analysis takes, from the start of the
+     * load substep (rc_static_set_friction_start): the force F_t0 and the
+     * contact point fixed in each body (its body frame; a fixed body's: the
+     * global point) */
+    char *fr_on;      /* [ninter] 1: friction by the return mapping */
+    int fr_ready;     /* the substep's start is set */
+    double *fr_t0;    /* [3 ninter] F_t0 [N] */
+    double *fr_pa, *fr_pb; /* [3 ninter] the material points of a and b [m] */
+    double *fr_xa, *fr_xb; /* [3 ninter] where they were at the substep's start [m] */
+    double fr_band;   /* the force rounding of the slip test [N] */
+    double *ext;      /* [36 nblk] friction's part of the stiffness (rate rows, unknown columns) */
 };
 
 /* ---- rotations ------------------------------------------------------- */
@@ -148,7 +170,8 @@ void rc_static_free(rc_static *s)
 {
     if (!s) return;
     void *p[] = {s->fb, s->slot, s->ys, s->y, s->f, s->jv, s->held, s->us, s->fs, s->kb, s->brow, s->bcol, s->bfirst,
-                 s->colptr, s->rowind, s->ent_blk, s->ent_rc, s->raw, s->kval};
+                 s->colptr, s->rowind, s->ent_blk, s->ent_rc, s->raw, s->kval, s->fr_on, s->fr_t0, s->fr_pa, s->fr_pb,
+                 s->fr_xa, s->fr_xb, s->ext};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     free(s);
 }
@@ -263,7 +286,16 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     s->rowind = malloc((36 * (size_t)u + 1) * sizeof(int64_t));
     s->raw = calloc(42 * (size_t)u + 1, sizeof(double));
     s->kval = calloc(36 * (size_t)u + 1, sizeof(double));
-    if (!s->brow || !s->bcol || !s->bfirst || !s->colptr || !s->rowind || !s->raw || !s->kval) {
+    s->ext = calloc(36 * (size_t)u + 1, sizeof(double));
+    const size_t ni1 = (size_t)m->ninter + 1;
+    s->fr_on = calloc(ni1, 1);
+    s->fr_t0 = calloc(3 * ni1, sizeof(double));
+    s->fr_pa = calloc(3 * ni1, sizeof(double));
+    s->fr_pb = calloc(3 * ni1, sizeof(double));
+    s->fr_xa = calloc(3 * ni1, sizeof(double));
+    s->fr_xb = calloc(3 * ni1, sizeof(double));
+    if (!s->brow || !s->bcol || !s->bfirst || !s->colptr || !s->rowind || !s->raw || !s->kval || !s->ext ||
+        !s->fr_on || !s->fr_t0 || !s->fr_pa || !s->fr_pb || !s->fr_xa || !s->fr_xb) {
         free(key);
         rc_static_free(s);
         return NULL;
@@ -297,6 +329,11 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
         }
     }
     free(key);
+    for (int i = 0; i < m->ninter; i++)
+        s->fr_on[i] = !rc_inter_frictionless(m, i) && rc_static_friction_ok(&m->inter_fr[i]);
+    /* the slip test's rounding: that of the loads (as the active set's) */
+    for (int i = 0; i < s->n; i++)
+        if (i % 6 < 3) s->fr_band = fmax(s->fr_band, 1e3 * DBL_EPSILON * s->fs[i]);
     return s;
 }
 
@@ -319,10 +356,187 @@ static void state_at(rc_static *s, const double *u, double *dq)
     }
 }
 
+/* ---- friction: the return mapping (docs/theory.md 7.8) ------------- */
+/* v rotated by the unit quaternion q (body -> global): v + 2 w (r x v) +
+ * 2 r x (r x v), r the vector part; complex (the complex step). */
+static void qrot(const double complex q[4], const double v[3], double complex o[3])
+{
+    const double complex w = q[0], r[3] = {q[1], q[2], q[3]};
+    const double complex c[3] = {r[1] * v[2] - r[2] * v[1], r[2] * v[0] - r[0] * v[2], r[0] * v[1] - r[1] * v[0]};
+    const double complex cc[3] = {r[1] * c[2] - r[2] * c[1], r[2] * c[0] - r[0] * c[2], r[0] * c[1] - r[1] * c[0]};
+    for (int k = 0; k < 3; k++) o[k] = v[k] + 2.0 * w * c[k] + 2.0 * cc[k];
+}
+
+/* The slot of body b, -1: fixed (or none). */
+static int body_slot(const rc_static *s, int b) { return b >= 0 && b < s->m->nbody ? s->slot[b] : -1; }
+
+/* The material point rb (body frame) of slot q at the unknowns u: p, and
+ * dp/dtheta (3x3 row-major, by complex step) when D is not NULL. */
+static void mpoint(const rc_static *s, int q, const double *u, const double rb[3], double p[3], double *D)
+{
+    const int a = s->m->body_yadr[s->fb[q]];
+    const double *th = u + 6 * q + 3;
+    double complex t[3] = {th[0], th[1], th[2]}, e[4], qq[4], o[3];
+    qexp(t, e);
+    qmul(s->ys + a + 3, e, qq);
+    qrot(qq, rb, o);
+    for (int k = 0; k < 3; k++) p[k] = s->ys[a + k] + u[6 * q + k] + creal(o[k]);
+    if (!D) return;
+    const double h = 1e-30;
+    for (int j = 0; j < 3; j++) {
+        double complex tj[3] = {th[0], th[1], th[2]};
+        tj[j] += h * I;
+        qexp(tj, e);
+        qmul(s->ys + a + 3, e, qq);
+        qrot(qq, rb, o);
+        for (int k = 0; k < 3; k++) D[3 * k + j] = cimag(o[k]) / h;
+    }
+}
+
+/* The displacements since the substep's start of the material points of
+ * the contact of interface i at u (a's, b's; their dp/dtheta into Da, Db
+ * when not NULL): zero, to the bit, at the start. */
+static void fric_points(const rc_static *s, int i, const double *u, double pa[3], double pb[3], double *Da, double *Db)
+{
+    const int qa = body_slot(s, s->m->inter_ba[i]), qb = body_slot(s, s->m->inter_bb[i]);
+    pa[0] = pa[1] = pa[2] = pb[0] = pb[1] = pb[2] = 0.0;
+    if (qa >= 0) mpoint(s, qa, u, s->fr_pa + 3 * i, pa, Da);
+    if (qb >= 0) mpoint(s, qb, u, s->fr_pb + 3 * i, pb, Db);
+    for (int k = 0; k < 3; k++) {
+        if (qa >= 0) pa[k] -= s->fr_xa[3 * i + k];
+        if (qb >= 0) pb[k] -= s->fr_xb[3 * i + k];
+    }
+}
+
+void rc_static_set_friction_start(rc_static *s, double t, const double *y0)
+{
+    const rc_model *m = s->m;
+    rc_data *d = s->d;
+    for (int i = 0; i < m->ninter; i++) {
+        if (!s->fr_on[i]) continue;
+        const int closed = d->inter_mode[i] == RC_MODE_CLOSED, at = m->inter_eadr[i] + m->inter_fr[i].tidx;
+        for (int k = 0; k < 3; k++) s->fr_t0[3 * i + k] = closed ? y0[at + k] : 0.0;
+        rc_inter_report r;
+        rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], 0, t, y0, &r);
+        for (int side = 0; side < 2; side++) {
+            const int b = side ? m->inter_bb[i] : m->inter_ba[i];
+            double *dst = (side ? s->fr_pb : s->fr_pa) + 3 * i;
+            if (body_slot(s, b) < 0) {
+                memcpy(dst, r.point, sizeof r.point);
+                continue;
+            }
+            const double *x = y0 + m->body_yadr[b], v[3] = {r.point[0] - x[0], r.point[1] - x[1], r.point[2] - x[2]};
+            const double complex qc[4] = {x[3], -x[4], -x[5], -x[6]}; /* global -> body */
+            double complex o[3];
+            qrot(qc, v, o);
+            for (int k = 0; k < 3; k++) dst[k] = creal(o[k]);
+            /* where it is at the start, as mpoint computes it (exp(0) is
+             * the identity to the bit) */
+            const double complex q0[4] = {x[3], x[4], x[5], x[6]};
+            qrot(q0, dst, o);
+            for (int k = 0; k < 3; k++) (side ? s->fr_xb : s->fr_xa)[3 * i + k] = x[k] + creal(o[k]);
+        }
+    }
+    s->fr_ready = 1;
+}
+
+/* The friction states at the unknowns u, into s->y (after state_at): each
+ * closed contact's trial force F_t0 - K_t (p_a - p_b), the spring loaded by
+ * the relative displacement of the material points since the substep's
+ * start (the engine keeps its part in the contact plane at the state), and
+ * its mode into d->inter_slip: stick while the trial force is within the
+ * limit Sfric + mu F_n, else slip (the engine then applies the limit along
+ * it: the radial return). An open contact's state is zero. */
+static void fric_trial(rc_static *s, double t, const double *u)
+{
+    const rc_model *m = s->m;
+    rc_data *d = s->d;
+    if (!s->fr_ready) return;
+    for (int i = 0; i < m->ninter; i++) {
+        if (!s->fr_on[i]) continue;
+        double *ft = s->y + m->inter_eadr[i] + m->inter_fr[i].tidx, pa[3], pb[3];
+        if (d->inter_mode[i] != RC_MODE_CLOSED) {
+            ft[0] = ft[1] = ft[2] = 0.0;
+            d->inter_slip[i] = 0;
+            continue;
+        }
+        fric_points(s, i, u, pa, pb, NULL, NULL);
+        for (int k = 0; k < 3; k++) ft[k] = s->fr_t0[3 * i + k] - m->inter_fr[i].kt * (pa[k] - pb[k]);
+        rc_inter_report r;
+        rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], 0, t, s->y, &r);
+        const double nf = sqrt(r.ft[0] * r.ft[0] + r.ft[1] * r.ft[1] + r.ft[2] * r.ft[2]);
+        d->inter_slip[i] = nf > fmax(r.flim, 0.0) + s->fr_band;
+    }
+}
+
+/* The state of a converged solve at u into y: the positions and the
+ * orientations, and each closed contact's friction state the force the
+ * return mapping gives (the trial force, or the limit along it). */
+static void commit_state(rc_static *s, double t, const double *u, double *y)
+{
+    const rc_model *m = s->m;
+    rc_data *d = s->d;
+    state_at(s, u, NULL);
+    fric_trial(s, t, u);
+    for (int i = 0; i < m->ninter; i++) {
+        if (!s->fr_on[i] || !s->fr_ready || d->inter_mode[i] != RC_MODE_CLOSED) continue;
+        rc_inter_report r;
+        rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, s->y,
+                             &r);
+        memcpy(s->y + m->inter_eadr[i] + m->inter_fr[i].tidx, r.ft, sizeof r.ft);
+    }
+    memcpy(y, s->y, (size_t)m->ny * sizeof(double));
+}
+
+/* The block of (row slot rs, column slot cs), -1: none. */
+static int find_block(const rc_static *s, int rs, int cs)
+{
+    for (int k = s->bfirst[cs]; k < s->bfirst[cs + 1]; k++)
+        if (s->brow[k] == rs) return k;
+    return -1;
+}
+
+/* Friction's part of the stiffness at u into s->ext: the engine's
+ * derivatives of the rates in the friction states (stick: the projection
+ * on the contact plane; slip: the limit along the state, L/|F| (I - e e')
+ * there) times the trial state's derivatives -K_t d(p_a - p_b)/du. */
+static int fric_stiffness(rc_static *s, const double *u)
+{
+    const rc_model *m = s->m;
+    memset(s->ext, 0, 36 * (size_t)s->nblk * sizeof(double));
+    if (!s->fr_ready) return 0;
+    for (int i = 0; i < m->ninter; i++) {
+        if (!s->fr_on[i] || s->d->inter_mode[i] != RC_MODE_CLOSED) continue;
+        double pa[3], pb[3], Da[9], Db[9];
+        fric_points(s, i, u, pa, pb, Da, Db);
+        const int qs[2] = {body_slot(s, m->inter_ba[i]), body_slot(s, m->inter_bb[i])};
+        const double kt = m->inter_fr[i].kt, sg[2] = {-kt, kt}, *D[2] = {Da, Db};
+        for (int k = 0; k < 3; k++) {
+            const int j = m->inter_eadr[i] + m->inter_fr[i].tidx + k;
+            for (int64_t p = m->jac_colptr[j]; p < m->jac_colptr[j + 1]; p++) {
+                int kr;
+                const int rs = state_body(s, (int)m->jac_rowind[p], &kr);
+                if (rs < 0 || kr < 7 || s->jv[p] == 0.0) continue;
+                for (int side = 0; side < 2; side++) {
+                    if (qs[side] < 0) continue;
+                    const int blk = find_block(s, rs, qs[side]);
+                    if (blk < 0) return 1;
+                    double *E = s->ext + 36 * (size_t)blk + 6 * (kr - 7);
+                    const double v = s->jv[p] * sg[side];
+                    E[k] += v;
+                    for (int c = 0; c < 3; c++) E[3 + c] += v * D[side][3 * k + c];
+                }
+            }
+        }
+    }
+    return 0;
+}
+
 int rc_static_residual(rc_static *s, double t, const double *u, double *r)
 {
     const rc_model *m = s->m;
     state_at(s, u, NULL);
+    fric_trial(s, t, u);
     s->nfev++;
     if (rc_assemble_rhs(m, s->d, t, s->y, s->f)) return 1;
     for (int q = 0; q < s->nb; q++) {
@@ -347,8 +561,9 @@ static int stiffness(rc_static *s, double t, const double *u)
     double *dq = malloc((12 * (size_t)s->nb + 1) * sizeof(double));
     if (!dq) return 1;
     state_at(s, u, dq);
+    fric_trial(s, t, u);
     s->njev++;
-    if (rc_assemble_jac(m, s->d, t, s->y, s->jv)) {
+    if (rc_assemble_jac(m, s->d, t, s->y, s->jv) || fric_stiffness(s, u)) {
         free(dq);
         return 1;
     }
@@ -357,13 +572,13 @@ static int stiffness(rc_static *s, double t, const double *u)
         if (s->ent_blk[p] >= 0) s->raw[42 * (size_t)s->ent_blk[p] + s->ent_rc[p]] += s->jv[p];
     for (int k = 0; k < s->nblk; k++) {
         const int rs = s->brow[k], cs = s->bcol[k], b = s->fb[rs];
-        const double *R = s->raw + 42 * (size_t)k, *J = m->body_J + 9 * b, *D = dq + 12 * cs;
+        const double *R = s->raw + 42 * (size_t)k, *J = m->body_J + 9 * b, *D = dq + 12 * cs, *E = s->ext + 36 * (size_t)k;
         double A[6][6]; /* rate rows, unknown columns */
         for (int r = 0; r < 6; r++) {
-            for (int c = 0; c < 3; c++) A[r][c] = R[7 * r + c];
+            for (int c = 0; c < 3; c++) A[r][c] = R[7 * r + c] + E[6 * r + c];
             for (int c = 0; c < 3; c++)
                 A[r][3 + c] = R[7 * r + 3] * D[c] + R[7 * r + 4] * D[3 + c] + R[7 * r + 5] * D[6 + c] +
-                              R[7 * r + 6] * D[9 + c];
+                              R[7 * r + 6] * D[9 + c] + E[6 * r + 3 + c];
         }
         for (int c = 0; c < 6; c++) {
             const int col = 6 * cs + c;
@@ -534,10 +749,18 @@ static st_out kin_solve(st_kin *k, st_run *c, double t)
     o.flag = KINSol(k->kin, k->u, KIN_LINESEARCH, k->us, k->fs);
     KINGetNumNonlinSolvIters(k->kin, &o.iters);
     KINGetFuncNorm(k->kin, &o.fnorm);
-    /* a search that stalls within a few roundings of the forces has
-     * converged as far as the coordinates resolve */
+    /* converged; or a search that stalled (its step below KINSOL's step
+     * tolerance, or a line search that found no decrease) within a few
+     * roundings of the forces (rc_static_ftol: the contacts' stiffness
+     * times the coordinates' roundings), which it cannot improve: KINSOL
+     * also tests the start 100 times tighter than its iterates, so the last
+     * equilibrium under an unchanged load stops its line search; or a step
+     * below the step tolerance at 1e-8 of the force scales, where a stiff
+     * stick spring's rounding (K_t times the positions' ulps) sets the
+     * floor */
     const int stalled = o.flag == KIN_STEP_LT_STPTOL || o.flag == KIN_LINESEARCH_NONCONV;
-    o.ok = o.flag == KIN_SUCCESS || o.flag == KIN_INITIAL_GUESS_OK || (stalled && o.fnorm <= 16.0 * ftol);
+    o.ok = o.flag == KIN_SUCCESS || o.flag == KIN_INITIAL_GUESS_OK || (stalled && o.fnorm <= 16.0 * ftol) ||
+           (o.flag == KIN_STEP_LT_STPTOL && o.fnorm <= 1e-8);
     if (!o.ok) {
         sun_klu_common *kc = SUNLinSol_KLUGetCommon(k->LS);
         if (kc && kc->status == KLU_SINGULAR) o.singular_col = (int)kc->singular_col;
@@ -626,11 +849,12 @@ static rc_status static_run(const rc_model *m, const rc_run_options *opt, rc_pau
     double *y = calloc((size_t)m->ny + 1, sizeof(double)), *ysave = calloc((size_t)m->ny + 1, sizeof(double));
     double *ptol = calloc((size_t)m->ninter + 1, sizeof(double));
     int *msave = calloc((size_t)m->ninter + 1, sizeof(int)), *flips = calloc((size_t)m->ninter + 1, sizeof(int));
+    int *slsave = calloc((size_t)m->ninter + 1, sizeof(int));
     char reason[1536] = "";
     const char *fail_reason = NULL;
     double t = 0.0;
     int fb_ok = 0;
-    if (!d || !s || !y || !ysave || !ptol || !msave || !flips || !(fb_ok = frame_alloc(m, &fb))) {
+    if (!d || !s || !y || !ysave || !ptol || !msave || !flips || !slsave || !(fb_ok = frame_alloc(m, &fb))) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the static analysis");
         goto done;
     }
@@ -669,9 +893,13 @@ static rc_status static_run(const rc_model *m, const rc_run_options *opt, rc_pau
             const double tn = first ? 0.0 : (tk - t <= dtau * (1 + 1e-12) ? tk : t + dtau);
             memcpy(ysave, y, (size_t)m->ny * sizeof(double));
             memcpy(msave, d->inter_mode, (size_t)m->ninter * sizeof(int));
+            memcpy(slsave, d->inter_slip, (size_t)m->ninter * sizeof(int));
             memset(flips, 0, (size_t)m->ninter * sizeof(int));
+            /* friction: the substep's start (its forces, the contact points) */
+            rc_static_set_friction_start(s, t, y);
             long iters = 0;
-            int ok = 0, rounds = 0;
+            int ok = 0, rounds = 0, slide = -1;
+            double slide_lim = NAN;
             const int max_rounds = RC_STATIC_ROUNDS_MIN + 2 * m->ninter;
             for (;;) {
                 int ch = update_modes(m, d, tn, y, ptol, ftol, &sink, NULL, &S->events, err);
@@ -684,6 +912,20 @@ static rc_status static_run(const rc_model *m, const rc_run_options *opt, rc_pau
                 iters += o.iters;
                 S->nonlin_iters += o.iters;
                 if (!o.ok) {
+                    /* a contact sliding at the last iterate: the load may
+                     * exceed what its friction holds (no equilibrium; cut
+                     * the substep to find the onset) */
+                    slide = -1;
+                    for (int i = 0; i < m->ninter && slide < 0; i++)
+                        if (s->fr_on[i] && d->inter_mode[i] == RC_MODE_CLOSED && d->inter_slip[i]) slide = i;
+                    if (slide >= 0) {
+                        rc_inter_report r;
+                        rc_inter_report_eval(m, slide, RC_MODE_CLOSED, d->inter_branch[slide], d->inter_track[slide],
+                                             1, tn, s->y, &r);
+                        slide_lim = r.flim;
+                        snprintf(reason, sizeof reason, "a contact slides");
+                        break;
+                    }
                     if (o.singular_col >= 0 && o.singular_col < s->n) {
                         const int b = s->fb[o.singular_col / 6];
                         snprintf(reason, sizeof reason,
@@ -701,9 +943,9 @@ static rc_status static_run(const rc_model *m, const rc_run_options *opt, rc_pau
                     free(fname);
                     break;
                 }
-                /* the state at the solution */
-                state_at(s, N_VGetArrayPointer(k.u), NULL);
-                memcpy(y, s->y, (size_t)m->ny * sizeof(double));
+                /* the state at the solution, the friction forces of the
+                 * return mapping */
+                commit_state(s, tn, N_VGetArrayPointer(k.u), y);
                 S->reinits += rounds > 0;
                 ch = update_modes(m, d, tn, y, ptol, ftol, &sink, flips, &S->events, err);
                 if (ch < 0) {
@@ -729,6 +971,19 @@ static rc_status static_run(const rc_model *m, const rc_run_options *opt, rc_pau
                     }
             }
             if (ok) {
+                /* friction: the contacts that changed between stick and slip */
+                for (int i = 0; i < m->ninter; i++) {
+                    if (!s->fr_on[i] || d->inter_mode[i] != RC_MODE_CLOSED) continue;
+                    const int was = msave[i] == RC_MODE_CLOSED && slsave[i];
+                    if (was == d->inter_slip[i]) continue;
+                    rc_inter_report r;
+                    rc_inter_report_eval_d(m, d, i, tn, y, &r);
+                    const double v[3] = {r.p, 0.0, r.fn > 0 ? r.fn : 0.0};
+                    S->events++;
+                    if ((st = sink_event(&sink, tn, d->inter_slip[i] ? RC_EV_FRIC_SLIP : RC_EV_FRIC_STICK,
+                                         m->inter_name[i], v, err)))
+                        goto done;
+                }
                 t = tn;
                 S->steps++;
                 if (!first && iters <= RC_STATIC_QUICK) dtau = fmin(2.0 * dtau, dtout);
@@ -739,6 +994,19 @@ static rc_status static_run(const rc_model *m, const rc_run_options *opt, rc_pau
             S->nonlin_fails++;
             memcpy(y, ysave, (size_t)m->ny * sizeof(double));
             memcpy(d->inter_mode, msave, (size_t)m->ninter * sizeof(int));
+            memcpy(d->inter_slip, slsave, (size_t)m->ninter * sizeof(int));
+            if ((first || dtau * 0.5 < dmin) && slide >= 0) {
+                snprintf(reason, sizeof reason,
+                         "static analysis: no static equilibrium at the load time t = %.9g s: the load exceeds what "
+                         "friction can hold: " RC_LOCFMT "card %s slides (its friction force would pass the limit "
+                         "Sfric + mu F_n = %.6g N; the last equilibrium at t = %.9g s, load substeps down to %.3g s); "
+                         "a static analysis has no equilibrium for a sliding body: follow the motion with Method 1 or "
+                         "2, or hold the body",
+                         tn, RC_LOC(m->inter_loc[slide]), m->inter_name[slide], slide_lim, t, dtau);
+                fail_reason = reason;
+                st = RC_SET(err, RC_ESOLVER, "%s", reason);
+                goto done;
+            }
             if (first || dtau * 0.5 < dmin) {
                 char what[1024]; /* KINSOL's reason, cut to leave room for the message around it */
                 snprintf(what, sizeof what, "%.1000s", reason);
@@ -813,6 +1081,7 @@ done:
     free(ptol);
     free(msave);
     free(flips);
+    free(slsave);
     return st;
 }
 

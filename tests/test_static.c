@@ -20,6 +20,21 @@
 #include "engine/assembly/assembly.h"
 #include "engine/events/events.h"
 
+/* Gravity -9.81 m/s^2 along z and the TYPE6 contact 1 between surfaces 1
+ * and 2 (load curve /FUNCT/1, no friction), as both decks write them. */
+#define GRAV_AND_CONTACT                                                                                    \
+    "/GRAV/1\n"                                                                                               \
+    "gravity\n"                                                                                               \
+    "         0         Z         0         0         0                             1               -9.81\n"     \
+    "/INTER/TYPE6/1\n"                                                                                        \
+    "contact\n"                                                                                               \
+    "         1         2\n"                                                                                  \
+    "                                                           0\n"                                          \
+    "                   0         0         0         0         0\n"                                          \
+    "         1         0                                                 0\n"                                \
+    "         0\n"                                                                                            \
+    "                             0         0\n"
+
 static const char *deck_one =
     "#RADIOSS STARTER\n"
     "/BEGIN\n"
@@ -50,17 +65,7 @@ static const char *deck_one =
     "/GRNOD/NODE/1\n"
     "group\n"
     "         1\n"
-    "/GRAV/1\n"
-    "gravity\n"
-    "         0         Z         0         0         0                             1               -9.81\n"
-    "/INTER/TYPE6/1\n"
-    "contact\n"
-    "         1         2\n"
-    "                                                           0\n"
-    "                   0         0         0         0         0\n"
-    "         1         0                                                 0\n"
-    "         0\n"
-    "                             0         0\n"
+    GRAV_AND_CONTACT
     "/RUN\n"
     "                   1                 0.1\n"
     "/SOLVER\n"
@@ -113,17 +118,7 @@ static const char *deck_two =
     "/GRNOD/NODE/2\n"
     "group\n"
     "         2\n"
-    "/GRAV/1\n"
-    "gravity\n"
-    "         0         Z         0         0         0                             1               -9.81\n"
-    "/INTER/TYPE6/1\n"
-    "contact\n"
-    "         1         2\n"
-    "                                                           0\n"
-    "                   0         0         0         0         0\n"
-    "         1         0                                                 0\n"
-    "         0\n"
-    "                             0         0\n"
+    GRAV_AND_CONTACT
     "/INTER/POWER/2\n"
     "power-law contact\n"
     "         3         1         0         0         0         0\n"

@@ -137,7 +137,7 @@ static int bench_open(bench *b, rc_model *m, int warn)
     b->d = rc_data_new(m);
     b->g = rc_guards_new(m, warn, 0);
     b->y = calloc((size_t)m->ny + 1, sizeof(double));
-    if (!b->d || !b->g || !b->y || !frame_alloc(m, &b->fb)) return 0;
+    if (!b->d || !b->g || !b->y || !rc_bk_frame_alloc(m, &b->fb)) return 0;
     rc_initial_state(m, b->y);
     rc_modes_init(m, b->d, 0.0, b->y);
     rc_guards_started(b->g, b->d);
@@ -146,7 +146,7 @@ static int bench_open(bench *b, rc_model *m, int warn)
 
 static void bench_close(bench *b)
 {
-    frame_free(&b->fb);
+    rc_bk_frame_free(&b->fb);
     rc_guards_free(b->g);
     rc_data_free(b->d);
     free(b->y);
@@ -159,7 +159,7 @@ static int bench_record(bench *b, double t)
     rc_error e;
     /* one integrator step to this state (the checks run once per step) */
     if (rc_guards_step(b->g, b->d, t, b->y, NULL, 0, ++b->steps)) return 1;
-    write_frame(b->m, b->d, NULL, &b->fb, t, b->y, 0, &e);
+    rc_bk_write_frame(b->m, b->d, NULL, &b->fb, t, b->y, 0, &e);
     return rc_guards_record(b->g, b->d, t, b->y, &b->fb);
 }
 
@@ -324,7 +324,7 @@ static void test_guards_non_finite_fires(void)
     if (!m) return;
     ENSURE(bench_open(&b, m, 0));
     ENSURE(bench_record(&b, 0.0) == 0);
-    write_frame(m, b.d, NULL, &b.fb, 0.001, b.y, 0, &e);
+    rc_bk_write_frame(m, b.d, NULL, &b.fb, 0.001, b.y, 0, &e);
     b.fb.fdamp[0] = INFINITY;
     ENSURE(rc_guards_record(b.g, b.d, 0.001, b.y, &b.fb) == 1);
     printf("    %s\n", rc_guards_message(b.g));

@@ -151,14 +151,14 @@ static void test_restart_first_step(void)
     const double p = m->inter_pscale[0], v = m->inter_vscale[0], hc = m->rtol * p / v;
     printf("    p_s = %.3g m, v_s = %.3g m/s, rtol / omega_s = %.3g s\n", p, v, hc);
     ENSURE(isfinite(hc) && hc > 0);
-    ENSURE(restart_step(m, 0.5, 1e-3) == hc);              /* a flight step: the contact bound */
-    ENSURE(restart_step(m, 0.5, 0.5 * hc) == 0.5 * hc);    /* a smaller last step is kept */
-    ENSURE(restart_step(m, 0.5, 0.0) == hc);               /* no step yet */
-    ENSURE(restart_step(m, 1e6, 1e-3) == 100.0 * DBL_EPSILON * 1e6); /* late: the floor moves t */
+    ENSURE(rc_bk_restart_step(m, 0.5, 1e-3) == hc);              /* a flight step: the contact bound */
+    ENSURE(rc_bk_restart_step(m, 0.5, 0.5 * hc) == 0.5 * hc);    /* a smaller last step is kept */
+    ENSURE(rc_bk_restart_step(m, 0.5, 0.0) == hc);               /* no step yet */
+    ENSURE(rc_bk_restart_step(m, 1e6, 1e-3) == 100.0 * DBL_EPSILON * 1e6); /* late: the floor moves t */
     const double keep = m->inter_pscale[0];
     m->inter_pscale[0] = NAN; /* no scales: the last step, or the integrator's estimate */
-    ENSURE(restart_step(m, 0.5, 1e-3) == 1e-3);
-    ENSURE(restart_step(m, 0.5, 0.0) == 0.0);
+    ENSURE(rc_bk_restart_step(m, 0.5, 1e-3) == 1e-3);
+    ENSURE(rc_bk_restart_step(m, 0.5, 0.0) == 0.0);
     m->inter_pscale[0] = keep;
     const rc_solver *sv[2] = {&rc_solver_cvode, &rc_solver_ida};
     for (int k = 0; k < 2; k++) {

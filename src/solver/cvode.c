@@ -103,7 +103,7 @@ typedef struct run_ctx {
 static void cb_err(int code, const char *module, const char *function, char *msg, void *ud)
 {
     run_ctx *c = ud;
-    keep_error(c ? c->stop : NULL, c ? c->cvmsg : NULL, sizeof c->cvmsg, code, module, function, msg);
+    rc_bk_keep_error(c ? c->stop : NULL, c ? c->cvmsg : NULL, sizeof c->cvmsg, code, module, function, msg);
 }
 
 static int cb_rhs(realtype t, N_Vector y, N_Vector ydot, void *ud)
@@ -331,7 +331,7 @@ static void failure_advice(const rc_model *m, const rc_data *d, void *cv, int fl
     default: break;
     }
     const char *advice = rc_bk_advice(kind, m);
-    failure_message(m, d, "CVODE", t, h, tout, fname, cvmsg, elem, advice, buf, n);
+    rc_bk_failure_message(m, d, "CVODE", t, h, tout, fname, cvmsg, elem, advice, buf, n);
     free(fname);
 }
 
@@ -573,7 +573,7 @@ static int cv_restart(void *self, double t, int at_breakpoint)
     if (c->m->h0 <= 0) {
         double hu = 0.0;
         if (CVodeGetLastStep(c->cv, &hu) != CV_SUCCESS || !(hu > 0)) hu = c->h_restart;
-        c->h_restart = restart_step(c->m, t, hu);
+        c->h_restart = rc_bk_restart_step(c->m, t, hu);
         const int flag = CVodeSetInitStep(c->cv, c->h_restart);
         if (flag < 0) return flag;
         c->own_h0 = c->h_restart > 0;

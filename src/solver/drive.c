@@ -51,7 +51,7 @@ static int cmp_double(const void *a, const void *b)
  * (the end of an imposed velocity, /IMPVEL Tstop), inside (0, tend), sorted,
  * distinct. The integrator is stopped exactly there (its stop time) and restarted.
  * Returns the count; *bp is allocated (free it). */
-int time_breakpoints(const rc_model *m, double tend, double **bp)
+int rc_bk_time_breakpoints(const rc_model *m, double tend, double **bp)
 {
     const rc_imposed *p = m->imp;
     int n = 0, cap = p ? p->nt + p->nr : 0;
@@ -69,7 +69,7 @@ int time_breakpoints(const rc_model *m, double tend, double **bp)
 }
 
 /* Only the crossing that changes a mode is a root (docs/theory.md 5). */
-void root_directions(const rc_model *m, const rc_data *d, int *dir)
+void rc_bk_root_directions(const rc_model *m, const rc_data *d, int *dir)
 {
     for (int i = 0; i < m->ninter; i++) {
         int *r = dir + RC_ROOTS_PER_INTER * i;
@@ -93,7 +93,7 @@ void root_directions(const rc_model *m, const rc_data *d, int *dir)
 }
 
 /* One event to the sink; RC_OK or the output's error. */
-rc_status sink_event(ev_sink *k, double t, rc_event_kind ek, const char *element, const double v[3],
+rc_status rc_bk_sink_event(ev_sink *k, double t, rc_event_kind ek, const char *element, const double v[3],
                             rc_error *err)
 {
     rc_status st = RC_OK;
@@ -112,16 +112,16 @@ rc_status sink_event(ev_sink *k, double t, rc_event_kind ek, const char *element
 /* Append event `ev` at (t, y) to the events table with its interface's
  * penetration P [m], approach speed dP/dt [m/s] and normal force [N], in the
  * mode after the event. */
-rc_status write_event(const rc_model *m, const rc_data *d, ev_sink *o, double t, const double *y,
+rc_status rc_bk_write_event(const rc_model *m, const rc_data *d, ev_sink *o, double t, const double *y,
                              const rc_event *ev, rc_error *err)
 {
     const int i = ev->inter;
-    if (i < 0) return sink_event(o, t, ev->kind, m->cpl->name[-1 - i], NULL, err); /* a coupling */
+    if (i < 0) return rc_bk_sink_event(o, t, ev->kind, m->cpl->name[-1 - i], NULL, err); /* a coupling */
     rc_inter_report r;
     rc_inter_report_eval_d(m, d, i, t, y, &r);
     const double v[3] = {r.p, r.vn, d->inter_mode[i] == RC_MODE_CLOSED && r.fn > 0 ? r.fn : 0.0};
     rc_guards_event(o->guards, d, i, ev->kind, t); /* the contact's history */
-    return sink_event(o, t, ev->kind, m->inter_name[i], v, err);
+    return rc_bk_sink_event(o, t, ev->kind, m->inter_name[i], v, err);
 }
 
 /* Contacts at zero penetration or zero force, decided by the state after
@@ -129,7 +129,7 @@ rc_status write_event(const rc_model *m, const rc_data *d, ev_sink *o, double t,
  * the state in the current modes is computed first, for the force rates.
  * Writes the events; returns their number (*jumped is set when history
  * states were reset). */
-int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double *f, ev_sink *out,
+int rc_bk_resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double *f, ev_sink *out,
                             rc_impacts *im, long *nevents, int *jumped, rc_status *st, rc_error *err)
 {
     int total = 0;
@@ -146,7 +146,7 @@ int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double 
         *nevents += nev;
         for (int k = 0; k < nev && k < RC_MAX_EV; k++) rc_impacts_event(im, m, d, ev[k].inter, ev[k].kind, t, y);
         for (int k = 0; k < nev && k < RC_MAX_EV; k++)
-            if ((*st = write_event(m, d, out, t, y, &ev[k], err))) return total;
+            if ((*st = rc_bk_write_event(m, d, out, t, y, &ev[k], err))) return total;
         if (nev == 0) break;
     }
     return total;
@@ -156,7 +156,7 @@ int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double 
  * penetration of two slowly separating bodies) makes the integrator stop with "close
  * roots" on the next call; after a restart it instead deactivates it until
  * it moves away from zero. */
-int root_on_zero(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
+int rc_bk_root_on_zero(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
 {
     rc_assemble_roots(m, d, t, y, g);
     for (int k = 0; k < rc_root_count(m); k++)
@@ -170,7 +170,7 @@ int root_on_zero(const rc_model *m, const rc_data *d, double t, const double *y,
  * state by rtol of its scales), and not below 100 ulps of t (CVODE's own
  * lower bound on its estimate). 0 (the integrator's own estimate) when
  * neither is known. */
-double restart_step(const rc_model *m, double t, double h_last)
+double rc_bk_restart_step(const rc_model *m, double t, double h_last)
 {
     double h = h_last > 0 && isfinite(h_last) ? h_last : INFINITY;
     const double frac = m->rtol; /* h omega_s = rtol */
@@ -182,21 +182,21 @@ double restart_step(const rc_model *m, double t, double h_last)
     return fmax(h, 100.0 * DBL_EPSILON * fabs(t));
 }
 
-double wall_now(void)
+double rc_bk_wall_now(void)
 {
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-void frame_free(frame_buf *f)
+void rc_bk_frame_free(frame_buf *f)
 {
     void *p[] = {f->pos, f->quat, f->vel, f->omega, f->pen, f->fload, f->fdamp, f->fn, f->point, f->normal, f->mode,
                  f->cpl, f->ffric, f->vslip, f->slip, f->jnt};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
 }
 
-int frame_alloc(const rc_model *m, frame_buf *f)
+int rc_bk_frame_alloc(const rc_model *m, frame_buf *f)
 {
     memset(f, 0, sizeof *f);
     size_t nb = (size_t)m->nbody + 1, ni = (size_t)m->ninter + 1;
@@ -221,7 +221,7 @@ int frame_alloc(const rc_model *m, frame_buf *f)
 }
 
 /* Fill and write one record at (t, y). */
-rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_buf *f, double t,
+rc_status rc_bk_write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_buf *f, double t,
                              const double *y, int at_event, rc_error *err)
 {
     for (int b = 0; b < m->nbody; b++) {
@@ -309,7 +309,7 @@ static const char *const energy_long[RC_NENERGY] = {
 _Static_assert(RC_SURF_NEXT == RC_OUT_SURF_NPARAM, "surface parameters: model and file disagree");
 static const char *const surf_kind_name[] = {"", "PLANE", "SPHERE", "CYLINDER", "BOX", "SEGMENTS"};
 
-rc_status open_output(const rc_model *m, const char *path, const char *note, rc_output **o, rc_error *err,
+rc_status rc_bk_open_output(const rc_model *m, const char *path, const char *note, rc_output **o, rc_error *err,
                       const char *integrator)
 {
     *o = NULL;
@@ -423,9 +423,9 @@ rc_status open_output(const rc_model *m, const char *path, const char *note, rc_
 /* Progress of the integration on stderr: one line rewritten on a terminal,
  * whole lines in a log. The time remaining is estimated from the rate of
  * simulated time over the wall time so far. */
-void progress_line(double tend, const rc_stats *s, double t, long steps, double t0, int tty)
+void rc_bk_progress_line(double tend, const rc_stats *s, double t, long steps, double t0, int tty)
 {
-    const double wall = wall_now() - t0;
+    const double wall = rc_bk_wall_now() - t0;
     char left[64] = "";
     if (t > 0 && t < tend) {
         const double rem = (tend - t) * wall / t;
@@ -452,7 +452,7 @@ static rc_status settled(const rc_model *m, const rc_data *d, ev_sink *sink, dou
     if (show) /* with the progress (not with `ricochet run -q`, nor for an embedding without it) */
         fprintf(stderr, "ricochet: %s settled into persistent contact at t = %.9g s (bounces accumulated; %s)\n",
                 m->inter_name[ev->inter], t, rc_settle_hold(m, ev->inter));
-    return write_event(m, d, sink, t, y, ev, err);
+    return rc_bk_write_event(m, d, sink, t, y, ev, err);
 }
 
 /* ---- the driver ------------------------------------------------------- */
@@ -462,7 +462,7 @@ static rc_status record(const rc_backend *bk, void *self, const rc_model *m, con
                         frame_buf *fb, double t, const double *y, const double *yp, int at_event, rc_error *err)
 {
     const double *v = bk->record_vector ? bk->record_vector(self, t, y, yp) : y;
-    rc_status st = write_frame(m, d, o, fb, t, v, at_event, err);
+    rc_status st = rc_bk_write_frame(m, d, o, fb, t, v, at_event, err);
     /* the physics checks of the record's energies and forces (guards.h),
      * once per step: the records in between interpolate the same step */
     if (!st && fb->guards_due) {
@@ -561,7 +561,7 @@ static rc_status outputs_before(const rc_backend *bk, void *self, const rc_model
     return RC_OK;
 }
 
-void failure_message(const rc_model *m, const rc_data *d, const char *name, double t, double h, double tout,
+void rc_bk_failure_message(const rc_model *m, const rc_data *d, const char *name, double t, double h, double tout,
                      const char *fname, const char *msg, const char *elem, const char *advice, char *buf, size_t n)
 {
     const char *cf = rc_cpl_failed(m, d);
@@ -579,7 +579,7 @@ void failure_message(const rc_model *m, const rc_data *d, const char *name, doub
              name, t, h, tout, fname ? fname : "?", msg[0] ? " (\"" : "", msg, msg[0] ? "\")" : "", where, advice);
 }
 
-void keep_error(volatile sig_atomic_t *stop, char *keep, size_t n, int code, const char *module,
+void rc_bk_keep_error(volatile sig_atomic_t *stop, char *keep, size_t n, int code, const char *module,
                 const char *function, const char *msg)
 {
     if (stop && *stop) return;
@@ -641,7 +641,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     const int show = opt && opt->progress, tty = show && isatty(2);
     ev_sink sink = {NULL, opt ? opt->on_event : NULL, opt ? opt->user : NULL, 0, "", NULL};
     const int evrec = rc_event_records(m); /* full-state records at events */
-    double wall0 = wall_now(), last_progress = wall0;
+    double wall0 = rc_bk_wall_now(), last_progress = wall0;
     const int nr = rc_root_count(m);
     double *y = NULL, *yp = NULL; /* the backend's state (and derivative, NULL: none) */
     int n = m->ny;                /* their length */
@@ -651,7 +651,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     const int on_viol = opt && opt->on_violation ? opt->on_violation : m->on_violation;
     rc_guards *gd = rc_guards_new(m, on_viol == RC_ON_VIOLATION_WARN, show);
 
-    if (!d || !gd || !frame_alloc(m, &fb)) {
+    if (!d || !gd || !rc_bk_frame_alloc(m, &fb)) {
         st = RC_SET(err, RC_ENOMEM, "out of memory");
         goto done;
     }
@@ -672,11 +672,11 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     /* initial state and modes */
     rc_initial_state(m, y);
     rc_modes_init(m, d, t, y);
-    if ((st = open_output(m, opt ? opt->output_path : NULL, note, &out, err, integrator))) goto done;
+    if ((st = rc_bk_open_output(m, opt ? opt->output_path : NULL, note, &out, err, integrator))) goto done;
     sink.out = out;
     {
         int jmp = 0;
-        resolve_touching(m, d, t, y, flook, &sink, &im, &s.events, &jmp, &st, err);
+        rc_bk_resolve_touching(m, d, t, y, flook, &sink, &im, &s.events, &jmp, &st, err);
         if (st) goto done;
         if (rc_guards_started(gd, d)) {
             st = RC_SET(err, RC_EPHYSICS, "%s", rc_guards_message(gd));
@@ -685,11 +685,11 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     }
     if ((st = bk->start(self, err))) goto done;
     if (nr > 0) {
-        root_directions(m, d, rootdir);
+        rc_bk_root_directions(m, d, rootdir);
         BKCHECK(bk->set_root_dirs(self, rootdir), "SetRootDirection");
     }
     /* time breakpoints: stop exactly there */
-    if ((nbp = time_breakpoints(m, tend, &bp)) < 0) {
+    if ((nbp = rc_bk_time_breakpoints(m, tend, &bp)) < 0) {
         st = RC_SET(err, RC_ENOMEM, "out of memory");
         goto done;
     }
@@ -777,7 +777,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
         if (at_bp) {
             /* a time breakpoint: an imposed velocity ends; restart there */
             s.events++;
-            if ((st = sink_event(&sink, t, RC_EV_IMPVEL_STOP, "/IMPVEL", NULL, err))) goto done;
+            if ((st = rc_bk_sink_event(&sink, t, RC_EV_IMPVEL_STOP, "/IMPVEL", NULL, err))) goto done;
             bk->add_stats(self, &s);
             BKCHECK(bk->restart(self, t, 1), "ReInit");
             s.reinits++;
@@ -823,7 +823,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             s.events += nev;
             for (int k = 0; k < nev && k < RC_MAX_EV; k++) rc_impacts_event(&im, m, d, ev[k].inter, ev[k].kind, t, y);
             for (int k = 0; k < nev && k < RC_MAX_EV; k++)
-                if ((st = write_event(m, d, &sink, t, y, &ev[k], err))) goto done;
+                if ((st = rc_bk_write_event(m, d, &sink, t, y, &ev[k], err))) goto done;
             /* settling of accumulating bounces and the event accumulation
              * (Zeno) guard: the engine's verdict on these events
              * (engine/events/settle.c); the contacts it settled are written
@@ -841,17 +841,17 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
                 goto done;
             }
             /* contacts left at zero penetration or zero force: by the state */
-            nev += resolve_touching(m, d, t, y, flook, &sink, &im, &s.events, &jumped, &st, err);
+            nev += rc_bk_resolve_touching(m, d, t, y, flook, &sink, &im, &s.events, &jumped, &st, err);
             if (st) goto done;
             if (nev > 0 && nr > 0) {
-                root_directions(m, d, rootdir);
+                rc_bk_root_directions(m, d, rootdir);
                 BKCHECK(bk->set_root_dirs(self, rootdir), "SetRootDirection");
             }
             /* restart at a refined root, a jump of history states, a change
              * the backend restarts for, or a root function left at zero */
             int restart = refined > 0 || jumped;
             if (nev > 0) restart = bk->after_events(self, t, y, cpl_ev, restart);
-            if (!restart) restart = root_on_zero(m, d, t, y, gbuf);
+            if (!restart) restart = rc_bk_root_on_zero(m, d, t, y, gbuf);
             if (restart) {
                 bk->add_stats(self, &s);
                 BKCHECK(bk->restart(self, t, 0), "ReInit");
@@ -894,9 +894,9 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
                 if (tend - tout < 1e-12 * tend) tout = tend;
             }
         }
-        if (show && wall_now() - last_progress > (tty ? 0.5 : RC_LOG_EVERY)) {
-            progress_line(tend, &s, t, s.steps + bk->steps(self), wall0, tty);
-            last_progress = wall_now();
+        if (show && rc_bk_wall_now() - last_progress > (tty ? 0.5 : RC_LOG_EVERY)) {
+            rc_bk_progress_line(tend, &s, t, s.steps + bk->steps(self), wall0, tty);
+            last_progress = rc_bk_wall_now();
         }
     }
     double e1[RC_NENERGY];
@@ -921,7 +921,7 @@ done:
         rc_output_impacts(out, im.n, im.row, &e3);
     }
     if (st != RC_OK) s.t_end = t; /* how far a failed run got */
-    s.wall_time = wall_now() - wall0;
+    s.wall_time = rc_bk_wall_now() - wall0;
     if (tty) fprintf(stderr, "\n");
     /* the physics checks' outcome: statistics and results file */
     if (st == RC_EPHYSICS) {
@@ -956,7 +956,7 @@ done:
     rc_settle_free(hist);
     free(flook);
     free(bp);
-    frame_free(&fb);
+    rc_bk_frame_free(&fb);
     rc_guards_free(gd);
     rc_data_free(d);
     return st;

@@ -75,7 +75,7 @@ int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, co
  * interpolant of a step already checked, and the run's step count is
  * noted). */
 int rc_guards_due(rc_guards *g, long steps, int at_root);
-/* A record at (t, y) whose values are in fb (write_frame); the driver
+/* A record at (t, y) whose values are in fb (rc_bk_write_frame); the driver
  * asks at the first record after each step or events (frame_buf
  * guards_due). 1: stop. */
 int rc_guards_record(rc_guards *g, const rc_data *d, double t, const double *y, const frame_buf *fb);

@@ -87,7 +87,7 @@ typedef struct ida_ctx {
 static void cb_err(int code, const char *module, const char *function, char *msg, void *ud)
 {
     ida_ctx *c = ud;
-    keep_error(c ? c->stop : NULL, c ? c->msg : NULL, sizeof c->msg, code, module, function, msg);
+    rc_bk_keep_error(c ? c->stop : NULL, c ? c->msg : NULL, sizeof c->msg, code, module, function, msg);
 }
 
 /* F(t, Y, Y'): pure, as the right-hand side. */
@@ -230,7 +230,7 @@ static void failure_advice(const rc_model *m, const rc_data *d, void *ida, int f
     default: break;
     }
     const char *advice = rc_bk_advice(kind, m);
-    failure_message(m, d, "IDA", t, h, tout, fname, msg, elem, advice, buf, n);
+    rc_bk_failure_message(m, d, "IDA", t, h, tout, fname, msg, elem, advice, buf, n);
     free(fname);
 }
 

@@ -7,9 +7,10 @@
  * ida.c each fill one rc_backend and call rc_drive, and neither of them
  * needs to know which integrator the other drives.
  *
- * The helpers keep their short names inside the backends; the macros below
- * give them an rc_bk_ prefix at link time, so that the static library does
- * not export names such as write_frame.
+ * The helpers carry the rc_bk_ prefix in their own names (the static
+ * library exports no name such as write_frame), so that grep, ctags, gdb
+ * and perf find them as written; the static backend (static.c) uses the
+ * output helpers too.
  */
 #ifndef RC_INTEGRATOR_H
 #define RC_INTEGRATOR_H
@@ -27,22 +28,6 @@
 #define RC_MAX_EV 64
 /* Progress in a log (stderr not a terminal): a line every RC_LOG_EVERY s. */
 #define RC_LOG_EVERY 10.0
-
-#define time_breakpoints rc_bk_time_breakpoints
-#define root_directions rc_bk_root_directions
-#define sink_event rc_bk_sink_event
-#define write_event rc_bk_write_event
-#define resolve_touching rc_bk_resolve_touching
-#define root_on_zero rc_bk_root_on_zero
-#define wall_now rc_bk_wall_now
-#define restart_step rc_bk_restart_step
-#define frame_free rc_bk_frame_free
-#define frame_alloc rc_bk_frame_alloc
-#define write_frame rc_bk_write_frame
-#define open_output rc_bk_open_output
-#define progress_line rc_bk_progress_line
-#define failure_message rc_bk_failure_message
-#define keep_error rc_bk_keep_error
 
 /* Where the events go: the events table of the output file (NULL: none)
  * and the caller's callback (rc_run_options.on_event, NULL: none), which
@@ -69,47 +54,47 @@ typedef struct frame_buf {
 
 /* Time breakpoints (ends of imposed velocities) inside (0, tend), sorted,
  * distinct; returns the count, -1 out of memory; *bp is allocated. */
-int time_breakpoints(const rc_model *m, double tend, double **bp);
+int rc_bk_time_breakpoints(const rc_model *m, double tend, double **bp);
 /* The root directions of the current modes (only the crossing that changes
  * a mode is a root) into dir[RC_ROOTS_PER_INTER ninter]. */
-void root_directions(const rc_model *m, const rc_data *d, int *dir);
+void rc_bk_root_directions(const rc_model *m, const rc_data *d, int *dir);
 /* One event to the sink, under its kind's name (rc_event_kind_name); v: the
  * interface's values, NULL when none. */
-rc_status sink_event(ev_sink *k, double t, rc_event_kind kind, const char *element, const double v[3], rc_error *err);
+rc_status rc_bk_sink_event(ev_sink *k, double t, rc_event_kind kind, const char *element, const double v[3], rc_error *err);
 /* Event `ev` at (t, y) with its interface's P, dP/dt and normal force. */
-rc_status write_event(const rc_model *m, const rc_data *d, ev_sink *o, double t, const double *y, const rc_event *ev,
+rc_status rc_bk_write_event(const rc_model *m, const rc_data *d, ev_sink *o, double t, const double *y, const rc_event *ev,
                       rc_error *err);
 /* Contacts at zero penetration or zero force, decided by the state (after
  * the start and every event); f is scratch [ny]; returns the events. */
-int resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double *f, ev_sink *out, rc_impacts *im,
+int rc_bk_resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double *f, ev_sink *out, rc_impacts *im,
                      long *nevents, int *jumped, rc_status *st, rc_error *err);
 /* 1 when a root function is exactly zero at (t, y); g is scratch. */
-int root_on_zero(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
-double wall_now(void); /* [s], monotonic */
+int rc_bk_root_on_zero(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
+double rc_bk_wall_now(void); /* [s], monotonic */
 /* The first step [s] after a restart at t, h_last the last accepted step
  * before it (0: none); 0: let the integrator estimate it. */
-double restart_step(const rc_model *m, double t, double h_last);
-void frame_free(frame_buf *f);
-int frame_alloc(const rc_model *m, frame_buf *f);
+double rc_bk_restart_step(const rc_model *m, double t, double h_last);
+void rc_bk_frame_free(frame_buf *f);
+int rc_bk_frame_alloc(const rc_model *m, frame_buf *f);
 /* Fill and write one record at (t, y) (o NULL: only f->energy is filled). */
-rc_status write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_buf *f, double t, const double *y,
+rc_status rc_bk_write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_buf *f, double t, const double *y,
                       int at_event, rc_error *err);
 /* Open the results file (path NULL: none); `integrator` describes the
  * backend in the file's solver attributes. */
-rc_status open_output(const rc_model *m, const char *path, const char *note, rc_output **o, rc_error *err,
+rc_status rc_bk_open_output(const rc_model *m, const char *path, const char *note, rc_output **o, rc_error *err,
                       const char *integrator);
 /* The progress line on stderr. */
-void progress_line(double tend, const rc_stats *s, double t, long steps, double t0, int tty);
+void rc_bk_progress_line(double tend, const rc_stats *s, double t, long steps, double t0, int tty);
 
 /* The failure message of a backend: where (the element named elem, or a
  * failed force), the integrator's flag name and last message, and advice. */
-void failure_message(const rc_model *m, const rc_data *d, const char *name, double t, double h, double tout,
+void rc_bk_failure_message(const rc_model *m, const rc_data *d, const char *name, double t, double h, double tout,
                      const char *fname, const char *msg, const char *elem, const char *advice, char *buf, size_t n);
 
 /* The integrator's error handler: nothing after an interruption (stop
  * set), an error kept in keep[n] for the failure message, a warning to
  * stderr as SUNDIALS prints it. */
-void keep_error(volatile sig_atomic_t *stop, char *keep, size_t n, int code, const char *module,
+void rc_bk_keep_error(volatile sig_atomic_t *stop, char *keep, size_t n, int code, const char *module,
                 const char *function, const char *msg);
 
 /* Scratch vectors of a backend for its interpolant (rc_backend.dky):

@@ -28,8 +28,8 @@
  * beyond friction (a contact sliding where Newton fails, at the smallest
  * substep) is an error naming the interface and the load time.
  *
- * The results file is that of a dynamic run (drive.c's open_output and
- * write_frame), one record per output time, velocities zero; the mode
+ * The results file is that of a dynamic run (drive.c's rc_bk_open_output and
+ * rc_bk_write_frame), one record per output time, velocities zero; the mode
  * flips (contact, stick/slip) go to its events table.
  */
 #include <complex.h>
@@ -814,7 +814,7 @@ static int update_modes(const rc_model *m, rc_data *d, double t, const double *y
         if (flips) flips[i]++;
         rc_inter_report_eval_d(m, d, i, t, y, &r);
         const double v[3] = {r.p, 0.0, next == RC_MODE_CLOSED && r.fn > 0 ? r.fn : 0.0};
-        if (sink_event(sink, t, kind, m->inter_name[i], v, err)) return -1;
+        if (rc_bk_sink_event(sink, t, kind, m->inter_name[i], v, err)) return -1;
     }
     return changed;
 }
@@ -834,7 +834,7 @@ static rc_status static_run(const rc_model *m, const rc_run_options *opt, rc_pau
         if (stats) *stats = st0;
         return st;
     }
-    const double wall0 = wall_now();
+    const double wall0 = rc_bk_wall_now();
     const double tend = opt && opt->t_end_override > 0 ? opt->t_end_override : m->tend;
     const double dtout = opt && opt->dt_out_override > 0 ? opt->dt_out_override : m->dtout;
     rc_data *d = rc_data_new(m);
@@ -854,7 +854,7 @@ static rc_status static_run(const rc_model *m, const rc_run_options *opt, rc_pau
     const char *fail_reason = NULL;
     double t = 0.0;
     int fb_ok = 0;
-    if (!d || !s || !y || !ysave || !ptol || !msave || !flips || !slsave || !(fb_ok = frame_alloc(m, &fb))) {
+    if (!d || !s || !y || !ysave || !ptol || !msave || !flips || !slsave || !(fb_ok = rc_bk_frame_alloc(m, &fb))) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the static analysis");
         goto done;
     }
@@ -875,7 +875,7 @@ static rc_status static_run(const rc_model *m, const rc_run_options *opt, rc_pau
         /* at the start: a contact touching or penetrating is closed */
         if (d->inter_mode[i] != RC_MODE_INACTIVE) d->inter_mode[i] = r.p >= -ptol[i] ? RC_MODE_CLOSED : RC_MODE_OPEN;
     }
-    if ((st = open_output(m, opt ? opt->output_path : NULL, "", &out, err,
+    if ((st = rc_bk_open_output(m, opt ? opt->output_path : NULL, "", &out, err,
                           "static (KINSOL, Newton with line search; KLU sparse direct on the stiffness)")))
         goto done;
     sink.out = out;
@@ -980,7 +980,7 @@ static rc_status static_run(const rc_model *m, const rc_run_options *opt, rc_pau
                     rc_inter_report_eval_d(m, d, i, tn, y, &r);
                     const double v[3] = {r.p, 0.0, r.fn > 0 ? r.fn : 0.0};
                     S->events++;
-                    if ((st = sink_event(&sink, tn, d->inter_slip[i] ? RC_EV_FRIC_SLIP : RC_EV_FRIC_STICK,
+                    if ((st = rc_bk_sink_event(&sink, tn, d->inter_slip[i] ? RC_EV_FRIC_SLIP : RC_EV_FRIC_STICK,
                                          m->inter_name[i], v, err)))
                         goto done;
                 }
@@ -1021,7 +1021,7 @@ static rc_status static_run(const rc_model *m, const rc_run_options *opt, rc_pau
             }
             dtau *= 0.5;
         }
-        if ((st = write_frame(m, d, out, &fb, tk, y, 0, err))) goto done;
+        if ((st = rc_bk_write_frame(m, d, out, &fb, tk, y, 0, err))) goto done;
         if (opt && opt->stop && *opt->stop) {
             snprintf(reason, sizeof reason, "interrupted at t = %.9g s (signal): the results up to there are kept", t);
             fail_reason = reason;
@@ -1061,7 +1061,7 @@ done:
     snprintf(S->physics_note, sizeof S->physics_note,
              "not run (static analysis: equilibria, no motion; the contact forces balance the loads to the "
              "residual tolerance)");
-    S->wall_time = wall_now() - wall0;
+    S->wall_time = rc_bk_wall_now() - wall0;
     if (out) {
         rc_error e2;
         rc_output_linalg(out, -1, s ? (long)s->colptr[s->n] : -1, (long)m->nnz);
@@ -1073,7 +1073,7 @@ done:
     }
     if (stats) *stats = *S;
     kin_close(&k);
-    frame_free(&fb);
+    rc_bk_frame_free(&fb);
     rc_static_free(s);
     rc_data_free(d);
     free(y);

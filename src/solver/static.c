@@ -87,6 +87,7 @@ struct rc_static {
     char *held;      /* [n] 1: held unknown */
     double *us, *fs; /* [n] unknown and residual scales (length or angle; force or moment) */
     double *kb;      /* [nb] the summed stiffness scales of each body's contacts, F_s / p_s [N/m] */
+    int *sslot;      /* [ny] the slot of the free body a state belongs to, -1: none */
     /* the stiffness pattern: 6x6 blocks (row slot, column slot), sorted
      * by column slot then row slot */
     int nblk;
@@ -169,7 +170,7 @@ static int cmp_i64(const void *a, const void *b)
 void rc_static_free(rc_static *s)
 {
     if (!s) return;
-    void *p[] = {s->fb, s->slot, s->ys, s->y, s->f, s->jv, s->held, s->us, s->fs, s->kb, s->brow, s->bcol, s->bfirst,
+    void *p[] = {s->fb, s->slot, s->ys, s->y, s->f, s->jv, s->held, s->us, s->fs, s->kb, s->sslot, s->brow, s->bcol, s->bfirst,
                  s->colptr, s->rowind, s->ent_blk, s->ent_rc, s->raw, s->kval, s->fr_on, s->fr_t0, s->fr_pa, s->fr_pb,
                  s->fr_xa, s->fr_xb, s->ext};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
@@ -179,19 +180,13 @@ void rc_static_free(rc_static *s)
 int rc_static_size(const rc_static *s) { return s->n; }
 
 /* The slot and the local index (0..12) of state i, -1 when it is not a
- * free body's. */
+ * free body's (from the map s->sslot, made once: this is asked for every
+ * entry of the Jacobian's pattern). */
 static int state_body(const rc_static *s, int i, int *k)
 {
-    const rc_model *m = s->m;
-    *k = 0;
-    for (int q = 0; q < s->nb; q++) { /* bodies come first in y, 13 each */
-        const int a = m->body_yadr[s->fb[q]];
-        if (i >= a && i < a + RC_NB) {
-            *k = i - a;
-            return q;
-        }
-    }
-    return -1;
+    const int q = i >= 0 && i < s->m->ny ? s->sslot[i] : -1;
+    *k = q >= 0 ? i - s->m->body_yadr[s->fb[q]] : 0;
+    return q;
 }
 
 rc_static *rc_static_new(const rc_model *m, rc_data *d)
@@ -213,11 +208,14 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     s->us = calloc(n1, sizeof(double));
     s->fs = calloc(n1, sizeof(double));
     s->kb = calloc((size_t)s->nb + 1, sizeof(double));
+    s->sslot = malloc(ny1 * sizeof(int));
+    if (s->sslot)
+        for (size_t k = 0; k < ny1; k++) s->sslot[k] = -1;
     s->ent_blk = malloc(nnz1 * sizeof(int));
     s->ent_rc = malloc(nnz1);
     int64_t *key = malloc((nnz1 + (size_t)s->nb) * sizeof(int64_t));
     char *mf = calloc((size_t)m->nbody + 1, 1);
-    if (!s->fb || !s->slot || !s->ys || !s->y || !s->f || !s->jv || !s->held || !s->us || !s->fs || !s->kb || !s->ent_blk ||
+    if (!s->fb || !s->slot || !s->ys || !s->y || !s->f || !s->jv || !s->held || !s->us || !s->fs || !s->kb || !s->sslot || !s->ent_blk ||
         !s->ent_rc || !key || !mf) {
         free(key);
         free(mf);
@@ -227,7 +225,10 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     int q = 0;
     for (int b = 0; b < m->nbody; b++) {
         s->slot[b] = m->body_yadr[b] >= 0 ? q : -1;
-        if (m->body_yadr[b] >= 0) s->fb[q++] = b;
+        if (m->body_yadr[b] >= 0) {
+            for (int k = 0; k < RC_NB; k++) s->sslot[m->body_yadr[b] + k] = q;
+            s->fb[q++] = b;
+        }
     }
     s->nb = q;
     s->n = 6 * q;

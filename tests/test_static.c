@@ -20,6 +20,17 @@
 #include "engine/assembly/assembly.h"
 #include "engine/events/events.h"
 
+/* The version, SI units and the linear load curve /FUNCT/1 (1e5 N/m) of
+ * both decks, after their title line. */
+#define UNITS_AND_CURVE                                                                                    \
+    "      2022         0\n"                                                                                 \
+    "                  kg                   m                   s\n"                                         \
+    "                  kg                   m                   s\n"                                         \
+    "/FUNCT/1\n"                                                                                              \
+    "curve\n"                                                                                                 \
+    "                   0                   0\n"                                                              \
+    "                   1              100000\n"
+
 /* Gravity -9.81 m/s^2 along z and the TYPE6 contact 1 between surfaces 1
  * and 2 (load curve /FUNCT/1, no friction), as both decks write them. */
 #define GRAV_AND_CONTACT                                                                                    \
@@ -39,13 +50,7 @@ static const char *deck_one =
     "#RADIOSS STARTER\n"
     "/BEGIN\n"
     "static jacobian: an off-centre sphere on a plane\n"
-    "      2022         0\n"
-    "                  kg                   m                   s\n"
-    "                  kg                   m                   s\n"
-    "/FUNCT/1\n"
-    "curve\n"
-    "                   0                   0\n"
-    "                   1              100000\n"
+    UNITS_AND_CURVE
     "/NODE\n"
     "         1                   0                   0                 0.1\n"
     "/RBODY/1\n"
@@ -78,13 +83,7 @@ static const char *deck_two =
     "#RADIOSS STARTER\n"
     "/BEGIN\n"
     "static jacobian: two spheres stacked\n"
-    "      2022         0\n"
-    "                  kg                   m                   s\n"
-    "                  kg                   m                   s\n"
-    "/FUNCT/1\n"
-    "curve\n"
-    "                   0                   0\n"
-    "                   1              100000\n"
+    UNITS_AND_CURVE
     "/NODE\n"
     "         1                   0                   0                 0.1\n"
     "         2               0.003                   0                 0.3\n"

@@ -88,6 +88,7 @@ struct rc_static {
     double *us, *fs; /* [n] unknown and residual scales (length or angle; force or moment) */
     double *kb;      /* [nb] the summed stiffness scales of each body's contacts, F_s / p_s [N/m] */
     int *sslot;      /* [ny] the slot of the free body a state belongs to, -1: none */
+    double *bsize;   /* [nb] each free body's size (rc_body_size, 0 when not finite) [m] */
     /* the stiffness pattern: 6x6 blocks (row slot, column slot), sorted
      * by column slot then row slot */
     int nblk;
@@ -170,7 +171,7 @@ static int cmp_i64(const void *a, const void *b)
 void rc_static_free(rc_static *s)
 {
     if (!s) return;
-    void *p[] = {s->fb, s->slot, s->ys, s->y, s->f, s->jv, s->held, s->us, s->fs, s->kb, s->sslot, s->brow, s->bcol, s->bfirst,
+    void *p[] = {s->fb, s->slot, s->ys, s->y, s->f, s->jv, s->held, s->us, s->fs, s->kb, s->bsize, s->sslot, s->brow, s->bcol, s->bfirst,
                  s->colptr, s->rowind, s->ent_blk, s->ent_rc, s->raw, s->kval, s->fr_on, s->fr_t0, s->fr_pa, s->fr_pb,
                  s->fr_xa, s->fr_xb, s->ext};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
@@ -208,6 +209,7 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     s->us = calloc(n1, sizeof(double));
     s->fs = calloc(n1, sizeof(double));
     s->kb = calloc((size_t)s->nb + 1, sizeof(double));
+    s->bsize = calloc((size_t)s->nb + 1, sizeof(double));
     s->sslot = malloc(ny1 * sizeof(int));
     if (s->sslot)
         for (size_t k = 0; k < ny1; k++) s->sslot[k] = -1;
@@ -215,7 +217,7 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     s->ent_rc = malloc(nnz1);
     int64_t *key = malloc((nnz1 + (size_t)s->nb) * sizeof(int64_t));
     char *mf = calloc((size_t)m->nbody + 1, 1);
-    if (!s->fb || !s->slot || !s->ys || !s->y || !s->f || !s->jv || !s->held || !s->us || !s->fs || !s->kb || !s->sslot || !s->ent_blk ||
+    if (!s->fb || !s->slot || !s->ys || !s->y || !s->f || !s->jv || !s->held || !s->us || !s->fs || !s->kb || !s->bsize || !s->sslot || !s->ent_blk ||
         !s->ent_rc || !key || !mf) {
         free(key);
         free(mf);
@@ -248,6 +250,8 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
                 if (isfinite(pi) && pi > 0 && isfinite(fsi)) s->kb[q] += fsi / pi;
             }
         if (!isfinite(ps)) ps = 1e-3 * rg;
+        const double size = rc_body_size(m, b);
+        s->bsize[q] = isfinite(size) ? size : 0.0;
         if (!(fsc > 0)) fsc = fi > 0 ? fi : 1.0;
         const int *mask = m->body_dofmask + 6 * b;
         for (int k = 0; k < 3; k++) {
@@ -620,9 +624,7 @@ static double rc_static_ftol(const rc_static *s)
     for (int q = 0; q < s->nb; q++) {
         const int b = s->fb[q];
         const double *x = s->ys + m->body_yadr[b];
-        double X = rc_body_size(m, b);
-        if (!isfinite(X)) X = 0.0;
-        X += fmax(fabs(x[0]), fmax(fabs(x[1]), fabs(x[2])));
+        const double X = s->bsize[q] + fmax(fabs(x[0]), fmax(fabs(x[1]), fabs(x[2])));
         ftol = fmax(ftol, s->kb[q] * RC_TOL_ULPS * DBL_EPSILON * X / s->fs[6 * q]);
     }
     return ftol;

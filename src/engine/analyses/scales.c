@@ -642,6 +642,32 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         for (int c = 0; c < 3; c++) X = fmax(X, fabs(x[c]) + size[b]);
         pflb[b] = fmax(pflb[b], coordinate_floor(X));
     }
+    /* joints: a constraint row is a difference of the two anchor points
+     * (p = x + R s, or the ground's anchor), rounded at the larger of their
+     * model coordinates; the projection displacement nu of the row takes
+     * its tolerance from its bodies' positions (joints.c), and a tolerance
+     * below that rounding leaves Newton's corrections of nu as noise of
+     * the tolerance's own size, which IDA's convergence test reads as
+     * divergence (a pendulum whose body's contact gives it a tolerance of
+     * 2.8e-15 m, its pivot 0.53 m from the model's origin: every Newton
+     * iteration failed from t = 9e-9 s and the step fell to 1e-25 s). */
+    for (int j = 0; m->jnt && j < m->jnt->n; j++) {
+        const rc_joints *J = m->jnt;
+        const int bs[2] = {J->ba[j], J->bb[j]};
+        double X = 0.0;
+        for (int e = 0; e < 2; e++) {
+            const double *s = (e ? J->sb : J->sa) + 3 * j;
+            const double arm = sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+            if (bs[e] < 0) {
+                for (int c = 0; c < 3; c++) X = fmax(X, fabs(s[c]));
+                continue;
+            }
+            const double *x = m->body_y0 + RC_NB * bs[e];
+            for (int c = 0; c < 3; c++) X = fmax(X, fabs(x[c]) + arm);
+        }
+        for (int e = 0; e < 2; e++)
+            if (bs[e] >= 0) pflb[bs[e]] = fmax(pflb[bs[e]], coordinate_floor(X));
+    }
     /* energies: 0.1 rtol of the model's energy scale, at least the work of
      * the contact forces over the rounding of the penetrations (the
      * accounting states integrate F v, whose rounding is F_s pf) */

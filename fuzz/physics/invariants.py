@@ -10,7 +10,7 @@ numbers}. Keys:
   start_not_refused
   b_energy_created
   c_damping c_hysteresis c_friction c_coupling_damping
-  d_penetration d_centres
+  d_penetration d_centres d_box_overlap
   e_nonfinite
   f_linear_momentum f_angular_momentum
   g_frame g_frame_events g_frame_slow g_units g_units_events
@@ -313,6 +313,80 @@ def check_penetration(scene, run, res):
             out.append(viol("d_centres", run, f"sphere centres of /INTER/{it['law'].upper()}/{it['id']} "
                             f"{d[k]:.4g} m apart at t = {t[k]:.6g} s (radii {a['r']:.4g}, {b['r']:.4g} m)",
                             value=d[k], bound=lim, t=t[k], inter=it["id"]))
+    out += check_box_overlap(scene, run, res)
+    return out
+
+
+def box_frames(scene, res, surf):
+    """Centre (T, 3), axes (T, 3, 3) (rows u, v, w) and half-sizes of box
+    surface `surf` over the records, from its body's motion relative to
+    t = 0 (the box as the scene gives it at t = 0)."""
+    c0 = np.asarray(surf["c"], float)
+    u = np.asarray(surf.get("u", [1.0, 0.0, 0.0]), float)
+    u = u / np.linalg.norm(u)
+    v = np.asarray(surf.get("v", [0.0, 1.0, 0.0]), float)
+    v = v - (v @ u) * u
+    v = v / np.linalg.norm(v)
+    ax0 = np.array([u, v, np.cross(u, v)])
+    nt = len(res["time"])
+    if not surf.get("body"):
+        return np.tile(c0, (nt, 1)), np.tile(ax0, (nt, 1, 1)), np.asarray(surf["half"], float)
+    k = list(res["body_id"]).index(surf["body"])
+    pos = res["body_position"][:, k]
+    R = quat_mats(res["body_quaternion"][:, k])
+    Rrel = R @ R[0].T
+    c = pos + np.einsum("tij,j->ti", Rrel, c0 - pos[0])
+    axes = np.einsum("tij,kj->tki", Rrel, ax0)
+    return c, axes, np.asarray(surf["half"], float)
+
+
+def sat_depth(ca, A, ha, cb, B, hb):
+    """Overlap depth of two boxes by the separating-axis test over the
+    records: the least overlap of their projections on the 15 axes (face
+    normals and edge cross products); negative when apart."""
+    T = cb - ca
+    axes = [A[:, k] for k in range(3)] + [B[:, k] for k in range(3)]
+    for i in range(3):
+        for j in range(3):
+            L = np.cross(A[:, i], B[:, j])
+            n = np.linalg.norm(L, axis=1)
+            ok = n > 1e-6
+            L = np.where(ok[:, None], L / np.where(ok, n, 1.0)[:, None], A[:, i])  # parallel: a face axis
+            axes.append(L)
+    depth = np.full(len(T), np.inf)
+    for L in axes:
+        r = -np.abs(np.einsum("ti,ti->t", T, L))
+        r = r + np.einsum("k,tk->t", ha, np.abs(np.einsum("tki,ti->tk", A, L)))
+        r = r + np.einsum("k,tk->t", hb, np.abs(np.einsum("tki,ti->tk", B, L)))
+        depth = np.minimum(depth, r)
+    return depth
+
+
+def check_box_overlap(scene, run, res):
+    """d_box_overlap: two boxes of an interface overlap (separating-axis
+    depth, from the bodies' motion alone) no deeper than the interface's
+    penetration bound: the engine's own penetration is that of its contact
+    points (corners against faces) and does not see two edges that cross."""
+    out = []
+    if "body_quaternion" not in res or len(res.get("time", [])) == 0:
+        return out
+    surf = {f["id"]: f for f in scene["surfaces"]}
+    t = res["time"]
+    for it in scene["inters"]:
+        a, b = surf.get(it["s1"]), surf.get(it["s2"])
+        if not a or not b or a["type"] != "box" or b["type"] != "box":
+            continue
+        ca, A, ha = box_frames(scene, res, a)
+        cb, B, hb = box_frames(scene, res, b)
+        D = sat_depth(ca, A, ha, cb, B, hb) + float(it.get("gap", 0.0) or 0.0)
+        p_law, p_geo, F = pen_bound(scene, it)
+        bound = min(p_law, p_geo)
+        k = int(np.argmax(D))
+        if D[k] > bound:
+            out.append(viol("d_box_overlap", run,
+                            f"{it.get('label', '')} (/INTER/{it['law'].upper()}/{it['id']}): the boxes overlap by "
+                            f"{D[k]:.4g} m (separating-axis depth) at t = {t[k]:.6g} s, beyond {bound:.4g} m",
+                            value=float(D[k]), bound=bound, t=float(t[k]), inter=it["id"]))
     return out
 
 

@@ -716,6 +716,8 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
                  RC_LOC(c->solver.method_loc), c->njoint);
         goto fail;
     }
+    m->preload = c->solver.preload;
+    m->preload_loc = c->solver.method_loc;
     m->max_order = c->solver.max_order;
     m->max_steps = c->solver.max_steps;
     m->hmax = c->solver.hmax;

@@ -135,7 +135,7 @@ void rc_stats_print(const rc_stats *s, FILE *f)
     fprintf(f, "events %ld, restarts %ld, simulated %.6g s in %.3f s wall, energy balance residual %.3g J\n",
             s->events, s->reinits, s->t_end, s->wall_time, s->energy_residual);
     if (s->preloaded)
-        fprintf(f, "preload: static equilibrium at t = 0 (KINSOL), %ld Newton iterations in %.3f s wall; the run "
+        fprintf(f, "preload: static equilibrium at t = 0 (KINSOL), %ld Newton iterations in %.3g s wall; the run "
                    "started from it at rest\n",
                 s->preload_iters, s->preload_wall_time);
     if (s->settles > 0)

@@ -62,7 +62,7 @@ static rc_status run_once(const rc_model *m, const rc_solver *s, int on, tu_evlo
      * defect the validation lists) is recorded, not a reason to stop */
     rc_run_options o = {.y_end = yend, .on_event = tu_evlog_event, .user = l, .on_violation = RC_ON_VIOLATION_WARN};
     rc_actpart_set_enabled(on);
-    rc_status r = s->run(m, &o, NULL, st, &e);
+    rc_status r = s->run(m, &o, NULL, NULL, st, &e);
     rc_actpart_set_enabled(1);
     if (r) printf("    run failed: %s\n", e.msg);
     return r;

@@ -287,9 +287,9 @@ static double *same_runs(const rc_model *m, const char *what, double dt_ev, doub
     rc_run_options oa = {.y_end = ya, .on_event = tu_evlog_event, .user = la};
     rc_run_options ob = {.y_end = yb, .on_event = tu_evlog_event, .user = lb};
     rc_cvode_set_reduce(1);
-    ENSURE(rc_solver_cvode.run(m, &oa, NULL, &sa, &e) == RC_OK);
+    ENSURE(rc_solver_cvode.run(m, &oa, NULL, NULL, &sa, &e) == RC_OK);
     rc_cvode_set_reduce(0);
-    ENSURE(rc_solver_cvode.run(m, &ob, NULL, &sb, &e) == RC_OK);
+    ENSURE(rc_solver_cvode.run(m, &ob, NULL, NULL, &sb, &e) == RC_OK);
     rc_cvode_set_reduce(1);
     ENSURE(nc > 0);
     ENSURE(la->n == lb->n && la->n <= TU_MAXEV);
@@ -404,7 +404,7 @@ static void test_reduce_all_constant(void)
     ENSURE(rc_constant_states(m, y0, NULL, cst) == RC_NB);
     rc_run_options o = {.y_end = y};
     rc_stats st;
-    ENSURE(rc_solver_cvode.run(m, &o, NULL, &st, &e) == RC_OK);
+    ENSURE(rc_solver_cvode.run(m, &o, NULL, NULL, &st, &e) == RC_OK);
     rc_state_to_deck(m, y0); /* y_end is in the deck's coordinates */
     ENSURE(memcmp(y, y0, sizeof y) == 0);
     rc_model_free(m);

@@ -38,9 +38,9 @@ static void same_runs(const rc_model *m, const rc_solver *s, const char *what)
     rc_run_options oa = {.y_end = ya, .on_event = tu_evlog_event, .user = la};
     rc_run_options ob = {.y_end = yb, .on_event = tu_evlog_event, .user = lb};
     rc_rootmap_set_compact(1);
-    ENSURE(s->run(m, &oa, NULL, &sa, &e) == RC_OK);
+    ENSURE(s->run(m, &oa, NULL, NULL, &sa, &e) == RC_OK);
     rc_rootmap_set_compact(0);
-    ENSURE(s->run(m, &ob, NULL, &sb, &e) == RC_OK);
+    ENSURE(s->run(m, &ob, NULL, NULL, &sb, &e) == RC_OK);
     rc_rootmap_set_compact(1);
     printf("    %s, %s: %d events, %ld / %ld steps (compact / all roots)\n", what, s->name, la->n, sa.steps, sb.steps);
     ENSURE(la->n > 0 && la->n == lb->n && la->n <= TU_MAXEV);
@@ -164,7 +164,7 @@ static void test_restart_first_step(void)
     for (int k = 0; k < 2; k++) {
         rc_stats s;
         rc_run_options o = {.t_end_override = 1.2};
-        ENSURE(sv[k]->run(m, &o, NULL, &s, &e) == RC_OK);
+        ENSURE(sv[k]->run(m, &o, NULL, NULL, &s, &e) == RC_OK);
         printf("    %s: %ld steps, %ld events, %ld restarts\n", sv[k]->name, s.steps, s.events, s.reinits);
         ENSURE(s.events >= 4 && s.reinits >= 2);
     }

@@ -363,9 +363,9 @@ static void test_torquefree_runs(void)
     rc_run_options oa = {.y_end = ya, .on_event = tu_evlog_event, .user = la};
     rc_run_options ob = {.y_end = yb, .on_event = tu_evlog_event, .user = lb};
     rc_cvode_set_reduce(1);
-    ENSURE(rc_solver_cvode.run(m, &oa, NULL, &sa, &e) == RC_OK);
+    ENSURE(rc_solver_cvode.run(m, &oa, NULL, NULL, &sa, &e) == RC_OK);
     rc_cvode_set_reduce(0);
-    ENSURE(rc_solver_cvode.run(m, &ob, NULL, &sb, &e) == RC_OK);
+    ENSURE(rc_solver_cvode.run(m, &ob, NULL, NULL, &sb, &e) == RC_OK);
     rc_cvode_set_reduce(1);
     ENSURE(la->n == lb->n && la->n > 5 && la->n <= TU_MAXEV);
     double dt = 0.0, dx = 0.0, dv = 0.0, dfn = 0.0, fbig = 0.0;

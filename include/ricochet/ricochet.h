@@ -20,7 +20,8 @@
  * serialises its netCDF calls, as HDF5 under netCDF is not thread-safe).
  * One object is used from one thread at a time; a compiled model may be
  * run by several threads at once (rc_run and sessions only read it), but
- * not changed (rc_model_set_rtol, rc_model_set_method, rc_model_free)
+ * not changed (rc_model_set_rtol, rc_model_set_method, rc_model_set_preload,
+ * rc_model_free)
  * while a run or session uses it.
  *
  * Link with `pkg-config --cflags --libs ricochet` (docs/embedding.md).
@@ -141,6 +142,18 @@ rc_status rc_model_set_rtol(rc_model *m, double rtol, rc_error *err);
  * (the message names the card), or a NULL m; the model unchanged then. Not while a run or session uses
  * the model. */
 rc_status rc_model_set_method(rc_model *m, int method, rc_error *err);
+/* Replace the preload (/SOLVER Preload) of a compiled model: 1 starts a
+ * dynamic run (Method 1 or 2) from the static equilibrium under the loads
+ * at t = 0 (positions, orientations and the friction forces of the closed
+ * contacts; every body at rest), 0 from the deck's positions; with Method 3
+ * it changes nothing (docs/case-format.md /SOLVER, docs/theory.md 7.8
+ * "Preload"). RC_EINPUT for another number, for 1 on a model outside the
+ * static analysis' scope or with a body given an initial velocity (the
+ * message names the card), or a NULL m; the model unchanged then. Not
+ * while a run or session uses the model. */
+rc_status rc_model_set_preload(rc_model *m, int on, rc_error *err);
+/* The model's preload: 1 on, 0 off (and for a NULL m). */
+int rc_model_preload(const rc_model *m);
 /* The relative tolerance, end time and output interval of a model [-, s, s];
  * NaN for a NULL m. */
 double rc_model_rtol(const rc_model *m);
@@ -206,6 +219,10 @@ typedef struct rc_stats {
                              closed from the start or never reopened,
                              settled contacts ("" when every interface
                              closed and reopened)                       */
+    int preloaded;        /* 1: the run started from a static preload
+                             (/SOLVER Preload, rc_model_set_preload)    */
+    long preload_iters;   /* its Newton iterations (KINSOL)             */
+    double preload_wall_time; /* its wall-clock time [s]                */
 } rc_stats;
 
 /* The callback of every event (rc_run_options.on_event): called once per

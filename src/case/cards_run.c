@@ -337,8 +337,8 @@ static rc_status rc_engine_settings(rc_reader *rd)
                         rd->anim_dt > 0 ? "Tfreq of /ANIM/DT" : "Tend/100");
 }
 
-/* /SOLVER: Method Max_order Max_steps Rtol Hmax H0; the four absolute
- * tolerances; Atol_energy. */
+/* /SOLVER: Method Max_order Max_steps Rtol Hmax H0 Preload; the four
+ * absolute tolerances; Atol_energy. */
 rc_status rc_card_solver(rc_reader *rd, const rc_block *b)
 {
     rc_case_solver *s = &rd->c->solver;
@@ -347,7 +347,7 @@ rc_status rc_card_solver(rc_reader *rd, const rc_block *b)
     if ((st = rc_header(rd, b, 1, RC_ID_OPTIONAL, NULL, "/SOLVER or /SOLVER/1"))) return st;
     if ((st = rc_single(rd, b, &rd->solver_hdr))) return st;
     if ((st = rc_card_lines(rd, b, NULL, 1, 3,
-                            "Method Max_order Max_steps Rtol Hmax H0[, Atol_pos Atol_quat "
+                            "Method Max_order Max_steps Rtol Hmax H0 Preload[, Atol_pos Atol_quat "
                             "Atol_vel Atol_omega[, Atol_energy]]",
                             &nd)))
         return st;
@@ -359,7 +359,8 @@ rc_status rc_card_solver(rc_reader *rd, const rc_block *b)
         RC_F_INT("Max_steps", &steps, RC_DEF_MAX_STEPS, zp),
         RC_F_REALD("Rtol", &s->rtol, RC_DEF_RTOL, zp, RC_D_NONE),
         RC_F_REALD("Hmax", &s->hmax, 0, RC_FF_NONNEG, RC_D_T),
-        RC_F_REALD("H0", &s->h0, 0, RC_FF_NONNEG, RC_D_T)};
+        RC_F_REALD("H0", &s->h0, 0, RC_FF_NONNEG, RC_D_T),
+        RC_F_SET("Preload", &s->preload, 0, 0, RC_BIT(0) | RC_BIT(1), 0, NULL)};
     rc_field l2[] = {RC_F_REALD("Atol_pos", &s->atol_pos, RC_DEF_ATOL_POS, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_L),
                      RC_F_REALD("Atol_quat", &s->atol_quat, RC_DEF_ATOL_QUAT, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
                      RC_F_REALD("Atol_vel", &s->atol_vel, RC_DEF_ATOL_VEL, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_V),
@@ -394,6 +395,7 @@ void rc_cards_defaults(rc_case *c)
     s->atol_energy = RC_DEF_ATOL_ENERGY;
     s->hmax = 0;
     s->h0 = 0;
+    s->preload = 0;
 }
 
 rc_status rc_cards_finish(rc_reader *rd)

@@ -287,8 +287,9 @@ typedef struct rc_case_solver {
     double atol_energy;/* [J], default 1e-6 */
     double hmax;       /* [s], 0: no limit */
     double h0;         /* [s], 0: CVODE's estimate */
+    int preload;       /* 0: off (default), 1: start a dynamic run from the static equilibrium at t = 0 */
     rc_loc loc;
-    rc_loc method_loc; /* the line of Method (the deck's end without /SOLVER) */
+    rc_loc method_loc; /* the line of Method and Preload (the deck's end without /SOLVER) */
 } rc_case_solver;
 
 /* The whole deck. Arrays grow as cards are read. */

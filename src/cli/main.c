@@ -12,7 +12,7 @@ static void usage(FILE *f)
 {
     fprintf(f,
             "usage: ricochet run CASE [-o OUT.nc] [-q] [--t-end T] [--dt-out DT] [--rtol R] [--method M]\n"
-            "                         [--on-violation stop|warn]\n"
+            "                         [--preload | --no-preload] [--on-violation stop|warn]\n"
             "                                            run a case, write results (default: CASE stem + .nc)\n"
             "       ricochet check CASE                  read and compile a case, print the model summary\n"
             "       ricochet export-vtk RESULTS.nc [-o DIR]  ParaView files (.pvd + .vtp; default DIR: stem_vtk)\n"
@@ -37,6 +37,12 @@ static void usage_run(FILE *f)
             "                 from the model's scales (blank /SOLVER fields) follow it\n"
             "  --method M     integration backend, instead of /SOLVER Method: cvode (1), ida (2) or static (3:\n"
             "                 equilibrium at each output time, KINSOL); a model with joints runs on ida only\n"
+            "  --preload      start the dynamic run from the static equilibrium under the loads at t = 0\n"
+            "                 (instead of /SOLVER Preload): positions, orientations and the friction forces of\n"
+            "                 the closed contacts solved by KINSOL, every body at rest; the model must be in the\n"
+            "                 static analysis' scope with no initial velocity (exit code 2 otherwise, naming the\n"
+            "                 card); nothing more with --method static\n"
+            "  --no-preload   start from the deck's positions even when /SOLVER Preload is 1\n"
             "  --on-violation stop|warn\n"
             "                 what a failed physics check does (energy created, a dissipation decreasing, bodies\n"
             "                 passing through each other, non-finite values): stop ends the run there with exit\n"
@@ -183,7 +189,7 @@ int main(int argc, char **argv)
         usage(stderr);
         return 2;
     }
-    int quiet = 0, method = 0, on_violation = 0;
+    int quiet = 0, method = 0, on_violation = 0, preload = -1;
     double t_end = 0.0, dt_out = 0.0, rtol = 0.0;
     for (int k = 2; k < argc; k++) {
         const char *a = argv[k];
@@ -219,6 +225,10 @@ int main(int argc, char **argv)
                 fprintf(stderr, "ricochet: --on-violation: expected stop or warn, got %s\n", v ? v : "nothing");
                 return 2;
             }
+            continue;
+        }
+        if (is_run && (!strcmp(a, "--preload") || !strcmp(a, "--no-preload"))) {
+            preload = !strcmp(a, "--preload");
             continue;
         }
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
@@ -258,7 +268,9 @@ int main(int argc, char **argv)
     int rc = load(case_path, &c, &m, &e);
     /* overrides, after the compile: the derived tolerances follow --rtol */
     if (rc == 0 && rtol > 0 && rc_model_set_rtol(m, rtol, &e)) rc = fail(&e);
+    if (rc == 0 && preload == 0 && rc_model_set_preload(m, 0, &e)) rc = fail(&e);
     if (rc == 0 && method > 0 && rc_model_set_method(m, method, &e)) rc = fail(&e);
+    if (rc == 0 && preload == 1 && rc_model_set_preload(m, 1, &e)) rc = fail(&e);
     char *def = NULL;
     if (rc == 0 && is_run && !out && !(def = default_output(case_path))) {
         fprintf(stderr, "ricochet: out of memory\n");

@@ -634,6 +634,30 @@ static rc_status layout(const rc_case *c, rc_model *m, rc_error *err)
     return RC_OK;
 }
 
+/* The file of a location as the model's own copy (m->file, m->case_path):
+ * the messages of the model's setters and runs name their cards after the
+ * case is freed (it may be, once compiled). */
+static const char *own_file(const rc_case *c, const rc_model *m, const char *f)
+{
+    if (!f) return f;
+    if (c->path && !strcmp(f, c->path) && m->case_path) return m->case_path;
+    for (int k = 0; k < m->nfile; k++)
+        if (m->file[k] && !strcmp(f, rc_case_file(c, k))) return m->file[k];
+    return f;
+}
+
+/* The locations the model keeps for its messages, on its own file names. */
+static void own_locations(const rc_case *c, rc_model *m)
+{
+    m->end_loc.file = own_file(c, m, m->end_loc.file);
+    m->preload_loc.file = own_file(c, m, m->preload_loc.file);
+    for (int b = 0; b < m->nbody; b++) m->body_loc[b].file = own_file(c, m, m->body_loc[b].file);
+    for (int i = 0; i < m->ninter; i++) m->inter_loc[i].file = own_file(c, m, m->inter_loc[i].file);
+    for (int k = 0; m->cpl && m->cpl->law_loc && k < m->cpl->n; k++)
+        m->cpl->law_loc[k].file = own_file(c, m, m->cpl->law_loc[k].file);
+    for (int k = 0; m->jnt && m->jnt->loc && k < m->jnt->n; k++) m->jnt->loc[k].file = own_file(c, m, m->jnt->loc[k].file);
+}
+
 rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
 {
     rc_status st = RC_OK;
@@ -716,6 +740,8 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
                  RC_LOC(c->solver.method_loc), c->njoint);
         goto fail;
     }
+    m->preload = c->solver.preload;
+    m->preload_loc = c->solver.method_loc;
     m->max_order = c->solver.max_order;
     m->max_steps = c->solver.max_steps;
     m->hmax = c->solver.hmax;
@@ -851,6 +877,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     for (int b = 0; b < m->nbody; b++)
         for (int k = 0; k < 3; k++) m->body_y0[RC_NB * b + k] -= m->origin[k];
     for (int k = 0; k < 3; k++) m->ground_y0[k] = 0.0;
+    own_locations(c, m);
     *out = m;
     return RC_OK;
 fail:

@@ -346,6 +346,8 @@ struct rc_model {
                             * roundings of their contacts' coordinates */
     double tol_floor_pos;  /* the largest such floor [m] */
     int method;          /* /SOLVER Method: integration backend (src/solver/solver.h) */
+    int preload;         /* /SOLVER Preload: 1: a dynamic run starts from the static equilibrium at t = 0 */
+    rc_loc preload_loc;  /* the line of /SOLVER Preload (the deck's end without /SOLVER), for messages */
     int max_order;
     long max_steps;
     double hmax, h0;     /* [s] */
@@ -428,6 +430,15 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err);
  * pairs with several contact points, couplings other than springs); `how`
  * says how Method 3 was chosen. */
 rc_status rc_static_scope(const rc_model *m, const char *how, rc_error *err);
+/* The same, the message ending with `alt` as the way out instead of
+ * "Method 1 or 2". */
+rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *alt, rc_error *err);
+/* What a preload (/SOLVER Preload 1, docs/theory.md 7.8 "Preload")
+ * needs: the static analysis' scope, and free bodies at rest (zero initial
+ * velocity and angular velocity): RC_EINPUT naming the card (the element
+ * out of scope, or the /RBODY of a moving body); `how` says how the
+ * preload was asked for. */
+rc_status rc_preload_scope(const rc_model *m, const char *how, rc_error *err);
 /* 1: friction fr is the incremental stick spring that the static
  * analysis' return mapping takes (TYPE6 Fric/Sfric without a speed
  * multiplier, /FRICTION Coulomb; isotropic, unfiltered, not exact stick). */

@@ -3,8 +3,11 @@
  * what its first version solves, and a clear input error naming the card
  * of the first element it does not (docs/case-format.md, /SOLVER). Called
  * where Method 3 is chosen: by the compiler for the deck's /SOLVER, by
- * rc_model_set_method, and by the static backend itself.
+ * rc_model_set_method, and by the static backend itself; and where a
+ * preload (/SOLVER Preload 1) is asked for, which also needs the bodies at
+ * rest (rc_preload_scope).
  */
+#include <math.h>
 #include <stdio.h>
 
 #include "base/error.h"
@@ -31,15 +34,21 @@ int rc_static_friction_ok(const rc_fric *fr)
 
 rc_status rc_static_scope(const rc_model *m, const char *how, rc_error *err)
 {
+    return rc_static_scope_alt(m, how, "Method 1 or 2", err);
+}
+
+rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *alt, rc_error *err)
+{
     if (!how) how = "/SOLVER Method 3";
+    if (!alt) alt = "Method 1 or 2";
     if (m->jnt && m->jnt->n > 0)
         RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card %s: " RC_STATIC_NOT " (%s); expected a model without joints, or Method 1 or 2",
-                 RC_LOC(m->jnt->loc[0]), m->jnt->name[0], "joints", how);
+                 RC_LOCFMT "card %s: " RC_STATIC_NOT " (%s); expected a model without joints, or %s",
+                 RC_LOC(m->jnt->loc[0]), m->jnt->name[0], "joints", how, alt);
     if (m->imp && m->imp->nt + m->imp->nr > 0)
         RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card /IMPVEL: " RC_STATIC_NOT " (%s); expected no /IMPVEL card, or Method 1 or 2",
-                 RC_LOC(m->end_loc), "imposed velocities", how);
+                 RC_LOCFMT "card /IMPVEL: " RC_STATIC_NOT " (%s); expected no /IMPVEL card, or %s",
+                 RC_LOC(m->end_loc), "imposed velocities", how, alt);
     for (int i = 0; i < m->ninter; i++) {
         const rc_fric *fr = &m->inter_fr[i];
         const char *what = NULL;
@@ -68,18 +77,41 @@ rc_status rc_static_scope(const rc_model *m, const char *how, rc_error *err)
                      RC_LOCFMT "card %s: " RC_STATIC_NOT " (%s); expected an elastic contact (TYPE6 Iform 0, "
                                "frictionless or with the stick-spring friction of TYPE6 Fric/Sfric or a /FRICTION "
                                "Coulomb law; or the power law without friction) between spheres, planes, boxes or "
-                               "cylinders, or Method 1 or 2",
-                     RC_LOC(m->inter_loc[i]), m->inter_name[i], what, how);
+                               "cylinders, or %s",
+                     RC_LOC(m->inter_loc[i]), m->inter_name[i], what, how, alt);
     }
     for (int k = 0; m->cpl && k < m->cpl->n; k++)
         if (m->cpl->kind[k] != RC_CPL_SPRING)
             RC_RAISE(err, RC_EINPUT,
                      RC_LOCFMT "card %s: " RC_STATIC_NOT " (%s); expected spring couplings (/COUPLING/SPRING) only, "
-                               "or Method 1 or 2",
+                               "or %s",
                      RC_LOC(m->cpl->law_loc[k]), m->cpl->name[k],
                      m->cpl->kind[k] == RC_CPL_CATENARY ? "catenary couplings"
                      : m->cpl->kind[k] == RC_CPL_CONTACT ? "contact couplings"
                                                          : "joint stops",
-                     how);
+                     how, alt);
+    return RC_OK;
+}
+
+rc_status rc_preload_scope(const rc_model *m, const char *how, rc_error *err)
+{
+    if (!how) how = "/SOLVER field Preload";
+    char why[600];
+    snprintf(why, sizeof why, "a preload, asked for by %s, solves the static equilibrium at t = 0 and needs the static "
+             "analysis' scope", how);
+    rc_status st = rc_static_scope_alt(m, why, "no preload (/SOLVER Preload 0)", err);
+    if (st) return st;
+    /* the dynamic run starts from the equilibrium at rest */
+    for (int b = 0; b < m->nbody; b++) {
+        if (m->body_yadr[b] < 0) continue;
+        const double *v = m->body_y0 + RC_NB * b + 7, *w = v + 3;
+        const double vn = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), wn = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        if (vn != 0.0 || wn != 0.0)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card /RBODY/%d: initial velocity %g m/s, angular velocity %g rad/s (/INIVEL): a "
+                               "preload, asked for by %s, starts the dynamic run from the static equilibrium at "
+                               "rest; expected a body at rest (no /INIVEL on it), or no preload (/SOLVER Preload 0)",
+                     RC_LOC(m->body_loc[b]), m->body_id[b], vn, wn, how);
+    }
     return RC_OK;
 }

@@ -53,6 +53,10 @@ typedef struct rc_output_meta {
     const char *tol_derived;  /* which tolerances were derived from the
                                  model's scales ("" none)                  */
     const char *sampling_note; /* non-NULL: global attribute sampling_note */
+    const char *preload;       /* non-NULL: the run started from a static preload;
+                                  global attribute preload (what was solved) */
+    long preload_iters;        /* with preload: its Newton iterations (global
+                                  attribute preload_newton_iters) [-] */
     /* surfaces: kind ("PLANE", "SPHERE", "CYLINDER", "BOX"), carrying body
      * index (-1: fixed in space), local point, local normal or axis,
      * radius, RC_OUT_SURF_NPARAM extra parameters (model.h surf_ext) */

@@ -707,12 +707,12 @@ static const rc_backend cvode_backend = {
     .record_vector = NULL, .before_events = cv_before_events, .after_events = cv_after_events,
     .continued = cv_continued, .close = cv_close, .roots_at = cv_roots_at};
 
-static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_pause *pause, rc_stats *stats,
-                           rc_error *err)
+static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_pause *pause, const rc_preload *pre,
+                           rc_stats *stats, rc_error *err)
 {
     run_ctx c;
     memset(&c, 0, sizeof c);
-    return rc_drive(m, opt, pause, stats, err, &cvode_backend, &c);
+    return rc_drive(m, opt, pause, pre, stats, err, &cvode_backend, &c);
 }
 
 /* The backend of /SOLVER Method 1 (solver.h). */

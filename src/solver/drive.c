@@ -310,7 +310,7 @@ _Static_assert(RC_SURF_NEXT == RC_OUT_SURF_NPARAM, "surface parameters: model an
 static const char *const surf_kind_name[] = {"", "PLANE", "SPHERE", "CYLINDER", "BOX", "SEGMENTS"};
 
 rc_status rc_bk_open_output(const rc_model *m, const char *path, const char *note, rc_output **o, rc_error *err,
-                      const char *integrator)
+                      const char *integrator, const rc_preload *pre)
 {
     *o = NULL;
     if (!path) return RC_OK;
@@ -340,6 +340,16 @@ rc_status rc_bk_open_output(const rc_model *m, const char *path, const char *not
                      tol_name[k]);
     meta.tol_derived = derived[0] ? derived : "none (all given in /SOLVER)";
     meta.sampling_note = note;
+    char pl[400];
+    if (pre) {
+        snprintf(pl, sizeof pl,
+                 "static equilibrium under the loads at t = 0 (KINSOL Newton with line search, KLU): %ld Newton "
+                 "iterations in %ld solves of the contacts' active set, %ld contact mode flips; the dynamic run "
+                 "started from it at rest, its closed contacts closed with their static friction forces",
+                 pre->iters, pre->solves, pre->flips);
+        meta.preload = pl;
+        meta.preload_iters = pre->iters;
+    }
     const char **kinds = malloc(((size_t)m->nsurf + 1) * sizeof *kinds);
     int *isurf = malloc((2 * (size_t)m->ninter + 1) * sizeof *isurf);
     /* the surfaces fixed in space in the deck's coordinates (the model's
@@ -612,8 +622,41 @@ void rc_bk_keep_error(volatile sig_atomic_t *stop, char *keep, size_t n, int cod
         st = RC_SET(err, RC_EINTERRUPT, "%s", reason);        \
     } while (0)
 
-rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause, rc_stats *stats, rc_error *err,
-                   const rc_backend *bk, void *self)
+/* A preload (solver.h rc_preload; docs/theory.md 7.8 "Preload"): the free
+ * bodies' positions and orientations of the static equilibrium, at rest
+ * (rc_preload_scope refused bodies given a velocity); the gravity work
+ * state restarted from them. */
+static void preload_state(const rc_model *m, const rc_preload *pre, double *y)
+{
+    for (int b = 0; b < m->nbody; b++) {
+        const int a = m->body_yadr[b];
+        if (a < 0) continue;
+        memcpy(y + a, pre->y + a, 7 * sizeof(double));
+        for (int k = 7; k < RC_NB; k++) y[a + k] = 0.0;
+    }
+    rc_gravity_work_init(m, y);
+}
+
+/* After the initial modes (rc_modes_init: a contact penetrating by its
+ * static P = F / k is closed, its friction state zero): each contact
+ * closed in both the equilibrium and the dynamic modes starts sticking
+ * with the static friction force, the return mapping's (a body held by
+ * friction stays held from the first step). */
+static void preload_friction(const rc_model *m, rc_data *d, const rc_preload *pre, double *y)
+{
+    for (int i = 0; i < m->ninter; i++) {
+        const rc_fric *fr = &m->inter_fr[i];
+        if (!pre->closed[i] || d->inter_mode[i] != RC_MODE_CLOSED || rc_inter_frictionless(m, i) ||
+            !rc_static_friction_ok(fr))
+            continue;
+        const int at = m->inter_eadr[i] + fr->tidx;
+        memcpy(y + at, pre->y + at, 3 * sizeof(double));
+        d->inter_slip[i] = 0;
+    }
+}
+
+rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause, const rc_preload *pre,
+                   rc_stats *stats, rc_error *err, const rc_backend *bk, void *self)
 {
     rc_status st = RC_OK;
     double t = 0.0; /* time reached [s] */
@@ -669,10 +712,12 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
         goto done;
     }
     s.t_settle = NAN;
-    /* initial state and modes */
+    /* initial state and modes (a preload: from the static equilibrium) */
     rc_initial_state(m, y);
+    if (pre) preload_state(m, pre, y);
     rc_modes_init(m, d, t, y);
-    if ((st = rc_bk_open_output(m, opt ? opt->output_path : NULL, note, &out, err, integrator))) goto done;
+    if (pre) preload_friction(m, d, pre, y);
+    if ((st = rc_bk_open_output(m, opt ? opt->output_path : NULL, note, &out, err, integrator, pre))) goto done;
     sink.out = out;
     {
         int jmp = 0;

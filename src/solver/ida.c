@@ -462,12 +462,12 @@ static const rc_backend ida_backend = {
     .record_vector = ida_record_vector, .before_events = ida_before_events, .after_events = ida_after_events,
     .continued = NULL, .close = ida_close, .roots_at = ida_roots_at};
 
-static rc_status ida_run(const rc_model *m, const rc_run_options *opt, rc_pause *pause, rc_stats *stats,
-                         rc_error *err)
+static rc_status ida_run(const rc_model *m, const rc_run_options *opt, rc_pause *pause, const rc_preload *pre,
+                         rc_stats *stats, rc_error *err)
 {
     ida_ctx c;
     memset(&c, 0, sizeof c);
-    return rc_drive(m, opt, pause, stats, err, &ida_backend, &c);
+    return rc_drive(m, opt, pause, pre, stats, err, &ida_backend, &c);
 }
 
 /* The backend of /SOLVER Method 2 (solver.h). */

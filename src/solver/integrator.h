@@ -80,9 +80,10 @@ int rc_bk_frame_alloc(const rc_model *m, frame_buf *f);
 rc_status rc_bk_write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_buf *f, double t, const double *y,
                       int at_event, rc_error *err);
 /* Open the results file (path NULL: none); `integrator` describes the
- * backend in the file's solver attributes. */
+ * backend in the file's solver attributes; `pre` (NULL: none) the preload
+ * the run started from (attributes preload, preload_newton_iters). */
 rc_status rc_bk_open_output(const rc_model *m, const char *path, const char *note, rc_output **o, rc_error *err,
-                      const char *integrator);
+                      const char *integrator, const rc_preload *pre);
 /* The progress line on stderr. */
 void rc_bk_progress_line(double tend, const rc_stats *s, double t, long steps, double t0, int tty);
 
@@ -198,7 +199,7 @@ typedef struct rc_backend {
 } rc_backend;
 
 /* Run the model on the backend bk (solver.h rc_solver.run). */
-rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause, rc_stats *stats, rc_error *err,
-                   const rc_backend *bk, void *self);
+rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause, const rc_preload *pre,
+                   rc_stats *stats, rc_error *err, const rc_backend *bk, void *self);
 
 #endif

@@ -8,6 +8,7 @@
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
@@ -93,9 +94,30 @@ rc_status rc_run_paused(const rc_model *m, const rc_run_options *opt, rc_pause *
     }
     rc_status st = check_run(m, opt, err);
     if (st != RC_OK) return st;
+    const rc_solver *sv = NULL;
     for (size_t k = 0; k < sizeof rc_solvers / sizeof rc_solvers[0]; k++)
-        if (rc_solvers[k]->method == m->method) return rc_solvers[k]->run(m, opt, pause, stats, err);
-    return RC_SET(err, RC_EINTERNAL, "no solver backend for /SOLVER Method %d", m->method);
+        if (rc_solvers[k]->method == m->method) sv = rc_solvers[k];
+    if (!sv) return RC_SET(err, RC_EINTERNAL, "no solver backend for /SOLVER Method %d", m->method);
+    if (!m->preload || m->method == RC_METHOD_STATIC) return sv->run(m, opt, pause, NULL, stats, err);
+    /* a preload: the dynamic run starts from the static equilibrium at
+     * t = 0 (static.c); nothing is run or written when it fails */
+    rc_preload pre;
+    memset(&pre, 0, sizeof pre);
+    pre.y = calloc((size_t)m->ny + 1, sizeof(double));
+    pre.closed = calloc((size_t)m->ninter + 1, sizeof(int));
+    if (!pre.y || !pre.closed) st = RC_SET(err, RC_ENOMEM, "out of memory for the preload");
+    else st = rc_static_preload(m, &pre, err);
+    if (st == RC_OK) {
+        st = sv->run(m, opt, pause, &pre, stats, err);
+        if (stats) {
+            stats->preloaded = 1;
+            stats->preload_iters = pre.iters;
+            stats->preload_wall_time = pre.wall;
+        }
+    }
+    free(pre.y);
+    free(pre.closed);
+    return st;
 }
 
 rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, rc_error *err)
@@ -112,6 +134,10 @@ void rc_stats_print(const rc_stats *s, FILE *f)
             s->err_test_fails, s->root_evals);
     fprintf(f, "events %ld, restarts %ld, simulated %.6g s in %.3f s wall, energy balance residual %.3g J\n",
             s->events, s->reinits, s->t_end, s->wall_time, s->energy_residual);
+    if (s->preloaded)
+        fprintf(f, "preload: static equilibrium at t = 0 (KINSOL), %ld Newton iterations in %.3g s wall; the run "
+                   "started from it at rest\n",
+                s->preload_iters, s->preload_wall_time);
     if (s->settles > 0)
         fprintf(f, "settled contacts %ld (bounces accumulated: held closed), the last at t = %.9g s\n", s->settles,
                 s->t_settle);

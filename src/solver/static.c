@@ -822,8 +822,12 @@ static int update_modes(const rc_model *m, rc_data *d, double t, const double *y
     return changed;
 }
 
-static rc_status static_run(const rc_model *m, const rc_run_options *opt, rc_pause *pause, rc_stats *stats,
-                            rc_error *err)
+/* The static analysis of the run (pre == NULL), or the preload of a
+ * dynamic run (pre != NULL): the one equilibrium at the load time 0, no
+ * results file, no event callback; its state into pre->y, its contacts'
+ * modes into pre->closed. */
+static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_pause *pause, rc_stats *stats,
+                              rc_error *err, rc_preload *pre)
 {
     rc_error local_err;
     if (!err) err = &local_err;
@@ -832,14 +836,16 @@ static rc_status static_run(const rc_model *m, const rc_run_options *opt, rc_pau
     memset(&st0, 0, sizeof st0);
     st0.t_settle = NAN;
     rc_stats *S = &st0;
-    rc_status st = rc_static_scope(m, "the static analysis, /SOLVER Method 3", err);
+    rc_status st = pre ? rc_preload_scope(m, "the model's /SOLVER Preload (or rc_model_set_preload)", err)
+                       : rc_static_scope(m, "the static analysis, /SOLVER Method 3", err);
     if (st) {
         if (stats) *stats = st0;
         return st;
     }
+    if (pre) opt = NULL; /* one solve at t = 0; nothing written, no callback */
     const double wall0 = rc_bk_wall_now();
-    const double tend = opt && opt->t_end_override > 0 ? opt->t_end_override : m->tend;
-    const double dtout = opt && opt->dt_out_override > 0 ? opt->dt_out_override : m->dtout;
+    const double tend = pre ? 0.0 : opt && opt->t_end_override > 0 ? opt->t_end_override : m->tend;
+    const double dtout = pre ? 1.0 : opt && opt->dt_out_override > 0 ? opt->dt_out_override : m->dtout;
     rc_data *d = rc_data_new(m);
     rc_static *s = d ? rc_static_new(m, d) : NULL;
     st_run c = {s, 0.0, ""};
@@ -879,7 +885,7 @@ static rc_status static_run(const rc_model *m, const rc_run_options *opt, rc_pau
         if (d->inter_mode[i] != RC_MODE_INACTIVE) d->inter_mode[i] = r.p >= -ptol[i] ? RC_MODE_CLOSED : RC_MODE_OPEN;
     }
     if ((st = rc_bk_open_output(m, opt ? opt->output_path : NULL, "", &out, err,
-                          "static (KINSOL, Newton with line search; KLU sparse direct on the stiffness)")))
+                          "static (KINSOL, Newton with line search; KLU sparse direct on the stiffness)", NULL)))
         goto done;
     sink.out = out;
 
@@ -890,6 +896,7 @@ static rc_status static_run(const rc_model *m, const rc_run_options *opt, rc_pau
         double tk = fmin((double)kout * dtout, tend);
         if (tend - tk < 1e-12 * tend) tk = tend;
         if (kout > 0 && tk <= t) break;
+        if (pre && kout > 0) break;
         /* from t to tk in substeps of the load time */
         int first = kout == 0;
         while (first || t < tk) {
@@ -1053,6 +1060,10 @@ static rc_status static_run(const rc_model *m, const rc_run_options *opt, rc_pau
         memcpy(opt->y_end, y, (size_t)m->ny * sizeof(double));
         rc_state_to_deck(m, opt->y_end);
     }
+    if (pre) {
+        memcpy(pre->y, y, (size_t)m->ny * sizeof(double));
+        for (int i = 0; i < m->ninter; i++) pre->closed[i] = d->inter_mode[i] == RC_MODE_CLOSED;
+    }
 
 done:
     S->t_end = t;
@@ -1085,6 +1096,32 @@ done:
     free(msave);
     free(flips);
     free(slsave);
+    return st;
+}
+
+static rc_status static_run(const rc_model *m, const rc_run_options *opt, rc_pause *pause, const rc_preload *pre,
+                            rc_stats *stats, rc_error *err)
+{
+    (void)pre; /* the static analysis starts from the same equilibrium: a preload adds nothing */
+    return static_solve(m, opt, pause, stats, err, NULL);
+}
+
+rc_status rc_static_preload(const rc_model *m, rc_preload *pre, rc_error *err)
+{
+    rc_error local_err;
+    if (!err) err = &local_err;
+    rc_stats S;
+    const rc_status st = static_solve(m, NULL, NULL, &S, err, pre);
+    pre->iters = S.nonlin_iters;
+    pre->solves = S.steps + S.reinits;
+    pre->flips = S.events;
+    pre->wall = S.wall_time;
+    if (st && st != RC_EINPUT) { /* say that it is the preload that failed */
+        char msg[7801];
+        snprintf(msg, sizeof msg, "%.7800s", err->msg);
+        snprintf(err->msg, sizeof err->msg, "preload (the static equilibrium at t = 0 the dynamic run would start "
+                                            "from; nothing run or written): %s", msg);
+    }
     return st;
 }
 

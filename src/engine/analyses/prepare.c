@@ -77,6 +77,15 @@ rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
             rc_model_free(m);
             return st;
         }
+    } else if (m->preload) { /* a preload: the static analysis' scope, bodies at rest */
+        char how[400];
+        snprintf(how, sizeof how, "/SOLVER field Preload at %s:%d", m->preload_loc.file ? m->preload_loc.file : "?",
+                 m->preload_loc.line);
+        st = rc_preload_scope(m, how, err);
+        if (st) {
+            rc_model_free(m);
+            return st;
+        }
     }
     st = rc_fast_select(m, err); /* the fast path per interface (kernel_fast.inc) */
     if (st) {
@@ -152,9 +161,30 @@ rc_status rc_model_set_method(rc_model *m, int method, rc_error *err)
                  "integration method: the model has exact stick (%d interfaces), a constraint that only the IDA "
                  "path (method 2) runs; expected 2, got 1",
                  rc_stk_count(m));
+    if (method != 3 && m->preload) {
+        rc_status st = rc_preload_scope(m, "the model's preload (/SOLVER Preload, rc_model_set_preload)", err);
+        if (st) return st;
+    }
     m->method = method;
     return RC_OK;
 }
+
+rc_status rc_model_set_preload(rc_model *m, int on, rc_error *err)
+{
+    rc_error local;
+    if (!err) err = &local;
+    if (!m) RC_RAISE(err, RC_EINPUT, "rc_model_set_preload: the model is NULL; expected a compiled model");
+    if (on != 0 && on != 1)
+        RC_RAISE(err, RC_EINPUT, "preload: expected 0 (off) or 1 (start from the static equilibrium), got %d", on);
+    if (on && m->method != 3) {
+        rc_status st = rc_preload_scope(m, "the preload option (rc_model_set_preload, ricochet run --preload)", err);
+        if (st) return st;
+    }
+    m->preload = on;
+    return RC_OK;
+}
+
+int rc_model_preload(const rc_model *m) { return m ? m->preload : 0; }
 
 double rc_model_rtol(const rc_model *m) { return m ? m->rtol : NAN; }
 double rc_model_t_end(const rc_model *m) { return m ? m->tend : NAN; }

@@ -20,6 +20,9 @@
  *      assemble_rhs.c, assemble_jac.c) ---------------------------------- */
 /* Initial state vector [ny]. */
 void rc_initial_state(const rc_model *m, double *y);
+/* The gravity work state of y (time-varying gravity: -sum m g(0).x at the
+ * bodies' positions in y) set for a run that starts at y; none without one. */
+void rc_gravity_work_init(const rc_model *m, double *y);
 /* A state vector y (ny values) from the model's coordinates into the deck's:
  * the bodies' positions plus the model's origin (what the caller sees:
  * rc_run_options.y_end, rc_session_state, the results). */

@@ -38,8 +38,14 @@ void rc_initial_state(const rc_model *m, double *y)
     memset(y, 0, (size_t)m->ny * sizeof(double));
     for (int b = 0; b < m->nbody; b++)
         if (m->body_yadr[b] >= 0) memcpy(y + m->body_yadr[b], m->body_y0 + RC_NB * b, RC_NB * sizeof(double));
+    rc_gravity_work_init(m, y);
+}
+
+void rc_gravity_work_init(const rc_model *m, double *y)
+{
     /* time-varying gravity: its potential starts at -sum m g(0).x0 */
-    if (m->gwork_adr >= 0)
+    if (m->gwork_adr >= 0) {
+        y[m->gwork_adr] = 0.0;
         for (int b = 0; b < m->nbody; b++) {
             if (m->body_yadr[b] < 0) continue;
             double g[3];
@@ -47,6 +53,7 @@ void rc_initial_state(const rc_model *m, double *y)
             rc_gravity(m, b, 0.0, g);
             y[m->gwork_adr] -= m->body_mass[b] * (g[0] * (x[0] + o[0]) + g[1] * (x[1] + o[1]) + g[2] * (x[2] + o[2]));
         }
+    }
 }
 
 void rc_state_to_deck(const rc_model *m, double *y)

@@ -153,6 +153,9 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
                 m->ev_state == 1 ? "yes" : "no, events table only", m->ev_state);
     fprintf(f, "solver      %s BDF (max order %d), Newton, KLU; rtol %.3g\n",
             m->method == 2 ? "IDA (residual form, Method 2)" : "CVODE (Method 1)", m->max_order, m->rtol);
+    if (m->preload && m->method != 3)
+        fprintf(f, "            preload: the run starts at rest from the static equilibrium at t = 0 (KINSOL; "
+                   "/SOLVER Preload 1)\n");
     /* the tolerances in force: given on /SOLVER, or derived from the scales */
     const int au = m->tol_auto;
     if (au == 0) {

@@ -90,6 +90,18 @@ grep -q "static analysis" "$tmp/e" && grep -q "/JOINT/" "$tmp/e" && [ ! -e "$tmp
 "$bin" run validation/joint_pendulum/case.rad -o "$tmp/jc.nc" --method cvode > "$tmp/e" 2>&1; rc=$?
 grep -q "joints" "$tmp/e" && grep -q "IDA" "$tmp/e" && [ ! -e "$tmp/jc.nc" ] &&
     expect joints_on_cvode 2 $rc "($(head -c 160 "$tmp/e"))" || expect joints_on_cvode 2 99 "(exit $rc: $(head -c 160 "$tmp/e"))"
+# the preload (/SOLVER Preload, --preload): a dynamic run from the static
+# equilibrium says so; a model outside the static scope is refused at its card
+"$bin" run validation/preload_column/case.rad -o "$tmp/pl.nc" --t-end 0.1 --dt-out 0.05 > "$tmp/o" 2>&1; rc=$?
+grep -q "^preload: static equilibrium at t = 0" "$tmp/o" && [ -s "$tmp/pl.nc" ] &&
+    expect preload_runs 0 $rc "($(grep '^preload' "$tmp/o" | head -c 120))" ||
+    expect preload_runs 0 99 "(exit $rc: $(head -c 200 "$tmp/o"))"
+"$bin" run validation/preload_column/case.rad -o "$tmp/pn.nc" --t-end 0.1 --dt-out 0.05 --no-preload > "$tmp/o" 2>&1; rc=$?
+! grep -q "^preload:" "$tmp/o" && expect no_preload 0 $rc "" || expect no_preload 0 99 "(exit $rc: $(head -c 200 "$tmp/o"))"
+"$bin" run validation/joint_pendulum/case.rad -o "$tmp/pj.nc" --preload > "$tmp/e" 2>&1; rc=$?
+grep -q "card /JOINT/" "$tmp/e" && grep -q "preload" "$tmp/e" && [ ! -e "$tmp/pj.nc" ] &&
+    expect preload_refuses_joints 2 $rc "($(head -c 160 "$tmp/e"))" ||
+    expect preload_refuses_joints 2 99 "(exit $rc: $(head -c 200 "$tmp/e"))"
 # the demo ends at its end time exactly (the end time is the integrator's stop time)
 "$bin" run "$demo" -o "$tmp/end.nc" > "$tmp/o" 2>&1; rc=$?
 grep -q "simulated 1 s in" "$tmp/o" && expect end_time_exact 0 $rc "($(grep -o 'simulated [^,]*' "$tmp/o"))" ||

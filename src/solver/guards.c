@@ -206,11 +206,6 @@ static void sphere_centre(const rc_model *m, int s, const double *y, double *c)
     for (int k = 0; k < 3; k++) c[k] = x[k] + r[k];
 }
 
-/* An overlap of two boxes that no contact point carries, as a fraction of
- * the thinner box's half-thickness, beyond which they pass through each
- * other (box_box_depth). */
-#define RC_BOX_MISS_FRAC 0.01
-
 /* Box surface s at the state y: centre c, unit axes a[3][3] (rows) and
  * half-sizes h, global frame. */
 static void box_pose(const rc_model *m, int s, const double *y, double c[3], double a[3][3], double h[3])
@@ -370,24 +365,20 @@ int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, co
         /* two boxes: their overlap, whatever touches (box_box_depth) */
         if (m->inter_pair[i] == RC_PAIR_SEG_SEG && m->surf_kind[m->inter_sa[i]] == RC_SURF_BOX &&
             m->surf_kind[m->inter_sb[i]] == RC_SURF_BOX) {
-            /* the overlap the corners do not see, beyond RC_BOX_MISS_FRAC of
-             * the thinner box's half-thickness (a corner on a face gives
-             * the separating-axis depth itself) */
-            const double D = box_box_depth(m, i, y) + m->inter_gap[i], Pc = P > 0 ? P : 0.0;
-            const double *ea = m->surf_ext + RC_SURF_NEXT * m->inter_sa[i], *eb = m->surf_ext + RC_SURF_NEXT * m->inter_sb[i];
-            const double hmin = fmin(fmin(fmin(ea[0], ea[1]), ea[2]), fmin(fmin(eb[0], eb[1]), eb[2]));
-            const double lim = fmin(pb, RC_BOX_MISS_FRAC * hmin);
-            if (!(D - Pc <= lim) && !on[3]) {
+            /* the overlap of the two solids, whatever carries it, within the
+             * bound of the penetration (a corner on a face gives the
+             * separating-axis depth itself: then P is checked above) */
+            const double D = box_box_depth(m, i, y) + m->inter_gap[i];
+            if (!(D <= pb) && !on[3]) {
                 on[3] = 1;
-                if (violate(g, t, t, "box_overlap", m->inter_name[i], D - Pc, lim,
-                            "the boxes of %s overlap by %.6g m at t = %.9g s (separating-axis depth) while its "
-                            "corners see a penetration of %.6g m: an overlap of %.6g m that no contact point "
-                            "carries, beyond %.6g m (%g of the thinner box's half-thickness): an edge of one box "
+                if (violate(g, t, t, "box_overlap", m->inter_name[i], D, pb,
+                            "the boxes of %s overlap by %.6g m at t = %.9g s (separating-axis depth), beyond its "
+                            "bound %.6g m, while its corners see a penetration of %.6g m: an edge of one box "
                             "crosses an edge of the other with no corner inside a face, which the corner-to-face "
                             "contact does not see (docs/theory.md 2.7): the bodies pass through each other",
-                            m->inter_name[i], D, t, P, D - Pc, lim, RC_BOX_MISS_FRAC))
+                            m->inter_name[i], D, t, pb, P))
                     return 1;
-            } else if (D - Pc <= lim) {
+            } else if (D <= pb) {
                 on[3] = 0;
             }
         }

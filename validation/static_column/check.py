@@ -29,6 +29,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 import rcval  # noqa: E402
+from column import column_cards  # noqa: E402
 from deck import Deck  # noqa: E402
 
 N, M, R, K, G = 5, 1.0, 0.0625, 1.0e5, 9.81
@@ -44,25 +45,7 @@ def deck():
     d = Deck("static column of 5 spheres and a Hertz sphere under ramped gravity")
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e5 N/m")
     d.funct(2, [0.0, T_END], [0.0, 1.0], title="gravity ramp f(t) = t / t_end")
-    z = [R + 2.0 * R * i for i in range(N)]  # exact binary numbers: the gaps are exactly zero
-    d.nodes([(i + 1, 0.0, 0.0, z[i]) for i in range(N)] + [(N + 1, XH, 0.0, RH)])
-    for i in range(N):
-        d.rbody(i + 1, i + 1, M, [0.4 * M * R * R] * 3, grnod=i + 1, title=f"sphere {i + 1} (from the bottom)")
-    d.rbody(N + 1, N + 1, MH, [0.4 * MH * RH * RH] * 3, grnod=N + 1, title="Hertz sphere")
-    for i in range(N):
-        d.sphere(i + 1, i + 1, (0.0, 0.0, z[i]), R, title=f"sphere {i + 1}")
-    d.sphere(N + 1, N + 1, (XH, 0.0, RH), RH, title="Hertz sphere")
-    d.plane(FLOOR, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0")
-    for i in range(N + 1):
-        d.grnod(i + 1, [i + 1], title=f"sphere {i + 1}")
-    d.grnod(N + 2, list(range(1, N + 2)), title="all spheres")
-    # a frictionless column is laterally unsupported: held to the vertical
-    d.bcs(1, N + 2, "110 000", title="held to the vertical")
-    d.grav_fct(1, "Z", -G, 2)
-    d.type6(1, 1, FLOOR, 1, title="floor - sphere 1")
-    for i in range(1, N):
-        d.type6(i + 1, i, i + 1, 1, title=f"sphere {i} - sphere {i + 1}")
-    d.power(N + 1, N + 1, FLOOR, k=KH, m1=1.5, c=0.0, title="Hertz sphere - floor")
+    column_cards(d, N, R, M, MH, RH, KH, XH, FLOOR, lambda d: d.grav_fct(1, "Z", -G, 2))
     d.run(T_END, DT_OUT)
     d.solver(method=3)
     return d

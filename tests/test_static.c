@@ -315,6 +315,58 @@ static void test_static_stiffness_friction(void)
     free(text);
 }
 
+/* Hysteresis in the static residual (docs/theory.md 7.8): TYPE6 Iform 1
+ * (validation/static_hysteresis/case_iform1.rad: F_L = 1e5 P, Stiff 1e6,
+ * F_U = 8e4 (P - 2e-5)+) from F_h0 = 3.5 N at P_0 = 6e-5 m: the trial
+ * F_h0 + Stiff (P - P_0) on the Stiff line (ELASTIC, the state F_h), past
+ * the load curve (LOAD) and below the unload curve (UNLOAD), each with its
+ * branch and force, and the stiffness against central differences of the
+ * residual (on the Stiff line: the column of F_h times Stiff dP/du). */
+static void test_static_stiffness_hysteresis(void)
+{
+    rc_model *m = TU_LOAD_OK("validation/static_hysteresis/case_iform1.rad");
+    rc_data *d = m ? rc_data_new(m) : NULL;
+    double *y = m ? calloc((size_t)m->ny + 1, sizeof(double)) : NULL;
+    rc_static *s = d ? rc_static_new(m, d) : NULL;
+    ENSURE(!m || (d && y && s));
+    if (m && d && y && s) {
+        ENSURE(m->inter_iform[0] == 1 && m->inter_hidx[0] >= 0 && m->inter_stiff[0] == 1e6);
+        const int n = rc_static_size(s), a = m->body_yadr[m->inter_ba[0]];
+        double *r = calloc((size_t)n, sizeof(double)), *u = calloc((size_t)n, sizeof(double));
+        ENSURE(n == 6 && r && u);
+        /* dz of the sphere (P grows as z falls), the branch, the force */
+        const double dz[3] = {-1e-6, -5e-6, 1e-6};
+        const int want[3] = {RC_BR_ELASTIC, RC_BR_LOAD, RC_BR_UNLOAD};
+        const double fw[3] = {3.5 + 1e6 * 1e-6, 1e5 * 6.5e-5, 8e4 * (5.9e-5 - 2e-5)};
+        for (int c = 0; c < 3 && r && u; c++) {
+            rc_initial_state(m, y);
+            rc_modes_init(m, d, 0.5, y);
+            d->inter_mode[0] = RC_MODE_CLOSED;
+            d->inter_branch[0] = RC_BR_ELASTIC;
+            y[a + 2] -= 6e-5; /* P_0 = 6e-5 m */
+            y[m->inter_eadr[0] + m->inter_hidx[0]] = 3.5;
+            rc_static_set_start(s, y);
+            rc_static_set_friction_start(s, 0.5, y);
+            memset(u, 0, (size_t)n * sizeof(double));
+            u[2] = dz[c];
+            ENSURE(rc_static_residual(s, 0.5, u, r) == 0);
+            ENSURE(d->inter_branch[0] == want[c]);
+            /* the vertical residual: the contact's force on the sphere less
+             * its weight m g f(0.5), m = 1 kg, f(0.5) = 0.25 */
+            ENSURE_NEAR(r[2], fw[c] - 9.81 * 0.25, 1e-9, 1e-9);
+            const double err0 = stiffness_fd_error(s, 0.5, u);
+            if (!(err0 < 1e-6)) fprintf(stderr, "  hysteresis branch %d: stiffness error %.3g\n", want[c], err0);
+            ENSURE(err0 < 1e-6);
+        }
+        free(r);
+        free(u);
+    }
+    rc_static_free(s);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 /* Method 3 refuses what this version does not solve, naming the card. */
 static void test_static_scope(void)
 {
@@ -353,5 +405,6 @@ void suite_static(void)
 {
     RUN_TEST(test_static_stiffness_fd);
     RUN_TEST(test_static_stiffness_friction);
+    RUN_TEST(test_static_stiffness_hysteresis);
     RUN_TEST(test_static_scope);
 }

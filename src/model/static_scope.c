@@ -65,18 +65,15 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
             if (fr->card_id > 0) snprintf(fbuf, sizeof fbuf, "%s (/FRICTION/%d on it)", why, fr->card_id);
             else snprintf(fbuf, sizeof fbuf, "%s (its own friction fields)", why);
             what = fbuf;
-        } else if (m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0)
-            what = m->inter_iform[i] == 1 ? "TYPE6 Iform 1 (elasto-plastic hysteresis)"
-                                          : "TYPE6 Iform 2 (decoupled hardening hysteresis)";
-        else if (m->inter_oidx[i] >= 0)
+        } else if (m->inter_oidx[i] >= 0)
             what = "Inacti 5 (the gap offset state)";
         else if (m->inter_peidx[i] >= 0 || rc_pair_multi(m->inter_pair[i]))
             what = "pairs with several contact points (segment surfaces)";
         if (what)
             RC_RAISE(err, RC_EINPUT,
-                     RC_LOCFMT "card %s: " RC_STATIC_NOT " (%s); expected an elastic contact (TYPE6 Iform 0, "
+                     RC_LOCFMT "card %s: " RC_STATIC_NOT " (%s); expected a contact of TYPE6 (any Iform), "
                                "frictionless or with the stick-spring friction of TYPE6 Fric/Sfric or a /FRICTION "
-                               "Coulomb law; or the power law without friction) between spheres, planes, boxes or "
+                               "Coulomb law, or of the power law without friction, between spheres, planes, boxes or "
                                "cylinders, or %s",
                      RC_LOC(m->inter_loc[i]), m->inter_name[i], what, how, alt);
     }
@@ -101,6 +98,15 @@ rc_status rc_preload_scope(const rc_model *m, const char *how, rc_error *err)
              "analysis' scope", how);
     rc_status st = rc_static_scope_alt(m, why, "no preload (/SOLVER Preload 0)", err);
     if (st) return st;
+    /* the dynamic run starts from the equilibrium's positions and friction
+     * forces; a hysteresis state (TYPE6 Iform 1, 2) is not carried over */
+    for (int i = 0; i < m->ninter; i++)
+        if (m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card %s: a preload, asked for by %s, does not support TYPE6 Iform %d (its hysteresis "
+                               "state is not carried into the dynamic run in this version); expected Iform 0, or no "
+                               "preload (/SOLVER Preload 0)",
+                     RC_LOC(m->inter_loc[i]), m->inter_name[i], how, m->inter_iform[i]);
     /* the dynamic run starts from the equilibrium at rest */
     for (int b = 0; b < m->nbody; b++) {
         if (m->body_yadr[b] < 0) continue;

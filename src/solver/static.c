@@ -28,6 +28,11 @@
  * beyond friction (a contact sliding where Newton fails, at the smallest
  * substep) is an error naming the interface and the load time.
  *
+ * Hysteresis (TYPE6 Iform 1, 2; one contact point): the same over the
+ * substeps, the trial F_h0 + Stiff (P - P_0) held between the unload and
+ * the load curves (hyst_trial); on the Stiff line the stiffness adds the
+ * engine's columns of F_h times Stiff dP/du (hyst_stiffness).
+ *
  * The results file is that of a dynamic run (drive.c's rc_bk_open_output and
  * rc_bk_write_frame), one record per output time, velocities zero; the mode
  * flips (contact, stick/slip) go to its events table.
@@ -50,6 +55,7 @@
 #include "engine/assembly/bounds.h"
 #include "engine/events/events.h"
 #include "model/model.h"
+#include "model/power.h"
 #include "output/output.h"
 #include "solver/integrator.h"
 #include "solver/solver.h"
@@ -112,6 +118,14 @@ struct rc_static {
     double *fr_pa, *fr_pb; /* [3 ninter] the material points of a and b [m] */
     double *fr_xa, *fr_xb; /* [3 ninter] where they were at the substep's start [m] */
     double fr_band;   /* the force rounding of the slip test [N] */
+    /* hysteresis (TYPE6 Iform 1, 2; one contact point), the return mapping
+     * (docs/theory.md 7.8): per interface, from the substep's start, the
+     * force F_h0 and the penetration P_0; whether the trial at the last
+     * evaluation lies on the Stiff line (the stiffness then adds the
+     * column of F_h times Stiff dP/du) */
+    char *hy_on;      /* [ninter] 1: hysteresis by the return mapping */
+    double *hy_f0, *hy_p0; /* [ninter] F_h0 [N], P_0 [m] */
+    char *hy_el;      /* [ninter] 1: on the Stiff line (branch ELASTIC) */
     double *ext;      /* [36 nblk] friction's part of the stiffness (rate rows, unknown columns) */
 };
 
@@ -173,7 +187,7 @@ void rc_static_free(rc_static *s)
     if (!s) return;
     void *p[] = {s->fb, s->slot, s->ys, s->y, s->f, s->jv, s->held, s->us, s->fs, s->kb, s->bsize, s->sslot, s->brow, s->bcol, s->bfirst,
                  s->colptr, s->rowind, s->ent_blk, s->ent_rc, s->raw, s->kval, s->fr_on, s->fr_t0, s->fr_pa, s->fr_pb,
-                 s->fr_xa, s->fr_xb, s->ext};
+                 s->fr_xa, s->fr_xb, s->ext, s->hy_on, s->hy_f0, s->hy_p0, s->hy_el};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     free(s);
 }
@@ -299,8 +313,13 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     s->fr_pb = calloc(3 * ni1, sizeof(double));
     s->fr_xa = calloc(3 * ni1, sizeof(double));
     s->fr_xb = calloc(3 * ni1, sizeof(double));
+    s->hy_on = calloc(ni1, 1);
+    s->hy_f0 = calloc(ni1, sizeof(double));
+    s->hy_p0 = calloc(ni1, sizeof(double));
+    s->hy_el = calloc(ni1, 1);
     if (!s->brow || !s->bcol || !s->bfirst || !s->colptr || !s->rowind || !s->raw || !s->kval || !s->ext ||
-        !s->fr_on || !s->fr_t0 || !s->fr_pa || !s->fr_pb || !s->fr_xa || !s->fr_xb) {
+        !s->fr_on || !s->fr_t0 || !s->fr_pa || !s->fr_pb || !s->fr_xa || !s->fr_xb || !s->hy_on || !s->hy_f0 ||
+        !s->hy_p0 || !s->hy_el) {
         free(key);
         rc_static_free(s);
         return NULL;
@@ -334,8 +353,11 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
         }
     }
     free(key);
-    for (int i = 0; i < m->ninter; i++)
+    for (int i = 0; i < m->ninter; i++) {
         s->fr_on[i] = !rc_inter_frictionless(m, i) && rc_static_friction_ok(&m->inter_fr[i]);
+        s->hy_on[i] = m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0 && m->inter_hidx[i] >= 0 &&
+                      m->inter_peidx[i] < 0 && !rc_pair_multi(m->inter_pair[i]);
+    }
     /* the slip test's rounding: that of the loads (as the active set's) */
     for (int i = 0; i < s->n; i++)
         if (i % 6 < 3) s->fr_band = fmax(s->fr_band, 1e3 * DBL_EPSILON * s->fs[i]);
@@ -418,6 +440,17 @@ void rc_static_set_friction_start(rc_static *s, double t, const double *y0)
     const rc_model *m = s->m;
     rc_data *d = s->d;
     for (int i = 0; i < m->ninter; i++) {
+        if (s->hy_on[i]) {
+            /* hysteresis: the force and the penetration at the start (an
+             * open contact has no history: it closes on the load curve) */
+            s->hy_f0[i] = s->hy_p0[i] = 0.0;
+            if (d->inter_mode[i] == RC_MODE_CLOSED) {
+                rc_inter_report r;
+                rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], 0, t, y0, &r);
+                s->hy_f0[i] = r.fload;
+                s->hy_p0[i] = r.p;
+            }
+        }
         if (!s->fr_on[i]) continue;
         const int closed = d->inter_mode[i] == RC_MODE_CLOSED, at = m->inter_eadr[i] + m->inter_fr[i].tidx;
         for (int k = 0; k < 3; k++) s->fr_t0[3 * i + k] = closed ? y0[at + k] : 0.0;
@@ -443,6 +476,46 @@ void rc_static_set_friction_start(rc_static *s, double t, const double *y0)
         }
     }
     s->fr_ready = 1;
+}
+
+/* The hysteresis states at the unknowns u, into s->y (after state_at):
+ * each closed contact's trial force F_h0 + Stiff (P - P_0), the Stiff line
+ * from the substep's start, held between the unload and the load curves at
+ * P (F_U <= F <= F_L): the law of docs/theory.md 3.2 over a monotone
+ * change of P (F = min(F_L, F_prev + Stiff dP) loading, max(F_U, ...)
+ * unloading). On the load curve the branch is LOAD, on the unload curve
+ * UNLOAD (the engine's force is the curve's, its derivative exact),
+ * between them ELASTIC with the state F_h = the trial; an open contact's
+ * state is zero, on the load curve (no history). */
+static void hyst_trial(rc_static *s, double t)
+{
+    const rc_model *m = s->m;
+    rc_data *d = s->d;
+    if (!s->fr_ready) return;
+    for (int i = 0; i < m->ninter; i++) {
+        if (!s->hy_on[i]) continue;
+        double *fh = s->y + m->inter_eadr[i] + m->inter_hidx[i];
+        s->hy_el[i] = 0;
+        if (d->inter_mode[i] != RC_MODE_CLOSED) {
+            *fh = 0.0;
+            d->inter_branch[i] = RC_BR_LOAD;
+            continue;
+        }
+        rc_inter_report r;
+        rc_inter_report_eval(m, i, RC_MODE_CLOSED, RC_BR_ELASTIC, d->inter_track[i], 0, t, s->y, &r);
+        const double ftr = s->hy_f0[i] + m->inter_stiff[i] * (r.p - s->hy_p0[i]);
+        if (ftr >= r.fl) {
+            d->inter_branch[i] = RC_BR_LOAD;
+            *fh = r.fl;
+        } else if (ftr <= r.fu) {
+            d->inter_branch[i] = RC_BR_UNLOAD;
+            *fh = r.fu;
+        } else {
+            d->inter_branch[i] = RC_BR_ELASTIC;
+            *fh = ftr;
+            s->hy_el[i] = 1;
+        }
+    }
 }
 
 /* The friction states at the unknowns u, into s->y (after state_at): each
@@ -482,6 +555,7 @@ static void commit_state(rc_static *s, double t, const double *u, double *y)
     const rc_model *m = s->m;
     rc_data *d = s->d;
     state_at(s, u, NULL);
+    hyst_trial(s, t);
     fric_trial(s, t, u);
     for (int i = 0; i < m->ninter; i++) {
         if (!s->fr_on[i] || !s->fr_ready || d->inter_mode[i] != RC_MODE_CLOSED) continue;
@@ -537,10 +611,63 @@ static int fric_stiffness(rc_static *s, const double *u)
     return 0;
 }
 
+/* Hysteresis' part of the stiffness at u, added to s->ext (after
+ * fric_stiffness): for a contact on its Stiff line (ELASTIC: the force is
+ * the state F_h), the engine's derivatives of the rates in F_h times
+ * dF_h/du = Stiff dP/du, with dP/du = n . [I, dp_a/dtheta] for body a and
+ * -n . [I, dp_b/dtheta] for body b: the displacements of the two material
+ * points at the contact point along the normal n (from a to b; the
+ * envelope theorem of docs/theory.md 2: the rate of P is that of the
+ * material points at the contact point). */
+static int hyst_stiffness(rc_static *s, double t, const double *u)
+{
+    const rc_model *m = s->m;
+    rc_data *d = s->d;
+    for (int i = 0; i < m->ninter; i++) {
+        if (!s->fr_ready || !s->hy_on[i] || !s->hy_el[i] || d->inter_mode[i] != RC_MODE_CLOSED) continue;
+        rc_inter_report r;
+        rc_inter_report_eval(m, i, RC_MODE_CLOSED, RC_BR_ELASTIC, d->inter_track[i], 0, t, s->y, &r);
+        const int qs[2] = {body_slot(s, m->inter_ba[i]), body_slot(s, m->inter_bb[i])};
+        double g[2][6]; /* dP/du of each side */
+        for (int side = 0; side < 2; side++) {
+            if (qs[side] < 0) continue;
+            const double *x = s->y + m->body_yadr[s->fb[qs[side]]];
+            const double v[3] = {r.point[0] - x[0], r.point[1] - x[1], r.point[2] - x[2]};
+            const double complex qc[4] = {x[3], -x[4], -x[5], -x[6]}; /* global -> body */
+            double complex o[3];
+            qrot(qc, v, o);
+            const double rb[3] = {creal(o[0]), creal(o[1]), creal(o[2])};
+            double p[3], D[9];
+            mpoint(s, qs[side], u, rb, p, D);
+            const double sg = side ? -1.0 : 1.0;
+            for (int c = 0; c < 3; c++) {
+                g[side][c] = sg * r.normal[c];
+                g[side][3 + c] = sg * (r.normal[0] * D[c] + r.normal[1] * D[3 + c] + r.normal[2] * D[6 + c]);
+            }
+        }
+        const int j = m->inter_eadr[i] + m->inter_hidx[i];
+        for (int64_t p = m->jac_colptr[j]; p < m->jac_colptr[j + 1]; p++) {
+            int kr;
+            const int rs = state_body(s, (int)m->jac_rowind[p], &kr);
+            if (rs < 0 || kr < 7 || s->jv[p] == 0.0) continue;
+            for (int side = 0; side < 2; side++) {
+                if (qs[side] < 0) continue;
+                const int blk = find_block(s, rs, qs[side]);
+                if (blk < 0) return 1;
+                double *E = s->ext + 36 * (size_t)blk + 6 * (kr - 7);
+                const double v = s->jv[p] * m->inter_stiff[i];
+                for (int c = 0; c < 6; c++) E[c] += v * g[side][c];
+            }
+        }
+    }
+    return 0;
+}
+
 int rc_static_residual(rc_static *s, double t, const double *u, double *r)
 {
     const rc_model *m = s->m;
     state_at(s, u, NULL);
+    hyst_trial(s, t);
     fric_trial(s, t, u);
     s->nfev++;
     if (rc_assemble_rhs(m, s->d, t, s->y, s->f)) return 1;
@@ -566,9 +693,10 @@ static int stiffness(rc_static *s, double t, const double *u)
     double *dq = malloc((12 * (size_t)s->nb + 1) * sizeof(double));
     if (!dq) return 1;
     state_at(s, u, dq);
+    hyst_trial(s, t);
     fric_trial(s, t, u);
     s->njev++;
-    if (rc_assemble_jac(m, s->d, t, s->y, s->jv) || fric_stiffness(s, u)) {
+    if (rc_assemble_jac(m, s->d, t, s->y, s->jv) || fric_stiffness(s, u) || hyst_stiffness(s, t, u)) {
         free(dq);
         return 1;
     }

@@ -367,6 +367,71 @@ static void test_static_stiffness_hysteresis(void)
     rc_model_free(m);
 }
 
+/* The whole of a text file, malloc'd (NULL: not read). */
+static char *read_text(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    char *t = NULL;
+    long n = fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
+    if (n >= 0 && fseek(f, 0, SEEK_SET) == 0 && (t = malloc((size_t)n + 1)) != NULL) {
+        if (fread(t, 1, (size_t)n, f) != (size_t)n) {
+            free(t);
+            t = NULL;
+        } else {
+            t[n] = '\0';
+        }
+    }
+    fclose(f);
+    return t;
+}
+
+/* Several contact points (docs/theory.md 7.8): validation/static_boxes'
+ * box on a box on a floor without its /BCS, both boxes pressed in and
+ * tilted (a single deepest corner in each contact), the law at the deepest
+ * point's penetration (P_e := P) shared over the corners: the stiffness
+ * (the engine's P_e columns times dP/du added) against central differences
+ * of the residual. */
+static void test_static_stiffness_boxes(void)
+{
+    char *text = read_text("validation/static_boxes/case.rad");
+    ENSURE(text != NULL);
+    if (!text) return;
+    char *b = strstr(text, "/BCS/1"), *e = b ? strstr(b + 1, "\n/") : NULL;
+    ENSURE(b && e);
+    if (b && e) memmove(b, e + 1, strlen(e + 1) + 1);
+    rc_error err;
+    rc_model *m = tu_compile_text(text, "static_boxes_jac.rad", &err);
+    if (!m) fprintf(stderr, "  %s\n", err.msg);
+    ENSURE(m != NULL);
+    rc_data *d = m ? rc_data_new(m) : NULL;
+    double *y = m ? calloc((size_t)m->ny + 1, sizeof(double)) : NULL;
+    rc_static *s = d ? rc_static_new(m, d) : NULL;
+    ENSURE(!m || (d && y && s));
+    if (m && d && y && s) {
+        const int n = rc_static_size(s);
+        ENSURE(n == 12 && m->inter_peidx[0] >= 0 && m->inter_peidx[1] >= 0);
+        double u[12] = {0}, r[12];
+        rc_initial_state(m, y);
+        rc_modes_init(m, d, 0.5, y);
+        d->inter_mode[0] = d->inter_mode[1] = RC_MODE_CLOSED;
+        rc_static_set_start(s, y);
+        rc_static_set_friction_start(s, 0.5, y);
+        /* lower box 30 um down, upper 50 um; tilts of 1e-4 rad */
+        const double du[12] = {1e-6, -2e-6, -3e-5, 1e-4, -0.7e-4, 0.3e-4, 2e-6, 1e-6, -5e-5, -0.8e-4, 1.2e-4, -0.5e-4};
+        memcpy(u, du, sizeof u);
+        ENSURE(n != 12 || rc_static_residual(s, 0.5, u, r) == 0);
+        const double err0 = n == 12 ? stiffness_fd_error(s, 0.5, u) : INFINITY;
+        if (!(err0 < 1e-6)) fprintf(stderr, "  boxes: stiffness error %.3g\n", err0);
+        ENSURE(err0 < 1e-6);
+    }
+    rc_static_free(s);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+    free(text);
+}
+
 /* Method 3 refuses what this version does not solve, naming the card. */
 static void test_static_scope(void)
 {
@@ -406,5 +471,6 @@ void suite_static(void)
     RUN_TEST(test_static_stiffness_fd);
     RUN_TEST(test_static_stiffness_friction);
     RUN_TEST(test_static_stiffness_hysteresis);
+    RUN_TEST(test_static_stiffness_boxes);
     RUN_TEST(test_static_scope);
 }

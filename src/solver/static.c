@@ -126,6 +126,9 @@ struct rc_static {
     char *hy_on;      /* [ninter] 1: hysteresis by the return mapping */
     double *hy_f0, *hy_p0; /* [ninter] F_h0 [N], P_0 [m] */
     char *hy_el;      /* [ninter] 1: on the Stiff line (branch ELASTIC) */
+    /* several contact points (docs/theory.md 2.7): the law's penetration
+     * P_e is P itself, the deepest point's, in an equilibrium */
+    char *pe_on;      /* [ninter] 1: P_e set to P */
     double *ext;      /* [36 nblk] friction's part of the stiffness (rate rows, unknown columns) */
 };
 
@@ -187,7 +190,7 @@ void rc_static_free(rc_static *s)
     if (!s) return;
     void *p[] = {s->fb, s->slot, s->ys, s->y, s->f, s->jv, s->held, s->us, s->fs, s->kb, s->bsize, s->sslot, s->brow, s->bcol, s->bfirst,
                  s->colptr, s->rowind, s->ent_blk, s->ent_rc, s->raw, s->kval, s->fr_on, s->fr_t0, s->fr_pa, s->fr_pb,
-                 s->fr_xa, s->fr_xb, s->ext, s->hy_on, s->hy_f0, s->hy_p0, s->hy_el};
+                 s->fr_xa, s->fr_xb, s->ext, s->hy_on, s->hy_f0, s->hy_p0, s->hy_el, s->pe_on};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     free(s);
 }
@@ -317,9 +320,10 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     s->hy_f0 = calloc(ni1, sizeof(double));
     s->hy_p0 = calloc(ni1, sizeof(double));
     s->hy_el = calloc(ni1, 1);
+    s->pe_on = calloc(ni1, 1);
     if (!s->brow || !s->bcol || !s->bfirst || !s->colptr || !s->rowind || !s->raw || !s->kval || !s->ext ||
         !s->fr_on || !s->fr_t0 || !s->fr_pa || !s->fr_pb || !s->fr_xa || !s->fr_xb || !s->hy_on || !s->hy_f0 ||
-        !s->hy_p0 || !s->hy_el) {
+        !s->hy_p0 || !s->hy_el || !s->pe_on) {
         free(key);
         rc_static_free(s);
         return NULL;
@@ -357,6 +361,7 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
         s->fr_on[i] = !rc_inter_frictionless(m, i) && rc_static_friction_ok(&m->inter_fr[i]);
         s->hy_on[i] = m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0 && m->inter_hidx[i] >= 0 &&
                       m->inter_peidx[i] < 0 && !rc_pair_multi(m->inter_pair[i]);
+        s->pe_on[i] = rc_pair_multi(m->inter_pair[i]) && m->inter_peidx[i] >= 0;
     }
     /* the slip test's rounding: that of the loads (as the active set's) */
     for (int i = 0; i < s->n; i++)
@@ -491,6 +496,17 @@ static void hyst_trial(rc_static *s, double t)
 {
     const rc_model *m = s->m;
     rc_data *d = s->d;
+    /* several contact points: the law at the deepest point's penetration
+     * (P_e = P; 0 when open) */
+    for (int i = 0; i < m->ninter; i++) {
+        if (!s->pe_on[i]) continue;
+        double *pe = s->y + m->inter_eadr[i] + m->inter_peidx[i];
+        *pe = 0.0;
+        if (d->inter_mode[i] != RC_MODE_CLOSED) continue;
+        rc_inter_report r;
+        rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], 0, t, s->y, &r);
+        *pe = r.p;
+    }
     if (!s->fr_ready) return;
     for (int i = 0; i < m->ninter; i++) {
         if (!s->hy_on[i]) continue;
@@ -611,54 +627,78 @@ static int fric_stiffness(rc_static *s, const double *u)
     return 0;
 }
 
-/* Hysteresis' part of the stiffness at u, added to s->ext (after
- * fric_stiffness): for a contact on its Stiff line (ELASTIC: the force is
- * the state F_h), the engine's derivatives of the rates in F_h times
- * dF_h/du = Stiff dP/du, with dP/du = n . [I, dp_a/dtheta] for body a and
- * -n . [I, dp_b/dtheta] for body b: the displacements of the two material
- * points at the contact point along the normal n (from a to b; the
- * envelope theorem of docs/theory.md 2: the rate of P is that of the
- * material points at the contact point). */
-static int hyst_stiffness(rc_static *s, double t, const double *u)
+/* The gradient of the penetration P of interface i at u, dP/du, per side
+ * (a, b; g[side] the 6 unknowns of its slot qs[side], -1: fixed):
+ * n . [I, dp_a/dtheta_a] for body a and -n . [I, dp_b/dtheta_b] for body b,
+ * the displacements of the two material points at the contact point along
+ * the normal n (from a to b): the rate of P is that of the material points
+ * there (the envelope theorem of docs/theory.md 2; with several contact
+ * points the deepest one's, whose P is the interface's). */
+static void pen_gradient(rc_static *s, int i, double t, const double *u, int qs[2], double g[2][6])
+{
+    const rc_model *m = s->m;
+    rc_data *d = s->d;
+    rc_inter_report r;
+    rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], 0, t, s->y, &r);
+    qs[0] = body_slot(s, m->inter_ba[i]);
+    qs[1] = body_slot(s, m->inter_bb[i]);
+    for (int side = 0; side < 2; side++) {
+        if (qs[side] < 0) continue;
+        const double *x = s->y + m->body_yadr[s->fb[qs[side]]];
+        const double v[3] = {r.point[0] - x[0], r.point[1] - x[1], r.point[2] - x[2]};
+        const double complex qc[4] = {x[3], -x[4], -x[5], -x[6]}; /* global -> body */
+        double complex o[3];
+        qrot(qc, v, o);
+        const double rb[3] = {creal(o[0]), creal(o[1]), creal(o[2])};
+        double p[3], D[9];
+        mpoint(s, qs[side], u, rb, p, D);
+        const double sg = side ? -1.0 : 1.0;
+        for (int c = 0; c < 3; c++) {
+            g[side][c] = sg * r.normal[c];
+            g[side][3 + c] = sg * (r.normal[0] * D[c] + r.normal[1] * D[3 + c] + r.normal[2] * D[6 + c]);
+        }
+    }
+}
+
+/* Adds to s->ext the engine's column of state j (its rate rows) times
+ * f dP/du (pen_gradient's qs, g): 0, or 1 when a block is missing. */
+static int add_state_column(rc_static *s, int j, double f, const int qs[2], double g[2][6])
+{
+    const rc_model *m = s->m;
+    for (int64_t p = m->jac_colptr[j]; p < m->jac_colptr[j + 1]; p++) {
+        int kr;
+        const int rs = state_body(s, (int)m->jac_rowind[p], &kr);
+        if (rs < 0 || kr < 7 || s->jv[p] == 0.0) continue;
+        for (int side = 0; side < 2; side++) {
+            if (qs[side] < 0) continue;
+            const int blk = find_block(s, rs, qs[side]);
+            if (blk < 0) return 1;
+            double *E = s->ext + 36 * (size_t)blk + 6 * (kr - 7);
+            const double v = s->jv[p] * f;
+            for (int c = 0; c < 6; c++) E[c] += v * g[side][c];
+        }
+    }
+    return 0;
+}
+
+/* The parts of the stiffness at u that the law's own states carry, added
+ * to s->ext (after fric_stiffness): a contact on its Stiff line
+ * (hysteresis ELASTIC: the force is the state F_h) adds the engine's
+ * columns of F_h times dF_h/du = Stiff dP/du; a contact of several points
+ * the columns of P_e times dP_e/du = dP/du (P_e = P, hyst_trial). */
+static int law_stiffness(rc_static *s, double t, const double *u)
 {
     const rc_model *m = s->m;
     rc_data *d = s->d;
     for (int i = 0; i < m->ninter; i++) {
-        if (!s->fr_ready || !s->hy_on[i] || !s->hy_el[i] || d->inter_mode[i] != RC_MODE_CLOSED) continue;
-        rc_inter_report r;
-        rc_inter_report_eval(m, i, RC_MODE_CLOSED, RC_BR_ELASTIC, d->inter_track[i], 0, t, s->y, &r);
-        const int qs[2] = {body_slot(s, m->inter_ba[i]), body_slot(s, m->inter_bb[i])};
-        double g[2][6]; /* dP/du of each side */
-        for (int side = 0; side < 2; side++) {
-            if (qs[side] < 0) continue;
-            const double *x = s->y + m->body_yadr[s->fb[qs[side]]];
-            const double v[3] = {r.point[0] - x[0], r.point[1] - x[1], r.point[2] - x[2]};
-            const double complex qc[4] = {x[3], -x[4], -x[5], -x[6]}; /* global -> body */
-            double complex o[3];
-            qrot(qc, v, o);
-            const double rb[3] = {creal(o[0]), creal(o[1]), creal(o[2])};
-            double p[3], D[9];
-            mpoint(s, qs[side], u, rb, p, D);
-            const double sg = side ? -1.0 : 1.0;
-            for (int c = 0; c < 3; c++) {
-                g[side][c] = sg * r.normal[c];
-                g[side][3 + c] = sg * (r.normal[0] * D[c] + r.normal[1] * D[3 + c] + r.normal[2] * D[6 + c]);
-            }
-        }
-        const int j = m->inter_eadr[i] + m->inter_hidx[i];
-        for (int64_t p = m->jac_colptr[j]; p < m->jac_colptr[j + 1]; p++) {
-            int kr;
-            const int rs = state_body(s, (int)m->jac_rowind[p], &kr);
-            if (rs < 0 || kr < 7 || s->jv[p] == 0.0) continue;
-            for (int side = 0; side < 2; side++) {
-                if (qs[side] < 0) continue;
-                const int blk = find_block(s, rs, qs[side]);
-                if (blk < 0) return 1;
-                double *E = s->ext + 36 * (size_t)blk + 6 * (kr - 7);
-                const double v = s->jv[p] * m->inter_stiff[i];
-                for (int c = 0; c < 6; c++) E[c] += v * g[side][c];
-            }
-        }
+        if (d->inter_mode[i] != RC_MODE_CLOSED) continue;
+        const int hy = s->fr_ready && s->hy_on[i] && s->hy_el[i];
+        if (!hy && !s->pe_on[i]) continue;
+        int qs[2];
+        double g[2][6];
+        pen_gradient(s, i, t, u, qs, g);
+        if (hy && add_state_column(s, m->inter_eadr[i] + m->inter_hidx[i], m->inter_stiff[i], qs, g)) return 1;
+        if (s->pe_on[i] && add_state_column(s, m->inter_eadr[i] + m->inter_peidx[i], 1.0, qs, g)) return 1;
     }
     return 0;
 }
@@ -696,7 +736,7 @@ static int stiffness(rc_static *s, double t, const double *u)
     hyst_trial(s, t);
     fric_trial(s, t, u);
     s->njev++;
-    if (rc_assemble_jac(m, s->d, t, s->y, s->jv) || fric_stiffness(s, u) || hyst_stiffness(s, t, u)) {
+    if (rc_assemble_jac(m, s->d, t, s->y, s->jv) || fric_stiffness(s, u) || law_stiffness(s, t, u)) {
         free(dq);
         return 1;
     }
@@ -799,7 +839,7 @@ static int kin_jac(N_Vector u, N_Vector fu, SUNMatrix A, void *user, N_Vector t1
             if (s->rowind[p] == i) pd = p;
         }
         if (s->held[i] || pd < 0 || cmax > RC_STATIC_FTOL * ks || !(fabs(r[i]) > RC_STATIC_FTOL * s->fs[i])) continue;
-        v[pd] = fabs(r[i]) / s->us[i];
+        v[pd] = -fabs(r[i]) / s->us[i];
     }
     return 0;
 }

@@ -248,7 +248,11 @@ for sig in INT TERM HUP; do
     # process group, and a second signal kills at once by design)
     # the SIGINT run shows its progress: stderr is a file, so a line every 10 s
     # (under valgrind the start is slower: wait for that line, 60 s at most)
-    "$bin" run "$tmp/long.rad" -o "$tmp/long_$sig.nc" $([ $sig != INT ] && echo -q) > "$tmp/e" 2>&1 &
+    # (SIGHUP restored to its default: a signal ignored when this script
+    # started, as under nohup, stays ignored in its children, and ricochet
+    # keeps an ignored SIGHUP ignored by design)
+    /usr/bin/python3 -c 'import os, signal, sys; signal.signal(signal.SIGHUP, signal.SIG_DFL); os.execv(sys.argv[1], sys.argv[1:])' \
+        "$bin" run "$tmp/long.rad" -o "$tmp/long_$sig.nc" $([ $sig != INT ] && echo -q) > "$tmp/e" 2>&1 &
     pid=$!
     # the run has started (the file is created after the compile; slower
     # under valgrind), then 2 s of integration

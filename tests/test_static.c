@@ -432,6 +432,52 @@ static void test_static_stiffness_boxes(void)
     free(text);
 }
 
+/* Friction per contact point (docs/theory.md 7.8): validation/static_boxes'
+ * case_incline.rad (a box on a floor, TYPE6 Fric 0.3 with Stiff 2e5 on its
+ * 8 corners; gravity tilted), pressed in and tilted, each corner's unit
+ * force from a start value: all four bottom corners sticking, then pushed
+ * past the limit (sliding): the stiffness (the engine's columns of each
+ * corner's state times -K_t d(p_a - p_b)/du) against central differences
+ * of the residual, and the corners' modes. */
+static void test_static_stiffness_point_friction(void)
+{
+    rc_model *m = TU_LOAD_OK("validation/static_boxes/case_incline.rad");
+    rc_data *d = m ? rc_data_new(m) : NULL;
+    double *y = m ? calloc((size_t)m->ny + 1, sizeof(double)) : NULL;
+    rc_static *s = d ? rc_static_new(m, d) : NULL;
+    ENSURE(!m || (d && y && s));
+    if (m && d && y && s) {
+        const int n = rc_static_size(s), npt = m->inter_npt[0];
+        ENSURE(n == 6 && npt == 8 && m->inter_pst[0] == 3);
+        double u[6], r[6];
+        for (int c = 0; c < 2 && n == 6; c++) {
+            rc_initial_state(m, y);
+            rc_modes_init(m, d, 0.5, y);
+            d->inter_mode[0] = RC_MODE_CLOSED;
+            /* every corner's unit force 1 N along x at the start */
+            for (int j = 0; j < npt; j++) y[m->inter_eadr[0] + m->inter_ns[0] + 3 * j] = 1.0;
+            rc_static_set_start(s, y);
+            rc_static_set_friction_start(s, 0.5, y);
+            /* 20 um in, tilts of 1e-4 rad; c = 1: 1 mm along x (200 N of
+             * the unit spring, past the limit) */
+            const double du[6] = {c ? -1e-3 : 2e-6, -1e-6, -2e-5, 1e-4, -0.6e-4, 0.3e-4};
+            memcpy(u, du, sizeof u);
+            ENSURE(rc_static_residual(s, 0.5, u, r) == 0);
+            int nslip = 0;
+            for (int j = 0; j < npt; j++) nslip += d->pt_slip[m->inter_pbase[0] + j];
+            printf("    case %d: %d corners sliding of %d\n", c, nslip, npt);
+            ENSURE(c ? nslip >= 1 : nslip == 0);
+            const double err0 = stiffness_fd_error(s, 0.5, u);
+            if (!(err0 < 1e-6)) fprintf(stderr, "  point friction (%s): stiffness error %.3g\n", c ? "slip" : "stick", err0);
+            ENSURE(err0 < 1e-6);
+        }
+    }
+    rc_static_free(s);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 /* Method 3 refuses what this version does not solve, naming the card. */
 static void test_static_scope(void)
 {
@@ -472,5 +518,6 @@ void suite_static(void)
     RUN_TEST(test_static_stiffness_friction);
     RUN_TEST(test_static_stiffness_hysteresis);
     RUN_TEST(test_static_stiffness_boxes);
+    RUN_TEST(test_static_stiffness_point_friction);
     RUN_TEST(test_static_scope);
 }

@@ -23,7 +23,7 @@
  * isotropic, unfiltered, not exact stick. */
 int rc_static_friction_ok(const rc_fric *fr)
 {
-    if (fr->exact || fr->form != RC_FF_INCREMENTAL || fr->tidx < 0 || fr->ortho || fr->tau > 0 || !(fr->kt > 0))
+    if (fr->exact || fr->form != RC_FF_INCREMENTAL || fr->ortho || fr->tau > 0 || !(fr->kt > 0))
         return 0;
     if (fr->kind == RC_FK_TYPE6) return fr->fct_fv < 0;
     if (fr->kind == RC_FK_CARD) return fr->ifric == 0;
@@ -67,9 +67,9 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
             what = fbuf;
         } else if (m->inter_oidx[i] >= 0)
             what = "Inacti 5 (the gap offset state)";
-        else if (rc_pair_multi(m->inter_pair[i]) && !rc_inter_frictionless(m, i))
-            what = "friction per contact point (a pair with several contact points: segment surfaces, a box "
-                   "against a plane or a box)";
+        else if (rc_pair_multi(m->inter_pair[i]) && !rc_inter_frictionless(m, i) &&
+                 !(rc_pair_nodes(m->inter_pair[i]) && m->inter_npt[i] > 0 && m->inter_pst[i] == 3))
+            what = "friction on a sphere against a segment surface";
         else if (rc_pair_multi(m->inter_pair[i]) && m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0)
             what = "hysteresis (TYPE6 Iform 1, 2) on a pair with several contact points (segment surfaces, a box "
                    "against a plane or a box)";

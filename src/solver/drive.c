@@ -649,8 +649,16 @@ static void preload_friction(const rc_model *m, rc_data *d, const rc_preload *pr
         if (!pre->closed[i] || d->inter_mode[i] != RC_MODE_CLOSED || rc_inter_frictionless(m, i) ||
             !rc_static_friction_ok(fr))
             continue;
-        const int at = m->inter_eadr[i] + fr->tidx;
-        memcpy(y + at, pre->y + at, 3 * sizeof(double));
+        if (fr->tidx >= 0) {
+            const int at = m->inter_eadr[i] + fr->tidx;
+            memcpy(y + at, pre->y + at, 3 * sizeof(double));
+        }
+        /* friction per contact point: each point's unit force, sticking */
+        for (int j = 0; j < m->inter_npt[i]; j++) {
+            const int at = m->inter_eadr[i] + m->inter_ns[i] + m->inter_pst[i] * j;
+            memcpy(y + at, pre->y + at, 3 * sizeof(double));
+            d->pt_slip[m->inter_pbase[i] + j] = 0;
+        }
         d->inter_slip[i] = 0;
     }
 }

@@ -127,7 +127,7 @@ rc_guards *rc_guards_new(const rc_model *m, int warn, int show)
     }
     g->step_checked = -1;
     rc_scene_scales(m, &g->scene);
-    for (int b = 0; b < m->nbody; b++) g->size[b] = rc_body_size(m, b);
+    rc_body_sizes(m, g->size);
     for (int i = 0; i < m->ninter; i++) g->pbound[i] = rc_pen_bound(m, i, &g->scene, g->size, &g->fbound[i]);
     return g;
 }

@@ -75,6 +75,9 @@
 #define RC_STATIC_MAXIT 60
 #define RC_STATIC_MAXSTEP 1e30
 #define RC_STATIC_QUICK 4
+/* The first stiffness of a solve retried from a touching start, less this
+ * fraction of each unknown's stiffness scale on its diagonal (kin_jac). */
+#define RC_STATIC_TOUCH_REG 1e-6
 /* Solves of the active set per load substep, and mode flips of one
  * interface in them, before the active set is said to cycle. */
 #define RC_STATIC_ROUNDS_MIN 8
@@ -129,6 +132,15 @@ struct rc_static {
     /* several contact points (docs/theory.md 2.7): the law's penetration
      * P_e is P itself, the deepest point's, in an equilibrium */
     char *pe_on;      /* [ninter] 1: P_e set to P */
+    /* friction per contact point (node pairs, docs/theory.md 2.7): per
+     * point (m->npt) its unit force at the substep's start, its contact
+     * point as a material point of each body, where those were, whether it
+     * carries a share at the trial */
+    char *pf_on;      /* [ninter] 1: friction per point by the return mapping */
+    double *pf_t0;    /* [3 npt] F_t0,j [N] */
+    double *pf_pa, *pf_pb, *pf_xa, *pf_xb; /* [3 npt] as fr_pa ... for point j */
+    char *pf_in;      /* [npt] 1: the point has a share at the trial */
+    double *pf_out;   /* [RC_PT_OUT npt] rc_points_eval's values */
     double *ext;      /* [36 nblk] friction's part of the stiffness (rate rows, unknown columns) */
 };
 
@@ -190,7 +202,8 @@ void rc_static_free(rc_static *s)
     if (!s) return;
     void *p[] = {s->fb, s->slot, s->ys, s->y, s->f, s->jv, s->held, s->us, s->fs, s->kb, s->bsize, s->sslot, s->brow, s->bcol, s->bfirst,
                  s->colptr, s->rowind, s->ent_blk, s->ent_rc, s->raw, s->kval, s->fr_on, s->fr_t0, s->fr_pa, s->fr_pb,
-                 s->fr_xa, s->fr_xb, s->ext, s->hy_on, s->hy_f0, s->hy_p0, s->hy_el, s->pe_on};
+                 s->fr_xa, s->fr_xb, s->ext, s->hy_on, s->hy_f0, s->hy_p0, s->hy_el, s->pe_on,
+                 s->pf_on, s->pf_t0, s->pf_pa, s->pf_pb, s->pf_xa, s->pf_xb, s->pf_in, s->pf_out};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     free(s);
 }
@@ -251,23 +264,42 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     }
     s->nb = q;
     s->n = 6 * q;
-    /* scales and held unknowns */
+    /* scales and held unknowns: per free body the smallest penetration
+     * scale and the largest force scale of its contacts, their summed
+     * stiffness scales (one pass over the interfaces), its size */
     rc_moment_free_bodies(m, mf);
+    double *bps = malloc(((size_t)s->nb + 1) * sizeof(double)), *bfi = malloc(((size_t)s->nb + 1) * sizeof(double));
+    double *size_all = malloc(((size_t)m->nbody + 1) * sizeof(double));
+    if (!bps || !bfi || !size_all) {
+        free(bps);
+        free(bfi);
+        free(size_all);
+        free(key);
+        free(mf);
+        rc_static_free(s);
+        return NULL;
+    }
+    rc_body_sizes(m, size_all);
+    for (q = 0; q < s->nb; q++) bps[q] = INFINITY, bfi[q] = 0.0;
+    for (int i = 0; i < m->ninter; i++) {
+        const double pi = m->inter_pscale[i], fsi = m->inter_fscale[i];
+        const int bs[2] = {m->inter_ba[i], m->inter_bb[i]};
+        for (int k = 0; k < 2; k++) {
+            const int qk = bs[k] >= 0 ? s->slot[bs[k]] : -1;
+            if (qk < 0 || (k == 1 && bs[1] == bs[0])) continue;
+            if (isfinite(pi) && pi > 0) bps[qk] = fmin(bps[qk], pi);
+            if (isfinite(fsi) && fsi > bfi[qk]) bfi[qk] = fsi;
+            if (isfinite(pi) && pi > 0 && isfinite(fsi)) s->kb[qk] += fsi / pi;
+        }
+    }
     for (q = 0; q < s->nb; q++) {
         const int b = s->fb[q];
         const double mass = m->body_mass[b], *J = m->body_J + 9 * b, *g = m->body_grav + 3 * b;
         double rg = sqrt(fmax(0.5 * (J[0] + J[4] + J[8]) / mass, 0.0));
         if (!(rg > 0) || !isfinite(rg)) rg = 1.0;
-        double ps = INFINITY, fsc = mass * sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]), fi = 0.0;
-        for (int i = 0; i < m->ninter; i++)
-            if (m->inter_ba[i] == b || m->inter_bb[i] == b) {
-                const double pi = m->inter_pscale[i], fsi = m->inter_fscale[i];
-                if (isfinite(pi) && pi > 0) ps = fmin(ps, pi);
-                if (isfinite(fsi) && fsi > fi) fi = fsi;
-                if (isfinite(pi) && pi > 0 && isfinite(fsi)) s->kb[q] += fsi / pi;
-            }
+        double ps = bps[q], fsc = mass * sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]), fi = bfi[q];
         if (!isfinite(ps)) ps = 1e-3 * rg;
-        const double size = rc_body_size(m, b);
+        const double size = size_all[b];
         s->bsize[q] = isfinite(size) ? size : 0.0;
         if (!(fsc > 0)) fsc = fi > 0 ? fi : 1.0;
         const int *mask = m->body_dofmask + 6 * b;
@@ -281,25 +313,39 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
         }
     }
     free(mf);
+    free(bps);
+    free(bfi);
+    free(size_all);
     /* the blocks: the entries of the rate rows (7..12) of a body in the
-     * position and quaternion columns (0..6) of a body, and the diagonal */
-    int64_t nk = 0;
-    for (int j = 0; j < m->ny; j++) {
-        int kc, kr;
-        const int cs = state_body(s, j, &kc);
-        for (int64_t p = m->jac_colptr[j]; p < m->jac_colptr[j + 1]; p++) {
-            s->ent_blk[p] = -1;
-            if (cs < 0 || kc > 6) continue;
-            const int rs = state_body(s, (int)m->jac_rowind[p], &kr);
-            if (rs < 0 || kr < 7) continue;
-            key[nk++] = (int64_t)cs * s->nb + rs;
-        }
+     * position and quaternion columns (0..6) of a body, and the diagonal;
+     * keys (column slot, row slot) in order, per column slot its row slots
+     * found once each (mark) and sorted: linear in the entries */
+    int *mark = malloc(((size_t)s->nb + 1) * sizeof(int)), *blkof = malloc(((size_t)s->nb + 1) * sizeof(int));
+    if (!mark || !blkof) {
+        free(mark);
+        free(blkof);
+        free(key);
+        rc_static_free(s);
+        return NULL;
     }
-    for (q = 0; q < s->nb; q++) key[nk++] = (int64_t)q * s->nb + q;
-    qsort(key, (size_t)nk, sizeof *key, cmp_i64);
-    int64_t u = 0;
-    for (int64_t k = 0; k < nk; k++)
-        if (u == 0 || key[k] != key[u - 1]) key[u++] = key[k];
+    for (q = 0; q < s->nb; q++) mark[q] = -1;
+    for (int64_t p = 0; p < m->nnz; p++) s->ent_blk[p] = -1;
+    int64_t nk = 0;
+    for (q = 0; q < s->nb; q++) {
+        const int64_t k0 = nk;
+        const int j0 = m->body_yadr[s->fb[q]];
+        for (int kc = 0; kc <= 6; kc++)
+            for (int64_t p = m->jac_colptr[j0 + kc]; p < m->jac_colptr[j0 + kc + 1]; p++) {
+                int kr;
+                const int rs = state_body(s, (int)m->jac_rowind[p], &kr);
+                if (rs < 0 || kr < 7 || mark[rs] == q) continue;
+                mark[rs] = q;
+                key[nk++] = (int64_t)q * s->nb + rs;
+            }
+        if (mark[q] != q) key[nk++] = (int64_t)q * s->nb + q;
+        qsort(key + k0, (size_t)(nk - k0), sizeof *key, cmp_i64);
+    }
+    const int64_t u = nk;
     s->nblk = (int)u;
     s->brow = malloc(((size_t)u + 1) * sizeof(int));
     s->bcol = malloc(((size_t)u + 1) * sizeof(int));
@@ -321,10 +367,22 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     s->hy_p0 = calloc(ni1, sizeof(double));
     s->hy_el = calloc(ni1, 1);
     s->pe_on = calloc(ni1, 1);
+    const size_t np1 = (size_t)m->npt + 1;
+    s->pf_on = calloc(ni1, 1);
+    s->pf_t0 = calloc(3 * np1, sizeof(double));
+    s->pf_pa = calloc(3 * np1, sizeof(double));
+    s->pf_pb = calloc(3 * np1, sizeof(double));
+    s->pf_xa = calloc(3 * np1, sizeof(double));
+    s->pf_xb = calloc(3 * np1, sizeof(double));
+    s->pf_in = calloc(np1, 1);
+    s->pf_out = calloc(RC_PT_OUT * np1, sizeof(double));
     if (!s->brow || !s->bcol || !s->bfirst || !s->colptr || !s->rowind || !s->raw || !s->kval || !s->ext ||
         !s->fr_on || !s->fr_t0 || !s->fr_pa || !s->fr_pb || !s->fr_xa || !s->fr_xb || !s->hy_on || !s->hy_f0 ||
-        !s->hy_p0 || !s->hy_el || !s->pe_on) {
+        !s->hy_p0 || !s->hy_el || !s->pe_on || !s->pf_on || !s->pf_t0 || !s->pf_pa || !s->pf_pb || !s->pf_xa ||
+        !s->pf_xb || !s->pf_in || !s->pf_out) {
         free(key);
+        free(mark);
+        free(blkof);
         rc_static_free(s);
         return NULL;
     }
@@ -343,22 +401,26 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
                 for (int r = 0; r < 6; r++) s->rowind[s->colptr[col] + 6 * (k - s->bfirst[q]) + r] = 6 * s->brow[k] + r;
         }
     }
-    for (int j = 0; j < m->ny; j++) {
-        int kc, kr;
-        const int cs = state_body(s, j, &kc);
-        for (int64_t p = m->jac_colptr[j]; p < m->jac_colptr[j + 1]; p++) {
-            if (cs < 0 || kc > 6) continue;
-            const int rs = state_body(s, (int)m->jac_rowind[p], &kr);
-            if (rs < 0 || kr < 7) continue;
-            const int64_t kk = (int64_t)cs * s->nb + rs;
-            const int64_t *hit = bsearch(&kk, key, (size_t)s->nblk, sizeof *key, cmp_i64);
-            s->ent_blk[p] = (int)(hit - key);
-            s->ent_rc[p] = (signed char)((kr - 7) * 7 + kc);
-        }
+    for (q = 0; q < s->nb; q++) {
+        for (int k = s->bfirst[q]; k < s->bfirst[q + 1]; k++) blkof[s->brow[k]] = k;
+        const int j0 = m->body_yadr[s->fb[q]];
+        for (int kc = 0; kc <= 6; kc++)
+            for (int64_t p = m->jac_colptr[j0 + kc]; p < m->jac_colptr[j0 + kc + 1]; p++) {
+                int kr;
+                const int rs = state_body(s, (int)m->jac_rowind[p], &kr);
+                if (rs < 0 || kr < 7) continue;
+                s->ent_blk[p] = blkof[rs];
+                s->ent_rc[p] = (signed char)((kr - 7) * 7 + kc);
+            }
     }
+    free(mark);
+    free(blkof);
     free(key);
     for (int i = 0; i < m->ninter; i++) {
-        s->fr_on[i] = !rc_inter_frictionless(m, i) && rc_static_friction_ok(&m->inter_fr[i]);
+        s->fr_on[i] = !rc_inter_frictionless(m, i) && rc_static_friction_ok(&m->inter_fr[i]) && m->inter_npt[i] == 0 &&
+                      m->inter_fr[i].tidx >= 0;
+        s->pf_on[i] = !rc_inter_frictionless(m, i) && rc_static_friction_ok(&m->inter_fr[i]) && m->inter_npt[i] > 0 &&
+                      rc_pair_nodes(m->inter_pair[i]) && m->inter_pst[i] == 3;
         s->hy_on[i] = m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0 && m->inter_hidx[i] >= 0 &&
                       m->inter_peidx[i] < 0 && !rc_pair_multi(m->inter_pair[i]);
         s->pe_on[i] = rc_pair_multi(m->inter_pair[i]) && m->inter_peidx[i] >= 0;
@@ -440,11 +502,79 @@ static void fric_points(const rc_static *s, int i, const double *u, double pa[3]
     }
 }
 
+/* Point j of node-pair interface i at the state y: its global position
+ * (the node: of surface a for j < n_a, else of surface b). */
+static void pf_node(const rc_model *m, int i, int j, const double *y, double x[3])
+{
+    const int sa = m->inter_sa[i], na = m->surf_nadr[sa + 1] - m->surf_nadr[sa];
+    const int sf = j < na ? sa : m->inter_sb[i], jj = j < na ? j : j - na;
+    const double *p = m->surf_node + 3 * (m->surf_nadr[sf] + jj);
+    const int b = m->surf_body[sf];
+    if (b < 0) {
+        memcpy(x, p, 3 * sizeof(double));
+        return;
+    }
+    const double *xb = y + m->body_yadr[b];
+    const double complex q[4] = {xb[3], xb[4], xb[5], xb[6]};
+    double complex o[3];
+    qrot(q, p, o);
+    for (int k = 0; k < 3; k++) x[k] = xb[k] + creal(o[k]);
+}
+
+/* The point x (global) as a material point of body b (its body frame; the
+ * global point for a fixed body) into rb, and where mpoint puts it at the
+ * start into x0 (to the bit as mpoint at u = 0). */
+static void material_point(const rc_static *s, int b, const double *y0, const double x[3], double rb[3], double x0[3])
+{
+    if (body_slot(s, b) < 0) {
+        memcpy(rb, x, 3 * sizeof(double));
+        memcpy(x0, x, 3 * sizeof(double));
+        return;
+    }
+    const double *xb = y0 + s->m->body_yadr[b], v[3] = {x[0] - xb[0], x[1] - xb[1], x[2] - xb[2]};
+    const double complex qc[4] = {xb[3], -xb[4], -xb[5], -xb[6]}; /* global -> body */
+    double complex o[3];
+    qrot(qc, v, o);
+    for (int k = 0; k < 3; k++) rb[k] = creal(o[k]);
+    const double complex q0[4] = {xb[3], xb[4], xb[5], xb[6]};
+    qrot(q0, rb, o);
+    for (int k = 0; k < 3; k++) x0[k] = xb[k] + creal(o[k]);
+}
+
+/* The displacements since the substep's start of point pj's material
+ * points of interface i at u (a's, b's; their dp/dtheta into Da, Db when
+ * not NULL). */
+static void pf_points(const rc_static *s, int i, int pj, const double *u, double pa[3], double pb[3], double *Da,
+                      double *Db)
+{
+    const int qa = body_slot(s, s->m->inter_ba[i]), qb = body_slot(s, s->m->inter_bb[i]);
+    pa[0] = pa[1] = pa[2] = pb[0] = pb[1] = pb[2] = 0.0;
+    if (qa >= 0) mpoint(s, qa, u, s->pf_pa + 3 * pj, pa, Da);
+    if (qb >= 0) mpoint(s, qb, u, s->pf_pb + 3 * pj, pb, Db);
+    for (int k = 0; k < 3; k++) {
+        if (qa >= 0) pa[k] -= s->pf_xa[3 * pj + k];
+        if (qb >= 0) pb[k] -= s->pf_xb[3 * pj + k];
+    }
+}
+
 void rc_static_set_friction_start(rc_static *s, double t, const double *y0)
 {
     const rc_model *m = s->m;
     rc_data *d = s->d;
     for (int i = 0; i < m->ninter; i++) {
+        if (s->pf_on[i]) {
+            /* friction per point: each point's unit force and its contact
+             * point (the node) as material points of a and b */
+            const int closed = d->inter_mode[i] == RC_MODE_CLOSED, st = m->inter_eadr[i] + m->inter_ns[i];
+            for (int j = 0; j < m->inter_npt[i]; j++) {
+                const int pj = m->inter_pbase[i] + j;
+                double x[3];
+                for (int k = 0; k < 3; k++) s->pf_t0[3 * pj + k] = closed ? y0[st + m->inter_pst[i] * j + k] : 0.0;
+                pf_node(m, i, j, y0, x);
+                material_point(s, m->inter_ba[i], y0, x, s->pf_pa + 3 * pj, s->pf_xa + 3 * pj);
+                material_point(s, m->inter_bb[i], y0, x, s->pf_pb + 3 * pj, s->pf_xb + 3 * pj);
+            }
+        }
         if (s->hy_on[i]) {
             /* hysteresis: the force and the penetration at the start (an
              * open contact has no history: it closes on the load curve) */
@@ -497,7 +627,11 @@ static void hyst_trial(rc_static *s, double t)
     const rc_model *m = s->m;
     rc_data *d = s->d;
     /* several contact points: the law at the deepest point's penetration
-     * (P_e = P; 0 when open) */
+     * (P_e = P; 0 when open). A closed contact at P <= 0 (touching, or
+     * within its touch band) takes the smallest positive P_e: its force is
+     * nothing, its stiffness the law's slope from the right (at P_e = 0 the
+     * law, taken at max(P_e, 0), has none, and a box touching on its face
+     * would have no stiffness against tilting at the first iterate) */
     for (int i = 0; i < m->ninter; i++) {
         if (!s->pe_on[i]) continue;
         double *pe = s->y + m->inter_eadr[i] + m->inter_peidx[i];
@@ -505,7 +639,7 @@ static void hyst_trial(rc_static *s, double t)
         if (d->inter_mode[i] != RC_MODE_CLOSED) continue;
         rc_inter_report r;
         rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], 0, t, s->y, &r);
-        *pe = r.p;
+        *pe = fmax(r.p, DBL_MIN);
     }
     if (!s->fr_ready) return;
     for (int i = 0; i < m->ninter; i++) {
@@ -563,6 +697,52 @@ static void fric_trial(rc_static *s, double t, const double *u)
     }
 }
 
+/* Friction per point at the unknowns u, into s->y (after hyst_trial, which
+ * sets P_e): each point's unit trial force F_t0,j - K_t (p_a - p_b) of its
+ * material points, as the single contact's (the engine applies its share
+ * w_j of the unit law at the interface's limit L = Sfric + mu F_n); a point
+ * without a share (out of contact at the trial) unloaded; each point's mode
+ * into d->pt_slip: stick while the trial's part in the contact plane is
+ * within L (the engine's slip test, with its bands), else slip (the engine
+ * applies L along it). */
+static void pf_trial(rc_static *s, double t, const double *u)
+{
+    const rc_model *m = s->m;
+    rc_data *d = s->d;
+    if (!s->fr_ready) return;
+    for (int i = 0; i < m->ninter; i++) {
+        if (!s->pf_on[i]) continue;
+        const int npt = m->inter_npt[i], pb0 = m->inter_pbase[i], ps = m->inter_pst[i];
+        double *st = s->y + m->inter_eadr[i] + m->inter_ns[i];
+        if (d->inter_mode[i] != RC_MODE_CLOSED) {
+            for (int j = 0; j < npt; j++) {
+                for (int k = 0; k < 3; k++) st[ps * j + k] = 0.0;
+                d->pt_slip[pb0 + j] = 0;
+                s->pf_in[pb0 + j] = 0;
+            }
+            continue;
+        }
+        for (int j = 0; j < npt; j++) {
+            double pa[3], pb[3];
+            pf_points(s, i, pb0 + j, u, pa, pb, NULL, NULL);
+            for (int k = 0; k < 3; k++) st[ps * j + k] = s->pf_t0[3 * (pb0 + j) + k] - m->inter_fr[i].kt * (pa[k] - pb[k]);
+            d->pt_slip[pb0 + j] = 0;
+        }
+        /* the points in stick: their slip roots (the engine's test, with its
+         * bands: |F_p|^2 / (L (1 + band) + f_band)^2 - 1) and shares */
+        rc_points_eval(m, d, i, NULL, t, s->y, s->pf_out);
+        for (int j = 0; j < npt; j++) {
+            const double *o = s->pf_out + RC_PT_OUT * j;
+            s->pf_in[pb0 + j] = o[5] > 0.0;
+            if (!s->pf_in[pb0 + j]) {
+                for (int k = 0; k < 3; k++) st[ps * j + k] = 0.0;
+                continue;
+            }
+            d->pt_slip[pb0 + j] = o[0] > 0.0;
+        }
+    }
+}
+
 /* The state of a converged solve at u into y: the positions and the
  * orientations, and each closed contact's friction state the force the
  * return mapping gives (the trial force, or the limit along it). */
@@ -573,12 +753,31 @@ static void commit_state(rc_static *s, double t, const double *u, double *y)
     state_at(s, u, NULL);
     hyst_trial(s, t);
     fric_trial(s, t, u);
+    pf_trial(s, t, u);
     for (int i = 0; i < m->ninter; i++) {
         if (!s->fr_on[i] || !s->fr_ready || d->inter_mode[i] != RC_MODE_CLOSED) continue;
         rc_inter_report r;
         rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, s->y,
                              &r);
         memcpy(s->y + m->inter_eadr[i] + m->inter_fr[i].tidx, r.ft, sizeof r.ft);
+    }
+    /* friction per point: a sliding point's unit force returned to the
+     * limit L along it (its part in the plane; the normal part, which the
+     * engine drops, scaled alike) */
+    for (int i = 0; i < m->ninter; i++) {
+        if (!s->pf_on[i] || !s->fr_ready || d->inter_mode[i] != RC_MODE_CLOSED) continue;
+        rc_inter_report r;
+        rc_inter_report_eval_d(m, d, i, t, s->y, &r);
+        const double L = fmax(r.flim, 0.0);
+        const int pb0 = m->inter_pbase[i], ps = m->inter_pst[i];
+        double *st = s->y + m->inter_eadr[i] + m->inter_ns[i];
+        for (int j = 0; j < m->inter_npt[i]; j++) {
+            if (!d->pt_slip[pb0 + j]) continue;
+            const double *f = s->pf_out + RC_PT_OUT * j + 1; /* the unit force in the plane, in stick */
+            const double fp = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+            if (fp > 0)
+                for (int k = 0; k < 3; k++) st[ps * j + k] *= L / fp;
+        }
     }
     memcpy(y, s->y, (size_t)m->ny * sizeof(double));
 }
@@ -703,12 +902,53 @@ static int law_stiffness(rc_static *s, double t, const double *u)
     return 0;
 }
 
+/* Friction per point's part of the stiffness, added to s->ext (after
+ * fric_stiffness): for each point with a share, the engine's columns of
+ * its unit state times the trial's derivatives -K_t d(p_a - p_b)/du, as the
+ * single contact's. */
+static int pf_stiffness(rc_static *s, const double *u)
+{
+    const rc_model *m = s->m;
+    if (!s->fr_ready) return 0;
+    for (int i = 0; i < m->ninter; i++) {
+        if (!s->pf_on[i] || s->d->inter_mode[i] != RC_MODE_CLOSED) continue;
+        const int qs[2] = {body_slot(s, m->inter_ba[i]), body_slot(s, m->inter_bb[i])};
+        const double kt = m->inter_fr[i].kt, sg[2] = {-kt, kt};
+        for (int j = 0; j < m->inter_npt[i]; j++) {
+            const int pj = m->inter_pbase[i] + j;
+            if (!s->pf_in[pj]) continue;
+            double pa[3], pb[3], Da[9], Db[9];
+            pf_points(s, i, pj, u, pa, pb, Da, Db);
+            const double *D[2] = {Da, Db};
+            for (int k = 0; k < 3; k++) {
+                const int col = m->inter_eadr[i] + m->inter_ns[i] + m->inter_pst[i] * j + k;
+                for (int64_t p = m->jac_colptr[col]; p < m->jac_colptr[col + 1]; p++) {
+                    int kr;
+                    const int rs = state_body(s, (int)m->jac_rowind[p], &kr);
+                    if (rs < 0 || kr < 7 || s->jv[p] == 0.0) continue;
+                    for (int side = 0; side < 2; side++) {
+                        if (qs[side] < 0) continue;
+                        const int blk = find_block(s, rs, qs[side]);
+                        if (blk < 0) return 1;
+                        double *E = s->ext + 36 * (size_t)blk + 6 * (kr - 7);
+                        const double v = s->jv[p] * sg[side];
+                        E[k] += v;
+                        for (int c = 0; c < 3; c++) E[3 + c] += v * D[side][3 * k + c];
+                    }
+                }
+            }
+        }
+    }
+    return 0;
+}
+
 int rc_static_residual(rc_static *s, double t, const double *u, double *r)
 {
     const rc_model *m = s->m;
     state_at(s, u, NULL);
     hyst_trial(s, t);
     fric_trial(s, t, u);
+    pf_trial(s, t, u);
     s->nfev++;
     if (rc_assemble_rhs(m, s->d, t, s->y, s->f)) return 1;
     for (int q = 0; q < s->nb; q++) {
@@ -735,8 +975,10 @@ static int stiffness(rc_static *s, double t, const double *u)
     state_at(s, u, dq);
     hyst_trial(s, t);
     fric_trial(s, t, u);
+    pf_trial(s, t, u);
     s->njev++;
-    if (rc_assemble_jac(m, s->d, t, s->y, s->jv) || fric_stiffness(s, u) || law_stiffness(s, t, u)) {
+    if (rc_assemble_jac(m, s->d, t, s->y, s->jv) || fric_stiffness(s, u) || law_stiffness(s, t, u) ||
+        pf_stiffness(s, u)) {
         free(dq);
         return 1;
     }
@@ -803,6 +1045,8 @@ typedef struct st_run {
     rc_static *s;
     double t;           /* the load time of the solve [s] */
     char kmsg[512];     /* KINSOL's last error message */
+    int touch;          /* the first stiffness of the solve regularised (kin_jac) */
+    int njac;           /* stiffnesses evaluated in this solve */
 } st_run;
 
 static int kin_f(N_Vector u, N_Vector r, void *user)
@@ -824,6 +1068,16 @@ static int kin_jac(N_Vector u, N_Vector fu, SUNMatrix A, void *user, N_Vector t1
         ri[p] = (sunindextype)s->rowind[p];
         v[p] = s->kval[p];
     }
+    /* A solve retried from a touching start (touch): contacts exactly at
+     * P = 0 carry no load yet, so a body resting on a face has no stiffness
+     * against tilting until it presses in (the force's moment over the
+     * contact points grows with the force); the first stiffness of the
+     * retry has on its diagonal each unloaded unknown's stiffness scale
+     * (F_s / p_s: it stays about where it is) and -RC_STATIC_TOUCH_REG of
+     * a loaded one's added, so that Newton's first step presses the loaded
+     * directions in, and the later iterations have the contacts' own
+     * stiffness. */
+    const int first = c->njac++ == 0;
     /* A loaded unknown without stiffness (a contact just touching whose law
      * starts with zero slope, Hertz at P = 0): the secant stiffness that
      * moves it by its scale (the contact's penetration scale), so that
@@ -841,6 +1095,12 @@ static int kin_jac(N_Vector u, N_Vector fu, SUNMatrix A, void *user, N_Vector t1
         if (s->held[i] || pd < 0 || cmax > RC_STATIC_FTOL * ks || !(fabs(r[i]) > RC_STATIC_FTOL * s->fs[i])) continue;
         v[pd] = -fabs(r[i]) / s->us[i];
     }
+    if (c->touch && first)
+        for (int i = 0; i < s->n; i++) {
+            const int loaded = fabs(r[i]) > RC_STATIC_FTOL * s->fs[i];
+            for (int64_t p = s->colptr[i]; p < s->colptr[i + 1]; p++)
+                if (s->rowind[p] == i && !s->held[i]) v[p] -= (loaded ? RC_STATIC_TOUCH_REG : 1.0) * s->fs[i] / s->us[i];
+        }
     return 0;
 }
 
@@ -886,6 +1146,9 @@ static rc_status kin_open(st_kin *k, st_run *c, rc_error *err)
     }
     N_VConst(0.0, k->u);
     if (!(k->LS = SUNLinSol_KLU(k->u, k->A, k->ctx))) RC_RAISE(err, RC_ESOLVER, "SUNLinSol_KLU failed");
+    /* AMD on the stiffness (block-symmetric in pattern: body i in body j's
+     * rows where j is in i's) rather than COLAMD */
+    if (SUNLinSol_KLUSetOrdering(k->LS, 0)) RC_RAISE(err, RC_ESOLVER, "SUNLinSol_KLUSetOrdering failed");
     if (!(k->kin = KINCreate(k->ctx))) RC_RAISE(err, RC_ENOMEM, "KINCreate failed");
     if (KINInit(k->kin, kin_f, k->u) || KINSetUserData(k->kin, c) || KINSetErrHandlerFn(k->kin, kin_err, c) ||
         KINSetLinearSolver(k->kin, k->LS, k->A) || KINSetJacFn(k->kin, kin_jac) || KINSetMaxSetupCalls(k->kin, 1) ||
@@ -910,6 +1173,7 @@ static st_out kin_solve(st_kin *k, st_run *c, double t)
     st_out o = {0, 0, 0, -1, NAN};
     c->t = t;
     c->kmsg[0] = '\0';
+    c->njac = 0;
     N_VConst(0.0, k->u);
     if (c->s->n == 0) {
         o.ok = 1;
@@ -1016,7 +1280,7 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
     const double dtout = pre ? 1.0 : opt && opt->dt_out_override > 0 ? opt->dt_out_override : m->dtout;
     rc_data *d = rc_data_new(m);
     rc_static *s = d ? rc_static_new(m, d) : NULL;
-    st_run c = {s, 0.0, ""};
+    st_run c = {s, 0.0, "", 0, 0};
     st_kin k;
     memset(&k, 0, sizeof k);
     rc_output *out = NULL;
@@ -1089,13 +1353,24 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                 st_out o = kin_solve(&k, &c, tn);
                 iters += o.iters;
                 S->nonlin_iters += o.iters;
+                if (!o.ok && o.singular_col >= 0 && o.singular_col < s->n) {
+                    /* singular: once more from a touching start (kin_jac) */
+                    c.touch = 1;
+                    o = kin_solve(&k, &c, tn);
+                    c.touch = 0;
+                    iters += o.iters;
+                    S->nonlin_iters += o.iters;
+                }
                 if (!o.ok) {
                     /* a contact sliding at the last iterate: the load may
                      * exceed what its friction holds (no equilibrium; cut
                      * the substep to find the onset) */
                     slide = -1;
-                    for (int i = 0; i < m->ninter && slide < 0; i++)
+                    for (int i = 0; i < m->ninter && slide < 0; i++) {
                         if (s->fr_on[i] && d->inter_mode[i] == RC_MODE_CLOSED && d->inter_slip[i]) slide = i;
+                        for (int j = 0; s->pf_on[i] && d->inter_mode[i] == RC_MODE_CLOSED && j < m->inter_npt[i]; j++)
+                            if (d->pt_slip[m->inter_pbase[i] + j]) slide = i;
+                    }
                     if (slide >= 0) {
                         rc_inter_report r;
                         rc_inter_report_eval(m, slide, RC_MODE_CLOSED, d->inter_branch[slide], d->inter_track[slide],

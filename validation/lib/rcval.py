@@ -113,6 +113,7 @@ class Result:
             self.t = np.array(nc["time"][:])
             self.at_event = np.array(nc["at_event"][:])
             self.pos = np.array(nc["body_position"][:])
+            self.quat = np.array(nc["body_quaternion"][:])  # (w, x, y, z)
             self.vel = np.array(nc["body_velocity"][:])
             self.fn = np.array(nc["inter_force_normal"][:]) if "inter_force_normal" in nc.variables else None
             self.inter_id = np.array(nc["inter_id"][:]) if "inter_id" in nc.variables else None

@@ -18,8 +18,29 @@ P_floor + P_box.
 case_preload.rad (Method 1, Preload 1, constant gravity): the dynamic run
 starts from the static equilibrium: the same forces and penetrations at
 f = 1 from the first record to the end (1 s), the velocities at rounding.
+
+With friction per corner (TYPE6 Fric = mu = 0.3, stick stiffness Stiff =
+K_t = 2e5 N/m), no /BCS (friction holds the box sideways and against
+turning): the lower box alone (m = 2 kg) on the floor, gravity tilted by
+theta from the vertical (/GRAV X and Z with one time function: the load
+grows along a fixed direction):
+case_incline.rad (Method 3, theta = 0.25 rad < atan(mu), f = t / t_end):
+the box sticks: the floor carries F_n = m g cos(theta) f and the friction
+force m g sin(theta) f against the slope (summed over the corners), and
+the box has slid along x by F_t / K_t at the floor (the corners' unit
+springs in parallel, each at its share; its centre moves by that plus its
+tilt under the friction moment times its height).
+case_incline_above.rad (theta = 0.35 rad > atan(mu)): no static
+equilibrium once the load exceeds the friction limit (the engine's slip
+test, with its bands): an error naming the sliding interface.
+case_incline_preload.rad (Method 1, Preload 1, theta = 0.25, constant
+gravity): the dynamic run starts held by the corners' static friction
+forces and stays at rest.
 """
+import math
 import os
+import re
+import subprocess
 import sys
 
 import numpy as np
@@ -36,6 +57,8 @@ C1 = (0.0, 0.0, H1[2])
 C2 = (0.01, 0.02, 2.0 * H1[2] + H2[2])
 T_END, DT_OUT = 1.0, 0.25
 TOL = 1e-9
+MU, KT = 0.3, 2.0e5
+TH_BELOW, TH_ABOVE = 0.25, 0.35
 
 
 def deck(preload):
@@ -64,6 +87,51 @@ def deck(preload):
     else:
         d.solver(method=3)
     return d
+
+
+def tilted(theta):
+    """gravity's components per unit f, as written in the deck (12 digits)."""
+    return float(f"{G * math.sin(theta):.12g}"), float(f"{-G * math.cos(theta):.12g}")
+
+
+def deck_incline(theta, preload):
+    d = Deck(f"static boxes: a box with friction per corner, gravity tilted {theta:g} rad"
+             + (", preloaded" if preload else ""))
+    d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e6 N/m")
+    d.nodes([(1, *C1)])
+    d.rbody(1, 1, M1, [0.01, 0.02, 0.03], grnod=1, title="box")
+    d.box(1, 1, C1, H1, title="box")
+    d.plane(3, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0")
+    d.grnod(1, [1], title="box")
+    gx, gz = tilted(theta)
+    if preload:
+        d.grav(1, "X", gx)
+        d.grav(2, "Z", gz)
+    else:
+        d.funct(2, [0.0, T_END], [0.0, 1.0], title="load factor f(t) = t / t_end")
+        d.grav_fct(1, "X", gx, 2)
+        d.grav_fct(2, "Z", gz, 2)
+    d.type6(1, 1, 3, 1, fric=MU, stiff=KT, title="box - floor")
+    d.run(T_END, DT_OUT)
+    if preload:
+        d.solver(method=1, rtol=1e-8, preload=1)
+    else:
+        d.solver(method=3)
+    return d
+
+
+def incline_errors(r, theta, f):
+    gx, gz = tilted(theta)
+    Fn, Ft = -M1 * gz * f, M1 * gx * f
+    eN = float(np.abs(r.fn[:, 0] - Fn).max()) / (M1 * G)
+    eT = float(max(np.abs(r.ffric[:, 0, 0] + Ft).max(), np.abs(r.ffric[:, 0, 1:]).max())) / (M1 * G)
+    # the contact plane's slide: the centre's x less its tilt about y times
+    # its height over the floor (the friction moment tips the box by
+    # about 6e-6 rad: 0.6 % of the slide)
+    q = r.quat[:, 0]
+    xc = r.pos[:, 0, 0] - H1[2] * 2.0 * q[:, 2] * q[:, 0]
+    ex = float(np.abs(xc - Ft / KT).max()) / (M1 * G / KT)
+    return eN, eT, ex
 
 
 def errors(r, f):
@@ -95,11 +163,40 @@ def main():
     rcval.check("static_boxes.preload", r.t[-1] == T_END and max(eF, eP, ez) < 1e-8 and vmax < vb,
                 f"{len(r.t)} records to {r.t[-1]:g} s: max rel. errors F {eF:.2e}, P {eP:.2e}, height {ez:.2e} "
                 f"(< 1e-8); max |v| {vmax:.2e} m/s (< {vb:.2e}: 1e-9 g / omega, omega = sqrt(k / m_1))")
+    # friction per corner: sticks below atan(mu)
+    rcval.METHOD = "static" if keep else ""
+    r = rcval.Result(rcval.run_case("case_incline.rad", keep_solver=True))
+    eN, eT, ex = incline_errors(r, TH_BELOW, r.t / T_END)
+    rcval.check("static_boxes.incline_sticks", len(r.t) == 5 and max(eN, eT) < TOL and ex < 1e-8,
+                f"theta = {TH_BELOW:g} rad < atan(mu): {len(r.t)} records; max |F_n - m g cos f|, |F_t - m g sin f| / "
+                f"(m g) {eN:.2e}, {eT:.2e} (< {TOL:g}); slide at the floor |x - F_t / K_t| / (m g / K_t) {ex:.2e} "
+                f"(< 1e-8: the tilt's correction to first order)")
+    # above atan(mu): no equilibrium, the sliding interface named
+    out = os.path.join(rcval.tmpdir(), "above.nc")
+    p = subprocess.run([rcval.RICOCHET, "run", os.path.join(HERE, "case_incline_above.rad"), "-o", out, "-q",
+                        "--method", "static"], capture_output=True, text=True)
+    named = "friction can hold" in p.stderr and "/INTER/TYPE6/1 slides" in p.stderr
+    mt = re.search(r"no static equilibrium at the load time t = ([0-9.eE+-]+) s", p.stderr)
+    tf = float(mt.group(1)) if mt else float("nan")
+    rcval.check("static_boxes.incline_slides", p.returncode == 3 and named and tf < 1e-3 * T_END,
+                f"theta = {TH_ABOVE:g} rad > atan(mu): exit {p.returncode}, no equilibrium from the load time "
+                f"{tf:.3g} s (f = {tf / T_END:.2g}: where the excess passes the slip test's band); message: "
+                f"{p.stderr.strip()[:200]!r}")
+    # preloaded: held by the corners' static friction from the start
+    rcval.METHOD = keep
+    r = rcval.Result(rcval.run_case("case_incline_preload.rad", keep_solver=True))
+    eN, eT, ex = incline_errors(r, TH_BELOW, np.ones_like(r.t))
+    vmax = float(np.abs(r.vel).max())
+    rcval.check("static_boxes.incline_preload", r.t[-1] == T_END and max(eN, eT, ex) < 1e-8 and vmax < 1e-9,
+                f"{len(r.t)} records to {r.t[-1]:g} s: max rel. errors F_n {eN:.2e}, F_t {eT:.2e}, x {ex:.2e} "
+                f"(< 1e-8); max |v| {vmax:.2e} m/s (< 1e-9)")
     rcval.finish()
 
 
 def cases():
-    return {"case.rad": deck(False), "case_preload.rad": deck(True)}
+    return {"case.rad": deck(False), "case_preload.rad": deck(True),
+            "case_incline.rad": deck_incline(TH_BELOW, False), "case_incline_above.rad": deck_incline(TH_ABOVE, False),
+            "case_incline_preload.rad": deck_incline(TH_BELOW, True)}
 
 
 if __name__ == "__main__":

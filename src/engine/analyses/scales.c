@@ -155,10 +155,7 @@ static double invert(const rc_model *m, int i, int energy, double target)
 /* Sizes of all bodies (rc_body_size): the largest distance
  * from a body's centre to the far side of one of its surfaces [m] (0 when
  * it carries none). */
-static void body_sizes(const rc_model *m, double *size)
-{
-    for (int b = 0; b < m->nbody; b++) size[b] = rc_body_size(m, b);
-}
+static void body_sizes(const rc_model *m, double *size) { rc_body_sizes(m, size); }
 
 /* Largest speed of body b at t = 0: |v| + |omega| L [m/s]. */
 static double body_speed(const rc_model *m, int b, double L)

@@ -26,29 +26,43 @@
 #include "model/power.h"
 #include "engine/assembly/data.h"
 
+/* The far side of surface s from the centre of its body [m] (a plane:
+ * the distance of its point). */
+static double surf_extent(const rc_model *m, int s)
+{
+    const double *p = m->surf_p + 3 * s, *e = m->surf_ext + RC_SURF_NEXT * s;
+    double c = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), ext = 0.0;
+    switch (m->surf_kind[s]) {
+    case RC_SURF_SPHERE: ext = m->surf_r[s]; break;
+    case RC_SURF_CYL: ext = m->surf_r[s] + e[0] + (e[1] > 0 ? m->surf_r[s] : 0.0); break;
+    case RC_SURF_BOX: ext = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]); break;
+    case RC_SURF_SEG:
+        c = 0.0; /* nodes are in the body frame, from its centre */
+        for (int j = m->surf_nadr[s]; j < m->surf_nadr[s + 1]; j++) {
+            const double *x = m->surf_node + 3 * j;
+            ext = fmax(ext, sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]));
+        }
+        break;
+    default: break; /* a plane: the distance of its point from the centre */
+    }
+    return c + ext;
+}
+
 double rc_body_size(const rc_model *m, int b)
 {
     double size = 0.0;
-    for (int s = 0; s < m->nsurf; s++) {
-        if (m->surf_body[s] != b) continue;
-        const double *p = m->surf_p + 3 * s, *e = m->surf_ext + RC_SURF_NEXT * s;
-        double c = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), ext = 0.0;
-        switch (m->surf_kind[s]) {
-        case RC_SURF_SPHERE: ext = m->surf_r[s]; break;
-        case RC_SURF_CYL: ext = m->surf_r[s] + e[0] + (e[1] > 0 ? m->surf_r[s] : 0.0); break;
-        case RC_SURF_BOX: ext = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]); break;
-        case RC_SURF_SEG:
-            c = 0.0; /* nodes are in the body frame, from its centre */
-            for (int j = m->surf_nadr[s]; j < m->surf_nadr[s + 1]; j++) {
-                const double *x = m->surf_node + 3 * j;
-                ext = fmax(ext, sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]));
-            }
-            break;
-        default: break; /* a plane has no size */
-        }
-        size = fmax(size, c + ext);
-    }
+    for (int s = 0; s < m->nsurf; s++)
+        if (m->surf_body[s] == b) size = fmax(size, surf_extent(m, s));
     return size;
+}
+
+void rc_body_sizes(const rc_model *m, double *size)
+{
+    for (int b = 0; b < m->nbody; b++) size[b] = 0.0;
+    for (int s = 0; s < m->nsurf; s++) {
+        const int b = m->surf_body[s];
+        if (b >= 0 && b < m->nbody) size[b] = fmax(size[b], surf_extent(m, s));
+    }
 }
 
 double rc_touch_band(const rc_model *m, int i, const double *y, const rc_inter_report *r, double ulps, double rel)
@@ -125,8 +139,11 @@ void rc_scene_scales(const rc_model *m, rc_scene *s)
     const double gf = m->grav_table >= 0 ? table_max_abs(&m->table[m->grav_table]) : 1.0;
     double gdir[3] = {0.0, 0.0, 0.0};
     s->mass = s->gmax = s->lmax = s->ekin0 = s->vimp = 0.0;
+    /* the largest body: the largest extent of a surface on a body (one
+     * pass over the surfaces) */
+    for (int k = 0; k < m->nsurf; k++)
+        if (m->surf_body[k] >= 0) s->lmax = fmax(s->lmax, surf_extent(m, k));
     for (int b = 0; b < m->nbody; b++) {
-        s->lmax = fmax(s->lmax, rc_body_size(m, b));
         if (m->body_yadr[b] < 0) continue;
         const double *g = m->body_grav + 3 * b, *y = m->body_y0 + RC_NB * b, *J = m->body_J + 9 * b;
         const double a = gf * sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);

@@ -39,6 +39,9 @@ void rc_scene_scales(const rc_model *m, rc_scene *s);
 /* Size of body b: the largest distance from its centre to the far side of
  * one of its surfaces [m] (0 without surfaces). */
 double rc_body_size(const rc_model *m, int b);
+/* The sizes of all bodies into size[nbody] (one pass over the surfaces;
+ * rc_body_size of each) [m]. */
+void rc_body_sizes(const rc_model *m, double *size);
 /* A band about P = 0 of interface i at the state y with its report r [m]:
  * ulps roundings of the coordinates involved (the pair's centres and the
  * contact point), at least RC_TOL_DECK_ULPS roundings of the same in the

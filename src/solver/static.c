@@ -109,6 +109,16 @@ struct rc_static {
     signed char *ent_rc; /* [nnz] its place in the block's raw 6x7 */
     double *raw;      /* [42 nblk] */
     double *kval;     /* [36 nblk] the stiffness, in CSC order */
+    /* the system KINSOL solves: the unknowns that are not held (a held
+     * unknown's row is its own k_s u = 0 and its Newton step zero: it is
+     * left out, with its column), in order; the stiffness's entries of
+     * those rows and columns (CSC) */
+    int nr;           /* unknowns solved for */
+    int *full;        /* [nr] the unknown of each */
+    int64_t *rcolptr; /* [nr + 1] */
+    int64_t *rrowind; /* [its nnz] rows, in the reduced numbering */
+    int64_t *remap;   /* [its nnz] the entry of s->kval */
+    double *ufull, *rfull; /* [n] scratch: the unknowns and residuals in full */
     long nfev, njev;
     /* friction, the return mapping (docs/theory.md 7.8): per interface
      * whose stick spring the static analysis takes, from the start of the
@@ -203,7 +213,8 @@ void rc_static_free(rc_static *s)
     void *p[] = {s->fb, s->slot, s->ys, s->y, s->f, s->jv, s->held, s->us, s->fs, s->kb, s->bsize, s->sslot, s->brow, s->bcol, s->bfirst,
                  s->colptr, s->rowind, s->ent_blk, s->ent_rc, s->raw, s->kval, s->fr_on, s->fr_t0, s->fr_pa, s->fr_pb,
                  s->fr_xa, s->fr_xb, s->ext, s->hy_on, s->hy_f0, s->hy_p0, s->hy_el, s->pe_on,
-                 s->pf_on, s->pf_t0, s->pf_pa, s->pf_pb, s->pf_xa, s->pf_xb, s->pf_in, s->pf_out};
+                 s->pf_on, s->pf_t0, s->pf_pa, s->pf_pb, s->pf_xa, s->pf_xb, s->pf_in, s->pf_out,
+                 s->full, s->rcolptr, s->rrowind, s->remap, s->ufull, s->rfull};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     free(s);
 }
@@ -415,6 +426,36 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     }
     free(mark);
     free(blkof);
+    /* the reduced system (held unknowns out) */
+    int *red = malloc(n1 * sizeof(int));
+    s->full = malloc(n1 * sizeof(int));
+    s->rcolptr = calloc(n1, sizeof(int64_t));
+    s->rrowind = malloc(((size_t)s->colptr[s->n] + 1) * sizeof(int64_t));
+    s->remap = malloc(((size_t)s->colptr[s->n] + 1) * sizeof(int64_t));
+    s->ufull = calloc(n1, sizeof(double));
+    s->rfull = calloc(n1, sizeof(double));
+    if (!red || !s->full || !s->rcolptr || !s->rrowind || !s->remap || !s->ufull || !s->rfull) {
+        free(red);
+        free(key);
+        rc_static_free(s);
+        return NULL;
+    }
+    s->nr = 0;
+    for (int i = 0; i < s->n; i++) {
+        red[i] = s->held[i] ? -1 : s->nr;
+        if (!s->held[i]) s->full[s->nr++] = i;
+    }
+    int64_t nzr = 0;
+    for (int c2 = 0; c2 < s->nr; c2++) {
+        const int cf = s->full[c2];
+        for (int64_t p = s->colptr[cf]; p < s->colptr[cf + 1]; p++) {
+            if (red[s->rowind[p]] < 0) continue;
+            s->rrowind[nzr] = red[s->rowind[p]];
+            s->remap[nzr++] = p;
+        }
+        s->rcolptr[c2 + 1] = nzr;
+    }
+    free(red);
     free(key);
     for (int i = 0; i < m->ninter; i++) {
         s->fr_on[i] = !rc_inter_frictionless(m, i) && rc_static_friction_ok(&m->inter_fr[i]) && m->inter_npt[i] == 0 &&
@@ -1049,24 +1090,36 @@ typedef struct st_run {
     int njac;           /* stiffnesses evaluated in this solve */
 } st_run;
 
+/* The unknowns solved for (u, reduced) into s->ufull, the held ones zero. */
+static double *expand(rc_static *s, const double *u)
+{
+    for (int i = 0; i < s->n; i++) s->ufull[i] = 0.0;
+    for (int i = 0; i < s->nr; i++) s->ufull[s->full[i]] = u[i];
+    return s->ufull;
+}
+
 static int kin_f(N_Vector u, N_Vector r, void *user)
 {
     st_run *c = user;
-    return rc_static_residual(c->s, c->t, N_VGetArrayPointer(u), N_VGetArrayPointer(r)) ? 1 : 0;
+    rc_static *s = c->s;
+    if (rc_static_residual(s, c->t, expand(s, N_VGetArrayPointer(u)), s->rfull)) return 1;
+    double *rr = N_VGetArrayPointer(r);
+    for (int i = 0; i < s->nr; i++) rr[i] = s->rfull[s->full[i]];
+    return 0;
 }
 
 static int kin_jac(N_Vector u, N_Vector fu, SUNMatrix A, void *user, N_Vector t1, N_Vector t2)
 {
     st_run *c = user;
     rc_static *s = c->s;
-    if (stiffness(s, c->t, N_VGetArrayPointer(u))) return 1;
+    if (stiffness(s, c->t, expand(s, N_VGetArrayPointer(u)))) return 1;
     sunindextype *cp = SUNSparseMatrix_IndexPointers(A), *ri = SUNSparseMatrix_IndexValues(A);
     double *v = SUNSparseMatrix_Data(A);
-    for (int k = 0; k <= s->n; k++) cp[k] = (sunindextype)s->colptr[k];
-    const int64_t nz = s->colptr[s->n];
+    for (int k = 0; k <= s->nr; k++) cp[k] = (sunindextype)s->rcolptr[k];
+    const int64_t nz = s->rcolptr[s->nr];
     for (int64_t p = 0; p < nz; p++) {
-        ri[p] = (sunindextype)s->rowind[p];
-        v[p] = s->kval[p];
+        ri[p] = (sunindextype)s->rrowind[p];
+        v[p] = s->kval[s->remap[p]];
     }
     /* A solve retried from a touching start (touch): contacts exactly at
      * P = 0 carry no load yet, so a body resting on a face has no stiffness
@@ -1084,22 +1137,23 @@ static int kin_jac(N_Vector u, N_Vector fu, SUNMatrix A, void *user, N_Vector t1
      * Newton enters the contact; an unloaded one stays singular (KLU
      * names it). */
     const double *r = N_VGetArrayPointer(fu);
-    for (int i = 0; i < s->n; i++) {
-        const double ks = s->fs[i] / s->us[i];
+    for (int i = 0; i < s->nr; i++) {
+        const int f = s->full[i];
+        const double ks = s->fs[f] / s->us[f];
         double cmax = 0.0;
         int64_t pd = -1;
-        for (int64_t p = s->colptr[i]; p < s->colptr[i + 1]; p++) {
+        for (int64_t p = s->rcolptr[i]; p < s->rcolptr[i + 1]; p++) {
             cmax = fmax(cmax, fabs(v[p]));
-            if (s->rowind[p] == i) pd = p;
+            if (s->rrowind[p] == i) pd = p;
         }
-        if (s->held[i] || pd < 0 || cmax > RC_STATIC_FTOL * ks || !(fabs(r[i]) > RC_STATIC_FTOL * s->fs[i])) continue;
-        v[pd] = -fabs(r[i]) / s->us[i];
+        if (pd < 0 || cmax > RC_STATIC_FTOL * ks || !(fabs(r[i]) > RC_STATIC_FTOL * s->fs[f])) continue;
+        v[pd] = -fabs(r[i]) / s->us[f];
     }
     if (c->touch && first)
-        for (int i = 0; i < s->n; i++) {
-            const int loaded = fabs(r[i]) > RC_STATIC_FTOL * s->fs[i];
-            for (int64_t p = s->colptr[i]; p < s->colptr[i + 1]; p++)
-                if (s->rowind[p] == i && !s->held[i]) v[p] -= (loaded ? RC_STATIC_TOUCH_REG : 1.0) * s->fs[i] / s->us[i];
+        for (int i = 0; i < s->nr; i++) {
+            const int f = s->full[i], loaded = fabs(r[i]) > RC_STATIC_FTOL * s->fs[f];
+            for (int64_t p = s->rcolptr[i]; p < s->rcolptr[i + 1]; p++)
+                if (s->rrowind[p] == i) v[p] -= (loaded ? RC_STATIC_TOUCH_REG : 1.0) * s->fs[f] / s->us[f];
         }
     return 0;
 }
@@ -1133,16 +1187,16 @@ static void kin_close(st_kin *k)
 static rc_status kin_open(st_kin *k, st_run *c, rc_error *err)
 {
     rc_static *s = c->s;
-    const sunindextype n = s->n > 0 ? s->n : 1;
+    const sunindextype n = s->nr > 0 ? s->nr : 1;
     if (SUNContext_Create(NULL, &k->ctx)) RC_RAISE(err, RC_ESOLVER, "SUNContext_Create failed");
     k->u = N_VNew_Serial(n, k->ctx);
     k->us = N_VNew_Serial(n, k->ctx);
     k->fs = N_VNew_Serial(n, k->ctx);
-    k->A = SUNSparseMatrix(n, n, s->colptr[s->n] > 0 ? (sunindextype)s->colptr[s->n] : 1, CSC_MAT, k->ctx);
+    k->A = SUNSparseMatrix(n, n, s->rcolptr[s->nr] > 0 ? (sunindextype)s->rcolptr[s->nr] : 1, CSC_MAT, k->ctx);
     if (!k->u || !k->us || !k->fs || !k->A) RC_RAISE(err, RC_ENOMEM, "out of memory for KINSOL");
-    for (int i = 0; i < s->n; i++) {
-        NV_Ith_S(k->us, i) = 1.0 / s->us[i];
-        NV_Ith_S(k->fs, i) = 1.0 / s->fs[i];
+    for (int i = 0; i < s->nr; i++) {
+        NV_Ith_S(k->us, i) = 1.0 / s->us[s->full[i]];
+        NV_Ith_S(k->fs, i) = 1.0 / s->fs[s->full[i]];
     }
     N_VConst(0.0, k->u);
     if (!(k->LS = SUNLinSol_KLU(k->u, k->A, k->ctx))) RC_RAISE(err, RC_ESOLVER, "SUNLinSol_KLU failed");
@@ -1175,7 +1229,7 @@ static st_out kin_solve(st_kin *k, st_run *c, double t)
     c->kmsg[0] = '\0';
     c->njac = 0;
     N_VConst(0.0, k->u);
-    if (c->s->n == 0) {
+    if (c->s->nr == 0) {
         o.ok = 1;
         return o;
     }
@@ -1198,9 +1252,50 @@ static st_out kin_solve(st_kin *k, st_run *c, double t)
            (o.flag == KIN_STEP_LT_STPTOL && o.fnorm <= 1e-8);
     if (!o.ok) {
         sun_klu_common *kc = SUNLinSol_KLUGetCommon(k->LS);
-        if (kc && kc->status == KLU_SINGULAR) o.singular_col = (int)kc->singular_col;
+        if (kc && kc->status == KLU_SINGULAR && kc->singular_col >= 0 && kc->singular_col < c->s->nr)
+            o.singular_col = c->s->full[kc->singular_col]; /* the unknown of the reduced column */
     }
     return o;
+}
+
+/* After a solve retried from a touching start (kin_jac's regularised first
+ * stiffness) converged: the stiffness at the equilibrium must hold every
+ * unknown (a direction that no contact, spring or /BCS holds stays
+ * singular, or unstable, there, and the regularised step may have
+ * converged at once because nothing loads it). The first unknown without
+ * support (full numbering), or -1. */
+static int kin_support(st_kin *k, st_run *c)
+{
+    rc_static *s = c->s;
+    if (s->nr == 0) return -1;
+    N_Vector fu = N_VClone(k->u);
+    if (!fu) return -1;
+    int col = -1;
+    c->touch = 0;
+    c->njac = 1;
+    if (kin_f(k->u, fu, c) == 0 && kin_jac(k->u, fu, k->A, c, NULL, NULL) == 0) {
+        /* a stable equilibrium's stiffness (dR/du, the forces' change) is
+         * negative definite, so each diagonal entry is negative: an unknown
+         * whose own stiffness is not (a frictionless column of spheres,
+         * whose straight line the compression makes unstable sideways) has
+         * no support */
+        const sunindextype *cp = SUNSparseMatrix_IndexPointers(k->A), *ri = SUNSparseMatrix_IndexValues(k->A);
+        const double *v = SUNSparseMatrix_Data(k->A);
+        for (int i = 0; i < s->nr && col < 0; i++) {
+            const int f = s->full[i];
+            double dg = 0.0;
+            for (sunindextype p = cp[i]; p < cp[i + 1]; p++)
+                if (ri[p] == i) dg = v[p];
+            if (!(dg < -RC_STATIC_FTOL * s->fs[f] / s->us[f])) col = f;
+        }
+        if (col < 0 && SUNLinSolSetup(k->LS, k->A) != 0) {
+            sun_klu_common *kc = SUNLinSol_KLUGetCommon(k->LS);
+            if (kc && kc->status == KLU_SINGULAR && kc->singular_col >= 0 && kc->singular_col < s->nr)
+                col = s->full[kc->singular_col];
+        }
+    }
+    N_VDestroy(fu);
+    return col;
 }
 
 /* ---- the run ------------------------------------------------------------ */
@@ -1360,6 +1455,11 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                     c.touch = 0;
                     iters += o.iters;
                     S->nonlin_iters += o.iters;
+                    const int sc = o.ok ? kin_support(&k, &c) : -1;
+                    if (sc >= 0) {
+                        o.ok = 0;
+                        o.singular_col = sc;
+                    }
                 }
                 if (!o.ok) {
                     /* a contact sliding at the last iterate: the load may
@@ -1398,7 +1498,7 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                 }
                 /* the state at the solution, the friction forces of the
                  * return mapping */
-                commit_state(s, tn, N_VGetArrayPointer(k.u), y);
+                commit_state(s, tn, expand(s, N_VGetArrayPointer(k.u)), y);
                 S->reinits += rounds > 0;
                 ch = update_modes(m, d, tn, y, ptol, ftol, &sink, flips, &S->events, err);
                 if (ch < 0) {

@@ -139,6 +139,32 @@ static const char *deck_two =
     "               1e-06\n"
     "/END\n";
 
+/* A static analysis of model m (owned from here on): its run data, a state
+ * and the solver (members NULL when out of memory), and their release. */
+typedef struct {
+    rc_model *m;
+    rc_data *d;
+    double *y;
+    rc_static *s;
+} st_fix;
+
+static st_fix fix_open(rc_model *m)
+{
+    st_fix f = {m, NULL, NULL, NULL};
+    f.d = m ? rc_data_new(m) : NULL;
+    f.y = m ? calloc((size_t)m->ny + 1, sizeof(double)) : NULL;
+    f.s = f.d ? rc_static_new(m, f.d) : NULL;
+    return f;
+}
+
+static void fix_close(st_fix *f)
+{
+    rc_static_free(f->s);
+    free(f->y);
+    rc_data_free(f->d);
+    rc_model_free(f->m);
+}
+
 /* max |K - FD| / max(|K|) per column over the stiffness at u, h scaled per
  * unknown (2e-8 m or rad: the Hertz law's third derivative at small P bounds it) */
 static double stiffness_fd_error(rc_static *s, double t, const double *u0)
@@ -183,9 +209,10 @@ static void check_deck(const char *text, const char *name, int nfree)
     if (!m) fprintf(stderr, "  %s\n", e.msg);
     ENSURE(m != NULL);
     if (!m) return;
-    rc_data *d = rc_data_new(m);
-    double *y = calloc((size_t)m->ny + 1, sizeof(double));
-    rc_static *s = d ? rc_static_new(m, d) : NULL;
+    st_fix f = fix_open(m);
+    rc_data *d = f.d;
+    double *y = f.y;
+    rc_static *s = f.s;
     ENSURE(d && y && s);
     if (d && y && s) {
         ENSURE(rc_static_size(s) == 6 * nfree);
@@ -222,10 +249,7 @@ static void check_deck(const char *text, const char *name, int nfree)
             free(u);
         }
     }
-    rc_static_free(s);
-    free(y);
-    rc_data_free(d);
-    rc_model_free(m);
+    fix_close(&f);
 }
 
 static void test_static_stiffness_fd(void)
@@ -273,9 +297,10 @@ static void test_static_stiffness_friction(void)
     rc_model *m = tu_compile_text(text, "static_fric_jac.rad", &e);
     if (!m) fprintf(stderr, "  %s\n", e.msg);
     ENSURE(m != NULL);
-    rc_data *d = m ? rc_data_new(m) : NULL;
-    double *y = m ? calloc((size_t)m->ny + 1, sizeof(double)) : NULL;
-    rc_static *s = d ? rc_static_new(m, d) : NULL;
+    st_fix f = fix_open(m);
+    rc_data *d = f.d;
+    double *y = f.y;
+    rc_static *s = f.s;
     ENSURE(!m || (d && y && s));
     if (m && d && y && s) {
         ENSURE(m->inter_fr[0].tidx >= 0 && m->inter_fr[0].kt == 1e4);
@@ -308,10 +333,7 @@ static void test_static_stiffness_friction(void)
         }
         free(r);
     }
-    rc_static_free(s);
-    free(y);
-    rc_data_free(d);
-    rc_model_free(m);
+    fix_close(&f);
     free(text);
 }
 
@@ -325,9 +347,10 @@ static void test_static_stiffness_friction(void)
 static void test_static_stiffness_hysteresis(void)
 {
     rc_model *m = TU_LOAD_OK("validation/static_hysteresis/case_iform1.rad");
-    rc_data *d = m ? rc_data_new(m) : NULL;
-    double *y = m ? calloc((size_t)m->ny + 1, sizeof(double)) : NULL;
-    rc_static *s = d ? rc_static_new(m, d) : NULL;
+    st_fix f = fix_open(m);
+    rc_data *d = f.d;
+    double *y = f.y;
+    rc_static *s = f.s;
     ENSURE(!m || (d && y && s));
     if (m && d && y && s) {
         ENSURE(m->inter_iform[0] == 1 && m->inter_hidx[0] >= 0 && m->inter_stiff[0] == 1e6);
@@ -361,10 +384,7 @@ static void test_static_stiffness_hysteresis(void)
         free(r);
         free(u);
     }
-    rc_static_free(s);
-    free(y);
-    rc_data_free(d);
-    rc_model_free(m);
+    fix_close(&f);
 }
 
 /* The whole of a text file, malloc'd (NULL: not read). */
@@ -404,9 +424,10 @@ static void test_static_stiffness_boxes(void)
     rc_model *m = tu_compile_text(text, "static_boxes_jac.rad", &err);
     if (!m) fprintf(stderr, "  %s\n", err.msg);
     ENSURE(m != NULL);
-    rc_data *d = m ? rc_data_new(m) : NULL;
-    double *y = m ? calloc((size_t)m->ny + 1, sizeof(double)) : NULL;
-    rc_static *s = d ? rc_static_new(m, d) : NULL;
+    st_fix f = fix_open(m);
+    rc_data *d = f.d;
+    double *y = f.y;
+    rc_static *s = f.s;
     ENSURE(!m || (d && y && s));
     if (m && d && y && s) {
         const int n = rc_static_size(s);
@@ -425,10 +446,7 @@ static void test_static_stiffness_boxes(void)
         if (!(err0 < 1e-6)) fprintf(stderr, "  boxes: stiffness error %.3g\n", err0);
         ENSURE(err0 < 1e-6);
     }
-    rc_static_free(s);
-    free(y);
-    rc_data_free(d);
-    rc_model_free(m);
+    fix_close(&f);
     free(text);
 }
 
@@ -442,9 +460,10 @@ static void test_static_stiffness_boxes(void)
 static void test_static_stiffness_point_friction(void)
 {
     rc_model *m = TU_LOAD_OK("validation/static_boxes/case_incline.rad");
-    rc_data *d = m ? rc_data_new(m) : NULL;
-    double *y = m ? calloc((size_t)m->ny + 1, sizeof(double)) : NULL;
-    rc_static *s = d ? rc_static_new(m, d) : NULL;
+    st_fix f = fix_open(m);
+    rc_data *d = f.d;
+    double *y = f.y;
+    rc_static *s = f.s;
     ENSURE(!m || (d && y && s));
     if (m && d && y && s) {
         const int n = rc_static_size(s), npt = m->inter_npt[0];
@@ -472,10 +491,7 @@ static void test_static_stiffness_point_friction(void)
             ENSURE(err0 < 1e-6);
         }
     }
-    rc_static_free(s);
-    free(y);
-    rc_data_free(d);
-    rc_model_free(m);
+    fix_close(&f);
 }
 
 /* Method 3 refuses what this version does not solve, naming the card. */

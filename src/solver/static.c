@@ -531,16 +531,22 @@ static void mpoint(const rc_static *s, int q, const double *u, const double rb[3
 /* The displacements since the substep's start of the material points of
  * the contact of interface i at u (a's, b's; their dp/dtheta into Da, Db
  * when not NULL): zero, to the bit, at the start. */
-static void fric_points(const rc_static *s, int i, const double *u, double pa[3], double pb[3], double *Da, double *Db)
+static void disp_points(const rc_static *s, int i, const double *ra, const double *rb, const double *xa0,
+                        const double *xb0, const double *u, double pa[3], double pb[3], double *Da, double *Db)
 {
     const int qa = body_slot(s, s->m->inter_ba[i]), qb = body_slot(s, s->m->inter_bb[i]);
     pa[0] = pa[1] = pa[2] = pb[0] = pb[1] = pb[2] = 0.0;
-    if (qa >= 0) mpoint(s, qa, u, s->fr_pa + 3 * i, pa, Da);
-    if (qb >= 0) mpoint(s, qb, u, s->fr_pb + 3 * i, pb, Db);
+    if (qa >= 0) mpoint(s, qa, u, ra, pa, Da);
+    if (qb >= 0) mpoint(s, qb, u, rb, pb, Db);
     for (int k = 0; k < 3; k++) {
-        if (qa >= 0) pa[k] -= s->fr_xa[3 * i + k];
-        if (qb >= 0) pb[k] -= s->fr_xb[3 * i + k];
+        if (qa >= 0) pa[k] -= xa0[k];
+        if (qb >= 0) pb[k] -= xb0[k];
     }
+}
+
+static void fric_points(const rc_static *s, int i, const double *u, double pa[3], double pb[3], double *Da, double *Db)
+{
+    disp_points(s, i, s->fr_pa + 3 * i, s->fr_pb + 3 * i, s->fr_xa + 3 * i, s->fr_xb + 3 * i, u, pa, pb, Da, Db);
 }
 
 /* Point j of node-pair interface i at the state y: its global position
@@ -588,14 +594,7 @@ static void material_point(const rc_static *s, int b, const double *y0, const do
 static void pf_points(const rc_static *s, int i, int pj, const double *u, double pa[3], double pb[3], double *Da,
                       double *Db)
 {
-    const int qa = body_slot(s, s->m->inter_ba[i]), qb = body_slot(s, s->m->inter_bb[i]);
-    pa[0] = pa[1] = pa[2] = pb[0] = pb[1] = pb[2] = 0.0;
-    if (qa >= 0) mpoint(s, qa, u, s->pf_pa + 3 * pj, pa, Da);
-    if (qb >= 0) mpoint(s, qb, u, s->pf_pb + 3 * pj, pb, Db);
-    for (int k = 0; k < 3; k++) {
-        if (qa >= 0) pa[k] -= s->pf_xa[3 * pj + k];
-        if (qb >= 0) pb[k] -= s->pf_xb[3 * pj + k];
-    }
+    disp_points(s, i, s->pf_pa + 3 * pj, s->pf_pb + 3 * pj, s->pf_xa + 3 * pj, s->pf_xb + 3 * pj, u, pa, pb, Da, Db);
 }
 
 void rc_static_set_friction_start(rc_static *s, double t, const double *y0)
@@ -632,24 +631,9 @@ void rc_static_set_friction_start(rc_static *s, double t, const double *y0)
         for (int k = 0; k < 3; k++) s->fr_t0[3 * i + k] = closed ? y0[at + k] : 0.0;
         rc_inter_report r;
         rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], 0, t, y0, &r);
-        for (int side = 0; side < 2; side++) {
-            const int b = side ? m->inter_bb[i] : m->inter_ba[i];
-            double *dst = (side ? s->fr_pb : s->fr_pa) + 3 * i;
-            if (body_slot(s, b) < 0) {
-                memcpy(dst, r.point, sizeof r.point);
-                continue;
-            }
-            const double *x = y0 + m->body_yadr[b], v[3] = {r.point[0] - x[0], r.point[1] - x[1], r.point[2] - x[2]};
-            const double complex qc[4] = {x[3], -x[4], -x[5], -x[6]}; /* global -> body */
-            double complex o[3];
-            qrot(qc, v, o);
-            for (int k = 0; k < 3; k++) dst[k] = creal(o[k]);
-            /* where it is at the start, as mpoint computes it (exp(0) is
-             * the identity to the bit) */
-            const double complex q0[4] = {x[3], x[4], x[5], x[6]};
-            qrot(q0, dst, o);
-            for (int k = 0; k < 3; k++) (side ? s->fr_xb : s->fr_xa)[3 * i + k] = x[k] + creal(o[k]);
-        }
+        for (int side = 0; side < 2; side++)
+            material_point(s, side ? m->inter_bb[i] : m->inter_ba[i], y0, r.point, (side ? s->fr_pb : s->fr_pa) + 3 * i,
+                           (side ? s->fr_xb : s->fr_xa) + 3 * i);
     }
     s->fr_ready = 1;
 }
@@ -831,6 +815,47 @@ static int find_block(const rc_static *s, int rs, int cs)
     return -1;
 }
 
+/* Adds to s->ext the engine's column of state j (its rate rows) times
+ * f g, g[side] the derivatives of the state by the 6 unknowns of each
+ * side's slot qs[side] (-1: fixed): 0, or 1 when a block is missing. */
+static int add_state_column(rc_static *s, int j, double f, const int qs[2], double g[2][6])
+{
+    const rc_model *m = s->m;
+    for (int64_t p = m->jac_colptr[j]; p < m->jac_colptr[j + 1]; p++) {
+        int kr;
+        const int rs = state_body(s, (int)m->jac_rowind[p], &kr);
+        if (rs < 0 || kr < 7 || s->jv[p] == 0.0) continue;
+        for (int side = 0; side < 2; side++) {
+            if (qs[side] < 0) continue;
+            const int blk = find_block(s, rs, qs[side]);
+            if (blk < 0) return 1;
+            double *E = s->ext + 36 * (size_t)blk + 6 * (kr - 7);
+            const double v = s->jv[p] * f;
+            for (int c = 0; c < 6; c++) E[c] += v * g[side][c];
+        }
+    }
+    return 0;
+}
+
+/* Adds to s->ext the engine's columns of a stick spring's three states
+ * (from col0) times the trial's derivatives -K_t d(p_a - p_b)/du: -K_t [I,
+ * Da] for body a, +K_t [I, Db] for body b (qs their slots, -1: fixed). 0,
+ * or 1 when a block is missing. */
+static int add_spring_columns(rc_static *s, int col0, const int qs[2], double kt, const double *Da, const double *Db)
+{
+    const double sg[2] = {-kt, kt}, *D[2] = {Da, Db};
+    for (int k = 0; k < 3; k++) {
+        double g[2][6];
+        for (int side = 0; side < 2; side++)
+            for (int c = 0; c < 3; c++) {
+                g[side][c] = c == k ? sg[side] : 0.0;
+                g[side][3 + c] = sg[side] * D[side][3 * k + c];
+            }
+        if (add_state_column(s, col0 + k, 1.0, qs, g)) return 1;
+    }
+    return 0;
+}
+
 /* Friction's part of the stiffness at u into s->ext: the engine's
  * derivatives of the rates in the friction states (stick: the projection
  * on the contact plane; slip: the limit along the state, L/|F| (I - e e')
@@ -845,24 +870,7 @@ static int fric_stiffness(rc_static *s, const double *u)
         double pa[3], pb[3], Da[9], Db[9];
         fric_points(s, i, u, pa, pb, Da, Db);
         const int qs[2] = {body_slot(s, m->inter_ba[i]), body_slot(s, m->inter_bb[i])};
-        const double kt = m->inter_fr[i].kt, sg[2] = {-kt, kt}, *D[2] = {Da, Db};
-        for (int k = 0; k < 3; k++) {
-            const int j = m->inter_eadr[i] + m->inter_fr[i].tidx + k;
-            for (int64_t p = m->jac_colptr[j]; p < m->jac_colptr[j + 1]; p++) {
-                int kr;
-                const int rs = state_body(s, (int)m->jac_rowind[p], &kr);
-                if (rs < 0 || kr < 7 || s->jv[p] == 0.0) continue;
-                for (int side = 0; side < 2; side++) {
-                    if (qs[side] < 0) continue;
-                    const int blk = find_block(s, rs, qs[side]);
-                    if (blk < 0) return 1;
-                    double *E = s->ext + 36 * (size_t)blk + 6 * (kr - 7);
-                    const double v = s->jv[p] * sg[side];
-                    E[k] += v;
-                    for (int c = 0; c < 3; c++) E[3 + c] += v * D[side][3 * k + c];
-                }
-            }
-        }
+        if (add_spring_columns(s, m->inter_eadr[i] + m->inter_fr[i].tidx, qs, m->inter_fr[i].kt, Da, Db)) return 1;
     }
     return 0;
 }
@@ -884,13 +892,8 @@ static void pen_gradient(rc_static *s, int i, double t, const double *u, int qs[
     qs[1] = body_slot(s, m->inter_bb[i]);
     for (int side = 0; side < 2; side++) {
         if (qs[side] < 0) continue;
-        const double *x = s->y + m->body_yadr[s->fb[qs[side]]];
-        const double v[3] = {r.point[0] - x[0], r.point[1] - x[1], r.point[2] - x[2]};
-        const double complex qc[4] = {x[3], -x[4], -x[5], -x[6]}; /* global -> body */
-        double complex o[3];
-        qrot(qc, v, o);
-        const double rb[3] = {creal(o[0]), creal(o[1]), creal(o[2])};
-        double p[3], D[9];
+        double rb[3], x0[3], p[3], D[9];
+        material_point(s, s->fb[qs[side]], s->y, r.point, rb, x0);
         mpoint(s, qs[side], u, rb, p, D);
         const double sg = side ? -1.0 : 1.0;
         for (int c = 0; c < 3; c++) {
@@ -900,26 +903,6 @@ static void pen_gradient(rc_static *s, int i, double t, const double *u, int qs[
     }
 }
 
-/* Adds to s->ext the engine's column of state j (its rate rows) times
- * f dP/du (pen_gradient's qs, g): 0, or 1 when a block is missing. */
-static int add_state_column(rc_static *s, int j, double f, const int qs[2], double g[2][6])
-{
-    const rc_model *m = s->m;
-    for (int64_t p = m->jac_colptr[j]; p < m->jac_colptr[j + 1]; p++) {
-        int kr;
-        const int rs = state_body(s, (int)m->jac_rowind[p], &kr);
-        if (rs < 0 || kr < 7 || s->jv[p] == 0.0) continue;
-        for (int side = 0; side < 2; side++) {
-            if (qs[side] < 0) continue;
-            const int blk = find_block(s, rs, qs[side]);
-            if (blk < 0) return 1;
-            double *E = s->ext + 36 * (size_t)blk + 6 * (kr - 7);
-            const double v = s->jv[p] * f;
-            for (int c = 0; c < 6; c++) E[c] += v * g[side][c];
-        }
-    }
-    return 0;
-}
 
 /* The parts of the stiffness at u that the law's own states carry, added
  * to s->ext (after fric_stiffness): a contact on its Stiff line
@@ -954,30 +937,14 @@ static int pf_stiffness(rc_static *s, const double *u)
     for (int i = 0; i < m->ninter; i++) {
         if (!s->pf_on[i] || s->d->inter_mode[i] != RC_MODE_CLOSED) continue;
         const int qs[2] = {body_slot(s, m->inter_ba[i]), body_slot(s, m->inter_bb[i])};
-        const double kt = m->inter_fr[i].kt, sg[2] = {-kt, kt};
         for (int j = 0; j < m->inter_npt[i]; j++) {
             const int pj = m->inter_pbase[i] + j;
             if (!s->pf_in[pj]) continue;
             double pa[3], pb[3], Da[9], Db[9];
             pf_points(s, i, pj, u, pa, pb, Da, Db);
-            const double *D[2] = {Da, Db};
-            for (int k = 0; k < 3; k++) {
-                const int col = m->inter_eadr[i] + m->inter_ns[i] + m->inter_pst[i] * j + k;
-                for (int64_t p = m->jac_colptr[col]; p < m->jac_colptr[col + 1]; p++) {
-                    int kr;
-                    const int rs = state_body(s, (int)m->jac_rowind[p], &kr);
-                    if (rs < 0 || kr < 7 || s->jv[p] == 0.0) continue;
-                    for (int side = 0; side < 2; side++) {
-                        if (qs[side] < 0) continue;
-                        const int blk = find_block(s, rs, qs[side]);
-                        if (blk < 0) return 1;
-                        double *E = s->ext + 36 * (size_t)blk + 6 * (kr - 7);
-                        const double v = s->jv[p] * sg[side];
-                        E[k] += v;
-                        for (int c = 0; c < 3; c++) E[3 + c] += v * D[side][3 * k + c];
-                    }
-                }
-            }
+            if (add_spring_columns(s, m->inter_eadr[i] + m->inter_ns[i] + m->inter_pst[i] * j, qs, m->inter_fr[i].kt,
+                                   Da, Db))
+                return 1;
         }
     }
     return 0;

@@ -755,9 +755,9 @@ static void pf_trial(rc_static *s, double t, const double *u)
         }
         /* the points in stick: their slip roots (the engine's test, with its
          * bands: |F_p|^2 / (L (1 + band) + f_band)^2 - 1) and shares */
-        rc_points_eval(m, d, i, NULL, t, s->y, s->pf_out);
+        rc_points_eval(m, d, i, NULL, t, s->y, s->pf_out + RC_PT_OUT * pb0);
         for (int j = 0; j < npt; j++) {
-            const double *o = s->pf_out + RC_PT_OUT * j;
+            const double *o = s->pf_out + RC_PT_OUT * (pb0 + j);
             s->pf_in[pb0 + j] = o[5] > 0.0;
             if (!s->pf_in[pb0 + j]) {
                 for (int k = 0; k < 3; k++) st[ps * j + k] = 0.0;
@@ -798,7 +798,7 @@ static void commit_state(rc_static *s, double t, const double *u, double *y)
         double *st = s->y + m->inter_eadr[i] + m->inter_ns[i];
         for (int j = 0; j < m->inter_npt[i]; j++) {
             if (!d->pt_slip[pb0 + j]) continue;
-            const double *f = s->pf_out + RC_PT_OUT * j + 1; /* the unit force in the plane, in stick */
+            const double *f = s->pf_out + RC_PT_OUT * (pb0 + j) + 1; /* the unit force in the plane, in stick */
             const double fp = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
             if (fp > 0)
                 for (int k = 0; k < 3; k++) st[ps * j + k] *= L / fp;

@@ -36,6 +36,12 @@ test, with its bands): an error naming the sliding interface.
 case_incline_preload.rad (Method 1, Preload 1, theta = 0.25, constant
 gravity): the dynamic run starts held by the corners' static friction
 forces and stays at rest.
+case_stack_incline.rad (Method 3, theta = 0.25, f = t / t_end): the two
+boxes stacked, friction per point on both contacts, no /BCS: the floor
+contact's force on the lower box (normal and friction) carries the weight
+of both, (m_1 + m_2) g f, the box-box contact's on the upper box m_2 g f,
+as vectors (the lower box tilts by some 1e-6 rad under its corners'
+friction moment, and the box-box contact plane with it).
 """
 import math
 import os
@@ -43,6 +49,7 @@ import re
 import subprocess
 import sys
 
+import netCDF4
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -120,6 +127,28 @@ def deck_incline(theta, preload):
     return d
 
 
+def deck_stack_incline(theta):
+    d = Deck(f"static boxes: two boxes stacked, friction per point, gravity tilted {theta:g} rad")
+    d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e6 N/m")
+    d.funct(2, [0.0, T_END], [0.0, 1.0], title="load factor f(t) = t / t_end")
+    d.nodes([(1, *C1), (2, *C2)])
+    d.rbody(1, 1, M1, [0.01, 0.02, 0.03], grnod=1, title="lower box")
+    d.rbody(2, 2, M2, [0.004, 0.005, 0.006], grnod=2, title="upper box")
+    d.box(1, 1, C1, H1, title="lower box")
+    d.box(2, 2, C2, H2, title="upper box")
+    d.plane(3, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0")
+    d.grnod(1, [1], title="lower")
+    d.grnod(2, [2], title="upper")
+    gx, gz = tilted(theta)
+    d.grav_fct(1, "X", gx, 2)
+    d.grav_fct(2, "Z", gz, 2)
+    d.type6(1, 1, 3, 1, fric=MU, stiff=KT, title="lower box - floor")
+    d.type6(2, 2, 1, 1, fric=MU, stiff=KT, title="upper box - lower box")
+    d.run(T_END, DT_OUT)
+    d.solver(method=3)
+    return d
+
+
 def incline_errors(r, theta, f):
     gx, gz = tilted(theta)
     Fn, Ft = -M1 * gz * f, M1 * gx * f
@@ -182,6 +211,25 @@ def main():
                 f"theta = {TH_ABOVE:g} rad > atan(mu): exit {p.returncode}, no equilibrium from the load time "
                 f"{tf:.3g} s (f = {tf / T_END:.2g}: where the excess passes the slip test's band); message: "
                 f"{p.stderr.strip()[:200]!r}")
+    # two contacts of several points, each with friction per point
+    r = rcval.Result(rcval.run_case("case_stack_incline.rad", keep_solver=True))
+    with netCDF4.Dataset(r.path) as nc:
+        normal = np.array(nc["inter_normal"][:])  # from a (the box above) to b
+    gx, gz = tilted(TH_BELOW)
+    f = r.t / T_END
+    e, tilt = 0.0, float(np.abs(normal[:, :, 0]).max())
+    for k, mass in ((0, M1 + M2), (1, M2)):
+        # the contact's force on its upper body (-F_n n + F_t) carries the
+        # weight above it: -mass g f, as a vector (the lower box tilts under
+        # its corners' friction moment, and the box-box plane with it)
+        force = -r.fn[:, k, None] * normal[:, k, :] + r.ffric[:, k, :]
+        weight = mass * np.column_stack([gx * f, 0.0 * f, gz * f])
+        e = max(e, float(np.abs(force + weight).max()))
+    e /= (M1 + M2) * G
+    rcval.check("static_boxes.stack_incline", len(r.t) == 5 and e < TOL,
+                f"two stacked boxes, friction per point on both contacts, theta = {TH_BELOW:g} rad: the force of "
+                f"each contact on the box above it against the weight it carries, max error / ((m_1 + m_2) g) "
+                f"{e:.2e} (< {TOL:g}); the contact planes tilt by up to {tilt:.1e} rad")
     # preloaded: held by the corners' static friction from the start
     rcval.METHOD = keep
     r = rcval.Result(rcval.run_case("case_incline_preload.rad", keep_solver=True))
@@ -196,7 +244,8 @@ def main():
 def cases():
     return {"case.rad": deck(False), "case_preload.rad": deck(True),
             "case_incline.rad": deck_incline(TH_BELOW, False), "case_incline_above.rad": deck_incline(TH_ABOVE, False),
-            "case_incline_preload.rad": deck_incline(TH_BELOW, True)}
+            "case_incline_preload.rad": deck_incline(TH_BELOW, True),
+            "case_stack_incline.rad": deck_stack_incline(TH_BELOW)}
 
 
 if __name__ == "__main__":

@@ -151,6 +151,13 @@ struct rc_static {
     double *pf_pa, *pf_pb, *pf_xa, *pf_xb; /* [3 npt] as fr_pa ... for point j */
     char *pf_in;      /* [npt] 1: the point has a share at the trial */
     double *pf_out;   /* [RC_PT_OUT npt] rc_points_eval's values */
+    /* the energies over a load substep (energy_step): at its start each
+     * interface's penetration of the law (>= 0) and elastic force, each
+     * point's share, each free body's position, the load time */
+    double *en_p0, *en_f0; /* [ninter] [m], [N] */
+    double *en_w0;    /* [npt] */
+    double *en_x0;    /* [3 nb] [m] */
+    double en_t0;
     double *ext;      /* [36 nblk] friction's part of the stiffness (rate rows, unknown columns) */
 };
 
@@ -214,7 +221,7 @@ void rc_static_free(rc_static *s)
                  s->colptr, s->rowind, s->ent_blk, s->ent_rc, s->raw, s->kval, s->fr_on, s->fr_t0, s->fr_pa, s->fr_pb,
                  s->fr_xa, s->fr_xb, s->ext, s->hy_on, s->hy_f0, s->hy_p0, s->hy_el, s->pe_on,
                  s->pf_on, s->pf_t0, s->pf_pa, s->pf_pb, s->pf_xa, s->pf_xb, s->pf_in, s->pf_out,
-                 s->full, s->rcolptr, s->rrowind, s->remap, s->ufull, s->rfull};
+                 s->full, s->rcolptr, s->rrowind, s->remap, s->ufull, s->rfull, s->en_p0, s->en_f0, s->en_w0, s->en_x0};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     free(s);
 }
@@ -387,10 +394,14 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     s->pf_xb = calloc(3 * np1, sizeof(double));
     s->pf_in = calloc(np1, 1);
     s->pf_out = calloc(RC_PT_OUT * np1, sizeof(double));
+    s->en_p0 = calloc(ni1, sizeof(double));
+    s->en_f0 = calloc(ni1, sizeof(double));
+    s->en_w0 = calloc(np1, sizeof(double));
+    s->en_x0 = calloc(3 * ((size_t)s->nb + 1), sizeof(double));
     if (!s->brow || !s->bcol || !s->bfirst || !s->colptr || !s->rowind || !s->raw || !s->kval || !s->ext ||
         !s->fr_on || !s->fr_t0 || !s->fr_pa || !s->fr_pb || !s->fr_xa || !s->fr_xb || !s->hy_on || !s->hy_f0 ||
         !s->hy_p0 || !s->hy_el || !s->pe_on || !s->pf_on || !s->pf_t0 || !s->pf_pa || !s->pf_pb || !s->pf_xa ||
-        !s->pf_xb || !s->pf_in || !s->pf_out) {
+        !s->pf_xb || !s->pf_in || !s->pf_out || !s->en_p0 || !s->en_f0 || !s->en_w0 || !s->en_x0) {
         free(key);
         free(mark);
         free(blkof);
@@ -601,6 +612,22 @@ void rc_static_set_friction_start(rc_static *s, double t, const double *y0)
 {
     const rc_model *m = s->m;
     rc_data *d = s->d;
+    /* the energies' start (energy_step) */
+    s->en_t0 = t;
+    for (int q = 0; q < s->nb; q++) memcpy(s->en_x0 + 3 * q, y0 + m->body_yadr[s->fb[q]], 3 * sizeof(double));
+    for (int i = 0; i < m->ninter; i++) {
+        s->en_p0[i] = s->en_f0[i] = 0.0;
+        if (d->inter_mode[i] != RC_MODE_CLOSED) continue;
+        rc_inter_report r;
+        rc_inter_report_eval_d(m, d, i, t, y0, &r);
+        s->en_p0[i] = fmax(r.pl, 0.0);
+        s->en_f0[i] = r.fload;
+        if (s->pf_on[i]) {
+            rc_points_eval(m, d, i, NULL, t, y0, s->pf_out + RC_PT_OUT * m->inter_pbase[i]);
+            for (int j = 0; j < m->inter_npt[i]; j++)
+                s->en_w0[m->inter_pbase[i] + j] = s->pf_out[RC_PT_OUT * (m->inter_pbase[i] + j) + 4];
+        }
+    }
     for (int i = 0; i < m->ninter; i++) {
         if (s->pf_on[i]) {
             /* friction per point: each point's unit force and its contact
@@ -1265,6 +1292,63 @@ static int kin_support(st_kin *k, st_run *c)
     return col;
 }
 
+/* The energy states over a converged load substep, from its start
+ * (rc_static_set_friction_start) to y at the unknowns u (commit_state's),
+ * by the trapezoidal rule on the path between: each interface's work of its
+ * elastic law, W_load += (F_0 + F_1)/2 (P_1 - P_0) (exact where the law is
+ * linear over the substep: the load curve's segments, the Stiff line); the
+ * friction's work, W_fric -= (F_t0 + F_t1)/2 . (Delta_a - Delta_b) at the
+ * contact point (per point, each at its share); and, with a time-varying
+ * gravity, its potential, E += -m (g(t_0) + g(t_1))/2 . (x_1 - x_0). A
+ * static path then keeps the ledger's sum (energy_total) at its start, and
+ * energy_hysteresis and energy_friction (work less what is stored) are the
+ * dissipations of the path (docs/theory.md 7.8). */
+static void energy_step(rc_static *s, double t, const double *u, double *y)
+{
+    const rc_model *m = s->m;
+    rc_data *d = s->d;
+    for (int i = 0; i < m->ninter; i++) {
+        rc_inter_report r;
+        rc_inter_report_eval_d(m, d, i, t, y, &r);
+        const int closed = d->inter_mode[i] == RC_MODE_CLOSED;
+        const double p1 = closed ? fmax(r.pl, 0.0) : 0.0, f1 = closed ? r.fload : 0.0;
+        y[m->inter_eadr[i]] += 0.5 * (s->en_f0[i] + f1) * (p1 - s->en_p0[i]);
+        const rc_fric *fr = &m->inter_fr[i];
+        if (s->fr_on[i] && closed) {
+            double pa[3], pb[3];
+            fric_points(s, i, u, pa, pb, NULL, NULL);
+            for (int k = 0; k < 3; k++) y[m->inter_eadr[i] + fr->widx] -= 0.5 * (s->fr_t0[3 * i + k] + r.ft[k]) * (pa[k] - pb[k]);
+        }
+        if (s->pf_on[i] && closed) {
+            const int pb0 = m->inter_pbase[i], ps = m->inter_pst[i];
+            const double *st = y + m->inter_eadr[i] + m->inter_ns[i];
+            for (int j = 0; j < m->inter_npt[i]; j++) {
+                double pa[3], pb[3];
+                pf_points(s, i, pb0 + j, u, pa, pb, NULL, NULL);
+                /* the slide in the contact plane (the points' states keep a
+                 * part along the normal, which the engine drops; the
+                 * interface's normal for every point: a face contact) */
+                double dl[3], dn = 0.0;
+                for (int k = 0; k < 3; k++) dl[k] = pa[k] - pb[k];
+                for (int k = 0; k < 3; k++) dn += dl[k] * r.normal[k];
+                for (int k = 0; k < 3; k++) dl[k] -= dn * r.normal[k];
+                const double w1 = s->pf_in[pb0 + j] ? s->pf_out[RC_PT_OUT * (pb0 + j) + 4] : 0.0, w0 = s->en_w0[pb0 + j];
+                for (int k = 0; k < 3; k++)
+                    y[m->inter_eadr[i] + fr->widx] -= 0.5 * (w0 * s->pf_t0[3 * (pb0 + j) + k] + w1 * st[ps * j + k]) * dl[k];
+            }
+        }
+    }
+    if (m->gwork_adr >= 0)
+        for (int q = 0; q < s->nb; q++) {
+            const int b = s->fb[q];
+            double g0[3], g1[3];
+            rc_gravity(m, b, s->en_t0, g0);
+            rc_gravity(m, b, t, g1);
+            const double *x1 = y + m->body_yadr[b], *x0 = s->en_x0 + 3 * q;
+            for (int k = 0; k < 3; k++) y[m->gwork_adr] -= m->body_mass[b] * 0.5 * (g0[k] + g1[k]) * (x1[k] - x0[k]);
+        }
+}
+
 /* ---- the run ------------------------------------------------------------ */
 static const char *const dof_name[6] = {"translation x", "translation y", "translation z",
                                         "rotation about the body's x axis", "rotation about the body's y axis",
@@ -1491,6 +1575,8 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                     }
             }
             if (ok) {
+                /* the energies over the substep (the last commit's unknowns) */
+                energy_step(s, tn, s->ufull, y);
                 /* friction: the contacts that changed between stick and slip */
                 for (int i = 0; i < m->ninter; i++) {
                     if (!s->fr_on[i] || d->inter_mode[i] != RC_MODE_CLOSED) continue;

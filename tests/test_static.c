@@ -406,6 +406,53 @@ static char *read_text(const char *path)
     return t;
 }
 
+/* Hysteresis on a contact of several points: validation/static_hysteresis'
+ * case_box.rad (Iform 2 on a box's corners, P_e := P the deepest corner's)
+ * without its /BCS, pressed in from F_h0 = 3.5 N at P_0 = 6e-5 m and tilted,
+ * on the Stiff line: the stiffness (F_h's and P_e's columns) against
+ * central differences. */
+static void test_static_stiffness_hysteresis_box(void)
+{
+    char *text = read_text("validation/static_hysteresis/case_box.rad");
+    ENSURE(text != NULL);
+    if (!text) return;
+    char *b = strstr(text, "/BCS/1"), *e = b ? strstr(b + 1, "\n/") : NULL;
+    ENSURE(b && e);
+    if (b && e) memmove(b, e + 1, strlen(e + 1) + 1);
+    rc_error err;
+    rc_model *m = tu_compile_text(text, "static_hyst_box.rad", &err);
+    if (!m) fprintf(stderr, "  %s\n", err.msg);
+    ENSURE(m != NULL);
+    st_fix f = fix_open(m);
+    rc_data *d = f.d;
+    double *y = f.y;
+    rc_static *s = f.s;
+    ENSURE(!m || (d && y && s));
+    if (m && d && y && s) {
+        const int n = rc_static_size(s), a = m->body_yadr[m->inter_ba[0]];
+        ENSURE(n == 6 && m->inter_peidx[0] >= 0 && m->inter_hidx[0] >= 0);
+        rc_initial_state(m, y);
+        rc_modes_init(m, d, 0.5, y);
+        d->inter_mode[0] = RC_MODE_CLOSED;
+        d->inter_branch[0] = RC_BR_ELASTIC;
+        y[a + 2] -= 6e-5;
+        y[m->inter_eadr[0] + m->inter_hidx[0]] = 3.5;
+        y[m->inter_eadr[0] + m->inter_peidx[0]] = 6e-5;
+        rc_static_set_start(s, y);
+        rc_static_set_friction_start(s, 0.5, y);
+        /* 1 um in, tilts of 1e-5 rad (corners 1 um apart): on the Stiff line */
+        const double u[6] = {0.0, 0.0, -1e-6, 1e-5, -0.7e-5, 0.0};
+        double r[6];
+        ENSURE(n != 6 || rc_static_residual(s, 0.5, u, r) == 0);
+        ENSURE(d->inter_branch[0] == RC_BR_ELASTIC);
+        const double err0 = n == 6 ? stiffness_fd_error(s, 0.5, u) : INFINITY;
+        if (!(err0 < 1e-6)) fprintf(stderr, "  hysteresis on a box: stiffness error %.3g\n", err0);
+        ENSURE(err0 < 1e-6);
+    }
+    fix_close(&f);
+    free(text);
+}
+
 /* Several contact points (docs/theory.md 7.8): validation/static_boxes'
  * box on a box on a floor without its /BCS, both boxes pressed in and
  * tilted (a single deepest corner in each contact), the law at the deepest
@@ -534,6 +581,7 @@ void suite_static(void)
     RUN_TEST(test_static_stiffness_friction);
     RUN_TEST(test_static_stiffness_hysteresis);
     RUN_TEST(test_static_stiffness_boxes);
+    RUN_TEST(test_static_stiffness_hysteresis_box);
     RUN_TEST(test_static_stiffness_point_friction);
     RUN_TEST(test_static_scope);
 }

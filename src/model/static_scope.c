@@ -70,15 +70,12 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
         else if (rc_pair_multi(m->inter_pair[i]) && !rc_inter_frictionless(m, i) &&
                  !(rc_pair_nodes(m->inter_pair[i]) && m->inter_npt[i] > 0 && m->inter_pst[i] == 3))
             what = "friction on a sphere against a segment surface";
-        else if (rc_pair_multi(m->inter_pair[i]) && m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0)
-            what = "hysteresis (TYPE6 Iform 1, 2) on a pair with several contact points (segment surfaces, a box "
-                   "against a plane or a box)";
         if (what)
             RC_RAISE(err, RC_EINPUT,
                      RC_LOCFMT "card %s: " RC_STATIC_NOT " (%s); expected a contact of TYPE6 (any Iform), "
                                "frictionless or with the stick-spring friction of TYPE6 Fric/Sfric or a /FRICTION "
                                "Coulomb law, or of the power law without friction, between spheres, planes, boxes or "
-                               "cylinders (several contact points: frictionless, Iform 0), or %s",
+                               "cylinders, boxes or segment surfaces, or %s",
                      RC_LOC(m->inter_loc[i]), m->inter_name[i], what, how, alt);
     }
     for (int k = 0; m->cpl && k < m->cpl->n; k++)

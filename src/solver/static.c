@@ -473,8 +473,7 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
                       m->inter_fr[i].tidx >= 0;
         s->pf_on[i] = !rc_inter_frictionless(m, i) && rc_static_friction_ok(&m->inter_fr[i]) && m->inter_npt[i] > 0 &&
                       rc_pair_nodes(m->inter_pair[i]) && m->inter_pst[i] == 3;
-        s->hy_on[i] = m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0 && m->inter_hidx[i] >= 0 &&
-                      m->inter_peidx[i] < 0 && !rc_pair_multi(m->inter_pair[i]);
+        s->hy_on[i] = m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0 && m->inter_hidx[i] >= 0;
         s->pe_on[i] = rc_pair_multi(m->inter_pair[i]) && m->inter_peidx[i] >= 0;
     }
     /* the slip test's rounding: that of the loads (as the active set's) */

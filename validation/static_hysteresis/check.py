@@ -16,6 +16,9 @@ reloading below it along the Stiff line, P = P_prev + (F - F_prev) / k_s,
 back to the load curve where the line meets it. At the end (f = 0.1)
 P = m g / k - 0.9 m g / k_s, where an elastic contact (Iform 0) would give
 0.1 m g / k: the residual penetration of the plastic cycle.
+case_box.rad: Iform 2 on the corners of a box lying flat (a contact of
+several points, its law at the deepest corner's penetration), held against
+sliding and turning: the same penetrations and dissipation as case.rad.
 case_iform1.rad (Iform 1 with the unload curve F_U(P) = k_u (P - c)+,
 k_u = 8e4 N/m, c = 2e-5 m, below the load curve): unloading runs down the Stiff line until it
 meets F_U, then along F_U (P = c + F / k_u); reloading runs up the Stiff
@@ -45,6 +48,7 @@ KU, CU = 8.0e4, 2.0e-5            # Iform 1: unload curve slope [N/m] (below k),
 T_END, DT_OUT = 1.0, 0.05
 LOAD = ([0.0, 0.3, 0.5, 0.8, 1.0], [0.0, 1.0, 0.25, 0.75, 0.1])
 TOL = 1e-8
+HB = 0.05                        # the box's half-height [m]
 
 
 def deck(iform):
@@ -62,6 +66,28 @@ def deck(iform):
     d.bcs(1, 1, "110 000", title="held to the vertical")
     d.grav_fct(1, "Z", -G, 2)
     d.type6(1, 1, 2, 1, iform=iform, stiff=KS, fct_ul=3 if iform == 1 else 0, title="sphere - floor")
+    d.run(T_END, DT_OUT)
+    d.solver(method=3)
+    return d
+
+
+def deck_box():
+    """Iform 2 on a box's corners (a contact of several points): the box
+    (m = 1 kg, half-sizes 0.1 x 0.08 x 0.05 m) lies flat on the floor, held
+    by /BCS against sliding and turning (frictionless), its four bottom
+    corners at one depth: the law at the deepest corner's penetration is the
+    sphere's."""
+    d = Deck("static hysteresis: a box on a floor, TYPE6 Iform 2 on its corners, load-unload-reload")
+    d.funct(1, [0.0, 1.0], [0.0, K], title="load curve F_L = k P, k = 1e5 N/m")
+    d.funct(2, *LOAD, title="load factor f(t)")
+    d.nodes([(1, 0.0, 0.0, HB)])
+    d.rbody(1, 1, M, [0.004, 0.005, 0.006], grnod=1, title="box")
+    d.box(1, 1, (0.0, 0.0, HB), (0.1, 0.08, HB), title="box")
+    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0")
+    d.grnod(1, [1], title="box")
+    d.bcs(1, 1, "110 111", title="held sideways and against turning")
+    d.grav_fct(1, "Z", -G, 2)
+    d.type6(1, 1, 2, 1, iform=2, stiff=KS, title="box - floor")
     d.run(T_END, DT_OUT)
     d.solver(method=3)
     return d
@@ -90,8 +116,7 @@ def law_path(F, iform):
 
 def main():
     rcval.METHOD = "static" if rcval.METHOD else ""
-    for name, iform in (("case.rad", 2), ("case_iform1.rad", 1)):
-        tag = "iform2" if iform == 2 else "iform1"
+    for name, iform, tag in (("case.rad", 2, "iform2"), ("case_iform1.rad", 1, "iform1"), ("case_box.rad", 2, "box")):
         r = rcval.Result(rcval.run_case(name, keep_solver=True))
         f = np.interp(r.t, *LOAD)
         F = M * G * f
@@ -130,13 +155,13 @@ def main():
                     f" ends at {float(hyst[-1]):.9e} J"
                     + (f", closed form F_m^2 / 2 (1/k - 1/k_s) = {ref:.9e} J, rel. error {eh:.2e} (< 1e-9)"
                        if iform == 2 else ""))
-        if iform == 2:
+        if tag == "iform2":
             Pend = M * G / K - 0.9 * M * G / KS
             e = abs(float(P[-1]) - Pend) / Pend
             rcval.check("static_hysteresis.iform2.residual", e < TOL and float(P[-1]) > 5.0 * 0.1 * M * G / K,
                         f"P at f = 0.1 after the cycle {float(P[-1]):.9e} m against m g / k - 0.9 m g / k_s = "
                         f"{Pend:.9e} m, rel. error {e:.2e} (< {TOL:g}); elastic would give {0.1 * M * G / K:.3e} m")
-        else:
+        elif tag == "iform1":
             seen = set(branches)
             rcval.check("static_hysteresis.iform1.branches", seen == {"l", "s", "u"},
                         f"the path visits the load curve, the Stiff line and the unload curve: {sorted(seen)}")
@@ -144,7 +169,7 @@ def main():
 
 
 def cases():
-    return {"case.rad": deck(2), "case_iform1.rad": deck(1)}
+    return {"case.rad": deck(2), "case_iform1.rad": deck(1), "case_box.rad": deck_box()}
 
 
 if __name__ == "__main__":

@@ -406,6 +406,24 @@ static char *read_text(const char *path)
     return t;
 }
 
+/* Validation deck `path` without its /BCS card (its bodies free), compiled
+ * (NULL on failure, with the message printed). */
+static rc_model *compile_without_bcs(const char *path, const char *name)
+{
+    char *text = read_text(path);
+    ENSURE(text != NULL);
+    if (!text) return NULL;
+    char *b = strstr(text, "/BCS/1"), *e = b ? strstr(b + 1, "\n/") : NULL;
+    ENSURE(b && e);
+    if (b && e) memmove(b, e + 1, strlen(e + 1) + 1);
+    rc_error err;
+    rc_model *m = tu_compile_text(text, name, &err);
+    if (!m) fprintf(stderr, "  %s\n", err.msg);
+    ENSURE(m != NULL);
+    free(text);
+    return m;
+}
+
 /* Hysteresis on a contact of several points: validation/static_hysteresis'
  * case_box.rad (Iform 2 on a box's corners, P_e := P the deepest corner's)
  * without its /BCS, pressed in from F_h0 = 3.5 N at P_0 = 6e-5 m and tilted,
@@ -413,16 +431,7 @@ static char *read_text(const char *path)
  * central differences. */
 static void test_static_stiffness_hysteresis_box(void)
 {
-    char *text = read_text("validation/static_hysteresis/case_box.rad");
-    ENSURE(text != NULL);
-    if (!text) return;
-    char *b = strstr(text, "/BCS/1"), *e = b ? strstr(b + 1, "\n/") : NULL;
-    ENSURE(b && e);
-    if (b && e) memmove(b, e + 1, strlen(e + 1) + 1);
-    rc_error err;
-    rc_model *m = tu_compile_text(text, "static_hyst_box.rad", &err);
-    if (!m) fprintf(stderr, "  %s\n", err.msg);
-    ENSURE(m != NULL);
+    rc_model *m = compile_without_bcs("validation/static_hysteresis/case_box.rad", "static_hyst_box.rad");
     st_fix f = fix_open(m);
     rc_data *d = f.d;
     double *y = f.y;
@@ -450,7 +459,6 @@ static void test_static_stiffness_hysteresis_box(void)
         ENSURE(err0 < 1e-6);
     }
     fix_close(&f);
-    free(text);
 }
 
 /* Several contact points (docs/theory.md 7.8): validation/static_boxes'
@@ -461,16 +469,7 @@ static void test_static_stiffness_hysteresis_box(void)
  * of the residual. */
 static void test_static_stiffness_boxes(void)
 {
-    char *text = read_text("validation/static_boxes/case.rad");
-    ENSURE(text != NULL);
-    if (!text) return;
-    char *b = strstr(text, "/BCS/1"), *e = b ? strstr(b + 1, "\n/") : NULL;
-    ENSURE(b && e);
-    if (b && e) memmove(b, e + 1, strlen(e + 1) + 1);
-    rc_error err;
-    rc_model *m = tu_compile_text(text, "static_boxes_jac.rad", &err);
-    if (!m) fprintf(stderr, "  %s\n", err.msg);
-    ENSURE(m != NULL);
+    rc_model *m = compile_without_bcs("validation/static_boxes/case.rad", "static_boxes_jac.rad");
     st_fix f = fix_open(m);
     rc_data *d = f.d;
     double *y = f.y;
@@ -494,7 +493,6 @@ static void test_static_stiffness_boxes(void)
         ENSURE(err0 < 1e-6);
     }
     fix_close(&f);
-    free(text);
 }
 
 /* Friction per contact point (docs/theory.md 7.8): validation/static_boxes'

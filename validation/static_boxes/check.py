@@ -88,6 +88,11 @@ def deck(preload):
         d.grav_fct(1, "Z", -G, 2)
     d.type6(1, 1, 3, 1, title="lower box - floor")
     d.type6(2, 2, 1, 1, title="upper box - lower box")
+    return run_solver(d, preload)
+
+
+def run_solver(d, preload):
+    """/RUN, and /SOLVER: the static analysis, or CVODE from its preload."""
     d.run(T_END, DT_OUT)
     if preload:
         d.solver(method=1, rtol=1e-8, preload=1)
@@ -119,12 +124,7 @@ def deck_incline(theta, preload):
         d.grav_fct(1, "X", gx, 2)
         d.grav_fct(2, "Z", gz, 2)
     d.type6(1, 1, 3, 1, fric=MU, stiff=KT, title="box - floor")
-    d.run(T_END, DT_OUT)
-    if preload:
-        d.solver(method=1, rtol=1e-8, preload=1)
-    else:
-        d.solver(method=3)
-    return d
+    return run_solver(d, preload)
 
 
 def deck_stack_incline(theta):

@@ -1348,6 +1348,14 @@ static void energy_step(rc_static *s, double t, const double *u, double *y)
         }
 }
 
+/* 1: some contact point of interface i slides (friction per point). */
+static int point_slip(const rc_model *m, const rc_data *d, int i)
+{
+    for (int j = 0; j < m->inter_npt[i]; j++)
+        if (d->pt_slip[m->inter_pbase[i] + j]) return 1;
+    return 0;
+}
+
 /* ---- the run ------------------------------------------------------------ */
 static const char *const dof_name[6] = {"translation x", "translation y", "translation z",
                                         "rotation about the body's x axis", "rotation about the body's y axis",
@@ -1436,11 +1444,12 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
     double *ptol = calloc((size_t)m->ninter + 1, sizeof(double));
     int *msave = calloc((size_t)m->ninter + 1, sizeof(int)), *flips = calloc((size_t)m->ninter + 1, sizeof(int));
     int *slsave = calloc((size_t)m->ninter + 1, sizeof(int));
+    int *pfsave = calloc((size_t)m->ninter + 1, sizeof(int));
     char reason[1536] = "";
     const char *fail_reason = NULL;
     double t = 0.0;
     int fb_ok = 0;
-    if (!d || !s || !y || !ysave || !ptol || !msave || !flips || !slsave || !(fb_ok = rc_bk_frame_alloc(m, &fb))) {
+    if (!d || !s || !y || !ysave || !ptol || !msave || !flips || !slsave || !pfsave || !(fb_ok = rc_bk_frame_alloc(m, &fb))) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the static analysis");
         goto done;
     }
@@ -1481,6 +1490,7 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
             memcpy(ysave, y, (size_t)m->ny * sizeof(double));
             memcpy(msave, d->inter_mode, (size_t)m->ninter * sizeof(int));
             memcpy(slsave, d->inter_slip, (size_t)m->ninter * sizeof(int));
+            for (int i = 0; i < m->ninter; i++) pfsave[i] = point_slip(m, d, i);
             memset(flips, 0, (size_t)m->ninter * sizeof(int));
             /* friction: the substep's start (its forces, the contact points) */
             rc_static_set_friction_start(s, t, y);
@@ -1576,17 +1586,20 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
             if (ok) {
                 /* the energies over the substep (the last commit's unknowns) */
                 energy_step(s, tn, s->ufull, y);
-                /* friction: the contacts that changed between stick and slip */
+                /* friction: the contacts that changed between stick and slip
+                 * (with friction per point: between no point sliding and
+                 * some sliding) */
                 for (int i = 0; i < m->ninter; i++) {
-                    if (!s->fr_on[i] || d->inter_mode[i] != RC_MODE_CLOSED) continue;
-                    const int was = msave[i] == RC_MODE_CLOSED && slsave[i];
-                    if (was == d->inter_slip[i]) continue;
+                    if ((!s->fr_on[i] && !s->pf_on[i]) || d->inter_mode[i] != RC_MODE_CLOSED) continue;
+                    const int now = s->pf_on[i] ? point_slip(m, d, i) : d->inter_slip[i];
+                    const int was = msave[i] == RC_MODE_CLOSED && (s->pf_on[i] ? pfsave[i] : slsave[i]);
+                    if (was == now) continue;
                     rc_inter_report r;
                     rc_inter_report_eval_d(m, d, i, tn, y, &r);
                     const double v[3] = {r.p, 0.0, r.fn > 0 ? r.fn : 0.0};
                     S->events++;
-                    if ((st = rc_bk_sink_event(&sink, tn, d->inter_slip[i] ? RC_EV_FRIC_SLIP : RC_EV_FRIC_STICK,
-                                         m->inter_name[i], v, err)))
+                    if ((st = rc_bk_sink_event(&sink, tn, now ? RC_EV_FRIC_SLIP : RC_EV_FRIC_STICK, m->inter_name[i], v,
+                                               err)))
                         goto done;
                 }
                 t = tn;
@@ -1691,6 +1704,7 @@ done:
     free(msave);
     free(flips);
     free(slsave);
+    free(pfsave);
     return st;
 }
 

@@ -36,6 +36,11 @@ test, with its bands): an error naming the sliding interface.
 case_incline_preload.rad (Method 1, Preload 1, theta = 0.25, constant
 gravity): the dynamic run starts held by the corners' static friction
 forces and stays at rest.
+case_slide.rad (Method 3): the box under gravity tilted 0.4 rad > atan(mu),
+held by a horizontal spring (100 N/m) to a fixed point 1 m behind, the
+load rising to f = 1 and falling to 0.2: its corners slide against the
+spring (equilibria in slip), then stick again as the load falls: one
+fric_slip and one fric_stick event.
 case_stack_incline.rad (Method 3, theta = 0.25, f = t / t_end): the two
 boxes stacked, friction per point on both contacts, no /BCS: the floor
 contact's force on the lower box (normal and friction) carries the weight
@@ -65,7 +70,7 @@ C2 = (0.01, 0.02, 2.0 * H1[2] + H2[2])
 T_END, DT_OUT = 1.0, 0.25
 TOL = 1e-9
 MU, KT = 0.3, 2.0e5
-TH_BELOW, TH_ABOVE = 0.25, 0.35
+TH_BELOW, TH_ABOVE, TH_SLIDE = 0.25, 0.35, 0.4
 
 
 def deck(preload):
@@ -125,6 +130,28 @@ def deck_incline(theta, preload):
         d.grav_fct(2, "Z", gz, 2)
     d.type6(1, 1, 3, 1, fric=MU, stiff=KT, title="box - floor")
     return run_solver(d, preload)
+
+
+def deck_slide():
+    """The box of case_incline under gravity tilted 0.4 rad > atan(mu),
+    held by a horizontal spring (100 N/m) from its centre to a fixed point
+    1 m behind it; the load factor rises to 1 and falls to 0.2."""
+    d = Deck("static boxes: a box with friction per corner slides against a spring, sticks again")
+    d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e6 N/m")
+    d.funct(2, [0.0, 0.5 * T_END, T_END], [0.0, 1.0, 0.2], title="load factor f(t)")
+    d.nodes([(1, *C1)])
+    d.rbody(1, 1, M1, [0.01, 0.02, 0.03], grnod=1, title="box")
+    d.box(1, 1, C1, H1, title="box")
+    d.plane(3, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0")
+    d.grnod(1, [1], title="box")
+    gx, gz = tilted(TH_SLIDE)
+    d.grav_fct(1, "X", gx, 2)
+    d.grav_fct(2, "Z", gz, 2)
+    d.type6(1, 1, 3, 1, fric=MU, stiff=KT, title="box - floor")
+    d.spring(2, 1, C1, 0, (C1[0] - 1.0, C1[1], C1[2]), iform=1, a=100.0, title="horizontal spring")
+    d.run(T_END, 0.05)
+    d.solver(method=3)
+    return d
 
 
 def deck_stack_incline(theta):
@@ -230,6 +257,14 @@ def main():
                 f"two stacked boxes, friction per point on both contacts, theta = {TH_BELOW:g} rad: the force of "
                 f"each contact on the box above it against the weight it carries, max error / ((m_1 + m_2) g) "
                 f"{e:.2e} (< {TOL:g}); the contact planes tilt by up to {tilt:.1e} rad")
+    # sliding against a spring, then sticking: the events of the points
+    r = rcval.Result(rcval.run_case("case_slide.rad", keep_solver=True))
+    evs = [(round(float(t), 9), k) for t, k, e in zip(r.ev_t, r.ev_kind, r.ev_elem) if k.startswith("fric_")]
+    kinds = [k for _, k in evs]
+    rcval.check("static_boxes.slide_events", r.t[-1] == T_END and kinds == ["fric_slip", "fric_stick"]
+                and evs[0][0] < 0.5 * T_END < evs[1][0],
+                f"{len(r.t)} records to {r.t[-1]:g} s; friction events {evs} (expected fric_slip while the load rises "
+                f"past the friction limit, fric_stick once it falls)")
     # preloaded: held by the corners' static friction from the start
     rcval.METHOD = keep
     r = rcval.Result(rcval.run_case("case_incline_preload.rad", keep_solver=True))
@@ -245,7 +280,7 @@ def cases():
     return {"case.rad": deck(False), "case_preload.rad": deck(True),
             "case_incline.rad": deck_incline(TH_BELOW, False), "case_incline_above.rad": deck_incline(TH_ABOVE, False),
             "case_incline_preload.rad": deck_incline(TH_BELOW, True),
-            "case_stack_incline.rad": deck_stack_incline(TH_BELOW)}
+            "case_stack_incline.rad": deck_stack_incline(TH_BELOW), "case_slide.rad": deck_slide()}
 
 
 if __name__ == "__main__":

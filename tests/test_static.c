@@ -314,7 +314,7 @@ static void test_static_stiffness_friction(void)
             d->inter_mode[0] = RC_MODE_CLOSED;
             memcpy(y + m->inter_eadr[0] + m->inter_fr[0].tidx, ft0[c], sizeof ft0[c]);
             rc_static_set_start(s, y);
-            rc_static_set_friction_start(s, 0.5, y);
+            rc_static_set_substep_start(s, 0.5, y);
             /* displaced by up to 0.2 mm (2 N of the spring) and rotated by up to 0.01 rad */
             for (int i = 0; i < n; i++) u[i] = (i % 6 < 3 ? 2e-4 : 0.01) * sin(1.7 * i + 0.3);
             if (c == 1) u[0] = -4e-4; /* the trial force past the limit */
@@ -369,7 +369,7 @@ static void test_static_stiffness_hysteresis(void)
             y[a + 2] -= 6e-5; /* P_0 = 6e-5 m */
             y[m->inter_eadr[0] + m->inter_hidx[0]] = 3.5;
             rc_static_set_start(s, y);
-            rc_static_set_friction_start(s, 0.5, y);
+            rc_static_set_substep_start(s, 0.5, y);
             memset(u, 0, (size_t)n * sizeof(double));
             u[2] = dz[c];
             ENSURE(rc_static_residual(s, 0.5, u, r) == 0);
@@ -448,7 +448,7 @@ static void test_static_stiffness_hysteresis_box(void)
         y[m->inter_eadr[0] + m->inter_hidx[0]] = 3.5;
         y[m->inter_eadr[0] + m->inter_peidx[0]] = 6e-5;
         rc_static_set_start(s, y);
-        rc_static_set_friction_start(s, 0.5, y);
+        rc_static_set_substep_start(s, 0.5, y);
         /* 1 um in, tilts of 1e-5 rad (corners 1 um apart): on the Stiff line */
         const double u[6] = {0.0, 0.0, -1e-6, 1e-5, -0.7e-5, 0.0};
         double r[6];
@@ -483,7 +483,7 @@ static void test_static_stiffness_boxes(void)
         rc_modes_init(m, d, 0.5, y);
         d->inter_mode[0] = d->inter_mode[1] = RC_MODE_CLOSED;
         rc_static_set_start(s, y);
-        rc_static_set_friction_start(s, 0.5, y);
+        rc_static_set_substep_start(s, 0.5, y);
         /* lower box 30 um down, upper 50 um; tilts of 1e-4 rad */
         const double du[12] = {1e-6, -2e-6, -3e-5, 1e-4, -0.7e-4, 0.3e-4, 2e-6, 1e-6, -5e-5, -0.8e-4, 1.2e-4, -0.5e-4};
         memcpy(u, du, sizeof u);
@@ -521,7 +521,7 @@ static void test_static_stiffness_point_friction(void)
             /* every corner's unit force 1 N along x at the start */
             for (int j = 0; j < npt; j++) y[m->inter_eadr[0] + m->inter_ns[0] + 3 * j] = 1.0;
             rc_static_set_start(s, y);
-            rc_static_set_friction_start(s, 0.5, y);
+            rc_static_set_substep_start(s, 0.5, y);
             /* 20 um in, tilts of 1e-4 rad; c = 1: 1 mm along x (200 N of
              * the unit spring, past the limit) */
             const double du[6] = {c ? -1e-3 : 2e-6, -1e-6, -2e-5, 1e-4, -0.6e-4, 0.3e-4};

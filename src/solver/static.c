@@ -122,7 +122,7 @@ struct rc_static {
     long nfev, njev;
     /* friction, the return mapping (docs/theory.md 7.8): per interface
      * whose stick spring the static analysis takes, from the start of the
-     * load substep (rc_static_set_friction_start): the force F_t0 and the
+     * load substep (rc_static_set_substep_start): the force F_t0 and the
      * contact point fixed in each body (its body frame; a fixed body's: the
      * global point) */
     char *fr_on;      /* [ninter] 1: friction by the return mapping */
@@ -607,7 +607,7 @@ static void pf_points(const rc_static *s, int i, int pj, const double *u, double
     disp_points(s, i, s->pf_pa + 3 * pj, s->pf_pb + 3 * pj, s->pf_xa + 3 * pj, s->pf_xb + 3 * pj, u, pa, pb, Da, Db);
 }
 
-void rc_static_set_friction_start(rc_static *s, double t, const double *y0)
+void rc_static_set_substep_start(rc_static *s, double t, const double *y0)
 {
     const rc_model *m = s->m;
     rc_data *d = s->d;
@@ -1214,6 +1214,16 @@ typedef struct st_out {
     double fnorm;
 } st_out;
 
+/* The unknown (full numbering) of the column KLU found singular in its
+ * last factorisation, or -1. */
+static int klu_singular(st_kin *k, const rc_static *s)
+{
+    sun_klu_common *kc = SUNLinSol_KLUGetCommon(k->LS);
+    if (kc && kc->status == KLU_SINGULAR && kc->singular_col >= 0 && kc->singular_col < s->nr)
+        return s->full[kc->singular_col];
+    return -1;
+}
+
 /* One KINSOL solve at the load time t from the state s->ys. */
 static st_out kin_solve(st_kin *k, st_run *c, double t)
 {
@@ -1243,11 +1253,7 @@ static st_out kin_solve(st_kin *k, st_run *c, double t)
     const int stalled = o.flag == KIN_STEP_LT_STPTOL || o.flag == KIN_LINESEARCH_NONCONV;
     o.ok = o.flag == KIN_SUCCESS || o.flag == KIN_INITIAL_GUESS_OK || (stalled && o.fnorm <= 16.0 * ftol) ||
            (o.flag == KIN_STEP_LT_STPTOL && o.fnorm <= 1e-8);
-    if (!o.ok) {
-        sun_klu_common *kc = SUNLinSol_KLUGetCommon(k->LS);
-        if (kc && kc->status == KLU_SINGULAR && kc->singular_col >= 0 && kc->singular_col < c->s->nr)
-            o.singular_col = c->s->full[kc->singular_col]; /* the unknown of the reduced column */
-    }
+    if (!o.ok) o.singular_col = klu_singular(k, c->s);
     return o;
 }
 
@@ -1281,18 +1287,14 @@ static int kin_support(st_kin *k, st_run *c)
                 if (ri[p] == i) dg = v[p];
             if (!(dg < -RC_STATIC_FTOL * s->fs[f] / s->us[f])) col = f;
         }
-        if (col < 0 && SUNLinSolSetup(k->LS, k->A) != 0) {
-            sun_klu_common *kc = SUNLinSol_KLUGetCommon(k->LS);
-            if (kc && kc->status == KLU_SINGULAR && kc->singular_col >= 0 && kc->singular_col < s->nr)
-                col = s->full[kc->singular_col];
-        }
+        if (col < 0 && SUNLinSolSetup(k->LS, k->A) != 0) col = klu_singular(k, s);
     }
     N_VDestroy(fu);
     return col;
 }
 
 /* The energy states over a converged load substep, from its start
- * (rc_static_set_friction_start) to y at the unknowns u (commit_state's),
+ * (rc_static_set_substep_start) to y at the unknowns u (commit_state's),
  * by the trapezoidal rule on the path between: each interface's work of its
  * elastic law, W_load += (F_0 + F_1)/2 (P_1 - P_0) (exact where the law is
  * linear over the substep: the load curve's segments, the Stiff line); the
@@ -1493,7 +1495,7 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
             for (int i = 0; i < m->ninter; i++) pfsave[i] = point_slip(m, d, i);
             memset(flips, 0, (size_t)m->ninter * sizeof(int));
             /* friction: the substep's start (its forces, the contact points) */
-            rc_static_set_friction_start(s, t, y);
+            rc_static_set_substep_start(s, t, y);
             long iters = 0;
             int ok = 0, rounds = 0, slide = -1;
             double slide_lim = NAN;

@@ -32,12 +32,14 @@ int rc_static_size(const rc_static *s);
 /* Set the start state of the solve (the state y0 [ny]; its velocities are
  * ignored, taken as zero). */
 void rc_static_set_start(rc_static *s, const double *y0);
-/* Set the start of the load substep for friction (docs/theory.md 7.8,
- * the return mapping): the state y0 of the last equilibrium at the load
+/* Set the start of the load substep (docs/theory.md 7.8: the return
+ * mappings of friction, per contact and per point, and of hysteresis; the
+ * energies of the path): the state y0 of the last equilibrium at the load
  * time t, in the modes of the run data (its closed contacts' friction
- * states F_t0 and contact points, fixed in the bodies). Until it is called
- * the friction states are those of the start state. */
-void rc_static_set_friction_start(rc_static *s, double t, const double *y0);
+ * states F_t0 and contact points fixed in the bodies, their hysteresis
+ * forces and penetrations, the bodies' positions). Until it is called the
+ * return mappings are off: the states are those of the start state. */
+void rc_static_set_substep_start(rc_static *s, double t, const double *y0);
 /* The residual r[n] at the unknowns u[n] at the load time t: 0, or 1 when
  * the forces could not be evaluated. */
 int rc_static_residual(rc_static *s, double t, const double *u, double *r);

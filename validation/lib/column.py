@@ -6,6 +6,15 @@ curve's funct cards and the gravity (a function of the deck), and adds
 /RUN and /SOLVER."""
 
 
+# The model of both problems: N spheres of mass M [kg] and radius R [m],
+# contacts k = K [N/m], g = G [m/s^2]; the Hertz sphere: mass MH [kg],
+# radius RH [m], K_H = KH [N/m^1.5], at x = XH [m]; the floor's surface id.
+N, M, R, K, G = 5, 1.0, 0.0625, 1.0e5, 9.81
+MH, RH, KH = 2.0, 0.0625, 1.0e8
+XH = 1.0
+FLOOR = N + 2
+
+
 def column_cards(d, n, r, m, mh, rh, kh, xh, floor, gravity):
     z = [r + 2.0 * r * i for i in range(n)]  # exact binary numbers: every contact starts at zero gap
     d.nodes([(i + 1, 0.0, 0.0, z[i]) for i in range(n)] + [(n + 1, xh, 0.0, rh)])

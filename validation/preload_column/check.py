@@ -30,14 +30,11 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 import rcval  # noqa: E402
-from column import column_cards  # noqa: E402
+from column import FLOOR, G, K, KH, M, MH, N, R, RH, XH, column_cards  # noqa: E402,F401
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
-N, M, R, K, G = 5, 1.0, 0.0625, 1.0e5, 9.81
-MH, RH, KH = 2.0, 0.0625, 1.0e8   # the Hertz sphere: mass [kg], radius [m], K [N/m^1.5]
-XH = 1.0                          # its x [m]
 T_END, DT_OUT = 1.0, 0.1
-FLOOR = N + 2
 TOL = 1e-8
 MU, KT, RS = 0.3, 2.0e4, 0.05     # incline: friction coefficient, stick stiffness [N/m], radius [m]
 THETA = math.atan(MU) - 0.05
@@ -63,11 +60,7 @@ def deck():
 def deck_incline():
     d = Deck("preload: a sphere held by friction below its slipping angle")
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e5 N/m")
-    d.nodes([(1, 0.0, 0.0, RS)])
-    d.rbody(1, 1, M, [0.4 * M * RS * RS] * 3, grnod=1, title="sphere")
-    d.sphere(1, 1, (0.0, 0.0, RS), RS, title="sphere")
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0")
-    d.grnod(1, [1], title="sphere")
+    add_sphere_over_plane(d, M, RS, RS, title="sphere")
     d.bcs(1, 1, "000 111", title="rotations held")
     d.grav(1, "X", G * math.sin(THETA))
     d.grav(2, "Z", -G * math.cos(THETA))

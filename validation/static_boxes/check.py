@@ -73,9 +73,9 @@ MU, KT = 0.3, 2.0e5
 TH_BELOW, TH_ABOVE, TH_SLIDE = 0.25, 0.35, 0.4
 
 
-def deck(preload):
-    d = Deck("static boxes: a box on a box on a floor" + (", preloaded dynamic run" if preload else ", ramped gravity"))
-    d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e6 N/m")
+def two_boxes(d):
+    """The two boxes (bodies 1 and 2, surfaces 1 and 2, node groups 1 and 2)
+    and the floor (surface 3)."""
     d.nodes([(1, *C1), (2, *C2)])
     d.rbody(1, 1, M1, [0.01, 0.02, 0.03], grnod=1, title="lower box")
     d.rbody(2, 2, M2, [0.004, 0.005, 0.006], grnod=2, title="upper box")
@@ -84,6 +84,12 @@ def deck(preload):
     d.plane(3, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0")
     d.grnod(1, [1], title="lower")
     d.grnod(2, [2], title="upper")
+
+
+def deck(preload):
+    d = Deck("static boxes: a box on a box on a floor" + (", preloaded dynamic run" if preload else ", ramped gravity"))
+    d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e6 N/m")
+    two_boxes(d)
     d.grnod(3, [1, 2], title="both boxes")
     d.bcs(1, 3, "110 111", title="held sideways and against turning")
     if preload:
@@ -158,14 +164,7 @@ def deck_stack_incline(theta):
     d = Deck(f"static boxes: two boxes stacked, friction per point, gravity tilted {theta:g} rad")
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e6 N/m")
     d.funct(2, [0.0, T_END], [0.0, 1.0], title="load factor f(t) = t / t_end")
-    d.nodes([(1, *C1), (2, *C2)])
-    d.rbody(1, 1, M1, [0.01, 0.02, 0.03], grnod=1, title="lower box")
-    d.rbody(2, 2, M2, [0.004, 0.005, 0.006], grnod=2, title="upper box")
-    d.box(1, 1, C1, H1, title="lower box")
-    d.box(2, 2, C2, H2, title="upper box")
-    d.plane(3, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0")
-    d.grnod(1, [1], title="lower")
-    d.grnod(2, [2], title="upper")
+    two_boxes(d)
     gx, gz = tilted(theta)
     d.grav_fct(1, "X", gx, 2)
     d.grav_fct(2, "Z", gz, 2)

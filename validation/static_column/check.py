@@ -29,14 +29,10 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 import rcval  # noqa: E402
-from column import column_cards  # noqa: E402
+from column import FLOOR, G, K, KH, M, MH, N, R, RH, XH, column_cards  # noqa: E402,F401
 from deck import Deck  # noqa: E402
 
-N, M, R, K, G = 5, 1.0, 0.0625, 1.0e5, 9.81
-MH, RH, KH = 2.0, 0.0625, 1.0e8   # the Hertz sphere: mass [kg], radius [m], K [N/m^1.5]
-XH = 1.0                          # its x [m]
 T_END, DT_OUT = 1.0, 0.1
-FLOOR = N + 2                     # surface id of the floor
 TOL = 1e-9
 MS, RS, GAP, KS = 1.0, 0.05, 1.0e-3, 1.0e3   # the hung sphere: mass, radius, gap, spring [N/m]
 

@@ -42,6 +42,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 M, R, K, G = 1.0, 0.05, 1.0e5, 9.81
 MU, KT = 0.3, 2.0e4              # friction coefficient, stick stiffness [N/m]
@@ -57,11 +58,7 @@ ATAN = math.atan(MU)
 
 def sphere_on_floor(d):
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e5 N/m")
-    d.nodes([(1, 0.0, 0.0, R)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, grnod=1, title="sphere")
-    d.sphere(1, 1, (0.0, 0.0, R), R, title="sphere")
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0")
-    d.grnod(1, [1], title="sphere")
+    add_sphere_over_plane(d, M, R, R, title="sphere")
     d.bcs(1, 1, "000 111", title="rotations held")
 
 

@@ -41,6 +41,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
 import rcval  # noqa: E402
 from deck import Deck  # noqa: E402
+from sphereplane import add_sphere_over_plane  # noqa: E402
 
 M, R, G = 1.0, 0.05, 9.81
 K, KS = 1.0e5, 1.0e6             # load curve slope, Stiff [N/m]
@@ -57,11 +58,7 @@ def deck(iform):
     if iform == 1:
         d.funct(3, [0.0, CU, 1.0], [0.0, 0.0, KU * (1.0 - CU)], title="unload curve F_U = k_u (P - c)+")
     d.funct(2, *LOAD, title="load factor f(t)")
-    d.nodes([(1, 0.0, 0.0, R)])
-    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, grnod=1, title="sphere")
-    d.sphere(1, 1, (0.0, 0.0, R), R, title="sphere")
-    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0")
-    d.grnod(1, [1], title="sphere")
+    add_sphere_over_plane(d, M, R, R, title="sphere")
     # frictionless: nothing holds the sphere sideways; held to the vertical
     d.bcs(1, 1, "110 000", title="held to the vertical")
     d.grav_fct(1, "Z", -G, 2)

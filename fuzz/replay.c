@@ -64,7 +64,7 @@ int main(int argc, char **argv)
     }
     for (int k = first; k < argc; k++) {
         const char *name = strrchr(argv[k], '/') ? strrchr(argv[k], '/') + 1 : argv[k];
-        fflush(stdout);
+        fflush(NULL); /* the child's exit() flushes its copy of the buffers */
         pid_t pid = fork();
         if (pid < 0) {
             perror("fuzz_replay: fork");
@@ -72,7 +72,9 @@ int main(int argc, char **argv)
         }
         if (pid == 0) {
             alarm((unsigned)limit);
-            _exit(replay_one(argv[k]));
+            /* exit(), not _exit(): the target's atexit handler removes its
+             * temporary folder (one per child otherwise left in TMPDIR) */
+            exit(replay_one(argv[k]));
         }
         int ws = 0;
         while (waitpid(pid, &ws, 0) < 0 && errno == EINTR) {}

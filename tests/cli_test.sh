@@ -405,7 +405,7 @@ grep -q "m_eff 0.5263 kg" "$tmp/x" && grep -q "m_eff includes the rotations: .* 
     expect guidance_effective_mass 0 99 "($(grep -i warning "$tmp/x" | head -c 200))"
 # a box against a plane or a box: check names the pair and its corners
 "$bin" check validation/box_box/case.rad > "$tmp/x" 2>&1; rc=$?
-grep -q "^  /INTER/TYPE6/1 *box-box (the 8 corners of each box against the 6 faces of the other)" "$tmp/x" &&
+grep -q "^  /INTER/TYPE6/1 *box-box (the 8 corners of each box against the 6 faces of the other, the 12 edges of each against those of the other)" "$tmp/x" &&
     grep -q "^  /INTER/TYPE6/2 *box-plane (the box's 8 corners are the contact points)" "$tmp/x" &&
     expect check_box_pairs 0 $rc "(box-box and box-plane listed with their corners)" ||
     expect check_box_pairs 0 99 "($(grep "/INTER/TYPE6/[12] " "$tmp/x" | head -c 200))"

@@ -17,6 +17,7 @@
 #include "base/error.h"
 #include "case/case.h"
 #include "model/geom.h"
+#include "model/segsurf.h"
 #include "model/model.h"
 #include "model/power.h"
 #include "harness.h"
@@ -975,7 +976,9 @@ static void test_box_pairs_corners(void)
 /* Jacobians of the box pairs against central differences: kind 0 the box
  * against a tilted plane carried by body 2; 1 against a larger tilted box
  * on body 2 (the upper box's corners act); 2 against a smaller one (the
- * lower box's corners act on the upper box's bottom face); fric 0 none, 1
+ * lower box's corners act on the upper box's bottom face); 3 against a
+ * bar laid across it (no corner of either box over the other: the pairs of
+ * crossing edges act); fric 0 none, 1
  * TYPE6 friction per corner, 4 a /FRICTION card (incremental, filtered),
  * 5 /INTER/POWER with step5 friction; every mode. */
 static void box_pair_jacobian_check(int kind, int fric)
@@ -984,7 +987,8 @@ static void box_pair_jacobian_check(int kind, int fric)
     char deck[8192];
     const char *other = kind == 0 ? "/SURF/PLANE/40\nplate\n0,0,0.001\n0.05,-0.03,1\n2\n"
                         : kind == 1 ? "/SURF/BOX/40\ntable\n2\n0.01,-0.02,-0.199\n0.4,0.3,0.2\n1,0.05,0.02\n-0.04,1,0.03\n"
-                                    : "/SURF/BOX/40\npost\n2\n0.01,-0.02,-0.199\n0.06,0.035,0.2\n1,0.05,0.02\n-0.04,1,0.03\n";
+                        : kind == 2 ? "/SURF/BOX/40\npost\n2\n0.01,-0.02,-0.199\n0.06,0.035,0.2\n1,0.05,0.02\n-0.04,1,0.03\n"
+                                    : "/SURF/BOX/40\nbar\n2\n0.01,-0.02,-0.199\n0.03,0.3,0.2\n1,0.05,0.02\n-0.04,1,0.03\n";
     const char *inter =
         fric == 5 ? "/INTER/POWER/1\np\n30,40,0,0,0,1\n1e9,1.5,3e5,1.2,0.8\n0.4\n0.5,0.05,0.3,0.2,40\n"
         : fric == 1 ? "/INTER/TYPE6/1\nbox pair\n30,40\n0.7,0.37,0.0011\n,,,5,,,1.9,0.61\n1,1,1.3,0.77\n2,,7.3e6,0.83\n3.7,3,4,2.3\n"
@@ -1001,7 +1005,7 @@ static void box_pair_jacobian_check(int kind, int fric)
         return;
     }
     ENSURE(m->inter_pair[0] == (kind ? RC_PAIR_SEG_SEG : RC_PAIR_SEG_PLANE));
-    ENSURE(!fric || m->inter_npt[0] == (kind ? 16 : 8));
+    ENSURE(!fric || m->inter_npt[0] == (kind ? 16 + RC_BOX_EDGE_PAIRS : 8));
     rc_data *d = rc_data_new(m);
     const double s[26] = {0.0013, -0.0011, 0.0312, 0.97, 0.011, -0.013, 0.007, 0.31, -0.23, -0.17, 3.1, -2.3, 4.7,
                           0.0021, 0.0007, -0.2003, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
@@ -1012,8 +1016,12 @@ static void box_pair_jacobian_check(int kind, int fric)
     rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
     ENSURE(r.p > 0);
     /* the deepest point is a corner of the surface expected: kind 2 one of
-     * the lower box (|x| about 0.05), else one of the upper box (0.1) */
-    ENSURE(kind == 2 ? fabs(r.point[0]) < 0.075 : fabs(r.point[0]) > 0.075);
+     * the lower box (|x| about 0.05), kind 3 a crossing of two edges (on an
+     * edge of the upper box, |y| about 0.05, within the bar's width, |x| <
+     * 0.045: neither box has a corner there), else one of the upper box
+     * (0.1) */
+    if (kind == 3) ENSURE(fabs(r.point[0]) < 0.045 && fabs(fabs(r.point[1]) - 0.05) < 0.01);
+    else ENSURE(kind == 2 ? fabs(r.point[0]) < 0.075 : fabs(r.point[0]) > 0.075);
     int bad = 0, outside = 0, combos = 0;
     double maxerr = 0;
     const int modes[2] = {RC_MODE_CLOSED, RC_MODE_RELEASED};
@@ -1032,13 +1040,58 @@ static void box_pair_jacobian_check(int kind, int fric)
     static const char *const fname[6] = {"", ", TYPE6 friction per corner", "", "", ", /FRICTION (incremental, filtered)",
                                          ", power law with step5 friction"};
     printf("    %s%s jacobian: P = %.3g m at (%.3g, %.3g, %.3g), %d states, %d mode combinations, max scaled |J - FD| = "
-           "%.2e\n", kind == 0 ? "box-plane" : kind == 1 ? "box-box (upper corners)" : "box-box (lower corners)",
+           "%.2e\n", kind == 0 ? "box-plane" : kind == 1 ? "box-box (upper corners)" : kind == 2 ? "box-box (lower corners)"
+                                                                                 : "box-box (crossing edges)",
            fname[fric], r.p, r.point[0], r.point[1], r.point[2], m->ny, combos, maxerr);
     ENSURE(bad == 0);
     ENSURE(outside == 0);
     free(y);
     rc_data_free(d);
     rc_model_free(m);
+}
+
+/* Edge pairs see the two edges' own contact, not a depth across a box: a
+ * box (0.2 x 0.1 x 0.1) 0.1 mm into a fixed 1 m cube's top face, hanging
+ * 80 mm over its edge x = 0.5 (its left side 20 mm inside it): its bottom
+ * corners over the cube and the crossings of its bottom edges with the
+ * cube's top edge are 0.1 mm deep. Its vertical edges at x = 0.48 pass the
+ * cube's top edge 20 mm away along x (a pair whose normal is in both edges'
+ * cones, closest points on both edges, depth 20 mm < the smallest
+ * half-size 50 mm), but the face of the cube nearest that point is its top,
+ * not a face along the edge: no contact point. P = 0.1 mm; and the bar
+ * laid across a bar (only edges cross), 0.1 mm deep, P = 0.1 mm, at a
+ * crossing. */
+static void test_box_edge_pairs_depth(void)
+{
+    for (int k = 0; k < 2; k++) {
+        rc_error e;
+        const char *deck =
+            k == 0 ? "/NODE\n1,0.58,0,0.0499\n/RBODY/1\nbox\n1,,,,2.0\n0.0033,0.0083,0.0083\n0,0,0\n"
+                     "/SURF/BOX/30\nbox\n1\n0.58,0,0.0499\n0.1,0.05,0.05\n"
+                     "/SURF/BOX/40\ncube\n0\n0,0,-0.5\n0.5,0.5,0.5\n" LINEAR
+                     "/INTER/TYPE6/1\nbox on the cube\n30,40\n\n\n1\n\n\n" RUN_TAIL
+                   : "/NODE\n1,0.013,-0.021,0.0499\n/RBODY/1\nbar\n1,,,,2.0\n0.0033,0.0083,0.0083\n0,0,0\n"
+                     "/SURF/BOX/30\nbar along x\n1\n0.013,-0.021,0.0499\n0.3,0.05,0.05\n"
+                     "/SURF/BOX/40\nbar along y\n0\n0,0,-0.05\n0.05,0.3,0.05\n" LINEAR
+                     "/INTER/TYPE6/1\nbar on the bar\n30,40\n\n\n1\n\n\n" RUN_TAIL;
+        rc_model *m = seg_compile(deck, &e);
+        ENSURE(m != NULL);
+        if (!m) {
+            fprintf(stderr, "  %s\n", e.msg);
+            return;
+        }
+        ENSURE(rc_box_is_box_pair(m, 0) && rc_seg_points(m, 0) == 16 + RC_BOX_EDGE_PAIRS);
+        double *y = calloc((size_t)m->ny, sizeof(double));
+        rc_initial_state(m, y);
+        rc_inter_report r;
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+        const double px = r.point[0] + m->origin[0], py = r.point[1] + m->origin[1];
+        printf("    %s: P = %.9g m at (%.4f, %.4f)\n", k ? "bar across a bar" : "box over the cube's edge", r.p, px, py);
+        ENSURE_NEAR(r.p, 1e-4, 1e-12, 0);
+        if (k == 1) ENSURE(fabs(fabs(px) - 0.05) < 1e-9 && fabs(fabs(py + 0.021) - 0.05) < 1e-9);
+        free(y);
+        rc_model_free(m);
+    }
 }
 
 static void test_box_plane_jacobian(void)
@@ -1051,7 +1104,7 @@ static void test_box_plane_jacobian(void)
 
 static void test_box_box_jacobian(void)
 {
-    for (int k = 1; k <= 2; k++) {
+    for (int k = 1; k <= 3; k++) {
         box_pair_jacobian_check(k, 0);
         box_pair_jacobian_check(k, 1);
         box_pair_jacobian_check(k, 4);
@@ -1083,5 +1136,6 @@ void suite_seg(void)
     RUN_TEST(test_box_pairs_corners);
     RUN_TEST(test_box_plane_jacobian);
     RUN_TEST(test_box_box_jacobian);
+    RUN_TEST(test_box_edge_pairs_depth);
     RUN_TEST(test_seg_sphere_step5_jacobian);
 }

@@ -601,10 +601,17 @@ void rc_seg_free(rc_model *m)
     m->surf_mesh = NULL;
 }
 
+int rc_box_is_box_pair(const rc_model *m, int i)
+{
+    return m->inter_pair[i] == RC_PAIR_SEG_SEG && m->surf_kind[m->inter_sa[i]] == RC_SURF_BOX &&
+           m->surf_kind[m->inter_sb[i]] == RC_SURF_BOX;
+}
+
 int rc_seg_points(const rc_model *m, int i)
 {
     const int sa = m->inter_sa[i], sb = m->inter_sb[i];
     int n = m->surf_nadr[sa + 1] - m->surf_nadr[sa];
     if (m->inter_pair[i] == RC_PAIR_SEG_SEG) n += m->surf_nadr[sb + 1] - m->surf_nadr[sb];
+    if (rc_box_is_box_pair(m, i)) n += RC_BOX_EDGE_PAIRS;
     return n;
 }

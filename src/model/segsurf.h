@@ -51,8 +51,16 @@ typedef struct rc_segmesh {
 static inline int rc_seg_hint_len(const rc_model *m) { return (m->surf_nadr[m->nsurf] + 3) / 4 * 4; }
 
 /* Contact points of interface i whose points are nodes (rc_pair_nodes): the
- * nodes of surface a, then, segments-segments, those of surface b. */
+ * nodes of surface a, then, segments-segments, those of surface b, then,
+ * box against box, the RC_BOX_EDGE_PAIRS pairs of their edges (edge e / 12
+ * of a against edge e % 12 of b: rc_box_is_box_pair). */
 int rc_seg_points(const rc_model *m, int i);
+/* Edges of a box (12), pairs of edges of two boxes (144). */
+#define RC_BOX_EDGES 12
+#define RC_BOX_EDGE_PAIRS (RC_BOX_EDGES * RC_BOX_EDGES)
+/* Is interface i a box against a box (corners against faces both ways,
+ * and edge against edge)? */
+int rc_box_is_box_pair(const rc_model *m, int i);
 
 /* Build the adjacency and grid of every segment surface (after all
  * surfaces are compiled). */

@@ -225,9 +225,9 @@ static void box_pose(const rc_model *m, int s, const double *y, double c[3], dou
  * their edges); negative when the boxes are apart. For two convex
  * polyhedra this is the distance one must move to separate them along
  * the best axis, whatever touches: face, edge or corner. The engine's
- * contact points are the corners against the faces (docs/theory.md 2.7),
- * blind to two edges that cross with no corner inside a face; this depth
- * is not. */
+ * contact points are the corners against the faces and the edges against
+ * the edges (docs/theory.md 2.7), each within a search depth; this depth
+ * is the solids' own, an independent check of what they carry. */
 static double box_box_depth(const rc_model *m, int i, const double *y)
 {
     double ca[3], cb[3], A[3][3], B[3][3], ha[3], hb[3];
@@ -366,16 +366,17 @@ int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, co
         if (m->inter_pair[i] == RC_PAIR_SEG_SEG && m->surf_kind[m->inter_sa[i]] == RC_SURF_BOX &&
             m->surf_kind[m->inter_sb[i]] == RC_SURF_BOX) {
             /* the overlap of the two solids, whatever carries it, within the
-             * bound of the penetration (a corner on a face gives the
-             * separating-axis depth itself: then P is checked above) */
+             * bound of the penetration (a corner on a face or two crossing
+             * edges give the separating-axis depth itself: then P is
+             * checked above) */
             const double D = box_box_depth(m, i, y) + m->inter_gap[i];
             if (!(D <= pb) && !on[3]) {
                 on[3] = 1;
                 if (violate(g, t, t, "box_overlap", m->inter_name[i], D, pb,
                             "the boxes of %s overlap by %.6g m at t = %.9g s (separating-axis depth), beyond its "
-                            "bound %.6g m, while its corners see a penetration of %.6g m: an edge of one box "
-                            "crosses an edge of the other with no corner inside a face, which the corner-to-face "
-                            "contact does not see (docs/theory.md 2.7): the bodies pass through each other",
+                            "bound %.6g m, while its contact points (corners against faces, edges against "
+                            "edges) see a penetration of %.6g m: the boxes have passed into each other beyond "
+                            "what the contact points see (docs/theory.md 2.7): the bodies pass through each other",
                             m->inter_name[i], D, t, pb, P))
                     return 1;
             } else if (D <= pb) {

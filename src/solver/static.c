@@ -56,6 +56,7 @@
 #include "engine/events/events.h"
 #include "model/model.h"
 #include "model/power.h"
+#include "model/segsurf.h"
 #include "output/output.h"
 #include "solver/integrator.h"
 #include "solver/solver.h"
@@ -560,10 +561,15 @@ static void fric_points(const rc_static *s, int i, const double *u, double pa[3]
 }
 
 /* Point j of node-pair interface i at the state y: its global position
- * (the node: of surface a for j < n_a, else of surface b). */
+ * (the node: of surface a for j < n_a, else of surface b; past the nodes,
+ * a pair of box edges: the middle of their closest points). */
 static void pf_node(const rc_model *m, int i, int j, const double *y, double x[3])
 {
     const int sa = m->inter_sa[i], na = m->surf_nadr[sa + 1] - m->surf_nadr[sa];
+    if (rc_box_is_box_pair(m, i) && j >= rc_seg_points(m, i) - RC_BOX_EDGE_PAIRS) {
+        rc_point_position(m, i, j, y, x);
+        return;
+    }
     const int sf = j < na ? sa : m->inter_sb[i], jj = j < na ? j : j - na;
     const double *p = m->surf_node + 3 * (m->surf_nadr[sf] + jj);
     const int b = m->surf_body[sf];

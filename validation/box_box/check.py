@@ -19,12 +19,23 @@ of each box against the faces of the other, both ways (docs/theory.md 2.7).
 4. Collision (generated, no gravity): two free boxes of different sizes and
    masses, one launched at the other off-centre and spinning: the total
    linear and angular momentum (about the origin) are conserved.
+5. Crossing edges (generated): boxes whose corners all lie outside the
+   other's faces, carried by the pairs of crossing edges alone: a bar
+   (L8 x W8 x W8, mass M8) dropped across a fixed bar laid the other way,
+   and a cube (edge 2 H9, mass M9) turned by 30 degrees about the vertical
+   dropped on a larger fixed cube. At rest: F = m g, P = m g / k, the boxes
+   level, the deepest point at a crossing of two edges. Without damping
+   (the bar again, Visc 0): the contact is a linear spring k under gravity,
+   closing at v = sqrt(2 g h0): it lasts (pi + 2 asin(delta / A)) / omega,
+   omega = sqrt(k / m), delta = m g / k, A = sqrt(delta^2 + (v / omega)^2),
+   and the bar leaves at v (no energy lost).
 """
 import math
 import os
 import sys
 
 import numpy as np
+from netCDF4 import Dataset
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "lib"))
@@ -95,6 +106,38 @@ def deck_collide():
             title="box 7 launched at box 6, spinning")
     d.type6(1, 17, 16, 1, visc=2 * 0.3 * math.sqrt(K * M3 * M4 / (M3 + M4)), title="box 7 against box 6")
     d.run(0.4, 0.005)
+    return d
+
+
+L8, W8, M8 = 0.6, 0.1, 6.0               # crossing bars: length, width [m], mass of the upper one [kg]
+Y8 = -0.021                              # the upper bar's offset along the lower one [m]
+H9, M9, TURN9 = 0.08, 4.0, 30.0          # turned cube: half-size [m], mass [kg], turn [deg]; the lower cube 0.1 m
+
+
+def add_turned_box(d, bid, x, m, half, turn_deg, v0=None, title="box"):
+    """add_box with the box's axes turned about the vertical by turn_deg."""
+    a = math.radians(turn_deg)
+    d.nodes([(bid, *x)])
+    d.grnod(bid, [bid], title=title)
+    d.rbody(bid, bid, m, jbox(m, *(2 * h for h in half)), grnod=bid, title=title)
+    d.box(10 + bid, bid, x, half, u=(math.cos(a), math.sin(a), 0.0), v=(-math.sin(a), math.cos(a), 0.0), title=title)
+    if v0 is not None:
+        d.inivel(bid, v0, bid)
+
+
+def deck_edges(elastic=False):
+    """Crossing edges: the bar across the bar (Visc 0 when elastic, run
+    alone), and the turned cube on the cube."""
+    d = base("boxes carried by their crossing edges" + (", no damping" if elastic else ""))
+    d.box(1, 0, (0.0, 0.0, -W8 / 2), (W8 / 2, L8 / 2, W8 / 2), title="fixed bar along y, top face z = 0")
+    add_box(d, 8, (0.0, Y8, W8 / 2 + H0), M8, (L8 / 2, W8 / 2, W8 / 2), title="bar along x, across the fixed one")
+    d.type6(1, 18, 1, 1, visc=0.0 if elastic else 2 * ZETA * math.sqrt(K * M8), title="bar across the bar")
+    if not elastic:
+        d.box(2, 0, (3.0, 0.0, -0.1), (0.1, 0.1, 0.1), title="fixed cube, top face z = 0")
+        add_turned_box(d, 9, (3.0, 0.0, H9 + H0), M9, (H9, H9, H9), TURN9, title="cube turned by 30 degrees")
+        d.type6(2, 19, 2, 1, visc=2 * ZETA * math.sqrt(K * M9), title="turned cube on the cube")
+    d.grav(1, "Z", -G)
+    d.run(0.05 if elastic else 1.0, 0.0005 if elastic else 0.01)
     return d
 
 
@@ -213,6 +256,56 @@ def main():
                 f"{len(hit)} contact_close (first at {hit[0] if hit else float('nan'):.6g} s), box 6 leaves at "
                 f"{dv:.4g} m/s; max |p(t) - p(0)| / |p(0)| = {ep:.2e}, max |L(t) - L(0)| / |L(0)| = {eL:.2e} (< 1e-8, < 1e-7: the rotations integrated at rtol 1e-8)")
     rcval.check_ledger("box_box.collide.ledger", r, 1e-5)
+
+    # 5. crossing edges: at rest, then an elastic bounce
+    r, quat, omega = boxrest.load(rcval.run(deck_edges(), name="edges"))
+    with Dataset(r.path) as nc:
+        point = np.array(nc["inter_contact_point"][:])
+    cases = (("bar", 0, M8, (0.0, Y8), lambda x: abs(abs(x[0]) - W8 / 2) < 1e-3 and abs(abs(x[1] - Y8) - W8 / 2) < 1e-3),
+             ("turned_cube", 1, M9, (3.0, 0.0), None))
+    for name, i, mload, xy, at_crossing in cases:
+        fn, p = r.fn[-1, i], r.pen[-1, i]
+        e1, e2 = rcval.rel(fn, mload * G), rcval.rel(p, mload * G / K)
+        x = point[-1, i]
+        if at_crossing is None:
+            # the cube's bottom edges and the lower cube's top edges cross
+            # where the turned square's sides meet the square's: on both
+            # squares' outlines (0.1 m and H9 from the centre along their axes)
+            a = math.radians(TURN9)
+            rel = (x[0] - xy[0], x[1] - xy[1])
+            on_lower = abs(max(abs(rel[0]), abs(rel[1])) - 0.1) < 1e-3
+            uu = rel[0] * math.cos(a) + rel[1] * math.sin(a)
+            vv = -rel[0] * math.sin(a) + rel[1] * math.cos(a)
+            on_upper = abs(max(abs(uu), abs(vv)) - H9) < 1e-3
+            crossing = on_lower and on_upper
+        else:
+            crossing = at_crossing(x)
+        tilt = float(2 * math.asin(min(1.0, math.hypot(quat[-1, i, 1], quat[-1, i, 2]))))
+        rcval.check(f"box_box.edges.{name}.rest", e1 < 1e-6 and e2 < 5e-5 and crossing and tilt < 1e-6,
+                    f"interface {i + 1}: F = {fn:.9g} N, m g = {mload * G:.9g} N, rel. error {e1:.2e} (< 1e-6); "
+                    f"P = {p:.9e} m, m g / k = {mload * G / K:.9e} m, rel. error {e2:.2e} (< 5e-5); deepest point "
+                    f"({x[0]:.5f}, {x[1]:.5f}, {x[2]:.2e}) m at a crossing of two edges: {crossing}; tilt "
+                    f"{tilt:.1e} rad (< 1e-6)")
+    boxrest.check_rest("box_box.edges.at_rest", r.vel[-1], omega[-1], L8, f"at {r.t[-1]:g} s")
+    rcval.check_ledger("box_box.edges.ledger", r, 1e-5)
+
+    r = rcval.Result(rcval.run(deck_edges(elastic=True), name="edges_elastic"))
+    v = math.sqrt(2 * G * H0)
+    om, delta = math.sqrt(K / M8), M8 * G / K
+    amp = math.hypot(delta, v / om)
+    dur = (math.pi + 2 * math.asin(delta / amp)) / om
+    close = [t for t, k in zip(r.ev_t, r.ev_kind) if k == "contact_close"]
+    opened = [t for t, k in zip(r.ev_t, r.ev_kind) if k in ("contact_open", "contact_separate") and close and t > close[0]]
+    got = opened[0] - close[0] if close and opened else float("nan")
+    e = rcval.rel(got, dur) if close and opened else float("inf")
+    k1 = int(np.searchsorted(r.t, opened[0])) if opened else -1
+    vout = float(r.vel[min(k1, len(r.t) - 1), 0, 2]) if opened else float("nan")
+    ev = rcval.rel(vout, v) if opened else float("inf")
+    rcval.check("box_box.edges.bounce", e < 1e-6 and ev < 1e-5,
+                f"contact from {close[0] if close else float('nan'):.9f} s to {opened[0] if opened else float('nan'):.9f} s: "
+                f"{got:.9e} s, (pi + 2 asin(delta / A)) / omega = {dur:.9e} s, rel. error {e:.2e} (< 1e-6); leaves at "
+                f"{vout:.9f} m/s, sqrt(2 g h0) = {v:.9f} m/s, rel. error {ev:.2e} (< 1e-5)")
+    rcval.check_ledger("box_box.edges.bounce_ledger", r, 1e-6)
     rcval.finish()
 
 

@@ -89,6 +89,10 @@ void rc_inter_report_eval_d(const rc_model *m, const rc_data *d, int i, double t
  * force on a before any projection (3) [N], its share w_j = f_j / F_n [-],
  * its depth q_j below the level of the shares [m] (> 0: it has a share). */
 void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip, double t, const double *y, double *out);
+/* Contact point j of node-pair interface i (rc_seg_points) at the state y:
+ * where its force acts, global [m] (a node, or the middle of the closest
+ * points of a pair of box edges). */
+void rc_point_position(const rc_model *m, int i, int j, const double *y, double x[3]);
 /* The reports kept by the last rc_assemble_roots: 1 when y is, bit for bit,
  * the state of that evaluation (then rc_report_cache_get may be asked). */
 int rc_report_cache_state(const rc_model *m, const rc_data *d, const double *y);

@@ -1398,7 +1398,12 @@ static int update_modes(const rc_model *m, rc_data *d, double t, const double *y
             } else if (mode != RC_MODE_CLOSED && r.p > ptol[i]) {
                 next = RC_MODE_CLOSED;
                 kind = RC_EV_CONTACT_CLOSE;
-            } else if (mode == RC_MODE_CLOSED && (r.p < -ptol[i] || r.fn < -ftol)) {
+            } else if (mode == RC_MODE_CLOSED &&
+                       (r.p < -ptol[i] || r.fn < -fmax(ftol, fabs(rc_law_force(m, i, ptol[i]))))) {
+                /* pulling: beyond the force tolerance, and beyond what the
+                 * law gives within the touch tolerance (a sphere touching
+                 * two walls given to 12 digits sits 6e-16 m off each, a
+                 * pull of k 6e-16 that is rounding, not a release) */
                 next = RC_MODE_OPEN;
                 kind = RC_EV_CONTACT_OPEN;
             }

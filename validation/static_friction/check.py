@@ -29,6 +29,16 @@ equilibria in slip) and falls to 0.2 (it sticks again). Reference: the
 return mapping solved per record in closed form (slide_reference); the
 fric_slip and fric_stick events at the first load steps that slide and
 stick again.
+case_wedge.rad: a press fit. The sphere (rotations held) in a V-groove of
+two fixed planes, each at PHI from the horizontal (outward normals (-+sin
+PHI, 0, cos PHI)), touching both at zero load; vertical gravity ramped
+(f = t / t_end), each wall TYPE6 linear k with Fric = mu, Sfric = 0 and a
+stick spring K_t = k: under a growing load the sphere is pressed deeper
+into the groove and slides down both walls (the stick spring alone would
+hold it only while K_t tan(PHI) / k < mu), so friction is at its limit
+mu F_n, up the walls, throughout. Closed form: the walls' normal forces
+F_n = m g f / (2 (cos PHI + mu sin PHI)), each friction force mu F_n, the
+penetrations F_n / k and the sphere's descent F_n / (k cos PHI).
 """
 import math
 import os
@@ -131,12 +141,37 @@ def slide_reference(ts):
     return out
 
 
+PHI, KT_W = 1.0, 1.0e5           # case_wedge: the walls' angle from the horizontal [rad], stick spring [N/m]
+
+
+def deck_wedge():
+    d = Deck("static friction: a press fit: a sphere pressed into a V-groove with friction")
+    d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e5 N/m")
+    d.nodes([(1, 0.0, 0.0, 0.0)])
+    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="sphere")
+    d.sphere(1, 1, (0.0, 0.0, 0.0), R)
+    d.grnod(1, [1])
+    d.bcs(1, 1, "000 111", title="rotations held")
+    s, c = math.sin(PHI), math.cos(PHI)
+    # each wall touches the sphere at zero load: its point R along -n from the centre
+    d.plane(2, (R * s, 0.0, -R * c), (R * s - s, 0.0, -R * c + c), title="left wall, normal (-sin, 0, cos)")
+    d.plane(3, (-R * s, 0.0, -R * c), (-R * s + s, 0.0, -R * c + c), title="right wall, normal (sin, 0, cos)")
+    d.funct(2, *RAMP, title="load factor f(t)")
+    d.grav_fct(1, "Z", -G, 2)
+    d.type6(1, 1, 2, 1, fric=MU, stiff=KT_W, title="sphere - left wall")
+    d.type6(2, 1, 3, 1, fric=MU, stiff=KT_W, title="sphere - right wall")
+    d.run(T_END, DT_OUT)
+    d.solver(method=3)
+    return d
+
+
 def cases():
     return {"case.rad": deck_tilt(THETA, SFRIC, *RAMP, "static friction: gravity tilted by 0.4 rad, ramped; Sfric holds it until the onset"),
             "case_below.rad": deck_tilt(ATAN - DTH, 0.0, *RAMP, "static friction: gravity tilted below atan(mu): sticks"),
             "case_above.rad": deck_tilt(ATAN + DTH, 0.0, *RAMP, "static friction: gravity tilted above atan(mu): slides at once"),
             "case_cycle.rad": deck_tilt(ATAN - DTH, 0.0, *CYCLE, "static friction: a load-unload cycle below the limit"),
-            "case_slide.rad": deck_slide()}
+            "case_slide.rad": deck_slide(),
+            "case_wedge.rad": deck_wedge()}
 
 
 def run_expect_failure(name):
@@ -226,6 +261,23 @@ def main():
     rcval.check("static_friction.slide_events", evs == [(first_slip, "fric_slip"), (first_stick, "fric_stick")],
                 f"events {evs} (expected fric_slip at {first_slip:g} s, the first load step that slides, fric_stick at "
                 f"{first_stick:g} s, the first after the peak)")
+    # (d) a press fit: the sphere pressed into a V-groove slides down both walls, friction at mu F_n
+    r = rcval.Result(rcval.run_case("case_wedge.rad", keep_solver=True))
+    f = np.interp(r.t, *RAMP)
+    Nref = M * G * f / (2 * (math.cos(PHI) + MU * math.sin(PHI)))
+    eN = float(np.abs(r.fn - Nref[:, None]).max() / (M * G))
+    ratio = np.linalg.norm(r.ffric, axis=2)
+    eF = float(np.abs(ratio - MU * Nref[:, None]).max() / (M * G))
+    # friction on the sphere up each wall: along (+-cos PHI, 0, sin PHI), its z part mu F_n sin PHI
+    eZ = float(np.abs(r.ffric[:, :, 2] - MU * Nref[:, None] * math.sin(PHI)).max() / (M * G))
+    dz = -Nref / (K * math.cos(PHI))
+    ez = float(np.abs(r.pos[:, 0, 2] - dz).max() / (M * G / K))
+    slips = [k for k in r.ev_kind if k == "fric_slip"]
+    rcval.check("static_friction.wedge", max(eN, eF, eZ) < 1e-9 and ez < 1e-6 and len(slips) == 2 and len(r.t) == 21,
+                f"{len(r.t)} records: walls' F_n against m g f / (2 (cos phi + mu sin phi)) max error {eN:.1e}, "
+                f"|F_t| against mu F_n {eF:.1e}, its z part against mu F_n sin phi {eZ:.1e} (of m g, < 1e-9); the "
+                f"descent against F_n / (k cos phi) {ez:.1e} of m g / k (< 1e-6); fric_slip events {len(slips)} "
+                f"(expected 2: both walls slide from the first load step)")
     rcval.finish()
 
 

@@ -572,6 +572,49 @@ static void test_static_scope(void)
     free(t);
 }
 
+/* A limit point: a sphere (1 kg, x and y and its rotations held) on a
+ * floor whose TYPE6 load curve rises to 10 N at 1 mm and falls after it
+ * (a softening contact), gravity ramped from 0 to 2 g over 1 s: the static
+ * analysis follows the curve up to the peak, at m g f(t) = 10 N, t* =
+ * 10 / (9.81 * 2) s, and past it reports a snap-through with its load time
+ * and the contact's peak, not a Newton failure. */
+static void test_static_snap_through(void)
+{
+    static const char *deck =
+        "/NODE\n1,0,0,0\n"
+        "/RBODY/1\nsphere\n1,,,,1.0\n0.001,0.001,0.001\n0,0,0\n"
+        "/SURF/ELLIPS/1\nsphere\n0,2,1\n0,0,0\n0.05,0.05,0.05\n"
+        "/GRNOD/NODE/1\ngroup\n1\n"
+        "/BCS/1\nheld\n110 111,0,1\n"
+        "/SURF/PLANE/2\nfloor\n0,0,-0.05\n0,0,1\n"
+        "/FUNCT/2\nload factor\n0,0\n1,2\n"
+        "/GRAV/1\ngravity\n2,Z,0,0,0,,1,-9.81\n"
+        "/INTER/TYPE6/1\nsphere - floor\n1,2\n\n\n"
+        "         3         0                                                 0\n"
+        "         0                             1\n"
+        "                             0         0\n"
+        "/FUNCT/3\nsoftening load curve\n0,0\n0.001,10\n0.002,5\n0.01,20\n"
+        "/RUN\n1.0,0.05\n/SOLVER\n3\n";
+    rc_error e;
+    rc_model *m = tu_compile_text(deck, "static_snap.rad", &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    rc_stats st;
+    const rc_status r = rc_run(m, NULL, &st, &e);
+    const double ts = 10.0 / (9.81 * 2.0);
+    printf("    %s\n", e.msg);
+    ENSURE(r == RC_ESOLVER);
+    ENSURE(strstr(e.msg, "a limit point (snap-through)") != NULL);
+    ENSURE(strstr(e.msg, "card /INTER/TYPE6/1 stops rising at P = 0.001 m, F = 10 N") != NULL);
+    const char *q = strstr(e.msg, "(snap-through) at the load time t = ");
+    const double tl = q ? strtod(q + strlen("(snap-through) at the load time t = "), NULL) : -1.0;
+    ENSURE(tl <= ts && ts - tl < 1e-6);
+    rc_model_free(m);
+}
+
 void suite_static(void);
 void suite_static(void)
 {
@@ -582,4 +625,5 @@ void suite_static(void)
     RUN_TEST(test_static_stiffness_hysteresis_box);
     RUN_TEST(test_static_stiffness_point_friction);
     RUN_TEST(test_static_scope);
+    RUN_TEST(test_static_snap_through);
 }

@@ -1364,6 +1364,31 @@ static int point_slip(const rc_model *m, const rc_data *d, int i)
     return 0;
 }
 
+/* A limit point at the state y: a closed contact on its load branch whose
+ * law's force does not grow past its penetration P (the load curve's slope
+ * there not positive: past a peak of a softening curve). The interface
+ * (-1: none), its P and force. A static analysis follows the loads up a
+ * rising curve only: past such a point the equilibrium under a growing
+ * load is elsewhere (a snap-through), which only dynamics can reach. */
+static int limit_point(const rc_model *m, const rc_data *d, double t, const double *y, double *pl, double *fl)
+{
+    for (int i = 0; i < m->ninter; i++) {
+        if (d->inter_mode[i] != RC_MODE_CLOSED || d->inter_branch[i] != RC_BR_LOAD) continue;
+        rc_inter_report r;
+        rc_inter_report_eval_d(m, d, i, t, y, &r);
+        const double P = r.pl > 0 ? r.pl : r.p;
+        if (!(P > 0) || !isfinite(P)) continue;
+        const double h = 1e-6 * P;
+        const double f0 = rc_law_force(m, i, P), f1 = rc_law_force(m, i, P + h);
+        if (!(f1 > f0)) {
+            *pl = P;
+            *fl = f0;
+            return i;
+        }
+    }
+    return -1;
+}
+
 /* ---- the run ------------------------------------------------------------ */
 static const char *const dof_name[6] = {"translation x", "translation y", "translation z",
                                         "rotation about the body's x axis", "rotation about the body's y axis",
@@ -1634,6 +1659,21 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                          "a static analysis has no equilibrium for a sliding body: follow the motion with Method 1 or "
                          "2, or hold the body",
                          tn, RC_LOC(m->inter_loc[slide]), m->inter_name[slide], slide_lim, t, dtau);
+                fail_reason = reason;
+                st = RC_SET(err, RC_ESOLVER, "%s", reason);
+                goto done;
+            }
+            double plim = 0.0, flim = 0.0;
+            const int lim = (first || dtau * 0.5 < dmin) ? limit_point(m, d, t, y, &plim, &flim) : -1;
+            if (lim >= 0) {
+                snprintf(reason, sizeof reason,
+                         "static analysis: no static equilibrium at the load time t = %.9g s: a limit point "
+                         "(snap-through) at the load time t = %.9g s (gravity's time function at %.9g): the load "
+                         "curve of " RC_LOCFMT "card %s stops rising at P = %.6g m, F = %.6g N, so a greater load has "
+                         "no equilibrium near the last one (load substeps down to %.3g s); the structure snaps "
+                         "through to another state, which a static analysis does not follow: use Method 1 or 2",
+                         tn, t, rc_gravity_factor(m, t), RC_LOC(m->inter_loc[lim]), m->inter_name[lim], plim, flim,
+                         dtau);
                 fail_reason = reason;
                 st = RC_SET(err, RC_ESOLVER, "%s", reason);
                 goto done;

@@ -45,10 +45,21 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
         RC_RAISE(err, RC_EINPUT,
                  RC_LOCFMT "card %s: " RC_STATIC_NOT " (%s); expected a model without joints, or %s",
                  RC_LOC(m->jnt->loc[0]), m->jnt->name[0], "joints", how, alt);
-    if (m->imp && m->imp->nt + m->imp->nr > 0)
+    /* imposed translations are held displacements (the integral of the
+     * velocity); an imposed rotation, or a translation released before the
+     * end (Tstop), is not in this version */
+    if (m->imp && m->imp->nr > 0)
         RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card /IMPVEL: " RC_STATIC_NOT " (%s); expected no /IMPVEL card, or %s",
-                 RC_LOC(m->end_loc), "imposed velocities", how, alt);
+                 RC_LOCFMT "card /IMPVEL: " RC_STATIC_NOT " (%s); expected imposed translations only (Dir X, Y, Z), "
+                           "or %s",
+                 RC_LOC(m->end_loc), "imposed rotations (Dir XX, YY, ZZ)", how, alt);
+    for (int k = 0; m->imp && k < m->imp->nt; k++)
+        if (m->imp->ttstop[k] < m->tend)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card /IMPVEL: " RC_STATIC_NOT " (%s); expected its Tstop blank or at least the end "
+                               "time %.6g s (an imposed translation held to the end), or %s",
+                     RC_LOC(m->end_loc), "an imposed translation that stops before the end time (Tstop)", how,
+                     m->tend, alt);
     for (int i = 0; i < m->ninter; i++) {
         const rc_fric *fr = &m->inter_fr[i];
         const char *what = NULL;

@@ -55,7 +55,9 @@
 #include "engine/assembly/bounds.h"
 #include "engine/events/events.h"
 #include "model/model.h"
+#include "model/imposed.h"
 #include "model/power.h"
+#include "model/table.h"
 #include "model/segsurf.h"
 #include "output/output.h"
 #include "solver/integrator.h"
@@ -95,6 +97,11 @@ struct rc_static {
     double *f;       /* [ny] rates */
     double *jv;      /* [nnz] the engine's Jacobian values */
     char *held;      /* [n] 1: held unknown */
+    /* imposed translations (/IMPVEL X, Y, Z: a held unknown moved to the
+     * integral of its velocity, docs/theory.md 7.8) */
+    int *imp_k;      /* [n] the imposed translation (m->imp index) of an unknown, -1: none */
+    double *imp_x0;  /* [n] its coordinate at t = 0 (the model's coordinates) [m] */
+    double *imp_f;   /* [n] the unbalanced force along it at the last equilibrium [N] */
     double *us, *fs; /* [n] unknown and residual scales (length or angle; force or moment) */
     double *kb;      /* [nb] the summed stiffness scales of each body's contacts, F_s / p_s [N/m] */
     int *sslot;      /* [ny] the slot of the free body a state belongs to, -1: none */
@@ -218,7 +225,7 @@ static int cmp_i64(const void *a, const void *b)
 void rc_static_free(rc_static *s)
 {
     if (!s) return;
-    void *p[] = {s->fb, s->slot, s->ys, s->y, s->f, s->jv, s->held, s->us, s->fs, s->kb, s->bsize, s->sslot, s->brow, s->bcol, s->bfirst,
+    void *p[] = {s->fb, s->slot, s->ys, s->y, s->f, s->jv, s->held, s->imp_k, s->imp_x0, s->imp_f, s->us, s->fs, s->kb, s->bsize, s->sslot, s->brow, s->bcol, s->bfirst,
                  s->colptr, s->rowind, s->ent_blk, s->ent_rc, s->raw, s->kval, s->fr_on, s->fr_t0, s->fr_pa, s->fr_pb,
                  s->fr_xa, s->fr_xb, s->ext, s->hy_on, s->hy_f0, s->hy_p0, s->hy_el, s->pe_on,
                  s->pf_on, s->pf_t0, s->pf_pa, s->pf_pb, s->pf_xa, s->pf_xb, s->pf_in, s->pf_out,
@@ -255,6 +262,9 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     s->f = calloc(ny1, sizeof(double));
     s->jv = calloc(nnz1, sizeof(double));
     s->held = calloc(n1, 1);
+    s->imp_k = malloc(n1 * sizeof(int));
+    s->imp_x0 = calloc(n1, sizeof(double));
+    s->imp_f = calloc(n1, sizeof(double));
     s->us = calloc(n1, sizeof(double));
     s->fs = calloc(n1, sizeof(double));
     s->kb = calloc((size_t)s->nb + 1, sizeof(double));
@@ -266,7 +276,7 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     s->ent_rc = malloc(nnz1);
     int64_t *key = malloc((nnz1 + (size_t)s->nb) * sizeof(int64_t));
     char *mf = calloc((size_t)m->nbody + 1, 1);
-    if (!s->fb || !s->slot || !s->ys || !s->y || !s->f || !s->jv || !s->held || !s->us || !s->fs || !s->kb || !s->bsize || !s->sslot || !s->ent_blk ||
+    if (!s->fb || !s->slot || !s->ys || !s->y || !s->f || !s->jv || !s->held || !s->imp_k || !s->imp_x0 || !s->imp_f || !s->us || !s->fs || !s->kb || !s->bsize || !s->sslot || !s->ent_blk ||
         !s->ent_rc || !key || !mf) {
         free(key);
         free(mf);
@@ -332,6 +342,29 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
         }
     }
     free(mf);
+    /* imposed translations: held at the integral of their velocity */
+    for (int i = 0; i < s->n; i++) s->imp_k[i] = -1;
+    if (m->imp && m->imp->nt > 0) {
+        double *y0 = calloc(ny1, sizeof(double));
+        if (!y0) {
+            free(bps);
+            free(bfi);
+            free(size_all);
+            free(key);
+            rc_static_free(s);
+            return NULL;
+        }
+        rc_initial_state(m, y0);
+        for (int k = 0; k < m->imp->nt; k++) {
+            const int b = m->imp->tbody[k], qk = b >= 0 ? s->slot[b] : -1;
+            if (qk < 0) continue;
+            const int i = 6 * qk + m->imp->tdir[k];
+            s->held[i] = 1;
+            s->imp_k[i] = k;
+            s->imp_x0[i] = y0[m->body_yadr[b] + m->imp->tdir[k]];
+        }
+        free(y0);
+    }
     free(bps);
     free(bfi);
     free(size_all);
@@ -1089,10 +1122,26 @@ typedef struct st_run {
     int njac;           /* stiffnesses evaluated in this solve */
 } st_run;
 
-/* The unknowns solved for (u, reduced) into s->ufull, the held ones zero. */
-static double *expand(rc_static *s, const double *u)
+/* The displacement of an imposed translation k from t = 0 to t [m]: the
+ * integral of its velocity Fscale f(t / Ascale). */
+static double imp_disp(const rc_model *m, int k, double t)
 {
-    for (int i = 0; i < s->n; i++) s->ufull[i] = 0.0;
+    const rc_imposed *p = m->imp;
+    return p->tfscale[k] * p->tascale[k] * rc_table_integral(&m->table[p->ttab[k]], 0.0, t / p->tascale[k]);
+}
+
+/* The unknowns solved for (u, reduced) into s->ufull at the load time t:
+ * the held ones zero, an imposed translation's at its position at t less
+ * the solve's start (s->ys). */
+static double *expand(rc_static *s, double t, const double *u)
+{
+    for (int i = 0; i < s->n; i++) {
+        s->ufull[i] = 0.0;
+        const int k = s->imp_k[i];
+        if (k < 0) continue;
+        const int b = s->fb[i / 6], a = s->m->body_yadr[b] + i % 6;
+        s->ufull[i] = s->imp_x0[i] + imp_disp(s->m, k, t) - s->ys[a];
+    }
     for (int i = 0; i < s->nr; i++) s->ufull[s->full[i]] = u[i];
     return s->ufull;
 }
@@ -1101,7 +1150,7 @@ static int kin_f(N_Vector u, N_Vector r, void *user)
 {
     st_run *c = user;
     rc_static *s = c->s;
-    if (rc_static_residual(s, c->t, expand(s, N_VGetArrayPointer(u)), s->rfull)) return 1;
+    if (rc_static_residual(s, c->t, expand(s, c->t, N_VGetArrayPointer(u)), s->rfull)) return 1;
     double *rr = N_VGetArrayPointer(r);
     for (int i = 0; i < s->nr; i++) rr[i] = s->rfull[s->full[i]];
     return 0;
@@ -1111,7 +1160,7 @@ static int kin_jac(N_Vector u, N_Vector fu, SUNMatrix A, void *user, N_Vector t1
 {
     st_run *c = user;
     rc_static *s = c->s;
-    if (stiffness(s, c->t, expand(s, N_VGetArrayPointer(u)))) return 1;
+    if (stiffness(s, c->t, expand(s, c->t, N_VGetArrayPointer(u)))) return 1;
     sunindextype *cp = SUNSparseMatrix_IndexPointers(A), *ri = SUNSparseMatrix_IndexValues(A);
     double *v = SUNSparseMatrix_Data(A);
     for (int k = 0; k <= s->nr; k++) cp[k] = (sunindextype)s->rcolptr[k];
@@ -1345,6 +1394,16 @@ static void energy_step(rc_static *s, double t, const double *u, double *y)
             }
         }
     }
+    /* imposed translations: W_imp = -(work of the reactions) = the work of
+     * the unbalanced force F along the component, sum 0.5 (F_0 + F_1) dx */
+    if (m->imp && m->imp->nt > 0 && rc_assemble_rhs(m, d, t, y, s->f) == 0)
+        for (int i = 0; i < s->n; i++) {
+            if (s->imp_k[i] < 0) continue;
+            const int q = i / 6, b = s->fb[q], a = m->body_yadr[b], c = i % 6;
+            const double f1 = m->body_mass[b] * d->sc->imp_free[a + 7 + c]; /* before the imposed rate (rc_imp_rhs) */
+            y[m->imp->wadr] += 0.5 * (s->imp_f[i] + f1) * (y[a + c] - s->en_x0[3 * q + c]);
+            s->imp_f[i] = f1;
+        }
     if (m->gwork_adr >= 0)
         for (int q = 0; q < s->nb; q++) {
             const int b = s->fb[q];
@@ -1596,7 +1655,7 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                 }
                 /* the state at the solution, the friction forces of the
                  * return mapping */
-                commit_state(s, tn, expand(s, N_VGetArrayPointer(k.u)), y);
+                commit_state(s, tn, expand(s, tn, N_VGetArrayPointer(k.u)), y);
                 S->reinits += rounds > 0;
                 ch = update_modes(m, d, tn, y, ptol, ftol, &sink, flips, &S->events, err);
                 if (ch < 0) {

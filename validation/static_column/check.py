@@ -66,6 +66,34 @@ def deck_active():
     return d
 
 
+NP, VP = 3, 1.0e-3                      # case_press: spheres in the pressed column, the press's speed [m/s]
+
+
+def deck_press():
+    """A press: NP spheres in a column on the floor, no gravity, the top
+    one's z imposed at -VP (/IMPVEL Z, a constant velocity: the held
+    displacement -VP t)."""
+    d = Deck("static press: the top sphere of a column driven down by an imposed velocity")
+    d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e5 N/m")
+    d.funct(2, [0.0, T_END], [-1.0, -1.0], title="constant velocity, down")
+    z = [R + 2.0 * R * i for i in range(NP)]  # exact binary numbers: every contact starts at zero gap
+    d.nodes([(i + 1, 0.0, 0.0, z[i]) for i in range(NP)])
+    for i in range(NP):
+        d.rbody(i + 1, i + 1, M, [0.4 * M * R * R] * 3, grnod=i + 1, title=f"sphere {i + 1} (from the bottom)")
+        d.sphere(i + 1, i + 1, (0.0, 0.0, z[i]), R, title=f"sphere {i + 1}")
+        d.grnod(i + 1, [i + 1], title=f"sphere {i + 1}")
+    d.plane(FLOOR, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0")
+    d.grnod(NP + 1, list(range(1, NP + 1)), title="all spheres")
+    d.bcs(1, NP + 1, "110 111", title="held to the vertical, not turning")
+    d.impvel(1, 2, "Z", NP, ascale=1.0, fscale=VP, title="the press: the top sphere driven down")
+    d.type6(1, 1, FLOOR, 1, title="floor - sphere 1")
+    for i in range(1, NP):
+        d.type6(i + 1, i, i + 1, 1, title=f"sphere {i} - sphere {i + 1}")
+    d.run(T_END, DT_OUT)
+    d.solver(method=3)
+    return d
+
+
 def main():
     rcval.METHOD = "static" if rcval.METHOD else ""   # the 'ida' mode: static all the same (docstring)
     r = rcval.Result(rcval.run_case(keep_solver=True))
@@ -127,8 +155,22 @@ def main():
                 f"hung sphere's contact modes {modes} (expected {want}; 1 open, 2 closed); events {evs}")
     rcval.check("static_column.active_set_forces", max(eF, ez) < TOL,
                 f"hung sphere: max |F - F_ref| / (m g) {eF:.2e}, max |d - d_ref| / gap {ez:.2e} (< {TOL:g})")
+    # the press: an imposed translation held at the integral of its velocity
+    r = rcval.Result(rcval.run_case("case_press.rad", keep_solver=True))
+    ids = list(r.inter_id)
+    Fp = K * VP * r.t / NP                      # the springs in series share the press's travel
+    eF = max(float(np.abs(r.fn[:, ids.index(j + 1)] - Fp).max()) for j in range(NP)) / (K * VP / NP)
+    ez = float(np.abs(r.pos[:, NP - 1, 2] - (R + 2.0 * R * (NP - 1) - VP * r.t)).max()) / VP
+    ew = 0.5 * K * (VP * r.t) ** 2 / NP        # the work the press puts in = the energy the contacts store
+    eI = float(np.abs(-r.energy["energy_imposed"] - ew).max()) / ew[-1]
+    eS = float(np.abs(r.energy["energy_contact_stored"] - ew).max()) / ew[-1]
+    rcval.check("static_column.press", max(eF, ez) < TOL and max(eI, eS) < 1e-6,
+                f"{len(r.t)} records: each contact's force against k v t / {NP} max error {eF:.1e} of k v / {NP}, the "
+                f"top sphere's height against z_0 - v t {ez:.1e} of v (< {TOL:g}); the work supplied "
+                f"(-energy_imposed) and the energy stored against k (v t)^2 / (2 {NP}) {eI:.1e}, {eS:.1e} of its "
+                f"end value (< 1e-6: the trapezoid over each load step, exact for a linear contact)")
     rcval.finish()
 
 
 if __name__ == "__main__":
-    rcval.entry(main, lambda: {"case.rad": deck(), "case_active.rad": deck_active()})
+    rcval.entry(main, lambda: {"case.rad": deck(), "case_active.rad": deck_active(), "case_press.rad": deck_press()})

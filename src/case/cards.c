@@ -142,18 +142,99 @@ static rc_status rc_card_call(rc_reader *rd, const rc_block *b, rc_card_kind kin
     return RC_SET(rd->err, RC_EINTERNAL, "unknown card kind %d", (int)kind);
 }
 
-/* A family whose subtype is missing or not supported. */
+/* Edit distance of two keywords (insertions, deletions, substitutions;
+ * letters compared as the reader has them, upper case), capped at 9. */
+static int rc_kw_distance(const char *a, const char *b)
+{
+    const size_t na = strlen(a), nb = strlen(b);
+    if (na > 31 || nb > 31) return 9;
+    int row[32];
+    for (size_t j = 0; j <= nb; j++) row[j] = (int)j;
+    for (size_t i = 1; i <= na; i++) {
+        int diag = row[0];
+        row[0] = (int)i;
+        for (size_t j = 1; j <= nb; j++) {
+            const int up = row[j];
+            int v = diag + (a[i - 1] != b[j - 1]); /* substitution */
+            if (up + 1 < v) v = up + 1;               /* deletion */
+            if (row[j - 1] + 1 < v) v = row[j - 1] + 1; /* insertion */
+            row[j] = v;
+            diag = up;
+        }
+    }
+    return row[nb] > 9 ? 9 : row[nb];
+}
+
+/* The one candidate within the typo distance of word (1 for words up to
+ * 4 letters, else 2), or NULL (none, or two equally close). */
+static const char *rc_kw_closest(const char *word, const char *const *cand, int n)
+{
+    const int lim = strlen(word) <= 4 ? 1 : 2;
+    const char *best = NULL;
+    int dbest = lim + 1, ties = 0;
+    for (int i = 0; i < n; i++) {
+        if (!cand[i]) continue;
+        const int d = rc_kw_distance(word, cand[i]);
+        if (d < dbest) {
+            dbest = d;
+            best = cand[i];
+            ties = 0;
+        } else if (d == dbest && best && strcmp(best, cand[i]) != 0) {
+            ties = 1;
+        }
+    }
+    return dbest <= lim && !ties ? best : NULL;
+}
+
+/* Is sub a subtype that Radioss has for the family kw (a card of its own,
+ * not supported yet), as opposed to a misspelling? The interface types
+ * TYPEn, and the other subtypes of the families ricochet reads in part. */
+static int rc_radioss_subtype(const char *kw, const char *sub)
+{
+    static const char *const surf[] = {"SEG", "PART", "BOX", "BOX2", "ELLIPS", "PLANE", "GRSHEL", "GRSH3N",
+                                       "GRBRIC", "GRTRIA", "MAT", "PROP", "SUBSET", "SURF", "DSURF", "SUBMOD"};
+    static const char *const grnod[] = {"NODE", "BOX", "BOX2", "PART", "GRNOD", "SURF", "SUBSET", "MAT",
+                                        "PROP", "GEN_INCR", "NODENS", "LINE", "SUBMOD", "GENE"};
+    static const char *const grpart[] = {"PART", "GRPART", "BOX", "BOX2", "MAT", "PROP", "SUBSET", "SUBMOD"};
+    static const char *const inivel[] = {"TRA", "ROT", "T&R", "AXIS", "GRID", "FVM", "NODE"};
+    static const char *const inter[] = {"SUB", "KINE", "LAGMUL", "HERTZ"};
+    if (strcmp(kw, "INTER") == 0) {
+        if (strncmp(sub, "TYPE", 4) == 0 && sub[4] >= '0' && sub[4] <= '9') {
+            const char *p = sub + 4;
+            while (*p >= '0' && *p <= '9') p++;
+            if (!*p) return 1;
+        }
+        return rc_in_list(sub, inter, RC_NF(inter));
+    }
+    if (strcmp(kw, "SURF") == 0) return rc_in_list(sub, surf, RC_NF(surf));
+    if (strcmp(kw, "GRNOD") == 0) return rc_in_list(sub, grnod, RC_NF(grnod));
+    if (strcmp(kw, "GRPART") == 0) return rc_in_list(sub, grpart, RC_NF(grpart));
+    if (strcmp(kw, "INIVEL") == 0) return rc_in_list(sub, inivel, RC_NF(inivel));
+    return 0; /* /JOINT, /COUPLING: ricochet's own */
+}
+
+/* A family whose subtype is missing or not supported; a subtype that is
+ * no card at all but one letter or two from a supported one is taken for
+ * a misspelling ("did you mean"). */
 static rc_status rc_bad_subtype(rc_reader *rd, const rc_block *b)
 {
     char list[256] = "";
+    const char *subs[32];
+    int ns = 0;
     size_t k = 0;
     for (size_t i = 0; i < sizeof rc_card_table / sizeof rc_card_table[0]; i++)
-        if (rc_card_table[i].sub && strcmp(rc_card_table[i].kw, b->kw[0]) == 0 && k < sizeof list)
+        if (rc_card_table[i].sub && strcmp(rc_card_table[i].kw, b->kw[0]) == 0 && k < sizeof list) {
             k += (size_t)snprintf(list + k, sizeof list - k, "%s/%s/%s", k ? ", " : "",
                                   rc_card_table[i].kw, rc_card_table[i].sub);
+            if (ns < 32) subs[ns++] = rc_card_table[i].sub;
+        }
     if (b->nkw < 2)
         return rc_case_fail(rd, &b->hdr->loc, b->name, NULL, "missing subtype (expected %s)",
                             list);
+    const char *near = rc_radioss_subtype(b->kw[0], b->kw[1]) ? NULL : rc_kw_closest(b->kw[1], subs, ns);
+    if (near)
+        return rc_case_fail(rd, &b->hdr->loc, b->name, NULL, "/%s/%s: no such card: did you mean /%s/%s? (supported: %s)",
+                            b->kw[0], b->kw[1], b->kw[0], near, list);
     return rc_case_fail(rd, &b->hdr->loc, b->name, NULL,
                         "/%s/%s: not supported yet (supported: %s)", b->kw[0], b->kw[1], list);
 }
@@ -190,6 +271,19 @@ rc_status rc_card_dispatch(rc_reader *rd, const rc_block *b)
     /* planned, then unknown */
     if (rc_in_list(kw, rc_planned, RC_NF(rc_planned)))
         return rc_case_fail(rd, &b->hdr->loc, b->name, NULL, "not supported yet");
+    /* a misspelling of a card read, ignored or planned */
+    const char *all[sizeof rc_card_table / sizeof rc_card_table[0] + RC_NF(rc_ignored) + RC_NF(rc_explicit) +
+                    RC_NF(rc_planned)];
+    int na = 0;
+    for (size_t i = 0; i < sizeof rc_card_table / sizeof rc_card_table[0]; i++) all[na++] = rc_card_table[i].kw;
+    for (int i = 0; i < RC_NF(rc_ignored); i++) all[na++] = rc_ignored[i];
+    for (int i = 0; i < RC_NF(rc_explicit); i++) all[na++] = rc_explicit[i];
+    for (int i = 0; i < RC_NF(rc_planned); i++) all[na++] = rc_planned[i];
+    const char *near = rc_kw_closest(kw, all, na);
+    if (near)
+        return rc_case_fail(rd, &b->hdr->loc, b->name, NULL,
+                            "unknown card: did you mean /%s? (docs/case-format.md lists the cards read and those "
+                            "ignored)", near);
     return rc_case_fail(rd, &b->hdr->loc, b->name, NULL,
                         "unknown card (docs/case-format.md lists the cards read and those "
                         "ignored)");

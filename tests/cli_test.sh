@@ -392,6 +392,23 @@ sed 's/^                   1              0.0001$/                 0.3          
 n=$(ls "$tmp/vtk" 2>/dev/null | grep -c '\.vtp$')
 if [ -f "$tmp/vtk/short.pvd" ] && [ "$n" -gt 0 ]; then expect export_vtk 0 $rc "($n .vtp files; $(head -c 120 "$tmp/x"))"
 else expect export_vtk 0 99 "(exit $rc: $(head -c 200 "$tmp/x"))"; fi
+# export-vtk --dt: one frame per 0.05 s of the short run (0.3 s: 7 frames,
+# 14 .vtp files, the times 0, 0.05, ..., 0.3 in the .pvd), the options in
+# any order; --help on stdout with exit 0; a bad --dt is a usage error
+"$bin" export-vtk --dt 0.05 "$tmp/short.nc" -o "$tmp/vtkdt" > "$tmp/x" 2>&1; rc=$?
+n=$(ls "$tmp/vtkdt" 2>/dev/null | grep -c '\.vtp$')
+times=$(grep -o 'part="0" file' "$tmp/vtkdt/short.pvd" 2>/dev/null | wc -l)
+if [ "$rc" -eq 0 ] && [ "$n" -eq 14 ] && [ "$times" -eq 7 ] && grep -q '(7 frames)' "$tmp/x"; then
+    echo "PASS cli.export_vtk_dt: --dt 0.05 on a 0.3 s run: $n .vtp files, $times frames ($(head -c 100 "$tmp/x"))"
+else echo "FAIL cli.export_vtk_dt: exit $rc, $n .vtp files, $times frames ($(head -c 200 "$tmp/x"))"; fi
+"$bin" export-vtk --help > "$tmp/x" 2>&1; rc=$?
+if [ "$rc" -eq 0 ] && grep -q "^usage: ricochet export-vtk RESULTS.nc \[options\]" "$tmp/x" && grep -q -- "--dt T" "$tmp/x"; then
+    echo "PASS cli.export_vtk_help: exit 0, its own usage with --dt"
+else echo "FAIL cli.export_vtk_help: exit $rc: $(head -c 200 "$tmp/x")"; fi
+"$bin" export-vtk "$tmp/short.nc" --dt -1 > "$tmp/x" 2>&1; rc=$?
+if [ "$rc" -eq 2 ] && grep -q "expected a positive number of seconds" "$tmp/x"; then
+    echo "PASS cli.export_vtk_bad_dt: exit 2, $(head -c 100 "$tmp/x")"
+else echo "FAIL cli.export_vtk_bad_dt: exit $rc: $(head -c 200 "$tmp/x")"; fi
 # guidance: a restitution asked of a contact off the line of the centres of
 # mass (the sphere moved 0.03 m sideways from the body's centre: the contact
 # drives 1 / (1/m + 0.03^2 / J) = 0.5263 kg, not m = 1 kg) or on a jointed body

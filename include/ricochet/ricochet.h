@@ -388,6 +388,11 @@ void rc_stats_print(const rc_stats *s, FILE *f);
  * RC_EINPUT when the results file lacks the variables needed, or for a
  * NULL results_path or dir. */
 rc_status rc_export_vtk(const char *results_path, const char *dir, int *nframes, rc_error *err);
+/* The same, one frame per dt [s] at most: the first record at or after
+ * each multiple of dt, and the last (dt = 0: every record, as
+ * rc_export_vtk). A frame's contacts file holds the events since the
+ * previous frame. RC_EINPUT for a dt below 0 or not finite. */
+rc_status rc_export_vtk_dt(const char *results_path, const char *dir, double dt, int *nframes, rc_error *err);
 
 #ifdef __cplusplus
 }

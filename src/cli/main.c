@@ -15,7 +15,7 @@ static void usage(FILE *f)
             "                         [--preload | --no-preload] [--on-violation stop|warn]\n"
             "                                            run a case, write results (default: CASE stem + .nc)\n"
             "       ricochet check CASE                  read and compile a case, print the model summary\n"
-            "       ricochet export-vtk RESULTS.nc [-o DIR]  ParaView files (.pvd + .vtp; default DIR: stem_vtk)\n"
+            "       ricochet export-vtk RESULTS.nc [-o DIR] [--dt T]  ParaView files (.pvd + .vtp)\n"
             "       ricochet COMMAND --help              the options of a command\n"
             "       ricochet --help | --version\n"
             "exit codes: 0 success, 2 input error, 3 solver failure, 4 I/O error, 5 physics check failed,\n"
@@ -135,12 +135,60 @@ static void on_signal(int sig)
     stop_requested = sig; /* non-zero; the exit code is 128 + sig */
 }
 
-/* ricochet export-vtk RESULTS.nc [-o DIR] (docs/output-format.md). */
+static void usage_export(FILE *f)
+{
+    fprintf(f,
+            "usage: ricochet export-vtk RESULTS.nc [options]\n"
+            "Write a ParaView time series of a results file: DIR/<stem>.pvd and, per frame, one VTK XML\n"
+            "PolyData file of the bodies (surfaces tessellated, their velocities) and one of the contacts\n"
+            "(points with force vectors, the events since the previous frame) (docs/output-format.md).\n"
+            "options (in any order after RESULTS.nc):\n"
+            "  -o DIR         where to write (created when missing; default: the results' stem + _vtk)\n"
+            "  --dt T         one frame per T seconds at most: the first record at or after each multiple\n"
+            "                 of T, and the last (default: every record, events' included)\n"
+            "  -h, --help     this text\n"
+            "exit codes: 0 success, 2 usage error, 4 I/O error (a file that cannot be read or written)\n");
+}
+
+/* ricochet export-vtk RESULTS.nc [-o DIR] [--dt T] (docs/output-format.md). */
 static int export_vtk(int argc, char **argv)
 {
-    const char *in = argc > 2 ? argv[2] : NULL, *dir = argc == 5 && !strcmp(argv[3], "-o") ? argv[4] : NULL;
-    if (!in || in[0] == '-' || (argc != 3 && !dir)) {
-        usage(stderr);
+    const char *in = NULL, *dir = NULL;
+    double dt = 0.0;
+    for (int k = 2; k < argc; k++) {
+        const char *a = argv[k];
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            usage_export(stdout);
+            return 0;
+        }
+        if (!strcmp(a, "-o") || !strcmp(a, "--dt")) {
+            if (k + 1 >= argc) {
+                fprintf(stderr, "ricochet export-vtk: %s needs a value\n", a);
+                usage_export(stderr);
+                return 2;
+            }
+            if (!strcmp(a, "-o")) {
+                dir = argv[++k];
+                continue;
+            }
+            char *end = NULL;
+            dt = strtod(argv[++k], &end);
+            if (!end || *end || end == argv[k] || !(dt > 0) || !isfinite(dt)) {
+                fprintf(stderr, "ricochet export-vtk: --dt %s: expected a positive number of seconds\n", argv[k]);
+                return 2;
+            }
+            continue;
+        }
+        if (a[0] == '-' || in) {
+            fprintf(stderr, "ricochet export-vtk: unexpected argument %s\n", a);
+            usage_export(stderr);
+            return 2;
+        }
+        in = a;
+    }
+    if (!in) {
+        fprintf(stderr, "ricochet export-vtk: no results file given\n");
+        usage_export(stderr);
         return 2;
     }
     char def[1024];
@@ -149,8 +197,8 @@ static int export_vtk(int argc, char **argv)
              b ? b + 1 : in);
     rc_error e;
     int n = 0;
-    if (rc_export_vtk(in, dir ? dir : def, &n, &e)) return fail(&e);
-    printf("ricochet %s: %s -> %s/ (%d records)\n", rc_version(), in, dir ? dir : def, n);
+    if (rc_export_vtk_dt(in, dir ? dir : def, dt, &n, &e)) return fail(&e);
+    printf("ricochet %s: %s -> %s/ (%d frames)\n", rc_version(), in, dir ? dir : def, n);
     return 0;
 }
 

@@ -534,9 +534,17 @@ static rc_status plane_extent(vtk_src *s, rc_error *err)
 
 rc_status rc_export_vtk(const char *results_path, const char *dir, int *nframes, rc_error *err)
 {
+    return rc_export_vtk_dt(results_path, dir, 0.0, nframes, err);
+}
+
+rc_status rc_export_vtk_dt(const char *results_path, const char *dir, double dt, int *nframes, rc_error *err)
+{
     if (nframes) *nframes = 0;
     if (!results_path) RC_RAISE(err, RC_EINPUT, "rc_export_vtk: the results path is NULL; expected a results file");
     if (!dir) RC_RAISE(err, RC_EINPUT, "rc_export_vtk: the directory is NULL; expected where to write");
+    if (!(dt >= 0) || !isfinite(dt))
+        RC_RAISE(err, RC_EINPUT, "rc_export_vtk_dt: frame interval %g s; expected a finite number >= 0 (0: every record)",
+                 dt);
     /* the results file is opened first: a failed export leaves no directory behind */
     vtk_src s;
     rc_nc_lock(); /* every netCDF call under the library's lock (output.h) */
@@ -585,7 +593,11 @@ rc_status rc_export_vtk(const char *results_path, const char *dir, int *nframes,
     }
     for (size_t i = 0; i < ni && c.seq; i++) c.seq[i] = (int)i;
     size_t ev = 0;
+    int nout = 0;
+    double tnext = -INFINITY; /* the next frame's time (dt > 0): the first record at or after it */
     for (size_t k = 0; rc == RC_OK && k < s.nrec; k++) {
+        if (dt > 0 && k + 1 < s.nrec && k > 0 && tt[k] < tnext) continue;
+        if (dt > 0) tnext = (floor(tt[k] / dt + 1e-9) + 1.0) * dt;
         rc_nc_lock();
         rc = get_rec(&s, "body_position", k, nb, 3, pos, err);
         if (rc == RC_OK) rc = get_rec(&s, "body_quaternion", k, nb, 4, quat, err);
@@ -626,7 +638,8 @@ rc_status rc_export_vtk(const char *results_path, const char *dir, int *nframes,
                 k);
         fprintf(pvd, "<DataSet timestep=\"%.17g\" group=\"\" part=\"1\" file=\"%s_contacts_%06zu.vtp\"/>\n", tt[k],
                 stem, k);
-        if (nframes) *nframes = (int)k + 1;
+        nout++;
+        if (nframes) *nframes = nout;
     }
     if (pvd) {
         fprintf(pvd, "</Collection>\n</VTKFile>\n");

@@ -125,6 +125,19 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     return rc_run_paused(m, opt, NULL, stats, err);
 }
 
+/* A number in the format fmt, or "-" right-aligned to its width when it
+ * is not finite; a negative zero printed as 0. */
+static void num_or_dash(char *buf, size_t n, const char *fmt, double v)
+{
+    int w = 0;
+    sscanf(fmt, "%%%d", &w);
+    if (!isfinite(v)) {
+        snprintf(buf, n, "%*s", w, "-");
+        return;
+    }
+    snprintf(buf, n, fmt, v == 0.0 ? 0.0 : v);
+}
+
 void rc_stats_print(const rc_stats *s, FILE *f)
 {
     if (!s || !f) return;
@@ -145,11 +158,25 @@ void rc_stats_print(const rc_stats *s, FILE *f)
         fprintf(f, "impacts %ld%s:\n", s->impacts, s->impacts > RC_STATS_IMPACTS ? " (the first ones; all in the results file)" : "");
         fprintf(f, "  %-8s %12s %12s %12s %12s %10s %10s %8s %12s\n", "inter", "close [s]", "duration [s]",
                 "max pen [m]", "peak F [N]", "v_in [m/s]", "v_out[m/s]", "e [-]", "E_lost [J]");
+        int touching = 0;
         for (long k = 0; k < s->impacts && k < RC_STATS_IMPACTS; k++) {
             const rc_impact *r = &s->impact[k];
-            fprintf(f, "  %-8d %12.6g %12.6g %12.5g %12.5g %10.4g %10.4g %8.4f %12.5g\n", r->inter_id, r->t_close,
-                    r->duration, r->pen_max, r->fn_max, r->v_in, r->v_out, r->restitution, r->energy_lost);
+            /* no NaN and no -0 on the screen: "-" where a value does not
+             * exist (no separation yet, no approach to divide by) */
+            char dur[16], vin[16], vout[16], e[16], el[16];
+            num_or_dash(dur, sizeof dur, "%12.6g", r->duration);
+            num_or_dash(vin, sizeof vin, "%10.4g", r->v_in);
+            num_or_dash(vout, sizeof vout, "%10.4g", r->v_out);
+            num_or_dash(e, sizeof e, "%8.4f", r->restitution);
+            num_or_dash(el, sizeof el, "%12.5g", r->energy_lost);
+            const int touch = !(r->v_in > 0);
+            touching += touch;
+            fprintf(f, "  %-8d %12.6g %s %12.5g %12.5g %s %s %s %s%s\n", r->inter_id, r->t_close, dur, r->pen_max,
+                    r->fn_max, vin, vout, e, el, touch ? "  (touching: no approach)" : "");
         }
+        if (touching)
+            fprintf(f, "  (touching: a contact that closed without approaching, at a touching start or resting: "
+                       "no restitution)\n");
     }
     if (s->sampling_note[0]) fprintf(f, "warning: %s\n", s->sampling_note);
     /* the physics checks (docs/theory.md) and what the contacts did */

@@ -392,6 +392,13 @@ sed 's/^                   1              0.0001$/                 0.3          
 n=$(ls "$tmp/vtk" 2>/dev/null | grep -c '\.vtp$')
 if [ -f "$tmp/vtk/short.pvd" ] && [ "$n" -gt 0 ]; then expect export_vtk 0 $rc "($n .vtp files; $(head -c 120 "$tmp/x"))"
 else expect export_vtk 0 99 "(exit $rc: $(head -c 200 "$tmp/x"))"; fi
+# a run in which no contact ever closes (the demo cut at 0.1 s, before the
+# sphere reaches the floor) says so plainly
+sed 's/^                   1              0.0001$/                 0.1               0.001/' "$demo" > "$tmp/noclose.rad"
+"$bin" run "$tmp/noclose.rad" -o "$tmp/noclose.nc" > "$tmp/x" 2>&1; rc=$?
+if [ "$rc" -eq 0 ] && grep -q "^contacts: 1 never closed (/INTER/TYPE6/1) - no contact closed in the whole run: the bodies never touched" "$tmp/x"; then
+    echo "PASS cli.no_contact_note: $(grep '^contacts:' "$tmp/x" | head -c 140)"
+else echo "FAIL cli.no_contact_note: exit $rc: $(grep '^contacts:' "$tmp/x" | head -c 200)"; fi
 # export-vtk --dt: one frame per 0.05 s of the short run (0.3 s: 7 frames,
 # 14 .vtp files, the times 0, 0.05, ..., 0.3 in the .pvd), the options in
 # any order; --help on stdout with exit 0; a bad --dt is a usage error

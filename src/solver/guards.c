@@ -706,6 +706,11 @@ void rc_guards_finish(rc_guards *g, const rc_data *d, rc_stats *s, rc_output *o,
     if (ns) ADD("%s%d settled into persistent contact after accumulating bounces (%s)", strlen(contacts) ? "; " : "", ns,
                 sett);
     if (nr && strlen(contacts)) ADD("; %d closed and reopened", nr);
+    /* nothing ever touched: say so plainly (a deck in mm with gravity in
+     * m/s^2, a gap, a run that ends before the first contact) */
+    if (nn > 0 && nn == m->ninter)
+        ADD(" - no contact closed in the whole run: the bodies never touched; check the gravity and the units, "
+            "the gaps, the initial positions and the end time");
 #undef ADD
     (void)d;
     /* the checks */

@@ -392,6 +392,15 @@ sed 's/^                   1              0.0001$/                 0.3          
 n=$(ls "$tmp/vtk" 2>/dev/null | grep -c '\.vtp$')
 if [ -f "$tmp/vtk/short.pvd" ] && [ "$n" -gt 0 ]; then expect export_vtk 0 $rc "($n .vtp files; $(head -c 120 "$tmp/x"))"
 else expect export_vtk 0 99 "(exit $rc: $(head -c 200 "$tmp/x"))"; fi
+# check shows the gravity in SI; a deck in mm with gravity left at -9.81
+# (9.81 mm/s^2) is warned about, the demo (in m) is not
+sed 's/^                  kg                   m                   s$/                  kg                  mm                   s/' "$demo" > "$tmp/mm.rad"
+"$bin" check "$tmp/mm.rad" > "$tmp/x" 2>/dev/null; rc=$?
+"$bin" check "$demo" > "$tmp/y" 2>/dev/null
+if [ "$rc" -eq 0 ] && grep -q "^gravity     (0, 0, -0.00981) m/s^2" "$tmp/x" && grep -q "is 0.001 times the Earth's 9.81 m/s^2" "$tmp/x" &&
+   grep -q "^gravity     (0, 0, -9.81) m/s^2" "$tmp/y" && ! grep -q "times the Earth's" "$tmp/y"; then
+    echo "PASS cli.check_gravity: $(grep '^warning' "$tmp/x" | head -c 120)"
+else echo "FAIL cli.check_gravity: exit $rc: $(grep -E '^gravity|^warning' "$tmp/x" "$tmp/y" | head -c 300)"; fi
 # a run in which no contact ever closes (the demo cut at 0.1 s, before the
 # sphere reaches the floor) says so plainly
 sed 's/^                   1              0.0001$/                 0.1               0.001/' "$demo" > "$tmp/noclose.rad"

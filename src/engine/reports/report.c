@@ -104,13 +104,49 @@ static void print_guidance(const rc_model *m, FILE *f)
     free(y);
 }
 
+/* The gravity the free bodies feel (in SI; the time function's factor
+ * aside), and a warning when it is far from the Earth's: a deck in mm with
+ * gravity left at 9.81 (9.81 mm/s^2, a thousandth), or one in m with mm
+ * values (9810 m/s^2). */
+static void print_gravity(const rc_model *m, FILE *f)
+{
+    int nfree = 0, nsame = 0, first = -1;
+    for (int b = 0; b < m->nbody; b++) {
+        if (m->body_yadr[b] < 0) continue;
+        nfree++;
+        if (first < 0) first = b;
+        const double *g = m->body_grav + 3 * b, *g0 = m->body_grav + 3 * first;
+        nsame += g[0] == g0[0] && g[1] == g0[1] && g[2] == g0[2];
+    }
+    if (first < 0) return;
+    const double *g = m->body_grav + 3 * first, gn = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    char fn[64] = "";
+    if (m->grav_table >= 0) snprintf(fn, sizeof fn, " times /FUNCT/%d of t", m->table[m->grav_table].id);
+    if (gn == 0.0 && nsame == nfree) {
+        fprintf(f, "gravity     none\n");
+        return;
+    }
+    fprintf(f, "gravity     (%.6g, %.6g, %.6g) m/s^2%s, |g| %.6g m/s^2, on %s%s\n", g[0], g[1], g[2], fn, gn,
+            nsame == nfree ? "every free body" : "the first free body",
+            nsame == nfree ? "" : " (others differ: /GRAV on node groups)");
+    const double r = gn / 9.80665;
+    if (gn > 0 && (r < 0.05 || r > 20))
+        fprintf(f, "warning     |g| = %.6g m/s^2 is %.3g times the Earth's 9.81 m/s^2: gravity is given in the deck's "
+                   "units (a deck in mm takes -9810 mm/s^2, not -9.81); is it meant?\n",
+                gn, r);
+}
+
 void rc_model_print_summary(const rc_model *m, FILE *f)
 {
     if (!m || !f) return;
     fprintf(f, "case        %s (checksum %016lx)\n", m->case_path, m->checksum);
     if (m->title[0]) fprintf(f, "title       %s\n", m->title);
-    fprintf(f, "units       %s\n", m->unit_mass[0] ? "" : "undeclared (one consistent system assumed)");
-    if (m->unit_mass[0]) fprintf(f, "            mass %s, length %s, time %s\n", m->unit_mass, m->unit_length, m->unit_time);
+    if (m->unit_mass[0])
+        fprintf(f, "units       declared (/BEGIN or /UNIT): the values are converted to mass %s, length %s, time %s "
+                   "(the warnings of the reading give the deck's units and the factors)\n",
+                m->unit_mass, m->unit_length, m->unit_time);
+    else
+        fprintf(f, "units       undeclared (one consistent system assumed; this summary names SI units)\n");
     fprintf(f, "bodies      %d (%d free, %d fixed)\n", m->nbody, m->nfree, m->nbody - m->nfree);
     for (int b = 0; b < m->nbody && b < 20; b++) {
         const double *y0 = m->body_y0 + RC_NB * b;
@@ -122,6 +158,7 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
                 J[0], J[4], J[8], J[1], J[5], J[2], m->body_mass[b], x0[0], x0[1], x0[2]);
     }
     if (m->nbody > 20) fprintf(f, "  ... and %d more bodies (the first 20 in deck order are listed)\n", m->nbody - 20);
+    print_gravity(m, f);
     fprintf(f, "surfaces    %d\n", m->nsurf);
     if (m->start_note) fprintf(f, "warning     accepted by /RUN On_viol 2: %s\n", m->start_note); /* engine/analyses/start.c */
     fprintf(f, "interfaces  %d\n", m->ninter);

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "model/coupling.h"
 #include "model/coupling_contact.h"
@@ -104,6 +105,27 @@ static void print_guidance(const rc_model *m, FILE *f)
     free(y);
 }
 
+/* The shortest of %.15g, %.16g, %.17g that reads back as v (0.15, not
+ * 0.14999999999999999; every digit that matters, for the scripts that
+ * parse the line). */
+static void exact(char *buf, size_t n, double v)
+{
+    for (int p = 15; p <= 17; p++) {
+        snprintf(buf, n, "%.*g", p, v);
+        if (strtod(buf, NULL) == v) return;
+    }
+}
+
+/* "lo..hi" at 3 digits, or one value when they print the same. */
+static void range3(char *buf, size_t n, double lo, double hi)
+{
+    char a[32], b[32];
+    snprintf(a, sizeof a, "%.3g", lo);
+    snprintf(b, sizeof b, "%.3g", hi);
+    if (strcmp(a, b) == 0) snprintf(buf, n, "%s", a);
+    else snprintf(buf, n, "%s..%s", a, b);
+}
+
 /* The gravity the free bodies feel (in SI; the time function's factor
  * aside), and a warning when it is far from the Earth's: a deck in mm with
  * gravity left at 9.81 (9.81 mm/s^2, a thousandth), or one in m with mm
@@ -154,8 +176,11 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
         fprintf(f, "  /RBODY/%-6d mass %-11.5g x0 (%.5g, %.5g, %.5g) v0 (%.5g, %.5g, %.5g)%s\n", m->body_id[b],
                 m->body_mass[b], x0[0], x0[1], x0[2], y0[7], y0[8], y0[9], m->body_fixed[b] ? " fixed" : "");
         const double *J = m->body_J + 9 * b;
-        fprintf(f, "               inertia Jxx Jyy Jzz %.17g %.17g %.17g Jxy Jyz Jxz %.17g %.17g %.17g mass %.17g x0 %.17g %.17g %.17g\n",
-                J[0], J[4], J[8], J[1], J[5], J[2], m->body_mass[b], x0[0], x0[1], x0[2]);
+        const double v[10] = {J[0], J[4], J[8], J[1], J[5], J[2], m->body_mass[b], x0[0], x0[1], x0[2]};
+        char ex[10][32];
+        for (int k = 0; k < 10; k++) exact(ex[k], sizeof ex[k], v[k]);
+        fprintf(f, "               inertia Jxx Jyy Jzz %s %s %s Jxy Jyz Jxz %s %s %s mass %s x0 %s %s %s\n", ex[0], ex[1],
+                ex[2], ex[3], ex[4], ex[5], ex[6], ex[7], ex[8], ex[9]);
     }
     if (m->nbody > 20) fprintf(f, "  ... and %d more bodies (the first 20 in deck order are listed)\n", m->nbody - 20);
     print_gravity(m, f);
@@ -209,12 +234,14 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
                 hi[k] = fmax(hi[k], a);
             }
         }
-        fprintf(f, "            atol (%s): position %.3g..%.3g m%s, quaternion %.3g..%.3g, velocity %.3g..%.3g m/s,\n"
-                   "            angular %.3g..%.3g rad/s, energy %.3g J\n",
+        char rg[4][80];
+        for (int k = 0; k < 4; k++) range3(rg[k], sizeof rg[k], lo[k], hi[k]);
+        fprintf(f, "            atol (%s): position %s m%s, quaternion %s, velocity %s m/s,\n"
+                   "            angular %s rad/s, energy %.3g J\n",
                 au == (RC_TOL_AUTO_POS | RC_TOL_AUTO_QUAT | RC_TOL_AUTO_VEL | RC_TOL_AUTO_OMEGA | RC_TOL_AUTO_ENERGY)
                     ? "derived from the contact scales"
                     : "blank fields derived from the contact scales",
-                lo[0], hi[0], m->ewt_rel ? " (absolute)" : "", lo[1], hi[1], lo[2], hi[2], lo[3], hi[3], m->atol_energy);
+                rg[0], m->ewt_rel ? " (absolute)" : "", rg[1], rg[2], rg[3], m->atol_energy);
         if (m->tol_floored > 0)
             fprintf(f, "            note: rtol p_s is below what the coordinates resolve for %d bod%s: their position\n"
                        "            tolerance raised to %.3g m (%d roundings of the contacts' coordinates about the model's\n"

@@ -433,6 +433,17 @@ rc_status rc_bk_open_output(const rc_model *m, const char *path, const char *not
 /* Progress of the integration on stderr: one line rewritten on a terminal,
  * whole lines in a log. The time remaining is estimated from the rate of
  * simulated time over the wall time so far. */
+/* A progress line on a terminal not yet ended by a newline: a message of
+ * the run (a settled contact) starts on a line of its own, and the run's
+ * end ends it (per thread: each run its own). */
+static _Thread_local int progress_open;
+
+static void progress_break(void)
+{
+    if (progress_open) fputc('\n', stderr);
+    progress_open = 0;
+}
+
 void rc_bk_progress_line(double tend, const rc_stats *s, double t, long steps, double t0, int tty)
 {
     const double wall = rc_bk_wall_now() - t0;
@@ -447,6 +458,7 @@ void rc_bk_progress_line(double tend, const rc_stats *s, double t, long steps, d
     fprintf(stderr, "%sricochet: t = %.6g of %.6g s (%.1f%%), steps %ld, events %ld, wall %.1f s%s%s", tty ? "\r" : "",
             t, tend, 100.0 * t / tend, steps, s->events, wall, left, tty ? "   " : "\n");
     fflush(stderr);
+    progress_open = tty;
 }
 
 
@@ -459,6 +471,7 @@ static rc_status settled(const rc_model *m, const rc_data *d, ev_sink *sink, dou
     s->settles++;
     s->t_settle = t;
     s->events++;
+    if (show) progress_break(); /* not on the progress line's tail */
     if (show) /* with the progress (not with `ricochet run -q`, nor for an embedding without it) */
         fprintf(stderr, "ricochet: %s settled into persistent contact at t = %.9g s (bounces accumulated; %s)\n",
                 m->inter_name[ev->inter], t, rc_settle_hold(m, ev->inter));
@@ -975,7 +988,7 @@ done:
     }
     if (st != RC_OK) s.t_end = t; /* how far a failed run got */
     s.wall_time = rc_bk_wall_now() - wall0;
-    if (tty) fprintf(stderr, "\n");
+    progress_break(); /* a progress line on a terminal ends here */
     /* the physics checks' outcome: statistics and results file */
     if (st == RC_EPHYSICS) {
         snprintf(reason, sizeof reason, "physics check failed: %s", rc_guards_message(gd));

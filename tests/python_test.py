@@ -52,6 +52,10 @@ if have_xr:
     check("read_xarray", type(ds).__name__ == "Dataset" and ds.sizes["time"] == nt and same
           and ds.attrs["complete"] == "yes",
           f"xarray {xarray.__version__}: Dataset with {ds.sizes['time']} records, same values as the dict")
+    z = ds.body_position.sel(vec3="z").values
+    w = ds.body_quaternion.sel(quat="w").values
+    check("read_xarray_labels", np.array_equal(z, r["body_position"][..., 2]) and np.array_equal(w, r["body_quaternion"][..., 0]),
+          "body_position.sel(vec3='z') and body_quaternion.sel(quat='w') are the z and w components")
 else:
     print("SKIP python.read_xarray: xarray not installed (Debian python3-xarray)")
 

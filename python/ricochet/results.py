@@ -1,6 +1,8 @@
 """Read a ricochet results file (netCDF-4, docs/output-format.md).
 
 ``read(path)`` returns an ``xarray.Dataset`` when xarray is installed
+(its ``vec3`` and ``quat`` dimensions labelled x, y, z and w, x, y, z, so
+that ``ds.body_position.sel(vec3="z")`` is the heights)
 (Debian: python3-xarray), else a ``Results``: a dict of numpy arrays, one
 per variable, with the global attributes in ``.attrs``, the variables'
 attributes in ``.var_attrs`` and the dimensions of each variable in
@@ -47,7 +49,11 @@ def read(path, xarray=None):
         # time stays in seconds (the file's time axis is CF-decodable to
         # dates from an arbitrary origin, which is no use here)
         with xr.open_dataset(path, engine="netcdf4", mask_and_scale=False, decode_times=False) as ds:
-            return ds.load()
+            ds = ds.load()
+        # the components by name: ds.body_position.sel(vec3="z"),
+        # ds.body_quaternion.sel(quat="w")
+        labels = {"vec3": ["x", "y", "z"], "quat": ["w", "x", "y", "z"]}
+        return ds.assign_coords({d: v for d, v in labels.items() if d in ds.dims and ds.sizes[d] == len(v)})
     from netCDF4 import Dataset
     out = Results()
     with Dataset(path, "r") as nc:

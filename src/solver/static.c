@@ -58,7 +58,6 @@
 #include "model/imposed.h"
 #include "model/power.h"
 #include "model/table.h"
-#include "model/segsurf.h"
 #include "output/output.h"
 #include "solver/integrator.h"
 #include "solver/solver.h"
@@ -593,29 +592,6 @@ static void fric_points(const rc_static *s, int i, const double *u, double pa[3]
     disp_points(s, i, s->fr_pa + 3 * i, s->fr_pb + 3 * i, s->fr_xa + 3 * i, s->fr_xb + 3 * i, u, pa, pb, Da, Db);
 }
 
-/* Point j of node-pair interface i at the state y: its global position
- * (the node: of surface a for j < n_a, else of surface b; past the nodes,
- * a pair of box edges: the middle of their closest points). */
-static void pf_node(const rc_model *m, int i, int j, const double *y, double x[3])
-{
-    const int sa = m->inter_sa[i], na = m->surf_nadr[sa + 1] - m->surf_nadr[sa];
-    if (rc_box_is_box_pair(m, i) && j >= rc_seg_points(m, i) - RC_BOX_EDGE_PAIRS) {
-        rc_point_position(m, i, j, y, x);
-        return;
-    }
-    const int sf = j < na ? sa : m->inter_sb[i], jj = j < na ? j : j - na;
-    const double *p = m->surf_node + 3 * (m->surf_nadr[sf] + jj);
-    const int b = m->surf_body[sf];
-    if (b < 0) {
-        memcpy(x, p, 3 * sizeof(double));
-        return;
-    }
-    const double *xb = y + m->body_yadr[b];
-    const double complex q[4] = {xb[3], xb[4], xb[5], xb[6]};
-    double complex o[3];
-    qrot(q, p, o);
-    for (int k = 0; k < 3; k++) x[k] = xb[k] + creal(o[k]);
-}
 
 /* The point x (global) as a material point of body b (its body frame; the
  * global point for a fixed body) into rb, and where mpoint puts it at the
@@ -675,7 +651,7 @@ void rc_static_set_substep_start(rc_static *s, double t, const double *y0)
                 const int pj = m->inter_pbase[i] + j;
                 double x[3];
                 for (int k = 0; k < 3; k++) s->pf_t0[3 * pj + k] = closed ? y0[st + m->inter_pst[i] * j + k] : 0.0;
-                pf_node(m, i, j, y0, x);
+                rc_point_position(m, i, j, y0, x); /* the node, or an edge pair's middle */
                 material_point(s, m->inter_ba[i], y0, x, s->pf_pa + 3 * pj, s->pf_xa + 3 * pj);
                 material_point(s, m->inter_bb[i], y0, x, s->pf_pb + 3 * pj, s->pf_xb + 3 * pj);
             }

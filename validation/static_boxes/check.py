@@ -117,15 +117,20 @@ def tilted(theta):
     return float(f"{G * math.sin(theta):.12g}"), float(f"{-G * math.cos(theta):.12g}")
 
 
-def deck_incline(theta, preload):
-    d = Deck(f"static boxes: a box with friction per corner, gravity tilted {theta:g} rad"
-             + (", preloaded" if preload else ""))
+def box_on_floor(d):
+    """The load curve, and box 1 (the lower box's size and place) alone on the floor z = 0."""
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e6 N/m")
     d.nodes([(1, *C1)])
     d.rbody(1, 1, M1, [0.01, 0.02, 0.03], grnod=1, title="box")
     d.box(1, 1, C1, H1, title="box")
     d.plane(3, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0")
     d.grnod(1, [1], title="box")
+
+
+def deck_incline(theta, preload):
+    d = Deck(f"static boxes: a box with friction per corner, gravity tilted {theta:g} rad"
+             + (", preloaded" if preload else ""))
+    box_on_floor(d)
     gx, gz = tilted(theta)
     if preload:
         d.grav(1, "X", gx)
@@ -143,13 +148,8 @@ def deck_slide():
     held by a horizontal spring (100 N/m) from its centre to a fixed point
     1 m behind it; the load factor rises to 1 and falls to 0.2."""
     d = Deck("static boxes: a box with friction per corner slides against a spring, sticks again")
-    d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e6 N/m")
+    box_on_floor(d)
     d.funct(2, [0.0, 0.5 * T_END, T_END], [0.0, 1.0, 0.2], title="load factor f(t)")
-    d.nodes([(1, *C1)])
-    d.rbody(1, 1, M1, [0.01, 0.02, 0.03], grnod=1, title="box")
-    d.box(1, 1, C1, H1, title="box")
-    d.plane(3, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0")
-    d.grnod(1, [1], title="box")
     gx, gz = tilted(TH_SLIDE)
     d.grav_fct(1, "X", gx, 2)
     d.grav_fct(2, "Z", gz, 2)

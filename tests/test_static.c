@@ -157,6 +157,14 @@ static st_fix fix_open(rc_model *m)
     return f;
 }
 
+/* The fixture is whole (a model that did not compile has been reported
+ * where it was compiled). */
+static int fix_ready(const st_fix *f)
+{
+    ENSURE(!f->m || (f->d && f->y && f->s));
+    return f->m && f->d && f->y && f->s;
+}
+
 static void fix_close(st_fix *f)
 {
     rc_static_free(f->s);
@@ -213,8 +221,7 @@ static void check_deck(const char *text, const char *name, int nfree)
     rc_data *d = f.d;
     double *y = f.y;
     rc_static *s = f.s;
-    ENSURE(d && y && s);
-    if (d && y && s) {
+    if (fix_ready(&f)) {
         ENSURE(rc_static_size(s) == 6 * nfree);
         rc_initial_state(m, y);
         rc_modes_init(m, d, 0.0, y);
@@ -301,8 +308,7 @@ static void test_static_stiffness_friction(void)
     rc_data *d = f.d;
     double *y = f.y;
     rc_static *s = f.s;
-    ENSURE(!m || (d && y && s));
-    if (m && d && y && s) {
+    if (fix_ready(&f)) {
         ENSURE(m->inter_fr[0].tidx >= 0 && m->inter_fr[0].kt == 1e4);
         const int n = rc_static_size(s);
         double u[6] = {0}, *r = calloc((size_t)n, sizeof(double));
@@ -351,8 +357,7 @@ static void test_static_stiffness_hysteresis(void)
     rc_data *d = f.d;
     double *y = f.y;
     rc_static *s = f.s;
-    ENSURE(!m || (d && y && s));
-    if (m && d && y && s) {
+    if (fix_ready(&f)) {
         ENSURE(m->inter_iform[0] == 1 && m->inter_hidx[0] >= 0 && m->inter_stiff[0] == 1e6);
         const int n = rc_static_size(s), a = m->body_yadr[m->inter_ba[0]];
         double *r = calloc((size_t)n, sizeof(double)), *u = calloc((size_t)n, sizeof(double));
@@ -436,8 +441,7 @@ static void test_static_stiffness_hysteresis_box(void)
     rc_data *d = f.d;
     double *y = f.y;
     rc_static *s = f.s;
-    ENSURE(!m || (d && y && s));
-    if (m && d && y && s) {
+    if (fix_ready(&f)) {
         const int n = rc_static_size(s), a = m->body_yadr[m->inter_ba[0]];
         ENSURE(n == 6 && m->inter_peidx[0] >= 0 && m->inter_hidx[0] >= 0);
         rc_initial_state(m, y);
@@ -474,8 +478,7 @@ static void test_static_stiffness_boxes(void)
     rc_data *d = f.d;
     double *y = f.y;
     rc_static *s = f.s;
-    ENSURE(!m || (d && y && s));
-    if (m && d && y && s) {
+    if (fix_ready(&f)) {
         const int n = rc_static_size(s);
         ENSURE(n == 12 && m->inter_peidx[0] >= 0 && m->inter_peidx[1] >= 0);
         double u[12] = {0}, r[12];
@@ -509,8 +512,7 @@ static void test_static_stiffness_point_friction(void)
     rc_data *d = f.d;
     double *y = f.y;
     rc_static *s = f.s;
-    ENSURE(!m || (d && y && s));
-    if (m && d && y && s) {
+    if (fix_ready(&f)) {
         const int n = rc_static_size(s), npt = m->inter_npt[0];
         ENSURE(n == 6 && npt == 8 && m->inter_pst[0] == 3);
         double u[6], r[6];

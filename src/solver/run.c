@@ -125,17 +125,12 @@ rc_status rc_run(const rc_model *m, const rc_run_options *opt, rc_stats *stats, 
     return rc_run_paused(m, opt, NULL, stats, err);
 }
 
-/* A number in the format fmt, or "-" right-aligned to its width when it
+/* A number in the format fmt, or "-" right-aligned to the width w when it
  * is not finite; a negative zero printed as 0. */
-static void num_or_dash(char *buf, size_t n, const char *fmt, double v)
+static void num_or_dash(char *buf, size_t n, int w, const char *fmt, double v)
 {
-    int w = 0;
-    sscanf(fmt, "%%%d", &w);
-    if (!isfinite(v)) {
-        snprintf(buf, n, "%*s", w, "-");
-        return;
-    }
-    snprintf(buf, n, fmt, v == 0.0 ? 0.0 : v);
+    if (!isfinite(v)) snprintf(buf, n, "%*s", w, "-");
+    else snprintf(buf, n, fmt, v == 0.0 ? 0.0 : v);
 }
 
 void rc_stats_print(const rc_stats *s, FILE *f)
@@ -164,11 +159,11 @@ void rc_stats_print(const rc_stats *s, FILE *f)
             /* no NaN and no -0 on the screen: "-" where a value does not
              * exist (no separation yet, no approach to divide by) */
             char dur[16], vin[16], vout[16], e[16], el[16];
-            num_or_dash(dur, sizeof dur, "%12.6g", r->duration);
-            num_or_dash(vin, sizeof vin, "%10.4g", r->v_in);
-            num_or_dash(vout, sizeof vout, "%10.4g", r->v_out);
-            num_or_dash(e, sizeof e, "%8.4f", r->restitution);
-            num_or_dash(el, sizeof el, "%12.5g", r->energy_lost);
+            num_or_dash(dur, sizeof dur, 12, "%12.6g", r->duration);
+            num_or_dash(vin, sizeof vin, 10, "%10.4g", r->v_in);
+            num_or_dash(vout, sizeof vout, 10, "%10.4g", r->v_out);
+            num_or_dash(e, sizeof e, 8, "%8.4f", r->restitution);
+            num_or_dash(el, sizeof el, 12, "%12.5g", r->energy_lost);
             const int touch = !(r->v_in > 0);
             touching += touch;
             fprintf(f, "  %-8d %12.6g %s %12.5g %12.5g %s %s %s %s%s\n", r->inter_id, r->t_close, dur, r->pen_max,

@@ -101,6 +101,8 @@ struct rc_static {
     int *imp_k;      /* [n] the imposed translation (m->imp index) of an unknown, -1: none */
     double *imp_x0;  /* [n] its coordinate at t = 0 (the model's coordinates) [m] */
     double *imp_f;   /* [n] the unbalanced force along it at the last equilibrium [N] */
+    double *imp_u;   /* [n] the held unknowns' values in the solve under way (imp_targets; 0 but
+                        for an imposed translation) */
     double *us, *fs; /* [n] unknown and residual scales (length or angle; force or moment) */
     double *kb;      /* [nb] the summed stiffness scales of each body's contacts, F_s / p_s [N/m] */
     int *sslot;      /* [ny] the slot of the free body a state belongs to, -1: none */
@@ -224,7 +226,7 @@ static int cmp_i64(const void *a, const void *b)
 void rc_static_free(rc_static *s)
 {
     if (!s) return;
-    void *p[] = {s->fb, s->slot, s->ys, s->y, s->f, s->jv, s->held, s->imp_k, s->imp_x0, s->imp_f, s->us, s->fs, s->kb, s->bsize, s->sslot, s->brow, s->bcol, s->bfirst,
+    void *p[] = {s->fb, s->slot, s->ys, s->y, s->f, s->jv, s->held, s->imp_k, s->imp_x0, s->imp_f, s->imp_u, s->us, s->fs, s->kb, s->bsize, s->sslot, s->brow, s->bcol, s->bfirst,
                  s->colptr, s->rowind, s->ent_blk, s->ent_rc, s->raw, s->kval, s->fr_on, s->fr_t0, s->fr_pa, s->fr_pb,
                  s->fr_xa, s->fr_xb, s->ext, s->hy_on, s->hy_f0, s->hy_p0, s->hy_el, s->pe_on,
                  s->pf_on, s->pf_t0, s->pf_pa, s->pf_pb, s->pf_xa, s->pf_xb, s->pf_in, s->pf_out,
@@ -264,6 +266,7 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     s->imp_k = malloc(n1 * sizeof(int));
     s->imp_x0 = calloc(n1, sizeof(double));
     s->imp_f = calloc(n1, sizeof(double));
+    s->imp_u = calloc(n1, sizeof(double));
     s->us = calloc(n1, sizeof(double));
     s->fs = calloc(n1, sizeof(double));
     s->kb = calloc((size_t)s->nb + 1, sizeof(double));
@@ -275,7 +278,7 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     s->ent_rc = malloc(nnz1);
     int64_t *key = malloc((nnz1 + (size_t)s->nb) * sizeof(int64_t));
     char *mf = calloc((size_t)m->nbody + 1, 1);
-    if (!s->fb || !s->slot || !s->ys || !s->y || !s->f || !s->jv || !s->held || !s->imp_k || !s->imp_x0 || !s->imp_f || !s->us || !s->fs || !s->kb || !s->bsize || !s->sslot || !s->ent_blk ||
+    if (!s->fb || !s->slot || !s->ys || !s->y || !s->f || !s->jv || !s->held || !s->imp_k || !s->imp_x0 || !s->imp_f || !s->imp_u || !s->us || !s->fs || !s->kb || !s->bsize || !s->sslot || !s->ent_blk ||
         !s->ent_rc || !key || !mf) {
         free(key);
         free(mf);
@@ -1106,18 +1109,23 @@ static double imp_disp(const rc_model *m, int k, double t)
     return p->tfscale[k] * p->tascale[k] * rc_table_integral(&m->table[p->ttab[k]], 0.0, t / p->tascale[k]);
 }
 
-/* The unknowns solved for (u, reduced) into s->ufull at the load time t:
- * the held ones zero, an imposed translation's at its position at t less
- * the solve's start (s->ys). */
-static double *expand(rc_static *s, double t, const double *u)
+/* The held unknowns' values of a solve at the load time t from the start
+ * s->ys: an imposed translation's position at t less the start's. */
+static void imp_targets(rc_static *s, double t)
 {
     for (int i = 0; i < s->n; i++) {
-        s->ufull[i] = 0.0;
         const int k = s->imp_k[i];
         if (k < 0) continue;
-        const int b = s->fb[i / 6], a = s->m->body_yadr[b] + i % 6;
-        s->ufull[i] = s->imp_x0[i] + imp_disp(s->m, k, t) - s->ys[a];
+        const int a = s->m->body_yadr[s->fb[i / 6]] + i % 6;
+        s->imp_u[i] = s->imp_x0[i] + imp_disp(s->m, k, t) - s->ys[a];
     }
+}
+
+/* The unknowns solved for (u, reduced) into s->ufull, the held ones at
+ * their values (imp_targets). */
+static double *expand(rc_static *s, const double *u)
+{
+    memcpy(s->ufull, s->imp_u, (size_t)s->n * sizeof(double));
     for (int i = 0; i < s->nr; i++) s->ufull[s->full[i]] = u[i];
     return s->ufull;
 }
@@ -1126,7 +1134,7 @@ static int kin_f(N_Vector u, N_Vector r, void *user)
 {
     st_run *c = user;
     rc_static *s = c->s;
-    if (rc_static_residual(s, c->t, expand(s, c->t, N_VGetArrayPointer(u)), s->rfull)) return 1;
+    if (rc_static_residual(s, c->t, expand(s, N_VGetArrayPointer(u)), s->rfull)) return 1;
     double *rr = N_VGetArrayPointer(r);
     for (int i = 0; i < s->nr; i++) rr[i] = s->rfull[s->full[i]];
     return 0;
@@ -1136,7 +1144,7 @@ static int kin_jac(N_Vector u, N_Vector fu, SUNMatrix A, void *user, N_Vector t1
 {
     st_run *c = user;
     rc_static *s = c->s;
-    if (stiffness(s, c->t, expand(s, c->t, N_VGetArrayPointer(u)))) return 1;
+    if (stiffness(s, c->t, expand(s, N_VGetArrayPointer(u)))) return 1;
     sunindextype *cp = SUNSparseMatrix_IndexPointers(A), *ri = SUNSparseMatrix_IndexValues(A);
     double *v = SUNSparseMatrix_Data(A);
     for (int k = 0; k <= s->nr; k++) cp[k] = (sunindextype)s->rcolptr[k];
@@ -1262,6 +1270,7 @@ static st_out kin_solve(st_kin *k, st_run *c, double t)
     c->t = t;
     c->kmsg[0] = '\0';
     c->njac = 0;
+    imp_targets(c->s, t);
     N_VConst(0.0, k->u);
     if (c->s->nr == 0) {
         o.ok = 1;
@@ -1631,7 +1640,7 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                 }
                 /* the state at the solution, the friction forces of the
                  * return mapping */
-                commit_state(s, tn, expand(s, tn, N_VGetArrayPointer(k.u)), y);
+                commit_state(s, tn, expand(s, N_VGetArrayPointer(k.u)), y);
                 S->reinits += rounds > 0;
                 ch = update_modes(m, d, tn, y, ptol, ftol, &sink, flips, &S->events, err);
                 if (ch < 0) {

@@ -55,6 +55,37 @@ for bad in "--t-end -1" "--t-end abc" "--dt-out 0" "--dt-out inf" "--rtol nan" "
     if grep -q "^ricochet: ${bad%% *}: expected a" "$tmp/e" && [ ! -e "$tmp/bad_ov.nc" ]; then expect "bad_override$name" 2 $rc "($(head -1 "$tmp/e"))"
     else expect "bad_override$name" 2 99 "(exit $rc: $(head -c 160 "$tmp/e"))"; fi
 done
+# --set CARD:FIELD=VALUE: fields set by name, read as deck input before the
+# compile; recorded in the results file; a bad one is exit 2, nothing written
+"$bin" run --help | grep -q -- "--set CARD:FIELD=VALUE" && "$bin" check --help | grep -q -- "--set CARD:FIELD=VALUE" &&
+    echo "PASS cli.set_help: --set listed by run and check" || echo "FAIL cli.set_help: --set missing from a usage"
+"$bin" check "$demo" -q --set /RBODY/1:Mass=1.4837 --set=/inter/type6/1:fric=0.3719 > "$tmp/o" 2>"$tmp/e"; rc=$?
+if grep -q "/RBODY/1 *mass 1.4837 " "$tmp/o" && grep -q "/INTER/TYPE6/1 .*Fric 0.3719," "$tmp/o"; then
+    expect set_check 0 $rc "(mass 1.4837, Fric 0.3719 in the summary)"
+else expect set_check 0 99 "(exit $rc: $(grep -i 'mass\|fric' "$tmp/o" | head -c 200) $(head -c 200 "$tmp/e"))"; fi
+"$bin" run "$demo" -q -o "$tmp/set.nc" --t-end 0.05 --set /RBODY/1:Mass=1.4837 --set /INTER/TYPE6/1:Fric=0.3719 > "$tmp/o" 2>"$tmp/e"; rc=$?
+if ncdump -h "$tmp/set.nc" 2>/dev/null | grep -q ':overrides = "/RBODY/1:Mass=1.4837; /INTER/TYPE6/1:Fric=0.3719" ;'; then
+    expect set_run 0 $rc "(overrides attribute in the results file)"
+else expect set_run 0 99 "(exit $rc: $(ncdump -h "$tmp/set.nc" 2>&1 | grep overrides) $(head -c 200 "$tmp/e"))"; fi
+"$bin" run "$demo" -q -o "$tmp/noset.nc" --t-end 0.01 > /dev/null 2>&1
+ncdump -h "$tmp/noset.nc" 2>/dev/null | grep -q ":overrides" && echo "FAIL cli.set_none: overrides attribute without --set" ||
+    echo "PASS cli.set_none: no overrides attribute without --set"
+"$bin" run "$demo" -o "$tmp/bad_set.nc" --set /INTER/TYPE6/1:Fric=abc > "$tmp/e" 2>&1; rc=$?
+if grep -qx 'ricochet: input error: --set /INTER/TYPE6/1:Fric=abc: card /INTER/TYPE6/1, field Fric: expected a finite real number, got "abc"' "$tmp/e" &&
+   [ ! -e "$tmp/bad_set.nc" ]; then expect set_bad_value 2 $rc "($(head -1 "$tmp/e"))"
+else expect set_bad_value 2 99 "(exit $rc: $(head -c 200 "$tmp/e"))"; fi
+for bad in "/RBODY/9:Mass=1|no card /RBODY/9 in the deck" "/RBODY/1:Mas=1|no numeric field Mas: did you mean Mass?" \
+           "/GRAV/1:DIR=X|a text field" "/RBODY/1:Mass|expected /KEYWORD"; do
+    "$bin" check "$demo" --set "${bad%%|*}" > "$tmp/e" 2>&1; rc=$?
+    name=$(echo "${bad%%|*}" | tr -c 'A-Za-z0-9\n' '_')
+    grep -q "^ricochet: input error: --set ${bad%%|*}: .*${bad#*|}" "$tmp/e" && expect "set_error$name" 2 $rc "($(head -1 "$tmp/e"))" ||
+        expect "set_error$name" 2 99 "(exit $rc: $(head -c 200 "$tmp/e"))"
+done
+"$bin" check "$demo" --set /RBODY/1:Mass=2 --set /RBODY/1:MASS=3 > "$tmp/e" 2>&1; rc=$?
+grep -q "^ricochet: input error: --set /RBODY/1:MASS=3: card /RBODY/1, field MASS: set twice (also by --set /RBODY/1:Mass=2)" "$tmp/e" &&
+    expect set_twice 2 $rc "($(head -1 "$tmp/e"))" || expect set_twice 2 99 "(exit $rc: $(head -c 200 "$tmp/e"))"
+"$bin" check "$demo" --set > "$tmp/e" 2>&1; rc=$?
+grep -q "^ricochet: --set: expected CARD:FIELD=VALUE" "$tmp/e" && expect set_missing 2 $rc "" || expect set_missing 2 99 "(exit $rc: $(head -c 200 "$tmp/e"))"
 # the integration backend: --method ida runs the demo on IDA (the file says
 # so, the same impacts happen); a bad name and cvode on a model with joints
 # are input errors

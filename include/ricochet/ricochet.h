@@ -102,6 +102,22 @@ typedef struct rc_case rc_case;
  * that is not a regular file) or RC_EIO (the case file cannot be opened or
  * read), fills *err, sets *out to NULL. */
 rc_status rc_case_load(const char *path, rc_case **out, rc_error *err);
+/* rc_case_load with fields set by name, as `ricochet run --set`: each of
+ * the `nset` strings of `set` is "/KEYWORD/.../ID:FIELD=VALUE" (or
+ * FIELD[k]=VALUE for the k-th occurrence of a field the card repeats),
+ * e.g. "/INTER/TYPE6/1:Fric=0.3". The VALUE replaces the text of that
+ * numeric field of that card as the card is read, and is then read as deck
+ * input: same parser, defaults, range checks and conversion from the
+ * card's units to SI (docs/case-format.md, "Setting fields from the
+ * command line"). Card keywords and field names are matched ignoring case.
+ * RC_EINPUT, nothing loaded, with a message starting "--set ARG: " for a
+ * malformed string, a card not in the deck (or matched by two cards), a
+ * field the card does not have or does not read as a number, a field set
+ * twice, and a value the field refuses. `set` may be NULL when nset is 0
+ * (then it is rc_case_load); nset < 0 or a NULL string is RC_EINPUT. The
+ * strings are read during the call only; the case keeps the list for the
+ * results file (global attribute `overrides`). */
+rc_status rc_case_load_set(const char *path, const char *const *set, int nset, rc_case **out, rc_error *err);
 void rc_case_free(rc_case *c); /* NULL is a no-op */
 /* The files the case was read from: 0 is the case file, then every file it
  * includes, in reading order. NULL when i is out of range or c is NULL

@@ -167,7 +167,7 @@ static int rc_kw_distance(const char *a, const char *b)
 
 /* The one candidate within the typo distance of word (1 for words up to
  * 4 letters, else 2), or NULL (none, or two equally close). */
-static const char *rc_kw_closest(const char *word, const char *const *cand, int n)
+const char *rc_kw_closest(const char *word, const char *const *cand, int n)
 {
     const int lim = strlen(word) <= 4 ? 1 : 2;
     const char *best = NULL;

@@ -299,6 +299,8 @@ struct rc_case {
     char unit_mass[21], unit_length[21], unit_time[21]; /* from /BEGIN, "" if absent */
     unsigned long checksum; /* FNV-1a 64 of the main file's bytes */
     int invers;          /* Radioss input version from /BEGIN (e.g. 2022, 140, 90); 0: none */
+    char *overrides;     /* the --set arguments applied, "ARG; ARG" as given
+                            (rc_case_load_set); NULL: none */
 
     int nfiles; char **files; /* every file read (main + includes); rc_loc.file points here */
     unsigned long long *file_id; /* [2*nfiles] device and inode of each file as it was read

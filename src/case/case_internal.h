@@ -77,6 +77,25 @@ typedef struct rc_id_entry {
     const char *card;     /* header text (valid while the reader lives) */
 } rc_id_entry;
 
+/* One --set override (override.c): "/KEYWORD/.../ID:FIELD[k]=VALUE". The
+ * value replaces the deck's text of the field when the card's data line is
+ * parsed (rc_parse_line), which then parses, checks and converts it as deck
+ * input. */
+typedef struct rc_override {
+    const char *arg;      /* the argument as given (the caller's, for messages) */
+    char kw[3][24];       /* the card's keywords, upper case                */
+    int nkw, id, has_id;  /* and its id (as in a deck header)               */
+    char field[32];       /* the field's name as given (matched ignoring case) */
+    int index;            /* k of FIELD[k]: the k-th occurrence in the card
+                             (1-based); 0: the field's only occurrence      */
+    const char *val;      /* the value's text, blanks trimmed (in arg)      */
+    int nval;
+    int in_card;          /* the card being read is the one addressed       */
+    int ncards;           /* cards of the deck that it addresses            */
+    int seen;             /* occurrences of the field in the card           */
+    int absent;           /* occurrences on lines the deck's card lacks     */
+} rc_override;
+
 /* The reader's state. The case being filled is `c`; capacities of its
  * arrays are kept here. */
 typedef struct rc_reader {
@@ -119,6 +138,15 @@ typedef struct rc_reader {
     struct { char kw[24]; int warning, count; } skipped[64]; /* cards skipped
                                                  with one warning per kind */
     int nskipped;
+    /* --set overrides (override.c) */
+    rc_override *ovr; int novr;
+    const rc_block *ovr_block;                /* the card being read, when an
+                                                 override addresses it       */
+    char ovr_names[512];                      /* its numeric fields so far, for
+                                                 messages: "A, B, C"         */
+    const char *set_arg;                      /* the --set argument whose value
+                                                 is being parsed: messages start
+                                                 "--set ARG" (not file:line) */
 } rc_reader;
 
 /* ---- Field tables ----------------------------------------------------- */
@@ -177,7 +205,8 @@ typedef struct rc_field {
 /* ---- Reader services (fields.c) ---------------------------------------- */
 
 /* Record an input error "FILE:LINE: card C, field F: msg" (card and field
- * may be NULL) and return RC_EINPUT. */
+ * may be NULL; "--set ARG" instead of FILE:LINE while rd->set_arg is set)
+ * and return RC_EINPUT. */
 rc_status rc_case_fail(rc_reader *rd, const rc_loc *loc, const char *card,
                        const char *field, const char *fmt, ...)
     __attribute__((format(printf, 5, 6)));
@@ -264,6 +293,10 @@ int rc_layout_known(int v);
 /* How a card's header carries numbers. */
 typedef enum { RC_ID_NONE, RC_ID_REQUIRED, RC_ID_OPTIONAL, RC_ID_UNIT } rc_id_mode;
 
+/* Parse the header text b->hdr->text, "/KW[/SUB]/id[/unit_id]", into b:
+ * keywords (upper case), id, unit id, b->name; a malformed header sets
+ * b->bad (why). */
+void rc_parse_header(rc_block *b);
 /* Check the header of a card with `nkw` keywords: id and unit id. */
 rc_status rc_header(rc_reader *rd, const rc_block *b, int nkw, rc_id_mode mode,
                     const char *idname, const char *usage);
@@ -345,5 +378,23 @@ rc_status rc_cards_mesh_finish(rc_reader *rd);
 
 /* Read one block: dispatch on its keyword. */
 rc_status rc_card_dispatch(rc_reader *rd, const rc_block *b);
+/* The one candidate within the typo distance of word (1 for words up to 4
+ * letters, else 2; compared as written), or NULL (none, or two as close). */
+const char *rc_kw_closest(const char *word, const char *const *cand, int n);
+
+/* ---- --set overrides (override.c) -------------------------------------- */
+
+/* Parse the arguments "/KEYWORD/.../ID:FIELD[k]=VALUE" into rd->ovr (the
+ * strings must outlive the reading); a malformed one or a field set twice
+ * is an input error naming it. */
+rc_status rc_override_parse(rc_reader *rd, const char *const *set, int nset);
+/* Around the reading of block b: mark the overrides that address it; then
+ * check that each found its field once (`clean`: the card was read without
+ * an error, so all its fields were seen). */
+void rc_override_card_begin(rc_reader *rd, const rc_block *b);
+rc_status rc_override_card_end(rc_reader *rd, const rc_block *b, int clean);
+/* After the last card: every override addressed one card of the deck; the
+ * list "ARG; ARG" into c->overrides. */
+rc_status rc_override_finish(rc_reader *rd);
 
 #endif

@@ -3,7 +3,9 @@
  * error and warning messages with file:line, growable arrays, block and
  * title helpers, number and field parsing (the field tables of
  * case_internal.h), card headers and their unit systems, layouts by
- * version, the conversion of values to SI, duplicate-id notes. It calls
+ * version, the conversion of values to SI, duplicate-id notes, and the
+ * place where a --set override's text replaces the deck's (rc_parse_line;
+ * the overrides themselves are parsed and checked in override.c). It calls
  * only units.c in the stage (reader.c reads the files and blocks, cards.c
  * dispatches them to the card families cards_*.c).
  */
@@ -38,14 +40,15 @@ rc_status rc_case_fail(rc_reader *rd, const rc_loc *loc, const char *card, const
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
 
-    /* "FILE:LINE: card C, field F: msg", parts present when given */
-    const char *file = loc && loc->file ? loc->file : "?";
-    int line = loc ? loc->line : 0;
+    /* "FILE:LINE: card C, field F: msg", parts present when given; a value
+     * of a --set argument is blamed on the argument, not on the deck */
     char full[2048];
-    if (card && field)
-        snprintf(full, sizeof full, "%s:%d: card %s, field %s: %s", file, line, card, field, msg);
-    else if (card) snprintf(full, sizeof full, "%s:%d: card %s: %s", file, line, card, msg);
-    else snprintf(full, sizeof full, "%s:%d: %s", file, line, msg);
+    const int w = rd->set_arg ? snprintf(full, sizeof full, "--set %.400s", rd->set_arg)
+                              : snprintf(full, sizeof full, "%s:%d", loc && loc->file ? loc->file : "?", loc ? loc->line : 0);
+    const size_t k = w < 0 ? 0 : (size_t)w < sizeof full ? (size_t)w : sizeof full - 1;
+    if (card && field) snprintf(full + k, sizeof full - k, ": card %s, field %s: %s", card, field, msg);
+    else if (card) snprintf(full + k, sizeof full - k, ": card %s: %s", card, msg);
+    else snprintf(full + k, sizeof full - k, ": %s", msg);
     /* the first error is the report; the next ones (up to RC_CASE_MAX_ERRORS)
      * are kept for the end of the reading */
     if (rd->nerrors++ == 0) return RC_SET(rd->err, RC_EINPUT, "%s", full);
@@ -452,18 +455,77 @@ static rc_status rc_split_comma(rc_reader *rd, const rc_block *b, const rc_line 
     return RC_OK;
 }
 
+/* Add a field's name to rd->ovr_names (once; silently full). */
+static void rc_name_note(rc_reader *rd, const char *name)
+{
+    char *l = rd->ovr_names;
+    const size_t n = strlen(name), have = strlen(l);
+    for (const char *p = l; (p = strstr(p, name)); p += n)
+        if ((p == l || p[-1] == ' ') && (p[n] == ',' || p[n] == '\0')) return;
+    if (have + n + 3 < sizeof rd->ovr_names) snprintf(l + have, sizeof rd->ovr_names - have, "%s%s", have ? ", " : "", name);
+}
+
+/* --set overrides of one line of the card rd->ovr_block (override.c): each
+ * field that an override names (FIELD: its only occurrence in the card,
+ * FIELD[k]: the k-th) takes the override's text; from[k] is the override's
+ * index, -1 for the deck's text. The defaults of lines the deck's card
+ * lacks (an optional line, an older version's layout) are no text to
+ * replace: counted apart, for the message. */
+static rc_status rc_override_fields(rc_reader *rd, const rc_block *b, const rc_line *ln, const rc_field *f,
+                                    int nf, const char **st, int *sn, int *from)
+{
+    const int real = ln->loc.file != NULL;
+    for (int k = 0; k < nf; k++) {
+        if (f[k].type == RC_FT_SKIP) continue;
+        if (real && f[k].type != RC_FT_STR && f[k].out) rc_name_note(rd, f[k].name);
+        for (int i = 0; i < rd->novr; i++) {
+            rc_override *o = &rd->ovr[i];
+            if (!o->in_card || strcasecmp(o->field, f[k].name) != 0) continue;
+            if (!real) {
+                o->absent++;
+                continue;
+            }
+            if (++o->seen != (o->index ? o->index : 1)) continue;
+            /* a number that the card uses, set once */
+            rc_status s = RC_OK;
+            rd->set_arg = o->arg;
+            if (f[k].type == RC_FT_STR)
+                s = RC_FIELD_FAIL(rd, b, ln, &f[k], "a text field: --set sets numeric fields only (integers and reals)");
+            else if (!f[k].out)
+                s = RC_FIELD_FAIL(rd, b, ln, &f[k], "read but not used by ricochet: setting it would change nothing");
+            else if (from[k] >= 0)
+                s = RC_FIELD_FAIL(rd, b, ln, &f[k], "set twice (also by --set %s)", rd->ovr[from[k]].arg);
+            rd->set_arg = NULL;
+            if (s) return s;
+            from[k] = i;
+            st[k] = o->val;
+            sn[k] = o->nval;
+        }
+    }
+    return RC_OK;
+}
+
 rc_status rc_parse_line(rc_reader *rd, const rc_block *b, const rc_line *ln, rc_field *f, int nf)
 {
     const char *st[RC_MAX_FIELDS];
-    int sn[RC_MAX_FIELDS];
+    int sn[RC_MAX_FIELDS], from[RC_MAX_FIELDS];
     rc_status s;
     if (nf > RC_MAX_FIELDS) return RC_SET(rd->err, RC_EINTERNAL, "too many fields in a layout");
     /* a comma anywhere selects the free format */
     if (memchr(ln->text, ',', (size_t)ln->len)) s = rc_split_comma(rd, b, ln, nf, st, sn);
     else s = rc_split_fixed(rd, b, ln, f, nf, st, sn);
     if (s) return s;
-    for (int k = 0; k < nf; k++)
-        if ((s = rc_parse_field(rd, b, ln, &f[k], st[k], sn[k]))) return s;
+    /* the texts of --set overrides replace the deck's */
+    for (int k = 0; k < nf; k++) from[k] = -1;
+    if (rd->ovr_block == b && (s = rc_override_fields(rd, b, ln, f, nf, st, sn, from))) return s;
+    /* each field parsed, defaulted, checked and converted alike: a message
+     * about an override's value names its argument */
+    for (int k = 0; k < nf; k++) {
+        rd->set_arg = from[k] >= 0 ? rd->ovr[from[k]].arg : NULL;
+        s = rc_parse_field(rd, b, ln, &f[k], st[k], sn[k]);
+        rd->set_arg = NULL;
+        if (s) return s;
+    }
     return RC_OK;
 }
 
@@ -506,6 +568,49 @@ rc_status rc_note_id(rc_reader *rd, rc_id_kind kind, int id, const rc_loc *loc, 
 /* ======================================================================
  * Card headers and variable-length cards
  * ====================================================================== */
+
+/* Parse "/KW[/SUB]/id[/unit_id]" into b: keywords (upper case), id, unit
+ * id. A malformed header is an error unless the card is ignored, so the
+ * problem is recorded in b->bad for the dispatcher. */
+void rc_parse_header(rc_block *b)
+{
+    const char *p = b->hdr->text + 1;
+    const char **bad = &b->bad;
+    int nnum = 0;
+    *bad = NULL;
+    snprintf(b->name, sizeof b->name, "%s", b->hdr->text);
+    for (;;) {
+        /* one token between slashes, blanks around it ignored */
+        const char *e = strchr(p, '/');
+        if (!e) e = p + strlen(p);
+        const char *s = p, *t = e;
+        while (s < t && *s == ' ') s++;
+        while (t > s && t[-1] == ' ') t--;
+        size_t n = (size_t)(t - s), nd = strspn(s, "0123456789");
+        if (n == 0 && !*e && p > b->hdr->text + 1) break; /* a trailing '/' */
+        if (n == 0) { *bad = "empty keyword between two '/'"; return; }
+        if (nd >= n) {
+            /* numeric: id, then unit id */
+            long long v = 0;
+            for (size_t i = 0; i < n && v <= INT_MAX; i++) v = 10 * v + (s[i] - '0');
+            if (v > INT_MAX) { *bad = "id larger than 2147483647"; return; }
+            if (nnum == 0) { b->id = (int)v; b->has_id = 1; }
+            else if (nnum == 1) b->unit_id = (int)v;
+            else { *bad = "more than two numbers (id and unit_ID)"; return; }
+            nnum++;
+        } else {
+            /* keyword: before any number */
+            if (nnum) { *bad = "keyword after the id"; return; }
+            if (b->nkw == 3) { *bad = "more than three keywords"; return; }
+            if (n >= sizeof b->kw[0]) { *bad = "keyword too long"; return; }
+            for (size_t i = 0; i < n; i++)
+                b->kw[b->nkw][i] = (char)toupper((unsigned char)s[i]);
+            b->nkw++;
+        }
+        if (!*e) break;
+        p = e + 1;
+    }
+}
 
 /* Check the header of a card with `nkw` keywords: id and unit id. */
 rc_status rc_header(rc_reader *rd, const rc_block *b, int nkw, rc_id_mode mode,

@@ -335,49 +335,6 @@ static rc_status rc_lex_file(rc_reader *rd, const char *path, const rc_loc *inc)
  * Blocks (pass 2)
  * ====================================================================== */
 
-/* Parse "/KW[/SUB]/id[/unit_id]" into b: keywords (upper case), id, unit
- * id. A malformed header is an error unless the card is ignored, so the
- * problem is recorded in b->bad for the dispatcher. */
-static void rc_parse_header(rc_block *b)
-{
-    const char *p = b->hdr->text + 1;
-    const char **bad = &b->bad;
-    int nnum = 0;
-    *bad = NULL;
-    snprintf(b->name, sizeof b->name, "%s", b->hdr->text);
-    for (;;) {
-        /* one token between slashes, blanks around it ignored */
-        const char *e = strchr(p, '/');
-        if (!e) e = p + strlen(p);
-        const char *s = p, *t = e;
-        while (s < t && *s == ' ') s++;
-        while (t > s && t[-1] == ' ') t--;
-        size_t n = (size_t)(t - s), nd = strspn(s, "0123456789");
-        if (n == 0 && !*e && p > b->hdr->text + 1) break; /* a trailing '/' */
-        if (n == 0) { *bad = "empty keyword between two '/'"; return; }
-        if (nd >= n) {
-            /* numeric: id, then unit id */
-            long long v = 0;
-            for (size_t i = 0; i < n && v <= INT_MAX; i++) v = 10 * v + (s[i] - '0');
-            if (v > INT_MAX) { *bad = "id larger than 2147483647"; return; }
-            if (nnum == 0) { b->id = (int)v; b->has_id = 1; }
-            else if (nnum == 1) b->unit_id = (int)v;
-            else { *bad = "more than two numbers (id and unit_ID)"; return; }
-            nnum++;
-        } else {
-            /* keyword: before any number */
-            if (nnum) { *bad = "keyword after the id"; return; }
-            if (b->nkw == 3) { *bad = "more than three keywords"; return; }
-            if (n >= sizeof b->kw[0]) { *bad = "keyword too long"; return; }
-            for (size_t i = 0; i < n; i++)
-                b->kw[b->nkw][i] = (char)toupper((unsigned char)s[i]);
-            b->nkw++;
-        }
-        if (!*e) break;
-        p = e + 1;
-    }
-}
-
 /* A Radioss starter file NAME_0000.rad: read its engine file
  * NAME_0001.rad next to it, when it exists, after it (a warning says so). */
 static rc_status rc_lex_engine(rc_reader *rd, const char *path)
@@ -418,10 +375,16 @@ static int rc_block_is(const rc_block *b, const char *kw)
 static rc_status rc_read_one(rc_reader *rd, const rc_block *b)
 {
     rc_status st;
+    const int nerrors = rd->nerrors;
     rd->cur_units = rd->begin_units; /* until the card's header says otherwise */
+    rc_override_card_begin(rd, b);   /* the --set overrides that address it */
     if (b->bad && b->nkw == 0)
         st = rc_case_fail(rd, &b->hdr->loc, b->name, NULL, "malformed card header: %s", b->bad);
     else st = rc_card_dispatch(rd, b);
+    /* each override of the card found its field (when the card was read
+     * whole) */
+    const rc_status so = rc_override_card_end(rd, b, st == RC_OK && rd->nerrors == nerrors);
+    if (st == RC_OK) st = so;
     if (st != RC_EINPUT) return st;
     return rd->nerrors > RC_CASE_MAX_ERRORS ? RC_EINPUT : RC_OK;
 }
@@ -571,9 +534,15 @@ static void rc_reader_release(rc_reader *rd)
     free(rd->lines);
     for (int k = 0; k < RC_IDK_COUNT; k++) free(rd->ids[k]);
     free(rd->units);
+    free(rd->ovr);
 }
 
 rc_status rc_case_load(const char *path, rc_case **out, rc_error *err)
+{
+    return rc_case_load_set(path, NULL, 0, out, err);
+}
+
+rc_status rc_case_load_set(const char *path, const char *const *set, int nset, rc_case **out, rc_error *err)
 {
     rc_reader rd;
     rc_status st;
@@ -581,6 +550,11 @@ rc_status rc_case_load(const char *path, rc_case **out, rc_error *err)
     if (out) *out = NULL;
     if (!out) RC_RAISE(err, RC_EINPUT, "rc_case_load: out is NULL; expected where to store the case");
     if (!path) RC_RAISE(err, RC_EINPUT, "rc_case_load: the path is NULL; expected a case file name");
+    if (nset < 0 || (nset > 0 && !set))
+        RC_RAISE(err, RC_EINPUT, "rc_case_load_set: %s; expected nset >= 0 strings in set",
+                 nset < 0 ? "nset is negative" : "set is NULL");
+    for (int i = 0; i < nset; i++)
+        if (!set[i]) RC_RAISE(err, RC_EINPUT, "rc_case_load_set: set[%d] is NULL; expected \"CARD:FIELD=VALUE\"", i);
     rd.err = err;
     rd.begin_units[0] = rd.begin_units[1] = rd.begin_units[2] = 1.0;
     rd.cur_units = rd.begin_units;
@@ -588,6 +562,11 @@ rc_status rc_case_load(const char *path, rc_case **out, rc_error *err)
     if (!(rd.c = calloc(1, sizeof *rd.c))) RC_RAISE(err, RC_ENOMEM, "out of memory");
     rc_cards_defaults(rd.c);
     if (!(rd.c->path = strdup(path))) { st = rc_case_nomem(&rd); goto fail; }
+    /* the --set overrides, checked before any file is read */
+    if ((st = rc_override_parse(&rd, set, nset))) {
+        if (st == RC_EINPUT) rc_case_report(&rd);
+        goto fail;
+    }
 
     /* pass 1: lines of every file; pass 2: cards; pass 3: deck checks.
      * Input errors of cards are counted and the reading goes on, so that up
@@ -600,6 +579,8 @@ rc_status rc_case_load(const char *path, rc_case **out, rc_error *err)
     st = rc_read_blocks(&rd); /* its own progress stage */
     rc_progress_done();
     if (st) goto report;
+    /* every override found its card (when every card was read) */
+    if (rd.nerrors <= RC_CASE_MAX_ERRORS && (st = rc_override_finish(&rd)) && st != RC_EINPUT) goto fail;
     rc_progress_stage("checking ids, groups and the mesh");
     if ((st = rc_check_dups(&rd)) && st != RC_EINPUT) goto fail;
     if (rd.nerrors <= RC_CASE_MAX_ERRORS && (st = rc_cards_finish(&rd)) && st != RC_EINPUT) goto fail;
@@ -627,6 +608,7 @@ void rc_case_free(rc_case *c)
 {
     if (!c) return;
     free(c->path);
+    free(c->overrides);
     for (int i = 0; i < c->nfiles; i++) free(c->files[i]);
     free(c->files);
     free(c->file_id);

@@ -8,13 +8,17 @@
 
 #include "ricochet/ricochet.h"
 
+/* --set options on one command line (docs/case-format.md) */
+#define RC_CLI_MAX_SET 256
+
 static void usage(FILE *f)
 {
     fprintf(f,
             "usage: ricochet run CASE [-o OUT.nc] [-q] [--t-end T] [--dt-out DT] [--rtol R] [--method M]\n"
-            "                         [--preload | --no-preload] [--on-violation stop|warn]\n"
+            "                         [--preload | --no-preload] [--on-violation stop|warn] [--set CARD:FIELD=VALUE]...\n"
             "                                            run a case, write results (default: CASE stem + .nc)\n"
-            "       ricochet check CASE                  read and compile a case, print the model summary\n"
+            "       ricochet check CASE [--set CARD:FIELD=VALUE]...\n"
+            "                                            read and compile a case, print the model summary\n"
             "       ricochet export-vtk RESULTS.nc [-o DIR] [--dt T]  ParaView files (.pvd + .vtp)\n"
             "       ricochet COMMAND --help              the options of a command\n"
             "       ricochet --help | --version\n"
@@ -48,6 +52,12 @@ static void usage_run(FILE *f)
             "                 passing through each other, non-finite values): stop ends the run there with exit\n"
             "                 code 5, warn records it (results file, summary, stderr) and goes on; default: the\n"
             "                 deck's /RUN On_viol, else stop\n"
+            "  --set CARD:FIELD=VALUE\n"
+            "                 set a numeric field of a card by its name, as if VALUE were typed into the deck\n"
+            "                 (the card's units, its checks and defaults; repeatable), e.g.\n"
+            "                 --set /INTER/TYPE6/1:Fric=0.3 --set /RBODY/2:Mass=1.5; FIELD[k] for the k-th\n"
+            "                 occurrence of a field the card repeats; names in any case (docs/case-format.md,\n"
+            "                 \"Setting fields from the command line\"); recorded in the results file (overrides)\n"
             "  -h, --help     this text\n"
             "T, DT and R are positive finite numbers (R below 1); T and DT in seconds (SI, as the deck is\n"
             "read: a deck naming its units is converted to SI; one naming none is used as written); T / DT\n"
@@ -71,6 +81,9 @@ static void usage_check(FILE *f)
             "state size, solver settings); warnings of the reading on stderr. Nothing is run.\n"
             "options:\n"
             "  -q             no progress of the long stages on stderr\n"
+            "  --set CARD:FIELD=VALUE\n"
+            "                 set a numeric field of a card by its name, as if VALUE were typed into the deck\n"
+            "                 (repeatable; as for run)\n"
             "  -h, --help     this text\n"
             "exit codes: 0 the case is valid, 2 input error (file:line, card and field), 4 I/O error\n");
 }
@@ -117,10 +130,11 @@ static int fail(const rc_error *e)
     return rc_status_exit_code(e->code);
 }
 
-/* Load and compile; prints the error and returns its exit code on failure. */
-static int load(const char *path, rc_case **c, rc_model **m, rc_error *e)
+/* Load (with the --set overrides) and compile; prints the error and returns
+ * its exit code on failure. */
+static int load(const char *path, const char *const *set, int nset, rc_case **c, rc_model **m, rc_error *e)
 {
-    if (rc_case_load(path, c, e)) return fail(e);
+    if (rc_case_load_set(path, set, nset, c, e)) return fail(e);
     for (int i = 0; i < rc_case_warning_count(*c); i++)
         fprintf(stderr, "ricochet: warning: %s\n", rc_case_warning(*c, i));
     if (rc_model_compile(*c, m, e)) return fail(e);
@@ -237,7 +251,8 @@ int main(int argc, char **argv)
         usage(stderr);
         return 2;
     }
-    int quiet = 0, method = 0, on_violation = 0, preload = -1;
+    int quiet = 0, method = 0, on_violation = 0, preload = -1, nset = 0;
+    const char *set[RC_CLI_MAX_SET]; /* the --set arguments, in order */
     double t_end = 0.0, dt_out = 0.0, rtol = 0.0;
     for (int k = 2; k < argc; k++) {
         const char *a = argv[k];
@@ -273,6 +288,19 @@ int main(int argc, char **argv)
                 fprintf(stderr, "ricochet: --on-violation: expected stop or warn, got %s\n", v ? v : "nothing");
                 return 2;
             }
+            continue;
+        }
+        if (!strncmp(a, "--set=", 6) || !strcmp(a, "--set")) {
+            const char *v = a[5] == '=' ? a + 6 : (k + 1 < argc ? argv[++k] : NULL);
+            if (!v) {
+                fprintf(stderr, "ricochet: --set: expected CARD:FIELD=VALUE (e.g. /INTER/TYPE6/1:Fric=0.3)\n");
+                return 2;
+            }
+            if (nset == RC_CLI_MAX_SET) {
+                fprintf(stderr, "ricochet: --set %s: at most %d --set options\n", v, RC_CLI_MAX_SET);
+                return 2;
+            }
+            set[nset++] = v;
             continue;
         }
         if (is_run && (!strcmp(a, "--preload") || !strcmp(a, "--no-preload"))) {
@@ -313,7 +341,7 @@ int main(int argc, char **argv)
     rc_model *m = NULL;
     rc_error e;
     memset(&e, 0, sizeof e);
-    int rc = load(case_path, &c, &m, &e);
+    int rc = load(case_path, set, nset, &c, &m, &e);
     /* overrides, after the compile: the derived tolerances follow --rtol */
     if (rc == 0 && rtol > 0 && rc_model_set_rtol(m, rtol, &e)) rc = fail(&e);
     if (rc == 0 && preload == 0 && rc_model_set_preload(m, 0, &e)) rc = fail(&e);

@@ -671,6 +671,10 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
         goto fail;
     }
     strcpy(m->case_path, c->path);
+    if (c->overrides && !(m->overrides = strdup(c->overrides))) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory");
+        goto fail;
+    }
     m->end_loc = rc_loc_or(c->end, (rc_loc){c->path, 1});
     /* the files read, for the results file's checksums */
     m->nfile = rc_case_file_count(c);
@@ -902,7 +906,7 @@ void rc_model_free(rc_model *m)
     free(m->file);
     free(m->file_id);
     rc_seg_free(m);
-    void *arrays[] = {m->case_path, m->table, m->body_id, m->body_fixed, m->body_yadr, m->body_mass,
+    void *arrays[] = {m->case_path, m->overrides, m->table, m->body_id, m->body_fixed, m->body_yadr, m->body_mass,
                       m->body_J, m->body_Jinv, m->body_y0, m->body_grav, m->body_dofmask, m->surf_id, m->surf_kind,
                       m->surf_body, m->surf_p, m->surf_n, m->surf_r, m->inter_id, m->inter_pair,
                       m->inter_sa, m->inter_sb, m->inter_ba, m->inter_bb, m->inter_gap,

@@ -178,6 +178,7 @@ typedef struct rc_jblock {
 struct rc_model {
     /* provenance */
     char *case_path;
+    char *overrides;     /* the --set arguments read with the case, "ARG; ARG" (NULL: none) */
     rc_loc end_loc;      /* the deck's end (rc_case.end): place of deck-level messages */
     char title[101];
     char unit_mass[21], unit_length[21], unit_time[21];

@@ -615,6 +615,9 @@ static rc_status define_provenance(rc_output *o, const rc_output_meta *meta, rc_
     }
     if (rc == RC_OK) rc = put_text(o, NC_GLOBAL, "input_files_sha256", list, err);
     free(list);
+    /* the fields set from outside the deck (--set) */
+    if (rc == RC_OK && meta->overrides && *meta->overrides)
+        rc = put_text(o, NC_GLOBAL, "overrides", meta->overrides, err);
     return rc;
 }
 

@@ -45,6 +45,8 @@ typedef struct rc_output_meta {
      * hashed with SHA-256 at open; NULL/0: the case_path alone */
     int nfile;
     const char *const *file;
+    const char *overrides;    /* the --set arguments, "ARG; ARG" (NULL: none;
+                                 global attribute overrides) */
     /* every solver setting */
     int max_order;            /* BDF order limit [-]                       */
     long max_steps;           /* steps between two output times [-]        */

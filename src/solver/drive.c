@@ -325,6 +325,7 @@ rc_status rc_bk_open_output(const rc_model *m, const char *path, const char *not
     /* provenance, every solver setting, the surfaces */
     meta.nfile = m->nfile;
     meta.file = (const char *const *)m->file;
+    meta.overrides = m->overrides;
     meta.max_order = m->max_order;
     meta.max_steps = m->max_steps;
     meta.hmax = m->hmax;

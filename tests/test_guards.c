@@ -193,11 +193,14 @@ static void test_guards_channel_decrease_fires(void)
                                             "energy_friction of /INTER/TYPE6/1"};
         double *v = b.y + m->body_yadr[0] + 9;
         *v = -1.0; /* moving down at 1 m/s */
+        /* the hysteresis of an elastic law with a damper is the energy
+         * lost at its releases, kept by the events (rc_data.inter_hacc) */
+        double *acc = ch == 1 && rc_inter_release_ledger(m, 0) ? b.d->inter_hacc : b.y + idx[ch];
         ENSURE(bench_record(&b, 0.0) == 0); /* the baseline */
-        b.y[idx[ch]] += 0.01; /* 0.01 J dissipated from the kinetic energy: fine */
+        *acc += 0.01; /* 0.01 J dissipated from the kinetic energy: fine */
         *v = -sqrt(1.0 - 2 * 0.01);
         ENSURE(bench_record(&b, 0.001) == 0);
-        b.y[idx[ch]] -= 0.02; /* 0.02 J back: a dissipation running backwards */
+        *acc -= 0.02; /* 0.02 J back: a dissipation running backwards */
         ENSURE(bench_record(&b, 0.002) == 1);
         const char *msg = rc_guards_message(b.g);
         printf("    %s\n", msg);

@@ -782,6 +782,145 @@ static void test_contact_records_bounded(void)
     rc_model_free(m);
 }
 
+
+/* ---- a falling limit: the slip goes on until the spring outruns it ---- */
+/* A ball (1 kg, R = 0.05 m) pressed into a floor by p = 1e-5 m (linear law
+ * 1e6 N/m: F_n = 10 N), Fric 0.3 (limit 3 N), stick stiffness Stiff 1e7
+ * N/m, slipping with its friction state 1.2 times the limit along +x and a
+ * sliding velocity along it, v_x = 1e-4 m/s (v_t . e > 0). Lifting at
+ * v_z = 0.01 m/s, its limit falls at mu k v_z = 3e3 N/s, faster than the
+ * spring unloads (K_t v_x = 1e3 N/s): the slip root v_t . e - (-dL/dt) / K_t
+ * stays negative (it slides on), where v_t . e = 0 alone called for a stick
+ * that the falling limit broke 1e-10 s later (a box lifting off a belt:
+ * Zeno). Pressing down instead (v_z < 0, a rising limit) the root is v_t . e.
+ * Either way the spring sliding along its force unloads as a spring,
+ * dF_t/dt = -K_t v_t, and the law dissipates (docs/theory.md 3.5). */
+static const char *slip_limit_deck =
+    "/BEGIN\nball on a floor, slipping\n      2022         0\n"
+    "                  kg                   m                   s\n"
+    "                  kg                   m                   s\n"
+    "/FUNCT/1\nlinear\n0,0\n1,1000000\n"
+    "/NODE\n1,0,0,0.05\n"
+    "/RBODY/1\nball\n1,,,,1,1\n0.001,0.001,0.001\n0,0,0\n"
+    "/SURF/ELLIPS/1\nball\n0,2,1\n0,0,0.05\n0.05,0.05,0.05\n"
+    "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
+    "/GRNOD/NODE/1\nball\n1\n"
+    "/INTER/TYPE6/1\nball on floor\n1,2\n0,0.3\n\n1,0\n0,,10000000\n\n"
+    "/RUN\n0.01,0.001\n/END\n";
+
+static void test_slip_waits_for_a_falling_limit(void)
+{
+    rc_model *m = TU_COMPILE_OK(slip_limit_deck, "slip_limit.rad");
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double)), *yd = calloc((size_t)m->ny, sizeof(double));
+    ENSURE(d && y && yd && m->ninter == 1 && m->inter_fr[0].tidx >= 0);
+    if (!d || !y || !yd) goto out;
+    rc_initial_state(m, y);
+    const double kt = m->inter_fr[0].kt, vx = 1e-4;
+    double *yb = y + m->body_yadr[0], *ft = y + m->inter_eadr[0] + m->inter_fr[0].tidx;
+    yb[2] = 0.05 - 1e-5; /* 1e-5 m into the floor */
+    yb[7] = vx;
+    d->inter_mode[0] = RC_MODE_CLOSED;
+    d->inter_slip[0] = 1;
+    for (int c = 0; c < 2; c++) {
+        const double vz = c == 0 ? 0.01 : -0.01; /* lifting, pressing */
+        yb[9] = vz;
+        rc_inter_report r;
+        rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
+        ft[0] = 1.2 * r.flim; /* the state above the limit, along the sliding */
+        ft[1] = ft[2] = 0.0;
+        rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
+        /* mu = F_lim / F_n, k = F / P (a line through 0), dP/dt = -v_z */
+        const double mu = r.flim / r.fn, k = r.fload / r.pl;
+        const double thr = c == 0 ? mu * k * vz / kt : 0.0;
+        ENSURE(rc_assemble_rhs(m, d, 0.0, y, yd) == 0);
+        printf("    %s at %g m/s: F_n %.4g N, limit %.4g N, K_t %.3g N/m, slip root %.6e m/s (v_t.e %.1e less %.6e), "
+               "dF_t/dt %.6e N/s (-K_t v_t %.6e)\n",
+               c == 0 ? "lifting" : "pressing", fabs(vz), r.fn, r.flim, kt, r.slip_root, vx, thr, yd[m->inter_eadr[0] + m->inter_fr[0].tidx],
+               -kt * vx);
+        ENSURE(fabs(r.fn - 10.0) < 1e-9 && fabs(r.flim - 3.0) < 1e-9 && fabs(kt - 1e7) < 1e-3);
+        ENSURE(fabs(r.slip_root - (vx - thr)) <= 1e-12 * fabs(vx));
+        ENSURE(c == 0 ? r.slip_root < -1e-4 : r.slip_root > 0);
+        ENSURE(fabs(yd[m->inter_eadr[0] + m->inter_fr[0].tidx] + kt * vx) <= 1e-9 * kt * vx);
+    }
+out:
+    free(y);
+    free(yd);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
+
+/* ---- an elastic law with a damper: hysteresis kept at its releases ---- */
+/* A 1 kg ball dropped at 1 m/s onto a floor, linear law k = 1e6 N/m
+ * (Iform 0) with Visc 400 N s/m (zeta 0.2): on each rebound the damper
+ * pulls and the contact releases at P_r > 0, losing k P_r^2 / 2. The
+ * hysteresis dissipation is exactly the sum of these over the releases the
+ * events record (before: the normal work less the stored energy, whose
+ * integration error ran backwards by up to 1e-7 J on damped cradles), and
+ * never decreases. */
+static const char *release_deck =
+    "/BEGIN\nball dropped on a damped elastic floor\n      2022         0\n"
+    "                  kg                   m                   s\n"
+    "                  kg                   m                   s\n"
+    "/FUNCT/1\nlinear\n0,0\n1,1000000\n"
+    "/NODE\n1,0,0,0.05\n"
+    "/RBODY/1\nball\n1,,,,1,1\n0.001,0.001,0.001\n0,0,0\n"
+    "/SURF/ELLIPS/1\nball\n0,2,1\n0,0,0.05\n0.05,0.05,0.05\n"
+    "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
+    "/GRNOD/NODE/1\nball\n1\n"
+    "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"
+    "/INIVEL/TRA/1\nv\n0,0,-1,1,0\n"
+    "/INTER/TYPE6/1\nball on floor\n1,2\n\n\n1,0\n\n400\n"
+    "/RUN\n0.3,0.001\n/END\n";
+
+static void test_elastic_damped_release_ledger(void)
+{
+    rc_error e;
+    rc_model *m = TU_COMPILE_OK(release_deck, "release.rad");
+    if (!m) return;
+    ENSURE(rc_inter_release_ledger(m, 0));
+    char out[512];
+    snprintf(out, sizeof out, "%s.nc", tu_tmp_write("release.rad", ""));
+    rc_run_options o;
+    memset(&o, 0, sizeof o);
+    o.output_path = out;
+    const rc_status st = rc_run(m, &o, NULL, &e);
+    ENSURE(st == RC_OK);
+    rc_model_free(m);
+    if (st) return;
+    int ncid, id, dim;
+    size_t nt = 0, nev = 0;
+    ENSURE(nc_open(out, NC_NOWRITE, &ncid) == NC_NOERR);
+    ENSURE(nc_inq_dimid(ncid, "time", &dim) == NC_NOERR && nc_inq_dimlen(ncid, dim, &nt) == NC_NOERR);
+    ENSURE(nc_inq_dimid(ncid, "event", &dim) == NC_NOERR && nc_inq_dimlen(ncid, dim, &nev) == NC_NOERR);
+    double *pen = calloc(nev + 1, sizeof(double));
+    char **kind = calloc(nev + 1, sizeof(char *));
+    double expect = 0.0, last = NAN;
+    int nrel = 0;
+    if (pen && kind && nev > 0 && nc_inq_varid(ncid, "event_penetration", &id) == NC_NOERR &&
+        nc_get_var_double(ncid, id, pen) == NC_NOERR && nc_inq_varid(ncid, "event_kind", &id) == NC_NOERR &&
+        nc_get_var_string(ncid, id, kind) == NC_NOERR) {
+        for (size_t k = 0; k < nev; k++)
+            if (strcmp(kind[k], "contact_open") == 0 && pen[k] > 0) { /* released at P > 0 */
+                expect += 0.5 * 1e6 * pen[k] * pen[k];
+                nrel++;
+            }
+        nc_free_string(nev, kind);
+    }
+    const double drop = ledger_drop(ncid, "energy_hysteresis", nt, &last);
+    printf("    %d releases at P > 0: sum k P_r^2 / 2 = %.9e J, energy_hysteresis at the end %.9e J (rel. %.1e), largest "
+           "drop %.1e J\n",
+           nrel, expect, last, fabs(last - expect) / expect, drop);
+    ENSURE(nrel >= 2);
+    ENSURE(fabs(last - expect) <= 1e-9 * expect);
+    ENSURE(drop == 0.0);
+    free(pen);
+    free(kind);
+    nc_close(ncid);
+}
+
 void suite_passive(void);
 void suite_passive(void)
 {
@@ -796,6 +935,8 @@ void suite_passive(void)
     RUN_TEST(test_iform1_stored_energy_on_the_unload_path);
     RUN_TEST(test_iform2_reversals_stay_on_the_stiff_line);
     RUN_TEST(test_ball_rolls_onto_incline);
+    RUN_TEST(test_slip_waits_for_a_falling_limit);
+    RUN_TEST(test_elastic_damped_release_ledger);
     RUN_TEST(test_box_sliding_start_at_every_rtol);
     RUN_TEST(test_contact_records_bounded);
 }

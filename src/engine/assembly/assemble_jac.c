@@ -296,7 +296,9 @@ static void points_jac(const rc_model *m, const rc_data *d, int i, const double 
     type6_c(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], pslip, ya, yb, ys, NULL,
             NULL, NULL, &o, NULL, d->sc->node_cache);
     segctx_c c;
-    segfric_ctx_c(m, i, o.fel + o.fd, o.kn, o.off, ya, yb, d->sc->node_cache, &c);
+    rc_cx fnf, kfr, fnd;
+    fric_normal_c(m, i, o.fel + o.fd, o.kn, &o, &fnf, &kfr, &fnd);
+    segfric_ctx_c(m, i, fnf, kfr, fnd, o.off, ya, yb, d->sc->node_cache, &c);
     for (int j = 0; j < npt; j++) {
         const int64_t *sb = slot + j * P + ps * ncol, *sc = sb + ps * nrow;
         point_columns(m, i, &c, j, pslip[j], ya, yb, po, yr + ns + ps * j, sb, sc, 0, val);
@@ -472,7 +474,9 @@ int rc_jac_refresh_points(const rc_model *m, const rc_data *d, int i, const int 
         const T fn = type6_normal_c(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], ya, yb, ys, nc, &r,
                                     &kn, &dfh);
         segctx_c cx;
-        segfric_ctx_c(m, i, fn, kn, r.off, ya, yb, nc, &cx);
+        rc_cx fnf, kfr, fnd;
+        fric_normal_c(m, i, fn, kn, &r, &fnf, &kfr, &fnd);
+        segfric_ctx_c(m, i, fnf, kfr, fnd, r.off, ya, yb, nc, &cx);
         const T *po = fric_pose(m, i, ya, yb, yo);
         if (real) {
             /* 2. the flipped points' columns anew (points_jac) */

@@ -133,11 +133,23 @@ enum {
 void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, double e[RC_NENERGY]);
 /* Normal elastic energy stored in interface i (recoverable by unloading) [J]. */
 double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double t, const double *y);
-/* The hysteresis of interface i at (t, y): its normal work less its stored
- * energy [J]; exactly 0 for an elastic law (Iform 0 or the power law, one
- * contact point, no Inacti offset), whose work differs from its stored
- * energy only by the integration error of the work accumulator. */
+/* The hysteresis of interface i at (t, y) [J]: its normal work less its
+ * stored energy; exactly 0 for an elastic law (Iform 0 or the power law,
+ * one contact point, no Inacti offset) that cannot release at P > 0 (no
+ * damper, a load curve that never pulls), whose work differs from its
+ * stored energy only by the integration error of the work accumulator;
+ * for an elastic law that can (rc_inter_release_ledger), the energy it
+ * stored at each release at P > 0 less what it held again when it closed
+ * (rc_data.inter_hacc, kept at the mode changes), without that error. */
 double rc_inter_hysteresis(const rc_model *m, const rc_data *d, int i, double t, const double *y);
+/* The elastic energy of interface i's law (Iform 0 or the power law) at
+ * penetration P: its load curve's integral from 0 [J] (0 for P <= 0). */
+double rc_inter_law_energy(const rc_model *m, int i, double P);
+/* 1 when interface i's law is elastic (Iform 0 or the power law) with one
+ * contact point and no Inacti offset: its hysteresis is the stored energy
+ * lost at its releases at P > 0, kept by the events (rc_data.inter_hacc)
+ * rather than integrated. */
+int rc_inter_release_ledger(const rc_model *m, int i);
 /* The energy held in the stick springs of interface i's friction at (t, y)
  * (one, or one per contact point; 0 unless closed, none for exact stick)
  * [J]: its friction work less this is its energy_friction. */

@@ -61,6 +61,12 @@ typedef struct rc_data {
                             (events.c points_flip): 3 doubles, an int, a flag per point */
     double *inter_dref;  /* [ninter*3] sliding direction when a stateless friction
                             law saturated (reversal root) [-] */
+    double *inter_hacc;  /* [ninter*2] an elastic law that can release at P > 0
+                            (rc_inter_release_ledger): the hysteresis it has
+                            dissipated [J], and the energy it stored when it
+                            last released (while released) [J]; set at the
+                            start and at its mode changes (events.c) */
+    int *mode_was;       /* [ninter] scratch of the events: the modes before */
     double *inter_fcstr; /* [ninter] the normal force a settled contact's
                             constraint carries (IDA path, engine/constraints/stick.c;
                             set at records, 0 otherwise) [N] */

@@ -120,12 +120,24 @@ double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double
     if (mode != RC_MODE_CLOSED && mode != RC_MODE_RELEASED) return 0.0;
     rc_inter_report r;
     rc_inter_report_eval_d(m, d, i, t, y, &r);
-    const double ax = m->inter_ascalex[i], P = r.pl, F = r.fload; /* the law's penetration */
+    const double P = r.pl, F = r.fload; /* the law's penetration */
     if (P <= 0) return 0.0;
-    if (m->inter_law[i] == RC_LAW_POWER) return rc_power_stored(m, i, P); /* integral of F_k */
-    if (m->inter_iform[i] == 0)
-        return m->inter_fscaleld[i] * ax * rc_table_integral(&m->table[m->inter_fct_ld[i]], 0.0, P / ax);
+    if (m->inter_law[i] == RC_LAW_POWER || m->inter_iform[i] == 0) return rc_inter_law_energy(m, i, P);
     return F > 0 ? unload_path_energy(m, i, P, F) : 0.0;
+}
+
+double rc_inter_law_energy(const rc_model *m, int i, double P)
+{
+    if (!(P > 0)) return 0.0;
+    if (m->inter_law[i] == RC_LAW_POWER) return rc_power_stored(m, i, P); /* integral of F_k */
+    const double ax = m->inter_ascalex[i];
+    return m->inter_fscaleld[i] * ax * rc_table_integral(&m->table[m->inter_fct_ld[i]], 0.0, P / ax);
+}
+
+int rc_inter_release_ledger(const rc_model *m, int i)
+{
+    return m->inter_peidx[i] < 0 && m->inter_inacti[i] == 0 &&
+           (m->inter_law[i] == RC_LAW_POWER || m->inter_iform[i] == 0);
 }
 
 /* An elastic law loads and unloads along one curve: its hysteresis is 0.
@@ -151,10 +163,18 @@ static int inter_elastic(const rc_model *m, int i)
     return 1;
 }
 
-double rc_inter_hysteresis(const rc_model *m, const rc_data *d, int i, double t, const double *y)
+/* Interface i's hysteresis dissipation [J], its stored energy en given. */
+static double hysteresis_of(const rc_model *m, const rc_data *d, int i, const double *y, double en)
 {
     if (inter_elastic(m, i)) return 0.0;
-    return y[m->inter_eadr[i]] - rc_inter_stored_energy(m, d, i, t, y);
+    if (rc_inter_release_ledger(m, i))
+        return d->inter_hacc[2 * i] + (d->inter_mode[i] == RC_MODE_RELEASED ? d->inter_hacc[2 * i + 1] - en : 0.0);
+    return y[m->inter_eadr[i]] - en;
+}
+
+double rc_inter_hysteresis(const rc_model *m, const rc_data *d, int i, double t, const double *y)
+{
+    return hysteresis_of(m, d, i, y, rc_inter_stored_energy(m, d, i, t, y));
 }
 
 double rc_inter_friction_stored(const rc_model *m, const rc_data *d, int i, double t, const double *y)
@@ -190,7 +210,7 @@ void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, d
         e[RC_E_DAMP] += y[m->inter_eadr[i] + 1];
         const double en = rc_inter_stored_energy(m, d, i, t, y);
         e[RC_E_STORED] += en;
-        if (!inter_elastic(m, i)) e[RC_E_HYST] += y[m->inter_eadr[i]] - en;
+        e[RC_E_HYST] += hysteresis_of(m, d, i, y, en);
         /* friction: work, and the elastic energy of the stick springs (one,
          * or one per contact point; exact stick has no spring) */
         const rc_fric *fr = &m->inter_fr[i];

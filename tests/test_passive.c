@@ -842,7 +842,26 @@ static void test_slip_waits_for_a_falling_limit(void)
         ENSURE(fabs(r.fn - 10.0) < 1e-9 && fabs(r.flim - 3.0) < 1e-9 && fabs(kt - 1e7) < 1e-3);
         ENSURE(fabs(r.slip_root - (vx - thr)) <= 1e-12 * fabs(vx));
         ENSURE(c == 0 ? r.slip_root < -1e-4 : r.slip_root > 0);
-        ENSURE(fabs(yd[m->inter_eadr[0] + m->inter_fr[0].tidx] + kt * vx) <= 1e-9 * kt * vx);
+        /* below the threshold the spring unloads as a spring; pressing,
+         * the root calls the stick at once */
+        if (c == 0) ENSURE(fabs(yd[m->inter_eadr[0] + m->inter_fr[0].tidx] + kt * vx) <= 1e-9 * kt * vx);
+    }
+    /* lifting, sliding along the force past the threshold (5e-4 > 3e-4 m/s):
+     * the root calls the stick, and until then the state goes on at about
+     * the limit's rate, K_t thr (1 + ln(v / thr)) = 4.53e3 N/s, not K_t v
+     * (5e3 N/s, and 1e18 N/m stiffnesses made that rate swing the state
+     * through zero within a step) */
+    {
+        const double v2 = 5e-4, thr = 3e-4;
+        yb[7] = v2;
+        yb[9] = 0.01;
+        rc_inter_report r;
+        rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
+        ENSURE(rc_assemble_rhs(m, d, 0.0, y, yd) == 0);
+        const double rate = yd[m->inter_eadr[0] + m->inter_fr[0].tidx], want = -kt * thr * (1.0 + log(v2 / thr));
+        printf("    lifting, sliding at %g m/s: slip root %.6e m/s, dF_t/dt %.6e N/s (want %.6e)\n", v2, r.slip_root, rate, want);
+        ENSURE(fabs(r.slip_root - (v2 - thr)) <= 1e-9 * v2 && r.slip_root > 0);
+        ENSURE(fabs(rate - want) <= 1e-9 * fabs(want));
     }
 out:
     free(y);

@@ -5,7 +5,9 @@
 #include "harness.h"
 
 #include <netcdf.h>
+#include <pthread.h>
 #include <stdlib.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "model/model.h"
@@ -169,10 +171,50 @@ static void test_bodystate_far_scene_in_deck_coordinates(void)
     rc_model_free(m);
 }
 
+typedef struct lock_run {
+    rc_model *m;
+    char out[128];
+    rc_status st;
+    volatile int done;
+} lock_run;
+
+static void *run_thread(void *arg)
+{
+    lock_run *r = arg;
+    rc_run_options o = {.output_path = r->out};
+    r->st = rc_run(r->m, &o, NULL, NULL);
+    r->done = 1;
+    return NULL;
+}
+
+/* rc_netcdf_lock is the lock of the library's netCDF calls: a run of
+ * another thread cannot create its results file while it is held, and
+ * completes once it is released. */
+static void test_bodystate_netcdf_lock_holds_runs(void)
+{
+    const char *set[] = {"/RUN:Tend=0.05"};
+    lock_run r = {.m = compile_fixed(set, 1), .st = RC_EINTERNAL};
+    ENSURE(r.m != NULL);
+    if (!r.m) return;
+    deck_path(r.out, sizeof r.out, "lock.nc");
+    rc_netcdf_lock();
+    pthread_t th;
+    ENSURE(pthread_create(&th, NULL, run_thread, &r) == 0);
+    const struct timespec wait = {0, 300000000}; /* 0.3 s: the run alone takes ~10 ms */
+    nanosleep(&wait, NULL);
+    const int done_while_held = r.done;
+    rc_netcdf_unlock();
+    pthread_join(th, NULL);
+    ENSURE(done_while_held == 0 && r.done == 1 && r.st == RC_OK);
+    remove(r.out);
+    rc_model_free(r.m);
+}
+
 void suite_bodystate(void);
 void suite_bodystate(void)
 {
     RUN_TEST(test_bodystate_ids_and_offsets);
     RUN_TEST(test_bodystate_values_and_errors);
     RUN_TEST(test_bodystate_far_scene_in_deck_coordinates);
+    RUN_TEST(test_bodystate_netcdf_lock_holds_runs);
 }

@@ -86,6 +86,16 @@ const char *rc_version(void);
 const char *rc_build_commit(void);
 void rc_print_versions(FILE *f);
 
+/* The library's process-wide lock around its netCDF calls (HDF5 under
+ * netCDF is not thread-safe; see "Threads" above). A program that calls
+ * netCDF or HDF5 itself in one thread while runs of other threads write
+ * their results files (reading a results file during another thread's
+ * run, as the Python module does) holds it around its own calls. It is not
+ * recursive; the library never holds it while it calls the event
+ * callback. */
+void rc_netcdf_lock(void);
+void rc_netcdf_unlock(void);
+
 /* Progress of the long stages (reading, compiling) on `f`; NULL (the
  * default) says nothing. Printed only for stages that run over a second.
  * One setting for the process: set it before starting threads. */

@@ -428,7 +428,8 @@ def test_pip():
     p = subprocess.run([os.path.join(venv, "bin", "pip"), "install", "-q", "--no-build-isolation", "--no-index", src],
                        capture_output=True, text=True)
     code = "import ricochet; ds = ricochet.run(%r); print(ricochet.__file__, float(ds.impact_close_time[0]))" % deck
-    q = subprocess.run([os.path.join(venv, "bin", "python"), "-c", code], capture_output=True, text=True, cwd=tmp)
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}  # the venv's module, not the source tree's
+    q = subprocess.run([os.path.join(venv, "bin", "python"), "-c", code], capture_output=True, text=True, cwd=tmp, env=env)
     out = q.stdout.split()
     check("pip_install_offline", p.returncode == 0 and q.returncode == 0 and out[0].startswith(venv)
           and abs(float(out[1]) - t_first(H0)) < 1e-6,

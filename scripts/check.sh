@@ -78,6 +78,21 @@ cat "$log"
 pass=$((pass + $(grep -c '^PASS ' "$log")))
 fail=$((fail + $(grep -c '^FAIL ' "$log")))
 
+# the Python module running simulations through this build's library
+# (python/ricochet over $build/libricochet.so via RICOCHET_LIB: the ctypes
+# structs, run, set=, errors, sessions, the event callback, threads, pip
+# install, a study on a LocalCluster of 2 worker processes)
+RICOCHET_LIB="$(cd "$build" && pwd)/libricochet.so" PYTHONPATH="$PWD/python" \
+    /usr/bin/python3 tests/python_run_test.py "$build" > "$log" 2>&1
+st=$?
+grep -E '^(PASS|FAIL|SKIP) ' "$log"
+pass=$((pass + $(grep -c '^PASS ' "$log")))
+fail=$((fail + $(grep -c '^FAIL ' "$log")))
+if [ "$st" -ne 0 ] && [ "$(grep -c '^FAIL ' "$log")" -eq 0 ]; then
+    echo "FAIL pyrun: tests/python_run_test.py exited with status $st:"; tail -n 20 "$log"
+    fail=$((fail + 1))
+fi
+
 # validation problems: each check.py prints PASS/FAIL lines; every problem
 # runs twice, first with the solver settings of its decks, then at ricochet's
 # default settings (RICOCHET_VAL_SOLVER=default: the /SOLVER cards removed,

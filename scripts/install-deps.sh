@@ -9,8 +9,9 @@ set -euo pipefail
 PKGS=(gcc make pkgconf libsundials-dev libsuitesparse-dev libgsl-dev libnetcdf-dev netcdf-bin
       python3 python3-numpy python3-scipy python3-netcdf4 python3-matplotlib
       # tests only: the ParaView export read back and rendered off screen with
-      # VTK (xvfb: a display for it)
-      python3-xarray python3-vtk9 xvfb xauth)
+      # VTK (xvfb: a display for it); python3-distributed: the Python
+      # module's studies on Dask (ricochet.study, a LocalCluster in the tests)
+      python3-xarray python3-vtk9 xvfb xauth python3-distributed)
 # clang 14 and its runtime libraries (libFuzzer, ASan, UBSan)
 if [ "${1:-}" = fuzz ]; then PKGS+=(clang libclang-rt-14-dev); fi
 missing=()

@@ -23,7 +23,8 @@ version=$(sed -n 's/^#define RICOCHET_VERSION "\(.*\)"/\1/p' include/ricochet/ri
 missing=""
 for f in bin/ricochet include/ricochet/ricochet.h lib/libricochet.a "lib/libricochet.so.$version" "lib/libricochet.so.${version%%.*}" \
          lib/libricochet.so lib/pkgconfig/ricochet.pc $pydir/ricochet/__init__.py \
-         $pydir/ricochet/deck.py $pydir/ricochet/results.py; do
+         $pydir/ricochet/deck.py $pydir/ricochet/results.py $pydir/ricochet/_lib.py $pydir/ricochet/sim.py \
+         $pydir/ricochet/errors.py $pydir/ricochet/study.py $pydir/ricochet/__main__.py; do
     [ -e "$root/$f" ] || missing="$missing $f"
 done
 [ -z "$missing" ] && pass files "bin, header, libricochet.a, libricochet.so.$version (+ soname link), ricochet.pc, python module in $pydir" ||
@@ -75,6 +76,24 @@ PYTHONPATH=$root/$pydir /usr/bin/python3 tests/python_test.py "$root/bin/ricoche
 cat "$stage/py"
 grep -q "^PASS python.module_location: $root/$pydir/ricochet/__init__.py" "$stage/py" &&
     pass python_installed "imported from the staged install" || fail python_installed "exit $rc, not imported from $root"
+
+# the installed module runs a simulation with the installed library, found
+# next to it (<prefix>/lib) without RICOCHET_LIB
+if ldconfig -p 2>/dev/null | grep -q 'libricochet\.so\.0 '; then
+    echo "SKIP install.python_run: a libricochet.so.0 is installed system-wide (the loader would find it first)"
+else
+    demo=$PWD/cases/demo_sphere_drop.rad
+    out=$(cd "$stage" && env -u RICOCHET_LIB PYTHONPATH=$root/$pydir /usr/bin/python3 -c '
+import math, ricochet, sys
+ds = ricochet.run(sys.argv[1], t_end=0.2)
+t = float(ds.impact_close_time[0])
+print(ricochet.library_path(), t, abs(t - math.sqrt(2 * 0.1 / 9.81)) < 1e-6)' "$demo" 2>&1)
+    case $out in
+        "$root/lib/libricochet.so.0 (the prefix the module is installed in) "*" True")
+            pass python_run "ricochet.run with the staged library: $out" ;;
+        *) fail python_run "$out" ;;
+    esac
+fi
 
 # uninstall removes every file install wrote
 make --no-print-directory -s uninstall BUILD="$build" PREFIX=$prefix DESTDIR="$stage" > /dev/null 2>&1

@@ -86,6 +86,16 @@ const char *rc_version(void);
 const char *rc_build_commit(void);
 void rc_print_versions(FILE *f);
 
+/* The library's process-wide lock around its netCDF calls (HDF5 under
+ * netCDF is not thread-safe; see "Threads" above). A program that calls
+ * netCDF or HDF5 itself in one thread while runs of other threads write
+ * their results files (reading a results file during another thread's
+ * run, as the Python module does) holds it around its own calls. It is not
+ * recursive; the library never holds it while it calls the event
+ * callback. */
+void rc_netcdf_lock(void);
+void rc_netcdf_unlock(void);
+
 /* Progress of the long stages (reading, compiling) on `f`; NULL (the
  * default) says nothing. Printed only for stages that run over a second.
  * One setting for the process: set it before starting threads. */
@@ -175,6 +185,31 @@ int rc_model_preload(const rc_model *m);
 double rc_model_rtol(const rc_model *m);
 double rc_model_t_end(const rc_model *m);
 double rc_model_dt_out(const rc_model *m);
+
+/* The bodies of a model: their count (fixed bodies included; 0 for a NULL
+ * m) and the /RBODY id of the i-th, i in [0, count) (-1 out of range or for
+ * a NULL m), in the order of the results file's `body` dimension. */
+int rc_model_body_count(const rc_model *m);
+int rc_model_body_id(const rc_model *m, int i);
+/* Where the 13 states of /RBODY body_id start in the state vector (layout
+ * in docs/theory.md 1: position [m], quaternion (w, x, y, z) [-], velocity
+ * [m/s], angular velocity in the body frame [rad/s]); -1 for a fixed body
+ * (it has no states), -2 for an id that is no /RBODY of m, or a NULL m.
+ * The state vectors the library hands out (rc_session_state,
+ * rc_run_options.y_end) hold positions in the deck's coordinates, also for
+ * a scene that the model computes about an origin of its own
+ * (docs/theory.md 7.1, "The model's origin"). */
+int rc_model_body_index(const rc_model *m, int body_id);
+/* The state of /RBODY body_id read from a state vector `y` of m
+ * (rc_model_state_size(m) values: rc_session_state, rc_run_options.y_end)
+ * into out[13]: centre of mass in the deck's coordinates [m] (3), unit
+ * quaternion (w, x, y, z) body -> global [-] (4), velocity of the centre of
+ * mass, global frame [m/s] (3), angular velocity, body frame [rad/s] (3):
+ * the values of the results file's body_* variables. A fixed body gives its
+ * pose at rest (y is not read and may be NULL). RC_EINPUT for a NULL m or
+ * out, a NULL y for a free body, or an id that is no /RBODY of m (the
+ * message lists the model's ids). */
+rc_status rc_model_body_state(const rc_model *m, const double *y, int body_id, double out[13], rc_error *err);
 
 /* ---- Running --------------------------------------------------------- */
 

@@ -42,6 +42,12 @@ def read(path, xarray=None):
     """The results at ``path``: an xarray.Dataset if ``xarray`` is True, or
     None and xarray is installed; else a Results (dict of numpy arrays).
     Fill values stay as stored (NaN where the file has NaN)."""
+    from ._lib import netcdf_guard
+    with netcdf_guard():  # runs of other threads may be writing (docs/python.md, "Threads")
+        return _read(path, xarray)
+
+
+def _read(path, xarray):
     if xarray is None:
         xarray = _have_xarray()
     if xarray:

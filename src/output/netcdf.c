@@ -346,6 +346,12 @@ void rc_nc_lock(void) { pthread_mutex_lock(&nc_mutex); }
 
 void rc_nc_unlock(void) { pthread_mutex_unlock(&nc_mutex); }
 
+/* The same lock for programs that call netCDF themselves in threads while
+ * runs write (public: include/ricochet/ricochet.h). */
+void rc_netcdf_lock(void) { rc_nc_lock(); }
+
+void rc_netcdf_unlock(void) { rc_nc_unlock(); }
+
 const char *rc_output_netcdf_version(void)
 {
     rc_nc_lock();

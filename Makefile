@@ -60,7 +60,7 @@ PHYSFUZZ_OUT ?= $(BUILD)/physfuzz
 PHYSFUZZ_STRICT ?= 0
 export PHYSFUZZ_STRICT
 
-.PHONY: all lib demo check validate asan tsan valgrind bench install uninstall clean deps test fuzz physics-fuzz FORCE
+.PHONY: all lib demo gallery check validate asan tsan valgrind bench install uninstall clean deps test fuzz physics-fuzz FORCE
 
 all: $(BIN) $(TESTBIN) $(SHLIB) $(REPLAY)
 
@@ -142,6 +142,24 @@ demo: deps
 	$(BIN) run cases/demo_sphere_drop.rad -o out/demo.nc
 	/usr/bin/python3 scripts/plot.py out/demo.nc out/demo
 	@echo "results: out/demo.nc, plots: out/demo_*.png"
+
+# The example gallery (cases/README.md): every cases/*.rad but the demo run
+# into out/gallery/NAME.nc (summary in NAME.log), then one picture
+# out/gallery/NAME.png by scripts/plot.py with the options of the deck's
+# "# plot:" line. Needs the ricochet binary only; stops at the first case
+# that fails (exit code != 0) or whose physics checks do not pass.
+GALLERY := $(filter-out cases/demo_sphere_drop.rad,$(wildcard cases/*.rad))
+gallery: $(BIN)
+	@mkdir -p out/gallery
+	@set -e; for f in $(GALLERY); do n=$$(basename $$f .rad); \
+	    $(BIN) run $$f -o out/gallery/$$n.nc > out/gallery/$$n.log 2>&1 || \
+	        { cat out/gallery/$$n.log; echo "gallery: $$f failed"; exit 1; }; \
+	    grep -q '^physics checks: passed' out/gallery/$$n.log || \
+	        { cat out/gallery/$$n.log; echo "gallery: $$f: physics checks did not pass"; exit 1; }; \
+	    /usr/bin/python3 scripts/plot.py out/gallery/$$n.nc $$(sed -n 's/^# plot: //p' $$f) \
+	        --png out/gallery/$$n.png > /dev/null; \
+	    echo "$$f: $$(grep -o 'simulated .* wall' out/gallery/$$n.log), physics checks passed -> out/gallery/$$n.png"; \
+	done
 
 # AddressSanitizer + UndefinedBehaviorSanitizer build: unit tests, the malformed
 # decks, the fuzz regressions and seeds, the demo case.

@@ -12,6 +12,20 @@ vs time, the dissipated energies in a panel of their own), and prints the names 
 PREFIX defaults to OUT.nc without its extension. Labels and units come from
 the file's attributes. A file marked incomplete is plotted with a warning.
 
+    python3 scripts/plot.py OUT.nc --panels z,force,energy --png OUT.png
+
+writes instead one picture of the chosen quantities, one panel each
+against time (the gallery of cases/ uses it). Panels: x, y, z (centre of
+mass of the free bodies), vx, vy, vz, speed, angle (rotation angle of the
+free bodies from their start), force (normal force per interface),
+friction (friction force magnitude per interface), pen (penetration per
+interface), loop (normal force against penetration), coupling (coupling
+force), gap (coupling length: the smallest face distance of a contact
+coupling), stop (moment or force of the joint stops), energy (total,
+kinetic, potential, dissipated). --bodies and --inters pick the /RBODY
+and /INTER ids drawn, --tmax ends the time axis, --title replaces the
+file's title, --width the picture's width in pixels (800).
+
 Dependencies: Debian's python3-netcdf4, python3-numpy, python3-matplotlib.
 """
 import argparse
@@ -255,11 +269,149 @@ def plot_energy(ds, prefix, written):
     save(fig, f"{prefix}_energy.png", written)
 
 
+PANELS = ("x", "y", "z", "vx", "vy", "vz", "speed", "angle", "force", "friction", "pen", "loop",
+          "coupling", "gap", "stop", "energy")
+
+
+def plot_panels(ds, panels, png, args):
+    """One picture: the chosen panels stacked, each against time (loop:
+    force against penetration)."""
+    t = values(ds, "time")
+    keep = np.ones_like(t, dtype=bool) if args.tmax is None else t <= args.tmax
+    t = t[keep]
+    ids = list(ds.variables["body_id"][:])
+    free = [b for b in range(len(ids)) if not ds.variables["body_fixed"][b]]
+    if args.bodies:
+        want = [int(v) for v in args.bodies.split(",")]
+        free = [b for b in free if ids[b] in want]
+    inters = list(ds.variables["inter_id"][:]) if "inter_id" in ds.variables else []
+    isel = list(range(len(inters)))
+    if args.inters:
+        want = [int(v) for v in args.inters.split(",")]
+        isel = [i for i in isel if inters[i] in want]
+    width = args.width / 100.0
+    fig, axes = plt.subplots(len(panels), 1, figsize=(width, 0.55 * width * len(panels) / 1.6 + 0.6),
+                             squeeze=False)
+    tl = label(ds, "time")
+
+    def need(name):
+        if name not in ds.variables:
+            sys.exit(f"plot.py: panel needs {name}, absent from {args.file}")
+        return values(ds, name)[keep]
+
+    for ax, what in zip(axes[:, 0], panels):
+        ax.grid(True, alpha=0.3)
+        ax.set_xlabel(tl)
+        if what in ("x", "y", "z", "vx", "vy", "vz", "speed"):
+            var = "body_position" if what in ("x", "y", "z") else "body_velocity"
+            a = need(var)
+            for b in free:
+                if what == "speed":
+                    v = np.linalg.norm(a[:, b, :], axis=1)
+                else:
+                    v = a[:, b, "xyz".index(what[-1])]
+                ax.plot(t, v, lw=1.2, label=f"body {ids[b]}")
+            if what == "speed":
+                ax.set_ylabel(f"speed [{units(ds, var)}]")
+            else:
+                kind = "position" if var == "body_position" else "velocity"
+                ax.set_ylabel(f"{what[-1]} {kind} [{units(ds, var)}]")
+        elif what == "angle":
+            q = need("body_quaternion")
+            for b in free:
+                # rotation from the start: q(t) q(0)^-1, angle 2 atan2(|v|, |w|)
+                q0 = q[0, b, :] * np.array([1, -1, -1, -1])
+                w = q[:, b, 0] * q0[0] - np.sum(q[:, b, 1:] * q0[1:], axis=1)
+                v = (q[:, b, 0:1] * q0[1:] + q0[0] * q[:, b, 1:] + np.cross(q[:, b, 1:], q0[1:]))
+                ang = 2 * np.degrees(np.arctan2(np.linalg.norm(v, axis=1), np.abs(w)))
+                ax.plot(t, ang, lw=1.2, label=f"body {ids[b]}")
+            ax.set_ylabel("rotation from start [deg]")
+        elif what in ("force", "pen", "friction"):
+            var = {"force": "inter_force_normal", "pen": "inter_penetration",
+                   "friction": "inter_force_friction"}[what]
+            a = need(var)
+            for i in isel:
+                v = np.linalg.norm(a[:, i, :], axis=1) if what == "friction" else a[:, i]
+                if what == "pen":
+                    v = np.where(v >= 0, v * 1e3, np.nan)
+                ax.plot(t, v, lw=1.2, label=f"/INTER {inters[i]}")
+            ax.set_ylabel({"force": "normal force [N]", "pen": "penetration [mm]",
+                           "friction": "friction force [N]"}[what])
+        elif what == "loop":
+            f, p = need("inter_force_normal"), need("inter_penetration")
+            for i in isel:
+                inz = p[:, i] >= 0
+                ax.plot(np.where(inz, p[:, i] * 1e3, np.nan), np.where(inz, f[:, i], np.nan), lw=1.2,
+                        label=f"/INTER {inters[i]}")
+            ax.set_xlabel("penetration [mm]")
+            ax.set_ylabel("normal force [N]")
+        elif what in ("coupling", "gap"):
+            var = "coupling_force" if what == "coupling" else "coupling_length"
+            a = need(var)
+            cids = ds.variables["coupling_id"][:]
+            for c in range(a.shape[1]):
+                v = a[:, c] * (1e3 if what == "gap" else 1)
+                ax.plot(t, v, lw=1.2, label=f"/COUPLING {cids[c]}")
+            ax.set_ylabel("coupling force [N]" if what == "coupling" else "coupling length [mm]")
+        elif what == "stop":
+            jt = [str(v) for v in ds.variables["joint_type"][:]]
+            m, f = need("joint_stop_moment"), need("joint_stop_force")
+            for j in range(m.shape[1]):
+                if jt[j] == "REVOLUTE":
+                    ax.plot(t, m[:, j], lw=1.2, label=f"joint {j + 1} stop moment [N m]")
+                else:
+                    ax.plot(t, f[:, j], lw=1.2, label=f"joint {j + 1} stop force [N]")
+            ax.set_ylabel("stop moment [N m] / force [N]")
+        elif what == "energy":
+            ax.plot(t, need("energy_total"), color="black", lw=2, label="total")
+            for n in ("energy_kinetic", "energy_potential", "energy_catenary", "energy_coupling_elastic"):
+                if n in ds.variables and np.any(values(ds, n) != 0):
+                    ax.plot(t, need(n), lw=1.2, label=n[len("energy_"):])
+            diss = sum(need(n) for n in DISSIPATION if n in ds.variables)
+            if np.any(diss != 0):
+                ax.plot(t, diss, lw=1.2, ls="--", label="dissipated")
+            ax.set_ylabel(f"energy [{units(ds, 'energy_total')}]")
+        if ax.get_legend_handles_labels()[0]:
+            ax.legend(fontsize="small", loc="best")
+    run = args.title or getattr(ds, "title", "") or os.path.basename(args.file)
+    axes[0, 0].set_title(run, fontsize="medium")
+    fig.tight_layout()
+    fig.savefig(png, dpi=100)
+    plt.close(fig)
+    try:  # a palette of 64 colours: the same picture in a third of the bytes
+        from PIL import Image
+        with Image.open(png) as im:
+            small = im.convert("RGB").quantize(colors=64)
+        small.save(png, optimize=True)
+    except ImportError:
+        pass
+    print(png)
+
+
 def main():
     ap = argparse.ArgumentParser(description="Plot a ricochet results file as PNG images.")
     ap.add_argument("file", help="netCDF results file written by ricochet")
     ap.add_argument("prefix", nargs="?", help="output prefix (default: file without .nc)")
+    ap.add_argument("--panels", help="one picture of these panels, comma-separated: " + ", ".join(PANELS))
+    ap.add_argument("--png", help="the picture written with --panels (default: file with .png)")
+    ap.add_argument("--bodies", help="/RBODY ids drawn (default: every free body, up to %d)" % MAX_CURVES)
+    ap.add_argument("--inters", help="/INTER ids drawn (default: all)")
+    ap.add_argument("--tmax", type=float, help="end of the time axis [s]")
+    ap.add_argument("--title", help="title of the picture (default: the run's title)")
+    ap.add_argument("--width", type=int, default=800, help="width of the picture [px] (800)")
     args = ap.parse_args()
+    if args.panels:
+        panels = [p.strip() for p in args.panels.split(",") if p.strip()]
+        bad = [p for p in panels if p not in PANELS]
+        if bad or not panels:
+            sys.exit(f"plot.py: unknown panel(s) {', '.join(bad) or '(none)'}; choose from {', '.join(PANELS)}")
+        try:
+            ds = netCDF4.Dataset(args.file, "r")
+        except OSError as exc:
+            sys.exit(f"plot.py: cannot read {args.file}: {exc}")
+        with ds:
+            plot_panels(ds, panels, args.png or os.path.splitext(args.file)[0] + ".png", args)
+        return
     prefix = args.prefix or os.path.splitext(args.file)[0]
     try:
         ds = netCDF4.Dataset(args.file, "r")

@@ -799,12 +799,7 @@ static const char *slip_limit_deck =
     "/BEGIN\nball on a floor, slipping\n      2022         0\n"
     "                  kg                   m                   s\n"
     "                  kg                   m                   s\n"
-    "/FUNCT/1\nlinear\n0,0\n1,1000000\n"
-    "/NODE\n1,0,0,0.05\n"
-    "/RBODY/1\nball\n1,,,,1,1\n0.001,0.001,0.001\n0,0,0\n"
-    "/SURF/ELLIPS/1\nball\n0,2,1\n0,0,0.05\n0.05,0.05,0.05\n"
-    "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
-    "/GRNOD/NODE/1\nball\n1\n"
+    "/FUNCT/1\nlinear\n0,0\n1,1000000\n" BALL_ON_FLOOR
     "/INTER/TYPE6/1\nball on floor\n1,2\n0,0.3\n\n1,0\n0,,10000000\n\n"
     "/RUN\n0.01,0.001\n/END\n";
 
@@ -883,12 +878,7 @@ static const char *release_deck =
     "/BEGIN\nball dropped on a damped elastic floor\n      2022         0\n"
     "                  kg                   m                   s\n"
     "                  kg                   m                   s\n"
-    "/FUNCT/1\nlinear\n0,0\n1,1000000\n"
-    "/NODE\n1,0,0,0.05\n"
-    "/RBODY/1\nball\n1,,,,1,1\n0.001,0.001,0.001\n0,0,0\n"
-    "/SURF/ELLIPS/1\nball\n0,2,1\n0,0,0.05\n0.05,0.05,0.05\n"
-    "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
-    "/GRNOD/NODE/1\nball\n1\n"
+    "/FUNCT/1\nlinear\n0,0\n1,1000000\n" BALL_ON_FLOOR
     "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"
     "/INIVEL/TRA/1\nv\n0,0,-1,1,0\n"
     "/INTER/TYPE6/1\nball on floor\n1,2\n\n\n1,0\n\n400\n"

@@ -60,7 +60,7 @@ PHYSFUZZ_OUT ?= $(BUILD)/physfuzz
 PHYSFUZZ_STRICT ?= 0
 export PHYSFUZZ_STRICT
 
-.PHONY: all lib demo gallery check validate asan tsan valgrind bench install uninstall clean deps test fuzz physics-fuzz FORCE
+.PHONY: all lib demo gallery check validate asan tsan valgrind bench install uninstall clean deps deps-test test fuzz physics-fuzz FORCE
 
 all: $(BIN) $(TESTBIN) $(SHLIB) $(REPLAY)
 
@@ -69,6 +69,10 @@ lib: $(LIB) $(SHLIB)
 
 deps:
 	@bash scripts/install-deps.sh
+
+# what the tests need besides (scripts/install-deps.sh test)
+deps-test:
+	@bash scripts/install-deps.sh test
 
 $(BUILD)/obj/%.o: src/%.c $(SRC_HDR)
 	@mkdir -p $(dir $@)
@@ -123,7 +127,7 @@ $(REPLAY): fuzz/replay.c fuzz/fuzz_deck.c $(LIB)
 	$(CC) $(ALLCFLAGS) -o $@ fuzz/replay.c fuzz/fuzz_deck.c $(LIB) $(LDLIBS)
 
 # Unit tests, then the fast validation problems; one closing tally line.
-check: deps
+check: deps-test
 	@$(MAKE) --no-print-directory all
 	@bash scripts/check.sh $(BUILD) fast
 
@@ -131,13 +135,14 @@ test: all
 	@$(BUILD)/run_tests
 
 # Every validation problem, including the convergence studies.
-validate: deps
+validate: deps-test
 	@$(MAKE) --no-print-directory all
 	@bash scripts/check.sh $(BUILD) all
 
-# Default case end to end: netCDF results and PNG plots in out/.
+# Default case end to end: netCDF results and PNG plots in out/. Builds the
+# program only (not the tests).
 demo: deps
-	@$(MAKE) --no-print-directory all
+	@$(MAKE) --no-print-directory $(BIN)
 	@mkdir -p out
 	$(BIN) run cases/demo_sphere_drop.rad -o out/demo.nc
 	/usr/bin/python3 scripts/plot.py out/demo.nc out/demo
@@ -149,7 +154,7 @@ demo: deps
 # "# plot:" line. Needs the ricochet binary only; stops at the first case
 # that fails (exit code != 0) or whose physics checks do not pass.
 GALLERY := $(filter-out cases/demo_sphere_drop.rad,$(wildcard cases/*.rad))
-gallery: $(BIN)
+gallery: deps $(BIN)
 	@mkdir -p out/gallery
 	@set -e; for f in $(GALLERY); do n=$$(basename $$f .rad); \
 	    $(BIN) run $$f -o out/gallery/$$n.nc > out/gallery/$$n.log 2>&1 || \
@@ -163,7 +168,7 @@ gallery: $(BIN)
 
 # AddressSanitizer + UndefinedBehaviorSanitizer build: unit tests, the malformed
 # decks, the fuzz regressions and seeds, the demo case.
-asan: deps
+asan: deps-test
 	@$(MAKE) --no-print-directory BUILD=build-asan OPT=-O1 \
 	    CFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" all
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 build-asan/run_tests
@@ -189,7 +194,7 @@ TSAN_CFLAGS := -O1 -g -fsanitize=thread -fno-omit-frame-pointer
 # Every netCDF function the library calls is wrapped (-Wl,--wrap) to make
 # HDF5's library-wide state visible to ThreadSanitizer (tests/tsan/threads.c).
 TSAN_WRAP = $(shell sed -n 's/^WRAP[^,]*, *\(nc_[a-z_]*\),.*/\1/p' tests/tsan/threads.c)
-tsan: deps
+tsan: deps-test
 	@$(MAKE) --no-print-directory BUILD=build-tsan CFLAGS="$(TSAN_CFLAGS)" build-tsan/libricochet.a
 	$(CC) $(CSTD) $(WARN) -pthread -Iinclude $(TSAN_CFLAGS) -o build-tsan/tsan_threads tests/tsan/threads.c \
 	    build-tsan/libricochet.a $(LDLIBS) $(foreach f,$(TSAN_WRAP),-Wl,--wrap=$(f))

@@ -20,7 +20,7 @@ import xml.etree.ElementTree as ET
 try:
     import vtk
 except ImportError as exc:  # pragma: no cover
-    sys.exit(f"vtk_frame.py: {exc}; install python3-vtk9 (scripts/install-deps.sh)")
+    sys.exit(f"vtk_frame.py: {exc}; install python3-vtk9 (scripts/install-deps.sh test)")
 
 
 def datasets(pvd):

@@ -528,7 +528,7 @@ if /usr/bin/python3 -c 'import vtk, netCDF4' 2>/dev/null; then
     else echo "SKIP vtk.render: no display and no xvfb-run (package xvfb)"; pre=""; fi
     $pre /usr/bin/python3 tests/vtk_readback.py "$tmp/short.nc" "$tmp/vtk" $render 2>&1 | grep -E '^(PASS|FAIL|SKIP) |Error'
 else
-    echo "SKIP vtk.readback: python3-vtk9 not installed (scripts/install-deps.sh installs it)"
+    echo "SKIP vtk.readback: python3-vtk9 not installed (scripts/install-deps.sh test installs it)"
 fi
 
 # the results file in xarray: ids as coordinates, the CF time axis decoded,
@@ -551,5 +551,5 @@ print(("PASS" if ok else "FAIL") + " cli.xarray: open_dataset decodes time as da
       f"{ds.sizes['impact']} impacts")
 PY
 else
-    echo "SKIP cli.xarray: python3-xarray not installed (scripts/install-deps.sh installs it)"
+    echo "SKIP cli.xarray: python3-xarray not installed (scripts/install-deps.sh test installs it)"
 fi

@@ -441,7 +441,7 @@ def test_study():
     try:
         import distributed  # noqa: F401
     except ImportError:
-        print("SKIP pyrun.study: python3-distributed not installed (scripts/install-deps.sh installs it)")
+        print("SKIP pyrun.study: python3-distributed not installed (scripts/install-deps.sh test installs it)")
         return
     zs = [0.0, -0.1, -0.25, -0.5]
     with warnings.catch_warnings():

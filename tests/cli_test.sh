@@ -452,6 +452,26 @@ else echo "FAIL cli.export_vtk_dt: exit $rc, $n .vtp files, $times frames ($(hea
 if [ "$rc" -eq 0 ] && grep -q "^usage: ricochet export-vtk RESULTS.nc \[options\]" "$tmp/x" && grep -q -- "--dt T" "$tmp/x"; then
     echo "PASS cli.export_vtk_help: exit 0, its own usage with --dt"
 else echo "FAIL cli.export_vtk_help: exit $rc: $(head -c 200 "$tmp/x")"; fi
+# ricochet study: the Python module's study runner on Dask (two friction
+# coefficients, two worker processes), from the program
+if /usr/bin/python3 -c "import distributed, xarray" 2>/dev/null; then
+    echo '{"/INTER/TYPE6/1:Fric": [0.1, 0.3]}' > "$tmp/grid.json"
+    abin=$(cd "$(dirname "$bin")" && pwd)/$(basename "$bin")
+    root=$(pwd)
+    (cd "$tmp" && "$abin" study "$root/cases/t6_hysteresis_drop.rad" --grid grid.json --workers 2 -o study.nc) > "$tmp/x" 2>&1; rc=$?
+    if [ "$rc" -eq 0 ] && /usr/bin/python3 -c "
+import sys, xarray as xr
+d = xr.open_dataset('$tmp/study.nc')
+sys.exit(not (list(d['status'].values) == [0, 0] and list(d['INTER_TYPE6_1_Fric'].values) == [0.1, 0.3]))"; then
+        echo "PASS cli.study: ricochet study ran 2 cases on Dask, status 0 0, Fric 0.1 0.3"
+    else echo "FAIL cli.study: exit $rc: $(tail -c 300 "$tmp/x")"; fi
+    RICOCHET_PYTHON=/nonexistent/python "$bin" study x > "$tmp/x" 2>&1; rc=$?
+    if [ "$rc" -eq 2 ] && grep -q "cannot start /nonexistent/python" "$tmp/x"; then
+        echo "PASS cli.study_no_python: exit 2, $(head -c 100 "$tmp/x")"
+    else echo "FAIL cli.study_no_python: exit $rc: $(head -c 200 "$tmp/x")"; fi
+else
+    echo "SKIP cli.study: python3-distributed not installed (scripts/install-deps.sh test installs it)"
+fi
 "$bin" export-vtk "$tmp/short.nc" --dt -1 > "$tmp/x" 2>&1; rc=$?
 if [ "$rc" -eq 2 ] && grep -q "expected a positive number of seconds" "$tmp/x"; then
     echo "PASS cli.export_vtk_bad_dt: exit 2, $(head -c 100 "$tmp/x")"

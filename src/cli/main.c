@@ -1,4 +1,5 @@
 /* ricochet command-line program: run, check, --help (also per command), --version. */
+#include <errno.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
@@ -20,6 +21,8 @@ static void usage(FILE *f)
             "       ricochet check CASE [--set CARD:FIELD=VALUE]...\n"
             "                                            read and compile a case, print the model summary\n"
             "       ricochet export-vtk RESULTS.nc [-o DIR] [--dt T]  ParaView files (.pvd + .vtp)\n"
+            "       ricochet study CASE --grid FILE [--scheduler ADDRESS] [-o STUDY.nc] ...\n"
+            "                                            a parameter study on Dask (the Python module)\n"
             "       ricochet COMMAND --help              the options of a command\n"
             "       ricochet --help | --version\n"
             "exit codes: 0 success, 2 input error, 3 solver failure, 4 I/O error, 5 physics check failed,\n"
@@ -216,6 +219,52 @@ static int export_vtk(int argc, char **argv)
     return 0;
 }
 
+/* `ricochet study ...`: the Python module's study runner, `python3 -m
+ * ricochet study ...` (docs/python.md), which runs the cases on Dask. The
+ * program in a build directory of a source tree (python/ricochet beside
+ * it, one level up) puts that tree's module first on PYTHONPATH and, unless
+ * RICOCHET_LIB is set, names its own shared library; an installed program
+ * leaves both to python3 (the module installed with it finds the installed
+ * library). The interpreter: RICOCHET_PYTHON, else Debian's /usr/bin/python3
+ * (where scripts/install-deps.sh puts numpy, xarray and Dask). Returns only
+ * when it cannot be started (exit code 2). */
+static int study(int argc, char **argv)
+{
+    char exe[4096];
+    const ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    char *slash = n > 0 ? (exe[n] = '\0', strrchr(exe, '/')) : NULL;
+    if (slash) {
+        *slash = '\0';
+        char py[4200], probe[4300], lib[4200];
+        snprintf(py, sizeof py, "%s/../python", exe);
+        snprintf(probe, sizeof probe, "%s/ricochet/__init__.py", py);
+        if (access(probe, R_OK) == 0) {
+            const char *old = getenv("PYTHONPATH");
+            char path[8400];
+            snprintf(path, sizeof path, "%s%s%s", py, old && *old ? ":" : "", old && *old ? old : "");
+            setenv("PYTHONPATH", path, 1);
+            snprintf(lib, sizeof lib, "%s/libricochet.so", exe);
+            if (!getenv("RICOCHET_LIB") && access(lib, R_OK) == 0) setenv("RICOCHET_LIB", lib, 1);
+        }
+    }
+    char **av = calloc((size_t)argc + 3, sizeof *av);
+    if (!av) {
+        fprintf(stderr, "ricochet: study: out of memory\n");
+        return 2;
+    }
+    const char *python = getenv("RICOCHET_PYTHON") && *getenv("RICOCHET_PYTHON") ? getenv("RICOCHET_PYTHON") : "/usr/bin/python3";
+    av[0] = (char *)python;
+    av[1] = "-m";
+    av[2] = "ricochet";
+    for (int k = 1; k < argc; k++) av[2 + k] = argv[k]; /* "study" and its arguments */
+    execv(python, av);
+    fprintf(stderr, "ricochet: study: cannot start %s (%s): the studies run in ricochet's Python module "
+                    "(docs/python.md; RICOCHET_PYTHON names another interpreter)\n",
+            python, strerror(errno));
+    free(av);
+    return 2;
+}
+
 int main(int argc, char **argv)
 {
     /* SIGHUP (the terminal closed), SIGINT, SIGTERM: end the run at the next
@@ -244,6 +293,7 @@ int main(int argc, char **argv)
         return 0;
     }
     if (!strcmp(argv[1], "export-vtk")) return export_vtk(argc, argv);
+    if (!strcmp(argv[1], "study")) return study(argc, argv);
     const char *cmd = argv[1], *case_path = NULL, *out = NULL;
     const int is_run = !strcmp(cmd, "run");
     if (!is_run && strcmp(cmd, "check")) {

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Render one record of a `ricochet export-vtk` time series to a PNG, off screen.
+"""Render one frame of a `ricochet export-vtk` time series to a PNG, off screen.
 
     python3 scripts/vtk_frame.py DIR/STEM.pvd OUT.png [--time T | --record K]
                                  [--size WxH] [--force-scale S]
@@ -7,13 +7,16 @@
 Draws the bodies (coloured by body id, surfaces fixed in space grey), the
 contact points and the normal contact forces on the first body of each
 contact as arrows (length S x force [m/N]; default: the largest force of
-the record draws as long as the largest body), and prints
-the record drawn. Without --time or --record: the record of the largest
-normal force. Needs Debian's python3-vtk9; on a machine without a display
+the frame draws as long as the largest body), and prints
+the frame drawn. --record K: the K-th frame of the series, from 0 (the
+results file's record K when the series holds every record, export-vtk
+--every 1); --time T: the frame nearest T [s]; neither: the frame of the
+largest normal force. Needs Debian's python3-vtk9; on a machine without a display
 run it under xvfb-run (package xvfb).
 """
 import argparse
 import os
+import re
 import sys
 import xml.etree.ElementTree as ET
 
@@ -177,13 +180,15 @@ def main():
     else:
         k = peak_record(recs)
     t, bpath, cpath = recs[k]
+    m = re.search(r"_bodies_(\d+)\.vtp$", bpath)
+    rec = int(m.group(1)) if m else k
     contacts = read(cpath)
     fn = contacts.GetPointData().GetArray("force_normal")
     fmax = max((fn.GetValue(i) for i in range(fn.GetNumberOfTuples())), default=0.0) if fn else 0.0
     w, h = (int(x) for x in a.size.split("x"))
     render(read(bpath), contacts, a.png, (w, h), a.force_scale,
-           f"t = {t:.6g} s, record {k}, largest normal force {fmax:.4g} N")
-    print(f"{a.png}: record {k}, t = {t:.9g} s")
+           f"t = {t:.6g} s, record {rec}, largest normal force {fmax:.4g} N")
+    print(f"{a.png}: frame {k}, record {rec}, t = {t:.9g} s")
 
 
 if __name__ == "__main__":

@@ -419,10 +419,14 @@ else echo "FAIL cli.determinism: runs differ"; fi
 # rendered off screen (xvfb-run when there is no display)
 sed 's/^                   1              0.0001$/                 0.3               0.001/' "$demo" > "$tmp/short.rad"
 "$bin" run "$tmp/short.rad" -o "$tmp/short.nc" -q > "$tmp/e" 2>&1
+# (the default: the 301 records at the output times, binary)
 "$bin" export-vtk "$tmp/short.nc" -o "$tmp/vtk" > "$tmp/x" 2>&1; rc=$?
 n=$(ls "$tmp/vtk" 2>/dev/null | grep -c '\.vtp$')
-if [ -f "$tmp/vtk/short.pvd" ] && [ "$n" -gt 0 ]; then expect export_vtk 0 $rc "($n .vtp files; $(head -c 120 "$tmp/x"))"
-else expect export_vtk 0 99 "(exit $rc: $(head -c 200 "$tmp/x"))"; fi
+if [ -f "$tmp/vtk/short.pvd" ] && [ "$n" -eq 602 ] && grep -q '(301 frames, 603 files, .* MB binary, the output times (default))' "$tmp/x" &&
+   head -c 300 "$tmp/vtk/short_bodies_000000.vtp" | grep -q 'byte_order="LittleEndian" header_type="UInt64"' &&
+   grep -q '<AppendedData encoding="raw">' "$tmp/vtk/short_bodies_000000.vtp"; then
+    expect export_vtk 0 $rc "($n .vtp files, appended raw binary; $(head -c 160 "$tmp/x"))"
+else expect export_vtk 0 99 "(exit $rc, $n .vtp files: $(head -c 200 "$tmp/x"))"; fi
 # check shows the gravity in SI; a deck in mm with gravity left at -9.81
 # (9.81 mm/s^2) is warned about, the demo (in m) is not
 sed 's/^                  kg                   m                   s$/                  kg                  mm                   s/' "$demo" > "$tmp/mm.rad"
@@ -445,13 +449,78 @@ else echo "FAIL cli.no_contact_note: exit $rc: $(grep '^contacts:' "$tmp/x" | he
 "$bin" export-vtk --dt 0.05 "$tmp/short.nc" -o "$tmp/vtkdt" > "$tmp/x" 2>&1; rc=$?
 n=$(ls "$tmp/vtkdt" 2>/dev/null | grep -c '\.vtp$')
 times=$(grep -o 'part="0" file' "$tmp/vtkdt/short.pvd" 2>/dev/null | wc -l)
-if [ "$rc" -eq 0 ] && [ "$n" -eq 14 ] && [ "$times" -eq 7 ] && grep -q '(7 frames)' "$tmp/x"; then
+if [ "$rc" -eq 0 ] && [ "$n" -eq 14 ] && [ "$times" -eq 7 ] && grep -q '(7 frames, 15 files, ' "$tmp/x"; then
     echo "PASS cli.export_vtk_dt: --dt 0.05 on a 0.3 s run: $n .vtp files, $times frames ($(head -c 100 "$tmp/x"))"
 else echo "FAIL cli.export_vtk_dt: exit $rc, $n .vtp files, $times frames ($(head -c 200 "$tmp/x"))"; fi
 "$bin" export-vtk --help > "$tmp/x" 2>&1; rc=$?
-if [ "$rc" -eq 0 ] && grep -q "^usage: ricochet export-vtk RESULTS.nc \[options\]" "$tmp/x" && grep -q -- "--dt T" "$tmp/x"; then
-    echo "PASS cli.export_vtk_help: exit 0, its own usage with --dt"
+if [ "$rc" -eq 0 ] && grep -q "^usage: ricochet export-vtk RESULTS.nc \[options\]" "$tmp/x" && grep -q -- "--dt T *one frame per T seconds" "$tmp/x" &&
+   grep -q -- "--every N *every N-th record" "$tmp/x" && grep -q -- "--ascii *ASCII data arrays" "$tmp/x" && grep -q "at most 1000 frames" "$tmp/x"; then
+    echo "PASS cli.export_vtk_help: exit 0, its own usage with --dt (seconds), --every, --ascii and the default"
 else echo "FAIL cli.export_vtk_help: exit $rc: $(head -c 200 "$tmp/x")"; fi
+# export-vtk --every 10: records 0, 10, 20, ...: ceil(records / 10) frames
+nrec=$(ncdump -h "$tmp/short.nc" 2>/dev/null | sed -n 's/^[[:space:]]*time = UNLIMITED ; \/\/ (\([0-9]*\) currently).*/\1/p')
+"$bin" export-vtk "$tmp/short.nc" --every 10 -o "$tmp/vtk10" > "$tmp/x" 2>&1; rc=$?
+want=$(( (${nrec:-0} + 9) / 10 ))
+times=$(grep -c 'part="0" file' "$tmp/vtk10/short.pvd" 2>/dev/null)
+if [ "$rc" -eq 0 ] && [ "${nrec:-0}" -gt 0 ] && [ "$times" = "$want" ] && grep -q "($want frames, " "$tmp/x" &&
+   grep -q 'file="short_bodies_000010.vtp"' "$tmp/vtk10/short.pvd" && ! grep -q 'short_bodies_000001.vtp' "$tmp/vtk10/short.pvd"; then
+    echo "PASS cli.export_vtk_every: --every 10 on $nrec records: $times frames (ceil($nrec / 10))"
+else echo "FAIL cli.export_vtk_every: exit $rc, $times frames for $nrec records, want $want ($(head -c 200 "$tmp/x"))"; fi
+"$bin" export-vtk "$tmp/short.nc" --every 0 > "$tmp/x" 2>&1; rc=$?
+"$bin" export-vtk "$tmp/short.nc" --every 2 --dt 0.1 > "$tmp/y" 2>&1; rc2=$?
+if [ "$rc" -eq 2 ] && grep -q "expected a whole number of records >= 1" "$tmp/x" && [ "$rc2" -eq 2 ] && grep -q "expected one of them" "$tmp/y"; then
+    echo "PASS cli.export_vtk_bad_every: --every 0 and --every with --dt: exit 2 ($(head -c 80 "$tmp/x"))"
+else echo "FAIL cli.export_vtk_bad_every: exit $rc / $rc2: $(head -c 200 "$tmp/x") $(head -c 200 "$tmp/y")"; fi
+# export-vtk --ascii: the same frames in ASCII, read back by VTK equal to
+# the binary ones (every record: the event records' too)
+"$bin" export-vtk "$tmp/short.nc" --every 1 --ascii -o "$tmp/vtka" > "$tmp/x" 2>&1; rc=$?
+"$bin" export-vtk "$tmp/short.nc" --every 1 -o "$tmp/vtkb" > "$tmp/y" 2>&1; rc2=$?
+if [ "$rc" -eq 0 ] && [ "$rc2" -eq 0 ] && grep -q "MB ASCII" "$tmp/x" && grep -q 'format="ascii"' "$tmp/vtka/short_bodies_000000.vtp" &&
+   ! grep -q 'AppendedData' "$tmp/vtka/short_bodies_000000.vtp" && /usr/bin/python3 -c 'import vtk' 2>/dev/null; then
+    res=$(/usr/bin/python3 - "$tmp/vtka" "$tmp/vtkb" <<'PY' 2>&1
+import glob, os, sys
+import numpy as np, vtk
+from vtk.util.numpy_support import vtk_to_numpy
+def read(p):
+    r = vtk.vtkXMLPolyDataReader(); r.SetFileName(p); r.Update(); return r.GetOutput()
+def arrays(p):
+    d = read(p); out = {}
+    if d.GetPoints() is not None: out["Points"] = vtk_to_numpy(d.GetPoints().GetData())
+    for kind in ("GetPointData", "GetCellData", "GetFieldData"):
+        a = getattr(d, kind)()
+        for i in range(a.GetNumberOfArrays()):
+            x = a.GetAbstractArray(i)
+            out[kind + x.GetName()] = ([x.GetValue(j) for j in range(x.GetNumberOfValues())]
+                                       if isinstance(x, vtk.vtkStringArray) else vtk_to_numpy(x))
+    out["polys"] = vtk_to_numpy(d.GetPolys().GetData()) if d.GetNumberOfPolys() else None
+    return out
+files = sorted(os.path.basename(f) for f in glob.glob(sys.argv[1] + "/*.vtp"))
+bad, n = 0, 0
+for f in files[:: max(1, len(files) // 40)] + [f for f in files if "contacts" in f][:5]:
+    a, b = arrays(os.path.join(sys.argv[1], f)), arrays(os.path.join(sys.argv[2], f))
+    n += 1
+    bad += a.keys() != b.keys() or any(not np.array_equal(np.asarray(a[k], dtype=object), np.asarray(b[k], dtype=object)) for k in a)
+print(n, bad, len(files))
+PY
+)
+    set -- $res
+    if [ "${1:-0}" -gt 10 ] && [ "${2:-1}" = 0 ]; then
+        echo "PASS cli.export_vtk_ascii: --ascii: $3 .vtp files; $1 of them read back by VTK equal to the binary ones ($(head -c 90 "$tmp/x"))"
+    else echo "FAIL cli.export_vtk_ascii: got '$res'"; fi
+elif [ "$rc" -ne 0 ] || [ "$rc2" -ne 0 ] || ! grep -q 'format="ascii"' "$tmp/vtka/short_bodies_000000.vtp"; then
+    echo "FAIL cli.export_vtk_ascii: exit $rc / $rc2: $(head -c 200 "$tmp/x")"
+else echo "SKIP cli.export_vtk_ascii: python3-vtk9 not installed (the ASCII files written)"; fi
+# export-vtk of the 1 s demo with the defaults ($tmp/a.nc above: 10 001
+# output times at Dt_out 0.1 ms, more than 1000, so one frame per 2 ms): 501
+# frames, under 20 MB
+start=$(date +%s.%N)
+"$bin" export-vtk "$tmp/a.nc" -o "$tmp/demovtk" > "$tmp/x" 2>&1; rc=$?
+secs=$(echo "$(date +%s.%N) $start" | awk '{printf "%.2f", $1 - $2}')
+bytes=$(cat "$tmp/demovtk"/* 2>/dev/null | wc -c)
+times=$(grep -c 'part="0" file' "$tmp/demovtk/a.pvd" 2>/dev/null)
+if [ "$rc" -eq 0 ] && [ "$times" = 501 ] && [ "$bytes" -lt 20000000 ] && grep -q "(501 frames, 1003 files, .* MB binary, one per 0.002 s (default))" "$tmp/x"; then
+    echo "PASS cli.export_vtk_demo_size: the 1 s demo by default: $times frames, $bytes bytes (< 20 MB), $secs s"
+else echo "FAIL cli.export_vtk_demo_size: exit $rc, $times frames, $bytes bytes ($(head -c 200 "$tmp/x"))"; fi
 # ricochet study: the Python module's study runner on Dask (two friction
 # coefficients, two worker processes), from the program
 if /usr/bin/python3 -c "import distributed, xarray" 2>/dev/null; then

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Read a `ricochet export-vtk` series back with VTK and compare it with the
-results file; render one record off screen.
+results file; render one frame off screen. The series may hold every record
+or a subset (the default's output times, --dt, --every), binary or ASCII.
 
     python3 tests/vtk_readback.py RESULTS.nc DIR [PNG]
 
@@ -10,6 +11,7 @@ python3-netcdf4; the rendering needs a display (run under xvfb-run).
 """
 import math
 import os
+import re
 import sys
 import xml.etree.ElementTree as ET
 
@@ -49,22 +51,35 @@ def main():
     nrec = len(t)
     root = ET.parse(os.path.join(out, stem + ".pvd")).getroot()
     sets = list(root.iter("DataSet"))
+    # the frames: a subset of the records (export-vtk's default, --dt,
+    # --every), each file named by its record's number
+    recs = [int(re.search(r"_bodies_(\d+)\.vtp$", s.get("file")).group(1)) for s in sets[::2]]
     steps = np.array([float(s.get("timestep")) for s in sets[::2]])
-    check("pvd", len(sets) == 2 * nrec and np.array_equal(steps, t),
-          f"{len(sets)} data sets for {nrec} records, time steps equal to the file's time")
+    parts_ok = all(s.get("part") == str(i % 2) for i, s in enumerate(sets)) and all(
+        sets[2 * i + 1].get("file") == f"{stem}_contacts_{k:06d}.vtp" for i, k in enumerate(recs))
+    with open(os.path.join(out, sets[0].get("file")), "rb") as f:
+        head = f.read(4096)
+    fmt = ("appended raw binary" if b'format="appended"' in head and b'header_type="UInt64"' in head
+           else "ASCII" if b'format="ascii"' in head else "unknown")
+    check("pvd", len(sets) == 2 * len(recs) and parts_ok and recs == sorted(set(recs)) and len(recs) > 0
+          and recs[-1] == nrec - 1 and np.array_equal(steps, t[recs]),
+          f"{len(recs)} frames ({fmt}) of {nrec} records, the last included, "
+          f"time steps equal to the file's time at those records")
     kinds = list(ds["surface_kind"][:])
     npts = {"SPHERE": 2 + 11 * 24, "PLANE": 4, "CYLINDER": 48, "BOX": 8}
     want_pts = sum(npts[k] for k in kinds)
     body_ids = list(ds["body"][:])
     sbody = list(ds["surface_body"][:])
     pos, vel = ds["body_position"], ds["body_velocity"]
-    # records: first, peak normal force, last
+    # frames: first, peak normal force (of the frames), last
     fn_all = ds["inter_force_normal"][:, 0] if "inter" in ds.dimensions else np.zeros(nrec)
-    kpeak = int(np.argmax(fn_all))
+    ipeak = int(np.argmax(np.asarray(fn_all)[recs]))
+    kpeak = recs[ipeak]
     worst = {"pts": 0.0, "centre": 0.0, "vel": 0.0, "contact": 0.0}
     count_ok = True
-    for k in sorted({0, kpeak, nrec - 1}):
-        b = read(os.path.join(out, sets[2 * k].get("file")))
+    for i in sorted({0, ipeak, len(recs) - 1}):
+        k = recs[i]
+        b = read(os.path.join(out, sets[2 * i].get("file")))
         count_ok &= b.GetNumberOfPoints() == want_pts
         p = vtk_to_numpy(b.GetPoints().GetData())
         sid = vtk_to_numpy(b.GetPointData().GetArray("surface_id"))
@@ -81,7 +96,7 @@ def main():
             worst["centre"] = max(worst["centre"], float(np.abs(centre - pos[k, bi, :]).max()),
                                   float(np.abs(r - ds["surface_radius"][j]).max()))
             worst["vel"] = max(worst["vel"], float(np.abs(v[sel] - vel[k, bi, :]).max()))
-        c = read(os.path.join(out, sets[2 * k + 1].get("file")))
+        c = read(os.path.join(out, sets[2 * i + 1].get("file")))
         if "inter" in ds.dimensions:
             cp = vtk_to_numpy(c.GetPoints().GetData())
             cf = vtk_to_numpy(c.GetPointData().GetArray("force_normal"))
@@ -99,8 +114,8 @@ def main():
           f"(max difference {worst['contact']:.1e})")
     # events: every row of the events table once, in order, kinds as strings
     ev_t, ev_k = [], []
-    for k in range(nrec):
-        c = read(os.path.join(out, sets[2 * k + 1].get("file")))
+    for i in range(len(recs)):
+        c = read(os.path.join(out, sets[2 * i + 1].get("file")))
         fd = c.GetFieldData()
         n = fd.GetArray("event_count").GetValue(0)
         if n:
@@ -112,8 +127,8 @@ def main():
           f"{len(ev_t)} events in the field data, {len(want_t)} in the file, times and kinds equal")
     if png:
         import vtk_frame
-        b = read(os.path.join(out, sets[2 * kpeak].get("file")))
-        c = read(os.path.join(out, sets[2 * kpeak + 1].get("file")))
+        b = read(os.path.join(out, sets[2 * ipeak].get("file")))
+        c = read(os.path.join(out, sets[2 * ipeak + 1].get("file")))
         vtk_frame.render(b, c, png, (400, 300), None, f"t = {t[kpeak]:.6g} s")
         r = vtk.vtkPNGReader()
         r.SetFileName(png)

@@ -430,19 +430,58 @@ void rc_stats_print(const rc_stats *s, FILE *f);
 
 /* ---- Export ------------------------------------------------------------ */
 
-/* Write a ParaView time series of a results file: DIR/<stem>.pvd listing
- * one VTK XML PolyData file per record for the bodies (surfaces
- * tessellated) and one for the contacts (points with force vectors, the
- * events since the previous record as field data); docs/output-format.md.
- * DIR is created when missing. *nframes (may be NULL) receives the number
- * of records exported. RC_EIO when a file cannot be read or written,
- * RC_EINPUT when the results file lacks the variables needed, or for a
- * NULL results_path or dir. */
+/* Write a ParaView time series of a results file: DIR/<stem>.pvd listing,
+ * per frame, one VTK XML PolyData file of the bodies (surfaces
+ * tessellated) and one of the contacts (points with force vectors, the
+ * events since the previous frame as field data); docs/output-format.md.
+ * The data arrays are in VTK's appended raw binary format (little-endian,
+ * UInt64 block headers; Float64 values, Int32 ids) unless opt->ascii.
+ *
+ * Frames (opt may be NULL: all defaults):
+ *   - dt > 0 [s]: one frame per dt at most: the first record at or after
+ *     each multiple of dt, and the last record;
+ *   - every > 0: records 0, every, 2 every, ... (ceil(records / every)
+ *     frames; every = 1: every record, the event records included);
+ *   - neither (the default): the records at the output times (/RUN Dt_out;
+ *     not the extra records at events), thinned when there are more than
+ *     RC_VTK_DEFAULT_MAX_FRAMES of them to one per dt, dt the smallest 1, 2
+ *     or 5 x 10^k s giving at most that many frames; and the last record.
+ *     (The 1 s demo at Dt_out 0.1 ms: 501 frames, one per 2 ms.)
+ * dt and every together, a negative or non-finite dt or a negative every:
+ * RC_EINPUT, nothing written.
+ *
+ * DIR is created when missing; files of an earlier export there are
+ * replaced, not removed. `result` (may be NULL) receives the frames and
+ * bytes written, also when the export fails part way (what was written).
+ * The results file is opened first: one that cannot be read leaves no
+ * directory behind. RC_EIO when a file cannot be read or written, RC_EINPUT
+ * when the results file lacks the variables needed, for a NULL
+ * results_path or dir, or for options as above. */
+typedef struct rc_vtk_options {
+    double dt;  /* > 0: one frame per dt [s] at most; 0: not used        */
+    int every;  /* > 0: every N-th record; 0: not used                  */
+    int ascii;  /* 1: ASCII data arrays (larger and slower to write and
+                   read; for reading the files by eye); 0: appended raw
+                   binary                                              */
+} rc_vtk_options;
+#define RC_VTK_DEFAULT_MAX_FRAMES 1000
+typedef struct rc_vtk_result {
+    int frames;       /* time steps in the .pvd (two files each)       */
+    double bytes;     /* bytes written, the .pvd included              */
+    double dt_used;   /* the default's frame interval [s]; 0 when the
+                         output times were taken as they are, or when
+                         dt or every was given                          */
+} rc_vtk_result;
+rc_status rc_export_vtk_opts(const char *results_path, const char *dir, const rc_vtk_options *opt,
+                             rc_vtk_result *result, rc_error *err);
+/* Every record, in binary (rc_export_vtk_opts with every = 1). *nframes
+ * (may be NULL) receives the number of frames written. NULL results_path
+ * or dir: RC_EINPUT. */
 rc_status rc_export_vtk(const char *results_path, const char *dir, int *nframes, rc_error *err);
-/* The same, one frame per dt [s] at most: the first record at or after
- * each multiple of dt, and the last (dt = 0: every record, as
- * rc_export_vtk). A frame's contacts file holds the events since the
- * previous frame. RC_EINPUT for a dt below 0 or not finite. */
+/* One frame per dt [s] at most, in binary (rc_export_vtk_opts with this
+ * dt; dt = 0: every record, as rc_export_vtk). A frame's contacts file
+ * holds the events since the previous frame. RC_EINPUT for a dt below 0
+ * or not finite, or a NULL results_path or dir. */
 rc_status rc_export_vtk_dt(const char *results_path, const char *dir, double dt, int *nframes, rc_error *err);
 
 #ifdef __cplusplus

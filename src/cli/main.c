@@ -20,7 +20,8 @@ static void usage(FILE *f)
             "                                            run a case, write results (default: CASE stem + .nc)\n"
             "       ricochet check CASE [--set CARD:FIELD=VALUE]...\n"
             "                                            read and compile a case, print the model summary\n"
-            "       ricochet export-vtk RESULTS.nc [-o DIR] [--dt T]  ParaView files (.pvd + .vtp)\n"
+            "       ricochet export-vtk RESULTS.nc [-o DIR] [--dt T | --every N] [--ascii]\n"
+            "                                            ParaView files (.pvd + binary .vtp)\n"
             "       ricochet study CASE --grid FILE [--scheduler ADDRESS] [-o STUDY.nc] ...\n"
             "                                            a parameter study on Dask (the Python module)\n"
             "       ricochet COMMAND --help              the options of a command\n"
@@ -159,26 +160,40 @@ static void usage_export(FILE *f)
             "Write a ParaView time series of a results file: DIR/<stem>.pvd and, per frame, one VTK XML\n"
             "PolyData file of the bodies (surfaces tessellated, their velocities) and one of the contacts\n"
             "(points with force vectors, the events since the previous frame) (docs/output-format.md).\n"
+            "Values in SI units (m, m/s, N, s), as in the results file.\n"
             "options (in any order after RESULTS.nc):\n"
             "  -o DIR         where to write (created when missing; default: the results' stem + _vtk)\n"
             "  --dt T         one frame per T seconds at most: the first record at or after each multiple\n"
-            "                 of T, and the last (default: every record, events' included)\n"
+            "                 of T, and the last\n"
+            "  --every N      every N-th record (records 0, N, 2N, ...; N = 1: every record, the event\n"
+            "                 records included); not with --dt\n"
+            "                 default (neither): the records at the output times (/RUN Dt_out, not the\n"
+            "                 event records), at most %d frames: when there are more, one per T s,\n"
+            "                 T the smallest 1, 2 or 5 x 10^k s giving at most %d; and the last record\n"
+            "  --ascii        ASCII data arrays instead of appended raw binary (larger and slower to\n"
+            "                 write and read; to read the files by eye)\n"
             "  -h, --help     this text\n"
-            "exit codes: 0 success, 2 usage error, 4 I/O error (a file that cannot be read or written)\n");
+            "prints the frames written, the size in MB (10^6 bytes) and the frame interval chosen.\n"
+            "exit codes: 0 success, 2 usage error, 4 I/O error (a file that cannot be read or written)\n",
+            RC_VTK_DEFAULT_MAX_FRAMES, RC_VTK_DEFAULT_MAX_FRAMES);
 }
 
-/* ricochet export-vtk RESULTS.nc [-o DIR] [--dt T] (docs/output-format.md). */
+/* ricochet export-vtk RESULTS.nc [-o DIR] [--dt T | --every N] [--ascii] (docs/output-format.md). */
 static int export_vtk(int argc, char **argv)
 {
     const char *in = NULL, *dir = NULL;
-    double dt = 0.0;
+    rc_vtk_options o = {0};
     for (int k = 2; k < argc; k++) {
         const char *a = argv[k];
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
             usage_export(stdout);
             return 0;
         }
-        if (!strcmp(a, "-o") || !strcmp(a, "--dt")) {
+        if (!strcmp(a, "--ascii")) {
+            o.ascii = 1;
+            continue;
+        }
+        if (!strcmp(a, "-o") || !strcmp(a, "--dt") || !strcmp(a, "--every")) {
             if (k + 1 >= argc) {
                 fprintf(stderr, "ricochet export-vtk: %s needs a value\n", a);
                 usage_export(stderr);
@@ -189,8 +204,19 @@ static int export_vtk(int argc, char **argv)
                 continue;
             }
             char *end = NULL;
-            dt = strtod(argv[++k], &end);
-            if (!end || *end || end == argv[k] || !(dt > 0) || !isfinite(dt)) {
+            errno = 0;
+            if (!strcmp(a, "--every")) {
+                const long v = strtol(argv[++k], &end, 10);
+                if (!end || *end || end == argv[k] || errno || v < 1 || v > 1000000000L) {
+                    fprintf(stderr, "ricochet export-vtk: --every %s: expected a whole number of records >= 1\n",
+                            argv[k]);
+                    return 2;
+                }
+                o.every = (int)v;
+                continue;
+            }
+            o.dt = strtod(argv[++k], &end);
+            if (!end || *end || end == argv[k] || !(o.dt > 0) || !isfinite(o.dt)) {
                 fprintf(stderr, "ricochet export-vtk: --dt %s: expected a positive number of seconds\n", argv[k]);
                 return 2;
             }
@@ -208,14 +234,22 @@ static int export_vtk(int argc, char **argv)
         usage_export(stderr);
         return 2;
     }
+    if (o.dt > 0 && o.every > 0) {
+        fprintf(stderr, "ricochet export-vtk: --dt and --every together; expected one of them\n");
+        return 2;
+    }
     char def[1024];
     const char *b = strrchr(in, '/'), *dot = strrchr(b ? b + 1 : in, '.');
     snprintf(def, sizeof def, "%.*s_vtk", (int)(dot && dot != (b ? b + 1 : in) ? dot - (b ? b + 1 : in) : 1000),
              b ? b + 1 : in);
     rc_error e;
-    int n = 0;
-    if (rc_export_vtk_dt(in, dir ? dir : def, dt, &n, &e)) return fail(&e);
-    printf("ricochet %s: %s -> %s/ (%d frames)\n", rc_version(), in, dir ? dir : def, n);
+    rc_vtk_result r;
+    if (rc_export_vtk_opts(in, dir ? dir : def, &o, &r, &e)) return fail(&e);
+    char how[96] = "";
+    if (r.dt_used > 0) snprintf(how, sizeof how, ", one per %g s (default)", r.dt_used);
+    else if (o.dt <= 0 && o.every <= 0) snprintf(how, sizeof how, ", the output times (default)");
+    printf("ricochet %s: %s -> %s/ (%d frames, %d files, %.3g MB %s%s)\n", rc_version(), in, dir ? dir : def, r.frames,
+           2 * r.frames + 1, r.bytes / 1e6, o.ascii ? "ASCII" : "binary", how);
     return 0;
 }
 

@@ -16,6 +16,9 @@ typedef struct rc_output rc_output;
  * holds it across a callback. */
 void rc_nc_lock(void);
 void rc_nc_unlock(void);
+/* Tests only: 1 makes the ParaView export write its binary blocks
+ * byte-swapped, as on a big-endian host (vtk.c); 0 restores. */
+void rc_vtk_test_force_swap(int on);
 /* netCDF's version string ("4.9.0 of ..."), read under the lock. */
 const char *rc_output_netcdf_version(void);
 

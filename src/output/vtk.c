@@ -1,9 +1,12 @@
 /*
  * Export of a results file to ParaView: a .pvd collection of VTK XML
- * PolyData files (ASCII), written here without the VTK library
- * (docs/output-format.md, "ParaView export").
+ * PolyData files, written here without the VTK library
+ * (docs/output-format.md, "ParaView export"). The data arrays are in the
+ * appended raw binary format (UInt64 block headers, little-endian, Float64
+ * and Int32 values), or ASCII on request. The frames are chosen among the
+ * records (select_frames: the default's output times, dt or every N-th).
  *
- * Per record k of the results file:
+ * Per frame, record k of the results file:
  *   <stem>_bodies_<k>.vtp    the surfaces, tessellated in the frame of
  *                            their body and placed by its pose: spheres
  *                            (UV spheres), cylinders (side and flat ends;
@@ -26,8 +29,10 @@
 #include "base/error.h"
 
 #include <errno.h>
+#include <inttypes.h>
 #include <math.h>
 #include <netcdf.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -323,26 +328,115 @@ static int tessellate(mesh *m, const vtk_src *s, size_t j, const double pos[3], 
 
 /* ---- XML writing ---------------------------------------------------------- */
 
-static void xml_doubles(FILE *f, const char *name, int ncomp, const double *v, size_t n)
+/* 1 on a little-endian host (checked at run time: the binary files declare
+ * byte_order="LittleEndian", so a big-endian host swaps each value). */
+static int host_little_endian(void)
 {
-    fprintf(f, "<DataArray type=\"Float64\" Name=\"%s\" NumberOfComponents=\"%d\" NumberOfTuples=\"%zu\" format=\"ascii\">\n",
-            name, ncomp, n);
+    const uint16_t one = 1;
+    unsigned char b;
+    memcpy(&b, &one, 1);
+    return b == 1;
+}
+
+/* Tests only (output.h): write the binary blocks byte-swapped, as a
+ * big-endian host does. */
+static int vtk_force_swap = 0;
+void rc_vtk_test_force_swap(int on)
+{
+    vtk_force_swap = on;
+}
+
+/* A file being written: in binary, the data arrays' XML elements carry the
+ * offset of their block in the appended data; the blocks (each a UInt64
+ * byte count, then the bytes) follow the XML at the end of the file. */
+#define VTK_MAX_BLOCKS 32
+typedef struct vtkw {
+    FILE *f;
+    int ascii;
+    uint64_t off; /* bytes of the blocks so far */
+    int nblk;
+    struct {
+        const void *p;   /* values, or (elsize 0) an array of n strings */
+        size_t n, elsize;
+        uint64_t bytes;
+    } blk[VTK_MAX_BLOCKS];
+    int overflow;
+} vtkw;
+
+static void vtkw_block(vtkw *w, const void *p, size_t n, size_t elsize, uint64_t bytes)
+{
+    if (w->nblk == VTK_MAX_BLOCKS) {
+        w->overflow = 1;
+        return;
+    }
+    w->blk[w->nblk].p = p;
+    w->blk[w->nblk].n = n;
+    w->blk[w->nblk].elsize = elsize;
+    w->blk[w->nblk++].bytes = bytes;
+    w->off += sizeof(uint64_t) + bytes;
+}
+
+/* Write n values of elsize bytes, little-endian. */
+static void put_le(FILE *f, const void *p, size_t n, size_t elsize, int swap)
+{
+    if (!swap || elsize == 1) {
+        fwrite(p, elsize, n, f);
+        return;
+    }
+    unsigned char buf[4096];
+    const unsigned char *c = p;
+    const size_t per = sizeof buf / elsize;
+    for (size_t k = 0; k < n; k += per) {
+        const size_t m = n - k < per ? n - k : per;
+        for (size_t i = 0; i < m; i++)
+            for (size_t e = 0; e < elsize; e++) buf[i * elsize + e] = c[(k + i) * elsize + elsize - 1 - e];
+        fwrite(buf, elsize, m, f);
+    }
+}
+
+static void xml_doubles(vtkw *w, const char *name, int ncomp, const double *v, size_t n)
+{
+    FILE *f = w->f;
+    fprintf(f, "<DataArray type=\"Float64\" Name=\"%s\" NumberOfComponents=\"%d\" NumberOfTuples=\"%zu\" ", name, ncomp,
+            n);
+    if (!w->ascii) {
+        fprintf(f, "format=\"appended\" offset=\"%" PRIu64 "\"/>\n", w->off);
+        vtkw_block(w, v, n * (size_t)ncomp, sizeof *v, (uint64_t)(n * (size_t)ncomp * sizeof *v));
+        return;
+    }
+    fprintf(f, "format=\"ascii\">\n");
     for (size_t k = 0; k < n * (size_t)ncomp; k++) fprintf(f, "%.17g%c", v[k], (k + 1) % (size_t)ncomp ? ' ' : '\n');
     fprintf(f, "</DataArray>\n");
 }
 
-static void xml_ints(FILE *f, const char *name, const int *v, size_t n)
+static void xml_ints(vtkw *w, const char *name, const int *v, size_t n)
 {
-    fprintf(f, "<DataArray type=\"Int32\" Name=\"%s\" NumberOfComponents=\"1\" NumberOfTuples=\"%zu\" format=\"ascii\">\n",
-            name, n);
+    FILE *f = w->f;
+    fprintf(f, "<DataArray type=\"Int32\" Name=\"%s\" NumberOfComponents=\"1\" NumberOfTuples=\"%zu\" ", name, n);
+    if (!w->ascii) {
+        fprintf(f, "format=\"appended\" offset=\"%" PRIu64 "\"/>\n", w->off);
+        vtkw_block(w, v, n, sizeof *v, (uint64_t)(n * sizeof *v));
+        return;
+    }
+    fprintf(f, "format=\"ascii\">\n");
     for (size_t k = 0; k < n; k++) fprintf(f, "%d%c", v[k], (k + 1) % 16 && k + 1 < n ? ' ' : '\n');
     fprintf(f, "</DataArray>\n");
 }
 
-/* A vtkStringArray in ASCII: each string as its byte values, then 0. */
-static void xml_strings(FILE *f, const char *name, char *const *s, size_t n)
+/* A vtkStringArray: in binary the strings one after the other, each ended
+ * by a 0 byte; in ASCII each string as its byte values, then 0. */
+static void xml_strings(vtkw *w, const char *name, char *const *s, size_t n)
 {
-    fprintf(f, "<Array type=\"String\" Name=\"%s\" NumberOfTuples=\"%zu\" format=\"ascii\">\n", name, n);
+    FILE *f = w->f;
+    fprintf(f, "<Array type=\"String\" Name=\"%s\" NumberOfTuples=\"%zu\" ", name, n);
+    if (!w->ascii) {
+        uint64_t bytes = 0;
+        for (size_t k = 0; k < n; k++) bytes += (s[k] ? strlen(s[k]) : 0) + 1;
+        fprintf(f, "format=\"appended\" offset=\"%" PRIu64 "\"/>\n", w->off);
+        vtkw_block(w, s, n, 0, bytes);
+        return;
+    }
+    fprintf(f, "format=\"ascii\">\n");
     for (size_t k = 0; k < n; k++) {
         for (const unsigned char *c = (const unsigned char *)s[k]; c && *c; c++) fprintf(f, "%u ", *c);
         fprintf(f, "0\n");
@@ -350,36 +444,79 @@ static void xml_strings(FILE *f, const char *name, char *const *s, size_t n)
     fprintf(f, "</Array>\n");
 }
 
-static rc_status close_file(FILE *f, const char *path, rc_error *err)
+/* Open a .vtp file and write its opening element. */
+static rc_status vtkw_open(vtkw *w, const char *path, int ascii, rc_error *err)
 {
-    const int bad = ferror(f);
-    if (fclose(f) != 0 || bad) RC_RAISE(err, RC_EIO, "%s: cannot write: %s", path, strerror(errno));
+    memset(w, 0, sizeof *w);
+    w->ascii = ascii;
+    if (!(w->f = fopen(path, "wb"))) RC_RAISE(err, RC_EIO, "%s: cannot create: %s", path, strerror(errno));
+    fprintf(w->f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\"%s>\n"
+                  "<PolyData>\n",
+            ascii ? "" : " header_type=\"UInt64\"");
     return RC_OK;
 }
 
-/* Bodies file of record k. */
-static rc_status write_bodies(const char *path, const mesh *m, double t, rc_error *err)
+static rc_status close_file(FILE *f, const char *path, double *bytes, rc_error *err)
 {
-    FILE *f = fopen(path, "w");
-    if (!f) RC_RAISE(err, RC_EIO, "%s: cannot create: %s", path, strerror(errno));
-    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
-               "<PolyData>\n<FieldData>\n");
-    xml_doubles(f, "TimeValue", 1, &t, 1);
+    const int bad = ferror(f);
+    const long size = bad ? -1 : ftell(f);
+    if (fclose(f) != 0 || bad) RC_RAISE(err, RC_EIO, "%s: cannot write: %s", path, strerror(errno));
+    if (bytes && size > 0) *bytes += (double)size;
+    return RC_OK;
+}
+
+/* Close the PolyData element, write the appended blocks, close the file. */
+static rc_status vtkw_close(vtkw *w, const char *path, double *bytes, rc_error *err)
+{
+    FILE *f = w->f;
+    fprintf(f, "</PolyData>\n");
+    if (!w->ascii) {
+        const int swap = vtk_force_swap || !host_little_endian();
+        fprintf(f, "<AppendedData encoding=\"raw\">\n_");
+        for (int k = 0; k < w->nblk; k++) {
+            const uint64_t nb = w->blk[k].bytes;
+            put_le(f, &nb, 1, sizeof nb, swap);
+            if (w->blk[k].elsize > 0) put_le(f, w->blk[k].p, w->blk[k].n, w->blk[k].elsize, swap);
+            else
+                for (size_t i = 0; i < w->blk[k].n; i++) {
+                    const char *str = ((char *const *)w->blk[k].p)[i];
+                    fwrite(str ? str : "", 1, (str ? strlen(str) : 0) + 1, f);
+                }
+        }
+        fprintf(f, "\n</AppendedData>\n");
+    }
+    fprintf(f, "</VTKFile>\n");
+    if (w->overflow) {
+        fclose(f);
+        RC_RAISE(err, RC_EINTERNAL, "%s: more than %d data arrays in one file", path, VTK_MAX_BLOCKS);
+    }
+    return close_file(f, path, bytes, err);
+}
+
+/* Bodies file of record k. */
+static rc_status write_bodies(const char *path, const mesh *m, double t, int ascii, double *bytes, rc_error *err)
+{
+    vtkw w;
+    rc_status rc = vtkw_open(&w, path, ascii, err);
+    if (rc != RC_OK) return rc;
+    FILE *f = w.f;
+    fprintf(f, "<FieldData>\n");
+    xml_doubles(&w, "TimeValue", 1, &t, 1);
     fprintf(f, "</FieldData>\n<Piece NumberOfPoints=\"%d\" NumberOfVerts=\"0\" NumberOfLines=\"0\" "
                "NumberOfStrips=\"0\" NumberOfPolys=\"%d\">\n<PointData Scalars=\"body_id\" Vectors=\"velocity\">\n",
             m->np, m->npoly);
-    xml_ints(f, "body_id", m->body, (size_t)m->np);
-    xml_ints(f, "surface_id", m->surf, (size_t)m->np);
-    xml_doubles(f, "velocity", 3, m->vel, (size_t)m->np);
+    xml_ints(&w, "body_id", m->body, (size_t)m->np);
+    xml_ints(&w, "surface_id", m->surf, (size_t)m->np);
+    xml_doubles(&w, "velocity", 3, m->vel, (size_t)m->np);
     fprintf(f, "</PointData>\n<CellData Scalars=\"surface_id\">\n");
-    xml_ints(f, "surface_id", m->csurf, (size_t)m->npoly);
+    xml_ints(&w, "surface_id", m->csurf, (size_t)m->npoly);
     fprintf(f, "</CellData>\n<Points>\n");
-    xml_doubles(f, "Points", 3, m->pt, (size_t)m->np);
+    xml_doubles(&w, "Points", 3, m->pt, (size_t)m->np);
     fprintf(f, "</Points>\n<Polys>\n");
-    xml_ints(f, "connectivity", m->conn, (size_t)m->nconn);
-    xml_ints(f, "offsets", m->off, (size_t)m->npoly);
-    fprintf(f, "</Polys>\n</Piece>\n</PolyData>\n</VTKFile>\n");
-    return close_file(f, path, err);
+    xml_ints(&w, "connectivity", m->conn, (size_t)m->nconn);
+    xml_ints(&w, "offsets", m->off, (size_t)m->npoly);
+    fprintf(f, "</Polys>\n</Piece>\n");
+    return vtkw_close(&w, path, bytes, err);
 }
 
 /* The values of the contacts of one record. */
@@ -388,45 +525,46 @@ typedef struct contacts {
     int *mode, *seq;
 } contacts;
 
-/* Contacts file of record k with the events in (t_prev, t] (rows e0..e1). */
+/* Contacts file of a frame with the events in (t_prev, t] (rows e0..e1). */
 static rc_status write_contacts(const char *path, const vtk_src *s, const contacts *c, double t, size_t e0, size_t e1,
-                                rc_error *err)
+                                int ascii, double *bytes, rc_error *err)
 {
-    FILE *f = fopen(path, "w");
-    if (!f) RC_RAISE(err, RC_EIO, "%s: cannot create: %s", path, strerror(errno));
+    vtkw w;
+    rc_status rc = vtkw_open(&w, path, ascii, err);
+    if (rc != RC_OK) return rc;
+    FILE *f = w.f;
     const size_t ni = s->ninter, ne = e1 - e0;
-    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
-               "<PolyData>\n<FieldData>\n");
-    xml_doubles(f, "TimeValue", 1, &t, 1);
+    fprintf(f, "<FieldData>\n");
+    xml_doubles(&w, "TimeValue", 1, &t, 1);
     const int nev = (int)ne;
-    xml_ints(f, "event_count", &nev, 1);
+    xml_ints(&w, "event_count", &nev, 1);
     if (ne > 0) {
-        xml_doubles(f, "event_time", 1, s->ev_t + e0, ne);
-        xml_strings(f, "event_kind", s->ev_kind + e0, ne);
-        xml_strings(f, "event_element", s->ev_elem + e0, ne);
+        xml_doubles(&w, "event_time", 1, s->ev_t + e0, ne);
+        xml_strings(&w, "event_kind", s->ev_kind + e0, ne);
+        xml_strings(&w, "event_element", s->ev_elem + e0, ne);
     }
     fprintf(f, "</FieldData>\n<Piece NumberOfPoints=\"%zu\" NumberOfVerts=\"%zu\" NumberOfLines=\"0\" "
                "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
             ni, ni);
     if (ni > 0) {
         fprintf(f, "<PointData Scalars=\"force_normal\" Vectors=\"force_normal_vector\">\n");
-        xml_ints(f, "inter_id", s->inter_id, ni);
-        xml_ints(f, "mode", c->mode, ni);
-        xml_doubles(f, "penetration", 1, c->pen, ni);
-        xml_doubles(f, "force_normal", 1, c->fn, ni);
-        xml_doubles(f, "normal", 3, c->normal, ni);
-        xml_doubles(f, "force_normal_vector", 3, c->fvec, ni);
-        xml_doubles(f, "force_friction", 3, c->ffric, ni);
+        xml_ints(&w, "inter_id", s->inter_id, ni);
+        xml_ints(&w, "mode", c->mode, ni);
+        xml_doubles(&w, "penetration", 1, c->pen, ni);
+        xml_doubles(&w, "force_normal", 1, c->fn, ni);
+        xml_doubles(&w, "normal", 3, c->normal, ni);
+        xml_doubles(&w, "force_normal_vector", 3, c->fvec, ni);
+        xml_doubles(&w, "force_friction", 3, c->ffric, ni);
         fprintf(f, "</PointData>\n");
     }
     fprintf(f, "<Points>\n");
-    xml_doubles(f, "Points", 3, c->point, ni);
+    xml_doubles(&w, "Points", 3, c->point, ni);
     fprintf(f, "</Points>\n<Verts>\n");
-    xml_ints(f, "connectivity", c->seq, ni);
-    for (size_t i = 0; i < ni; i++) c->seq[ni + i] = (int)i + 1;
-    xml_ints(f, "offsets", c->seq + ni, ni);
-    fprintf(f, "</Verts>\n</Piece>\n</PolyData>\n</VTKFile>\n");
-    return close_file(f, path, err);
+    xml_ints(&w, "connectivity", c->seq, ni);
+    xml_ints(&w, "offsets", c->seq + ni, ni);
+    fprintf(f, "</Verts>\n</Piece>\n");
+    /* nev is read in vtkw_close (binary): still in scope here */
+    return vtkw_close(&w, path, bytes, err);
 }
 
 /* ---- Reading the results file -------------------------------------------------- */
@@ -530,21 +668,107 @@ static rc_status plane_extent(vtk_src *s, rc_error *err)
     return RC_OK;
 }
 
+/* ---- Choosing the frames ------------------------------------------------- */
+
+/* Mark in sel[k] the records to export (at_event: the records' at_event
+ * values, NULL when the file has none); returns the number marked. With
+ * dt > 0, among the records `cand` allows (NULL: all): the first at or after
+ * each multiple of dt (within 1e-9 dt), then the last record. */
+static size_t select_dt(const double *tt, size_t nrec, const char *cand, double dt, char *sel)
+{
+    size_t n = 0;
+    double tnext = -INFINITY;
+    for (size_t k = 0; k < nrec; k++) {
+        const int last = k + 1 == nrec;
+        if (!last && cand && !cand[k]) continue;
+        if (!last && tt[k] < tnext - 1e-9 * dt) continue;
+        sel[k] = 1;
+        n++;
+        tnext = (floor(tt[k] / dt + 1e-9) + 1.0) * dt;
+    }
+    return n;
+}
+
+static size_t select_frames(const double *tt, const int *at_event, size_t nrec, const rc_vtk_options *o, char *sel,
+                            double *dt_used)
+{
+    size_t n = 0;
+    *dt_used = 0;
+    memset(sel, 0, nrec);
+    if (nrec == 0) return 0;
+    if (o->every > 0) {
+        for (size_t k = 0; k < nrec; k += (size_t)o->every) sel[k] = 1, n++;
+        return n;
+    }
+    if (o->dt > 0) return select_dt(tt, nrec, NULL, o->dt, sel);
+    /* the default: the records at the output times (the event records
+     * left out), thinned to at most RC_VTK_DEFAULT_MAX_FRAMES, and the last */
+    char *cand = sel; /* marked in place, then thinned on a copy if needed */
+    for (size_t k = 0; k < nrec; k++)
+        if (!at_event || at_event[k] == 0 || k + 1 == nrec) cand[k] = 1, n++;
+    if (n <= RC_VTK_DEFAULT_MAX_FRAMES) return n;
+    const double span = tt[nrec - 1] - tt[0];
+    if (!(span > 0) || !isfinite(span)) return n;
+    double dt = 0;
+    for (double dec = pow(10.0, floor(log10(span / RC_VTK_DEFAULT_MAX_FRAMES))) / 10.0; dt == 0; dec *= 10.0)
+        for (int m = 0; m < 3 && dt == 0; m++) {
+            const double d = dec * (m == 0 ? 1.0 : m == 1 ? 2.0 : 5.0);
+            /* grid frames floor(span / d) + 1, and the last */
+            if (floor(span / d + 1e-9) + 2 <= RC_VTK_DEFAULT_MAX_FRAMES) dt = d;
+        }
+    char *c2 = malloc(nrec);
+    if (!c2) return (size_t)-1;
+    memcpy(c2, cand, nrec);
+    memset(sel, 0, nrec);
+    n = select_dt(tt, nrec, c2, dt, sel);
+    free(c2);
+    *dt_used = dt;
+    return n;
+}
+
 /* ---- The export ------------------------------------------------------------------ */
 
 rc_status rc_export_vtk(const char *results_path, const char *dir, int *nframes, rc_error *err)
 {
-    return rc_export_vtk_dt(results_path, dir, 0.0, nframes, err);
+    const rc_vtk_options o = {.every = 1};
+    rc_vtk_result r;
+    const rc_status rc = rc_export_vtk_opts(results_path, dir, &o, &r, err);
+    if (nframes) *nframes = r.frames;
+    return rc;
 }
 
 rc_status rc_export_vtk_dt(const char *results_path, const char *dir, double dt, int *nframes, rc_error *err)
 {
     if (nframes) *nframes = 0;
-    if (!results_path) RC_RAISE(err, RC_EINPUT, "rc_export_vtk: the results path is NULL; expected a results file");
-    if (!dir) RC_RAISE(err, RC_EINPUT, "rc_export_vtk: the directory is NULL; expected where to write");
     if (!(dt >= 0) || !isfinite(dt))
         RC_RAISE(err, RC_EINPUT, "rc_export_vtk_dt: frame interval %g s; expected a finite number >= 0 (0: every record)",
                  dt);
+    const rc_vtk_options o = {.dt = dt, .every = dt > 0 ? 0 : 1};
+    rc_vtk_result r;
+    const rc_status rc = rc_export_vtk_opts(results_path, dir, &o, &r, err);
+    if (nframes) *nframes = r.frames;
+    return rc;
+}
+
+rc_status rc_export_vtk_opts(const char *results_path, const char *dir, const rc_vtk_options *opt,
+                             rc_vtk_result *result, rc_error *err)
+{
+    rc_vtk_result res_local;
+    rc_vtk_result *res = result ? result : &res_local;
+    memset(res, 0, sizeof *res);
+    const rc_vtk_options o = opt ? *opt : (rc_vtk_options){0};
+    if (!results_path)
+        RC_RAISE(err, RC_EINPUT, "rc_export_vtk_opts: the results path is NULL; expected a results file");
+    if (!dir) RC_RAISE(err, RC_EINPUT, "rc_export_vtk_opts: the directory is NULL; expected where to write");
+    if (!(o.dt >= 0) || !isfinite(o.dt))
+        RC_RAISE(err, RC_EINPUT, "rc_export_vtk_opts: frame interval dt %g s; expected a finite number >= 0 (0: not used)",
+                 o.dt);
+    if (o.every < 0)
+        RC_RAISE(err, RC_EINPUT, "rc_export_vtk_opts: every %d; expected a number of records >= 1 (0: not used)",
+                 o.every);
+    if (o.every > 0 && o.dt > 0)
+        RC_RAISE(err, RC_EINPUT, "rc_export_vtk_opts: both dt (%g s) and every (%d) given; expected one of them",
+                 o.dt, o.every);
     /* the results file is opened first: a failed export leaves no directory behind */
     vtk_src s;
     rc_nc_lock(); /* every netCDF call under the library's lock (output.h) */
@@ -565,21 +789,29 @@ rc_status rc_export_vtk_dt(const char *results_path, const char *dir, double dt,
     const size_t nb = s.nbody, ni = s.ninter;
     double *pos = malloc((3 * nb + 1) * sizeof *pos), *quat = malloc((4 * nb + 1) * sizeof *quat);
     double *vel = malloc((3 * nb + 1) * sizeof *vel), *tt = malloc((s.nrec + 1) * sizeof *tt);
+    const int has_at = s.ncid >= 0 && has_var(s.ncid, "at_event");
+    int *at_ev = has_at ? malloc((s.nrec + 1) * sizeof *at_ev) : NULL;
+    char *sel = malloc(s.nrec + 1);
     contacts c = {malloc((3 * ni + 1) * sizeof(double)), malloc((3 * ni + 1) * sizeof(double)),
                   malloc((ni + 1) * sizeof(double)),     malloc((ni + 1) * sizeof(double)),
                   malloc((3 * ni + 1) * sizeof(double)), malloc((3 * ni + 1) * sizeof(double)),
                   malloc((ni + 1) * sizeof(int)),        malloc((2 * ni + 1) * sizeof(int))};
     mesh m;
     memset(&m, 0, sizeof m);
-    if (rc == RC_OK && (!pos || !quat || !vel || !tt || !c.point || !c.normal || !c.pen || !c.fn || !c.ffric ||
-                        !c.fvec || !c.mode || !c.seq))
+    if (rc == RC_OK && (!pos || !quat || !vel || !tt || !sel || (has_at && !at_ev) ||
+                        !c.point || !c.normal || !c.pen || !c.fn || !c.ffric || !c.fvec || !c.mode || !c.seq))
         rc = RC_SET(err, RC_ENOMEM, "export: out of memory");
-    int vtime;
+    int vtime, vat;
     if (rc == RC_OK && nc_inq_varid(s.ncid, "time", &vtime) == NC_NOERR && s.nrec > 0 &&
         nc_get_var_double(s.ncid, vtime, tt) != NC_NOERR)
         rc = RC_SET(err, RC_EIO, "%s: reading time", results_path);
+    if (rc == RC_OK && at_ev && s.nrec > 0 &&
+        (nc_inq_varid(s.ncid, "at_event", &vat) != NC_NOERR || nc_get_var_int(s.ncid, vat, at_ev) != NC_NOERR))
+        rc = RC_SET(err, RC_EIO, "%s: reading at_event", results_path);
     const int has_fric = s.ncid >= 0 && has_var(s.ncid, "inter_force_friction");
     rc_nc_unlock();
+    if (rc == RC_OK && select_frames(tt, at_ev, s.nrec, &o, sel, &res->dt_used) == (size_t)-1)
+        rc = RC_SET(err, RC_ENOMEM, "export: out of memory");
     const size_t plen = strlen(dir) + strlen(stem) + 64;
     char *path = malloc(plen);
     FILE *pvd = NULL;
@@ -591,13 +823,13 @@ rc_status rc_export_vtk_dt(const char *results_path, const char *dir, double dt,
             fprintf(pvd, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" "
                          "byte_order=\"LittleEndian\">\n<Collection>\n");
     }
-    for (size_t i = 0; i < ni && c.seq; i++) c.seq[i] = (int)i;
+    for (size_t i = 0; i < ni && c.seq; i++) {
+        c.seq[i] = (int)i;          /* connectivity: one vertex per point */
+        c.seq[ni + i] = (int)i + 1; /* offsets */
+    }
     size_t ev = 0;
-    int nout = 0;
-    double tnext = -INFINITY; /* the next frame's time (dt > 0): the first record at or after it */
     for (size_t k = 0; rc == RC_OK && k < s.nrec; k++) {
-        if (dt > 0 && k + 1 < s.nrec && k > 0 && tt[k] < tnext) continue;
-        if (dt > 0) tnext = (floor(tt[k] / dt + 1e-9) + 1.0) * dt;
+        if (!sel[k]) continue;
         rc_nc_lock();
         rc = get_rec(&s, "body_position", k, nb, 3, pos, err);
         if (rc == RC_OK) rc = get_rec(&s, "body_quaternion", k, nb, 4, quat, err);
@@ -613,7 +845,7 @@ rc_status rc_export_vtk_dt(const char *results_path, const char *dir, double dt,
                 rc = RC_SET(err, RC_ENOMEM, "export: out of memory");
         }
         snprintf(path, plen, "%s/%s_bodies_%06zu.vtp", dir, stem, k);
-        if (rc == RC_OK) rc = write_bodies(path, &m, tt[k], err);
+        if (rc == RC_OK) rc = write_bodies(path, &m, tt[k], o.ascii, &res->bytes, err);
         if (rc != RC_OK) break;
         if (ni > 0) {
             rc_nc_lock();
@@ -628,24 +860,23 @@ rc_status rc_export_vtk_dt(const char *results_path, const char *dir, double dt,
             if (rc != RC_OK) break;
             for (size_t i = 0; i < 3 * ni; i++) c.fvec[i] = -c.fn[i / 3] * c.normal[i]; /* on the first body */
         }
-        /* the events since the previous record (all of them up to the first) */
+        /* the events since the previous frame (all of them up to the first) */
         const size_t e0 = ev;
         while (ev < s.nevent && s.ev_t[ev] <= tt[k]) ev++;
         snprintf(path, plen, "%s/%s_contacts_%06zu.vtp", dir, stem, k);
-        rc = write_contacts(path, &s, &c, tt[k], e0, ev, err);
+        rc = write_contacts(path, &s, &c, tt[k], e0, ev, o.ascii, &res->bytes, err);
         if (rc != RC_OK) break;
         fprintf(pvd, "<DataSet timestep=\"%.17g\" group=\"\" part=\"0\" file=\"%s_bodies_%06zu.vtp\"/>\n", tt[k], stem,
                 k);
         fprintf(pvd, "<DataSet timestep=\"%.17g\" group=\"\" part=\"1\" file=\"%s_contacts_%06zu.vtp\"/>\n", tt[k],
                 stem, k);
-        nout++;
-        if (nframes) *nframes = nout;
+        res->frames++;
     }
     if (pvd) {
         fprintf(pvd, "</Collection>\n</VTKFile>\n");
         snprintf(path, plen, "%s/%s.pvd", dir, stem);
         rc_error e2;
-        rc_status rc2 = close_file(pvd, path, rc == RC_OK ? err : &e2);
+        rc_status rc2 = close_file(pvd, path, &res->bytes, rc == RC_OK ? err : &e2);
         if (rc == RC_OK) rc = rc2;
     }
     free(path);
@@ -653,6 +884,8 @@ rc_status rc_export_vtk_dt(const char *results_path, const char *dir, double dt,
     free(quat);
     free(vel);
     free(tt);
+    free(at_ev);
+    free(sel);
     void *cp[] = {c.point, c.normal, c.pen, c.fn, c.ffric, c.fvec, c.mode, c.seq, m.pt, m.body, m.surf, m.vel,
                   m.conn, m.off, m.csurf};
     for (size_t k = 0; k < sizeof cp / sizeof cp[0]; k++) free(cp[k]);

@@ -4,7 +4,8 @@ on 127.0.0.1), a study of 20 variants of cases/t6_hysteresis_drop.rad
 against serial ricochet.run bit for bit, a worker killed (SIGKILL) in the
 middle of a study, an interrupted study resumed from its study_dir (the
 cases done not run again), a directory of another study refused, the
-command line's --study-dir. Every process started here is killed at the
+command line's --study-dir, a KilledWorker recorded as status -2 (and
+run again by the rerun). Every process started here is killed at the
 end. Prints PASS/FAIL/SKIP lines (counted by scripts/check.sh).
 
     RICOCHET_LIB=build/libricochet.so PYTHONPATH=python /usr/bin/python3 tests/python_study_test.py build
@@ -45,30 +46,31 @@ def guarded(name, fn, *a):
         check(name, False, f"raised {type(e).__name__}: {e}")
 
 
-def start(args, log):
+def start(args, log, env=None):
     p = subprocess.Popen([sys.executable, "-m"] + args, stdout=log, stderr=subprocess.STDOUT,
-                         stdin=subprocess.DEVNULL)
+                         stdin=subprocess.DEVNULL, env=env)
     procs.append(p)
     return p
 
 
-def cluster(tmp):
+def cluster(tmp, tag="", env=None):
     """A scheduler and two workers (no nanny: a SIGKILL of a worker is the
     loss of that process, nothing restarts it); returns (address, workers)."""
-    sf = os.path.join(tmp, "scheduler.json")
-    log = open(os.path.join(tmp, "cluster.log"), "w")
-    start(["distributed.cli.dask_scheduler", "--host", "127.0.0.1", "--port", "0", "--dashboard-address", ":0",
-           "--scheduler-file", sf], log)
+    sf = os.path.join(tmp, f"scheduler{tag}.json")
+    log = open(os.path.join(tmp, f"cluster{tag}.log"), "w")
+    sched = start(["distributed.cli.dask_scheduler", "--host", "127.0.0.1", "--port", "0", "--dashboard-address",
+                   ":0", "--scheduler-file", sf], log, env)
     t0 = time.time()
     while not os.path.exists(sf):
-        if time.time() - t0 > 30 or procs[0].poll() is not None:
+        if time.time() - t0 > 30 or sched.poll() is not None:
             raise RuntimeError("dask-scheduler did not start")
         time.sleep(0.1)
     time.sleep(0.2)
     with open(sf) as f:
         addr = json.load(f)["address"]
     ws = [start(["distributed.cli.dask_worker", addr, "--nworkers", "1", "--nthreads", "1", "--no-nanny",
-                 "--dashboard-address", ":0", "--name", n, "--local-directory", os.path.join(tmp, n)], log)
+                 "--dashboard-address", ":0", "--name", n + tag, "--local-directory", os.path.join(tmp, n + tag)],
+                log, env)
           for n in ("wA", "wB")]
     return addr, ws
 
@@ -220,6 +222,35 @@ def main():
               and (st.status.values == 0).all() and not diff,
               f"worker wA killed (SIGKILL) after the first of 12 cases; {nw} worker left; every case ok "
               f"({dt:.1f} s) and equal to serial runs{'; differs: ' + diff if diff else ''}")
+        client.close(timeout=5)
+        client = None
+
+        # 6. KilledWorker: a scheduler that allows no failure (allowed-failures 0) gives up the
+        # cases of a killed worker: they are status -2, the study goes on; the rerun on its
+        # study_dir runs just those
+        env = dict(os.environ, DASK_DISTRIBUTED__SCHEDULER__ALLOWED_FAILURES="0")
+        addr2, ws2 = cluster(tmp, "-kw", env)
+        client = distributed.Client(addr2, timeout=30)
+        client.wait_for_workers(2, timeout=30)
+        zs, killed = ZS[:8], []
+
+        def kill_a(i, status):
+            if not killed:
+                ws2[0].send_signal(signal.SIGKILL)
+                ws2[0].wait(10)
+                killed.append(i)
+        d3 = os.path.join(tmp, "killed")
+        st = ricochet.study(DECK, {ZM: zs}, client=client, t_end=10.0, study_dir=d3, on_case=kill_a)
+        lost = [i for i in range(len(zs)) if st.status.values[i] == -2]
+        msg_ok = all("KilledWorker" in str(st.message.values[i]) for i in lost)
+        others_ok = all(st.status.values[i] == 0 for i in range(len(zs)) if i not in lost)
+        ran = []
+        st2 = ricochet.study(DECK, {ZM: zs}, client=client, t_end=10.0, study_dir=d3,
+                             on_case=lambda i, s: ran.append(i))
+        check("killed_worker_status", lost and msg_ok and others_ok and sorted(ran) == lost
+              and (st2.status.values == 0).all() and st.attrs["failed_cases"] == len(lost),
+              f"allowed-failures 0, worker killed: cases {lost} status -2 (KilledWorker), the "
+              f"{len(zs) - len(lost)} others ok; the rerun on the study_dir ran just {sorted(ran)}, all ok")
         print(f"pystudy: {time.time() - t_all:.1f} s in all")
     finally:
         if client is not None:

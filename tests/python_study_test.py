@@ -56,6 +56,10 @@ def start(args, log, env=None):
 def cluster(tmp, tag="", env=None):
     """A scheduler and two workers (no nanny: a SIGKILL of a worker is the
     loss of that process, nothing restarts it); returns (address, workers)."""
+    # the cluster's temporary files (a killed worker leaves its case's
+    # ricochet-run-*/ricochet-case-* behind) in the test's own directory
+    env = dict(env or os.environ, TMPDIR=os.path.join(tmp, "tmp" + tag))
+    os.makedirs(env["TMPDIR"], exist_ok=True)
     sf = os.path.join(tmp, f"scheduler{tag}.json")
     log = open(os.path.join(tmp, f"cluster{tag}.log"), "w")
     sched = start(["distributed.cli.dask_scheduler", "--host", "127.0.0.1", "--port", "0", "--dashboard-address",

@@ -93,6 +93,21 @@ if [ "$st" -ne 0 ] && [ "$(grep -c '^FAIL ' "$log")" -eq 0 ]; then
     fail=$((fail + 1))
 fi
 
+# studies on a real Dask cluster: a scheduler and two worker processes
+# started by the test (killed at its end), results against serial runs bit
+# for bit, a worker killed mid-study, an interrupted study resumed from its
+# study_dir (tests/python_study_test.py; SKIP without python3-distributed)
+RICOCHET_LIB="$(cd "$build" && pwd)/libricochet.so" PYTHONPATH="$PWD/python" \
+    timeout 300 /usr/bin/python3 tests/python_study_test.py "$build" > "$log" 2>&1
+st=$?
+grep -E '^(PASS|FAIL|SKIP) ' "$log"
+pass=$((pass + $(grep -c '^PASS ' "$log")))
+fail=$((fail + $(grep -c '^FAIL ' "$log")))
+if [ "$st" -ne 0 ] && [ "$(grep -c '^FAIL ' "$log")" -eq 0 ]; then
+    echo "FAIL pystudy: tests/python_study_test.py exited with status $st:"; tail -n 20 "$log"
+    fail=$((fail + 1))
+fi
+
 # validation problems: each check.py prints PASS/FAIL lines; every problem
 # runs twice, first with the solver settings of its decks, then at ricochet's
 # default settings (RICOCHET_VAL_SOLVER=default: the /SOLVER cards removed,

@@ -19,13 +19,13 @@ from .errors import (InputError, InterruptedRun, PhysicsCheckError, RicochetErro
                      RicochetIOError, SolverError, Status)
 from .results import Results, read  # noqa: F401
 from .sim import BodyState, EventValues, RicochetWarning, RunStats, Session, run  # noqa: F401
-from .study import grid, lhs, study  # noqa: F401
+from .study import StudyDirError, grid, lhs, study  # noqa: F401
 
 __version__ = "0.2.0"
 
 __all__ = ["read", "Results", "deck", "run", "Session", "BodyState", "EventValues", "RunStats", "study", "lhs",
-           "grid", "RicochetError", "InputError", "SolverError", "RicochetIOError", "PhysicsCheckError",
-           "InterruptedRun", "RicochetWarning", "Status", "library_path"]
+           "grid", "StudyDirError", "RicochetError", "InputError", "SolverError", "RicochetIOError",
+           "PhysicsCheckError", "InterruptedRun", "RicochetWarning", "Status", "library_path"]
 
 
 def library_path():

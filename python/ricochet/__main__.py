@@ -1,4 +1,4 @@
-"""python3 -m ricochet study DECK --grid GRID.json [--scheduler ADDRESS] [-o STUDY.nc] ...
+"""python3 -m ricochet study DECK --grid GRID.json [--scheduler ADDRESS] [-o STUDY.nc] [--study-dir DIR] ...
 
 GRID.json: {"CARD:FIELD": [values, ...], ...} (full factorial), a list of
 {"CARD:FIELD": value} (the cases as given), or {"lhs": {"CARD:FIELD": [lo,
@@ -39,7 +39,9 @@ def main(argv=None):
     s.add_argument("--outputs", default="", help="time series to keep, comma-separated (e.g. body_position,energy_total)")
     s.add_argument("--times", help="their common times [s]: START:STOP:N (N points) or a comma-separated list")
     s.add_argument("--impacts", type=int, default=5, help="impacts kept per case (default 5)")
-    s.add_argument("--keep-dir", help="keep each case's results file there (a directory the workers see)")
+    s.add_argument("--study-dir", help="the study's directory (the workers see it): the manifest, each case's results "
+                   "file and summary; a rerun with the same directory runs only the cases not done")
+    s.add_argument("--keep-dir", help="the older name of --study-dir")
     for o in ("--t-end", "--dt-out", "--rtol"):
         s.add_argument(o, type=float)
     s.add_argument("--method", choices=["cvode", "ida", "static"])
@@ -61,7 +63,7 @@ def main(argv=None):
         kw = {k: v for k, v in (("t_end", a.t_end), ("dt_out", a.dt_out), ("rtol", a.rtol), ("method", a.method),
                                 ("on_violation", a.on_violation)) if v is not None}
         ds = study(a.deck, params, client=a.scheduler, outputs=outputs, times=times, set=a.set or None,
-                   n_impacts=a.impacts, keep_dir=a.keep_dir, workers=a.workers, **kw)
+                   n_impacts=a.impacts, keep_dir=a.keep_dir, study_dir=a.study_dir, workers=a.workers, **kw)
     except (OSError, ValueError, TypeError) as e:
         print(f"python3 -m ricochet study: {e}", file=sys.stderr)
         return 2

@@ -14,7 +14,9 @@ fastest), a list of dicts {field: value} (the cases as given), or
 "CARD:FIELD" (docs/case-format.md), its value in the card's own units.
 """
 # SPDX-License-Identifier: GPL-3.0-or-later
+import hashlib
 import itertools
+import json
 import math
 import numbers
 import os
@@ -22,7 +24,17 @@ import re
 import shutil
 import tempfile
 
-__all__ = ["study", "grid", "lhs", "run_case"]
+__all__ = ["study", "grid", "lhs", "run_case", "StudyDirError"]
+
+# the study directory (study_dir=): its manifest, and per case the results
+# file and the summary (the gathered values, JSON; docs/python.md, "Nothing lost")
+MANIFEST = "study.json"
+_MANIFEST_VERSION = 1
+
+
+class StudyDirError(ValueError):
+    """The study directory holds another study (a different deck, parameters
+    or options than its manifest's)."""
 
 # the last values kept of every body (the results file's variables)
 _BODY_VARS = ("body_position", "body_quaternion", "body_velocity", "body_angular_velocity")
@@ -107,6 +119,10 @@ def run_case(deck, deck_name, overrides, run_kw, outputs, times, n_impacts, keep
     from .sim import run
     tmp = None
     res = {"status": 0, "exit_code": 0, "message": ""}
+    final = keep
+    if keep is not None:  # written under a name of its own, renamed at the end: a cancelled task still
+        import uuid       # running (or a rerun) never writes into the file another one reads
+        keep = f"{keep}.{uuid.uuid4().hex[:8]}.part"
     try:
         if deck_name is not None:
             tmp = tempfile.mkdtemp(prefix="ricochet-case-")
@@ -167,6 +183,110 @@ def run_case(deck, deck_name, overrides, run_kw, outputs, times, n_impacts, keep
     finally:
         if tmp is not None:
             shutil.rmtree(tmp, ignore_errors=True)
+        if keep is not None and os.path.exists(keep):
+            os.replace(keep, final)
+
+
+def _enc(x):
+    """A case's result as JSON-able values, exactly: arrays keep their dtype
+    and shape, floats their bits (repr round-trips; NaN as NaN)."""
+    import numpy as np
+    if isinstance(x, np.ndarray):
+        if x.dtype == object:
+            return {"__nd__": "O", "shape": list(x.shape), "data": [_enc(v) for v in x.ravel().tolist()]}
+        return {"__nd__": x.dtype.str, "shape": list(x.shape), "data": x.ravel().tolist()}
+    if isinstance(x, np.generic):
+        return x.item()
+    if isinstance(x, dict):
+        return {str(k): _enc(v) for k, v in x.items()}
+    if isinstance(x, tuple):
+        return {"__tuple__": [_enc(v) for v in x]}
+    if isinstance(x, list):
+        return [_enc(v) for v in x]
+    return x
+
+
+def _dec(x):
+    import numpy as np
+    if isinstance(x, dict):
+        if "__nd__" in x:
+            dt = object if x["__nd__"] == "O" else np.dtype(x["__nd__"])
+            data = [_dec(v) for v in x["data"]] if dt is object else x["data"]
+            return np.array(data, dtype=dt).reshape(x["shape"])
+        if "__tuple__" in x:
+            return tuple(_dec(v) for v in x["__tuple__"])
+        return {k: _dec(v) for k, v in x.items()}
+    if isinstance(x, list):
+        return [_dec(v) for v in x]
+    return x
+
+
+def _canon(x):
+    """x as its JSON text reads back (the form the manifest compares)."""
+    return json.loads(json.dumps(_enc(x), allow_nan=True))
+
+
+def _write_json(path, obj):
+    """Write atomically: a reader (or a rerun after a crash) sees the old file
+    or the whole new one, never a part."""
+    tmp = f"{path}.{os.getpid()}.tmp"
+    with open(tmp, "w") as f:
+        json.dump(obj, f, indent=1, allow_nan=True)
+        f.flush()
+        os.fsync(f.fileno())
+    os.replace(tmp, path)
+
+
+def _case_files(study_dir, i):
+    return (os.path.join(study_dir, f"case_{i:04d}.nc"), os.path.join(study_dir, f"case_{i:04d}.json"))
+
+
+def _open_study_dir(study_dir, manifest):
+    """Create the directory and its manifest, or check that the manifest there
+    is this study's; returns {case: result} of the cases already done (a
+    summary whose status is the run's own: not -1, a Python error, nor -2,
+    a lost worker, which run again)."""
+    os.makedirs(study_dir, exist_ok=True)
+    mpath = os.path.join(study_dir, MANIFEST)
+    want = _canon(manifest)
+    if os.path.exists(mpath):
+        with open(mpath) as f:
+            try:
+                have = json.load(f)
+            except ValueError as e:
+                raise StudyDirError(f"study: {mpath} is not a study manifest ({e})") from None
+        if not isinstance(have, dict) or have.get("version") != _MANIFEST_VERSION:
+            raise StudyDirError(f"study: {mpath} is not a version {_MANIFEST_VERSION} study manifest")
+        for k in ("deck_sha256", "cases", "common", "run_options", "outputs", "times", "n_impacts"):
+            if have.get(k) != want.get(k):
+                what = {"deck_sha256": f"the deck differs (sha256 {str(have.get(k))[:12]}... there, "
+                                       f"{str(want.get(k))[:12]}... now: {want.get('deck')})",
+                        "cases": "the parameter sets differ", "common": "the common set= overrides differ",
+                        "run_options": "the run options differ", "outputs": "the outputs differ",
+                        "times": "the output times differ", "n_impacts": "n_impacts differs"}[k]
+                raise StudyDirError(f"study: {study_dir} holds another study: {what}; use another study_dir "
+                                    f"(or remove that one)")
+    else:
+        _write_json(mpath, want)
+    done = {}
+    for i in range(len(manifest["cases"])):
+        nc, js = _case_files(study_dir, i)
+        if not os.path.exists(js):
+            continue
+        try:
+            with open(js) as f:
+                summ = json.load(f)
+            r = _dec(summ["result"])
+        except (OSError, ValueError, KeyError):
+            continue  # unreadable: run the case again
+        if summ.get("case") == i and r.get("status") not in (-1, -2):
+            done[i] = r
+    return done
+
+
+def _summary(i, case, r, nc):
+    return {"case": i, "parameters": _enc(case), "status": r.get("status"), "message": r.get("message", ""),
+            "results_file": os.path.basename(nc) if os.path.exists(nc) else None, "result": _enc(r)}
 
 
 def _client(client, workers):
@@ -185,7 +305,7 @@ def _client(client, workers):
 
 
 def study(deck, parameters, client=None, outputs=(), times=None, set=None, n_impacts=5, keep_dir=None,
-          workers=None, **run_kw):
+          workers=None, study_dir=None, on_case=None, **run_kw):
     """Run one case per parameter set on Dask and gather the results.
 
     deck        the case file (its text is sent to the workers, so they need
@@ -202,8 +322,22 @@ def study(deck, parameters, client=None, outputs=(), times=None, set=None, n_imp
     set         overrides common to every case (as ``run``'s set)
     n_impacts   rows of the impact table kept per case (padded with NaN,
                 impact_inter with -1)
-    keep_dir    a directory (seen by the workers) where each case's results
-                file is kept as case_NNNN.nc; None: not kept
+    study_dir   a directory (the workers write the results files there):
+                the manifest study.json (the deck's path and sha256, the
+                parameter sets, set=, the run options, outputs, times,
+                n_impacts), per case its results file case_NNNN.nc and its
+                summary case_NNNN.json (the values gathered). Rerunning the
+                same study with the same directory runs only the cases not
+                done (no summary, or status -1/-2) and gives the same
+                Dataset; a directory holding another study (a different
+                deck, parameters or options) raises StudyDirError
+    keep_dir    the older name of study_dir (the same behaviour); None: the
+                results files are temporary, nothing is kept
+    on_case     None, or a function f(case, status) called in this process
+                as each case ends (not for the cases found done); an
+                exception from it stops the study: the pending cases are
+                cancelled, the exception propagates, the cases done so far
+                stay in study_dir
     run_kw      t_end, dt_out, rtol, method, on_violation, preload: as ``run``
 
     Returns an xarray.Dataset with dimension ``case``: the parameters (one
@@ -250,37 +384,68 @@ def study(deck, parameters, client=None, outputs=(), times=None, set=None, n_imp
     # the deck: its text travels with the task unless it includes other files
     if hasattr(deck, "text") and callable(deck.text):
         text, name = deck.text(), "deck.rad"
+        deck_path, sha = None, hashlib.sha256(text.encode()).hexdigest()
     else:
         path = os.fspath(deck)
-        with open(path) as fh:
-            text = fh.read()
-        name = path
+        with open(path, "rb") as fh:
+            raw = fh.read()
+        text, name = raw.decode(), path
+        deck_path, sha = os.path.abspath(path), hashlib.sha256(raw).hexdigest()
         if re.search(r"^#include", text, re.M):
             text, name = os.path.abspath(path), None  # the workers read it (and its includes) at its path
 
-    if keep_dir is not None:
-        os.makedirs(keep_dir, exist_ok=True)
-    c, to_close = _client(client, workers)
-    try:
-        from distributed import as_completed
+    # the study directory: what is there already is checked and kept
+    if study_dir is not None and keep_dir is not None and \
+            os.path.abspath(os.fspath(study_dir)) != os.path.abspath(os.fspath(keep_dir)):
+        raise ValueError("study: keep_dir is the older name of study_dir: give one of them")
+    sdir = study_dir if study_dir is not None else keep_dir
+    results = [None] * len(cases)
+    if sdir is not None:
+        sdir = os.path.abspath(os.fspath(sdir))
+        manifest = {"version": _MANIFEST_VERSION, "deck": deck_path, "deck_sha256": sha, "cases": cases,
+                    "common": common, "run_options": dict(run_kw), "outputs": list(outputs),
+                    "times": times, "n_impacts": n_impacts}
+        for i, r in _open_study_dir(sdir, manifest).items():
+            results[i] = r
+    todo = [i for i, r in enumerate(results) if r is None]
+
+    if todo:
+        c, to_close = _client(client, workers)
         futures = {}
-        for i, case in enumerate(cases):
-            ov = dict(common)
-            ov.update(case)
-            keep = None if keep_dir is None else os.path.join(os.path.abspath(keep_dir), f"case_{i:04d}.nc")
-            fut = c.submit(run_case, text, name, ov, dict(run_kw), outputs, times, n_impacts, keep,
-                           key=f"ricochet-case-{i}-{os.getpid()}-{id(cases)}", pure=False)
-            futures[fut] = i
-        results = [None] * len(cases)
-        for fut in as_completed(list(futures)):
-            i = futures[fut]
-            try:
-                results[i] = fut.result()
-            except Exception as e:  # the worker died (or the task could not run there)
-                results[i] = {"status": -2, "exit_code": 1, "message": f"worker failed: {type(e).__name__}: {e}"}
-    finally:
-        for x in to_close:
-            x.close()
+        try:
+            import uuid
+            from distributed import as_completed
+            tag = uuid.uuid4().hex[:12]
+            for i in todo:
+                ov = dict(common)
+                ov.update(cases[i])
+                keep = None if sdir is None else _case_files(sdir, i)[0]
+                # retries=1: a case whose task fails is run once more; a case on a
+                # worker that dies is rescheduled by the scheduler (up to its
+                # distributed.scheduler.allowed-failures), then ends KilledWorker
+                fut = c.submit(run_case, text, name, ov, dict(run_kw), outputs, times, n_impacts, keep,
+                               key=f"ricochet-case-{i}-{tag}", pure=False, retries=1)
+                futures[fut] = i
+            for fut in as_completed(list(futures)):
+                i = futures.pop(fut)
+                try:
+                    r = fut.result()
+                except Exception as e:  # the worker died (KilledWorker) or the task could not run there
+                    r = {"status": -2, "exit_code": 1, "message": f"worker failed: {type(e).__name__}: {e}"}
+                results[i] = r
+                if sdir is not None:
+                    nc, js = _case_files(sdir, i)
+                    _write_json(js, _summary(i, cases[i], r, nc))
+                if on_case is not None:
+                    on_case(i, int(r["status"]))
+        finally:
+            if futures:  # stopped early: the cases not ended are cancelled
+                try:
+                    c.cancel(list(futures))
+                except Exception:  # noqa: BLE001 (closing anyway)
+                    pass
+            for x in to_close:
+                x.close()
 
     return _assemble(cases, fields, varnames, common, results, outputs, times, n_impacts, run_kw)
 

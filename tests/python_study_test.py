@@ -106,6 +106,32 @@ def same_as_serial(st, runs):
     return ""
 
 
+def docs_worked_study(tmp):
+    """docs/python.md's worked study, its code block run as written from the
+    source tree's root: nine lines, approach speeds sqrt(2 g h) to 1e-4 m/s,
+    rebounds within 2 mm below e^2 h."""
+    import re
+    import subprocess
+    text = open(os.path.join(ROOT, "docs", "python.md")).read()
+    sec = text[text.index("### A worked study"):]
+    code = re.search(r"```python\n(.*?)```", sec, re.S).group(1)
+    path = os.path.join(tmp, "worked.py")
+    open(path, "w").write(code)
+    r = subprocess.run([sys.executable, path], cwd=ROOT, capture_output=True, text=True, timeout=240)
+    lines = [ln for ln in r.stdout.splitlines() if ln.startswith("h = ")]
+    ok = r.returncode == 0 and len(lines) == 9
+    worst_v = worst_h = 0.0
+    for ln in lines:
+        nums = [float(x) for x in re.findall(r"[-+]?\d+\.\d+", ln)]
+        h, e, v, vr, reb, ref = nums[0], nums[1], nums[2], nums[3], nums[4], nums[5]
+        worst_v = max(worst_v, abs(v - vr))
+        worst_h = max(worst_h, ref - reb)
+        ok = ok and abs(v - vr) <= 1e-4 and 0.0 <= ref - reb <= 2.0
+    check("docs_worked_study", ok,
+          f"exit {r.returncode}, {len(lines)} cases; |v_in - sqrt(2 g h)| <= {worst_v:.1e} m/s, "
+          f"rebound below e^2 h by at most {worst_h:.1f} mm" + ("" if ok else ": " + (r.stderr or r.stdout)[-300:]))
+
+
 def main():
     try:
         import distributed
@@ -255,6 +281,11 @@ def main():
               and (st2.status.values == 0).all() and st.attrs["failed_cases"] == len(lost),
               f"allowed-failures 0, worker killed: cases {lost} status -2 (KilledWorker), the "
               f"{len(zs) - len(lost)} others ok; the rerun on the study_dir ran just {sorted(ran)}, all ok")
+        client.close(timeout=5)
+        client = None
+
+        # 7. the docs' worked study, as written (its own LocalCluster of 2)
+        guarded("docs_worked_study", docs_worked_study, tmp)
         print(f"pystudy: {time.time() - t_all:.1f} s in all")
     finally:
         if client is not None:

@@ -521,6 +521,21 @@ times=$(grep -c 'part="0" file' "$tmp/demovtk/a.pvd" 2>/dev/null)
 if [ "$rc" -eq 0 ] && [ "$times" = 501 ] && [ "$bytes" -lt 20000000 ] && grep -q "(501 frames, 1003 files, .* MB binary, one per 0.002 s (default))" "$tmp/x"; then
     echo "PASS cli.export_vtk_demo_size: the 1 s demo by default: $times frames, $bytes bytes (< 20 MB), $secs s"
 else echo "FAIL cli.export_vtk_demo_size: exit $rc, $times frames, $bytes bytes ($(head -c 200 "$tmp/x"))"; fi
+# the command line on getopt_long: options in any position, --opt=VALUE and
+# -oFILE, a misspelt option answered with the closest one, a run option
+# given to check named as such
+"$bin" run -q "$demo" --t-end=0.01 -o"$tmp/anypos.nc" --rtol 1e-6 > "$tmp/x" 2>&1; rc=$?
+[ "$rc" -eq 0 ] && [ -s "$tmp/anypos.nc" ] && echo "PASS cli.options_any_position: options after the case file, --t-end=0.01, -oFILE" ||
+    echo "FAIL cli.options_any_position: exit $rc: $(head -c 200 "$tmp/x")"
+"$bin" run --t-ned 0.01 "$demo" > "$tmp/x" 2>&1; rc=$?
+[ "$rc" -eq 2 ] && grep -q "unknown option '--t-ned': did you mean --t-end?" "$tmp/x" &&
+    echo "PASS cli.option_did_you_mean: exit 2, $(head -1 "$tmp/x")" || echo "FAIL cli.option_did_you_mean: exit $rc: $(head -c 200 "$tmp/x")"
+"$bin" check "$demo" --rtol 1e-6 > "$tmp/x" 2>&1; rc=$?
+[ "$rc" -eq 2 ] && grep -q "option '--rtol' is an option of \`ricochet run\`" "$tmp/x" &&
+    echo "PASS cli.check_run_option: exit 2, $(head -1 "$tmp/x")" || echo "FAIL cli.check_run_option: exit $rc: $(head -c 200 "$tmp/x")"
+"$bin" run "$demo" "$demo" > "$tmp/x" 2>&1; rc=$?
+[ "$rc" -eq 2 ] && grep -q "unexpected argument" "$tmp/x" &&
+    echo "PASS cli.two_cases: exit 2, $(head -1 "$tmp/x")" || echo "FAIL cli.two_cases: exit $rc: $(head -c 200 "$tmp/x")"
 # ricochet study: the Python module's study runner on Dask (two friction
 # coefficients, two worker processes), from the program
 if /usr/bin/python3 -c "import distributed, xarray" 2>/dev/null; then

@@ -1,5 +1,6 @@
 /* ricochet command-line program: run, check, --help (also per command), --version. */
 #include <errno.h>
+#include <getopt.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
@@ -36,7 +37,8 @@ static void usage_run(FILE *f)
             "usage: ricochet run CASE [options]\n"
             "Read and compile the case (Radioss block format), integrate it from t = 0 to its end time and\n"
             "write the results (netCDF-4, docs/output-format.md).\n"
-            "options:\n"
+            "options (in any position, before or after CASE; --opt VALUE or --opt=VALUE; a long option\n"
+            "may be shortened to a unique prefix):\n"
             "  -o OUT.nc      results file (default: the case file's name with .nc, in the current directory)\n"
             "  -q             quiet: no progress on stderr, no summary on stdout\n"
             "  --t-end T      end time [s], instead of the case's /RUN Tend\n"
@@ -83,7 +85,7 @@ static void usage_check(FILE *f)
             "usage: ricochet check CASE\n"
             "Read and compile the case and print the model summary (bodies, surfaces, interfaces, couplings,\n"
             "state size, solver settings); warnings of the reading on stderr. Nothing is run.\n"
-            "options:\n"
+            "options (in any position; --set VALUE or --set=VALUE):\n"
             "  -q             no progress of the long stages on stderr\n"
             "  --set CARD:FIELD=VALUE\n"
             "                 set a numeric field of a card by its name, as if VALUE were typed into the deck\n"
@@ -299,6 +301,72 @@ static int study(int argc, char **argv)
     return 2;
 }
 
+/* Edit distance of a and b (insertions, deletions, substitutions,
+ * transpositions of neighbours), up to 64 characters. */
+static int edit_distance(const char *a, const char *b)
+{
+    const size_t na = strlen(a), nb = strlen(b);
+    if (na > 64 || nb > 64) return 99;
+    int d[65][65];
+    for (size_t i = 0; i <= na; i++) d[i][0] = (int)i;
+    for (size_t j = 0; j <= nb; j++) d[0][j] = (int)j;
+    for (size_t i = 1; i <= na; i++)
+        for (size_t j = 1; j <= nb; j++) {
+            int v = d[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
+            if (d[i - 1][j] + 1 < v) v = d[i - 1][j] + 1;
+            if (d[i][j - 1] + 1 < v) v = d[i][j - 1] + 1;
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] && d[i - 2][j - 2] + 1 < v)
+                v = d[i - 2][j - 2] + 1;
+            d[i][j] = v;
+        }
+    return d[na][nb];
+}
+
+/* "unknown option" for arg, with the closest of the command's long options
+ * when it is within 2 edits (1 for names up to 4 letters) and no other is
+ * as close. */
+static void unknown_option(const char *cmd, const char *arg, const struct option *lo, int is_run)
+{
+    char name[128];
+    const char *p = arg;
+    while (*p == '-') p++;
+    snprintf(name, sizeof name, "%s", p);
+    char *eq = strchr(name, '=');
+    if (eq) *eq = '\0';
+    const char *best = NULL;
+    int bd = 99, ties = 0;
+    for (int k = 0; lo[k].name; k++) {
+        const int dd = edit_distance(name, lo[k].name);
+        if (dd < bd) {
+            bd = dd;
+            best = lo[k].name;
+            ties = 0;
+        } else if (dd == bd) {
+            ties++;
+        }
+    }
+    const int lim = strlen(name) <= 4 ? 1 : 2;
+    if (best && bd <= lim && !ties)
+        fprintf(stderr, "ricochet %s: unknown option '%s': did you mean --%s?\n", cmd, arg, best);
+    else if (!is_run && (!strcmp(name, "t-end") || !strcmp(name, "dt-out") || !strcmp(name, "rtol") ||
+                         !strcmp(name, "method") || !strcmp(name, "o")))
+        fprintf(stderr, "ricochet %s: option '%s' is an option of `ricochet run`\n", cmd, arg);
+    else
+        fprintf(stderr, "ricochet %s: unknown option '%s'\n", cmd, arg);
+}
+
+/* An option given without its value. */
+static void option_needs_value(const char *cmd, const char *arg)
+{
+    (void)cmd;
+    fprintf(stderr, "ricochet: %s: expected %s\n", arg,
+            !strcmp(arg, "--set")                                            ? "CARD:FIELD=VALUE (e.g. /INTER/TYPE6/1:Fric=0.3)"
+            : !strcmp(arg, "-o") || !strcmp(arg, "--output")                 ? "an output file name"
+            : !strcmp(arg, "--method")                                       ? "cvode, ida or static (or 1, 2, 3)"
+            : !strcmp(arg, "--on-violation")                                 ? "stop or warn"
+                                                                             : "a positive finite number");
+}
+
 int main(int argc, char **argv)
 {
     /* SIGHUP (the terminal closed), SIGINT, SIGTERM: end the run at the next
@@ -338,77 +406,87 @@ int main(int argc, char **argv)
     int quiet = 0, method = 0, on_violation = 0, preload = -1, nset = 0;
     const char *set[RC_CLI_MAX_SET]; /* the --set arguments, in order */
     double t_end = 0.0, dt_out = 0.0, rtol = 0.0;
-    for (int k = 2; k < argc; k++) {
-        const char *a = argv[k];
-        /* --opt VALUE or --opt=VALUE */
-        const char *names[] = {"--t-end", "--dt-out", "--rtol"};
-        double *vals[] = {&t_end, &dt_out, &rtol};
-        int took = 0;
-        for (int j = 0; j < 3 && is_run; j++) {
-            const size_t n = strlen(names[j]);
-            if (strncmp(a, names[j], n) || (a[n] != '\0' && a[n] != '=')) continue;
-            const char *v = a[n] == '=' ? a + n + 1 : (k + 1 < argc ? argv[++k] : NULL);
-            if (!positive(names[j], v, vals[j])) return 2;
-            took = 1;
+    /* options in any position (getopt_long permutes them in front of the
+     * case file), --opt VALUE or --opt=VALUE; `check` takes --set, -q and
+     * --help only */
+    enum { O_TEND = 256, O_DTOUT, O_RTOL, O_METHOD, O_ONVIOL, O_SET, O_PRELOAD, O_NOPRELOAD };
+    static const struct option run_opts[] = {
+        {"t-end", required_argument, NULL, O_TEND},    {"dt-out", required_argument, NULL, O_DTOUT},
+        {"rtol", required_argument, NULL, O_RTOL},      {"method", required_argument, NULL, O_METHOD},
+        {"on-violation", required_argument, NULL, O_ONVIOL}, {"set", required_argument, NULL, O_SET},
+        {"preload", no_argument, NULL, O_PRELOAD},      {"no-preload", no_argument, NULL, O_NOPRELOAD},
+        {"help", no_argument, NULL, 'h'},               {"quiet", no_argument, NULL, 'q'},
+        {"output", required_argument, NULL, 'o'},       {NULL, 0, NULL, 0}};
+    static const struct option check_opts[] = {{"set", required_argument, NULL, O_SET},
+                                                {"help", no_argument, NULL, 'h'},
+                                                {"quiet", no_argument, NULL, 'q'},
+                                                {NULL, 0, NULL, 0}};
+    const struct option *lo = is_run ? run_opts : check_opts;
+    char **av = argv + 1; /* the command as argv[0] of getopt */
+    const int ac = argc - 1;
+    opterr = 0; /* the messages below, with a suggestion */
+    optind = 1;
+    int ch;
+    while ((ch = getopt_long(ac, av, is_run ? ":o:qh" : ":qh", lo, NULL)) != -1) {
+        switch (ch) {
+        case O_TEND:
+        case O_DTOUT:
+        case O_RTOL: {
+            const char *nm = ch == O_TEND ? "--t-end" : ch == O_DTOUT ? "--dt-out" : "--rtol";
+            if (!positive(nm, optarg, ch == O_TEND ? &t_end : ch == O_DTOUT ? &dt_out : &rtol)) return 2;
+            break;
         }
-        if (took) continue;
-        if (is_run && (!strncmp(a, "--method=", 9) || !strcmp(a, "--method"))) {
-            const char *v = a[8] == '=' ? a + 9 : (k + 1 < argc ? argv[++k] : NULL);
-            method = v && (!strcmp(v, "cvode") || !strcmp(v, "1"))    ? 1
-                     : v && (!strcmp(v, "ida") || !strcmp(v, "2"))    ? 2
-                     : v && (!strcmp(v, "static") || !strcmp(v, "3")) ? 3
-                                                                      : -1;
+        case O_METHOD:
+            method = !strcmp(optarg, "cvode") || !strcmp(optarg, "1")    ? 1
+                     : !strcmp(optarg, "ida") || !strcmp(optarg, "2")    ? 2
+                     : !strcmp(optarg, "static") || !strcmp(optarg, "3") ? 3
+                                                                         : -1;
             if (method < 0) {
-                fprintf(stderr, "ricochet: --method: expected cvode, ida or static (or 1, 2, 3), got %s\n",
-                        v ? v : "nothing");
+                fprintf(stderr, "ricochet: --method: expected cvode, ida or static (or 1, 2, 3), got %s\n", optarg);
                 return 2;
             }
-            continue;
-        }
-        if (is_run && (!strncmp(a, "--on-violation=", 15) || !strcmp(a, "--on-violation"))) {
-            const char *v = a[14] == '=' ? a + 15 : (k + 1 < argc ? argv[++k] : NULL);
-            on_violation = v && !strcmp(v, "stop") ? RC_ON_VIOLATION_STOP : v && !strcmp(v, "warn") ? RC_ON_VIOLATION_WARN : -1;
+            break;
+        case O_ONVIOL:
+            on_violation = !strcmp(optarg, "stop") ? RC_ON_VIOLATION_STOP : !strcmp(optarg, "warn") ? RC_ON_VIOLATION_WARN : -1;
             if (on_violation < 0) {
-                fprintf(stderr, "ricochet: --on-violation: expected stop or warn, got %s\n", v ? v : "nothing");
+                fprintf(stderr, "ricochet: --on-violation: expected stop or warn, got %s\n", optarg);
                 return 2;
             }
-            continue;
-        }
-        if (!strncmp(a, "--set=", 6) || !strcmp(a, "--set")) {
-            const char *v = a[5] == '=' ? a + 6 : (k + 1 < argc ? argv[++k] : NULL);
-            if (!v) {
-                fprintf(stderr, "ricochet: --set: expected CARD:FIELD=VALUE (e.g. /INTER/TYPE6/1:Fric=0.3)\n");
-                return 2;
-            }
+            break;
+        case O_SET:
             if (nset == RC_CLI_MAX_SET) {
-                fprintf(stderr, "ricochet: --set %s: at most %d --set options\n", v, RC_CLI_MAX_SET);
+                fprintf(stderr, "ricochet: --set %s: at most %d --set options\n", optarg, RC_CLI_MAX_SET);
                 return 2;
             }
-            set[nset++] = v;
-            continue;
-        }
-        if (is_run && (!strcmp(a, "--preload") || !strcmp(a, "--no-preload"))) {
-            preload = !strcmp(a, "--preload");
-            continue;
-        }
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            set[nset++] = optarg;
+            break;
+        case O_PRELOAD:
+        case O_NOPRELOAD: preload = ch == O_PRELOAD; break;
+        case 'o': out = optarg; break;
+        case 'q': quiet = 1; break;
+        case 'h':
             if (is_run) usage_run(stdout);
             else usage_check(stdout);
             return 0;
-        }
-        if (!strcmp(a, "-o") && is_run) {
-            if (k + 1 >= argc) {
-                fprintf(stderr, "ricochet: -o: expected an output file name\n");
-                return 2;
-            }
-            out = argv[++k];
-        } else if (!strcmp(a, "-q")) quiet = 1;
-        else if (a[0] == '-' || case_path) {
-            fprintf(stderr, "ricochet %s: unexpected argument '%s'\n", cmd, a);
+        case ':': /* an option without its value */
+            option_needs_value(cmd, av[optind - 1]);
+            return 2;
+        default: /* '?': unknown or ambiguous */
+            unknown_option(cmd, av[optind - 1], lo, is_run);
             if (is_run) usage_run(stderr);
             else usage_check(stderr);
             return 2;
-        } else case_path = a;
+        }
+    }
+    for (int k = optind; k < ac; k++) {
+        if (case_path) {
+            fprintf(stderr, "ricochet %s: unexpected argument '%s' (one case file, %s given first)\n", cmd, av[k],
+                    case_path);
+            if (is_run) usage_run(stderr);
+            else usage_check(stderr);
+            return 2;
+        }
+        case_path = av[k];
     }
     if (rtol >= 1.0) {
         fprintf(stderr, "ricochet: --rtol: expected a relative tolerance below 1, got %g\n", rtol);

@@ -28,6 +28,12 @@ cat "$log"
 pass=$((pass + $(grep -c '^PASS ' "$log")))
 fail=$((fail + $(grep -c '^FAIL ' "$log")))
 
+# animations of results files (scripts/animate.py): frames, exit codes
+bash tests/animate_test.sh "$build/ricochet" > "$log" 2>&1
+cat "$log"
+pass=$((pass + $(grep -c '^PASS ' "$log")))
+fail=$((fail + $(grep -c '^FAIL ' "$log")))
+
 # malformed decks: exit 2 and a message naming file:line, card and field
 bash tests/malformed_test.sh "$build/ricochet" > "$log" 2>&1
 grep -E '^(PASS|FAIL) ' "$log" | grep -v '^PASS ' ; echo "malformed decks: $(grep -c '^PASS ' "$log") passed, $(grep -c '^FAIL ' "$log") failed"

@@ -527,6 +527,11 @@ else echo "FAIL cli.export_vtk_demo_size: exit $rc, $times frames, $bytes bytes 
 "$bin" run -q "$demo" --t-end=0.01 -o"$tmp/anypos.nc" --rtol 1e-6 > "$tmp/x" 2>&1; rc=$?
 [ "$rc" -eq 0 ] && [ -s "$tmp/anypos.nc" ] && echo "PASS cli.options_any_position: options after the case file, --t-end=0.01, -oFILE" ||
     echo "FAIL cli.options_any_position: exit $rc: $(head -c 200 "$tmp/x")"
+# the results file's t_end and dt_out are the run's (the overrides), not the deck's
+"$bin" run -q "$demo" --t-end 0.02 --dt-out 0.005 -o "$tmp/ovattr.nc" > "$tmp/x" 2>&1; rc=$?
+att=$(/usr/bin/python3 -c "import netCDF4; d = netCDF4.Dataset('$tmp/ovattr.nc'); print(d.t_end, d.dt_out)" 2>&1)
+[ "$rc" -eq 0 ] && [ "$att" = "0.02 0.005" ] && echo "PASS cli.override_attributes: t_end, dt_out = $att (the overrides)" ||
+    echo "FAIL cli.override_attributes: exit $rc, t_end dt_out = $att (expected 0.02 0.005)"
 "$bin" run --t-ned 0.01 "$demo" > "$tmp/x" 2>&1; rc=$?
 [ "$rc" -eq 2 ] && grep -q "unknown option '--t-ned': did you mean --t-end?" "$tmp/x" &&
     echo "PASS cli.option_did_you_mean: exit 2, $(head -1 "$tmp/x")" || echo "FAIL cli.option_did_you_mean: exit $rc: $(head -c 200 "$tmp/x")"

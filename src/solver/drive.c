@@ -309,9 +309,10 @@ static const char *const energy_long[RC_NENERGY] = {
 _Static_assert(RC_SURF_NEXT == RC_OUT_SURF_NPARAM, "surface parameters: model and file disagree");
 static const char *const surf_kind_name[] = {"", "PLANE", "SPHERE", "CYLINDER", "BOX", "SEGMENTS"};
 
-rc_status rc_bk_open_output(const rc_model *m, const char *path, const char *note, rc_output **o, rc_error *err,
-                      const char *integrator, const rc_preload *pre)
+rc_status rc_bk_open_output(const rc_model *m, const rc_run_options *opt, const char *note, rc_output **o,
+                            rc_error *err, const char *integrator, const rc_preload *pre)
 {
+    const char *path = opt ? opt->output_path : NULL;
     *o = NULL;
     if (!path) return RC_OK;
     const char **types = malloc(((size_t)m->ninter + 1) * sizeof(char *));
@@ -330,8 +331,9 @@ rc_status rc_bk_open_output(const rc_model *m, const char *path, const char *not
     meta.max_steps = m->max_steps;
     meta.hmax = m->hmax;
     meta.h0 = m->h0;
-    meta.t_end = m->tend;
-    meta.dt_out = m->dtout;
+    /* the run's: the deck's /RUN, or the overrides of the options */
+    meta.t_end = opt && opt->t_end_override > 0 ? opt->t_end_override : m->tend;
+    meta.dt_out = opt && opt->dt_out_override > 0 ? opt->dt_out_override : m->dtout;
     char derived[128] = "";
     static const char *const tol_name[5] = {"atol_position", "atol_quaternion", "atol_velocity",
                                             "atol_angular_velocity", "atol_energy"};
@@ -739,7 +741,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     if (pre) preload_state(m, pre, y);
     rc_modes_init(m, d, t, y);
     if (pre) preload_friction(m, d, pre, y);
-    if ((st = rc_bk_open_output(m, opt ? opt->output_path : NULL, note, &out, err, integrator, pre))) goto done;
+    if ((st = rc_bk_open_output(m, opt, note, &out, err, integrator, pre))) goto done;
     sink.out = out;
     {
         int jmp = 0;

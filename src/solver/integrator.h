@@ -79,11 +79,13 @@ int rc_bk_frame_alloc(const rc_model *m, frame_buf *f);
 /* Fill and write one record at (t, y) (o NULL: only f->energy is filled). */
 rc_status rc_bk_write_frame(const rc_model *m, const rc_data *d, rc_output *o, frame_buf *f, double t, const double *y,
                       int at_event, rc_error *err);
-/* Open the results file (path NULL: none); `integrator` describes the
- * backend in the file's solver attributes; `pre` (NULL: none) the preload
- * the run started from (attributes preload, preload_newton_iters). */
-rc_status rc_bk_open_output(const rc_model *m, const char *path, const char *note, rc_output **o, rc_error *err,
-                      const char *integrator, const rc_preload *pre);
+/* Open the results file of the run options `opt` (NULL or no
+ * output_path: none; its end time and output interval overrides are the
+ * file's t_end and dt_out); `integrator` describes the backend in the
+ * file's solver attributes; `pre` (NULL: none) the preload the run started
+ * from (attributes preload, preload_newton_iters). */
+rc_status rc_bk_open_output(const rc_model *m, const rc_run_options *opt, const char *note, rc_output **o,
+                            rc_error *err, const char *integrator, const rc_preload *pre);
 /* The progress line on stderr. */
 void rc_bk_progress_line(double tend, const rc_stats *s, double t, long steps, double t0, int tty);
 

@@ -1552,7 +1552,7 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
         /* at the start: a contact touching or penetrating is closed */
         if (d->inter_mode[i] != RC_MODE_INACTIVE) d->inter_mode[i] = r.p >= -ptol[i] ? RC_MODE_CLOSED : RC_MODE_OPEN;
     }
-    if ((st = rc_bk_open_output(m, opt ? opt->output_path : NULL, "", &out, err,
+    if ((st = rc_bk_open_output(m, opt, "", &out, err,
                           "static (KINSOL, Newton with line search; KLU sparse direct on the stiffness)", NULL)))
         goto done;
     sink.out = out;

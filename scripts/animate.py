@@ -47,20 +47,13 @@ import textwrap
 import sys
 import time as wallclock
 
-# Debian's packages live in /usr/bin/python3; another python3 first on PATH
-# (pyenv, a venv) may lack them: run again with Debian's interpreter.
-DEBIAN_PYTHON = "/usr/bin/python3"
 try:
     import numpy as np
     import netCDF4
     import matplotlib
-except ImportError as exc:
-    if (os.path.exists(DEBIAN_PYTHON) and not os.environ.get("RC_PLOT_REEXEC")
-            and os.path.realpath(sys.executable) != os.path.realpath(DEBIAN_PYTHON)):
-        os.environ["RC_PLOT_REEXEC"] = "1"
-        os.execv(DEBIAN_PYTHON, [DEBIAN_PYTHON] + sys.argv)
-    sys.exit(f"animate.py: {exc}; install python3-netcdf4 python3-numpy python3-matplotlib "
-             "(scripts/install-deps.sh)")
+except ImportError as exc:  # not Debian's interpreter: run again with it
+    from debian_python import reexec_or_exit
+    reexec_or_exit(exc, "animate.py")
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after choosing the backend)

@@ -88,31 +88,28 @@ fail=$((fail + $(grep -c '^FAIL ' "$log")))
 # (python/ricochet over $build/libricochet.so via RICOCHET_LIB: the ctypes
 # structs, run, set=, errors, sessions, the event callback, threads, pip
 # install, a study on a LocalCluster of 2 worker processes)
-RICOCHET_LIB="$(cd "$build" && pwd)/libricochet.so" PYTHONPATH="$PWD/python" \
-    /usr/bin/python3 tests/python_run_test.py "$build" > "$log" 2>&1
-st=$?
-grep -E '^(PASS|FAIL|SKIP) ' "$log"
-pass=$((pass + $(grep -c '^PASS ' "$log")))
-fail=$((fail + $(grep -c '^FAIL ' "$log")))
-if [ "$st" -ne 0 ] && [ "$(grep -c '^FAIL ' "$log")" -eq 0 ]; then
-    echo "FAIL pyrun: tests/python_run_test.py exited with status $st:"; tail -n 20 "$log"
-    fail=$((fail + 1))
-fi
+# py_suite NAME SCRIPT: a Python test script over this build's library
+# (RICOCHET_LIB, the source tree's module), its PASS/FAIL/SKIP lines
+# counted; a script that fails without a FAIL line counts as one
+py_suite() {
+    RICOCHET_LIB="$(cd "$build" && pwd)/libricochet.so" PYTHONPATH="$PWD/python" \
+        timeout 300 /usr/bin/python3 "$2" "$build" > "$log" 2>&1
+    local st=$?
+    grep -E '^(PASS|FAIL|SKIP) ' "$log"
+    pass=$((pass + $(grep -c '^PASS ' "$log")))
+    fail=$((fail + $(grep -c '^FAIL ' "$log")))
+    if [ "$st" -ne 0 ] && [ "$(grep -c '^FAIL ' "$log")" -eq 0 ]; then
+        echo "FAIL $1: $2 exited with status $st:"; tail -n 20 "$log"
+        fail=$((fail + 1))
+    fi
+}
+py_suite pyrun tests/python_run_test.py
 
 # studies on a real Dask cluster: a scheduler and two worker processes
 # started by the test (killed at its end), results against serial runs bit
 # for bit, a worker killed mid-study, an interrupted study resumed from its
 # study_dir (tests/python_study_test.py; SKIP without python3-distributed)
-RICOCHET_LIB="$(cd "$build" && pwd)/libricochet.so" PYTHONPATH="$PWD/python" \
-    timeout 300 /usr/bin/python3 tests/python_study_test.py "$build" > "$log" 2>&1
-st=$?
-grep -E '^(PASS|FAIL|SKIP) ' "$log"
-pass=$((pass + $(grep -c '^PASS ' "$log")))
-fail=$((fail + $(grep -c '^FAIL ' "$log")))
-if [ "$st" -ne 0 ] && [ "$(grep -c '^FAIL ' "$log")" -eq 0 ]; then
-    echo "FAIL pystudy: tests/python_study_test.py exited with status $st:"; tail -n 20 "$log"
-    fail=$((fail + 1))
-fi
+py_suite pystudy tests/python_study_test.py
 
 # validation problems: each check.py prints PASS/FAIL lines; every problem
 # runs twice, first with the solver settings of its decks, then at ricochet's

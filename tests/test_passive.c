@@ -317,23 +317,30 @@ static double ledger_drop(int ncid, const char *var, size_t nt, double *last)
  * run's energy scale (the largest kinetic energy plus the range of the
  * potential energy): the integration's own error is below 1e-7 E_s at the
  * default tolerances, the sharing rule of before created 1e-2 E_s. */
-static void ledger_monotone(const char *deck, const char *name, double rel)
+/* Compiles the deck (written as `name`), runs it to the results file
+ * <tmp>/name.nc (its path into out[512]) and checks it ran; 0 when it did.
+ * m_check (may be NULL) is called on the compiled model first. */
+static int run_to_file(const char *deck, const char *name, char *out, void (*m_check)(const rc_model *))
 {
     rc_error e;
     rc_model *m = TU_COMPILE_OK(deck, name);
-    if (!m) return;
-    char out[512];
-    snprintf(out, sizeof out, "%s.nc", tu_tmp_write(name, ""));
+    if (!m) return -1;
+    if (m_check) m_check(m);
+    snprintf(out, 512, "%s.nc", tu_tmp_write(name, ""));
     rc_run_options o;
     memset(&o, 0, sizeof o);
     o.output_path = out;
     const rc_status st = rc_run(m, &o, NULL, &e);
     ENSURE(st == RC_OK);
     rc_model_free(m);
-    if (st) {
-        printf("    %s\n", e.msg);
-        return;
-    }
+    if (st) printf("    %s\n", e.msg);
+    return st ? -1 : 0;
+}
+
+static void ledger_monotone(const char *deck, const char *name, double rel)
+{
+    char out[512];
+    if (run_to_file(deck, name, out, NULL)) return;
     int ncid, tid;
     size_t nt = 0;
     ENSURE(nc_open(out, NC_NOWRITE, &ncid) == NC_NOERR);
@@ -884,21 +891,12 @@ static const char *release_deck =
     "/INTER/TYPE6/1\nball on floor\n1,2\n\n\n1,0\n\n400\n"
     "/RUN\n0.3,0.001\n/END\n";
 
+static void release_ledger_kept(const rc_model *m) { ENSURE(rc_inter_release_ledger(m, 0)); }
+
 static void test_elastic_damped_release_ledger(void)
 {
-    rc_error e;
-    rc_model *m = TU_COMPILE_OK(release_deck, "release.rad");
-    if (!m) return;
-    ENSURE(rc_inter_release_ledger(m, 0));
     char out[512];
-    snprintf(out, sizeof out, "%s.nc", tu_tmp_write("release.rad", ""));
-    rc_run_options o;
-    memset(&o, 0, sizeof o);
-    o.output_path = out;
-    const rc_status st = rc_run(m, &o, NULL, &e);
-    ENSURE(st == RC_OK);
-    rc_model_free(m);
-    if (st) return;
+    if (run_to_file(release_deck, "release.rad", out, release_ledger_kept)) return;
     int ncid, id, dim;
     size_t nt = 0, nev = 0;
     ENSURE(nc_open(out, NC_NOWRITE, &ncid) == NC_NOERR);

@@ -77,6 +77,12 @@ const char *rc_status_str(rc_status code);
  * failed; 130 when interrupted (the shell's 128 + SIGINT); 1 for other
  * failures. */
 int rc_status_exit_code(rc_status code);
+/* The one name of cand[0..n) (NULL entries skipped) within a typo of word:
+ * an edit distance (insertions, deletions, substitutions, compared as
+ * written) of at most 1 for words up to 4 characters, else 2; NULL when
+ * none is, or when two different names are as close (the "did you mean" of
+ * the messages). */
+const char *rc_closest_name(const char *word, const char *const *cand, int n);
 /* Version string, e.g. "0.1.0". */
 const char *rc_version(void);
 /* The git commit ricochet was built from ("unknown" outside a git checkout)

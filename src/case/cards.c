@@ -142,50 +142,6 @@ static rc_status rc_card_call(rc_reader *rd, const rc_block *b, rc_card_kind kin
     return RC_SET(rd->err, RC_EINTERNAL, "unknown card kind %d", (int)kind);
 }
 
-/* Edit distance of two keywords (insertions, deletions, substitutions;
- * letters compared as the reader has them, upper case), capped at 9. */
-static int rc_kw_distance(const char *a, const char *b)
-{
-    const size_t na = strlen(a), nb = strlen(b);
-    if (na > 31 || nb > 31) return 9;
-    int row[32];
-    for (size_t j = 0; j <= nb; j++) row[j] = (int)j;
-    for (size_t i = 1; i <= na; i++) {
-        int diag = row[0];
-        row[0] = (int)i;
-        for (size_t j = 1; j <= nb; j++) {
-            const int up = row[j];
-            int v = diag + (a[i - 1] != b[j - 1]); /* substitution */
-            if (up + 1 < v) v = up + 1;               /* deletion */
-            if (row[j - 1] + 1 < v) v = row[j - 1] + 1; /* insertion */
-            row[j] = v;
-            diag = up;
-        }
-    }
-    return row[nb] > 9 ? 9 : row[nb];
-}
-
-/* The one candidate within the typo distance of word (1 for words up to
- * 4 letters, else 2), or NULL (none, or two equally close). */
-const char *rc_kw_closest(const char *word, const char *const *cand, int n)
-{
-    const int lim = strlen(word) <= 4 ? 1 : 2;
-    const char *best = NULL;
-    int dbest = lim + 1, ties = 0;
-    for (int i = 0; i < n; i++) {
-        if (!cand[i]) continue;
-        const int d = rc_kw_distance(word, cand[i]);
-        if (d < dbest) {
-            dbest = d;
-            best = cand[i];
-            ties = 0;
-        } else if (d == dbest && best && strcmp(best, cand[i]) != 0) {
-            ties = 1;
-        }
-    }
-    return dbest <= lim && !ties ? best : NULL;
-}
-
 /* Is sub a subtype that Radioss has for the family kw (a card of its own,
  * not supported yet), as opposed to a misspelling? The interface types
  * TYPEn, and the other subtypes of the families ricochet reads in part. */
@@ -231,7 +187,7 @@ static rc_status rc_bad_subtype(rc_reader *rd, const rc_block *b)
     if (b->nkw < 2)
         return rc_case_fail(rd, &b->hdr->loc, b->name, NULL, "missing subtype (expected %s)",
                             list);
-    const char *near = rc_radioss_subtype(b->kw[0], b->kw[1]) ? NULL : rc_kw_closest(b->kw[1], subs, ns);
+    const char *near = rc_radioss_subtype(b->kw[0], b->kw[1]) ? NULL : rc_closest_name(b->kw[1], subs, ns);
     if (near)
         return rc_case_fail(rd, &b->hdr->loc, b->name, NULL, "/%s/%s: no such card: did you mean /%s/%s? (supported: %s)",
                             b->kw[0], b->kw[1], b->kw[0], near, list);
@@ -279,7 +235,7 @@ rc_status rc_card_dispatch(rc_reader *rd, const rc_block *b)
     for (int i = 0; i < RC_NF(rc_ignored); i++) all[na++] = rc_ignored[i];
     for (int i = 0; i < RC_NF(rc_explicit); i++) all[na++] = rc_explicit[i];
     for (int i = 0; i < RC_NF(rc_planned); i++) all[na++] = rc_planned[i];
-    const char *near = rc_kw_closest(kw, all, na);
+    const char *near = rc_closest_name(kw, all, na);
     if (near)
         return rc_case_fail(rd, &b->hdr->loc, b->name, NULL,
                             "unknown card: did you mean /%s? (docs/case-format.md lists the cards read and those "

@@ -378,9 +378,6 @@ rc_status rc_cards_mesh_finish(rc_reader *rd);
 
 /* Read one block: dispatch on its keyword. */
 rc_status rc_card_dispatch(rc_reader *rd, const rc_block *b);
-/* The one candidate within the typo distance of word (1 for words up to 4
- * letters, else 2; compared as written), or NULL (none, or two as close). */
-const char *rc_kw_closest(const char *word, const char *const *cand, int n);
 
 /* ---- --set overrides (override.c) -------------------------------------- */
 

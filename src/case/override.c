@@ -201,7 +201,7 @@ static rc_status rc_override_unknown(rc_reader *rd, const rc_block *b, const rc_
         }
     }
     for (size_t i = 0; i <= strlen(o->field); i++) word[i] = (char)toupper((unsigned char)o->field[i]);
-    const char *near = rc_kw_closest(word, cand, nc);
+    const char *near = rc_closest_name(word, cand, nc);
     if (near) {
         /* the name as the table writes it */
         const char *p = names + (near - up);

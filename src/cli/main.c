@@ -301,31 +301,24 @@ static int study(int argc, char **argv)
     return 2;
 }
 
-/* Edit distance of a and b (insertions, deletions, substitutions,
- * transpositions of neighbours), up to 64 characters. */
-static int edit_distance(const char *a, const char *b)
-{
-    const size_t na = strlen(a), nb = strlen(b);
-    if (na > 64 || nb > 64) return 99;
-    int d[65][65];
-    for (size_t i = 0; i <= na; i++) d[i][0] = (int)i;
-    for (size_t j = 0; j <= nb; j++) d[0][j] = (int)j;
-    for (size_t i = 1; i <= na; i++)
-        for (size_t j = 1; j <= nb; j++) {
-            int v = d[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
-            if (d[i - 1][j] + 1 < v) v = d[i - 1][j] + 1;
-            if (d[i][j - 1] + 1 < v) v = d[i][j - 1] + 1;
-            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] && d[i - 2][j - 2] + 1 < v)
-                v = d[i - 2][j - 2] + 1;
-            d[i][j] = v;
-        }
-    return d[na][nb];
-}
+/* The long options of run and check (main); `check` takes --set, -q and
+ * --help only. */
+enum { O_TEND = 256, O_DTOUT, O_RTOL, O_METHOD, O_ONVIOL, O_SET, O_PRELOAD, O_NOPRELOAD };
+static const struct option run_opts[] = {
+    {"t-end", required_argument, NULL, O_TEND},          {"dt-out", required_argument, NULL, O_DTOUT},
+    {"rtol", required_argument, NULL, O_RTOL},            {"method", required_argument, NULL, O_METHOD},
+    {"on-violation", required_argument, NULL, O_ONVIOL}, {"set", required_argument, NULL, O_SET},
+    {"preload", no_argument, NULL, O_PRELOAD},            {"no-preload", no_argument, NULL, O_NOPRELOAD},
+    {"help", no_argument, NULL, 'h'},                     {"quiet", no_argument, NULL, 'q'},
+    {"output", required_argument, NULL, 'o'},             {NULL, 0, NULL, 0}};
+static const struct option check_opts[] = {{"set", required_argument, NULL, O_SET},
+                                            {"help", no_argument, NULL, 'h'},
+                                            {"quiet", no_argument, NULL, 'q'},
+                                            {NULL, 0, NULL, 0}};
 
 /* "unknown option" for arg, with the closest of the command's long options
- * when it is within 2 edits (1 for names up to 4 letters) and no other is
- * as close. */
-static void unknown_option(const char *cmd, const char *arg, const struct option *lo, int is_run)
+ * (rc_closest_name), or, given to check, the run option it names. */
+static void unknown_option(const char *cmd, const char *arg, const struct option *lo)
 {
     char name[128];
     const char *p = arg;
@@ -333,26 +326,15 @@ static void unknown_option(const char *cmd, const char *arg, const struct option
     snprintf(name, sizeof name, "%s", p);
     char *eq = strchr(name, '=');
     if (eq) *eq = '\0';
-    const char *best = NULL;
-    int bd = 99, ties = 0;
-    for (int k = 0; lo[k].name; k++) {
-        const int dd = edit_distance(name, lo[k].name);
-        if (dd < bd) {
-            bd = dd;
-            best = lo[k].name;
-            ties = 0;
-        } else if (dd == bd) {
-            ties++;
-        }
-    }
-    const int lim = strlen(name) <= 4 ? 1 : 2;
-    if (best && bd <= lim && !ties)
-        fprintf(stderr, "ricochet %s: unknown option '%s': did you mean --%s?\n", cmd, arg, best);
-    else if (!is_run && (!strcmp(name, "t-end") || !strcmp(name, "dt-out") || !strcmp(name, "rtol") ||
-                         !strcmp(name, "method") || !strcmp(name, "o")))
-        fprintf(stderr, "ricochet %s: option '%s' is an option of `ricochet run`\n", cmd, arg);
-    else
-        fprintf(stderr, "ricochet %s: unknown option '%s'\n", cmd, arg);
+    const char *cand[16];
+    int n = 0;
+    for (; lo[n].name && n < 16; n++) cand[n] = lo[n].name;
+    const char *best = rc_closest_name(name, cand, n);
+    int of_run = !strcmp(name, "o");
+    for (int k = 0; run_opts[k].name && lo != run_opts; k++) of_run |= !strcmp(name, run_opts[k].name);
+    if (best) fprintf(stderr, "ricochet %s: unknown option '%s': did you mean --%s?\n", cmd, arg, best);
+    else if (of_run) fprintf(stderr, "ricochet %s: option '%s' is an option of `ricochet run`\n", cmd, arg);
+    else fprintf(stderr, "ricochet %s: unknown option '%s'\n", cmd, arg);
 }
 
 /* An option given without its value. */
@@ -407,20 +389,7 @@ int main(int argc, char **argv)
     const char *set[RC_CLI_MAX_SET]; /* the --set arguments, in order */
     double t_end = 0.0, dt_out = 0.0, rtol = 0.0;
     /* options in any position (getopt_long permutes them in front of the
-     * case file), --opt VALUE or --opt=VALUE; `check` takes --set, -q and
-     * --help only */
-    enum { O_TEND = 256, O_DTOUT, O_RTOL, O_METHOD, O_ONVIOL, O_SET, O_PRELOAD, O_NOPRELOAD };
-    static const struct option run_opts[] = {
-        {"t-end", required_argument, NULL, O_TEND},    {"dt-out", required_argument, NULL, O_DTOUT},
-        {"rtol", required_argument, NULL, O_RTOL},      {"method", required_argument, NULL, O_METHOD},
-        {"on-violation", required_argument, NULL, O_ONVIOL}, {"set", required_argument, NULL, O_SET},
-        {"preload", no_argument, NULL, O_PRELOAD},      {"no-preload", no_argument, NULL, O_NOPRELOAD},
-        {"help", no_argument, NULL, 'h'},               {"quiet", no_argument, NULL, 'q'},
-        {"output", required_argument, NULL, 'o'},       {NULL, 0, NULL, 0}};
-    static const struct option check_opts[] = {{"set", required_argument, NULL, O_SET},
-                                                {"help", no_argument, NULL, 'h'},
-                                                {"quiet", no_argument, NULL, 'q'},
-                                                {NULL, 0, NULL, 0}};
+     * case file), --opt VALUE or --opt=VALUE */
     const struct option *lo = is_run ? run_opts : check_opts;
     char **av = argv + 1; /* the command as argv[0] of getopt */
     const int ac = argc - 1;
@@ -472,7 +441,7 @@ int main(int argc, char **argv)
             option_needs_value(cmd, av[optind - 1]);
             return 2;
         default: /* '?': unknown or ambiguous */
-            unknown_option(cmd, av[optind - 1], lo, is_run);
+            unknown_option(cmd, av[optind - 1], lo);
             if (is_run) usage_run(stderr);
             else usage_check(stderr);
             return 2;

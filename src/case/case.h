@@ -303,7 +303,7 @@ struct rc_case {
                             (rc_case_load_set); NULL: none */
 
     int nfiles; char **files; /* every file read (main + includes); rc_loc.file points here */
-    unsigned long long *file_id; /* [2*nfiles] device and inode of each file as it was read
+    unsigned long long *file_id; /* [4*nfiles] device, inode, size and modification time [ns] of each file as it was read
                                     (NULL in a case built by hand) */
 
     int nfunct;  rc_case_funct *funct;

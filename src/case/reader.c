@@ -42,8 +42,8 @@
 
 static rc_status rc_lex_file(rc_reader *rd, const char *path, const rc_loc *inc);
 
-/* Register a file name in c->files (once), with the device and inode it
- * was read from, and return the stored copy. */
+/* Register a file name in c->files (once), with the device, inode, size and
+ * modification time it was read with, and return the stored copy. */
 static const char *rc_file_name(rc_reader *rd, const char *path, const struct stat *sb)
 {
     rc_case *c = rd->c;
@@ -52,8 +52,8 @@ static const char *rc_file_name(rc_reader *rd, const char *path, const struct st
     char *s = strdup(path);
     char **f = s ? rc_case_grow(rd, c->files, &rd->capfiles, c->nfiles, sizeof *f) : NULL;
     if (f) c->files = f;
-    /* two entries per file: a pair of ids grown as one element */
-    unsigned long long(*id)[2] =
+    /* four entries per file, grown as one element */
+    unsigned long long(*id)[4] =
         f ? rc_case_grow(rd, c->file_id, &rd->capfileid, c->nfiles, sizeof *id) : NULL;
     if (!f || !id) {
         free(s);
@@ -63,6 +63,8 @@ static const char *rc_file_name(rc_reader *rd, const char *path, const struct st
     c->file_id = &id[0][0];
     id[c->nfiles][0] = (unsigned long long)sb->st_dev;
     id[c->nfiles][1] = (unsigned long long)sb->st_ino;
+    id[c->nfiles][2] = (unsigned long long)sb->st_size;
+    id[c->nfiles][3] = (unsigned long long)sb->st_mtim.tv_sec * 1000000000ull + (unsigned long long)sb->st_mtim.tv_nsec;
     c->files[c->nfiles++] = s;
     return s;
 }

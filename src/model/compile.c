@@ -685,8 +685,8 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
         else files_ok = 0;
     /* and their device and inode as read: the results never overwrite them */
     if (files_ok && c->file_id) {
-        m->file_id = malloc(2 * ((size_t)m->nfile + 1) * sizeof *m->file_id);
-        if (m->file_id) memcpy(m->file_id, c->file_id, 2 * (size_t)m->nfile * sizeof *m->file_id);
+        m->file_id = malloc(4 * ((size_t)m->nfile + 1) * sizeof *m->file_id);
+        if (m->file_id) memcpy(m->file_id, c->file_id, 4 * (size_t)m->nfile * sizeof *m->file_id);
         else files_ok = 0;
     }
     if (!files_ok) {

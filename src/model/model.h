@@ -185,7 +185,8 @@ struct rc_model {
     unsigned long checksum;
     int nfile;           /* files read: 0 the case file, then its includes */
     char **file;         /* [nfile] their paths (as given or resolved) */
-    unsigned long long *file_id; /* [2*nfile] device and inode of each as read (NULL: not known) */
+    unsigned long long *file_id; /* [4*nfile] device, inode, size and modification time [ns] of
+                                    each as read (NULL: not known) */
 
     /* bodies: all /RBODY, fixed ones included */
     int nbody;

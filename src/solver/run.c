@@ -27,7 +27,8 @@ static const char *file_kind(mode_t mode)
 }
 
 /* The output path must not name an input of the model: the case file or a
- * file it includes, compared by device and inode (as read, and as the paths
+ * file it includes, compared by device and inode (as read, with the size and
+ * modification time then, and as the paths
  * resolve now), so that another spelling, a link or a symbolic link of an
  * input is recognised; nor anything but a regular file. RC_EINPUT. */
 static rc_status check_output_path(const rc_model *m, const char *out, rc_error *err)
@@ -41,8 +42,14 @@ static rc_status check_output_path(const rc_model *m, const char *out, rc_error 
                  out, file_kind(so.st_mode));
     for (int i = 0; i < m->nfile; i++) {
         struct stat si;
-        const int as_read = m->file_id && m->file_id[2 * i] == (unsigned long long)so.st_dev &&
-                            m->file_id[2 * i + 1] == (unsigned long long)so.st_ino;
+        /* as read: the same device and inode, and the same size and
+         * modification time, so that a file that got the inode of an
+         * input deleted since (a new results file) is not taken for it */
+        const unsigned long long *id = m->file_id ? m->file_id + 4 * i : NULL;
+        const int as_read = id && id[0] == (unsigned long long)so.st_dev && id[1] == (unsigned long long)so.st_ino &&
+                            id[2] == (unsigned long long)so.st_size &&
+                            id[3] == (unsigned long long)so.st_mtim.tv_sec * 1000000000ull +
+                                         (unsigned long long)so.st_mtim.tv_nsec;
         const int as_now = stat(m->file[i], &si) == 0 && si.st_dev == so.st_dev && si.st_ino == so.st_ino;
         if (as_read || as_now)
             RC_RAISE(err, RC_EINPUT,

@@ -848,6 +848,24 @@ static void test_slip_waits_for_a_falling_limit(void)
          * the root calls the stick at once */
         if (c == 0) ENSURE(fabs(yd[m->inter_eadr[0] + m->inter_fr[0].tidx] + kt * vx) <= 1e-9 * kt * vx);
     }
+    /* lifting, the state put on the limit by a stick -> slip event, a few
+     * roundings below it: still "at the limit" (within the force band), the
+     * root is v_t . e less the threshold; taken as below the limit, the root
+     * was +v_t . e and the slip that starts turned against the sliding by
+     * rounding (a ball struck by a meshed box left at 3.60 or 3.64 m/s) */
+    {
+        yb[7] = vx;
+        yb[9] = 0.01;
+        rc_inter_report r;
+        rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
+        ft[0] = nextafter(nextafter(nextafter(r.flim, 0.0), 0.0), 0.0);
+        ft[1] = ft[2] = 0.0;
+        rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
+        const double thr = 3e-4;
+        printf("    lifting, the state 3 roundings below the limit: slip root %.6e m/s (want %.6e)\n", r.slip_root,
+               vx - thr);
+        ENSURE(fabs(r.slip_root - (vx - thr)) <= 1e-9 * vx && r.slip_root < 0);
+    }
     /* lifting, sliding along the force past the threshold (5e-4 > 3e-4 m/s):
      * the root calls the stick, and until then the state goes on at about
      * the limit's rate, K_t thr (1 + ln(v / thr)) = 4.53e3 N/s, not K_t v

@@ -88,6 +88,7 @@ typedef struct run_ctx {
     int *old_mode, *old_branch, *old_track, *old_slip; /* the modes before a root return's events */
     int *old_pslip;                                    /* [npt] the contact points' modes before them */
     double *jshare; /* [npt] the contact points' shares when the Jacobian was last evaluated */
+    double *jflim;  /* [ninter] the slipping interfaces' friction limits then (rc_scratch.inter_flim) */
     int fresh; /* modes changed without a restart: the Jacobian is stale */
     double h_restart; /* the first step of the last restart [s] (restart_step) */
     int own_h0;       /* the integrator runs from a restart with h_restart, no step taken yet */
@@ -156,6 +157,24 @@ static int shares_moved(const run_ctx *c)
     return 0;
 }
 
+/* Has the friction limit of a slipping interface doubled or halved (beyond
+ * its force band) since the Jacobian was evaluated (jflim)? The slip law's
+ * rows turn and load the state at K_t |v_t| / L_r (kernels.inc, L_r about
+ * the limit): a ball striking a stiff wall while sliding raises the limit
+ * from 1e2 to 1e8 N within 1e-8 s, and a Newton matrix kept from the first
+ * steps of it, a million times too stiff, let every correction of the state
+ * follow the predictor: the state grew at K_t |v_t| to 300 times its limit
+ * (20 J stored in the stick spring, energy_friction falling by as much). */
+static int limits_moved(const run_ctx *c)
+{
+    const double *l = c->d->sc->inter_flim, *lj = c->jflim;
+    for (int i = 0; i < c->m->ninter; i++) {
+        const double a = l[i], b = lj[i], fb = c->m->inter_fr[i].fband;
+        if (a > 2.0 * b + fb || b > 2.0 * a + fb) return 1;
+    }
+    return 0;
+}
+
 /* The Newton matrix I - gamma J formed in place (CVodeSetLinSysFn): J is
  * evaluated into jsave only when CVODE asks for a new one (jok false, or
  * a contact point's share moved: shares_moved), and
@@ -177,7 +196,7 @@ static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleanty
      * then asks again (jok false) and gets a whole new Jacobian. */
     const int patched = c->jac_patched;
     c->jac_patched = 0;
-    if (jok && !patched && m->npt > 0 && shares_moved(c)) jok = SUNFALSE;
+    if (jok && !patched && ((m->npt > 0 && shares_moved(c)) || limits_moved(c))) jok = SUNFALSE;
     if (!jok) {
         const double *yf = whole(c, y, c->ysc); /* the whole state (the part's slots depend on it) */
         if (!patched) {
@@ -186,6 +205,7 @@ static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleanty
             /* the shares of a whole Jacobian (a patched one keeps the other
              * points' blocks, and their shares, from the last whole one) */
             if (m->npt > 0) memcpy(c->jshare, c->d->sc->pt_share, (size_t)m->npt * sizeof(double));
+            memcpy(c->jflim, c->d->sc->inter_flim, (size_t)m->ninter * sizeof(double));
         }
         *jcur = SUNTRUE;
         /* new values, perhaps new active slots: the part follows */
@@ -366,10 +386,11 @@ static rc_status cv_open(void *self, const rc_model *m, rc_data *d, const rc_run
     c->old_pslip = calloc((size_t)m->npt + 1, sizeof(int));
     c->jsave = calloc((size_t)m->nnz + 1, sizeof(double));
     c->jshare = calloc((size_t)m->npt + 1, sizeof(double));
+    c->jflim = calloc((size_t)m->ninter + 1, sizeof(double));
     c->kidx = malloc(ny * sizeof(int));
     c->ridx = malloc(ny * sizeof(int));
     c->qoff = malloc(((size_t)m->nbody + 1) * sizeof(int));
-    if (!c->old_mode || !c->old_branch || !c->old_track || !c->old_slip || !c->old_pslip || !c->jsave || !c->jshare || !c->kidx ||
+    if (!c->old_mode || !c->old_branch || !c->old_track || !c->old_slip || !c->old_pslip || !c->jsave || !c->jshare || !c->jflim || !c->kidx ||
         !c->ridx || !c->qoff)
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     /* the driver fills the whole state; CVODE's vectors follow in cv_start,
@@ -684,6 +705,7 @@ static void cv_close(void *self)
     free(c->old_pslip);
     free(c->jsave);
     free(c->jshare);
+    free(c->jflim);
     if (c->d) c->d->jac_skip = NULL;
     free(c->cst);
     free(c->kidx);

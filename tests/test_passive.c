@@ -18,6 +18,7 @@
 #include "harness.h"
 #include "model/friction.h"
 #include "model/model.h"
+#include "model/power.h"
 #include "testutil.h"
 #include "engine/assembly/assembly.h"
 
@@ -790,6 +791,64 @@ static void test_contact_records_bounded(void)
 }
 
 
+/* ---- the power law's rebound branch on the damping's own rate --------- */
+/* A box resting flat on a floor with /INTER/POWER (K 1e9 N/m^1.5, m1 1.5,
+ * C 1e4, m2 1, m3 1.5, RDF 0.001): its law's penetration P_e a little above
+ * P (a relaxation in progress, rate -kappa (P_e - P)), the box at rest
+ * (v_bar = 0). The RDF root is v_bar, the rate the damping acts on, where
+ * the damping force is zero on both branches; on P_e's rate (negative
+ * here) the branch switched while the damper carried a force, and the jump
+ * turned the rate back at once (a box on an incline: rebound/approach every
+ * 1e-9 s, Zeno). */
+static void test_power_rdf_root_on_damping_rate(void)
+{
+    static const char *deck =
+        "/BEGIN\nbox on a floor, power law\n      2022         0\n"
+        "                  kg                   m                   s\n"
+        "                  kg                   m                   s\n"
+        "/NODE\n1,0,0,0.04\n"
+        "/RBODY/1\nbox\n1,,,,15,1\n0.026,0.058,0.063\n0,0,0\n"
+        "/SURF/BOX/1\nbox\n1\n0,0,0.04\n0.1,0.06,0.04\n"
+        "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
+        "/GRNOD/NODE/1\nbox\n1\n"
+        "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"
+        "/INTER/POWER/1\nbox on floor\n1,2\n1e9,1.5,1e4,1,1.5\n0.001\n"
+        "/RUN\n0.01,0.001\n/END\n";
+    rc_model *m = TU_COMPILE_OK(deck, "power_rdf.rad");
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    const int ng = rc_root_land_base(m) + m->npt;
+    double *g = calloc((size_t)ng + 1, sizeof(double));
+    ENSURE(d && y && g && m->ninter == 1 && m->inter_peidx[0] >= 0 && m->inter_pw[0].rdf == 0.001);
+    if (!d || !y || !g) goto out;
+    rc_initial_state(m, y);
+    double *yb = y + m->body_yadr[0];
+    const double p = 1e-6;
+    yb[2] = 0.04 - p; /* every corner 1e-6 m into the floor, at rest */
+    y[m->inter_eadr[0] + m->inter_peidx[0]] = 1.5 * p; /* P_e above P: relaxing */
+    d->inter_mode[0] = RC_MODE_CLOSED;
+    for (int br = 0; br < 2; br++) {
+        d->inter_branch[0] = br == 0 ? RC_BR_LOAD : RC_BR_UNLOAD;
+        rc_inter_report r;
+        rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
+        rc_assemble_roots(m, d, 0.0, y, g);
+        const double root = g[RC_ROOT_HYST_A];
+        printf("    %s: P %.6e m, P_e %.6e m, v_bar %.3e m/s, P_e rate %.6e m/s, RDF root %.3e m/s, damping %.3e N\n",
+               br == 0 ? "approach" : "rebound", r.p, r.pl, r.vd, r.vl, root, r.fdamp);
+        ENSURE(fabs(r.p - p) < 1e-12 && fabs(r.pl - 1.5 * p) < 1e-12);
+        ENSURE(fabs(r.vd) < 1e-12);         /* at rest: v_bar = 0 */
+        ENSURE(r.vl < -1e-3 * p);           /* P_e relaxes down */
+        ENSURE(fabs(root - r.vd) < 1e-12);  /* the root is the damping's rate */
+        ENSURE(fabs(r.fdamp) < 1e-9);       /* no damping force at the root */
+    }
+out:
+    free(g);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 /* ---- a falling limit: the slip goes on until the spring outruns it ---- */
 /* A ball (1 kg, R = 0.05 m) pressed into a floor by p = 1e-5 m (linear law
  * 1e6 N/m: F_n = 10 N), Fric 0.3 (limit 3 N), stick stiffness Stiff 1e7
@@ -961,6 +1020,7 @@ void suite_passive(void)
     RUN_TEST(test_iform2_reversals_stay_on_the_stiff_line);
     RUN_TEST(test_ball_rolls_onto_incline);
     RUN_TEST(test_slip_waits_for_a_falling_limit);
+    RUN_TEST(test_power_rdf_root_on_damping_rate);
     RUN_TEST(test_elastic_damped_release_ledger);
     RUN_TEST(test_box_sliding_start_at_every_rtol);
     RUN_TEST(test_contact_records_bounded);

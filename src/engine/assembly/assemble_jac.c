@@ -615,6 +615,7 @@ void rc_inter_report_rate(const rc_model *m, int i, int mode, int branch, int tr
     dr->vn_raw = rc_cs_deriv(o.vn_raw);
     dr->pl = rc_cs_deriv(o.pl);
     dr->vl = rc_cs_deriv(o.vl);
+    dr->vd = rc_cs_deriv(o.vd);
     dr->fload = rc_cs_deriv(o.fel);
     dr->fdamp = rc_cs_deriv(o.fd);
     dr->fn = dr->fload + dr->fdamp;

@@ -97,6 +97,7 @@ static inline void report_normal_of(const t6out_r *po, rc_inter_report *r)
     r->vn_raw = po->vn_raw;
     r->pl = po->pl;
     r->vl = po->vl;
+    r->vd = po->vd;
     r->fload = po->fel;
     r->fdamp = po->fd;
     r->fn = po->fel + po->fd;
@@ -287,7 +288,7 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         /* hysteresis: reversal on the curves, bounds on the Stiff line */
         /* power law with RDF: the rate of P (approach / rebound) */
         if (mode != RC_MODE_OPEN && m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0)
-            gi[RC_ROOT_HYST_A] = r.vl + d->inter_rband[i];
+            gi[RC_ROOT_HYST_A] = r.vd + d->inter_rband[i]; /* the damping's own rate */
         if (mode != RC_MODE_OPEN && m->inter_iform[i] != 0) {
             if (br == RC_BR_ELASTIC) {
                 /* F_h starts on the curve it left (F_L at a reversal, F_U

@@ -119,6 +119,9 @@ typedef struct rc_inter_report {
     double vn_raw;       /* its rate [m/s] */
     double pl, vl;       /* the law's penetration and rate: p and vn, or with
                             several contact points P_e and v_bar [m], [m/s] */
+    double vd;           /* the rate the damping acts on: vn, or v_bar with
+                            several contact points (vl before P_e's relaxation
+                            and recovery) [m/s] */
     double fload;        /* elastic(-plastic) force F of the law [N] */
     double fdamp;        /* damping force [N] */
     double fn;           /* total normal force F + F_damp, unclipped [N] */

@@ -897,12 +897,19 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
                 kind = RC_EV_HYST_RELOADING;
             }
         } else if (m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0) {
-            /* rebound damping branch at dP/dt = 0 */
-            const int still = fabs(r.vl) <= fabs(dr.vl) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
-            if (br == RC_BR_LOAD && still && ltrend < 0) {
+            /* rebound damping branch at a zero rate of the damping's own
+             * argument (dP/dt, or v_bar with several points), where the
+             * damping force is zero on both branches: decided on P_e's
+             * rate, which its relaxation keeps below v_bar, the branch
+             * switched while the damper carried 5 N and the force's jump
+             * turned the rate back at once (a box resting on an incline:
+             * rebound/approach every 1e-9 s, Zeno) */
+            const int still = fabs(r.vd) <= fabs(dr.vd) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
+            const int dtrend = d->inter_track[i] ? trend : p_trend(r.vd, dr.vd, t, m->dtout, vband, om);
+            if (br == RC_BR_LOAD && still && dtrend < 0) {
                 d->inter_branch[i] = RC_BR_UNLOAD;
                 kind = RC_EV_RDF_REBOUND;
-            } else if (br == RC_BR_UNLOAD && still && ltrend > 0) {
+            } else if (br == RC_BR_UNLOAD && still && dtrend > 0) {
                 d->inter_branch[i] = RC_BR_LOAD;
                 kind = RC_EV_RDF_APPROACH;
             }
@@ -968,13 +975,13 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             if (fabs(r.p) <= band && !(md == RC_MODE_OPEN && d->inter_track[i]))
                 d->inter_band[2 * i] = md == RC_MODE_OPEN ? -band : band;
             if (md != RC_MODE_OPEN && fabs(r.fn) <= fband) d->inter_band[2 * i + 1] = md == RC_MODE_CLOSED ? fband : -fband;
-            /* the power law's RDF branch at a rate of P_e within the
-             * rounding of the velocities (vband): its root waits twice that
+            /* the power law's RDF branch at a damping rate (dP/dt, v_bar)
+             * within the rounding of the velocities (vband): its root waits twice that
              * away on its waiting side (in a touching cradle on IDA the rate
              * stayed at 1e-48 m/s, its sign rounding, and the roots crossed
              * at every step: 200 rebound/approach events within 3e-10 s) */
             if (md != RC_MODE_OPEN && m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0 &&
-                fabs(r.vl) <= vband)
+                fabs(r.vd) <= vband)
                 d->inter_rband[i] = d->inter_branch[i] == RC_BR_LOAD ? 2.0 * vband : -2.0 * vband;
         }
         const rc_event_kind kinds[2] = {kind, fkind};

@@ -222,7 +222,10 @@ rc_status rc_model_body_state(const rc_model *m, const double *y, int body_id, d
 /* One impact of a contact interface: from the contact closing (P > 0 and
  * the force acting) to the bodies separating (P back to 0). Peak force and
  * maximum penetration are tracked at every integrator step (the step's
- * interpolant sampled at 4 points), not from the output records. */
+ * interpolant sampled at 4 points), not from the output records. A contact
+ * is an impact when it closed by approaching (dP/dt > 0) and lasted at most
+ * RC_IMPACT_SPAN contact time scales; every other contact is a persistent
+ * contact (rc_contact; docs/output-format.md, "Impacts table"). */
 typedef struct rc_impact {
     int inter_id;         /* /INTER id                                         */
     double t_close;       /* the contact closes (contact_close) [s]            */

@@ -190,9 +190,6 @@ void rc_report_estimate(const rc_model *m, FILE *f)
     const double work = 1.0 + m->nbody + m->ninter + 0.1 * m->npt;
     const double nrec = T / m->dtout + 2.0 * nimp;
     const double wall = RC_EST_WALL_FIXED + RC_EST_WALL_STEP * steps * work + RC_EST_WALL_RECORD * nrec * work;
-    if (getenv("RC_EST_DEBUG"))
-        fprintf(f, "ESTDEBUG work %g nrec %g steps %g nbody %d ninter %d npt %d ny %d\n", work, nrec, steps, m->nbody,
-                m->ninter, m->npt, m->ny);
     fprintf(f, "estimate    an order of magnitude, within ~10x (from the contact time scales pi p_s / v_s, the "
                "predicted restitutions, the gaps and the end time %.4g s):\n",
             T);
@@ -215,17 +212,24 @@ void rc_report_plausibility(const rc_model *m, FILE *f)
     const char *mu = m->deck_unit[0][0] ? m->deck_unit[0] : "kg";
     for (int b = 0; b < m->nbody; b++) {
         if (m->body_yadr[b] < 0) continue; /* fixed: the ground may be large */
-        if (size[b] > RC_PLAUS_SIZE)
-            fprintf(f, "warning     /RBODY/%d is %.4g m (%.4g %s) from its centre to the far side of its surfaces, "
-                       "above %g m: are the lengths in the deck's units (%s)?\n",
-                    m->body_id[b], size[b], size[b] / lf, lu, RC_PLAUS_SIZE, lu);
+        char in[64] = "";
+        if (size[b] > RC_PLAUS_SIZE) {
+            if (lf != 1.0) snprintf(in, sizeof in, " (%.4g %s)", size[b] / lf, lu);
+            fprintf(f, "warning     /RBODY/%d is %.4g m%s from its centre to the far side of its surfaces, above "
+                       "%g m: are the lengths in the deck's units (%s)?\n",
+                    m->body_id[b], size[b], in, RC_PLAUS_SIZE, lu);
+        }
         /* a heavy body that gravity does not act on is a driver of
          * quasi-infinite mass (a belt, a press): meant */
         const double *g = m->body_grav + 3 * b;
         if (m->body_mass[b] > RC_PLAUS_MASS && (g[0] != 0.0 || g[1] != 0.0 || g[2] != 0.0))
-            fprintf(f, "warning     /RBODY/%d has a mass of %.4g kg (%.4g %s), above %g kg: is the mass in the deck's "
-                       "units (%s)?\n",
-                    m->body_id[b], m->body_mass[b], m->body_mass[b] / mf, mu, RC_PLAUS_MASS, mu);
+        {
+            in[0] = '\0';
+            if (mf != 1.0) snprintf(in, sizeof in, " (%.4g %s)", m->body_mass[b] / mf, mu);
+            fprintf(f, "warning     /RBODY/%d has a mass of %.4g kg%s, above %g kg: is the mass in the deck's units "
+                       "(%s)?\n",
+                    m->body_id[b], m->body_mass[b], in, RC_PLAUS_MASS, mu);
+        }
     }
     /* a contact so soft that the weight, or the impact, pushes one body
      * into the other deeper than the body's own size */

@@ -166,12 +166,10 @@ static void print_gravity(const rc_model *m, FILE *f)
     const double r = gn / 9.80665;
     if (gn > 0 && (r < 0.05 || r > 20)) {
         char hint[200] = "a deck in mm takes -9810 mm/s^2, not -9.81";
-        if (du[0] && lf < 0.5)
-            snprintf(hint, sizeof hint, "the deck's length unit is %s: the Earth's gravity is %.6g %s, not %.6g",
-                     m->deck_unit[1], 9.80665 * tf * tf / lf, du, gn * tf * tf / lf);
-        else if (du[0] && r > 20)
-            snprintf(hint, sizeof hint, "the deck's length unit is %s: the Earth's gravity is %.6g %s; %.6g is the "
-                     "value in mm/s^2", m->deck_unit[1], 9.80665 * tf * tf / lf, du, gn * tf * tf / lf);
+        if (du[0])
+            snprintf(hint, sizeof hint, "the deck's length unit is %s: the Earth's gravity is %.6g %s, the deck gives "
+                     "%.6g %s%s", m->deck_unit[1], 9.80665 * tf * tf / lf, du, gn * tf * tf / lf, du,
+                     r > 20 && lf >= 0.5 ? ", the value in mm/s^2?" : "");
         fprintf(f, "warning     |g| = %.6g m/s^2 is %.3g times the Earth's 9.81 m/s^2: gravity is given in the deck's "
                    "units (%s); is it meant?\n",
                 gn, r, hint);

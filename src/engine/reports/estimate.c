@@ -23,6 +23,7 @@
 #include <stdlib.h>
 
 #include "model/coupling.h"
+#include "model/joint.h"
 #include "model/model.h"
 #include "model/power.h"
 #include "engine/analyses/restitution.h"
@@ -42,14 +43,24 @@
 /* ... for a hysteresis law (Iform 1, 2: a held contact keeps moving along
  * its branches; measured on cases/t6_hysteresis_drop.rad) [-] */
 #define RC_EST_STEPS_PER_TC_HYST 60.0
+/* A held contact costs steps for at most this many contact time scales,
+ * and a coupling for at most this many periods: once the motion has
+ * settled the integrator's steps grow (measured: a ball at rest for 1 s,
+ * 34000 contact times, took 2000 steps) [-]. */
+#define RC_EST_HELD_TC_MAX 400.0
+#define RC_EST_PERIODS_MAX 200.0
+/* A body at rest whose acceleration at t = 0 is below this fraction of its
+ * gravity (or of 1 m/s^2 without gravity) starts in equilibrium [-]. */
+#define RC_EST_EQUILIBRIUM 1e-3
 /* The fewest steps of a run [-]. */
 #define RC_EST_STEPS_MIN 10.0
 /* Steps per period of a coupling's natural frequency (measured on
  * cases/catenary_swing.rad: 413) [-]. */
 #define RC_EST_STEPS_PER_PERIOD 300.0
-/* Steps per swing and per stop impact of a jointed body (the IDA path;
- * measured on cases/joint_stop_pendulum.rad) [-]. */
-#define RC_EST_STEPS_JOINT 300.0
+/* Steps per swing of a jointed body (the IDA path; measured on the
+ * pendulums of cases/ and validation/) and per impact on a joint's stop [-]. */
+#define RC_EST_STEPS_JOINT 1000.0
+#define RC_EST_STEPS_STOP 300.0
 /* Wall time: fixed cost of a run (opening and closing the results file,
  * the compile already done) [s], and per step and per (body + contact
  * point + interface) [s]. */
@@ -86,17 +97,64 @@ static double restitution(const rc_model *m, int i, double v)
     return e;
 }
 
+/* Which free bodies start at rest in equilibrium (rest[b] = 1): no speed
+ * and, with the contacts penetrating at t = 0 closed, an acceleration below
+ * RC_EST_EQUILIBRIUM of their gravity. Such a body costs no steps until
+ * something reaches it. */
+static void at_rest(const rc_model *m, const double *y, int *rest)
+{
+    for (int b = 0; b < m->nbody; b++) rest[b] = 0;
+    rc_data *d = rc_data_new(m);
+    double *f = malloc(((size_t)m->ny + 1) * sizeof(double));
+    if (d && f) {
+        for (int i = 0; i < m->ninter; i++) {
+            rc_inter_report r;
+            rc_inter_report_eval(m, i, RC_MODE_OPEN, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+            if (r.p_raw > 0) d->inter_mode[i] = RC_MODE_CLOSED;
+        }
+        if (rc_assemble_rhs(m, d, 0.0, y, f) == 0) {
+            for (int b = 0; b < m->nbody; b++) {
+                const int a = m->body_yadr[b];
+                if (a < 0) continue;
+                const double *v = y + a + 7, *g = m->body_grav + 3 * b, *dv = f + a + 7, *dw = f + a + 10;
+                double speed = 0.0, acc = 0.0, gn = 0.0;
+                for (int c = 0; c < 6; c++) speed = fmax(speed, fabs(v[c]));
+                for (int c = 0; c < 3; c++) {
+                    acc = fmax(acc, fmax(fabs(dv[c]), fabs(dw[c]) * 0.0));
+                    gn += g[c] * g[c];
+                }
+                gn = sqrt(gn);
+                rest[b] = speed == 0.0 && acc <= RC_EST_EQUILIBRIUM * (gn > 0 ? gn : 1.0);
+            }
+        }
+    }
+    free(f);
+    rc_data_free(d);
+}
+
+/* Does interface i or coupling end b start at rest (a fixed end or no end
+ * counts as at rest)? */
+static int pair_rest(const int *rest, int ba, int bb)
+{
+    return (ba < 0 || rest[ba]) && (bb < 0 || rest[bb]);
+}
+
 void rc_report_estimate(const rc_model *m, FILE *f)
 {
     const double T = m->tend;
     double *y = malloc(((size_t)m->ny + 1) * sizeof(double));
     double *y2 = malloc(((size_t)m->ny + 1) * sizeof(double));
-    if (!y || !y2) {
+    int *rest = malloc(((size_t)m->nbody + 1) * sizeof(int));
+    if (!y || !y2 || !rest) {
         free(y);
         free(y2);
+        free(rest);
         return;
     }
     rc_initial_state(m, y);
+    at_rest(m, y, rest);
+    for (int b = 0; b < m->nbody; b++)
+        if (m->body_yadr[b] < 0) rest[b] = 1;
     /* the same state with every free body's velocity raised by its gravity
      * over 1 s: the approach rate's change is the gravity along the normal */
     for (int k = 0; k < m->ny; k++) y2[k] = y[k];
@@ -147,13 +205,12 @@ void rc_report_estimate(const rc_model *m, FILE *f)
             npers += 1.0;
             /* from a static preload the contacts start settled: the
              * integrator's steps grow while nothing moves */
-            const int from_start = held >= T - t0 && m->preload;
+            const int from_start =
+                held >= T - t0 && (m->preload || pair_rest(rest, m->inter_ba[i], m->inter_bb[i]));
             const double rate = m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0 ? RC_EST_STEPS_PER_TC_HYST
                                                                                          : RC_EST_STEPS_PER_TC;
-            if (!from_start) {
-                steps += RC_EST_STEPS_SETTLE;
-                busy = fmax(busy, rate * held / tc);
-            }
+            if (!m->preload) steps += RC_EST_STEPS_SETTLE;
+            if (!from_start) busy = fmax(busy, rate * fmin(held / tc, RC_EST_HELD_TC_MAX));
         }
     }
     steps += RC_EST_STEPS_IMPACT * nimp + busy;
@@ -163,6 +220,7 @@ void rc_report_estimate(const rc_model *m, FILE *f)
      * for the contact time); joint stops (the IDA path): the pendulum's
      * swings under gravity and two stop impacts per swing */
     const rc_couplings *p = m->cpl;
+    double osc = 0.0; /* the busiest coupling or joint: they share the steps */
     for (int k = 0; p && k < p->n; k++) {
         const int b = p->b1[k] >= 0 ? p->b1[k] : p->b2[k];
         if (b < 0 || m->body_yadr[b] < 0) continue;
@@ -170,7 +228,15 @@ void rc_report_estimate(const rc_model *m, FILE *f)
         double stiff = NAN;
         if (p->kind[k] == RC_CPL_CATENARY && p->leq[k] > 0) stiff = p->ea[k] / p->leq[k];
         if (p->kind[k] == RC_CPL_SPRING && p->form[k] == RC_KEFF_CONST) stiff = p->coef[3 * k];
-        if (isfinite(stiff) && stiff > 0 && mass > 0) steps += RC_EST_STEPS_PER_PERIOD * T / (2.0 * RC_PI * sqrt(mass / stiff));
+        const int still = pair_rest(rest, p->b1[k], p->b2[k]);
+        if (p->kind[k] == RC_CPL_SPRING && p->form[k] == RC_KEFF_POLY && p->coef[3 * k] > 0) stiff = p->coef[3 * k];
+        if (!still && (p->kind[k] == RC_CPL_SPRING || p->kind[k] == RC_CPL_CATENARY)) {
+            /* a stiffness not known here (tables): the most periods */
+            const double per = isfinite(stiff) && stiff > 0 && mass > 0
+                                   ? fmin(T / (2.0 * RC_PI * sqrt(mass / stiff)), RC_EST_PERIODS_MAX)
+                                   : RC_EST_PERIODS_MAX;
+            osc = fmax(osc, RC_EST_STEPS_PER_PERIOD * per);
+        }
         if (p->kind[k] == RC_CPL_CONTACT && k < p->ncard) {
             const double tau = p->ct->tau[k];
             if (isfinite(tau) && tau > 0) {
@@ -183,9 +249,24 @@ void rc_report_estimate(const rc_model *m, FILE *f)
             const double *g = m->body_grav + 3 * b, gn = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
             const double *J = m->body_J + 9 * b, I = fmax(J[0], fmax(J[4], J[8])) + mass * r * r;
             const double swings = gn > 0 && r > 0 ? T / (2.0 * RC_PI * sqrt(I / (mass * gn * r))) : 1.0;
-            steps += RC_EST_STEPS_JOINT * 3.0 * swings;
+            nimp += 2.0 * swings; /* the stops: two impacts per swing */
+            steps += RC_EST_STEPS_STOP * 2.0 * swings;
         }
     }
+    /* joints (the IDA path): the swings of each jointed body under gravity
+     * about its anchor */
+    const rc_joints *jn = m->jnt;
+    for (int k = 0; jn && k < jn->n; k++) {
+        const int b = jn->ba[k] >= 0 && m->body_yadr[jn->ba[k]] >= 0 ? jn->ba[k] : jn->bb[k];
+        if (b < 0 || m->body_yadr[b] < 0 || rest[b]) continue;
+        const double *s = b == jn->ba[k] ? jn->sa + 3 * k : jn->sb + 3 * k;
+        const double r = sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]), mass = m->body_mass[b];
+        const double *g = m->body_grav + 3 * b, gn = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+        const double *J = m->body_J + 9 * b, I = fmax(J[0], fmax(J[4], J[8])) + mass * r * r;
+        const double swings = gn > 0 && r > 0 && mass > 0 ? T / (2.0 * RC_PI * sqrt(I / (mass * gn * r))) : 1.0;
+        osc = fmax(osc, RC_EST_STEPS_JOINT * fmin(swings, RC_EST_PERIODS_MAX));
+    }
+    steps += osc;
     steps = fmax(steps, RC_EST_STEPS_MIN);
     const double work = 1.0 + m->nbody + m->ninter + 0.1 * m->npt;
     const double nrec = T / m->dtout + 2.0 * nimp;
@@ -200,6 +281,7 @@ void rc_report_estimate(const rc_model *m, FILE *f)
         fprintf(f, "            (%d interface%s without scales left out)\n", unscaled, unscaled == 1 ? "" : "s");
     free(y);
     free(y2);
+    free(rest);
 }
 
 void rc_report_plausibility(const rc_model *m, FILE *f)

@@ -386,7 +386,7 @@ void rc_impacts_sampling_note(const rc_model *m, char *buf, size_t n)
     if (worst < 0 || !(m->dtout > 0) || tc / m->dtout >= RC_IMPACT_MIN_RECORDS) return;
     snprintf(buf, n,
              "output interval %.3g s samples a contact of ~%.2g s (%s) with ~%.0f records; peak values are in "
-             "the impact table",
+             "the impact and persistent contact tables",
              m->dtout, tc, m->inter_name[worst], floor(tc / m->dtout));
 }
 

@@ -157,8 +157,8 @@ static void print_gravity(const rc_model *m, FILE *f)
     if (lf > 0 && tf > 0) {
         const double s = tf * tf / lf; /* m/s^2 -> deck length / deck time^2 */
         snprintf(du, sizeof du, "%s/%s^2", m->deck_unit[1], m->deck_unit[2]);
-        fprintf(f, "            in the deck's units: (%.6g, %.6g, %.6g) %s, |g| %.6g %s\n", g[0] * s, g[1] * s, g[2] * s,
-                du, gn * s, du);
+        fprintf(f, "            in the deck's units: (%.6g, %.6g, %.6g) %s, |g| %.6g %s\n", g[0] * s + 0.0, g[1] * s + 0.0,
+                g[2] * s + 0.0, du, gn * s, du);
     } else {
         fprintf(f, "            the deck names no units: the values are taken as written, in one consistent system "
                    "(shown as SI)\n");

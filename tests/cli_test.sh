@@ -443,6 +443,50 @@ sed 's/^                   1              0.0001$/                 0.1          
 if [ "$rc" -eq 0 ] && grep -q "^contacts: 1 never closed (/INTER/TYPE6/1) - no contact closed in the whole run: the bodies never touched" "$tmp/x"; then
     echo "PASS cli.no_contact_note: $(grep '^contacts:' "$tmp/x" | head -c 140)"
 else echo "FAIL cli.no_contact_note: exit $rc: $(grep '^contacts:' "$tmp/x" | head -c 200)"; fi
+# check's plausibility warnings, each provoked by the demo changed in one
+# field (gravity 9810 in the metre deck, a 2e6 kg sphere, a 60 m sphere, a
+# load curve of 10 N/m: the weight sinks it 0.98 m, of 400 N/m: the impact
+# from 0.1 m sinks it 0.07 m, more than its 0.05 m radius); the mm deck
+# with its gravity in mm/s^2 (9810) is not warned about
+sed 's/-9.81$/-9810/' "$demo" > "$tmp/g9810.rad"
+sed 's/^                  kg                   m                   s$/                  kg                  mm                   s/; s/-9.81$/-9810/' "$demo" > "$tmp/mmok.rad"
+sed '/^sphere, 1 kg$/{n;s/         1$/     2.0e6/}' "$demo" > "$tmp/heavy.rad"
+sed 's/^                0.05                0.05                0.05$/                  60                  60                  60/; s/0.15$/100/' "$demo" > "$tmp/big.rad"
+sed 's/^                   1             1000000$/                   1                  10/' "$demo" > "$tmp/soft.rad"
+sed 's/^                   1             1000000$/                   1                 400/' "$demo" > "$tmp/softimp.rad"
+for w in "g9810|is 1e+03 times the Earth's 9.81 m/s^2: .*the deck's length unit is m: the Earth's gravity is 9.80665 m/s^2, the deck gives 9810 m/s^2" \
+         "mm|the deck's length unit is mm: the Earth's gravity is 9806.65 mm/s^2, the deck gives 9.81 mm/s^2" \
+         "heavy|/RBODY/1 has a mass of 2e+06 kg, above 1e+06 kg" \
+         "big|/RBODY/1 is 60 m from its centre to the far side of its surfaces, above 50 m" \
+         "soft|/INTER/TYPE6/1: the static penetration under the weight, 0.981 m, is larger than the body's size 0.05 m" \
+         "softimp|/INTER/TYPE6/1: the penetration of an impact (at the model's speed scale, or the fall over the gap), 0.07004 m, is larger than the body's size 0.05 m"; do
+    "$bin" check "$tmp/${w%%|*}.rad" > "$tmp/x" 2>/dev/null; rc=$?
+    if [ "$rc" -eq 0 ] && grep "^warning" "$tmp/x" | grep -q -- "${w#*|}"; then
+        echo "PASS cli.check_warns_${w%%|*}: $(grep '^warning' "$tmp/x" | head -1 | head -c 160)"
+    else echo "FAIL cli.check_warns_${w%%|*}: exit $rc: $(grep '^warning' "$tmp/x" | head -c 300)"; fi
+done
+"$bin" check "$tmp/mmok.rad" > "$tmp/x" 2>/dev/null; rc=$?
+if [ "$rc" -eq 0 ] && grep -q "^            in the deck's units: (0, 0, -9810) mm/s^2, |g| 9810 mm/s^2" "$tmp/x" &&
+   grep -q "^gravity     (0, 0, -9.81) m/s^2" "$tmp/x" && ! grep -q "^warning" "$tmp/x"; then
+    echo "PASS cli.check_gravity_deck_units: the mm deck's -9810 mm/s^2 shown in SI and in mm/s^2, no warning"
+else echo "FAIL cli.check_gravity_deck_units: exit $rc: $(grep -E '^gravity|^ *in the deck|^warning' "$tmp/x" | head -c 300)"; fi
+# no false positive: no deck of cases/ or validation/ is warned about
+bad=""
+for c in cases/*.rad validation/*/*.rad; do
+    [ -f "$c" ] || continue
+    "$bin" check "$c" 2>/dev/null | grep -q "^warning" && bad="$bad $c"
+done
+if [ -z "$bad" ]; then echo "PASS cli.check_no_false_warning: $(ls cases/*.rad validation/*/*.rad | wc -l) decks of cases/ and validation/ without a warning"
+else echo "FAIL cli.check_no_false_warning: warned about:$bad"; fi
+# the estimate: printed, and within 10x of the run's steps on the demo
+"$bin" check "$demo" > "$tmp/x" 2>/dev/null
+est=$(sed -n 's/.*; ~\([0-9.e+]*\) integrator steps; ~\([0-9.e+-]*\) s wall time.*/\1/p' "$tmp/x")
+"$bin" run "$demo" -o "$tmp/est.nc" > "$tmp/y" 2>&1
+steps=$(sed -n 's/^steps \([0-9]*\),.*/\1/p' "$tmp/y")
+if [ -n "$est" ] && [ -n "$steps" ] && awk -v e="$est" -v s="$steps" 'BEGIN { exit !(e < 10 * s && s < 10 * e) }' &&
+   grep -q "^estimate    an order of magnitude, within ~10x" "$tmp/x"; then
+    echo "PASS cli.check_estimate: the demo: ~$est steps estimated, $steps run"
+else echo "FAIL cli.check_estimate: estimate '${est:-none}', run '${steps:-none}': $(grep -A1 '^estimate' "$tmp/x" | head -c 300)"; fi
 # export-vtk --dt: one frame per 0.05 s of the short run (0.3 s: 7 frames,
 # 14 .vtp files, the times 0, 0.05, ..., 0.3 in the .pvd), the options in
 # any order; --help on stdout with exit 0; a bad --dt is a usage error

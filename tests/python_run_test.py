@@ -108,6 +108,7 @@ def test_abi():
     from ricochet import _lib
     fields = {"rc_error": (_lib.RcError, "code msg src_file src_line src_func"),
               "rc_impact": (_lib.RcImpact, " ".join(f for f, _ in _lib.RcImpact._fields_)),
+              "rc_contact": (_lib.RcContact, " ".join(f for f, _ in _lib.RcContact._fields_)),
               "rc_stats": (_lib.RcStats, " ".join(f for f, _ in _lib.RcStats._fields_)),
               "rc_run_options": (_lib.RcRunOptions, " ".join(f for f, _ in _lib.RcRunOptions._fields_))}
     src = ["#include <stddef.h>", "#include <stdio.h>", '#include "ricochet/ricochet.h"', "int main(void) {"]
@@ -161,6 +162,34 @@ def test_run_drop():
     check("run_dataset_in_memory", ds.attrs["complete"] == "yes" and ds.body_position.variable._in_memory
           and "overrides" not in ds.attrs and not left,
           "complete, in memory, its temporary file removed; no overrides attribute without set=")
+
+
+def test_persistent():
+    # the floor raised to the sphere's bottom (0.1 m): touching at rest from
+    # t = 0, no impact; one persistent contact carrying the weight over the
+    # run: its mean force is the floor's impulse over the run, m g + m v_z(T) / T
+    # (m = 1 kg), to 1e-6
+    ds = ricochet.run(deck, set={"/SURF/PLANE/2:ZM": 0.1})
+    n_imp, n_per = ds.sizes.get("impact", 0), ds.sizes.get("persistent", 0)
+    T = float(ds.time.values[-1])
+    vz = float(ds.body_velocity.isel(time=-1).sel(body=1).values[2])
+    mean = float(ds.persistent_mean_force.values[0]) if n_per else float("nan")
+    want = G + vz / T
+    check("persistent_table_dataset", n_imp == 0 and n_per == 1 and int(ds.persistent_inter.values[0]) == 1
+          and float(ds.persistent_close_time.values[0]) == 0.0 and math.isnan(float(ds.persistent_open_time.values[0]))
+          and abs(float(ds.persistent_duration.values[0]) - T) < 1e-12 and abs(mean / want - 1) < 1e-6
+          and abs(mean / G - 1) < 1e-6 and ds.persistent_mean_force.attrs["units"] == "N"
+          and ds.persistent_slip_distance.attrs["units"] == "m",
+          f"{n_imp} impacts, {n_per} persistent; mean force {mean:.9f} N vs m g + m v_z/T = {want:.9f} N "
+          f"(rel. diff {abs(mean / want - 1):.1e})")
+    # the same in the statistics of a session (RunStats: contacts, contact)
+    with ricochet.Session(deck, set={"/SURF/PLANE/2:ZM": 0.1}) as s:
+        s.run_until(T)
+        st = s.close()
+    c = st["contact"][0] if st["contact"] else {}
+    check("persistent_table_stats", st["contacts"] == 1 and st["impacts"] == 0 and c.get("fn_mean") == mean
+          and c.get("inter_id") == 1 and math.isnan(c.get("t_open", 0.0)),
+          f"contacts {st['contacts']}, first {c}")
 
 
 def test_set():
@@ -459,9 +488,12 @@ def test_study():
     z10 = st.body_position.sel(vec3="z", body=1).values[:, 10]  # t = 0.1 s: still falling in every case
     check("study_series_and_finals", np.allclose(z10, 0.15 - 0.5 * G * 0.01, atol=1e-9, rtol=0)
           and st.final_body_position.dims == ("case", "body", "vec3") and np.all(np.isfinite(e0))
-          and np.all(st.final_time.values == 0.4) and st.impact_count.values[0] >= 2,
+          and np.all(st.final_time.values == 0.4) and st.impact_count.values[0] >= 2
+          and "persistent_count" in st and st.persistent_mean_force.dims == ("case", "persistent")
+          and st.persistent_mean_force.attrs["units"] == "N",
           f"z(0.1 s) = {z10[0]:.9f} m in every case; final_time 0.4 s; energy_total(0) = {e0[0]:.6f} J; "
-          f"impacts {st.impact_count.values.tolist()}")
+          f"impacts {st.impact_count.values.tolist()}; persistent contacts "
+          f"{st.persistent_count.values.tolist() if 'persistent_count' in st else 'none'}")
     # a failing case does not kill the study; a list of dicts; lhs
     cases = [{"/SURF/PLANE/2:ZM": -0.1}, {"/SURF/PLANE/2:ZM": 0.2}]  # 0.2: the floor through the sphere
     with warnings.catch_warnings():
@@ -498,7 +530,8 @@ def main():
     deck = os.path.join(tmp, "drop.rad")
     with open(deck, "w") as f:
         f.write(DECK)
-    for name, fn in [("abi", test_abi), ("run", test_run_drop), ("set", test_set), ("options", test_run_options),
+    for name, fn in [("abi", test_abi), ("run", test_run_drop), ("persistent", test_persistent),
+                     ("set", test_set), ("options", test_run_options),
                      ("errors", test_input_errors), ("events", test_events), ("session", test_session),
                      ("session_callbacks", test_session_callbacks), ("threads", test_threads), ("lookup", test_lookup),
                      ("pip", test_pip), ("study", test_study)]:

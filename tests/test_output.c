@@ -581,7 +581,7 @@ static void test_output_coordinates_provenance(void)
     ENSURE(write_frames(o, NF, 1) == 0);
     const rc_impact imp[2] = {{3, 0.1, 0.103, 0.003, 1.2e-3, 0.1015, 1275.0, 0.1014, 1.4, 1.12, 0.8, 0.356},
                               {3, 0.3, NAN, NAN, 1e-5, 0.31, 10.0, 0.31, 0.01, NAN, NAN, NAN}};
-    ENSURE(rc_output_impacts(o, 2, imp, &e) == RC_OK);
+    ENSURE(rc_output_impacts(o, 2, imp, 0, NULL, &e) == RC_OK);
     ENSURE(rc_output_close(o, NULL, 1, NULL, &e) == RC_OK);
 
     int ncid, ids[NB], iid, sid[3], sbody[3], isurf[2];

@@ -222,7 +222,10 @@ rc_status rc_model_body_state(const rc_model *m, const double *y, int body_id, d
 /* One impact of a contact interface: from the contact closing (P > 0 and
  * the force acting) to the bodies separating (P back to 0). Peak force and
  * maximum penetration are tracked at every integrator step (the step's
- * interpolant sampled at 4 points), not from the output records. */
+ * interpolant sampled at 4 points), not from the output records. A contact
+ * is an impact when it closed by approaching (dP/dt > 0) and lasted at most
+ * RC_IMPACT_SPAN contact time scales; every other contact is a persistent
+ * contact (rc_contact; docs/output-format.md, "Impacts table"). */
 typedef struct rc_impact {
     int inter_id;         /* /INTER id                                         */
     double t_close;       /* the contact closes (contact_close) [s]            */
@@ -243,6 +246,37 @@ typedef struct rc_impact {
 
 /* Impacts itemised in rc_stats (all of them are in the results file). */
 #define RC_STATS_IMPACTS 5
+
+/* One persistent contact of an interface: a contact that is not an impact
+ * (docs/output-format.md, "Persistent contacts table"): closed from the
+ * start or without approaching (resting, touching), or closed for longer
+ * than RC_IMPACT_SPAN contact time scales (a body come to rest, rolling,
+ * sliding). It runs from the closing to the separation (P back to 0), or
+ * to the end of the run. The integrals are taken at every integrator step
+ * end and event (trapezoidal rule), not at the output records. */
+typedef struct rc_contact {
+    int inter_id;         /* /INTER id                                         */
+    double t_close;       /* the contact closes (0: closed from the start) [s] */
+    double t_open;        /* the force stops acting for the last time [s];
+                             NaN: still closed at the end of the run          */
+    double duration;      /* t_open (or the end of the run) - t_close [s]      */
+    double fn_max;        /* peak total normal force [N]                       */
+    double fn_mean;       /* time average of the total normal force over the
+                             duration [N]                                      */
+    double pen_max;       /* maximum penetration P [m]                         */
+    double slip;          /* slip distance: integral of the tangential relative
+                             speed |v_t| of the bodies at the contact point
+                             over the duration [m] (with or without friction) */
+} rc_contact;
+
+/* Persistent contacts itemised in rc_stats (all of them are in the results
+ * file). */
+#define RC_STATS_CONTACTS 5
+
+/* An impact lasts at most this many contact time scales pi p_s / v_s of
+ * its interface (docs/theory.md 7.1; ricochet check prints them); a
+ * contact closed longer is a persistent contact [-]. */
+#define RC_IMPACT_SPAN 20
 
 /* Solver statistics of a run. */
 typedef struct rc_stats {
@@ -280,6 +314,8 @@ typedef struct rc_stats {
                              (/SOLVER Preload, rc_model_set_preload)    */
     long preload_iters;   /* its Newton iterations (KINSOL)             */
     double preload_wall_time; /* its wall-clock time [s]                */
+    long contacts;        /* persistent contacts (rc_contact; not impacts) */
+    rc_contact contact[RC_STATS_CONTACTS]; /* the first ones              */
 } rc_stats;
 
 /* The callback of every event (rc_run_options.on_event): called once per

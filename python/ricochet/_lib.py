@@ -40,6 +40,7 @@ c_int, c_long, c_double, c_char_p, c_void_p = ctypes.c_int, ctypes.c_long, ctype
 POINTER, byref = ctypes.POINTER, ctypes.byref
 
 RC_STATS_IMPACTS = 5
+RC_STATS_CONTACTS = 5
 RC_ON_VIOLATION_STOP, RC_ON_VIOLATION_WARN = 1, 2
 
 
@@ -54,6 +55,11 @@ class RcImpact(ctypes.Structure):
                 ("v_in", c_double), ("v_out", c_double), ("restitution", c_double), ("energy_lost", c_double)]
 
 
+class RcContact(ctypes.Structure):
+    _fields_ = [("inter_id", c_int), ("t_close", c_double), ("t_open", c_double), ("duration", c_double),
+                ("fn_max", c_double), ("fn_mean", c_double), ("pen_max", c_double), ("slip", c_double)]
+
+
 class RcStats(ctypes.Structure):
     _fields_ = [("steps", c_long), ("rhs_evals", c_long), ("jac_evals", c_long), ("lin_setups", c_long),
                 ("nonlin_iters", c_long), ("nonlin_fails", c_long), ("err_test_fails", c_long),
@@ -62,7 +68,8 @@ class RcStats(ctypes.Structure):
                 ("impact", RcImpact * RC_STATS_IMPACTS), ("sampling_note", ctypes.c_char * 320),
                 ("settles", c_long), ("t_settle", c_double), ("violations", c_long),
                 ("physics_note", ctypes.c_char * 640), ("contacts_note", ctypes.c_char * 640),
-                ("preloaded", c_int), ("preload_iters", c_long), ("preload_wall_time", c_double)]
+                ("preloaded", c_int), ("preload_iters", c_long), ("preload_wall_time", c_double),
+                ("contacts", c_long), ("contact", RcContact * RC_STATS_CONTACTS)]
 
 
 # int (*rc_event_fn)(void *user, double t, const char *kind, const char *element, const double values[3])

@@ -60,7 +60,11 @@ class RunStats(dict):
     contacts_note), ``impact``: the first 5 impacts as dicts (inter_id,
     t_close [s], t_open [s], duration [s], pen_max [m], t_pen_max [s],
     fn_max [N], t_fn_max [s], v_in [m/s], v_out [m/s], restitution [-],
-    energy_lost [J]); and ``status`` (a Status) and ``message`` of the run."""
+    energy_lost [J]); ``contacts``, the number of persistent contacts, and
+    ``contact``: the first 5 of them as dicts (inter_id, t_close [s], t_open
+    [s] (NaN: still closed at the end), duration [s], fn_max [N], fn_mean
+    [N], pen_max [m], slip [m]; docs/output-format.md, "Persistent contacts
+    table"); and ``status`` (a Status) and ``message`` of the run."""
 
 
 def _stats(s, status, message):
@@ -70,6 +74,9 @@ def _stats(s, status, message):
         if name == "impact":
             n = min(int(s.impacts), _lib.RC_STATS_IMPACTS)
             v = [{f: getattr(v[k], f) for f, _ in _lib.RcImpact._fields_} for k in range(n)]
+        elif name == "contact":
+            n = min(int(s.contacts), _lib.RC_STATS_CONTACTS)
+            v = [{f: getattr(v[k], f) for f, _ in _lib.RcContact._fields_} for k in range(n)]
         elif isinstance(v, bytes):
             v = v.decode(errors="replace")
         out[name] = v

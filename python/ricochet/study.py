@@ -42,6 +42,10 @@ _BODY_VARS = ("body_position", "body_quaternion", "body_velocity", "body_angular
 _IMPACT_VARS = ("impact_inter", "impact_close_time", "impact_open_time", "impact_duration", "impact_max_penetration",
                 "impact_max_penetration_time", "impact_peak_force", "impact_peak_force_time", "impact_speed_in",
                 "impact_speed_out", "impact_restitution", "impact_energy_lost")
+# the persistent contacts table's columns (docs/output-format.md, "Persistent contacts table")
+_PERSIST_VARS = ("persistent_inter", "persistent_close_time", "persistent_open_time", "persistent_duration",
+                 "persistent_peak_force", "persistent_mean_force", "persistent_max_penetration",
+                 "persistent_slip_distance")
 
 
 def grid(parameters):
@@ -161,6 +165,17 @@ def run_case(deck, deck_name, overrides, run_kw, outputs, times, n_impacts, keep
                 imp[v] = pad
         res["impacts"] = imp
         res["n_impacts"] = int(n)
+        pers = {}
+        n = ds.sizes.get("persistent", 0)
+        for v in _PERSIST_VARS:
+            if v in ds.variables:
+                a = np.asarray(ds[v].values)[:n_impacts]
+                fill = -1 if v == "persistent_inter" else np.nan
+                pad = np.full(n_impacts, fill, dtype=int if v == "persistent_inter" else float)
+                pad[:len(a)] = a
+                pers[v] = pad
+        res["persistent"] = pers
+        res["n_persistent"] = int(n)
         series = {}
         for name in outputs:
             if name not in ds.variables:
@@ -503,6 +518,22 @@ def _assemble(cases, fields, varnames, common, results, outputs, times, n_impact
                         a[i] = r["impacts"][v]
                 ds[v] = (("case", "impact"), a, {"units": iunits.get(v, "s"),
                                                  "long_name": f"{v} of the first impacts (padded: NaN, -1)"})
+        pnames = [v for v in _PERSIST_VARS if any(v in r.get("persistent", {}) for r in ok)]
+        if pnames:
+            ds["persistent_count"] = ("case", np.array([r.get("n_persistent", -1) for r in results]),
+                                      {"long_name": "persistent contacts of the run (all of them; the table keeps "
+                                                    "the first n_impacts)"})
+            punits = {"persistent_inter": "1", "persistent_peak_force": "N", "persistent_mean_force": "N",
+                      "persistent_max_penetration": "m", "persistent_slip_distance": "m"}
+            for v in pnames:
+                fill = -1 if v == "persistent_inter" else np.nan
+                a = np.full((n, n_impacts), fill, dtype=int if v == "persistent_inter" else float)
+                for i, r in enumerate(results):
+                    if v in r.get("persistent", {}):
+                        a[i] = r["persistent"][v]
+                ds[v] = (("case", "persistent"), a,
+                         {"units": punits.get(v, "s"), "long_name": f"{v} of the first persistent contacts "
+                                                                    "(padded: NaN, -1)"})
     if outputs:
         ds = ds.assign_coords(time=("time", times, {"units": "s", "long_name": "common times of the outputs"}))
         for name in outputs:

@@ -112,6 +112,11 @@ rc_status rc_card_begin(rc_reader *rd, const rc_block *b)
     if ((st = rc_unit_line(rd, b, nd >= 3 ? &b->lines[3] : NULL, wk, wk_nm, fw))) return st;
     memcpy(rd->begin_units, fi, sizeof fi);
     if (in[0][0] || in[1][0] || in[2][0]) {
+        static const char *const si[3] = {"kg", "m", "s"};
+        for (int k = 0; k < 3; k++) {
+            snprintf(c->deck_unit[k], sizeof c->deck_unit[k], "%.20s", in[k][0] ? in[k] : si[k]);
+            c->deck_factor[k] = fi[k];
+        }
         /* the case holds SI values */
         strcpy(c->unit_mass, "kg");
         strcpy(c->unit_length, "m");
@@ -165,6 +170,16 @@ rc_status rc_card_unit(rc_reader *rd, const rc_block *b)
                                 kinds[k], rc_unit_names(k), name);
         if ((st = rc_card_lines(rd, b, NULL, 0, 0, "no line", &nd))) return st;
         rd->begin_units[k] = fk;
+        {
+            static const char *const si[3] = {"kg", "m", "s"};
+            for (int j = 0; j < 3; j++)
+                if (!rd->c->deck_unit[j][0]) {
+                    snprintf(rd->c->deck_unit[j], sizeof rd->c->deck_unit[j], "%s", si[j]);
+                    rd->c->deck_factor[j] = 1.0;
+                }
+            snprintf(rd->c->deck_unit[k], sizeof rd->c->deck_unit[k], "%.20s", name);
+            rd->c->deck_factor[k] = fk;
+        }
         strcpy(rd->c->unit_mass, "kg");
         strcpy(rd->c->unit_length, "m");
         strcpy(rd->c->unit_time, "s");

@@ -297,6 +297,8 @@ struct rc_case {
     char *path;          /* main file as given */
     char title[101];     /* run name from /BEGIN (or empty) */
     char unit_mass[21], unit_length[21], unit_time[21]; /* from /BEGIN, "" if absent */
+    char deck_unit[3][21]; /* /BEGIN's input units as named (mass, length, time); "" if absent */
+    double deck_factor[3]; /* their values in kg, m, s; 0 if absent */
     unsigned long checksum; /* FNV-1a 64 of the main file's bytes */
     int invers;          /* Radioss input version from /BEGIN (e.g. 2022, 140, 90); 0: none */
     char *overrides;     /* the --set arguments applied, "ARG; ARG" as given

@@ -696,6 +696,10 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     snprintf(m->title, sizeof m->title, "%s", c->title);
     snprintf(m->unit_mass, sizeof m->unit_mass, "%s", c->unit_mass);
     snprintf(m->unit_length, sizeof m->unit_length, "%s", c->unit_length);
+    for (int k = 0; k < 3; k++) {
+        snprintf(m->deck_unit[k], sizeof m->deck_unit[k], "%s", c->deck_unit[k]);
+        m->deck_factor[k] = c->deck_factor[k];
+    }
     snprintf(m->unit_time, sizeof m->unit_time, "%s", c->unit_time);
     m->checksum = c->checksum;
     m->tend = c->run.tend;
@@ -917,7 +921,7 @@ void rc_model_free(rc_model *m)
                       m->inter_fscaleul, m->inter_ns, m->inter_hidx, m->inter_oidx, m->inter_peidx, m->inter_fr,
                       m->inter_name, m->atol, m->held, m->row_held, m->gwork_slot, m->surf_ext,
                       m->inter_law, m->inter_pw, m->inter_pscale, m->inter_fscale, m->inter_kscale,
-                      m->inter_vscale, m->inter_mred, m->inter_mrest, m->inter_sband, m->inter_perelax, m->inter_hband, m->ewt_rel, m->body_loc, m->inter_loc,
+                      m->inter_vscale, m->inter_mred, m->inter_mrest, m->inter_pweight, m->inter_pimpact, m->inter_sband, m->inter_perelax, m->inter_hband, m->ewt_rel, m->body_loc, m->inter_loc,
                       m->surf_nadr, m->surf_node, m->surf_sadr, m->surf_seg, m->inter_npt, m->inter_pst, m->inter_pbase,
                       m->inter_ptslot, m->surf_seg_turned, m->inter_orient, m->inter_fast, m->start_note, m->state_pt};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);

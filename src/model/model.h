@@ -182,6 +182,9 @@ struct rc_model {
     rc_loc end_loc;      /* the deck's end (rc_case.end): place of deck-level messages */
     char title[101];
     char unit_mass[21], unit_length[21], unit_time[21];
+    char deck_unit[3][21]; /* the deck's input units of /BEGIN (mass, length,
+                            time), "" when undeclared */
+    double deck_factor[3]; /* their values in kg, m, s; 0 when undeclared */
     unsigned long checksum;
     int nfile;           /* files read: 0 the case file, then its includes */
     char **file;         /* [nfile] their paths (as given or resolved) */
@@ -311,6 +314,10 @@ struct rc_model {
     double *inter_kscale; /* normal stiffness at p_s [N/m] */
     double *inter_vscale; /* contact speed scale p_s omega_s [m/s] */
     double *inter_mred;   /* reduced mass of the pair [kg] */
+    double *inter_pweight; /* penetration under the weight of the lighter
+                              free body, p_F (NAN: none) [m] */
+    double *inter_pimpact; /* penetration of an impact at the speed scale,
+                              p_E (NAN: none) [m] */
     double *inter_sband;  /* share band b of a pair with several contact points:
                              below P = b the points within b of the deepest share
                              the force (docs/theory.md 2.7) [m] */

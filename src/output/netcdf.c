@@ -297,6 +297,31 @@ static const struct {
                  "contact damping + hysteresis + friction dissipation from closing to separation"},
 };
 
+/* Persistent contacts table (dimension persistent), defined and written at
+ * close. */
+enum { P_INTER, P_CLOSE, P_OPEN, P_DURATION, P_FN, P_FMEAN, P_PEN, P_SLIP, P_COUNT };
+static const struct {
+    const char *name;
+    int unit; /* U_* */
+    const char *long_name;
+    const char *comment;
+} persistent_table[P_COUNT] = {
+    [P_INTER] = {"persistent_inter", U_ONE, "contact interface of the persistent contact (/INTER id)", NULL},
+    [P_CLOSE] = {"persistent_close_time", U_TIME, "time the contact closes", "0: closed from the start"},
+    [P_OPEN] = {"persistent_open_time", U_TIME, "time the normal force stops acting for the last time",
+                "NaN: still closed at the end of the run"},
+    [P_DURATION] = {"persistent_duration", U_TIME,
+                    "contact duration (open time, or the end of the run when still closed, - close time)", NULL},
+    [P_FN] = {"persistent_peak_force", U_FORCE, "peak total normal force during the contact",
+              "tracked at every integrator step"},
+    [P_FMEAN] = {"persistent_mean_force", U_FORCE, "time average of the total normal force over the duration",
+                 "trapezoidal rule on the integrator's step ends and events"},
+    [P_PEN] = {"persistent_max_penetration", U_LENGTH, "maximum penetration P during the contact", NULL},
+    [P_SLIP] = {"persistent_slip_distance", U_LENGTH,
+                "slip distance: integral of the tangential relative speed at the contact point over the closed time",
+                "trapezoidal rule on the integrator's step ends and events; with or without friction"},
+};
+
 struct rc_output {
     int ncid;
     char *path;           /* copy, for messages */
@@ -326,6 +351,8 @@ struct rc_output {
     int stopped;          /* no room for the next block: nothing more written, the file is whole */
     int nimpact;          /* impacts table (rc_output_impacts), written at close */
     rc_impact *impact;
+    int npersist;         /* persistent contacts table, written at close */
+    rc_contact *persist;
     int broken;           /* a netCDF write failed: the handle is unusable */
     char fail[2048];      /* the first failed write's message (broken) */
     long linalg[3];       /* rc_output_linalg: analyses, Newton entries, pattern entries; -1 unknown */
@@ -831,6 +858,7 @@ static void output_free(rc_output *o)
     free(o->ebuf);
     free(o->ev_num);
     free(o->impact);
+    free(o->persist);
     free(o->phys_summary);
     free(o->phys_contacts);
     free(o->phys_row);
@@ -1207,17 +1235,78 @@ static rc_status write_final(rc_output *o, const rc_stats *st, int complete, con
     return rc;
 }
 
-rc_status rc_output_impacts(rc_output *o, int n, const rc_impact *rows, rc_error *err)
+rc_status rc_output_impacts(rc_output *o, int n, const rc_impact *rows, int np, const rc_contact *pers,
+                            rc_error *err)
 {
     rc_impact *c = NULL;
+    rc_contact *p = NULL;
     if (n > 0) {
         c = malloc((size_t)n * sizeof *c);
         if (!c) RC_RAISE(err, RC_ENOMEM, "output: out of memory for %d impacts", n);
         memcpy(c, rows, (size_t)n * sizeof *c);
     }
+    if (np > 0) {
+        p = malloc((size_t)np * sizeof *p);
+        if (!p) {
+            free(c);
+            RC_RAISE(err, RC_ENOMEM, "output: out of memory for %d persistent contacts", np);
+        }
+        memcpy(p, pers, (size_t)np * sizeof *p);
+    }
     free(o->impact);
     o->impact = c;
     o->nimpact = n > 0 ? n : 0;
+    free(o->persist);
+    o->persist = p;
+    o->npersist = np > 0 ? np : 0;
+    return RC_OK;
+}
+
+/* The persistent contacts table: dimension persistent (unlimited: an empty
+ * table is allowed), one variable per column. Define mode. */
+static rc_status define_persistent(rc_output *o, int *varid, rc_error *err)
+{
+    int dim;
+    NC_TRY(o->path, nc_def_dim(o->ncid, "persistent", NC_UNLIMITED, &dim), "defining dimension persistent");
+    for (int c = 0; c < P_COUNT; c++) {
+        NC_TRY(o->path,
+               nc_def_var(o->ncid, persistent_table[c].name, c == P_INTER ? NC_INT : NC_DOUBLE, 1, &dim, &varid[c]),
+               "defining %s", persistent_table[c].name);
+        rc_status rc = put_text(o, varid[c], "units", o->unit[persistent_table[c].unit], err);
+        if (rc == RC_OK) rc = put_text(o, varid[c], "long_name", persistent_table[c].long_name, err);
+        if (rc == RC_OK && persistent_table[c].comment)
+            rc = put_text(o, varid[c], "comment", persistent_table[c].comment, err);
+        if (rc != RC_OK) return rc;
+    }
+    return RC_OK;
+}
+
+/* Write the persistent contact rows (data mode). */
+static rc_status write_persistent(rc_output *o, const int *varid, rc_error *err)
+{
+    const size_t n = (size_t)o->npersist, start[1] = {0}, count[1] = {n};
+    if (n == 0) return RC_OK;
+    double *col = malloc(n * sizeof *col);
+    int *ids = malloc(n * sizeof *ids);
+    if (!col || !ids) {
+        free(col);
+        free(ids);
+        RC_RAISE(err, RC_ENOMEM, "output: out of memory writing the persistent contacts");
+    }
+    for (size_t k = 0; k < n; k++) ids[k] = o->persist[k].inter_id;
+    int st = nc_put_vara_int(o->ncid, varid[P_INTER], start, count, ids);
+    for (int c = 1; c < P_COUNT && st == NC_NOERR; c++) {
+        for (size_t k = 0; k < n; k++) {
+            const rc_contact *r = &o->persist[k];
+            const double v[P_COUNT] = {0, r->t_close, r->t_open, r->duration, r->fn_max, r->fn_mean, r->pen_max,
+                                       r->slip};
+            col[k] = v[c];
+        }
+        st = nc_put_vara_double(o->ncid, varid[c], start, count, col);
+    }
+    free(col);
+    free(ids);
+    if (st != NC_NOERR) return nc_fail(err, __LINE__, __func__, o->path, st, "writing the persistent contacts table");
     return RC_OK;
 }
 
@@ -1727,12 +1816,15 @@ static rc_status output_close(rc_output *o, const rc_stats *st, int complete, co
         if (rc2 == RC_OK) rc2 = write_final(o, st, complete && ok && !o->stopped, ok ? reason : err->msg, e);
         int impact_var[I_COUNT];
         const int impacts = o->var[V_INTER_ID] >= 0;
+        int persist_var[P_COUNT];
         if (rc2 == RC_OK && impacts) rc2 = define_impacts(o, impact_var, e);
+        if (rc2 == RC_OK && impacts) rc2 = define_persistent(o, persist_var, e);
         int phys_var[PV_COUNT];
         if (rc2 == RC_OK && o->phys_set) rc2 = define_physics(o, phys_var, e);
         if (rc2 == RC_OK && (s = nc_enddef(o->ncid)) != NC_NOERR)
             rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "ending definitions");
         if (rc2 == RC_OK && impacts) rc2 = write_impacts(o, impact_var, e);
+        if (rc2 == RC_OK && impacts) rc2 = write_persistent(o, persist_var, e);
         if (rc2 == RC_OK && o->phys_set) rc2 = write_physics(o, phys_var, e);
         if (rc2 == RC_OK) {
             closed = 1;

@@ -146,9 +146,11 @@ rc_status rc_output_event(rc_output *o, double t, const char *kind, const char *
  * total normal force just after the event [N]; NULL: not an interface (NaN). */
 rc_status rc_output_event_values(rc_output *o, double t, const char *kind, const char *element,
                                  const double values[3], rc_error *err);
-/* The impacts table (rc_impact rows), written at close; replaces an
- * earlier table. The rows are copied. */
-rc_status rc_output_impacts(rc_output *o, int n, const rc_impact *rows, rc_error *err);
+/* The impacts table (rc_impact rows) and the persistent contacts table
+ * (rc_contact rows), written at close; replace earlier tables. The rows
+ * are copied. */
+rc_status rc_output_impacts(rc_output *o, int n, const rc_impact *rows, int np, const rc_contact *pers,
+                            rc_error *err);
 /* The linear algebra of the run, written with the statistics at close:
  * KLU symbolic analyses, entries of the largest Newton matrix, entries of
  * the model's whole Jacobian pattern (-1: not known, not written). */

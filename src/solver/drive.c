@@ -747,6 +747,9 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
         int jmp = 0;
         rc_bk_resolve_touching(m, d, t, y, flook, &sink, &im, &s.events, &jmp, &st, err);
         if (st) goto done;
+        /* contacts the initial state closed without an event: persistent
+         * contacts from the start, followed at every step like the impacts */
+        rc_impacts_start(&im, m, d, t, y);
         if (rc_guards_started(gd, d)) {
             st = RC_SET(err, RC_EPHYSICS, "%s", rc_guards_message(gd));
             goto done;
@@ -979,15 +982,18 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
 
 done:
     if (opened) bk->add_stats(self, &s);
-    /* the impacts: in the file and, the first ones, in the statistics */
-    rc_impacts_finish(&im);
+    /* the impacts and the persistent contacts: in the file and, the first
+     * ones, in the statistics */
+    rc_impacts_finish(&im, m, t);
     s.impacts = im.n;
     for (int k = 0; k < im.n && k < RC_STATS_IMPACTS; k++) s.impact[k] = im.row[k];
+    s.contacts = im.npc;
+    for (int k = 0; k < im.npc && k < RC_STATS_CONTACTS; k++) s.contact[k] = im.pc[k];
     snprintf(s.sampling_note, sizeof s.sampling_note, "%s", note);
-    if (out && st == RC_OK) st = rc_output_impacts(out, im.n, im.row, err);
+    if (out && st == RC_OK) st = rc_output_impacts(out, im.n, im.row, im.npc, im.pc, err);
     else if (out) {
         rc_error e3;
-        rc_output_impacts(out, im.n, im.row, &e3);
+        rc_output_impacts(out, im.n, im.row, im.npc, im.pc, &e3);
     }
     if (st != RC_OK) s.t_end = t; /* how far a failed run got */
     s.wall_time = rc_bk_wall_now() - wall0;

@@ -17,7 +17,9 @@ int rc_impacts_init(rc_impacts *im, const rc_model *m)
     im->cur = malloc(((size_t)m->ninter + 1) * sizeof *im->cur);
     im->e0 = calloc((size_t)m->ninter + 1, sizeof *im->e0);
     im->h = calloc((size_t)m->ninter + 1, sizeof *im->h);
-    if (!im->cur || !im->e0 || !im->h) return -1;
+    im->last = calloc((size_t)m->ninter + 1, sizeof *im->last);
+    im->quiet = calloc((size_t)m->ninter + 1, sizeof *im->quiet);
+    if (!im->cur || !im->e0 || !im->h || !im->last || !im->quiet) return -1;
     for (int i = 0; i < m->ninter; i++) im->cur[i] = -1;
     return 0;
 }
@@ -27,7 +29,11 @@ void rc_impacts_free(rc_impacts *im)
     free(im->cur);
     free(im->e0);
     free(im->h);
+    free(im->last);
+    free(im->quiet);
     free(im->row);
+    free(im->acc);
+    free(im->pc);
     memset(im, 0, sizeof *im);
 }
 
@@ -55,6 +61,80 @@ static void update(rc_impact *row, const rc_inter_report *r, int closed, double 
         row->fn_max = fn;
         row->t_fn_max = t;
     }
+}
+
+/* The tangential relative speed |v_t| of the bodies at the report's
+ * contact point [m/s]: v_b + w_b x (x - c_b) - (v_a + w_a x (x - c_a)),
+ * less its component along the normal (the velocity of a rigid body is
+ * affine in the point, so at the shares' mean point of several contact
+ * points it is their shares' mean). */
+static double tangential_speed(const rc_model *m, int i, const double *y, const rc_inter_report *r)
+{
+    double v[3] = {0.0, 0.0, 0.0};
+    const int b[2] = {m->inter_ba[i], m->inter_bb[i]};
+    for (int s = 0; s < 2; s++) {
+        const double *q = rc_body_state(m, b[s], y);
+        /* the angular velocity in the global frame: R(q) w_body */
+        const double qw = q[3], qx = q[4], qy = q[5], qz = q[6], *wb = q + 10;
+        const double R[9] = {1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy - qw * qz),     2 * (qx * qz + qw * qy),
+                             2 * (qx * qy + qw * qz),     1 - 2 * (qx * qx + qz * qz), 2 * (qy * qz - qw * qx),
+                             2 * (qx * qz - qw * qy),     2 * (qy * qz + qw * qx),     1 - 2 * (qx * qx + qy * qy)};
+        double w[3], d[3];
+        for (int k = 0; k < 3; k++) {
+            w[k] = R[3 * k] * wb[0] + R[3 * k + 1] * wb[1] + R[3 * k + 2] * wb[2];
+            d[k] = r->point[k] - q[k];
+        }
+        const double sg = s == 0 ? -1.0 : 1.0;
+        v[0] += sg * (q[7] + w[1] * d[2] - w[2] * d[1]);
+        v[1] += sg * (q[8] + w[2] * d[0] - w[0] * d[2]);
+        v[2] += sg * (q[9] + w[0] * d[1] - w[1] * d[0]);
+    }
+    const double vn = v[0] * r->normal[0] + v[1] * r->normal[1] + v[2] * r->normal[2];
+    double t2 = 0.0;
+    for (int k = 0; k < 3; k++) {
+        const double c = v[k] - vn * r->normal[k];
+        t2 += c * c;
+    }
+    return sqrt(t2);
+}
+
+/* A sample of interface i's contact in progress at t for the integrals of
+ * its row: the trapezoidal rule from the last sample, over an interval in
+ * which the mode was `closed` (the mode changes only at events, whose
+ * samples follow the step's end at the same time). */
+static void integrate(rc_impacts *im, const rc_model *m, int i, double t, const double *y, const rc_inter_report *r,
+                      int closed)
+{
+    const int k = im->cur[i];
+    if (k < 0) return;
+    rc_impact_last *l = &im->last[i];
+    const double fn = closed ? r->fn : 0.0, vt = closed ? tangential_speed(m, i, y, r) : 0.0;
+    if (l->have && t > l->t && closed) {
+        const double dt = t - l->t;
+        im->acc[k].fint += 0.5 * (l->fn + fn) * dt;
+        im->acc[k].slip += 0.5 * (l->vt + vt) * dt;
+    }
+    *l = (rc_impact_last){1, t, fn, vt};
+}
+
+/* A new row for interface i closing at t (NULL: out of memory). */
+static rc_impact *open_row(rc_impacts *im, int i)
+{
+    if (im->n == im->cap) {
+        const int cap = im->cap ? 2 * im->cap : 16;
+        rc_impact *p = realloc(im->row, (size_t)cap * sizeof *p);
+        if (!p) return NULL; /* the table misses this contact */
+        im->row = p;
+        rc_impact_acc *a = realloc(im->acc, (size_t)cap * sizeof *a);
+        if (!a) return NULL;
+        im->acc = a;
+        im->cap = cap;
+    }
+    const int k = im->cur[i] = im->n++;
+    im->acc[k] = (rc_impact_acc){0.0, 0.0, 0};
+    im->last[i].have = 0;
+    im->quiet[i] = 0;
+    return &im->row[k];
 }
 
 /* Append a sample to an interface's history (the older one dropped). */
@@ -85,26 +165,28 @@ void rc_impacts_event(rc_impacts *im, const rc_model *m, const rc_data *d, int i
         rc_inter_report r;
         report(m, d, i, t, y, &r);
         if (k < 0) {
-            if (im->n == im->cap) {
-                const int cap = im->cap ? 2 * im->cap : 16;
-                rc_impact *p = realloc(im->row, (size_t)cap * sizeof *p);
-                if (!p) return; /* the table misses this impact */
-                im->row = p;
-                im->cap = cap;
-            }
-            k = im->cur[i] = im->n++;
-            rc_impact *w = &im->row[k];
+            rc_impact *w = open_row(im, i);
+            if (!w) return;
+            k = im->cur[i];
             *w = (rc_impact){m->inter_id[i], t, NAN, NAN, r.p, t, 0.0, t, r.vn, NAN, NAN, NAN};
+            im->acc[k].start = !(r.vn > 0.0);
             im->e0[i] = dissipated(m, d, t, y);
         } else {
             im->row[k].t_open = NAN; /* the force acts again */
         }
         update(&im->row[k], &r, d->inter_mode[i] == RC_MODE_CLOSED, t);
+        integrate(im, m, i, t, y, &r, d->inter_mode[i] == RC_MODE_CLOSED);
         hist_push(&im->h[i], t, &r, d->inter_mode[i] == RC_MODE_CLOSED);
         return;
     }
     if (k < 0) return;
     rc_impact *w = &im->row[k];
+    {
+        /* the state after the event starts the next interval of the integrals */
+        rc_inter_report r;
+        report(m, d, i, t, y, &r);
+        integrate(im, m, i, t, y, &r, d->inter_mode[i] == RC_MODE_CLOSED);
+    }
     if (kind == RC_EV_CONTACT_OPEN) {
         w->t_open = t; /* released: the force stopped (until it closes again) */
     } else if (kind == RC_EV_CONTACT_SEPARATE || kind == RC_EV_INTER_STOP) {
@@ -118,13 +200,37 @@ void rc_impacts_event(rc_impacts *im, const rc_model *m, const rc_data *d, int i
         }
         w->energy_lost = dissipated(m, d, t, y) - im->e0[i];
         im->cur[i] = -1;
+        im->last[i].have = 0;
+    }
+}
+
+void rc_impacts_start(rc_impacts *im, const rc_model *m, const rc_data *d, double t, const double *y)
+{
+    for (int i = 0; i < im->ninter; i++) {
+        if (im->cur[i] >= 0 || d->inter_mode[i] != RC_MODE_CLOSED) continue;
+        rc_inter_report r;
+        report(m, d, i, t, y, &r);
+        rc_impact *w = open_row(im, i);
+        if (!w) return;
+        const int k = im->cur[i];
+        /* approaching at the start (a body launched into a contact it
+         * touches): an impact from t; else a persistent contact, whose
+         * speed in, separation and restitution do not exist */
+        const int approach = r.vn > 0.0;
+        *w = (rc_impact){m->inter_id[i], t, NAN, NAN, r.p, t, 0.0, t, approach ? r.vn : NAN, NAN, NAN, NAN};
+        im->acc[k].start = !approach;
+        im->quiet[i] = 1;
+        im->e0[i] = dissipated(m, d, t, y);
+        update(w, &r, 1, t);
+        hist_push(&im->h[i], t, &r, 1);
+        integrate(im, m, i, t, y, &r, 1);
     }
 }
 
 int rc_impacts_recent(const rc_impacts *im, double t, double span)
 {
     for (int i = 0; i < im->ninter; i++)
-        if (im->cur[i] >= 0 && t - im->row[im->cur[i]].t_close <= span) return 1;
+        if (im->cur[i] >= 0 && !im->quiet[i] && t - im->row[im->cur[i]].t_close <= span) return 1;
     return 0;
 }
 
@@ -178,6 +284,7 @@ void rc_impacts_step(rc_impacts *im, const rc_model *m, const rc_data *d, double
         if (!cached || !rc_report_cache_get(d, i, &r)) report(m, d, i, t, y, &r);
         rc_impact *row = &im->row[im->cur[i]];
         update(row, &r, closed, t);
+        integrate(im, m, i, t, y, &r, closed);
         rc_impact_hist *h = &im->h[i];
         const int last = h->n - 1;
         if (last >= 0 && t > h->t[last]) {
@@ -215,7 +322,19 @@ void rc_impacts_step(rc_impacts *im, const rc_model *m, const rc_data *d, double
     }
 }
 
-void rc_impacts_finish(rc_impacts *im)
+double rc_impacts_contact_time(const rc_model *m, int i)
+{
+    const double p = m->inter_pscale[i], v = m->inter_vscale[i];
+    return isfinite(p) && isfinite(v) && p > 0 && v > 0 ? RC_PI * p / v : NAN;
+}
+
+int rc_impacts_is_impact(int start, double v_in, double duration, double tc)
+{
+    if (start || !(v_in > 0.0)) return 0;
+    return !(isfinite(tc) && duration > RC_IMPACT_SPAN * tc);
+}
+
+void rc_impacts_finish(rc_impacts *im, const rc_model *m, double t_end)
 {
     for (int i = 0; i < im->ninter; i++) {
         const int k = im->cur[i];
@@ -225,6 +344,29 @@ void rc_impacts_finish(rc_impacts *im)
         w->duration = w->t_open - w->t_close;
         im->cur[i] = -1;
     }
+    /* impacts stay in row (in order), persistent contacts go to pc */
+    free(im->pc);
+    im->pc = im->n > 0 ? malloc((size_t)im->n * sizeof *im->pc) : NULL;
+    im->npc = 0;
+    int ni = 0;
+    for (int k = 0; k < im->n; k++) {
+        const rc_impact w = im->row[k];
+        int i = -1;
+        for (int j = 0; j < m->ninter && i < 0; j++)
+            if (m->inter_id[j] == w.inter_id) i = j;
+        const double tc = i >= 0 ? rc_impacts_contact_time(m, i) : NAN;
+        /* to the opening, or (still closed) to the end of the run */
+        const double dur = isfinite(w.t_open) ? w.t_open - w.t_close : t_end - w.t_close;
+        if (rc_impacts_is_impact(im->acc[k].start, w.v_in, dur, tc) || !im->pc) {
+            im->acc[ni] = im->acc[k];
+            im->row[ni++] = w;
+            continue;
+        }
+        im->pc[im->npc++] = (rc_contact){w.inter_id, w.t_close,     w.t_open, dur, w.fn_max,
+                                         dur > 0 ? im->acc[k].fint / dur : (w.fn_max > 0 ? w.fn_max : 0.0),
+                                         w.pen_max, im->acc[k].slip};
+    }
+    im->n = ni;
 }
 
 void rc_impacts_sampling_note(const rc_model *m, char *buf, size_t n)
@@ -244,7 +386,7 @@ void rc_impacts_sampling_note(const rc_model *m, char *buf, size_t n)
     if (worst < 0 || !(m->dtout > 0) || tc / m->dtout >= RC_IMPACT_MIN_RECORDS) return;
     snprintf(buf, n,
              "output interval %.3g s samples a contact of ~%.2g s (%s) with ~%.0f records; peak values are in "
-             "the impact table",
+             "the impact and persistent contact tables",
              m->dtout, tc, m->inter_name[worst], floor(tc / m->dtout));
 }
 

@@ -23,13 +23,37 @@ typedef struct rc_impact_hist {
  * (0), or -1 when t is outside it. */
 typedef int (*rc_interp_fn)(void *ctx, double t, const double **y);
 
+/* What a contact row accumulates besides rc_impact: the integrals over
+ * its closed time, taken at the samples (step ends and events) by the
+ * trapezoidal rule, and how it closed. */
+typedef struct rc_impact_acc {
+    double fint;  /* integral of the normal force while closed [N s] */
+    double slip;  /* integral of |v_t| at the contact point while closed [m] */
+    int start;    /* 1: closed without approaching (from the start, or
+                     touching at zero approach speed) */
+} rc_impact_acc;
+
+/* The last sample of an interface's contact in progress, for the
+ * integrals: time [s], normal force as it acts [N], |v_t| [m/s]. */
+typedef struct rc_impact_last {
+    int have;
+    double t, fn, vt;
+} rc_impact_last;
+
 typedef struct rc_impacts {
     int ninter;
-    int *cur;       /* [ninter] row of the impact in progress, -1: none */
+    int *cur;       /* [ninter] row of the contact in progress, -1: none */
     double *e0;     /* [ninter] dissipated energy when it closed [J] */
     rc_impact_hist *h; /* [ninter] */
-    rc_impact *row; /* [n] */
+    rc_impact_last *last; /* [ninter] */
+    rc_impact *row; /* [n] every contact until rc_impacts_finish, then
+                       the impacts only */
+    rc_impact_acc *acc; /* [n] (rows before rc_impacts_finish) */
     int n, cap;
+    int *quiet;     /* [ninter] 1: the row in progress was closed by the
+                       initial state (no records inside it) */
+    rc_contact *pc; /* [npc] the persistent contacts (rc_impacts_finish) */
+    int npc;
 } rc_impacts;
 
 /* 0, or -1 when out of memory. */
@@ -38,7 +62,11 @@ void rc_impacts_free(rc_impacts *im);
 /* An event `kind` of interface i at (t, y), modes of d after the event. */
 void rc_impacts_event(rc_impacts *im, const rc_model *m, const rc_data *d, int i, rc_event_kind kind, double t,
                       const double *y);
-/* Is any impact in progress (the backend then samples every step)? */
+/* Rows for the contacts the initial state closed without an event (P > 0
+ * at t = 0): persistent contacts from the start. Call once after the
+ * modes are initialised and the touching contacts resolved. */
+void rc_impacts_start(rc_impacts *im, const rc_model *m, const rc_data *d, double t, const double *y);
+/* Is any contact in progress (the backend then samples every step)? */
 int rc_impacts_active(const rc_impacts *im);
 /* The end of an integrator step at t with the state y: updates the maxima of
  * the impacts in progress from the sample at t and, where the samples
@@ -48,9 +76,19 @@ int rc_impacts_active(const rc_impacts *im);
  * interpolant `interp`, which covers [lo, t]. */
 void rc_impacts_step(rc_impacts *im, const rc_model *m, const rc_data *d, double lo, double t, const double *y,
                      rc_interp_fn interp, void *ctx);
-/* Close the table at the end of the run (impacts in progress stay open:
- * open time and separation speed NaN). */
-void rc_impacts_finish(rc_impacts *im);
+/* Close the table at the end of the run at t_end (contacts in progress
+ * stay open: open time and separation speed NaN) and sort the rows into
+ * impacts (row, n) and persistent contacts (pc, npc) by the rule of
+ * rc_impacts_is_impact. */
+void rc_impacts_finish(rc_impacts *im, const rc_model *m, double t_end);
+/* The contact time scale of interface i: pi p_s / v_s [s], NaN when the
+ * model gives no scales. */
+double rc_impacts_contact_time(const rc_model *m, int i);
+/* Is a contact an impact? It closed by approaching (approach speed > 0 at
+ * the close, not closed by the initial state) and lasted (to its opening,
+ * or to the end of the run when still closed) at most RC_IMPACT_SPAN
+ * contact time scales tc (any duration when tc is NaN). */
+int rc_impacts_is_impact(int start, double v_in, double duration, double tc);
 /* The note when the output interval cannot resolve the contacts (fewer than
  * RC_IMPACT_MIN_RECORDS records over a contact of the linearised duration
  * pi p_s / v_s); buf[0] = 0 otherwise. */

@@ -160,25 +160,40 @@ void rc_stats_print(const rc_stats *s, FILE *f)
         fprintf(f, "impacts %ld%s:\n", s->impacts, s->impacts > RC_STATS_IMPACTS ? " (the first ones; all in the results file)" : "");
         fprintf(f, "  %-8s %12s %12s %12s %12s %10s %10s %8s %12s\n", "inter", "close [s]", "duration [s]",
                 "max pen [m]", "peak F [N]", "v_in [m/s]", "v_out[m/s]", "e [-]", "E_lost [J]");
-        int touching = 0;
         for (long k = 0; k < s->impacts && k < RC_STATS_IMPACTS; k++) {
             const rc_impact *r = &s->impact[k];
             /* no NaN and no -0 on the screen: "-" where a value does not
-             * exist (no separation yet, no approach to divide by) */
-            char dur[16], vin[16], vout[16], e[16], el[16];
+             * exist (no separation yet) */
+            char cl[16], dur[16], pen[16], fmx[16], vin[16], vout[16], e[16], el[16];
+            num_or_dash(cl, sizeof cl, 12, "%12.6g", r->t_close);
             num_or_dash(dur, sizeof dur, 12, "%12.6g", r->duration);
+            num_or_dash(pen, sizeof pen, 12, "%12.5g", r->pen_max);
+            num_or_dash(fmx, sizeof fmx, 12, "%12.5g", r->fn_max);
             num_or_dash(vin, sizeof vin, 10, "%10.4g", r->v_in);
             num_or_dash(vout, sizeof vout, 10, "%10.4g", r->v_out);
             num_or_dash(e, sizeof e, 8, "%8.4f", r->restitution);
             num_or_dash(el, sizeof el, 12, "%12.5g", r->energy_lost);
-            const int touch = !(r->v_in > 0);
-            touching += touch;
-            fprintf(f, "  %-8d %12.6g %s %12.5g %12.5g %s %s %s %s%s\n", r->inter_id, r->t_close, dur, r->pen_max,
-                    r->fn_max, vin, vout, e, el, touch ? "  (touching: no approach)" : "");
+            fprintf(f, "  %-8d %s %s %s %s %s %s %s %s\n", r->inter_id, cl, dur, pen, fmx, vin, vout, e, el);
         }
-        if (touching)
-            fprintf(f, "  (touching: a contact that closed without approaching, at a touching start or resting: "
-                       "no restitution)\n");
+    }
+    if (s->contacts > 0) {
+        fprintf(f, "persistent contacts %ld (closed from the start or without approaching, or longer than %d "
+                   "contact times)%s:\n",
+                s->contacts, RC_IMPACT_SPAN, s->contacts > RC_STATS_CONTACTS ? " (the first ones; all in the results file)" : "");
+        fprintf(f, "  %-8s %12s %12s %12s %12s %12s %12s %12s\n", "inter", "close [s]", "open [s]", "duration [s]",
+                "peak F [N]", "mean F [N]", "max pen [m]", "slip [m]");
+        for (long k = 0; k < s->contacts && k < RC_STATS_CONTACTS; k++) {
+            const rc_contact *r = &s->contact[k];
+            char cl[16], op[16], dur[16], fmx[16], fme[16], pen[16], sl[16];
+            num_or_dash(cl, sizeof cl, 12, "%12.6g", r->t_close);
+            num_or_dash(op, sizeof op, 12, "%12.6g", r->t_open);
+            num_or_dash(dur, sizeof dur, 12, "%12.6g", r->duration);
+            num_or_dash(fmx, sizeof fmx, 12, "%12.5g", r->fn_max);
+            num_or_dash(fme, sizeof fme, 12, "%12.5g", r->fn_mean);
+            num_or_dash(pen, sizeof pen, 12, "%12.5g", r->pen_max);
+            num_or_dash(sl, sizeof sl, 12, "%12.5g", r->slip);
+            fprintf(f, "  %-8d %s %s %s %s %s %s %s\n", r->inter_id, cl, op, dur, fmx, fme, pen, sl);
+        }
     }
     if (s->sampling_note[0]) fprintf(f, "warning: %s\n", s->sampling_note);
     /* the physics checks (docs/theory.md) and what the contacts did */

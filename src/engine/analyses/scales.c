@@ -374,7 +374,7 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
 {
     const int n = m->ninter;
     double **arr[] = {&m->inter_pscale, &m->inter_fscale, &m->inter_kscale, &m->inter_vscale, &m->inter_mred,
-                      &m->inter_mrest, &m->inter_sband, &m->inter_perelax, &m->inter_hband};
+                      &m->inter_mrest, &m->inter_pweight, &m->inter_pimpact, &m->inter_sband, &m->inter_perelax, &m->inter_hband};
     for (size_t k = 0; k < sizeof arr / sizeof arr[0]; k++) {
         *arr[k] = malloc(((size_t)n + 1) * sizeof(double));
         if (!*arr[k]) RC_RAISE(err, RC_ENOMEM, "out of memory");
@@ -445,12 +445,15 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
                                 ? mp
                                 : mred;
         m->inter_pscale[i] = m->inter_fscale[i] = m->inter_kscale[i] = m->inter_vscale[i] = NAN;
+        m->inter_pweight[i] = m->inter_pimpact[i] = NAN;
         if (!isfinite(mred) && !(r.p_raw > 0)) continue; /* nothing moves along the normal */
         /* speed scale: initial and imposed speeds, fall over the gap */
         double v = vmodel; /* momentum travels through chains of contacts */
         if (r.p_raw < 0) v = fmax(v, sqrt(2.0 * gmax * -r.p_raw));
         const double pF = invert(m, i, 0, mmin * gmax);
         const double pE = invert(m, i, 1, 0.5 * mred * v * v);
+        m->inter_pweight[i] = pF;
+        m->inter_pimpact[i] = pE;
         double p = isfinite(pF) ? pF : NAN;
         if (isfinite(pE) && !(pE >= p)) p = pE;
         /* within RC_PSCALE_SPAN of the larger: a tiny initial penetration or

@@ -151,11 +151,29 @@ static void print_gravity(const rc_model *m, FILE *f)
     fprintf(f, "gravity     (%.6g, %.6g, %.6g) m/s^2%s, |g| %.6g m/s^2, on %s%s\n", g[0], g[1], g[2], fn, gn,
             nsame == nfree ? "every free body" : "the first free body",
             nsame == nfree ? "" : " (others differ: /GRAV on node groups)");
+    /* the same in the deck's own units (/BEGIN's input units), as typed */
+    const double lf = m->deck_factor[1], tf = m->deck_factor[2];
+    char du[64] = "";
+    if (lf > 0 && tf > 0) {
+        const double s = tf * tf / lf; /* m/s^2 -> deck length / deck time^2 */
+        snprintf(du, sizeof du, "%s/%s^2", m->deck_unit[1], m->deck_unit[2]);
+        fprintf(f, "            in the deck's units: (%.6g, %.6g, %.6g) %s, |g| %.6g %s\n", g[0] * s + 0.0, g[1] * s + 0.0,
+                g[2] * s + 0.0, du, gn * s, du);
+    } else {
+        fprintf(f, "            the deck names no units: the values are taken as written, in one consistent system "
+                   "(shown as SI)\n");
+    }
     const double r = gn / 9.80665;
-    if (gn > 0 && (r < 0.05 || r > 20))
+    if (gn > 0 && (r < 0.05 || r > 20)) {
+        char hint[200] = "a deck in mm takes -9810 mm/s^2, not -9.81";
+        if (du[0])
+            snprintf(hint, sizeof hint, "the deck's length unit is %s: the Earth's gravity is %.6g %s, the deck gives "
+                     "%.6g %s%s", m->deck_unit[1], 9.80665 * tf * tf / lf, du, gn * tf * tf / lf, du,
+                     r > 20 && lf >= 0.5 ? ", the value in mm/s^2?" : "");
         fprintf(f, "warning     |g| = %.6g m/s^2 is %.3g times the Earth's 9.81 m/s^2: gravity is given in the deck's "
-                   "units (a deck in mm takes -9810 mm/s^2, not -9.81); is it meant?\n",
-                gn, r);
+                   "units (%s); is it meant?\n",
+                gn, r, hint);
+    }
 }
 
 void rc_model_print_summary(const rc_model *m, FILE *f)
@@ -184,6 +202,7 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
     }
     if (m->nbody > 20) fprintf(f, "  ... and %d more bodies (the first 20 in deck order are listed)\n", m->nbody - 20);
     print_gravity(m, f);
+    rc_report_plausibility(m, f); /* estimate.c */
     fprintf(f, "surfaces    %d\n", m->nsurf);
     if (m->start_note) fprintf(f, "warning     accepted by /RUN On_viol 2: %s\n", m->start_note); /* engine/analyses/start.c */
     fprintf(f, "interfaces  %d\n", m->ninter);
@@ -261,6 +280,7 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
     }
     if (m->ninter > 20) fprintf(f, "  ... %d more\n", m->ninter - 20);
     if (m->ninter > 0) print_guidance(m, f);
+    if (m->method != 3) rc_report_estimate(m, f); /* estimate.c; not for a static solve (/SOLVER Method 3) */
 }
 
 void rc_cpl_print_summary(const rc_model *m, FILE *f)

@@ -14,6 +14,13 @@
 #include "engine/assembly/data.h"
 
 void rc_cpl_print_summary(const rc_model *m, FILE *f); /* engine/reports/report.c */
+/* `ricochet check`: an order-of-magnitude estimate of the run's impacts,
+ * persistent contacts, steps and wall time (engine/reports/estimate.c). */
+void rc_report_estimate(const rc_model *m, FILE *f);
+/* `ricochet check`: warnings on implausible scales: a free body larger than
+ * 50 m or heavier than 1e6 kg, a contact whose penetration under the weight
+ * or in an impact exceeds its body's size (engine/reports/estimate.c). */
+void rc_report_plausibility(const rc_model *m, FILE *f);
 
 /* ---- output ------------------------------------------------------------ */
 /* Values per coupling at (t, y) for one output record, into buf [9 n]:

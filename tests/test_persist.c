@@ -1,0 +1,266 @@
+/*
+ * Persistent contacts (solver/impacts.c): the rule that tells them from
+ * impacts, and their columns against closed forms: a box resting on a floor
+ * (mean normal force m g, duration the run), a block sliding to a stop with
+ * Coulomb friction (slip distance v0^2 / (2 mu g), peak force m g), a ball
+ * dropped on a floor (an impact, not a persistent contact); the table in the
+ * results file with its units.
+ */
+#include "harness.h"
+
+#include <netcdf.h>
+#include <stdlib.h>
+
+#include "ricochet/ricochet.h"
+#include "base/error.h"
+#include "solver/impacts.h"
+#include "testutil.h"
+
+#define G 9.81 /* gravity of the decks [m/s^2] */
+
+/* The rule: an impact closed by approaching and lasted at most
+ * RC_IMPACT_SPAN contact times; everything else persistent. */
+static void test_persist_rule(void)
+{
+    const double tc = 0.0031;
+    ENSURE(rc_impacts_is_impact(0, 1.4, 0.003, tc));                     /* a bounce */
+    ENSURE(rc_impacts_is_impact(0, 1.4, RC_IMPACT_SPAN * tc, tc));       /* at the limit */
+    ENSURE(!rc_impacts_is_impact(0, 1.4, RC_IMPACT_SPAN * tc * 1.01, tc)); /* came to rest */
+    ENSURE(!rc_impacts_is_impact(1, 1.4, 0.003, tc));                    /* closed by the start */
+    ENSURE(!rc_impacts_is_impact(0, 0.0, 0.003, tc));                    /* touching, no approach */
+    ENSURE(!rc_impacts_is_impact(0, NAN, 0.003, tc));
+    ENSURE(rc_impacts_is_impact(0, 1.4, 100.0, NAN)); /* no time scale: any duration */
+}
+
+/* A box of mass M [kg] resting on the floor z = 0, touching at t = 0 (no
+ * penetration), at rest; k = 1e6 N/m, damping ratio 0.5, Fric 0.3. */
+#define BOX_M 3.71
+static const char *box_deck =
+    "/BEGIN\n"
+    "box resting on a floor\n"
+    "2022,0\n"
+    "kg,m,s\n"
+    "kg,m,s\n"
+    "/NODE\n"
+    "1,0.0137,-0.0291,0.0543\n"
+    "/RBODY/1\n"
+    "box 0.2 x 0.3 x 0.1086 m\n"
+    "1,,,3,3.71\n"
+    "0.0314713,0.0169763,0.0401917\n"
+    "0,0,0\n"
+    "/SURF/BOX/1\n"
+    "box\n"
+    "1\n"
+    "0.0137,-0.0291,0.0543\n"
+    "0.1,0.15,0.0543\n"
+    "/SURF/PLANE/2\n"
+    "floor\n"
+    "0,0,0\n"
+    "0,0,1\n"
+    "/FUNCT/1\n"
+    "linear k = 1e6 N/m\n"
+    "0,0\n"
+    "0.001,1000\n"
+    "/INTER/TYPE6/1\n"
+    "floor - box\n"
+    "1,2\n"
+    "0,0.3,0,0,0\n"
+    "0,0,0,0,0,0,,\n"
+    "1,0,1.0,1.0,0\n"
+    "0,,0,\n"
+    "1926.1,0,0,\n"
+    "/GRAV/1\n"
+    "gravity\n"
+    "0,Z,0,0,0,,1.0,-9.81\n"
+    "/RUN\n"
+    "0.43,0.01\n"
+    "/END\n";
+
+static rc_model *load_text(const char *name, const char *text)
+{
+    rc_error e;
+    rc_error_clear(&e);
+    rc_model *m = tu_compile_text(text, tu_tmp_write(name, ""), &e);
+    if (!m) fprintf(stderr, "  %s: %s\n", name, e.msg);
+    return m;
+}
+
+static void test_persist_box_resting_mean_force(void)
+{
+    rc_model *m = load_text("persist_box.rad", box_deck);
+    ENSURE(m != NULL);
+    if (!m) return;
+    const char *path = tu_tmp_write("persist_box.nc", "");
+    double y_end[64];
+    ENSURE(rc_model_state_size(m) <= 64);
+    rc_run_options opt = {.output_path = path, .y_end = y_end};
+    rc_stats st;
+    rc_error e;
+    ENSURE(rc_run(m, &opt, &st, &e) == RC_OK);
+    ENSURE(st.impacts == 0 && st.contacts == 1);
+    const rc_contact *c = &st.contact[0];
+    const double T = 0.43, W = BOX_M * G;
+    /* the closed form: the floor's impulse is the weight's plus the
+     * momentum gained, m g T + m (v_z(T) - 0) */
+    const int b = rc_model_body_index(m, 1);
+    const double vz = b >= 0 ? y_end[b + 9] : NAN;
+    const double exact = W + BOX_M * vz / T;
+    printf("    box at rest: duration %.9g s (run %.9g s), mean F %.9g N, m g %.9g N (+ m v_z(T)/T: %.3g N), "
+           "rel. diff %.2e; peak %.6g N, slip %.3g m\n",
+           c->duration, T, c->fn_mean, W, BOX_M * vz / T, fabs(c->fn_mean / W - 1), c->fn_max, c->slip);
+    ENSURE(c->inter_id == 1 && c->t_close == 0.0 && isnan(c->t_open));
+    ENSURE_NEAR(c->duration, T, 1e-12, 0.0);
+    ENSURE_NEAR(c->fn_mean, W, 1e-6, 0.0);
+    ENSURE_NEAR(c->fn_mean, exact, 1e-6, 0.0);
+    /* touching at rest, loaded by its weight: the damped sinking overshoots
+     * m g by at most the undamped 2 m g */
+    ENSURE(c->fn_max > W && c->fn_max < 2.0 * W);
+    ENSURE(c->pen_max > W / 1e6 && c->pen_max < 2.0 * W / 1e6); /* past the static m g / k */
+    ENSURE(c->slip >= 0.0 && c->slip < 1e-9);            /* no sliding */
+    /* the file: the same row, dimension persistent, units */
+    int ncid, v;
+    double x = 0.0;
+    size_t len = 0, start[1] = {0};
+    char units[32] = "";
+    ENSURE(nc_open(path, NC_NOWRITE, &ncid) == NC_NOERR);
+    int dim;
+    ENSURE(nc_inq_dimid(ncid, "persistent", &dim) == NC_NOERR && nc_inq_dimlen(ncid, dim, &len) == NC_NOERR && len == 1);
+    ENSURE(nc_inq_dimid(ncid, "impact", &dim) == NC_NOERR && nc_inq_dimlen(ncid, dim, &len) == NC_NOERR && len == 0);
+    ENSURE(nc_inq_varid(ncid, "persistent_mean_force", &v) == NC_NOERR &&
+           nc_get_var1_double(ncid, v, start, &x) == NC_NOERR && x == c->fn_mean);
+    ENSURE(nc_get_att_text(ncid, v, "units", units) == NC_NOERR && !strncmp(units, "N", 2));
+    static const char *const names[8][2] = {
+        {"persistent_inter", "1"},         {"persistent_close_time", "s"},    {"persistent_open_time", "s"},
+        {"persistent_duration", "s"},      {"persistent_peak_force", "N"},    {"persistent_mean_force", "N"},
+        {"persistent_max_penetration", "m"}, {"persistent_slip_distance", "m"}};
+    for (int k = 0; k < 8; k++) {
+        size_t ul = 0;
+        memset(units, 0, sizeof units);
+        ENSURE(nc_inq_varid(ncid, names[k][0], &v) == NC_NOERR && nc_inq_attlen(ncid, v, "units", &ul) == NC_NOERR &&
+               ul < sizeof units && nc_get_att_text(ncid, v, "units", units) == NC_NOERR &&
+               !strcmp(units, names[k][1]));
+    }
+    ENSURE(nc_inq_varid(ncid, "persistent_open_time", &v) == NC_NOERR &&
+           nc_get_var1_double(ncid, v, start, &x) == NC_NOERR && isnan(x));
+    ENSURE(nc_close(ncid) == NC_NOERR);
+    rc_model_free(m);
+}
+
+/* The block of validation/fric_slide_stop (a sphere R = 0.05 m, rotations
+ * locked, resting at its static penetration m g / k) launched at V0 with
+ * Coulomb friction MU: it slides v0^2 / (2 mu g) and stops. */
+#define V0 0.837
+#define MU 0.271
+static const char *slide_deck =
+    "#RADIOSS STARTER\n"
+    "/BEGIN\n"
+    "block sliding to a stop\n"
+    "      2022         0\n"
+    "                  kg                   m                   s\n"
+    "                  kg                   m                   s\n"
+    "/FUNCT/1\n"
+    "linear load curve k = 1e6 N/m\n"
+    "                   0                   0\n"
+    "                   1             1000000\n"
+    "/NODE\n"
+    "         1                   0                   0          0.04999019\n"
+    "/RBODY/1\n"
+    "block 1 kg\n"
+    "         1                                                 1         1\n"
+    "               0.001               0.001               0.001\n"
+    "                   0                   0                   0\n"
+    "/SURF/ELLIPS/1\n"
+    "sphere\n"
+    "         0         2         1\n"
+    "                   0                   0          0.04999019\n"
+    "                0.05                0.05                0.05\n"
+    "/SURF/PLANE/2\n"
+    "floor z = 0\n"
+    "                   0                   0                   0\n"
+    "                   0                   0                   1\n"
+    "/GRNOD/NODE/1\n"
+    "group\n"
+    "         1\n"
+    "/BCS/1\n"
+    "no rotation\n"
+    "   000 111         0         1\n"
+    "/INIVEL/TRA/1\n"
+    "initial velocity\n"
+    "               0.837                   0                   0         1         0\n"
+    "/GRAV/1\n"
+    "gravity\n"
+    "         0         Z         0         0         1                             1               -9.81\n"
+    "/INTER/TYPE6/1\n"
+    "Coulomb friction mu = 0.271\n"
+    "         1         2\n"
+    "                                   0.271                   0\n"
+    "                   0         0         0         0         0\n"
+    "         1         0                                                 0\n"
+    "         0\n"
+    "                1000         0         0\n"
+    "/RUN\n"
+    "                 0.4                0.01\n"
+    "/END\n";
+
+static void test_persist_sliding_block_slip_distance(void)
+{
+    rc_model *m = load_text("persist_slide.rad", slide_deck);
+    ENSURE(m != NULL);
+    if (!m) return;
+    rc_run_options opt = {0};
+    rc_stats st;
+    rc_error e;
+    ENSURE(rc_run(m, &opt, &st, &e) == RC_OK);
+    ENSURE(st.impacts == 0 && st.contacts == 1);
+    const rc_contact *c = &st.contact[0];
+    const double want = V0 * V0 / (2.0 * MU * G), W = 1.0 * G;
+    printf("    sliding block: slip %.9g m, v0^2/(2 mu g) %.9g m, rel. diff %.2e; peak F %.9g N, mean F %.9g N, "
+           "m g %.9g N\n",
+           c->slip, want, fabs(c->slip / want - 1), c->fn_max, c->fn_mean, W);
+    ENSURE_NEAR(c->slip, want, 1e-4, 0.0);
+    ENSURE_NEAR(c->fn_max, W, 1e-6, 0.0);
+    ENSURE_NEAR(c->fn_mean, W, 1e-6, 0.0);
+    ENSURE(c->t_close == 0.0 && isnan(c->t_open) && c->duration == 0.4);
+    rc_model_free(m);
+}
+
+/* The demo's ball bounces: impacts, no persistent contact; run long enough
+ * to come to rest, its last contact is persistent (closed by approaching,
+ * longer than RC_IMPACT_SPAN contact times) and carries its weight. */
+static void test_persist_ball_bounces_then_rests(void)
+{
+    rc_model *m = TU_LOAD_OK("cases/demo_sphere_drop.rad");
+    if (!m) return;
+    rc_run_options opt = {.t_end_override = 0.5};
+    rc_stats st;
+    rc_error e;
+    ENSURE(rc_run(m, &opt, &st, &e) == RC_OK);
+    ENSURE(st.impacts == 2 && st.contacts == 0);
+    for (long k = 0; k < st.impacts && k < RC_STATS_IMPACTS; k++)
+        ENSURE(st.impact[k].v_in > 0 && st.impact[k].duration < 0.004);
+    opt.t_end_override = 4.0;
+    ENSURE(rc_run(m, &opt, &st, &e) == RC_OK);
+    printf("    demo to 4 s: %ld impacts, %ld persistent", st.impacts, st.contacts);
+    if (st.contacts > 0)
+        printf(" (closed at %.6g s, %.6g s long, mean F %.6g N, m g 9.81 N)", st.contact[0].t_close,
+               st.contact[0].duration, st.contact[0].fn_mean);
+    printf("\n");
+    ENSURE(st.contacts == 1);
+    if (st.contacts == 1) {
+        const rc_contact *c = &st.contact[0];
+        ENSURE(isnan(c->t_open) && c->duration > RC_IMPACT_SPAN * 0.00314);
+        ENSURE_NEAR(c->t_close + c->duration, 4.0, 1e-12, 0.0);
+        /* at rest for most of it: the mean is m g within the last bounces' share */
+        ENSURE_NEAR(c->fn_mean, 9.81, 0.05, 0.0);
+    }
+    rc_model_free(m);
+}
+
+void suite_persist(void);
+void suite_persist(void)
+{
+    RUN_TEST(test_persist_rule);
+    RUN_TEST(test_persist_box_resting_mean_force);
+    RUN_TEST(test_persist_sliding_block_slip_distance);
+    RUN_TEST(test_persist_ball_bounces_then_rests);
+}

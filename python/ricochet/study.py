@@ -112,6 +112,23 @@ def _varname(field):
     return s if s and not s[0].isdigit() else "p_" + s
 
 
+def _padded_table(ds, dim, names, n_rows):
+    """The first n_rows rows of a table of the results file (the impacts,
+    the persistent contacts): {variable: array of n_rows}, padded with -1
+    (the interface id column, *_inter) or NaN; and the table's length."""
+    import numpy as np
+
+    table = {}
+    for v in names:
+        if v in ds.variables:
+            a = np.asarray(ds[v].values)[:n_rows]
+            ids = v.endswith("_inter")
+            pad = np.full(n_rows, -1 if ids else np.nan, dtype=int if ids else float)
+            pad[:len(a)] = a
+            table[v] = pad
+    return table, int(ds.sizes.get(dim, 0))
+
+
 def run_case(deck, deck_name, overrides, run_kw, outputs, times, n_impacts, keep):
     """One case, in a worker: ``ricochet.run`` of the deck (its text, written
     to a temporary file, or a path the worker reads when deck_name is None)
@@ -154,28 +171,8 @@ def run_case(deck, deck_name, overrides, run_kw, outputs, times, n_impacts, keep
             res["final_" + v] = np.asarray(ds[v].values[-1], dtype=float)
         res["energy"] = {v: float(ds[v].values[-1]) for v in ds.data_vars
                          if v.startswith("energy_") and ds[v].dims == ("time",)}
-        imp = {}
-        n = ds.sizes.get("impact", 0)
-        for v in _IMPACT_VARS:
-            if v in ds.variables:
-                a = np.asarray(ds[v].values)[:n_impacts]
-                fill = -1 if v == "impact_inter" else np.nan
-                pad = np.full(n_impacts, fill, dtype=int if v == "impact_inter" else float)
-                pad[:len(a)] = a
-                imp[v] = pad
-        res["impacts"] = imp
-        res["n_impacts"] = int(n)
-        pers = {}
-        n = ds.sizes.get("persistent", 0)
-        for v in _PERSIST_VARS:
-            if v in ds.variables:
-                a = np.asarray(ds[v].values)[:n_impacts]
-                fill = -1 if v == "persistent_inter" else np.nan
-                pad = np.full(n_impacts, fill, dtype=int if v == "persistent_inter" else float)
-                pad[:len(a)] = a
-                pers[v] = pad
-        res["persistent"] = pers
-        res["n_persistent"] = int(n)
+        res["impacts"], res["n_impacts"] = _padded_table(ds, "impact", _IMPACT_VARS, n_impacts)
+        res["persistent"], res["n_persistent"] = _padded_table(ds, "persistent", _PERSIST_VARS, n_impacts)
         series = {}
         for name in outputs:
             if name not in ds.variables:

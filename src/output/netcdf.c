@@ -270,14 +270,18 @@ static const var_spec var_table[V_COUNT] = {
                              "within the stops, or without stops; their work is in energy_coupling_*"},
 };
 
-/* Impacts table (dimension impact), defined and written at close. */
-enum { I_INTER, I_CLOSE, I_OPEN, I_DURATION, I_PEN, I_TPEN, I_FN, I_TFN, I_VIN, I_VOUT, I_COR, I_ELOST, I_COUNT };
-static const struct {
+/* A column of the impacts and persistent contacts tables: one variable on
+ * the table's dimension (the first column an int, the others double). */
+typedef struct table_col {
     const char *name;
     int unit; /* U_* */
     const char *long_name;
     const char *comment;
-} impact_table[I_COUNT] = {
+} table_col;
+
+/* Impacts table (dimension impact), defined and written at close. */
+enum { I_INTER, I_CLOSE, I_OPEN, I_DURATION, I_PEN, I_TPEN, I_FN, I_TFN, I_VIN, I_VOUT, I_COR, I_ELOST, I_COUNT };
+static const table_col impact_table[I_COUNT] = {
     [I_INTER] = {"impact_inter", U_ONE, "contact interface of the impact (/INTER id)", NULL},
     [I_CLOSE] = {"impact_close_time", U_TIME, "time the contact closes", "event contact_close"},
     [I_OPEN] = {"impact_open_time", U_TIME, "time the normal force stops acting for the last time",
@@ -300,12 +304,7 @@ static const struct {
 /* Persistent contacts table (dimension persistent), defined and written at
  * close. */
 enum { P_INTER, P_CLOSE, P_OPEN, P_DURATION, P_FN, P_FMEAN, P_PEN, P_SLIP, P_COUNT };
-static const struct {
-    const char *name;
-    int unit; /* U_* */
-    const char *long_name;
-    const char *comment;
-} persistent_table[P_COUNT] = {
+static const table_col persistent_table[P_COUNT] = {
     [P_INTER] = {"persistent_inter", U_ONE, "contact interface of the persistent contact (/INTER id)", NULL},
     [P_CLOSE] = {"persistent_close_time", U_TIME, "time the contact closes", "0: closed from the start"},
     [P_OPEN] = {"persistent_open_time", U_TIME, "time the normal force stops acting for the last time",
@@ -1262,25 +1261,6 @@ rc_status rc_output_impacts(rc_output *o, int n, const rc_impact *rows, int np, 
     return RC_OK;
 }
 
-/* The persistent contacts table: dimension persistent (unlimited: an empty
- * table is allowed), one variable per column. Define mode. */
-static rc_status define_persistent(rc_output *o, int *varid, rc_error *err)
-{
-    int dim;
-    NC_TRY(o->path, nc_def_dim(o->ncid, "persistent", NC_UNLIMITED, &dim), "defining dimension persistent");
-    for (int c = 0; c < P_COUNT; c++) {
-        NC_TRY(o->path,
-               nc_def_var(o->ncid, persistent_table[c].name, c == P_INTER ? NC_INT : NC_DOUBLE, 1, &dim, &varid[c]),
-               "defining %s", persistent_table[c].name);
-        rc_status rc = put_text(o, varid[c], "units", o->unit[persistent_table[c].unit], err);
-        if (rc == RC_OK) rc = put_text(o, varid[c], "long_name", persistent_table[c].long_name, err);
-        if (rc == RC_OK && persistent_table[c].comment)
-            rc = put_text(o, varid[c], "comment", persistent_table[c].comment, err);
-        if (rc != RC_OK) return rc;
-    }
-    return RC_OK;
-}
-
 /* Write the persistent contact rows (data mode). */
 static rc_status write_persistent(rc_output *o, const int *varid, rc_error *err)
 {
@@ -1310,19 +1290,21 @@ static rc_status write_persistent(rc_output *o, const int *varid, rc_error *err)
     return RC_OK;
 }
 
-/* The impacts table: dimension impact (unlimited, so that an empty table
- * is allowed), one variable per column; varid[I_COUNT] receives the ids.
- * Only in files with interfaces. Define mode. */
-static rc_status define_impacts(rc_output *o, int *varid, rc_error *err)
+/* A table of rows: dimension dname (unlimited, so that an empty table is
+ * allowed), one variable per column of cols[ncol], their ids in varid (the
+ * impacts, the persistent contacts). Only in files with interfaces. Define
+ * mode. */
+static rc_status define_table(rc_output *o, const char *dname, const table_col *cols, int ncol, int *varid,
+                              rc_error *err)
 {
     int dim;
-    NC_TRY(o->path, nc_def_dim(o->ncid, "impact", NC_UNLIMITED, &dim), "defining dimension impact");
-    for (int c = 0; c < I_COUNT; c++) {
-        NC_TRY(o->path, nc_def_var(o->ncid, impact_table[c].name, c == I_INTER ? NC_INT : NC_DOUBLE, 1, &dim, &varid[c]),
-               "defining %s", impact_table[c].name);
-        rc_status rc = put_text(o, varid[c], "units", o->unit[impact_table[c].unit], err);
-        if (rc == RC_OK) rc = put_text(o, varid[c], "long_name", impact_table[c].long_name, err);
-        if (rc == RC_OK && impact_table[c].comment) rc = put_text(o, varid[c], "comment", impact_table[c].comment, err);
+    NC_TRY(o->path, nc_def_dim(o->ncid, dname, NC_UNLIMITED, &dim), "defining dimension %s", dname);
+    for (int c = 0; c < ncol; c++) {
+        NC_TRY(o->path, nc_def_var(o->ncid, cols[c].name, c == 0 ? NC_INT : NC_DOUBLE, 1, &dim, &varid[c]),
+               "defining %s", cols[c].name);
+        rc_status rc = put_text(o, varid[c], "units", o->unit[cols[c].unit], err);
+        if (rc == RC_OK) rc = put_text(o, varid[c], "long_name", cols[c].long_name, err);
+        if (rc == RC_OK && cols[c].comment) rc = put_text(o, varid[c], "comment", cols[c].comment, err);
         if (rc != RC_OK) return rc;
     }
     return RC_OK;
@@ -1817,8 +1799,8 @@ static rc_status output_close(rc_output *o, const rc_stats *st, int complete, co
         int impact_var[I_COUNT];
         const int impacts = o->var[V_INTER_ID] >= 0;
         int persist_var[P_COUNT];
-        if (rc2 == RC_OK && impacts) rc2 = define_impacts(o, impact_var, e);
-        if (rc2 == RC_OK && impacts) rc2 = define_persistent(o, persist_var, e);
+        if (rc2 == RC_OK && impacts) rc2 = define_table(o, "impact", impact_table, I_COUNT, impact_var, e);
+        if (rc2 == RC_OK && impacts) rc2 = define_table(o, "persistent", persistent_table, P_COUNT, persist_var, e);
         int phys_var[PV_COUNT];
         if (rc2 == RC_OK && o->phys_set) rc2 = define_physics(o, phys_var, e);
         if (rc2 == RC_OK && (s = nc_enddef(o->ncid)) != NC_NOERR)

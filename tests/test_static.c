@@ -617,6 +617,78 @@ static void test_static_snap_through(void)
     rc_model_free(m);
 }
 
+
+/* Joints (docs/theory.md 7.8, "Joints"): a chain of every kind, a body on
+ * a revolute joint to the ground, a spherical, a distance, a fixed and a
+ * prismatic joint from each body to the next, under gravity with a spring
+ * on the last; the stiffness with the joints' rows and multipliers (the
+ * augmented system [K G^T; G 0] of the unknowns and the reactions) against
+ * central differences of the residual at the start and off the joints
+ * (displaced, rotated, with reactions of some newtons). */
+static const char *deck_joints =
+    "/NODE\n1,0.3,0,0\n2,0.6,0.1,0\n3,0.9,0,0.1\n4,1.2,0,0\n5,1.5,0,0\n"
+    "/RBODY/1\nb1\n1,,,,1.3\n0.011,0.013,0.017\n0,0,0\n"
+    "/RBODY/2\nb2\n2,,,,0.7\n0.005,0.007,0.006\n0,0,0\n"
+    "/RBODY/3\nb3\n3,,,,0.9\n0.008,0.004,0.009\n0,0,0\n"
+    "/RBODY/4\nb4\n4,,,,1.1\n0.012,0.010,0.007\n0,0,0\n"
+    "/RBODY/5\nb5\n5,,,,0.5\n0.003,0.004,0.005\n0,0,0\n"
+    "/GRAV/1\ngravity\n0,Y,0,0,0,,1,-9.81\n"
+    "/JOINT/REVOLUTE/1\npivot\n1,0\n0,0,0\n0.1,0.2,1\n"
+    "/JOINT/SPHERICAL/2\nball\n2,1\n0.45,0.05,0\n"
+    "/JOINT/DISTANCE/3\nrod\n3,2\n0.9,0,0.1\n0.6,0.1,0\n"
+    "/JOINT/FIXED/4\nweld\n4,3\n1.05,0,0.05\n"
+    "/JOINT/PRISMATIC/5\nslide\n5,4\n1.35,0,0\n1,0.3,0\n"
+    "/COUPLING/SPRING/6\nspring\n5,0,1\n1.5,0,0\n1.6,0.2,0.1\n0.1\n300\n"
+    "/RUN\n1.0,0.5\n/SOLVER\n3\n";
+
+static void test_static_stiffness_joints(void)
+{
+    rc_error e;
+    rc_model *m = tu_compile_text(deck_joints, "static_joints.rad", &e);
+    if (!m) fprintf(stderr, "  %s\n", e.msg);
+    ENSURE(m != NULL);
+    if (!m) return;
+    st_fix f = fix_open(m);
+    if (fix_ready(&f)) {
+        /* 30 unknowns of the bodies, 5 + 3 + 1 + 6 + 5 joint rows */
+        const int n = rc_static_size(f.s);
+        ENSURE(n == 30 + 20);
+        rc_initial_state(m, f.y);
+        rc_modes_init(m, f.d, 0.0, f.y);
+        rc_static_set_start(f.s, f.y);
+        double *u = calloc((size_t)n, sizeof(double)), *r = calloc((size_t)n, sizeof(double));
+        ENSURE(u && r);
+        if (u && r) {
+            /* at the start the rows vanish (the joints hold there) */
+            ENSURE(rc_static_residual(f.s, 0.5, u, r) == 0);
+            double gmax = 0.0;
+            for (int i = 30; i < n; i++) gmax = fmax(gmax, fabs(r[i]));
+            printf("    joint rows at the start: max |g| %.2e\n", gmax);
+            ENSURE(gmax < 1e-15);
+            for (int i = 30; i < n; i++) u[i] = 3.7 * sin(0.9 * i + 0.2);
+            const double e0 = stiffness_fd_error(f.s, 0.5, u);
+            for (int i = 0; i < 30; i++) u[i] = (i % 6 < 3 ? 2e-3 : 0.05) * sin(1.7 * i + 0.3);
+            const double e1 = stiffness_fd_error(f.s, 0.5, u);
+            printf("    max scaled |K - FD|: %.2e at the start, %.2e off the joints\n", e0, e1);
+            ENSURE(e0 < 1e-6);
+            ENSURE(e1 < 1e-6);
+            /* a unit reaction of the pivot's first row (a force along x
+             * on body 1 at the pivot): the residual's force on body 1 */
+            memset(u, 0, (size_t)n * sizeof(double));
+            ENSURE(rc_static_residual(f.s, 0.5, u, r) == 0);
+            const double fy0 = r[1];
+            u[30] = 1.0;
+            ENSURE(rc_static_residual(f.s, 0.5, u, r) == 0);
+            ENSURE_NEAR(r[0], 1.0, 0, 1e-14);
+            ENSURE_NEAR(r[1], fy0, 0, 1e-14);
+            ENSURE_NEAR(fy0, -1.3 * 9.81, 1e-14, 0);
+        }
+        free(u);
+        free(r);
+    }
+    fix_close(&f);
+}
+
 void suite_static(void);
 void suite_static(void)
 {
@@ -626,6 +698,7 @@ void suite_static(void)
     RUN_TEST(test_static_stiffness_boxes);
     RUN_TEST(test_static_stiffness_hysteresis_box);
     RUN_TEST(test_static_stiffness_point_friction);
+    RUN_TEST(test_static_stiffness_joints);
     RUN_TEST(test_static_scope);
     RUN_TEST(test_static_snap_through);
 }

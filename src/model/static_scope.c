@@ -41,10 +41,7 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
 {
     if (!how) how = "/SOLVER Method 3";
     if (!alt) alt = "Method 1 or 2";
-    if (m->jnt && m->jnt->n > 0)
-        RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card %s: " RC_STATIC_NOT " (%s); expected a model without joints, or %s",
-                 RC_LOC(m->jnt->loc[0]), m->jnt->name[0], "joints", how, alt);
+    /* joints: their constraint rows and reactions (solver/static.c) */
     /* imposed translations are held displacements (the integral of the
      * velocity); an imposed rotation, or a translation released before the
      * end (Tstop), is not in this version */

@@ -86,16 +86,9 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
                                "cylinders, boxes or segment surfaces, or %s",
                      RC_LOC(m->inter_loc[i]), m->inter_name[i], what, how, alt);
     }
-    for (int k = 0; m->cpl && k < m->cpl->n; k++)
-        if (m->cpl->kind[k] != RC_CPL_SPRING)
-            RC_RAISE(err, RC_EINPUT,
-                     RC_LOCFMT "card %s: " RC_STATIC_NOT " (%s); expected spring couplings (/COUPLING/SPRING) only, "
-                               "or %s",
-                     RC_LOC(m->cpl->law_loc[k]), m->cpl->name[k],
-                     m->cpl->kind[k] == RC_CPL_CATENARY ? "catenary couplings"
-                     : m->cpl->kind[k] == RC_CPL_CONTACT ? "contact couplings"
-                                                         : "joint stops",
-                     how, alt);
+    /* couplings: springs, catenaries (forces of the positions), contact
+     * couplings and joint stops (their modes an active set, as the
+     * contacts'; solver/static.c) */
     return RC_OK;
 }
 

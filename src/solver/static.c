@@ -59,6 +59,7 @@
 #include "engine/events/events.h"
 #include "model/model.h"
 #include "model/coupling.h"
+#include "model/coupling_contact.h"
 #include "model/imposed.h"
 #include "model/joint.h"
 #include "model/power.h"
@@ -337,7 +338,7 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     /* scales and held unknowns: per free body the smallest penetration
      * scale and the largest force scale of its contacts, their summed
      * stiffness scales (one pass over the interfaces), its size */
-    rc_moment_free_bodies(m, mf);
+    rc_moment_free_bodies_centred(m, 1, mf);
     double *bps = malloc(((size_t)s->nb + 1) * sizeof(double)), *bfi = malloc(((size_t)s->nb + 1) * sizeof(double));
     double *size_all = malloc(((size_t)m->nbody + 1) * sizeof(double));
     if (!bps || !bfi || !size_all) {
@@ -1766,6 +1767,49 @@ static const char *const dof_name[6] = {"translation x", "translation y", "trans
                                         "rotation about the body's x axis", "rotation about the body's y axis",
                                         "rotation about the body's z axis"};
 
+/* The couplings' modes at the load time t from the state y (at rest, the
+ * modes a dynamic run starts from: rc_cpl_modes_init): a joint stop pushes
+ * while its coordinate is past the stop, a contact coupling's face while
+ * it is within its effective range. Writes the changes as events
+ * (stop_enter, stop_leave; cpl_contact_enter, cpl_contact_leave, one per
+ * coupling and kind); old [n + nface] scratch. Returns the number of
+ * changes, or -1 on an output error. */
+static int update_cpl_modes(const rc_model *m, rc_data *d, double t, const double *y, int *old, ev_sink *sink,
+                            long *nev, rc_error *err)
+{
+    const rc_couplings *c = m->cpl;
+    if (!c || c->n == 0) return 0;
+    const int nf = c->ct ? c->ct->nface : 0;
+    memcpy(old, d->cpl->lmode, (size_t)c->n * sizeof(int));
+    if (nf) memcpy(old + c->n, d->cpl->fmode, (size_t)nf * sizeof(int));
+    rc_cpl_modes_init(m, d, t, y);
+    int changed = 0;
+    for (int k = 0; k < c->n; k++) {
+        rc_event_kind kind = RC_EV_NONE;
+        const char *name = c->name[k];
+        if (c->kind[k] == RC_CPL_LIMIT && d->cpl->lmode[k] != old[k]) {
+            kind = d->cpl->lmode[k] == RC_LIM_FREE ? RC_EV_STOP_LEAVE : RC_EV_STOP_ENTER;
+            if (c->ljoint[k] >= 0 && m->jnt) name = m->jnt->name[c->ljoint[k]];
+        } else if (c->kind[k] == RC_CPL_CONTACT) {
+            int in = 0, out = 0;
+            for (int f = c->ct->fadr[k]; f < c->ct->fadr[k + 1]; f++) {
+                const int was = old[c->n + f] != RC_FACE_OUT, now = d->cpl->fmode[f] != RC_FACE_OUT;
+                in += now && !was;
+                out += was && !now;
+            }
+            if (in || out) kind = in ? RC_EV_CPL_CONTACT_ENTER : RC_EV_CPL_CONTACT_LEAVE;
+        }
+        if (kind == RC_EV_NONE) continue;
+        changed++;
+        (*nev)++;
+        rc_cpl_report r;
+        const int bad = rc_cpl_report_eval(m, d, k, t, y, &r);
+        const double v[3] = {bad ? 0.0 : r.length, 0.0, bad ? 0.0 : r.force};
+        if (rc_bk_sink_event(sink, t, kind, name, v, err)) return -1;
+    }
+    return changed;
+}
+
 /* The modes of the interfaces at the load time t from the state y: the
  * activation windows, then the unilateral rule (an open contact
  * penetrating closes; a closed one separated or pulling opens). Writes
@@ -1859,11 +1903,15 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
     int *msave = calloc((size_t)m->ninter + 1, sizeof(int)), *flips = calloc((size_t)m->ninter + 1, sizeof(int));
     int *slsave = calloc((size_t)m->ninter + 1, sizeof(int));
     int *pfsave = calloc((size_t)m->ninter + 1, sizeof(int));
+    /* the couplings' modes (joint stops, contact coupling faces): scratch
+     * of update_cpl_modes, and their save at a substep's start */
+    const size_t ncm = m->cpl ? (size_t)m->cpl->n + (size_t)(m->cpl->ct ? m->cpl->ct->nface : 0) : 0;
+    int *cplold = calloc(ncm + 1, sizeof(int)), *cplsave = calloc(ncm + 1, sizeof(int));
     char reason[1536] = "";
     const char *fail_reason = NULL;
     double t = 0.0;
     int fb_ok = 0;
-    if (!d || !s || !y || !ysave || !ptol || !msave || !flips || !slsave || !pfsave || !(fb_ok = rc_bk_frame_alloc(m, &fb))) {
+    if (!d || !s || !y || !ysave || !ptol || !msave || !flips || !slsave || !pfsave || !cplold || !cplsave || !(fb_ok = rc_bk_frame_alloc(m, &fb))) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the static analysis");
         goto done;
     }
@@ -1906,6 +1954,11 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
             memcpy(msave, d->inter_mode, (size_t)m->ninter * sizeof(int));
             memcpy(slsave, d->inter_slip, (size_t)m->ninter * sizeof(int));
             for (int i = 0; i < m->ninter; i++) pfsave[i] = point_slip(m, d, i);
+            if (ncm) {
+                memcpy(cplsave, d->cpl->lmode, (size_t)m->cpl->n * sizeof(int));
+                if (ncm > (size_t)m->cpl->n)
+                    memcpy(cplsave + m->cpl->n, d->cpl->fmode, (ncm - (size_t)m->cpl->n) * sizeof(int));
+            }
             memset(flips, 0, (size_t)m->ninter * sizeof(int));
             /* friction: the substep's start (its forces, the contact points) */
             rc_static_set_substep_start(s, t, y);
@@ -1915,6 +1968,10 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
             const int max_rounds = RC_STATIC_ROUNDS_MIN + 2 * m->ninter;
             for (;;) {
                 int ch = update_modes(m, d, tn, y, ptol, ftol, &sink, NULL, &S->events, err);
+                if (ch >= 0) {
+                    const int cc = update_cpl_modes(m, d, tn, y, cplold, &sink, &S->events, err);
+                    ch = cc < 0 ? cc : ch + cc;
+                }
                 if (ch < 0) {
                     st = RC_EIO;
                     goto done;
@@ -1992,6 +2049,10 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                 commit_state(s, tn, expand(s, N_VGetArrayPointer(k.u)), y);
                 S->reinits += rounds > 0;
                 ch = update_modes(m, d, tn, y, ptol, ftol, &sink, flips, &S->events, err);
+                if (ch >= 0) {
+                    const int cc = update_cpl_modes(m, d, tn, y, cplold, &sink, &S->events, err);
+                    ch = cc < 0 ? cc : ch + cc;
+                }
                 if (ch < 0) {
                     st = RC_EIO;
                     goto done;
@@ -2013,6 +2074,15 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                         st = RC_SET(err, RC_ESOLVER, "%s", reason);
                         goto done;
                     }
+                if (rounds > max_rounds + (int)ncm) { /* the couplings' modes (joint stops, faces) cycle */
+                    snprintf(reason, sizeof reason,
+                             "static analysis: the active set of the joint stops and contact couplings cycles at "
+                             "the load time t = %.9g s (%d solves of the load step); try another output interval",
+                             tn, rounds);
+                    fail_reason = reason;
+                    st = RC_SET(err, RC_ESOLVER, "%s", reason);
+                    goto done;
+                }
             }
             if (ok) {
                 /* the energies over the substep (the last commit's unknowns) */
@@ -2044,6 +2114,11 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
             memcpy(y, ysave, (size_t)nyx * sizeof(double));
             memcpy(d->inter_mode, msave, (size_t)m->ninter * sizeof(int));
             memcpy(d->inter_slip, slsave, (size_t)m->ninter * sizeof(int));
+            if (ncm) {
+                memcpy(d->cpl->lmode, cplsave, (size_t)m->cpl->n * sizeof(int));
+                if (ncm > (size_t)m->cpl->n)
+                    memcpy(d->cpl->fmode, cplsave + m->cpl->n, (ncm - (size_t)m->cpl->n) * sizeof(int));
+            }
             if ((first || dtau * 0.5 < dmin) && slide >= 0) {
                 snprintf(reason, sizeof reason,
                          "static analysis: no static equilibrium at the load time t = %.9g s: the load exceeds what "
@@ -2151,6 +2226,8 @@ done:
     free(flips);
     free(slsave);
     free(pfsave);
+    free(cplold);
+    free(cplsave);
     return st;
 }
 

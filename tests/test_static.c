@@ -689,6 +689,73 @@ static void test_static_stiffness_joints(void)
     fix_close(&f);
 }
 
+/* Imposed rotations and a release at Tstop (docs/theory.md 7.8, "Imposed
+ * velocities"): body 1 (translations held) turned about z by /IMPVEL ZZ
+ * at 0.2 rad/s until Tstop = 0.5 s against two pretensioned springs at
+ * its arms, then released; body 2 pushed down by /IMPVEL Z at 0.1 m/s
+ * until Tstop = 0.5 s against gravity on a spring above it, then
+ * released. At t_end = 0.4 s (held): body 1 turned by 0.08 rad about z,
+ * body 2 at z = -0.04 m; at 1 s (released): body 1 back at its start
+ * (the springs' equilibrium), body 2 at z = -m g / k. */
+static const char *deck_impvel =
+    "/NODE\n1,0,0,0\n2,5,0,0\n"
+    "/RBODY/1\nlever\n1,,,,1.0\n0.01,0.01,0.01\n0,0,0\n"
+    "/RBODY/2\nblock\n2,,,,2.0\n0.01,0.01,0.01\n0,0,0\n"
+    "/GRNOD/NODE/1\ng1\n1\n/GRNOD/NODE/2\ng2\n2\n"
+    "/BCS/1\nheld\n111 000,0,1\n"
+    "/GRAV/1\ngravity\n0,Z,0,0,2,,1,-9.81\n"
+    "/COUPLING/SPRING/1\narm x\n1,0,1\n0.5,0,0\n1.5,0,0\n0.8\n300\n"
+    "/COUPLING/SPRING/2\narm y\n1,0,1\n0,0.5,0\n0,1.5,0\n0.8\n300\n"
+    "/COUPLING/SPRING/3\nhanger\n2,0,1\n5,0,0\n5,0,1\n1.0\n1000\n"
+    "/FUNCT/1\nconstant\n0,1\n10,1\n"
+    "/IMPVEL/1\nturn\n1,ZZ,0,0,1\n1,0.2,0,0.5\n"
+    "/IMPVEL/2\npush\n1,Z,0,0,2\n1,-0.1,0,0.5\n"
+    "/RUN\n1.0,0.1\n/SOLVER\n3\n";
+
+static void test_static_impvel(void)
+{
+    rc_error e;
+    rc_model *m = tu_compile_text(deck_impvel, "static_impvel.rad", &e);
+    if (!m) fprintf(stderr, "  %s\n", e.msg);
+    ENSURE(m != NULL);
+    if (!m) return;
+    double *y = calloc((size_t)m->ny + 1, sizeof(double));
+    ENSURE(y != NULL);
+    const double tends[2] = {0.4, 1.0};
+    for (int c = 0; y && c < 2; c++) {
+        rc_run_options o = {.y_end = y, .t_end_override = tends[c]};
+        rc_stats st;
+        const rc_status r = rc_run(m, &o, &st, &e);
+        if (r) fprintf(stderr, "  %s\n", e.msg);
+        ENSURE(r == RC_OK);
+        const double *y1 = y + m->body_yadr[0], *y2 = y + m->body_yadr[1];
+        const double ang = c == 0 ? 0.08 : 0.0, z2 = c == 0 ? -0.04 : -2.0 * 9.81 / 1000.0;
+        printf("    t = %.1f s: q1 = (%.15f, %.3g, %.3g, %.15f), z2 = %.15f m\n", tends[c], y1[3], y1[4], y1[5], y1[6],
+               y2[2]);
+        ENSURE_NEAR(y1[3], cos(0.5 * ang), 0, 1e-12);
+        ENSURE_NEAR(y1[6], sin(0.5 * ang), 0, 1e-12);
+        ENSURE_NEAR(y1[4], 0.0, 0, 1e-12);
+        ENSURE_NEAR(y1[5], 0.0, 0, 1e-12);
+        ENSURE_NEAR(y2[2], z2, 0, 1e-12);
+        ENSURE_NEAR(y2[0], 5.0, 0, 1e-12);
+    }
+    free(y);
+    rc_model_free(m);
+    /* a rotation about an axis that turns (two components on one body) is
+     * refused, naming the body */
+    char *t = malloc(strlen(deck_impvel) + 100);
+    ENSURE(t != NULL);
+    if (t) {
+        strcpy(t, deck_impvel);
+        char *p = strstr(t, "/RUN");
+        memmove(p + strlen("/IMPVEL/3\nturn2\n1,XX,0,0,1\n1,0.1,0,0.5\n"), p, strlen(p) + 1);
+        memcpy(p, "/IMPVEL/3\nturn2\n1,XX,0,0,1\n1,0.1,0,0.5\n", strlen("/IMPVEL/3\nturn2\n1,XX,0,0,1\n1,0.1,0,0.5\n"));
+        TU_EXPECT_TEXT_ERROR(t, "static_impvel2.rad", "/IMPVEL", "static analysis", "two or more components",
+                             "/RBODY/1");
+        free(t);
+    }
+}
+
 void suite_static(void);
 void suite_static(void)
 {
@@ -699,6 +766,7 @@ void suite_static(void)
     RUN_TEST(test_static_stiffness_hysteresis_box);
     RUN_TEST(test_static_stiffness_point_friction);
     RUN_TEST(test_static_stiffness_joints);
+    RUN_TEST(test_static_impvel);
     RUN_TEST(test_static_scope);
     RUN_TEST(test_static_snap_through);
 }

@@ -43,20 +43,20 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
     if (!alt) alt = "Method 1 or 2";
     /* joints: their constraint rows and reactions (solver/static.c) */
     /* imposed translations are held displacements (the integral of the
-     * velocity); an imposed rotation, or a translation released before the
-     * end (Tstop), is not in this version */
-    if (m->imp && m->imp->nr > 0)
-        RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card /IMPVEL: " RC_STATIC_NOT " (%s); expected imposed translations only (Dir X, Y, Z), "
-                           "or %s",
-                 RC_LOC(m->end_loc), "imposed rotations (Dir XX, YY, ZZ)", how, alt);
-    for (int k = 0; m->imp && k < m->imp->nt; k++)
-        if (m->imp->ttstop[k] < m->tend)
+     * velocity), imposed rotations held rotations (the integral of the
+     * angular velocity about its global axis), each free after its Tstop;
+     * a rotation about an axis that turns (two components of one body's
+     * angular velocity imposed) has no closed-form path in this version */
+    for (int j = 0; m->imp && j < m->imp->nr; j++) {
+        int nc = 0;
+        for (int k = 0; k < 3; k++) nc += m->imp->rtab[3 * j + k] >= 0;
+        if (nc > 1)
             RC_RAISE(err, RC_EINPUT,
-                     RC_LOCFMT "card /IMPVEL: " RC_STATIC_NOT " (%s); expected its Tstop blank or at least the end "
-                               "time %.6g s (an imposed translation held to the end), or %s",
-                     RC_LOC(m->end_loc), "an imposed translation that stops before the end time (Tstop)", how,
-                     m->tend, alt);
+                     RC_LOCFMT "card /IMPVEL: " RC_STATIC_NOT " (%s, /RBODY/%d); expected one rotational component "
+                               "per body (Dir XX, YY or ZZ: a rotation about a fixed global axis), or %s",
+                     RC_LOC(m->end_loc), "an imposed rotation of two or more components (Dir XX, YY, ZZ) on one body",
+                     how, m->body_id[m->imp->rbody[j]], alt);
+    }
     for (int i = 0; i < m->ninter; i++) {
         const rc_fric *fr = &m->inter_fr[i];
         const char *what = NULL;

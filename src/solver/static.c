@@ -122,6 +122,15 @@ struct rc_static {
     int *imp_k;      /* [n] the imposed translation (m->imp index) of an unknown, -1: none */
     double *imp_x0;  /* [n] its coordinate at t = 0 (the model's coordinates) [m] */
     double *imp_f;   /* [n] the unbalanced force along it at the last equilibrium [N] */
+    /* imposed rotations (/IMPVEL XX, YY, ZZ: the body's rotations held at
+     * the rotation the imposed angular velocity turns it by, docs/theory.md
+     * 7.8) */
+    int *imp_r;      /* [nb] the imposed rotation (m->imp rotation index) of a slot, -1: none */
+    double *imp_q0;  /* [4 nb] its orientation at t = 0 */
+    /* imposed components released before the end (Tstop < t_end): kept in
+     * the Newton system, held by their row k_s (u - u_imp) while t <= Tstop,
+     * free after it */
+    char *soft;      /* [nx] 1: such an unknown */
     double *imp_u;   /* [n] the held unknowns' values in the solve under way (imp_targets; 0 but
                         for an imposed translation) */
     double *us, *fs; /* [n] unknown and residual scales (length or angle; force or moment) */
@@ -252,7 +261,7 @@ void rc_static_free(rc_static *s)
                  s->fr_xa, s->fr_xb, s->ext, s->hy_on, s->hy_f0, s->hy_p0, s->hy_el, s->pe_on,
                  s->pf_on, s->pf_t0, s->pf_pa, s->pf_pb, s->pf_xa, s->pf_xb, s->pf_in, s->pf_out,
                  s->full, s->rcolptr, s->rrowind, s->remap, s->ufull, s->rfull, s->en_p0, s->en_f0, s->en_w0, s->en_x0,
-                 s->jq, s->jpos, s->jbody, s->jw, s->jA, s->jb};
+                 s->jq, s->jpos, s->jbody, s->jw, s->jA, s->jb, s->imp_r, s->imp_q0, s->soft};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     free(s);
 }
@@ -307,10 +316,14 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     s->jw = calloc(12 * (size_t)s->nl + 1, sizeof(double));
     s->jA = calloc((size_t)s->nl * (size_t)s->nl + 1, sizeof(double));
     s->jb = calloc((size_t)s->nl + 1, sizeof(double));
+    s->imp_r = malloc(((size_t)s->nb + 1) * sizeof(int));
+    s->imp_q0 = calloc(4 * (size_t)s->nb + 1, sizeof(double));
+    s->soft = calloc(n1, 1);
     int64_t *key = malloc((nnz1 + (size_t)s->nb + 2 * (size_t)nj) * sizeof(int64_t));
     char *mf = calloc((size_t)m->nbody + 1, 1);
     if (!s->fb || !s->slot || !s->ys || !s->y || !s->f || !s->jv || !s->held || !s->imp_k || !s->imp_x0 || !s->imp_f || !s->imp_u || !s->us || !s->fs || !s->kb || !s->bsize || !s->sslot || !s->ent_blk ||
-        !s->ent_rc || !s->jq || !s->jpos || !s->jbody || !s->jw || !s->jA || !s->jb || !key || !mf) {
+        !s->ent_rc || !s->jq || !s->jpos || !s->jbody || !s->jw || !s->jA || !s->jb || !s->imp_r || !s->imp_q0 || !s->soft || !key ||
+        !mf) {
         free(key);
         free(mf);
         rc_static_free(s);
@@ -403,7 +416,8 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
         }
     /* imposed translations: held at the integral of their velocity */
     for (int i = 0; i < s->nx; i++) s->imp_k[i] = -1;
-    if (m->imp && m->imp->nt > 0) {
+    for (q = 0; q < s->nb; q++) s->imp_r[q] = -1;
+    if (m->imp && (m->imp->nt > 0 || m->imp->nr > 0)) {
         double *y0 = calloc(ny1, sizeof(double));
         if (!y0) {
             free(bps);
@@ -419,8 +433,19 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
             if (qk < 0) continue;
             const int i = 6 * qk + m->imp->tdir[k];
             s->held[i] = 1;
+            s->soft[i] = m->imp->ttstop[k] < m->tend;
             s->imp_k[i] = k;
             s->imp_x0[i] = y0[m->body_yadr[b] + m->imp->tdir[k]];
+        }
+        for (int j = 0; j < m->imp->nr; j++) {
+            const int b = m->imp->rbody[j], qj = b >= 0 ? s->slot[b] : -1;
+            if (qj < 0) continue;
+            s->imp_r[qj] = j;
+            memcpy(s->imp_q0 + 4 * qj, y0 + m->body_yadr[b] + 3, 4 * sizeof(double));
+            for (int k = 3; k < 6; k++) {
+                s->held[6 * qj + k] = 1;
+                s->soft[6 * qj + k] = m->imp->rtstop[j] < m->tend;
+            }
         }
         free(y0);
     }
@@ -594,8 +619,9 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     }
     s->nr = 0;
     for (int i = 0; i < s->nx; i++) {
-        red[i] = s->held[i] ? -1 : s->nr;
-        if (!s->held[i]) s->full[s->nr++] = i;
+        const int out = s->held[i] && !s->soft[i];
+        red[i] = out ? -1 : s->nr;
+        if (!out) s->full[s->nr++] = i;
     }
     int64_t nzr = 0;
     for (int c2 = 0; c2 < s->nr; c2++) {
@@ -1319,7 +1345,7 @@ int rc_static_residual(rc_static *s, double t, const double *u, double *r)
     }
     jnt_residual(s, u, r);
     for (int i = 0; i < s->nx; i++) {
-        if (s->held[i]) r[i] = s->fs[i] / s->us[i] * u[i];
+        if (s->held[i]) r[i] = s->fs[i] / s->us[i] * (u[i] - s->imp_u[i]);
         if (!isfinite(r[i])) return 1;
     }
     return 0;
@@ -1418,16 +1444,71 @@ static double imp_disp(const rc_model *m, int k, double t)
     return p->tfscale[k] * p->tascale[k] * rc_table_integral(&m->table[p->ttab[k]], 0.0, t / p->tascale[k]);
 }
 
+/* The global rotation vector Phi [rad] an imposed rotation j turns its
+ * body by from t = 0 to t (up to its Tstop): the integral of its angular
+ * velocity w_g = Fscale f(t / Ascale) per global component (exact as a
+ * rotation where w_g keeps its axis, which the scope asks: one component). */
+static void imp_phi(const rc_model *m, int j, double t, double phi[3])
+{
+    const rc_imposed *p = m->imp;
+    const double te = fmin(t, p->rtstop[j]);
+    for (int k = 0; k < 3; k++) {
+        const int tab = p->rtab[3 * j + k];
+        const double as = p->rascale[3 * j + k];
+        phi[k] = tab < 0 ? 0.0 : p->rfscale[3 * j + k] * as * rc_table_integral(&m->table[tab], 0.0, te / as);
+    }
+}
+
 /* The held unknowns' values of a solve at the load time t from the start
- * s->ys: an imposed translation's position at t less the start's. */
+ * s->ys: an imposed translation's position at t less the start's; an
+ * imposed rotation's orientation exp(Phi(t)) (x) q(0) put into the start
+ * s->ys, its rotation unknowns held at 0. A component released before the
+ * end (soft) is held while t <= Tstop, free after it. */
 static void imp_targets(rc_static *s, double t)
 {
+    const rc_model *m = s->m;
     for (int i = 0; i < s->n; i++) {
         const int k = s->imp_k[i];
         if (k < 0) continue;
-        const int a = s->m->body_yadr[s->fb[i / 6]] + i % 6;
-        s->imp_u[i] = s->imp_x0[i] + imp_disp(s->m, k, t) - s->ys[a];
+        const int a = m->body_yadr[s->fb[i / 6]] + i % 6;
+        if (s->soft[i]) s->held[i] = t <= m->imp->ttstop[k];
+        s->imp_u[i] = s->held[i] ? s->imp_x0[i] + imp_disp(m, k, t) - s->ys[a] : 0.0;
     }
+    for (int q = 0; q < s->nb; q++) {
+        const int j = s->imp_r[q];
+        if (j < 0) continue;
+        const int held = t <= m->imp->rtstop[j];
+        for (int k = 3; k < 6; k++) {
+            if (s->soft[6 * q + k]) s->held[6 * q + k] = held;
+            s->imp_u[6 * q + k] = 0.0;
+        }
+        if (!held) continue;
+        double phi[3], qt[4];
+        imp_phi(m, j, t, phi);
+        double complex th[3] = {phi[0], phi[1], phi[2]}, e[4], r[4];
+        qexp(th, e);
+        /* exp(Phi) (x) q0: a rotation about global axes */
+        const double *q0 = s->imp_q0 + 4 * q;
+        const double complex qc[4] = {q0[0], q0[1], q0[2], q0[3]};
+        r[0] = e[0] * qc[0] - e[1] * qc[1] - e[2] * qc[2] - e[3] * qc[3];
+        r[1] = e[0] * qc[1] + e[1] * qc[0] + e[2] * qc[3] - e[3] * qc[2];
+        r[2] = e[0] * qc[2] - e[1] * qc[3] + e[2] * qc[0] + e[3] * qc[1];
+        r[3] = e[0] * qc[3] + e[1] * qc[2] - e[2] * qc[1] + e[3] * qc[0];
+        for (int k = 0; k < 4; k++) qt[k] = creal(r[k]);
+        memcpy(s->ys + m->body_yadr[s->fb[q]] + 3, qt, sizeof qt);
+    }
+}
+
+/* The first Tstop of an imposed component in (t, tn) (a load substep ends
+ * there: the component is held up to it, free after), or tn. */
+static double imp_break(const rc_model *m, double t, double tn)
+{
+    const rc_imposed *p = m->imp;
+    for (int k = 0; p && k < p->nt; k++)
+        if (p->ttstop[k] > t && p->ttstop[k] < tn) tn = p->ttstop[k];
+    for (int j = 0; p && j < p->nr; j++)
+        if (p->rtstop[j] > t && p->rtstop[j] < tn) tn = p->rtstop[j];
+    return tn;
 }
 
 /* The unknowns solved for (u, reduced) into s->ufull, the held ones at
@@ -1583,6 +1664,8 @@ static st_out kin_solve(st_kin *k, st_run *c, double t)
     c->njac = 0;
     imp_targets(c->s, t);
     N_VConst(0.0, k->u);
+    for (int i = 0; i < c->s->nr; i++) /* a soft-held component at its value */
+        if (c->s->held[c->s->full[i]]) NV_Ith_S(k->u, i) = c->s->imp_u[c->s->full[i]];
     /* the joints' multipliers: those that balance the loads at the start
      * best, else the last equilibrium's */
     if (c->s->nl > 0) {
@@ -1650,7 +1733,7 @@ static int kin_support(st_kin *k, st_run *c)
             /* a jointed body's stiffness is that of its motions the joints
              * allow, not its own diagonal (a pendulum's translations have
              * none): the factorisation below judges it */
-            if (f >= s->n || s->jbody[f / 6]) continue;
+            if (f >= s->n || s->jbody[f / 6] || s->held[f]) continue;
             double dg = 0.0;
             for (sunindextype p = cp[i]; p < cp[i + 1]; p++)
                 if (ri[p] == i) dg = v[p];
@@ -1710,14 +1793,35 @@ static void energy_step(rc_static *s, double t, const double *u, double *y)
     }
     /* imposed translations: W_imp = -(work of the reactions) = the work of
      * the unbalanced force F along the component, sum 0.5 (F_0 + F_1) dx */
-    if (m->imp && m->imp->nt > 0 && rc_assemble_rhs(m, d, t, y, s->f) == 0)
+    if (m->imp && (m->imp->nt > 0 || m->imp->nr > 0) && rc_assemble_rhs(m, d, t, y, s->f) == 0) {
         for (int i = 0; i < s->n; i++) {
-            if (s->imp_k[i] < 0) continue;
+            if (s->imp_k[i] < 0 || !s->held[i]) continue;
             const int q = i / 6, b = s->fb[q], a = m->body_yadr[b], c = i % 6;
             const double f1 = m->body_mass[b] * d->sc->imp_free[a + 7 + c]; /* before the imposed rate (rc_imp_rhs) */
             y[m->imp->wadr] += 0.5 * (s->imp_f[i] + f1) * (y[a + c] - s->en_x0[3 * q + c]);
             s->imp_f[i] = f1;
         }
+        /* imposed rotations: the unbalanced moment M (global: R J
+         * omegadot_free) over the rotation's increment, sum 0.5 (M_0 +
+         * M_1) . dPhi */
+        for (int q = 0; q < s->nb; q++) {
+            const int j = s->imp_r[q];
+            if (j < 0 || !s->held[6 * q + 3]) continue;
+            const int b = s->fb[q], a = m->body_yadr[b];
+            const double *J = m->body_J + 9 * b, *wf = d->sc->imp_free + a + 10, *qq = y + a + 3;
+            double mb[3], p0[3], p1[3];
+            for (int k = 0; k < 3; k++) mb[k] = J[3 * k] * wf[0] + J[3 * k + 1] * wf[1] + J[3 * k + 2] * wf[2];
+            const double complex qc[4] = {qq[0], qq[1], qq[2], qq[3]};
+            double complex mg[3];
+            qrot(qc, mb, mg);
+            imp_phi(m, j, s->en_t0, p0);
+            imp_phi(m, j, t, p1);
+            for (int k = 0; k < 3; k++) {
+                y[m->imp->wadr] += 0.5 * (s->imp_f[6 * q + 3 + k] + creal(mg[k])) * (p1[k] - p0[k]);
+                s->imp_f[6 * q + 3 + k] = creal(mg[k]);
+            }
+        }
+    }
     if (m->gwork_adr >= 0)
         for (int q = 0; q < s->nb; q++) {
             const int b = s->fb[q];
@@ -1949,7 +2053,8 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
         /* from t to tk in substeps of the load time */
         int first = kout == 0;
         while (first || t < tk) {
-            const double tn = first ? 0.0 : (tk - t <= dtau * (1 + 1e-12) ? tk : t + dtau);
+            const double tn =
+                first ? 0.0 : imp_break(m, t, tk - t <= dtau * (1 + 1e-12) ? tk : t + dtau);
             memcpy(ysave, y, (size_t)nyx * sizeof(double));
             memcpy(msave, d->inter_mode, (size_t)m->ninter * sizeof(int));
             memcpy(slsave, d->inter_slip, (size_t)m->ninter * sizeof(int));

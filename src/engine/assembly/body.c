@@ -103,7 +103,7 @@ void rc_moment_free_bodies_centred(const rc_model *m, int centred, char *mf)
     for (int b = 0; b < m->nbody; b++) mf[b] = m->body_yadr[b] >= 0;
     /* imposed velocities: their reactions (a rotation's is a torque) */
     const rc_imposed *p = m->imp;
-    for (int k = 0; p && k < p->nt; k++) mf[p->tbody[k]] = 0;
+    for (int k = 0; p && k < p->nt && !centred; k++) mf[p->tbody[k]] = 0;
     for (int k = 0; p && k < p->nr; k++) mf[p->rbody[k]] = 0;
     /* couplings (springs, catenaries, contact couplings, joint stops) and
      * joints: forces at attachment points, moments */

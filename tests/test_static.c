@@ -756,6 +756,60 @@ static void test_static_impvel(void)
     }
 }
 
+/* Inacti 5 in statics (docs/theory.md 3.1, 7.8): a sphere (1 kg) 1 mm
+ * into a floor (k = 1e5 N/m) at the start, the gap reduced by it (force
+ * free), x and y held, a spring of 100 N/m above it relaxed at the start;
+ * gravity's function 1 at t = 0, -1 at t = 1 s, 1 again at t = 2 s. It
+ * sinks by m g / (k + k_s) (the offset unchanged), lifts off by m g / k_s
+ * at t = 1 s (the offset taken up to 0: the full gap back), and comes back
+ * at t = 2 s onto the full gap: a sink of (m g - k P0) / (k + k_s). */
+static void test_static_inacti5(void)
+{
+    static const char *deck =
+        "/NODE\n1,0,0,0.049\n"
+        "/RBODY/1\nsphere\n1,,,,1.0\n0.001,0.001,0.001\n0,0,0\n"
+        "/SURF/ELLIPS/1\nsphere\n0,2,1\n0,0,0.049\n0.05,0.05,0.05\n"
+        "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
+        "/GRNOD/NODE/1\ngroup\n1\n"
+        "/BCS/1\nheld\n110 000,0,1\n"
+        "/FUNCT/1\nload curve\n0,0\n1,100000\n"
+        "/FUNCT/2\ngravity factor\n0,1\n1,-1\n2,1\n"
+        "/GRAV/1\ngravity\n2,Z,0,0,0,,1,-9.81\n"
+        "/COUPLING/SPRING/1\nspring\n1,0,1\n0,0,0.049\n0,0,1.049\n1.0\n100\n"
+        "/INTER/TYPE6/1\nsphere - floor\n1,2\n\n"
+        "                   0         0         5         0         0\n"
+        "         1         0                                                 0\n"
+        "         0\n"
+        "                             0         0\n"
+        "/RUN\n2.0,0.25\n/SOLVER\n3\n";
+    rc_error e;
+    rc_model *m = tu_compile_text(deck, "static_inacti5.rad", &e);
+    if (!m) fprintf(stderr, "  %s\n", e.msg);
+    ENSURE(m != NULL);
+    if (!m) return;
+    double *y = calloc((size_t)m->ny + 1, sizeof(double));
+    ENSURE(y != NULL);
+    const double g = 9.81, k = 1e5, ks = 100.0, P0 = 1e-3;
+    const double tends[3] = {0.25, 1.0, 2.0};
+    const double sink[3] = {0.5 * g / (k + ks), -g / ks, (g - k * P0) / (k + ks)};
+    for (int c = 0; y && c < 3; c++) {
+        rc_run_options o = {.y_end = y, .t_end_override = tends[c]};
+        rc_stats st;
+        const rc_status r = rc_run(m, &o, &st, &e);
+        if (r) fprintf(stderr, "  %s\n", e.msg);
+        ENSURE(r == RC_OK);
+        const double z = y[m->body_yadr[0] + 2];
+        printf("    t = %.2f s: sink %.15g m, expected %.15g m\n", tends[c], 0.049 - z, sink[c]);
+        ENSURE_NEAR(0.049 - z, sink[c], 1e-9, 1e-15);
+    }
+    free(y);
+    /* a preload refuses it: the dynamic start would take the equilibrium's
+     * penetration as its offset */
+    ENSURE(rc_model_set_preload(m, 1, &e) == RC_EINPUT);
+    ENSURE(strstr(e.msg, "Inacti 5") != NULL && strstr(e.msg, "/INTER/TYPE6/1") != NULL);
+    rc_model_free(m);
+}
+
 void suite_static(void);
 void suite_static(void)
 {
@@ -767,6 +821,7 @@ void suite_static(void)
     RUN_TEST(test_static_stiffness_point_friction);
     RUN_TEST(test_static_stiffness_joints);
     RUN_TEST(test_static_impvel);
+    RUN_TEST(test_static_inacti5);
     RUN_TEST(test_static_scope);
     RUN_TEST(test_static_snap_through);
 }

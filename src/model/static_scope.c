@@ -73,9 +73,7 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
             if (fr->card_id > 0) snprintf(fbuf, sizeof fbuf, "%s (/FRICTION/%d on it)", why, fr->card_id);
             else snprintf(fbuf, sizeof fbuf, "%s (its own friction fields)", why);
             what = fbuf;
-        } else if (m->inter_oidx[i] >= 0)
-            what = "Inacti 5 (the gap offset state)";
-        else if (rc_pair_multi(m->inter_pair[i]) && !rc_inter_frictionless(m, i) &&
+        } else if (rc_pair_multi(m->inter_pair[i]) && !rc_inter_frictionless(m, i) &&
                  !(rc_pair_nodes(m->inter_pair[i]) && m->inter_npt[i] > 0 && m->inter_pst[i] == 3))
             what = "friction on a sphere against a segment surface";
         if (what)
@@ -109,6 +107,15 @@ rc_status rc_preload_scope(const rc_model *m, const char *how, rc_error *err)
                                "state is not carried into the dynamic run in this version); expected Iform 0, or no "
                                "preload (/SOLVER Preload 0)",
                      RC_LOC(m->inter_loc[i]), m->inter_name[i], how, m->inter_iform[i]);
+    /* Inacti 5: the dynamic run's start takes a penetration as its gap
+     * offset (force-free), which would undo the equilibrium's force */
+    for (int i = 0; i < m->ninter; i++)
+        if (m->inter_oidx[i] >= 0)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card %s: a preload, asked for by %s, does not support Inacti 5 (the dynamic run's "
+                               "start would take the equilibrium's penetration as its gap offset and lose its force); "
+                               "expected Inacti 0, or no preload (/SOLVER Preload 0)",
+                     RC_LOC(m->inter_loc[i]), m->inter_name[i], how);
     /* the dynamic run starts from the equilibrium at rest */
     for (int b = 0; b < m->nbody; b++) {
         if (m->body_yadr[b] < 0) continue;

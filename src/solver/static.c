@@ -1871,6 +1871,35 @@ static const char *const dof_name[6] = {"translation x", "translation y", "trans
                                         "rotation about the body's x axis", "rotation about the body's y axis",
                                         "rotation about the body's z axis"};
 
+/* Inacti 5, the gap offset o of each interface that has one, in y at the
+ * load time t (docs/theory.md 3.1, 7.8): on an open contact (no force: a
+ * closed one that pulls is opened by the active set first),
+ * o := max(0, min(o, P_raw)) (the gap recovers while the bodies separate,
+ * and keeps what it recovered when they approach again, as the tracking of
+ * a dynamic run); an interface starting at t (Tstart) with o = 0 takes its
+ * penetration P_raw > 0 as its offset (force-free at its start). Returns
+ * the number of offsets changed. */
+static int update_offsets(const rc_model *m, rc_data *d, double t, double *y)
+{
+    int changed = 0;
+    for (int i = 0; i < m->ninter; i++) {
+        if (m->inter_oidx[i] < 0) continue;
+        const int active = t >= m->inter_tstart[i] && t <= m->inter_tstop[i];
+        if (!active) continue;
+        double *o = y + m->inter_eadr[i] + m->inter_oidx[i];
+        rc_inter_report r;
+        rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y, &r);
+        double on = *o;
+        if (d->inter_mode[i] == RC_MODE_INACTIVE) on = *o == 0.0 ? fmax(r.p_raw, 0.0) : *o;
+        else if (d->inter_mode[i] == RC_MODE_OPEN) on = fmax(0.0, fmin(*o, r.p_raw));
+        if (on != *o) {
+            *o = on;
+            changed++;
+        }
+    }
+    return changed;
+}
+
 /* The couplings' modes at the load time t from the state y (at rest, the
  * modes a dynamic run starts from: rc_cpl_modes_init): a joint stop pushes
  * while its coordinate is past the stop, a contact coupling's face while
@@ -2029,6 +2058,9 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
     ftol *= 1e3 * DBL_EPSILON;
     rc_initial_state(m, y);
     rc_modes_init(m, d, 0.0, y);
+    /* Inacti 5: the offsets are the static analysis' own (update_offsets),
+     * not tracked by the engine */
+    memset(d->inter_track, 0, (size_t)m->ninter * sizeof(int));
     for (int i = 0; i < m->ninter; i++) {
         rc_inter_report r;
         rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], d->inter_slip[i], 0.0, y, &r);
@@ -2072,6 +2104,7 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
             double slide_lim = NAN;
             const int max_rounds = RC_STATIC_ROUNDS_MIN + 2 * m->ninter;
             for (;;) {
+                update_offsets(m, d, tn, y);
                 int ch = update_modes(m, d, tn, y, ptol, ftol, &sink, NULL, &S->events, err);
                 if (ch >= 0) {
                     const int cc = update_cpl_modes(m, d, tn, y, cplold, &sink, &S->events, err);
@@ -2153,6 +2186,10 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                  * return mapping */
                 commit_state(s, tn, expand(s, N_VGetArrayPointer(k.u)), y);
                 S->reinits += rounds > 0;
+                /* Inacti 5: the offsets taken up as the contacts opened
+                 * (the state changes, not the modes: no new solve unless
+                 * a mode changes) */
+                update_offsets(m, d, tn, y);
                 ch = update_modes(m, d, tn, y, ptol, ftol, &sink, flips, &S->events, err);
                 if (ch >= 0) {
                     const int cc = update_cpl_modes(m, d, tn, y, cplold, &sink, &S->events, err);

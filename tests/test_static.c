@@ -805,6 +805,7 @@ static void test_static_inacti5(void)
     free(y);
     /* a preload refuses it: the dynamic start would take the equilibrium's
      * penetration as its offset */
+    ENSURE(rc_model_set_method(m, 1, &e) == RC_OK);
     ENSURE(rc_model_set_preload(m, 1, &e) == RC_EINPUT);
     ENSURE(strstr(e.msg, "Inacti 5") != NULL && strstr(e.msg, "/INTER/TYPE6/1") != NULL);
     rc_model_free(m);

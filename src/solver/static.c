@@ -1916,6 +1916,18 @@ static int update_cpl_modes(const rc_model *m, rc_data *d, double t, const doubl
     memcpy(old, d->cpl->lmode, (size_t)c->n * sizeof(int));
     if (nf) memcpy(old + c->n, d->cpl->fmode, (size_t)nf * sizeof(int));
     rc_cpl_modes_init(m, d, t, y);
+    /* a stop touched (its coordinate on the stop to the rounding of the
+     * angles or positions, RC_TOUCH_ULPS) pushes, as a touching contact is
+     * closed: at rest nothing else decides, and a free stop under a load
+     * towards it leaves the joint's coordinate without stiffness */
+    for (int k = c->ncard; k < c->n; k++) {
+        if (c->kind[k] != RC_CPL_LIMIT || d->cpl->lmode[k] != RC_LIM_FREE) continue;
+        rc_cpl_report r;
+        if (rc_cpl_report_eval(m, d, k, t, y, &r)) continue;
+        const double q = r.length, band = RC_TOUCH_ULPS * DBL_EPSILON * (1.0 + fabs(q));
+        if (isfinite(c->llo[k]) && fabs(q - c->llo[k]) <= band) d->cpl->lmode[k] = RC_LIM_LO_PUSH;
+        else if (isfinite(c->lhi[k]) && fabs(q - c->lhi[k]) <= band) d->cpl->lmode[k] = RC_LIM_HI_PUSH;
+    }
     int changed = 0;
     for (int k = 0; k < c->n; k++) {
         rc_event_kind kind = RC_EV_NONE;

@@ -10,6 +10,15 @@
  * positions and of the quaternions chained through the rotation vector of
  * each body about its orientation at the start of the solve.
  *
+ * Joints: their constraint rows g (engine/constraints/joints.c) are rows
+ * of the same system and their multipliers lambda (the reactions) unknowns
+ * after the bodies' (jnt_*): the residual adds the reactions' wrenches to
+ * the bodies' forces and moments, and the Newton matrix is the augmented
+ * [K + d(G^T lambda)/du, G^T; G, 0], its joint blocks by complex step.
+ * The joint stops' and contact couplings' modes join the active set.
+ * Imposed translations and rotations are held displacements and
+ * orientations (imp_targets), free after a Tstop before the end.
+ *
  * Load steps: from t_{k-1} to t_k in substeps of the load time, halved when
  * a solve fails (down to RC_STATIC_MIN_CUT of the output interval, then an
  * error naming the load time), doubled after a solve in few iterations.

@@ -53,6 +53,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_eigen.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
 #include <kinsol/kinsol.h>
@@ -1875,6 +1877,97 @@ static int limit_point(const rc_model *m, const rc_data *d, double t, const doub
     return -1;
 }
 
+/* The most unknowns of jointed bodies whose equilibrium's stability is
+ * checked (a dense eigenvalue problem of that size). */
+#define RC_STATIC_STAB_MAX 300
+
+/* The stability of an equilibrium y with joints at the load time t
+ * (docs/theory.md 7.8, "Joints"): the stiffness K = dR/du of the jointed
+ * bodies' unknowns that are not held (the others fixed), on the motions
+ * the joints allow (the null space Z of their rows' gradients G), must be
+ * negative definite: the largest eigenvalue of Z^T K_s Z (K_s the
+ * symmetric part; unknowns scaled by their scales, a congruence that keeps
+ * the signs). 1 when it is positive beyond 1e-8 of the largest in
+ * magnitude (*ratio that fraction), else 0; 0 also when not checked (no
+ * joints, more than RC_STATIC_STAB_MAX such unknowns, a contact sliding:
+ * its tangent is not symmetric, or out of memory). */
+static int jnt_unstable(rc_static *s, double t, const double *y, double *ratio)
+{
+    const rc_model *m = s->m;
+    *ratio = 0.0;
+    if (s->nl == 0) return 0;
+    for (int i = 0; i < m->ninter; i++)
+        if (s->d->inter_mode[i] == RC_MODE_CLOSED &&
+            ((s->fr_on[i] && s->d->inter_slip[i]) || (s->pf_on[i] && point_slip(m, s->d, i))))
+            return 0;
+    int nb = 0;
+    for (int i = 0; i < s->n; i++) nb += !s->held[i] && s->jbody[i / 6];
+    const int nl = s->nl, mz = nb - nl;
+    if (nb > RC_STATIC_STAB_MAX || mz <= 0) return 0;
+    int *loc = malloc(((size_t)s->nx + 1) * sizeof(int));
+    double *u = calloc((size_t)s->nx + 1, sizeof(double));
+    gsl_matrix *K = gsl_matrix_calloc((size_t)nb, (size_t)nb), *Gt = gsl_matrix_calloc((size_t)nb, (size_t)nl);
+    gsl_matrix *Q = gsl_matrix_alloc((size_t)nb, (size_t)nb), *R = gsl_matrix_alloc((size_t)nb, (size_t)nl);
+    gsl_matrix *KZ = gsl_matrix_alloc((size_t)nb, (size_t)mz), *H = gsl_matrix_alloc((size_t)mz, (size_t)mz);
+    gsl_vector *tau = gsl_vector_alloc((size_t)nl), *ev = gsl_vector_alloc((size_t)mz);
+    gsl_eigen_symm_workspace *ws = gsl_eigen_symm_alloc((size_t)mz);
+    int unstable = 0;
+    if (!loc || !u || !K || !Gt || !Q || !R || !KZ || !H || !tau || !ev || !ws) goto out;
+    /* the stiffness at the equilibrium (the start of a solve there) */
+    rc_static_set_start(s, y);
+    for (int k = 0; k < nl; k++) u[s->n + k] = y[m->ny + k];
+    if (stiffness(s, t, u)) goto out;
+    int q = 0;
+    for (int i = 0; i < s->nx; i++) loc[i] = i < s->n && !s->held[i] && s->jbody[i / 6] ? q++ : -1;
+    for (int c = 0; c < s->n; c++) {
+        if (loc[c] < 0) continue;
+        for (int64_t p = s->colptr[c]; p < s->colptr[c + 1]; p++) {
+            const int r = (int)s->rowind[p];
+            const double v = s->kval[p] * s->us[c];
+            if (r < s->n && loc[r] >= 0) gsl_matrix_set(K, (size_t)loc[r], (size_t)loc[c], v * s->us[r]);
+            else if (r >= s->n) gsl_matrix_set(Gt, (size_t)loc[c], (size_t)(r - s->n), v);
+        }
+    }
+    /* K_s, the null space of G (the last columns of Q in G^T = Q R) */
+    for (int i = 0; i < nb; i++)
+        for (int j = 0; j < i; j++) {
+            const double a = 0.5 * (gsl_matrix_get(K, (size_t)i, (size_t)j) + gsl_matrix_get(K, (size_t)j, (size_t)i));
+            gsl_matrix_set(K, (size_t)i, (size_t)j, a);
+            gsl_matrix_set(K, (size_t)j, (size_t)i, a);
+        }
+    gsl_error_handler_t *old = gsl_set_error_handler_off();
+    int bad = gsl_linalg_QR_decomp(Gt, tau) || gsl_linalg_QR_unpack(Gt, tau, Q, R);
+    if (!bad) {
+        gsl_matrix_const_view Z = gsl_matrix_const_submatrix(Q, 0, (size_t)nl, (size_t)nb, (size_t)mz);
+        bad = gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, K, &Z.matrix, 0.0, KZ) ||
+              gsl_blas_dgemm(CblasTrans, CblasNoTrans, 1.0, &Z.matrix, KZ, 0.0, H) || gsl_eigen_symm(H, ev, ws);
+    }
+    gsl_set_error_handler(old);
+    if (bad) goto out;
+    double emax = -INFINITY, amax = 0.0;
+    for (int i = 0; i < mz; i++) {
+        emax = fmax(emax, gsl_vector_get(ev, (size_t)i));
+        amax = fmax(amax, fabs(gsl_vector_get(ev, (size_t)i)));
+    }
+    if (amax > 0 && emax > 1e-8 * amax) {
+        unstable = 1;
+        *ratio = emax / amax;
+    }
+out:
+    free(loc);
+    free(u);
+    gsl_matrix_free(K);
+    gsl_matrix_free(Gt);
+    gsl_matrix_free(Q);
+    gsl_matrix_free(R);
+    gsl_matrix_free(KZ);
+    gsl_matrix_free(H);
+    gsl_vector_free(tau);
+    gsl_vector_free(ev);
+    if (ws) gsl_eigen_symm_free(ws);
+    return unstable;
+}
+
 /* ---- the run ------------------------------------------------------------ */
 static const char *const dof_name[6] = {"translation x", "translation y", "translation z",
                                         "rotation about the body's x axis", "rotation about the body's y axis",
@@ -2322,6 +2415,21 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                 goto done;
             }
             dtau *= 0.5;
+        }
+        /* with joints: Newton finds the equilibrium nearest its start,
+         * which must be a stable one */
+        double ratio = 0.0;
+        if (jnt_unstable(s, t, y, &ratio)) {
+            snprintf(reason, sizeof reason,
+                     "static analysis: the equilibrium found at the load time t = %.9g s is unstable: the stiffness "
+                     "on the motions the joints allow has a positive eigenvalue (%.3g of the largest): a jointed "
+                     "body balanced against its load (an inverted pendulum, a lever over its pivot); Newton finds "
+                     "the equilibrium nearest the start: start the model nearer the stable one, or follow the motion "
+                     "with Method 2",
+                     t, ratio);
+            fail_reason = reason;
+            st = RC_SET(err, RC_ESOLVER, "%s", reason);
+            goto done;
         }
         if ((st = rc_bk_write_frame(m, d, out, &fb, tk, y, 0, err))) goto done;
         if (opt && opt->stop && *opt->stop) {

@@ -561,13 +561,12 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     }
     for (q = 0; q < s->nb; q++) s->bfirst[q + 1] += s->bfirst[q];
     for (q = 0; q < s->nb; q++) {
-        const int nbq = s->bfirst[q + 1] - s->bfirst[q];
         for (int c = 0; c < 6; c++) {
+            /* the blocks' rows first (stiffness() writes them by offset) */
             const int col = 6 * q + c;
             int64_t p = s->colptr[col];
             for (int k = s->bfirst[q]; k < s->bfirst[q + 1]; k++)
                 for (int r = 0; r < 6; r++) s->rowind[p++] = 6 * s->brow[k] + r;
-            (void)nbq;
             /* then the rows of the joints on the body, in order */
             for (int j = 0; j < nj; j++)
                 for (int e = 0; e < 2; e++) {

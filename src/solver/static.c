@@ -121,6 +121,7 @@ struct rc_static {
     char *jbody;     /* [nb] 1: the body of a joint */
     double *jw;      /* [12 nl] scratch: each row's unit wrench in its bodies' rows */
     double *jA, *jb; /* [nl nl], [nl] scratch: the start multipliers' normal equations */
+    double *jl0;     /* [nl] scratch: the multipliers a solve starts from [N, N m] */
     int *fb;         /* [nb] body index of slot s */
     int *slot;       /* [nbody] slot of body b, -1: fixed */
     double *ys;      /* [ny] the start state of the solve */
@@ -272,7 +273,7 @@ void rc_static_free(rc_static *s)
                  s->fr_xa, s->fr_xb, s->ext, s->hy_on, s->hy_f0, s->hy_p0, s->hy_el, s->pe_on,
                  s->pf_on, s->pf_t0, s->pf_pa, s->pf_pb, s->pf_xa, s->pf_xb, s->pf_in, s->pf_out,
                  s->full, s->rcolptr, s->rrowind, s->remap, s->ufull, s->rfull, s->en_p0, s->en_f0, s->en_w0, s->en_x0,
-                 s->jq, s->jpos, s->jbody, s->jw, s->jA, s->jb, s->imp_r, s->imp_q0, s->soft};
+                 s->jq, s->jpos, s->jbody, s->jw, s->jA, s->jb, s->jl0, s->imp_r, s->imp_q0, s->soft};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     free(s);
 }
@@ -327,13 +328,14 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     s->jw = calloc(12 * (size_t)s->nl + 1, sizeof(double));
     s->jA = calloc((size_t)s->nl * (size_t)s->nl + 1, sizeof(double));
     s->jb = calloc((size_t)s->nl + 1, sizeof(double));
+    s->jl0 = calloc((size_t)s->nl + 1, sizeof(double));
     s->imp_r = malloc(((size_t)s->nb + 1) * sizeof(int));
     s->imp_q0 = calloc(4 * (size_t)s->nb + 1, sizeof(double));
     s->soft = calloc(n1, 1);
     int64_t *key = malloc((nnz1 + (size_t)s->nb + 2 * (size_t)nj) * sizeof(int64_t));
     char *mf = calloc((size_t)m->nbody + 1, 1);
     if (!s->fb || !s->slot || !s->ys || !s->y || !s->f || !s->jv || !s->held || !s->imp_k || !s->imp_x0 || !s->imp_f || !s->imp_u || !s->us || !s->fs || !s->kb || !s->bsize || !s->sslot || !s->ent_blk ||
-        !s->ent_rc || !s->jq || !s->jpos || !s->jbody || !s->jw || !s->jA || !s->jb || !s->imp_r || !s->imp_q0 || !s->soft || !key ||
+        !s->ent_rc || !s->jq || !s->jpos || !s->jbody || !s->jw || !s->jA || !s->jb || !s->jl0 || !s->imp_r || !s->imp_q0 || !s->soft || !key ||
         !mf) {
         free(key);
         free(mf);
@@ -1680,15 +1682,11 @@ static st_out kin_solve(st_kin *k, st_run *c, double t)
      * best, else the last equilibrium's */
     if (c->s->nl > 0) {
         rc_static *s = c->s;
-        double *uf = expand(s, N_VGetArrayPointer(k->u));
-        double *l0 = malloc((size_t)s->nl * sizeof(double));
-        if (l0) {
-            for (int i = 0; i < s->nl; i++) l0[i] = c->lam0 ? c->lam0[i] : 0.0;
-            jnt_start_multipliers(s, t, uf, l0);
-            for (int i = 0; i < s->nr; i++)
-                if (s->full[i] >= s->n) NV_Ith_S(k->u, i) = l0[s->full[i] - s->n];
-            free(l0);
-        }
+        double *uf = expand(s, N_VGetArrayPointer(k->u)), *l0 = s->jl0;
+        for (int i = 0; i < s->nl; i++) l0[i] = c->lam0 ? c->lam0[i] : 0.0;
+        jnt_start_multipliers(s, t, uf, l0);
+        for (int i = 0; i < s->nr; i++)
+            if (s->full[i] >= s->n) NV_Ith_S(k->u, i) = l0[s->full[i] - s->n];
     }
     if (c->s->nr == 0) {
         o.ok = 1;

@@ -852,6 +852,47 @@ static void test_static_pendulum(void)
     }
 }
 
+/* A slider on a prismatic joint along x with nothing along its axis (the
+ * joint holds the rest): the stiffness is singular in that one direction,
+ * an error naming the body and translation x; with gravity along the axis
+ * and a spring it rests where the spring carries it (the joint alone holds
+ * the other five directions). */
+static void test_static_prismatic_free(void)
+{
+    static const char *fmt =
+        "/NODE\n1,0,0,0\n"
+        "/RBODY/1\nslider\n1,,,,2.0\n0.01,0.01,0.01\n0,0,0\n"
+        "/GRAV/1\ngravity\n0,%s,0,0,0,,1,-9.81\n"
+        "/JOINT/PRISMATIC/1\nslide\n1,0\n0,0,0\n1,0,0\n"
+        "%s"
+        "/RUN\n1.0,0.5\n/SOLVER\n3\n";
+    for (int held = 0; held < 2; held++) {
+        char deck[1024];
+        snprintf(deck, sizeof deck, fmt, held ? "X" : "Y",
+                 held ? "/COUPLING/SPRING/2\nspring\n1,0,1\n0,0,0\n1,0,0\n1.0\n500\n" : "");
+        rc_error e;
+        rc_model *m = tu_compile_text(deck, held ? "static_slide_held.rad" : "static_slide_free.rad", &e);
+        if (!m) fprintf(stderr, "  %s\n", e.msg);
+        ENSURE(m != NULL);
+        if (!m) continue;
+        double *y = calloc((size_t)m->ny + 1, sizeof(double));
+        rc_run_options o = {.y_end = y};
+        rc_stats st;
+        const rc_status r = y ? rc_run(m, &o, &st, &e) : RC_ENOMEM;
+        if (!held) {
+            printf("    free along the axis: %s\n", e.msg);
+            ENSURE(r == RC_ESOLVER);
+            ENSURE(strstr(e.msg, "/RBODY/1 has no support in translation x") != NULL);
+        } else {
+            ENSURE(r == RC_OK);
+            /* the spring (500 N/m, relaxed) stretched by m g / k towards -x */
+            if (y) ENSURE_NEAR(y[m->body_yadr[0]], -2.0 * 9.81 / 500.0, 1e-10, 0);
+        }
+        free(y);
+        rc_model_free(m);
+    }
+}
+
 void suite_static(void);
 void suite_static(void)
 {
@@ -865,6 +906,7 @@ void suite_static(void)
     RUN_TEST(test_static_impvel);
     RUN_TEST(test_static_inacti5);
     RUN_TEST(test_static_pendulum);
+    RUN_TEST(test_static_prismatic_free);
     RUN_TEST(test_static_scope);
     RUN_TEST(test_static_snap_through);
 }

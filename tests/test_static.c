@@ -617,6 +617,282 @@ static void test_static_snap_through(void)
     rc_model_free(m);
 }
 
+
+/* Joints (docs/theory.md 7.8, "Joints"): a chain of every kind, a body on
+ * a revolute joint to the ground, a spherical, a distance, a fixed and a
+ * prismatic joint from each body to the next, under gravity with a spring
+ * on the last; the stiffness with the joints' rows and multipliers (the
+ * augmented system [K G^T; G 0] of the unknowns and the reactions) against
+ * central differences of the residual at the start and off the joints
+ * (displaced, rotated, with reactions of some newtons). */
+static const char *deck_joints =
+    "/NODE\n1,0.3,0,0\n2,0.6,0.1,0\n3,0.9,0,0.1\n4,1.2,0,0\n5,1.5,0,0\n"
+    "/RBODY/1\nb1\n1,,,,1.3\n0.011,0.013,0.017\n0,0,0\n"
+    "/RBODY/2\nb2\n2,,,,0.7\n0.005,0.007,0.006\n0,0,0\n"
+    "/RBODY/3\nb3\n3,,,,0.9\n0.008,0.004,0.009\n0,0,0\n"
+    "/RBODY/4\nb4\n4,,,,1.1\n0.012,0.010,0.007\n0,0,0\n"
+    "/RBODY/5\nb5\n5,,,,0.5\n0.003,0.004,0.005\n0,0,0\n"
+    "/GRAV/1\ngravity\n0,Y,0,0,0,,1,-9.81\n"
+    "/JOINT/REVOLUTE/1\npivot\n1,0\n0,0,0\n0.1,0.2,1\n"
+    "/JOINT/SPHERICAL/2\nball\n2,1\n0.45,0.05,0\n"
+    "/JOINT/DISTANCE/3\nrod\n3,2\n0.9,0,0.1\n0.6,0.1,0\n"
+    "/JOINT/FIXED/4\nweld\n4,3\n1.05,0,0.05\n"
+    "/JOINT/PRISMATIC/5\nslide\n5,4\n1.35,0,0\n1,0.3,0\n"
+    "/COUPLING/SPRING/6\nspring\n5,0,1\n1.5,0,0\n1.6,0.2,0.1\n0.1\n300\n"
+    "/RUN\n1.0,0.5\n/SOLVER\n3\n";
+
+static void test_static_stiffness_joints(void)
+{
+    rc_error e;
+    rc_model *m = tu_compile_text(deck_joints, "static_joints.rad", &e);
+    if (!m) fprintf(stderr, "  %s\n", e.msg);
+    ENSURE(m != NULL);
+    if (!m) return;
+    st_fix f = fix_open(m);
+    if (fix_ready(&f)) {
+        /* 30 unknowns of the bodies, 5 + 3 + 1 + 6 + 5 joint rows */
+        const int n = rc_static_size(f.s);
+        ENSURE(n == 30 + 20);
+        rc_initial_state(m, f.y);
+        rc_modes_init(m, f.d, 0.0, f.y);
+        rc_static_set_start(f.s, f.y);
+        double *u = calloc((size_t)n, sizeof(double)), *r = calloc((size_t)n, sizeof(double));
+        ENSURE(u && r);
+        if (u && r) {
+            /* at the start the rows vanish (the joints hold there) */
+            ENSURE(rc_static_residual(f.s, 0.5, u, r) == 0);
+            double gmax = 0.0;
+            for (int i = 30; i < n; i++) gmax = fmax(gmax, fabs(r[i]));
+            printf("    joint rows at the start: max |g| %.2e\n", gmax);
+            ENSURE(gmax < 1e-15);
+            for (int i = 30; i < n; i++) u[i] = 3.7 * sin(0.9 * i + 0.2);
+            const double e0 = stiffness_fd_error(f.s, 0.5, u);
+            for (int i = 0; i < 30; i++) u[i] = (i % 6 < 3 ? 2e-3 : 0.05) * sin(1.7 * i + 0.3);
+            const double e1 = stiffness_fd_error(f.s, 0.5, u);
+            printf("    max scaled |K - FD|: %.2e at the start, %.2e off the joints\n", e0, e1);
+            ENSURE(e0 < 1e-6);
+            ENSURE(e1 < 1e-6);
+            /* a unit reaction of the pivot's first row (a force along x
+             * on body 1 at the pivot): the residual's force on body 1 */
+            memset(u, 0, (size_t)n * sizeof(double));
+            ENSURE(rc_static_residual(f.s, 0.5, u, r) == 0);
+            const double fy0 = r[1];
+            u[30] = 1.0;
+            ENSURE(rc_static_residual(f.s, 0.5, u, r) == 0);
+            ENSURE_NEAR(r[0], 1.0, 0, 1e-14);
+            ENSURE_NEAR(r[1], fy0, 0, 1e-14);
+            ENSURE_NEAR(fy0, -1.3 * 9.81, 1e-14, 0);
+        }
+        free(u);
+        free(r);
+    }
+    fix_close(&f);
+}
+
+/* Imposed rotations and a release at Tstop (docs/theory.md 7.8, "Imposed
+ * velocities"): body 1 (translations held) turned about z by /IMPVEL ZZ
+ * at 0.2 rad/s until Tstop = 0.5 s against two pretensioned springs at
+ * its arms, then released; body 2 pushed down by /IMPVEL Z at 0.1 m/s
+ * until Tstop = 0.5 s against gravity on a spring above it, then
+ * released. At t_end = 0.4 s (held): body 1 turned by 0.08 rad about z,
+ * body 2 at z = -0.04 m; at 1 s (released): body 1 back at its start
+ * (the springs' equilibrium), body 2 at z = -m g / k. */
+static const char *deck_impvel =
+    "/NODE\n1,0,0,0\n2,5,0,0\n"
+    "/RBODY/1\nlever\n1,,,,1.0\n0.01,0.01,0.01\n0,0,0\n"
+    "/RBODY/2\nblock\n2,,,,2.0\n0.01,0.01,0.01\n0,0,0\n"
+    "/GRNOD/NODE/1\ng1\n1\n/GRNOD/NODE/2\ng2\n2\n"
+    "/BCS/1\nheld\n111 000,0,1\n"
+    "/GRAV/1\ngravity\n0,Z,0,0,2,,1,-9.81\n"
+    "/COUPLING/SPRING/1\narm x\n1,0,1\n0.5,0,0\n1.5,0,0\n0.8\n300\n"
+    "/COUPLING/SPRING/2\narm y\n1,0,1\n0,0.5,0\n0,1.5,0\n0.8\n300\n"
+    "/COUPLING/SPRING/3\nhanger\n2,0,1\n5,0,0\n5,0,1\n1.0\n1000\n"
+    "/FUNCT/1\nconstant\n0,1\n10,1\n"
+    "/IMPVEL/1\nturn\n1,ZZ,0,0,1\n1,0.2,0,0.5\n"
+    "/IMPVEL/2\npush\n1,Z,0,0,2\n1,-0.1,0,0.5\n"
+    "/RUN\n1.0,0.1\n/SOLVER\n3\n";
+
+static void test_static_impvel(void)
+{
+    rc_error e;
+    rc_model *m = tu_compile_text(deck_impvel, "static_impvel.rad", &e);
+    if (!m) fprintf(stderr, "  %s\n", e.msg);
+    ENSURE(m != NULL);
+    if (!m) return;
+    double *y = calloc((size_t)m->ny + 1, sizeof(double));
+    ENSURE(y != NULL);
+    const double tends[2] = {0.4, 1.0};
+    for (int c = 0; y && c < 2; c++) {
+        rc_run_options o = {.y_end = y, .t_end_override = tends[c]};
+        rc_stats st;
+        const rc_status r = rc_run(m, &o, &st, &e);
+        if (r) fprintf(stderr, "  %s\n", e.msg);
+        ENSURE(r == RC_OK);
+        const double *y1 = y + m->body_yadr[0], *y2 = y + m->body_yadr[1];
+        const double ang = c == 0 ? 0.08 : 0.0, z2 = c == 0 ? -0.04 : -2.0 * 9.81 / 1000.0;
+        printf("    t = %.1f s: q1 = (%.15f, %.3g, %.3g, %.15f), z2 = %.15f m\n", tends[c], y1[3], y1[4], y1[5], y1[6],
+               y2[2]);
+        ENSURE_NEAR(y1[3], cos(0.5 * ang), 0, 1e-12);
+        ENSURE_NEAR(y1[6], sin(0.5 * ang), 0, 1e-12);
+        ENSURE_NEAR(y1[4], 0.0, 0, 1e-12);
+        ENSURE_NEAR(y1[5], 0.0, 0, 1e-12);
+        ENSURE_NEAR(y2[2], z2, 0, 1e-12);
+        ENSURE_NEAR(y2[0], 5.0, 0, 1e-12);
+    }
+    free(y);
+    rc_model_free(m);
+    /* a rotation about an axis that turns (two components on one body) is
+     * refused, naming the body */
+    char *t = malloc(strlen(deck_impvel) + 100);
+    ENSURE(t != NULL);
+    if (t) {
+        strcpy(t, deck_impvel);
+        char *p = strstr(t, "/RUN");
+        memmove(p + strlen("/IMPVEL/3\nturn2\n1,XX,0,0,1\n1,0.1,0,0.5\n"), p, strlen(p) + 1);
+        memcpy(p, "/IMPVEL/3\nturn2\n1,XX,0,0,1\n1,0.1,0,0.5\n", strlen("/IMPVEL/3\nturn2\n1,XX,0,0,1\n1,0.1,0,0.5\n"));
+        TU_EXPECT_TEXT_ERROR(t, "static_impvel2.rad", "/IMPVEL", "static analysis", "two or more components",
+                             "/RBODY/1");
+        free(t);
+    }
+}
+
+/* Inacti 5 in statics (docs/theory.md 3.1, 7.8): a sphere (1 kg) 1 mm
+ * into a floor (k = 1e5 N/m) at the start, the gap reduced by it (force
+ * free), x and y held, a spring of 100 N/m above it relaxed at the start;
+ * gravity's function 1 at t = 0, -1 at t = 1 s, 1 again at t = 2 s. It
+ * sinks by m g / (k + k_s) (the offset unchanged), lifts off by m g / k_s
+ * at t = 1 s (the offset taken up to 0: the full gap back), and comes back
+ * at t = 2 s onto the full gap: a sink of (m g - k P0) / (k + k_s). */
+static void test_static_inacti5(void)
+{
+    static const char *deck =
+        "/NODE\n1,0,0,0.049\n"
+        "/RBODY/1\nsphere\n1,,,,1.0\n0.001,0.001,0.001\n0,0,0\n"
+        "/SURF/ELLIPS/1\nsphere\n0,2,1\n0,0,0.049\n0.05,0.05,0.05\n"
+        "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
+        "/GRNOD/NODE/1\ngroup\n1\n"
+        "/BCS/1\nheld\n110 000,0,1\n"
+        "/FUNCT/1\nload curve\n0,0\n1,100000\n"
+        "/FUNCT/2\ngravity factor\n0,1\n1,-1\n2,1\n"
+        "/GRAV/1\ngravity\n2,Z,0,0,0,,1,-9.81\n"
+        "/COUPLING/SPRING/1\nspring\n1,0,1\n0,0,0.049\n0,0,1.049\n1.0\n100\n"
+        "/INTER/TYPE6/1\nsphere - floor\n1,2\n\n"
+        "                   0         0         5         0         0\n"
+        "         1         0                                                 0\n"
+        "         0\n"
+        "                             0         0\n"
+        "/RUN\n2.0,0.25\n/SOLVER\n3\n";
+    rc_error e;
+    rc_model *m = tu_compile_text(deck, "static_inacti5.rad", &e);
+    if (!m) fprintf(stderr, "  %s\n", e.msg);
+    ENSURE(m != NULL);
+    if (!m) return;
+    double *y = calloc((size_t)m->ny + 1, sizeof(double));
+    ENSURE(y != NULL);
+    const double g = 9.81, k = 1e5, ks = 100.0, P0 = 1e-3;
+    const double tends[3] = {0.25, 1.0, 2.0};
+    const double sink[3] = {0.5 * g / (k + ks), -g / ks, (g - k * P0) / (k + ks)};
+    for (int c = 0; y && c < 3; c++) {
+        rc_run_options o = {.y_end = y, .t_end_override = tends[c]};
+        rc_stats st;
+        const rc_status r = rc_run(m, &o, &st, &e);
+        if (r) fprintf(stderr, "  %s\n", e.msg);
+        ENSURE(r == RC_OK);
+        const double z = y[m->body_yadr[0] + 2];
+        printf("    t = %.2f s: sink %.15g m, expected %.15g m\n", tends[c], 0.049 - z, sink[c]);
+        ENSURE_NEAR(0.049 - z, sink[c], 1e-9, 1e-15);
+    }
+    free(y);
+    /* a preload refuses it: the dynamic start would take the equilibrium's
+     * penetration as its offset */
+    ENSURE(rc_model_set_method(m, 1, &e) == RC_OK);
+    ENSURE(rc_model_set_preload(m, 1, &e) == RC_EINPUT);
+    ENSURE(strstr(e.msg, "Inacti 5") != NULL && strstr(e.msg, "/INTER/TYPE6/1") != NULL);
+    rc_model_free(m);
+}
+
+/* A pendulum (1.5 kg at 1 m on a revolute joint about z, gravity -y)
+ * started 30 degrees from the bottom finds the bottom, its pivot carrying
+ * the weight; started 30 degrees from the top, Newton finds the top, which
+ * the stability check refuses (docs/theory.md 7.8, "Joints"). */
+static void test_static_pendulum(void)
+{
+    static const char *fmt =
+        "/NODE\n1,0.5,%s,0\n"
+        "/RBODY/1\nbob\n1,,,,1.5\n0.02,0.02,0.02\n0,0,0\n"
+        "/GRAV/1\ngravity\n0,Y,0,0,0,,1,-9.81\n"
+        "/JOINT/REVOLUTE/1\npivot\n1,0\n0,0,0\n0,0,1\n"
+        "/RUN\n1.0,0.5\n/SOLVER\n3\n";
+    for (int top = 0; top < 2; top++) {
+        char deck[1024];
+        snprintf(deck, sizeof deck, fmt, top ? "0.866025403784439" : "-0.866025403784439");
+        rc_error e;
+        rc_model *m = tu_compile_text(deck, top ? "static_pend_top.rad" : "static_pend_bottom.rad", &e);
+        if (!m) fprintf(stderr, "  %s\n", e.msg);
+        ENSURE(m != NULL);
+        if (!m) continue;
+        double *y = calloc((size_t)m->ny + 1, sizeof(double));
+        ENSURE(y != NULL);
+        rc_run_options o = {.y_end = y};
+        rc_stats st;
+        const rc_status r = y ? rc_run(m, &o, &st, &e) : RC_ENOMEM;
+        if (top) {
+            printf("    from the top: %s\n", e.msg);
+            ENSURE(r == RC_ESOLVER);
+            ENSURE(strstr(e.msg, "is unstable") != NULL);
+        } else {
+            ENSURE(r == RC_OK);
+            if (y) {
+                ENSURE_NEAR(y[m->body_yadr[0]], 0.0, 0, 1e-12);
+                ENSURE_NEAR(y[m->body_yadr[0] + 1], -1.0, 0, 1e-12);
+            }
+        }
+        free(y);
+        rc_model_free(m);
+    }
+}
+
+/* A slider on a prismatic joint along x with nothing along its axis (the
+ * joint holds the rest): the stiffness is singular in that one direction,
+ * an error naming the body and translation x; with gravity along the axis
+ * and a spring it rests where the spring carries it (the joint alone holds
+ * the other five directions). */
+static void test_static_prismatic_free(void)
+{
+    static const char *fmt =
+        "/NODE\n1,0,0,0\n"
+        "/RBODY/1\nslider\n1,,,,2.0\n0.01,0.01,0.01\n0,0,0\n"
+        "/GRAV/1\ngravity\n0,%s,0,0,0,,1,-9.81\n"
+        "/JOINT/PRISMATIC/1\nslide\n1,0\n0,0,0\n1,0,0\n"
+        "%s"
+        "/RUN\n1.0,0.5\n/SOLVER\n3\n";
+    for (int held = 0; held < 2; held++) {
+        char deck[1024];
+        snprintf(deck, sizeof deck, fmt, held ? "X" : "Y",
+                 held ? "/COUPLING/SPRING/2\nspring\n1,0,1\n0,0,0\n1,0,0\n1.0\n500\n" : "");
+        rc_error e;
+        rc_model *m = tu_compile_text(deck, held ? "static_slide_held.rad" : "static_slide_free.rad", &e);
+        if (!m) fprintf(stderr, "  %s\n", e.msg);
+        ENSURE(m != NULL);
+        if (!m) continue;
+        double *y = calloc((size_t)m->ny + 1, sizeof(double));
+        rc_run_options o = {.y_end = y};
+        rc_stats st;
+        const rc_status r = y ? rc_run(m, &o, &st, &e) : RC_ENOMEM;
+        if (!held) {
+            printf("    free along the axis: %s\n", e.msg);
+            ENSURE(r == RC_ESOLVER);
+            ENSURE(strstr(e.msg, "/RBODY/1 has no support in translation x") != NULL);
+        } else {
+            ENSURE(r == RC_OK);
+            /* the spring (500 N/m, relaxed) stretched by m g / k towards -x */
+            if (y) ENSURE_NEAR(y[m->body_yadr[0]], -2.0 * 9.81 / 500.0, 1e-10, 0);
+        }
+        free(y);
+        rc_model_free(m);
+    }
+}
+
 void suite_static(void);
 void suite_static(void)
 {
@@ -626,6 +902,11 @@ void suite_static(void)
     RUN_TEST(test_static_stiffness_boxes);
     RUN_TEST(test_static_stiffness_hysteresis_box);
     RUN_TEST(test_static_stiffness_point_friction);
+    RUN_TEST(test_static_stiffness_joints);
+    RUN_TEST(test_static_impvel);
+    RUN_TEST(test_static_inacti5);
+    RUN_TEST(test_static_pendulum);
+    RUN_TEST(test_static_prismatic_free);
     RUN_TEST(test_static_scope);
     RUN_TEST(test_static_snap_through);
 }

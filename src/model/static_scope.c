@@ -1,7 +1,11 @@
 /*
  * The scope of the static analysis (/SOLVER Method 3, solver/static.c):
- * what its first version solves, and a clear input error naming the card
- * of the first element it does not (docs/case-format.md, /SOLVER). Called
+ * what it solves (contacts, friction by the return mapping, hysteresis,
+ * Inacti 5, couplings of every kind, joints and their stops, imposed
+ * translations and rotations), and a clear input error naming the card of
+ * the first element it does not (docs/case-format.md, /SOLVER): friction
+ * with a speed, exact stick, friction of a sphere on a segment surface,
+ * an imposed rotation about an axis that turns. Called
  * where Method 3 is chosen: by the compiler for the deck's /SOLVER, by
  * rc_model_set_method, and by the static backend itself; and where a
  * preload (/SOLVER Preload 1) is asked for, which also needs the bodies at
@@ -41,25 +45,22 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
 {
     if (!how) how = "/SOLVER Method 3";
     if (!alt) alt = "Method 1 or 2";
-    if (m->jnt && m->jnt->n > 0)
-        RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card %s: " RC_STATIC_NOT " (%s); expected a model without joints, or %s",
-                 RC_LOC(m->jnt->loc[0]), m->jnt->name[0], "joints", how, alt);
+    /* joints: their constraint rows and reactions (solver/static.c) */
     /* imposed translations are held displacements (the integral of the
-     * velocity); an imposed rotation, or a translation released before the
-     * end (Tstop), is not in this version */
-    if (m->imp && m->imp->nr > 0)
-        RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card /IMPVEL: " RC_STATIC_NOT " (%s); expected imposed translations only (Dir X, Y, Z), "
-                           "or %s",
-                 RC_LOC(m->end_loc), "imposed rotations (Dir XX, YY, ZZ)", how, alt);
-    for (int k = 0; m->imp && k < m->imp->nt; k++)
-        if (m->imp->ttstop[k] < m->tend)
+     * velocity), imposed rotations held rotations (the integral of the
+     * angular velocity about its global axis), each free after its Tstop;
+     * a rotation about an axis that turns (two components of one body's
+     * angular velocity imposed) has no closed-form path in this version */
+    for (int j = 0; m->imp && j < m->imp->nr; j++) {
+        int nc = 0;
+        for (int k = 0; k < 3; k++) nc += m->imp->rtab[3 * j + k] >= 0;
+        if (nc > 1)
             RC_RAISE(err, RC_EINPUT,
-                     RC_LOCFMT "card /IMPVEL: " RC_STATIC_NOT " (%s); expected its Tstop blank or at least the end "
-                               "time %.6g s (an imposed translation held to the end), or %s",
-                     RC_LOC(m->end_loc), "an imposed translation that stops before the end time (Tstop)", how,
-                     m->tend, alt);
+                     RC_LOCFMT "card /IMPVEL: " RC_STATIC_NOT " (%s, /RBODY/%d); expected one rotational component "
+                               "per body (Dir XX, YY or ZZ: a rotation about a fixed global axis), or %s",
+                     RC_LOC(m->end_loc), "an imposed rotation of two or more components (Dir XX, YY, ZZ) on one body",
+                     how, m->body_id[m->imp->rbody[j]], alt);
+    }
     for (int i = 0; i < m->ninter; i++) {
         const rc_fric *fr = &m->inter_fr[i];
         const char *what = NULL;
@@ -76,9 +77,7 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
             if (fr->card_id > 0) snprintf(fbuf, sizeof fbuf, "%s (/FRICTION/%d on it)", why, fr->card_id);
             else snprintf(fbuf, sizeof fbuf, "%s (its own friction fields)", why);
             what = fbuf;
-        } else if (m->inter_oidx[i] >= 0)
-            what = "Inacti 5 (the gap offset state)";
-        else if (rc_pair_multi(m->inter_pair[i]) && !rc_inter_frictionless(m, i) &&
+        } else if (rc_pair_multi(m->inter_pair[i]) && !rc_inter_frictionless(m, i) &&
                  !(rc_pair_nodes(m->inter_pair[i]) && m->inter_npt[i] > 0 && m->inter_pst[i] == 3))
             what = "friction on a sphere against a segment surface";
         if (what)
@@ -89,16 +88,9 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
                                "cylinders, boxes or segment surfaces, or %s",
                      RC_LOC(m->inter_loc[i]), m->inter_name[i], what, how, alt);
     }
-    for (int k = 0; m->cpl && k < m->cpl->n; k++)
-        if (m->cpl->kind[k] != RC_CPL_SPRING)
-            RC_RAISE(err, RC_EINPUT,
-                     RC_LOCFMT "card %s: " RC_STATIC_NOT " (%s); expected spring couplings (/COUPLING/SPRING) only, "
-                               "or %s",
-                     RC_LOC(m->cpl->law_loc[k]), m->cpl->name[k],
-                     m->cpl->kind[k] == RC_CPL_CATENARY ? "catenary couplings"
-                     : m->cpl->kind[k] == RC_CPL_CONTACT ? "contact couplings"
-                                                         : "joint stops",
-                     how, alt);
+    /* couplings: springs, catenaries (forces of the positions), contact
+     * couplings and joint stops (their modes an active set, as the
+     * contacts'; solver/static.c) */
     return RC_OK;
 }
 
@@ -119,6 +111,15 @@ rc_status rc_preload_scope(const rc_model *m, const char *how, rc_error *err)
                                "state is not carried into the dynamic run in this version); expected Iform 0, or no "
                                "preload (/SOLVER Preload 0)",
                      RC_LOC(m->inter_loc[i]), m->inter_name[i], how, m->inter_iform[i]);
+    /* Inacti 5: the dynamic run's start takes a penetration as its gap
+     * offset (force-free), which would undo the equilibrium's force */
+    for (int i = 0; i < m->ninter; i++)
+        if (m->inter_oidx[i] >= 0)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card %s: a preload, asked for by %s, does not support Inacti 5 (the dynamic run's "
+                               "start would take the equilibrium's penetration as its gap offset and lose its force); "
+                               "expected Inacti 0, or no preload (/SOLVER Preload 0)",
+                     RC_LOC(m->inter_loc[i]), m->inter_name[i], how);
     /* the dynamic run starts from the equilibrium at rest */
     for (int b = 0; b < m->nbody; b++) {
         if (m->body_yadr[b] < 0) continue;

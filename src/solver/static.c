@@ -10,6 +10,15 @@
  * positions and of the quaternions chained through the rotation vector of
  * each body about its orientation at the start of the solve.
  *
+ * Joints: their constraint rows g (engine/constraints/joints.c) are rows
+ * of the same system and their multipliers lambda (the reactions) unknowns
+ * after the bodies' (jnt_*): the residual adds the reactions' wrenches to
+ * the bodies' forces and moments, and the Newton matrix is the augmented
+ * [K + d(G^T lambda)/du, G^T; G, 0], its joint blocks by complex step.
+ * The joint stops' and contact couplings' modes join the active set.
+ * Imposed translations and rotations are held displacements and
+ * orientations (imp_targets), free after a Tstop before the end.
+ *
  * Load steps: from t_{k-1} to t_k in substeps of the load time, halved when
  * a solve fails (down to RC_STATIC_MIN_CUT of the output interval, then an
  * error naming the load time), doubled after a solve in few iterations.
@@ -44,6 +53,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_eigen.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_linalg.h>
 #include <kinsol/kinsol.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -53,9 +66,13 @@
 #include "base/error.h"
 #include "engine/assembly/assembly.h"
 #include "engine/assembly/bounds.h"
+#include "engine/constraints/joints.h"
 #include "engine/events/events.h"
 #include "model/model.h"
+#include "model/coupling.h"
+#include "model/coupling_contact.h"
 #include "model/imposed.h"
+#include "model/joint.h"
 #include "model/power.h"
 #include "model/table.h"
 #include "output/output.h"
@@ -85,10 +102,26 @@
 #define RC_STATIC_ROUNDS_MIN 8
 #define RC_STATIC_FLIPS 3
 
+/* The entries of a joint in the stiffness: 12 body unknowns x RC_JNT_MAXROW
+ * rows, twice (G and its transpose). */
+#define RC_JPOS (2 * 12 * RC_JNT_MAXROW)
+
 struct rc_static {
     const rc_model *m;
     rc_data *d;
-    int nb, n;       /* free bodies, unknowns (6 nb) */
+    int nb, n;       /* free bodies, the bodies' unknowns (6 nb) */
+    /* joints (docs/theory.md 7.8, "Joints"): their constraint rows' multipliers
+     * (the reactions lambda, [N] or [N m]) are the unknowns n .. n + nl - 1,
+     * and their rows g (the constraint values, [m] or [-]) the residuals there */
+    int nl, nx;      /* joint rows (m->jnt->nrows, 0: none); all unknowns, n + nl */
+    int *jq;         /* [2 njoint] the slots of each joint's bodies a, b (-1: not free) */
+    int64_t *jpos;   /* [RC_JPOS njoint] each joint's entries in s->kval (-1: none): its
+                        rows' columns of a's and b's unknowns [6 c + r], c < 12, then its
+                        multipliers' columns in the bodies' rows [72 + 12 r + c] */
+    char *jbody;     /* [nb] 1: the body of a joint */
+    double *jw;      /* [12 nl] scratch: each row's unit wrench in its bodies' rows */
+    double *jA, *jb; /* [nl nl], [nl] scratch: the start multipliers' normal equations */
+    double *jl0;     /* [nl] scratch: the multipliers a solve starts from [N, N m] */
     int *fb;         /* [nb] body index of slot s */
     int *slot;       /* [nbody] slot of body b, -1: fixed */
     double *ys;      /* [ny] the start state of the solve */
@@ -101,6 +134,15 @@ struct rc_static {
     int *imp_k;      /* [n] the imposed translation (m->imp index) of an unknown, -1: none */
     double *imp_x0;  /* [n] its coordinate at t = 0 (the model's coordinates) [m] */
     double *imp_f;   /* [n] the unbalanced force along it at the last equilibrium [N] */
+    /* imposed rotations (/IMPVEL XX, YY, ZZ: the body's rotations held at
+     * the rotation the imposed angular velocity turns it by, docs/theory.md
+     * 7.8) */
+    int *imp_r;      /* [nb] the imposed rotation (m->imp rotation index) of a slot, -1: none */
+    double *imp_q0;  /* [4 nb] its orientation at t = 0 */
+    /* imposed components released before the end (Tstop < t_end): kept in
+     * the Newton system, held by their row k_s (u - u_imp) while t <= Tstop,
+     * free after it */
+    char *soft;      /* [nx] 1: such an unknown */
     double *imp_u;   /* [n] the held unknowns' values in the solve under way (imp_targets; 0 but
                         for an imposed translation) */
     double *us, *fs; /* [n] unknown and residual scales (length or angle; force or moment) */
@@ -230,12 +272,13 @@ void rc_static_free(rc_static *s)
                  s->colptr, s->rowind, s->ent_blk, s->ent_rc, s->raw, s->kval, s->fr_on, s->fr_t0, s->fr_pa, s->fr_pb,
                  s->fr_xa, s->fr_xb, s->ext, s->hy_on, s->hy_f0, s->hy_p0, s->hy_el, s->pe_on,
                  s->pf_on, s->pf_t0, s->pf_pa, s->pf_pb, s->pf_xa, s->pf_xb, s->pf_in, s->pf_out,
-                 s->full, s->rcolptr, s->rrowind, s->remap, s->ufull, s->rfull, s->en_p0, s->en_f0, s->en_w0, s->en_x0};
+                 s->full, s->rcolptr, s->rrowind, s->remap, s->ufull, s->rfull, s->en_p0, s->en_f0, s->en_w0, s->en_x0,
+                 s->jq, s->jpos, s->jbody, s->jw, s->jA, s->jb, s->jl0, s->imp_r, s->imp_q0, s->soft};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     free(s);
 }
 
-int rc_static_size(const rc_static *s) { return s->n; }
+int rc_static_size(const rc_static *s) { return s->nx; }
 
 /* The slot and the local index (0..12) of state i, -1 when it is not a
  * free body's (from the map s->sslot, made once: this is asked for every
@@ -255,7 +298,10 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     s->d = d;
     s->nb = m->nfree;
     s->n = 6 * s->nb;
-    const size_t n1 = (size_t)s->n + 1, ny1 = (size_t)m->ny + 1, nnz1 = (size_t)m->nnz + 1;
+    const int nj = m->jnt ? m->jnt->n : 0;
+    s->nl = m->jnt ? m->jnt->nrows : 0;
+    s->nx = s->n + s->nl;
+    const size_t n1 = (size_t)s->nx + 1, ny1 = (size_t)m->ny + 1, nnz1 = (size_t)m->nnz + 1;
     s->fb = malloc(((size_t)s->nb + 1) * sizeof(int));
     s->slot = malloc(((size_t)m->nbody + 1) * sizeof(int));
     s->ys = calloc(ny1, sizeof(double));
@@ -276,10 +322,21 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
         for (size_t k = 0; k < ny1; k++) s->sslot[k] = -1;
     s->ent_blk = malloc(nnz1 * sizeof(int));
     s->ent_rc = malloc(nnz1);
-    int64_t *key = malloc((nnz1 + (size_t)s->nb) * sizeof(int64_t));
+    s->jq = malloc((2 * (size_t)nj + 1) * sizeof(int));
+    s->jpos = malloc((RC_JPOS * (size_t)nj + 1) * sizeof(int64_t));
+    s->jbody = calloc((size_t)s->nb + 1, 1);
+    s->jw = calloc(12 * (size_t)s->nl + 1, sizeof(double));
+    s->jA = calloc((size_t)s->nl * (size_t)s->nl + 1, sizeof(double));
+    s->jb = calloc((size_t)s->nl + 1, sizeof(double));
+    s->jl0 = calloc((size_t)s->nl + 1, sizeof(double));
+    s->imp_r = malloc(((size_t)s->nb + 1) * sizeof(int));
+    s->imp_q0 = calloc(4 * (size_t)s->nb + 1, sizeof(double));
+    s->soft = calloc(n1, 1);
+    int64_t *key = malloc((nnz1 + (size_t)s->nb + 2 * (size_t)nj) * sizeof(int64_t));
     char *mf = calloc((size_t)m->nbody + 1, 1);
     if (!s->fb || !s->slot || !s->ys || !s->y || !s->f || !s->jv || !s->held || !s->imp_k || !s->imp_x0 || !s->imp_f || !s->imp_u || !s->us || !s->fs || !s->kb || !s->bsize || !s->sslot || !s->ent_blk ||
-        !s->ent_rc || !key || !mf) {
+        !s->ent_rc || !s->jq || !s->jpos || !s->jbody || !s->jw || !s->jA || !s->jb || !s->jl0 || !s->imp_r || !s->imp_q0 || !s->soft || !key ||
+        !mf) {
         free(key);
         free(mf);
         rc_static_free(s);
@@ -295,10 +352,19 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     }
     s->nb = q;
     s->n = 6 * q;
+    s->nx = s->n + s->nl;
+    for (int j = 0; j < nj; j++) {
+        for (int e = 0; e < 2; e++) {
+            const int b = e ? m->jnt->bb[j] : m->jnt->ba[j];
+            s->jq[2 * j + e] = b >= 0 ? s->slot[b] : -1;
+            if (s->jq[2 * j + e] >= 0) s->jbody[s->jq[2 * j + e]] = 1;
+        }
+        for (int k = 0; k < RC_JPOS; k++) s->jpos[RC_JPOS * (size_t)j + k] = -1;
+    }
     /* scales and held unknowns: per free body the smallest penetration
      * scale and the largest force scale of its contacts, their summed
      * stiffness scales (one pass over the interfaces), its size */
-    rc_moment_free_bodies(m, mf);
+    rc_moment_free_bodies_centred(m, 1, mf);
     double *bps = malloc(((size_t)s->nb + 1) * sizeof(double)), *bfi = malloc(((size_t)s->nb + 1) * sizeof(double));
     double *size_all = malloc(((size_t)m->nbody + 1) * sizeof(double));
     if (!bps || !bfi || !size_all) {
@@ -344,9 +410,27 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
         }
     }
     free(mf);
+    /* the joints' multipliers: scaled by the force (moment) scale of their
+     * bodies, their rows by the bodies' radius of gyration [m] (point,
+     * distance and slide rows) or 1 (angle rows) */
+    for (int j = 0; j < nj; j++)
+        for (int r = 0; r < m->jnt->nrow[j]; r++) {
+            const int row = m->jnt->radr[j] + r, ang = m->jnt->rkind[row] == RC_JROW_ANGLE, i = s->n + row;
+            double fsc = 0.0, len = 0.0;
+            for (int e = 0; e < 2; e++) {
+                const int qe = s->jq[2 * j + e];
+                if (qe < 0) continue;
+                fsc = fmax(fsc, s->fs[6 * qe + (ang ? 3 : 0)]);
+                len = fmax(len, s->us[6 * qe] / s->us[6 * qe + 3]); /* the radius of gyration */
+            }
+            s->us[i] = fsc > 0 ? fsc : 1.0;
+            s->fs[i] = ang || !(len > 0) ? 1.0 : len;
+            s->held[i] = 0;
+        }
     /* imposed translations: held at the integral of their velocity */
-    for (int i = 0; i < s->n; i++) s->imp_k[i] = -1;
-    if (m->imp && m->imp->nt > 0) {
+    for (int i = 0; i < s->nx; i++) s->imp_k[i] = -1;
+    for (q = 0; q < s->nb; q++) s->imp_r[q] = -1;
+    if (m->imp && (m->imp->nt > 0 || m->imp->nr > 0)) {
         double *y0 = calloc(ny1, sizeof(double));
         if (!y0) {
             free(bps);
@@ -362,8 +446,19 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
             if (qk < 0) continue;
             const int i = 6 * qk + m->imp->tdir[k];
             s->held[i] = 1;
+            s->soft[i] = m->imp->ttstop[k] < m->tend;
             s->imp_k[i] = k;
             s->imp_x0[i] = y0[m->body_yadr[b] + m->imp->tdir[k]];
+        }
+        for (int j = 0; j < m->imp->nr; j++) {
+            const int b = m->imp->rbody[j], qj = b >= 0 ? s->slot[b] : -1;
+            if (qj < 0) continue;
+            s->imp_r[qj] = j;
+            memcpy(s->imp_q0 + 4 * qj, y0 + m->body_yadr[b] + 3, 4 * sizeof(double));
+            for (int k = 3; k < 6; k++) {
+                s->held[6 * qj + k] = 1;
+                s->soft[6 * qj + k] = m->imp->rtstop[j] < m->tend;
+            }
         }
         free(y0);
     }
@@ -396,18 +491,35 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
                 mark[rs] = q;
                 key[nk++] = (int64_t)q * s->nb + rs;
             }
+        /* a joint couples its two bodies (its reactions' moments turn with
+         * both) */
+        for (int j = 0; j < nj; j++) {
+            if (s->jq[2 * j] != q && s->jq[2 * j + 1] != q) continue;
+            for (int e = 0; e < 2; e++) {
+                const int rs = s->jq[2 * j + e];
+                if (rs < 0 || mark[rs] == q) continue;
+                mark[rs] = q;
+                key[nk++] = (int64_t)q * s->nb + rs;
+            }
+        }
         if (mark[q] != q) key[nk++] = (int64_t)q * s->nb + q;
         qsort(key + k0, (size_t)(nk - k0), sizeof *key, cmp_i64);
     }
     const int64_t u = nk;
     s->nblk = (int)u;
+    /* the joints' entries: each row in the columns of its free bodies'
+     * unknowns, and its multiplier's column in their rows and its own */
+    int64_t nzj = 0;
+    for (int j = 0; j < nj; j++)
+        nzj += (int64_t)m->jnt->nrow[j] * (12 * ((s->jq[2 * j] >= 0) + (s->jq[2 * j + 1] >= 0)) + 1);
+    const size_t nzt = 36 * (size_t)u + (size_t)nzj;
     s->brow = malloc(((size_t)u + 1) * sizeof(int));
     s->bcol = malloc(((size_t)u + 1) * sizeof(int));
     s->bfirst = calloc((size_t)s->nb + 2, sizeof(int));
     s->colptr = calloc(n1, sizeof(int64_t));
-    s->rowind = malloc((36 * (size_t)u + 1) * sizeof(int64_t));
+    s->rowind = malloc((nzt + 1) * sizeof(int64_t));
     s->raw = calloc(42 * (size_t)u + 1, sizeof(double));
-    s->kval = calloc(36 * (size_t)u + 1, sizeof(double));
+    s->kval = calloc(nzt + 1, sizeof(double));
     s->ext = calloc(36 * (size_t)u + 1, sizeof(double));
     const size_t ni1 = (size_t)m->ninter + 1;
     s->fr_on = calloc(ni1, 1);
@@ -451,12 +563,42 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     }
     for (q = 0; q < s->nb; q++) s->bfirst[q + 1] += s->bfirst[q];
     for (q = 0; q < s->nb; q++) {
-        const int nbq = s->bfirst[q + 1] - s->bfirst[q];
         for (int c = 0; c < 6; c++) {
+            /* the blocks' rows first (stiffness() writes them by offset) */
             const int col = 6 * q + c;
-            s->colptr[col + 1] = s->colptr[col] + 6 * nbq;
+            int64_t p = s->colptr[col];
             for (int k = s->bfirst[q]; k < s->bfirst[q + 1]; k++)
-                for (int r = 0; r < 6; r++) s->rowind[s->colptr[col] + 6 * (k - s->bfirst[q]) + r] = 6 * s->brow[k] + r;
+                for (int r = 0; r < 6; r++) s->rowind[p++] = 6 * s->brow[k] + r;
+            /* then the rows of the joints on the body, in order */
+            for (int j = 0; j < nj; j++)
+                for (int e = 0; e < 2; e++) {
+                    if (s->jq[2 * j + e] != q) continue;
+                    for (int r = 0; r < m->jnt->nrow[j]; r++) {
+                        s->jpos[RC_JPOS * (size_t)j + 6 * (6 * e + c) + r] = p;
+                        s->rowind[p++] = s->n + m->jnt->radr[j] + r;
+                    }
+                }
+            s->colptr[col + 1] = p;
+        }
+    }
+    /* the multipliers' columns: the rows of the joint's bodies (in slot
+     * order), then its own (a zero diagonal: KLU pivots off it) */
+    for (int j = 0; j < nj; j++) {
+        const int qa = s->jq[2 * j], qb = s->jq[2 * j + 1];
+        const int e0 = qb >= 0 && (qa < 0 || qb < qa) ? 1 : 0; /* the side of the lower slot first */
+        for (int r = 0; r < m->jnt->nrow[j]; r++) {
+            const int col = s->n + m->jnt->radr[j] + r;
+            int64_t p = s->colptr[col];
+            for (int ee = 0; ee < 2; ee++) {
+                const int e = ee ? 1 - e0 : e0, qe = s->jq[2 * j + e];
+                if (qe < 0) continue;
+                for (int c = 0; c < 6; c++) {
+                    s->jpos[RC_JPOS * (size_t)j + 72 + 12 * r + 6 * e + c] = p;
+                    s->rowind[p++] = 6 * qe + c;
+                }
+            }
+            s->rowind[p++] = col;
+            s->colptr[col + 1] = p;
         }
     }
     for (q = 0; q < s->nb; q++) {
@@ -477,8 +619,8 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     int *red = malloc(n1 * sizeof(int));
     s->full = malloc(n1 * sizeof(int));
     s->rcolptr = calloc(n1, sizeof(int64_t));
-    s->rrowind = malloc(((size_t)s->colptr[s->n] + 1) * sizeof(int64_t));
-    s->remap = malloc(((size_t)s->colptr[s->n] + 1) * sizeof(int64_t));
+    s->rrowind = malloc(((size_t)s->colptr[s->nx] + 1) * sizeof(int64_t));
+    s->remap = malloc(((size_t)s->colptr[s->nx] + 1) * sizeof(int64_t));
     s->ufull = calloc(n1, sizeof(double));
     s->rfull = calloc(n1, sizeof(double));
     if (!red || !s->full || !s->rcolptr || !s->rrowind || !s->remap || !s->ufull || !s->rfull) {
@@ -488,9 +630,10 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
         return NULL;
     }
     s->nr = 0;
-    for (int i = 0; i < s->n; i++) {
-        red[i] = s->held[i] ? -1 : s->nr;
-        if (!s->held[i]) s->full[s->nr++] = i;
+    for (int i = 0; i < s->nx; i++) {
+        const int out = s->held[i] && !s->soft[i];
+        red[i] = out ? -1 : s->nr;
+        if (!out) s->full[s->nr++] = i;
     }
     int64_t nzr = 0;
     for (int c2 = 0; c2 < s->nr; c2++) {
@@ -849,6 +992,8 @@ static void commit_state(rc_static *s, double t, const double *u, double *y)
         }
     }
     memcpy(y, s->y, (size_t)m->ny * sizeof(double));
+    /* the joints' reactions, where a record vector has them (joints.h) */
+    for (int k = 0; k < s->nl; k++) y[m->ny + k] = u[s->n + k];
 }
 
 /* The block of (row slot rs, column slot cs), -1: none. */
@@ -994,6 +1139,205 @@ static int pf_stiffness(rc_static *s, const double *u)
     return 0;
 }
 
+/* ---- joints: their constraint rows and reactions (docs/theory.md 7.8) --- */
+/* The complex step of the joints' terms [m, rad, N, N m]. */
+#define RC_STATIC_JSTEP 1e-30
+
+/* v rotated by R(q)^T (global -> body frame), q a unit quaternion; complex. */
+static void qrot_t(const double complex q[4], const double complex v[3], double complex o[3])
+{
+    const double complex w = q[0], r[3] = {-q[1], -q[2], -q[3]};
+    const double complex c[3] = {r[1] * v[2] - r[2] * v[1], r[2] * v[0] - r[0] * v[2], r[0] * v[1] - r[1] * v[0]};
+    const double complex cc[3] = {r[1] * c[2] - r[2] * c[1], r[2] * c[0] - r[0] * c[2], r[0] * c[1] - r[1] * c[0]};
+    for (int k = 0; k < 3; k++) o[k] = v[k] + 2.0 * w * c[k] + 2.0 * cc[k];
+}
+
+/* The pose (x, q; 7 values, complex) of side e (0: a, 1: b) of joint j at
+ * the unknowns u, its local unknown c (0..5) stepped by the complex step
+ * (c < 0: none); the fixed pose of a body that is not free. */
+static void jnt_pose(const rc_static *s, int j, int e, const double *u, int c, double complex y7[RC_NB])
+{
+    const rc_model *m = s->m;
+    const int b = e ? m->jnt->bb[j] : m->jnt->ba[j], q = s->jq[2 * j + e];
+    for (int k = 0; k < RC_NB; k++) y7[k] = 0.0;
+    if (q < 0) {
+        const double *p = rc_body_state(m, b, s->ys);
+        for (int k = 0; k < 7; k++) y7[k] = p[k];
+        return;
+    }
+    const int a = m->body_yadr[b];
+    double complex th[3], e4[4];
+    for (int k = 0; k < 3; k++) {
+        y7[k] = s->ys[a + k] + u[6 * q + k] + (c == k ? I * RC_STATIC_JSTEP : 0.0);
+        th[k] = u[6 * q + 3 + k] + (c == 3 + k ? I * RC_STATIC_JSTEP : 0.0);
+    }
+    qexp(th, e4);
+    qmul(s->ys + a + 3, e4, y7 + 3);
+}
+
+/* Joint j's terms at the unknowns u with its multipliers lam [nrow]: the
+ * reactions' force (global) [N] and moment (the body's frame, about its
+ * centre of mass) [N m] on a, ta[6], and on b, tb[6] (sum lambda_r times
+ * the rows' unit wrenches), and its rows g [nrow] ([m] or [-]); side e's
+ * local unknown c stepped (e < 0: none). */
+static void jnt_terms(const rc_static *s, int j, const double *u, const double complex *lam, int e, int c,
+                      double complex ta[6], double complex tb[6], double complex *g)
+{
+    const rc_model *m = s->m;
+    double complex ya[RC_NB], yb[RC_NB], w[RC_JNT_MAXROW][12], F[12];
+    jnt_pose(s, j, 0, u, e == 0 ? c : -1, ya);
+    jnt_pose(s, j, 1, u, e == 1 ? c : -1, yb);
+    rc_jnt_rows_cx(m, j, ya, yb, g, w);
+    for (int k = 0; k < 12; k++) F[k] = 0.0;
+    for (int r = 0; r < m->jnt->nrow[j]; r++)
+        for (int k = 0; k < 12; k++) F[k] += lam[r] * w[r][k];
+    for (int k = 0; k < 3; k++) {
+        ta[k] = F[k];
+        tb[k] = F[6 + k];
+    }
+    qrot_t(ya + 3, F + 3, ta + 3);
+    qrot_t(yb + 3, F + 9, tb + 3);
+}
+
+/* The joints' terms of the residual at u: their reactions added to the
+ * forces and moments of their free bodies, their rows g into the rows of
+ * the multipliers. */
+static void jnt_residual(const rc_static *s, const double *u, double *r)
+{
+    const rc_model *m = s->m;
+    for (int j = 0; m->jnt && j < m->jnt->n; j++) {
+        const int nr = m->jnt->nrow[j], r0 = s->n + m->jnt->radr[j];
+        double complex lam[RC_JNT_MAXROW], t[2][6], g[RC_JNT_MAXROW];
+        for (int k = 0; k < nr; k++) lam[k] = u[r0 + k];
+        jnt_terms(s, j, u, lam, -1, -1, t[0], t[1], g);
+        for (int e = 0; e < 2; e++) {
+            const int q = s->jq[2 * j + e];
+            for (int k = 0; q >= 0 && k < 6; k++) r[6 * q + k] += creal(t[e][k]);
+        }
+        for (int k = 0; k < nr; k++) r[r0 + k] = creal(g[k]);
+    }
+}
+
+/* The joints' part of the stiffness at u, added to s->kval after the
+ * engine's (held rows left as they are): per joint, by complex step of
+ * jnt_terms, the columns of its bodies' unknowns (the reactions' change
+ * as the bodies turn, into the blocks; the rows' gradients, G) and of its
+ * multipliers (the unit wrenches in the bodies' rows, G^T). 0, or 1 when
+ * a block is missing. */
+static int jnt_stiffness(rc_static *s, const double *u)
+{
+    const rc_model *m = s->m;
+    const double h = RC_STATIC_JSTEP;
+    for (int j = 0; m->jnt && j < m->jnt->n; j++) {
+        const int nr = m->jnt->nrow[j], r0 = s->n + m->jnt->radr[j];
+        const int64_t *jp = s->jpos + RC_JPOS * (size_t)j;
+        double complex lam[RC_JNT_MAXROW], t[2][6], g[RC_JNT_MAXROW];
+        for (int k = 0; k < nr; k++) lam[k] = u[r0 + k];
+        for (int e = 0; e < 2; e++) {
+            const int q = s->jq[2 * j + e];
+            if (q < 0) continue;
+            for (int c = 0; c < 6; c++) {
+                jnt_terms(s, j, u, lam, e, c, t[0], t[1], g);
+                for (int r = 0; r < nr; r++) s->kval[jp[6 * (6 * e + c) + r]] = cimag(g[r]) / h;
+                for (int f = 0; f < 2; f++) {
+                    const int qf = s->jq[2 * j + f];
+                    if (qf < 0) continue;
+                    const int blk = find_block(s, qf, q);
+                    if (blk < 0) return 1;
+                    double *out = s->kval + s->colptr[6 * q + c] + 6 * (blk - s->bfirst[q]);
+                    for (int k = 0; k < 6; k++)
+                        if (!s->held[6 * qf + k]) out[k] += cimag(t[f][k]) / h;
+                }
+            }
+        }
+        for (int r = 0; r < nr; r++) {
+            lam[r] += I * h;
+            jnt_terms(s, j, u, lam, -1, -1, t[0], t[1], g);
+            lam[r] = creal(lam[r]);
+            for (int f = 0; f < 2; f++) {
+                const int qf = s->jq[2 * j + f];
+                for (int k = 0; qf >= 0 && k < 6; k++)
+                    s->kval[jp[72 + 12 * r + 6 * f + k]] = s->held[6 * qf + k] ? 0.0 : cimag(t[f][k]) / h;
+            }
+            s->kval[s->colptr[r0 + r + 1] - 1] = 0.0; /* the diagonal */
+        }
+    }
+    return 0;
+}
+
+/* The joints' multipliers a solve starts from, into lam [nl]: those that
+ * balance the loads at the start best (the body unknowns u at their start
+ * values), in the least squares of the scaled forces and moments,
+ *   (W^T S W) lambda = -W^T S r_0,
+ * W the rows' unit wrenches in the bodies' rows, S = diag(1 / fs^2) on the
+ * rows that are not held (0 on those), r_0 the residual at lambda = 0.
+ * Without it a pendulum's first stiffness, at lambda = 0, has nothing
+ * about its pivot (the reaction's moment, lambda times the turn of its
+ * arm, is the only stiffness there): singular. 0, or 1 (lam unchanged)
+ * when the residual fails or the equations are singular. */
+static int jnt_start_multipliers(rc_static *s, double t, double *u, double *lam)
+{
+    const rc_model *m = s->m;
+    const int nl = s->nl;
+    if (nl == 0) return 0;
+    for (int k = 0; k < nl; k++) u[s->n + k] = 0.0;
+    if (rc_static_residual(s, t, u, s->rfull)) return 1;
+    /* each row's unit wrench (force, moment in the body's frame) */
+    for (int j = 0; j < m->jnt->n; j++)
+        for (int r = 0; r < m->jnt->nrow[j]; r++) {
+            double complex e[RC_JNT_MAXROW] = {0}, t2[2][6], g[RC_JNT_MAXROW];
+            e[r] = 1.0;
+            jnt_terms(s, j, u, e, -1, -1, t2[0], t2[1], g);
+            double *w = s->jw + 12 * (size_t)(m->jnt->radr[j] + r);
+            for (int f = 0; f < 2; f++) {
+                const int q = s->jq[2 * j + f];
+                for (int k = 0; k < 6; k++)
+                    w[6 * f + k] = q >= 0 && !s->held[6 * q + k] ? creal(t2[f][k]) / s->fs[6 * q + k] : 0.0;
+            }
+        }
+    /* the normal equations: rows of joints with a body in common */
+    memset(s->jA, 0, (size_t)nl * (size_t)nl * sizeof(double));
+    double dmax = 0.0;
+    for (int j1 = 0; j1 < m->jnt->n; j1++)
+        for (int r1 = 0; r1 < m->jnt->nrow[j1]; r1++) {
+            const int i1 = m->jnt->radr[j1] + r1;
+            const double *w1 = s->jw + 12 * (size_t)i1;
+            double b = 0.0;
+            for (int f = 0; f < 2; f++) {
+                const int q = s->jq[2 * j1 + f];
+                for (int k = 0; q >= 0 && k < 6; k++) b -= w1[6 * f + k] * s->rfull[6 * q + k] / s->fs[6 * q + k];
+            }
+            s->jb[i1] = b;
+            for (int j2 = 0; j2 < m->jnt->n; j2++)
+                for (int f1 = 0; f1 < 2; f1++)
+                    for (int f2 = 0; f2 < 2; f2++) {
+                        const int q = s->jq[2 * j1 + f1];
+                        if (q < 0 || s->jq[2 * j2 + f2] != q) continue;
+                        for (int r2 = 0; r2 < m->jnt->nrow[j2]; r2++) {
+                            const double *w2 = s->jw + 12 * (size_t)(m->jnt->radr[j2] + r2);
+                            double a = 0.0;
+                            for (int k = 0; k < 6; k++) a += w1[6 * f1 + k] * w2[6 * f2 + k];
+                            s->jA[(size_t)i1 * nl + m->jnt->radr[j2] + r2] += a;
+                        }
+                    }
+            dmax = fmax(dmax, s->jA[(size_t)i1 * nl + i1]);
+        }
+    /* a row that the loads' directions leave undetermined (a wrench
+     * along a held direction only) keeps a multiplier of 0 */
+    for (int i = 0; i < nl; i++) s->jA[(size_t)i * nl + i] += 1e-12 * dmax + DBL_MIN;
+    gsl_matrix_view A = gsl_matrix_view_array(s->jA, (size_t)nl, (size_t)nl);
+    gsl_vector_view b = gsl_vector_view_array(s->jb, (size_t)nl);
+    gsl_error_handler_t *old = gsl_set_error_handler_off();
+    const int bad = gsl_linalg_cholesky_decomp1(&A.matrix) || gsl_linalg_cholesky_svx(&A.matrix, &b.vector);
+    gsl_set_error_handler(old);
+    if (bad) return 1;
+    for (int i = 0; i < nl; i++) {
+        if (!isfinite(s->jb[i])) return 1;
+    }
+    for (int i = 0; i < nl; i++) lam[i] = s->jb[i];
+    return 0;
+}
+
 int rc_static_residual(rc_static *s, double t, const double *u, double *r)
 {
     const rc_model *m = s->m;
@@ -1011,8 +1355,9 @@ int rc_static_residual(rc_static *s, double t, const double *u, double *r)
             r[6 * q + 3 + k] = J[3 * k] * w[0] + J[3 * k + 1] * w[1] + J[3 * k + 2] * w[2];
         }
     }
-    for (int i = 0; i < s->n; i++) {
-        if (s->held[i]) r[i] = s->fs[i] / s->us[i] * u[i];
+    jnt_residual(s, u, r);
+    for (int i = 0; i < s->nx; i++) {
+        if (s->held[i]) r[i] = s->fs[i] / s->us[i] * (u[i] - s->imp_u[i]);
         if (!isfinite(r[i])) return 1;
     }
     return 0;
@@ -1059,7 +1404,8 @@ static int stiffness(rc_static *s, double t, const double *u)
         }
     }
     free(dq);
-    for (int64_t p = 0; p < 36 * (int64_t)s->nblk; p++)
+    if (jnt_stiffness(s, u)) return 1;
+    for (int64_t p = 0; p < s->colptr[s->nx]; p++)
         if (!isfinite(s->kval[p])) return 1;
     return 0;
 }
@@ -1067,9 +1413,9 @@ static int stiffness(rc_static *s, double t, const double *u)
 int rc_static_stiffness(rc_static *s, double t, const double *u, double *K)
 {
     if (stiffness(s, t, u)) return 1;
-    memset(K, 0, (size_t)s->n * (size_t)s->n * sizeof(double));
-    for (int c = 0; c < s->n; c++)
-        for (int64_t p = s->colptr[c]; p < s->colptr[c + 1]; p++) K[(size_t)c * (size_t)s->n + (size_t)s->rowind[p]] = s->kval[p];
+    memset(K, 0, (size_t)s->nx * (size_t)s->nx * sizeof(double));
+    for (int c = 0; c < s->nx; c++)
+        for (int64_t p = s->colptr[c]; p < s->colptr[c + 1]; p++) K[(size_t)c * (size_t)s->nx + (size_t)s->rowind[p]] = s->kval[p];
     return 0;
 }
 
@@ -1099,6 +1445,7 @@ typedef struct st_run {
     char kmsg[512];     /* KINSOL's last error message */
     int touch;          /* the first stiffness of the solve regularised (kin_jac) */
     int njac;           /* stiffnesses evaluated in this solve */
+    const double *lam0; /* [nl] the joints' multipliers the solve starts from [N, N m] (NULL: 0) */
 } st_run;
 
 /* The displacement of an imposed translation k from t = 0 to t [m]: the
@@ -1109,23 +1456,78 @@ static double imp_disp(const rc_model *m, int k, double t)
     return p->tfscale[k] * p->tascale[k] * rc_table_integral(&m->table[p->ttab[k]], 0.0, t / p->tascale[k]);
 }
 
+/* The global rotation vector Phi [rad] an imposed rotation j turns its
+ * body by from t = 0 to t (up to its Tstop): the integral of its angular
+ * velocity w_g = Fscale f(t / Ascale) per global component (exact as a
+ * rotation where w_g keeps its axis, which the scope asks: one component). */
+static void imp_phi(const rc_model *m, int j, double t, double phi[3])
+{
+    const rc_imposed *p = m->imp;
+    const double te = fmin(t, p->rtstop[j]);
+    for (int k = 0; k < 3; k++) {
+        const int tab = p->rtab[3 * j + k];
+        const double as = p->rascale[3 * j + k];
+        phi[k] = tab < 0 ? 0.0 : p->rfscale[3 * j + k] * as * rc_table_integral(&m->table[tab], 0.0, te / as);
+    }
+}
+
 /* The held unknowns' values of a solve at the load time t from the start
- * s->ys: an imposed translation's position at t less the start's. */
+ * s->ys: an imposed translation's position at t less the start's; an
+ * imposed rotation's orientation exp(Phi(t)) (x) q(0) put into the start
+ * s->ys, its rotation unknowns held at 0. A component released before the
+ * end (soft) is held while t <= Tstop, free after it. */
 static void imp_targets(rc_static *s, double t)
 {
+    const rc_model *m = s->m;
     for (int i = 0; i < s->n; i++) {
         const int k = s->imp_k[i];
         if (k < 0) continue;
-        const int a = s->m->body_yadr[s->fb[i / 6]] + i % 6;
-        s->imp_u[i] = s->imp_x0[i] + imp_disp(s->m, k, t) - s->ys[a];
+        const int a = m->body_yadr[s->fb[i / 6]] + i % 6;
+        if (s->soft[i]) s->held[i] = t <= m->imp->ttstop[k];
+        s->imp_u[i] = s->held[i] ? s->imp_x0[i] + imp_disp(m, k, t) - s->ys[a] : 0.0;
     }
+    for (int q = 0; q < s->nb; q++) {
+        const int j = s->imp_r[q];
+        if (j < 0) continue;
+        const int held = t <= m->imp->rtstop[j];
+        for (int k = 3; k < 6; k++) {
+            if (s->soft[6 * q + k]) s->held[6 * q + k] = held;
+            s->imp_u[6 * q + k] = 0.0;
+        }
+        if (!held) continue;
+        double phi[3], qt[4];
+        imp_phi(m, j, t, phi);
+        double complex th[3] = {phi[0], phi[1], phi[2]}, e[4], r[4];
+        qexp(th, e);
+        /* exp(Phi) (x) q0: a rotation about global axes */
+        const double *q0 = s->imp_q0 + 4 * q;
+        const double complex qc[4] = {q0[0], q0[1], q0[2], q0[3]};
+        r[0] = e[0] * qc[0] - e[1] * qc[1] - e[2] * qc[2] - e[3] * qc[3];
+        r[1] = e[0] * qc[1] + e[1] * qc[0] + e[2] * qc[3] - e[3] * qc[2];
+        r[2] = e[0] * qc[2] - e[1] * qc[3] + e[2] * qc[0] + e[3] * qc[1];
+        r[3] = e[0] * qc[3] + e[1] * qc[2] - e[2] * qc[1] + e[3] * qc[0];
+        for (int k = 0; k < 4; k++) qt[k] = creal(r[k]);
+        memcpy(s->ys + m->body_yadr[s->fb[q]] + 3, qt, sizeof qt);
+    }
+}
+
+/* The first Tstop of an imposed component in (t, tn) (a load substep ends
+ * there: the component is held up to it, free after), or tn. */
+static double imp_break(const rc_model *m, double t, double tn)
+{
+    const rc_imposed *p = m->imp;
+    for (int k = 0; p && k < p->nt; k++)
+        if (p->ttstop[k] > t && p->ttstop[k] < tn) tn = p->ttstop[k];
+    for (int j = 0; p && j < p->nr; j++)
+        if (p->rtstop[j] > t && p->rtstop[j] < tn) tn = p->rtstop[j];
+    return tn;
 }
 
 /* The unknowns solved for (u, reduced) into s->ufull, the held ones at
  * their values (imp_targets). */
 static double *expand(rc_static *s, const double *u)
 {
-    memcpy(s->ufull, s->imp_u, (size_t)s->n * sizeof(double));
+    memcpy(s->ufull, s->imp_u, (size_t)s->nx * sizeof(double));
     for (int i = 0; i < s->nr; i++) s->ufull[s->full[i]] = u[i];
     return s->ufull;
 }
@@ -1171,6 +1573,7 @@ static int kin_jac(N_Vector u, N_Vector fu, SUNMatrix A, void *user, N_Vector t1
     const double *r = N_VGetArrayPointer(fu);
     for (int i = 0; i < s->nr; i++) {
         const int f = s->full[i];
+        if (f >= s->n) continue; /* a joint's multiplier */
         const double ks = s->fs[f] / s->us[f];
         double cmax = 0.0;
         int64_t pd = -1;
@@ -1184,6 +1587,7 @@ static int kin_jac(N_Vector u, N_Vector fu, SUNMatrix A, void *user, N_Vector t1
     if (c->touch && first)
         for (int i = 0; i < s->nr; i++) {
             const int f = s->full[i], loaded = fabs(r[i]) > RC_STATIC_FTOL * s->fs[f];
+            if (f >= s->n) continue;
             for (int64_t p = s->rcolptr[i]; p < s->rcolptr[i + 1]; p++)
                 if (s->rrowind[p] == i) v[p] -= (loaded ? RC_STATIC_TOUCH_REG : 1.0) * s->fs[f] / s->us[f];
         }
@@ -1272,6 +1676,18 @@ static st_out kin_solve(st_kin *k, st_run *c, double t)
     c->njac = 0;
     imp_targets(c->s, t);
     N_VConst(0.0, k->u);
+    for (int i = 0; i < c->s->nr; i++) /* a soft-held component at its value */
+        if (c->s->held[c->s->full[i]]) NV_Ith_S(k->u, i) = c->s->imp_u[c->s->full[i]];
+    /* the joints' multipliers: those that balance the loads at the start
+     * best, else the last equilibrium's */
+    if (c->s->nl > 0) {
+        rc_static *s = c->s;
+        double *uf = expand(s, N_VGetArrayPointer(k->u)), *l0 = s->jl0;
+        for (int i = 0; i < s->nl; i++) l0[i] = c->lam0 ? c->lam0[i] : 0.0;
+        jnt_start_multipliers(s, t, uf, l0);
+        for (int i = 0; i < s->nr; i++)
+            if (s->full[i] >= s->n) NV_Ith_S(k->u, i) = l0[s->full[i] - s->n];
+    }
     if (c->s->nr == 0) {
         o.ok = 1;
         return o;
@@ -1322,6 +1738,10 @@ static int kin_support(st_kin *k, st_run *c)
         const double *v = SUNSparseMatrix_Data(k->A);
         for (int i = 0; i < s->nr && col < 0; i++) {
             const int f = s->full[i];
+            /* a jointed body's stiffness is that of its motions the joints
+             * allow, not its own diagonal (a pendulum's translations have
+             * none): the factorisation below judges it */
+            if (f >= s->n || s->jbody[f / 6] || s->held[f]) continue;
             double dg = 0.0;
             for (sunindextype p = cp[i]; p < cp[i + 1]; p++)
                 if (ri[p] == i) dg = v[p];
@@ -1381,14 +1801,35 @@ static void energy_step(rc_static *s, double t, const double *u, double *y)
     }
     /* imposed translations: W_imp = -(work of the reactions) = the work of
      * the unbalanced force F along the component, sum 0.5 (F_0 + F_1) dx */
-    if (m->imp && m->imp->nt > 0 && rc_assemble_rhs(m, d, t, y, s->f) == 0)
+    if (m->imp && (m->imp->nt > 0 || m->imp->nr > 0) && rc_assemble_rhs(m, d, t, y, s->f) == 0) {
         for (int i = 0; i < s->n; i++) {
-            if (s->imp_k[i] < 0) continue;
+            if (s->imp_k[i] < 0 || !s->held[i]) continue;
             const int q = i / 6, b = s->fb[q], a = m->body_yadr[b], c = i % 6;
             const double f1 = m->body_mass[b] * d->sc->imp_free[a + 7 + c]; /* before the imposed rate (rc_imp_rhs) */
             y[m->imp->wadr] += 0.5 * (s->imp_f[i] + f1) * (y[a + c] - s->en_x0[3 * q + c]);
             s->imp_f[i] = f1;
         }
+        /* imposed rotations: the unbalanced moment M (global: R J
+         * omegadot_free) over the rotation's increment, sum 0.5 (M_0 +
+         * M_1) . dPhi */
+        for (int q = 0; q < s->nb; q++) {
+            const int j = s->imp_r[q];
+            if (j < 0 || !s->held[6 * q + 3]) continue;
+            const int b = s->fb[q], a = m->body_yadr[b];
+            const double *J = m->body_J + 9 * b, *wf = d->sc->imp_free + a + 10, *qq = y + a + 3;
+            double mb[3], p0[3], p1[3];
+            for (int k = 0; k < 3; k++) mb[k] = J[3 * k] * wf[0] + J[3 * k + 1] * wf[1] + J[3 * k + 2] * wf[2];
+            const double complex qc[4] = {qq[0], qq[1], qq[2], qq[3]};
+            double complex mg[3];
+            qrot(qc, mb, mg);
+            imp_phi(m, j, s->en_t0, p0);
+            imp_phi(m, j, t, p1);
+            for (int k = 0; k < 3; k++) {
+                y[m->imp->wadr] += 0.5 * (s->imp_f[6 * q + 3 + k] + creal(mg[k])) * (p1[k] - p0[k]);
+                s->imp_f[6 * q + 3 + k] = creal(mg[k]);
+            }
+        }
+    }
     if (m->gwork_adr >= 0)
         for (int q = 0; q < s->nb; q++) {
             const int b = s->fb[q];
@@ -1433,10 +1874,185 @@ static int limit_point(const rc_model *m, const rc_data *d, double t, const doub
     return -1;
 }
 
+/* The most unknowns of jointed bodies whose equilibrium's stability is
+ * checked (a dense eigenvalue problem of that size). */
+#define RC_STATIC_STAB_MAX 300
+
+/* The stability of an equilibrium y with joints at the load time t
+ * (docs/theory.md 7.8, "Joints"): the stiffness K = dR/du of the jointed
+ * bodies' unknowns that are not held (the others fixed), on the motions
+ * the joints allow (the null space Z of their rows' gradients G), must be
+ * negative definite: the largest eigenvalue of Z^T K_s Z (K_s the
+ * symmetric part; unknowns scaled by their scales, a congruence that keeps
+ * the signs). 1 when it is positive beyond 1e-8 of the largest in
+ * magnitude (*ratio that fraction), else 0; 0 also when not checked (no
+ * joints, more than RC_STATIC_STAB_MAX such unknowns, a contact sliding:
+ * its tangent is not symmetric, or out of memory). */
+static int jnt_unstable(rc_static *s, double t, const double *y, double *ratio)
+{
+    const rc_model *m = s->m;
+    *ratio = 0.0;
+    if (s->nl == 0) return 0;
+    for (int i = 0; i < m->ninter; i++)
+        if (s->d->inter_mode[i] == RC_MODE_CLOSED &&
+            ((s->fr_on[i] && s->d->inter_slip[i]) || (s->pf_on[i] && point_slip(m, s->d, i))))
+            return 0;
+    int nb = 0;
+    for (int i = 0; i < s->n; i++) nb += !s->held[i] && s->jbody[i / 6];
+    const int nl = s->nl, mz = nb - nl;
+    if (nb > RC_STATIC_STAB_MAX || mz <= 0) return 0;
+    int *loc = malloc(((size_t)s->nx + 1) * sizeof(int));
+    double *u = calloc((size_t)s->nx + 1, sizeof(double));
+    gsl_matrix *K = gsl_matrix_calloc((size_t)nb, (size_t)nb), *Gt = gsl_matrix_calloc((size_t)nb, (size_t)nl);
+    gsl_matrix *Q = gsl_matrix_alloc((size_t)nb, (size_t)nb), *R = gsl_matrix_alloc((size_t)nb, (size_t)nl);
+    gsl_matrix *KZ = gsl_matrix_alloc((size_t)nb, (size_t)mz), *H = gsl_matrix_alloc((size_t)mz, (size_t)mz);
+    gsl_vector *tau = gsl_vector_alloc((size_t)nl), *ev = gsl_vector_alloc((size_t)mz);
+    gsl_eigen_symm_workspace *ws = gsl_eigen_symm_alloc((size_t)mz);
+    int unstable = 0;
+    if (!loc || !u || !K || !Gt || !Q || !R || !KZ || !H || !tau || !ev || !ws) goto out;
+    /* the stiffness at the equilibrium (the start of a solve there) */
+    rc_static_set_start(s, y);
+    for (int k = 0; k < nl; k++) u[s->n + k] = y[m->ny + k];
+    if (stiffness(s, t, u)) goto out;
+    int q = 0;
+    for (int i = 0; i < s->nx; i++) loc[i] = i < s->n && !s->held[i] && s->jbody[i / 6] ? q++ : -1;
+    for (int c = 0; c < s->n; c++) {
+        if (loc[c] < 0) continue;
+        for (int64_t p = s->colptr[c]; p < s->colptr[c + 1]; p++) {
+            const int r = (int)s->rowind[p];
+            const double v = s->kval[p] * s->us[c];
+            if (r < s->n && loc[r] >= 0) gsl_matrix_set(K, (size_t)loc[r], (size_t)loc[c], v * s->us[r]);
+            else if (r >= s->n) gsl_matrix_set(Gt, (size_t)loc[c], (size_t)(r - s->n), v);
+        }
+    }
+    /* K_s, the null space of G (the last columns of Q in G^T = Q R) */
+    for (int i = 0; i < nb; i++)
+        for (int j = 0; j < i; j++) {
+            const double a = 0.5 * (gsl_matrix_get(K, (size_t)i, (size_t)j) + gsl_matrix_get(K, (size_t)j, (size_t)i));
+            gsl_matrix_set(K, (size_t)i, (size_t)j, a);
+            gsl_matrix_set(K, (size_t)j, (size_t)i, a);
+        }
+    gsl_error_handler_t *old = gsl_set_error_handler_off();
+    int bad = gsl_linalg_QR_decomp(Gt, tau) || gsl_linalg_QR_unpack(Gt, tau, Q, R);
+    if (!bad) {
+        gsl_matrix_const_view Z = gsl_matrix_const_submatrix(Q, 0, (size_t)nl, (size_t)nb, (size_t)mz);
+        bad = gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, K, &Z.matrix, 0.0, KZ) ||
+              gsl_blas_dgemm(CblasTrans, CblasNoTrans, 1.0, &Z.matrix, KZ, 0.0, H) || gsl_eigen_symm(H, ev, ws);
+    }
+    gsl_set_error_handler(old);
+    if (bad) goto out;
+    double emax = -INFINITY, amax = 0.0;
+    for (int i = 0; i < mz; i++) {
+        emax = fmax(emax, gsl_vector_get(ev, (size_t)i));
+        amax = fmax(amax, fabs(gsl_vector_get(ev, (size_t)i)));
+    }
+    if (amax > 0 && emax > 1e-8 * amax) {
+        unstable = 1;
+        *ratio = emax / amax;
+    }
+out:
+    free(loc);
+    free(u);
+    gsl_matrix_free(K);
+    gsl_matrix_free(Gt);
+    gsl_matrix_free(Q);
+    gsl_matrix_free(R);
+    gsl_matrix_free(KZ);
+    gsl_matrix_free(H);
+    gsl_vector_free(tau);
+    gsl_vector_free(ev);
+    if (ws) gsl_eigen_symm_free(ws);
+    return unstable;
+}
+
 /* ---- the run ------------------------------------------------------------ */
 static const char *const dof_name[6] = {"translation x", "translation y", "translation z",
                                         "rotation about the body's x axis", "rotation about the body's y axis",
                                         "rotation about the body's z axis"};
+
+/* Inacti 5, the gap offset o of each interface that has one, in y at the
+ * load time t (docs/theory.md 3.1, 7.8): on an open contact (no force: a
+ * closed one that pulls is opened by the active set first),
+ * o := max(0, min(o, P_raw)) (the gap recovers while the bodies separate,
+ * and keeps what it recovered when they approach again, as the tracking of
+ * a dynamic run); an interface starting at t (Tstart) with o = 0 takes its
+ * penetration P_raw > 0 as its offset (force-free at its start). Returns
+ * the number of offsets changed. */
+static int update_offsets(const rc_model *m, rc_data *d, double t, double *y)
+{
+    int changed = 0;
+    for (int i = 0; i < m->ninter; i++) {
+        if (m->inter_oidx[i] < 0) continue;
+        const int active = t >= m->inter_tstart[i] && t <= m->inter_tstop[i];
+        if (!active) continue;
+        double *o = y + m->inter_eadr[i] + m->inter_oidx[i];
+        rc_inter_report r;
+        rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], d->inter_slip[i], t, y, &r);
+        double on = *o;
+        if (d->inter_mode[i] == RC_MODE_INACTIVE) on = *o == 0.0 ? fmax(r.p_raw, 0.0) : *o;
+        else if (d->inter_mode[i] == RC_MODE_OPEN) on = fmax(0.0, fmin(*o, r.p_raw));
+        if (on != *o) {
+            *o = on;
+            changed++;
+        }
+    }
+    return changed;
+}
+
+/* The couplings' modes at the load time t from the state y (at rest, the
+ * modes a dynamic run starts from: rc_cpl_modes_init): a joint stop pushes
+ * while its coordinate is past the stop, a contact coupling's face while
+ * it is within its effective range. Writes the changes as events
+ * (stop_enter, stop_leave; cpl_contact_enter, cpl_contact_leave, one per
+ * coupling and kind); old [n + nface] scratch. Returns the number of
+ * changes, or -1 on an output error. */
+static int update_cpl_modes(const rc_model *m, rc_data *d, double t, const double *y, int *old, ev_sink *sink,
+                            long *nev, rc_error *err)
+{
+    const rc_couplings *c = m->cpl;
+    if (!c || c->n == 0) return 0;
+    const int nf = c->ct ? c->ct->nface : 0;
+    memcpy(old, d->cpl->lmode, (size_t)c->n * sizeof(int));
+    if (nf) memcpy(old + c->n, d->cpl->fmode, (size_t)nf * sizeof(int));
+    rc_cpl_modes_init(m, d, t, y);
+    /* a stop touched (its coordinate on the stop to the rounding of the
+     * angles or positions, RC_TOUCH_ULPS) pushes, as a touching contact is
+     * closed: at rest nothing else decides, and a free stop under a load
+     * towards it leaves the joint's coordinate without stiffness */
+    for (int k = c->ncard; k < c->n; k++) {
+        if (c->kind[k] != RC_CPL_LIMIT || d->cpl->lmode[k] != RC_LIM_FREE) continue;
+        rc_cpl_report r;
+        if (rc_cpl_report_eval(m, d, k, t, y, &r)) continue;
+        const double q = r.length, band = RC_TOUCH_ULPS * DBL_EPSILON * (1.0 + fabs(q));
+        if (isfinite(c->llo[k]) && fabs(q - c->llo[k]) <= band) d->cpl->lmode[k] = RC_LIM_LO_PUSH;
+        else if (isfinite(c->lhi[k]) && fabs(q - c->lhi[k]) <= band) d->cpl->lmode[k] = RC_LIM_HI_PUSH;
+    }
+    int changed = 0;
+    for (int k = 0; k < c->n; k++) {
+        rc_event_kind kind = RC_EV_NONE;
+        const char *name = c->name[k];
+        if (c->kind[k] == RC_CPL_LIMIT && d->cpl->lmode[k] != old[k]) {
+            kind = d->cpl->lmode[k] == RC_LIM_FREE ? RC_EV_STOP_LEAVE : RC_EV_STOP_ENTER;
+            if (c->ljoint[k] >= 0 && m->jnt) name = m->jnt->name[c->ljoint[k]];
+        } else if (c->kind[k] == RC_CPL_CONTACT) {
+            int in = 0, out = 0;
+            for (int f = c->ct->fadr[k]; f < c->ct->fadr[k + 1]; f++) {
+                const int was = old[c->n + f] != RC_FACE_OUT, now = d->cpl->fmode[f] != RC_FACE_OUT;
+                in += now && !was;
+                out += was && !now;
+            }
+            if (in || out) kind = in ? RC_EV_CPL_CONTACT_ENTER : RC_EV_CPL_CONTACT_LEAVE;
+        }
+        if (kind == RC_EV_NONE) continue;
+        changed++;
+        (*nev)++;
+        rc_cpl_report r;
+        const int bad = rc_cpl_report_eval(m, d, k, t, y, &r);
+        const double v[3] = {bad ? 0.0 : r.length, 0.0, bad ? 0.0 : r.force};
+        if (rc_bk_sink_event(sink, t, kind, name, v, err)) return -1;
+    }
+    return changed;
+}
 
 /* The modes of the interfaces at the load time t from the state y: the
  * activation windows, then the unilateral rule (an open contact
@@ -1515,26 +2131,35 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
     const double dtout = pre ? 1.0 : opt && opt->dt_out_override > 0 ? opt->dt_out_override : m->dtout;
     rc_data *d = rc_data_new(m);
     rc_static *s = d ? rc_static_new(m, d) : NULL;
-    st_run c = {s, 0.0, "", 0, 0};
+    st_run c = {s, 0.0, "", 0, 0, NULL};
     st_kin k;
     memset(&k, 0, sizeof k);
     rc_output *out = NULL;
     frame_buf fb;
     memset(&fb, 0, sizeof fb);
     ev_sink sink = {NULL, opt ? opt->on_event : NULL, opt ? opt->user : NULL, 0, "", NULL};
-    double *y = calloc((size_t)m->ny + 1, sizeof(double)), *ysave = calloc((size_t)m->ny + 1, sizeof(double));
+    /* the state, and with joints the record vector's extras after it
+     * (joints.h: their reactions lambda, the projection's nu = 0, the
+     * reactions' work W = 0) */
+    const int nyx = m->ny + (m->jnt && m->jnt->n > 0 ? 2 * m->jnt->nrows + 1 : 0);
+    double *y = calloc((size_t)nyx + 1, sizeof(double)), *ysave = calloc((size_t)nyx + 1, sizeof(double));
     double *ptol = calloc((size_t)m->ninter + 1, sizeof(double));
     int *msave = calloc((size_t)m->ninter + 1, sizeof(int)), *flips = calloc((size_t)m->ninter + 1, sizeof(int));
     int *slsave = calloc((size_t)m->ninter + 1, sizeof(int));
     int *pfsave = calloc((size_t)m->ninter + 1, sizeof(int));
+    /* the couplings' modes (joint stops, contact coupling faces): scratch
+     * of update_cpl_modes, and their save at a substep's start */
+    const size_t ncm = m->cpl ? (size_t)m->cpl->n + (size_t)(m->cpl->ct ? m->cpl->ct->nface : 0) : 0;
+    int *cplold = calloc(ncm + 1, sizeof(int)), *cplsave = calloc(ncm + 1, sizeof(int));
     char reason[1536] = "";
     const char *fail_reason = NULL;
     double t = 0.0;
     int fb_ok = 0;
-    if (!d || !s || !y || !ysave || !ptol || !msave || !flips || !slsave || !pfsave || !(fb_ok = rc_bk_frame_alloc(m, &fb))) {
+    if (!d || !s || !y || !ysave || !ptol || !msave || !flips || !slsave || !pfsave || !cplold || !cplsave || !(fb_ok = rc_bk_frame_alloc(m, &fb))) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the static analysis");
         goto done;
     }
+    c.lam0 = y + m->ny;
     if ((st = kin_open(&k, &c, err))) goto done;
     /* tolerances of the active set: a penetration within rounding of the
      * coordinates (RC_TOUCH_ULPS), a force within rounding of the loads */
@@ -1544,6 +2169,9 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
     ftol *= 1e3 * DBL_EPSILON;
     rc_initial_state(m, y);
     rc_modes_init(m, d, 0.0, y);
+    /* Inacti 5: the offsets are the static analysis' own (update_offsets),
+     * not tracked by the engine */
+    memset(d->inter_track, 0, (size_t)m->ninter * sizeof(int));
     for (int i = 0; i < m->ninter; i++) {
         rc_inter_report r;
         rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], d->inter_slip[i], 0.0, y, &r);
@@ -1568,11 +2196,17 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
         /* from t to tk in substeps of the load time */
         int first = kout == 0;
         while (first || t < tk) {
-            const double tn = first ? 0.0 : (tk - t <= dtau * (1 + 1e-12) ? tk : t + dtau);
-            memcpy(ysave, y, (size_t)m->ny * sizeof(double));
+            const double tn =
+                first ? 0.0 : imp_break(m, t, tk - t <= dtau * (1 + 1e-12) ? tk : t + dtau);
+            memcpy(ysave, y, (size_t)nyx * sizeof(double));
             memcpy(msave, d->inter_mode, (size_t)m->ninter * sizeof(int));
             memcpy(slsave, d->inter_slip, (size_t)m->ninter * sizeof(int));
             for (int i = 0; i < m->ninter; i++) pfsave[i] = point_slip(m, d, i);
+            if (ncm) {
+                memcpy(cplsave, d->cpl->lmode, (size_t)m->cpl->n * sizeof(int));
+                if (ncm > (size_t)m->cpl->n)
+                    memcpy(cplsave + m->cpl->n, d->cpl->fmode, (ncm - (size_t)m->cpl->n) * sizeof(int));
+            }
             memset(flips, 0, (size_t)m->ninter * sizeof(int));
             /* friction: the substep's start (its forces, the contact points) */
             rc_static_set_substep_start(s, t, y);
@@ -1581,7 +2215,12 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
             double slide_lim = NAN;
             const int max_rounds = RC_STATIC_ROUNDS_MIN + 2 * m->ninter;
             for (;;) {
+                update_offsets(m, d, tn, y);
                 int ch = update_modes(m, d, tn, y, ptol, ftol, &sink, NULL, &S->events, err);
+                if (ch >= 0) {
+                    const int cc = update_cpl_modes(m, d, tn, y, cplold, &sink, &S->events, err);
+                    ch = cc < 0 ? cc : ch + cc;
+                }
                 if (ch < 0) {
                     st = RC_EIO;
                     goto done;
@@ -1621,6 +2260,22 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                         snprintf(reason, sizeof reason, "a contact slides");
                         break;
                     }
+                    if (o.singular_col >= s->n && o.singular_col < s->nx) {
+                        /* a joint's row that the others repeat (or a
+                         * direction that only the joints could hold) */
+                        const int row = o.singular_col - s->n;
+                        int j = 0;
+                        while (j + 1 < m->jnt->n && m->jnt->radr[j + 1] <= row) j++;
+                        snprintf(reason, sizeof reason,
+                                 "static analysis: no equilibrium at the load time t = %.9g s: the stiffness with the "
+                                 "joints' constraint rows is singular at " RC_LOCFMT "card %s (its constraint row %d): "
+                                 "its rows repeat those of other joints, or a body it holds has no support in a "
+                                 "direction the joints leave free (add a contact or a spring, or hold it with /BCS)",
+                                 tn, RC_LOC(m->jnt->loc[j]), m->jnt->name[j], row - m->jnt->radr[j] + 1);
+                        fail_reason = reason;
+                        st = RC_SET(err, RC_ESOLVER, "%s", reason);
+                        goto done;
+                    }
                     if (o.singular_col >= 0 && o.singular_col < s->n) {
                         const int b = s->fb[o.singular_col / 6];
                         snprintf(reason, sizeof reason,
@@ -1642,7 +2297,15 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                  * return mapping */
                 commit_state(s, tn, expand(s, N_VGetArrayPointer(k.u)), y);
                 S->reinits += rounds > 0;
+                /* Inacti 5: the offsets taken up as the contacts opened
+                 * (the state changes, not the modes: no new solve unless
+                 * a mode changes) */
+                update_offsets(m, d, tn, y);
                 ch = update_modes(m, d, tn, y, ptol, ftol, &sink, flips, &S->events, err);
+                if (ch >= 0) {
+                    const int cc = update_cpl_modes(m, d, tn, y, cplold, &sink, &S->events, err);
+                    ch = cc < 0 ? cc : ch + cc;
+                }
                 if (ch < 0) {
                     st = RC_EIO;
                     goto done;
@@ -1664,6 +2327,15 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                         st = RC_SET(err, RC_ESOLVER, "%s", reason);
                         goto done;
                     }
+                if (rounds > max_rounds + (int)ncm) { /* the couplings' modes (joint stops, faces) cycle */
+                    snprintf(reason, sizeof reason,
+                             "static analysis: the active set of the joint stops and contact couplings cycles at "
+                             "the load time t = %.9g s (%d solves of the load step); try another output interval",
+                             tn, rounds);
+                    fail_reason = reason;
+                    st = RC_SET(err, RC_ESOLVER, "%s", reason);
+                    goto done;
+                }
             }
             if (ok) {
                 /* the energies over the substep (the last commit's unknowns) */
@@ -1692,9 +2364,14 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
             }
             /* failed: back to t, half the substep */
             S->nonlin_fails++;
-            memcpy(y, ysave, (size_t)m->ny * sizeof(double));
+            memcpy(y, ysave, (size_t)nyx * sizeof(double));
             memcpy(d->inter_mode, msave, (size_t)m->ninter * sizeof(int));
             memcpy(d->inter_slip, slsave, (size_t)m->ninter * sizeof(int));
+            if (ncm) {
+                memcpy(d->cpl->lmode, cplsave, (size_t)m->cpl->n * sizeof(int));
+                if (ncm > (size_t)m->cpl->n)
+                    memcpy(d->cpl->fmode, cplsave + m->cpl->n, (ncm - (size_t)m->cpl->n) * sizeof(int));
+            }
             if ((first || dtau * 0.5 < dmin) && slide >= 0) {
                 snprintf(reason, sizeof reason,
                          "static analysis: no static equilibrium at the load time t = %.9g s: the load exceeds what "
@@ -1735,6 +2412,21 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                 goto done;
             }
             dtau *= 0.5;
+        }
+        /* with joints: Newton finds the equilibrium nearest its start,
+         * which must be a stable one */
+        double ratio = 0.0;
+        if (jnt_unstable(s, t, y, &ratio)) {
+            snprintf(reason, sizeof reason,
+                     "static analysis: the equilibrium found at the load time t = %.9g s is unstable: the stiffness "
+                     "on the motions the joints allow has a positive eigenvalue (%.3g of the largest): a jointed "
+                     "body balanced against its load (an inverted pendulum, a lever over its pivot); Newton finds "
+                     "the equilibrium nearest the start: start the model nearer the stable one, or follow the motion "
+                     "with Method 2",
+                     t, ratio);
+            fail_reason = reason;
+            st = RC_SET(err, RC_ESOLVER, "%s", reason);
+            goto done;
         }
         if ((st = rc_bk_write_frame(m, d, out, &fb, tk, y, 0, err))) goto done;
         if (opt && opt->stop && *opt->stop) {
@@ -1783,7 +2475,7 @@ done:
     S->wall_time = rc_bk_wall_now() - wall0;
     if (out) {
         rc_error e2;
-        rc_output_linalg(out, -1, s ? (long)s->colptr[s->n] : -1, (long)m->nnz);
+        rc_output_linalg(out, -1, s ? (long)s->colptr[s->nx] : -1, (long)m->nnz);
         rc_status st2 = rc_output_close(out, S, st == RC_OK, fail_reason ? fail_reason : err->msg, &e2);
         if (st2 && st == RC_OK) {
             st = st2;
@@ -1802,6 +2494,8 @@ done:
     free(flips);
     free(slsave);
     free(pfsave);
+    free(cplold);
+    free(cplsave);
     return st;
 }
 

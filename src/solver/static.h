@@ -10,7 +10,11 @@
  * mass (body frame, [N m]) on it at zero velocities, in the modes of the
  * run data. A held unknown (a translation held by /BCS, the rotation of a
  * body whose rotations are held or on which no moment can act) has the
- * residual k_s u instead (k_s: its stiffness scale).
+ * residual k_s (u - u_imp) instead (k_s: its stiffness scale; u_imp the
+ * imposed displacement of an imposed translation, else 0). With joints the
+ * unknowns end with their rows' multipliers lambda (the reactions, [N] or
+ * [N m]; model/joint.h, in the order of the rows), and the residual with
+ * the rows g ([m] or [-]); the bodies' residual includes the reactions.
  *
  * Exposed here for the tests (tests/test_static.c): the residual and the
  * stiffness of a model in given modes, about a start state.
@@ -27,7 +31,7 @@ typedef struct rc_static rc_static;
  * they are); NULL: out of memory. */
 rc_static *rc_static_new(const rc_model *m, rc_data *d);
 void rc_static_free(rc_static *s);
-/* Unknowns: 6 per free body. */
+/* Unknowns: 6 per free body, then one per joint row. */
 int rc_static_size(const rc_static *s);
 /* Set the start state of the solve (the state y0 [ny]; its velocities are
  * ignored, taken as zero). */

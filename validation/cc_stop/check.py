@@ -80,6 +80,23 @@ def deck(zeta, body_body=False, meshed=False):
     return d
 
 
+K1S = 1.0e5   # the static plate's k1 [N/m^3]
+
+
+def deck_static():
+    """The plate resting on the contact coupling under gravity, only its z
+    free (/BCS 110 111), 1 mm inside the range at t = 0, for the static
+    analysis: A k1 (d0 - d) = m g."""
+    d = Deck("contact coupling carries a plate at rest: static analysis")
+    plate(d, M, SIDE, D0 - 1e-3)
+    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor")
+    d.bcs(1, 2, "110 111", title="plate: z free only")
+    d.grav(1, "Z", -9.81)
+    d.contact_coupling(1, 5, 2, D0, k1=K1S, k2=0.0, title="plate - floor")
+    d.run(1.0, 0.5)
+    return d
+
+
 def closed(zeta, s):
     """x = d0 - d during the contact (s = t - t_e)."""
     wd = W * math.sqrt(1 - zeta * zeta)
@@ -157,6 +174,17 @@ def main():
                     f"{err:.2e} of d0 - d_min (< 1e-6); (t_leave - t_enter)/2 = {(tl[0] - te[0]) / 2:.12f} s, "
                     f"tau = {taubb:.12f} s")
         rcval.check_ledger(f"cc_stop.{name}_ledger", r, 1e-6)
+    # the static analysis (--method static, in every mode): the plate rests
+    # where the faces' force A k1 (d0 - d) carries its weight
+    saved = rcval.METHOD
+    rcval.METHOD = "static"
+    r = rcval.Result(rcval.run(deck_static(), name="static"))
+    rcval.METHOD = saved
+    dref = D0 - M * 9.81 / (A * K1S)
+    err = float(np.abs(r.pos[:, 0, 2] - dref).max()) / (D0 - dref)
+    rcval.check("cc_stop.static", err < 1e-9,
+                f"static analysis: the plate at d = {r.pos[-1, 0, 2]:.12f} m against d0 - m g / (A k1) = {dref:.12f} m "
+                f"at {len(r.t)} records: max error {err:.2e} of the sink (< 1e-9)")
     rcval.finish()
 
 

@@ -48,6 +48,12 @@ int rc_constant_states(const rc_model *m, const double *y0, const char *written,
  * pair without friction of any kind; no coupling, joint or imposed
  * velocity on it. Gravity acts at the centre of mass. (body.c) */
 void rc_moment_free_bodies(const rc_model *m, char *mf);
+/* The same, with the forces through a body's centre of mass taken as no
+ * moment there when `centred` is 1: the spring and catenary couplings
+ * attached exactly at it, and the reaction of an imposed translation (a
+ * force along the component at the centre of mass); the static analysis'
+ * bodies whose rotation nothing can turn (body.c). */
+void rc_moment_free_bodies_centred(const rc_model *m, int centred, char *mf);
 /* ydot = f(t, y; modes). Returns 0, or 1 (recoverable) on a non-finite force. */
 int rc_assemble_rhs(const rc_model *m, const rc_data *d, double t, const double *y, double *ydot);
 /* Jacobian values into `val` [nnz] on the fixed pattern. */

@@ -87,19 +87,30 @@ static int side_moment_free(const rc_model *m, int i, int side)
     }
 }
 
-void rc_moment_free_bodies(const rc_model *m, char *mf)
+void rc_moment_free_bodies(const rc_model *m, char *mf) { rc_moment_free_bodies_centred(m, 0, mf); }
+
+/* The attachment point of end e (0, 1) of coupling k is the centre of
+ * mass of its body, exactly, on a spring or a catenary. */
+static int cpl_end_centred(const rc_couplings *cp, int k, int e)
+{
+    const double *s = (e ? cp->s2 : cp->s1) + 3 * k;
+    return (cp->kind[k] == RC_CPL_SPRING || cp->kind[k] == RC_CPL_CATENARY) && s[0] == 0.0 && s[1] == 0.0 &&
+           s[2] == 0.0;
+}
+
+void rc_moment_free_bodies_centred(const rc_model *m, int centred, char *mf)
 {
     for (int b = 0; b < m->nbody; b++) mf[b] = m->body_yadr[b] >= 0;
     /* imposed velocities: their reactions (a rotation's is a torque) */
     const rc_imposed *p = m->imp;
-    for (int k = 0; p && k < p->nt; k++) mf[p->tbody[k]] = 0;
+    for (int k = 0; p && k < p->nt && !centred; k++) mf[p->tbody[k]] = 0;
     for (int k = 0; p && k < p->nr; k++) mf[p->rbody[k]] = 0;
     /* couplings (springs, catenaries, contact couplings, joint stops) and
      * joints: forces at attachment points, moments */
     const rc_couplings *cp = m->cpl;
     for (int k = 0; cp && k < cp->n; k++) {
-        if (cp->b1[k] >= 0) mf[cp->b1[k]] = 0;
-        if (cp->b2[k] >= 0) mf[cp->b2[k]] = 0;
+        if (cp->b1[k] >= 0 && !(centred && cpl_end_centred(cp, k, 0))) mf[cp->b1[k]] = 0;
+        if (cp->b2[k] >= 0 && !(centred && cpl_end_centred(cp, k, 1))) mf[cp->b2[k]] = 0;
     }
     const rc_joints *jn = m->jnt;
     for (int k = 0; jn && k < jn->n; k++) {

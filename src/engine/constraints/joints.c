@@ -505,6 +505,17 @@ void rc_jnt_report(const rc_model *m, int j, const double *Y, double force[3], d
     }
 }
 
+void rc_jnt_rows(const rc_model *m, int j, const double *ya, const double *yb, double *g, double (*w)[12])
+{
+    jnt_rows_r(m, j, ya, yb, g, w);
+}
+
+void rc_jnt_rows_cx(const rc_model *m, int j, const double complex *ya, const double complex *yb, double complex *g,
+                    double complex (*w)[12])
+{
+    jnt_rows_c(m, j, ya, yb, g, w);
+}
+
 double rc_jnt_work_done(const rc_model *m, const double *Y) { return Y[m->ny + 2 * m->jnt->nrows]; }
 
 void rc_jnt_frame(const rc_model *m, const double *Y, double *force, double *moment, double *drift_pos,

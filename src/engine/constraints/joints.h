@@ -5,6 +5,7 @@
 #ifndef RC_ENGINE_JOINTS_H
 #define RC_ENGINE_JOINTS_H
 
+#include <complex.h>
 #include <stdint.h>
 
 #include "model/joint.h"
@@ -61,6 +62,17 @@ rc_status rc_jnt_check_initial(const rc_model *m, rc_jnt_work *w, const double *
  * its point, distance and slide rows [m] and of its angle rows [-]. */
 void rc_jnt_report(const rc_model *m, int j, const double *Y, double force[3], double moment[3], double *drift_pos,
                    double *drift_ang);
+/* The rows of joint j at the poses of its bodies, ya and yb (x [m], then
+ * the quaternion; 7 values each, the ground's or a fixed body's pose for
+ * a body that is not free: rc_body_state): their values g[nrow] ([m] for
+ * point, distance and slide rows, [-] for angle rows) and unit wrenches
+ * w[nrow] = (F_a, tau_a, F_b, tau_b), global (the rows of G and the
+ * generalised forces of unit multipliers, docs/theory.md 7.4). Real, and
+ * complex for derivatives by complex step (the static analysis'
+ * constraint rows, solver/static.c). Pure. */
+void rc_jnt_rows(const rc_model *m, int j, const double *ya, const double *yb, double *g, double (*w)[12]);
+void rc_jnt_rows_cx(const rc_model *m, int j, const double complex *ya, const double complex *yb, double complex *g,
+                    double complex (*w)[12]);
 /* Work of the reactions (the last component of Y) [J]. */
 double rc_jnt_work_done(const rc_model *m, const double *Y);
 /* The values of every joint for a record (Y a record vector): force [3n], moment [3n], drifts

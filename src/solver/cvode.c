@@ -88,7 +88,8 @@ typedef struct run_ctx {
     int *old_mode, *old_branch, *old_track, *old_slip; /* the modes before a root return's events */
     int *old_pslip;                                    /* [npt] the contact points' modes before them */
     double *jshare; /* [npt] the contact points' shares when the Jacobian was last evaluated */
-    double *jflim;  /* [ninter] the slipping interfaces' friction limits then (rc_scratch.inter_flim) */
+    double *jflim;  /* [2 ninter] the slipping interfaces' friction limits and sliding speeds then
+                       (rc_scratch.inter_flim) */
     int fresh; /* modes changed without a restart: the Jacobian is stale */
     double h_restart; /* the first step of the last restart [s] (restart_step) */
     int own_h0;       /* the integrator runs from a restart with h_restart, no step taken yet */
@@ -157,20 +158,28 @@ static int shares_moved(const run_ctx *c)
     return 0;
 }
 
-/* Has the friction limit of a slipping interface doubled or halved (beyond
- * its force band) since the Jacobian was evaluated (jflim)? The slip law's
- * rows turn and load the state at K_t |v_t| / L_r (kernels.inc, L_r about
- * the limit): a ball striking a stiff wall while sliding raises the limit
- * from 1e2 to 1e8 N within 1e-8 s, and a Newton matrix kept from the first
- * steps of it, a million times too stiff, let every correction of the state
- * follow the predictor: the state grew at K_t |v_t| to 300 times its limit
- * (20 J stored in the stick spring, energy_friction falling by as much). */
+/* Has the friction limit or the sliding speed of a slipping interface
+ * doubled or halved (beyond its force band, its slip speed band) since the
+ * Jacobian was evaluated (jflim)? The slip law's rows turn and load the
+ * state at K_t |v_t| / L_r (kernels.inc, L_r about the limit), a stiff
+ * rate: a Newton matrix whose rate is off by more than a factor 2 makes the
+ * iteration diverge in the directions the rate acts on, or, too stiff, damps
+ * every correction there. A ball striking a stiff wall while sliding raises
+ * the limit from 1e2 to 1e8 N within 1e-8 s; with a matrix kept from the
+ * first steps of it the corrections followed the predictor and the state grew
+ * at K_t |v_t| to 300 times its limit (20 J stored in the stick spring,
+ * energy_friction falling by as much). A block sliding down an incline
+ * speeds up from rest a hundredfold; with a matrix kept from its first
+ * millimetres the iteration amplified the rounding across the fall line to
+ * a lateral velocity of 6e-6 m/s within one step. */
 static int limits_moved(const run_ctx *c)
 {
     const double *l = c->d->sc->inter_flim, *lj = c->jflim;
     for (int i = 0; i < c->m->ninter; i++) {
-        const double a = l[i], b = lj[i], fb = c->m->inter_fr[i].fband;
-        if (a > 2.0 * b + fb || b > 2.0 * a + fb) return 1;
+        const double fb = c->m->inter_fr[i].fband, vs = c->m->inter_vscale[i];
+        const double vb = isfinite(vs) && vs > 0 ? RC_SLIP_BAND * vs : c->m->atol_vel;
+        const double a = l[2 * i], b = lj[2 * i], va = l[2 * i + 1], vj = lj[2 * i + 1];
+        if (a > 2.0 * b + fb || b > 2.0 * a + fb || va > 2.0 * vj + vb || vj > 2.0 * va + vb) return 1;
     }
     return 0;
 }
@@ -205,7 +214,7 @@ static int cb_linsys(realtype t, N_Vector y, N_Vector fy, SUNMatrix A, booleanty
             /* the shares of a whole Jacobian (a patched one keeps the other
              * points' blocks, and their shares, from the last whole one) */
             if (m->npt > 0) memcpy(c->jshare, c->d->sc->pt_share, (size_t)m->npt * sizeof(double));
-            memcpy(c->jflim, c->d->sc->inter_flim, (size_t)m->ninter * sizeof(double));
+            memcpy(c->jflim, c->d->sc->inter_flim, 2 * (size_t)m->ninter * sizeof(double));
         }
         *jcur = SUNTRUE;
         /* new values, perhaps new active slots: the part follows */
@@ -386,7 +395,7 @@ static rc_status cv_open(void *self, const rc_model *m, rc_data *d, const rc_run
     c->old_pslip = calloc((size_t)m->npt + 1, sizeof(int));
     c->jsave = calloc((size_t)m->nnz + 1, sizeof(double));
     c->jshare = calloc((size_t)m->npt + 1, sizeof(double));
-    c->jflim = calloc((size_t)m->ninter + 1, sizeof(double));
+    c->jflim = calloc(2 * (size_t)m->ninter + 1, sizeof(double));
     c->kidx = malloc(ny * sizeof(int));
     c->ridx = malloc(ny * sizeof(int));
     c->qoff = malloc(((size_t)m->nbody + 1) * sizeof(int));

@@ -210,7 +210,7 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         if (rc) rc->key[4 * i] = -1;
         double *gi = g + RC_ROOTS_PER_INTER * i;
         for (int k = 0; k < RC_ROOTS_PER_INTER; k++) gi[k] = 1.0; /* inactive roots */
-        d->sc->inter_flim[i] = 0.0;
+        d->sc->inter_flim[2 * i] = d->sc->inter_flim[2 * i + 1] = 0.0;
         gi[RC_ROOT_TSTART] = t - m->inter_tstart[i];
         gi[RC_ROOT_TSTOP] = t - m->inter_tstop[i];
         const int mode = d->inter_mode[i], br = d->inter_branch[i], trk = d->inter_track[i];
@@ -267,8 +267,11 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         /* friction: stick -> slip at the limit, slip -> stick when sliding stops */
         if (mode == RC_MODE_CLOSED && m->inter_fr[i].kind != RC_FK_NONE) gi[RC_ROOT_SLIP] = r.slip_root;
         if (mode == RC_MODE_CLOSED && d->inter_slip[i] && npt == 0 && m->inter_fr[i].kind != RC_FK_NONE &&
-            m->inter_fr[i].form == RC_FF_INCREMENTAL && m->inter_fr[i].tidx >= 0 && isfinite(r.flim))
-            d->sc->inter_flim[i] = r.flim;
+            m->inter_fr[i].form == RC_FF_INCREMENTAL && m->inter_fr[i].tidx >= 0 && isfinite(r.flim) &&
+            isfinite(r.vslip)) {
+            d->sc->inter_flim[2 * i] = r.flim;
+            d->sc->inter_flim[2 * i + 1] = r.vslip;
+        }
         /* saturated stateless law: its force -L v_t/|v_t| flips when the sliding
          * reverses; the saturation root dips below zero only in a velocity window
          * of width ~L/C that a step may jump, so watch v_t . d_ref as well */

@@ -49,7 +49,7 @@ rc_data *rc_data_new(const rc_model *m)
     d->pt_slip = calloc((size_t)m->npt + 1, sizeof(int));
     d->sc->pt_share = malloc(((size_t)m->npt + 1) * sizeof(double));
     d->pt_lband = calloc((size_t)m->npt + 1, sizeof(double));
-    d->sc->inter_flim = calloc((size_t)m->ninter + 1, sizeof(double));
+    d->sc->inter_flim = calloc(2 * (size_t)m->ninter + 1, sizeof(double));
     if (d->sc->pt_share)
         for (int j = 0; j <= m->npt; j++) d->sc->pt_share[j] = 1.0;
     d->sc->pt_work = calloc(RC_PT_OUT * (size_t)maxpt + 4 * ((size_t)RC_NS_MAX + 6 * (size_t)maxpt) + 16, sizeof(double));

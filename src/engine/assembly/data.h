@@ -20,10 +20,11 @@ typedef struct rc_scratch {
     double *pt_share;    /* [npt] each contact point's share w_j at the last evaluation of the
                             roots (the integrator's step ends; 0 while its interface is not
                             closed): its states' error weights (rc_point_ewt_scale) */
-    double *inter_flim;  /* [ninter] the friction limit [N] of each interface whose single
-                            incremental friction state slips, at the last evaluation of the
-                            roots (0: not closed, sticking, no such state): the slip law's
-                            Jacobian rows scale with its inverse (cvode.c, limits_moved) */
+    double *inter_flim;  /* [2 ninter] the friction limit [N] and the sliding speed |v_t|
+                            [m/s] of each interface whose single incremental friction state
+                            slips, at the last evaluation of the roots (0: not closed,
+                            sticking, no such state): the slip law's Jacobian rows turn the
+                            state at K_t |v_t| / L_r (cvode.c, limits_moved) */
     void *pt_work;       /* Jacobian scratch of the contact points (complex) */
     void *node_cache;    /* node geometry of a node pair, RC_NODE_CACHE complex
                             values per point (kernels.inc, seg_fill); it

@@ -10,6 +10,7 @@
  *   cards_friction.c    /FRICTION /FRIC_ORIENT
  *   cards_couplings.c   /COUPLING/SPRING /COUPLING/CATENARY /COUPLING/CONTACT
  *   cards_joints.c      /JOINT/SPHERICAL /JOINT/REVOLUTE /JOINT/DISTANCE /JOINT/FIXED /JOINT/PRISMATIC
+ *   cards_rwall.c       /RWALL/PLANE /RWALL/CYL /RWALL/SPHER /RWALL/PARAL
  *   cards_loads.c       /FUNCT /INIVEL /GRAV /BCS /IMPVEL
  *   cards_run.c         /BEGIN /RUN /SOLVER, deck-level defaults and checks
  */
@@ -29,7 +30,7 @@ typedef enum {
     RC_CARD_TYPE6, RC_CARD_FUNCT, RC_CARD_INIVEL, RC_CARD_GRAV, RC_CARD_BCS, RC_CARD_RUN,
     RC_CARD_SOLVER, RC_CARD_CPL_SPRING, RC_CARD_CPL_CATENARY, RC_CARD_PART, RC_CARD_GRPART,
     RC_CARD_FRICTION, RC_CARD_FRIC_ORIENT, RC_CARD_POWER, RC_CARD_CYL, RC_CARD_BOX, RC_CARD_IMPVEL,
-    RC_CARD_UNIT, RC_CARD_SEG, RC_CARD_SURFPART, RC_CARD_CPL_CONTACT, RC_CARD_JOINT
+    RC_CARD_UNIT, RC_CARD_SEG, RC_CARD_SURFPART, RC_CARD_CPL_CONTACT, RC_CARD_JOINT, RC_CARD_RWALL
 } rc_card_kind;
 
 /* Supported cards; a family (kw with a sub) lists each subtype. */
@@ -55,6 +56,8 @@ static const struct {
     {"JOINT", "SPHERICAL", RC_CARD_JOINT}, {"JOINT", "REVOLUTE", RC_CARD_JOINT},
     {"JOINT", "DISTANCE", RC_CARD_JOINT},  {"JOINT", "FIXED", RC_CARD_JOINT},
     {"JOINT", "PRISMATIC", RC_CARD_JOINT},
+    {"RWALL", "PLANE", RC_CARD_RWALL},     {"RWALL", "CYL", RC_CARD_RWALL},
+    {"RWALL", "SPHER", RC_CARD_RWALL},     {"RWALL", "PARAL", RC_CARD_RWALL},
 };
 
 /* Radioss cards without meaning for rigid bodies: skipped with a warning. */
@@ -138,6 +141,7 @@ static rc_status rc_card_call(rc_reader *rd, const rc_block *b, rc_card_kind kin
     case RC_CARD_SEG: return rc_card_seg(rd, b);
     case RC_CARD_SURFPART: return rc_card_surfpart(rd, b);
     case RC_CARD_JOINT: return rc_card_joint(rd, b);
+    case RC_CARD_RWALL: return rc_card_rwall(rd, b);
     }
     return RC_SET(rd->err, RC_EINTERNAL, "unknown card kind %d", (int)kind);
 }
@@ -154,6 +158,7 @@ static int rc_radioss_subtype(const char *kw, const char *sub)
     static const char *const grpart[] = {"PART", "GRPART", "BOX", "BOX2", "MAT", "PROP", "SUBSET", "SUBMOD"};
     static const char *const inivel[] = {"TRA", "ROT", "T&R", "AXIS", "GRID", "FVM", "NODE"};
     static const char *const inter[] = {"SUB", "KINE", "LAGMUL", "HERTZ"};
+    static const char *const rwall[] = {"PLANE", "CYL", "SPHER", "PARAL", "LAGMUL", "THERM"};
     if (strcmp(kw, "INTER") == 0) {
         if (strncmp(sub, "TYPE", 4) == 0 && sub[4] >= '0' && sub[4] <= '9') {
             const char *p = sub + 4;
@@ -166,6 +171,7 @@ static int rc_radioss_subtype(const char *kw, const char *sub)
     if (strcmp(kw, "GRNOD") == 0) return rc_in_list(sub, grnod, RC_NF(grnod));
     if (strcmp(kw, "GRPART") == 0) return rc_in_list(sub, grpart, RC_NF(grpart));
     if (strcmp(kw, "INIVEL") == 0) return rc_in_list(sub, inivel, RC_NF(inivel));
+    if (strcmp(kw, "RWALL") == 0) return rc_in_list(sub, rwall, RC_NF(rwall));
     return 0; /* /JOINT, /COUPLING: ricochet's own */
 }
 

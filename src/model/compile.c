@@ -22,6 +22,7 @@
 #include "model/model.h"
 #include "base/progress.h"
 #include "model/power.h"
+#include "model/rwall.h"
 
 #define ALLOC(ptr, n)                                                               \
     do {                                                                            \
@@ -321,12 +322,14 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
 }
 
 /* ---- surfaces ---------------------------------------------------------- */
-static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
+static rc_status compile_surfaces(const rc_case *c, rc_model *m, const rc_rwall_case *rx, rc_error *err)
 {
-    /* the boxes that meet a plane or a box: their corners and faces too */
+    /* the boxes that meet a plane or a box (a plane wall too): their
+     * corners and faces too */
     unsigned char *corners = malloc((size_t)c->nsurf + 1);
     if (!corners) RC_RAISE(err, RC_ENOMEM, "out of memory");
     rc_geom_box_corner_flags(c, corners); /* model/geom.c */
+    rc_rwall_box_flags(rx, corners);      /* model/rwall.c */
     rc_status st = RC_OK;
     for (int s = 0; s < c->nsurf && !st; s++) {
         const rc_case_surf *cs = &c->surf[s];
@@ -439,8 +442,9 @@ static rc_status check_hysteresis(const rc_model *m, int i, const rc_case_type6 
 static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *err)
 {
     const rc_case_type6 *t6 = &c->type6[i];
-    char card[64];
-    snprintf(card, sizeof card, "/INTER/TYPE6/%d", t6->id);
+    char card[128];
+    if (t6->name) snprintf(card, sizeof card, "%s", t6->name); /* a wall's contact (model/rwall.c) */
+    else snprintf(card, sizeof card, "/INTER/TYPE6/%d", t6->id);
     int s1 = rc_case_find_surf(c, t6->surf1), s2 = rc_case_find_surf(c, t6->surf2);
     if (s1 < 0 || s2 < 0)
         RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field %s: expected the id of a /SURF, got %d (no such surface)",
@@ -662,8 +666,16 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
 {
     rc_status st = RC_OK;
     *out = NULL;
+    /* the rigid walls: the case with their surfaces, load curve and (once
+     * the bodies and surfaces are known) contacts appended (model/rwall.c) */
+    rc_rwall_case rx;
+    if ((st = rc_rwall_begin(c, &rx, err))) return st;
+    c = &rx.c;
     rc_model *m = calloc(1, sizeof *m);
-    if (!m) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    if (!m) {
+        rc_rwall_end(&rx);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
     /* provenance and settings */
     m->case_path = malloc(strlen(c->path) + 1);
     if (!m->case_path) {
@@ -803,6 +815,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->body_dofmask, 6 * m->nbody);
     ALLOC(m->body_loc, m->nbody);
     if ((st = compile_bodies(c, m, err))) goto fail;
+    if ((st = rc_rwall_bodies(&rx, m, err))) goto fail;
     /* surfaces */
     m->nsurf = c->nsurf;
     ALLOC(m->surf_id, m->nsurf);
@@ -814,8 +827,9 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->surf_ext, RC_SURF_NEXT * m->nsurf);
     ALLOC(m->surf_nadr, m->nsurf + 1);
     ALLOC(m->surf_sadr, m->nsurf + 1);
-    if ((st = compile_surfaces(c, m, err))) goto fail;
+    if ((st = compile_surfaces(c, m, &rx, err))) goto fail;
     if ((st = rc_seg_meshes(m, err))) goto fail; /* model/segsurf.c */
+    if ((st = rc_rwall_contacts(&rx, m, err))) goto fail; /* the walls' contacts, TYPE6 laws */
     /* interfaces */
     m->ninter = c->ntype6 + c->npower; /* TYPE6, then /INTER/POWER */
     ALLOC(m->inter_id, m->ninter);
@@ -882,9 +896,11 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
         for (int k = 0; k < 3; k++) m->body_y0[RC_NB * b + k] -= m->origin[k];
     for (int k = 0; k < 3; k++) m->ground_y0[k] = 0.0;
     own_locations(c, m);
+    rc_rwall_end(&rx);
     *out = m;
     return RC_OK;
 fail:
+    rc_rwall_end(&rx);
     rc_model_free(m);
     return st;
 }

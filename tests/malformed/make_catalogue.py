@@ -298,7 +298,7 @@ T('run_dtout_negative', RUN, 'field Dt_out', at(RUN, 1, 21, 40, '-0.01'))
 T('run_ev_state', RUN, 'field Ev_state', at(RUN, 1, 41, 50, '3'))
 T('run_twice', RUN, 'only one such card', before_end([RUN, '                   2']))
 T('run_missing', '-', 'no /RUN card', chain(delete(RUN, 0, 2), lambda l: (l, hidx(l, '/END'), {})))
-T('solver_method', SOL, 'field Method', at(SOL, 1, 1, 10, '3'))
+T('solver_method', SOL, 'field Method', at(SOL, 1, 1, 10, '4'))
 # ---- /JOINT
 T('joint_body_same', JT, 'field rbody_ID2', at(JT, 2, 11, 20, '4'))
 T('joint_body_missing', JT, 'field rbody_ID1', at(JT, 2, 1, 10, '9'))
@@ -418,6 +418,38 @@ def start_overlap(z):
 TL('start_sphere_inside_floor', '/INTER/TYPE6/1', 'overlap at t = 0: penetration 0.04 m', start_overlap('0.01'))
 TL('start_sphere_half_inside_floor', '/INTER/TYPE6/1', 'surfaces /SURF/ELLIPS/1 and /SURF/PLANE/2 overlap',
    start_overlap('0.02'))
+
+
+# ---- /RWALL (a plane 10 m below the scene unless a fault says otherwise)
+RW = '/RWALL/PLANE/9'
+
+
+def RWALL(kind='PLANE', l1=(0, 0, 1, 0), l2=None, m=('0', '0', '-10'), m1=('0', '0', '-9'), extra=(), head=None):
+    out = [head or '/RWALL/%s/9' % kind, 'wall', ''.join('%10s' % v for v in l1)]
+    out.append(l2 if l2 is not None else '')
+    out.append(''.join('%20s' % v for v in m))
+    if m1 is not None:
+        out.append(''.join('%20s' % v for v in m1))
+    return out + list(extra)
+
+
+TL('rwall_slide_tied', RW, 'field Slide', before_end(RWALL(l1=(0, 1, 1, 0)), expect=2))
+TL('rwall_moving_node', RW, 'field node_ID', before_end(RWALL(l1=(1, 0, 1, 0)), expect=2))
+TL('rwall_group_missing', RW, 'field grnd_ID1', before_end(RWALL(l1=(0, 0, 99, 0)), expect=2))
+TL('rwall_group2_missing', RW, 'field grnd_ID2', before_end(RWALL(l1=(0, 0, 1, 98)), expect=2))
+TL('rwall_no_node', RW, 'field grnd_ID1', before_end(RWALL(l1=(0, 0, 0, 0)), expect=2))
+TL('rwall_fric_text', RW, 'field fric', before_end(RWALL(l1=(0, 2, 1, 0), l2='%20s%20s' % ('0', 'abc')), expect=3))
+TL('rwall_ifq', RW, 'field ifq', before_end(RWALL(l1=(0, 2, 1, 0), l2='%20s%20s%20s%20s%10s' % ('0', '0.3', '0', '0.5', '1')),
+                                           expect=3))
+TL('rwall_m1_equals_m', RW, 'field XM1 YM1 ZM1', before_end(RWALL(m1=('0', '0', '-10')), expect=5))
+TL('rwall_missing_line', RW, 'expected 4 data lines', before_end(RWALL(m1=None), expect=0))
+TL('rwall_sphere_diameter', '/RWALL/SPHER/9', 'field Diameter', before_end(RWALL('SPHER', m1=None), expect=3))
+TL('rwall_cyl_box', '/RWALL/CYL/9', 'field grnd_ID1',
+   before_end(RWALL('CYL', l1=(0, 0, 3, 0), l2='%20s%20s%20s' % ('0', '0', '1'), m1=('1', '0', '-10')), expect=2))
+TL('rwall_paral', '/RWALL/PARAL/9', 'not supported yet',
+   before_end(RWALL('PARAL', extra=['%20s%20s%20s' % ('1', '0', '-10')]), expect=0))
+TL('rwall_lagmul', '/RWALL/LAGMUL/9', 'not supported yet', before_end(RWALL(head='/RWALL/LAGMUL/9'), expect=0))
+TL('rwall_duplicate', RW, 'duplicate id 9', before_end(RWALL() + RWALL(), expect=6))
 
 
 def write_all():

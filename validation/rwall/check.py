@@ -98,8 +98,9 @@ def check_drop(name, r, z_wall):
     after = r.t > t1
     apex = z[after].max()
     rcval.check(f"rwall.{name}.no_rebound", apex <= 1.5 * E_WALL**2 * H,
-                f"highest lowest point after the impact {apex:.3e} m; with the wall's restitution {E_WALL:g}: "
-                f"at most e^2 h = {E_WALL**2 * H:.1e} m (< 1.5 e^2 h); a kinematic wall: 0")
+                f"the ball's lowest point after the impact reaches {apex:.3e} m (< {1.5 * E_WALL**2 * H:.1e}, 1.5 e^2 h: "
+                f"the rebound of the wall's restitution e = {E_WALL:g}; a kinematic wall: 0); "
+                f"{len(r.events('contact_separate'))} separations")
     pen = -z[-1]
     e = rcval.rel(pen, PEN)
     rcval.check(f"rwall.{name}.rest", e < 1e-3 and np.linalg.norm(r.vel[-1, 0]) < 1e-6,

@@ -214,15 +214,46 @@ static void test_rwall_model(void)
     rc_model_free(m);
 }
 
+/* A plane wall on bodies without surfaces: their nodes of the wall's set
+ * are its contact points (a segment surface of points). */
+static void test_rwall_nodes(void)
+{
+    static const char cube[] = "/NODE\n1,0,0,0.2\n11,-0.1,-0.1,0.1\n12,0.1,-0.1,0.1\n13,0.1,0.1,0.1\n14,-0.1,0.1,0.1\n"
+                               "15,-0.1,-0.1,0.3\n16,0.1,-0.1,0.3\n17,0.1,0.1,0.3\n18,-0.1,0.1,0.3\n19,5,5,5\n"
+                               "/RBODY/1\ncube\n         1                                                 2         2\n"
+                               "0.0133,0.0133,0.0133\n0,0,0\n"
+                               "/RBODY/2\nball\n        19                                                 1\n0.001,0.001,0.001\n0,0,0\n"
+                               "/SURF/ELLIPS/21\nb\n0,2,2\n5,5,5\n0.05,0.05,0.05\n"
+                               "/GRNOD/NODE/2\ncorners\n11,12,13,14,15,16,17,18\n/GRNOD/NODE/3\nbottom and ball\n11,12,13,14,19\n"
+                               "/RWALL/PLANE/3\nfloor\n0,0,3,0\n\n0,0,-0.1\n0,0,1\n/RUN\n1,0.01\n/END\n";
+    rc_model *m = TU_COMPILE_OK(cube, "rwcube.rad");
+    if (m) {
+        ENSURE(m->ninter == 2 && m->nsurf == 3);
+        for (int i = 0; i < m->ninter; i++) {
+            if (strcmp(m->inter_name[i], "/RWALL/PLANE/3 with the nodes of /RBODY/1") == 0) {
+                /* the 4 bottom nodes of group 3 that are the cube's, not 19 */
+                const int s = m->inter_sa[i];
+                ENSURE(m->inter_pair[i] == RC_PAIR_SEG_PLANE && m->surf_kind[s] == RC_SURF_SEG && m->surf_id[s] == -4);
+                ENSURE(m->surf_nadr[s + 1] - m->surf_nadr[s] == 4 && m->surf_sadr[s + 1] == m->surf_sadr[s]);
+                ENSURE(m->inter_npt[i] == 0 && m->surf_body[s] == 0);
+            } else {
+                /* the ball has a surface: its sphere, not its node */
+                ENSURE(strcmp(m->inter_name[i], "/RWALL/PLANE/3 with /SURF/ELLIPS/21") == 0);
+            }
+        }
+    }
+    rc_model_free(m);
+}
+
 static void test_rwall_errors(void)
 {
-    /* a wall on a body without surfaces */
+    /* a sphere wall on a body without surfaces */
     static const char bare[] = "/NODE\n1,0,0,0.1\n2,1,0,0.1\n"
                                "/RBODY/1\nball\n         1                                                 1\n0.001,0.001,0.001\n0,0,0\n"
                                "/RBODY/2\nbare\n         2                                                 1\n0.001,0.001,0.001\n0,0,0\n"
                                "/SURF/ELLIPS/11\nb1\n0,2,1\n0,0,0.1\n0.05,0.05,0.05\n/GRNOD/NODE/1\nboth\n1,2\n"
-                               "/RWALL/PLANE/8\nfloor\n0,0,1,0\n\n0,0,0\n0,0,1\n/RUN\n1,0.01\n/END\n";
-    TU_EXPECT_TEXT_ERROR(bare, "rwbare.rad", "rwbare.rad:24: card /RWALL/PLANE/8, field grnd_ID1",
+                               "/RWALL/SPHER/8\nball wall\n0,0,1,0\n0,0,1\n0,0,-0.5\n/RUN\n1,0.01\n/END\n";
+    TU_EXPECT_TEXT_ERROR(bare, "rwbare.rad", "rwbare.rad:24: card /RWALL/SPHER/8, field grnd_ID1",
                          "/RBODY/2, which carries no surface", "not supported yet");
     /* a node of grnd_ID1 on no body */
     static const char loose[] = "/NODE\n1,0,0,0.1\n2,1,0,0.1\n"
@@ -244,5 +275,6 @@ void suite_rwall(void)
 {
     RUN_TEST(test_rwall_layouts);
     RUN_TEST(test_rwall_model);
+    RUN_TEST(test_rwall_nodes);
     RUN_TEST(test_rwall_errors);
 }

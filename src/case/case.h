@@ -122,6 +122,11 @@ typedef struct rc_case_surf {
     int *part;                /* [npart] */
     rc_loc *part_loc;         /* [npart] */
     rc_loc rbody_loc;         /* the line holding rbody_ID (the header's when absent) */
+    /* SEG made by the compiler for a rigid wall (model/rwall.c): node ids
+     * that are contact points alone, without segments (nseg = 0); not
+     * owned by the case */
+    int npoint;
+    const int *point;         /* [npoint] */
 } rc_case_surf;
 
 /* /INTER/TYPE6/inter_ID: every field of the six data lines. */

@@ -828,6 +828,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->surf_nadr, m->nsurf + 1);
     ALLOC(m->surf_sadr, m->nsurf + 1);
     if ((st = compile_surfaces(c, m, &rx, err))) goto fail;
+    if ((st = rc_rwall_points(&rx, m, err))) goto fail; /* a plane wall's nodes of bodies without surfaces */
     if ((st = rc_seg_meshes(m, err))) goto fail; /* model/segsurf.c */
     if ((st = rc_rwall_contacts(&rx, m, err))) goto fail; /* the walls' contacts, TYPE6 laws */
     /* interfaces */

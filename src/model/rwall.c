@@ -27,6 +27,7 @@
 
 #include "base/error.h"
 #include "model/rwall.h"
+#include "model/segsurf.h"
 
 static const char *const rc_rwall_type[] = {"", "PLANE", "CYL", "SPHER", "PARAL"};
 
@@ -38,7 +39,9 @@ rc_status rc_rwall_begin(const rc_case *c, rc_rwall_case *x, rc_error *err)
     x->surf = calloc((size_t)(c->nsurf + c->nrwall), sizeof *x->surf);
     x->funct = calloc((size_t)c->nfunct + 1, sizeof *x->funct);
     x->acts = calloc((size_t)c->nrwall * (size_t)(c->nrbody + 1), 1);
-    if (!x->surf || !x->funct || !x->acts) {
+    x->nodes = calloc((size_t)c->nrwall * (size_t)(c->nnode + 1), 1);
+    x->nuser = c->nsurf;
+    if (!x->surf || !x->funct || !x->acts || !x->nodes) {
         rc_rwall_end(x);
         RC_RAISE(err, RC_ENOMEM, "out of memory");
     }
@@ -157,10 +160,87 @@ rc_status rc_rwall_bodies(rc_rwall_case *x, const rc_model *m, rc_error *err)
                 break;
             }
             /* a fixed body never meets a fixed wall */
-            if (!m->body_fixed[b]) x->acts[(size_t)w * (size_t)c->nrbody + (size_t)b] = 1;
+            if (m->body_fixed[b]) continue;
+            x->acts[(size_t)w * (size_t)c->nrbody + (size_t)b] = 1;
+            x->nodes[(size_t)w * (size_t)c->nnode + (size_t)n] = 1;
         }
     }
     free(flag);
+    return st;
+}
+
+/* Grow a model array of the surfaces from n to n + add entries of `size`
+ * bytes, the new ones zero. */
+static int grow(void *pp, int n, int add, size_t size)
+{
+    void **p = pp;
+    char *q = realloc(*p, ((size_t)(n + add) + 1) * size);
+    if (!q) return -1;
+    memset(q + (size_t)n * size, 0, ((size_t)add + 1) * size);
+    *p = q;
+    return 0;
+}
+
+rc_status rc_rwall_points(rc_rwall_case *x, rc_model *m, rc_error *err)
+{
+    rc_case *c = &x->c;
+    if (c->nrwall == 0) return RC_OK;
+    /* the (plane wall, body without surface) pairs */
+    int n = 0, idmax = 0;
+    for (int w = 0; w < c->nrwall; w++) idmax = w == 0 || c->rwall[w].id > idmax ? c->rwall[w].id : idmax;
+    unsigned char *bare = calloc((size_t)c->nrbody + 1, 1);
+    if (!bare) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    for (int b = 0; b < c->nrbody; b++) bare[b] = 1;
+    for (int s = 0; s < x->nuser; s++)
+        if (m->surf_body[s] >= 0) bare[m->surf_body[s]] = 0;
+    for (int w = 0; w < c->nrwall; w++)
+        for (int b = 0; b < c->nrbody; b++)
+            n += c->rwall[w].kind == RC_RWALL_PLANE && bare[b] && x->acts[(size_t)w * (size_t)c->nrbody + (size_t)b];
+    if (n == 0) {
+        free(bare);
+        return RC_OK;
+    }
+    const int s0 = c->nsurf;
+    rc_case_surf *ns = realloc(x->surf, ((size_t)(s0 + n) + 1) * sizeof *ns);
+    if (ns) x->surf = c->surf = ns;
+    x->pts_wall = calloc((size_t)n + 1, sizeof *x->pts_wall);
+    x->pts_node = calloc((size_t)n + 1, sizeof *x->pts_node);
+    if (!ns || !x->pts_wall || !x->pts_node || grow(&m->surf_id, s0, n, sizeof *m->surf_id) ||
+        grow(&m->surf_kind, s0, n, sizeof *m->surf_kind) || grow(&m->surf_body, s0, n, sizeof *m->surf_body) ||
+        grow(&m->surf_p, 3 * s0, 3 * n, sizeof *m->surf_p) || grow(&m->surf_n, 3 * s0, 3 * n, sizeof *m->surf_n) ||
+        grow(&m->surf_r, s0, n, sizeof *m->surf_r) ||
+        grow(&m->surf_ext, RC_SURF_NEXT * s0, RC_SURF_NEXT * n, sizeof *m->surf_ext) ||
+        grow(&m->surf_nadr, s0 + 1, n, sizeof *m->surf_nadr) || grow(&m->surf_sadr, s0 + 1, n, sizeof *m->surf_sadr)) {
+        free(bare);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    /* one surface of points per pair: the wall's nodes of the body, in the
+     * order of /NODE; ids below every wall's -rwall_ID */
+    rc_status st = RC_OK;
+    for (int w = 0; w < c->nrwall && !st; w++)
+        for (int b = 0; b < c->nrbody && !st; b++) {
+            if (c->rwall[w].kind != RC_RWALL_PLANE || !bare[b] || !x->acts[(size_t)w * (size_t)c->nrbody + (size_t)b])
+                continue;
+            const int k = x->npts, s = s0 + k;
+            int *ids = malloc(((size_t)c->nnode + 1) * sizeof *ids), np = 0;
+            if (!ids) {
+                st = RC_SET(err, RC_ENOMEM, "out of memory");
+                break;
+            }
+            for (int j = 0; j < c->nnode; j++)
+                if (x->nodes[(size_t)w * (size_t)c->nnode + (size_t)j] && rc_case_body_of_node(c, c->node[j].id) == b)
+                    ids[np++] = c->node[j].id;
+            x->pts_node[k] = ids;
+            x->pts_wall[k] = w;
+            x->npts++;
+            c->surf[s] = (rc_case_surf){.id = -(idmax + 1 + k), .kind = RC_CASE_SURF_SEG, .loc = c->rwall[w].loc,
+                                        .rbody_loc = c->rwall[w].loc, .npoint = np, .point = ids};
+            c->nsurf = m->nsurf = s + 1;
+            m->surf_nadr[s + 1] = m->surf_nadr[s];
+            m->surf_sadr[s + 1] = m->surf_sadr[s];
+            st = rc_seg_surface(c, m, s, err); /* model/segsurf.c */
+        }
+    free(bare);
     return st;
 }
 
@@ -182,9 +262,10 @@ rc_status rc_rwall_contacts(rc_rwall_case *x, const rc_model *m, rc_error *err)
     rc_case *c = &x->c;
     if (c->nrwall == 0) return RC_OK;
     static const char *const kinds[] = {"", "PLANE", "ELLIPS", "CYL", "BOX", "SEG", "PART"};
-    const int nuser = c->nsurf - c->nrwall;
-    /* one contact per wall and surface of a body it acts on */
-    int n = 0;
+    const int nuser = x->nuser, p0 = nuser + c->nrwall;
+    /* one contact per wall and surface of a body it acts on (the deck's
+     * surfaces, or the wall's own points of a body without surfaces) */
+    int n = x->npts;
     for (int w = 0; w < c->nrwall; w++)
         for (int s = 0; s < nuser; s++)
             if (m->surf_body[s] >= 0 && x->acts[(size_t)w * (size_t)c->nrbody + (size_t)m->surf_body[s]]) n++;
@@ -199,8 +280,9 @@ rc_status rc_rwall_contacts(rc_rwall_case *x, const rc_model *m, rc_error *err)
         for (int b = 0; b < c->nrbody; b++) {
             if (!x->acts[(size_t)w * (size_t)c->nrbody + (size_t)b]) continue;
             int ns = 0;
-            for (int s = 0; s < nuser; s++) {
-                if (m->surf_body[s] != b) continue;
+            for (int s = 0; s < c->nsurf; s++) {
+                if (s >= nuser && s < p0) continue; /* the walls */
+                if (m->surf_body[s] != b || (s >= p0 && x->pts_wall[s - p0] != w)) continue;
                 const rc_case_surf *cs = &c->surf[s];
                 if (rw->kind == RC_RWALL_CYL && cs->kind != RC_CASE_SURF_ELLIPS)
                     RC_RAISE(err, RC_EINPUT,
@@ -214,8 +296,12 @@ rc_status rc_rwall_contacts(rc_rwall_case *x, const rc_model *m, rc_error *err)
                 const double gref = fmax(hypot(hypot(g[0], g[1]), g[2]), RC_RWALL_G_REF);
                 const double kw = mass * gref / (RC_RWALL_PEN_FRAC * len);
                 rc_case_type6 *t = &x->type6[k++];
-                snprintf(x->name[j], sizeof x->name[j], "/RWALL/%s/%d with /SURF/%s/%d", rc_rwall_type[rw->kind],
-                         rw->id, kinds[cs->kind], cs->id);
+                if (s >= p0)
+                    snprintf(x->name[j], sizeof x->name[j], "/RWALL/%s/%d with the nodes of /RBODY/%d",
+                             rc_rwall_type[rw->kind], rw->id, c->rbody[b].id);
+                else
+                    snprintf(x->name[j], sizeof x->name[j], "/RWALL/%s/%d with /SURF/%s/%d", rc_rwall_type[rw->kind],
+                             rw->id, kinds[cs->kind], cs->id);
                 *t = (rc_case_type6){.id = -rw->id, .surf1 = cs->id, .surf2 = -rw->id, .fric = rw->slide == 2 ? rw->fric : 0.0,
                                      .tstop = 1e30, .ascalef = 1.0, .ascalev = 1.0, .fct_ld = -1, .ascalex = len,
                                      .fscaleld = kw * len, .fscaleul = 1.0, .fscalev = 1.0,
@@ -226,10 +312,10 @@ rc_status rc_rwall_contacts(rc_rwall_case *x, const rc_model *m, rc_error *err)
             if (ns == 0)
                 RC_RAISE(err, RC_EINPUT,
                          RC_LOCFMT "card /RWALL/%s/%d, field grnd_ID1: the wall acts on /RBODY/%d, which carries no "
-                         "surface; ricochet's contacts are between surfaces: give the body one (/SURF/ELLIPS, /SURF/CYL "
-                         "or /SURF/BOX with its rbody_ID, /SURF/SEG or /SURF/PART on its nodes); a wall acting on "
-                         "nodes alone is not supported yet",
-                         RC_LOC(l1), rc_rwall_type[rw->kind], rw->id, c->rbody[b].id);
+                         "surface; an /RWALL/%s acting on the nodes of a body alone is not supported yet (an /RWALL/PLANE "
+                         "is): give the body a surface (/SURF/ELLIPS, /SURF/CYL or /SURF/BOX with its rbody_ID, "
+                         "/SURF/SEG or /SURF/PART on its nodes)",
+                         RC_LOC(l1), rc_rwall_type[rw->kind], rw->id, c->rbody[b].id, rc_rwall_type[rw->kind]);
         }
     }
     c->type6 = x->type6;
@@ -244,5 +330,9 @@ void rc_rwall_end(rc_rwall_case *x)
     free(x->funct);
     free(x->name);
     free(x->acts);
+    free(x->nodes);
+    for (int k = 0; x->pts_node && k < x->npts; k++) free(x->pts_node[k]);
+    free(x->pts_node);
+    free(x->pts_wall);
     memset(x, 0, sizeof *x);
 }

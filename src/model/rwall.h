@@ -35,6 +35,12 @@ typedef struct rc_rwall_case {
     rc_case_funct *funct;    /* [nfunct + 1] owned */
     char (*name)[96];        /* [contacts] the contacts' names */
     unsigned char *acts;     /* [nrwall * nrbody] 1: wall w acts on body b */
+    unsigned char *nodes;    /* [nrwall * nnode] 1: wall w acts on node n (by index) */
+    int nuser;               /* the deck's surfaces: 0 .. nuser-1; the walls' next;
+                                then the points of bodies without surfaces */
+    int npts;                /* point surfaces: nuser + nrwall + k, k < npts */
+    int *pts_wall;           /* [npts] the wall of each */
+    int **pts_node;          /* [npts] its node ids (owned) */
     double fx[2], fy[2];     /* the load curve: the line y = x through (0, 0), (1, 1) */
 } rc_rwall_case;
 
@@ -44,6 +50,10 @@ rc_status rc_rwall_begin(const rc_case *c, rc_rwall_case *x, rc_error *err);
 /* The bodies each wall acts on (grnd_ID1, the nodes within d, minus
  * grnd_ID2; fixed bodies left out), once the bodies are compiled. */
 rc_status rc_rwall_bodies(rc_rwall_case *x, const rc_model *m, rc_error *err);
+/* The contact points of the bodies without a surface that a plane wall
+ * acts on: its nodes of each such body, as a segment surface of points
+ * (appended to the model's surfaces once the deck's are compiled). */
+rc_status rc_rwall_points(rc_rwall_case *x, rc_model *m, rc_error *err);
 /* Flag the boxes a plane wall meets: their corners are the contact points. */
 void rc_rwall_box_flags(const rc_rwall_case *x, unsigned char *corners);
 /* The contacts, appended to x->c.type6 once the surfaces are compiled. */

@@ -12,6 +12,9 @@ of a restitution 0.01 (docs/theory.md, "Rigid walls"):
    (e = 0.01); at rest with its centre at R - 1e-4 L above the wall;
 2. a block (rotations held) launched at v0 on /RWALL/PLANE, Slide 2,
    fric mu: stops after v0^2 / (2 mu g) at v0 / (mu g); Slide 0: keeps v0;
+2b. a cube of 8 nodes without any surface (the usual Radioss rigid body):
+   the wall's nodes are its contact points; it rests 1e-4 L deep with the
+   normal force m g, and slides to rest at v0^2 / (2 mu g) with Slide 2;
 3. a ball sliding (Slide 0) over the top of a horizontal /RWALL/CYL of
    radius Rc from the top at v0: it leaves the cylinder where
    cos(theta) = 2/3 + v0^2 / (3 g (Rc + R)) (a particle on a circle).
@@ -88,6 +91,31 @@ def over_cylinder():
     return d
 
 
+MC, JC, HC = 2.0, 0.0133, 0.1  # the cube of nodes: mass, inertia, half side
+LC = math.sqrt(3 * JC / (2 * MC))
+PENC = 1e-4 * LC * max(G, 9.80665) / G
+
+
+def cube(slide_flag, v=None, z0=None):
+    """A body of 8 corner nodes and no surface (Radioss's usual rigid body)
+    on /RWALL/PLANE z = 0: the wall's nodes are its contact points."""
+    z0 = HC + HC if z0 is None else z0
+    d = Deck("cube of nodes on /RWALL/PLANE")
+    corners = [(11 + k, sx * HC, sy * HC, z0 + sz * HC)
+               for k, (sx, sy, sz) in enumerate([(-1, -1, -1), (1, -1, -1), (1, 1, -1), (-1, 1, -1),
+                                                (-1, -1, 1), (1, -1, 1), (1, 1, 1), (-1, 1, 1)])]
+    d.nodes([(1, 0.0, 0.0, z0)] + corners)
+    d.rbody(1, 1, MC, [JC] * 3, grnod=2, title="cube 2 kg")
+    d.grnod(2, [n for n, _, _, _ in corners], title="corners")
+    if v is not None:
+        d.add("/BCS/1", f"{'000 111':>10s}{0:>10d}{2:>10d}", title="no rotation")
+        d.inivel(1, v, 2)
+    d.grav(1, "Z", -G, 2)
+    rwall(d, "PLANE", 3, 2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), slide=slide_flag, fric=MU if slide_flag == 2 else 0.0)
+    d.run(1.0 if v is None else 0.5, 0.005)
+    return d
+
+
 def check_drop(name, r, z_wall):
     t1_ref = math.sqrt(2 * H / G)
     t1 = r.events("contact_close")[0]
@@ -126,6 +154,22 @@ def main():
     rcval.check("rwall.slide.frictionless", e < 1e-9 and len(r.events("fric_slip", "fric_stick")) == 0,
                 f"Slide 0: speed after {r.t[-1]:g} s {r.vel[-1, 0, 0]:.12f} m/s (v0 = {V0}), rel. error {e:.1e} "
                 f"(< 1e-9), no friction event")
+
+    # 2b. a body of nodes without surface: its nodes touch the wall
+    r = rcval.Result(rcval.run(cube(0), "cube"))
+    pen = HC - r.pos[-1, 0, 2]
+    e, ef = rcval.rel(pen, PENC), rcval.rel(r.fn[-1, 0], MC * G)
+    rcval.check("rwall.nodes.rest", e < 1e-3 and ef < 1e-6,
+                f"a cube of 8 nodes (no surface) dropped 0.1 m: rests {pen:.6e} m deep (1e-4 L = {PENC:.6e} m, "
+                f"rel. error {e:.2e} (< 1e-3)); normal force {r.fn[-1, 0]:.9f} N (m g = {MC * G:.9f} N, "
+                f"{ef:.1e}, < 1e-6)")
+    r = rcval.Result(rcval.run(cube(2, v=(V0, 0.0, 0.0), z0=HC - PENC), "cube_slide"))
+    x_end = r.pos[-1, 0, 0]
+    e = abs(x_end - V0**2 / (2 * MU * G)) / (V0**2 / (2 * MU * G))
+    rcval.check("rwall.nodes.friction_stop", e < 1e-4,
+                f"the cube launched at {V0} m/s on its 4 bottom nodes, Slide 2, fric {MU}: at rest at x = {x_end:.9f} m "
+                f"(v0^2/(2 mu g) = {V0**2 / (2 * MU * G):.9f}, per-node friction, F_lim/K_t creep), "
+                f"rel. error {e:.2e} (< 1e-4)")
 
     # 3. over the top of a cylinder: leaves at cos = 2/3 + v0^2/(3 g rho)
     r = rcval.Result(rcval.run(over_cylinder(), "cyl"))

@@ -1,4 +1,6 @@
 /*
+ * Rigid walls and time sensors.
+ *
  * Rigid walls: /RWALL/PLANE, /RWALL/CYL, /RWALL/SPHER, /RWALL/PARAL in the
  * Radioss layouts (by the /BEGIN version: 8- and 16-character fields in
  * 4.x, 10 and 20 from 5.1, Iform on line 1 from 2026). The card is read
@@ -117,4 +119,23 @@ rc_status rc_card_rwall(rc_reader *rd, const rc_block *b)
                             "unbounded plane through M, M1 as normal)");
     }
     return rc_note_id(rd, RC_IDK_RWALL, w->id, &w->loc, b->hdr->text);
+}
+
+/* /SENSOR/TIME/sens_ID[/unit_ID]: title; Tdelay (the sensor is on from
+ * t = Tdelay; the /RBODY and interfaces naming it: the compiler). */
+rc_status rc_card_sensor_time(rc_reader *rd, const rc_block *b)
+{
+    rc_case *c = rd->c;
+    int nd;
+    rc_status st;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "sens_ID", "/SENSOR/TIME/sens_ID"))) return st;
+    RC_GROW(rd, c->sensor, rd->capsensor, c->nsensor);
+    rc_case_sensor *s = &c->sensor[c->nsensor++];
+    s->id = b->id;
+    s->loc = s->line_loc = b->hdr->loc;
+    if ((st = rc_card_lines(rd, b, s->title, 1, 1, "Tdelay", &nd))) return st;
+    s->line_loc = b->lines[1].loc;
+    rc_field f[] = {RC_F_REALD("Tdelay", &s->tdelay, 0, RC_FF_NONNEG, RC_D_T)};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], f, RC_NF(f)))) return st;
+    return rc_note_id(rd, RC_IDK_SENSOR, s->id, &s->loc, b->hdr->text);
 }

@@ -151,10 +151,20 @@ typedef struct rc_case_type6 {
     double fscalev;                           /* line 6: [N] */
     rc_loc loc;
     rc_loc line_loc[6];                       /* each data line */
+    int sensor_id;                            /* line 1, ricochet: /SENSOR that activates the interface (0: none) */
     const char *name;                         /* the card its messages name: NULL for a /INTER/TYPE6
                                                  card ("/INTER/TYPE6/<id>"); the contact of a /RWALL
                                                  with a surface, made by the compiler (model/rwall.c) */
 } rc_case_type6;
+
+/* /SENSOR/TIME/sens_ID (cards_rwall.c): a sensor that is on from t = Tdelay. */
+typedef struct rc_case_sensor {
+    int id;
+    char title[101];
+    double tdelay;        /* [s], >= 0 */
+    rc_loc loc;
+    rc_loc line_loc;      /* the data line */
+} rc_case_sensor;
 
 /* /RWALL/PLANE, /RWALL/CYL, /RWALL/SPHER, /RWALL/PARAL (cards_rwall.c): a
  * rigid wall acting on the nodes of grnd_ID1 minus those of grnd_ID2 (for
@@ -347,6 +357,7 @@ struct rc_case {
     int ntype6;  rc_case_type6 *type6;
     int npower;  struct rc_case_power *power;   /* case_power.h */
     int nrwall;  rc_case_rwall *rwall;
+    int nsensor; rc_case_sensor *sensor;
     int nimpvel; struct rc_case_impvel *impvel; /* case_power.h */
     int ninivel; rc_case_inivel *inivel;
     int ngrav;   rc_case_grav *grav;
@@ -382,7 +393,8 @@ int rc_case_find_node(const rc_case *c, int id);
 int rc_case_find_grnod(const rc_case *c, int id);
 int rc_case_find_rbody(const rc_case *c, int id);
 int rc_case_find_surf(const rc_case *c, int id);
-int rc_case_find_rwall(const rc_case *c, int id); /* a linear scan */
+int rc_case_find_rwall(const rc_case *c, int id);  /* a linear scan */
+int rc_case_find_sensor(const rc_case *c, int id); /* a linear scan */
 int rc_case_find_part(const rc_case *c, int id);
 int rc_case_find_grpart(const rc_case *c, int id);
 /* Body carrying a node (its main node or in its secondary group), or -1. */

@@ -188,3 +188,10 @@ int rc_case_find_rwall(const rc_case *c, int id)
         if (c->rwall[k].id == id) return k;
     return -1;
 }
+
+int rc_case_find_sensor(const rc_case *c, int id)
+{
+    for (int k = 0; c && k < c->nsensor; k++)
+        if (c->sensor[k].id == id) return k;
+    return -1;
+}

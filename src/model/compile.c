@@ -23,6 +23,7 @@
 #include "base/progress.h"
 #include "model/power.h"
 #include "model/rwall.h"
+#include "model/sensor.h"
 
 #define ALLOC(ptr, n)                                                               \
     do {                                                                            \
@@ -473,6 +474,10 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     m->inter_gap[i] = t6->gap;
     m->inter_tstart[i] = t6->tstart;
     m->inter_tstop[i] = t6->tstop;
+    /* a sensor turns the interface on at its time (model/sensor.c) */
+    rc_status sst = rc_sensor_tstart(c, t6->sensor_id, rc_loc_or(t6->line_loc[0], t6->loc), card, &m->inter_tstart[i],
+                                     m->inter_tstop[i], err);
+    if (sst) return sst;
     m->inter_visc[i] = t6->visc;
     m->inter_etarget[i] = t6->e_target;
     m->inter_vimp[i] = t6->v_imp;
@@ -668,12 +673,19 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     *out = NULL;
     /* the rigid walls: the case with their surfaces, load curve and (once
      * the bodies and surfaces are known) contacts appended (model/rwall.c) */
+    /* first the bodies held until their sensor's time (model/sensor.c) */
+    rc_sensor_case sx;
     rc_rwall_case rx;
-    if ((st = rc_rwall_begin(c, &rx, err))) return st;
+    if ((st = rc_sensor_begin(c, &sx, err))) return st;
+    if ((st = rc_rwall_begin(&sx.c, &rx, err))) {
+        rc_sensor_end(&sx);
+        return st;
+    }
     c = &rx.c;
     rc_model *m = calloc(1, sizeof *m);
     if (!m) {
         rc_rwall_end(&rx);
+        rc_sensor_end(&sx);
         RC_RAISE(err, RC_ENOMEM, "out of memory");
     }
     /* provenance and settings */
@@ -898,10 +910,12 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     for (int k = 0; k < 3; k++) m->ground_y0[k] = 0.0;
     own_locations(c, m);
     rc_rwall_end(&rx);
+    rc_sensor_end(&sx);
     *out = m;
     return RC_OK;
 fail:
     rc_rwall_end(&rx);
+    rc_sensor_end(&sx);
     rc_model_free(m);
     return st;
 }

@@ -451,6 +451,20 @@ TL('rwall_paral', '/RWALL/PARAL/9', 'not supported yet',
 TL('rwall_lagmul', '/RWALL/LAGMUL/9', 'not supported yet', before_end(RWALL(head='/RWALL/LAGMUL/9'), expect=0))
 TL('rwall_duplicate', RW, 'duplicate id 9', before_end(RWALL() + RWALL(), expect=6))
 
+# ---- /SENSOR/TIME and its uses (the sphere /RBODY/1 and /INTER/TYPE6/1)
+SENS = ['/SENSOR/TIME/4', 'release', '                 0.3']
+TL('sensor_tdelay_negative', '/SENSOR/TIME/4', 'field Tdelay', before_end(['/SENSOR/TIME/4', 'release', '               -0.3'],
+                                                                            expect=2))
+TL('sensor_acce', '/SENSOR/ACCE/4', 'not supported yet', before_end(['/SENSOR/ACCE/4', 'accelerometer', '         1'], expect=0))
+TL('sensor_missing_line', '/SENSOR/TIME/4', 'expected 1 data line', before_end(['/SENSOR/TIME/4', 'release'], expect=0))
+TL('rbody_sensor_missing', '/RBODY/1', 'field sens_ID', at('/RBODY/1', 2, 11, 20, '9'))
+TL('rbody_sensor_held_inivel', '/RBODY/1', 'not supported yet',
+   lambda lines: (lambda r: (r[0] + [], r[1], r[2]))(at('/RBODY/1', 2, 11, 20, '4')(before_end(SENS)(lines)[0])))
+TL('type6_sensor_missing', T6, 'field Isensor', at(T6, 2, 21, 30, '9'))
+TL('type6_sensor_after_tstop', T6, 'field Isensor',
+   lambda lines: at(T6, 2, 21, 30, '4')(before_end(['/SENSOR/TIME/4', 'late', '                1e31'])(lines)[0]))
+TL('power_sensor_missing', PW, 'field Isensor', at(PW, 2, 61, 70, '9'))
+
 
 def write_all():
     for old in glob.glob('[0-9][0-9][0-9]_*'):

@@ -245,6 +245,35 @@ static void test_rwall_nodes(void)
     rc_model_free(m);
 }
 
+/* A moving wall: a body of its node (id -rwall_ID), its Mass, VX0..VZ0,
+ * rotations held, carrying the wall's surface; gravity only from a /GRAV
+ * whose group holds its node. */
+static void test_rwall_moving(void)
+{
+    static const char mv[] = "/NODE\n1,0,0,0\n9,-0.5,0,0\n"
+                             "/RBODY/1\nball\n         1                                                 1         7\n"
+                             "0.001,0.001,0.001\n0,0,0\n/GRNOD/NODE/7\nball\n1\n/GRNOD/NODE/8\nwall node\n9\n"
+                             "/SURF/ELLIPS/2\nb\n0,2,1\n0,0,0\n0.05,0.05,0.05\n"
+                             "/RWALL/PLANE/3\nmoving\n9,0,7,0\n\n3.7,2.1,0.3,-0.2\n1,0,0\n"
+                             "/GRAV/1\nall bodies\n0,Z,0,0,0,,1,-9.81\n/GRAV/2\nthe wall's node\n0,Y,0,0,8,,1,-2.5\n"
+                             "/RUN\n1,0.01\n/END\n";
+    rc_model *m = TU_COMPILE_OK(mv, "rwmoving.rad");
+    if (m) {
+        ENSURE(m->nbody == 2 && m->body_id[1] == -3 && m->body_mass[1] == 3.7 && m->nfree == 2);
+        const double *y0 = m->body_y0 + RC_NB;
+        ENSURE(y0[0] == -0.5 && y0[7] == 2.1 && y0[8] == 0.3 && y0[9] == -0.2);
+        for (int k = 0; k < 6; k++) ENSURE(m->body_dofmask[6 + k] == (k >= 3));
+        ENSURE(m->body_grav[3 + 0] == 0.0 && m->body_grav[3 + 1] == -2.5 && m->body_grav[3 + 2] == 0.0);
+        ENSURE(m->body_grav[2] == -9.81);
+        ENSURE(m->ninter == 1);
+        if (m->ninter == 1) {
+            ENSURE(strcmp(m->inter_name[0], "/RWALL/PLANE/3 with /SURF/ELLIPS/2") == 0);
+            ENSURE(m->inter_ba[0] == 0 && m->inter_bb[0] == 1 && m->surf_body[m->inter_sb[0]] == 1);
+        }
+    }
+    rc_model_free(m);
+}
+
 static void test_rwall_errors(void)
 {
     /* a sphere wall on a body without surfaces */
@@ -276,5 +305,6 @@ void suite_rwall(void)
     RUN_TEST(test_rwall_layouts);
     RUN_TEST(test_rwall_model);
     RUN_TEST(test_rwall_nodes);
+    RUN_TEST(test_rwall_moving);
     RUN_TEST(test_rwall_errors);
 }

@@ -3,10 +3,11 @@
  *
  * Rigid walls: /RWALL/PLANE, /RWALL/CYL, /RWALL/SPHER, /RWALL/PARAL in the
  * Radioss layouts (by the /BEGIN version: 8- and 16-character fields in
- * 4.x, 10 and 20 from 5.1, Iform on line 1 from 2026). The card is read
+ * 4.x, 10 and 20 from 5.1, Iform on line 1 from 2026); a moving wall
+ * (node_ID) has its Mass and initial velocity on line 3. The card is read
  * whole, then what ricochet cannot honour yet is refused with "not
- * supported yet" at the line of the field: a moving wall (node_ID), a tied
- * wall (Slide 1), friction filtering (ifq), the parallelogram. The model
+ * supported yet" at the line of the field: a tied wall (Slide 1),
+ * friction filtering (ifq), the parallelogram. The model
  * compiler (model/rwall.c) turns a wall into contacts of the bodies that
  * own its nodes.
  */
@@ -16,8 +17,6 @@
 #include <math.h>
 #include <string.h>
 
-static const char rc_note_moving[] = "(a moving wall: write its node as a /RBODY carrying the wall's surface, "
-                                     "and an /INTER/TYPE6 between it and the bodies)";
 static const char rc_note_tied[] = "(a tied wall: Slide 0 frictionless or 2 with friction)";
 static const char rc_note_ifq[] = "(friction filtering of a wall: give ifq 0)";
 
@@ -56,7 +55,7 @@ rc_status rc_card_rwall(rc_reader *rd, const rc_block *b)
     /* line 1: the wall's node, the sliding flag, the node groups; Iform
      * from 2026. 10-character integers, 8 in Radioss 4.x */
     const int ver = rc_layout_version(rd), wi = ver >= 51 ? 10 : 8, wr = ver >= 51 ? 20 : 16;
-    rc_field l1[] = {RC_F_INTN("node_ID", &w->node_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_moving),
+    rc_field l1[] = {RC_F_INT("node_ID", &w->node_id, 0, RC_FF_NONNEG),
                      RC_F_SET("Slide", &w->slide, 0, 0, 0x7u, 0x5u, rc_note_tied),
                      RC_F_INT("grnd_ID1", &w->grnd1, 0, RC_FF_NONNEG), RC_F_INT("grnd_ID2", &w->grnd2, 0, RC_FF_NONNEG),
                      RC_F_SET("Iform", &w->iform, 0, 0, 0x3u, 0, NULL)};
@@ -83,16 +82,21 @@ rc_status rc_card_rwall(rc_reader *rd, const rc_block *b)
         return rc_case_fail(rd, &b->lines[2].loc, b->name, "Diameter",
                             "expected the wall's diameter, > 0, got %s", l2[2].got);
 
-    /* line 3: the point M (a fixed wall) */
+    /* line 3: the point M (a fixed wall); a moving wall: its mass and
+     * initial velocity (M is its node) */
     rc_field l3[] = {RC_F_REALW("XM", &w->m[0], 0, 0, wr, RC_D_L), RC_F_REALW("YM", &w->m[1], 0, 0, wr, RC_D_L),
                      RC_F_REALW("ZM", &w->m[2], 0, 0, wr, RC_D_L)};
-    if ((st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
+    rc_field l3m[] = {RC_F_REALW("Mass", &w->mass, 0, RC_FF_POS, wr, RC_D_M),
+                      RC_F_REALW("VX0", &w->v0[0], 0, 0, wr, RC_D_V), RC_F_REALW("VY0", &w->v0[1], 0, 0, wr, RC_D_V),
+                      RC_F_REALW("VZ0", &w->v0[2], 0, 0, wr, RC_D_V)};
+    if (w->node_id == 0 && (st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
+    if (w->node_id != 0 && (st = rc_parse_line(rd, b, &b->lines[3], l3m, RC_NF(l3m)))) return st;
     /* line 4: M1; line 5: M2 */
     if (nd >= 4) {
         rc_field l4[] = {RC_F_REALW("XM1", &w->m1[0], 0, 0, wr, RC_D_L), RC_F_REALW("YM1", &w->m1[1], 0, 0, wr, RC_D_L),
                          RC_F_REALW("ZM1", &w->m1[2], 0, 0, wr, RC_D_L)};
         if ((st = rc_parse_line(rd, b, &b->lines[4], l4, RC_NF(l4)))) return st;
-        if (same_point(w->m, w->m1))
+        if (w->node_id == 0 && same_point(w->m, w->m1))
             return rc_case_fail(rd, &b->lines[4].loc, b->name, "XM1 YM1 ZM1",
                                 "expected a point M1 different from M (%s), got M1 = M = (%.9g, %.9g, %.9g)",
                                 kind == RC_RWALL_CYL ? "the axis goes from M to M1" : "the normal points from M to M1",

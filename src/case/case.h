@@ -175,7 +175,7 @@ typedef struct rc_case_rwall {
     int id;
     char title[101];
     rc_case_rwall_kind kind;
-    int node_id;          /* moving wall's node (0: fixed wall; != 0 refused) */
+    int node_id;          /* moving wall's node (0: fixed wall): the wall translates with it */
     int slide;            /* 0 sliding (frictionless), 1 tied (refused), 2 Coulomb friction */
     int grnd1, grnd2;     /* nodes the wall acts on, nodes taken out (0: none) */
     int iform;            /* Radioss 2026: 0 kinematic, 1 penalty (ricochet: penalty either way) */
@@ -184,7 +184,10 @@ typedef struct rc_case_rwall {
     double diameter;      /* CYL, SPHER: diameter [m] */
     double ffac;          /* friction filter factor (ifq) */
     int ifq;              /* friction filter flag (0 only) */
-    double m[3];          /* point M: on the plane, on the axis, the centre [m] */
+    double mass;          /* moving wall: its mass [kg] */
+    double v0[3];         /* moving wall: its initial velocity [m/s] */
+    double m[3];          /* point M: on the plane, on the axis, the centre [m]; a moving wall:
+                             the node's position (set by the compiler) */
     double m1[3];         /* PLANE: M1 (normal M -> M1); CYL: M1 on the axis; PARAL: corner [m] */
     double m2[3];         /* PARAL: corner M2 [m] */
     rc_loc loc;

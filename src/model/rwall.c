@@ -31,6 +31,87 @@
 
 static const char *const rc_rwall_type[] = {"", "PLANE", "CYL", "SPHER", "PARAL"};
 
+/* The moving walls (node_ID): each becomes a body of its node, of its
+ * Mass, translating only (its rotations held), starting at VX0 VY0 VZ0,
+ * whose surface is the wall's with M at the node. Writes x->c's rwall,
+ * rbody, grnod, bcs and inivel arrays (copies) and x->wall_body. */
+static rc_status moving_walls(const rc_case *c, rc_rwall_case *x, rc_error *err)
+{
+    int nm = 0, gmin = 0;
+    for (int w = 0; w < c->nrwall; w++) nm += c->rwall[w].node_id != 0;
+    for (int g = 0; g < c->ngrnod; g++) gmin = c->grnod[g].id < gmin ? c->grnod[g].id : gmin;
+    x->rwall = malloc(((size_t)c->nrwall + 1) * sizeof *x->rwall);
+    x->wall_body = malloc(((size_t)c->nrwall + 1) * sizeof *x->wall_body);
+    x->wall_node = calloc((size_t)c->nrwall + 1, sizeof *x->wall_node);
+    x->rbody = calloc((size_t)(c->nrbody + nm) + 1, sizeof *x->rbody);
+    x->grnod = calloc((size_t)(c->ngrnod + nm) + 1, sizeof *x->grnod);
+    x->bcs = calloc((size_t)(c->nbcs + nm) + 1, sizeof *x->bcs);
+    x->inivel = calloc((size_t)(c->ninivel + nm) + 1, sizeof *x->inivel);
+    if (!x->rwall || !x->wall_body || !x->wall_node || !x->rbody || !x->grnod || !x->bcs || !x->inivel)
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    memcpy(x->rwall, c->rwall, (size_t)c->nrwall * sizeof *x->rwall);
+    if (c->nrbody) memcpy(x->rbody, c->rbody, (size_t)c->nrbody * sizeof *x->rbody);
+    if (c->ngrnod) memcpy(x->grnod, c->grnod, (size_t)c->ngrnod * sizeof *x->grnod);
+    if (c->nbcs) memcpy(x->bcs, c->bcs, (size_t)c->nbcs * sizeof *x->bcs);
+    if (c->ninivel) memcpy(x->inivel, c->inivel, (size_t)c->ninivel * sizeof *x->inivel);
+    int nb = c->nrbody, ng = c->ngrnod, nc = c->nbcs, ni = c->ninivel;
+    for (int w = 0; w < c->nrwall; w++) {
+        rc_case_rwall *rw = &x->rwall[w];
+        x->wall_body[w] = -1;
+        if (rw->node_id == 0) continue;
+        const rc_loc l1 = rc_loc_or(rw->line_loc[0], rw->loc), l3 = rc_loc_or(rw->line_loc[2], rw->loc);
+        const int n = rc_case_find_node(c, rw->node_id);
+        if (n < 0)
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RWALL/%s/%d, field node_ID: expected the id of a /NODE, got %d (no such node)",
+                     RC_LOC(l1), rc_rwall_type[rw->kind], rw->id, rw->node_id);
+        const int ob = rc_case_body_of_node(c, rw->node_id);
+        if (ob >= 0)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card /RWALL/%s/%d, field node_ID: node %d belongs to /RBODY/%d: a moving wall on the node of "
+                     "a body (which may turn) is not supported yet; expected a node of no body (the wall's own, of mass "
+                     "Mass), or a surface carried by the body with an /INTER/TYPE6",
+                     RC_LOC(l1), rc_rwall_type[rw->kind], rw->id, rw->node_id, c->rbody[ob].id);
+        /* M at the node; M1 must stay apart */
+        memcpy(rw->m, c->node[n].x, sizeof rw->m);
+        if (rw->kind != RC_RWALL_SPHER && rw->m[0] == rw->m1[0] && rw->m[1] == rw->m1[1] && rw->m[2] == rw->m1[2])
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card /RWALL/%s/%d, field XM1 YM1 ZM1: expected a point M1 different from the wall's node %d "
+                     "(M of a moving wall), got M1 = (%.9g, %.9g, %.9g)",
+                     RC_LOC(rc_loc_or(rw->line_loc[3], rw->loc)), rc_rwall_type[rw->kind], rw->id, rw->node_id,
+                     rw->m1[0], rw->m1[1], rw->m1[2]);
+        /* its body: the node, its mass, an inertia for the held rotations
+         * (the mass at the wall's size: never used, the rotations are held) */
+        const double a = rw->kind == RC_RWALL_SPHER ? 0.5 * rw->diameter
+                                                    : sqrt((rw->m1[0] - rw->m[0]) * (rw->m1[0] - rw->m[0]) +
+                                                           (rw->m1[1] - rw->m[1]) * (rw->m1[1] - rw->m[1]) +
+                                                           (rw->m1[2] - rw->m[2]) * (rw->m1[2] - rw->m[2]));
+        const double jw = rw->mass * a * a;
+        x->wall_node[w] = rw->node_id;
+        x->wall_body[w] = nb;
+        x->rbody[nb++] = (rc_case_rbody){.id = -rw->id, .node_id = rw->node_id, .ispher = 3, .mass = rw->mass,
+                                         .J = {jw, jw, jw, 0.0, 0.0, 0.0}, .loc = rw->loc,
+                                         .line_loc = {l3, l3, l3, {NULL, 0}, {NULL, 0}}};
+        snprintf(x->rbody[nb - 1].title, sizeof x->rbody[nb - 1].title, "moving wall /RWALL/%s/%d",
+                 rc_rwall_type[rw->kind], rw->id);
+        const int gid = gmin - 1 - w;
+        x->grnod[ng++] = (rc_case_grnod){.id = gid, .n = 1, .nodes = &x->wall_node[w], .loc = l1};
+        x->bcs[nc++] = (rc_case_bcs){.id = -rw->id, .fix = {0, 0, 0, 1, 1, 1}, .grnod_id = gid, .loc = rw->loc,
+                                     .line_loc = l1};
+        x->inivel[ni++] = (rc_case_inivel){.id = -rw->id, .v = {rw->v0[0], rw->v0[1], rw->v0[2]}, .grnod_id = gid,
+                                           .loc = rw->loc, .line_loc = l3};
+    }
+    x->c.rwall = x->rwall;
+    x->c.rbody = x->rbody;
+    x->c.nrbody = nb;
+    x->c.grnod = x->grnod;
+    x->c.ngrnod = ng;
+    x->c.bcs = x->bcs;
+    x->c.nbcs = nc;
+    x->c.inivel = x->inivel;
+    x->c.ninivel = ni;
+    return RC_OK;
+}
+
 rc_status rc_rwall_begin(const rc_case *c, rc_rwall_case *x, rc_error *err)
 {
     memset(x, 0, sizeof *x);
@@ -38,24 +119,35 @@ rc_status rc_rwall_begin(const rc_case *c, rc_rwall_case *x, rc_error *err)
     if (c->nrwall == 0) return RC_OK;
     x->surf = calloc((size_t)(c->nsurf + c->nrwall), sizeof *x->surf);
     x->funct = calloc((size_t)c->nfunct + 1, sizeof *x->funct);
-    x->acts = calloc((size_t)c->nrwall * (size_t)(c->nrbody + 1), 1);
     x->nodes = calloc((size_t)c->nrwall * (size_t)(c->nnode + 1), 1);
     x->nuser = c->nsurf;
-    if (!x->surf || !x->funct || !x->acts || !x->nodes) {
+    if (!x->surf || !x->funct || !x->nodes) {
         rc_rwall_end(x);
         RC_RAISE(err, RC_ENOMEM, "out of memory");
     }
     if (c->nsurf) memcpy(x->surf, c->surf, (size_t)c->nsurf * sizeof *x->surf);
     if (c->nfunct) memcpy(x->funct, c->funct, (size_t)c->nfunct * sizeof *x->funct);
+    rc_status st = moving_walls(c, x, err);
+    if (st) {
+        rc_rwall_end(x);
+        return st;
+    }
+    c = &x->c; /* the walls with their points M, the moving walls' bodies */
+    x->acts = calloc((size_t)c->nrwall * (size_t)(c->nrbody + 1), 1);
+    if (!x->acts) {
+        rc_rwall_end(x);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
     /* the load curve of every wall: y = x, scaled per contact */
     x->fx[1] = x->fy[1] = 1.0;
     x->funct[c->nfunct] = (rc_case_funct){.id = -1, .npts = 2, .x = x->fx, .y = x->fy, .loc = c->end};
     /* the scene's size seen from each cylinder's M */
     for (int w = 0; w < c->nrwall; w++) {
         const rc_case_rwall *rw = &c->rwall[w];
-        rc_case_surf *s = &x->surf[c->nsurf + w];
+        rc_case_surf *s = &x->surf[x->nuser + w];
         s->id = -rw->id;
         s->loc = s->rbody_loc = rw->loc;
+        s->rbody_id = rw->node_id ? -rw->id : 0; /* a moving wall: on its body */
         memcpy(s->m, rw->m, sizeof s->m);
         memcpy(s->m1, rw->m1, sizeof s->m1);
         memcpy(s->c, rw->m, sizeof s->c);
@@ -76,7 +168,7 @@ rc_status rc_rwall_begin(const rc_case *c, rc_rwall_case *x, rc_error *err)
         }
     }
     x->c.surf = x->surf;
-    x->c.nsurf = c->nsurf + c->nrwall;
+    x->c.nsurf = x->nuser + c->nrwall;
     x->c.funct = x->funct;
     x->c.nfunct = c->nfunct + 1;
     return RC_OK;
@@ -123,10 +215,23 @@ static rc_status mark_group(const rc_case *c, const rc_case_rwall *rw, int gid, 
     return RC_OK;
 }
 
-rc_status rc_rwall_bodies(rc_rwall_case *x, const rc_model *m, rc_error *err)
+rc_status rc_rwall_bodies(rc_rwall_case *x, rc_model *m, rc_error *err)
 {
     const rc_case *c = &x->c;
     if (c->nrwall == 0) return RC_OK;
+    /* a moving wall feels the /GRAV cards whose group holds its node, not
+     * those without a group (which act on the deck's bodies) */
+    for (int w = 0; w < c->nrwall; w++) {
+        const int b = x->wall_body[w];
+        if (b < 0) continue;
+        for (int k = 0; k < 3; k++) m->body_grav[3 * b + k] = 0.0;
+        for (int k = 0; k < c->ngrav; k++) {
+            const int g = c->grav[k].grnod_id ? rc_case_find_grnod(c, c->grav[k].grnod_id) : -1;
+            int in = 0;
+            for (int j = 0; g >= 0 && j < c->grnod[g].n; j++) in |= c->grnod[g].nodes[j] == c->rwall[w].node_id;
+            if (in) m->body_grav[3 * b + c->grav[k].dir] += c->grav[k].fscale;
+        }
+    }
     unsigned char *flag = malloc((size_t)c->nnode + 1);
     if (!flag) RC_RAISE(err, RC_ENOMEM, "out of memory");
     rc_status st = RC_OK;
@@ -159,8 +264,12 @@ rc_status rc_rwall_bodies(rc_rwall_case *x, const rc_model *m, rc_error *err)
                             RC_LOC(l1), rc_rwall_type[rw->kind], rw->id, c->node[n].id, RC_LOC(c->node[n].loc));
                 break;
             }
-            /* a fixed body never meets a fixed wall */
+            /* a fixed body is left out (a fixed wall never meets it); a
+             * wall's own body (a moving wall) is no body a wall acts on */
             if (m->body_fixed[b]) continue;
+            int wall = 0;
+            for (int v = 0; v < c->nrwall; v++) wall |= x->wall_body[v] == b;
+            if (wall) continue;
             x->acts[(size_t)w * (size_t)c->nrbody + (size_t)b] = 1;
             x->nodes[(size_t)w * (size_t)c->nnode + (size_t)n] = 1;
         }
@@ -331,6 +440,13 @@ void rc_rwall_end(rc_rwall_case *x)
     free(x->name);
     free(x->acts);
     free(x->nodes);
+    free(x->rwall);
+    free(x->rbody);
+    free(x->grnod);
+    free(x->bcs);
+    free(x->inivel);
+    free(x->wall_body);
+    free(x->wall_node);
     for (int k = 0; x->pts_node && k < x->npts; k++) free(x->pts_node[k]);
     free(x->pts_node);
     free(x->pts_wall);

@@ -34,6 +34,13 @@ typedef struct rc_rwall_case {
     rc_case_type6 *type6;    /* [ntype6 + contacts] owned */
     rc_case_funct *funct;    /* [nfunct + 1] owned */
     char (*name)[96];        /* [contacts] the contacts' names */
+    rc_case_rwall *rwall;    /* [nrwall] owned: a moving wall's M set to its node */
+    rc_case_rbody *rbody;    /* [nrbody + moving walls] owned: a moving wall's body */
+    rc_case_grnod *grnod;    /* [ngrnod + moving walls] owned: its node's group */
+    rc_case_bcs *bcs;        /* [nbcs + moving walls] owned: its rotations held */
+    rc_case_inivel *inivel;  /* [ninivel + moving walls] owned: its VX0 VY0 VZ0 */
+    int *wall_body;          /* [nrwall] body index of a moving wall, -1: fixed */
+    int *wall_node;          /* [nrwall] its node id (the groups' storage) */
     unsigned char *acts;     /* [nrwall * nrbody] 1: wall w acts on body b */
     unsigned char *nodes;    /* [nrwall * nnode] 1: wall w acts on node n (by index) */
     int nuser;               /* the deck's surfaces: 0 .. nuser-1; the walls' next;
@@ -45,11 +52,17 @@ typedef struct rc_rwall_case {
 } rc_rwall_case;
 
 /* The copy of c with the walls' surfaces (ids -rwall_ID) and the unit load
- * curve (id -1) appended; x->c is c itself when c has no wall. */
+ * curve (id -1) appended, and for each moving wall (node_ID) a body of its
+ * node (/RBODY -rwall_ID: its Mass, rotations held, VX0 VY0 VZ0) carrying
+ * its surface; x->c is c itself when c has no wall. RC_EINPUT for a
+ * moving wall's node that does not exist, belongs to a /RBODY (not
+ * supported yet) or lies on M1. */
 rc_status rc_rwall_begin(const rc_case *c, rc_rwall_case *x, rc_error *err);
 /* The bodies each wall acts on (grnd_ID1, the nodes within d, minus
- * grnd_ID2; fixed bodies left out), once the bodies are compiled. */
-rc_status rc_rwall_bodies(rc_rwall_case *x, const rc_model *m, rc_error *err);
+ * grnd_ID2; fixed bodies and the walls' own bodies left out), once the
+ * bodies are compiled; a moving wall's gravity: the /GRAV cards whose
+ * group holds its node. */
+rc_status rc_rwall_bodies(rc_rwall_case *x, rc_model *m, rc_error *err);
 /* The contact points of the bodies without a surface that a plane wall
  * acts on: its nodes of each such body, as a segment surface of points
  * (appended to the model's surfaces once the deck's are compiled). */

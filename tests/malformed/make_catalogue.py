@@ -434,7 +434,9 @@ def RWALL(kind='PLANE', l1=(0, 0, 1, 0), l2=None, m=('0', '0', '-10'), m1=('0', 
 
 
 TL('rwall_slide_tied', RW, 'field Slide', before_end(RWALL(l1=(0, 1, 1, 0)), expect=2))
-TL('rwall_moving_node', RW, 'field node_ID', before_end(RWALL(l1=(1, 0, 1, 0)), expect=2))
+TL('rwall_moving_node', RW, 'field node_ID', before_end(RWALL(l1=(1, 0, 2, 0), m=('2', '0', '0')), expect=2))
+TL('rwall_moving_mass', RW, 'field Mass', before_end(RWALL(l1=(4, 0, 1, 0), m=('0', '1', '0')), expect=4))
+TL('rwall_moving_node_missing', RW, 'field node_ID', before_end(RWALL(l1=(77, 0, 1, 0), m=('2', '1', '0')), expect=2))
 TL('rwall_group_missing', RW, 'field grnd_ID1', before_end(RWALL(l1=(0, 0, 99, 0)), expect=2))
 TL('rwall_group2_missing', RW, 'field grnd_ID2', before_end(RWALL(l1=(0, 0, 1, 98)), expect=2))
 TL('rwall_no_node', RW, 'field grnd_ID1', before_end(RWALL(l1=(0, 0, 0, 0)), expect=2))

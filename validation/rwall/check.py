@@ -15,6 +15,9 @@ of a restitution 0.01 (docs/theory.md, "Rigid walls"):
 2b. a cube of 8 nodes without any surface (the usual Radioss rigid body):
    the wall's nodes are its contact points; it rests 1e-4 L deep with the
    normal force m g, and slides to rest at v0^2 / (2 mu g) with Slide 2;
+2c. a moving /RWALL/PLANE (its node, Mass m_w, VX0 v0) hitting a ball at
+   rest: the two-body impact of restitution e, ball m_w v0 (1 + e)/(m_w + m),
+   wall (m_w - e m) v0/(m_w + m), momentum conserved, the wall not turning;
 3. a ball sliding (Slide 0) over the top of a horizontal /RWALL/CYL of
    radius Rc from the top at v0: it leaves the cylinder where
    cos(theta) = 2/3 + v0^2 / (3 g (Rc + R)) (a particle on a circle).
@@ -116,6 +119,24 @@ def cube(slide_flag, v=None, z0=None):
     return d
 
 
+MW, VW = 3.0, 2.0  # the moving wall's mass and speed
+
+
+def moving_wall():
+    """A moving /RWALL/PLANE (node 9, Mass 3 kg, VX0 2 m/s, normal +x)
+    hitting a ball at rest, no gravity."""
+    d = Deck("moving wall hitting a ball")
+    d.nodes([(1, 0.0, 0.0, 0.0), (9, -0.5, 0.0, 0.0)])
+    d.rbody(1, 1, M, [J] * 3, grnod=1, title="ball 1 kg")
+    d.sphere(1, 1, (0.0, 0.0, 0.0), R)
+    d.grnod(1, [1])
+    d.add("/RWALL/PLANE/3", line(("i", 9), ("i", 0), ("i", 1), ("i", 0)), "",
+          line(("r", MW), ("r", VW), ("r", 0.0), ("r", 0.0)), line(("r", 1.0), ("r", 0.0), ("r", 0.0)),
+          title="moving wall")
+    d.run(0.5, 0.005)
+    return d
+
+
 def check_drop(name, r, z_wall):
     t1_ref = math.sqrt(2 * H / G)
     t1 = r.events("contact_close")[0]
@@ -170,6 +191,24 @@ def main():
                 f"the cube launched at {V0} m/s on its 4 bottom nodes, Slide 2, fric {MU}: at rest at x = {x_end:.9f} m "
                 f"(v0^2/(2 mu g) = {V0**2 / (2 * MU * G):.9f}, per-node friction, F_lim/K_t creep), "
                 f"rel. error {e:.2e} (< 1e-4)")
+
+    # 2c. a moving wall: an impact of restitution e between the wall and the
+    # ball (the two-body closed form), momentum conserved, the wall turning
+    # not at all
+    r = rcval.Result(rcval.run(moving_wall(), "moving"))
+    vb_ref = MW * VW * (1 + E_WALL) / (MW + M)
+    vw_ref = (MW * VW - M * E_WALL * VW) / (MW + M)
+    t1 = r.events("contact_close")[0]
+    t1_ref = (0.5 - R) / VW
+    e = max(rcval.rel(r.vel[-1, 0, 0], vb_ref), rcval.rel(r.vel[-1, 1, 0], vw_ref), rcval.rel(t1, t1_ref))
+    p = M * r.vel[-1, 0] + MW * r.vel[-1, 1]
+    ep = np.linalg.norm(p - [MW * VW, 0.0, 0.0]) / (MW * VW)
+    rot = np.abs(r.quat[:, 1, 1:]).max()
+    rcval.check("rwall.moving.impact", e < 1e-6 and ep < 1e-12 and rot == 0.0,
+                f"wall {MW} kg at {VW} m/s onto a {M} kg ball: contact at {t1:.9f} s ((0.45 m)/v0 = {t1_ref:.9f}); "
+                f"after: ball {r.vel[-1, 0, 0]:.9f} m/s (m_w v0 (1 + e)/(m_w + m) = {vb_ref:.9f}), wall "
+                f"{r.vel[-1, 1, 0]:.9f} m/s ({vw_ref:.9f}); max rel. error {e:.2e} (< 1e-6); momentum to {ep:.1e} "
+                f"(< 1e-12); the wall does not turn (quaternion vector part {rot:.1e})")
 
     # 3. over the top of a cylinder: leaves at cos = 2/3 + v0^2/(3 g rho)
     r = rcval.Result(rcval.run(over_cylinder(), "cyl"))

@@ -278,17 +278,22 @@ rc_status rc_rwall_bodies(rc_rwall_case *x, rc_model *m, rc_error *err)
     return st;
 }
 
-/* Grow a model array of the surfaces from n to n + add entries of `size`
- * bytes, the new ones zero. */
-static int grow(void *pp, int n, int add, size_t size)
+
+/* `p` (of `used` bytes in use) grown to `size` bytes, the new bytes zero;
+ * NULL when out of memory (p unchanged). */
+static void *grow_bytes(void *p, size_t size, size_t used)
 {
-    void **p = pp;
-    char *q = realloc(*p, ((size_t)(n + add) + 1) * size);
-    if (!q) return -1;
-    memset(q + (size_t)n * size, 0, ((size_t)add + 1) * size);
-    *p = q;
-    return 0;
+    char *q = realloc(p, size);
+    if (q) memset(q + used, 0, size - used);
+    return q;
 }
+
+/* Grow the model array `arr` from n to n + add entries (the new ones zero);
+ * evaluates to 1 when out of memory (arr unchanged). */
+#define GROW(arr, n, add)                                                                                        \
+    (tmp = grow_bytes((arr), ((size_t)((n) + (add)) + 1) * sizeof *(arr), (size_t)(n) * sizeof *(arr))) == NULL \
+        ? 1                                                                                                      \
+        : ((arr) = tmp, 0)
 
 rc_status rc_rwall_points(rc_rwall_case *x, rc_model *m, rc_error *err)
 {
@@ -314,12 +319,11 @@ rc_status rc_rwall_points(rc_rwall_case *x, rc_model *m, rc_error *err)
     if (ns) x->surf = c->surf = ns;
     x->pts_wall = calloc((size_t)n + 1, sizeof *x->pts_wall);
     x->pts_node = calloc((size_t)n + 1, sizeof *x->pts_node);
-    if (!ns || !x->pts_wall || !x->pts_node || grow(&m->surf_id, s0, n, sizeof *m->surf_id) ||
-        grow(&m->surf_kind, s0, n, sizeof *m->surf_kind) || grow(&m->surf_body, s0, n, sizeof *m->surf_body) ||
-        grow(&m->surf_p, 3 * s0, 3 * n, sizeof *m->surf_p) || grow(&m->surf_n, 3 * s0, 3 * n, sizeof *m->surf_n) ||
-        grow(&m->surf_r, s0, n, sizeof *m->surf_r) ||
-        grow(&m->surf_ext, RC_SURF_NEXT * s0, RC_SURF_NEXT * n, sizeof *m->surf_ext) ||
-        grow(&m->surf_nadr, s0 + 1, n, sizeof *m->surf_nadr) || grow(&m->surf_sadr, s0 + 1, n, sizeof *m->surf_sadr)) {
+    void *tmp;
+    if (!ns || !x->pts_wall || !x->pts_node || GROW(m->surf_id, s0, n) || GROW(m->surf_kind, s0, n) ||
+        GROW(m->surf_body, s0, n) || GROW(m->surf_p, 3 * s0, 3 * n) || GROW(m->surf_n, 3 * s0, 3 * n) ||
+        GROW(m->surf_r, s0, n) || GROW(m->surf_ext, RC_SURF_NEXT * s0, RC_SURF_NEXT * n) ||
+        GROW(m->surf_nadr, s0 + 1, n) || GROW(m->surf_sadr, s0 + 1, n)) {
         free(bare);
         RC_RAISE(err, RC_ENOMEM, "out of memory");
     }

@@ -117,6 +117,7 @@ rc_status rc_rwall_begin(const rc_case *c, rc_rwall_case *x, rc_error *err)
     memset(x, 0, sizeof *x);
     x->c = *c;
     if (c->nrwall == 0) return RC_OK;
+    x->c.index = NULL; /* the copy gets its own below (the case's stays the case's) */
     x->surf = calloc((size_t)(c->nsurf + c->nrwall), sizeof *x->surf);
     x->funct = calloc((size_t)c->nfunct + 1, sizeof *x->funct);
     x->nodes = calloc((size_t)c->nrwall * (size_t)(c->nnode + 1), 1);
@@ -171,7 +172,12 @@ rc_status rc_rwall_begin(const rc_case *c, rc_rwall_case *x, rc_error *err)
     x->c.nsurf = x->nuser + c->nrwall;
     x->c.funct = x->funct;
     x->c.nfunct = c->nfunct + 1;
-    return RC_OK;
+    /* the copy's own index: its look-ups stay O(log N) (case/lookup.c;
+     * the contacts and points appended later are few look-ups) */
+    x->c.index = NULL;
+    st = rc_case_index_build(&x->c, err);
+    if (st) rc_rwall_end(x);
+    return st;
 }
 
 /* Distance of point p from the surface of wall rw at t = 0 [m]. */
@@ -438,6 +444,7 @@ rc_status rc_rwall_contacts(rc_rwall_case *x, const rc_model *m, rc_error *err)
 
 void rc_rwall_end(rc_rwall_case *x)
 {
+    if (x->surf) rc_case_index_free(x->c.index); /* the copy's own (rc_rwall_begin) */
     free(x->surf);
     free(x->type6);
     free(x->funct);

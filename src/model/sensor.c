@@ -104,6 +104,7 @@ rc_status rc_sensor_begin(const rc_case *c, rc_sensor_case *x, rc_error *err)
         nh++;
     }
     if (nh == 0) return RC_OK;
+    x->c.index = NULL; /* the copy gets its own below (the case's stays the case's) */
     x->impvel = calloc((size_t)(c->nimpvel + 6 * nh) + 1, sizeof *x->impvel);
     x->grnod = calloc((size_t)(c->ngrnod + nh) + 1, sizeof *x->grnod);
     x->funct = calloc((size_t)c->nfunct + 1, sizeof *x->funct);
@@ -140,11 +141,16 @@ rc_status rc_sensor_begin(const rc_case *c, rc_sensor_case *x, rc_error *err)
     x->c.ngrnod = ng;
     x->c.funct = x->funct;
     x->c.nfunct = c->nfunct + 1;
-    return RC_OK;
+    /* the copy's own index: its look-ups stay O(log N) (case/lookup.c) */
+    x->c.index = NULL;
+    rc_status st = rc_case_index_build(&x->c, err);
+    if (st) rc_sensor_end(x);
+    return st;
 }
 
 void rc_sensor_end(rc_sensor_case *x)
 {
+    if (x->impvel) rc_case_index_free(x->c.index); /* the copy's own (rc_sensor_begin) */
     free(x->impvel);
     free(x->grnod);
     free(x->funct);

@@ -74,18 +74,23 @@ class Deck:
               ascalex=None, fscaleld=None, iform=0, stiff=None, fct_ul=0, fscaleul=None,
               inacti=0, icor=0, fct_dv=0, fct_df=0, fscalev=None, ascalef=None, ascalev=None,
               sfric=None, fric=None, fct_ff=0, fct_fv=0, e_target=None, v_imp=None, istick=None, fric_s=None,
-              title="contact"):
+              isensor=None, title="contact"):
         """istick, fric_s: ricochet's exact stick (line 3 columns 1-10, line 5
-        columns 11-20, a 10-column real)."""
+        columns 11-20, a 10-column real); isensor: the /SENSOR/TIME that turns
+        the interface on (line 1 columns 21-30)."""
         fs = "" if fric_s is None else f"{fric_s:>10.6g}"
         self.add(f"/INTER/TYPE6/{iid}",
-                 line(("i", s1), ("i", s2)),
+                 line(("i", s1), ("i", s2), ("i", isensor)),
                  line(("r", sfric), ("r", fric), ("r", gap), ("r", tstart), ("r", tstop)),
                  line(("i", istick), ("i", 0), ("i", 0), ("i", inacti), ("i", fct_ff), ("i", fct_fv),
                       ("r", ascalef), ("r", ascalev)),
                  line(("i", fct_ld), ("i", iform), ("r", ascalex), ("r", fscaleld), ("i", icor)),
                  (i10(fct_ul) + (fs or " " * 10) + line(("r", stiff), ("r", fscaleul))).rstrip(),
                  line(("r", visc), ("i", fct_dv), ("i", fct_df), ("r", fscalev), ("r", e_target), ("r", v_imp)), title=title)
+
+    def sensor_time(self, sid, tdelay, title="time sensor"):
+        """/SENSOR/TIME: on from t = Tdelay [s]."""
+        self.add(f"/SENSOR/TIME/{sid}", line(("r", tdelay)), title=title)
 
     def inivel(self, iid, v, grnod, rot=False):
         self.add(f"/INIVEL/{'ROT' if rot else 'TRA'}/{iid}",
@@ -183,9 +188,10 @@ class Deck:
 
     def power(self, iid, s1, s2, k=None, m1=None, c=None, m2=None, m3=None, fct_stiff=0, fct_damp=0, ispline=0,
               irdf=0, rdf=None, dreg=None, vreg=None, tstart=None, tstop=None, mus=None, vs=None, mud=None,
-              vd=None, fmax=None, kt=None, e_target=None, v_imp=None, title="power-law contact"):
+              vd=None, fmax=None, kt=None, e_target=None, v_imp=None, isensor=None, title="power-law contact"):
         """/INTER/POWER (docs/case-format.md): None leaves a field blank (its default)."""
-        lines = [line(("i", s1), ("i", s2), ("i", fct_stiff), ("i", fct_damp), ("i", ispline), ("i", irdf)),
+        lines = [line(("i", s1), ("i", s2), ("i", fct_stiff), ("i", fct_damp), ("i", ispline), ("i", irdf),
+                      ("i", isensor)),
                  line(("r", k), ("r", m1), ("r", c), ("r", m2), ("r", m3)),
                  line(("r", rdf), ("r", dreg), ("r", vreg), ("r", tstart), ("r", tstop)),
                  line(("r", mus), ("r", vs), ("r", mud), ("r", vd), ("r", fmax))]

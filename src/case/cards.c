@@ -10,6 +10,7 @@
  *   cards_friction.c    /FRICTION /FRIC_ORIENT
  *   cards_couplings.c   /COUPLING/SPRING /COUPLING/CATENARY /COUPLING/CONTACT
  *   cards_joints.c      /JOINT/SPHERICAL /JOINT/REVOLUTE /JOINT/DISTANCE /JOINT/FIXED /JOINT/PRISMATIC
+ *   cards_rwall.c       /RWALL/PLANE /RWALL/CYL /RWALL/SPHER /RWALL/PARAL /SENSOR/TIME
  *   cards_loads.c       /FUNCT /INIVEL /GRAV /BCS /IMPVEL
  *   cards_run.c         /BEGIN /RUN /SOLVER, deck-level defaults and checks
  */
@@ -29,7 +30,7 @@ typedef enum {
     RC_CARD_TYPE6, RC_CARD_FUNCT, RC_CARD_INIVEL, RC_CARD_GRAV, RC_CARD_BCS, RC_CARD_RUN,
     RC_CARD_SOLVER, RC_CARD_CPL_SPRING, RC_CARD_CPL_CATENARY, RC_CARD_PART, RC_CARD_GRPART,
     RC_CARD_FRICTION, RC_CARD_FRIC_ORIENT, RC_CARD_POWER, RC_CARD_CYL, RC_CARD_BOX, RC_CARD_IMPVEL,
-    RC_CARD_UNIT, RC_CARD_SEG, RC_CARD_SURFPART, RC_CARD_CPL_CONTACT, RC_CARD_JOINT
+    RC_CARD_UNIT, RC_CARD_SEG, RC_CARD_SURFPART, RC_CARD_CPL_CONTACT, RC_CARD_JOINT, RC_CARD_RWALL, RC_CARD_SENSOR
 } rc_card_kind;
 
 /* Supported cards; a family (kw with a sub) lists each subtype. */
@@ -55,6 +56,9 @@ static const struct {
     {"JOINT", "SPHERICAL", RC_CARD_JOINT}, {"JOINT", "REVOLUTE", RC_CARD_JOINT},
     {"JOINT", "DISTANCE", RC_CARD_JOINT},  {"JOINT", "FIXED", RC_CARD_JOINT},
     {"JOINT", "PRISMATIC", RC_CARD_JOINT},
+    {"RWALL", "PLANE", RC_CARD_RWALL},     {"RWALL", "CYL", RC_CARD_RWALL},
+    {"RWALL", "SPHER", RC_CARD_RWALL},     {"RWALL", "PARAL", RC_CARD_RWALL},
+    {"SENSOR", "TIME", RC_CARD_SENSOR},
 };
 
 /* Radioss cards without meaning for rigid bodies: skipped with a warning. */
@@ -68,7 +72,7 @@ static const char *const rc_explicit[] = {
     "MON", "PARITH", "CHKPT", "STATE", "DYNAIN", "KEREL", "DYREL", "ADYREL", "SHFRA",
     "CAA", "MADYMO", "INSPIRE", "NEGVOL", "MSTOP", "NSTOP"};
 /* Radioss cards ricochet plans to support: an error until then. */
-static const char *const rc_planned[] = {"SKEW", "SENSOR"};
+static const char *const rc_planned[] = {"SKEW"};
 
 static int rc_in_list(const char *kw, const char *const *list, int n)
 {
@@ -138,6 +142,8 @@ static rc_status rc_card_call(rc_reader *rd, const rc_block *b, rc_card_kind kin
     case RC_CARD_SEG: return rc_card_seg(rd, b);
     case RC_CARD_SURFPART: return rc_card_surfpart(rd, b);
     case RC_CARD_JOINT: return rc_card_joint(rd, b);
+    case RC_CARD_RWALL: return rc_card_rwall(rd, b);
+    case RC_CARD_SENSOR: return rc_card_sensor_time(rd, b);
     }
     return RC_SET(rd->err, RC_EINTERNAL, "unknown card kind %d", (int)kind);
 }
@@ -154,6 +160,10 @@ static int rc_radioss_subtype(const char *kw, const char *sub)
     static const char *const grpart[] = {"PART", "GRPART", "BOX", "BOX2", "MAT", "PROP", "SUBSET", "SUBMOD"};
     static const char *const inivel[] = {"TRA", "ROT", "T&R", "AXIS", "GRID", "FVM", "NODE"};
     static const char *const inter[] = {"SUB", "KINE", "LAGMUL", "HERTZ"};
+    static const char *const rwall[] = {"PLANE", "CYL", "SPHER", "PARAL", "LAGMUL", "THERM"};
+    static const char *const sensor[] = {"TIME", "ACCE", "DIST", "SENS", "AND", "OR", "NOT", "INTER", "RWALL", "RBODY",
+                                         "SECT", "WORK", "ENERGY", "DIST_SURF", "HIC", "VEL", "GAUGE", "TEMP", "NIC_NIJ",
+                                         "PYTHON", "USER1", "USER2", "USER3", "MATLAB", "DISP", "CONTACT"};
     if (strcmp(kw, "INTER") == 0) {
         if (strncmp(sub, "TYPE", 4) == 0 && sub[4] >= '0' && sub[4] <= '9') {
             const char *p = sub + 4;
@@ -166,6 +176,8 @@ static int rc_radioss_subtype(const char *kw, const char *sub)
     if (strcmp(kw, "GRNOD") == 0) return rc_in_list(sub, grnod, RC_NF(grnod));
     if (strcmp(kw, "GRPART") == 0) return rc_in_list(sub, grpart, RC_NF(grpart));
     if (strcmp(kw, "INIVEL") == 0) return rc_in_list(sub, inivel, RC_NF(inivel));
+    if (strcmp(kw, "RWALL") == 0) return rc_in_list(sub, rwall, RC_NF(rwall));
+    if (strcmp(kw, "SENSOR") == 0) return rc_in_list(sub, sensor, RC_NF(sensor));
     return 0; /* /JOINT, /COUPLING: ricochet's own */
 }
 

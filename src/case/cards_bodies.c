@@ -132,11 +132,6 @@ rc_status rc_card_rbody(rc_reader *rd, const rc_block *b)
         r->line_loc[i] = b->lines[i + 1].loc;
     }
     /* fields with a Radioss meaning ricochet does not model: warned */
-    if (r->sens_id &&
-        (st = rc_case_warn(rd, &r->line_loc[0], "card %s, field sens_ID: sensor %d ignored: the body is "
-                     "active from t = 0 (Radioss activates it when the sensor triggers)",
-                     b->name, r->sens_id)))
-        return st;
     if (r->surf_id &&
         (st = rc_case_warn(rd, &r->line_loc[0], "card %s, field surf_ID: envelope surface %d ignored "
                      "(ricochet's contacts use the analytic surfaces of the body)",

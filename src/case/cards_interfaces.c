@@ -58,7 +58,9 @@ rc_status rc_card_type6(rc_reader *rd, const rc_block *b)
     if ((st = rc_card_lines(rd, b, t->title, nl, nl, desc[nl - 3], &nd))) return st;
 
     rc_field l1[] = {RC_F_INT("surf_ID1", &t->surf1, 0, RC_FF_POS),
-                     RC_F_INT("surf_ID2", &t->surf2, 0, RC_FF_POS)};
+                     RC_F_INT("surf_ID2", &t->surf2, 0, RC_FF_POS),
+                     /* ricochet's extension in Radioss's blank columns: the sensor */
+                     RC_F_INT("Isensor", &t->sensor_id, 0, RC_FF_NONNEG)};
     rc_field l2[] = {
         RC_F_REALD("Sfric", &t->sfric, 0, RC_FF_NONNEG, RC_D_F),
         RC_F_REALD("Fric", &t->fric, 0, RC_FF_NONNEG, RC_D_NONE),
@@ -118,7 +120,7 @@ rc_status rc_card_type6(rc_reader *rd, const rc_block *b)
     o3_44[1].width = o3_44[2].width = 8;
     rc_field *lines[6] = {l1, l2, l3, l4, l5, l6};
     int nf[6] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5), RC_NF(l6)};
-    if (nl < 6) { lines[1] = o2; nf[1] = RC_NF(o2); lines[2] = o3; nf[2] = RC_NF(o3); }
+    if (nl < 6) { nf[0] = 2; lines[1] = o2; nf[1] = RC_NF(o2); lines[2] = o3; nf[2] = RC_NF(o3); } /* no Isensor */
     if (nl == 5) { lines[3] = o4_100; nf[3] = RC_NF(o4_100); }
     if (nl == 4) { lines[3] = o4_51; nf[3] = RC_NF(o4_51); }
     if (nl == 3) {
@@ -210,7 +212,8 @@ rc_status rc_card_power(rc_reader *rd, const rc_block *b)
                      RC_F_INT("fct_stiff", &p->fct_stiff, 0, RC_FF_NONNEG),
                      RC_F_INT("fct_damp", &p->fct_damp, 0, RC_FF_NONNEG),
                      RC_F_SET("Ispline", &p->ispline, RC_SPL_DEFAULT, RC_FF_ZDEF, 0x1Fu, 0, NULL),
-                     RC_F_SET("Irdf", &p->irdf, 1, RC_FF_ZDEF, 0x7u, 0, NULL)};
+                     RC_F_SET("Irdf", &p->irdf, 1, RC_FF_ZDEF, 0x7u, 0, NULL),
+                     RC_F_INT("Isensor", &p->sensor_id, 0, RC_FF_NONNEG)};
     /* exponents: blank is the default, an explicit 0 is 0 */
     rc_field l2[] = {RC_F_REAL("K", &p->k, 0, RC_FF_NONNEG), RC_F_REALD("m1", &p->m1, RC_PW_DEF_M1, RC_FF_NONNEG, RC_D_NONE),
                      RC_F_REAL("C", &p->c, 0, RC_FF_NONNEG), RC_F_REALD("m2", &p->m2, RC_PW_DEF_M2, RC_FF_NONNEG, RC_D_NONE),

@@ -122,6 +122,11 @@ typedef struct rc_case_surf {
     int *part;                /* [npart] */
     rc_loc *part_loc;         /* [npart] */
     rc_loc rbody_loc;         /* the line holding rbody_ID (the header's when absent) */
+    /* SEG made by the compiler for a rigid wall (model/rwall.c): node ids
+     * that are contact points alone, without segments (nseg = 0); not
+     * owned by the case */
+    int npoint;
+    const int *point;         /* [npoint] */
 } rc_case_surf;
 
 /* /INTER/TYPE6/inter_ID: every field of the six data lines. */
@@ -146,7 +151,48 @@ typedef struct rc_case_type6 {
     double fscalev;                           /* line 6: [N] */
     rc_loc loc;
     rc_loc line_loc[6];                       /* each data line */
+    int sensor_id;                            /* line 1, ricochet: /SENSOR that activates the interface (0: none) */
+    const char *name;                         /* the card its messages name: NULL for a /INTER/TYPE6
+                                                 card ("/INTER/TYPE6/<id>"); the contact of a /RWALL
+                                                 with a surface, made by the compiler (model/rwall.c) */
 } rc_case_type6;
+
+/* /SENSOR/TIME/sens_ID (cards_rwall.c): a sensor that is on from t = Tdelay. */
+typedef struct rc_case_sensor {
+    int id;
+    char title[101];
+    double tdelay;        /* [s], >= 0 */
+    rc_loc loc;
+    rc_loc line_loc;      /* the data line */
+} rc_case_sensor;
+
+/* /RWALL/PLANE, /RWALL/CYL, /RWALL/SPHER, /RWALL/PARAL (cards_rwall.c): a
+ * rigid wall acting on the nodes of grnd_ID1 minus those of grnd_ID2 (for
+ * ricochet: on the surfaces of the bodies that own them, model/rwall.c). */
+typedef enum { RC_RWALL_PLANE = 1, RC_RWALL_CYL = 2, RC_RWALL_SPHER = 3, RC_RWALL_PARAL = 4 } rc_case_rwall_kind;
+
+typedef struct rc_case_rwall {
+    int id;
+    char title[101];
+    rc_case_rwall_kind kind;
+    int node_id;          /* moving wall's node (0: fixed wall): the wall translates with it */
+    int slide;            /* 0 sliding (frictionless), 1 tied (refused), 2 Coulomb friction */
+    int grnd1, grnd2;     /* nodes the wall acts on, nodes taken out (0: none) */
+    int iform;            /* Radioss 2026: 0 kinematic, 1 penalty (ricochet: penalty either way) */
+    double dsearch;       /* nodes within this distance of the wall at t = 0 are added [m]; 0: none */
+    double fric;          /* Coulomb coefficient (Slide 2) [-] */
+    double diameter;      /* CYL, SPHER: diameter [m] */
+    double ffac;          /* friction filter factor (ifq) */
+    int ifq;              /* friction filter flag (0 only) */
+    double mass;          /* moving wall: its mass [kg] */
+    double v0[3];         /* moving wall: its initial velocity [m/s] */
+    double m[3];          /* point M: on the plane, on the axis, the centre [m]; a moving wall:
+                             the node's position (set by the compiler) */
+    double m1[3];         /* PLANE: M1 (normal M -> M1); CYL: M1 on the axis; PARAL: corner [m] */
+    double m2[3];         /* PARAL: corner M2 [m] */
+    rc_loc loc;
+    rc_loc line_loc[5];   /* each data line (file NULL when absent) */
+} rc_case_rwall;
 
 /* /INIVEL/TRA and /INIVEL/ROT. */
 typedef struct rc_case_inivel {
@@ -315,6 +361,8 @@ struct rc_case {
     int nsurf;   rc_case_surf *surf;
     int ntype6;  rc_case_type6 *type6;
     int npower;  struct rc_case_power *power;   /* case_power.h */
+    int nrwall;  rc_case_rwall *rwall;
+    int nsensor; rc_case_sensor *sensor;
     int nimpvel; struct rc_case_impvel *impvel; /* case_power.h */
     int ninivel; rc_case_inivel *inivel;
     int ngrav;   rc_case_grav *grav;
@@ -350,6 +398,8 @@ int rc_case_find_node(const rc_case *c, int id);
 int rc_case_find_grnod(const rc_case *c, int id);
 int rc_case_find_rbody(const rc_case *c, int id);
 int rc_case_find_surf(const rc_case *c, int id);
+int rc_case_find_rwall(const rc_case *c, int id);  /* a linear scan */
+int rc_case_find_sensor(const rc_case *c, int id); /* a linear scan */
 int rc_case_find_part(const rc_case *c, int id);
 int rc_case_find_grpart(const rc_case *c, int id);
 /* Body carrying a node (its main node or in its secondary group), or -1. */

@@ -66,6 +66,7 @@ typedef enum {
     RC_IDK_GRPART, RC_IDK_FRICTION, RC_IDK_FRICORIENT, RC_IDK_IMPVEL,
     RC_IDK_SHELL, RC_IDK_SOLID, RC_IDK_PROP, RC_IDK_MAT, RC_IDK_SKEW, RC_IDK_ADMAS, /* cards_mesh.c */
     RC_IDK_JOINT, /* cards_joints.c */
+    RC_IDK_RWALL, RC_IDK_SENSOR, /* cards_rwall.c */
     RC_IDK_COUNT
 } rc_id_kind;
 
@@ -116,7 +117,7 @@ typedef struct rc_reader {
 
     int capfunct, capnode, capgrnod, caprbody, capsurf, captype6, capinivel,
         capgrav, capbcs, capwarn, capcoupling, capjoint, cappart, capgrpart, capfriction, capfricorient,
-        cappower, capimpvel;
+        cappower, capimpvel, caprwall, capsensor;
     rc_id_entry *ids[RC_IDK_COUNT];
     int nids[RC_IDK_COUNT], capids[RC_IDK_COUNT];
     int seq;
@@ -333,6 +334,9 @@ rc_status rc_card_surfpart(rc_reader *rd, const rc_block *b);
 /* Interfaces (cards_interfaces.c). */
 rc_status rc_card_type6(rc_reader *rd, const rc_block *b);
 rc_status rc_card_power(rc_reader *rd, const rc_block *b);
+/* cards_rwall.c */
+rc_status rc_card_rwall(rc_reader *rd, const rc_block *b);
+rc_status rc_card_sensor_time(rc_reader *rd, const rc_block *b);
 
 /* Friction (cards_friction.c). */
 rc_status rc_card_friction(rc_reader *rd, const rc_block *b);

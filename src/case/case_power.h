@@ -23,6 +23,7 @@ typedef struct rc_case_power {
     int fct_stiff, fct_damp;   /* line 1: splines (0: none)                     */
     int ispline;               /* line 1: spline kind RC_SPL_* (power.h)        */
     int irdf;                  /* line 1: 1 RDF on, 2 off                       */
+    int sensor_id;             /* line 1: /SENSOR that activates it (0: none)   */
     double k, m1, c, m2, m3;   /* line 2: [N/m^m1] [-] [N (s/m)^m2/m^m3] [-] [-] */
     double rdf, dreg, vreg;    /* line 3: [-] [m] [m/s]                         */
     double tstart, tstop;      /* line 3: [s]                                   */

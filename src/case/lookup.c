@@ -181,3 +181,17 @@ const char *rc_case_warning(const rc_case *c, int i)
 {
     return c && i >= 0 && i < c->nwarnings ? c->warnings[i] : NULL;
 }
+
+int rc_case_find_rwall(const rc_case *c, int id)
+{
+    for (int k = 0; c && k < c->nrwall; k++)
+        if (c->rwall[k].id == id) return k;
+    return -1;
+}
+
+int rc_case_find_sensor(const rc_case *c, int id)
+{
+    for (int k = 0; c && k < c->nsensor; k++)
+        if (c->sensor[k].id == id) return k;
+    return -1;
+}

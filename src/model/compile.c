@@ -22,6 +22,8 @@
 #include "model/model.h"
 #include "base/progress.h"
 #include "model/power.h"
+#include "model/rwall.h"
+#include "model/sensor.h"
 
 #define ALLOC(ptr, n)                                                               \
     do {                                                                            \
@@ -321,12 +323,14 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
 }
 
 /* ---- surfaces ---------------------------------------------------------- */
-static rc_status compile_surfaces(const rc_case *c, rc_model *m, rc_error *err)
+static rc_status compile_surfaces(const rc_case *c, rc_model *m, const rc_rwall_case *rx, rc_error *err)
 {
-    /* the boxes that meet a plane or a box: their corners and faces too */
+    /* the boxes that meet a plane or a box (a plane wall too): their
+     * corners and faces too */
     unsigned char *corners = malloc((size_t)c->nsurf + 1);
     if (!corners) RC_RAISE(err, RC_ENOMEM, "out of memory");
     rc_geom_box_corner_flags(c, corners); /* model/geom.c */
+    rc_rwall_box_flags(rx, corners);      /* model/rwall.c */
     rc_status st = RC_OK;
     for (int s = 0; s < c->nsurf && !st; s++) {
         const rc_case_surf *cs = &c->surf[s];
@@ -439,8 +443,9 @@ static rc_status check_hysteresis(const rc_model *m, int i, const rc_case_type6 
 static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *err)
 {
     const rc_case_type6 *t6 = &c->type6[i];
-    char card[64];
-    snprintf(card, sizeof card, "/INTER/TYPE6/%d", t6->id);
+    char card[128];
+    if (t6->name) snprintf(card, sizeof card, "%s", t6->name); /* a wall's contact (model/rwall.c) */
+    else snprintf(card, sizeof card, "/INTER/TYPE6/%d", t6->id);
     int s1 = rc_case_find_surf(c, t6->surf1), s2 = rc_case_find_surf(c, t6->surf2);
     if (s1 < 0 || s2 < 0)
         RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field %s: expected the id of a /SURF, got %d (no such surface)",
@@ -469,6 +474,10 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     m->inter_gap[i] = t6->gap;
     m->inter_tstart[i] = t6->tstart;
     m->inter_tstop[i] = t6->tstop;
+    /* a sensor turns the interface on at its time (model/sensor.c) */
+    rc_status sst = rc_sensor_tstart(c, t6->sensor_id, rc_loc_or(t6->line_loc[0], t6->loc), card, &m->inter_tstart[i],
+                                     m->inter_tstop[i], err);
+    if (sst) return sst;
     m->inter_visc[i] = t6->visc;
     m->inter_etarget[i] = t6->e_target;
     m->inter_vimp[i] = t6->v_imp;
@@ -662,8 +671,23 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
 {
     rc_status st = RC_OK;
     *out = NULL;
+    /* the rigid walls: the case with their surfaces, load curve and (once
+     * the bodies and surfaces are known) contacts appended (model/rwall.c) */
+    /* first the bodies held until their sensor's time (model/sensor.c) */
+    rc_sensor_case sx;
+    rc_rwall_case rx;
+    if ((st = rc_sensor_begin(c, &sx, err))) return st;
+    if ((st = rc_rwall_begin(&sx.c, &rx, err))) {
+        rc_sensor_end(&sx);
+        return st;
+    }
+    c = &rx.c;
     rc_model *m = calloc(1, sizeof *m);
-    if (!m) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    if (!m) {
+        rc_rwall_end(&rx);
+        rc_sensor_end(&sx);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
     /* provenance and settings */
     m->case_path = malloc(strlen(c->path) + 1);
     if (!m->case_path) {
@@ -807,6 +831,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->body_dofmask, 6 * m->nbody);
     ALLOC(m->body_loc, m->nbody);
     if ((st = compile_bodies(c, m, err))) goto fail;
+    if ((st = rc_rwall_bodies(&rx, m, err))) goto fail;
     /* surfaces */
     m->nsurf = c->nsurf;
     ALLOC(m->surf_id, m->nsurf);
@@ -818,8 +843,10 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->surf_ext, RC_SURF_NEXT * m->nsurf);
     ALLOC(m->surf_nadr, m->nsurf + 1);
     ALLOC(m->surf_sadr, m->nsurf + 1);
-    if ((st = compile_surfaces(c, m, err))) goto fail;
+    if ((st = compile_surfaces(c, m, &rx, err))) goto fail;
+    if ((st = rc_rwall_points(&rx, m, err))) goto fail; /* a plane wall's nodes of bodies without surfaces */
     if ((st = rc_seg_meshes(m, err))) goto fail; /* model/segsurf.c */
+    if ((st = rc_rwall_contacts(&rx, m, err))) goto fail; /* the walls' contacts, TYPE6 laws */
     /* interfaces */
     m->ninter = c->ntype6 + c->npower; /* TYPE6, then /INTER/POWER */
     ALLOC(m->inter_id, m->ninter);
@@ -886,9 +913,13 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
         for (int k = 0; k < 3; k++) m->body_y0[RC_NB * b + k] -= m->origin[k];
     for (int k = 0; k < 3; k++) m->ground_y0[k] = 0.0;
     own_locations(c, m);
+    rc_rwall_end(&rx);
+    rc_sensor_end(&sx);
     *out = m;
     return RC_OK;
 fail:
+    rc_rwall_end(&rx);
+    rc_sensor_end(&sx);
     rc_model_free(m);
     return st;
 }

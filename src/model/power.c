@@ -14,6 +14,7 @@
 #include "model/geom.h"
 #include "model/model.h"
 #include "model/power.h"
+#include "model/sensor.h"
 
 #define RC_PI 3.14159265358979323846
 
@@ -64,6 +65,9 @@ rc_status rc_power_compile(const rc_case *c, rc_model *m, int k, int i, rc_error
     m->inter_gap[i] = 0.0;
     m->inter_tstart[i] = p->tstart;
     m->inter_tstop[i] = p->tstop;
+    /* a sensor turns the interface on at its time (model/sensor.c) */
+    rc_status sst = rc_sensor_tstart(c, p->sensor_id, p->line_loc[0], card, &m->inter_tstart[i], m->inter_tstop[i], err);
+    if (sst) return sst;
     m->inter_ascalex[i] = m->inter_fscaleld[i] = m->inter_ascalef[i] = m->inter_ascalev[i] = 1.0;
     m->inter_fscalev[i] = m->inter_fscaleul[i] = 1.0;
     m->inter_fct_ld[i] = m->inter_fct_dv[i] = m->inter_fct_df[i] = m->inter_fct_ul[i] = -1;

@@ -197,8 +197,9 @@ rc_status rc_seg_surface(const rc_case *c, rc_model *m, int s, rc_error *err)
             f[k].turned = 0;
         }
     }
-    /* the nodes: sorted unique ids */
-    int *ids = malloc((size_t)(4 * nf + 1) * sizeof(int)), nn = 0;
+    /* the nodes: sorted unique ids (a rigid wall's contact points: its
+     * nodes of one body alone, model/rwall.c) */
+    int *ids = malloc((size_t)(4 * nf + cs->npoint + 1) * sizeof(int)), nn = 0;
     if (!ids) {
         free(f);
         RC_RAISE(err, RC_ENOMEM, "out of memory");
@@ -206,6 +207,7 @@ rc_status rc_seg_surface(const rc_case *c, rc_model *m, int s, rc_error *err)
     for (int k = 0; k < nf; k++)
         for (int j = 0; j < 4; j++)
             if (f[k].node[j]) ids[nn++] = f[k].node[j];
+    for (int k = 0; k < cs->npoint; k++) ids[nn++] = cs->point[k];
     qsort(ids, (size_t)nn, sizeof(int), cmp_int);
     int u = 0;
     for (int k = 0; k < nn; k++)
@@ -239,6 +241,7 @@ rc_status rc_seg_surface(const rc_case *c, rc_model *m, int s, rc_error *err)
             }
         }
     if (st) goto done;
+    if (cs->npoint > 0 && nf == 0) body = rc_case_body_of_node(c, cs->point[0]);
     const int b = body < 0 ? -1 : body;
     const double *org = b >= 0 ? m->body_y0 + RC_NB * b : m->ground_y0;
     const int n0 = m->surf_nadr[s], s0 = m->surf_sadr[s];
@@ -510,7 +513,7 @@ static rc_status seg_mesh(rc_model *m, int s, rc_segmesh *g, rc_error *err)
             }
         ext += fmax(b[0] - a[0], fmax(b[1] - a[1], b[2] - a[2]));
     }
-    g->h = ext / g->ns;
+    g->h = g->ns > 0 ? ext / g->ns : 0.0; /* contact points alone (a rigid wall's): the span below */
     g->depth = 0.5 * g->h;
     /* centres and unit normals (node to segment) */
     g->scen = malloc((size_t)(3 * g->ns + 1) * sizeof(double));

@@ -298,7 +298,7 @@ T('run_dtout_negative', RUN, 'field Dt_out', at(RUN, 1, 21, 40, '-0.01'))
 T('run_ev_state', RUN, 'field Ev_state', at(RUN, 1, 41, 50, '3'))
 T('run_twice', RUN, 'only one such card', before_end([RUN, '                   2']))
 T('run_missing', '-', 'no /RUN card', chain(delete(RUN, 0, 2), lambda l: (l, hidx(l, '/END'), {})))
-T('solver_method', SOL, 'field Method', at(SOL, 1, 1, 10, '3'))
+T('solver_method', SOL, 'field Method', at(SOL, 1, 1, 10, '4'))
 # ---- /JOINT
 T('joint_body_same', JT, 'field rbody_ID2', at(JT, 2, 11, 20, '4'))
 T('joint_body_missing', JT, 'field rbody_ID1', at(JT, 2, 1, 10, '9'))
@@ -418,6 +418,54 @@ def start_overlap(z):
 TL('start_sphere_inside_floor', '/INTER/TYPE6/1', 'overlap at t = 0: penetration 0.04 m', start_overlap('0.01'))
 TL('start_sphere_half_inside_floor', '/INTER/TYPE6/1', 'surfaces /SURF/ELLIPS/1 and /SURF/PLANE/2 overlap',
    start_overlap('0.02'))
+
+
+# ---- /RWALL (a plane 10 m below the scene unless a fault says otherwise)
+RW = '/RWALL/PLANE/9'
+
+
+def RWALL(kind='PLANE', l1=(0, 0, 1, 0), l2=None, m=('0', '0', '-10'), m1=('0', '0', '-9'), extra=(), head=None):
+    out = [head or '/RWALL/%s/9' % kind, 'wall', ''.join('%10s' % v for v in l1)]
+    out.append(l2 if l2 is not None else '')
+    out.append(''.join('%20s' % v for v in m))
+    if m1 is not None:
+        out.append(''.join('%20s' % v for v in m1))
+    return out + list(extra)
+
+
+TL('rwall_slide_tied', RW, 'field Slide', before_end(RWALL(l1=(0, 1, 1, 0)), expect=2))
+TL('rwall_moving_node', RW, 'field node_ID', before_end(RWALL(l1=(1, 0, 2, 0), m=('2', '0', '0')), expect=2))
+TL('rwall_moving_mass', RW, 'field Mass', before_end(RWALL(l1=(4, 0, 1, 0), m=('0', '1', '0')), expect=4))
+TL('rwall_moving_node_missing', RW, 'field node_ID', before_end(RWALL(l1=(77, 0, 1, 0), m=('2', '1', '0')), expect=2))
+TL('rwall_group_missing', RW, 'field grnd_ID1', before_end(RWALL(l1=(0, 0, 99, 0)), expect=2))
+TL('rwall_group2_missing', RW, 'field grnd_ID2', before_end(RWALL(l1=(0, 0, 1, 98)), expect=2))
+TL('rwall_no_node', RW, 'field grnd_ID1', before_end(RWALL(l1=(0, 0, 0, 0)), expect=2))
+TL('rwall_fric_text', RW, 'field fric', before_end(RWALL(l1=(0, 2, 1, 0), l2='%20s%20s' % ('0', 'abc')), expect=3))
+TL('rwall_ifq', RW, 'field ifq', before_end(RWALL(l1=(0, 2, 1, 0), l2='%20s%20s%20s%20s%10s' % ('0', '0.3', '0', '0.5', '1')),
+                                           expect=3))
+TL('rwall_m1_equals_m', RW, 'field XM1 YM1 ZM1', before_end(RWALL(m1=('0', '0', '-10')), expect=5))
+TL('rwall_missing_line', RW, 'expected 4 data lines', before_end(RWALL(m1=None), expect=0))
+TL('rwall_sphere_diameter', '/RWALL/SPHER/9', 'field Diameter', before_end(RWALL('SPHER', m1=None), expect=3))
+TL('rwall_cyl_box', '/RWALL/CYL/9', 'field grnd_ID1',
+   before_end(RWALL('CYL', l1=(0, 0, 3, 0), l2='%20s%20s%20s' % ('0', '0', '1'), m1=('1', '0', '-10')), expect=2))
+TL('rwall_paral', '/RWALL/PARAL/9', 'not supported yet',
+   before_end(RWALL('PARAL', extra=['%20s%20s%20s' % ('1', '0', '-10')]), expect=0))
+TL('rwall_lagmul', '/RWALL/LAGMUL/9', 'not supported yet', before_end(RWALL(head='/RWALL/LAGMUL/9'), expect=0))
+TL('rwall_duplicate', RW, 'duplicate id 9', before_end(RWALL() + RWALL(), expect=6))
+
+# ---- /SENSOR/TIME and its uses (the sphere /RBODY/1 and /INTER/TYPE6/1)
+SENS = ['/SENSOR/TIME/4', 'release', '                 0.3']
+TL('sensor_tdelay_negative', '/SENSOR/TIME/4', 'field Tdelay', before_end(['/SENSOR/TIME/4', 'release', '               -0.3'],
+                                                                            expect=2))
+TL('sensor_acce', '/SENSOR/ACCE/4', 'not supported yet', before_end(['/SENSOR/ACCE/4', 'accelerometer', '         1'], expect=0))
+TL('sensor_missing_line', '/SENSOR/TIME/4', 'expected 1 data line', before_end(['/SENSOR/TIME/4', 'release'], expect=0))
+TL('rbody_sensor_missing', '/RBODY/1', 'field sens_ID', at('/RBODY/1', 2, 11, 20, '9'))
+TL('rbody_sensor_held_inivel', '/RBODY/1', 'not supported yet',
+   lambda lines: (lambda r: (r[0] + [], r[1], r[2]))(at('/RBODY/1', 2, 11, 20, '4')(before_end(SENS)(lines)[0])))
+TL('type6_sensor_missing', T6, 'field Isensor', at(T6, 2, 21, 30, '9'))
+TL('type6_sensor_after_tstop', T6, 'field Isensor',
+   lambda lines: at(T6, 2, 21, 30, '4')(before_end(['/SENSOR/TIME/4', 'late', '                1e31'])(lines)[0]))
+TL('power_sensor_missing', PW, 'field Isensor', at(PW, 2, 61, 70, '9'))
 
 
 def write_all():

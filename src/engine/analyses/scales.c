@@ -192,7 +192,9 @@ static double imposed_speed(const rc_model *m, int b, double L)
 }
 
 /* Mass of body b as seen along the unit normal n: m / (sum over its free
- * translations k of n_k^2), INFINITY for a fixed body or one held along n. */
+ * translations k of n_k^2), INFINITY for a fixed body or one held along n
+ * (by /BCS, or by an /IMPVEL to the end of the run: one that ends before,
+ * e.g. the hold of a body until its sensor's time, leaves it free). */
 static double normal_mass(const rc_model *m, int b, const double *n)
 {
     if (b < 0 || m->body_yadr[b] < 0) return INFINITY;
@@ -200,7 +202,7 @@ static double normal_mass(const rc_model *m, int b, const double *n)
     for (int k = 0; k < 3; k++) {
         int held = m->body_dofmask[6 * b + k];
         const rc_imposed *p = m->imp;
-        for (int j = 0; p && j < p->nt; j++) held |= p->tbody[j] == b && p->tdir[j] == k;
+        for (int j = 0; p && j < p->nt; j++) held |= p->tbody[j] == b && p->tdir[j] == k && p->ttstop[j] >= m->tend;
         if (!held) w += n[k] * n[k];
     }
     return w > 1e-12 ? m->body_mass[b] / w : INFINITY;

@@ -43,6 +43,13 @@
 static void surf_card(const rc_case *c, const rc_model *m, int s, char *buf, size_t n)
 {
     static const char *const kind[] = {"", "PLANE", "ELLIPS", "CYL", "BOX", "SEG", "PART"};
+    static const char *const wall[] = {"", "PLANE", "CYL", "SPHER", "PARAL"};
+    /* a wall's surface carries the id -rwall_ID (model/rwall.c) */
+    const int w = m->surf_id[s] < 0 ? rc_case_find_rwall(c, -m->surf_id[s]) : -1;
+    if (w >= 0) {
+        snprintf(buf, n, "/RWALL/%s/%d", wall[c->rwall[w].kind], c->rwall[w].id);
+        return;
+    }
     const int k = rc_case_find_surf(c, m->surf_id[s]);
     const int ck = k >= 0 ? (int)c->surf[k].kind : 0;
     snprintf(buf, n, "/SURF/%s/%d", ck >= 1 && ck <= 6 ? kind[ck] : "?", m->surf_id[s]);

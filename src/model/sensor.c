@@ -1,0 +1,159 @@
+/*
+ * Time sensors (/SENSOR/TIME) acting on interfaces and bodies (sensor.h,
+ * docs/theory.md "Sensors").
+ *
+ * A body with a sensor is held at rest until the sensor's time: ricochet
+ * has no free nodes for Radioss's inactive rigid body, so the body waits
+ * in its initial pose, as a fixed body would, with the supports taking the
+ * loads; at the sensor's time the holds end (an imposed-velocity
+ * breakpoint, the integration restarted there) and the body moves freely
+ * from rest. The holds are /IMPVEL entries appended to a copy of the case,
+ * so that imposed.c compiles them as any other.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/error.h"
+#include "case/case_joint.h"
+#include "case/case_power.h"
+#include "model/sensor.h"
+
+rc_status rc_sensor_tstart(const rc_case *c, int sensor_id, rc_loc loc, const char *card, double *tstart,
+                           double tstop, rc_error *err)
+{
+    if (sensor_id == 0) return RC_OK;
+    const int k = rc_case_find_sensor(c, sensor_id);
+    if (k < 0)
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field Isensor: expected the id of a /SENSOR/TIME, got %d (no such sensor)",
+                 RC_LOC(loc), card, sensor_id);
+    const double ts = c->sensor[k].tdelay;
+    if (ts > *tstart) *tstart = ts;
+    if (*tstart > tstop)
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card %s, field Isensor: /SENSOR/TIME/%d turns the interface on at %.9g s, after its Tstop "
+                 "%.9g s: it would never act; expected a sensor time before Tstop",
+                 RC_LOC(loc), card, sensor_id, ts, tstop);
+    return RC_OK;
+}
+
+/* Does group gid hold a node of body b? */
+static int group_has_body(const rc_case *c, int gid, int b)
+{
+    const int g = gid ? rc_case_find_grnod(c, gid) : -1;
+    for (int k = 0; g >= 0 && k < c->grnod[g].n; k++)
+        if (rc_case_body_of_node(c, c->grnod[g].nodes[k]) == b) return 1;
+    return 0;
+}
+
+/* The card that also drives body b (an /INIVEL, /IMPVEL, /BCS, /JOINT),
+ * written into what/where; 0: none. */
+static int other_driver(const rc_case *c, int b, char *what, size_t n, rc_loc *where)
+{
+    for (int k = 0; k < c->ninivel; k++)
+        if (group_has_body(c, c->inivel[k].grnod_id, b)) {
+            snprintf(what, n, "/INIVEL/%s/%d", c->inivel[k].rot ? "ROT" : "TRA", c->inivel[k].id);
+            *where = c->inivel[k].loc;
+            return 1;
+        }
+    for (int k = 0; k < c->nimpvel; k++)
+        if (group_has_body(c, c->impvel[k].grnod_id, b)) {
+            snprintf(what, n, "/IMPVEL/%d", c->impvel[k].id);
+            *where = c->impvel[k].loc;
+            return 1;
+        }
+    for (int k = 0; k < c->nbcs; k++)
+        if (group_has_body(c, c->bcs[k].grnod_id, b)) {
+            snprintf(what, n, "/BCS/%d", c->bcs[k].id);
+            *where = c->bcs[k].loc;
+            return 1;
+        }
+    for (int k = 0; k < c->njoint; k++)
+        for (int e = 0; e < 2; e++)
+            if (c->joint[k].rbody[e] == c->rbody[b].id) {
+                snprintf(what, n, "/JOINT/%d", c->joint[k].id);
+                *where = c->joint[k].loc;
+                return 1;
+            }
+    return 0;
+}
+
+rc_status rc_sensor_begin(const rc_case *c, rc_sensor_case *x, rc_error *err)
+{
+    memset(x, 0, sizeof *x);
+    x->c = *c;
+    /* the bodies held until their sensor's time */
+    int nh = 0;
+    for (int b = 0; b < c->nrbody; b++) {
+        const rc_case_rbody *rb = &c->rbody[b];
+        if (rb->sens_id == 0) continue;
+        const rc_loc l1 = rc_loc_or(rb->line_loc[0], rb->loc);
+        const int k = rc_case_find_sensor(c, rb->sens_id);
+        if (k < 0)
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field sens_ID: expected the id of a /SENSOR/TIME, got %d (no such sensor)",
+                     RC_LOC(l1), rb->id, rb->sens_id);
+        if (!(c->sensor[k].tdelay > 0)) continue; /* on from t = 0: free from the start */
+        char what[64];
+        rc_loc where;
+        if (other_driver(c, b, what, sizeof what, &where))
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card /RBODY/%d, field sens_ID: the body is held at rest until /SENSOR/TIME/%d turns it on "
+                     "at %.9g s; %s (%s:%d) also drives it: a held body with an initial or imposed velocity, a /BCS or "
+                     "a joint is not supported yet",
+                     RC_LOC(l1), rb->id, rb->sens_id, c->sensor[k].tdelay, what, RC_LOC(where));
+        nh++;
+    }
+    if (nh == 0) return RC_OK;
+    x->c.index = NULL; /* the copy gets its own below (the case's stays the case's) */
+    x->impvel = calloc((size_t)(c->nimpvel + 6 * nh) + 1, sizeof *x->impvel);
+    x->grnod = calloc((size_t)(c->ngrnod + nh) + 1, sizeof *x->grnod);
+    x->funct = calloc((size_t)c->nfunct + 1, sizeof *x->funct);
+    x->nodes = calloc((size_t)nh + 1, sizeof *x->nodes);
+    if (!x->impvel || !x->grnod || !x->funct || !x->nodes) {
+        rc_sensor_end(x);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    if (c->nimpvel) memcpy(x->impvel, c->impvel, (size_t)c->nimpvel * sizeof *x->impvel);
+    if (c->ngrnod) memcpy(x->grnod, c->grnod, (size_t)c->ngrnod * sizeof *x->grnod);
+    if (c->nfunct) memcpy(x->funct, c->funct, (size_t)c->nfunct * sizeof *x->funct);
+    /* the zero function: a hold imposes v = 0 */
+    x->fx[1] = 1.0;
+    x->funct[c->nfunct] = (rc_case_funct){.id = -2, .npts = 2, .x = x->fx, .y = x->fy, .loc = c->end};
+    int ni = c->nimpvel, ng = c->ngrnod;
+    for (int b = 0; b < c->nrbody; b++) {
+        const rc_case_rbody *rb = &c->rbody[b];
+        const int k = rb->sens_id ? rc_case_find_sensor(c, rb->sens_id) : -1;
+        if (k < 0 || !(c->sensor[k].tdelay > 0)) continue;
+        const rc_loc l1 = rc_loc_or(rb->line_loc[0], rb->loc);
+        /* its main node, a group of its own */
+        x->nodes[ng - c->ngrnod] = rb->node_id;
+        x->grnod[ng] = (rc_case_grnod){.id = -rb->id, .n = 1, .nodes = &x->nodes[ng - c->ngrnod], .loc = l1};
+        ng++;
+        /* the six velocities held at zero until the sensor's time */
+        for (int j = 0; j < 6; j++)
+            x->impvel[ni++] = (rc_case_impvel){.id = -rb->id, .fct_id = -2, .dir = j, .grnod_id = -rb->id,
+                                               .ascale = 1.0, .fscale = 1.0, .tstart = 0.0,
+                                               .tstop = c->sensor[k].tdelay, .loc = l1, .line_loc = {l1, l1}};
+    }
+    x->c.impvel = x->impvel;
+    x->c.nimpvel = ni;
+    x->c.grnod = x->grnod;
+    x->c.ngrnod = ng;
+    x->c.funct = x->funct;
+    x->c.nfunct = c->nfunct + 1;
+    /* the copy's own index: its look-ups stay O(log N) (case/lookup.c) */
+    x->c.index = NULL;
+    rc_status st = rc_case_index_build(&x->c, err);
+    if (st) rc_sensor_end(x);
+    return st;
+}
+
+void rc_sensor_end(rc_sensor_case *x)
+{
+    if (x->impvel) rc_case_index_free(x->c.index); /* the copy's own (rc_sensor_begin) */
+    free(x->impvel);
+    free(x->grnod);
+    free(x->funct);
+    free(x->nodes);
+    memset(x, 0, sizeof *x);
+}

@@ -1,0 +1,39 @@
+/*
+ * Time sensors (/SENSOR/TIME) and what they activate (model/sensor.c,
+ * docs/theory.md "Sensors"): an interface naming a sensor (TYPE6 and
+ * /INTER/POWER Isensor) is inactive before the sensor's time; a body
+ * naming one (/RBODY sens_ID) is held at rest in its initial pose until
+ * then, by imposed zero velocities of its six degrees of freedom that end
+ * at the sensor's time (the /IMPVEL machinery: a breakpoint and a restart
+ * there), and is free afterwards.
+ */
+#ifndef RC_MODEL_SENSOR_H
+#define RC_MODEL_SENSOR_H
+
+#include "case/case.h"
+#include "model/model.h"
+
+typedef struct rc_sensor_case {
+    rc_case c;                    /* the case with the holds appended       */
+    struct rc_case_impvel *impvel; /* [nimpvel + 6 held bodies] owned        */
+    rc_case_grnod *grnod;         /* [ngrnod + held bodies] owned           */
+    rc_case_funct *funct;         /* [nfunct + 1] owned                     */
+    int *nodes;                   /* [held bodies] the groups' node ids     */
+    double fx[2], fy[2];          /* the zero function of the holds         */
+} rc_sensor_case;
+
+/* The copy of c with, for each /RBODY whose sensor's time is > 0, a node
+ * group of its main node (id -rbody_ID) and six /IMPVEL (id -rbody_ID)
+ * holding its velocities at zero until that time (the zero function, id
+ * -2); x->c is c itself when no body has a sensor. RC_EINPUT at the /RBODY
+ * line for a sensor that does not exist, or a held body that also has an
+ * /INIVEL, /IMPVEL, /BCS or /JOINT (not supported yet). */
+rc_status rc_sensor_begin(const rc_case *c, rc_sensor_case *x, rc_error *err);
+void rc_sensor_end(rc_sensor_case *x);
+/* The start of an interface of `card` (read at `loc`) whose Isensor is
+ * sensor_id: *tstart raised to the sensor's time; RC_EINPUT when the sensor
+ * does not exist or turns the interface on after its Tstop. */
+rc_status rc_sensor_tstart(const rc_case *c, int sensor_id, rc_loc loc, const char *card, double *tstart,
+                           double tstop, rc_error *err);
+
+#endif

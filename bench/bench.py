@@ -45,6 +45,7 @@ import json
 import math
 import os
 import platform
+import re
 import subprocess
 import sys
 import time
@@ -1315,7 +1316,6 @@ def bench_slip_static(B):
             status = str(nc.getncattr("status"))
             st["newton"] = int(nc.getncattr("stats_nonlin_iters"))
             st["newton_fails"] = int(nc.getncattr("stats_nonlin_fails"))
-        import re
         mt = re.search(r"no static equilibrium at the load time t = ([0-9.eE+-]+) s: the load exceeds what friction "
                        r"can hold.*the last equilibrium at t = ([0-9.eE+-]+) s", status)
         st["status"] = status[:160]

@@ -18,7 +18,12 @@ Cases (bench/README.md):
      b. stick-slip: a block dragged across a floor through a spring, 100 s,
         Renard two-level friction in the viscous form; accuracy = period,
         slip distances and switch times against a scipy Radau reference of
-        the same law.
+        the same law;
+     c. the drag to the slip in statics (--only slipstatic): a block held by
+        its stick spring, pulled by a force ramped until it slips, solved by
+        the static analysis (its equilibria and the load at which friction
+        can no longer hold) against the explicit scheme and plain CVODE of
+        the same 1-D law up to the slip, at 1e-5 m g on the friction force.
 
 Programs (built by bench/run.sh into the build directory):
   ricochet       the CLI: accuracy (netCDF output), statistics, peak memory
@@ -30,7 +35,7 @@ Programs (built by bench/run.sh into the build directory):
   peakrss        launcher that reports a child's own ru_maxrss (wait4)
 
 usage: /usr/bin/python3 bench/bench.py [--build DIR] [--quick]
-       [--only drop|column|quasi|ramp|stickslip|joint|stepcost|cascade] [--sizes 10,100,1000]
+       [--only drop|column|quasi|ramp|stickslip|slipstatic|joint|stepcost|cascade] [--sizes 10,100,1000]
        [--qsizes 100,1000] [--ramps 20,100] [--clock wall|cpu] [--work DIR] [--json FILE]
        (ramp, stick-slip and cascade options: --help)
 Prints plain tables; writes the raw numbers to DIR/bench/results.json.
@@ -40,6 +45,7 @@ import json
 import math
 import os
 import platform
+import re
 import subprocess
 import sys
 import time
@@ -1230,6 +1236,156 @@ def bench_stickslip(B):
     return res
 
 
+# ------------------------------------------------- stick-slip onset in statics
+# Case 3c: the drag to the slip, solved statically (/SOLVER Method 3). A block
+# pressed on a floor (its height imposed at the static penetration m g / k:
+# F_n = m g), held by the TYPE6 stick spring K_t (Coulomb mu), pulled along x
+# by a force ramped at RATE N/s (a /GRAV along x on the block alone: the drag
+# of the stick-slip spring, ks V = 1 N/s, on a block that does not move). A
+# spring drag would hold the slide (an equilibrium in slip, which the static
+# analysis follows); a force does not, so the static analysis ends where
+# friction can no longer hold: rate t* = mu m g.
+SLIP = dict(m=1.0, R=0.05, k=1.0e6, kt=1.0e6, mu=0.4, rates=(1.0, 0.01), target=1e-5)
+
+
+def slip_deck(rate, p=SLIP):
+    """The static deck: equilibria every T/10 up to T = 5 N / rate (the slip
+    at t* = mu m g / rate = 0.785 T)."""
+    M, R, K = p["m"], p["R"], p["k"]
+    T = 5.0 / rate
+    z0 = R - M * G / K
+    d = Deck(f"bench: block pulled by a force ramped at {rate:g} N/s until it slips, static analysis")
+    d.funct(1, [0.0, 1.0], [0.0, K], title="linear load curve k = 1e6 N/m")
+    d.funct(2, [0.0, T], [0.0, 1.0], title="pull ramp f(t) = t / T")
+    d.funct(3, [0.0, T], [0.0, 0.0], title="zero: the block's height held")
+    d.nodes([(1, 0.0, 0.0, z0)])
+    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, grnod=1, title="block 1 kg")
+    d.sphere(1, 1, (0.0, 0.0, z0), R, title="block sphere")
+    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor z = 0 (fixed)")
+    d.grnod(1, [1], title="block")
+    d.bcs(1, 1, "010 111", title="block held in y, no rotation")
+    d.impvel(1, 3, "Z", 1, title="height imposed at the static penetration")
+    d.grav_fct(1, "X", rate * T / M, 2, grnod=1)  # the pull: m a f(t) = rate t [N]
+    d.type6(1, 1, 2, 1, fric=p["mu"], stiff=p["kt"], visc=2.0 * 0.5 * math.sqrt(K * M),
+            title="contact, Coulomb mu 0.4, stick spring K_t = 1e6 N/m")
+    d.run(T, T / 10.0)
+    d.solver(method=3)
+    return d
+
+
+def slip_forces_err(ts, F, rate, p=SLIP):
+    """max |F(t) - (-rate t)| / (m g) over the records (F the friction force on the block)."""
+    ts, F = np.asarray(ts), np.asarray(F)
+    return float(np.abs(F + rate * ts).max() / (p["m"] * G)) if len(ts) else float("nan")
+
+
+def read_tf(path):
+    ts, fs = [], []
+    with open(path) as fh:
+        for ln in fh:
+            a, b = ln.split()
+            ts.append(float(a))
+            fs.append(float(b))
+    return ts, fs
+
+
+def bench_slip_static(B):
+    p = dict(SLIP)
+    res = {"params": p, "rows": []}
+    print(f"== Case 3c: the drag to the slip, static analysis: a block (m = {p['m']} kg) pressed on a floor (F_n = m g), "
+          f"TYPE6 stick spring K_t = {p['kt']:.0e} N/m, Coulomb mu = {p['mu']}, pulled by a force ramped at RATE N/s "
+          f"until it slips at t* = mu m g / RATE; accuracy target {p['target']:g} m g on the forces ==\n")
+    for rate in p["rates"]:
+        T = 5.0 / rate
+        dto = T / 10.0
+        ts_ = p["mu"] * p["m"] * G / rate
+        row = {"rate": rate, "T": T, "t_slip": ts_}
+        # ---- static analysis: CLI (netCDF, the error), rc_time (the solve), rc_time to the last record before t*
+        name = f"slip_static_rate{rate:g}"
+        case = os.path.join(B.work, name + ".rad")
+        out = os.path.join(B.work, name + ".nc")
+        slip_deck(rate, p).write(case)
+        if os.path.exists(out):
+            os.remove(out)
+        rc, so, se, elapsed, _ = B.measured([B.ricochet, "run", case, "-o", out, "-q"], 300)
+        st = {"rc": rc, "cli_elapsed": elapsed, "cli_cpu": B.last_cpu}
+        with Dataset(out) as nc:
+            t = np.array(nc["time"][:])
+            ff = np.array(nc["inter_force_friction"][:])[:, 0, 0]
+            fn = np.array(nc["inter_force_normal"][:])[:, 0]
+            status = str(nc.getncattr("status"))
+            st["newton"] = int(nc.getncattr("stats_nonlin_iters"))
+            st["newton_fails"] = int(nc.getncattr("stats_nonlin_fails"))
+        mt = re.search(r"no static equilibrium at the load time t = ([0-9.eE+-]+) s: the load exceeds what friction "
+                       r"can hold.*the last equilibrium at t = ([0-9.eE+-]+) s", status)
+        st["status"] = status[:160]
+        st["limit_reported"] = bool(mt)
+        if mt:
+            st["t_fail"], st["t_last"] = float(mt.group(1)), float(mt.group(2))
+            st["onset_err"] = max(abs(st["t_fail"] - ts_), abs(st["t_last"] - ts_)) / ts_
+            st["bracket_ok"] = st["t_last"] <= ts_ * (1 + 1e-12) and st["t_fail"] >= ts_ * (1 - 1e-12)
+        st["records"] = len(t)
+        st["error"] = max(slip_forces_err(t, ff, rate, p), float(np.abs(fn - p["m"] * G).max() / (p["m"] * G)))
+        rc2, so2, se2, _, _ = B.measured([B.rc_time, case, 3], 300)
+        st["wall"] = B.timed(kv(so2))["wall_time"]
+        t_eq = math.floor(ts_ / dto) * dto                  # the equilibria alone: up to the last record before t*
+        rc3, so3, _, _, _ = B.measured([B.rc_time, case, 3, t_eq], 300)
+        st["wall_equilibria"] = B.timed(kv(so3))["wall_time"] if rc3 == 0 else None
+        row["static"] = st
+        # ---- explicit central difference and plain CVODE, to the slip
+        ex = []
+        for f in (1.0, 0.5):
+            fpath = os.path.join(B.work, f"slip_cd_rate{rate:g}_{f:g}.txt")
+            x = B.explicit_run(["drag", p["m"], p["kt"], p["mu"], rate, T, dto, f, fpath], repeat=3)
+            if not x.get("ok"):
+                continue
+            tt, FF = read_tf(fpath)
+            ex.append({"dt_factor": f, "dt": x["dt"], "steps": x["steps"], "wall": x["wall_time"],
+                       "error": slip_forces_err(tt, FF, rate, p), "records": len(tt),
+                       "slip_err": abs(x["t_slip"] - ts_) / ts_})
+        cv = []
+        for rtol in (1e-4, 1e-6, 1e-8):
+            fpath = os.path.join(B.work, f"slip_cvode_rate{rate:g}_{rtol:.0e}.txt")
+            x = B.cvode_run(["drag", p["m"], p["kt"], p["mu"], rate, T, dto, rtol, fpath], repeat=3)
+            if not x.get("ok"):
+                continue
+            tt, FF = read_tf(fpath)
+            cv.append({"rtol": rtol, "steps": x["steps"], "wall": x["wall_time"], "error": slip_forces_err(tt, FF, rate, p),
+                       "records": len(tt), "slip_err": abs(x["t_slip"] - ts_) / ts_})
+        row["explicit"], row["cvode"] = ex, cv
+        okx = [x for x in ex if x["error"] <= p["target"]]
+        okc = [x for x in cv if x["error"] <= p["target"]]
+        row["explicit_best"] = min(okx, key=lambda x: x["wall"]) if okx else None
+        row["cvode_best"] = min(okc, key=lambda x: x["wall"]) if okc else None
+        for who in ("explicit", "cvode"):
+            b = row[who + "_best"]
+            row[who + "_ratio"] = b["wall"] / st["wall"] if b and st["wall"] else None
+            row[who + "_ratio_equilibria"] = (b["wall"] / st["wall_equilibria"]
+                                              if b and st.get("wall_equilibria") else None)
+        res["rows"].append(row)
+        table(f"rate {rate:g} N/s (T = {T:g} s, records every {dto:g} s, slip at t* = {ts_:.6g} s)",
+              ["program", "setting", "time", "steps / Newton its", "records", "force err", "slip time err",
+               "explicit/static", "cvode/static"],
+              [["static", "Method 3", fmt_t(st["wall"]) + (f" (equilibria to {t_eq:g} s: {fmt_t(st['wall_equilibria'])})"
+                                                          if st.get("wall_equilibria") else ""),
+                f"{st['newton']} ({st['newton_fails']} failed solves)", st["records"], fmt_e(st["error"]),
+                (f"{fmt_e(st['onset_err'])} (bracket [{st['t_last']:.9g}, {st['t_fail']:.9g}] s)"
+                 if mt else "no limit reported: " + st["status"][:60]),
+                (f"{row['explicit_ratio']:.3g} ({row['explicit_ratio_equilibria']:.3g})"
+                 if row["explicit_ratio"] and row["explicit_ratio_equilibria"] else "-"),
+                (f"{row['cvode_ratio']:.3g} ({row['cvode_ratio_equilibria']:.3g})"
+                 if row["cvode_ratio"] and row["cvode_ratio_equilibria"] else "-")]]
+              + [["explicit", f"dt_factor {x['dt_factor']:g} ({x['dt']:.3e} s)", fmt_t(x["wall"]), x["steps"],
+                  x["records"], fmt_e(x["error"]), fmt_e(x["slip_err"]), "", ""] for x in ex]
+              + [["cvode_ref", f"rtol {x['rtol']:.0e}", fmt_t(x["wall"]), x["steps"], x["records"], fmt_e(x["error"]),
+                  fmt_e(x["slip_err"]), "", ""] for x in cv],
+              note=f"force err = max over the records |F_t - (-RATE t)| / (m g) (and |F_n - m g| / (m g) for the static "
+                   f"analysis); explicit/static, cvode/static: the cheapest run with force err <= {p['target']:g} over "
+                   f"the static analysis to its error (> 1: the static analysis faster); in parentheses against the static "
+                   f"analysis's equilibria alone (rc_time to the last record before t*, without the onset's bracketing)")
+    return res
+
+
 def bench_joint(B):
     """A pendulum held at 150 degrees: on a /JOINT/DISTANCE (IDA path) and on
     a stiff critically damped /COUPLING/SPRING of the same length (CVODE
@@ -1468,8 +1624,10 @@ def main():
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--quick", action="store_true", help="fewer variants (smoke test)")
     ap.add_argument("--only",
-                    choices=["drop", "column", "quasi", "ramp", "stickslip", "joint", "stepcost", "cascade"],
-                    help="quasi = ramp + stickslip; stepcost (not in the full run): the per-step cost of the free "
+                    choices=["drop", "column", "quasi", "ramp", "stickslip", "slipstatic", "joint", "stepcost",
+                             "cascade"],
+                    help="quasi = ramp + stickslip + slipstatic; stickslip includes slipstatic (case 3c: the drag to "
+                         "the slip, solved statically); stepcost (not in the full run): the per-step cost of the free "
                          "and the locked column against cvode_ref; cascade (not in the full run): target 3, the "
                          "settling column locked and free at --sizes against the explicit scheme")
     ap.add_argument("--old-build", default=None,
@@ -1546,6 +1704,8 @@ def main():
                 B, [int(s) for s in qs.split(",") if s], [float(s) for s in a.ramps.split(",") if s], shape)
     if a.only in (None, "quasi", "stickslip"):
         B.results["stickslip"] = bench_stickslip(B)
+    if a.only in (None, "quasi", "stickslip", "slipstatic"):
+        B.results["slipstatic"] = bench_slip_static(B)
     if a.only in (None, "joint"):
         B.results["joint"] = bench_joint(B)
     if a.only == "cascade":

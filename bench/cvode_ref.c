@@ -65,6 +65,9 @@
  *   cvode_ref stickslip m ks C mu_s mu_k v1 v2 V t_end rtol [EVENTS_FILE]
  *       the stick-slip drag of explicit_ref stickslip, 2 states (see
  *       run_stickslip below); EVENTS_FILE: "slip t x" / "stick t x" lines
+ *   cvode_ref drag m K_t mu rate t_end dt_out rtol [FORCES_FILE]
+ *       the drag to the slip of explicit_ref drag (see run_drag below);
+ *       FORCES_FILE: "t F" at the multiples of dt_out before the slip
  * FORCES_FILE: the contact forces at t_end (contact 0 = floor), one a line.
  * Output: key=value lines on stdout (as explicit_ref). wall_time is
  * clock_gettime(CLOCK_MONOTONIC) around the integration loop only (CVODE
@@ -635,12 +638,137 @@ static int run_stickslip(double m, double ks, double C, double mus, double muk, 
     return 0;
 }
 
+/* ---- drag to the slip: the model of explicit_ref drag --------------------
+ * x, u along the floor, the pull rate t [N], ricochet's TYPE6 stick spring
+ * K_t anchored at the start and the critical stick damper c_t = 2 sqrt(K_t
+ * m): m u' = rate t - K_t x - c_t u. Normal force m G. One root, the slip
+ * onset |K_t x + c_t u| - mu m G; the run ends there or at t_end. Outputs
+ * (CV_NORMAL, CVODE's interpolation) at the multiples of dt_out before the
+ * slip: "t F" lines, F = -K_t x - c_t u the friction force on the block.
+ * Dense 2 x 2; error weights atol_x = 1e-3 rtol m, atol_u = 1e-2 rtol m/s
+ * (as the stick-slip drag's).
+ */
+typedef struct dragm {
+    double m, kt, ct, rate, lim;
+} dragm;
+
+static int drag_rhs(sunrealtype t, N_Vector Y, N_Vector Yd, void *ud)
+{
+    const dragm *d = ud;
+    const double *y = N_VGetArrayPointer(Y);
+    double *yd = N_VGetArrayPointer(Yd);
+    yd[0] = y[1];
+    yd[1] = (d->rate * t - d->kt * y[0] - d->ct * y[1]) / d->m;
+    return 0;
+}
+
+static int drag_jac(sunrealtype t, N_Vector Y, N_Vector F, SUNMatrix J, void *ud, N_Vector t1, N_Vector t2,
+                    N_Vector t3)
+{
+    (void)t;
+    (void)Y;
+    (void)F;
+    (void)t1;
+    (void)t2;
+    (void)t3;
+    const dragm *d = ud;
+    SM_ELEMENT_D(J, 0, 0) = 0.0;
+    SM_ELEMENT_D(J, 0, 1) = 1.0;
+    SM_ELEMENT_D(J, 1, 0) = -d->kt / d->m;
+    SM_ELEMENT_D(J, 1, 1) = -d->ct / d->m;
+    return 0;
+}
+
+static int drag_root(sunrealtype t, N_Vector Y, sunrealtype *g, void *ud)
+{
+    (void)t;
+    const dragm *d = ud;
+    const double *y = N_VGetArrayPointer(Y);
+    g[0] = fabs(d->kt * y[0] + d->ct * y[1]) - d->lim;
+    return 0;
+}
+
+static int run_drag(double m, double kt, double mu, double rate, double t_end, double dt_out, double rtol,
+                    const char *forces_path)
+{
+    dragm d = {m, kt, 2.0 * sqrt(kt * m), rate, mu * m * GRAV};
+    SUNContext ctx;
+    if (SUNContext_Create(NULL, &ctx)) return 5;
+    N_Vector Y = N_VNew_Serial(2, ctx), AT = N_VNew_Serial(2, ctx);
+    double *y = N_VGetArrayPointer(Y);
+    y[0] = 0.0;
+    y[1] = 0.0;
+    N_VGetArrayPointer(AT)[0] = 1e-3 * rtol;
+    N_VGetArrayPointer(AT)[1] = 1e-2 * rtol;
+    SUNMatrix A = SUNDenseMatrix(2, 2, ctx);
+    SUNLinearSolver LS = SUNLinSol_Dense(Y, A, ctx);
+    void *cv = CVodeCreate(CV_BDF, ctx);
+    if (!A || !LS || !cv) return 5;
+    CK(CVodeInit(cv, drag_rhs, 0.0, Y));
+    CK(CVodeSetUserData(cv, &d));
+    CK(CVodeSVtolerances(cv, rtol, AT));
+    CK(CVodeSetLinearSolver(cv, LS, A));
+    CK(CVodeSetJacFn(cv, drag_jac));
+    CK(CVodeSetMaxNumSteps(cv, 100000000L));
+    CK(CVodeRootInit(cv, 1, drag_root));
+    CK(CVodeSetStopTime(cv, t_end));
+    const long nout = (long)floor(t_end / dt_out + 0.5);
+    double *rec_t = malloc((size_t)(nout + 1) * sizeof(double)), *rec_f = malloc((size_t)(nout + 1) * sizeof(double));
+    if (!rec_t || !rec_f) return 4;
+    long nrec = 0;
+    rec_t[nrec] = 0.0;
+    rec_f[nrec++] = 0.0;
+    double t = 0.0, t_slip = -1.0;
+    const double t0 = now(), cpu0 = cpu_now();
+    for (long k = 1; k <= nout; k++) {
+        const double tout = k == nout ? t_end : (double)k * dt_out;
+        const int flag = CVode(cv, tout, Y, &t, CV_NORMAL);
+        if (flag < 0) {
+            printf("status=failed\nflag=%s\nt_failed=%.9e\n", CVodeGetReturnFlagName(flag), t);
+            return 3;
+        }
+        if (flag == CV_ROOT_RETURN) {
+            t_slip = t;
+            break;
+        }
+        rec_t[nrec] = t;
+        rec_f[nrec++] = -d.kt * y[0] - d.ct * y[1];
+    }
+    const double wall = now() - t0;
+    printf("cpu_time=%.9e\n", cpu_now() - cpu0);
+    counts tot;
+    memset(&tot, 0, sizeof tot);
+    add_counts(cv, &tot);
+    printf("case=drag\nstatus=ok\nrtol=%.3e\n", rtol);
+    printf("steps=%ld\nrhs_evals=%ld\njac_evals=%ld\nlin_setups=%ld\nerr_test_fails=%ld\nnewton_iters=%ld\n"
+           "newton_fails=%ld\nroot_evals=%ld\n",
+           tot.nst, tot.nfe + tot.nfeLS, tot.nje, tot.nsetups, tot.netf, tot.nni, tot.nncf, tot.nge);
+    printf("events=%d\nreinits=0\nrecords=%ld\nt_slip=%.12e\nwall_time=%.9e\npeak_rss_kb=%ld\n", t_slip >= 0.0, nrec,
+           t_slip, wall, peak_rss_kb());
+    if (forces_path) {
+        FILE *fp = fopen(forces_path, "w");
+        if (!fp) return 4;
+        for (long q = 0; q < nrec; q++) fprintf(fp, "%.12e %.17e\n", rec_t[q], rec_f[q]);
+        fclose(fp);
+    }
+    free(rec_t);
+    free(rec_f);
+    CVodeFree(&cv);
+    SUNLinSolFree(LS);
+    SUNMatDestroy(A);
+    N_VDestroy(Y);
+    N_VDestroy(AT);
+    SUNContext_Free(&ctx);
+    return 0;
+}
+
 static void usage(FILE *fp)
 {
     fprintf(fp, "usage: cvode_ref column N R m k zeta gap t_end rtol [FORCES_FILE]\n"
                 "       cvode_ref ramp N R m k zeta t_ramp t_end rtol [FORCES_FILE]\n"
                 "       cvode_ref sramp N R m k zeta t_ramp t_end rtol [FORCES_FILE]\n"
-                "       cvode_ref stickslip m ks C mu_s mu_k v1 v2 V t_end rtol [EVENTS_FILE]\n");
+                "       cvode_ref stickslip m ks C mu_s mu_k v1 v2 V t_end rtol [EVENTS_FILE]\n"
+                "       cvode_ref drag m K_t mu rate t_end dt_out rtol [FORCES_FILE]\n");
 }
 
 int main(int argc, char **argv)
@@ -648,6 +776,9 @@ int main(int argc, char **argv)
     if (argc >= 2 && !strcmp(argv[1], "stickslip") && (argc == 12 || argc == 13))
         return run_stickslip(arg(argv, 2), arg(argv, 3), arg(argv, 4), arg(argv, 5), arg(argv, 6), arg(argv, 7),
                              arg(argv, 8), arg(argv, 9), arg(argv, 10), arg(argv, 11), argc == 13 ? argv[12] : NULL);
+    if (argc >= 2 && !strcmp(argv[1], "drag") && (argc == 9 || argc == 10))
+        return run_drag(arg(argv, 2), arg(argv, 3), arg(argv, 4), arg(argv, 5), arg(argv, 6), arg(argv, 7),
+                        arg(argv, 8), argc == 10 ? argv[9] : NULL);
     if (argc < 2 || (argc != 10 && argc != 11)) {
         usage(stderr);
         return 2;

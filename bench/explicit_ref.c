@@ -45,6 +45,9 @@
  *       the same with the smooth ramp G (1 + (1 - cos(pi t / t_ramp)) / 2).
  *   explicit_ref stickslip m ks C mu_s mu_k v1 v2 V t_end dt_factor [EVENTS_FILE]
  *       a block dragged across a floor through a spring (see run_stickslip)
+ *   explicit_ref drag m K_t mu rate t_end dt_out dt_factor [FORCES_FILE]
+ *       a block on a floor held by a TYPE6 stick spring, pulled by a force
+ *       ramped at rate [N/s] until it slips (see run_drag)
  *   explicit_ref column N R m k zeta gap t_end dt_factor [FORCES_FILE]
  *       N spheres of radius R, mass m stacked on a floor, gap `gap` between
  *       neighbours and above the floor, at rest, gravity. Floor contact
@@ -673,6 +676,73 @@ static int run_stickslip(double m, double ks, double C, double mus, double muk, 
     return 0;
 }
 
+/* ---- drag to the slip: a block pulled by a ramped force until it slips ---
+ * 1-D along the floor: block (mass m) at x, velocity u (floor fixed),
+ * pulled by the force rate t [N] (a drag ramped at `rate` N/s), held by
+ * ricochet's TYPE6 stick spring: the spring K_t anchored where the block
+ * starts (force -K_t x) and the critical stick damper c_t = 2 sqrt(K_t m)
+ * (docs/theory.md 3.5), friction force F = -K_t x - c_t u on the block.
+ * The normal force is N = m G (the block's height imposed at its static
+ * penetration). It sticks while |F| < mu N; the run ends at the first step
+ * where |F| reaches mu N (the slip onset, its time interpolated linearly in
+ * |F| between the two steps) or at t_end. The force F is evaluated with the
+ * half-step velocity u_{n-1/2} (the damping of the scheme); stable step:
+ * the damped bound with omega = sqrt(K_t/m), zeta = 1, then shrunk by
+ * dt_factor and rounded down so that dt_out is a whole number of steps.
+ * FORCES_FILE: "t F" at every multiple of dt_out before the slip.
+ */
+static int run_drag(double m, double kt, double mu, double rate, double t_end, double dt_out, double dt_factor,
+                    const char *forces_path)
+{
+    const double omega = sqrt(kt / m), zeta = 1.0, ct = 2.0 * sqrt(kt * m);
+    const double dt_stable = SAFETY * stable_step(omega, zeta);
+    double dt;
+    const long per = step_count(dt_out, dt_factor * dt_stable, &dt);
+    const long nsteps = (long)floor(t_end / dt_out + 0.5) * per;
+    const double lim = mu * m * GRAV;
+    long cap = (long)floor(t_end / dt_out + 0.5) + 2, nrec = 0;
+    double *rec_t = malloc((size_t)cap * sizeof(double)), *rec_f = malloc((size_t)cap * sizeof(double));
+    if (!rec_t || !rec_f) return 4;
+    double t_slip = -1.0, fprev = 0.0, x = 0.0, uh = 0.0, a = 0.0;
+    long n = 0;
+    const double t0 = now(), cpu0 = cpu_now();
+    for (n = 0; n <= nsteps; n++) {
+        const double t = (double)n * dt;
+        const double f = -kt * x - ct * uh;
+        if (fabs(f) >= lim) {
+            t_slip = t - dt + dt * (lim - fabs(fprev)) / (fabs(f) - fabs(fprev));
+            break;
+        }
+        if (n % per == 0 && nrec < cap) {
+            rec_t[nrec] = t;
+            rec_f[nrec++] = f;
+        }
+        fprev = f;
+        a = (rate * t + f) / m;
+        uh += dt * a;
+        x += dt * uh;
+    }
+    const double wall = now() - t0;
+    printf("cpu_time=%.9e\n", cpu_now() - cpu0);
+    if (!isfinite(x) || !isfinite(uh)) {
+        printf("status=unstable\n");
+        return 3;
+    }
+    printf("case=drag\nstatus=ok\n");
+    printf("dt=%.9e\ndt_stable=%.9e\nomega_max=%.9e\nzeta_max=%.9e\n", dt, dt_stable / SAFETY, omega, zeta);
+    printf("steps=%ld\nforce_evals=%ld\nrecords=%ld\nt_slip=%.12e\n", n, n + 1, nrec, t_slip);
+    printf("wall_time=%.9e\npeak_rss_kb=%ld\nfinal_x=%.12e\n", wall, peak_rss_kb(), x);
+    if (forces_path) {
+        FILE *fp = fopen(forces_path, "w");
+        if (!fp) return 4;
+        for (long q = 0; q < nrec; q++) fprintf(fp, "%.12e %.17e\n", rec_t[q], rec_f[q]);
+        fclose(fp);
+    }
+    free(rec_t);
+    free(rec_f);
+    return 0;
+}
+
 static void usage(FILE *fp)
 {
     fprintf(fp, "usage: explicit_ref drop m k c h t_end dt_factor\n"
@@ -684,7 +754,8 @@ static void usage(FILE *fp)
                 "           (the settled column, gravity ramped G -> 2 G over t_ramp, held to t_end;\n"
                 "            central difference / event-located RK4 of the clipped law;\n"
                 "            sramp, srampref: the smooth ramp G (1 + (1 - cos(pi t / t_ramp)) / 2))\n"
-                "       explicit_ref stickslip m ks C mu_s mu_k v1 v2 V t_end dt_factor [EVENTS_FILE]\n");
+                "       explicit_ref stickslip m ks C mu_s mu_k v1 v2 V t_end dt_factor [EVENTS_FILE]\n"
+                "       explicit_ref drag m K_t mu rate t_end dt_out dt_factor [FORCES_FILE]\n");
 }
 
 int main(int argc, char **argv)
@@ -731,6 +802,10 @@ int main(int argc, char **argv)
     if (argc >= 2 && !strcmp(argv[1], "stickslip") && (argc == 12 || argc == 13)) {
         return run_stickslip(arg(argv, 2), arg(argv, 3), arg(argv, 4), arg(argv, 5), arg(argv, 6), arg(argv, 7),
                              arg(argv, 8), arg(argv, 9), arg(argv, 10), arg(argv, 11), argc == 13 ? argv[12] : NULL);
+    }
+    if (argc >= 2 && !strcmp(argv[1], "drag") && (argc == 9 || argc == 10)) {
+        return run_drag(arg(argv, 2), arg(argv, 3), arg(argv, 4), arg(argv, 5), arg(argv, 6), arg(argv, 7),
+                        arg(argv, 8), argc == 10 ? argv[9] : NULL);
     }
     usage(stderr);
     return 2;

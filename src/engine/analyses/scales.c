@@ -742,7 +742,7 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         /* forces: rtol F_s, at least the force of the coordinates' rounding */
         const double ffl = scaled ? m->inter_kscale[i] * pfl[i] : 0.0;
         double *a = m->atol + m->inter_eadr[i];
-        if (m->inter_hidx[i] >= 0) a[m->inter_hidx[i]] = scaled ? fmax(fmax(rt * m->inter_fscale[i], ffl), m->inter_stiff[i] * apos) : m->inter_stiff[i] * apos;
+        if (m->inter_hidx[i] >= 0) a[m->inter_hidx[i]] = scaled ? fmax(rt * m->inter_fscale[i], ffl) : m->inter_stiff[i] * apos;
         if (m->inter_oidx[i] >= 0) a[m->inter_oidx[i]] = apos;
         if (m->inter_peidx[i] >= 0) a[m->inter_peidx[i]] = apos;
         const rc_fric *fr = &m->inter_fr[i];

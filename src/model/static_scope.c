@@ -4,8 +4,10 @@
  * Inacti 5, couplings of every kind, joints and their stops, imposed
  * translations and rotations), and a clear input error naming the card of
  * the first element it does not (docs/case-format.md, /SOLVER): friction
- * with a speed, exact stick, friction of a sphere on a segment surface,
- * an imposed rotation about an axis that turns. Called
+ * with no meaning at rest (viscous, step5, a law whose coefficient at zero
+ * sliding speed is 0), exact stick, orthotropic friction, friction of a
+ * sphere on a segment surface, an imposed rotation about an axis that
+ * turns. Called
  * where Method 3 is chosen: by the compiler for the deck's /SOLVER, by
  * rc_model_set_method, and by the static backend itself; and where a
  * preload (/SOLVER Preload 1) is asked for, which also needs the bodies at

@@ -304,6 +304,14 @@ static void test_static_stiffness_friction(void)
      * the speed terms C2, C3 not acting): in slip the limit's derivative
      * through the pressure */
     stiffness_friction_deck("/FRICTION/1\nIfric 1\n1,0,,2,,0.01\n-2e-5,3,0.5,1e-10\n0,0.4\n");
+    /* orthotropic (Coulomb mu_1 = 0.28 along x, mu_2 = 0.6 along y): in
+     * slip the trial returned to the ellipse along its ray in the scaled
+     * plane */
+    stiffness_friction_deck("/PART/1\nsphere\n         0         0         0                   0\n         1\n"
+                            "/PART/2\nplane\n         0         0         0                   0\n         0         2\n"
+                            "/GRPART/PART/1\nplanes\n2\n"
+                            "/FRICTION/1\northotropic\n0,0,,2\n\n0,0.9\n0,1,1,0,,1\n\n0,0.28\n\n0,0.6\n"
+                            "/FRIC_ORIENT/1\ndirection 1\n1,0\n1,0,0,0,0\n");
 }
 
 static void stiffness_friction_deck(const char *more)
@@ -1104,6 +1112,41 @@ static void test_static_friction_at_rest(void)
     }
 }
 
+/* Orthotropic friction at rest (docs/theory.md 7.8, "Orthotropic friction"):
+ * deck_at_rest's sphere with a /FRICTION card of two coefficient sets,
+ * direction 1 along V = (cos(alpha), sin(alpha), 0) on the floor
+ * (/FRIC_ORIENT), the load along x at alpha to it. Each set falls with the
+ * pressure, mu_k(p, 0) = c_k (1 - beta p) (Ifric 1: Fric c_k, C1 = -beta
+ * c_k, Area 0.01 m^2), so that the sphere sticks while the load's
+ * components lie within the ellipse, (F_t cos(alpha) / (mu_1 F_n))^2 +
+ * (F_t sin(alpha) / (mu_2 F_n))^2 <= 1, and slides where it leaves it:
+ * 1 - beta p* = tan(theta) sqrt(cos^2(alpha) / c_1^2 + sin^2(alpha) /
+ * c_2^2), p* = m g cos(theta) f* / Area. */
+static void test_static_friction_orthotropic(void)
+{
+    const double g = 9.81, A = 0.01, c1 = 0.3, c2 = 0.6, beta = 5e-4, th = atan(0.25);
+    const double alphas[3] = {0.0, 0.6, 1.0};
+    for (int k = 0; k < 3; k++) {
+        const double al = alphas[k];
+        const double S = sqrt(cos(al) * cos(al) / (c1 * c1) + sin(al) * sin(al) / (c2 * c2));
+        const double ps = (1.0 - tan(th) * S) / beta, ts = ps * A / (g * cos(th));
+        char card[1200], name[64];
+        snprintf(card, sizeof card,
+                 "/PART/1\nsphere\n         0         0         0                   0\n         1\n"
+                 "/PART/2\nfloor\n         0         0         0                   0\n         0         2\n"
+                 "/GRPART/PART/1\nfloors\n2\n"
+                 "/FRICTION/1\northotropic, falling with the pressure\n1,0,,2,,%g\n\n0,0.9\n"
+                 "0,1,1,0,,1\n%.17g\n0,%g\n%.17g\n0,%g\n"
+                 "/FRIC_ORIENT/1\ndirection 1\n1,0\n%.17g,%.17g,0,0,0\n",
+                 A, -beta * c1, c1, -beta * c2, c2, cos(al), sin(al));
+        snprintf(name, sizeof name, "static_ortho_%d.rad", k);
+        char *t = deck_at_rest(th, "", "", card);
+        ENSURE(t != NULL);
+        if (t) check_onset(t, name, ts);
+        free(t);
+    }
+}
+
 void suite_static(void);
 void suite_static(void)
 {
@@ -1121,4 +1164,5 @@ void suite_static(void)
     RUN_TEST(test_static_scope);
     RUN_TEST(test_static_snap_through);
     RUN_TEST(test_static_friction_at_rest);
+    RUN_TEST(test_static_friction_orthotropic);
 }

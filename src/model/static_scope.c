@@ -5,7 +5,7 @@
  * translations and rotations), and a clear input error naming the card of
  * the first element it does not (docs/case-format.md, /SOLVER): friction
  * with no meaning at rest (viscous, step5, a law whose coefficient at zero
- * sliding speed is 0), exact stick, orthotropic friction, friction of a
+ * sliding speed is 0), exact stick, friction of a
  * sphere on a segment surface, an imposed rotation about an axis that
  * turns. Called
  * where Method 3 is chosen: by the compiler for the deck's /SOLVER, by
@@ -26,12 +26,12 @@
 
 /* Friction the static analysis' return mapping takes (solver/static.c,
  * docs/theory.md 7.8): the incremental stick spring of TYPE6 (Fric, Sfric,
- * fct_IDff, fct_IDfv) or of a /FRICTION law (Ifric 0 to 3, any filter),
- * isotropic, not exact stick. A law of the sliding speed is taken at rest
+ * fct_IDff, fct_IDfv) or of a /FRICTION law (Ifric 0 to 3, any filter,
+ * isotropic or orthotropic: the elliptic limit), not exact stick. A law of the sliding speed is taken at rest
  * (v = 0: mu(p, 0), f_fv(0)); a filtered limit at rest equals the limit. */
 int rc_static_friction_ok(const rc_fric *fr)
 {
-    if (fr->exact || fr->form != RC_FF_INCREMENTAL || fr->ortho || !(fr->kt > 0)) return 0;
+    if (fr->exact || fr->form != RC_FF_INCREMENTAL || !(fr->kt > 0)) return 0;
     if (fr->kind == RC_FK_TYPE6) return 1;
     if (fr->kind == RC_FK_CARD) return fr->ifric >= 0 && fr->ifric <= 3;
     return 0;
@@ -125,8 +125,7 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
                               : fr->form != RC_FF_INCREMENTAL
                                   ? "viscous friction (/FRICTION Iform 1: F = -C v_t, zero at rest; no stick state "
                                     "to hold a load)"
-                              : fr->ortho ? "orthotropic friction"
-                                          : "this friction";
+                              : "this friction";
             if (fr->card_id > 0) snprintf(fbuf, sizeof fbuf, "%s (/FRICTION/%d on it)", why, fr->card_id);
             else snprintf(fbuf, sizeof fbuf, "%s (its own friction fields)", why);
             what = fbuf;

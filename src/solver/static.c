@@ -306,7 +306,8 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     s->d = d;
     /* a friction filter: the engine on the view of the model without it */
     int filt = 0;
-    for (int i = 0; i < m->ninter; i++) filt |= m->inter_fr[i].tau > 0 && m->inter_fr[i].form == RC_FF_INCREMENTAL;
+    for (int i = 0; i < m->ninter; i++)
+        filt |= m->inter_fr[i].form == RC_FF_INCREMENTAL && (m->inter_fr[i].tau > 0 || m->inter_fr[i].ortho);
     if (filt) {
         s->mf = malloc(sizeof *s->mf);
         s->frf = malloc((size_t)m->ninter * sizeof(rc_fric));
@@ -316,8 +317,15 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
         }
         *s->mf = *m;
         memcpy(s->frf, m->inter_fr, (size_t)m->ninter * sizeof(rc_fric));
-        for (int i = 0; i < m->ninter; i++)
-            if (s->frf[i].form == RC_FF_INCREMENTAL) s->frf[i].tau = 0.0;
+        for (int i = 0; i < m->ninter; i++) {
+            if (s->frf[i].form != RC_FF_INCREMENTAL) continue;
+            s->frf[i].tau = 0.0;
+            /* orthotropic: the engine's stick root without the absolute
+             * band, (F_1/s_1)^2 + (F_2/s_2)^2 - 1 with s_k = L_k (1 +
+             * RC_SLIP_BAND), from which fric_trial takes the scaled
+             * norm of the force on the ellipse */
+            if (s->frf[i].ortho) s->frf[i].fband = 0.0;
+        }
         s->mf->inter_fr = s->frf;
         s->m = m = s->mf;
     }
@@ -930,7 +938,14 @@ static void fric_trial(rc_static *s, double t, const double *u)
         rc_inter_report r;
         rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], 0, t, s->y, &r);
         const double nf = sqrt(r.ft[0] * r.ft[0] + r.ft[1] * r.ft[1] + r.ft[2] * r.ft[2]);
-        d->inter_slip[i] = nf > fmax(r.flim, 0.0) + s->fr_band;
+        /* orthotropic: the engine's test on the ellipse, (F_1/L_1)^2 +
+         * (F_2/L_2)^2 > 1 (with its bands); in slip the engine returns the
+         * trial to the ellipse along its ray in the scaled plane */
+        if (m->inter_fr[i].ortho) {
+            const double q = sqrt(fmax(r.slip_root + 1.0, 0.0)) * (1.0 + RC_SLIP_BAND); /* |u|, u_k = F_k / L_k */
+            d->inter_slip[i] = q > 1.0 + s->fr_band / fmax(r.flim, DBL_MIN);
+        } else
+            d->inter_slip[i] = nf > fmax(r.flim, 0.0) + s->fr_band;
     }
 }
 

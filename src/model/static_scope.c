@@ -5,9 +5,8 @@
  * translations and rotations), and a clear input error naming the card of
  * the first element it does not (docs/case-format.md, /SOLVER): friction
  * with no meaning at rest (viscous, step5, a law whose coefficient at zero
- * sliding speed is 0), exact stick, friction of a
- * sphere on a segment surface, an imposed rotation about an axis that
- * turns. Called
+ * sliding speed is 0), exact stick, an imposed rotation about an axis
+ * that turns. Called
  * where Method 3 is chosen: by the compiler for the deck's /SOLVER, by
  * rc_model_set_method, and by the static backend itself; and where a
  * preload (/SOLVER Preload 1) is asked for, which also needs the bodies at
@@ -133,9 +132,9 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
             if (fr->card_id > 0) snprintf(fbuf, sizeof fbuf, "%s (/FRICTION/%d on it)", rbuf, fr->card_id);
             else snprintf(fbuf, sizeof fbuf, "%s (its own friction fields)", rbuf);
             what = fbuf;
-        } else if (rc_pair_multi(m->inter_pair[i]) && !rc_inter_frictionless(m, i) &&
-                 !(rc_pair_nodes(m->inter_pair[i]) && m->inter_npt[i] > 0 && (m->inter_pst[i] == 3 || m->inter_pst[i] == 6)))
-            what = "friction on a sphere against a segment surface";
+        } else if (rc_pair_nodes(m->inter_pair[i]) && !rc_inter_frictionless(m, i) &&
+                   !(m->inter_npt[i] > 0 && (m->inter_pst[i] == 3 || m->inter_pst[i] == 6)))
+            what = "this friction on a pair of several contact points";
         if (what)
             RC_RAISE(err, RC_EINPUT,
                      RC_LOCFMT "card %s: " RC_STATIC_NOT " (%s); expected a contact of TYPE6 (any Iform), "

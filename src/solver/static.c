@@ -33,7 +33,11 @@
  * start) goes into the contact's friction state before the engine
  * evaluates; stick within Sfric + mu F_n, else slip (d->inter_slip: the
  * engine applies the limit along the state); the stiffness adds the
- * engine's columns of that state times the trial's derivatives. A load
+ * engine's columns of that state times the trial's derivatives. The law
+ * is the engine's at rest (zero velocities: mu(p, v = 0), f_fv(0)); a
+ * filter is left out (at rest the filtered limit is the limit: the view
+ * s->mf) and its states set to the limit in each equilibrium; an
+ * orthotropic contact sticks within the ellipse and slides on it. A load
  * beyond friction (a contact sliding where Newton fails, at the smallest
  * substep) is an error naming the interface and the load time.
  *

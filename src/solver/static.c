@@ -2312,8 +2312,8 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                     }
                     if (slide >= 0) {
                         rc_inter_report r;
-                        rc_inter_report_eval(m, slide, RC_MODE_CLOSED, d->inter_branch[slide], d->inter_track[slide],
-                                             1, tn, s->y, &r);
+                        rc_inter_report_eval(s->m, slide, RC_MODE_CLOSED, d->inter_branch[slide],
+                                             d->inter_track[slide], 1, tn, s->y, &r); /* the law at rest */
                         slide_lim = r.flim;
                         snprintf(reason, sizeof reason, "a contact slides");
                         break;

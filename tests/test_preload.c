@@ -268,7 +268,8 @@ static char *incline_deck(double theta, int preload, int fv)
     put(&b, &n, &cap, "      2022         0\n                  kg                   m                   s\n");
     put(&b, &n, &cap, "                  kg                   m                   s\n");
     put(&b, &n, &cap, "/FUNCT/1\nlinear k\n%20d%20d\n%20d%20d\n", 0, 0, 1, 100000);
-    put(&b, &n, &cap, "/FUNCT/2\nspeed multiplier\n%20d%20d\n%20d%20d\n", 0, 1, 10, 1);
+    /* a speed multiplier that is 0 at rest: no static friction */
+    put(&b, &n, &cap, "/FUNCT/2\nspeed multiplier\n%20d%20d\n%20d%20d\n", 0, 0, 10, 1);
     put(&b, &n, &cap, "/NODE\n%10d%20d%20d%20.10g\n", 1, 0, 0, 0.05);
     put(&b, &n, &cap, "/RBODY/1\nsphere\n%10d%40s%10d%10d\n%20.10g%20.10g%20.10g\n%20d%20d%20d\n", 1, "", 1, 1, 0.001,
         0.001, 0.001, 0, 0, 0);
@@ -356,7 +357,8 @@ static void test_preload_refusals(void)
     ENSURE(text != NULL);
     if (text) TU_EXPECT_TEXT_ERROR(text, "preload_inivel.rad", "/RBODY/3", "initial velocity", "Preload");
     free(text);
-    /* outside the static analysis' scope: a speed multiplier of friction */
+    /* outside the static analysis' scope: a speed multiplier of friction
+     * that is 0 at rest (no static friction) */
     text = incline_deck(0.2, 1, 1);
     ENSURE(text != NULL);
     if (text)

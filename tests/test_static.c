@@ -295,11 +295,45 @@ static char *deck_one_friction(void)
  * engine's projection on the contact plane) and sliding (the limit along
  * the trial force: the projected tangent L/|F| (I - e e') K_t), at the
  * start orientation and displaced and rotated; and the modes it sets. */
+static void stiffness_friction_deck(const char *more);
 static void test_static_stiffness_friction(void)
 {
-    char *text = deck_one_friction();
-    ENSURE(text != NULL);
-    if (!text) return;
+    stiffness_friction_deck(NULL);
+    /* a /FRICTION law of the pressure taken at rest (Ifric 1: mu(p, 0) =
+     * 0.4 - 2e-5 p + 1e-10 p^2, p = F_n / 0.01 m^2; 0.3025 at F_n = 50 N,
+     * the speed terms C2, C3 not acting): in slip the limit's derivative
+     * through the pressure */
+    stiffness_friction_deck("/FRICTION/1\nIfric 1\n1,0,,2,,0.01\n-2e-5,3,0.5,1e-10\n0,0.4\n");
+    /* orthotropic (Coulomb mu_1 = 0.28 along x, mu_2 = 0.6 along y): in
+     * slip the trial returned to the ellipse along its ray in the scaled
+     * plane */
+    stiffness_friction_deck("/PART/1\nsphere\n         0         0         0                   0\n         1\n"
+                            "/PART/2\nplane\n         0         0         0                   0\n         0         2\n"
+                            "/GRPART/PART/1\nplanes\n2\n"
+                            "/FRICTION/1\northotropic\n0,0,,2\n\n0,0.9\n0,1,1,0,,1\n\n0,0.28\n\n0,0.6\n"
+                            "/FRIC_ORIENT/1\ndirection 1\n1,0\n1,0,0,0,0\n");
+}
+
+static void stiffness_friction_deck(const char *more)
+{
+    char *text0 = deck_one_friction();
+    ENSURE(text0 != NULL);
+    if (!text0) return;
+    char *text = text0;
+    if (more) {
+        text = malloc(strlen(text0) + strlen(more) + 1);
+        ENSURE(text != NULL);
+        char *r = text ? strstr(text0, "/RUN") : NULL;
+        if (!r) {
+            free(text0);
+            free(text);
+            return;
+        }
+        memcpy(text, text0, (size_t)(r - text0));
+        strcpy(text + (r - text0), more);
+        strcat(text, r);
+        free(text0);
+    }
     rc_error e;
     rc_model *m = tu_compile_text(text, "static_fric_jac.rad", &e);
     if (!m) fprintf(stderr, "  %s\n", e.msg);
@@ -893,6 +927,277 @@ static void test_static_prismatic_free(void)
     }
 }
 
+/* Friction laws taken at rest (docs/theory.md 7.8, "Friction at rest"): a
+ * sphere (1 kg, R = 0.05 m, rotations held) touching a floor (linear k =
+ * 1e5 N/m, stick stiffness 2e4 N/m), gravity g = 9.81 m/s^2 tilted by
+ * theta from the vertical and ramped by f(t) = t over 1 s (output every
+ * 0.05 s). While it sticks F_n = m g cos(theta) f [N], F_t = m g sin(theta)
+ * f [N]; it slides, with no static equilibrium, where F_t reaches Sfric +
+ * mu(p, v = 0) F_n, p = F_n / Area [Pa]. The deck with gravity tilted by
+ * theta, the TYPE6 line 2 (Sfric, Fric), line 3 (fct_IDff, fct_IDfv) and
+ * the extra cards `more` (a /FRICTION card, curves). */
+static char *deck_at_rest(double theta, const char *line2, const char *line3, const char *more)
+{
+    const double g = 9.81;
+    char *t = malloc(4096);
+    if (!t) return NULL;
+    snprintf(t, 4096,
+             "/NODE\n1,0,0,0.05\n"
+             "/RBODY/1\nsphere\n1,,,,1.0\n0.001,0.001,0.001\n0,0,0\n"
+             "/SURF/ELLIPS/1\nsphere\n0,2,1\n0,0,0.05\n0.05,0.05,0.05\n"
+             "/GRNOD/NODE/1\ngroup\n1\n"
+             "/BCS/1\nrotations held\n000 111,0,1\n"
+             "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
+             "/FUNCT/1\nlinear k = 1e5 N/m\n0,0\n1,100000\n"
+             "/FUNCT/2\nload factor\n0,0\n1,1\n"
+             "/GRAV/1\ngravity x\n2,X,0,0,0,,1,%.17g\n"
+             "/GRAV/2\ngravity z\n2,Z,0,0,0,,1,%.17g\n"
+             "/INTER/TYPE6/1\nsphere - floor\n1,2\n%s\n%s\n"
+             "1,0\n"
+             "0,0,20000\n"
+             "\n"
+             "%s"
+             "/RUN\n1.0,0.05\n/SOLVER\n3\n",
+             g * sin(theta), -g * cos(theta), line2, line3, more);
+    return t;
+}
+
+/* Runs deck `text`: 0 when it sticks through the ramp (*x the sphere's x
+ * at the end [m]),
+ * else the load times that bracket the onset of sliding from the error
+ * (*t0 the last equilibrium's, *t1 the first without one). */
+static int run_at_rest(const char *text, const char *name, double *x, double *t0, double *t1)
+{
+    rc_error e;
+    rc_model *m = tu_compile_text(text, name, &e);
+    if (!m) fprintf(stderr, "  %s\n", e.msg);
+    ENSURE(m != NULL);
+    if (!m) return -1;
+    double *y = calloc((size_t)m->ny + 1, sizeof(double));
+    ENSURE(y != NULL);
+    rc_run_options o = {.y_end = y};
+    rc_stats st;
+    const rc_status r = y ? rc_run(m, &o, &st, &e) : RC_ENOMEM;
+    int out = 0;
+    if (r == RC_OK) *x = y[m->body_yadr[0]];
+    free(y);
+    if (r != RC_OK) {
+        const char *a = "no static equilibrium at the load time t = ", *b = "the last equilibrium at t = ";
+        const char *pa = strstr(e.msg, a), *pb = strstr(e.msg, b);
+        ENSURE(r == RC_ESOLVER && pa && pb && strstr(e.msg, "friction can hold") != NULL);
+        if (!(r == RC_ESOLVER && pa && pb)) fprintf(stderr, "  %s\n", e.msg);
+        *t1 = pa ? strtod(pa + strlen(a), NULL) : -1.0;
+        *t0 = pb ? strtod(pb + strlen(b), NULL) : -1.0;
+        out = 1;
+    }
+    rc_model_free(m);
+    return out;
+}
+
+/* The onset of sliding of deck_at_rest's sphere against the closed form
+ * ts (the load factor at which m g sin(theta) f = Sfric + mu(p, 0) m g
+ * cos(theta) f): bracketed by the last equilibrium and the first load time
+ * without one, within twice the smallest substep (1e-6 of Dt_out). */
+static void check_onset(const char *text, const char *name, double ts)
+{
+    double x = 0, t0 = -1, t1 = -1;
+    const int r = run_at_rest(text, name, &x, &t0, &t1);
+    printf("    %s: onset t* = %.9f s, bracket [%.9f, %.9f] s (closed form - last equilibrium %.2e s)\n", name, ts,
+           t0, t1, ts - t0);
+    ENSURE(r == 1);
+    ENSURE(t0 <= ts && ts <= t1 && t1 - t0 < 2e-6 * 0.05);
+}
+
+static void test_static_friction_at_rest(void)
+{
+    const double g = 9.81, A = 0.01; /* m = 1 kg; Area [m^2] */
+    /* the pressure at which mu(p, 0) = tan(theta), from the root of
+     * a + b p + c p^2 = tan(theta) (c < 0, b < 0: mu falls with the
+     * pressure) */
+#define ROOT_P(a, b, c, th) ((-(b) - sqrt((b) * (b) - 4.0 * (c) * ((a) - tan(th)))) / (2.0 * (c)))
+    const double th = 0.33;
+    /* Ifric 1, generalised viscous: mu(p, 0) = Fric + C1 p + C4 p^2, the
+     * speed terms C2, C3, C5 not acting at rest */
+    {
+        const double fric = 0.5, c1 = -2e-4, c4 = -1e-8;
+        const double ps = ROOT_P(fric, c1, c4, th), ts = ps * A / (g * cos(th));
+        char card[600];
+        snprintf(card, sizeof card,
+                 "/FRICTION/1\nIfric 1 at rest\n1,0,,2,,%g\n%g,5,0.01,%g,3\n0,%g\n", A, c1, c4, fric);
+        char *t = deck_at_rest(th, "", "", card);
+        ENSURE(t != NULL);
+        if (t) check_onset(t, "static_ifric1.rad", ts);
+        free(t);
+        /* the same with a filter (Ifiltr 3, 4 Hz): at rest the filtered
+         * limit is the limit */
+        snprintf(card, sizeof card,
+                 "/FRICTION/1\nIfric 1 at rest, filtered\n1,3,4,2,,%g\n%g,5,0.01,%g,3\n0,%g\n", A, c1, c4, fric);
+        t = deck_at_rest(th, "", "", card);
+        ENSURE(t != NULL);
+        if (t) check_onset(t, "static_ifric1_filter.rad", ts);
+        free(t);
+    }
+    /* Ifric 2, modified Darmstad: mu(p, 0) = Fric + C5 + C3 p + C1 p^2 (the
+     * exponentials of the speed 1 at rest) */
+    {
+        const double fric = 0.1, c5 = 0.45, c3 = -2.5e-4, c1 = -2e-8;
+        const double ps = ROOT_P(fric + c5, c3, c1, th), ts = ps * A / (g * cos(th));
+        char card[600];
+        snprintf(card, sizeof card, "/FRICTION/1\nIfric 2 at rest\n2,0,,2,,%g\n%g,-1,%g,-2,%g\n-3,%g\n", A, c1,
+                 c3, c5, fric);
+        char *t = deck_at_rest(th, "", "", card);
+        ENSURE(t != NULL);
+        if (t) check_onset(t, "static_ifric2.rad", ts);
+        free(t);
+    }
+#undef ROOT_P
+    /* Ifric 3, Renard: mu(0) = mu_s = C1 = 0.3 (mu_max 0.4 reached at
+     * V_cr1 does not act): tilted 0.01 rad below atan(mu_s) it sticks
+     * through the ramp, its friction force m g sin(theta) at the end;
+     * 0.01 rad above it slides at the first load */
+    {
+        const char *card = "/FRICTION/1\nIfric 3 at rest\n3,0,,2\n0.3,0.2,0.4,0.1,0.01\n0.1\n";
+        const double tb = atan(0.3) - 0.01;
+        char *t = deck_at_rest(tb, "", "", card);
+        double y[1] = {0}, t0 = -1, t1 = -1;
+        ENSURE(t != NULL);
+        if (t) {
+            ENSURE(run_at_rest(t, "static_renard_below.rad", y, &t0, &t1) == 0);
+            /* the stick spring's displacement F_t / K_t along x */
+            const double x = g * sin(tb) / 2e4;
+            printf("    Renard below: x = %.12g m, closed form %.12g m\n", y[0], x);
+            ENSURE_NEAR(y[0], x, 1e-12, 1e-9);
+        }
+        free(t);
+        t = deck_at_rest(atan(0.3) + 0.01, "", "", card);
+        ENSURE(t != NULL);
+        if (t) {
+            ENSURE(run_at_rest(t, "static_renard_above.rad", y, &t0, &t1) == 1);
+            ENSURE(t0 == 0.0 && t1 < 1e-6);
+        }
+        free(t);
+    }
+    /* TYPE6 fct_IDfv: mu = Fric f_fv(0) = 0.6 * 0.5 = 0.3, Sfric = 1 N,
+     * tilted by 0.4 rad: slides at f* = Sfric / (m g (sin(theta) - mu
+     * cos(theta))) */
+    {
+        const double mu = 0.3, sf = 1.0, tt = 0.4, ts = sf / (g * (sin(tt) - mu * cos(tt)));
+        char *t = deck_at_rest(tt, "1,0.6", ",,,,,3", "/FUNCT/3\nspeed multiplier\n0,0.5\n1,0.1\n");
+        ENSURE(t != NULL);
+        if (t) check_onset(t, "static_fct_fv.rad", ts);
+        free(t);
+        /* a multiplier that is 0 at rest, no Sfric: no static friction */
+        t = deck_at_rest(tt, "0,0.6", ",,,,,3", "/FUNCT/3\nspeed multiplier\n0,0\n1,1\n");
+        ENSURE(t != NULL);
+        if (t)
+            TU_EXPECT_TEXT_ERROR(t, "static_fct_fv0.rad", "/INTER/TYPE6/1", "static analysis",
+                                 "no static friction at rest");
+        free(t);
+    }
+    /* Renard with mu_s = 0, and Ifric 1 with no coefficient at rest: no
+     * static friction at rest; viscous friction (Iform 1): zero at rest */
+    {
+        char *t = deck_at_rest(0.3, "", "", "/FRICTION/1\nRenard mu_s 0\n3,0,,2\n0,0.2,0.4,0,0.01\n0.1\n");
+        ENSURE(t != NULL);
+        if (t) TU_EXPECT_TEXT_ERROR(t, "static_renard0.rad", "/INTER/TYPE6/1", "no static friction at rest");
+        free(t);
+        t = deck_at_rest(0.3, "", "", "/FRICTION/1\nspeed only\n1,0,,2\n0,0.5\n0,0\n");
+        ENSURE(t != NULL);
+        if (t) TU_EXPECT_TEXT_ERROR(t, "static_ifric1_0.rad", "/INTER/TYPE6/1", "no static friction at rest");
+        free(t);
+        t = deck_at_rest(0.3, "", "", "/FRICTION/1\nviscous\n0,0,,1\n\n0,0.3\n");
+        ENSURE(t != NULL);
+        if (t) TU_EXPECT_TEXT_ERROR(t, "static_viscous.rad", "/INTER/TYPE6/1", "viscous friction", "zero at rest");
+        free(t);
+    }
+}
+
+/* Orthotropic friction at rest (docs/theory.md 7.8, "Orthotropic friction"):
+ * deck_at_rest's sphere with a /FRICTION card of two coefficient sets,
+ * direction 1 along V = (cos(alpha), sin(alpha), 0) on the floor
+ * (/FRIC_ORIENT), the load along x at alpha to it. Each set falls with the
+ * pressure, mu_k(p, 0) = c_k (1 - beta p) (Ifric 1: Fric c_k, C1 = -beta
+ * c_k, Area 0.01 m^2), so that the sphere sticks while the load's
+ * components lie within the ellipse, (F_t cos(alpha) / (mu_1 F_n))^2 +
+ * (F_t sin(alpha) / (mu_2 F_n))^2 <= 1, and slides where it leaves it:
+ * 1 - beta p* = tan(theta) sqrt(cos^2(alpha) / c_1^2 + sin^2(alpha) /
+ * c_2^2), p* = m g cos(theta) f* / Area. */
+static void test_static_friction_orthotropic(void)
+{
+    const double g = 9.81, A = 0.01, c1 = 0.3, c2 = 0.6, beta = 5e-4, th = atan(0.25);
+    const double alphas[3] = {0.0, 0.6, 1.0};
+    for (int k = 0; k < 3; k++) {
+        const double al = alphas[k];
+        const double S = sqrt(cos(al) * cos(al) / (c1 * c1) + sin(al) * sin(al) / (c2 * c2));
+        const double ps = (1.0 - tan(th) * S) / beta, ts = ps * A / (g * cos(th));
+        char card[1200], name[64];
+        snprintf(card, sizeof card,
+                 "/PART/1\nsphere\n         0         0         0                   0\n         1\n"
+                 "/PART/2\nfloor\n         0         0         0                   0\n         0         2\n"
+                 "/GRPART/PART/1\nfloors\n2\n"
+                 "/FRICTION/1\northotropic, falling with the pressure\n1,0,,2,,%g\n\n0,0.9\n"
+                 "0,1,1,0,,1\n%.17g\n0,%g\n%.17g\n0,%g\n"
+                 "/FRIC_ORIENT/1\ndirection 1\n1,0\n%.17g,%.17g,0,0,0\n",
+                 A, -beta * c1, c1, -beta * c2, c2, cos(al), sin(al));
+        snprintf(name, sizeof name, "static_ortho_%d.rad", k);
+        char *t = deck_at_rest(th, "", "", card);
+        ENSURE(t != NULL);
+        if (t) check_onset(t, name, ts);
+        free(t);
+    }
+}
+
+/* A preload with a friction filter (Ifiltr 3, 4 Hz): the sphere on a floor
+ * under gravity tilted by atan(0.25) < atan(mu = 0.3), run dynamically
+ * (CVODE) for 0.2 s from the static equilibrium: the filter states start
+ * at the limit (the filter at rest), so it stays at rest; without them the
+ * filtered limit would rise from zero and the sphere slide. */
+static void test_static_preload_filter(void)
+{
+    const double g = 9.81, th = atan(0.25);
+    char t[2048];
+    snprintf(t, sizeof t,
+             "/NODE\n1,0,0,0.05\n"
+             "/RBODY/1\nsphere\n1,,,,1.0\n0.001,0.001,0.001\n0,0,0\n"
+             "/SURF/ELLIPS/1\nsphere\n0,2,1\n0,0,0.05\n0.05,0.05,0.05\n"
+             "/GRNOD/NODE/1\ngroup\n1\n"
+             "/BCS/1\nrotations held\n000 111,0,1\n"
+             "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
+             "/FUNCT/1\nlinear k = 1e5 N/m\n0,0\n1,100000\n"
+             "/GRAV/1\ngravity x\n0,X,0,0,0,,1,%.17g\n"
+             "/GRAV/2\ngravity z\n0,Z,0,0,0,,1,%.17g\n"
+             "/INTER/TYPE6/1\nsphere - floor\n1,2\n\n\n1,0\n0,0,20000\n\n"
+             "/FRICTION/1\nCoulomb, filtered\n0,3,4,2\n\n0,0.3\n"
+             "/RUN\n0.2,0.05\n/SOLVER\n1,5,100000,1e-8,0,0,1\n",
+             g * sin(th), -g * cos(th));
+    rc_error e;
+    rc_model *m = tu_compile_text(t, "static_preload_filter.rad", &e);
+    if (!m) fprintf(stderr, "  %s\n", e.msg);
+    ENSURE(m != NULL);
+    if (!m) return;
+    double *y = calloc((size_t)m->ny + 1, sizeof(double)), *y0 = calloc((size_t)m->ny + 1, sizeof(double));
+    ENSURE(y && y0);
+    if (y && y0) {
+        rc_initial_state(m, y0);
+        rc_run_options o = {.y_end = y};
+        rc_stats st;
+        const rc_status r = rc_run(m, &o, &st, &e);
+        if (r) fprintf(stderr, "  %s\n", e.msg);
+        ENSURE(r == RC_OK && st.preloaded == 1);
+        const int a = m->body_yadr[0];
+        const double v = sqrt(y[a + 7] * y[a + 7] + y[a + 8] * y[a + 8] + y[a + 9] * y[a + 9]);
+        /* the stick spring's slide m g sin(theta) / K_t, taken in the preload */
+        const double dx = y[a] - y0[a], x_el = g * sin(th) / 2e4;
+        printf("    preloaded with a filter: |v| %.3g m/s at 0.2 s, x %.12g m (m g sin(theta) / K_t %.12g m)\n", v,
+               dx, x_el);
+        ENSURE(v < 1e-9);
+        ENSURE_NEAR(dx, x_el, 1e-12, 1e-8);
+    }
+    free(y);
+    free(y0);
+    rc_model_free(m);
+}
+
 void suite_static(void);
 void suite_static(void)
 {
@@ -909,4 +1214,7 @@ void suite_static(void)
     RUN_TEST(test_static_prismatic_free);
     RUN_TEST(test_static_scope);
     RUN_TEST(test_static_snap_through);
+    RUN_TEST(test_static_friction_at_rest);
+    RUN_TEST(test_static_friction_orthotropic);
+    RUN_TEST(test_static_preload_filter);
 }

@@ -4,8 +4,9 @@
  * Inacti 5, couplings of every kind, joints and their stops, imposed
  * translations and rotations), and a clear input error naming the card of
  * the first element it does not (docs/case-format.md, /SOLVER): friction
- * with a speed, exact stick, friction of a sphere on a segment surface,
- * an imposed rotation about an axis that turns. Called
+ * with no meaning at rest (viscous, step5, a law whose coefficient at zero
+ * sliding speed is 0), exact stick, an imposed rotation about an axis
+ * that turns. Called
  * where Method 3 is chosen: by the compiler for the deck's /SOLVER, by
  * rc_model_set_method, and by the static backend itself; and where a
  * preload (/SOLVER Preload 1) is asked for, which also needs the bodies at
@@ -20,18 +21,65 @@
 #include "model/joint.h"
 #include "model/model.h"
 #include "model/power.h"
+#include "model/table.h"
 
 /* Friction the static analysis' return mapping takes (solver/static.c,
  * docs/theory.md 7.8): the incremental stick spring of TYPE6 (Fric, Sfric,
- * fct_IDff; no speed multiplier) or of a /FRICTION Coulomb law (Ifric 0),
- * isotropic, unfiltered, not exact stick. */
+ * fct_IDff, fct_IDfv) or of a /FRICTION law (Ifric 0 to 3, any filter,
+ * isotropic or orthotropic: the elliptic limit), not exact stick. A law of the sliding speed is taken at rest
+ * (v = 0: mu(p, 0), f_fv(0)); a filtered limit at rest equals the limit. */
 int rc_static_friction_ok(const rc_fric *fr)
 {
-    if (fr->exact || fr->form != RC_FF_INCREMENTAL || fr->ortho || fr->tau > 0 || !(fr->kt > 0))
-        return 0;
-    if (fr->kind == RC_FK_TYPE6) return fr->fct_fv < 0;
-    if (fr->kind == RC_FK_CARD) return fr->ifric == 0;
+    if (fr->exact || fr->form != RC_FF_INCREMENTAL || !(fr->kt > 0)) return 0;
+    if (fr->kind == RC_FK_TYPE6) return 1;
+    if (fr->kind == RC_FK_CARD) return fr->ifric >= 0 && fr->ifric <= 3;
     return 0;
+}
+
+/* The largest of a + b p + c p^2 over p >= 0 (INFINITY: unbounded). */
+static double quad_max(double a, double b, double c)
+{
+    if (c > 0) return INFINITY;
+    if (c == 0) return b > 0 ? INFINITY : a;
+    return b > 0 ? a - b * b / (4.0 * c) : a;
+}
+
+/* Why friction fr of interface i has no static friction at rest (NULL:
+ * it has): the coefficient at zero sliding speed, mu(p, 0) of the law at
+ * every pressure p >= 0 (0 where the law reads no pressure) or Fric
+ * f_fv(0), is zero (floored) and no Sfric, so that the law gives no force
+ * at rest whatever the load: nothing for the return mapping to hold. */
+static const char *rest_zero(const rc_model *m, int i, const rc_fric *fr, char *buf, size_t nb)
+{
+    if (fr->kind == RC_FK_TYPE6) {
+        if (fr->fct_fv < 0 || fr->sfric > 0) return NULL;
+        const double fv0 = rc_table_value(&m->table[fr->fct_fv], 0.0);
+        if (fr->fric * fv0 > 0) return NULL;
+        snprintf(buf, nb, "a speed multiplier of friction (fct_IDfv) that is %g at zero sliding speed, with Sfric "
+                 "0: no static friction at rest (the limit Fric f_fv(0) F_n is 0), and a static analysis has no "
+                 "sliding speed", fv0);
+        return buf;
+    }
+    if (fr->kind != RC_FK_CARD || fr->ifric == 0) return NULL;
+    for (int k = 0; k < 1 + fr->ortho; k++) {
+        const double *c = fr->set[k], fric = c[RC_FS_FRIC];
+        const int pr = fr->area > 0; /* the law reads a pressure */
+        double mx = 0.0;
+        switch (fr->ifric) {
+        case 1: mx = pr ? quad_max(fric, c[0], c[3]) : fric; break;        /* Fric + C1 p + C4 p^2 */
+        case 2: mx = pr ? quad_max(fric + c[4], c[2], c[0]) : fric + c[4]; break; /* Fric + C5 + C3 p + C1 p^2 */
+        default: mx = c[0]; break;                                          /* Renard: mu_s = C1 */
+        }
+        if (mx > 0) continue;
+        static const char *const law[4] = {"", "generalised viscous (Ifric 1)", "modified Darmstad (Ifric 2)",
+                                            "Renard (Ifric 3)"};
+        snprintf(buf, nb, "a %s friction law whose coefficient at zero sliding speed, mu(p, v = 0), is 0 at every "
+                 "pressure%s: no static friction at rest, and a static analysis has no sliding speed",
+                 law[fr->ifric & 3], fr->ortho ? (k ? " in direction 2" : " in direction 1") : "");
+        (void)i;
+        return buf;
+    }
+    return NULL;
 }
 
 #define RC_STATIC_NOT "static analysis (/SOLVER Method 3) does not support %s in this version"
@@ -64,27 +112,34 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
     for (int i = 0; i < m->ninter; i++) {
         const rc_fric *fr = &m->inter_fr[i];
         const char *what = NULL;
-        char fbuf[96];
-        if (fr->exact) what = "exact stick (TYPE6 Istick 1, /FRICTION Iform 3)";
+        char fbuf[420];
+        char rbuf[320];
+        if (fr->exact)
+            what = "exact stick (TYPE6 Istick 1, /FRICTION Iform 3: the stick phase is a constraint on the "
+                   "velocity, which a static analysis does not have)";
         else if (!rc_inter_frictionless(m, i) && !rc_static_friction_ok(fr)) {
-            const char *why = fr->kind == RC_FK_STEP5             ? "the power law's step5 friction"
-                              : fr->form != RC_FF_INCREMENTAL     ? "viscous friction"
-                              : fr->ortho                         ? "orthotropic friction"
-                              : fr->tau > 0                       ? "a friction filter (Ifiltr)"
-                              : fr->kind == RC_FK_CARD            ? "a friction law other than Coulomb (Ifric 0)"
-                              : fr->kind == RC_FK_TYPE6           ? "a speed multiplier of friction (fct_IDfv)"
-                                                                  : "this friction";
+            const char *why = fr->kind == RC_FK_STEP5
+                                  ? "the power law's step5 friction (its force mu(s) F_n along the sliding speed s is "
+                                    "zero at rest)"
+                              : fr->form != RC_FF_INCREMENTAL
+                                  ? "viscous friction (/FRICTION Iform 1: F = -C v_t, zero at rest; no stick state "
+                                    "to hold a load)"
+                              : "this friction";
             if (fr->card_id > 0) snprintf(fbuf, sizeof fbuf, "%s (/FRICTION/%d on it)", why, fr->card_id);
             else snprintf(fbuf, sizeof fbuf, "%s (its own friction fields)", why);
             what = fbuf;
-        } else if (rc_pair_multi(m->inter_pair[i]) && !rc_inter_frictionless(m, i) &&
-                 !(rc_pair_nodes(m->inter_pair[i]) && m->inter_npt[i] > 0 && m->inter_pst[i] == 3))
-            what = "friction on a sphere against a segment surface";
+        } else if (!rc_inter_frictionless(m, i) && rest_zero(m, i, fr, rbuf, sizeof rbuf)) {
+            if (fr->card_id > 0) snprintf(fbuf, sizeof fbuf, "%s (/FRICTION/%d on it)", rbuf, fr->card_id);
+            else snprintf(fbuf, sizeof fbuf, "%s (its own friction fields)", rbuf);
+            what = fbuf;
+        } else if (rc_pair_nodes(m->inter_pair[i]) && !rc_inter_frictionless(m, i) &&
+                   !(m->inter_npt[i] > 0 && (m->inter_pst[i] == 3 || m->inter_pst[i] == 6)))
+            what = "this friction on a pair of several contact points";
         if (what)
             RC_RAISE(err, RC_EINPUT,
                      RC_LOCFMT "card %s: " RC_STATIC_NOT " (%s); expected a contact of TYPE6 (any Iform), "
-                               "frictionless or with the stick-spring friction of TYPE6 Fric/Sfric or a /FRICTION "
-                               "Coulomb law, or of the power law without friction, between spheres, planes, boxes or "
+                               "frictionless or with the stick-spring friction of TYPE6 (Sfric, Fric, fct_IDff, fct_IDfv) "
+                               "or of a /FRICTION law in the incremental form (Iform 2), or of the power law without friction, between spheres, planes, boxes or "
                                "cylinders, boxes or segment surfaces, or %s",
                      RC_LOC(m->inter_loc[i]), m->inter_name[i], what, how, alt);
     }

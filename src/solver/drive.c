@@ -673,10 +673,16 @@ static void preload_friction(const rc_model *m, rc_data *d, const rc_preload *pr
             const int at = m->inter_eadr[i] + fr->tidx;
             memcpy(y + at, pre->y + at, 3 * sizeof(double));
         }
-        /* friction per contact point: each point's unit force, sticking */
+        /* a friction filter: the filtered limit at rest, the limit */
+        if (fr->fidx >= 0 && fr->tau > 0) {
+            const int at = m->inter_eadr[i] + fr->fidx;
+            memcpy(y + at, pre->y + at, 3 * sizeof(double));
+        }
+        /* friction per contact point: each point's unit force, sticking
+         * (and its filtered limit, with a filter) */
         for (int j = 0; j < m->inter_npt[i]; j++) {
             const int at = m->inter_eadr[i] + m->inter_ns[i] + m->inter_pst[i] * j;
-            memcpy(y + at, pre->y + at, 3 * sizeof(double));
+            memcpy(y + at, pre->y + at, (size_t)(m->inter_pst[i] == 6 ? 6 : 3) * sizeof(double));
             d->pt_slip[m->inter_pbase[i] + j] = 0;
         }
         d->inter_slip[i] = 0;

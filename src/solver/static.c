@@ -33,7 +33,11 @@
  * start) goes into the contact's friction state before the engine
  * evaluates; stick within Sfric + mu F_n, else slip (d->inter_slip: the
  * engine applies the limit along the state); the stiffness adds the
- * engine's columns of that state times the trial's derivatives. A load
+ * engine's columns of that state times the trial's derivatives. The law
+ * is the engine's at rest (zero velocities: mu(p, v = 0), f_fv(0)); a
+ * filter is left out (at rest the filtered limit is the limit: the view
+ * s->mf) and its states set to the limit in each equilibrium; an
+ * orthotropic contact sticks within the ellipse and slides on it. A load
  * beyond friction (a contact sliding where Newton fails, at the smallest
  * substep) is an error naming the interface and the load time.
  *
@@ -210,6 +214,14 @@ struct rc_static {
     double *en_x0;    /* [3 nb] [m] */
     double en_t0;
     double *ext;      /* [36 nblk] friction's part of the stiffness (rate rows, unknown columns) */
+    /* a friction filter (Ifiltr; docs/theory.md 7.8): at rest the filtered
+     * limit equals the limit, so the static analysis evaluates the engine
+     * on a view of the model whose incremental friction has no filter
+     * (m0 the model itself, mf the view, frf its friction records); the
+     * filter states of an equilibrium are set to the limit (filter_commit) */
+    const rc_model *m0;
+    rc_model *mf;
+    rc_fric *frf;
 };
 
 /* ---- rotations ------------------------------------------------------- */
@@ -273,7 +285,7 @@ void rc_static_free(rc_static *s)
                  s->fr_xa, s->fr_xb, s->ext, s->hy_on, s->hy_f0, s->hy_p0, s->hy_el, s->pe_on,
                  s->pf_on, s->pf_t0, s->pf_pa, s->pf_pb, s->pf_xa, s->pf_xb, s->pf_in, s->pf_out,
                  s->full, s->rcolptr, s->rrowind, s->remap, s->ufull, s->rfull, s->en_p0, s->en_f0, s->en_w0, s->en_x0,
-                 s->jq, s->jpos, s->jbody, s->jw, s->jA, s->jb, s->jl0, s->imp_r, s->imp_q0, s->soft};
+                 s->jq, s->jpos, s->jbody, s->jw, s->jA, s->jb, s->jl0, s->imp_r, s->imp_q0, s->soft, s->mf, s->frf};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     free(s);
 }
@@ -294,8 +306,33 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
 {
     rc_static *s = calloc(1, sizeof *s);
     if (!s) return NULL;
-    s->m = m;
+    s->m = s->m0 = m;
     s->d = d;
+    /* a friction filter: the engine on the view of the model without it */
+    int filt = 0;
+    for (int i = 0; i < m->ninter; i++)
+        filt |= m->inter_fr[i].form == RC_FF_INCREMENTAL && (m->inter_fr[i].tau > 0 || m->inter_fr[i].ortho);
+    if (filt) {
+        s->mf = malloc(sizeof *s->mf);
+        s->frf = malloc((size_t)m->ninter * sizeof(rc_fric));
+        if (!s->mf || !s->frf) {
+            rc_static_free(s);
+            return NULL;
+        }
+        *s->mf = *m;
+        memcpy(s->frf, m->inter_fr, (size_t)m->ninter * sizeof(rc_fric));
+        for (int i = 0; i < m->ninter; i++) {
+            if (s->frf[i].form != RC_FF_INCREMENTAL) continue;
+            s->frf[i].tau = 0.0;
+            /* orthotropic: the engine's stick root without the absolute
+             * band, (F_1/s_1)^2 + (F_2/s_2)^2 - 1 with s_k = L_k (1 +
+             * RC_SLIP_BAND), from which fric_trial takes the scaled
+             * norm of the force on the ellipse */
+            if (s->frf[i].ortho) s->frf[i].fband = 0.0;
+        }
+        s->mf->inter_fr = s->frf;
+        s->m = m = s->mf;
+    }
     s->nb = m->nfree;
     s->n = 6 * s->nb;
     const int nj = m->jnt ? m->jnt->n : 0;
@@ -651,7 +688,7 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
         s->fr_on[i] = !rc_inter_frictionless(m, i) && rc_static_friction_ok(&m->inter_fr[i]) && m->inter_npt[i] == 0 &&
                       m->inter_fr[i].tidx >= 0;
         s->pf_on[i] = !rc_inter_frictionless(m, i) && rc_static_friction_ok(&m->inter_fr[i]) && m->inter_npt[i] > 0 &&
-                      rc_pair_nodes(m->inter_pair[i]) && m->inter_pst[i] == 3;
+                      rc_pair_nodes(m->inter_pair[i]) && (m->inter_pst[i] == 3 || m->inter_pst[i] == 6);
         s->hy_on[i] = m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0 && m->inter_hidx[i] >= 0;
         s->pe_on[i] = rc_pair_multi(m->inter_pair[i]) && m->inter_peidx[i] >= 0;
     }
@@ -905,7 +942,14 @@ static void fric_trial(rc_static *s, double t, const double *u)
         rc_inter_report r;
         rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], 0, t, s->y, &r);
         const double nf = sqrt(r.ft[0] * r.ft[0] + r.ft[1] * r.ft[1] + r.ft[2] * r.ft[2]);
-        d->inter_slip[i] = nf > fmax(r.flim, 0.0) + s->fr_band;
+        /* orthotropic: the engine's test on the ellipse, (F_1/L_1)^2 +
+         * (F_2/L_2)^2 > 1 (with its bands); in slip the engine returns the
+         * trial to the ellipse along its ray in the scaled plane */
+        if (m->inter_fr[i].ortho) {
+            const double q = sqrt(fmax(r.slip_root + 1.0, 0.0)) * (1.0 + RC_SLIP_BAND); /* |u|, u_k = F_k / L_k */
+            d->inter_slip[i] = q > 1.0 + s->fr_band / fmax(r.flim, DBL_MIN);
+        } else
+            d->inter_slip[i] = nf > fmax(r.flim, 0.0) + s->fr_band;
     }
 }
 
@@ -992,6 +1036,20 @@ static void commit_state(rc_static *s, double t, const double *u, double *y)
         }
     }
     memcpy(y, s->y, (size_t)m->ny * sizeof(double));
+    /* a friction filter: at rest the filtered limit L_f has reached the
+     * limit L; the model's own rate of L_f, (L - L_f) / tau, gives L (the
+     * interface's states, or each point's) */
+    if (s->mf && rc_assemble_rhs(s->m0, d, t, y, s->f) == 0)
+        for (int i = 0; i < m->ninter; i++) {
+            const rc_fric *fr = &s->m0->inter_fr[i];
+            if (!(fr->tau > 0) || fr->form != RC_FF_INCREMENTAL) continue;
+            const int e = m->inter_eadr[i];
+            if (fr->fidx >= 0)
+                for (int k = 0; k < 3; k++) y[e + fr->fidx + k] += fr->tau * s->f[e + fr->fidx + k];
+            if (m->inter_pst[i] == 6)
+                for (int j = 0; j < m->inter_npt[i]; j++)
+                    for (int k = 3; k < 6; k++) y[e + m->inter_ns[i] + 6 * j + k] += fr->tau * s->f[e + m->inter_ns[i] + 6 * j + k];
+        }
     /* the joints' reactions, where a record vector has them (joints.h) */
     for (int k = 0; k < s->nl; k++) y[m->ny + k] = u[s->n + k];
 }
@@ -2254,8 +2312,8 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                     }
                     if (slide >= 0) {
                         rc_inter_report r;
-                        rc_inter_report_eval(m, slide, RC_MODE_CLOSED, d->inter_branch[slide], d->inter_track[slide],
-                                             1, tn, s->y, &r);
+                        rc_inter_report_eval(s->m, slide, RC_MODE_CLOSED, d->inter_branch[slide],
+                                             d->inter_track[slide], 1, tn, s->y, &r); /* the law at rest */
                         slide_lim = r.flim;
                         snprintf(reason, sizeof reason, "a contact slides");
                         break;

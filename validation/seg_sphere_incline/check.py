@@ -20,6 +20,8 @@ deepest kept point (docs/theory.md 2.7). Default solver settings. References
 """
 import math
 import os
+import re
+import subprocess
 import sys
 
 import numpy as np
@@ -123,6 +125,46 @@ def main():
                 f"{len(slips)} fric_slip events (expected none); |F_t| over [0.1, {r.t[-1]:g}] s in [{ft.min():.9f}, "
                 f"{ft.max():.9f}] N, J a / (R - p0)^2 = {f_ref:.9f} N, max rel. error {e:.1e} (< 1e-6)")
     rcval.check_ledger("seg_sphere_incline.roll.ledger", r, 1e-5)
+
+    # 4. the static analysis (/SOLVER Method 3), rotations locked: held by
+    # friction at tan(theta) = 0.2, the friction force m g sin(theta) at the
+    # deepest kept point; at tan(theta) = 0.5 > mu no equilibrium, the
+    # limit mu m g cos(theta) named
+    tan_th = 0.2
+    th, n, s, u = incline.frame(tan_th, PHI)
+    d = deck(tan_th, 0.2, dtout=0.1)
+    d.solver(method=3)
+    r = rcval.Result(rcval.run(d, name="static_stick", keep_solver=True))
+    ft = np.linalg.norm(r.ffric[:, 0], axis=1)
+    eF = float(np.max(np.abs(ft - M * G * math.sin(th)))) / (M * G)
+    eN = float(np.max(np.abs(r.fn[:, 0] - M * G * math.cos(th)))) / (M * G)
+    p0 = M * G * math.cos(th) / K
+    x_el = M * G * math.sin(th) / K  # the stick spring's slide down the plate
+    xs0 = float((r.pos[-1, 0, :] - (R - p0) * n) @ s)
+    ex = abs(abs(xs0) - x_el) / x_el
+    rcval.check("seg_sphere_incline.static.stick", eF < 1e-9 and eN < 1e-9 and ex < 1e-6 and
+                bool(np.all(r.slip[:, 0] == 0)),
+                f"static, tan(theta) = 0.2: |F_t| = {ft[-1]:.12f} N against m g sin(theta) = "
+                f"{M * G * math.sin(th):.12f} N, error {eF:.1e} of m g (< 1e-9); F_n against m g cos(theta) "
+                f"{eN:.1e} (< 1e-9); slide along the fall line {abs(xs0):.6e} m against m g sin(theta) / K_t = "
+                f"{x_el:.6e} m, rel. error {ex:.1e} (< 1e-6); sticking")
+    tan_th = 0.5
+    th, n, s, u = incline.frame(tan_th, PHI)
+    d = deck(tan_th, 0.2, dtout=0.1)
+    d.solver(method=3)
+    tmp = rcval.tmpdir()
+    case = os.path.join(tmp, "static_slide.rad")
+    with open(case, "w") as f:
+        f.write(d.text())
+    p = subprocess.run([rcval.RICOCHET, "run", case, "-o", os.path.join(tmp, "static_slide.nc"), "-q"],
+                       capture_output=True, text=True)
+    m = re.search(r"limit Sfric \+ mu F_n = ([0-9.eE+-]+) N", p.stderr)
+    lim = MU * M * G * math.cos(th)
+    e = abs(float(m.group(1)) - lim) / lim if m else float("inf")
+    rcval.check("seg_sphere_incline.static.slide", p.returncode == 3 and "friction can hold" in p.stderr and e < 1e-5,
+                f"static, tan(theta) = 0.5 > mu: exit {p.returncode} (expected 3, no equilibrium), the limit named "
+                f"{m.group(1) if m else '?'} N against mu m g cos(theta) = {lim:.6f} N (printed to 6 digits: rel. "
+                f"error {e:.1e} < 1e-5)")
     rcval.finish()
 
 

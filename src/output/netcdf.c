@@ -1261,35 +1261,6 @@ rc_status rc_output_impacts(rc_output *o, int n, const rc_impact *rows, int np, 
     return RC_OK;
 }
 
-/* Write the persistent contact rows (data mode). */
-static rc_status write_persistent(rc_output *o, const int *varid, rc_error *err)
-{
-    const size_t n = (size_t)o->npersist, start[1] = {0}, count[1] = {n};
-    if (n == 0) return RC_OK;
-    double *col = malloc(n * sizeof *col);
-    int *ids = malloc(n * sizeof *ids);
-    if (!col || !ids) {
-        free(col);
-        free(ids);
-        RC_RAISE(err, RC_ENOMEM, "output: out of memory writing the persistent contacts");
-    }
-    for (size_t k = 0; k < n; k++) ids[k] = o->persist[k].inter_id;
-    int st = nc_put_vara_int(o->ncid, varid[P_INTER], start, count, ids);
-    for (int c = 1; c < P_COUNT && st == NC_NOERR; c++) {
-        for (size_t k = 0; k < n; k++) {
-            const rc_contact *r = &o->persist[k];
-            const double v[P_COUNT] = {0, r->t_close, r->t_open, r->duration, r->fn_max, r->fn_mean, r->pen_max,
-                                       r->slip};
-            col[k] = v[c];
-        }
-        st = nc_put_vara_double(o->ncid, varid[c], start, count, col);
-    }
-    free(col);
-    free(ids);
-    if (st != NC_NOERR) return nc_fail(err, __LINE__, __func__, o->path, st, "writing the persistent contacts table");
-    return RC_OK;
-}
-
 /* A table of rows: dimension dname (unlimited, so that an empty table is
  * allowed), one variable per column of cols[ncol], their ids in varid (the
  * impacts, the persistent contacts). Only in files with interfaces. Define
@@ -1310,34 +1281,57 @@ static rc_status define_table(rc_output *o, const char *dname, const table_col *
     return RC_OK;
 }
 
-/* Write the impact rows (data mode). */
-static rc_status write_impacts(rc_output *o, const int *varid, rc_error *err)
+/* The cells of the two tables: row k's value in column c >= 1 (column 0,
+ * the interface ids, is written apart). */
+static double impact_cell(const rc_output *o, size_t k, int c)
 {
-    const size_t n = (size_t)o->nimpact, start[1] = {0}, count[1] = {n};
+    const rc_impact *r = &o->impact[k];
+    const double v[I_COUNT] = {0, r->t_close, r->t_open, r->duration, r->pen_max, r->t_pen_max, r->fn_max,
+                               r->t_fn_max, r->v_in, r->v_out, r->restitution, r->energy_lost};
+    return v[c];
+}
+
+static double persistent_cell(const rc_output *o, size_t k, int c)
+{
+    const rc_contact *r = &o->persist[k];
+    const double v[P_COUNT] = {0, r->t_close, r->t_open, r->duration, r->fn_max, r->fn_mean, r->pen_max, r->slip};
+    return v[c];
+}
+
+/* Write the n rows of a table defined by define_table (data mode): the
+ * interface ids ids[n] in column 0, cell(o, k, c) in the columns 1..ncol-1;
+ * what names the table in the messages. */
+static rc_status write_table(rc_output *o, const int *varid, int ncol, size_t n, const int *ids,
+                             double (*cell)(const rc_output *, size_t, int), const char *what, rc_error *err)
+{
+    const size_t start[1] = {0}, count[1] = {n};
     if (n == 0) return RC_OK;
     double *col = malloc(n * sizeof *col);
-    int *ids = malloc(n * sizeof *ids);
-    if (!col || !ids) {
-        free(col);
-        free(ids);
-        RC_RAISE(err, RC_ENOMEM, "output: out of memory writing the impacts");
-    }
-    int st = NC_NOERR, c = 0;
-    for (size_t k = 0; k < n; k++) ids[k] = o->impact[k].inter_id;
-    st = nc_put_vara_int(o->ncid, varid[I_INTER], start, count, ids);
-    for (c = 1; c < I_COUNT && st == NC_NOERR; c++) {
-        for (size_t k = 0; k < n; k++) {
-            const rc_impact *r = &o->impact[k];
-            const double v[I_COUNT] = {0, r->t_close, r->t_open, r->duration, r->pen_max, r->t_pen_max, r->fn_max,
-                                       r->t_fn_max, r->v_in, r->v_out, r->restitution, r->energy_lost};
-            col[k] = v[c];
-        }
+    if (!col) RC_RAISE(err, RC_ENOMEM, "output: out of memory writing the %s", what);
+    int st = nc_put_vara_int(o->ncid, varid[0], start, count, ids);
+    for (int c = 1; c < ncol && st == NC_NOERR; c++) {
+        for (size_t k = 0; k < n; k++) col[k] = cell(o, k, c);
         st = nc_put_vara_double(o->ncid, varid[c], start, count, col);
     }
     free(col);
-    free(ids);
-    if (st != NC_NOERR) return nc_fail(err, __LINE__, __func__, o->path, st, "writing the impacts table");
+    if (st != NC_NOERR) return nc_fail(err, __LINE__, __func__, o->path, st, "writing the %s table", what);
     return RC_OK;
+}
+
+/* The impacts and the persistent contacts (data mode). */
+static rc_status write_tables(rc_output *o, const int *impact_var, const int *persist_var, rc_error *err)
+{
+    const size_t n = (size_t)(o->nimpact > o->npersist ? o->nimpact : o->npersist);
+    int *ids = malloc((n + 1) * sizeof *ids);
+    if (!ids) RC_RAISE(err, RC_ENOMEM, "output: out of memory writing the impacts");
+    for (int k = 0; k < o->nimpact; k++) ids[k] = o->impact[k].inter_id;
+    rc_status st = write_table(o, impact_var, I_COUNT, (size_t)o->nimpact, ids, impact_cell, "impacts", err);
+    for (int k = 0; k < o->npersist; k++) ids[k] = o->persist[k].inter_id;
+    if (st == RC_OK)
+        st = write_table(o, persist_var, P_COUNT, (size_t)o->npersist, ids, persistent_cell, "persistent contacts",
+                         err);
+    free(ids);
+    return st;
 }
 
 rc_status rc_output_physics(rc_output *o, const rc_out_physics *p, rc_error *err)
@@ -1805,8 +1799,7 @@ static rc_status output_close(rc_output *o, const rc_stats *st, int complete, co
         if (rc2 == RC_OK && o->phys_set) rc2 = define_physics(o, phys_var, e);
         if (rc2 == RC_OK && (s = nc_enddef(o->ncid)) != NC_NOERR)
             rc2 = nc_fail(e, __LINE__, __func__, o->path, s, "ending definitions");
-        if (rc2 == RC_OK && impacts) rc2 = write_impacts(o, impact_var, e);
-        if (rc2 == RC_OK && impacts) rc2 = write_persistent(o, persist_var, e);
+        if (rc2 == RC_OK && impacts) rc2 = write_tables(o, impact_var, persist_var, e);
         if (rc2 == RC_OK && o->phys_set) rc2 = write_physics(o, phys_var, e);
         if (rc2 == RC_OK) {
             closed = 1;

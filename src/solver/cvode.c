@@ -67,6 +67,7 @@ typedef struct run_ctx {
                         changed were refreshed at the event state */
     volatile sig_atomic_t *stop; /* the caller's stop flag (rc_run_options), NULL */
     char cvmsg[512]; /* CVODE's last error message, quoted in the failure message */
+    int nwarn;       /* CVODE's warnings in this run (rc_bk_keep_error) */
     /* the integrator and its vectors (cv_open, cv_start) */
     SUNContext ctx;
     void *cv;
@@ -105,7 +106,8 @@ typedef struct run_ctx {
 static void cb_err(int code, const char *module, const char *function, char *msg, void *ud)
 {
     run_ctx *c = ud;
-    rc_bk_keep_error(c ? c->stop : NULL, c ? c->cvmsg : NULL, sizeof c->cvmsg, code, module, function, msg);
+    rc_bk_keep_error(c ? c->stop : NULL, c ? c->cvmsg : NULL, sizeof c->cvmsg, c ? &c->nwarn : NULL, code, module,
+                     function, msg);
 }
 
 static int cb_rhs(realtype t, N_Vector y, N_Vector ydot, void *ud)

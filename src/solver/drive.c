@@ -609,12 +609,21 @@ void rc_bk_failure_message(const rc_model *m, const rc_data *d, const char *name
              name, t, h, tout, fname ? fname : "?", msg[0] ? " (\"" : "", msg, msg[0] ? "\")" : "", where, advice);
 }
 
-void rc_bk_keep_error(volatile sig_atomic_t *stop, char *keep, size_t n, int code, const char *module,
-                const char *function, const char *msg)
+void rc_bk_keep_error(volatile sig_atomic_t *stop, char *keep, size_t n, int *nwarn, int code, const char *module,
+                      const char *function, const char *msg)
 {
     if (stop && *stop) return;
-    if (code < 0 && keep) snprintf(keep, n, "%s", msg);
-    else fprintf(stderr, "[%s %s]  %s\n  %s\n\n", module, code < 0 ? "ERROR" : "WARNING", function, msg);
+    if (code < 0 && keep) {
+        snprintf(keep, n, "%s", msg);
+        return;
+    }
+    const int k = nwarn ? (*nwarn)++ : 0;
+    if (k < RC_BK_WARNINGS)
+        fprintf(stderr, "ricochet: %s: %s (%s): %s\n", code < 0 ? "error" : "warning", module ? module : "?",
+                function ? function : "?", msg ? msg : "");
+    else if (k == RC_BK_WARNINGS)
+        fprintf(stderr, "ricochet: warning: %s: further warnings of the integrator in this run are not shown\n",
+                module ? module : "?");
 }
 
 /* A failed call of the integrator: its flag's name and last message. */

@@ -71,6 +71,7 @@ typedef struct ida_ctx {
                         Lambda'; exact stick: the sticking contacts' F_t = their multipliers) */
     volatile sig_atomic_t *stop;
     char msg[512];  /* IDA's last error message */
+    int nwarn;      /* IDA's warnings in this run (rc_bk_keep_error) */
     char integrator[320]; /* the integrator's line */
     /* the integrator and its vectors (ida_open, ida_start) */
     SUNContext ctx;
@@ -87,7 +88,8 @@ typedef struct ida_ctx {
 static void cb_err(int code, const char *module, const char *function, char *msg, void *ud)
 {
     ida_ctx *c = ud;
-    rc_bk_keep_error(c ? c->stop : NULL, c ? c->msg : NULL, sizeof c->msg, code, module, function, msg);
+    rc_bk_keep_error(c ? c->stop : NULL, c ? c->msg : NULL, sizeof c->msg, c ? &c->nwarn : NULL, code, module,
+                     function, msg);
 }
 
 /* F(t, Y, Y'): pure, as the right-hand side. */

@@ -95,10 +95,14 @@ void rc_bk_failure_message(const rc_model *m, const rc_data *d, const char *name
                      const char *fname, const char *msg, const char *elem, const char *advice, char *buf, size_t n);
 
 /* The integrator's error handler: nothing after an interruption (stop
- * set), an error kept in keep[n] for the failure message, a warning to
- * stderr as SUNDIALS prints it. */
-void rc_bk_keep_error(volatile sig_atomic_t *stop, char *keep, size_t n, int code, const char *module,
-                const char *function, const char *msg);
+ * set), an error kept in keep[n] for the failure message, a warning on
+ * stderr as one "ricochet: warning:" line naming the integrator, the first
+ * RC_BK_WARNINGS of a run (counted in *nwarn, the run's own counter), then
+ * one line saying that the others are not shown. */
+void rc_bk_keep_error(volatile sig_atomic_t *stop, char *keep, size_t n, int *nwarn, int code, const char *module,
+                      const char *function, const char *msg);
+/* Warnings of the integrator shown per run [-]. */
+#define RC_BK_WARNINGS 3
 
 /* Scratch vectors of a backend for its interpolant (rc_backend.dky):
  * RC_BK_TMP for output times, pauses and root refinement (a vector for

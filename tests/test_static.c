@@ -966,7 +966,7 @@ static char *deck_at_rest(double theta, const char *line2, const char *line3, co
  * at the end [m]),
  * else the load times that bracket the onset of sliding from the error
  * (*t0 the last equilibrium's, *t1 the first without one). */
-static int run_at_rest(const char *text, const char *name, double *x, double *t0, double *t1)
+static int run_at_rest_stats(const char *text, const char *name, double *x, double *t0, double *t1, rc_stats *sto)
 {
     rc_error e;
     rc_model *m = tu_compile_text(text, name, &e);
@@ -990,8 +990,14 @@ static int run_at_rest(const char *text, const char *name, double *x, double *t0
         *t0 = pb ? strtod(pb + strlen(b), NULL) : -1.0;
         out = 1;
     }
+    if (sto) *sto = st;
     rc_model_free(m);
     return out;
+}
+
+static int run_at_rest(const char *text, const char *name, double *x, double *t0, double *t1)
+{
+    return run_at_rest_stats(text, name, x, t0, t1, NULL);
 }
 
 /* The onset of sliding of deck_at_rest's sphere against the closed form
@@ -1112,6 +1118,32 @@ static void test_static_friction_at_rest(void)
     }
 }
 
+/* The slip load located by its estimate (docs/theory.md 7.8, "A load
+ * beyond friction"): deck_at_rest's sphere with Coulomb friction mu = 0.3
+ * and Sfric = 1 N, tilted by 0.4 rad, slides at f* = Sfric / (m g
+ * (sin(theta) - mu cos(theta))) = 0.901 s of the 1 s ramp; its friction
+ * utilisation m g sin(theta) f / (Sfric + mu m g cos(theta) f) is not
+ * linear in the load, so the secant estimate is refined. The bracket holds
+ * f* within the cut-back's precision (2e-6 Dt_out), found with a few
+ * failed solves (the halving of the load substep alone took 27). */
+static void test_static_slip_estimate(void)
+{
+    const double g = 9.81, mu = 0.3, sf = 1.0, tt = 0.4, ts = sf / (g * (sin(tt) - mu * cos(tt)));
+    char *t = deck_at_rest(tt, "1,0.3", "", "");
+    ENSURE(t != NULL);
+    if (!t) return;
+    double x = 0, t0 = -1, t1 = -1;
+    rc_stats st;
+    memset(&st, 0, sizeof st);
+    const int r = run_at_rest_stats(t, "static_slip_estimate.rad", &x, &t0, &t1, &st);
+    printf("    onset t* = %.9f s, bracket [%.9f, %.9f] s; %ld failed solves, %ld Newton iterations\n", ts, t0, t1,
+           (long)st.nonlin_fails, (long)st.nonlin_iters);
+    ENSURE(r == 1);
+    ENSURE(t0 <= ts && ts <= t1 && t1 - t0 < 2e-6 * 0.05);
+    ENSURE(st.nonlin_fails >= 1 && st.nonlin_fails <= 5);
+    free(t);
+}
+
 /* Orthotropic friction at rest (docs/theory.md 7.8, "Orthotropic friction"):
  * deck_at_rest's sphere with a /FRICTION card of two coefficient sets,
  * direction 1 along V = (cos(alpha), sin(alpha), 0) on the floor
@@ -1216,5 +1248,6 @@ void suite_static(void)
     RUN_TEST(test_static_snap_through);
     RUN_TEST(test_static_friction_at_rest);
     RUN_TEST(test_static_friction_orthotropic);
+    RUN_TEST(test_static_slip_estimate);
     RUN_TEST(test_static_preload_filter);
 }

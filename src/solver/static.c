@@ -22,6 +22,10 @@
  * Load steps: from t_{k-1} to t_k in substeps of the load time, halved when
  * a solve fails (down to RC_STATIC_MIN_CUT of the output interval, then an
  * error naming the load time), doubled after a solve in few iterations.
+ * A solve that fails with a contact sliding brackets the load where
+ * friction stops holding: the next loads are tried around the secant
+ * estimate of the sticking contacts' friction utilisation reaching 1
+ * (fric_util, slip_estimate), the halving only where that fails.
  * Contacts are unilateral: after each converged solve the modes that
  * contradict the state flip (an open contact penetrating closes; a closed
  * one separated or pulling opens; set here, as the events do in
@@ -98,6 +102,11 @@
 #define RC_STATIC_MAXIT 60
 #define RC_STATIC_MAXSTEP 1e30
 #define RC_STATIC_QUICK 4
+/* the slip load's bracket: the estimate of the load where friction stops
+ * holding is tried this fraction of RC_STATIC_MIN_CUT Dt_out below (and
+ * then above) it, so that the bracket closes inside the cut-back's
+ * precision (docs/theory.md 7.8, "A load beyond friction") */
+#define RC_STATIC_SLIP_MARGIN 0.25
 /* The first stiffness of a solve retried from a touching start, less this
  * fraction of each unknown's stiffness scale on its diagonal (kin_jac). */
 #define RC_STATIC_TOUCH_REG 1e-6
@@ -2163,6 +2172,37 @@ static int update_modes(const rc_model *m, rc_data *d, double t, const double *y
     return changed;
 }
 
+/* The friction utilisation |F_t| / F_lim of each contact sticking at the
+ * equilibrium (t, y) (with friction per point: no point sliding); NAN for
+ * the others. */
+static void fric_util(const rc_static *s, const rc_data *d, double t, const double *y, double *u)
+{
+    const rc_model *m = s->m;
+    for (int i = 0; i < m->ninter; i++) {
+        u[i] = NAN;
+        if ((!s->fr_on[i] && !s->pf_on[i]) || d->inter_mode[i] != RC_MODE_CLOSED) continue;
+        if (s->pf_on[i] ? point_slip(m, d, i) : d->inter_slip[i]) continue;
+        rc_inter_report r;
+        rc_inter_report_eval_d(m, d, i, t, y, &r);
+        const double ft = sqrt(r.ft[0] * r.ft[0] + r.ft[1] * r.ft[1] + r.ft[2] * r.ft[2]);
+        if (r.flim > 0.0 && isfinite(ft)) u[i] = ft / r.flim;
+    }
+}
+
+/* The load time where the first sticking contact reaches its friction
+ * limit, u = 1, extrapolated linearly (a secant on the load time) from the
+ * utilisations uA, uB at the last two equilibria tA < tB; NAN where no
+ * contact's utilisation rises. */
+static double slip_estimate(int n, double tA, const double *uA, double tB, const double *uB)
+{
+    if (!(tB > tA)) return NAN;
+    double est = INFINITY;
+    for (int i = 0; i < n; i++)
+        if (isfinite(uA[i]) && isfinite(uB[i]) && uB[i] > uA[i] && uB[i] < 1.0)
+            est = fmin(est, tB + (1.0 - uB[i]) * (tB - tA) / (uB[i] - uA[i]));
+    return isfinite(est) ? est : NAN;
+}
+
 /* The static analysis of the run (pre == NULL), or the preload of a
  * dynamic run (pre != NULL): the one equilibrium at the load time 0, no
  * results file, no event callback; its state into pre->y, its contacts'
@@ -2205,6 +2245,9 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
     int *msave = calloc((size_t)m->ninter + 1, sizeof(int)), *flips = calloc((size_t)m->ninter + 1, sizeof(int));
     int *slsave = calloc((size_t)m->ninter + 1, sizeof(int));
     int *pfsave = calloc((size_t)m->ninter + 1, sizeof(int));
+    /* the friction utilisations at the last two equilibria (fric_util) */
+    double *uA = malloc(((size_t)m->ninter + 1) * sizeof(double));
+    double *uB = malloc(((size_t)m->ninter + 1) * sizeof(double));
     /* the couplings' modes (joint stops, contact coupling faces): scratch
      * of update_cpl_modes, and their save at a substep's start */
     const size_t ncm = m->cpl ? (size_t)m->cpl->n + (size_t)(m->cpl->ct ? m->cpl->ct->nface : 0) : 0;
@@ -2213,7 +2256,7 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
     const char *fail_reason = NULL;
     double t = 0.0;
     int fb_ok = 0;
-    if (!d || !s || !y || !ysave || !ptol || !msave || !flips || !slsave || !pfsave || !cplold || !cplsave || !(fb_ok = rc_bk_frame_alloc(m, &fb))) {
+    if (!d || !s || !y || !ysave || !ptol || !msave || !flips || !slsave || !pfsave || !uA || !uB || !cplold || !cplsave || !(fb_ok = rc_bk_frame_alloc(m, &fb))) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the static analysis");
         goto done;
     }
@@ -2246,6 +2289,11 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
     /* the output times: t_0 = 0, then each from the last */
     double dtau = dtout;          /* the load substep [s] */
     const double dmin = RC_STATIC_MIN_CUT * dtout;
+    /* the slip load's bracket: the first load time that failed with a
+     * contact sliding (above t while open), the next load time to try
+     * (the slip estimate; NAN: none), the times of uA, uB */
+    const double dslip = RC_STATIC_SLIP_MARGIN * dmin;
+    double t_hi = INFINITY, t_try = NAN, tA = NAN, tB = NAN;
     for (long kout = 0;; kout++) {
         double tk = fmin((double)kout * dtout, tend);
         if (tend - tk < 1e-12 * tend) tk = tend;
@@ -2254,8 +2302,12 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
         /* from t to tk in substeps of the load time */
         int first = kout == 0;
         while (first || t < tk) {
-            const double tn =
-                first ? 0.0 : imp_break(m, t, tk - t <= dtau * (1 + 1e-12) ? tk : t + dtau);
+            const int from_est = !first && !isnan(t_try) && t_try > t && t_try <= tk;
+            const double tn = first      ? 0.0
+                              : from_est ? t_try
+                                         : imp_break(m, t, tk - t <= dtau * (1 + 1e-12) ? tk : t + dtau);
+            if (from_est) dtau = tn - t;
+            t_try = NAN;
             memcpy(ysave, y, (size_t)nyx * sizeof(double));
             memcpy(msave, d->inter_mode, (size_t)m->ninter * sizeof(int));
             memcpy(slsave, d->inter_slip, (size_t)m->ninter * sizeof(int));
@@ -2416,7 +2468,28 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                 }
                 t = tn;
                 S->steps++;
-                if (!first && iters <= RC_STATIC_QUICK) dtau = fmin(2.0 * dtau, dtout);
+                /* the friction utilisations of the last two equilibria */
+                double *uw = uA;
+                uA = uB;
+                uB = uw;
+                tA = tB;
+                tB = t;
+                fric_util(s, d, t, y, uB);
+                if (t >= t_hi) t_hi = INFINITY; /* past the failed load: no bracket */
+                if (t_hi < INFINITY) {
+                    /* inside the slip load's bracket: at the cut-back's
+                     * precision, the failed load once more (its failure
+                     * ends the run); else just below, or above, the
+                     * estimate; else half the bracket */
+                    const double est = slip_estimate(m->ninter, tA, uA, tB, uB);
+                    if (t_hi - t < 2.0 * dmin)
+                        t_try = t_hi;
+                    else if (est > t && est < t_hi)
+                        t_try = est - t > 1.5 * dslip ? est - dslip : fmin(est + dslip, t_hi);
+                    else
+                        dtau = 0.5 * (t_hi - t);
+                } else if (!first && iters <= RC_STATIC_QUICK)
+                    dtau = fmin(2.0 * dtau, dtout);
                 first = 0;
                 continue;
             }
@@ -2468,6 +2541,17 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                 fail_reason = reason;
                 st = RC_SET(err, RC_ESOLVER, "%s", reason);
                 goto done;
+            }
+            if (slide >= 0) {
+                /* a contact slides: the slip load lies below tn; unless
+                 * this load was already the estimate, try just below the
+                 * estimate (the cut-back where there is none) */
+                t_hi = fmin(t_hi, tn);
+                const double est = from_est ? NAN : slip_estimate(m->ninter, tA, uA, tB, uB);
+                if (est > t && est < t_hi) {
+                    t_try = est - t > 1.5 * dslip ? est - dslip : fmin(est + dslip, t_hi);
+                    continue;
+                }
             }
             dtau *= 0.5;
         }
@@ -2552,6 +2636,8 @@ done:
     free(flips);
     free(slsave);
     free(pfsave);
+    free(uA);
+    free(uB);
     free(cplold);
     free(cplsave);
     return st;

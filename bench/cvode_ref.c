@@ -253,6 +253,14 @@ typedef struct counts {
     long nst, nfe, nfeLS, nje, nsetups, netf, nni, nncf, nge;
 } counts;
 
+/* The integrator's counts, in the lines bench.py reads. */
+static void print_counts(const counts *tot)
+{
+    printf("steps=%ld\nrhs_evals=%ld\njac_evals=%ld\nlin_setups=%ld\nerr_test_fails=%ld\nnewton_iters=%ld\n"
+           "newton_fails=%ld\nroot_evals=%ld\n",
+           tot->nst, tot->nfe + tot->nfeLS, tot->nje, tot->nsetups, tot->netf, tot->nni, tot->nncf, tot->nge);
+}
+
 static void add_counts(void *cv, counts *c)
 {
     long v;
@@ -417,9 +425,7 @@ static int run(long N, double R, double m, double k, double zeta, double gap, in
     }
     printf("case=%s\nstatus=ok\nN=%ld\nrtol=%.3e\nz_scale=%.9e\nv_scale=%.9e\n", settled ? "ramp" : "column", N, rtol,
            c.z_scale, c.v_scale);
-    printf("steps=%ld\nrhs_evals=%ld\njac_evals=%ld\nlin_setups=%ld\nerr_test_fails=%ld\nnewton_iters=%ld\n"
-           "newton_fails=%ld\nroot_evals=%ld\n",
-           tot.nst, tot.nfe + tot.nfeLS, tot.nje, tot.nsetups, tot.netf, tot.nni, tot.nncf, tot.nge);
+    print_counts(&tot);
     printf("events=%ld\ncloses=%ld\nopens=%ld\nroot_returns=%ld\nreinits=%ld\n", events, closes, opens, root_returns,
            reinits);
     printf("wall_time=%.9e\npeak_rss_kb=%ld\n", wall, peak_rss_kb());
@@ -530,33 +536,67 @@ static int ss_root(sunrealtype t, N_Vector Y, sunrealtype *g, void *ud)
     return 0;
 }
 
+/* A CVODE BDF integrator of a 2-state model with a dense matrix: the
+ * stick-slip and the drag, each a block's position and velocity, weighted
+ * absolutely at 1e-3 rtol m and 1e-2 rtol m/s. */
+typedef struct cv2 {
+    SUNContext ctx;
+    N_Vector Y, AT;
+    SUNMatrix A;
+    SUNLinearSolver LS;
+    void *cv;
+} cv2;
+
+static int cv2_open(cv2 *c, CVRhsFn rhs, CVLsJacFn jac, void *ud, double rtol, int nroot, CVRootFn root,
+                    int stablim, double t_end)
+{
+    memset(c, 0, sizeof *c);
+    if (SUNContext_Create(NULL, &c->ctx)) return 5;
+    c->Y = N_VNew_Serial(2, c->ctx);
+    c->AT = N_VNew_Serial(2, c->ctx);
+    double *y = N_VGetArrayPointer(c->Y);
+    y[0] = 0.0;
+    y[1] = 0.0;
+    N_VGetArrayPointer(c->AT)[0] = 1e-3 * rtol;
+    N_VGetArrayPointer(c->AT)[1] = 1e-2 * rtol;
+    c->A = SUNDenseMatrix(2, 2, c->ctx);
+    c->LS = SUNLinSol_Dense(c->Y, c->A, c->ctx);
+    void *cv = c->cv = CVodeCreate(CV_BDF, c->ctx);
+    if (!c->A || !c->LS || !cv) return 5;
+    CK(CVodeInit(cv, rhs, 0.0, c->Y));
+    CK(CVodeSetUserData(cv, ud));
+    CK(CVodeSVtolerances(cv, rtol, c->AT));
+    CK(CVodeSetLinearSolver(cv, c->LS, c->A));
+    CK(CVodeSetJacFn(cv, jac));
+    CK(CVodeSetMaxNumSteps(cv, 100000000L));
+    if (stablim) CK(CVodeSetStabLimDet(cv, SUNTRUE));
+    CK(CVodeRootInit(cv, nroot, root));
+    CK(CVodeSetStopTime(cv, t_end));
+    return 0;
+}
+
+static void cv2_close(cv2 *c)
+{
+    CVodeFree(&c->cv);
+    SUNLinSolFree(c->LS);
+    SUNMatDestroy(c->A);
+    N_VDestroy(c->Y);
+    N_VDestroy(c->AT);
+    SUNContext_Free(&c->ctx);
+}
+
 static int run_stickslip(double m, double ks, double C, double mus, double muk, double v1, double v2, double V,
                          double t_end, double rtol, const char *events_path)
 {
     ssm s = {m, ks, C, mus, muk, v1, v2, V, m * GRAV, 0, 1.0};
     int rf[2] = {0, 0};
     long reinits = 0;
-    SUNContext ctx;
-    if (SUNContext_Create(NULL, &ctx)) return 5;
-    N_Vector Y = N_VNew_Serial(2, ctx), AT = N_VNew_Serial(2, ctx);
+    cv2 c;
+    const int st = cv2_open(&c, ss_rhs, ss_jac, &s, rtol, 2, ss_root, 1, t_end);
+    if (st) return st;
+    void *cv = c.cv;
+    N_Vector Y = c.Y;
     double *y = N_VGetArrayPointer(Y);
-    y[0] = 0.0;
-    y[1] = 0.0;
-    N_VGetArrayPointer(AT)[0] = 1e-3 * rtol;
-    N_VGetArrayPointer(AT)[1] = 1e-2 * rtol;
-    SUNMatrix A = SUNDenseMatrix(2, 2, ctx);
-    SUNLinearSolver LS = SUNLinSol_Dense(Y, A, ctx);
-    void *cv = CVodeCreate(CV_BDF, ctx);
-    if (!A || !LS || !cv) return 5;
-    CK(CVodeInit(cv, ss_rhs, 0.0, Y));
-    CK(CVodeSetUserData(cv, &s));
-    CK(CVodeSVtolerances(cv, rtol, AT));
-    CK(CVodeSetLinearSolver(cv, LS, A));
-    CK(CVodeSetJacFn(cv, ss_jac));
-    CK(CVodeSetMaxNumSteps(cv, 100000000L));
-    CK(CVodeSetStabLimDet(cv, SUNTRUE));
-    CK(CVodeRootInit(cv, 2, ss_root));
-    CK(CVodeSetStopTime(cv, t_end));
     long cap = 1024, nrec = 0, events = 0, slips = 0;
     double *rt = malloc((size_t)cap * sizeof(double)), *rx = malloc((size_t)cap * sizeof(double));
     int *rk = malloc((size_t)cap * sizeof(int));
@@ -615,9 +655,7 @@ static int run_stickslip(double m, double ks, double C, double mus, double muk, 
     printf("cpu_time=%.9e\n", cpu_now() - cpu0);
     add_counts(cv, &tot);
     printf("case=stickslip\nstatus=ok\nrtol=%.3e\n", rtol);
-    printf("steps=%ld\nrhs_evals=%ld\njac_evals=%ld\nlin_setups=%ld\nerr_test_fails=%ld\nnewton_iters=%ld\n"
-           "newton_fails=%ld\nroot_evals=%ld\n",
-           tot.nst, tot.nfe + tot.nfeLS, tot.nje, tot.nsetups, tot.netf, tot.nni, tot.nncf, tot.nge);
+    print_counts(&tot);
     printf("events=%ld\nslips=%ld\nreinits=%ld\nwall_time=%.9e\npeak_rss_kb=%ld\nfinal_x=%.12e\nfinal_u=%.12e\n", events,
            slips, reinits, wall, peak_rss_kb(), y[0], y[1]);
     if (events_path) {
@@ -629,12 +667,7 @@ static int run_stickslip(double m, double ks, double C, double mus, double muk, 
     free(rt);
     free(rx);
     free(rk);
-    CVodeFree(&cv);
-    SUNLinSolFree(LS);
-    SUNMatDestroy(A);
-    N_VDestroy(Y);
-    N_VDestroy(AT);
-    SUNContext_Free(&ctx);
+    cv2_close(&c);
     return 0;
 }
 
@@ -692,26 +725,12 @@ static int run_drag(double m, double kt, double mu, double rate, double t_end, d
                     const char *forces_path)
 {
     dragm d = {m, kt, 2.0 * sqrt(kt * m), rate, mu * m * GRAV};
-    SUNContext ctx;
-    if (SUNContext_Create(NULL, &ctx)) return 5;
-    N_Vector Y = N_VNew_Serial(2, ctx), AT = N_VNew_Serial(2, ctx);
+    cv2 c;
+    const int st = cv2_open(&c, drag_rhs, drag_jac, &d, rtol, 1, drag_root, 0, t_end);
+    if (st) return st;
+    void *cv = c.cv;
+    N_Vector Y = c.Y;
     double *y = N_VGetArrayPointer(Y);
-    y[0] = 0.0;
-    y[1] = 0.0;
-    N_VGetArrayPointer(AT)[0] = 1e-3 * rtol;
-    N_VGetArrayPointer(AT)[1] = 1e-2 * rtol;
-    SUNMatrix A = SUNDenseMatrix(2, 2, ctx);
-    SUNLinearSolver LS = SUNLinSol_Dense(Y, A, ctx);
-    void *cv = CVodeCreate(CV_BDF, ctx);
-    if (!A || !LS || !cv) return 5;
-    CK(CVodeInit(cv, drag_rhs, 0.0, Y));
-    CK(CVodeSetUserData(cv, &d));
-    CK(CVodeSVtolerances(cv, rtol, AT));
-    CK(CVodeSetLinearSolver(cv, LS, A));
-    CK(CVodeSetJacFn(cv, drag_jac));
-    CK(CVodeSetMaxNumSteps(cv, 100000000L));
-    CK(CVodeRootInit(cv, 1, drag_root));
-    CK(CVodeSetStopTime(cv, t_end));
     const long nout = (long)floor(t_end / dt_out + 0.5);
     double *rec_t = malloc((size_t)(nout + 1) * sizeof(double)), *rec_f = malloc((size_t)(nout + 1) * sizeof(double));
     if (!rec_t || !rec_f) return 4;
@@ -740,9 +759,7 @@ static int run_drag(double m, double kt, double mu, double rate, double t_end, d
     memset(&tot, 0, sizeof tot);
     add_counts(cv, &tot);
     printf("case=drag\nstatus=ok\nrtol=%.3e\n", rtol);
-    printf("steps=%ld\nrhs_evals=%ld\njac_evals=%ld\nlin_setups=%ld\nerr_test_fails=%ld\nnewton_iters=%ld\n"
-           "newton_fails=%ld\nroot_evals=%ld\n",
-           tot.nst, tot.nfe + tot.nfeLS, tot.nje, tot.nsetups, tot.netf, tot.nni, tot.nncf, tot.nge);
+    print_counts(&tot);
     printf("events=%d\nreinits=0\nrecords=%ld\nt_slip=%.12e\nwall_time=%.9e\npeak_rss_kb=%ld\n", t_slip >= 0.0, nrec,
            t_slip, wall, peak_rss_kb());
     if (forces_path) {
@@ -753,12 +770,7 @@ static int run_drag(double m, double kt, double mu, double rate, double t_end, d
     }
     free(rec_t);
     free(rec_f);
-    CVodeFree(&cv);
-    SUNLinSolFree(LS);
-    SUNMatDestroy(A);
-    N_VDestroy(Y);
-    N_VDestroy(AT);
-    SUNContext_Free(&ctx);
+    cv2_close(&c);
     return 0;
 }
 

@@ -950,6 +950,31 @@ out:
 }
 
 
+/* A corner that sticks holds the force its spring has. A tilted box
+ * striking a floor (TYPE6 friction per corner, K_t 2.2e10 N/m; a fuzzer
+ * scene): a corner slides with its spring at ~600 N while the impact raises
+ * the limit to 16 400 N; when its sliding along the force stops, the stick
+ * is tested with that state (its stick force within the limit: it sticks),
+ * not with the state put on the limit, where the stick damper's force
+ * across the sliding (~50 N) left it 5e-6 beyond: the corner slid on, its
+ * sliding turned by 90 degrees and stopped again 7 ns later, 200 times
+ * (Zeno at t = 1.19 s). */
+static void test_corner_stick_tested_with_its_spring(void)
+{
+    rc_model *m = TU_LOAD_OK("fuzz/physics/regressions/box_landing_corner_stick_tested_on_limit_zeno.rad");
+    if (!m) return;
+    rc_error e;
+    rc_run_options o;
+    memset(&o, 0, sizeof o);
+    rc_stats st;
+    const rc_status s = rc_run(m, &o, &st, &e);
+    printf("    tilted box landing with friction per corner: %s, %ld events, %ld steps; %s\n", s ? e.msg : "ok",
+           st.events, st.steps, st.physics_note);
+    ENSURE(s == RC_OK);
+    ENSURE(st.events < 200);
+    rc_model_free(m);
+}
+
 /* ---- an elastic law with a damper: hysteresis kept at its releases ---- */
 /* A 1 kg ball dropped at 1 m/s onto a floor, linear law k = 1e6 N/m
  * (Iform 0) with Visc 400 N s/m (zeta 0.2): on each rebound the damper
@@ -1020,6 +1045,7 @@ void suite_passive(void)
     RUN_TEST(test_iform2_reversals_stay_on_the_stiff_line);
     RUN_TEST(test_ball_rolls_onto_incline);
     RUN_TEST(test_slip_waits_for_a_falling_limit);
+    RUN_TEST(test_corner_stick_tested_with_its_spring);
     RUN_TEST(test_power_rdf_root_on_damping_rate);
     RUN_TEST(test_elastic_damped_release_ledger);
     RUN_TEST(test_box_sliding_start_at_every_rtol);

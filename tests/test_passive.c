@@ -975,6 +975,53 @@ static void test_corner_stick_tested_with_its_spring(void)
     rc_model_free(m);
 }
 
+/* The reversal root of a saturated viscous friction law (v_t . d_ref) is
+ * not watched on a zero limit: there the saturated force is zero whatever
+ * the direction, and two balls touching at zero force, sliding at the
+ * velocities' rounding, reversed 200 times within 2e-10 s (a cradle on a
+ * floor, Zeno at rtol 1e-10). When the limit rises from zero the root
+ * takes v_t . d_ref and crosses if the sliding turned: the mode is then
+ * set anew. */
+static const char *viscous_zero_limit_deck =
+    "/BEGIN\nball touching a floor, viscous friction\n      2022         0\n"
+    "                  kg                   m                   s\n"
+    "                  kg                   m                   s\n"
+    "/FUNCT/1\nlinear\n0,0\n1,1000000\n" BALL_ON_FLOOR
+    "/INTER/TYPE6/1\nball on floor\n1,2\n\n\n1,0\n\n\n"
+    "/FRICTION/1\nviscous\n0,0,,1\n\n,0.37,0.8\n"
+    "/RUN\n0.01,0.001\n/END\n";
+
+static void test_viscous_reversal_root_waits_for_a_limit(void)
+{
+    rc_model *m = TU_COMPILE_OK(viscous_zero_limit_deck, "viscous_zero_limit.rad");
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double)), *g = calloc((size_t)rc_root_count(m), sizeof(double));
+    ENSURE(d && y && g && m->ninter == 1 && m->inter_fr[0].form == RC_FF_VISCOUS);
+    if (!d || !y || !g) goto out;
+    rc_initial_state(m, y);
+    double *yb = y + m->body_yadr[0];
+    d->inter_mode[0] = RC_MODE_CLOSED;
+    d->inter_slip[0] = 1; /* saturated, sliding along +x when it saturated */
+    d->inter_dref[0] = 1.0;
+    d->inter_dref[1] = d->inter_dref[2] = 0.0;
+    yb[7] = -1e-17; /* the sliding reversed, at the velocities' rounding */
+    yb[2] = 0.05;   /* touching: no normal force, no limit */
+    rc_assemble_roots(m, d, 0.0, y, g);
+    const double at_zero = g[RC_ROOT_REV];
+    yb[2] = 0.05 - 1e-6; /* pressed 1e-6 m: F_n 1 N, a limit */
+    rc_assemble_roots(m, d, 0.0, y, g);
+    const double pressed = g[RC_ROOT_REV];
+    printf("    reversal root on a zero limit %.3g, with a limit %.3g m/s\n", at_zero, pressed);
+    ENSURE(at_zero > 0);
+    ENSURE(pressed < 0 && fabs(pressed + 1e-17) < 1e-30);
+out:
+    free(y);
+    free(g);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 /* ---- an elastic law with a damper: hysteresis kept at its releases ---- */
 /* A 1 kg ball dropped at 1 m/s onto a floor, linear law k = 1e6 N/m
  * (Iform 0) with Visc 400 N s/m (zeta 0.2): on each rebound the damper
@@ -1046,6 +1093,7 @@ void suite_passive(void)
     RUN_TEST(test_ball_rolls_onto_incline);
     RUN_TEST(test_slip_waits_for_a_falling_limit);
     RUN_TEST(test_corner_stick_tested_with_its_spring);
+    RUN_TEST(test_viscous_reversal_root_waits_for_a_limit);
     RUN_TEST(test_power_rdf_root_on_damping_rate);
     RUN_TEST(test_elastic_damped_release_ledger);
     RUN_TEST(test_box_sliding_start_at_every_rtol);

@@ -1022,6 +1022,105 @@ out:
     rc_model_free(m);
 }
 
+/* A ball over the edge of a box: the edge is rounded by the geometry (the
+ * distance to the solid box), so a ball sliding off a table pivots about
+ * the edge and leaves it where a particle on a circle of radius R does,
+ * cos(theta*) = (v0^2 / (g R) + 2) / 3 from the top at speed v0 (no
+ * friction: the spin plays no part). Before, the top face's infinite plane
+ * held it up beyond the edge until its centre reached the bisector, and the
+ * contact then jumped to the side face. The distance and the normal at an
+ * edge and a corner against the closed forms; the Jacobian there against
+ * central differences. */
+static const char *ball_box_edge_deck =
+    "/BEGIN\nball sliding off the edge of a table\n      2022         0\n"
+    "                  kg                   m                   s\n"
+    "                  kg                   m                   s\n"
+    "/NODE\n1,0.45,0,0.05\n"
+    "/RBODY/1\nball\n1,,,,1.0\n0.001,0.001,0.001\n0,0,0\n"
+    "/GRNOD/NODE/1\nball\n1\n"
+    "/SURF/ELLIPS/1\nball\n0,2,1\n0.45,0,0.05\n0.05,0.05,0.05\n"
+    "/SURF/BOX/2\ntable\n0\n0,0,-0.5\n0.5,0.5,0.5\n1,0,0\n0,1,0\n"
+    "/FUNCT/1\nlinear\n0,0\n1,10000000\n"
+    "/INTER/TYPE6/1\nball on table\n1,2\n\n\n1,0\n\n2000\n"
+    "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"
+    "/INIVEL/TRA/1\nv0\n0.3,0,0,1,0\n"
+    "/RUN\n0.6,0.01\n/END\n";
+
+static void test_ball_pivots_over_a_box_edge(void)
+{
+    rc_model *m = TU_COMPILE_OK(ball_box_edge_deck, "ball_box_edge.rad");
+    if (!m) return;
+    ENSURE(m->inter_pair[0] == RC_PAIR_SPHERE_BOX);
+    /* geometry at an edge (x and z beyond the half-sizes) and a corner */
+    {
+        rc_data *d = rc_data_new(m);
+        double *y = calloc((size_t)m->ny, sizeof(double));
+        ENSURE(d && y);
+        if (d && y) {
+            rc_initial_state(m, y);
+            double *yb = y + m->body_yadr[0], y0[3];
+            const double x0[3] = {0.45, 0.0, 0.05}; /* the state is about the model's origin */
+            for (int k = 0; k < 3; k++) y0[k] = yb[k];
+            const double cs[2][3] = {{0.53, 0.1, 0.04}, {0.53, 0.52, 0.035}};
+            for (int c = 0; c < 2; c++) {
+                for (int k = 0; k < 3; k++) yb[k] = y0[k] + cs[c][k] - x0[k];
+                yb[7] = 0.2;
+                yb[9] = -0.1;
+                rc_inter_report r;
+                rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+                const double w[3] = {0.03, c ? 0.02 : 0.0, cs[c][2]}, nw = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+                printf("    %s: P %.15g m (closed form %.15g), normal (%.6f %.6f %.6f)\n", c ? "corner" : "edge", r.p,
+                       0.05 - nw, r.normal[0], r.normal[1], r.normal[2]);
+                ENSURE_NEAR(r.p, 0.05 - nw, 0, 1e-15);
+                for (int k = 0; k < 3; k++) ENSURE_NEAR(r.normal[k], -w[k] / nw, 0, 1e-15);
+                ENSURE_NEAR(r.vn, -(0.2 * w[0] - 0.1 * w[2]) / nw, 0, 1e-15);
+                d->inter_mode[0] = RC_MODE_CLOSED;
+                int bad = 0;
+                int outside = 0;
+                const double err = tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside);
+                printf("    %s: Jacobian against central differences %.3g (bad %d)\n", c ? "corner" : "edge", err, bad);
+                ENSURE(bad == 0);
+            }
+        }
+        free(y);
+        rc_data_free(d);
+    }
+    tu_evlog ev;
+    memset(&ev, 0, sizeof ev);
+    rc_error e;
+    rc_run_options o;
+    memset(&o, 0, sizeof o);
+    o.on_event = tu_evlog_event;
+    o.user = &ev;
+    rc_stats st;
+    rc_status s = rc_run(m, &o, &st, &e);
+    if (s) printf("    %s\n", e.msg);
+    ENSURE(s == RC_OK);
+    double tsep = NAN;
+    for (int k = 0; k < ev.n && k < TU_MAXEV; k++)
+        if (!strcmp(ev.kind[k], "contact_separate") || !strcmp(ev.kind[k], "contact_open")) {
+            tsep = ev.t[k];
+            break;
+        }
+    ENSURE(isfinite(tsep));
+    if (isfinite(tsep)) {
+        double y[64];
+        memset(&o, 0, sizeof o);
+        o.y_end = y;
+        o.t_end_override = tsep;
+        s = rc_run(m, &o, &st, &e);
+        ENSURE(s == RC_OK);
+        double b[13];
+        ENSURE(rc_model_body_state(m, y, 1, b, &e) == RC_OK);
+        const double dx = b[0] - 0.5, dz = b[2], rr = hypot(dx, dz), v0 = 0.3, g = 9.81;
+        const double want = (v0 * v0 / (g * rr) + 2.0) / 3.0;
+        printf("    the ball leaves the edge at t = %.6f s, cos(theta) = %.6f (closed form %.6f), |c - edge| %.9f m\n",
+               tsep, dz / rr, want, rr);
+        ENSURE(fabs(dz / rr - want) < 2e-3);
+    }
+    rc_model_free(m);
+}
+
 /* ---- an elastic law with a damper: hysteresis kept at its releases ---- */
 /* A 1 kg ball dropped at 1 m/s onto a floor, linear law k = 1e6 N/m
  * (Iform 0) with Visc 400 N s/m (zeta 0.2): on each rebound the damper
@@ -1094,6 +1193,7 @@ void suite_passive(void)
     RUN_TEST(test_slip_waits_for_a_falling_limit);
     RUN_TEST(test_corner_stick_tested_with_its_spring);
     RUN_TEST(test_viscous_reversal_root_waits_for_a_limit);
+    RUN_TEST(test_ball_pivots_over_a_box_edge);
     RUN_TEST(test_power_rdf_root_on_damping_rate);
     RUN_TEST(test_elastic_damped_release_ledger);
     RUN_TEST(test_box_sliding_start_at_every_rtol);

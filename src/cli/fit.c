@@ -726,6 +726,7 @@ static void print_report(FILE *o, const fit_problem *fp, const fit_stats *S, con
                "simulations (%ld failed), %.3f s wall (%.3f s of simulation over %d thread%s)\n",
             iters, nfev, njev, fp->central ? "central" : "forward", fp->h, fp->nsim, fp->nsim_failed, wall, fp->sim_wall,
             nth, nth > 1 ? "s" : "");
+    if (fp->nsim_failed > 0) fprintf(o, "first failed simulation: %s\n", fp->first_failure);
     fprintf(o, "the deck with the fitted values: ricochet run %s", fp->deck);
     for (int k = 0; k < fp->nset; k++) fprintf(o, " --set %s", fp->set[k]);
     for (int j = 0; j < fp->np; j++)

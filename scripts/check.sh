@@ -28,6 +28,13 @@ cat "$log"
 pass=$((pass + $(grep -c '^PASS ' "$log")))
 fail=$((fail + $(grep -c '^FAIL ' "$log")))
 
+# ricochet fit: a small fit, the report, the data file's input errors
+# (tests/fit_test.sh)
+bash tests/fit_test.sh "$build/ricochet" > "$log" 2>&1
+cat "$log"
+pass=$((pass + $(grep -c '^PASS ' "$log")))
+fail=$((fail + $(grep -c '^FAIL ' "$log")))
+
 # animations of results files (scripts/animate.py): frames, exit codes
 bash tests/animate_test.sh "$build/ricochet" > "$log" 2>&1
 cat "$log"

@@ -450,7 +450,15 @@ static int build_set(const fit_problem *fp, const double *p, const char **set, c
     int n = 0;
     for (int k = 0; k < fp->nset; k++) set[n++] = fp->set[k];
     for (int j = 0; j < fp->np; j++) {
-        snprintf(buf[j], sizeof buf[j], "%s=%.17g", fp->par[j].name, p[j]);
+        /* the shortest decimal that reads back as p[j] */
+        int prec = 6;
+        while (prec < 17) {
+            char t[64];
+            snprintf(t, sizeof t, "%.*g", prec, p[j]);
+            if (strtod(t, NULL) == p[j]) break;
+            prec++;
+        }
+        snprintf(buf[j], sizeof buf[j], "%s=%.*g", fp->par[j].name, prec, p[j]);
         set[n++] = buf[j];
     }
     return n;
@@ -687,9 +695,20 @@ static void print_report(FILE *o, const fit_problem *fp, const fit_stats *S, con
             const char *why = S->unident[j] == 1   ? "the signals do not depend on it (its column of the Jacobian is zero)"
                               : S->unident[j] == 2 ? "the Jacobian is rank-deficient: a combination of the others"
                                                    : "relative standard error above the limit";
-            if (S->unident[j] == 3)
-                fprintf(o, "    UNIDENTIFIABLE: relative standard error %.3g > %g (--max-rse); left at %.10g\n",
-                        S->rse[j], max_rse, S->p[j]);
+            if (S->unident[j] == 3) {
+                /* the parameter it is most correlated with: the data may fix
+                 * a combination of the two */
+                int jb = -1;
+                for (int b = 0; b < fp->np; b++)
+                    if (b != j && isfinite(S->corr[j][b]) && (jb < 0 || fabs(S->corr[j][b]) > fabs(S->corr[j][jb])))
+                        jb = b;
+                char with[400] = "";
+                if (jb >= 0 && fabs(S->corr[j][jb]) > 0.99)
+                    snprintf(with, sizeof with, "; correlation %.6f with %s: the data fix a combination of the two",
+                             S->corr[j][jb], fp->par[jb].name);
+                fprintf(o, "    UNIDENTIFIABLE: relative standard error %.3g > %g (--max-rse)%s; left at %.10g\n",
+                        S->rse[j], max_rse, with, S->p[j]);
+            }
             else fprintf(o, "    UNIDENTIFIABLE: %s; left at %.10g\n", why, S->p[j]);
         } else {
             fprintf(o, "    fitted %.10g  standard error %.4g (%.3g %%)  95%% interval [%.10g, %.10g]\n", S->p[j],
@@ -697,11 +716,11 @@ static void print_report(FILE *o, const fit_problem *fp, const fit_stats *S, con
         }
     }
     if (fp->np > 1) {
-        fprintf(o, "correlation matrix (identifiable parameters, in the order above):\n");
+        fprintf(o, "correlation matrix (in the order above; '-': a parameter without covariance):\n");
         for (int a = 0; a < fp->np; a++) {
             fprintf(o, "  ");
             for (int b = 0; b < fp->np; b++) {
-                if (S->unident[a] || S->unident[b]) fprintf(o, " %8s", "-");
+                if (!isfinite(S->corr[a][b])) fprintf(o, " %8s", "-");
                 else fprintf(o, " %8.4f", S->corr[a][b]);
             }
             fprintf(o, "\n");
@@ -946,7 +965,9 @@ int rc_cli_fit(int argc, char **argv)
         if (!st && fp->rtol > 0) st = rc_model_set_rtol(m, fp->rtol, &e);
         if (!st && fp->method > 0) st = rc_model_set_method(m, fp->method, &e);
         if (st) {
-            fprintf(stderr, "ricochet fit: %s: %s\n", rc_status_str(e.code), e.msg);
+            fprintf(stderr, "ricochet fit: %s: %s\n%s", rc_status_str(e.code), e.msg,
+                    !strncmp(e.msg, "--set ", 6) ? "ricochet fit: (the start values of --free and --log are read "
+                                                   "as --set overrides)\n" : "");
             rc = rc_status_exit_code(st);
         }
         for (int k = 0; k < fp->ns && !rc; k++) {

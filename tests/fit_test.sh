@@ -33,9 +33,9 @@ with open(sys.argv[2], "w") as f:
         f.write(f"{ti * 1e3:.12g}, {xi * 1e3:.12g}, {'' if k % 3 else '%.12g' % (1.0 - 0.3 * 9.81 * min(ti, 1 / 2.943))}\n")
 PY
 (cd "$tmp" && "$OLDPWD/$bin" fit "$OLDPWD/$slide" --data slide.csv --free $free -o report.txt -q > out.txt 2> err.txt); rc=$?
-if grep -q "status: converged" "$tmp/out.txt" && grep -qE "fitted 0.(2999999|3000000)" "$tmp/out.txt" && cmp -s "$tmp/out.txt" <(cat "$tmp/report.txt"; echo "measured against fitted signals: slide_fit.csv") &&
+if grep -q "status: converged" "$tmp/out.txt" && grep -qE "fitted 0\.(3 |2999999|3000000)" "$tmp/out.txt" && cmp -s "$tmp/out.txt" <(cat "$tmp/report.txt"; echo "measured against fitted signals: slide_fit.csv") &&
    [ -s "$tmp/slide_fit.csv" ] && head -1 "$tmp/slide_fit.csv" | grep -q "^t \[ms\], measured body 1 x \[mm\], fitted body 1 x \[mm\], measured body 1 vx \[m/s\], fitted body 1 vx \[m/s\]$" &&
-   grep -qE "the deck with the fitted values: ricochet run .*--set /INTER/TYPE6/1:Fric=0.(2999999|3000000)" "$tmp/out.txt"; then
+   grep -qE "the deck with the fitted values: ricochet run .*--set /INTER/TYPE6/1:Fric=0\.(3$|2999999|3000000)" "$tmp/out.txt"; then
     expect slide 0 $rc "($(grep -m1 "fitted" "$tmp/out.txt" | sed 's/^ *//'); $(grep -o '^cost: [0-9]* iterations' "$tmp/out.txt"))"
 else expect slide 0 99 "(exit $rc: $(head -c 600 "$tmp/out.txt") $(head -c 300 "$tmp/err.txt"))"; fi
 # a blank cell is no measurement: 26 times, 26 + 9 values

@@ -13,8 +13,12 @@
  *    scale the signal's measured range (max - min; 1 unit when flat), so
  *    that signals of different units weigh alike. Blank cells are not
  *    measured and give no residual.
- *  - Solver: GSL gsl_multifit_nlinear, trust region, Levenberg-Marquardt
- *    without geodesic acceleration. The fitted variables u are dimensionless:
+ *  - Solver: GSL gsl_multifit_nlinear, trust region, double dogleg by
+ *    default (--trs): its steps stay inside the trust radius, whereas GSL's
+ *    Levenberg-Marquardt (no geodesic acceleration; --trs lm) bounds them
+ *    by its damping parameter only and, from a start 5x off, stepped the
+ *    damping of a drop to 1e5 times its value, where the ball sticks and
+ *    the signal no longer depends on the parameters. The fitted variables u are dimensionless:
  *    p = start + |start| u (free), p = start exp(u) (--log), and with bounds
  *    p = lo + (hi - lo) (1 + tanh u) / 2 (in log p for --log), so that
  *    every trial lies inside the bounds.
@@ -32,6 +36,7 @@
 #include "cli/fit.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <pthread.h>
 #include <stdio.h>
@@ -105,6 +110,8 @@ typedef struct {
     int central;          /* 1: central differences                     */
     int jobs;             /* threads of the Jacobian                    */
     int quiet;
+    int trs;              /* 0 double dogleg, 1 LM, 2 dogleg, 3 2-D subspace */
+    FILE *progress;       /* the program's stderr while the library's is muted */
     /* counters and the first failure, shared by the threads */
     pthread_mutex_t lock;
     long nsim, nsim_failed;
@@ -659,10 +666,12 @@ static void fit_callback(const size_t iter, void *params, const gsl_multifit_nli
     gsl_vector *f = gsl_multifit_nlinear_residual(w);
     gsl_vector *x = gsl_multifit_nlinear_position(w);
     double chi = gsl_blas_dnrm2(f);
-    fprintf(stderr, "ricochet fit: iteration %zu: residual RMS %.6g,", iter, chi / sqrt((double)fp->nres));
+    FILE *o = fp->progress ? fp->progress : stderr;
+    fprintf(o, "ricochet fit: iteration %zu: residual RMS %.6g,", iter, chi / sqrt((double)fp->nres));
     for (int j = 0; j < fp->np; j++)
-        fprintf(stderr, " %s=%.6g", fp->par[j].name, par_value(&fp->par[j], gsl_vector_get(x, (size_t)j), NULL));
-    fprintf(stderr, "\n");
+        fprintf(o, " %s=%.6g", fp->par[j].name, par_value(&fp->par[j], gsl_vector_get(x, (size_t)j), NULL));
+    fprintf(o, "\n");
+    fflush(o);
 }
 
 /* ---- the report -------------------------------------------------------- */
@@ -792,7 +801,7 @@ static void usage_fit(FILE *f)
     fprintf(f,
             "usage: ricochet fit CASE --data FILE.csv --free CARD:FIELD=START[,LO:HI] [--free ...] [options]\n"
             "Fit numeric fields of the case (addressed as by --set) so that the simulated signals match the\n"
-            "measured ones: nonlinear least squares (GSL, trust region, Levenberg-Marquardt), the Jacobian by\n"
+            "measured ones: nonlinear least squares (GSL, trust region: double dogleg), the Jacobian by\n"
             "finite differences evaluated in parallel (docs/calibration.md).\n"
             "  --data FILE.csv       measured signals: a header 't [s], body 1 z [m], body 1 vx [m/s], ...'\n"
             "                        (time in s or ms; x, y, z in m or mm; vx, vy, vz in m/s or mm/s), then one\n"
@@ -807,6 +816,9 @@ static void usage_fit(FILE *f)
             "  --fitted FILE.csv     measured against fitted signals (default: the data file's stem + _fit.csv,\n"
             "                        in the current directory)\n"
             "  --rtol R              relative tolerance of the simulations, instead of /SOLVER Rtol\n"
+            "  --trs METHOD          trust-region method of GSL: ddogleg (default: double dogleg), dogleg,\n"
+            "                        subspace2D, or lm (Levenberg-Marquardt, whose steps the trust radius does not\n"
+            "                        bound: from a poor start it may leave for a flat region)\n"
             "  --method M            integration backend of the simulations: cvode (1) or ida (2), instead of\n"
             "                        /SOLVER Method\n"
             "  --max-iter N          at most N iterations (default 100)\n"
@@ -891,6 +903,13 @@ int rc_cli_fit(int argc, char **argv)
             fp->method = !strcmp(v, "cvode") || !strcmp(v, "1") ? 1 : !strcmp(v, "ida") || !strcmp(v, "2") ? 2 : -1;
             if (fp->method < 0) {
                 fprintf(stderr, "ricochet fit: --method: expected cvode or ida (or 1, 2), got %s\n", v);
+                return 2;
+            }
+        } else if (is_opt(a, "--trs")) {
+            if (!(v = opt_value(argc, argv, &k, a, "--trs"))) return 2;
+            fp->trs = !strcmp(v, "ddogleg") ? 0 : !strcmp(v, "lm") ? 1 : !strcmp(v, "dogleg") ? 2 : !strcmp(v, "subspace2D") ? 3 : -1;
+            if (fp->trs < 0) {
+                fprintf(stderr, "ricochet fit: --trs: expected ddogleg, dogleg, subspace2D or lm, got %s\n", v);
                 return 2;
             }
         } else if (is_opt(a, "--data")) {
@@ -987,7 +1006,10 @@ int rc_cli_fit(int argc, char **argv)
         const size_t n = (size_t)fp->nres, p = (size_t)fp->np;
         gsl_multifit_nlinear_fdf fdf;
         gsl_multifit_nlinear_parameters fpar = gsl_multifit_nlinear_default_parameters();
-        fpar.trs = gsl_multifit_nlinear_trs_lm; /* Levenberg-Marquardt, no geodesic acceleration */
+        fpar.trs = fp->trs == 1   ? gsl_multifit_nlinear_trs_lm
+                   : fp->trs == 2 ? gsl_multifit_nlinear_trs_dogleg
+                   : fp->trs == 3 ? gsl_multifit_nlinear_trs_subspace2D
+                                  : gsl_multifit_nlinear_trs_ddogleg;
         fdf.f = fit_f;
         fdf.df = fit_df;
         fdf.fvv = NULL;
@@ -1014,6 +1036,14 @@ int rc_cli_fit(int argc, char **argv)
         }
         for (int j = 0; j < fp->np; j++) gsl_vector_set(x0, (size_t)j, u0[j]);
         gsl_multifit_nlinear_init(x0, &fdf, w);
+        /* the integrator's warnings of the trial simulations (a trial far
+         * from the answer may be hard to integrate) are not shown: the
+         * library's stderr goes to /dev/null during the iterations, the
+         * progress lines to the program's own */
+        fflush(stderr);
+        const int saved = dup(2), devnull = open("/dev/null", O_WRONLY);
+        if (saved >= 0 && devnull >= 0 && (fp->progress = fdopen(saved, "w")) != NULL) dup2(devnull, 2);
+        if (devnull >= 0) close(devnull);
         int info = 0;
         int gst = gsl_multifit_nlinear_driver((size_t)max_iter, 1e-8, 1e-8, 1e-12, fit_callback, fp, &info, w);
         char status[512];
@@ -1066,7 +1096,17 @@ int rc_cli_fit(int argc, char **argv)
         /* the signals at the solution, for the report and the CSV */
         double ufin[RC_FIT_MAX_PAR];
         for (size_t j = 0; j < p; j++) ufin[j] = gsl_vector_get(xs, j);
-        if (residuals(fp, ufin, r, sim)) {
+        const rc_status fin = residuals(fp, ufin, r, sim);
+        /* the program's stderr back */
+        if (fp->progress) {
+            fflush(fp->progress);
+            dup2(fileno(fp->progress), 2);
+            fclose(fp->progress);
+            fp->progress = NULL;
+        } else if (saved >= 0) {
+            close(saved);
+        }
+        if (fin) {
             fprintf(stderr, "ricochet fit: the simulation at the fitted values failed: %s\n", fp->first_failure);
             rc = 3;
             goto free_fit;

@@ -778,12 +778,12 @@ static int write_fitted(const char *path, const fit_problem *fp, const double *s
     }
     fprintf(f, "\n");
     for (int i = 0; i < fp->nt; i++) {
-        fprintf(f, "%.17g", fp->t[i] / fp->t_to_si);
+        fprintf(f, "%.15g", fp->t[i] / fp->t_to_si);
         for (int s = 0; s < fp->ns; s++) {
             const double mv = fp->meas[(size_t)i * (size_t)fp->ns + (size_t)s];
             if (isnan(mv)) fprintf(f, ",");
-            else fprintf(f, ",%.17g", mv / fp->sig[s].to_si);
-            fprintf(f, ",%.17g", sim[(size_t)i * (size_t)fp->ns + (size_t)s] / fp->sig[s].to_si);
+            else fprintf(f, ",%.15g", mv / fp->sig[s].to_si);
+            fprintf(f, ",%.15g", sim[(size_t)i * (size_t)fp->ns + (size_t)s] / fp->sig[s].to_si);
         }
         fprintf(f, "\n");
     }

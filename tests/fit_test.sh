@@ -45,6 +45,11 @@ grep -q "26 times from 0 to 0.5 s, 2 signals, 35 measured values" "$tmp/out.txt"
 "$bin" fit "$slide" --data "$tmp/slide.csv" --free $free --max-iter 1 -q --fitted "$tmp/f1.csv" > "$tmp/o" 2>&1; rc=$?
 grep -q "NOT CONVERGED within 1 iterations" "$tmp/o" && expect not_converged 1 $rc "" || expect not_converged 1 99 "($(head -c 300 "$tmp/o"))"
 
+# a parameter pushed to its bound (mu = 0.3 measured, kept below 0.1): UNIDENTIFIABLE, no number
+"$bin" fit "$slide" --data "$tmp/slide.csv" --free /INTER/TYPE6/1:Fric=0.05,0:0.1 -q --fitted "$tmp/fb.csv" > "$tmp/o" 2>&1; rc=$?
+grep -q "UNIDENTIFIABLE: at its bound HI = 0.1 " "$tmp/o" && ! grep -q -- "--set /INTER/TYPE6/1:Fric" "$tmp/o" &&
+    expect at_bound 0 $rc "($(grep -m1 UNIDENTIFIABLE "$tmp/o" | sed 's/^ *//'))" || expect at_bound 0 99 "(exit $rc: $(head -c 400 "$tmp/o"))"
+
 # input errors: exit 2, the message, nothing written
 bad() { # name, expected message (grep -E), the data file's text, extra options...
     local name=$1 msg=$2 text=$3

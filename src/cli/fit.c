@@ -62,6 +62,10 @@
 /* a column of J below this fraction of the largest column's norm: the data
  * do not see the parameter */
 #define RC_FIT_COLUMN_TOL 1e-9
+/* a bounded parameter whose tanh map has flattened below this slope
+ * (1 - tanh^2 u = 4 s (1 - s), s its relative place between the bounds:
+ * within 0.1 % of the range from a bound) sits at its bound */
+#define RC_FIT_AT_BOUND 4e-3
 /* rank test of the covariance (gsl_multifit_nlinear_covar epsrel) */
 #define RC_FIT_RANK_TOL 1e-9
 /* residual of a trial whose simulation failed (the step is then rejected:
@@ -678,7 +682,7 @@ static void fit_callback(const size_t iter, void *params, const gsl_multifit_nli
 
 typedef struct {
     double p[RC_FIT_MAX_PAR], se[RC_FIT_MAX_PAR], lo95[RC_FIT_MAX_PAR], hi95[RC_FIT_MAX_PAR];
-    int unident[RC_FIT_MAX_PAR]; /* 0 identified; 1 zero column; 2 rank; 3 rse */
+    int unident[RC_FIT_MAX_PAR]; /* 0 identified; 1 zero column; 2 rank; 3 rse; 4 at a bound */
     double rse[RC_FIT_MAX_PAR];
     double corr[RC_FIT_MAX_PAR][RC_FIT_MAX_PAR];
     double rms_all, tq;
@@ -704,7 +708,11 @@ static void print_report(FILE *o, const fit_problem *fp, const fit_stats *S, con
             const char *why = S->unident[j] == 1   ? "the signals do not depend on it (its column of the Jacobian is zero)"
                               : S->unident[j] == 2 ? "the Jacobian is rank-deficient: a combination of the others"
                                                    : "relative standard error above the limit";
-            if (S->unident[j] == 3) {
+            if (S->unident[j] == 4) {
+                const int hi = S->p[j] > 0.5 * (q->lo + q->hi);
+                fprintf(o, "    UNIDENTIFIABLE: at its bound %s = %g (the data push it beyond; widen the bounds or "
+                           "fix it); left at %.10g\n", hi ? "HI" : "LO", hi ? q->hi : q->lo, S->p[j]);
+            } else if (S->unident[j] == 3) {
                 /* the parameter it is most correlated with: the data may fix
                  * a combination of the two */
                 int jb = -1;
@@ -1082,7 +1090,9 @@ int rc_cli_fit(int argc, char **argv)
             const double cu = gsl_matrix_get(covar, j, j);
             S.se[j] = fabs(dpdu[j]) * sqrt(fmax(cu, 0.0) * s2);
             S.rse[j] = S.p[j] != 0 ? S.se[j] / fabs(S.p[j]) : INFINITY;
-            if (!(col[j] > RC_FIT_COLUMN_TOL * colmax)) S.unident[j] = 1;
+            const double th = tanh(gsl_vector_get(xs, j));
+            if (fp->par[j].bounded && 1.0 - th * th < RC_FIT_AT_BOUND) S.unident[j] = 4;
+            else if (!(col[j] > RC_FIT_COLUMN_TOL * colmax)) S.unident[j] = 1;
             else if (!(cu > 0)) S.unident[j] = 2;
             else if (!(S.rse[j] <= max_rse)) S.unident[j] = 3;
             S.lo95[j] = S.p[j] - S.tq * S.se[j];

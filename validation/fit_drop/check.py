@@ -14,6 +14,11 @@ factor 3 away from the answer. Checked:
 (b) slide.rad: a block launched at 1 m/s and stopped by Coulomb friction,
     x(t) every 5 ms with 0.5 mm noise, in a file in ms and mm: Fric
     recovered within its 95 % interval and within 2 %.
+(d) power.rad: the same drop on an /INTER/POWER floor F = K P^m1 +
+    C v P^m3 (Hunt-Crossley damping, fixed), z(t) every 1 ms: K
+    (log-scaled) and m1 (bounded to 1..2.5) within their 95 % intervals; m1
+    within 2 %; K, which trades off against m1 (correlation 0.999), within
+    15 %, and the force at the peak penetration, K P^m1, within 2 %.
 (c) slide.rad with Fric and the static friction force Sfric both free: on a
     flat floor the friction force is Sfric + Fric m g, so only that sum is
     seen; both are reported UNIDENTIFIABLE (correlation -1), not returned
@@ -35,10 +40,11 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 G, M = 9.81, 1.0
 K_TRUE, C_TRUE, MU_DROP = 2.0e4, 30.0, 0.2     # drop.rad: N/m, N s/m, -
 MU_TRUE = 0.3                                   # slide.rad
+KP_TRUE, M1_TRUE, P_PEAK = 6.0e5, 1.5, 0.0087584  # power.rad: N/m^m1, -, peak penetration [m]
 SIGMA = 5e-4                                    # noise standard deviation [m]
 # one seed per measurement; over seeds 0..29 the true values fell inside the
 # reported 95 % intervals in 29 of 30 fits for each parameter (README.md)
-SEED_DROP, SEED_SLIDE = 1, 2
+SEED_DROP, SEED_SLIDE, SEED_POWER = 1, 2, 3
 # the decks' own tolerance, tight enough that the integrator's error (rtol
 # 1e-9 of the signals) stays far below the noise; ricochet's default (1e-8)
 # in the defaults mode
@@ -150,6 +156,26 @@ def main():
     rcval.check("fit_drop.slide_fitted_csv", f.shape == (len(t), 3) and 0.7 * SIGMA < rms < 1.3 * SIGMA,
                 f"measured against fitted x: RMS {rms:.3g} m, noise {SIGMA:g} m")
 
+    # (d) power law: K and m1 from z(t)
+    t, x = simulate("power.rad", [f"/INTER/POWER/1:K={KP_TRUE:g}", f"/INTER/POWER/1:m1={M1_TRUE:g}"], 0.001)
+    data_p = os.path.join(rcval.tmpdir(), "power.csv")
+    write_csv(data_p, "t [s], body 1 z [m]", t, x[:, 2], np.random.default_rng(SEED_POWER))
+    rc, rep, wall, _ = fit("power.rad", data_p, [("--log", f"/INTER/POWER/1:K={3 * KP_TRUE:g}"),
+                                                ("--free", "/INTER/POWER/1:m1=1.2,1:2.5")])
+    p = parameters(rep)
+    rcval.check("fit_drop.power_converged", rc == 0 and "status: converged" in rep,
+                f"{len(t)} samples of z, K started 3x off, m1 at 1.2: {cost(rep)}, {wall:.2f} s wall")
+    recovered("fit_drop.power_exponent", p.get("/INTER/POWER/1:m1"), M1_TRUE)
+    recovered("fit_drop.power_stiffness", p.get("/INTER/POWER/1:K"), KP_TRUE, tol=0.15)
+    kp, mp = p.get("/INTER/POWER/1:K"), p.get("/INTER/POWER/1:m1")
+    if isinstance(kp, tuple) and isinstance(mp, tuple):
+        f_fit, f_true = kp[0] * P_PEAK ** mp[0], KP_TRUE * P_PEAK ** M1_TRUE
+        rcval.check("fit_drop.power_peak_force", abs(f_fit - f_true) < 0.02 * f_true,
+                    f"K P^m1 at the peak penetration {P_PEAK * 1e3:.2f} mm: {f_fit:.1f} N, true {f_true:.1f} N, "
+                    f"error {abs(f_fit - f_true) / f_true:.2e} (< 0.02)")
+    else:
+        rcval.check("fit_drop.power_peak_force", False, f"K {kp}, m1 {mp}")
+
     # (c) Fric and Sfric together: only Sfric + Fric m g is seen
     rc, rep, wall, _ = fit("slide.rad", data, [("--free", f"/INTER/TYPE6/1:Fric={MU_TRUE / 3:g},0:1"),
                                                 ("--free", "/INTER/TYPE6/1:Sfric=0.5,0:5")])
@@ -176,6 +202,10 @@ def coverage(n=30):
              [f"/INTER/TYPE6/1:FscaleId={K_TRUE:g}", f"/INTER/TYPE6/1:Visc={C_TRUE:g}"],
              [("--log", f"/INTER/TYPE6/1:FscaleId={3 * K_TRUE:g}"), ("--log", f"/INTER/TYPE6/1:Visc={C_TRUE / 3:g}")],
              {"/INTER/TYPE6/1:FscaleId": K_TRUE, "/INTER/TYPE6/1:Visc": C_TRUE}),
+            ("power.rad", 2, "t [s], body 1 z [m]", 1.0, 0.001,
+             [f"/INTER/POWER/1:K={KP_TRUE:g}", f"/INTER/POWER/1:m1={M1_TRUE:g}"],
+             [("--log", f"/INTER/POWER/1:K={3 * KP_TRUE:g}"), ("--free", "/INTER/POWER/1:m1=1.2,1:2.5")],
+             {"/INTER/POWER/1:K": KP_TRUE, "/INTER/POWER/1:m1": M1_TRUE}),
             ("slide.rad", 0, "t [ms], body 1 x [mm]", 1e-3, 0.005, [f"/INTER/TYPE6/1:Fric={MU_TRUE:g}"],
              [("--free", f"/INTER/TYPE6/1:Fric={MU_TRUE / 3:g},0:1")], {"/INTER/TYPE6/1:Fric": MU_TRUE})]
     for deck, axis, header, unit, dt, sets, free, truth in runs:

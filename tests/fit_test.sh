@@ -38,6 +38,12 @@ if grep -q "status: converged" "$tmp/out.txt" && grep -qE "fitted 0\.(3 |2999999
    grep -qE "the deck with the fitted values: ricochet run .*--set /INTER/TYPE6/1:Fric=0\.(3$|2999999|3000000)" "$tmp/out.txt"; then
     expect slide 0 $rc "($(grep -m1 "fitted" "$tmp/out.txt" | sed 's/^ *//'); $(grep -o '^cost: [0-9]* iterations' "$tmp/out.txt"))"
 else expect slide 0 99 "(exit $rc: $(head -c 600 "$tmp/out.txt") $(head -c 300 "$tmp/err.txt"))"; fi
+# the same fit again: the same report (the threads' results are placed by
+# column, not by arrival), but for the wall times
+(cd "$tmp" && "$OLDPWD/$bin" fit "$OLDPWD/$slide" --data slide.csv --free $free -q --jobs 3 --fitted f2.csv > out2.txt 2>&1)
+if diff <(grep -v '^cost:' "$tmp/out.txt" | sed 's/slide_fit.csv/X/') <(grep -v '^cost:' "$tmp/out2.txt" | sed 's/f2.csv/X/') > /dev/null &&
+    cmp -s "$tmp/slide_fit.csv" "$tmp/f2.csv"; then echo "PASS fit.deterministic: the same report and fitted signals with 3 threads"
+else echo "FAIL fit.deterministic: $(diff "$tmp/out.txt" "$tmp/out2.txt" | head -c 300)"; fi
 # a blank cell is no measurement: 26 times, 26 + 9 values
 grep -q "26 times from 0 to 0.5 s, 2 signals, 35 measured values" "$tmp/out.txt" && echo "PASS fit.blank_cells: blank cells not measured (35 values)" ||
     echo "FAIL fit.blank_cells: $(grep -m1 '^data:' "$tmp/out.txt")"

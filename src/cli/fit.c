@@ -39,6 +39,7 @@
 #include <fcntl.h>
 #include <math.h>
 #include <pthread.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -865,6 +866,13 @@ static int is_opt(const char *a, const char *name)
 int rc_cli_fit(int argc, char **argv)
 {
     gsl_set_error_handler_off();
+    /* a fit writes nothing before its end: SIGINT, SIGTERM and SIGHUP end
+     * it at once (the program's handlers, meant for a run that closes its
+     * results file, would wait for a second signal) */
+    signal(SIGINT, SIG_DFL);
+    signal(SIGTERM, SIG_DFL);
+    struct sigaction old_hup;
+    if (sigaction(SIGHUP, NULL, &old_hup) == 0 && old_hup.sa_handler != SIG_IGN) signal(SIGHUP, SIG_DFL);
     static fit_problem P; /* large; one per process */
     fit_problem *fp = &P;
     memset(fp, 0, sizeof *fp);

@@ -111,6 +111,8 @@ py_suite() {
     fi
 }
 py_suite pyrun tests/python_run_test.py
+# ricochet.fit: the program's `ricochet fit` from Python (its JSON report)
+py_suite pyfit tests/python_fit_test.py
 
 # studies on a real Dask cluster: a scheduler and two worker processes
 # started by the test (killed at its end), results against serial runs bit

@@ -771,6 +771,123 @@ static void print_report(FILE *o, const fit_problem *fp, const fit_stats *S, con
     fprintf(o, "\n");
 }
 
+/* A JSON string (the names and messages here hold no control characters
+ * but may hold quotes and backslashes). */
+static void json_str(FILE *o, const char *t)
+{
+    fputc('"', o);
+    for (; *t; t++) {
+        if (*t == '"' || *t == '\\') fputc('\\', o);
+        if ((unsigned char)*t >= 0x20) fputc(*t, o);
+    }
+    fputc('"', o);
+}
+
+/* A JSON number; null for NaN and infinities. */
+static void json_num(FILE *o, double v)
+{
+    if (isfinite(v)) fprintf(o, "%.17g", v);
+    else fprintf(o, "null");
+}
+
+/* The report as JSON (--json; docs/calibration.md, "The JSON report"). */
+static int write_json(const char *path, const fit_problem *fp, const fit_stats *S, const double *sim, size_t iters,
+                      size_t nfev, size_t njev, double wall, const char *status, int converged)
+{
+    static const char *const reason[] = {NULL, "zero column", "rank", "relative standard error", "at bound"};
+    FILE *o = fopen(path, "w");
+    if (!o) {
+        fprintf(stderr, "ricochet fit: %s: cannot write the JSON report (%s)\n", path, strerror(errno));
+        return 4;
+    }
+    fprintf(o, "{\n  \"version\": ");
+    json_str(o, rc_version());
+    fprintf(o, ",\n  \"deck\": ");
+    json_str(o, fp->deck);
+    fprintf(o, ",\n  \"data\": ");
+    json_str(o, fp->data);
+    fprintf(o, ",\n  \"status\": ");
+    json_str(o, status);
+    fprintf(o, ",\n  \"converged\": %s,\n  \"iterations\": %zu,\n  \"residual_evaluations\": %zu,\n"
+               "  \"jacobian_evaluations\": %zu,\n  \"simulations\": %ld,\n  \"failed_simulations\": %ld,\n"
+               "  \"wall_time\": ",
+            converged ? "true" : "false", iters, nfev, njev, fp->nsim, fp->nsim_failed);
+    json_num(o, wall);
+    fprintf(o, ",\n  \"measured_values\": %d,\n  \"dof\": %d,\n  \"t_quantile\": ", fp->nres, S->dof);
+    json_num(o, S->tq);
+    fprintf(o, ",\n  \"residual_rms\": ");
+    json_num(o, S->rms_all);
+    fprintf(o, ",\n  \"parameters\": [");
+    for (int j = 0; j < fp->np; j++) {
+        const fit_par *q = &fp->par[j];
+        const int id = !S->unident[j];
+        fprintf(o, "%s\n    {\"name\": ", j ? "," : "");
+        json_str(o, q->name);
+        fprintf(o, ", \"log\": %s, \"start\": ", q->logscale ? "true" : "false");
+        json_num(o, q->start);
+        fprintf(o, ", \"lo\": ");
+        json_num(o, q->bounded ? q->lo : NAN);
+        fprintf(o, ", \"hi\": ");
+        json_num(o, q->bounded ? q->hi : NAN);
+        fprintf(o, ", \"identifiable\": %s, \"reason\": ", id ? "true" : "false");
+        if (id) fprintf(o, "null");
+        else json_str(o, reason[S->unident[j]]);
+        fprintf(o, ", \"value\": ");
+        json_num(o, S->p[j]);
+        fprintf(o, ", \"standard_error\": ");
+        json_num(o, id ? S->se[j] : NAN);
+        fprintf(o, ", \"lo95\": ");
+        json_num(o, id ? S->lo95[j] : NAN);
+        fprintf(o, ", \"hi95\": ");
+        json_num(o, id ? S->hi95[j] : NAN);
+        fprintf(o, "}");
+    }
+    fprintf(o, "\n  ],\n  \"correlation\": [");
+    for (int a = 0; a < fp->np; a++) {
+        fprintf(o, "%s\n    [", a ? "," : "");
+        for (int b = 0; b < fp->np; b++) {
+            if (b) fprintf(o, ", ");
+            json_num(o, S->corr[a][b]);
+        }
+        fprintf(o, "]");
+    }
+    fprintf(o, "\n  ],\n  \"signals\": [");
+    for (int k = 0; k < fp->ns; k++) {
+        double ss = 0;
+        int n = 0;
+        for (int i = 0; i < fp->nt; i++) {
+            const double mv = fp->meas[(size_t)i * (size_t)fp->ns + (size_t)k];
+            if (isnan(mv)) continue;
+            const double d = sim[(size_t)i * (size_t)fp->ns + (size_t)k] - mv;
+            ss += d * d;
+            n++;
+        }
+        fprintf(o, "%s\n    {\"label\": ", k ? "," : "");
+        json_str(o, fp->sig[k].label);
+        fprintf(o, ", \"body\": %d, \"quantity\": \"%s\", \"unit\": ", fp->sig[k].body, quantity_name[fp->sig[k].q]);
+        json_str(o, fp->sig[k].unit);
+        fprintf(o, ", \"values\": %d, \"rms\": ", n);
+        json_num(o, sqrt(ss / (n > 0 ? n : 1)) / fp->sig[k].to_si);
+        fprintf(o, "}");
+    }
+    fprintf(o, "\n  ],\n  \"set\": [");
+    int first = 1;
+    for (int j = 0; j < fp->np; j++) {
+        if (S->unident[j]) continue;
+        char buf[400];
+        snprintf(buf, sizeof buf, "%s=%.10g", fp->par[j].name, S->p[j]);
+        fprintf(o, "%s", first ? "" : ", ");
+        json_str(o, buf);
+        first = 0;
+    }
+    fprintf(o, "]\n}\n");
+    if (fclose(o) != 0) {
+        fprintf(stderr, "ricochet fit: %s: write error\n", path);
+        return 4;
+    }
+    return 0;
+}
+
 /* Measured against fitted signals, in the data's units. */
 static int write_fitted(const char *path, const fit_problem *fp, const double *sim)
 {
@@ -824,6 +941,7 @@ static void usage_fit(FILE *f)
             "  -o REPORT             write the report to REPORT as well as to stdout\n"
             "  --fitted FILE.csv     measured against fitted signals (default: the data file's stem + _fit.csv,\n"
             "                        in the current directory)\n"
+            "  --json FILE.json      the report as JSON as well (docs/calibration.md)\n"
             "  --rtol R              relative tolerance of the simulations, instead of /SOLVER Rtol\n"
             "  --trs METHOD          trust-region method of GSL: ddogleg (default: double dogleg), dogleg,\n"
             "                        subspace2D, or lm (Levenberg-Marquardt, whose steps the trust radius does not\n"
@@ -882,7 +1000,7 @@ int rc_cli_fit(int argc, char **argv)
     fp->jobs = nproc > 0 ? (int)nproc : 1;
     int max_iter = 100;
     double max_rse = 1.0;
-    const char *report = NULL, *fitted = NULL;
+    const char *report = NULL, *fitted = NULL, *json = NULL;
     for (int k = 2; k < argc; k++) {
         const char *a = argv[k], *v;
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
@@ -932,6 +1050,8 @@ int rc_cli_fit(int argc, char **argv)
             if (!(fp->data = opt_value(argc, argv, &k, a, "--data"))) return 2;
         } else if (!strcmp(a, "-o") || is_opt(a, "--output")) {
             if (!(report = opt_value(argc, argv, &k, a, a[1] == 'o' ? "-o" : "--output"))) return 2;
+        } else if (is_opt(a, "--json")) {
+            if (!(json = opt_value(argc, argv, &k, a, "--json"))) return 2;
         } else if (is_opt(a, "--fitted")) {
             if (!(fitted = opt_value(argc, argv, &k, a, "--fitted"))) return 2;
         } else if (is_opt(a, "--rtol") || is_opt(a, "--fd-step") || is_opt(a, "--max-rse") ||
@@ -1149,6 +1269,9 @@ int rc_cli_fit(int argc, char **argv)
                 goto free_fit;
             }
         }
+        if (json && (rc = write_json(json, fp, &S, sim, gsl_multifit_nlinear_niter(w), fdf.nevalf, fdf.nevaldf, wall,
+                                     status, ok)) != 0)
+            goto free_fit;
         char def[1024];
         if (!fitted) {
             const char *b = strrchr(fp->data, '/');

@@ -26,7 +26,7 @@
  *    evaluated in parallel by a pool of threads, each simulation loading and
  *    compiling its own model (the library is thread-safe for separate
  *    cases, models and sessions; no results file is written).
- *  - Statistics at the solution: s^2 = sum r^2 / (n - p), the covariance
+ *  - Statistics at the solution: s^2 = sum r^2 / (n - rank J), the covariance
  *    s^2 (J^T J)^-1 (gsl_multifit_nlinear_covar, whose pivoted QR drops
  *    dependent columns) mapped to the parameters by dp/du. A parameter the
  *    residuals do not depend on (its column of J below RC_FIT_COLUMN_TOL of
@@ -1202,10 +1202,6 @@ int rc_cli_fit(int argc, char **argv)
         memset(&S, 0, sizeof S);
         double chi2;
         gsl_blas_ddot(fs, fs, &chi2);
-        S.dof = (int)(n - p);
-        S.rms_all = sqrt(chi2 / (double)n);
-        S.tq = gsl_cdf_tdist_Pinv(0.975, (double)S.dof);
-        const double s2 = chi2 / (double)S.dof;
         gsl_multifit_nlinear_covar(J, RC_FIT_RANK_TOL, covar);
         double colmax = 0, col[RC_FIT_MAX_PAR], dpdu[RC_FIT_MAX_PAR];
         for (size_t j = 0; j < p; j++) {
@@ -1213,6 +1209,14 @@ int rc_cli_fit(int argc, char **argv)
             col[j] = gsl_blas_dnrm2(&cj.vector);
             colmax = fmax(colmax, col[j]);
         }
+        /* degrees of freedom: the measured values less the rank of J (the
+         * parameters the data do not see take none) */
+        int rank = 0;
+        for (size_t j = 0; j < p; j++) rank += gsl_matrix_get(covar, j, j) > 0 && col[j] > RC_FIT_COLUMN_TOL * colmax;
+        S.dof = (int)n - rank;
+        S.rms_all = sqrt(chi2 / (double)n);
+        S.tq = gsl_cdf_tdist_Pinv(0.975, (double)S.dof);
+        const double s2 = chi2 / (double)S.dof;
         for (size_t j = 0; j < p; j++) {
             S.p[j] = par_value(&fp->par[j], gsl_vector_get(xs, j), &dpdu[j]);
             const double cu = gsl_matrix_get(covar, j, j);

@@ -90,5 +90,30 @@ bad free_twice "/INTER/TYPE6/1:Fric is already free" "$ok" --free $free --free /
 bad no_free "missing --free" "$ok"
 bad bad_option "unknown option '--frees'" "$ok" --frees $free
 bad bad_rtol "--rtol: expected a number in \(0, 1\), got '2'" "$ok" --free $free --rtol 2
+# uncertainties in the header, the impacts file
+bad csv_sigma "bad.csv:1: column 2: expected '\+- SIGMA' after the unit" 't [s], body 1 x [m] +- -1\n0, 0\n' --free $free
+bad csv_sigma_some "bad.csv:1: column 3: has no uncertainty '\+- SIGMA' while column 2 has one" 't [s], body 1 x [m] +- 0.001, body 1 vx [m/s]\n0, 0, 1\n' --free $free
+okw='t [s], body 1 x [m] +- 0.001\n0, 0\n0.1, 0.08\n0.2, 0.14\n'
+imp() { printf "%b" "$1" > "$tmp/imp.csv"; }
+imp 'inter, impact, quantity, value, sigma\n1, 1, v_out [m/s], 1, 0.1\n'
+bad impacts_need_sigma "--impacts: expected the signals' uncertainties in the header" "$ok" --free $free --impacts "$tmp/imp.csv"
+imp 'inter, impact, what, value, sigma\n'
+bad impacts_header "imp.csv:1: expected the header 'inter, impact, quantity, value, sigma'" "$okw" --free $free --impacts "$tmp/imp.csv"
+imp '# c\ninter, impact, quantity, value, sigma\n1, 1, speed [m/s], 1, 0.1\n'
+bad impacts_quantity "imp.csv:3: quantity: expected 'NAME \[UNIT\]', NAME one of t_close, duration" "$okw" --free $free --impacts "$tmp/imp.csv"
+imp 'inter, impact, quantity, value, sigma\n1, 1, fn_max [lbf], 1, 0.1\n'
+bad impacts_unit "imp.csv:2: quantity fn_max: expected the unit N or kN, got \[lbf\]" "$okw" --free $free --impacts "$tmp/imp.csv"
+imp 'inter, impact, quantity, value, sigma\n1, 6, v_out [m/s], 1, 0.1\n'
+bad impacts_number "imp.csv:2: expected an /INTER id .* at most 5" "$okw" --free $free --impacts "$tmp/imp.csv"
+imp 'inter, impact, quantity, value, sigma\n1, 1, v_out [m/s], 1, 0\n'
+bad impacts_sigma "imp.csv:2: expected the measured value and its standard uncertainty sigma > 0 \[m/s\]" "$okw" --free $free --impacts "$tmp/imp.csv"
+imp 'inter, impact, quantity, value, sigma\n1, 1, v_out [m/s], 1, 0.1\n1, 1, v_out [mm/s], 1000, 100\n'
+bad impacts_twice "imp.csv:3: inter 1 impact 1 v_out measured twice" "$okw" --free $free --impacts "$tmp/imp.csv"
+# a slide has no impact: the start simulation fails, exit 3, saying why
+imp 'inter, impact, quantity, value, sigma\n1, 1, v_out [m/s], 1, 0.1\n'
+printf "%b" "$okw" > "$tmp/okw.csv"
+"$bin" fit "$slide" --data "$tmp/okw.csv" --impacts "$tmp/imp.csv" --free $free -q --fitted "$tmp/x.csv" > "$tmp/o" 2>&1; rc=$?
+grep -q "inter 1 impact 1 v_out \[m/s\]: no such impact" "$tmp/o" && expect impacts_missing 3 $rc "($(head -c 200 "$tmp/o"))" ||
+    expect impacts_missing 3 99 "(exit $rc: $(head -c 300 "$tmp/o"))"
 "$bin" fit "$slide" --data "$tmp/none.csv" --free $free -q > "$tmp/o" 2>&1; rc=$?
 grep -q "none.csv: cannot open the data file" "$tmp/o" && expect missing_data 4 $rc "($(head -1 "$tmp/o"))" || expect missing_data 4 99 "($(head -c 200 "$tmp/o"))"

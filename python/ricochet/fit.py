@@ -53,14 +53,16 @@ def _free_args(option, params):
     return out
 
 
-def fit(deck, data, free=None, log=None, set=None, rtol=None, method=None, max_iter=None, jobs=None,
+def fit(deck, data, free=None, log=None, set=None, impacts=None, rtol=None, method=None, max_iter=None, jobs=None,
         trs=None, max_rse=None, fitted=None, quiet=True):
     """Fit numeric fields of ``deck`` to the signals measured in ``data`` (a
     CSV file, docs/calibration.md "The data file").
 
     free, log: {"CARD:FIELD": start} or {"CARD:FIELD": (start, lo, hi)},
     values in the card's units; ``log`` ones are fitted in log(value).
-    set: fields fixed for the fit (as ``run``'s ``set``). fitted: the
+    set: fields fixed for the fit (as ``run``'s ``set``). impacts: a CSV
+    file of measured impact quantities (docs/calibration.md, "Impacts").
+    fitted: the
     measured-against-fitted CSV (default: a temporary file, read back).
 
     Returns the JSON report (a dict: "parameters", those of ``free`` then
@@ -83,7 +85,7 @@ def fit(deck, data, free=None, log=None, set=None, rtol=None, method=None, max_i
         cmd += _free_args("--free", free) + _free_args("--log", log)
         for s in format_set(set):
             cmd += ["--set", s]
-        for opt, v in (("--rtol", rtol), ("--method", method), ("--max-iter", max_iter), ("--jobs", jobs),
+        for opt, v in (("--impacts", impacts), ("--rtol", rtol), ("--method", method), ("--max-iter", max_iter), ("--jobs", jobs),
                        ("--trs", trs), ("--max-rse", max_rse)):
             if v is not None:
                 cmd += [opt, str(v)]

@@ -93,11 +93,42 @@ typedef struct {
     char unit[16];       /* the data's unit                            */
     double to_si;        /* data unit -> SI                            */
     double scale;        /* residual scale, SI                         */
+    double sigma;        /* stated uncertainty, SI; 0: none             */
 } fit_sig;
+
+/* the quantities of an impact a target can name (rc_impact) */
+typedef struct {
+    const char *name;
+    const char *unit_si, *unit_alt; /* accepted units; alt = 1e-3 SI (ms, mm), or kN for N */
+    double alt_to_si;
+} impact_quantity;
+static const impact_quantity impact_q[] = {
+    {"t_close", "s", "ms", 1e-3},       {"duration", "s", "ms", 1e-3}, {"pen_max", "m", "mm", 1e-3},
+    {"fn_max", "N", "kN", 1e3},         {"v_in", "m/s", "mm/s", 1e-3}, {"v_out", "m/s", "mm/s", 1e-3},
+    {"restitution", "-", NULL, 0.0},    {"energy_lost", "J", NULL, 0.0}};
+#define RC_FIT_NIMPQ ((int)(sizeof impact_q / sizeof impact_q[0]))
+
+/* A measured quantity of one impact (--impacts). */
+typedef struct {
+    int inter;          /* /INTER id                                    */
+    int k;              /* the k-th impact of that interface (1 = first) */
+    int q;              /* index into impact_q                          */
+    double value;       /* measured, SI                                 */
+    double sigma;       /* its standard uncertainty, SI                 */
+    double to_si;       /* the row's unit -> SI                         */
+    char unit[16];
+    char label[96];     /* "inter 1 impact 1 v_out [m/s]"               */
+} fit_imp;
 
 typedef struct {
     const char *deck;
     const char *data;
+    const char *impacts;  /* --impacts FILE.csv, or NULL                */
+    int nimp;
+    fit_imp imp[RC_FIT_MAX_SIG];
+    int weighted;         /* 1: every residual divided by its stated
+                             uncertainty; 0: by the signal's range      */
+    int nres_ts;          /* residuals of the time series               */
     int np;
     fit_par par[RC_FIT_MAX_PAR];
     int nset; /* fixed overrides (--set) */
@@ -325,6 +356,18 @@ static int read_data(fit_problem *fp)
                 snprintf(raw, sizeof raw, "%s", trim(cells[k]));
                 char body[16] = "", qty[16] = "";
                 int id = 0, used = 0;
+                /* an optional stated uncertainty after the unit: "+- SIGMA" */
+                char *pm = strstr(cells[k], "+-");
+                double sig = 0.0;
+                if (pm) {
+                    if (!parse_number(pm + 2, strlen(pm + 2), &sig) || !(sig > 0)) {
+                        fprintf(stderr, "ricochet fit: %s:%d: column %d: expected '+- SIGMA' after the unit, SIGMA a "
+                                        "positive number in the column's unit, got '%s'\n", fp->data, lineno, k + 1, raw);
+                        rc = 2;
+                        break;
+                    }
+                    *pm = '\0';
+                }
                 if (!name_unit(cells[k], &nm, &un) || sscanf(nm, "%15s %d %15s %n", body, &id, qty, &used) != 3 ||
                     nm[used] != '\0' || strcasecmp(body, "body") || id <= 0) {
                     fprintf(stderr, "ricochet fit: %s:%d: column %d: expected 'body ID Q [UNIT]' (Q one of x, y, z, "
@@ -352,6 +395,14 @@ static int read_data(fit_problem *fp)
                     break;
                 }
                 snprintf(g->unit, sizeof g->unit, "%s", un);
+                g->sigma = sig * g->to_si;
+                if (k > 1 && (g->sigma > 0) != (fp->sig[0].sigma > 0)) {
+                    fprintf(stderr, "ricochet fit: %s:%d: column %d: %s uncertainty '+- SIGMA' while column 2 %s: "
+                                    "expected one for every signal or for none\n", fp->data, lineno, k + 1,
+                            g->sigma > 0 ? "has an" : "has no", g->sigma > 0 ? "has none" : "has one");
+                    rc = 2;
+                    break;
+                }
                 snprintf(g->label, sizeof g->label, "body %d %s [%s]", id, quantity_name[g->q], un);
                 for (int j = 0; j < k - 1; j++)
                     if (fp->sig[j].body == id && fp->sig[j].q == g->q) {
@@ -445,6 +496,115 @@ static int read_data(fit_problem *fp)
     return 0;
 }
 
+/* The simulated values of one evaluation: the signals at the data times,
+ * then the impacts' quantities. */
+static size_t sim_len(const fit_problem *fp)
+{
+    return (size_t)fp->nt * (size_t)fp->ns + (size_t)fp->nimp;
+}
+
+/* Read the impacts file (docs/calibration.md, "Impacts"): a header
+ * "inter, impact, quantity, value, sigma", then one row per measured
+ * quantity. Input errors: "FILE:LINE: ...", return 2; I/O error 4. */
+static int read_impacts(fit_problem *fp)
+{
+    FILE *f = fopen(fp->impacts, "r");
+    if (!f) {
+        fprintf(stderr, "ricochet fit: %s: cannot open the impacts file (%s)\n", fp->impacts, strerror(errno));
+        return 4;
+    }
+    static const char *const head[5] = {"inter", "impact", "quantity", "value", "sigma"};
+    char line[4096], *cells[7];
+    int lineno = 0, header = 0, rc = 0;
+    while (rc == 0 && fgets(line, sizeof line, f)) {
+        lineno++;
+        char *t = trim(line);
+        if (*t == '\0' || *t == '#') continue;
+        const int n = split_cells(t, cells, 6);
+        if (!header) {
+            header = 1;
+            int ok = n == 5;
+            for (int k = 0; ok && k < 5; k++) ok = !strcasecmp(trim(cells[k]), head[k]);
+            if (!ok) {
+                fprintf(stderr, "ricochet fit: %s:%d: expected the header 'inter, impact, quantity, value, sigma'\n",
+                        fp->impacts, lineno);
+                rc = 2;
+            }
+            continue;
+        }
+        if (n != 5) {
+            fprintf(stderr, "ricochet fit: %s:%d: expected 5 values (inter, impact, quantity, value, sigma), got %d\n",
+                    fp->impacts, lineno, n > 5 ? 6 : n);
+            rc = 2;
+            break;
+        }
+        if (fp->nimp == RC_FIT_MAX_SIG) {
+            fprintf(stderr, "ricochet fit: %s:%d: at most %d impact quantities\n", fp->impacts, lineno, RC_FIT_MAX_SIG);
+            rc = 2;
+            break;
+        }
+        fit_imp *g = &fp->imp[fp->nimp];
+        memset(g, 0, sizeof *g);
+        double a, b;
+        if (!parse_number(cells[0], strlen(cells[0]), &a) || a != floor(a) || a < 1 || a > 1e9 ||
+            !parse_number(cells[1], strlen(cells[1]), &b) || b != floor(b) || b < 1 || b > RC_STATS_IMPACTS) {
+            fprintf(stderr, "ricochet fit: %s:%d: expected an /INTER id (a whole number >= 1) and the impact's number "
+                            "on that interface (1 = its first; at most %d), got '%s', '%s'\n", fp->impacts, lineno,
+                    RC_STATS_IMPACTS, trim(cells[0]), trim(cells[1]));
+            rc = 2;
+            break;
+        }
+        g->inter = (int)a;
+        g->k = (int)b;
+        char raw[64], *nm, *un;
+        snprintf(raw, sizeof raw, "%s", trim(cells[2]));
+        g->q = -1;
+        if (name_unit(cells[2], &nm, &un))
+            for (int q = 0; q < RC_FIT_NIMPQ; q++)
+                if (!strcasecmp(nm, impact_q[q].name)) g->q = q;
+        if (g->q < 0) {
+            fprintf(stderr, "ricochet fit: %s:%d: quantity: expected 'NAME [UNIT]', NAME one of t_close, duration, "
+                            "pen_max, fn_max, v_in, v_out, restitution, energy_lost, got '%s'\n", fp->impacts, lineno,
+                    raw);
+            rc = 2;
+            break;
+        }
+        const impact_quantity *iq = &impact_q[g->q];
+        if (!strcmp(un, iq->unit_si)) g->to_si = 1.0;
+        else if (iq->unit_alt && !strcmp(un, iq->unit_alt)) g->to_si = iq->alt_to_si;
+        else {
+            fprintf(stderr, "ricochet fit: %s:%d: quantity %s: expected the unit %s%s%s, got [%s]\n", fp->impacts,
+                    lineno, iq->name, iq->unit_si, iq->unit_alt ? " or " : "", iq->unit_alt ? iq->unit_alt : "", un);
+            rc = 2;
+            break;
+        }
+        if (!parse_number(cells[3], strlen(cells[3]), &g->value) || !parse_number(cells[4], strlen(cells[4]), &g->sigma) ||
+            !(g->sigma > 0)) {
+            fprintf(stderr, "ricochet fit: %s:%d: expected the measured value and its standard uncertainty sigma > 0 [%s], "
+                            "got '%s', '%s'\n", fp->impacts, lineno, un, trim(cells[3]), trim(cells[4]));
+            rc = 2;
+            break;
+        }
+        g->value *= g->to_si;
+        g->sigma *= g->to_si;
+        snprintf(g->unit, sizeof g->unit, "%s", un);
+        snprintf(g->label, sizeof g->label, "inter %d impact %d %s [%s]", g->inter, g->k, iq->name, un);
+        for (int j = 0; j < fp->nimp; j++)
+            if (fp->imp[j].inter == g->inter && fp->imp[j].k == g->k && fp->imp[j].q == g->q) {
+                fprintf(stderr, "ricochet fit: %s:%d: inter %d impact %d %s measured twice\n", fp->impacts, lineno,
+                        g->inter, g->k, iq->name);
+                rc = 2;
+            }
+        if (rc == 0) fp->nimp++;
+    }
+    fclose(f);
+    if (rc == 0 && fp->nimp == 0) {
+        fprintf(stderr, "ricochet fit: %s:%d: expected the header and at least one row\n", fp->impacts, lineno);
+        rc = 2;
+    }
+    return rc;
+}
+
 /* ---- simulation ------------------------------------------------------- */
 
 /* Milliseconds of wall time since an arbitrary origin. */
@@ -516,10 +676,39 @@ static rc_status simulate(fit_problem *fp, const double *p, double *sim, rc_erro
     }
     if (s) {
         rc_error e2;
-        rc_status st2 = rc_session_close(s, NULL, &e2);
+        rc_stats stats;
+        memset(&stats, 0, sizeof stats);
+        rc_status st2 = rc_session_close(s, &stats, &e2);
         if (!st && st2 && st2 != RC_EINTERRUPT) {
             st = st2;
             if (e) *e = e2;
+        }
+        /* the impacts' quantities: the k-th impact of the interface among
+         * the first RC_STATS_IMPACTS of the run */
+        double *si = sim + (size_t)fp->nt * (size_t)fp->ns;
+        for (int j = 0; j < fp->nimp && !st; j++) {
+            const fit_imp *g = &fp->imp[j];
+            const int n = stats.impacts < RC_STATS_IMPACTS ? (int)stats.impacts : RC_STATS_IMPACTS;
+            const rc_impact *hit = NULL;
+            for (int i = 0, seen = 0; i < n && !hit; i++)
+                if (stats.impact[i].inter_id == g->inter && ++seen == g->k) hit = &stats.impact[i];
+            double v = NAN;
+            if (hit) {
+                const double vals[] = {hit->t_close, hit->duration, hit->pen_max,     hit->fn_max,
+                                       hit->v_in,    hit->v_out,    hit->restitution, hit->energy_lost};
+                v = vals[g->q];
+            }
+            if (!isfinite(v)) {
+                if (e) {
+                    e->code = RC_ESOLVER;
+                    snprintf(e->msg, sizeof e->msg, "%s: %s (the run has %ld impacts; the first %d are seen)",
+                             g->label, hit ? "not defined (the bodies did not separate before the end)"
+                                           : "no such impact among the first impacts of the run",
+                             stats.impacts, RC_STATS_IMPACTS);
+                }
+                st = RC_ESOLVER;
+            }
+            si[j] = v;
         }
     }
     rc_model_free(m);
@@ -550,8 +739,14 @@ static rc_status residuals(fit_problem *fp, const double *u, double *r, double *
         for (int s = 0; s < fp->ns; s++) {
             const double mv = fp->meas[(size_t)i * (size_t)fp->ns + (size_t)s];
             if (isnan(mv)) continue;
-            r[k++] = st ? RC_FIT_FAILED_RESIDUAL : (sim[(size_t)i * (size_t)fp->ns + (size_t)s] - mv) / fp->sig[s].scale;
+            r[k++] = st ? RC_FIT_FAILED_RESIDUAL
+                        : (sim[(size_t)i * (size_t)fp->ns + (size_t)s] - mv) /
+                              (fp->weighted ? fp->sig[s].sigma : fp->sig[s].scale);
         }
+    /* the impacts' quantities, after the signals (simulate puts them there) */
+    const double *si = sim + (size_t)fp->nt * (size_t)fp->ns;
+    for (int j = 0; j < fp->nimp; j++)
+        r[k++] = st ? RC_FIT_FAILED_RESIDUAL : (si[j] - fp->imp[j].value) / fp->imp[j].sigma;
     return st;
 }
 
@@ -562,7 +757,7 @@ static int fit_f(const gsl_vector *x, void *params, gsl_vector *f)
     fit_problem *fp = params;
     double u[RC_FIT_MAX_PAR];
     for (int j = 0; j < fp->np; j++) u[j] = gsl_vector_get(x, (size_t)j);
-    double *r = malloc((size_t)fp->nres * sizeof *r), *sim = malloc((size_t)fp->nt * (size_t)fp->ns * sizeof *sim);
+    double *r = malloc((size_t)fp->nres * sizeof *r), *sim = malloc(sim_len(fp) * sizeof *sim);
     if (!r || !sim) {
         free(r);
         free(sim);
@@ -595,7 +790,7 @@ static void *fd_worker(void *arg)
 {
     fd_pool *pool = arg;
     fit_problem *fp = pool->fp;
-    double *sim = malloc((size_t)fp->nt * (size_t)fp->ns * sizeof *sim);
+    double *sim = malloc(sim_len(fp) * sizeof *sim);
     for (;;) {
         pthread_mutex_lock(&pool->lock);
         const int k = pool->next < pool->ntask ? pool->next++ : -1;
@@ -694,8 +889,11 @@ static void print_report(FILE *o, const fit_problem *fp, const fit_stats *S, con
                          size_t nfev, size_t njev, double wall, const char *status, double max_rse, int nth)
 {
     fprintf(o, "ricochet %s fit: %s against %s\n", rc_version(), fp->deck, fp->data);
-    fprintf(o, "data: %d times from %g to %g s, %d signal%s, %d measured values; %d free parameter%s, %d degrees of "
-               "freedom\n", fp->nt, fp->t[0], fp->t[fp->nt - 1], fp->ns, fp->ns > 1 ? "s" : "", fp->nres, fp->np,
+    char imps[160] = "";
+    if (fp->nimp > 0) snprintf(imps, sizeof imps, " and %d impact quantit%s from %s", fp->nimp, fp->nimp > 1 ? "ies" : "y",
+                               fp->impacts);
+    fprintf(o, "data: %d times from %g to %g s, %d signal%s%s, %d measured values; %d free parameter%s, %d degrees of "
+               "freedom\n", fp->nt, fp->t[0], fp->t[fp->nt - 1], fp->ns, fp->ns > 1 ? "s" : "", imps, fp->nres, fp->np,
             fp->np > 1 ? "s" : "", S->dof);
     fprintf(o, "status: %s\n", status);
     fprintf(o, "parameters (card units, as --set; 95%% interval = value +- t(0.975, %d) x standard error, t = %.4g):\n",
@@ -744,7 +942,13 @@ static void print_report(FILE *o, const fit_problem *fp, const fit_stats *S, con
             fprintf(o, "\n");
         }
     }
-    fprintf(o, "residuals: RMS %.4g of the scaled residuals (each signal divided by its measured range)\n", S->rms_all);
+    if (fp->weighted)
+        fprintf(o, "residuals: each divided by its stated uncertainty: RMS %.4g, chi-square / dof = %.4g (near 1 when "
+                   "the uncertainties are right and the model explains the data)\n",
+                S->rms_all, S->rms_all * S->rms_all * fp->nres / (S->dof > 0 ? S->dof : 1));
+    else
+        fprintf(o, "residuals: RMS %.4g of the scaled residuals (each signal divided by its measured range)\n",
+                S->rms_all);
     for (int s = 0; s < fp->ns; s++) {
         double ss = 0;
         int n = 0;
@@ -758,6 +962,12 @@ static void print_report(FILE *o, const fit_problem *fp, const fit_stats *S, con
         fprintf(o, "  %s: RMS %.4g %s over %d values (range %.4g %s)\n", fp->sig[s].label,
                 sqrt(ss / (n > 0 ? n : 1)) / fp->sig[s].to_si, fp->sig[s].unit, n, fp->sig[s].scale / fp->sig[s].to_si,
                 fp->sig[s].unit);
+    }
+    const double *si = sim + (size_t)fp->nt * (size_t)fp->ns;
+    for (int j = 0; j < fp->nimp; j++) {
+        const fit_imp *g = &fp->imp[j];
+        fprintf(o, "  %s: measured %.6g +- %.3g, fitted %.6g (%+.2f sigma)\n", g->label, g->value / g->to_si,
+                g->sigma / g->to_si, si[j] / g->to_si, (si[j] - g->value) / g->sigma);
     }
     fprintf(o, "cost: %zu iterations, %zu residual and %zu Jacobian evaluations (%s differences, step %g), %ld "
                "simulations (%ld failed), %.3f s wall (%.3f s of simulation over %d thread%s)\n",
@@ -870,6 +1080,23 @@ static int write_json(const char *path, const fit_problem *fp, const fit_stats *
         json_num(o, sqrt(ss / (n > 0 ? n : 1)) / fp->sig[k].to_si);
         fprintf(o, "}");
     }
+    fprintf(o, "\n  ],\n  \"weighted\": %s,\n  \"impacts\": [", fp->weighted ? "true" : "false");
+    const double *si = sim + (size_t)fp->nt * (size_t)fp->ns;
+    for (int j = 0; j < fp->nimp; j++) {
+        const fit_imp *g = &fp->imp[j];
+        fprintf(o, "%s\n    {\"label\": ", j ? "," : "");
+        json_str(o, g->label);
+        fprintf(o, ", \"inter\": %d, \"impact\": %d, \"quantity\": \"%s\", \"unit\": ", g->inter, g->k,
+                impact_q[g->q].name);
+        json_str(o, g->unit);
+        fprintf(o, ", \"measured\": ");
+        json_num(o, g->value / g->to_si);
+        fprintf(o, ", \"sigma\": ");
+        json_num(o, g->sigma / g->to_si);
+        fprintf(o, ", \"fitted\": ");
+        json_num(o, si[j] / g->to_si);
+        fprintf(o, "}");
+    }
     fprintf(o, "\n  ],\n  \"set\": [");
     int first = 1;
     for (int j = 0; j < fp->np; j++) {
@@ -930,8 +1157,10 @@ static void usage_fit(FILE *f)
             "measured ones: nonlinear least squares (GSL, trust region: double dogleg), the Jacobian by\n"
             "finite differences evaluated in parallel (docs/calibration.md).\n"
             "  --data FILE.csv       measured signals: a header 't [s], body 1 z [m], body 1 vx [m/s], ...'\n"
-            "                        (time in s or ms; x, y, z in m or mm; vx, vy, vz in m/s or mm/s), then one\n"
-            "                        row per time, increasing; a blank cell is not measured; '#' lines are comments\n"
+            "                        (time in s or ms; x, y, z in m or mm; vx, vy, vz in m/s or mm/s; after the\n"
+            "                        unit, '+- SIGMA' states a signal's uncertainty: each residual is then divided\n"
+            "                        by it), then one row per time, increasing; a blank cell is not measured; '#'\n"
+            "                        lines are comments\n"
             "  --free CARD:FIELD=START[,LO:HI]\n"
             "                        a field to fit, from START, kept inside (LO, HI) when given; values in the\n"
             "                        card's units, as --set (repeatable, at most %d)\n"
@@ -941,6 +1170,10 @@ static void usage_fit(FILE *f)
             "  -o REPORT             write the report to REPORT as well as to stdout\n"
             "  --fitted FILE.csv     measured against fitted signals (default: the data file's stem + _fit.csv,\n"
             "                        in the current directory)\n"
+            "  --impacts FILE.csv    measured quantities of impacts as well: a header 'inter, impact, quantity,\n"
+            "                        value, sigma', then rows such as '1, 1, v_out [m/s], 1.59, 0.01' (t_close,\n"
+            "                        duration, pen_max, fn_max, v_in, v_out, restitution, energy_lost); needs the\n"
+            "                        data file's signals to state their uncertainties: 'body 1 z [m] +- 0.0005'\n"
             "  --json FILE.json      the report as JSON as well (docs/calibration.md)\n"
             "  --rtol R              relative tolerance of the simulations, instead of /SOLVER Rtol\n"
             "  --trs METHOD          trust-region method of GSL: ddogleg (default: double dogleg), dogleg,\n"
@@ -1050,6 +1283,8 @@ int rc_cli_fit(int argc, char **argv)
             if (!(fp->data = opt_value(argc, argv, &k, a, "--data"))) return 2;
         } else if (!strcmp(a, "-o") || is_opt(a, "--output")) {
             if (!(report = opt_value(argc, argv, &k, a, a[1] == 'o' ? "-o" : "--output"))) return 2;
+        } else if (is_opt(a, "--impacts")) {
+            if (!(fp->impacts = opt_value(argc, argv, &k, a, "--impacts"))) return 2;
         } else if (is_opt(a, "--json")) {
             if (!(json = opt_value(argc, argv, &k, a, "--json"))) return 2;
         } else if (is_opt(a, "--fitted")) {
@@ -1095,6 +1330,18 @@ int rc_cli_fit(int argc, char **argv)
     }
     int rc = read_data(fp);
     if (rc) goto done;
+    fp->nres_ts = fp->nres;
+    fp->weighted = fp->sig[0].sigma > 0;
+    if (fp->impacts) {
+        if ((rc = read_impacts(fp)) != 0) goto done;
+        if (!fp->weighted) {
+            fprintf(stderr, "ricochet fit: %s: --impacts: expected the signals' uncertainties in the header (e.g. "
+                            "'body 1 z [m] +- 0.0005'), to weigh them against the impacts'\n", fp->data);
+            rc = 2;
+            goto done;
+        }
+        fp->nres += fp->nimp;
+    }
     if (fp->nres <= fp->np) {
         fprintf(stderr, "ricochet fit: %s: %d measured values for %d free parameters: expected more values than "
                         "parameters\n", fp->data, fp->nres, fp->np);
@@ -1155,7 +1402,7 @@ int rc_cli_fit(int argc, char **argv)
         gsl_multifit_nlinear_workspace *w = gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &fpar, n, p);
         gsl_vector *x0 = gsl_vector_alloc(p);
         gsl_matrix *covar = gsl_matrix_alloc(p, p);
-        double *sim = malloc((size_t)fp->nt * (size_t)fp->ns * sizeof *sim);
+        double *sim = malloc(sim_len(fp) * sizeof *sim);
         double *r = malloc(n * sizeof *r);
         if (!w || !x0 || !covar || !sim || !r) {
             fprintf(stderr, "ricochet fit: out of memory\n");

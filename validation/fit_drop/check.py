@@ -19,6 +19,11 @@ factor 3 away from the answer. Checked:
     (log-scaled) and m1 (bounded to 1..2.5) within their 95 % intervals; m1
     within 2 %; K, which trades off against m1 (correlation 0.999), within
     15 %, and the force at the peak penetration, K P^m1, within 2 %.
+(e) drop.rad again, z(t) only every 10 ms (too coarse to resolve the
+    21 ms contact) with its uncertainty stated, and the impact's measured
+    duration, rebound speed and peak force (--impacts, each with its
+    uncertainty): stiffness and damping within their 95 % intervals and
+    within 2 %.
 (c) slide.rad with Fric and the static friction force Sfric both free: on a
     flat floor the friction force is Sfric + Fric m g, so only that sum is
     seen; both are reported UNIDENTIFIABLE (correlation -1), not returned
@@ -44,7 +49,8 @@ KP_TRUE, M1_TRUE, P_PEAK = 6.0e5, 1.5, 0.0087584  # power.rad: N/m^m1, -, peak p
 SIGMA = 5e-4                                    # noise standard deviation [m]
 # one seed per measurement; over seeds 0..29 the true values fell inside the
 # reported 95 % intervals in 29 of 30 fits for each parameter (README.md)
-SEED_DROP, SEED_SLIDE, SEED_POWER = 1, 2, 3
+SEED_DROP, SEED_SLIDE, SEED_POWER, SEED_IMPACTS = 1, 2, 3, 5
+IMPACT_SIGMA = {"duration [ms]": 0.2, "v_out [m/s]": 0.01, "fn_max [N]": 3.0}  # the impacts' uncertainties
 # the decks' own tolerance, tight enough that the integrator's error (rtol
 # 1e-9 of the signals) stays far below the noise; ricochet's default (1e-8)
 # in the defaults mode
@@ -52,9 +58,10 @@ RTOL = [] if rcval.DEFAULTS else ["--rtol", "1e-9"]
 METHOD = ["--method", rcval.METHOD] if rcval.METHOD else []
 
 
-def simulate(deck, sets, dt_out):
+def simulate(deck, sets, dt_out, impacts=False):
     """The deck run at the --set values; (times, positions [n, 3]) of the
-    records at the output times (not the event records)."""
+    records at the output times (not the event records), and with impacts
+    the first impact's duration [ms], rebound speed [m/s], peak force [N]."""
     out = os.path.join(rcval.tmpdir(), "truth.nc")
     cmd = [rcval.RICOCHET, "run", os.path.join(HERE, deck), "-o", out, "-q", "--dt-out", str(dt_out)] + RTOL + METHOD
     for s in sets:
@@ -64,7 +71,12 @@ def simulate(deck, sets, dt_out):
         raise RuntimeError(f"ricochet run failed ({p.returncode}): {p.stderr.strip()}")
     with Dataset(out) as nc:
         keep = np.array(nc["at_event"][:]) == 0
-        return np.array(nc["time"][:])[keep], np.array(nc["body_position"][:])[keep, 0, :]
+        t, x = np.array(nc["time"][:])[keep], np.array(nc["body_position"][:])[keep, 0, :]
+        if impacts:
+            return t, x, {"duration [ms]": 1e3 * float(nc["impact_duration"][0]),
+                          "v_out [m/s]": float(nc["impact_speed_out"][0]),
+                          "fn_max [N]": float(nc["impact_peak_force"][0])}
+        return t, x
 
 
 def write_csv(path, header, t, v, rng, t_unit=1.0, v_unit=1.0):
@@ -77,11 +89,11 @@ def write_csv(path, header, t, v, rng, t_unit=1.0, v_unit=1.0):
             f.write(f"{ti / t_unit:.9g}, {vi / v_unit:.9g}\n")
 
 
-def fit(deck, data, free):
+def fit(deck, data, free, extra=()):
     """Run ricochet fit; (exit code, report text, wall time [s])."""
     d = rcval.tmpdir()
     cmd = [rcval.RICOCHET, "fit", os.path.join(HERE, deck), "--data", data, "-q", "--fitted",
-           os.path.join(d, "fitted.csv"), "-o", os.path.join(d, "report.txt")] + RTOL + METHOD
+           os.path.join(d, "fitted.csv"), "-o", os.path.join(d, "report.txt")] + RTOL + METHOD + list(extra)
     for kind, arg in free:
         cmd += [kind, arg]
     t0 = time.time()
@@ -175,6 +187,29 @@ def main():
                     f"error {abs(f_fit - f_true) / f_true:.2e} (< 0.02)")
     else:
         rcval.check("fit_drop.power_peak_force", False, f"K {kp}, m1 {mp}")
+
+    # (e) impacts: a coarse z(t) and the impact's duration, rebound speed and
+    # peak force, each with its uncertainty
+    t, x, imp = simulate("drop.rad", [f"/INTER/TYPE6/1:FscaleId={K_TRUE:g}", f"/INTER/TYPE6/1:Visc={C_TRUE:g}"],
+                         0.01, impacts=True)
+    rng = np.random.default_rng(SEED_IMPACTS)
+    data_i = os.path.join(rcval.tmpdir(), "coarse.csv")
+    write_csv(data_i, f"t [s], body 1 z [m] +- {SIGMA:g}", t, x[:, 2], rng)
+    imp_csv = os.path.join(rcval.tmpdir(), "impacts.csv")
+    with open(imp_csv, "w") as f:
+        f.write("# the first impact of the drop, measured\ninter, impact, quantity, value, sigma\n")
+        for q, v in imp.items():
+            f.write(f"1, 1, {q}, {v + rng.normal(0.0, IMPACT_SIGMA[q]):.6g}, {IMPACT_SIGMA[q]:g}\n")
+    rc, rep, wall, _ = fit("drop.rad", data_i, [("--log", f"/INTER/TYPE6/1:FscaleId={3 * K_TRUE:g}"),
+                                                 ("--log", f"/INTER/TYPE6/1:Visc={C_TRUE / 3:g}")],
+                           ["--impacts", imp_csv])
+    p = parameters(rep)
+    chi = re.search(r"chi-square / dof = (\S+)", rep)
+    rcval.check("fit_drop.impacts_converged", rc == 0 and "status: converged" in rep and chi is not None,
+                f"{len(t)} samples of z (10 ms) and 3 impact quantities, started 3x off: {cost(rep)}, {wall:.2f} s "
+                f"wall, chi-square / dof {chi.group(1) if chi else '?'}")
+    recovered("fit_drop.impacts_stiffness", p.get("/INTER/TYPE6/1:FscaleId"), K_TRUE)
+    recovered("fit_drop.impacts_damping", p.get("/INTER/TYPE6/1:Visc"), C_TRUE)
 
     # (c) Fric and Sfric together: only Sfric + Fric m g is seen
     rc, rep, wall, _ = fit("slide.rad", data, [("--free", f"/INTER/TYPE6/1:Fric={MU_TRUE / 3:g},0:1"),

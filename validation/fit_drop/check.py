@@ -14,6 +14,10 @@ factor 3 away from the answer. Checked:
 (b) slide.rad: a block launched at 1 m/s and stopped by Coulomb friction,
     x(t) every 5 ms with 0.5 mm noise, in a file in ms and mm: Fric
     recovered within its 95 % interval and within 2 %.
+(c) slide.rad with Fric and the static friction force Sfric both free: on a
+    flat floor the friction force is Sfric + Fric m g, so only that sum is
+    seen; both are reported UNIDENTIFIABLE (correlation -1), not returned
+    as numbers, and the fitted friction force matches the true one.
 (d) power.rad: the same drop on an /INTER/POWER floor F = K P^m1 +
     C v P^m3 (Hunt-Crossley damping, fixed), z(t) every 1 ms: K
     (log-scaled) and m1 (bounded to 1..2.5) within their 95 % intervals; m1
@@ -24,10 +28,6 @@ factor 3 away from the answer. Checked:
     duration, rebound speed and peak force (--impacts, each with its
     uncertainty): stiffness and damping within their 95 % intervals and
     within 2 %.
-(c) slide.rad with Fric and the static friction force Sfric both free: on a
-    flat floor the friction force is Sfric + Fric m g, so only that sum is
-    seen; both are reported UNIDENTIFIABLE (correlation -1), not returned
-    as numbers, and the fitted friction force matches the true one.
 """
 import os
 import re

@@ -115,5 +115,6 @@ printf "%b" "$okw" > "$tmp/okw.csv"
 "$bin" fit "$slide" --data "$tmp/okw.csv" --impacts "$tmp/imp.csv" --free $free -q --fitted "$tmp/x.csv" > "$tmp/o" 2>&1; rc=$?
 grep -q "inter 1 impact 1 v_out \[m/s\]: no such impact" "$tmp/o" && expect impacts_missing 3 $rc "($(head -c 200 "$tmp/o"))" ||
     expect impacts_missing 3 99 "(exit $rc: $(head -c 300 "$tmp/o"))"
+bad output_is_input "--fitted .*bad.csv: expected an output file, got the data file" "$ok" --free $free --fitted "$tmp/bad.csv"
 "$bin" fit "$slide" --data "$tmp/none.csv" --free $free -q > "$tmp/o" 2>&1; rc=$?
 grep -q "none.csv: cannot open the data file" "$tmp/o" && expect missing_data 4 $rc "($(head -1 "$tmp/o"))" || expect missing_data 4 99 "($(head -c 200 "$tmp/o"))"

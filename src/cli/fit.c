@@ -44,6 +44,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -1208,6 +1209,13 @@ static const char *opt_value(int argc, char **argv, int *k, const char *a, const
     return argv[++*k];
 }
 
+/* Do paths a and b name the same existing file (device and inode)? */
+static int same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    return a && b && stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
 static int is_opt(const char *a, const char *name)
 {
     const size_t n = strlen(name);
@@ -1328,6 +1336,24 @@ int rc_cli_fit(int argc, char **argv)
         usage_fit(stderr);
         return 2;
     }
+    /* the outputs may not replace an input */
+    char def[1024];
+    if (!fitted) {
+        const char *b = strrchr(fp->data, '/');
+        b = b ? b + 1 : fp->data;
+        const char *dot = strrchr(b, '.');
+        snprintf(def, sizeof def, "%.*s_fit.csv", dot && dot != b ? (int)(dot - b) : (int)strlen(b), b);
+        fitted = def;
+    }
+    const char *outs[3] = {report, fitted, json}, *ins[3] = {fp->deck, fp->data, fp->impacts};
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++)
+            if (same_file(outs[a], ins[b])) {
+                fprintf(stderr, "ricochet fit: %s %s: expected an output file, got the %s\n",
+                        a == 0 ? "-o" : a == 1 ? "--fitted" : "--json", outs[a],
+                        b == 0 ? "case file" : b == 1 ? "data file" : "impacts file");
+                return 2;
+            }
     int rc = read_data(fp);
     if (rc) goto done;
     fp->nres_ts = fp->nres;
@@ -1523,14 +1549,6 @@ int rc_cli_fit(int argc, char **argv)
         if (json && (rc = write_json(json, fp, &S, sim, gsl_multifit_nlinear_niter(w), fdf.nevalf, fdf.nevaldf, wall,
                                      status, ok)) != 0)
             goto free_fit;
-        char def[1024];
-        if (!fitted) {
-            const char *b = strrchr(fp->data, '/');
-            b = b ? b + 1 : fp->data;
-            const char *dot = strrchr(b, '.');
-            snprintf(def, sizeof def, "%.*s_fit.csv", dot && dot != b ? (int)(dot - b) : (int)strlen(b), b);
-            fitted = def;
-        }
         rc = write_fitted(fitted, fp, sim);
         if (rc == 0) {
             printf("measured against fitted signals: %s\n", fitted);

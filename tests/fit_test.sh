@@ -44,6 +44,13 @@ else expect slide 0 99 "(exit $rc: $(head -c 600 "$tmp/out.txt") $(head -c 300 "
 if diff <(grep -v '^cost:' "$tmp/out.txt" | sed 's/slide_fit.csv/X/') <(grep -v '^cost:' "$tmp/out2.txt" | sed 's/f2.csv/X/') > /dev/null &&
     cmp -s "$tmp/slide_fit.csv" "$tmp/f2.csv"; then echo "PASS fit.deterministic: the same report and fitted signals with 3 threads"
 else echo "FAIL fit.deterministic: $(diff "$tmp/out.txt" "$tmp/out2.txt" | head -c 300)"; fi
+# the plot of measured against fitted signals (scripts/plot_fit.py)
+if /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
+    /usr/bin/python3 scripts/plot_fit.py "$tmp/slide_fit.csv" -o "$tmp/slide_fit.png" > "$tmp/p" 2>&1; rc=$?
+    if [ "$rc" -eq 0 ] && [ "$(head -c 4 "$tmp/slide_fit.png" | od -An -c | tr -d ' ')" = "211PNG" ]; then
+        echo "PASS fit.plot: scripts/plot_fit.py wrote a PNG of the two signals"
+    else echo "FAIL fit.plot: exit $rc: $(head -c 200 "$tmp/p")"; fi
+else echo "SKIP fit.plot: python3-matplotlib not installed"; fi
 # a blank cell is no measurement: 26 times, 26 + 9 values
 grep -q "26 times from 0 to 0.5 s, 2 signals, 35 measured values" "$tmp/out.txt" && echo "PASS fit.blank_cells: blank cells not measured (35 values)" ||
     echo "FAIL fit.blank_cells: $(grep -m1 '^data:' "$tmp/out.txt")"

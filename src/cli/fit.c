@@ -97,7 +97,8 @@ typedef struct {
     double sigma;        /* stated uncertainty, SI; 0: none             */
 } fit_sig;
 
-/* the quantities of an impact a target can name (rc_impact) */
+/* the quantities of an impact (rc_impact) or of a persistent contact
+ * (rc_contact, names contact_*) a target can name */
 typedef struct {
     const char *name;
     const char *unit_si, *unit_alt; /* accepted units; alt = 1e-3 SI (ms, mm), or kN for N */
@@ -106,7 +107,12 @@ typedef struct {
 static const impact_quantity impact_q[] = {
     {"t_close", "s", "ms", 1e-3},       {"duration", "s", "ms", 1e-3}, {"pen_max", "m", "mm", 1e-3},
     {"fn_max", "N", "kN", 1e3},         {"v_in", "m/s", "mm/s", 1e-3}, {"v_out", "m/s", "mm/s", 1e-3},
-    {"restitution", "-", NULL, 0.0},    {"energy_lost", "J", NULL, 0.0}};
+    {"restitution", "-", NULL, 0.0},    {"energy_lost", "J", NULL, 0.0},
+    /* persistent contacts, from RC_FIT_FIRST_CONTACT_Q on */
+    {"contact_t_close", "s", "ms", 1e-3}, {"contact_duration", "s", "ms", 1e-3},
+    {"contact_pen_max", "m", "mm", 1e-3}, {"contact_fn_max", "N", "kN", 1e3},
+    {"contact_fn_mean", "N", "kN", 1e3},  {"contact_slip", "m", "mm", 1e-3}};
+#define RC_FIT_FIRST_CONTACT_Q 8
 #define RC_FIT_NIMPQ ((int)(sizeof impact_q / sizeof impact_q[0]))
 
 /* A measured quantity of one impact (--impacts). */
@@ -525,9 +531,13 @@ static int read_impacts(fit_problem *fp)
         if (!header) {
             header = 1;
             int ok = n == 5;
-            for (int k = 0; ok && k < 5; k++) ok = !strcasecmp(trim(cells[k]), head[k]);
+            for (int k = 0; ok && k < 5; k++) {
+                const char *c = trim(cells[k]);
+                ok = !strcasecmp(c, head[k]) || (k == 1 && !strcasecmp(c, "number"));
+            }
             if (!ok) {
-                fprintf(stderr, "ricochet fit: %s:%d: expected the header 'inter, impact, quantity, value, sigma'\n",
+                fprintf(stderr, "ricochet fit: %s:%d: expected the header 'inter, impact, quantity, value, sigma' ('number' "
+                                "for 'impact' also)\n",
                         fp->impacts, lineno);
                 rc = 2;
             }
@@ -565,8 +575,9 @@ static int read_impacts(fit_problem *fp)
                 if (!strcasecmp(nm, impact_q[q].name)) g->q = q;
         if (g->q < 0) {
             fprintf(stderr, "ricochet fit: %s:%d: quantity: expected 'NAME [UNIT]', NAME one of t_close, duration, "
-                            "pen_max, fn_max, v_in, v_out, restitution, energy_lost, got '%s'\n", fp->impacts, lineno,
-                    raw);
+                            "pen_max, fn_max, v_in, v_out, restitution, energy_lost (an impact), contact_t_close, "
+                            "contact_duration, contact_pen_max, contact_fn_max, contact_fn_mean, contact_slip (a "
+                            "persistent contact), got '%s'\n", fp->impacts, lineno, raw);
             rc = 2;
             break;
         }
@@ -589,11 +600,12 @@ static int read_impacts(fit_problem *fp)
         g->value *= g->to_si;
         g->sigma *= g->to_si;
         snprintf(g->unit, sizeof g->unit, "%s", un);
-        snprintf(g->label, sizeof g->label, "inter %d impact %d %s [%s]", g->inter, g->k, iq->name, un);
+        snprintf(g->label, sizeof g->label, "inter %d %s %d %s [%s]", g->inter,
+                 g->q >= RC_FIT_FIRST_CONTACT_Q ? "contact" : "impact", g->k, iq->name, un);
         for (int j = 0; j < fp->nimp; j++)
             if (fp->imp[j].inter == g->inter && fp->imp[j].k == g->k && fp->imp[j].q == g->q) {
-                fprintf(stderr, "ricochet fit: %s:%d: inter %d impact %d %s measured twice\n", fp->impacts, lineno,
-                        g->inter, g->k, iq->name);
+                fprintf(stderr, "ricochet fit: %s:%d: inter %d %s %d %s measured twice\n", fp->impacts, lineno,
+                        g->inter, g->q >= RC_FIT_FIRST_CONTACT_Q ? "contact" : "impact", g->k, iq->name);
                 rc = 2;
             }
         if (rc == 0) fp->nimp++;
@@ -685,27 +697,44 @@ static rc_status simulate(fit_problem *fp, const double *p, double *sim, rc_erro
             if (e) *e = e2;
         }
         /* the impacts' quantities: the k-th impact of the interface among
-         * the first RC_STATS_IMPACTS of the run */
+         * the first RC_STATS_IMPACTS of the run (the k-th persistent
+         * contact among the first RC_STATS_CONTACTS for contact_*) */
         double *si = sim + (size_t)fp->nt * (size_t)fp->ns;
         for (int j = 0; j < fp->nimp && !st; j++) {
             const fit_imp *g = &fp->imp[j];
-            const int n = stats.impacts < RC_STATS_IMPACTS ? (int)stats.impacts : RC_STATS_IMPACTS;
-            const rc_impact *hit = NULL;
-            for (int i = 0, seen = 0; i < n && !hit; i++)
-                if (stats.impact[i].inter_id == g->inter && ++seen == g->k) hit = &stats.impact[i];
+            const int persistent = g->q >= RC_FIT_FIRST_CONTACT_Q;
+            int hit = 0;
             double v = NAN;
-            if (hit) {
-                const double vals[] = {hit->t_close, hit->duration, hit->pen_max,     hit->fn_max,
-                                       hit->v_in,    hit->v_out,    hit->restitution, hit->energy_lost};
-                v = vals[g->q];
+            if (!persistent) {
+                const int n = stats.impacts < RC_STATS_IMPACTS ? (int)stats.impacts : RC_STATS_IMPACTS;
+                for (int i = 0, seen = 0; i < n && !hit; i++)
+                    if (stats.impact[i].inter_id == g->inter && ++seen == g->k) {
+                        const rc_impact *h = &stats.impact[i];
+                        const double vals[] = {h->t_close, h->duration, h->pen_max,     h->fn_max,
+                                               h->v_in,    h->v_out,    h->restitution, h->energy_lost};
+                        v = vals[g->q];
+                        hit = 1;
+                    }
+            } else {
+                const int n = stats.contacts < RC_STATS_CONTACTS ? (int)stats.contacts : RC_STATS_CONTACTS;
+                for (int i = 0, seen = 0; i < n && !hit; i++)
+                    if (stats.contact[i].inter_id == g->inter && ++seen == g->k) {
+                        const rc_contact *h = &stats.contact[i];
+                        const double vals[] = {h->t_close, h->duration, h->pen_max, h->fn_max, h->fn_mean, h->slip};
+                        v = vals[g->q - RC_FIT_FIRST_CONTACT_Q];
+                        hit = 1;
+                    }
             }
             if (!isfinite(v)) {
                 if (e) {
                     e->code = RC_ESOLVER;
-                    snprintf(e->msg, sizeof e->msg, "%s: %s (the run has %ld impacts; the first %d are seen)",
-                             g->label, hit ? "not defined (the bodies did not separate before the end)"
-                                           : "no such impact among the first impacts of the run",
-                             stats.impacts, RC_STATS_IMPACTS);
+                    snprintf(e->msg, sizeof e->msg, "%s: %s (the run has %ld %s; the first %d are seen)", g->label,
+                             hit ? "not defined (the bodies did not separate before the end)"
+                                 : persistent ? "no such persistent contact in the run"
+                                              : "no such impact among the first impacts of the run",
+                             persistent ? stats.contacts : stats.impacts,
+                             persistent ? "persistent contacts" : "impacts",
+                             persistent ? RC_STATS_CONTACTS : RC_STATS_IMPACTS);
                 }
                 st = RC_ESOLVER;
             }
@@ -891,8 +920,9 @@ static void print_report(FILE *o, const fit_problem *fp, const fit_stats *S, con
 {
     fprintf(o, "ricochet %s fit: %s against %s\n", rc_version(), fp->deck, fp->data);
     char imps[160] = "";
-    if (fp->nimp > 0) snprintf(imps, sizeof imps, " and %d impact quantit%s from %s", fp->nimp, fp->nimp > 1 ? "ies" : "y",
-                               fp->impacts);
+    if (fp->nimp > 0)
+        snprintf(imps, sizeof imps, " and %d quantit%s of impacts or contacts from %s", fp->nimp,
+                 fp->nimp > 1 ? "ies" : "y", fp->impacts);
     fprintf(o, "data: %d times from %g to %g s, %d signal%s%s, %d measured values; %d free parameter%s, %d degrees of "
                "freedom\n", fp->nt, fp->t[0], fp->t[fp->nt - 1], fp->ns, fp->ns > 1 ? "s" : "", imps, fp->nres, fp->np,
             fp->np > 1 ? "s" : "", S->dof);
@@ -1173,7 +1203,8 @@ static void usage_fit(FILE *f)
             "                        in the current directory)\n"
             "  --impacts FILE.csv    measured quantities of impacts as well: a header 'inter, impact, quantity,\n"
             "                        value, sigma', then rows such as '1, 1, v_out [m/s], 1.59, 0.01' (t_close,\n"
-            "                        duration, pen_max, fn_max, v_in, v_out, restitution, energy_lost); needs the\n"
+            "                        duration, pen_max, fn_max, v_in, v_out, restitution, energy_lost; of a\n"
+            "                        persistent contact: contact_slip, contact_fn_mean, ...); needs the\n"
             "                        data file's signals to state their uncertainties: 'body 1 z [m] +- 0.0005'\n"
             "  --json FILE.json      the report as JSON as well (docs/calibration.md)\n"
             "  --rtol R              relative tolerance of the simulations, instead of /SOLVER Rtol\n"

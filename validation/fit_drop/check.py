@@ -18,6 +18,9 @@ factor 3 away from the answer. Checked:
     flat floor the friction force is Sfric + Fric m g, so only that sum is
     seen; both are reported UNIDENTIFIABLE (correlation -1), not returned
     as numbers, and the fitted friction force matches the true one.
+(f) slide.rad, x(t) at three times only (+- 2 mm) and the stopping
+    distance (the persistent contact's slip, contact_slip, +- 0.5 mm):
+    Fric within its 95 % interval and within 2 %.
 (d) power.rad: the same drop on an /INTER/POWER floor F = K P^m1 +
     C v P^m3 (Hunt-Crossley damping, fixed), z(t) every 1 ms: K
     (log-scaled) and m1 (bounded to 1..2.5) within their 95 % intervals; m1
@@ -49,7 +52,7 @@ KP_TRUE, M1_TRUE, P_PEAK = 6.0e5, 1.5, 0.0087584  # power.rad: N/m^m1, -, peak p
 SIGMA = 5e-4                                    # noise standard deviation [m]
 # one seed per measurement; over seeds 0..29 the true values fell inside the
 # reported 95 % intervals in 29 of 30 fits for each parameter (README.md)
-SEED_DROP, SEED_SLIDE, SEED_POWER, SEED_IMPACTS = 1, 2, 3, 5
+SEED_DROP, SEED_SLIDE, SEED_POWER, SEED_IMPACTS, SEED_STOP = 1, 2, 3, 5, 6
 IMPACT_SIGMA = {"duration [ms]": 0.2, "v_out [m/s]": 0.01, "fn_max [N]": 3.0}  # the impacts' uncertainties
 # the decks' own tolerance, tight enough that the integrator's error (rtol
 # 1e-9 of the signals) stays far below the noise; ricochet's default (1e-8)
@@ -210,6 +213,32 @@ def main():
                 f"wall, chi-square / dof {chi.group(1) if chi else '?'}")
     recovered("fit_drop.impacts_stiffness", p.get("/INTER/TYPE6/1:FscaleId"), K_TRUE)
     recovered("fit_drop.impacts_damping", p.get("/INTER/TYPE6/1:Visc"), C_TRUE)
+
+    # (f) the stopping distance and three positions
+    out = os.path.join(rcval.tmpdir(), "stop.nc")
+    subprocess.run([rcval.RICOCHET, "run", os.path.join(HERE, "slide.rad"), "-o", out, "-q", "--dt-out", "0.1",
+                    "--set", f"/INTER/TYPE6/1:Fric={MU_TRUE:g}"] + RTOL + METHOD, check=True)
+    with Dataset(out) as nc:
+        keep = np.array(nc["at_event"][:]) == 0
+        t, x = np.array(nc["time"][:])[keep], np.array(nc["body_position"][:])[keep, 0, 0]
+        slip = float(nc["persistent_slip_distance"][0])
+    rng = np.random.default_rng(SEED_STOP)
+    pick = [1, 2, 5]  # 0.1, 0.2 and 0.5 s: before and after the stop at 0.34 s
+    data_s = os.path.join(rcval.tmpdir(), "stop.csv")
+    with open(data_s, "w") as f:
+        f.write("t [s], body 1 x [m] +- 0.002\n")
+        for k in pick:
+            f.write(f"{t[k]:.9g}, {x[k] + rng.normal(0.0, 0.002):.9g}\n")
+    stop_csv = os.path.join(rcval.tmpdir(), "stop_contact.csv")
+    with open(stop_csv, "w") as f:
+        f.write(f"inter, number, quantity, value, sigma\n1, 1, contact_slip [mm], "
+                f"{1e3 * slip + rng.normal(0.0, 0.5):.6g}, 0.5\n")
+    rc, rep, wall, _ = fit("slide.rad", data_s, [("--free", f"/INTER/TYPE6/1:Fric={MU_TRUE / 3:g},0:1")],
+                           ["--impacts", stop_csv])
+    p = parameters(rep)
+    rcval.check("fit_drop.stop_converged", rc == 0 and "status: converged" in rep,
+                f"3 positions and the stopping distance {slip * 1e3:.2f} mm (+- 0.5 mm): {cost(rep)}, {wall:.2f} s wall")
+    recovered("fit_drop.stop_friction", p.get("/INTER/TYPE6/1:Fric"), MU_TRUE)
 
     # (c) Fric and Sfric together: only Sfric + Fric m g is seen
     rc, rep, wall, _ = fit("slide.rad", data, [("--free", f"/INTER/TYPE6/1:Fric={MU_TRUE / 3:g},0:1"),

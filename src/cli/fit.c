@@ -11,17 +11,21 @@
  *    simulated signals. Nothing is interpolated between records.
  *  - Residuals: (simulated - measured) / scale for every measured value,
  *    scale the signal's measured range (max - min; 1 unit when flat), so
- *    that signals of different units weigh alike. Blank cells are not
- *    measured and give no residual.
+ *    that signals of different units weigh alike, or its stated
+ *    uncertainty ("+- SIGMA" in the header). Blank cells are not measured
+ *    and give no residual. Measured quantities of impacts and persistent
+ *    contacts (--impacts, each with its uncertainty) come from the run's
+ *    statistics at the session's close and add their residuals.
  *  - Solver: GSL gsl_multifit_nlinear, trust region, double dogleg by
  *    default (--trs): its steps stay inside the trust radius, whereas GSL's
  *    Levenberg-Marquardt (no geodesic acceleration; --trs lm) bounds them
  *    by its damping parameter only and, from a start 5x off, stepped the
  *    damping of a drop to 1e5 times its value, where the ball sticks and
- *    the signal no longer depends on the parameters. The fitted variables u are dimensionless:
- *    p = start + |start| u (free), p = start exp(u) (--log), and with bounds
- *    p = lo + (hi - lo) (1 + tanh u) / 2 (in log p for --log), so that
- *    every trial lies inside the bounds.
+ *    the signal no longer depends on the parameters.
+ *  - The fitted variables u are dimensionless: p = start + |start| u
+ *    (free), p = start exp(u) (--log), and with bounds p = lo + (hi - lo)
+ *    (1 + tanh u) / 2 (in log p for --log), so that every trial lies inside
+ *    the bounds.
  *  - Jacobian: finite differences in u (central by default), the columns
  *    evaluated in parallel by a pool of threads, each simulation loading and
  *    compiling its own model (the library is thread-safe for separate
@@ -30,8 +34,9 @@
  *    s^2 (J^T J)^-1 (gsl_multifit_nlinear_covar, whose pivoted QR drops
  *    dependent columns) mapped to the parameters by dp/du. A parameter the
  *    residuals do not depend on (its column of J below RC_FIT_COLUMN_TOL of
- *    the largest), dropped by the rank test, or with a relative standard
- *    error above --max-rse is UNIDENTIFIABLE: reported as such, no number.
+ *    the largest), dropped by the rank test, at its bound, or with a
+ *    relative standard error above --max-rse is UNIDENTIFIABLE: reported
+ *    as such, no number.
  */
 #include "cli/fit.h"
 

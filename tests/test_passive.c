@@ -1121,6 +1121,40 @@ static void test_ball_pivots_over_a_box_edge(void)
     rc_model_free(m);
 }
 
+/* A law's state stiffness beyond what the coordinates resolve is refused:
+ * a ball striking a wall whose Stiff line and stick spring (2.21e18 N/m)
+ * move the force by 46 N per rounding of the coordinates against a force
+ * scale of 151 N (a fuzzer scene: its friction state was rounding noise);
+ * with Stiff 1.7e18 N/m (4.2 roundings) it compiles. */
+static void test_state_stiffness_beyond_resolution_refused(void)
+{
+    const char *path = "fuzz/physics/regressions/ramp_wall_stale_jacobian_rising_limit.rad";
+    rc_model *m = NULL;
+    rc_error e;
+    const rc_status st = tu_load_compile(path, &m, &e);
+    printf("    %s\n", st ? e.msg : "(compiled)");
+    ENSURE(st == RC_EINPUT);
+    ENSURE(strstr(e.msg, "too stiff for double precision") != NULL);
+    ENSURE(strstr(e.msg, "card /INTER/TYPE6/2") != NULL && strstr(e.msg, "expected Stiff below") != NULL);
+    rc_model_free(m);
+    /* the same deck with Stiff 1.7e18 N/m */
+    FILE *f = fopen(path, "r");
+    ENSURE(f != NULL);
+    if (!f) return;
+    static char text[1 << 17];
+    const size_t n = fread(text, 1, sizeof text - 1, f);
+    fclose(f);
+    text[n] = '\0';
+    char *k = strstr(text, "2.213071818637e+18");
+    ENSURE(k != NULL);
+    if (!k) return;
+    memcpy(k, "            1.7e18", 18);
+    rc_model *m2 = tu_compile_text(text, "ramp_wall_1.7e18.rad", &e);
+    if (!m2) printf("    %s\n", e.msg);
+    ENSURE(m2 != NULL);
+    rc_model_free(m2);
+}
+
 /* ---- an elastic law with a damper: hysteresis kept at its releases ---- */
 /* A 1 kg ball dropped at 1 m/s onto a floor, linear law k = 1e6 N/m
  * (Iform 0) with Visc 400 N s/m (zeta 0.2): on each rebound the damper
@@ -1194,6 +1228,7 @@ void suite_passive(void)
     RUN_TEST(test_corner_stick_tested_with_its_spring);
     RUN_TEST(test_viscous_reversal_root_waits_for_a_limit);
     RUN_TEST(test_ball_pivots_over_a_box_edge);
+    RUN_TEST(test_state_stiffness_beyond_resolution_refused);
     RUN_TEST(test_power_rdf_root_on_damping_rate);
     RUN_TEST(test_elastic_damped_release_ledger);
     RUN_TEST(test_box_sliding_start_at_every_rtol);

@@ -1,6 +1,8 @@
 /*
  * Mesh cards: the elements whose mass makes a rigid body's (/SHELL, /SH3N,
- * /BRICK, /TETRA4), their properties (/PROP/SHELL, /PROP/SOLID) and
+ * /BRICK, /TETRA4), the spring elements between nodes (/SPRING, couplings
+ * of the bodies in the model stage), their properties (/PROP/SHELL,
+ * /PROP/SOLID, /PROP/SPRING) and
  * materials (/MAT/<law>: the density), skew frames (/SKEW/FIX) and the node
  * groups built from parts or groups (/GRNOD/PART, /GRNOD/GRNOD, expanded into
  * node lists once every card is read). Layouts: docs/case-format.md; the
@@ -79,6 +81,44 @@ static rc_status rc_card_elements(rc_reader *rd, const rc_block *b, rc_elem_kind
     return RC_OK;
 }
 
+/* /SPRING/part_ID: no title, one spring a line: sprg_ID node_ID1 node_ID2,
+ * then node_ID3..node_ID6 and Skew_ID, which only the Radioss spring types
+ * that ricochet does not read use (blank or 0 here). */
+static rc_status rc_card_springs(rc_reader *rd, const rc_block *b)
+{
+    static const char *const more =
+        "(nodes 3 to 6 belong to the pulley and multi-node spring types; ricochet reads /PROP/TYPE4 "
+        "springs between two nodes)";
+    rc_case_mesh *ms = rc_mesh(rd);
+    rc_status st;
+    if (!ms) return RC_ENOMEM;
+    if ((st = rc_header(rd, b, 1, RC_ID_REQUIRED, "part_ID", "/SPRING/part_ID"))) return st;
+    const int n = rc_block_trim(b);
+    for (int i = 0; i < n; i++) {
+        RC_GROW(rd, ms->spring, ms->capspring, ms->nspring);
+        rc_case_spring *e = &ms->spring[ms->nspring++];
+        rc_field f[] = {RC_F_INT("sprg_ID", &e->id, 0, RC_FF_POS),
+                        RC_F_INT("node_ID1", &e->nodes[0], 0, RC_FF_POS),
+                        RC_F_INT("node_ID2", &e->nodes[1], 0, RC_FF_POS),
+                        RC_F_INTN("node_ID3", NULL, RC_FF_ONLY0, more),
+                        RC_F_INTN("node_ID4", NULL, RC_FF_ONLY0, more),
+                        RC_F_INTN("node_ID5", NULL, RC_FF_ONLY0, more),
+                        RC_F_INTN("node_ID6", NULL, RC_FF_ONLY0, more),
+                        RC_F_INTN("Skew_ID", NULL, RC_FF_ONLY0,
+                                  "(a skew belongs to the six-degree-of-freedom springs, /PROP/TYPE8)")};
+        if ((st = rc_parse_line(rd, b, &b->lines[i], f, RC_NF(f)))) return st;
+        e->part_id = b->id;
+        e->loc = b->lines[i].loc;
+        if (e->nodes[0] == e->nodes[1])
+            return rc_case_fail(rd, &e->loc, b->name, "node_ID2",
+                                "expected a node other than node_ID1 = %d (a spring acts along the line "
+                                "between its two nodes), got %d",
+                                e->nodes[0], e->nodes[1]);
+        if ((st = rc_note_id(rd, RC_IDK_SPRING, e->id, &e->loc, b->hdr->text))) return st;
+    }
+    return RC_OK;
+}
+
 /* ======================================================================
  * /PROP/SHELL, /PROP/SOLID
  * ====================================================================== */
@@ -116,6 +156,77 @@ static rc_status rc_card_prop(rc_reader *rd, const rc_block *b, rc_prop_kind kin
         if ((st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
         p->thick_loc = b->lines[3].loc;
     }
+    return rc_note_id(rd, RC_IDK_PROP, p->id, &p->loc, b->hdr->text);
+}
+
+/* /PROP/SPRING/prop_ID (/PROP/TYPE4): title; Mass (1-20), sens_ID (51-60),
+ * Isflag, Ileng; K C A B D; fct_ID1 H fct_ID2 fct_ID3 fct_ID4 (blank)
+ * dmin dmax; F E Ascale Hscale (the last two lines optional). The linear
+ * spring-damper F = K dl + C dl/dt is read; the curves, rate effects,
+ * rupture, sensor and per-length input are not supported yet.
+ * /PROP/SPR_GENE (TYPE8), /PROP/SPR_BEAM (TYPE13): kept, not read. */
+static rc_status rc_card_prop_spring(rc_reader *rd, const rc_block *b, int type)
+{
+    static const char *const fct = "(a nonlinear or rate-dependent spring: ricochet reads the linear "
+                                   "spring F = K dl + C dl/dt; use /COUPLING/SPRING Iform 3 or 4 for a "
+                                   "tabulated force)";
+    rc_case_mesh *ms = rc_mesh(rd);
+    rc_status st;
+    int nd;
+    if (!ms) return RC_ENOMEM;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "prop_ID", "/PROP/SPRING/prop_ID"))) return st;
+    RC_GROW(rd, ms->prop, ms->capprop, ms->nprop);
+    rc_case_prop *p = &ms->prop[ms->nprop++];
+    p->id = b->id;
+    p->kind = RC_PROP_SPRING;
+    p->sprtype = type;
+    p->loc = b->hdr->loc;
+    if (type != 4) {
+        if ((st = rc_var_lines(rd, b, p->title, "the property's lines", &nd))) return st;
+        return rc_note_id(rd, RC_IDK_PROP, p->id, &p->loc, b->hdr->text);
+    }
+    if ((st = rc_card_lines(rd, b, p->title, 2, 4,
+                            "Mass sens_ID Isflag Ileng, K C A B D[, fct_ID1 H fct_ID2 fct_ID3 fct_ID4 dmin "
+                            "dmax[, F E Ascale Hscale]]",
+                            &nd)))
+        return st;
+    double dmin = 0, dmax = 0;
+    rc_field l1[] = {RC_F_REALD("Mass", &p->mass, 0, RC_FF_NONNEG, RC_D_M), RC_F_SKIP(30),
+                     RC_F_INTN("sens_ID", NULL, RC_FF_ONLY0, "(a spring switched on or off by a sensor)"),
+                     RC_F_INT("Isflag", NULL, 0, 0),
+                     RC_F_SET("Ileng", NULL, 0, 0, 0x3u, 0x1u, "(input per unit length)")};
+    rc_field l2[] = {RC_F_REALD("K", &p->k, 0, RC_FF_NONNEG, RC_D_K),
+                     RC_F_REALD("C", &p->c, 0, RC_FF_NONNEG, RC_D_C),
+                     RC_F_REALD("A", NULL, 0, 0, RC_D_NONE), RC_F_REALD("B", NULL, 0, 0, RC_D_NONE),
+                     RC_F_REALD("D", NULL, 0, 0, RC_D_NONE)};
+    rc_field l3[] = {RC_F_INTN("fct_ID1", NULL, RC_FF_ONLY0, fct),
+                     RC_F_SET("H", NULL, 0, 0, 0x1FFu, 0x1u, "(hardening and unloading of a nonlinear spring)"),
+                     RC_F_INTN("fct_ID2", NULL, RC_FF_ONLY0, fct),
+                     RC_F_INTN("fct_ID3", NULL, RC_FF_ONLY0, fct),
+                     RC_F_INTN("fct_ID4", NULL, RC_FF_ONLY0, fct),
+                     RC_F_SKIP(10),
+                     RC_F_REALD("dmin", &dmin, 0, 0, RC_D_L),
+                     RC_F_REALD("dmax", &dmax, 0, 0, RC_D_L)};
+    rc_field l4[] = {RC_F_REALD("F", NULL, 0, 0, RC_D_NONE), RC_F_REALD("E", NULL, 0, 0, RC_D_NONE),
+                     RC_F_REALD("Ascale", NULL, 0, 0, RC_D_NONE), RC_F_REALD("Hscale", NULL, 0, 0, RC_D_NONE)};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
+    if ((st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
+    p->thick_loc = b->lines[2].loc;
+    if (nd >= 3) {
+        if ((st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
+        /* a rupture length (0: none, as Radioss's defaults of -1e30, 1e30) */
+        if (dmin != 0 && dmin > -1e29)
+            return rc_case_fail(rd, &b->lines[3].loc, b->name, "dmin",
+                                "expected 0 or blank (no rupture), got %s: not supported yet (a spring "
+                                "that fails at a negative elongation)",
+                                l3[6].got);
+        if (dmax != 0 && dmax < 1e29)
+            return rc_case_fail(rd, &b->lines[3].loc, b->name, "dmax",
+                                "expected 0 or blank (no rupture), got %s: not supported yet (a spring "
+                                "that fails at a positive elongation)",
+                                l3[7].got);
+    }
+    if (nd >= 4 && (st = rc_parse_line(rd, b, &b->lines[4], l4, RC_NF(l4)))) return st;
     return rc_note_id(rd, RC_IDK_PROP, p->id, &p->loc, b->hdr->text);
 }
 
@@ -441,12 +552,16 @@ rc_status rc_cards_mesh(rc_reader *rd, const rc_block *b, int *handled)
     const char *kw = b->kw[0], *sub = b->nkw >= 2 ? b->kw[1] : "";
     rc_elem_kind ek = 0;
     rc_prop_kind pk = 0;
-    int grnod = -1;
+    int grnod = -1, sprtype = 0, springs = 0;
     *handled = 0;
     if (strcmp(kw, "SHELL") == 0) ek = RC_ELEM_SHELL;
     else if (strcmp(kw, "SH3N") == 0) ek = RC_ELEM_SH3N;
     else if (strcmp(kw, "BRICK") == 0) ek = RC_ELEM_BRICK;
     else if (strcmp(kw, "TETRA4") == 0) ek = RC_ELEM_TETRA4;
+    else if (strcmp(kw, "SPRING") == 0) springs = 1;
+    else if (strcmp(kw, "PROP") == 0 && (!strcmp(sub, "SPRING") || !strcmp(sub, "TYPE4"))) sprtype = 4;
+    else if (strcmp(kw, "PROP") == 0 && (!strcmp(sub, "SPR_GENE") || !strcmp(sub, "TYPE8"))) sprtype = 8;
+    else if (strcmp(kw, "PROP") == 0 && (!strcmp(sub, "SPR_BEAM") || !strcmp(sub, "TYPE13"))) sprtype = 13;
     else if (strcmp(kw, "PROP") == 0 && (!strcmp(sub, "SHELL") || !strcmp(sub, "TYPE1"))) pk = RC_PROP_SHELL;
     else if (strcmp(kw, "PROP") == 0 && (!strcmp(sub, "SOLID") || !strcmp(sub, "TYPE14"))) pk = RC_PROP_SOLID;
     else if (strcmp(kw, "GRNOD") == 0 && strcmp(sub, "PART") == 0) grnod = 1;
@@ -462,7 +577,9 @@ rc_status rc_cards_mesh(rc_reader *rd, const rc_block *b, int *handled)
     if (b->bad)
         return rc_case_fail(rd, &b->hdr->loc, b->name, NULL, "malformed card header: %s", b->bad);
     if (ek) return rc_card_elements(rd, b, ek);
+    if (springs) return rc_card_springs(rd, b);
     if (pk) return rc_card_prop(rd, b, pk);
+    if (sprtype) return rc_card_prop_spring(rd, b, sprtype);
     if (grnod >= 0) return rc_card_grnod_def(rd, b, grnod);
     if (strcmp(kw, "MAT") == 0) return rc_card_mat(rd, b);
     return rc_card_skew(rd, b);
@@ -493,6 +610,7 @@ void rc_case_mesh_free(rc_case_mesh *m)
 {
     if (!m) return;
     free(m->elem);
+    free(m->spring);
     free(m->prop);
     free(m->mat);
     free(m->skew);

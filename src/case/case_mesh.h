@@ -28,16 +28,32 @@ typedef struct rc_case_elem {
     rc_loc loc;        /* the element's line */
 } rc_case_elem;
 
-/* /PROP/SHELL (/PROP/TYPE1) and /PROP/SOLID (/PROP/TYPE14). */
-typedef enum { RC_PROP_SHELL = 1, RC_PROP_SOLID = 2 } rc_prop_kind;
+/* /SPRING/part_ID: one spring element between two nodes (its law is the
+ * part's /PROP/SPRING; the model stage makes it a coupling of the bodies
+ * that carry the nodes, model/coupling.c). */
+typedef struct rc_case_spring {
+    int id;            /* sprg_ID */
+    int part_id;       /* from the card header */
+    int nodes[2];      /* node_ID1, node_ID2 */
+    rc_loc loc;        /* the element's line */
+} rc_case_spring;
+
+/* /PROP/SHELL (/PROP/TYPE1), /PROP/SOLID (/PROP/TYPE14) and the spring
+ * properties /PROP/SPRING (/PROP/TYPE4: read), /PROP/SPR_GENE (TYPE8) and
+ * /PROP/SPR_BEAM (TYPE13) (kept, not read: an error when a spring uses
+ * them). */
+typedef enum { RC_PROP_SHELL = 1, RC_PROP_SOLID = 2, RC_PROP_SPRING = 3 } rc_prop_kind;
 
 typedef struct rc_case_prop {
     int id;
     char title[101];
     rc_prop_kind kind;
     double thick;      /* SHELL: Thick [m] */
+    int sprtype;       /* SPRING: the Radioss type, 4, 8 or 13 */
+    double mass;       /* SPRING TYPE4: Mass [kg], shared by the two nodes */
+    double k, c;       /* SPRING TYPE4: K [N/m], C [N s/m] */
     rc_loc loc;
-    rc_loc thick_loc;  /* the line holding Thick */
+    rc_loc thick_loc;  /* the line holding Thick; SPRING: the line of K and C */
 } rc_case_prop;
 
 /* /MAT/<law>/mat_ID: the density, when ricochet knows where the law keeps
@@ -86,6 +102,7 @@ typedef struct rc_case_admas {
 
 typedef struct rc_case_mesh {
     int nelem;  rc_case_elem *elem;  int capelem;
+    int nspring; rc_case_spring *spring; int capspring;
     int nprop;  rc_case_prop *prop;  int capprop;
     int nmat;   rc_case_mat *mat;    int capmat;
     int nskew;  rc_case_skew *skew;  int capskew;

@@ -325,6 +325,9 @@ static rc_status part_material(const rc_case *c, const rc_case_part *p, const rc
     if (p->prop_id && pi < 0)
         RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field prop_ID: expected the id of a /PROP/%s, got %d (no such property among /PROP/SHELL and /PROP/SOLID)",
                  RC_LOC(p->prop_loc), card, shell ? "SHELL" : "SOLID", p->prop_id);
+    if (pi >= 0 && c->mesh->prop[pi].kind == RC_PROP_SPRING)
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field prop_ID: expected a /PROP/%s for the %s elements of the part, got the spring property %d",
+                 RC_LOC(p->prop_loc), card, shell ? "SHELL" : "SOLID", elem_card(e->kind), p->prop_id);
     if (pi >= 0 && (c->mesh->prop[pi].kind == RC_PROP_SHELL) != shell)
         RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field prop_ID: expected a /PROP/%s for the %s elements of the part, got /PROP/%s/%d",
                  RC_LOC(p->prop_loc), card, shell ? "SHELL" : "SOLID", elem_card(e->kind), shell ? "SOLID" : "SHELL", p->prop_id);
@@ -441,6 +444,36 @@ static rc_status nodal_masses(const rc_case *c, mp_work *w, rc_error *err)
         }
     }
     return RC_OK;
+}
+
+/* The mass of the /PROP/SPRING (TYPE4) springs: half on each node, as
+ * Radioss lumps it; a node of a rigid body gives its share to the body
+ * (a point mass, or the main node's mass), a node in no body keeps it (a
+ * point fixed in space). Springs whose part or property does not resolve
+ * are the coupling compiler's errors (model/coupling.c). */
+static void spring_masses(const rc_case *c, mp_work *w)
+{
+    for (int e = 0; c->mesh && e < c->mesh->nspring; e++) {
+        const rc_case_spring *se = &c->mesh->spring[e];
+        const int pi = rc_case_find_part(c, se->part_id);
+        const int qi = pi >= 0 && c->part[pi].prop_id ? rc_case_find_prop(c, c->part[pi].prop_id) : -1;
+        if (qi < 0 || c->mesh->prop[qi].kind != RC_PROP_SPRING || c->mesh->prop[qi].sprtype != 4) continue;
+        const double mk = 0.5 * c->mesh->prop[qi].mass;
+        if (!(mk > 0)) continue;
+        for (int j = 0; j < 2; j++) {
+            const int n = rc_case_find_node(c, se->nodes[j]);
+            const int b = n >= 0 ? w->node_body[n] : -1;
+            if (b < 0) continue;
+            const int mn = rc_case_find_node(c, c->rbody[b].node_id);
+            if (mn == n) {
+                w->main_add[b] += mk;
+                continue;
+            }
+            double r[3];
+            for (int d = 0; d < 3; d++) r[d] = c->node[n].x[d] - (mn >= 0 ? c->node[mn].x[d] : 0);
+            add_point(&w->acc[b], r, mk);
+        }
+    }
 }
 
 /* Parts with elements in no rigid body: one error listing them. */
@@ -577,6 +610,7 @@ rc_status rc_massprop_bodies(const rc_case *c, rc_body_mp *out, rc_error *err)
     if ((st = mesh_elements(c, &w, err))) goto done;
     if ((st = orphan_parts(c, &w, err))) goto done;
     if ((st = nodal_masses(c, &w, err))) goto done;
+    spring_masses(c, &w);
     for (int b = 0; b < c->nrbody && !st; b++) {
         memset(&out[b], 0, sizeof out[b]);
         if (rc_case_find_node(c, c->rbody[b].node_id) < 0) continue; /* the compiler's error */

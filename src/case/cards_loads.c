@@ -275,10 +275,11 @@ rc_status rc_card_impvel(rc_reader *rd, const rc_block *b)
     if (v->tstop < v->tstart)
         return rc_case_fail(rd, &v->line_loc[1], b->name, "Tstop", "expected Tstop >= Tstart = %.15g, got %s",
                             v->tstart, l2[3].got);
-    if (v->tstart > 0)
+    if (v->tstart > 0 && v->dir >= 3)
         return rc_case_fail(rd, &v->line_loc[1], b->name, "Tstart",
-                            "expected Tstart <= 0, got %s: a later start (a jump of the velocity) is not "
-                            "supported yet; shape the time function instead",
-                            l2[2].got);
+                            "expected Tstart <= 0 for a rotation (Dir %s), got %s: a later start of an imposed "
+                            "rotation (a jump of the angular velocity) is not supported yet; shape the time "
+                            "function instead",
+                            dirs[v->dir], l2[2].got);
     return rc_note_id(rd, RC_IDK_IMPVEL, v->id, &v->loc, b->hdr->text);
 }

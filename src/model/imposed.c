@@ -17,7 +17,7 @@
 void rc_imp_free(rc_imposed *p)
 {
     if (!p) return;
-    void *a[] = {p->tbody, p->tdir, p->trow, p->ttab, p->tascale, p->tfscale, p->ttstop, p->rbody, p->rtab,
+    void *a[] = {p->tbody, p->tdir, p->trow, p->ttab, p->tascale, p->tfscale, p->ttstop, p->ttstart, p->rbody, p->rtab,
                  p->rascale, p->rfscale, p->rtstop, p->rqslot, p->wslot, p->row_imp};
     for (size_t k = 0; k < sizeof a / sizeof a[0]; k++) free(a[k]);
     free(p);
@@ -94,13 +94,14 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
         p->tascale = calloc((size_t)p->nt + 1, sizeof(double));
         p->tfscale = calloc((size_t)p->nt + 1, sizeof(double));
         p->ttstop = calloc((size_t)p->nt + 1, sizeof(double));
+        p->ttstart = calloc((size_t)p->nt + 1, sizeof(double));
         p->rbody = calloc((size_t)p->nr + 1, sizeof(int));
         p->rtab = calloc(3 * (size_t)p->nr + 1, sizeof(int));
         p->rascale = calloc(3 * (size_t)p->nr + 1, sizeof(double));
         p->rfscale = calloc(3 * (size_t)p->nr + 1, sizeof(double));
         p->rtstop = calloc((size_t)p->nr + 1, sizeof(double));
         p->rqslot = calloc(12 * (size_t)p->nr + 1, sizeof(int64_t));
-        if (!p->tbody || !p->tdir || !p->trow || !p->ttab || !p->tascale || !p->tfscale || !p->ttstop || !p->rbody ||
+        if (!p->tbody || !p->tdir || !p->trow || !p->ttab || !p->tascale || !p->tfscale || !p->ttstop || !p->ttstart || !p->rbody ||
             !p->rtab || !p->rascale || !p->rfscale || !p->rtstop || !p->rqslot)
             st = RC_SET(err, RC_ENOMEM, "out of memory");
     }
@@ -127,7 +128,8 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
              * = global frame at t = 0) */
             double f0, df;
             rc_table_eval(&m->table[tab], 0.0, &f0, &df);
-            if (v->tstop >= 0) y0[7 + j] = v->fscale * f0;
+            /* a later start (Tstart > 0) leaves the initial velocity free */
+            if (v->tstop >= 0 && v->tstart <= 0) y0[7 + j] = v->fscale * f0;
             if (j < 3) {
                 p->tbody[it] = b;
                 p->tdir[it] = j;
@@ -135,6 +137,7 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
                 p->tascale[it] = v->ascale;
                 p->tfscale[it] = v->fscale;
                 p->ttstop[it] = v->tstop;
+                p->ttstart[it] = v->tstart > 0 ? v->tstart : -INFINITY;
                 it++;
             } else {
                 p->rtab[3 * ir + j - 3] = tab;
@@ -228,8 +231,9 @@ void rc_imp_print(const rc_model *m, FILE *f)
     static const char *const ax = "XYZ";
     fprintf(f, "imposed     %d translation component(s), %d body rotation(s)\n", p->nt, p->nr);
     for (int k = 0; k < p->nt && k < 20; k++)
-        fprintf(f, "  /RBODY/%-6d velocity %c = %.5g f(t / %.5g) (/FUNCT/%d) until %.5g s\n", m->body_id[p->tbody[k]],
-                ax[p->tdir[k]], p->tfscale[k], p->tascale[k], m->table[p->ttab[k]].id, p->ttstop[k]);
+        fprintf(f, "  /RBODY/%-6d velocity %c = %.5g f(t / %.5g) (/FUNCT/%d) from %.5g until %.5g s\n",
+                m->body_id[p->tbody[k]], ax[p->tdir[k]], p->tfscale[k], p->tascale[k], m->table[p->ttab[k]].id,
+                isfinite(p->ttstart[k]) ? p->ttstart[k] : 0.0, p->ttstop[k]);
     for (int j = 0; j < p->nr && j < 20; j++) {
         fprintf(f, "  /RBODY/%-6d angular velocity (global axes) =", m->body_id[p->rbody[j]]);
         for (int k = 0; k < 3; k++) {

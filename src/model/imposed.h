@@ -1,6 +1,8 @@
 /*
  * Imposed velocities (/IMPVEL, docs/theory.md 1.1): a velocity
- * component of a body follows Fscale f(t / Ascale) for t <= Tstop.
+ * component of a body follows Fscale f(t / Ascale) for Tstart < t <= Tstop
+ * (a translation with Tstart > 0 is free before; at Tstart, a time
+ * breakpoint, its velocity jumps to Fscale f(Tstart / Ascale): rc_imp_start).
  *
  * Like the held DOFs of /BCS, an imposed component is a velocity state
  * whose rate the right-hand side overwrites, here with the derivative of the
@@ -36,6 +38,8 @@ typedef struct rc_imposed {
     int *trow;           /* [nt] state index of the velocity component      */
     int *ttab;           /* [nt] table index of the time function           */
     double *tascale, *tfscale, *ttstop; /* [nt] [s] [m/s] [s]               */
+    double *ttstart;     /* [nt] Tstart [s]: imposed for ttstart < t <= ttstop;
+                            -INFINITY (Tstart <= 0) from t = 0 on          */
     /* bodies with an imposed rotation (all three components) */
     int nr;
     int *rbody;          /* [nr] body index                                 */

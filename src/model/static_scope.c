@@ -99,6 +99,13 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
      * angular velocity about its global axis), each free after its Tstop;
      * a rotation about an axis that turns (two components of one body's
      * angular velocity imposed) has no closed-form path in this version */
+    for (int k = 0; m->imp && k < m->imp->nt; k++)
+        if (isfinite(m->imp->ttstart[k]))
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card /IMPVEL: " RC_STATIC_NOT " (%s, /RBODY/%d); expected Tstart <= 0 (a held "
+                               "displacement from the load time 0), or %s",
+                     RC_LOC(m->end_loc), "an imposed velocity starting later (Tstart > 0)", how,
+                     m->body_id[m->imp->tbody[k]], alt);
     for (int j = 0; m->imp && j < m->imp->nr; j++) {
         int nc = 0;
         for (int k = 0; k < 3; k++) nc += m->imp->rtab[3 * j + k] >= 0;

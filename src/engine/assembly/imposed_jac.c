@@ -32,7 +32,7 @@ int rc_imp_jac(const rc_model *m, const rc_data *d, double t, const double *y, d
     memset(dp, 0, (size_t)ny * sizeof(double));
     /* dP/dy, P the power of the reactions; cf[r]: dP/d(free rate of row r) */
     for (int k = 0; k < p->nt; k++) {
-        if (t > p->ttstop[k]) continue;
+        if (t > p->ttstop[k] || t <= p->ttstart[k]) continue;
         const int r = p->trow[k];
         const double mass = m->body_mass[p->tbody[k]];
         const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t);

@@ -28,7 +28,7 @@ void rc_imp_rhs(const rc_model *m, const rc_data *d, double t, const double *y, 
     double power = 0.0; /* of the reactions [W] */
     /* translations: reaction m (a_imposed - a_free) along the component */
     for (int k = 0; k < p->nt; k++) {
-        if (t > p->ttstop[k]) continue;
+        if (t > p->ttstop[k] || t <= p->ttstart[k]) continue;
         const int r = p->trow[k];
         const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t);
         d->sc->imp_free[r] = ydot[r];
@@ -55,4 +55,24 @@ void rc_imp_rhs(const rc_model *m, const rc_data *d, double t, const double *y, 
         for (int k = 0; k < 3; k++) power += w[k] * (J[3 * k] * dw[0] + J[3 * k + 1] * dw[1] + J[3 * k + 2] * dw[2]);
     }
     ydot[p->wadr] = -power;
+}
+
+int rc_imp_start(const rc_model *m, double t0, double t1, double *y)
+{
+    const rc_imposed *p = m->imp;
+    int n = 0;
+    for (int k = 0; p && k < p->nt; k++) {
+        const double ts = p->ttstart[k];
+        if (!(ts > t0 && ts <= t1) || ts > p->ttstop[k]) continue;
+        /* the velocity jumps to the imposed value; the support's impulse
+         * does the work m (v1^2 - v0^2) / 2, which W_imp takes back */
+        double f, df;
+        rc_table_eval(&m->table[p->ttab[k]], ts / p->tascale[k], &f, &df);
+        const int r = p->trow[k];
+        const double v0 = y[r], v1 = p->tfscale[k] * f;
+        y[p->wadr] -= 0.5 * m->body_mass[p->tbody[k]] * (v1 * v1 - v0 * v0);
+        y[r] = v1;
+        n++;
+    }
+    return n;
 }

@@ -320,6 +320,8 @@ rc_status rc_card_grnod(rc_reader *rd, const rc_block *b);
 rc_status rc_card_rbody(rc_reader *rd, const rc_block *b);
 rc_status rc_card_part(rc_reader *rd, const rc_block *b);
 rc_status rc_card_grpart(rc_reader *rd, const rc_block *b);
+/* After the last card: expand /GRPART/GRPART into part lists. */
+rc_status rc_cards_grpart_finish(rc_reader *rd);
 
 /* Joints (cards_joints.c). */
 rc_status rc_card_joint(rc_reader *rd, const rc_block *b);

@@ -33,28 +33,39 @@ static rc_case_mesh *rc_mesh(rc_reader *rd)
 static rc_status rc_card_elements(rc_reader *rd, const rc_block *b, rc_elem_kind kind)
 {
     static const char *const usage[] = {"", "/SHELL/part_ID", "/SH3N/part_ID", "/BRICK/part_ID",
-                                        "/TETRA4/part_ID"};
-    static const char *const idname[] = {"", "shell_ID", "sh3n_ID", "brick_ID", "tetra_ID"};
-    static const int nnode[] = {0, 4, 3, 8, 4};
-    static const char *const nname[] = {"node_ID1", "node_ID2", "node_ID3", "node_ID4",
-                                        "node_ID5", "node_ID6", "node_ID7", "node_ID8"};
+                                        "/TETRA4/part_ID", "/PENTA6/part_ID", "/TETRA10/part_ID"};
+    static const char *const idname[] = {"", "shell_ID", "sh3n_ID", "brick_ID", "tetra_ID", "penta_ID", "tetra_ID"};
+    static const int nnode[] = {0, 4, 3, 8, 4, 6, 10};
+    static const char *const nname[] = {"node_ID1", "node_ID2", "node_ID3", "node_ID4", "node_ID5",
+                                        "node_ID6", "node_ID7", "node_ID8", "node_ID9", "node_ID10"};
     rc_case_mesh *ms = rc_mesh(rd);
     rc_status st;
     if (!ms) return RC_ENOMEM;
     if ((st = rc_header(rd, b, 1, RC_ID_REQUIRED, "part_ID", usage[kind]))) return st;
     const int n = rc_block_trim(b), nn = nnode[kind];
     const int shell = kind == RC_ELEM_SHELL || kind == RC_ELEM_SH3N;
-    for (int i = 0; i < n; i++) {
+    /* /TETRA10: two lines an element, the id then the ten nodes */
+    const int t10 = kind == RC_ELEM_TETRA10;
+    if (t10 && n % 2)
+        return rc_case_fail(rd, &b->lines[n - 1].loc, b->name, "node_ID1",
+                            "expected the line of the ten nodes of element %s after its id line, found the end of "
+                            "the card (a /TETRA10 element is two lines: tetra_ID; node_ID1 ... node_ID10)",
+                            b->lines[n - 1].text);
+    for (int i = 0; i < n; i += 1 + t10) {
         RC_GROW(rd, ms->elem, ms->capelem, ms->nelem);
         rc_case_elem *e = &ms->elem[ms->nelem++];
         rc_field f[14];
         int k = 0;
         rc_field fid = RC_F_INT(idname[kind], &e->id, 0, RC_FF_POS);
         f[k++] = fid;
+        if (t10) {
+            if ((st = rc_parse_line(rd, b, &b->lines[i], f, 1))) return st;
+            k = 0;
+        }
         for (int j = 0; j < nn; j++) {
-            /* SHELL node 4 may be blank (a triangle) */
+            /* SHELL node 4 may be blank (a triangle), so may a TETRA10 mid-edge node */
             rc_field fj = RC_F_INT(nname[j], &e->nodes[j], 0,
-                                   kind == RC_ELEM_SHELL && j == 3 ? RC_FF_NONNEG : RC_FF_POS);
+                                   (kind == RC_ELEM_SHELL && j == 3) || (t10 && j >= 4) ? RC_FF_NONNEG : RC_FF_POS);
             f[k++] = fj;
         }
         if (shell) {
@@ -65,11 +76,11 @@ static rc_status rc_card_elements(rc_reader *rd, const rc_block *b, rc_elem_kind
             f[k++] = phi;
             f[k++] = th;
         }
-        if ((st = rc_parse_line(rd, b, &b->lines[i], f, k))) return st;
+        if ((st = rc_parse_line(rd, b, &b->lines[i + t10], f, k))) return st;
         e->kind = kind;
         e->nn = nn;
         e->part_id = b->id;
-        e->loc = b->lines[i].loc;
+        e->loc = b->lines[i + t10].loc;
         if (kind == RC_ELEM_SHELL && (e->nodes[3] == 0 || e->nodes[3] == e->nodes[2])) {
             e->nodes[3] = 0;
             e->nn = 3; /* a degenerate quadrilateral is a triangle */
@@ -439,6 +450,7 @@ static rc_status rc_grnod_fill(rc_reader *rd, int di, int depth)
             const rc_case_elem *el = &ms->elem[e];
             if (!bsearch(&el->part_id, want, (size_t)d->n, sizeof *want, rc_cmp_int)) continue;
             for (int j = 0; j < el->nn; j++) {
+                if (el->nodes[j] == 0) continue; /* a TETRA10 straight edge */
                 if (n == cap) {
                     int nc = cap ? 2 * cap : 64;
                     int *p = realloc(nodes, (size_t)nc * sizeof *p);
@@ -558,6 +570,8 @@ rc_status rc_cards_mesh(rc_reader *rd, const rc_block *b, int *handled)
     else if (strcmp(kw, "SH3N") == 0) ek = RC_ELEM_SH3N;
     else if (strcmp(kw, "BRICK") == 0) ek = RC_ELEM_BRICK;
     else if (strcmp(kw, "TETRA4") == 0) ek = RC_ELEM_TETRA4;
+    else if (strcmp(kw, "PENTA6") == 0) ek = RC_ELEM_PENTA6;
+    else if (strcmp(kw, "TETRA10") == 0) ek = RC_ELEM_TETRA10;
     else if (strcmp(kw, "SPRING") == 0) springs = 1;
     else if (strcmp(kw, "PROP") == 0 && (!strcmp(sub, "SPRING") || !strcmp(sub, "TYPE4"))) sprtype = 4;
     else if (strcmp(kw, "PROP") == 0 && (!strcmp(sub, "SPR_GENE") || !strcmp(sub, "TYPE8"))) sprtype = 8;

@@ -14,7 +14,10 @@ typedef enum {
     RC_ELEM_SHELL = 1,  /* /SHELL: 4 nodes (node 4 = node 3 or blank: triangle) */
     RC_ELEM_SH3N = 2,   /* /SH3N: 3 nodes */
     RC_ELEM_BRICK = 3,  /* /BRICK: 8 nodes (repeated nodes allowed: degenerate) */
-    RC_ELEM_TETRA4 = 4  /* /TETRA4: 4 nodes */
+    RC_ELEM_TETRA4 = 4, /* /TETRA4: 4 nodes */
+    RC_ELEM_PENTA6 = 5, /* /PENTA6: 6 nodes, triangle 1-2-3 and its opposite 4-5-6 (node k+3 above node k) */
+    RC_ELEM_TETRA10 = 6 /* /TETRA10: 4 corners, then the mid-edge nodes of 1-2, 2-3, 3-1, 1-4, 2-4, 3-4
+                           (0: the edge's midpoint, a straight edge) */
 } rc_elem_kind;
 
 /* One element. */
@@ -22,8 +25,8 @@ typedef struct rc_case_elem {
     int id;
     int part_id;       /* from the card header /SHELL/part_ID */
     rc_elem_kind kind;
-    int nn;            /* nodes used: 3, 4 or 8 */
-    int nodes[8];      /* node ids */
+    int nn;            /* nodes used: 3, 4, 6, 8 or 10 */
+    int nodes[10];     /* node ids (TETRA10: a mid-edge node may be 0) */
     double thick;      /* shells: element thickness [m] (0: the property's) */
     rc_loc loc;        /* the element's line */
 } rc_case_elem;

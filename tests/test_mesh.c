@@ -355,6 +355,33 @@ static void test_mesh_deck_skew_ispher(void)
         ENSURE_NEAR(md->body_J[1], 1.0, 1e-14, 0);
         rc_model_free(md);
     }
+    /* the same frame carried by three nodes (/SKEW/MOV with Dir X, Y, Z and
+     * /SKEW/MOV2), the nodes after the skew cards; N1 at (0.3, 0.2, 0.1) */
+    md = compile_text("/SKEW/MOV/5\nx\n11,12,13,X\n/SKEW/MOV/6\ny\n11,14,15,  y\n/SKEW/MOV/7\nz\n11,16,17,z\n"
+                      "/SKEW/MOV2/8\nz\n11,16,17\n"
+                      "/NODE\n11,0.3,0.2,0.1\n12,1.0,-0.5,0.1\n13,1.6,-0.2,0.1\n14,0.6,0.5,0.1\n15,0.6,0.5,0.6\n"
+                      "16,0.3,0.2,2.1\n17,1.3,-0.8,0.3\n"
+                      "/NODE\n1,0,0,0\n2,0,0,1\n3,0,0,2\n4,0,0,3\n"
+                      "/RBODY/1\nb\n1,0,5,3,1.0\n1.0,3.0,2.0\n0,0,0\n/RBODY/2\nb\n2,0,6,3,1.0\n1.0,3.0,2.0\n0,0,0\n"
+                      "/RBODY/3\nb\n3,0,7,3,1.0\n1.0,3.0,2.0\n0,0,0\n/RBODY/4\nb\n4,0,8,3,1.0\n1.0,3.0,2.0\n0,0,0\n"
+                      RUN_TAIL, &e);
+    ENSURE(md != NULL);
+    if (!md) fprintf(stderr, "  %s\n", e.msg);
+    for (int b = 0; md && b < 4; b++) {
+        ENSURE_NEAR(md->body_J[9 * b + 0], 2.0, 1e-14, 0);
+        ENSURE_NEAR(md->body_J[9 * b + 4], 2.0, 1e-14, 0);
+        ENSURE_NEAR(md->body_J[9 * b + 8], 2.0, 1e-14, 0);
+        ENSURE_NEAR(md->body_J[9 * b + 1], 1.0, 1e-14, 0);
+        ENSURE_NEAR(md->body_J[9 * b + 2], 0.0, 0, 1e-14);
+    }
+    rc_model_free(md);
+    EXPECT_MESH_ERROR("/NODE\n1,0,0,0\n2,1,0,0\n/SKEW/MOV/5\nx\n1,2,3\n" RUN_TAIL, ":6:", "card /SKEW/MOV/5",
+                      "field node_ID3", "no such node");
+    EXPECT_MESH_ERROR("/NODE\n1,0,0,0\n2,1,0,0\n3,2,0,0\n/SKEW/MOV/5\nx\n1,2,3\n" RUN_TAIL, ":7:",
+                      "card /SKEW/MOV/5", "field node_ID1 node_ID2 node_ID3", "not on one line");
+    EXPECT_MESH_ERROR("/SKEW/MOV/5\nx\n1,2,3,W\n" RUN_TAIL, ":3:", "card /SKEW/MOV/5", "field Dir", "X, Y or Z");
+    EXPECT_MESH_ERROR("/SKEW/MOV/5\nx\n1,2,1\n" RUN_TAIL, ":3:", "card /SKEW/MOV/5", "three different nodes");
+    EXPECT_MESH_ERROR("/SKEW/CYL/5\nx\n1,2,1\n" RUN_TAIL, ":1:", "/SKEW/CYL/5", "not supported yet", "/SKEW/MOV");
     md = compile_text("/NODE\n1,0,0,0\n/RBODY/1\nb\n1,0,0,0,1.0\n1.0,1.0,1e-6\n0,0,0\n" RUN_TAIL, &e);
     ENSURE(md != NULL);
     if (md) {

@@ -3,8 +3,8 @@
  * function), the Radioss cards ignored or planned, and the call of a
  * card's function. The card functions live in one file per family:
  *   cards_bodies.c      /NODE /GRNOD/NODE /RBODY /PART /GRPART/PART /GRPART/GRPART
- *   cards_mesh.c        /SHELL /SH3N /BRICK /TETRA4 /SPRING /PROP/SHELL /PROP/SOLID /PROP/SPRING /MAT
- *                       /SKEW/FIX /GRNOD/PART /GRNOD/GRNOD (called first)
+ *   cards_mesh.c        /SHELL /SH3N /BRICK /TETRA4 /PENTA6 /TETRA10 /SPRING /PROP/SHELL /PROP/SOLID /PROP/SPRING /MAT
+ *                       /SKEW/FIX /SKEW/MOV /SKEW/MOV2 /GRNOD/PART /GRNOD/GRNOD (called first)
  *   cards_surfaces.c    /SURF/PLANE /SURF/ELLIPS /SURF/CYL /SURF/BOX /SURF/SEG /SURF/PART
  *   cards_interfaces.c  /INTER/TYPE6 /INTER/POWER
  *   cards_friction.c    /FRICTION /FRIC_ORIENT

@@ -1,9 +1,10 @@
 /*
  * Mesh cards: the elements whose mass makes a rigid body's (/SHELL, /SH3N,
- * /BRICK, /TETRA4), the spring elements between nodes (/SPRING, couplings
+ * /BRICK, /TETRA4, /PENTA6, /TETRA10), the spring elements between nodes (/SPRING, couplings
  * of the bodies in the model stage), their properties (/PROP/SHELL,
  * /PROP/SOLID, /PROP/SPRING) and
- * materials (/MAT/<law>: the density), skew frames (/SKEW/FIX) and the node
+ * materials (/MAT/<law>: the density), skew frames (/SKEW/FIX, /SKEW/MOV,
+ * /SKEW/MOV2: their axes from the nodes after the last card) and the node
  * groups built from parts or groups (/GRNOD/PART, /GRNOD/GRNOD, expanded into
  * node lists once every card is read). Layouts: docs/case-format.md; the
  * mass properties are computed by the model stage (model/massprop.c).
@@ -310,6 +311,91 @@ static void rc_cross3(const double *a, const double *b, double *o)
     o[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+/* /SKEW/MOV/skew_ID: title; node_ID1 node_ID2 node_ID3 Dir.
+ * /SKEW/MOV2/skew_ID: title; node_ID1 node_ID2 node_ID3 (Dir Z).
+ * The axes come from the nodes once every card is read. */
+static rc_status rc_card_skew_mov(rc_reader *rd, const rc_block *b, int mov2)
+{
+    rc_case_mesh *ms = rc_mesh(rd);
+    rc_status st;
+    int nd;
+    char dir[11] = "";
+    if (!ms) return RC_ENOMEM;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "skew_ID", mov2 ? "/SKEW/MOV2/skew_ID" : "/SKEW/MOV/skew_ID")))
+        return st;
+    RC_GROW(rd, ms->skew, ms->capskew, ms->nskew);
+    rc_case_skew *s = &ms->skew[ms->nskew++];
+    s->id = b->id;
+    s->loc = b->hdr->loc;
+    s->mov = 1 + mov2;
+    if ((st = rc_card_lines(rd, b, s->title, 1, 1, mov2 ? "node_ID1 node_ID2 node_ID3" : "node_ID1 node_ID2 node_ID3 Dir",
+                            &nd)))
+        return st;
+    rc_field l1[] = {RC_F_INT("node_ID1", &s->nodes[0], 0, RC_FF_POS), RC_F_INT("node_ID2", &s->nodes[1], 0, RC_FF_POS),
+                     RC_F_INT("node_ID3", &s->nodes[2], 0, RC_FF_POS), RC_F_STR("Dir", dir, 10)};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, mov2 ? 3 : 4))) return st;
+    s->line_loc = b->lines[1].loc;
+    s->dir = 2;
+    if (!mov2) {
+        const char d = (char)(dir[0] & ~0x20);
+        if (!dir[0]) s->dir = 0; /* X by default */
+        else if (!dir[1] && (d == 'X' || d == 'Y' || d == 'Z')) s->dir = d - 'X';
+        else
+            return rc_case_fail(rd, &s->line_loc, b->name, "Dir", "expected X, Y or Z (the axis from node_ID1 to "
+                                "node_ID2), got %s", l1[3].got);
+    }
+    if (s->nodes[0] == s->nodes[1] || s->nodes[0] == s->nodes[2] || s->nodes[1] == s->nodes[2])
+        return rc_case_fail(rd, &s->line_loc, b->name, "node_ID1 node_ID2 node_ID3",
+                            "expected three different nodes, got %d, %d, %d", s->nodes[0], s->nodes[1], s->nodes[2]);
+    return rc_note_id(rd, RC_IDK_SKEW, s->id, &s->loc, b->hdr->text);
+}
+
+/* The axes of a /SKEW/MOV or /SKEW/MOV2 from its nodes' positions: the
+ * axis Dir (k) along N1 -> N2, the next one (k+1, cyclically) in the plane
+ * of N1 N2 N3 on the side of N3: a'' = N3 - N1, axis k+2 = axis k x a''
+ * (normalised), axis k+1 = axis k+2 x axis k; origin N1. */
+static rc_status rc_skew_mov_axes(rc_reader *rd, rc_case_skew *s)
+{
+    rc_case *c = rd->c;
+    const double *x[3];
+    char card[40];
+    snprintf(card, sizeof card, "/SKEW/%s/%d", s->mov == 2 ? "MOV2" : "MOV", s->id);
+    for (int j = 0; j < 3; j++) {
+        int n = -1;
+        for (int q = 0; q < c->nnode && n < 0; q++)
+            if (c->node[q].id == s->nodes[j]) n = q;
+        if (n < 0) {
+            char f[12];
+            snprintf(f, sizeof f, "node_ID%d", j + 1);
+            return rc_case_fail(rd, &s->line_loc, card, f, "expected the id of a /NODE, got %d (no such node)",
+                                s->nodes[j]);
+        }
+        x[j] = c->node[n].x;
+    }
+    const int k = s->dir, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+    double a[3], b[3], z[3];
+    for (int d = 0; d < 3; d++) {
+        a[d] = x[1][d] - x[0][d];
+        b[d] = x[2][d] - x[0][d];
+        s->origin[d] = x[0][d];
+    }
+    const double na = rc_norm3(a);
+    rc_cross3(a, b, z);
+    const double nz = rc_norm3(z);
+    if (!(na > 0) || !(nz > 1e-10 * na * rc_norm3(b)))
+        return rc_case_fail(rd, &s->line_loc, card, "node_ID1 node_ID2 node_ID3",
+                            "expected three nodes not on one line (they define a plane), got nodes %d, %d, %d at "
+                            "(%.9g, %.9g, %.9g), (%.9g, %.9g, %.9g), (%.9g, %.9g, %.9g)",
+                            s->nodes[0], s->nodes[1], s->nodes[2], x[0][0], x[0][1], x[0][2], x[1][0], x[1][1], x[1][2],
+                            x[2][0], x[2][1], x[2][2]);
+    for (int d = 0; d < 3; d++) {
+        s->axis[k][d] = a[d] / na;
+        s->axis[k2][d] = z[d] / nz;
+    }
+    rc_cross3(s->axis[k2], s->axis[k], s->axis[k1]);
+    return RC_OK;
+}
+
 /* /SKEW/FIX/skew_ID: title; origin; vector Y'; vector Z'. */
 static rc_status rc_card_skew(rc_reader *rd, const rc_block *b)
 {
@@ -318,9 +404,11 @@ static rc_status rc_card_skew(rc_reader *rd, const rc_block *b)
     int nd;
     double v1[3], v2[3], x[3];
     if (!ms) return RC_ENOMEM;
+    if (b->nkw >= 2 && (strcmp(b->kw[1], "MOV") == 0 || strcmp(b->kw[1], "MOV2") == 0))
+        return rc_card_skew_mov(rd, b, strcmp(b->kw[1], "MOV2") == 0);
     if (b->nkw < 2 || strcmp(b->kw[1], "FIX") != 0)
         return rc_case_fail(rd, &b->hdr->loc, b->name, NULL,
-                            "%s: not supported yet (supported: /SKEW/FIX)", b->name);
+                            "%s: not supported yet (supported: /SKEW/FIX, /SKEW/MOV, /SKEW/MOV2)", b->name);
     if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "skew_ID", "/SKEW/FIX/skew_ID"))) return st;
     RC_GROW(rd, ms->skew, ms->capskew, ms->nskew);
     rc_case_skew *s = &ms->skew[ms->nskew++];
@@ -518,6 +606,8 @@ rc_status rc_cards_mesh_finish(rc_reader *rd)
     rc_status st;
     for (int k = 0; ms && k < ms->ndef; k++)
         if ((st = rc_grnod_fill(rd, k, 0))) return st;
+    for (int k = 0; ms && k < ms->nskew; k++)
+        if (ms->skew[k].mov && (st = rc_skew_mov_axes(rd, &ms->skew[k]))) return st;
     return RC_OK;
 }
 

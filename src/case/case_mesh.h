@@ -73,13 +73,20 @@ typedef struct rc_case_mat {
 } rc_case_mat;
 
 /* /SKEW/FIX/skew_ID: origin and the axes (unit, orthonormal, right-handed):
- * Y' along (X1, Y1, Z1), X' = Y' x V2, Z' = X' x Y' (docs). */
+ * Y' along (X1, Y1, Z1), X' = Y' x V2, Z' = X' x Y' (docs).
+ * /SKEW/MOV/skew_ID and /SKEW/MOV2/skew_ID: a frame carried by three nodes,
+ * its origin and axes those of the nodes' initial positions (filled once
+ * every card is read, rc_cards_mesh_finish). */
 typedef struct rc_case_skew {
     int id;
     char title[101];
     double origin[3];  /* [m] */
     double axis[3][3]; /* axis[k] = unit vector of axis k (X', Y', Z') in global axes */
+    int mov;           /* 0: FIX; 1: MOV; 2: MOV2 */
+    int nodes[3];      /* MOV, MOV2: node_ID1..node_ID3 */
+    int dir;           /* MOV: the axis N1 -> N2, 0 X, 1 Y, 2 Z (MOV2: 2) */
     rc_loc loc;
+    rc_loc line_loc;   /* MOV, MOV2: the line of the nodes */
 } rc_case_skew;
 
 /* /GRNOD/PART and /GRNOD/GRNOD before expansion: the ids they name. The

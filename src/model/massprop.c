@@ -584,7 +584,7 @@ static rc_status finish_body(const rc_case *c, int b, const rc_mp *a, double mai
     if (rb->skew_id) {
         const int s = rc_case_find_skew(c, rb->skew_id);
         if (s < 0)
-            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field Skew_ID: expected the id of a /SKEW/FIX, got %d (no such skew)",
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field Skew_ID: expected the id of a /SKEW/FIX, /SKEW/MOV or /SKEW/MOV2, got %d (no such skew)",
                      RC_LOC(l1), rb->id, rb->skew_id);
         const double(*ax)[3] = (const double(*)[3])c->mesh->skew[s].axis;
         for (int i = 0; i < 3; i++)

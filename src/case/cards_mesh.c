@@ -51,7 +51,7 @@ static rc_status rc_card_elements(rc_reader *rd, const rc_block *b, rc_elem_kind
         return rc_case_fail(rd, &b->lines[n - 1].loc, b->name, "node_ID1",
                             "expected the line of the ten nodes of element %s after its id line, found the end of "
                             "the card (a /TETRA10 element is two lines: tetra_ID; node_ID1 ... node_ID10)",
-                            b->lines[n - 1].text);
+                            b->lines[n - 1].text + strspn(b->lines[n - 1].text, " \t,"));
     for (int i = 0; i < n; i += 1 + t10) {
         RC_GROW(rd, ms->elem, ms->capelem, ms->nelem);
         rc_case_elem *e = &ms->elem[ms->nelem++];

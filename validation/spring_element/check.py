@@ -10,8 +10,9 @@ at its initial length):
      w = sqrt(K/mu), mu = m2 m3/(m2 + m3), period 2 pi sqrt(mu/K); the
      momentum is conserved.
 Checks the histories (max error below 1e-6 of the amplitude), the
-half-period zero crossing of B, the momentum, and that the error shrinks
-as rtol shrinks (README.md).
+half-period zero crossing of B, the momentum, that the error shrinks as
+rtol shrinks, and the static analysis of a body hanging on a spring
+element (z - z0 = -m g/K) (README.md).
 """
 import math
 import os
@@ -36,6 +37,7 @@ MU = M2E * M3E / (M2E + M3E)
 WA = math.sqrt(KA / MA)
 WB = math.sqrt(KB / MU)
 T_END = 6 * 2 * math.pi / min(WA, WB)
+MS_H, K_H, G = 0.73, 3700.0, 9.81          # the static case: mass, stiffness, gravity
 
 
 def ref_a(t):
@@ -83,6 +85,21 @@ def deck(rtol=1e-9):
     return d
 
 
+def deck_static():
+    """A body hanging from a fixed node on a /SPRING (TYPE4) under gravity,
+    solved by the static analysis (/SOLVER Method 3): z = z0 - m g / K."""
+    d = Deck("spring element (TYPE4) under gravity, static")
+    d.nodes([(1, 0.1, 0.2, 0.3), (9, 0.1, 0.2, 1.1)])
+    d.rbody(1, 1, MS_H, [0.3, 0.4, 0.5], title="hanging body")
+    d.grav(1, "Z", -G)
+    d.add("/PART/7", line(("i", 3), ("i", 0)), title="spring")
+    d.add("/PROP/TYPE4/3", line(("r", 0.0)), line(("r", K_H), ("r", 0.0)), title="K = 3700 N/m")
+    d.add("/SPRING/7", line(("i", 71), ("i", 9), ("i", 1)))
+    d.run(1.0, 0.25)
+    d.solver(method=3)
+    return d
+
+
 def errors(path):
     r = rcval.Result(path)
     xa = r.pos[:, 0, :]
@@ -118,6 +135,15 @@ def main():
         rcval.check("spring_element.period", False, "no return to the rest length found")
     rcval.check("spring_element.momentum", em < 1e-9,
                 f"momentum of the two bodies: max change {em:.2e} of m3 v0 (< 1e-9)")
+    # the static analysis (whatever the mode: its /SOLVER kept, Method 3)
+    method = rcval.METHOD
+    rcval.METHOD = "static" if method else ""
+    rs = rcval.Result(rcval.run_case("case_static.rad", keep_solver=True))
+    rcval.METHOD = method
+    dz = float(np.max(np.abs(rs.pos[1:, 0, 2] - (0.3 - MS_H * G / K_H))))
+    rcval.check("spring_element.static", dz < 1e-9 * MS_H * G / K_H + 1e-15,
+                f"static analysis of a body hanging on a spring element: z - z0 = -m g/K to {dz:.2e} m "
+                f"(of m g/K = {MS_H * G / K_H:.4e} m, < 1e-9 of it)")
     errs = [max(errors(rcval.run(deck(rtol), keep_solver=True))[1:3]) for rtol in (1e-6, 1e-8, 1e-10)]
     rcval.check("spring_element.convergence", errs[2] < errs[1] < errs[0],
                 "max error / amplitude at rtol 1e-6, 1e-8, 1e-10: " + ", ".join(f"{x:.2e}" for x in errs))
@@ -125,4 +151,4 @@ def main():
 
 
 if __name__ == "__main__":
-    rcval.entry(main, deck)
+    rcval.entry(main, lambda: {"case.rad": deck(), "case_static.rad": deck_static()})

@@ -390,6 +390,20 @@ static void test_coupling_spring_element_errors(void)
     EXPECT_ERROR(text, 1, 29, "card /SPRING/7", "one rigid body", "/RBODY/1");
     snprintf(text, sizeof text, SPR_BODIES "/NODE\n11,0,0,0\n12,1,0,0\n/PART/7\nsprings\n3\n%s/SPRING/7\n31,11,12\n", p4);
     EXPECT_ERROR(text, 1, 32, "card /SPRING/7", "no /RBODY");
+    /* a ground node (in no body, its translations held by /BCS), as Radioss
+     * decks hold a spring's far end: the /BCS and the /GRAV of a group
+     * holding it skip it; without the /BCS the /GRAV names it */
+    snprintf(text, sizeof text,
+             SPR_BODIES "/NODE\n11,0,0,-1\n/GRNOD/NODE/8\nground and body 1\n11,1\n/BCS/1\nground\n111 000,0,8\n"
+                        "/GRAV/1\ng\n0,Z,0,0,8,,1,-9.81\n/PART/7\nsprings\n3\n%s/SPRING/7\n31,11,1\n", p4);
+    rc_model *m = compile_deck(text);
+    ENSURE(m && m->cpl->n == 1 && m->cpl->b1[0] == -1 && m->cpl->b2[0] == 0 && m->body_fixed[0] == 0);
+    if (m) ENSURE(m->body_dofmask[0] == 1 && m->body_grav[2] == -9.81);
+    rc_model_free(m);
+    snprintf(text, sizeof text,
+             SPR_BODIES "/NODE\n11,0,0,-1\n/GRNOD/NODE/8\nground and body 1\n11,1\n"
+                        "/GRAV/1\ng\n0,Z,0,0,8,,1,-9.81\n/PART/7\nsprings\n3\n%s/SPRING/7\n31,11,1\n", p4);
+    EXPECT_ERROR(text, 1, 25, "card /GRNOD/NODE/8", "node 11 belongs to no /RBODY", "/GRAV/1");
 #undef SPRE
 }
 

@@ -35,8 +35,25 @@
     } while (0)
 
 
+/* Is node_id, a node in no body, held in its three translations by a /BCS
+ * (a ground node of Radioss's kind: in ricochet a node in no body is a
+ * point fixed in space, the end of a spring element)? */
+static int grounded(const rc_case *c, int node_id)
+{
+    for (int k = 0; k < c->nbcs; k++) {
+        const rc_case_bcs *bc = &c->bcs[k];
+        if (!(bc->fix[0] == 1 && bc->fix[1] == 1 && bc->fix[2] == 1)) continue;
+        const int g = bc->grnod_id ? rc_case_find_grnod(c, bc->grnod_id) : -1;
+        for (int j = 0; g >= 0 && j < c->grnod[g].n; j++)
+            if (c->grnod[g].nodes[j] == node_id) return 1;
+    }
+    return 0;
+}
+
 /* Bodies of the nodes of group `gid` -> flag array (all bodies when gid = 0).
- * `loc`: the line of the referring card that holds grnod_ID. */
+ * `loc`: the line of the referring card that holds grnod_ID. A node in no
+ * body is an error, unless a /BCS holds its translations (grounded): that
+ * /BCS and the /INIVEL, /GRAV of its group then skip it. */
 static rc_status group_bodies(const rc_case *c, int gid, rc_loc loc, const char *card, int *flag,
                               rc_error *err)
 {
@@ -48,11 +65,13 @@ static rc_status group_bodies(const rc_case *c, int gid, rc_loc loc, const char 
                  RC_LOC(loc), card, gid);
     for (int k = 0; k < c->grnod[g].n; k++) {
         int b = rc_case_body_of_node(c, c->grnod[g].nodes[k]);
+        if (b < 0 && grounded(c, c->grnod[g].nodes[k])) continue;
         if (b < 0) {
             const rc_loc nl = rc_loc_at(c->grnod[g].node_loc, k, c->grnod[g].loc);
             RC_RAISE(err, RC_EINPUT,
                      RC_LOCFMT "card /GRNOD/NODE/%d, field node_ID: node %d belongs to no /RBODY (ricochet bodies are "
-                     "rigid); the group is used by %s at %s:%d",
+                     "rigid; a node in no body is a point fixed in space, accepted here when a /BCS holds its "
+                     "translations); the group is used by %s at %s:%d",
                      RC_LOC(nl), gid, c->grnod[g].nodes[k], card, RC_LOC(loc));
         }
         flag[b] = 1;

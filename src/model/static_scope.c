@@ -100,6 +100,13 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
      * a rotation about an axis that turns (two components of one body's
      * angular velocity imposed) has no closed-form path in this version */
     for (int k = 0; m->imp && k < m->imp->nt; k++)
+        if (m->imp->tdir[k] < 0)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card /IMPVEL: " RC_STATIC_NOT " (%s, /RBODY/%d); expected a velocity along a global "
+                               "axis, or %s",
+                     RC_LOC(m->end_loc), "an imposed velocity along a skew axis (skew_ID)", how,
+                     m->body_id[m->imp->tbody[k]], alt);
+    for (int k = 0; m->imp && k < m->imp->nt; k++)
         if (isfinite(m->imp->ttstart[k]))
             RC_RAISE(err, RC_EINPUT,
                      RC_LOCFMT "card /IMPVEL: " RC_STATIC_NOT " (%s, /RBODY/%d); expected Tstart <= 0 (a held "

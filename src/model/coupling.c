@@ -161,25 +161,11 @@ static rc_status compile_one(const rc_case *c, rc_model *m, int k, rc_error *err
 
 static int has_stops(const rc_case_joint *cj) { return cj->has_lo || cj->has_hi; }
 
-/* The /SPRING element e (case mesh) as coupling k: a TYPE4 spring is the
- * linear spring-damper of /COUPLING/SPRING Iform 1 between the points of
- * its two nodes, relaxed at their initial distance, k = K, k_d = C. A node
- * in no rigid body is a point fixed in space. */
-static rc_status compile_spring_elem(const rc_case *c, rc_model *m, int e, int k, rc_error *err)
+/* The law of /SPRING element se: its part's /PROP/SPRING (TYPE4), checked. */
+static rc_status spring_prop(const rc_case *c, const rc_case_spring *se, const rc_case_prop **out, rc_error *err)
 {
-    const rc_case_spring *se = &c->mesh->spring[e];
-    rc_couplings *p = m->cpl;
     char card[64];
     snprintf(card, sizeof card, "/SPRING/%d", se->part_id);
-    char name[96];
-    snprintf(name, sizeof name, "/SPRING/%d element %d", se->part_id, se->id);
-    if (!(p->name[k] = malloc(strlen(name) + 1))) RC_RAISE(err, RC_ENOMEM, "out of memory");
-    strcpy(p->name[k], name);
-    p->id[k] = se->id;
-    p->kind[k] = RC_CPL_SPRING;
-    p->type[k] = "SPRING_ELEMENT";
-    p->table[k] = -1;
-    /* the law: part -> property */
     const int pi = rc_case_find_part(c, se->part_id);
     if (pi < 0)
         RC_RAISE(err, RC_EINPUT,
@@ -202,6 +188,40 @@ static rc_status compile_spring_elem(const rc_case *c, rc_model *m, int e, int k
                            "/PROP/TYPE%d/%d (%s:%d) for %s spring %d",
                  RC_LOC(rc_loc_or(pt->prop_loc, pt->loc)), pt->id, q->sprtype, q->sprtype == 8 ? "SPR_GENE" : "SPR_BEAM",
                  q->sprtype, q->id, q->loc.file, q->loc.line, card, se->id);
+    *out = q;
+    return RC_OK;
+}
+
+/* Is /SPRING element se inside one rigid body (both nodes on it)? Such a
+ * spring never stretches: it is left out, as the rigid body moves both its
+ * nodes in Radioss. */
+static int spring_inside_body(const rc_case *c, const rc_case_spring *se)
+{
+    const int b1 = rc_case_body_of_node(c, se->nodes[0]);
+    return b1 >= 0 && b1 == rc_case_body_of_node(c, se->nodes[1]);
+}
+
+/* The /SPRING element e (case mesh) as coupling k: a TYPE4 spring is the
+ * linear spring-damper of /COUPLING/SPRING Iform 1 between the points of
+ * its two nodes, relaxed at their initial distance, k = K, k_d = C. A node
+ * in no rigid body is a point fixed in space. */
+static rc_status compile_spring_elem(const rc_case *c, rc_model *m, int e, int k, rc_error *err)
+{
+    const rc_case_spring *se = &c->mesh->spring[e];
+    rc_couplings *p = m->cpl;
+    char card[64];
+    snprintf(card, sizeof card, "/SPRING/%d", se->part_id);
+    char name[96];
+    snprintf(name, sizeof name, "/SPRING/%d element %d", se->part_id, se->id);
+    if (!(p->name[k] = malloc(strlen(name) + 1))) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    strcpy(p->name[k], name);
+    p->id[k] = se->id;
+    p->kind[k] = RC_CPL_SPRING;
+    p->type[k] = "SPRING_ELEMENT";
+    p->table[k] = -1;
+    const rc_case_prop *q = NULL;
+    rc_status st = spring_prop(c, se, &q, err);
+    if (st) return st;
     p->law_loc[k] = rc_loc_or(q->thick_loc, q->loc);
     /* ends: the body carrying each node, or a point fixed in space */
     int *bs[2] = {&p->b1[k], &p->b2[k]};
@@ -224,12 +244,6 @@ static rc_status compile_spring_elem(const rc_case *c, rc_model *m, int e, int k
                  RC_LOCFMT "card %s, field node_ID1: spring %d joins nodes %d and %d, which belong to no /RBODY: "
                            "expected at least one node of a rigid body (a node in no body is a point fixed in space)",
                  RC_LOC(se->loc), card, se->id, se->nodes[0], se->nodes[1]);
-    if (p->b1[k] == p->b2[k])
-        RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card %s, field node_ID2: spring %d joins nodes %d and %d of one rigid body, /RBODY/%d: "
-                           "expected nodes of two bodies (or a body and a node in no body, fixed in space); "
-                           "inside a rigid body a spring never stretches",
-                 RC_LOC(se->loc), card, se->id, se->nodes[0], se->nodes[1], c->rbody[p->b1[k]].id);
     const double dist = sqrt(pow(x[1][0] - x[0][0], 2) + pow(x[1][1] - x[0][1], 2) + pow(x[1][2] - x[0][2], 2));
     if (!(dist > 0))
         RC_RAISE(err, RC_EINPUT,
@@ -301,8 +315,14 @@ rc_status rc_cpl_compile(const rc_case *c, rc_model *m, rc_error *err)
 {
     gsl_set_error_handler_off(); /* GSL reports through return codes */
     m->cpl = calloc(1, sizeof *m->cpl);
-    int nlim = 0;
-    const int nspr = c->mesh ? c->mesh->nspring : 0;
+    int nlim = 0, nspr = 0;
+    /* the /SPRING elements: their laws checked, those inside one body left out */
+    for (int e = 0; c->mesh && e < c->mesh->nspring; e++) {
+        const rc_case_prop *q;
+        rc_status st = spring_prop(c, &c->mesh->spring[e], &q, err);
+        if (st) return st;
+        nspr += !spring_inside_body(c, &c->mesh->spring[e]);
+    }
     for (int j = 0; j < c->njoint; j++) nlim += has_stops(&c->joint[j]);
     if (!m->cpl || alloc_arrays(m->cpl, c->ncoupling + nspr + nlim))
         RC_RAISE(err, RC_ENOMEM, "out of memory compiling the couplings");
@@ -316,10 +336,10 @@ rc_status rc_cpl_compile(const rc_case *c, rc_model *m, rc_error *err)
         st = compile_one(c, m, k, err);
         if (st) return st;
     }
-    for (int e = 0; e < nspr; e++) {
-        const int k = c->ncoupling + e;
+    for (int e = 0, k = c->ncoupling; c->mesh && e < c->mesh->nspring; e++) {
+        if (spring_inside_body(c, &c->mesh->spring[e])) continue;
         m->cpl->ct->fadr[k + 1] = m->cpl->ct->fadr[k] = m->cpl->ct->nface;
-        if ((st = compile_spring_elem(c, m, e, k, err))) return st;
+        if ((st = compile_spring_elem(c, m, e, k++, err))) return st;
     }
     for (int j = 0, k = c->ncoupling + nspr; j < c->njoint; j++) {
         if (!has_stops(&c->joint[j])) continue;

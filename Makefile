@@ -115,7 +115,8 @@ $(BUILD)/commit.stamp: FORCE
 	@echo '$(RC_COMMIT)' | cmp -s - $@ || echo '$(RC_COMMIT)' > $@
 $(BUILD)/obj/base/commit.o: $(BUILD)/commit.stamp
 
-$(BIN): $(BUILD)/obj/cli/main.o $(LIB)
+CLI_OBJ := $(patsubst src/%.c,$(BUILD)/obj/%.o,$(wildcard src/cli/*.c))
+$(BIN): $(CLI_OBJ) $(LIB)
 	$(CC) $(ALLCFLAGS) -o $@ $^ $(LDLIBS)
 
 $(TESTBIN): $(TEST_OBJ) $(LIB)

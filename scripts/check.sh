@@ -28,6 +28,13 @@ cat "$log"
 pass=$((pass + $(grep -c '^PASS ' "$log")))
 fail=$((fail + $(grep -c '^FAIL ' "$log")))
 
+# ricochet fit: a small fit, the report, the data file's input errors
+# (tests/fit_test.sh)
+bash tests/fit_test.sh "$build/ricochet" > "$log" 2>&1
+cat "$log"
+pass=$((pass + $(grep -c '^PASS ' "$log")))
+fail=$((fail + $(grep -c '^FAIL ' "$log")))
+
 # animations of results files (scripts/animate.py): frames, exit codes
 bash tests/animate_test.sh "$build/ricochet" > "$log" 2>&1
 cat "$log"
@@ -104,6 +111,8 @@ py_suite() {
     fi
 }
 py_suite pyrun tests/python_run_test.py
+# ricochet.fit: the program's `ricochet fit` from Python (its JSON report)
+py_suite pyfit tests/python_fit_test.py
 
 # studies on a real Dask cluster: a scheduler and two worker processes
 # started by the test (killed at its end), results against serial runs bit

@@ -11,6 +11,7 @@
 #include "case/case_power.h"
 #include "model/imposed.h"
 #include "model/model.h"
+#include "model/table.h"
 #include "harness.h"
 #include "testutil.h"
 #include "engine/assembly/assembly.h"
@@ -607,6 +608,51 @@ static void test_engine_jacobian_impvel_skew_matches_finite_differences(void)
     pimp[0].dir = 0;
 }
 
+/* The smoothed slope of a tabulated curve (the viscous friction's
+ * stiffness): the segments' slopes at their mid-points, linear between
+ * them, continuous where x crosses a point of the curve (where the slope of
+ * the piecewise-linear curve jumps), constant beyond the end mid-points;
+ * its derivative against central differences. */
+static void test_engine_table_slope_smooth(void)
+{
+    const double x[5] = {0.0, 0.3, 1.0, 3.0, 10.0}, y[5] = {0.0, 0.2, 1.0, 5.4, 46.0};
+    rc_table t;
+    rc_error e;
+    ENSURE(rc_table_init(&t, 1, 5, x, y, &e) == RC_OK);
+    double d;
+    const double s0 = 0.2 / 0.3, s1 = 0.8 / 0.7, s2 = 4.4 / 2.0, s3 = 40.6 / 7.0;
+    ENSURE_NEAR(rc_table_slope_smooth(&t, -1.0, &d), s0, 1e-15, 0.0);
+    ENSURE(d == 0.0);
+    ENSURE_NEAR(rc_table_slope_smooth(&t, 0.15, &d), s0, 1e-15, 0.0);
+    ENSURE_NEAR(rc_table_slope_smooth(&t, 0.65, &d), s1, 1e-14, 0.0);
+    ENSURE_NEAR(rc_table_slope_smooth(&t, 2.0, &d), s2, 1e-14, 0.0);
+    ENSURE_NEAR(rc_table_slope_smooth(&t, 6.5, &d), s3, 1e-14, 0.0);
+    ENSURE_NEAR(rc_table_slope_smooth(&t, 50.0, &d), s3, 1e-14, 0.0);
+    ENSURE(d == 0.0);
+    /* at a point of the curve: the mean of the two mid-point lines, no jump */
+    for (int k = 1; k < 4; k++) {
+        const double h = 1e-9 * x[k];
+        const double a = rc_table_slope_smooth(&t, x[k] - h, &d), b = rc_table_slope_smooth(&t, x[k] + h, &d);
+        ENSURE(fabs(b - a) < 1e-6 * fabs(a));
+    }
+    /* the derivative inside each interval between mid-points */
+    const double xs[4] = {0.4, 0.9, 1.7, 4.2};
+    for (int k = 0; k < 4; k++) {
+        const double h = 1e-6;
+        double dp, dm;
+        rc_table_slope_smooth(&t, xs[k], &d);
+        const double fd =
+            (rc_table_slope_smooth(&t, xs[k] + h, &dp) - rc_table_slope_smooth(&t, xs[k] - h, &dm)) / (2 * h);
+        ENSURE_NEAR(d, fd, 1e-6, 0.0);
+    }
+    /* a two-point curve: its one slope */
+    rc_table t2;
+    ENSURE(rc_table_init(&t2, 2, 2, x, y, &e) == RC_OK);
+    ENSURE_NEAR(rc_table_slope_smooth(&t2, 0.7, &d), s0, 1e-15, 0.0);
+    rc_table_free(&t2);
+    rc_table_free(&t);
+}
+
 void suite_engine(void);
 void suite_engine(void)
 {
@@ -614,6 +660,7 @@ void suite_engine(void)
     RUN_TEST(test_engine_jacobian_friction_cards_matches_finite_differences);
     RUN_TEST(test_engine_jacobian_refresh_after_mode_change);
     RUN_TEST(test_engine_renard_continuity);
+    RUN_TEST(test_engine_table_slope_smooth);
     RUN_TEST(test_engine_quaternion_drift_and_gyroscopic_invariants);
     RUN_TEST(test_engine_jacobian_power_cylinders_impvel_matches_finite_differences);
     RUN_TEST(test_engine_jacobian_impvel_skew_matches_finite_differences);

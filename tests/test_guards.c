@@ -778,10 +778,50 @@ static void test_guards_box_overlap_fires(void)
     bench_close(&b);
 }
 
+/* A cylinder held by a box face beyond its edge: the cylinder-box pair
+ * acts through the face's plane, which goes on beyond the rectangle (the
+ * edge itself is not modelled), so a roller that has rolled past a table's
+ * edge would go on rolling in the air. A roller (R = 0.05 m, axis x) 1e-5 m
+ * into the top of a fixed box (half-size 0.5 m): on the face (centre at
+ * y = 0.45 m) nothing fires; at y = 0.52 m, its contact line 0.02 m beyond
+ * the edge (more than 1 % of R), the run stops naming the distance. */
+static void test_guards_cylinder_beyond_box_edge(void)
+{
+    static const char *deck = "/NODE\n1,0,0.45,0.04999\n"
+                              "/RBODY/1\nroller\n1,,,,2.0\n0.0025,0.0025,0.0025\n0,0,0\n"
+                              "/GRNOD/NODE/1\nroller\n1\n"
+                              "/SURF/CYL/1\nroller\n1,0,0\n0,0.45,0.04999\n1,0,0\n0.05,0.1\n"
+                              "/SURF/BOX/2\ntable, fixed\n0\n0,0,-0.5\n0.5,0.5,0.5\n"
+                              "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"
+                              "/FUNCT/1\nload\n0,0\n1,1e6\n"
+                              "/INTER/TYPE6/1\nroller on table\n1,2\n\n\n1,0,1.0,1.0\n\n50\n"
+                              "/RUN\n0.3,0.01\n";
+    rc_error e;
+    rc_model *m = tu_compile_text(deck, "guards_cylinder.rad", &e);
+    if (!m) printf("    %s\n", e.msg);
+    ENSURE(m != NULL);
+    if (!m) return;
+    ENSURE(m->inter_pair[0] == RC_PAIR_CYL_BOX);
+    bench b;
+    ENSURE(bench_open(&b, m, 1));
+    double *s = b.y + m->body_yadr[0];
+    b.d->inter_mode[0] = RC_MODE_CLOSED;
+    rc_guards_step(b.g, b.d, 0.1, b.y, NULL, 0, ++b.steps);
+    ENSURE(bench_violations(&b, NULL, 0) == 0);
+    s[1] = 0.52 - m->origin[1]; /* the model's coordinates */
+    rc_guards_step(b.g, b.d, 0.2, b.y, NULL, 0, ++b.steps);
+    char note[1200];
+    ENSURE(bench_violations(&b, note, sizeof note) == 1);
+    printf("    %s\n", note);
+    ENSURE(strstr(note, "lies 0.02 m beyond the edge of the box's face") != NULL);
+    bench_close(&b); /* frees the model too */
+}
+
 void suite_guards(void);
 void suite_guards(void)
 {
     RUN_TEST(test_guards_channel_decrease_fires);
+    RUN_TEST(test_guards_cylinder_beyond_box_edge);
     RUN_TEST(test_guards_coupling_damping_fires);
     RUN_TEST(test_guards_channel_tolerance_follows_rtol);
     RUN_TEST(test_guards_energy_created_fires);

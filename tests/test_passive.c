@@ -950,6 +950,211 @@ out:
 }
 
 
+/* A corner that sticks holds the force its spring has. A tilted box
+ * striking a floor (TYPE6 friction per corner, K_t 2.2e10 N/m; a fuzzer
+ * scene): a corner slides with its spring at ~600 N while the impact raises
+ * the limit to 16 400 N; when its sliding along the force stops, the stick
+ * is tested with that state (its stick force within the limit: it sticks),
+ * not with the state put on the limit, where the stick damper's force
+ * across the sliding (~50 N) left it 5e-6 beyond: the corner slid on, its
+ * sliding turned by 90 degrees and stopped again 7 ns later, 200 times
+ * (Zeno at t = 1.19 s). */
+static void test_corner_stick_tested_with_its_spring(void)
+{
+    rc_model *m = TU_LOAD_OK("fuzz/physics/regressions/box_landing_corner_stick_tested_on_limit_zeno.rad");
+    if (!m) return;
+    rc_error e;
+    rc_run_options o;
+    memset(&o, 0, sizeof o);
+    rc_stats st;
+    const rc_status s = rc_run(m, &o, &st, &e);
+    printf("    tilted box landing with friction per corner: %s, %ld events, %ld steps; %s\n", s ? e.msg : "ok",
+           st.events, st.steps, st.physics_note);
+    ENSURE(s == RC_OK);
+    ENSURE(st.events < 200);
+    rc_model_free(m);
+}
+
+/* The reversal root of a saturated viscous friction law (v_t . d_ref) is
+ * not watched on a zero limit: there the saturated force is zero whatever
+ * the direction, and two balls touching at zero force, sliding at the
+ * velocities' rounding, reversed 200 times within 2e-10 s (a cradle on a
+ * floor, Zeno at rtol 1e-10). When the limit rises from zero the root
+ * takes v_t . d_ref and crosses if the sliding turned: the mode is then
+ * set anew. */
+static const char *viscous_zero_limit_deck =
+    "/BEGIN\nball touching a floor, viscous friction\n      2022         0\n"
+    "                  kg                   m                   s\n"
+    "                  kg                   m                   s\n"
+    "/FUNCT/1\nlinear\n0,0\n1,1000000\n" BALL_ON_FLOOR
+    "/INTER/TYPE6/1\nball on floor\n1,2\n\n\n1,0\n\n\n"
+    "/FRICTION/1\nviscous\n0,0,,1\n\n,0.37,0.8\n"
+    "/RUN\n0.01,0.001\n/END\n";
+
+static void test_viscous_reversal_root_waits_for_a_limit(void)
+{
+    rc_model *m = TU_COMPILE_OK(viscous_zero_limit_deck, "viscous_zero_limit.rad");
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double)), *g = calloc((size_t)rc_root_count(m), sizeof(double));
+    ENSURE(d && y && g && m->ninter == 1 && m->inter_fr[0].form == RC_FF_VISCOUS);
+    if (!d || !y || !g) goto out;
+    rc_initial_state(m, y);
+    double *yb = y + m->body_yadr[0];
+    d->inter_mode[0] = RC_MODE_CLOSED;
+    d->inter_slip[0] = 1; /* saturated, sliding along +x when it saturated */
+    d->inter_dref[0] = 1.0;
+    d->inter_dref[1] = d->inter_dref[2] = 0.0;
+    yb[7] = -1e-17; /* the sliding reversed, at the velocities' rounding */
+    yb[2] = 0.05;   /* touching: no normal force, no limit */
+    rc_assemble_roots(m, d, 0.0, y, g);
+    const double at_zero = g[RC_ROOT_REV];
+    yb[2] = 0.05 - 1e-6; /* pressed 1e-6 m: F_n 1 N, a limit */
+    rc_assemble_roots(m, d, 0.0, y, g);
+    const double pressed = g[RC_ROOT_REV];
+    printf("    reversal root on a zero limit %.3g, with a limit %.3g m/s\n", at_zero, pressed);
+    ENSURE(at_zero > 0);
+    ENSURE(pressed < 0 && fabs(pressed + 1e-17) < 1e-30);
+out:
+    free(y);
+    free(g);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
+/* A ball over the edge of a box: the edge is rounded by the geometry (the
+ * distance to the solid box), so a ball sliding off a table pivots about
+ * the edge and leaves it where a particle on a circle of radius R does,
+ * cos(theta*) = (v0^2 / (g R) + 2) / 3 from the top at speed v0 (no
+ * friction: the spin plays no part). Before, the top face's infinite plane
+ * held it up beyond the edge until its centre reached the bisector, and the
+ * contact then jumped to the side face. The distance and the normal at an
+ * edge and a corner against the closed forms; the Jacobian there against
+ * central differences. */
+static const char *ball_box_edge_deck =
+    "/BEGIN\nball sliding off the edge of a table\n      2022         0\n"
+    "                  kg                   m                   s\n"
+    "                  kg                   m                   s\n"
+    "/NODE\n1,0.45,0,0.05\n"
+    "/RBODY/1\nball\n1,,,,1.0\n0.001,0.001,0.001\n0,0,0\n"
+    "/GRNOD/NODE/1\nball\n1\n"
+    "/SURF/ELLIPS/1\nball\n0,2,1\n0.45,0,0.05\n0.05,0.05,0.05\n"
+    "/SURF/BOX/2\ntable\n0\n0,0,-0.5\n0.5,0.5,0.5\n1,0,0\n0,1,0\n"
+    "/FUNCT/1\nlinear\n0,0\n1,10000000\n"
+    "/INTER/TYPE6/1\nball on table\n1,2\n\n\n1,0\n\n2000\n"
+    "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"
+    "/INIVEL/TRA/1\nv0\n0.3,0,0,1,0\n"
+    "/RUN\n0.6,0.01\n/END\n";
+
+static void test_ball_pivots_over_a_box_edge(void)
+{
+    rc_model *m = TU_COMPILE_OK(ball_box_edge_deck, "ball_box_edge.rad");
+    if (!m) return;
+    ENSURE(m->inter_pair[0] == RC_PAIR_SPHERE_BOX);
+    /* geometry at an edge (x and z beyond the half-sizes) and a corner */
+    {
+        rc_data *d = rc_data_new(m);
+        double *y = calloc((size_t)m->ny, sizeof(double));
+        ENSURE(d && y);
+        if (d && y) {
+            rc_initial_state(m, y);
+            double *yb = y + m->body_yadr[0], y0[3];
+            const double x0[3] = {0.45, 0.0, 0.05}; /* the state is about the model's origin */
+            for (int k = 0; k < 3; k++) y0[k] = yb[k];
+            const double cs[2][3] = {{0.53, 0.1, 0.04}, {0.53, 0.52, 0.035}};
+            for (int c = 0; c < 2; c++) {
+                for (int k = 0; k < 3; k++) yb[k] = y0[k] + cs[c][k] - x0[k];
+                yb[7] = 0.2;
+                yb[9] = -0.1;
+                rc_inter_report r;
+                rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+                const double w[3] = {0.03, c ? 0.02 : 0.0, cs[c][2]}, nw = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+                printf("    %s: P %.15g m (closed form %.15g), normal (%.6f %.6f %.6f)\n", c ? "corner" : "edge", r.p,
+                       0.05 - nw, r.normal[0], r.normal[1], r.normal[2]);
+                ENSURE_NEAR(r.p, 0.05 - nw, 0, 1e-15);
+                for (int k = 0; k < 3; k++) ENSURE_NEAR(r.normal[k], -w[k] / nw, 0, 1e-15);
+                ENSURE_NEAR(r.vn, -(0.2 * w[0] - 0.1 * w[2]) / nw, 0, 1e-15);
+                d->inter_mode[0] = RC_MODE_CLOSED;
+                int bad = 0;
+                int outside = 0;
+                const double err = tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside);
+                printf("    %s: Jacobian against central differences %.3g (bad %d)\n", c ? "corner" : "edge", err, bad);
+                ENSURE(bad == 0);
+            }
+        }
+        free(y);
+        rc_data_free(d);
+    }
+    tu_evlog ev;
+    memset(&ev, 0, sizeof ev);
+    rc_error e;
+    rc_run_options o;
+    memset(&o, 0, sizeof o);
+    o.on_event = tu_evlog_event;
+    o.user = &ev;
+    rc_stats st;
+    rc_status s = rc_run(m, &o, &st, &e);
+    if (s) printf("    %s\n", e.msg);
+    ENSURE(s == RC_OK);
+    double tsep = NAN;
+    for (int k = 0; k < ev.n && k < TU_MAXEV; k++)
+        if (!strcmp(ev.kind[k], "contact_separate") || !strcmp(ev.kind[k], "contact_open")) {
+            tsep = ev.t[k];
+            break;
+        }
+    ENSURE(isfinite(tsep));
+    if (isfinite(tsep)) {
+        double y[64];
+        memset(&o, 0, sizeof o);
+        o.y_end = y;
+        o.t_end_override = tsep;
+        s = rc_run(m, &o, &st, &e);
+        ENSURE(s == RC_OK);
+        double b[13];
+        ENSURE(rc_model_body_state(m, y, 1, b, &e) == RC_OK);
+        const double dx = b[0] - 0.5, dz = b[2], rr = hypot(dx, dz), v0 = 0.3, g = 9.81;
+        const double want = (v0 * v0 / (g * rr) + 2.0) / 3.0;
+        printf("    the ball leaves the edge at t = %.6f s, cos(theta) = %.6f (closed form %.6f), |c - edge| %.9f m\n",
+               tsep, dz / rr, want, rr);
+        ENSURE(fabs(dz / rr - want) < 2e-3);
+    }
+    rc_model_free(m);
+}
+
+/* A law's state stiffness beyond what the coordinates resolve is refused:
+ * a ball striking a wall whose Stiff line and stick spring (2.21e18 N/m)
+ * move the force by 46 N per rounding of the coordinates against a force
+ * scale of 151 N (a fuzzer scene: its friction state was rounding noise);
+ * with Stiff 1.7e18 N/m (4.2 roundings) it compiles. */
+static void test_state_stiffness_beyond_resolution_refused(void)
+{
+    const char *path = "fuzz/physics/regressions/ramp_wall_stale_jacobian_rising_limit.rad";
+    rc_model *m = NULL;
+    rc_error e;
+    const rc_status st = tu_load_compile(path, &m, &e);
+    printf("    %s\n", st ? e.msg : "(compiled)");
+    ENSURE(st == RC_EINPUT);
+    ENSURE(strstr(e.msg, "too stiff for double precision") != NULL);
+    ENSURE(strstr(e.msg, "card /INTER/TYPE6/2") != NULL && strstr(e.msg, "expected Stiff below") != NULL);
+    rc_model_free(m);
+    /* the same deck with Stiff 1.7e18 N/m */
+    FILE *f = fopen(path, "r");
+    ENSURE(f != NULL);
+    if (!f) return;
+    static char text[1 << 17];
+    const size_t n = fread(text, 1, sizeof text - 1, f);
+    fclose(f);
+    text[n] = '\0';
+    char *k = strstr(text, "2.213071818637e+18");
+    ENSURE(k != NULL);
+    if (!k) return;
+    memcpy(k, "            1.7e18", 18);
+    rc_model *m2 = tu_compile_text(text, "ramp_wall_1.7e18.rad", &e);
+    if (!m2) printf("    %s\n", e.msg);
+    ENSURE(m2 != NULL);
+    rc_model_free(m2);
+}
+
 /* ---- an elastic law with a damper: hysteresis kept at its releases ---- */
 /* A 1 kg ball dropped at 1 m/s onto a floor, linear law k = 1e6 N/m
  * (Iform 0) with Visc 400 N s/m (zeta 0.2): on each rebound the damper
@@ -1020,6 +1225,10 @@ void suite_passive(void)
     RUN_TEST(test_iform2_reversals_stay_on_the_stiff_line);
     RUN_TEST(test_ball_rolls_onto_incline);
     RUN_TEST(test_slip_waits_for_a_falling_limit);
+    RUN_TEST(test_corner_stick_tested_with_its_spring);
+    RUN_TEST(test_viscous_reversal_root_waits_for_a_limit);
+    RUN_TEST(test_ball_pivots_over_a_box_edge);
+    RUN_TEST(test_state_stiffness_beyond_resolution_refused);
     RUN_TEST(test_power_rdf_root_on_damping_rate);
     RUN_TEST(test_elastic_damped_release_ledger);
     RUN_TEST(test_box_sliding_start_at_every_rtol);

@@ -615,6 +615,12 @@ def cmd_minimise(a):
         scene = SC.generate(a.seed, kind=a.kind)
     ricochet = os.path.abspath(a.ricochet)
     variants = scene.get("replay_variants") or variants_for(a.inv, scene["seed"])
+    if a.variant:
+        allv = all_variants(scene["seed"])
+        for v in a.variant:
+            if v not in allv:
+                raise SystemExit(f"--variant {v}: expected one of {', '.join(sorted(allv))}")
+            variants[v] = allv[v]
     hit = still_fails(scene, a.inv, variants, ricochet, a.timeout)
     if not hit:
         print(f"seed {scene['seed']}: {a.inv} does not fail")
@@ -793,6 +799,9 @@ def main(argv=None):
     q.add_argument("--inv", required=True)
     q.add_argument("--note", default=None, help="a line on the mechanism for the deck's header")
     q.add_argument("--keep-time", action="store_true", help="do not shorten the run")
+    q.add_argument("--variant", action="append", default=[],
+                   help="a variant the violation needs (frame, units, ida, rtol; repeatable): for an "
+                        "invariant whose name does not say which, e.g. a solver failure at rtol 1e-10")
     q.add_argument("-o", default=None)
     q = sub.add_parser("summary")
     q.add_argument("dir", help="a run's output folder or its report.json")

@@ -8,6 +8,7 @@
                                          # installed, else a dict of numpy arrays (Results)
     from ricochet.deck import Deck       # the fixed-width deck writer
     st = ricochet.study("drop.rad", {"/SURF/PLANE/2:ZM": [-0.1, -0.2]})  # cases on Dask
+    rep = ricochet.fit("drop.rad", "measured.csv", log={"/INTER/TYPE6/1:Visc": 5})  # calibration
 
 ``run`` and ``Session`` call the C library (libricochet, through ctypes:
 found through RICOCHET_LIB, the installed library, or a source checkout's
@@ -15,6 +16,7 @@ build/); ``read`` and ``deck`` need no library. docs/python.md.
 """
 # SPDX-License-Identifier: GPL-3.0-or-later
 from . import deck  # noqa: F401
+from .fit import fit  # noqa: F401
 from .errors import (InputError, InterruptedRun, PhysicsCheckError, RicochetError,  # noqa: F401
                      RicochetIOError, SolverError, Status)
 from .results import Results, read  # noqa: F401
@@ -25,7 +27,7 @@ __version__ = "0.2.0"
 
 __all__ = ["read", "Results", "deck", "run", "Session", "BodyState", "EventValues", "RunStats", "study", "lhs",
            "grid", "StudyDirError", "RicochetError", "InputError", "SolverError", "RicochetIOError",
-           "PhysicsCheckError", "InterruptedRun", "RicochetWarning", "Status", "library_path"]
+           "PhysicsCheckError", "InterruptedRun", "RicochetWarning", "Status", "library_path", "fit"]
 
 
 def library_path():

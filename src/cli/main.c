@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "ricochet/ricochet.h"
+#include "cli/fit.h"
 
 /* --set options on one command line (docs/case-format.md) */
 #define RC_CLI_MAX_SET 256
@@ -23,6 +24,8 @@ static void usage(FILE *f)
             "                                            read and compile a case, print the model summary\n"
             "       ricochet export-vtk RESULTS.nc [-o DIR] [--dt T | --every N] [--ascii]\n"
             "                                            ParaView files (.pvd + binary .vtp)\n"
+            "       ricochet fit CASE --data FILE.csv --free CARD:FIELD=START[,LO:HI]... [--log ...] [-o REPORT]\n"
+            "                                            calibrate fields to measured signals (least squares)\n"
             "       ricochet study CASE --grid FILE [--scheduler ADDRESS] [-o STUDY.nc] ...\n"
             "                                            a parameter study on Dask (the Python module)\n"
             "       ricochet COMMAND --help              the options of a command\n"
@@ -378,6 +381,7 @@ int main(int argc, char **argv)
     }
     if (!strcmp(argv[1], "export-vtk")) return export_vtk(argc, argv);
     if (!strcmp(argv[1], "study")) return study(argc, argv);
+    if (!strcmp(argv[1], "fit")) return rc_cli_fit(argc, argv);
     const char *cmd = argv[1], *case_path = NULL, *out = NULL;
     const int is_run = !strcmp(cmd, "run");
     if (!is_run && strcmp(cmd, "check")) {

@@ -8,6 +8,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+
 #include "case/case.h"
 #include "case/case_mesh.h"
 #include "case/case_power.h"
@@ -356,4 +359,108 @@ void rc_imp_print(const rc_model *m, FILE *f)
     if (p->nt > 20 || p->nr > 20)
         fprintf(f, "  ... and %d more (the first 20 of each kind are listed)\n",
                 (p->nt > 20 ? p->nt - 20 : 0) + (p->nr > 20 ? p->nr - 20 : 0));
+}
+
+/* ---- the orientation an imposed rotation reaches (statics) ---------- */
+typedef struct {
+    const rc_model *m;
+    int j;
+} rot_ctx;
+
+/* global angular velocity of imposed rotation j at t [rad/s] */
+static void rot_omega(const rc_model *m, int j, double t, double w[3])
+{
+    const rc_imposed *p = m->imp;
+    for (int k = 0; k < 3; k++) {
+        const int tab = p->rtab[3 * j + k];
+        w[k] = tab < 0 ? 0.0 : p->rfscale[3 * j + k] * rc_table_value(&m->table[tab], t / p->rascale[3 * j + k]);
+    }
+}
+
+/* de/dt = 1/2 (0, w) (x) e */
+static int rot_rhs(double t, const double e[], double de[], void *user)
+{
+    const rot_ctx *c = user;
+    double w[3];
+    rot_omega(c->m, c->j, t, w);
+    de[0] = -0.5 * (w[0] * e[1] + w[1] * e[2] + w[2] * e[3]);
+    de[1] = 0.5 * (w[0] * e[0] + w[1] * e[3] - w[2] * e[2]);
+    de[2] = 0.5 * (w[1] * e[0] + w[2] * e[1] - w[0] * e[3]);
+    de[3] = 0.5 * (w[2] * e[0] + w[0] * e[2] - w[1] * e[1]);
+    return GSL_SUCCESS;
+}
+
+static int cmp_dbl(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+int rc_imp_rotation(const rc_model *m, int j, double t, double e[4])
+{
+    const rc_imposed *p = m->imp;
+    const double te = fmin(t, p->rtstop[j]);
+    e[0] = 1.0;
+    e[1] = e[2] = e[3] = 0.0;
+    if (!(te > 0)) return 0;
+    int nc = 0, nk = 0;
+    for (int k = 0; k < 3; k++)
+        if (p->rtab[3 * j + k] >= 0) {
+            nc++;
+            nk += m->table[p->rtab[3 * j + k]].n;
+        }
+    if (nc <= 1) {
+        /* one axis: the rotation by the integral of its speed */
+        double phi[3];
+        for (int k = 0; k < 3; k++) {
+            const int tab = p->rtab[3 * j + k];
+            const double as = p->rascale[3 * j + k];
+            phi[k] = tab < 0 ? 0.0 : p->rfscale[3 * j + k] * as * rc_table_integral(&m->table[tab], 0.0, te / as);
+        }
+        const double a = sqrt(phi[0] * phi[0] + phi[1] * phi[1] + phi[2] * phi[2]);
+        const double sc = a > 1e-8 ? sin(0.5 * a) / a : 0.5 - a * a / 48.0;
+        e[0] = cos(0.5 * a);
+        for (int k = 0; k < 3; k++) e[k + 1] = sc * phi[k];
+        return 0;
+    }
+    /* several axes: the points of the time functions in (0, te) split the
+     * integration where the speeds have kinks */
+    double *bk = malloc(((size_t)nk + 1) * sizeof(double));
+    if (!bk) return -1;
+    int nb = 0;
+    for (int k = 0; k < 3; k++) {
+        const int tab = p->rtab[3 * j + k];
+        if (tab < 0) continue;
+        for (int q = 0; q < m->table[tab].n; q++) {
+            const double tk = m->table[tab].x[q] * p->rascale[3 * j + k];
+            if (tk > 0 && tk < te) bk[nb++] = tk;
+        }
+    }
+    bk[nb++] = te;
+    qsort(bk, (size_t)nb, sizeof(double), cmp_dbl);
+    rot_ctx c = {m, j};
+    gsl_odeiv2_system sys = {rot_rhs, NULL, 4, &c};
+    double s = 0.0;
+    int st = GSL_SUCCESS;
+    gsl_error_handler_t *old = gsl_set_error_handler_off();
+    for (int q = 0; q < nb && st == GSL_SUCCESS; q++) {
+        if (!(bk[q] > s)) continue;
+        gsl_odeiv2_driver *d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 0.125 * (bk[q] - s),
+                                                             1e-15, 1e-14);
+        if (!d) {
+            st = GSL_ENOMEM;
+            break;
+        }
+        st = gsl_odeiv2_driver_apply(d, &s, bk[q], e);
+        gsl_odeiv2_driver_free(d);
+    }
+    gsl_set_error_handler(old);
+    free(bk);
+    const double n = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + e[3] * e[3]);
+    if (st != GSL_SUCCESS || !(n > 0) || !isfinite(n)) {
+        for (int k = 0; k < 4; k++) e[k] = NAN;
+        return -1;
+    }
+    for (int k = 0; k < 4; k++) e[k] /= n;
+    return 0;
 }

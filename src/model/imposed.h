@@ -78,5 +78,15 @@ rc_status rc_imp_pattern_keys(const rc_model *m, int64_t **key, int64_t *n, rc_e
 rc_status rc_imp_slots(rc_model *m, rc_error *err);
 void rc_imp_free(rc_imposed *imp);
 void rc_imp_print(const rc_model *m, FILE *f);
+/* The rotation imposed rotation j turns its body by from t = 0 to t (held
+ * up to its Tstop), a unit quaternion e (w, x, y, z) about global axes
+ * (the body's orientation is then e (x) q(0)): the solution of
+ * de/dt = 1/2 (0, w_g(t)) (x) e, w_g the global angular velocity Fscale
+ * f(t / Ascale) per component; exp(Phi) with Phi its integral when one
+ * component is imposed (the axis keeps its direction), else integrated by
+ * GSL's Runge-Kutta Prince-Dormand 8(9) between the points of the time
+ * functions (docs/theory.md 7.8). Returns 0, or -1 when the integration
+ * failed (e is then NaN). */
+int rc_imp_rotation(const rc_model *m, int j, double t, double e[4]);
 
 #endif

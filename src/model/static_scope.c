@@ -5,8 +5,7 @@
  * translations and rotations), and a clear input error naming the card of
  * the first element it does not (docs/case-format.md, /SOLVER): friction
  * with no meaning at rest (viscous, step5, a law whose coefficient at zero
- * sliding speed is 0), exact stick, an imposed rotation about an axis
- * that turns. Called
+ * sliding speed is 0), exact stick. Called
  * where Method 3 is chosen: by the compiler for the deck's /SOLVER, by
  * rc_model_set_method, and by the static backend itself; and where a
  * preload (/SOLVER Preload 1) is asked for, which also needs the bodies at
@@ -93,12 +92,12 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
 {
     if (!how) how = "/SOLVER Method 3";
     if (!alt) alt = "Method 1 or 2";
-    /* joints: their constraint rows and reactions (solver/static.c) */
-    /* imposed translations are held displacements (the integral of the
-     * velocity), imposed rotations held rotations (the integral of the
-     * angular velocity about its global axis), each free after its Tstop;
-     * a rotation about an axis that turns (two components of one body's
-     * angular velocity imposed) has no closed-form path in this version */
+    /* joints: their constraint rows and reactions (solver/static.c);
+     * imposed translations are held displacements (the integral of the
+     * velocity), imposed rotations held orientations (the rotation the
+     * angular velocity turns the body by, rc_imp_rotation), each free after
+     * its Tstop; a translation along a skew axis and a later start
+     * (Tstart > 0) are not in this version */
     for (int k = 0; m->imp && k < m->imp->nt; k++)
         if (m->imp->tdir[k] < 0)
             RC_RAISE(err, RC_EINPUT,
@@ -113,16 +112,6 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
                                "displacement from the load time 0), or %s",
                      RC_LOC(m->end_loc), "an imposed velocity starting later (Tstart > 0)", how,
                      m->body_id[m->imp->tbody[k]], alt);
-    for (int j = 0; m->imp && j < m->imp->nr; j++) {
-        int nc = 0;
-        for (int k = 0; k < 3; k++) nc += m->imp->rtab[3 * j + k] >= 0;
-        if (nc > 1)
-            RC_RAISE(err, RC_EINPUT,
-                     RC_LOCFMT "card /IMPVEL: " RC_STATIC_NOT " (%s, /RBODY/%d); expected one rotational component "
-                               "per body (Dir XX, YY or ZZ: a rotation about a fixed global axis), or %s",
-                     RC_LOC(m->end_loc), "an imposed rotation of two or more components (Dir XX, YY, ZZ) on one body",
-                     how, m->body_id[m->imp->rbody[j]], alt);
-    }
     for (int i = 0; i < m->ninter; i++) {
         const rc_fric *fr = &m->inter_fr[i];
         const char *what = NULL;

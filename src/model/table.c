@@ -71,6 +71,29 @@ double rc_table_value(const rc_table *t, double x)
     return gsl_interp_eval(t->interp, t->x, t->y, x, NULL);
 }
 
+/* Slope of segment k and its mid-point. */
+static double seg_slope(const rc_table *t, int k) { return (t->y[k + 1] - t->y[k]) / (t->x[k + 1] - t->x[k]); }
+static double seg_mid(const rc_table *t, int k) { return 0.5 * (t->x[k] + t->x[k + 1]); }
+
+double rc_table_slope_smooth(const rc_table *t, double x, double *dslope)
+{
+    const int ns = t->n - 1; /* segments */
+    *dslope = 0.0;
+    if (ns == 1 || !(x > seg_mid(t, 0))) return seg_slope(t, 0);
+    if (!(x < seg_mid(t, ns - 1))) return seg_slope(t, ns - 1);
+    int lo = 0, hi = ns - 1; /* seg_mid(lo) < x < seg_mid(hi) */
+    while (hi - lo > 1) {
+        const int k = (lo + hi) / 2;
+        if (x < seg_mid(t, k))
+            hi = k;
+        else
+            lo = k;
+    }
+    const double m0 = seg_mid(t, lo), s0 = seg_slope(t, lo), s1 = seg_slope(t, hi);
+    *dslope = (s1 - s0) / (seg_mid(t, hi) - m0);
+    return s0 + *dslope * (x - m0);
+}
+
 /* Exact integral of the piecewise-linear curve (with its linear extension)
  * from a to b: trapezoids between the breakpoints inside [a, b]. */
 double rc_table_integral(const rc_table *t, double a, double b)

@@ -24,6 +24,12 @@ void rc_table_eval(const rc_table *t, double x, double *f, double *dfdx);
 /* The value alone, the same as rc_table_eval's (half its work inside:
  * one GSL evaluation instead of two; the fast contact path). */
 double rc_table_value(const rc_table *t, double x);
+/* The slope smoothed across the points: the segments' slopes interpolated
+ * linearly between the segments' mid-points (constant before the first
+ * mid-point and after the last), continuous in x; its derivative in
+ * *dslope. For a coefficient that must not jump where x crosses a point of
+ * the curve (the viscous friction's stiffness, docs/theory.md 6.2). */
+double rc_table_slope_smooth(const rc_table *t, double x, double *dslope);
 /* Integral of the curve from a to b (exact for the piecewise-linear curve). */
 double rc_table_integral(const rc_table *t, double a, double b);
 

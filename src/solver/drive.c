@@ -851,6 +851,20 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             st = RC_SET(err, RC_ESOLVER, "%s", reason);
             break;
         }
+        /* stepping: the times asked for that this call passed over (a
+         * single step beyond them, or a root found after them) are handed
+         * over now, interpolated in the step just taken, before an event
+         * restarts the integrator or the end time ends the loop */
+        while (pause && t > pause->until && !paused_stop) {
+            const double tu = pause->until;
+            const double *yu = y;
+            BKCHECK(bk->dky(self, tu, 0, RC_BK_TMP, &yu), "GetDky");
+            paused_stop = pause->reached(pause, tu, yu);
+        }
+        if (paused_stop) {
+            INTERRUPT("stopped by the caller at t = %.9g s" RC_KEPT, t);
+            break;
+        }
         /* the physics checks of the accepted state, on the zone roots the
          * integrator evaluated there (guards.h) */
         const int at_root = flag == bk->root_return;

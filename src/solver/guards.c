@@ -58,7 +58,7 @@ struct rc_guards {
     double *pmax;             /* [ninter] largest penetration checked [m] */
     mono balance;             /* minus energy_total: the balance never rises */
     /* excursions in progress (reported once each): penetration, centres, open */
-    unsigned char *on;        /* [3 ninter] */
+    unsigned char *on;        /* [5 ninter] */
     unsigned char nonfinite;  /* reported once */
     /* results */
     long total;
@@ -111,7 +111,7 @@ rc_guards *rc_guards_new(const rc_model *m, int warn, int show)
     g->emax = zalloc(3 * ni + nc, sizeof(mono));
     g->hyst = zalloc(ni, sizeof(double));
     g->pmax = zalloc(ni, sizeof(double));
-    g->on = zalloc(4 * ni, 1);
+    g->on = zalloc(5 * ni, 1);
     g->closed0 = zalloc(ni, 1);
     g->ever = zalloc(ni, 1);
     g->settled = zalloc(ni, 1);
@@ -260,6 +260,32 @@ static double box_box_depth(const rc_model *m, int i, const double *y)
     return depth;
 }
 
+/* How far the contact point x of a cylinder against box surface s lies
+ * beyond the rectangle of the box face it acts through [m]: the face whose
+ * axis is along the contact normal nrm, and the distance of x's foot on
+ * that face's plane from the rectangle (0 inside). The cylinder-box pair
+ * acts through the face's plane, extended beyond its edges (docs/theory.md
+ * 2, cylinder - box): a roller beyond the edge is held up by nothing there. */
+static double beyond_face(const rc_model *m, int s, const double *y, const double x[3], const double nrm[3])
+{
+    double c[3], a[3][3], h[3], xl[3];
+    box_pose(m, s, y, c, a, h);
+    int f = 0;
+    double best = -1.0;
+    for (int k = 0; k < 3; k++) {
+        xl[k] = (x[0] - c[0]) * a[k][0] + (x[1] - c[1]) * a[k][1] + (x[2] - c[2]) * a[k][2];
+        const double al = fabs(nrm[0] * a[k][0] + nrm[1] * a[k][1] + nrm[2] * a[k][2]);
+        if (al > best) {
+            best = al;
+            f = k;
+        }
+    }
+    double b2 = 0.0;
+    for (int k = 0; k < 3; k++)
+        if (k != f && fabs(xl[k]) > h[k]) b2 += (fabs(xl[k]) - h[k]) * (fabs(xl[k]) - h[k]);
+    return sqrt(b2);
+}
+
 /* The band within which an open interface i may penetrate at y: the
  * rounding of P (a thousand ulps of the coordinates and sizes involved)
  * and the position tolerance rtol p_s [m]. */
@@ -320,7 +346,7 @@ int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, co
         const int mode = d->inter_mode[i];
         if (mode == RC_MODE_INACTIVE || d->inter_track[i]) continue; /* not acting, or P = 0 by construction */
         const double P = zone[per * i + off] - (mode != RC_MODE_OPEN ? d->inter_band[2 * i] : 0.0);
-        unsigned char *on = g->on + 4 * i;
+        unsigned char *on = g->on + 5 * i;
         /* beyond the contact's scales */
         const double pb = g->pbound[i];
         if (P > g->pmax[i]) g->pmax[i] = P; /* over its bound at the end (rc_guards_finish) */
@@ -381,6 +407,29 @@ int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, co
                     return 1;
             } else if (D <= pb) {
                 on[3] = 0;
+            }
+        }
+        /* a cylinder held by a box face beyond its edge (the pair acts
+         * through the face's plane, which goes on beyond the rectangle): a
+         * closed, pressing contact whose point lies off the face by more
+         * than 1 % of the radius */
+        if (m->inter_pair[i] == RC_PAIR_CYL_BOX && mode == RC_MODE_CLOSED) {
+            rc_inter_report r;
+            rc_inter_report_eval_d(m, d, i, t, y, &r);
+            const double lim = 0.01 * m->surf_r[m->inter_sa[i]];
+            const double B = r.fn > 0 ? beyond_face(m, m->inter_sb[i], y, r.point, r.normal) : 0.0;
+            if (B > lim && !on[4]) {
+                on[4] = 1;
+                if (violate(g, t, t, "support_beyond_edge", m->inter_name[i], B, lim,
+                            "the contact point of %s lies %.6g m beyond the edge of the box's face at t = %.9g s "
+                            "(more than 1 %% of the cylinder's radius) while it presses with %.6g N: a cylinder "
+                            "against a box acts through the face's plane, which goes on beyond its edges, so "
+                            "the cylinder is held up where the box is not: the contact of a cylinder with a "
+                            "box's edge is not modelled in this version (docs/theory.md 2, cylinder - box)",
+                            m->inter_name[i], B, t, r.fn))
+                    return 1;
+            } else if (B <= lim) {
+                on[4] = 0;
             }
         }
         /* open while penetrating: a contact the engine did not close (at a

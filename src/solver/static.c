@@ -1525,8 +1525,9 @@ static double imp_disp(const rc_model *m, int k, double t)
 
 /* The global rotation vector Phi [rad] an imposed rotation j turns its
  * body by from t = 0 to t (up to its Tstop): the integral of its angular
- * velocity w_g = Fscale f(t / Ascale) per global component (exact as a
- * rotation where w_g keeps its axis, which the scope asks: one component). */
+ * velocity w_g = Fscale f(t / Ascale) per global component: the rotation
+ * where w_g keeps its axis, and the increment the work of the imposed
+ * moment is taken over (the orientation itself: rc_imp_rotation). */
 static void imp_phi(const rc_model *m, int j, double t, double phi[3])
 {
     const rc_imposed *p = m->imp;
@@ -1562,11 +1563,10 @@ static void imp_targets(rc_static *s, double t)
             s->imp_u[6 * q + k] = 0.0;
         }
         if (!held) continue;
-        double phi[3], qt[4];
-        imp_phi(m, j, t, phi);
-        double complex th[3] = {phi[0], phi[1], phi[2]}, e[4], r[4];
-        qexp(th, e);
-        /* exp(Phi) (x) q0: a rotation about global axes */
+        double qt[4], er[4];
+        rc_imp_rotation(m, j, t, er); /* NaN when it failed: the solve then fails */
+        double complex e[4] = {er[0], er[1], er[2], er[3]}, r[4];
+        /* e (x) q0: a rotation about global axes */
         const double *q0 = s->imp_q0 + 4 * q;
         const double complex qc[4] = {q0[0], q0[1], q0[2], q0[3]};
         r[0] = e[0] * qc[0] - e[1] * qc[1] - e[2] * qc[2] - e[3] * qc[3];

@@ -227,9 +227,11 @@ static rc_status probe_blocks(rc_model *m, rc_error *err)
         /* a segment surface: which of its points act depends on the state,
          * so the probe states cannot tell the structural zeros: the whole
          * block is kept (docs/theory.md 2.7); the same for sphere-cylinder,
-         * whose region (lateral, end, rim) depends on the state */
+         * whose region (lateral, end, rim) depends on the state, and for
+         * sphere-box (a face, an edge or a corner: at an edge or a corner
+         * the normal turns with the sphere's centre, at a face it does not) */
         if (is_inter && (rc_pair_multi(m->inter_pair[idx]) || m->inter_pair[idx] == RC_PAIR_CYL_SEG ||
-                         m->inter_pair[idx] == RC_PAIR_SPHERE_CYL)) {
+                         m->inter_pair[idx] == RC_PAIR_SPHERE_CYL || m->inter_pair[idx] == RC_PAIR_SPHERE_BOX)) {
             for (int k = 0; k < n; k++) jb->slot[k] = 0;
             continue;
         }

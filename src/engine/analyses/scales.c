@@ -264,6 +264,28 @@ static rc_status check_resolvable(const rc_model *m, int i, double mv, const dou
                  RC_LOC(m->inter_loc[i]), m->inter_name[i], tc, mv, k, ulp_t, m->tend, fields,
                  mv / (16.0 * ulp_t * ulp_t));
     }
+    /* the stiffnesses of the law's states: the Stiff line of Iform 1 and 2
+     * (F_h) and the stick spring of incremental friction (F_t) move their
+     * forces by K x the rounding of the coordinates; beyond a quarter of
+     * the force scale per rounding (F_s / K below 4 roundings, the same
+     * measure as p_s above) the states are rounding noise */
+    const rc_fric *fr = &m->inter_fr[i];
+    const double kst = m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0 ? m->inter_stiff[i] : 0.0;
+    const double kt = fr->kind != RC_FK_NONE && fr->form == RC_FF_INCREMENTAL && !fr->exact ? fr->kt : 0.0;
+    for (int c = 0; c < 2; c++) {
+        const double K = c ? kt : kst;
+        if (!(K > 0) || !(f / K < 4.0 * ulp_x)) continue;
+        return RC_SET(err, RC_EINPUT,
+                      RC_LOCFMT "card %s: %s K = %.3g N/m moves its force by %.3g N per rounding of the "
+                      "coordinates (%.3g m at %.3g m from the origin), more than a quarter of the contact's force "
+                      "scale F_s = %.3g N: too stiff for double precision (its state would be rounding noise); "
+                      "expected %s below %.3g N/m (F_s over 4 roundings), or coordinates nearer the origin",
+                      RC_LOC(m->inter_loc[i]), m->inter_name[i],
+                      c ? "the stick spring of its friction (the incremental form's K_t: Stiff, or the load curve's "
+                          "steepest slope)"
+                        : "the Stiff line of its hysteresis (Iform 1 or 2),",
+                      K, K * ulp_x, ulp_x, L, f, c ? "K_t (Stiff)" : "Stiff", f / (4.0 * ulp_x));
+    }
     (void)v;
     return RC_OK;
 }

@@ -274,11 +274,15 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         }
         /* saturated stateless law: its force -L v_t/|v_t| flips when the sliding
          * reverses; the saturation root dips below zero only in a velocity window
-         * of width ~L/C that a step may jump, so watch v_t . d_ref as well */
+         * of width ~L/C that a step may jump, so watch v_t . d_ref as well;
+         * not on a zero limit, where the saturated force is zero whatever
+         * the direction (two balls touching at zero force, sliding at the
+         * velocities' rounding: 200 reversals within 1e-10 s), and the root
+         * crosses when the limit rises from zero, the mode then set anew */
         if (mode == RC_MODE_CLOSED && d->inter_slip[i] && m->inter_fr[i].form == RC_FF_VISCOUS &&
             m->inter_fr[i].kind != RC_FK_NONE) {
             const double *dr = d->inter_dref + 3 * i;
-            gi[RC_ROOT_REV] = r.vt[0] * dr[0] + r.vt[1] * dr[1] + r.vt[2] * dr[2];
+            gi[RC_ROOT_REV] = r.flim > 0 ? r.vt[0] * dr[0] + r.vt[1] * dr[1] + r.vt[2] * dr[2] : 1.0;
         }
         /* zone: P (not while the Inacti offset tracks it, P = 0 there) */
         /* the touch bands (events.c, signed: a contact left at zero waits

@@ -155,6 +155,16 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
             if (nr > 0 && isfinite(nr)) /* a zero limit (no share) keeps the direction */
                 for (int k = 0; k < 3; k++) set_state(ft + ps * j + k, f[k], changed);
         }
+        /* a point that sticks holds the force its spring has: a state below
+         * the limit stays there (cap_state, the state it slid with, below a
+         * limit that rose faster than the spring loaded: an impact), and
+         * its stick is tested with that state below, not with the limit
+         * (with the limit, the stick damper's force across the sliding put
+         * the stick just beyond it, the point slid on and its sliding
+         * turned by 90 degrees within nanoseconds: Zeno) */
+        const double fb = m->inter_fr[i].fband;
+        for (int j = 0; j < npt; j++)
+            if (sel[j] && sl[j] && out[RC_PT_OUT * j + 4] > 0) cap_state(ft + ps * j, oldn[j], fb, 0, changed);
         int nst = 0; /* slip -> stick flips */
         for (int j = 0; j < npt; j++) {
             nst += sel[j] && sl[j];
@@ -219,7 +229,6 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
         }
         /* no stored energy without work (cap_state); the points' states are
          * at unit share (the whole contact's slip band) */
-        const double fb = m->inter_fr[i].fband;
         for (int j = 0; j < npt; j++)
             if (sel[j] && out[RC_PT_OUT * j + 4] > 0) cap_state(ft + ps * j, oldn[j], fb, sl[j], changed);
     }

@@ -613,7 +613,7 @@ static void test_case_docs_example(void)
     FILE *f = fopen("docs/case-format.md", "rb");
     ENSURE(f != NULL);
     if (!f) return;
-    static char doc[1 << 17];
+    static char doc[1 << 18]; /* the whole page (130 KiB and growing) */
     size_t n = fread(doc, 1, sizeof doc - 1, f);
     fclose(f);
     doc[n] = '\0';
@@ -1144,17 +1144,38 @@ static void test_case_error_part_grpart(void)
     EXPECT_INPUT_ERROR("pt.rad", "/PART/4\np\n,,,1.2.3\n7\n" RUN_CARD, 3, "field Thick");
     EXPECT_INPUT_ERROR("ptdup.rad", "/PART/4\np\n\n7\n/PART/4\nq\n\n8\n" RUN_CARD, 5,
                        "card /PART/4", "field part_ID", "duplicate id 4", "ptdup.rad:1");
-    /* /GRPART: PART only */
-    EXPECT_INPUT_ERROR("gp.rad", "/GRPART/GRPART/3\ng\n1\n" RUN_CARD, 1, "card /GRPART/GRPART/3",
-                       "not supported yet", "/GRPART/PART");
+    /* /GRPART: PART and GRPART; the other subtypes are refused */
+    EXPECT_INPUT_ERROR("gp.rad", "/GRPART/BOX/3\ng\n1\n" RUN_CARD, 1, "card /GRPART/BOX/3",
+                       "not supported yet", "/GRPART/PART", "/GRPART/GRPART");
+    EXPECT_INPUT_ERROR("gp.rad", "/GRPART/GRPART/3\ng\n1\n" RUN_CARD, 3, "card /GRPART/GRPART/3",
+                       "field grpart_ID", "no such group");
+    EXPECT_INPUT_ERROR("gp.rad", "/GRPART/GRPART/3\ng\n3\n" RUN_CARD, 3, "card /GRPART/GRPART/3",
+                       "names itself");
+    EXPECT_INPUT_ERROR("gp.rad",
+                       "/GRPART/GRPART/3\ng\n4\n/GRPART/GRPART/4\nh\n5\n/GRPART/GRPART/5\ni\n\n3\n" RUN_CARD,
+                       10, "card /GRPART/GRPART/5", "form a cycle");
     EXPECT_INPUT_ERROR("gp.rad", "/GRPART/3\ng\n1\n" RUN_CARD, 1, "missing subtype",
                        "/GRPART/PART");
     EXPECT_INPUT_ERROR("gp.rad", "/GRPART/PART/3\ng\n1,-2\n" RUN_CARD, 3, "card /GRPART/PART/3",
                        "field part_ID", "non-negative");
     EXPECT_INPUT_ERROR("gpdup.rad", "/GRPART/PART/3\ng\n1\n/GRPART/PART/3\nh\n2\n" RUN_CARD, 4,
                        "field grpart_ID", "duplicate id 3");
+    /* /GRPART/GRPART: the union of its groups (nested ones too), each part once,
+     * in the order first met; the plain groups are unchanged */
+    rc_case *c = load_ok(tu_tmp_write("gpgp.rad", "/GRPART/GRPART/9\nall\n8,2\n/GRPART/PART/2\na\n11,12\n"
+                                         "/GRPART/GRPART/8\nnested\n\n7\n/GRPART/PART/7\nb\n12,13,14\n" RUN_CARD));
+    ENSURE(c && c->ngrpart == 4);
+    if (c && c->ngrpart == 4) {
+        const rc_case_grpart *g = &c->grpart[0], *h = &c->grpart[2];
+        ENSURE(g->by_group && g->n == 4 && g->parts[0] == 12 && g->parts[1] == 13 && g->parts[2] == 14 &&
+               g->parts[3] == 11);
+        ENSURE(h->by_group && h->n == 3 && h->parts[0] == 12 && h->parts[2] == 14);
+        ENSURE(g->part_loc && g->part_loc[0].line == 3 && g->part_loc[3].line == 3);
+        ENSURE(!c->grpart[1].by_group && c->grpart[1].n == 2);
+    }
+    rc_case_free(c);
     /* a part id and a part group id may coincide: separate id spaces */
-    rc_case *c = load_ok(tu_tmp_write("ptgp.rad", "/PART/3\np\n\n7\n/GRPART/PART/3\ng\n3\n" RUN_CARD));
+    c = load_ok(tu_tmp_write("ptgp.rad", "/PART/3\np\n\n7\n/GRPART/PART/3\ng\n3\n" RUN_CARD));
     ENSURE(c && c->npart == 1 && c->ngrpart == 1 && c->nwarnings == 0);
     rc_case_free(c);
 }

@@ -166,9 +166,13 @@ static void test_compile_errors_physics(void)
                          "plane against plane");
     EXPECT_COMPILE_ERROR(deck(5, "/SURF/ELLIPS/20\nb\n0,2,1\n0,0,0.2\n0.05,0.05,0.05\n", NULL),
                          "card /INTER/TYPE6/3", "same body");
-    /* a partial rotation lock */
-    EXPECT_COMPILE_ERROR(deck(-1, NULL, "/GRNOD/NODE/5\ng\n1\n/BCS/1\nb\n000 110,0,5\n"), "card /BCS/1",
-                         "field Trarot", "partial rotation lock");
+    /* partial rotation locks: one rotation held (two free); one free about an
+     * axis that is not principal (Jxz != 0 couples z with x) */
+    EXPECT_COMPILE_ERROR(deck(-1, NULL, "/GRNOD/NODE/5\ng\n1\n/BCS/1\nb\n000 100,0,5\n"), "card /BCS/1",
+                         "field Trarot", "one rotation held and two free", "not supported yet");
+    EXPECT_COMPILE_ERROR(deck(3, "/RBODY/1\nball\n1,,,3,1.0\n0.001,0.002,0.003\n0,0,0.0002\n",
+                              "/GRNOD/NODE/5\ng\n1\n/BCS/1\nb\n000 110,0,5\n"),
+                         "card /BCS/1", "field Trarot", "global Z axis", "not a principal axis", "Jxz");
     /* absurd masses and inertias: below the smallest normal number */
     EXPECT_COMPILE_ERROR(deck(3, "/RBODY/1\nball\n1,,,,1e-320\n0.001,0.001,0.001\n0,0,0\n", NULL), "card /RBODY/1",
                          "field Mass", "normal double");

@@ -15,6 +15,7 @@
 #include "harness.h"
 #include "case/case.h"
 #include "case/case_coupling.h"
+#include "case/case_mesh.h"
 #include "model/coupling.h"
 #include "base/error.h"
 #include "model/model.h"
@@ -254,6 +255,163 @@ static void test_coupling_compile_model(void)
     ENSURE(p->grav[2] == -9.81 && p->grav[0] == 0);
     ENSURE(strcmp(p->name[7], "/COUPLING/CATENARY/23") == 0);
     rc_model_free(m);
+}
+
+/* ---- /SPRING elements (/PROP/SPRING, TYPE4) ---------------------------------- */
+/* Two bodies carried by nodes 1 and 2 (node 5 in body 1's group), node 9 in
+ * no body; /SPRING elements of part 7 (/PROP/TYPE4/3, fixed columns) and of
+ * part 8 (/PROP/SPRING/4, comma format, no mass); the same springs written
+ * as /COUPLING/SPRING Iform 1 cards in the second deck. */
+#define SPR_BODIES                                                                  \
+    "/NODE\n1, 0.31, -0.17, 0.23\n2, 1.41, 0.27, -0.12\n5, 0.52, 0.11, 0.37\n"     \
+    "9, 2.2, -0.4, 0.9\n"                                                          \
+    "/GRNOD/NODE/4\nsecondary\n5\n"                                                \
+    "/RBODY/1\nbody one\n1,,,,1.3,4\n0.021,0.017,0.029\n0.0013,-0.0022,0.0007\n"    \
+    "/RBODY/2\nbody two\n2,,,,0.7\n0.011,0.013,0.009\n0,0,0\n"                     \
+    "/RUN\n0.5,0.01\n"
+static const char spring_elem_deck[] =
+    SPR_BODIES
+    "/PART/7\nsprings\n         3         0\n"
+    "/PART/8\nmore springs\n4,0\n"
+    "/PROP/TYPE4/3\nlinear\n"
+    "#               Mass                                 sens_ID    Isflag     Ileng\n"
+    "               0.046                                                           0\n"
+    "#                  K                   C                   A                   B                   D\n"
+    "               143.7                 3.1                 1.0                   0                 1.0\n"
+    "#  fct_ID1         H   fct_ID2   fct_ID3   fct_ID4                          dmin                dmax\n"
+    "         0         0         0         0         0                                                  \n"
+    "#                  F                   E              Ascale              Hscale\n"
+    "                 1.0                   0                 1.0                 1.0\n"
+    "/SPRING/7\n"
+    "        31         1         2\n"
+    "        32         5         9                                                   0\n"
+    "/PROP/SPRING/4\nno mass\n0\n97.25,0.0371\n"
+    "/SPRING/8\n33,9,2\n";
+static const char spring_card_deck[] =
+    SPR_BODIES
+    "/COUPLING/SPRING/31\n\n1,2,1,0\n0.31,-0.17,0.23\n1.41,0.27,-0.12\n,3.1\n143.7\n"
+    "/COUPLING/SPRING/32\n\n1,0,1,0\n0.52,0.11,0.37\n2.2,-0.4,0.9\n,3.1\n143.7\n"
+    "/COUPLING/SPRING/33\n\n0,2,1,0\n2.2,-0.4,0.9\n1.41,0.27,-0.12\n,0.0371\n97.25\n";
+
+static void test_coupling_spring_element_read(void)
+{
+    rc_case *c = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    ENSURE(rc_case_load(deck(spring_elem_deck), &c, &e) == RC_OK);
+    if (!c) { fprintf(stderr, "  %s\n", e.msg); return; }
+    ENSURE(c->mesh && c->mesh->nspring == 3 && c->mesh->nprop == 2);
+    if (c->mesh && c->mesh->nspring == 3 && c->mesh->nprop == 2) {
+        const rc_case_spring *s = c->mesh->spring;
+        ENSURE(s[0].id == 31 && s[0].part_id == 7 && s[0].nodes[0] == 1 && s[0].nodes[1] == 2);
+        ENSURE(s[1].id == 32 && s[1].nodes[0] == 5 && s[1].nodes[1] == 9);
+        ENSURE(s[2].id == 33 && s[2].part_id == 8 && s[2].nodes[0] == 9 && s[2].nodes[1] == 2);
+        const rc_case_prop *q = c->mesh->prop;
+        ENSURE(q[0].id == 3 && q[0].kind == RC_PROP_SPRING && q[0].sprtype == 4);
+        ENSURE(q[0].mass == 0.046 && q[0].k == 143.7 && q[0].c == 3.1);
+        ENSURE(q[1].id == 4 && q[1].mass == 0 && q[1].k == 97.25 && q[1].c == 0.0371);
+    }
+    /* the cards read, none ignored: no warning names them */
+    for (int k = 0; k < c->nwarnings; k++) ENSURE(!strstr(c->warnings[k], "PROP"));
+    rc_case_free(c);
+}
+
+/* The elements compile into the couplings that the equivalent
+ * /COUPLING/SPRING cards give (ends, points, x0, k, k_d), and the spring
+ * mass is lumped half on each node: body 1 gains 0.046 (its main node and
+ * node 5, secondary), body 2 0.023. */
+static void test_coupling_spring_element_matches_card(void)
+{
+    rc_model *a = compile_deck(spring_elem_deck), *b = compile_deck(spring_card_deck);
+    if (!a || !b) { rc_model_free(a); rc_model_free(b); ENSURE(0); return; }
+    const rc_couplings *p = a->cpl, *q = b->cpl;
+    ENSURE(p->n == 3 && q->n == 3 && p->ncard == 3);
+    for (int k = 0; k < 3 && p->n == 3 && q->n == 3; k++) {
+        ENSURE(p->kind[k] == RC_CPL_SPRING && p->form[k] == RC_KEFF_CONST);
+        ENSURE(p->b1[k] == q->b1[k] && p->b2[k] == q->b2[k]);
+        ENSURE(p->id[k] == q->id[k] && strcmp(p->type[k], "SPRING_ELEMENT") == 0);
+        ENSURE_NEAR(p->x0[k], q->x0[k], 1e-15, 0);
+        ENSURE(p->kd[k] == q->kd[k] && p->coef[3 * k] == q->coef[3 * k]);
+    }
+    ENSURE(strcmp(p->name[0], "/SPRING/7 element 31") == 0);
+    /* the points in the body frames: the bodies' centres moved with the
+     * spring mass, so compare the global points (frame origin + s) */
+    for (int k = 0; k < 3 && p->n == 3; k++) {
+        const int ends[2] = {p->b1[k], p->b2[k]};
+        const double *sa[2] = {p->s1 + 3 * k, p->s2 + 3 * k}, *sb[2] = {q->s1 + 3 * k, q->s2 + 3 * k};
+        for (int j = 0; j < 2; j++)
+            for (int i = 0; i < 3; i++) {
+                const double oa = ends[j] >= 0 ? a->body_y0[RC_NB * ends[j] + i] : a->ground_y0[i];
+                const double ob = ends[j] >= 0 ? b->body_y0[RC_NB * ends[j] + i] : b->ground_y0[i];
+                ENSURE_NEAR(oa + sa[j][i], ob + sb[j][i], 0, 1e-14);
+            }
+    }
+    ENSURE_NEAR(a->body_mass[0], b->body_mass[0] + 0.046, 1e-14, 0);
+    ENSURE_NEAR(a->body_mass[1], b->body_mass[1] + 0.023, 1e-14, 0);
+    rc_model_free(a);
+    rc_model_free(b);
+}
+
+static void test_coupling_spring_element_errors(void)
+{
+#define SPRE SPR_BODIES "/PART/7\nsprings\n3\n"
+    /* SPRE is 23 lines; the card under test starts at line 24 */
+    const char *p4 = "/PROP/TYPE4/3\nt\n0\n10,1\n"; /* 4 lines */
+    char text[4096];
+    /* reader: element fields */
+    snprintf(text, sizeof text, SPRE "%s/SPRING/7\n31,1,1\n", p4);
+    EXPECT_ERROR(text, 0, 29, "card /SPRING/7", "field node_ID2", "other than node_ID1 = 1");
+    snprintf(text, sizeof text, SPRE "%s/SPRING/7\n31,1,2,5\n", p4);
+    EXPECT_ERROR(text, 0, 29, "field node_ID3", "not supported yet", "TYPE4");
+    snprintf(text, sizeof text, SPRE "%s/SPRING/7\n31,1,2,,,,,4\n", p4);
+    EXPECT_ERROR(text, 0, 29, "field Skew_ID", "not supported yet");
+    snprintf(text, sizeof text, SPRE "%s/SPRING/7\n31,1,2\n/SPRING/7\n31,2,5\n", p4);
+    EXPECT_ERROR(text, 0, 31, "sprg_ID", "31");
+    /* reader: property fields */
+    EXPECT_ERROR(SPRE "/PROP/TYPE4/3\nt\n0,,1\n10\n", 0, 26, "card /PROP/TYPE4/3", "field sens_ID",
+                 "not supported yet");
+    EXPECT_ERROR(SPRE "/PROP/TYPE4/3\nt\n0,,,,1\n10\n", 0, 26, "field Ileng", "not supported yet");
+    EXPECT_ERROR(SPRE "/PROP/TYPE4/3\nt\n-1\n10\n", 0, 26, "field Mass", "non-negative");
+    EXPECT_ERROR(SPRE "/PROP/TYPE4/3\nt\n0\n-10\n", 0, 27, "field K", "non-negative");
+    EXPECT_ERROR(SPRE "/PROP/TYPE4/3\nt\n0\n10,1\n5\n", 0, 28, "field fct_ID1", "not supported yet",
+                 "/COUPLING/SPRING");
+    EXPECT_ERROR(SPRE "/PROP/TYPE4/3\nt\n0\n10,1\n0,,,,,,0.5\n", 0, 28, "field dmin", "rupture");
+    EXPECT_ERROR(SPRE "/PROP/SPRING/3\nt\n0\n", 0, 24, "card /PROP/SPRING/3", "expected", "K C A B D");
+    /* compiler: the property, the nodes, the bodies */
+    snprintf(text, sizeof text, SPRE "/PROP/TYPE8/3\nt\n0\n/SPRING/7\n31,1,2\n");
+    EXPECT_ERROR(text, 1, 23, "card /PART/7", "field prop_ID", "TYPE8", "not supported yet");
+    snprintf(text, sizeof text, SPRE "/SPRING/7\n31,1,2\n");
+    EXPECT_ERROR(text, 1, 23, "card /PART/7", "field prop_ID", "/PROP/SPRING");
+    snprintf(text, sizeof text, SPRE "%s/SPRING/6\n31,1,2\n", p4);
+    EXPECT_ERROR(text, 1, 29, "card /SPRING/6", "field part_ID", "no such part");
+    snprintf(text, sizeof text, SPRE "%s/SPRING/7\n31,1,77\n", p4);
+    EXPECT_ERROR(text, 1, 29, "card /SPRING/7", "field node_ID2", "no such node");
+    /* a spring inside one body (node 5 is body 1's) never stretches: left
+     * out, its mass still the body's; a bad law is reported all the same */
+    snprintf(text, sizeof text, SPRE "/PROP/TYPE4/3\nt\n0.5\n10,1\n/SPRING/7\n31,1,5\n");
+    rc_model *in = compile_deck(text);
+    ENSURE(in && in->cpl->n == 0 && in->cpl->ncard == 0);
+    if (in) ENSURE_NEAR(in->body_mass[0], 1.3 + 0.5, 1e-15, 0);
+    rc_model_free(in);
+    snprintf(text, sizeof text, SPRE "/PROP/TYPE8/3\nt\n0\n/SPRING/7\n31,1,5\n");
+    EXPECT_ERROR(text, 1, 23, "card /PART/7", "field prop_ID", "TYPE8");
+    snprintf(text, sizeof text, SPR_BODIES "/NODE\n11,0,0,0\n12,1,0,0\n/PART/7\nsprings\n3\n%s/SPRING/7\n31,11,12\n", p4);
+    EXPECT_ERROR(text, 1, 32, "card /SPRING/7", "no /RBODY");
+    /* a ground node (in no body, its translations held by /BCS), as Radioss
+     * decks hold a spring's far end: the /BCS and the /GRAV of a group
+     * holding it skip it; without the /BCS the /GRAV names it */
+    snprintf(text, sizeof text,
+             SPR_BODIES "/NODE\n11,0,0,-1\n/GRNOD/NODE/8\nground and body 1\n11,1\n/BCS/1\nground\n111 000,0,8\n"
+                        "/GRAV/1\ng\n0,Z,0,0,8,,1,-9.81\n/PART/7\nsprings\n3\n%s/SPRING/7\n31,11,1\n", p4);
+    rc_model *m = compile_deck(text);
+    ENSURE(m && m->cpl->n == 1 && m->cpl->b1[0] == -1 && m->cpl->b2[0] == 0 && m->body_fixed[0] == 0);
+    if (m) ENSURE(m->body_dofmask[0] == 1 && m->body_grav[2] == -9.81);
+    rc_model_free(m);
+    snprintf(text, sizeof text,
+             SPR_BODIES "/NODE\n11,0,0,-1\n/GRNOD/NODE/8\nground and body 1\n11,1\n"
+                        "/GRAV/1\ng\n0,Z,0,0,8,,1,-9.81\n/PART/7\nsprings\n3\n%s/SPRING/7\n31,11,1\n", p4);
+    EXPECT_ERROR(text, 1, 25, "card /GRNOD/NODE/8", "node 11 belongs to no /RBODY", "/GRAV/1");
+#undef SPRE
 }
 
 /* ---- spring laws ------------------------------------------------------------- */
@@ -661,6 +819,9 @@ void suite_coupling(void)
     RUN_TEST(test_coupling_cards_read);
     RUN_TEST(test_coupling_card_errors);
     RUN_TEST(test_coupling_compile_model);
+    RUN_TEST(test_coupling_spring_element_read);
+    RUN_TEST(test_coupling_spring_element_matches_card);
+    RUN_TEST(test_coupling_spring_element_errors);
     RUN_TEST(test_coupling_stiffness_integral);
     RUN_TEST(test_coupling_spring_forms);
     RUN_TEST(test_coupling_catenary_solutions);

@@ -12,6 +12,7 @@
 #include "testutil.h"
 #include "case/case.h"
 #include "base/error.h"
+#include "model/model.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -872,6 +873,59 @@ static void test_deck_units_refused(void)
 #undef MM_DECK
 }
 
+/* tests/data/radioss_rigid_cards.rad: a deck of Radioss cards only (a
+ * /PENTA6 wedge and a /TETRA10 body joined by a /SPRING of /PROP/TYPE4, a
+ * point body framed by /SKEW/MOV on a spring to a free node and pushed by
+ * an /IMPVEL from Tstart to Tstop, /GRPART/GRPART, the engine's /RUN and
+ * /ANIM/DT) read, compiled and run end to end: the masses from the mesh
+ * and the springs, the imposed window's events and velocity. */
+static void test_deck_radioss_rigid_cards(void)
+{
+    rc_case *c = load_ok("tests/data/radioss_rigid_cards.rad");
+    rc_model *m = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    ENSURE(c != NULL);
+    if (!c) return;
+    ENSURE(c->ngrpart == 3 && c->grpart[2].n == 2 && c->grpart[2].parts[0] == 1 && c->grpart[2].parts[1] == 2);
+    ENSURE(rc_model_compile(c, &m, &e) == RC_OK);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        rc_case_free(c);
+        return;
+    }
+    const double *M = m->body_mass;
+    ENSURE(rc_model_body_count(m) == 3);
+    /* 7800 kg/m^3: the wedge 0.02 x 0.1 m^3, the tetrahedron 0.0045 m^3;
+     * the springs' 0.2 kg shared by their nodes (node 106 in no body) */
+    ENSURE_NEAR(M[0], 7800 * 0.002 + 0.1, 1e-13, 0);
+    ENSURE_NEAR(M[1], 7800 * 0.0045 + 0.1, 1e-13, 0);
+    ENSURE_NEAR(M[2], 2.5 + 0.1, 1e-14, 0);
+    int n = rc_model_state_size(m);
+    double *y = malloc((size_t)n * sizeof *y);
+    static tu_evlog ev;
+    memset(&ev, 0, sizeof ev);
+    rc_run_options o = {.t_end_override = 0.04, .y_end = y, .on_event = tu_evlog_event, .user = &ev};
+    ENSURE(y && rc_run(m, &o, NULL, &e) == RC_OK);
+    double s[13];
+    if (y && rc_model_body_state(m, y, 3, s, &e) == RC_OK) ENSURE_NEAR(s[7], 0.4, 1e-9, 0);
+    int starts = 0;
+    for (int k = 0; k < ev.n && k < TU_MAXEV; k++)
+        if (!strcmp(ev.kind[k], "impvel_start")) starts += fabs(ev.t[k] - 0.02) < 1e-14;
+    ENSURE(starts == 1);
+    /* the whole run (to 0.1 s): the window closes at Tstop */
+    memset(&ev, 0, sizeof ev);
+    rc_run_options o2 = {.on_event = tu_evlog_event, .user = &ev};
+    ENSURE(rc_run(m, &o2, NULL, &e) == RC_OK);
+    int stops = 0;
+    for (int k = 0; k < ev.n && k < TU_MAXEV; k++)
+        if (!strcmp(ev.kind[k], "impvel_stop")) stops += fabs(ev.t[k] - 0.05) < 1e-14;
+    ENSURE(stops == 1);
+    free(y);
+    rc_model_free(m);
+    rc_case_free(c);
+}
+
 void suite_deck(void);
 void suite_deck(void)
 {
@@ -895,5 +949,6 @@ void suite_deck(void)
     RUN_TEST(test_deck_units_90_form);
     RUN_TEST(test_deck_units_run_matches_si);
     RUN_TEST(test_deck_units_refused);
+    RUN_TEST(test_deck_radioss_rigid_cards);
     tu_tmp_cleanup();
 }

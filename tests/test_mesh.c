@@ -355,6 +355,33 @@ static void test_mesh_deck_skew_ispher(void)
         ENSURE_NEAR(md->body_J[1], 1.0, 1e-14, 0);
         rc_model_free(md);
     }
+    /* the same frame carried by three nodes (/SKEW/MOV with Dir X, Y, Z and
+     * /SKEW/MOV2), the nodes after the skew cards; N1 at (0.3, 0.2, 0.1) */
+    md = compile_text("/SKEW/MOV/5\nx\n11,12,13,X\n/SKEW/MOV/6\ny\n11,14,15,  y\n/SKEW/MOV/7\nz\n11,16,17,z\n"
+                      "/SKEW/MOV2/8\nz\n11,16,17\n"
+                      "/NODE\n11,0.3,0.2,0.1\n12,1.0,-0.5,0.1\n13,1.6,-0.2,0.1\n14,0.6,0.5,0.1\n15,0.6,0.5,0.6\n"
+                      "16,0.3,0.2,2.1\n17,1.3,-0.8,0.3\n"
+                      "/NODE\n1,0,0,0\n2,0,0,1\n3,0,0,2\n4,0,0,3\n"
+                      "/RBODY/1\nb\n1,0,5,3,1.0\n1.0,3.0,2.0\n0,0,0\n/RBODY/2\nb\n2,0,6,3,1.0\n1.0,3.0,2.0\n0,0,0\n"
+                      "/RBODY/3\nb\n3,0,7,3,1.0\n1.0,3.0,2.0\n0,0,0\n/RBODY/4\nb\n4,0,8,3,1.0\n1.0,3.0,2.0\n0,0,0\n"
+                      RUN_TAIL, &e);
+    ENSURE(md != NULL);
+    if (!md) fprintf(stderr, "  %s\n", e.msg);
+    for (int b = 0; md && b < 4; b++) {
+        ENSURE_NEAR(md->body_J[9 * b + 0], 2.0, 1e-14, 0);
+        ENSURE_NEAR(md->body_J[9 * b + 4], 2.0, 1e-14, 0);
+        ENSURE_NEAR(md->body_J[9 * b + 8], 2.0, 1e-14, 0);
+        ENSURE_NEAR(md->body_J[9 * b + 1], 1.0, 1e-14, 0);
+        ENSURE_NEAR(md->body_J[9 * b + 2], 0.0, 0, 1e-14);
+    }
+    rc_model_free(md);
+    EXPECT_MESH_ERROR("/NODE\n1,0,0,0\n2,1,0,0\n/SKEW/MOV/5\nx\n1,2,3\n" RUN_TAIL, ":6:", "card /SKEW/MOV/5",
+                      "field node_ID3", "no such node");
+    EXPECT_MESH_ERROR("/NODE\n1,0,0,0\n2,1,0,0\n3,2,0,0\n/SKEW/MOV/5\nx\n1,2,3\n" RUN_TAIL, ":7:",
+                      "card /SKEW/MOV/5", "field node_ID1 node_ID2 node_ID3", "not on one line");
+    EXPECT_MESH_ERROR("/SKEW/MOV/5\nx\n1,2,3,W\n" RUN_TAIL, ":3:", "card /SKEW/MOV/5", "field Dir", "X, Y or Z");
+    EXPECT_MESH_ERROR("/SKEW/MOV/5\nx\n1,2,1\n" RUN_TAIL, ":3:", "card /SKEW/MOV/5", "three different nodes");
+    EXPECT_MESH_ERROR("/SKEW/CYL/5\nx\n1,2,1\n" RUN_TAIL, ":1:", "/SKEW/CYL/5", "not supported yet", "/SKEW/MOV");
     md = compile_text("/NODE\n1,0,0,0\n/RBODY/1\nb\n1,0,0,0,1.0\n1.0,1.0,1e-6\n0,0,0\n" RUN_TAIL, &e);
     ENSURE(md != NULL);
     if (md) {
@@ -479,6 +506,98 @@ static void test_mesh_deck_tetra_triangle(void)
     }
 }
 
+/* The pentahedron (/PENTA6, the degenerate brick 1 2 3 3 4 5 6 6) against
+ * its three tetrahedra (exact for plane faces), a tilted right prism; the
+ * quadratic tetrahedron (/TETRA10): straight edges give the linear one, and
+ * the mid-edge nodes on the quadratic map phi(X) = X + eps x^2 e_x of the
+ * unit tetrahedron (reproduced exactly by the element) give the closed
+ * forms m = rho int det(grad phi) = rho (1/6 + eps/12) and
+ * int phi_x det = 1/24 + 3 eps/60 + 2 eps^2/120, int y det = 1/24 + 2 eps/120. */
+static void test_mesh_element_penta6_tetra10(void)
+{
+    const double rho = 2.7;
+    const double w[6][3] = {{0.1, 0.2, 0.3},      {1.3, 0.25, 0.28},  {0.2, 0.9, 0.35},
+                            {0.15, 0.22, 1.4},    {1.35, 0.27, 1.38}, {0.25, 0.92, 1.45}};
+    /* planar quad faces: the top is the bottom translated by (0.05, 0.02, 1.1) */
+    double q[6][3];
+    for (int k = 0; k < 3; k++)
+        for (int d = 0; d < 3; d++) {
+            q[k][d] = w[k][d];
+            q[k + 3][d] = w[k][d] + (d == 0 ? 0.05 : d == 1 ? 0.02 : 1.1);
+        }
+    static const int map[8] = {0, 1, 2, 2, 3, 4, 5, 5};
+    double h[8][3];
+    for (int k = 0; k < 8; k++) memcpy(h[k], q[map[k]], sizeof h[k]);
+    rc_mp a = {0, {0, 0, 0}, {0, 0, 0, 0, 0, 0}}, b = a;
+    const double V = rc_mp_hex(&a, (const double(*)[3])h, rho);
+    static const int tets[3][4] = {{0, 1, 2, 5}, {0, 1, 5, 4}, {0, 4, 5, 3}};
+    double Vt = 0;
+    for (int t = 0; t < 3; t++) {
+        double p4[4][3];
+        for (int k = 0; k < 4; k++) memcpy(p4[k], q[tets[t][k]], sizeof p4[k]);
+        Vt += rc_mp_tet(&b, (const double(*)[3])p4, rho);
+    }
+    ENSURE_NEAR(V, Vt, 1e-14, 0);
+    ENSURE_NEAR(a.m, b.m, 1e-14, 0);
+    for (int k = 0; k < 3; k++) ENSURE_NEAR(a.s[k], b.s[k], 1e-13, 0);
+    for (int k = 0; k < 6; k++) ENSURE_NEAR(a.S[k], b.S[k], 1e-13, 1e-15);
+    /* TETRA10, straight edges = TETRA4 */
+    const double t4[4][3] = {{0.1, 0.2, 0.3}, {1.3, 0.25, 0.28}, {0.2, 0.9, 0.35}, {0.15, 0.22, 1.4}};
+    static const int edge[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+    double t10[10][3];
+    for (int k = 0; k < 4; k++) memcpy(t10[k], t4[k], sizeof t10[k]);
+    for (int k = 0; k < 6; k++)
+        for (int d = 0; d < 3; d++) t10[4 + k][d] = 0.5 * (t4[edge[k][0]][d] + t4[edge[k][1]][d]);
+    rc_mp c10 = {0, {0, 0, 0}, {0, 0, 0, 0, 0, 0}}, c4 = c10;
+    ENSURE_NEAR(rc_mp_tet10(&c10, (const double(*)[3])t10, rho), rc_mp_tet(&c4, t4, rho), 1e-14, 0);
+    for (int k = 0; k < 3; k++) ENSURE_NEAR(c10.s[k], c4.s[k], 1e-14, 0);
+    for (int k = 0; k < 6; k++) ENSURE_NEAR(c10.S[k], c4.S[k], 1e-13, 1e-16);
+    /* TETRA10 on phi(X) = X + eps x^2 e_x (either numbering orientation) */
+    const double eps = 0.37, u[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int flip = 0; flip < 2; flip++) {
+        double X[10][3];
+        for (int k = 0; k < 4; k++) memcpy(X[k], u[flip && k >= 2 ? 5 - k : k], sizeof X[k]);
+        for (int k = 0; k < 6; k++)
+            for (int d = 0; d < 3; d++) X[4 + k][d] = 0.5 * (X[edge[k][0]][d] + X[edge[k][1]][d]);
+        for (int k = 0; k < 10; k++) X[k][0] += eps * X[k][0] * X[k][0];
+        rc_mp m = {0, {0, 0, 0}, {0, 0, 0, 0, 0, 0}};
+        rc_mp_tet10(&m, (const double(*)[3])X, 1.0);
+        ENSURE_NEAR(m.m, 1.0 / 6.0 + eps / 12.0, 1e-14, 0);
+        ENSURE_NEAR(m.s[0], 1.0 / 24.0 + 3 * eps / 60.0 + 2 * eps * eps / 120.0, 1e-14, 0);
+        ENSURE_NEAR(m.s[1], 1.0 / 24.0 + 2 * eps / 120.0, 1e-14, 0);
+    }
+}
+
+/* /PENTA6 and /TETRA10 read (a TETRA10 element is two lines; a blank
+ * mid-edge node is the midpoint) and integrated into their body's mass. */
+static void test_mesh_deck_penta6_tetra10(void)
+{
+    rc_error e;
+    rc_model *md = compile_text("/NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,2\n5,1,0,2\n6,0,1,2\n10,5,5,5\n"
+                                "21,0,0,5\n22,1,0,5\n23,0,1,5\n24,0,0,6\n25,0.5,0,5\n26,0.5,0.5,5\n"
+                                "/MAT/LAW1/1\nm\n1000\n/PART/1\nwedge\n0,1\n/PART/2\ntet10\n0,1\n"
+                                "/PENTA6/1\n         7         1         2         3         4         5         6\n"
+                                "/TETRA10/2\n         8\n        21        22        23        24        25        26"
+                                "                                        \n"
+                                "/GRNOD/PART/5\ng\n1\n/GRNOD/PART/6\nh\n2\n"
+                                "/RBODY/1\nw\n10,,,3,,5\n\n\n/RBODY/2\nt\n21,,,3,,6\n\n\n" RUN_TAIL, &e);
+    ENSURE(md != NULL);
+    if (!md) fprintf(stderr, "  %s\n", e.msg);
+    if (md) {
+        /* a right prism: area 1/2, height 2: 1000 kg; centroid (1/3, 1/3, 1) */
+        ENSURE_NEAR(md->body_mass[0], 1000.0, 1e-13, 0);
+        ENSURE_NEAR(md->body_y0[0], 1.0 / 3.0, 1e-14, 0);
+        ENSURE_NEAR(md->body_y0[2], 1.0, 1e-14, 0);
+        /* a straight TETRA10 (three mid nodes blank): the tetrahedron 1000/6 kg */
+        ENSURE_NEAR(md->body_mass[1], 1000.0 / 6.0, 1e-13, 0);
+        ENSURE_NEAR(md->body_y0[RC_NB + 2], 5.25, 1e-14, 0);
+        rc_model_free(md);
+    }
+    /* an element of one line: the node line is missing */
+    EXPECT_MESH_ERROR("/NODE\n1,0,0,0\n/TETRA10/2\n8\n" RUN_TAIL, ":4:", "card /TETRA10/2", "field node_ID1",
+                      "ten nodes");
+}
+
 /* /ADMAS: type 0 on each node, type 1 shared; on the main node it acts as
  * the card's Mass (ICoG 4 keeps it, drops the secondary nodes'). */
 static void test_mesh_deck_admas(void)
@@ -564,6 +683,8 @@ void suite_mesh(void)
     RUN_TEST(test_mesh_deck_skew_ispher);
     RUN_TEST(test_mesh_deck_shell_box_groups);
     RUN_TEST(test_mesh_deck_tetra_triangle);
+    RUN_TEST(test_mesh_element_penta6_tetra10);
+    RUN_TEST(test_mesh_deck_penta6_tetra10);
     RUN_TEST(test_mesh_deck_admas);
     RUN_TEST(test_mesh_deck_errors);
     RUN_TEST(test_mesh_rbody_layouts);

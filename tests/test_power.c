@@ -277,8 +277,55 @@ static void test_power_card_errors(void)
     expect_error("radius.rad", BODY_DECK "/SURF/CYL/1\nc\n1\n0,0,0.05\n1,0,0\n0,0.1\n", 0, "field R", NULL);
     expect_error("boxv.rad", BODY_DECK "/SURF/BOX/3\nb\n1\n0,0,0\n1,1,1\n1,0,0\n2,0,0\n", 0, "VX VY VZ", "not parallel");
     expect_error("dir.rad", BODY_DECK "/IMPVEL/1\ni\n1,XY,0,0,1\n", 0, "field Dir", "XX, YY or ZZ");
-    expect_error("tstart.rad", BODY_DECK "/IMPVEL/1\ni\n1,X,0,0,1\n1,1,0.5\n", 0, "Tstart", "not supported yet");
-    expect_error("skew.rad", BODY_DECK "/IMPVEL/1\ni\n1,X,3,0,1\n", 0, "skew_ID", "not supported yet");
+    /* a later start: translations only (a rotation's would jump the angular velocity) */
+    expect_error("tstart.rad", BODY_DECK "/IMPVEL/1\ni\n1,XX,0,0,1\n1,1,0.5\n", 0, "Tstart", "not supported yet");
+    expect_error("tstart_static.rad", BODY_DECK "/SOLVER\n3\n/IMPVEL/1\ni\n1,X,0,0,1\n1,1,0.5\n", 1, "Tstart > 0",
+                 "/SOLVER Method 3");
+    {
+        /* a skew axis that is a global one, the other way: that component, the scale negated */
+        const char *path = write_deck("skew_global.rad", BODY_DECK "/SKEW/FIX/3\ns\n0,0,0\n0,0,-1\n1,0,0\n"
+                                                         "/IMPVEL/1\ni\n1,Y,3,0,1\n1,2.5\n");
+        rc_case *c = NULL;
+        rc_model *m = NULL;
+        rc_error e;
+        rc_error_clear(&e);
+        ENSURE(rc_case_load(path, &c, &e) == RC_OK && rc_model_compile(c, &m, &e) == RC_OK);
+        if (m) ENSURE(m->imp->nt == 1 && m->imp->tdir[0] == 2 && m->imp->tfscale[0] == -2.5 && m->imp->nsk == 0);
+        else printf("    skew_global.rad: %s\n", e.msg);
+        rc_model_free(m);
+        rc_case_free(c);
+    }
+    {
+        /* a translation with Tstart > 0 compiles: free before, from Tstart on imposed */
+        const char *path = write_deck("tstart_ok.rad", BODY_DECK "/INIVEL/TRA/1\nv\n0,0,-0.3,1\n"
+                                                       "/IMPVEL/1\ni\n1,Z,0,0,1\n1,2.5,0.004,0.007\n");
+        rc_case *c = NULL;
+        rc_model *m = NULL;
+        rc_error e;
+        rc_error_clear(&e);
+        ENSURE(rc_case_load(path, &c, &e) == RC_OK && rc_model_compile(c, &m, &e) == RC_OK);
+        if (m) {
+            ENSURE(m->imp && m->imp->nt == 1 && m->imp->ttstart[0] == 0.004 && m->imp->ttstop[0] == 0.007);
+            ENSURE(m->body_y0[9] == -0.3); /* the /INIVEL stands until Tstart */
+        } else
+            printf("    tstart_ok.rad: %s\n", e.msg);
+        rc_model_free(m);
+        rc_case_free(c);
+    }
+    /* skew_ID: translations along a /SKEW/FIX axis only, the body's only
+     * imposed or held translation */
+    expect_error("skew.rad", BODY_DECK "/IMPVEL/1\ni\n1,XX,3,0,1\n", 0, "skew_ID", "not supported yet");
+    expect_error("skew_missing.rad", BODY_DECK "/IMPVEL/1\ni\n1,X,3,0,1\n", 1, "skew_ID", "no such skew");
+#define SKEW3 "/NODE\n7,0,0,0\n8,1,1,0\n9,0,0,1\n/SKEW/FIX/3\ns\n0,0,0\n1,1,0\n0,0,1\n"
+    expect_error("skew_mov.rad", BODY_DECK "/SKEW/MOV/3\ns\n7,8,9\n/NODE\n7,0,0,0\n8,1,1,0\n9,0,0,1\n"
+                                           "/IMPVEL/1\ni\n1,X,3,0,1\n", 1, "skew_ID", "moving axis");
+    expect_error("skew_bcs.rad", BODY_DECK SKEW3 "/BCS/1\nb\n001 000,0,1\n/IMPVEL/1\ni\n1,X,3,0,1\n", 1,
+                 "skew_ID", "held by /BCS");
+    expect_error("skew_two.rad", BODY_DECK SKEW3 "/IMPVEL/1\ni\n1,X,3,0,1\n/IMPVEL/2\nj\n1,Z,0,0,1\n", 1,
+                 "along a skew axis by /IMPVEL/1", NULL);
+    expect_error("skew_static.rad", BODY_DECK SKEW3 "/SOLVER\n3\n/IMPVEL/1\ni\n1,X,3,0,1\n", 1, "skew axis",
+                 "/SOLVER Method 3");
+#undef SKEW3
     /* compile-time: pairs, references, conflicts */
     expect_error("pair.rad", BODY_DECK "/SURF/PLANE/3\nq\n0,0,1\n0,0,2\n/INTER/POWER/1\nt\n2,3\n1e6\n", 1,
                  "plane against plane", "not a contact pair");

@@ -2,9 +2,9 @@
  * Card dispatch: the table of supported cards (keyword, subtype, family
  * function), the Radioss cards ignored or planned, and the call of a
  * card's function. The card functions live in one file per family:
- *   cards_bodies.c      /NODE /GRNOD/NODE /RBODY /PART /GRPART
- *   cards_mesh.c        /SHELL /SH3N /BRICK /TETRA4 /PROP/SHELL /PROP/SOLID /MAT
- *                       /SKEW/FIX /GRNOD/PART /GRNOD/GRNOD (called first)
+ *   cards_bodies.c      /NODE /GRNOD/NODE /RBODY /PART /GRPART/PART /GRPART/GRPART
+ *   cards_mesh.c        /SHELL /SH3N /BRICK /TETRA4 /PENTA6 /TETRA10 /SPRING /PROP/SHELL /PROP/SOLID /PROP/SPRING /MAT
+ *                       /SKEW/FIX /SKEW/MOV /SKEW/MOV2 /GRNOD/PART /GRNOD/GRNOD (called first)
  *   cards_surfaces.c    /SURF/PLANE /SURF/ELLIPS /SURF/CYL /SURF/BOX /SURF/SEG /SURF/PART
  *   cards_interfaces.c  /INTER/TYPE6 /INTER/POWER
  *   cards_friction.c    /FRICTION /FRIC_ORIENT
@@ -47,6 +47,7 @@ static const struct {
     {"RUN", NULL, RC_CARD_RUN},        {"SOLVER", NULL, RC_CARD_SOLVER},
     {"COUPLING", "SPRING", RC_CARD_CPL_SPRING}, {"COUPLING", "CATENARY", RC_CARD_CPL_CATENARY},
     {"PART", NULL, RC_CARD_PART},      {"GRPART", "PART", RC_CARD_GRPART},
+    {"GRPART", "GRPART", RC_CARD_GRPART},
     {"FRICTION", NULL, RC_CARD_FRICTION}, {"FRIC_ORIENT", NULL, RC_CARD_FRIC_ORIENT},
     {"INTER", "POWER", RC_CARD_POWER}, {"SURF", "CYL", RC_CARD_CYL},
     {"SURF", "BOX", RC_CARD_BOX},      {"IMPVEL", NULL, RC_CARD_IMPVEL},

@@ -237,20 +237,97 @@ rc_status rc_card_part(rc_reader *rd, const rc_block *b)
     return rc_note_id(rd, RC_IDK_PART, p->id, &p->loc, b->hdr->text);
 }
 
-/* /GRPART/PART/grpart_ID: title, then up to 10 part ids per line. */
+/* /GRPART/PART/grpart_ID: title, then up to 10 part ids per line.
+ * /GRPART/GRPART/grpart_ID: the same with part group ids (expanded by
+ * rc_cards_grpart_finish). */
 rc_status rc_card_grpart(rc_reader *rd, const rc_block *b)
 {
     rc_case *c = rd->c;
     int nd, cap = 0, lcap = 0;
     rc_status st;
-    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "grpart_ID", "/GRPART/PART/grpart_ID")))
+    const int by_group = strcmp(b->kw[1], "GRPART") == 0;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "grpart_ID",
+                        by_group ? "/GRPART/GRPART/grpart_ID" : "/GRPART/PART/grpart_ID")))
         return st;
     RC_GROW(rd, c->grpart, rd->capgrpart, c->ngrpart);
     rc_case_grpart *g = &c->grpart[c->ngrpart++];
     g->id = b->id;
     g->loc = b->hdr->loc;
-    if ((st = rc_var_lines(rd, b, g->title, "part_ID1 ... part_ID10", &nd))) return st;
-    if ((st = rc_id_lines(rd, b, 1, nd, "part_ID", &g->parts, &g->part_loc, &g->n, &cap, &lcap)))
+    g->by_group = by_group;
+    if ((st = rc_var_lines(rd, b, g->title, by_group ? "grpart_ID1 ... grpart_ID10" : "part_ID1 ... part_ID10",
+                           &nd)))
+        return st;
+    if ((st = rc_id_lines(rd, b, 1, nd, by_group ? "grpart_ID" : "part_ID", &g->parts, &g->part_loc, &g->n, &cap,
+                          &lcap)))
         return st;
     return rc_note_id(rd, RC_IDK_GRPART, g->id, &g->loc, b->hdr->text);
+}
+
+/* Expand /GRPART/GRPART group gi into its parts (its nested groups first);
+ * `state`: 0 not yet, 1 being expanded (a cycle when met again), 2 done. */
+static rc_status rc_grpart_expand(rc_reader *rd, int gi, char *state)
+{
+    rc_case *c = rd->c;
+    rc_case_grpart *g = &c->grpart[gi];
+    char card[48];
+    snprintf(card, sizeof card, "/GRPART/GRPART/%d", g->id);
+    if (state[gi] == 2 || !g->by_group) return RC_OK;
+    state[gi] = 1;
+    int *parts = NULL, n = 0, cap = 0, lcap = 0;
+    rc_loc *locs = NULL;
+    rc_status st = RC_OK;
+    for (int k = 0; k < g->n && !st; k++) {
+        int gj = -1;
+        for (int q = 0; q < c->ngrpart && gj < 0; q++)
+            if (c->grpart[q].id == g->parts[k]) gj = q;
+        const rc_loc at = rc_loc_at(g->part_loc, k, g->loc);
+        if (gj < 0) {
+            st = rc_case_fail(rd, &at, card, "grpart_ID", "expected the id of a /GRPART, got %d (no such group)",
+                              g->parts[k]);
+            break;
+        }
+        if (state[gj] == 1) {
+            st = rc_case_fail(rd, &at, card, "grpart_ID",
+                              gj == gi ? "group %d names itself" : "the groups of /GRPART/%d form a cycle (through /GRPART/%d)",
+                              g->parts[k], g->id);
+            break;
+        }
+        if ((st = rc_grpart_expand(rd, gj, state))) break;
+        const rc_case_grpart *h = &c->grpart[gj];
+        for (int j = 0; j < h->n; j++) {
+            int seen = 0;
+            for (int u = 0; u < n && !seen; u++) seen = parts[u] == h->parts[j];
+            if (seen) continue;
+            void *np = rc_case_grow(rd, parts, &cap, n, sizeof *parts), *nl = NULL;
+            if (np) parts = np;
+            if (np) nl = rc_case_grow(rd, locs, &lcap, n, sizeof *locs);
+            if (!np || !nl) { st = RC_ENOMEM; break; }
+            locs = nl;
+            parts[n] = h->parts[j];
+            locs[n++] = at; /* a part of a nested group: the line naming that group */
+        }
+    }
+    if (st) {
+        free(parts);
+        free(locs);
+        return st;
+    }
+    free(g->parts);
+    free(g->part_loc);
+    g->parts = parts;
+    g->part_loc = locs;
+    g->n = n;
+    state[gi] = 2;
+    return RC_OK;
+}
+
+rc_status rc_cards_grpart_finish(rc_reader *rd)
+{
+    rc_case *c = rd->c;
+    char *state = calloc((size_t)c->ngrpart + 1, 1);
+    if (!state) return rc_case_nomem(rd);
+    rc_status st = RC_OK;
+    for (int k = 0; k < c->ngrpart && !st; k++) st = rc_grpart_expand(rd, k, state);
+    free(state);
+    return st;
 }

@@ -228,7 +228,7 @@ rc_status rc_card_impvel(rc_reader *rd, const rc_block *b)
 
     rc_field l1[] = {RC_F_INT("fct_IDT", &v->fct_id, 0, RC_FF_POS),
                      RC_F_STR("Dir", dir, 10),
-                     RC_F_INTN("skew_ID", &v->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew),
+                     RC_F_INT("skew_ID", &v->skew_id, 0, RC_FF_NONNEG),
                      RC_F_INTN("sensor_ID", &v->sensor_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_sensor),
                      RC_F_INT("grnod_ID", &v->grnod_id, 0, RC_FF_POS),
                      RC_F_INTN("frame_ID", &v->frame_id, RC_FF_NONNEG | RC_FF_ONLY0, "(moving frames)"),
@@ -275,10 +275,16 @@ rc_status rc_card_impvel(rc_reader *rd, const rc_block *b)
     if (v->tstop < v->tstart)
         return rc_case_fail(rd, &v->line_loc[1], b->name, "Tstop", "expected Tstop >= Tstart = %.15g, got %s",
                             v->tstart, l2[3].got);
-    if (v->tstart > 0)
+    if (v->skew_id && v->dir >= 3)
+        return rc_case_fail(rd, &v->line_loc[0], b->name, "skew_ID",
+                            "expected 0 for a rotation (Dir %s), got %s: an imposed rotation about a skew axis is "
+                            "not supported yet (a translation along a skew axis is: Dir X, Y or Z)",
+                            dirs[v->dir], l1[2].got);
+    if (v->tstart > 0 && v->dir >= 3)
         return rc_case_fail(rd, &v->line_loc[1], b->name, "Tstart",
-                            "expected Tstart <= 0, got %s: a later start (a jump of the velocity) is not "
-                            "supported yet; shape the time function instead",
-                            l2[2].got);
+                            "expected Tstart <= 0 for a rotation (Dir %s), got %s: a later start of an imposed "
+                            "rotation (a jump of the angular velocity) is not supported yet; shape the time "
+                            "function instead",
+                            dirs[v->dir], l2[2].got);
     return rc_note_id(rd, RC_IDK_IMPVEL, v->id, &v->loc, b->hdr->text);
 }

@@ -1,7 +1,10 @@
 /*
  * Mesh cards: the elements whose mass makes a rigid body's (/SHELL, /SH3N,
- * /BRICK, /TETRA4), their properties (/PROP/SHELL, /PROP/SOLID) and
- * materials (/MAT/<law>: the density), skew frames (/SKEW/FIX) and the node
+ * /BRICK, /TETRA4, /PENTA6, /TETRA10), the spring elements between nodes (/SPRING, couplings
+ * of the bodies in the model stage), their properties (/PROP/SHELL,
+ * /PROP/SOLID, /PROP/SPRING) and
+ * materials (/MAT/<law>: the density), skew frames (/SKEW/FIX, /SKEW/MOV,
+ * /SKEW/MOV2: their axes from the nodes after the last card) and the node
  * groups built from parts or groups (/GRNOD/PART, /GRNOD/GRNOD, expanded into
  * node lists once every card is read). Layouts: docs/case-format.md; the
  * mass properties are computed by the model stage (model/massprop.c).
@@ -31,28 +34,39 @@ static rc_case_mesh *rc_mesh(rc_reader *rd)
 static rc_status rc_card_elements(rc_reader *rd, const rc_block *b, rc_elem_kind kind)
 {
     static const char *const usage[] = {"", "/SHELL/part_ID", "/SH3N/part_ID", "/BRICK/part_ID",
-                                        "/TETRA4/part_ID"};
-    static const char *const idname[] = {"", "shell_ID", "sh3n_ID", "brick_ID", "tetra_ID"};
-    static const int nnode[] = {0, 4, 3, 8, 4};
-    static const char *const nname[] = {"node_ID1", "node_ID2", "node_ID3", "node_ID4",
-                                        "node_ID5", "node_ID6", "node_ID7", "node_ID8"};
+                                        "/TETRA4/part_ID", "/PENTA6/part_ID", "/TETRA10/part_ID"};
+    static const char *const idname[] = {"", "shell_ID", "sh3n_ID", "brick_ID", "tetra_ID", "penta_ID", "tetra_ID"};
+    static const int nnode[] = {0, 4, 3, 8, 4, 6, 10};
+    static const char *const nname[] = {"node_ID1", "node_ID2", "node_ID3", "node_ID4", "node_ID5",
+                                        "node_ID6", "node_ID7", "node_ID8", "node_ID9", "node_ID10"};
     rc_case_mesh *ms = rc_mesh(rd);
     rc_status st;
     if (!ms) return RC_ENOMEM;
     if ((st = rc_header(rd, b, 1, RC_ID_REQUIRED, "part_ID", usage[kind]))) return st;
     const int n = rc_block_trim(b), nn = nnode[kind];
     const int shell = kind == RC_ELEM_SHELL || kind == RC_ELEM_SH3N;
-    for (int i = 0; i < n; i++) {
+    /* /TETRA10: two lines an element, the id then the ten nodes */
+    const int t10 = kind == RC_ELEM_TETRA10;
+    if (t10 && n % 2)
+        return rc_case_fail(rd, &b->lines[n - 1].loc, b->name, "node_ID1",
+                            "expected the line of the ten nodes of element %s after its id line, found the end of "
+                            "the card (a /TETRA10 element is two lines: tetra_ID; node_ID1 ... node_ID10)",
+                            b->lines[n - 1].text + strspn(b->lines[n - 1].text, " \t,"));
+    for (int i = 0; i < n; i += 1 + t10) {
         RC_GROW(rd, ms->elem, ms->capelem, ms->nelem);
         rc_case_elem *e = &ms->elem[ms->nelem++];
         rc_field f[14];
         int k = 0;
         rc_field fid = RC_F_INT(idname[kind], &e->id, 0, RC_FF_POS);
         f[k++] = fid;
+        if (t10) {
+            if ((st = rc_parse_line(rd, b, &b->lines[i], f, 1))) return st;
+            k = 0;
+        }
         for (int j = 0; j < nn; j++) {
-            /* SHELL node 4 may be blank (a triangle) */
+            /* SHELL node 4 may be blank (a triangle), so may a TETRA10 mid-edge node */
             rc_field fj = RC_F_INT(nname[j], &e->nodes[j], 0,
-                                   kind == RC_ELEM_SHELL && j == 3 ? RC_FF_NONNEG : RC_FF_POS);
+                                   (kind == RC_ELEM_SHELL && j == 3) || (t10 && j >= 4) ? RC_FF_NONNEG : RC_FF_POS);
             f[k++] = fj;
         }
         if (shell) {
@@ -63,11 +77,11 @@ static rc_status rc_card_elements(rc_reader *rd, const rc_block *b, rc_elem_kind
             f[k++] = phi;
             f[k++] = th;
         }
-        if ((st = rc_parse_line(rd, b, &b->lines[i], f, k))) return st;
+        if ((st = rc_parse_line(rd, b, &b->lines[i + t10], f, k))) return st;
         e->kind = kind;
         e->nn = nn;
         e->part_id = b->id;
-        e->loc = b->lines[i].loc;
+        e->loc = b->lines[i + t10].loc;
         if (kind == RC_ELEM_SHELL && (e->nodes[3] == 0 || e->nodes[3] == e->nodes[2])) {
             e->nodes[3] = 0;
             e->nn = 3; /* a degenerate quadrilateral is a triangle */
@@ -75,6 +89,44 @@ static rc_status rc_card_elements(rc_reader *rd, const rc_block *b, rc_elem_kind
         if ((st = rc_note_id(rd, shell ? RC_IDK_SHELL : RC_IDK_SOLID, e->id, &e->loc,
                              b->hdr->text)))
             return st;
+    }
+    return RC_OK;
+}
+
+/* /SPRING/part_ID: no title, one spring a line: sprg_ID node_ID1 node_ID2,
+ * then node_ID3..node_ID6 and Skew_ID, which only the Radioss spring types
+ * that ricochet does not read use (blank or 0 here). */
+static rc_status rc_card_springs(rc_reader *rd, const rc_block *b)
+{
+    static const char *const more =
+        "(nodes 3 to 6 belong to the pulley and multi-node spring types; ricochet reads /PROP/TYPE4 "
+        "springs between two nodes)";
+    rc_case_mesh *ms = rc_mesh(rd);
+    rc_status st;
+    if (!ms) return RC_ENOMEM;
+    if ((st = rc_header(rd, b, 1, RC_ID_REQUIRED, "part_ID", "/SPRING/part_ID"))) return st;
+    const int n = rc_block_trim(b);
+    for (int i = 0; i < n; i++) {
+        RC_GROW(rd, ms->spring, ms->capspring, ms->nspring);
+        rc_case_spring *e = &ms->spring[ms->nspring++];
+        rc_field f[] = {RC_F_INT("sprg_ID", &e->id, 0, RC_FF_POS),
+                        RC_F_INT("node_ID1", &e->nodes[0], 0, RC_FF_POS),
+                        RC_F_INT("node_ID2", &e->nodes[1], 0, RC_FF_POS),
+                        RC_F_INTN("node_ID3", NULL, RC_FF_ONLY0, more),
+                        RC_F_INTN("node_ID4", NULL, RC_FF_ONLY0, more),
+                        RC_F_INTN("node_ID5", NULL, RC_FF_ONLY0, more),
+                        RC_F_INTN("node_ID6", NULL, RC_FF_ONLY0, more),
+                        RC_F_INTN("Skew_ID", NULL, RC_FF_ONLY0,
+                                  "(a skew belongs to the six-degree-of-freedom springs, /PROP/TYPE8)")};
+        if ((st = rc_parse_line(rd, b, &b->lines[i], f, RC_NF(f)))) return st;
+        e->part_id = b->id;
+        e->loc = b->lines[i].loc;
+        if (e->nodes[0] == e->nodes[1])
+            return rc_case_fail(rd, &e->loc, b->name, "node_ID2",
+                                "expected a node other than node_ID1 = %d (a spring acts along the line "
+                                "between its two nodes), got %d",
+                                e->nodes[0], e->nodes[1]);
+        if ((st = rc_note_id(rd, RC_IDK_SPRING, e->id, &e->loc, b->hdr->text))) return st;
     }
     return RC_OK;
 }
@@ -116,6 +168,77 @@ static rc_status rc_card_prop(rc_reader *rd, const rc_block *b, rc_prop_kind kin
         if ((st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
         p->thick_loc = b->lines[3].loc;
     }
+    return rc_note_id(rd, RC_IDK_PROP, p->id, &p->loc, b->hdr->text);
+}
+
+/* /PROP/SPRING/prop_ID (/PROP/TYPE4): title; Mass (1-20), sens_ID (51-60),
+ * Isflag, Ileng; K C A B D; fct_ID1 H fct_ID2 fct_ID3 fct_ID4 (blank)
+ * dmin dmax; F E Ascale Hscale (the last two lines optional). The linear
+ * spring-damper F = K dl + C dl/dt is read; the curves, rate effects,
+ * rupture, sensor and per-length input are not supported yet.
+ * /PROP/SPR_GENE (TYPE8), /PROP/SPR_BEAM (TYPE13): kept, not read. */
+static rc_status rc_card_prop_spring(rc_reader *rd, const rc_block *b, int type)
+{
+    static const char *const fct = "(a nonlinear or rate-dependent spring: ricochet reads the linear "
+                                   "spring F = K dl + C dl/dt; use /COUPLING/SPRING Iform 3 or 4 for a "
+                                   "tabulated force)";
+    rc_case_mesh *ms = rc_mesh(rd);
+    rc_status st;
+    int nd;
+    if (!ms) return RC_ENOMEM;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "prop_ID", "/PROP/SPRING/prop_ID"))) return st;
+    RC_GROW(rd, ms->prop, ms->capprop, ms->nprop);
+    rc_case_prop *p = &ms->prop[ms->nprop++];
+    p->id = b->id;
+    p->kind = RC_PROP_SPRING;
+    p->sprtype = type;
+    p->loc = b->hdr->loc;
+    if (type != 4) {
+        if ((st = rc_var_lines(rd, b, p->title, "the property's lines", &nd))) return st;
+        return rc_note_id(rd, RC_IDK_PROP, p->id, &p->loc, b->hdr->text);
+    }
+    if ((st = rc_card_lines(rd, b, p->title, 2, 4,
+                            "Mass sens_ID Isflag Ileng, K C A B D[, fct_ID1 H fct_ID2 fct_ID3 fct_ID4 dmin "
+                            "dmax[, F E Ascale Hscale]]",
+                            &nd)))
+        return st;
+    double dmin = 0, dmax = 0;
+    rc_field l1[] = {RC_F_REALD("Mass", &p->mass, 0, RC_FF_NONNEG, RC_D_M), RC_F_SKIP(30),
+                     RC_F_INTN("sens_ID", NULL, RC_FF_ONLY0, "(a spring switched on or off by a sensor)"),
+                     RC_F_INT("Isflag", NULL, 0, 0),
+                     RC_F_SET("Ileng", NULL, 0, 0, 0x3u, 0x1u, "(input per unit length)")};
+    rc_field l2[] = {RC_F_REALD("K", &p->k, 0, RC_FF_NONNEG, RC_D_K),
+                     RC_F_REALD("C", &p->c, 0, RC_FF_NONNEG, RC_D_C),
+                     RC_F_REALD("A", NULL, 0, 0, RC_D_NONE), RC_F_REALD("B", NULL, 0, 0, RC_D_NONE),
+                     RC_F_REALD("D", NULL, 0, 0, RC_D_NONE)};
+    rc_field l3[] = {RC_F_INTN("fct_ID1", NULL, RC_FF_ONLY0, fct),
+                     RC_F_SET("H", NULL, 0, 0, 0x1FFu, 0x1u, "(hardening and unloading of a nonlinear spring)"),
+                     RC_F_INTN("fct_ID2", NULL, RC_FF_ONLY0, fct),
+                     RC_F_INTN("fct_ID3", NULL, RC_FF_ONLY0, fct),
+                     RC_F_INTN("fct_ID4", NULL, RC_FF_ONLY0, fct),
+                     RC_F_SKIP(10),
+                     RC_F_REALD("dmin", &dmin, 0, 0, RC_D_L),
+                     RC_F_REALD("dmax", &dmax, 0, 0, RC_D_L)};
+    rc_field l4[] = {RC_F_REALD("F", NULL, 0, 0, RC_D_NONE), RC_F_REALD("E", NULL, 0, 0, RC_D_NONE),
+                     RC_F_REALD("Ascale", NULL, 0, 0, RC_D_NONE), RC_F_REALD("Hscale", NULL, 0, 0, RC_D_NONE)};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
+    if ((st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
+    p->thick_loc = b->lines[2].loc;
+    if (nd >= 3) {
+        if ((st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
+        /* a rupture length (0: none, as Radioss's defaults of -1e30, 1e30) */
+        if (dmin != 0 && dmin > -1e29)
+            return rc_case_fail(rd, &b->lines[3].loc, b->name, "dmin",
+                                "expected 0 or blank (no rupture), got %s: not supported yet (a spring "
+                                "that fails at a negative elongation)",
+                                l3[6].got);
+        if (dmax != 0 && dmax < 1e29)
+            return rc_case_fail(rd, &b->lines[3].loc, b->name, "dmax",
+                                "expected 0 or blank (no rupture), got %s: not supported yet (a spring "
+                                "that fails at a positive elongation)",
+                                l3[7].got);
+    }
+    if (nd >= 4 && (st = rc_parse_line(rd, b, &b->lines[4], l4, RC_NF(l4)))) return st;
     return rc_note_id(rd, RC_IDK_PROP, p->id, &p->loc, b->hdr->text);
 }
 
@@ -188,6 +311,91 @@ static void rc_cross3(const double *a, const double *b, double *o)
     o[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+/* /SKEW/MOV/skew_ID: title; node_ID1 node_ID2 node_ID3 Dir.
+ * /SKEW/MOV2/skew_ID: title; node_ID1 node_ID2 node_ID3 (Dir Z).
+ * The axes come from the nodes once every card is read. */
+static rc_status rc_card_skew_mov(rc_reader *rd, const rc_block *b, int mov2)
+{
+    rc_case_mesh *ms = rc_mesh(rd);
+    rc_status st;
+    int nd;
+    char dir[11] = "";
+    if (!ms) return RC_ENOMEM;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "skew_ID", mov2 ? "/SKEW/MOV2/skew_ID" : "/SKEW/MOV/skew_ID")))
+        return st;
+    RC_GROW(rd, ms->skew, ms->capskew, ms->nskew);
+    rc_case_skew *s = &ms->skew[ms->nskew++];
+    s->id = b->id;
+    s->loc = b->hdr->loc;
+    s->mov = 1 + mov2;
+    if ((st = rc_card_lines(rd, b, s->title, 1, 1, mov2 ? "node_ID1 node_ID2 node_ID3" : "node_ID1 node_ID2 node_ID3 Dir",
+                            &nd)))
+        return st;
+    rc_field l1[] = {RC_F_INT("node_ID1", &s->nodes[0], 0, RC_FF_POS), RC_F_INT("node_ID2", &s->nodes[1], 0, RC_FF_POS),
+                     RC_F_INT("node_ID3", &s->nodes[2], 0, RC_FF_POS), RC_F_STR("Dir", dir, 10)};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, mov2 ? 3 : 4))) return st;
+    s->line_loc = b->lines[1].loc;
+    s->dir = 2;
+    if (!mov2) {
+        const char d = (char)(dir[0] & ~0x20);
+        if (!dir[0]) s->dir = 0; /* X by default */
+        else if (!dir[1] && (d == 'X' || d == 'Y' || d == 'Z')) s->dir = d - 'X';
+        else
+            return rc_case_fail(rd, &s->line_loc, b->name, "Dir", "expected X, Y or Z (the axis from node_ID1 to "
+                                "node_ID2), got %s", l1[3].got);
+    }
+    if (s->nodes[0] == s->nodes[1] || s->nodes[0] == s->nodes[2] || s->nodes[1] == s->nodes[2])
+        return rc_case_fail(rd, &s->line_loc, b->name, "node_ID1 node_ID2 node_ID3",
+                            "expected three different nodes, got %d, %d, %d", s->nodes[0], s->nodes[1], s->nodes[2]);
+    return rc_note_id(rd, RC_IDK_SKEW, s->id, &s->loc, b->hdr->text);
+}
+
+/* The axes of a /SKEW/MOV or /SKEW/MOV2 from its nodes' positions: the
+ * axis Dir (k) along N1 -> N2, the next one (k+1, cyclically) in the plane
+ * of N1 N2 N3 on the side of N3: a'' = N3 - N1, axis k+2 = axis k x a''
+ * (normalised), axis k+1 = axis k+2 x axis k; origin N1. */
+static rc_status rc_skew_mov_axes(rc_reader *rd, rc_case_skew *s)
+{
+    rc_case *c = rd->c;
+    const double *x[3];
+    char card[40];
+    snprintf(card, sizeof card, "/SKEW/%s/%d", s->mov == 2 ? "MOV2" : "MOV", s->id);
+    for (int j = 0; j < 3; j++) {
+        int n = -1;
+        for (int q = 0; q < c->nnode && n < 0; q++)
+            if (c->node[q].id == s->nodes[j]) n = q;
+        if (n < 0) {
+            char f[12];
+            snprintf(f, sizeof f, "node_ID%d", j + 1);
+            return rc_case_fail(rd, &s->line_loc, card, f, "expected the id of a /NODE, got %d (no such node)",
+                                s->nodes[j]);
+        }
+        x[j] = c->node[n].x;
+    }
+    const int k = s->dir, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+    double a[3], b[3], z[3];
+    for (int d = 0; d < 3; d++) {
+        a[d] = x[1][d] - x[0][d];
+        b[d] = x[2][d] - x[0][d];
+        s->origin[d] = x[0][d];
+    }
+    const double na = rc_norm3(a);
+    rc_cross3(a, b, z);
+    const double nz = rc_norm3(z);
+    if (!(na > 0) || !(nz > 1e-10 * na * rc_norm3(b)))
+        return rc_case_fail(rd, &s->line_loc, card, "node_ID1 node_ID2 node_ID3",
+                            "expected three nodes not on one line (they define a plane), got nodes %d, %d, %d at "
+                            "(%.9g, %.9g, %.9g), (%.9g, %.9g, %.9g), (%.9g, %.9g, %.9g)",
+                            s->nodes[0], s->nodes[1], s->nodes[2], x[0][0], x[0][1], x[0][2], x[1][0], x[1][1], x[1][2],
+                            x[2][0], x[2][1], x[2][2]);
+    for (int d = 0; d < 3; d++) {
+        s->axis[k][d] = a[d] / na;
+        s->axis[k2][d] = z[d] / nz;
+    }
+    rc_cross3(s->axis[k2], s->axis[k], s->axis[k1]);
+    return RC_OK;
+}
+
 /* /SKEW/FIX/skew_ID: title; origin; vector Y'; vector Z'. */
 static rc_status rc_card_skew(rc_reader *rd, const rc_block *b)
 {
@@ -196,9 +404,11 @@ static rc_status rc_card_skew(rc_reader *rd, const rc_block *b)
     int nd;
     double v1[3], v2[3], x[3];
     if (!ms) return RC_ENOMEM;
+    if (b->nkw >= 2 && (strcmp(b->kw[1], "MOV") == 0 || strcmp(b->kw[1], "MOV2") == 0))
+        return rc_card_skew_mov(rd, b, strcmp(b->kw[1], "MOV2") == 0);
     if (b->nkw < 2 || strcmp(b->kw[1], "FIX") != 0)
         return rc_case_fail(rd, &b->hdr->loc, b->name, NULL,
-                            "%s: not supported yet (supported: /SKEW/FIX)", b->name);
+                            "%s: not supported yet (supported: /SKEW/FIX, /SKEW/MOV, /SKEW/MOV2)", b->name);
     if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "skew_ID", "/SKEW/FIX/skew_ID"))) return st;
     RC_GROW(rd, ms->skew, ms->capskew, ms->nskew);
     rc_case_skew *s = &ms->skew[ms->nskew++];
@@ -328,6 +538,7 @@ static rc_status rc_grnod_fill(rc_reader *rd, int di, int depth)
             const rc_case_elem *el = &ms->elem[e];
             if (!bsearch(&el->part_id, want, (size_t)d->n, sizeof *want, rc_cmp_int)) continue;
             for (int j = 0; j < el->nn; j++) {
+                if (el->nodes[j] == 0) continue; /* a TETRA10 straight edge */
                 if (n == cap) {
                     int nc = cap ? 2 * cap : 64;
                     int *p = realloc(nodes, (size_t)nc * sizeof *p);
@@ -395,6 +606,8 @@ rc_status rc_cards_mesh_finish(rc_reader *rd)
     rc_status st;
     for (int k = 0; ms && k < ms->ndef; k++)
         if ((st = rc_grnod_fill(rd, k, 0))) return st;
+    for (int k = 0; ms && k < ms->nskew; k++)
+        if (ms->skew[k].mov && (st = rc_skew_mov_axes(rd, &ms->skew[k]))) return st;
     return RC_OK;
 }
 
@@ -441,12 +654,18 @@ rc_status rc_cards_mesh(rc_reader *rd, const rc_block *b, int *handled)
     const char *kw = b->kw[0], *sub = b->nkw >= 2 ? b->kw[1] : "";
     rc_elem_kind ek = 0;
     rc_prop_kind pk = 0;
-    int grnod = -1;
+    int grnod = -1, sprtype = 0, springs = 0;
     *handled = 0;
     if (strcmp(kw, "SHELL") == 0) ek = RC_ELEM_SHELL;
     else if (strcmp(kw, "SH3N") == 0) ek = RC_ELEM_SH3N;
     else if (strcmp(kw, "BRICK") == 0) ek = RC_ELEM_BRICK;
     else if (strcmp(kw, "TETRA4") == 0) ek = RC_ELEM_TETRA4;
+    else if (strcmp(kw, "PENTA6") == 0) ek = RC_ELEM_PENTA6;
+    else if (strcmp(kw, "TETRA10") == 0) ek = RC_ELEM_TETRA10;
+    else if (strcmp(kw, "SPRING") == 0) springs = 1;
+    else if (strcmp(kw, "PROP") == 0 && (!strcmp(sub, "SPRING") || !strcmp(sub, "TYPE4"))) sprtype = 4;
+    else if (strcmp(kw, "PROP") == 0 && (!strcmp(sub, "SPR_GENE") || !strcmp(sub, "TYPE8"))) sprtype = 8;
+    else if (strcmp(kw, "PROP") == 0 && (!strcmp(sub, "SPR_BEAM") || !strcmp(sub, "TYPE13"))) sprtype = 13;
     else if (strcmp(kw, "PROP") == 0 && (!strcmp(sub, "SHELL") || !strcmp(sub, "TYPE1"))) pk = RC_PROP_SHELL;
     else if (strcmp(kw, "PROP") == 0 && (!strcmp(sub, "SOLID") || !strcmp(sub, "TYPE14"))) pk = RC_PROP_SOLID;
     else if (strcmp(kw, "GRNOD") == 0 && strcmp(sub, "PART") == 0) grnod = 1;
@@ -462,7 +681,9 @@ rc_status rc_cards_mesh(rc_reader *rd, const rc_block *b, int *handled)
     if (b->bad)
         return rc_case_fail(rd, &b->hdr->loc, b->name, NULL, "malformed card header: %s", b->bad);
     if (ek) return rc_card_elements(rd, b, ek);
+    if (springs) return rc_card_springs(rd, b);
     if (pk) return rc_card_prop(rd, b, pk);
+    if (sprtype) return rc_card_prop_spring(rd, b, sprtype);
     if (grnod >= 0) return rc_card_grnod_def(rd, b, grnod);
     if (strcmp(kw, "MAT") == 0) return rc_card_mat(rd, b);
     return rc_card_skew(rd, b);
@@ -493,6 +714,7 @@ void rc_case_mesh_free(rc_case_mesh *m)
 {
     if (!m) return;
     free(m->elem);
+    free(m->spring);
     free(m->prop);
     free(m->mat);
     free(m->skew);

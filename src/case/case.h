@@ -247,10 +247,13 @@ typedef struct rc_case_part {
     rc_loc *surf_loc; /* [nsurf] the line of each surface id (NULL: not recorded) */
 } rc_case_part;
 
-/* /GRPART/PART/grpart_ID: a list of part ids. */
+/* /GRPART/PART/grpart_ID: a list of part ids; /GRPART/GRPART/grpart_ID: a
+ * union of part groups, expanded by the reader into the same list of part
+ * ids once every card is read (each part once, in the order first met). */
 typedef struct rc_case_grpart {
     int id;
     char title[101];
+    int by_group;   /* 1: /GRPART/GRPART (the list below is then its parts) */
     int n;
     int *parts;     /* [n] */
     rc_loc loc;

@@ -67,6 +67,7 @@ typedef enum {
     RC_IDK_SHELL, RC_IDK_SOLID, RC_IDK_PROP, RC_IDK_MAT, RC_IDK_SKEW, RC_IDK_ADMAS, /* cards_mesh.c */
     RC_IDK_JOINT, /* cards_joints.c */
     RC_IDK_RWALL, RC_IDK_SENSOR, /* cards_rwall.c */
+    RC_IDK_SPRING, /* cards_mesh.c: /SPRING elements */
     RC_IDK_COUNT
 } rc_id_kind;
 
@@ -319,6 +320,8 @@ rc_status rc_card_grnod(rc_reader *rd, const rc_block *b);
 rc_status rc_card_rbody(rc_reader *rd, const rc_block *b);
 rc_status rc_card_part(rc_reader *rd, const rc_block *b);
 rc_status rc_card_grpart(rc_reader *rd, const rc_block *b);
+/* After the last card: expand /GRPART/GRPART into part lists. */
+rc_status rc_cards_grpart_finish(rc_reader *rd);
 
 /* Joints (cards_joints.c). */
 rc_status rc_card_joint(rc_reader *rd, const rc_block *b);
@@ -371,8 +374,8 @@ rc_status rc_cards_finish(rc_reader *rd);
 /* Defaults of the optional cards, set before reading. */
 void rc_cards_defaults(rc_case *c);
 
-/* Mesh cards (cards_mesh.c): /SHELL /SH3N /BRICK /TETRA4 /PROP/SHELL
- * /PROP/SOLID /MAT /SKEW/FIX /GRNOD/PART /GRNOD/GRNOD /ADMAS. *handled = 0 for a
+/* Mesh cards (cards_mesh.c): /SHELL /SH3N /BRICK /TETRA4 /SPRING /PROP/SHELL
+ * /PROP/SOLID /PROP/SPRING /MAT /SKEW/FIX /GRNOD/PART /GRNOD/GRNOD /ADMAS. *handled = 0 for a
  * card that is not one of them (the dispatch goes on). */
 rc_status rc_cards_mesh(rc_reader *rd, const rc_block *b, int *handled);
 /* After the last card: expand /GRNOD/PART and /GRNOD/GRNOD into node lists. */

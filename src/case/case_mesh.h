@@ -14,7 +14,10 @@ typedef enum {
     RC_ELEM_SHELL = 1,  /* /SHELL: 4 nodes (node 4 = node 3 or blank: triangle) */
     RC_ELEM_SH3N = 2,   /* /SH3N: 3 nodes */
     RC_ELEM_BRICK = 3,  /* /BRICK: 8 nodes (repeated nodes allowed: degenerate) */
-    RC_ELEM_TETRA4 = 4  /* /TETRA4: 4 nodes */
+    RC_ELEM_TETRA4 = 4, /* /TETRA4: 4 nodes */
+    RC_ELEM_PENTA6 = 5, /* /PENTA6: 6 nodes, triangle 1-2-3 and its opposite 4-5-6 (node k+3 above node k) */
+    RC_ELEM_TETRA10 = 6 /* /TETRA10: 4 corners, then the mid-edge nodes of 1-2, 2-3, 3-1, 1-4, 2-4, 3-4
+                           (0: the edge's midpoint, a straight edge) */
 } rc_elem_kind;
 
 /* One element. */
@@ -22,22 +25,38 @@ typedef struct rc_case_elem {
     int id;
     int part_id;       /* from the card header /SHELL/part_ID */
     rc_elem_kind kind;
-    int nn;            /* nodes used: 3, 4 or 8 */
-    int nodes[8];      /* node ids */
+    int nn;            /* nodes used: 3, 4, 6, 8 or 10 */
+    int nodes[10];     /* node ids (TETRA10: a mid-edge node may be 0) */
     double thick;      /* shells: element thickness [m] (0: the property's) */
     rc_loc loc;        /* the element's line */
 } rc_case_elem;
 
-/* /PROP/SHELL (/PROP/TYPE1) and /PROP/SOLID (/PROP/TYPE14). */
-typedef enum { RC_PROP_SHELL = 1, RC_PROP_SOLID = 2 } rc_prop_kind;
+/* /SPRING/part_ID: one spring element between two nodes (its law is the
+ * part's /PROP/SPRING; the model stage makes it a coupling of the bodies
+ * that carry the nodes, model/coupling.c). */
+typedef struct rc_case_spring {
+    int id;            /* sprg_ID */
+    int part_id;       /* from the card header */
+    int nodes[2];      /* node_ID1, node_ID2 */
+    rc_loc loc;        /* the element's line */
+} rc_case_spring;
+
+/* /PROP/SHELL (/PROP/TYPE1), /PROP/SOLID (/PROP/TYPE14) and the spring
+ * properties /PROP/SPRING (/PROP/TYPE4: read), /PROP/SPR_GENE (TYPE8) and
+ * /PROP/SPR_BEAM (TYPE13) (kept, not read: an error when a spring uses
+ * them). */
+typedef enum { RC_PROP_SHELL = 1, RC_PROP_SOLID = 2, RC_PROP_SPRING = 3 } rc_prop_kind;
 
 typedef struct rc_case_prop {
     int id;
     char title[101];
     rc_prop_kind kind;
     double thick;      /* SHELL: Thick [m] */
+    int sprtype;       /* SPRING: the Radioss type, 4, 8 or 13 */
+    double mass;       /* SPRING TYPE4: Mass [kg], shared by the two nodes */
+    double k, c;       /* SPRING TYPE4: K [N/m], C [N s/m] */
     rc_loc loc;
-    rc_loc thick_loc;  /* the line holding Thick */
+    rc_loc thick_loc;  /* the line holding Thick; SPRING: the line of K and C */
 } rc_case_prop;
 
 /* /MAT/<law>/mat_ID: the density, when ricochet knows where the law keeps
@@ -54,13 +73,20 @@ typedef struct rc_case_mat {
 } rc_case_mat;
 
 /* /SKEW/FIX/skew_ID: origin and the axes (unit, orthonormal, right-handed):
- * Y' along (X1, Y1, Z1), X' = Y' x V2, Z' = X' x Y' (docs). */
+ * Y' along (X1, Y1, Z1), X' = Y' x V2, Z' = X' x Y' (docs).
+ * /SKEW/MOV/skew_ID and /SKEW/MOV2/skew_ID: a frame carried by three nodes,
+ * its origin and axes those of the nodes' initial positions (filled once
+ * every card is read, rc_cards_mesh_finish). */
 typedef struct rc_case_skew {
     int id;
     char title[101];
     double origin[3];  /* [m] */
     double axis[3][3]; /* axis[k] = unit vector of axis k (X', Y', Z') in global axes */
+    int mov;           /* 0: FIX; 1: MOV; 2: MOV2 */
+    int nodes[3];      /* MOV, MOV2: node_ID1..node_ID3 */
+    int dir;           /* MOV: the axis N1 -> N2, 0 X, 1 Y, 2 Z (MOV2: 2) */
     rc_loc loc;
+    rc_loc line_loc;   /* MOV, MOV2: the line of the nodes */
 } rc_case_skew;
 
 /* /GRNOD/PART and /GRNOD/GRNOD before expansion: the ids they name. The
@@ -86,6 +112,7 @@ typedef struct rc_case_admas {
 
 typedef struct rc_case_mesh {
     int nelem;  rc_case_elem *elem;  int capelem;
+    int nspring; rc_case_spring *spring; int capspring;
     int nprop;  rc_case_prop *prop;  int capprop;
     int nmat;   rc_case_mat *mat;    int capmat;
     int nskew;  rc_case_skew *skew;  int capskew;

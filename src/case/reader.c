@@ -472,7 +472,8 @@ static rc_status rc_check_dups(rc_reader *rd)
         "fct_ID", "node_ID", "grnod_ID", "rbody_ID", "surf_ID",
         "inter_ID", "inivel_ID", "grav_ID", "bcs_ID", "cpl_ID", "part_ID", "grpart_ID",
         "fric_ID", "fric_orient_ID", "impvel_ID",
-        "shell_ID", "brick_ID", "prop_ID", "mat_ID", "skew_ID", "admas_ID", "joint_ID", "rwall_ID", "sens_ID"};
+        "shell_ID", "brick_ID", "prop_ID", "mat_ID", "skew_ID", "admas_ID", "joint_ID", "rwall_ID", "sens_ID",
+        "sprg_ID"};
     rc_dup *d = NULL;
     int nd = 0, cap = 0;
     rc_status st = RC_OK;
@@ -587,6 +588,7 @@ rc_status rc_case_load_set(const char *path, const char *const *set, int nset, r
     if ((st = rc_check_dups(&rd)) && st != RC_EINPUT) goto fail;
     if (rd.nerrors <= RC_CASE_MAX_ERRORS && (st = rc_cards_finish(&rd)) && st != RC_EINPUT) goto fail;
     if (rd.nerrors == 0 && (st = rc_cards_mesh_finish(&rd)) && st != RC_EINPUT) goto fail;
+    if (rd.nerrors == 0 && (st = rc_cards_grpart_finish(&rd)) && st != RC_EINPUT) goto fail;
 report:
     rc_progress_done();
     if (st != RC_OK && st != RC_EINPUT) goto fail;

@@ -35,8 +35,29 @@
     } while (0)
 
 
+/* Is node_id, a node in no body, held in its three translations by a /BCS
+ * (a ground node of Radioss's kind: in ricochet a node in no body is a
+ * point fixed in space, the end of a spring element)? */
+static int grounded(const rc_case *c, int node_id)
+{
+    for (int k = 0; k < c->nbcs; k++) {
+        const rc_case_bcs *bc = &c->bcs[k];
+        if (!(bc->fix[0] == 1 && bc->fix[1] == 1 && bc->fix[2] == 1)) continue;
+        const int g = bc->grnod_id ? rc_case_find_grnod(c, bc->grnod_id) : -1;
+        for (int j = 0; g >= 0 && j < c->grnod[g].n; j++)
+            if (c->grnod[g].nodes[j] == node_id) return 1;
+    }
+    return 0;
+}
+
+/* A partial rotation lock (/BCS) needs the free axis principal: products of
+ * inertia with it at most this fraction of the largest moment [-]. */
+#define RC_BCS_PRINCIPAL_TOL 1e-10
+
 /* Bodies of the nodes of group `gid` -> flag array (all bodies when gid = 0).
- * `loc`: the line of the referring card that holds grnod_ID. */
+ * `loc`: the line of the referring card that holds grnod_ID. A node in no
+ * body is an error, unless a /BCS holds its translations (grounded): that
+ * /BCS and the /INIVEL, /GRAV of its group then skip it. */
 static rc_status group_bodies(const rc_case *c, int gid, rc_loc loc, const char *card, int *flag,
                               rc_error *err)
 {
@@ -48,11 +69,13 @@ static rc_status group_bodies(const rc_case *c, int gid, rc_loc loc, const char 
                  RC_LOC(loc), card, gid);
     for (int k = 0; k < c->grnod[g].n; k++) {
         int b = rc_case_body_of_node(c, c->grnod[g].nodes[k]);
+        if (b < 0 && grounded(c, c->grnod[g].nodes[k])) continue;
         if (b < 0) {
             const rc_loc nl = rc_loc_at(c->grnod[g].node_loc, k, c->grnod[g].loc);
             RC_RAISE(err, RC_EINPUT,
                      RC_LOCFMT "card /GRNOD/NODE/%d, field node_ID: node %d belongs to no /RBODY (ricochet bodies are "
-                     "rigid); the group is used by %s at %s:%d",
+                     "rigid; a node in no body is a point fixed in space, accepted here when a /BCS holds its "
+                     "translations); the group is used by %s at %s:%d",
                      RC_LOC(nl), gid, c->grnod[g].nodes[k], card, RC_LOC(loc));
         }
         flag[b] = 1;
@@ -266,8 +289,16 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
             }
     }
     /* /BCS on a node of a body: all six flags fix the body; otherwise the
-     * flagged global translations are held, and the rotations all or none
-     * (a partial rotation lock is not a simple condition on quaternions) */
+     * flagged global translations are held, and the rotations all, none, or
+     * all but one: a body turning about one global axis e only (the body
+     * frame is the global one at t = 0, so the body-frame angular velocity
+     * stays along e and its other two components are held at 0), exact
+     * when e is a principal axis of the body's inertia (the equation of the
+     * free component is then J_ee w_e' = tau_e); two free rotations are not
+     * a simple condition on the state (not supported yet) */
+    int *bcs_rot = malloc(((size_t)c->nrbody + 1) * sizeof(int)); /* last /BCS holding a rotation */
+    if (!bcs_rot) st = RC_SET(err, RC_ENOMEM, "out of memory");
+    for (int b = 0; bcs_rot && b < c->nrbody; b++) bcs_rot[b] = -1;
     for (int k = 0; k < c->nbcs && !st; k++) {
         const rc_case_bcs *bc = &c->bcs[k];
         const rc_loc bl = rc_loc_or(bc->line_loc, bc->loc);
@@ -276,19 +307,42 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
         int all = 1, nrot = 0;
         for (int j = 0; j < 6; j++) all &= bc->fix[j] == 1;
         for (int j = 3; j < 6; j++) nrot += bc->fix[j] == 1;
-        if (nrot != 0 && nrot != 3) {
-            st = RC_SET(err, RC_EINPUT,
-                        RC_LOCFMT "card %s, field Trarot: rotations must be all fixed or all free (\"xxx 111\" or \"xxx 000\"); a partial rotation lock is not supported yet",
-                        RC_LOC(bl), card);
-            break;
-        }
         st = group_bodies(c, bc->grnod_id, bl, card, flag, err);
         for (int b = 0; b < c->nrbody && !st; b++) {
             if (!flag[b]) continue;
             if (all) m->body_fixed[b] = 1;
             for (int j = 0; j < 6; j++) m->body_dofmask[6 * b + j] |= bc->fix[j] == 1;
+            if (nrot) bcs_rot[b] = k;
         }
     }
+    for (int b = 0; b < c->nrbody && !st; b++) {
+        const int *mask = m->body_dofmask + 6 * b;
+        const int nrot = mask[3] + mask[4] + mask[5];
+        if (nrot == 0 || nrot == 3 || m->body_fixed[b]) continue;
+        const rc_case_bcs *bc = &c->bcs[bcs_rot[b]];
+        const rc_loc bl = rc_loc_or(bc->line_loc, bc->loc);
+        if (nrot == 1) {
+            st = RC_SET(err, RC_EINPUT,
+                        RC_LOCFMT "card /BCS/%d, field Trarot: /RBODY/%d has one rotation held and two free: not supported "
+                                  "yet (expected the rotations all fixed, all free, or all but one fixed: \"xxx 111\", "
+                                  "\"xxx 000\", \"xxx 110\", ...)",
+                        RC_LOC(bl), bc->id, m->body_id[b]);
+            break;
+        }
+        /* one free rotation: about a principal axis of the inertia */
+        const int e = mask[3] ? (mask[4] ? 2 : 1) : 0;
+        const double *J = m->body_J + 9 * b;
+        const double jmax = fmax(J[0], fmax(J[4], J[8]));
+        for (int i = 0; i < 3 && !st; i++)
+            if (i != e && !(fabs(J[3 * i + e]) <= RC_BCS_PRINCIPAL_TOL * jmax))
+                st = RC_SET(err, RC_EINPUT,
+                            RC_LOCFMT "card /BCS/%d, field Trarot: /RBODY/%d turns about the global %c axis only, which is "
+                                      "not a principal axis of its inertia (J%c%c = %.9g kg m^2, of the largest moment %.9g): "
+                                      "a partial rotation lock about a non-principal axis is not supported yet",
+                            RC_LOC(bl), bc->id, m->body_id[b], "XYZ"[e], "xyz"[i < e ? i : e], "xyz"[i < e ? e : i],
+                            J[3 * i + e], jmax);
+    }
+    free(bcs_rot);
     /* held DOFs start at rest */
     for (int b = 0; b < c->nrbody && !st; b++)
         for (int j = 0; j < 6; j++)

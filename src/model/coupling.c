@@ -2,7 +2,9 @@
  * Compile the /COUPLING cards into rc_couplings (coupling.h): resolve the
  * bodies and functions, express the attachment points in the body frames,
  * default the relaxation length, integrate the form-4 stiffness tables, set
- * the gravity of the catenary lines; the energy states, their tolerances
+ * the gravity of the catenary lines; the /SPRING elements of a /PROP/SPRING
+ * (TYPE4) as linear springs between the bodies carrying their nodes; the
+ * energy states, their tolerances
  * and the Jacobian blocks; the run data (warm starts, solver workspace);
  * the summary of `ricochet check`.
  */
@@ -13,6 +15,7 @@
 
 #include "case/case_coupling.h"
 #include "case/case_joint.h"
+#include "case/case_mesh.h"
 #include "model/joint.h"
 #include "model/table.h"
 #include "model/coupling.h"
@@ -158,6 +161,102 @@ static rc_status compile_one(const rc_case *c, rc_model *m, int k, rc_error *err
 
 static int has_stops(const rc_case_joint *cj) { return cj->has_lo || cj->has_hi; }
 
+/* The law of /SPRING element se: its part's /PROP/SPRING (TYPE4), checked. */
+static rc_status spring_prop(const rc_case *c, const rc_case_spring *se, const rc_case_prop **out, rc_error *err)
+{
+    char card[64];
+    snprintf(card, sizeof card, "/SPRING/%d", se->part_id);
+    const int pi = rc_case_find_part(c, se->part_id);
+    if (pi < 0)
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card %s, field part_ID: expected the id of a /PART in the header, got %d (no such part; spring %d)",
+                 RC_LOC(se->loc), card, se->part_id, se->id);
+    const rc_case_part *pt = &c->part[pi];
+    const int qi = pt->prop_id ? rc_case_find_prop(c, pt->prop_id) : -1;
+    const rc_case_prop *q = qi >= 0 ? &c->mesh->prop[qi] : NULL;
+    if (!q || q->kind != RC_PROP_SPRING)
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card /PART/%d, field prop_ID: expected the id of a /PROP/SPRING (/PROP/TYPE4) for the spring elements of the part (e.g. %s spring %d at %s:%d), got %d (%s)",
+                 RC_LOC(rc_loc_or(pt->prop_loc, pt->loc)), pt->id, card, se->id, se->loc.file, se->loc.line, pt->prop_id,
+                 !q ? "no spring property with this id; ricochet reads /PROP/TYPE4 and ignores the other spring types"
+                    : q->kind == RC_PROP_SHELL ? "a /PROP/SHELL" : "a /PROP/SOLID");
+    if (q->sprtype != 4)
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card /PART/%d, field prop_ID: /PROP/TYPE%d (%s) springs are not supported yet: a spring with "
+                           "six degrees of freedom (three stiffnesses and three rotational ones in a frame) has no "
+                           "counterpart among ricochet's couplings; expected a /PROP/TYPE4 (SPRING) linear spring, got "
+                           "/PROP/TYPE%d/%d (%s:%d) for %s spring %d",
+                 RC_LOC(rc_loc_or(pt->prop_loc, pt->loc)), pt->id, q->sprtype, q->sprtype == 8 ? "SPR_GENE" : "SPR_BEAM",
+                 q->sprtype, q->id, q->loc.file, q->loc.line, card, se->id);
+    *out = q;
+    return RC_OK;
+}
+
+/* Is /SPRING element se inside one rigid body (both nodes on it)? Such a
+ * spring never stretches: it is left out, as the rigid body moves both its
+ * nodes in Radioss. */
+static int spring_inside_body(const rc_case *c, const rc_case_spring *se)
+{
+    const int b1 = rc_case_body_of_node(c, se->nodes[0]);
+    return b1 >= 0 && b1 == rc_case_body_of_node(c, se->nodes[1]);
+}
+
+/* The /SPRING element e (case mesh) as coupling k: a TYPE4 spring is the
+ * linear spring-damper of /COUPLING/SPRING Iform 1 between the points of
+ * its two nodes, relaxed at their initial distance, k = K, k_d = C. A node
+ * in no rigid body is a point fixed in space. */
+static rc_status compile_spring_elem(const rc_case *c, rc_model *m, int e, int k, rc_error *err)
+{
+    const rc_case_spring *se = &c->mesh->spring[e];
+    rc_couplings *p = m->cpl;
+    char card[64];
+    snprintf(card, sizeof card, "/SPRING/%d", se->part_id);
+    char name[96];
+    snprintf(name, sizeof name, "/SPRING/%d element %d", se->part_id, se->id);
+    if (!(p->name[k] = malloc(strlen(name) + 1))) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    strcpy(p->name[k], name);
+    p->id[k] = se->id;
+    p->kind[k] = RC_CPL_SPRING;
+    p->type[k] = "SPRING_ELEMENT";
+    p->table[k] = -1;
+    const rc_case_prop *q = NULL;
+    rc_status st = spring_prop(c, se, &q, err);
+    if (st) return st;
+    p->law_loc[k] = rc_loc_or(q->thick_loc, q->loc);
+    /* ends: the body carrying each node, or a point fixed in space */
+    int *bs[2] = {&p->b1[k], &p->b2[k]};
+    double *ss[2] = {p->s1 + 3 * k, p->s2 + 3 * k};
+    const double *x[2];
+    for (int j = 0; j < 2; j++) {
+        const int n = rc_case_find_node(c, se->nodes[j]);
+        if (n < 0)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card %s, field node_ID%d: expected the id of a /NODE, got %d (no such node; spring %d)",
+                     RC_LOC(se->loc), card, j + 1, se->nodes[j], se->id);
+        x[j] = c->node[n].x;
+        const int b = rc_case_body_of_node(c, se->nodes[j]);
+        *bs[j] = b;
+        const double *org = b >= 0 ? m->body_y0 + RC_NB * b : m->ground_y0;
+        for (int i = 0; i < 3; i++) ss[j][i] = x[j][i] - org[i];
+    }
+    if (p->b1[k] < 0 && p->b2[k] < 0)
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card %s, field node_ID1: spring %d joins nodes %d and %d, which belong to no /RBODY: "
+                           "expected at least one node of a rigid body (a node in no body is a point fixed in space)",
+                 RC_LOC(se->loc), card, se->id, se->nodes[0], se->nodes[1]);
+    const double dist = sqrt(pow(x[1][0] - x[0][0], 2) + pow(x[1][1] - x[0][1], 2) + pow(x[1][2] - x[0][2], 2));
+    if (!(dist > 0))
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card %s, field node_ID2: spring %d has a zero length (nodes %d and %d coincide): a "
+                           "/PROP/TYPE4 spring acts along the line between its nodes",
+                 RC_LOC(se->loc), card, se->id, se->nodes[0], se->nodes[1]);
+    p->form[k] = RC_KEFF_CONST;
+    p->x0[k] = dist;
+    p->kd[k] = q->c;
+    p->coef[3 * k] = q->k;
+    return RC_OK;
+}
+
 /* The stops of joint card j as coupling k (docs/theory.md, "Joint stops"):
  * the bodies and anchors as the joint's (model/joint.c, which checks them),
  * the joint frame, the law. */
@@ -216,11 +315,19 @@ rc_status rc_cpl_compile(const rc_case *c, rc_model *m, rc_error *err)
 {
     gsl_set_error_handler_off(); /* GSL reports through return codes */
     m->cpl = calloc(1, sizeof *m->cpl);
-    int nlim = 0;
+    int nlim = 0, nspr = 0;
+    /* the /SPRING elements: their laws checked, those inside one body left out */
+    for (int e = 0; c->mesh && e < c->mesh->nspring; e++) {
+        const rc_case_prop *q;
+        rc_status st = spring_prop(c, &c->mesh->spring[e], &q, err);
+        if (st) return st;
+        nspr += !spring_inside_body(c, &c->mesh->spring[e]);
+    }
     for (int j = 0; j < c->njoint; j++) nlim += has_stops(&c->joint[j]);
-    if (!m->cpl || alloc_arrays(m->cpl, c->ncoupling + nlim))
+    if (!m->cpl || alloc_arrays(m->cpl, c->ncoupling + nspr + nlim))
         RC_RAISE(err, RC_ENOMEM, "out of memory compiling the couplings");
-    m->cpl->ncard = c->ncoupling;
+    /* the cards, then the /SPRING elements (couplings too), then the stops */
+    m->cpl->ncard = c->ncoupling + nspr;
     rc_status st = rc_cpl_contact_alloc(m, err);
     if (st) return st;
     for (int k = 0; k < m->cpl->n; k++) m->cpl->ljoint[k] = -1;
@@ -229,7 +336,12 @@ rc_status rc_cpl_compile(const rc_case *c, rc_model *m, rc_error *err)
         st = compile_one(c, m, k, err);
         if (st) return st;
     }
-    for (int j = 0, k = c->ncoupling; j < c->njoint; j++) {
+    for (int e = 0, k = c->ncoupling; c->mesh && e < c->mesh->nspring; e++) {
+        if (spring_inside_body(c, &c->mesh->spring[e])) continue;
+        m->cpl->ct->fadr[k + 1] = m->cpl->ct->fadr[k] = m->cpl->ct->nface;
+        if ((st = compile_spring_elem(c, m, e, k++, err))) return st;
+    }
+    for (int j = 0, k = c->ncoupling + nspr; j < c->njoint; j++) {
         if (!has_stops(&c->joint[j])) continue;
         m->cpl->ct->fadr[k + 1] = m->cpl->ct->fadr[k] = m->cpl->ct->nface;
         if ((st = compile_stop(c, m, j, k++, err))) return st;

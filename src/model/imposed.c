@@ -12,6 +12,7 @@
 #include <gsl/gsl_odeiv2.h>
 
 #include "case/case.h"
+#include "case/case_mesh.h"
 #include "case/case_power.h"
 #include "base/error.h"
 #include "model/imposed.h"
@@ -20,7 +21,7 @@
 void rc_imp_free(rc_imposed *p)
 {
     if (!p) return;
-    void *a[] = {p->tbody, p->tdir, p->trow, p->ttab, p->tascale, p->tfscale, p->ttstop, p->rbody, p->rtab,
+    void *a[] = {p->tu, p->tsk, p->sslot, p->tbody, p->tdir, p->trow, p->ttab, p->tascale, p->tfscale, p->ttstop, p->ttstart, p->rbody, p->rtab,
                  p->rascale, p->rfscale, p->rtstop, p->rqslot, p->wslot, p->row_imp};
     for (size_t k = 0; k < sizeof a / sizeof a[0]; k++) free(a[k]);
     free(p);
@@ -41,7 +42,43 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
     }
     m->imp = p;
     for (int k = 0; k < 6 * nb; k++) owner[k] = -1;
+    /* each card's direction: a global axis (dir[k] 0..5, sign[k] +-1), or a
+     * skew axis (dir[k] = -1, u[k]) */
+    int *dir = malloc(((size_t)n + 1) * sizeof(int));
+    double *u = malloc((3 * (size_t)n + 1) * sizeof(double)), *sign = malloc(((size_t)n + 1) * sizeof(double));
     rc_status st = RC_OK;
+    if (!dir || !u || !sign) st = RC_SET(err, RC_ENOMEM, "out of memory");
+    for (int k = 0; k < n && !st; k++) {
+        const rc_case_impvel *v = &c->impvel[k];
+        dir[k] = v->dir;
+        sign[k] = 1.0;
+        for (int i = 0; i < 3; i++) u[3 * k + i] = v->dir == i;
+        if (!v->skew_id) continue;
+        char card[64];
+        snprintf(card, sizeof card, "/IMPVEL/%d", v->id);
+        const int s = rc_case_find_skew(c, v->skew_id);
+        if (s < 0) {
+            st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field skew_ID: expected the id of a /SKEW/FIX, got %d (no such skew)",
+                        RC_LOC(v->line_loc[0]), card, v->skew_id);
+            break;
+        }
+        const rc_case_skew *sk = &c->mesh->skew[s];
+        if (sk->mov) {
+            st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field skew_ID: /SKEW/%s/%d moves with its nodes: an imposed velocity along a moving axis is not supported yet (expected a /SKEW/FIX)",
+                        RC_LOC(v->line_loc[0]), card, sk->mov == 2 ? "MOV2" : "MOV", sk->id);
+            break;
+        }
+        for (int i = 0; i < 3; i++) u[3 * k + i] = sk->axis[v->dir][i];
+        /* an axis that is a global one (exactly, either sense) is that
+         * component; any other is a skew axis */
+        dir[k] = -1;
+        for (int i = 0; i < 3 && dir[k] < 0; i++)
+            if (fabs(u[3 * k + i]) == 1.0 && u[3 * k + (i + 1) % 3] == 0.0 && u[3 * k + (i + 2) % 3] == 0.0) {
+                sign[k] = u[3 * k + i];
+                u[3 * k + i] = 1.0;
+                dir[k] = i;
+            }
+    }
     for (int k = 0; k < n && !st; k++) {
         const rc_case_impvel *v = &c->impvel[k];
         char card[64];
@@ -62,28 +99,50 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
                 break;
             }
             const int *own = owner + 6 * b;
-            if (own[v->dir] == k) continue; /* the body named twice by the group */
-            if (m->body_fixed[b])
+            if (dir[k] < 0) { /* along a skew axis: the body's three translations */
+                if (own[0] == k) continue;
+                const int held = m->body_dofmask[6 * b] || m->body_dofmask[6 * b + 1] || m->body_dofmask[6 * b + 2];
+                const int other = own[0] >= 0 ? own[0] : own[1] >= 0 ? own[1] : own[2];
+                if (m->body_fixed[b])
+                    st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s: /RBODY/%d is fixed (/BCS 111 111); its velocity cannot be imposed",
+                                RC_LOC(v->line_loc[0]), card, m->body_id[b]);
+                else if (held)
+                    st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field skew_ID: /RBODY/%d has a translation held by /BCS; a velocity along a skew axis with held translations is not supported yet",
+                                RC_LOC(v->line_loc[0]), card, m->body_id[b]);
+                else if (other >= 0)
+                    st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field skew_ID: /RBODY/%d already has an imposed translation (/IMPVEL/%d); a velocity along a skew axis must be its only one (not supported yet)",
+                                RC_LOC(v->line_loc[0]), card, m->body_id[b], c->impvel[other].id);
+                for (int i = 0; i < 3 && !st; i++) owner[6 * b + i] = k;
+                continue;
+            }
+            const int dk = dir[k];
+            if (own[dk] == k) continue; /* the body named twice by the group */
+            if (dk < 3 && own[0] >= 0 && dir[own[0]] < 0)
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field Dir: the translation of /RBODY/%d is already imposed along a skew axis by /IMPVEL/%d (not supported yet together)",
+                            RC_LOC(v->line_loc[0]), card, m->body_id[b], c->impvel[own[0]].id);
+            else if (m->body_fixed[b])
                 st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s: /RBODY/%d is fixed (/BCS 111 111); its velocity cannot be imposed",
                             RC_LOC(v->line_loc[0]), card, m->body_id[b]);
-            else if (m->body_dofmask[6 * b + v->dir])
+            else if (m->body_dofmask[6 * b + dk])
                 st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field Dir: this component of /RBODY/%d is held by /BCS; a held DOF cannot also be imposed",
                             RC_LOC(v->line_loc[0]), card, m->body_id[b]);
-            else if (own[v->dir] >= 0)
+            else if (own[dk] >= 0)
                 st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field Dir: this component of /RBODY/%d is already imposed by /IMPVEL/%d",
-                            RC_LOC(v->line_loc[0]), card, m->body_id[b], c->impvel[own[v->dir]].id);
+                            RC_LOC(v->line_loc[0]), card, m->body_id[b], c->impvel[own[dk]].id);
             for (int r = 3; r < 6 && !st && v->dir >= 3; r++)
                 if (own[r] >= 0 && c->impvel[own[r]].tstop != v->tstop)
                     st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card %s, field Tstop: the rotation of /RBODY/%d is imposed as a whole (docs/theory.md 1.1); all its rotational /IMPVEL must share one Tstop (/IMPVEL/%d has %.6g)",
                                 RC_LOC(v->line_loc[1]), card, m->body_id[b], c->impvel[own[r]].id, c->impvel[own[r]].tstop);
-            if (!st) owner[6 * b + v->dir] = k;
+            if (!st) owner[6 * b + dk] = k;
         }
     }
-    /* count and fill: translations one by one, rotations per body */
+    /* count and fill: translations one by one (a skewed card once per
+     * body), rotations per body */
     for (int b = 0; b < nb && !st; b++) {
         int rot = 0;
         for (int j = 0; j < 6; j++) {
-            if (owner[6 * b + j] < 0) continue;
+            const int k = owner[6 * b + j];
+            if (k < 0 || (j > 0 && j < 3 && dir[k] < 0)) continue;
             if (j < 3) p->nt++;
             else rot = 1;
         }
@@ -97,13 +156,16 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
         p->tascale = calloc((size_t)p->nt + 1, sizeof(double));
         p->tfscale = calloc((size_t)p->nt + 1, sizeof(double));
         p->ttstop = calloc((size_t)p->nt + 1, sizeof(double));
+        p->ttstart = calloc((size_t)p->nt + 1, sizeof(double));
+        p->tu = calloc(3 * (size_t)p->nt + 1, sizeof(double));
+        p->tsk = calloc((size_t)p->nt + 1, sizeof(int));
         p->rbody = calloc((size_t)p->nr + 1, sizeof(int));
         p->rtab = calloc(3 * (size_t)p->nr + 1, sizeof(int));
         p->rascale = calloc(3 * (size_t)p->nr + 1, sizeof(double));
         p->rfscale = calloc(3 * (size_t)p->nr + 1, sizeof(double));
         p->rtstop = calloc((size_t)p->nr + 1, sizeof(double));
         p->rqslot = calloc(12 * (size_t)p->nr + 1, sizeof(int64_t));
-        if (!p->tbody || !p->tdir || !p->trow || !p->ttab || !p->tascale || !p->tfscale || !p->ttstop || !p->rbody ||
+        if (!p->tbody || !p->tdir || !p->trow || !p->ttab || !p->tascale || !p->tfscale || !p->ttstop || !p->ttstart || !p->tu || !p->tsk || !p->rbody ||
             !p->rtab || !p->rascale || !p->rfscale || !p->rtstop || !p->rqslot)
             st = RC_SET(err, RC_ENOMEM, "out of memory");
     }
@@ -123,21 +185,33 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
                 y0[7 + j] = 0.0;
                 continue;
             }
-            if (k < 0) continue;
+            if (k < 0 || (j > 0 && j < 3 && dir[k] < 0)) continue;
             const rc_case_impvel *v = &c->impvel[k];
             const int tab = rc_case_find_funct(c, v->fct_id);
+            const double fs = sign[k] * v->fscale, *uk = u + 3 * k;
             /* the initial value: the imposed function at t = 0 (body frame
-             * = global frame at t = 0) */
+             * = global frame at t = 0); along a skew axis the component
+             * along it, the others kept */
             double f0, df;
             rc_table_eval(&m->table[tab], 0.0, &f0, &df);
-            if (v->tstop >= 0) y0[7 + j] = v->fscale * f0;
+            /* a later start (Tstart > 0) leaves the initial velocity free */
+            if (v->tstop >= 0 && v->tstart <= 0) {
+                if (dir[k] < 0) {
+                    const double du = fs * f0 - (uk[0] * y0[7] + uk[1] * y0[8] + uk[2] * y0[9]);
+                    for (int i = 0; i < 3; i++) y0[7 + i] += du * uk[i];
+                } else
+                    y0[7 + j] = fs * f0;
+            }
             if (j < 3) {
                 p->tbody[it] = b;
-                p->tdir[it] = j;
+                p->tdir[it] = dir[k] < 0 ? -1 : j;
+                for (int i = 0; i < 3; i++) p->tu[3 * it + i] = dir[k] < 0 ? uk[i] : i == j;
+                p->tsk[it] = dir[k] < 0 ? p->nsk++ : -1;
                 p->ttab[it] = tab;
                 p->tascale[it] = v->ascale;
-                p->tfscale[it] = v->fscale;
+                p->tfscale[it] = fs;
                 p->ttstop[it] = v->tstop;
+                p->ttstart[it] = v->tstart > 0 ? v->tstart : -INFINITY;
                 it++;
             } else {
                 p->rtab[3 * ir + j - 3] = tab;
@@ -149,6 +223,9 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
         ir += rot;
     }
     free(owner);
+    free(dir);
+    free(u);
+    free(sign);
     return st; /* on error the model frees m->imp */
 }
 
@@ -156,16 +233,18 @@ int rc_imp_layout(rc_model *m, int ny)
 {
     rc_imposed *p = m->imp;
     if (!p) return ny;
-    for (int k = 0; k < p->nt; k++) p->trow[k] = m->body_yadr[p->tbody[k]] + 7 + p->tdir[k];
+    for (int k = 0; k < p->nt; k++) p->trow[k] = m->body_yadr[p->tbody[k]] + 7 + (p->tdir[k] < 0 ? 0 : p->tdir[k]);
     p->wadr = ny;
     return ny + 1;
 }
 
-/* Rows of the imposed velocities: translations, then 3 per rotating body. */
-static void mark_rows(const rc_model *m, char *row)
+/* Rows of the imposed velocities: translations (a skewed card's three when
+ * `skewed`), then 3 per rotating body. */
+static void mark_rows(const rc_model *m, char *row, int skewed)
 {
     const rc_imposed *p = m->imp;
-    for (int k = 0; k < p->nt; k++) row[p->trow[k]] = 1;
+    for (int k = 0; k < p->nt; k++)
+        for (int i = 0; i < (p->tdir[k] < 0 ? 3 * skewed : 1); i++) row[p->trow[k] + i] = 1;
     for (int j = 0; j < p->nr; j++)
         for (int k = 0; k < 3; k++) row[m->body_yadr[p->rbody[j]] + 10 + k] = 1;
 }
@@ -175,27 +254,43 @@ rc_status rc_imp_pattern_keys(const rc_model *m, int64_t **key, int64_t *n, rc_e
     const rc_imposed *p = m->imp;
     const int64_t ny = m->ny;
     char *row = calloc((size_t)ny + 1, 1);
-    if (!row) RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
-    mark_rows(m, row);
+    int *sk = malloc(((size_t)ny + 1) * sizeof(int)); /* the skewed card of a row, -1 */
+    if (!row || !sk) {
+        free(row);
+        free(sk);
+        RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
+    }
+    mark_rows(m, row, 1);
+    for (int64_t r = 0; r < ny; r++) sk[r] = -1;
+    for (int k = 0; k < p->nt; k++)
+        if (p->tdir[k] < 0)
+            for (int i = 0; i < 3; i++) sk[p->trow[k] + i] = k;
     /* the W_imp row depends on everything the imposed rows depend on, on
-     * their velocities, and (rotations) on q; the rotation rows on q */
-    int64_t extra = 1 + 2 * p->nt + 3 * 16 * (int64_t)p->nr;
+     * their velocities, and (rotations) on q; the rotation rows on q; a
+     * skewed card's three rows on the union of their columns */
+    int64_t extra = 1 + 6 * p->nt + 3 * 16 * (int64_t)p->nr;
     for (int64_t k = 0; k < *n; k++)
-        if (row[(*key)[k] % ny]) extra++;
+        extra += row[(*key)[k] % ny] + 3 * (sk[(*key)[k] % ny] >= 0);
     int64_t *nk = realloc(*key, (size_t)(*n + extra) * sizeof(int64_t));
     if (!nk) {
         free(row);
+        free(sk);
         RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
     }
     *key = nk;
     const int64_t n0 = *n, w = p->wadr;
-    for (int64_t k = 0; k < n0; k++)
-        if (row[nk[k] % ny]) nk[(*n)++] = (nk[k] / ny) * ny + w;
-    nk[(*n)++] = w * ny + w;
-    for (int k = 0; k < p->nt; k++) {
-        nk[(*n)++] = (int64_t)p->trow[k] * ny + w;
-        nk[(*n)++] = (int64_t)p->trow[k] * ny + p->trow[k];
+    for (int64_t k = 0; k < n0; k++) {
+        const int64_t r = nk[k] % ny, col = nk[k] / ny;
+        if (row[r]) nk[(*n)++] = col * ny + w;
+        if (sk[r] >= 0)
+            for (int i = 0; i < 3; i++) nk[(*n)++] = col * ny + p->trow[sk[r]] + i;
     }
+    nk[(*n)++] = w * ny + w;
+    for (int k = 0; k < p->nt; k++)
+        for (int i = 0; i < (p->tdir[k] < 0 ? 3 : 1); i++) {
+            nk[(*n)++] = (int64_t)(p->trow[k] + i) * ny + w;
+            nk[(*n)++] = (int64_t)(p->trow[k] + i) * ny + p->trow[k] + i;
+        }
     for (int j = 0; j < p->nr; j++) {
         const int a = m->body_yadr[p->rbody[j]];
         for (int c = 0; c < 4; c++) {
@@ -205,6 +300,7 @@ rc_status rc_imp_pattern_keys(const rc_model *m, int64_t **key, int64_t *n, rc_e
         for (int r = 0; r < 3; r++) nk[(*n)++] = (int64_t)(a + 10 + r) * ny + w;
     }
     free(row);
+    free(sk);
     return RC_OK;
 }
 
@@ -215,7 +311,18 @@ rc_status rc_imp_slots(rc_model *m, rc_error *err)
     p->row_imp = calloc((size_t)m->ny + 1, 1);
     if (!p->wslot || !p->row_imp) RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
     for (int c = 0; c < m->ny; c++) p->wslot[c] = rc_jac_slot(m, p->wadr, c);
-    mark_rows(m, p->row_imp);
+    /* a skewed card's rows keep their free part (they are not marked) */
+    mark_rows(m, p->row_imp, 0);
+    if (p->nsk) {
+        p->sslot = malloc((3 * (size_t)p->nsk * (size_t)m->ny + 1) * sizeof(int64_t));
+        if (!p->sslot) RC_RAISE(err, RC_ENOMEM, "out of memory for the Jacobian pattern");
+        for (int k = 0; k < p->nt; k++)
+            if (p->tsk[k] >= 0)
+                for (int i = 0; i < 3; i++)
+                    for (int c = 0; c < m->ny; c++)
+                        p->sslot[(3 * (size_t)p->tsk[k] + (size_t)i) * (size_t)m->ny + (size_t)c] =
+                            rc_jac_slot(m, p->trow[k] + i, c);
+    }
     for (int j = 0; j < p->nr; j++) {
         const int a = m->body_yadr[p->rbody[j]];
         for (int r = 0; r < 3; r++)
@@ -230,9 +337,16 @@ void rc_imp_print(const rc_model *m, FILE *f)
     if (!p) return;
     static const char *const ax = "XYZ";
     fprintf(f, "imposed     %d translation component(s), %d body rotation(s)\n", p->nt, p->nr);
-    for (int k = 0; k < p->nt && k < 20; k++)
-        fprintf(f, "  /RBODY/%-6d velocity %c = %.5g f(t / %.5g) (/FUNCT/%d) until %.5g s\n", m->body_id[p->tbody[k]],
-                ax[p->tdir[k]], p->tfscale[k], p->tascale[k], m->table[p->ttab[k]].id, p->ttstop[k]);
+    for (int k = 0; k < p->nt && k < 20; k++) {
+        char what[80];
+        if (p->tdir[k] < 0)
+            snprintf(what, sizeof what, "along (%.6g, %.6g, %.6g)", p->tu[3 * k], p->tu[3 * k + 1], p->tu[3 * k + 2]);
+        else
+            snprintf(what, sizeof what, "%c", ax[p->tdir[k]]);
+        fprintf(f, "  /RBODY/%-6d velocity %s = %.5g f(t / %.5g) (/FUNCT/%d) from %.5g until %.5g s\n",
+                m->body_id[p->tbody[k]], what, p->tfscale[k], p->tascale[k], m->table[p->ttab[k]].id,
+                isfinite(p->ttstart[k]) ? p->ttstart[k] : 0.0, p->ttstop[k]);
+    }
     for (int j = 0; j < p->nr && j < 20; j++) {
         fprintf(f, "  /RBODY/%-6d angular velocity (global axes) =", m->body_id[p->rbody[j]]);
         for (int k = 0; k < 3; k++) {

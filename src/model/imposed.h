@@ -1,12 +1,21 @@
 /*
  * Imposed velocities (/IMPVEL, docs/theory.md 1.1): a velocity
- * component of a body follows Fscale f(t / Ascale) for t <= Tstop.
+ * component of a body follows Fscale f(t / Ascale) for Tstart < t <= Tstop
+ * (a translation with Tstart > 0 is free before; at Tstart, a time
+ * breakpoint, its velocity jumps to Fscale f(Tstart / Ascale): rc_imp_start).
  *
  * Like the held DOFs of /BCS, an imposed component is a velocity state
  * whose rate the right-hand side overwrites, here with the derivative of the
  * imposed function (its initial value is set at compile time), and whose
  * Jacobian row is replaced accordingly; the support supplies whatever force
  * that takes (the reaction).
+ *
+ * Along a skew axis u (skew_ID, translations): the velocity component u.v
+ * follows the function and the others are free; the translational mass
+ * being isotropic, the support's force is lambda u with
+ * lambda = m (f' - u.a_free): the three rates become
+ * a_free + u (f' - u.a_free), their Jacobian rows (I - u u^T) the free ones
+ * (a body with a skewed card has no other imposed or held translation).
  *
  * Rotations: the angular velocity state is in the body frame. A body with a
  * rotational /IMPVEL has its whole angular velocity imposed in global axes,
@@ -32,10 +41,17 @@ typedef struct rc_imposed {
     /* imposed translations */
     int nt;
     int *tbody;          /* [nt] body index                                 */
-    int *tdir;           /* [nt] 0, 1, 2: X, Y, Z                            */
-    int *trow;           /* [nt] state index of the velocity component      */
+    int *tdir;           /* [nt] 0, 1, 2: X, Y, Z; -1: along tu (a skew axis) */
+    int *trow;           /* [nt] state index of the velocity component (skew:
+                            of the x component, the body's three rows)      */
+    double *tu;          /* [nt*3] the direction, a global unit vector      */
+    int *tsk;            /* [nt] index among the skewed cards, -1 for a global axis */
+    int nsk;             /* skewed cards                                     */
+    int64_t *sslot;      /* [nsk*3*ny] Jacobian slots of (row x, y, z, column), -1 absent */
     int *ttab;           /* [nt] table index of the time function           */
     double *tascale, *tfscale, *ttstop; /* [nt] [s] [m/s] [s]               */
+    double *ttstart;     /* [nt] Tstart [s]: imposed for ttstart < t <= ttstop;
+                            -INFINITY (Tstart <= 0) from t = 0 on          */
     /* bodies with an imposed rotation (all three components) */
     int nr;
     int *rbody;          /* [nr] body index                                 */

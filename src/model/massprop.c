@@ -188,6 +188,59 @@ double rc_mp_hex(rc_mp *a, const double p[8][3], double rho)
     return fabs(vol);
 }
 
+/* Gauss-Legendre, 5 points on [0, 1] (the collapsed-coordinate rule of
+ * the quadratic tetrahedron). */
+static const double G5X[5] = {0.04691007703066800360, 0.23076534494715845448, 0.5, 0.76923465505284154552,
+                              0.95308992296933199640};
+static const double G5W[5] = {0.11846344252809454376, 0.23931433524968323402, 0.28444444444444444444,
+                              0.23931433524968323402, 0.11846344252809454376};
+
+double rc_mp_tet10(rc_mp *a, const double p[10][3], double rho)
+{
+    /* barycentric L = (1 - x - y - z, x, y, z); corners N_i = L_i (2 L_i - 1),
+     * mid-edge N_ij = 4 L_i L_j (edges 01 12 20 03 13 23). The integrands
+     * (det J of degree 3 times r r^T of degree 4) are polynomials of degree
+     * 7; the Duffy map x = u, y = v (1 - u), z = w (1 - u)(1 - v) adds the
+     * factor (1 - u)^2 (1 - v): degree 9 at most in u, exact with 5 points. */
+    static const int edge[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+    static const double dL[4][3] = {{-1, -1, -1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    rc_mp e = {0, {0, 0, 0}, {0, 0, 0, 0, 0, 0}};
+    double vol = 0;
+    for (int i = 0; i < 5; i++)
+        for (int j = 0; j < 5; j++)
+            for (int l = 0; l < 5; l++) {
+                const double u = G5X[i], v = G5X[j], s = G5X[l];
+                const double x = u, y = v * (1 - u), z = s * (1 - u) * (1 - v);
+                const double duffy = (1 - u) * (1 - u) * (1 - v);
+                const double L[4] = {1 - x - y - z, x, y, z};
+                double N[10], dN[10][3];
+                for (int k = 0; k < 4; k++) {
+                    N[k] = L[k] * (2 * L[k] - 1);
+                    for (int q = 0; q < 3; q++) dN[k][q] = (4 * L[k] - 1) * dL[k][q];
+                }
+                for (int k = 0; k < 6; k++) {
+                    const int a0 = edge[k][0], a1 = edge[k][1];
+                    N[4 + k] = 4 * L[a0] * L[a1];
+                    for (int q = 0; q < 3; q++) dN[4 + k][q] = 4 * (dL[a0][q] * L[a1] + L[a0] * dL[a1][q]);
+                }
+                double r[3] = {0, 0, 0}, g[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, n[3];
+                for (int k = 0; k < 10; k++)
+                    for (int d = 0; d < 3; d++) {
+                        r[d] += N[k] * p[k][d];
+                        for (int q = 0; q < 3; q++) g[q][d] += dN[k][q] * p[k][d];
+                    }
+                cross3(g[0], g[1], n);
+                const double w = G5W[i] * G5W[j] * G5W[l] * duffy * (n[0] * g[2][0] + n[1] * g[2][1] + n[2] * g[2][2]);
+                vol += w;
+                add_point(&e, r, w);
+            }
+    const double sg = vol < 0 ? -rho : rho;
+    a->m += sg * e.m;
+    for (int k = 0; k < 3; k++) a->s[k] += sg * e.s[k];
+    for (int k = 0; k < 6; k++) a->S[k] += sg * e.S[k];
+    return fabs(vol);
+}
+
 void rc_mp_inertia(const rc_mp *a, double c[3], double J[9])
 {
     double S[6];
@@ -212,7 +265,8 @@ void rc_mp_inertia(const rc_mp *a, double c[3], double J[9])
 
 static const char *elem_card(rc_elem_kind k)
 {
-    return k == RC_ELEM_SHELL ? "/SHELL" : k == RC_ELEM_SH3N ? "/SH3N" : k == RC_ELEM_BRICK ? "/BRICK" : "/TETRA4";
+    return k == RC_ELEM_SHELL ? "/SHELL" : k == RC_ELEM_SH3N ? "/SH3N" : k == RC_ELEM_BRICK ? "/BRICK"
+           : k == RC_ELEM_PENTA6 ? "/PENTA6" : k == RC_ELEM_TETRA10 ? "/TETRA10" : "/TETRA4";
 }
 
 /* Ispher 2 (Radioss's automatic correction): principal moments below 1e-3
@@ -325,6 +379,9 @@ static rc_status part_material(const rc_case *c, const rc_case_part *p, const rc
     if (p->prop_id && pi < 0)
         RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field prop_ID: expected the id of a /PROP/%s, got %d (no such property among /PROP/SHELL and /PROP/SOLID)",
                  RC_LOC(p->prop_loc), card, shell ? "SHELL" : "SOLID", p->prop_id);
+    if (pi >= 0 && c->mesh->prop[pi].kind == RC_PROP_SPRING)
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field prop_ID: expected a /PROP/%s for the %s elements of the part, got the spring property %d",
+                 RC_LOC(p->prop_loc), card, shell ? "SHELL" : "SOLID", elem_card(e->kind), p->prop_id);
     if (pi >= 0 && (c->mesh->prop[pi].kind == RC_PROP_SHELL) != shell)
         RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field prop_ID: expected a /PROP/%s for the %s elements of the part, got /PROP/%s/%d",
                  RC_LOC(p->prop_loc), card, shell ? "SHELL" : "SOLID", elem_card(e->kind), shell ? "SOLID" : "SHELL", p->prop_id);
@@ -340,7 +397,7 @@ static rc_status mesh_elements(const rc_case *c, mp_work *w, rc_error *err)
     for (int e = 0; ms && e < ms->nelem; e++) {
         const rc_case_elem *el = &ms->elem[e];
         const char *card = elem_card(el->kind);
-        int nd[8], body = -1, nin = 0;
+        int nd[10], body = -1, nin = 0, npres = 0;
         if (el->part_id != last_part || pi < 0) {
             pi = rc_case_find_part(c, el->part_id);
             last_part = el->part_id;
@@ -349,6 +406,9 @@ static rc_status mesh_elements(const rc_case *c, mp_work *w, rc_error *err)
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s/%d, field part_ID: expected the id of a /PART in the header, got %d (no such part)",
                      RC_LOC(el->loc), card, el->part_id, el->part_id);
         for (int k = 0; k < el->nn; k++) {
+            nd[k] = -1;
+            if (el->nodes[k] == 0) continue; /* a TETRA10 straight edge: its midpoint */
+            npres++;
             nd[k] = rc_case_find_node(c, el->nodes[k]);
             if (nd[k] < 0)
                 RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s/%d, field node_ID%d: expected the id of a /NODE, got %d (no such node; element %d)",
@@ -369,12 +429,12 @@ static rc_status mesh_elements(const rc_case *c, mp_work *w, rc_error *err)
             w->part_out[pi]++;
             continue;
         }
-        if (nin < el->nn) {
+        if (nin < npres) {
             int out = 0, ko = 0;
             for (int k = 0; k < el->nn; k++)
-                if (w->node_body[nd[k]] < 0) { out = el->nodes[k]; ko = k; break; }
+                if (nd[k] >= 0 && w->node_body[nd[k]] < 0) { out = el->nodes[k]; ko = k; break; }
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s/%d, field node_ID%d: element %d has %d of its %d nodes in /RBODY/%d and node %d in no rigid body: an element belongs to one rigid body whole (add its nodes to the body's grnd_ID group)",
-                     RC_LOC(el->loc), card, el->part_id, ko + 1, el->id, nin, el->nn, c->rbody[body].id, out);
+                     RC_LOC(el->loc), card, el->part_id, ko + 1, el->id, nin, npres, c->rbody[body].id, out);
         }
         w->part_in[pi]++;
         const int shell = el->kind == RC_ELEM_SHELL || el->kind == RC_ELEM_SH3N;
@@ -392,9 +452,15 @@ static rc_status mesh_elements(const rc_case *c, mp_work *w, rc_error *err)
         /* vertices relative to the body's main node */
         const int mn = rc_case_find_node(c, c->rbody[body].node_id);
         const double *r0 = mn >= 0 ? c->node[mn].x : c->node[nd[0]].x;
-        double p[8][3];
+        double p[10][3];
         for (int k = 0; k < el->nn; k++)
-            for (int d = 0; d < 3; d++) p[k][d] = c->node[nd[k]].x[d] - r0[d];
+            for (int d = 0; d < 3; d++) p[k][d] = nd[k] >= 0 ? c->node[nd[k]].x[d] - r0[d] : 0.0;
+        if (el->kind == RC_ELEM_TETRA10) { /* missing mid-edge nodes: the midpoints */
+            static const int edge[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+            for (int k = 4; k < 10; k++)
+                if (nd[k] < 0)
+                    for (int d = 0; d < 3; d++) p[k][d] = 0.5 * (p[edge[k - 4][0]][d] + p[edge[k - 4][1]][d]);
+        }
         double size;
         switch (el->kind) {
         case RC_ELEM_SHELL:
@@ -403,6 +469,14 @@ static rc_status mesh_elements(const rc_case *c, mp_work *w, rc_error *err)
                                : rc_mp_quad(&w->acc[body], (const double(*)[3])p, rho * t, t);
             break;
         case RC_ELEM_TETRA4: size = rc_mp_tet(&w->acc[body], (const double(*)[3])p, rho); break;
+        case RC_ELEM_TETRA10: size = rc_mp_tet10(&w->acc[body], (const double(*)[3])p, rho); break;
+        case RC_ELEM_PENTA6: { /* the degenerate brick 1 2 3 3 4 5 6 6 (trilinear, exact) */
+            double h[8][3];
+            static const int map[8] = {0, 1, 2, 2, 3, 4, 5, 5};
+            for (int k = 0; k < 8; k++) memcpy(h[k], p[map[k]], sizeof h[k]);
+            size = rc_mp_hex(&w->acc[body], (const double(*)[3])h, rho);
+            break;
+        }
         default: size = rc_mp_hex(&w->acc[body], (const double(*)[3])p, rho); break;
         }
         if (!(size > 0))
@@ -443,6 +517,36 @@ static rc_status nodal_masses(const rc_case *c, mp_work *w, rc_error *err)
     return RC_OK;
 }
 
+/* The mass of the /PROP/SPRING (TYPE4) springs: half on each node, as
+ * Radioss lumps it; a node of a rigid body gives its share to the body
+ * (a point mass, or the main node's mass), a node in no body keeps it (a
+ * point fixed in space). Springs whose part or property does not resolve
+ * are the coupling compiler's errors (model/coupling.c). */
+static void spring_masses(const rc_case *c, mp_work *w)
+{
+    for (int e = 0; c->mesh && e < c->mesh->nspring; e++) {
+        const rc_case_spring *se = &c->mesh->spring[e];
+        const int pi = rc_case_find_part(c, se->part_id);
+        const int qi = pi >= 0 && c->part[pi].prop_id ? rc_case_find_prop(c, c->part[pi].prop_id) : -1;
+        if (qi < 0 || c->mesh->prop[qi].kind != RC_PROP_SPRING || c->mesh->prop[qi].sprtype != 4) continue;
+        const double mk = 0.5 * c->mesh->prop[qi].mass;
+        if (!(mk > 0)) continue;
+        for (int j = 0; j < 2; j++) {
+            const int n = rc_case_find_node(c, se->nodes[j]);
+            const int b = n >= 0 ? w->node_body[n] : -1;
+            if (b < 0) continue;
+            const int mn = rc_case_find_node(c, c->rbody[b].node_id);
+            if (mn == n) {
+                w->main_add[b] += mk;
+                continue;
+            }
+            double r[3];
+            for (int d = 0; d < 3; d++) r[d] = c->node[n].x[d] - (mn >= 0 ? c->node[mn].x[d] : 0);
+            add_point(&w->acc[b], r, mk);
+        }
+    }
+}
+
 /* Parts with elements in no rigid body: one error listing them. */
 static rc_status orphan_parts(const rc_case *c, const mp_work *w, rc_error *err)
 {
@@ -480,7 +584,7 @@ static rc_status finish_body(const rc_case *c, int b, const rc_mp *a, double mai
     if (rb->skew_id) {
         const int s = rc_case_find_skew(c, rb->skew_id);
         if (s < 0)
-            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field Skew_ID: expected the id of a /SKEW/FIX, got %d (no such skew)",
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field Skew_ID: expected the id of a /SKEW/FIX, /SKEW/MOV or /SKEW/MOV2, got %d (no such skew)",
                      RC_LOC(l1), rb->id, rb->skew_id);
         const double(*ax)[3] = (const double(*)[3])c->mesh->skew[s].axis;
         for (int i = 0; i < 3; i++)
@@ -577,6 +681,7 @@ rc_status rc_massprop_bodies(const rc_case *c, rc_body_mp *out, rc_error *err)
     if ((st = mesh_elements(c, &w, err))) goto done;
     if ((st = orphan_parts(c, &w, err))) goto done;
     if ((st = nodal_masses(c, &w, err))) goto done;
+    spring_masses(c, &w);
     for (int b = 0; b < c->nrbody && !st; b++) {
         memset(&out[b], 0, sizeof out[b]);
         if (rc_case_find_node(c, c->rbody[b].node_id) < 0) continue; /* the compiler's error */

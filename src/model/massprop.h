@@ -2,7 +2,8 @@
  * Mass properties of the rigid bodies from their mesh (docs/theory.md,
  * "Mass properties from the mesh"): exact integrals of the elements
  * (triangles and bilinear quadrilaterals as plates of thickness t, linear
- * tetrahedra, trilinear hexahedra), combined with the /RBODY card's added
+ * and quadratic tetrahedra, trilinear hexahedra and pentahedra (a
+ * degenerate hexahedron)), combined with the /RBODY card's added
  * Mass and J as Radioss combines them (ICoG, Ispher, Skew_ID).
  */
 #ifndef RC_MASSPROP_H
@@ -27,6 +28,9 @@ double rc_mp_tri(rc_mp *a, const double p[3][3], double sigma, double t);
 double rc_mp_quad(rc_mp *a, const double p[4][3], double sigma, double t);
 double rc_mp_tet(rc_mp *a, const double p[4][3], double rho);
 double rc_mp_hex(rc_mp *a, const double p[8][3], double rho);
+/* The quadratic (10-node) tetrahedron: corners, then the mid-edge nodes of
+ * 01 12 20 03 13 23 (isoparametric; exact by a 125-point rule). */
+double rc_mp_tet10(rc_mp *a, const double p[10][3], double rho);
 
 /* Centre of mass c (relative to r0) and the inertia tensor about it,
  * row-major 3x3 [kg m^2]; m must be > 0. */

@@ -121,14 +121,16 @@ static rc_status part_faces(const rc_case *c, const rc_case_surf *cs, seg_face *
             f = g;
         }
         double ctr[3] = {0, 0, 0};
-        for (int j = 0; j < el->nn; j++) {
+        /* a quadratic tetrahedron's faces: the triangles of its corners */
+        const int nc = el->kind == RC_ELEM_TETRA10 ? 4 : el->nn;
+        for (int j = 0; j < nc; j++) {
             const double *x = node_x(c, el->nodes[j]);
             if (!x) {
                 st = RC_SET(err, RC_EINPUT, RC_LOCFMT "element %d of part %d (for /SURF/PART/%d), field node_ID%d: expected the id of a /NODE, got %d (no such node)",
                             RC_LOC(el->loc), el->id, el->part_id, cs->id, j + 1, el->nodes[j]);
                 break;
             }
-            for (int k = 0; k < 3; k++) ctr[k] += x[k] / el->nn;
+            for (int k = 0; k < 3; k++) ctr[k] += x[k] / nc;
         }
         if (st) break;
         if (el->kind == RC_ELEM_SHELL || el->kind == RC_ELEM_SH3N) {
@@ -141,10 +143,14 @@ static rc_status part_faces(const rc_case *c, const rc_case_surf *cs, seg_face *
             face_key(g);
             continue;
         }
-        const int nf = el->kind == RC_ELEM_BRICK ? 6 : 4, nv = el->kind == RC_ELEM_BRICK ? 4 : 3;
+        /* a pentahedron as the degenerate brick 1 2 3 3 4 5 6 6 */
+        const int hexlike = el->kind == RC_ELEM_BRICK || el->kind == RC_ELEM_PENTA6;
+        static const int pmap[8] = {0, 1, 2, 2, 3, 4, 5, 5}, bmap[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+        const int *hmap = el->kind == RC_ELEM_PENTA6 ? pmap : bmap;
+        const int nf = hexlike ? 6 : 4, nv = hexlike ? 4 : 3;
         for (int q = 0; q < nf; q++) {
             int v[4];
-            for (int j = 0; j < nv; j++) v[j] = el->nodes[nv == 4 ? hexf[q][j] : tetf[q][j]];
+            for (int j = 0; j < nv; j++) v[j] = el->nodes[nv == 4 ? hmap[hexf[q][j]] : tetf[q][j]];
             int r = solid_face(c, v, nv, ctr, &f[n]);
             if (r > 0) f[n++].loc = el->loc;
         }

@@ -96,7 +96,22 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
      * imposed translations are held displacements (the integral of the
      * velocity), imposed rotations held orientations (the rotation the
      * angular velocity turns the body by, rc_imp_rotation), each free after
-     * its Tstop */
+     * its Tstop; a translation along a skew axis and a later start
+     * (Tstart > 0) are not in this version */
+    for (int k = 0; m->imp && k < m->imp->nt; k++)
+        if (m->imp->tdir[k] < 0)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card /IMPVEL: " RC_STATIC_NOT " (%s, /RBODY/%d); expected a velocity along a global "
+                               "axis, or %s",
+                     RC_LOC(m->end_loc), "an imposed velocity along a skew axis (skew_ID)", how,
+                     m->body_id[m->imp->tbody[k]], alt);
+    for (int k = 0; m->imp && k < m->imp->nt; k++)
+        if (isfinite(m->imp->ttstart[k]))
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card /IMPVEL: " RC_STATIC_NOT " (%s, /RBODY/%d); expected Tstart <= 0 (a held "
+                               "displacement from the load time 0), or %s",
+                     RC_LOC(m->end_loc), "an imposed velocity starting later (Tstart > 0)", how,
+                     m->body_id[m->imp->tbody[k]], alt);
     for (int i = 0; i < m->ninter; i++) {
         const rc_fric *fr = &m->inter_fr[i];
         const char *what = NULL;

@@ -48,18 +48,21 @@ static int cmp_double(const void *a, const void *b)
 }
 
 /* Time breakpoints: instants where the right-hand side jumps by time alone
- * (the end of an imposed velocity, /IMPVEL Tstop), inside (0, tend), sorted,
+ * (the start and the end of an imposed velocity, /IMPVEL Tstart > 0 and
+ * Tstop), inside (0, tend), sorted,
  * distinct. The integrator is stopped exactly there (its stop time) and restarted.
  * Returns the count; *bp is allocated (free it). */
 int rc_bk_time_breakpoints(const rc_model *m, double tend, double **bp)
 {
     const rc_imposed *p = m->imp;
-    int n = 0, cap = p ? p->nt + p->nr : 0;
+    int n = 0, cap = p ? 2 * p->nt + p->nr : 0;
     *bp = malloc(((size_t)cap + 1) * sizeof(double));
     if (!*bp) return -1;
     for (int k = 0; p && k < p->nt + p->nr; k++) {
         double ts = k < p->nt ? p->ttstop[k] : p->rtstop[k - p->nt];
         if (ts > 0 && ts < tend) (*bp)[n++] = ts;
+        if (k < p->nt && p->ttstart[k] > 0 && p->ttstart[k] < tend && p->ttstart[k] <= p->ttstop[k])
+            (*bp)[n++] = p->ttstart[k];
     }
     qsort(*bp, (size_t)n, sizeof(double), cmp_double);
     int u = 0;
@@ -880,9 +883,22 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             if ((st = outputs_before(bk, self, m, d, out, &fb, t, tend, dtout, yp != NULL, &tout, &nout, err)))
                 goto done;
         if (at_bp) {
-            /* a time breakpoint: an imposed velocity ends; restart there */
-            s.events++;
-            if ((st = rc_bk_sink_event(&sink, t, RC_EV_IMPVEL_STOP, "/IMPVEL", NULL, err))) goto done;
+            /* a time breakpoint: imposed velocities start (their velocity
+             * jumps to the imposed value) or end; restart there */
+            const double t_bp0 = ibp > 0 ? bp[ibp - 1] : 0.0;
+            if (rc_imp_start(m, t_bp0, t, y) > 0) {
+                s.events++;
+                if ((st = rc_bk_sink_event(&sink, t, RC_EV_IMPVEL_START, "/IMPVEL", NULL, err))) goto done;
+            }
+            int stops = 0;
+            for (int k = 0; m->imp && k < m->imp->nt + m->imp->nr; k++) {
+                const double ts = k < m->imp->nt ? m->imp->ttstop[k] : m->imp->rtstop[k - m->imp->nt];
+                stops += ts > t_bp0 && ts <= t;
+            }
+            if (stops) {
+                s.events++;
+                if ((st = rc_bk_sink_event(&sink, t, RC_EV_IMPVEL_STOP, "/IMPVEL", NULL, err))) goto done;
+            }
             bk->add_stats(self, &s);
             BKCHECK(bk->restart(self, t, 1), "ReInit");
             s.reinits++;

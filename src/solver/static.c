@@ -489,7 +489,7 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
         rc_initial_state(m, y0);
         for (int k = 0; k < m->imp->nt; k++) {
             const int b = m->imp->tbody[k], qk = b >= 0 ? s->slot[b] : -1;
-            if (qk < 0) continue;
+            if (qk < 0 || m->imp->tdir[k] < 0) continue; /* along a skew axis: out of scope (static_scope.c) */
             const int i = 6 * qk + m->imp->tdir[k];
             s->held[i] = 1;
             s->soft[i] = m->imp->ttstop[k] < m->tend;

@@ -468,6 +468,34 @@ TL('type6_sensor_after_tstop', T6, 'field Isensor',
 TL('power_sensor_missing', PW, 'field Isensor', at(PW, 2, 61, 70, '9'))
 
 
+# ---- Radioss spring elements (/SPRING with /PROP/TYPE4), the quadratic
+# tetrahedron, moving skews, groups of part groups, a later /IMPVEL start
+SPR_PART = ['/PART/9', 'springs', '         9         0']
+SPR_ELEM = ['/SPRING/9', '        31         1         2']
+PROP4 = ['/PROP/TYPE4/9', 'spring', '                   0', '                 100                   1']
+TL('spring_prop_type8', '/PART/9', 'field prop_ID',
+   before_end(SPR_PART + ['/PROP/TYPE8/9', 'general spring', '                   0'] + SPR_ELEM, expect=2))
+TL('spring_prop_missing', '/PART/9', 'field prop_ID', before_end(SPR_PART + SPR_ELEM, expect=2))
+TL('spring_node3', '/SPRING/9', 'field node_ID3',
+   before_end(SPR_PART + PROP4 + ['/SPRING/9', '        31         1         2         3'], expect=8))
+TL('spring_free_nodes', '/SPRING/9', 'belong to no /RBODY',
+   before_end(['/NODE', '        91                   0                   0                   0',
+               '        92                   1                   0                   0'] + SPR_PART + PROP4 +
+              ['/SPRING/9', '        31        91        92'], expect=11))
+TL('spring_prop_curve', '/PROP/TYPE4/9', 'field fct_ID1',
+   before_end(SPR_PART + PROP4 + ['         5'] + SPR_ELEM, expect=7))
+TL('spring_prop_rupture', '/PROP/TYPE4/9', 'field dmax',
+   before_end(SPR_PART + PROP4 + ['%60s%40s' % ('', '0.02')] + SPR_ELEM, expect=7))
+TL('tetra10_node_line_missing', '/TETRA10/9', 'field node_ID1', before_end(['/TETRA10/9', '         7'], expect=1))
+TL('skew_mov_aligned', '/SKEW/MOV/9', 'field node_ID1 node_ID2 node_ID3',
+   before_end(['/NODE', '        91                   0                   0                   0',
+               '        92                   1                   0                   0',
+               '        93                   2                   0                   0',
+               '/SKEW/MOV/9', 'aligned', '        91        92        93         X'], expect=6))
+TL('grpart_grpart_cycle', '/GRPART/GRPART/9', 'form a cycle',
+   before_end(['/GRPART/GRPART/8', 'a', '         9', '/GRPART/GRPART/9', 'b', '         8'], expect=5))
+TL('impvel_tstart_rotation', '/IMPVEL/1', 'field Tstart', at('/IMPVEL/1', 3, 41, 60, '0.5'))
+
 def write_all():
     for old in glob.glob('[0-9][0-9][0-9]_*'):
         os.remove(old)

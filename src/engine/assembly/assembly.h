@@ -210,6 +210,11 @@ double rc_cpl_joint_stop(const rc_model *m, const rc_data *d, int j, const doubl
 double rc_imp_rate(const rc_model *m, int tab, double ascale, double fscale, double t);
 /* Right-hand side (imposed_rhs.c): overwrite the imposed rows, W_imp'. */
 void rc_imp_rhs(const rc_model *m, const rc_data *d, double t, const double *y, double *ydot);
+/* At a time breakpoint t1 (the previous one t0): the translations whose
+ * Tstart lies in (t0, t1] start, their velocity set to Fscale f(Tstart /
+ * Ascale) in y and the impulse's work taken into W_imp; returns how many
+ * (imposed_rhs.c). */
+int rc_imp_start(const rc_model *m, double t0, double t1, double *y);
 /* Jacobian (imposed_jac.c): the W_imp row, then the imposed rows replaced. */
 int rc_imp_jac(const rc_model *m, const rc_data *d, double t, const double *y, double *val);
 

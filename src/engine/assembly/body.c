@@ -156,8 +156,9 @@ int rc_constant_states(const rc_model *m, const double *y0, const char *written,
                 n++;
             }
         }
-        /* rotations: all held (a partial lock is refused), omega held; q
-         * also when omega starts at exactly 0 (q' = q (0, omega) / 2 = 0) */
+        /* rotations: all held, omega held; q also when omega starts at
+         * exactly 0 (q' = q (0, omega) / 2 = 0); all but one held (a body
+         * turning about one axis): its held rows stay integrated (rate 0) */
         int rot = 1, still = 1;
         for (int j = 3; j < 6; j++) {
             rot &= held[j] && m->row_held[a + 7 + j] && !RC_W(a + 7 + j);

@@ -45,6 +45,8 @@ typedef enum rc_event_kind {
     RC_EV_STOP_CLOSE,
     /* the driver's own: an imposed velocity ends (a time breakpoint) */
     RC_EV_IMPVEL_STOP,
+    /* the driver's own: an imposed velocity starts (/IMPVEL Tstart > 0) */
+    RC_EV_IMPVEL_START,
     RC_EV_NKINDS
 } rc_event_kind;
 

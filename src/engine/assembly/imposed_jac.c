@@ -32,7 +32,7 @@ int rc_imp_jac(const rc_model *m, const rc_data *d, double t, const double *y, d
     memset(dp, 0, (size_t)ny * sizeof(double));
     /* dP/dy, P the power of the reactions; cf[r]: dP/d(free rate of row r) */
     for (int k = 0; k < p->nt; k++) {
-        if (t > p->ttstop[k]) continue;
+        if (t > p->ttstop[k] || t <= p->ttstart[k] || p->tdir[k] < 0) continue;
         const int r = p->trow[k];
         const double mass = m->body_mass[p->tbody[k]];
         const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t);
@@ -67,6 +67,32 @@ int rc_imp_jac(const rc_model *m, const rc_data *d, double t, const double *y, d
             rotate_c(q, wg, wd, 1);
             rc_cs_unstep(&q[c]);
             for (int k = 0; k < 3; k++) dp[a + 3 + c] += jw[k] * cimag(wd[k]) / RC_CSTEP;
+        }
+    }
+    /* along a skew axis u: the rows become (I - u u^T) the free rows, and
+     * P = m lambda (u.v) with lambda = a - u.a_free gives dP/dy = m lambda u
+     * on the velocities and -m (u.v) u.(d a_free/dy) */
+    for (int k = 0; k < p->nt; k++) {
+        if (t > p->ttstop[k] || t <= p->ttstart[k] || p->tdir[k] >= 0) continue;
+        const int r = p->trow[k];
+        const double mass = m->body_mass[p->tbody[k]], *u = p->tu + 3 * k;
+        const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t);
+        double ua = 0.0, uv = 0.0;
+        for (int i = 0; i < 3; i++) {
+            ua += u[i] * d->sc->imp_free[r + i];
+            uv += u[i] * y[r + i];
+        }
+        for (int i = 0; i < 3; i++) dp[r + i] += mass * (a - ua) * u[i];
+        const int64_t *sl = p->sslot + 3 * (size_t)p->tsk[k] * (size_t)ny;
+        for (int c = 0; c < ny; c++) {
+            const int64_t s0 = sl[c], s1 = sl[ny + c], s2 = sl[2 * ny + c];
+            if (s0 < 0 && s1 < 0 && s2 < 0) continue;
+            const double v[3] = {s0 >= 0 ? val[s0] : 0.0, s1 >= 0 ? val[s1] : 0.0, s2 >= 0 ? val[s2] : 0.0};
+            const double uj = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+            dp[c] -= mass * uv * uj;
+            if (s0 >= 0) val[s0] = v[0] - u[0] * uj;
+            if (s1 >= 0) val[s1] = v[1] - u[1] * uj;
+            if (s2 >= 0) val[s2] = v[2] - u[2] * uj;
         }
     }
     /* free-rate dependence into dP, then the imposed rows cleared */

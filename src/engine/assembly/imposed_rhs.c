@@ -28,9 +28,23 @@ void rc_imp_rhs(const rc_model *m, const rc_data *d, double t, const double *y, 
     double power = 0.0; /* of the reactions [W] */
     /* translations: reaction m (a_imposed - a_free) along the component */
     for (int k = 0; k < p->nt; k++) {
-        if (t > p->ttstop[k]) continue;
+        if (t > p->ttstop[k] || t <= p->ttstart[k]) continue;
         const int r = p->trow[k];
         const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t);
+        if (p->tdir[k] < 0) {
+            /* along u: the support's force m lambda u, lambda = a - u.a_free */
+            const double *u = p->tu + 3 * k;
+            double ua = 0.0, uv = 0.0;
+            for (int i = 0; i < 3; i++) {
+                d->sc->imp_free[r + i] = ydot[r + i];
+                ua += u[i] * ydot[r + i];
+                uv += u[i] * y[r + i];
+            }
+            const double lam = a - ua;
+            for (int i = 0; i < 3; i++) ydot[r + i] += lam * u[i];
+            power += m->body_mass[p->tbody[k]] * lam * uv;
+            continue;
+        }
         d->sc->imp_free[r] = ydot[r];
         power += m->body_mass[p->tbody[k]] * (a - ydot[r]) * y[r];
         ydot[r] = a;
@@ -55,4 +69,32 @@ void rc_imp_rhs(const rc_model *m, const rc_data *d, double t, const double *y, 
         for (int k = 0; k < 3; k++) power += w[k] * (J[3 * k] * dw[0] + J[3 * k + 1] * dw[1] + J[3 * k + 2] * dw[2]);
     }
     ydot[p->wadr] = -power;
+}
+
+int rc_imp_start(const rc_model *m, double t0, double t1, double *y)
+{
+    const rc_imposed *p = m->imp;
+    int n = 0;
+    for (int k = 0; p && k < p->nt; k++) {
+        const double ts = p->ttstart[k];
+        if (!(ts > t0 && ts <= t1) || ts > p->ttstop[k]) continue;
+        /* the velocity (along u: its component along u) jumps to the
+         * imposed value; the support's impulse does the work
+         * m (|v1|^2 - |v0|^2) / 2, which W_imp takes back */
+        double f, df;
+        rc_table_eval(&m->table[p->ttab[k]], ts / p->tascale[k], &f, &df);
+        const int r = p->trow[k], nr = p->tdir[k] < 0 ? 3 : 1;
+        const double *u = p->tu + 3 * k;
+        double uv = 0.0, e0 = 0.0, e1 = 0.0;
+        for (int i = 0; i < nr; i++) uv += (nr == 3 ? u[i] : 1.0) * y[r + i];
+        const double dv = p->tfscale[k] * f - uv;
+        for (int i = 0; i < nr; i++) {
+            e0 += y[r + i] * y[r + i];
+            y[r + i] += dv * (nr == 3 ? u[i] : 1.0);
+            e1 += y[r + i] * y[r + i];
+        }
+        y[p->wadr] -= 0.5 * m->body_mass[p->tbody[k]] * (e1 - e0);
+        n++;
+    }
+    return n;
 }

@@ -1152,6 +1152,27 @@ static void test_state_stiffness_beyond_resolution_refused(void)
     }
 }
 
+/* A contact point's landing band lasts while the contact does. A box
+ * sliding on a fixed box (a fuzzer scene): an edge pair landed at a depth at
+ * the rounding of 0 (2e-18 m, share 3e-11) and slipped at once; that very
+ * slip event cleared its landing band, the rounding landed it again, and
+ * land/slip repeated 200 times within 3e-10 s (Zeno at 3.2 ms). */
+static void test_landing_band_kept_through_flips(void)
+{
+    rc_model *m = TU_LOAD_OK("fuzz/physics/regressions/box_box_edge_pair_relands_at_rounding_zeno.rad");
+    if (!m) return;
+    rc_error e;
+    rc_run_options o;
+    memset(&o, 0, sizeof o);
+    rc_stats st;
+    const rc_status s = rc_run(m, &o, &st, &e);
+    printf("    box sliding on a box, edge pairs with friction: %s, %ld events, %ld steps\n", s ? e.msg : "ok",
+           st.events, st.steps);
+    ENSURE(s == RC_OK);
+    ENSURE(st.events < 200);
+    rc_model_free(m);
+}
+
 /* ---- an elastic law with a damper: hysteresis kept at its releases ---- */
 /* A 1 kg ball dropped at 1 m/s onto a floor, linear law k = 1e6 N/m
  * (Iform 0) with Visc 400 N s/m (zeta 0.2): on each rebound the damper
@@ -1226,6 +1247,7 @@ void suite_passive(void)
     RUN_TEST(test_viscous_reversal_root_waits_for_a_limit);
     RUN_TEST(test_ball_pivots_over_a_box_edge);
     RUN_TEST(test_state_stiffness_beyond_resolution_refused);
+    RUN_TEST(test_landing_band_kept_through_flips);
     RUN_TEST(test_power_rdf_root_on_damping_rate);
     RUN_TEST(test_elastic_damped_release_ledger);
     RUN_TEST(test_box_sliding_start_at_every_rtol);

@@ -60,8 +60,9 @@ typedef struct rc_data {
     int *pt_slip;        /* [npt] friction per contact point: 0 stick, 1 slip */
     double *pt_lband;    /* [npt] each contact point's landing band [m]: its landing root is
                             q_j + band, set at its landing so that the root it crossed
-                            does not cross again at the same instant; 0 again at the
-                            interface's next event (events.c) */
+                            does not cross again at the same instant; kept through
+                            the interface's other events, 0 again when its contact
+                            changes (events.c) */
     void *pt_flip;       /* scratch of the contact points' stick/slip flips at events
                             (events.c points_flip): 3 doubles, an int, a flag per point */
     double *inter_dref;  /* [ninter*3] sliding direction when a stateless friction

@@ -258,7 +258,11 @@ static int points_land(const rc_model *m, rc_data *d, int i, double t, double *y
         if (!land[j]) continue;
         for (int k = 0; k < 3; k++) set_state(ft + ps * j + k, 0.0, changed);
         d->pt_slip[m->inter_pbase[i] + j] = 0;
-        d->pt_lband[m->inter_pbase[i] + j] = fmax(apos, 4.0 * fabs(out[RC_PT_OUT * j + 5]));
+        /* the band it landed with, if any (kept through the interface's
+         * events), and at least 4 times the root's value at the crossing
+         * (not 4 times the band: it would grow with every landing) */
+        double *lb = d->pt_lband + m->inter_pbase[i] + j;
+        *lb = fmax(*lb, fmax(apos, 4.0 * fabs(out[RC_PT_OUT * j + 5] + *lb)));
         n++;
     }
     if (n > 0) {
@@ -663,7 +667,6 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
                    roots[rc_root_land_base(m) + m->inter_pbase[i] + j] != 0;
         if (!any) continue;
         clear_band(d, i); /* the touch bands last until the interface's next event */
-        for (int j = 0; j < m->inter_npt[i]; j++) d->pt_lband[m->inter_pbase[i] + j] = 0.0; /* and the landing bands */
         /* window first; then the branch, then the contact, so that crossings
          * falling together (the Stiff line reaching zero releases the force)
          * are all applied, in the order of the law */
@@ -674,6 +677,16 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
             if (kind[2] == RC_EV_NONE) kind[3] = step_friction(m, d, i, t, y, r, restart);
         }
         if ((kind[0] != RC_EV_NONE || kind[2] != RC_EV_NONE) && d->inter_mode[i] == RC_MODE_CLOSED) stateless_friction_mode(m, d, i, t, y);
+        /* the landing bands last while the contact does: a point that
+         * landed keeps its land root a band away through the interface's
+         * other events (its own stick -> slip flip an instant later among
+         * them), so that a depth at the rounding of 0 does not land it
+         * again at every event (a box edge pair landing at q = 2e-18 m
+         * with a share of 3e-11: land, slip, land, ... 200 times within
+         * 3e-9 s); a contact that changes clears them (points_land sets a
+         * landing point's own) */
+        if (kind[0] != RC_EV_NONE || kind[2] != RC_EV_NONE)
+            for (int j = 0; j < m->inter_npt[i]; j++) d->pt_lband[m->inter_pbase[i] + j] = 0.0;
         /* friction per contact point: the points whose roots crossed (all
          * reset when the contact changed) */
         if (kind[0] == RC_EV_NONE && kind[2] == RC_EV_NONE && m->inter_npt[i] > 0) {

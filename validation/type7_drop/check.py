@@ -1,0 +1,118 @@
+"""/INTER/TYPE7: a box's nodes on a meshed floor, against rigid-body closed
+forms (README.md).
+
+A cube (m = 2 kg, half side a = 0.1 m, J = 0.0133 kg m^2) is a /RBODY of its
+8 corner nodes, all of them the secondary nodes (grnd_IDs) of an
+/INTER/TYPE7 whose main surface is a fixed meshed floor (/SURF/SEG, 2 x 2
+quadrilaterals on nodes of no body, 2 m square). Istf 1: Stfac is the
+interface's stiffness k [N/m]; ricochet's TYPE7 is a TYPE6 contact of the
+linear law F = k P over the nodes, one way (docs/theory.md, "TYPE7
+contact"):
+
+1. dropped from 5 mm, damped by VISs (default 0.05 of the critical
+   damping): at rest with the interface force m g and the penetration
+   P = m g / k, the four bottom nodes carrying m g / 4 each (a flat face);
+2. launched at v0 along x on its four bottom nodes (rotations held), Coulomb
+   Fric mu on the TYPE7 card: stops after v0^2 / (2 mu g) at v0 / (mu g);
+3. the same with Fric 0 on the card and fric_ID naming a /FRICTION card of
+   the Coulomb law (Ifric 0, Iform 2) with Fric mu: the same stop.
+"""
+import math
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
+import rcval  # noqa: E402
+from deck import Deck, line  # noqa: E402
+
+M, J, A, G = 2.0, 0.0133, 0.1, 9.81
+K = 1.0e5                      # Stfac, Istf 1 [N/m]
+P_REST = M * G / K             # resting penetration [m]
+MU, V0 = 0.3, 1.0
+H0 = 0.005                     # drop height of the bottom face [m]
+
+
+def type7(d, iid, grnod, surf, stfac, fric=0.0, gapmin=0.0, fric_id=0):
+    """/INTER/TYPE7 in the Radioss 2022 layout: Istf 1, the rest defaults."""
+    d.add(f"/INTER/TYPE7/{iid}",
+          line(("i", grnod), ("i", surf), ("i", 1), ("i", 0), ("i", 0), ("i", None), ("i", 0), ("i", 0), ("i", 0),
+               ("i", 0)),
+          line(("r", 0.0), ("r", 0.0), ("r", 0.0), ("i", 0)),
+          line(("r", 0.0), ("r", 0.0), ("r", 0.0), ("r", 0.0), ("i", 0), ("i", 0)),
+          line(("r", stfac), ("r", fric), ("r", gapmin), ("r", 0.0), ("r", 0.0)),
+          line(("i", 0), ("i", None), ("i", 0), ("r", 0.0), ("r", 0.0), ("r", 0.0)),
+          line(("i", 0), ("i", 0), ("r", 0.0), ("i", 0), ("i", 0), ("i", 0), ("r", 0.0), ("i", fric_id)),
+          title="box nodes on the floor")
+
+
+def deck(title, z0, v=None, fric=0.0, fric_card=False):
+    d = Deck(title)
+    corners = [(11 + k, sx * A, sy * A, z0 + A + sz * A)
+               for k, (sx, sy, sz) in enumerate([(-1, -1, -1), (1, -1, -1), (1, 1, -1), (-1, 1, -1),
+                                                (-1, -1, 1), (1, -1, 1), (1, 1, 1), (-1, 1, 1)])]
+    # the floor: 3 x 3 nodes of no body, 2 x 2 quadrilaterals, normal +z
+    floor = [(101 + 3 * j + i, -1.0 + i, -1.0 + j, 0.0) for j in range(3) for i in range(3)]
+    d.nodes([(1, 0.0, 0.0, z0 + A)] + corners + floor)
+    d.rbody(1, 1, M, [J] * 3, grnod=2, title="cube 2 kg")
+    d.grnod(2, [n for n, _, _, _ in corners], title="corners")
+    segs = []
+    for j in range(2):
+        for i in range(2):
+            n0 = 101 + 3 * j + i
+            segs.append(line(("i", len(segs) + 1), ("i", n0), ("i", n0 + 1), ("i", n0 + 4), ("i", n0 + 3)))
+    d.add("/SURF/SEG/30", *segs, title="floor")
+    if v is not None:
+        d.bcs(1, 2, trarot="000 111", title="no rotation")
+        d.inivel(1, v, 2)
+    d.grav(1, "Z", -G, 2)
+    type7(d, 7, 2, 30, K, fric=0.0 if fric_card else fric, fric_id=9 if fric_card else 0)
+    if fric_card:
+        d.friction(9, iform=2, fric=MU, title="Coulomb")
+    d.run(4.0 if v is None else 0.5, 0.005)
+    return d
+
+
+def drop():
+    return deck("TYPE7: a cube of nodes dropped on a meshed floor", H0)
+
+
+def slide(card=False):
+    return deck("TYPE7: a cube of nodes sliding to rest", -P_REST, v=(V0, 0.0, 0.0), fric=MU, fric_card=card)
+
+
+def main():
+    # 1. at rest: F = m g, P = m g / k
+    r = rcval.Result(rcval.run(drop(), "drop"))
+    pen = A - r.pos[-1, 0, 2]
+    ep, ef = rcval.rel(pen, P_REST), rcval.rel(r.fn[-1, 0], M * G)
+    rcval.check("type7.rest.force", ef < 1e-6,
+                f"dropped {H0} m: at rest at t = {r.t[-1]:g} s with the interface force {r.fn[-1, 0]:.12f} N "
+                f"(m g = {M * G:.12f} N), rel. error {ef:.1e} (< 1e-6; VISs 0.05 damps the bounces)")
+    rcval.check("type7.rest.penetration", ep < 1e-5,
+                f"resting {pen:.9e} m deep (m g / k = {P_REST:.9e} m, k = Stfac = {K:g} N/m), rel. error {ep:.1e} "
+                f"(< 1e-5: the force is the law at the state P_e, docs/theory.md 2.7, which the geometric P follows to 2e-6)")
+    # 2. Coulomb stop with the card's Fric, 3. with /FRICTION via fric_ID
+    for name, card in (("fric", False), ("friction_card", True)):
+        r = rcval.Result(rcval.run(slide(card), name))
+        d_ref = V0**2 / (2 * MU * G)
+        t_stop = r.events("fric_stick")
+        et = rcval.rel(t_stop[0], V0 / (MU * G)) if len(t_stop) else 1.0
+        x_stop = r.pos[r.state_at(t_stop[0]), 0, 0] if len(t_stop) else 0.0
+        e = rcval.rel(x_stop, d_ref)
+        # after the stop the stick springs (stiffness k per node, the shares
+        # of mu m g) unload: the box moves back by mu m g / k
+        x_rest = d_ref - MU * M * G / K
+        er = rcval.rel(r.pos[-1, 0, 0], x_rest)
+        rcval.check(f"type7.slide.{name}", max(e, et, er) < 1e-6,
+                    f"launched at {V0} m/s on its 4 bottom nodes, mu {MU} ({'fric_ID -> /FRICTION' if card else 'Fric'}): "
+                    f"stops at {t_stop[0] if len(t_stop) else float('nan'):.9f} s (v0/(mu g) = {V0 / (MU * G):.9f} s, "
+                    f"{et:.1e}) at x = {x_stop:.9f} m (v0^2/(2 mu g) = {d_ref:.9f} m, {e:.1e}); at rest at "
+                    f"x = {r.pos[-1, 0, 0]:.9f} m (v0^2/(2 mu g) - mu m g/k = {x_rest:.9f} m, {er:.1e}); max rel. "
+                    f"error < 1e-6")
+    rcval.finish()
+
+
+if __name__ == "__main__":
+    rcval.entry(main, lambda: {"case.rad": drop(), "slide.rad": slide()})

@@ -14,6 +14,8 @@ contact"):
    P = m g / k, the four bottom nodes carrying m g / 4 each (a flat face);
 2. launched at v0 along x on its four bottom nodes (rotations held), Coulomb
    Fric mu on the TYPE7 card: stops after v0^2 / (2 mu g) at v0 / (mu g);
+1b. the same with a meshed bottom face (5 x 5 secondary nodes) on a 7 x 7
+   floor: the same rest;
 3. the same with Fric 0 on the card and fric_ID naming a /FRICTION card of
    the Coulomb law (Ifric 0, Iform 2) with Fric mu: the same stop.
 """
@@ -47,21 +49,27 @@ def type7(d, iid, grnod, surf, stfac, fric=0.0, gapmin=0.0, fric_id=0):
           title="box nodes on the floor")
 
 
-def deck(title, z0, v=None, fric=0.0, fric_card=False):
+def deck(title, z0, v=None, fric=0.0, fric_card=False, nb=2, nf=2):
+    """nb: bottom nodes per side of the cube (its 4 corners for 2); nf: floor
+    segments per side."""
     d = Deck(title)
     corners = [(11 + k, sx * A, sy * A, z0 + A + sz * A)
                for k, (sx, sy, sz) in enumerate([(-1, -1, -1), (1, -1, -1), (1, 1, -1), (-1, 1, -1),
                                                 (-1, -1, 1), (1, -1, 1), (1, 1, 1), (-1, 1, 1)])]
-    # the floor: 3 x 3 nodes of no body, 2 x 2 quadrilaterals, normal +z
-    floor = [(101 + 3 * j + i, -1.0 + i, -1.0 + j, 0.0) for j in range(3) for i in range(3)]
+    if nb > 2:  # a meshed bottom face: nb x nb nodes (the corners among them)
+        corners = corners[4:] + [(31 + nb * j + i, -A + 2 * A * i / (nb - 1), -A + 2 * A * j / (nb - 1), z0)
+                                 for j in range(nb) for i in range(nb)]
+    # the floor: (nf + 1)^2 nodes of no body, nf x nf quadrilaterals, normal +z
+    n1 = nf + 1
+    floor = [(101 + n1 * j + i, -1.0 + 2.0 * i / nf, -1.0 + 2.0 * j / nf, 0.0) for j in range(n1) for i in range(n1)]
     d.nodes([(1, 0.0, 0.0, z0 + A)] + corners + floor)
     d.rbody(1, 1, M, [J] * 3, grnod=2, title="cube 2 kg")
     d.grnod(2, [n for n, _, _, _ in corners], title="corners")
     segs = []
-    for j in range(2):
-        for i in range(2):
-            n0 = 101 + 3 * j + i
-            segs.append(line(("i", len(segs) + 1), ("i", n0), ("i", n0 + 1), ("i", n0 + 4), ("i", n0 + 3)))
+    for j in range(nf):
+        for i in range(nf):
+            n0 = 101 + n1 * j + i
+            segs.append(line(("i", len(segs) + 1), ("i", n0), ("i", n0 + 1), ("i", n0 + n1 + 1), ("i", n0 + n1)))
     d.add("/SURF/SEG/30", *segs, title="floor")
     if v is not None:
         d.bcs(1, 2, trarot="000 111", title="no rotation")
@@ -76,6 +84,10 @@ def deck(title, z0, v=None, fric=0.0, fric_card=False):
 
 def drop():
     return deck("TYPE7: a cube of nodes dropped on a meshed floor", H0)
+
+
+def drop_meshed():
+    return deck("TYPE7: a cube with a meshed bottom (5 x 5 nodes) dropped on a 7 x 7 floor", H0, nb=5, nf=7)
 
 
 def slide(card=False):
@@ -93,6 +105,13 @@ def main():
     rcval.check("type7.rest.penetration", ep < 1e-5,
                 f"resting {pen:.9e} m deep (m g / k = {P_REST:.9e} m, k = Stfac = {K:g} N/m), rel. error {ep:.1e} "
                 f"(< 1e-5: the force is the law at the state P_e, docs/theory.md 2.7, which the geometric P follows to 2e-6)")
+    # 1b. a meshed bottom face (25 nodes) on a finer floor: the same rest
+    r = rcval.Result(rcval.run(drop_meshed(), "meshed"))
+    pen = A - r.pos[-1, 0, 2]
+    ep, ef = rcval.rel(pen, P_REST), rcval.rel(r.fn[-1, 0], M * G)
+    rcval.check("type7.rest.meshed", ef < 1e-6 and ep < 1e-5,
+                f"a bottom face of 5 x 5 secondary nodes on a 7 x 7 floor (several nodes per floor segment): "
+                f"force {r.fn[-1, 0]:.12f} N (m g, {ef:.1e} < 1e-6), {pen:.9e} m deep (m g / k, {ep:.1e} < 1e-5)")
     # 2. Coulomb stop with the card's Fric, 3. with /FRICTION via fric_ID
     for name, card in (("fric", False), ("friction_card", True)):
         r = rcval.Result(rcval.run(slide(card), name))
@@ -115,4 +134,4 @@ def main():
 
 
 if __name__ == "__main__":
-    rcval.entry(main, lambda: {"case.rad": drop(), "slide.rad": slide()})
+    rcval.entry(main, lambda: {"case.rad": drop(), "meshed.rad": drop_meshed(), "slide.rad": slide()})

@@ -354,6 +354,8 @@ rc_status rc_card_type7(rc_reader *rd, const rc_block *b)
         RC_F_INT("Irem_gap", &irem_gap, 0, RC_FF_NONNEG),
         RC_F_INT("Irem_i2", &irem_i2, 0, RC_FF_NONNEG)};
     rc_field l4[] = {
+        /* a stiffness [N/m] with Istf 1, a factor with Istf 0: converted as a
+         * stiffness and back for Istf 0 below */
         RC_F_REALD("Stfac", &t->stfac, 0, RC_FF_NONNEG, RC_D_K),
         RC_F_REALD("Fric", &t->fric, 0, RC_FF_NONNEG, RC_D_NONE),
         RC_F_REALD("Gapmin", &t->gapmin, 0, RC_FF_NONNEG, RC_D_L),
@@ -390,19 +392,25 @@ rc_status rc_card_type7(rc_reader *rd, const rc_block *b)
                             "expected 6 data lines (Icurv, Ifric and Ithe 0: no curvature, friction law or "
                             "thermal lines), got %d",
                             nd);
-    /* the stiffness: Stfac a stiffness value (Istf 1) */
-    if (t->istf != 1)
+    /* the stiffness: Stfac a stiffness value (Istf 1), or a factor on the
+     * main elements' stiffness (0, 1000: model/type7.c) */
+    if (t->istf == RC_T7_DEFAULT) t->istf = 0;
+    if (t->istf != 0 && t->istf != 1)
         return rc_case_fail(rd, &t->line_loc[0], b->name, "Istf",
-                            "expected 1 (Stfac is the stiffness [N/m]), got %s: not supported yet (%s)", l1[2].got,
-                            t->istf == 0 || t->istf == RC_T7_DEFAULT
-                                ? "the default computes the stiffness from the Young's modulus of the main "
-                                  "segments' /MAT, which ricochet does not read"
-                                : "Istf 2 to 5 combine the main and secondary element stiffnesses, from the "
-                                  "Young's modulus of their /MAT, which ricochet does not read");
-    if (!(t->stfac > 0))
+                            "expected 0, 1000 (the main elements' stiffness times Stfac) or 1 (Stfac is the "
+                            "stiffness [N/m]), got %s: not supported yet (Istf 2 to 5 combine it with the "
+                            "secondary side's, which rigid nodes do not have)",
+                            l1[2].got);
+    if (t->istf == 1 && !(t->stfac > 0))
         return rc_case_fail(rd, &t->line_loc[3], b->name, "Stfac",
                             "with Istf 1, Stfac is the interface stiffness: expected a value > 0 [N/m], got %s",
                             l4[0].got);
+    /* Istf 0: Stfac is a factor, converted as a stiffness above: back */
+    if (t->istf == 0 && rc_units_convert(rd)) t->stfac /= rc_dim_scale(RC_D_K, rd->cur_units);
+    if (t->istf == 0 && t->stfac == 0) t->stfac = 1.0; /* the scale factor's default */
+    if (t->stmax > 0 && t->stmax < t->stmin)
+        return rc_case_fail(rd, &t->line_loc[2], b->name, "Stmax", "expected Stmax >= Stmin = %.15g (or 0: none), got %s",
+                            t->stmin, l3[1].got);
     if ((st = t7_only_default(rd, b, &t->line_loc[0], &l1[4], t->igap,
                               "a variable gap from the elements' thicknesses and sizes; 0 is the constant gap Gapmin")))
         return st;

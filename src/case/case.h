@@ -171,10 +171,11 @@ typedef struct rc_case_type7 {
     int id;
     char title[101];
     int grnod_id, surf_id;                    /* line 1: grnd_IDs, surf_IDm */
-    int istf;                                 /* line 1: 1 (the only one supported) */
+    int istf;                                 /* line 1: 0 (1000 read as 0): k = Stfac times the main
+                                                 shells' stiffness E t / 2; 1: k = Stfac */
     int igap;                                 /* line 1: 0 or 1000 (constant gap) */
-    double stmin, stmax;                      /* line 3 [N/m] (unused with Istf 1, as in Radioss) */
-    double stfac, fric, gapmin, tstart, tstop; /* line 4: [N/m] (Istf 1) [-] [m] [s] [s] */
+    double stmin, stmax;                      /* line 3 [N/m]: the bounds of Istf 0's stiffness (0: none) */
+    double stfac, fric, gapmin, tstart, tstop; /* line 4: [N/m] (Istf 1) or [-] (Istf 0), [-] [m] [s] [s] */
     int inacti;                               /* line 5: 0 or 5 (1000 read as 0) */
     double viss, visf;                        /* line 5: critical damping fractions [-] */
     int iform, sensor_id, fric_id;            /* line 6 */

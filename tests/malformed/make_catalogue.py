@@ -507,6 +507,8 @@ def T7(l1=None, l2='', l3='', l4=None, l5='', l6=''):
 
 T7H = '/INTER/TYPE7/97'
 TL('type7_istf_default', T7H, 'field Istf', before_end(T7(l1='         1         2         0'), expect=2))
+TL('type7_istf_combined', T7H, 'field Istf', before_end(T7(l1='         1         2         3'), expect=2))
+TL('type7_stmax_below_stmin', T7H, 'field Stmax', before_end(T7(l3=STOP('2e5', '1e5')), expect=4))
 TL('type7_stfac_blank', T7H, 'field Stfac', before_end(T7(l4=STOP('', '0.3')), expect=5))
 TL('type7_igap_variable', T7H, 'field Igap', before_end(T7(l1='         1         2         1         0         1'), expect=2))
 TL('type7_ithe', T7H, 'field Ithe', before_end(T7(l1='         1         2         1         1'), expect=2))

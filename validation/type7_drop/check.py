@@ -16,6 +16,8 @@ contact"):
    Fric mu on the TYPE7 card: stops after v0^2 / (2 mu g) at v0 / (mu g);
 1b. the same with a meshed bottom face (5 x 5 secondary nodes) on a 7 x 7
    floor: the same rest;
+1c. Istf 0: the floor a fixed body of shells (/MAT/LAW1 E, /PROP/SHELL
+   Thick), k = Stfac E t / 2: the same rest;
 3. the same with Fric 0 on the card and fric_ID naming a /FRICTION card of
    the Coulomb law (Ifric 0, Iform 2) with Fric mu: the same stop.
 """
@@ -36,20 +38,26 @@ MU, V0 = 0.3, 1.0
 H0 = 0.005                     # drop height of the bottom face [m]
 
 
-def type7(d, iid, grnod, surf, stfac, fric=0.0, gapmin=0.0, fric_id=0):
-    """/INTER/TYPE7 in the Radioss 2022 layout: Istf 1, the rest defaults."""
+def type7(d, iid, grnod, surf, stfac, fric=0.0, gapmin=0.0, fric_id=0, istf=1, stmin=0.0, stmax=0.0):
+    """/INTER/TYPE7 in the Radioss 2022 layout: Istf 1 (by default), the rest
+    defaults."""
     d.add(f"/INTER/TYPE7/{iid}",
-          line(("i", grnod), ("i", surf), ("i", 1), ("i", 0), ("i", 0), ("i", None), ("i", 0), ("i", 0), ("i", 0),
+          line(("i", grnod), ("i", surf), ("i", istf), ("i", 0), ("i", 0), ("i", None), ("i", 0), ("i", 0), ("i", 0),
                ("i", 0)),
           line(("r", 0.0), ("r", 0.0), ("r", 0.0), ("i", 0)),
-          line(("r", 0.0), ("r", 0.0), ("r", 0.0), ("r", 0.0), ("i", 0), ("i", 0)),
+          line(("r", stmin), ("r", stmax), ("r", 0.0), ("r", 0.0), ("i", 0), ("i", 0)),
           line(("r", stfac), ("r", fric), ("r", gapmin), ("r", 0.0), ("r", 0.0)),
           line(("i", 0), ("i", None), ("i", 0), ("r", 0.0), ("r", 0.0), ("r", 0.0)),
           line(("i", 0), ("i", 0), ("r", 0.0), ("i", 0), ("i", 0), ("i", 0), ("r", 0.0), ("i", fric_id)),
           title="box nodes on the floor")
 
 
-def deck(title, z0, v=None, fric=0.0, fric_card=False, nb=2, nf=2):
+# Istf 0: the floor a fixed body of shells (/MAT/LAW1 E, /PROP/SHELL Thick):
+# k = Stfac E t / 2 = K
+E_FLOOR, T_FLOOR, STFAC0 = 4.0e7, 0.01, 0.5
+
+
+def deck(title, z0, v=None, fric=0.0, fric_card=False, nb=2, nf=2, istf=1):
     """nb: bottom nodes per side of the cube (its 4 corners for 2); nf: floor
     segments per side."""
     d = Deck(title)
@@ -71,11 +79,21 @@ def deck(title, z0, v=None, fric=0.0, fric_card=False, nb=2, nf=2):
             n0 = 101 + n1 * j + i
             segs.append(line(("i", len(segs) + 1), ("i", n0), ("i", n0 + 1), ("i", n0 + n1 + 1), ("i", n0 + n1)))
     d.add("/SURF/SEG/30", *segs, title="floor")
+    if istf == 0:  # the floor: a fixed body of shells, their E and thickness
+        d.nodes([(100, 0.0, 0.0, 0.0)])
+        d.rbody(2, 100, 0.0, [0.0] * 3, grnod=3, title="floor")
+        d.grnod(3, [n for n, _, _, _ in floor], title="floor nodes")
+        d.bcs(2, 3, title="floor fixed")
+        d.add("/SHELL/5", *[s_[:10] + s_[10:] for s_ in segs])
+        d.add("/PART/5", line(("i", 5), ("i", 5)), title="floor shells")
+        d.add("/PROP/SHELL/5", "", "", line(("i", 0), ("i", 0), ("r", T_FLOOR)), title="floor thickness")
+        d.add("/MAT/LAW1/5", line(("r", 7800.0)), line(("r", E_FLOOR), ("r", 0.3)), title="floor material")
     if v is not None:
         d.bcs(1, 2, trarot="000 111", title="no rotation")
         d.inivel(1, v, 2)
     d.grav(1, "Z", -G, 2)
-    type7(d, 7, 2, 30, K, fric=0.0 if fric_card else fric, fric_id=9 if fric_card else 0)
+    type7(d, 7, 2, 30, K if istf == 1 else STFAC0, fric=0.0 if fric_card else fric, fric_id=9 if fric_card else 0,
+          istf=istf)
     if fric_card:
         d.friction(9, iform=2, fric=MU, title="Coulomb")
     d.run(4.0 if v is None else 0.5, 0.005)
@@ -88,6 +106,10 @@ def drop():
 
 def drop_meshed():
     return deck("TYPE7: a cube with a meshed bottom (5 x 5 nodes) dropped on a 7 x 7 floor", H0, nb=5, nf=7)
+
+
+def drop_istf0():
+    return deck("TYPE7 Istf 0: a cube of nodes dropped on a floor of shells", H0, istf=0)
 
 
 def slide(card=False):
@@ -112,6 +134,15 @@ def main():
     rcval.check("type7.rest.meshed", ef < 1e-6 and ep < 1e-5,
                 f"a bottom face of 5 x 5 secondary nodes on a 7 x 7 floor (several nodes per floor segment): "
                 f"force {r.fn[-1, 0]:.12f} N (m g, {ef:.1e} < 1e-6), {pen:.9e} m deep (m g / k, {ep:.1e} < 1e-5)")
+    # 1c. Istf 0: k = Stfac E t / 2 from the floor's shells
+    r = rcval.Result(rcval.run(drop_istf0(), "istf0"))
+    k0 = 0.5 * STFAC0 * E_FLOOR * T_FLOOR
+    pen = A - r.pos[-1, 0, 2]
+    ep, ef = rcval.rel(pen, M * G / k0), rcval.rel(r.fn[-1, 0], M * G)
+    rcval.check("type7.rest.istf0", ef < 1e-6 and ep < 1e-5,
+                f"Istf 0, Stfac {STFAC0} on a floor of shells (E {E_FLOOR:g} Pa, t {T_FLOOR} m): k = Stfac E t / 2 = "
+                f"{k0:g} N/m; force {r.fn[-1, 0]:.12f} N (m g, {ef:.1e} < 1e-6), {pen:.9e} m deep (m g / k = "
+                f"{M * G / k0:.9e} m, {ep:.1e} < 1e-5)")
     # 2. Coulomb stop with the card's Fric, 3. with /FRICTION via fric_ID
     for name, card in (("fric", False), ("friction_card", True)):
         r = rcval.Result(rcval.run(slide(card), name))
@@ -134,4 +165,4 @@ def main():
 
 
 if __name__ == "__main__":
-    rcval.entry(main, lambda: {"case.rad": drop(), "meshed.rad": drop_meshed(), "slide.rad": slide()})
+    rcval.entry(main, lambda: {"case.rad": drop(), "meshed.rad": drop_meshed(), "istf0.rad": drop_istf0(), "slide.rad": slide()})

@@ -5,7 +5,8 @@
  * left out, nodes of no body fixed), one way against a segment surface
  * (the nodes of the group only, while a TYPE6 between two segment surfaces
  * keeps both ways), the linear law k = Stfac, Gapmin, Fric with the stick
- * stiffness k, and VISs of the critical damping 2 sqrt(k m*).
+ * stiffness k, and VISs of the critical damping 2 sqrt(k m*); units (Stfac
+ * a stiffness with Istf 1, a factor with Istf 0) and the Istf 0 errors.
  */
 #include <math.h>
 #include <stdio.h>
@@ -187,9 +188,66 @@ static void test_type7_model(void)
     rc_model_free(m);
 }
 
+/* The deck with the first occurrence of `from` replaced by `to` (same
+ * length), or NULL. */
+static const char *deck_with(const char *from, const char *to)
+{
+    static char text[sizeof t7_deck_a + sizeof t7_deck_b];
+    snprintf(text, sizeof text, "%s%s", t7_deck_a, t7_deck_b);
+    char *at = strstr(text, from);
+    if (!at || strlen(from) != strlen(to)) return NULL;
+    memcpy(at, to, strlen(to));
+    return text;
+}
+
+/* Units: with Istf 1 Stfac is a stiffness (converted), with Istf 0 a
+ * factor (not converted); Gapmin a length. */
+static void test_type7_units(void)
+{
+    const char *text = deck_with("                  kg                   m                   s\n",
+                                 "                   g                  mm                  ms\n");
+    ENSURE(text != NULL);
+    if (!text) return;
+    char buf[sizeof t7_deck_a + sizeof t7_deck_b];
+    snprintf(buf, sizeof buf, "%s", text);
+    char *l8 = strstr(buf, "         4        30         1");
+    ENSURE(l8 != NULL);
+    if (!l8) return;
+    l8[29] = '0'; /* /INTER/TYPE7/8: Istf 0 */
+    rc_case *c = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    const rc_status st = rc_case_load(tu_tmp_write("t7units.rad", buf), &c, &e);
+    ENSURE(st == RC_OK);
+    if (st != RC_OK) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    /* g mm ms: 1 g/ms^2 = 1e3 N/m */
+    ENSURE_NEAR(c->type7[0].stfac, 3.7e7, 1e-15, 0);
+    ENSURE_NEAR(c->type7[0].gapmin, 1.1e-6, 1e-15, 0);
+    ENSURE(c->type7[1].istf == 0);
+    ENSURE_NEAR(c->type7[1].stfac, 37000, 1e-15, 0);
+    rc_case_free(c);
+}
+
+/* Istf 0 takes E t / 2 of the main shells: a main /SURF/SEG on no shell is
+ * an input error naming the segment (the stiffness itself:
+ * validation/type7_drop, type7.rest.istf0). */
+static void test_type7_istf0_errors(void)
+{
+    const char *text = deck_with("         2        30         1", "         2        30         0");
+    ENSURE(text != NULL);
+    if (!text) return;
+    TU_EXPECT_TEXT_ERROR(text, "t7istf0.rad", "card /INTER/TYPE7/7, field Istf", "segment 1 of /SURF/SEG/30",
+                         "is on no /SHELL or /SH3N", "expected Istf 1");
+}
+
 void suite_type7(void);
 void suite_type7(void)
 {
     RUN_TEST(test_type7_read);
     RUN_TEST(test_type7_model);
+    RUN_TEST(test_type7_units);
+    RUN_TEST(test_type7_istf0_errors);
 }

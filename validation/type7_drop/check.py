@@ -132,7 +132,7 @@ def main():
     pen = A - r.pos[-1, 0, 2]
     ep, ef = rcval.rel(pen, P_REST), rcval.rel(r.fn[-1, 0], M * G)
     rcval.check("type7.rest.meshed", ef < 1e-6 and ep < 1e-5,
-                f"a bottom face of 5 x 5 secondary nodes on a 7 x 7 floor (several nodes per floor segment): "
+                f"max rel. error {max(ef, ep):.1e}: a bottom face of 5 x 5 secondary nodes on a 7 x 7 floor (several nodes per floor segment): "
                 f"force {r.fn[-1, 0]:.12f} N (m g, {ef:.1e} < 1e-6), {pen:.9e} m deep (m g / k, {ep:.1e} < 1e-5)")
     # 1c. Istf 0: k = Stfac E t / 2 from the floor's shells
     r = rcval.Result(rcval.run(drop_istf0(), "istf0"))
@@ -140,7 +140,7 @@ def main():
     pen = A - r.pos[-1, 0, 2]
     ep, ef = rcval.rel(pen, M * G / k0), rcval.rel(r.fn[-1, 0], M * G)
     rcval.check("type7.rest.istf0", ef < 1e-6 and ep < 1e-5,
-                f"Istf 0, Stfac {STFAC0} on a floor of shells (E {E_FLOOR:g} Pa, t {T_FLOOR} m): k = Stfac E t / 2 = "
+                f"max rel. error {max(ef, ep):.1e}: Istf 0, Stfac {STFAC0} on a floor of shells (E {E_FLOOR:g} Pa, t {T_FLOOR} m): k = Stfac E t / 2 = "
                 f"{k0:g} N/m; force {r.fn[-1, 0]:.12f} N (m g, {ef:.1e} < 1e-6), {pen:.9e} m deep (m g / k = "
                 f"{M * G / k0:.9e} m, {ep:.1e} < 1e-5)")
     # 2. Coulomb stop with the card's Fric, 3. with /FRICTION via fric_ID
@@ -156,7 +156,7 @@ def main():
         x_rest = d_ref - MU * M * G / K
         er = rcval.rel(r.pos[-1, 0, 0], x_rest)
         rcval.check(f"type7.slide.{name}", max(e, et, er) < 1e-6,
-                    f"launched at {V0} m/s on its 4 bottom nodes, mu {MU} ({'fric_ID -> /FRICTION' if card else 'Fric'}): "
+                    f"max rel. error {max(e, et, er):.1e}: launched at {V0} m/s on its 4 bottom nodes, mu {MU} ({'fric_ID -> /FRICTION' if card else 'Fric'}): "
                     f"stops at {t_stop[0] if len(t_stop) else float('nan'):.9f} s (v0/(mu g) = {V0 / (MU * G):.9f} s, "
                     f"{et:.1e}) at x = {x_stop:.9f} m (v0^2/(2 mu g) = {d_ref:.9f} m, {e:.1e}); at rest at "
                     f"x = {r.pos[-1, 0, 0]:.9f} m (v0^2/(2 mu g) - mu m g/k = {x_rest:.9f} m, {er:.1e}); max rel. "

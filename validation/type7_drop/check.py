@@ -18,6 +18,9 @@ contact"):
    floor: the same rest;
 1c. Istf 0: the floor a fixed body of shells (/MAT/LAW1 E, /PROP/SHELL
    Thick), k = Stfac E t / 2: the same rest;
+1d. no gravity: the cube at -1 m/s along z, 3 cm off the centre, onto a
+   free slab (7 kg) whose top face is the main surface: the linear
+   momentum of the two bodies is conserved;
 3. the same with Fric 0 on the card and fric_ID naming a /FRICTION card of
    the Coulomb law (Ifric 0, Iform 2) with Fric mu: the same stop.
 """
@@ -112,6 +115,34 @@ def drop_istf0():
     return deck("TYPE7 Istf 0: a cube of nodes dropped on a floor of shells", H0, istf=0)
 
 
+MS = 7.0  # the free slab's mass [kg]
+
+
+def free_free():
+    """No gravity: the cube of nodes (off the slab's centre by 0.03 m along x)
+    at -1 m/s along z onto a free slab (7 kg, 0.6 x 0.6 x 0.1 m) whose top
+    face is the main surface (one segment on its body)."""
+    d = Deck("TYPE7: a cube of nodes hitting a free slab")
+    x0 = 0.03
+    corners = [(11 + k, x0 + sx * A, sy * A, 0.01 + A + sz * A)
+               for k, (sx, sy, sz) in enumerate([(-1, -1, -1), (1, -1, -1), (1, 1, -1), (-1, 1, -1),
+                                                (-1, -1, 1), (1, -1, 1), (1, 1, 1), (-1, 1, 1)])]
+    slab = [(21 + k, sx * 0.3, sy * 0.3, -0.05 + sz * 0.05)
+            for k, (sx, sy, sz) in enumerate([(-1, -1, -1), (1, -1, -1), (1, 1, -1), (-1, 1, -1),
+                                             (-1, -1, 1), (1, -1, 1), (1, 1, 1), (-1, 1, 1)])]
+    d.nodes([(1, x0, 0.0, 0.01 + A), (2, 0.0, 0.0, -0.05)] + corners + slab)
+    d.rbody(1, 1, M, [J] * 3, grnod=2, title="cube 2 kg")
+    d.grnod(2, [n for n, _, _, _ in corners], title="corners")
+    js = MS * (0.6**2 + 0.1**2) / 12
+    d.rbody(2, 2, MS, [js, js, MS * 0.72 / 12], grnod=3, title="slab 7 kg")
+    d.grnod(3, [n for n, _, _, _ in slab], title="slab nodes")
+    d.add("/SURF/SEG/30", line(("i", 1), ("i", 25), ("i", 26), ("i", 27), ("i", 28)), title="slab top")
+    d.inivel(1, (0.0, 0.0, -1.0), 2)
+    type7(d, 7, 2, 30, K)
+    d.run(0.1, 0.001)
+    return d
+
+
 def slide(card=False):
     return deck("TYPE7: a cube of nodes sliding to rest", -P_REST, v=(V0, 0.0, 0.0), fric=MU, fric_card=card)
 
@@ -143,6 +174,15 @@ def main():
                 f"max rel. error {max(ef, ep):.1e}: Istf 0, Stfac {STFAC0} on a floor of shells (E {E_FLOOR:g} Pa, t {T_FLOOR} m): k = Stfac E t / 2 = "
                 f"{k0:g} N/m; force {r.fn[-1, 0]:.12f} N (m g, {ef:.1e} < 1e-6), {pen:.9e} m deep (m g / k = "
                 f"{M * G / k0:.9e} m, {ep:.1e} < 1e-5)")
+    # 1d. free-free: the contact's forces are equal and opposite at the nodes
+    r = rcval.Result(rcval.run(free_free(), "free"))
+    p = M * r.vel[:, 0] + MS * r.vel[:, 1]
+    ep = np.abs(p - p[0]).max() / (M * 1.0)
+    t_sep = r.contact_ends()
+    rcval.check("type7.free.momentum", ep < 1e-12 and len(t_sep) > 0 and r.vel[-1, 1, 2] < 0,
+                f"error / (m v0) {ep:.1e} (< 1e-12): the cube at 1 m/s onto a free slab, off its centre: linear "
+                f"momentum over the run; the contact opened at {t_sep[0] if len(t_sep) else float('nan'):.6f} s, "
+                f"the slab leaves at {r.vel[-1, 1, 2]:.6f} m/s")
     # 2. Coulomb stop with the card's Fric, 3. with /FRICTION via fric_ID
     for name, card in (("fric", False), ("friction_card", True)):
         r = rcval.Result(rcval.run(slide(card), name))
@@ -165,4 +205,4 @@ def main():
 
 
 if __name__ == "__main__":
-    rcval.entry(main, lambda: {"case.rad": drop(), "meshed.rad": drop_meshed(), "istf0.rad": drop_istf0(), "slide.rad": slide()})
+    rcval.entry(main, lambda: {"case.rad": drop(), "meshed.rad": drop_meshed(), "istf0.rad": drop_istf0(), "free.rad": free_free(), "slide.rad": slide()})

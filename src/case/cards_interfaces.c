@@ -1,5 +1,5 @@
 /*
- * Cards of contact interfaces: /INTER/TYPE6 and ricochet's /INTER/POWER
+ * Cards of contact interfaces: /INTER/TYPE6, /INTER/TYPE7 and ricochet's /INTER/POWER
  * (power-law contact with splines).
  * Layouts are field tables (case_internal.h), documented in
  * docs/case-format.md; references between cards are resolved by the
@@ -274,4 +274,164 @@ rc_status rc_card_power(rc_reader *rd, const rc_block *b)
                                 l4[3].got);
     }
     return rc_note_id(rd, RC_IDK_INTER, p->id, &p->loc, b->hdr->text);
+}
+
+/* ======================================================================
+ * /INTER/TYPE7
+ * ====================================================================== */
+
+/* Radioss's defaults of /INTER/TYPE7 that ricochet reads. */
+#define RC_T7_DEF_VISS 0.05   /* critical damping fraction of the normal stiffness [-] */
+#define RC_T7_DEF_VISF 1.0    /* critical damping fraction of the friction [-] */
+#define RC_T7_DEFAULT 1000    /* Radioss's "default" value of the flags (Igap, Inacti, ...) */
+
+/* A flag field read as an integer whose only supported values are 0 (or
+ * blank) and Radioss's 1000 (both: the default); anything else is "not
+ * supported yet" with the note. */
+static rc_status t7_only_default(rc_reader *rd, const rc_block *b, const rc_loc *loc, const rc_field *f, int v,
+                                 const char *note)
+{
+    if (v == 0 || v == RC_T7_DEFAULT) return RC_OK;
+    return rc_case_fail(rd, loc, b->name, f->name, "expected 0, blank or 1000 (the default), got %s: not supported yet (%s)",
+                        f->got, note);
+}
+
+/* /INTER/TYPE7/inter_ID: title and Radioss's six lines (layout of 11.0 and
+ * later; the curvature line of Icurv, the friction law lines of Ifric and
+ * the thermal lines of Ithe are refused with their flags). */
+rc_status rc_card_type7(rc_reader *rd, const rc_block *b)
+{
+    rc_case *c = rd->c;
+    int nd;
+    rc_status st;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "inter_ID", "/INTER/TYPE7/inter_ID"))) return st;
+    RC_GROW(rd, c->type7, rd->captype7, c->ntype7);
+    rc_case_type7 *t = &c->type7[c->ntype7++];
+    t->id = b->id;
+    t->loc = b->hdr->loc;
+    for (int k = 0; k < 6; k++) t->line_loc[k] = t->loc;
+    if (rc_layout_version(rd) < 110)
+        return rc_case_fail(rd, &b->hdr->loc, b->name, NULL,
+                            "the /INTER/TYPE7 layout of Radioss versions before 11.0 (/BEGIN Invers %d) is not "
+                            "supported yet: expected Invers 110 or later (or 0)",
+                            rc_layout_version(rd));
+    if ((st = rc_card_lines(rd, b, t->title, 6, 12,
+                            "grnd_IDs surf_IDm Istf Ithe Igap (blank) Ibag Idel Icurv Iadm, Fscalegap Gapmax "
+                            "Fpenmax ITIED, Stmin Stmax %mesh_size dtmin Irem_gap Irem_i2, Stfac Fric Gapmin "
+                            "Tstart Tstop, IBC (blank) Inacti VISs VISF Bumult, Ifric Ifiltr Xfreq Iform sens_ID "
+                            "fct_IDF AscaleF fric_ID",
+                            &nd)))
+        return st;
+    int ithe = 0, ibag = 0, idel = 0, icurv = 0, iadm = 0, itied = 0, irem_gap = 0, irem_i2 = 0, ibc = 0;
+    int ifric = 0, ifiltr = 0, fct_f = 0;
+    double fscalegap = 0, gapmax = 0, fpenmax = 0, mesh_size = 0, dtmin = 0, bumult = 0, xfreq = 0, ascalef = 0;
+    static const char heat[] = "heat transfer: ricochet has no temperatures";
+    rc_field l1[] = {
+        RC_F_INT("grnd_IDs", &t->grnod_id, 0, RC_FF_POS),
+        RC_F_INT("surf_IDm", &t->surf_id, 0, RC_FF_POS),
+        RC_F_INT("Istf", &t->istf, 0, RC_FF_NONNEG),
+        {.name = "Ithe", .width = 10, .type = RC_FT_INT, .out = &ithe, .flags = RC_FF_ONLY0, .note = heat},
+        RC_F_INT("Igap", &t->igap, 0, RC_FF_NONNEG),
+        RC_F_SKIP(10),
+        RC_F_INT("Ibag", &ibag, 0, RC_FF_NONNEG),
+        RC_F_INT("Idel", &idel, 0, 0),
+        {.name = "Icurv", .width = 10, .type = RC_FT_INT, .out = &icurv, .flags = RC_FF_ONLY0,
+         .note = "a gap envelope with curvature"},
+        {.name = "Iadm", .width = 10, .type = RC_FT_INT, .out = &iadm, .flags = RC_FF_ONLY0,
+         .note = "curvature of an adaptive mesh"}};
+    rc_field l2[] = {
+        RC_F_REALD("Fscalegap", &fscalegap, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("Gapmax", &gapmax, 0, RC_FF_NONNEG, RC_D_L),
+        {.name = "Fpenmax", .width = 20, .type = RC_FT_REAL, .out = &fpenmax, .flags = RC_FF_ONLY0, .dim = RC_D_NONE,
+         .note = "the largest initial penetration as a fraction of the gap"},
+        {.name = "ITIED", .width = 10, .type = RC_FT_INT, .out = &itied, .flags = RC_FF_ONLY0,
+         .note = "tied contact"}};
+    rc_field l3[] = {
+        RC_F_REALD("Stmin", &t->stmin, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("Stmax", &t->stmax, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("%mesh_size", &mesh_size, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("dtmin", &dtmin, 0, RC_FF_NONNEG, RC_D_T),
+        RC_F_INT("Irem_gap", &irem_gap, 0, RC_FF_NONNEG),
+        RC_F_INT("Irem_i2", &irem_i2, 0, RC_FF_NONNEG)};
+    rc_field l4[] = {
+        /* a stiffness [N/m] with Istf 1, a factor with Istf 0: converted as a
+         * stiffness and back for Istf 0 below */
+        RC_F_REALD("Stfac", &t->stfac, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("Fric", &t->fric, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("Gapmin", &t->gapmin, 0, RC_FF_NONNEG, RC_D_L),
+        RC_F_REALD("Tstart", &t->tstart, 0, 0, RC_D_T),
+        RC_F_REALD("Tstop", &t->tstop, RC_DEF_TSTOP, RC_FF_ZDEF, RC_D_T)};
+    rc_field l5[] = {
+        {.name = "IBC", .width = 10, .type = RC_FT_INT, .out = &ibc, .flags = RC_FF_ONLY0,
+         .note = "boundary conditions of the secondary nodes at deactivation"},
+        RC_F_SKIP(10),
+        RC_F_INT("Inacti", &t->inacti, 0, 0),
+        RC_F_REALD("VISs", &t->viss, RC_T7_DEF_VISS, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("VISF", &t->visf, RC_T7_DEF_VISF, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("Bumult", &bumult, 0, RC_FF_NONNEG, RC_D_NONE)};
+    rc_field l6[] = {
+        {.name = "Ifric", .width = 10, .type = RC_FT_INT, .out = &ifric, .flags = RC_FF_ONLY0,
+         .note = "the friction laws of TYPE7; a /FRICTION card with its Ifric applies to the interface (fric_ID)"},
+        {.name = "Ifiltr", .width = 10, .type = RC_FT_INT, .out = &ifiltr, .flags = RC_FF_ONLY0,
+         .note = "the friction filter of TYPE7; a /FRICTION card with its Ifiltr applies to the interface (fric_ID)"},
+        RC_F_REALD("Xfreq", &xfreq, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_INT("Iform", &t->iform, 0, RC_FF_NONNEG),
+        RC_F_INT("sens_ID", &t->sensor_id, 0, RC_FF_NONNEG),
+        {.name = "fct_IDF", .width = 10, .type = RC_FT_INT, .out = &fct_f, .flags = RC_FF_ONLY0,
+         .note = "a friction coefficient that varies with temperature"},
+        RC_F_REALD("AscaleF", &ascalef, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_INT("fric_ID", &t->fric_id, 0, RC_FF_NONNEG)};
+    rc_field *lines[6] = {l1, l2, l3, l4, l5, l6};
+    const int nf[6] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5), RC_NF(l6)};
+    for (int k = 0; k < 6; k++) {
+        t->line_loc[k] = b->lines[k + 1].loc;
+        if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
+    }
+    if (nd > 6)
+        return rc_case_fail(rd, &b->lines[7].loc, b->name, NULL,
+                            "expected 6 data lines (Icurv, Ifric and Ithe 0: no curvature, friction law or "
+                            "thermal lines), got %d",
+                            nd);
+    /* the stiffness: Stfac a stiffness value (Istf 1), or a factor on the
+     * main elements' stiffness (0, 1000: model/type7.c) */
+    if (t->istf == RC_T7_DEFAULT) t->istf = 0;
+    if (t->istf != 0 && t->istf != 1)
+        return rc_case_fail(rd, &t->line_loc[0], b->name, "Istf",
+                            "expected 0, 1000 (the main elements' stiffness times Stfac) or 1 (Stfac is the "
+                            "stiffness [N/m]), got %s: not supported yet (Istf 2 to 5 combine it with the "
+                            "secondary side's, which rigid nodes do not have)",
+                            l1[2].got);
+    if (t->istf == 1 && !(t->stfac > 0))
+        return rc_case_fail(rd, &t->line_loc[3], b->name, "Stfac",
+                            "with Istf 1, Stfac is the interface stiffness: expected a value > 0 [N/m], got %s",
+                            l4[0].got);
+    /* Istf 0: Stfac is a factor, converted as a stiffness above: back */
+    if (t->istf == 0 && rc_units_convert(rd)) t->stfac /= rc_dim_scale(RC_D_K, rd->cur_units);
+    if (t->istf == 0 && t->stfac == 0) t->stfac = 1.0; /* the scale factor's default */
+    if (t->stmax > 0 && t->stmax < t->stmin)
+        return rc_case_fail(rd, &t->line_loc[2], b->name, "Stmax", "expected Stmax >= Stmin = %.15g (or 0: none), got %s",
+                            t->stmin, l3[1].got);
+    if ((st = t7_only_default(rd, b, &t->line_loc[0], &l1[4], t->igap,
+                              "a variable gap from the elements' thicknesses and sizes; 0 is the constant gap Gapmin")))
+        return st;
+    if (t->inacti == RC_T7_DEFAULT) t->inacti = 0;
+    if (t->inacti != 0 && t->inacti != 5)
+        return rc_case_fail(rd, &t->line_loc[4], b->name, "Inacti",
+                            "expected 0, blank, 1000 (no action) or 5 (the gap reduced by the initial "
+                            "penetration), got %s: not supported yet",
+                            l5[2].got);
+    if (t->visf != RC_T7_DEF_VISF)
+        return rc_case_fail(rd, &t->line_loc[4], b->name, "VISF",
+                            "expected 1, 0 or blank (the default), got %s: not supported yet (ricochet's friction "
+                            "per contact point has no tangential damping)",
+                            l5[4].got);
+    if (t->iform > 2 && t->iform != RC_T7_DEFAULT)
+        return rc_case_fail(rd, &t->line_loc[5], b->name, "Iform",
+                            "expected 0, 1, 2 or 1000 (friction penalty formulation), got %s", l6[3].got);
+    if (t->tstop < t->tstart)
+        return rc_case_fail(rd, &t->line_loc[3], b->name, "Tstop", "expected Tstop >= Tstart = %.15g, got %s",
+                            t->tstart, l4[4].got);
+    (void)ibag;
+    (void)idel;
+    return rc_note_id(rd, RC_IDK_INTER, t->id, &t->loc, b->hdr->text);
 }

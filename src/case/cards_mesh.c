@@ -289,6 +289,23 @@ static rc_status rc_card_mat(rc_reader *rd, const rc_block *b)
         rc_field f[] = {RC_F_REAL("Init. dens.", &m->rho, 0, RC_FF_NONNEG)};
         if ((st = rc_parse_line(rd, b, &one, f, 1))) return st;
         m->rho_loc = ln->loc;
+        /* Young's modulus of the elastic and Johnson-Cook laws (line 2,
+         * columns 1-20): the stiffness of an /INTER/TYPE7 with Istf 0 */
+        static const char *const e_laws[] = {"LAW1", "ELAST", "LAW2", "PLAS_JOHNS"};
+        int with_e = 0;
+        for (int i = 0; i < RC_NF(e_laws); i++) with_e |= strcmp(m->law, e_laws[i]) == 0;
+        if (with_e && nd >= 2) {
+            const rc_line *l2 = &b->lines[2];
+            const char *c2 = strchr(l2->text, ',');
+            int n2 = c2 ? (int)(c2 - l2->text) : l2->len < 20 ? l2->len : 20;
+            memcpy(buf, l2->text, (size_t)n2);
+            buf[n2] = '\0';
+            rc_line two = {buf, n2, l2->loc};
+            rc_field fe[] = {RC_F_REALD("E", &m->e, 0, RC_FF_NONNEG, RC_D_K2)};
+            if ((st = rc_parse_line(rd, b, &two, fe, 1))) return st;
+            m->has_e = m->e > 0;
+            m->e_loc = l2->loc;
+        }
     } else if ((st = rc_case_warn(rd, &b->hdr->loc,
                                   "card %s ignored: ricochet reads the density of the laws listed "
                                   "in docs/case-format.md only; an element using this material "

@@ -154,8 +154,34 @@ typedef struct rc_case_type6 {
     int sensor_id;                            /* line 1, ricochet: /SENSOR that activates the interface (0: none) */
     const char *name;                         /* the card its messages name: NULL for a /INTER/TYPE6
                                                  card ("/INTER/TYPE6/<id>"); the contact of a /RWALL
-                                                 with a surface, made by the compiler (model/rwall.c) */
+                                                 with a surface, made by the compiler (model/rwall.c),
+                                                 or of an /INTER/TYPE7 (model/type7.c) */
+    /* set only by the compiler for an /INTER/TYPE7 (model/type7.c) */
+    int oneway;                               /* 1: the nodes of surf_ID1 against surf_ID2 only */
+    double vis_crit;                          /* > 0: Visc = vis_crit 2 sqrt(k m*) (k the load
+                                                 curve's slope, m* the bodies' reduced mass) */
+    int fric_id;                              /* > 0: the /FRICTION card that applies (fric_ID) */
 } rc_case_type6;
+
+/* /INTER/TYPE7/inter_ID (cards_interfaces.c): the nodes of grnd_IDs against
+ * the main surface surf_IDm, one way (compiled as TYPE6 contacts of a
+ * linear law by model/type7.c). The fields ricochet does not use are read
+ * and checked, not kept. */
+typedef struct rc_case_type7 {
+    int id;
+    char title[101];
+    int grnod_id, surf_id;                    /* line 1: grnd_IDs, surf_IDm */
+    int istf;                                 /* line 1: 0 (1000 read as 0): k = Stfac times the main
+                                                 shells' stiffness E t / 2; 1: k = Stfac */
+    int igap;                                 /* line 1: 0 or 1000 (constant gap) */
+    double stmin, stmax;                      /* line 3 [N/m]: the bounds of Istf 0's stiffness (0: none) */
+    double stfac, fric, gapmin, tstart, tstop; /* line 4: [N/m] (Istf 1) or [-] (Istf 0), [-] [m] [s] [s] */
+    int inacti;                               /* line 5: 0 or 5 (1000 read as 0) */
+    double viss, visf;                        /* line 5: critical damping fractions [-] */
+    int iform, sensor_id, fric_id;            /* line 6 */
+    rc_loc loc;
+    rc_loc line_loc[6];                       /* lines 1-6 (Radioss's lines without the curvature line) */
+} rc_case_type7;
 
 /* /SENSOR/TIME/sens_ID (cards_rwall.c): a sensor that is on from t = Tdelay. */
 typedef struct rc_case_sensor {
@@ -364,6 +390,7 @@ struct rc_case {
     int nsurf;   rc_case_surf *surf;
     int ntype6;  rc_case_type6 *type6;
     int npower;  struct rc_case_power *power;   /* case_power.h */
+    int ntype7;  rc_case_type7 *type7;
     int nrwall;  rc_case_rwall *rwall;
     int nsensor; rc_case_sensor *sensor;
     int nimpvel; struct rc_case_impvel *impvel; /* case_power.h */

@@ -70,6 +70,9 @@ typedef struct rc_case_mat {
     double rho;        /* Init. dens. [kg/m^3] */
     rc_loc loc;
     rc_loc rho_loc;    /* the line holding the density */
+    int has_e;         /* 1: Young's modulus read (LAW1/ELAST, LAW2/PLAS_JOHNS: line 2, columns 1-20) */
+    double e;          /* Young's modulus [Pa] (the stiffness of an /INTER/TYPE7 with Istf 0) */
+    rc_loc e_loc;      /* the line holding E */
 } rc_case_mat;
 
 /* /SKEW/FIX/skew_ID: origin and the axes (unit, orthonormal, right-handed):

@@ -23,6 +23,7 @@
 #include "base/progress.h"
 #include "model/power.h"
 #include "model/rwall.h"
+#include "model/type7.h"
 #include "model/sensor.h"
 
 #define ALLOC(ptr, n)                                                               \
@@ -533,6 +534,18 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
                                      m->inter_tstop[i], err);
     if (sst) return sst;
     m->inter_visc[i] = t6->visc;
+    m->inter_oneway[i] = t6->oneway && m->inter_pair[i] == RC_PAIR_SEG_SEG && s1 == s1_in;
+    if (t6->vis_crit > 0) {
+        /* TYPE7's VISs: a fraction of the critical damping 2 sqrt(k m*) of
+         * the linear law's slope k and the two bodies' reduced mass (a
+         * fixed body is infinitely heavy) */
+        const int bb[2] = {m->inter_ba[i], m->inter_bb[i]};
+        double inv = 0.0;
+        for (int k = 0; k < 2; k++)
+            if (bb[k] >= 0 && !m->body_fixed[bb[k]]) inv += 1.0 / m->body_mass[bb[k]];
+        const double kl = t6->fscaleld / t6->ascalex;
+        m->inter_visc[i] = inv > 0 ? t6->vis_crit * 2.0 * sqrt(kl / inv) : 0.0;
+    }
     m->inter_etarget[i] = t6->e_target;
     m->inter_vimp[i] = t6->v_imp;
     if (t6->e_target > 0) {
@@ -730,8 +743,14 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     /* first the bodies held until their sensor's time (model/sensor.c) */
     rc_sensor_case sx;
     rc_rwall_case rx;
+    rc_type7_case tx; /* then the TYPE7 cards' point surfaces (model/type7.c) */
     if ((st = rc_sensor_begin(c, &sx, err))) return st;
-    if ((st = rc_rwall_begin(&sx.c, &rx, err))) {
+    if ((st = rc_type7_begin(&sx.c, &tx, err))) {
+        rc_sensor_end(&sx);
+        return st;
+    }
+    if ((st = rc_rwall_begin(&tx.c, &rx, err))) {
+        rc_type7_end(&tx);
         rc_sensor_end(&sx);
         return st;
     }
@@ -739,6 +758,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     rc_model *m = calloc(1, sizeof *m);
     if (!m) {
         rc_rwall_end(&rx);
+        rc_type7_end(&tx);
         rc_sensor_end(&sx);
         RC_RAISE(err, RC_ENOMEM, "out of memory");
     }
@@ -901,6 +921,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     if ((st = rc_rwall_points(&rx, m, err))) goto fail; /* a plane wall's nodes of bodies without surfaces */
     if ((st = rc_seg_meshes(m, err))) goto fail; /* model/segsurf.c */
     if ((st = rc_rwall_contacts(&rx, m, err))) goto fail; /* the walls' contacts, TYPE6 laws */
+    if ((st = rc_type7_contacts(&tx, &rx.c, m, err))) goto fail; /* the TYPE7 contacts, TYPE6 laws */
     /* interfaces */
     m->ninter = c->ntype6 + c->npower; /* TYPE6, then /INTER/POWER */
     ALLOC(m->inter_id, m->ninter);
@@ -938,6 +959,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->inter_npt, m->ninter);
     ALLOC(m->inter_pst, m->ninter);
     ALLOC(m->inter_orient, 2 * m->ninter);
+    ALLOC(m->inter_oneway, m->ninter);
     ALLOC(m->inter_pbase, m->ninter);
     ALLOC(m->inter_ptslot, m->ninter);
     ALLOC(m->inter_name, m->ninter);
@@ -968,11 +990,13 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     for (int k = 0; k < 3; k++) m->ground_y0[k] = 0.0;
     own_locations(c, m);
     rc_rwall_end(&rx);
+    rc_type7_end(&tx);
     rc_sensor_end(&sx);
     *out = m;
     return RC_OK;
 fail:
     rc_rwall_end(&rx);
+    rc_type7_end(&tx);
     rc_sensor_end(&sx);
     rc_model_free(m);
     return st;
@@ -1008,7 +1032,7 @@ void rc_model_free(rc_model *m)
                       m->inter_law, m->inter_pw, m->inter_pscale, m->inter_fscale, m->inter_kscale,
                       m->inter_vscale, m->inter_mred, m->inter_mrest, m->inter_pweight, m->inter_pimpact, m->inter_sband, m->inter_perelax, m->inter_hband, m->ewt_rel, m->body_loc, m->inter_loc,
                       m->surf_nadr, m->surf_node, m->surf_sadr, m->surf_seg, m->inter_npt, m->inter_pst, m->inter_pbase,
-                      m->inter_ptslot, m->surf_seg_turned, m->inter_orient, m->inter_fast, m->start_note, m->state_pt};
+                      m->inter_ptslot, m->surf_seg_turned, m->inter_orient, m->inter_oneway, m->inter_fast, m->start_note, m->state_pt};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     free(m);
 }

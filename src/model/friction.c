@@ -292,6 +292,15 @@ static rc_status apply_card(const rc_case *c, rc_model *m, int i, const rc_case_
 
 rc_status rc_friction_compile(const rc_case *c, rc_model *m, rc_error *err)
 {
+    /* an /INTER/TYPE7's fric_ID names its /FRICTION card (model/type7.c) */
+    for (int i = 0; i < c->ntype6; i++) {
+        if (c->type6[i].fric_id <= 0) continue;
+        int found = 0;
+        for (int f = 0; f < c->nfriction; f++) found |= c->friction[f].id == c->type6[i].fric_id;
+        if (!found)
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /INTER/TYPE7/%d, field fric_ID: expected the id of a /FRICTION, got %d (no such card)",
+                     RC_LOC(c->type6[i].line_loc[2]), c->type6[i].id, c->type6[i].fric_id);
+    }
     if (c->nfriction == 0) return RC_OK;
     rc_status st = check_refs(c, err);
     if (st) return st;
@@ -302,9 +311,12 @@ rc_status rc_friction_compile(const rc_case *c, rc_model *m, rc_error *err)
         const int pa = spart[m->inter_sa[i]], pb = spart[m->inter_sb[i]];
         const rc_case_friction *card = NULL;
         const rc_case_fricpair *group = NULL;
+        const int fid = i < c->ntype6 ? c->type6[i].fric_id : 0;
         for (int f = 0; f < c->nfriction; f++) {
             const rc_case_friction *cf = &c->friction[f];
-            if (cf->npair > 0 && !(card_names(c, cf, pa) && card_names(c, cf, pb))) continue;
+            /* a TYPE7's fric_ID: that card, its group of the two parts or its defaults */
+            if (fid > 0 && cf->id != fid) continue;
+            if (fid <= 0 && cf->npair > 0 && !(card_names(c, cf, pa) && card_names(c, cf, pb))) continue;
             card = cf;
             group = NULL;
             for (int k = 0; k < cf->npair; k++)

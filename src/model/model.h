@@ -279,6 +279,9 @@ struct rc_model {
     int *inter_orient;   /* [2*ninter] segment normals of surfaces a, b: TYPE6 IRS/IRm of
                             that surface: 0 as built (solid faces out), 1 reversed,
                             2 never reversed (solid faces as their element numbers them) */
+    unsigned char *inter_oneway; /* [ninter] 1: a segments-segments pair whose contact points are the
+                            nodes of a against b's segments only (an /INTER/TYPE7, model/type7.c);
+                            0: node to segment both ways */
     /* friction per contact point (a segment surface's nodes against a plane
      * or a box, docs/theory.md 2.7): point j of interface i has its own
      * states (inter_pst[i] of them, global frame [N]: F_t,j, or the filtered

@@ -28,6 +28,7 @@
 #include "base/error.h"
 #include "model/rwall.h"
 #include "model/segsurf.h"
+#include "model/type7.h"
 
 static const char *const rc_rwall_type[] = {"", "PLANE", "CYL", "SPHER", "PARAL"};
 
@@ -311,8 +312,8 @@ rc_status rc_rwall_points(rc_rwall_case *x, rc_model *m, rc_error *err)
     unsigned char *bare = calloc((size_t)c->nrbody + 1, 1);
     if (!bare) RC_RAISE(err, RC_ENOMEM, "out of memory");
     for (int b = 0; b < c->nrbody; b++) bare[b] = 1;
-    for (int s = 0; s < x->nuser; s++)
-        if (m->surf_body[s] >= 0) bare[m->surf_body[s]] = 0;
+    for (int s = 0; s < x->nuser; s++) /* a TYPE7's points are no surface of the body's own */
+        if (m->surf_body[s] >= 0 && !rc_type7_is_points(c->surf[s].id)) bare[m->surf_body[s]] = 0;
     for (int w = 0; w < c->nrwall; w++)
         for (int b = 0; b < c->nrbody; b++)
             n += c->rwall[w].kind == RC_RWALL_PLANE && bare[b] && x->acts[(size_t)w * (size_t)c->nrbody + (size_t)b];
@@ -387,7 +388,9 @@ rc_status rc_rwall_contacts(rc_rwall_case *x, const rc_model *m, rc_error *err)
     int n = x->npts;
     for (int w = 0; w < c->nrwall; w++)
         for (int s = 0; s < nuser; s++)
-            if (m->surf_body[s] >= 0 && x->acts[(size_t)w * (size_t)c->nrbody + (size_t)m->surf_body[s]]) n++;
+            if (m->surf_body[s] >= 0 && !rc_type7_is_points(c->surf[s].id) &&
+                x->acts[(size_t)w * (size_t)c->nrbody + (size_t)m->surf_body[s]])
+                n++;
     x->type6 = calloc((size_t)(c->ntype6 + n) + 1, sizeof *x->type6);
     x->name = calloc((size_t)n + 1, sizeof *x->name);
     if (!x->type6 || !x->name) RC_RAISE(err, RC_ENOMEM, "out of memory");
@@ -401,6 +404,7 @@ rc_status rc_rwall_contacts(rc_rwall_case *x, const rc_model *m, rc_error *err)
             int ns = 0;
             for (int s = 0; s < c->nsurf; s++) {
                 if (s >= nuser && s < p0) continue; /* the walls */
+                if (rc_type7_is_points(c->surf[s].id)) continue; /* a TYPE7's points (model/type7.c) */
                 if (m->surf_body[s] != b || (s >= p0 && x->pts_wall[s - p0] != w)) continue;
                 const rc_case_surf *cs = &c->surf[s];
                 if (rw->kind == RC_RWALL_CYL && cs->kind != RC_CASE_SURF_ELLIPS)

@@ -620,7 +620,8 @@ int rc_seg_points(const rc_model *m, int i)
 {
     const int sa = m->inter_sa[i], sb = m->inter_sb[i];
     int n = m->surf_nadr[sa + 1] - m->surf_nadr[sa];
-    if (m->inter_pair[i] == RC_PAIR_SEG_SEG) n += m->surf_nadr[sb + 1] - m->surf_nadr[sb];
+    if (m->inter_pair[i] == RC_PAIR_SEG_SEG && !(m->inter_oneway && m->inter_oneway[i]))
+        n += m->surf_nadr[sb + 1] - m->surf_nadr[sb]; /* one way (TYPE7): the nodes of a only */
     if (rc_box_is_box_pair(m, i)) n += RC_BOX_EDGE_PAIRS;
     return n;
 }

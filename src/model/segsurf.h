@@ -51,7 +51,8 @@ typedef struct rc_segmesh {
 static inline int rc_seg_hint_len(const rc_model *m) { return (m->surf_nadr[m->nsurf] + 3) / 4 * 4; }
 
 /* Contact points of interface i whose points are nodes (rc_pair_nodes): the
- * nodes of surface a, then, segments-segments, those of surface b, then,
+ * nodes of surface a, then, segments-segments, those of surface b (not for
+ * a one-way pair, m->inter_oneway: an /INTER/TYPE7), then,
  * box against box, the RC_BOX_EDGE_PAIRS pairs of their edges (edge e / 12
  * of a against edge e % 12 of b: rc_box_is_box_pair). */
 int rc_seg_points(const rc_model *m, int i);

@@ -219,7 +219,7 @@ T('t6_visc_nan', T6, 'field Visc', at(T6, 7, 1, 20, 'NaN'))
 T('t6_missing_line', T6, 'expected 6 data lines', delete(T6, 7))
 T('t6_same_body', T6, 'surf_ID1/surf_ID2', at(T6, 2, 11, 20, '1'))
 T('t6_unsupported_pair', T6, 'surf_ID1/surf_ID2', at(T6, 2, 1, 10, '2'))  # plane against plane
-T('inter_type7', '/INTER/TYPE7/5', 'not supported yet', before_end(['/INTER/TYPE7/5', 'type 7', '         1']))
+T('inter_type11', '/INTER/TYPE11/5', 'not supported yet', before_end(['/INTER/TYPE11/5', 'type 11', '         1']))
 T('inter_dup_id', '/INTER/POWER/1', 'field inter_ID', rename(PW, '/INTER/POWER/1'))
 # ---- /INTER/POWER
 T('pw_surf_missing', PW, 'field surf_ID1', at(PW, 2, 1, 10, '9'))
@@ -495,6 +495,37 @@ TL('skew_mov_aligned', '/SKEW/MOV/9', 'field node_ID1 node_ID2 node_ID3',
 TL('grpart_grpart_cycle', '/GRPART/GRPART/9', 'form a cycle',
    before_end(['/GRPART/GRPART/8', 'a', '         9', '/GRPART/GRPART/9', 'b', '         8'], expect=5))
 TL('impvel_tstart_rotation', '/IMPVEL/1', 'field Tstart', at('/IMPVEL/1', 3, 41, 60, '0.5'))
+
+
+def T7(l1=None, l2='', l3='', l4=None, l5='', l6=''):
+    """/INTER/TYPE7/97 (the nodes of /GRNOD/NODE/1 against the floor
+    /SURF/PLANE/2, Istf 1, Stfac 1e5 N/m) with the lines given."""
+    l1 = '         1         2         1' if l1 is None else l1
+    l4 = STOP('1e5') if l4 is None else l4
+    return ['/INTER/TYPE7/97', 'node on the floor', l1, l2, l3, l4, l5, l6]
+
+
+T7H = '/INTER/TYPE7/97'
+TL('type7_istf_default', T7H, 'field Istf', before_end(T7(l1='         1         2         0'), expect=2))
+TL('type7_istf_combined', T7H, 'field Istf', before_end(T7(l1='         1         2         3'), expect=2))
+TL('type7_stmax_below_stmin', T7H, 'field Stmax', before_end(T7(l3=STOP('2e5', '1e5')), expect=4))
+TL('type7_stfac_blank', T7H, 'field Stfac', before_end(T7(l4=STOP('', '0.3')), expect=5))
+TL('type7_igap_variable', T7H, 'field Igap', before_end(T7(l1='         1         2         1         0         1'), expect=2))
+TL('type7_ithe', T7H, 'field Ithe', before_end(T7(l1='         1         2         1         1'), expect=2))
+TL('type7_icurv', T7H, 'field Icurv', before_end(T7(l1=cols('         1         2         1', 81, 90, '1')), expect=2))
+TL('type7_itied', T7H, 'field ITIED', before_end(T7(l2=cols('', 61, 70, '1')), expect=3))
+TL('type7_ibc', T7H, 'field IBC', before_end(T7(l5='       111'), expect=6))
+TL('type7_inacti', T7H, 'field Inacti', before_end(T7(l5=cols('', 21, 30, '1')), expect=6))
+TL('type7_visf', T7H, 'field VISF', before_end(T7(l5=cols('', 51, 70, '0.5')), expect=6))
+TL('type7_ifric', T7H, 'field Ifric', before_end(T7(l6='         1'), expect=7))
+TL('type7_ifiltr', T7H, 'field Ifiltr', before_end(T7(l6='         0         1'), expect=7))
+TL('type7_tstop_before_tstart', T7H, 'field Tstop', before_end(T7(l4=STOP('1e5', '', '', '2', '1')), expect=5))
+TL('type7_group_missing', T7H, 'field grnd_IDs', before_end(T7(l1='        99         2         1'), expect=2))
+TL('type7_main_sphere', T7H, 'field surf_IDm', before_end(T7(l1='         1         1         1'), expect=2))
+TL('type7_friction_missing', T7H, 'field fric_ID', before_end(T7(l6=cols('', 91, 100, '77')), expect=7))
+TL('type7_same_body', T7H, 'field grnd_IDs', before_end(
+    ['/SURF/PLANE/98', 'carried by the sphere', STOP('0', '0', '0'), STOP('0', '0', '1'), '         1'] +
+    T7(l1='         1        98         1'), expect=7))
 
 def write_all():
     for old in glob.glob('[0-9][0-9][0-9]_*'):

@@ -1,0 +1,351 @@
+/*
+ * /INTER/TYPE7 as one-way node-to-surface contacts (docs/theory.md, "TYPE7
+ * contact"; docs/case-format.md, /INTER/TYPE7).
+ *
+ * Radioss's TYPE7 pushes each secondary node out of the main segments with
+ * a penalty spring. ricochet's bodies are rigid: the secondary nodes of one
+ * body move with it, so the nodes of grnd_IDs are split by body and each
+ * body's nodes become a segment surface of points (no segments) on it.
+ * Each such surface meets the main surface through a TYPE6 contact built
+ * here:
+ *   - one way: the nodes against the main surface only (the contact's
+ *     points are the nodes; TYPE6's second set, the main surface's nodes
+ *     against the segments of the first, is dropped: it has none);
+ *   - a linear load curve F = k P, k = Stfac (Istf 1), or (Istf 0, 1000)
+ *     Stfac times the main shells' stiffness E t / 2, the mean over the
+ *     main segments, within Stmin..Stmax (main_stiffness); the gap Gapmin
+ *     (Igap 0), Tstart, Tstop, Inacti, sens_ID as TYPE6's;
+ *   - the damping VISs of the critical damping of k and the two bodies'
+ *     reduced mass, Visc = VISs 2 sqrt(k m*) (set by the compiler);
+ *   - Coulomb friction Fric (TYPE6 Fric, stick stiffness k), or the
+ *     /FRICTION card fric_ID.
+ * Nodes on the main surface's own body are left out (a node never meets
+ * the segments it is attached to, and on one rigid body they cannot move
+ * against them). The contacts are named "/INTER/TYPE7/<id> (nodes of
+ * /RBODY/<id>)" and carry the card's id.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/error.h"
+#include "case/case_mesh.h"
+#include "model/type7.h"
+
+static const char *const rc_t7_kinds[] = {"", "PLANE", "ELLIPS", "CYL", "BOX", "SEG", "PART"};
+
+/* A shell element's nodes as a key: the distinct node ids ascending, 0
+ * after them (a triangle), and the element's index. */
+typedef struct { int n[4]; int e; } t7_key;
+
+static void t7_key_of(const int *nodes, int nn, t7_key *k)
+{
+    int m = 0;
+    for (int j = 0; j < 4; j++) k->n[j] = 0;
+    for (int j = 0; j < nn && j < 4; j++) {
+        int dup = nodes[j] == 0;
+        for (int q = 0; q < m && !dup; q++) dup = k->n[q] == nodes[j];
+        if (!dup) k->n[m++] = nodes[j];
+    }
+    for (int a = 1; a < m; a++) /* insertion sort of at most 4 */
+        for (int b = a; b > 0 && k->n[b - 1] > k->n[b]; b--) {
+            const int tmp = k->n[b];
+            k->n[b] = k->n[b - 1];
+            k->n[b - 1] = tmp;
+        }
+}
+
+static int t7_key_cmp(const void *pa, const void *pb)
+{
+    const t7_key *a = pa, *b = pb;
+    for (int j = 0; j < 4; j++)
+        if (a->n[j] != b->n[j]) return (a->n[j] > b->n[j]) - (a->n[j] < b->n[j]);
+    return 0;
+}
+
+/* Istf 0 (docs/theory.md 3.7): Stfac times the stiffness Radioss gives a
+ * main shell segment, E t / 2 (E the Young's modulus of its part's /MAT,
+ * t its thickness), the mean over the main segments, within Stmin..Stmax.
+ * The main segments must be shells: the shells of a /SURF/PART, or the
+ * shells with the nodes of each /SURF/SEG segment; RC_EINPUT otherwise
+ * (solid faces, B A^2 / (2 V), are not supported yet). */
+static rc_status main_stiffness(const rc_case *c, const rc_case_type7 *t, double *k, rc_error *err)
+{
+    const rc_case_surf *cs = &c->surf[rc_case_find_surf(c, t->surf_id)];
+    const rc_case_mesh *ms = c->mesh;
+    static const char *const kinds[] = {"", "PLANE", "ELLIPS", "CYL", "BOX", "SEG", "PART"};
+    const int ne = ms ? ms->nelem : 0;
+    if (cs->kind != RC_CASE_SURF_SEG && cs->kind != RC_CASE_SURF_PART)
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card /INTER/TYPE7/%d, field Istf: Istf 0 takes the stiffness from the main surface's "
+                           "shell elements; /SURF/%s/%d has none: expected Istf 1 with Stfac the stiffness [N/m]",
+                 RC_LOC(t->line_loc[0]), t->id, kinds[cs->kind], t->surf_id);
+    t7_key *keys = malloc(((size_t)ne + 1) * sizeof *keys);
+    if (!keys) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    rc_status st = RC_OK;
+    int nk = 0, nsh = 0;
+    double sum = 0.0;
+    /* the shells, as keys (a /SURF/SEG's segments are looked up among them) */
+    for (int e = 0; e < ne; e++) {
+        const rc_case_elem *el = &ms->elem[e];
+        if (el->kind != RC_ELEM_SHELL && el->kind != RC_ELEM_SH3N) continue;
+        t7_key_of(el->nodes, el->nn, &keys[nk]);
+        keys[nk++].e = e;
+    }
+    qsort(keys, (size_t)nk, sizeof *keys, t7_key_cmp);
+    const int nseg = cs->kind == RC_CASE_SURF_SEG ? cs->nseg : ne;
+    for (int j = 0; j < nseg && !st; j++) {
+        int e = j;
+        if (cs->kind == RC_CASE_SURF_SEG) {
+            t7_key q;
+            t7_key_of(cs->seg + 4 * j, 4, &q);
+            const t7_key *f = nk ? bsearch(&q, keys, (size_t)nk, sizeof *keys, t7_key_cmp) : NULL;
+            if (!f) {
+                st = RC_SET(err, RC_EINPUT,
+                            RC_LOCFMT "card /INTER/TYPE7/%d, field Istf: Istf 0 takes the stiffness from the main "
+                                      "segments' shell elements; segment %d of /SURF/SEG/%d (%s:%d) is on no /SHELL "
+                                      "or /SH3N (a solid's face, B A^2 / (2 V): not supported yet): expected Istf 1 "
+                                      "with Stfac the stiffness [N/m]",
+                            RC_LOC(t->line_loc[0]), t->id, cs->seg_id[j], t->surf_id, RC_LOC(cs->seg_loc[j]));
+                break;
+            }
+            e = f->e;
+        } else {
+            int in = 0;
+            for (int p = 0; p < cs->npart && !in; p++) in = cs->part[p] == ms->elem[e].part_id;
+            if (!in) continue;
+            if (ms->elem[e].kind != RC_ELEM_SHELL && ms->elem[e].kind != RC_ELEM_SH3N) {
+                st = RC_SET(err, RC_EINPUT,
+                            RC_LOCFMT "card /INTER/TYPE7/%d, field Istf: Istf 0 on the faces of the solid elements "
+                                      "of /SURF/PART/%d (element %d of part %d; B A^2 / (2 V)) is not supported yet: "
+                                      "expected Istf 1 with Stfac the stiffness [N/m], or a main surface of shells",
+                            RC_LOC(t->line_loc[0]), t->id, t->surf_id, ms->elem[e].id, ms->elem[e].part_id);
+                break;
+            }
+        }
+        /* the shell's E and thickness */
+        const rc_case_elem *el = &ms->elem[e];
+        const int p = rc_case_find_part(c, el->part_id);
+        const int mi = p >= 0 ? rc_case_find_mat(c, c->part[p].mat_id) : -1;
+        const int pi = p >= 0 ? rc_case_find_prop(c, c->part[p].prop_id) : -1;
+        if (mi < 0 || !ms->mat[mi].has_e) {
+            st = RC_SET(err, RC_EINPUT,
+                        RC_LOCFMT "card /INTER/TYPE7/%d, field Istf: Istf 0 takes the Young's modulus of the main "
+                                  "shells' material; /PART/%d has %s: expected a /MAT/LAW1 (ELAST) or /MAT/LAW2 "
+                                  "(PLAS_JOHNS) with E > 0 (line 2), or Istf 1 with Stfac the stiffness [N/m]",
+                        RC_LOC(t->line_loc[0]), t->id, el->part_id,
+                        mi < 0 ? "no /MAT" : "a /MAT whose Young's modulus ricochet does not read");
+            break;
+        }
+        const double th = el->thick > 0 ? el->thick : pi >= 0 && ms->prop[pi].kind == RC_PROP_SHELL ? ms->prop[pi].thick : 0.0;
+        if (!(th > 0)) {
+            st = RC_SET(err, RC_EINPUT,
+                        RC_LOCFMT "card /INTER/TYPE7/%d, field Istf: Istf 0 needs the main shells' thickness; element "
+                                  "%d of /PART/%d has none (element Thick or /PROP/SHELL Thick): expected a thickness "
+                                  "> 0, or Istf 1 with Stfac the stiffness [N/m]",
+                        RC_LOC(t->line_loc[0]), t->id, el->id, el->part_id);
+            break;
+        }
+        sum += 0.5 * t->stfac * ms->mat[mi].e * th;
+        nsh++;
+    }
+    free(keys);
+    if (st) return st;
+    if (nsh == 0)
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card /INTER/TYPE7/%d, field Istf: Istf 0 takes the stiffness from the main surface's "
+                           "shell elements; /SURF/%s/%d has none: expected Istf 1 with Stfac the stiffness [N/m]",
+                 RC_LOC(t->line_loc[0]), t->id, kinds[cs->kind], t->surf_id);
+    *k = sum / nsh;
+    if (t->stmin > 0) *k = fmax(*k, t->stmin);
+    if (t->stmax > 0) *k = fmin(*k, t->stmax);
+    return RC_OK;
+}
+
+rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
+{
+    memset(x, 0, sizeof *x);
+    x->c = *c;
+    if (c->ntype7 == 0) return RC_OK;
+    rc_status st = RC_OK;
+    /* the secondary nodes of each card, by body: count the point surfaces */
+    int maxn = 0;
+    for (int i = 0; i < c->ntype7; i++) {
+        const rc_case_type7 *t = &c->type7[i];
+        const int g = rc_case_find_grnod(c, t->grnod_id);
+        if (g < 0)
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /INTER/TYPE7/%d, field grnd_IDs: expected the id of a /GRNOD, got %d (no such group)",
+                     RC_LOC(t->line_loc[0]), t->id, t->grnod_id);
+        const int s = rc_case_find_surf(c, t->surf_id);
+        if (s < 0)
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /INTER/TYPE7/%d, field surf_IDm: expected the id of a /SURF, got %d (no such surface)",
+                     RC_LOC(t->line_loc[0]), t->id, t->surf_id);
+        const rc_case_surf_kind k = c->surf[s].kind;
+        if (k != RC_CASE_SURF_SEG && k != RC_CASE_SURF_PART && k != RC_CASE_SURF_PLANE && k != RC_CASE_SURF_BOX)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card /INTER/TYPE7/%d, field surf_IDm: the main surface /SURF/%s/%d: not supported yet "
+                               "(nodes against a sphere or a cylinder); expected a segment surface (/SURF/SEG, "
+                               "/SURF/PART), a plane or a box",
+                     RC_LOC(t->line_loc[0]), t->id, rc_t7_kinds[k], t->surf_id);
+        for (int j = 0; j < c->grnod[g].n; j++)
+            if (rc_case_find_node(c, c->grnod[g].nodes[j]) < 0)
+                RC_RAISE(err, RC_EINPUT,
+                         RC_LOCFMT "card /GRNOD/NODE/%d, field node_ID: expected the id of a /NODE, got %d (no such node); "
+                                   "the group is grnd_IDs of /INTER/TYPE7/%d at %s:%d",
+                         RC_LOC(rc_loc_at(c->grnod[g].node_loc, j, c->grnod[g].loc)), t->grnod_id, c->grnod[g].nodes[j],
+                         t->id, RC_LOC(t->line_loc[0]));
+        maxn = c->grnod[g].n > maxn ? c->grnod[g].n : maxn;
+    }
+    /* the stiffness of each card */
+    x->k = calloc((size_t)c->ntype7 + 1, sizeof *x->k);
+    if (!x->k) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    for (int i = 0; i < c->ntype7; i++) {
+        x->k[i] = c->type7[i].stfac;
+        if (c->type7[i].istf == 0 && (st = main_stiffness(c, &c->type7[i], &x->k[i], err))) {
+            rc_type7_end(x);
+            return st;
+        }
+    }
+    const int nb = c->nrbody + 1; /* bucket nrbody: nodes of no body */
+    int *cnt = calloc((size_t)nb, sizeof *cnt);
+    if (!cnt) {
+        rc_type7_end(x);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    int npts = 0;
+    for (int i = 0; i < c->ntype7; i++) {
+        const int g = rc_case_find_grnod(c, c->type7[i].grnod_id);
+        memset(cnt, 0, (size_t)nb * sizeof *cnt);
+        for (int j = 0; j < c->grnod[g].n; j++) {
+            const int b = rc_case_body_of_node(c, c->grnod[g].nodes[j]);
+            if (cnt[b >= 0 ? b : c->nrbody]++ == 0) npts++;
+        }
+    }
+    x->nuser = c->nsurf;
+    x->surf = calloc((size_t)(c->nsurf + npts) + 1, sizeof *x->surf);
+    x->funct = calloc((size_t)c->nfunct + 1, sizeof *x->funct);
+    x->name = calloc((size_t)npts + 1, sizeof *x->name);
+    x->pts_t7 = calloc((size_t)npts + 1, sizeof *x->pts_t7);
+    x->pts_node = calloc((size_t)npts + 1, sizeof *x->pts_node);
+    if (!x->surf || !x->funct || !x->name || !x->pts_t7 || !x->pts_node) {
+        free(cnt);
+        rc_type7_end(x);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    if (c->nsurf) memcpy(x->surf, c->surf, (size_t)c->nsurf * sizeof *x->surf);
+    if (c->nfunct) memcpy(x->funct, c->funct, (size_t)c->nfunct * sizeof *x->funct);
+    /* one point surface per card and body, its nodes in the group's order */
+    for (int i = 0; i < c->ntype7 && !st; i++) {
+        const rc_case_type7 *t = &c->type7[i];
+        const rc_case_grnod *gr = &c->grnod[rc_case_find_grnod(c, t->grnod_id)];
+        for (int b = -1; b < c->nrbody && !st; b++) {
+            int np = 0;
+            int *ids = malloc(((size_t)gr->n + 1) * sizeof *ids);
+            if (!ids) {
+                st = RC_SET(err, RC_ENOMEM, "out of memory");
+                break;
+            }
+            for (int j = 0; j < gr->n; j++) {
+                int dup = 0;
+                if (rc_case_body_of_node(c, gr->nodes[j]) != b) continue;
+                for (int q = 0; q < np && !dup; q++) dup = ids[q] == gr->nodes[j];
+                if (!dup) ids[np++] = gr->nodes[j];
+            }
+            if (np == 0) {
+                free(ids);
+                continue;
+            }
+            const int k = x->npts++;
+            x->pts_node[k] = ids;
+            x->pts_t7[k] = i;
+            if (b >= 0)
+                snprintf(x->name[k], sizeof x->name[k], "/INTER/TYPE7/%d (nodes of /RBODY/%d)", t->id, c->rbody[b].id);
+            else
+                snprintf(x->name[k], sizeof x->name[k], "/INTER/TYPE7/%d (nodes of no body)", t->id);
+            x->surf[x->nuser + k] = (rc_case_surf){.id = RC_TYPE7_SURF_ID0 - k, .kind = RC_CASE_SURF_SEG, .loc = t->line_loc[0],
+                                                   .rbody_loc = t->line_loc[0], .npoint = np, .point = ids};
+        }
+    }
+    free(cnt);
+    (void)maxn;
+    if (st) {
+        rc_type7_end(x);
+        return st;
+    }
+    /* the load curve y = x, scaled per contact by the scene's size */
+    x->fx[1] = x->fy[1] = 1.0;
+    x->funct[c->nfunct] = (rc_case_funct){.id = RC_TYPE7_FUNCT_ID, .npts = 2, .x = x->fx, .y = x->fy, .loc = c->end};
+    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    for (int n = 0; n < c->nnode; n++)
+        for (int k = 0; k < 3; k++) {
+            lo[k] = n == 0 || c->node[n].x[k] < lo[k] ? c->node[n].x[k] : lo[k];
+            hi[k] = n == 0 || c->node[n].x[k] > hi[k] ? c->node[n].x[k] : hi[k];
+        }
+    x->len = fmax(fmax(hi[0] - lo[0], hi[1] - lo[1]), hi[2] - lo[2]);
+    if (!(x->len > 0)) x->len = 1.0;
+    x->c.surf = x->surf;
+    x->c.nsurf = x->nuser + x->npts;
+    x->c.funct = x->funct;
+    x->c.nfunct = c->nfunct + 1;
+    /* the copy's own index (case/lookup.c) */
+    x->c.index = NULL;
+    st = rc_case_index_build(&x->c, err);
+    if (st) rc_type7_end(x);
+    return st;
+}
+
+rc_status rc_type7_contacts(rc_type7_case *x, rc_case *c, const rc_model *m, rc_error *err)
+{
+    if (x->npts == 0) return RC_OK;
+    x->type6 = calloc((size_t)(c->ntype6 + x->npts) + 1, sizeof *x->type6);
+    if (!x->type6) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    if (c->ntype6) memcpy(x->type6, c->type6, (size_t)c->ntype6 * sizeof *x->type6);
+    int n = c->ntype6;
+    for (int i = 0; i < c->ntype7; i++) {
+        const rc_case_type7 *t = &c->type7[i];
+        const int sm = rc_case_find_surf(c, t->surf_id), bm = m->surf_body[sm];
+        int made = 0;
+        for (int k = 0; k < x->npts; k++) {
+            if (x->pts_t7[k] != i) continue;
+            const int s = x->nuser + k;
+            if (m->surf_body[s] == bm) continue; /* the main surface's own body */
+            rc_case_type6 *t6 = &x->type6[n++];
+            *t6 = (rc_case_type6){.id = t->id, .surf1 = c->surf[s].id, .surf2 = t->surf_id, .fric = t->fric,
+                                  .gap = t->gapmin, .tstart = t->tstart, .tstop = t->tstop, .inacti = t->inacti,
+                                  .ascalef = 1.0, .ascalev = 1.0, .fct_ld = RC_TYPE7_FUNCT_ID, .ascalex = x->len,
+                                  .fscaleld = x->k[i] * x->len, .fscaleul = 1.0, .fscalev = 1.0, .loc = t->loc,
+                                  .sensor_id = t->sensor_id, .name = x->name[k], .oneway = 1, .vis_crit = t->viss,
+                                  .fric_id = t->fric_id};
+            /* the TYPE6 lines of the messages: surfaces and sensor; Fric Gap
+             * Tstart Tstop; friction; the law (Stfac) twice; the damping */
+            t6->line_loc[0] = t->line_loc[0];
+            t6->line_loc[1] = t6->line_loc[3] = t6->line_loc[4] = t->line_loc[3];
+            t6->line_loc[2] = t->line_loc[5];
+            t6->line_loc[5] = t->line_loc[4];
+            made++;
+        }
+        if (made == 0)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card /INTER/TYPE7/%d, field grnd_IDs: every node of /GRNOD %d belongs to the body of "
+                               "the main surface %d: expected secondary nodes of another body (or of none, fixed)",
+                     RC_LOC(t->line_loc[0]), t->id, t->grnod_id, t->surf_id);
+    }
+    c->type6 = x->type6;
+    c->ntype6 = n;
+    return RC_OK;
+}
+
+void rc_type7_end(rc_type7_case *x)
+{
+    if (x->surf) rc_case_index_free(x->c.index); /* the copy's own (rc_type7_begin) */
+    free(x->surf);
+    free(x->funct);
+    free(x->type6);
+    free(x->name);
+    for (int k = 0; x->pts_node && k < x->npts; k++) free(x->pts_node[k]);
+    free(x->pts_node);
+    free(x->pts_t7);
+    free(x->k);
+    memset(x, 0, sizeof *x);
+}

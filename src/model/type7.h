@@ -1,0 +1,54 @@
+/*
+ * /INTER/TYPE7 compiled as one-way node-to-surface contacts (model/type7.c,
+ * docs/theory.md "TYPE7 contact"). The secondary nodes (grnd_IDs) of each
+ * body become a segment surface of points on that body; each such surface
+ * gets a TYPE6 contact with the main surface (surf_IDm), one way (its nodes
+ * against the main surface's segments only), of a linear law F = k P
+ * (k = Stfac, Istf 1; Stfac E t / 2 of the main shells, Istf 0), damping VISs of the critical one and Coulomb
+ * friction Fric (or the /FRICTION card fric_ID). The compiler works on a
+ * copy of the case with these surfaces, contacts and their load curve
+ * appended; the deck's own arrays are untouched.
+ */
+#ifndef RC_MODEL_TYPE7_H
+#define RC_MODEL_TYPE7_H
+
+#include "case/case.h"
+#include "model/model.h"
+
+/* The ids of the point surfaces made here: RC_TYPE7_SURF_ID0 - k, below
+ * every id a deck or a wall can have (other stages skip them by id). */
+#define RC_TYPE7_SURF_ID0 (-1000000000)
+/* The id of the unit load curve y = x of the contacts. */
+#define RC_TYPE7_FUNCT_ID (-2)
+
+typedef struct rc_type7_case {
+    rc_case c;               /* the case with the point surfaces, contacts and load curve */
+    rc_case_surf *surf;      /* [nsurf + npts] owned */
+    rc_case_funct *funct;    /* [nfunct + 1] owned */
+    rc_case_type6 *type6;    /* [ntype6 + contacts] owned (rc_type7_contacts) */
+    char (*name)[128];       /* [npts] the contacts' names */
+    int npts;                /* point surfaces: indices nuser .. nuser + npts - 1 */
+    int nuser;               /* the surfaces before them */
+    int *pts_t7;             /* [npts] the TYPE7 card (index) of each */
+    int **pts_node;          /* [npts] its node ids (owned) */
+    double len;              /* abscissa scale of the load curve [m]: the scene's size */
+    double *k;               /* [ntype7] each card's stiffness [N/m] (Istf 1: Stfac; 0: main_stiffness) */
+    double fx[2], fy[2];     /* the load curve: the line y = x through (0, 0), (1, 1) */
+} rc_type7_case;
+
+/* The copy of c with one point surface per TYPE7 card and body of its
+ * secondary nodes, and the unit load curve; x->c is c itself when c has no
+ * TYPE7. RC_EINPUT for a group or surface that does not exist, a main
+ * surface that is not a segment surface, a plane or a box, and (Istf 0)
+ * main segments that are not shells with a Young's modulus and a
+ * thickness. */
+rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err);
+/* The contacts, appended to c->type6 (c: the case being compiled, the
+ * copy of x->c or x->c itself) once the surfaces are compiled: one per
+ * point surface whose body is not the main surface's. */
+rc_status rc_type7_contacts(rc_type7_case *x, rc_case *c, const rc_model *m, rc_error *err);
+/* 1 when surface id sid is a TYPE7 point surface. */
+static inline int rc_type7_is_points(int sid) { return sid <= RC_TYPE7_SURF_ID0; }
+void rc_type7_end(rc_type7_case *x);
+
+#endif

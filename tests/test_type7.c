@@ -1,0 +1,253 @@
+/*
+ * /INTER/TYPE7 (cards_interfaces.c, model/type7.c): the card read in
+ * Radioss's layout, and the contacts the compiler makes of it: one TYPE6
+ * contact per body of the secondary nodes (nodes on the main surface's body
+ * left out, nodes of no body fixed), one way against a segment surface
+ * (the nodes of the group only, while a TYPE6 between two segment surfaces
+ * keeps both ways), the linear law k = Stfac, Gapmin, Fric with the stick
+ * stiffness k, and VISs of the critical damping 2 sqrt(k m*); units (Stfac
+ * a stiffness with Istf 1, a factor with Istf 0) and the Istf 0 errors.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "base/error.h"
+#include "case/case.h"
+#include "harness.h"
+#include "model/model.h"
+#include "model/segsurf.h"
+#include "testutil.h"
+
+/* An upper box (/RBODY/1, 2 kg, corners 11-18, faces /SURF/SEG/31) above a
+ * lower box (/RBODY/2, 7 kg, corners 21-28, faces /SURF/SEG/30); node 9 of
+ * no body. /INTER/TYPE6/6: the two face surfaces; /INTER/TYPE7/7: the upper
+ * corners against the lower faces (Stfac 3.7e4 N/m, Fric 0.23, Gapmin
+ * 1.1 mm); /INTER/TYPE7/8: the upper corners, node 9 and the lower box's
+ * nodes 21 and 22 against the lower faces. */
+static const char t7_deck_a[] =
+    "#RADIOSS STARTER\n"
+    "/BEGIN\n"
+    "type7 test\n"
+    "      2022         0\n"
+    "                  kg                   m                   s\n"
+    "                  kg                   m                   s\n"
+    "/NODE\n"
+    "         1                   0                   0              0.1037\n"
+    "         2               0.013                   0                -0.2\n"
+    "        11                -0.1                -0.1              0.0037\n"
+    "        12                 0.1                -0.1              0.0037\n"
+    "        13                 0.1                 0.1              0.0037\n"
+    "        14                -0.1                 0.1              0.0037\n"
+    "        15                -0.1                -0.1              0.2037\n"
+    "        16                 0.1                -0.1              0.2037\n"
+    "        17                 0.1                 0.1              0.2037\n"
+    "        18                -0.1                 0.1              0.2037\n"
+    "        21              -0.187                -0.2                -0.4\n"
+    "        22               0.213                -0.2                -0.4\n"
+    "        23               0.213                 0.2                -0.4\n"
+    "        24              -0.187                 0.2                -0.4\n"
+    "        25              -0.187                -0.2                   0\n"
+    "        26               0.213                -0.2                   0\n"
+    "        27               0.213                 0.2                   0\n"
+    "        28              -0.187                 0.2                   0\n"
+    "         9                 0.5                 0.5                 0.3\n"
+    "/RBODY/1\n"
+    "upper\n"
+    "         1                                                 2         2\n"
+    "              0.0133              0.0133              0.0133\n"
+    "                   0                   0                   0\n"
+    "/RBODY/2\n"
+    "lower\n"
+    "         2                                                 7         3\n"
+    "                0.19                0.19                0.19\n"
+    "                   0                   0                   0\n"
+    "/GRNOD/NODE/2\n"
+    "group\n"
+    "        11        12        13        14        15        16        17        18\n"
+    "/GRNOD/NODE/3\n"
+    "group\n"
+    "        21        22        23        24        25        26        27        28\n"
+    "/GRNOD/NODE/4\n"
+    "group\n"
+    "        11        12        13        14        15        16        17        18         9        21\n"
+    "        22\n"
+    "/SURF/SEG/30\n"
+    "lower faces\n"
+    "         1        21        24        23        22\n"
+    "         2        25        26        27        28\n"
+    "         3        21        22        26        25\n"
+    "         4        22        23        27        26\n"
+    "         5        23        24        28        27\n"
+    "         6        24        21        25        28\n"
+    "/SURF/SEG/31\n"
+    "upper faces\n"
+    "         1        11        14        13        12\n"
+    "         2        15        16        17        18\n"
+    "         3        11        12        16        15\n"
+    "         4        12        13        17        16\n"
+    "         5        13        14        18        17\n"
+    "         6        14        11        15        18\n"
+    "/FUNCT/5\n"
+    "curve\n"
+    "                   0                   0\n"
+    "                   1              100000\n";
+static const char t7_deck_b[] =
+    "/INTER/TYPE6/6\n"
+    "contact\n"
+    "        31        30\n"
+    "                                                           0\n"
+    "                   0         0         0         0         0\n"
+    "         5         0                                                 0\n"
+    "         0\n"
+    "                             0         0\n"
+    "/INTER/TYPE7/7\n"
+    "box nodes on the floor\n"
+    "         2        30         1         0         0                   0         0         0         0\n"
+    "                   0                   0                   0         0\n"
+    "                   0                   0                   0                   0         0         0\n"
+    "               37000                0.23              0.0011                   0                   0\n"
+    "         0                   0                   0                   0                   0\n"
+    "         0         0                   0         0         0         0                   0         0\n"
+    "/INTER/TYPE7/8\n"
+    "box nodes on the floor\n"
+    "         4        30         1         0         0                   0         0         0         0\n"
+    "                   0                   0                   0         0\n"
+    "                   0                   0                   0                   0         0         0\n"
+    "               37000                   0                   0                   0                   0\n"
+    "         0                   0                   0                   0                   0\n"
+    "         0         0                   0         0         0         0                   0         0\n"
+    "/GRAV/1\n"
+    "gravity\n"
+    "         0         Z         0         0         0                             1               -9.81\n"
+    "/RUN\n"
+    "                 0.1                0.01\n"
+    "/END\n";
+
+/* The whole deck (two literals: C11 guarantees 4095 characters each). */
+static const char *deck_text(void)
+{
+    static char text[sizeof t7_deck_a + sizeof t7_deck_b];
+    snprintf(text, sizeof text, "%s%s", t7_deck_a, t7_deck_b);
+    return text;
+}
+
+static void test_type7_read(void)
+{
+    rc_case *c = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    const rc_status st = rc_case_load(tu_tmp_write("t7read.rad", deck_text()), &c, &e);
+    ENSURE(st == RC_OK);
+    if (st != RC_OK) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    ENSURE(c->ntype7 == 2 && c->ntype6 == 1);
+    const rc_case_type7 *t = &c->type7[0];
+    ENSURE(t->id == 7 && t->grnod_id == 2 && t->surf_id == 30 && t->istf == 1 && t->igap == 0);
+    ENSURE_NEAR(t->stfac, 3.7e4, 0, 0);
+    ENSURE_NEAR(t->fric, 0.23, 0, 0);
+    ENSURE_NEAR(t->gapmin, 0.0011, 0, 0);
+    ENSURE(t->tstart == 0 && t->tstop == 1e30 && t->inacti == 0 && t->sensor_id == 0 && t->fric_id == 0);
+    ENSURE(t->viss == 0.05 && t->visf == 1.0); /* Radioss's defaults of blank or 0 */
+    ENSURE(t->line_loc[0].line == 77 && t->line_loc[3].line == 80 && t->line_loc[5].line == 82);
+    rc_case_free(c);
+}
+
+static void test_type7_model(void)
+{
+    rc_model *m = TU_COMPILE_OK(deck_text(), "t7model.rad");
+    if (!m) return;
+    /* TYPE6, TYPE7/7 (the upper body), TYPE7/8 (node 9, then the upper body;
+     * the lower box's nodes 21, 22 on the main surface's body left out) */
+    ENSURE(m->ninter == 4);
+    if (m->ninter != 4) {
+        rc_model_free(m);
+        return;
+    }
+    ENSURE(m->inter_id[0] == 6 && m->inter_id[1] == 7 && m->inter_id[2] == 8 && m->inter_id[3] == 8);
+    ENSURE(strstr(m->inter_name[1], "/INTER/TYPE7/7 (nodes of /RBODY/1)") != NULL);
+    ENSURE(strstr(m->inter_name[2], "(nodes of no body)") != NULL);
+    /* segments-segments: TYPE6 both ways (8 + 8 nodes), TYPE7 one way (8) */
+    ENSURE(m->inter_pair[0] == RC_PAIR_SEG_SEG && !m->inter_oneway[0] && rc_seg_points(m, 0) == 16);
+    ENSURE(m->inter_pair[1] == RC_PAIR_SEG_SEG && m->inter_oneway[1] && rc_seg_points(m, 1) == 8);
+    ENSURE(rc_seg_points(m, 2) == 1 && m->inter_ba[2] < 0 && rc_seg_points(m, 3) == 8);
+    ENSURE(m->inter_ba[1] == 0 && m->inter_bb[1] == 1);
+    /* the law: F = Stfac P, the gap Gapmin, Fric with the stick stiffness k */
+    ENSURE_NEAR(m->inter_fscaleld[1] / m->inter_ascalex[1], 3.7e4, 1e-15, 0);
+    ENSURE_NEAR(m->inter_gap[1], 0.0011, 0, 0);
+    ENSURE(m->inter_fr[1].kind == RC_FK_TYPE6 && m->inter_fr[3].kind == RC_FK_NONE);
+    ENSURE_NEAR(m->inter_fr[1].fric, 0.23, 0, 0);
+    ENSURE_NEAR(m->inter_fr[1].kt, 3.7e4, 1e-15, 0);
+    /* VISs 0.05 of the critical damping of k and the reduced mass
+     * (2 kg against 7 kg; against the fixed node 9: the body's 7 kg) */
+    ENSURE_NEAR(m->inter_visc[1], 0.05 * 2.0 * sqrt(3.7e4 * 2.0 * 7.0 / 9.0), 1e-14, 0);
+    ENSURE_NEAR(m->inter_visc[2], 0.05 * 2.0 * sqrt(3.7e4 * 7.0), 1e-14, 0);
+    ENSURE(m->inter_visc[0] == 0);
+    rc_model_free(m);
+}
+
+/* The deck with the first occurrence of `from` replaced by `to` (same
+ * length), or NULL. */
+static const char *deck_with(const char *from, const char *to)
+{
+    static char text[sizeof t7_deck_a + sizeof t7_deck_b];
+    snprintf(text, sizeof text, "%s%s", t7_deck_a, t7_deck_b);
+    char *at = strstr(text, from);
+    if (!at || strlen(from) != strlen(to)) return NULL;
+    memcpy(at, to, strlen(to));
+    return text;
+}
+
+/* Units: with Istf 1 Stfac is a stiffness (converted), with Istf 0 a
+ * factor (not converted); Gapmin a length. */
+static void test_type7_units(void)
+{
+    const char *text = deck_with("                  kg                   m                   s\n",
+                                 "                   g                  mm                  ms\n");
+    ENSURE(text != NULL);
+    if (!text) return;
+    char buf[sizeof t7_deck_a + sizeof t7_deck_b];
+    snprintf(buf, sizeof buf, "%s", text);
+    char *l8 = strstr(buf, "         4        30         1");
+    ENSURE(l8 != NULL);
+    if (!l8) return;
+    l8[29] = '0'; /* /INTER/TYPE7/8: Istf 0 */
+    rc_case *c = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    const rc_status st = rc_case_load(tu_tmp_write("t7units.rad", buf), &c, &e);
+    ENSURE(st == RC_OK);
+    if (st != RC_OK) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    /* g mm ms: 1 g/ms^2 = 1e3 N/m */
+    ENSURE_NEAR(c->type7[0].stfac, 3.7e7, 1e-15, 0);
+    ENSURE_NEAR(c->type7[0].gapmin, 1.1e-6, 1e-15, 0);
+    ENSURE(c->type7[1].istf == 0);
+    ENSURE_NEAR(c->type7[1].stfac, 37000, 1e-15, 0);
+    rc_case_free(c);
+}
+
+/* Istf 0 takes E t / 2 of the main shells: a main /SURF/SEG on no shell is
+ * an input error naming the segment (the stiffness itself:
+ * validation/type7_drop, type7.rest.istf0). */
+static void test_type7_istf0_errors(void)
+{
+    const char *text = deck_with("         2        30         1", "         2        30         0");
+    ENSURE(text != NULL);
+    if (!text) return;
+    TU_EXPECT_TEXT_ERROR(text, "t7istf0.rad", "card /INTER/TYPE7/7, field Istf", "segment 1 of /SURF/SEG/30",
+                         "is on no /SHELL or /SH3N", "expected Istf 1");
+}
+
+void suite_type7(void);
+void suite_type7(void)
+{
+    RUN_TEST(test_type7_read);
+    RUN_TEST(test_type7_model);
+    RUN_TEST(test_type7_units);
+    RUN_TEST(test_type7_istf0_errors);
+}

@@ -526,6 +526,38 @@ rc_status rc_export_vtk(const char *results_path, const char *dir, int *nframes,
  * or not finite, or a NULL results_path or dir. */
 rc_status rc_export_vtk_dt(const char *results_path, const char *dir, double dt, int *nframes, rc_error *err);
 
+/* ---- Forward sensitivities (docs/calibration.md "Sensitivities") ------
+ * The derivatives ds/dp of the state vector with respect to np numeric
+ * fields of the deck, by CVODES forward sensitivity analysis between the
+ * events and the jump of the sensitivities at each event (docs/theory.md
+ * "Sensitivities"). A field enters through three compiled models of the
+ * same deck: `m` at the field's value p, m_lo[j] and m_hi[j] at p -+ h
+ * (rc_case_load_set), which must have the same structure (states,
+ * interfaces, roots); p[j] the field's value (the scale of its
+ * sensitivities' absolute tolerances, atol / |p|; NULL: 1); dp[j] = (p + h) - (p - h) in the field's own card
+ * units, so that the derivatives are per card unit of the field. The
+ * right-hand side's df/dp is the central difference of the two models at
+ * the same state and modes, the initial ds/dp that of their initial
+ * states. Only /SOLVER Method 1 (CVODE) without a preload is covered
+ * (RC_EINPUT otherwise).
+ * times[nt]: increasing, > 0; the run ends at the last. y[nt * ny] and
+ * s[(nt * np + j) * ny ...] (time i, parameter j: s + (i * np + j) * ny)
+ * receive the state and its derivatives there (ny = rc_model_state_size).
+ * `info` (may be NULL) counts what was done; `stats` (may be NULL) as
+ * rc_run's. */
+typedef struct rc_sens_info {
+    long jumps;        /* events at which the sensitivities jumped          */
+    long resets;       /* of them, events that also reset states (a history
+                          state set by the event: its reset's own
+                          derivative is not included, J_reset = I)          */
+    long simultaneous; /* of them, events with several roots at one time
+                          (the first root's event time derivative is used) */
+    long restarts;     /* sensitivity restarts (CVodeSensReInit)            */
+} rc_sens_info;
+rc_status rc_sens_run(const rc_model *m, int np, const rc_model *const *m_lo, const rc_model *const *m_hi,
+                      const double *p, const double *dp, int nt, const double *times, double *y, double *s, rc_sens_info *info,
+                      rc_stats *stats, rc_error *err);
+
 #ifdef __cplusplus
 }
 #endif

@@ -49,6 +49,7 @@
 #include "solver/solver.h"
 #include "solver/common.h"
 #include "solver/integrator.h"
+#include "solver/sens.h"
 #include "engine/assembly/assembly.h"
 
 /* A jump in ydot whose effect over one step, relative to the error weight,
@@ -755,4 +756,16 @@ void rc_cvode_versions(FILE *f)
 {
     fprintf(f, "SUNDIALS %s\nKLU %d.%d.%d (%s)\n", SUNDIALS_VERSION, KLU_MAIN_VERSION, KLU_SUB_VERSION,
             KLU_SUBSUB_VERSION, KLU_DATE);
+}
+
+/* ---- for the sensitivity backend (sens.h) ------------------------------ */
+const rc_backend *rc_cvode_backend(void) { return &cvode_backend; }
+size_t rc_cvode_self_size(void) { return sizeof(run_ctx); }
+void *rc_cvode_parts(void *self, int *nr, const int **kidx, double **yfull)
+{
+    run_ctx *c = self;
+    *nr = c->nr;
+    *kidx = c->kidx;
+    *yfull = c->yfull;
+    return c->cv;
 }

@@ -761,9 +761,10 @@ void rc_cvode_versions(FILE *f)
 /* ---- for the sensitivity backend (sens.h) ------------------------------ */
 const rc_backend *rc_cvode_backend(void) { return &cvode_backend; }
 size_t rc_cvode_self_size(void) { return sizeof(run_ctx); }
-void *rc_cvode_parts(void *self, int *nr, const int **kidx, double **yfull)
+void *rc_cvode_parts(void *self, int *nr, const int **kidx, double **yfull, void **sunctx)
 {
     run_ctx *c = self;
+    *sunctx = c->ctx;
     *nr = c->nr;
     *kidx = c->kidx;
     *yfull = c->yfull;

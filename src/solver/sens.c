@@ -249,7 +249,8 @@ static rc_status sb_start(void *self, rc_error *err)
     const rc_model *m = x->m;
     rc_status st = x->ib->start(self, err);
     if (st) return st;
-    x->cv = rc_cvode_parts(self, &x->nr, &x->kidx, &x->yfull);
+    void *sunctx = NULL;
+    x->cv = rc_cvode_parts(self, &x->nr, &x->kidx, &x->yfull, &sunctx);
     /* the initial sensitivities: the perturbed models' initial states */
     for (int j = 0; j < x->np; j++) {
         rc_initial_state(x->mhi[j], x->ya);
@@ -257,11 +258,14 @@ static rc_status sb_start(void *self, rc_error *err)
         double *s = x->s0 + (size_t)j * (size_t)x->ny;
         for (int k = 0; k < x->ny; k++) s[k] = (x->ya[k] - x->yb[k]) / x->dp[j];
     }
-    /* CVODES's vectors: clones of the integrator's state */
-    N_Vector ycur = NULL;
-    SCHECK(CVodeGetCurrentState(x->cv, &ycur), "CVodeGetCurrentState");
-    if (!(x->yS = N_VCloneVectorArray(x->np, ycur)) || !(x->abstolS = N_VCloneVectorArray(x->np, ycur)))
-        return RC_SET(err, RC_ENOMEM, "out of memory for the sensitivities");
+    /* CVODES's vectors, over the states CVODE carries */
+    N_Vector tmpl = N_VNew_Serial(x->nr, (SUNContext)sunctx);
+    if (tmpl) {
+        x->yS = N_VCloneVectorArray(x->np, tmpl);
+        x->abstolS = N_VCloneVectorArray(x->np, tmpl);
+        N_VDestroy(tmpl);
+    }
+    if (!x->yS || !x->abstolS) return RC_SET(err, RC_ENOMEM, "out of memory for the sensitivities");
     double *pbar = malloc((size_t)x->np * sizeof(double) + 1);
     if (!pbar) return RC_SET(err, RC_ENOMEM, "out of memory for the sensitivities");
     for (int j = 0; j < x->np; j++) {

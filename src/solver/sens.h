@@ -17,8 +17,8 @@ const rc_backend *rc_cvode_backend(void);
 size_t rc_cvode_self_size(void);
 /* Of a started run context: the integrator memory (NULL before start), the
  * count nr of the states CVODE carries, their indices kidx[nr] in the
- * whole state, and the driver's whole state (its constant states keep
- * their values). */
-void *rc_cvode_parts(void *self, int *nr, const int **kidx, double **yfull);
+ * whole state, the driver's whole state (its constant states keep their
+ * values) and the SUNContext. */
+void *rc_cvode_parts(void *self, int *nr, const int **kidx, double **yfull, void **sunctx);
 
 #endif

@@ -5,7 +5,8 @@
  * through a TYPE6 impact (close and open events: d/d Visc, d/d the load
  * curve's scale, d/d gravity, whose event time moves), and a block sliding
  * to a stop on Coulomb friction (the stick event: the stopping distance
- * v0^2 / (2 mu g) and its derivatives in mu and v0). Each test prints the
+ * v0^2 / (2 mu g) and its derivatives in mu and v0), and repeated impacts
+ * on a hysteresis law (events that set a history state). Each test prints the
  * worst relative difference it measured beside its tolerance.
  */
 #include <math.h>
@@ -18,6 +19,7 @@
 
 #define DROP "validation/fit_drop/drop.rad"
 #define SLIDE "validation/fit_drop/slide.rad"
+#define BOUNCES "validation/t6_bounces/case.rad"
 #define MAXP 4
 
 /* A model of `deck` with fields `name[k]` at `val[k]` (card units). */
@@ -61,7 +63,18 @@ static double body_dq(const rc_model *m, const double *y, const double *s, int s
 {
     const int ny = rc_model_state_size(m);
     double *a = malloc((size_t)ny * sizeof(double)), *b = malloc((size_t)ny * sizeof(double));
-    const double e = 1e-6;
+    /* a step of 1e-7 of the state's size along s */
+    double smax = 0.0, ymax = 1.0;
+    for (int k = 0; k < ny; k++) {
+        smax = fmax(smax, fabs(s[k]));
+        ymax = fmax(ymax, fabs(y[k]));
+    }
+    if (!(smax > 0)) {
+        free(a);
+        free(b);
+        return 0.0;
+    }
+    const double e = 1e-7 * ymax / smax;
     for (int k = 0; k < ny; k++) {
         a[k] = y[k] + e * s[k];
         b[k] = y[k] - e * s[k];
@@ -221,6 +234,30 @@ static void test_sens_slide_stop_distance(void)
            "%.9g, whole runs %.9g)\n", ds[0], dmu, fd[0], ds[1], dv0, fd[1]);
 }
 
+/* (d) Repeated impacts on an Iform 1 hysteresis law (tabulated load and
+ * unload curves, Stiff 1e7 N/m): the branch changes reset the hysteresis
+ * state, so the jump includes the derivative of the events' state map;
+ * d z/d Stiff after the first and the second impact against whole runs. */
+static void test_sens_hysteresis_impacts_match_fd(void)
+{
+    const char *name[1] = {"/INTER/TYPE6/1:Stiff"};
+    const double val[1] = {1e7}, t[3] = {0.2, 0.3, 0.5};
+    const int slot[1] = {2};
+    double out[3], ds[3], fd[3];
+    rc_sens_info info;
+    ENSURE(sens_of(BOUNCES, 1, name, val, 3, t, 1, slot, out, ds, &info) == 0);
+    ENSURE(fd_of(BOUNCES, 1, name, val, 3, t, 1, slot, 1e-3, fd) == 0);
+    double worst = 0;
+    for (int k = 0; k < 3; k++) {
+        ENSURE_NEAR(ds[k], fd[k], 5e-4, 0);
+        worst = fmax(worst, fabs(ds[k] - fd[k]) / fabs(fd[k]));
+    }
+    ENSURE(info.resets >= 2);
+    printf("  Iform 1 hysteresis, two impacts (%ld events, %ld setting the hysteresis state): d z/d Stiff at 0.2, "
+           "0.3, 0.5 s against whole runs: worst relative difference %.2g (tolerance 5e-4)\n", info.jumps, info.resets,
+           worst);
+}
+
 /* Input errors: no parameter, times not increasing, a parameter that
  * changes the model's structure, a deck on another backend. */
 static void test_sens_errors(void)
@@ -253,5 +290,6 @@ void suite_sens(void)
     RUN_TEST(test_sens_free_flight_closed_form);
     RUN_TEST(test_sens_drop_impact_matches_fd);
     RUN_TEST(test_sens_slide_stop_distance);
+    RUN_TEST(test_sens_hysteresis_impacts_match_fd);
     RUN_TEST(test_sens_errors);
 }

@@ -547,9 +547,9 @@ rc_status rc_export_vtk_dt(const char *results_path, const char *dir, double dt,
  * rc_run's. */
 typedef struct rc_sens_info {
     long jumps;        /* events at which the sensitivities jumped          */
-    long resets;       /* of them, events that also reset states (a history
-                          state set by the event: its reset's own
-                          derivative is not included, J_reset = I)          */
+    long resets;       /* of them, events that also set states (a history
+                          state reset: the map's derivative by central
+                          differences of the event applied along s)        */
     long simultaneous; /* of them, events with several roots at one time
                           (the first root's event time derivative is used) */
     long restarts;     /* sensitivity restarts (CVodeSensReInit)            */

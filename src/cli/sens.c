@@ -323,7 +323,7 @@ int rc_cli_sens(int argc, char **argv)
         }
     }
     printf("ricochet sens: %s: %d parameter%s, %d time%s; %ld events with a jump of the sensitivities (%ld with a "
-           "state reset taken as the identity, %ld with simultaneous roots), %ld restarts, %ld steps\n",
+           "state reset, %ld with simultaneous roots), %ld restarts, %ld steps\n",
            deck, np, np > 1 ? "s" : "", nt, nt > 1 ? "s" : "", info.jumps, info.resets, info.simultaneous,
            info.restarts, stats.steps);
     double *ya = malloc((size_t)ny * sizeof(double)), *yb = malloc((size_t)ny * sizeof(double));

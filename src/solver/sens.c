@@ -27,13 +27,14 @@
  *    initial states (an initial velocity or position is a parameter too).
  *  - Events: at a root of g (the first root found; the old modes' root
  *    function) at time tau, with f- (old modes) and f+ (new modes, after
- *    the events' state changes):
+ *    the events' state changes), and the events' state map y+ = R(y-, p)
+ *    (the identity unless an event sets a history state):
  *        dtau/dp = -(g_y s- + g_p) / (g_t + g_y f-),
- *        s+ = s- + (f- - f+) dtau/dp,
+ *        s+ = R_y s- + R_p + (R_y f- - f+) dtau/dp,
  *    g_y s- and g_t + g_y f- by central differences of the root function
- *    along s- and along the flow, g_p from the two models. The state reset
- *    an event may apply (a history state) is taken as the identity (its own
- *    derivative is not included; counted in rc_sens_info.resets).
+ *    along s- and along the flow, g_p from the two models; R_y v by central
+ *    differences of the engine's event map (rc_events_apply from the old
+ *    modes on scratch run data) along v, R_p from the two models.
  *    Every event restarts the integrator here (the plain run may continue
  *    across a continuous one): the sensitivities jump even where f does
  *    not.
@@ -76,6 +77,7 @@ typedef struct sens_ctx {
     const double *pval; /* [np] the parameters' values (their tolerances' scale), NULL: 1 */
     rc_data **dlo, **dhi; /* [np] run data of the perturbed models (modes copied) */
     rc_data *dold;        /* the modes before a root return's events */
+    rc_data *dscr;        /* scratch run data of the event's state map (reset_map) */
     void *cv;
     int nr;
     const int *kidx;
@@ -228,7 +230,8 @@ static rc_status sb_open(void *self, const rc_model *m, rc_data *d, const rc_run
     x->dlo = calloc((size_t)x->np, sizeof(rc_data *));
     x->dhi = calloc((size_t)x->np, sizeof(rc_data *));
     x->dold = rc_data_new(m);
-    if (!x->s0 || !x->ga || !x->gb || !x->roots || !x->dlo || !x->dhi || !x->dold)
+    x->dscr = rc_data_new(m);
+    if (!x->s0 || !x->ga || !x->gb || !x->roots || !x->dlo || !x->dhi || !x->dold || !x->dscr)
         return RC_SET(err, RC_ENOMEM, "out of memory for the sensitivities");
     for (int j = 0; j < x->np; j++)
         if (!(x->dlo[j] = rc_data_new(x->mlo[j])) || !(x->dhi[j] = rc_data_new(x->mhi[j])))
@@ -323,8 +326,38 @@ static double root_value(sens_ctx *x, const rc_model *mm, rc_data *dd, double t,
     return x->ga[r];
 }
 
+/* The event's state map R (rc_events_apply from the old modes, at the
+ * roots found) of model mm with data dd applied to y_in, into y_out. */
+static void reset_map(sens_ctx *x, const rc_model *mm, rc_data *dd, double t, const double *y_in, double *y_out)
+{
+    rc_event ev[RC_MAX_EV];
+    int jumped = 0;
+    copy_modes(x->m, x->dold, dd);
+    memcpy(y_out, y_in, (size_t)x->ny * sizeof(double));
+    (void)rc_events_apply(mm, dd, t, y_out, x->roots, ev, RC_MAX_EV, &jumped);
+}
+
+/* The derivative of the state map along v at ym, by central differences,
+ * into out (whole vectors); v zero: 0. */
+static void reset_dir(sens_ctx *x, double t, const double *ym, const double *v, double *out)
+{
+    const double e = dir_step(x->m, ym, v);
+    if (!(e > 0)) {
+        memset(out, 0, (size_t)x->ny * sizeof(double));
+        return;
+    }
+    for (int k = 0; k < x->ny; k++) x->sv[k] = ym[k] + e * v[k];
+    reset_map(x, x->m, x->dscr, t, x->sv, x->ya);
+    for (int k = 0; k < x->ny; k++) x->sv[k] = ym[k] - e * v[k];
+    reset_map(x, x->m, x->dscr, t, x->sv, x->yb);
+    for (int k = 0; k < x->ny; k++) out[k] = (x->ya[k] - x->yb[k]) / (2.0 * e);
+}
+
 /* The jump of the sensitivities at the events of a root return at t (y:
- * the state after them): into yS, for the restart that follows. */
+ * the state after them): into yS, for the restart that follows. With the
+ * event's state map y+ = R(y-, p) (the identity when the events only flip
+ * modes):
+ *     s+ = R_y s- + R_p + (R_y f- - f+) dtau/dp. */
 static int sens_jump(sens_ctx *x, double t, const double *yplus)
 {
     const rc_model *m = x->m;
@@ -335,34 +368,34 @@ static int sens_jump(sens_ctx *x, double t, const double *yplus)
             if (r < 0) r = k;
             nfound++;
         }
-    /* the state before the events (x->yminus holds it; keep a copy: the
-     * scratch below is reused) */
-    double *ym = malloc(3 * (size_t)ny * sizeof(double) + 1);
+    /* the state before the events (x->yminus holds it; a copy: the
+     * scratch is reused), f-, f+, R_y f-, R_y s- */
+    double *ym = malloc(5 * (size_t)ny * sizeof(double) + 1);
     double *s = malloc((size_t)x->np * (size_t)ny * sizeof(double) + 1);
     if (!ym || !s) {
         free(ym);
         free(s);
         return -1;
     }
-    double *fminus = ym + ny, *fplus = ym + 2 * (size_t)ny;
+    double *fminus = ym + ny, *fplus = ym + 2 * (size_t)ny, *rf = ym + 3 * (size_t)ny, *rs = ym + 4 * (size_t)ny;
     memcpy(ym, x->yminus, (size_t)ny * sizeof(double));
     int flag = sens_at(x, t, s);
     if (flag < 0) goto out;
     x->info.jumps++;
     if (nfound > 1) x->info.simultaneous++;
-    for (int k = 0; k < ny; k++)
-        if (ym[k] != yplus[k]) {
-            x->info.resets++;
-            break;
-        }
+    int reset = 0;
+    for (int k = 0; k < ny && !reset; k++) reset = ym[k] != yplus[k];
+    x->info.resets += reset;
     /* f- (old modes, before) and f+ (new modes, after) */
     flag = rc_assemble_rhs(m, x->dold, t, ym, fminus);
     if (!flag) flag = rc_assemble_rhs(m, x->d, t, yplus, fplus);
     if (flag) goto out;
+    if (reset) reset_dir(x, t, ym, fminus, rf);
+    else memcpy(rf, fminus, (size_t)ny * sizeof(double));
+    /* dg/dt along the flow: g_t + g_y f- */
+    double gdot = 0.0;
     if (r >= 0) {
-        /* dg/dt along the flow: g_t + g_y f- */
         const double et = dir_step(m, ym, fminus);
-        double gdot = 0.0;
         if (et > 0) {
             for (int k = 0; k < ny; k++) {
                 x->ya[k] = ym[k] + et * fminus[k];
@@ -372,13 +405,12 @@ static int sens_jump(sens_ctx *x, double t, const double *yplus)
             const double g0 = root_value(x, m, x->dold, t - et, x->yb, r);
             gdot = (g1 - g0) / (2.0 * et);
         }
-        /* the perturbed models' data in the old modes */
-        for (int j = 0; j < x->np; j++) {
-            copy_modes(m, x->dold, x->dlo[j]);
-            copy_modes(m, x->dold, x->dhi[j]);
-        }
-        for (int j = 0; j < x->np && gdot != 0.0 && isfinite(gdot); j++) {
-            double *sj = s + (size_t)j * (size_t)ny;
+    }
+    for (int j = 0; j < x->np; j++) {
+        double *sj = s + (size_t)j * (size_t)ny;
+        /* dtau/dp = -(g_y s- + g_p) / (g_t + g_y f-) */
+        double dtau = 0.0;
+        if (r >= 0 && gdot != 0.0 && isfinite(gdot)) {
             const double e = dir_step(m, ym, sj);
             double gys = 0.0;
             if (e > 0) {
@@ -388,11 +420,21 @@ static int sens_jump(sens_ctx *x, double t, const double *yplus)
                 }
                 gys = (root_value(x, m, x->dold, t, x->ya, r) - root_value(x, m, x->dold, t, x->yb, r)) / (2.0 * e);
             }
+            copy_modes(m, x->dold, x->dlo[j]);
+            copy_modes(m, x->dold, x->dhi[j]);
             const double gp = (root_value(x, x->mhi[j], x->dhi[j], t, ym, r) -
                                root_value(x, x->mlo[j], x->dlo[j], t, ym, r)) /
                               x->dp[j];
-            const double dtau = -(gys + gp) / gdot;
-            for (int k = 0; k < ny; k++) sj[k] += (fminus[k] - fplus[k]) * dtau;
+            dtau = -(gys + gp) / gdot;
+        }
+        if (reset) {
+            /* R_y s- and R_p */
+            reset_dir(x, t, ym, sj, rs);
+            reset_map(x, x->mhi[j], x->dhi[j], t, ym, x->fa);
+            reset_map(x, x->mlo[j], x->dlo[j], t, ym, x->fb);
+            for (int k = 0; k < ny; k++) sj[k] = rs[k] + (x->fa[k] - x->fb[k]) / x->dp[j] + (rf[k] - fplus[k]) * dtau;
+        } else {
+            for (int k = 0; k < ny; k++) sj[k] += (rf[k] - fplus[k]) * dtau;
         }
     }
     for (int j = 0; j < x->np; j++) to_reduced(x, s + (size_t)j * (size_t)ny, x->yS[j]);
@@ -457,6 +499,7 @@ static void sb_close(void *self)
     free(x->dlo);
     free(x->dhi);
     rc_data_free(x->dold);
+    rc_data_free(x->dscr);
 }
 
 /* Pass-through operations (the block's start is cvode.c's context). */

@@ -85,6 +85,9 @@ static double body_dq(const rc_model *m, const double *y, const double *s, int s
     return d;
 }
 
+/* The events of the next sens_of (NULL: none). */
+static rc_sens_events *sens_ev;
+
 /* Sensitivities of body 1's `nslot` quantities at the times: ds[(i np + j)
  * nslot + q]; 0 or -1. */
 static int sens_of(const char *deck, int np, const char *const *name, const double *val, int nt, const double *t,
@@ -106,7 +109,7 @@ static int sens_of(const char *deck, int np, const char *const *name, const doub
         double *s = malloc((size_t)nt * (size_t)np * (size_t)ny * sizeof(double));
         rc_error e;
         rc_status st = rc_sens_run(m, np, (const rc_model *const *)lo, (const rc_model *const *)hi, val, dp, nt, t, y, s,
-                                   info, NULL, &e);
+                                   info, sens_ev, NULL, &e);
         if (st) {
             fprintf(stderr, "  rc_sens_run: %s\n", e.msg);
             bad = 1;
@@ -258,6 +261,77 @@ static void test_sens_hysteresis_impacts_match_fd(void)
            worst);
 }
 
+/* The first impact's close time, duration, approach and separation
+ * speeds of a whole run (rc_stats.impact[0]) into q[4]; 0 or -1. */
+static int impact_q(rc_model *m, double *q)
+{
+    rc_stats st;
+    rc_error e;
+    if (!m || rc_run(m, NULL, &st, &e) || st.impacts < 1) return -1;
+    q[0] = st.impact[0].t_close;
+    q[1] = st.impact[0].duration;
+    q[2] = st.impact[0].v_in;
+    q[3] = st.impact[0].v_out;
+    return 0;
+}
+
+/* (e) Impact quantities from the events' derivatives: the drop's close
+ * time, contact duration (to the release of the force), approach speed and
+ * rebound (separation) speed in Visc, FscaleId and g, against central
+ * differences of the whole runs' impacts tables. */
+static void test_sens_impact_quantities_match_fd(void)
+{
+    const char *name[3] = {"/INTER/TYPE6/1:Visc", "/INTER/TYPE6/1:FscaleId", "/GRAV/1:Fscale_y"};
+    const double val[3] = {30.0, 20000.0, -9.81}, t[1] = {0.3};
+    const int slot[1] = {9};
+    enum { MAXE = 16 };
+    double et[MAXE], edt[MAXE * 3], evn[MAXE], edvn[MAXE * 3], out[1], ds[3];
+    int eid[MAXE];
+    const char *ekind[MAXE];
+    rc_sens_events ev = {MAXE, 0, 0, et, eid, ekind, edt, evn, edvn, NULL, NULL};
+    rc_sens_info info;
+    sens_ev = &ev;
+    ENSURE(sens_of(DROP, 3, name, val, 1, t, 1, slot, out, ds, &info) == 0);
+    sens_ev = NULL;
+    int kc = -1, ko = -1, ks = -1;
+    for (int k = 0; k < ev.n; k++) {
+        if (!strcmp(ev.kind[k], "contact_close") && kc < 0) kc = k;
+        if (!strcmp(ev.kind[k], "contact_open") && ko < 0) ko = k;
+        if (!strcmp(ev.kind[k], "contact_separate") && ks < 0) ks = k;
+    }
+    ENSURE(kc >= 0 && ko > kc && ks > kc);
+    if (kc < 0 || ko < 0 || ks < 0) return;
+    ENSURE(ev.inter_id[kc] == 1);
+    double worst = 0;
+    const char *qn[4] = {"t_close", "duration", "v_in", "v_out"};
+    for (int j = 0; j < 3; j++) {
+        double qa[4], qb[4];
+        rc_model *lo = model_pert(DROP, 3, name, val, j, 1 - 1e-3), *hi = model_pert(DROP, 3, name, val, j, 1 + 1e-3);
+        const int bad = impact_q(lo, qa) || impact_q(hi, qb);
+        rc_model_free(lo);
+        rc_model_free(hi);
+        ENSURE(!bad);
+        if (bad) return;
+        const double sens[4] = {ev.dtdp[kc * 3 + j], ev.dtdp[ko * 3 + j] - ev.dtdp[kc * 3 + j], ev.dvndp[kc * 3 + j],
+                                -ev.dvndp[ks * 3 + j]};
+        for (int q = 0; q < 4; q++) {
+            const double fdq = (qb[q] - qa[q]) / (2e-3 * val[j]);
+            /* a quantity that does not depend on the parameter (the
+             * impact's start in the contact's own fields): 0 in both */
+            if (fabs(fdq) < 1e-12) {
+                ENSURE_NEAR(sens[q], 0.0, 0, 1e-12);
+                continue;
+            }
+            ENSURE_NEAR(sens[q], fdq, 1e-4, 0);
+            const double rd = fabs(sens[q] - fdq) / fabs(fdq);
+            if (rd > worst) worst = rd;
+            if (rd > 1e-4) printf("    %s d%s/d%s: %.9g vs %.9g\n", qn[q], qn[q], name[j], sens[q], fdq);
+        }
+    }
+    printf("  drop's impact: d(t_close, duration, v_in, v_out)/d(Visc, FscaleId, g) against the whole runs' impacts "
+           "tables: worst relative difference %.2g (tolerance 1e-4)\n", worst);
+}
+
 /* Input errors: no parameter, times not increasing, a parameter that
  * changes the model's structure, a deck on another backend. */
 static void test_sens_errors(void)
@@ -272,12 +346,12 @@ static void test_sens_errors(void)
     const rc_model *mm[1] = {m};
     const double dp[1] = {1.0}, tbad[2] = {0.2, 0.1};
     rc_error e;
-    ENSURE(rc_sens_run(m, 0, mm, mm, val, dp, 1, tbad, y, s, NULL, NULL, &e) == RC_EINPUT);
-    ENSURE(rc_sens_run(m, 1, mm, mm, val, dp, 2, tbad, y, s, NULL, NULL, &e) == RC_EINPUT);
+    ENSURE(rc_sens_run(m, 0, mm, mm, val, dp, 1, tbad, y, s, NULL, NULL, NULL, &e) == RC_EINPUT);
+    ENSURE(rc_sens_run(m, 1, mm, mm, val, dp, 2, tbad, y, s, NULL, NULL, NULL, &e) == RC_EINPUT);
     ENSURE(strstr(e.msg, "increasing") != NULL);
     rc_error e2;
     ENSURE(rc_model_set_method(m, 2, &e2) == RC_OK);
-    ENSURE(rc_sens_run(m, 1, mm, mm, val, dp, 1, tbad, y, s, NULL, NULL, &e) == RC_EINPUT);
+    ENSURE(rc_sens_run(m, 1, mm, mm, val, dp, 1, tbad, y, s, NULL, NULL, NULL, &e) == RC_EINPUT);
     ENSURE(strstr(e.msg, "Method 1") != NULL);
     free(y);
     free(s);
@@ -291,5 +365,6 @@ void suite_sens(void)
     RUN_TEST(test_sens_drop_impact_matches_fd);
     RUN_TEST(test_sens_slide_stop_distance);
     RUN_TEST(test_sens_hysteresis_impacts_match_fd);
+    RUN_TEST(test_sens_impact_quantities_match_fd);
     RUN_TEST(test_sens_errors);
 }

@@ -554,9 +554,33 @@ typedef struct rc_sens_info {
                           (the first root's event time derivative is used) */
     long restarts;     /* sensitivity restarts (CVodeSensReInit)            */
 } rc_sens_info;
+/* The events of a sensitivity run and the derivatives of their times
+ * (the caller's arrays; rc_sens_run fills the first `max`): the event time
+ * tau, its derivative dtau/dp_j, and the state just before the event with
+ * its total derivative d y(tau(p)-)/dp_j = s- + f- dtau/dp_j (what a
+ * quantity read at the event, such as a rebound speed, moves by). */
+typedef struct rc_sens_events {
+    int max;            /* capacity of the arrays                           */
+    int n;              /* events with a root written (at most max); events
+                           beyond max are counted in `more`                 */
+    long more;
+    double *t;          /* [max] tau [s]                                    */
+    int *inter_id;      /* [max] /INTER id of the root, 0: not an interface's */
+    const char **kind;  /* [max] the first event's kind (as in the results
+                           file's events table: "contact_close", ...)     */
+    double *dtdp;       /* [max np] dtau/dp_j [s per card unit]             */
+    double *vn;         /* [max] the interface's approach rate dP/dt just
+                           before [m/s] (an impact's v_in at its closing,
+                           -v_out at its separation; 0: not an interface)  */
+    double *dvndp;      /* [max np] its total derivative [m/s per card unit] */
+    double *y;          /* [max ny] the state just before; NULL: not kept   */
+    double *dydp;       /* [max np ny] (event k, parameter j: + (k np + j) ny)
+                           its total derivative; NULL: not kept             */
+} rc_sens_events;
+/* `ev` may be NULL. */
 rc_status rc_sens_run(const rc_model *m, int np, const rc_model *const *m_lo, const rc_model *const *m_hi,
                       const double *p, const double *dp, int nt, const double *times, double *y, double *s, rc_sens_info *info,
-                      rc_stats *stats, rc_error *err);
+                      rc_sens_events *ev, rc_stats *stats, rc_error *err);
 
 #ifdef __cplusplus
 }

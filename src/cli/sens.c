@@ -291,8 +291,14 @@ int rc_cli_sens(int argc, char **argv)
     }
     rc_sens_info info;
     rc_stats stats;
+    /* the events and their times' derivatives */
+    enum { MAXEV = 64 };
+    double ev_t[MAXEV], ev_dt[MAXEV * RC_SENS_MAX_PAR], ev_vn[MAXEV], ev_dvn[MAXEV * RC_SENS_MAX_PAR];
+    int ev_id[MAXEV];
+    const char *ev_kind[MAXEV];
+    rc_sens_events ev = {MAXEV, 0, 0, ev_t, ev_id, ev_kind, ev_dt, ev_vn, ev_dvn, NULL, NULL};
     st = rc_sens_run(m, np, (const rc_model *const *)mlo, (const rc_model *const *)mhi, pv, dp, nt, times, y, s,
-                     &info, &stats, &e);
+                     &info, &ev, &stats, &e);
     if (st) {
         fprintf(stderr, "ricochet sens: %s\n", e.msg);
         rc = rc_status_exit_code(st);
@@ -366,6 +372,17 @@ int rc_cli_sens(int argc, char **argv)
     }
     free(ya);
     free(yb);
+    /* the events: their times and the interfaces' approach rates there */
+    if (ev.n > 0)
+        printf("events (t [s], the interface's approach rate dP/dt just before [m/s], and their derivatives per card "
+               "unit):\n");
+    for (int k = 0; k < ev.n; k++) {
+        printf("t = %.9g s  %s /INTER %d  dP/dt = %.9g m/s\n", ev.t[k], ev.kind[k], ev.inter_id[k], ev.vn[k]);
+        for (int j = 0; j < np; j++)
+            printf("    d/d %s: dt = %.9g s, d(dP/dt) = %.9g m/s per card unit\n", par[j].name, ev.dtdp[k * np + j],
+                   ev.dvndp[k * np + j]);
+    }
+    if (ev.more > 0) printf("(%ld more events not listed)\n", ev.more);
 done:
     free(y);
     free(s);

@@ -95,6 +95,7 @@ typedef struct sens_ctx {
     const double *times;
     double *yout, *sout;
     rc_sens_info info;
+    rc_sens_events *ev; /* the caller's events, NULL */
     int fail; /* a sensitivity evaluation failed (reported after the run) */
 } sens_ctx;
 
@@ -406,6 +407,32 @@ static int sens_jump(sens_ctx *x, double t, const double *yplus)
             gdot = (g1 - g0) / (2.0 * et);
         }
     }
+    /* the caller's record of the event */
+    rc_sens_events *ev = x->ev;
+    int iev = -1;
+    if (ev && r >= 0) {
+        if (ev->n < ev->max) {
+            iev = ev->n++;
+            ev->t[iev] = t;
+            const int i = r < rc_root_point_base(m) ? r / RC_ROOTS_PER_INTER : -1;
+            ev->inter_id[iev] = i >= 0 ? m->inter_id[i] : 0;
+            rc_event evs[RC_MAX_EV];
+            int jumped = 0;
+            copy_modes(m, x->dold, x->dscr);
+            memcpy(x->sv, ym, (size_t)ny * sizeof(double));
+            const int n = rc_events_apply(m, x->dscr, t, x->sv, x->roots, evs, RC_MAX_EV, &jumped);
+            ev->kind[iev] = n > 0 ? rc_event_kind_name(evs[0].kind) : "";
+            if (ev->y) memcpy(ev->y + (size_t)iev * (size_t)ny, ym, (size_t)ny * sizeof(double));
+            ev->vn[iev] = 0.0;
+            if (i >= 0) {
+                rc_inter_report rep;
+                rc_inter_report_eval_d(m, x->dold, i, t, ym, &rep);
+                ev->vn[iev] = rep.vn;
+            }
+        } else {
+            ev->more++;
+        }
+    }
     for (int j = 0; j < x->np; j++) {
         double *sj = s + (size_t)j * (size_t)ny;
         /* dtau/dp = -(g_y s- + g_p) / (g_t + g_y f-) */
@@ -426,6 +453,36 @@ static int sens_jump(sens_ctx *x, double t, const double *yplus)
                                root_value(x, x->mlo[j], x->dlo[j], t, ym, r)) /
                               x->dp[j];
             dtau = -(gys + gp) / gdot;
+        }
+        if (iev >= 0) {
+            const size_t ij = (size_t)iev * (size_t)x->np + (size_t)j;
+            ev->dtdp[ij] = dtau;
+            /* the total derivative of the state before the event, and of
+             * the interface's approach rate there: along (dtau, dy), and
+             * the rate's own dependence on p */
+            for (int k = 0; k < ny; k++) x->fp[k] = sj[k] + fminus[k] * dtau;
+            if (ev->dydp) memcpy(ev->dydp + ij * (size_t)ny, x->fp, (size_t)ny * sizeof(double));
+            ev->dvndp[ij] = 0.0;
+            const int i = r < rc_root_point_base(m) ? r / RC_ROOTS_PER_INTER : -1;
+            if (i >= 0) {
+                rc_inter_report ra, rb;
+                const double e = dir_step(m, ym, x->fp);
+                double dv = 0.0;
+                if (e > 0) {
+                    for (int k = 0; k < ny; k++) {
+                        x->ya[k] = ym[k] + e * x->fp[k];
+                        x->yb[k] = ym[k] - e * x->fp[k];
+                    }
+                    rc_inter_report_eval_d(m, x->dold, i, t + e * dtau, x->ya, &ra);
+                    rc_inter_report_eval_d(m, x->dold, i, t - e * dtau, x->yb, &rb);
+                    dv = (ra.vn - rb.vn) / (2.0 * e);
+                }
+                copy_modes(m, x->dold, x->dlo[j]);
+                copy_modes(m, x->dold, x->dhi[j]);
+                rc_inter_report_eval_d(x->mhi[j], x->dhi[j], i, t, ym, &ra);
+                rc_inter_report_eval_d(x->mlo[j], x->dlo[j], i, t, ym, &rb);
+                ev->dvndp[ij] = dv + (ra.vn - rb.vn) / x->dp[j];
+            }
         }
         if (reset) {
             /* R_y s- and R_p */
@@ -538,13 +595,16 @@ static int sp_reached(rc_pause *p, double t, const double *y)
 
 rc_status rc_sens_run(const rc_model *m, int np, const rc_model *const *m_lo, const rc_model *const *m_hi,
                       const double *p, const double *dp, int nt, const double *times, double *y, double *s, rc_sens_info *info,
-                      rc_stats *stats, rc_error *err)
+                      rc_sens_events *ev, rc_stats *stats, rc_error *err)
 {
     rc_error local;
     if (!err) err = &local;
     rc_error_clear(err);
     if (info) memset(info, 0, sizeof *info);
     if (stats) memset(stats, 0, sizeof *stats);
+    if (ev && (ev->max < 0 || (ev->max > 0 && (!ev->t || !ev->inter_id || !ev->kind || !ev->dtdp || !ev->vn || !ev->dvndp))))
+        return RC_SET(err, RC_EINPUT, "rc_sens_run: the events' arrays t, inter_id, kind, dtdp, vn and dvndp are needed "
+                                      "when max > 0");
     if (!m || np < 1 || !m_lo || !m_hi || !dp || nt < 1 || !times || !y || !s)
         return RC_SET(err, RC_EINPUT, "rc_sens_run: expected a model, np >= 1 parameters with their models and "
                                       "steps, nt >= 1 times and the output arrays");
@@ -578,6 +638,11 @@ rc_status rc_sens_run(const rc_model *m, int np, const rc_model *const *m_lo, co
     x->mhi = m_hi;
     x->dp = dp;
     x->pval = p;
+    x->ev = ev;
+    if (ev) {
+        ev->n = 0;
+        ev->more = 0;
+    }
     x->nt = nt;
     x->times = times;
     x->yout = y;

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# `ricochet sens` (docs/calibration.md, "Sensitivities"): the derivatives
+# of a drop through its impact against the whole runs' central differences
+# (--check-fd), the events' list, and the input errors (exit 2, nothing
+# run). Prints PASS/FAIL lines (counted by scripts/check.sh).
+set -u
+bin=${1:-build/ricochet}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+drop=validation/fit_drop/drop.rad
+
+expect() { # name, expected exit code, actual exit code, detail
+    if [ "$2" -eq "$3" ]; then echo "PASS sens.$1: exit $3 $4"; else echo "FAIL sens.$1: expected exit $2, got $3 $4"; fi
+}
+
+"$bin" --help | grep -q "ricochet sens CASE --param CARD:FIELD=VALUE" && echo "PASS sens.usage_line: in ricochet --help" ||
+    echo "FAIL sens.usage_line: ricochet --help does not list sens"
+"$bin" sens --help > "$tmp/h" 2>&1; rc=$?
+grep -q "^usage: ricochet sens CASE --param" "$tmp/h" && expect help 0 $rc "" || expect help 0 99 "(no usage)"
+
+# the drop: z and vz after the rebound in the damping, the load curve's
+# scale and gravity, each beside the whole runs' difference
+"$bin" sens "$drop" --param /INTER/TYPE6/1:Visc=30 --param /INTER/TYPE6/1:FscaleId=20000 \
+    --param /GRAV/1:Fscale_y=-9.81 --at 0.3,0.5 --out 1:z --out 1:vz --check-fd > "$tmp/o" 2>&1; rc=$?
+n=$(grep -c "relative difference" "$tmp/o")
+worst=$(sed -n 's/.*relative difference \([^)]*\)).*/\1/p' "$tmp/o" | sort -g | tail -1)
+if [ $rc -eq 0 ] && [ "$n" -eq 12 ] && awk -v w="$worst" 'BEGIN { exit !(w < 1e-4) }'; then
+    echo "PASS sens.drop_check_fd: 12 derivatives, worst relative difference to the whole runs $worst (tolerance 1e-4)"
+else echo "FAIL sens.drop_check_fd: exit $rc, $n derivatives, worst $worst: $(head -c 400 "$tmp/o")"; fi
+grep -q "^t = 0.22576.* s  contact_close /INTER 1" "$tmp/o" && grep -q "contact_separate /INTER 1" "$tmp/o" &&
+    grep -q "^ricochet sens: $drop: 3 parameters, 2 times; 3 events with a jump" "$tmp/o" &&
+    echo "PASS sens.events: the close, open and separation listed with their derivatives" ||
+    echo "FAIL sens.events: $(head -c 400 "$tmp/o")"
+
+# input errors: exit 2 with a message, nothing run
+bad() { # name, needle, args...
+    local name=$1 needle=$2
+    shift 2
+    "$bin" sens "$@" > "$tmp/e" 2>&1; local rc=$?
+    grep -q -- "$needle" "$tmp/e" && expect "$name" 2 $rc "" || expect "$name" 2 99 "($(head -c 200 "$tmp/e"))"
+}
+bad no_at "expected CASE, at least one --param and --at" "$drop" --param /INTER/TYPE6/1:Visc=30
+bad param_form "expected CARD:FIELD=VALUE" "$drop" --param Visc=30 --at 0.1
+bad param_value "VALUE: expected a finite number" "$drop" --param /INTER/TYPE6/1:Visc=abc --at 0.1
+bad times "expected times \[s\] > 0, increasing" "$drop" --param /INTER/TYPE6/1:Visc=30 --at 0.2,0.1
+bad out "expected ID:Q" "$drop" --param /INTER/TYPE6/1:Visc=30 --at 0.1 --out 1:w
+bad field "no numeric field Fscale" "$drop" --param /INTER/TYPE6/1:Fscale=1 --at 0.1
+bad method "only /SOLVER Method 1 (CVODE)" validation/joint_pendulum/case.rad --param /GRAV/1:Fscale_y=-9.81 --at 0.1

@@ -5,6 +5,7 @@
 # run). Prints PASS/FAIL lines (counted by scripts/check.sh).
 set -u
 bin=${1:-build/ricochet}
+export RC_BIN=$bin
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 drop=validation/fit_drop/drop.rad
@@ -46,3 +47,42 @@ bad times "expected times \[s\] > 0, increasing" "$drop" --param /INTER/TYPE6/1:
 bad out "expected ID:Q" "$drop" --param /INTER/TYPE6/1:Visc=30 --at 0.1 --out 1:w
 bad field "no numeric field Fscale" "$drop" --param /INTER/TYPE6/1:Fscale=1 --at 0.1
 bad method "only /SOLVER Method 1 (CVODE)" validation/joint_pendulum/case.rad --param /GRAV/1:Fscale_y=-9.81 --at 0.1
+
+# ricochet fit --jacobian sens: the drop's stiffness scale and damping from
+# a noisy trace, started 3x off: the same fit as with finite differences
+/usr/bin/python3 - "$tmp/drop.csv" <<'PY' || echo "FAIL sens.fit_data: no data"
+import sys, subprocess, tempfile, os
+import numpy as np
+from netCDF4 import Dataset
+d = tempfile.mkdtemp()
+nc = os.path.join(d, "t.nc")
+subprocess.run([os.environ.get("RC_BIN", "build/ricochet"), "run", "validation/fit_drop/drop.rad", "-o", nc, "-q",
+                "--dt-out", "0.002"], check=True)
+with Dataset(nc) as f:
+    keep = np.array(f["at_event"][:]) == 0
+    t, z = np.array(f["time"][:])[keep], np.array(f["body_position"][:])[keep, 0, 2]
+os.remove(nc)
+os.rmdir(d)
+rng = np.random.default_rng(3)
+with open(sys.argv[1], "w") as out:
+    out.write("t [s], body 1 z [m] +- 0.0005\n")
+    for ti, zi in zip(t, z):
+        out.write(f"{ti:.12g}, {zi + 0.0005 * rng.standard_normal():.12g}\n")
+PY
+for J in fd sens; do
+    "$bin" fit "$drop" --data "$tmp/drop.csv" --log /INTER/TYPE6/1:FscaleId=60000 --log /INTER/TYPE6/1:Visc=10 -q \
+        --jacobian $J --jobs 1 --fitted "$tmp/f_$J.csv" > "$tmp/fit_$J.txt" 2>&1
+    echo $? > "$tmp/rc_$J"
+done
+fd_vals=$(grep "^    fitted" "$tmp/fit_fd.txt" | awk '{print $2, $5}')
+sens_vals=$(grep "^    fitted" "$tmp/fit_sens.txt" | awk '{print $2, $5}')
+if [ "$(cat "$tmp/rc_sens")" = 0 ] && [ -n "$sens_vals" ] && [ "$fd_vals" = "$sens_vals" ] &&
+    grep -q "forward sensitivities, one run each" "$tmp/fit_sens.txt"; then
+    echo "PASS sens.fit_jacobian: the same fitted values and standard errors as with finite differences ($(echo $sens_vals | tr '\n' ' ')); $(grep -o '[0-9]* simulations' "$tmp/fit_fd.txt") (fd) against $(grep -o '[0-9]* simulations' "$tmp/fit_sens.txt") (sens)"
+else echo "FAIL sens.fit_jacobian: fd [$fd_vals] sens [$sens_vals] (exit $(cat "$tmp/rc_sens")): $(head -c 300 "$tmp/fit_sens.txt")"; fi
+printf '1, 1, v_out [m/s], 1.59, 0.01\n' > "$tmp/imp.csv"
+"$bin" fit "$drop" --data "$tmp/drop.csv" --free /INTER/TYPE6/1:Visc=10 --impacts "$tmp/imp.csv" --jacobian sens -q > "$tmp/e" 2>&1; rc=$?
+grep -q "covers the time series only, not --impacts" "$tmp/e" && expect fit_impacts 2 $rc "" ||
+    expect fit_impacts 2 99 "($(head -c 200 "$tmp/e"))"
+"$bin" fit "$drop" --data "$tmp/drop.csv" --free /INTER/TYPE6/1:Visc=10 --jacobian adjoint -q > "$tmp/e" 2>&1; rc=$?
+grep -q "expected fd or sens" "$tmp/e" && expect fit_jacobian_name 2 $rc "" || expect fit_jacobian_name 2 99 "($(head -c 200 "$tmp/e"))"

@@ -540,7 +540,7 @@ rc_status rc_export_vtk_dt(const char *results_path, const char *dir, double dt,
  * the same state and modes, the initial ds/dp that of their initial
  * states. Only /SOLVER Method 1 (CVODE) without a preload is covered
  * (RC_EINPUT otherwise).
- * times[nt]: increasing, > 0; the run ends at the last. y[nt * ny] and
+ * times[nt]: increasing, >= 0, the last > 0; the run ends at the last. y[nt * ny] and
  * s[(nt * np + j) * ny ...] (time i, parameter j: s + (i * np + j) * ny)
  * receive the state and its derivatives there (ny = rc_model_state_size).
  * `info` (may be NULL) counts what was done; `stats` (may be NULL) as

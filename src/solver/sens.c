@@ -613,8 +613,8 @@ rc_status rc_sens_run(const rc_model *m, int np, const rc_model *const *m_lo, co
                       m->method);
     if (m->preload) return RC_SET(err, RC_EINPUT, "sensitivities: a run from a preload (/SOLVER Preload 1) is not covered");
     for (int i = 0; i < nt; i++)
-        if (!(times[i] > 0) || !isfinite(times[i]) || (i > 0 && !(times[i] > times[i - 1])))
-            return RC_SET(err, RC_EINPUT, "sensitivities: expected output times > 0, finite and increasing, got "
+        if (!(times[i] >= 0) || !isfinite(times[i]) || (i > 0 && !(times[i] > times[i - 1])) || !(times[nt - 1] > 0))
+            return RC_SET(err, RC_EINPUT, "sensitivities: expected output times >= 0, finite and increasing, the last > 0, got "
                                           "%.17g at position %d", times[i], i + 1);
     for (int j = 0; j < np; j++) {
         const rc_model *a = m_lo[j], *b = m_hi[j];

@@ -85,8 +85,9 @@ typedef struct sens_ctx {
     N_Vector *yS;    /* [np] CVODES's sensitivities (the kept states) */
     N_Vector *abstolS;
     double *s0;      /* [np ny] the initial sensitivities (the constant states keep theirs) */
-    double *ya, *yb, *fa, *fb, *fm, *fp, *sv, *yminus; /* [ny] scratch */
-    double *ga, *gb;                                  /* [nroot] scratch */
+    double *ya, *yb, *fa, *fb, *fm, *fp, *sv, *yc; /* [ny] scratch */
+    double *yminus;                                /* [ny] the state before a root return's events */
+    double *ga;                                    /* [nroot] scratch */
     int *roots;                                        /* [nroot] the roots of the last root return */
     int pending;     /* yS holds the sensitivities after an event, for the restart */
     int on;          /* CVodeSensInit done */
@@ -198,7 +199,7 @@ static int cb_sens(int ns, realtype t, N_Vector y, N_Vector ydot, N_Vector *yS, 
     (void)t1;
     (void)t2;
     sens_ctx *x = ctx_of(ud);
-    double *yf = x->yminus; /* the whole state at y (scratch) */
+    double *yf = x->yc; /* the whole state at y */
     to_full(x, y, x->yfull, yf);
     for (int j = 0; j < ns; j++) {
         to_full(x, yS[j], x->s0 + (size_t)j * (size_t)x->ny, x->sv);
@@ -221,18 +222,17 @@ static rc_status sb_open(void *self, const rc_model *m, rc_data *d, const rc_run
     x->ny = m->ny;
     x->nroot = rc_root_count(m);
     const size_t ny = (size_t)m->ny + 1, nrt = (size_t)x->nroot + 1;
-    double **v[] = {&x->ya, &x->yb, &x->fa, &x->fb, &x->fm, &x->fp, &x->sv, &x->yminus};
+    double **v[] = {&x->ya, &x->yb, &x->fa, &x->fb, &x->fm, &x->fp, &x->sv, &x->yc, &x->yminus};
     for (size_t k = 0; k < sizeof v / sizeof v[0]; k++)
         if (!(*v[k] = calloc(ny, sizeof(double)))) return RC_SET(err, RC_ENOMEM, "out of memory for the sensitivities");
     x->s0 = calloc(ny * (size_t)x->np, sizeof(double));
     x->ga = calloc(nrt, sizeof(double));
-    x->gb = calloc(nrt, sizeof(double));
     x->roots = calloc(nrt, sizeof(int));
     x->dlo = calloc((size_t)x->np, sizeof(rc_data *));
     x->dhi = calloc((size_t)x->np, sizeof(rc_data *));
     x->dold = rc_data_new(m);
     x->dscr = rc_data_new(m);
-    if (!x->s0 || !x->ga || !x->gb || !x->roots || !x->dlo || !x->dhi || !x->dold || !x->dscr)
+    if (!x->s0 || !x->ga || !x->roots || !x->dlo || !x->dhi || !x->dold || !x->dscr)
         return RC_SET(err, RC_ENOMEM, "out of memory for the sensitivities");
     for (int j = 0; j < x->np; j++)
         if (!(x->dlo[j] = rc_data_new(x->mlo[j])) || !(x->dhi[j] = rc_data_new(x->mhi[j])))
@@ -548,7 +548,7 @@ static void sb_close(void *self)
     if (x->abstolS) N_VDestroyVectorArray(x->abstolS, x->np);
     x->yS = x->abstolS = NULL;
     x->ib->close(self);
-    double *v[] = {x->ya, x->yb, x->fa, x->fb, x->fm, x->fp, x->sv, x->yminus, x->s0, x->ga, x->gb};
+    double *v[] = {x->ya, x->yb, x->fa, x->fb, x->fm, x->fp, x->sv, x->yc, x->yminus, x->s0, x->ga};
     for (size_t k = 0; k < sizeof v / sizeof v[0]; k++) free(v[k]);
     free(x->roots);
     for (int j = 0; x->dlo && j < x->np; j++) rc_data_free(x->dlo[j]);

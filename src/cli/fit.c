@@ -1177,9 +1177,9 @@ static int write_json(const char *path, const fit_problem *fp, const fit_stats *
     fprintf(o, ",\n  \"status\": ");
     json_str(o, status);
     fprintf(o, ",\n  \"converged\": %s,\n  \"iterations\": %zu,\n  \"residual_evaluations\": %zu,\n"
-               "  \"jacobian_evaluations\": %zu,\n  \"simulations\": %ld,\n  \"failed_simulations\": %ld,\n"
-               "  \"wall_time\": ",
-            converged ? "true" : "false", iters, nfev, njev, fp->nsim, fp->nsim_failed);
+               "  \"jacobian_evaluations\": %zu,\n  \"jacobian\": \"%s\",\n  \"simulations\": %ld,\n"
+               "  \"failed_simulations\": %ld,\n  \"wall_time\": ",
+            converged ? "true" : "false", iters, nfev, njev, fp->sens ? "sens" : "fd", fp->nsim, fp->nsim_failed);
     json_num(o, wall);
     fprintf(o, ",\n  \"measured_values\": %d,\n  \"dof\": %d,\n  \"t_quantile\": ", fp->nres, S->dof);
     json_num(o, S->tq);

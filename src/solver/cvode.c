@@ -107,6 +107,8 @@ typedef struct run_ctx {
 static void cb_err(int code, const char *module, const char *function, char *msg, void *ud)
 {
     run_ctx *c = ud;
+    /* the library is CVODES (sens.h); the integrator is named as the backend */
+    if (module && !strcmp(module, "CVODES")) module = "CVODE";
     rc_bk_keep_error(c ? c->stop : NULL, c ? c->cvmsg : NULL, sizeof c->cvmsg, c ? &c->nwarn : NULL, code, module,
                      function, msg);
 }

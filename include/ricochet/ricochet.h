@@ -553,6 +553,9 @@ typedef struct rc_sens_info {
     long simultaneous; /* of them, events with several roots at one time
                           (the first root's event time derivative is used) */
     long restarts;     /* sensitivity restarts (CVodeSensReInit)            */
+    int errcon;        /* 1: the sensitivities were in the integrator's
+                          error test; 0: that run failed and this one was
+                          run with the state's error test alone            */
 } rc_sens_info;
 /* The events of a sensitivity run and the derivatives of their times
  * (the caller's arrays; rc_sens_run fills the first `max`): the event time

@@ -332,6 +332,9 @@ int rc_cli_sens(int argc, char **argv)
            "state reset, %ld with simultaneous roots), %ld restarts, %ld steps\n",
            deck, np, np > 1 ? "s" : "", nt, nt > 1 ? "s" : "", info.jumps, info.resets, info.simultaneous,
            info.restarts, stats.steps);
+    if (!info.errcon)
+        printf("(the run with the sensitivities in the error test failed; these are from a run with the state's error "
+               "test alone)\n");
     double *ya = malloc((size_t)ny * sizeof(double)), *yb = malloc((size_t)ny * sizeof(double));
     for (int i = 0; i < nt && ya && yb; i++) {
         const double *yi = y + (size_t)i * (size_t)ny;

@@ -332,6 +332,28 @@ static void test_sens_impact_quantities_match_fd(void)
            "tables: worst relative difference %.2g (tolerance 1e-4)\n", worst);
 }
 
+/* (f) A body held by an imposed velocity until Tstop = 0.2 s, then
+ * falling: z = z0 - g (t - Tstop)^2 / 2, so dz/dTstop = g (t - Tstop) and
+ * dvz/dTstop = g, and dz/dFscale_y = (t - Tstop)^2 / 2 (Fscale_y = -9.81);
+ * the run restarts at the time breakpoint (no root). */
+static void test_sens_imposed_velocity_release(void)
+{
+    const char *name[2] = {"/GRAV/1:Fscale_y", "/IMPVEL/1:Tstop"};
+    const double val[2] = {-9.81, 0.2}, t[2] = {0.1, 0.3}, g = 9.81, dt = 0.3 - 0.2;
+    const int slot[2] = {2, 9};
+    double out[4], ds[8];
+    rc_sens_info info;
+    ENSURE(sens_of("validation/impvel_release/case.rad", 2, name, val, 2, t, 2, slot, out, ds, &info) == 0);
+    /* held: nothing moves */
+    for (int k = 0; k < 4; k++) ENSURE_NEAR(ds[k], 0.0, 0, 1e-12);
+    ENSURE_NEAR(ds[(1 * 2 + 0) * 2 + 0], 0.5 * dt * dt, 1e-6, 0);
+    ENSURE_NEAR(ds[(1 * 2 + 0) * 2 + 1], dt, 1e-6, 0);
+    ENSURE_NEAR(ds[(1 * 2 + 1) * 2 + 0], g * dt, 1e-6, 0);
+    ENSURE_NEAR(ds[(1 * 2 + 1) * 2 + 1], g, 1e-6, 0);
+    printf("  release at Tstop: dz/dTstop %.9g (g (t - Tstop) = %.9g), dvz/dTstop %.9g (g)\n",
+           ds[(1 * 2 + 1) * 2 + 0], g * dt, ds[(1 * 2 + 1) * 2 + 1]);
+}
+
 /* Input errors: no parameter, times not increasing, a parameter that
  * changes the model's structure, a deck on another backend. */
 static void test_sens_errors(void)
@@ -366,5 +388,6 @@ void suite_sens(void)
     RUN_TEST(test_sens_slide_stop_distance);
     RUN_TEST(test_sens_hysteresis_impacts_match_fd);
     RUN_TEST(test_sens_impact_quantities_match_fd);
+    RUN_TEST(test_sens_imposed_velocity_release);
     RUN_TEST(test_sens_errors);
 }

@@ -33,6 +33,15 @@ grep -q "^t = 0.22576.* s  contact_close /INTER 1" "$tmp/o" && grep -q "contact_
     echo "PASS sens.events: the close, open and separation listed with their derivatives" ||
     echo "FAIL sens.events: $(head -c 400 "$tmp/o")"
 
+# a power-law contact (Hunt-Crossley damping): K, the exponent m1 and C
+"$bin" sens validation/fit_drop/power.rad --param /INTER/POWER/1:K=600000 --param /INTER/POWER/1:m1=1.5 \
+    --param /INTER/POWER/1:C=200000 --at 0.5 --out 1:z --out 1:vz --check-fd > "$tmp/o" 2>&1; rc=$?
+n=$(grep -c "relative difference" "$tmp/o")
+worst=$(sed -n 's/.*relative difference \([^)]*\)).*/\1/p' "$tmp/o" | sort -g | tail -1)
+if [ $rc -eq 0 ] && [ "$n" -eq 6 ] && awk -v w="$worst" 'BEGIN { exit !(w < 1e-4) }'; then
+    echo "PASS sens.power_check_fd: K, m1, C: worst relative difference to the whole runs $worst (tolerance 1e-4)"
+else echo "FAIL sens.power_check_fd: exit $rc, $n derivatives, worst $worst: $(head -c 400 "$tmp/o")"; fi
+
 # input errors: exit 2 with a message, nothing run
 bad() { # name, needle, args...
     local name=$1 needle=$2

@@ -89,9 +89,22 @@ if [ "$(cat "$tmp/rc_sens")" = 0 ] && [ -n "$sens_vals" ] && [ "$fd_vals" = "$se
     grep -q "forward sensitivities, one run each" "$tmp/fit_sens.txt"; then
     echo "PASS sens.fit_jacobian: the same fitted values and standard errors as with finite differences ($(echo $sens_vals | tr '\n' ' ')); $(grep -o '[0-9]* simulations' "$tmp/fit_fd.txt") (fd) against $(grep -o '[0-9]* simulations' "$tmp/fit_sens.txt") (sens)"
 else echo "FAIL sens.fit_jacobian: fd [$fd_vals] sens [$sens_vals] (exit $(cat "$tmp/rc_sens")): $(head -c 300 "$tmp/fit_sens.txt")"; fi
-printf '1, 1, v_out [m/s], 1.59, 0.01\n' > "$tmp/imp.csv"
-"$bin" fit "$drop" --data "$tmp/drop.csv" --free /INTER/TYPE6/1:Visc=10 --impacts "$tmp/imp.csv" --jacobian sens -q > "$tmp/e" 2>&1; rc=$?
-grep -q "covers the time series only, not --impacts" "$tmp/e" && expect fit_impacts 2 $rc "" ||
-    expect fit_impacts 2 99 "($(head -c 200 "$tmp/e"))"
+# with measured impact quantities (the events' derivatives): the same fit
+printf 'inter, impact, quantity, value, sigma\n1, 1, duration [ms], 21.36, 0.2\n1, 1, v_out [m/s], 1.594, 0.01\n1, 1, v_in [m/s], 2.215, 0.01\n1, 1, t_close [s], 0.22576, 0.0005\n' > "$tmp/imp.csv"
+for J in fd sens; do
+    "$bin" fit "$drop" --data "$tmp/drop.csv" --impacts "$tmp/imp.csv" --log /INTER/TYPE6/1:FscaleId=60000 \
+        --log /INTER/TYPE6/1:Visc=10 -q --jacobian $J --jobs 1 --fitted "$tmp/fi_$J.csv" > "$tmp/fiti_$J.txt" 2>&1
+    echo $? > "$tmp/rci_$J"
+done
+same=$(paste <(grep "^    fitted" "$tmp/fiti_fd.txt" | awk '{print $2, $5}') <(grep "^    fitted" "$tmp/fiti_sens.txt" | awk '{print $2, $5}') |
+    awk 'NF == 4 { n++; if (($1 - $3) > 1e-6 * $1 || ($3 - $1) > 1e-6 * $1 || ($2 - $4) > 1e-3 * $2 || ($4 - $2) > 1e-3 * $2) bad++ }
+         END { print (n == 2 && !bad) ? "yes" : "no" }')
+if [ "$(cat "$tmp/rci_sens")" = 0 ] && [ "$same" = yes ]; then
+    echo "PASS sens.fit_impacts: with t_close, duration, v_in and v_out measured, the same fitted values (1e-6) and standard errors as with finite differences"
+else echo "FAIL sens.fit_impacts: $(grep "^    fitted" "$tmp/fiti_fd.txt" | tr '\n' ' ') against $(grep "^    fitted" "$tmp/fiti_sens.txt" | tr '\n' ' ') (exit $(cat "$tmp/rci_sens"))"; fi
+printf 'inter, impact, quantity, value, sigma\n1, 1, fn_max [N], 280, 3\n' > "$tmp/imp2.csv"
+"$bin" fit "$drop" --data "$tmp/drop.csv" --free /INTER/TYPE6/1:Visc=10 --impacts "$tmp/imp2.csv" --jacobian sens -q > "$tmp/e" 2>&1; rc=$?
+grep -q "covers the impacts' t_close, duration, v_in and v_out, not fn_max" "$tmp/e" && expect fit_impacts_peak 2 $rc "" ||
+    expect fit_impacts_peak 2 99 "($(head -c 200 "$tmp/e"))"
 "$bin" fit "$drop" --data "$tmp/drop.csv" --free /INTER/TYPE6/1:Visc=10 --jacobian adjoint -q > "$tmp/e" 2>&1; rc=$?
 grep -q "expected fd or sens" "$tmp/e" && expect fit_jacobian_name 2 $rc "" || expect fit_jacobian_name 2 99 "($(head -c 200 "$tmp/e"))"

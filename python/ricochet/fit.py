@@ -63,7 +63,8 @@ def fit(deck, data, free=None, log=None, set=None, impacts=None, rtol=None, meth
     set: fields fixed for the fit (as ``run``'s ``set``). impacts: a CSV
     file of measured impact quantities (docs/calibration.md, "Impacts").
     jacobian: "fd" (finite differences, the default) or "sens" (forward
-    sensitivities, one run per Jacobian; time series only).
+    sensitivities, one run per Jacobian; of the impacts, t_close, duration,
+    v_in and v_out only).
     fitted: the
     measured-against-fitted CSV (default: a temporary file, read back).
 

@@ -34,7 +34,9 @@
  *    (rc_sens_run) at the data times: the deck compiled at p and, per
  *    parameter, at p -+ RC_FIT_SENS_STEP |p|; d sim/dp from the state's
  *    sensitivities (the body state's central difference along them), times
- *    dp/du. Time series only (--impacts needs the finite differences).
+ *    dp/du; of the impacts' t_close, duration, v_in and v_out, from the
+ *    events' derivatives (rc_sens_events; other quantities need the finite
+ *    differences).
  *  - Statistics at the solution: s^2 = sum r^2 / (n - rank J), the covariance
  *    s^2 (J^T J)^-1 (gsl_multifit_nlinear_covar, whose pivoted QR drops
  *    dependent columns) mapped to the parameters by dp/du. A parameter the
@@ -956,9 +958,19 @@ static int fit_df_sens(const gsl_vector *x, void *params, gsl_matrix *J)
         yb = malloc((size_t)ny * sizeof(double));
         if (!y || !s || !ya || !yb) st = RC_ENOMEM;
     }
+    /* the events, for the impacts' quantities */
+    enum { MAXEV = 256 };
+    double *evd = !st ? malloc((2 + 2 * (size_t)np) * MAXEV * sizeof(double)) : NULL;
+    int ev_id[MAXEV];
+    const char *ev_kind[MAXEV];
+    rc_sens_events ev = {MAXEV, 0, 0, evd, ev_id, ev_kind, evd + MAXEV, evd + MAXEV * (1 + (size_t)np),
+                         evd + MAXEV * (2 + (size_t)np), NULL, NULL};
+    rc_stats stats;
+    memset(&stats, 0, sizeof stats);
+    if (!st && !evd) st = RC_ENOMEM;
     if (!st)
         st = rc_sens_run(m, np, (const rc_model *const *)mlo, (const rc_model *const *)mhi, p, dp, fp->nt, fp->t, y, s,
-                         NULL, NULL, NULL, &e);
+                         NULL, &ev, &stats, &e);
     /* dr/du = d sim/dp dp/du / scale over the measured values */
     int k = 0;
     for (int i = 0; i < fp->nt && !st; i++) {
@@ -990,6 +1002,42 @@ static int fit_df_sens(const gsl_vector *x, void *params, gsl_matrix *J)
             k++;
         }
     }
+    /* the impacts' quantities: the k-th impact of the interface (as
+     * simulate finds it), its events by their times: t_close and v_in at
+     * the contact_close, duration to the event at t_open, v_out = -dP/dt at
+     * the contact_separate that follows */
+    for (int g = 0; g < fp->nimp && !st; g++) {
+        const fit_imp *im = &fp->imp[g];
+        const rc_impact *h = NULL;
+        const int n = stats.impacts < RC_STATS_IMPACTS ? (int)stats.impacts : RC_STATS_IMPACTS;
+        for (int i = 0, seen = 0; i < n && !h; i++)
+            if (stats.impact[i].inter_id == im->inter && ++seen == im->k) h = &stats.impact[i];
+        int a = -1, b = -1, c = -1;
+        for (int i = 0; h && i < ev.n; i++) {
+            if (ev.inter_id[i] != im->inter) continue;
+            const double tol = 1e-12 * fmax(1.0, fabs(ev.t[i]));
+            if (a < 0 && !strcmp(ev.kind[i], "contact_close") && fabs(ev.t[i] - h->t_close) <= tol) a = i;
+            if (b < 0 && isfinite(h->t_open) && fabs(ev.t[i] - h->t_open) <= tol) b = i;
+            if (c < 0 && b >= 0 && !strcmp(ev.kind[i], "contact_separate")) c = i;
+        }
+        const int need = im->q == 1 ? b : im->q == 5 ? c : a;
+        if (!h || a < 0 || need < 0) {
+            st = RC_ESOLVER;
+            snprintf(e.msg, sizeof e.msg, "--jacobian sens: %s: its event%s not found among the run's events", im->label,
+                     h ? "" : " (the impact itself)");
+            break;
+        }
+        for (int j = 0; j < np; j++) {
+            const double *dt = ev.dtdp, *dv = ev.dvndp;
+            const double d = im->q == 0   ? dt[(size_t)a * (size_t)np + (size_t)j]
+                             : im->q == 1 ? dt[(size_t)b * (size_t)np + (size_t)j] - dt[(size_t)a * (size_t)np + (size_t)j]
+                             : im->q == 4 ? dv[(size_t)a * (size_t)np + (size_t)j]
+                                          : -dv[(size_t)c * (size_t)np + (size_t)j];
+            gsl_matrix_set(J, (size_t)k, (size_t)j, d * dpdu[j] / im->sigma);
+        }
+        k++;
+    }
+    free(evd);
     free(y);
     free(s);
     free(ya);
@@ -1344,7 +1392,8 @@ static void usage_fit(FILE *f)
             "  --fd-step H           finite-difference step in the fitted variables (default 1e-4)\n"
             "  --forward             forward differences (p + 1 simulations per Jacobian, default central: 2p)\n"
             "  --jacobian fd|sens    the Jacobian by finite differences (default) or from forward sensitivities in\n"
-            "                        one run per Jacobian (ricochet sens; time series only, /SOLVER Method 1)\n"
+            "                        one run per Jacobian (ricochet sens; with --impacts: t_close, duration, v_in,\n"
+            "                        v_out only; /SOLVER Method 1)\n"
             "  --jobs N              threads of the Jacobian (default: the processors online)\n"
             "  --max-rse X           a relative standard error above X reports the parameter UNIDENTIFIABLE\n"
             "                        (default 1, i.e. 100 %%)\n"
@@ -1525,14 +1574,18 @@ int rc_cli_fit(int argc, char **argv)
     if (rc) goto done;
     fp->nres_ts = fp->nres;
     fp->weighted = fp->sig[0].sigma > 0;
-    if (fp->impacts && fp->sens) {
-        fprintf(stderr, "ricochet fit: --jacobian sens: covers the time series only, not --impacts (use --jacobian "
-                        "fd)\n");
-        rc = 2;
-        goto done;
-    }
     if (fp->impacts) {
         if ((rc = read_impacts(fp)) != 0) goto done;
+        /* --jacobian sens: the impacts' quantities that the events' derivatives give */
+        for (int j = 0; j < fp->nimp && fp->sens; j++) {
+            const int q = fp->imp[j].q;
+            if (q != 0 && q != 1 && q != 4 && q != 5) {
+                fprintf(stderr, "ricochet fit: %s: --jacobian sens: covers the impacts' t_close, duration, v_in and "
+                                "v_out, not %s (use --jacobian fd)\n", fp->impacts, impact_q[q].name);
+                rc = 2;
+                goto done;
+            }
+        }
         if (!fp->weighted) {
             fprintf(stderr, "ricochet fit: %s: --impacts: expected the signals' uncertainties in the header (e.g. "
                             "'body 1 z [m] +- 0.0005'), to weigh them against the impacts'\n", fp->data);

@@ -35,6 +35,13 @@ cat "$log"
 pass=$((pass + $(grep -c '^PASS ' "$log")))
 fail=$((fail + $(grep -c '^FAIL ' "$log")))
 
+# ricochet sens: derivatives against whole runs, the events, input errors
+# (tests/sens_test.sh)
+bash tests/sens_test.sh "$build/ricochet" > "$log" 2>&1
+cat "$log"
+pass=$((pass + $(grep -c '^PASS ' "$log")))
+fail=$((fail + $(grep -c '^FAIL ' "$log")))
+
 # animations of results files (scripts/animate.py): frames, exit codes
 bash tests/animate_test.sh "$build/ricochet" > "$log" 2>&1
 cat "$log"

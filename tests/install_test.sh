@@ -38,7 +38,7 @@ if [ $rc -eq 0 ] && [ "$(pkg-config --modversion ricochet)" = "$version" ] && ec
 else fail pkg_config "exit $rc: $flags"; fi
 static=$(pkg-config --static --libs ricochet 2>&1)
 ok=1
-for lib in -lsundials_cvode -lsundials_sunlinsolklu -lklu -lgsl -lnetcdf; do
+for lib in -lsundials_cvodes -lsundials_sunlinsolklu -lklu -lgsl -lnetcdf; do
     echo "$static" | grep -q -- "$lib" || { fail pkg_config_static "no $lib in: $static"; ok=0; }
 done
 [ $ok = 1 ] && pass pkg_config_static "Libs.private: $static"

@@ -526,6 +526,65 @@ rc_status rc_export_vtk(const char *results_path, const char *dir, int *nframes,
  * or not finite, or a NULL results_path or dir. */
 rc_status rc_export_vtk_dt(const char *results_path, const char *dir, double dt, int *nframes, rc_error *err);
 
+/* ---- Forward sensitivities (docs/calibration.md "Sensitivities") ------
+ * The derivatives ds/dp of the state vector with respect to np numeric
+ * fields of the deck, by CVODES forward sensitivity analysis between the
+ * events and the jump of the sensitivities at each event (docs/theory.md
+ * "Sensitivities"). A field enters through three compiled models of the
+ * same deck: `m` at the field's value p, m_lo[j] and m_hi[j] at p -+ h
+ * (rc_case_load_set), which must have the same structure (states,
+ * interfaces, roots); p[j] the field's value (the scale of its
+ * sensitivities' absolute tolerances, atol / |p|; NULL: 1); dp[j] = (p + h) - (p - h) in the field's own card
+ * units, so that the derivatives are per card unit of the field. The
+ * right-hand side's df/dp is the central difference of the two models at
+ * the same state and modes, the initial ds/dp that of their initial
+ * states. Only /SOLVER Method 1 (CVODE) without a preload is covered
+ * (RC_EINPUT otherwise).
+ * times[nt]: increasing, >= 0, the last > 0; the run ends at the last. y[nt * ny] and
+ * s[(nt * np + j) * ny ...] (time i, parameter j: s + (i * np + j) * ny)
+ * receive the state and its derivatives there (ny = rc_model_state_size).
+ * `info` (may be NULL) counts what was done; `stats` (may be NULL) as
+ * rc_run's. */
+typedef struct rc_sens_info {
+    long jumps;        /* events at which the sensitivities jumped          */
+    long resets;       /* of them, events that also set states (a history
+                          state reset: the map's derivative by central
+                          differences of the event applied along s)        */
+    long simultaneous; /* of them, events with several roots at one time
+                          (the first root's event time derivative is used) */
+    long restarts;     /* sensitivity restarts (CVodeSensReInit)            */
+    int errcon;        /* 1: the sensitivities were in the integrator's
+                          error test; 0: that run failed and this one was
+                          run with the state's error test alone            */
+} rc_sens_info;
+/* The events of a sensitivity run and the derivatives of their times
+ * (the caller's arrays; rc_sens_run fills the first `max`): the event time
+ * tau, its derivative dtau/dp_j, and the state just before the event with
+ * its total derivative d y(tau(p)-)/dp_j = s- + f- dtau/dp_j (what a
+ * quantity read at the event, such as a rebound speed, moves by). */
+typedef struct rc_sens_events {
+    int max;            /* capacity of the arrays                           */
+    int n;              /* events with a root written (at most max); events
+                           beyond max are counted in `more`                 */
+    long more;
+    double *t;          /* [max] tau [s]                                    */
+    int *inter_id;      /* [max] /INTER id of the root, 0: not an interface's */
+    const char **kind;  /* [max] the first event's kind (as in the results
+                           file's events table: "contact_close", ...)     */
+    double *dtdp;       /* [max np] dtau/dp_j [s per card unit]             */
+    double *vn;         /* [max] the interface's approach rate dP/dt just
+                           before [m/s] (an impact's v_in at its closing,
+                           -v_out at its separation; 0: not an interface)  */
+    double *dvndp;      /* [max np] its total derivative [m/s per card unit] */
+    double *y;          /* [max ny] the state just before; NULL: not kept   */
+    double *dydp;       /* [max np ny] (event k, parameter j: + (k np + j) ny)
+                           its total derivative; NULL: not kept             */
+} rc_sens_events;
+/* `ev` may be NULL. */
+rc_status rc_sens_run(const rc_model *m, int np, const rc_model *const *m_lo, const rc_model *const *m_hi,
+                      const double *p, const double *dp, int nt, const double *times, double *y, double *s, rc_sens_info *info,
+                      rc_sens_events *ev, rc_stats *stats, rc_error *err);
+
 #ifdef __cplusplus
 }
 #endif

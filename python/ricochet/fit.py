@@ -54,7 +54,7 @@ def _free_args(option, params):
 
 
 def fit(deck, data, free=None, log=None, set=None, impacts=None, rtol=None, method=None, max_iter=None, jobs=None,
-        trs=None, max_rse=None, fitted=None, quiet=True):
+        trs=None, max_rse=None, fitted=None, quiet=True, jacobian=None):
     """Fit numeric fields of ``deck`` to the signals measured in ``data`` (a
     CSV file, docs/calibration.md "The data file").
 
@@ -62,6 +62,9 @@ def fit(deck, data, free=None, log=None, set=None, impacts=None, rtol=None, meth
     values in the card's units; ``log`` ones are fitted in log(value).
     set: fields fixed for the fit (as ``run``'s ``set``). impacts: a CSV
     file of measured impact quantities (docs/calibration.md, "Impacts").
+    jacobian: "fd" (finite differences, the default) or "sens" (forward
+    sensitivities, one run per Jacobian; of the impacts, t_close, duration,
+    v_in and v_out only).
     fitted: the
     measured-against-fitted CSV (default: a temporary file, read back).
 
@@ -86,7 +89,7 @@ def fit(deck, data, free=None, log=None, set=None, impacts=None, rtol=None, meth
         for s in format_set(set):
             cmd += ["--set", s]
         for opt, v in (("--impacts", impacts), ("--rtol", rtol), ("--method", method), ("--max-iter", max_iter), ("--jobs", jobs),
-                       ("--trs", trs), ("--max-rse", max_rse)):
+                       ("--trs", trs), ("--max-rse", max_rse), ("--jacobian", jacobian)):
             if v is not None:
                 cmd += [opt, str(v)]
         if quiet:

@@ -30,6 +30,13 @@
  *    evaluated in parallel by a pool of threads, each simulation loading and
  *    compiling its own model (the library is thread-safe for separate
  *    cases, models and sessions; no results file is written).
+ *  - --jacobian sens: the Jacobian from one run with forward sensitivities
+ *    (rc_sens_run) at the data times: the deck compiled at p and, per
+ *    parameter, at p -+ RC_FIT_SENS_STEP |p|; d sim/dp from the state's
+ *    sensitivities (the body state's central difference along them), times
+ *    dp/du; of the impacts' t_close, duration, v_in and v_out, from the
+ *    events' derivatives (rc_sens_events; other quantities need the finite
+ *    differences).
  *  - Statistics at the solution: s^2 = sum r^2 / (n - rank J), the covariance
  *    s^2 (J^T J)^-1 (gsl_multifit_nlinear_covar, whose pivoted QR drops
  *    dependent columns) mapped to the parameters by dp/du. A parameter the
@@ -75,6 +82,9 @@
 #define RC_FIT_AT_BOUND 4e-3
 /* rank test of the covariance (gsl_multifit_nlinear_covar epsrel) */
 #define RC_FIT_RANK_TOL 1e-9
+/* --jacobian sens: the relative step of the parameters inside the
+ * sensitivity run's right-hand side (rc_sens_run's two models) [-] */
+#define RC_FIT_SENS_STEP 1e-4
 /* residual of a trial whose simulation failed (the step is then rejected:
  * measured residuals are of order 1 by their scaling) */
 #define RC_FIT_FAILED_RESIDUAL 1e3
@@ -156,6 +166,9 @@ typedef struct {
     int method;           /* > 0: replaces /SOLVER Method (1, 2)        */
     double h;             /* finite-difference step in u                */
     int central;          /* 1: central differences                     */
+    int sens;             /* 1: the Jacobian from forward sensitivities
+                             (--jacobian sens, rc_sens_run), one run per
+                             Jacobian; 0: finite differences            */
     int jobs;             /* threads of the Jacobian                    */
     int quiet;
     int trs;              /* 0 double dogleg, 1 LM, 2 dogleg, 3 2-D subspace */
@@ -893,6 +906,158 @@ static int fit_df(const gsl_vector *x, void *params, gsl_matrix *J)
     return status;
 }
 
+/* A model of the deck at the parameter values p (card units), with the
+ * fit's overrides of the tolerance and the method; *used receives p[j]
+ * as read back (j >= 0). */
+static rc_status compile_p(fit_problem *fp, const double *p, rc_model **m, rc_error *e)
+{
+    const char *set[RC_FIT_MAX_SET + RC_FIT_MAX_PAR];
+    char buf[RC_FIT_MAX_PAR][320];
+    const int nset = build_set(fp, p, set, buf);
+    rc_case *c = NULL;
+    rc_status st = rc_case_load_set(fp->deck, set, nset, &c, e);
+    if (!st) st = rc_model_compile(c, m, e);
+    if (!st && fp->rtol > 0) st = rc_model_set_rtol(*m, fp->rtol, e);
+    if (!st && fp->method > 0) st = rc_model_set_method(*m, fp->method, e);
+    rc_case_free(c);
+    return st;
+}
+
+/* The Jacobian from forward sensitivities (--jacobian sens): one run of
+ * the deck at p with the sensitivities to every parameter at the data
+ * times. */
+static int fit_df_sens(const gsl_vector *x, void *params, gsl_matrix *J)
+{
+    fit_problem *fp = params;
+    const int np = fp->np;
+    double p[RC_FIT_MAX_PAR], dpdu[RC_FIT_MAX_PAR], pl[RC_FIT_MAX_PAR], dp[RC_FIT_MAX_PAR];
+    for (int j = 0; j < np; j++) p[j] = par_value(&fp->par[j], gsl_vector_get(x, (size_t)j), &dpdu[j]);
+    rc_model *m = NULL, *mlo[RC_FIT_MAX_PAR] = {0}, *mhi[RC_FIT_MAX_PAR] = {0};
+    rc_error e;
+    memset(&e, 0, sizeof e);
+    const double t0 = wall_now();
+    rc_status st = compile_p(fp, p, &m, &e);
+    for (int j = 0; j < np && !st; j++) {
+        /* p -+ h, h taken from the values as they read back (build_set's
+         * shortest decimals are exact) */
+        const double h = p[j] != 0.0 ? RC_FIT_SENS_STEP * fabs(p[j]) : RC_FIT_SENS_STEP;
+        memcpy(pl, p, (size_t)np * sizeof(double));
+        pl[j] = p[j] - h;
+        st = compile_p(fp, pl, &mlo[j], &e);
+        const double lo = pl[j];
+        pl[j] = p[j] + h;
+        if (!st) st = compile_p(fp, pl, &mhi[j], &e);
+        dp[j] = pl[j] - lo;
+    }
+    const int ny = m ? rc_model_state_size(m) : 0;
+    double *y = NULL, *s = NULL, *ya = NULL, *yb = NULL;
+    if (!st) {
+        y = malloc((size_t)fp->nt * (size_t)ny * sizeof(double));
+        s = malloc((size_t)fp->nt * (size_t)np * (size_t)ny * sizeof(double));
+        ya = malloc((size_t)ny * sizeof(double));
+        yb = malloc((size_t)ny * sizeof(double));
+        if (!y || !s || !ya || !yb) st = RC_ENOMEM;
+    }
+    /* the events, for the impacts' quantities */
+    enum { MAXEV = 256 };
+    double *evd = !st ? malloc((2 + 2 * (size_t)np) * MAXEV * sizeof(double)) : NULL;
+    int ev_id[MAXEV];
+    const char *ev_kind[MAXEV];
+    rc_sens_events ev = {MAXEV, 0, 0, evd, ev_id, ev_kind, evd + MAXEV, evd + MAXEV * (1 + (size_t)np),
+                         evd + MAXEV * (2 + (size_t)np), NULL, NULL};
+    rc_stats stats;
+    memset(&stats, 0, sizeof stats);
+    if (!st && !evd) st = RC_ENOMEM;
+    if (!st)
+        st = rc_sens_run(m, np, (const rc_model *const *)mlo, (const rc_model *const *)mhi, p, dp, fp->nt, fp->t, y, s,
+                         NULL, &ev, &stats, &e);
+    /* dr/du = d sim/dp dp/du / scale over the measured values */
+    int k = 0;
+    for (int i = 0; i < fp->nt && !st; i++) {
+        const double *yi = y + (size_t)i * (size_t)ny;
+        for (int q = 0; q < fp->ns && !st; q++) {
+            if (isnan(fp->meas[(size_t)i * (size_t)fp->ns + (size_t)q])) continue;
+            const double w = fp->weighted ? fp->sig[q].sigma : fp->sig[q].scale;
+            for (int j = 0; j < np && !st; j++) {
+                /* the body state's central difference along s */
+                const double *sj = s + ((size_t)i * (size_t)np + (size_t)j) * (size_t)ny;
+                double smax = 0.0, ymax = 1.0, der = 0.0;
+                for (int r = 0; r < ny; r++) {
+                    smax = fmax(smax, fabs(sj[r]));
+                    ymax = fmax(ymax, fabs(yi[r]));
+                }
+                if (smax > 0) {
+                    const double eps = 1e-7 * ymax / smax;
+                    double ba[13], bb[13];
+                    for (int r = 0; r < ny; r++) {
+                        ya[r] = yi[r] + eps * sj[r];
+                        yb[r] = yi[r] - eps * sj[r];
+                    }
+                    st = rc_model_body_state(m, ya, fp->sig[q].body, ba, &e);
+                    if (!st) st = rc_model_body_state(m, yb, fp->sig[q].body, bb, &e);
+                    der = (ba[quantity_slot[fp->sig[q].q]] - bb[quantity_slot[fp->sig[q].q]]) / (2.0 * eps);
+                }
+                gsl_matrix_set(J, (size_t)k, (size_t)j, der * dpdu[j] / w);
+            }
+            k++;
+        }
+    }
+    /* the impacts' quantities: the k-th impact of the interface (as
+     * simulate finds it), its events by their times: t_close and v_in at
+     * the contact_close, duration to the event at t_open, v_out = -dP/dt at
+     * the contact_separate that follows */
+    for (int g = 0; g < fp->nimp && !st; g++) {
+        const fit_imp *im = &fp->imp[g];
+        const rc_impact *h = NULL;
+        const int n = stats.impacts < RC_STATS_IMPACTS ? (int)stats.impacts : RC_STATS_IMPACTS;
+        for (int i = 0, seen = 0; i < n && !h; i++)
+            if (stats.impact[i].inter_id == im->inter && ++seen == im->k) h = &stats.impact[i];
+        int a = -1, b = -1, c = -1;
+        for (int i = 0; h && i < ev.n; i++) {
+            if (ev.inter_id[i] != im->inter) continue;
+            const double tol = 1e-12 * fmax(1.0, fabs(ev.t[i]));
+            if (a < 0 && !strcmp(ev.kind[i], "contact_close") && fabs(ev.t[i] - h->t_close) <= tol) a = i;
+            if (b < 0 && isfinite(h->t_open) && fabs(ev.t[i] - h->t_open) <= tol) b = i;
+            if (c < 0 && b >= 0 && !strcmp(ev.kind[i], "contact_separate")) c = i;
+        }
+        const int need = im->q == 1 ? b : im->q == 5 ? c : a;
+        if (!h || a < 0 || need < 0) {
+            st = RC_ESOLVER;
+            snprintf(e.msg, sizeof e.msg, "--jacobian sens: %s: its event%s not found among the run's events", im->label,
+                     h ? "" : " (the impact itself)");
+            break;
+        }
+        for (int j = 0; j < np; j++) {
+            const double *dt = ev.dtdp, *dv = ev.dvndp;
+            const double d = im->q == 0   ? dt[(size_t)a * (size_t)np + (size_t)j]
+                             : im->q == 1 ? dt[(size_t)b * (size_t)np + (size_t)j] - dt[(size_t)a * (size_t)np + (size_t)j]
+                             : im->q == 4 ? dv[(size_t)a * (size_t)np + (size_t)j]
+                                          : -dv[(size_t)c * (size_t)np + (size_t)j];
+            gsl_matrix_set(J, (size_t)k, (size_t)j, d * dpdu[j] / im->sigma);
+        }
+        k++;
+    }
+    free(evd);
+    free(y);
+    free(s);
+    free(ya);
+    free(yb);
+    rc_model_free(m);
+    for (int j = 0; j < np; j++) {
+        rc_model_free(mlo[j]);
+        rc_model_free(mhi[j]);
+    }
+    pthread_mutex_lock(&fp->lock);
+    fp->nsim++;
+    fp->sim_wall += wall_now() - t0;
+    if (st) {
+        fp->nsim_failed++;
+        if (!fp->first_failure[0]) snprintf(fp->first_failure, sizeof fp->first_failure, "%.1000s", e.msg);
+    }
+    pthread_mutex_unlock(&fp->lock);
+    return st ? GSL_EBADFUNC : GSL_SUCCESS;
+}
+
 /* Progress: one line per iteration on stderr. */
 static void fit_callback(const size_t iter, void *params, const gsl_multifit_nlinear_workspace *w)
 {
@@ -1005,10 +1170,15 @@ static void print_report(FILE *o, const fit_problem *fp, const fit_stats *S, con
         fprintf(o, "  %s: measured %.6g +- %.3g, fitted %.6g (%+.2f sigma)\n", g->label, g->value / g->to_si,
                 g->sigma / g->to_si, si[j] / g->to_si, (si[j] - g->value) / g->sigma);
     }
-    fprintf(o, "cost: %zu iterations, %zu residual and %zu Jacobian evaluations (%s differences, step %g), %ld "
-               "simulations (%ld failed), %.3f s wall (%.3f s of simulation over %d thread%s)\n",
-            iters, nfev, njev, fp->central ? "central" : "forward", fp->h, fp->nsim, fp->nsim_failed, wall, fp->sim_wall,
-            nth, nth > 1 ? "s" : "");
+    if (fp->sens)
+        fprintf(o, "cost: %zu iterations, %zu residual and %zu Jacobian evaluations (forward sensitivities, one run "
+                   "each), %ld simulations (%ld failed), %.3f s wall (%.3f s of simulation)\n",
+                iters, nfev, njev, fp->nsim, fp->nsim_failed, wall, fp->sim_wall);
+    else
+        fprintf(o, "cost: %zu iterations, %zu residual and %zu Jacobian evaluations (%s differences, step %g), %ld "
+                   "simulations (%ld failed), %.3f s wall (%.3f s of simulation over %d thread%s)\n",
+                iters, nfev, njev, fp->central ? "central" : "forward", fp->h, fp->nsim, fp->nsim_failed, wall,
+                fp->sim_wall, nth, nth > 1 ? "s" : "");
     if (fp->nsim_failed > 0) fprintf(o, "first failed simulation: %s\n", fp->first_failure);
     fprintf(o, "the deck with the fitted values: ricochet run %s", fp->deck);
     for (int k = 0; k < fp->nset; k++) fprintf(o, " --set %s", fp->set[k]);
@@ -1055,9 +1225,9 @@ static int write_json(const char *path, const fit_problem *fp, const fit_stats *
     fprintf(o, ",\n  \"status\": ");
     json_str(o, status);
     fprintf(o, ",\n  \"converged\": %s,\n  \"iterations\": %zu,\n  \"residual_evaluations\": %zu,\n"
-               "  \"jacobian_evaluations\": %zu,\n  \"simulations\": %ld,\n  \"failed_simulations\": %ld,\n"
-               "  \"wall_time\": ",
-            converged ? "true" : "false", iters, nfev, njev, fp->nsim, fp->nsim_failed);
+               "  \"jacobian_evaluations\": %zu,\n  \"jacobian\": \"%s\",\n  \"simulations\": %ld,\n"
+               "  \"failed_simulations\": %ld,\n  \"wall_time\": ",
+            converged ? "true" : "false", iters, nfev, njev, fp->sens ? "sens" : "fd", fp->nsim, fp->nsim_failed);
     json_num(o, wall);
     fprintf(o, ",\n  \"measured_values\": %d,\n  \"dof\": %d,\n  \"t_quantile\": ", fp->nres, S->dof);
     json_num(o, S->tq);
@@ -1221,6 +1391,9 @@ static void usage_fit(FILE *f)
             "  --max-iter N          at most N iterations (default 100)\n"
             "  --fd-step H           finite-difference step in the fitted variables (default 1e-4)\n"
             "  --forward             forward differences (p + 1 simulations per Jacobian, default central: 2p)\n"
+            "  --jacobian fd|sens    the Jacobian by finite differences (default) or from forward sensitivities in\n"
+            "                        one run per Jacobian (ricochet sens; with --impacts: t_close, duration, v_in,\n"
+            "                        v_out only; /SOLVER Method 1)\n"
             "  --jobs N              threads of the Jacobian (default: the processors online)\n"
             "  --max-rse X           a relative standard error above X reports the parameter UNIDENTIFIABLE\n"
             "                        (default 1, i.e. 100 %%)\n"
@@ -1288,6 +1461,13 @@ int rc_cli_fit(int argc, char **argv)
             fp->quiet = 1;
         } else if (!strcmp(a, "--forward")) {
             fp->central = 0;
+        } else if (is_opt(a, "--jacobian")) {
+            if (!(v = opt_value(argc, argv, &k, a, "--jacobian"))) return 2;
+            if (strcmp(v, "fd") && strcmp(v, "sens")) {
+                fprintf(stderr, "ricochet fit: --jacobian: expected fd or sens, got '%s'\n", v);
+                return 2;
+            }
+            fp->sens = !strcmp(v, "sens");
         } else if (is_opt(a, "--free") || is_opt(a, "--log")) {
             const char *nm = is_opt(a, "--free") ? "--free" : "--log";
             if (!(v = opt_value(argc, argv, &k, a, nm))) return 2;
@@ -1396,6 +1576,16 @@ int rc_cli_fit(int argc, char **argv)
     fp->weighted = fp->sig[0].sigma > 0;
     if (fp->impacts) {
         if ((rc = read_impacts(fp)) != 0) goto done;
+        /* --jacobian sens: the impacts' quantities that the events' derivatives give */
+        for (int j = 0; j < fp->nimp && fp->sens; j++) {
+            const int q = fp->imp[j].q;
+            if (q != 0 && q != 1 && q != 4 && q != 5) {
+                fprintf(stderr, "ricochet fit: %s: --jacobian sens: covers the impacts' t_close, duration, v_in and "
+                                "v_out, not %s (use --jacobian fd)\n", fp->impacts, impact_q[q].name);
+                rc = 2;
+                goto done;
+            }
+        }
         if (!fp->weighted) {
             fprintf(stderr, "ricochet fit: %s: --impacts: expected the signals' uncertainties in the header (e.g. "
                             "'body 1 z [m] +- 0.0005'), to weigh them against the impacts'\n", fp->data);
@@ -1456,7 +1646,7 @@ int rc_cli_fit(int argc, char **argv)
                    : fp->trs == 3 ? gsl_multifit_nlinear_trs_subspace2D
                                   : gsl_multifit_nlinear_trs_ddogleg;
         fdf.f = fit_f;
-        fdf.df = fit_df;
+        fdf.df = fp->sens ? fit_df_sens : fit_df;
         fdf.fvv = NULL;
         fdf.n = n;
         fdf.p = p;

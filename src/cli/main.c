@@ -10,6 +10,7 @@
 
 #include "ricochet/ricochet.h"
 #include "cli/fit.h"
+#include "cli/sens.h"
 
 /* --set options on one command line (docs/case-format.md) */
 #define RC_CLI_MAX_SET 256
@@ -26,6 +27,8 @@ static void usage(FILE *f)
             "                                            ParaView files (.pvd + binary .vtp)\n"
             "       ricochet fit CASE --data FILE.csv --free CARD:FIELD=START[,LO:HI]... [--log ...] [-o REPORT]\n"
             "                                            calibrate fields to measured signals (least squares)\n"
+            "       ricochet sens CASE --param CARD:FIELD=VALUE... --at T[,T...] [--out ID:Q]... [--check-fd]\n"
+            "                                            derivatives of body states w.r.t. fields (sensitivities)\n"
             "       ricochet study CASE --grid FILE [--scheduler ADDRESS] [-o STUDY.nc] ...\n"
             "                                            a parameter study on Dask (the Python module)\n"
             "       ricochet COMMAND --help              the options of a command\n"
@@ -382,6 +385,7 @@ int main(int argc, char **argv)
     if (!strcmp(argv[1], "export-vtk")) return export_vtk(argc, argv);
     if (!strcmp(argv[1], "study")) return study(argc, argv);
     if (!strcmp(argv[1], "fit")) return rc_cli_fit(argc, argv);
+    if (!strcmp(argv[1], "sens")) return rc_cli_sens(argc, argv);
     const char *cmd = argv[1], *case_path = NULL, *out = NULL;
     const int is_run = !strcmp(cmd, "run");
     if (!is_run && strcmp(cmd, "check")) {

@@ -49,6 +49,7 @@
 #include "solver/solver.h"
 #include "solver/common.h"
 #include "solver/integrator.h"
+#include "solver/sens.h"
 #include "engine/assembly/assembly.h"
 
 /* A jump in ydot whose effect over one step, relative to the error weight,
@@ -106,6 +107,8 @@ typedef struct run_ctx {
 static void cb_err(int code, const char *module, const char *function, char *msg, void *ud)
 {
     run_ctx *c = ud;
+    /* the library is CVODES (sens.h); the integrator is named as the backend */
+    if (module && !strcmp(module, "CVODES")) module = "CVODE";
     rc_bk_keep_error(c ? c->stop : NULL, c ? c->cvmsg : NULL, sizeof c->cvmsg, c ? &c->nwarn : NULL, code, module,
                      function, msg);
 }
@@ -755,4 +758,17 @@ void rc_cvode_versions(FILE *f)
 {
     fprintf(f, "SUNDIALS %s\nKLU %d.%d.%d (%s)\n", SUNDIALS_VERSION, KLU_MAIN_VERSION, KLU_SUB_VERSION,
             KLU_SUBSUB_VERSION, KLU_DATE);
+}
+
+/* ---- for the sensitivity backend (sens.h) ------------------------------ */
+const rc_backend *rc_cvode_backend(void) { return &cvode_backend; }
+size_t rc_cvode_self_size(void) { return sizeof(run_ctx); }
+void *rc_cvode_parts(void *self, int *nr, const int **kidx, double **yfull, void **sunctx)
+{
+    run_ctx *c = self;
+    *sunctx = c->ctx;
+    *nr = c->nr;
+    *kidx = c->kidx;
+    *yfull = c->yfull;
+    return c->cv;
 }

@@ -56,6 +56,7 @@ bad times "expected times \[s\] > 0, increasing" "$drop" --param /INTER/TYPE6/1:
 bad out "expected ID:Q" "$drop" --param /INTER/TYPE6/1:Visc=30 --at 0.1 --out 1:w
 bad field "no numeric field Fscale" "$drop" --param /INTER/TYPE6/1:Fscale=1 --at 0.1
 bad method "only /SOLVER Method 1 (CVODE)" validation/joint_pendulum/case.rad --param /GRAV/1:Fscale_y=-9.81 --at 0.1
+bad impvel_tstart "an /IMPVEL that starts after t = 0 (Tstart 0.15 s" validation/impvel_window/case.rad --param /IMPVEL/1:Fscale_y=0.55 --at 0.3
 
 # ricochet fit --jacobian sens: the drop's stiffness scale and damping from
 # a noisy trace, started 3x off: the same fit as with finite differences

@@ -64,6 +64,7 @@
 #include "engine/assembly/data.h"
 #include "engine/events/events.h"
 #include "model/model.h"
+#include "model/imposed.h"
 #include "solver/integrator.h"
 #include "solver/sens.h"
 #include "solver/solver.h"
@@ -680,6 +681,14 @@ rc_status rc_sens_run(const rc_model *m, int np, const rc_model *const *m_lo, co
         return RC_SET(err, RC_EINPUT, "sensitivities: only /SOLVER Method 1 (CVODE) is covered, the deck has Method %d",
                       m->method);
     if (m->preload) return RC_SET(err, RC_EINPUT, "sensitivities: a run from a preload (/SOLVER Preload 1) is not covered");
+    /* an imposed translation that starts later sets its velocity at a
+     * breakpoint (a jump of the state the sensitivities do not follow) */
+    for (int k = 0; m->imp && k < m->imp->nt; k++)
+        if (m->imp->ttstart[k] > 0)
+            return RC_SET(err, RC_EINPUT,
+                          "sensitivities: an /IMPVEL that starts after t = 0 (Tstart %g s on /RBODY/%d) is not covered "
+                          "(its velocity jumps at Tstart, a reset the sensitivities do not follow in this version)",
+                          m->imp->ttstart[k], m->body_id[m->imp->tbody[k]]);
     for (int i = 0; i < nt; i++)
         if (!(times[i] >= 0) || !isfinite(times[i]) || (i > 0 && !(times[i] > times[i - 1])) || !(times[nt - 1] > 0))
             return RC_SET(err, RC_EINPUT, "sensitivities: expected output times >= 0, finite and increasing, the last > 0, got "

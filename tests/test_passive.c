@@ -950,6 +950,24 @@ out:
 }
 
 
+
+/* Run a fuzzer regression deck to its end: exit 0 and fewer events than the
+ * Zeno guard's 200 (what, the line's label). */
+static void regression_runs_without_zeno(const char *path, const char *what)
+{
+    rc_model *m = TU_LOAD_OK(path);
+    if (!m) return;
+    rc_error e;
+    rc_run_options o;
+    memset(&o, 0, sizeof o);
+    rc_stats st;
+    const rc_status s = rc_run(m, &o, &st, &e);
+    printf("    %s: %s, %ld events, %ld steps; %s\n", what, s ? e.msg : "ok", st.events, st.steps, st.physics_note);
+    ENSURE(s == RC_OK);
+    ENSURE(st.events < 200);
+    rc_model_free(m);
+}
+
 /* A corner that sticks holds the force its spring has. A tilted box
  * striking a floor (TYPE6 friction per corner, K_t 2.2e10 N/m; a fuzzer
  * scene): a corner slides with its spring at ~600 N while the impact raises
@@ -961,18 +979,8 @@ out:
  * (Zeno at t = 1.19 s). */
 static void test_corner_stick_tested_with_its_spring(void)
 {
-    rc_model *m = TU_LOAD_OK("fuzz/physics/regressions/box_landing_corner_stick_tested_on_limit_zeno.rad");
-    if (!m) return;
-    rc_error e;
-    rc_run_options o;
-    memset(&o, 0, sizeof o);
-    rc_stats st;
-    const rc_status s = rc_run(m, &o, &st, &e);
-    printf("    tilted box landing with friction per corner: %s, %ld events, %ld steps; %s\n", s ? e.msg : "ok",
-           st.events, st.steps, st.physics_note);
-    ENSURE(s == RC_OK);
-    ENSURE(st.events < 200);
-    rc_model_free(m);
+    regression_runs_without_zeno("fuzz/physics/regressions/box_landing_corner_stick_tested_on_limit_zeno.rad",
+                                 "tilted box landing with friction per corner");
 }
 
 /* The reversal root of a saturated viscous friction law (v_t . d_ref) is
@@ -1159,18 +1167,8 @@ static void test_state_stiffness_beyond_resolution_refused(void)
  * land/slip repeated 200 times within 3e-10 s (Zeno at 3.2 ms). */
 static void test_landing_band_kept_through_flips(void)
 {
-    rc_model *m = TU_LOAD_OK("fuzz/physics/regressions/box_box_edge_pair_relands_at_rounding_zeno.rad");
-    if (!m) return;
-    rc_error e;
-    rc_run_options o;
-    memset(&o, 0, sizeof o);
-    rc_stats st;
-    const rc_status s = rc_run(m, &o, &st, &e);
-    printf("    box sliding on a box, edge pairs with friction: %s, %ld events, %ld steps\n", s ? e.msg : "ok",
-           st.events, st.steps);
-    ENSURE(s == RC_OK);
-    ENSURE(st.events < 200);
-    rc_model_free(m);
+    regression_runs_without_zeno("fuzz/physics/regressions/box_box_edge_pair_relands_at_rounding_zeno.rad",
+                                 "box sliding on a box, edge pairs with friction");
 }
 
 /* ---- an elastic law with a damper: hysteresis kept at its releases ---- */

@@ -486,6 +486,21 @@ static rc_status mesh_elements(const rc_case *c, mp_work *w, rc_error *err)
     return RC_OK;
 }
 
+
+/* A point mass mk [kg] at node n of body b: onto the body's main node when n
+ * is that node, else a point of the body's inertia about the main node. */
+static void node_mass(const rc_case *c, mp_work *w, int b, int n, double mk)
+{
+    const int mn = rc_case_find_node(c, c->rbody[b].node_id);
+    if (mn == n) {
+        w->main_add[b] += mk;
+        return;
+    }
+    double r[3];
+    for (int d = 0; d < 3; d++) r[d] = c->node[n].x[d] - (mn >= 0 ? c->node[mn].x[d] : 0);
+    add_point(&w->acc[b], r, mk);
+}
+
 /* /ADMAS: point masses on nodes of the bodies. */
 static rc_status nodal_masses(const rc_case *c, mp_work *w, rc_error *err)
 {
@@ -503,15 +518,7 @@ static rc_status nodal_masses(const rc_case *c, mp_work *w, rc_error *err)
                 RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /ADMAS/%d/%d, field grnd_ID: node %d of /GRNOD/%d %s: an added mass belongs to one rigid body",
                          RC_LOC(ad->line_loc), ad->type, ad->id, id, ad->grnod_id,
                          n < 0 ? "does not exist" : b < 0 ? "is in no rigid body" : "is in two rigid bodies");
-            const double mk = ad->type == 0 ? ad->mass : ad->mass / nn;
-            const int mn = rc_case_find_node(c, c->rbody[b].node_id);
-            if (mn == n) {
-                w->main_add[b] += mk;
-                continue;
-            }
-            double r[3];
-            for (int d = 0; d < 3; d++) r[d] = c->node[n].x[d] - (mn >= 0 ? c->node[mn].x[d] : 0);
-            add_point(&w->acc[b], r, mk);
+            node_mass(c, w, b, n, ad->type == 0 ? ad->mass : ad->mass / nn);
         }
     }
     return RC_OK;
@@ -535,14 +542,7 @@ static void spring_masses(const rc_case *c, mp_work *w)
             const int n = rc_case_find_node(c, se->nodes[j]);
             const int b = n >= 0 ? w->node_body[n] : -1;
             if (b < 0) continue;
-            const int mn = rc_case_find_node(c, c->rbody[b].node_id);
-            if (mn == n) {
-                w->main_add[b] += mk;
-                continue;
-            }
-            double r[3];
-            for (int d = 0; d < 3; d++) r[d] = c->node[n].x[d] - (mn >= 0 ? c->node[mn].x[d] : 0);
-            add_point(&w->acc[b], r, mk);
+            node_mass(c, w, b, n, mk);
         }
     }
 }

@@ -92,6 +92,12 @@ class Deck:
         """/SENSOR/TIME: on from t = Tdelay [s]."""
         self.add(f"/SENSOR/TIME/{sid}", line(("r", tdelay)), title=title)
 
+    def sensor_dist(self, sid, n1, n2, dmin=None, dmax=None, tdelay=None, title="distance sensor"):
+        """/SENSOR/DIST: on Tdelay [s] after the distance of nodes n1, n2 leaves [Dmin, Dmax] [m]
+        (None: blank; a blank bound is no bound)."""
+        self.add(f"/SENSOR/DIST/{sid}", line(("r", tdelay)), line(("i", n1), ("i", n2), ("r", dmin), ("r", dmax)),
+                 title=title)
+
     def inivel(self, iid, v, grnod, rot=False):
         self.add(f"/INIVEL/{'ROT' if rot else 'TRA'}/{iid}",
                  line(("r", v[0]), ("r", v[1]), ("r", v[2]), ("i", grnod), ("i", 0)), title="initial velocity")

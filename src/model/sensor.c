@@ -20,13 +20,18 @@
 #include "model/sensor.h"
 
 rc_status rc_sensor_tstart(const rc_case *c, int sensor_id, rc_loc loc, const char *card, double *tstart,
-                           double tstop, rc_error *err)
+                           double tstop, int *sens, rc_error *err)
 {
+    *sens = -1;
     if (sensor_id == 0) return RC_OK;
     const int k = rc_case_find_sensor(c, sensor_id);
     if (k < 0)
-        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field Isensor: expected the id of a /SENSOR/TIME, got %d (no such sensor)",
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field Isensor: expected the id of a /SENSOR/TIME or /SENSOR/DIST, got %d (no such sensor)",
                  RC_LOC(loc), card, sensor_id);
+    if (c->sensor[k].kind == RC_SENS_DIST) {
+        *sens = k; /* on at a time found in the run (its trigger plus Tdelay) */
+        return RC_OK;
+    }
     const double ts = c->sensor[k].tdelay;
     if (ts > *tstart) *tstart = ts;
     if (*tstart > tstop)
@@ -34,6 +39,65 @@ rc_status rc_sensor_tstart(const rc_case *c, int sensor_id, rc_loc loc, const ch
                  RC_LOCFMT "card %s, field Isensor: /SENSOR/TIME/%d turns the interface on at %.9g s, after its Tstop "
                  "%.9g s: it would never act; expected a sensor time before Tstop",
                  RC_LOC(loc), card, sensor_id, ts, tstop);
+    return RC_OK;
+}
+
+/* q (w, x, y, z) applied to v transposed: the body frame's coordinates of a global vector. */
+static void rot_t(const double *q, const double *v, double *o)
+{
+    const double w = q[0], u[3] = {-q[1], -q[2], -q[3]};
+    const double c[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const double cc[3] = {u[1] * c[2] - u[2] * c[1], u[2] * c[0] - u[0] * c[2], u[0] * c[1] - u[1] * c[0]};
+    for (int k = 0; k < 3; k++) o[k] = v[k] + 2.0 * (w * c[k] + cc[k]);
+}
+
+rc_status rc_sensor_compile(const rc_case *c, rc_model *m, rc_error *err)
+{
+    m->nsens = c->nsensor;
+    if (m->nsens == 0) return RC_OK;
+    const size_t n = (size_t)m->nsens + 1;
+    m->sens_id = calloc(n, sizeof *m->sens_id);
+    m->sens_kind = calloc(n, sizeof *m->sens_kind);
+    m->sens_tdelay = calloc(n, sizeof *m->sens_tdelay);
+    m->sens_body = calloc(2 * n, sizeof *m->sens_body);
+    m->sens_p = calloc(6 * n, sizeof *m->sens_p);
+    m->sens_d = calloc(2 * n, sizeof *m->sens_d);
+    if (!m->sens_id || !m->sens_kind || !m->sens_tdelay || !m->sens_body || !m->sens_p || !m->sens_d)
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    for (int k = 0; k < m->nsens; k++) {
+        const rc_case_sensor *s = &c->sensor[k];
+        m->sens_id[k] = s->id;
+        m->sens_kind[k] = (int)s->kind;
+        m->sens_tdelay[k] = s->tdelay;
+        m->sens_body[2 * k] = m->sens_body[2 * k + 1] = -1;
+        if (s->kind != RC_SENS_DIST) continue;
+        m->sens_d[2 * k] = s->dmin;
+        m->sens_d[2 * k + 1] = s->dmax;
+        for (int e = 0; e < 2; e++) {
+            const int j = rc_case_find_node(c, s->node[e]);
+            if (j < 0)
+                RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /SENSOR/DIST/%d, field node_ID%d: expected the id of a /NODE, got %d (no such node)",
+                         RC_LOC(s->line2_loc), s->id, e + 1, s->node[e]);
+            const int b = rc_case_body_of_node(c, s->node[e]);
+            /* the node in the model's coordinates (the origin's), then in its body's frame */
+            double x[3];
+            for (int i = 0; i < 3; i++) x[i] = c->node[j].x[i] - m->origin[i];
+            double *p = m->sens_p + 6 * k + 3 * e;
+            if (b < 0) {
+                for (int i = 0; i < 3; i++) p[i] = x[i];
+            } else {
+                const double *y0 = m->body_y0 + RC_NB * b;
+                const double r[3] = {x[0] - y0[0], x[1] - y0[1], x[2] - y0[2]};
+                rot_t(y0 + 3, r, p);
+            }
+            m->sens_body[2 * k + e] = b;
+        }
+        if (m->sens_body[2 * k] == m->sens_body[2 * k + 1])
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card /SENSOR/DIST/%d, field node_ID2: nodes %d and %d both belong to %s: their distance "
+                     "never changes; expected nodes of two different bodies (or one fixed in space)",
+                     RC_LOC(s->line2_loc), s->id, s->node[0], s->node[1], m->sens_body[2 * k] < 0 ? "no /RBODY (fixed in space)" : "one /RBODY");
+    }
     return RC_OK;
 }
 
@@ -91,6 +155,11 @@ rc_status rc_sensor_begin(const rc_case *c, rc_sensor_case *x, rc_error *err)
         const int k = rc_case_find_sensor(c, rb->sens_id);
         if (k < 0)
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field sens_ID: expected the id of a /SENSOR/TIME, got %d (no such sensor)",
+                     RC_LOC(l1), rb->id, rb->sens_id);
+        if (c->sensor[k].kind == RC_SENS_DIST)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card /RBODY/%d, field sens_ID: /SENSOR/DIST/%d: a body released by a distance sensor is "
+                     "not supported yet; expected a /SENSOR/TIME (a distance sensor activates interfaces: Isensor)",
                      RC_LOC(l1), rb->id, rb->sens_id);
         if (!(c->sensor[k].tdelay > 0)) continue; /* on from t = 0: free from the start */
         char what[64];

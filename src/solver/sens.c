@@ -131,6 +131,10 @@ static void copy_modes(const rc_model *m, const rc_data *src, rc_data *dst)
     memcpy(dst->inter_dref, src->inter_dref, 3 * ni * sizeof(double));
     memcpy(dst->inter_hacc, src->inter_hacc, 2 * ni * sizeof(double));
     memcpy(dst->inter_band, src->inter_band, 2 * ni * sizeof(double));
+    if (m->nsens > 0) {
+        memcpy(dst->sens_ton, src->sens_ton, (size_t)m->nsens * sizeof(double));
+        memcpy(dst->sens_new, src->sens_new, (size_t)m->nsens * sizeof(int));
+    }
     if (np > 0) {
         memcpy(dst->pt_slip, src->pt_slip, np * sizeof(int));
         memcpy(dst->pt_lband, src->pt_lband, np * sizeof(double));

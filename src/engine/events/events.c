@@ -420,8 +420,10 @@ static void modes_account(const rc_model *m, rc_data *d, double t, const double 
 void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y)
 {
     int changed = 0;
+    rc_sens_init(m, d, t, y); /* first: a sensor triggered at the start turns interfaces on */
     for (int i = 0; i < m->ninter; i++) {
-        int active = t >= m->inter_tstart[i] && t <= m->inter_tstop[i];
+        const double ton = m->inter_sens[i] < 0 ? m->inter_tstart[i] : rc_sens_inter_ton(m, d, i);
+        int active = t >= ton && t <= m->inter_tstop[i];
         d->inter_mode[i] = RC_MODE_INACTIVE;
         if (active) classify(m, d, i, t, y, &changed);
         d->inter_hacc[2 * i] = 0.0;
@@ -440,7 +442,8 @@ static rc_event_kind step_window(const rc_model *m, rc_data *d, int i, double t,
         d->inter_mode[i] = RC_MODE_INACTIVE; /* history frozen */
         return RC_EV_INTER_STOP;
     }
-    if (r[RC_ROOT_TSTART] > 0 && mode == RC_MODE_INACTIVE && t <= m->inter_tstop[i]) {
+    if (r[RC_ROOT_TSTART] > 0 && mode == RC_MODE_INACTIVE && t <= m->inter_tstop[i] &&
+        (m->inter_sens[i] < 0 || t >= rc_sens_inter_ton(m, d, i))) {
         classify(m, d, i, t, y, changed);
         return RC_EV_INTER_START;
     }
@@ -652,12 +655,45 @@ static void clear_settled(const rc_model *m, rc_data *d)
         if (d->inter_mode[i] != RC_MODE_CLOSED) d->inter_settled[i] = 0;
 }
 
+/* Distance sensors whose roots crossed trigger (latched): on at t +
+ * Tdelay; with no delay, the inactive interfaces they turn on start now
+ * (a delay: their start root crosses at the time on). Returns the
+ * interfaces' start events written into ev from n on. */
+static int sensors_apply(const rc_model *m, rc_data *d, double t, double *y, const int *roots, rc_event *ev,
+                         int max_ev, int n, int *restart)
+{
+    const int *r = roots + rc_root_sens_base(m);
+    int any = 0;
+    for (int k = 0; k < m->nsens; k++)
+        if ((r[2 * k] || r[2 * k + 1]) && !isfinite(d->sens_ton[k])) {
+            d->sens_ton[k] = t + m->sens_tdelay[k];
+            d->sens_new[k] = 1;
+            any = 1;
+            *restart = 1; /* its roots leave the set: start afresh */
+        }
+    if (!any) return n;
+    for (int i = 0; i < m->ninter; i++) {
+        const int s = m->inter_sens[i];
+        if (s < 0 || !d->sens_new[s] || d->inter_mode[i] != RC_MODE_INACTIVE || t < rc_sens_inter_ton(m, d, i) ||
+            t > m->inter_tstop[i])
+            continue;
+        classify(m, d, i, t, y, restart);
+        if (n < max_ev) {
+            ev[n].inter = i;
+            ev[n].kind = RC_EV_INTER_START;
+        }
+        n++;
+    }
+    return n;
+}
+
 int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const int *roots, rc_event *ev,
                     int max_ev, int *restart)
 {
     int n = 0;
     *restart = 0;
     modes_remember(m, d);
+    if (m->nsens > 0) n = sensors_apply(m, d, t, y, roots, ev, max_ev, n, restart);
     for (int i = 0; i < m->ninter; i++) {
         const int *r = roots + RC_ROOTS_PER_INTER * i;
         int any = 0;

@@ -180,8 +180,7 @@ static void test_sensor_dist_run(void)
         double t = -1, v[3] = {0}, ts = -1, tcl = -1;
         ENSURE(ev_first(&ev, "sensor_trigger", &t, v) == 1);
         ENSURE_NEAR(t, cs[k].ttrig, 1e-10, 0);
-        ENSURE_NEAR(v[0], cs[k].ttrig + cs[k].td, 1e-10, 0); /* the time on */
-        ENSURE_NEAR(v[1], cs[k].dmax > 0 ? cs[k].dmax : cs[k].dmin, 1e-9, 0); /* the distance */
+        ENSURE(isnan(v[0]) && isnan(v[1]) && isnan(v[2])); /* not an interface */
         ENSURE(ev_first(&ev, "inter_start", &ts, NULL) == 1);
         ENSURE_NEAR(ts, cs[k].ttrig + cs[k].td, 1e-10, 0);
         /* on before the meeting: contact at the free-fall time; after it

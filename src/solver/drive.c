@@ -97,8 +97,7 @@ void rc_bk_root_directions(const rc_model *m, const rc_data *d, int *dir)
 }
 
 /* The distance sensors triggered since the last call: their events
- * (element /SENSOR/DIST/id; values: the time on and the distance), then
- * cleared. */
+ * (element /SENSOR/DIST/id; no interface values), then cleared. */
 static rc_status sensor_events(const rc_model *m, rc_data *d, ev_sink *k, double t, const double *y, long *count,
                                rc_error *err)
 {
@@ -107,9 +106,8 @@ static rc_status sensor_events(const rc_model *m, rc_data *d, ev_sink *k, double
         d->sens_new[s] = 0;
         char el[48];
         snprintf(el, sizeof el, "/SENSOR/DIST/%d", m->sens_id[s]);
-        const double v[3] = {d->sens_ton[s], rc_sens_distance(m, s, y), NAN};
         (*count)++;
-        rc_status st = rc_bk_sink_event(k, t, RC_EV_SENSOR_TRIGGER, el, v, err);
+        rc_status st = rc_bk_sink_event(k, t, RC_EV_SENSOR_TRIGGER, el, NULL, err);
         if (st) return st;
     }
     return RC_OK;

@@ -98,6 +98,10 @@ class Deck:
         self.add(f"/SENSOR/DIST/{sid}", line(("r", tdelay)), line(("i", n1), ("i", n2), ("r", dmin), ("r", dmax)),
                  title=title)
 
+    def sensor_logic(self, kind, sid, s1, s2, tdelay=None, title="logic sensor"):
+        """/SENSOR/AND or /SENSOR/OR (kind): on Tdelay [s] after both (either) of sensors s1, s2 are on."""
+        self.add(f"/SENSOR/{kind}/{sid}", line(("r", tdelay)), line(("i", s1), ("i", s2)), title=title)
+
     def inivel(self, iid, v, grnod, rot=False):
         self.add(f"/INIVEL/{'ROT' if rot else 'TRA'}/{iid}",
                  line(("r", v[0]), ("r", v[1]), ("r", v[2]), ("i", grnod), ("i", 0)), title="initial velocity")

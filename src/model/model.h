@@ -224,15 +224,18 @@ struct rc_model {
      * on a body or fixed in space, through two root functions (at
      * rc_root_sens_base: d - Dmax and Dmin - d, rising through 0) until it
      * triggers; time sensors (kind 0) have none (their time is compiled
-     * into the Tstart of what they activate) */
+     * into the Tstart of what they activate), nor logic sensors (kinds 2,
+     * 3: their time on follows their inputs', engine/assembly/sensors.c) */
     int nsens;
     int *sens_id;        /* [nsens] sens_ID */
-    int *sens_kind;      /* [nsens] rc_case_sensor_kind */
+    int *sens_kind;      /* [nsens] rc_case_sensor_kind (0 TIME, 1 DIST, 2 AND, 3 OR) */
+    int *sens_in;        /* [2*nsens] AND, OR: the input sensors' indices (-1: none) */
     double *sens_tdelay; /* [nsens] [s] */
     int *sens_body;      /* [2*nsens] the points' bodies (-1: fixed in space) */
     double *sens_p;      /* [6*nsens] the points in their bodies' frames [m] */
     double *sens_d;      /* [2*nsens] Dmin, Dmax [m] (0: no such bound) */
-    int *inter_sens;     /* [ninter] the distance sensor that turns interface i on, -1: none */
+    int *inter_sens;     /* [ninter] the sensor found in the run (a distance sensor, or a logic
+                            sensor of one) that turns interface i on, -1: none */
 
     /* analytic surfaces */
     int nsurf;

@@ -13,6 +13,10 @@ z0 = 1 m above the centre of the fixed ball B (R = 0.05 m); an
    starts Tdelay later (before the meeting), same meeting.
 3. Too late: as 1 with Tdelay = 0.3 s: on after A has passed through B's
    centre (no overlap then): no contact, free fall to the end.
+4. AND: the sensor of 1 and a time sensor at 0.3 s, Tdelay 0.045 s: the
+   interface on at 0.345 s (the later of the two, plus the delay).
+5. OR: the sensor of 2 without delay and a time sensor at 0.4 s: on at
+   the trigger, 0.319 s (the earlier).
 """
 import math
 import os
@@ -31,7 +35,7 @@ DMAX, DMIN = 0.2, 0.5             # the sensors' bounds [m]
 TEND = 0.6
 
 
-def falling(name, n2, dmin, dmax, tdelay):
+def falling(name, n2, dmin, dmax, tdelay, logic=None):
     d = Deck(f"ball falling onto a fixed ball, contact on by a distance sensor ({name})")
     d.nodes([(1, 0.0, 0.0, Z0), (2, 0.0, 0.0, 0.0), (3, 0.0, 0.0, Z0)])
     d.rbody(1, 1, M, [J] * 3, grnod=1, title="A")
@@ -42,7 +46,12 @@ def falling(name, n2, dmin, dmax, tdelay):
     d.sphere(1, 1, (0.0, 0.0, Z0), R)
     d.sphere(2, 2, (0.0, 0.0, 0.0), R)
     d.sensor_dist(5, 1, n2, dmin=dmin, dmax=dmax, tdelay=tdelay, title="distance sensor")
-    d.power(1, 1, 2, k=1e7, m1=1.5, isensor=5, title="A on B, Isensor 5")
+    isensor = 5
+    if logic:  # (kind, time sensor's Tdelay, own Tdelay): sensor 7 = kind(5, 6)
+        d.sensor_time(6, logic[1], title="time sensor")
+        d.sensor_logic(logic[0], 7, 5, 6, tdelay=logic[2], title=f"{logic[0]} of 5 and 6")
+        isensor = 7
+    d.power(1, 1, 2, k=1e7, m1=1.5, isensor=isensor, title=f"A on B, Isensor {isensor}")
     d.grav(1, "Z", -G, grnod=1)
     d.run(TEND, 0.01)
     return d
@@ -51,13 +60,19 @@ def falling(name, n2, dmin, dmax, tdelay):
 def cases():
     return {"dmax.rad": falling("Dmax", 3, None, DMAX, None),
             "dmin_delay.rad": falling("Dmin, Tdelay", 2, DMIN, None, 0.1),
-            "late.rad": falling("too late", 3, None, DMAX, 0.3)}
+            "late.rad": falling("too late", 3, None, DMAX, 0.3),
+            "and.rad": falling("AND of Dmax and a time", 3, None, DMAX, None, logic=("AND", 0.3, 0.045)),
+            "or.rad": falling("OR of Dmin and a time", 2, DMIN, None, None, logic=("OR", 0.4, 0.0))}
 
 
 def main():
     tc_ref = math.sqrt(2 * (Z0 - 2 * R) / G)
     for name, t_trig, td in (("dmax", math.sqrt(2 * DMAX / G), 0.0), ("dmin_delay", math.sqrt(2 * (Z0 - DMIN) / G), 0.1),
-                             ("late", math.sqrt(2 * DMAX / G), 0.3)):
+                             ("late", math.sqrt(2 * DMAX / G), 0.3),
+                             # AND: on 0.045 s after the later of the trigger and 0.3 s
+                             ("and", math.sqrt(2 * DMAX / G), 0.3 + 0.045 - math.sqrt(2 * DMAX / G)),
+                             # OR: on at the earlier of the trigger and 0.4 s
+                             ("or", math.sqrt(2 * (Z0 - DMIN) / G), 0.0)):
         r = rcval.Result(rcval.run(cases()[name + ".rad"], name))
         ts = r.events("sensor_trigger")
         e = rcval.rel(ts[0], t_trig) if len(ts) == 1 else 1.0

@@ -95,6 +95,8 @@ void rc_sens_roots(const rc_model *m, const rc_data *d, const double *y, double 
 int rc_sens_root_live(const rc_model *m, int j);
 double rc_sens_inter_ton(const rc_model *m, const rc_data *d, int i);
 void rc_sens_init(const rc_model *m, rc_data *d, double t, const double *y);
+/* The logic sensors' (AND, OR) times on from their inputs' (after a trigger). */
+void rc_sens_propagate(const rc_model *m, rc_data *d);
 /* Evaluate one interface at (t, y) in the given modes, for reports, roots
  * and events; contact points with friction all take the mode `slip`. */
 void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, double t,

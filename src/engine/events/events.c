@@ -656,8 +656,9 @@ static void clear_settled(const rc_model *m, rc_data *d)
 }
 
 /* Distance sensors whose roots crossed trigger (latched): on at t +
- * Tdelay; with no delay, the inactive interfaces they turn on start now
- * (a delay: their start root crosses at the time on). Returns the
+ * Tdelay, and the logic sensors of them follow; the inactive interfaces
+ * that reach their time on now start now (a later time on: their start
+ * root crosses then). Returns the
  * interfaces' start events written into ev from n on. */
 static int sensors_apply(const rc_model *m, rc_data *d, double t, double *y, const int *roots, rc_event *ev,
                          int max_ev, int n, int *restart)
@@ -672,10 +673,10 @@ static int sensors_apply(const rc_model *m, rc_data *d, double t, double *y, con
             *restart = 1; /* its roots leave the set: start afresh */
         }
     if (!any) return n;
+    rc_sens_propagate(m, d); /* the logic sensors of those */
     for (int i = 0; i < m->ninter; i++) {
         const int s = m->inter_sens[i];
-        if (s < 0 || !d->sens_new[s] || d->inter_mode[i] != RC_MODE_INACTIVE || t < rc_sens_inter_ton(m, d, i) ||
-            t > m->inter_tstop[i])
+        if (s < 0 || d->inter_mode[i] != RC_MODE_INACTIVE || t < rc_sens_inter_ton(m, d, i) || t > m->inter_tstop[i])
             continue;
         classify(m, d, i, t, y, restart);
         if (n < max_ev) {

@@ -549,6 +549,20 @@ TL('rbody_sensor_dist', '/RBODY/1', 'not supported yet',
    lambda lines: at('/RBODY/1', 2, 11, 20, '5')(before_end(SDIST())(lines)[0]))
 
 
+# ---- /SENSOR/AND, /SENSOR/OR, /SENSOR/NOT
+SLOG = '/SENSOR/AND/8'
+TL('sensor_and_input_missing', SLOG, 'field sens_ID2',
+   before_end(SENS + [SLOG, 'both', '                   0', '         4         9'], expect=6))
+TL('sensor_and_cycle', SLOG, 'form a cycle',
+   before_end(SENS + [SLOG, 'both', '                   0', '         4         8'], expect=6))
+TL('sensor_or_missing_line', '/SENSOR/OR/8', 'expected 2 data lines',
+   before_end(['/SENSOR/OR/8', 'either', '                   0'], expect=0))
+TL('sensor_and_input_zero', SLOG, 'field sens_ID1',
+   before_end([SLOG, 'both', '                   0', '         0         4'] + SENS, expect=3))
+TL('sensor_not', '/SENSOR/NOT/8', 'not supported yet',
+   before_end(SENS + ['/SENSOR/NOT/8', 'not', '                   0', '         4'], expect=3))
+
+
 def write_all():
     for old in glob.glob('[0-9][0-9][0-9]_*'):
         os.remove(old)

@@ -211,6 +211,80 @@ static void test_sensor_dist_run(void)
     rc_model_free(m);
 }
 
+/* text with `cards` inserted before /END and every "what" replaced by "with" (static buffer). */
+static const char *edit_deck(const char *text, const char *cards, const char *what, const char *with)
+{
+    static char out[8192];
+    char tmp[8192];
+    snprintf(tmp, sizeof tmp, "%s", text);
+    char *e = strstr(tmp, "/END");
+    if (!e) return text;
+    *e = '\0';
+    const size_t a = strlen(tmp), b = strlen(cards);
+    if (a + b + 6 > sizeof out) return text;
+    memcpy(out, tmp, a);
+    memcpy(out + a, cards, b);
+    memcpy(out + a + b, "/END\n", 6);
+    if (what) {
+        char *w = strstr(out, what);
+        if (w && strlen(what) == strlen(with)) memcpy(w, with, strlen(with));
+    }
+    return out;
+}
+
+static void test_sensor_logic(void)
+{
+    /* over time sensors: folded when compiling (AND: the later plus its
+     * delay, OR: the earlier plus its delay) */
+    const char *base = sensor_deck(2022, 0, 7, 0.2, 0.3);
+    static const char *const cards[] = {"/SENSOR/AND/7\nboth\n0.05\n         1         2\n",
+                                        "/SENSOR/OR/7\neither\n0.05\n         1         2\n"};
+    const double want[] = {0.35, 0.25};
+    for (int k = 0; k < 2; k++) {
+        rc_model *m = TU_COMPILE_OK(edit_deck(base, cards[k], NULL, NULL), "logic1.rad");
+        if (m) {
+            ENSURE(m->ninter == 1 && m->inter_sens[0] == -1);
+            ENSURE_NEAR(m->inter_tstart[0], want[k], 1e-15, 0);
+            ENSURE(m->nsens == 3 && m->sens_kind[2] == 2 + k && m->sens_in[4] == 0 && m->sens_in[5] == 1);
+        }
+        rc_model_free(m);
+    }
+    /* over a distance sensor that never triggers (Dmax 5 m): AND never on,
+     * OR on at its time input (0.3 s), followed in the run */
+    static const char *const dcards[] = {"/SENSOR/TIME/6\nt\n0.3\n/SENSOR/AND/7\nboth\n\n         5         6\n",
+                                         "/SENSOR/TIME/6\nt\n0.3\n/SENSOR/OR/7\neither\n\n         5         6\n"};
+    for (int k = 0; k < 2; k++) {
+        const char *text = edit_deck(dist_deck(3, 0, 5.0, 0.0, ""), dcards[k], "0         0         5\n",
+                                     "0         0         7\n");
+        rc_model *m = TU_COMPILE_OK(text, "logic2.rad");
+        if (!m) continue;
+        ENSURE(m->inter_sens[0] == 2); /* the logic sensor, found in the run */
+        static tu_evlog ev;
+        memset(&ev, 0, sizeof ev);
+        rc_error e;
+        rc_error_clear(&e);
+        rc_run_options o = {.on_event = tu_evlog_event, .user = &ev};
+        ENSURE(rc_run(m, &o, NULL, &e) == RC_OK);
+        double t = -1;
+        ENSURE(ev_first(&ev, "sensor_trigger", &t, NULL) == 0);
+        const int n = ev_first(&ev, "inter_start", &t, NULL);
+        if (k == 0) {
+            ENSURE(n == 0);
+        } else {
+            ENSURE(n == 1);
+            ENSURE_NEAR(t, 0.3, 1e-12, 0);
+        }
+        rc_model_free(m);
+    }
+    /* a body held by a logic sensor of time sensors: until its folded time */
+    rc_model *m = TU_COMPILE_OK(edit_deck(sensor_deck(2022, 7, 0, 0.2, 0.3), cards[0], NULL, NULL), "logic3.rad");
+    if (m) {
+        ENSURE(m->imp != NULL);
+        if (m->imp) ENSURE_NEAR(m->imp->ttstop[0], 0.35, 1e-15, 0);
+    }
+    rc_model_free(m);
+}
+
 void suite_sensor(void);
 void suite_sensor(void)
 {
@@ -218,4 +292,5 @@ void suite_sensor(void)
     RUN_TEST(test_sensor_dist_read);
     RUN_TEST(test_sensor_dist_compile);
     RUN_TEST(test_sensor_dist_run);
+    RUN_TEST(test_sensor_logic);
 }

@@ -276,6 +276,27 @@ static void test_sensor_logic(void)
         }
         rc_model_free(m);
     }
+    /* an interface start on an output time (0.35 s, outputs every 0.01 s):
+     * its contact still closes at the free-fall time */
+    {
+        const char *text = edit_deck(dist_deck(3, 0, 5.0, 0.0, ""), "/SENSOR/TIME/6\nt\n0.35\n",
+                                     "0         0         5\n", "0         0         6\n");
+        rc_model *m6 = TU_COMPILE_OK(text, "logic4.rad");
+        if (m6) {
+            static tu_evlog ev;
+            memset(&ev, 0, sizeof ev);
+            rc_error e;
+            rc_error_clear(&e);
+            rc_run_options o = {.on_event = tu_evlog_event, .user = &ev};
+            ENSURE(rc_run(m6, &o, NULL, &e) == RC_OK);
+            double t = -1;
+            ENSURE(ev_first(&ev, "inter_start", &t, NULL) == 1);
+            ENSURE_NEAR(t, 0.35, 1e-15, 0);
+            ENSURE(ev_first(&ev, "contact_close", &t, NULL) >= 1);
+            ENSURE_NEAR(t, sqrt(2 * 0.9 / 9.81), 1e-10, 0);
+        }
+        rc_model_free(m6);
+    }
     /* a body held by a logic sensor of time sensors: until its folded time */
     rc_model *m = TU_COMPILE_OK(edit_deck(sensor_deck(2022, 7, 0, 0.2, 0.3), cards[0], NULL, NULL), "logic3.rad");
     if (m) {

@@ -445,6 +445,10 @@ static rc_event_kind step_window(const rc_model *m, rc_data *d, int i, double t,
     if (r[RC_ROOT_TSTART] > 0 && mode == RC_MODE_INACTIVE && t <= m->inter_tstop[i] &&
         (m->inter_sens[i] < 0 || t >= rc_sens_inter_ton(m, d, i))) {
         classify(m, d, i, t, y, changed);
+        /* and the integrator restarts: continued without a restart, an
+         * interface whose start fell on an output time (Tstart 0.35 s,
+         * outputs every 0.01 s) never saw its contact close */
+        *changed = 1;
         return RC_EV_INTER_START;
     }
     /* Inacti 5 tracking: the full Gap is back, or the bodies approach again */

@@ -87,16 +87,13 @@ int rc_roots_live(const rc_model *m, double tend, int *live);
  * [m]; its two roots (d - Dmax, Dmin - d; -1 for a bound not given, a time
  * sensor, a sensor triggered) into g[2k], g[2k+1]; whether root j of the
  * sensors' block can change sign; the time interface i turns on (its
- * Tstart, or later its distance sensor's time on: INFINITY until that
- * triggers); the sensors' state at the start (one out of its bounds then
- * triggers at t). */
+ * Tstart, or later its run-time sensor's time on: INFINITY until known;
+ * the times on are set in engine/events). */
 double rc_sens_distance(const rc_model *m, int k, const double *y);
 void rc_sens_roots(const rc_model *m, const rc_data *d, const double *y, double *g);
 int rc_sens_root_live(const rc_model *m, int j);
 double rc_sens_inter_ton(const rc_model *m, const rc_data *d, int i);
-void rc_sens_init(const rc_model *m, rc_data *d, double t, const double *y);
-/* The logic sensors' (AND, OR) times on from their inputs' (after a trigger). */
-void rc_sens_propagate(const rc_model *m, rc_data *d);
+
 /* Evaluate one interface at (t, y) in the given modes, for reports, roots
  * and events; contact points with friction all take the mode `slip`. */
 void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, double t,

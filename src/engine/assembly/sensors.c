@@ -48,39 +48,3 @@ double rc_sens_inter_ton(const rc_model *m, const rc_data *d, int i)
     const int s = m->inter_sens[i];
     return s < 0 ? m->inter_tstart[i] : fmax(m->inter_tstart[i], d->sens_ton[s]);
 }
-
-void rc_sens_propagate(const rc_model *m, rc_data *d)
-{
-    /* a logic sensor is on when both (either) of its inputs are, plus its
-     * delay; the inputs' times on only ever go from INFINITY to a value
-     * that stays, so nsens passes settle any chain (no cycles: compile) */
-    for (int pass = 0; pass < m->nsens; pass++) {
-        int changed = 0;
-        for (int k = 0; k < m->nsens; k++) {
-            if (m->sens_kind[k] != 2 && m->sens_kind[k] != 3) continue;
-            const double a = d->sens_ton[m->sens_in[2 * k]], b = d->sens_ton[m->sens_in[2 * k + 1]];
-            const double v = (m->sens_kind[k] == 2 ? fmax(a, b) : fmin(a, b)) + m->sens_tdelay[k];
-            if (v != d->sens_ton[k]) {
-                d->sens_ton[k] = v;
-                changed = 1;
-            }
-        }
-        if (!changed) break;
-    }
-}
-
-void rc_sens_init(const rc_model *m, rc_data *d, double t, const double *y)
-{
-    for (int k = 0; k < m->nsens; k++) {
-        d->sens_new[k] = 0;
-        d->sens_ton[k] = m->sens_kind[k] == 0 ? m->sens_tdelay[k] : INFINITY;
-        if (m->sens_kind[k] != 1) continue;
-        /* out of its bounds at the start: triggered then */
-        const double dist = rc_sens_distance(m, k, y), *b = m->sens_d + 2 * k;
-        if ((b[1] > 0 && dist > b[1]) || (b[0] > 0 && dist < b[0])) {
-            d->sens_ton[k] = t + m->sens_tdelay[k];
-            d->sens_new[k] = 1;
-        }
-    }
-    rc_sens_propagate(m, d);
-}

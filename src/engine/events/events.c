@@ -417,10 +417,49 @@ static void modes_account(const rc_model *m, rc_data *d, double t, const double 
     }
 }
 
+/* The logic sensors' (AND, OR) times on from their inputs'. */
+static void sens_propagate(const rc_model *m, rc_data *d)
+{
+    /* a logic sensor is on when both (either) of its inputs are, plus its
+     * delay; the inputs' times on only ever go from INFINITY to a value
+     * that stays, so nsens passes settle any chain (no cycles: compile) */
+    for (int pass = 0; pass < m->nsens; pass++) {
+        int changed = 0;
+        for (int k = 0; k < m->nsens; k++) {
+            if (m->sens_kind[k] != 2 && m->sens_kind[k] != 3) continue;
+            const double a = d->sens_ton[m->sens_in[2 * k]], b = d->sens_ton[m->sens_in[2 * k + 1]];
+            const double v = (m->sens_kind[k] == 2 ? fmax(a, b) : fmin(a, b)) + m->sens_tdelay[k];
+            if (v != d->sens_ton[k]) {
+                d->sens_ton[k] = v;
+                changed = 1;
+            }
+        }
+        if (!changed) break;
+    }
+}
+
+/* The sensors' times on at the start: time sensors' Tdelay, a distance
+ * sensor out of its bounds then triggered at t, the logic sensors of them. */
+static void sens_init(const rc_model *m, rc_data *d, double t, const double *y)
+{
+    for (int k = 0; k < m->nsens; k++) {
+        d->sens_new[k] = 0;
+        d->sens_ton[k] = m->sens_kind[k] == 0 ? m->sens_tdelay[k] : INFINITY;
+        if (m->sens_kind[k] != 1) continue;
+        /* out of its bounds at the start: triggered then */
+        const double dist = rc_sens_distance(m, k, y), *b = m->sens_d + 2 * k;
+        if ((b[1] > 0 && dist > b[1]) || (b[0] > 0 && dist < b[0])) {
+            d->sens_ton[k] = t + m->sens_tdelay[k];
+            d->sens_new[k] = 1;
+        }
+    }
+    sens_propagate(m, d);
+}
+
 void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y)
 {
     int changed = 0;
-    rc_sens_init(m, d, t, y); /* first: a sensor triggered at the start turns interfaces on */
+    sens_init(m, d, t, y); /* first: a sensor triggered at the start turns interfaces on */
     for (int i = 0; i < m->ninter; i++) {
         const double ton = m->inter_sens[i] < 0 ? m->inter_tstart[i] : rc_sens_inter_ton(m, d, i);
         int active = t >= ton && t <= m->inter_tstop[i];
@@ -677,7 +716,7 @@ static int sensors_apply(const rc_model *m, rc_data *d, double t, double *y, con
             *restart = 1; /* its roots leave the set: start afresh */
         }
     if (!any) return n;
-    rc_sens_propagate(m, d); /* the logic sensors of those */
+    sens_propagate(m, d); /* the logic sensors of those */
     for (int i = 0; i < m->ninter; i++) {
         const int s = m->inter_sens[i];
         if (s < 0 || d->inter_mode[i] != RC_MODE_INACTIVE || t < rc_sens_inter_ton(m, d, i) || t > m->inter_tstop[i])

@@ -157,5 +157,5 @@ void rc_power_print(const rc_model *m, int i, FILE *f)
     fprintf(f, " m3 %.5g, ", pw->m3);
     if (pw->rdf == 1.0) fprintf(f, "RDF off");
     else fprintf(f, "RDF %.5g", pw->rdf);
-    fprintf(f, ", Tstart %.5g, Tstop %.5g\n", m->inter_tstart[i], m->inter_tstop[i]);
+    fprintf(f, ", Tstart %.5g, Tstop %.5g%s\n", m->inter_tstart[i], m->inter_tstop[i], rc_sensor_note(m, i));
 }

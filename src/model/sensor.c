@@ -283,6 +283,17 @@ rc_status rc_sensor_begin(const rc_case *c, rc_sensor_case *x, rc_error *err)
     return st;
 }
 
+const char *rc_sensor_note(const rc_model *m, int i)
+{
+    static char buf[96];
+    const int k = m->inter_sens ? m->inter_sens[i] : -1;
+    if (k < 0) return "";
+    const int kind = m->sens_kind[k];
+    snprintf(buf, sizeof buf, ", on by /SENSOR/%s/%d (time found in the run)", kind >= 0 && kind < 4 ? kind_name[kind] : "?",
+             m->sens_id[k]);
+    return buf;
+}
+
 void rc_sensor_end(rc_sensor_case *x)
 {
     if (x->impvel) rc_case_index_free(x->c.index); /* the copy's own (rc_sensor_begin) */

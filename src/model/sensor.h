@@ -43,5 +43,9 @@ rc_status rc_sensor_tstart(const rc_case *c, int sensor_id, rc_loc loc, const ch
  * nodes' line for a node that does not exist, or two nodes of one body
  * (or both fixed in space). */
 rc_status rc_sensor_compile(const rc_case *c, rc_model *m, rc_error *err);
+/* For the model summary: ", on by /SENSOR/<kind>/<id> (time found in the
+ * run)" for an interface under a run-time sensor, "" otherwise (a static
+ * buffer). */
+const char *rc_sensor_note(const rc_model *m, int i);
 
 #endif

@@ -76,7 +76,7 @@ class Deck:
               sfric=None, fric=None, fct_ff=0, fct_fv=0, e_target=None, v_imp=None, istick=None, fric_s=None,
               isensor=None, title="contact"):
         """istick, fric_s: ricochet's exact stick (line 3 columns 1-10, line 5
-        columns 11-20, a 10-column real); isensor: the /SENSOR/TIME that turns
+        columns 11-20, a 10-column real); isensor: the /SENSOR that turns
         the interface on (line 1 columns 21-30)."""
         fs = "" if fric_s is None else f"{fric_s:>10.6g}"
         self.add(f"/INTER/TYPE6/{iid}",

@@ -83,5 +83,235 @@ static void test_sensor_compile(void)
     rc_case_free(c);
 }
 
+/* Ball A (node 1, /RBODY/1) falls from z = 1 m onto the fixed ball B
+ * (node 2, /RBODY/2 held by /BCS); node 3 is fixed in space at A's start;
+ * /SENSOR/DIST/5 between nodes 1 and n2 (Dmin, Dmax, Tdelay) turns the
+ * /INTER/POWER between them on; the input units `units` (a /BEGIN line). */
+static const char *dist_deck(int n2, double dmin, double dmax, double tdelay, const char *units)
+{
+    static char text[4096];
+    snprintf(text, sizeof text,
+             "/BEGIN\ndistance sensor\n      2022         0\n%s\n                  kg                   m                   s\n"
+             "/NODE\n1,0,0,1\n2,0,0,0\n3,0,0,1\n"
+             "/RBODY/1\nA\n         1                                                 1         1\n0.001,0.001,0.001\n0,0,0\n"
+             "/RBODY/2\nB\n         2                                                 1         2\n0.001,0.001,0.001\n0,0,0\n"
+             "/GRNOD/NODE/1\nA\n1\n/GRNOD/NODE/2\nB\n2\n/BCS/1\nB fixed\n   111 111         0         2\n"
+             "/SURF/ELLIPS/1\nA\n0,2,1\n0,0,1\n0.05,0.05,0.05\n/SURF/ELLIPS/2\nB\n0,2,2\n0,0,0\n0.05,0.05,0.05\n"
+             "/SENSOR/DIST/5\nsensor\n%20.12g\n         1%10d%20.12g%20.12g\n"
+             "/INTER/POWER/1\nA on B\n         1         2         0         0         0         0         5\n"
+             "            10000000                 1.5\n\n\n"
+             "/GRAV/1\ng\n         0         Z         0         0         1                             1               -9.81\n"
+             "/RUN\n0.6,0.01\n/END\n",
+             units, tdelay, n2, dmin, dmax);
+    return text;
+}
+
+static void test_sensor_dist_read(void)
+{
+    rc_case *c = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    /* input in mm and ms: the bounds and the delay in m and s (the deck
+     * without its interface, whose K has no fixed dimension) */
+    char text[4096];
+    snprintf(text, sizeof text, "%s", dist_deck(2, 500, 800, 100, "                  kg                  mm                  ms"));
+    char *a = strstr(text, "/INTER/POWER"), *b = strstr(text, "/GRAV");
+    if (a && b) memmove(a, b, strlen(b) + 1);
+    ENSURE(rc_case_load(tu_tmp_write("dist_mm.rad", text), &c, &e) == RC_OK);
+    if (!c) fprintf(stderr, "  %s\n", e.msg);
+    if (c) {
+        ENSURE(c->nsensor == 1);
+        const rc_case_sensor *s = &c->sensor[0];
+        ENSURE(s->id == 5 && s->kind == RC_SENS_DIST && s->node[0] == 1 && s->node[1] == 2);
+        ENSURE_NEAR(s->dmin, 0.5, 1e-15, 0);
+        ENSURE_NEAR(s->dmax, 0.8, 1e-15, 0);
+        ENSURE_NEAR(s->tdelay, 0.1, 1e-15, 0);
+        ENSURE(s->line2_loc.line == s->line_loc.line + 1);
+    }
+    rc_case_free(c);
+}
+
+static void test_sensor_dist_compile(void)
+{
+    rc_model *m = TU_COMPILE_OK(dist_deck(3, 0, 0.2, 0.1, ""), "dist1.rad");
+    if (m) {
+        ENSURE(m->nsens == 1 && m->sens_kind[0] == 1 && m->sens_id[0] == 5 && m->sens_tdelay[0] == 0.1);
+        /* node 1 at its body's reference point; node 3 fixed in space */
+        ENSURE(m->sens_body[0] == 0 && m->sens_body[1] == -1);
+        ENSURE(m->sens_p[0] == 0 && m->sens_p[1] == 0 && m->sens_p[2] == 0);
+        ENSURE(m->sens_p[3] == 0 && m->sens_p[4] == 0 && m->sens_p[5] == 1.0);
+        ENSURE(m->sens_d[0] == 0 && m->sens_d[1] == 0.2);
+        /* the interface waits for the sensor: Tstart untouched */
+        ENSURE(m->ninter == 1 && m->inter_sens[0] == 0 && m->inter_tstart[0] == 0.0);
+    }
+    rc_model_free(m);
+}
+
+/* The run's events of `kind`: count, first time and values. */
+static int ev_first(const tu_evlog *l, const char *kind, double *t, double *v)
+{
+    int n = 0;
+    for (int k = 0; k < l->n && k < TU_MAXEV; k++)
+        if (!strcmp(l->kind[k], kind) && n++ == 0) {
+            *t = l->t[k];
+            if (v) memcpy(v, l->v[k], 3 * sizeof *v);
+        }
+    return n;
+}
+
+static void test_sensor_dist_run(void)
+{
+    static tu_evlog ev;
+    const double g = 9.81, tc = sqrt(2 * 0.9 / g);
+    /* Dmax 0.2 m from a fixed node, Tdelay 0.1 s: triggered at sqrt(2 Dmax/g),
+     * the interface on 0.1 s later, the contact at sqrt(2 (1 - 0.1)/g) */
+    const struct {
+        int n2;
+        double dmin, dmax, td, ttrig;
+    } cs[] = {{3, 0, 0.2, 0.1, sqrt(2 * 0.2 / g)}, {2, 0.5, 0, 0.0, sqrt(2 * 0.5 / g)}, {3, 0, 0.2, 0.3, sqrt(2 * 0.2 / g)}};
+    for (int k = 0; k < 3; k++) {
+        rc_model *m = TU_COMPILE_OK(dist_deck(cs[k].n2, cs[k].dmin, cs[k].dmax, cs[k].td, ""), "dist2.rad");
+        if (!m) continue;
+        rc_error e;
+        rc_error_clear(&e);
+        memset(&ev, 0, sizeof ev);
+        rc_run_options o = {.on_event = tu_evlog_event, .user = &ev};
+        ENSURE(rc_run(m, &o, NULL, &e) == RC_OK);
+        double t = -1, v[3] = {0}, ts = -1, tcl = -1;
+        ENSURE(ev_first(&ev, "sensor_trigger", &t, v) == 1);
+        ENSURE_NEAR(t, cs[k].ttrig, 1e-10, 0);
+        ENSURE(isnan(v[0]) && isnan(v[1]) && isnan(v[2])); /* not an interface */
+        ENSURE(ev_first(&ev, "inter_start", &ts, NULL) == 1);
+        ENSURE_NEAR(ts, cs[k].ttrig + cs[k].td, 1e-10, 0);
+        /* on before the meeting: contact at the free-fall time; after it
+         * (A past B's centre): none */
+        const int nc = ev_first(&ev, "contact_close", &tcl, NULL);
+        if (cs[k].ttrig + cs[k].td < tc) {
+            ENSURE(nc >= 1);
+            ENSURE_NEAR(tcl, tc, 1e-10, 0);
+        } else {
+            ENSURE(nc == 0);
+        }
+        rc_model_free(m);
+    }
+    /* out of its bounds at the start (Dmax below the initial 1 m): triggered
+     * at t = 0, the interface on from the start */
+    rc_model *m = TU_COMPILE_OK(dist_deck(2, 0, 0.5, 0.0, ""), "dist3.rad");
+    if (m) {
+        rc_error e;
+        rc_error_clear(&e);
+        memset(&ev, 0, sizeof ev);
+        rc_run_options o = {.on_event = tu_evlog_event, .user = &ev};
+        ENSURE(rc_run(m, &o, NULL, &e) == RC_OK);
+        double t = -1, tcl = -1;
+        ENSURE(ev_first(&ev, "sensor_trigger", &t, NULL) == 1 && t == 0.0);
+        ENSURE(ev_first(&ev, "contact_close", &tcl, NULL) >= 1);
+        ENSURE_NEAR(tcl, tc, 1e-10, 0);
+    }
+    rc_model_free(m);
+}
+
+/* text with `cards` inserted before /END and every "what" replaced by "with" (static buffer). */
+static const char *edit_deck(const char *text, const char *cards, const char *what, const char *with)
+{
+    static char out[8192];
+    char tmp[8192];
+    snprintf(tmp, sizeof tmp, "%s", text);
+    char *e = strstr(tmp, "/END");
+    if (!e) return text;
+    *e = '\0';
+    const size_t a = strlen(tmp), b = strlen(cards);
+    if (a + b + 6 > sizeof out) return text;
+    memcpy(out, tmp, a);
+    memcpy(out + a, cards, b);
+    memcpy(out + a + b, "/END\n", 6);
+    if (what) {
+        char *w = strstr(out, what);
+        if (w && strlen(what) == strlen(with)) memcpy(w, with, strlen(with));
+    }
+    return out;
+}
+
+static void test_sensor_logic(void)
+{
+    /* over time sensors: folded when compiling (AND: the later plus its
+     * delay, OR: the earlier plus its delay) */
+    const char *base = sensor_deck(2022, 0, 7, 0.2, 0.3);
+    static const char *const cards[] = {"/SENSOR/AND/7\nboth\n0.05\n         1         2\n",
+                                        "/SENSOR/OR/7\neither\n0.05\n         1         2\n"};
+    const double want[] = {0.35, 0.25};
+    for (int k = 0; k < 2; k++) {
+        rc_model *m = TU_COMPILE_OK(edit_deck(base, cards[k], NULL, NULL), "logic1.rad");
+        if (m) {
+            ENSURE(m->ninter == 1 && m->inter_sens[0] == -1);
+            ENSURE_NEAR(m->inter_tstart[0], want[k], 1e-15, 0);
+            ENSURE(m->nsens == 3 && m->sens_kind[2] == 2 + k && m->sens_in[4] == 0 && m->sens_in[5] == 1);
+        }
+        rc_model_free(m);
+    }
+    /* over a distance sensor that never triggers (Dmax 5 m): AND never on,
+     * OR on at its time input (0.3 s), followed in the run */
+    static const char *const dcards[] = {"/SENSOR/TIME/6\nt\n0.3\n/SENSOR/AND/7\nboth\n\n         5         6\n",
+                                         "/SENSOR/TIME/6\nt\n0.3\n/SENSOR/OR/7\neither\n\n         5         6\n"};
+    for (int k = 0; k < 2; k++) {
+        const char *text = edit_deck(dist_deck(3, 0, 5.0, 0.0, ""), dcards[k], "0         0         5\n",
+                                     "0         0         7\n");
+        rc_model *m = TU_COMPILE_OK(text, "logic2.rad");
+        if (!m) continue;
+        ENSURE(m->inter_sens[0] == 2); /* the logic sensor, found in the run */
+        static tu_evlog ev;
+        memset(&ev, 0, sizeof ev);
+        rc_error e;
+        rc_error_clear(&e);
+        rc_run_options o = {.on_event = tu_evlog_event, .user = &ev};
+        ENSURE(rc_run(m, &o, NULL, &e) == RC_OK);
+        double t = -1;
+        ENSURE(ev_first(&ev, "sensor_trigger", &t, NULL) == 0);
+        const int n = ev_first(&ev, "inter_start", &t, NULL);
+        if (k == 0) {
+            ENSURE(n == 0);
+        } else {
+            ENSURE(n == 1);
+            ENSURE_NEAR(t, 0.3, 1e-12, 0);
+        }
+        rc_model_free(m);
+    }
+    /* an interface start on an output time (0.35 s, outputs every 0.01 s):
+     * its contact still closes at the free-fall time */
+    {
+        const char *text = edit_deck(dist_deck(3, 0, 5.0, 0.0, ""), "/SENSOR/TIME/6\nt\n0.35\n",
+                                     "0         0         5\n", "0         0         6\n");
+        rc_model *m6 = TU_COMPILE_OK(text, "logic4.rad");
+        if (m6) {
+            static tu_evlog ev;
+            memset(&ev, 0, sizeof ev);
+            rc_error e;
+            rc_error_clear(&e);
+            rc_run_options o = {.on_event = tu_evlog_event, .user = &ev};
+            ENSURE(rc_run(m6, &o, NULL, &e) == RC_OK);
+            double t = -1;
+            ENSURE(ev_first(&ev, "inter_start", &t, NULL) == 1);
+            ENSURE_NEAR(t, 0.35, 1e-15, 0);
+            ENSURE(ev_first(&ev, "contact_close", &t, NULL) >= 1);
+            ENSURE_NEAR(t, sqrt(2 * 0.9 / 9.81), 1e-10, 0);
+        }
+        rc_model_free(m6);
+    }
+    /* a body held by a logic sensor of time sensors: until its folded time */
+    rc_model *m = TU_COMPILE_OK(edit_deck(sensor_deck(2022, 7, 0, 0.2, 0.3), cards[0], NULL, NULL), "logic3.rad");
+    if (m) {
+        ENSURE(m->imp != NULL);
+        if (m->imp) ENSURE_NEAR(m->imp->ttstop[0], 0.35, 1e-15, 0);
+    }
+    rc_model_free(m);
+}
+
 void suite_sensor(void);
-void suite_sensor(void) { RUN_TEST(test_sensor_compile); }
+void suite_sensor(void)
+{
+    RUN_TEST(test_sensor_compile);
+    RUN_TEST(test_sensor_dist_read);
+    RUN_TEST(test_sensor_dist_compile);
+    RUN_TEST(test_sensor_dist_run);
+    RUN_TEST(test_sensor_logic);
+}

@@ -76,7 +76,7 @@ class Deck:
               sfric=None, fric=None, fct_ff=0, fct_fv=0, e_target=None, v_imp=None, istick=None, fric_s=None,
               isensor=None, title="contact"):
         """istick, fric_s: ricochet's exact stick (line 3 columns 1-10, line 5
-        columns 11-20, a 10-column real); isensor: the /SENSOR/TIME that turns
+        columns 11-20, a 10-column real); isensor: the /SENSOR that turns
         the interface on (line 1 columns 21-30)."""
         fs = "" if fric_s is None else f"{fric_s:>10.6g}"
         self.add(f"/INTER/TYPE6/{iid}",
@@ -91,6 +91,16 @@ class Deck:
     def sensor_time(self, sid, tdelay, title="time sensor"):
         """/SENSOR/TIME: on from t = Tdelay [s]."""
         self.add(f"/SENSOR/TIME/{sid}", line(("r", tdelay)), title=title)
+
+    def sensor_dist(self, sid, n1, n2, dmin=None, dmax=None, tdelay=None, title="distance sensor"):
+        """/SENSOR/DIST: on Tdelay [s] after the distance of nodes n1, n2 leaves [Dmin, Dmax] [m]
+        (None: blank; a blank bound is no bound)."""
+        self.add(f"/SENSOR/DIST/{sid}", line(("r", tdelay)), line(("i", n1), ("i", n2), ("r", dmin), ("r", dmax)),
+                 title=title)
+
+    def sensor_logic(self, kind, sid, s1, s2, tdelay=None, title="logic sensor"):
+        """/SENSOR/AND or /SENSOR/OR (kind): on Tdelay [s] after both (either) of sensors s1, s2 are on."""
+        self.add(f"/SENSOR/{kind}/{sid}", line(("r", tdelay)), line(("i", s1), ("i", s2)), title=title)
 
     def inivel(self, iid, v, grnod, rot=False):
         self.add(f"/INIVEL/{'ROT' if rot else 'TRA'}/{iid}",

@@ -126,20 +126,61 @@ rc_status rc_card_rwall(rc_reader *rd, const rc_block *b)
 }
 
 /* /SENSOR/TIME/sens_ID[/unit_ID]: title; Tdelay (the sensor is on from
- * t = Tdelay; the /RBODY and interfaces naming it: the compiler). */
+ * t = Tdelay). /SENSOR/DIST/sens_ID[/unit_ID]: title; Tdelay; node_ID1
+ * node_ID2 Dmin Dmax [Tmin Dflag from 2022: 0 only] (the sensor is on
+ * Tdelay after the nodes' distance leaves [Dmin, Dmax]). /SENSOR/AND and
+ * /SENSOR/OR: title; Tdelay; sens_ID1 sens_ID2. The /RBODY and
+ * interfaces naming a sensor: the compiler (model/sensor.c). */
 rc_status rc_card_sensor_time(rc_reader *rd, const rc_block *b)
 {
     rc_case *c = rd->c;
+    const int dist = strcmp(b->kw[1], "DIST") == 0, is_and = strcmp(b->kw[1], "AND") == 0,
+              is_or = strcmp(b->kw[1], "OR") == 0;
+    const int two = dist || is_and || is_or; /* a second line */
     int nd;
     rc_status st;
-    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "sens_ID", "/SENSOR/TIME/sens_ID"))) return st;
+    char usage[40];
+    snprintf(usage, sizeof usage, "/SENSOR/%s/sens_ID", b->kw[1]);
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "sens_ID", usage))) return st;
     RC_GROW(rd, c->sensor, rd->capsensor, c->nsensor);
     rc_case_sensor *s = &c->sensor[c->nsensor++];
     s->id = b->id;
-    s->loc = s->line_loc = b->hdr->loc;
-    if ((st = rc_card_lines(rd, b, s->title, 1, 1, "Tdelay", &nd))) return st;
+    s->kind = dist ? RC_SENS_DIST : is_and ? RC_SENS_AND : is_or ? RC_SENS_OR : RC_SENS_TIME;
+    s->loc = s->line_loc = s->line2_loc = b->hdr->loc;
+    if ((st = rc_card_lines(rd, b, s->title, two ? 2 : 1, two ? 2 : 1,
+                            dist ? "Tdelay, node_ID1 node_ID2 Dmin Dmax" : two ? "Tdelay, sens_ID1 sens_ID2" : "Tdelay",
+                            &nd)))
+        return st;
     s->line_loc = b->lines[1].loc;
     rc_field f[] = {RC_F_REALD("Tdelay", &s->tdelay, 0, RC_FF_NONNEG, RC_D_T)};
     if ((st = rc_parse_line(rd, b, &b->lines[1], f, RC_NF(f)))) return st;
+    if (is_and || is_or) {
+        s->line2_loc = b->lines[2].loc;
+        rc_field g[] = {RC_F_INT("sens_ID1", &s->in[0], 0, RC_FF_POS), RC_F_INT("sens_ID2", &s->in[1], 0, RC_FF_POS)};
+        if ((st = rc_parse_line(rd, b, &b->lines[2], g, RC_NF(g)))) return st;
+    }
+    if (dist) {
+        s->line2_loc = b->lines[2].loc;
+        double tmin = 0;
+        int dflag = 0;
+        rc_field g[] = {RC_F_INT("node_ID1", &s->node[0], 0, RC_FF_POS),
+                        RC_F_INT("node_ID2", &s->node[1], 0, RC_FF_POS),
+                        RC_F_REALD("Dmin", &s->dmin, 0, RC_FF_NONNEG, RC_D_L),
+                        RC_F_REALD("Dmax", &s->dmax, 0, RC_FF_NONNEG, RC_D_L),
+                        RC_F_REALD("Tmin", &tmin, 0, RC_FF_NONNEG | RC_FF_ONLY0, RC_D_T),
+                        RC_F_INTN("Dflag", &dflag, RC_FF_ONLY0, "(a sensor that deactivates again)")};
+        g[4].note = "(a minimum duration before the sensor triggers)";
+        if ((st = rc_parse_line(rd, b, &b->lines[2], g, rc_layout_version(rd) >= 2022 ? 6 : 4))) return st;
+        if (s->node[0] == s->node[1])
+            return rc_case_fail(rd, &b->lines[2].loc, b->name, "node_ID2",
+                                "expected a node other than node_ID1, got %d (the distance of a node to itself is 0)",
+                                s->node[1]);
+        if (s->dmin == 0 && s->dmax == 0)
+            return rc_case_fail(rd, &b->lines[2].loc, b->name, "Dmax",
+                                "expected Dmin > 0 or Dmax > 0 [length], got both 0 (the sensor would never trigger)");
+        if (s->dmax > 0 && s->dmin >= s->dmax)
+            return rc_case_fail(rd, &b->lines[2].loc, b->name, "Dmin",
+                                "expected Dmin < Dmax, got Dmin %s and Dmax %s [length]", g[2].got, g[3].got);
+    }
     return rc_note_id(rd, RC_IDK_SENSOR, s->id, &s->loc, b->hdr->text);
 }

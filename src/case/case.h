@@ -183,13 +183,24 @@ typedef struct rc_case_type7 {
     rc_loc line_loc[6];                       /* lines 1-6 (Radioss's lines without the curvature line) */
 } rc_case_type7;
 
-/* /SENSOR/TIME/sens_ID (cards_rwall.c): a sensor that is on from t = Tdelay. */
+/* /SENSOR/TIME/sens_ID and /SENSOR/DIST/sens_ID (cards_rwall.c): a TIME
+ * sensor is on from t = Tdelay; a DIST sensor triggers when the distance of
+ * its two nodes rises above Dmax or falls below Dmin and is on Tdelay
+ * later (for good: latched). /SENSOR/AND and /SENSOR/OR: on Tdelay after
+ * both (either) of two other sensors are on. */
+typedef enum { RC_SENS_TIME = 0, RC_SENS_DIST = 1, RC_SENS_AND = 2, RC_SENS_OR = 3 } rc_case_sensor_kind;
+
 typedef struct rc_case_sensor {
     int id;
     char title[101];
+    rc_case_sensor_kind kind;
     double tdelay;        /* [s], >= 0 */
+    int node[2];          /* DIST: node_ID1, node_ID2 */
+    double dmin, dmax;    /* DIST: [m], 0: no such bound */
+    int in[2];            /* AND, OR: sens_ID1, sens_ID2 */
     rc_loc loc;
-    rc_loc line_loc;      /* the data line */
+    rc_loc line_loc;      /* the (first) data line */
+    rc_loc line2_loc;     /* DIST: the nodes' line */
 } rc_case_sensor;
 
 /* /RWALL/PLANE, /RWALL/CYL, /RWALL/SPHER, /RWALL/PARAL (cards_rwall.c): a

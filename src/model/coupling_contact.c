@@ -49,7 +49,8 @@ int rc_cpl_nroots(const rc_model *m)
     return (m->cpl && m->cpl->ct ? RC_FACE_ROOTS * m->cpl->ct->nface : 0) + RC_LIM_ROOTS * rc_cpl_nlim(m);
 }
 
-int rc_root_count(const rc_model *m) { return rc_root_cpl_base(m) + rc_cpl_nroots(m); }
+int rc_root_sens_base(const rc_model *m) { return rc_root_cpl_base(m) + rc_cpl_nroots(m); }
+int rc_root_count(const rc_model *m) { return rc_root_sens_base(m) + 2 * m->nsens; }
 
 /* Global point at t = 0 of body-frame point s of body b (-1: fixed). */
 static void point0(const rc_model *m, int b, const double *s, double *x)

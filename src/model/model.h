@@ -219,6 +219,23 @@ struct rc_model {
                             E' = -sum m g(t).v [J]; -1 when gravity is constant */
     int64_t *gwork_slot; /* [3*nbody] Jacobian slots (row gwork_adr, columns v) */
     struct rc_imposed *imp; /* /IMPVEL imposed velocities (imposed.h); NULL: none */
+    /* sensors (model/sensor.c), one per /SENSOR card in the case's order:
+     * a distance sensor (kind 1) watches the distance of two points, each
+     * on a body or fixed in space, through two root functions (at
+     * rc_root_sens_base: d - Dmax and Dmin - d, rising through 0) until it
+     * triggers; time sensors (kind 0) have none (their time is compiled
+     * into the Tstart of what they activate), nor logic sensors (kinds 2,
+     * 3: their time on follows their inputs', engine/assembly/sensors.c) */
+    int nsens;
+    int *sens_id;        /* [nsens] sens_ID */
+    int *sens_kind;      /* [nsens] rc_case_sensor_kind (0 TIME, 1 DIST, 2 AND, 3 OR) */
+    int *sens_in;        /* [2*nsens] AND, OR: the input sensors' indices (-1: none) */
+    double *sens_tdelay; /* [nsens] [s] */
+    int *sens_body;      /* [2*nsens] the points' bodies (-1: fixed in space) */
+    double *sens_p;      /* [6*nsens] the points in their bodies' frames [m] */
+    double *sens_d;      /* [2*nsens] Dmin, Dmax [m] (0: no such bound) */
+    int *inter_sens;     /* [ninter] the sensor found in the run (a distance sensor, or a logic
+                            sensor of one) that turns interface i on, -1: none */
 
     /* analytic surfaces */
     int nsurf;
@@ -400,11 +417,13 @@ void rc_state_name(const rc_model *m, int i, char *buf, size_t n);
  * then one landing root per such point (its depth q_j below the level of the
  * shares, rising through 0 as it takes a share; at rc_root_land_base); the
  * contact couplings' faces (at rc_root_cpl_base; coupling_contact.h), then
- * RC_LIM_ROOTS per joint with stops (coupling.h). */
+ * RC_LIM_ROOTS per joint with stops (coupling.h); last two per sensor
+ * (rc_root_sens_base). */
 static inline int rc_root_point_base(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter; }
 static inline int rc_root_land_base(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter + m->npt; }
 static inline int rc_root_cpl_base(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter + 2 * m->npt; }
 int rc_root_count(const rc_model *m); /* all of them (coupling_contact.c) */
+int rc_root_sens_base(const rc_model *m); /* the sensors' roots, last (coupling_contact.c) */
 /* Pose and velocity view of body b: pointer to its 13 values in y, the
  * fixed pose of a fixed body, or the ground pose for b = -1 (inline: the
  * interfaces' loops call it twice per interface and evaluation). */

@@ -66,7 +66,7 @@ rc_status rc_power_compile(const rc_case *c, rc_model *m, int k, int i, rc_error
     m->inter_tstart[i] = p->tstart;
     m->inter_tstop[i] = p->tstop;
     /* a sensor turns the interface on at its time (model/sensor.c) */
-    rc_status sst = rc_sensor_tstart(c, p->sensor_id, p->line_loc[0], card, &m->inter_tstart[i], m->inter_tstop[i], err);
+    rc_status sst = rc_sensor_tstart(c, p->sensor_id, p->line_loc[0], card, &m->inter_tstart[i], m->inter_tstop[i], &m->inter_sens[i], err);
     if (sst) return sst;
     m->inter_ascalex[i] = m->inter_fscaleld[i] = m->inter_ascalef[i] = m->inter_ascalev[i] = 1.0;
     m->inter_fscalev[i] = m->inter_fscaleul[i] = 1.0;
@@ -157,5 +157,5 @@ void rc_power_print(const rc_model *m, int i, FILE *f)
     fprintf(f, " m3 %.5g, ", pw->m3);
     if (pw->rdf == 1.0) fprintf(f, "RDF off");
     else fprintf(f, "RDF %.5g", pw->rdf);
-    fprintf(f, ", Tstart %.5g, Tstop %.5g\n", m->inter_tstart[i], m->inter_tstop[i]);
+    fprintf(f, ", Tstart %.5g, Tstop %.5g%s\n", m->inter_tstart[i], m->inter_tstop[i], rc_sensor_note(m, i));
 }

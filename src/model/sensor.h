@@ -1,5 +1,5 @@
 /*
- * Time sensors (/SENSOR/TIME) and what they activate (model/sensor.c,
+ * Time sensors (/SENSOR/TIME), distance sensors (/SENSOR/DIST), and what they activate (model/sensor.c,
  * docs/theory.md "Sensors"): an interface naming a sensor (TYPE6 and
  * /INTER/POWER Isensor) is inactive before the sensor's time; a body
  * naming one (/RBODY sens_ID) is held at rest in its initial pose until
@@ -31,9 +31,21 @@ typedef struct rc_sensor_case {
 rc_status rc_sensor_begin(const rc_case *c, rc_sensor_case *x, rc_error *err);
 void rc_sensor_end(rc_sensor_case *x);
 /* The start of an interface of `card` (read at `loc`) whose Isensor is
- * sensor_id: *tstart raised to the sensor's time; RC_EINPUT when the sensor
- * does not exist or turns the interface on after its Tstop. */
+ * sensor_id: *tstart raised to a time sensor's time; *sens the index of a
+ * distance sensor (the interface turns on when it does, at run time), -1
+ * otherwise; RC_EINPUT when the sensor does not exist or a time sensor
+ * turns the interface on after its Tstop. */
 rc_status rc_sensor_tstart(const rc_case *c, int sensor_id, rc_loc loc, const char *card, double *tstart,
-                           double tstop, rc_error *err);
+                           double tstop, int *sens, rc_error *err);
+/* The model's sensors (m->sens_*), one per /SENSOR card: a distance
+ * sensor's nodes in their bodies' frames (the bodies' initial poses, in
+ * the origin's coordinates: after the origin shift). RC_EINPUT at the
+ * nodes' line for a node that does not exist, or two nodes of one body
+ * (or both fixed in space). */
+rc_status rc_sensor_compile(const rc_case *c, rc_model *m, rc_error *err);
+/* For the model summary: ", on by /SENSOR/<kind>/<id> (time found in the
+ * run)" for an interface under a run-time sensor, "" otherwise (a static
+ * buffer). */
+const char *rc_sensor_note(const rc_model *m, int i);
 
 #endif

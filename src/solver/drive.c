@@ -93,6 +93,24 @@ void rc_bk_root_directions(const rc_model *m, const rc_data *d, int *dir)
         dir[rc_root_land_base(m) + j] = 1;  /* a point lands (its share rises from 0) */
     }
     if (rc_cpl_nroots(m) > 0) rc_cpl_root_dirs(m, d, dir + rc_root_cpl_base(m));
+    for (int k = 0; k < 2 * m->nsens; k++) dir[rc_root_sens_base(m) + k] = 1; /* a sensor triggers */
+}
+
+/* The distance sensors triggered since the last call: their events
+ * (element /SENSOR/DIST/id; no interface values), then cleared. */
+static rc_status sensor_events(const rc_model *m, rc_data *d, ev_sink *k, double t, const double *y, long *count,
+                               rc_error *err)
+{
+    for (int s = 0; s < m->nsens; s++) {
+        if (!d->sens_new[s]) continue;
+        d->sens_new[s] = 0;
+        char el[48];
+        snprintf(el, sizeof el, "/SENSOR/DIST/%d", m->sens_id[s]);
+        (*count)++;
+        rc_status st = rc_bk_sink_event(k, t, RC_EV_SENSOR_TRIGGER, el, NULL, err);
+        if (st) return st;
+    }
+    return RC_OK;
 }
 
 /* One event to the sink; RC_OK or the output's error. */
@@ -767,6 +785,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     if (pre) preload_friction(m, d, pre, y);
     if ((st = rc_bk_open_output(m, opt, note, &out, err, integrator, pre))) goto done;
     sink.out = out;
+    if (m->nsens > 0 && (st = sensor_events(m, d, &sink, t, y, &s.events, err))) goto done;
     {
         int jmp = 0;
         rc_bk_resolve_touching(m, d, t, y, flook, &sink, &im, &s.events, &jmp, &st, err);
@@ -945,6 +964,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             for (int k = 0; k < nev && k < RC_MAX_EV; k++) cpl_ev |= ev[k].inter < 0;
             s.events += nev;
             for (int k = 0; k < nev && k < RC_MAX_EV; k++) rc_impacts_event(&im, m, d, ev[k].inter, ev[k].kind, t, y);
+            if (m->nsens > 0 && (st = sensor_events(m, d, &sink, t, y, &s.events, err))) goto done;
             for (int k = 0; k < nev && k < RC_MAX_EV; k++)
                 if ((st = rc_bk_write_event(m, d, &sink, t, y, &ev[k], err))) goto done;
             /* settling of accumulating bounces and the event accumulation

@@ -131,6 +131,10 @@ static void copy_modes(const rc_model *m, const rc_data *src, rc_data *dst)
     memcpy(dst->inter_dref, src->inter_dref, 3 * ni * sizeof(double));
     memcpy(dst->inter_hacc, src->inter_hacc, 2 * ni * sizeof(double));
     memcpy(dst->inter_band, src->inter_band, 2 * ni * sizeof(double));
+    if (m->nsens > 0) {
+        memcpy(dst->sens_ton, src->sens_ton, (size_t)m->nsens * sizeof(double));
+        memcpy(dst->sens_new, src->sens_new, (size_t)m->nsens * sizeof(int));
+    }
     if (np > 0) {
         memcpy(dst->pt_slip, src->pt_slip, np * sizeof(int));
         memcpy(dst->pt_lband, src->pt_lband, np * sizeof(double));
@@ -683,6 +687,14 @@ rc_status rc_sens_run(const rc_model *m, int np, const rc_model *const *m_lo, co
     if (m->preload) return RC_SET(err, RC_EINPUT, "sensitivities: a run from a preload (/SOLVER Preload 1) is not covered");
     /* an imposed translation that starts later sets its velocity at a
      * breakpoint (a jump of the state the sensitivities do not follow) */
+    /* a distance sensor's time on is a number of the run data, set at its
+     * trigger: its dependence on the parameters is not followed */
+    for (int i = 0; i < m->ninter; i++)
+        if (m->inter_sens[i] >= 0)
+            return RC_SET(err, RC_EINPUT,
+                          "sensitivities: %s is turned on by /SENSOR/DIST/%d: a distance sensor is not covered (the "
+                          "derivative of its trigger time is not followed in this version)",
+                          m->inter_name[i], m->sens_id[m->inter_sens[i]]);
     for (int k = 0; m->imp && k < m->imp->nt; k++)
         if (m->imp->ttstart[k] > 0)
             return RC_SET(err, RC_EINPUT,

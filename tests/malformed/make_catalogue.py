@@ -527,6 +527,42 @@ TL('type7_same_body', T7H, 'field grnd_IDs', before_end(
     ['/SURF/PLANE/98', 'carried by the sphere', STOP('0', '0', '0'), STOP('0', '0', '1'), '         1'] +
     T7(l1='         1        98         1'), expect=7))
 
+# ---- /SENSOR/DIST (the sphere's node 1 and the roller's node 2)
+def SDIST(nodes='         1         2', dmin='', dmax='0.5', tail=''):
+    return ['/SENSOR/DIST/5', 'distance', '                 0.1', nodes + '%20s%20s' % (dmin, dmax) + tail]
+
+
+SD = '/SENSOR/DIST/5'
+TL('sensor_dist_node_missing', SD, 'field node_ID2', before_end(SDIST(nodes='         1        99'), expect=3))
+TL('sensor_dist_same_node', SD, 'field node_ID2', before_end(SDIST(nodes='         1         1'), expect=3))
+TL('sensor_dist_no_bound', SD, 'field Dmax', before_end(SDIST(dmax=''), expect=3))
+TL('sensor_dist_dmax_negative', SD, 'field Dmax', before_end(SDIST(dmax='-1'), expect=3))
+TL('sensor_dist_dmin_above_dmax', SD, 'field Dmin', before_end(SDIST(dmin='2', dmax='1'), expect=3))
+TL('sensor_dist_tmin', SD, 'field Tmin', before_end(SDIST(tail='%20s' % '0.01'), expect=3))
+TL('sensor_dist_dflag', SD, 'field Dflag', before_end(SDIST(tail='%20s%10s' % ('', '1')), expect=3))
+TL('sensor_dist_missing_line', SD, 'expected 2 data lines', before_end(SDIST()[:3], expect=0))
+TL('sensor_dist_fixed_nodes', SD, 'field node_ID2',
+   before_end(['/NODE', '        91                   0                   0                   0',
+               '        92                   1                   0                   0'] +
+              SDIST(nodes='        91        92'), expect=6))
+TL('rbody_sensor_dist', '/RBODY/1', 'not supported yet',
+   lambda lines: at('/RBODY/1', 2, 11, 20, '5')(before_end(SDIST())(lines)[0]))
+
+
+# ---- /SENSOR/AND, /SENSOR/OR, /SENSOR/NOT
+SLOG = '/SENSOR/AND/8'
+TL('sensor_and_input_missing', SLOG, 'field sens_ID2',
+   before_end(SENS + [SLOG, 'both', '                   0', '         4         9'], expect=6))
+TL('sensor_and_cycle', SLOG, 'form a cycle',
+   before_end(SENS + [SLOG, 'both', '                   0', '         4         8'], expect=6))
+TL('sensor_or_missing_line', '/SENSOR/OR/8', 'expected 2 data lines',
+   before_end(['/SENSOR/OR/8', 'either', '                   0'], expect=0))
+TL('sensor_and_input_zero', SLOG, 'field sens_ID1',
+   before_end([SLOG, 'both', '                   0', '         0         4'] + SENS, expect=3))
+TL('sensor_not', '/SENSOR/NOT/8', 'not supported yet',
+   before_end(SENS + ['/SENSOR/NOT/8', 'not', '                   0', '         4'], expect=3))
+
+
 def write_all():
     for old in glob.glob('[0-9][0-9][0-9]_*'):
         os.remove(old)

@@ -211,7 +211,9 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         double *gi = g + RC_ROOTS_PER_INTER * i;
         for (int k = 0; k < RC_ROOTS_PER_INTER; k++) gi[k] = 1.0; /* inactive roots */
         d->sc->inter_flim[2 * i] = d->sc->inter_flim[2 * i + 1] = 0.0;
-        gi[RC_ROOT_TSTART] = t - m->inter_tstart[i];
+        /* the start: Tstart, or a distance sensor's time on (-1 until it triggers) */
+        const double ton = m->inter_sens[i] < 0 ? m->inter_tstart[i] : rc_sens_inter_ton(m, d, i);
+        gi[RC_ROOT_TSTART] = isfinite(ton) ? t - ton : -1.0;
         gi[RC_ROOT_TSTOP] = t - m->inter_tstop[i];
         const int mode = d->inter_mode[i], br = d->inter_branch[i], trk = d->inter_track[i];
         if (mode == RC_MODE_INACTIVE) continue;
@@ -325,6 +327,8 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
     }
     /* contact couplings: after the interfaces' roots (below) */
     if (rc_cpl_nroots(m) > 0) rc_cpl_roots(m, d, t, y, g + rc_root_cpl_base(m));
+    /* distance sensors: last */
+    if (m->nsens > 0) rc_sens_roots(m, d, y, g + rc_root_sens_base(m));
 }
 
 /* Which of an interface's root functions can change sign in a run from
@@ -336,8 +340,8 @@ static int inter_root_live(const rc_model *m, int i, int k, double tend)
 {
     const rc_fric *fr = &m->inter_fr[i];
     switch (k) {
-    case RC_ROOT_TSTART: /* t - Tstart >= 0 from t = 0 on; < 0 up to tend */
-        return m->inter_tstart[i] > 0.0 && m->inter_tstart[i] <= tend;
+    case RC_ROOT_TSTART: /* t - Tstart >= 0 from t = 0 on; < 0 up to tend; a distance sensor's: live */
+        return m->inter_sens[i] >= 0 || (m->inter_tstart[i] > 0.0 && m->inter_tstart[i] <= tend);
     case RC_ROOT_TSTOP: /* t - Tstop < 0 up to tend (the stop time of the run) */
         return m->inter_tstop[i] <= tend;
     case RC_ROOT_HYST_A: /* the curves' bounds, or the rate of P: power law with RDF */
@@ -358,10 +362,12 @@ static int inter_root_live(const rc_model *m, int i, int k, double tend)
 
 int rc_roots_live(const rc_model *m, double tend, int *live)
 {
-    const int nr = rc_root_count(m), base = rc_root_point_base(m);
+    const int nr = rc_root_count(m), base = rc_root_point_base(m), sbase = rc_root_sens_base(m);
     int n = 0;
     for (int k = 0; k < nr; k++) {
-        const int on = k >= base || inter_root_live(m, k / RC_ROOTS_PER_INTER, k % RC_ROOTS_PER_INTER, tend);
+        const int on = k >= sbase ? rc_sens_root_live(m, k - sbase)
+                       : k >= base ? 1
+                                   : inter_root_live(m, k / RC_ROOTS_PER_INTER, k % RC_ROOTS_PER_INTER, tend);
         if (on && live) live[n] = k;
         n += on;
     }

@@ -83,6 +83,17 @@ int rc_fast_eligible(const rc_model *m, int i);
  * roots keep one sign); their indices ascending into live (NULL: only
  * counted); returns their number (assemble_rhs.c). */
 int rc_roots_live(const rc_model *m, double tend, int *live);
+/* Distance sensors (sensors.c): the distance of sensor k's points at y
+ * [m]; its two roots (d - Dmax, Dmin - d; -1 for a bound not given, a time
+ * sensor, a sensor triggered) into g[2k], g[2k+1]; whether root j of the
+ * sensors' block can change sign; the time interface i turns on (its
+ * Tstart, or later its run-time sensor's time on: INFINITY until known;
+ * the times on are set in engine/events). */
+double rc_sens_distance(const rc_model *m, int k, const double *y);
+void rc_sens_roots(const rc_model *m, const rc_data *d, const double *y, double *g);
+int rc_sens_root_live(const rc_model *m, int j);
+double rc_sens_inter_ton(const rc_model *m, const rc_data *d, int i);
+
 /* Evaluate one interface at (t, y) in the given modes, for reports, roots
  * and events; contact points with friction all take the mode `slip`. */
 void rc_inter_report_eval(const rc_model *m, int i, int mode, int branch, int track, int slip, double t,

@@ -73,6 +73,10 @@ typedef struct rc_data {
                             last released (while released) [J]; set at the
                             start and at its mode changes (events.c) */
     int *mode_was;       /* [ninter] scratch of the events: the modes before */
+    double *sens_ton;    /* [nsens] a distance sensor's time on (its trigger time plus
+                            Tdelay, latched), INFINITY until it triggers (events.c) */
+    int *sens_new;       /* [nsens] 1: triggered at the last event, not yet written
+                            (the driver writes its event and clears it) */
     double *inter_fcstr; /* [ninter] the normal force a settled contact's
                             constraint carries (IDA path, engine/constraints/stick.c;
                             set at records, 0 otherwise) [N] */

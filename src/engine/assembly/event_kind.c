@@ -36,6 +36,7 @@ static const char *const names[RC_EV_NKINDS] = {
     [RC_EV_STOP_CLOSE] = "stop_close",
     [RC_EV_IMPVEL_STOP] = "impvel_stop",
     [RC_EV_IMPVEL_START] = "impvel_start",
+    [RC_EV_SENSOR_TRIGGER] = "sensor_trigger",
 };
 
 const char *rc_event_kind_name(rc_event_kind k)

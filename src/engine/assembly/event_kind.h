@@ -47,6 +47,8 @@ typedef enum rc_event_kind {
     RC_EV_IMPVEL_STOP,
     /* the driver's own: an imposed velocity starts (/IMPVEL Tstart > 0) */
     RC_EV_IMPVEL_START,
+    /* the driver's own: a distance sensor triggers (/SENSOR/DIST) */
+    RC_EV_SENSOR_TRIGGER,
     RC_EV_NKINDS
 } rc_event_kind;
 

@@ -417,11 +417,52 @@ static void modes_account(const rc_model *m, rc_data *d, double t, const double 
     }
 }
 
+/* The logic sensors' (AND, OR) times on from their inputs'. */
+static void sens_propagate(const rc_model *m, rc_data *d)
+{
+    /* a logic sensor is on when both (either) of its inputs are, plus its
+     * delay; the inputs' times on only ever go from INFINITY to a value
+     * that stays, so nsens passes settle any chain (no cycles: compile) */
+    for (int pass = 0; pass < m->nsens; pass++) {
+        int changed = 0;
+        for (int k = 0; k < m->nsens; k++) {
+            if (m->sens_kind[k] != 2 && m->sens_kind[k] != 3) continue;
+            const double a = d->sens_ton[m->sens_in[2 * k]], b = d->sens_ton[m->sens_in[2 * k + 1]];
+            const double v = (m->sens_kind[k] == 2 ? fmax(a, b) : fmin(a, b)) + m->sens_tdelay[k];
+            if (v != d->sens_ton[k]) {
+                d->sens_ton[k] = v;
+                changed = 1;
+            }
+        }
+        if (!changed) break;
+    }
+}
+
+/* The sensors' times on at the start: time sensors' Tdelay, a distance
+ * sensor out of its bounds then triggered at t, the logic sensors of them. */
+static void sens_init(const rc_model *m, rc_data *d, double t, const double *y)
+{
+    for (int k = 0; k < m->nsens; k++) {
+        d->sens_new[k] = 0;
+        d->sens_ton[k] = m->sens_kind[k] == 0 ? m->sens_tdelay[k] : INFINITY;
+        if (m->sens_kind[k] != 1) continue;
+        /* out of its bounds at the start: triggered then */
+        const double dist = rc_sens_distance(m, k, y), *b = m->sens_d + 2 * k;
+        if ((b[1] > 0 && dist > b[1]) || (b[0] > 0 && dist < b[0])) {
+            d->sens_ton[k] = t + m->sens_tdelay[k];
+            d->sens_new[k] = 1;
+        }
+    }
+    sens_propagate(m, d);
+}
+
 void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y)
 {
     int changed = 0;
+    sens_init(m, d, t, y); /* first: a sensor triggered at the start turns interfaces on */
     for (int i = 0; i < m->ninter; i++) {
-        int active = t >= m->inter_tstart[i] && t <= m->inter_tstop[i];
+        const double ton = m->inter_sens[i] < 0 ? m->inter_tstart[i] : rc_sens_inter_ton(m, d, i);
+        int active = t >= ton && t <= m->inter_tstop[i];
         d->inter_mode[i] = RC_MODE_INACTIVE;
         if (active) classify(m, d, i, t, y, &changed);
         d->inter_hacc[2 * i] = 0.0;
@@ -440,8 +481,13 @@ static rc_event_kind step_window(const rc_model *m, rc_data *d, int i, double t,
         d->inter_mode[i] = RC_MODE_INACTIVE; /* history frozen */
         return RC_EV_INTER_STOP;
     }
-    if (r[RC_ROOT_TSTART] > 0 && mode == RC_MODE_INACTIVE && t <= m->inter_tstop[i]) {
+    if (r[RC_ROOT_TSTART] > 0 && mode == RC_MODE_INACTIVE && t <= m->inter_tstop[i] &&
+        (m->inter_sens[i] < 0 || t >= rc_sens_inter_ton(m, d, i))) {
         classify(m, d, i, t, y, changed);
+        /* and the integrator restarts: continued without a restart, an
+         * interface whose start fell on an output time (Tstart 0.35 s,
+         * outputs every 0.01 s) never saw its contact close */
+        *changed = 1;
         return RC_EV_INTER_START;
     }
     /* Inacti 5 tracking: the full Gap is back, or the bodies approach again */
@@ -652,12 +698,46 @@ static void clear_settled(const rc_model *m, rc_data *d)
         if (d->inter_mode[i] != RC_MODE_CLOSED) d->inter_settled[i] = 0;
 }
 
+/* Distance sensors whose roots crossed trigger (latched): on at t +
+ * Tdelay, and the logic sensors of them follow; the inactive interfaces
+ * that reach their time on now start now (a later time on: their start
+ * root crosses then). Returns the
+ * interfaces' start events written into ev from n on. */
+static int sensors_apply(const rc_model *m, rc_data *d, double t, double *y, const int *roots, rc_event *ev,
+                         int max_ev, int n, int *restart)
+{
+    const int *r = roots + rc_root_sens_base(m);
+    int any = 0;
+    for (int k = 0; k < m->nsens; k++)
+        if ((r[2 * k] || r[2 * k + 1]) && !isfinite(d->sens_ton[k])) {
+            d->sens_ton[k] = t + m->sens_tdelay[k];
+            d->sens_new[k] = 1;
+            any = 1;
+            *restart = 1; /* its roots leave the set: start afresh */
+        }
+    if (!any) return n;
+    sens_propagate(m, d); /* the logic sensors of those */
+    for (int i = 0; i < m->ninter; i++) {
+        const int s = m->inter_sens[i];
+        if (s < 0 || d->inter_mode[i] != RC_MODE_INACTIVE || t < rc_sens_inter_ton(m, d, i) || t > m->inter_tstop[i])
+            continue;
+        classify(m, d, i, t, y, restart);
+        if (n < max_ev) {
+            ev[n].inter = i;
+            ev[n].kind = RC_EV_INTER_START;
+        }
+        n++;
+    }
+    return n;
+}
+
 int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const int *roots, rc_event *ev,
                     int max_ev, int *restart)
 {
     int n = 0;
     *restart = 0;
     modes_remember(m, d);
+    if (m->nsens > 0) n = sensors_apply(m, d, t, y, roots, ev, max_ev, n, restart);
     for (int i = 0; i < m->ninter; i++) {
         const int *r = roots + RC_ROOTS_PER_INTER * i;
         int any = 0;

@@ -14,6 +14,7 @@
 #include "model/imposed.h"
 #include "model/joint.h"
 #include "model/model.h"
+#include "model/sensor.h"
 #include "model/power.h"
 #include "engine/analyses/restitution.h"
 #include "engine/assembly/assembly.h"
@@ -211,9 +212,10 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
             rc_power_print(m, i, f); /* model/power.c */
             continue;
         }
-        fprintf(f, "  %-18s %s, Iform %d, Gap %.5g, Visc %.5g, Stiff %.5g, Inacti %d, Tstart %.5g, Tstop %.5g\n",
+        fprintf(f, "  %-18s %s, Iform %d, Gap %.5g, Visc %.5g, Stiff %.5g, Inacti %d, Tstart %.5g, Tstop %.5g%s\n",
                 m->inter_name[i], rc_geom_inter_pair_name(m, i), m->inter_iform[i], m->inter_gap[i],
-                m->inter_visc[i], m->inter_stiff[i], m->inter_inacti[i], m->inter_tstart[i], m->inter_tstop[i]);
+                m->inter_visc[i], m->inter_stiff[i], m->inter_inacti[i], m->inter_tstart[i], m->inter_tstop[i],
+                rc_sensor_note(m, i));
     }
     for (int i = 0; i < m->ninter && i < 20; i++) rc_friction_print(m, i, f);
     if (m->ninter > 20)

@@ -183,13 +183,15 @@ typedef struct rc_case_type7 {
     rc_loc line_loc[6];                       /* lines 1-6 (Radioss's lines without the curvature line) */
 } rc_case_type7;
 
-/* /INTER/TYPE24/inter_ID (cards_interfaces.c): penalty contact of two
+/* /INTER/TYPE24/inter_ID and /INTER/TYPE25/inter_ID (cards_interfaces.c,
+ * both in c->type24, told apart by `type`): penalty contact of two
  * surfaces both ways (the nodes of each against the segments of the
  * other), compiled as a two-way TYPE6 contact of a linear law by
  * model/type7.c. The fields ricochet does not use are read and checked,
  * not kept. */
 typedef struct rc_case_type24 {
     int id;
+    int type;                                 /* 24, or 25 (an /INTER/TYPE25 read into this struct) */
     char title[101];
     int surf1, surf2;                         /* line 1: surf_ID1, surf_ID2 */
     int istf;                                 /* line 1: 0 (1000 read as 0): k = Stfac times the shells'
@@ -199,6 +201,7 @@ typedef struct rc_case_type24 {
     int inacti;                               /* line 5: 0 or 5 (1000 read as 0) */
     double viss;                              /* line 5: critical damping fraction [-] */
     int sensor_id, fric_id;                   /* line 6 */
+    int iedge;                                /* TYPE25 line 1: 0 (1000 read as 0) or the edge option */
     rc_loc loc;
     rc_loc line_loc[6];                       /* lines 1-6 */
 } rc_case_type24;

@@ -339,6 +339,7 @@ rc_status rc_card_type6(rc_reader *rd, const rc_block *b);
 rc_status rc_card_power(rc_reader *rd, const rc_block *b);
 rc_status rc_card_type7(rc_reader *rd, const rc_block *b);
 rc_status rc_card_type24(rc_reader *rd, const rc_block *b);
+rc_status rc_card_type25(rc_reader *rd, const rc_block *b);
 /* cards_rwall.c */
 rc_status rc_card_rwall(rc_reader *rd, const rc_block *b);
 rc_status rc_card_sensor_time(rc_reader *rd, const rc_block *b);

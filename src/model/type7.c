@@ -186,7 +186,7 @@ static rc_status main_stiffness(const rc_case *c, const rc_case_type7 *t7, doubl
  * segments of both surfaces, within Stmin..Stmax. */
 static rc_status pair_stiffness(const rc_case *c, const rc_case_type24 *t24, double *k, rc_error *err)
 {
-    const t7_card t = {"/INTER/TYPE24", t24->id, t24->line_loc[0], t24->stfac, t24->stmin, t24->stmax};
+    const t7_card t = {t24->type == 25 ? "/INTER/TYPE25" : "/INTER/TYPE24", t24->id, t24->line_loc[0], t24->stfac, t24->stmin, t24->stmax};
     double sum = 0.0;
     int n = 0;
     rc_status st = shells_stiffness(c, &t, t24->surf1, &sum, &n, err);
@@ -245,28 +245,49 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
         const rc_case_type24 *t = &c->type24[i];
         const int sid[2] = {t->surf1, t->surf2};
         static const char *const fname[2] = {"surf_ID1", "surf_ID2"};
+        int nbox = 0;
         for (int q = 0; q < 2 && !st; q++) {
             const int s = rc_case_find_surf(c, sid[q]);
-            if (s < 0)
-                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /INTER/TYPE24/%d, field %s: expected the id of a /SURF, got %d (no such surface)",
-                            RC_LOC(t->line_loc[0]), t->id, fname[q], sid[q]);
-            else if (c->surf[s].kind != RC_CASE_SURF_SEG && c->surf[s].kind != RC_CASE_SURF_PART)
+            if (s < 0) {
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /INTER/TYPE%d/%d, field %s: expected the id of a /SURF, got %d (no such surface)",
+                            RC_LOC(t->line_loc[0]), t->type, t->id, fname[q], sid[q]);
+                break;
+            }
+            const rc_case_surf_kind k = c->surf[s].kind;
+            nbox += k == RC_CASE_SURF_BOX;
+            if (k != RC_CASE_SURF_SEG && k != RC_CASE_SURF_PART && !(t->type == 25 && k == RC_CASE_SURF_BOX))
                 st = RC_SET(err, RC_EINPUT,
-                            RC_LOCFMT "card /INTER/TYPE24/%d, field %s: /SURF/%s/%d is not supported yet (TYPE24 "
+                            RC_LOCFMT "card /INTER/TYPE%d/%d, field %s: /SURF/%s/%d is not supported yet (TYPE%d "
                                       "puts the nodes of each surface against the segments of the other): expected "
-                                      "a segment surface (/SURF/SEG, /SURF/PART)",
-                            RC_LOC(t->line_loc[0]), t->id, fname[q], rc_t7_kinds[c->surf[s].kind], sid[q]);
+                                      "a segment surface (/SURF/SEG, /SURF/PART)%s",
+                            RC_LOC(t->line_loc[0]), t->type, t->id, fname[q], rc_t7_kinds[k], sid[q], t->type,
+                            t->type == 25 ? ", or two /SURF/BOX" : "");
         }
+        /* TYPE25: two boxes meet corner to face and edge to edge (the box
+         * pair, docs/theory.md 2.7), with or without Iedge; meshed
+         * surfaces meet node to segment only, so Iedge is refused there */
+        if (!st && t->type == 25 && nbox == 1)
+            st = RC_SET(err, RC_EINPUT,
+                        RC_LOCFMT "card /INTER/TYPE25/%d, field surf_ID2: a /SURF/BOX against a segment surface is "
+                                  "not supported yet: expected two segment surfaces or two /SURF/BOX",
+                        RC_LOC(t->line_loc[0]), t->id);
+        if (!st && t->type == 25 && t->iedge != 0 && nbox != 2)
+            st = RC_SET(err, RC_EINPUT,
+                        RC_LOCFMT "card /INTER/TYPE25/%d, field Iedge: edge-to-edge contact of segment surfaces "
+                                  "(/SURF/SEG, /SURF/PART) is not supported yet (their nodes meet the other's "
+                                  "segments only): expected Iedge 0, or two /SURF/BOX (their 12 edges each meet "
+                                  "the other's)",
+                        RC_LOC(t->line_loc[0]), t->id);
         if (!st && t->fric_id > 0) {
             int found = 0;
             for (int f = 0; f < c->nfriction; f++) found |= c->friction[f].id == t->fric_id;
             if (!found)
-                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /INTER/TYPE24/%d, field fric_ID: expected the id of a /FRICTION, got %d (no such card)",
-                            RC_LOC(t->line_loc[5]), t->id, t->fric_id);
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /INTER/TYPE%d/%d, field fric_ID: expected the id of a /FRICTION, got %d (no such card)",
+                            RC_LOC(t->line_loc[5]), t->type, t->id, t->fric_id);
         }
         x->k24[i] = t->stfac;
         if (!st && t->istf == 0) st = pair_stiffness(c, t, &x->k24[i], err);
-        snprintf(x->name24[i], sizeof x->name24[i], "/INTER/TYPE24/%d", t->id);
+        snprintf(x->name24[i], sizeof x->name24[i], "/INTER/TYPE%d/%d", t->type, t->id);
     }
     if (st) {
         rc_type7_end(x);
@@ -406,16 +427,17 @@ rc_status rc_type7_contacts(rc_type7_case *x, rc_case *c, const rc_model *m, rc_
                                "the main surface %d: expected secondary nodes of another body (or of none, fixed)",
                      RC_LOC(t->line_loc[0]), t->id, t->grnod_id, t->surf_id);
     }
-    /* TYPE24: one two-way contact of the two surfaces (the nodes of each
-     * against the segments of the other), zero gap */
+    /* TYPE24, TYPE25: one two-way contact of the two surfaces (the nodes of
+     * each against the segments of the other; two boxes: corners against
+     * faces and edges against edges), zero gap */
     for (int i = 0; i < c->ntype24; i++) {
         const rc_case_type24 *t = &c->type24[i];
         const int s1 = rc_case_find_surf(c, t->surf1), s2 = rc_case_find_surf(c, t->surf2);
         if (m->surf_body[s1] == m->surf_body[s2])
             RC_RAISE(err, RC_EINPUT,
-                     RC_LOCFMT "card /INTER/TYPE24/%d, field surf_ID2: surfaces %d and %d are on one body%s: expected "
+                     RC_LOCFMT "card /INTER/TYPE%d/%d, field surf_ID2: surfaces %d and %d are on one body%s: expected "
                                "surfaces of two bodies (a rigid body does not meet itself)",
-                     RC_LOC(t->line_loc[0]), t->id, t->surf1, t->surf2, m->surf_body[s1] < 0 ? " (none, fixed)" : "");
+                     RC_LOC(t->line_loc[0]), t->type, t->id, t->surf1, t->surf2, m->surf_body[s1] < 0 ? " (none, fixed)" : "");
         rc_case_type6 *t6 = &x->type6[n++];
         *t6 = (rc_case_type6){.id = t->id, .surf1 = t->surf1, .surf2 = t->surf2, .fric = t->fric, .gap = 0.0,
                               .tstart = t->tstart, .tstop = t->tstop, .inacti = t->inacti, .ascalef = 1.0,

@@ -242,6 +242,73 @@ static void test_type24_model_errors(void)
         TU_EXPECT_TEXT_ERROR(text, "t24istf2.rad", "card /INTER/TYPE24/25, field Istf", "not supported yet");
 }
 
+/* /INTER/TYPE25/26 between the two boxes' faces (Istf 1, Stfac 4.2e4 N/m,
+ * Fric 0.11, Igap 1000, Iedge 0, Inacti 5, VISs 0.3), in place of the
+ * TYPE24 cards. */
+static const char t25_deck_c[] =
+    "/INTER/TYPE25/26\n"
+    "two boxes\n"
+    "        31        30         1         0      1000         0                   0         0\n"
+    "         0                             0                   0                   0                   0\n"
+    "                   0                   0         0         0                   0\n"
+    "               42000                0.11                                       0                   0\n"
+    "         0                   0         5                 0.3\n"
+    "         0         0                   0                   0                                       0\n"
+    "/GRAV/1\n"
+    "gravity\n"
+    "         0         Z         0         0         0                             1               -9.81\n"
+    "/RUN\n"
+    "                 0.1                0.01\n"
+    "/END\n";
+
+/* The TYPE25 deck, with the first occurrence of `from` replaced by `to`
+ * (same length) when from is not NULL; NULL when from is not found. */
+static const char *deck25_with(const char *from, const char *to)
+{
+    static char text[sizeof t24_deck_a + sizeof t25_deck_c];
+    snprintf(text, sizeof text, "%s%s", t24_deck_a, t25_deck_c);
+    if (!from) return text;
+    char *at = strstr(text, from);
+    if (!at || strlen(from) != strlen(to)) return NULL;
+    memcpy(at, to, strlen(to));
+    return text;
+}
+
+/* TYPE25: its own layout (Iedge 81-90, IVIS2 21-30, Inacti 31-40, VISs
+ * 41-60 of line 5), the same two-way contact as TYPE24; Iedge on segment
+ * surfaces refused by the compiler. */
+static void test_type25(void)
+{
+    rc_case *c = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    const rc_status st = rc_case_load(tu_tmp_write("t25read.rad", deck25_with(NULL, NULL)), &c, &e);
+    ENSURE(st == RC_OK);
+    if (st != RC_OK) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    ENSURE(c->ntype24 == 1 && c->type24[0].type == 25 && c->type24[0].id == 26);
+    const rc_case_type24 *t = &c->type24[0];
+    ENSURE(t->surf1 == 31 && t->surf2 == 30 && t->istf == 1 && t->iedge == 0 && t->inacti == 5 && t->viss == 0.3);
+    ENSURE(t->stfac == 42000 && t->fric == 0.11 && t->tstop == 1e30);
+    rc_case_free(c);
+    rc_model *m = TU_COMPILE_OK(deck25_with(NULL, NULL), "t25model.rad");
+    if (m) {
+        ENSURE(m->ninter == 1 && m->inter_id[0] == 26 && strcmp(m->inter_name[0], "/INTER/TYPE25/26") == 0);
+        ENSURE(m->inter_pair[0] == RC_PAIR_SEG_SEG && !m->inter_oneway[0] && rc_seg_points(m, 0) == 16);
+        ENSURE_NEAR(m->inter_fscaleld[0] / m->inter_ascalex[0], 4.2e4, 1e-15, 0);
+        ENSURE_NEAR(m->inter_fr[0].fric, 0.11, 0, 0);
+        ENSURE_NEAR(m->inter_visc[0], 0.3 * 2.0 * sqrt(4.2e4 * 2.0 * 7.0 / 9.0), 1e-14, 0);
+        rc_model_free(m);
+    }
+    const char *text = deck25_with("         0         0\n         0", "         0         2\n         0");
+    ENSURE(text != NULL);
+    if (text)
+        TU_EXPECT_TEXT_ERROR(text, "t25iedge.rad", "card /INTER/TYPE25/26, field Iedge",
+                             "edge-to-edge contact of segment surfaces", "not supported yet");
+}
+
 void suite_type24(void);
 void suite_type24(void)
 {
@@ -249,4 +316,5 @@ void suite_type24(void)
     RUN_TEST(test_type24_model);
     RUN_TEST(test_type24_units);
     RUN_TEST(test_type24_model_errors);
+    RUN_TEST(test_type25);
 }

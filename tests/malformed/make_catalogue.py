@@ -567,6 +567,28 @@ TL('type24_friction_missing', T24H, 'field fric_ID',
 TL('type24_same_body', T24H, 'field surf_ID2',
    before_end(SEGS24 + T24(l1='        95        96         1'), expect=len(SEGS24) + 2))
 
+
+def T25(l1=None, l2='', l3='', l4=None, l5='', l6=''):
+    """/INTER/TYPE25/95 (surf_ID1 /SURF/PLANE/2, surf_ID2 /SURF/BOX/4 by
+    default; Istf 1, Stfac 1e5 N/m) with the lines given."""
+    l1 = '         2         4         1' if l1 is None else l1
+    l4 = STOP('1e5') if l4 is None else l4
+    return ['/INTER/TYPE25/95', 'penalty contact', l1, l2, l3, l4, l5, l6]
+
+
+T25H = '/INTER/TYPE25/95'
+TL('type25_istf_combined', T25H, 'field Istf', before_end(T25(l1='         2         4         4'), expect=2))
+TL('type25_ithe', T25H, 'field Ithe', before_end(T25(l1='         2         4         1         1'), expect=2))
+TL('type25_igap_variable', T25H, 'field Igap', before_end(T25(l1='         2         4         1         0         2'), expect=2))
+TL('type25_self_contact', T25H, 'field surf_ID2', before_end(T25(l1='         2         0         1'), expect=2))
+TL('type25_ivis2', T25H, 'field IVIS2', before_end(T25(l5=cols('', 21, 30, '-1')), expect=6))
+TL('type25_inacti', T25H, 'field Inacti', before_end(T25(l5=cols('', 31, 40, '1')), expect=6))
+TL('type25_ifric', T25H, 'field Ifric', before_end(T25(l6='         2'), expect=7))
+TL('type25_iedge_segments', T25H, 'field Iedge',
+   before_end(SEGS24 + T25(l1=cols('        95        96         1', 81, 90, '2')), expect=len(SEGS24) + 2))
+TL('type25_box_against_segments', T25H, 'field surf_ID2',
+   before_end(SEGS24 + T25(l1='         4        95         1'), expect=len(SEGS24) + 2))
+
 def write_all():
     for old in glob.glob('[0-9][0-9][0-9]_*'):
         os.remove(old)

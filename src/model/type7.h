@@ -9,7 +9,9 @@
  * copy of the case with these surfaces, contacts and their load curve
  * appended; the deck's own arrays are untouched.
  *
- * /INTER/TYPE24 takes the same path without point surfaces: one TYPE6
+ * /INTER/TYPE24 (and /INTER/TYPE25, whose two /SURF/BOX surfaces meet
+ * through the box pair, edges included) take the same path without point
+ * surfaces: one TYPE6
  * contact of its two segment surfaces, both ways (the nodes of each
  * against the segments of the other), the same linear law (k = Stfac,
  * Istf 1; Stfac E t / 2, the mean over the shells of both surfaces, Istf 0),

@@ -17,7 +17,10 @@ contact"):
    lets it fall through, checked too): at rest with F = m g, P = m g / k;
 3. the cube launched at v0 along x (rotations held), Coulomb Fric mu on the
    card: stops after v0^2 / (2 mu g) at v0 / (mu g);
-4. the same with fric_ID naming a /FRICTION card of the Coulomb law.
+4. the same with fric_ID naming a /FRICTION card of the Coulomb law;
+1b. Istf 0: shells under both surfaces (the floor a fixed body of shells,
+   the cube's bottom face a shell of negligible mass), k = Stfac E t / 2:
+   the same rest.
 """
 import os
 import sys
@@ -47,6 +50,20 @@ def type24(d, iid, s1, s2, stfac, fric=0.0, fric_id=0, istf=1):
           title="surface to surface")
 
 
+# Istf 0: the floor and the cube's bottom face shells (/MAT/LAW1 E,
+# /PROP/SHELL Thick): k = Stfac E t / 2 = K on both sides
+E_SH, T_SH, STFAC0 = 4.0e7, 0.01, 0.5
+
+
+def shells(d, pid, segs, rho, title):
+    """/SHELL/pid on the segments' nodes, /PART, /PROP/SHELL (T_SH) and
+    /MAT/LAW1 (E_SH, density rho) of id pid."""
+    d.add(f"/SHELL/{pid}", *segs)
+    d.add(f"/PART/{pid}", line(("i", pid), ("i", pid)), title=title)
+    d.add(f"/PROP/SHELL/{pid}", "", "", line(("i", 0), ("i", 0), ("r", T_SH)), title=title)
+    d.add(f"/MAT/LAW1/{pid}", line(("r", rho)), line(("r", E_SH), ("r", 0.3)), title=title)
+
+
 def floor_seg(d, sid, x, y, nf, h, first):
     """A fixed floor at z = 0: (nf + 1)^2 nodes of no body from node id
     first, centred at (x, y), side 2 h, nf x nf segments, normal +z."""
@@ -60,9 +77,10 @@ def floor_seg(d, sid, x, y, nf, h, first):
             n0 = first + n1 * j + i
             segs.append(line(("i", len(segs) + 1), ("i", n0), ("i", n0 + 1), ("i", n0 + n1 + 1), ("i", n0 + n1)))
     d.add(f"/SURF/SEG/{sid}", *segs, title="floor")
+    return nodes, segs
 
 
-def cube(title, z0, x0=0.0, v=None, fric=0.0, fric_card=False):
+def cube(title, z0, x0=0.0, v=None, fric=0.0, fric_card=False, istf=1):
     d = Deck(title)
     corners = [(11 + k, x0 + sx * A, sy * A, z0 + A + sz * A)
                for k, (sx, sy, sz) in enumerate([(-1, -1, -1), (1, -1, -1), (1, 1, -1), (-1, 1, -1),
@@ -71,13 +89,23 @@ def cube(title, z0, x0=0.0, v=None, fric=0.0, fric_card=False):
     d.rbody(1, 1, M, [J] * 3, grnod=2, title="cube 2 kg")
     d.grnod(2, [n for n, _, _, _ in corners], title="corners")
     # the bottom face, normal -z (towards the floor)
-    d.add("/SURF/SEG/20", line(("i", 1), ("i", 11), ("i", 14), ("i", 13), ("i", 12)), title="cube bottom")
-    floor_seg(d, 30, 0.0, 0.0, 2, 1.0, 101)
+    bottom = line(("i", 1), ("i", 11), ("i", 14), ("i", 13), ("i", 12))
+    d.add("/SURF/SEG/20", bottom, title="cube bottom")
+    fnodes, fsegs = floor_seg(d, 30, 0.0, 0.0, 2, 1.0, 101)
+    if istf == 0:  # shells under both surfaces; the floor a fixed body
+        d.nodes([(100, 0.0, 0.0, 0.0)])
+        d.rbody(2, 100, 0.0, [0.0] * 3, grnod=3, title="floor")
+        d.grnod(3, [n for n, _, _, _ in fnodes], title="floor nodes")
+        d.bcs(2, 3, title="floor fixed")
+        shells(d, 5, fsegs, 7800.0, "floor shells")
+        shells(d, 6, [line(("i", 9), ("i", 11), ("i", 14), ("i", 13), ("i", 12))], 1e-6,
+               "cube bottom shell (1e-6 kg/m^3: 4e-10 kg)")
     if v is not None:
         d.bcs(1, 2, trarot="000 111", title="no rotation")
         d.inivel(1, v, 2)
     d.grav(1, "Z", -G, 2)
-    type24(d, 24, 20, 30, K, fric=0.0 if fric_card else fric, fric_id=9 if fric_card else 0)
+    type24(d, 24, 20, 30, K if istf == 1 else STFAC0, fric=0.0 if fric_card else fric, fric_id=9 if fric_card else 0,
+           istf=istf)
     if fric_card:
         d.friction(9, iform=2, fric=MU, title="Coulomb")
     d.run(4.0 if v is None else 0.5, 0.005)
@@ -99,6 +127,10 @@ def type7(d, iid, grnod, surf, stfac):
           line(("i", 0), ("i", None), ("i", 0), ("r", 0.0), ("r", 0.0), ("r", 0.0)),
           line(("i", 0), ("i", 0), ("r", 0.0), ("i", 0), ("i", 0), ("i", 0), ("r", 0.0), ("i", 0)),
           title="plate nodes on the pedestal")
+
+
+def drop_istf0():
+    return cube("TYPE24 Istf 0: a cube's bottom shell dropped on a floor of shells", H0, istf=0)
 
 
 def plate(one_way=False):
@@ -130,12 +162,15 @@ def slide(card=False):
 
 def main():
     # 1. at rest: F = m g, P = m g / k
-    for name, deck, z_of in (("cube", drop, lambda r: A - r.pos[-1, 0, 2]), ("plate", plate, lambda r: -r.pos[-1, 0, 2])):
+    for name, deck, z_of in (("cube", drop, lambda r: A - r.pos[-1, 0, 2]), ("plate", plate, lambda r: -r.pos[-1, 0, 2]),
+                             ("istf0", drop_istf0, lambda r: A - r.pos[-1, 0, 2])):
         r = rcval.Result(rcval.run(deck(), name))
         pen = z_of(r)
         ep, ef = rcval.rel(pen, P_REST), rcval.rel(r.fn[-1, 0], M * G)
-        what = ("the cube's 4 bottom nodes and the floor's centre node" if name == "cube" else
-                "the pedestal's 4 nodes alone against the plate's face (both ways)")
+        what = {"cube": "the cube's 4 bottom nodes and the floor's centre node",
+                "plate": "the pedestal's 4 nodes alone against the plate's face (both ways)",
+                "istf0": f"Istf 0, Stfac {STFAC0} on shells (E {E_SH:g} Pa, t {T_SH} m) under both surfaces: "
+                         f"k = Stfac E t / 2 = {0.5 * STFAC0 * E_SH * T_SH:g} N/m"}[name]
         rcval.check(f"type24.rest.{name}", ef < 1e-6 and ep < 1e-5,
                     f"max rel. error {max(ef, ep):.1e}: dropped {H0} m, {what}: at rest at t = {r.t[-1]:g} s with the "
                     f"interface force {r.fn[-1, 0]:.12f} N (m g = {M * G:.12f} N, {ef:.1e} < 1e-6), {pen:.9e} m deep "
@@ -166,4 +201,4 @@ def main():
 
 
 if __name__ == "__main__":
-    rcval.entry(main, lambda: {"case.rad": drop(), "plate.rad": plate(), "slide.rad": slide()})
+    rcval.entry(main, lambda: {"case.rad": drop(), "plate.rad": plate(), "istf0.rad": drop_istf0(), "slide.rad": slide()})

@@ -16,6 +16,8 @@ surfaces Iedge is refused (nodes against segments only).
    dropped across a fixed bar laid the other way: no corner of either is
    over the other's faces, only the crossing edges hold it: at rest with
    F = m g, P = m g / k, the deepest point at a crossing of two edges;
+3b. corners against faces: a box (15 kg) dropped flat onto a fixed box
+   through TYPE25 (two /SURF/BOX, Iedge 0): F = m g, P = m g / k;
 4. Coulomb stop of the cube with Fric: v0^2 / (2 mu g) at v0 / (mu g).
 """
 import importlib.util
@@ -87,6 +89,27 @@ def bars():
     return d
 
 
+MB = 15.0                    # the box resting flat on a box [kg], 0.2 x 0.12 x 0.08 m
+
+
+def flat():
+    """A box (/SURF/BOX 15 on body 5) dropped flat onto a fixed 1 m cube
+    (/SURF/BOX 1): its 4 bottom corners on the cube's top face, TYPE25
+    Iedge 0."""
+    d = Deck("TYPE25: a box dropped flat on a box (corners against faces)")
+    d.box(1, 0, (0.0, 0.0, -0.5), (0.5, 0.5, 0.5), title="fixed 1 m cube, top face z = 0")
+    x = (0.1, -0.05, 0.04 + H0)
+    d.nodes([(5, *x)])
+    d.grnod(5, [5], title="box")
+    d.rbody(5, 5, MB, (MB * (0.12**2 + 0.08**2) / 12, MB * (0.2**2 + 0.08**2) / 12, MB * (0.2**2 + 0.12**2) / 12),
+            grnod=5, title="box 15 kg")
+    d.box(15, 5, x, (0.1, 0.06, 0.04), title="box on the cube")
+    type25(d, 25, 15, 1, K, viss=ZETA)
+    d.grav(1, "Z", -G, 5)
+    d.run(1.0, 0.01)
+    return d
+
+
 def main():
     # 1, 2. at rest: F = m g, P = m g / k
     for name, deck, z_of in (("cube", drop, lambda r: A - r.pos[-1, 0, 2]),
@@ -109,6 +132,14 @@ def main():
                 f"max rel. error {max(e1, e2):.1e}: the bar across the bar (Iedge 2, two /SURF/BOX): F = {fn:.9g} N "
                 f"(m g = {M8 * G:.9g} N, {e1:.1e} < 1e-6), P = {p:.9e} m (m g / k = {M8 * G / K:.9e} m, {e2:.1e} < 5e-5); "
                 f"deepest point ({x[0]:.5f}, {x[1]:.5f}, {x[2]:.2e}) m at a crossing of two edges: {crossing}")
+    # 3b. corners against faces: a box resting flat on a box
+    r = rcval.Result(rcval.run(flat(), "flat"))
+    fn, p = r.fn[-1, 0], r.pen[-1, 0]
+    e1, e2 = rcval.rel(fn, MB * G), rcval.rel(p, MB * G / K)
+    rcval.check("type25.boxes.flat.rest", e1 < 1e-6 and e2 < 5e-5,
+                f"max rel. error {max(e1, e2):.1e}: a 15 kg box dropped flat on a fixed box (Iedge 0, two /SURF/BOX, "
+                f"its 4 bottom corners on the top face): F = {fn:.9g} N (m g = {MB * G:.9g} N, {e1:.1e} < 1e-6), "
+                f"P = {p:.9e} m (m g / k = {MB * G / K:.9e} m, {e2:.1e} < 5e-5)")
     # 4. Coulomb stop
     r = rcval.Result(rcval.run(slide(), "fric"))
     d_ref = V0**2 / (2 * MU * G)
@@ -124,4 +155,4 @@ def main():
 
 
 if __name__ == "__main__":
-    rcval.entry(main, lambda: {"case.rad": drop(), "bars.rad": bars(), "slide.rad": slide()})
+    rcval.entry(main, lambda: {"case.rad": drop(), "bars.rad": bars(), "flat.rad": flat(), "slide.rad": slide()})

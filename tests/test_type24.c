@@ -275,8 +275,9 @@ static const char *deck25_with(const char *from, const char *to)
 }
 
 /* TYPE25: its own layout (Iedge 81-90, IVIS2 21-30, Inacti 31-40, VISs
- * 41-60 of line 5), the same two-way contact as TYPE24; Iedge on segment
- * surfaces refused by the compiler. */
+ * 41-60 of line 5), the same two-way contact as TYPE24; Iedge on two
+ * closed box meshes: their boxes' pair; on other segment surfaces refused
+ * by the compiler. */
 static void test_type25(void)
 {
     rc_case *c = NULL;
@@ -302,11 +303,27 @@ static void test_type25(void)
         ENSURE_NEAR(m->inter_visc[0], 0.3 * 2.0 * sqrt(4.2e4 * 2.0 * 7.0 / 9.0), 1e-14, 0);
         rc_model_free(m);
     }
-    const char *text = deck25_with("         0         0\n         0", "         0         2\n         0");
-    ENSURE(text != NULL);
-    if (text)
-        TU_EXPECT_TEXT_ERROR(text, "t25iedge.rad", "card /INTER/TYPE25/26, field Iedge",
-                             "edge-to-edge contact of segment surfaces", "not supported yet");
+    /* Iedge 2: the two face surfaces are closed box meshes (6
+     * quadrilaterals on 8 corners each): taken as their boxes, the box
+     * pair (8 + 8 corners, 144 edge pairs) */
+    static const char iedge_from[] = "         0         0\n         0", iedge_to[] = "         0         2\n         0";
+    m = TU_COMPILE_OK(deck25_with(iedge_from, iedge_to), "t25boxes.rad");
+    if (m) {
+        ENSURE(m->ninter == 1 && rc_box_is_box_pair(m, 0) && rc_seg_points(m, 0) == 16 + 144);
+        ENSURE(m->surf_kind[m->inter_sa[0]] == RC_SURF_BOX && m->inter_ba[0] == 0 && m->inter_bb[0] == 1);
+        ENSURE_NEAR(m->inter_fscaleld[0] / m->inter_ascalex[0], 4.2e4, 1e-15, 0);
+        rc_model_free(m);
+    }
+    /* a face surface that is not a closed box mesh (a segment on 3 nodes) */
+    char buf[sizeof t24_deck_a + sizeof t25_deck_c];
+    snprintf(buf, sizeof buf, "%s", deck25_with(iedge_from, iedge_to));
+    char *seg = strstr(buf, "        14        11        15        18");
+    ENSURE(seg != NULL);
+    if (seg) {
+        memcpy(seg, "        14        11        15        15", 40);
+        TU_EXPECT_TEXT_ERROR(buf, "t25iedge.rad", "card /INTER/TYPE25/26, field Iedge",
+                             "edge-to-edge contact of segment surfaces", "closed box meshes", "/SURF/SEG/31");
+    }
 }
 
 void suite_type24(void);

@@ -198,6 +198,111 @@ static rc_status pair_stiffness(const rc_case *c, const rc_case_type24 *t24, dou
     return RC_OK;
 }
 
+/* A closed box mesh (TYPE25 Iedge, docs/theory.md 3.8): a /SURF/SEG of 6
+ * quadrilaterals on 8 nodes of one body (or of none) that are the corners
+ * of a rectangular box, one face each, as the analytic /SURF/BOX *out
+ * (centre, half-sizes, axes, body); 0 when cs is not such a mesh. */
+static int mesh_box(const rc_case *c, const rc_case_surf *cs, rc_case_surf *out)
+{
+    if (cs->kind != RC_CASE_SURF_SEG || cs->nseg != 6) return 0;
+    int ids[8], n = 0;
+    for (int j = 0; j < 6; j++)
+        for (int q = 0; q < 4; q++) {
+            const int id = cs->seg[4 * j + q];
+            if (id == 0) return 0; /* a triangle */
+            int dup = 0;
+            for (int r = 0; r < n && !dup; r++) dup = ids[r] == id;
+            if (!dup) {
+                if (n == 8) return 0;
+                ids[n++] = id;
+            }
+        }
+    if (n != 8) return 0;
+    double x[8][3], g[3] = {0, 0, 0};
+    const int b0 = rc_case_body_of_node(c, ids[0]);
+    for (int r = 0; r < 8; r++) {
+        const int k = rc_case_find_node(c, ids[r]);
+        if (k < 0 || rc_case_body_of_node(c, ids[r]) != b0) return 0;
+        for (int d = 0; d < 3; d++) {
+            x[r][d] = c->node[k].x[d];
+            g[d] += x[r][d] / 8.0;
+        }
+    }
+    /* the three nodes next to node 0 along the quadrilaterals' sides span
+     * its three edges */
+    int near[3], nn = 0;
+    for (int j = 0; j < 6; j++)
+        for (int k = 0; k < 4; k++) {
+            if (cs->seg[4 * j + k] != ids[0]) continue;
+            const int nb2[2] = {cs->seg[4 * j + (k + 1) % 4], cs->seg[4 * j + (k + 3) % 4]};
+            for (int q = 0; q < 2; q++) {
+                int r = 0, dup = 0;
+                while (ids[r] != nb2[q]) r++;
+                for (int z = 0; z < nn && !dup; z++) dup = near[z] == r;
+                if (dup) continue;
+                if (nn == 3) return 0;
+                near[nn++] = r;
+            }
+        }
+    if (nn != 3) return 0;
+    double e[3][3], len[3], size = 0;
+    for (int q = 0; q < 3; q++) {
+        len[q] = 0;
+        for (int d = 0; d < 3; d++) {
+            e[q][d] = x[near[q]][d] - x[0][d];
+            len[q] += e[q][d] * e[q][d];
+        }
+        len[q] = sqrt(len[q]);
+        if (!(len[q] > 0)) return 0;
+        for (int d = 0; d < 3; d++) e[q][d] /= len[q];
+        size = fmax(size, len[q]);
+    }
+    const double tol = 1e-9;
+    for (int a = 0; a < 3; a++)
+        for (int bq = a + 1; bq < 3; bq++)
+            if (fabs(e[a][0] * e[bq][0] + e[a][1] * e[bq][1] + e[a][2] * e[bq][2]) > tol) return 0;
+    /* w = u x v: e[2] turned to it */
+    const double w[3] = {e[0][1] * e[1][2] - e[0][2] * e[1][1], e[0][2] * e[1][0] - e[0][0] * e[1][2],
+                         e[0][0] * e[1][1] - e[0][1] * e[1][0]};
+    const double sw = w[0] * e[2][0] + w[1] * e[2][1] + w[2] * e[2][2] < 0 ? -1.0 : 1.0;
+    for (int d = 0; d < 3; d++) e[2][d] = sw * e[2][d];
+    /* every node a corner: +- each half-size along each axis; each
+     * quadrilateral on one face (its nodes on one side along one axis) */
+    int sign[8][3];
+    for (int r = 0; r < 8; r++)
+        for (int q = 0; q < 3; q++) {
+            const double t = (x[r][0] - g[0]) * e[q][0] + (x[r][1] - g[1]) * e[q][1] + (x[r][2] - g[2]) * e[q][2];
+            if (fabs(fabs(t) - 0.5 * len[q]) > tol * size) return 0;
+            sign[r][q] = t > 0 ? 1 : -1;
+        }
+    int faces = 0;
+    for (int j = 0; j < 6; j++) {
+        int face = -1;
+        for (int q = 0; q < 3 && face < 0; q++) {
+            int same = 1, s0 = 0;
+            for (int k = 0; k < 4; k++) {
+                int r = 0;
+                while (ids[r] != cs->seg[4 * j + k]) r++;
+                if (k == 0) s0 = sign[r][q];
+                same &= sign[r][q] == s0;
+            }
+            if (same) face = 2 * q + (s0 > 0);
+        }
+        if (face < 0 || (faces & (1 << face))) return 0;
+        faces |= 1 << face;
+    }
+    *out = (rc_case_surf){.id = cs->id, .kind = RC_CASE_SURF_BOX, .loc = cs->loc, .rbody_loc = cs->loc,
+                          .rbody_id = b0 >= 0 ? c->rbody[b0].id : 0};
+    snprintf(out->title, sizeof out->title, "the box of /SURF/SEG/%d", cs->id);
+    for (int d = 0; d < 3; d++) {
+        out->c[d] = g[d];
+        out->abc[d] = 0.5 * len[d];
+        out->axis[d] = e[0][d];
+        out->axis2[d] = e[1][d];
+    }
+    return 1;
+}
+
 rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
 {
     memset(x, 0, sizeof *x);
@@ -237,7 +342,9 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
     /* the TYPE24 cards: two segment surfaces, their stiffness, fric_ID */
     x->k24 = calloc((size_t)c->ntype24 + 1, sizeof *x->k24);
     x->name24 = calloc((size_t)c->ntype24 + 1, sizeof *x->name24);
-    if (!x->k24 || !x->name24) {
+    x->bx = calloc(2 * (size_t)c->ntype24 + 1, sizeof *x->bx);
+    x->t24 = calloc((size_t)c->ntype24 + 1, sizeof *x->t24);
+    if (!x->k24 || !x->name24 || !x->bx || !x->t24) {
         rc_type7_end(x);
         RC_RAISE(err, RC_ENOMEM, "out of memory");
     }
@@ -271,13 +378,24 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
                         RC_LOCFMT "card /INTER/TYPE25/%d, field surf_ID2: a /SURF/BOX against a segment surface is "
                                   "not supported yet: expected two segment surfaces or two /SURF/BOX",
                         RC_LOC(t->line_loc[0]), t->id);
-        if (!st && t->type == 25 && t->iedge != 0 && nbox != 2)
-            st = RC_SET(err, RC_EINPUT,
-                        RC_LOCFMT "card /INTER/TYPE25/%d, field Iedge: edge-to-edge contact of segment surfaces "
-                                  "(/SURF/SEG, /SURF/PART) is not supported yet (their nodes meet the other's "
-                                  "segments only): expected Iedge 0, or two /SURF/BOX (their 12 edges each meet "
-                                  "the other's)",
-                        RC_LOC(t->line_loc[0]), t->id);
+        /* Iedge on two closed box meshes: their analytic boxes (mesh_box),
+         * appended below; other segment surfaces have no edge pairs */
+        if (!st && t->type == 25 && t->iedge != 0 && nbox == 0) {
+            const rc_case_surf *s1 = &c->surf[rc_case_find_surf(c, t->surf1)], *s2 = &c->surf[rc_case_find_surf(c, t->surf2)];
+            if (mesh_box(c, s1, &x->bx[2 * i]) && mesh_box(c, s2, &x->bx[2 * i + 1]) &&
+                x->bx[2 * i].rbody_id != x->bx[2 * i + 1].rbody_id)
+                x->nbx += 2;
+            else
+                st = RC_SET(err, RC_EINPUT,
+                            RC_LOCFMT "card /INTER/TYPE25/%d, field Iedge: edge-to-edge contact of segment surfaces "
+                                      "is not supported yet except between two closed box meshes of two bodies "
+                                      "(a /SURF/SEG of 6 quadrilaterals on the 8 corners of a rectangular box, "
+                                      "taken as that box); /SURF/%s/%d and /SURF/%s/%d are not both such meshes: "
+                                      "expected Iedge 0 (nodes against segments only), two such meshes, or two "
+                                      "/SURF/BOX",
+                            RC_LOC(t->line_loc[0]), t->id, rc_t7_kinds[s1->kind], t->surf1, rc_t7_kinds[s2->kind],
+                            t->surf2);
+        }
         if (!st && t->fric_id > 0) {
             int found = 0;
             for (int f = 0; f < c->nfriction; f++) found |= c->friction[f].id == t->fric_id;
@@ -319,7 +437,7 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
         }
     }
     x->nuser = c->nsurf;
-    x->surf = calloc((size_t)(c->nsurf + npts) + 1, sizeof *x->surf);
+    x->surf = calloc((size_t)(c->nsurf + npts + x->nbx) + 1, sizeof *x->surf);
     x->funct = calloc((size_t)c->nfunct + 1, sizeof *x->funct);
     x->name = calloc((size_t)npts + 1, sizeof *x->name);
     x->pts_t7 = calloc((size_t)npts + 1, sizeof *x->pts_t7);
@@ -380,8 +498,25 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
         }
     x->len = fmax(fmax(hi[0] - lo[0], hi[1] - lo[1]), hi[2] - lo[2]);
     if (!(x->len > 0)) x->len = 1.0;
+    /* the boxes of TYPE25's closed box meshes, after the point surfaces
+     * (ids below RC_TYPE7_SURF_ID0 as theirs: no surface of the body's own
+     * for the walls); the copy's TYPE24/25 cards name them */
+    int nbs = 0;
+    if (c->ntype24) memcpy(x->t24, c->type24, (size_t)c->ntype24 * sizeof *x->t24);
+    for (int i = 0; i < c->ntype24; i++) {
+        if (x->bx[2 * i].kind != RC_CASE_SURF_BOX) continue;
+        for (int q = 0; q < 2; q++) {
+            rc_case_surf *bs = &x->surf[x->nuser + x->npts + nbs];
+            *bs = x->bx[2 * i + q];
+            bs->id = RC_TYPE7_SURF_ID0 - (x->npts + nbs);
+            if (q == 0) x->t24[i].surf1 = bs->id;
+            else x->t24[i].surf2 = bs->id;
+            nbs++;
+        }
+    }
+    x->c.type24 = x->t24;
     x->c.surf = x->surf;
-    x->c.nsurf = x->nuser + x->npts;
+    x->c.nsurf = x->nuser + x->npts + nbs;
     x->c.funct = x->funct;
     x->c.nfunct = c->nfunct + 1;
     /* the copy's own index (case/lookup.c) */
@@ -468,5 +603,7 @@ void rc_type7_end(rc_type7_case *x)
     free(x->k);
     free(x->k24);
     free(x->name24);
+    free(x->bx);
+    free(x->t24);
     memset(x, 0, sizeof *x);
 }

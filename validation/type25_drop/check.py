@@ -16,6 +16,9 @@ surfaces Iedge is refused (nodes against segments only).
    dropped across a fixed bar laid the other way: no corner of either is
    over the other's faces, only the crossing edges hold it: at rest with
    F = m g, P = m g / k, the deepest point at a crossing of two edges;
+3c. the same bars as closed box meshes (/SURF/SEG of 6 faces on 8
+   corners), Iedge 2: taken as their boxes, the same rest; with Iedge 0
+   (nodes against segments only) the upper bar falls through;
 3b. corners against faces: a box (15 kg) dropped flat onto a fixed box
    through TYPE25 (two /SURF/BOX, Iedge 0): F = m g, P = m g / k;
 4. Coulomb stop of the cube with Fric: v0^2 / (2 mu g) at v0 / (mu g).
@@ -89,6 +92,37 @@ def bars():
     return d
 
 
+def box_mesh(d, sid, first, x, half, title):
+    """The 8 corners (node ids first..first+7) of a box centred at x with
+    half-sizes half, and /SURF/SEG/sid of its 6 faces, outward."""
+    c = [(first + k, x[0] + sx * half[0], x[1] + sy * half[1], x[2] + sz * half[2])
+         for k, (sx, sy, sz) in enumerate([(-1, -1, -1), (1, -1, -1), (1, 1, -1), (-1, 1, -1),
+                                          (-1, -1, 1), (1, -1, 1), (1, 1, 1), (-1, 1, 1)])]
+    d.nodes(c)
+    f = first
+    faces = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
+    d.add(f"/SURF/SEG/{sid}", *[line(("i", j + 1), *[("i", f + q) for q in fc]) for j, fc in enumerate(faces)],
+          title=title)
+    return [n for n, _, _, _ in c]
+
+
+def mesh_bars(iedge=2):
+    """The bars of bars() as closed box meshes (/SURF/SEG of 6 faces on 8
+    corners): the upper one on body 8, the lower one on nodes of no body."""
+    d = Deck(f"TYPE25 Iedge {iedge}: a meshed bar dropped across a meshed bar")
+    x = (0.0, Y8, W8 / 2 + H0)
+    d.nodes([(8, *x)])
+    corners = box_mesh(d, 18, 81, x, (L8 / 2, W8 / 2, W8 / 2), "bar along x, across the fixed one")
+    d.grnod(8, corners, title="bar corners")
+    j = (M8 * 2 * W8**2 / 12, M8 * (L8**2 + W8**2) / 12, M8 * (L8**2 + W8**2) / 12)
+    d.rbody(8, 8, M8, j, grnod=8, title="bar 6 kg")
+    box_mesh(d, 1, 91, (0.0, 0.0, -W8 / 2), (W8 / 2, L8 / 2, W8 / 2), "fixed bar along y, top face z = 0")
+    type25(d, 25, 18, 1, K, iedge=iedge, viss=ZETA)
+    d.grav(1, "Z", -G, 8)
+    d.run(1.0 if iedge else 0.3, 0.01)
+    return d
+
+
 MB = 15.0                    # the box resting flat on a box [kg], 0.2 x 0.12 x 0.08 m
 
 
@@ -132,6 +166,26 @@ def main():
                 f"max rel. error {max(e1, e2):.1e}: the bar across the bar (Iedge 2, two /SURF/BOX): F = {fn:.9g} N "
                 f"(m g = {M8 * G:.9g} N, {e1:.1e} < 1e-6), P = {p:.9e} m (m g / k = {M8 * G / K:.9e} m, {e2:.1e} < 5e-5); "
                 f"deepest point ({x[0]:.5f}, {x[1]:.5f}, {x[2]:.2e}) m at a crossing of two edges: {crossing}")
+    # 3c. the same bars as closed box meshes: Iedge 2 takes them as their
+    # boxes (the same rest); Iedge 0, nodes against segments, they pass
+    # through each other
+    r = rcval.Result(rcval.run(mesh_bars(), "mesh_bars"))
+    with Dataset(r.path) as nc:
+        x = nc["inter_contact_point"][-1, 0]
+    fn, p = r.fn[-1, 0], r.pen[-1, 0]
+    e1, e2 = rcval.rel(fn, M8 * G), rcval.rel(p, M8 * G / K)
+    crossing = abs(abs(x[0]) - W8 / 2) < 1e-3 and abs(abs(x[1] - Y8) - W8 / 2) < 1e-3
+    rcval.check("type25.edges.mesh_bar.rest", e1 < 1e-6 and e2 < 5e-5 and crossing,
+                f"max rel. error {max(e1, e2):.1e}: two meshed bars (/SURF/SEG, 6 faces on 8 corners each), Iedge 2: "
+                f"F = {fn:.9g} N ({e1:.1e} < 1e-6), P = {p:.9e} m ({e2:.1e} < 5e-5); deepest point ({x[0]:.5f}, "
+                f"{x[1]:.5f}) m at a crossing of two edges: {crossing}")
+    r = rcval.Result(rcval.run(mesh_bars(iedge=0), "mesh_bars_iedge0"))
+    z_ff = W8 / 2 + H0 - 0.5 * G * r.t[-1] ** 2
+    ez = rcval.rel(r.pos[-1, 0, 2], z_ff)
+    rcval.check("type25.edges.mesh_bar_iedge0_falls", ez < 1e-9 and abs(r.fn[:, 0]).max() == 0.0,
+                f"rel. error {ez:.1e} (< 1e-9): Iedge 0 (nodes against segments only): no corner of either bar over "
+                f"the other's faces, the bar falls through: z = {r.pos[-1, 0, 2]:.9f} m at t = {r.t[-1]:g} s (free fall "
+                f"{z_ff:.9f} m), largest interface force {abs(r.fn[:, 0]).max():g} N")
     # 3b. corners against faces: a box resting flat on a box
     r = rcval.Result(rcval.run(flat(), "flat"))
     fn, p = r.fn[-1, 0], r.pen[-1, 0]
@@ -155,4 +209,5 @@ def main():
 
 
 if __name__ == "__main__":
-    rcval.entry(main, lambda: {"case.rad": drop(), "bars.rad": bars(), "flat.rad": flat(), "slide.rad": slide()})
+    rcval.entry(main, lambda: {"case.rad": drop(), "bars.rad": bars(), "mesh_bars.rad": mesh_bars(), "flat.rad": flat(),
+                               "slide.rad": slide()})

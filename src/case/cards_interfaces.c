@@ -461,7 +461,7 @@ rc_status rc_card_type24(rc_reader *rd, const rc_block *b)
                             rc_layout_version(rd));
     if ((st = rc_card_lines(rd, b, t->title, 6, 8,
                             "surf_ID1 surf_ID2 Istf (blank) (blank) Irem_i2 (blank) Idel, grnd_IDs (blank) Iedge "
-                            "(blank) Edge_angle Gap_max_s Gap_max_m, Stmin Stmax Igap0 Ipen0 Ipen_max, Stfac Fric "
+                            "Edge_angle Gap_max_s Gap_max_m, Stmin Stmax Igap0 Ipen0 Ipen_max, Stfac Fric "
                             "(blank) Tstart Tstop, IBC (blank) Inacti VISs (blank) Tpressfit, Ifric Ifiltr Xfreq "
                             "(blank) sens_ID (blank) fric_ID",
                             &nd)))
@@ -479,10 +479,9 @@ rc_status rc_card_type24(rc_reader *rd, const rc_block *b)
     rc_field l2[] = {
         {.name = "grnd_IDs", .width = 10, .type = RC_FT_INT, .out = &grnod, .flags = RC_FF_ONLY0,
          .note = "additional secondary nodes; expected the nodes as segments of surf_ID1 or an /INTER/TYPE7"},
-        RC_F_SKIP(10),
+        RC_F_SKIP(20),
         {.name = "Iedge", .width = 10, .type = RC_FT_INT, .out = &iedge, .flags = RC_FF_ONLY0,
          .note = "edge-to-edge contact of TYPE24"},
-        RC_F_SKIP(10),
         RC_F_REALD("Edge_angle", &edge_angle, 0, 0, RC_D_NONE),
         RC_F_REALD("Gap_max_s", &gap_max_s, 0, RC_FF_NONNEG, RC_D_L),
         RC_F_REALD("Gap_max_m", &gap_max_m, 0, RC_FF_NONNEG, RC_D_L)};
@@ -504,7 +503,7 @@ rc_status rc_card_type24(rc_reader *rd, const rc_block *b)
     rc_field l5[] = {
         {.name = "IBC", .width = 10, .type = RC_FT_INT, .out = &ibc, .flags = RC_FF_ONLY0,
          .note = "boundary conditions of the secondary nodes at deactivation"},
-        RC_F_SKIP(10),
+        RC_F_SKIP(20),
         RC_F_INT("Inacti", &t->inacti, 0, 0),
         RC_F_REALD("VISs", &t->viss, RC_T7_DEF_VISS, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
         RC_F_SKIP(20),

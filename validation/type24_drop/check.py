@@ -42,10 +42,10 @@ def type24(d, iid, s1, s2, stfac, fric=0.0, fric_id=0, istf=1):
     rest defaults."""
     d.add(f"/INTER/TYPE24/{iid}",
           line(("i", s1), ("i", s2), ("i", istf), ("i", None), ("i", None), ("i", 0), ("i", None), ("i", 0)),
-          line(("i", 0), ("i", None), ("i", 0), ("i", None), ("r", 0.0), ("r", 0.0), ("r", 0.0)),
+          line(("i", 0), ("i", None), ("i", None), ("i", 0), ("r", 0.0), ("r", 0.0), ("r", 0.0)),
           line(("r", 0.0), ("r", 0.0), ("i", 0), ("i", 0), ("r", 0.0)),
           line(("r", stfac), ("r", fric), ("r", None), ("r", 0.0), ("r", 0.0)),
-          line(("i", 0), ("i", None), ("i", 0), ("r", 0.0), ("r", None), ("r", 0.0)),
+          line(("i", 0), ("i", None), ("i", None), ("i", 0), ("r", 0.0), ("r", None), ("r", 0.0)),
           line(("i", 0), ("i", 0), ("r", 0.0), ("i", None), ("i", 0), ("i", None), ("r", None), ("i", fric_id)),
           title="surface to surface")
 

@@ -364,7 +364,7 @@ rc_status rc_card_type7(rc_reader *rd, const rc_block *b)
     rc_field l5[] = {
         {.name = "IBC", .width = 10, .type = RC_FT_INT, .out = &ibc, .flags = RC_FF_ONLY0,
          .note = "boundary conditions of the secondary nodes at deactivation"},
-        RC_F_SKIP(10),
+        RC_F_SKIP(20),
         RC_F_INT("Inacti", &t->inacti, 0, 0),
         RC_F_REALD("VISs", &t->viss, RC_T7_DEF_VISS, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
         RC_F_REALD("VISF", &t->visf, RC_T7_DEF_VISF, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),

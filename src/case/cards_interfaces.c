@@ -605,14 +605,15 @@ rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
                             "supported yet: expected Invers 110 or later (or 0)",
                             rc_layout_version(rd));
     if ((st = rc_card_lines(rd, b, t->title, 6, 12,
-                            "surf_ID1 surf_ID2 Istf Ithe Igap Irem_i2 (blank) Idel Iedge, grnd_IDs (blank) "
-                            "Gap_scale %mesh_size Gap_max_s Gap_max_m, Stmin Stmax Igap0 Ishape Edge_angle, Stfac "
-                            "Fric (blank) Tstart Tstop, IBC (blank) IVIS2 Inacti VISs, Ifric Ifiltr Xfreq (blank) "
-                            "sens_ID (blank) fric_ID",
+                            "surf_ID1 surf_ID2 Istf Ithe Igap Irem_i2 (blank) Idel Iedge IPSTIF, grnd_IDs (blank) "
+                            "Gap_scale %mesh_size Gap_max_s Gap_max_m, Stmin Stmax Igap0 Ishape Edge_angle "
+                            "STFAC_MDT, Stfac Fric Tpressfit Tstart Tstop, IBC (blank) IVIS2 Inacti VISs Ithick "
+                            "(blank) Pmax, Ifric Ifiltr Xfreq (blank) sens_ID DTSTIF (blank) fric_ID",
                             &nd)))
         return st;
     int ithe = 0, igap = 0, irem_i2 = 0, idel = 0, grnod = 0, igap0 = 0, ishape = 0, ibc = 0, ivis2 = 0;
-    int ifric = 0, ifiltr = 0;
+    int ifric = 0, ifiltr = 0, ipstif = 0, ithick = 0;
+    double stfac_mdt = 0, tpressfit = 0, pmax = 0, dtstif = 0;
     double gap_scale = 0, mesh_size = 0, gap_max_s = 0, gap_max_m = 0, edge_angle = 0, xfreq = 0;
     rc_field l1[] = {
         RC_F_INT("surf_ID1", &t->surf1, 0, RC_FF_POS),
@@ -624,7 +625,9 @@ rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
         RC_F_INT("Irem_i2", &irem_i2, 0, 0),
         RC_F_SKIP(10),
         RC_F_INT("Idel", &idel, 0, 0),
-        RC_F_INT("Iedge", &t->iedge, 0, RC_FF_NONNEG)};
+        RC_F_INT("Iedge", &t->iedge, 0, RC_FF_NONNEG),
+        {.name = "IPSTIF", .width = 10, .type = RC_FT_INT, .out = &ipstif, .flags = RC_FF_ONLY0,
+         .note = "the other penalty stiffness formulations of TYPE25"}};
     rc_field l2[] = {
         {.name = "grnd_IDs", .width = 10, .type = RC_FT_INT, .out = &grnod, .flags = RC_FF_ONLY0,
          .note = "additional secondary nodes; expected the nodes as segments of surf_ID1 or an /INTER/TYPE7"},
@@ -638,11 +641,14 @@ rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
         RC_F_REALD("Stmax", &t->stmax, 0, RC_FF_NONNEG, RC_D_K),
         RC_F_INT("Igap0", &igap0, 0, RC_FF_NONNEG),
         RC_F_INT("Ishape", &ishape, 0, RC_FF_NONNEG),
-        RC_F_REALD("Edge_angle", &edge_angle, 0, 0, RC_D_NONE)};
+        RC_F_REALD("Edge_angle", &edge_angle, 0, 0, RC_D_NONE),
+        {.name = "STFAC_MDT", .width = 20, .type = RC_FT_REAL, .out = &stfac_mdt, .flags = RC_FF_ONLY0,
+         .dim = RC_D_NONE, .note = "a stiffness from the explicit time step"}};
     rc_field l4[] = {
         RC_F_REALD("Stfac", &t->stfac, 0, RC_FF_NONNEG, RC_D_K),
         RC_F_REALD("Fric", &t->fric, 0, RC_FF_NONNEG, RC_D_NONE),
-        RC_F_SKIP(20),
+        {.name = "Tpressfit", .width = 20, .type = RC_FT_REAL, .out = &tpressfit, .flags = RC_FF_ONLY0, .dim = RC_D_T,
+         .note = "press-fit of initially penetrating surfaces"},
         RC_F_REALD("Tstart", &t->tstart, 0, 0, RC_D_T),
         RC_F_REALD("Tstop", &t->tstop, RC_DEF_TSTOP, RC_FF_ZDEF, RC_D_T)};
     rc_field l5[] = {
@@ -652,7 +658,12 @@ rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
         {.name = "IVIS2", .width = 10, .type = RC_FT_INT, .out = &ivis2, .flags = RC_FF_ONLY0,
          .note = "the other damping formulations and adhesion of TYPE25"},
         RC_F_INT("Inacti", &t->inacti, 0, 0),
-        RC_F_REALD("VISs", &t->viss, RC_T7_DEF_VISS, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE)};
+        RC_F_REALD("VISs", &t->viss, RC_T7_DEF_VISS, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
+        {.name = "Ithick", .width = 10, .type = RC_FT_INT, .out = &ithick, .flags = RC_FF_ONLY0,
+         .note = "a gap from the shells' thickness"},
+        RC_F_SKIP(10),
+        {.name = "Pmax", .width = 20, .type = RC_FT_REAL, .out = &pmax, .flags = RC_FF_ONLY0, .dim = RC_D_K2,
+         .note = "a largest contact pressure"}};
     rc_field l6[] = {
         {.name = "Ifric", .width = 10, .type = RC_FT_INT, .out = &ifric, .flags = RC_FF_ONLY0,
          .note = "the friction laws of TYPE25; a /FRICTION card with its Ifric applies to the interface (fric_ID)"},
@@ -661,7 +672,9 @@ rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
         RC_F_REALD("Xfreq", &xfreq, 0, RC_FF_NONNEG, RC_D_NONE),
         RC_F_SKIP(10),
         RC_F_INT("sens_ID", &t->sensor_id, 0, RC_FF_NONNEG),
-        RC_F_SKIP(30),
+        {.name = "DTSTIF", .width = 20, .type = RC_FT_REAL, .out = &dtstif, .flags = RC_FF_ONLY0, .dim = RC_D_NONE,
+         .note = "a stiffness from the explicit time step"},
+        RC_F_SKIP(10),
         RC_F_INT("fric_ID", &t->fric_id, 0, RC_FF_NONNEG)};
     rc_field *lines[6] = {l1, l2, l3, l4, l5, l6};
     const int nf[6] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5), RC_NF(l6)};

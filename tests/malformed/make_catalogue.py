@@ -586,6 +586,8 @@ TL('type25_inacti', T25H, 'field Inacti', before_end(T25(l5=cols('', 31, 40, '1'
 TL('type25_ifric', T25H, 'field Ifric', before_end(T25(l6='         2'), expect=7))
 TL('type25_iedge_segments', T25H, 'field Iedge',
    before_end(SEGS24 + T25(l1=cols('        95        96         1', 81, 90, '2')), expect=len(SEGS24) + 2))
+TL('type25_tpressfit', T25H, 'field Tpressfit', before_end(T25(l4=STOP('1e5', '', '0.1')), expect=5))
+TL('type25_dtstif', T25H, 'field DTSTIF', before_end(T25(l6=cols('', 61, 80, '0.5')), expect=7))
 TL('type25_box_against_segments', T25H, 'field surf_ID2',
    before_end(SEGS24 + T25(l1='         4        95         1'), expect=len(SEGS24) + 2))
 

@@ -6,7 +6,7 @@
  *   cards_mesh.c        /SHELL /SH3N /BRICK /TETRA4 /PENTA6 /TETRA10 /SPRING /PROP/SHELL /PROP/SOLID /PROP/SPRING /MAT
  *                       /SKEW/FIX /SKEW/MOV /SKEW/MOV2 /GRNOD/PART /GRNOD/GRNOD (called first)
  *   cards_surfaces.c    /SURF/PLANE /SURF/ELLIPS /SURF/CYL /SURF/BOX /SURF/SEG /SURF/PART
- *   cards_interfaces.c  /INTER/TYPE6 /INTER/TYPE7 /INTER/POWER
+ *   cards_interfaces.c  /INTER/TYPE6 /INTER/TYPE7 /INTER/TYPE24 /INTER/TYPE25 /INTER/POWER
  *   cards_friction.c    /FRICTION /FRIC_ORIENT
  *   cards_couplings.c   /COUPLING/SPRING /COUPLING/CATENARY /COUPLING/CONTACT
  *   cards_joints.c      /JOINT/SPHERICAL /JOINT/REVOLUTE /JOINT/DISTANCE /JOINT/FIXED /JOINT/PRISMATIC
@@ -31,7 +31,8 @@ typedef enum {
     RC_CARD_TYPE6, RC_CARD_FUNCT, RC_CARD_INIVEL, RC_CARD_GRAV, RC_CARD_BCS, RC_CARD_RUN,
     RC_CARD_SOLVER, RC_CARD_CPL_SPRING, RC_CARD_CPL_CATENARY, RC_CARD_PART, RC_CARD_GRPART,
     RC_CARD_FRICTION, RC_CARD_FRIC_ORIENT, RC_CARD_POWER, RC_CARD_CYL, RC_CARD_BOX, RC_CARD_IMPVEL,
-    RC_CARD_UNIT, RC_CARD_SEG, RC_CARD_SURFPART, RC_CARD_CPL_CONTACT, RC_CARD_JOINT, RC_CARD_RWALL, RC_CARD_SENSOR, RC_CARD_TYPE7
+    RC_CARD_UNIT, RC_CARD_SEG, RC_CARD_SURFPART, RC_CARD_CPL_CONTACT, RC_CARD_JOINT, RC_CARD_RWALL, RC_CARD_SENSOR, RC_CARD_TYPE7,
+    RC_CARD_TYPE24, RC_CARD_TYPE25
 } rc_card_kind;
 
 /* Supported cards; a family (kw with a sub) lists each subtype. */
@@ -42,7 +43,8 @@ static const struct {
     {"BEGIN", NULL, RC_CARD_BEGIN},    {"NODE", NULL, RC_CARD_NODE},
     {"GRNOD", "NODE", RC_CARD_GRNOD},  {"RBODY", NULL, RC_CARD_RBODY},
     {"SURF", "PLANE", RC_CARD_PLANE},  {"SURF", "ELLIPS", RC_CARD_ELLIPS},
-    {"INTER", "TYPE6", RC_CARD_TYPE6}, {"INTER", "TYPE7", RC_CARD_TYPE7}, {"FUNCT", NULL, RC_CARD_FUNCT},
+    {"INTER", "TYPE6", RC_CARD_TYPE6}, {"INTER", "TYPE7", RC_CARD_TYPE7}, {"INTER", "TYPE24", RC_CARD_TYPE24},
+    {"INTER", "TYPE25", RC_CARD_TYPE25}, {"FUNCT", NULL, RC_CARD_FUNCT},
     {"INIVEL", "TRA", RC_CARD_INIVEL}, {"INIVEL", "ROT", RC_CARD_INIVEL},
     {"GRAV", NULL, RC_CARD_GRAV},      {"BCS", NULL, RC_CARD_BCS},
     {"RUN", NULL, RC_CARD_RUN},        {"SOLVER", NULL, RC_CARD_SOLVER},
@@ -125,6 +127,8 @@ static rc_status rc_card_call(rc_reader *rd, const rc_block *b, rc_card_kind kin
     case RC_CARD_ELLIPS: return rc_card_ellips(rd, b);
     case RC_CARD_TYPE6: return rc_card_type6(rd, b);
     case RC_CARD_TYPE7: return rc_card_type7(rd, b);
+    case RC_CARD_TYPE24: return rc_card_type24(rd, b);
+    case RC_CARD_TYPE25: return rc_card_type25(rd, b);
     case RC_CARD_FUNCT: return rc_card_funct(rd, b);
     case RC_CARD_INIVEL: return rc_card_inivel(rd, b);
     case RC_CARD_GRAV: return rc_card_grav(rd, b);

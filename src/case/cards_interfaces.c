@@ -1,5 +1,5 @@
 /*
- * Cards of contact interfaces: /INTER/TYPE6, /INTER/TYPE7 and ricochet's /INTER/POWER
+ * Cards of contact interfaces: /INTER/TYPE6, /INTER/TYPE7, /INTER/TYPE24, /INTER/TYPE25 and ricochet's /INTER/POWER
  * (power-law contact with splines).
  * Layouts are field tables (case_internal.h), documented in
  * docs/case-format.md; references between cards are resolved by the
@@ -364,7 +364,7 @@ rc_status rc_card_type7(rc_reader *rd, const rc_block *b)
     rc_field l5[] = {
         {.name = "IBC", .width = 10, .type = RC_FT_INT, .out = &ibc, .flags = RC_FF_ONLY0,
          .note = "boundary conditions of the secondary nodes at deactivation"},
-        RC_F_SKIP(10),
+        RC_F_SKIP(20),
         RC_F_INT("Inacti", &t->inacti, 0, 0),
         RC_F_REALD("VISs", &t->viss, RC_T7_DEF_VISS, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
         RC_F_REALD("VISF", &t->visf, RC_T7_DEF_VISF, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
@@ -433,5 +433,311 @@ rc_status rc_card_type7(rc_reader *rd, const rc_block *b)
                             t->tstart, l4[4].got);
     (void)ibag;
     (void)idel;
+    return rc_note_id(rd, RC_IDK_INTER, t->id, &t->loc, b->hdr->text);
+}
+
+/* ======================================================================
+ * /INTER/TYPE24
+ * ====================================================================== */
+
+/* /INTER/TYPE24/inter_ID: title and Radioss's six lines (layout of 11.0 and
+ * later; the friction law lines of Ifric are refused with their flag). */
+rc_status rc_card_type24(rc_reader *rd, const rc_block *b)
+{
+    rc_case *c = rd->c;
+    int nd;
+    rc_status st;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "inter_ID", "/INTER/TYPE24/inter_ID"))) return st;
+    RC_GROW(rd, c->type24, rd->captype24, c->ntype24);
+    rc_case_type24 *t = &c->type24[c->ntype24++];
+    t->id = b->id;
+    t->type = 24;
+    t->loc = b->hdr->loc;
+    for (int k = 0; k < 6; k++) t->line_loc[k] = t->loc;
+    if (rc_layout_version(rd) < 110)
+        return rc_case_fail(rd, &b->hdr->loc, b->name, NULL,
+                            "the /INTER/TYPE24 layout of Radioss versions before 11.0 (/BEGIN Invers %d) is not "
+                            "supported yet: expected Invers 110 or later (or 0)",
+                            rc_layout_version(rd));
+    if ((st = rc_card_lines(rd, b, t->title, 6, 8,
+                            "surf_ID1 surf_ID2 Istf (blank) (blank) Irem_i2 (blank) Idel, grnd_IDs (blank) Iedge "
+                            "Edge_angle Gap_max_s Gap_max_m, Stmin Stmax Igap0 Ipen0 Ipen_max, Stfac Fric "
+                            "(blank) Tstart Tstop, IBC (blank) Inacti VISs (blank) Tpressfit, Ifric Ifiltr Xfreq "
+                            "(blank) sens_ID (blank) fric_ID",
+                            &nd)))
+        return st;
+    int irem_i2 = 0, idel = 0, grnod = 0, iedge = 0, igap0 = 0, ipen0 = 0, ibc = 0, ifric = 0, ifiltr = 0;
+    double edge_angle = 0, gap_max_s = 0, gap_max_m = 0, ipen_max = 0, tpressfit = 0, xfreq = 0;
+    rc_field l1[] = {
+        RC_F_INT("surf_ID1", &t->surf1, 0, RC_FF_POS),
+        {.name = "surf_ID2", .width = 10, .type = RC_FT_INT, .out = &t->surf2, .flags = RC_FF_NONNEG},
+        RC_F_INT("Istf", &t->istf, 0, RC_FF_NONNEG),
+        RC_F_SKIP(20),
+        RC_F_INT("Irem_i2", &irem_i2, 0, 0),
+        RC_F_SKIP(10),
+        RC_F_INT("Idel", &idel, 0, 0)};
+    rc_field l2[] = {
+        {.name = "grnd_IDs", .width = 10, .type = RC_FT_INT, .out = &grnod, .flags = RC_FF_ONLY0,
+         .note = "additional secondary nodes; expected the nodes as segments of surf_ID1 or an /INTER/TYPE7"},
+        RC_F_SKIP(20),
+        {.name = "Iedge", .width = 10, .type = RC_FT_INT, .out = &iedge, .flags = RC_FF_ONLY0,
+         .note = "edge-to-edge contact of TYPE24"},
+        RC_F_REALD("Edge_angle", &edge_angle, 0, 0, RC_D_NONE),
+        RC_F_REALD("Gap_max_s", &gap_max_s, 0, RC_FF_NONNEG, RC_D_L),
+        RC_F_REALD("Gap_max_m", &gap_max_m, 0, RC_FF_NONNEG, RC_D_L)};
+    rc_field l3[] = {
+        RC_F_REALD("Stmin", &t->stmin, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("Stmax", &t->stmax, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_INT("Igap0", &igap0, 0, RC_FF_NONNEG),
+        RC_F_INT("Ipen0", &ipen0, 0, RC_FF_NONNEG),
+        {.name = "Ipen_max", .width = 20, .type = RC_FT_REAL, .out = &ipen_max, .flags = RC_FF_ONLY0, .dim = RC_D_L,
+         .note = "the largest initial penetration taken into account"}};
+    rc_field l4[] = {
+        /* a stiffness [N/m] with Istf 1, a factor with Istf 0: converted as a
+         * stiffness and back for Istf 0 below */
+        RC_F_REALD("Stfac", &t->stfac, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("Fric", &t->fric, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_SKIP(20),
+        RC_F_REALD("Tstart", &t->tstart, 0, 0, RC_D_T),
+        RC_F_REALD("Tstop", &t->tstop, RC_DEF_TSTOP, RC_FF_ZDEF, RC_D_T)};
+    rc_field l5[] = {
+        {.name = "IBC", .width = 10, .type = RC_FT_INT, .out = &ibc, .flags = RC_FF_ONLY0,
+         .note = "boundary conditions of the secondary nodes at deactivation"},
+        RC_F_SKIP(20),
+        RC_F_INT("Inacti", &t->inacti, 0, 0),
+        RC_F_REALD("VISs", &t->viss, RC_T7_DEF_VISS, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
+        RC_F_SKIP(20),
+        {.name = "Tpressfit", .width = 20, .type = RC_FT_REAL, .out = &tpressfit, .flags = RC_FF_ONLY0, .dim = RC_D_T,
+         .note = "press-fit of initially penetrating surfaces"}};
+    rc_field l6[] = {
+        {.name = "Ifric", .width = 10, .type = RC_FT_INT, .out = &ifric, .flags = RC_FF_ONLY0,
+         .note = "the friction laws of TYPE24; a /FRICTION card with its Ifric applies to the interface (fric_ID)"},
+        {.name = "Ifiltr", .width = 10, .type = RC_FT_INT, .out = &ifiltr, .flags = RC_FF_ONLY0,
+         .note = "the friction filter of TYPE24; a /FRICTION card with its Ifiltr applies to the interface (fric_ID)"},
+        RC_F_REALD("Xfreq", &xfreq, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_SKIP(10),
+        RC_F_INT("sens_ID", &t->sensor_id, 0, RC_FF_NONNEG),
+        RC_F_SKIP(30),
+        RC_F_INT("fric_ID", &t->fric_id, 0, RC_FF_NONNEG)};
+    rc_field *lines[6] = {l1, l2, l3, l4, l5, l6};
+    const int nf[6] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5), RC_NF(l6)};
+    for (int k = 0; k < 6; k++) {
+        t->line_loc[k] = b->lines[k + 1].loc;
+        if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
+    }
+    if (nd > 6)
+        return rc_case_fail(rd, &b->lines[7].loc, b->name, NULL,
+                            "expected 6 data lines (Ifric 0: no friction law lines), got %d", nd);
+    if (t->surf2 == 0)
+        return rc_case_fail(rd, &t->line_loc[0], b->name, "surf_ID2",
+                            "blank or 0 (self-contact of surf_ID1) is not supported yet: a rigid body does not "
+                            "meet itself; expected the id of the second surface");
+    if (t->surf2 == t->surf1)
+        return rc_case_fail(rd, &t->line_loc[0], b->name, "surf_ID2",
+                            "expected a surface other than surf_ID1 = %d (self-contact is not supported yet), got %s",
+                            t->surf1, l1[1].got);
+    /* the stiffness: Stfac a stiffness value (Istf 1), or a factor on the
+     * shells' stiffness (0, 1000: model/type7.c) */
+    if (t->istf == RC_T7_DEFAULT) t->istf = 0;
+    if (t->istf != 0 && t->istf != 1)
+        return rc_case_fail(rd, &t->line_loc[0], b->name, "Istf",
+                            "expected 0, 1000 (the main elements' stiffness times Stfac) or 1 (Stfac is the "
+                            "stiffness [N/m]), got %s: not supported yet (Istf 2 to 6 combine both sides' element "
+                            "stiffnesses)",
+                            l1[2].got);
+    if (t->istf == 1 && !(t->stfac > 0))
+        return rc_case_fail(rd, &t->line_loc[3], b->name, "Stfac",
+                            "with Istf 1, Stfac is the interface stiffness: expected a value > 0 [N/m], got %s",
+                            l4[0].got);
+    if (t->istf == 0 && rc_units_convert(rd)) t->stfac /= rc_dim_scale(RC_D_K, rd->cur_units);
+    if (t->istf == 0 && t->stfac == 0) t->stfac = 1.0; /* the scale factor's default */
+    if (t->stmax > 0 && t->stmax < t->stmin)
+        return rc_case_fail(rd, &t->line_loc[2], b->name, "Stmax", "expected Stmax >= Stmin = %.15g (or 0: none), got %s",
+                            t->stmin, l3[1].got);
+    /* the gap is zero (model/type7.c): Igap0 1 (zero gap on free edges) is
+     * what ricochet does anyway */
+    if (igap0 != 0 && igap0 != 1 && igap0 != RC_T7_DEFAULT)
+        return rc_case_fail(rd, &t->line_loc[2], b->name, "Igap0", "expected 0, 1 or 1000, got %s", l3[2].got);
+    if ((st = t7_only_default(rd, b, &t->line_loc[2], &l3[3], ipen0,
+                              "initial penetrations within each part; ricochet's bodies are rigid")))
+        return st;
+    if (t->inacti == RC_T7_DEFAULT) t->inacti = 0;
+    if (t->inacti != 0 && t->inacti != 5)
+        return rc_case_fail(rd, &t->line_loc[4], b->name, "Inacti",
+                            "expected 0, blank, 1000 (no action) or 5 (the gap reduced by the initial "
+                            "penetration), got %s: not supported yet",
+                            l5[2].got);
+    if (t->tstop < t->tstart)
+        return rc_case_fail(rd, &t->line_loc[3], b->name, "Tstop", "expected Tstop >= Tstart = %.15g, got %s",
+                            t->tstart, l4[4].got);
+    (void)irem_i2;
+    (void)idel;
+    (void)edge_angle;
+    (void)gap_max_s;
+    (void)gap_max_m;
+    (void)xfreq;
+    return rc_note_id(rd, RC_IDK_INTER, t->id, &t->loc, b->hdr->text);
+}
+
+/* ======================================================================
+ * /INTER/TYPE25
+ * ====================================================================== */
+
+/* /INTER/TYPE25/inter_ID: title and Radioss's six lines (layout of 11.0 and
+ * later; the friction law lines of Ifric, the adhesion line of IVIS2 -1
+ * and the thermal lines of Ithe are refused with their flags). Read into
+ * c->type24 (type 25). */
+rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
+{
+    rc_case *c = rd->c;
+    int nd;
+    rc_status st;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "inter_ID", "/INTER/TYPE25/inter_ID"))) return st;
+    RC_GROW(rd, c->type24, rd->captype24, c->ntype24);
+    rc_case_type24 *t = &c->type24[c->ntype24++];
+    t->id = b->id;
+    t->type = 25;
+    t->loc = b->hdr->loc;
+    for (int k = 0; k < 6; k++) t->line_loc[k] = t->loc;
+    if (rc_layout_version(rd) < 110)
+        return rc_case_fail(rd, &b->hdr->loc, b->name, NULL,
+                            "the /INTER/TYPE25 layout of Radioss versions before 11.0 (/BEGIN Invers %d) is not "
+                            "supported yet: expected Invers 110 or later (or 0)",
+                            rc_layout_version(rd));
+    if ((st = rc_card_lines(rd, b, t->title, 6, 12,
+                            "surf_ID1 surf_ID2 Istf Ithe Igap Irem_i2 (blank) Idel Iedge IPSTIF, grnd_IDs (blank) "
+                            "Gap_scale %mesh_size Gap_max_s Gap_max_m, Stmin Stmax Igap0 Ishape Edge_angle "
+                            "STFAC_MDT, Stfac Fric Tpressfit Tstart Tstop, IBC (blank) IVIS2 Inacti VISs Ithick "
+                            "(blank) Pmax, Ifric Ifiltr Xfreq (blank) sens_ID DTSTIF (blank) fric_ID",
+                            &nd)))
+        return st;
+    int ithe = 0, igap = 0, irem_i2 = 0, idel = 0, grnod = 0, igap0 = 0, ishape = 0, ibc = 0, ivis2 = 0;
+    int ifric = 0, ifiltr = 0, ipstif = 0, ithick = 0;
+    double stfac_mdt = 0, tpressfit = 0, pmax = 0, dtstif = 0;
+    double gap_scale = 0, mesh_size = 0, gap_max_s = 0, gap_max_m = 0, edge_angle = 0, xfreq = 0;
+    rc_field l1[] = {
+        RC_F_INT("surf_ID1", &t->surf1, 0, RC_FF_POS),
+        {.name = "surf_ID2", .width = 10, .type = RC_FT_INT, .out = &t->surf2, .flags = RC_FF_NONNEG},
+        RC_F_INT("Istf", &t->istf, 0, RC_FF_NONNEG),
+        {.name = "Ithe", .width = 10, .type = RC_FT_INT, .out = &ithe, .flags = RC_FF_ONLY0,
+         .note = "heat transfer: ricochet has no temperatures"},
+        RC_F_INT("Igap", &igap, 0, RC_FF_NONNEG),
+        RC_F_INT("Irem_i2", &irem_i2, 0, 0),
+        RC_F_SKIP(10),
+        RC_F_INT("Idel", &idel, 0, 0),
+        RC_F_INT("Iedge", &t->iedge, 0, RC_FF_NONNEG),
+        {.name = "IPSTIF", .width = 10, .type = RC_FT_INT, .out = &ipstif, .flags = RC_FF_ONLY0,
+         .note = "the other penalty stiffness formulations of TYPE25"}};
+    rc_field l2[] = {
+        {.name = "grnd_IDs", .width = 10, .type = RC_FT_INT, .out = &grnod, .flags = RC_FF_ONLY0,
+         .note = "additional secondary nodes; expected the nodes as segments of surf_ID1 or an /INTER/TYPE7"},
+        RC_F_SKIP(10),
+        RC_F_REALD("Gap_scale", &gap_scale, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("%mesh_size", &mesh_size, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("Gap_max_s", &gap_max_s, 0, RC_FF_NONNEG, RC_D_L),
+        RC_F_REALD("Gap_max_m", &gap_max_m, 0, RC_FF_NONNEG, RC_D_L)};
+    rc_field l3[] = {
+        RC_F_REALD("Stmin", &t->stmin, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("Stmax", &t->stmax, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_INT("Igap0", &igap0, 0, RC_FF_NONNEG),
+        RC_F_INT("Ishape", &ishape, 0, RC_FF_NONNEG),
+        RC_F_REALD("Edge_angle", &edge_angle, 0, 0, RC_D_NONE),
+        {.name = "STFAC_MDT", .width = 20, .type = RC_FT_REAL, .out = &stfac_mdt, .flags = RC_FF_ONLY0,
+         .dim = RC_D_NONE, .note = "a stiffness from the explicit time step"}};
+    rc_field l4[] = {
+        RC_F_REALD("Stfac", &t->stfac, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("Fric", &t->fric, 0, RC_FF_NONNEG, RC_D_NONE),
+        {.name = "Tpressfit", .width = 20, .type = RC_FT_REAL, .out = &tpressfit, .flags = RC_FF_ONLY0, .dim = RC_D_T,
+         .note = "press-fit of initially penetrating surfaces"},
+        RC_F_REALD("Tstart", &t->tstart, 0, 0, RC_D_T),
+        RC_F_REALD("Tstop", &t->tstop, RC_DEF_TSTOP, RC_FF_ZDEF, RC_D_T)};
+    rc_field l5[] = {
+        {.name = "IBC", .width = 10, .type = RC_FT_INT, .out = &ibc, .flags = RC_FF_ONLY0,
+         .note = "boundary conditions of the secondary nodes at deactivation"},
+        RC_F_SKIP(10),
+        {.name = "IVIS2", .width = 10, .type = RC_FT_INT, .out = &ivis2, .flags = RC_FF_ONLY0,
+         .note = "the other damping formulations and adhesion of TYPE25"},
+        RC_F_INT("Inacti", &t->inacti, 0, 0),
+        RC_F_REALD("VISs", &t->viss, RC_T7_DEF_VISS, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
+        {.name = "Ithick", .width = 10, .type = RC_FT_INT, .out = &ithick, .flags = RC_FF_ONLY0,
+         .note = "a gap from the shells' thickness"},
+        RC_F_SKIP(10),
+        {.name = "Pmax", .width = 20, .type = RC_FT_REAL, .out = &pmax, .flags = RC_FF_ONLY0, .dim = RC_D_K2,
+         .note = "a largest contact pressure"}};
+    rc_field l6[] = {
+        {.name = "Ifric", .width = 10, .type = RC_FT_INT, .out = &ifric, .flags = RC_FF_ONLY0,
+         .note = "the friction laws of TYPE25; a /FRICTION card with its Ifric applies to the interface (fric_ID)"},
+        {.name = "Ifiltr", .width = 10, .type = RC_FT_INT, .out = &ifiltr, .flags = RC_FF_ONLY0,
+         .note = "the friction filter of TYPE25; a /FRICTION card with its Ifiltr applies to the interface (fric_ID)"},
+        RC_F_REALD("Xfreq", &xfreq, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_SKIP(10),
+        RC_F_INT("sens_ID", &t->sensor_id, 0, RC_FF_NONNEG),
+        {.name = "DTSTIF", .width = 20, .type = RC_FT_REAL, .out = &dtstif, .flags = RC_FF_ONLY0, .dim = RC_D_NONE,
+         .note = "a stiffness from the explicit time step"},
+        RC_F_SKIP(10),
+        RC_F_INT("fric_ID", &t->fric_id, 0, RC_FF_NONNEG)};
+    rc_field *lines[6] = {l1, l2, l3, l4, l5, l6};
+    const int nf[6] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5), RC_NF(l6)};
+    for (int k = 0; k < 6; k++) {
+        t->line_loc[k] = b->lines[k + 1].loc;
+        if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
+    }
+    if (nd > 6)
+        return rc_case_fail(rd, &b->lines[7].loc, b->name, NULL,
+                            "expected 6 data lines (Ifric 0, IVIS2 0 and Ithe 0: no friction law, adhesion or "
+                            "thermal lines), got %d",
+                            nd);
+    if (t->surf2 == 0)
+        return rc_case_fail(rd, &t->line_loc[0], b->name, "surf_ID2",
+                            "blank or 0 (self-contact of surf_ID1) is not supported yet: a rigid body does not "
+                            "meet itself; expected the id of the second surface");
+    if (t->surf2 == t->surf1)
+        return rc_case_fail(rd, &t->line_loc[0], b->name, "surf_ID2",
+                            "expected a surface other than surf_ID1 = %d (self-contact is not supported yet), got %s",
+                            t->surf1, l1[1].got);
+    if (t->istf == RC_T7_DEFAULT) t->istf = 0;
+    if (t->istf != 0 && t->istf != 1)
+        return rc_case_fail(rd, &t->line_loc[0], b->name, "Istf",
+                            "expected 0, 1000 (the main elements' stiffness times Stfac) or 1 (Stfac is the "
+                            "stiffness [N/m]), got %s: not supported yet (Istf 2 to 6 combine both sides' element "
+                            "stiffnesses)",
+                            l1[2].got);
+    if (t->istf == 1 && !(t->stfac > 0))
+        return rc_case_fail(rd, &t->line_loc[3], b->name, "Stfac",
+                            "with Istf 1, Stfac is the interface stiffness: expected a value > 0 [N/m], got %s",
+                            l4[0].got);
+    if (t->istf == 0 && rc_units_convert(rd)) t->stfac /= rc_dim_scale(RC_D_K, rd->cur_units);
+    if (t->istf == 0 && t->stfac == 0) t->stfac = 1.0; /* the scale factor's default */
+    if (t->stmax > 0 && t->stmax < t->stmin)
+        return rc_case_fail(rd, &t->line_loc[2], b->name, "Stmax", "expected Stmax >= Stmin = %.15g (or 0: none), got %s",
+                            t->stmin, l3[1].got);
+    if ((st = t7_only_default(rd, b, &t->line_loc[0], &l1[4], igap,
+                              "a variable gap from the elements' thicknesses and sizes; ricochet's TYPE25 gap is zero")))
+        return st;
+    if (igap0 != 0 && igap0 != 1 && igap0 != RC_T7_DEFAULT)
+        return rc_case_fail(rd, &t->line_loc[2], b->name, "Igap0", "expected 0, 1 or 1000, got %s", l3[2].got);
+    /* Iedge: 0 and 1000 none; 1 (free edges), 2 (all edges), 3 (both)
+     * checked against the surfaces by the compiler (model/type7.c) */
+    if (t->iedge == RC_T7_DEFAULT) t->iedge = 0;
+    if (t->iedge > 3)
+        return rc_case_fail(rd, &t->line_loc[0], b->name, "Iedge", "expected 0, 1, 2, 3 or 1000, got %s", l1[8].got);
+    if (t->inacti == RC_T7_DEFAULT) t->inacti = 0;
+    if (t->inacti != 0 && t->inacti != 5)
+        return rc_case_fail(rd, &t->line_loc[4], b->name, "Inacti",
+                            "expected 0, blank, 1000 (no action) or 5 (the gap reduced by the initial "
+                            "penetration), got %s: not supported yet",
+                            l5[3].got);
+    if (t->tstop < t->tstart)
+        return rc_case_fail(rd, &t->line_loc[3], b->name, "Tstop", "expected Tstop >= Tstart = %.15g, got %s",
+                            t->tstart, l4[4].got);
+    (void)irem_i2;
+    (void)idel;
+    (void)gap_scale;
+    (void)mesh_size;
+    (void)gap_max_s;
+    (void)gap_max_m;
+    (void)ishape;
+    (void)edge_angle;
+    (void)xfreq;
     return rc_note_id(rd, RC_IDK_INTER, t->id, &t->loc, b->hdr->text);
 }

@@ -183,6 +183,29 @@ typedef struct rc_case_type7 {
     rc_loc line_loc[6];                       /* lines 1-6 (Radioss's lines without the curvature line) */
 } rc_case_type7;
 
+/* /INTER/TYPE24/inter_ID and /INTER/TYPE25/inter_ID (cards_interfaces.c,
+ * both in c->type24, told apart by `type`): penalty contact of two
+ * surfaces both ways (the nodes of each against the segments of the
+ * other), compiled as a two-way TYPE6 contact of a linear law by
+ * model/type7.c. The fields ricochet does not use are read and checked,
+ * not kept. */
+typedef struct rc_case_type24 {
+    int id;
+    int type;                                 /* 24, or 25 (an /INTER/TYPE25 read into this struct) */
+    char title[101];
+    int surf1, surf2;                         /* line 1: surf_ID1, surf_ID2 */
+    int istf;                                 /* line 1: 0 (1000 read as 0): k = Stfac times the shells'
+                                                 stiffness E t / 2; 1: k = Stfac */
+    double stmin, stmax;                      /* line 3 [N/m]: the bounds of Istf 0's stiffness (0: none) */
+    double stfac, fric, tstart, tstop;        /* line 4: [N/m] (Istf 1) or [-] (Istf 0), [-] [s] [s] */
+    int inacti;                               /* line 5: 0 or 5 (1000 read as 0) */
+    double viss;                              /* line 5: critical damping fraction [-] */
+    int sensor_id, fric_id;                   /* line 6 */
+    int iedge;                                /* TYPE25 line 1: 0 (1000 read as 0) or the edge option */
+    rc_loc loc;
+    rc_loc line_loc[6];                       /* lines 1-6 */
+} rc_case_type24;
+
 /* /SENSOR/TIME/sens_ID and /SENSOR/DIST/sens_ID (cards_rwall.c): a TIME
  * sensor is on from t = Tdelay; a DIST sensor triggers when the distance of
  * its two nodes rises above Dmax or falls below Dmin and is on Tdelay
@@ -402,6 +425,7 @@ struct rc_case {
     int ntype6;  rc_case_type6 *type6;
     int npower;  struct rc_case_power *power;   /* case_power.h */
     int ntype7;  rc_case_type7 *type7;
+    int ntype24; rc_case_type24 *type24;
     int nrwall;  rc_case_rwall *rwall;
     int nsensor; rc_case_sensor *sensor;
     int nimpvel; struct rc_case_impvel *impvel; /* case_power.h */

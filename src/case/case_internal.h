@@ -118,7 +118,7 @@ typedef struct rc_reader {
 
     int capfunct, capnode, capgrnod, caprbody, capsurf, captype6, capinivel,
         capgrav, capbcs, capwarn, capcoupling, capjoint, cappart, capgrpart, capfriction, capfricorient,
-        cappower, capimpvel, caprwall, capsensor, captype7;
+        cappower, capimpvel, caprwall, capsensor, captype7, captype24;
     rc_id_entry *ids[RC_IDK_COUNT];
     int nids[RC_IDK_COUNT], capids[RC_IDK_COUNT];
     int seq;
@@ -338,6 +338,8 @@ rc_status rc_card_surfpart(rc_reader *rd, const rc_block *b);
 rc_status rc_card_type6(rc_reader *rd, const rc_block *b);
 rc_status rc_card_power(rc_reader *rd, const rc_block *b);
 rc_status rc_card_type7(rc_reader *rd, const rc_block *b);
+rc_status rc_card_type24(rc_reader *rd, const rc_block *b);
+rc_status rc_card_type25(rc_reader *rd, const rc_block *b);
 /* cards_rwall.c */
 rc_status rc_card_rwall(rc_reader *rd, const rc_block *b);
 rc_status rc_card_sensor_time(rc_reader *rd, const rc_block *b);

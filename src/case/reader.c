@@ -633,6 +633,7 @@ void rc_case_free(rc_case *c)
     free(c->surf);
     free(c->type6);
     free(c->type7);
+    free(c->type24);
     free(c->power);
     free(c->rwall);
     free(c->sensor);

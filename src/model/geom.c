@@ -88,6 +88,13 @@ void rc_geom_box_corner_flags(const rc_case *c, unsigned char *flag)
         if (ka == RC_CASE_SURF_BOX && (kb == RC_CASE_SURF_PLANE || kb == RC_CASE_SURF_BOX)) flag[a] = 1;
         if (kb == RC_CASE_SURF_BOX && (ka == RC_CASE_SURF_PLANE || ka == RC_CASE_SURF_BOX)) flag[b] = 1;
     }
+    /* an /INTER/TYPE25 of two boxes (its contact is appended after the
+     * surfaces are compiled: model/type7.c) */
+    for (int k = 0; k < c->ntype24; k++) {
+        const int a = rc_case_find_surf(c, c->type24[k].surf1), b = rc_case_find_surf(c, c->type24[k].surf2);
+        if (a < 0 || b < 0) continue;
+        if (c->surf[a].kind == RC_CASE_SURF_BOX && c->surf[b].kind == RC_CASE_SURF_BOX) flag[a] = flag[b] = 1;
+    }
 }
 
 const char *rc_geom_inter_pair_name(const rc_model *m, int i)

@@ -64,23 +64,28 @@ static int t7_key_cmp(const void *pa, const void *pb)
     return 0;
 }
 
+/* The card whose stiffness is computed: its name, id, line 1 (the
+ * messages' location), Stfac and the bounds Stmin, Stmax. */
+typedef struct { const char *card; int id; rc_loc loc; double stfac, stmin, stmax; } t7_card;
+
 /* Istf 0 (docs/theory.md 3.7): Stfac times the stiffness Radioss gives a
  * main shell segment, E t / 2 (E the Young's modulus of its part's /MAT,
  * t its thickness), the mean over the main segments, within Stmin..Stmax.
  * The main segments must be shells: the shells of a /SURF/PART, or the
  * shells with the nodes of each /SURF/SEG segment; RC_EINPUT otherwise
  * (solid faces, B A^2 / (2 V), are not supported yet). */
-static rc_status main_stiffness(const rc_case *c, const rc_case_type7 *t, double *k, rc_error *err)
+static rc_status shells_stiffness(const rc_case *c, const t7_card *t, int surf_id, double *sum_out, int *n_out,
+                                  rc_error *err)
 {
-    const rc_case_surf *cs = &c->surf[rc_case_find_surf(c, t->surf_id)];
+    const rc_case_surf *cs = &c->surf[rc_case_find_surf(c, surf_id)];
     const rc_case_mesh *ms = c->mesh;
     static const char *const kinds[] = {"", "PLANE", "ELLIPS", "CYL", "BOX", "SEG", "PART"};
     const int ne = ms ? ms->nelem : 0;
     if (cs->kind != RC_CASE_SURF_SEG && cs->kind != RC_CASE_SURF_PART)
         RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card /INTER/TYPE7/%d, field Istf: Istf 0 takes the stiffness from the main surface's "
+                 RC_LOCFMT "card %s/%d, field Istf: Istf 0 takes the stiffness from the main surface's "
                            "shell elements; /SURF/%s/%d has none: expected Istf 1 with Stfac the stiffness [N/m]",
-                 RC_LOC(t->line_loc[0]), t->id, kinds[cs->kind], t->surf_id);
+                 RC_LOC(t->loc), t->card, t->id, kinds[cs->kind], surf_id);
     t7_key *keys = malloc(((size_t)ne + 1) * sizeof *keys);
     if (!keys) RC_RAISE(err, RC_ENOMEM, "out of memory");
     rc_status st = RC_OK;
@@ -103,11 +108,11 @@ static rc_status main_stiffness(const rc_case *c, const rc_case_type7 *t, double
             const t7_key *f = nk ? bsearch(&q, keys, (size_t)nk, sizeof *keys, t7_key_cmp) : NULL;
             if (!f) {
                 st = RC_SET(err, RC_EINPUT,
-                            RC_LOCFMT "card /INTER/TYPE7/%d, field Istf: Istf 0 takes the stiffness from the main "
+                            RC_LOCFMT "card %s/%d, field Istf: Istf 0 takes the stiffness from the main "
                                       "segments' shell elements; segment %d of /SURF/SEG/%d (%s:%d) is on no /SHELL "
                                       "or /SH3N (a solid's face, B A^2 / (2 V): not supported yet): expected Istf 1 "
                                       "with Stfac the stiffness [N/m]",
-                            RC_LOC(t->line_loc[0]), t->id, cs->seg_id[j], t->surf_id, RC_LOC(cs->seg_loc[j]));
+                            RC_LOC(t->loc), t->card, t->id, cs->seg_id[j], surf_id, RC_LOC(cs->seg_loc[j]));
                 break;
             }
             e = f->e;
@@ -117,10 +122,10 @@ static rc_status main_stiffness(const rc_case *c, const rc_case_type7 *t, double
             if (!in) continue;
             if (ms->elem[e].kind != RC_ELEM_SHELL && ms->elem[e].kind != RC_ELEM_SH3N) {
                 st = RC_SET(err, RC_EINPUT,
-                            RC_LOCFMT "card /INTER/TYPE7/%d, field Istf: Istf 0 on the faces of the solid elements "
+                            RC_LOCFMT "card %s/%d, field Istf: Istf 0 on the faces of the solid elements "
                                       "of /SURF/PART/%d (element %d of part %d; B A^2 / (2 V)) is not supported yet: "
                                       "expected Istf 1 with Stfac the stiffness [N/m], or a main surface of shells",
-                            RC_LOC(t->line_loc[0]), t->id, t->surf_id, ms->elem[e].id, ms->elem[e].part_id);
+                            RC_LOC(t->loc), t->card, t->id, surf_id, ms->elem[e].id, ms->elem[e].part_id);
                 break;
             }
         }
@@ -131,20 +136,20 @@ static rc_status main_stiffness(const rc_case *c, const rc_case_type7 *t, double
         const int pi = p >= 0 ? rc_case_find_prop(c, c->part[p].prop_id) : -1;
         if (mi < 0 || !ms->mat[mi].has_e) {
             st = RC_SET(err, RC_EINPUT,
-                        RC_LOCFMT "card /INTER/TYPE7/%d, field Istf: Istf 0 takes the Young's modulus of the main "
+                        RC_LOCFMT "card %s/%d, field Istf: Istf 0 takes the Young's modulus of the main "
                                   "shells' material; /PART/%d has %s: expected a /MAT/LAW1 (ELAST) or /MAT/LAW2 "
                                   "(PLAS_JOHNS) with E > 0 (line 2), or Istf 1 with Stfac the stiffness [N/m]",
-                        RC_LOC(t->line_loc[0]), t->id, el->part_id,
+                        RC_LOC(t->loc), t->card, t->id, el->part_id,
                         mi < 0 ? "no /MAT" : "a /MAT whose Young's modulus ricochet does not read");
             break;
         }
         const double th = el->thick > 0 ? el->thick : pi >= 0 && ms->prop[pi].kind == RC_PROP_SHELL ? ms->prop[pi].thick : 0.0;
         if (!(th > 0)) {
             st = RC_SET(err, RC_EINPUT,
-                        RC_LOCFMT "card /INTER/TYPE7/%d, field Istf: Istf 0 needs the main shells' thickness; element "
+                        RC_LOCFMT "card %s/%d, field Istf: Istf 0 needs the main shells' thickness; element "
                                   "%d of /PART/%d has none (element Thick or /PROP/SHELL Thick): expected a thickness "
                                   "> 0, or Istf 1 with Stfac the stiffness [N/m]",
-                        RC_LOC(t->line_loc[0]), t->id, el->id, el->part_id);
+                        RC_LOC(t->loc), t->card, t->id, el->id, el->part_id);
             break;
         }
         sum += 0.5 * t->stfac * ms->mat[mi].e * th;
@@ -154,20 +159,155 @@ static rc_status main_stiffness(const rc_case *c, const rc_case_type7 *t, double
     if (st) return st;
     if (nsh == 0)
         RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card /INTER/TYPE7/%d, field Istf: Istf 0 takes the stiffness from the main surface's "
+                 RC_LOCFMT "card %s/%d, field Istf: Istf 0 takes the stiffness from the main surface's "
                            "shell elements; /SURF/%s/%d has none: expected Istf 1 with Stfac the stiffness [N/m]",
-                 RC_LOC(t->line_loc[0]), t->id, kinds[cs->kind], t->surf_id);
-    *k = sum / nsh;
-    if (t->stmin > 0) *k = fmax(*k, t->stmin);
-    if (t->stmax > 0) *k = fmin(*k, t->stmax);
+                 RC_LOC(t->loc), t->card, t->id, kinds[cs->kind], surf_id);
+    *sum_out += sum;
+    *n_out += nsh;
     return RC_OK;
+}
+
+/* Istf 0 of a TYPE7: the mean over the main segments, within Stmin..Stmax. */
+static rc_status main_stiffness(const rc_case *c, const rc_case_type7 *t7, double *k, rc_error *err)
+{
+    const t7_card t = {"/INTER/TYPE7", t7->id, t7->line_loc[0], t7->stfac, t7->stmin, t7->stmax};
+    double sum = 0.0;
+    int n = 0;
+    rc_status st = shells_stiffness(c, &t, t7->surf_id, &sum, &n, err);
+    if (st) return st;
+    *k = sum / n;
+    if (t.stmin > 0) *k = fmax(*k, t.stmin);
+    if (t.stmax > 0) *k = fmin(*k, t.stmax);
+    return RC_OK;
+}
+
+/* Istf 0 of a TYPE24 (docs/theory.md 3.8): each surface is the main one of
+ * the other's nodes; the one law of the pair takes the mean over the
+ * segments of both surfaces, within Stmin..Stmax. */
+static rc_status pair_stiffness(const rc_case *c, const rc_case_type24 *t24, double *k, rc_error *err)
+{
+    const t7_card t = {t24->type == 25 ? "/INTER/TYPE25" : "/INTER/TYPE24", t24->id, t24->line_loc[0], t24->stfac, t24->stmin, t24->stmax};
+    double sum = 0.0;
+    int n = 0;
+    rc_status st = shells_stiffness(c, &t, t24->surf1, &sum, &n, err);
+    if (!st) st = shells_stiffness(c, &t, t24->surf2, &sum, &n, err);
+    if (st) return st;
+    *k = sum / n;
+    if (t.stmin > 0) *k = fmax(*k, t.stmin);
+    if (t.stmax > 0) *k = fmin(*k, t.stmax);
+    return RC_OK;
+}
+
+/* A closed box mesh (TYPE25 Iedge, docs/theory.md 3.8): a /SURF/SEG of 6
+ * quadrilaterals on 8 nodes of one body (or of none) that are the corners
+ * of a rectangular box, one face each, as the analytic /SURF/BOX *out
+ * (centre, half-sizes, axes, body); 0 when cs is not such a mesh. */
+static int mesh_box(const rc_case *c, const rc_case_surf *cs, rc_case_surf *out)
+{
+    if (cs->kind != RC_CASE_SURF_SEG || cs->nseg != 6) return 0;
+    int ids[8], n = 0;
+    for (int j = 0; j < 6; j++)
+        for (int q = 0; q < 4; q++) {
+            const int id = cs->seg[4 * j + q];
+            if (id == 0) return 0; /* a triangle */
+            int dup = 0;
+            for (int r = 0; r < n && !dup; r++) dup = ids[r] == id;
+            if (!dup) {
+                if (n == 8) return 0;
+                ids[n++] = id;
+            }
+        }
+    if (n != 8) return 0;
+    double x[8][3], g[3] = {0, 0, 0};
+    const int b0 = rc_case_body_of_node(c, ids[0]);
+    for (int r = 0; r < 8; r++) {
+        const int k = rc_case_find_node(c, ids[r]);
+        if (k < 0 || rc_case_body_of_node(c, ids[r]) != b0) return 0;
+        for (int d = 0; d < 3; d++) {
+            x[r][d] = c->node[k].x[d];
+            g[d] += x[r][d] / 8.0;
+        }
+    }
+    /* the three nodes next to node 0 along the quadrilaterals' sides span
+     * its three edges */
+    int near[3], nn = 0;
+    for (int j = 0; j < 6; j++)
+        for (int k = 0; k < 4; k++) {
+            if (cs->seg[4 * j + k] != ids[0]) continue;
+            const int nb2[2] = {cs->seg[4 * j + (k + 1) % 4], cs->seg[4 * j + (k + 3) % 4]};
+            for (int q = 0; q < 2; q++) {
+                int r = 0, dup = 0;
+                while (ids[r] != nb2[q]) r++;
+                for (int z = 0; z < nn && !dup; z++) dup = near[z] == r;
+                if (dup) continue;
+                if (nn == 3) return 0;
+                near[nn++] = r;
+            }
+        }
+    if (nn != 3) return 0;
+    double e[3][3], len[3], size = 0;
+    for (int q = 0; q < 3; q++) {
+        len[q] = 0;
+        for (int d = 0; d < 3; d++) {
+            e[q][d] = x[near[q]][d] - x[0][d];
+            len[q] += e[q][d] * e[q][d];
+        }
+        len[q] = sqrt(len[q]);
+        if (!(len[q] > 0)) return 0;
+        for (int d = 0; d < 3; d++) e[q][d] /= len[q];
+        size = fmax(size, len[q]);
+    }
+    const double tol = 1e-9;
+    for (int a = 0; a < 3; a++)
+        for (int bq = a + 1; bq < 3; bq++)
+            if (fabs(e[a][0] * e[bq][0] + e[a][1] * e[bq][1] + e[a][2] * e[bq][2]) > tol) return 0;
+    /* w = u x v: e[2] turned to it */
+    const double w[3] = {e[0][1] * e[1][2] - e[0][2] * e[1][1], e[0][2] * e[1][0] - e[0][0] * e[1][2],
+                         e[0][0] * e[1][1] - e[0][1] * e[1][0]};
+    const double sw = w[0] * e[2][0] + w[1] * e[2][1] + w[2] * e[2][2] < 0 ? -1.0 : 1.0;
+    for (int d = 0; d < 3; d++) e[2][d] = sw * e[2][d];
+    /* every node a corner: +- each half-size along each axis; each
+     * quadrilateral on one face (its nodes on one side along one axis) */
+    int sign[8][3];
+    for (int r = 0; r < 8; r++)
+        for (int q = 0; q < 3; q++) {
+            const double t = (x[r][0] - g[0]) * e[q][0] + (x[r][1] - g[1]) * e[q][1] + (x[r][2] - g[2]) * e[q][2];
+            if (fabs(fabs(t) - 0.5 * len[q]) > tol * size) return 0;
+            sign[r][q] = t > 0 ? 1 : -1;
+        }
+    int faces = 0;
+    for (int j = 0; j < 6; j++) {
+        int face = -1;
+        for (int q = 0; q < 3 && face < 0; q++) {
+            int same = 1, s0 = 0;
+            for (int k = 0; k < 4; k++) {
+                int r = 0;
+                while (ids[r] != cs->seg[4 * j + k]) r++;
+                if (k == 0) s0 = sign[r][q];
+                same &= sign[r][q] == s0;
+            }
+            if (same) face = 2 * q + (s0 > 0);
+        }
+        if (face < 0 || (faces & (1 << face))) return 0;
+        faces |= 1 << face;
+    }
+    *out = (rc_case_surf){.id = cs->id, .kind = RC_CASE_SURF_BOX, .loc = cs->loc, .rbody_loc = cs->loc,
+                          .rbody_id = b0 >= 0 ? c->rbody[b0].id : 0};
+    snprintf(out->title, sizeof out->title, "the box of /SURF/SEG/%d", cs->id);
+    for (int d = 0; d < 3; d++) {
+        out->c[d] = g[d];
+        out->abc[d] = 0.5 * len[d];
+        out->axis[d] = e[0][d];
+        out->axis2[d] = e[1][d];
+    }
+    return 1;
 }
 
 rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
 {
     memset(x, 0, sizeof *x);
     x->c = *c;
-    if (c->ntype7 == 0) return RC_OK;
+    if (c->ntype7 == 0 && c->ntype24 == 0) return RC_OK;
     rc_status st = RC_OK;
     /* the secondary nodes of each card, by body: count the point surfaces */
     int maxn = 0;
@@ -182,12 +322,14 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
             RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /INTER/TYPE7/%d, field surf_IDm: expected the id of a /SURF, got %d (no such surface)",
                      RC_LOC(t->line_loc[0]), t->id, t->surf_id);
         const rc_case_surf_kind k = c->surf[s].kind;
-        if (k != RC_CASE_SURF_SEG && k != RC_CASE_SURF_PART && k != RC_CASE_SURF_PLANE && k != RC_CASE_SURF_BOX)
+        if (k != RC_CASE_SURF_SEG && k != RC_CASE_SURF_PART && k != RC_CASE_SURF_PLANE && k != RC_CASE_SURF_BOX) {
+            rc_type7_end(x);
             RC_RAISE(err, RC_EINPUT,
                      RC_LOCFMT "card /INTER/TYPE7/%d, field surf_IDm: the main surface /SURF/%s/%d: not supported yet "
                                "(nodes against a sphere or a cylinder); expected a segment surface (/SURF/SEG, "
                                "/SURF/PART), a plane or a box",
                      RC_LOC(t->line_loc[0]), t->id, rc_t7_kinds[k], t->surf_id);
+        }
         for (int j = 0; j < c->grnod[g].n; j++)
             if (rc_case_find_node(c, c->grnod[g].nodes[j]) < 0)
                 RC_RAISE(err, RC_EINPUT,
@@ -196,6 +338,78 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
                          RC_LOC(rc_loc_at(c->grnod[g].node_loc, j, c->grnod[g].loc)), t->grnod_id, c->grnod[g].nodes[j],
                          t->id, RC_LOC(t->line_loc[0]));
         maxn = c->grnod[g].n > maxn ? c->grnod[g].n : maxn;
+    }
+    /* the TYPE24 cards: two segment surfaces, their stiffness, fric_ID */
+    x->k24 = calloc((size_t)c->ntype24 + 1, sizeof *x->k24);
+    x->name24 = calloc((size_t)c->ntype24 + 1, sizeof *x->name24);
+    x->bx = calloc(2 * (size_t)c->ntype24 + 1, sizeof *x->bx);
+    x->t24 = calloc((size_t)c->ntype24 + 1, sizeof *x->t24);
+    if (!x->k24 || !x->name24 || !x->bx || !x->t24) {
+        rc_type7_end(x);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
+    for (int i = 0; i < c->ntype24 && !st; i++) {
+        const rc_case_type24 *t = &c->type24[i];
+        const int sid[2] = {t->surf1, t->surf2};
+        static const char *const fname[2] = {"surf_ID1", "surf_ID2"};
+        int nbox = 0;
+        for (int q = 0; q < 2 && !st; q++) {
+            const int s = rc_case_find_surf(c, sid[q]);
+            if (s < 0) {
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /INTER/TYPE%d/%d, field %s: expected the id of a /SURF, got %d (no such surface)",
+                            RC_LOC(t->line_loc[0]), t->type, t->id, fname[q], sid[q]);
+                break;
+            }
+            const rc_case_surf_kind k = c->surf[s].kind;
+            nbox += k == RC_CASE_SURF_BOX;
+            if (k != RC_CASE_SURF_SEG && k != RC_CASE_SURF_PART && !(t->type == 25 && k == RC_CASE_SURF_BOX))
+                st = RC_SET(err, RC_EINPUT,
+                            RC_LOCFMT "card /INTER/TYPE%d/%d, field %s: /SURF/%s/%d is not supported yet (TYPE%d "
+                                      "puts the nodes of each surface against the segments of the other): expected "
+                                      "a segment surface (/SURF/SEG, /SURF/PART)%s",
+                            RC_LOC(t->line_loc[0]), t->type, t->id, fname[q], rc_t7_kinds[k], sid[q], t->type,
+                            t->type == 25 ? ", or two /SURF/BOX" : "");
+        }
+        /* TYPE25: two boxes meet corner to face and edge to edge (the box
+         * pair, docs/theory.md 2.7), with or without Iedge; meshed
+         * surfaces meet node to segment only, so Iedge is refused there */
+        if (!st && t->type == 25 && nbox == 1)
+            st = RC_SET(err, RC_EINPUT,
+                        RC_LOCFMT "card /INTER/TYPE25/%d, field surf_ID2: a /SURF/BOX against a segment surface is "
+                                  "not supported yet: expected two segment surfaces or two /SURF/BOX",
+                        RC_LOC(t->line_loc[0]), t->id);
+        /* Iedge on two closed box meshes: their analytic boxes (mesh_box),
+         * appended below; other segment surfaces have no edge pairs */
+        if (!st && t->type == 25 && t->iedge != 0 && nbox == 0) {
+            const rc_case_surf *s1 = &c->surf[rc_case_find_surf(c, t->surf1)], *s2 = &c->surf[rc_case_find_surf(c, t->surf2)];
+            if (mesh_box(c, s1, &x->bx[2 * i]) && mesh_box(c, s2, &x->bx[2 * i + 1]) &&
+                x->bx[2 * i].rbody_id != x->bx[2 * i + 1].rbody_id)
+                x->nbx += 2;
+            else
+                st = RC_SET(err, RC_EINPUT,
+                            RC_LOCFMT "card /INTER/TYPE25/%d, field Iedge: edge-to-edge contact of segment surfaces "
+                                      "is not supported yet except between two closed box meshes of two bodies "
+                                      "(a /SURF/SEG of 6 quadrilaterals on the 8 corners of a rectangular box, "
+                                      "taken as that box); /SURF/%s/%d and /SURF/%s/%d are not both such meshes: "
+                                      "expected Iedge 0 (nodes against segments only), two such meshes, or two "
+                                      "/SURF/BOX",
+                            RC_LOC(t->line_loc[0]), t->id, rc_t7_kinds[s1->kind], t->surf1, rc_t7_kinds[s2->kind],
+                            t->surf2);
+        }
+        if (!st && t->fric_id > 0) {
+            int found = 0;
+            for (int f = 0; f < c->nfriction; f++) found |= c->friction[f].id == t->fric_id;
+            if (!found)
+                st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /INTER/TYPE%d/%d, field fric_ID: expected the id of a /FRICTION, got %d (no such card)",
+                            RC_LOC(t->line_loc[5]), t->type, t->id, t->fric_id);
+        }
+        x->k24[i] = t->stfac;
+        if (!st && t->istf == 0) st = pair_stiffness(c, t, &x->k24[i], err);
+        snprintf(x->name24[i], sizeof x->name24[i], "/INTER/TYPE%d/%d", t->type, t->id);
+    }
+    if (st) {
+        rc_type7_end(x);
+        return st;
     }
     /* the stiffness of each card */
     x->k = calloc((size_t)c->ntype7 + 1, sizeof *x->k);
@@ -223,7 +437,7 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
         }
     }
     x->nuser = c->nsurf;
-    x->surf = calloc((size_t)(c->nsurf + npts) + 1, sizeof *x->surf);
+    x->surf = calloc((size_t)(c->nsurf + npts + x->nbx) + 1, sizeof *x->surf);
     x->funct = calloc((size_t)c->nfunct + 1, sizeof *x->funct);
     x->name = calloc((size_t)npts + 1, sizeof *x->name);
     x->pts_t7 = calloc((size_t)npts + 1, sizeof *x->pts_t7);
@@ -284,8 +498,25 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
         }
     x->len = fmax(fmax(hi[0] - lo[0], hi[1] - lo[1]), hi[2] - lo[2]);
     if (!(x->len > 0)) x->len = 1.0;
+    /* the boxes of TYPE25's closed box meshes, after the point surfaces
+     * (ids below RC_TYPE7_SURF_ID0 as theirs: no surface of the body's own
+     * for the walls); the copy's TYPE24/25 cards name them */
+    int nbs = 0;
+    if (c->ntype24) memcpy(x->t24, c->type24, (size_t)c->ntype24 * sizeof *x->t24);
+    for (int i = 0; i < c->ntype24; i++) {
+        if (x->bx[2 * i].kind != RC_CASE_SURF_BOX) continue;
+        for (int q = 0; q < 2; q++) {
+            rc_case_surf *bs = &x->surf[x->nuser + x->npts + nbs];
+            *bs = x->bx[2 * i + q];
+            bs->id = RC_TYPE7_SURF_ID0 - (x->npts + nbs);
+            if (q == 0) x->t24[i].surf1 = bs->id;
+            else x->t24[i].surf2 = bs->id;
+            nbs++;
+        }
+    }
+    x->c.type24 = x->t24;
     x->c.surf = x->surf;
-    x->c.nsurf = x->nuser + x->npts;
+    x->c.nsurf = x->nuser + x->npts + nbs;
     x->c.funct = x->funct;
     x->c.nfunct = c->nfunct + 1;
     /* the copy's own index (case/lookup.c) */
@@ -297,8 +528,8 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
 
 rc_status rc_type7_contacts(rc_type7_case *x, rc_case *c, const rc_model *m, rc_error *err)
 {
-    if (x->npts == 0) return RC_OK;
-    x->type6 = calloc((size_t)(c->ntype6 + x->npts) + 1, sizeof *x->type6);
+    if (x->npts == 0 && c->ntype24 == 0) return RC_OK;
+    x->type6 = calloc((size_t)(c->ntype6 + x->npts + c->ntype24) + 1, sizeof *x->type6);
     if (!x->type6) RC_RAISE(err, RC_ENOMEM, "out of memory");
     if (c->ntype6) memcpy(x->type6, c->type6, (size_t)c->ntype6 * sizeof *x->type6);
     int n = c->ntype6;
@@ -331,6 +562,29 @@ rc_status rc_type7_contacts(rc_type7_case *x, rc_case *c, const rc_model *m, rc_
                                "the main surface %d: expected secondary nodes of another body (or of none, fixed)",
                      RC_LOC(t->line_loc[0]), t->id, t->grnod_id, t->surf_id);
     }
+    /* TYPE24, TYPE25: one two-way contact of the two surfaces (the nodes of
+     * each against the segments of the other; two boxes: corners against
+     * faces and edges against edges), zero gap */
+    for (int i = 0; i < c->ntype24; i++) {
+        const rc_case_type24 *t = &c->type24[i];
+        const int s1 = rc_case_find_surf(c, t->surf1), s2 = rc_case_find_surf(c, t->surf2);
+        if (m->surf_body[s1] == m->surf_body[s2])
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card /INTER/TYPE%d/%d, field surf_ID2: surfaces %d and %d are on one body%s: expected "
+                               "surfaces of two bodies (a rigid body does not meet itself)",
+                     RC_LOC(t->line_loc[0]), t->type, t->id, t->surf1, t->surf2, m->surf_body[s1] < 0 ? " (none, fixed)" : "");
+        rc_case_type6 *t6 = &x->type6[n++];
+        *t6 = (rc_case_type6){.id = t->id, .surf1 = t->surf1, .surf2 = t->surf2, .fric = t->fric, .gap = 0.0,
+                              .tstart = t->tstart, .tstop = t->tstop, .inacti = t->inacti, .ascalef = 1.0,
+                              .ascalev = 1.0, .fct_ld = RC_TYPE7_FUNCT_ID, .ascalex = x->len,
+                              .fscaleld = x->k24[i] * x->len, .fscaleul = 1.0, .fscalev = 1.0, .loc = t->loc,
+                              .sensor_id = t->sensor_id, .name = x->name24[i], .oneway = 0, .vis_crit = t->viss,
+                              .fric_id = t->fric_id};
+        t6->line_loc[0] = t->line_loc[0];
+        t6->line_loc[1] = t6->line_loc[3] = t6->line_loc[4] = t->line_loc[3];
+        t6->line_loc[2] = t->line_loc[5];
+        t6->line_loc[5] = t->line_loc[4];
+    }
     c->type6 = x->type6;
     c->ntype6 = n;
     return RC_OK;
@@ -347,5 +601,9 @@ void rc_type7_end(rc_type7_case *x)
     free(x->pts_node);
     free(x->pts_t7);
     free(x->k);
+    free(x->k24);
+    free(x->name24);
+    free(x->bx);
+    free(x->t24);
     memset(x, 0, sizeof *x);
 }

@@ -8,6 +8,14 @@
  * friction Fric (or the /FRICTION card fric_ID). The compiler works on a
  * copy of the case with these surfaces, contacts and their load curve
  * appended; the deck's own arrays are untouched.
+ *
+ * /INTER/TYPE24 (and /INTER/TYPE25, whose two /SURF/BOX surfaces meet
+ * through the box pair, edges included) take the same path without point
+ * surfaces: one TYPE6
+ * contact of its two segment surfaces, both ways (the nodes of each
+ * against the segments of the other), the same linear law (k = Stfac,
+ * Istf 1; Stfac E t / 2, the mean over the shells of both surfaces, Istf 0),
+ * zero gap, VISs, Fric or fric_ID.
  */
 #ifndef RC_MODEL_TYPE7_H
 #define RC_MODEL_TYPE7_H
@@ -33,12 +41,17 @@ typedef struct rc_type7_case {
     int **pts_node;          /* [npts] its node ids (owned) */
     double len;              /* abscissa scale of the load curve [m]: the scene's size */
     double *k;               /* [ntype7] each card's stiffness [N/m] (Istf 1: Stfac; 0: main_stiffness) */
+    double *k24;             /* [ntype24] each TYPE24 card's stiffness [N/m] */
+    char (*name24)[64];      /* [ntype24] the TYPE24 contacts' names */
+    rc_case_surf *bx;        /* [2 ntype24] TYPE25 Iedge: the boxes of two closed box meshes (kind BOX), or zeros */
+    int nbx;                 /* the boxes made (appended after the point surfaces) */
+    rc_case_type24 *t24;     /* [ntype24] the cards of the copy, naming those boxes */
     double fx[2], fy[2];     /* the load curve: the line y = x through (0, 0), (1, 1) */
 } rc_type7_case;
 
 /* The copy of c with one point surface per TYPE7 card and body of its
  * secondary nodes, and the unit load curve; x->c is c itself when c has no
- * TYPE7. RC_EINPUT for a group or surface that does not exist, a main
+ * TYPE7 or TYPE24. RC_EINPUT for a group or surface that does not exist, a main
  * surface that is not a segment surface, a plane or a box, and (Istf 0)
  * main segments that are not shells with a Young's modulus and a
  * thickness. */

@@ -515,8 +515,8 @@ TL('type7_ithe', T7H, 'field Ithe', before_end(T7(l1='         1         2      
 TL('type7_icurv', T7H, 'field Icurv', before_end(T7(l1=cols('         1         2         1', 81, 90, '1')), expect=2))
 TL('type7_itied', T7H, 'field ITIED', before_end(T7(l2=cols('', 61, 70, '1')), expect=3))
 TL('type7_ibc', T7H, 'field IBC', before_end(T7(l5='       111'), expect=6))
-TL('type7_inacti', T7H, 'field Inacti', before_end(T7(l5=cols('', 21, 30, '1')), expect=6))
-TL('type7_visf', T7H, 'field VISF', before_end(T7(l5=cols('', 51, 70, '0.5')), expect=6))
+TL('type7_inacti', T7H, 'field Inacti', before_end(T7(l5=cols('', 31, 40, '1')), expect=6))
+TL('type7_visf', T7H, 'field VISF', before_end(T7(l5=cols('', 61, 80, '0.5')), expect=6))
 TL('type7_ifric', T7H, 'field Ifric', before_end(T7(l6='         1'), expect=7))
 TL('type7_ifiltr', T7H, 'field Ifiltr', before_end(T7(l6='         0         1'), expect=7))
 TL('type7_tstop_before_tstart', T7H, 'field Tstop', before_end(T7(l4=STOP('1e5', '', '', '2', '1')), expect=5))
@@ -562,6 +562,70 @@ TL('sensor_and_input_zero', SLOG, 'field sens_ID1',
 TL('sensor_not', '/SENSOR/NOT/8', 'not supported yet',
    before_end(SENS + ['/SENSOR/NOT/8', 'not', '                   0', '         4'], expect=3))
 
+
+
+def T24(l1=None, l2='', l3='', l4=None, l5='', l6=''):
+    """/INTER/TYPE24/96 (surf_ID1 /SURF/PLANE/2 and surf_ID2 /SURF/BOX/4 by
+    default: the reader's faults come first; Istf 1, Stfac 1e5 N/m) with the
+    lines given."""
+    l1 = '         2         4         1' if l1 is None else l1
+    l4 = STOP('1e5') if l4 is None else l4
+    return ['/INTER/TYPE24/96', 'surface to surface', l1, l2, l3, l4, l5, l6]
+
+
+# two segment surfaces on 4 nodes of no body (fixed)
+SEGS24 = ['/NODE', '        91                   0                   0                   5',
+          '        92                   1                   0                   5',
+          '        93                   1                   1                   5',
+          '        94                   0                   1                   5',
+          '/SURF/SEG/95', 'upper side', '         1        91        92        93        94',
+          '/SURF/SEG/96', 'lower side', '         1        94        93        92        91']
+T24H = '/INTER/TYPE24/96'
+TL('type24_istf_combined', T24H, 'field Istf', before_end(T24(l1='         2         4         2'), expect=2))
+TL('type24_stfac_blank', T24H, 'field Stfac', before_end(T24(l4=STOP('', '0.3')), expect=5))
+TL('type24_stmax_below_stmin', T24H, 'field Stmax', before_end(T24(l3=STOP('2e5', '1e5')), expect=4))
+TL('type24_self_contact', T24H, 'field surf_ID2', before_end(T24(l1='         2         0         1'), expect=2))
+TL('type24_same_surface', T24H, 'field surf_ID2', before_end(T24(l1='         2         2         1'), expect=2))
+TL('type24_grnd_ids', T24H, 'field grnd_IDs', before_end(T24(l2='         1'), expect=3))
+TL('type24_iedge', T24H, 'field Iedge', before_end(T24(l2=cols('', 31, 40, '1')), expect=3))
+TL('type24_ipen0', T24H, 'field Ipen0', before_end(T24(l3=cols('', 51, 60, '1')), expect=4))
+TL('type24_ipen_max', T24H, 'field Ipen_max', before_end(T24(l3=cols('', 61, 80, '0.01')), expect=4))
+TL('type24_ibc', T24H, 'field IBC', before_end(T24(l5='       111'), expect=6))
+TL('type24_inacti', T24H, 'field Inacti', before_end(T24(l5=cols('', 31, 40, '-1')), expect=6))
+TL('type24_tpressfit', T24H, 'field Tpressfit', before_end(T24(l5=cols('', 81, 100, '0.1')), expect=6))
+TL('type24_ifric', T24H, 'field Ifric', before_end(T24(l6='         1'), expect=7))
+TL('type24_ifiltr', T24H, 'field Ifiltr', before_end(T24(l6='         0         1'), expect=7))
+TL('type24_tstop_before_tstart', T24H, 'field Tstop', before_end(T24(l4=STOP('1e5', '', '', '2', '1')), expect=5))
+TL('type24_surface_missing', T24H, 'field surf_ID1', before_end(T24(l1='        99         4         1'), expect=2))
+TL('type24_surface_plane', T24H, 'field surf_ID1', before_end(T24(l1='         2        96         1'), expect=2))
+TL('type24_friction_missing', T24H, 'field fric_ID',
+   before_end(SEGS24 + T24(l1='        95        96         1', l6=cols('', 91, 100, '77')), expect=len(SEGS24) + 7))
+TL('type24_same_body', T24H, 'field surf_ID2',
+   before_end(SEGS24 + T24(l1='        95        96         1'), expect=len(SEGS24) + 2))
+
+
+def T25(l1=None, l2='', l3='', l4=None, l5='', l6=''):
+    """/INTER/TYPE25/95 (surf_ID1 /SURF/PLANE/2, surf_ID2 /SURF/BOX/4 by
+    default; Istf 1, Stfac 1e5 N/m) with the lines given."""
+    l1 = '         2         4         1' if l1 is None else l1
+    l4 = STOP('1e5') if l4 is None else l4
+    return ['/INTER/TYPE25/95', 'penalty contact', l1, l2, l3, l4, l5, l6]
+
+
+T25H = '/INTER/TYPE25/95'
+TL('type25_istf_combined', T25H, 'field Istf', before_end(T25(l1='         2         4         4'), expect=2))
+TL('type25_ithe', T25H, 'field Ithe', before_end(T25(l1='         2         4         1         1'), expect=2))
+TL('type25_igap_variable', T25H, 'field Igap', before_end(T25(l1='         2         4         1         0         2'), expect=2))
+TL('type25_self_contact', T25H, 'field surf_ID2', before_end(T25(l1='         2         0         1'), expect=2))
+TL('type25_ivis2', T25H, 'field IVIS2', before_end(T25(l5=cols('', 21, 30, '-1')), expect=6))
+TL('type25_inacti', T25H, 'field Inacti', before_end(T25(l5=cols('', 31, 40, '1')), expect=6))
+TL('type25_ifric', T25H, 'field Ifric', before_end(T25(l6='         2'), expect=7))
+TL('type25_iedge_segments', T25H, 'field Iedge',
+   before_end(SEGS24 + T25(l1=cols('        95        96         1', 81, 90, '2')), expect=len(SEGS24) + 2))
+TL('type25_tpressfit', T25H, 'field Tpressfit', before_end(T25(l4=STOP('1e5', '', '0.1')), expect=5))
+TL('type25_dtstif', T25H, 'field DTSTIF', before_end(T25(l6=cols('', 61, 80, '0.5')), expect=7))
+TL('type25_box_against_segments', T25H, 'field surf_ID2',
+   before_end(SEGS24 + T25(l1='         4        95         1'), expect=len(SEGS24) + 2))
 
 def write_all():
     for old in glob.glob('[0-9][0-9][0-9]_*'):

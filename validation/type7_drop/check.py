@@ -50,7 +50,7 @@ def type7(d, iid, grnod, surf, stfac, fric=0.0, gapmin=0.0, fric_id=0, istf=1, s
           line(("r", 0.0), ("r", 0.0), ("r", 0.0), ("i", 0)),
           line(("r", stmin), ("r", stmax), ("r", 0.0), ("r", 0.0), ("i", 0), ("i", 0)),
           line(("r", stfac), ("r", fric), ("r", gapmin), ("r", 0.0), ("r", 0.0)),
-          line(("i", 0), ("i", None), ("i", 0), ("r", 0.0), ("r", 0.0), ("r", 0.0)),
+          line(("i", 0), ("i", None), ("i", None), ("i", 0), ("r", 0.0), ("r", 0.0), ("r", 0.0)),
           line(("i", 0), ("i", 0), ("r", 0.0), ("i", 0), ("i", 0), ("i", 0), ("r", 0.0), ("i", fric_id)),
           title="box nodes on the floor")
 

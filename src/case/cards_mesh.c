@@ -382,7 +382,7 @@ static rc_status rc_skew_mov_axes(rc_reader *rd, rc_case_skew *s)
         for (int q = 0; q < c->nnode && n < 0; q++)
             if (c->node[q].id == s->nodes[j]) n = q;
         if (n < 0) {
-            char f[12];
+            char f[24];
             snprintf(f, sizeof f, "node_ID%d", j + 1);
             return rc_case_fail(rd, &s->line_loc, card, f, "expected the id of a /NODE, got %d (no such node)",
                                 s->nodes[j]);

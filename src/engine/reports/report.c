@@ -166,7 +166,7 @@ static void print_gravity(const rc_model *m, FILE *f)
     }
     const double r = gn / 9.80665;
     if (gn > 0 && (r < 0.05 || r > 20)) {
-        char hint[200] = "a deck in mm takes -9810 mm/s^2, not -9.81";
+        char hint[400] = "a deck in mm takes -9810 mm/s^2, not -9.81";
         if (du[0])
             snprintf(hint, sizeof hint, "the deck's length unit is %s: the Earth's gravity is %.6g %s, the deck gives "
                      "%.6g %s%s", m->deck_unit[1], 9.80665 * tf * tf / lf, du, gn * tf * tf / lf, du,

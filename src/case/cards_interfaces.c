@@ -440,25 +440,90 @@ rc_status rc_card_type7(rc_reader *rd, const rc_block *b)
  * /INTER/TYPE24
  * ====================================================================== */
 
+/* The start TYPE24 and TYPE25 share: the header, a new record of
+ * c->type24 of the given type, and the refusal of the layouts before 11.0. */
+static rc_status t24_begin(rc_reader *rd, const rc_block *b, int type, rc_case_type24 **out)
+{
+    rc_case *c = rd->c;
+    rc_status st;
+    char usage[40];
+    snprintf(usage, sizeof usage, "/INTER/TYPE%d/inter_ID", type);
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "inter_ID", usage))) return st;
+    RC_GROW(rd, c->type24, rd->captype24, c->ntype24);
+    rc_case_type24 *t = &c->type24[c->ntype24++];
+    t->id = b->id;
+    t->type = type;
+    t->loc = b->hdr->loc;
+    for (int k = 0; k < 6; k++) t->line_loc[k] = t->loc;
+    *out = t;
+    if (rc_layout_version(rd) < 110)
+        return rc_case_fail(rd, &b->hdr->loc, b->name, NULL,
+                            "the /INTER/TYPE%d layout of Radioss versions before 11.0 (/BEGIN Invers %d) is not "
+                            "supported yet: expected Invers 110 or later (or 0)",
+                            type, rc_layout_version(rd));
+    return RC_OK;
+}
+
+/* The fields whose checks TYPE24 and TYPE25 share (their columns differ:
+ * the fields as each card read them, for the text it got). */
+typedef struct {
+    const rc_field *surf2, *istf, *stfac, *stmax, *igap0, *inacti, *tstop;
+} t24_fields;
+
+/* Those checks, on the values read into t (and Igap0): two surfaces, no
+ * self-contact; Istf 0/1000 or 1 with its Stfac (a factor converted back
+ * from a stiffness for Istf 0, 1 by default); Stmax >= Stmin; Igap0 0, 1 or
+ * 1000 (the gap is zero: model/type7.c); Inacti 0 or 5; Tstop >= Tstart. */
+static rc_status t24_checks(rc_reader *rd, const rc_block *b, rc_case_type24 *t, int igap0, const t24_fields *f)
+{
+    if (t->surf2 == 0)
+        return rc_case_fail(rd, &t->line_loc[0], b->name, "surf_ID2",
+                            "blank or 0 (self-contact of surf_ID1) is not supported yet: a rigid body does not "
+                            "meet itself; expected the id of the second surface");
+    if (t->surf2 == t->surf1)
+        return rc_case_fail(rd, &t->line_loc[0], b->name, "surf_ID2",
+                            "expected a surface other than surf_ID1 = %d (self-contact is not supported yet), got %s",
+                            t->surf1, f->surf2->got);
+    /* the stiffness: Stfac a stiffness value (Istf 1), or a factor on the
+     * shells' stiffness (0, 1000: model/type7.c) */
+    if (t->istf == RC_T7_DEFAULT) t->istf = 0;
+    if (t->istf != 0 && t->istf != 1)
+        return rc_case_fail(rd, &t->line_loc[0], b->name, "Istf",
+                            "expected 0, 1000 (the main elements' stiffness times Stfac) or 1 (Stfac is the "
+                            "stiffness [N/m]), got %s: not supported yet (Istf 2 to 6 combine both sides' element "
+                            "stiffnesses)",
+                            f->istf->got);
+    if (t->istf == 1 && !(t->stfac > 0))
+        return rc_case_fail(rd, &t->line_loc[3], b->name, "Stfac",
+                            "with Istf 1, Stfac is the interface stiffness: expected a value > 0 [N/m], got %s",
+                            f->stfac->got);
+    if (t->istf == 0 && rc_units_convert(rd)) t->stfac /= rc_dim_scale(RC_D_K, rd->cur_units);
+    if (t->istf == 0 && t->stfac == 0) t->stfac = 1.0; /* the scale factor's default */
+    if (t->stmax > 0 && t->stmax < t->stmin)
+        return rc_case_fail(rd, &t->line_loc[2], b->name, "Stmax", "expected Stmax >= Stmin = %.15g (or 0: none), got %s",
+                            t->stmin, f->stmax->got);
+    if (igap0 != 0 && igap0 != 1 && igap0 != RC_T7_DEFAULT)
+        return rc_case_fail(rd, &t->line_loc[2], b->name, "Igap0", "expected 0, 1 or 1000, got %s", f->igap0->got);
+    if (t->inacti == RC_T7_DEFAULT) t->inacti = 0;
+    if (t->inacti != 0 && t->inacti != 5)
+        return rc_case_fail(rd, &t->line_loc[4], b->name, "Inacti",
+                            "expected 0, blank, 1000 (no action) or 5 (the gap reduced by the initial "
+                            "penetration), got %s: not supported yet",
+                            f->inacti->got);
+    if (t->tstop < t->tstart)
+        return rc_case_fail(rd, &t->line_loc[3], b->name, "Tstop", "expected Tstop >= Tstart = %.15g, got %s",
+                            t->tstart, f->tstop->got);
+    return RC_OK;
+}
+
 /* /INTER/TYPE24/inter_ID: title and Radioss's six lines (layout of 11.0 and
  * later; the friction law lines of Ifric are refused with their flag). */
 rc_status rc_card_type24(rc_reader *rd, const rc_block *b)
 {
-    rc_case *c = rd->c;
     int nd;
     rc_status st;
-    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "inter_ID", "/INTER/TYPE24/inter_ID"))) return st;
-    RC_GROW(rd, c->type24, rd->captype24, c->ntype24);
-    rc_case_type24 *t = &c->type24[c->ntype24++];
-    t->id = b->id;
-    t->type = 24;
-    t->loc = b->hdr->loc;
-    for (int k = 0; k < 6; k++) t->line_loc[k] = t->loc;
-    if (rc_layout_version(rd) < 110)
-        return rc_case_fail(rd, &b->hdr->loc, b->name, NULL,
-                            "the /INTER/TYPE24 layout of Radioss versions before 11.0 (/BEGIN Invers %d) is not "
-                            "supported yet: expected Invers 110 or later (or 0)",
-                            rc_layout_version(rd));
+    rc_case_type24 *t = NULL;
+    if ((st = t24_begin(rd, b, 24, &t))) return st;
     if ((st = rc_card_lines(rd, b, t->title, 6, 8,
                             "surf_ID1 surf_ID2 Istf (blank) (blank) Irem_i2 (blank) Idel, grnd_IDs (blank) Iedge "
                             "Edge_angle Gap_max_s Gap_max_m, Stmin Stmax Igap0 Ipen0 Ipen_max, Stfac Fric "
@@ -528,48 +593,11 @@ rc_status rc_card_type24(rc_reader *rd, const rc_block *b)
     if (nd > 6)
         return rc_case_fail(rd, &b->lines[7].loc, b->name, NULL,
                             "expected 6 data lines (Ifric 0: no friction law lines), got %d", nd);
-    if (t->surf2 == 0)
-        return rc_case_fail(rd, &t->line_loc[0], b->name, "surf_ID2",
-                            "blank or 0 (self-contact of surf_ID1) is not supported yet: a rigid body does not "
-                            "meet itself; expected the id of the second surface");
-    if (t->surf2 == t->surf1)
-        return rc_case_fail(rd, &t->line_loc[0], b->name, "surf_ID2",
-                            "expected a surface other than surf_ID1 = %d (self-contact is not supported yet), got %s",
-                            t->surf1, l1[1].got);
-    /* the stiffness: Stfac a stiffness value (Istf 1), or a factor on the
-     * shells' stiffness (0, 1000: model/type7.c) */
-    if (t->istf == RC_T7_DEFAULT) t->istf = 0;
-    if (t->istf != 0 && t->istf != 1)
-        return rc_case_fail(rd, &t->line_loc[0], b->name, "Istf",
-                            "expected 0, 1000 (the main elements' stiffness times Stfac) or 1 (Stfac is the "
-                            "stiffness [N/m]), got %s: not supported yet (Istf 2 to 6 combine both sides' element "
-                            "stiffnesses)",
-                            l1[2].got);
-    if (t->istf == 1 && !(t->stfac > 0))
-        return rc_case_fail(rd, &t->line_loc[3], b->name, "Stfac",
-                            "with Istf 1, Stfac is the interface stiffness: expected a value > 0 [N/m], got %s",
-                            l4[0].got);
-    if (t->istf == 0 && rc_units_convert(rd)) t->stfac /= rc_dim_scale(RC_D_K, rd->cur_units);
-    if (t->istf == 0 && t->stfac == 0) t->stfac = 1.0; /* the scale factor's default */
-    if (t->stmax > 0 && t->stmax < t->stmin)
-        return rc_case_fail(rd, &t->line_loc[2], b->name, "Stmax", "expected Stmax >= Stmin = %.15g (or 0: none), got %s",
-                            t->stmin, l3[1].got);
-    /* the gap is zero (model/type7.c): Igap0 1 (zero gap on free edges) is
-     * what ricochet does anyway */
-    if (igap0 != 0 && igap0 != 1 && igap0 != RC_T7_DEFAULT)
-        return rc_case_fail(rd, &t->line_loc[2], b->name, "Igap0", "expected 0, 1 or 1000, got %s", l3[2].got);
+    const t24_fields f = {&l1[1], &l1[2], &l4[0], &l3[1], &l3[2], &l5[2], &l4[4]};
+    if ((st = t24_checks(rd, b, t, igap0, &f))) return st;
     if ((st = t7_only_default(rd, b, &t->line_loc[2], &l3[3], ipen0,
                               "initial penetrations within each part; ricochet's bodies are rigid")))
         return st;
-    if (t->inacti == RC_T7_DEFAULT) t->inacti = 0;
-    if (t->inacti != 0 && t->inacti != 5)
-        return rc_case_fail(rd, &t->line_loc[4], b->name, "Inacti",
-                            "expected 0, blank, 1000 (no action) or 5 (the gap reduced by the initial "
-                            "penetration), got %s: not supported yet",
-                            l5[2].got);
-    if (t->tstop < t->tstart)
-        return rc_case_fail(rd, &t->line_loc[3], b->name, "Tstop", "expected Tstop >= Tstart = %.15g, got %s",
-                            t->tstart, l4[4].got);
     (void)irem_i2;
     (void)idel;
     (void)edge_angle;
@@ -589,21 +617,10 @@ rc_status rc_card_type24(rc_reader *rd, const rc_block *b)
  * c->type24 (type 25). */
 rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
 {
-    rc_case *c = rd->c;
     int nd;
     rc_status st;
-    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "inter_ID", "/INTER/TYPE25/inter_ID"))) return st;
-    RC_GROW(rd, c->type24, rd->captype24, c->ntype24);
-    rc_case_type24 *t = &c->type24[c->ntype24++];
-    t->id = b->id;
-    t->type = 25;
-    t->loc = b->hdr->loc;
-    for (int k = 0; k < 6; k++) t->line_loc[k] = t->loc;
-    if (rc_layout_version(rd) < 110)
-        return rc_case_fail(rd, &b->hdr->loc, b->name, NULL,
-                            "the /INTER/TYPE25 layout of Radioss versions before 11.0 (/BEGIN Invers %d) is not "
-                            "supported yet: expected Invers 110 or later (or 0)",
-                            rc_layout_version(rd));
+    rc_case_type24 *t = NULL;
+    if ((st = t24_begin(rd, b, 25, &t))) return st;
     if ((st = rc_card_lines(rd, b, t->title, 6, 12,
                             "surf_ID1 surf_ID2 Istf Ithe Igap Irem_i2 (blank) Idel Iedge IPSTIF, grnd_IDs (blank) "
                             "Gap_scale %mesh_size Gap_max_s Gap_max_m, Stmin Stmax Igap0 Ishape Edge_angle "
@@ -687,49 +704,16 @@ rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
                             "expected 6 data lines (Ifric 0, IVIS2 0 and Ithe 0: no friction law, adhesion or "
                             "thermal lines), got %d",
                             nd);
-    if (t->surf2 == 0)
-        return rc_case_fail(rd, &t->line_loc[0], b->name, "surf_ID2",
-                            "blank or 0 (self-contact of surf_ID1) is not supported yet: a rigid body does not "
-                            "meet itself; expected the id of the second surface");
-    if (t->surf2 == t->surf1)
-        return rc_case_fail(rd, &t->line_loc[0], b->name, "surf_ID2",
-                            "expected a surface other than surf_ID1 = %d (self-contact is not supported yet), got %s",
-                            t->surf1, l1[1].got);
-    if (t->istf == RC_T7_DEFAULT) t->istf = 0;
-    if (t->istf != 0 && t->istf != 1)
-        return rc_case_fail(rd, &t->line_loc[0], b->name, "Istf",
-                            "expected 0, 1000 (the main elements' stiffness times Stfac) or 1 (Stfac is the "
-                            "stiffness [N/m]), got %s: not supported yet (Istf 2 to 6 combine both sides' element "
-                            "stiffnesses)",
-                            l1[2].got);
-    if (t->istf == 1 && !(t->stfac > 0))
-        return rc_case_fail(rd, &t->line_loc[3], b->name, "Stfac",
-                            "with Istf 1, Stfac is the interface stiffness: expected a value > 0 [N/m], got %s",
-                            l4[0].got);
-    if (t->istf == 0 && rc_units_convert(rd)) t->stfac /= rc_dim_scale(RC_D_K, rd->cur_units);
-    if (t->istf == 0 && t->stfac == 0) t->stfac = 1.0; /* the scale factor's default */
-    if (t->stmax > 0 && t->stmax < t->stmin)
-        return rc_case_fail(rd, &t->line_loc[2], b->name, "Stmax", "expected Stmax >= Stmin = %.15g (or 0: none), got %s",
-                            t->stmin, l3[1].got);
+    const t24_fields f = {&l1[1], &l1[2], &l4[0], &l3[1], &l3[2], &l5[3], &l4[4]};
+    if ((st = t24_checks(rd, b, t, igap0, &f))) return st;
     if ((st = t7_only_default(rd, b, &t->line_loc[0], &l1[4], igap,
                               "a variable gap from the elements' thicknesses and sizes; ricochet's TYPE25 gap is zero")))
         return st;
-    if (igap0 != 0 && igap0 != 1 && igap0 != RC_T7_DEFAULT)
-        return rc_case_fail(rd, &t->line_loc[2], b->name, "Igap0", "expected 0, 1 or 1000, got %s", l3[2].got);
     /* Iedge: 0 and 1000 none; 1 (free edges), 2 (all edges), 3 (both)
      * checked against the surfaces by the compiler (model/type7.c) */
     if (t->iedge == RC_T7_DEFAULT) t->iedge = 0;
     if (t->iedge > 3)
         return rc_case_fail(rd, &t->line_loc[0], b->name, "Iedge", "expected 0, 1, 2, 3 or 1000, got %s", l1[8].got);
-    if (t->inacti == RC_T7_DEFAULT) t->inacti = 0;
-    if (t->inacti != 0 && t->inacti != 5)
-        return rc_case_fail(rd, &t->line_loc[4], b->name, "Inacti",
-                            "expected 0, blank, 1000 (no action) or 5 (the gap reduced by the initial "
-                            "penetration), got %s: not supported yet",
-                            l5[3].got);
-    if (t->tstop < t->tstart)
-        return rc_case_fail(rd, &t->line_loc[3], b->name, "Tstop", "expected Tstop >= Tstart = %.15g, got %s",
-                            t->tstart, l4[4].got);
     (void)irem_i2;
     (void)idel;
     (void)gap_scale;

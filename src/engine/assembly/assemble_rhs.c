@@ -172,6 +172,16 @@ void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip,
             rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, out, d->sc->node_cache);
 }
 
+/* The distance of distance sensor k's two points (body-frame points of
+ * its bodies, or fixed) at y [m]: the kernels' material points. */
+double rc_sens_distance(const rc_model *m, int k, const double *y)
+{
+    double a[3], b[3], v[3];
+    body_point_r(rc_body_state(m, m->sens_body[2 * k], y), m->sens_p + 6 * k, a, v);
+    body_point_r(rc_body_state(m, m->sens_body[2 * k + 1], y), m->sens_p + 6 * k + 3, b, v);
+    return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
 void rc_point_position(const rc_model *m, int i, int j, const double *y, double x[3])
 {
     const double *ya = rc_body_state(m, m->inter_ba[i], y), *yb = rc_body_state(m, m->inter_bb[i], y);

@@ -1,30 +1,14 @@
 /*
  * Distance sensors (/SENSOR/DIST; model/sensor.c, docs/theory.md
- * "Sensors"): the distance of a sensor's two points and its two root
- * functions. Pure: no allocation, no output (the root functions run inside
+ * "Sensors"): a sensor's two root functions (the distance of its two
+ * points: rc_sens_distance, with the kernels' material points in
+ * assemble_rhs.c). Pure: no allocation, no output (the root functions run inside
  * the integrator's rootfinding).
  */
 #include <math.h>
 
 #include "model/model.h"
 #include "engine/assembly/assembly.h"
-
-/* Point p (body frame) of body state s (x, q = (w, x, y, z), ...) in global coordinates. */
-static void to_global(const double *s, const double *p, double *x)
-{
-    const double w = s[3], u[3] = {s[4], s[5], s[6]};
-    const double c[3] = {u[1] * p[2] - u[2] * p[1], u[2] * p[0] - u[0] * p[2], u[0] * p[1] - u[1] * p[0]};
-    const double cc[3] = {u[1] * c[2] - u[2] * c[1], u[2] * c[0] - u[0] * c[2], u[0] * c[1] - u[1] * c[0]};
-    for (int k = 0; k < 3; k++) x[k] = s[k] + p[k] + 2.0 * (w * c[k] + cc[k]);
-}
-
-double rc_sens_distance(const rc_model *m, int k, const double *y)
-{
-    double a[3], b[3];
-    to_global(rc_body_state(m, m->sens_body[2 * k], y), m->sens_p + 6 * k, a);
-    to_global(rc_body_state(m, m->sens_body[2 * k + 1], y), m->sens_p + 6 * k + 3, b);
-    return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
-}
 
 void rc_sens_roots(const rc_model *m, const rc_data *d, const double *y, double *g)
 {

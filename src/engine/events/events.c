@@ -461,7 +461,7 @@ void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y)
     int changed = 0;
     sens_init(m, d, t, y); /* first: a sensor triggered at the start turns interfaces on */
     for (int i = 0; i < m->ninter; i++) {
-        const double ton = m->inter_sens[i] < 0 ? m->inter_tstart[i] : rc_sens_inter_ton(m, d, i);
+        const double ton = rc_sens_inter_ton(m, d, i);
         int active = t >= ton && t <= m->inter_tstop[i];
         d->inter_mode[i] = RC_MODE_INACTIVE;
         if (active) classify(m, d, i, t, y, &changed);

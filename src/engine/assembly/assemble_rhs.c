@@ -182,6 +182,18 @@ double rc_sens_distance(const rc_model *m, int k, const double *y)
     return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
 }
 
+/* Distance sensors' root functions: d - Dmax and Dmin - d until triggered. */
+void rc_sens_roots(const rc_model *m, const rc_data *d, const double *y, double *g)
+{
+    for (int k = 0; k < m->nsens; k++) {
+        g[2 * k] = g[2 * k + 1] = -1.0; /* a time sensor, or one that has triggered */
+        if (m->sens_kind[k] != 1 || isfinite(d->sens_ton[k])) continue;
+        const double dist = rc_sens_distance(m, k, y), *b = m->sens_d + 2 * k;
+        if (b[1] > 0) g[2 * k] = dist - b[1];
+        if (b[0] > 0) g[2 * k + 1] = b[0] - dist;
+    }
+}
+
 void rc_point_position(const rc_model *m, int i, int j, const double *y, double x[3])
 {
     const double *ya = rc_body_state(m, m->inter_ba[i], y), *yb = rc_body_state(m, m->inter_bb[i], y);

@@ -1,25 +1,14 @@
 /*
  * Distance sensors (/SENSOR/DIST; model/sensor.c, docs/theory.md
- * "Sensors"): a sensor's two root functions (the distance of its two
- * points: rc_sens_distance, with the kernels' material points in
- * assemble_rhs.c). Pure: no allocation, no output (the root functions run inside
+ * "Sensors"): which of a sensor's root functions are live, and an
+ * interface's start under a sensor (the distance and the root functions
+ * are in assemble_rhs.c, with the kernels' material points). Pure: no allocation, no output (the root functions run inside
  * the integrator's rootfinding).
  */
 #include <math.h>
 
 #include "model/model.h"
 #include "engine/assembly/assembly.h"
-
-void rc_sens_roots(const rc_model *m, const rc_data *d, const double *y, double *g)
-{
-    for (int k = 0; k < m->nsens; k++) {
-        g[2 * k] = g[2 * k + 1] = -1.0; /* a time sensor, or one that has triggered */
-        if (m->sens_kind[k] != 1 || isfinite(d->sens_ton[k])) continue;
-        const double dist = rc_sens_distance(m, k, y), *b = m->sens_d + 2 * k;
-        if (b[1] > 0) g[2 * k] = dist - b[1];
-        if (b[0] > 0) g[2 * k + 1] = b[0] - dist;
-    }
-}
 
 int rc_sens_root_live(const rc_model *m, int j)
 {

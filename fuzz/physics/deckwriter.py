@@ -184,6 +184,8 @@ def write(scene, units=("kg", "m", "s"), header=()):
                          ("r", g("v_imp"), VEL)))
         elif it["law"] == "power":
             g = it.get
+            if g("irs") or g("irm"):  # the card has no such fields: the scene would not be what it says
+                raise ValueError("an /INTER/POWER interface cannot reverse its surfaces' normals (irs, irm)")
             lines = [w.line(("i", it["s1"]), ("i", it["s2"]), ("i", g("fct_stiff")), ("i", g("fct_damp")),
                             ("i", g("ispline")), ("i", g("irdf"))),
                      w.line(("rsi", g("k")), ("rsi", g("m1")), ("rsi", g("c")), ("rsi", g("m2")), ("rsi", g("m3"))),

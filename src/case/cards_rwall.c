@@ -129,14 +129,15 @@ rc_status rc_card_rwall(rc_reader *rd, const rc_block *b)
  * t = Tdelay). /SENSOR/DIST/sens_ID[/unit_ID]: title; Tdelay; node_ID1
  * node_ID2 Dmin Dmax [Tmin Dflag from 2022: 0 only] (the sensor is on
  * Tdelay after the nodes' distance leaves [Dmin, Dmax]). /SENSOR/AND and
- * /SENSOR/OR: title; Tdelay; sens_ID1 sens_ID2. The /RBODY and
+ * /SENSOR/OR: title; Tdelay; sens_ID1 sens_ID2. /SENSOR/NOT: title;
+ * Tdelay; sens_ID1 (on from Tdelay while sens_ID1 is off). The /RBODY and
  * interfaces naming a sensor: the compiler (model/sensor.c). */
 rc_status rc_card_sensor_time(rc_reader *rd, const rc_block *b)
 {
     rc_case *c = rd->c;
     const int dist = strcmp(b->kw[1], "DIST") == 0, is_and = strcmp(b->kw[1], "AND") == 0,
-              is_or = strcmp(b->kw[1], "OR") == 0;
-    const int two = dist || is_and || is_or; /* a second line */
+              is_or = strcmp(b->kw[1], "OR") == 0, is_not = strcmp(b->kw[1], "NOT") == 0;
+    const int two = dist || is_and || is_or || is_not; /* a second line */
     int nd;
     rc_status st;
     char usage[40];
@@ -145,10 +146,13 @@ rc_status rc_card_sensor_time(rc_reader *rd, const rc_block *b)
     RC_GROW(rd, c->sensor, rd->capsensor, c->nsensor);
     rc_case_sensor *s = &c->sensor[c->nsensor++];
     s->id = b->id;
-    s->kind = dist ? RC_SENS_DIST : is_and ? RC_SENS_AND : is_or ? RC_SENS_OR : RC_SENS_TIME;
+    s->kind = dist ? RC_SENS_DIST : is_and ? RC_SENS_AND : is_or ? RC_SENS_OR : is_not ? RC_SENS_NOT : RC_SENS_TIME;
     s->loc = s->line_loc = s->line2_loc = b->hdr->loc;
     if ((st = rc_card_lines(rd, b, s->title, two ? 2 : 1, two ? 2 : 1,
-                            dist ? "Tdelay, node_ID1 node_ID2 Dmin Dmax" : two ? "Tdelay, sens_ID1 sens_ID2" : "Tdelay",
+                            dist     ? "Tdelay, node_ID1 node_ID2 Dmin Dmax"
+                            : is_not ? "Tdelay, sens_ID1"
+                            : two    ? "Tdelay, sens_ID1 sens_ID2"
+                                     : "Tdelay",
                             &nd)))
         return st;
     s->line_loc = b->lines[1].loc;
@@ -158,6 +162,15 @@ rc_status rc_card_sensor_time(rc_reader *rd, const rc_block *b)
         s->line2_loc = b->lines[2].loc;
         rc_field g[] = {RC_F_INT("sens_ID1", &s->in[0], 0, RC_FF_POS), RC_F_INT("sens_ID2", &s->in[1], 0, RC_FF_POS)};
         if ((st = rc_parse_line(rd, b, &b->lines[2], g, RC_NF(g)))) return st;
+    }
+    if (is_not) {
+        s->line2_loc = b->lines[2].loc;
+        rc_field g[] = {RC_F_INT("sens_ID1", &s->in[0], 0, RC_FF_POS)};
+        if ((st = rc_parse_line(rd, b, &b->lines[2], g, RC_NF(g)))) return st;
+        if (s->in[0] == s->id)
+            return rc_case_fail(rd, &b->lines[2].loc, b->name, "sens_ID1",
+                                "expected another sensor, got %d (the sensor itself: on while it is off)", s->in[0]);
+        s->in[1] = s->in[0]; /* one input: the checks of the two-input sensors see it twice */
     }
     if (dist) {
         s->line2_loc = b->lines[2].loc;

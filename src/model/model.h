@@ -225,11 +225,15 @@ struct rc_model {
      * rc_root_sens_base: d - Dmax and Dmin - d, rising through 0) until it
      * triggers; time sensors (kind 0) have none (their time is compiled
      * into the Tstart of what they activate), nor logic sensors (kinds 2,
-     * 3: their time on follows their inputs', engine/assembly/sensors.c) */
+     * 3, 4: their time on follows their inputs', engine/assembly/sensors.c);
+     * a sensor found in the run that releases a held body (sens_hold) has
+     * its release root in its first slot once its time on is known */
     int nsens;
     int *sens_id;        /* [nsens] sens_ID */
-    int *sens_kind;      /* [nsens] rc_case_sensor_kind (0 TIME, 1 DIST, 2 AND, 3 OR) */
-    int *sens_in;        /* [2*nsens] AND, OR: the input sensors' indices (-1: none) */
+    int *sens_kind;      /* [nsens] rc_case_sensor_kind (0 TIME, 1 DIST, 2 AND, 3 OR, 4 NOT) */
+    int *sens_in;        /* [2*nsens] AND, OR: the input sensors' indices; NOT: its input (-1: none) */
+    int *sens_hold;      /* [nsens] 1: the sensor's time on is found in the run and
+                            releases a held body (/RBODY sens_ID; imposed.h tsens) */
     double *sens_tdelay; /* [nsens] [s] */
     int *sens_body;      /* [2*nsens] the points' bodies (-1: fixed in space) */
     double *sens_p;      /* [6*nsens] the points in their bodies' frames [m] */

@@ -559,8 +559,22 @@ TL('sensor_or_missing_line', '/SENSOR/OR/8', 'expected 2 data lines',
    before_end(['/SENSOR/OR/8', 'either', '                   0'], expect=0))
 TL('sensor_and_input_zero', SLOG, 'field sens_ID1',
    before_end([SLOG, 'both', '                   0', '         0         4'] + SENS, expect=3))
-TL('sensor_not', '/SENSOR/NOT/8', 'not supported yet',
-   before_end(SENS + ['/SENSOR/NOT/8', 'not', '                   0', '         4'], expect=3))
+SNOT = '/SENSOR/NOT/8'
+TL('sensor_not_self', SNOT, 'field sens_ID1', before_end([SNOT, 'not', '                   0', '         8'], expect=3))
+TL('sensor_not_input_missing', SNOT, 'field sens_ID1',
+   before_end([SNOT, 'not', '                   0', '         9'], expect=3))
+TL('sensor_not_input_zero', SNOT, 'field sens_ID1', before_end([SNOT, 'not', '                   0', '         0'], expect=3))
+TL('sensor_not_missing_line', SNOT, 'expected 2 data lines', before_end([SNOT, 'not', '                   0'], expect=0))
+TL('sensor_not_cycle', SNOT, 'form a cycle',
+   before_end([SNOT, 'a', '                   0', '         7', '/SENSOR/NOT/7', 'b', '                   0', '         8'],
+              expect=3))
+TL('rbody_sensor_not', '/RBODY/1', 'turns off again',
+   lambda lines: at('/RBODY/1', 2, 11, 20, '8')(before_end(SENS + [SNOT, 'not', '                   0', '         4'])(lines)[0]))
+TL('type6_sensor_not_disjoint', T6, 'two separate time intervals',
+   lambda lines: at(T6, 2, 21, 30, '7')(before_end(SENS + [SNOT, 'not', '                   0', '         4',
+                                                          '/SENSOR/TIME/6', 'later', '                 0.5',
+                                                          '/SENSOR/OR/7', 'either', '                   0',
+                                                          '         8         6'])(lines)[0]))
 
 
 

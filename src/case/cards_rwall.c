@@ -7,7 +7,7 @@
  * (node_ID) has its Mass and initial velocity on line 3. The card is read
  * whole, then what ricochet cannot honour yet is refused with "not
  * supported yet" at the line of the field: a tied wall (Slide 1),
- * friction filtering (ifq), the parallelogram. The model
+ * friction filtering (ifq), a moving parallelogram. The model
  * compiler (model/rwall.c) turns a wall into contacts of the bodies that
  * own its nodes.
  */
@@ -117,10 +117,11 @@ rc_status rc_card_rwall(rc_reader *rd, const rc_block *b)
                                 "expected a corner M2 off the line through M and M1 (the parallelogram's sides are "
                                 "M M1 and M M2), got (%.9g, %.9g, %.9g)",
                                 w->m2[0], w->m2[1], w->m2[2]);
-        /* a bounded wall: ricochet has no bounded plane surface yet */
-        return rc_case_fail(rd, &b->hdr->loc, b->name, NULL,
-                            "/RWALL/PARAL: not supported yet (a bounded parallelogram wall; /RWALL/PLANE is the "
-                            "unbounded plane through M, M1 as normal)");
+        /* a moving parallelogram: its corners would follow the node */
+        if (w->node_id != 0)
+            return rc_case_fail(rd, &b->lines[1].loc, b->name, "node_ID",
+                                "expected 0 (a fixed wall), got %d: a moving /RWALL/PARAL is not supported yet",
+                                w->node_id);
     }
     return rc_note_id(rd, RC_IDK_RWALL, w->id, &w->loc, b->hdr->text);
 }

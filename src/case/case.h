@@ -97,6 +97,10 @@ typedef struct rc_case_surf {
     rc_case_surf_kind kind;
     /* PLANE: point M and point M1; outward normal from M towards M1.     */
     double m[3], m1[3];       /* [m] */
+    /* PLANE of an /RWALL/PARAL (model/rwall.c): bounded to the
+     * parallelogram of corner M and sides e1, e2 (0: unbounded) */
+    int bounded;
+    double e1[3], e2[3];      /* [m] */
     /* ELLIPS: centre, semi-axes, degree n.                              */
     int skew_id;              /* 0 only */
     int degree;               /* n, default 2 */

@@ -430,6 +430,15 @@ static rc_status compile_surfaces(const rc_case *c, rc_model *m, const rc_rwall_
                 dn += (cs->m[k] - org[k]) * m->surf_n[3 * s + k];
             }
             for (int k = 0; k < 3; k++) m->surf_p[3 * s + k] = dn * m->surf_n[3 * s + k];
+            if (cs->bounded) { /* a parallelogram (/RWALL/PARAL) */
+                double *e = m->surf_ext + RC_SURF_NEXT * s;
+                e[0] = 1.0;
+                for (int k = 0; k < 3; k++) {
+                    e[1 + k] = cs->m[k] - org[k];
+                    e[4 + k] = cs->e1[k];
+                    e[7 + k] = cs->e2[k];
+                }
+            }
         } else {
             m->surf_kind[s] = RC_SURF_SPHERE;
             m->surf_r[s] = cs->abc[0];

@@ -70,7 +70,10 @@ typedef enum { RC_SURF_PLANE = 1, RC_SURF_SPHERE = 2, RC_SURF_CYL = 3, RC_SURF_B
  *             1 rounded), [2] contact point (0 mid-length, 1 deepest);
  *             its axis (unit, body frame) is surf_n, its radius surf_r;
  *   box:      [0..2] half-sizes along its axes [m], [3..11] the three unit
- *             axes u, v, w in the body frame (row k at 3 + 3 k). */
+ *             axes u, v, w in the body frame (row k at 3 + 3 k);
+ *   plane:    [0] 1 when bounded to a parallelogram (/RWALL/PARAL), then
+ *             [1..3] its corner M (body frame), [4..6] and [7..9] its sides
+ *             e1 = M1 - M, e2 = M2 - M [m]; 0: unbounded. */
 #define RC_SURF_NEXT 12
 
 /* Geometry pair of an interface (surface kinds, ordered). */

@@ -448,8 +448,13 @@ TL('rwall_missing_line', RW, 'expected 4 data lines', before_end(RWALL(m1=None),
 TL('rwall_sphere_diameter', '/RWALL/SPHER/9', 'field Diameter', before_end(RWALL('SPHER', m1=None), expect=3))
 TL('rwall_cyl_box', '/RWALL/CYL/9', 'field grnd_ID1',
    before_end(RWALL('CYL', l1=(0, 0, 3, 0), l2='%20s%20s%20s' % ('0', '0', '1'), m1=('1', '0', '-10')), expect=2))
-TL('rwall_paral', '/RWALL/PARAL/9', 'not supported yet',
-   before_end(RWALL('PARAL', extra=['%20s%20s%20s' % ('1', '0', '-10')]), expect=0))
+TL('rwall_paral_moving', '/RWALL/PARAL/9', 'field node_ID',
+   before_end(RWALL('PARAL', l1=(4, 0, 1, 0), m=('1', '0', '0'), extra=['%20s%20s%20s' % ('1', '0', '-10')]), expect=2))
+TL('rwall_paral_collinear', '/RWALL/PARAL/9', 'field XM2 YM2 ZM2',
+   before_end(RWALL('PARAL', extra=['%20s%20s%20s' % ('0', '0', '-8')]), expect=6))
+TL('rwall_paral_box', '/RWALL/PARAL/9', 'field grnd_ID1',
+   before_end(RWALL('PARAL', l1=(0, 0, 3, 0), m1=('1', '0', '-10'), extra=['%20s%20s%20s' % ('0', '1', '-10')]),
+              expect=2))
 TL('rwall_lagmul', '/RWALL/LAGMUL/9', 'not supported yet', before_end(RWALL(head='/RWALL/LAGMUL/9'), expect=0))
 TL('rwall_duplicate', RW, 'duplicate id 9', before_end(RWALL() + RWALL(), expect=6))
 

@@ -1,14 +1,20 @@
 /*
- * Time sensors (/SENSOR/TIME) acting on interfaces and bodies (sensor.h,
- * docs/theory.md "Sensors").
+ * Sensors acting on interfaces and bodies (sensor.h, docs/theory.md
+ * "Sensors").
  *
  * A body with a sensor is held at rest until the sensor's time: ricochet
  * has no free nodes for Radioss's inactive rigid body, so the body waits
  * in its initial pose, as a fixed body would, with the supports taking the
  * loads; at the sensor's time the holds end (an imposed-velocity
- * breakpoint, the integration restarted there) and the body moves freely
- * from rest. The holds are /IMPVEL entries appended to a copy of the case,
- * so that imposed.c compiles them as any other.
+ * breakpoint, the integration restarted there; for a sensor found in the
+ * run, its release event: engine/events) and the body moves freely from
+ * rest. The holds are /IMPVEL entries appended to a copy of the case, so
+ * that imposed.c compiles them as any other.
+ *
+ * A sensor known when compiling is on over one interval [on, off)
+ * (static_on): a /SENSOR/NOT is the one that turns off. An interface
+ * takes the interval as its Tstart and Tstop; a body only a sensor on for
+ * good once on.
  */
 #include <math.h>
 #include <stdio.h>

@@ -8,10 +8,13 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "base/error.h"
 #include "case/case.h"
+#include "engine/assembly/assembly.h"
+#include "engine/events/events.h"
 #include "harness.h"
 #include "model/model.h"
 #include "model/rwall.h"
@@ -299,6 +302,65 @@ static void test_rwall_errors(void)
     TU_EXPECT_TEXT_ERROR(pp, "rwpp.rad", "rwpp.rad:18: card /RWALL/PLANE/8 with /SURF/PLANE/11");
 }
 
+/* /RWALL/PARAL: read, compiled into a plane bounded to the parallelogram
+ * (surf_ext: corner, sides; normal e1 x e2), against the ball's sphere;
+ * the Jacobian of the contact beyond a side and beyond a corner (the
+ * nearest point of the sides, model/rwall.c, kernels.inc geom_sph_paral)
+ * against finite differences. */
+static void test_rwall_paral(void)
+{
+    /* the ball at (0, 0, 0.15); the parallelogram z = 0.1, corner
+     * (-0.2, -0.1), sides 0.3 along x and (0.1, 0.3) (a skewed one) */
+    static const char w[] = "/RWALL/PARAL/3\nplate\n         0         0         7         0\n\n"
+                            "                -0.2                -0.1                 0.1\n"
+                            "                 0.1                -0.1                 0.1\n"
+                            "                -0.1                 0.2                 0.1\n"
+                            "/GRAV/1\ngravity\n         0         Z         0         0         0                           1.0               -9.81\n";
+    rc_case *c = load_text("rwparal.rad", ball_deck(2022, "m", w));
+    ENSURE(c && c->nrwall == 1 && c->rwall[0].kind == RC_RWALL_PARAL);
+    if (c) ENSURE(c->rwall[0].m2[0] == -0.1 && c->rwall[0].m2[1] == 0.2 && c->rwall[0].m2[2] == 0.1);
+    rc_case_free(c);
+    rc_model *m = TU_COMPILE_OK(ball_deck(2022, "m", w), "rwparal.rad");
+    if (!m) return;
+    ENSURE(m->ninter == 1 && m->inter_pair[0] == RC_PAIR_SPHERE_PLANE);
+    if (m->ninter == 1) {
+        ENSURE(strcmp(m->inter_name[0], "/RWALL/PARAL/3 with /SURF/ELLIPS/2") == 0);
+        const int s = m->inter_sb[0];
+        const double *e = m->surf_ext + RC_SURF_NEXT * s, *n = m->surf_n + 3 * s;
+        ENSURE(e[0] == 1.0);
+        ENSURE(fabs(e[4] - 0.3) < 1e-15 && e[5] == 0 && e[6] == 0);
+        ENSURE(fabs(e[7] - 0.1) < 1e-15 && fabs(e[8] - 0.3) < 1e-15 && e[9] == 0);
+        ENSURE(n[0] == 0 && n[1] == 0 && n[2] == 1.0); /* e1 x e2 */
+    }
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    rc_initial_state(m, y);
+    /* beyond the side from (0.1, -0.1) to (0.2, 0.2) (its nearest point
+     * inside the side), beyond the corner (0.2, 0.2), and over the
+     * parallelogram; each within R of it, moving and spinning */
+    static const double pos[3][3] = {{0.16, 0.0, 0.12}, {0.22, 0.22, 0.13}, {0.0, 0.0, 0.14}};
+    int bad = 0, outside = 0;
+    double maxerr = 0;
+    for (int k = 0; k < 3; k++) {
+        double *yb = y + m->body_yadr[0];
+        for (int j = 0; j < 3; j++) yb[j] = pos[k][j] - m->origin[j];
+        yb[7] = 0.3, yb[8] = 0.2, yb[9] = -0.1, yb[10] = 1.0, yb[11] = -2.0, yb[12] = 0.5;
+        rc_modes_init(m, d, 0.0, y);
+        ENSURE(d->inter_mode[0] != RC_MODE_OPEN && d->inter_mode[0] != RC_MODE_INACTIVE); /* in contact */
+        int b1 = 0, o1 = 0;
+        const double e1 = tu_jac_fd_error(m, d, 0.0, y, 1, &b1, &o1);
+        printf("    position %d: mode %d, |J - FD| %.2e, %d bad, %d outside\n", k, d->inter_mode[0], e1, b1, o1);
+        maxerr = fmax(maxerr, e1);
+        bad += b1;
+        outside += o1;
+    }
+    printf("    parallelogram wall: max scaled |J - FD| %.2e, %d bad, %d outside the pattern\n", maxerr, bad, outside);
+    ENSURE(bad == 0 && outside == 0 && maxerr < 1e-6);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 void suite_rwall(void);
 void suite_rwall(void)
 {
@@ -307,4 +369,5 @@ void suite_rwall(void)
     RUN_TEST(test_rwall_nodes);
     RUN_TEST(test_rwall_moving);
     RUN_TEST(test_rwall_errors);
+    RUN_TEST(test_rwall_paral);
 }

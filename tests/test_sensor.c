@@ -306,6 +306,131 @@ static void test_sensor_logic(void)
     rc_model_free(m);
 }
 
+/* /SENSOR/NOT: on from its Tdelay while its input is off. Over time
+ * sensors its interval is folded into an interface's Tstart and Tstop; a
+ * body cannot follow a sensor that turns off again; a NOT of a distance
+ * sensor cannot be followed by an interface; an OR of disjoint intervals
+ * is refused; a NOT of itself, a cycle of NOTs, a missing input. */
+static void test_sensor_not(void)
+{
+    /* sensor 1 on at 0.4 s, 2 at 0.3 s; the interface (Tstart 0.05, Tstop
+     * 0.7) names sensor 7 */
+    const char *base = sensor_deck(2022, 0, 7, 0.4, 0.3);
+    rc_case *c = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    ENSURE(rc_case_load(tu_tmp_write("not0.rad", edit_deck(base, "/SENSOR/NOT/7\nnot 1\n0.1\n         1\n", NULL, NULL)),
+                        &c, &e) == RC_OK);
+    if (!c) fprintf(stderr, "  %s\n", e.msg);
+    if (c) {
+        const rc_case_sensor *s = &c->sensor[c->nsensor - 1];
+        ENSURE(s->id == 7 && s->kind == RC_SENS_NOT && s->in[0] == 1 && s->in[1] == 1);
+        ENSURE_NEAR(s->tdelay, 0.1, 1e-15, 0);
+    }
+    rc_case_free(c);
+    static const struct {
+        const char *cards;
+        double tstart, tstop;
+    } ok[] = {
+        /* NOT 1 (Tdelay 0.1): on over [0.1, 0.4) */
+        {"/SENSOR/NOT/7\nnot 1\n0.1\n         1\n", 0.1, 0.4},
+        /* OR of NOT 1 and 2: [0, 0.4) and [0.3, inf) overlap: on for good */
+        {"/SENSOR/NOT/8\nnot 1\n\n         1\n/SENSOR/OR/7\neither\n\n         8         2\n", 0.05, 0.7},
+        /* AND of NOT 1 and 2: [0.3, 0.4) */
+        {"/SENSOR/NOT/8\nnot 1\n\n         1\n/SENSOR/AND/7\nboth\n\n         8         2\n", 0.3, 0.4},
+        /* NOT of (NOT 1): on once NOT 1 is off, for good: [0.4, inf) */
+        {"/SENSOR/NOT/8\nnot 1\n\n         1\n/SENSOR/NOT/9\nnot 8\n\n         8\n"
+         "/SENSOR/OR/7\nsame\n\n         9         9\n", 0.4, 0.7},
+    };
+    for (size_t k = 0; k < sizeof ok / sizeof ok[0]; k++) {
+        rc_model *m = TU_COMPILE_OK(edit_deck(base, ok[k].cards, NULL, NULL), "not1.rad");
+        if (m) {
+            ENSURE(m->ninter == 1 && m->inter_sens[0] == -1);
+            ENSURE_NEAR(m->inter_tstart[0], ok[k].tstart, 1e-15, 0);
+            ENSURE_NEAR(m->inter_tstop[0], ok[k].tstop, 1e-15, 0);
+        }
+        rc_model_free(m);
+    }
+    /* disjoint: NOT 2 [0, 0.3) or 1 [0.4, inf) */
+    TU_EXPECT_TEXT_ERROR(edit_deck(base, "/SENSOR/NOT/8\nnot 2\n\n         2\n/SENSOR/OR/7\neither\n\n         8         1\n",
+                                   NULL, NULL),
+                         "not2.rad", "/INTER/TYPE6/1", "field Isensor", "two separate time intervals");
+    /* empty: NOT 2 with Tdelay 0.5 after 2's time on */
+    TU_EXPECT_TEXT_ERROR(edit_deck(base, "/SENSOR/NOT/7\nlate\n0.5\n         2\n", NULL, NULL), "not3.rad",
+                         "field Isensor", "never act");
+    /* a body released by a NOT: it would be deactivated again */
+    TU_EXPECT_TEXT_ERROR(edit_deck(sensor_deck(2022, 7, 0, 0.4, 0.3), "/SENSOR/NOT/7\nnot 1\n\n         1\n", NULL, NULL),
+                         "not4.rad", "/RBODY/1", "field sens_ID", "turns off again");
+    /* the reader: itself, a missing input, a cycle */
+    TU_EXPECT_TEXT_ERROR(edit_deck(base, "/SENSOR/NOT/7\nself\n\n         7\n", NULL, NULL), "not5.rad", "/SENSOR/NOT/7",
+                         "field sens_ID1", "the sensor itself");
+    TU_EXPECT_TEXT_ERROR(edit_deck(base, "/SENSOR/NOT/7\nmissing\n\n        99\n", NULL, NULL), "not6.rad",
+                         "/SENSOR/NOT/7", "field sens_ID1", "no such sensor");
+    TU_EXPECT_TEXT_ERROR(edit_deck(base, "/SENSOR/NOT/7\na\n\n         8\n/SENSOR/NOT/8\nb\n\n         7\n", NULL, NULL),
+                         "not7.rad", "field sens_ID1", "form a cycle");
+    TU_EXPECT_TEXT_ERROR(edit_deck(base, "/SENSOR/NOT/7\nno input\n\n", NULL, NULL), "not8.rad", "/SENSOR/NOT/7",
+                         "expected 2 data lines");
+    /* a NOT of a distance sensor: turns off at a time found in the run */
+    TU_EXPECT_TEXT_ERROR(edit_deck(dist_deck(3, 0, 0.2, 0.0, ""), "/SENSOR/NOT/7\nnot 5\n\n         5\n",
+                                   "0         0         5\n", "0         0         7\n"),
+                         "not9.rad", "/INTER/POWER/1", "field Isensor", "/SENSOR/NOT");
+}
+
+/* A body released by a distance sensor (and by an AND of one): held by
+ * imposed zero velocities ended by the sensor (imposed.h tsens) until its
+ * time on, found in the run: the event impvel_stop /RBODY/id at the
+ * trigger plus Tdelay, free fall after. */
+static void test_sensor_release(void)
+{
+    static const char fmt[] =
+        "/BEGIN\nrelease\n      2022         0\n\n\n"
+        "/NODE\n1,0,0,1\n2,1,0,1\n3,0,0,1\n"
+        "/RBODY/1\nA\n         1                                                 1         1\n0.001,0.001,0.001\n0,0,0\n"
+        "/RBODY/2\nB\n         2%10d                                       2         2\n0.002,0.002,0.002\n0,0,0\n"
+        "/GRNOD/NODE/1\nA\n1\n/GRNOD/NODE/2\nB\n2\n"
+        "/SENSOR/DIST/5\nsensor\n%20.12g\n         1         3                  0.                 0.2\n"
+        "/SENSOR/TIME/6\nt\n0.3\n/SENSOR/AND/7\nboth\n0.05\n         5         6\n"
+        "/GRAV/1\ng\n         0         Z         0         0         0                             1               -9.81\n"
+        "/RUN\n0.5,0.01\n/END\n";
+    const double g = 9.81, ts = sqrt(2 * 0.2 / g);
+    const struct {
+        int sens;
+        double td, trel;
+    } cs[] = {{5, 0.1, ts + 0.1}, {5, 0.0, ts}, {7, 0.0, 0.35}};
+    for (int k = 0; k < 3; k++) {
+        char text[4096];
+        snprintf(text, sizeof text, fmt, cs[k].sens, cs[k].td);
+        rc_model *m = TU_COMPILE_OK(text, "release1.rad");
+        if (!m) continue;
+        const int si = cs[k].sens == 5 ? 0 : 2;
+        ENSURE(m->nsens == 3 && m->sens_hold[si] == 1 && m->sens_hold[1] == 0);
+        ENSURE(m->imp != NULL);
+        if (m->imp) {
+            ENSURE(m->imp->nt == 3 && m->imp->nr == 1);
+            for (int j = 0; j < m->imp->nt; j++)
+                ENSURE(m->imp->tbody[j] == 1 && m->imp->tsens[j] == si && isinf(m->imp->ttstop[j]));
+            if (m->imp->nr == 1) ENSURE(m->imp->rsens[0] == si && isinf(m->imp->rtstop[0]));
+        }
+        static tu_evlog ev;
+        memset(&ev, 0, sizeof ev);
+        rc_error e;
+        rc_error_clear(&e);
+        rc_run_options o = {.on_event = tu_evlog_event, .user = &ev};
+        ENSURE(rc_run(m, &o, NULL, &e) == RC_OK);
+        double t = -1;
+        ENSURE(ev_first(&ev, "sensor_trigger", &t, NULL) == 1);
+        ENSURE_NEAR(t, ts, 1e-10, 0);
+        ENSURE(ev_first(&ev, "impvel_stop", &t, NULL) == 1);
+        ENSURE_NEAR(t, cs[k].trel, 1e-10, 0);
+        rc_model_free(m);
+    }
+    /* static analysis: refused */
+    char text[4096];
+    snprintf(text, sizeof text, fmt, 5, 0.0);
+    TU_EXPECT_TEXT_ERROR(edit_deck(text, "/SOLVER\n3\n", NULL, NULL), "release2.rad", "/RBODY/2", "field sens_ID",
+                         "static analysis");
+}
+
 void suite_sensor(void);
 void suite_sensor(void)
 {
@@ -314,4 +439,6 @@ void suite_sensor(void)
     RUN_TEST(test_sensor_dist_compile);
     RUN_TEST(test_sensor_dist_run);
     RUN_TEST(test_sensor_logic);
+    RUN_TEST(test_sensor_not);
+    RUN_TEST(test_sensor_release);
 }

@@ -53,9 +53,10 @@ class Deck:
         rows = [ids[k:k + 10] for k in range(0, len(ids), 10)]
         self.add(f"/GRNOD/NODE/{gid}", *["".join(i10(v) for v in r) for r in rows], title=title)
 
-    def rbody(self, bid, node, mass, J, Joff=(0.0, 0.0, 0.0), grnod=None, title="body"):
+    def rbody(self, bid, node, mass, J, Joff=(0.0, 0.0, 0.0), grnod=None, title="body", sens=None):
+        """sens: the /SENSOR that releases the body (sens_ID; held at rest until it is on)."""
         self.add(f"/RBODY/{bid}",
-                 line(("i", node), ("i", None), ("i", None), ("i", None), ("r", mass), ("i", grnod)),
+                 line(("i", node), ("i", sens), ("i", None), ("i", None), ("r", mass), ("i", grnod)),
                  line(("r", J[0]), ("r", J[1]), ("r", J[2])),
                  line(("r", Joff[0]), ("r", Joff[1]), ("r", Joff[2])), title=title)
 
@@ -101,6 +102,10 @@ class Deck:
     def sensor_logic(self, kind, sid, s1, s2, tdelay=None, title="logic sensor"):
         """/SENSOR/AND or /SENSOR/OR (kind): on Tdelay [s] after both (either) of sensors s1, s2 are on."""
         self.add(f"/SENSOR/{kind}/{sid}", line(("r", tdelay)), line(("i", s1), ("i", s2)), title=title)
+
+    def sensor_not(self, sid, s1, tdelay=None, title="NOT sensor"):
+        """/SENSOR/NOT: on from Tdelay [s] while sensor s1 is off."""
+        self.add(f"/SENSOR/NOT/{sid}", line(("r", tdelay)), line(("i", s1)), title=title)
 
     def inivel(self, iid, v, grnod, rot=False):
         self.add(f"/INIVEL/{'ROT' if rot else 'TRA'}/{iid}",

@@ -7,7 +7,7 @@
  * (node_ID) has its Mass and initial velocity on line 3. The card is read
  * whole, then what ricochet cannot honour yet is refused with "not
  * supported yet" at the line of the field: a tied wall (Slide 1),
- * friction filtering (ifq), the parallelogram. The model
+ * friction filtering (ifq), a moving parallelogram. The model
  * compiler (model/rwall.c) turns a wall into contacts of the bodies that
  * own its nodes.
  */
@@ -117,10 +117,11 @@ rc_status rc_card_rwall(rc_reader *rd, const rc_block *b)
                                 "expected a corner M2 off the line through M and M1 (the parallelogram's sides are "
                                 "M M1 and M M2), got (%.9g, %.9g, %.9g)",
                                 w->m2[0], w->m2[1], w->m2[2]);
-        /* a bounded wall: ricochet has no bounded plane surface yet */
-        return rc_case_fail(rd, &b->hdr->loc, b->name, NULL,
-                            "/RWALL/PARAL: not supported yet (a bounded parallelogram wall; /RWALL/PLANE is the "
-                            "unbounded plane through M, M1 as normal)");
+        /* a moving parallelogram: its corners would follow the node */
+        if (w->node_id != 0)
+            return rc_case_fail(rd, &b->lines[1].loc, b->name, "node_ID",
+                                "expected 0 (a fixed wall), got %d: a moving /RWALL/PARAL is not supported yet",
+                                w->node_id);
     }
     return rc_note_id(rd, RC_IDK_RWALL, w->id, &w->loc, b->hdr->text);
 }
@@ -129,14 +130,15 @@ rc_status rc_card_rwall(rc_reader *rd, const rc_block *b)
  * t = Tdelay). /SENSOR/DIST/sens_ID[/unit_ID]: title; Tdelay; node_ID1
  * node_ID2 Dmin Dmax [Tmin Dflag from 2022: 0 only] (the sensor is on
  * Tdelay after the nodes' distance leaves [Dmin, Dmax]). /SENSOR/AND and
- * /SENSOR/OR: title; Tdelay; sens_ID1 sens_ID2. The /RBODY and
+ * /SENSOR/OR: title; Tdelay; sens_ID1 sens_ID2. /SENSOR/NOT: title;
+ * Tdelay; sens_ID1 (on from Tdelay while sens_ID1 is off). The /RBODY and
  * interfaces naming a sensor: the compiler (model/sensor.c). */
 rc_status rc_card_sensor_time(rc_reader *rd, const rc_block *b)
 {
     rc_case *c = rd->c;
     const int dist = strcmp(b->kw[1], "DIST") == 0, is_and = strcmp(b->kw[1], "AND") == 0,
-              is_or = strcmp(b->kw[1], "OR") == 0;
-    const int two = dist || is_and || is_or; /* a second line */
+              is_or = strcmp(b->kw[1], "OR") == 0, is_not = strcmp(b->kw[1], "NOT") == 0;
+    const int two = dist || is_and || is_or || is_not; /* a second line */
     int nd;
     rc_status st;
     char usage[40];
@@ -145,10 +147,13 @@ rc_status rc_card_sensor_time(rc_reader *rd, const rc_block *b)
     RC_GROW(rd, c->sensor, rd->capsensor, c->nsensor);
     rc_case_sensor *s = &c->sensor[c->nsensor++];
     s->id = b->id;
-    s->kind = dist ? RC_SENS_DIST : is_and ? RC_SENS_AND : is_or ? RC_SENS_OR : RC_SENS_TIME;
+    s->kind = dist ? RC_SENS_DIST : is_and ? RC_SENS_AND : is_or ? RC_SENS_OR : is_not ? RC_SENS_NOT : RC_SENS_TIME;
     s->loc = s->line_loc = s->line2_loc = b->hdr->loc;
     if ((st = rc_card_lines(rd, b, s->title, two ? 2 : 1, two ? 2 : 1,
-                            dist ? "Tdelay, node_ID1 node_ID2 Dmin Dmax" : two ? "Tdelay, sens_ID1 sens_ID2" : "Tdelay",
+                            dist     ? "Tdelay, node_ID1 node_ID2 Dmin Dmax"
+                            : is_not ? "Tdelay, sens_ID1"
+                            : two    ? "Tdelay, sens_ID1 sens_ID2"
+                                     : "Tdelay",
                             &nd)))
         return st;
     s->line_loc = b->lines[1].loc;
@@ -158,6 +163,15 @@ rc_status rc_card_sensor_time(rc_reader *rd, const rc_block *b)
         s->line2_loc = b->lines[2].loc;
         rc_field g[] = {RC_F_INT("sens_ID1", &s->in[0], 0, RC_FF_POS), RC_F_INT("sens_ID2", &s->in[1], 0, RC_FF_POS)};
         if ((st = rc_parse_line(rd, b, &b->lines[2], g, RC_NF(g)))) return st;
+    }
+    if (is_not) {
+        s->line2_loc = b->lines[2].loc;
+        rc_field g[] = {RC_F_INT("sens_ID1", &s->in[0], 0, RC_FF_POS)};
+        if ((st = rc_parse_line(rd, b, &b->lines[2], g, RC_NF(g)))) return st;
+        if (s->in[0] == s->id)
+            return rc_case_fail(rd, &b->lines[2].loc, b->name, "sens_ID1",
+                                "expected another sensor, got %d (the sensor itself: on while it is off)", s->in[0]);
+        s->in[1] = s->in[0]; /* one input: the checks of the two-input sensors see it twice */
     }
     if (dist) {
         s->line2_loc = b->lines[2].loc;

@@ -97,6 +97,10 @@ typedef struct rc_case_surf {
     rc_case_surf_kind kind;
     /* PLANE: point M and point M1; outward normal from M towards M1.     */
     double m[3], m1[3];       /* [m] */
+    /* PLANE of an /RWALL/PARAL (model/rwall.c): bounded to the
+     * parallelogram of corner M and sides e1, e2 (0: unbounded) */
+    int bounded;
+    double e1[3], e2[3];      /* [m] */
     /* ELLIPS: centre, semi-axes, degree n.                              */
     int skew_id;              /* 0 only */
     int degree;               /* n, default 2 */
@@ -210,8 +214,10 @@ typedef struct rc_case_type24 {
  * sensor is on from t = Tdelay; a DIST sensor triggers when the distance of
  * its two nodes rises above Dmax or falls below Dmin and is on Tdelay
  * later (for good: latched). /SENSOR/AND and /SENSOR/OR: on Tdelay after
- * both (either) of two other sensors are on. */
-typedef enum { RC_SENS_TIME = 0, RC_SENS_DIST = 1, RC_SENS_AND = 2, RC_SENS_OR = 3 } rc_case_sensor_kind;
+ * both (either) of two other sensors are on. /SENSOR/NOT: on from Tdelay
+ * while its input is off (off for good once the input is on); in[1] repeats
+ * in[0]. */
+typedef enum { RC_SENS_TIME = 0, RC_SENS_DIST = 1, RC_SENS_AND = 2, RC_SENS_OR = 3, RC_SENS_NOT = 4 } rc_case_sensor_kind;
 
 typedef struct rc_case_sensor {
     int id;
@@ -220,7 +226,7 @@ typedef struct rc_case_sensor {
     double tdelay;        /* [s], >= 0 */
     int node[2];          /* DIST: node_ID1, node_ID2 */
     double dmin, dmax;    /* DIST: [m], 0: no such bound */
-    int in[2];            /* AND, OR: sens_ID1, sens_ID2 */
+    int in[2];            /* AND, OR: sens_ID1, sens_ID2; NOT: sens_ID1 twice */
     rc_loc loc;
     rc_loc line_loc;      /* the (first) data line */
     rc_loc line2_loc;     /* DIST: the nodes' line */

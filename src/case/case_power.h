@@ -49,6 +49,9 @@ typedef struct rc_case_impvel {
     double ascale;   /* [s] */
     double fscale;   /* [m/s] or [rad/s] */
     double tstart, tstop; /* [s] */
+    int hold_sens;   /* a hold of model/sensor.c ended by a sensor found in the
+                        run: 1 + the sensor's index (Tstop is then INFINITY);
+                        0: none */
     rc_loc loc;
     rc_loc line_loc[2];
 } rc_case_impvel;

@@ -430,6 +430,15 @@ static rc_status compile_surfaces(const rc_case *c, rc_model *m, const rc_rwall_
                 dn += (cs->m[k] - org[k]) * m->surf_n[3 * s + k];
             }
             for (int k = 0; k < 3; k++) m->surf_p[3 * s + k] = dn * m->surf_n[3 * s + k];
+            if (cs->bounded) { /* a parallelogram (/RWALL/PARAL) */
+                double *e = m->surf_ext + RC_SURF_NEXT * s;
+                e[0] = 1.0;
+                for (int k = 0; k < 3; k++) {
+                    e[1 + k] = cs->m[k] - org[k];
+                    e[4 + k] = cs->e1[k];
+                    e[7 + k] = cs->e2[k];
+                }
+            }
         } else {
             m->surf_kind[s] = RC_SURF_SPHERE;
             m->surf_r[s] = cs->abc[0];
@@ -531,7 +540,7 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     m->inter_tstop[i] = t6->tstop;
     /* a sensor turns the interface on at its time (model/sensor.c) */
     rc_status sst = rc_sensor_tstart(c, t6->sensor_id, rc_loc_or(t6->line_loc[0], t6->loc), card, &m->inter_tstart[i],
-                                     m->inter_tstop[i], &m->inter_sens[i], err);
+                                     &m->inter_tstop[i], &m->inter_sens[i], err);
     if (sst) return sst;
     m->inter_visc[i] = t6->visc;
     m->inter_oneway[i] = t6->oneway && m->inter_pair[i] == RC_PAIR_SEG_SEG && s1 == s1_in;
@@ -1026,7 +1035,7 @@ void rc_model_free(rc_model *m)
                       m->body_J, m->body_Jinv, m->body_y0, m->body_grav, m->body_dofmask, m->surf_id, m->surf_kind,
                       m->surf_body, m->surf_p, m->surf_n, m->surf_r, m->inter_id, m->inter_pair,
                       m->inter_sa, m->inter_sb, m->inter_ba, m->inter_bb, m->inter_gap,
-                      m->inter_tstart, m->inter_tstop, m->inter_sens, m->sens_id, m->sens_kind, m->sens_in, m->sens_tdelay,
+                      m->inter_tstart, m->inter_tstop, m->inter_sens, m->sens_id, m->sens_kind, m->sens_in, m->sens_hold, m->sens_tdelay,
                       m->sens_body, m->sens_p, m->sens_d, m->inter_visc, m->inter_etarget, m->inter_vimp, m->inter_fscalev,
                       m->inter_ascalex, m->inter_fscaleld, m->inter_ascalef, m->inter_ascalev,
                       m->inter_fct_ld, m->inter_fct_dv, m->inter_fct_df, m->inter_eadr,

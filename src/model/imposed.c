@@ -21,7 +21,7 @@
 void rc_imp_free(rc_imposed *p)
 {
     if (!p) return;
-    void *a[] = {p->tu, p->tsk, p->sslot, p->tbody, p->tdir, p->trow, p->ttab, p->tascale, p->tfscale, p->ttstop, p->ttstart, p->rbody, p->rtab,
+    void *a[] = {p->tu, p->tsk, p->sslot, p->tbody, p->tdir, p->trow, p->ttab, p->tascale, p->tfscale, p->ttstop, p->ttstart, p->tsens, p->rsens, p->rbody, p->rtab,
                  p->rascale, p->rfscale, p->rtstop, p->rqslot, p->wslot, p->row_imp};
     for (size_t k = 0; k < sizeof a / sizeof a[0]; k++) free(a[k]);
     free(p);
@@ -157,6 +157,8 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
         p->tfscale = calloc((size_t)p->nt + 1, sizeof(double));
         p->ttstop = calloc((size_t)p->nt + 1, sizeof(double));
         p->ttstart = calloc((size_t)p->nt + 1, sizeof(double));
+        p->tsens = calloc((size_t)p->nt + 1, sizeof(int));
+        p->rsens = calloc((size_t)p->nr + 1, sizeof(int));
         p->tu = calloc(3 * (size_t)p->nt + 1, sizeof(double));
         p->tsk = calloc((size_t)p->nt + 1, sizeof(int));
         p->rbody = calloc((size_t)p->nr + 1, sizeof(int));
@@ -165,7 +167,7 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
         p->rfscale = calloc(3 * (size_t)p->nr + 1, sizeof(double));
         p->rtstop = calloc((size_t)p->nr + 1, sizeof(double));
         p->rqslot = calloc(12 * (size_t)p->nr + 1, sizeof(int64_t));
-        if (!p->tbody || !p->tdir || !p->trow || !p->ttab || !p->tascale || !p->tfscale || !p->ttstop || !p->ttstart || !p->tu || !p->tsk || !p->rbody ||
+        if (!p->tbody || !p->tdir || !p->trow || !p->ttab || !p->tascale || !p->tfscale || !p->ttstop || !p->ttstart || !p->tsens || !p->rsens || !p->tu || !p->tsk || !p->rbody ||
             !p->rtab || !p->rascale || !p->rfscale || !p->rtstop || !p->rqslot)
             st = RC_SET(err, RC_ENOMEM, "out of memory");
     }
@@ -177,6 +179,7 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
         if (rot) {
             p->rbody[ir] = b;
             p->rtstop[ir] = -1e300;
+            p->rsens[ir] = -1;
         }
         for (int j = 0; j < 6; j++) {
             const int k = owner[6 * b + j];
@@ -212,12 +215,14 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
                 p->tfscale[it] = fs;
                 p->ttstop[it] = v->tstop;
                 p->ttstart[it] = v->tstart > 0 ? v->tstart : -INFINITY;
+                p->tsens[it] = v->hold_sens - 1;
                 it++;
             } else {
                 p->rtab[3 * ir + j - 3] = tab;
                 p->rascale[3 * ir + j - 3] = v->ascale;
                 p->rfscale[3 * ir + j - 3] = v->fscale;
                 p->rtstop[ir] = v->tstop;
+                p->rsens[ir] = v->hold_sens - 1;
             }
         }
         ir += rot;
@@ -343,9 +348,14 @@ void rc_imp_print(const rc_model *m, FILE *f)
             snprintf(what, sizeof what, "along (%.6g, %.6g, %.6g)", p->tu[3 * k], p->tu[3 * k + 1], p->tu[3 * k + 2]);
         else
             snprintf(what, sizeof what, "%c", ax[p->tdir[k]]);
-        fprintf(f, "  /RBODY/%-6d velocity %s = %.5g f(t / %.5g) (/FUNCT/%d) from %.5g until %.5g s\n",
+        char until[80];
+        if (p->tsens[k] >= 0 && m->sens_id)
+            snprintf(until, sizeof until, "sensor %d turns on (a time found in the run)", m->sens_id[p->tsens[k]]);
+        else
+            snprintf(until, sizeof until, "%.5g s", p->ttstop[k]);
+        fprintf(f, "  /RBODY/%-6d velocity %s = %.5g f(t / %.5g) (/FUNCT/%d) from %.5g until %s\n",
                 m->body_id[p->tbody[k]], what, p->tfscale[k], p->tascale[k], m->table[p->ttab[k]].id,
-                isfinite(p->ttstart[k]) ? p->ttstart[k] : 0.0, p->ttstop[k]);
+                isfinite(p->ttstart[k]) ? p->ttstart[k] : 0.0, until);
     }
     for (int j = 0; j < p->nr && j < 20; j++) {
         fprintf(f, "  /RBODY/%-6d angular velocity (global axes) =", m->body_id[p->rbody[j]]);
@@ -354,7 +364,10 @@ void rc_imp_print(const rc_model *m, FILE *f)
             if (t < 0) fprintf(f, " %c 0", ax[k]);
             else fprintf(f, " %c %.5g f(t / %.5g)", ax[k], p->rfscale[3 * j + k], p->rascale[3 * j + k]);
         }
-        fprintf(f, " until %.5g s\n", p->rtstop[j]);
+        if (p->rsens[j] >= 0 && m->sens_id)
+            fprintf(f, " until sensor %d turns on (a time found in the run)\n", m->sens_id[p->rsens[j]]);
+        else
+            fprintf(f, " until %.5g s\n", p->rtstop[j]);
     }
     if (p->nt > 20 || p->nr > 20)
         fprintf(f, "  ... and %d more (the first 20 of each kind are listed)\n",

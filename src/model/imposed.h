@@ -37,6 +37,13 @@
 
 #include "model/model.h"
 
+/* Is imposed translation k (rotation j) held at t? Within its window and,
+ * for a sensor hold, not yet released (rel: rc_data.sens_rel, set at the
+ * sensor's event). */
+#define RC_IMP_T_ON(p, k, t, rel) \
+    (!((t) > (p)->ttstop[k] || (t) <= (p)->ttstart[k]) && ((p)->tsens[k] < 0 || !(rel)[(p)->tsens[k]]))
+#define RC_IMP_R_ON(p, j, t, rel) (!((t) > (p)->rtstop[j]) && ((p)->rsens[j] < 0 || !(rel)[(p)->rsens[j]]))
+
 typedef struct rc_imposed {
     /* imposed translations */
     int nt;
@@ -52,12 +59,16 @@ typedef struct rc_imposed {
     double *tascale, *tfscale, *ttstop; /* [nt] [s] [m/s] [s]               */
     double *ttstart;     /* [nt] Tstart [s]: imposed for ttstart < t <= ttstop;
                             -INFINITY (Tstart <= 0) from t = 0 on          */
+    int *tsens;          /* [nt] a sensor hold (model/sensor.c) that ends when
+                            sensor tsens is on, a time found in the run
+                            (rc_data.sens_rel; ttstop INFINITY); -1: none    */
     /* bodies with an imposed rotation (all three components) */
     int nr;
     int *rbody;          /* [nr] body index                                 */
     int *rtab;           /* [nr*3] table of the XX, YY, ZZ function, -1: zero */
     double *rascale, *rfscale; /* [nr*3] [s] [rad/s]                        */
     double *rtstop;      /* [nr] [s]                                        */
+    int *rsens;          /* [nr] as tsens                                   */
     int64_t *rqslot;     /* [nr*12] Jacobian slots (omega row k, q column j) */
     /* the work state and its Jacobian row */
     int wadr;            /* state index of W_imp                            */

@@ -70,7 +70,10 @@ typedef enum { RC_SURF_PLANE = 1, RC_SURF_SPHERE = 2, RC_SURF_CYL = 3, RC_SURF_B
  *             1 rounded), [2] contact point (0 mid-length, 1 deepest);
  *             its axis (unit, body frame) is surf_n, its radius surf_r;
  *   box:      [0..2] half-sizes along its axes [m], [3..11] the three unit
- *             axes u, v, w in the body frame (row k at 3 + 3 k). */
+ *             axes u, v, w in the body frame (row k at 3 + 3 k);
+ *   plane:    [0] 1 when bounded to a parallelogram (/RWALL/PARAL), then
+ *             [1..3] its corner M (body frame), [4..6] and [7..9] its sides
+ *             e1 = M1 - M, e2 = M2 - M [m]; 0: unbounded. */
 #define RC_SURF_NEXT 12
 
 /* Geometry pair of an interface (surface kinds, ordered). */
@@ -225,11 +228,15 @@ struct rc_model {
      * rc_root_sens_base: d - Dmax and Dmin - d, rising through 0) until it
      * triggers; time sensors (kind 0) have none (their time is compiled
      * into the Tstart of what they activate), nor logic sensors (kinds 2,
-     * 3: their time on follows their inputs', engine/assembly/sensors.c) */
+     * 3, 4: their time on follows their inputs', engine/assembly/sensors.c);
+     * a sensor found in the run that releases a held body (sens_hold) has
+     * its release root in its first slot once its time on is known */
     int nsens;
     int *sens_id;        /* [nsens] sens_ID */
-    int *sens_kind;      /* [nsens] rc_case_sensor_kind (0 TIME, 1 DIST, 2 AND, 3 OR) */
-    int *sens_in;        /* [2*nsens] AND, OR: the input sensors' indices (-1: none) */
+    int *sens_kind;      /* [nsens] rc_case_sensor_kind (0 TIME, 1 DIST, 2 AND, 3 OR, 4 NOT) */
+    int *sens_in;        /* [2*nsens] AND, OR: the input sensors' indices; NOT: its input (-1: none) */
+    int *sens_hold;      /* [nsens] 1: the sensor's time on is found in the run and
+                            releases a held body (/RBODY sens_ID; imposed.h tsens) */
     double *sens_tdelay; /* [nsens] [s] */
     int *sens_body;      /* [2*nsens] the points' bodies (-1: fixed in space) */
     double *sens_p;      /* [6*nsens] the points in their bodies' frames [m] */

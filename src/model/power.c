@@ -66,7 +66,7 @@ rc_status rc_power_compile(const rc_case *c, rc_model *m, int k, int i, rc_error
     m->inter_tstart[i] = p->tstart;
     m->inter_tstop[i] = p->tstop;
     /* a sensor turns the interface on at its time (model/sensor.c) */
-    rc_status sst = rc_sensor_tstart(c, p->sensor_id, p->line_loc[0], card, &m->inter_tstart[i], m->inter_tstop[i], &m->inter_sens[i], err);
+    rc_status sst = rc_sensor_tstart(c, p->sensor_id, p->line_loc[0], card, &m->inter_tstart[i], &m->inter_tstop[i], &m->inter_sens[i], err);
     if (sst) return sst;
     m->inter_ascalex[i] = m->inter_fscaleld[i] = m->inter_ascalef[i] = m->inter_ascalev[i] = 1.0;
     m->inter_fscalev[i] = m->inter_fscaleul[i] = 1.0;

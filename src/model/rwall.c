@@ -1,12 +1,13 @@
 /*
- * Rigid walls (/RWALL/PLANE, /RWALL/CYL, /RWALL/SPHER) as penalty contacts
+ * Rigid walls (/RWALL/PLANE, /RWALL/CYL, /RWALL/SPHER, /RWALL/PARAL) as penalty contacts
  * (docs/theory.md, "Rigid walls"; docs/case-format.md, /RWALL).
  *
  * Radioss's wall acts on nodes. ricochet's bodies are rigid and touch
  * through their surfaces, so a wall acts on the bodies that own its nodes
  * (grnd_ID1, the nodes within d of the wall at t = 0, minus grnd_ID2): each
  * surface of such a body gets a contact with the wall's fixed surface (a
- * plane; a sphere; a cylinder long enough to be infinite for the scene),
+ * plane; a sphere; a cylinder long enough to be infinite for the scene; a
+ * plane bounded to a parallelogram, against spheres only),
  * with a TYPE6 law built here:
  *   - a linear load curve F = k P, k = m g_ref / (RC_RWALL_PEN_FRAC L),
  *     m the body's mass, L its radius of gyration sqrt(tr J / (2 m)),
@@ -31,6 +32,62 @@
 #include "model/type7.h"
 
 static const char *const rc_rwall_type[] = {"", "PLANE", "CYL", "SPHER", "PARAL"};
+
+/* The sides e1 = M1 - M, e2 = M2 - M of a /RWALL/PARAL and its unit
+ * normal n = e1 x e2 / |e1 x e2| (the reader checked e1 x e2 != 0). */
+static void parallelogram(const rc_case_rwall *rw, double *e1, double *e2, double *n)
+{
+    for (int k = 0; k < 3; k++) {
+        e1[k] = rw->m1[k] - rw->m[k];
+        e2[k] = rw->m2[k] - rw->m[k];
+    }
+    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    const double l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (int k = 0; k < 3; k++) n[k] /= l;
+}
+
+/* Distance of p from segment a + u e, u in [0, 1]. */
+static double seg_distance(const double *a, const double *e, const double *p)
+{
+    double r[3], ee = 0.0, re = 0.0;
+    for (int k = 0; k < 3; k++) {
+        r[k] = p[k] - a[k];
+        ee += e[k] * e[k];
+        re += r[k] * e[k];
+    }
+    const double u = fmin(1.0, fmax(0.0, re / ee));
+    double d2 = 0.0;
+    for (int k = 0; k < 3; k++) d2 += (r[k] - u * e[k]) * (r[k] - u * e[k]);
+    return sqrt(d2);
+}
+
+/* Distance of p from the parallelogram of a /RWALL/PARAL: from its plane
+ * when p projects inside it, else from its nearest side. */
+static double paral_distance(const rc_case_rwall *rw, const double *p)
+{
+    double e1[3], e2[3], n[3], r[3], h = 0.0, a1 = 0.0, a2 = 0.0, g11 = 0.0, g12 = 0.0, g22 = 0.0;
+    parallelogram(rw, e1, e2, n);
+    for (int k = 0; k < 3; k++) {
+        r[k] = p[k] - rw->m[k];
+        h += r[k] * n[k];
+        a1 += r[k] * e1[k];
+        a2 += r[k] * e2[k];
+        g11 += e1[k] * e1[k];
+        g12 += e1[k] * e2[k];
+        g22 += e2[k] * e2[k];
+    }
+    const double det = g11 * g22 - g12 * g12, u = (g22 * a1 - g12 * a2) / det, v = (g11 * a2 - g12 * a1) / det;
+    if (u >= 0 && u <= 1 && v >= 0 && v <= 1) return fabs(h);
+    double m1[3], m2[3];
+    for (int k = 0; k < 3; k++) {
+        m1[k] = rw->m[k] + e1[k];
+        m2[k] = rw->m[k] + e2[k];
+    }
+    return fmin(fmin(seg_distance(rw->m, e1, p), seg_distance(rw->m, e2, p)),
+                fmin(seg_distance(m1, e2, p), seg_distance(m2, e1, p)));
+}
 
 /* The moving walls (node_ID): each becomes a body of its node, of its
  * Mass, translating only (its rotations held), starting at VX0 VY0 VZ0,
@@ -157,6 +214,18 @@ rc_status rc_rwall_begin(const rc_case *c, rc_rwall_case *x, rc_error *err)
         s->abc[0] = s->abc[1] = s->abc[2] = 0.5 * rw->diameter;
         if (rw->kind == RC_RWALL_PLANE) {
             s->kind = RC_CASE_SURF_PLANE;
+        } else if (rw->kind == RC_RWALL_PARAL) {
+            /* the plane through M, M1, M2, normal e1 x e2, bounded to the
+             * parallelogram M, M1, M1 + M2 - M, M2 */
+            double e1[3], e2[3], n[3];
+            parallelogram(rw, e1, e2, n);
+            s->kind = RC_CASE_SURF_PLANE;
+            s->bounded = 1;
+            for (int k = 0; k < 3; k++) {
+                s->m1[k] = rw->m[k] + n[k];
+                s->e1[k] = e1[k];
+                s->e2[k] = e2[k];
+            }
         } else if (rw->kind == RC_RWALL_SPHER) {
             s->kind = RC_CASE_SURF_ELLIPS;
         } else {
@@ -184,6 +253,7 @@ rc_status rc_rwall_begin(const rc_case *c, rc_rwall_case *x, rc_error *err)
 /* Distance of point p from the surface of wall rw at t = 0 [m]. */
 static double wall_distance(const rc_case_rwall *rw, const double *p)
 {
+    if (rw->kind == RC_RWALL_PARAL) return paral_distance(rw, p);
     double d[3], a[3], dd = 0.0, aa = 0.0, da = 0.0;
     for (int k = 0; k < 3; k++) {
         d[k] = p[k] - rw->m[k];
@@ -407,12 +477,13 @@ rc_status rc_rwall_contacts(rc_rwall_case *x, const rc_model *m, rc_error *err)
                 if (rc_type7_is_points(c->surf[s].id)) continue; /* a TYPE7's points (model/type7.c) */
                 if (m->surf_body[s] != b || (s >= p0 && x->pts_wall[s - p0] != w)) continue;
                 const rc_case_surf *cs = &c->surf[s];
-                if (rw->kind == RC_RWALL_CYL && cs->kind != RC_CASE_SURF_ELLIPS)
+                if ((rw->kind == RC_RWALL_CYL || rw->kind == RC_RWALL_PARAL) && cs->kind != RC_CASE_SURF_ELLIPS)
                     RC_RAISE(err, RC_EINPUT,
-                             RC_LOCFMT "card /RWALL/CYL/%d, field grnd_ID1: the wall acts on /RBODY/%d, whose surface "
-                             "/SURF/%s/%d is not a sphere: an /RWALL/CYL against anything but a sphere (/SURF/ELLIPS) "
+                             RC_LOCFMT "card /RWALL/%s/%d, field grnd_ID1: the wall acts on /RBODY/%d, whose surface "
+                             "/SURF/%s/%d is not a sphere: an /RWALL/%s against anything but a sphere (/SURF/ELLIPS) "
                              "is not supported yet",
-                             RC_LOC(l1), rw->id, c->rbody[b].id, kinds[cs->kind], cs->id);
+                             RC_LOC(l1), rc_rwall_type[rw->kind], rw->id, c->rbody[b].id, kinds[cs->kind], cs->id,
+                             rc_rwall_type[rw->kind]);
                 /* the body's scales: mass, radius of gyration, gravity */
                 const double mass = m->body_mass[b], *J = m->body_J + 9 * b, *g = m->body_grav + 3 * b;
                 const double len = sqrt((J[0] + J[4] + J[8]) / (2.0 * mass));

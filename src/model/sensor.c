@@ -1,14 +1,20 @@
 /*
- * Time sensors (/SENSOR/TIME) acting on interfaces and bodies (sensor.h,
- * docs/theory.md "Sensors").
+ * Sensors acting on interfaces and bodies (sensor.h, docs/theory.md
+ * "Sensors").
  *
  * A body with a sensor is held at rest until the sensor's time: ricochet
  * has no free nodes for Radioss's inactive rigid body, so the body waits
  * in its initial pose, as a fixed body would, with the supports taking the
  * loads; at the sensor's time the holds end (an imposed-velocity
- * breakpoint, the integration restarted there) and the body moves freely
- * from rest. The holds are /IMPVEL entries appended to a copy of the case,
- * so that imposed.c compiles them as any other.
+ * breakpoint, the integration restarted there; for a sensor found in the
+ * run, its release event: engine/events) and the body moves freely from
+ * rest. The holds are /IMPVEL entries appended to a copy of the case, so
+ * that imposed.c compiles them as any other.
+ *
+ * A sensor known when compiling is on over one interval [on, off)
+ * (static_on): a /SENSOR/NOT is the one that turns off. An interface
+ * takes the interval as its Tstart and Tstop; a body only a sensor on for
+ * good once on.
  */
 #include <math.h>
 #include <stdio.h>
@@ -20,7 +26,9 @@
 #include "case/case_power.h"
 #include "model/sensor.h"
 
-static const char *const kind_name[] = {"TIME", "DIST", "AND", "OR"};
+static const char *const kind_name[] = {"TIME", "DIST", "AND", "OR", "NOT"};
+
+static int is_logic(rc_case_sensor_kind k) { return k == RC_SENS_AND || k == RC_SENS_OR || k == RC_SENS_NOT; }
 
 /* Is sensor k's time on found in the run (a distance sensor, or a logic
  * sensor of one)? (The inputs exist and form no cycle: check_logic.) */
@@ -32,15 +40,76 @@ static int runtime(const rc_case *c, int k)
     return runtime(c, rc_case_find_sensor(c, s->in[0])) || runtime(c, rc_case_find_sensor(c, s->in[1]));
 }
 
-/* The time on of a sensor known when compiling (not runtime): a time
- * sensor's Tdelay; a logic sensor's inputs' later (AND) or earlier (OR)
- * time on, plus its Tdelay. */
-static double static_ton(const rc_case *c, int k)
+/* Does sensor k depend on a /SENSOR/NOT (itself one, or a logic sensor of one)? */
+static int has_not(const rc_case *c, int k)
 {
     const rc_case_sensor *s = &c->sensor[k];
-    if (s->kind == RC_SENS_TIME) return s->tdelay;
-    const double a = static_ton(c, rc_case_find_sensor(c, s->in[0])), b = static_ton(c, rc_case_find_sensor(c, s->in[1]));
-    return (s->kind == RC_SENS_AND ? fmax(a, b) : fmin(a, b)) + s->tdelay;
+    if (s->kind == RC_SENS_NOT) return 1;
+    if (!is_logic(s->kind)) return 0;
+    return has_not(c, rc_case_find_sensor(c, s->in[0])) || has_not(c, rc_case_find_sensor(c, s->in[1]));
+}
+
+/* When a sensor known when compiling (not runtime) is on: the interval
+ * [*on, *off) (INFINITY: never; *on >= *off: never on). A time sensor:
+ * [Tdelay, inf); NOT of an input on over [a, b): [Tdelay, a) (empty when
+ * Tdelay >= a), or [b + Tdelay, inf) when the input turns off at a finite b
+ * and that first stretch is empty (both: two intervals); AND: the
+ * intersection of its inputs' intervals, its start delayed by Tdelay; OR:
+ * their union when it is one interval, its start delayed by Tdelay.
+ * Returns 0, or -1 when the set is not one interval (an OR of two
+ * disjoint intervals; a NOT of an input that turns off again). */
+static int static_on(const rc_case *c, int k, double *on, double *off)
+{
+    const rc_case_sensor *s = &c->sensor[k];
+    if (s->kind == RC_SENS_TIME) {
+        *on = s->tdelay;
+        *off = INFINITY;
+        return 0;
+    }
+    double a0, a1, b0, b1;
+    if (static_on(c, rc_case_find_sensor(c, s->in[0]), &a0, &a1) ||
+        static_on(c, rc_case_find_sensor(c, s->in[1]), &b0, &b1))
+        return -1;
+    if (a0 >= a1) a0 = a1 = INFINITY; /* never on */
+    if (b0 >= b1) b0 = b1 = INFINITY;
+    double u0, u1;
+    if (s->kind == RC_SENS_NOT) {
+        /* the input off over [0, a0) and [a1, inf): each stretch turns the
+         * NOT on Tdelay after it begins */
+        const int first = s->tdelay < a0, second = isfinite(a1);
+        if (first && second) return -1; /* on, off, on again */
+        *on = first ? s->tdelay : second ? a1 + s->tdelay : INFINITY;
+        *off = first ? a0 : INFINITY;
+        return 0;
+    } else if (s->kind == RC_SENS_AND) {
+        u0 = fmax(a0, b0);
+        u1 = fmin(a1, b1);
+    } else { /* OR */
+        if (!isfinite(a0)) {
+            u0 = b0;
+            u1 = b1;
+        } else if (!isfinite(b0)) {
+            u0 = a0;
+            u1 = a1;
+        } else {
+            if (a0 > b1 || b0 > a1) return -1; /* two pieces */
+            u0 = fmin(a0, b0);
+            u1 = fmax(a1, b1);
+        }
+    }
+    *on = u0 + s->tdelay;
+    *off = u1;
+    if (!(*on < *off)) *on = *off = INFINITY;
+    return 0;
+}
+
+/* The time on of a sensor known when compiling (not runtime) and on for
+ * good once on (static_on gives [t, inf)): a time sensor's Tdelay; a logic
+ * sensor's inputs' later (AND) or earlier (OR) time on, plus its Tdelay. */
+static double static_ton(const rc_case *c, int k)
+{
+    double on, off;
+    return static_on(c, k, &on, &off) ? INFINITY : on;
 }
 
 /* The logic sensors' inputs exist and form no cycle. */
@@ -48,8 +117,8 @@ static rc_status check_logic(const rc_case *c, rc_error *err)
 {
     for (int k = 0; k < c->nsensor; k++) {
         const rc_case_sensor *s = &c->sensor[k];
-        if (s->kind != RC_SENS_AND && s->kind != RC_SENS_OR) continue;
-        for (int e = 0; e < 2; e++)
+        if (!is_logic(s->kind)) continue;
+        for (int e = 0; e < (s->kind == RC_SENS_NOT ? 1 : 2); e++)
             if (rc_case_find_sensor(c, s->in[e]) < 0)
                 RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /SENSOR/%s/%d, field sens_ID%d: expected the id of a /SENSOR, got %d (no such sensor)",
                          RC_LOC(s->line2_loc), kind_name[s->kind], s->id, e + 1, s->in[e]);
@@ -59,7 +128,7 @@ static rc_status check_logic(const rc_case *c, rc_error *err)
      * itself (or on a sensor that does) */
     unsigned char *ok = calloc((size_t)c->nsensor + 1, 1);
     if (!ok) RC_RAISE(err, RC_ENOMEM, "out of memory");
-    for (int k = 0; k < c->nsensor; k++) ok[k] = c->sensor[k].kind != RC_SENS_AND && c->sensor[k].kind != RC_SENS_OR;
+    for (int k = 0; k < c->nsensor; k++) ok[k] = !is_logic(c->sensor[k].kind);
     for (int pass = 0; pass < c->nsensor; pass++)
         for (int k = 0; k < c->nsensor; k++)
             if (!ok[k] && ok[rc_case_find_sensor(c, c->sensor[k].in[0])] && ok[rc_case_find_sensor(c, c->sensor[k].in[1])])
@@ -68,6 +137,12 @@ static rc_status check_logic(const rc_case *c, rc_error *err)
         if (!ok[k]) {
             const rc_case_sensor *s = &c->sensor[k];
             free(ok);
+            if (s->kind == RC_SENS_NOT)
+                RC_RAISE(err, RC_EINPUT,
+                         RC_LOCFMT "card /SENSOR/NOT/%d, field sens_ID1: its input (%d) leads back to a sensor that "
+                         "depends on itself: the logic sensors form a cycle; expected an input that does not depend on "
+                         "the sensor itself",
+                         RC_LOC(s->line2_loc), s->id, s->in[0]);
             RC_RAISE(err, RC_EINPUT,
                      RC_LOCFMT "card /SENSOR/%s/%d, field sens_ID1 sens_ID2: its inputs (%d, %d) lead back to a sensor "
                      "that depends on itself: the logic sensors form a cycle; expected inputs that do not depend on the "
@@ -79,7 +154,7 @@ static rc_status check_logic(const rc_case *c, rc_error *err)
 }
 
 rc_status rc_sensor_tstart(const rc_case *c, int sensor_id, rc_loc loc, const char *card, double *tstart,
-                           double tstop, int *sens, rc_error *err)
+                           double *tstop, int *sens, rc_error *err)
 {
     *sens = -1;
     if (sensor_id == 0) return RC_OK;
@@ -87,17 +162,37 @@ rc_status rc_sensor_tstart(const rc_case *c, int sensor_id, rc_loc loc, const ch
     if (k < 0)
         RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field Isensor: expected the id of a /SENSOR, got %d (no such sensor)",
                  RC_LOC(loc), card, sensor_id);
+    const char *kn = kind_name[c->sensor[k].kind];
     if (runtime(c, k)) {
+        if (has_not(c, k))
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card %s, field Isensor: /SENSOR/%s/%d depends on a /SENSOR/NOT of a sensor found in "
+                     "the run (a distance sensor): it turns off again at a time found in the run, which an interface "
+                     "is not supported yet to follow; expected a sensor that turns on for good, or a /SENSOR/NOT of "
+                     "time sensors",
+                     RC_LOC(loc), card, kn, sensor_id);
         *sens = k; /* on at a time found in the run (a trigger plus Tdelay) */
         return RC_OK;
     }
-    const double ts = static_ton(c, k);
-    if (ts > *tstart) *tstart = ts;
-    if (*tstart > tstop)
+    double on, off;
+    if (static_on(c, k, &on, &off))
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card %s, field Isensor: /SENSOR/%s/%d is on over two separate time intervals (an OR of "
+                 "disjoint intervals, or a NOT of a sensor that turns off again): an interface that starts twice is "
+                 "not supported yet; expected a sensor on over one interval",
+                 RC_LOC(loc), card, kn, sensor_id);
+    if (on > *tstart) *tstart = on;
+    if (off < *tstop) *tstop = off; /* a NOT: off from its input's time on, as after Tstop */
+    if (!(*tstart <= *tstop) && isinf(off))
         RC_RAISE(err, RC_EINPUT,
                  RC_LOCFMT "card %s, field Isensor: /SENSOR/%s/%d turns the interface on at %.9g s, after its Tstop "
                  "%.9g s: it would never act; expected a sensor time before Tstop",
-                 RC_LOC(loc), card, kind_name[c->sensor[k].kind], sensor_id, ts, tstop);
+                 RC_LOC(loc), card, kn, sensor_id, on, *tstop);
+    if (!(*tstart <= *tstop))
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card %s, field Isensor: /SENSOR/%s/%d is on over [%.9g, %.9g) s, which leaves the interface "
+                 "no time between its start and its stop: it would never act; expected a sensor on before Tstop",
+                 RC_LOC(loc), card, kn, sensor_id, on, off);
     return RC_OK;
 }
 
@@ -122,8 +217,15 @@ rc_status rc_sensor_compile(const rc_case *c, rc_model *m, rc_error *err)
     m->sens_p = calloc(6 * n, sizeof *m->sens_p);
     m->sens_d = calloc(2 * n, sizeof *m->sens_d);
     m->sens_in = calloc(2 * n, sizeof *m->sens_in);
-    if (!m->sens_id || !m->sens_kind || !m->sens_tdelay || !m->sens_body || !m->sens_p || !m->sens_d || !m->sens_in)
+    m->sens_hold = calloc(n, sizeof *m->sens_hold);
+    if (!m->sens_id || !m->sens_kind || !m->sens_tdelay || !m->sens_body || !m->sens_p || !m->sens_d || !m->sens_in ||
+        !m->sens_hold)
         RC_RAISE(err, RC_ENOMEM, "out of memory");
+    /* the sensors found in the run that release a held body */
+    for (int b = 0; b < c->nrbody; b++) {
+        const int k = c->rbody[b].sens_id ? rc_case_find_sensor(c, c->rbody[b].sens_id) : -1;
+        if (k >= 0 && runtime(c, k)) m->sens_hold[k] = 1;
+    }
     for (int k = 0; k < m->nsens; k++) {
         const rc_case_sensor *s = &c->sensor[k];
         m->sens_id[k] = s->id;
@@ -133,6 +235,7 @@ rc_status rc_sensor_compile(const rc_case *c, rc_model *m, rc_error *err)
         m->sens_in[2 * k] = m->sens_in[2 * k + 1] = -1;
         if (s->kind == RC_SENS_AND || s->kind == RC_SENS_OR)
             for (int e = 0; e < 2; e++) m->sens_in[2 * k + e] = rc_case_find_sensor(c, s->in[e]);
+        if (s->kind == RC_SENS_NOT) m->sens_in[2 * k] = rc_case_find_sensor(c, s->in[0]);
         if (s->kind != RC_SENS_DIST) continue;
         m->sens_d[2 * k] = s->dmin;
         m->sens_d[2 * k + 1] = s->dmax;
@@ -219,23 +322,32 @@ rc_status rc_sensor_begin(const rc_case *c, rc_sensor_case *x, rc_error *err)
         const rc_loc l1 = rc_loc_or(rb->line_loc[0], rb->loc);
         const int k = rc_case_find_sensor(c, rb->sens_id);
         if (k < 0)
-            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field sens_ID: expected the id of a /SENSOR/TIME, got %d (no such sensor)",
+            RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /RBODY/%d, field sens_ID: expected the id of a /SENSOR, got %d (no such sensor)",
                      RC_LOC(l1), rb->id, rb->sens_id);
-        if (runtime(c, k))
+        const char *kn = kind_name[c->sensor[k].kind];
+        const int rt = runtime(c, k);
+        double on = 0.0, off = INFINITY;
+        /* a body turned on for good: a NOT (off once its input is on)
+         * would deactivate the rigid body again, which ricochet cannot */
+        if ((rt && has_not(c, k)) || (!rt && (static_on(c, k, &on, &off) || isfinite(off))))
             RC_RAISE(err, RC_EINPUT,
-                     RC_LOCFMT "card /RBODY/%d, field sens_ID: /SENSOR/%s/%d: a body released by a sensor found in the "
-                     "run (a distance sensor, or a logic sensor of one) is not supported yet; expected a /SENSOR/TIME "
-                     "(or AND, OR of them; a distance sensor activates interfaces: Isensor)",
-                     RC_LOC(l1), rb->id, kind_name[c->sensor[k].kind], rb->sens_id);
-        if (!(static_ton(c, k) > 0)) continue; /* on from t = 0: free from the start */
+                     RC_LOCFMT "card /RBODY/%d, field sens_ID: /SENSOR/%s/%d turns off again (it depends on a "
+                     "/SENSOR/NOT: on while its input is off): a rigid body deactivated after its release is not "
+                     "supported (a held body is released once, for good); expected a sensor that turns on for good",
+                     RC_LOC(l1), rb->id, kn, rb->sens_id);
+        if (!rt && !(on > 0)) continue; /* on from t = 0: free from the start */
         char what[64];
         rc_loc where;
-        if (other_driver(c, b, what, sizeof what, &where))
+        if (other_driver(c, b, what, sizeof what, &where)) {
+            char when[64];
+            if (rt) snprintf(when, sizeof when, "at a time found in the run");
+            else snprintf(when, sizeof when, "at %.9g s", on);
             RC_RAISE(err, RC_EINPUT,
                      RC_LOCFMT "card /RBODY/%d, field sens_ID: the body is held at rest until /SENSOR/%s/%d turns it on "
-                     "at %.9g s; %s (%s:%d) also drives it: a held body with an initial or imposed velocity, a /BCS or "
+                     "%s; %s (%s:%d) also drives it: a held body with an initial or imposed velocity, a /BCS or "
                      "a joint is not supported yet",
-                     RC_LOC(l1), rb->id, kind_name[c->sensor[k].kind], rb->sens_id, static_ton(c, k), what, RC_LOC(where));
+                     RC_LOC(l1), rb->id, kn, rb->sens_id, when, what, RC_LOC(where));
+        }
         nh++;
     }
     if (nh == 0) return RC_OK;
@@ -258,7 +370,8 @@ rc_status rc_sensor_begin(const rc_case *c, rc_sensor_case *x, rc_error *err)
     for (int b = 0; b < c->nrbody; b++) {
         const rc_case_rbody *rb = &c->rbody[b];
         const int k = rb->sens_id ? rc_case_find_sensor(c, rb->sens_id) : -1;
-        if (k < 0 || !(static_ton(c, k) > 0)) continue;
+        const int rt = k >= 0 && runtime(c, k);
+        if (k < 0 || (!rt && !(static_ton(c, k) > 0))) continue;
         const rc_loc l1 = rc_loc_or(rb->line_loc[0], rb->loc);
         /* its main node, a group of its own */
         x->nodes[ng - c->ngrnod] = rb->node_id;
@@ -268,7 +381,8 @@ rc_status rc_sensor_begin(const rc_case *c, rc_sensor_case *x, rc_error *err)
         for (int j = 0; j < 6; j++)
             x->impvel[ni++] = (rc_case_impvel){.id = -rb->id, .fct_id = -2, .dir = j, .grnod_id = -rb->id,
                                                .ascale = 1.0, .fscale = 1.0, .tstart = 0.0,
-                                               .tstop = static_ton(c, k), .loc = l1, .line_loc = {l1, l1}};
+                                               .tstop = rt ? INFINITY : static_ton(c, k), .hold_sens = rt ? k + 1 : 0,
+                                               .loc = l1, .line_loc = {l1, l1}};
     }
     x->c.impvel = x->impvel;
     x->c.nimpvel = ni;
@@ -289,7 +403,7 @@ const char *rc_sensor_note(const rc_model *m, int i)
     const int k = m->inter_sens ? m->inter_sens[i] : -1;
     if (k < 0) return "";
     const int kind = m->sens_kind[k];
-    snprintf(buf, sizeof buf, ", on by /SENSOR/%s/%d (time found in the run)", kind >= 0 && kind < 4 ? kind_name[kind] : "?",
+    snprintf(buf, sizeof buf, ", on by /SENSOR/%s/%d (time found in the run)", kind >= 0 && kind < 5 ? kind_name[kind] : "?",
              m->sens_id[k]);
     return buf;
 }

@@ -1,11 +1,13 @@
 /*
- * Time sensors (/SENSOR/TIME), distance sensors (/SENSOR/DIST), and what they activate (model/sensor.c,
+ * Time sensors (/SENSOR/TIME), distance sensors (/SENSOR/DIST), logic
+ * sensors (AND, OR, NOT) and what they activate (model/sensor.c,
  * docs/theory.md "Sensors"): an interface naming a sensor (TYPE6 and
  * /INTER/POWER Isensor) is inactive before the sensor's time; a body
  * naming one (/RBODY sens_ID) is held at rest in its initial pose until
  * then, by imposed zero velocities of its six degrees of freedom that end
  * at the sensor's time (the /IMPVEL machinery: a breakpoint and a restart
- * there), and is free afterwards.
+ * there; for a time found in the run, the sensor's release event), and is
+ * free afterwards.
  */
 #ifndef RC_MODEL_SENSOR_H
 #define RC_MODEL_SENSOR_H
@@ -22,21 +24,26 @@ typedef struct rc_sensor_case {
     double fx[2], fy[2];          /* the zero function of the holds         */
 } rc_sensor_case;
 
-/* The copy of c with, for each /RBODY whose sensor's time is > 0, a node
- * group of its main node (id -rbody_ID) and six /IMPVEL (id -rbody_ID)
- * holding its velocities at zero until that time (the zero function, id
- * -2); x->c is c itself when no body has a sensor. RC_EINPUT at the /RBODY
- * line for a sensor that does not exist, or a held body that also has an
- * /INIVEL, /IMPVEL, /BCS or /JOINT (not supported yet). */
+/* The copy of c with, for each /RBODY whose sensor's time is > 0 or found
+ * in the run, a node group of its main node (id -rbody_ID) and six /IMPVEL
+ * (id -rbody_ID) holding its velocities at zero until that time (the zero
+ * function, id -2; a time found in the run: Tstop INFINITY and hold_sens);
+ * x->c is c itself when no body has a sensor. RC_EINPUT at the /RBODY
+ * line for a sensor that does not exist, one that turns off again (a
+ * /SENSOR/NOT), or a held body that also has an /INIVEL, /IMPVEL, /BCS or
+ * /JOINT (not supported yet). */
 rc_status rc_sensor_begin(const rc_case *c, rc_sensor_case *x, rc_error *err);
 void rc_sensor_end(rc_sensor_case *x);
 /* The start of an interface of `card` (read at `loc`) whose Isensor is
- * sensor_id: *tstart raised to a time sensor's time; *sens the index of a
- * distance sensor (the interface turns on when it does, at run time), -1
- * otherwise; RC_EINPUT when the sensor does not exist or a time sensor
- * turns the interface on after its Tstop. */
+ * sensor_id: for a sensor known when compiling, on over [a, b), *tstart
+ * raised to a and *tstop lowered to b (a /SENSOR/NOT turns off at its
+ * input's time on); *sens the index of a sensor found in the run (the
+ * interface turns on when it does), -1 otherwise; RC_EINPUT when the sensor
+ * does not exist, leaves the interface no time between start and stop, is
+ * on over two separate intervals, or turns off at a time found in the run
+ * (a NOT of a distance sensor). */
 rc_status rc_sensor_tstart(const rc_case *c, int sensor_id, rc_loc loc, const char *card, double *tstart,
-                           double tstop, int *sens, rc_error *err);
+                           double *tstop, int *sens, rc_error *err);
 /* The model's sensors (m->sens_*), one per /SENSOR card: a distance
  * sensor's nodes in their bodies' frames (the bodies' initial poses, in
  * the origin's coordinates: after the origin shift). RC_EINPUT at the

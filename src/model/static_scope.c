@@ -120,6 +120,13 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
                                "/SENSOR/TIME, no sensor, or %s",
                      RC_LOC(m->inter_loc[i]), m->inter_name[i], "an interface turned on by a distance sensor", how,
                      m->sens_id[m->inter_sens[i]], alt);
+    for (int k = 0; m->imp && k < m->imp->nt; k++)
+        if (m->imp->tsens[k] >= 0)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card /RBODY/%d, field sens_ID: " RC_STATIC_NOT " (%s, /SENSOR %d); expected a "
+                               "/SENSOR/TIME, no sensor, or %s",
+                     RC_LOC(m->body_loc[m->imp->tbody[k]]), m->body_id[m->imp->tbody[k]],
+                     "a body released by a sensor found in the run", how, m->sens_id[m->imp->tsens[k]], alt);
     for (int i = 0; i < m->ninter; i++) {
         const rc_fric *fr = &m->inter_fr[i];
         const char *what = NULL;

@@ -97,18 +97,29 @@ void rc_bk_root_directions(const rc_model *m, const rc_data *d, int *dir)
 }
 
 /* The distance sensors triggered since the last call: their events
- * (element /SENSOR/DIST/id; no interface values), then cleared. */
+ * (element /SENSOR/DIST/id; no interface values); the bodies released by
+ * a sensor found in the run: an impvel_stop event each (element
+ * /RBODY/id: its hold ends); then cleared. */
 static rc_status sensor_events(const rc_model *m, rc_data *d, ev_sink *k, double t, const double *y, long *count,
                                rc_error *err)
 {
     for (int s = 0; s < m->nsens; s++) {
-        if (!d->sens_new[s]) continue;
+        const int nw = d->sens_new[s];
+        if (!nw) continue;
         d->sens_new[s] = 0;
         char el[48];
-        snprintf(el, sizeof el, "/SENSOR/DIST/%d", m->sens_id[s]);
-        (*count)++;
-        rc_status st = rc_bk_sink_event(k, t, RC_EV_SENSOR_TRIGGER, el, NULL, err);
-        if (st) return st;
+        rc_status st = RC_OK;
+        if (nw & 1) {
+            snprintf(el, sizeof el, "/SENSOR/DIST/%d", m->sens_id[s]);
+            (*count)++;
+            if ((st = rc_bk_sink_event(k, t, RC_EV_SENSOR_TRIGGER, el, NULL, err))) return st;
+        }
+        for (int j = 0; (nw & 2) && m->imp && j < m->imp->nt; j++) {
+            if (m->imp->tsens[j] != s || m->imp->tdir[j] != 0) continue; /* one per body: its X row */
+            snprintf(el, sizeof el, "/RBODY/%d", m->body_id[m->imp->tbody[j]]);
+            (*count)++;
+            if ((st = rc_bk_sink_event(k, t, RC_EV_IMPVEL_STOP, el, NULL, err))) return st;
+        }
     }
     return RC_OK;
 }

@@ -134,6 +134,7 @@ static void copy_modes(const rc_model *m, const rc_data *src, rc_data *dst)
     if (m->nsens > 0) {
         memcpy(dst->sens_ton, src->sens_ton, (size_t)m->nsens * sizeof(double));
         memcpy(dst->sens_new, src->sens_new, (size_t)m->nsens * sizeof(int));
+        memcpy(dst->sens_rel, src->sens_rel, (size_t)m->nsens * sizeof(int));
     }
     if (np > 0) {
         memcpy(dst->pt_slip, src->pt_slip, np * sizeof(int));
@@ -695,6 +696,12 @@ rc_status rc_sens_run(const rc_model *m, int np, const rc_model *const *m_lo, co
                           "sensitivities: %s is turned on by /SENSOR/DIST/%d: a distance sensor is not covered (the "
                           "derivative of its trigger time is not followed in this version)",
                           m->inter_name[i], m->sens_id[m->inter_sens[i]]);
+    for (int k = 0; m->imp && k < m->imp->nt; k++)
+        if (m->imp->tsens[k] >= 0)
+            return RC_SET(err, RC_EINPUT,
+                          "sensitivities: /RBODY/%d is released by sensor %d at a time found in the run: not covered "
+                          "(the derivative of its release time is not followed in this version)",
+                          m->body_id[m->imp->tbody[k]], m->sens_id[m->imp->tsens[k]]);
     for (int k = 0; m->imp && k < m->imp->nt; k++)
         if (m->imp->ttstart[k] > 0)
             return RC_SET(err, RC_EINPUT,

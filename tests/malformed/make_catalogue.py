@@ -448,8 +448,13 @@ TL('rwall_missing_line', RW, 'expected 4 data lines', before_end(RWALL(m1=None),
 TL('rwall_sphere_diameter', '/RWALL/SPHER/9', 'field Diameter', before_end(RWALL('SPHER', m1=None), expect=3))
 TL('rwall_cyl_box', '/RWALL/CYL/9', 'field grnd_ID1',
    before_end(RWALL('CYL', l1=(0, 0, 3, 0), l2='%20s%20s%20s' % ('0', '0', '1'), m1=('1', '0', '-10')), expect=2))
-TL('rwall_paral', '/RWALL/PARAL/9', 'not supported yet',
-   before_end(RWALL('PARAL', extra=['%20s%20s%20s' % ('1', '0', '-10')]), expect=0))
+TL('rwall_paral_moving', '/RWALL/PARAL/9', 'field node_ID',
+   before_end(RWALL('PARAL', l1=(4, 0, 1, 0), m=('1', '0', '0'), extra=['%20s%20s%20s' % ('1', '0', '-10')]), expect=2))
+TL('rwall_paral_collinear', '/RWALL/PARAL/9', 'field XM2 YM2 ZM2',
+   before_end(RWALL('PARAL', extra=['%20s%20s%20s' % ('0', '0', '-8')]), expect=6))
+TL('rwall_paral_box', '/RWALL/PARAL/9', 'field grnd_ID1',
+   before_end(RWALL('PARAL', l1=(0, 0, 3, 0), m1=('1', '0', '-10'), extra=['%20s%20s%20s' % ('0', '1', '-10')]),
+              expect=2))
 TL('rwall_lagmul', '/RWALL/LAGMUL/9', 'not supported yet', before_end(RWALL(head='/RWALL/LAGMUL/9'), expect=0))
 TL('rwall_duplicate', RW, 'duplicate id 9', before_end(RWALL() + RWALL(), expect=6))
 
@@ -559,8 +564,22 @@ TL('sensor_or_missing_line', '/SENSOR/OR/8', 'expected 2 data lines',
    before_end(['/SENSOR/OR/8', 'either', '                   0'], expect=0))
 TL('sensor_and_input_zero', SLOG, 'field sens_ID1',
    before_end([SLOG, 'both', '                   0', '         0         4'] + SENS, expect=3))
-TL('sensor_not', '/SENSOR/NOT/8', 'not supported yet',
-   before_end(SENS + ['/SENSOR/NOT/8', 'not', '                   0', '         4'], expect=3))
+SNOT = '/SENSOR/NOT/8'
+TL('sensor_not_self', SNOT, 'field sens_ID1', before_end([SNOT, 'not', '                   0', '         8'], expect=3))
+TL('sensor_not_input_missing', SNOT, 'field sens_ID1',
+   before_end([SNOT, 'not', '                   0', '         9'], expect=3))
+TL('sensor_not_input_zero', SNOT, 'field sens_ID1', before_end([SNOT, 'not', '                   0', '         0'], expect=3))
+TL('sensor_not_missing_line', SNOT, 'expected 2 data lines', before_end([SNOT, 'not', '                   0'], expect=0))
+TL('sensor_not_cycle', SNOT, 'form a cycle',
+   before_end([SNOT, 'a', '                   0', '         7', '/SENSOR/NOT/7', 'b', '                   0', '         8'],
+              expect=3))
+TL('rbody_sensor_not', '/RBODY/1', 'turns off again',
+   lambda lines: at('/RBODY/1', 2, 11, 20, '8')(before_end(SENS + [SNOT, 'not', '                   0', '         4'])(lines)[0]))
+TL('type6_sensor_not_disjoint', T6, 'two separate time intervals',
+   lambda lines: at(T6, 2, 21, 30, '7')(before_end(SENS + [SNOT, 'not', '                   0', '         4',
+                                                          '/SENSOR/TIME/6', 'later', '                 0.5',
+                                                          '/SENSOR/OR/7', 'either', '                   0',
+                                                          '         8         6'])(lines)[0]))
 
 
 

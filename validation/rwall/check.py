@@ -1,4 +1,4 @@
-"""Rigid walls (/RWALL/PLANE, /RWALL/SPHER, /RWALL/CYL) against rigid-body
+"""Rigid walls (/RWALL/PLANE, /RWALL/SPHER, /RWALL/CYL, /RWALL/PARAL) against rigid-body
 closed forms (README.md).
 
 A sphere (m = 1 kg, R = 0.05 m, J = 0.4 m R^2: radius of gyration
@@ -21,6 +21,13 @@ of a restitution 0.01 (docs/theory.md, "Rigid walls"):
 3. a ball sliding (Slide 0) over the top of a horizontal /RWALL/CYL of
    radius Rc from the top at v0: it leaves the cylinder where
    cos(theta) = 2/3 + v0^2 / (3 g (Rc + R)) (a particle on a circle).
+4. a ball sliding (Slide 0) at v0 on a horizontal /RWALL/PARAL (corners
+   (-1, -0.5, 0), M1 (0, -0.5, 0), M2 (-1, 0.5, 0): normal +z, the edge
+   x = 0) from x0 = -0.5: flat until its centre reaches the edge at
+   -x0 / v0, then it turns about the edge (radius R) and leaves it where
+   cos(theta) = 2/3 + v0^2 / (3 g R), at -x0 / v0 + the integral of
+   R dtheta / sqrt(v0^2 + 2 g R (1 - cos theta)); then a free flight. Fast
+   (v0^2 > g R): it leaves at the edge.
 """
 import math
 import os
@@ -42,13 +49,15 @@ MU, V0 = 0.3, 1.0                         # the sliding block
 RC, VC = 0.5, 0.5                         # the cylinder's radius, the ball's speed on its top
 
 
-def rwall(d, kind, wid, grnod, m, m1=None, slide=0, fric=0.0, diameter=0.0):
-    """/RWALL/<kind>/wid in the Radioss 2022 layout (fixed wall)."""
+def rwall(d, kind, wid, grnod, m, m1=None, slide=0, fric=0.0, diameter=0.0, m2=None):
+    """/RWALL/<kind>/wid in the Radioss 2022 layout (fixed wall); m2: the third corner of PARAL."""
     lines = [line(("i", 0), ("i", slide), ("i", grnod), ("i", 0)),
              line(("r", 0.0), ("r", fric), ("r", diameter), ("r", 0.0), ("i", 0)),
              line(("r", m[0]), ("r", m[1]), ("r", m[2]))]
     if m1 is not None:
         lines.append(line(("r", m1[0]), ("r", m1[1]), ("r", m1[2])))
+    if m2 is not None:
+        lines.append(line(("r", m2[0]), ("r", m2[1]), ("r", m2[2])))
     d.add(f"/RWALL/{kind}/{wid}", *lines, title=f"{kind.lower()} wall")
 
 
@@ -91,6 +100,17 @@ def over_cylinder():
     d = ball("ball sliding over /RWALL/CYL", RC + R, v=(VC, 0.0, 0.0))
     rwall(d, "CYL", 6, 1, (0.0, 0.0, 0.0), (0.0, 1.0, 0.0), diameter=2 * RC)
     d.run(0.8, 0.002)
+    return d
+
+
+VP, XP = 0.3, -0.5             # the ball on the parallelogram: speed, start
+VPF = 1.0                      # the fast ball: v0^2 > g R
+
+
+def off_paral(v0):
+    d = ball(f"ball sliding off the edge of /RWALL/PARAL at {v0} m/s", R - PEN, x0=XP, v=(v0, 0.0, 0.0))
+    rwall(d, "PARAL", 7, 1, (-1.0, -0.5, 0.0), (0.0, -0.5, 0.0), m2=(-1.0, 0.5, 0.0))
+    d.run(2.0, 0.002)
     return d
 
 
@@ -224,6 +244,41 @@ def main():
     w = np.abs(r.energy["energy_total"] - r.energy["energy_total"][0]).max() / (M * G * rho)
     rcval.check("rwall.cyl.ledger", w < 1e-6,
                 f"max |E_total(t) - E_total(0)| / (m g (Rc + R)) = {w:.1e} (< 1e-6)")
+
+    # 4. off the edge of a parallelogram: flat to the edge, then about the
+    # edge as a particle on a circle of radius R, leaving at cos = 2/3 +
+    # v0^2/(3 g R); a fast ball leaves at the edge
+    r = rcval.Result(rcval.run(off_paral(VP), "paral"))
+    t_edge = -XP / VP
+    t_off = r.contact_ends()[0]
+    p = r.pos[r.state_at(t_off), 0]
+    cos_sim = p[2] / math.hypot(p[0], p[2])
+    cos_ref = 2.0 / 3.0 + VP**2 / (3 * G * R)
+    th = np.linspace(0.0, math.acos(cos_ref), 200001)
+    f = R / np.sqrt(VP**2 + 2 * G * R * (1 - np.cos(th)))
+    t_ref = t_edge + float(np.sum(0.5 * (f[1:] + f[:-1]) * np.diff(th)))
+    flat = r.t < t_edge
+    ez = np.abs(r.pos[flat, 0, 2] - (R - PEN)).max()
+    ex = np.abs(r.pos[flat, 0, 0] - (XP + VP * r.t[flat])).max()
+    e = abs(cos_sim - cos_ref)
+    et = rcval.rel(t_off, t_ref)
+    rcval.check("rwall.paral.leave", e < 1e-3 and et < 1e-3 and ez < 1e-9 and ex < 1e-9,
+                f"over the parallelogram ({flat.sum()} records): x = x0 + v0 t to {ex:.1e} m, z = R - 1e-4 L to "
+                f"{ez:.1e} m (< 1e-9); leaves the edge at cos(theta) = {cos_sim:.7f}, t = {t_off:.6f} s; a particle "
+                f"on a circle of radius R about the edge: 2/3 + v0^2/(3 g R) = {cos_ref:.7f} (error {e:.1e} < 1e-3), "
+                f"t = -x0/v0 + int R dtheta/v = {t_ref:.6f} s (rel. error {et:.1e} < 1e-3)")
+    w = np.abs(r.energy["energy_total"] - r.energy["energy_total"][0]).max() / (M * G * R)
+    rcval.check("rwall.paral.ledger", w < 1e-6, f"max |E_total(t) - E_total(0)| / (m g R) = {w:.1e} (< 1e-6)")
+    r = rcval.Result(rcval.run(off_paral(VPF), "paral_fast"))
+    t_edge = -XP / VPF
+    t_off = r.contact_ends()[0]
+    # it leaves once its free flight has risen PEN above the circle about
+    # the edge: x^2 (1/R - g/v0^2)/2 = PEN
+    dt_ref = math.sqrt(2 * PEN / (1 / R - G / VPF**2)) / VPF
+    rcval.check("rwall.paral.fast", 0.0 < t_off - t_edge < 2 * dt_ref,
+                f"v0 = {VPF} m/s (v0^2 > g R): leaves {t_off - t_edge:.2e} s after its centre passes the edge at "
+                f"{t_edge} s (0 < .. < 2 sqrt(2 p0/(1/R - g/v0^2))/v0 = {2 * dt_ref:.2e} s, the time its free flight "
+                f"takes to clear the rest penetration p0)")
     rcval.finish()
 
 

@@ -11,6 +11,10 @@
    they meet): contact at (d0 - R_A - R_B) / v0. Turned on at 3 s (after A
    has passed through B): no contact, A's velocity unchanged, the
    inter_start event at 3 s.
+3. A floor on while a time sensor is off (/SENSOR/NOT of a time sensor at
+   T_n = 0.3 s): the ball rests on it from the start (centre at
+   R - m g / k), the floor stops at T_n exactly (inter_stop) and the ball
+   falls freely from rest: z0 - g (t - T_n)^2 / 2.
 """
 import math
 import os
@@ -61,6 +65,25 @@ def pass_by(t_on):
     return d
 
 
+TN = 0.3                         # the NOT sensor's input time [s]
+
+
+def floor_not():
+    z0 = R - M * G / K
+    d = Deck("ball resting on a floor that a /SENSOR/NOT turns off")
+    d.funct(1, [0.0, 1.0], [0.0, K], title="linear load curve")
+    d.nodes([(1, 0.0, 0.0, z0)])
+    d.rbody(1, 1, M, [J] * 3, title="ball")
+    d.sensor_time(1, TN, title="time sensor")
+    d.sensor_not(2, 1, title="on until sensor 1 is on")
+    d.sphere(1, 1, (0.0, 0.0, z0), R)
+    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor")
+    d.type6(1, 1, 2, 1, e_target=0.5, isensor=2, title="ball on floor, Isensor 2 (NOT)")
+    d.grav(1, "Z", -G)
+    d.run(0.5, 0.001)
+    return d
+
+
 def main():
     # 1. the held ball
     r = rcval.Result(rcval.run(held_ball(), "held"))
@@ -102,6 +125,18 @@ def main():
                 and abs(t_on[0] - 3.0) <= 1e-15,
                 f"Isensor at 3 s: A passes through B (no contact, its velocity within {dv:.1e} m/s of v0, < 1e-12); "
                 f"inter_start at {t_on} s; at 3 s the centres are {r.pos[r.state_at(t_on[0]), 0, 0]:.6f} m apart")
+
+    # 3. a floor turned off by a NOT sensor
+    r = rcval.Result(rcval.run(floor_not(), "floor_not"))
+    z0 = R - M * G / K
+    t_off = r.events("inter_stop")
+    before, after = r.t <= TN, r.t > TN
+    drift = np.abs(r.pos[before, 0, 2] - z0).max()
+    e = np.abs(r.pos[after, 0, 2] - (z0 - 0.5 * G * (r.t[after] - TN) ** 2)).max()
+    rcval.check("sensor_time.not_floor", len(t_off) == 1 and abs(t_off[0] - TN) <= 1e-15 and drift < 1e-9 and e < 1e-9,
+                f"/SENSOR/NOT of a time sensor at {TN} s: the floor stops (inter_stop) at {t_off} s (error <= 1e-15); "
+                f"at rest before it within {drift:.1e} m of R - m g/k, free fall from rest after it to {e:.1e} m "
+                f"(< 1e-9)")
     rcval.finish()
 
 

@@ -202,7 +202,7 @@ static double normal_mass(const rc_model *m, int b, const double *n)
     for (int k = 0; k < 3; k++) {
         int held = m->body_dofmask[6 * b + k];
         const rc_imposed *p = m->imp;
-        for (int j = 0; p && j < p->nt; j++) held |= p->tbody[j] == b && p->tdir[j] == k && p->ttstop[j] >= m->tend;
+        for (int j = 0; p && j < p->nt; j++) held |= p->tbody[j] == b && p->tdir[j] == k && p->ttstop[j] >= m->tend && p->tsens[j] < 0;
         if (!held) w += n[k] * n[k];
     }
     return w > 1e-12 ? m->body_mass[b] / w : INFINITY;

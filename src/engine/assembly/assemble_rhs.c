@@ -182,11 +182,17 @@ double rc_sens_distance(const rc_model *m, int k, const double *y)
     return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
 }
 
-/* Distance sensors' root functions: d - Dmax and Dmin - d until triggered. */
-void rc_sens_roots(const rc_model *m, const rc_data *d, const double *y, double *g)
+/* Distance sensors' root functions: d - Dmax and Dmin - d until triggered;
+ * a sensor that releases a held body (sens_hold), once its time on is
+ * known and until the release: t - t_on in its first slot. */
+void rc_sens_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
 {
     for (int k = 0; k < m->nsens; k++) {
         g[2 * k] = g[2 * k + 1] = -1.0; /* a time sensor, or one that has triggered */
+        if (m->sens_hold[k] && isfinite(d->sens_ton[k])) {
+            g[2 * k] = d->sens_rel[k] ? 1.0 : t - d->sens_ton[k];
+            continue;
+        }
         if (m->sens_kind[k] != 1 || isfinite(d->sens_ton[k])) continue;
         const double dist = rc_sens_distance(m, k, y), *b = m->sens_d + 2 * k;
         if (b[1] > 0) g[2 * k] = dist - b[1];
@@ -350,7 +356,7 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
     /* contact couplings: after the interfaces' roots (below) */
     if (rc_cpl_nroots(m) > 0) rc_cpl_roots(m, d, t, y, g + rc_root_cpl_base(m));
     /* distance sensors: last */
-    if (m->nsens > 0) rc_sens_roots(m, d, y, g + rc_root_sens_base(m));
+    if (m->nsens > 0) rc_sens_roots(m, d, t, y, g + rc_root_sens_base(m));
 }
 
 /* Which of an interface's root functions can change sign in a run from

@@ -85,12 +85,14 @@ int rc_fast_eligible(const rc_model *m, int i);
 int rc_roots_live(const rc_model *m, double tend, int *live);
 /* Distance sensors (sensors.c): the distance of sensor k's points at y
  * [m]; its two roots (d - Dmax, Dmin - d; -1 for a bound not given, a time
- * sensor, a sensor triggered) into g[2k], g[2k+1]; whether root j of the
+ * sensor, a sensor triggered; a sensor releasing a held body: t - t_on in
+ * g[2k] once t_on is known, until the release) into g[2k], g[2k+1]
+ * (assemble_rhs.c); whether root j of the
  * sensors' block can change sign; the time interface i turns on (its
  * Tstart, or later its run-time sensor's time on: INFINITY until known;
  * the times on are set in engine/events). */
 double rc_sens_distance(const rc_model *m, int k, const double *y);
-void rc_sens_roots(const rc_model *m, const rc_data *d, const double *y, double *g);
+void rc_sens_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
 int rc_sens_root_live(const rc_model *m, int j);
 double rc_sens_inter_ton(const rc_model *m, const rc_data *d, int i);
 

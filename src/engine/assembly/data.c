@@ -30,6 +30,7 @@ rc_data *rc_data_new(const rc_model *m)
     d->mode_was = calloc(n, sizeof(int));
     d->sens_ton = calloc((size_t)m->nsens + 1, sizeof(double));
     d->sens_new = calloc((size_t)m->nsens + 1, sizeof(int));
+    d->sens_rel = calloc((size_t)m->nsens + 1, sizeof(int));
     d->inter_fcstr = calloc(n, sizeof(double));
     d->cpl = rc_cpl_data_new(m);
     /* friction per contact point: modes, and the scratch of the roots
@@ -89,7 +90,7 @@ rc_data *rc_data_new(const rc_model *m)
             jc_ok = d->sc->jcache != NULL;
         }
     }
-    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->inter_rband || !d->inter_settled || !d->inter_hacc || !d->mode_was || !d->sens_ton || !d->sens_new || !d->inter_fcstr || !d->cpl || !imp_ok || !jc_ok || !rc_ok ||
+    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->inter_rband || !d->inter_settled || !d->inter_hacc || !d->mode_was || !d->sens_ton || !d->sens_new || !d->sens_rel || !d->inter_fcstr || !d->cpl || !imp_ok || !jc_ok || !rc_ok ||
         !d->pt_slip || !d->sc->pt_share || !d->sc->inter_flim || !d->pt_lband || !d->sc->pt_work || !d->pt_flip || !d->sc->node_cache) {
         rc_data_free(d);
         return NULL;
@@ -112,6 +113,7 @@ void rc_data_free(rc_data *d)
     free(d->inter_hacc);
     free(d->mode_was);
     free(d->sens_ton);
+    free(d->sens_rel);
     free(d->sens_new);
     free(d->inter_fcstr);
     free(d->pt_slip);

@@ -75,8 +75,12 @@ typedef struct rc_data {
     int *mode_was;       /* [ninter] scratch of the events: the modes before */
     double *sens_ton;    /* [nsens] a distance sensor's time on (its trigger time plus
                             Tdelay, latched), INFINITY until it triggers (events.c) */
-    int *sens_new;       /* [nsens] 1: triggered at the last event, not yet written
-                            (the driver writes its event and clears it) */
+    int *sens_new;       /* [nsens] bit 1: triggered at the last event, bit 2: released
+                            its held bodies then, not yet written (the driver
+                            writes the events and clears it) */
+    int *sens_rel;       /* [nsens] 1: a sensor found in the run that holds bodies
+                            (rc_model.sens_hold) has released them (set at the
+                            event of its time on; the imposed rows read it) */
     double *inter_fcstr; /* [ninter] the normal force a settled contact's
                             constraint carries (IDA path, engine/constraints/stick.c;
                             set at records, 0 otherwise) [N] */

@@ -32,7 +32,7 @@ int rc_imp_jac(const rc_model *m, const rc_data *d, double t, const double *y, d
     memset(dp, 0, (size_t)ny * sizeof(double));
     /* dP/dy, P the power of the reactions; cf[r]: dP/d(free rate of row r) */
     for (int k = 0; k < p->nt; k++) {
-        if (t > p->ttstop[k] || t <= p->ttstart[k] || p->tdir[k] < 0) continue;
+        if (!RC_IMP_T_ON(p, k, t, d->sens_rel) || p->tdir[k] < 0) continue;
         const int r = p->trow[k];
         const double mass = m->body_mass[p->tbody[k]];
         const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t);
@@ -41,7 +41,7 @@ int rc_imp_jac(const rc_model *m, const rc_data *d, double t, const double *y, d
         dp[r] += mass * (a - d->sc->imp_free[r]);
     }
     for (int j = 0; j < p->nr; j++) {
-        if (t > p->rtstop[j]) continue;
+        if (!RC_IMP_R_ON(p, j, t, d->sens_rel)) continue;
         const int b = p->rbody[j], a = m->body_yadr[b];
         const double *J = m->body_J + 9 * b, *w = y + a + 10;
         double wgd[3], jw[3];
@@ -73,7 +73,7 @@ int rc_imp_jac(const rc_model *m, const rc_data *d, double t, const double *y, d
      * P = m lambda (u.v) with lambda = a - u.a_free gives dP/dy = m lambda u
      * on the velocities and -m (u.v) u.(d a_free/dy) */
     for (int k = 0; k < p->nt; k++) {
-        if (t > p->ttstop[k] || t <= p->ttstart[k] || p->tdir[k] >= 0) continue;
+        if (!RC_IMP_T_ON(p, k, t, d->sens_rel) || p->tdir[k] >= 0) continue;
         const int r = p->trow[k];
         const double mass = m->body_mass[p->tbody[k]], *u = p->tu + 3 * k;
         const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t);
@@ -105,7 +105,7 @@ int rc_imp_jac(const rc_model *m, const rc_data *d, double t, const double *y, d
         }
     /* the rotation rows: d(R^T dw_g/dt)/dq */
     for (int j = 0; j < p->nr; j++) {
-        if (t > p->rtstop[j]) continue;
+        if (!RC_IMP_R_ON(p, j, t, d->sens_rel)) continue;
         const int b = p->rbody[j], a = m->body_yadr[b];
         double wgd[3];
         for (int k = 0; k < 3; k++) {

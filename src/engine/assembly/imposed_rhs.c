@@ -28,7 +28,7 @@ void rc_imp_rhs(const rc_model *m, const rc_data *d, double t, const double *y, 
     double power = 0.0; /* of the reactions [W] */
     /* translations: reaction m (a_imposed - a_free) along the component */
     for (int k = 0; k < p->nt; k++) {
-        if (t > p->ttstop[k] || t <= p->ttstart[k]) continue;
+        if (!RC_IMP_T_ON(p, k, t, d->sens_rel)) continue;
         const int r = p->trow[k];
         const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t);
         if (p->tdir[k] < 0) {
@@ -52,7 +52,7 @@ void rc_imp_rhs(const rc_model *m, const rc_data *d, double t, const double *y, 
     /* rotations: omega = R^T w_g(t), rate R^T dw_g/dt; reaction torque
      * J (omegadot_imposed - omegadot_free), body frame */
     for (int j = 0; j < p->nr; j++) {
-        if (t > p->rtstop[j]) continue;
+        if (!RC_IMP_R_ON(p, j, t, d->sens_rel)) continue;
         const int b = p->rbody[j], a = m->body_yadr[b];
         const double *J = m->body_J + 9 * b, *w = y + a + 10;
         double wgd[3], wd[3], dw[3];

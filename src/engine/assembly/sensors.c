@@ -1,6 +1,7 @@
 /*
  * Distance sensors (/SENSOR/DIST; model/sensor.c, docs/theory.md
- * "Sensors"): which of a sensor's root functions are live, and an
+ * "Sensors"): which of a sensor's root functions are live (the trigger
+ * roots, and the release root of a sensor that releases a held body), and an
  * interface's start under a sensor (the distance and the root functions
  * are in assemble_rhs.c, with the kernels' material points). Pure: no allocation, no output (the root functions run inside
  * the integrator's rootfinding).
@@ -13,7 +14,8 @@
 int rc_sens_root_live(const rc_model *m, int j)
 {
     const int k = j / 2;
-    return m->sens_kind[k] == 1 && m->sens_d[2 * k + (j % 2 ? 0 : 1)] > 0;
+    /* the first slot of a sensor releasing a held body: its release root */
+    return (m->sens_kind[k] == 1 && m->sens_d[2 * k + (j % 2 ? 0 : 1)] > 0) || (j % 2 == 0 && m->sens_hold[k]);
 }
 
 double rc_sens_inter_ton(const rc_model *m, const rc_data *d, int i)

@@ -438,12 +438,30 @@ static void sens_propagate(const rc_model *m, rc_data *d)
     }
 }
 
+/* The sensors found in the run that hold bodies and are on at t (or whose
+ * release root crossed: roots, the sensors' block; NULL: none) release
+ * them: rc_data.sens_rel, read by the imposed rows. Returns how many. */
+static int sens_release(const rc_model *m, rc_data *d, double t, const int *roots)
+{
+    int n = 0;
+    for (int k = 0; k < m->nsens; k++) {
+        if (!m->sens_hold[k] || d->sens_rel[k] || !isfinite(d->sens_ton[k])) continue;
+        if (d->sens_ton[k] <= t || (roots && roots[2 * k])) {
+            d->sens_rel[k] = 1;
+            d->sens_new[k] |= 2;
+            n++;
+        }
+    }
+    return n;
+}
+
 /* The sensors' times on at the start: time sensors' Tdelay, a distance
  * sensor out of its bounds then triggered at t, the logic sensors of them. */
 static void sens_init(const rc_model *m, rc_data *d, double t, const double *y)
 {
     for (int k = 0; k < m->nsens; k++) {
         d->sens_new[k] = 0;
+        d->sens_rel[k] = 0;
         d->sens_ton[k] = m->sens_kind[k] == 0 ? m->sens_tdelay[k] : INFINITY;
         if (m->sens_kind[k] != 1) continue;
         /* out of its bounds at the start: triggered then */
@@ -454,6 +472,7 @@ static void sens_init(const rc_model *m, rc_data *d, double t, const double *y)
         }
     }
     sens_propagate(m, d);
+    sens_release(m, d, t, NULL);
 }
 
 void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y)
@@ -708,15 +727,18 @@ static int sensors_apply(const rc_model *m, rc_data *d, double t, double *y, con
 {
     const int *r = roots + rc_root_sens_base(m);
     int any = 0;
+    /* a release root crossed (a time on known before this event) */
+    if (sens_release(m, d, t, r)) *restart = 1; /* the holds end: the imposed rows jump */
     for (int k = 0; k < m->nsens; k++)
-        if ((r[2 * k] || r[2 * k + 1]) && !isfinite(d->sens_ton[k])) {
+        if (m->sens_kind[k] == 1 && (r[2 * k] || r[2 * k + 1]) && !isfinite(d->sens_ton[k])) {
             d->sens_ton[k] = t + m->sens_tdelay[k];
-            d->sens_new[k] = 1;
+            d->sens_new[k] |= 1;
             any = 1;
             *restart = 1; /* its roots leave the set: start afresh */
         }
     if (!any) return n;
     sens_propagate(m, d); /* the logic sensors of those */
+    sens_release(m, d, t, NULL); /* the holds of those on now (no delay) */
     for (int i = 0; i < m->ninter; i++) {
         const int s = m->inter_sens[i];
         if (s < 0 || d->inter_mode[i] != RC_MODE_INACTIVE || t < rc_sens_inter_ton(m, d, i) || t > m->inter_tstop[i])

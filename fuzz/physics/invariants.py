@@ -187,7 +187,7 @@ def check_exit(scene, run, rc, stderr, timed_out, stopped=0.0):
                             (f": {msg}" if msg else ""), exit=rc))
         return out
     if timed_out:
-        out.append(viol("a_timeout", run, f"run exceeded the time limit ({timed_out:g} s)"))
+        out.append(viol("a_timeout", run, f"run exceeded the time limit ({timed_out:g} s of CPU, or 4 x that of wall clock)"))
     elif rc == 3:
         out.append(viol("a_solver_failure", run, f"exit 3: {msg}", exit=rc))
     elif rc == 2 and ("too stiff for double precision" in msg or "below the resolution of the" in msg):

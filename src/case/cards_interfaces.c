@@ -468,6 +468,7 @@ static rc_status t24_begin(rc_reader *rd, const rc_block *b, int type, rc_case_t
  * the fields as each card read them, for the text it got). */
 typedef struct {
     const rc_field *surf2, *istf, *stfac, *stmax, *igap0, *inacti, *tstop;
+    const char *surf1_name; /* the first side's field */
 } t24_fields;
 
 /* Those checks, on the values read into t (and Igap0): two surfaces, no
@@ -476,14 +477,18 @@ typedef struct {
  * 1000 (the gap is zero: model/type7.c); Inacti 0 or 5; Tstop >= Tstart. */
 static rc_status t24_checks(rc_reader *rd, const rc_block *b, rc_case_type24 *t, int igap0, const t24_fields *f)
 {
-    if (t->surf2 == 0)
-        return rc_case_fail(rd, &t->line_loc[0], b->name, "surf_ID2",
-                            "blank or 0 (self-contact of surf_ID1) is not supported yet: a rigid body does not "
-                            "meet itself; expected the id of the second surface");
-    if (t->surf2 == t->surf1)
-        return rc_case_fail(rd, &t->line_loc[0], b->name, "surf_ID2",
-                            "expected a surface other than surf_ID1 = %d (self-contact is not supported yet), got %s",
-                            t->surf1, f->surf2->got);
+    /* the two sides: surfaces, or TYPE11's lines */
+    const int one = t->type == 11 ? t->line1 : t->surf1, two = t->type == 11 ? t->line2 : t->surf2;
+    const char *n1 = f->surf1_name, *n2 = f->surf2->name, *what = t->type == 11 ? "line" : "surface";
+    if (two == 0)
+        return rc_case_fail(rd, &t->line_loc[0], b->name, n2,
+                            "blank or 0 (self-contact of %s) is not supported yet: a rigid body does not "
+                            "meet itself; expected the id of the second %s",
+                            n1, what);
+    if (two == one)
+        return rc_case_fail(rd, &t->line_loc[0], b->name, n2,
+                            "expected a %s other than %s = %d (self-contact is not supported yet), got %s", what, n1,
+                            one, f->surf2->got);
     /* the stiffness: Stfac a stiffness value (Istf 1), or a factor on the
      * shells' stiffness (0, 1000: model/type7.c) */
     if (t->istf == RC_T7_DEFAULT) t->istf = 0;
@@ -593,7 +598,7 @@ rc_status rc_card_type24(rc_reader *rd, const rc_block *b)
     if (nd > 6)
         return rc_case_fail(rd, &b->lines[7].loc, b->name, NULL,
                             "expected 6 data lines (Ifric 0: no friction law lines), got %d", nd);
-    const t24_fields f = {&l1[1], &l1[2], &l4[0], &l3[1], &l3[2], &l5[2], &l4[4]};
+    const t24_fields f = {&l1[1], &l1[2], &l4[0], &l3[1], &l3[2], &l5[2], &l4[4], "surf_ID1"};
     if ((st = t24_checks(rd, b, t, igap0, &f))) return st;
     if ((st = t7_only_default(rd, b, &t->line_loc[2], &l3[3], ipen0,
                               "initial penetrations within each part; ricochet's bodies are rigid")))
@@ -704,7 +709,7 @@ rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
                             "expected 6 data lines (Ifric 0, IVIS2 0 and Ithe 0: no friction law, adhesion or "
                             "thermal lines), got %d",
                             nd);
-    const t24_fields f = {&l1[1], &l1[2], &l4[0], &l3[1], &l3[2], &l5[3], &l4[4]};
+    const t24_fields f = {&l1[1], &l1[2], &l4[0], &l3[1], &l3[2], &l5[3], &l4[4], "surf_ID1"};
     if ((st = t24_checks(rd, b, t, igap0, &f))) return st;
     if ((st = t7_only_default(rd, b, &t->line_loc[0], &l1[4], igap,
                               "a variable gap from the elements' thicknesses and sizes; ricochet's TYPE25 gap is zero")))
@@ -722,6 +727,204 @@ rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
     (void)gap_max_m;
     (void)ishape;
     (void)edge_angle;
+    (void)xfreq;
+    return rc_note_id(rd, RC_IDK_INTER, t->id, &t->loc, b->hdr->text);
+}
+
+/* ======================================================================
+ * /INTER/TYPE11 and /INTER/TYPE19
+ * ====================================================================== */
+
+/* /INTER/TYPE11/inter_ID: title and Radioss's four lines (layouts of 11.0
+ * to 2017), or five (2018 and later: the fric_ID line); the thermal lines
+ * of Ithe are refused with their flag. One table reads every layout from
+ * 11.0 on: the columns a version lacks (Ithe before 14.0, Irem_gap before
+ * 2020, dtmin Iform sens_ID in 11.0) are blank there, and 11.0's Multimp
+ * (columns 51-60, blank from 12.0 on) is read, unused. Read into c->type24
+ * (type 11) with the two /LINE ids; the line roles of t->line_loc are
+ * TYPE24's (line 1, line 1, Stmin, Stfac, Inacti, fric_ID). */
+rc_status rc_card_type11(rc_reader *rd, const rc_block *b)
+{
+    int nd;
+    rc_status st;
+    rc_case_type24 *t = NULL;
+    if ((st = t24_begin(rd, b, 11, &t))) return st;
+    const int ver = rc_layout_version(rd), nmax = ver >= 2018 ? 5 : 4;
+    if ((st = rc_card_lines(rd, b, t->title, 4, nmax,
+                            nmax == 5 ? "line_IDs line_IDm Istf Ithe Igap Multimp Irem_gap Idel, Stmin Stmax "
+                                        "%mesh_size dtmin Iform sens_ID, Stfac Fric Gapmin Tstart Tstop, IBC "
+                                        "Inacti VISs VISF Bumult[, fric_ID]"
+                                      : "line_IDs line_IDm Istf Ithe Igap Multimp Irem_gap Idel, Stmin Stmax "
+                                        "%mesh_size dtmin Iform sens_ID, Stfac Fric Gapmin Tstart Tstop, IBC "
+                                        "Inacti VISs VISF Bumult",
+                            &nd)))
+        return st;
+    int ithe = 0, igap = 0, multimp = 0, irem_gap = 0, idel = 0, iform = 0, ibc = 0;
+    double mesh_size = 0, dtmin = 0, visf = RC_T7_DEF_VISF, bumult = 0;
+    static const char heat[] = "heat transfer: ricochet has no temperatures";
+    rc_field l1[] = {
+        RC_F_INT("line_IDs", &t->line1, 0, RC_FF_POS),
+        {.name = "line_IDm", .width = 10, .type = RC_FT_INT, .out = &t->line2, .flags = RC_FF_NONNEG},
+        RC_F_INT("Istf", &t->istf, 0, RC_FF_NONNEG),
+        {.name = "Ithe", .width = 10, .type = RC_FT_INT, .out = &ithe, .flags = RC_FF_ONLY0, .note = heat},
+        RC_F_INT("Igap", &igap, 0, RC_FF_NONNEG),
+        RC_F_INT("Multimp", &multimp, 0, RC_FF_NONNEG),
+        RC_F_INT("Irem_gap", &irem_gap, 0, RC_FF_NONNEG),
+        RC_F_INT("Idel", &idel, 0, 0)};
+    rc_field l2[] = {
+        RC_F_REALD("Stmin", &t->stmin, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("Stmax", &t->stmax, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("%mesh_size", &mesh_size, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("dtmin", &dtmin, 0, RC_FF_NONNEG, RC_D_T),
+        RC_F_INT("Iform", &iform, 0, RC_FF_NONNEG),
+        RC_F_INT("sens_ID", &t->sensor_id, 0, RC_FF_NONNEG)};
+    rc_field l3[] = {
+        RC_F_REALD("Stfac", &t->stfac, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("Fric", &t->fric, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("Gapmin", &t->gapmin, 0, RC_FF_NONNEG, RC_D_L),
+        RC_F_REALD("Tstart", &t->tstart, 0, 0, RC_D_T),
+        RC_F_REALD("Tstop", &t->tstop, RC_DEF_TSTOP, RC_FF_ZDEF, RC_D_T)};
+    rc_field l4[] = {
+        {.name = "IBC", .width = 10, .type = RC_FT_INT, .out = &ibc, .flags = RC_FF_ONLY0,
+         .note = "boundary conditions of the secondary nodes at deactivation"},
+        RC_F_SKIP(20),
+        RC_F_INT("Inacti", &t->inacti, 0, 0),
+        RC_F_REALD("VISs", &t->viss, RC_T7_DEF_VISS, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("VISF", &visf, RC_T7_DEF_VISF, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("Bumult", &bumult, 0, RC_FF_NONNEG, RC_D_NONE)};
+    rc_field l5[] = {RC_F_SKIP(90), RC_F_INT("fric_ID", &t->fric_id, 0, RC_FF_NONNEG)};
+    rc_field *lines[5] = {l1, l2, l3, l4, l5};
+    const int nf[5] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5)};
+    static const int role[5] = {0, 2, 3, 4, 5}; /* TYPE24's line of each */
+    t->line_loc[1] = t->line_loc[5] = b->lines[1].loc;
+    for (int k = 0; k < nd; k++) {
+        t->line_loc[role[k]] = b->lines[k + 1].loc;
+        if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
+    }
+    const rc_field igap0 = RC_F_INT("Igap0", NULL, 0, 0);
+    const t24_fields f = {&l1[1], &l1[2], &l3[0], &l2[1], &igap0, &l4[2], &l3[4], "line_IDs"};
+    if ((st = t24_checks(rd, b, t, 0, &f))) return st;
+    if ((st = t7_only_default(rd, b, &t->line_loc[0], &l1[4], igap,
+                              "a variable gap from the elements' thicknesses and sizes; 0 is the constant gap Gapmin")))
+        return st;
+    if (visf != RC_T7_DEF_VISF)
+        return rc_case_fail(rd, &t->line_loc[4], b->name, "VISF",
+                            "expected 1, 0 or blank (the default), got %s: not supported yet (ricochet's friction "
+                            "per contact point has no tangential damping)",
+                            l4[4].got);
+    if (iform > 2 && iform != RC_T7_DEFAULT)
+        return rc_case_fail(rd, &t->line_loc[2], b->name, "Iform",
+                            "expected 0, 1, 2 or 1000 (friction penalty formulation), got %s", l2[4].got);
+    (void)multimp;
+    (void)irem_gap;
+    (void)idel;
+    return rc_note_id(rd, RC_IDK_INTER, t->id, &t->loc, b->hdr->text);
+}
+
+/* /INTER/TYPE19/inter_ID: title and Radioss's six lines; the curvature line
+ * of Icurv 1, 2, the friction law lines of Ifric and the thermal lines of
+ * Ithe are refused with their flags. One table reads every layout from
+ * 11.0 on (the columns a version lacks are blank there: Ithe before 2021,
+ * Iedge in 14.0, %mesh_size Irem_gap Irem_i2 before 2020, dtmin and
+ * sens_ID in 11.0, fric_ID before 2018). Read into c->type24 (type 19). */
+rc_status rc_card_type19(rc_reader *rd, const rc_block *b)
+{
+    int nd;
+    rc_status st;
+    rc_case_type24 *t = NULL;
+    if ((st = t24_begin(rd, b, 19, &t))) return st;
+    if ((st = rc_card_lines(rd, b, t->title, 6, 12,
+                            "surf_IDs surf_IDm Istf Ithe Igap Iedge Ibag Idel Icurv, Fscalegap Gapmax, Stmin "
+                            "Stmax %mesh_size dtmin Irem_gap Irem_i2, Stfac Fric Gapmin Tstart Tstop, IBC (blank) "
+                            "Inacti VISs VISF Bumult, Ifric Ifiltr Xfreq Iform sens_ID (blank) fric_ID",
+                            &nd)))
+        return st;
+    int ithe = 0, igap = 0, iedge = 0, ibag = 0, idel = 0, icurv = 0, irem_gap = 0, irem_i2 = 0, ibc = 0;
+    int ifric = 0, ifiltr = 0, iform = 0;
+    double fscalegap = 0, gapmax = 0, mesh_size = 0, dtmin = 0, visf = RC_T7_DEF_VISF, bumult = 0, xfreq = 0;
+    static const char heat[] = "heat transfer: ricochet has no temperatures";
+    rc_field l1[] = {
+        RC_F_INT("surf_IDs", &t->surf1, 0, RC_FF_POS),
+        {.name = "surf_IDm", .width = 10, .type = RC_FT_INT, .out = &t->surf2, .flags = RC_FF_NONNEG},
+        RC_F_INT("Istf", &t->istf, 0, RC_FF_NONNEG),
+        {.name = "Ithe", .width = 10, .type = RC_FT_INT, .out = &ithe, .flags = RC_FF_ONLY0, .note = heat},
+        RC_F_INT("Igap", &igap, 0, RC_FF_NONNEG),
+        RC_F_INT("Iedge", &iedge, 0, RC_FF_NONNEG),
+        RC_F_INT("Ibag", &ibag, 0, RC_FF_NONNEG),
+        RC_F_INT("Idel", &idel, 0, 0),
+        {.name = "Icurv", .width = 10, .type = RC_FT_INT, .out = &icurv, .flags = RC_FF_ONLY0,
+         .note = "a gap envelope with curvature"}};
+    rc_field l2[] = {
+        RC_F_REALD("Fscalegap", &fscalegap, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("Gapmax", &gapmax, 0, RC_FF_NONNEG, RC_D_L)};
+    rc_field l3[] = {
+        RC_F_REALD("Stmin", &t->stmin, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("Stmax", &t->stmax, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("%mesh_size", &mesh_size, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("dtmin", &dtmin, 0, RC_FF_NONNEG, RC_D_T),
+        RC_F_INT("Irem_gap", &irem_gap, 0, RC_FF_NONNEG),
+        RC_F_INT("Irem_i2", &irem_i2, 0, RC_FF_NONNEG)};
+    rc_field l4[] = {
+        RC_F_REALD("Stfac", &t->stfac, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("Fric", &t->fric, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("Gapmin", &t->gapmin, 0, RC_FF_NONNEG, RC_D_L),
+        RC_F_REALD("Tstart", &t->tstart, 0, 0, RC_D_T),
+        RC_F_REALD("Tstop", &t->tstop, RC_DEF_TSTOP, RC_FF_ZDEF, RC_D_T)};
+    rc_field l5[] = {
+        {.name = "IBC", .width = 10, .type = RC_FT_INT, .out = &ibc, .flags = RC_FF_ONLY0,
+         .note = "boundary conditions of the secondary nodes at deactivation"},
+        RC_F_SKIP(20),
+        RC_F_INT("Inacti", &t->inacti, 0, 0),
+        RC_F_REALD("VISs", &t->viss, RC_T7_DEF_VISS, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("VISF", &visf, RC_T7_DEF_VISF, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("Bumult", &bumult, 0, RC_FF_NONNEG, RC_D_NONE)};
+    rc_field l6[] = {
+        {.name = "Ifric", .width = 10, .type = RC_FT_INT, .out = &ifric, .flags = RC_FF_ONLY0,
+         .note = "the friction laws of TYPE19; a /FRICTION card with its Ifric applies to the interface (fric_ID)"},
+        {.name = "Ifiltr", .width = 10, .type = RC_FT_INT, .out = &ifiltr, .flags = RC_FF_ONLY0,
+         .note = "the friction filter of TYPE19; a /FRICTION card with its Ifiltr applies to the interface (fric_ID)"},
+        RC_F_REALD("Xfreq", &xfreq, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_INT("Iform", &iform, 0, RC_FF_NONNEG),
+        RC_F_INT("sens_ID", &t->sensor_id, 0, RC_FF_NONNEG),
+        RC_F_SKIP(30),
+        RC_F_INT("fric_ID", &t->fric_id, 0, RC_FF_NONNEG)};
+    rc_field *lines[6] = {l1, l2, l3, l4, l5, l6};
+    const int nf[6] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5), RC_NF(l6)};
+    for (int k = 0; k < 6; k++) {
+        t->line_loc[k] = b->lines[k + 1].loc;
+        if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
+    }
+    if (nd > 6)
+        return rc_case_fail(rd, &b->lines[7].loc, b->name, NULL,
+                            "expected 6 data lines (Icurv, Ifric and Ithe 0: no curvature, friction law or "
+                            "thermal lines), got %d",
+                            nd);
+    const rc_field igap0 = RC_F_INT("Igap0", NULL, 0, 0);
+    const t24_fields f = {&l1[1], &l1[2], &l4[0], &l3[1], &igap0, &l5[2], &l4[4], "surf_IDs"};
+    if ((st = t24_checks(rd, b, t, 0, &f))) return st;
+    if ((st = t7_only_default(rd, b, &t->line_loc[0], &l1[4], igap,
+                              "a variable gap from the elements' thicknesses and sizes; 0 is the constant gap Gapmin")))
+        return st;
+    if (visf != RC_T7_DEF_VISF)
+        return rc_case_fail(rd, &t->line_loc[4], b->name, "VISF",
+                            "expected 1, 0 or blank (the default), got %s: not supported yet (ricochet's friction "
+                            "per contact point has no tangential damping)",
+                            l5[4].got);
+    if (iform > 2 && iform != RC_T7_DEFAULT)
+        return rc_case_fail(rd, &t->line_loc[5], b->name, "Iform",
+                            "expected 0, 1, 2 or 1000 (friction penalty formulation), got %s", l6[3].got);
+    /* Iedge: which edges TYPE19 makes of the surfaces (0 and 1000 the
+     * default); the box pair has the boxes' 12 sharp edges whatever it is */
+    t->iedge = iedge == RC_T7_DEFAULT ? 0 : iedge;
+    (void)ibag;
+    (void)idel;
+    (void)fscalegap;
+    (void)gapmax;
+    (void)mesh_size;
+    (void)dtmin;
+    (void)irem_gap;
+    (void)irem_i2;
+    (void)bumult;
     (void)xfreq;
     return rc_note_id(rd, RC_IDK_INTER, t->id, &t->loc, b->hdr->text);
 }

@@ -303,6 +303,59 @@ static int mesh_box(const rc_case *c, const rc_case_surf *cs, rc_case_surf *out)
     return 1;
 }
 
+/* The two sides of a TYPE11 (its /LINE/SURF lines, each of one surface)
+ * or a TYPE19 (its surfaces): each a /SURF/BOX or a closed box mesh
+ * (mesh_box: its box in bx[q]); side[q] the surface id. TYPE11's edges are
+ * then the box pair's edge pairs alone, TYPE19's its corners and edges
+ * (docs/theory.md 3.9); any other surface is refused. */
+static rc_status box_sides(const rc_case *c, const rc_case_type24 *t, rc_case_surf *bx, int *side, rc_error *err)
+{
+    static const char *const lname[2] = {"line_IDs", "line_IDm"}, *const sname[2] = {"surf_IDs", "surf_IDm"};
+    for (int q = 0; q < 2; q++) {
+        const char *field = t->type == 11 ? lname[q] : sname[q];
+        int sid = q ? t->surf2 : t->surf1;
+        if (t->type == 11) {
+            const int lid = q ? t->line2 : t->line1;
+            const rc_case_line *l = NULL;
+            for (int k = 0; k < c->nline && !l; k++)
+                if (c->line[k].id == lid) l = &c->line[k];
+            if (!l)
+                RC_RAISE(err, RC_EINPUT,
+                         RC_LOCFMT "card /INTER/TYPE11/%d, field %s: expected the id of a /LINE/SURF, got %d (no such line)",
+                         RC_LOC(t->line_loc[0]), t->id, field, lid);
+            if (l->n != 1)
+                RC_RAISE(err, RC_EINPUT,
+                         RC_LOCFMT "card /INTER/TYPE11/%d, field %s: /LINE/SURF/%d lists %d surfaces: not supported yet "
+                                   "(ricochet's edges are those of one box); expected a line of one surface, a "
+                                   "/SURF/BOX or a closed box mesh",
+                         RC_LOC(t->line_loc[0]), t->id, field, lid, l->n);
+            sid = l->surf[0];
+            if (rc_case_find_surf(c, sid) < 0)
+                RC_RAISE(err, RC_EINPUT,
+                         RC_LOCFMT "card /LINE/SURF/%d, field surf_ID: expected the id of a /SURF, got %d (no such "
+                                   "surface); the line is %s of /INTER/TYPE11/%d at %s:%d",
+                         RC_LOC(rc_loc_at(l->surf_loc, 0, l->loc)), lid, sid, field, t->id, RC_LOC(t->line_loc[0]));
+        }
+        const int s = rc_case_find_surf(c, sid);
+        if (s < 0)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card /INTER/TYPE19/%d, field %s: expected the id of a /SURF, got %d (no such surface)",
+                     RC_LOC(t->line_loc[0]), t->id, field, sid);
+        const rc_case_surf *cs = &c->surf[s];
+        side[q] = sid;
+        if (cs->kind == RC_CASE_SURF_BOX) continue;
+        if (cs->kind == RC_CASE_SURF_SEG && mesh_box(c, cs, &bx[q])) continue;
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card /INTER/TYPE%d/%d, field %s: /SURF/%s/%d is not supported yet: ricochet models "
+                           "TYPE%d (%s) between two boxes only; expected a /SURF/BOX or a closed box mesh (a "
+                           "/SURF/SEG of 6 quadrilaterals on the 8 corners of a rectangular box, taken as that box)",
+                 RC_LOC(t->line_loc[0]), t->type, t->id, field, rc_t7_kinds[cs->kind], sid, t->type,
+                 t->type == 11 ? "the edges of each against the edges of the other"
+                               : "the nodes of each against the other's faces and the edges against the edges");
+    }
+    return RC_OK;
+}
+
 rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
 {
     memset(x, 0, sizeof *x);
@@ -343,17 +396,22 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
     x->k24 = calloc((size_t)c->ntype24 + 1, sizeof *x->k24);
     x->name24 = calloc((size_t)c->ntype24 + 1, sizeof *x->name24);
     x->bx = calloc(2 * (size_t)c->ntype24 + 1, sizeof *x->bx);
+    x->side = calloc(2 * (size_t)c->ntype24 + 1, sizeof *x->side);
     x->t24 = calloc((size_t)c->ntype24 + 1, sizeof *x->t24);
-    if (!x->k24 || !x->name24 || !x->bx || !x->t24) {
+    if (!x->k24 || !x->name24 || !x->bx || !x->side || !x->t24) {
         rc_type7_end(x);
         RC_RAISE(err, RC_ENOMEM, "out of memory");
     }
     for (int i = 0; i < c->ntype24 && !st; i++) {
         const rc_case_type24 *t = &c->type24[i];
-        const int sid[2] = {t->surf1, t->surf2};
+        if (t->type == 11 || t->type == 19) { /* two boxes or closed box meshes: box_sides */
+            st = box_sides(c, t, &x->bx[2 * i], &x->side[2 * i], err);
+            for (int q = 0; q < 2 && !st; q++) x->nbx += x->bx[2 * i + q].kind == RC_CASE_SURF_BOX;
+        }
+        const int sid[2] = {t->type == 11 ? x->side[2 * i] : t->surf1, t->type == 11 ? x->side[2 * i + 1] : t->surf2};
         static const char *const fname[2] = {"surf_ID1", "surf_ID2"};
         int nbox = 0;
-        for (int q = 0; q < 2 && !st; q++) {
+        for (int q = 0; q < 2 && !st && t->type != 11 && t->type != 19; q++) {
             const int s = rc_case_find_surf(c, sid[q]);
             if (s < 0) {
                 st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /INTER/TYPE%d/%d, field %s: expected the id of a /SURF, got %d (no such surface)",
@@ -404,7 +462,12 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
                             RC_LOC(t->line_loc[5]), t->type, t->id, t->fric_id);
         }
         x->k24[i] = t->stfac;
-        if (!st && t->istf == 0) st = pair_stiffness(c, t, &x->k24[i], err);
+        if (!st && t->istf == 0) {
+            rc_case_type24 ts = *t; /* TYPE11: its lines' surfaces */
+            ts.surf1 = sid[0];
+            ts.surf2 = sid[1];
+            st = pair_stiffness(c, &ts, &x->k24[i], err);
+        }
         snprintf(x->name24[i], sizeof x->name24[i], "/INTER/TYPE%d/%d", t->type, t->id);
     }
     if (st) {
@@ -504,8 +567,12 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
     int nbs = 0;
     if (c->ntype24) memcpy(x->t24, c->type24, (size_t)c->ntype24 * sizeof *x->t24);
     for (int i = 0; i < c->ntype24; i++) {
-        if (x->bx[2 * i].kind != RC_CASE_SURF_BOX) continue;
+        if (c->type24[i].type == 11) { /* the surfaces of its lines */
+            x->t24[i].surf1 = x->side[2 * i];
+            x->t24[i].surf2 = x->side[2 * i + 1];
+        }
         for (int q = 0; q < 2; q++) {
+            if (x->bx[2 * i + q].kind != RC_CASE_SURF_BOX) continue;
             rc_case_surf *bs = &x->surf[x->nuser + x->npts + nbs];
             *bs = x->bx[2 * i + q];
             bs->id = RC_TYPE7_SURF_ID0 - (x->npts + nbs);
@@ -574,12 +641,12 @@ rc_status rc_type7_contacts(rc_type7_case *x, rc_case *c, const rc_model *m, rc_
                                "surfaces of two bodies (a rigid body does not meet itself)",
                      RC_LOC(t->line_loc[0]), t->type, t->id, t->surf1, t->surf2, m->surf_body[s1] < 0 ? " (none, fixed)" : "");
         rc_case_type6 *t6 = &x->type6[n++];
-        *t6 = (rc_case_type6){.id = t->id, .surf1 = t->surf1, .surf2 = t->surf2, .fric = t->fric, .gap = 0.0,
+        *t6 = (rc_case_type6){.id = t->id, .surf1 = t->surf1, .surf2 = t->surf2, .fric = t->fric, .gap = t->gapmin,
                               .tstart = t->tstart, .tstop = t->tstop, .inacti = t->inacti, .ascalef = 1.0,
                               .ascalev = 1.0, .fct_ld = RC_TYPE7_FUNCT_ID, .ascalex = x->len,
                               .fscaleld = x->k24[i] * x->len, .fscaleul = 1.0, .fscalev = 1.0, .loc = t->loc,
                               .sensor_id = t->sensor_id, .name = x->name24[i], .oneway = 0, .vis_crit = t->viss,
-                              .fric_id = t->fric_id};
+                              .fric_id = t->fric_id, .edges_only = t->type == 11};
         t6->line_loc[0] = t->line_loc[0];
         t6->line_loc[1] = t6->line_loc[3] = t6->line_loc[4] = t->line_loc[3];
         t6->line_loc[2] = t->line_loc[5];
@@ -604,6 +671,7 @@ void rc_type7_end(rc_type7_case *x)
     free(x->k24);
     free(x->name24);
     free(x->bx);
+    free(x->side);
     free(x->t24);
     memset(x, 0, sizeof *x);
 }

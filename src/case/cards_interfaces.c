@@ -296,6 +296,35 @@ static rc_status t7_only_default(rc_reader *rd, const rc_block *b, const rc_loc 
                         f->got, note);
 }
 
+/* Inacti of the node-to-surface and edge cards (TYPE7, TYPE11, TYPE19):
+ * 0 and 1000 no action; 5 the gap reduced by the initial penetration; 6
+ * the same with Radioss's 5 % depenetration, read as 5 (docs/theory.md
+ * 3.7: the start is force-free either way); 1, 2 (the initially
+ * penetrating nodes or segments left out) and 3 (the nodes moved out)
+ * refused with their reason. */
+static rc_status t7_inacti(rc_reader *rd, const rc_block *b, const rc_loc *loc, int *inacti, const rc_field *f)
+{
+    if (*inacti == RC_T7_DEFAULT) *inacti = 0;
+    if (*inacti == 0 || *inacti == 5 || *inacti == 6) return RC_OK;
+    if (*inacti == 1 || *inacti == 2)
+        return rc_case_fail(rd, loc, b->name, "Inacti",
+                            "got %s: not supported yet: Inacti %d takes the initially penetrating %s out of the "
+                            "contact for the whole run, where ricochet's contact of a rigid body keeps every point "
+                            "of it; expected 0, blank, 1000 (no action), 5 or 6 (the gap reduced by the initial "
+                            "penetration)",
+                            f->got, *inacti, *inacti == 1 ? "secondary nodes" : "main segments");
+    if (*inacti == 3)
+        return rc_case_fail(rd, loc, b->name, "Inacti",
+                            "got %s: not supported: Inacti 3 moves the penetrating nodes onto the surface, which "
+                            "for a rigid body would change its shape and mass at t = 0; expected 0, blank, 1000, 5 or "
+                            "6 (the initial penetration taken as a reduction of the gap), or the bodies apart at t = 0",
+                            f->got);
+    return rc_case_fail(rd, loc, b->name, "Inacti",
+                        "expected 0, blank, 1000 (no action), 5 or 6 (the gap reduced by the initial penetration), "
+                        "got %s",
+                        f->got);
+}
+
 /* /INTER/TYPE7/inter_ID: title and Radioss's six lines (layout of 11.0 and
  * later; the curvature line of Icurv, the friction law lines of Ifric and
  * the thermal lines of Ithe are refused with their flags). */
@@ -414,12 +443,7 @@ rc_status rc_card_type7(rc_reader *rd, const rc_block *b)
     if ((st = t7_only_default(rd, b, &t->line_loc[0], &l1[4], t->igap,
                               "a variable gap from the elements' thicknesses and sizes; 0 is the constant gap Gapmin")))
         return st;
-    if (t->inacti == RC_T7_DEFAULT) t->inacti = 0;
-    if (t->inacti != 0 && t->inacti != 5)
-        return rc_case_fail(rd, &t->line_loc[4], b->name, "Inacti",
-                            "expected 0, blank, 1000 (no action) or 5 (the gap reduced by the initial "
-                            "penetration), got %s: not supported yet",
-                            l5[2].got);
+    if ((st = t7_inacti(rd, b, &t->line_loc[4], &t->inacti, &l5[2]))) return st;
     if (t->visf != RC_T7_DEF_VISF)
         return rc_case_fail(rd, &t->line_loc[4], b->name, "VISF",
                             "expected 1, 0 or blank (the default), got %s: not supported yet (ricochet's friction "
@@ -509,12 +533,19 @@ static rc_status t24_checks(rc_reader *rd, const rc_block *b, rc_case_type24 *t,
                             t->stmin, f->stmax->got);
     if (igap0 != 0 && igap0 != 1 && igap0 != RC_T7_DEFAULT)
         return rc_case_fail(rd, &t->line_loc[2], b->name, "Igap0", "expected 0, 1 or 1000, got %s", f->igap0->got);
-    if (t->inacti == RC_T7_DEFAULT) t->inacti = 0;
-    if (t->inacti != 0 && t->inacti != 5)
-        return rc_case_fail(rd, &t->line_loc[4], b->name, "Inacti",
-                            "expected 0, blank, 1000 (no action) or 5 (the gap reduced by the initial "
-                            "penetration), got %s: not supported yet",
-                            f->inacti->got);
+    /* TYPE11, TYPE19: TYPE7's values; TYPE24, TYPE25: -1 every initial
+     * penetration acts (ricochet's 0), 5 the main segment shifted by it */
+    if (t->type == 11 || t->type == 19) {
+        rc_status st = t7_inacti(rd, b, &t->line_loc[4], &t->inacti, f->inacti);
+        if (st) return st;
+    } else {
+        if (t->inacti == RC_T7_DEFAULT || t->inacti == -1) t->inacti = 0;
+        if (t->inacti != 0 && t->inacti != 5)
+            return rc_case_fail(rd, &t->line_loc[4], b->name, "Inacti",
+                                "expected -1 (every initial penetration acts), 0, blank, 1000 (no action) or 5 (the "
+                                "gap reduced by the initial penetration), got %s: not supported yet",
+                                f->inacti->got);
+    }
     if (t->tstop < t->tstart)
         return rc_case_fail(rd, &t->line_loc[3], b->name, "Tstop", "expected Tstop >= Tstart = %.15g, got %s",
                             t->tstart, f->tstop->got);

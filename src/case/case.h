@@ -182,7 +182,7 @@ typedef struct rc_case_type7 {
     int igap;                                 /* line 1: 0 or 1000 (constant gap) */
     double stmin, stmax;                      /* line 3 [N/m]: the bounds of Istf 0's stiffness (0: none) */
     double stfac, fric, gapmin, tstart, tstop; /* line 4: [N/m] (Istf 1) or [-] (Istf 0), [-] [m] [s] [s] */
-    int inacti;                               /* line 5: 0 or 5 (1000 read as 0) */
+    int inacti;                               /* line 5: 0, 5 or 6 (1000 read as 0; 6 compiled as 5) */
     double viss, visf;                        /* line 5: critical damping fractions [-] */
     int iform, sensor_id, fric_id;            /* line 6 */
     rc_loc loc;
@@ -207,7 +207,8 @@ typedef struct rc_case_type24 {
                                                  stiffness E t / 2; 1: k = Stfac */
     double stmin, stmax;                      /* line 3 [N/m]: the bounds of Istf 0's stiffness (0: none) */
     double stfac, fric, tstart, tstop;        /* line 4: [N/m] (Istf 1) or [-] (Istf 0), [-] [s] [s] */
-    int inacti;                               /* line 5: 0 or 5 (1000 read as 0) */
+    int inacti;                               /* line 5: 0 or 5 (1000 and TYPE24/25's -1 read as 0), or
+                                                 TYPE11/19's 6 (compiled as 5) */
     double viss;                              /* line 5: critical damping fraction [-] */
     int sensor_id, fric_id;                   /* line 6 */
     int iedge;                                /* TYPE25 line 1: 0 (1000 read as 0) or the edge option */

@@ -610,7 +610,8 @@ rc_status rc_type7_contacts(rc_type7_case *x, rc_case *c, const rc_model *m, rc_
             if (m->surf_body[s] == bm) continue; /* the main surface's own body */
             rc_case_type6 *t6 = &x->type6[n++];
             *t6 = (rc_case_type6){.id = t->id, .surf1 = c->surf[s].id, .surf2 = t->surf_id, .fric = t->fric,
-                                  .gap = t->gapmin, .tstart = t->tstart, .tstop = t->tstop, .inacti = t->inacti,
+                                  .gap = t->gapmin, .tstart = t->tstart, .tstop = t->tstop,
+                                  .inacti = t->inacti == 6 ? 5 : t->inacti, /* 6 read as 5 (theory 3.7) */
                                   .ascalef = 1.0, .ascalev = 1.0, .fct_ld = RC_TYPE7_FUNCT_ID, .ascalex = x->len,
                                   .fscaleld = x->k[i] * x->len, .fscaleul = 1.0, .fscalev = 1.0, .loc = t->loc,
                                   .sensor_id = t->sensor_id, .name = x->name[k], .oneway = 1, .vis_crit = t->viss,
@@ -642,7 +643,8 @@ rc_status rc_type7_contacts(rc_type7_case *x, rc_case *c, const rc_model *m, rc_
                      RC_LOC(t->line_loc[0]), t->type, t->id, t->surf1, t->surf2, m->surf_body[s1] < 0 ? " (none, fixed)" : "");
         rc_case_type6 *t6 = &x->type6[n++];
         *t6 = (rc_case_type6){.id = t->id, .surf1 = t->surf1, .surf2 = t->surf2, .fric = t->fric, .gap = t->gapmin,
-                              .tstart = t->tstart, .tstop = t->tstop, .inacti = t->inacti, .ascalef = 1.0,
+                              .tstart = t->tstart, .tstop = t->tstop, .inacti = t->inacti == 6 ? 5 : t->inacti,
+                              .ascalef = 1.0,
                               .ascalev = 1.0, .fct_ld = RC_TYPE7_FUNCT_ID, .ascalex = x->len,
                               .fscaleld = x->k24[i] * x->len, .fscaleul = 1.0, .fscalev = 1.0, .loc = t->loc,
                               .sensor_id = t->sensor_id, .name = x->name24[i], .oneway = 0, .vis_crit = t->viss,

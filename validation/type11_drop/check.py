@@ -19,7 +19,14 @@ touching points.
    free fall, no force;
 4. TYPE19, the same flat box: its corners against the face hold it:
    F = m g, P = m g / k;
-5. TYPE19, the bars of 1: the edges hold the bar: F = m g, P = m g / k.
+5. TYPE19, the bars of 1: the edges hold the bar: F = m g, P = m g / k;
+6. TYPE11 impact, no gravity, frictionless, undamped (VISs 1e-12): a bar
+   at 0.5 m/s strikes an equal free bar laid across it, edge on edge at
+   four crossings symmetric about the line of the centres: a central
+   elastic impact of equal masses: the momentum kept, the velocities
+   exchanged (the striker stops, the struck bar leaves at 0.5 m/s); the
+   peak force of the linear law v sqrt(k m*) and the contact time
+   pi sqrt(m* / k), m* = m / 2.
 """
 import math
 import os
@@ -142,6 +149,29 @@ def flat(card=19):
     return d
 
 
+V6 = 0.5                     # the striking bar's speed [m/s]
+
+
+def impact():
+    """A bar along x (/SURF/BOX 18, body 8) at V6 downwards onto an equal
+    free bar along y (/SURF/BOX 19, body 9), 1 mm below it, centred under
+    it: TYPE11, no gravity, VISs 1e-12."""
+    d = Deck("TYPE11: a bar striking an equal bar, edge on edge")
+    x8, x9 = (0.0, 0.0, W8 / 2 + 0.001), (0.0, 0.0, -W8 / 2)
+    d.nodes([(8, *x8), (9, *x9)])
+    d.grnod(8, [8], title="striker")
+    d.grnod(9, [9], title="struck")
+    d.rbody(8, 8, M8, JB, grnod=8, title="striker 6 kg")
+    d.rbody(9, 9, M8, (JB[1], JB[0], JB[2]), grnod=9, title="struck 6 kg")
+    d.box(18, 8, x8, (L8 / 2, W8 / 2, W8 / 2), title="striker along x")
+    d.box(19, 9, x9, (W8 / 2, L8 / 2, W8 / 2), title="struck along y")
+    lines(d, (118, 18), (119, 19))
+    type11(d, 11, 118, 119, K, viss=1e-12)
+    d.inivel(1, (0.0, 0.0, -V6), 8)
+    d.run(0.05, 0.001)
+    return d
+
+
 def edge_rest(name, r):
     with Dataset(r.path) as nc:
         x = nc["inter_contact_point"][-1, 0]
@@ -176,9 +206,29 @@ def main():
                 f"(m g / k = {MB * G / K:.9e} m, {e2:.1e} < 5e-5)")
     # 5. TYPE19: the edges hold the bar
     edge_rest("type19.bar.rest", rcval.Result(rcval.run(bars(19), "bars19")))
+    # 6. a central elastic impact of equal masses through the edges
+    r = rcval.Result(rcval.run(impact(), "impact"))
+    p0, p1 = M8 * (r.vel[0, 0] + r.vel[0, 1]), M8 * (r.vel[-1, 0] + r.vel[-1, 1])
+    em = abs(p1 - p0).max() / (M8 * V6)
+    ev = max(abs(r.vel[-1, 0, 2]), abs(r.vel[-1, 1, 2] + V6), abs(r.vel[-1, :, :2]).max()) / V6
+    opened = abs(r.fn[-1, 0]) == 0.0 and r.fn[:, 0].max() > 0
+    rcval.check("type11.impact.momentum", em < 1e-9 and opened,
+                f"rel. error {em:.1e} (< 1e-9): the two bars' momentum {p0[2]:.12f} -> {p1[2]:.12f} kg m/s through the "
+                f"edge impact (peak force {r.fn[:, 0].max():.6g} N, open at the end: {opened})")
+    rcval.check("type11.impact.exchange", ev < 1e-6,
+                f"rel. error {ev:.1e} (< 1e-6): equal masses, central, elastic: the striker's v_z {r.vel[-1, 0, 2]:.3e} "
+                f"m/s (0), the struck bar's {r.vel[-1, 1, 2]:.9f} m/s (-{V6}), no sideways velocity")
+    with Dataset(r.path) as nc:
+        fpk, dur = float(nc["impact_peak_force"][0]), float(nc["impact_duration"][0])
+    ms = M8 / 2
+    f_ref, t_ref = V6 * math.sqrt(K * ms), math.pi * math.sqrt(ms / K)
+    e1, e2 = rcval.rel(fpk, f_ref), rcval.rel(dur, t_ref)
+    rcval.check("type11.impact.law", max(e1, e2) < 1e-6,
+                f"max rel. error {max(e1, e2):.1e} (< 1e-6): peak force {fpk:.9g} N (v sqrt(k m*) = {f_ref:.9g} N, "
+                f"{e1:.1e}), contact time {dur:.9g} s (pi sqrt(m*/k) = {t_ref:.9g} s, {e2:.1e})")
     rcval.finish()
 
 
 if __name__ == "__main__":
     rcval.entry(main, lambda: {"bars.rad": bars(11), "mesh_bars.rad": mesh_bars(), "flat11.rad": flat(11),
-                               "flat19.rad": flat(19), "bars19.rad": bars(19)})
+                               "flat19.rad": flat(19), "bars19.rad": bars(19), "impact.rad": impact()})

@@ -2,11 +2,12 @@
  * Card dispatch: the table of supported cards (keyword, subtype, family
  * function), the Radioss cards ignored or planned, and the call of a
  * card's function. The card functions live in one file per family:
- *   cards_bodies.c      /NODE /GRNOD/NODE /RBODY /PART /GRPART/PART /GRPART/GRPART
+ *   cards_bodies.c      /NODE /GRNOD/NODE /RBODY /PART /GRPART/PART /GRPART/GRPART /LINE/SURF
  *   cards_mesh.c        /SHELL /SH3N /BRICK /TETRA4 /PENTA6 /TETRA10 /SPRING /PROP/SHELL /PROP/SOLID /PROP/SPRING /MAT
  *                       /SKEW/FIX /SKEW/MOV /SKEW/MOV2 /GRNOD/PART /GRNOD/GRNOD (called first)
  *   cards_surfaces.c    /SURF/PLANE /SURF/ELLIPS /SURF/CYL /SURF/BOX /SURF/SEG /SURF/PART
- *   cards_interfaces.c  /INTER/TYPE6 /INTER/TYPE7 /INTER/TYPE24 /INTER/TYPE25 /INTER/POWER
+ *   cards_interfaces.c  /INTER/TYPE6 /INTER/TYPE7 /INTER/TYPE24 /INTER/TYPE25 /INTER/TYPE11 /INTER/TYPE19
+ *                       /INTER/POWER
  *   cards_friction.c    /FRICTION /FRIC_ORIENT
  *   cards_couplings.c   /COUPLING/SPRING /COUPLING/CATENARY /COUPLING/CONTACT
  *   cards_joints.c      /JOINT/SPHERICAL /JOINT/REVOLUTE /JOINT/DISTANCE /JOINT/FIXED /JOINT/PRISMATIC

@@ -1,5 +1,6 @@
 /*
- * Cards of contact interfaces: /INTER/TYPE6, /INTER/TYPE7, /INTER/TYPE24, /INTER/TYPE25 and ricochet's /INTER/POWER
+ * Cards of contact interfaces: /INTER/TYPE6, /INTER/TYPE7, /INTER/TYPE24, /INTER/TYPE25, /INTER/TYPE11,
+ * /INTER/TYPE19 and ricochet's /INTER/POWER
  * (power-law contact with splines).
  * Layouts are field tables (case_internal.h), documented in
  * docs/case-format.md; references between cards are resolved by the

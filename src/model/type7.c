@@ -23,6 +23,13 @@
  * the segments it is attached to, and on one rigid body they cannot move
  * against them). The contacts are named "/INTER/TYPE7/<id> (nodes of
  * /RBODY/<id>)" and carry the card's id.
+ *
+ * /INTER/TYPE24 and /INTER/TYPE25 make one two-way contact of their two
+ * surfaces; /INTER/TYPE11 (each side a /LINE/SURF of one surface) and
+ * /INTER/TYPE19 the same between two boxes (/SURF/BOX or closed box meshes
+ * taken as their boxes, box_sides): TYPE11 the box pair's edge pairs alone
+ * (the contact's edges_only), TYPE19 the whole box pair (docs/theory.md
+ * 3.9).
  */
 #include <math.h>
 #include <stdio.h>

@@ -29,7 +29,8 @@
 #define T11_GEOM                                                                                          \
     "/BEGIN\ntype11 test\n      2022         0\n"                                                       \
     "                  kg                   m                   s\n"                                   \
-    "                  kg                   m                   s\n"                                   \
+    "                  kg                   m                   s\n" T11_BODIES
+#define T11_BODIES                                                                                        \
     "/NODE\n1,0.013,-0.021,0.0499\n/RBODY/1\nbar\n1,,,,2.0\n0.0033,0.0083,0.0083\n0,0,0\n"                 \
     "/SURF/BOX/30\nbar along x\n1\n0.013,-0.021,0.0499\n0.3,0.05,0.05\n"                                  \
     "/SURF/BOX/40\nbar along y\n0\n0,0,-0.05\n0.05,0.3,0.05\n"                                            \
@@ -185,6 +186,52 @@ static void test_type11_jacobian(void)
     rc_model_free(m);
 }
 
+/* The older layouts: 10.0 (three lines, no Stmin line) and 4.4 (the same
+ * in 8- and 16-character fields) give the 2022 card's values; TYPE19 is
+ * read from 10.0 on, refused before. */
+static void test_type11_layouts(void)
+{
+    static const char *const v[2] = {
+        "/BEGIN\nv100\n       100         0\n" T11_BODIES "/INTER/TYPE11/11\nedges\n"
+        "       130       140         1                   0         0                   0\n"
+        "               37000                 0.2               2e-05               0.001                 0.5\n"
+        "         0                             5                 0.3\n" T11_TAIL,
+        "/BEGIN\nv44\n        44\n" T11_BODIES "/INTER/TYPE11/11\nedges\n"
+        "     130     140       1               0       0\n"
+        "           37000             0.2           2e-05           0.001             0.5\n"
+        "       0                       5             0.3\n" T11_TAIL};
+    for (int k = 0; k < 2; k++) {
+        rc_case *c = NULL;
+        rc_error e;
+        rc_error_clear(&e);
+        const rc_status st = rc_case_load(tu_tmp_write(k ? "t11v44.rad" : "t11v100.rad", v[k]), &c, &e);
+        ENSURE(st == RC_OK);
+        if (st != RC_OK) {
+            fprintf(stderr, "  %s\n", e.msg);
+            continue;
+        }
+        const rc_case_type24 *t = &c->type24[0];
+        ENSURE(t->type == 11 && t->line1 == 130 && t->line2 == 140 && t->istf == 1 && t->stmin == 0 && t->stmax == 0);
+        ENSURE(t->stfac == 3.7e4 && t->fric == 0.2 && t->gapmin == 2e-5 && t->tstart == 0.001 && t->tstop == 0.5);
+        ENSURE(t->inacti == 5 && t->viss == 0.3 && t->fric_id == 0);
+        ENSURE(t->line_loc[3].line == t->line_loc[0].line + 1 && t->line_loc[4].line == t->line_loc[0].line + 2);
+        rc_case_free(c);
+    }
+    char buf[4096];
+    snprintf(buf, sizeof buf, "%s", type19_deck("30", "40"));
+    char *at = strstr(buf, "      2022");
+    ENSURE(at != NULL);
+    if (!at) return;
+    memcpy(at, "       100", 10);
+    rc_model *m = TU_COMPILE_OK(buf, "t19v100.rad");
+    if (m) {
+        ENSURE(m->ninter == 1 && rc_box_is_box_pair(m, 0) && !m->inter_edges[0]);
+        rc_model_free(m);
+    }
+    memcpy(at, "        90", 10);
+    TU_EXPECT_TEXT_ERROR(buf, "t19v90.rad", "/INTER/TYPE19 layout of Radioss versions before 10.0", "not supported yet");
+}
+
 static void test_type11_errors(void)
 {
     /* the reader: self-contact, a blank line_IDm, Igap 1, VISF */
@@ -197,7 +244,6 @@ static void test_type11_errors(void)
      * surfaces, a TYPE19 of a plane */
     TU_EXPECT_TEXT_ERROR(type11_deck("130", "199"), "t11noline.rad", "card /INTER/TYPE11/11, field line_IDm",
                          "expected the id of a /LINE/SURF, got 199");
-    char buf[4096];
     static const char plane[] = "/SURF/PLANE/50\nfloor\n0,0,-1\n0,0,1\n";
     char text[4096];
     const char *d11 = type11_deck("130", "150");
@@ -216,13 +262,6 @@ static void test_type11_errors(void)
     cut = strstr(d19, "/INTER/TYPE19");
     snprintf(text, sizeof text, "%.*s%s%s", (int)(cut - d19), d19, plane, cut);
     TU_EXPECT_TEXT_ERROR(text, "t19plane.rad", "card /INTER/TYPE19/19, field surf_IDm", "/SURF/PLANE/50 is not supported yet");
-    /* layouts before 11.0 */
-    snprintf(buf, sizeof buf, "%s", type11_deck("130", "140"));
-    char *at = strstr(buf, "      2022");
-    if (at) {
-        memcpy(at, "        90", 10);
-        TU_EXPECT_TEXT_ERROR(buf, "t11v90.rad", "/INTER/TYPE11 layout of Radioss versions before 11.0", "not supported yet");
-    }
 }
 
 void suite_type11(void);
@@ -231,5 +270,6 @@ void suite_type11(void)
     RUN_TEST(test_type11_read);
     RUN_TEST(test_type11_model);
     RUN_TEST(test_type11_jacobian);
+    RUN_TEST(test_type11_layouts);
     RUN_TEST(test_type11_errors);
 }

@@ -465,9 +465,10 @@ rc_status rc_card_type7(rc_reader *rd, const rc_block *b)
  * /INTER/TYPE24
  * ====================================================================== */
 
-/* The start TYPE24 and TYPE25 share: the header, a new record of
- * c->type24 of the given type, and the refusal of the layouts before 11.0. */
-static rc_status t24_begin(rc_reader *rd, const rc_block *b, int type, rc_case_type24 **out)
+/* The start TYPE24, TYPE25, TYPE11 and TYPE19 share: the header, a new
+ * record of c->type24 of the given type, and the refusal of the layouts
+ * before version minver (110: 11.0). */
+static rc_status t24_begin(rc_reader *rd, const rc_block *b, int type, rc_case_type24 **out, int minver)
 {
     rc_case *c = rd->c;
     rc_status st;
@@ -481,11 +482,11 @@ static rc_status t24_begin(rc_reader *rd, const rc_block *b, int type, rc_case_t
     t->loc = b->hdr->loc;
     for (int k = 0; k < 6; k++) t->line_loc[k] = t->loc;
     *out = t;
-    if (rc_layout_version(rd) < 110)
+    if (rc_layout_version(rd) < minver)
         return rc_case_fail(rd, &b->hdr->loc, b->name, NULL,
-                            "the /INTER/TYPE%d layout of Radioss versions before 11.0 (/BEGIN Invers %d) is not "
-                            "supported yet: expected Invers 110 or later (or 0)",
-                            type, rc_layout_version(rd));
+                            "the /INTER/TYPE%d layout of Radioss versions before %d.0 (/BEGIN Invers %d) is not "
+                            "supported yet: expected Invers %d or later (or 0)",
+                            type, minver / 10, rc_layout_version(rd), minver);
     return RC_OK;
 }
 
@@ -560,7 +561,7 @@ rc_status rc_card_type24(rc_reader *rd, const rc_block *b)
     int nd;
     rc_status st;
     rc_case_type24 *t = NULL;
-    if ((st = t24_begin(rd, b, 24, &t))) return st;
+    if ((st = t24_begin(rd, b, 24, &t, 110))) return st;
     if ((st = rc_card_lines(rd, b, t->title, 6, 8,
                             "surf_ID1 surf_ID2 Istf (blank) (blank) Irem_i2 (blank) Idel, grnd_IDs (blank) Iedge "
                             "Edge_angle Gap_max_s Gap_max_m, Stmin Stmax Igap0 Ipen0 Ipen_max, Stfac Fric "
@@ -657,7 +658,7 @@ rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
     int nd;
     rc_status st;
     rc_case_type24 *t = NULL;
-    if ((st = t24_begin(rd, b, 25, &t))) return st;
+    if ((st = t24_begin(rd, b, 25, &t, 110))) return st;
     if ((st = rc_card_lines(rd, b, t->title, 6, 12,
                             "surf_ID1 surf_ID2 Istf Ithe Igap Irem_i2 (blank) Idel Iedge IPSTIF, grnd_IDs (blank) "
                             "Gap_scale %mesh_size Gap_max_s Gap_max_m, Stmin Stmax Igap0 Ishape Edge_angle "
@@ -772,17 +773,28 @@ rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
  * of Ithe are refused with their flag. One table reads every layout from
  * 11.0 on: the columns a version lacks (Ithe before 14.0, Irem_gap before
  * 2020, dtmin Iform sens_ID in 11.0) are blank there, and 11.0's Multimp
- * (columns 51-60, blank from 12.0 on) is read, unused. Read into c->type24
- * (type 11) with the two /LINE ids; the line roles of t->line_loc are
- * TYPE24's (line 1, line 1, Stmin, Stfac, Inacti, fric_ID). */
+ * (columns 51-60, blank from 12.0 on) is read, unused. The layouts of 5.1
+ * to 10.0 lack the Stmin line (three lines); those of 4.x write the same
+ * three lines in 8- and 16-character fields. Read into c->type24 (type 11)
+ * with the two /LINE ids; the line roles of t->line_loc are TYPE24's
+ * (line 1, line 1, Stmin, Stfac, Inacti, fric_ID). */
 rc_status rc_card_type11(rc_reader *rd, const rc_block *b)
 {
     int nd;
     rc_status st;
     rc_case_type24 *t = NULL;
-    if ((st = t24_begin(rd, b, 11, &t))) return st;
-    const int ver = rc_layout_version(rd), nmax = ver >= 2018 ? 5 : 4;
-    if ((st = rc_card_lines(rd, b, t->title, 4, nmax,
+    if ((st = t24_begin(rd, b, 11, &t, 41))) return st;
+    const int ver = rc_layout_version(rd), nmax = ver >= 2018 ? 5 : ver >= 110 ? 4 : 3;
+    if (ver < 110 && (st = rc_card_lines(rd, b, t->title, 3, 3,
+                                         ver >= 51 ? "line_IDs line_IDm Istf (blank) Igap Multimp (blank) Idel, Stfac Fric "
+                                                     "Gapmin Tstart Tstop, IBC Inacti VISs VISF Bumult (Radioss 5.1-10.0 "
+                                                     "layout)"
+                                                   : "line_IDs line_IDm Istf (blank) Igap Multimp, Stfac Fric Gapmin Tstart "
+                                                     "Tstop, IBC Inacti VISs VISF Bumult (Radioss 4.x layout, 8- and "
+                                                     "16-character fields)",
+                                         &nd)))
+        return st;
+    if (ver >= 110 && (st = rc_card_lines(rd, b, t->title, 4, nmax,
                             nmax == 5 ? "line_IDs line_IDm Istf Ithe Igap Multimp Irem_gap Idel, Stmin Stmax "
                                         "%mesh_size dtmin Iform sens_ID, Stfac Fric Gapmin Tstart Tstop, IBC "
                                         "Inacti VISs VISF Bumult[, fric_ID]"
@@ -825,25 +837,57 @@ rc_status rc_card_type11(rc_reader *rd, const rc_block *b)
         RC_F_REALD("VISF", &visf, RC_T7_DEF_VISF, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
         RC_F_REALD("Bumult", &bumult, 0, RC_FF_NONNEG, RC_D_NONE)};
     rc_field l5[] = {RC_F_SKIP(90), RC_F_INT("fric_ID", &t->fric_id, 0, RC_FF_NONNEG)};
+    /* 4.x: 8- and 16-character fields, no Stmin line */
+    rc_field o1[] = {RC_F_INTW("line_IDs", &t->line1, 0, RC_FF_POS, 8),
+                     {.name = "line_IDm", .width = 8, .type = RC_FT_INT, .out = &t->line2, .flags = RC_FF_NONNEG},
+                     RC_F_INTW("Istf", &t->istf, 0, RC_FF_NONNEG, 8), RC_F_SKIP(8),
+                     RC_F_INTW("Igap", &igap, 0, RC_FF_NONNEG, 8), RC_F_INTW("Multimp", &multimp, 0, RC_FF_NONNEG, 8)};
+    rc_field o3[] = {RC_F_REALW("Stfac", &t->stfac, 0, RC_FF_NONNEG, 16, RC_D_K),
+                     RC_F_REALW("Fric", &t->fric, 0, RC_FF_NONNEG, 16, RC_D_NONE),
+                     RC_F_REALW("Gapmin", &t->gapmin, 0, RC_FF_NONNEG, 16, RC_D_L),
+                     RC_F_REALW("Tstart", &t->tstart, 0, 0, 16, RC_D_T),
+                     RC_F_REALW("Tstop", &t->tstop, RC_DEF_TSTOP, RC_FF_ZDEF, 16, RC_D_T)};
+    rc_field o4[] = {
+        {.name = "IBC", .width = 8, .type = RC_FT_INT, .out = &ibc, .flags = RC_FF_ONLY0,
+         .note = "boundary conditions of the secondary nodes at deactivation"},
+        RC_F_SKIP(16),
+        RC_F_INTW("Inacti", &t->inacti, 0, 0, 8),
+        RC_F_REALW("VISs", &t->viss, RC_T7_DEF_VISS, RC_FF_ZDEF | RC_FF_NONNEG, 16, RC_D_NONE),
+        RC_F_REALW("VISF", &visf, RC_T7_DEF_VISF, RC_FF_ZDEF | RC_FF_NONNEG, 16, RC_D_NONE),
+        RC_F_REALW("Bumult", &bumult, 0, RC_FF_NONNEG, 16, RC_D_NONE)};
     rc_field *lines[5] = {l1, l2, l3, l4, l5};
-    const int nf[5] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5)};
-    static const int role[5] = {0, 2, 3, 4, 5}; /* TYPE24's line of each */
+    int nf[5] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5)};
+    int role[5] = {0, 2, 3, 4, 5}; /* TYPE24's line of each */
+    if (ver < 110) { /* no Stmin line: Stmin, Stmax 0 */
+        lines[1] = ver >= 51 ? l3 : o3;
+        lines[2] = ver >= 51 ? l4 : o4;
+        nf[1] = ver >= 51 ? RC_NF(l3) : RC_NF(o3);
+        nf[2] = ver >= 51 ? RC_NF(l4) : RC_NF(o4);
+        role[1] = 3;
+        role[2] = 4;
+        if (ver < 51) {
+            lines[0] = o1;
+            nf[0] = RC_NF(o1);
+        }
+        t->line_loc[2] = b->lines[1].loc;
+    }
     t->line_loc[1] = t->line_loc[5] = b->lines[1].loc;
     for (int k = 0; k < nd; k++) {
         t->line_loc[role[k]] = b->lines[k + 1].loc;
         if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
     }
     const rc_field igap0 = RC_F_INT("Igap0", NULL, 0, 0);
-    const t24_fields f = {&l1[1], &l1[2], &l3[0], &l2[1], &igap0, &l4[2], &l3[4], "line_IDs"};
+    const rc_field *const fl1 = lines[0], *const fl3 = lines[ver < 110 ? 1 : 2], *const fl4 = lines[ver < 110 ? 2 : 3];
+    const t24_fields f = {&fl1[1], &fl1[2], &fl3[0], &l2[1], &igap0, &fl4[2], &fl3[4], "line_IDs"};
     if ((st = t24_checks(rd, b, t, 0, &f))) return st;
-    if ((st = t7_only_default(rd, b, &t->line_loc[0], &l1[4], igap,
+    if ((st = t7_only_default(rd, b, &t->line_loc[0], &fl1[4], igap,
                               "a variable gap from the elements' thicknesses and sizes; 0 is the constant gap Gapmin")))
         return st;
     if (visf != RC_T7_DEF_VISF)
         return rc_case_fail(rd, &t->line_loc[4], b->name, "VISF",
                             "expected 1, 0 or blank (the default), got %s: not supported yet (ricochet's friction "
                             "per contact point has no tangential damping)",
-                            l4[4].got);
+                            fl4[4].got);
     if (iform > 2 && iform != RC_T7_DEFAULT)
         return rc_case_fail(rd, &t->line_loc[2], b->name, "Iform",
                             "expected 0, 1, 2 or 1000 (friction penalty formulation), got %s", l2[4].got);
@@ -864,7 +908,7 @@ rc_status rc_card_type19(rc_reader *rd, const rc_block *b)
     int nd;
     rc_status st;
     rc_case_type24 *t = NULL;
-    if ((st = t24_begin(rd, b, 19, &t))) return st;
+    if ((st = t24_begin(rd, b, 19, &t, 100))) return st;
     if ((st = rc_card_lines(rd, b, t->title, 6, 12,
                             "surf_IDs surf_IDm Istf Ithe Igap Iedge Ibag Idel Icurv, Fscalegap Gapmax, Stmin "
                             "Stmax %mesh_size dtmin Irem_gap Irem_i2, Stfac Fric Gapmin Tstart Tstop, IBC (blank) "

@@ -57,12 +57,12 @@ static const char *type11_deck(const char *a, const char *b)
 }
 
 /* /INTER/TYPE19/19 between surfaces a and b in the 2022 layout: Istf 1,
- * Iedge 1, Stfac 4.2e4, Fric 0.1, Inacti 5, VISs 0.25; the rest blank. */
+ * Iedge 2, Stfac 4.2e4, Fric 0.1, Inacti 5, VISs 0.25; the rest blank. */
 static const char *type19_deck(const char *a, const char *b)
 {
     static char text[4096];
     snprintf(text, sizeof text,
-             T11_GEOM "/INTER/TYPE19/19\nnodes and edges\n%10s%10s         1         0         0         1         0         0         0\n"
+             T11_GEOM "/INTER/TYPE19/19\nnodes and edges\n%10s%10s         1         0         0         2         0         0         0\n"
                       "\n\n"
                       "               42000                 0.1\n"
                       "         0                             5                0.25\n"
@@ -101,7 +101,7 @@ static void test_type11_read(void)
         return;
     }
     t = &c->type24[0];
-    ENSURE(t->type == 19 && t->id == 19 && t->surf1 == 30 && t->surf2 == 40 && t->istf == 1 && t->iedge == 1);
+    ENSURE(t->type == 19 && t->id == 19 && t->surf1 == 30 && t->surf2 == 40 && t->istf == 1 && t->iedge == 2);
     ENSURE(t->stfac == 4.2e4 && t->fric == 0.1 && t->viss == 0.25 && t->tstop == 1e30 && t->inacti == 5);
     rc_case_free(c);
 }
@@ -147,6 +147,30 @@ static void test_type11_model(void)
     ENSURE_NEAR(p, 1e-4, 1e-9, 0);
     p = start_p(type19_deck("30", "40"), "t19bars.rad", &edges, &n, &k, &gap);
     ENSURE_NEAR(p, 1e-4, 1e-9, 0);
+    /* TYPE19 Iedge 1: the free edges, none on a closed box: the corners
+     * alone; the flat box held, the bars (only their edges cross) not */
+    static const char ie2[] = "         2         0         0         0\n", ie1[] = "         1         0         0         0\n";
+    char buf[4096];
+    snprintf(buf, sizeof buf, "%s", type19_deck("31", "41"));
+    char *at = strstr(buf, ie2);
+    ENSURE(at != NULL);
+    if (at) {
+        memcpy(at, ie1, sizeof ie1 - 1);
+        p = start_p(buf, "t19flat1.rad", &edges, &n, &k, &gap);
+        printf("    TYPE19 Iedge 1 box flat on a cube: P = %.9g m (its corners), corners only %d\n", p, edges);
+        ENSURE(edges == 2);
+        ENSURE_NEAR(p, 1e-4, 1e-9, 0);
+    }
+    snprintf(buf, sizeof buf, "%s", type19_deck("30", "40"));
+    at = strstr(buf, ie2);
+    if (at) {
+        memcpy(at, ie1, sizeof ie1 - 1);
+        p = start_p(buf, "t19bars1.rad", &edges, &n, &k, &gap);
+        printf("    TYPE19 Iedge 1 bar across a bar: P = %.9g m (no corner over a face, no edge pair)\n", p);
+        ENSURE(edges == 2 && p < 0);
+        memcpy(at, "         3", 10);
+        TU_EXPECT_TEXT_ERROR(buf, "t19iedge3.rad", "card /INTER/TYPE19/19, field Iedge", "expected 0, 1 (the free edges)");
+    }
 }
 
 /* The edges-only pair's Jacobian against central differences, the bar

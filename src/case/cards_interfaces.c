@@ -989,9 +989,14 @@ rc_status rc_card_type19(rc_reader *rd, const rc_block *b)
     if (iform > 2 && iform != RC_T7_DEFAULT)
         return rc_case_fail(rd, &t->line_loc[5], b->name, "Iform",
                             "expected 0, 1, 2 or 1000 (friction penalty formulation), got %s", l6[3].got);
-    /* Iedge: which edges TYPE19 makes of the surfaces (0 and 1000 the
-     * default); the box pair has the boxes' 12 sharp edges whatever it is */
+    /* Iedge: which edges TYPE19 makes of the surfaces: 0, 1000 (the
+     * default) and 2 every segment edge, the boxes' 12; 1 the free edges
+     * of the surfaces, which a closed box has none of (model/type7.c: the
+     * corners alone) */
     t->iedge = iedge == RC_T7_DEFAULT ? 0 : iedge;
+    if (t->iedge > 2)
+        return rc_case_fail(rd, &t->line_loc[0], b->name, "Iedge",
+                            "expected 0, 1 (the free edges), 2 (every segment edge) or 1000, got %s", l1[5].got);
     (void)ibag;
     (void)idel;
     (void)fscalegap;

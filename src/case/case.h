@@ -162,8 +162,9 @@ typedef struct rc_case_type6 {
                                                  or of an /INTER/TYPE7 (model/type7.c) */
     /* set only by the compiler for an /INTER/TYPE7 (model/type7.c) */
     int oneway;                               /* 1: the nodes of surf_ID1 against surf_ID2 only */
-    int edges_only;                           /* 1: two boxes' edge pairs only, no corner against a face
-                                                 (/INTER/TYPE11, model/type7.c) */
+    int edges_only;                           /* two boxes: 1 the edge pairs only, no corner against a face
+                                                 (/INTER/TYPE11); 2 the corners only, no edge pair
+                                                 (/INTER/TYPE19 Iedge 1); model/type7.c */
     double vis_crit;                          /* > 0: Visc = vis_crit 2 sqrt(k m*) (k the load
                                                  curve's slope, m* the bodies' reduced mass) */
     int fric_id;                              /* > 0: the /FRICTION card that applies (fric_ID) */

@@ -544,7 +544,7 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     if (sst) return sst;
     m->inter_visc[i] = t6->visc;
     m->inter_oneway[i] = t6->oneway && m->inter_pair[i] == RC_PAIR_SEG_SEG && s1 == s1_in;
-    m->inter_edges[i] = t6->edges_only && rc_box_is_box_pair(m, i);
+    m->inter_edges[i] = rc_box_is_box_pair(m, i) ? (unsigned char)t6->edges_only : 0;
     if (t6->vis_crit > 0) {
         /* TYPE7's VISs: a fraction of the critical damping 2 sqrt(k m*) of
          * the linear law's slope k and the two bodies' reduced mass (a

@@ -655,7 +655,8 @@ rc_status rc_type7_contacts(rc_type7_case *x, rc_case *c, const rc_model *m, rc_
                               .ascalev = 1.0, .fct_ld = RC_TYPE7_FUNCT_ID, .ascalex = x->len,
                               .fscaleld = x->k24[i] * x->len, .fscaleul = 1.0, .fscalev = 1.0, .loc = t->loc,
                               .sensor_id = t->sensor_id, .name = x->name24[i], .oneway = 0, .vis_crit = t->viss,
-                              .fric_id = t->fric_id, .edges_only = t->type == 11};
+                              .fric_id = t->fric_id,
+                              .edges_only = t->type == 11 ? 1 : t->type == 19 && t->iedge == 1 ? 2 : 0};
         t6->line_loc[0] = t->line_loc[0];
         t6->line_loc[1] = t6->line_loc[3] = t6->line_loc[4] = t->line_loc[3];
         t6->line_loc[2] = t->line_loc[5];

@@ -694,6 +694,7 @@ TL('type19_self_contact', T19H, 'field surf_IDm', before_end(T19(l1='         2 
 TL('type19_ifric', T19H, 'field Ifric', before_end(T19(l6='         1'), expect=7))
 TL('type19_surface_plane', T19H, 'field surf_IDs', before_end(T19(), expect=2))
 TL('box_reach_overflow', SB, 'field a b c', at(SB, 4, 1, 20, '1e308'))
+TL('type19_iedge', T19H, 'field Iedge', before_end(T19(l1=cols('         2         4         1', 51, 60, '3')), expect=2))
 
 
 def write_all():

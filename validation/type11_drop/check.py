@@ -20,6 +20,8 @@ touching points.
 4. TYPE19, the same flat box: its corners against the face hold it:
    F = m g, P = m g / k;
 5. TYPE19, the bars of 1: the edges hold the bar: F = m g, P = m g / k;
+   with Iedge 1 (the free edges: a closed box has none) the corners alone
+   act, none is over a face: the bar falls through freely;
 6. TYPE11 impact, no gravity, frictionless, undamped (VISs 1e-12): a bar
    at 0.5 m/s strikes an equal free bar laid across it, edge on edge at
    four crossings symmetric about the line of the centres: a central
@@ -58,10 +60,11 @@ def type11(d, iid, l1, l2, stfac, viss=0.0):
           title="edge to edge")
 
 
-def type19(d, iid, s1, s2, stfac, viss=0.0):
-    """/INTER/TYPE19 in the Radioss 2022 layout: Istf 1, the rest defaults."""
+def type19(d, iid, s1, s2, stfac, viss=0.0, iedge=0):
+    """/INTER/TYPE19 in the Radioss 2022 layout: Istf 1, the rest defaults
+    (Iedge 0: every edge)."""
     d.add(f"/INTER/TYPE19/{iid}",
-          line(("i", s1), ("i", s2), ("i", 1), ("i", 0), ("i", 0), ("i", 0), ("i", 0), ("i", 0), ("i", 0)),
+          line(("i", s1), ("i", s2), ("i", 1), ("i", 0), ("i", 0), ("i", iedge), ("i", 0), ("i", 0), ("i", 0)),
           line(("r", 0.0), ("r", 0.0)),
           line(("r", 0.0), ("r", 0.0), ("r", 0.0), ("r", 0.0), ("i", 0), ("i", 0)),
           line(("r", stfac), ("r", 0.0), ("r", 0.0), ("r", 0.0), ("r", 0.0)),
@@ -92,10 +95,11 @@ def box_mesh(d, sid, first, x, half, title):
 JB = (M8 * 2 * W8**2 / 12, M8 * (L8**2 + W8**2) / 12, M8 * (L8**2 + W8**2) / 12)
 
 
-def bars(card=11):
+def bars(card=11, iedge=0):
     """A bar along x (/SURF/BOX 18 on body 8) dropped across a fixed bar along
-    y (/SURF/BOX 1): TYPE11 through /LINE/SURF 118 and 101, or TYPE19."""
-    d = Deck(f"TYPE{card}: a bar dropped across a bar, edge on edge")
+    y (/SURF/BOX 1): TYPE11 through /LINE/SURF 118 and 101, or TYPE19 (of
+    Iedge iedge)."""
+    d = Deck(f"TYPE{card}: a bar dropped across a bar, edge on edge" + (f", Iedge {iedge}" if iedge else ""))
     d.box(1, 0, (0.0, 0.0, -W8 / 2), (W8 / 2, L8 / 2, W8 / 2), title="fixed bar along y, top face z = 0")
     x = (0.0, Y8, W8 / 2 + H0)
     d.nodes([(8, *x)])
@@ -106,9 +110,9 @@ def bars(card=11):
         lines(d, (118, 18), (101, 1))
         type11(d, 11, 118, 101, K, viss=ZETA)
     else:
-        type19(d, 19, 18, 1, K, viss=ZETA)
+        type19(d, 19, 18, 1, K, viss=ZETA, iedge=iedge)
     d.grav(1, "Z", -G, 8)
-    d.run(1.0, 0.01)
+    d.run(0.1 if iedge == 1 else 1.0, 0.01)
     return d
 
 
@@ -206,6 +210,16 @@ def main():
                 f"(m g / k = {MB * G / K:.9e} m, {e2:.1e} < 5e-5)")
     # 5. TYPE19: the edges hold the bar
     edge_rest("type19.bar.rest", rcval.Result(rcval.run(bars(19), "bars19")))
+    # 5b. TYPE19 Iedge 1: the surfaces' free edges, none on a closed box:
+    # the corners alone, and no corner of either bar is over the other's
+    # faces: the bar falls through
+    r = rcval.Result(rcval.run(bars(19, iedge=1), "bars19_iedge1"))
+    z_ff = W8 / 2 + H0 - 0.5 * G * r.t[-1] ** 2
+    ez = abs(r.pos[-1, 0, 2] - z_ff) / (0.5 * G * r.t[-1] ** 2)
+    rcval.check("type19.iedge1.bar.falls", ez < 1e-7 and abs(r.fn[:, 0]).max() == 0.0,
+                f"error {ez:.1e} of the fall (< 1e-7): Iedge 1 (free edges: a closed box has none), corners alone: "
+                f"z = {r.pos[-1, 0, 2]:.9f} m at t = {r.t[-1]:g} s (free fall {z_ff:.9f} m), largest interface force "
+                f"{abs(r.fn[:, 0]).max():g} N")
     # 6. a central elastic impact of equal masses through the edges
     r = rcval.Result(rcval.run(impact(), "impact"))
     p0, p1 = M8 * (r.vel[0, 0] + r.vel[0, 1]), M8 * (r.vel[-1, 0] + r.vel[-1, 1])

@@ -288,6 +288,31 @@ static void test_type11_errors(void)
     TU_EXPECT_TEXT_ERROR(text, "t19plane.rad", "card /INTER/TYPE19/19, field surf_IDm", "/SURF/PLANE/50 is not supported yet");
 }
 
+/* A side that is a /SURF/PART of one /BRICK (a bar's solid, /RBODY/1) is
+ * taken as its box: the bars of type11_deck, the upper one meshed. */
+static void test_type11_brick_part(void)
+{
+    static const char deck[] =
+        "/BEGIN\nbrick part\n      2022         0\n"
+        "                  kg                   m                   s\n"
+        "                  kg                   m                   s\n"
+        "/NODE\n1,0.013,-0.021,0.0499\n"
+        "11,-0.287,-0.071,-0.0001\n12,0.313,-0.071,-0.0001\n13,0.313,0.029,-0.0001\n14,-0.287,0.029,-0.0001\n"
+        "15,-0.287,-0.071,0.0999\n16,0.313,-0.071,0.0999\n17,0.313,0.029,0.0999\n18,-0.287,0.029,0.0999\n"
+        "/MAT/LAW1/1\nsteel\n7800\n2.1e11,0.3\n/PROP/SOLID/1\nsolid\n/PART/1\nbar\n1,1\n"
+        "/BRICK/1\n1,11,12,13,14,15,16,17,18\n/GRNOD/PART/1\nbar nodes\n1\n"
+        "/RBODY/1\nbar\n1,,,,0,1\n0,0,0\n0,0,0\n"
+        "/SURF/PART/30\nbar faces\n1\n/SURF/BOX/40\nbar along y\n0\n0,0,-0.05\n0.05,0.3,0.05\n"
+        "/LINE/SURF/130\nbar x\n        30\n/LINE/SURF/140\nbar y\n        40\n"
+        "/INTER/TYPE11/11\nedges\n130,140,1\n\n37000\n,,5\n\n" T11_TAIL;
+    int edges = -1, n = 0;
+    double k = 0, gap = 0;
+    const double p = start_p(deck, "t11brick.rad", &edges, &n, &k, &gap);
+    printf("    TYPE11 of a /SURF/PART of one /BRICK: P = %.9g m, %d points, edges only %d\n", p, n, edges);
+    ENSURE(edges == 1 && n == 16 + RC_BOX_EDGE_PAIRS);
+    ENSURE_NEAR(p, 1e-4, 1e-9, 0);
+}
+
 void suite_type11(void);
 void suite_type11(void)
 {
@@ -295,5 +320,6 @@ void suite_type11(void)
     RUN_TEST(test_type11_model);
     RUN_TEST(test_type11_jacobian);
     RUN_TEST(test_type11_layouts);
+    RUN_TEST(test_type11_brick_part);
     RUN_TEST(test_type11_errors);
 }

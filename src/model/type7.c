@@ -310,6 +310,46 @@ static int mesh_box(const rc_case *c, const rc_case_surf *cs, rc_case_surf *out)
     return 1;
 }
 
+/* A /SURF/PART that is a closed box (docs/theory.md 3.9): its parts hold
+ * one /BRICK on 8 distinct nodes, or six 4-node /SHELL, whose faces (the
+ * brick's six, node k + 4 above node k) make a closed box mesh for
+ * mesh_box; *out as mesh_box's. 0 otherwise. */
+static int part_box(const rc_case *c, const rc_case_surf *cs, rc_case_surf *out)
+{
+    if (cs->kind != RC_CASE_SURF_PART || !c->mesh) return 0;
+    static const int hex_face[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+    int seg[24], nq = 0, nbrick = 0, nother = 0;
+    for (int e = 0; e < c->mesh->nelem; e++) {
+        const rc_case_elem *el = &c->mesh->elem[e];
+        int in = 0;
+        for (int k = 0; k < cs->npart && !in; k++) in = cs->part[k] == el->part_id;
+        if (!in) continue;
+        if (el->kind == RC_ELEM_BRICK && nbrick == 0 && nq == 0) {
+            for (int f = 0; f < 6; f++)
+                for (int q = 0; q < 4; q++) seg[4 * f + q] = el->nodes[hex_face[f][q]];
+            nq = 6;
+            nbrick = 1;
+        } else if (el->kind == RC_ELEM_SHELL && !nbrick && nq < 6 && el->nodes[3] != 0 && el->nodes[3] != el->nodes[2]) {
+            for (int q = 0; q < 4; q++) seg[4 * nq + q] = el->nodes[q];
+            nq++;
+        } else {
+            nother++;
+        }
+    }
+    if (nother || nq != 6) return 0;
+    const rc_case_surf tmp = {.id = cs->id, .kind = RC_CASE_SURF_SEG, .loc = cs->loc, .nseg = 6, .seg = seg};
+    if (!mesh_box(c, &tmp, out)) return 0;
+    snprintf(out->title, sizeof out->title, "the box of /SURF/PART/%d", cs->id);
+    return 1;
+}
+
+/* A closed box mesh of either kind: a /SURF/SEG (mesh_box) or a /SURF/PART
+ * (part_box). */
+static int closed_box(const rc_case *c, const rc_case_surf *cs, rc_case_surf *out)
+{
+    return mesh_box(c, cs, out) || part_box(c, cs, out);
+}
+
 /* The two sides of a TYPE11 (its /LINE/SURF lines, each of one surface)
  * or a TYPE19 (its surfaces): each a /SURF/BOX or a closed box mesh
  * (mesh_box: its box in bx[q]); side[q] the surface id. TYPE11's edges are
@@ -351,11 +391,12 @@ static rc_status box_sides(const rc_case *c, const rc_case_type24 *t, rc_case_su
         const rc_case_surf *cs = &c->surf[s];
         side[q] = sid;
         if (cs->kind == RC_CASE_SURF_BOX) continue;
-        if (cs->kind == RC_CASE_SURF_SEG && mesh_box(c, cs, &bx[q])) continue;
+        if (closed_box(c, cs, &bx[q])) continue;
         RC_RAISE(err, RC_EINPUT,
                  RC_LOCFMT "card /INTER/TYPE%d/%d, field %s: /SURF/%s/%d is not supported yet: ricochet models "
                            "TYPE%d (%s) between two boxes only; expected a /SURF/BOX or a closed box mesh (a "
-                           "/SURF/SEG of 6 quadrilaterals on the 8 corners of a rectangular box, taken as that box)",
+                           "/SURF/SEG of 6 quadrilaterals on the 8 corners of a rectangular box, or a /SURF/PART of "
+                           "one such /BRICK or six such /SHELL, taken as that box)",
                  RC_LOC(t->line_loc[0]), t->type, t->id, field, rc_t7_kinds[cs->kind], sid, t->type,
                  t->type == 11 ? "the edges of each against the edges of the other"
                                : "the nodes of each against the other's faces and the edges against the edges");
@@ -447,15 +488,16 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
          * appended below; other segment surfaces have no edge pairs */
         if (!st && t->type == 25 && t->iedge != 0 && nbox == 0) {
             const rc_case_surf *s1 = &c->surf[rc_case_find_surf(c, t->surf1)], *s2 = &c->surf[rc_case_find_surf(c, t->surf2)];
-            if (mesh_box(c, s1, &x->bx[2 * i]) && mesh_box(c, s2, &x->bx[2 * i + 1]) &&
+            if (closed_box(c, s1, &x->bx[2 * i]) && closed_box(c, s2, &x->bx[2 * i + 1]) &&
                 x->bx[2 * i].rbody_id != x->bx[2 * i + 1].rbody_id)
                 x->nbx += 2;
             else
                 st = RC_SET(err, RC_EINPUT,
                             RC_LOCFMT "card /INTER/TYPE25/%d, field Iedge: edge-to-edge contact of segment surfaces "
                                       "is not supported yet except between two closed box meshes of two bodies "
-                                      "(a /SURF/SEG of 6 quadrilaterals on the 8 corners of a rectangular box, "
-                                      "taken as that box); /SURF/%s/%d and /SURF/%s/%d are not both such meshes: "
+                                      "(a /SURF/SEG of 6 quadrilaterals on the 8 corners of a rectangular box, or a "
+                                      "/SURF/PART of one such /BRICK or six such /SHELL, taken as that box); /SURF/%s/%d "
+                                      "and /SURF/%s/%d are not both such meshes: "
                                       "expected Iedge 0 (nodes against segments only), two such meshes, or two "
                                       "/SURF/BOX",
                             RC_LOC(t->line_loc[0]), t->id, rc_t7_kinds[s1->kind], t->surf1, rc_t7_kinds[s2->kind],

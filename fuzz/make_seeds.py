@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Regenerate the seed corpus fuzz/corpus/ from the project's own decks
-(cases/*.rad, validation/*/case*.rad): comment lines dropped, each /FUNCT
+(cases/*.rad, validation/*/case*.rad, two decks of validation/type11_drop):
+comment lines dropped, each /FUNCT
 cut to its first 6 points, /NODE and /GRNOD to 12 lines, decks cut to
 6000 bytes at a card boundary. Plus one deck split over an #include
 (fuzz_deck.c: the part after the "#FILE" line is the file inc.rad).
@@ -41,6 +42,9 @@ def main():
     for old in glob.glob('fuzz/corpus/*'):
         os.remove(old)
     decks = sorted(glob.glob('cases/*.rad')) + sorted(glob.glob('validation/*/case*.rad'))
+    # two box pairs (TYPE11 through /LINE/SURF of closed box meshes, TYPE19
+    # of two /SURF/BOX): no case*.rad holds them
+    decks += ['validation/type11_drop/mesh_bars.rad', 'validation/type11_drop/flat19.rad']
     for path in decks:
         parts = path.split('/')
         name = parts[-1][:-4] if parts[0] == 'cases' else parts[1] + '_' + parts[-1][:-4]

@@ -417,6 +417,46 @@ set -- $res
 if [ "${1:-0}" -ge 12 ] && [ "${2:-0}" = 1 ]; then echo "PASS cli.contact_records: $1 records inside the first contact at Dt_out 1 ms, time increasing"
 else echo "FAIL cli.contact_records: got '$res'"; fi
 
+# a whole Radioss rigid-body deck, starter and engine files
+# (tests/data/wholedeck_0000.rad, _0001.rad: a /BRICK block dropped and
+# sliding onto a /SHELL pallet on an /RWALL/PLANE, /INTER/TYPE7 with
+# /FRICTION turned on by a /SENSOR/TIME, /GRAV, /INIVEL), run end to end:
+# the interface inactive until its sensor's 20 ms; both bodies at rest at
+# the end, the block on the pallet with F = m g, P = m g / k, the floor
+# carrying both; the block slid less than v0 to its stop; no energy created
+"$bin" run tests/data/wholedeck_0000.rad -o "$tmp/whole.nc" > "$tmp/o" 2> "$tmp/e"; rc=$?
+res=$(/usr/bin/python3 - "$tmp/whole.nc" <<'PY' 2>&1
+import sys, netCDF4, numpy as np
+d = netCDF4.Dataset(sys.argv[1])
+g, k, mb, mp, v0 = 9.81, 1e6, 31.2, 56.16, 0.3
+t = np.array(d["time"][:]); ids = list(d["inter_id"][:])
+iw, i7 = ids.index(-9), ids.index(7)
+F, P, mode = d["inter_force_normal"][:], d["inter_penetration"][:], d["inter_mode"][:]
+x, v, w = d["body_position"][:], d["body_velocity"][:], d["body_angular_velocity"][:]
+ev = list(zip(np.array(d["event_kind"][:]).astype(str), d["event_time"][:]))
+start = [te for kd, te in ev if kd == "inter_start"]
+stick = [te for kd, te in ev if kd == "fric_stick"]
+land = [te for kd, te in ev if kd == "contact_close" and te > 0.02][0]
+em = d["energy_kinetic"][:] + d["energy_potential"][:] + d["energy_contact_stored"][:]
+rel = lambda a, b: abs(a - b) / abs(b)
+checks = {
+    "complete": d.getncattr("status") == "complete",
+    "sensor": len(start) == 1 and abs(start[0] - 0.02) < 1e-12 and abs(F[t < 0.02, i7]).max() == 0 and (mode[t < 0.02, i7] == 0).all(),
+    "rest": abs(v[-1]).max() < 1e-6 and abs(w[-1]).max() < 1e-6,
+    "block_force": rel(F[-1, i7], mb * g) < 1e-6 and rel(P[-1, i7], mb * g / k) < 1e-4,
+    "floor_force": rel(F[-1, iw], (mb + mp) * g) < 1e-6,
+    "slide": v0 * land < x[-1, 1, 0] - x[0, 1, 0] < v0 * stick[-1] and abs(x[-1, 0, 0] - x[0, 0, 0]) < 1e-5,
+    "energy": (em - em[0]).max() <= 1e-9 * abs(em[0]) and em[-1] < em[0],
+}
+bad = [n for n, ok in checks.items() if not ok]
+print("ok" if not bad else "bad " + ",".join(bad), "F7 %.6f N (m g %.6f) P7 %.6e m (m g/k %.6e) floor %.4f N slid %.5f m energy %.4f -> %.4f J"
+      % (F[-1, i7], mb * g, P[-1, i7], mb * g / k, F[-1, iw], x[-1, 1, 0] - x[0, 1, 0], em[0], em[-1]))
+PY
+)
+if [ "$rc" -eq 0 ] && [ "${res%% *}" = "ok" ] && grep -q "Radioss engine file read after its starter file" "$tmp/e"; then
+    echo "PASS cli.whole_radioss_deck: starter and engine files run to the end: ${res#ok }"
+else echo "FAIL cli.whole_radioss_deck: exit $rc: $res $(head -c 300 "$tmp/e")"; fi
+
 # determinism: two runs give identical time series
 "$bin" run "$demo" -o "$tmp/a.nc" -q && "$bin" run "$demo" -o "$tmp/b.nc" -q
 if cmp -s <(ncdump -v body_position "$tmp/a.nc" | sed -n '/data:/,$p') <(ncdump -v body_position "$tmp/b.nc" | sed -n '/data:/,$p'); then

@@ -779,12 +779,12 @@ static void test_case_error_unknown_card(void)
     EXPECT_INPUT_ERROR("nosub.rad", RUN_CARD "/INTER/5\nx\n", 3, "card /INTER/5", "missing subtype",
                        "/INTER/TYPE6");
     /* misspellings: "did you mean"; a Radioss card ricochet does not read
-     * (TYPE11, BOX2), however close to a supported one, is "not supported yet" */
+     * (TYPE12, BOX2), however close to a supported one, is "not supported yet" */
     EXPECT_INPUT_ERROR("typo.rad", RUN_CARD "/INTER/TYP6/1\nx\n", 3, "card /INTER/TYP6/1", "no such card",
                        "did you mean /INTER/TYPE6?");
     EXPECT_INPUT_ERROR("typo.rad", RUN_CARD "/RBOD/1\nx\n", 3, "card /RBOD/1", "unknown card", "did you mean /RBODY?");
     EXPECT_INPUT_ERROR("typo.rad", RUN_CARD "/JOINT/REVOLUT/1\nx\n", 3, "did you mean /JOINT/REVOLUTE?");
-    EXPECT_INPUT_ERROR("type11.rad", RUN_CARD "/INTER/TYPE11/1\nx\n", 3, "card /INTER/TYPE11/1", "not supported yet");
+    EXPECT_INPUT_ERROR("type12.rad", RUN_CARD "/INTER/TYPE12/1\nx\n", 3, "card /INTER/TYPE12/1", "not supported yet");
     EXPECT_INPUT_ERROR("box2.rad", RUN_CARD "/SURF/BOX2/1\nx\n", 3, "card /SURF/BOX2/1", "not supported yet");
     EXPECT_INPUT_ERROR("badhdr.rad", RUN_CARD "/RBODY/x/1\nx\n", 3, "card /RBODY/x/1",
                        "unexpected keyword /X");

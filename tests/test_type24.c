@@ -326,6 +326,21 @@ static void test_type25(void)
     }
 }
 
+/* TYPE24's Inacti -1 (every initial penetration acts): ricochet's 0, no
+ * offset; values TYPE24 lacks refused. */
+static void test_type24_inacti(void)
+{
+    static const char from[] = "         5                 0.2", to[] = "        -1                 0.2";
+    rc_model *m = TU_COMPILE_OK(deck_with(from, to), "t24inacti.rad");
+    if (m) {
+        ENSURE(m->inter_inacti[0] == 0 && m->inter_oidx[0] < 0);
+        rc_model_free(m);
+    }
+    TU_EXPECT_TEXT_ERROR(deck_with(from, "         6                 0.2"), "t24inacti6.rad",
+                         "card /INTER/TYPE24/24, field Inacti", "expected -1 (every initial penetration acts)",
+                         "not supported yet");
+}
+
 void suite_type24(void);
 void suite_type24(void)
 {
@@ -334,4 +349,5 @@ void suite_type24(void)
     RUN_TEST(test_type24_units);
     RUN_TEST(test_type24_model_errors);
     RUN_TEST(test_type25);
+    RUN_TEST(test_type24_inacti);
 }

@@ -243,6 +243,39 @@ static void test_type7_istf0_errors(void)
                          "is on no /SHELL or /SH3N", "expected Istf 1");
 }
 
+/* Inacti: 6 read (the case keeps 6) and compiled as 5 (the offset state);
+ * 1, 2 (points left out) and 3 (nodes moved) refused with their reason. */
+static void test_type7_inacti(void)
+{
+    static const char from[] = "0.0011                   0                   0\n         0                             0";
+    char to[sizeof from];
+    memcpy(to, from, sizeof from);
+    to[sizeof from - 2] = '6';
+    const char *text = deck_with(from, to);
+    ENSURE(text != NULL);
+    if (!text) return;
+    rc_case *c = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    const rc_status st = rc_case_load(tu_tmp_write("t7inacti6.rad", text), &c, &e);
+    ENSURE(st == RC_OK && c->type7[0].inacti == 6 && c->type7[1].inacti == 0);
+    if (st) fprintf(stderr, "  %s\n", e.msg);
+    rc_case_free(c);
+    rc_model *m = TU_COMPILE_OK(deck_with(from, to), "t7inacti6m.rad");
+    if (m) {
+        ENSURE(m->inter_inacti[1] == 5 && m->inter_oidx[1] >= 0 && m->inter_inacti[2] == 0 && m->inter_oidx[2] < 0);
+        rc_model_free(m);
+    }
+    static const char *const why[4] = {"", "initially penetrating secondary nodes out of the contact",
+                                       "initially penetrating main segments out of the contact",
+                                       "moves the penetrating nodes onto the surface"};
+    for (int v = 1; v <= 3; v++) {
+        to[sizeof from - 2] = (char)('0' + v);
+        TU_EXPECT_TEXT_ERROR(deck_with(from, to), "t7inacti.rad", "card /INTER/TYPE7/7, field Inacti", why[v],
+                             "expected 0, blank, 1000");
+    }
+}
+
 void suite_type7(void);
 void suite_type7(void)
 {
@@ -250,4 +283,5 @@ void suite_type7(void)
     RUN_TEST(test_type7_model);
     RUN_TEST(test_type7_units);
     RUN_TEST(test_type7_istf0_errors);
+    RUN_TEST(test_type7_inacti);
 }

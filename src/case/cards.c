@@ -2,11 +2,12 @@
  * Card dispatch: the table of supported cards (keyword, subtype, family
  * function), the Radioss cards ignored or planned, and the call of a
  * card's function. The card functions live in one file per family:
- *   cards_bodies.c      /NODE /GRNOD/NODE /RBODY /PART /GRPART/PART /GRPART/GRPART
+ *   cards_bodies.c      /NODE /GRNOD/NODE /RBODY /PART /GRPART/PART /GRPART/GRPART /LINE/SURF
  *   cards_mesh.c        /SHELL /SH3N /BRICK /TETRA4 /PENTA6 /TETRA10 /SPRING /PROP/SHELL /PROP/SOLID /PROP/SPRING /MAT
  *                       /SKEW/FIX /SKEW/MOV /SKEW/MOV2 /GRNOD/PART /GRNOD/GRNOD (called first)
  *   cards_surfaces.c    /SURF/PLANE /SURF/ELLIPS /SURF/CYL /SURF/BOX /SURF/SEG /SURF/PART
- *   cards_interfaces.c  /INTER/TYPE6 /INTER/TYPE7 /INTER/TYPE24 /INTER/TYPE25 /INTER/POWER
+ *   cards_interfaces.c  /INTER/TYPE6 /INTER/TYPE7 /INTER/TYPE24 /INTER/TYPE25 /INTER/TYPE11 /INTER/TYPE19
+ *                       /INTER/POWER
  *   cards_friction.c    /FRICTION /FRIC_ORIENT
  *   cards_couplings.c   /COUPLING/SPRING /COUPLING/CATENARY /COUPLING/CONTACT
  *   cards_joints.c      /JOINT/SPHERICAL /JOINT/REVOLUTE /JOINT/DISTANCE /JOINT/FIXED /JOINT/PRISMATIC
@@ -32,7 +33,7 @@ typedef enum {
     RC_CARD_SOLVER, RC_CARD_CPL_SPRING, RC_CARD_CPL_CATENARY, RC_CARD_PART, RC_CARD_GRPART,
     RC_CARD_FRICTION, RC_CARD_FRIC_ORIENT, RC_CARD_POWER, RC_CARD_CYL, RC_CARD_BOX, RC_CARD_IMPVEL,
     RC_CARD_UNIT, RC_CARD_SEG, RC_CARD_SURFPART, RC_CARD_CPL_CONTACT, RC_CARD_JOINT, RC_CARD_RWALL, RC_CARD_SENSOR, RC_CARD_TYPE7,
-    RC_CARD_TYPE24, RC_CARD_TYPE25
+    RC_CARD_TYPE24, RC_CARD_TYPE25, RC_CARD_TYPE11, RC_CARD_TYPE19, RC_CARD_LINE
 } rc_card_kind;
 
 /* Supported cards; a family (kw with a sub) lists each subtype. */
@@ -44,7 +45,8 @@ static const struct {
     {"GRNOD", "NODE", RC_CARD_GRNOD},  {"RBODY", NULL, RC_CARD_RBODY},
     {"SURF", "PLANE", RC_CARD_PLANE},  {"SURF", "ELLIPS", RC_CARD_ELLIPS},
     {"INTER", "TYPE6", RC_CARD_TYPE6}, {"INTER", "TYPE7", RC_CARD_TYPE7}, {"INTER", "TYPE24", RC_CARD_TYPE24},
-    {"INTER", "TYPE25", RC_CARD_TYPE25}, {"FUNCT", NULL, RC_CARD_FUNCT},
+    {"INTER", "TYPE25", RC_CARD_TYPE25}, {"INTER", "TYPE11", RC_CARD_TYPE11},
+    {"INTER", "TYPE19", RC_CARD_TYPE19}, {"LINE", "SURF", RC_CARD_LINE}, {"FUNCT", NULL, RC_CARD_FUNCT},
     {"INIVEL", "TRA", RC_CARD_INIVEL}, {"INIVEL", "ROT", RC_CARD_INIVEL},
     {"GRAV", NULL, RC_CARD_GRAV},      {"BCS", NULL, RC_CARD_BCS},
     {"RUN", NULL, RC_CARD_RUN},        {"SOLVER", NULL, RC_CARD_SOLVER},
@@ -130,6 +132,9 @@ static rc_status rc_card_call(rc_reader *rd, const rc_block *b, rc_card_kind kin
     case RC_CARD_TYPE7: return rc_card_type7(rd, b);
     case RC_CARD_TYPE24: return rc_card_type24(rd, b);
     case RC_CARD_TYPE25: return rc_card_type25(rd, b);
+    case RC_CARD_TYPE11: return rc_card_type11(rd, b);
+    case RC_CARD_TYPE19: return rc_card_type19(rd, b);
+    case RC_CARD_LINE: return rc_card_line(rd, b);
     case RC_CARD_FUNCT: return rc_card_funct(rd, b);
     case RC_CARD_INIVEL: return rc_card_inivel(rd, b);
     case RC_CARD_GRAV: return rc_card_grav(rd, b);
@@ -170,6 +175,8 @@ static int rc_radioss_subtype(const char *kw, const char *sub)
     static const char *const inivel[] = {"TRA", "ROT", "T&R", "AXIS", "GRID", "FVM", "NODE"};
     static const char *const inter[] = {"SUB", "KINE", "LAGMUL", "HERTZ"};
     static const char *const rwall[] = {"PLANE", "CYL", "SPHER", "PARAL", "LAGMUL", "THERM"};
+    static const char *const line[] = {"SURF", "EDGE", "SEG", "PART", "MAT", "PROP", "SUBSET", "BOX", "BOX2",
+                                       "LINE", "GRTRUS", "GRSPRI", "GRBEAM", "SUBMOD"};
     static const char *const sensor[] = {"TIME", "ACCE", "DIST", "SENS", "AND", "OR", "NOT", "INTER", "RWALL", "RBODY",
                                          "SECT", "WORK", "ENERGY", "DIST_SURF", "HIC", "VEL", "GAUGE", "TEMP", "NIC_NIJ",
                                          "PYTHON", "USER1", "USER2", "USER3", "MATLAB", "DISP", "CONTACT"};
@@ -187,6 +194,7 @@ static int rc_radioss_subtype(const char *kw, const char *sub)
     if (strcmp(kw, "INIVEL") == 0) return rc_in_list(sub, inivel, RC_NF(inivel));
     if (strcmp(kw, "RWALL") == 0) return rc_in_list(sub, rwall, RC_NF(rwall));
     if (strcmp(kw, "SENSOR") == 0) return rc_in_list(sub, sensor, RC_NF(sensor));
+    if (strcmp(kw, "LINE") == 0) return rc_in_list(sub, line, RC_NF(line));
     return 0; /* /JOINT, /COUPLING: ricochet's own */
 }
 

@@ -1,6 +1,6 @@
 /*
  * Cards of bodies and nodes: /NODE, /GRNOD/NODE, /RBODY, /PART,
- * /GRPART/PART.
+ * /GRPART/PART, and the lists of surfaces /LINE/SURF.
  * Layouts are field tables (case_internal.h), documented in
  * docs/case-format.md; references between cards are resolved by the
  * compiler (src/model). Values ricochet cannot honour yet are rejected with
@@ -261,6 +261,27 @@ rc_status rc_card_grpart(rc_reader *rd, const rc_block *b)
                           &lcap)))
         return st;
     return rc_note_id(rd, RC_IDK_GRPART, g->id, &g->loc, b->hdr->text);
+}
+
+/* /LINE/SURF/line_ID: title, then up to 10 surface ids per line (the
+ * edges of those surfaces: the sides of /INTER/TYPE11, resolved by
+ * model/type7.c). */
+rc_status rc_card_line(rc_reader *rd, const rc_block *b)
+{
+    rc_case *c = rd->c;
+    int nd, cap = 0, lcap = 0;
+    rc_status st;
+    if ((st = rc_header(rd, b, 2, RC_ID_REQUIRED, "line_ID", "/LINE/SURF/line_ID"))) return st;
+    RC_GROW(rd, c->line, rd->capline, c->nline);
+    rc_case_line *l = &c->line[c->nline++];
+    l->id = b->id;
+    l->loc = b->hdr->loc;
+    if ((st = rc_var_lines(rd, b, l->title, "surf_ID1 ... surf_ID10", &nd))) return st;
+    if ((st = rc_id_lines(rd, b, 1, nd, "surf_ID", &l->surf, &l->surf_loc, &l->n, &cap, &lcap))) return st;
+    if (l->n == 0)
+        return rc_case_fail(rd, &b->hdr->loc, b->name, "surf_ID",
+                            "expected at least one surface id (up to ten a line, 10 columns each), got none");
+    return rc_note_id(rd, RC_IDK_LINE, l->id, &l->loc, b->hdr->text);
 }
 
 /* Expand /GRPART/GRPART group gi into its parts (its nested groups first);

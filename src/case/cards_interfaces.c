@@ -1,5 +1,6 @@
 /*
- * Cards of contact interfaces: /INTER/TYPE6, /INTER/TYPE7, /INTER/TYPE24, /INTER/TYPE25 and ricochet's /INTER/POWER
+ * Cards of contact interfaces: /INTER/TYPE6, /INTER/TYPE7, /INTER/TYPE24, /INTER/TYPE25, /INTER/TYPE11,
+ * /INTER/TYPE19 and ricochet's /INTER/POWER
  * (power-law contact with splines).
  * Layouts are field tables (case_internal.h), documented in
  * docs/case-format.md; references between cards are resolved by the
@@ -296,6 +297,35 @@ static rc_status t7_only_default(rc_reader *rd, const rc_block *b, const rc_loc 
                         f->got, note);
 }
 
+/* Inacti of the node-to-surface and edge cards (TYPE7, TYPE11, TYPE19):
+ * 0 and 1000 no action; 5 the gap reduced by the initial penetration; 6
+ * the same with Radioss's 5 % depenetration, read as 5 (docs/theory.md
+ * 3.7: the start is force-free either way); 1, 2 (the initially
+ * penetrating nodes or segments left out) and 3 (the nodes moved out)
+ * refused with their reason. */
+static rc_status t7_inacti(rc_reader *rd, const rc_block *b, const rc_loc *loc, int *inacti, const rc_field *f)
+{
+    if (*inacti == RC_T7_DEFAULT) *inacti = 0;
+    if (*inacti == 0 || *inacti == 5 || *inacti == 6) return RC_OK;
+    if (*inacti == 1 || *inacti == 2)
+        return rc_case_fail(rd, loc, b->name, "Inacti",
+                            "got %s: not supported yet: Inacti %d takes the initially penetrating %s out of the "
+                            "contact for the whole run, where ricochet's contact of a rigid body keeps every point "
+                            "of it; expected 0, blank, 1000 (no action), 5 or 6 (the gap reduced by the initial "
+                            "penetration)",
+                            f->got, *inacti, *inacti == 1 ? "secondary nodes" : "main segments");
+    if (*inacti == 3)
+        return rc_case_fail(rd, loc, b->name, "Inacti",
+                            "got %s: not supported: Inacti 3 moves the penetrating nodes onto the surface, which "
+                            "for a rigid body would change its shape and mass at t = 0; expected 0, blank, 1000, 5 or "
+                            "6 (the initial penetration taken as a reduction of the gap), or the bodies apart at t = 0",
+                            f->got);
+    return rc_case_fail(rd, loc, b->name, "Inacti",
+                        "expected 0, blank, 1000 (no action), 5 or 6 (the gap reduced by the initial penetration), "
+                        "got %s",
+                        f->got);
+}
+
 /* /INTER/TYPE7/inter_ID: title and Radioss's six lines (layout of 11.0 and
  * later; the curvature line of Icurv, the friction law lines of Ifric and
  * the thermal lines of Ithe are refused with their flags). */
@@ -414,12 +444,7 @@ rc_status rc_card_type7(rc_reader *rd, const rc_block *b)
     if ((st = t7_only_default(rd, b, &t->line_loc[0], &l1[4], t->igap,
                               "a variable gap from the elements' thicknesses and sizes; 0 is the constant gap Gapmin")))
         return st;
-    if (t->inacti == RC_T7_DEFAULT) t->inacti = 0;
-    if (t->inacti != 0 && t->inacti != 5)
-        return rc_case_fail(rd, &t->line_loc[4], b->name, "Inacti",
-                            "expected 0, blank, 1000 (no action) or 5 (the gap reduced by the initial "
-                            "penetration), got %s: not supported yet",
-                            l5[2].got);
+    if ((st = t7_inacti(rd, b, &t->line_loc[4], &t->inacti, &l5[2]))) return st;
     if (t->visf != RC_T7_DEF_VISF)
         return rc_case_fail(rd, &t->line_loc[4], b->name, "VISF",
                             "expected 1, 0 or blank (the default), got %s: not supported yet (ricochet's friction "
@@ -440,9 +465,10 @@ rc_status rc_card_type7(rc_reader *rd, const rc_block *b)
  * /INTER/TYPE24
  * ====================================================================== */
 
-/* The start TYPE24 and TYPE25 share: the header, a new record of
- * c->type24 of the given type, and the refusal of the layouts before 11.0. */
-static rc_status t24_begin(rc_reader *rd, const rc_block *b, int type, rc_case_type24 **out)
+/* The start TYPE24, TYPE25, TYPE11 and TYPE19 share: the header, a new
+ * record of c->type24 of the given type, and the refusal of the layouts
+ * before version minver (110: 11.0). */
+static rc_status t24_begin(rc_reader *rd, const rc_block *b, int type, rc_case_type24 **out, int minver)
 {
     rc_case *c = rd->c;
     rc_status st;
@@ -456,11 +482,11 @@ static rc_status t24_begin(rc_reader *rd, const rc_block *b, int type, rc_case_t
     t->loc = b->hdr->loc;
     for (int k = 0; k < 6; k++) t->line_loc[k] = t->loc;
     *out = t;
-    if (rc_layout_version(rd) < 110)
+    if (rc_layout_version(rd) < minver)
         return rc_case_fail(rd, &b->hdr->loc, b->name, NULL,
-                            "the /INTER/TYPE%d layout of Radioss versions before 11.0 (/BEGIN Invers %d) is not "
-                            "supported yet: expected Invers 110 or later (or 0)",
-                            type, rc_layout_version(rd));
+                            "the /INTER/TYPE%d layout of Radioss versions before %d.0 (/BEGIN Invers %d) is not "
+                            "supported yet: expected Invers %d or later (or 0)",
+                            type, minver / 10, rc_layout_version(rd), minver);
     return RC_OK;
 }
 
@@ -468,6 +494,7 @@ static rc_status t24_begin(rc_reader *rd, const rc_block *b, int type, rc_case_t
  * the fields as each card read them, for the text it got). */
 typedef struct {
     const rc_field *surf2, *istf, *stfac, *stmax, *igap0, *inacti, *tstop;
+    const char *surf1_name; /* the first side's field */
 } t24_fields;
 
 /* Those checks, on the values read into t (and Igap0): two surfaces, no
@@ -476,14 +503,18 @@ typedef struct {
  * 1000 (the gap is zero: model/type7.c); Inacti 0 or 5; Tstop >= Tstart. */
 static rc_status t24_checks(rc_reader *rd, const rc_block *b, rc_case_type24 *t, int igap0, const t24_fields *f)
 {
-    if (t->surf2 == 0)
-        return rc_case_fail(rd, &t->line_loc[0], b->name, "surf_ID2",
-                            "blank or 0 (self-contact of surf_ID1) is not supported yet: a rigid body does not "
-                            "meet itself; expected the id of the second surface");
-    if (t->surf2 == t->surf1)
-        return rc_case_fail(rd, &t->line_loc[0], b->name, "surf_ID2",
-                            "expected a surface other than surf_ID1 = %d (self-contact is not supported yet), got %s",
-                            t->surf1, f->surf2->got);
+    /* the two sides: surfaces, or TYPE11's lines */
+    const int one = t->type == 11 ? t->line1 : t->surf1, two = t->type == 11 ? t->line2 : t->surf2;
+    const char *n1 = f->surf1_name, *n2 = f->surf2->name, *what = t->type == 11 ? "line" : "surface";
+    if (two == 0)
+        return rc_case_fail(rd, &t->line_loc[0], b->name, n2,
+                            "blank or 0 (self-contact of %s) is not supported yet: a rigid body does not "
+                            "meet itself; expected the id of the second %s",
+                            n1, what);
+    if (two == one)
+        return rc_case_fail(rd, &t->line_loc[0], b->name, n2,
+                            "expected a %s other than %s = %d (self-contact is not supported yet), got %s", what, n1,
+                            one, f->surf2->got);
     /* the stiffness: Stfac a stiffness value (Istf 1), or a factor on the
      * shells' stiffness (0, 1000: model/type7.c) */
     if (t->istf == RC_T7_DEFAULT) t->istf = 0;
@@ -504,12 +535,19 @@ static rc_status t24_checks(rc_reader *rd, const rc_block *b, rc_case_type24 *t,
                             t->stmin, f->stmax->got);
     if (igap0 != 0 && igap0 != 1 && igap0 != RC_T7_DEFAULT)
         return rc_case_fail(rd, &t->line_loc[2], b->name, "Igap0", "expected 0, 1 or 1000, got %s", f->igap0->got);
-    if (t->inacti == RC_T7_DEFAULT) t->inacti = 0;
-    if (t->inacti != 0 && t->inacti != 5)
-        return rc_case_fail(rd, &t->line_loc[4], b->name, "Inacti",
-                            "expected 0, blank, 1000 (no action) or 5 (the gap reduced by the initial "
-                            "penetration), got %s: not supported yet",
-                            f->inacti->got);
+    /* TYPE11, TYPE19: TYPE7's values; TYPE24, TYPE25: -1 every initial
+     * penetration acts (ricochet's 0), 5 the main segment shifted by it */
+    if (t->type == 11 || t->type == 19) {
+        rc_status st = t7_inacti(rd, b, &t->line_loc[4], &t->inacti, f->inacti);
+        if (st) return st;
+    } else {
+        if (t->inacti == RC_T7_DEFAULT || t->inacti == -1) t->inacti = 0;
+        if (t->inacti != 0 && t->inacti != 5)
+            return rc_case_fail(rd, &t->line_loc[4], b->name, "Inacti",
+                                "expected -1 (every initial penetration acts), 0, blank, 1000 (no action) or 5 (the "
+                                "gap reduced by the initial penetration), got %s: not supported yet",
+                                f->inacti->got);
+    }
     if (t->tstop < t->tstart)
         return rc_case_fail(rd, &t->line_loc[3], b->name, "Tstop", "expected Tstop >= Tstart = %.15g, got %s",
                             t->tstart, f->tstop->got);
@@ -523,7 +561,7 @@ rc_status rc_card_type24(rc_reader *rd, const rc_block *b)
     int nd;
     rc_status st;
     rc_case_type24 *t = NULL;
-    if ((st = t24_begin(rd, b, 24, &t))) return st;
+    if ((st = t24_begin(rd, b, 24, &t, 110))) return st;
     if ((st = rc_card_lines(rd, b, t->title, 6, 8,
                             "surf_ID1 surf_ID2 Istf (blank) (blank) Irem_i2 (blank) Idel, grnd_IDs (blank) Iedge "
                             "Edge_angle Gap_max_s Gap_max_m, Stmin Stmax Igap0 Ipen0 Ipen_max, Stfac Fric "
@@ -593,7 +631,7 @@ rc_status rc_card_type24(rc_reader *rd, const rc_block *b)
     if (nd > 6)
         return rc_case_fail(rd, &b->lines[7].loc, b->name, NULL,
                             "expected 6 data lines (Ifric 0: no friction law lines), got %d", nd);
-    const t24_fields f = {&l1[1], &l1[2], &l4[0], &l3[1], &l3[2], &l5[2], &l4[4]};
+    const t24_fields f = {&l1[1], &l1[2], &l4[0], &l3[1], &l3[2], &l5[2], &l4[4], "surf_ID1"};
     if ((st = t24_checks(rd, b, t, igap0, &f))) return st;
     if ((st = t7_only_default(rd, b, &t->line_loc[2], &l3[3], ipen0,
                               "initial penetrations within each part; ricochet's bodies are rigid")))
@@ -620,7 +658,7 @@ rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
     int nd;
     rc_status st;
     rc_case_type24 *t = NULL;
-    if ((st = t24_begin(rd, b, 25, &t))) return st;
+    if ((st = t24_begin(rd, b, 25, &t, 110))) return st;
     if ((st = rc_card_lines(rd, b, t->title, 6, 12,
                             "surf_ID1 surf_ID2 Istf Ithe Igap Irem_i2 (blank) Idel Iedge IPSTIF, grnd_IDs (blank) "
                             "Gap_scale %mesh_size Gap_max_s Gap_max_m, Stmin Stmax Igap0 Ishape Edge_angle "
@@ -704,7 +742,7 @@ rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
                             "expected 6 data lines (Ifric 0, IVIS2 0 and Ithe 0: no friction law, adhesion or "
                             "thermal lines), got %d",
                             nd);
-    const t24_fields f = {&l1[1], &l1[2], &l4[0], &l3[1], &l3[2], &l5[3], &l4[4]};
+    const t24_fields f = {&l1[1], &l1[2], &l4[0], &l3[1], &l3[2], &l5[3], &l4[4], "surf_ID1"};
     if ((st = t24_checks(rd, b, t, igap0, &f))) return st;
     if ((st = t7_only_default(rd, b, &t->line_loc[0], &l1[4], igap,
                               "a variable gap from the elements' thicknesses and sizes; ricochet's TYPE25 gap is zero")))
@@ -722,6 +760,252 @@ rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
     (void)gap_max_m;
     (void)ishape;
     (void)edge_angle;
+    (void)xfreq;
+    return rc_note_id(rd, RC_IDK_INTER, t->id, &t->loc, b->hdr->text);
+}
+
+/* ======================================================================
+ * /INTER/TYPE11 and /INTER/TYPE19
+ * ====================================================================== */
+
+/* /INTER/TYPE11/inter_ID: title and Radioss's four lines (layouts of 11.0
+ * to 2017), or five (2018 and later: the fric_ID line); the thermal lines
+ * of Ithe are refused with their flag. One table reads every layout from
+ * 11.0 on: the columns a version lacks (Ithe before 14.0, Irem_gap before
+ * 2020, dtmin Iform sens_ID in 11.0) are blank there, and 11.0's Multimp
+ * (columns 51-60, blank from 12.0 on) is read, unused. The layouts of 5.1
+ * to 10.0 lack the Stmin line (three lines); those of 4.x write the same
+ * three lines in 8- and 16-character fields. Read into c->type24 (type 11)
+ * with the two /LINE ids; the line roles of t->line_loc are TYPE24's
+ * (line 1, line 1, Stmin, Stfac, Inacti, fric_ID). */
+rc_status rc_card_type11(rc_reader *rd, const rc_block *b)
+{
+    int nd;
+    rc_status st;
+    rc_case_type24 *t = NULL;
+    if ((st = t24_begin(rd, b, 11, &t, 41))) return st;
+    const int ver = rc_layout_version(rd), nmax = ver >= 2018 ? 5 : ver >= 110 ? 4 : 3;
+    if (ver < 110 && (st = rc_card_lines(rd, b, t->title, 3, 3,
+                                         ver >= 51 ? "line_IDs line_IDm Istf (blank) Igap Multimp (blank) Idel, Stfac Fric "
+                                                     "Gapmin Tstart Tstop, IBC Inacti VISs VISF Bumult (Radioss 5.1-10.0 "
+                                                     "layout)"
+                                                   : "line_IDs line_IDm Istf (blank) Igap Multimp, Stfac Fric Gapmin Tstart "
+                                                     "Tstop, IBC Inacti VISs VISF Bumult (Radioss 4.x layout, 8- and "
+                                                     "16-character fields)",
+                                         &nd)))
+        return st;
+    if (ver >= 110 && (st = rc_card_lines(rd, b, t->title, 4, nmax,
+                            nmax == 5 ? "line_IDs line_IDm Istf Ithe Igap Multimp Irem_gap Idel, Stmin Stmax "
+                                        "%mesh_size dtmin Iform sens_ID, Stfac Fric Gapmin Tstart Tstop, IBC "
+                                        "Inacti VISs VISF Bumult[, fric_ID]"
+                                      : "line_IDs line_IDm Istf Ithe Igap Multimp Irem_gap Idel, Stmin Stmax "
+                                        "%mesh_size dtmin Iform sens_ID, Stfac Fric Gapmin Tstart Tstop, IBC "
+                                        "Inacti VISs VISF Bumult",
+                            &nd)))
+        return st;
+    int ithe = 0, igap = 0, multimp = 0, irem_gap = 0, idel = 0, iform = 0, ibc = 0;
+    double mesh_size = 0, dtmin = 0, visf = RC_T7_DEF_VISF, bumult = 0;
+    static const char heat[] = "heat transfer: ricochet has no temperatures";
+    rc_field l1[] = {
+        RC_F_INT("line_IDs", &t->line1, 0, RC_FF_POS),
+        {.name = "line_IDm", .width = 10, .type = RC_FT_INT, .out = &t->line2, .flags = RC_FF_NONNEG},
+        RC_F_INT("Istf", &t->istf, 0, RC_FF_NONNEG),
+        {.name = "Ithe", .width = 10, .type = RC_FT_INT, .out = &ithe, .flags = RC_FF_ONLY0, .note = heat},
+        RC_F_INT("Igap", &igap, 0, RC_FF_NONNEG),
+        RC_F_INT("Multimp", &multimp, 0, RC_FF_NONNEG),
+        RC_F_INT("Irem_gap", &irem_gap, 0, RC_FF_NONNEG),
+        RC_F_INT("Idel", &idel, 0, 0)};
+    rc_field l2[] = {
+        RC_F_REALD("Stmin", &t->stmin, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("Stmax", &t->stmax, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("%mesh_size", &mesh_size, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("dtmin", &dtmin, 0, RC_FF_NONNEG, RC_D_T),
+        RC_F_INT("Iform", &iform, 0, RC_FF_NONNEG),
+        RC_F_INT("sens_ID", &t->sensor_id, 0, RC_FF_NONNEG)};
+    rc_field l3[] = {
+        RC_F_REALD("Stfac", &t->stfac, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("Fric", &t->fric, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("Gapmin", &t->gapmin, 0, RC_FF_NONNEG, RC_D_L),
+        RC_F_REALD("Tstart", &t->tstart, 0, 0, RC_D_T),
+        RC_F_REALD("Tstop", &t->tstop, RC_DEF_TSTOP, RC_FF_ZDEF, RC_D_T)};
+    rc_field l4[] = {
+        {.name = "IBC", .width = 10, .type = RC_FT_INT, .out = &ibc, .flags = RC_FF_ONLY0,
+         .note = "boundary conditions of the secondary nodes at deactivation"},
+        RC_F_SKIP(20),
+        RC_F_INT("Inacti", &t->inacti, 0, 0),
+        RC_F_REALD("VISs", &t->viss, RC_T7_DEF_VISS, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("VISF", &visf, RC_T7_DEF_VISF, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("Bumult", &bumult, 0, RC_FF_NONNEG, RC_D_NONE)};
+    rc_field l5[] = {RC_F_SKIP(90), RC_F_INT("fric_ID", &t->fric_id, 0, RC_FF_NONNEG)};
+    /* 4.x: 8- and 16-character fields, no Stmin line */
+    rc_field o1[] = {RC_F_INTW("line_IDs", &t->line1, 0, RC_FF_POS, 8),
+                     {.name = "line_IDm", .width = 8, .type = RC_FT_INT, .out = &t->line2, .flags = RC_FF_NONNEG},
+                     RC_F_INTW("Istf", &t->istf, 0, RC_FF_NONNEG, 8), RC_F_SKIP(8),
+                     RC_F_INTW("Igap", &igap, 0, RC_FF_NONNEG, 8), RC_F_INTW("Multimp", &multimp, 0, RC_FF_NONNEG, 8)};
+    rc_field o3[] = {RC_F_REALW("Stfac", &t->stfac, 0, RC_FF_NONNEG, 16, RC_D_K),
+                     RC_F_REALW("Fric", &t->fric, 0, RC_FF_NONNEG, 16, RC_D_NONE),
+                     RC_F_REALW("Gapmin", &t->gapmin, 0, RC_FF_NONNEG, 16, RC_D_L),
+                     RC_F_REALW("Tstart", &t->tstart, 0, 0, 16, RC_D_T),
+                     RC_F_REALW("Tstop", &t->tstop, RC_DEF_TSTOP, RC_FF_ZDEF, 16, RC_D_T)};
+    rc_field o4[] = {
+        {.name = "IBC", .width = 8, .type = RC_FT_INT, .out = &ibc, .flags = RC_FF_ONLY0,
+         .note = "boundary conditions of the secondary nodes at deactivation"},
+        RC_F_SKIP(16),
+        RC_F_INTW("Inacti", &t->inacti, 0, 0, 8),
+        RC_F_REALW("VISs", &t->viss, RC_T7_DEF_VISS, RC_FF_ZDEF | RC_FF_NONNEG, 16, RC_D_NONE),
+        RC_F_REALW("VISF", &visf, RC_T7_DEF_VISF, RC_FF_ZDEF | RC_FF_NONNEG, 16, RC_D_NONE),
+        RC_F_REALW("Bumult", &bumult, 0, RC_FF_NONNEG, 16, RC_D_NONE)};
+    rc_field *lines[5] = {l1, l2, l3, l4, l5};
+    int nf[5] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5)};
+    int role[5] = {0, 2, 3, 4, 5}; /* TYPE24's line of each */
+    if (ver < 110) { /* no Stmin line: Stmin, Stmax 0 */
+        lines[1] = ver >= 51 ? l3 : o3;
+        lines[2] = ver >= 51 ? l4 : o4;
+        nf[1] = ver >= 51 ? RC_NF(l3) : RC_NF(o3);
+        nf[2] = ver >= 51 ? RC_NF(l4) : RC_NF(o4);
+        role[1] = 3;
+        role[2] = 4;
+        if (ver < 51) {
+            lines[0] = o1;
+            nf[0] = RC_NF(o1);
+        }
+        t->line_loc[2] = b->lines[1].loc;
+    }
+    t->line_loc[1] = t->line_loc[5] = b->lines[1].loc;
+    for (int k = 0; k < nd; k++) {
+        t->line_loc[role[k]] = b->lines[k + 1].loc;
+        if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
+    }
+    const rc_field igap0 = RC_F_INT("Igap0", NULL, 0, 0);
+    const rc_field *const fl1 = lines[0], *const fl3 = lines[ver < 110 ? 1 : 2], *const fl4 = lines[ver < 110 ? 2 : 3];
+    const t24_fields f = {&fl1[1], &fl1[2], &fl3[0], &l2[1], &igap0, &fl4[2], &fl3[4], "line_IDs"};
+    if ((st = t24_checks(rd, b, t, 0, &f))) return st;
+    if ((st = t7_only_default(rd, b, &t->line_loc[0], &fl1[4], igap,
+                              "a variable gap from the elements' thicknesses and sizes; 0 is the constant gap Gapmin")))
+        return st;
+    if (visf != RC_T7_DEF_VISF)
+        return rc_case_fail(rd, &t->line_loc[4], b->name, "VISF",
+                            "expected 1, 0 or blank (the default), got %s: not supported yet (ricochet's friction "
+                            "per contact point has no tangential damping)",
+                            fl4[4].got);
+    if (iform > 2 && iform != RC_T7_DEFAULT)
+        return rc_case_fail(rd, &t->line_loc[2], b->name, "Iform",
+                            "expected 0, 1, 2 or 1000 (friction penalty formulation), got %s", l2[4].got);
+    (void)multimp;
+    (void)irem_gap;
+    (void)idel;
+    return rc_note_id(rd, RC_IDK_INTER, t->id, &t->loc, b->hdr->text);
+}
+
+/* /INTER/TYPE19/inter_ID: title and Radioss's six lines; the curvature line
+ * of Icurv 1, 2, the friction law lines of Ifric and the thermal lines of
+ * Ithe are refused with their flags. One table reads every layout from
+ * 11.0 on (the columns a version lacks are blank there: Ithe before 2021,
+ * Iedge in 14.0, %mesh_size Irem_gap Irem_i2 before 2020, dtmin and
+ * sens_ID in 11.0, fric_ID before 2018). Read into c->type24 (type 19). */
+rc_status rc_card_type19(rc_reader *rd, const rc_block *b)
+{
+    int nd;
+    rc_status st;
+    rc_case_type24 *t = NULL;
+    if ((st = t24_begin(rd, b, 19, &t, 100))) return st;
+    if ((st = rc_card_lines(rd, b, t->title, 6, 12,
+                            "surf_IDs surf_IDm Istf Ithe Igap Iedge Ibag Idel Icurv, Fscalegap Gapmax, Stmin "
+                            "Stmax %mesh_size dtmin Irem_gap Irem_i2, Stfac Fric Gapmin Tstart Tstop, IBC (blank) "
+                            "Inacti VISs VISF Bumult, Ifric Ifiltr Xfreq Iform sens_ID (blank) fric_ID",
+                            &nd)))
+        return st;
+    int ithe = 0, igap = 0, iedge = 0, ibag = 0, idel = 0, icurv = 0, irem_gap = 0, irem_i2 = 0, ibc = 0;
+    int ifric = 0, ifiltr = 0, iform = 0;
+    double fscalegap = 0, gapmax = 0, mesh_size = 0, dtmin = 0, visf = RC_T7_DEF_VISF, bumult = 0, xfreq = 0;
+    static const char heat[] = "heat transfer: ricochet has no temperatures";
+    rc_field l1[] = {
+        RC_F_INT("surf_IDs", &t->surf1, 0, RC_FF_POS),
+        {.name = "surf_IDm", .width = 10, .type = RC_FT_INT, .out = &t->surf2, .flags = RC_FF_NONNEG},
+        RC_F_INT("Istf", &t->istf, 0, RC_FF_NONNEG),
+        {.name = "Ithe", .width = 10, .type = RC_FT_INT, .out = &ithe, .flags = RC_FF_ONLY0, .note = heat},
+        RC_F_INT("Igap", &igap, 0, RC_FF_NONNEG),
+        RC_F_INT("Iedge", &iedge, 0, RC_FF_NONNEG),
+        RC_F_INT("Ibag", &ibag, 0, RC_FF_NONNEG),
+        RC_F_INT("Idel", &idel, 0, 0),
+        {.name = "Icurv", .width = 10, .type = RC_FT_INT, .out = &icurv, .flags = RC_FF_ONLY0,
+         .note = "a gap envelope with curvature"}};
+    rc_field l2[] = {
+        RC_F_REALD("Fscalegap", &fscalegap, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("Gapmax", &gapmax, 0, RC_FF_NONNEG, RC_D_L)};
+    rc_field l3[] = {
+        RC_F_REALD("Stmin", &t->stmin, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("Stmax", &t->stmax, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("%mesh_size", &mesh_size, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("dtmin", &dtmin, 0, RC_FF_NONNEG, RC_D_T),
+        RC_F_INT("Irem_gap", &irem_gap, 0, RC_FF_NONNEG),
+        RC_F_INT("Irem_i2", &irem_i2, 0, RC_FF_NONNEG)};
+    rc_field l4[] = {
+        RC_F_REALD("Stfac", &t->stfac, 0, RC_FF_NONNEG, RC_D_K),
+        RC_F_REALD("Fric", &t->fric, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("Gapmin", &t->gapmin, 0, RC_FF_NONNEG, RC_D_L),
+        RC_F_REALD("Tstart", &t->tstart, 0, 0, RC_D_T),
+        RC_F_REALD("Tstop", &t->tstop, RC_DEF_TSTOP, RC_FF_ZDEF, RC_D_T)};
+    rc_field l5[] = {
+        {.name = "IBC", .width = 10, .type = RC_FT_INT, .out = &ibc, .flags = RC_FF_ONLY0,
+         .note = "boundary conditions of the secondary nodes at deactivation"},
+        RC_F_SKIP(20),
+        RC_F_INT("Inacti", &t->inacti, 0, 0),
+        RC_F_REALD("VISs", &t->viss, RC_T7_DEF_VISS, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("VISF", &visf, RC_T7_DEF_VISF, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("Bumult", &bumult, 0, RC_FF_NONNEG, RC_D_NONE)};
+    rc_field l6[] = {
+        {.name = "Ifric", .width = 10, .type = RC_FT_INT, .out = &ifric, .flags = RC_FF_ONLY0,
+         .note = "the friction laws of TYPE19; a /FRICTION card with its Ifric applies to the interface (fric_ID)"},
+        {.name = "Ifiltr", .width = 10, .type = RC_FT_INT, .out = &ifiltr, .flags = RC_FF_ONLY0,
+         .note = "the friction filter of TYPE19; a /FRICTION card with its Ifiltr applies to the interface (fric_ID)"},
+        RC_F_REALD("Xfreq", &xfreq, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_INT("Iform", &iform, 0, RC_FF_NONNEG),
+        RC_F_INT("sens_ID", &t->sensor_id, 0, RC_FF_NONNEG),
+        RC_F_SKIP(30),
+        RC_F_INT("fric_ID", &t->fric_id, 0, RC_FF_NONNEG)};
+    rc_field *lines[6] = {l1, l2, l3, l4, l5, l6};
+    const int nf[6] = {RC_NF(l1), RC_NF(l2), RC_NF(l3), RC_NF(l4), RC_NF(l5), RC_NF(l6)};
+    for (int k = 0; k < 6; k++) {
+        t->line_loc[k] = b->lines[k + 1].loc;
+        if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
+    }
+    if (nd > 6)
+        return rc_case_fail(rd, &b->lines[7].loc, b->name, NULL,
+                            "expected 6 data lines (Icurv, Ifric and Ithe 0: no curvature, friction law or "
+                            "thermal lines), got %d",
+                            nd);
+    const rc_field igap0 = RC_F_INT("Igap0", NULL, 0, 0);
+    const t24_fields f = {&l1[1], &l1[2], &l4[0], &l3[1], &igap0, &l5[2], &l4[4], "surf_IDs"};
+    if ((st = t24_checks(rd, b, t, 0, &f))) return st;
+    if ((st = t7_only_default(rd, b, &t->line_loc[0], &l1[4], igap,
+                              "a variable gap from the elements' thicknesses and sizes; 0 is the constant gap Gapmin")))
+        return st;
+    if (visf != RC_T7_DEF_VISF)
+        return rc_case_fail(rd, &t->line_loc[4], b->name, "VISF",
+                            "expected 1, 0 or blank (the default), got %s: not supported yet (ricochet's friction "
+                            "per contact point has no tangential damping)",
+                            l5[4].got);
+    if (iform > 2 && iform != RC_T7_DEFAULT)
+        return rc_case_fail(rd, &t->line_loc[5], b->name, "Iform",
+                            "expected 0, 1, 2 or 1000 (friction penalty formulation), got %s", l6[3].got);
+    /* Iedge: which edges TYPE19 makes of the surfaces: 0, 1000 (the
+     * default) and 2 every segment edge, the boxes' 12; 1 the free edges
+     * of the surfaces, which a closed box has none of (model/type7.c: the
+     * corners alone) */
+    t->iedge = iedge == RC_T7_DEFAULT ? 0 : iedge;
+    if (t->iedge > 2)
+        return rc_case_fail(rd, &t->line_loc[0], b->name, "Iedge",
+                            "expected 0, 1 (the free edges), 2 (every segment edge) or 1000, got %s", l1[5].got);
+    (void)ibag;
+    (void)idel;
+    (void)fscalegap;
+    (void)gapmax;
+    (void)mesh_size;
+    (void)dtmin;
+    (void)irem_gap;
+    (void)irem_i2;
+    (void)bumult;
     (void)xfreq;
     return rc_note_id(rd, RC_IDK_INTER, t->id, &t->loc, b->hdr->text);
 }

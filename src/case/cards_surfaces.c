@@ -161,6 +161,15 @@ rc_status rc_card_box(rc_reader *rd, const rc_block *b)
     if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
     if ((st = rc_parse_line(rd, b, &b->lines[2], l2, RC_NF(l2)))) return st;
     if ((st = rc_parse_line(rd, b, &b->lines[3], l3, RC_NF(l3)))) return st;
+    /* the corners (centre +- the half-sizes along any axes) and the box's
+     * extent must be numbers: a half-size near the largest double made the
+     * compiler's grid of the box's faces infinite */
+    const double reach = fabs(s->c[0]) + fabs(s->c[1]) + fabs(s->c[2]) + 2.0 * (s->abc[0] + s->abc[1] + s->abc[2]);
+    if (!isfinite(reach) || reach > 1e300)
+        return rc_case_fail(rd, &b->lines[3].loc, b->name, "a b c",
+                            "the box's corners (the centre +- the half-sizes) go beyond 1e300 m: expected a centre and "
+                            "half-sizes whose sum stays below 1e300 m, got a = %s, b = %s, c = %s",
+                            l3[0].got, l3[1].got, l3[2].got);
     /* orientation: global axes when lines 4 and 5 are absent */
     s->axis[0] = 1.0;
     s->axis2[1] = 1.0;

@@ -162,6 +162,9 @@ typedef struct rc_case_type6 {
                                                  or of an /INTER/TYPE7 (model/type7.c) */
     /* set only by the compiler for an /INTER/TYPE7 (model/type7.c) */
     int oneway;                               /* 1: the nodes of surf_ID1 against surf_ID2 only */
+    int edges_only;                           /* two boxes: 1 the edge pairs only, no corner against a face
+                                                 (/INTER/TYPE11); 2 the corners only, no edge pair
+                                                 (/INTER/TYPE19 Iedge 1); model/type7.c */
     double vis_crit;                          /* > 0: Visc = vis_crit 2 sqrt(k m*) (k the load
                                                  curve's slope, m* the bodies' reduced mass) */
     int fric_id;                              /* > 0: the /FRICTION card that applies (fric_ID) */
@@ -180,29 +183,33 @@ typedef struct rc_case_type7 {
     int igap;                                 /* line 1: 0 or 1000 (constant gap) */
     double stmin, stmax;                      /* line 3 [N/m]: the bounds of Istf 0's stiffness (0: none) */
     double stfac, fric, gapmin, tstart, tstop; /* line 4: [N/m] (Istf 1) or [-] (Istf 0), [-] [m] [s] [s] */
-    int inacti;                               /* line 5: 0 or 5 (1000 read as 0) */
+    int inacti;                               /* line 5: 0, 5 or 6 (1000 read as 0; 6 compiled as 5) */
     double viss, visf;                        /* line 5: critical damping fractions [-] */
     int iform, sensor_id, fric_id;            /* line 6 */
     rc_loc loc;
     rc_loc line_loc[6];                       /* lines 1-6 (Radioss's lines without the curvature line) */
 } rc_case_type7;
 
-/* /INTER/TYPE24/inter_ID and /INTER/TYPE25/inter_ID (cards_interfaces.c,
- * both in c->type24, told apart by `type`): penalty contact of two
- * surfaces both ways (the nodes of each against the segments of the
- * other), compiled as a two-way TYPE6 contact of a linear law by
- * model/type7.c. The fields ricochet does not use are read and checked,
- * not kept. */
+/* /INTER/TYPE24/inter_ID, /INTER/TYPE25/inter_ID, /INTER/TYPE11/inter_ID
+ * and /INTER/TYPE19/inter_ID (cards_interfaces.c, all in c->type24, told
+ * apart by `type`): penalty contact of two surfaces both ways (the nodes
+ * of each against the segments of the other; TYPE11 the edges of two
+ * lines, TYPE19 both), compiled as a two-way TYPE6 contact of a linear
+ * law by model/type7.c. The fields ricochet does not use are read and
+ * checked, not kept. */
 typedef struct rc_case_type24 {
     int id;
-    int type;                                 /* 24, or 25 (an /INTER/TYPE25 read into this struct) */
+    int type;                                 /* 24, 25, 11 or 19 (the card read into this struct) */
     char title[101];
-    int surf1, surf2;                         /* line 1: surf_ID1, surf_ID2 */
+    int surf1, surf2;                         /* line 1: surf_ID1, surf_ID2 (TYPE19 surf_IDs, surf_IDm; TYPE11: 0) */
+    int line1, line2;                         /* TYPE11 line 1: line_IDs, line_IDm (/LINE ids); 0 otherwise */
+    double gapmin;                            /* TYPE11, TYPE19: Gapmin [m] (the constant gap); 0 otherwise */
     int istf;                                 /* line 1: 0 (1000 read as 0): k = Stfac times the shells'
                                                  stiffness E t / 2; 1: k = Stfac */
     double stmin, stmax;                      /* line 3 [N/m]: the bounds of Istf 0's stiffness (0: none) */
     double stfac, fric, tstart, tstop;        /* line 4: [N/m] (Istf 1) or [-] (Istf 0), [-] [s] [s] */
-    int inacti;                               /* line 5: 0 or 5 (1000 read as 0) */
+    int inacti;                               /* line 5: 0 or 5 (1000 and TYPE24/25's -1 read as 0), or
+                                                 TYPE11/19's 6 (compiled as 5) */
     double viss;                              /* line 5: critical damping fraction [-] */
     int sensor_id, fric_id;                   /* line 6 */
     int iedge;                                /* TYPE25 line 1: 0 (1000 read as 0) or the edge option */
@@ -326,6 +333,17 @@ typedef struct rc_case_grpart {
     rc_loc *part_loc; /* [n] the line of each part id (NULL: not recorded) */
 } rc_case_grpart;
 
+/* /LINE/SURF/line_ID: the edges of a list of surfaces (the sides of
+ * /INTER/TYPE11), cards_bodies.c. */
+typedef struct rc_case_line {
+    int id;
+    char title[101];
+    int n;
+    int *surf;        /* [n] surface ids */
+    rc_loc loc;
+    rc_loc *surf_loc; /* [n] the line of each id */
+} rc_case_line;
+
 /* One coefficient set of /FRICTION (a direction of one pair, or the
  * defaults): C1..C6, Fric, VISF. */
 typedef struct rc_case_fricset {
@@ -442,6 +460,7 @@ struct rc_case {
     int njoint;  struct rc_case_joint *joint;       /* case_joint.h */
     int npart;   rc_case_part *part;
     int ngrpart; rc_case_grpart *grpart;
+    int nline;   rc_case_line *line;
     int nfriction; rc_case_friction *friction;
     int nfricorient; rc_case_fricorient *fricorient;
     struct rc_case_mesh *mesh; /* elements, /PROP, /MAT, /SKEW (case_mesh.h); NULL: none */

@@ -68,6 +68,7 @@ typedef enum {
     RC_IDK_JOINT, /* cards_joints.c */
     RC_IDK_RWALL, RC_IDK_SENSOR, /* cards_rwall.c */
     RC_IDK_SPRING, /* cards_mesh.c: /SPRING elements */
+    RC_IDK_LINE,   /* cards_surfaces.c: /LINE */
     RC_IDK_COUNT
 } rc_id_kind;
 
@@ -118,7 +119,7 @@ typedef struct rc_reader {
 
     int capfunct, capnode, capgrnod, caprbody, capsurf, captype6, capinivel,
         capgrav, capbcs, capwarn, capcoupling, capjoint, cappart, capgrpart, capfriction, capfricorient,
-        cappower, capimpvel, caprwall, capsensor, captype7, captype24;
+        cappower, capimpvel, caprwall, capsensor, captype7, captype24, capline;
     rc_id_entry *ids[RC_IDK_COUNT];
     int nids[RC_IDK_COUNT], capids[RC_IDK_COUNT];
     int seq;
@@ -320,6 +321,9 @@ rc_status rc_card_grnod(rc_reader *rd, const rc_block *b);
 rc_status rc_card_rbody(rc_reader *rd, const rc_block *b);
 rc_status rc_card_part(rc_reader *rd, const rc_block *b);
 rc_status rc_card_grpart(rc_reader *rd, const rc_block *b);
+rc_status rc_card_line(rc_reader *rd, const rc_block *b);
+rc_status rc_card_type11(rc_reader *rd, const rc_block *b);
+rc_status rc_card_type19(rc_reader *rd, const rc_block *b);
 /* After the last card: expand /GRPART/GRPART into part lists. */
 rc_status rc_cards_grpart_finish(rc_reader *rd);
 

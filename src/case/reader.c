@@ -473,7 +473,7 @@ static rc_status rc_check_dups(rc_reader *rd)
         "inter_ID", "inivel_ID", "grav_ID", "bcs_ID", "cpl_ID", "part_ID", "grpart_ID",
         "fric_ID", "fric_orient_ID", "impvel_ID",
         "shell_ID", "brick_ID", "prop_ID", "mat_ID", "skew_ID", "admas_ID", "joint_ID", "rwall_ID", "sens_ID",
-        "sprg_ID"};
+        "sprg_ID", "line_ID"};
     rc_dup *d = NULL;
     int nd = 0, cap = 0;
     rc_status st = RC_OK;
@@ -647,6 +647,8 @@ void rc_case_free(rc_case *c)
     free(c->part);
     for (int i = 0; i < c->ngrpart; i++) { free(c->grpart[i].parts); free(c->grpart[i].part_loc); }
     free(c->grpart);
+    for (int i = 0; i < c->nline; i++) { free(c->line[i].surf); free(c->line[i].surf_loc); }
+    free(c->line);
     for (int i = 0; i < c->nfriction; i++) free(c->friction[i].pair);
     free(c->friction);
     for (int i = 0; i < c->nfricorient; i++) free(c->fricorient[i].item);

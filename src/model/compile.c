@@ -544,6 +544,7 @@ static rc_status compile_type6(const rc_case *c, rc_model *m, int i, rc_error *e
     if (sst) return sst;
     m->inter_visc[i] = t6->visc;
     m->inter_oneway[i] = t6->oneway && m->inter_pair[i] == RC_PAIR_SEG_SEG && s1 == s1_in;
+    m->inter_edges[i] = rc_box_is_box_pair(m, i) ? (unsigned char)t6->edges_only : 0;
     if (t6->vis_crit > 0) {
         /* TYPE7's VISs: a fraction of the critical damping 2 sqrt(k m*) of
          * the linear law's slope k and the two bodies' reduced mass (a
@@ -970,6 +971,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     ALLOC(m->inter_pst, m->ninter);
     ALLOC(m->inter_orient, 2 * m->ninter);
     ALLOC(m->inter_oneway, m->ninter);
+    ALLOC(m->inter_edges, m->ninter);
     ALLOC(m->inter_pbase, m->ninter);
     ALLOC(m->inter_ptslot, m->ninter);
     ALLOC(m->inter_name, m->ninter);
@@ -1045,7 +1047,7 @@ void rc_model_free(rc_model *m)
                       m->inter_law, m->inter_pw, m->inter_pscale, m->inter_fscale, m->inter_kscale,
                       m->inter_vscale, m->inter_mred, m->inter_mrest, m->inter_pweight, m->inter_pimpact, m->inter_sband, m->inter_perelax, m->inter_hband, m->ewt_rel, m->body_loc, m->inter_loc,
                       m->surf_nadr, m->surf_node, m->surf_sadr, m->surf_seg, m->inter_npt, m->inter_pst, m->inter_pbase,
-                      m->inter_ptslot, m->surf_seg_turned, m->inter_orient, m->inter_oneway, m->inter_fast, m->start_note, m->state_pt};
+                      m->inter_ptslot, m->surf_seg_turned, m->inter_orient, m->inter_oneway, m->inter_edges, m->inter_fast, m->start_note, m->state_pt};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     free(m);
 }

@@ -104,6 +104,10 @@ const char *rc_geom_inter_pair_name(const rc_model *m, int i)
     if (k == RC_PAIR_SEG_PLANE && ba) return "box-plane (the box's 8 corners are the contact points)";
     if (k == RC_PAIR_SEG_SEG && m->inter_oneway && m->inter_oneway[i])
         return "nodes-segments (one way: the secondary nodes against the main segments)";
+    if (k == RC_PAIR_SEG_SEG && ba && bb && m->inter_edges && m->inter_edges[i] == 1)
+        return "box-box, edges only (the 12 edges of each box against those of the other; no corner against a face)";
+    if (k == RC_PAIR_SEG_SEG && ba && bb && m->inter_edges && m->inter_edges[i] == 2)
+        return "box-box, corners only (the 8 corners of each box against the 6 faces of the other; no edge pair)";
     if (k == RC_PAIR_SEG_SEG && ba && bb)
         return "box-box (the 8 corners of each box against the 6 faces of the other, the 12 edges of each against those of the other)";
     return rc_geom_pair_name(k);

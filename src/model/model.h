@@ -306,6 +306,10 @@ struct rc_model {
     unsigned char *inter_oneway; /* [ninter] 1: a segments-segments pair whose contact points are the
                             nodes of a against b's segments only (an /INTER/TYPE7, model/type7.c);
                             0: node to segment both ways */
+    unsigned char *inter_edges; /* [ninter] a box pair's points that act: 0 all; 1 the edge pairs
+                            alone, its corners never touching (an /INTER/TYPE11); 2 the corners
+                            alone, its edge pairs never touching (an /INTER/TYPE19 of Iedge 1,
+                            the free edges of closed surfaces: none); model/type7.c */
     /* friction per contact point (a segment surface's nodes against a plane
      * or a box, docs/theory.md 2.7): point j of interface i has its own
      * states (inter_pst[i] of them, global frame [N]: F_t,j, or the filtered

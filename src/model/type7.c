@@ -23,6 +23,13 @@
  * the segments it is attached to, and on one rigid body they cannot move
  * against them). The contacts are named "/INTER/TYPE7/<id> (nodes of
  * /RBODY/<id>)" and carry the card's id.
+ *
+ * /INTER/TYPE24 and /INTER/TYPE25 make one two-way contact of their two
+ * surfaces; /INTER/TYPE11 (each side a /LINE/SURF of one surface) and
+ * /INTER/TYPE19 the same between two boxes (/SURF/BOX or closed box meshes
+ * taken as their boxes, box_sides): TYPE11 the box pair's edge pairs alone
+ * (the contact's edges_only), TYPE19 the whole box pair (docs/theory.md
+ * 3.9).
  */
 #include <math.h>
 #include <stdio.h>
@@ -303,6 +310,100 @@ static int mesh_box(const rc_case *c, const rc_case_surf *cs, rc_case_surf *out)
     return 1;
 }
 
+/* A /SURF/PART that is a closed box (docs/theory.md 3.9): its parts hold
+ * one /BRICK on 8 distinct nodes, or six 4-node /SHELL, whose faces (the
+ * brick's six, node k + 4 above node k) make a closed box mesh for
+ * mesh_box; *out as mesh_box's. 0 otherwise. */
+static int part_box(const rc_case *c, const rc_case_surf *cs, rc_case_surf *out)
+{
+    if (cs->kind != RC_CASE_SURF_PART || !c->mesh) return 0;
+    static const int hex_face[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+    int seg[24], nq = 0, nbrick = 0, nother = 0;
+    for (int e = 0; e < c->mesh->nelem; e++) {
+        const rc_case_elem *el = &c->mesh->elem[e];
+        int in = 0;
+        for (int k = 0; k < cs->npart && !in; k++) in = cs->part[k] == el->part_id;
+        if (!in) continue;
+        if (el->kind == RC_ELEM_BRICK && nbrick == 0 && nq == 0) {
+            for (int f = 0; f < 6; f++)
+                for (int q = 0; q < 4; q++) seg[4 * f + q] = el->nodes[hex_face[f][q]];
+            nq = 6;
+            nbrick = 1;
+        } else if (el->kind == RC_ELEM_SHELL && !nbrick && nq < 6 && el->nodes[3] != 0 && el->nodes[3] != el->nodes[2]) {
+            for (int q = 0; q < 4; q++) seg[4 * nq + q] = el->nodes[q];
+            nq++;
+        } else {
+            nother++;
+        }
+    }
+    if (nother || nq != 6) return 0;
+    const rc_case_surf tmp = {.id = cs->id, .kind = RC_CASE_SURF_SEG, .loc = cs->loc, .nseg = 6, .seg = seg};
+    if (!mesh_box(c, &tmp, out)) return 0;
+    snprintf(out->title, sizeof out->title, "the box of /SURF/PART/%d", cs->id);
+    return 1;
+}
+
+/* A closed box mesh of either kind: a /SURF/SEG (mesh_box) or a /SURF/PART
+ * (part_box). */
+static int closed_box(const rc_case *c, const rc_case_surf *cs, rc_case_surf *out)
+{
+    return mesh_box(c, cs, out) || part_box(c, cs, out);
+}
+
+/* The two sides of a TYPE11 (its /LINE/SURF lines, each of one surface)
+ * or a TYPE19 (its surfaces): each a /SURF/BOX or a closed box mesh
+ * (mesh_box: its box in bx[q]); side[q] the surface id. TYPE11's edges are
+ * then the box pair's edge pairs alone, TYPE19's its corners and edges
+ * (docs/theory.md 3.9); any other surface is refused. */
+static rc_status box_sides(const rc_case *c, const rc_case_type24 *t, rc_case_surf *bx, int *side, rc_error *err)
+{
+    static const char *const lname[2] = {"line_IDs", "line_IDm"}, *const sname[2] = {"surf_IDs", "surf_IDm"};
+    for (int q = 0; q < 2; q++) {
+        const char *field = t->type == 11 ? lname[q] : sname[q];
+        int sid = q ? t->surf2 : t->surf1;
+        if (t->type == 11) {
+            const int lid = q ? t->line2 : t->line1;
+            const rc_case_line *l = NULL;
+            for (int k = 0; k < c->nline && !l; k++)
+                if (c->line[k].id == lid) l = &c->line[k];
+            if (!l)
+                RC_RAISE(err, RC_EINPUT,
+                         RC_LOCFMT "card /INTER/TYPE11/%d, field %s: expected the id of a /LINE/SURF, got %d (no such line)",
+                         RC_LOC(t->line_loc[0]), t->id, field, lid);
+            if (l->n != 1)
+                RC_RAISE(err, RC_EINPUT,
+                         RC_LOCFMT "card /INTER/TYPE11/%d, field %s: /LINE/SURF/%d lists %d surfaces: not supported yet "
+                                   "(ricochet's edges are those of one box); expected a line of one surface, a "
+                                   "/SURF/BOX or a closed box mesh",
+                         RC_LOC(t->line_loc[0]), t->id, field, lid, l->n);
+            sid = l->surf[0];
+            if (rc_case_find_surf(c, sid) < 0)
+                RC_RAISE(err, RC_EINPUT,
+                         RC_LOCFMT "card /LINE/SURF/%d, field surf_ID: expected the id of a /SURF, got %d (no such "
+                                   "surface); the line is %s of /INTER/TYPE11/%d at %s:%d",
+                         RC_LOC(rc_loc_at(l->surf_loc, 0, l->loc)), lid, sid, field, t->id, RC_LOC(t->line_loc[0]));
+        }
+        const int s = rc_case_find_surf(c, sid);
+        if (s < 0)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card /INTER/TYPE19/%d, field %s: expected the id of a /SURF, got %d (no such surface)",
+                     RC_LOC(t->line_loc[0]), t->id, field, sid);
+        const rc_case_surf *cs = &c->surf[s];
+        side[q] = sid;
+        if (cs->kind == RC_CASE_SURF_BOX) continue;
+        if (closed_box(c, cs, &bx[q])) continue;
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card /INTER/TYPE%d/%d, field %s: /SURF/%s/%d is not supported yet: ricochet models "
+                           "TYPE%d (%s) between two boxes only; expected a /SURF/BOX or a closed box mesh (a "
+                           "/SURF/SEG of 6 quadrilaterals on the 8 corners of a rectangular box, or a /SURF/PART of "
+                           "one such /BRICK or six such /SHELL, taken as that box)",
+                 RC_LOC(t->line_loc[0]), t->type, t->id, field, rc_t7_kinds[cs->kind], sid, t->type,
+                 t->type == 11 ? "the edges of each against the edges of the other"
+                               : "the nodes of each against the other's faces and the edges against the edges");
+    }
+    return RC_OK;
+}
+
 rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
 {
     memset(x, 0, sizeof *x);
@@ -343,17 +444,22 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
     x->k24 = calloc((size_t)c->ntype24 + 1, sizeof *x->k24);
     x->name24 = calloc((size_t)c->ntype24 + 1, sizeof *x->name24);
     x->bx = calloc(2 * (size_t)c->ntype24 + 1, sizeof *x->bx);
+    x->side = calloc(2 * (size_t)c->ntype24 + 1, sizeof *x->side);
     x->t24 = calloc((size_t)c->ntype24 + 1, sizeof *x->t24);
-    if (!x->k24 || !x->name24 || !x->bx || !x->t24) {
+    if (!x->k24 || !x->name24 || !x->bx || !x->side || !x->t24) {
         rc_type7_end(x);
         RC_RAISE(err, RC_ENOMEM, "out of memory");
     }
     for (int i = 0; i < c->ntype24 && !st; i++) {
         const rc_case_type24 *t = &c->type24[i];
-        const int sid[2] = {t->surf1, t->surf2};
+        if (t->type == 11 || t->type == 19) { /* two boxes or closed box meshes: box_sides */
+            st = box_sides(c, t, &x->bx[2 * i], &x->side[2 * i], err);
+            for (int q = 0; q < 2 && !st; q++) x->nbx += x->bx[2 * i + q].kind == RC_CASE_SURF_BOX;
+        }
+        const int sid[2] = {t->type == 11 ? x->side[2 * i] : t->surf1, t->type == 11 ? x->side[2 * i + 1] : t->surf2};
         static const char *const fname[2] = {"surf_ID1", "surf_ID2"};
         int nbox = 0;
-        for (int q = 0; q < 2 && !st; q++) {
+        for (int q = 0; q < 2 && !st && t->type != 11 && t->type != 19; q++) {
             const int s = rc_case_find_surf(c, sid[q]);
             if (s < 0) {
                 st = RC_SET(err, RC_EINPUT, RC_LOCFMT "card /INTER/TYPE%d/%d, field %s: expected the id of a /SURF, got %d (no such surface)",
@@ -382,15 +488,16 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
          * appended below; other segment surfaces have no edge pairs */
         if (!st && t->type == 25 && t->iedge != 0 && nbox == 0) {
             const rc_case_surf *s1 = &c->surf[rc_case_find_surf(c, t->surf1)], *s2 = &c->surf[rc_case_find_surf(c, t->surf2)];
-            if (mesh_box(c, s1, &x->bx[2 * i]) && mesh_box(c, s2, &x->bx[2 * i + 1]) &&
+            if (closed_box(c, s1, &x->bx[2 * i]) && closed_box(c, s2, &x->bx[2 * i + 1]) &&
                 x->bx[2 * i].rbody_id != x->bx[2 * i + 1].rbody_id)
                 x->nbx += 2;
             else
                 st = RC_SET(err, RC_EINPUT,
                             RC_LOCFMT "card /INTER/TYPE25/%d, field Iedge: edge-to-edge contact of segment surfaces "
                                       "is not supported yet except between two closed box meshes of two bodies "
-                                      "(a /SURF/SEG of 6 quadrilaterals on the 8 corners of a rectangular box, "
-                                      "taken as that box); /SURF/%s/%d and /SURF/%s/%d are not both such meshes: "
+                                      "(a /SURF/SEG of 6 quadrilaterals on the 8 corners of a rectangular box, or a "
+                                      "/SURF/PART of one such /BRICK or six such /SHELL, taken as that box); /SURF/%s/%d "
+                                      "and /SURF/%s/%d are not both such meshes: "
                                       "expected Iedge 0 (nodes against segments only), two such meshes, or two "
                                       "/SURF/BOX",
                             RC_LOC(t->line_loc[0]), t->id, rc_t7_kinds[s1->kind], t->surf1, rc_t7_kinds[s2->kind],
@@ -404,7 +511,12 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
                             RC_LOC(t->line_loc[5]), t->type, t->id, t->fric_id);
         }
         x->k24[i] = t->stfac;
-        if (!st && t->istf == 0) st = pair_stiffness(c, t, &x->k24[i], err);
+        if (!st && t->istf == 0) {
+            rc_case_type24 ts = *t; /* TYPE11: its lines' surfaces */
+            ts.surf1 = sid[0];
+            ts.surf2 = sid[1];
+            st = pair_stiffness(c, &ts, &x->k24[i], err);
+        }
         snprintf(x->name24[i], sizeof x->name24[i], "/INTER/TYPE%d/%d", t->type, t->id);
     }
     if (st) {
@@ -504,8 +616,12 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
     int nbs = 0;
     if (c->ntype24) memcpy(x->t24, c->type24, (size_t)c->ntype24 * sizeof *x->t24);
     for (int i = 0; i < c->ntype24; i++) {
-        if (x->bx[2 * i].kind != RC_CASE_SURF_BOX) continue;
+        if (c->type24[i].type == 11) { /* the surfaces of its lines */
+            x->t24[i].surf1 = x->side[2 * i];
+            x->t24[i].surf2 = x->side[2 * i + 1];
+        }
         for (int q = 0; q < 2; q++) {
+            if (x->bx[2 * i + q].kind != RC_CASE_SURF_BOX) continue;
             rc_case_surf *bs = &x->surf[x->nuser + x->npts + nbs];
             *bs = x->bx[2 * i + q];
             bs->id = RC_TYPE7_SURF_ID0 - (x->npts + nbs);
@@ -543,7 +659,8 @@ rc_status rc_type7_contacts(rc_type7_case *x, rc_case *c, const rc_model *m, rc_
             if (m->surf_body[s] == bm) continue; /* the main surface's own body */
             rc_case_type6 *t6 = &x->type6[n++];
             *t6 = (rc_case_type6){.id = t->id, .surf1 = c->surf[s].id, .surf2 = t->surf_id, .fric = t->fric,
-                                  .gap = t->gapmin, .tstart = t->tstart, .tstop = t->tstop, .inacti = t->inacti,
+                                  .gap = t->gapmin, .tstart = t->tstart, .tstop = t->tstop,
+                                  .inacti = t->inacti == 6 ? 5 : t->inacti, /* 6 read as 5 (theory 3.7) */
                                   .ascalef = 1.0, .ascalev = 1.0, .fct_ld = RC_TYPE7_FUNCT_ID, .ascalex = x->len,
                                   .fscaleld = x->k[i] * x->len, .fscaleul = 1.0, .fscalev = 1.0, .loc = t->loc,
                                   .sensor_id = t->sensor_id, .name = x->name[k], .oneway = 1, .vis_crit = t->viss,
@@ -574,12 +691,14 @@ rc_status rc_type7_contacts(rc_type7_case *x, rc_case *c, const rc_model *m, rc_
                                "surfaces of two bodies (a rigid body does not meet itself)",
                      RC_LOC(t->line_loc[0]), t->type, t->id, t->surf1, t->surf2, m->surf_body[s1] < 0 ? " (none, fixed)" : "");
         rc_case_type6 *t6 = &x->type6[n++];
-        *t6 = (rc_case_type6){.id = t->id, .surf1 = t->surf1, .surf2 = t->surf2, .fric = t->fric, .gap = 0.0,
-                              .tstart = t->tstart, .tstop = t->tstop, .inacti = t->inacti, .ascalef = 1.0,
+        *t6 = (rc_case_type6){.id = t->id, .surf1 = t->surf1, .surf2 = t->surf2, .fric = t->fric, .gap = t->gapmin,
+                              .tstart = t->tstart, .tstop = t->tstop, .inacti = t->inacti == 6 ? 5 : t->inacti,
+                              .ascalef = 1.0,
                               .ascalev = 1.0, .fct_ld = RC_TYPE7_FUNCT_ID, .ascalex = x->len,
                               .fscaleld = x->k24[i] * x->len, .fscaleul = 1.0, .fscalev = 1.0, .loc = t->loc,
                               .sensor_id = t->sensor_id, .name = x->name24[i], .oneway = 0, .vis_crit = t->viss,
-                              .fric_id = t->fric_id};
+                              .fric_id = t->fric_id,
+                              .edges_only = t->type == 11 ? 1 : t->type == 19 && t->iedge == 1 ? 2 : 0};
         t6->line_loc[0] = t->line_loc[0];
         t6->line_loc[1] = t6->line_loc[3] = t6->line_loc[4] = t->line_loc[3];
         t6->line_loc[2] = t->line_loc[5];
@@ -604,6 +723,7 @@ void rc_type7_end(rc_type7_case *x)
     free(x->k24);
     free(x->name24);
     free(x->bx);
+    free(x->side);
     free(x->t24);
     memset(x, 0, sizeof *x);
 }

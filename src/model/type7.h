@@ -43,7 +43,10 @@ typedef struct rc_type7_case {
     double *k;               /* [ntype7] each card's stiffness [N/m] (Istf 1: Stfac; 0: main_stiffness) */
     double *k24;             /* [ntype24] each TYPE24 card's stiffness [N/m] */
     char (*name24)[64];      /* [ntype24] the TYPE24 contacts' names */
-    rc_case_surf *bx;        /* [2 ntype24] TYPE25 Iedge: the boxes of two closed box meshes (kind BOX), or zeros */
+    rc_case_surf *bx;        /* [2 ntype24] TYPE25 Iedge, TYPE11, TYPE19: the box of each side that is a closed
+                                box mesh (kind BOX), or zeros */
+    int *side;               /* [2 ntype24] TYPE11, TYPE19: the surface id of each side (a /SURF/BOX or a
+                                closed box mesh; TYPE11 through its /LINE/SURF), else 0 */
     int nbx;                 /* the boxes made (appended after the point surfaces) */
     rc_case_type24 *t24;     /* [ntype24] the cards of the copy, naming those boxes */
     double fx[2], fy[2];     /* the load curve: the line y = x through (0, 0), (1, 1) */

@@ -349,14 +349,16 @@ rc_status rc_bk_open_output(const rc_model *m, const rc_run_options *opt, const 
     if (!path) return RC_OK;
     const char **types = malloc(((size_t)m->ninter + 1) * sizeof(char *));
     if (!types) RC_RAISE(err, RC_ENOMEM, "out of memory");
-    /* a wall's contacts (model/rwall.c), a TYPE7's, TYPE24's and TYPE25's (model/type7.c) are
-     * named after their card */
+    /* a wall's contacts (model/rwall.c), a TYPE7's, TYPE24's, TYPE25's, TYPE11's and
+     * TYPE19's (model/type7.c) are named after their card */
     for (int i = 0; i < m->ninter; i++)
         types[i] = m->inter_law[i] == RC_LAW_POWER                      ? "POWER"
                    : strncmp(m->inter_name[i], "/RWALL/", 7) == 0        ? "RWALL"
                    : strncmp(m->inter_name[i], "/INTER/TYPE7/", 13) == 0 ? "TYPE7"
                    : strncmp(m->inter_name[i], "/INTER/TYPE24/", 14) == 0 ? "TYPE24"
                    : strncmp(m->inter_name[i], "/INTER/TYPE25/", 14) == 0 ? "TYPE25"
+                   : strncmp(m->inter_name[i], "/INTER/TYPE11/", 14) == 0 ? "TYPE11"
+                   : strncmp(m->inter_name[i], "/INTER/TYPE19/", 14) == 0 ? "TYPE19"
                                                                          : "TYPE6";
     rc_output_meta meta = {m->title, m->case_path, m->checksum, m->unit_mass, m->unit_length, m->unit_time,
                            integrator, m->rtol, m->atol_pos,

@@ -388,9 +388,11 @@ int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, co
                 on[1] = 0;
             }
         }
-        /* two boxes: their overlap, whatever touches (box_box_depth) */
+        /* two boxes: their overlap, whatever touches (box_box_depth); not
+         * for TYPE11's edges alone, whose corners pass through faces, nor
+         * TYPE19's corners alone (Iedge 1), whose edges pass each other */
         if (m->inter_pair[i] == RC_PAIR_SEG_SEG && m->surf_kind[m->inter_sa[i]] == RC_SURF_BOX &&
-            m->surf_kind[m->inter_sb[i]] == RC_SURF_BOX) {
+            m->surf_kind[m->inter_sb[i]] == RC_SURF_BOX && !(m->inter_edges && m->inter_edges[i])) {
             /* the overlap of the two solids, whatever carries it, within the
              * bound of the penetration (a corner on a face or two crossing
              * edges give the separating-axis depth itself: then P is

@@ -219,7 +219,7 @@ T('t6_visc_nan', T6, 'field Visc', at(T6, 7, 1, 20, 'NaN'))
 T('t6_missing_line', T6, 'expected 6 data lines', delete(T6, 7))
 T('t6_same_body', T6, 'surf_ID1/surf_ID2', at(T6, 2, 11, 20, '1'))
 T('t6_unsupported_pair', T6, 'surf_ID1/surf_ID2', at(T6, 2, 1, 10, '2'))  # plane against plane
-T('inter_type11', '/INTER/TYPE11/5', 'not supported yet', before_end(['/INTER/TYPE11/5', 'type 11', '         1']))
+T('inter_type12', '/INTER/TYPE12/5', 'not supported yet', before_end(['/INTER/TYPE12/5', 'type 12', '         1']))
 T('inter_dup_id', '/INTER/POWER/1', 'field inter_ID', rename(PW, '/INTER/POWER/1'))
 # ---- /INTER/POWER
 T('pw_surf_missing', PW, 'field surf_ID1', at(PW, 2, 1, 10, '9'))
@@ -610,7 +610,7 @@ TL('type24_iedge', T24H, 'field Iedge', before_end(T24(l2=cols('', 31, 40, '1'))
 TL('type24_ipen0', T24H, 'field Ipen0', before_end(T24(l3=cols('', 51, 60, '1')), expect=4))
 TL('type24_ipen_max', T24H, 'field Ipen_max', before_end(T24(l3=cols('', 61, 80, '0.01')), expect=4))
 TL('type24_ibc', T24H, 'field IBC', before_end(T24(l5='       111'), expect=6))
-TL('type24_inacti', T24H, 'field Inacti', before_end(T24(l5=cols('', 31, 40, '-1')), expect=6))
+TL('type24_inacti', T24H, 'field Inacti', before_end(T24(l5=cols('', 31, 40, '2')), expect=6))
 TL('type24_tpressfit', T24H, 'field Tpressfit', before_end(T24(l5=cols('', 81, 100, '0.1')), expect=6))
 TL('type24_ifric', T24H, 'field Ifric', before_end(T24(l6='         1'), expect=7))
 TL('type24_ifiltr', T24H, 'field Ifiltr', before_end(T24(l6='         0         1'), expect=7))
@@ -645,6 +645,57 @@ TL('type25_tpressfit', T25H, 'field Tpressfit', before_end(T25(l4=STOP('1e5', ''
 TL('type25_dtstif', T25H, 'field DTSTIF', before_end(T25(l6=cols('', 61, 80, '0.5')), expect=7))
 TL('type25_box_against_segments', T25H, 'field surf_ID2',
    before_end(SEGS24 + T25(l1='         4        95         1'), expect=len(SEGS24) + 2))
+
+# /LINE/SURF of the plane /SURF/PLANE/2 and of the box /SURF/BOX/4
+LINES = ['/LINE/SURF/9102', 'edges of the plane', '         2', '/LINE/SURF/9104', 'edges of the box', '         4']
+
+
+def T11(l1=None, l2='', l3=None, l4='', l5=''):
+    """/INTER/TYPE11/94 (line_IDs /LINE/SURF/9102 of the plane, line_IDm
+    /LINE/SURF/9104 of the box by default: the reader's faults come first;
+    Istf 1, Stfac 1e5 N/m), after LINES, with the lines given."""
+    l1 = '      9102      9104         1' if l1 is None else l1
+    l3 = STOP('1e5') if l3 is None else l3
+    return LINES + ['/INTER/TYPE11/94', 'edge to edge', l1, l2, l3, l4, l5]
+
+
+T11H = '/INTER/TYPE11/94'
+N = len(LINES)
+TL('type11_istf_combined', T11H, 'field Istf', before_end(T11(l1='      9102      9104         2'), expect=N + 2))
+TL('type11_ithe', T11H, 'field Ithe', before_end(T11(l1='      9102      9104         1         1'), expect=N + 2))
+TL('type11_igap_variable', T11H, 'field Igap',
+   before_end(T11(l1='      9102      9104         1         0         1'), expect=N + 2))
+TL('type11_self_contact', T11H, 'field line_IDm', before_end(T11(l1='      9102         0         1'), expect=N + 2))
+TL('type11_stfac_blank', T11H, 'field Stfac', before_end(T11(l3=STOP('', '0.3')), expect=N + 4))
+TL('type11_ibc', T11H, 'field IBC', before_end(T11(l4='       111'), expect=N + 5))
+TL('type11_visf', T11H, 'field VISF', before_end(T11(l4=cols('', 61, 80, '0.5')), expect=N + 5))
+TL('type11_inacti_moved', T11H, 'field Inacti', before_end(T11(l4=cols('', 31, 40, '3')), expect=N + 5))
+TL('type11_line_missing', T11H, 'field line_IDm', before_end(T11(l1='      9104      9199         1'), expect=N + 2))
+TL('type11_line_of_a_plane', T11H, 'field line_IDs', before_end(T11(), expect=N + 2))
+TL('type11_line_two_surfaces', T11H, 'field line_IDs',
+   before_end(['/LINE/SURF/9105', 'two', '         4         2'] + T11(l1='      9105      9104         1'),
+              expect=N + 5))
+TL('linesurf_surface_missing', '/LINE/SURF/9106', 'field surf_ID',
+   before_end(['/LINE/SURF/9106', 'no surface', '        99'] + T11(l1='      9106      9104         1'), expect=2))
+TL('line_edge', '/LINE/EDGE/9107', 'not supported yet', before_end(['/LINE/EDGE/9107', 'free edges', '         4']))
+
+
+def T19(l1=None, l2='', l3='', l4=None, l5='', l6=''):
+    """/INTER/TYPE19/93 (surf_IDs /SURF/PLANE/2, surf_IDm /SURF/BOX/4 by
+    default; Istf 1, Stfac 1e5 N/m) with the lines given."""
+    l1 = '         2         4         1' if l1 is None else l1
+    l4 = STOP('1e5') if l4 is None else l4
+    return ['/INTER/TYPE19/93', 'nodes and edges', l1, l2, l3, l4, l5, l6]
+
+
+T19H = '/INTER/TYPE19/93'
+TL('type19_icurv', T19H, 'field Icurv', before_end(T19(l1=cols('         2         4         1', 81, 90, '1')), expect=2))
+TL('type19_self_contact', T19H, 'field surf_IDm', before_end(T19(l1='         2         2         1'), expect=2))
+TL('type19_ifric', T19H, 'field Ifric', before_end(T19(l6='         1'), expect=7))
+TL('type19_surface_plane', T19H, 'field surf_IDs', before_end(T19(), expect=2))
+TL('box_reach_overflow', SB, 'field a b c', at(SB, 4, 1, 20, '1e308'))
+TL('type19_iedge', T19H, 'field Iedge', before_end(T19(l1=cols('         2         4         1', 51, 60, '3')), expect=2))
+
 
 def write_all():
     for old in glob.glob('[0-9][0-9][0-9]_*'):

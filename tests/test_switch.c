@@ -1,5 +1,5 @@
 /* Method switching (/SOLVER Switch, rc_model_set_switch; docs/theory.md
- * 7.10): the CVODE path hands over to an explicit Runge-Kutta method while
+ * 7.9): the CVODE path hands over to an explicit Runge-Kutta method while
  * impacts pin BDF's step near the explicit stability limit, and back when
  * the contacts rest.
  *

@@ -190,7 +190,7 @@ int rc_model_preload(const rc_model *m);
  * the CVODE path (Method 1) switch from BDF to an explicit error-controlled
  * Runge-Kutta method (ARKODE ERKStep) while impacts pin BDF's step near
  * the explicit stability limit, and back when the contacts rest
- * (docs/theory.md 7.10); 0 BDF throughout. Other methods ignore it.
+ * (docs/theory.md 7.9); 0 BDF throughout. Other methods ignore it.
  * RC_EINPUT for another number or a NULL m; the model unchanged then. Not
  * while a run or session uses the model. */
 rc_status rc_model_set_switch(rc_model *m, int on, rc_error *err);

@@ -25,7 +25,7 @@
  * model's Jacobian pattern on the kept states, and of it the active part
  * (activepart.h).
  *
- * Method switching (/SOLVER Switch 1, docs/theory.md 7.10): at a restart
+ * Method switching (/SOLVER Switch 1, docs/theory.md 7.9): at a restart
  * after events, when BDF's largest step since its last restart is at most
  * RC_SW_PIN critical explicit steps of the closed contacts
  * (rc_explicit_step), the run goes on with ARKODE's ERKStep (an explicit
@@ -65,7 +65,7 @@
 #include "engine/assembly/assembly.h"
 #include "engine/reports/reports.h"
 
-/* Method switching (docs/theory.md 7.10): BDF hands over to the explicit
+/* Method switching (docs/theory.md 7.9): BDF hands over to the explicit
  * method when its largest step since the last restart is at most RC_SW_PIN
  * critical steps h_crit [-]; the explicit method hands back after
  * RC_SW_QUIET steps without an event [-] with its last step at most
@@ -122,7 +122,7 @@ typedef struct run_ctx {
     rc_stats lost;    /* the counters of a first attempt redone (cv_solve) */
     rc_rootmap rm; /* the root functions CVODE is given (integrator.h) */
     rc_actpart ap; /* the Newton matrix on the active part of the pattern (activepart.h) */
-    /* method switching (docs/theory.md 7.10) */
+    /* method switching (docs/theory.md 7.9) */
     int sw;          /* switching on (m->method_switch; off under sensitivities) */
     int expl;        /* the explicit integrator (erk) carries the run */
     void *erk;       /* ARKODE ERKStep, created at the first switch */
@@ -595,7 +595,7 @@ static void scatter_state(run_ctx *c)
 }
 
 
-/* ---- method switching (docs/theory.md 7.10) ----------------------------- */
+/* ---- method switching (docs/theory.md 7.9) ----------------------------- */
 /* The explicit integrator's counters since they were last added, into s
  * (its steps also into steps_explicit); a ReInit that zeroed them is seen
  * as counters below the ones added. */

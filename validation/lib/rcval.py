@@ -11,6 +11,10 @@ convergence study over rtol), and check() prefixes each check name with
 
 RICOCHET_VAL_METHOD=ida runs every deck on the IDA path (ricochet run
 --method ida) and prefixes the check names with "ida:".
+
+RICOCHET_VAL_SWITCH=1 runs every deck with method switching forced on
+(ricochet run --switch: BDF and the explicit method, docs/theory.md 7.9;
+only the CVODE path switches) and prefixes the check names with "switch:".
 """
 import atexit
 import os
@@ -29,7 +33,8 @@ FAILED = []
 PROBLEM = os.path.basename(os.path.dirname(os.path.abspath(sys.argv[0])))
 DEFAULTS = os.environ.get("RICOCHET_VAL_SOLVER", "") == "default"
 METHOD = os.environ.get("RICOCHET_VAL_METHOD", "")
-PREFIX = ("default:" if DEFAULTS else "") + (METHOD + ":" if METHOD else "")
+SWITCH = os.environ.get("RICOCHET_VAL_SWITCH", "") == "1"
+PREFIX = ("default:" if DEFAULTS else "") + (METHOD + ":" if METHOD else "") + ("switch:" if SWITCH else "")
 
 
 _TMPROOT = []
@@ -59,7 +64,8 @@ def strip_solver(text):
 
 
 def _execute(case, out):
-    cmd = [RICOCHET, "run", case, "-o", out, "-q"] + (["--method", METHOD] if METHOD else [])
+    cmd = [RICOCHET, "run", case, "-o", out, "-q"] + (["--method", METHOD] if METHOD else []) + \
+        (["--switch"] if SWITCH else [])
     p = subprocess.run(cmd, capture_output=True, text=True)
     if p.returncode != 0:
         raise RuntimeError(f"ricochet failed ({p.returncode}): {p.stderr.strip()}")

@@ -336,7 +336,7 @@ void rc_report_plausibility(const rc_model *m, FILE *f)
 }
 
 /* The critical step of an explicit method on the closed contacts
- * (reports.h; docs/theory.md 7.10): omega_max^2 and the damping rate
+ * (reports.h; docs/theory.md 7.9): omega_max^2 and the damping rate
  * bounded by Gershgorin's rows of M^-1 K and M^-1 C over the free bodies'
  * translations, each closed contact with its stiffness scale k_s and its
  * linear damping, h_crit = 2 / omega_max (sqrt(1 + zeta^2) - zeta). */

@@ -54,7 +54,8 @@ class RunStats(dict):
     """Statistics of a run (``rc_stats``) as a dict: counters (steps,
     rhs_evals, jac_evals, lin_setups, nonlin_iters, nonlin_fails,
     err_test_fails, root_evals, events, reinits, impacts, settles,
-    violations, preload_iters), t_end [s] (simulated time reached), wall_time
+    violations, preload_iters, switches_explicit, switches_implicit,
+    steps_explicit), t_end [s] (simulated time reached), wall_time
     [s], energy_residual [J], t_settle [s] (NaN: none), preloaded (bool),
     preload_wall_time [s], the notes (sampling_note, physics_note,
     contacts_note), ``impact``: the first 5 impacts as dicts (inter_id,

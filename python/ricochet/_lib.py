@@ -99,6 +99,7 @@ _PROTOTYPES = {
     "rc_model_set_rtol": (c_int, [c_void_p, c_double, POINTER(RcError)]),
     "rc_model_set_method": (c_int, [c_void_p, c_int, POINTER(RcError)]),
     "rc_model_set_preload": (c_int, [c_void_p, c_int, POINTER(RcError)]),
+    "rc_model_set_switch": (c_int, [c_void_p, c_int, POINTER(RcError)]),
     "rc_model_rtol": (c_double, [c_void_p]),
     "rc_model_t_end": (c_double, [c_void_p]),
     "rc_model_dt_out": (c_double, [c_void_p]),

@@ -486,7 +486,9 @@ static rc_status cv_open(void *self, const rc_model *m, rc_data *d, const rc_run
     *y = c->yfull;
     *yp = NULL;
     *n = m->ny;
-    *integrator = "CVODE BDF, Newton, KLU sparse direct, rootfinding";
+    *integrator = m->method_switch ? "CVODE BDF, Newton, KLU sparse direct, rootfinding; method switching to "
+                                     "ARKODE ERKStep (Cash-Karp 6(4)5) and back"
+                                   : "CVODE BDF, Newton, KLU sparse direct, rootfinding";
     return RC_OK;
 }
 

@@ -302,6 +302,10 @@ void rc_impacts_step(rc_impacts *im, const rc_model *m, const rc_data *d, double
 {
     /* the root functions at the step's end evaluated the same reports */
     const int cached = rc_report_cache_state(m, d, y);
+    /* the state at the step's middle, interpolated once for every contact
+     * (NULL: not yet, or the backend's scratch since overwritten) */
+    const double *ymid = NULL;
+    double tmid = NAN;
     for (int i = 0; i < im->ninter; i++) {
         if (im->cur[i] < 0) continue;
         const int closed = d->inter_mode[i] == RC_MODE_CLOSED;
@@ -330,12 +334,24 @@ void rc_impacts_step(rc_impacts *im, const rc_model *m, const rc_data *d, double
              * method switching, their vertex lies in the step before, out
              * of the interpolant: the parabola's value was 2e-5 low) */
             if (closed && interp && from == t0) {
-                const double tm = 0.5 * (t0 + t), fm = refine(im, m, d, i, tm, interp, ctx), f0 = h->fn[last];
-                if (isfinite(fm) && fm > f0 && fm > f1) {
-                    const double dab = (fm - f0) / (tm - t0), dbc = (f1 - fm) / (t - tm), dabc = (dbc - dab) / (t - t0);
-                    const double ts = dabc < 0.0 ? 0.5 * (t0 + tm) - dab / (2.0 * dabc) : tm;
-                    refine_force(im, m, d, i, ts > t0 && ts < t ? ts : tm, t0, t, interp, ctx);
-                    h->tpk = t;
+                const double tm = 0.5 * (t0 + t), f0 = h->fn[last];
+                if (!ymid || tm != tmid) {
+                    tmid = tm;
+                    if (interp(ctx, tm, &ymid) != 0) ymid = NULL;
+                }
+                if (ymid) {
+                    rc_inter_report rm;
+                    report(m, d, i, tm, ymid, &rm);
+                    update(row, &rm, closed, tm);
+                    const double fm = rm.fn > 0 ? rm.fn : 0.0;
+                    if (fm > f0 && fm > f1) {
+                        const double dab = (fm - f0) / (tm - t0), dbc = (f1 - fm) / (t - tm),
+                                     dabc = (dbc - dab) / (t - t0);
+                        const double ts = dabc < 0.0 ? 0.5 * (t0 + tm) - dab / (2.0 * dabc) : tm;
+                        refine_force(im, m, d, i, ts > t0 && ts < t ? ts : tm, t0, t, interp, ctx);
+                        h->tpk = t;
+                        ymid = NULL; /* the scratch holds other times now */
+                    }
                 }
             }
             /* the force rose to the last sample and falls now: its maximum

@@ -279,6 +279,9 @@ static double refine(rc_impacts *im, const rc_model *m, const rc_data *d, int i,
  * tenth of the step, then a quarter of the last, for RC_PEAK_ITERS rounds
  * (each sample raises the row's maximum when above it). */
 #define RC_PEAK_ITERS 4
+/* A step is probed for a force maximum inside it when longer than the
+ * contact's time scale over this [-]. */
+#define RC_PEAK_STEPS 50.0
 static void refine_force(rc_impacts *im, const rc_model *m, const rc_data *d, int i, double ts, double lo, double hi,
                          rc_interp_fn interp, void *ctx)
 {
@@ -332,9 +335,14 @@ void rc_impacts_step(rc_impacts *im, const rc_model *m, const rc_data *d, double
              * covers it (the three samples below see it a step later, and
              * when the step is long, e.g. the explicit method's under
              * method switching, their vertex lies in the step before, out
-             * of the interpolant: the parabola's value was 2e-5 low) */
-            if (closed && interp && from == t0) {
-                const double tm = 0.5 * (t0 + t), f0 = h->fn[last];
+             * of the interpolant: the parabola's value was 2e-5 low). Looked
+             * for in a step longer than 1/RC_PEAK_STEPS of the contact's
+             * time scale over which the samples' force did not fall (a
+             * peak inside a step over which it fell is the samples'
+             * parabola's, in this step or in a probed one) */
+            const double f0 = h->fn[last], tc = rc_impacts_contact_time(m, i);
+            if (closed && interp && from == t0 && f1 >= f0 && f1 > 0 && !(RC_PEAK_STEPS * (t - t0) < tc)) {
+                const double tm = 0.5 * (t0 + t);
                 if (!ymid || tm != tmid) {
                     tmid = tm;
                     if (interp(ctx, tm, &ymid) != 0) ymid = NULL;

@@ -16,7 +16,7 @@ RC_COMMIT := $(shell c=$$(git rev-parse --short=12 HEAD 2>/dev/null) && { git di
 ALLCFLAGS = $(CSTD) $(WARN) $(CXFLAGS) -fPIC -pthread -Iinclude -Isrc -I/usr/include/suitesparse \
             -DRC_COMMIT='"$(RC_COMMIT)"' $(CFLAGS)
 # what the library links against; also written into ricochet.pc (Libs.private)
-LIBS_PRIVATE := -lsundials_cvodes -lsundials_ida -lsundials_kinsol -lsundials_nvecserial -lsundials_sunmatrixsparse \
+LIBS_PRIVATE := -lsundials_cvodes -lsundials_arkode -lsundials_ida -lsundials_kinsol -lsundials_nvecserial -lsundials_sunmatrixsparse \
            -lsundials_sunlinsolklu -lklu -lgsl -lgslcblas -lnetcdf -lm -pthread
 LDLIBS  := $(LIBS_PRIVATE)
 BUILD   ?= build

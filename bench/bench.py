@@ -1442,13 +1442,15 @@ def bench_joint(B):
     return rows
 
 
-def only_rtol_text(d, rtol):
+def only_rtol_text(d, rtol, switch=False):
     """A deck's text with the /SOLVER card reduced to Rtol (absolute
-    tolerances derived from the model, docs/theory.md 7.1)."""
+    tolerances derived from the model, docs/theory.md 7.1); switch: with
+    Switch 1 (method switching, docs/theory.md 7.9)."""
     t = d.text()
     i = t.index("/SOLVER")
     rest = t[i:].split("\n")
-    return t[:i] + "\n".join([rest[0], "%10d%10d%10d%20.6g" % (1, 5, 10**7, rtol), "", ""] + rest[4:])
+    return t[:i] + "\n".join([rest[0], "%10d%10d%10d%20.6g" % (1, 5, 10**7, rtol), "",
+                               "%20s%10d" % ("", 1) if switch else ""] + rest[4:])
 
 
 def bench_stepcost(B, old_build, repeat=3, cases=((100, 5.0), (1000, 0.02))):
@@ -1529,7 +1531,8 @@ def bench_stepcost(B, old_build, repeat=3, cases=((100, 5.0), (1000, 0.02))):
     return res
 
 
-def bench_cascade(B, sizes, tend=5.0, rtol=1e-6, repeat=1, factors=(1, 0.1, 0.01), cli_from=None):
+def bench_cascade(B, sizes, tend=5.0, rtol=1e-6, repeat=1, factors=(1, 0.1, 0.01), cli_from=None, switch=False,
+                  variants=("locked", "free")):
     """Target 3, the impact cascade: the settling column (column_deck) over
     tend at Rtol rtol with derived absolute tolerances, locked (the 1-D ODE)
     and free, at each N of sizes. ricochet: the CLI run (netCDF: final-force
@@ -1537,11 +1540,13 @@ def bench_cascade(B, sizes, tend=5.0, rtol=1e-6, repeat=1, factors=(1, 0.1, 0.01
     output, best of repeat); the explicit scheme at each dt_factor; errors
     against the event-located RK4 (h = 2e-5 s). Sizes >= cli_from are timed
     by the CLI run alone (no rc_time run). Ends with the cost growth
-    exponents between successive sizes."""
+    exponents between successive sizes. switch: the decks with /SOLVER
+    Switch 1 (method switching); variants: the decks run."""
     q = dict(COL)
     q["tend"], q["dtout"] = tend, tend / 10
     res = {"rtol": rtol, "tend": tend, "sizes": {}}
-    print(f"== Impact cascade: settling column over {tend:g} s, ricochet Rtol {rtol:g} (derived atol) ==\n")
+    print(f"== Impact cascade: settling column over {tend:g} s, ricochet Rtol {rtol:g} (derived atol)"
+          f"{', method switching on' if switch else ''} ==\n")
     for N in sizes:
         scale = N * q["m"] * G
         ff = os.path.join(B.work, f"casc{N}_{tend:g}_ref.txt")
@@ -1551,12 +1556,12 @@ def bench_cascade(B, sizes, tend=5.0, rtol=1e-6, repeat=1, factors=(1, 0.1, 0.01
         F = np.loadtxt(ff, ndmin=1)
         S = {"N": N, "reference": {"events": ref["events"], "wall": ref["wall_time"]}, "ricochet": {}, "explicit": []}
         rows = []
-        for var in ("locked", "free"):
-            name = f"casc{N}_{tend:g}_{var}_rtol{rtol:.0e}"
+        for var in variants:
+            name = f"casc{N}_{tend:g}_{var}_rtol{rtol:.0e}" + ("_switch" if switch else "")
             path = os.path.join(B.work, name + ".rad")
             out = os.path.join(B.work, name + ".nc")
             with open(path, "w") as f:
-                f.write(only_rtol_text(column_deck(N, rtol, q, locked=(var == "locked")), rtol))
+                f.write(only_rtol_text(column_deck(N, rtol, q, locked=(var == "locked")), rtol, switch))
             rc, so, se, elapsed, rss = B.measured([B.ricochet, "run", path, "-o", out, "-q"], 7200)
             pcpu = B.last_cpu
             if rc != 0 or not os.path.exists(out):
@@ -1580,11 +1585,12 @@ def bench_cascade(B, sizes, tend=5.0, rtol=1e-6, repeat=1, factors=(1, 0.1, 0.01
                                   "process_cpu": pcpu, "stats": st, "error": err}
             rows.append([var, fmt_t(wall) + ("" if walls else " (CLI)"), fmt_t(st["wall_time"]),
                          fmt_t(pcpu if B.clock == "cpu" else elapsed),
-                         int(st["steps"]), int(st["events"]), int(st["reinits"]),
-                         f"{1e3 * wall / st['steps']:.4f}", fmt_e(err)])
+                         int(st["steps"]), int(st.get("steps_explicit", 0)),
+                         f"{int(st.get('switches_explicit', 0))}/{int(st.get('switches_implicit', 0))}",
+                         int(st["events"]), int(st["reinits"]), f"{1e3 * wall / st['steps']:.4f}", fmt_e(err)])
         table(f"N = {N}, {tend:g} s: ricochet Rtol {rtol:g} (RK4 reference: {ref['events']} events)",
-              ["deck", "time", "CLI wall", "process " + B.clock, "steps", "events", "restarts", "ms/step",
-               "final-force err"],
+              ["deck", "time", "CLI wall", "process " + B.clock, "steps", "explicit steps", "switches", "events",
+               "restarts", "ms/step", "final-force err"],
               rows, note=f"time ({B.clock}): rc_time, best of {repeat} ((CLI): the CLI process's CPU time with "
                          "--clock cpu, else its stats_wall_time); error = max over contacts |F - F_ref| / (N m g) "
                          "at the end")
@@ -1605,7 +1611,7 @@ def bench_cascade(B, sizes, tend=5.0, rtol=1e-6, repeat=1, factors=(1, 0.1, 0.01
     rows = []
     for a, b in zip(sizes, sizes[1:]):
         Sa, Sb = res["sizes"][str(a)], res["sizes"][str(b)]
-        for var in ("locked", "free"):
+        for var in variants:
             if var in Sa["ricochet"] and var in Sb["ricochet"]:
                 ra, rb = Sa["ricochet"][var], Sb["ricochet"][var]
                 lr = math.log(b / a)
@@ -1660,6 +1666,9 @@ def main():
     ap.add_argument("--cascade-cli-from", type=int, default=None,
                     help="cascade: sizes >= this are timed by their CLI run only (no rc_time run)")
     ap.add_argument("--repeat", type=int, default=1, help="cascade: rc_time runs per deck (best of; 0: CLI wall)")
+    ap.add_argument("--cascade-switch", action="store_true",
+                    help="cascade: the decks with /SOLVER Switch 1 (method switching, docs/theory.md 7.9)")
+    ap.add_argument("--cascade-variants", default="locked,free", help="cascade: the decks run (locked, free)")
     ap.add_argument("--ss-atol", default="scaled", choices=["scaled", "derived"],
                     help="stick-slip decks: atol_pos = 1e-3 rtol m, atol_vel = 1e-2 rtol m/s (scaled, the default) "
                          "or only Rtol, the absolute tolerances derived from the model's scales (derived)")
@@ -1712,7 +1721,8 @@ def main():
         B.results["cascade"] = bench_cascade(B, [int(s) for s in a.sizes.split(",") if s], a.cascade_tend,
                                              a.cascade_rtol, a.repeat,
                                              tuple(float(x) for x in a.cascade_dt_factors.split(",") if x),
-                                             a.cascade_cli_from)
+                                             a.cascade_cli_from, a.cascade_switch,
+                                             tuple(v for v in a.cascade_variants.split(",") if v))
     if a.only == "stepcost":
         B.results["stepcost"] = bench_stepcost(B, a.old_build)
     B.results["bench_wall"] = time.time() - t0

@@ -130,6 +130,12 @@ grep -q "is unstable" "$tmp/e" && expect static_unstable 3 $rc "($(head -c 200 "
 "$bin" run validation/joint_pendulum/case.rad -o "$tmp/jc.nc" --method cvode > "$tmp/e" 2>&1; rc=$?
 grep -q "joints" "$tmp/e" && grep -q "IDA" "$tmp/e" && [ ! -e "$tmp/jc.nc" ] &&
     expect joints_on_cvode 2 $rc "($(head -c 160 "$tmp/e"))" || expect joints_on_cvode 2 99 "(exit $rc: $(head -c 160 "$tmp/e"))"
+# method switching (--switch, --no-switch): the summary's line of switches
+"$bin" run validation/bounce_settle/case.rad -o "$tmp/sw.nc" --switch > "$tmp/o" 2>&1; rc=$?
+grep -q "^method switches [1-9][0-9]* to explicit, [1-9][0-9]* to implicit; explicit steps [1-9]" "$tmp/o" &&
+    expect switch_runs 0 $rc "($(grep '^method' "$tmp/o"))" || expect switch_runs 0 99 "(exit $rc: $(head -c 200 "$tmp/o"))"
+"$bin" run validation/bounce_settle/case.rad -o "$tmp/sn.nc" --switch --no-switch > "$tmp/o" 2>&1; rc=$?
+! grep -q "^method switches" "$tmp/o" && expect no_switch 0 $rc "" || expect no_switch 0 99 "(exit $rc: $(head -c 200 "$tmp/o"))"
 # the preload (/SOLVER Preload, --preload): a dynamic run from the static
 # equilibrium says so; a model outside the static scope is refused at its card
 "$bin" run validation/preload_column/case.rad -o "$tmp/pl.nc" --t-end 0.1 --dt-out 0.05 > "$tmp/o" 2>&1; rc=$?

@@ -136,7 +136,7 @@ static void build_case(rc_case *c)
     c->grav = &gr;
     add_couplings(c);
     c->run = (rc_case_run){1, 0.01, 0.001, {0}, 0, 0};
-    c->solver = (rc_case_solver){0, 1, 5, 100000, 1e-8, 1e-11, 1e-11, 1e-8, 1e-8, 1e-9, 0, 0, 0, {0}, {0}};
+    c->solver = (rc_case_solver){0, 1, 5, 100000, 1e-8, 1e-11, 1e-11, 1e-8, 1e-8, 1e-9, 0, 0, 0, {0}, {0}, 0};
 }
 
 /* A penetrating, spinning, non-unit-quaternion state. */
@@ -474,7 +474,7 @@ static void build_power_case(rc_case *c)
     c->ngrav = 1;
     c->grav = &gr;
     c->run = (rc_case_run){1, 0.01, 0.001, {0}, 0, 0};
-    c->solver = (rc_case_solver){0, 1, 5, 100000, 1e-8, 1e-11, 1e-11, 1e-8, 1e-8, 1e-9, 0, 0, 0, {0}, {0}};
+    c->solver = (rc_case_solver){0, 1, 5, 100000, 1e-8, 1e-11, 1e-11, 1e-8, 1e-8, 1e-9, 0, 0, 0, {0}, {0}, 0};
 }
 
 /* Near the initial pose: every body turned a little (non-unit quaternion),

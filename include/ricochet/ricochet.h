@@ -186,6 +186,16 @@ rc_status rc_model_set_method(rc_model *m, int method, rc_error *err);
 rc_status rc_model_set_preload(rc_model *m, int on, rc_error *err);
 /* The model's preload: 1 on, 0 off (and for a NULL m). */
 int rc_model_preload(const rc_model *m);
+/* Replace the method switching (/SOLVER Switch) of a compiled model: 1 lets
+ * the CVODE path (Method 1) switch from BDF to an explicit error-controlled
+ * Runge-Kutta method (ARKODE ERKStep) while impacts pin BDF's step near
+ * the explicit stability limit, and back when the contacts rest
+ * (docs/theory.md 7.9); 0 BDF throughout. Other methods ignore it.
+ * RC_EINPUT for another number or a NULL m; the model unchanged then. Not
+ * while a run or session uses the model. */
+rc_status rc_model_set_switch(rc_model *m, int on, rc_error *err);
+/* The model's method switching: 1 on, 0 off (and for a NULL m). */
+int rc_model_switch(const rc_model *m);
 /* The relative tolerance, end time and output interval of a model [-, s, s];
  * NaN for a NULL m. */
 double rc_model_rtol(const rc_model *m);
@@ -316,6 +326,10 @@ typedef struct rc_stats {
     double preload_wall_time; /* its wall-clock time [s]                */
     long contacts;        /* persistent contacts (rc_contact; not impacts) */
     rc_contact contact[RC_STATS_CONTACTS]; /* the first ones              */
+    long switches_explicit; /* method switches from BDF to the explicit
+                             method (events method_explicit)            */
+    long switches_implicit; /* and back (events method_implicit)        */
+    long steps_explicit;  /* of `steps`, those of the explicit method     */
 } rc_stats;
 
 /* The callback of every event (rc_run_options.on_event): called once per

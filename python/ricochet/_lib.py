@@ -69,7 +69,8 @@ class RcStats(ctypes.Structure):
                 ("settles", c_long), ("t_settle", c_double), ("violations", c_long),
                 ("physics_note", ctypes.c_char * 640), ("contacts_note", ctypes.c_char * 640),
                 ("preloaded", c_int), ("preload_iters", c_long), ("preload_wall_time", c_double),
-                ("contacts", c_long), ("contact", RcContact * RC_STATS_CONTACTS)]
+                ("contacts", c_long), ("contact", RcContact * RC_STATS_CONTACTS),
+                ("switches_explicit", c_long), ("switches_implicit", c_long), ("steps_explicit", c_long)]
 
 
 # int (*rc_event_fn)(void *user, double t, const char *kind, const char *element, const double values[3])
@@ -98,6 +99,7 @@ _PROTOTYPES = {
     "rc_model_set_rtol": (c_int, [c_void_p, c_double, POINTER(RcError)]),
     "rc_model_set_method": (c_int, [c_void_p, c_int, POINTER(RcError)]),
     "rc_model_set_preload": (c_int, [c_void_p, c_int, POINTER(RcError)]),
+    "rc_model_set_switch": (c_int, [c_void_p, c_int, POINTER(RcError)]),
     "rc_model_rtol": (c_double, [c_void_p]),
     "rc_model_t_end": (c_double, [c_void_p]),
     "rc_model_dt_out": (c_double, [c_void_p]),

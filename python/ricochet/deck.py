@@ -262,16 +262,18 @@ class Deck:
         self.add(f"/COUPLING/CONTACT/{cid}", *lines, title=title)
 
     def solver(self, rtol=1e-6, atol_pos=1e-9, atol_quat=1e-9, atol_vel=1e-6, atol_omega=1e-6,
-               atol_energy=1e-6, max_order=5, max_steps=100000, hmax=0.0, h0=0.0, method=1, preload=0):
+               atol_energy=1e-6, max_order=5, max_steps=100000, hmax=0.0, h0=0.0, method=1, preload=0,
+               switch=0):
         """/SOLVER; method: 1 CVODE, 2 IDA, 3 static analysis (KINSOL); preload 1:
         a dynamic run starts from the static equilibrium at t = 0 (the field
-        Preload is written only when set)."""
+        Preload is written only when set); switch 1: method switching
+        (line 3's Switch, written only when set)."""
         first = [("i", method), ("i", max_order), ("i", max_steps), ("r", rtol), ("r", hmax), ("r", h0)]
         if preload:
             first.append(("i", preload))
         self.add("/SOLVER", line(*first),
                  line(("r", atol_pos), ("r", atol_quat), ("r", atol_vel), ("r", atol_omega)),
-                 line(("r", atol_energy)))
+                 line(("r", atol_energy), *([("i", switch)] if switch else [])))
 
     def block_on_floor(self, m, r, k, g, visc, z0, v0, fric=None, stiff=None):
         """A 1-sphere "block" (rotations locked) of mass m, radius r at height z0

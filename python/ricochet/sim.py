@@ -54,7 +54,8 @@ class RunStats(dict):
     """Statistics of a run (``rc_stats``) as a dict: counters (steps,
     rhs_evals, jac_evals, lin_setups, nonlin_iters, nonlin_fails,
     err_test_fails, root_evals, events, reinits, impacts, settles,
-    violations, preload_iters), t_end [s] (simulated time reached), wall_time
+    violations, preload_iters, switches_explicit, switches_implicit,
+    steps_explicit), t_end [s] (simulated time reached), wall_time
     [s], energy_residual [J], t_settle [s] (NaN: none), preloaded (bool),
     preload_wall_time [s], the notes (sampling_note, physics_note,
     contacts_note), ``impact``: the first 5 impacts as dicts (inter_id,
@@ -147,7 +148,7 @@ class _Model:
     compiled. ``deck`` is a path, or a ricochet.deck.Deck written to a
     temporary file that lives as long as this object."""
 
-    def __init__(self, deck, set=None, rtol=None, method=None, preload=None):
+    def __init__(self, deck, set=None, rtol=None, method=None, preload=None, switch=None):
         L = _lib.lib()
         self.ptr = None
         self._tmp = None
@@ -192,6 +193,11 @@ class _Model:
             st = L.rc_model_set_method(m, _METHODS[method], _lib.byref(err))
         if not st and preload is True:
             st = L.rc_model_set_preload(m, 1, _lib.byref(err))
+        if not st and switch is not None:
+            if not isinstance(switch, bool):
+                self.free()
+                raise InputError(f"switch: expected True or False, got {switch!r}")
+            st = L.rc_model_set_switch(m, int(switch), _lib.byref(err))
         if st:
             self.free()
             _raise(st, err)
@@ -267,7 +273,7 @@ def _options(path, t_end, dt_out, on_violation, bridge):
 
 
 def run(deck, set=None, out=None, t_end=None, dt_out=None, rtol=None, method=None, on_event=None,
-        on_violation=None, preload=None, xarray=True):
+        on_violation=None, preload=None, switch=None, xarray=True):
     """Run a deck with libricochet and return its results.
 
     deck          path of the case file, or a ricochet.deck.Deck
@@ -288,6 +294,8 @@ def run(deck, set=None, out=None, t_end=None, dt_out=None, rtol=None, method=Non
                   run (InterruptedRun); an exception stops it and is raised
     on_violation  'stop' or 'warn' (what a failed physics check does)
     preload       True/False: start from the static equilibrium or not
+    switch        True/False: method switching between BDF and an explicit
+                  method on the CVODE path (/SOLVER Switch, docs/theory.md 7.9)
     xarray        True: an xarray.Dataset; False: a ricochet.Results (dict
                   of numpy arrays, needs netCDF4)
 
@@ -298,7 +306,7 @@ def run(deck, set=None, out=None, t_end=None, dt_out=None, rtol=None, method=Non
     """
     from .results import read
     bridge = _Bridge(on_event) if on_event is not None else None
-    model = _Model(deck, set=set, rtol=rtol, method=method, preload=preload)
+    model = _Model(deck, set=set, rtol=rtol, method=method, preload=preload, switch=switch)
     tmp = None
     try:
         if out is None:
@@ -349,12 +357,12 @@ class Session:
     """
 
     def __init__(self, deck, set=None, out=None, t_end=None, dt_out=None, rtol=None, method=None, on_event=None,
-                 on_violation=None, preload=None):
+                 on_violation=None, preload=None, switch=None):
         self._ptr = None
         self._stats = None
         self._bridge = _Bridge(on_event) if on_event is not None else None
         self._lock = threading.Lock()
-        self._model = _Model(deck, set=set, rtol=rtol, method=method, preload=preload)
+        self._model = _Model(deck, set=set, rtol=rtol, method=method, preload=preload, switch=switch)
         self.path = None if out is None else os.fspath(out)
         try:
             self._opt = _options(self.path, t_end, dt_out, on_violation, self._bridge)  # kept alive: the session uses it

@@ -350,7 +350,7 @@ def study(deck, parameters, client=None, outputs=(), times=None, set=None, n_imp
                 exception from it stops the study: the pending cases are
                 cancelled, the exception propagates, the cases done so far
                 stay in study_dir
-    run_kw      t_end, dt_out, rtol, method, on_violation, preload: as ``run``
+    run_kw      t_end, dt_out, rtol, method, on_violation, preload, switch: as ``run``
 
     Returns an xarray.Dataset with dimension ``case``: the parameters (one
     variable per field, its name made netCDF-safe, the field in its
@@ -375,7 +375,7 @@ def study(deck, parameters, client=None, outputs=(), times=None, set=None, n_imp
     for f in fields:
         if f in common:
             raise ValueError(f"study: {f!r} is both a study parameter and in set=")
-    bad = [k for k in run_kw if k not in ("t_end", "dt_out", "rtol", "method", "on_violation", "preload")]
+    bad = [k for k in run_kw if k not in ("t_end", "dt_out", "rtol", "method", "on_violation", "preload", "switch")]
     if bad:
         raise TypeError(f"study: unexpected arguments {bad}")
     if isinstance(outputs, str):

@@ -353,7 +353,7 @@ static rc_status rc_engine_settings(rc_reader *rd)
 }
 
 /* /SOLVER: Method Max_order Max_steps Rtol Hmax H0 Preload; the four
- * absolute tolerances; Atol_energy. */
+ * absolute tolerances; Atol_energy Switch. */
 rc_status rc_card_solver(rc_reader *rd, const rc_block *b)
 {
     rc_case_solver *s = &rd->c->solver;
@@ -363,7 +363,7 @@ rc_status rc_card_solver(rc_reader *rd, const rc_block *b)
     if ((st = rc_single(rd, b, &rd->solver_hdr))) return st;
     if ((st = rc_card_lines(rd, b, NULL, 1, 3,
                             "Method Max_order Max_steps Rtol Hmax H0 Preload[, Atol_pos Atol_quat "
-                            "Atol_vel Atol_omega[, Atol_energy]]",
+                            "Atol_vel Atol_omega[, Atol_energy Switch]]",
                             &nd)))
         return st;
 
@@ -380,7 +380,8 @@ rc_status rc_card_solver(rc_reader *rd, const rc_block *b)
                      RC_F_REALD("Atol_quat", &s->atol_quat, RC_DEF_ATOL_QUAT, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
                      RC_F_REALD("Atol_vel", &s->atol_vel, RC_DEF_ATOL_VEL, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_V),
                      RC_F_REALD("Atol_omega", &s->atol_omega, RC_DEF_ATOL_OMEGA, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_W)};
-    rc_field l3[] = {RC_F_REALD("Atol_energy", &s->atol_energy, RC_DEF_ATOL_ENERGY, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_E)};
+    rc_field l3[] = {RC_F_REALD("Atol_energy", &s->atol_energy, RC_DEF_ATOL_ENERGY, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_E),
+                     RC_F_SET("Switch", &s->method_switch, 0, 0, RC_BIT(0) | RC_BIT(1), 0, NULL)};
     if ((st = rc_parse_line(rd, b, &b->lines[0], l1, RC_NF(l1)))) return st;
     if (nd >= 2 && (st = rc_parse_line(rd, b, &b->lines[1], l2, RC_NF(l2)))) return st;
     if (nd >= 3 && (st = rc_parse_line(rd, b, &b->lines[2], l3, RC_NF(l3)))) return st;
@@ -411,6 +412,7 @@ void rc_cards_defaults(rc_case *c)
     s->hmax = 0;
     s->h0 = 0;
     s->preload = 0;
+    s->method_switch = 0;
 }
 
 rc_status rc_cards_finish(rc_reader *rd)

@@ -423,6 +423,7 @@ typedef struct rc_case_solver {
     int preload;       /* 0: off (default), 1: start a dynamic run from the static equilibrium at t = 0 */
     rc_loc loc;
     rc_loc method_loc; /* the line of Method and Preload (the deck's end without /SOLVER) */
+    int method_switch; /* 0: off (default), 1: automatic switching BDF <-> explicit (Method 1) */
 } rc_case_solver;
 
 /* The whole deck. Arrays grow as cards are read. */

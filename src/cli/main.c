@@ -19,7 +19,8 @@ static void usage(FILE *f)
 {
     fprintf(f,
             "usage: ricochet run CASE [-o OUT.nc] [-q] [--t-end T] [--dt-out DT] [--rtol R] [--method M]\n"
-            "                         [--preload | --no-preload] [--on-violation stop|warn] [--set CARD:FIELD=VALUE]...\n"
+            "                         [--preload | --no-preload] [--switch | --no-switch] [--on-violation stop|warn]\n"
+            "                         [--set CARD:FIELD=VALUE]...\n"
             "                                            run a case, write results (default: CASE stem + .nc)\n"
             "       ricochet check CASE [--set CARD:FIELD=VALUE]...\n"
             "                                            read and compile a case, print the model summary\n"
@@ -59,6 +60,10 @@ static void usage_run(FILE *f)
             "                 static analysis' scope with no initial velocity (exit code 2 otherwise, naming the\n"
             "                 card); nothing more with --method static\n"
             "  --no-preload   start from the deck's positions even when /SOLVER Preload is 1\n"
+            "  --switch       method switching (instead of /SOLVER Switch; cvode only): BDF hands over to an\n"
+            "                 explicit Runge-Kutta method (ARKODE ERKStep) while impacts hold its step near the\n"
+            "                 explicit stability limit, and takes over again when the contacts rest\n"
+            "  --no-switch    BDF throughout even when /SOLVER Switch is 1\n"
             "  --on-violation stop|warn\n"
             "                 what a failed physics check does (energy created, a dissipation decreasing, bodies\n"
             "                 passing through each other, non-finite values): stop ends the run there with exit\n"
@@ -309,12 +314,13 @@ static int study(int argc, char **argv)
 
 /* The long options of run and check (main); `check` takes --set, -q and
  * --help only. */
-enum { O_TEND = 256, O_DTOUT, O_RTOL, O_METHOD, O_ONVIOL, O_SET, O_PRELOAD, O_NOPRELOAD };
+enum { O_TEND = 256, O_DTOUT, O_RTOL, O_METHOD, O_ONVIOL, O_SET, O_PRELOAD, O_NOPRELOAD, O_SWITCH, O_NOSWITCH };
 static const struct option run_opts[] = {
     {"t-end", required_argument, NULL, O_TEND},          {"dt-out", required_argument, NULL, O_DTOUT},
     {"rtol", required_argument, NULL, O_RTOL},            {"method", required_argument, NULL, O_METHOD},
     {"on-violation", required_argument, NULL, O_ONVIOL}, {"set", required_argument, NULL, O_SET},
     {"preload", no_argument, NULL, O_PRELOAD},            {"no-preload", no_argument, NULL, O_NOPRELOAD},
+    {"switch", no_argument, NULL, O_SWITCH},              {"no-switch", no_argument, NULL, O_NOSWITCH},
     {"help", no_argument, NULL, 'h'},                     {"quiet", no_argument, NULL, 'q'},
     {"output", required_argument, NULL, 'o'},             {NULL, 0, NULL, 0}};
 static const struct option check_opts[] = {{"set", required_argument, NULL, O_SET},
@@ -393,7 +399,7 @@ int main(int argc, char **argv)
         usage(stderr);
         return 2;
     }
-    int quiet = 0, method = 0, on_violation = 0, preload = -1, nset = 0;
+    int quiet = 0, method = 0, on_violation = 0, preload = -1, method_switch = -1, nset = 0;
     const char *set[RC_CLI_MAX_SET]; /* the --set arguments, in order */
     double t_end = 0.0, dt_out = 0.0, rtol = 0.0;
     /* options in any position (getopt_long permutes them in front of the
@@ -439,6 +445,8 @@ int main(int argc, char **argv)
             break;
         case O_PRELOAD:
         case O_NOPRELOAD: preload = ch == O_PRELOAD; break;
+        case O_SWITCH:
+        case O_NOSWITCH: method_switch = ch == O_SWITCH; break;
         case 'o': out = optarg; break;
         case 'q': quiet = 1; break;
         case 'h':
@@ -486,6 +494,7 @@ int main(int argc, char **argv)
     if (rc == 0 && preload == 0 && rc_model_set_preload(m, 0, &e)) rc = fail(&e);
     if (rc == 0 && method > 0 && rc_model_set_method(m, method, &e)) rc = fail(&e);
     if (rc == 0 && preload == 1 && rc_model_set_preload(m, 1, &e)) rc = fail(&e);
+    if (rc == 0 && method_switch >= 0 && rc_model_set_switch(m, method_switch, &e)) rc = fail(&e);
     char *def = NULL;
     if (rc == 0 && is_run && !out && !(def = default_output(case_path))) {
         fprintf(stderr, "ricochet: out of memory\n");

@@ -857,6 +857,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
         goto fail;
     }
     m->preload = c->solver.preload;
+    m->method_switch = c->solver.method_switch;
     m->preload_loc = c->solver.method_loc;
     m->max_order = c->solver.max_order;
     m->max_steps = c->solver.max_steps;

@@ -388,6 +388,7 @@ struct rc_model {
     int method;          /* /SOLVER Method: integration backend (src/solver/solver.h) */
     int preload;         /* /SOLVER Preload: 1: a dynamic run starts from the static equilibrium at t = 0 */
     rc_loc preload_loc;  /* the line of /SOLVER Preload (the deck's end without /SOLVER), for messages */
+    int method_switch;   /* /SOLVER Switch: 1: the CVODE path switches to an explicit method and back (docs/theory.md 7.9) */
     int max_order;
     long max_steps;
     double hmax, h0;     /* [s] */

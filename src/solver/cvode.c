@@ -24,7 +24,19 @@
  * and gathers what it returns; the Newton matrix is the part of the
  * model's Jacobian pattern on the kept states, and of it the active part
  * (activepart.h).
+ *
+ * Method switching (/SOLVER Switch 1, docs/theory.md 7.9): at a restart
+ * after events, when BDF's largest step since its last restart is at most
+ * RC_SW_PIN critical explicit steps of the closed contacts
+ * (rc_explicit_step), the run goes on with ARKODE's ERKStep (an explicit
+ * Runge-Kutta method with its own error control) from the same (t, y), on
+ * the same right-hand side, root functions, directions, error weights and
+ * stop time; after RC_SW_QUIET explicit steps without an event while its
+ * step stays within RC_SW_NEAR critical steps (stability, not accuracy,
+ * limits it), BDF takes over again at the time the last call returned.
+ * Every switch is reported to the driver (cv_switched) as an event.
  */
+#include <arkode/arkode_erkstep.h>
 #include <cvode/cvode.h>
 #include <cvode/cvode_proj.h>
 #include <float.h>
@@ -51,6 +63,18 @@
 #include "solver/integrator.h"
 #include "solver/sens.h"
 #include "engine/assembly/assembly.h"
+#include "engine/reports/reports.h"
+
+/* Method switching (docs/theory.md 7.9): BDF hands over to the explicit
+ * method when its largest step since the last restart is at most RC_SW_PIN
+ * critical steps h_crit [-]; the explicit method hands back after
+ * RC_SW_QUIET steps without an event [-] with its last step at most
+ * RC_SW_NEAR h_crit [-]. */
+#define RC_SW_PIN 3.0
+#define RC_SW_QUIET 200
+#define RC_SW_NEAR 4.0
+/* The explicit method: Cash-Karp 6(4)5 [ARKODE table] */
+#define RC_ERK_TABLE ARKODE_CASH_KARP_6_4_5
 
 /* A jump in ydot whose effect over one step, relative to the error weight,
  * exceeds this fraction triggers a restart after an event [-]. */
@@ -98,6 +122,22 @@ typedef struct run_ctx {
     rc_stats lost;    /* the counters of a first attempt redone (cv_solve) */
     rc_rootmap rm; /* the root functions CVODE is given (integrator.h) */
     rc_actpart ap; /* the Newton matrix on the active part of the pattern (activepart.h) */
+    /* method switching (docs/theory.md 7.9) */
+    int sw;          /* switching on (m->method_switch; off under sensitivities) */
+    int expl;        /* the explicit integrator (erk) carries the run */
+    void *erk;       /* ARKODE ERKStep, created at the first switch */
+    double *hwork;   /* [2 nbody] scratch of rc_explicit_step */
+    double hmax_bdf; /* BDF's largest step seen since its last restart [s] */
+    double h_erk;    /* the explicit method's last step [s] */
+    double t_last;   /* where the last solve returned, or the last restart [s] */
+    long erk_base;   /* the explicit steps counted at its last restart */
+    long erk_seen[4]; /* its counters already added: steps, rhs, error-test fails, root evals */
+    rc_event_kind sw_kind; /* a switch not yet reported (cv_switched), RC_EV_NONE */
+    double sw_t;           /* its time [s] */
+    double tstop;    /* the stop time given (applied to both integrators) [s] */
+    int tstop_set;
+    int *dirs;       /* [rm.n] the root directions given (the integrator's layout) */
+    int dirs_set;
 } run_ctx;
 
 /* ---- CVODE callbacks ----------------------------------------------- */
@@ -369,6 +409,36 @@ static void failure_advice(const rc_model *m, const rc_data *d, void *cv, int fl
     free(fname);
 }
 
+/* The message of a failed call of the explicit integrator (method
+ * switching): as failure_advice, with ERKStep's flag and estimates. */
+static void erk_failure(run_ctx *c, int flag, double t, double tout, char *buf, size_t n)
+{
+    double h = 0.0;
+    ERKStepGetCurrentStep(c->erk, &h);
+    char elem[200] = "";
+    if (ERKStepGetEstLocalErrors(c->erk, c->ytn) == ARK_SUCCESS && ERKStepGetErrWeights(c->erk, c->f0) == ARK_SUCCESS) {
+        const int imax = rc_bk_worst_error(N_VGetArrayPointer(c->ytn), N_VGetArrayPointer(c->f0),
+                                           (int)N_VGetLength(c->ytn), 0, 0);
+        if (imax >= 0) rc_state_name(c->m, c->kidx[imax], elem, sizeof elem);
+    }
+    char *fname = ERKStepGetReturnFlagName(flag); /* malloc'ed by ARKODE */
+    rc_fail_kind kind = RC_FAIL_OTHER;
+    switch (flag) {
+    case ARK_TOO_MUCH_WORK: kind = RC_FAIL_MAX_STEPS; break;
+    case ARK_TOO_MUCH_ACC: kind = RC_FAIL_ACCURACY; break;
+    case ARK_ERR_FAILURE: kind = RC_FAIL_ERROR_TEST; break;
+    case ARK_RHSFUNC_FAIL:
+    case ARK_REPTD_RHSFUNC_ERR:
+    case ARK_UNREC_RHSFUNC_ERR:
+    case ARK_FIRST_RHSFUNC_ERR: kind = RC_FAIL_FORCES; break;
+    case ARK_RTFUNC_FAIL: kind = RC_FAIL_ROOTS; break;
+    default: break;
+    }
+    rc_bk_failure_message(c->m, c->d, "ARKODE ERKStep (method switching)", t, h, tout, fname, c->cvmsg, elem,
+                          rc_bk_advice(kind, c->m), buf, n);
+    free(fname);
+}
+
 /* ---- the backend's operations (integrator.h rc_backend) ---------------- */
 #define CVCHECK(call, what)                                                                            \
     do {                                                                                               \
@@ -404,6 +474,10 @@ static rc_status cv_open(void *self, const rc_model *m, rc_data *d, const rc_run
     c->kidx = malloc(ny * sizeof(int));
     c->ridx = malloc(ny * sizeof(int));
     c->qoff = malloc(((size_t)m->nbody + 1) * sizeof(int));
+    c->sw = m->method_switch;
+    c->hwork = malloc((2 * (size_t)m->nbody + 1) * sizeof(double));
+    c->dirs = calloc((size_t)c->rm.n + 1, sizeof(int));
+    if (!c->hwork || !c->dirs) return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     if (!c->old_mode || !c->old_branch || !c->old_track || !c->old_slip || !c->old_pslip || !c->jsave || !c->jshare || !c->jflim || !c->kidx ||
         !c->ridx || !c->qoff)
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
@@ -412,7 +486,9 @@ static rc_status cv_open(void *self, const rc_model *m, rc_data *d, const rc_run
     *y = c->yfull;
     *yp = NULL;
     *n = m->ny;
-    *integrator = "CVODE BDF, Newton, KLU sparse direct, rootfinding";
+    *integrator = m->method_switch ? "CVODE BDF, Newton, KLU sparse direct, rootfinding; method switching to "
+                                     "ARKODE ERKStep (Cash-Karp 6(4)5) and back"
+                                   : "CVODE BDF, Newton, KLU sparse direct, rootfinding";
     return RC_OK;
 }
 
@@ -520,6 +596,151 @@ static void scatter_state(run_ctx *c)
     for (int j = 0; j < c->nr; j++) c->yfull[c->kidx[j]] = yr[j];
 }
 
+
+/* ---- method switching (docs/theory.md 7.9) ----------------------------- */
+/* The explicit integrator's counters since they were last added, into s
+ * (its steps also into steps_explicit); a ReInit that zeroed them is seen
+ * as counters below the ones added. */
+static void erk_stats(run_ctx *c, rc_stats *s)
+{
+    long v[4] = {0, 0, 0, 0}, dv[4];
+    ERKStepGetNumSteps(c->erk, &v[0]);
+    ERKStepGetNumRhsEvals(c->erk, &v[1]);
+    ERKStepGetNumErrTestFails(c->erk, &v[2]);
+    ERKStepGetNumGEvals(c->erk, &v[3]);
+    for (int k = 0; k < 4; k++) {
+        dv[k] = v[k] >= c->erk_seen[k] ? v[k] - c->erk_seen[k] : v[k];
+        c->erk_seen[k] = v[k];
+    }
+    s->steps += dv[0];
+    s->steps_explicit += dv[0];
+    s->rhs_evals += dv[1];
+    s->err_test_fails += dv[2];
+    s->root_evals += dv[3];
+}
+
+/* The stop time and the root directions given, to the integrator that now
+ * carries the run. */
+static int apply_settings(run_ctx *c)
+{
+    int flag = 0;
+    if (c->expl) {
+        if (c->tstop_set && (flag = ERKStepSetStopTime(c->erk, c->tstop)) < 0) return flag;
+        if (c->dirs_set && c->rm.n > 0 && (flag = ERKStepSetRootDirection(c->erk, c->dirs)) < 0) return flag;
+    } else {
+        if (c->tstop_set && (flag = CVodeSetStopTime(c->cv, c->tstop)) < 0) return flag;
+        if (c->dirs_set && c->rm.n > 0 && (flag = CVodeSetRootDirection(c->cv, c->dirs)) < 0) return flag;
+    }
+    return 0;
+}
+
+/* The kept quaternions of CVODE's vector normalised (the explicit method has
+ * no projection: at each of its restarts), and the driver's state after it. */
+static void normalise_quats(run_ctx *c)
+{
+    double *y = N_VGetArrayPointer(c->y);
+    for (int b = 0; b < c->nq; b++) {
+        double *q = y + c->qoff[b];
+        const double nq = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        if (nq > 0)
+            for (int k = 0; k < 4; k++) q[k] /= nq;
+    }
+    if (c->nq > 0 && c->red) {
+        const double *yr = N_VGetArrayPointer(c->y);
+        for (int j = 0; j < c->nr; j++) c->yfull[c->kidx[j]] = yr[j];
+    }
+}
+
+/* (Re)start the explicit integrator at (t, CVODE's vector), first step h
+ * (0: its estimate). */
+static int erk_start(run_ctx *c, double t, double h)
+{
+    const rc_model *m = c->m;
+    int flag;
+    if (!c->erk) {
+        if (!(c->erk = ERKStepCreate(cb_rhs, t, c->y, c->ctx))) return ARK_MEM_FAIL;
+        if ((flag = ERKStepSetUserData(c->erk, c)) < 0 || (flag = ERKStepSetErrHandlerFn(c->erk, cb_err, c)) < 0)
+            return flag;
+        if (m->ewt_rel || m->npt > 0) flag = ERKStepWFtolerances(c->erk, cb_ewt);
+        else flag = ERKStepSVtolerances(c->erk, m->rtol, c->av);
+        if (flag < 0 || (flag = ERKStepSetMaxNumSteps(c->erk, m->max_steps)) < 0) return flag;
+        if (m->hmax > 0 && (flag = ERKStepSetMaxStep(c->erk, m->hmax)) < 0) return flag;
+        if (c->rm.n > 0 && (flag = ERKStepRootInit(c->erk, c->rm.n, cb_root)) < 0) return flag;
+        if ((flag = ERKStepSetNoInactiveRootWarn(c->erk)) < 0) return flag;
+        /* fifth order, six stages: at the tolerances of impacts it took a
+         * third of the steps of the default fourth order (Zonneveld) on
+         * the settling column, and fewer than the sixth and eighth orders,
+         * whose error tests failed at the stability limit */
+        if ((flag = ERKStepSetTableNum(c->erk, RC_ERK_TABLE)) < 0) return flag;
+        if ((flag = ERKStepSetInitStep(c->erk, h)) < 0) return flag;
+    } else {
+        if ((flag = ERKStepSetInitStep(c->erk, h)) < 0 || (flag = ERKStepReInit(c->erk, cb_rhs, t, c->y)) < 0)
+            return flag;
+    }
+    c->expl = 1;
+    /* the counters now: what follows is added (erk_stats) */
+    ERKStepGetNumSteps(c->erk, &c->erk_seen[0]);
+    ERKStepGetNumRhsEvals(c->erk, &c->erk_seen[1]);
+    ERKStepGetNumErrTestFails(c->erk, &c->erk_seen[2]);
+    ERKStepGetNumGEvals(c->erk, &c->erk_seen[3]);
+    c->erk_base = c->erk_seen[0];
+    c->t_last = t;
+    return apply_settings(c);
+}
+
+/* Back to BDF at (t, the driver's state): the explicit method's counters
+ * kept (lost), CVODE restarted with a new Jacobian. */
+static int to_implicit(run_ctx *c, double t)
+{
+    erk_stats(c, &c->lost);
+    gather_state(c);
+    normalise_quats(c);
+    c->expl = 0;
+    c->jac_patched = 0;
+    c->fresh = 0;
+    c->hmax_bdf = 0.0;
+    if (c->m->h0 <= 0) {
+        c->h_restart = rc_bk_restart_step(c->m, t, c->h_erk);
+        int flag = CVodeSetInitStep(c->cv, c->h_restart);
+        if (flag < 0) return flag;
+        c->own_h0 = c->h_restart > 0;
+    }
+    int flag = CVodeReInit(c->cv, t, c->y);
+    if (flag < 0) return flag;
+    c->sw_kind = RC_EV_METHOD_IMPLICIT;
+    c->sw_t = t;
+    c->t_last = t;
+    return apply_settings(c);
+}
+
+/* Is the explicit method held at the stability limit while nothing
+ * happens (RC_SW_QUIET steps without an event, its step within RC_SW_NEAR
+ * h_crit)? */
+static int explicit_resting(run_ctx *c)
+{
+    long nst = 0;
+    if (ERKStepGetNumSteps(c->erk, &nst) < 0 || nst - c->erk_base < RC_SW_QUIET) return 0;
+    const double hc = rc_explicit_step(c->m, c->d, c->hwork);
+    return isfinite(hc) && c->h_erk > 0 && c->h_erk <= RC_SW_NEAR * hc;
+}
+
+/* One call of the explicit integrator (cv_solve), or the switch back to
+ * BDF first when it rests (then *back is set and CVODE solves). */
+static int erk_solve(run_ctx *c, double tout, double *t, int one_step, int *back)
+{
+    *back = 0;
+    if (explicit_resting(c)) {
+        *back = 1;
+        return to_implicit(c, c->t_last);
+    }
+    int flag = ERKStepEvolve(c->erk, tout, c->y, t, one_step ? ARK_ONE_STEP : ARK_NORMAL);
+    scatter_state(c);
+    double hu = 0.0;
+    if (ERKStepGetLastStep(c->erk, &hu) == ARK_SUCCESS && hu > 0) c->h_erk = hu;
+    c->t_last = *t;
+    return flag;
+}
+
 /* After modes changed without a restart (cv_continued), one internal step
  * with a forced linear solver setup and a new Jacobian: a stale Jacobian of
  * the old mode (a contact stiffness that is gone, a viscous friction term
@@ -530,6 +751,11 @@ static int cv_solve(void *self, double tout, double *t, int *one_step)
     run_ctx *c = self;
     long nst_before = 0, nst_after = 0;
     int flag;
+    if (c->expl) {
+        int back = 0;
+        flag = erk_solve(c, tout, t, *one_step, &back);
+        if (!back || flag < 0) return flag;
+    }
     *one_step = *one_step || c->fresh;
     if (c->fresh) {
         if ((flag = CVodeSetLSetupFrequency(c->cv, 1)) < 0 || (flag = CVodeSetJacEvalFrequency(c->cv, 1)) < 0)
@@ -553,6 +779,11 @@ static int cv_solve(void *self, double tout, double *t, int *one_step)
     }
     if (c->own_h0 && CVodeGetNumSteps(c->cv, &nst) == CV_SUCCESS && nst > 0) c->own_h0 = 0;
     scatter_state(c);
+    c->t_last = *t;
+    if (c->sw && flag >= 0) {
+        double hu = 0.0;
+        if (CVodeGetLastStep(c->cv, &hu) == CV_SUCCESS && hu > c->hmax_bdf) c->hmax_bdf = hu;
+    }
     /* right after a root return, a single-step call may only hand back the
      * rest of the step already taken: keep the forced setup until a new
      * step has been taken */
@@ -569,7 +800,7 @@ static int cv_dky(void *self, double t, int k, int slot, const double **out)
 {
     run_ctx *c = self;
     N_Vector v = slot == RC_BK_SAMPLE ? c->ysamp : c->ytn;
-    int flag = CVodeGetDky(c->cv, t, k, v);
+    int flag = c->expl ? ERKStepGetDky(c->erk, t, k, v) : CVodeGetDky(c->cv, t, k, v);
     /* the whole state: the constant states at their values, their
      * derivatives 0 */
     *out = whole(c, v, k > 0 ? c->dyf : slot == RC_BK_SAMPLE ? c->ysf : c->ytf);
@@ -579,6 +810,10 @@ static int cv_dky(void *self, double t, int k, int slot, const double **out)
 static int cv_last_step(void *self, double *tn, double *hu)
 {
     run_ctx *c = self;
+    if (c->expl) {
+        int flag = ERKStepGetCurrentTime(c->erk, tn);
+        return flag < 0 ? flag : ERKStepGetLastStep(c->erk, hu);
+    }
     int flag = CVodeGetCurrentTime(c->cv, tn);
     return flag < 0 ? flag : CVodeGetLastStep(c->cv, hu);
 }
@@ -587,22 +822,56 @@ static int cv_last_step(void *self, double *tn, double *hu)
 static int cv_root_info(void *self, int *roots)
 {
     run_ctx *c = self;
-    int flag = CVodeGetRootInfo(c->cv, rc_rootmap_info(&c->rm, roots));
+    int *r = rc_rootmap_info(&c->rm, roots);
+    int flag = c->expl ? ERKStepGetRootInfo(c->erk, r) : CVodeGetRootInfo(c->cv, r);
     if (flag == CV_SUCCESS) rc_rootmap_found(&c->rm, roots);
     return flag;
 }
 static int cv_set_root_dirs(void *self, int *dir)
 {
     run_ctx *c = self;
-    return CVodeSetRootDirection(c->cv, (int *)rc_rootmap_dirs(&c->rm, dir));
+    const int *dv = rc_rootmap_dirs(&c->rm, dir);
+    memcpy(c->dirs, dv, (size_t)c->rm.n * sizeof(int)); /* kept for a switch */
+    c->dirs_set = 1;
+    return c->expl ? ERKStepSetRootDirection(c->erk, c->dirs) : CVodeSetRootDirection(c->cv, c->dirs);
 }
-static int cv_set_stop_time(void *self, double tstop) { return CVodeSetStopTime(((run_ctx *)self)->cv, tstop); }
+static int cv_set_stop_time(void *self, double tstop)
+{
+    run_ctx *c = self;
+    c->tstop = tstop;
+    c->tstop_set = 1;
+    return c->expl ? ERKStepSetStopTime(c->erk, tstop) : CVodeSetStopTime(c->cv, tstop);
+}
 
 static int cv_restart(void *self, double t, int at_breakpoint)
 {
     run_ctx *c = self;
     if (at_breakpoint) c->jac_patched = 0; /* the imposed rows change: a whole new Jacobian */
     gather_state(c);
+    c->t_last = t;
+    if (c->expl) {
+        /* the explicit method goes on from the event, at its last step */
+        normalise_quats(c);
+        return erk_start(c, t, c->h_erk);
+    }
+    if (c->sw) {
+        /* BDF pinned near the explicit stability limit: the explicit method
+         * goes on from here */
+        double hu = 0.0;
+        if (CVodeGetLastStep(c->cv, &hu) != CV_SUCCESS) hu = 0.0;
+        const double hb = fmax(hu, c->hmax_bdf), hc = rc_explicit_step(c->m, c->d, c->hwork);
+        c->hmax_bdf = 0.0;
+        if (isfinite(hc) && hb > 0 && hb <= RC_SW_PIN * hc) {
+            normalise_quats(c);
+            c->h_erk = 0.5 * hc;
+            const int flag = erk_start(c, t, c->h_erk);
+            if (flag >= 0) {
+                c->sw_kind = RC_EV_METHOD_EXPLICIT;
+                c->sw_t = t;
+            }
+            return flag;
+        }
+    }
     /* the first step: /SOLVER H0 when given (set once, cv_start), else from
      * the last accepted step and the contact scales (restart_step) */
     if (c->m->h0 <= 0) {
@@ -622,8 +891,10 @@ static int cv_restart(void *self, double t, int at_breakpoint)
 static void cv_add_stats(void *self, rc_stats *s)
 {
     run_ctx *c = self;
-    if (c->cv) add_stats(c->cv, s);
+    if (c->expl) erk_stats(c, s);
+    else if (c->cv) add_stats(c->cv, s);
     s->steps += c->lost.steps;
+    s->steps_explicit += c->lost.steps_explicit;
     s->rhs_evals += c->lost.rhs_evals;
     s->lin_setups += c->lost.lin_setups;
     s->nonlin_iters += c->lost.nonlin_iters;
@@ -640,14 +911,23 @@ static void cv_add_stats(void *self, rc_stats *s)
 
 static long cv_steps(void *self)
 {
+    run_ctx *c = self;
     long nst = 0;
-    CVodeGetNumSteps(((run_ctx *)self)->cv, &nst);
+    if (c->expl) {
+        ERKStepGetNumSteps(c->erk, &nst);
+        return nst - c->erk_seen[0];
+    }
+    CVodeGetNumSteps(c->cv, &nst);
     return nst;
 }
 
 static void cv_failure(void *self, int flag, double t, double tout, char *buf, size_t n)
 {
     run_ctx *c = self;
+    if (c->expl) {
+        erk_failure(c, flag, t, tout, buf, n);
+        return;
+    }
     failure_advice(c->m, c->d, c->cv, flag, t, tout, c->cvmsg, c->ytn, c->f0, c->kidx, buf, n);
 }
 
@@ -673,6 +953,10 @@ static int cv_after_events(void *self, double t, const double *y, int cpl_ev, in
     const rc_model *m = c->m;
     rc_data *d = c->d;
     int ok = 1, changed = 0;
+    if (c->expl) { /* no Jacobian; a one-step method restarts from the event */
+        c->jac_patched = 0;
+        return 1;
+    }
     for (int i = 0; ok && i < m->ninter; i++) {
         const int npt = m->inter_npt[i], *op = c->old_pslip + m->inter_pbase[i];
         const int same = d->inter_mode[i] == c->old_mode[i] && d->inter_branch[i] == c->old_branch[i] &&
@@ -704,6 +988,9 @@ static void cv_close(void *self)
 {
     run_ctx *c = self;
     CVodeFree(&c->cv);
+    ERKStepFree(&c->erk);
+    free(c->hwork);
+    free(c->dirs);
     SUNLinSolFree(c->LS);
     SUNMatDestroy(c->A);
     N_VDestroy(c->y);
@@ -734,6 +1021,16 @@ static void cv_close(void *self)
 
 static const double *cv_roots_at(void *self, double t) { return rc_rootmap_at(&((run_ctx *)self)->rm, t); }
 
+/* A method switch not yet reported: its kind (and *t), once. */
+static rc_event_kind cv_switched(void *self, double *t)
+{
+    run_ctx *c = self;
+    const rc_event_kind k = c->sw_kind;
+    *t = c->sw_t;
+    c->sw_kind = RC_EV_NONE;
+    return k;
+}
+
 static const rc_backend cvode_backend = {
     .name = "CVODE", .prefix = "CVode", .root_return = CV_ROOT_RETURN, .tstop_return = CV_TSTOP_RETURN,
     .too_much_work = CV_TOO_MUCH_WORK, .open = cv_open, .start = cv_start, .solve = cv_solve, .dky = cv_dky,
@@ -741,7 +1038,7 @@ static const rc_backend cvode_backend = {
     .set_stop_time = cv_set_stop_time, .restart = cv_restart, .add_stats = cv_add_stats, .steps = cv_steps,
     .failure = cv_failure, .flag_name = CVodeGetReturnFlagName, .last_msg = cv_last_msg,
     .record_vector = NULL, .before_events = cv_before_events, .after_events = cv_after_events,
-    .continued = cv_continued, .close = cv_close, .roots_at = cv_roots_at};
+    .continued = cv_continued, .close = cv_close, .roots_at = cv_roots_at, .switched = cv_switched};
 
 static rc_status cvode_run(const rc_model *m, const rc_run_options *opt, rc_pause *pause, const rc_preload *pre,
                            rc_stats *stats, rc_error *err)
@@ -766,6 +1063,7 @@ size_t rc_cvode_self_size(void) { return sizeof(run_ctx); }
 void *rc_cvode_parts(void *self, int *nr, const int **kidx, double **yfull, void **sunctx)
 {
     run_ctx *c = self;
+    c->sw = 0; /* the sensitivities follow CVODE alone: no method switching */
     *sunctx = c->ctx;
     *nr = c->nr;
     *kidx = c->kidx;

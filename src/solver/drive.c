@@ -124,6 +124,18 @@ static rc_status sensor_events(const rc_model *m, rc_data *d, ev_sink *k, double
     return RC_OK;
 }
 
+/* A change of the backend's integration method (rc_backend.switched):
+ * its event (element /SOLVER; no interface values) and its count. */
+static rc_status method_event(const rc_backend *bk, void *self, ev_sink *k, rc_stats *s, rc_error *err)
+{
+    double ts = 0.0;
+    const rc_event_kind ek = bk->switched ? bk->switched(self, &ts) : RC_EV_NONE;
+    if (ek == RC_EV_NONE) return RC_OK;
+    if (ek == RC_EV_METHOD_EXPLICIT) s->switches_explicit++;
+    else s->switches_implicit++;
+    return rc_bk_sink_event(k, ts, ek, "/SOLVER", NULL, err);
+}
+
 /* One event to the sink; RC_OK or the output's error. */
 rc_status rc_bk_sink_event(ev_sink *k, double t, rc_event_kind ek, const char *element, const double v[3],
                             rc_error *err)
@@ -880,6 +892,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
         }
         if (one_step && flag >= 0 && ++single > m->max_steps) flag = bk->too_much_work;
         if (flag >= 0) sample_step(bk, self, &im, m, d, t_prev, t, y);
+        if (flag >= 0 && (st = method_event(bk, self, &sink, &s, err))) break;
         t_prev = t;
         if (flag < 0) {
             bk->failure(self, flag, t, tout, reason, sizeof reason);
@@ -938,6 +951,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             bk->add_stats(self, &s);
             BKCHECK(bk->restart(self, t, 1), "ReInit");
             s.reinits++;
+            if ((st = method_event(bk, self, &sink, &s, err))) goto done;
             while (ibp < nbp && bp[ibp] <= t) ibp++;
             /* the next breakpoint, or the end time */
             BKCHECK(bk->set_stop_time(self, ibp < nbp ? bp[ibp] : tend), "SetStopTime");
@@ -1014,6 +1028,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
                 bk->add_stats(self, &s);
                 BKCHECK(bk->restart(self, t, 0), "ReInit");
                 s.reinits++;
+                if ((st = method_event(bk, self, &sink, &s, err))) goto done;
             } else if (nev > 0 && bk->continued) {
                 bk->continued(self);
             }

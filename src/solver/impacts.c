@@ -262,14 +262,42 @@ static double hermite_max(double p0, double p1, double m0, double m1)
 }
 
 /* One more sample of interface i at ts from the interpolant. */
-static void refine(rc_impacts *im, const rc_model *m, const rc_data *d, int i, double ts, rc_interp_fn interp,
-                   void *ctx)
+static double refine(rc_impacts *im, const rc_model *m, const rc_data *d, int i, double ts, rc_interp_fn interp,
+                     void *ctx)
 {
     const double *yi = NULL;
-    if (!interp || interp(ctx, ts, &yi) != 0 || !yi) return;
+    if (!interp || interp(ctx, ts, &yi) != 0 || !yi) return NAN;
     rc_inter_report r;
     report(m, d, i, ts, yi, &r);
-    update(&im->row[im->cur[i]], &r, d->inter_mode[i] == RC_MODE_CLOSED, ts);
+    const int closed = d->inter_mode[i] == RC_MODE_CLOSED;
+    update(&im->row[im->cur[i]], &r, closed, ts);
+    return closed && r.fn > 0 ? r.fn : 0.0;
+}
+
+/* Successive parabolas for the force's maximum from ts, on the step's
+ * interpolant over [lo, hi]: the vertex through ts - w, ts, ts + w, w a
+ * tenth of the step, then a quarter of the last, for RC_PEAK_ITERS rounds
+ * (each sample raises the row's maximum when above it). */
+#define RC_PEAK_ITERS 4
+/* A step is probed for a force maximum inside it when longer than the
+ * contact's time scale over this [-]. */
+#define RC_PEAK_STEPS 50.0
+static void refine_force(rc_impacts *im, const rc_model *m, const rc_data *d, int i, double ts, double lo, double hi,
+                         rc_interp_fn interp, void *ctx)
+{
+    double fc = refine(im, m, d, i, ts, interp, ctx), w = 0.1 * (hi - lo);
+    for (int k = 0; k < RC_PEAK_ITERS && isfinite(fc) && w > 0; k++, w *= 0.25) {
+        const double ta = fmax(lo, ts - w), tb = fmin(hi, ts + w);
+        if (!(ta < ts && ts < tb)) return;
+        const double fa = refine(im, m, d, i, ta, interp, ctx), fb = refine(im, m, d, i, tb, interp, ctx);
+        if (!isfinite(fa) || !isfinite(fb)) return;
+        const double dab = (fc - fa) / (ts - ta), dbc = (fb - fc) / (tb - ts), dabc = (dbc - dab) / (tb - ta);
+        if (!(dabc < 0.0)) return;
+        const double tv = 0.5 * (ta + ts) - dab / (2.0 * dabc);
+        if (!(tv > ta && tv < tb)) return;
+        ts = tv;
+        fc = refine(im, m, d, i, ts, interp, ctx);
+    }
 }
 
 void rc_impacts_step(rc_impacts *im, const rc_model *m, const rc_data *d, double lo, double t, const double *y,
@@ -277,6 +305,10 @@ void rc_impacts_step(rc_impacts *im, const rc_model *m, const rc_data *d, double
 {
     /* the root functions at the step's end evaluated the same reports */
     const int cached = rc_report_cache_state(m, d, y);
+    /* the state at the step's middle, interpolated once for every contact
+     * (NULL: not yet, or the backend's scratch since overwritten) */
+    const double *ymid = NULL;
+    double tmid = NAN;
     for (int i = 0; i < im->ninter; i++) {
         if (im->cur[i] < 0) continue;
         const int closed = d->inter_mode[i] == RC_MODE_CLOSED;
@@ -296,9 +328,42 @@ void rc_impacts_step(rc_impacts *im, const rc_model *m, const rc_data *d, double
                 const double ts = t0 + s * dt;
                 if (ts > from && ts < t) refine(im, m, d, i, ts, interp, ctx);
             }
+            const double f1 = closed && r.fn > 0 ? r.fn : 0.0;
+            /* the force rose from the last sample, peaked inside the step
+             * and fell back: the interpolant at the step's middle is above
+             * both ends. Its maximum is refined now, while the interpolant
+             * covers it (the three samples below see it a step later, and
+             * when the step is long, e.g. the explicit method's under
+             * method switching, their vertex lies in the step before, out
+             * of the interpolant: the parabola's value was 2e-5 low). Looked
+             * for in a step longer than 1/RC_PEAK_STEPS of the contact's
+             * time scale over which the samples' force did not fall (a
+             * peak inside a step over which it fell is the samples'
+             * parabola's, in this step or in a probed one) */
+            const double f0 = h->fn[last], tc = rc_impacts_contact_time(m, i);
+            if (closed && interp && from == t0 && f1 >= f0 && f1 > 0 && !(RC_PEAK_STEPS * (t - t0) < tc)) {
+                const double tm = 0.5 * (t0 + t);
+                if (!ymid || tm != tmid) {
+                    tmid = tm;
+                    if (interp(ctx, tm, &ymid) != 0) ymid = NULL;
+                }
+                if (ymid) {
+                    rc_inter_report rm;
+                    report(m, d, i, tm, ymid, &rm);
+                    update(row, &rm, closed, tm);
+                    const double fm = rm.fn > 0 ? rm.fn : 0.0;
+                    if (fm > f0 && fm > f1) {
+                        const double dab = (fm - f0) / (tm - t0), dbc = (f1 - fm) / (t - tm),
+                                     dabc = (dbc - dab) / (t - t0);
+                        const double ts = dabc < 0.0 ? 0.5 * (t0 + tm) - dab / (2.0 * dabc) : tm;
+                        refine_force(im, m, d, i, ts > t0 && ts < t ? ts : tm, t0, t, interp, ctx);
+                        h->tpk = t;
+                        ymid = NULL; /* the scratch holds other times now */
+                    }
+                }
+            }
             /* the force rose to the last sample and falls now: its maximum
              * is near the vertex of the parabola through the last three */
-            const double f1 = closed && r.fn > 0 ? r.fn : 0.0;
             if (closed && h->n == 2 && h->fn[1] >= h->fn[0] && h->fn[1] > f1 && h->t[1] > h->t[0]) {
                 const double ta = h->t[0], tb = h->t[1], fa = h->fn[0], fb = h->fn[1];
                 const double dab = (fb - fa) / (tb - ta), dbc = (f1 - fb) / (t - tb), dabc = (dbc - dab) / (t - ta);
@@ -306,7 +371,7 @@ void rc_impacts_step(rc_impacts *im, const rc_model *m, const rc_data *d, double
                     const double ts = 0.5 * (ta + tb) - dab / (2.0 * dabc);
                     if (ts > from && ts < t) {
                         refine(im, m, d, i, ts, interp, ctx);
-                    } else if (ts > ta && ts < t) {
+                    } else if (ts > ta && ts < t && !(ts < h->tpk)) {
                         /* in the previous step, which the interpolant no
                          * longer covers: the parabola's value */
                         const double fv = fa + dab * (ts - ta) + dabc * (ts - ta) * (ts - tb);

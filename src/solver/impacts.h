@@ -17,6 +17,7 @@
 typedef struct rc_impact_hist {
     int n; /* samples held, 0..2 */
     double t[2], p[2], vn[2], fn[2];
+    double tpk; /* the end of the last step whose force maximum inside was refined [s] */
 } rc_impact_hist;
 
 /* The state at time t from the backend's interpolant of its last step

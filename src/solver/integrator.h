@@ -201,6 +201,11 @@ typedef struct rc_backend {
      * t (rc_rootmap_at), NULL when its last evaluation was elsewhere (NULL
      * operation: never). */
     const double *(*roots_at)(void *self, double t);
+    /* A change of integration method since the last call (method
+     * switching: RC_EV_METHOD_EXPLICIT or RC_EV_METHOD_IMPLICIT, at *t),
+     * reported once; RC_EV_NONE when none (NULL operation: never). The
+     * driver writes it as an event and counts it. */
+    rc_event_kind (*switched)(void *self, double *t);
     void (*close)(void *self); /* free everything open and start made */
 } rc_backend;
 

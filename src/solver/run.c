@@ -149,6 +149,9 @@ void rc_stats_print(const rc_stats *s, FILE *f)
             s->err_test_fails, s->root_evals);
     fprintf(f, "events %ld, restarts %ld, simulated %.6g s in %.3f s wall, energy balance residual %.3g J\n",
             s->events, s->reinits, s->t_end, s->wall_time, s->energy_residual);
+    if (s->switches_explicit > 0 || s->switches_implicit > 0)
+        fprintf(f, "method switches %ld to explicit, %ld to implicit; explicit steps %ld of %ld\n",
+                s->switches_explicit, s->switches_implicit, s->steps_explicit, s->steps);
     if (s->preloaded)
         fprintf(f, "preload: static equilibrium at t = 0 (KINSOL), %ld Newton iterations in %.3g s wall; the run "
                    "started from it at rest\n",

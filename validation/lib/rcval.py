@@ -11,6 +11,13 @@ convergence study over rtol), and check() prefixes each check name with
 
 RICOCHET_VAL_METHOD=ida runs every deck on the IDA path (ricochet run
 --method ida) and prefixes the check names with "ida:".
+
+RICOCHET_VAL_SWITCH=1 runs every deck with method switching forced on
+(ricochet run --switch: BDF and the explicit method, docs/theory.md 7.9;
+only the CVODE path switches) and prefixes the check names with "switch:".
+The switch events (method_explicit, method_implicit: the integrator's, not
+the model's) are left out of Result's events, so that the checks of the
+events see the model's alone; RICOCHET_VAL_SWITCH_EVENTS=1 keeps them.
 """
 import atexit
 import os
@@ -29,7 +36,8 @@ FAILED = []
 PROBLEM = os.path.basename(os.path.dirname(os.path.abspath(sys.argv[0])))
 DEFAULTS = os.environ.get("RICOCHET_VAL_SOLVER", "") == "default"
 METHOD = os.environ.get("RICOCHET_VAL_METHOD", "")
-PREFIX = ("default:" if DEFAULTS else "") + (METHOD + ":" if METHOD else "")
+SWITCH = os.environ.get("RICOCHET_VAL_SWITCH", "") == "1"
+PREFIX = ("default:" if DEFAULTS else "") + (METHOD + ":" if METHOD else "") + ("switch:" if SWITCH else "")
 
 
 _TMPROOT = []
@@ -59,7 +67,8 @@ def strip_solver(text):
 
 
 def _execute(case, out):
-    cmd = [RICOCHET, "run", case, "-o", out, "-q"] + (["--method", METHOD] if METHOD else [])
+    cmd = [RICOCHET, "run", case, "-o", out, "-q"] + (["--method", METHOD] if METHOD else []) + \
+        (["--switch"] if SWITCH else [])
     p = subprocess.run(cmd, capture_output=True, text=True)
     if p.returncode != 0:
         raise RuntimeError(f"ricochet failed ({p.returncode}): {p.stderr.strip()}")
@@ -130,6 +139,11 @@ class Result:
             # the interface's approach speed dP/dt at the event [m/s] (NaN
             # for events of other elements)
             self.ev_vn = np.array(nc["event_normal_speed"][:]) if n else np.zeros(0)
+            if SWITCH and os.environ.get("RICOCHET_VAL_SWITCH_EVENTS", "") != "1":
+                keep = [k not in ("method_explicit", "method_implicit") for k in self.ev_kind]
+                self.ev_t, self.ev_vn = self.ev_t[keep], self.ev_vn[keep]
+                self.ev_kind = [k for k, w in zip(self.ev_kind, keep) if w]
+                self.ev_elem = [e for e, w in zip(self.ev_elem, keep) if w]
             self.attrs = {k: nc.getncattr(k) for k in nc.ncattrs()}
             self.energy = {v: np.array(nc[v][:]) for v in nc.variables if v.startswith("energy_")}
 

@@ -186,6 +186,19 @@ rc_status rc_model_set_preload(rc_model *m, int on, rc_error *err)
 
 int rc_model_preload(const rc_model *m) { return m ? m->preload : 0; }
 
+rc_status rc_model_set_switch(rc_model *m, int on, rc_error *err)
+{
+    rc_error local;
+    if (!err) err = &local;
+    if (!m) RC_RAISE(err, RC_EINPUT, "rc_model_set_switch: the model is NULL; expected a compiled model");
+    if (on != 0 && on != 1)
+        RC_RAISE(err, RC_EINPUT, "method switching: expected 0 (off) or 1 (BDF and an explicit method), got %d", on);
+    m->method_switch = on;
+    return RC_OK;
+}
+
+int rc_model_switch(const rc_model *m) { return m ? m->method_switch : 0; }
+
 double rc_model_rtol(const rc_model *m) { return m ? m->rtol : NAN; }
 double rc_model_t_end(const rc_model *m) { return m ? m->tend : NAN; }
 double rc_model_dt_out(const rc_model *m) { return m ? m->dtout : NAN; }

@@ -37,6 +37,8 @@ static const char *const names[RC_EV_NKINDS] = {
     [RC_EV_IMPVEL_STOP] = "impvel_stop",
     [RC_EV_IMPVEL_START] = "impvel_start",
     [RC_EV_SENSOR_TRIGGER] = "sensor_trigger",
+    [RC_EV_METHOD_EXPLICIT] = "method_explicit",
+    [RC_EV_METHOD_IMPLICIT] = "method_implicit",
 };
 
 const char *rc_event_kind_name(rc_event_kind k)

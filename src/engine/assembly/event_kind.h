@@ -49,6 +49,10 @@ typedef enum rc_event_kind {
     RC_EV_IMPVEL_START,
     /* the driver's own: a distance sensor triggers (/SENSOR/DIST) */
     RC_EV_SENSOR_TRIGGER,
+    /* the driver's own: the CVODE path switches to the explicit method, and
+     * back to BDF (/SOLVER Switch 1) */
+    RC_EV_METHOD_EXPLICIT,
+    RC_EV_METHOD_IMPLICIT,
     RC_EV_NKINDS
 } rc_event_kind;
 

@@ -334,3 +334,48 @@ void rc_report_plausibility(const rc_model *m, FILE *f)
     }
     free(size);
 }
+
+/* The critical step of an explicit method on the closed contacts
+ * (reports.h; docs/theory.md 7.9): omega_max^2 and the damping rate
+ * bounded by Gershgorin's rows of M^-1 K and M^-1 C over the free bodies'
+ * translations, each closed contact with its stiffness scale k_s and its
+ * linear damping, h_crit = 2 / omega_max (sqrt(1 + zeta^2) - zeta). */
+double rc_explicit_step(const rc_model *m, const rc_data *d, double *work)
+{
+    double *kb = work, *cb = work + m->nbody;
+    for (int b = 0; b < m->nbody; b++) kb[b] = cb[b] = 0.0;
+    int any = 0;
+    for (int i = 0; i < m->ninter; i++) {
+        if (d->inter_mode[i] != RC_MODE_CLOSED) continue;
+        const double k = m->inter_kscale[i];
+        if (!(k > 0) || !isfinite(k)) continue;
+        double c = 0.0;
+        if (m->inter_law[i] == RC_LAW_TYPE6) c = m->inter_visc[i];
+        else if (m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].m2 == 1.0 && m->inter_pw[i].m3 == 0.0 &&
+                 !m->inter_pw[i].damp)
+            c = m->inter_pw[i].c;
+        if (!(c >= 0) || !isfinite(c)) c = 0.0;
+        const int ba = m->inter_ba[i], bb = m->inter_bb[i];
+        const int fa = ba >= 0 && m->body_yadr[ba] >= 0, fb = bb >= 0 && m->body_yadr[bb] >= 0;
+        const double w = fa && fb ? 2.0 : 1.0; /* the diagonal and the off-diagonal entry of the row */
+        if (fa) {
+            kb[ba] += w * k;
+            cb[ba] += w * c;
+        }
+        if (fb) {
+            kb[bb] += w * k;
+            cb[bb] += w * c;
+        }
+        any |= fa || fb;
+    }
+    if (!any) return INFINITY;
+    double w2 = 0.0, cr = 0.0;
+    for (int b = 0; b < m->nbody; b++) {
+        if (m->body_yadr[b] < 0 || !(m->body_mass[b] > 0)) continue;
+        w2 = fmax(w2, kb[b] / m->body_mass[b]);
+        cr = fmax(cr, cb[b] / m->body_mass[b]);
+    }
+    if (!(w2 > 0)) return INFINITY;
+    const double om = sqrt(w2), zeta = cr / (2.0 * om);
+    return 2.0 / om * (sqrt(1.0 + zeta * zeta) - zeta);
+}

@@ -239,6 +239,9 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
     if (m->preload && m->method != 3)
         fprintf(f, "            preload: the run starts at rest from the static equilibrium at t = 0 (KINSOL; "
                    "/SOLVER Preload 1)\n");
+    if (m->method_switch && m->method != 2 && m->method != 3)
+        fprintf(f, "            method switching: to an explicit Runge-Kutta method (ARKODE ERKStep) while impacts "
+                   "pin BDF near the explicit stability limit, and back (/SOLVER Switch 1)\n");
     /* the tolerances in force: given on /SOLVER, or derived from the scales */
     const int au = m->tol_auto;
     if (au == 0) {

@@ -1523,9 +1523,11 @@ typedef struct st_run {
     /* the watch for a solve beyond friction (kin_f): on during KINSol; the
      * last evaluation's unknowns and residual [nr] and the interface that
      * slid in it (-1: none, or no last evaluation); the stalled
-     * evaluations in a row; 1 once the solve was ended so */
+     * evaluations in a row; 1 once the solve was ended so; the
+     * penetrations [ninter] of the closed contacts on the sliding one's
+     * bodies at the last evaluation and at this one (contact_p) */
     int watch, prev_slide, stall, stalled;
-    double *uprev, *rprev;
+    double *uprev, *rprev, *pprev, *pcur;
 } st_run;
 
 /* The displacement of an imposed translation k from t = 0 to t [m]: the
@@ -1627,20 +1629,53 @@ static int sliding_inter(const rc_static *s)
     return -1;
 }
 
-/* A solve beyond friction (docs/theory.md 7.8, "A load beyond friction"):
- * 1 when the residual r at the unknowns u (reduced numbering) has stalled
- * on a slide: the interface i slides here and slid at the last evaluation
- * (uprev, rprev), a body of i has moved since (its translations or
- * rotations), no residual has changed by more than the tolerance ftol (max
- * norm of r / force scale), and the residual is not within 16 ftol (what a
- * stalled search counts as converged, kin_solve). A move of the sliding
- * body that changes no force is a direction without stiffness that only
- * the contact's friction, at its limit, acts along, and the residual left
- * there is the load's excess over that limit. */
-static int slide_stalled(const st_run *c, int i, const double *u, const double *r, double ftol)
+/* 1 when interface j is closed and has a free body among those of the
+ * interface i. */
+static int shares_body(const rc_static *s, int i, int j)
+{
+    const rc_model *m = s->m;
+    if (s->d->inter_mode[j] != RC_MODE_CLOSED) return 0;
+    const int bj[2] = {m->inter_ba[j], m->inter_bb[j]};
+    for (int k = 0; k < 2; k++)
+        if (body_slot(s, bj[k]) >= 0 && (bj[k] == m->inter_ba[i] || bj[k] == m->inter_bb[i])) return 1;
+    return 0;
+}
+
+/* The penetrations P of the closed contacts on the bodies of the sliding
+ * interface i at the last residual evaluation (s->y) into c->pcur; 1 when
+ * i itself is pressed (P > 0, F_n > 0). */
+static int contact_p(st_run *c, int i)
 {
     const rc_static *s = c->s;
-    if (i < 0 || c->prev_slide != i) return 0;
+    int pressed = 0;
+    for (int j = 0; j < s->m->ninter; j++) {
+        if (!shares_body(s, i, j)) continue;
+        rc_inter_report r;
+        rc_inter_report_eval_d(s->m, s->d, j, c->t, s->y, &r);
+        c->pcur[j] = r.p;
+        if (j == i) pressed = r.p > 0 && r.fn > 0;
+    }
+    return pressed;
+}
+
+/* A solve beyond friction (docs/theory.md 7.8, "A load beyond friction"):
+ * 1 when the residual r at the unknowns u (reduced numbering) has stalled
+ * on a slide: the interface i slides here, pressed (P > 0, F_n > 0), and
+ * slid at the last evaluation (uprev, rprev, pprev), a body of i has moved
+ * since (its translations or rotations) along every closed contact on its
+ * bodies (none of their penetrations changed by more than 1e-9 of it), no
+ * residual has changed by more than the tolerance ftol (max norm of r /
+ * force scale), and the residual is not within 16 ftol (what a stalled
+ * search counts as converged, kin_solve). A move of the sliding body along
+ * its contacts that changes no force is a direction without stiffness that
+ * only the contact's friction, at its limit, acts along, and the residual
+ * left there is the load's excess over that limit. */
+static int slide_stalled(st_run *c, int i, const double *u, const double *r, double ftol)
+{
+    const rc_static *s = c->s;
+    if (i < 0 || !contact_p(c, i) || c->prev_slide != i) return 0;
+    for (int j = 0; j < s->m->ninter; j++)
+        if (shares_body(s, i, j) && !(fabs(c->pcur[j] - c->pprev[j]) <= 1e-9 * fabs(c->pcur[j]))) return 0;
     const int qa = body_slot(s, s->m->inter_ba[i]), qb = body_slot(s, s->m->inter_bb[i]);
     int moved = 0;
     double dr = 0.0, rn = 0.0;
@@ -1661,11 +1696,14 @@ static int kin_f(N_Vector u, N_Vector r, void *user)
     if (rc_static_residual(s, c->t, expand(s, N_VGetArrayPointer(u)), s->rfull)) return 1;
     double *rr = N_VGetArrayPointer(r);
     for (int i = 0; i < s->nr; i++) rr[i] = s->rfull[s->full[i]];
-    if (c->watch && c->uprev && c->rprev) {
+    if (c->watch && c->uprev && c->rprev && c->pprev && c->pcur) {
         const double *uu = N_VGetArrayPointer(u);
         const int i = sliding_inter(s);
         c->stall = slide_stalled(c, i, uu, rr, rc_static_ftol(s)) ? c->stall + 1 : 0;
         c->prev_slide = i;
+        double *pw = c->pprev;
+        c->pprev = c->pcur;
+        c->pcur = pw;
         memcpy(c->uprev, uu, (size_t)s->nr * sizeof(double));
         memcpy(c->rprev, rr, (size_t)s->nr * sizeof(double));
         if (c->stall >= RC_STATIC_SLIDE_STALL) {
@@ -2336,7 +2374,9 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
     c.lam0 = y + m->ny;
     c.uprev = malloc(((size_t)s->nr + 1) * sizeof(double));
     c.rprev = malloc(((size_t)s->nr + 1) * sizeof(double));
-    if (!c.uprev || !c.rprev) {
+    c.pprev = malloc(((size_t)m->ninter + 1) * sizeof(double));
+    c.pcur = malloc(((size_t)m->ninter + 1) * sizeof(double));
+    if (!c.uprev || !c.rprev || !c.pprev || !c.pcur) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the static analysis");
         goto done;
     }
@@ -2719,6 +2759,8 @@ done:
     free(uB);
     free(c.uprev);
     free(c.rprev);
+    free(c.pprev);
+    free(c.pcur);
     free(cplold);
     free(cplsave);
     return st;

@@ -1527,6 +1527,7 @@ typedef struct st_run {
      * penetrations [ninter] of the closed contacts on the sliding one's
      * bodies at the last evaluation and at this one (contact_p) */
     int watch, prev_slide, stall, stalled;
+    double ftol; /* the solve's residual tolerance (rc_static_ftol) */
     double *uprev, *rprev, *pprev, *pcur;
 } st_run;
 
@@ -1699,8 +1700,9 @@ static int kin_f(N_Vector u, N_Vector r, void *user)
     if (c->watch && c->uprev && c->rprev && c->pprev && c->pcur) {
         const double *uu = N_VGetArrayPointer(u);
         const int i = sliding_inter(s);
-        c->stall = slide_stalled(c, i, uu, rr, rc_static_ftol(s)) ? c->stall + 1 : 0;
+        c->stall = slide_stalled(c, i, uu, rr, c->ftol) ? c->stall + 1 : 0;
         c->prev_slide = i;
+        if (i < 0) return 0; /* nothing to compare the next evaluation with */
         double *pw = c->pprev;
         c->pprev = c->pcur;
         c->pcur = pw;
@@ -1869,6 +1871,7 @@ static st_out kin_solve(st_kin *k, st_run *c, double t)
     const double ftol = rc_static_ftol(c->s);
     KINSetFuncNormTol(k->kin, ftol);
     c->watch = 1;
+    c->ftol = ftol;
     c->prev_slide = -1;
     c->stall = c->stalled = 0;
     o.flag = KINSol(k->kin, k->u, KIN_LINESEARCH, k->us, k->fs);

@@ -1184,6 +1184,48 @@ static void test_static_slip_estimate(void)
     free(t);
 }
 
+/* A solve beyond friction ended at its stall (docs/theory.md 7.8, "A load
+ * beyond friction"): the drag of bench/README.md, a 1 kg block pressed on a
+ * floor (its height imposed at the static penetration m g / k, F_n = m g),
+ * Coulomb mu = 0.4 with the stick spring K_t = 1e6 N/m, pulled along x by
+ * a force ramped at 1 N/s (output every 0.5 s): it slides at t* = mu m g /
+ * 1 N/s = 3.924 s. Only x is free, and in slip nothing changes the force
+ * along it, so Newton could not leave the slide (it ran about 30
+ * iterations in each failed solve). The onset is bracketed as before, with
+ * the failed solves ended after a few iterations: each converged solve
+ * takes one iteration (the stick spring is linear), each failed one at
+ * most 4. */
+static void test_static_slip_stall(void)
+{
+    const double g = 9.81, mu = 0.4, z0 = 0.05 - g / 1e6, ts = mu * g;
+    char deck[2048];
+    snprintf(deck, sizeof deck,
+             "/NODE\n1,0,0,%.17g\n"
+             "/RBODY/1\nblock\n1,,,,1.0\n0.001,0.001,0.001\n0,0,0\n"
+             "/SURF/ELLIPS/1\nblock\n0,2,1\n0,0,%.17g\n0.05,0.05,0.05\n"
+             "/GRNOD/NODE/1\nblock\n1\n"
+             "/BCS/1\ny and rotations held\n010 111,0,1\n"
+             "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
+             "/FUNCT/1\nlinear k = 1e6 N/m\n0,0\n1,1000000\n"
+             "/FUNCT/2\npull ramp\n0,0\n5,1\n"
+             "/FUNCT/3\nzero\n0,0\n5,0\n"
+             "/IMPVEL/1\nheight held\n3,Z,0,0,1\n\n"
+             "/GRAV/1\npull\n2,X,0,0,1,,1,5\n"
+             "/INTER/TYPE6/1\nblock - floor\n1,2\n0,%.17g\n\n1,0\n0,0,1000000\n\n"
+             "/RUN\n5.0,0.5\n/SOLVER\n3\n",
+             z0, z0, mu);
+    double x = 0, t0 = -1, t1 = -1;
+    rc_stats st;
+    memset(&st, 0, sizeof st);
+    const int r = run_at_rest_stats(deck, "static_slip_stall.rad", &x, &t0, &t1, &st);
+    printf("    onset t* = %.9f s, bracket [%.9f, %.9f] s; %ld equilibria, %ld failed solves, %ld Newton "
+           "iterations\n", ts, t0, t1, (long)st.steps, (long)st.nonlin_fails, (long)st.nonlin_iters);
+    ENSURE(r == 1);
+    ENSURE(t0 <= ts && ts <= t1 && t1 - t0 < 2e-6 * 0.5);
+    ENSURE(st.nonlin_fails == 2);
+    ENSURE(st.nonlin_iters <= st.steps + 4 * st.nonlin_fails);
+}
+
 /* Orthotropic friction at rest (docs/theory.md 7.8, "Orthotropic friction"):
  * deck_at_rest's sphere with a /FRICTION card of two coefficient sets,
  * direction 1 along V = (cos(alpha), sin(alpha), 0) on the floor
@@ -1289,5 +1331,6 @@ void suite_static(void)
     RUN_TEST(test_static_friction_at_rest);
     RUN_TEST(test_static_friction_orthotropic);
     RUN_TEST(test_static_slip_estimate);
+    RUN_TEST(test_static_slip_stall);
     RUN_TEST(test_static_preload_filter);
 }

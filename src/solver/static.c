@@ -43,7 +43,9 @@
  * s->mf) and its states set to the limit in each equilibrium; an
  * orthotropic contact sticks within the ellipse and slides on it. A load
  * beyond friction (a contact sliding where Newton fails, at the smallest
- * substep) is an error naming the interface and the load time.
+ * substep) is an error naming the interface and the load time; a solve
+ * that stalls on a slide (a sliding body moved without any force changing,
+ * slide_stalled) is ended there rather than run to KINSOL's failure.
  *
  * Hysteresis (TYPE6 Iform 1, 2; one contact point): the same over the
  * substeps, the trial F_h0 + Stiff (P - P_0) held between the unload and
@@ -107,6 +109,11 @@
  * then above) it, so that the bracket closes inside the cut-back's
  * precision (docs/theory.md 7.8, "A load beyond friction") */
 #define RC_STATIC_SLIP_MARGIN 0.25
+/* A solve that stalls beyond friction (kin_f, docs/theory.md 7.8, "A load
+ * beyond friction"): ended after this many residual evaluations in a row
+ * that each moved a sliding contact's body from the previous one without
+ * changing any force by more than the residual's tolerance. */
+#define RC_STATIC_SLIDE_STALL 2
 /* The first stiffness of a solve retried from a touching start, less this
  * fraction of each unknown's stiffness scale on its diagonal (kin_jac). */
 #define RC_STATIC_TOUCH_REG 1e-6
@@ -1513,6 +1520,15 @@ typedef struct st_run {
     int touch;          /* the first stiffness of the solve regularised (kin_jac) */
     int njac;           /* stiffnesses evaluated in this solve */
     const double *lam0; /* [nl] the joints' multipliers the solve starts from [N, N m] (NULL: 0) */
+    /* the watch for a solve beyond friction (kin_f): on during KINSol; the
+     * last evaluation's unknowns and residual [nr] and the interface that
+     * slid in it (-1: none, or no last evaluation); the stalled
+     * evaluations in a row; 1 once the solve was ended so; the
+     * penetrations [ninter] of the closed contacts on the sliding one's
+     * bodies at the last evaluation and at this one (contact_p) */
+    int watch, prev_slide, stall, stalled;
+    double ftol; /* the solve's residual tolerance (rc_static_ftol) */
+    double *uprev, *rprev, *pprev, *pcur;
 } st_run;
 
 /* The displacement of an imposed translation k from t = 0 to t [m]: the
@@ -1599,6 +1615,81 @@ static double *expand(rc_static *s, const double *u)
     return s->ufull;
 }
 
+/* The first interface that slides at the last residual evaluation (its
+ * friction in slip, or with friction per point some point in slip), or -1. */
+static int sliding_inter(const rc_static *s)
+{
+    const rc_model *m = s->m;
+    const rc_data *d = s->d;
+    for (int i = 0; i < m->ninter; i++) {
+        if (d->inter_mode[i] != RC_MODE_CLOSED) continue;
+        if (s->fr_on[i] && d->inter_slip[i]) return i;
+        for (int j = 0; s->pf_on[i] && j < m->inter_npt[i]; j++)
+            if (d->pt_slip[m->inter_pbase[i] + j]) return i;
+    }
+    return -1;
+}
+
+/* 1 when interface j is closed and has a free body among those of the
+ * interface i. */
+static int shares_body(const rc_static *s, int i, int j)
+{
+    const rc_model *m = s->m;
+    if (s->d->inter_mode[j] != RC_MODE_CLOSED) return 0;
+    const int bj[2] = {m->inter_ba[j], m->inter_bb[j]};
+    for (int k = 0; k < 2; k++)
+        if (body_slot(s, bj[k]) >= 0 && (bj[k] == m->inter_ba[i] || bj[k] == m->inter_bb[i])) return 1;
+    return 0;
+}
+
+/* The penetrations P of the closed contacts on the bodies of the sliding
+ * interface i at the last residual evaluation (s->y) into c->pcur; 1 when
+ * i itself is pressed (P > 0, F_n > 0). */
+static int contact_p(st_run *c, int i)
+{
+    const rc_static *s = c->s;
+    int pressed = 0;
+    for (int j = 0; j < s->m->ninter; j++) {
+        if (!shares_body(s, i, j)) continue;
+        rc_inter_report r;
+        rc_inter_report_eval_d(s->m, s->d, j, c->t, s->y, &r);
+        c->pcur[j] = r.p;
+        if (j == i) pressed = r.p > 0 && r.fn > 0;
+    }
+    return pressed;
+}
+
+/* A solve beyond friction (docs/theory.md 7.8, "A load beyond friction"):
+ * 1 when the residual r at the unknowns u (reduced numbering) has stalled
+ * on a slide: the interface i slides here, pressed (P > 0, F_n > 0), and
+ * slid at the last evaluation (uprev, rprev, pprev), a body of i has moved
+ * since (its translations or rotations) along every closed contact on its
+ * bodies (none of their penetrations changed by more than 1e-9 of it), no
+ * residual has changed by more than the tolerance ftol (max norm of r /
+ * force scale), and the residual is not within 16 ftol (what a stalled
+ * search counts as converged, kin_solve). A move of the sliding body along
+ * its contacts that changes no force is a direction without stiffness that
+ * only the contact's friction, at its limit, acts along, and the residual
+ * left there is the load's excess over that limit. */
+static int slide_stalled(st_run *c, int i, const double *u, const double *r, double ftol)
+{
+    const rc_static *s = c->s;
+    if (i < 0 || !contact_p(c, i) || c->prev_slide != i) return 0;
+    for (int j = 0; j < s->m->ninter; j++)
+        if (shares_body(s, i, j) && !(fabs(c->pcur[j] - c->pprev[j]) <= 1e-9 * fabs(c->pcur[j]))) return 0;
+    const int qa = body_slot(s, s->m->inter_ba[i]), qb = body_slot(s, s->m->inter_bb[i]);
+    int moved = 0;
+    double dr = 0.0, rn = 0.0;
+    for (int k = 0; k < s->nr; k++) {
+        const int f = s->full[k];
+        const double fs = s->fs[f];
+        dr = fmax(dr, fabs(r[k] - c->rprev[k]) / fs);
+        rn = fmax(rn, fabs(r[k]) / fs);
+        if (f < s->n && (f / 6 == qa || f / 6 == qb) && u[k] != c->uprev[k]) moved = 1;
+    }
+    return moved && dr <= ftol && rn > 16.0 * ftol;
+}
+
 static int kin_f(N_Vector u, N_Vector r, void *user)
 {
     st_run *c = user;
@@ -1606,6 +1697,24 @@ static int kin_f(N_Vector u, N_Vector r, void *user)
     if (rc_static_residual(s, c->t, expand(s, N_VGetArrayPointer(u)), s->rfull)) return 1;
     double *rr = N_VGetArrayPointer(r);
     for (int i = 0; i < s->nr; i++) rr[i] = s->rfull[s->full[i]];
+    if (c->watch && c->uprev && c->rprev && c->pprev && c->pcur) {
+        const double *uu = N_VGetArrayPointer(u);
+        const int i = sliding_inter(s);
+        c->stall = slide_stalled(c, i, uu, rr, c->ftol) ? c->stall + 1 : 0;
+        c->prev_slide = i;
+        if (i < 0) return 0; /* nothing to compare the next evaluation with */
+        double *pw = c->pprev;
+        c->pprev = c->pcur;
+        c->pcur = pw;
+        memcpy(c->uprev, uu, (size_t)s->nr * sizeof(double));
+        memcpy(c->rprev, rr, (size_t)s->nr * sizeof(double));
+        if (c->stall >= RC_STATIC_SLIDE_STALL) {
+            /* no Newton step can leave it: end the solve (KINSOL returns
+             * KIN_SYSFUNC_FAIL; the driver finds the contact sliding) */
+            c->stalled = 1;
+            return -1;
+        }
+    }
     return 0;
 }
 
@@ -1761,7 +1870,12 @@ static st_out kin_solve(st_kin *k, st_run *c, double t)
     }
     const double ftol = rc_static_ftol(c->s);
     KINSetFuncNormTol(k->kin, ftol);
+    c->watch = 1;
+    c->ftol = ftol;
+    c->prev_slide = -1;
+    c->stall = c->stalled = 0;
     o.flag = KINSol(k->kin, k->u, KIN_LINESEARCH, k->us, k->fs);
+    c->watch = 0;
     KINGetNumNonlinSolvIters(k->kin, &o.iters);
     KINGetFuncNorm(k->kin, &o.fnorm);
     /* converged; or a search that stalled (its step below KINSOL's step
@@ -1776,7 +1890,7 @@ static st_out kin_solve(st_kin *k, st_run *c, double t)
     const int stalled = o.flag == KIN_STEP_LT_STPTOL || o.flag == KIN_LINESEARCH_NONCONV;
     o.ok = o.flag == KIN_SUCCESS || o.flag == KIN_INITIAL_GUESS_OK || (stalled && o.fnorm <= 16.0 * ftol) ||
            (o.flag == KIN_STEP_LT_STPTOL && o.fnorm <= 1e-8);
-    if (!o.ok) o.singular_col = klu_singular(k, c->s);
+    if (!o.ok && !c->stalled) o.singular_col = klu_singular(k, c->s);
     return o;
 }
 
@@ -2229,7 +2343,7 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
     const double dtout = pre ? 1.0 : opt && opt->dt_out_override > 0 ? opt->dt_out_override : m->dtout;
     rc_data *d = rc_data_new(m);
     rc_static *s = d ? rc_static_new(m, d) : NULL;
-    st_run c = {s, 0.0, "", 0, 0, NULL};
+    st_run c = {.s = s, .prev_slide = -1};
     st_kin k;
     memset(&k, 0, sizeof k);
     rc_output *out = NULL;
@@ -2261,6 +2375,14 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
         goto done;
     }
     c.lam0 = y + m->ny;
+    c.uprev = malloc(((size_t)s->nr + 1) * sizeof(double));
+    c.rprev = malloc(((size_t)s->nr + 1) * sizeof(double));
+    c.pprev = malloc(((size_t)m->ninter + 1) * sizeof(double));
+    c.pcur = malloc(((size_t)m->ninter + 1) * sizeof(double));
+    if (!c.uprev || !c.rprev || !c.pprev || !c.pcur) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory for the static analysis");
+        goto done;
+    }
     if ((st = kin_open(&k, &c, err))) goto done;
     /* tolerances of the active set: a penetration within rounding of the
      * coordinates (RC_TOUCH_ULPS), a force within rounding of the loads */
@@ -2638,6 +2760,10 @@ done:
     free(pfsave);
     free(uA);
     free(uB);
+    free(c.uprev);
+    free(c.rprev);
+    free(c.pprev);
+    free(c.pcur);
     free(cplold);
     free(cplsave);
     return st;

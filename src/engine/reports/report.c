@@ -290,8 +290,8 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
 
 void rc_cpl_print_summary(const rc_model *m, FILE *f)
 {
-    static const char *const form_name[5] = {"", "constant k", "polynomial k_eff", "force table f_e(x)",
-                                             "stiffness table k(x)"};
+    static const char *const form_name[6] = {"", "constant k", "polynomial k_eff", "force table f_e(x)",
+                                             "stiffness table k(x)", "general spring (six K, C in a frame)"};
     const rc_couplings *p = m->cpl;
     fprintf(f, "couplings   %d\n", p->ncard); /* the joint stops: with their joints */
     double *y = malloc(((size_t)m->ny + 1) * sizeof(double));

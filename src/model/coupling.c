@@ -3,7 +3,8 @@
  * bodies and functions, express the attachment points in the body frames,
  * default the relaxation length, integrate the form-4 stiffness tables, set
  * the gravity of the catenary lines; the /SPRING elements of a /PROP/SPRING
- * (TYPE4) as linear springs between the bodies carrying their nodes; the
+ * (TYPE4) as linear springs, of a /PROP/SPR_GENE (TYPE8) as general springs
+ * (form 5), between the bodies carrying their nodes; the
  * energy states, their tolerances
  * and the Jacobian blocks; the run data (warm starts, solver workspace);
  * the summary of `ricochet check`.
@@ -163,7 +164,8 @@ static rc_status compile_one(const rc_case *c, rc_model *m, int k, rc_error *err
 
 static int has_stops(const rc_case_joint *cj) { return cj->has_lo || cj->has_hi; }
 
-/* The law of /SPRING element se: its part's /PROP/SPRING (TYPE4), checked. */
+/* The law of /SPRING element se: its part's /PROP/SPRING (TYPE4) or
+ * /PROP/SPR_GENE (TYPE8), checked. */
 static rc_status spring_prop(const rc_case *c, const rc_case_spring *se, const rc_case_prop **out, rc_error *err)
 {
     char card[64];
@@ -178,9 +180,9 @@ static rc_status spring_prop(const rc_case *c, const rc_case_spring *se, const r
     const rc_case_prop *q = qi >= 0 ? &c->mesh->prop[qi] : NULL;
     if (!q || q->kind != RC_PROP_SPRING)
         RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card /PART/%d, field prop_ID: expected the id of a /PROP/SPRING (/PROP/TYPE4) for the spring elements of the part (e.g. %s spring %d at %s:%d), got %d (%s)",
+                 RC_LOCFMT "card /PART/%d, field prop_ID: expected the id of a /PROP/SPRING (/PROP/TYPE4) or /PROP/SPR_GENE (/PROP/TYPE8) for the spring elements of the part (e.g. %s spring %d at %s:%d), got %d (%s)",
                  RC_LOC(rc_loc_or(pt->prop_loc, pt->loc)), pt->id, card, se->id, se->loc.file, se->loc.line, pt->prop_id,
-                 !q ? "no spring property with this id; ricochet reads /PROP/TYPE4 and ignores the other spring types"
+                 !q ? "no spring property with this id; ricochet reads /PROP/TYPE4 and /PROP/TYPE8 and ignores the other spring types"
                     : q->kind == RC_PROP_SHELL ? "a /PROP/SHELL" : "a /PROP/SOLID");
     if (q->sprtype == 13)
         RC_RAISE(err, RC_EINPUT,

@@ -17,7 +17,9 @@ frame a /SKEW/FIX turned away from the global axes:
   C: undamped rotation (C = 0), its period 2 pi sqrt(J/K) and the energy
      kept in energy_coupling_elastic.
 Checks the histories (max error below 1e-6 of the amplitude), the period of
-C, that the other directions stay at rest, the energy ledger (README.md).
+C, that the other directions stay at rest, the energy ledger, and the static
+analysis of a body hanging on a general spring (z - z0 = -m g/K3)
+(README.md).
 """
 import math
 import os
@@ -55,11 +57,11 @@ def damped(v0, w, z, t):
     return v0 / wd * np.exp(-z * w * t) * np.sin(wd * t)
 
 
-def prop(pid, k, c, title):
+def prop(pid, k, c, title, skew=5):
     """/PROP/TYPE8 lines: Mass I Skew_ID ...; per direction K C A B D, the
     curves line (blank), F E Ascale Hscale."""
     lines = ["#               Mass                   I   Skew_ID   sens_ID    Isflag     Ifail    Ifail2    Iequil",
-             line(("r", 0.0), ("r", 0.0), ("i", 5), ("i", 0), ("i", 0), ("i", 0), ("i", 0), ("i", 0))]
+             line(("r", 0.0), ("r", 0.0), ("i", skew), ("i", 0), ("i", 0), ("i", 0), ("i", 0), ("i", 0))]
     for i in range(6):
         lines += [f"#                 K{i + 1}                  C{i + 1}                  A{i + 1}                  B{i + 1}"
                   f"                  D{i + 1}",
@@ -97,6 +99,25 @@ def deck(rtol=1e-9):
     d.run(T_END, T_END / 600)
     d.solver(rtol=rtol, atol_pos=1e-2 * rtol, atol_quat=1e-2 * rtol, atol_vel=rtol, atol_omega=1e-2 * rtol,
              atol_energy=1e-4 * rtol)
+    return d
+
+
+MS_H, K_H, G = 0.73, 3700.0, 9.81          # the static case: mass, K3, gravity
+
+
+def deck_static():
+    """A body hanging on a zero-length TYPE8 spring (global frame) to a fixed
+    node under gravity, solved by the static analysis (/SOLVER Method 3):
+    z = z0 - m g / K3, no turn."""
+    d = Deck("general spring element (TYPE8) under gravity, static")
+    d.nodes([(1, 0.1, 0.2, 0.3), (9, 0.1, 0.2, 0.3)])
+    d.rbody(1, 1, MS_H, [0.3, 0.4, 0.5], title="hanging body")
+    d.grav(1, "Z", -G)
+    d.add("/PART/7", line(("i", 3), ("i", 0)), title="spring")
+    d.add("/PROP/TYPE8/3", *prop(3, [900.0, 1300.0, K_H, 5.0, 6.0, 7.0], [0] * 6, "static", skew=0), title="K3 = 3700 N/m")
+    d.add("/SPRING/7", line(("i", 71), ("i", 9), ("i", 1)))
+    d.run(1.0, 0.25)
+    d.solver(method=3)
     return d
 
 
@@ -151,6 +172,16 @@ def main():
     rcval.check("spring_gene.energy", eres < 1e-6 and dp[-1] > 0.5 * 0.5 * MA * VA**2,
                 f"kinetic + energy_coupling_elastic + energy_coupling_damping = initial kinetic to {eres:.1e} "
                 f"(< 1e-6, the integration at rtol 1e-9); dissipated {dp[-1]:.6g} J of {ek0:.6g} J")
+    # the static analysis (whatever the mode: its /SOLVER kept, Method 3)
+    method = rcval.METHOD
+    rcval.METHOD = "static" if method else ""
+    rs = rcval.Result(rcval.run_case("case_static.rad", keep_solver=True))
+    rcval.METHOD = method
+    dz = float(np.max(np.abs(rs.pos[1:, 0, 2] - (0.3 - MS_H * G / K_H))))
+    dxy = float(np.max(np.abs(rs.pos[1:, 0, :2] - [0.1, 0.2])))
+    rcval.check("spring_gene.static", dz < 1e-9 * MS_H * G / K_H + 1e-15 and dxy < 1e-15,
+                f"static analysis of a body hanging on a general spring: z - z0 = -m g/K3 to {dz:.2e} m "
+                f"(of m g/K3 = {MS_H * G / K_H:.4e} m, < 1e-9 of it), x, y kept to {dxy:.1e} m")
     errs = [max(errors(rcval.run(deck(rtol), keep_solver=True))[1:4]) for rtol in (1e-6, 1e-8, 1e-10)]
     rcval.check("spring_gene.convergence", errs[2] < errs[1] < errs[0],
                 "max error / amplitude at rtol 1e-6, 1e-8, 1e-10: " + ", ".join(f"{x:.2e}" for x in errs))
@@ -158,4 +189,4 @@ def main():
 
 
 if __name__ == "__main__":
-    rcval.entry(main, lambda: {"case.rad": deck()})
+    rcval.entry(main, lambda: {"case.rad": deck(), "case_static.rad": deck_static()})

@@ -364,7 +364,7 @@ static void test_coupling_spring_element_errors(void)
     snprintf(text, sizeof text, SPRE "%s/SPRING/7\n31,1,2,5\n", p4);
     EXPECT_ERROR(text, 0, 29, "field node_ID3", "not supported yet", "TYPE4");
     snprintf(text, sizeof text, SPRE "%s/SPRING/7\n31,1,2,,,,,4\n", p4);
-    EXPECT_ERROR(text, 0, 29, "field Skew_ID", "not supported yet");
+    EXPECT_ERROR(text, 1, 29, "field Skew_ID", "TYPE8");
     snprintf(text, sizeof text, SPRE "%s/SPRING/7\n31,1,2\n/SPRING/7\n31,2,5\n", p4);
     EXPECT_ERROR(text, 0, 31, "sprg_ID", "31");
     /* reader: property fields */
@@ -378,8 +378,9 @@ static void test_coupling_spring_element_errors(void)
     EXPECT_ERROR(SPRE "/PROP/TYPE4/3\nt\n0\n10,1\n0,,,,,,0.5\n", 0, 28, "field dmin", "rupture");
     EXPECT_ERROR(SPRE "/PROP/SPRING/3\nt\n0\n", 0, 24, "card /PROP/SPRING/3", "expected", "K C A B D");
     /* compiler: the property, the nodes, the bodies */
-    snprintf(text, sizeof text, SPRE "/PROP/TYPE8/3\nt\n0\n/SPRING/7\n31,1,2\n");
-    EXPECT_ERROR(text, 1, 23, "card /PART/7", "field prop_ID", "TYPE8", "not supported yet");
+    snprintf(text, sizeof text, SPRE "/PROP/TYPE13/3\nt\n0\n/SPRING/7\n31,1,2\n");
+    EXPECT_ERROR(text, 1, 23, "card /PART/7", "field prop_ID", "TYPE13", "not supported yet");
+    EXPECT_ERROR(SPRE "/PROP/TYPE8/3\nt\n0\n", 0, 24, "card /PROP/TYPE8/3", "expected 19 data lines");
     snprintf(text, sizeof text, SPRE "/SPRING/7\n31,1,2\n");
     EXPECT_ERROR(text, 1, 23, "card /PART/7", "field prop_ID", "/PROP/SPRING");
     snprintf(text, sizeof text, SPRE "%s/SPRING/6\n31,1,2\n", p4);
@@ -393,8 +394,8 @@ static void test_coupling_spring_element_errors(void)
     ENSURE(in && in->cpl->n == 0 && in->cpl->ncard == 0);
     if (in) ENSURE_NEAR(in->body_mass[0], 1.3 + 0.5, 1e-15, 0);
     rc_model_free(in);
-    snprintf(text, sizeof text, SPRE "/PROP/TYPE8/3\nt\n0\n/SPRING/7\n31,1,5\n");
-    EXPECT_ERROR(text, 1, 23, "card /PART/7", "field prop_ID", "TYPE8");
+    snprintf(text, sizeof text, SPRE "/PROP/TYPE13/3\nt\n0\n/SPRING/7\n31,1,5\n");
+    EXPECT_ERROR(text, 1, 23, "card /PART/7", "field prop_ID", "TYPE13");
     snprintf(text, sizeof text, SPR_BODIES "/NODE\n11,0,0,0\n12,1,0,0\n/PART/7\nsprings\n3\n%s/SPRING/7\n31,11,12\n", p4);
     EXPECT_ERROR(text, 1, 32, "card /SPRING/7", "no /RBODY");
     /* a ground node (in no body, its translations held by /BCS), as Radioss
@@ -698,9 +699,12 @@ static void entropy_state(const rc_model *m, double *y)
     for (int b = 0; b < 2; b++) memcpy(y + m->body_yadr[b], s + 13 * b, 13 * sizeof(double));
 }
 
-static void test_coupling_jacobian_matches_finite_differences(void)
+/* The analytic (complex-step) Jacobian of a deck's couplings at a random
+ * state against central differences of the right-hand side. */
+static void jacobian_vs_fd(const char *text, const char *what)
 {
-    rc_model *m = compile_deck(model_deck);
+    rc_model *m = compile_deck(text);
+    ENSURE(m != NULL);
     if (!m) return;
     rc_data *d = rc_data_new(m);
     const int n = m->ny;
@@ -735,7 +739,7 @@ static void test_coupling_jacobian_matches_finite_differences(void)
             if (er > 1e-6) bad++;
         }
     }
-    printf("    coupling jacobian: %d states, %lld nonzeros, max scaled |J - FD| = %.2e\n", n, (long long)m->nnz,
+    printf("    %s jacobian: %d states, %lld nonzeros, max scaled |J - FD| = %.2e\n", what, n, (long long)m->nnz,
            maxerr);
     ENSURE(bad == 0);
     ENSURE(outside == 0);
@@ -744,6 +748,71 @@ static void test_coupling_jacobian_matches_finite_differences(void)
     free(f2);
     free(val);
     rc_data_free(d);
+    rc_model_free(m);
+}
+
+static void test_coupling_jacobian_matches_finite_differences(void) { jacobian_vs_fd(model_deck, "coupling"); }
+
+/* /PROP/TYPE8 general springs: a body-to-body element of non-zero length in
+ * a turned /SKEW/FIX (the property's), a body-to-ground one in the global
+ * frame (the element's Skew_ID 0 and the property's overridden by 6, the
+ * identity), all six stiffnesses and dampings non-zero. */
+#define GENE_DECK                                                                                  \
+    SPR_BODIES "/SKEW/FIX/5\nturned\n0,0,0\n0.48,-0.6,0.64\n0,0,1\n/SKEW/FIX/6\nglobal\n0,0,0\n0,1,0\n0,0,1\n" \
+               "/PART/7\ngeneral springs\n3\n/PROP/TYPE8/3\nt\n0.02,0.001,5\n"                   \
+               "130,1.1\n0\n1\n170,0.9\n0\n1\n210,1.7\n0\n1\n"                               \
+               "3.1,0.013\n0\n1\n4.3,0.021\n0\n1\n2.7,0.017\n0\n1\n"                         \
+               "/SPRING/7\n31,1,2\n32,9,1,,,,,6\n"
+
+static void test_coupling_gene_read(void)
+{
+    rc_case *c = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    ENSURE(rc_case_load(deck(GENE_DECK), &c, &e) == RC_OK);
+    if (!c) { fprintf(stderr, "  %s\n", e.msg); return; }
+    const rc_case_prop *q = c->mesh->prop;
+    ENSURE(c->mesh->nprop == 1 && q->sprtype == 8 && q->mass == 0.02 && q->inertia == 0.001 && q->skew_id == 5);
+    ENSURE(q->k6[0] == 130 && q->c6[0] == 1.1 && q->k6[2] == 210 && q->k6[5] == 2.7 && q->c6[5] == 0.017);
+    ENSURE(c->mesh->nspring == 2 && c->mesh->spring[0].skew_id == 0 && c->mesh->spring[1].skew_id == 6);
+    rc_case_free(c);
+    rc_model *m = compile_deck(GENE_DECK);
+    ENSURE(m && m->cpl->n == 2);
+    if (m && m->cpl->n == 2) {
+        const rc_couplings *p = m->cpl;
+        ENSURE(p->form[0] == RC_KEFF_GENE && p->form[1] == RC_KEFF_GENE);
+        /* the turned frame: Y' along (0.48, -0.6, 0.64); the global one */
+        ENSURE_NEAR(p->lfrm[3], 0.48, 0, 1e-15);
+        ENSURE_NEAR(p->lfrm[5], 0.64, 0, 1e-15);
+        ENSURE(p->lfrm[9] == 1 && p->lfrm[13] == 1 && p->lfrm[17] == 1);
+        ENSURE(p->gk[0] == 130 && p->gk[11] == 0.017 && p->gk[12 + 5] == 2.7);
+        ENSURE(p->b1[1] == -1 && p->b2[1] == 0);
+        ENSURE_NEAR(p->gd0[0], 1.41 - 0.31, 0, 1e-15);
+    }
+    rc_model_free(m);
+}
+
+static void test_coupling_gene_jacobian_matches_finite_differences(void)
+{
+    jacobian_vs_fd(GENE_DECK, "general spring");
+}
+
+/* The general springs' energy: a short run's ledger closes (the elastic
+ * energy states are the work of the forces and moments). */
+static void test_coupling_gene_energy_ledger_closes(void)
+{
+    char text[sizeof GENE_DECK + 256];
+    snprintf(text, sizeof text, "%s/INIVEL/ROT/1\nspin\n0.3,-0.2,0.5,0,0\n/INIVEL/TRA/2\nv\n0.1,0.05,-0.2,0,0\n"
+             "/SOLVER\n1,5,100000,1e-10,0,0\n1e-12,1e-9,1e-10,1e-10\n1e-12\n", GENE_DECK);
+    rc_model *m = compile_deck(text);
+    ENSURE(m != NULL);
+    if (!m) return;
+    rc_run_options opt = {0};
+    rc_stats st;
+    rc_error e;
+    ENSURE(rc_run(m, &opt, &st, &e) == RC_OK);
+    printf("    general springs: energy residual after 0.5 s %.2e J\n", st.energy_residual);
+    ENSURE(fabs(st.energy_residual) < 1e-8);
     rc_model_free(m);
 }
 
@@ -822,6 +891,9 @@ void suite_coupling(void)
     RUN_TEST(test_coupling_spring_element_read);
     RUN_TEST(test_coupling_spring_element_matches_card);
     RUN_TEST(test_coupling_spring_element_errors);
+    RUN_TEST(test_coupling_gene_read);
+    RUN_TEST(test_coupling_gene_jacobian_matches_finite_differences);
+    RUN_TEST(test_coupling_gene_energy_ledger_closes);
     RUN_TEST(test_coupling_stiffness_integral);
     RUN_TEST(test_coupling_spring_forms);
     RUN_TEST(test_coupling_catenary_solutions);

@@ -94,8 +94,9 @@ static rc_status rc_card_elements(rc_reader *rd, const rc_block *b, rc_elem_kind
 }
 
 /* /SPRING/part_ID: no title, one spring a line: sprg_ID node_ID1 node_ID2,
- * then node_ID3..node_ID6 and Skew_ID, which only the Radioss spring types
- * that ricochet does not read use (blank or 0 here). */
+ * then node_ID3..node_ID6, which only the Radioss spring types that
+ * ricochet does not read use (blank or 0 here), and Skew_ID (the frame of a
+ * /PROP/TYPE8 spring; the compiler refuses it on the other types). */
 static rc_status rc_card_springs(rc_reader *rd, const rc_block *b)
 {
     static const char *const more =
@@ -116,8 +117,7 @@ static rc_status rc_card_springs(rc_reader *rd, const rc_block *b)
                         RC_F_INTN("node_ID4", NULL, RC_FF_ONLY0, more),
                         RC_F_INTN("node_ID5", NULL, RC_FF_ONLY0, more),
                         RC_F_INTN("node_ID6", NULL, RC_FF_ONLY0, more),
-                        RC_F_INTN("Skew_ID", NULL, RC_FF_ONLY0,
-                                  "(a skew belongs to the six-degree-of-freedom springs, /PROP/TYPE8)")};
+                        RC_F_INT("Skew_ID", &e->skew_id, 0, RC_FF_NONNEG)};
         if ((st = rc_parse_line(rd, b, &b->lines[i], f, RC_NF(f)))) return st;
         e->part_id = b->id;
         e->loc = b->lines[i].loc;
@@ -171,12 +171,91 @@ static rc_status rc_card_prop(rc_reader *rd, const rc_block *b, rc_prop_kind kin
     return rc_note_id(rd, RC_IDK_PROP, p->id, &p->loc, b->hdr->text);
 }
 
+/* A rupture bound of a spring: 0, blank or beyond 1e29 in magnitude (none). */
+static rc_status rc_no_rupture(rc_reader *rd, const rc_block *b, const rc_loc *loc, const rc_field *f, double v,
+                               int lower)
+{
+    if (v == 0 || (lower ? v <= -1e29 : v >= 1e29)) return RC_OK;
+    return rc_case_fail(rd, loc, b->name, f->name,
+                        "expected 0 or blank (no rupture), got %s: not supported yet (a spring that fails at a %s "
+                        "deformation)",
+                        f->got, lower ? "negative" : "positive");
+}
+
+/* /PROP/SPR_GENE/prop_ID (/PROP/TYPE8): title; Mass (1-20), I (21-40),
+ * Skew_ID (41-50), sens_ID (51-60), Isflag, Ifail, Ifail2, Iequil (10
+ * each); then per direction X, Y, Z, RX, RY, RZ three lines: Ki Ci Ai Bi Di
+ * (20 each); fct_ID1i Hi fct_ID2i fct_ID3i fct_ID4i (10 each), blank,
+ * dmin_i dmax_i (20 each); Fi Ei Ascalei Hscalei (20 each). The linear
+ * stiffnesses and dampings are read; curves, hardening, rupture and the
+ * sensor are not supported yet. */
+static rc_status rc_card_prop_gene(rc_reader *rd, const rc_block *b, rc_case_prop *p)
+{
+    static const char *const fct = "(a nonlinear or rate-dependent general spring: ricochet reads the linear "
+                                   "law F_i = -K_i u_i - C_i du_i/dt per direction)";
+    static const char *const nm[6][14] = {
+#define RC_GENE_NAMES(i)                                                                                   \
+    {"K" #i, "C" #i, "A" #i, "B" #i, "D" #i, "fct_ID1" #i, "H" #i, "fct_ID2" #i, "fct_ID3" #i, "fct_ID4" #i, \
+     "dmin" #i, "dmax" #i, "F" #i, "E" #i}
+        RC_GENE_NAMES(1), RC_GENE_NAMES(2), RC_GENE_NAMES(3), RC_GENE_NAMES(4), RC_GENE_NAMES(5), RC_GENE_NAMES(6)
+#undef RC_GENE_NAMES
+    };
+    static const char *const asc[6] = {"Ascale1", "Ascale2", "Ascale3", "Ascale4", "Ascale5", "Ascale6"};
+    static const char *const hsc[6] = {"Hscale1", "Hscale2", "Hscale3", "Hscale4", "Hscale5", "Hscale6"};
+    rc_status st;
+    int nd;
+    if ((st = rc_card_lines(rd, b, p->title, 19, 19,
+                            "Mass I Skew_ID sens_ID Isflag Ifail Ifail2 Iequil, then for each of X, Y, Z, RX, RY, "
+                            "RZ the three lines Ki Ci Ai Bi Di; fct_ID1i Hi fct_ID2i fct_ID3i fct_ID4i dmini "
+                            "dmaxi; Fi Ei Ascalei Hscalei",
+                            &nd)))
+        return st;
+    rc_field l1[] = {RC_F_REALD("Mass", &p->mass, 0, RC_FF_NONNEG, RC_D_M),
+                     RC_F_REALD("I", &p->inertia, 0, RC_FF_NONNEG, RC_D_J),
+                     RC_F_INT("Skew_ID", &p->skew_id, 0, RC_FF_NONNEG),
+                     RC_F_INTN("sens_ID", NULL, RC_FF_ONLY0, "(a spring switched on or off by a sensor)"),
+                     RC_F_INT("Isflag", NULL, 0, 0),
+                     RC_F_INT("Ifail", NULL, 0, 0),
+                     RC_F_INT("Ifail2", NULL, 0, 0),
+                     RC_F_SET("Iequil", NULL, 0, 0, 0x3u, 0x1u,
+                              "(the moment equilibrium of a spring of non-zero length)")};
+    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
+    p->thick_loc = b->lines[1].loc;
+    for (int i = 0; i < 6; i++) {
+        const int rot = i >= 3;
+        const int dk = rot ? RC_DIM(1, 2, -2) : RC_D_K, dc = rot ? RC_DIM(1, 2, -1) : RC_D_C;
+        double dmin = 0, dmax = 0;
+        const rc_line *la = &b->lines[2 + 3 * i], *lb = &b->lines[3 + 3 * i], *lc = &b->lines[4 + 3 * i];
+        rc_field fa[] = {RC_F_REALD(nm[i][0], &p->k6[i], 0, RC_FF_NONNEG, dk),
+                         RC_F_REALD(nm[i][1], &p->c6[i], 0, RC_FF_NONNEG, dc),
+                         RC_F_REALD(nm[i][2], NULL, 0, 0, RC_D_NONE), RC_F_REALD(nm[i][3], NULL, 0, 0, RC_D_NONE),
+                         RC_F_REALD(nm[i][4], NULL, 0, 0, RC_D_NONE)};
+        rc_field fb[] = {RC_F_INTN(nm[i][5], NULL, RC_FF_ONLY0, fct),
+                         RC_F_SET(nm[i][6], NULL, 0, 0, 0x1FFu, 0x1u, "(hardening and unloading of a nonlinear spring)"),
+                         RC_F_INTN(nm[i][7], NULL, RC_FF_ONLY0, fct),
+                         RC_F_INTN(nm[i][8], NULL, RC_FF_ONLY0, fct),
+                         RC_F_INTN(nm[i][9], NULL, RC_FF_ONLY0, fct),
+                         RC_F_SKIP(10),
+                         RC_F_REALD(nm[i][10], &dmin, 0, 0, rot ? RC_D_NONE : RC_D_L),
+                         RC_F_REALD(nm[i][11], &dmax, 0, 0, rot ? RC_D_NONE : RC_D_L)};
+        rc_field fc[] = {RC_F_REALD(nm[i][12], NULL, 0, 0, RC_D_NONE), RC_F_REALD(nm[i][13], NULL, 0, 0, RC_D_NONE),
+                         RC_F_REALD(asc[i], NULL, 0, 0, RC_D_NONE), RC_F_REALD(hsc[i], NULL, 0, 0, RC_D_NONE)};
+        if ((st = rc_parse_line(rd, b, la, fa, RC_NF(fa)))) return st;
+        if ((st = rc_parse_line(rd, b, lb, fb, RC_NF(fb)))) return st;
+        if ((st = rc_no_rupture(rd, b, &lb->loc, &fb[6], dmin, 1))) return st;
+        if ((st = rc_no_rupture(rd, b, &lb->loc, &fb[7], dmax, 0))) return st;
+        if ((st = rc_parse_line(rd, b, lc, fc, RC_NF(fc)))) return st;
+    }
+    return rc_note_id(rd, RC_IDK_PROP, p->id, &p->loc, b->hdr->text);
+}
+
 /* /PROP/SPRING/prop_ID (/PROP/TYPE4): title; Mass (1-20), sens_ID (51-60),
  * Isflag, Ileng; K C A B D; fct_ID1 H fct_ID2 fct_ID3 fct_ID4 (blank)
  * dmin dmax; F E Ascale Hscale (the last two lines optional). The linear
  * spring-damper F = K dl + C dl/dt is read; the curves, rate effects,
  * rupture, sensor and per-length input are not supported yet.
- * /PROP/SPR_GENE (TYPE8), /PROP/SPR_BEAM (TYPE13): kept, not read. */
+ * /PROP/SPR_GENE (TYPE8): rc_card_prop_gene; /PROP/SPR_BEAM (TYPE13): kept,
+ * not read. */
 static rc_status rc_card_prop_spring(rc_reader *rd, const rc_block *b, int type)
 {
     static const char *const fct = "(a nonlinear or rate-dependent spring: ricochet reads the linear "
@@ -193,6 +272,7 @@ static rc_status rc_card_prop_spring(rc_reader *rd, const rc_block *b, int type)
     p->kind = RC_PROP_SPRING;
     p->sprtype = type;
     p->loc = b->hdr->loc;
+    if (type == 8) return rc_card_prop_gene(rd, b, p);
     if (type != 4) {
         if ((st = rc_var_lines(rd, b, p->title, "the property's lines", &nd))) return st;
         return rc_note_id(rd, RC_IDK_PROP, p->id, &p->loc, b->hdr->text);

@@ -3,7 +3,8 @@
  * bodies and functions, express the attachment points in the body frames,
  * default the relaxation length, integrate the form-4 stiffness tables, set
  * the gravity of the catenary lines; the /SPRING elements of a /PROP/SPRING
- * (TYPE4) as linear springs between the bodies carrying their nodes; the
+ * (TYPE4) as linear springs, of a /PROP/SPR_GENE (TYPE8) as general springs
+ * (form 5), between the bodies carrying their nodes; the
  * energy states, their tolerances
  * and the Jacobian blocks; the run data (warm starts, solver workspace);
  * the summary of `ricochet check`.
@@ -65,6 +66,8 @@ static rc_status alloc_arrays(rc_couplings *p, int n)
     CPL_ALLOC(p->fref, n);
     CPL_ALLOC(p->xref, n);
     CPL_ALLOC(p->cum, n);
+    CPL_ALLOC(p->gk, 12 * n);
+    CPL_ALLOC(p->gd0, 3 * n);
     CPL_ALLOC(p->lambda0, n);
     CPL_ALLOC(p->leq, n);
     CPL_ALLOC(p->ea, n);
@@ -161,7 +164,8 @@ static rc_status compile_one(const rc_case *c, rc_model *m, int k, rc_error *err
 
 static int has_stops(const rc_case_joint *cj) { return cj->has_lo || cj->has_hi; }
 
-/* The law of /SPRING element se: its part's /PROP/SPRING (TYPE4), checked. */
+/* The law of /SPRING element se: its part's /PROP/SPRING (TYPE4) or
+ * /PROP/SPR_GENE (TYPE8), checked. */
 static rc_status spring_prop(const rc_case *c, const rc_case_spring *se, const rc_case_prop **out, rc_error *err)
 {
     char card[64];
@@ -176,18 +180,22 @@ static rc_status spring_prop(const rc_case *c, const rc_case_spring *se, const r
     const rc_case_prop *q = qi >= 0 ? &c->mesh->prop[qi] : NULL;
     if (!q || q->kind != RC_PROP_SPRING)
         RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card /PART/%d, field prop_ID: expected the id of a /PROP/SPRING (/PROP/TYPE4) for the spring elements of the part (e.g. %s spring %d at %s:%d), got %d (%s)",
+                 RC_LOCFMT "card /PART/%d, field prop_ID: expected the id of a /PROP/SPRING (/PROP/TYPE4) or /PROP/SPR_GENE (/PROP/TYPE8) for the spring elements of the part (e.g. %s spring %d at %s:%d), got %d (%s)",
                  RC_LOC(rc_loc_or(pt->prop_loc, pt->loc)), pt->id, card, se->id, se->loc.file, se->loc.line, pt->prop_id,
-                 !q ? "no spring property with this id; ricochet reads /PROP/TYPE4 and ignores the other spring types"
+                 !q ? "no spring property with this id; ricochet reads /PROP/TYPE4 and /PROP/TYPE8 and ignores the other spring types"
                     : q->kind == RC_PROP_SHELL ? "a /PROP/SHELL" : "a /PROP/SOLID");
-    if (q->sprtype != 4)
+    if (q->sprtype == 13)
         RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card /PART/%d, field prop_ID: /PROP/TYPE%d (%s) springs are not supported yet: a spring with "
-                           "six degrees of freedom (three stiffnesses and three rotational ones in a frame) has no "
-                           "counterpart among ricochet's couplings; expected a /PROP/TYPE4 (SPRING) linear spring, got "
-                           "/PROP/TYPE%d/%d (%s:%d) for %s spring %d",
-                 RC_LOC(rc_loc_or(pt->prop_loc, pt->loc)), pt->id, q->sprtype, q->sprtype == 8 ? "SPR_GENE" : "SPR_BEAM",
-                 q->sprtype, q->id, q->loc.file, q->loc.line, card, se->id);
+                 RC_LOCFMT "card /PART/%d, field prop_ID: /PROP/TYPE13 (SPR_BEAM) springs are not supported yet: a "
+                           "beam-like spring whose frame follows the line between its nodes and whose bending "
+                           "couples the translations to the rotations; expected a /PROP/TYPE4 (SPRING) or /PROP/TYPE8 "
+                           "(SPR_GENE), got /PROP/TYPE13/%d (%s:%d) for %s spring %d",
+                 RC_LOC(rc_loc_or(pt->prop_loc, pt->loc)), pt->id, q->id, q->loc.file, q->loc.line, card, se->id);
+    if (q->sprtype == 4 && se->skew_id != 0)
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card %s, field Skew_ID: expected 0 or blank for a spring of a /PROP/TYPE4 (the skew is the "
+                           "frame of a /PROP/TYPE8 general spring), got %d (spring %d, /PROP/TYPE4/%d)",
+                 RC_LOC(se->loc), card, se->skew_id, se->id, q->id);
     *out = q;
     return RC_OK;
 }
@@ -199,6 +207,45 @@ static int spring_inside_body(const rc_case *c, const rc_case_spring *se)
 {
     const int b1 = rc_case_body_of_node(c, se->nodes[0]);
     return b1 >= 0 && b1 == rc_case_body_of_node(c, se->nodes[1]);
+}
+
+/* A /SPRING element of a /PROP/TYPE8 (SPR_GENE) as coupling k (form 5):
+ * six linear stiffnesses and dampings in the frame of Skew_ID (the
+ * element's when not 0, else the property's; 0: the global axes), fixed in
+ * space; relaxed in the initial configuration (x: the two nodes). */
+static rc_status gene_elem(const rc_case *c, rc_couplings *p, const rc_case_spring *se, const rc_case_prop *q, int k,
+                           const double *x[2], double dist, rc_error *err)
+{
+    const int sk = se->skew_id ? se->skew_id : q->skew_id;
+    double *e = p->lfrm + 9 * k;
+    memset(e, 0, 9 * sizeof *e);
+    e[0] = e[4] = e[8] = 1.0;
+    if (sk) {
+        const int s = rc_case_find_skew(c, sk);
+        const rc_loc at = se->skew_id ? se->loc : q->thick_loc;
+        const char *where = se->skew_id ? "/SPRING" : "/PROP/TYPE8";
+        if (s < 0)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card %s/%d, field Skew_ID: expected the id of a /SKEW/FIX, got %d (no such skew; spring %d)",
+                     RC_LOC(at), where, se->skew_id ? se->part_id : q->id, sk, se->id);
+        if (c->mesh->skew[s].mov)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card %s/%d, field Skew_ID: expected a /SKEW/FIX, got /SKEW/MOV%s/%d: not supported yet (a "
+                               "general spring's frame carried by nodes; spring %d)",
+                     RC_LOC(at), where, se->skew_id ? se->part_id : q->id, c->mesh->skew[s].mov == 2 ? "2" : "", sk,
+                     se->id);
+        for (int j = 0; j < 3; j++)
+            for (int i = 0; i < 3; i++) e[3 * j + i] = c->mesh->skew[s].axis[j][i];
+    }
+    p->form[k] = RC_KEFF_GENE;
+    p->x0[k] = dist;
+    p->kd[k] = 0.0;
+    for (int i = 0; i < 6; i++) {
+        p->gk[12 * k + i] = q->k6[i];
+        p->gk[12 * k + 6 + i] = q->c6[i];
+    }
+    for (int i = 0; i < 3; i++) p->gd0[3 * k + i] = x[1][i] - x[0][i];
+    return RC_OK;
 }
 
 /* The /SPRING element e (case mesh) as coupling k: a TYPE4 spring is the
@@ -245,6 +292,7 @@ static rc_status compile_spring_elem(const rc_case *c, rc_model *m, int e, int k
                            "expected at least one node of a rigid body (a node in no body is a point fixed in space)",
                  RC_LOC(se->loc), card, se->id, se->nodes[0], se->nodes[1]);
     const double dist = sqrt(pow(x[1][0] - x[0][0], 2) + pow(x[1][1] - x[0][1], 2) + pow(x[1][2] - x[0][2], 2));
+    if (q->sprtype == 8) return gene_elem(c, p, se, q, k, x, dist, err);
     if (!(dist > 0))
         RC_RAISE(err, RC_EINPUT,
                  RC_LOCFMT "card %s, field node_ID2: spring %d has a zero length (nodes %d and %d coincide): a "
@@ -388,7 +436,7 @@ void rc_cpl_free(rc_couplings *p)
     }
     void *arrays[] = {p->id,  p->kind, (void *)p->type, p->name, p->b1,   p->b2,   p->s1,      p->s2,  p->eadr,
                       p->form, p->x0,  p->kd,   p->coef, p->table, p->fref,   p->xref, p->cum,
-                      p->lambda0, p->leq, p->ea, p->jb, p->law_loc, p->ljoint, p->lrev, p->lfrm, p->llo, p->lhi};
+                      p->lambda0, p->leq, p->ea, p->jb, p->gk, p->gd0, p->law_loc, p->ljoint, p->lrev, p->lfrm, p->llo, p->lhi};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     rc_cpl_contact_free(p->ct);
     free(p);

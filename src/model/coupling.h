@@ -52,7 +52,10 @@ typedef enum {
     RC_KEFF_CONST = 1, /* k_eff = k                                        */
     RC_KEFF_POLY = 2,  /* k_eff = a + b (x - x0) + c (x - x0)^2             */
     RC_KEFF_FORCE = 3, /* tabulated elastic force f_e(x)                   */
-    RC_KEFF_STIFF = 4  /* tabulated stiffness k(x), integrated              */
+    RC_KEFF_STIFF = 4, /* tabulated stiffness k(x), integrated              */
+    RC_KEFF_GENE = 5   /* a /PROP/TYPE8 general spring: six linear
+                          stiffnesses and dampings in a fixed frame
+                          (docs/theory.md 8.1)                             */
 } rc_keff_form;
 
 /* Horizontal spans below this fraction of L_eq are treated as vertical
@@ -82,6 +85,11 @@ typedef struct rc_couplings {
                             integral starts (f_r at x_r, or 0 at x0)          */
     double **cum;        /* [n] form 4: [table n] integral of k from the first
                             abscissa to each abscissa [N]; else NULL         */
+    /* form 5 (general spring, /PROP/TYPE8): the frame in lfrm (rows: the
+     * axes X', Y', Z' in global axes), the initial separation of the ends */
+    double *gk;          /* [n*12] K1..K6 [N/m, N m/rad], C1..C6 [N s/m,
+                            N m s/rad]                                       */
+    double *gd0;         /* [n*3] p2 - p1 at t = 0, global [m]               */
     /* catenary */
     double *lambda0;     /* [n] mass per unstretched length [kg/m]            */
     double *leq;         /* [n] unstretched length [m]                        */
@@ -99,7 +107,8 @@ typedef struct rc_couplings {
     int *ljoint;         /* [n] index of the joint (case order), -1          */
     int *lrev;           /* [n] 1: revolute (q an angle), 0: prismatic       */
     double *lfrm;        /* [9n] joint frame (axis, two normals), the body
-                            frames of a and b (equal at t = 0) [-]           */
+                            frames of a and b (equal at t = 0) [-]; a
+                            general spring's frame                          */
     double *llo, *lhi;   /* [n] stops q_min, q_max; -inf, +inf: none         */
 } rc_couplings;
 

@@ -478,8 +478,8 @@ TL('power_sensor_missing', PW, 'field Isensor', at(PW, 2, 61, 70, '9'))
 SPR_PART = ['/PART/9', 'springs', '         9         0']
 SPR_ELEM = ['/SPRING/9', '        31         1         2']
 PROP4 = ['/PROP/TYPE4/9', 'spring', '                   0', '                 100                   1']
-TL('spring_prop_type8', '/PART/9', 'field prop_ID',
-   before_end(SPR_PART + ['/PROP/TYPE8/9', 'general spring', '                   0'] + SPR_ELEM, expect=2))
+TL('spring_prop_type13', '/PART/9', 'field prop_ID',
+   before_end(SPR_PART + ['/PROP/TYPE13/9', 'beam spring', '                   0'] + SPR_ELEM, expect=2))
 TL('spring_prop_missing', '/PART/9', 'field prop_ID', before_end(SPR_PART + SPR_ELEM, expect=2))
 TL('spring_node3', '/SPRING/9', 'field node_ID3',
    before_end(SPR_PART + PROP4 + ['/SPRING/9', '        31         1         2         3'], expect=8))
@@ -695,6 +695,34 @@ TL('type19_ifric', T19H, 'field Ifric', before_end(T19(l6='         1'), expect=
 TL('type19_surface_plane', T19H, 'field surf_IDs', before_end(T19(), expect=2))
 TL('box_reach_overflow', SB, 'field a b c', at(SB, 4, 1, 20, '1e308'))
 TL('type19_iedge', T19H, 'field Iedge', before_end(T19(l1=cols('         2         4         1', 51, 60, '3')), expect=2))
+
+
+# ---- /PROP/TYPE8 (SPR_GENE) general springs: 19 data lines (line 1, then
+# per direction X Y Z RX RY RZ: K C A B D; the curves line; F E Ascale Hscale)
+def PROP8(l1='                   0', edit=None):
+    lines = ['/PROP/TYPE8/9', 'general spring', l1]
+    for _ in range(6):
+        lines += ['                 100                   1', '         0', '                   1']
+    if edit:
+        k, text = edit
+        lines[3 + k] = text
+    return lines
+
+
+def GENE(**kw):
+    return SPR_PART + PROP8(**kw) + SPR_ELEM
+
+
+TL('gene_lines_missing', '/PROP/TYPE8/9', 'expected 19 data lines',
+   before_end(SPR_PART + ['/PROP/TYPE8/9', 'general spring', '                   0'] + SPR_ELEM, expect=3))
+TL('gene_curve', '/PROP/TYPE8/9', 'field fct_ID14', before_end(GENE(edit=(10, '         5')), expect=16))
+TL('gene_rupture', '/PROP/TYPE8/9', 'field dmax2', before_end(GENE(edit=(4, '%60s%40s' % ('', '0.02'))), expect=10))
+TL('gene_iequil', '/PROP/TYPE8/9', 'field Iequil', before_end(GENE(l1='%20s%20s%50s%10s' % ('0', '0', '', '1')), expect=5))
+TL('gene_sensor', '/PROP/TYPE8/9', 'field sens_ID', before_end(GENE(l1='%20s%20s%10s%10s' % ('0', '0', '', '3')), expect=5))
+TL('gene_k_negative', '/PROP/TYPE8/9', 'field K3', before_end(GENE(edit=(6, '                  -5')), expect=12))
+TL('gene_skew_missing', '/PROP/TYPE8/9', 'field Skew_ID', before_end(GENE(l1='%20s%20s%10s' % ('0', '0', '7')), expect=5))
+TL('spring_skew_type4', '/SPRING/9', 'field Skew_ID',
+   before_end(SPR_PART + PROP4 + ['/SPRING/9', '        31         1         2' + ' ' * 40 + '%10s' % '7'], expect=8))
 
 
 def write_all():

@@ -94,7 +94,9 @@ void rc_moment_free_bodies(const rc_model *m, char *mf) { rc_moment_free_bodies_
 static int cpl_end_centred(const rc_couplings *cp, int k, int e)
 {
     const double *s = (e ? cp->s2 : cp->s1) + 3 * k;
-    return (cp->kind[k] == RC_CPL_SPRING || cp->kind[k] == RC_CPL_CATENARY) && s[0] == 0.0 && s[1] == 0.0 &&
+    /* a general spring (form 5) has moments of its own */
+    return (cp->kind[k] == RC_CPL_SPRING || cp->kind[k] == RC_CPL_CATENARY) && cp->form[k] != RC_KEFF_GENE &&
+           s[0] == 0.0 && s[1] == 0.0 &&
            s[2] == 0.0;
 }
 

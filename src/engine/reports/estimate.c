@@ -230,6 +230,8 @@ void rc_report_estimate(const rc_model *m, FILE *f)
         if (p->kind[k] == RC_CPL_SPRING && p->form[k] == RC_KEFF_CONST) stiff = p->coef[3 * k];
         const int still = pair_rest(rest, p->b1[k], p->b2[k]);
         if (p->kind[k] == RC_CPL_SPRING && p->form[k] == RC_KEFF_POLY && p->coef[3 * k] > 0) stiff = p->coef[3 * k];
+        if (p->kind[k] == RC_CPL_SPRING && p->form[k] == RC_KEFF_GENE) /* the stiffest translation */
+            stiff = fmax(fmax(p->gk[12 * k], p->gk[12 * k + 1]), p->gk[12 * k + 2]);
         if (!still && (p->kind[k] == RC_CPL_SPRING || p->kind[k] == RC_CPL_CATENARY)) {
             /* a stiffness not known here (tables): the most periods */
             const double per = isfinite(stiff) && stiff > 0 && mass > 0

@@ -290,8 +290,8 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
 
 void rc_cpl_print_summary(const rc_model *m, FILE *f)
 {
-    static const char *const form_name[5] = {"", "constant k", "polynomial k_eff", "force table f_e(x)",
-                                             "stiffness table k(x)"};
+    static const char *const form_name[6] = {"", "constant k", "polynomial k_eff", "force table f_e(x)",
+                                             "stiffness table k(x)", "general spring (six K, C in a frame)"};
     const rc_couplings *p = m->cpl;
     fprintf(f, "couplings   %d\n", p->ncard); /* the joint stops: with their joints */
     double *y = malloc(((size_t)m->ny + 1) * sizeof(double));
@@ -303,7 +303,13 @@ void rc_cpl_print_summary(const rc_model *m, FILE *f)
         fprintf(f, "  %-22s bodies %d-%d, ", p->name[k], ids[0], ids[1]);
         if (p->kind[k] == RC_CPL_CONTACT)
             rc_cpl_contact_print(m, k, ok ? &r : NULL, f);
-        else if (p->kind[k] == RC_CPL_SPRING)
+        else if (p->kind[k] == RC_CPL_SPRING && p->form[k] == RC_KEFF_GENE) {
+            const double *g = p->gk + 12 * k;
+            fprintf(f, "%s, K %.5g %.5g %.5g N/m, %.5g %.5g %.5g N m/rad, C %.5g %.5g %.5g N s/m, %.5g %.5g %.5g "
+                       "N m s/rad; at t = 0: displacement %.5g m, force %.5g N\n",
+                    form_name[p->form[k]], g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7], g[8], g[9], g[10], g[11],
+                    ok ? r.length : NAN, ok ? r.force : NAN);
+        } else if (p->kind[k] == RC_CPL_SPRING)
             fprintf(f, "%s, x0 %.5g m, k_d %.5g N s/m; at t = 0: length %.5g m, force %.5g N\n",
                     form_name[p->form[k]], p->x0[k], p->kd[k], ok ? r.length : NAN, ok ? r.force : NAN);
         else

@@ -645,10 +645,7 @@ static void normalise_quats(run_ctx *c)
         if (nq > 0)
             for (int k = 0; k < 4; k++) q[k] /= nq;
     }
-    if (c->nq > 0 && c->red) {
-        const double *yr = N_VGetArrayPointer(c->y);
-        for (int j = 0; j < c->nr; j++) c->yfull[c->kidx[j]] = yr[j];
-    }
+    if (c->nq > 0) scatter_state(c);
 }
 
 /* (Re)start the explicit integrator at (t, CVODE's vector), first step h

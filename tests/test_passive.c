@@ -849,6 +849,73 @@ out:
     rc_model_free(m);
 }
 
+/* ---- no recovery of P_e while the law carries no force --------------- */
+/* A box (1 kg) on a floor, TYPE6 Iform 2 (load curve 1e6 N/m, Stiff 1e8
+ * N/m, Visc 100 N s/m, Fric 0.5), flat, 1e-6 m into the floor with its
+ * law's penetration P_e = 0.5e-6 m (a deficit), sliding at 0.1 m/s and
+ * lifting at 2e-3 m/s, so that its damper dissipates (pays a recovery). On
+ * the unload floor (F_el = 0) the law's rate is v_bar: P_e does not
+ * recover there, and the reloading root (the law's rate) stays negative
+ * while the box lifts. Recovering "for free" at F_el = 0 read a reloading
+ * rate on the floor that the Stiff line, paying for it, turned back at once
+ * (a box lifting off its floor: reloading and unloading every 3e-12 s,
+ * Zeno). On the Stiff line carrying 1 N the recovery still acts. */
+static void test_pe_no_recovery_at_zero_force(void)
+{
+    static const char *deck =
+        "/BEGIN\nbox on a floor, Iform 2\n      2022         0\n"
+        "                  kg                   m                   s\n"
+        "                  kg                   m                   s\n"
+        "/NODE\n1,0,0,0.04\n"
+        "/RBODY/1\nbox\n1,,,,1,1\n0.002,0.002,0.002\n0,0,0\n"
+        "/SURF/BOX/1\nbox\n1\n0,0,0.04\n0.05,0.05,0.04\n"
+        "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
+        "/GRNOD/NODE/1\nbox\n1\n"
+        "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"
+        "/FUNCT/1\nlinear\n0,0\n1,1000000\n"
+        "/INTER/TYPE6/1\nbox on floor\n1,2\n0,0.5\n\n1,2\n0,,100000000\n100\n"
+        "/RUN\n0.01,0.001\n/END\n";
+    rc_model *m = TU_COMPILE_OK(deck, "pe_zero_force.rad");
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    const int ng = rc_root_land_base(m) + m->npt;
+    double *g = calloc((size_t)ng + 1, sizeof(double));
+    ENSURE(d && y && g && m->ninter == 1 && m->inter_peidx[0] >= 0 && m->inter_hidx[0] >= 0 &&
+           m->inter_iform[0] == 2);
+    if (!d || !y || !g) goto out;
+    rc_initial_state(m, y);
+    double *yb = y + m->body_yadr[0];
+    const double p = 1e-6;
+    yb[2] = 0.04 - p; /* every corner 1e-6 m into the floor */
+    yb[7] = 0.1;      /* sliding */
+    yb[9] = 2e-3;     /* lifting */
+    y[m->inter_eadr[0] + m->inter_peidx[0]] = 0.5 * p; /* P_e below P: a deficit */
+    d->inter_mode[0] = RC_MODE_CLOSED;
+    for (int k = 0; k < 2; k++) {
+        d->inter_branch[0] = k == 0 ? RC_BR_UNLOAD : RC_BR_ELASTIC;
+        y[m->inter_eadr[0] + m->inter_hidx[0]] = k == 0 ? 0.0 : 1.0; /* F_h on the Stiff line [N] */
+        rc_inter_report r;
+        rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
+        rc_assemble_roots(m, d, 0.0, y, g);
+        printf("    %s: F_el %.3e N, damping %.3e N, v_bar %.6e m/s, law's rate %.6e m/s, HYST_A root %.3e\n",
+               k == 0 ? "unload floor" : "Stiff line at 1 N", r.fload, r.fdamp, r.vd, r.vl, g[RC_ROOT_HYST_A]);
+        ENSURE(fabs(r.vd + 2e-3) < 1e-9); /* v_bar: the lifting */
+        if (k == 0) {
+            ENSURE(r.fload == 0.0);
+            ENSURE(r.vl == r.vd);                /* no recovery at zero force */
+            ENSURE(g[RC_ROOT_HYST_A] < 0.0);     /* no reloading while lifting */
+        } else {
+            ENSURE(r.vl > r.vd + 1e-6);          /* recovery, paid by the damper */
+        }
+    }
+out:
+    free(g);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 /* ---- a falling limit: the slip goes on until the spring outruns it ---- */
 /* A ball (1 kg, R = 0.05 m) pressed into a floor by p = 1e-5 m (linear law
  * 1e6 N/m: F_n = 10 N), Fric 0.3 (limit 3 N), stick stiffness Stiff 1e7
@@ -1247,6 +1314,7 @@ void suite_passive(void)
     RUN_TEST(test_state_stiffness_beyond_resolution_refused);
     RUN_TEST(test_landing_band_kept_through_flips);
     RUN_TEST(test_power_rdf_root_on_damping_rate);
+    RUN_TEST(test_pe_no_recovery_at_zero_force);
     RUN_TEST(test_elastic_damped_release_ledger);
     RUN_TEST(test_box_sliding_start_at_every_rtol);
     RUN_TEST(test_contact_records_bounded);

@@ -278,6 +278,110 @@ static void test_cylinder_plane_depth_near_upright(void)
     rc_model_free(m);
 }
 
+/* A flat-ended cylinder (Icont 1: the deepest point; r 0.03 m, length
+ * 0.2 m, 0.5 kg) lying on a floor under gravity (linear law 1e3 N/m), its
+ * axis tilted by theta about the floor's y axis, its centre at a fixed
+ * height. The two ends' rims are eps apart in depth at |theta| = eps / L
+ * (eps the end band, a quarter of the penetration scale): beyond, P is the
+ * deeper rim's depth (closed form) and the point that rim's lowest point;
+ * within, P is their C2 smooth maximum (3 eps / 16 above both at theta = 0)
+ * and the point moves from one end to the other. The point is the depth's
+ * own gradient (dP/dtheta = x_s - x_c: the force at it does the work F dP,
+ * passive), P has no jump, and the Jacobian matches central differences
+ * inside the band. Before, the point jumped between the ends as theta
+ * changed sign (a cylinder coming to rest on its side: steps of 1e-12 s). */
+static const char cl_deck[] =
+    "/NODE\n1,0,0,0.03\n"
+    "/RBODY/1\ncylinder\n1,,,,0.5\n1.8e-4,1.8e-3,1.8e-3\n0,0,0\n"
+    "/SURF/CYL/1\ncylinder\n1,0,1\n0,0,0.03\n1,0,0\n0.03,0.2\n"
+    "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
+    "/GRAV/1\ng\n0,Z,0,0,0,,1,-9.81\n"
+    "/FUNCT/1\nload\n0,0\n1,1000\n"
+    "/INTER/TYPE6/1\ncylinder on floor\n1,2\n,0.3\n\n1\n\n30\n/RUN\n0.01,0.001\n";
+
+static double *cl_state(const rc_model *m, double th, double zc)
+{
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    if (!y) return NULL;
+    rc_initial_state(m, y);
+    double *b = y + m->body_yadr[0];
+    const double u[3] = {0.0, 1.0, 0.0};
+    double q[4];
+    quat(th, u, q);
+    b[2] = zc;
+    memcpy(b + 3, q, sizeof q);
+    return y;
+}
+
+static void test_cylinder_lying_end_band(void)
+{
+    char path[128];
+    snprintf(path, sizeof path, "/tmp/rc_cyllying_test_%d.rad", (int)getpid());
+    rc_model *m = TU_COMPILE_OK(cl_deck, path);
+    if (!m) return;
+    ENSURE(m->inter_pair[0] == RC_PAIR_CYL_PLANE);
+    const int sa = m->inter_sa[0];
+    const double r = m->surf_r[sa], h = m->surf_ext[RC_SURF_NEXT * sa], eps = m->surf_ext[RC_SURF_NEXT * sa + 3];
+    const double ps = m->inter_pscale[0], zc = r - 0.4 * ps, L = 2.0 * h;
+    printf("    p_s %.3e m, end band %.3e m (tilt %.2e rad)\n", ps, eps, eps / L);
+    ENSURE(eps > 0 && fabs(eps - 0.25 * ps) < 1e-12 * ps);
+    double maxjump = 0, worst_out = 0, worst_grad = 0, prevp = NAN, prevx = NAN;
+    int mono = 1;
+    for (int k = -300; k <= 300; k++) {
+        const double th = 3.0 * eps / L * k / 100.0;
+        double *y = cl_state(m, th, zc);
+        rc_inter_report rp;
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &rp);
+        /* the two rims' depths below the floor (closed form) */
+        const double dplus = -(zc + sin(-th) * h - r * cos(th)), dminus = -(zc - sin(-th) * h - r * cos(th));
+        const double pmax = fmax(dplus, dminus);
+        if (fabs(dplus - dminus) >= eps * (1 + 1e-9)) worst_out = fmax(worst_out, fabs(rp.p - pmax));
+        ENSURE(rp.p >= pmax - 1e-12 * ps && rp.p <= pmax + 3.0 * eps / 16.0 + 1e-12 * ps);
+        if (k == 0) ENSURE(fabs(rp.p - (pmax + 3.0 * eps / 16.0)) < 1e-12 * ps);
+        if (!isnan(prevp)) maxjump = fmax(maxjump, fabs(rp.p - prevp));
+        /* within the band the point runs from the -x end to the +x end */
+        if (!isnan(prevx) && fabs(dplus - dminus) < eps && rp.point[0] < prevx - 1e-15) mono = 0;
+        prevp = rp.p;
+        prevx = rp.point[0];
+        /* dP/dtheta about the centre (central differences) against x_s - x_c */
+        const double dt = 1e-4 * eps / L;
+        double *y1 = cl_state(m, th + dt, zc), *y2 = cl_state(m, th - dt, zc);
+        rc_inter_report r1, r2;
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y1, &r1);
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y2, &r2);
+        const double dpdth = (r1.p - r2.p) / (2 * dt);
+        worst_grad = fmax(worst_grad, fabs(dpdth - (rp.point[0] - 0.0)) / h);
+        free(y1);
+        free(y2);
+        free(y);
+    }
+    printf("    tilt through the band: max |P - P_rim| outside %.1e m, max step of P %.2e m (tilt step %.1e rad), "
+           "point monotone %d, max |dP/dtheta - (x_s - x_c)| / h %.1e\n",
+           worst_out, maxjump, 3.0 * eps / L / 100.0, mono, worst_grad);
+    ENSURE(worst_out < 1e-12 * ps);
+    ENSURE(maxjump < 0.05 * eps);
+    ENSURE(mono);
+    ENSURE(worst_grad < 1e-5);
+    /* the Jacobian inside the band, closed (stick and slip) */
+    rc_data *d = rc_data_new(m);
+    int bad = 0, outside = 0;
+    double err = 0;
+    for (int sl = 0; sl < 2; sl++) {
+        double *y = cl_state(m, 0.3 * eps / L, zc);
+        double *yb = y + m->body_yadr[0];
+        yb[7] = 0.01;
+        yb[9] = -1e-3;
+        d->inter_mode[0] = RC_MODE_CLOSED;
+        d->inter_slip[0] = sl;
+        err = fmax(err, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
+        free(y);
+    }
+    printf("    jacobian inside the band: max scaled |J - FD| = %.2e (%d bad, %d off the pattern)\n", err, bad, outside);
+    ENSURE(bad == 0 && outside == 0);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 /* The Jacobian in every region against central differences: TYPE6 with
  * friction (stick, slip), power law with step5 friction (uncapped, capped)
  * or a /FRICTION card (viscous and incremental, filtered), closed and
@@ -334,4 +438,5 @@ void suite_sphcyl(void)
     RUN_TEST(test_sphcyl_continuity);
     RUN_TEST(test_sphcyl_jacobian_regions);
     RUN_TEST(test_cylinder_plane_depth_near_upright);
+    RUN_TEST(test_cylinder_lying_end_band);
 }

@@ -153,10 +153,11 @@ double tu_jac_fd_error(const rc_model *m, rc_data *d, double t, double *y, int f
             int64_t k;
             for (k = m->jac_colptr[col]; k < m->jac_colptr[col + 1]; k++)
                 if (m->jac_rowind[k] == r) break;
-            if (k < m->jac_colptr[col + 1]) an = val[k];
-            else if (fabs(fd) > 1e-9 * scale) (*outside)++;
             /* rounding of the central difference: eps |f| / h of the rows */
             const double noise = forgive_rounding ? 100.0 * DBL_EPSILON * fmax(fabs(f1[r]), fabs(f2[r])) / h : 0.0;
+            /* off the pattern: a difference beyond its rounding */
+            if (k < m->jac_colptr[col + 1]) an = val[k];
+            else if (fabs(fd) > fmax(1e-9 * scale, noise)) (*outside)++;
             double er = fabs(an - fd) / scale;
             /* the truncation error of the difference: at h / 4 the central
              * difference moves towards the derivative by 16 times less; an

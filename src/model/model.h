@@ -67,7 +67,9 @@ typedef enum { RC_SURF_PLANE = 1, RC_SURF_SPHERE = 2, RC_SURF_CYL = 3, RC_SURF_B
 
 /* Extra parameters of a surface (surf_ext, RC_SURF_NEXT per surface):
  *   cylinder: [0] half-length of the cylindrical part [m], [1] ends (0 flat,
- *             1 rounded), [2] contact point (0 mid-length, 1 deepest);
+ *             1 rounded), [2] contact point (0 mid-length, 1 deepest),
+ *             [3] the end band of the deepest point [m] (set with the
+ *             scales; 0: the nearer end alone);
  *             its axis (unit, body frame) is surf_n, its radius surf_r;
  *   box:      [0..2] half-sizes along its axes [m], [3..11] the three unit
  *             axes u, v, w in the body frame (row k at 3 + 3 k);

@@ -59,6 +59,8 @@
 #define RC_DREG_FRAC 1e-4
 /* p_s is at least this fraction of p_F [-]. */
 #define RC_PSCALE_SPAN 1e-2
+/* the end band of a cylinder's deepest point, in penetration scales */
+#define RC_CYL_END_BAND 0.25
 /* Damping ratio of the stick spring of incremental friction [-]. */
 #define RC_STICK_ZETA 1.0
 
@@ -534,6 +536,22 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         const double ps = m->inter_pscale[i], vs = m->inter_vscale[i];
         m->inter_sband[i] = isfinite(ps) && ps > 0 ? RC_SHARE_BAND * ps : RC_SHARE_BAND * 1e-3 * (L > 0 ? L : 1.0);
         if (isfinite(ps) && isfinite(vs) && ps > 0 && vs > 0) m->inter_perelax[i] = RC_PE_RELAX * vs / ps;
+    }
+    /* the end band of cylinders in the deepest-point mode (docs/theory.md
+     * 2, cylinder - plane): RC_CYL_END_BAND of the penetration scale of their interfaces
+     * with a plane, a box or a segment surface (the smallest), within
+     * which the contact point passes from one end to the other; 0 (the
+     * nearer end alone) without a scale */
+    for (int s = 0; s < m->nsurf; s++)
+        if (m->surf_kind[s] == RC_SURF_CYL) m->surf_ext[RC_SURF_NEXT * s + 3] = 0.0;
+    for (int i = 0; i < n; i++) {
+        const rc_pair_kind pk = m->inter_pair[i];
+        if (pk != RC_PAIR_CYL_PLANE && pk != RC_PAIR_CYL_BOX && pk != RC_PAIR_CYL_SEG) continue;
+        double *ext = m->surf_ext + RC_SURF_NEXT * m->inter_sa[i];
+        const double ps = m->inter_pscale[i];
+        if (ext[2] == 0.0 || !(isfinite(ps) && ps > 0)) continue;
+        const double eb = RC_CYL_END_BAND * ps;
+        ext[3] = ext[3] > 0 ? fmin(ext[3], eb) : eb;
     }
     /* stick damping of the incremental friction: the stick spring critically
      * damped on the pair's reduced mass, so that a body stopped on a

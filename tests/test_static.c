@@ -377,6 +377,92 @@ static void stiffness_friction_deck(const char *more)
     free(text);
 }
 
+/* Exact stick in the static residual (docs/theory.md 7.8, "Exact stick"):
+ * deck_one's contact with friction (Fric 0.3: the limit 15 N at F_n = 50
+ * N) and Istick 1. Its force lambda is three unknowns after the sphere's,
+ * its rows lambda - Phi(P_n (lambda - K_t D)); the stiffness (the engine's
+ * columns of the friction state in the body rows, the rows by complex step
+ * along the normal's, the limit's and D's derivatives) against central
+ * differences of the residual, sticking and sliding, at the start and
+ * displaced and rotated; at u = 0 with lambda in the contact plane the rows
+ * vanish (nothing has moved: stuck exactly) and the sphere's force rows
+ * carry lambda. */
+static void test_static_stiffness_exact_stick(void)
+{
+    char *text = deck_one_friction();
+    ENSURE(text != NULL);
+    if (!text) return;
+    char *p = strstr(text, "0.3                   0\n");
+    p = p ? strchr(p, '\n') : NULL; /* the line Istick, ... */
+    ENSURE(p != NULL);
+    if (!p) {
+        free(text);
+        return;
+    }
+    memcpy(p + 1, "         1", 10);
+    rc_error e;
+    rc_model *m = tu_compile_text(text, "static_exact_jac.rad", &e);
+    if (!m) fprintf(stderr, "  %s\n", e.msg);
+    ENSURE(m != NULL);
+    st_fix f = fix_open(m);
+    rc_data *d = f.d;
+    double *y = f.y;
+    rc_static *s = f.s;
+    if (fix_ready(&f)) {
+        ENSURE(m->inter_fr[0].exact && m->inter_fr[0].tidx >= 0);
+        const int n = rc_static_size(s);
+        ENSURE(n == 9);
+        double u[9] = {0}, r[9] = {0};
+        /* lambda within the limit (sticks); past it with the sphere moved
+         * against it (slides) */
+        const double lam[2][3] = {{3.0, -2.0, 0.0}, {13.5, 6.0, 0.0}};
+        for (int c = 0; c < 2 && n == 9; c++) {
+            rc_initial_state(m, y);
+            rc_modes_init(m, d, 0.0, y);
+            d->inter_mode[0] = RC_MODE_CLOSED;
+            d->inter_slip[0] = 0;
+            rc_static_set_start(s, y);
+            rc_static_set_substep_start(s, 0.5, y);
+            for (int i = 0; i < 6; i++) u[i] = (i % 6 < 3 ? 2e-4 : 0.01) * sin(1.7 * i + 0.3);
+            if (c == 1) u[0] = -4e-4;
+            for (int k = 0; k < 3; k++) u[6 + k] = lam[c][k] + (k == 2 ? 0.1 : 0.0);
+            ENSURE(rc_static_residual(s, 0.5, u, r) == 0);
+            ENSURE(d->inter_slip[0] == c);
+            const double err0 = stiffness_fd_error(s, 0.5, u);
+            fprintf(stderr, "    exact stick (%s): stiffness error %.3g of the largest entry\n", c ? "slip" : "stick", err0);
+            ENSURE(err0 < 1e-6);
+            /* about a start orientation that is not the identity */
+            double *y2 = calloc((size_t)m->ny + 1, sizeof(double));
+            ENSURE(y2 != NULL);
+            if (y2) {
+                memcpy(y2, y, (size_t)m->ny * sizeof(double));
+                const int a = m->body_yadr[m->inter_ba[0]];
+                const double q[4] = {cos(0.02), sin(0.02) * 0.6, sin(0.02) * 0.8, 0.0};
+                memcpy(y2 + a + 3, q, sizeof q);
+                rc_static_set_start(s, y2);
+                rc_static_set_substep_start(s, 0.5, y2);
+                const double err1 = stiffness_fd_error(s, 0.5, u);
+                fprintf(stderr, "    exact stick (%s, turned): stiffness error %.3g of the largest entry\n", c ? "slip" : "stick", err1);
+                ENSURE(err1 < 1e-6);
+                free(y2);
+            }
+            rc_static_set_start(s, y);
+            rc_static_set_substep_start(s, 0.5, y);
+            /* at the substep's start: stuck exactly, the rows zero, the
+             * sphere's tangential force rows lambda */
+            double u0[9] = {0};
+            for (int k = 0; k < 3; k++) u0[6 + k] = c ? 0.5 * lam[c][k] : lam[c][k];
+            ENSURE(rc_static_residual(s, 0.5, u0, r) == 0);
+            ENSURE(d->inter_slip[0] == 0);
+            for (int k = 0; k < 3; k++) ENSURE_NEAR(r[6 + k], 0.0, 1e-13, 0.0);
+            ENSURE_NEAR(r[0], u0[6], 1e-12, 1e-12);
+            ENSURE_NEAR(r[1], u0[7], 1e-12, 1e-12);
+        }
+    }
+    fix_close(&f);
+    free(text);
+}
+
 /* Hysteresis in the static residual (docs/theory.md 7.8): TYPE6 Iform 1
  * (validation/static_hysteresis/case_iform1.rad: F_L = 1e5 P, Stiff 1e6,
  * F_U = 8e4 (P - 2e-5)+) from F_h0 = 3.5 N at P_0 = 6e-5 m: the trial
@@ -1317,6 +1403,7 @@ void suite_static(void)
 {
     RUN_TEST(test_static_stiffness_fd);
     RUN_TEST(test_static_stiffness_friction);
+    RUN_TEST(test_static_stiffness_exact_stick);
     RUN_TEST(test_static_stiffness_hysteresis);
     RUN_TEST(test_static_stiffness_boxes);
     RUN_TEST(test_static_stiffness_hysteresis_box);

@@ -252,7 +252,8 @@ struct rc_static {
     char *ex_on;      /* [ninter] 1: exact stick */
     char *ex_slip0;   /* [ninter] 1: sliding at the substep's start */
     double *ex_r;     /* [nex] the augmentation r (the interface's K_t) [N/m] */
-    double *ex_w;     /* [10 nex] the last trial: n (3), D (3), L the sliding limit, L_s the stick limit [N] */
+    double *ex_w;     /* [10 nex] the last trial: n (3), D (3), L the sliding limit, L_s the stick limit [N],
+                         the held axes (bits, ex_held) */
     int64_t *ex_pos;  /* [36 nex] its rows' entries in the bodies' columns [18 side + 3 c + k] (-1: none) */
     double *ex_ydot;  /* [ny] scratch: a state direction */
 };
@@ -1111,6 +1112,29 @@ static void pf_trial(rc_static *s, double t, const double *u)
     }
 }
 
+/* The global axes (bits 0..2) along which the supports alone hold exact
+ * contact x's material points: each side fixed, or its translation along
+ * the axis and its three rotations held (/BCS, /IMPVEL), and the axis in
+ * the contact plane (|n_k| below 1e-12). Its stick row along such an axis
+ * would read 0 = 0 and leave lambda_k undetermined (the support carries
+ * that share, as on the IDA path): its row is lambda_k = 0 instead. */
+static int ex_held(const rc_static *s, int x, const double n[3])
+{
+    const rc_model *m = s->m;
+    const int i = s->ex_i[x], qs[2] = {body_slot(s, m->inter_ba[i]), body_slot(s, m->inter_bb[i])};
+    int mask = 0;
+    for (int k = 0; k < 3; k++) {
+        int held = fabs(n[k]) < 1e-12;
+        for (int e = 0; e < 2 && held; e++) {
+            const int q = qs[e];
+            if (q < 0) continue;
+            held = s->held[6 * q + k] && s->held[6 * q + 3] && s->held[6 * q + 4] && s->held[6 * q + 5];
+        }
+        if (held) mask |= 1 << k;
+    }
+    return mask;
+}
+
 /* Exact stick's row (docs/theory.md 7.8, "Exact stick") of the force
  * lambda at the normal n, the relative displacement D of the material
  * points since the substep's start, the augmentation r and the sliding
@@ -1167,6 +1191,7 @@ static void ex_trial(rc_static *s, double t, const double *u)
         }
         w[6] = fmax(r.flim, 0.0);
         w[7] = fmax(r0.flim, 0.0);
+        w[8] = ex_held(s, x, w);
         double sg[3], sn = 0.0, vv = 0.0;
         for (int k = 0; k < 3; k++) sg[k] = lam[k] - s->ex_r[x] * w[3 + k];
         for (int k = 0; k < 3; k++) sn += sg[k] * w[k];
@@ -1194,7 +1219,8 @@ static void ex_residual(const rc_static *s, const double *u, double *r)
             D[k] = w[3 + k];
         }
         ex_row(lam, n, D, w[6], s->ex_r[x], s->d->inter_slip[i], R);
-        for (int k = 0; k < 3; k++) r[c0 + k] = creal(R[k]);
+        const int hm = (int)w[8];
+        for (int k = 0; k < 3; k++) r[c0 + k] = hm & (1 << k) ? u[c0 + k] : creal(R[k]);
     }
 }
 
@@ -1245,7 +1271,7 @@ static int ex_stiffness(rc_static *s, double t, const double *u, const double *d
                         D[kk] = w[3 + kk];
                     }
                     ex_row(lam, n, D, w[6], s->ex_r[x], slip, R);
-                    s->kval[p] = cimag(R[rr]) / h;
+                    s->kval[p] = (int)w[8] & (1 << rr) ? (rr == k ? 1.0 : 0.0) : cimag(R[rr]) / h;
                     continue;
                 }
                 const int q = row / 6, c = row % 6, e = q == qs[0] ? 0 : 1, b = s->fb[q];
@@ -1291,7 +1317,7 @@ static int ex_stiffness(rc_static *s, double t, const double *u, const double *d
                 }
                 ex_row(lam, n, D, w[6] + h * I * (w[6] > 0 ? dr.flim : 0.0), s->ex_r[x], slip, R);
                 for (int k = 0; k < 3; k++)
-                    if (pos[k] >= 0) s->kval[pos[k]] = cimag(R[k]) / h;
+                    if (pos[k] >= 0) s->kval[pos[k]] = (int)w[8] & (1 << k) ? 0.0 : cimag(R[k]) / h;
             }
         }
     }

@@ -15,7 +15,10 @@ Sfric; then no static equilibrium exists: the run ends with an error naming
 the sliding interface and the load time, which must bracket the closed-form
 onset within the load-step resolution.
 case_iform3.rad: the same with /FRICTION Iform 3 (Coulomb, Fric 0.3) on the
-contact and Sfric = 0, theta = atan(mu) - 0.01: sticks through the ramp, x = 0.
+contact and Sfric = 0, theta = atan(mu) - 0.01, and the sphere's y held by
+/BCS as well (a support that holds a tangential direction of the contact:
+there the support carries the load, the friction force's y part is 0):
+sticks through the ramp, x = 0.
 case_static.rad: a static coefficient Fric_s = 0.4 above Fric = 0.2, theta
 = 0.3 rad (mu < tan(theta) = 0.309 < mu_s): the static coefficient holds it
 through the ramp (F_t = m g sin(theta) f, x = 0); case_static_above.rad:
@@ -53,10 +56,10 @@ ATAN = math.atan(MU)
 MU_K, MU_S, THETA_S = 0.2, 0.4, 0.3   # case_static: sliding and static coefficients, tilt [rad]
 
 
-def sphere_on_floor(d):
+def sphere_on_floor(d, bcs="000 111"):
     d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e5 N/m")
     add_sphere_over_plane(d, M, R, R, title="sphere")
-    d.bcs(1, 1, "000 111", title="rotations held")
+    d.bcs(1, 1, bcs, title="rotations held" if bcs == "000 111" else "rotations and y held")
 
 
 def tilted(theta):
@@ -64,9 +67,9 @@ def tilted(theta):
     return float(f"{G * math.sin(theta):.12g}"), float(f"{-G * math.cos(theta):.12g}")
 
 
-def deck_tilt(theta, sfric, fx, fy, title, fric=MU, fric_s=None, card=False):
+def deck_tilt(theta, sfric, fx, fy, title, fric=MU, fric_s=None, card=False, run=(T_END, DT_OUT), method=3, preload=0):
     d = Deck(title)
-    sphere_on_floor(d)
+    sphere_on_floor(d, "010 111" if card else "000 111")
     d.funct(2, fx, fy, title="load factor f(t)")
     gx, gz = tilted(theta)
     d.grav_fct(1, "X", gx, 2)
@@ -77,14 +80,23 @@ def deck_tilt(theta, sfric, fx, fy, title, fric=MU, fric_s=None, card=False):
     else:
         d.type6(1, 1, 2, 1, sfric=sfric if sfric else None, fric=fric, istick=1, fric_s=fric_s,
                 title="sphere - floor, exact stick")
-    d.run(T_END, DT_OUT)
-    d.solver(method=3)
+    d.run(*run)
+    d.solver(method=method, preload=preload)
     return d
 
 
 RAMP = ([0.0, T_END], [0.0, 1.0])
 SLIDE = ([0.0, 0.5, 1.0], [0.0, 1.0, 0.2])                           # case_slide: load past the limit, unload
 SF_SLIDE, KS, XA = 0.5, 100.0, -1.0      # case_slide: Sfric [N], spring [N/m], its fixed point's x [m]
+
+
+HOLD = ([0.0, T_END], [1.0, 1.0])        # case_preload: the full load from t = 0
+T_PRE = 0.2                              # case_preload: the dynamic run's end [s]
+
+
+def deck_preload():
+    return deck_tilt(ATAN - DTH, 0.0, *HOLD, "static exact stick: preloaded, then IDA at rest", run=(T_PRE, 0.01),
+                     method=2, preload=1)
 
 
 def deck_slide():
@@ -146,7 +158,8 @@ def cases():
                                          fric=MU_K, fric_s=MU_S),
             "case_static_above.rad": deck_tilt(math.atan(MU_S) + DTH, 0.0, *RAMP, "static exact stick: above atan(mu_s): slides at once",
                                                fric=MU_K, fric_s=MU_S),
-            "case_slide.rad": deck_slide()}
+            "case_slide.rad": deck_slide(),
+            "case_preload.rad": deck_preload()}
 
 
 def run_expect_failure(name):
@@ -238,6 +251,14 @@ def main():
     rcval.check("static_exact_stick.slide_events", evs == [(first_slip, "fric_slip"), (first_stick, "fric_stick")],
                 f"events {evs} (expected fric_slip at {first_slip:g} s, the first load step that slides, fric_stick at "
                 f"{first_stick:g} s, the first after the peak)")
+    # (e) preloaded (/SOLVER Preload 1), the dynamic run on IDA (exact stick's constraint) stays at rest
+    rcval.METHOD = ""
+    r = rcval.Result(rcval.run_case("case_preload.rad", keep_solver=True))
+    eF, eN, ex = stick_errors(r, ATAN - DTH, np.ones_like(r.t))
+    vmax = float(np.abs(r.vel).max()) if getattr(r, "vel", None) is not None else float("nan")
+    rcval.check("static_exact_stick.preload_at_rest", max(eF, eN) < 1e-9 and ex < 1e-12 and vmax < 1e-12,
+                f"preloaded, IDA to {r.t[-1]:g} s: max |v| {vmax:.2e} m/s, max |x|, |y| {ex:.2e} m, F_t against "
+                f"m g sin(theta) {eF:.2e}, F_n against m g cos(theta) {eN:.2e} of m g")
     rcval.finish()
 
 

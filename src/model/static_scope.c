@@ -160,12 +160,19 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
             what = fbuf;
         } else if (rc_pair_nodes(m->inter_pair[i]) && !rc_inter_frictionless(m, i) &&
                    !(m->inter_npt[i] > 0 && (m->inter_pst[i] == 3 || m->inter_pst[i] == 6)))
-            what = "this friction on a pair of several contact points";
+            /* a guard, not a limit of the scope: the compiler's layout gives
+             * every node pair with friction its points' states (inter_npt >
+             * 0, 3 or 6 each: model/compile.c), so that friction per point
+             * (solver/static.c) takes every law the branches above let
+             * through, on boxes and segment surfaces alike; a pair without
+             * them would have no state to hold a tangential load */
+            what = "this friction on a pair of several contact points (no friction state per point)";
         if (what)
             RC_RAISE(err, RC_EINPUT,
                      RC_LOCFMT "card %s: " RC_STATIC_NOT " (%s); expected a contact of TYPE6 (any Iform), "
                                "frictionless or with the stick-spring friction of TYPE6 (Sfric, Fric, fct_IDff, fct_IDfv) "
-                               "or of a /FRICTION law in the incremental form (Iform 2), or of the power law without friction, between spheres, planes, boxes or "
+                               "or of a /FRICTION law in the incremental form (Iform 2), or exact stick (Istick 1, Iform 3), "
+                               "or of the power law without friction, between spheres, planes, boxes or "
                                "cylinders, boxes or segment surfaces, or %s",
                      RC_LOC(m->inter_loc[i]), m->inter_name[i], what, how, alt);
     }

@@ -250,7 +250,9 @@ struct rc_static {
     int nex;          /* exact interfaces */
     int *ex_i;        /* [nex] the interface of each */
     char *ex_on;      /* [ninter] 1: exact stick */
-    char *ex_slip0;   /* [ninter] 1: sliding at the substep's start */
+    char *ex_slip0;   /* [ninter] 1: sliding at the substep's start (or taken so: ex_force) */
+    char *ex_force;   /* [ninter] 1: the substep is solved again as sliding from its start (a static
+                         limit above the sliding one, passed at the smallest substep) */
     double *ex_r;     /* [nex] the augmentation r (the interface's K_t) [N/m] */
     double *ex_w;     /* [10 nex] the last trial: n (3), D (3), L the sliding limit, L_s the stick limit [N],
                          the held axes (bits, ex_held) */
@@ -320,7 +322,7 @@ void rc_static_free(rc_static *s)
                  s->pf_on, s->pf_t0, s->pf_pa, s->pf_pb, s->pf_xa, s->pf_xb, s->pf_in, s->pf_out,
                  s->full, s->rcolptr, s->rrowind, s->remap, s->ufull, s->rfull, s->en_p0, s->en_f0, s->en_w0, s->en_x0,
                  s->jq, s->jpos, s->jbody, s->jw, s->jA, s->jb, s->jl0, s->imp_r, s->imp_q0, s->soft, s->mf, s->frf,
-                 s->ex_i, s->ex_on, s->ex_slip0, s->ex_r, s->ex_w, s->ex_pos, s->ex_ydot};
+                 s->ex_i, s->ex_on, s->ex_slip0, s->ex_force, s->ex_r, s->ex_w, s->ex_pos, s->ex_ydot};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     free(s);
 }
@@ -356,11 +358,12 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     s->ex_i = malloc(nin1 * sizeof(int));
     s->ex_on = calloc(nin1, 1);
     s->ex_slip0 = calloc(nin1, 1);
+    s->ex_force = calloc(nin1, 1);
     s->ex_r = calloc(nin1, sizeof(double));
     s->ex_w = calloc(10 * nin1, sizeof(double));
     s->ex_pos = malloc(36 * nin1 * sizeof(int64_t));
     s->ex_ydot = calloc((size_t)m->ny + 1, sizeof(double));
-    if (!s->ex_i || !s->ex_on || !s->ex_slip0 || !s->ex_r || !s->ex_w || !s->ex_pos || !s->ex_ydot) {
+    if (!s->ex_i || !s->ex_on || !s->ex_slip0 || !s->ex_force || !s->ex_r || !s->ex_w || !s->ex_pos || !s->ex_ydot) {
         rc_static_free(s);
         return NULL;
     }
@@ -964,7 +967,7 @@ void rc_static_set_substep_start(rc_static *s, double t, const double *y0)
         }
         if (!s->fr_on[i] && !s->ex_on[i]) continue;
         const int closed = d->inter_mode[i] == RC_MODE_CLOSED, at = m->inter_eadr[i] + m->inter_fr[i].tidx;
-        s->ex_slip0[i] = closed && d->inter_slip[i];
+        s->ex_slip0[i] = closed && (d->inter_slip[i] || s->ex_force[i]);
         for (int k = 0; k < 3; k++) s->fr_t0[3 * i + k] = closed ? y0[at + k] : 0.0;
         rc_inter_report r;
         rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], 0, t, y0, &r);
@@ -2919,6 +2922,7 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                 }
             }
             if (ok) {
+                memset(s->ex_force, 0, (size_t)m->ninter);
                 /* the energies over the substep (the last commit's unknowns) */
                 energy_step(s, tn, s->ufull, y);
                 /* friction: the contacts that changed between stick and slip
@@ -2973,6 +2977,21 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                 memcpy(d->cpl->lmode, cplsave, (size_t)m->cpl->n * sizeof(int));
                 if (ncm > (size_t)m->cpl->n)
                     memcpy(d->cpl->fmode, cplsave + m->cpl->n, (ncm - (size_t)m->cpl->n) * sizeof(int));
+            }
+            if ((first || dtau * 0.5 < dmin) && slide >= 0 && s->ex_on[slide] && !s->ex_force[slide]) {
+                /* exact stick whose static limit L_s lies above its sliding
+                 * limit L: past L_s (at the smallest substep) the force
+                 * drops to L, and the equilibrium in slip (something else
+                 * holding the body) lies a finite slide away, across the
+                 * drop, which Newton's line search does not cross; solved
+                 * again as sliding from the substep's start (the test
+                 * against L, the force L: continuous) */
+                int x = 0;
+                while (x + 1 < s->nex && s->ex_i[x] != slide) x++;
+                if (s->ex_w[10 * x + 7] > s->ex_w[10 * x + 6] * (1.0 + 1e-12)) {
+                    s->ex_force[slide] = 1;
+                    continue;
+                }
             }
             if ((first || dtau * 0.5 < dmin) && slide >= 0) {
                 snprintf(reason, sizeof reason,

@@ -99,20 +99,24 @@ def deck_preload():
                      method=2, preload=1)
 
 
-def deck_slide():
-    d = deck_tilt(THETA, SF_SLIDE, *SLIDE, "static exact stick: slides against a spring, sticks where it is")
+def deck_slide(fric=MU, fric_s=None, title="static exact stick: slides against a spring, sticks where it is"):
+    d = deck_tilt(THETA, SF_SLIDE, *SLIDE, title, fric=fric, fric_s=fric_s)
     d.spring(3, 1, (0.0, 0.0, R), 0, (XA, 0.0, R), iform=1, a=KS, title="horizontal spring")
     return d
 
 
-def slide_reference(ts):
+MU_SK, MU_SS = 0.25, 0.35        # case_slide_static: sliding and static coefficients
+
+
+def slide_reference(ts, mu=MU, mu_s=None):
     """The equilibria at the times ts: stuck, the sphere's x stays where it
     stuck (z and the friction force F from the balance, Newton to rounding);
     where |F| would exceed L = Sfric + mu F_n, slip: F = L along it (x, z
     from the balance). Returns per time (x, z, F, F_n, L, mode)."""
     gx, gz = tilted(THETA)
     L0 = -XA
-    x0, z0, out = 0.0, R, []
+    mu_s = mu if mu_s is None else mu_s
+    x0, z0, out, slid = 0.0, R, [], False
     for t in ts:
         f = float(np.interp(t, *SLIDE))
 
@@ -130,13 +134,14 @@ def slide_reference(ts):
             if abs(dz) < 1e-17:
                 break
         fx, _, Fn = forces(x0, z)
-        q = (x0, z, -fx, Fn, SF_SLIDE + MU * Fn, "stick")
+        # the test: the stick limit, or the sliding one for a contact that slid at the last equilibrium
+        q = (x0, z, -fx, Fn, SF_SLIDE + (mu if slid else mu_s) * Fn, "stick")
         if abs(q[2]) > q[4]:
             sg = math.copysign(1.0, q[2])
 
             def res(x, z):
                 fx, fz, Fn = forces(x, z)
-                return np.array([fx + sg * (SF_SLIDE + MU * Fn), fz])
+                return np.array([fx + sg * (SF_SLIDE + mu * Fn), fz])
             x, z = x0, z
             for _ in range(100):
                 J = np.column_stack([(res(x + h, z) - res(x - h, z)) / (2 * h), (res(x, z + h) - res(x, z - h)) / (2 * h)])
@@ -145,8 +150,8 @@ def slide_reference(ts):
                 if abs(dxz).max() < 1e-16:
                     break
             Fn = K * (R - z)
-            q = (x, z, sg * (SF_SLIDE + MU * Fn), Fn, SF_SLIDE + MU * Fn, "slip")
-        x0, z0 = q[0], q[1]
+            q = (x, z, sg * (SF_SLIDE + mu * Fn), Fn, SF_SLIDE + mu * Fn, "slip")
+        x0, z0, slid = q[0], q[1], q[5] == "slip"
         out.append(q)
     return out
 
@@ -159,6 +164,8 @@ def cases():
             "case_static_above.rad": deck_tilt(math.atan(MU_S) + DTH, 0.0, *RAMP, "static exact stick: above atan(mu_s): slides at once",
                                                fric=MU_K, fric_s=MU_S),
             "case_slide.rad": deck_slide(),
+            "case_slide_static.rad": deck_slide(MU_SK, MU_SS, "static exact stick: Fric_s 0.35 > Fric 0.25: sticks "
+                                                "to the static limit, slides at the sliding one"),
             "case_preload.rad": deck_preload()}
 
 
@@ -251,6 +258,17 @@ def main():
     rcval.check("static_exact_stick.slide_events", evs == [(first_slip, "fric_slip"), (first_stick, "fric_stick")],
                 f"events {evs} (expected fric_slip at {first_slip:g} s, the first load step that slides, fric_stick at "
                 f"{first_stick:g} s, the first after the peak)")
+    # (d') a static coefficient above the sliding one: stuck to L_s, then sliding at L (the spring takes the drop)
+    r = rcval.Result(rcval.run_case("case_slide_static.rad", keep_solver=True))
+    ref = slide_reference(r.t, MU_SK, MU_SS)
+    ex = max(abs(float(r.pos[k, 0, 0]) - ref[k][0]) for k in range(len(r.t)))
+    eF = max(max(abs(float(r.ffric[k, 0, 0]) - ref[k][2]), abs(float(r.fn[k, 0]) - ref[k][3])) for k in range(len(r.t))) / (M * G)
+    modes = [int(x) for x in r.slip[:, 0]]
+    want = [1 if q[5] == "slip" else 0 for q in ref]
+    rcval.check("static_exact_stick.slide_static_coefficient", len(r.t) == 21 and ex < 1e-12 and eF < TOL and modes == want,
+                f"Fric_s {MU_SS:g}, Fric {MU_SK:g}: max |x - x_ref| {ex:.2e} m, forces {eF:.2e} of m g; slip flags "
+                f"{''.join(map(str, modes))} (reference {''.join(map(str, want))}); x at the peak "
+                f"{float(r.pos[10, 0, 0]):.12e} m (reference {ref[10][0]:.12e} m)")
     # (e) preloaded (/SOLVER Preload 1), the dynamic run on IDA (exact stick's constraint) stays at rest
     rcval.METHOD = ""
     r = rcval.Result(rcval.run_case("case_preload.rad", keep_solver=True))

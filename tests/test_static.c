@@ -6,7 +6,8 @@
  * moments) and on two such spheres stacked, the upper one on a Hertz
  * contact and held by a spring to a fixed point; at the start orientation
  * and at rotated states; with friction on the contact (the return
- * mapping's trial force, sticking and sliding). And the scope: what
+ * mapping's trial force, sticking and sliding), and with exact stick (the
+ * friction force an unknown, its Alart-Curnier rows). And the scope: what
  * Method 3 refuses. */
 #include <math.h>
 #include <stdio.h>
@@ -531,6 +532,79 @@ static char *read_text(const char *path)
     return t;
 }
 
+/* Exact stick with hysteresis (docs/theory.md 7.8, "Exact stick"): the
+ * sphere of validation/static_hysteresis/case_iform1.rad (held to the
+ * vertical by /BCS 110 000, its rotations free) with Fric 0.3 and Istick 1,
+ * on the Stiff line (F_h0 = 3.5 N at P_0 = 6e-5 m, 1 um deeper): the
+ * limit's derivative through the hysteresis state (Stiff dP/du) in the
+ * exact rows' columns, sticking and sliding, against central differences;
+ * and with the sphere's rotations held as well (/BCS 110 111): x and y are
+ * then held by the support alone, lambda_x = lambda_y = 0 their rows. */
+static void test_static_stiffness_exact_stick_hysteresis(void)
+{
+    for (int held = 0; held < 2; held++) {
+        char *text = read_text("validation/static_hysteresis/case_iform1.rad");
+        ENSURE(text != NULL);
+        if (!text) return;
+        char *p = strstr(text, "/INTER/TYPE6/1\n");
+        for (int k = 0; k < 3 && p; k++) p = strchr(p + 1, '\n'); /* the line Sfric Fric ... */
+        if (p) memcpy(p + 1 + 20, "                 0.3", 20);
+        p = p ? strchr(p + 1, '\n') : NULL; /* Istick, ... */
+        if (p) memcpy(p + 1, "         1", 10);
+        char *b = held ? strstr(text, "   110 000") : NULL;
+        if (b) memcpy(b, "   110 111", 10);
+        ENSURE(p != NULL && (!held || b));
+        rc_error e;
+        rc_model *m = tu_compile_text(text, "static_exact_hyst.rad", &e);
+        if (!m) fprintf(stderr, "  %s\n", e.msg);
+        ENSURE(m != NULL);
+        st_fix f = fix_open(m);
+        rc_data *d = f.d;
+        double *y = f.y;
+        rc_static *s = f.s;
+        if (fix_ready(&f)) {
+            ENSURE(m->inter_fr[0].exact && m->inter_iform[0] == 1);
+            const int n = rc_static_size(s), a = m->body_yadr[m->inter_ba[0]];
+            ENSURE(n == 9);
+            double u[9] = {0}, r[9] = {0};
+            /* F_n = 4.5 N, the limit 1.35 N: lambda within it, and well beyond (the
+             * central differences of the slip rows, r = K_t = Stiff = 1e6 N/m, need
+             * |v| well above r h) */
+            const double lam[2][3] = {{0.3, -0.2, 0.0}, {13.0, 6.0, 0.0}};
+            for (int c = 0; c < 2 && n == 9; c++) {
+                rc_initial_state(m, y);
+                rc_modes_init(m, d, 0.5, y);
+                d->inter_mode[0] = RC_MODE_CLOSED;
+                d->inter_branch[0] = RC_BR_ELASTIC;
+                d->inter_slip[0] = 0;
+                y[a + 2] -= 6e-5;
+                y[m->inter_eadr[0] + m->inter_hidx[0]] = 3.5;
+                rc_static_set_start(s, y);
+                rc_static_set_substep_start(s, 0.5, y);
+                memset(u, 0, sizeof u);
+                u[2] = -1e-6;
+                if (!held) {
+                    u[3] = 2e-7;
+                    u[4] = -3e-7;
+                }
+                for (int k = 0; k < 3; k++) u[6 + k] = lam[c][k];
+                ENSURE(rc_static_residual(s, 0.5, u, r) == 0);
+                ENSURE(d->inter_branch[0] == RC_BR_ELASTIC);
+                ENSURE(d->inter_slip[0] == c);
+                if (held) {
+                    ENSURE(r[6] == u[6] && r[7] == u[7]); /* the support carries x and y */
+                }
+                const double err = stiffness_fd_error(s, 0.5, u);
+                fprintf(stderr, "    exact stick on the Stiff line%s (%s): stiffness error %.3g of the largest entry\n",
+                        held ? ", x, y held" : "", c ? "slip" : "stick", err);
+                ENSURE(err < 1e-6);
+            }
+        }
+        fix_close(&f);
+        free(text);
+    }
+}
+
 /* Validation deck `path` without its /BCS card (its bodies free), compiled
  * (NULL on failure, with the message printed). */
 static rc_model *compile_without_bcs(const char *path, const char *name)
@@ -680,6 +754,29 @@ static void test_static_scope(void)
         p = p ? strchr(p + 1, '\n') : NULL; /* Istick, Inacti, fct_IDff, fct_IDfv */
         if (p) memcpy(p + 1 + 50, "         1", 10);
         TU_EXPECT_TEXT_ERROR(t, "static_fric.rad", "/INTER/TYPE6/1", "static analysis", "speed multiplier");
+    }
+    /* exact stick (Istick 1): in the scope (the friction force an unknown
+     * of the equilibrium), through the setter and under a preload */
+    {
+        char *x = deck_one_friction();
+        char *q = x ? strstr(x, "0.3                   0\n") : NULL;
+        q = q ? strchr(q, '\n') : NULL;
+        ENSURE(q != NULL);
+        if (q) {
+            memcpy(q + 1, "         1", 10);
+            rc_error e1;
+            rc_model *mx = tu_compile_text(x, "static_exact_scope.rad", &e1);
+            if (!mx) fprintf(stderr, "  %s\n", e1.msg);
+            ENSURE(mx != NULL && mx->method == 3);
+            if (mx) {
+                ENSURE(rc_static_scope(mx, NULL, &e1) == RC_OK);
+                ENSURE(rc_preload_scope(mx, NULL, &e1) == RC_OK);
+                ENSURE(rc_model_set_method(mx, 1, &e1) == RC_EINPUT && strstr(e1.msg, "exact stick"));
+                ENSURE(rc_model_set_method(mx, 3, &e1) == RC_OK);
+                rc_model_free(mx);
+            }
+        }
+        free(x);
     }
     /* a joint-free model accepts the method through the setter, and 4 is refused */
     rc_error e;
@@ -1404,6 +1501,7 @@ void suite_static(void)
     RUN_TEST(test_static_stiffness_fd);
     RUN_TEST(test_static_stiffness_friction);
     RUN_TEST(test_static_stiffness_exact_stick);
+    RUN_TEST(test_static_stiffness_exact_stick_hysteresis);
     RUN_TEST(test_static_stiffness_hysteresis);
     RUN_TEST(test_static_stiffness_boxes);
     RUN_TEST(test_static_stiffness_hysteresis_box);

@@ -1117,7 +1117,8 @@ static void pf_trial(rc_static *s, double t, const double *u)
 
 /* The global axes (bits 0..2) along which the supports alone hold exact
  * contact x's material points: each side fixed, or its translation along
- * the axis and its three rotations held (/BCS, /IMPVEL), and the axis in
+ * the axis and its three rotations held for the whole run (/BCS, /IMPVEL
+ * without a Tstop before the end), and the axis in
  * the contact plane (|n_k| below 1e-12). Its stick row along such an axis
  * would read 0 = 0 and leave lambda_k undetermined (the support carries
  * that share, as on the IDA path): its row is lambda_k = 0 instead. */
@@ -1131,7 +1132,10 @@ static int ex_held(const rc_static *s, int x, const double n[3])
         for (int e = 0; e < 2 && held; e++) {
             const int q = qs[e];
             if (q < 0) continue;
-            held = s->held[6 * q + k] && s->held[6 * q + 3] && s->held[6 * q + 4] && s->held[6 * q + 5];
+            for (int c = 0; c < 4; c++) {
+                const int j = 6 * q + (c ? 2 + c : k);
+                held = held && s->held[j] && !s->soft[j]; /* a component released later is not a support */
+            }
         }
         if (held) mask |= 1 << k;
     }

@@ -23,6 +23,12 @@ case_static.rad: a static coefficient Fric_s = 0.4 above Fric = 0.2, theta
 = 0.3 rad (mu < tan(theta) = 0.309 < mu_s): the static coefficient holds it
 through the ramp (F_t = m g sin(theta) f, x = 0); case_static_above.rad:
 theta = atan(0.4) + 0.01: no equilibrium from the first load on.
+case_cylinder.rad: a cylinder (2 kg, R = 0.05 m, length 0.3 m, rotations
+held) lying across a real incline of alpha = 0.25 rad < atan(mu) (the plane
+through the origin with normal (-sin(alpha), 0, cos(alpha)); its contact
+plane is not a coordinate plane), vertical gravity ramped: stuck, its
+centre moves only along the normal, by m g cos(alpha) f / k, not at all
+along the slope; the friction force m g sin(alpha) f up the slope.
 case_slide.rad: theta = 0.4, Sfric = 0.5 N, a horizontal spring (k_s = 100
 N/m) to a fixed point: f rises to 1 (the sphere slides, held by the spring:
 equilibria in slip at F = Sfric + mu F_n) and falls to 0.2 (it sticks again,
@@ -88,6 +94,37 @@ def deck_tilt(theta, sfric, fx, fy, title, fric=MU, fric_s=None, card=False, run
 RAMP = ([0.0, T_END], [0.0, 1.0])
 SLIDE = ([0.0, 0.5, 1.0], [0.0, 1.0, 0.2])                           # case_slide: load past the limit, unload
 SF_SLIDE, KS, XA = 0.5, 100.0, -1.0      # case_slide: Sfric [N], spring [N/m], its fixed point's x [m]
+
+
+ALPHA, MC, RC, LC = 0.25, 2.0, 0.05, 0.3   # case_cylinder: incline [rad], mass [kg], radius, length [m]
+
+
+def incline_geometry():
+    """the incline's unit normal n and its fall line's upward tangent t (read from the deck: 12 digits)."""
+    n = np.array([float(f"{-math.sin(ALPHA):.12g}"), 0.0, float(f"{math.cos(ALPHA):.12g}")])
+    n /= np.linalg.norm(n)
+    return n, np.array([n[2], 0.0, -n[0]])
+
+
+def deck_cylinder():
+    """a cylinder lying across a real incline (its axis along y), vertical gravity ramped."""
+    d = Deck("static exact stick: a cylinder lying across an incline of 0.25 rad, gravity ramped")
+    d.funct(1, [0.0, 1.0], [0.0, K], title="linear k = 1e5 N/m")
+    n, _ = incline_geometry()
+    c = RC * n
+    d.nodes([(1, c[0], c[1], c[2])])
+    j = MC * (3 * RC * RC + LC * LC) / 12
+    d.rbody(1, 1, MC, [j, 0.5 * MC * RC * RC, j], title="cylinder")
+    d.cylinder(1, 1, tuple(c), (0.0, 1.0, 0.0), RC, LC, title="cylinder, axis y")
+    d.plane(2, (0.0, 0.0, 0.0), tuple(n), title="incline through the origin")
+    d.grnod(1, [1])
+    d.bcs(1, 1, "000 111", title="rotations held")
+    d.funct(2, *RAMP, title="load factor f(t)")
+    d.grav_fct(1, "Z", -G, 2)
+    d.type6(1, 1, 2, 1, fric=MU, istick=1, title="cylinder - incline, exact stick")
+    d.run(T_END, DT_OUT)
+    d.solver(method=3)
+    return d
 
 
 HOLD = ([0.0, T_END], [1.0, 1.0])        # case_preload: the full load from t = 0
@@ -166,7 +203,8 @@ def cases():
             "case_slide.rad": deck_slide(),
             "case_slide_static.rad": deck_slide(MU_SK, MU_SS, "static exact stick: Fric_s 0.35 > Fric 0.25: sticks "
                                                 "to the static limit, slides at the sliding one"),
-            "case_preload.rad": deck_preload()}
+            "case_preload.rad": deck_preload(),
+            "case_cylinder.rad": deck_cylinder()}
 
 
 def run_expect_failure(name):
@@ -269,6 +307,23 @@ def main():
                 f"Fric_s {MU_SS:g}, Fric {MU_SK:g}: max |x - x_ref| {ex:.2e} m, forces {eF:.2e} of m g; slip flags "
                 f"{''.join(map(str, modes))} (reference {''.join(map(str, want))}); x at the peak "
                 f"{float(r.pos[10, 0, 0]):.12e} m (reference {ref[10][0]:.12e} m)")
+    # (d'') a cylinder across a real incline: the contact plane not a coordinate plane
+    r = rcval.Result(rcval.run_case("case_cylinder.rad", keep_solver=True))
+    n, tv = incline_geometry()
+    f = r.t / T_END
+    dx = r.pos[:, 0, :] - r.pos[0, 0, :]
+    eT = float(np.abs(dx @ tv).max())
+    eY = float(np.abs(dx[:, 1]).max())
+    eP = float(np.abs(dx @ n + MC * G * n[2] * f / K).max())
+    # the contact's friction force on the cylinder: m g sin(alpha) f up the slope, in the plane
+    eF = float(np.abs(r.ffric[:, 0, :] - np.outer(MC * G * math.sin(ALPHA) * f, tv)).max() / (MC * G))
+    eN = float(np.abs(r.fn[:, 0] - MC * G * n[2] * f).max() / (MC * G))
+    rcval.check("static_exact_stick.cylinder_incline", len(r.t) == 21 and eT < 1e-14 and eY < 1e-14 and eP < 1e-9 * MC * G / K
+                and max(eF, eN) < TOL and not r.slip.any(),
+                f"alpha = {ALPHA:g} rad < atan(mu): {len(r.t)} records; the centre's slide along the fall line "
+                f"{eT:.2e} m, across it {eY:.2e} m (< 1e-14 m), its move along the normal against -m g cos(alpha) f / k "
+                f"{eP:.2e} m; the friction force against m g sin(alpha) f up the slope {eF:.2e}, F_n against "
+                f"m g cos(alpha) f {eN:.2e} (of m g)")
     # (e) preloaded (/SOLVER Preload 1), the dynamic run on IDA (exact stick's constraint) stays at rest
     rcval.METHOD = ""
     r = rcval.Result(rcval.run_case("case_preload.rad", keep_solver=True))

@@ -6,7 +6,8 @@
  * moments) and on two such spheres stacked, the upper one on a Hertz
  * contact and held by a spring to a fixed point; at the start orientation
  * and at rotated states; with friction on the contact (the return
- * mapping's trial force, sticking and sliding). And the scope: what
+ * mapping's trial force, sticking and sliding), and with exact stick (the
+ * friction force an unknown, its Alart-Curnier rows). And the scope: what
  * Method 3 refuses. */
 #include <math.h>
 #include <stdio.h>
@@ -377,6 +378,92 @@ static void stiffness_friction_deck(const char *more)
     free(text);
 }
 
+/* Exact stick in the static residual (docs/theory.md 7.8, "Exact stick"):
+ * deck_one's contact with friction (Fric 0.3: the limit 15 N at F_n = 50
+ * N) and Istick 1. Its force lambda is three unknowns after the sphere's,
+ * its rows lambda - Phi(P_n (lambda - K_t D)); the stiffness (the engine's
+ * columns of the friction state in the body rows, the rows by complex step
+ * along the normal's, the limit's and D's derivatives) against central
+ * differences of the residual, sticking and sliding, at the start and
+ * displaced and rotated; at u = 0 with lambda in the contact plane the rows
+ * vanish (nothing has moved: stuck exactly) and the sphere's force rows
+ * carry lambda. */
+static void test_static_stiffness_exact_stick(void)
+{
+    char *text = deck_one_friction();
+    ENSURE(text != NULL);
+    if (!text) return;
+    char *p = strstr(text, "0.3                   0\n");
+    p = p ? strchr(p, '\n') : NULL; /* the line Istick, ... */
+    ENSURE(p != NULL);
+    if (!p) {
+        free(text);
+        return;
+    }
+    memcpy(p + 1, "         1", 10);
+    rc_error e;
+    rc_model *m = tu_compile_text(text, "static_exact_jac.rad", &e);
+    if (!m) fprintf(stderr, "  %s\n", e.msg);
+    ENSURE(m != NULL);
+    st_fix f = fix_open(m);
+    rc_data *d = f.d;
+    double *y = f.y;
+    rc_static *s = f.s;
+    if (fix_ready(&f)) {
+        ENSURE(m->inter_fr[0].exact && m->inter_fr[0].tidx >= 0);
+        const int n = rc_static_size(s);
+        ENSURE(n == 9);
+        double u[9] = {0}, r[9] = {0};
+        /* lambda within the limit (sticks); past it with the sphere moved
+         * against it (slides) */
+        const double lam[2][3] = {{3.0, -2.0, 0.0}, {13.5, 6.0, 0.0}};
+        for (int c = 0; c < 2 && n == 9; c++) {
+            rc_initial_state(m, y);
+            rc_modes_init(m, d, 0.0, y);
+            d->inter_mode[0] = RC_MODE_CLOSED;
+            d->inter_slip[0] = 0;
+            rc_static_set_start(s, y);
+            rc_static_set_substep_start(s, 0.5, y);
+            for (int i = 0; i < 6; i++) u[i] = (i % 6 < 3 ? 2e-4 : 0.01) * sin(1.7 * i + 0.3);
+            if (c == 1) u[0] = -4e-4;
+            for (int k = 0; k < 3; k++) u[6 + k] = lam[c][k] + (k == 2 ? 0.1 : 0.0);
+            ENSURE(rc_static_residual(s, 0.5, u, r) == 0);
+            ENSURE(d->inter_slip[0] == c);
+            const double err0 = stiffness_fd_error(s, 0.5, u);
+            fprintf(stderr, "    exact stick (%s): stiffness error %.3g of the largest entry\n", c ? "slip" : "stick", err0);
+            ENSURE(err0 < 1e-6);
+            /* about a start orientation that is not the identity */
+            double *y2 = calloc((size_t)m->ny + 1, sizeof(double));
+            ENSURE(y2 != NULL);
+            if (y2) {
+                memcpy(y2, y, (size_t)m->ny * sizeof(double));
+                const int a = m->body_yadr[m->inter_ba[0]];
+                const double q[4] = {cos(0.02), sin(0.02) * 0.6, sin(0.02) * 0.8, 0.0};
+                memcpy(y2 + a + 3, q, sizeof q);
+                rc_static_set_start(s, y2);
+                rc_static_set_substep_start(s, 0.5, y2);
+                const double err1 = stiffness_fd_error(s, 0.5, u);
+                fprintf(stderr, "    exact stick (%s, turned): stiffness error %.3g of the largest entry\n", c ? "slip" : "stick", err1);
+                ENSURE(err1 < 1e-6);
+                free(y2);
+            }
+            rc_static_set_start(s, y);
+            rc_static_set_substep_start(s, 0.5, y);
+            /* at the substep's start: stuck exactly, the rows zero, the
+             * sphere's tangential force rows lambda */
+            double u0[9] = {0};
+            for (int k = 0; k < 3; k++) u0[6 + k] = c ? 0.5 * lam[c][k] : lam[c][k];
+            ENSURE(rc_static_residual(s, 0.5, u0, r) == 0);
+            ENSURE(d->inter_slip[0] == 0);
+            for (int k = 0; k < 3; k++) ENSURE_NEAR(r[6 + k], 0.0, 1e-13, 0.0);
+            ENSURE_NEAR(r[0], u0[6], 1e-12, 1e-12);
+            ENSURE_NEAR(r[1], u0[7], 1e-12, 1e-12);
+        }
+    }
+    fix_close(&f);
+    free(text);
+}
+
 /* Hysteresis in the static residual (docs/theory.md 7.8): TYPE6 Iform 1
  * (validation/static_hysteresis/case_iform1.rad: F_L = 1e5 P, Stiff 1e6,
  * F_U = 8e4 (P - 2e-5)+) from F_h0 = 3.5 N at P_0 = 6e-5 m: the trial
@@ -443,6 +530,79 @@ static char *read_text(const char *path)
     }
     fclose(f);
     return t;
+}
+
+/* Exact stick with hysteresis (docs/theory.md 7.8, "Exact stick"): the
+ * sphere of validation/static_hysteresis/case_iform1.rad (held to the
+ * vertical by /BCS 110 000, its rotations free) with Fric 0.3 and Istick 1,
+ * on the Stiff line (F_h0 = 3.5 N at P_0 = 6e-5 m, 1 um deeper): the
+ * limit's derivative through the hysteresis state (Stiff dP/du) in the
+ * exact rows' columns, sticking and sliding, against central differences;
+ * and with the sphere's rotations held as well (/BCS 110 111): x and y are
+ * then held by the support alone, lambda_x = lambda_y = 0 their rows. */
+static void test_static_stiffness_exact_stick_hysteresis(void)
+{
+    for (int held = 0; held < 2; held++) {
+        char *text = read_text("validation/static_hysteresis/case_iform1.rad");
+        ENSURE(text != NULL);
+        if (!text) return;
+        char *p = strstr(text, "/INTER/TYPE6/1\n");
+        for (int k = 0; k < 3 && p; k++) p = strchr(p + 1, '\n'); /* the line Sfric Fric ... */
+        if (p) memcpy(p + 1 + 20, "                 0.3", 20);
+        p = p ? strchr(p + 1, '\n') : NULL; /* Istick, ... */
+        if (p) memcpy(p + 1, "         1", 10);
+        char *b = held ? strstr(text, "   110 000") : NULL;
+        if (b) memcpy(b, "   110 111", 10);
+        ENSURE(p != NULL && (!held || b));
+        rc_error e;
+        rc_model *m = tu_compile_text(text, "static_exact_hyst.rad", &e);
+        if (!m) fprintf(stderr, "  %s\n", e.msg);
+        ENSURE(m != NULL);
+        st_fix f = fix_open(m);
+        rc_data *d = f.d;
+        double *y = f.y;
+        rc_static *s = f.s;
+        if (fix_ready(&f)) {
+            ENSURE(m->inter_fr[0].exact && m->inter_iform[0] == 1);
+            const int n = rc_static_size(s), a = m->body_yadr[m->inter_ba[0]];
+            ENSURE(n == 9);
+            double u[9] = {0}, r[9] = {0};
+            /* F_n = 4.5 N, the limit 1.35 N: lambda within it, and well beyond (the
+             * central differences of the slip rows, r = K_t = Stiff = 1e6 N/m, need
+             * |v| well above r h) */
+            const double lam[2][3] = {{0.3, -0.2, 0.0}, {13.0, 6.0, 0.0}};
+            for (int c = 0; c < 2 && n == 9; c++) {
+                rc_initial_state(m, y);
+                rc_modes_init(m, d, 0.5, y);
+                d->inter_mode[0] = RC_MODE_CLOSED;
+                d->inter_branch[0] = RC_BR_ELASTIC;
+                d->inter_slip[0] = 0;
+                y[a + 2] -= 6e-5;
+                y[m->inter_eadr[0] + m->inter_hidx[0]] = 3.5;
+                rc_static_set_start(s, y);
+                rc_static_set_substep_start(s, 0.5, y);
+                memset(u, 0, sizeof u);
+                u[2] = -1e-6;
+                if (!held) {
+                    u[3] = 2e-7;
+                    u[4] = -3e-7;
+                }
+                for (int k = 0; k < 3; k++) u[6 + k] = lam[c][k];
+                ENSURE(rc_static_residual(s, 0.5, u, r) == 0);
+                ENSURE(d->inter_branch[0] == RC_BR_ELASTIC);
+                ENSURE(d->inter_slip[0] == c);
+                if (held) {
+                    ENSURE(r[6] == u[6] && r[7] == u[7]); /* the support carries x and y */
+                }
+                const double err = stiffness_fd_error(s, 0.5, u);
+                fprintf(stderr, "    exact stick on the Stiff line%s (%s): stiffness error %.3g of the largest entry\n",
+                        held ? ", x, y held" : "", c ? "slip" : "stick", err);
+                ENSURE(err < 1e-6);
+            }
+        }
+        fix_close(&f);
+        free(text);
+    }
 }
 
 /* Validation deck `path` without its /BCS card (its bodies free), compiled
@@ -594,6 +754,29 @@ static void test_static_scope(void)
         p = p ? strchr(p + 1, '\n') : NULL; /* Istick, Inacti, fct_IDff, fct_IDfv */
         if (p) memcpy(p + 1 + 50, "         1", 10);
         TU_EXPECT_TEXT_ERROR(t, "static_fric.rad", "/INTER/TYPE6/1", "static analysis", "speed multiplier");
+    }
+    /* exact stick (Istick 1): in the scope (the friction force an unknown
+     * of the equilibrium), through the setter and under a preload */
+    {
+        char *x = deck_one_friction();
+        char *q = x ? strstr(x, "0.3                   0\n") : NULL;
+        q = q ? strchr(q, '\n') : NULL;
+        ENSURE(q != NULL);
+        if (q) {
+            memcpy(q + 1, "         1", 10);
+            rc_error e1;
+            rc_model *mx = tu_compile_text(x, "static_exact_scope.rad", &e1);
+            if (!mx) fprintf(stderr, "  %s\n", e1.msg);
+            ENSURE(mx != NULL && mx->method == 3);
+            if (mx) {
+                ENSURE(rc_static_scope(mx, NULL, &e1) == RC_OK);
+                ENSURE(rc_preload_scope(mx, NULL, &e1) == RC_OK);
+                ENSURE(rc_model_set_method(mx, 1, &e1) == RC_EINPUT && strstr(e1.msg, "exact stick"));
+                ENSURE(rc_model_set_method(mx, 3, &e1) == RC_OK);
+                rc_model_free(mx);
+            }
+        }
+        free(x);
     }
     /* a joint-free model accepts the method through the setter, and 4 is refused */
     rc_error e;
@@ -1317,6 +1500,8 @@ void suite_static(void)
 {
     RUN_TEST(test_static_stiffness_fd);
     RUN_TEST(test_static_stiffness_friction);
+    RUN_TEST(test_static_stiffness_exact_stick);
+    RUN_TEST(test_static_stiffness_exact_stick_hysteresis);
     RUN_TEST(test_static_stiffness_hysteresis);
     RUN_TEST(test_static_stiffness_boxes);
     RUN_TEST(test_static_stiffness_hysteresis_box);

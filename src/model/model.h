@@ -470,10 +470,12 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err);
 /* ---- static analysis (model/static_scope.c) ---------------------- */
 /* The first element of m that the static analysis (/SOLVER Method 3,
  * solver/static.c) does not support in this version: RC_EINPUT naming its
- * card (joints, /IMPVEL, friction other than the stick spring of
- * rc_static_friction_ok and exact stick, TYPE6 Iform 1 and 2, Inacti 5,
- * pairs with several contact points, couplings other than springs); `how`
- * says how Method 3 was chosen. */
+ * card (friction with no meaning at rest: viscous, step5, a law with no
+ * coefficient at zero sliding speed; /IMPVEL along a skew axis or
+ * starting later; a body released or an interface turned on by a sensor
+ * found in the run); exact stick and the stick spring of
+ * rc_static_friction_ok are in the scope; `how` says how Method 3 was
+ * chosen. */
 rc_status rc_static_scope(const rc_model *m, const char *how, rc_error *err);
 /* The same, the message ending with `alt` as the way out instead of
  * "Method 1 or 2". */
@@ -485,8 +487,10 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
  * preload was asked for. */
 rc_status rc_preload_scope(const rc_model *m, const char *how, rc_error *err);
 /* 1: friction fr is the incremental stick spring that the static
- * analysis' return mapping takes (TYPE6 Fric/Sfric without a speed
- * multiplier, /FRICTION Coulomb; isotropic, unfiltered, not exact stick). */
+ * analysis' return mapping takes (TYPE6 Sfric, Fric, fct_IDff, fct_IDfv;
+ * a /FRICTION law of Ifric 0 to 3 in the incremental form, any filter,
+ * isotropic or orthotropic); 0 for exact stick, which the static analysis
+ * takes by its own rows (rc_static_scope admits it). */
 int rc_static_friction_ok(const rc_fric *fr);
 
 /* ---- friction (model/friction.c) ------------------------------- */

@@ -5,7 +5,8 @@
  * translations and rotations), and a clear input error naming the card of
  * the first element it does not (docs/case-format.md, /SOLVER): friction
  * with no meaning at rest (viscous, step5, a law whose coefficient at zero
- * sliding speed is 0), exact stick. Called
+ * sliding speed is 0). Exact stick is solved (its friction force an
+ * unknown). Called
  * where Method 3 is chosen: by the compiler for the deck's /SOLVER, by
  * rc_model_set_method, and by the static backend itself; and where a
  * preload (/SOLVER Preload 1) is asked for, which also needs the bodies at
@@ -25,7 +26,9 @@
 /* Friction the static analysis' return mapping takes (solver/static.c,
  * docs/theory.md 7.8): the incremental stick spring of TYPE6 (Fric, Sfric,
  * fct_IDff, fct_IDfv) or of a /FRICTION law (Ifric 0 to 3, any filter,
- * isotropic or orthotropic: the elliptic limit), not exact stick. A law of the sliding speed is taken at rest
+ * isotropic or orthotropic: the elliptic limit); exact stick is not this
+ * (it has no stick spring: solver/static.c holds it by its own rows, and
+ * rc_static_scope admits it). A law of the sliding speed is taken at rest
  * (v = 0: mu(p, 0), f_fv(0)); a filtered limit at rest equals the limit. */
 int rc_static_friction_ok(const rc_fric *fr)
 {
@@ -132,10 +135,15 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
         const char *what = NULL;
         char fbuf[420];
         char rbuf[320];
-        if (fr->exact)
-            what = "exact stick (TYPE6 Istick 1, /FRICTION Iform 3: the stick phase is a constraint on the "
-                   "velocity, which a static analysis does not have)";
-        else if (!rc_inter_frictionless(m, i) && !rc_static_friction_ok(fr)) {
+        /* exact stick (TYPE6 Istick 1, /FRICTION Iform 3): the friction
+         * force an unknown of the equilibrium, the stuck contact held by its
+         * row (solver/static.c); its law is Coulomb's at rest (the compiler
+         * refuses fct_IDfv, filters, orthotropy and several contact points
+         * with it) */
+        if (fr->exact) {
+            if (fr->tidx < 0 || m->inter_npt[i] > 0)
+                what = "exact stick on this pair (no single friction state)";
+        } else if (!rc_inter_frictionless(m, i) && !rc_static_friction_ok(fr)) {
             const char *why = fr->kind == RC_FK_STEP5
                                   ? "the power law's step5 friction (its force mu(s) F_n along the sliding speed s is "
                                     "zero at rest)"
@@ -152,12 +160,19 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
             what = fbuf;
         } else if (rc_pair_nodes(m->inter_pair[i]) && !rc_inter_frictionless(m, i) &&
                    !(m->inter_npt[i] > 0 && (m->inter_pst[i] == 3 || m->inter_pst[i] == 6)))
-            what = "this friction on a pair of several contact points";
+            /* a guard, not a limit of the scope: the compiler's layout gives
+             * every node pair with friction its points' states (inter_npt >
+             * 0, 3 or 6 each: model/compile.c), so that friction per point
+             * (solver/static.c) takes every law the branches above let
+             * through, on boxes and segment surfaces alike; a pair without
+             * them would have no state to hold a tangential load */
+            what = "this friction on a pair of several contact points (no friction state per point)";
         if (what)
             RC_RAISE(err, RC_EINPUT,
                      RC_LOCFMT "card %s: " RC_STATIC_NOT " (%s); expected a contact of TYPE6 (any Iform), "
                                "frictionless or with the stick-spring friction of TYPE6 (Sfric, Fric, fct_IDff, fct_IDfv) "
-                               "or of a /FRICTION law in the incremental form (Iform 2), or of the power law without friction, between spheres, planes, boxes or "
+                               "or of a /FRICTION law in the incremental form (Iform 2), or exact stick (Istick 1, Iform 3), "
+                               "or of the power law without friction, between spheres, planes, boxes or "
                                "cylinders, boxes or segment surfaces, or %s",
                      RC_LOC(m->inter_loc[i]), m->inter_name[i], what, how, alt);
     }

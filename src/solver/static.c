@@ -238,6 +238,26 @@ struct rc_static {
     const rc_model *m0;
     rc_model *mf;
     rc_fric *frf;
+    /* exact stick (TYPE6 Istick 1, /FRICTION Iform 3; docs/theory.md 7.8,
+     * "Exact stick"): each such interface's friction force lambda (on a,
+     * global [N]) is three unknowns after the joints' (n + nl + 3 x), its
+     * residual the Alart-Curnier rows lambda - Phi(P_n (lambda - r D)), D
+     * the relative displacement of the contact's material points since the
+     * substep's start; the engine (on the view s->m, where the exact
+     * interfaces are incremental ones) applies the state lambda as a stick
+     * force (its projection on the contact plane), or the sliding limit
+     * along it */
+    int nex;          /* exact interfaces */
+    int *ex_i;        /* [nex] the interface of each */
+    char *ex_on;      /* [ninter] 1: exact stick */
+    char *ex_slip0;   /* [ninter] 1: sliding at the substep's start (or taken so: ex_force) */
+    char *ex_force;   /* [ninter] 1: the substep is solved again as sliding from its start (a static
+                         limit above the sliding one, passed at the smallest substep) */
+    double *ex_r;     /* [nex] the augmentation r (the interface's K_t) [N/m] */
+    double *ex_w;     /* [10 nex] the last trial: n (3), D (3), L the sliding limit, L_s the stick limit [N],
+                         the held axes (bits, ex_held) */
+    int64_t *ex_pos;  /* [36 nex] its rows' entries in the bodies' columns [18 side + 3 c + k] (-1: none) */
+    double *ex_ydot;  /* [ny] scratch: a state direction */
 };
 
 /* ---- rotations ------------------------------------------------------- */
@@ -301,7 +321,8 @@ void rc_static_free(rc_static *s)
                  s->fr_xa, s->fr_xb, s->ext, s->hy_on, s->hy_f0, s->hy_p0, s->hy_el, s->pe_on,
                  s->pf_on, s->pf_t0, s->pf_pa, s->pf_pb, s->pf_xa, s->pf_xb, s->pf_in, s->pf_out,
                  s->full, s->rcolptr, s->rrowind, s->remap, s->ufull, s->rfull, s->en_p0, s->en_f0, s->en_w0, s->en_x0,
-                 s->jq, s->jpos, s->jbody, s->jw, s->jA, s->jb, s->jl0, s->imp_r, s->imp_q0, s->soft, s->mf, s->frf};
+                 s->jq, s->jpos, s->jbody, s->jw, s->jA, s->jb, s->jl0, s->imp_r, s->imp_q0, s->soft, s->mf, s->frf,
+                 s->ex_i, s->ex_on, s->ex_slip0, s->ex_force, s->ex_r, s->ex_w, s->ex_pos, s->ex_ydot};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     free(s);
 }
@@ -311,6 +332,9 @@ int rc_static_size(const rc_static *s) { return s->nx; }
 /* The slot and the local index (0..12) of state i, -1 when it is not a
  * free body's (from the map s->sslot, made once: this is asked for every
  * entry of the Jacobian's pattern). */
+static int body_slot(const rc_static *s, int b);
+static void pen_gradient(rc_static *s, int i, double t, const double *u, int qs[2], double g[2][6]);
+
 static int state_body(const rc_static *s, int i, int *k)
 {
     const int q = i >= 0 && i < s->m->ny ? s->sslot[i] : -1;
@@ -327,7 +351,31 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     /* a friction filter: the engine on the view of the model without it */
     int filt = 0;
     for (int i = 0; i < m->ninter; i++)
-        filt |= m->inter_fr[i].form == RC_FF_INCREMENTAL && (m->inter_fr[i].tau > 0 || m->inter_fr[i].ortho);
+        filt |= m->inter_fr[i].form == RC_FF_INCREMENTAL &&
+                (m->inter_fr[i].tau > 0 || m->inter_fr[i].ortho || m->inter_fr[i].exact);
+    /* exact stick: its interfaces (one contact point, one friction state) */
+    const size_t nin1 = (size_t)m->ninter + 1;
+    s->ex_i = malloc(nin1 * sizeof(int));
+    s->ex_on = calloc(nin1, 1);
+    s->ex_slip0 = calloc(nin1, 1);
+    s->ex_force = calloc(nin1, 1);
+    s->ex_r = calloc(nin1, sizeof(double));
+    s->ex_w = calloc(10 * nin1, sizeof(double));
+    s->ex_pos = malloc(36 * nin1 * sizeof(int64_t));
+    s->ex_ydot = calloc((size_t)m->ny + 1, sizeof(double));
+    if (!s->ex_i || !s->ex_on || !s->ex_slip0 || !s->ex_force || !s->ex_r || !s->ex_w || !s->ex_pos || !s->ex_ydot) {
+        rc_static_free(s);
+        return NULL;
+    }
+    for (int i = 0; i < m->ninter; i++) {
+        const rc_fric *fr = &m->inter_fr[i];
+        if (!fr->exact || fr->tidx < 0 || m->inter_npt[i] > 0 || fr->kind == RC_FK_NONE) continue;
+        s->ex_on[i] = 1;
+        s->ex_r[s->nex] = fr->kt > 0 ? fr->kt : m->inter_fscale[i] / m->inter_pscale[i];
+        if (!(s->ex_r[s->nex] > 0) || !isfinite(s->ex_r[s->nex])) s->ex_r[s->nex] = 1.0;
+        s->ex_i[s->nex++] = i;
+    }
+    for (size_t k = 0; k < 36 * nin1; k++) s->ex_pos[k] = -1;
     if (filt) {
         s->mf = malloc(sizeof *s->mf);
         s->frf = malloc((size_t)m->ninter * sizeof(rc_fric));
@@ -340,6 +388,9 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
         for (int i = 0; i < m->ninter; i++) {
             if (s->frf[i].form != RC_FF_INCREMENTAL) continue;
             s->frf[i].tau = 0.0;
+            /* exact stick: an incremental friction whose state the static
+             * analysis sets (ex_trial), the stick force its projection */
+            s->frf[i].exact = 0;
             /* orthotropic: the engine's stick root without the absolute
              * band, (F_1/s_1)^2 + (F_2/s_2)^2 - 1 with s_k = L_k (1 +
              * RC_SLIP_BAND), from which fric_trial takes the scaled
@@ -353,7 +404,7 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     s->n = 6 * s->nb;
     const int nj = m->jnt ? m->jnt->n : 0;
     s->nl = m->jnt ? m->jnt->nrows : 0;
-    s->nx = s->n + s->nl;
+    s->nx = s->n + s->nl + 3 * s->nex;
     const size_t n1 = (size_t)s->nx + 1, ny1 = (size_t)m->ny + 1, nnz1 = (size_t)m->nnz + 1;
     s->fb = malloc(((size_t)s->nb + 1) * sizeof(int));
     s->slot = malloc(((size_t)m->nbody + 1) * sizeof(int));
@@ -405,7 +456,7 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     }
     s->nb = q;
     s->n = 6 * q;
-    s->nx = s->n + s->nl;
+    s->nx = s->n + s->nl + 3 * s->nex;
     for (int j = 0; j < nj; j++) {
         for (int e = 0; e < 2; e++) {
             const int b = e ? m->jnt->bb[j] : m->jnt->ba[j];
@@ -480,6 +531,17 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
             s->fs[i] = ang || !(len > 0) ? 1.0 : len;
             s->held[i] = 0;
         }
+    /* exact stick: lambda and its rows [N], scaled by its bodies' force scale */
+    for (int x = 0; x < s->nex; x++) {
+        const int i = s->ex_i[x], qs[2] = {body_slot(s, m->inter_ba[i]), body_slot(s, m->inter_bb[i])};
+        double fsc = 0.0;
+        for (int e = 0; e < 2; e++)
+            if (qs[e] >= 0) fsc = fmax(fsc, s->fs[6 * qs[e]]);
+        for (int k = 0; k < 3; k++) {
+            s->us[s->n + s->nl + 3 * x + k] = s->fs[s->n + s->nl + 3 * x + k] = fsc > 0 ? fsc : 1.0;
+            s->held[s->n + s->nl + 3 * x + k] = 0;
+        }
+    }
     /* imposed translations: held at the integral of their velocity */
     for (int i = 0; i < s->nx; i++) s->imp_k[i] = -1;
     for (q = 0; q < s->nb; q++) s->imp_r[q] = -1;
@@ -565,6 +627,13 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     int64_t nzj = 0;
     for (int j = 0; j < nj; j++)
         nzj += (int64_t)m->jnt->nrow[j] * (12 * ((s->jq[2 * j] >= 0) + (s->jq[2 * j + 1] >= 0)) + 1);
+    /* exact stick: its three rows in the columns of its free bodies'
+     * unknowns, its three unknowns' columns in their rows and its own */
+    for (int x = 0; x < s->nex; x++) {
+        const int i = s->ex_i[x], qa = body_slot(s, m->inter_ba[i]), qb = body_slot(s, m->inter_bb[i]);
+        const int ns = (qa >= 0) + (qb >= 0 && qb != qa);
+        nzj += 3 * 6 * ns + 3 * (6 * ns + 3);
+    }
     const size_t nzt = 36 * (size_t)u + (size_t)nzj;
     s->brow = malloc(((size_t)u + 1) * sizeof(int));
     s->bcol = malloc(((size_t)u + 1) * sizeof(int));
@@ -631,6 +700,16 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
                         s->rowind[p++] = s->n + m->jnt->radr[j] + r;
                     }
                 }
+            /* then the rows of the exact-stick interfaces on the body */
+            for (int x = 0; x < s->nex; x++) {
+                const int i = s->ex_i[x], qa = body_slot(s, m->inter_ba[i]), qb = body_slot(s, m->inter_bb[i]);
+                const int e = qa == q ? 0 : qb == q ? 1 : -1;
+                if (e < 0) continue;
+                for (int k = 0; k < 3; k++) {
+                    s->ex_pos[36 * (size_t)x + 18 * e + 3 * c + k] = p;
+                    s->rowind[p++] = s->n + s->nl + 3 * x + k;
+                }
+            }
             s->colptr[col + 1] = p;
         }
     }
@@ -651,6 +730,26 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
                 }
             }
             s->rowind[p++] = col;
+            s->colptr[col + 1] = p;
+        }
+    }
+    /* the exact-stick unknowns' columns: the rows of the interface's free
+     * bodies (the lower slot first), then its own three */
+    for (int x = 0; x < s->nex; x++) {
+        const int i = s->ex_i[x];
+        int qs[2] = {body_slot(s, m->inter_ba[i]), body_slot(s, m->inter_bb[i])};
+        if (qs[1] == qs[0]) qs[1] = -1;
+        if (qs[0] < 0 || (qs[1] >= 0 && qs[1] < qs[0])) {
+            const int w = qs[0];
+            qs[0] = qs[1];
+            qs[1] = w;
+        }
+        for (int k = 0; k < 3; k++) {
+            const int col = s->n + s->nl + 3 * x + k;
+            int64_t p = s->colptr[col];
+            for (int e = 0; e < 2; e++)
+                for (int c = 0; qs[e] >= 0 && c < 6; c++) s->rowind[p++] = 6 * qs[e] + c;
+            for (int r = 0; r < 3; r++) s->rowind[p++] = s->n + s->nl + 3 * x + r;
             s->colptr[col + 1] = p;
         }
     }
@@ -701,8 +800,8 @@ rc_static *rc_static_new(const rc_model *m, rc_data *d)
     free(red);
     free(key);
     for (int i = 0; i < m->ninter; i++) {
-        s->fr_on[i] = !rc_inter_frictionless(m, i) && rc_static_friction_ok(&m->inter_fr[i]) && m->inter_npt[i] == 0 &&
-                      m->inter_fr[i].tidx >= 0;
+        s->fr_on[i] = !s->ex_on[i] && !rc_inter_frictionless(m, i) && rc_static_friction_ok(&m->inter_fr[i]) &&
+                      m->inter_npt[i] == 0 && m->inter_fr[i].tidx >= 0;
         s->pf_on[i] = !rc_inter_frictionless(m, i) && rc_static_friction_ok(&m->inter_fr[i]) && m->inter_npt[i] > 0 &&
                       rc_pair_nodes(m->inter_pair[i]) && (m->inter_pst[i] == 3 || m->inter_pst[i] == 6);
         s->hy_on[i] = m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0 && m->inter_hidx[i] >= 0;
@@ -866,8 +965,9 @@ void rc_static_set_substep_start(rc_static *s, double t, const double *y0)
                 s->hy_p0[i] = r.p;
             }
         }
-        if (!s->fr_on[i]) continue;
+        if (!s->fr_on[i] && !s->ex_on[i]) continue;
         const int closed = d->inter_mode[i] == RC_MODE_CLOSED, at = m->inter_eadr[i] + m->inter_fr[i].tidx;
+        s->ex_slip0[i] = closed && (d->inter_slip[i] || s->ex_force[i]);
         for (int k = 0; k < 3; k++) s->fr_t0[3 * i + k] = closed ? y0[at + k] : 0.0;
         rc_inter_report r;
         rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], 0, t, y0, &r);
@@ -1015,6 +1115,222 @@ static void pf_trial(rc_static *s, double t, const double *u)
     }
 }
 
+/* The global axes (bits 0..2) along which the supports alone hold exact
+ * contact x's material points: each side fixed, or its translation along
+ * the axis and its three rotations held for the whole run (/BCS, /IMPVEL
+ * without a Tstop before the end), and the axis in
+ * the contact plane (|n_k| below 1e-12). Its stick row along such an axis
+ * would read 0 = 0 and leave lambda_k undetermined (the support carries
+ * that share, as on the IDA path): its row is lambda_k = 0 instead. */
+static int ex_held(const rc_static *s, int x, const double n[3])
+{
+    const rc_model *m = s->m;
+    const int i = s->ex_i[x], qs[2] = {body_slot(s, m->inter_ba[i]), body_slot(s, m->inter_bb[i])};
+    int mask = 0;
+    for (int k = 0; k < 3; k++) {
+        int held = fabs(n[k]) < 1e-12;
+        for (int e = 0; e < 2 && held; e++) {
+            const int q = qs[e];
+            if (q < 0) continue;
+            for (int c = 0; c < 4; c++) {
+                const int j = 6 * q + (c ? 2 + c : k);
+                held = held && s->held[j] && !s->soft[j]; /* a component released later is not a support */
+            }
+        }
+        if (held) mask |= 1 << k;
+    }
+    return mask;
+}
+
+/* Exact stick's row (docs/theory.md 7.8, "Exact stick") of the force
+ * lambda at the normal n, the relative displacement D of the material
+ * points since the substep's start, the augmentation r and the sliding
+ * limit L: R = lambda - Phi(v), v = P_n (lambda - r D) the trial in the
+ * contact plane, Phi(v) = v in stick, L v / |v| in slip. Complex (its
+ * derivatives by complex step); the mode is the caller's. */
+static void ex_row(const double complex lam[3], const double complex n[3], const double complex D[3],
+                   double complex L, double r, int slip, double complex R[3])
+{
+    double complex sg[3], v[3], sn = 0.0;
+    for (int k = 0; k < 3; k++) sg[k] = lam[k] - r * D[k];
+    for (int k = 0; k < 3; k++) sn += sg[k] * n[k];
+    for (int k = 0; k < 3; k++) v[k] = sg[k] - sn * n[k];
+    double complex f = 1.0;
+    if (slip) {
+        const double complex vn = csqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        f = L / vn;
+    }
+    for (int k = 0; k < 3; k++) R[k] = lam[k] - f * v[k];
+}
+
+/* Exact stick at the unknowns u, into s->y (after hyst_trial, which sets
+ * the normal law's state): each closed exact contact's friction state the
+ * force lambda (the engine applies its part in the contact plane, or in
+ * slip the sliding limit L along it), its trial v = P_n (lambda - r D) and
+ * its mode into d->inter_slip: stick while |v| is within the stick limit
+ * L_s = Sfric + mu_s F_n (the contact sticking at the substep's start; L
+ * when it slid there), else slip. The normal, D, L and L_s into s->ex_w.
+ * An open contact's state is zero. */
+static void ex_trial(rc_static *s, double t, const double *u)
+{
+    const rc_model *m = s->m;
+    rc_data *d = s->d;
+    if (!s->fr_ready) return;
+    for (int x = 0; x < s->nex; x++) {
+        const int i = s->ex_i[x];
+        const double *lam = u + s->n + s->nl + 3 * x;
+        double *ft = s->y + m->inter_eadr[i] + m->inter_fr[i].tidx, *w = s->ex_w + 10 * x;
+        if (d->inter_mode[i] != RC_MODE_CLOSED) {
+            ft[0] = ft[1] = ft[2] = 0.0;
+            d->inter_slip[i] = 0;
+            continue;
+        }
+        memcpy(ft, lam, 3 * sizeof(double));
+        double pa[3], pb[3];
+        fric_points(s, i, u, pa, pb, NULL, NULL);
+        rc_inter_report r, r0;
+        rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], 0, t, s->y, &r);
+        /* the stick limit: the model's own exact law in stick */
+        rc_inter_report_eval(s->m0, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], 0, t, s->y, &r0);
+        for (int k = 0; k < 3; k++) {
+            w[k] = r.normal[k];
+            w[3 + k] = pa[k] - pb[k];
+        }
+        w[6] = fmax(r.flim, 0.0);
+        w[7] = fmax(r0.flim, 0.0);
+        w[8] = ex_held(s, x, w);
+        double sg[3], sn = 0.0, vv = 0.0;
+        for (int k = 0; k < 3; k++) sg[k] = lam[k] - s->ex_r[x] * w[3 + k];
+        for (int k = 0; k < 3; k++) sn += sg[k] * w[k];
+        for (int k = 0; k < 3; k++) vv += (sg[k] - sn * w[k]) * (sg[k] - sn * w[k]);
+        const double lim = s->ex_slip0[i] ? w[6] : w[7];
+        d->inter_slip[i] = sqrt(vv) > lim + s->fr_band;
+    }
+}
+
+/* Exact stick's rows of the residual into r (after ex_trial): an open
+ * contact's lambda = 0. */
+static void ex_residual(const rc_static *s, const double *u, double *r)
+{
+    for (int x = 0; x < s->nex; x++) {
+        const int i = s->ex_i[x], c0 = s->n + s->nl + 3 * x;
+        const double *w = s->ex_w + 10 * x;
+        if (!s->fr_ready || s->d->inter_mode[i] != RC_MODE_CLOSED) {
+            for (int k = 0; k < 3; k++) r[c0 + k] = u[c0 + k];
+            continue;
+        }
+        double complex lam[3], n[3], D[3], R[3];
+        for (int k = 0; k < 3; k++) {
+            lam[k] = u[c0 + k];
+            n[k] = w[k];
+            D[k] = w[3 + k];
+        }
+        ex_row(lam, n, D, w[6], s->ex_r[x], s->d->inter_slip[i], R);
+        const int hm = (int)w[8];
+        for (int k = 0; k < 3; k++) r[c0 + k] = hm & (1 << k) ? u[c0 + k] : creal(R[k]);
+    }
+}
+
+/* Exact stick's part of the stiffness at u (after rc_assemble_jac, with
+ * dq the quaternions' dq/dtheta of state_at): the bodies' rows in lambda's
+ * columns (the engine's columns of the friction state, times the mass and
+ * the inertia: the state is lambda), and its rows in every column by
+ * complex step of ex_row along the derivatives of its inputs: in lambda
+ * itself; in a body's unknown, the normal's and the sliding limit's (the
+ * engine's, rc_inter_report_rate along the state's direction: the
+ * position, or the quaternion's dq/dtheta, and a hysteresis state on its
+ * Stiff line, Stiff dP/du) and D's ([I, dp/dtheta] of the material point,
+ * with its side's sign). */
+static int ex_stiffness(rc_static *s, double t, const double *u, const double *dq)
+{
+    const rc_model *m = s->m;
+    rc_data *d = s->d;
+    const double h = 1e-30;
+    for (int x = 0; x < s->nex; x++) {
+        const int i = s->ex_i[x], c0 = s->n + s->nl + 3 * x, closed = s->fr_ready && d->inter_mode[i] == RC_MODE_CLOSED;
+        const int slip = d->inter_slip[i], e0 = m->inter_eadr[i];
+        const double *w = s->ex_w + 10 * x;
+        const int qs[2] = {body_slot(s, m->inter_ba[i]), body_slot(s, m->inter_bb[i])};
+        /* lambda's columns: the bodies' rows, then its own */
+        for (int k = 0; k < 3; k++) {
+            const int col = c0 + k, j = e0 + m->inter_fr[i].tidx + k;
+            double A[2][6] = {{0}};
+            for (int64_t p = m->jac_colptr[j]; p < m->jac_colptr[j + 1]; p++) {
+                int kr;
+                const int rs = state_body(s, (int)m->jac_rowind[p], &kr);
+                if (rs < 0 || kr < 7) continue;
+                for (int e = 0; e < 2; e++)
+                    if (rs == qs[e] && !(e == 1 && qs[1] == qs[0])) A[e][kr - 7] += s->jv[p];
+            }
+            for (int64_t p = s->colptr[col]; p < s->colptr[col + 1]; p++) {
+                const int row = (int)s->rowind[p];
+                if (row >= c0) {
+                    /* its own rows */
+                    const int rr = row - c0;
+                    if (!closed) {
+                        s->kval[p] = rr == k ? 1.0 : 0.0;
+                        continue;
+                    }
+                    double complex lam[3], n[3], D[3], R[3];
+                    for (int kk = 0; kk < 3; kk++) {
+                        lam[kk] = u[c0 + kk] + (kk == k ? h * I : 0.0);
+                        n[kk] = w[kk];
+                        D[kk] = w[3 + kk];
+                    }
+                    ex_row(lam, n, D, w[6], s->ex_r[x], slip, R);
+                    s->kval[p] = (int)w[8] & (1 << rr) ? (rr == k ? 1.0 : 0.0) : cimag(R[rr]) / h;
+                    continue;
+                }
+                const int q = row / 6, c = row % 6, e = q == qs[0] ? 0 : 1, b = s->fb[q];
+                const double *J = m->body_J + 9 * b, *a = A[e];
+                s->kval[p] = s->held[row] ? 0.0
+                             : c < 3      ? m->body_mass[b] * a[c]
+                                          : J[3 * (c - 3)] * a[3] + J[3 * (c - 3) + 1] * a[4] + J[3 * (c - 3) + 2] * a[5];
+            }
+        }
+        /* its rows in the bodies' columns */
+        int hq[2] = {-1, -1};
+        double hg[2][6];
+        const int hy = closed && s->hy_on[i] && s->hy_el[i];
+        if (hy) pen_gradient(s, i, t, u, hq, hg);
+        double pa[3], pb[3], Dm[2][9];
+        if (closed) fric_points(s, i, u, pa, pb, Dm[0], Dm[1]);
+        for (int e = 0; e < 2; e++) {
+            if (qs[e] < 0 || (e == 1 && qs[1] == qs[0])) continue;
+            const int a = m->body_yadr[s->fb[qs[e]]];
+            for (int c = 0; c < 6; c++) {
+                const int64_t *pos = s->ex_pos + 36 * (size_t)x + 18 * e + 3 * c;
+                if (!closed) {
+                    for (int k = 0; k < 3; k++)
+                        if (pos[k] >= 0) s->kval[pos[k]] = 0.0;
+                    continue;
+                }
+                double *yd = s->ex_ydot;
+                if (c < 3) yd[a + c] = 1.0;
+                else
+                    for (int k = 0; k < 4; k++) yd[a + 3 + k] = dq[12 * qs[e] + 3 * k + (c - 3)];
+                if (hy) yd[e0 + m->inter_hidx[i]] = m->inter_stiff[i] * hg[e][c];
+                rc_inter_report dr;
+                rc_inter_report_rate(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], slip, s->y, yd, &dr);
+                for (int k = 0; k < RC_NB; k++) yd[a + k] = 0.0;
+                if (hy) yd[e0 + m->inter_hidx[i]] = 0.0;
+                const double sg = e ? -1.0 : 1.0;
+                double complex lam[3], n[3], D[3], R[3];
+                for (int k = 0; k < 3; k++) {
+                    const double dD = sg * (c < 3 ? (k == c ? 1.0 : 0.0) : Dm[e][3 * k + (c - 3)]);
+                    lam[k] = u[c0 + k];
+                    n[k] = w[k] + h * I * dr.normal[k];
+                    D[k] = w[3 + k] + h * I * dD;
+                }
+                ex_row(lam, n, D, w[6] + h * I * (w[6] > 0 ? dr.flim : 0.0), s->ex_r[x], slip, R);
+                for (int k = 0; k < 3; k++)
+                    if (pos[k] >= 0) s->kval[pos[k]] = (int)w[8] & (1 << k) ? 0.0 : cimag(R[k]) / h;
+            }
+        }
+    }
+    return 0;
+}
+
 /* The state of a converged solve at u into y: the positions and the
  * orientations, and each closed contact's friction state the force the
  * return mapping gives (the trial force, or the limit along it). */
@@ -1026,6 +1342,7 @@ static void commit_state(rc_static *s, double t, const double *u, double *y)
     hyst_trial(s, t);
     fric_trial(s, t, u);
     pf_trial(s, t, u);
+    ex_trial(s, t, u);
     for (int i = 0; i < m->ninter; i++) {
         if (!s->fr_on[i] || !s->fr_ready || d->inter_mode[i] != RC_MODE_CLOSED) continue;
         rc_inter_report r;
@@ -1419,6 +1736,7 @@ int rc_static_residual(rc_static *s, double t, const double *u, double *r)
     hyst_trial(s, t);
     fric_trial(s, t, u);
     pf_trial(s, t, u);
+    ex_trial(s, t, u);
     s->nfev++;
     if (rc_assemble_rhs(m, s->d, t, s->y, s->f)) return 1;
     for (int q = 0; q < s->nb; q++) {
@@ -1430,6 +1748,7 @@ int rc_static_residual(rc_static *s, double t, const double *u, double *r)
         }
     }
     jnt_residual(s, u, r);
+    ex_residual(s, u, r);
     for (int i = 0; i < s->nx; i++) {
         if (s->held[i]) r[i] = s->fs[i] / s->us[i] * (u[i] - s->imp_u[i]);
         if (!isfinite(r[i])) return 1;
@@ -1447,6 +1766,7 @@ static int stiffness(rc_static *s, double t, const double *u)
     hyst_trial(s, t);
     fric_trial(s, t, u);
     pf_trial(s, t, u);
+    ex_trial(s, t, u);
     s->njev++;
     if (rc_assemble_jac(m, s->d, t, s->y, s->jv) || fric_stiffness(s, u) || law_stiffness(s, t, u) ||
         pf_stiffness(s, u)) {
@@ -1476,6 +1796,10 @@ static int stiffness(rc_static *s, double t, const double *u)
                 if (s->held[row]) out[r] = row == col ? s->fs[row] / s->us[row] : 0.0;
             }
         }
+    }
+    if (ex_stiffness(s, t, u, dq)) {
+        free(dq);
+        return 1;
     }
     free(dq);
     if (jnt_stiffness(s, u)) return 1;
@@ -1623,7 +1947,7 @@ static int sliding_inter(const rc_static *s)
     const rc_data *d = s->d;
     for (int i = 0; i < m->ninter; i++) {
         if (d->inter_mode[i] != RC_MODE_CLOSED) continue;
-        if (s->fr_on[i] && d->inter_slip[i]) return i;
+        if ((s->fr_on[i] || s->ex_on[i]) && d->inter_slip[i]) return i;
         for (int j = 0; s->pf_on[i] && j < m->inter_npt[i]; j++)
             if (d->pt_slip[m->inter_pbase[i] + j]) return i;
     }
@@ -1854,6 +2178,17 @@ static st_out kin_solve(st_kin *k, st_run *c, double t)
     N_VConst(0.0, k->u);
     for (int i = 0; i < c->s->nr; i++) /* a soft-held component at its value */
         if (c->s->held[c->s->full[i]]) NV_Ith_S(k->u, i) = c->s->imp_u[c->s->full[i]];
+    /* exact stick: lambda from the start's friction state (the last
+     * equilibrium's force; 0 for an open contact) */
+    for (int i = 0; i < c->s->nr; i++) {
+        const rc_static *s = c->s;
+        const int f = s->full[i], x = (f - s->n - s->nl) / 3;
+        if (f < s->n + s->nl) continue;
+        const int ii = s->ex_i[x];
+        NV_Ith_S(k->u, i) = s->d->inter_mode[ii] == RC_MODE_CLOSED
+                                ? s->ys[s->m->inter_eadr[ii] + s->m->inter_fr[ii].tidx + (f - s->n - s->nl) % 3]
+                                : 0.0;
+    }
     /* the joints' multipliers: those that balance the loads at the start
      * best, else the last equilibrium's */
     if (c->s->nl > 0) {
@@ -1862,7 +2197,7 @@ static st_out kin_solve(st_kin *k, st_run *c, double t)
         for (int i = 0; i < s->nl; i++) l0[i] = c->lam0 ? c->lam0[i] : 0.0;
         jnt_start_multipliers(s, t, uf, l0);
         for (int i = 0; i < s->nr; i++)
-            if (s->full[i] >= s->n) NV_Ith_S(k->u, i) = l0[s->full[i] - s->n];
+            if (s->full[i] >= s->n && s->full[i] < s->n + s->nl) NV_Ith_S(k->u, i) = l0[s->full[i] - s->n];
     }
     if (c->s->nr == 0) {
         o.ok = 1;
@@ -1956,7 +2291,7 @@ static void energy_step(rc_static *s, double t, const double *u, double *y)
         const double p1 = closed ? fmax(r.pl, 0.0) : 0.0, f1 = closed ? r.fload : 0.0;
         y[m->inter_eadr[i]] += 0.5 * (s->en_f0[i] + f1) * (p1 - s->en_p0[i]);
         const rc_fric *fr = &m->inter_fr[i];
-        if (s->fr_on[i] && closed) {
+        if ((s->fr_on[i] || s->ex_on[i]) && closed) {
             double pa[3], pb[3];
             fric_points(s, i, u, pa, pb, NULL, NULL);
             for (int k = 0; k < 3; k++) y[m->inter_eadr[i] + fr->widx] -= 0.5 * (s->fr_t0[3 * i + k] + r.ft[k]) * (pa[k] - pb[k]);
@@ -2076,7 +2411,7 @@ static int jnt_unstable(rc_static *s, double t, const double *y, double *ratio)
     if (s->nl == 0) return 0;
     for (int i = 0; i < m->ninter; i++)
         if (s->d->inter_mode[i] == RC_MODE_CLOSED &&
-            ((s->fr_on[i] && s->d->inter_slip[i]) || (s->pf_on[i] && point_slip(m, s->d, i))))
+            ((s->fr_on[i] && s->d->inter_slip[i]) || (s->pf_on[i] && point_slip(m, s->d, i)) || s->ex_on[i]))
             return 0;
     int nb = 0;
     for (int i = 0; i < s->n; i++) nb += !s->held[i] && s->jbody[i / 6];
@@ -2294,10 +2629,12 @@ static void fric_util(const rc_static *s, const rc_data *d, double t, const doub
     const rc_model *m = s->m;
     for (int i = 0; i < m->ninter; i++) {
         u[i] = NAN;
-        if ((!s->fr_on[i] && !s->pf_on[i]) || d->inter_mode[i] != RC_MODE_CLOSED) continue;
+        if ((!s->fr_on[i] && !s->pf_on[i] && !s->ex_on[i]) || d->inter_mode[i] != RC_MODE_CLOSED) continue;
         if (s->pf_on[i] ? point_slip(m, d, i) : d->inter_slip[i]) continue;
         rc_inter_report r;
-        rc_inter_report_eval_d(m, d, i, t, y, &r);
+        /* exact stick: the model's own law in stick (the force lambda
+         * against the stick limit L_s) */
+        rc_inter_report_eval_d(s->ex_on[i] ? s->m0 : m, d, i, t, y, &r);
         const double ft = sqrt(r.ft[0] * r.ft[0] + r.ft[1] * r.ft[1] + r.ft[2] * r.ft[2]);
         if (r.flim > 0.0 && isfinite(ft)) u[i] = ft / r.flim;
     }
@@ -2480,17 +2817,36 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                      * the substep to find the onset) */
                     slide = -1;
                     for (int i = 0; i < m->ninter && slide < 0; i++) {
-                        if (s->fr_on[i] && d->inter_mode[i] == RC_MODE_CLOSED && d->inter_slip[i]) slide = i;
+                        if ((s->fr_on[i] || s->ex_on[i]) && d->inter_mode[i] == RC_MODE_CLOSED && d->inter_slip[i])
+                            slide = i;
                         for (int j = 0; s->pf_on[i] && d->inter_mode[i] == RC_MODE_CLOSED && j < m->inter_npt[i]; j++)
                             if (d->pt_slip[m->inter_pbase[i] + j]) slide = i;
                     }
                     if (slide >= 0) {
                         rc_inter_report r;
-                        rc_inter_report_eval(s->m, slide, RC_MODE_CLOSED, d->inter_branch[slide],
-                                             d->inter_track[slide], 1, tn, s->y, &r); /* the law at rest */
+                        /* the law at rest (exact stick: its stick limit, the
+                         * model's own law in stick) */
+                        rc_inter_report_eval(s->ex_on[slide] ? s->m0 : s->m, slide, RC_MODE_CLOSED,
+                                             d->inter_branch[slide], d->inter_track[slide], !s->ex_on[slide], tn, s->y,
+                                             &r);
                         slide_lim = r.flim;
                         snprintf(reason, sizeof reason, "a contact slides");
                         break;
+                    }
+                    if (o.singular_col >= s->n + s->nl && o.singular_col < s->nx) {
+                        /* exact stick whose rows hold a motion that a
+                         * support already holds (or another contact's) */
+                        const int ii = s->ex_i[(o.singular_col - s->n - s->nl) / 3];
+                        snprintf(reason, sizeof reason,
+                                 "static analysis: no equilibrium at the load time t = %.9g s: the stiffness with the "
+                                 "exact-stick rows is singular at " RC_LOCFMT "card %s: its sticking contact holds a "
+                                 "tangential motion that nothing else leaves free (a /BCS or /IMPVEL on its bodies, or "
+                                 "another exact contact, already holds it); use the stick spring (Istick 0, /FRICTION "
+                                 "Iform 2) there, or free that motion",
+                                 tn, RC_LOC(m->inter_loc[ii]), m->inter_name[ii]);
+                        fail_reason = reason;
+                        st = RC_SET(err, RC_ESOLVER, "%s", reason);
+                        goto done;
                     }
                     if (o.singular_col >= s->n && o.singular_col < s->nx) {
                         /* a joint's row that the others repeat (or a
@@ -2570,13 +2926,14 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                 }
             }
             if (ok) {
+                memset(s->ex_force, 0, (size_t)m->ninter);
                 /* the energies over the substep (the last commit's unknowns) */
                 energy_step(s, tn, s->ufull, y);
                 /* friction: the contacts that changed between stick and slip
                  * (with friction per point: between no point sliding and
                  * some sliding) */
                 for (int i = 0; i < m->ninter; i++) {
-                    if ((!s->fr_on[i] && !s->pf_on[i]) || d->inter_mode[i] != RC_MODE_CLOSED) continue;
+                    if ((!s->fr_on[i] && !s->pf_on[i] && !s->ex_on[i]) || d->inter_mode[i] != RC_MODE_CLOSED) continue;
                     const int now = s->pf_on[i] ? point_slip(m, d, i) : d->inter_slip[i];
                     const int was = msave[i] == RC_MODE_CLOSED && (s->pf_on[i] ? pfsave[i] : slsave[i]);
                     if (was == now) continue;
@@ -2624,6 +2981,21 @@ static rc_status static_solve(const rc_model *m, const rc_run_options *opt, rc_p
                 memcpy(d->cpl->lmode, cplsave, (size_t)m->cpl->n * sizeof(int));
                 if (ncm > (size_t)m->cpl->n)
                     memcpy(d->cpl->fmode, cplsave + m->cpl->n, (ncm - (size_t)m->cpl->n) * sizeof(int));
+            }
+            if ((first || dtau * 0.5 < dmin) && slide >= 0 && s->ex_on[slide] && !s->ex_force[slide]) {
+                /* exact stick whose static limit L_s lies above its sliding
+                 * limit L: past L_s (at the smallest substep) the force
+                 * drops to L, and the equilibrium in slip (something else
+                 * holding the body) lies a finite slide away, across the
+                 * drop, which Newton's line search does not cross; solved
+                 * again as sliding from the substep's start (the test
+                 * against L, the force L: continuous) */
+                int x = 0;
+                while (x + 1 < s->nex && s->ex_i[x] != slide) x++;
+                if (s->ex_w[10 * x + 7] > s->ex_w[10 * x + 6] * (1.0 + 1e-12)) {
+                    s->ex_force[slide] = 1;
+                    continue;
+                }
             }
             if ((first || dtau * 0.5 < dmin) && slide >= 0) {
                 snprintf(reason, sizeof reason,

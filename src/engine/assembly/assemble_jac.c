@@ -623,6 +623,8 @@ void rc_inter_report_rate(const rc_model *m, int i, int mode, int branch, int tr
     dr->fu = rc_cs_deriv(o.fu);
     dr->fh = rc_cs_deriv(o.fh);
     dr->offset = rc_cs_deriv(o.off);
+    dr->flim = rc_cs_deriv(o.flim);
+    for (int k = 0; k < 3; k++) dr->normal[k] = rc_cs_deriv(o.g.n[k]);
 }
 
 /* Contact point, unit normal (from a to b) and relative velocity of the

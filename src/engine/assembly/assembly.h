@@ -130,8 +130,9 @@ double rc_friction_mu(const rc_model *m, int i, int dir, double p, double v, dou
 
 /* Time derivatives of the reported quantities of interface i (in the given
  * modes) along the state rate ydot: p, vn (the normal acceleration), p_raw,
- * vn_raw, fload, fdamp, fn, fl, fu, fh, offset; other fields 0. Exact, by
- * complex step (assemble_jac.c). */
+ * vn_raw, fload, fdamp, fn, fl, fu, fh, offset, flim (the friction limit)
+ * and normal (the unit normal's); other fields 0. Exact, by complex step
+ * (assemble_jac.c). */
 void rc_inter_report_rate(const rc_model *m, int i, int mode, int branch, int track, int slip, const double *y,
                           const double *ydot, rc_inter_report *dr);
 

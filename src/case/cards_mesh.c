@@ -186,9 +186,15 @@ static rc_status rc_no_rupture(rc_reader *rd, const rc_block *b, const rc_loc *l
  * Skew_ID (41-50), sens_ID (51-60), Isflag, Ifail, Ifail2, Iequil (10
  * each); then per direction X, Y, Z, RX, RY, RZ three lines: Ki Ci Ai Bi Di
  * (20 each); fct_ID1i Hi fct_ID2i fct_ID3i fct_ID4i (10 each), blank,
- * dmin_i dmax_i (20 each); Fi Ei Ascalei Hscalei (20 each). The linear
- * stiffnesses and dampings are read; curves, hardening, rupture and the
- * sensor are not supported yet. */
+ * dmin_i dmax_i (20 each); Fi Ei Ascalei Hscalei (20 each).
+ * /PROP/SPR_BEAM/prop_ID (/PROP/TYPE13): the same but line 1 Mass, I,
+ * Skew_ID, sens_ID, Isflag, Ifail, Ileng, Ifail2; after the 18 direction
+ * lines, V0 W0 (20 each) Fcut (20) Fsmooth (10), then the six failure
+ * lines c_i n_i alpha_i beta_i (20 each), optional.
+ * The linear stiffnesses and dampings are read; curves, hardening,
+ * rupture, the sensor and per-length input are not supported yet; the
+ * rate-filter and failure-criterion fields, which act only with them, are
+ * read and not used. */
 static rc_status rc_card_prop_gene(rc_reader *rd, const rc_block *b, rc_case_prop *p)
 {
     static const char *const fct = "(a nonlinear or rate-dependent general spring: ricochet reads the linear "
@@ -204,12 +210,25 @@ static rc_status rc_card_prop_gene(rc_reader *rd, const rc_block *b, rc_case_pro
     static const char *const hsc[6] = {"Hscale1", "Hscale2", "Hscale3", "Hscale4", "Hscale5", "Hscale6"};
     rc_status st;
     int nd;
-    if ((st = rc_card_lines(rd, b, p->title, 19, 19,
-                            "Mass I Skew_ID sens_ID Isflag Ifail Ifail2 Iequil, then for each of X, Y, Z, RX, RY, "
-                            "RZ the three lines Ki Ci Ai Bi Di; fct_ID1i Hi fct_ID2i fct_ID3i fct_ID4i dmini "
-                            "dmaxi; Fi Ei Ascalei Hscalei",
+    const int beam = p->sprtype == 13;
+    if ((st = rc_card_lines(rd, b, p->title, 19, beam ? 26 : 19,
+                            beam ? "Mass I Skew_ID sens_ID Isflag Ifail Ileng Ifail2, then for each of X, Y, Z, RX, RY, "
+                                   "RZ the three lines Ki Ci Ai Bi Di; fct_ID1i Hi fct_ID2i fct_ID3i fct_ID4i dmini "
+                                   "dmaxi; Fi Ei Ascalei Hscalei; then V0 W0 Fcut Fsmooth and six lines ci ni alphai "
+                                   "betai (optional)"
+                                 : "Mass I Skew_ID sens_ID Isflag Ifail Ifail2 Iequil, then for each of X, Y, Z, RX, RY, "
+                                   "RZ the three lines Ki Ci Ai Bi Di; fct_ID1i Hi fct_ID2i fct_ID3i fct_ID4i dmini "
+                                   "dmaxi; Fi Ei Ascalei Hscalei",
                             &nd)))
         return st;
+    rc_field l13[] = {RC_F_REALD("Mass", &p->mass, 0, RC_FF_NONNEG, RC_D_M),
+                      RC_F_REALD("I", &p->inertia, 0, RC_FF_NONNEG, RC_D_J),
+                      RC_F_INT("Skew_ID", &p->skew_id, 0, RC_FF_NONNEG),
+                      RC_F_INTN("sens_ID", NULL, RC_FF_ONLY0, "(a spring switched on or off by a sensor)"),
+                      RC_F_INT("Isflag", NULL, 0, 0),
+                      RC_F_INT("Ifail", NULL, 0, 0),
+                      RC_F_SET("Ileng", NULL, 0, 0, 0x3u, 0x1u, "(input per unit length)"),
+                      RC_F_INT("Ifail2", NULL, 0, 0)};
     rc_field l1[] = {RC_F_REALD("Mass", &p->mass, 0, RC_FF_NONNEG, RC_D_M),
                      RC_F_REALD("I", &p->inertia, 0, RC_FF_NONNEG, RC_D_J),
                      RC_F_INT("Skew_ID", &p->skew_id, 0, RC_FF_NONNEG),
@@ -219,7 +238,9 @@ static rc_status rc_card_prop_gene(rc_reader *rd, const rc_block *b, rc_case_pro
                      RC_F_INT("Ifail2", NULL, 0, 0),
                      RC_F_SET("Iequil", NULL, 0, 0, 0x3u, 0x1u,
                               "(the moment equilibrium of a spring of non-zero length)")};
-    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
+    if ((st = beam ? rc_parse_line(rd, b, &b->lines[1], l13, RC_NF(l13))
+                   : rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1))))
+        return st;
     p->thick_loc = b->lines[1].loc;
     for (int i = 0; i < 6; i++) {
         const int rot = i >= 3;
@@ -246,6 +267,19 @@ static rc_status rc_card_prop_gene(rc_reader *rd, const rc_block *b, rc_case_pro
         if ((st = rc_no_rupture(rd, b, &lb->loc, &fb[7], dmax, 0))) return st;
         if ((st = rc_parse_line(rd, b, lc, fc, RC_NF(fc)))) return st;
     }
+    if (beam && nd >= 20) { /* the rate filter: acts on the curves only */
+        rc_field fr[] = {RC_F_REALD("V0", NULL, 0, 0, RC_D_NONE), RC_F_REALD("W0", NULL, 0, 0, RC_D_NONE),
+                         RC_F_REALD("Fcut", NULL, 0, 0, RC_D_NONE), RC_F_INT("Fsmooth", NULL, 0, 0)};
+        if ((st = rc_parse_line(rd, b, &b->lines[20], fr, RC_NF(fr)))) return st;
+    }
+    for (int i = 0; beam && i < 6 && 21 + i <= nd; i++) { /* failure criteria: with rupture only */
+        static const char *const fn[6][4] = {{"c1", "n1", "alpha1", "beta1"}, {"c2", "n2", "alpha2", "beta2"},
+                                             {"c3", "n3", "alpha3", "beta3"}, {"c4", "n4", "alpha4", "beta4"},
+                                             {"c5", "n5", "alpha5", "beta5"}, {"c6", "n6", "alpha6", "beta6"}};
+        rc_field ff[] = {RC_F_REALD(fn[i][0], NULL, 0, 0, RC_D_NONE), RC_F_REALD(fn[i][1], NULL, 0, 0, RC_D_NONE),
+                         RC_F_REALD(fn[i][2], NULL, 0, 0, RC_D_NONE), RC_F_REALD(fn[i][3], NULL, 0, 0, RC_D_NONE)};
+        if ((st = rc_parse_line(rd, b, &b->lines[21 + i], ff, RC_NF(ff)))) return st;
+    }
     return rc_note_id(rd, RC_IDK_PROP, p->id, &p->loc, b->hdr->text);
 }
 
@@ -254,8 +288,7 @@ static rc_status rc_card_prop_gene(rc_reader *rd, const rc_block *b, rc_case_pro
  * dmin dmax; F E Ascale Hscale (the last two lines optional). The linear
  * spring-damper F = K dl + C dl/dt is read; the curves, rate effects,
  * rupture, sensor and per-length input are not supported yet.
- * /PROP/SPR_GENE (TYPE8): rc_card_prop_gene; /PROP/SPR_BEAM (TYPE13): kept,
- * not read. */
+ * /PROP/SPR_GENE (TYPE8) and /PROP/SPR_BEAM (TYPE13): rc_card_prop_gene. */
 static rc_status rc_card_prop_spring(rc_reader *rd, const rc_block *b, int type)
 {
     static const char *const fct = "(a nonlinear or rate-dependent spring: ricochet reads the linear "
@@ -272,11 +305,7 @@ static rc_status rc_card_prop_spring(rc_reader *rd, const rc_block *b, int type)
     p->kind = RC_PROP_SPRING;
     p->sprtype = type;
     p->loc = b->hdr->loc;
-    if (type == 8) return rc_card_prop_gene(rd, b, p);
-    if (type != 4) {
-        if ((st = rc_var_lines(rd, b, p->title, "the property's lines", &nd))) return st;
-        return rc_note_id(rd, RC_IDK_PROP, p->id, &p->loc, b->hdr->text);
-    }
+    if (type == 8 || type == 13) return rc_card_prop_gene(rd, b, p);
     if ((st = rc_card_lines(rd, b, p->title, 2, 4,
                             "Mass sens_ID Isflag Ileng, K C A B D[, fct_ID1 H fct_ID2 fct_ID3 fct_ID4 dmin "
                             "dmax[, F E Ascale Hscale]]",

@@ -53,9 +53,10 @@ typedef enum {
     RC_KEFF_POLY = 2,  /* k_eff = a + b (x - x0) + c (x - x0)^2             */
     RC_KEFF_FORCE = 3, /* tabulated elastic force f_e(x)                   */
     RC_KEFF_STIFF = 4, /* tabulated stiffness k(x), integrated              */
-    RC_KEFF_GENE = 5   /* a /PROP/TYPE8 general spring: six linear
-                          stiffnesses and dampings in a fixed frame
-                          (docs/theory.md 8.1)                             */
+    RC_KEFF_GENE = 5   /* a /PROP/TYPE8 general spring or /PROP/TYPE13
+                          beam spring: six linear stiffnesses and
+                          dampings in a frame fixed in space or turning
+                          with one end's body (docs/theory.md 8.1)        */
 } rc_keff_form;
 
 /* Horizontal spans below this fraction of L_eq are treated as vertical
@@ -90,6 +91,9 @@ typedef struct rc_couplings {
     double *gk;          /* [n*12] K1..K6 [N/m, N m/rad], C1..C6 [N s/m,
                             N m s/rad]                                       */
     double *gd0;         /* [n*3] p2 - p1 at t = 0, global [m]               */
+    int *gfb;            /* [n] the end whose body carries the frame: 0 none
+                            (fixed in space), 1 or 2; the frame in lfrm is
+                            then its axes at t = 0 (body frame = global)   */
     /* catenary */
     double *lambda0;     /* [n] mass per unstretched length [kg/m]            */
     double *leq;         /* [n] unstretched length [m]                        */

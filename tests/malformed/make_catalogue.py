@@ -478,8 +478,8 @@ TL('power_sensor_missing', PW, 'field Isensor', at(PW, 2, 61, 70, '9'))
 SPR_PART = ['/PART/9', 'springs', '         9         0']
 SPR_ELEM = ['/SPRING/9', '        31         1         2']
 PROP4 = ['/PROP/TYPE4/9', 'spring', '                   0', '                 100                   1']
-TL('spring_prop_type13', '/PART/9', 'field prop_ID',
-   before_end(SPR_PART + ['/PROP/TYPE13/9', 'beam spring', '                   0'] + SPR_ELEM, expect=2))
+TL('beam_lines_missing', '/PROP/TYPE13/9', 'expected 19 data lines',
+   before_end(SPR_PART + ['/PROP/TYPE13/9', 'beam spring', '                   0'] + SPR_ELEM, expect=3))
 TL('spring_prop_missing', '/PART/9', 'field prop_ID', before_end(SPR_PART + SPR_ELEM, expect=2))
 TL('spring_node3', '/SPRING/9', 'field node_ID3',
    before_end(SPR_PART + PROP4 + ['/SPRING/9', '        31         1         2         3'], expect=8))
@@ -723,6 +723,24 @@ TL('gene_k_negative', '/PROP/TYPE8/9', 'field K3', before_end(GENE(edit=(6, '   
 TL('gene_skew_missing', '/PROP/TYPE8/9', 'field Skew_ID', before_end(GENE(l1='%20s%20s%10s' % ('0', '0', '7')), expect=5))
 TL('spring_skew_type4', '/SPRING/9', 'field Skew_ID',
    before_end(SPR_PART + PROP4 + ['/SPRING/9', '        31         1         2' + ' ' * 40 + '%10s' % '7'], expect=8))
+
+
+# ---- /PROP/TYPE13 (SPR_BEAM): line 1 Mass I Skew_ID sens_ID Isflag Ifail
+# Ileng Ifail2, the 18 direction lines of TYPE8, then optional lines
+def PROP13(l1='                   0', edit=None):
+    lines = PROP8(l1, edit)
+    lines[0] = '/PROP/TYPE13/9'
+    lines[1] = 'beam spring'
+    return lines
+
+
+TL('beam_ileng', '/PROP/TYPE13/9', 'field Ileng',
+   before_end(SPR_PART + PROP13(l1='%20s%20s%40s%10s' % ('0', '0', '', '1')) + SPR_ELEM, expect=5))
+TL('beam_curve', '/PROP/TYPE13/9', 'field fct_ID15',
+   before_end(SPR_PART + PROP13(edit=(13, '         4')) + SPR_ELEM, expect=19))
+TL('spring_skew_mov_bodies', '/SPRING/9', 'field Skew_ID',
+   before_end(SPR_PART + ['/SKEW/MOV/7', 'moving', '         1         2         3'] + PROP8() +
+              ['/SPRING/9', '        31         1         2' + ' ' * 40 + '%10s' % '7'], expect=28))
 
 
 def write_all():

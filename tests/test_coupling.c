@@ -921,6 +921,79 @@ static void test_coupling_beam_energy_ledger_closes(void)
     rc_model_free(m);
 }
 
+/* Elastic curves (fct_ID1i): BEAM_DECK's TYPE8 property 4 with a
+ * stiffening curve in X (A 2 N, Ascale 0.05 m), a softening one about Y
+ * (A 0.3 N m, Ascale 0.2 rad), and TYPE13's curve in Z (A 1 N, Ascale 1). */
+#define CURVE_DECK                                                                                            \
+    "/NODE\n1, 0.31, -0.17, 0.23\n2, 1.41, 0.27, -0.12\n3, 0.1, 0.4, -0.3\n5, 0.52, 0.11, 0.37\n"            \
+    "6, 1.2, 0.5, 0.1\n7, 1.5, -0.2, 0.4\n9, 2.2, -0.4, 0.9\n"                                                \
+    "/GRNOD/NODE/4\nsecondary\n3\n5\n/GRNOD/NODE/8\nsecondary two\n6\n7\n"                                     \
+    "/RBODY/1\nbody one\n1,,,,1.3,4\n0.021,0.017,0.029\n0.0013,-0.0022,0.0007\n"                               \
+    "/RBODY/2\nbody two\n2,,,,0.7,8\n0.011,0.013,0.009\n0,0,0\n/RUN\n0.5,0.01\n"                               \
+    "/SKEW/MOV/6\non body two\n2,6,7,Y\n"                                                                  \
+    "/FUNCT/11\nstiffening\n-3,-60\n-1,-4\n0,0\n1,4\n3,60\n"                                                 \
+    "/FUNCT/12\nsoftening\n-2,-1.5\n-1,-1\n0,0\n1,1\n2,1.5\n"                                                \
+    "/FUNCT/13\nlinear\n-1,-150\n1,150\n"                                                                    \
+    "/PART/7\nbeam springs\n3\n/PROP/TYPE13/3\nt\n0.02,0.001\n"                                              \
+    "130,1.1\n0\n1\n170,0.9\n0\n1\n210,1.7\n13\n1\n"                                                         \
+    "3.1,0.013\n0\n1\n4.3,0.021\n0\n1\n2.7,0.017\n0\n1\n"                                                    \
+    "/SPRING/7\n31,1,2\n32,9,1\n"                                                                          \
+    "/PART/8\ngeneral springs\n4\n/PROP/TYPE8/4\nt\n0,0,6\n"                                                 \
+    "90,0.7,2\n11\n1,0,0.05\n150,0.5\n0\n1\n60,1.2\n0\n1\n"                                                  \
+    "2.1,0.011\n0\n1\n1.3,0.023,0.3\n12\n1,0,0.2\n3.7,0.007\n0\n1\n"                                         \
+    "/SPRING/8\n41,1,2\n43,9,2\n"
+
+static void test_coupling_curve_read(void)
+{
+    rc_case *c = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    ENSURE(rc_case_load(deck(CURVE_DECK), &c, &e) == RC_OK);
+    if (!c) { fprintf(stderr, "  %s\n", e.msg); return; }
+    const rc_case_prop *q = &c->mesh->prop[1];
+    ENSURE(q->sprtype == 8 && q->fct6[0] == 11 && q->fct6[4] == 12 && q->fct6[1] == 0);
+    ENSURE(q->a6[0] == 2 && q->ascale6[0] == 0.05 && q->a6[4] == 0.3 && q->ascale6[4] == 0.2);
+    ENSURE(q->a6[1] == 1 && q->ascale6[1] == 1); /* the defaults */
+    rc_case_free(c);
+    rc_model *m = compile_deck(CURVE_DECK);
+    ENSURE(m && m->cpl->n == 4);
+    if (m && m->cpl->n == 4) {
+        const rc_couplings *p = m->cpl;
+        ENSURE(p->gtab[0] == -1 && p->gtab[2] >= 0 && p->gtab[12] >= 0 && p->gtab[12 + 4] >= 0);
+        ENSURE(p->gtab[12 + 1] == -1 && p->gsc[24] == 2 && p->gsc[24 + 6] == 0.05 && p->gsc[24 + 10] == 0.2);
+    }
+    rc_model_free(m);
+    char text[sizeof CURVE_DECK + 64];
+    snprintf(text, sizeof text, "%s", CURVE_DECK);
+    char *at = strstr(text, "2.1,0.011\n0\n");
+    if (at) at[10] = '7'; /* fct_ID14 = 7: no such function */
+    EXPECT_ERROR(text, 1, 0, "card /PROP/TYPE8/4", "field fct_ID14", "no such function");
+}
+
+static void test_coupling_curve_jacobian_matches_finite_differences(void)
+{
+    jacobian_vs_fd(CURVE_DECK, "spring curves");
+}
+
+/* The curves' energy: W_el is the work of the curves' forces and moments,
+ * the ledger closes. */
+static void test_coupling_curve_energy_ledger_closes(void)
+{
+    char text[sizeof CURVE_DECK + 256];
+    snprintf(text, sizeof text, "%s/INIVEL/ROT/1\nspin\n0.3,-0.2,0.5,0,0\n/INIVEL/TRA/2\nv\n0.1,0.05,-0.2,0,0\n"
+             "/SOLVER\n1,5,100000,1e-10,0,0\n1e-12,1e-9,1e-10,1e-10\n1e-12\n", CURVE_DECK);
+    rc_model *m = compile_deck(text);
+    ENSURE(m != NULL);
+    if (!m) return;
+    rc_run_options opt = {0};
+    rc_stats st;
+    rc_error e;
+    ENSURE(rc_run(m, &opt, &st, &e) == RC_OK);
+    printf("    spring curves: energy residual after 0.5 s %.2e J\n", st.energy_residual);
+    ENSURE(fabs(st.energy_residual) < 1e-8);
+    rc_model_free(m);
+}
+
 /* Energy ledger of a short run of the model (about 15 J exchanged between
  * motion, springs, dampers and lines): the couplings' stored and dissipated
  * energies close the balance, to a residual that shrinks with rtol. */
@@ -1003,6 +1076,9 @@ void suite_coupling(void)
     RUN_TEST(test_coupling_beam_errors);
     RUN_TEST(test_coupling_beam_jacobian_matches_finite_differences);
     RUN_TEST(test_coupling_beam_energy_ledger_closes);
+    RUN_TEST(test_coupling_curve_read);
+    RUN_TEST(test_coupling_curve_jacobian_matches_finite_differences);
+    RUN_TEST(test_coupling_curve_energy_ledger_closes);
     RUN_TEST(test_coupling_stiffness_integral);
     RUN_TEST(test_coupling_spring_forms);
     RUN_TEST(test_coupling_catenary_solutions);

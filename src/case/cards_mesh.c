@@ -191,14 +191,17 @@ static rc_status rc_no_rupture(rc_reader *rd, const rc_block *b, const rc_loc *l
  * Skew_ID, sens_ID, Isflag, Ifail, Ileng, Ifail2; after the 18 direction
  * lines, V0 W0 (20 each) Fcut (20) Fsmooth (10), then the six failure
  * lines c_i n_i alpha_i beta_i (20 each), optional.
- * The linear stiffnesses and dampings are read; curves, hardening,
- * rupture, the sensor and per-length input are not supported yet; the
+ * The linear stiffnesses and dampings are read, and the elastic curves
+ * fct_ID1i with their scales Ai, Ascalei (B_i 0); the rate and unloading
+ * curves, hardening, rupture, the sensor and per-length input are not
+ * supported yet; the
  * rate-filter and failure-criterion fields, which act only with them, are
  * read and not used. */
 static rc_status rc_card_prop_gene(rc_reader *rd, const rc_block *b, rc_case_prop *p)
 {
-    static const char *const fct = "(a nonlinear or rate-dependent general spring: ricochet reads the linear "
-                                   "law F_i = -K_i u_i - C_i du_i/dt per direction)";
+    static const char *const fct = "(a rate-dependent or unloading curve of a general spring: ricochet reads "
+                                   "the elastic law F_i = -K_i u_i, or -A_i f_i(u_i/Ascale_i) with fct_ID1i, and "
+                                   "the damping -C_i du_i/dt per direction)";
     static const char *const nm[6][14] = {
 #define RC_GENE_NAMES(i)                                                                                   \
     {"K" #i, "C" #i, "A" #i, "B" #i, "D" #i, "fct_ID1" #i, "H" #i, "fct_ID2" #i, "fct_ID3" #i, "fct_ID4" #i, \
@@ -245,13 +248,14 @@ static rc_status rc_card_prop_gene(rc_reader *rd, const rc_block *b, rc_case_pro
     for (int i = 0; i < 6; i++) {
         const int rot = i >= 3;
         const int dk = rot ? RC_DIM(1, 2, -2) : RC_D_K, dc = rot ? RC_DIM(1, 2, -1) : RC_D_C;
-        double dmin = 0, dmax = 0;
+        double dmin = 0, dmax = 0, bcoef = 0;
         const rc_line *la = &b->lines[2 + 3 * i], *lb = &b->lines[3 + 3 * i], *lc = &b->lines[4 + 3 * i];
         rc_field fa[] = {RC_F_REALD(nm[i][0], &p->k6[i], 0, RC_FF_NONNEG, dk),
                          RC_F_REALD(nm[i][1], &p->c6[i], 0, RC_FF_NONNEG, dc),
-                         RC_F_REALD(nm[i][2], NULL, 0, 0, RC_D_NONE), RC_F_REALD(nm[i][3], NULL, 0, 0, RC_D_NONE),
+                         RC_F_REALD(nm[i][2], &p->a6[i], 1, RC_FF_ZDEF, rot ? RC_D_E : RC_D_F),
+                         RC_F_REALD(nm[i][3], &bcoef, 0, 0, RC_D_NONE),
                          RC_F_REALD(nm[i][4], NULL, 0, 0, RC_D_NONE)};
-        rc_field fb[] = {RC_F_INTN(nm[i][5], NULL, RC_FF_ONLY0, fct),
+        rc_field fb[] = {RC_F_INT(nm[i][5], &p->fct6[i], 0, RC_FF_NONNEG),
                          RC_F_SET(nm[i][6], NULL, 0, 0, 0x1FFu, 0x1u, "(hardening and unloading of a nonlinear spring)"),
                          RC_F_INTN(nm[i][7], NULL, RC_FF_ONLY0, fct),
                          RC_F_INTN(nm[i][8], NULL, RC_FF_ONLY0, fct),
@@ -260,9 +264,16 @@ static rc_status rc_card_prop_gene(rc_reader *rd, const rc_block *b, rc_case_pro
                          RC_F_REALD(nm[i][10], &dmin, 0, 0, rot ? RC_D_NONE : RC_D_L),
                          RC_F_REALD(nm[i][11], &dmax, 0, 0, rot ? RC_D_NONE : RC_D_L)};
         rc_field fc[] = {RC_F_REALD(nm[i][12], NULL, 0, 0, RC_D_NONE), RC_F_REALD(nm[i][13], NULL, 0, 0, RC_D_NONE),
-                         RC_F_REALD(asc[i], NULL, 0, 0, RC_D_NONE), RC_F_REALD(hsc[i], NULL, 0, 0, RC_D_NONE)};
+                         RC_F_REALD(asc[i], &p->ascale6[i], 1, RC_FF_ZDEF | RC_FF_POS, rot ? RC_D_NONE : RC_D_L),
+                         RC_F_REALD(hsc[i], NULL, 0, 0, RC_D_NONE)};
         if ((st = rc_parse_line(rd, b, la, fa, RC_NF(fa)))) return st;
         if ((st = rc_parse_line(rd, b, lb, fb, RC_NF(fb)))) return st;
+        p->fct_loc[i] = lb->loc;
+        if (p->fct6[i] && bcoef != 0)
+            return rc_case_fail(rd, &la->loc, b->name, nm[i][3],
+                                "expected 0 or blank with a force curve, got %s: not supported yet (the logarithmic "
+                                "rate effect of a nonlinear spring)",
+                                fa[3].got);
         if ((st = rc_no_rupture(rd, b, &lb->loc, &fb[6], dmin, 1))) return st;
         if ((st = rc_no_rupture(rd, b, &lb->loc, &fb[7], dmax, 0))) return st;
         if ((st = rc_parse_line(rd, b, lc, fc, RC_NF(fc)))) return st;

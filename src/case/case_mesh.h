@@ -58,8 +58,15 @@ typedef struct rc_case_prop {
     double k, c;       /* SPRING TYPE4: K [N/m], C [N s/m] */
     double inertia;    /* SPRING TYPE8: I [kg m^2] (read, not used) */
     int skew_id;       /* SPRING TYPE8: Skew_ID of the element frame (0: global) */
-    double k6[6], c6[6]; /* SPRING TYPE8: K1..K6, C1..C6, directions X Y Z
-                            [N/m, N s/m] then RX RY RZ [N m/rad, N m s/rad] */
+    double k6[6], c6[6]; /* SPRING TYPE8, TYPE13: K1..K6, C1..C6, directions
+                            X Y Z [N/m, N s/m] then RX RY RZ [N m/rad,
+                            N m s/rad] */
+    int fct6[6];       /* SPRING TYPE8, TYPE13: fct_ID1i, the elastic force
+                          (moment) curve of direction i (0: K_i) */
+    double a6[6];      /* Ai, the curve's ordinate scale (0 read as 1) [-] */
+    double ascale6[6]; /* Ascalei, the curve's abscissa scale (0 read as 1)
+                          [m, rad] */
+    rc_loc fct_loc[6]; /* the line of fct_ID1i */
     rc_loc loc;
     rc_loc thick_loc;  /* the line holding Thick; SPRING: the line of K and C */
 } rc_case_prop;

@@ -69,6 +69,8 @@ static rc_status alloc_arrays(rc_couplings *p, int n)
     CPL_ALLOC(p->gk, 12 * n);
     CPL_ALLOC(p->gd0, 3 * n);
     CPL_ALLOC(p->gfb, n);
+    CPL_ALLOC(p->gtab, 6 * n);
+    CPL_ALLOC(p->gsc, 12 * n);
     CPL_ALLOC(p->lambda0, n);
     CPL_ALLOC(p->leq, n);
     CPL_ALLOC(p->ea, n);
@@ -315,6 +317,13 @@ static rc_status gene_elem(const rc_case *c, rc_couplings *p, const rc_case_spri
     for (int i = 0; i < 6; i++) {
         p->gk[12 * k + i] = q->k6[i];
         p->gk[12 * k + 6 + i] = q->c6[i];
+        char card[40], field[16];
+        snprintf(card, sizeof card, "/PROP/TYPE%d/%d", q->sprtype, q->id);
+        snprintf(field, sizeof field, "fct_ID1%d", i + 1);
+        if ((st = rc_case_ref_funct(c, q->fct6[i], 0, q->fct_loc[i], card, field, &p->gtab[6 * k + i], err)))
+            return st;
+        p->gsc[12 * k + i] = q->a6[i];
+        p->gsc[12 * k + 6 + i] = q->ascale6[i];
     }
     for (int i = 0; i < 3; i++) p->gd0[3 * k + i] = x[1][i] - x[0][i];
     return RC_OK;
@@ -508,7 +517,7 @@ void rc_cpl_free(rc_couplings *p)
     }
     void *arrays[] = {p->id,  p->kind, (void *)p->type, p->name, p->b1,   p->b2,   p->s1,      p->s2,  p->eadr,
                       p->form, p->x0,  p->kd,   p->coef, p->table, p->fref,   p->xref, p->cum,
-                      p->lambda0, p->leq, p->ea, p->jb, p->gk, p->gd0, p->gfb, p->law_loc, p->ljoint, p->lrev, p->lfrm, p->llo, p->lhi};
+                      p->lambda0, p->leq, p->ea, p->jb, p->gk, p->gd0, p->gfb, p->gtab, p->gsc, p->law_loc, p->ljoint, p->lrev, p->lfrm, p->llo, p->lhi};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     rc_cpl_contact_free(p->ct);
     free(p);

@@ -91,6 +91,11 @@ typedef struct rc_couplings {
     double *gk;          /* [n*12] K1..K6 [N/m, N m/rad], C1..C6 [N s/m,
                             N m s/rad]                                       */
     double *gd0;         /* [n*3] p2 - p1 at t = 0, global [m]               */
+    int *gtab;           /* [n*6] per direction the table of the elastic
+                            curve f_i (fct_ID1i), -1: the linear K_i       */
+    double *gsc;         /* [n*12] the curves' scales A_1..A_6 [N, N m],
+                            Ascale_1..Ascale_6 [m, rad]: F_i = A_i f_i(u_i /
+                            Ascale_i)                                       */
     int *gfb;            /* [n] the end whose body carries the frame: 0 none
                             (fixed in space), 1 or 2; the frame in lfrm is
                             then its axes at t = 0 (body frame = global)   */

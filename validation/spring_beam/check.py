@@ -14,6 +14,14 @@ case.rad, without gravity, in Radioss's layout:
      K4/2 (2 sin(psi/2))^2), within psi0^2/16 of the linear
      psi(t) = W0/wr sin(wr t), wr = sqrt(K4 (J1 + J2)/(J1 J2)), for the
      amplitude psi0 = 1e-4 rad; the frame turns with body 1.
+  C: shear and bending. A body (mass 0.6 kg, J = 0.05 kg m^2 about Z) at
+     node 1 of a TYPE13 spring of length L = 0.3 m along X to a node fixed
+     in space, K2 = 80 N/m, K6 = 1.5 N m/rad; the frame turns with the
+     body, so its lateral offset y and turn theta about Z deform the spring
+     by u2 = -(y + L theta) (to first order) and theta: the two-degree-of-
+     freedom system m y'' = -K2 (y + L theta), J theta'' = -K2 L (y + L
+     theta) - K6 theta (the cantilever coupling, docs/theory.md 8.1),
+     started at v0 = 1e-4 m/s along Y, solved by its modes.
 case_mov.rad: a turntable spun at Omega = 2 rad/s about Z (/IMPVEL, its
   centre held by /BCS) carries a /SKEW/MOV (its three nodes on the
   turntable); a rider (1 kg) rides on a zero-length TYPE8 spring in that
@@ -52,6 +60,9 @@ WB = math.sqrt(KB * (J1 + J2) / (J1 * J2))
 W0 = 1e-4 * WB                                   # the twist rate at t = 0: amplitude 1e-4 rad
 PB1 = np.array([2.0, 1.0, -0.5])
 PB2 = PB1 + LB * NB
+# C: shear and bending
+MC, JC, KC2, KC6, LC, VC = 0.6, 0.05, 80.0, 1.5, 0.3, 1e-4
+PC = np.array([-1.0, 0.5, 1.5])
 T_END = 8 * 2 * math.pi / min(WA, WB)
 # D: the turntable and the rider
 OM, RD, MD = 2.0, 0.5, 1.0
@@ -88,28 +99,34 @@ def prop(k, c, skew=0, beam=True):
 
 
 def solver(d, rtol):
-    d.solver(rtol=rtol, atol_pos=1e-2 * rtol, atol_quat=1e-2 * rtol, atol_vel=rtol, atol_omega=1e-2 * rtol,
+    d.solver(rtol=rtol, atol_pos=1e-3 * rtol, atol_quat=1e-3 * rtol, atol_vel=1e-3 * rtol, atol_omega=1e-3 * rtol,
              atol_energy=1e-4 * rtol)
 
 
-def deck(rtol=1e-9):
+def deck(rtol=1e-10):
     d = Deck("beam spring elements (TYPE13) oscillators")
-    d.nodes([(1, *PA), (91, *(PA - LA * NA)), (2, *PB1), (3, *PB2)])
+    d.nodes([(1, *PA), (91, *(PA - LA * NA)), (2, *PB1), (3, *PB2), (4, *PC), (94, *(PC + [LC, 0, 0]))])
     d.rbody(1, 1, MA, [0.3, 0.4, 0.5], title="body A 1.7 kg")
     d.rbody(2, 2, 0.9, [J1, J1, J1], title="body B1, J 0.2 kg m2")
     d.rbody(3, 3, 1.2, [J2, J2, J2], title="body B2, J 0.3 kg m2")
-    for g in (1, 2, 3):
+    d.rbody(4, 4, MC, [0.04, 0.045, JC], title="body C, J 0.05 kg m2 about Z")
+    for g in (1, 2, 3, 4):
         d.grnod(g, [g], title=f"node {g}")
     d.inivel(1, tuple(VA * NA), 1)
     d.inivel(2, tuple(-W0 * J2 / (J1 + J2) * NB), 2, rot=True)
     d.inivel(3, tuple(W0 * J1 / (J1 + J2) * NB), 3, rot=True)
+    d.inivel(4, (0.0, VC, 0.0), 4)
     d.add("/PART/7", "#  prop_ID    mat_ID", line(("i", 7), ("i", 0)), title="beam spring A")
     d.add("/PART/8", "#  prop_ID    mat_ID", line(("i", 8), ("i", 0)), title="beam spring B")
     d.add("/PROP/TYPE13/7", *prop([KA, 400.0, 600.0, 10.0, 20.0, 30.0], [CA, 0, 0, 0, 0, 0]),
           title="translation, K1 = 250 N/m, zeta 0.05")
     d.add("/PROP/SPR_BEAM/8", *prop([1000.0, 1000.0, 1000.0, KB, 50.0, 50.0], [0] * 6),
           title="torsion, K4 = 2 N m/rad")
+    d.add("/PART/9", "#  prop_ID    mat_ID", line(("i", 9), ("i", 0)), title="beam spring C")
+    d.add("/PROP/TYPE13/9", *prop([500.0, KC2, 500.0, 3.0, 4.0, KC6], [0] * 6),
+          title="shear K2 = 80 N/m, bending K6 = 1.5 N m/rad")
     d.add("/SPRING/7", "#  sprg_ID  node_ID1  node_ID2", line(("i", 71), ("i", 91), ("i", 1)))
+    d.add("/SPRING/9", "#  sprg_ID  node_ID1  node_ID2", line(("i", 91 + 1), ("i", 4), ("i", 94)))
     d.add("/SPRING/8", "#  sprg_ID  node_ID1  node_ID2", line(("i", 81), ("i", 2), ("i", 3)))
     d.run(T_END, T_END / 800)
     solver(d, rtol)
@@ -155,6 +172,24 @@ def twist(q1, q2, axis):
     return 2.0 * np.arctan2(v @ axis, w)
 
 
+def modes(M, K, x0, v0, t):
+    """The undamped linear system M q'' = -K q from q(0) = x0, q'(0) = v0."""
+    n = len(x0)
+    A = np.zeros((2 * n, 2 * n))
+    A[:n, n:] = np.eye(n)
+    A[n:, :n] = -np.linalg.solve(M, K)
+    lam, V = np.linalg.eig(A)
+    c0 = np.linalg.solve(V, np.concatenate([x0, v0]))
+    return (V[None, :, :] * (c0[None, :] * np.exp(np.outer(t, lam)))[:, None, :]).sum(2).real[:, :n], \
+        np.sort(np.abs(lam.imag))[::2]
+
+
+def shear_bending(t):
+    M = np.diag([MC, JC])
+    K = np.array([[KC2, KC2 * LC], [KC2 * LC, KC2 * LC**2 + KC6]])
+    return modes(M, K, np.zeros(2), np.array([VC, 0.0]), t)
+
+
 def rider_exact(t):
     """The rider's offset (x, y) in the turning frame: s' = A s + b, s(0) = 0."""
     k1, k2, c1, c2 = K1D / MD, K2D / MD, C1D / MD, C2D / MD
@@ -175,7 +210,12 @@ def errors(path):
     psi = twist(r.quat[:, 1, :], r.quat[:, 2, :], NB)
     eb = np.max(np.abs(psi - damped(W0, WB, 0.0, r.t))) / (W0 / WB)
     off_b = max(np.max(np.abs(r.pos[:, 1, :] - PB1)), np.max(np.abs(r.pos[:, 2, :] - PB2)))
-    return r, ea, eb, psi, off_a, off_b
+    q, _ = shear_bending(r.t)
+    yc = r.pos[:, 3, 1] - PC[1]
+    thc = 2.0 * np.arctan2(r.quat[:, 3, 3], r.quat[:, 3, 0])
+    scale = np.max(np.abs(q[:, 0]))
+    ec = max(np.max(np.abs(yc - q[:, 0])) / scale, np.max(np.abs(thc - q[:, 1])) / np.max(np.abs(q[:, 1])))
+    return r, ea, eb, psi, off_a, off_b, ec
 
 
 def errors_mov(path):
@@ -190,7 +230,7 @@ def errors_mov(path):
 
 
 def main():
-    r, ea, eb, psi, off_a, off_b = errors(rcval.run_case())
+    r, ea, eb, psi, off_a, off_b, ec = errors(rcval.run_case())
     rcval.check("spring_beam.translation", ea < 1e-6,
                 f"body on a damped TYPE13 spring along its axis X': max |u - u_exact| / (v0/wn) = {ea:.2e} "
                 f"over {len(r.t)} outputs (< 1e-6)")
@@ -200,6 +240,11 @@ def main():
     rcval.check("spring_beam.other_directions", off_a < 1e-9 and off_b < 1e-12,
                 f"the unexcited directions stay at rest: body A off X' {off_a:.1e} of the amplitude, the centres "
                 f"of B1 and B2 {off_b:.1e} m (< 1e-9, 1e-12)")
+    _, w = shear_bending(np.zeros(1))
+    rcval.check("spring_beam.shear_bending", ec < 1e-5,
+                f"a body on a TYPE13 spring to a fixed node, shear K2 and bending K6 coupled through the frame "
+                f"turning with it (modes {w[0]:.6g}, {w[1]:.6g} rad/s): max error of y and theta over the largest "
+                f"of each {ec:.2e} (< 1e-5; second-order terms {VC / w[0] / LC:.0e} of it)")
     tc = rcval.down_crossings(r.t, psi)
     if len(tc) >= 2:
         per = float(np.mean(np.diff(tc)))
@@ -209,7 +254,8 @@ def main():
                     f"{2 * math.pi / WB:.9f} s, rel. error {err_t:.2e} (< 1e-6)")
     else:
         rcval.check("spring_beam.period", False, "fewer than two downward crossings of the twist")
-    ek0 = 0.5 * MA * VA**2 + 0.5 * J1 * (W0 * J2 / (J1 + J2))**2 + 0.5 * J2 * (W0 * J1 / (J1 + J2))**2
+    ek0 = 0.5 * MA * VA**2 + 0.5 * J1 * (W0 * J2 / (J1 + J2))**2 + 0.5 * J2 * (W0 * J1 / (J1 + J2))**2 + \
+        0.5 * MC * VC**2
     el, dp = r.energy["energy_coupling_elastic"], r.energy["energy_coupling_damping"]
     ekin = r.energy["energy_kinetic"]
     eres = np.max(np.abs(ekin + el + dp - ek0)) / ek0

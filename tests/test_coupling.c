@@ -878,6 +878,24 @@ static void test_coupling_beam_read(void)
     rc_model_free(m);
 }
 
+/* A TYPE13 spring along the global Y without a skew: the global Y lies
+ * on X', so Y' is the global Z made normal to X' and Z' = X' x Y' the
+ * global X. */
+static void test_coupling_beam_frame_fallback(void)
+{
+    rc_model *m = compile_deck("/NODE\n1, 0.3, 0.2, 0.1\n9, 0.3, 0.7, 0.1\n/RBODY/1\nbody\n1,,,,1.3\n"
+                               "0.021,0.017,0.029\n0,0,0\n/RUN\n0.5,0.01\n/PART/7\nbeam\n3\n/PROP/TYPE13/3\nt\n0\n"
+                               "130\n0\n1\n170\n0\n1\n210\n0\n1\n3.1\n0\n1\n4.3\n0\n1\n2.7\n0\n1\n"
+                               "/SPRING/7\n31,9,1\n");
+    ENSURE(m && m->cpl->n == 1);
+    if (m && m->cpl->n == 1) {
+        const double *E = m->cpl->lfrm, want[9] = {0, -1, 0, 0, 0, 1, -1, 0, 0};
+        for (int i = 0; i < 9; i++) ENSURE_NEAR(E[i], want[i], 0, 1e-15);
+        ENSURE(m->cpl->gfb[0] == 1 && m->cpl->b1[0] == -1 && m->cpl->b2[0] == 0);
+    }
+    rc_model_free(m);
+}
+
 static void test_coupling_beam_errors(void)
 {
     char text[sizeof BEAM_DECK + 512];
@@ -1073,6 +1091,7 @@ void suite_coupling(void)
     RUN_TEST(test_coupling_gene_jacobian_matches_finite_differences);
     RUN_TEST(test_coupling_gene_energy_ledger_closes);
     RUN_TEST(test_coupling_beam_read);
+    RUN_TEST(test_coupling_beam_frame_fallback);
     RUN_TEST(test_coupling_beam_errors);
     RUN_TEST(test_coupling_beam_jacobian_matches_finite_differences);
     RUN_TEST(test_coupling_beam_energy_ledger_closes);

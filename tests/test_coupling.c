@@ -1012,6 +1012,41 @@ static void test_coupling_curve_energy_ledger_closes(void)
     rc_model_free(m);
 }
 
+/* Rupture: CURVE_DECK's properties with bounds (TYPE13 dmax2 0.01 m, its
+ * springs 31 and 32; TYPE8 dmax1 0.02 m, springs 41 and 43: four rupture
+ * roots), body 2 thrown hard enough to break some: the run locates the
+ * ruptures, the ledger still closes (the energy stored at a rupture stays
+ * in W_el), and the Jacobian of the whole springs matches. */
+static void test_coupling_rupture(void)
+{
+    char text[sizeof CURVE_DECK + 512];
+    snprintf(text, sizeof text, "%s", CURVE_DECK);
+    char *at = strstr(text, "170,0.9\n0\n1\n"); /* TYPE13 direction Y: dmax2 0.01 */
+    char *at8 = strstr(text, "90,0.7,2\n11\n1,0,0.05\n"); /* TYPE8 direction X: dmax1 0.02 */
+    ENSURE(at && at8);
+    if (!at || !at8) return;
+    char out[sizeof text + 256];
+    const size_t n1 = (size_t)(at - text), n2 = (size_t)(at8 - text);
+    snprintf(out, sizeof out, "%.*s170,0.9\n0,,,,,,,0.01\n1\n%.*s90,0.7,2\n11,,,,,,,0.02\n1,0,0.05\n%s"
+             "/INIVEL/TRA/2\nv\n0.9,-0.6,0.4,0,0\n/SOLVER\n1,5,100000,1e-10,0,0\n1e-12,1e-9,1e-10,1e-10\n1e-12\n",
+             (int)n1, text, (int)(n2 - n1 - strlen("170,0.9\n0\n1\n")), at + strlen("170,0.9\n0\n1\n"),
+             at8 + strlen("90,0.7,2\n11\n1,0,0.05\n"));
+    rc_model *m = compile_deck(out);
+    ENSURE(m && m->cpl->nrup == 4);
+    if (!m) return;
+    for (int k = 0; k < 4; k++) ENSURE(m->cpl->grup[k] == k);
+    ENSURE(m->cpl->gdhi[6 * 0 + 1] == 0.01 && isinf(m->cpl->gdlo[6 * 0 + 1]) && m->cpl->gdhi[6 * 2] == 0.02);
+    rc_run_options opt = {0};
+    rc_stats st;
+    rc_error e;
+    ENSURE(rc_run(m, &opt, &st, &e) == RC_OK);
+    printf("    rupture: %ld events, energy residual after 0.5 s %.2e J\n", st.events, st.energy_residual);
+    ENSURE(st.events >= 2);
+    ENSURE(fabs(st.energy_residual) < 1e-8);
+    rc_model_free(m);
+    jacobian_vs_fd(out, "springs with rupture bounds (whole)");
+}
+
 /* Energy ledger of a short run of the model (about 15 J exchanged between
  * motion, springs, dampers and lines): the couplings' stored and dissipated
  * energies close the balance, to a residual that shrinks with rtol. */
@@ -1098,6 +1133,7 @@ void suite_coupling(void)
     RUN_TEST(test_coupling_curve_read);
     RUN_TEST(test_coupling_curve_jacobian_matches_finite_differences);
     RUN_TEST(test_coupling_curve_energy_ledger_closes);
+    RUN_TEST(test_coupling_rupture);
     RUN_TEST(test_coupling_stiffness_integral);
     RUN_TEST(test_coupling_spring_forms);
     RUN_TEST(test_coupling_catenary_solutions);

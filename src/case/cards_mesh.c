@@ -171,17 +171,6 @@ static rc_status rc_card_prop(rc_reader *rd, const rc_block *b, rc_prop_kind kin
     return rc_note_id(rd, RC_IDK_PROP, p->id, &p->loc, b->hdr->text);
 }
 
-/* A rupture bound of a spring: 0, blank or beyond 1e29 in magnitude (none). */
-static rc_status rc_no_rupture(rc_reader *rd, const rc_block *b, const rc_loc *loc, const rc_field *f, double v,
-                               int lower)
-{
-    if (v == 0 || (lower ? v <= -1e29 : v >= 1e29)) return RC_OK;
-    return rc_case_fail(rd, loc, b->name, f->name,
-                        "expected 0 or blank (no rupture), got %s: not supported yet (a spring that fails at a %s "
-                        "deformation)",
-                        f->got, lower ? "negative" : "positive");
-}
-
 /* /PROP/SPR_GENE/prop_ID (/PROP/TYPE8): title; Mass (1-20), I (21-40),
  * Skew_ID (41-50), sens_ID (51-60), Isflag, Ifail, Ifail2, Iequil (10
  * each); then per direction X, Y, Z, RX, RY, RZ three lines: Ki Ci Ai Bi Di
@@ -191,10 +180,11 @@ static rc_status rc_no_rupture(rc_reader *rd, const rc_block *b, const rc_loc *l
  * Skew_ID, sens_ID, Isflag, Ifail, Ileng, Ifail2; after the 18 direction
  * lines, V0 W0 (20 each) Fcut (20) Fsmooth (10), then the six failure
  * lines c_i n_i alpha_i beta_i (20 each), optional.
- * The linear stiffnesses and dampings are read, and the elastic curves
- * fct_ID1i with their scales Ai, Ascalei (B_i 0); the rate and unloading
- * curves, hardening, rupture, the sensor and per-length input are not
- * supported yet; the
+ * The linear stiffnesses and dampings are read, the elastic curves
+ * fct_ID1i with their scales Ai, Ascalei (B_i 0), and the rupture
+ * deformations dmin_i, dmax_i (Ifail 0, Ifail2 0); the rate and unloading
+ * curves, hardening, the sensor and per-length input are not supported
+ * yet; the
  * rate-filter and failure-criterion fields, which act only with them, are
  * read and not used. */
 static rc_status rc_card_prop_gene(rc_reader *rd, const rc_block *b, rc_case_prop *p)
@@ -214,6 +204,7 @@ static rc_status rc_card_prop_gene(rc_reader *rd, const rc_block *b, rc_case_pro
     rc_status st;
     int nd;
     const int beam = p->sprtype == 13;
+    int ifail = 0, ifail2 = 0, rupture = 0;
     if ((st = rc_card_lines(rd, b, p->title, 19, beam ? 26 : 19,
                             beam ? "Mass I Skew_ID sens_ID Isflag Ifail Ileng Ifail2, then for each of X, Y, Z, RX, RY, "
                                    "RZ the three lines Ki Ci Ai Bi Di; fct_ID1i Hi fct_ID2i fct_ID3i fct_ID4i dmini "
@@ -229,16 +220,16 @@ static rc_status rc_card_prop_gene(rc_reader *rd, const rc_block *b, rc_case_pro
                       RC_F_INT("Skew_ID", &p->skew_id, 0, RC_FF_NONNEG),
                       RC_F_INTN("sens_ID", NULL, RC_FF_ONLY0, "(a spring switched on or off by a sensor)"),
                       RC_F_INT("Isflag", NULL, 0, 0),
-                      RC_F_INT("Ifail", NULL, 0, 0),
+                      RC_F_INT("Ifail", &ifail, 0, 0),
                       RC_F_SET("Ileng", NULL, 0, 0, 0x3u, 0x1u, "(input per unit length)"),
-                      RC_F_INT("Ifail2", NULL, 0, 0)};
+                      RC_F_INT("Ifail2", &ifail2, 0, 0)};
     rc_field l1[] = {RC_F_REALD("Mass", &p->mass, 0, RC_FF_NONNEG, RC_D_M),
                      RC_F_REALD("I", &p->inertia, 0, RC_FF_NONNEG, RC_D_J),
                      RC_F_INT("Skew_ID", &p->skew_id, 0, RC_FF_NONNEG),
                      RC_F_INTN("sens_ID", NULL, RC_FF_ONLY0, "(a spring switched on or off by a sensor)"),
                      RC_F_INT("Isflag", NULL, 0, 0),
-                     RC_F_INT("Ifail", NULL, 0, 0),
-                     RC_F_INT("Ifail2", NULL, 0, 0),
+                     RC_F_INT("Ifail", &ifail, 0, 0),
+                     RC_F_INT("Ifail2", &ifail2, 0, 0),
                      RC_F_SET("Iequil", NULL, 0, 0, 0x3u, 0x1u,
                               "(the moment equilibrium of a spring of non-zero length)")};
     if ((st = beam ? rc_parse_line(rd, b, &b->lines[1], l13, RC_NF(l13))
@@ -274,10 +265,33 @@ static rc_status rc_card_prop_gene(rc_reader *rd, const rc_block *b, rc_case_pro
                                 "expected 0 or blank with a force curve, got %s: not supported yet (the logarithmic "
                                 "rate effect of a nonlinear spring)",
                                 fa[3].got);
-        if ((st = rc_no_rupture(rd, b, &lb->loc, &fb[6], dmin, 1))) return st;
-        if ((st = rc_no_rupture(rd, b, &lb->loc, &fb[7], dmax, 0))) return st;
+        /* rupture deformations: 0, blank or beyond 1e29 none */
+        p->dmin6[i] = dmin == 0 || dmin <= -1e29 ? -INFINITY : dmin;
+        p->dmax6[i] = dmax == 0 || dmax >= 1e29 ? INFINITY : dmax;
+        if (p->dmin6[i] >= 0)
+            return rc_case_fail(rd, &lb->loc, b->name, fb[6].name,
+                                "expected a negative deformation (the rupture in compression), 0 or blank (none), "
+                                "got %s",
+                                fb[6].got);
+        if (p->dmax6[i] <= 0)
+            return rc_case_fail(rd, &lb->loc, b->name, fb[7].name,
+                                "expected a positive deformation (the rupture in tension), 0 or blank (none), got %s",
+                                fb[7].got);
+        rupture |= isfinite(p->dmin6[i]) || isfinite(p->dmax6[i]);
         if ((st = rc_parse_line(rd, b, lc, fc, RC_NF(fc)))) return st;
     }
+    /* the uni-directional criterion (Ifail 0) and the plain rupture
+     * (Ifail2 0) only, with rupture deformations */
+    if (rupture && ifail != 0)
+        return rc_case_fail(rd, &b->lines[1].loc, b->name, "Ifail",
+                            "expected 0 with rupture deformations (the spring breaks when one deformation reaches its "
+                            "bound), got %d: not supported yet (a multi-directional failure criterion)",
+                            ifail);
+    if (rupture && ifail2 != 0)
+        return rc_case_fail(rd, &b->lines[1].loc, b->name, "Ifail2",
+                            "expected 0 with rupture deformations, got %d: not supported yet (a failure model "
+                            "other than the deformation bounds)",
+                            ifail2);
     if (beam && nd >= 20) { /* the rate filter: acts on the curves only */
         rc_field fr[] = {RC_F_REALD("V0", NULL, 0, 0, RC_D_NONE), RC_F_REALD("W0", NULL, 0, 0, RC_D_NONE),
                          RC_F_REALD("Fcut", NULL, 0, 0, RC_D_NONE), RC_F_INT("Fsmooth", NULL, 0, 0)};

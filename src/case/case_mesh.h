@@ -68,6 +68,9 @@ typedef struct rc_case_prop {
     double ascale6[6]; /* Ascalei, the curve's abscissa scale (0 read as 1)
                           [m, rad] */
     rc_loc fct_loc[6]; /* the line of fct_ID1i */
+    double dmin6[6], dmax6[6]; /* SPRING TYPE8, TYPE13: rupture deformations
+                          dmin_i < 0 < dmax_i [m, rad]; -inf, +inf: none
+                          (0, blank or beyond 1e29 in the deck) */
     rc_loc loc;
     rc_loc thick_loc;  /* the line holding Thick; SPRING: the line of K and C */
 } rc_case_prop;

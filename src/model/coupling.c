@@ -70,6 +70,9 @@ static rc_status alloc_arrays(rc_couplings *p, int n)
     CPL_ALLOC(p->gd0, 3 * n);
     CPL_ALLOC(p->gfb, n);
     CPL_ALLOC(p->gtab, 6 * n);
+    CPL_ALLOC(p->gdlo, 6 * n);
+    CPL_ALLOC(p->gdhi, 6 * n);
+    CPL_ALLOC(p->grup, n);
     CPL_ALLOC(p->gsc, 12 * n);
     CPL_ALLOC(p->lambda0, n);
     CPL_ALLOC(p->leq, n);
@@ -324,6 +327,9 @@ static rc_status gene_elem(const rc_case *c, rc_couplings *p, const rc_case_spri
             return st;
         p->gsc[12 * k + i] = q->a6[i];
         p->gsc[12 * k + 6 + i] = q->ascale6[i];
+        p->gdlo[6 * k + i] = q->dmin6[i];
+        p->gdhi[6 * k + i] = q->dmax6[i];
+        if (isfinite(q->dmin6[i]) || isfinite(q->dmax6[i])) p->grup[k] = 0; /* numbered below */
     }
     for (int i = 0; i < 3; i++) p->gd0[3 * k + i] = x[1][i] - x[0][i];
     return RC_OK;
@@ -459,7 +465,7 @@ rc_status rc_cpl_compile(const rc_case *c, rc_model *m, rc_error *err)
     m->cpl->ncard = c->ncoupling + nspr;
     rc_status st = rc_cpl_contact_alloc(m, err);
     if (st) return st;
-    for (int k = 0; k < m->cpl->n; k++) m->cpl->ljoint[k] = -1;
+    for (int k = 0; k < m->cpl->n; k++) m->cpl->ljoint[k] = m->cpl->grup[k] = -1;
     for (int k = 0; k < c->ncoupling; k++) {
         m->cpl->ct->fadr[k + 1] = m->cpl->ct->fadr[k] = m->cpl->ct->nface; /* no faces unless a contact */
         st = compile_one(c, m, k, err);
@@ -475,6 +481,8 @@ rc_status rc_cpl_compile(const rc_case *c, rc_model *m, rc_error *err)
         m->cpl->ct->fadr[k + 1] = m->cpl->ct->fadr[k] = m->cpl->ct->nface;
         if ((st = compile_stop(c, m, j, k++, err))) return st;
     }
+    for (int k = 0; k < m->cpl->n; k++) /* the springs' rupture roots, in order */
+        if (m->cpl->grup[k] >= 0) m->cpl->grup[k] = m->cpl->nrup++;
     return RC_OK;
 }
 
@@ -517,7 +525,7 @@ void rc_cpl_free(rc_couplings *p)
     }
     void *arrays[] = {p->id,  p->kind, (void *)p->type, p->name, p->b1,   p->b2,   p->s1,      p->s2,  p->eadr,
                       p->form, p->x0,  p->kd,   p->coef, p->table, p->fref,   p->xref, p->cum,
-                      p->lambda0, p->leq, p->ea, p->jb, p->gk, p->gd0, p->gfb, p->gtab, p->gsc, p->law_loc, p->ljoint, p->lrev, p->lfrm, p->llo, p->lhi};
+                      p->lambda0, p->leq, p->ea, p->jb, p->gk, p->gd0, p->gfb, p->gtab, p->gsc, p->gdlo, p->gdhi, p->grup, p->law_loc, p->ljoint, p->lrev, p->lfrm, p->llo, p->lhi};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     rc_cpl_contact_free(p->ct);
     free(p);

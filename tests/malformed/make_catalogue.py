@@ -716,7 +716,7 @@ def GENE(**kw):
 TL('gene_lines_missing', '/PROP/TYPE8/9', 'expected 19 data lines',
    before_end(SPR_PART + ['/PROP/TYPE8/9', 'general spring', '                   0'] + SPR_ELEM, expect=3))
 TL('gene_curve', '/PROP/TYPE8/9', 'field fct_ID24', before_end(GENE(edit=(10, '%30s' % '5')), expect=16))
-TL('gene_rupture', '/PROP/TYPE8/9', 'field dmax2', before_end(GENE(edit=(4, '%60s%40s' % ('', '0.02'))), expect=10))
+TL('gene_rupture', '/PROP/TYPE8/9', 'field dmax2', before_end(GENE(edit=(4, '%60s%40s' % ('', '-0.02'))), expect=10))
 TL('gene_iequil', '/PROP/TYPE8/9', 'field Iequil', before_end(GENE(l1='%20s%20s%50s%10s' % ('0', '0', '', '1')), expect=5))
 TL('gene_sensor', '/PROP/TYPE8/9', 'field sens_ID', before_end(GENE(l1='%20s%20s%10s%10s' % ('0', '0', '', '3')), expect=5))
 TL('gene_k_negative', '/PROP/TYPE8/9', 'field K3', before_end(GENE(edit=(6, '                  -5')), expect=12))
@@ -752,6 +752,9 @@ def GENE_LOG():
 
 
 TL('gene_curve_log_rate', '/PROP/TYPE8/9', 'field B1', before_end(GENE_LOG(), expect=6))
+TL('gene_rupture_ifail', '/PROP/TYPE8/9', 'field Ifail',
+   before_end(SPR_PART + PROP8(l1='%20s%20s%30s%10s' % ('0', '0', '', '1'), edit=(4, '%60s%40s' % ('', '0.02'))) +
+              SPR_ELEM, expect=5))
 
 
 def write_all():

@@ -378,8 +378,7 @@ static void test_coupling_spring_element_errors(void)
     EXPECT_ERROR(SPRE "/PROP/TYPE4/3\nt\n0\n10,1\n0,,,,,,0.5\n", 0, 28, "field dmin", "rupture");
     EXPECT_ERROR(SPRE "/PROP/SPRING/3\nt\n0\n", 0, 24, "card /PROP/SPRING/3", "expected", "K C A B D");
     /* compiler: the property, the nodes, the bodies */
-    snprintf(text, sizeof text, SPRE "/PROP/TYPE13/3\nt\n0\n/SPRING/7\n31,1,2\n");
-    EXPECT_ERROR(text, 1, 23, "card /PART/7", "field prop_ID", "TYPE13", "not supported yet");
+    EXPECT_ERROR(SPRE "/PROP/TYPE13/3\nt\n0\n", 0, 24, "card /PROP/TYPE13/3", "expected 19 data lines", "Ileng");
     EXPECT_ERROR(SPRE "/PROP/TYPE8/3\nt\n0\n", 0, 24, "card /PROP/TYPE8/3", "expected 19 data lines");
     snprintf(text, sizeof text, SPRE "/SPRING/7\n31,1,2\n");
     EXPECT_ERROR(text, 1, 23, "card /PART/7", "field prop_ID", "/PROP/SPRING");
@@ -394,7 +393,7 @@ static void test_coupling_spring_element_errors(void)
     ENSURE(in && in->cpl->n == 0 && in->cpl->ncard == 0);
     if (in) ENSURE_NEAR(in->body_mass[0], 1.3 + 0.5, 1e-15, 0);
     rc_model_free(in);
-    snprintf(text, sizeof text, SPRE "/PROP/TYPE13/3\nt\n0\n/SPRING/7\n31,1,5\n");
+    snprintf(text, sizeof text, SPRE "/PROP/TYPE12/3\nt\n0\n/SPRING/7\n31,1,5\n");
     EXPECT_ERROR(text, 1, 23, "card /PART/7", "field prop_ID", "TYPE13");
     snprintf(text, sizeof text, SPR_BODIES "/NODE\n11,0,0,0\n12,1,0,0\n/PART/7\nsprings\n3\n%s/SPRING/7\n31,11,12\n", p4);
     EXPECT_ERROR(text, 1, 32, "card /SPRING/7", "no /RBODY");
@@ -816,6 +815,238 @@ static void test_coupling_gene_energy_ledger_closes(void)
     rc_model_free(m);
 }
 
+/* /PROP/TYPE13 beam springs and /PROP/TYPE8 springs in moving skews:
+ * body 1 (nodes 1, 3, 5) and body 2 (nodes 2, 6, 7), node 9 and node 10
+ * (at node 2) in no body. Part 7 (TYPE13, its Y from the turned skew 5,
+ * all 26 lines): 31 body 1 -> body 2, 32 ground -> body 1, 33 body 2 ->
+ * ground, 34 zero length (the skew's frame), carried by body 2. Part 8
+ * (TYPE8, 19 lines, /SKEW/MOV 6 on body 2): 41 carried by end 2, 42 with
+ * the element's /SKEW/MOV2 7 on body 1 (end 1), 43 to ground by end 1. */
+#define BEAM_DECK                                                                                               \
+    "/NODE\n1, 0.31, -0.17, 0.23\n2, 1.41, 0.27, -0.12\n3, 0.1, 0.4, -0.3\n5, 0.52, 0.11, 0.37\n"              \
+    "6, 1.2, 0.5, 0.1\n7, 1.5, -0.2, 0.4\n9, 2.2, -0.4, 0.9\n10, 1.41, 0.27, -0.12\n"                           \
+    "/GRNOD/NODE/4\nsecondary\n3\n5\n/GRNOD/NODE/8\nsecondary two\n6\n7\n"                                       \
+    "/RBODY/1\nbody one\n1,,,,1.3,4\n0.021,0.017,0.029\n0.0013,-0.0022,0.0007\n"                                 \
+    "/RBODY/2\nbody two\n2,,,,0.7,8\n0.011,0.013,0.009\n0,0,0\n/RUN\n0.5,0.01\n"                                 \
+    "/SKEW/FIX/5\nturned\n0,0,0\n0.48,-0.6,0.64\n0,0,1\n/SKEW/MOV/6\non body two\n2,6,7,Y\n"                    \
+    "/SKEW/MOV2/7\non body one\n1,3,5\n"                                                                     \
+    "/PART/7\nbeam springs\n3\n/PROP/TYPE13/3\nt\n0.02,0.001,5\n"                                              \
+    "130,1.1\n0\n1\n170,0.9\n0\n1\n210,1.7\n0\n1\n"                                                          \
+    "3.1,0.013\n0\n1\n4.3,0.021\n0\n1\n2.7,0.017\n0\n1\n0,0,0,0\n1,1,1,1\n1,1,1,1\n1,1,1,1\n1,1,1,1\n"        \
+    "1,1,1,1\n1,1,1,1\n/SPRING/7\n31,1,2\n32,9,1\n33,2,9\n34,2,10\n"                                         \
+    "/PART/8\ngeneral springs\n4\n/PROP/TYPE8/4\nt\n0,0,6\n"                                                 \
+    "90,0.7\n0\n1\n150,0.5\n0\n1\n60,1.2\n0\n1\n"                                                            \
+    "2.1,0.011\n0\n1\n1.3,0.023\n0\n1\n3.7,0.007\n0\n1\n"                                                    \
+    "/SPRING/8\n41,1,2\n42,1,2,,,,,7\n43,5,9,,,,,7\n"
+
+static void test_coupling_beam_read(void)
+{
+    rc_case *c = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    ENSURE(rc_case_load(deck(BEAM_DECK), &c, &e) == RC_OK);
+    if (!c) { fprintf(stderr, "  %s\n", e.msg); return; }
+    const rc_case_prop *q = c->mesh->prop;
+    ENSURE(c->mesh->nprop == 2 && q->sprtype == 13 && q->mass == 0.02 && q->inertia == 0.001 && q->skew_id == 5);
+    ENSURE(q->k6[0] == 130 && q->c6[0] == 1.1 && q->k6[2] == 210 && q->k6[5] == 2.7 && q->c6[5] == 0.017);
+    rc_case_free(c);
+    rc_model *m = compile_deck(BEAM_DECK);
+    ENSURE(m && m->cpl->n == 7);
+    if (m && m->cpl->n == 7) {
+        const rc_couplings *p = m->cpl;
+        for (int k = 0; k < 7; k++) ENSURE(p->form[k] == RC_KEFF_GENE);
+        /* carriers: TYPE13 end 1; the moving skews' bodies */
+        const int fb[7] = {1, 1, 1, 1, 2, 1, 1};
+        for (int k = 0; k < 7; k++) ENSURE(p->gfb[k] == fb[k]);
+        /* 31: X' along node 1 -> node 2, Y' in the plane of X' and the
+         * skew's Y, normal to X'; 34 (zero length): the skew's axes */
+        const double L[3] = {1.41 - 0.31, 0.27 + 0.17, -0.12 - 0.23};
+        const double nl = sqrt(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);
+        const double *E = p->lfrm;
+        for (int i = 0; i < 3; i++) ENSURE_NEAR(E[i], L[i] / nl, 0, 1e-15);
+        ENSURE_NEAR(E[0] * E[3] + E[1] * E[4] + E[2] * E[5], 0, 0, 1e-15);
+        ENSURE(0.48 * E[3] - 0.6 * E[4] + 0.64 * E[5] > 0.5);
+        ENSURE_NEAR(E[6], E[1] * E[5] - E[2] * E[4], 0, 1e-15);
+        ENSURE_NEAR(p->lfrm[27 + 3], 0.48, 0, 1e-15);
+        ENSURE_NEAR(p->lfrm[27 + 5], 0.64, 0, 1e-15);
+        /* 41: /SKEW/MOV 6, Y' along node 2 -> node 6 */
+        const double a[3] = {1.2 - 1.41, 0.5 - 0.27, 0.1 + 0.12};
+        const double na = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+        for (int i = 0; i < 3; i++) ENSURE_NEAR(p->lfrm[36 + 3 + i], a[i] / na, 0, 1e-15);
+        ENSURE(p->gk[12 * 4] == 90 && p->gk[12 * 4 + 11] == 0.007);
+    }
+    rc_model_free(m);
+}
+
+/* A TYPE13 spring along the global Y without a skew: the global Y lies
+ * on X', so Y' is the global Z made normal to X' and Z' = X' x Y' the
+ * global X. */
+static void test_coupling_beam_frame_fallback(void)
+{
+    rc_model *m = compile_deck("/NODE\n1, 0.3, 0.2, 0.1\n9, 0.3, 0.7, 0.1\n/RBODY/1\nbody\n1,,,,1.3\n"
+                               "0.021,0.017,0.029\n0,0,0\n/RUN\n0.5,0.01\n/PART/7\nbeam\n3\n/PROP/TYPE13/3\nt\n0\n"
+                               "130\n0\n1\n170\n0\n1\n210\n0\n1\n3.1\n0\n1\n4.3\n0\n1\n2.7\n0\n1\n"
+                               "/SPRING/7\n31,9,1\n");
+    ENSURE(m && m->cpl->n == 1);
+    if (m && m->cpl->n == 1) {
+        const double *E = m->cpl->lfrm, want[9] = {0, -1, 0, 0, 0, 1, -1, 0, 0};
+        for (int i = 0; i < 9; i++) ENSURE_NEAR(E[i], want[i], 0, 1e-15);
+        ENSURE(m->cpl->gfb[0] == 1 && m->cpl->b1[0] == -1 && m->cpl->b2[0] == 0);
+    }
+    rc_model_free(m);
+}
+
+static void test_coupling_beam_errors(void)
+{
+    char text[sizeof BEAM_DECK + 512];
+    /* a moving skew on a third body: a body 3 on node 11, skew 9 */
+    snprintf(text, sizeof text,
+             "%s/NODE\n11,3,3,3\n12,3.5,3,3\n13,3,3.5,3\n/GRNOD/NODE/12\nthree\n12\n13\n"
+             "/RBODY/3\nbody three\n11,,,,1,12\n0.1,0.1,0.1\n0,0,0\n/SKEW/MOV/9\nthree\n11,12,13\n/SPRING/8\n44,1,2,,,,,9\n",
+             BEAM_DECK);
+    EXPECT_ERROR(text, 1, 0, "card /SPRING/8", "field Skew_ID", "third body", "/RBODY 3");
+    /* a moving skew whose nodes are on two bodies */
+    snprintf(text, sizeof text, "%s/SKEW/MOV/9\ntwo\n1,2,3\n/SPRING/8\n44,1,2,,,,,9\n", BEAM_DECK);
+    EXPECT_ERROR(text, 1, 0, "card /SPRING/8", "field Skew_ID", "different bodies");
+    snprintf(text, sizeof text, "%s/SPRING/8\n44,1,2,,,,,19\n", BEAM_DECK);
+    EXPECT_ERROR(text, 1, 0, "card /SPRING/8", "field Skew_ID", "no such skew");
+}
+
+static void test_coupling_beam_jacobian_matches_finite_differences(void)
+{
+    jacobian_vs_fd(BEAM_DECK, "beam and moving-frame spring");
+}
+
+/* The beam springs' and moving frames' energy: a short run's ledger closes
+ * (the elastic energy states are the work of the forces and moments, which
+ * derive from the potential through the turning frames), and the angular
+ * momentum about the origin of the two bodies, joined only by springs 31,
+ * 41 and 42, is kept. */
+static void test_coupling_beam_energy_ledger_closes(void)
+{
+    char text[sizeof BEAM_DECK + 256];
+    snprintf(text, sizeof text, "%s/INIVEL/ROT/1\nspin\n0.3,-0.2,0.5,0,0\n/INIVEL/TRA/2\nv\n0.1,0.05,-0.2,0,0\n"
+             "/SOLVER\n1,5,100000,1e-10,0,0\n1e-12,1e-9,1e-10,1e-10\n1e-12\n", BEAM_DECK);
+    rc_model *m = compile_deck(text);
+    ENSURE(m != NULL);
+    if (!m) return;
+    rc_run_options opt = {0};
+    rc_stats st;
+    rc_error e;
+    ENSURE(rc_run(m, &opt, &st, &e) == RC_OK);
+    printf("    beam and moving-frame springs: energy residual after 0.5 s %.2e J\n", st.energy_residual);
+    ENSURE(fabs(st.energy_residual) < 1e-8);
+    rc_model_free(m);
+}
+
+/* Elastic curves (fct_ID1i): BEAM_DECK's TYPE8 property 4 with a
+ * stiffening curve in X (A 2 N, Ascale 0.05 m), a softening one about Y
+ * (A 0.3 N m, Ascale 0.2 rad), and TYPE13's curve in Z (A 1 N, Ascale 1). */
+#define CURVE_DECK                                                                                            \
+    "/NODE\n1, 0.31, -0.17, 0.23\n2, 1.41, 0.27, -0.12\n3, 0.1, 0.4, -0.3\n5, 0.52, 0.11, 0.37\n"            \
+    "6, 1.2, 0.5, 0.1\n7, 1.5, -0.2, 0.4\n9, 2.2, -0.4, 0.9\n"                                                \
+    "/GRNOD/NODE/4\nsecondary\n3\n5\n/GRNOD/NODE/8\nsecondary two\n6\n7\n"                                     \
+    "/RBODY/1\nbody one\n1,,,,1.3,4\n0.021,0.017,0.029\n0.0013,-0.0022,0.0007\n"                               \
+    "/RBODY/2\nbody two\n2,,,,0.7,8\n0.011,0.013,0.009\n0,0,0\n/RUN\n0.5,0.01\n"                               \
+    "/SKEW/MOV/6\non body two\n2,6,7,Y\n"                                                                  \
+    "/FUNCT/11\nstiffening\n-3,-60\n-1,-4\n0,0\n1,4\n3,60\n"                                                 \
+    "/FUNCT/12\nsoftening\n-2,-1.5\n-1,-1\n0,0\n1,1\n2,1.5\n"                                                \
+    "/FUNCT/13\nlinear\n-1,-150\n1,150\n"                                                                    \
+    "/PART/7\nbeam springs\n3\n/PROP/TYPE13/3\nt\n0.02,0.001\n"                                              \
+    "130,1.1\n0\n1\n170,0.9\n0\n1\n210,1.7\n13\n1\n"                                                         \
+    "3.1,0.013\n0\n1\n4.3,0.021\n0\n1\n2.7,0.017\n0\n1\n"                                                    \
+    "/SPRING/7\n31,1,2\n32,9,1\n"                                                                          \
+    "/PART/8\ngeneral springs\n4\n/PROP/TYPE8/4\nt\n0,0,6\n"                                                 \
+    "90,0.7,2\n11\n1,0,0.05\n150,0.5\n0\n1\n60,1.2\n0\n1\n"                                                  \
+    "2.1,0.011\n0\n1\n1.3,0.023,0.3\n12\n1,0,0.2\n3.7,0.007\n0\n1\n"                                         \
+    "/SPRING/8\n41,1,2\n43,9,2\n"
+
+static void test_coupling_curve_read(void)
+{
+    rc_case *c = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    ENSURE(rc_case_load(deck(CURVE_DECK), &c, &e) == RC_OK);
+    if (!c) { fprintf(stderr, "  %s\n", e.msg); return; }
+    const rc_case_prop *q = &c->mesh->prop[1];
+    ENSURE(q->sprtype == 8 && q->fct6[0] == 11 && q->fct6[4] == 12 && q->fct6[1] == 0);
+    ENSURE(q->a6[0] == 2 && q->ascale6[0] == 0.05 && q->a6[4] == 0.3 && q->ascale6[4] == 0.2);
+    ENSURE(q->a6[1] == 1 && q->ascale6[1] == 1); /* the defaults */
+    rc_case_free(c);
+    rc_model *m = compile_deck(CURVE_DECK);
+    ENSURE(m && m->cpl->n == 4);
+    if (m && m->cpl->n == 4) {
+        const rc_couplings *p = m->cpl;
+        ENSURE(p->gtab[0] == -1 && p->gtab[2] >= 0 && p->gtab[12] >= 0 && p->gtab[12 + 4] >= 0);
+        ENSURE(p->gtab[12 + 1] == -1 && p->gsc[24] == 2 && p->gsc[24 + 6] == 0.05 && p->gsc[24 + 10] == 0.2);
+    }
+    rc_model_free(m);
+    char text[sizeof CURVE_DECK + 64];
+    snprintf(text, sizeof text, "%s", CURVE_DECK);
+    char *at = strstr(text, "2.1,0.011\n0\n");
+    if (at) at[10] = '7'; /* fct_ID14 = 7: no such function */
+    EXPECT_ERROR(text, 1, 0, "card /PROP/TYPE8/4", "field fct_ID14", "no such function");
+}
+
+static void test_coupling_curve_jacobian_matches_finite_differences(void)
+{
+    jacobian_vs_fd(CURVE_DECK, "spring curves");
+}
+
+/* The curves' energy: W_el is the work of the curves' forces and moments,
+ * the ledger closes. */
+static void test_coupling_curve_energy_ledger_closes(void)
+{
+    char text[sizeof CURVE_DECK + 256];
+    snprintf(text, sizeof text, "%s/INIVEL/ROT/1\nspin\n0.3,-0.2,0.5,0,0\n/INIVEL/TRA/2\nv\n0.1,0.05,-0.2,0,0\n"
+             "/SOLVER\n1,5,100000,1e-10,0,0\n1e-12,1e-9,1e-10,1e-10\n1e-12\n", CURVE_DECK);
+    rc_model *m = compile_deck(text);
+    ENSURE(m != NULL);
+    if (!m) return;
+    rc_run_options opt = {0};
+    rc_stats st;
+    rc_error e;
+    ENSURE(rc_run(m, &opt, &st, &e) == RC_OK);
+    printf("    spring curves: energy residual after 0.5 s %.2e J\n", st.energy_residual);
+    ENSURE(fabs(st.energy_residual) < 1e-8);
+    rc_model_free(m);
+}
+
+/* Rupture: CURVE_DECK's properties with bounds (TYPE13 dmax2 0.01 m, its
+ * springs 31 and 32; TYPE8 dmax1 0.02 m, springs 41 and 43: four rupture
+ * roots), body 2 thrown hard enough to break some: the run locates the
+ * ruptures, the ledger still closes (the energy stored at a rupture stays
+ * in W_el), and the Jacobian of the whole springs matches. */
+static void test_coupling_rupture(void)
+{
+    char text[sizeof CURVE_DECK + 512];
+    snprintf(text, sizeof text, "%s", CURVE_DECK);
+    char *at = strstr(text, "170,0.9\n0\n1\n"); /* TYPE13 direction Y: dmax2 0.01 */
+    char *at8 = strstr(text, "90,0.7,2\n11\n1,0,0.05\n"); /* TYPE8 direction X: dmax1 0.02 */
+    ENSURE(at && at8);
+    if (!at || !at8) return;
+    char out[sizeof text + 256];
+    const size_t n1 = (size_t)(at - text), n2 = (size_t)(at8 - text);
+    snprintf(out, sizeof out, "%.*s170,0.9\n0,,,,,,,0.01\n1\n%.*s90,0.7,2\n11,,,,,,,0.02\n1,0,0.05\n%s"
+             "/INIVEL/TRA/2\nv\n0.9,-0.6,0.4,0,0\n/SOLVER\n1,5,100000,1e-10,0,0\n1e-12,1e-9,1e-10,1e-10\n1e-12\n",
+             (int)n1, text, (int)(n2 - n1 - strlen("170,0.9\n0\n1\n")), at + strlen("170,0.9\n0\n1\n"),
+             at8 + strlen("90,0.7,2\n11\n1,0,0.05\n"));
+    rc_model *m = compile_deck(out);
+    ENSURE(m && m->cpl->nrup == 4);
+    if (!m) return;
+    for (int k = 0; k < 4; k++) ENSURE(m->cpl->grup[k] == k);
+    ENSURE(m->cpl->gdhi[6 * 0 + 1] == 0.01 && isinf(m->cpl->gdlo[6 * 0 + 1]) && m->cpl->gdhi[6 * 2] == 0.02);
+    rc_run_options opt = {0};
+    rc_stats st;
+    rc_error e;
+    ENSURE(rc_run(m, &opt, &st, &e) == RC_OK);
+    printf("    rupture: %ld events, energy residual after 0.5 s %.2e J\n", st.events, st.energy_residual);
+    ENSURE(st.events >= 2);
+    ENSURE(fabs(st.energy_residual) < 1e-8);
+    rc_model_free(m);
+    jacobian_vs_fd(out, "springs with rupture bounds (whole)");
+}
+
 /* Energy ledger of a short run of the model (about 15 J exchanged between
  * motion, springs, dampers and lines): the couplings' stored and dissipated
  * energies close the balance, to a residual that shrinks with rtol. */
@@ -894,6 +1125,15 @@ void suite_coupling(void)
     RUN_TEST(test_coupling_gene_read);
     RUN_TEST(test_coupling_gene_jacobian_matches_finite_differences);
     RUN_TEST(test_coupling_gene_energy_ledger_closes);
+    RUN_TEST(test_coupling_beam_read);
+    RUN_TEST(test_coupling_beam_frame_fallback);
+    RUN_TEST(test_coupling_beam_errors);
+    RUN_TEST(test_coupling_beam_jacobian_matches_finite_differences);
+    RUN_TEST(test_coupling_beam_energy_ledger_closes);
+    RUN_TEST(test_coupling_curve_read);
+    RUN_TEST(test_coupling_curve_jacobian_matches_finite_differences);
+    RUN_TEST(test_coupling_curve_energy_ledger_closes);
+    RUN_TEST(test_coupling_rupture);
     RUN_TEST(test_coupling_stiffness_integral);
     RUN_TEST(test_coupling_spring_forms);
     RUN_TEST(test_coupling_catenary_solutions);

@@ -171,28 +171,27 @@ static rc_status rc_card_prop(rc_reader *rd, const rc_block *b, rc_prop_kind kin
     return rc_note_id(rd, RC_IDK_PROP, p->id, &p->loc, b->hdr->text);
 }
 
-/* A rupture bound of a spring: 0, blank or beyond 1e29 in magnitude (none). */
-static rc_status rc_no_rupture(rc_reader *rd, const rc_block *b, const rc_loc *loc, const rc_field *f, double v,
-                               int lower)
-{
-    if (v == 0 || (lower ? v <= -1e29 : v >= 1e29)) return RC_OK;
-    return rc_case_fail(rd, loc, b->name, f->name,
-                        "expected 0 or blank (no rupture), got %s: not supported yet (a spring that fails at a %s "
-                        "deformation)",
-                        f->got, lower ? "negative" : "positive");
-}
-
 /* /PROP/SPR_GENE/prop_ID (/PROP/TYPE8): title; Mass (1-20), I (21-40),
  * Skew_ID (41-50), sens_ID (51-60), Isflag, Ifail, Ifail2, Iequil (10
  * each); then per direction X, Y, Z, RX, RY, RZ three lines: Ki Ci Ai Bi Di
  * (20 each); fct_ID1i Hi fct_ID2i fct_ID3i fct_ID4i (10 each), blank,
- * dmin_i dmax_i (20 each); Fi Ei Ascalei Hscalei (20 each). The linear
- * stiffnesses and dampings are read; curves, hardening, rupture and the
- * sensor are not supported yet. */
+ * dmin_i dmax_i (20 each); Fi Ei Ascalei Hscalei (20 each).
+ * /PROP/SPR_BEAM/prop_ID (/PROP/TYPE13): the same but line 1 Mass, I,
+ * Skew_ID, sens_ID, Isflag, Ifail, Ileng, Ifail2; after the 18 direction
+ * lines, V0 W0 (20 each) Fcut (20) Fsmooth (10), then the six failure
+ * lines c_i n_i alpha_i beta_i (20 each), optional.
+ * The linear stiffnesses and dampings are read, the elastic curves
+ * fct_ID1i with their scales Ai, Ascalei (B_i 0), and the rupture
+ * deformations dmin_i, dmax_i (Ifail 0, Ifail2 0); the rate and unloading
+ * curves, hardening, the sensor and per-length input are not supported
+ * yet; the
+ * rate-filter and failure-criterion fields, which act only with them, are
+ * read and not used. */
 static rc_status rc_card_prop_gene(rc_reader *rd, const rc_block *b, rc_case_prop *p)
 {
-    static const char *const fct = "(a nonlinear or rate-dependent general spring: ricochet reads the linear "
-                                   "law F_i = -K_i u_i - C_i du_i/dt per direction)";
+    static const char *const fct = "(a rate-dependent or unloading curve of a general spring: ricochet reads "
+                                   "the elastic law F_i = -K_i u_i, or -A_i f_i(u_i/Ascale_i) with fct_ID1i, and "
+                                   "the damping -C_i du_i/dt per direction)";
     static const char *const nm[6][14] = {
 #define RC_GENE_NAMES(i)                                                                                   \
     {"K" #i, "C" #i, "A" #i, "B" #i, "D" #i, "fct_ID1" #i, "H" #i, "fct_ID2" #i, "fct_ID3" #i, "fct_ID4" #i, \
@@ -204,33 +203,50 @@ static rc_status rc_card_prop_gene(rc_reader *rd, const rc_block *b, rc_case_pro
     static const char *const hsc[6] = {"Hscale1", "Hscale2", "Hscale3", "Hscale4", "Hscale5", "Hscale6"};
     rc_status st;
     int nd;
-    if ((st = rc_card_lines(rd, b, p->title, 19, 19,
-                            "Mass I Skew_ID sens_ID Isflag Ifail Ifail2 Iequil, then for each of X, Y, Z, RX, RY, "
-                            "RZ the three lines Ki Ci Ai Bi Di; fct_ID1i Hi fct_ID2i fct_ID3i fct_ID4i dmini "
-                            "dmaxi; Fi Ei Ascalei Hscalei",
+    const int beam = p->sprtype == 13;
+    int ifail = 0, ifail2 = 0, rupture = 0;
+    if ((st = rc_card_lines(rd, b, p->title, 19, beam ? 26 : 19,
+                            beam ? "Mass I Skew_ID sens_ID Isflag Ifail Ileng Ifail2, then for each of X, Y, Z, RX, RY, "
+                                   "RZ the three lines Ki Ci Ai Bi Di; fct_ID1i Hi fct_ID2i fct_ID3i fct_ID4i dmini "
+                                   "dmaxi; Fi Ei Ascalei Hscalei; then V0 W0 Fcut Fsmooth and six lines ci ni alphai "
+                                   "betai (optional)"
+                                 : "Mass I Skew_ID sens_ID Isflag Ifail Ifail2 Iequil, then for each of X, Y, Z, RX, RY, "
+                                   "RZ the three lines Ki Ci Ai Bi Di; fct_ID1i Hi fct_ID2i fct_ID3i fct_ID4i dmini "
+                                   "dmaxi; Fi Ei Ascalei Hscalei",
                             &nd)))
         return st;
+    rc_field l13[] = {RC_F_REALD("Mass", &p->mass, 0, RC_FF_NONNEG, RC_D_M),
+                      RC_F_REALD("I", &p->inertia, 0, RC_FF_NONNEG, RC_D_J),
+                      RC_F_INT("Skew_ID", &p->skew_id, 0, RC_FF_NONNEG),
+                      RC_F_INTN("sens_ID", NULL, RC_FF_ONLY0, "(a spring switched on or off by a sensor)"),
+                      RC_F_INT("Isflag", NULL, 0, 0),
+                      RC_F_INT("Ifail", &ifail, 0, 0),
+                      RC_F_SET("Ileng", NULL, 0, 0, 0x3u, 0x1u, "(input per unit length)"),
+                      RC_F_INT("Ifail2", &ifail2, 0, 0)};
     rc_field l1[] = {RC_F_REALD("Mass", &p->mass, 0, RC_FF_NONNEG, RC_D_M),
                      RC_F_REALD("I", &p->inertia, 0, RC_FF_NONNEG, RC_D_J),
                      RC_F_INT("Skew_ID", &p->skew_id, 0, RC_FF_NONNEG),
                      RC_F_INTN("sens_ID", NULL, RC_FF_ONLY0, "(a spring switched on or off by a sensor)"),
                      RC_F_INT("Isflag", NULL, 0, 0),
-                     RC_F_INT("Ifail", NULL, 0, 0),
-                     RC_F_INT("Ifail2", NULL, 0, 0),
+                     RC_F_INT("Ifail", &ifail, 0, 0),
+                     RC_F_INT("Ifail2", &ifail2, 0, 0),
                      RC_F_SET("Iequil", NULL, 0, 0, 0x3u, 0x1u,
                               "(the moment equilibrium of a spring of non-zero length)")};
-    if ((st = rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1)))) return st;
+    if ((st = beam ? rc_parse_line(rd, b, &b->lines[1], l13, RC_NF(l13))
+                   : rc_parse_line(rd, b, &b->lines[1], l1, RC_NF(l1))))
+        return st;
     p->thick_loc = b->lines[1].loc;
     for (int i = 0; i < 6; i++) {
         const int rot = i >= 3;
         const int dk = rot ? RC_DIM(1, 2, -2) : RC_D_K, dc = rot ? RC_DIM(1, 2, -1) : RC_D_C;
-        double dmin = 0, dmax = 0;
+        double dmin = 0, dmax = 0, bcoef = 0;
         const rc_line *la = &b->lines[2 + 3 * i], *lb = &b->lines[3 + 3 * i], *lc = &b->lines[4 + 3 * i];
         rc_field fa[] = {RC_F_REALD(nm[i][0], &p->k6[i], 0, RC_FF_NONNEG, dk),
                          RC_F_REALD(nm[i][1], &p->c6[i], 0, RC_FF_NONNEG, dc),
-                         RC_F_REALD(nm[i][2], NULL, 0, 0, RC_D_NONE), RC_F_REALD(nm[i][3], NULL, 0, 0, RC_D_NONE),
+                         RC_F_REALD(nm[i][2], &p->a6[i], 1, RC_FF_ZDEF, rot ? RC_D_E : RC_D_F),
+                         RC_F_REALD(nm[i][3], &bcoef, 0, 0, RC_D_NONE),
                          RC_F_REALD(nm[i][4], NULL, 0, 0, RC_D_NONE)};
-        rc_field fb[] = {RC_F_INTN(nm[i][5], NULL, RC_FF_ONLY0, fct),
+        rc_field fb[] = {RC_F_INT(nm[i][5], &p->fct6[i], 0, RC_FF_NONNEG),
                          RC_F_SET(nm[i][6], NULL, 0, 0, 0x1FFu, 0x1u, "(hardening and unloading of a nonlinear spring)"),
                          RC_F_INTN(nm[i][7], NULL, RC_FF_ONLY0, fct),
                          RC_F_INTN(nm[i][8], NULL, RC_FF_ONLY0, fct),
@@ -239,12 +255,55 @@ static rc_status rc_card_prop_gene(rc_reader *rd, const rc_block *b, rc_case_pro
                          RC_F_REALD(nm[i][10], &dmin, 0, 0, rot ? RC_D_NONE : RC_D_L),
                          RC_F_REALD(nm[i][11], &dmax, 0, 0, rot ? RC_D_NONE : RC_D_L)};
         rc_field fc[] = {RC_F_REALD(nm[i][12], NULL, 0, 0, RC_D_NONE), RC_F_REALD(nm[i][13], NULL, 0, 0, RC_D_NONE),
-                         RC_F_REALD(asc[i], NULL, 0, 0, RC_D_NONE), RC_F_REALD(hsc[i], NULL, 0, 0, RC_D_NONE)};
+                         RC_F_REALD(asc[i], &p->ascale6[i], 1, RC_FF_ZDEF | RC_FF_POS, rot ? RC_D_NONE : RC_D_L),
+                         RC_F_REALD(hsc[i], NULL, 0, 0, RC_D_NONE)};
         if ((st = rc_parse_line(rd, b, la, fa, RC_NF(fa)))) return st;
         if ((st = rc_parse_line(rd, b, lb, fb, RC_NF(fb)))) return st;
-        if ((st = rc_no_rupture(rd, b, &lb->loc, &fb[6], dmin, 1))) return st;
-        if ((st = rc_no_rupture(rd, b, &lb->loc, &fb[7], dmax, 0))) return st;
+        p->fct_loc[i] = lb->loc;
+        if (p->fct6[i] && bcoef != 0)
+            return rc_case_fail(rd, &la->loc, b->name, nm[i][3],
+                                "expected 0 or blank with a force curve, got %s: not supported yet (the logarithmic "
+                                "rate effect of a nonlinear spring)",
+                                fa[3].got);
+        /* rupture deformations: 0, blank or beyond 1e29 none */
+        p->dmin6[i] = dmin == 0 || dmin <= -1e29 ? -INFINITY : dmin;
+        p->dmax6[i] = dmax == 0 || dmax >= 1e29 ? INFINITY : dmax;
+        if (p->dmin6[i] >= 0)
+            return rc_case_fail(rd, &lb->loc, b->name, fb[6].name,
+                                "expected a negative deformation (the rupture in compression), 0 or blank (none), "
+                                "got %s",
+                                fb[6].got);
+        if (p->dmax6[i] <= 0)
+            return rc_case_fail(rd, &lb->loc, b->name, fb[7].name,
+                                "expected a positive deformation (the rupture in tension), 0 or blank (none), got %s",
+                                fb[7].got);
+        rupture |= isfinite(p->dmin6[i]) || isfinite(p->dmax6[i]);
         if ((st = rc_parse_line(rd, b, lc, fc, RC_NF(fc)))) return st;
+    }
+    /* the uni-directional criterion (Ifail 0) and the plain rupture
+     * (Ifail2 0) only, with rupture deformations */
+    if (rupture && ifail != 0)
+        return rc_case_fail(rd, &b->lines[1].loc, b->name, "Ifail",
+                            "expected 0 with rupture deformations (the spring breaks when one deformation reaches its "
+                            "bound), got %d: not supported yet (a multi-directional failure criterion)",
+                            ifail);
+    if (rupture && ifail2 != 0)
+        return rc_case_fail(rd, &b->lines[1].loc, b->name, "Ifail2",
+                            "expected 0 with rupture deformations, got %d: not supported yet (a failure model "
+                            "other than the deformation bounds)",
+                            ifail2);
+    if (beam && nd >= 20) { /* the rate filter: acts on the curves only */
+        rc_field fr[] = {RC_F_REALD("V0", NULL, 0, 0, RC_D_NONE), RC_F_REALD("W0", NULL, 0, 0, RC_D_NONE),
+                         RC_F_REALD("Fcut", NULL, 0, 0, RC_D_NONE), RC_F_INT("Fsmooth", NULL, 0, 0)};
+        if ((st = rc_parse_line(rd, b, &b->lines[20], fr, RC_NF(fr)))) return st;
+    }
+    for (int i = 0; beam && i < 6 && 21 + i <= nd; i++) { /* failure criteria: with rupture only */
+        static const char *const fn[6][4] = {{"c1", "n1", "alpha1", "beta1"}, {"c2", "n2", "alpha2", "beta2"},
+                                             {"c3", "n3", "alpha3", "beta3"}, {"c4", "n4", "alpha4", "beta4"},
+                                             {"c5", "n5", "alpha5", "beta5"}, {"c6", "n6", "alpha6", "beta6"}};
+        rc_field ff[] = {RC_F_REALD(fn[i][0], NULL, 0, 0, RC_D_NONE), RC_F_REALD(fn[i][1], NULL, 0, 0, RC_D_NONE),
+                         RC_F_REALD(fn[i][2], NULL, 0, 0, RC_D_NONE), RC_F_REALD(fn[i][3], NULL, 0, 0, RC_D_NONE)};
+        if ((st = rc_parse_line(rd, b, &b->lines[21 + i], ff, RC_NF(ff)))) return st;
     }
     return rc_note_id(rd, RC_IDK_PROP, p->id, &p->loc, b->hdr->text);
 }
@@ -254,8 +313,7 @@ static rc_status rc_card_prop_gene(rc_reader *rd, const rc_block *b, rc_case_pro
  * dmin dmax; F E Ascale Hscale (the last two lines optional). The linear
  * spring-damper F = K dl + C dl/dt is read; the curves, rate effects,
  * rupture, sensor and per-length input are not supported yet.
- * /PROP/SPR_GENE (TYPE8): rc_card_prop_gene; /PROP/SPR_BEAM (TYPE13): kept,
- * not read. */
+ * /PROP/SPR_GENE (TYPE8) and /PROP/SPR_BEAM (TYPE13): rc_card_prop_gene. */
 static rc_status rc_card_prop_spring(rc_reader *rd, const rc_block *b, int type)
 {
     static const char *const fct = "(a nonlinear or rate-dependent spring: ricochet reads the linear "
@@ -272,11 +330,7 @@ static rc_status rc_card_prop_spring(rc_reader *rd, const rc_block *b, int type)
     p->kind = RC_PROP_SPRING;
     p->sprtype = type;
     p->loc = b->hdr->loc;
-    if (type == 8) return rc_card_prop_gene(rd, b, p);
-    if (type != 4) {
-        if ((st = rc_var_lines(rd, b, p->title, "the property's lines", &nd))) return st;
-        return rc_note_id(rd, RC_IDK_PROP, p->id, &p->loc, b->hdr->text);
-    }
+    if (type == 8 || type == 13) return rc_card_prop_gene(rd, b, p);
     if ((st = rc_card_lines(rd, b, p->title, 2, 4,
                             "Mass sens_ID Isflag Ileng, K C A B D[, fct_ID1 H fct_ID2 fct_ID3 fct_ID4 dmin "
                             "dmax[, F E Ascale Hscale]]",

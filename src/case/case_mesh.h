@@ -38,14 +38,14 @@ typedef struct rc_case_spring {
     int id;            /* sprg_ID */
     int part_id;       /* from the card header */
     int nodes[2];      /* node_ID1, node_ID2 */
-    int skew_id;       /* Skew_ID (TYPE8 only; 0: the property's) */
+    int skew_id;       /* Skew_ID (TYPE8, TYPE13; 0: the property's) */
     rc_loc loc;        /* the element's line */
 } rc_case_spring;
 
 /* /PROP/SHELL (/PROP/TYPE1), /PROP/SOLID (/PROP/TYPE14) and the spring
- * properties /PROP/SPRING (/PROP/TYPE4: read), /PROP/SPR_GENE (TYPE8:
- * read, the linear stiffnesses and dampings) and /PROP/SPR_BEAM (TYPE13)
- * (kept, not read: an error when a spring uses it). */
+ * properties /PROP/SPRING (/PROP/TYPE4: read), /PROP/SPR_GENE (TYPE8)
+ * and /PROP/SPR_BEAM (TYPE13) (read: the stiffnesses or elastic curves and
+ * the dampings of six directions). */
 typedef enum { RC_PROP_SHELL = 1, RC_PROP_SOLID = 2, RC_PROP_SPRING = 3 } rc_prop_kind;
 
 typedef struct rc_case_prop {
@@ -54,12 +54,23 @@ typedef struct rc_case_prop {
     rc_prop_kind kind;
     double thick;      /* SHELL: Thick [m] */
     int sprtype;       /* SPRING: the Radioss type, 4, 8 or 13 */
-    double mass;       /* SPRING TYPE4: Mass [kg], shared by the two nodes */
+    double mass;       /* SPRING: Mass [kg], shared by the two nodes */
     double k, c;       /* SPRING TYPE4: K [N/m], C [N s/m] */
-    double inertia;    /* SPRING TYPE8: I [kg m^2] (read, not used) */
-    int skew_id;       /* SPRING TYPE8: Skew_ID of the element frame (0: global) */
-    double k6[6], c6[6]; /* SPRING TYPE8: K1..K6, C1..C6, directions X Y Z
-                            [N/m, N s/m] then RX RY RZ [N m/rad, N m s/rad] */
+    double inertia;    /* SPRING TYPE8, TYPE13: I [kg m^2] (read, not used) */
+    int skew_id;       /* SPRING TYPE8, TYPE13: Skew_ID of the element frame
+                          (TYPE13: of its Y axis; 0: global) */
+    double k6[6], c6[6]; /* SPRING TYPE8, TYPE13: K1..K6, C1..C6, directions
+                            X Y Z [N/m, N s/m] then RX RY RZ [N m/rad,
+                            N m s/rad] */
+    int fct6[6];       /* SPRING TYPE8, TYPE13: fct_ID1i, the elastic force
+                          (moment) curve of direction i (0: K_i) */
+    double a6[6];      /* Ai, the curve's ordinate scale (0 read as 1) [-] */
+    double ascale6[6]; /* Ascalei, the curve's abscissa scale (0 read as 1)
+                          [m, rad] */
+    rc_loc fct_loc[6]; /* the line of fct_ID1i */
+    double dmin6[6], dmax6[6]; /* SPRING TYPE8, TYPE13: rupture deformations
+                          dmin_i < 0 < dmax_i [m, rad]; -inf, +inf: none
+                          (0, blank or beyond 1e29 in the deck) */
     rc_loc loc;
     rc_loc thick_loc;  /* the line holding Thick; SPRING: the line of K and C */
 } rc_case_prop;

@@ -68,6 +68,12 @@ static rc_status alloc_arrays(rc_couplings *p, int n)
     CPL_ALLOC(p->cum, n);
     CPL_ALLOC(p->gk, 12 * n);
     CPL_ALLOC(p->gd0, 3 * n);
+    CPL_ALLOC(p->gfb, n);
+    CPL_ALLOC(p->gtab, 6 * n);
+    CPL_ALLOC(p->gdlo, 6 * n);
+    CPL_ALLOC(p->gdhi, 6 * n);
+    CPL_ALLOC(p->grup, n);
+    CPL_ALLOC(p->gsc, 12 * n);
     CPL_ALLOC(p->lambda0, n);
     CPL_ALLOC(p->leq, n);
     CPL_ALLOC(p->ea, n);
@@ -164,8 +170,8 @@ static rc_status compile_one(const rc_case *c, rc_model *m, int k, rc_error *err
 
 static int has_stops(const rc_case_joint *cj) { return cj->has_lo || cj->has_hi; }
 
-/* The law of /SPRING element se: its part's /PROP/SPRING (TYPE4) or
- * /PROP/SPR_GENE (TYPE8), checked. */
+/* The law of /SPRING element se: its part's /PROP/SPRING (TYPE4),
+ * /PROP/SPR_GENE (TYPE8) or /PROP/SPR_BEAM (TYPE13), checked. */
 static rc_status spring_prop(const rc_case *c, const rc_case_spring *se, const rc_case_prop **out, rc_error *err)
 {
     char card[64];
@@ -180,21 +186,14 @@ static rc_status spring_prop(const rc_case *c, const rc_case_spring *se, const r
     const rc_case_prop *q = qi >= 0 ? &c->mesh->prop[qi] : NULL;
     if (!q || q->kind != RC_PROP_SPRING)
         RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card /PART/%d, field prop_ID: expected the id of a /PROP/SPRING (/PROP/TYPE4) or /PROP/SPR_GENE (/PROP/TYPE8) for the spring elements of the part (e.g. %s spring %d at %s:%d), got %d (%s)",
+                 RC_LOCFMT "card /PART/%d, field prop_ID: expected the id of a /PROP/SPRING (/PROP/TYPE4), /PROP/SPR_GENE (/PROP/TYPE8) or /PROP/SPR_BEAM (/PROP/TYPE13) for the spring elements of the part (e.g. %s spring %d at %s:%d), got %d (%s)",
                  RC_LOC(rc_loc_or(pt->prop_loc, pt->loc)), pt->id, card, se->id, se->loc.file, se->loc.line, pt->prop_id,
-                 !q ? "no spring property with this id; ricochet reads /PROP/TYPE4 and /PROP/TYPE8 and ignores the other spring types"
+                 !q ? "no spring property with this id; ricochet reads /PROP/TYPE4, /PROP/TYPE8 and /PROP/TYPE13 and ignores the other spring types"
                     : q->kind == RC_PROP_SHELL ? "a /PROP/SHELL" : "a /PROP/SOLID");
-    if (q->sprtype == 13)
-        RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card /PART/%d, field prop_ID: /PROP/TYPE13 (SPR_BEAM) springs are not supported yet: a "
-                           "beam-like spring whose frame follows the line between its nodes and whose bending "
-                           "couples the translations to the rotations; expected a /PROP/TYPE4 (SPRING) or /PROP/TYPE8 "
-                           "(SPR_GENE), got /PROP/TYPE13/%d (%s:%d) for %s spring %d",
-                 RC_LOC(rc_loc_or(pt->prop_loc, pt->loc)), pt->id, q->id, q->loc.file, q->loc.line, card, se->id);
     if (q->sprtype == 4 && se->skew_id != 0)
         RC_RAISE(err, RC_EINPUT,
                  RC_LOCFMT "card %s, field Skew_ID: expected 0 or blank for a spring of a /PROP/TYPE4 (the skew is the "
-                           "frame of a /PROP/TYPE8 general spring), got %d (spring %d, /PROP/TYPE4/%d)",
+                           "frame of a /PROP/TYPE8 or /PROP/TYPE13 spring), got %d (spring %d, /PROP/TYPE4/%d)",
                  RC_LOC(se->loc), card, se->skew_id, se->id, q->id);
     *out = q;
     return RC_OK;
@@ -209,33 +208,111 @@ static int spring_inside_body(const rc_case *c, const rc_case_spring *se)
     return b1 >= 0 && b1 == rc_case_body_of_node(c, se->nodes[1]);
 }
 
-/* A /SPRING element of a /PROP/TYPE8 (SPR_GENE) as coupling k (form 5):
- * six linear stiffnesses and dampings in the frame of Skew_ID (the
- * element's when not 0, else the property's; 0: the global axes), fixed in
- * space; relaxed in the initial configuration (x: the two nodes). */
+/* The skew of a general or beam spring: the element's Skew_ID when not 0,
+ * else the property's; -1 when both are 0 (the global axes), else its
+ * index in the case mesh (checked). */
+static rc_status spring_skew(const rc_case *c, const rc_case_spring *se, const rc_case_prop *q, int *out,
+                             rc_error *err)
+{
+    const int sk = se->skew_id ? se->skew_id : q->skew_id;
+    *out = -1;
+    if (!sk) return RC_OK;
+    const int s = rc_case_find_skew(c, sk);
+    if (s < 0)
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card %s/%d, field Skew_ID: expected the id of a /SKEW/FIX, /SKEW/MOV or /SKEW/MOV2, got %d "
+                           "(no such skew; spring %d)",
+                 RC_LOC(se->skew_id ? se->loc : q->thick_loc), se->skew_id ? "/SPRING" : q->sprtype == 8 ? "/PROP/TYPE8" : "/PROP/TYPE13",
+                 se->skew_id ? se->part_id : q->id, sk, se->id);
+    *out = s;
+    return RC_OK;
+}
+
+/* The end (1, 2) of spring se whose body carries the moving skew s (its
+ * three nodes on that body), 0 when its nodes are in no body (the frame
+ * stays where it starts); an error when they are on several bodies or on a
+ * body that neither end of the spring is on. */
+static rc_status skew_carrier(const rc_case *c, const rc_couplings *p, int k, const rc_case_spring *se,
+                              const rc_case_prop *q, int s, int *fb, rc_error *err)
+{
+    const rc_case_skew *sk = &c->mesh->skew[s];
+    const rc_loc at = se->skew_id ? se->loc : q->thick_loc;
+    char where[48];
+    snprintf(where, sizeof where, "%s/%d", se->skew_id ? "/SPRING" : q->sprtype == 8 ? "/PROP/TYPE8" : "/PROP/TYPE13",
+             se->skew_id ? se->part_id : q->id);
+    const int b = rc_case_body_of_node(c, sk->nodes[0]);
+    for (int j = 1; j < 3; j++)
+        if (rc_case_body_of_node(c, sk->nodes[j]) != b)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card %s, field Skew_ID: expected a /SKEW/MOV%s whose three nodes are on one rigid body "
+                               "(or on none), got /SKEW/MOV%s/%d with nodes %d, %d, %d on different bodies: not "
+                               "supported yet (a frame deformed by its nodes; spring %d)",
+                     RC_LOC(at), where, sk->mov == 2 ? "2" : "", sk->mov == 2 ? "2" : "", sk->id, sk->nodes[0],
+                     sk->nodes[1], sk->nodes[2], se->id);
+    *fb = b < 0 ? 0 : b == p->b1[k] ? 1 : b == p->b2[k] ? 2 : -1;
+    if (*fb < 0)
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card %s, field Skew_ID: expected a /SKEW/MOV%s carried by the body of node %d or of node %d "
+                           "(the spring's ends) or by no body, got /SKEW/MOV%s/%d on /RBODY %d: not supported yet (a "
+                           "spring's frame carried by a third body; spring %d)",
+                 RC_LOC(at), where, sk->mov == 2 ? "2" : "", se->nodes[0], se->nodes[1], sk->mov == 2 ? "2" : "", sk->id,
+                 c->rbody[b].id, se->id);
+    return RC_OK;
+}
+
+/* A /SPRING element of a /PROP/TYPE8 (SPR_GENE) or /PROP/TYPE13 (SPR_BEAM)
+ * as coupling k (form 5): six linear stiffnesses and dampings in a frame
+ * E, relaxed in the initial configuration (x: the two nodes;
+ * docs/theory.md 8.1).
+ *   TYPE8: E = the axes of Skew_ID (the element's when not 0, else the
+ *   property's; 0: the global axes); a /SKEW/FIX stays fixed in space, a
+ *   /SKEW/MOV or /SKEW/MOV2 turns with the body that carries its nodes.
+ *   TYPE13: X' along node 1 -> node 2, Y' the skew's Y axis (global Y when
+ *   0) made normal to X' (the skew's Z axis, global Z, when Y is within
+ *   1e-6 of X'), Z' = X' x Y'; the skew's axes when the nodes coincide;
+ *   the frame turns with the body of node 1 (fixed when node 1 is in no
+ *   body). */
 static rc_status gene_elem(const rc_case *c, rc_couplings *p, const rc_case_spring *se, const rc_case_prop *q, int k,
                            const double *x[2], double dist, rc_error *err)
 {
-    const int sk = se->skew_id ? se->skew_id : q->skew_id;
+    int s;
+    rc_status st = spring_skew(c, se, q, &s, err);
+    if (st) return st;
     double *e = p->lfrm + 9 * k;
     memset(e, 0, 9 * sizeof *e);
     e[0] = e[4] = e[8] = 1.0;
-    if (sk) {
-        const int s = rc_case_find_skew(c, sk);
-        const rc_loc at = se->skew_id ? se->loc : q->thick_loc;
-        const char *where = se->skew_id ? "/SPRING" : "/PROP/TYPE8";
-        if (s < 0)
-            RC_RAISE(err, RC_EINPUT,
-                     RC_LOCFMT "card %s/%d, field Skew_ID: expected the id of a /SKEW/FIX, got %d (no such skew; spring %d)",
-                     RC_LOC(at), where, se->skew_id ? se->part_id : q->id, sk, se->id);
-        if (c->mesh->skew[s].mov)
-            RC_RAISE(err, RC_EINPUT,
-                     RC_LOCFMT "card %s/%d, field Skew_ID: expected a /SKEW/FIX, got /SKEW/MOV%s/%d: not supported yet (a "
-                               "general spring's frame carried by nodes; spring %d)",
-                     RC_LOC(at), where, se->skew_id ? se->part_id : q->id, c->mesh->skew[s].mov == 2 ? "2" : "", sk,
-                     se->id);
+    if (s >= 0)
         for (int j = 0; j < 3; j++)
             for (int i = 0; i < 3; i++) e[3 * j + i] = c->mesh->skew[s].axis[j][i];
+    p->gfb[k] = 0;
+    if (q->sprtype == 13) {
+        p->gfb[k] = 1;
+        if (dist > 0) {
+            double X[3], Y[3], Z[3];
+            for (int i = 0; i < 3; i++) X[i] = (x[1][i] - x[0][i]) / dist;
+            for (int pass = 0; pass < 2; pass++) {
+                const double *a = e + 3 * (1 + pass); /* the skew's Y, then Z */
+                const double ax = a[0] * X[0] + a[1] * X[1] + a[2] * X[2];
+                for (int i = 0; i < 3; i++) Y[i] = a[i] - ax * X[i];
+                const double ny = sqrt(Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2]);
+                if (ny > 1e-6 || pass == 1) {
+                    for (int i = 0; i < 3; i++) Y[i] /= ny;
+                    break;
+                }
+            }
+            Z[0] = X[1] * Y[2] - X[2] * Y[1];
+            Z[1] = X[2] * Y[0] - X[0] * Y[2];
+            Z[2] = X[0] * Y[1] - X[1] * Y[0];
+            for (int i = 0; i < 3; i++) {
+                e[i] = X[i];
+                e[3 + i] = Y[i];
+                e[6 + i] = Z[i];
+            }
+        }
+    } else if (s >= 0 && c->mesh->skew[s].mov) {
+        int fb;
+        if ((st = skew_carrier(c, p, k, se, q, s, &fb, err))) return st;
+        p->gfb[k] = fb;
     }
     p->form[k] = RC_KEFF_GENE;
     p->x0[k] = dist;
@@ -243,6 +320,16 @@ static rc_status gene_elem(const rc_case *c, rc_couplings *p, const rc_case_spri
     for (int i = 0; i < 6; i++) {
         p->gk[12 * k + i] = q->k6[i];
         p->gk[12 * k + 6 + i] = q->c6[i];
+        char card[40], field[16];
+        snprintf(card, sizeof card, "/PROP/TYPE%d/%d", q->sprtype, q->id);
+        snprintf(field, sizeof field, "fct_ID1%d", i + 1);
+        if ((st = rc_case_ref_funct(c, q->fct6[i], 0, q->fct_loc[i], card, field, &p->gtab[6 * k + i], err)))
+            return st;
+        p->gsc[12 * k + i] = q->a6[i];
+        p->gsc[12 * k + 6 + i] = q->ascale6[i];
+        p->gdlo[6 * k + i] = q->dmin6[i];
+        p->gdhi[6 * k + i] = q->dmax6[i];
+        if (isfinite(q->dmin6[i]) || isfinite(q->dmax6[i])) p->grup[k] = 0; /* numbered below */
     }
     for (int i = 0; i < 3; i++) p->gd0[3 * k + i] = x[1][i] - x[0][i];
     return RC_OK;
@@ -292,7 +379,7 @@ static rc_status compile_spring_elem(const rc_case *c, rc_model *m, int e, int k
                            "expected at least one node of a rigid body (a node in no body is a point fixed in space)",
                  RC_LOC(se->loc), card, se->id, se->nodes[0], se->nodes[1]);
     const double dist = sqrt(pow(x[1][0] - x[0][0], 2) + pow(x[1][1] - x[0][1], 2) + pow(x[1][2] - x[0][2], 2));
-    if (q->sprtype == 8) return gene_elem(c, p, se, q, k, x, dist, err);
+    if (q->sprtype == 8 || q->sprtype == 13) return gene_elem(c, p, se, q, k, x, dist, err);
     if (!(dist > 0))
         RC_RAISE(err, RC_EINPUT,
                  RC_LOCFMT "card %s, field node_ID2: spring %d has a zero length (nodes %d and %d coincide): a "
@@ -378,7 +465,7 @@ rc_status rc_cpl_compile(const rc_case *c, rc_model *m, rc_error *err)
     m->cpl->ncard = c->ncoupling + nspr;
     rc_status st = rc_cpl_contact_alloc(m, err);
     if (st) return st;
-    for (int k = 0; k < m->cpl->n; k++) m->cpl->ljoint[k] = -1;
+    for (int k = 0; k < m->cpl->n; k++) m->cpl->ljoint[k] = m->cpl->grup[k] = -1;
     for (int k = 0; k < c->ncoupling; k++) {
         m->cpl->ct->fadr[k + 1] = m->cpl->ct->fadr[k] = m->cpl->ct->nface; /* no faces unless a contact */
         st = compile_one(c, m, k, err);
@@ -394,6 +481,8 @@ rc_status rc_cpl_compile(const rc_case *c, rc_model *m, rc_error *err)
         m->cpl->ct->fadr[k + 1] = m->cpl->ct->fadr[k] = m->cpl->ct->nface;
         if ((st = compile_stop(c, m, j, k++, err))) return st;
     }
+    for (int k = 0; k < m->cpl->n; k++) /* the springs' rupture roots, in order */
+        if (m->cpl->grup[k] >= 0) m->cpl->grup[k] = m->cpl->nrup++;
     return RC_OK;
 }
 
@@ -436,7 +525,7 @@ void rc_cpl_free(rc_couplings *p)
     }
     void *arrays[] = {p->id,  p->kind, (void *)p->type, p->name, p->b1,   p->b2,   p->s1,      p->s2,  p->eadr,
                       p->form, p->x0,  p->kd,   p->coef, p->table, p->fref,   p->xref, p->cum,
-                      p->lambda0, p->leq, p->ea, p->jb, p->gk, p->gd0, p->law_loc, p->ljoint, p->lrev, p->lfrm, p->llo, p->lhi};
+                      p->lambda0, p->leq, p->ea, p->jb, p->gk, p->gd0, p->gfb, p->gtab, p->gsc, p->gdlo, p->gdhi, p->grup, p->law_loc, p->ljoint, p->lrev, p->lfrm, p->llo, p->lhi};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) free(arrays[k]);
     rc_cpl_contact_free(p->ct);
     free(p);

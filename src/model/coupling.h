@@ -46,6 +46,12 @@ enum { RC_LIM_FREE = 0, RC_LIM_LO_PUSH = 1, RC_LIM_LO_REL = 2, RC_LIM_HI_PUSH = 
  * faces: q - q_min, q_max - q (1 without that stop), the unclipped force
  * of the stop q is past (1 within the stops). */
 #define RC_LIM_ROOTS 3
+/* A general or beam spring with rupture deformations (form 5, grup >= 0):
+ * rc_cpl_data.lmode 0 whole, RC_SPR_BROKEN once a deformation has reached
+ * its bound (for good: no force after). One root per such spring, after the
+ * joint stops': the least distance of a deformation to its bound
+ * (docs/theory.md 8.1). */
+#define RC_SPR_BROKEN 1
 
 /* Stiffness forms of a spring-damper (docs/theory.md 8, card field Iform). */
 typedef enum {
@@ -53,9 +59,10 @@ typedef enum {
     RC_KEFF_POLY = 2,  /* k_eff = a + b (x - x0) + c (x - x0)^2             */
     RC_KEFF_FORCE = 3, /* tabulated elastic force f_e(x)                   */
     RC_KEFF_STIFF = 4, /* tabulated stiffness k(x), integrated              */
-    RC_KEFF_GENE = 5   /* a /PROP/TYPE8 general spring: six linear
-                          stiffnesses and dampings in a fixed frame
-                          (docs/theory.md 8.1)                             */
+    RC_KEFF_GENE = 5   /* a /PROP/TYPE8 general spring or /PROP/TYPE13
+                          beam spring: six linear stiffnesses and
+                          dampings in a frame fixed in space or turning
+                          with one end's body (docs/theory.md 8.1)        */
 } rc_keff_form;
 
 /* Horizontal spans below this fraction of L_eq are treated as vertical
@@ -90,6 +97,19 @@ typedef struct rc_couplings {
     double *gk;          /* [n*12] K1..K6 [N/m, N m/rad], C1..C6 [N s/m,
                             N m s/rad]                                       */
     double *gd0;         /* [n*3] p2 - p1 at t = 0, global [m]               */
+    int *gtab;           /* [n*6] per direction the table of the elastic
+                            curve f_i (fct_ID1i), -1: the linear K_i       */
+    double *gsc;         /* [n*12] the curves' scales A_1..A_6 [N, N m],
+                            Ascale_1..Ascale_6 [m, rad]: F_i = A_i f_i(u_i /
+                            Ascale_i)                                       */
+    double *gdlo, *gdhi; /* [n*6] rupture bounds of u_1..u_3 [m], theta_1..
+                            theta_3 [rad]: -inf, +inf none                  */
+    int *grup;           /* [n] index of the spring's rupture root among
+                            them, -1: no rupture                            */
+    int nrup;            /* springs with rupture                            */
+    int *gfb;            /* [n] the end whose body carries the frame: 0 none
+                            (fixed in space), 1 or 2; the frame in lfrm is
+                            then its axes at t = 0 (body frame = global)   */
     /* catenary */
     double *lambda0;     /* [n] mass per unstretched length [kg/m]            */
     double *leq;         /* [n] unstretched length [m]                        */
@@ -134,6 +154,8 @@ typedef struct rc_cpl_report {
                             together); catenary: tension at end 1 [N]       */
     double f1[3], f2[3]; /* force applied to end 1 and to end 2, global [N]  */
     double c, u1, u2;    /* catenary parameters (docs/theory.md 8); 0 for springs      */
+    double def[6];       /* general spring: u_1..u_3 [m], theta_1..theta_3
+                            [rad] in its frame; 0 for the others          */
     double lowest;       /* catenary: height of its lowest point along -g,
                             from the origin [m] (an end when the line does
                             not sag below it); NaN for springs              */
@@ -145,7 +167,8 @@ typedef struct rc_cpl_data {
     void *ws;            /* catenary solver workspace (GSL)                  */
     int fail;            /* coupling whose forces failed in the last call, -1 */
     int *fmode;          /* [ct->nface] contact coupling face modes RC_FACE_* */
-    int *lmode;          /* [n] joint stop modes RC_LIM_* (other kinds: 0)   */
+    int *lmode;          /* [n] joint stop modes RC_LIM_*; a spring with
+                            rupture: 0 or RC_SPR_BROKEN (other kinds: 0)   */
 } rc_cpl_data;
 
 /* ---- compile (model/coupling.c) ---------------------------------- */

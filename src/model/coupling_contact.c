@@ -45,8 +45,10 @@ void rc_cpl_contact_free(rc_cpl_contact *ct)
 
 int rc_cpl_nroots(const rc_model *m)
 {
-    /* the faces of the contact couplings, then the joint stops */
-    return (m->cpl && m->cpl->ct ? RC_FACE_ROOTS * m->cpl->ct->nface : 0) + RC_LIM_ROOTS * rc_cpl_nlim(m);
+    /* the faces of the contact couplings, then the joint stops, then the
+     * springs' ruptures */
+    return (m->cpl && m->cpl->ct ? RC_FACE_ROOTS * m->cpl->ct->nface : 0) + RC_LIM_ROOTS * rc_cpl_nlim(m) +
+           (m->cpl ? m->cpl->nrup : 0);
 }
 
 int rc_root_sens_base(const rc_model *m) { return rc_root_cpl_base(m) + rc_cpl_nroots(m); }

@@ -524,7 +524,8 @@ static rc_status nodal_masses(const rc_case *c, mp_work *w, rc_error *err)
     return RC_OK;
 }
 
-/* The mass of the /PROP/SPRING (TYPE4) and /PROP/SPR_GENE (TYPE8) springs (not
+/* The mass of the /PROP/SPRING (TYPE4), /PROP/SPR_GENE (TYPE8) and
+ * /PROP/SPR_BEAM (TYPE13) springs (not
  * their inertia, docs/case-format.md): half on each node, as
  * Radioss lumps it; a node of a rigid body gives its share to the body
  * (a point mass, or the main node's mass), a node in no body keeps it (a
@@ -536,7 +537,7 @@ static void spring_masses(const rc_case *c, mp_work *w)
         const rc_case_spring *se = &c->mesh->spring[e];
         const int pi = rc_case_find_part(c, se->part_id);
         const int qi = pi >= 0 && c->part[pi].prop_id ? rc_case_find_prop(c, c->part[pi].prop_id) : -1;
-        if (qi < 0 || c->mesh->prop[qi].kind != RC_PROP_SPRING || (c->mesh->prop[qi].sprtype != 4 && c->mesh->prop[qi].sprtype != 8))
+        if (qi < 0 || c->mesh->prop[qi].kind != RC_PROP_SPRING || c->mesh->prop[qi].sprtype == 0)
             continue;
         const double mk = 0.5 * c->mesh->prop[qi].mass;
         if (!(mk > 0)) continue;

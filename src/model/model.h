@@ -431,7 +431,8 @@ void rc_state_name(const rc_model *m, int i, char *buf, size_t n);
  * then one landing root per such point (its depth q_j below the level of the
  * shares, rising through 0 as it takes a share; at rc_root_land_base); the
  * contact couplings' faces (at rc_root_cpl_base; coupling_contact.h), then
- * RC_LIM_ROOTS per joint with stops (coupling.h); last two per sensor
+ * RC_LIM_ROOTS per joint with stops (coupling.h), then one per spring with
+ * rupture deformations (coupling.h, RC_SPR_BROKEN); last two per sensor
  * (rc_root_sens_base). */
 static inline int rc_root_point_base(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter; }
 static inline int rc_root_land_base(const rc_model *m) { return RC_ROOTS_PER_INTER * m->ninter + m->npt; }

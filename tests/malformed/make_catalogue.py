@@ -478,8 +478,8 @@ TL('power_sensor_missing', PW, 'field Isensor', at(PW, 2, 61, 70, '9'))
 SPR_PART = ['/PART/9', 'springs', '         9         0']
 SPR_ELEM = ['/SPRING/9', '        31         1         2']
 PROP4 = ['/PROP/TYPE4/9', 'spring', '                   0', '                 100                   1']
-TL('spring_prop_type13', '/PART/9', 'field prop_ID',
-   before_end(SPR_PART + ['/PROP/TYPE13/9', 'beam spring', '                   0'] + SPR_ELEM, expect=2))
+TL('beam_lines_missing', '/PROP/TYPE13/9', 'expected 19 data lines',
+   before_end(SPR_PART + ['/PROP/TYPE13/9', 'beam spring', '                   0'] + SPR_ELEM, expect=3))
 TL('spring_prop_missing', '/PART/9', 'field prop_ID', before_end(SPR_PART + SPR_ELEM, expect=2))
 TL('spring_node3', '/SPRING/9', 'field node_ID3',
    before_end(SPR_PART + PROP4 + ['/SPRING/9', '        31         1         2         3'], expect=8))
@@ -715,14 +715,46 @@ def GENE(**kw):
 
 TL('gene_lines_missing', '/PROP/TYPE8/9', 'expected 19 data lines',
    before_end(SPR_PART + ['/PROP/TYPE8/9', 'general spring', '                   0'] + SPR_ELEM, expect=3))
-TL('gene_curve', '/PROP/TYPE8/9', 'field fct_ID14', before_end(GENE(edit=(10, '         5')), expect=16))
-TL('gene_rupture', '/PROP/TYPE8/9', 'field dmax2', before_end(GENE(edit=(4, '%60s%40s' % ('', '0.02'))), expect=10))
+TL('gene_curve', '/PROP/TYPE8/9', 'field fct_ID24', before_end(GENE(edit=(10, '%30s' % '5')), expect=16))
+TL('gene_rupture', '/PROP/TYPE8/9', 'field dmax2', before_end(GENE(edit=(4, '%60s%40s' % ('', '-0.02'))), expect=10))
 TL('gene_iequil', '/PROP/TYPE8/9', 'field Iequil', before_end(GENE(l1='%20s%20s%50s%10s' % ('0', '0', '', '1')), expect=5))
 TL('gene_sensor', '/PROP/TYPE8/9', 'field sens_ID', before_end(GENE(l1='%20s%20s%10s%10s' % ('0', '0', '', '3')), expect=5))
 TL('gene_k_negative', '/PROP/TYPE8/9', 'field K3', before_end(GENE(edit=(6, '                  -5')), expect=12))
 TL('gene_skew_missing', '/PROP/TYPE8/9', 'field Skew_ID', before_end(GENE(l1='%20s%20s%10s' % ('0', '0', '7')), expect=5))
 TL('spring_skew_type4', '/SPRING/9', 'field Skew_ID',
    before_end(SPR_PART + PROP4 + ['/SPRING/9', '        31         1         2' + ' ' * 40 + '%10s' % '7'], expect=8))
+
+
+# ---- /PROP/TYPE13 (SPR_BEAM): line 1 Mass I Skew_ID sens_ID Isflag Ifail
+# Ileng Ifail2, the 18 direction lines of TYPE8, then optional lines
+def PROP13(l1='                   0', edit=None):
+    lines = PROP8(l1, edit)
+    lines[0] = '/PROP/TYPE13/9'
+    lines[1] = 'beam spring'
+    return lines
+
+
+TL('beam_ileng', '/PROP/TYPE13/9', 'field Ileng',
+   before_end(SPR_PART + PROP13(l1='%20s%20s%40s%10s' % ('0', '0', '', '1')) + SPR_ELEM, expect=5))
+TL('beam_curve_missing', '/PROP/TYPE13/9', 'field fct_ID15',
+   before_end(SPR_PART + PROP13(edit=(13, '         4')) + SPR_ELEM, expect=19))
+TL('spring_skew_mov_bodies', '/SPRING/9', 'field Skew_ID',
+   before_end(SPR_PART + ['/SKEW/MOV/7', 'moving', '         1         2         3'] + PROP8() +
+              ['/SPRING/9', '        31         1         2' + ' ' * 40 + '%10s' % '7'], expect=28))
+
+
+
+def GENE_LOG():
+    lines = PROP8()
+    lines[3] = '%20s%20s%20s%20s' % ('100', '1', '1', '0.5')
+    lines[4] = '         3'
+    return SPR_PART + lines + SPR_ELEM
+
+
+TL('gene_curve_log_rate', '/PROP/TYPE8/9', 'field B1', before_end(GENE_LOG(), expect=6))
+TL('gene_rupture_ifail', '/PROP/TYPE8/9', 'field Ifail',
+   before_end(SPR_PART + PROP8(l1='%20s%20s%30s%10s' % ('0', '0', '', '1'), edit=(4, '%60s%40s' % ('', '0.02'))) +
+              SPR_ELEM, expect=5))
 
 
 def write_all():

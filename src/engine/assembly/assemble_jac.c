@@ -551,8 +551,10 @@ int rc_cpl_dense_block(const rc_model *m, const rc_data *d, int k, double t, con
     for (int col = 0; col < jb->ncol; col++) {
         T *yp = col < n1 ? ya + col : yb + (col - n1);
         rc_cs_step(yp);
-        T acc[12] = {0}, edot[RC_CE];
-        if (c->kind[k] == RC_CPL_SPRING)
+        T acc[12] = {0}, edot[RC_CE] = {0};
+        if (c->kind[k] == RC_CPL_SPRING && d && c->grup[k] >= 0 && d->cpl->lmode[k] == RC_SPR_BROKEN) {
+            /* a broken spring: no force, no energy rate */
+        } else if (c->kind[k] == RC_CPL_SPRING)
             spring_c(m, k, ya, yb, n1 ? acc : NULL, f2 ? acc + 6 : NULL, edot, NULL);
         else if (c->kind[k] == RC_CPL_LIMIT) /* no data (the pattern's probe): pushing past a stop */
             jlimit_c(m, k, d ? d->cpl->lmode[k] : isfinite(c->llo[k]) ? RC_LIM_LO_PUSH : RC_LIM_HI_PUSH, ya, yb, n1 ? acc : NULL, f2 ? acc + 6 : NULL, edot,

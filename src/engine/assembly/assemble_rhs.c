@@ -420,7 +420,9 @@ int rc_cpl_rhs(const rc_model *m, const rc_data *d, double t, const double *y, d
         const double *y1 = rc_body_state(m, b1, y), *y2 = rc_body_state(m, b2, y);
         double *a1 = acc_slot(m, b1, ydot), *a2 = acc_slot(m, b2, ydot);
         int bad = 0;
-        if (c->kind[k] == RC_CPL_SPRING) {
+        if (c->kind[k] == RC_CPL_SPRING && c->grup[k] >= 0 && d->cpl->lmode[k] == RC_SPR_BROKEN) {
+            edot[0] = edot[1] = 0.0; /* a broken spring: no force */
+        } else if (c->kind[k] == RC_CPL_SPRING) {
             spring_r(m, k, y1, y2, a1, a2, edot, NULL);
         } else if (c->kind[k] == RC_CPL_CONTACT) {
             contact_cpl_r(m, k, d->cpl->fmode, 0, y1, y2, a1, a2, edot, NULL);
@@ -451,6 +453,10 @@ int rc_cpl_report_eval(const rc_model *m, const rc_data *d, int k, double t, con
     if (c->kind[k] == RC_CPL_SPRING) {
         spring_r(m, k, y1, y2, NULL, NULL, NULL, r);
         r->lowest = NAN;
+        if (d && c->grup[k] >= 0 && d->cpl->lmode[k] == RC_SPR_BROKEN) { /* broken: no force */
+            r->force = 0.0;
+            for (int i = 0; i < 3; i++) r->f1[i] = r->f2[i] = 0.0;
+        }
         return !isfinite(r->force);
     }
     if (c->kind[k] == RC_CPL_CONTACT) return contact_report(m, d, k, y, r);
@@ -663,6 +669,55 @@ static int lim_events(const rc_model *m, rc_data *d, const double *y, const int 
     return n;
 }
 
+/* ---- spring ruptures (after the joint stops' roots: one per spring with
+ * rupture deformations, docs/theory.md 8.1) ---- */
+static int rup_root0(const rc_model *m)
+{
+    return RC_FACE_ROOTS * m->cpl->ct->nface + RC_LIM_ROOTS * rc_cpl_nlim(m);
+}
+
+/* The least distance of spring k's deformations to their rupture bounds
+ * (relative to each bound): > 0 whole, reaching 0 at the rupture. */
+static double rup_margin(const rc_model *m, int k, const double *y)
+{
+    const rc_couplings *c = m->cpl;
+    rc_cpl_report r;
+    spring_r(m, k, rc_body_state(m, c->b1[k], y), rc_body_state(m, c->b2[k], y), NULL, NULL, NULL, &r);
+    double g = 1.0;
+    for (int i = 0; i < 6; i++) {
+        const double lo = c->gdlo[6 * k + i], hi = c->gdhi[6 * k + i];
+        if (isfinite(lo)) g = fmin(g, 1.0 - r.def[i] / lo);
+        if (isfinite(hi)) g = fmin(g, 1.0 - r.def[i] / hi);
+    }
+    return g;
+}
+
+static void rup_roots(const rc_model *m, const rc_data *d, const double *y, double *g)
+{
+    const rc_couplings *c = m->cpl;
+    if (!c->nrup) return;
+    double *g0 = g + rup_root0(m);
+    for (int k = 0; k < c->n; k++)
+        if (c->grup[k] >= 0) g0[c->grup[k]] = d->cpl->lmode[k] == RC_SPR_BROKEN ? 1.0 : rup_margin(m, k, y);
+}
+
+static int rup_events(const rc_model *m, rc_data *d, const int *roots, rc_event_kind *kinds, int *cpls, int max_ev,
+                      int *restart, int n)
+{
+    const rc_couplings *c = m->cpl;
+    for (int k = 0; c->nrup && k < c->n; k++) {
+        if (c->grup[k] < 0 || d->cpl->lmode[k] == RC_SPR_BROKEN || roots[rup_root0(m) + c->grup[k]] == 0) continue;
+        d->cpl->lmode[k] = RC_SPR_BROKEN;
+        *restart = 1;
+        if (n < max_ev) {
+            kinds[n] = RC_EV_SPRING_RUPTURE;
+            cpls[n] = k;
+        }
+        n++;
+    }
+    return n;
+}
+
 void rc_cpl_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
 {
     (void)t;
@@ -678,6 +733,7 @@ void rc_cpl_roots(const rc_model *m, const rc_data *d, double t, const double *y
         }
     }
     lim_roots(m, d, y, g);
+    rup_roots(m, d, y, g);
 }
 
 void rc_cpl_root_dirs(const rc_model *m, const rc_data *d, int *dir)
@@ -689,6 +745,9 @@ void rc_cpl_root_dirs(const rc_model *m, const rc_data *d, int *dir)
         dir[RC_FACE_ROOTS * f + 1] = mode == RC_FACE_PUSH ? -1 : 1;
     }
     lim_root_dirs(m, d, dir);
+    const rc_couplings *c = m->cpl;
+    for (int k = 0; c->nrup && k < c->n; k++) /* a rupture: the margin falling through 0, once */
+        if (c->grup[k] >= 0) dir[rup_root0(m) + c->grup[k]] = d->cpl->lmode[k] == RC_SPR_BROKEN ? 0 : -1;
 }
 
 void rc_cpl_modes_init(const rc_model *m, rc_data *d, double t, const double *y)
@@ -698,6 +757,8 @@ void rc_cpl_modes_init(const rc_model *m, rc_data *d, double t, const double *y)
     for (int k = 0; k < c->n; k++)
         if (c->kind[k] == RC_CPL_CONTACT) cface_modes(m, k, y, d->cpl->fmode);
         else if (c->kind[k] == RC_CPL_LIMIT) d->cpl->lmode[k] = lim_mode(m, k, y);
+        else if (c->grup[k] >= 0) /* whole, unless a preload left it past a bound */
+            d->cpl->lmode[k] = rup_margin(m, k, y) <= 0 ? RC_SPR_BROKEN : 0;
 }
 
 int rc_cpl_events(const rc_model *m, rc_data *d, double t, const double *y, const int *roots, rc_event_kind *kinds,
@@ -743,5 +804,6 @@ int rc_cpl_events(const rc_model *m, rc_data *d, double t, const double *y, cons
             n++;
         }
     }
-    return lim_events(m, d, y, roots, kinds, cpls, max_ev, restart, n);
+    n = lim_events(m, d, y, roots, kinds, cpls, max_ev, restart, n);
+    return rup_events(m, d, roots, kinds, cpls, max_ev, restart, n);
 }

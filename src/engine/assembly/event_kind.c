@@ -39,6 +39,7 @@ static const char *const names[RC_EV_NKINDS] = {
     [RC_EV_SENSOR_TRIGGER] = "sensor_trigger",
     [RC_EV_METHOD_EXPLICIT] = "method_explicit",
     [RC_EV_METHOD_IMPLICIT] = "method_implicit",
+    [RC_EV_SPRING_RUPTURE] = "spring_rupture",
 };
 
 const char *rc_event_kind_name(rc_event_kind k)

@@ -53,6 +53,8 @@ typedef enum rc_event_kind {
      * back to BDF (/SOLVER Switch 1) */
     RC_EV_METHOD_EXPLICIT,
     RC_EV_METHOD_IMPLICIT,
+    /* a general or beam spring breaks (a deformation reached its bound) */
+    RC_EV_SPRING_RUPTURE,
     RC_EV_NKINDS
 } rc_event_kind;
 

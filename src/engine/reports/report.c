@@ -305,10 +305,19 @@ void rc_cpl_print_summary(const rc_model *m, FILE *f)
             rc_cpl_contact_print(m, k, ok ? &r : NULL, f);
         else if (p->kind[k] == RC_CPL_SPRING && p->form[k] == RC_KEFF_GENE) {
             const double *g = p->gk + 12 * k;
-            fprintf(f, "%s, K %.5g %.5g %.5g N/m, %.5g %.5g %.5g N m/rad, C %.5g %.5g %.5g N s/m, %.5g %.5g %.5g "
-                       "N m s/rad; at t = 0: displacement %.5g m, force %.5g N\n",
-                    form_name[p->form[k]], g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7], g[8], g[9], g[10], g[11],
-                    ok ? r.length : NAN, ok ? r.force : NAN);
+            const int fb = p->gfb[k], fbody = fb == 1 ? p->b1[k] : fb == 2 ? p->b2[k] : -1;
+            char curves[64] = "";
+            for (int i = 0, n = 0; i < 6; i++)
+                if (p->gtab[6 * k + i] >= 0)
+                    n += snprintf(curves + n, sizeof curves - (size_t)n, "%s%s", n ? " " : ", curves in ",
+                                  (const char *const[]){"X'", "Y'", "Z'", "RX'", "RY'", "RZ'"}[i]);
+            char frame[48];
+            if (fbody >= 0) snprintf(frame, sizeof frame, "frame turning with body %d", m->body_id[fbody]);
+            else snprintf(frame, sizeof frame, "frame fixed in space");
+            fprintf(f, "%s, %s, K %.5g %.5g %.5g N/m, %.5g %.5g %.5g N m/rad, C %.5g %.5g %.5g N s/m, %.5g %.5g %.5g "
+                       "N m s/rad%s; at t = 0: displacement %.5g m, force %.5g N\n",
+                    form_name[p->form[k]], frame, g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7], g[8], g[9], g[10],
+                    g[11], curves, ok ? r.length : NAN, ok ? r.force : NAN);
         } else if (p->kind[k] == RC_CPL_SPRING)
             fprintf(f, "%s, x0 %.5g m, k_d %.5g N s/m; at t = 0: length %.5g m, force %.5g N\n",
                     form_name[p->form[k]], p->x0[k], p->kd[k], ok ? r.length : NAN, ok ? r.force : NAN);

@@ -239,7 +239,12 @@ static void test_type24_model_errors(void)
     text = deck_with("        31         9         1", "        31         9       100");
     ENSURE(text != NULL);
     if (text)
-        TU_EXPECT_TEXT_ERROR(text, "t24istf2.rad", "card /INTER/TYPE24/25, field Istf", "not supported yet");
+        TU_EXPECT_TEXT_ERROR(text, "t24istf100.rad", "card /INTER/TYPE24/25, field Istf", "expected 0, 1000",
+                             "2, 3, 4 or 5", "got \"100\"");
+    text = deck_with("        31         9         1", "        31         9         6");
+    ENSURE(text != NULL);
+    if (text)
+        TU_EXPECT_TEXT_ERROR(text, "t24istf6.rad", "card /INTER/TYPE24/25, field Istf", "not supported yet");
 }
 
 /* /INTER/TYPE25/26 between the two boxes' faces (Istf 1, Stfac 4.2e4 N/m,

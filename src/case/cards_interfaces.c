@@ -531,18 +531,15 @@ static rc_status t24_checks(rc_reader *rd, const rc_block *b, rc_case_type24 *t,
     /* the stiffness: Stfac a stiffness value (Istf 1), or a factor on the
      * shells' stiffness (0, 1000: model/type7.c) */
     if (t->istf == RC_T7_DEFAULT) t->istf = 0;
-    if (t->istf == 6 && (t->type == 24 || t->type == 25))
-        return rc_case_fail(rd, &t->line_loc[0], b->name, "Istf",
-                            "got %s: not supported yet; expected 0, 1000 (the shells' stiffness times Stfac, the "
-                            "mean over both surfaces), 1 (Stfac is the stiffness [N/m]), 2, 3, 4 or 5 (the two "
-                            "surfaces' stiffnesses times Stfac: their mean, larger, smaller, or in series)",
-                            f->istf->got);
+    /* TYPE24's Istf 6 (Radioss: the smaller of the two, adjusted for the
+     * convergence of its implicit solver) is read as 4 (docs/theory.md 3.8) */
+    if (t->istf == 6 && t->type == 24) t->istf = 4;
     if (t->istf > 5)
         return rc_case_fail(rd, &t->line_loc[0], b->name, "Istf",
                             "expected 0, 1000 (the shells' stiffness times Stfac, the mean over both surfaces), 1 "
                             "(Stfac is the stiffness [N/m]), 2, 3, 4 or 5 (the two surfaces' stiffnesses times "
-                            "Stfac: their mean, larger, smaller, or in series), got %s",
-                            f->istf->got);
+                            "Stfac: their mean, larger, smaller, or in series)%s, got %s",
+                            t->type == 24 ? " or 6 (read as 4)" : "", f->istf->got);
     if (t->istf == 1 && !(t->stfac > 0))
         return rc_case_fail(rd, &t->line_loc[3], b->name, "Stfac",
                             "with Istf 1, Stfac is the interface stiffness: expected a value > 0 [N/m], got %s",
@@ -564,7 +561,8 @@ static rc_status t24_checks(rc_reader *rd, const rc_block *b, rc_case_type24 *t,
         if (t->inacti != 0 && t->inacti != 5)
             return rc_case_fail(rd, &t->line_loc[4], b->name, "Inacti",
                                 "expected -1 (every initial penetration acts), 0, blank, 1000 (no action) or 5 (the "
-                                "gap reduced by the initial penetration), got %s: not supported yet",
+                                "gap reduced by the initial penetration), Radioss's values of TYPE%d, got %s",
+                                t->type,
                                 f->inacti->got);
     }
     if (t->tstop < t->tstart)

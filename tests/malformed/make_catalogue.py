@@ -600,7 +600,7 @@ SEGS24 = ['/NODE', '        91                   0                   0          
           '/SURF/SEG/95', 'upper side', '         1        91        92        93        94',
           '/SURF/SEG/96', 'lower side', '         1        94        93        92        91']
 T24H = '/INTER/TYPE24/96'
-TL('type24_istf_6', T24H, 'field Istf', before_end(T24(l1='         2         4         6'), expect=2))
+TL('type24_istf_7', T24H, 'field Istf', before_end(T24(l1='         2         4         7'), expect=2))
 TL('type24_stfac_blank', T24H, 'field Stfac', before_end(T24(l4=STOP('', '0.3')), expect=5))
 TL('type24_stmax_below_stmin', T24H, 'field Stmax', before_end(T24(l3=STOP('2e5', '1e5')), expect=4))
 TL('type24_self_contact', T24H, 'field surf_ID2', before_end(T24(l1='         2         0         1'), expect=2))

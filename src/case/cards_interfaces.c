@@ -310,10 +310,13 @@ static rc_status t7_inacti(rc_reader *rd, const rc_block *b, const rc_loc *loc, 
     if (*inacti == 1 || *inacti == 2)
         return rc_case_fail(rd, loc, b->name, "Inacti",
                             "got %s: not supported yet: Inacti %d takes the initially penetrating %s out of the "
-                            "contact for the whole run, where ricochet's contact of a rigid body keeps every point "
-                            "of it; expected 0, blank, 1000 (no action), 5 or 6 (the gap reduced by the initial "
-                            "penetration)",
-                            f->got, *inacti, *inacti == 1 ? "secondary nodes" : "main segments");
+                            "contact for the whole run, where ricochet's contact keeps every %s of the card (its "
+                            "contact points are fixed before the first pose is evaluated); expected 0, blank, 1000 "
+                            "(no action), 5 or 6 (the gap reduced by the initial penetration), or, to the same "
+                            "effect, those %s left out of the card's %s",
+                            f->got, *inacti, *inacti == 1 ? "secondary nodes" : "main segments",
+                            *inacti == 1 ? "node" : "segment", *inacti == 1 ? "nodes" : "segments",
+                            *inacti == 1 ? "secondary side" : "main side");
     if (*inacti == 3)
         return rc_case_fail(rd, loc, b->name, "Inacti",
                             "got %s: not supported: Inacti 3 moves the penetrating nodes onto the surface, which "

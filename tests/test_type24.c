@@ -239,7 +239,21 @@ static void test_type24_model_errors(void)
     text = deck_with("        31         9         1", "        31         9       100");
     ENSURE(text != NULL);
     if (text)
-        TU_EXPECT_TEXT_ERROR(text, "t24istf2.rad", "card /INTER/TYPE24/25, field Istf", "not supported yet");
+        TU_EXPECT_TEXT_ERROR(text, "t24istf100.rad", "card /INTER/TYPE24/25, field Istf", "expected 0, 1000",
+                             "2, 3, 4 or 5", "got \"100\"");
+    /* TYPE24's Istf 6 (the smaller, adjusted for Radioss's implicit
+     * solver) is read as 4 */
+    text = deck_with("        31         9         1", "        31         9         6");
+    ENSURE(text != NULL);
+    if (text) {
+        rc_case *c = NULL;
+        rc_error e;
+        rc_error_clear(&e);
+        const rc_status st = rc_case_load(tu_tmp_write("t24istf6.rad", text), &c, &e);
+        ENSURE(st == RC_OK && c->type24[1].istf == 4);
+        if (st) fprintf(stderr, "  %s\n", e.msg);
+        rc_case_free(c);
+    }
 }
 
 /* /INTER/TYPE25/26 between the two boxes' faces (Istf 1, Stfac 4.2e4 N/m,
@@ -327,7 +341,7 @@ static void test_type25(void)
 }
 
 /* TYPE24's Inacti -1 (every initial penetration acts): ricochet's 0, no
- * offset; values TYPE24 lacks refused. */
+ * offset; values TYPE24 lacks (Radioss has -1, 0, 5, 1000) are errors. */
 static void test_type24_inacti(void)
 {
     static const char from[] = "         5                 0.2", to[] = "        -1                 0.2";
@@ -338,7 +352,7 @@ static void test_type24_inacti(void)
     }
     TU_EXPECT_TEXT_ERROR(deck_with(from, "         6                 0.2"), "t24inacti6.rad",
                          "card /INTER/TYPE24/24, field Inacti", "expected -1 (every initial penetration acts)",
-                         "not supported yet");
+                         "Radioss's values of TYPE24");
 }
 
 void suite_type24(void);

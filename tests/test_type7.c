@@ -276,6 +276,186 @@ static void test_type7_inacti(void)
     }
 }
 
+/* Shells for Istf 2-5 and Igap 1, 2: the lower faces /PART/5 (E 4e7 Pa,
+ * /PROP/SHELL t 0.01 m), the upper faces /PART/6 (E 1.2e8 Pa, t 0.02 m). */
+static const char t7_shells[] =
+    "/SHELL/5\n"
+    "       101        21        24        23        22\n"
+    "       102        25        26        27        28\n"
+    "       103        21        22        26        25\n"
+    "       104        22        23        27        26\n"
+    "       105        23        24        28        27\n"
+    "       106        24        21        25        28\n"
+    "/SHELL/6\n"
+    "       111        11        14        13        12\n"
+    "       112        15        16        17        18\n"
+    "       113        11        12        16        15\n"
+    "       114        12        13        17        16\n"
+    "       115        13        14        18        17\n"
+    "       116        14        11        15        18\n"
+    "/PART/5\n"
+    "lower shells\n"
+    "         5         5\n"
+    "/PART/6\n"
+    "upper shells\n"
+    "         6         6\n"
+    "/PROP/SHELL/5\n"
+    "lower thickness\n"
+    "\n"
+    "\n"
+    "         0         0                0.01\n"
+    "/PROP/SHELL/6\n"
+    "upper thickness\n"
+    "\n"
+    "\n"
+    "         0         0                0.02\n"
+    "/MAT/LAW1/5\n"
+    "lower material\n"
+    "                7800\n"
+    "            40000000                 0.3\n"
+    "/MAT/LAW1/6\n"
+    "upper material\n"
+    "                7800\n"
+    "           120000000                 0.3\n";
+
+/* The deck with the shells, its first occurrence of each from[j] replaced
+ * by to[j] (same lengths), or NULL. */
+static const char *shell_deck(int nrep, const char *const *from, const char *const *to)
+{
+    static char text[sizeof t7_deck_a + sizeof t7_shells + sizeof t7_deck_b];
+    snprintf(text, sizeof text, "%s%s%s", t7_deck_a, t7_shells, t7_deck_b);
+    for (int j = 0; j < nrep; j++) {
+        char *at = strstr(text, from[j]);
+        if (!at || strlen(from[j]) != strlen(to[j])) return NULL;
+        memcpy(at, to[j], strlen(to[j]));
+    }
+    return text;
+}
+
+/* TYPE7/7 line 1 (Istf, Igap) and line 4 (Stfac 0.5, a factor) of the
+ * shell deck. */
+static const char t7_l1[] = "         2        30         1         0         0";
+static const char t7_l4[] = "               37000                0.23";
+
+/* Istf 2-5: km = Stfac E t / 2 of the lower (main) shells = 1e5 N/m, ks
+ * the same of the upper box's shells on its corners = 6e5 N/m: their mean,
+ * larger, smaller, in series; Stmax bounds the result; a secondary node on
+ * no shell (node 9 of TYPE7/8) is an error naming it. */
+static void test_type7_istf_combined(void)
+{
+    static const double want[6] = {0, 0, 3.5e5, 6e5, 1e5, 1e5 * 6e5 / 7e5};
+    for (int istf = 2; istf <= 5; istf++) {
+        char l1[sizeof t7_l1];
+        memcpy(l1, t7_l1, sizeof l1);
+        l1[29] = (char)('0' + istf);
+        const char *from[2] = {t7_l1, t7_l4}, *to[2] = {l1, "                 0.5                0.23"};
+        rc_model *m = TU_COMPILE_OK(shell_deck(2, from, to), "t7istf.rad");
+        if (!m) continue;
+        ENSURE(m->ninter == 4);
+        if (m->ninter == 4) {
+            ENSURE_NEAR(m->inter_fscaleld[1] / m->inter_ascalex[1], want[istf], 1e-14, 0);
+            ENSURE_NEAR(m->inter_fr[1].kt, want[istf], 1e-14, 0);
+            /* TYPE7/8 keeps Istf 1, Stfac 37000 */
+            ENSURE_NEAR(m->inter_fscaleld[3] / m->inter_ascalex[3], 3.7e4, 1e-14, 0);
+            printf("    Istf %d: k = %.9g N/m (closed form %.9g)\n", istf, m->inter_fscaleld[1] / m->inter_ascalex[1],
+                   want[istf]);
+        }
+        rc_model_free(m);
+    }
+    /* Stmax 2e5 bounds Istf 3's 6e5 */
+    {
+        const char *from[3] = {"                   0                   0                   0                   0         0         0\n               37000",
+                               t7_l1, t7_l4};
+        const char *to[3] = {"                   0              200000                   0                   0         0         0\n               37000",
+                             "         2        30         3         0         0", "                 0.5                0.23"};
+        rc_model *m = TU_COMPILE_OK(shell_deck(3, from, to), "t7stmax.rad");
+        if (m) {
+            ENSURE(m->ninter == 4 && fabs(m->inter_fscaleld[1] / m->inter_ascalex[1] - 2e5) < 1e-9);
+            rc_model_free(m);
+        }
+    }
+    /* TYPE7/8's node 9 is on no shell */
+    const char *from[1] = {"         4        30         1"}, *to[1] = {"         4        30         2"};
+    TU_EXPECT_TEXT_ERROR(shell_deck(1, from, to), "t7istf2err.rad", "card /INTER/TYPE7/8, field Istf",
+                         "node 9 of /GRNOD 4 is on no /SHELL or /SH3N", "expected secondary nodes on shells");
+}
+
+/* Igap 1: the gap gm + gs, half the main shells' thickness (0.005 m) and
+ * half the secondary node's shells' (0.01 m; 0 for node 9, on none): 0.015
+ * m for the upper body, 0.005 m for node 9 (TYPE7/8); Igap 2 scales it by
+ * Fscalegap and bounds it by Gapmax; Gapmin stays the floor; Igap 3 and a
+ * gap that varies from node to node are refused. */
+static void test_type7_igap(void)
+{
+    {
+        const char *from[2] = {t7_l1, "         4        30         1         0         0"};
+        const char *to[2] = {"         2        30         1         0         1", "         4        30         1         0         1"};
+        rc_model *m = TU_COMPILE_OK(shell_deck(2, from, to), "t7igap1.rad");
+        if (m) {
+            ENSURE(m->ninter == 4);
+            if (m->ninter == 4) {
+                ENSURE_NEAR(m->inter_gap[1], 0.015, 1e-15, 0);
+                ENSURE_NEAR(m->inter_gap[2], 0.005, 1e-15, 0); /* node 9: gm alone */
+                ENSURE_NEAR(m->inter_gap[3], 0.015, 1e-15, 0);
+                ENSURE_NEAR(m->inter_gap[0], 0.0, 0, 0); /* the TYPE6 keeps its own */
+            }
+            rc_model_free(m);
+        }
+    }
+    {
+        /* Igap 2, Fscalegap 0.5, Gapmax 0.006: min(0.5 * 0.015, 0.006) */
+        const char *from[2] = {t7_l1, "\n                   0                   0                   0         0\n"};
+        const char *to[2] = {"         2        30         1         0         2", "\n                 0.5               0.006                   0         0\n"};
+        rc_model *m = TU_COMPILE_OK(shell_deck(2, from, to), "t7igap2.rad");
+        if (m) {
+            ENSURE(m->ninter == 4 && fabs(m->inter_gap[1] - 0.006) < 1e-15);
+            rc_model_free(m);
+        }
+        /* Gapmax 0: none, 0.5 * 0.015; Gapmin 0.0011 below it */
+        to[1] = "\n                 0.5                   0                   0         0\n";
+        m = TU_COMPILE_OK(shell_deck(2, from, to), "t7igap2b.rad");
+        if (m) {
+            ENSURE(m->ninter == 4 && fabs(m->inter_gap[1] - 0.0075) < 1e-15);
+            rc_model_free(m);
+        }
+        /* Fscalegap 0.05: 7.5e-4 < Gapmin 0.0011 */
+        to[1] = "\n                0.05                   0                   0         0\n";
+        m = TU_COMPILE_OK(shell_deck(2, from, to), "t7igap2c.rad");
+        if (m) {
+            ENSURE(m->ninter == 4 && fabs(m->inter_gap[1] - 0.0011) < 1e-15);
+            rc_model_free(m);
+        }
+    }
+    {
+        const char *from[1] = {t7_l1}, *to[1] = {"         2        30         1         0         3"};
+        TU_EXPECT_TEXT_ERROR(shell_deck(1, from, to), "t7igap3.rad", "card /INTER/TYPE7/7, field Igap",
+                             "not supported yet (Igap 3 also bounds", "expected 0, blank or 1000");
+        to[0] = "         2        30         1         0         4";
+        TU_EXPECT_TEXT_ERROR(shell_deck(1, from, to), "t7igap4.rad", "card /INTER/TYPE7/7, field Igap",
+                             "expected 0, blank or 1000");
+    }
+    /* the main gap varies: the lower top face's shell in /PART/6 (0.02 m)
+     * instead of /PART/5 (0.01 m) */
+    {
+        static char text[sizeof t7_deck_a + sizeof t7_shells + sizeof t7_deck_b + 64];
+        const char *from[1] = {t7_l1}, *to[1] = {"         2        30         1         0         1"};
+        const char *base = shell_deck(1, from, to);
+        ENSURE(base != NULL);
+        if (!base) return;
+        /* move element 102 (the lower top face) to /SHELL/6 */
+        const char *cut = strstr(base, "       102        25        26        27        28\n");
+        const char *sh6 = strstr(base, "/SHELL/6\n");
+        ENSURE(cut && sh6);
+        if (!cut || !sh6) return;
+        const size_t lcut = strlen("       102        25        26        27        28\n");
+        const size_t a = (size_t)(cut - base), b = (size_t)(sh6 - base) + strlen("/SHELL/6\n");
+        snprintf(text, sizeof text, "%.*s%.*s%.*s%s", (int)a, base, (int)(b - a - lcut), cut + lcut, (int)lcut, cut,
+                 base + b);
+        TU_EXPECT_TEXT_ERROR(text, "t7igapvar.rad", "card /INTER/TYPE7/7, field Igap", "/SURF/SEG/30 has segment",
+                             "not supported yet", "expected main shells of one thickness");
+    }
+}
+
 void suite_type7(void);
 void suite_type7(void)
 {
@@ -284,4 +464,6 @@ void suite_type7(void)
     RUN_TEST(test_type7_units);
     RUN_TEST(test_type7_istf0_errors);
     RUN_TEST(test_type7_inacti);
+    RUN_TEST(test_type7_istf_combined);
+    RUN_TEST(test_type7_igap);
 }

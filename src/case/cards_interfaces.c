@@ -310,10 +310,13 @@ static rc_status t7_inacti(rc_reader *rd, const rc_block *b, const rc_loc *loc, 
     if (*inacti == 1 || *inacti == 2)
         return rc_case_fail(rd, loc, b->name, "Inacti",
                             "got %s: not supported yet: Inacti %d takes the initially penetrating %s out of the "
-                            "contact for the whole run, where ricochet's contact of a rigid body keeps every point "
-                            "of it; expected 0, blank, 1000 (no action), 5 or 6 (the gap reduced by the initial "
-                            "penetration)",
-                            f->got, *inacti, *inacti == 1 ? "secondary nodes" : "main segments");
+                            "contact for the whole run, where ricochet's contact keeps every %s of the card (its "
+                            "contact points are fixed before the first pose is evaluated); expected 0, blank, 1000 "
+                            "(no action), 5 or 6 (the gap reduced by the initial penetration), or, to the same "
+                            "effect, those %s left out of the card's %s",
+                            f->got, *inacti, *inacti == 1 ? "secondary nodes" : "main segments",
+                            *inacti == 1 ? "node" : "segment", *inacti == 1 ? "nodes" : "segments",
+                            *inacti == 1 ? "secondary side" : "main side");
     if (*inacti == 3)
         return rc_case_fail(rd, loc, b->name, "Inacti",
                             "got %s: not supported: Inacti 3 moves the penetrating nodes onto the surface, which "
@@ -354,7 +357,7 @@ rc_status rc_card_type7(rc_reader *rd, const rc_block *b)
         return st;
     int ithe = 0, ibag = 0, idel = 0, icurv = 0, iadm = 0, itied = 0, irem_gap = 0, irem_i2 = 0, ibc = 0;
     int ifric = 0, ifiltr = 0, fct_f = 0;
-    double fscalegap = 0, gapmax = 0, fpenmax = 0, mesh_size = 0, dtmin = 0, bumult = 0, xfreq = 0, ascalef = 0;
+    double fpenmax = 0, mesh_size = 0, dtmin = 0, bumult = 0, xfreq = 0, ascalef = 0;
     static const char heat[] = "heat transfer: ricochet has no temperatures";
     rc_field l1[] = {
         RC_F_INT("grnd_IDs", &t->grnod_id, 0, RC_FF_POS),
@@ -370,8 +373,8 @@ rc_status rc_card_type7(rc_reader *rd, const rc_block *b)
         {.name = "Iadm", .width = 10, .type = RC_FT_INT, .out = &iadm, .flags = RC_FF_ONLY0,
          .note = "curvature of an adaptive mesh"}};
     rc_field l2[] = {
-        RC_F_REALD("Fscalegap", &fscalegap, 0, RC_FF_NONNEG, RC_D_NONE),
-        RC_F_REALD("Gapmax", &gapmax, 0, RC_FF_NONNEG, RC_D_L),
+        RC_F_REALD("Fscalegap", &t->fscalegap, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_REALD("Gapmax", &t->gapmax, 0, RC_FF_NONNEG, RC_D_L),
         {.name = "Fpenmax", .width = 20, .type = RC_FT_REAL, .out = &fpenmax, .flags = RC_FF_ONLY0, .dim = RC_D_NONE,
          .note = "the largest initial penetration as a fraction of the gap"},
         {.name = "ITIED", .width = 10, .type = RC_FT_INT, .out = &itied, .flags = RC_FF_ONLY0,
@@ -425,25 +428,38 @@ rc_status rc_card_type7(rc_reader *rd, const rc_block *b)
     /* the stiffness: Stfac a stiffness value (Istf 1), or a factor on the
      * main elements' stiffness (0, 1000: model/type7.c) */
     if (t->istf == RC_T7_DEFAULT) t->istf = 0;
-    if (t->istf != 0 && t->istf != 1)
+    if (t->istf > 5)
         return rc_case_fail(rd, &t->line_loc[0], b->name, "Istf",
-                            "expected 0, 1000 (the main elements' stiffness times Stfac) or 1 (Stfac is the "
-                            "stiffness [N/m]), got %s: not supported yet (Istf 2 to 5 combine it with the "
-                            "secondary side's, which rigid nodes do not have)",
+                            "expected 0, 1000 (the main elements' stiffness times Stfac), 1 (Stfac is the "
+                            "stiffness [N/m]), 2, 3, 4 or 5 (the main and secondary elements' stiffnesses times "
+                            "Stfac: their mean, larger, smaller, or in series), got %s",
                             l1[2].got);
     if (t->istf == 1 && !(t->stfac > 0))
         return rc_case_fail(rd, &t->line_loc[3], b->name, "Stfac",
                             "with Istf 1, Stfac is the interface stiffness: expected a value > 0 [N/m], got %s",
                             l4[0].got);
-    /* Istf 0: Stfac is a factor, converted as a stiffness above: back */
-    if (t->istf == 0 && rc_units_convert(rd)) t->stfac /= rc_dim_scale(RC_D_K, rd->cur_units);
-    if (t->istf == 0 && t->stfac == 0) t->stfac = 1.0; /* the scale factor's default */
+    /* Istf 0, 2-5: Stfac is a factor, converted as a stiffness above: back */
+    if (t->istf != 1 && rc_units_convert(rd)) t->stfac /= rc_dim_scale(RC_D_K, rd->cur_units);
+    if (t->istf != 1 && t->stfac == 0) t->stfac = 1.0; /* the scale factor's default */
     if (t->stmax > 0 && t->stmax < t->stmin)
         return rc_case_fail(rd, &t->line_loc[2], b->name, "Stmax", "expected Stmax >= Stmin = %.15g (or 0: none), got %s",
                             t->stmin, l3[1].got);
-    if ((st = t7_only_default(rd, b, &t->line_loc[0], &l1[4], t->igap,
-                              "a variable gap from the elements' thicknesses and sizes; 0 is the constant gap Gapmin")))
-        return st;
+    /* Igap: 0 (1000) the constant gap Gapmin; 1, 2 the shells' half
+     * thicknesses (model/type7.c); 3 also bounds it by the mesh size */
+    if (t->igap == RC_T7_DEFAULT) t->igap = 0;
+    if (t->igap == 3)
+        return rc_case_fail(rd, &t->line_loc[0], b->name, "Igap",
+                            "got %s: not supported yet (Igap 3 also bounds the variable gap by %%mesh_size times "
+                            "the elements' size); expected 0, blank or 1000 (the constant gap Gapmin), 1 (the "
+                            "variable gap of the shells' thicknesses) or 2 (the same, scaled by Fscalegap, at most "
+                            "Gapmax)",
+                            l1[4].got);
+    if (t->igap > 2)
+        return rc_case_fail(rd, &t->line_loc[0], b->name, "Igap",
+                            "expected 0, blank or 1000 (the constant gap Gapmin), 1 (the variable gap of the shells' "
+                            "thicknesses) or 2 (the same, scaled by Fscalegap, at most Gapmax), got %s",
+                            l1[4].got);
+    if (t->fscalegap == 0) t->fscalegap = 1.0; /* Igap 2's scale: Radioss's default */
     if ((st = t7_inacti(rd, b, &t->line_loc[4], &t->inacti, &l5[2]))) return st;
     if (t->visf != RC_T7_DEF_VISF)
         return rc_case_fail(rd, &t->line_loc[4], b->name, "VISF",
@@ -518,18 +534,21 @@ static rc_status t24_checks(rc_reader *rd, const rc_block *b, rc_case_type24 *t,
     /* the stiffness: Stfac a stiffness value (Istf 1), or a factor on the
      * shells' stiffness (0, 1000: model/type7.c) */
     if (t->istf == RC_T7_DEFAULT) t->istf = 0;
-    if (t->istf != 0 && t->istf != 1)
+    /* TYPE24's Istf 6 (Radioss: the smaller of the two, adjusted for the
+     * convergence of its implicit solver) is read as 4 (docs/theory.md 3.8) */
+    if (t->istf == 6 && t->type == 24) t->istf = 4;
+    if (t->istf > 5)
         return rc_case_fail(rd, &t->line_loc[0], b->name, "Istf",
-                            "expected 0, 1000 (the main elements' stiffness times Stfac) or 1 (Stfac is the "
-                            "stiffness [N/m]), got %s: not supported yet (Istf 2 to 6 combine both sides' element "
-                            "stiffnesses)",
-                            f->istf->got);
+                            "expected 0, 1000 (the shells' stiffness times Stfac, the mean over both surfaces), 1 "
+                            "(Stfac is the stiffness [N/m]), 2, 3, 4 or 5 (the two surfaces' stiffnesses times "
+                            "Stfac: their mean, larger, smaller, or in series)%s, got %s",
+                            t->type == 24 ? " or 6 (read as 4)" : "", f->istf->got);
     if (t->istf == 1 && !(t->stfac > 0))
         return rc_case_fail(rd, &t->line_loc[3], b->name, "Stfac",
                             "with Istf 1, Stfac is the interface stiffness: expected a value > 0 [N/m], got %s",
                             f->stfac->got);
-    if (t->istf == 0 && rc_units_convert(rd)) t->stfac /= rc_dim_scale(RC_D_K, rd->cur_units);
-    if (t->istf == 0 && t->stfac == 0) t->stfac = 1.0; /* the scale factor's default */
+    if (t->istf != 1 && rc_units_convert(rd)) t->stfac /= rc_dim_scale(RC_D_K, rd->cur_units);
+    if (t->istf != 1 && t->stfac == 0) t->stfac = 1.0; /* the scale factor's default */
     if (t->stmax > 0 && t->stmax < t->stmin)
         return rc_case_fail(rd, &t->line_loc[2], b->name, "Stmax", "expected Stmax >= Stmin = %.15g (or 0: none), got %s",
                             t->stmin, f->stmax->got);
@@ -545,7 +564,8 @@ static rc_status t24_checks(rc_reader *rd, const rc_block *b, rc_case_type24 *t,
         if (t->inacti != 0 && t->inacti != 5)
             return rc_case_fail(rd, &t->line_loc[4], b->name, "Inacti",
                                 "expected -1 (every initial penetration acts), 0, blank, 1000 (no action) or 5 (the "
-                                "gap reduced by the initial penetration), got %s: not supported yet",
+                                "gap reduced by the initial penetration), Radioss's values of TYPE%d, got %s",
+                                t->type,
                                 f->inacti->got);
     }
     if (t->tstop < t->tstart)

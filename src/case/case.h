@@ -179,9 +179,13 @@ typedef struct rc_case_type7 {
     char title[101];
     int grnod_id, surf_id;                    /* line 1: grnd_IDs, surf_IDm */
     int istf;                                 /* line 1: 0 (1000 read as 0): k = Stfac times the main
-                                                 shells' stiffness E t / 2; 1: k = Stfac */
-    int igap;                                 /* line 1: 0 or 1000 (constant gap) */
-    double stmin, stmax;                      /* line 3 [N/m]: the bounds of Istf 0's stiffness (0: none) */
+                                                 shells' stiffness E t / 2; 1: k = Stfac; 2-5: the main
+                                                 and secondary shells' stiffnesses combined (mean, max,
+                                                 min, series) */
+    int igap;                                 /* line 1: 0 (1000 read as 0: the constant gap Gapmin); 1, 2:
+                                                 the variable gap of the shells' thicknesses */
+    double fscalegap, gapmax;                 /* line 2: Igap 2's scale [-] (0 read as 1) and bound [m] (0: none) */
+    double stmin, stmax;                      /* line 3 [N/m]: the bounds of Istf 0, 2-5's stiffness (0: none) */
     double stfac, fric, gapmin, tstart, tstop; /* line 4: [N/m] (Istf 1) or [-] (Istf 0), [-] [m] [s] [s] */
     int inacti;                               /* line 5: 0, 5 or 6 (1000 read as 0; 6 compiled as 5) */
     double viss, visf;                        /* line 5: critical damping fractions [-] */
@@ -205,8 +209,9 @@ typedef struct rc_case_type24 {
     int line1, line2;                         /* TYPE11 line 1: line_IDs, line_IDm (/LINE ids); 0 otherwise */
     double gapmin;                            /* TYPE11, TYPE19: Gapmin [m] (the constant gap); 0 otherwise */
     int istf;                                 /* line 1: 0 (1000 read as 0): k = Stfac times the shells'
-                                                 stiffness E t / 2; 1: k = Stfac */
-    double stmin, stmax;                      /* line 3 [N/m]: the bounds of Istf 0's stiffness (0: none) */
+                                                 stiffness E t / 2; 1: k = Stfac; 2-5: the two surfaces'
+                                                 shell stiffnesses combined (mean, max, min, series) */
+    double stmin, stmax;                      /* line 3 [N/m]: the bounds of Istf 0, 2-5's stiffness (0: none) */
     double stfac, fric, tstart, tstop;        /* line 4: [N/m] (Istf 1) or [-] (Istf 0), [-] [s] [s] */
     int inacti;                               /* line 5: 0 or 5 (1000 and TYPE24/25's -1 read as 0), or
                                                  TYPE11/19's 6 (compiled as 5) */

@@ -73,7 +73,64 @@ static int t7_key_cmp(const void *pa, const void *pb)
 
 /* The card whose stiffness is computed: its name, id, line 1 (the
  * messages' location), Stfac and the bounds Stmin, Stmax. */
-typedef struct { const char *card; int id; rc_loc loc; double stfac, stmin, stmax; } t7_card;
+typedef struct { const char *card; int id; rc_loc loc; double stfac, stmin, stmax; int istf; } t7_card;
+
+/* Istf 2 to 5 (docs/theory.md 3.7): the main side's stiffness km and the
+ * secondary side's ks combined: their mean, the larger, the smaller, or
+ * the two springs in series. */
+static double t7_combine(int istf, double km, double ks)
+{
+    switch (istf) {
+    case 2: return 0.5 * (km + ks);
+    case 3: return fmax(km, ks);
+    case 4: return fmin(km, ks);
+    default: return km * ks / (km + ks);
+    }
+}
+
+/* k within Stmin..Stmax (0: no bound). */
+static double t7_bounded(const t7_card *t, double k)
+{
+    if (t->stmin > 0) k = fmax(k, t->stmin);
+    if (t->stmax > 0) k = fmin(k, t->stmax);
+    return k;
+}
+
+/* A shell's thickness: the element's, else its part's /PROP/SHELL Thick;
+ * 0 when neither is known. */
+static double shell_thick(const rc_case *c, const rc_case_elem *el)
+{
+    if (el->thick > 0) return el->thick;
+    const int p = rc_case_find_part(c, el->part_id);
+    const int pi = p >= 0 ? rc_case_find_prop(c, c->part[p].prop_id) : -1;
+    return pi >= 0 && c->mesh->prop[pi].kind == RC_PROP_SHELL ? c->mesh->prop[pi].thick : 0.0;
+}
+
+/* The shells of the mesh as keys, sorted (*nk of them; an owned array). */
+static t7_key *shell_keys(const rc_case_mesh *ms, int *nk)
+{
+    const int ne = ms ? ms->nelem : 0;
+    t7_key *keys = malloc(((size_t)ne + 1) * sizeof *keys);
+    *nk = 0;
+    if (!keys) return NULL;
+    for (int e = 0; e < ne; e++) {
+        const rc_case_elem *el = &ms->elem[e];
+        if (el->kind != RC_ELEM_SHELL && el->kind != RC_ELEM_SH3N) continue;
+        t7_key_of(el->nodes, el->nn, &keys[*nk]);
+        keys[(*nk)++].e = e;
+    }
+    qsort(keys, (size_t)*nk, sizeof *keys, t7_key_cmp);
+    return keys;
+}
+
+/* The shell (element index) on the nodes of a /SURF/SEG segment, or -1. */
+static int seg_shell(const t7_key *keys, int nk, const int *seg4)
+{
+    t7_key q;
+    t7_key_of(seg4, 4, &q);
+    const t7_key *f = nk ? bsearch(&q, keys, (size_t)nk, sizeof *keys, t7_key_cmp) : NULL;
+    return f ? f->e : -1;
+}
 
 /* Istf 0 (docs/theory.md 3.7): Stfac times the stiffness Radioss gives a
  * main shell segment, E t / 2 (E the Young's modulus of its part's /MAT,
@@ -90,9 +147,9 @@ static rc_status shells_stiffness(const rc_case *c, const t7_card *t, int surf_i
     const int ne = ms ? ms->nelem : 0;
     if (cs->kind != RC_CASE_SURF_SEG && cs->kind != RC_CASE_SURF_PART)
         RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card %s/%d, field Istf: Istf 0 takes the stiffness from the main surface's "
+                 RC_LOCFMT "card %s/%d, field Istf: Istf %d takes the stiffness from the main surface's "
                            "shell elements; /SURF/%s/%d has none: expected Istf 1 with Stfac the stiffness [N/m]",
-                 RC_LOC(t->loc), t->card, t->id, kinds[cs->kind], surf_id);
+                 RC_LOC(t->loc), t->card, t->id, t->istf, kinds[cs->kind], surf_id);
     t7_key *keys = malloc(((size_t)ne + 1) * sizeof *keys);
     if (!keys) RC_RAISE(err, RC_ENOMEM, "out of memory");
     rc_status st = RC_OK;
@@ -115,11 +172,11 @@ static rc_status shells_stiffness(const rc_case *c, const t7_card *t, int surf_i
             const t7_key *f = nk ? bsearch(&q, keys, (size_t)nk, sizeof *keys, t7_key_cmp) : NULL;
             if (!f) {
                 st = RC_SET(err, RC_EINPUT,
-                            RC_LOCFMT "card %s/%d, field Istf: Istf 0 takes the stiffness from the main "
+                            RC_LOCFMT "card %s/%d, field Istf: Istf %d takes the stiffness from the main "
                                       "segments' shell elements; segment %d of /SURF/SEG/%d (%s:%d) is on no /SHELL "
                                       "or /SH3N (a solid's face, B A^2 / (2 V): not supported yet): expected Istf 1 "
                                       "with Stfac the stiffness [N/m]",
-                            RC_LOC(t->loc), t->card, t->id, cs->seg_id[j], surf_id, RC_LOC(cs->seg_loc[j]));
+                            RC_LOC(t->loc), t->card, t->id, t->istf, cs->seg_id[j], surf_id, RC_LOC(cs->seg_loc[j]));
                 break;
             }
             e = f->e;
@@ -129,10 +186,10 @@ static rc_status shells_stiffness(const rc_case *c, const t7_card *t, int surf_i
             if (!in) continue;
             if (ms->elem[e].kind != RC_ELEM_SHELL && ms->elem[e].kind != RC_ELEM_SH3N) {
                 st = RC_SET(err, RC_EINPUT,
-                            RC_LOCFMT "card %s/%d, field Istf: Istf 0 on the faces of the solid elements "
+                            RC_LOCFMT "card %s/%d, field Istf: Istf %d on the faces of the solid elements "
                                       "of /SURF/PART/%d (element %d of part %d; B A^2 / (2 V)) is not supported yet: "
                                       "expected Istf 1 with Stfac the stiffness [N/m], or a main surface of shells",
-                            RC_LOC(t->loc), t->card, t->id, surf_id, ms->elem[e].id, ms->elem[e].part_id);
+                            RC_LOC(t->loc), t->card, t->id, t->istf, surf_id, ms->elem[e].id, ms->elem[e].part_id);
                 break;
             }
         }
@@ -143,20 +200,20 @@ static rc_status shells_stiffness(const rc_case *c, const t7_card *t, int surf_i
         const int pi = p >= 0 ? rc_case_find_prop(c, c->part[p].prop_id) : -1;
         if (mi < 0 || !ms->mat[mi].has_e) {
             st = RC_SET(err, RC_EINPUT,
-                        RC_LOCFMT "card %s/%d, field Istf: Istf 0 takes the Young's modulus of the main "
+                        RC_LOCFMT "card %s/%d, field Istf: Istf %d takes the Young's modulus of the main "
                                   "shells' material; /PART/%d has %s: expected a /MAT/LAW1 (ELAST) or /MAT/LAW2 "
                                   "(PLAS_JOHNS) with E > 0 (line 2), or Istf 1 with Stfac the stiffness [N/m]",
-                        RC_LOC(t->loc), t->card, t->id, el->part_id,
+                        RC_LOC(t->loc), t->card, t->id, t->istf, el->part_id,
                         mi < 0 ? "no /MAT" : "a /MAT whose Young's modulus ricochet does not read");
             break;
         }
         const double th = el->thick > 0 ? el->thick : pi >= 0 && ms->prop[pi].kind == RC_PROP_SHELL ? ms->prop[pi].thick : 0.0;
         if (!(th > 0)) {
             st = RC_SET(err, RC_EINPUT,
-                        RC_LOCFMT "card %s/%d, field Istf: Istf 0 needs the main shells' thickness; element "
+                        RC_LOCFMT "card %s/%d, field Istf: Istf %d needs the main shells' thickness; element "
                                   "%d of /PART/%d has none (element Thick or /PROP/SHELL Thick): expected a thickness "
                                   "> 0, or Istf 1 with Stfac the stiffness [N/m]",
-                        RC_LOC(t->loc), t->card, t->id, el->id, el->part_id);
+                        RC_LOC(t->loc), t->card, t->id, t->istf, el->id, el->part_id);
             break;
         }
         sum += 0.5 * t->stfac * ms->mat[mi].e * th;
@@ -166,43 +223,203 @@ static rc_status shells_stiffness(const rc_case *c, const t7_card *t, int surf_i
     if (st) return st;
     if (nsh == 0)
         RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card %s/%d, field Istf: Istf 0 takes the stiffness from the main surface's "
+                 RC_LOCFMT "card %s/%d, field Istf: Istf %d takes the stiffness from the main surface's "
                            "shell elements; /SURF/%s/%d has none: expected Istf 1 with Stfac the stiffness [N/m]",
-                 RC_LOC(t->loc), t->card, t->id, kinds[cs->kind], surf_id);
+                 RC_LOC(t->loc), t->card, t->id, t->istf, kinds[cs->kind], surf_id);
     *sum_out += sum;
     *n_out += nsh;
     return RC_OK;
 }
 
-/* Istf 0 of a TYPE7: the mean over the main segments, within Stmin..Stmax. */
-static rc_status main_stiffness(const rc_case *c, const rc_case_type7 *t7, double *k, rc_error *err)
+/* The main side of a TYPE7 (Istf 0, 2-5): the mean of Stfac E t / 2 over
+ * the main segments, unbounded (*km); Istf 0 takes it within
+ * Stmin..Stmax, Istf 2-5 combine it with the secondary side's first
+ * (rc_type7_contacts). */
+static rc_status main_stiffness(const rc_case *c, const rc_case_type7 *t7, double *km, rc_error *err)
 {
-    const t7_card t = {"/INTER/TYPE7", t7->id, t7->line_loc[0], t7->stfac, t7->stmin, t7->stmax};
+    const t7_card t = {"/INTER/TYPE7", t7->id, t7->line_loc[0], t7->stfac, t7->stmin, t7->stmax, t7->istf};
     double sum = 0.0;
     int n = 0;
     rc_status st = shells_stiffness(c, &t, t7->surf_id, &sum, &n, err);
     if (st) return st;
-    *k = sum / n;
-    if (t.stmin > 0) *k = fmax(*k, t.stmin);
-    if (t.stmax > 0) *k = fmin(*k, t.stmax);
+    *km = sum / n;
     return RC_OK;
 }
 
 /* Istf 0 of a TYPE24 (docs/theory.md 3.8): each surface is the main one of
  * the other's nodes; the one law of the pair takes the mean over the
- * segments of both surfaces, within Stmin..Stmax. */
+ * segments of both surfaces, within Stmin..Stmax. Istf 2-5: the mean over
+ * each surface's segments, k1 and k2, combined (t7_combine), within
+ * Stmin..Stmax. */
 static rc_status pair_stiffness(const rc_case *c, const rc_case_type24 *t24, double *k, rc_error *err)
 {
-    const t7_card t = {t24->type == 25 ? "/INTER/TYPE25" : "/INTER/TYPE24", t24->id, t24->line_loc[0], t24->stfac, t24->stmin, t24->stmax};
-    double sum = 0.0;
-    int n = 0;
-    rc_status st = shells_stiffness(c, &t, t24->surf1, &sum, &n, err);
-    if (!st) st = shells_stiffness(c, &t, t24->surf2, &sum, &n, err);
+    const char *card = t24->type == 25 ? "/INTER/TYPE25" : t24->type == 11 ? "/INTER/TYPE11"
+                     : t24->type == 19 ? "/INTER/TYPE19" : "/INTER/TYPE24";
+    const t7_card t = {card, t24->id, t24->line_loc[0], t24->stfac, t24->stmin, t24->stmax, t24->istf};
+    double sum1 = 0.0, sum2 = 0.0;
+    int n1 = 0, n2 = 0;
+    rc_status st = shells_stiffness(c, &t, t24->surf1, &sum1, &n1, err);
+    if (!st) st = shells_stiffness(c, &t, t24->surf2, &sum2, &n2, err);
     if (st) return st;
-    *k = sum / n;
-    if (t.stmin > 0) *k = fmax(*k, t.stmin);
-    if (t.stmax > 0) *k = fmin(*k, t.stmax);
+    *k = t24->istf == 0 ? (sum1 + sum2) / (n1 + n2) : t7_combine(t24->istf, sum1 / n1, sum2 / n2);
+    *k = t7_bounded(&t, *k);
     return RC_OK;
+}
+
+/* Igap 1, 2 of a TYPE7 (docs/theory.md 3.7): the main side's part of the
+ * variable gap, half the thickness of each main segment's shell (0 for a
+ * segment on no shell, a solid's face, a plane or a box: Radioss's gap of
+ * those), *gm; RC_EINPUT when it differs from segment to segment (a gap
+ * that varies along the surface). */
+static rc_status main_half_thick(const rc_case *c, const rc_case_type7 *t7, double *gm, rc_error *err)
+{
+    const rc_case_surf *cs = &c->surf[rc_case_find_surf(c, t7->surf_id)];
+    const rc_case_mesh *ms = c->mesh;
+    *gm = 0.0;
+    if (!ms || (cs->kind != RC_CASE_SURF_SEG && cs->kind != RC_CASE_SURF_PART)) return RC_OK;
+    int nk = 0;
+    t7_key *keys = shell_keys(ms, &nk);
+    if (!keys) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    const int nseg = cs->kind == RC_CASE_SURF_SEG ? cs->nseg : ms->nelem;
+    int first = 1, seg0 = 0;
+    double g0 = 0.0;
+    rc_status st = RC_OK;
+    for (int j = 0; j < nseg && !st; j++) {
+        double g = 0.0;
+        int sid = 0;
+        if (cs->kind == RC_CASE_SURF_SEG) {
+            const int e = seg_shell(keys, nk, cs->seg + 4 * j);
+            g = e >= 0 ? 0.5 * shell_thick(c, &ms->elem[e]) : 0.0;
+            sid = cs->seg_id[j];
+        } else {
+            int in = 0;
+            for (int p = 0; p < cs->npart && !in; p++) in = cs->part[p] == ms->elem[j].part_id;
+            if (!in) continue;
+            const int sh = ms->elem[j].kind == RC_ELEM_SHELL || ms->elem[j].kind == RC_ELEM_SH3N;
+            g = sh ? 0.5 * shell_thick(c, &ms->elem[j]) : 0.0;
+            sid = ms->elem[j].id;
+        }
+        if (first) {
+            g0 = g;
+            seg0 = sid;
+            first = 0;
+        } else if (fabs(g - g0) > 1e-9 * fmax(g, g0)) {
+            st = RC_SET(err, RC_EINPUT,
+                        RC_LOCFMT "card /INTER/TYPE7/%d, field Igap: Igap %d takes the main side's gap from half the "
+                                  "thickness of each main segment's shell; /SURF/%s/%d has %s %d of half thickness "
+                                  "%.6g m and %s %d of %.6g m: a gap that varies along the main surface is not "
+                                  "supported yet (one gap per contact of a rigid body); expected main shells of one "
+                                  "thickness, or Igap 0 with the gap Gapmin",
+                        RC_LOC(t7->line_loc[0]), t7->id, t7->igap, rc_t7_kinds[cs->kind], t7->surf_id,
+                        cs->kind == RC_CASE_SURF_SEG ? "segment" : "element", seg0, g0,
+                        cs->kind == RC_CASE_SURF_SEG ? "segment" : "element", sid, g);
+        }
+    }
+    free(keys);
+    *gm = g0;
+    return st;
+}
+
+/* The shells on each of n secondary nodes ids[] (Istf 2-5, Igap 1, 2):
+ * tn[q] the largest thickness of the shells on node q, kn[q] the largest
+ * Stfac E t / 2 of them (kn may be NULL: thicknesses only); both 0 for a
+ * node on no shell. need_e: a shell on one of the nodes without a Young's
+ * modulus or a thickness is RC_EINPUT (the message names the card t). */
+static rc_status node_shells(const rc_case *c, const t7_card *t, const int *ids, int n, double *tn, double *kn,
+                             rc_error *err)
+{
+    const rc_case_mesh *ms = c->mesh;
+    for (int q = 0; q < n; q++) {
+        tn[q] = 0.0;
+        if (kn) kn[q] = 0.0;
+    }
+    for (int e = 0; ms && e < ms->nelem; e++) {
+        const rc_case_elem *el = &ms->elem[e];
+        if (el->kind != RC_ELEM_SHELL && el->kind != RC_ELEM_SH3N) continue;
+        for (int j = 0; j < el->nn && j < 4; j++) {
+            if (el->nodes[j] == 0) continue;
+            for (int q = 0; q < n; q++) {
+                if (ids[q] != el->nodes[j]) continue;
+                const double th = shell_thick(c, el);
+                if (kn) {
+                    const int p = rc_case_find_part(c, el->part_id);
+                    const int mi = p >= 0 ? rc_case_find_mat(c, c->part[p].mat_id) : -1;
+                    if (mi < 0 || !ms->mat[mi].has_e || !(th > 0))
+                        RC_RAISE(err, RC_EINPUT,
+                                 RC_LOCFMT "card %s/%d, field Istf: Istf %d takes the secondary side's stiffness from "
+                                           "the shells on the secondary nodes; element %d of /PART/%d on node %d has "
+                                           "%s: expected a /MAT/LAW1 (ELAST) or /MAT/LAW2 (PLAS_JOHNS) with E > 0 and "
+                                           "a thickness > 0 (element Thick or /PROP/SHELL Thick), or Istf 0, 1000 "
+                                           "(the main side's stiffness alone) or 1 (Stfac the stiffness [N/m])",
+                                 RC_LOC(t->loc), t->card, t->id, t->istf, el->id, el->part_id, ids[q],
+                                 mi < 0 ? "no /MAT" : !ms->mat[mi].has_e ? "a /MAT whose Young's modulus ricochet "
+                                                                           "does not read"
+                                                                         : "no thickness");
+                    kn[q] = fmax(kn[q], 0.5 * t->stfac * ms->mat[mi].e * th);
+                }
+                tn[q] = fmax(tn[q], th);
+            }
+        }
+    }
+    return RC_OK;
+}
+
+/* The stiffness and gap of the contact of TYPE7 card i whose secondary
+ * nodes are ids[0..n) (one body's): Istf 0, 1 the card's k (x->k[i]); 2-5
+ * the main side's x->km[i] combined with the mean of the nodes' Stfac E t
+ * / 2 (node_shells; a node on no shell is RC_EINPUT), within Stmin..Stmax.
+ * The gap: Gapmin (Igap 0), or the variable gap gm + gs (gs half the
+ * largest thickness of a node's shells, one for all the nodes), Igap 2
+ * scaled by Fscalegap and at most Gapmax, at least Gapmin. */
+static rc_status contact_law(const rc_case *c, const rc_type7_case *x, int i, const int *ids, int n, double *k,
+                             double *gap, rc_error *err)
+{
+    const rc_case_type7 *t7 = &c->type7[i];
+    const t7_card t = {"/INTER/TYPE7", t7->id, t7->line_loc[0], t7->stfac, t7->stmin, t7->stmax, t7->istf};
+    const rc_case_grnod *gr = &c->grnod[rc_case_find_grnod(c, t7->grnod_id)];
+    *k = x->k[i];
+    *gap = t7->gapmin;
+    const int wk = t7->istf >= 2, wg = t7->igap == 1 || t7->igap == 2;
+    if (!wk && !wg) return RC_OK;
+    double *tn = malloc(2 * ((size_t)n + 1) * sizeof *tn);
+    if (!tn) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    double *kn = tn + n + 1;
+    rc_status st = node_shells(c, &t, ids, n, tn, wk ? kn : NULL, err);
+    if (!st && wk) {
+        double ks = 0.0;
+        for (int q = 0; q < n && !st; q++) {
+            if (!(kn[q] > 0))
+                st = RC_SET(err, RC_EINPUT,
+                            RC_LOCFMT "card /INTER/TYPE7/%d, field Istf: Istf %d combines the main side's stiffness "
+                                      "with the secondary nodes' (Stfac E t / 2 of the shells on each node); node %d "
+                                      "of /GRNOD %d is on no /SHELL or /SH3N: expected secondary nodes on shells, or "
+                                      "Istf 0, 1000 (the main side's stiffness alone) or 1 (Stfac the stiffness [N/m])",
+                            RC_LOC(t7->line_loc[0]), t7->id, t7->istf, ids[q], gr->id);
+            ks += kn[q] / n;
+        }
+        if (!st) *k = t7_bounded(&t, t7_combine(t7->istf, x->km[i], ks));
+    }
+    if (!st && wg) {
+        for (int q = 1; q < n && !st; q++)
+            if (fabs(tn[q] - tn[0]) > 1e-9 * fmax(tn[q], tn[0]))
+                st = RC_SET(err, RC_EINPUT,
+                            RC_LOCFMT "card /INTER/TYPE7/%d, field Igap: Igap %d takes each secondary node's gap from "
+                                      "half the largest thickness of its shells (0 on no shell); node %d of one body "
+                                      "has %.6g m and node %d %.6g m: a gap that varies from node to node of a rigid "
+                                      "body is not supported yet (one gap per contact); expected shells of one "
+                                      "thickness on the body's secondary nodes, or Igap 0 with the gap Gapmin",
+                            RC_LOC(t7->line_loc[0]), t7->id, t7->igap, ids[0], 0.5 * tn[0], ids[q], 0.5 * tn[q]);
+        if (!st) {
+            double g = x->gm[i] + 0.5 * tn[0];
+            if (t7->igap == 2) {
+                g *= t7->fscalegap;
+                if (t7->gapmax > 0) g = fmin(g, t7->gapmax);
+            }
+            *gap = fmax(t7->gapmin, g);
+        }
+    }
+    free(tn);
+    return st;
 }
 
 /* A closed box mesh (TYPE25 Iedge, docs/theory.md 3.8): a /SURF/SEG of 6
@@ -511,7 +728,7 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
                             RC_LOC(t->line_loc[5]), t->type, t->id, t->fric_id);
         }
         x->k24[i] = t->stfac;
-        if (!st && t->istf == 0) {
+        if (!st && t->istf != 1) {
             rc_case_type24 ts = *t; /* TYPE11: its lines' surfaces */
             ts.surf1 = sid[0];
             ts.surf2 = sid[1];
@@ -523,12 +740,26 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
         rc_type7_end(x);
         return st;
     }
-    /* the stiffness of each card */
+    /* the stiffness of each card: Stfac (Istf 1), the main side's (Istf
+     * 0, 2-5: x->km) within Stmin..Stmax (Istf 0); the main side's half
+     * thickness of Igap 1, 2 (x->gm) */
     x->k = calloc((size_t)c->ntype7 + 1, sizeof *x->k);
-    if (!x->k) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    x->km = calloc((size_t)c->ntype7 + 1, sizeof *x->km);
+    x->gm = calloc((size_t)c->ntype7 + 1, sizeof *x->gm);
+    if (!x->k || !x->km || !x->gm) {
+        rc_type7_end(x);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
     for (int i = 0; i < c->ntype7; i++) {
-        x->k[i] = c->type7[i].stfac;
-        if (c->type7[i].istf == 0 && (st = main_stiffness(c, &c->type7[i], &x->k[i], err))) {
+        const rc_case_type7 *t7 = &c->type7[i];
+        const t7_card tc = {"/INTER/TYPE7", t7->id, t7->line_loc[0], t7->stfac, t7->stmin, t7->stmax, t7->istf};
+        x->k[i] = t7->stfac;
+        if (t7->istf != 1 && (st = main_stiffness(c, t7, &x->km[i], err))) {
+            rc_type7_end(x);
+            return st;
+        }
+        if (t7->istf == 0) x->k[i] = t7_bounded(&tc, x->km[i]);
+        if ((t7->igap == 1 || t7->igap == 2) && (st = main_half_thick(c, t7, &x->gm[i], err))) {
             rc_type7_end(x);
             return st;
         }
@@ -657,12 +888,15 @@ rc_status rc_type7_contacts(rc_type7_case *x, rc_case *c, const rc_model *m, rc_
             if (x->pts_t7[k] != i) continue;
             const int s = x->nuser + k;
             if (m->surf_body[s] == bm) continue; /* the main surface's own body */
+            double kc = 0.0, gap = 0.0;
+            rc_status st = contact_law(c, x, i, c->surf[s].point, c->surf[s].npoint, &kc, &gap, err);
+            if (st) return st;
             rc_case_type6 *t6 = &x->type6[n++];
             *t6 = (rc_case_type6){.id = t->id, .surf1 = c->surf[s].id, .surf2 = t->surf_id, .fric = t->fric,
-                                  .gap = t->gapmin, .tstart = t->tstart, .tstop = t->tstop,
+                                  .gap = gap, .tstart = t->tstart, .tstop = t->tstop,
                                   .inacti = t->inacti == 6 ? 5 : t->inacti, /* 6 read as 5 (theory 3.7) */
                                   .ascalef = 1.0, .ascalev = 1.0, .fct_ld = RC_TYPE7_FUNCT_ID, .ascalex = x->len,
-                                  .fscaleld = x->k[i] * x->len, .fscaleul = 1.0, .fscalev = 1.0, .loc = t->loc,
+                                  .fscaleld = kc * x->len, .fscaleul = 1.0, .fscalev = 1.0, .loc = t->loc,
                                   .sensor_id = t->sensor_id, .name = x->name[k], .oneway = 1, .vis_crit = t->viss,
                                   .fric_id = t->fric_id};
             /* the TYPE6 lines of the messages: surfaces and sensor; Fric Gap
@@ -720,6 +954,8 @@ void rc_type7_end(rc_type7_case *x)
     free(x->pts_node);
     free(x->pts_t7);
     free(x->k);
+    free(x->km);
+    free(x->gm);
     free(x->k24);
     free(x->name24);
     free(x->bx);

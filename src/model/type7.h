@@ -41,6 +41,8 @@ typedef struct rc_type7_case {
     int **pts_node;          /* [npts] its node ids (owned) */
     double len;              /* abscissa scale of the load curve [m]: the scene's size */
     double *k;               /* [ntype7] each card's stiffness [N/m] (Istf 1: Stfac; 0: main_stiffness) */
+    double *km;              /* [ntype7] Istf 0, 2-5: the main side's stiffness [N/m], unbounded */
+    double *gm;              /* [ntype7] Igap 1, 2: the main side's gap, half the main shells' thickness [m] */
     double *k24;             /* [ntype24] each TYPE24 card's stiffness [N/m] */
     char (*name24)[64];      /* [ntype24] the TYPE24 contacts' names */
     rc_case_surf *bx;        /* [2 ntype24] TYPE25 Iedge, TYPE11, TYPE19: the box of each side that is a closed

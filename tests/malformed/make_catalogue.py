@@ -512,10 +512,10 @@ def T7(l1=None, l2='', l3='', l4=None, l5='', l6=''):
 
 T7H = '/INTER/TYPE7/97'
 TL('type7_istf_default', T7H, 'field Istf', before_end(T7(l1='         1         2         0'), expect=2))
-TL('type7_istf_combined', T7H, 'field Istf', before_end(T7(l1='         1         2         3'), expect=2))
+TL('type7_istf_6', T7H, 'field Istf', before_end(T7(l1='         1         2         6'), expect=2))
 TL('type7_stmax_below_stmin', T7H, 'field Stmax', before_end(T7(l3=STOP('2e5', '1e5')), expect=4))
 TL('type7_stfac_blank', T7H, 'field Stfac', before_end(T7(l4=STOP('', '0.3')), expect=5))
-TL('type7_igap_variable', T7H, 'field Igap', before_end(T7(l1='         1         2         1         0         1'), expect=2))
+TL('type7_igap_3', T7H, 'field Igap', before_end(T7(l1='         1         2         1         0         3'), expect=2))
 TL('type7_ithe', T7H, 'field Ithe', before_end(T7(l1='         1         2         1         1'), expect=2))
 TL('type7_icurv', T7H, 'field Icurv', before_end(T7(l1=cols('         1         2         1', 81, 90, '1')), expect=2))
 TL('type7_itied', T7H, 'field ITIED', before_end(T7(l2=cols('', 61, 70, '1')), expect=3))
@@ -600,7 +600,7 @@ SEGS24 = ['/NODE', '        91                   0                   0          
           '/SURF/SEG/95', 'upper side', '         1        91        92        93        94',
           '/SURF/SEG/96', 'lower side', '         1        94        93        92        91']
 T24H = '/INTER/TYPE24/96'
-TL('type24_istf_combined', T24H, 'field Istf', before_end(T24(l1='         2         4         2'), expect=2))
+TL('type24_istf_7', T24H, 'field Istf', before_end(T24(l1='         2         4         7'), expect=2))
 TL('type24_stfac_blank', T24H, 'field Stfac', before_end(T24(l4=STOP('', '0.3')), expect=5))
 TL('type24_stmax_below_stmin', T24H, 'field Stmax', before_end(T24(l3=STOP('2e5', '1e5')), expect=4))
 TL('type24_self_contact', T24H, 'field surf_ID2', before_end(T24(l1='         2         0         1'), expect=2))
@@ -632,7 +632,7 @@ def T25(l1=None, l2='', l3='', l4=None, l5='', l6=''):
 
 
 T25H = '/INTER/TYPE25/95'
-TL('type25_istf_combined', T25H, 'field Istf', before_end(T25(l1='         2         4         4'), expect=2))
+TL('type25_istf_6', T25H, 'field Istf', before_end(T25(l1='         2         4         6'), expect=2))
 TL('type25_ithe', T25H, 'field Ithe', before_end(T25(l1='         2         4         1         1'), expect=2))
 TL('type25_igap_variable', T25H, 'field Igap', before_end(T25(l1='         2         4         1         0         2'), expect=2))
 TL('type25_self_contact', T25H, 'field surf_ID2', before_end(T25(l1='         2         0         1'), expect=2))
@@ -661,7 +661,7 @@ def T11(l1=None, l2='', l3=None, l4='', l5=''):
 
 T11H = '/INTER/TYPE11/94'
 N = len(LINES)
-TL('type11_istf_combined', T11H, 'field Istf', before_end(T11(l1='      9102      9104         2'), expect=N + 2))
+TL('type11_istf_6', T11H, 'field Istf', before_end(T11(l1='      9102      9104         6'), expect=N + 2))
 TL('type11_ithe', T11H, 'field Ithe', before_end(T11(l1='      9102      9104         1         1'), expect=N + 2))
 TL('type11_igap_variable', T11H, 'field Igap',
    before_end(T11(l1='      9102      9104         1         0         1'), expect=N + 2))

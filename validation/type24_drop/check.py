@@ -55,13 +55,20 @@ def type24(d, iid, s1, s2, stfac, fric=0.0, fric_id=0, istf=1):
 E_SH, T_SH, STFAC0 = 4.0e7, 0.01, 0.5
 
 
-def shells(d, pid, segs, rho, title):
-    """/SHELL/pid on the segments' nodes, /PART, /PROP/SHELL (T_SH) and
-    /MAT/LAW1 (E_SH, density rho) of id pid."""
+# Istf 2-5: the cube's bottom shell E_CUBE, T_CUBE (Stfac E t / 2 = 6e5 N/m)
+# against the floor's (1e5 N/m), combined
+E_CUBE, T_CUBE = 1.2e8, 0.02
+K1, K2 = 0.5 * STFAC0 * E_SH * T_SH, 0.5 * STFAC0 * E_CUBE * T_CUBE
+K_COMB = {2: 0.5 * (K1 + K2), 3: max(K1, K2), 4: min(K1, K2), 5: K1 * K2 / (K1 + K2)}
+
+
+def shells(d, pid, segs, rho, title, e=E_SH, t=T_SH):
+    """/SHELL/pid on the segments' nodes, /PART, /PROP/SHELL (t) and
+    /MAT/LAW1 (e, density rho) of id pid."""
     d.add(f"/SHELL/{pid}", *segs)
     d.add(f"/PART/{pid}", line(("i", pid), ("i", pid)), title=title)
-    d.add(f"/PROP/SHELL/{pid}", "", "", line(("i", 0), ("i", 0), ("r", T_SH)), title=title)
-    d.add(f"/MAT/LAW1/{pid}", line(("r", rho)), line(("r", E_SH), ("r", 0.3)), title=title)
+    d.add(f"/PROP/SHELL/{pid}", "", "", line(("i", 0), ("i", 0), ("r", t)), title=title)
+    d.add(f"/MAT/LAW1/{pid}", line(("r", rho)), line(("r", e), ("r", 0.3)), title=title)
 
 
 def floor_seg(d, sid, x, y, nf, h, first):
@@ -92,14 +99,14 @@ def cube(title, z0, x0=0.0, v=None, fric=0.0, fric_card=False, istf=1):
     bottom = line(("i", 1), ("i", 11), ("i", 14), ("i", 13), ("i", 12))
     d.add("/SURF/SEG/20", bottom, title="cube bottom")
     fnodes, fsegs = floor_seg(d, 30, 0.0, 0.0, 2, 1.0, 101)
-    if istf == 0:  # shells under both surfaces; the floor a fixed body
+    if istf != 1:  # shells under both surfaces; the floor a fixed body
         d.nodes([(100, 0.0, 0.0, 0.0)])
         d.rbody(2, 100, 0.0, [0.0] * 3, grnod=3, title="floor")
         d.grnod(3, [n for n, _, _, _ in fnodes], title="floor nodes")
         d.bcs(2, 3, title="floor fixed")
         shells(d, 5, fsegs, 7800.0, "floor shells")
         shells(d, 6, [line(("i", 9), ("i", 11), ("i", 14), ("i", 13), ("i", 12))], 1e-6,
-               "cube bottom shell (1e-6 kg/m^3: 4e-10 kg)")
+               "cube bottom shell (1e-6 kg/m^3: 4e-10 kg)", *((E_SH, T_SH) if istf == 0 else (E_CUBE, T_CUBE)))
     if v is not None:
         d.bcs(1, 2, trarot="000 111", title="no rotation")
         d.inivel(1, v, 2)
@@ -131,6 +138,10 @@ def type7(d, iid, grnod, surf, stfac):
 
 def drop_istf0():
     return cube("TYPE24 Istf 0: a cube's bottom shell dropped on a floor of shells", H0, istf=0)
+
+
+def drop_istf(istf):
+    return cube(f"TYPE24 Istf {istf}: a cube's bottom shell dropped on a floor of shells", H0, istf=istf)
 
 
 def plate(one_way=False):
@@ -175,6 +186,18 @@ def main():
                     f"max rel. error {max(ef, ep):.1e}: dropped {H0} m, {what}: at rest at t = {r.t[-1]:g} s with the "
                     f"interface force {r.fn[-1, 0]:.12f} N (m g = {M * G:.12f} N, {ef:.1e} < 1e-6), {pen:.9e} m deep "
                     f"(m g / k = {P_REST:.9e} m, {ep:.1e} < 1e-5)")
+    # 1b. Istf 2-5: the two surfaces' shell stiffnesses combined
+    for istf in (2, 3, 4, 5):
+        r = rcval.Result(rcval.run(drop_istf(istf), f"istf{istf}"))
+        kc = K_COMB[istf]
+        pen = A - r.pos[-1, 0, 2]
+        ep, ef = rcval.rel(pen, M * G / kc), rcval.rel(r.fn[-1, 0], M * G)
+        how = {2: "their mean", 3: "the larger", 4: "the smaller", 5: "in series"}[istf]
+        rcval.check(f"type24.rest.istf{istf}", ef < 1e-6 and ep < 1e-5,
+                    f"max rel. error {max(ef, ep):.1e}: Istf {istf}, the floor's shells k1 = {K1:g} N/m and the "
+                    f"cube's bottom shell k2 = {K2:g} N/m (Stfac E t / 2), {how}: k = {kc:.9g} N/m; force "
+                    f"{r.fn[-1, 0]:.12f} N (m g, {ef:.1e} < 1e-6), {pen:.9e} m deep (m g / k = {M * G / kc:.9e} m, "
+                    f"{ep:.1e} < 1e-5)")
     # 2b. the same plate through a one-way TYPE7 of its corners falls past
     # the pedestal: free fall z = H0 - g t^2 / 2
     r = rcval.Result(rcval.run(plate(one_way=True), "plate_type7"))
@@ -201,4 +224,4 @@ def main():
 
 
 if __name__ == "__main__":
-    rcval.entry(main, lambda: {"case.rad": drop(), "plate.rad": plate(), "istf0.rad": drop_istf0(), "slide.rad": slide()})
+    rcval.entry(main, lambda: {"case.rad": drop(), "plate.rad": plate(), "istf0.rad": drop_istf0(), "istf5.rad": drop_istf(5), "slide.rad": slide()})

@@ -41,13 +41,14 @@ MU, V0 = 0.3, 1.0
 H0 = 0.005                     # drop height of the bottom face [m]
 
 
-def type7(d, iid, grnod, surf, stfac, fric=0.0, gapmin=0.0, fric_id=0, istf=1, stmin=0.0, stmax=0.0):
+def type7(d, iid, grnod, surf, stfac, fric=0.0, gapmin=0.0, fric_id=0, istf=1, stmin=0.0, stmax=0.0, igap=0,
+          fscalegap=0.0, gapmax=0.0):
     """/INTER/TYPE7 in the Radioss 2022 layout: Istf 1 (by default), the rest
     defaults."""
     d.add(f"/INTER/TYPE7/{iid}",
-          line(("i", grnod), ("i", surf), ("i", istf), ("i", 0), ("i", 0), ("i", None), ("i", 0), ("i", 0), ("i", 0),
+          line(("i", grnod), ("i", surf), ("i", istf), ("i", 0), ("i", igap), ("i", None), ("i", 0), ("i", 0), ("i", 0),
                ("i", 0)),
-          line(("r", 0.0), ("r", 0.0), ("r", 0.0), ("i", 0)),
+          line(("r", fscalegap), ("r", gapmax), ("r", 0.0), ("i", 0)),
           line(("r", stmin), ("r", stmax), ("r", 0.0), ("r", 0.0), ("i", 0), ("i", 0)),
           line(("r", stfac), ("r", fric), ("r", gapmin), ("r", 0.0), ("r", 0.0)),
           line(("i", 0), ("i", None), ("i", None), ("i", 0), ("r", 0.0), ("r", 0.0), ("r", 0.0)),
@@ -58,9 +59,17 @@ def type7(d, iid, grnod, surf, stfac, fric=0.0, gapmin=0.0, fric_id=0, istf=1, s
 # Istf 0: the floor a fixed body of shells (/MAT/LAW1 E, /PROP/SHELL Thick):
 # k = Stfac E t / 2 = K
 E_FLOOR, T_FLOOR, STFAC0 = 4.0e7, 0.01, 0.5
+# Istf 2-5, Igap 1, 2: the cube's six faces shells too (density 1e-6 kg/m^3:
+# 5e-9 kg), their Stfac E t / 2 = 6e5 N/m, half thickness 0.01 m
+E_CUBE, T_CUBE = 1.2e8, 0.02
+KM, KS = 0.5 * STFAC0 * E_FLOOR * T_FLOOR, 0.5 * STFAC0 * E_CUBE * T_CUBE
+K_COMB = {2: 0.5 * (KM + KS), 3: max(KM, KS), 4: min(KM, KS), 5: KM * KS / (KM + KS)}
+GAP_VAR = 0.5 * T_FLOOR + 0.5 * T_CUBE  # Igap 1: gm + gs
+FSCALEGAP, GAPMAX = 0.5, 0.006          # Igap 2: min(Fscalegap (gm + gs), Gapmax)
+H_GAP = 0.02                            # the drop height of the Igap runs [m]
 
 
-def deck(title, z0, v=None, fric=0.0, fric_card=False, nb=2, nf=2, istf=1):
+def deck(title, z0, v=None, fric=0.0, fric_card=False, nb=2, nf=2, istf=1, igap=0):
     """nb: bottom nodes per side of the cube (its 4 corners for 2); nf: floor
     segments per side."""
     d = Deck(title)
@@ -82,7 +91,7 @@ def deck(title, z0, v=None, fric=0.0, fric_card=False, nb=2, nf=2, istf=1):
             n0 = 101 + n1 * j + i
             segs.append(line(("i", len(segs) + 1), ("i", n0), ("i", n0 + 1), ("i", n0 + n1 + 1), ("i", n0 + n1)))
     d.add("/SURF/SEG/30", *segs, title="floor")
-    if istf == 0:  # the floor: a fixed body of shells, their E and thickness
+    if istf != 1:  # the floor: a fixed body of shells, their E and thickness
         d.nodes([(100, 0.0, 0.0, 0.0)])
         d.rbody(2, 100, 0.0, [0.0] * 3, grnod=3, title="floor")
         d.grnod(3, [n for n, _, _, _ in floor], title="floor nodes")
@@ -91,12 +100,18 @@ def deck(title, z0, v=None, fric=0.0, fric_card=False, nb=2, nf=2, istf=1):
         d.add("/PART/5", line(("i", 5), ("i", 5)), title="floor shells")
         d.add("/PROP/SHELL/5", "", "", line(("i", 0), ("i", 0), ("r", T_FLOOR)), title="floor thickness")
         d.add("/MAT/LAW1/5", line(("r", 7800.0)), line(("r", E_FLOOR), ("r", 0.3)), title="floor material")
+    if istf >= 2 or igap:  # the cube's faces: shells on the secondary nodes
+        faces = [(11, 14, 13, 12), (15, 16, 17, 18), (11, 12, 16, 15), (12, 13, 17, 16), (13, 14, 18, 17), (14, 11, 15, 18)]
+        d.add("/SHELL/6", *[line(("i", 201 + j), *[("i", n) for n in f]) for j, f in enumerate(faces)])
+        d.add("/PART/6", line(("i", 6), ("i", 6)), title="cube shells")
+        d.add("/PROP/SHELL/6", "", "", line(("i", 0), ("i", 0), ("r", T_CUBE)), title="cube thickness")
+        d.add("/MAT/LAW1/6", line(("r", 1e-6)), line(("r", E_CUBE), ("r", 0.3)), title="cube material")
     if v is not None:
         d.bcs(1, 2, trarot="000 111", title="no rotation")
         d.inivel(1, v, 2)
     d.grav(1, "Z", -G, 2)
     type7(d, 7, 2, 30, K if istf == 1 else STFAC0, fric=0.0 if fric_card else fric, fric_id=9 if fric_card else 0,
-          istf=istf)
+          istf=istf, igap=igap, fscalegap=FSCALEGAP if igap == 2 else 0.0, gapmax=GAPMAX if igap == 2 else 0.0)
     if fric_card:
         d.friction(9, iform=2, fric=MU, title="Coulomb")
     d.run(4.0 if v is None else 0.5, 0.005)
@@ -113,6 +128,14 @@ def drop_meshed():
 
 def drop_istf0():
     return deck("TYPE7 Istf 0: a cube of nodes dropped on a floor of shells", H0, istf=0)
+
+
+def drop_istf(istf):
+    return deck(f"TYPE7 Istf {istf}: a cube of shells' nodes dropped on a floor of shells", H0, istf=istf)
+
+
+def drop_igap(igap):
+    return deck(f"TYPE7 Igap {igap}: a cube of shells' nodes dropped on a floor of shells", H_GAP, istf=0, igap=igap)
 
 
 MS = 7.0  # the free slab's mass [kg]
@@ -174,6 +197,34 @@ def main():
                 f"max rel. error {max(ef, ep):.1e}: Istf 0, Stfac {STFAC0} on a floor of shells (E {E_FLOOR:g} Pa, t {T_FLOOR} m): k = Stfac E t / 2 = "
                 f"{k0:g} N/m; force {r.fn[-1, 0]:.12f} N (m g, {ef:.1e} < 1e-6), {pen:.9e} m deep (m g / k = "
                 f"{M * G / k0:.9e} m, {ep:.1e} < 1e-5)")
+    # 1e. Istf 2-5: the floor's and the cube's shell stiffnesses combined
+    for istf in (2, 3, 4, 5):
+        r = rcval.Result(rcval.run(drop_istf(istf), f"istf{istf}"))
+        kc = K_COMB[istf]
+        pen = A - r.pos[-1, 0, 2]
+        ep, ef = rcval.rel(pen, M * G / kc), rcval.rel(r.fn[-1, 0], M * G)
+        how = {2: "their mean", 3: "the larger", 4: "the smaller", 5: "in series"}[istf]
+        rcval.check(f"type7.rest.istf{istf}", ef < 1e-6 and ep < 1e-5,
+                    f"max rel. error {max(ef, ep):.1e}: Istf {istf}, the floor's shells k_m = {KM:g} N/m and the "
+                    f"cube's k_s = {KS:g} N/m (Stfac E t / 2), {how}: k = {kc:.9g} N/m; force {r.fn[-1, 0]:.12f} N "
+                    f"(m g, {ef:.1e} < 1e-6), {pen:.9e} m deep (m g / k = {M * G / kc:.9e} m, {ep:.1e} < 1e-5)")
+    # 1f. Igap 1, 2: the contact starts at the variable gap and the cube
+    # rests the gap less m g / k above the floor
+    for igap, gap in ((1, GAP_VAR), (2, min(FSCALEGAP * GAP_VAR, GAPMAX))):
+        r = rcval.Result(rcval.run(drop_igap(igap), f"igap{igap}"))
+        k0 = KM
+        h = r.pos[-1, 0, 2] - A
+        eh, ef = rcval.rel(h, gap - M * G / k0), rcval.rel(r.fn[-1, 0], M * G)
+        t_close = r.events("contact_close")
+        t_ref = math.sqrt(2.0 * (H_GAP - gap) / G)
+        et = rcval.rel(t_close[0], t_ref) if len(t_close) else 1.0
+        what = "gm + gs" if igap == 1 else f"min(Fscalegap {FSCALEGAP} (gm + gs), Gapmax {GAPMAX})"
+        rcval.check(f"type7.rest.igap{igap}", max(ef, eh, et) < 1e-5,
+                    f"max rel. error {max(ef, eh, et):.1e}: Igap {igap}, gap {what} = {gap:g} m (half the floor's "
+                    f"{T_FLOOR} m and the cube's {T_CUBE} m shells): dropped from {H_GAP} m, contact at "
+                    f"{t_close[0] if len(t_close) else float('nan'):.9f} s (free fall to the gap sqrt(2 (h0 - gap) / g) "
+                    f"= {t_ref:.9f} s, {et:.1e}); at rest {h:.9e} m above the floor (gap - m g / k = "
+                    f"{gap - M * G / k0:.9e} m, {eh:.1e}), force {r.fn[-1, 0]:.12f} N ({ef:.1e}); max rel. error < 1e-5")
     # 1d. free-free: the contact's forces are equal and opposite at the nodes
     r = rcval.Result(rcval.run(free_free(), "free"))
     p = M * r.vel[:, 0] + MS * r.vel[:, 1]
@@ -205,4 +256,4 @@ def main():
 
 
 if __name__ == "__main__":
-    rcval.entry(main, lambda: {"case.rad": drop(), "meshed.rad": drop_meshed(), "istf0.rad": drop_istf0(), "free.rad": free_free(), "slide.rad": slide()})
+    rcval.entry(main, lambda: {"case.rad": drop(), "meshed.rad": drop_meshed(), "istf0.rad": drop_istf0(), "istf5.rad": drop_istf(5), "igap1.rad": drop_igap(1), "free.rad": free_free(), "slide.rad": slide()})

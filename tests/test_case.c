@@ -911,7 +911,9 @@ static void test_case_error_grav_bcs_inivel(void)
     EXPECT_INPUT_ERROR("inivel.rad", "/INIVEL/AXIS/1\nv\n0,0,0\n" RUN_CARD, 1,
                        "card /INIVEL/AXIS/1", "not supported yet");
     EXPECT_INPUT_ERROR("iniskew.rad", "/INIVEL/TRA/1\nv\n0,0,1,5,3\n" RUN_CARD, 3,
-                       "field skew_ID", "not supported yet");
+                       "field skew_ID", "no such skew");
+    EXPECT_INPUT_ERROR("gravskew.rad", "/GRAV/1\ng\n0,Z,3\n" RUN_CARD, 3, "card /GRAV/1",
+                       "field skew_ID", "expected the id of a /SKEW/FIX", "no such skew");
 }
 
 static void test_case_error_run_solver(void)

@@ -12,6 +12,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "case/case_mesh.h"
 #include "case/case_power.h"
 
 static const char rc_note_skew[] = "(skew frames)";
@@ -97,9 +98,9 @@ rc_status rc_card_inivel(rc_reader *rd, const rc_block *b)
     rc_field f[] = {RC_F_REALW("Vx", &v->v[0], 0, 0, wr, dv), RC_F_REALW("Vy", &v->v[1], 0, 0, wr, dv),
                     RC_F_REALW("Vz", &v->v[2], 0, 0, wr, dv),
                     RC_F_INTW("grnod_ID", &v->grnod_id, 0, RC_FF_NONNEG, wi),
-                    RC_F_INTN("skew_ID", &v->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew)};
-    f[4].width = wi;
+                    RC_F_INTW("skew_ID", &v->skew_id, 0, RC_FF_NONNEG, wi)};
     if ((st = rc_parse_line(rd, b, &b->lines[1], f, RC_NF(f)))) return st;
+    memcpy(v->v_skew, v->v, sizeof v->v); /* rotated once the skews are known */
     if (nd >= 2) {
         double tstart = 0;
         int sens = 0;
@@ -131,7 +132,7 @@ rc_status rc_card_grav(rc_reader *rd, const rc_block *b)
 
     rc_field f[] = {RC_F_INT("fct_IDT", &g->fct_id, 0, RC_FF_NONNEG),
                     RC_F_STR("DIR", dir, 10),
-                    RC_F_INTN("skew_ID", &g->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew),
+                    RC_F_INT("skew_ID", &g->skew_id, 0, RC_FF_NONNEG),
                     RC_F_INTN("sensor_ID", &g->sensor_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_sensor),
                     RC_F_INT("grnod_ID", &g->grnod_id, 0, RC_FF_NONNEG),
                     RC_F_SKIP(10),
@@ -155,7 +156,58 @@ rc_status rc_card_grav(rc_reader *rd, const rc_block *b)
         return rc_case_fail(rd, &b->lines[1].loc, b->name, "DIR", "expected X, Y or Z, got %s",
                             f[1].got);
     g->dir = (int)(p - "XYZxyz") % 3;
+    g->u[g->dir] = 1; /* the skew's axis once the skews are known */
     return rc_note_id(rd, RC_IDK_GRAV, g->id, &g->loc, b->hdr->text);
+}
+
+/* A skew named by /INIVEL or /GRAV: its index, or a failure (no such skew;
+ * a moving skew where only a fixed one will do). */
+static rc_status rc_load_skew(rc_reader *rd, const rc_loc *at, const char *card, int id, int fixed_only, int *out)
+{
+    const int s = rc_case_find_skew(rd->c, id);
+    if (s < 0)
+        return rc_case_fail(rd, at, card, "skew_ID",
+                            fixed_only ? "expected the id of a /SKEW/FIX, got %d (no such skew)"
+                                       : "expected the id of a /SKEW/FIX, /SKEW/MOV or /SKEW/MOV2, got %d (no such skew)",
+                            id);
+    const rc_case_skew *sk = &rd->c->mesh->skew[s];
+    if (fixed_only && sk->mov)
+        return rc_case_fail(rd, at, card, "skew_ID",
+                            "/SKEW/%s/%d moves with its nodes: a gravity along a moving axis is not supported yet "
+                            "(expected a /SKEW/FIX)",
+                            sk->mov == 2 ? "MOV2" : "MOV", id);
+    *out = s;
+    return RC_OK;
+}
+
+/* Once the skews' axes are known (rc_cards_mesh_finish): an /INIVEL's
+ * components given in a skew's axes (Radioss: V = Vx X' + Vy Y' + Vz Z', a
+ * moving skew taken at its nodes' initial positions) and a /GRAV's
+ * direction along a /SKEW/FIX axis, into global axes. */
+rc_status rc_cards_loads_finish(rc_reader *rd)
+{
+    rc_case *c = rd->c;
+    rc_status st;
+    char card[48];
+    for (int k = 0; k < c->ninivel; k++) {
+        rc_case_inivel *v = &c->inivel[k];
+        if (!v->skew_id) continue;
+        snprintf(card, sizeof card, "/INIVEL/%s/%d", v->rot ? "ROT" : "TRA", v->id);
+        int s = -1;
+        if ((st = rc_load_skew(rd, &v->line_loc, card, v->skew_id, 0, &s))) return st;
+        const rc_case_skew *sk = &c->mesh->skew[s];
+        for (int i = 0; i < 3; i++)
+            v->v[i] = v->v_skew[0] * sk->axis[0][i] + v->v_skew[1] * sk->axis[1][i] + v->v_skew[2] * sk->axis[2][i];
+    }
+    for (int k = 0; k < c->ngrav; k++) {
+        rc_case_grav *g = &c->grav[k];
+        if (!g->skew_id) continue;
+        snprintf(card, sizeof card, "/GRAV/%d", g->id);
+        int s = -1;
+        if ((st = rc_load_skew(rd, &g->line_loc, card, g->skew_id, 1, &s))) return st;
+        memcpy(g->u, c->mesh->skew[s].axis[g->dir], sizeof g->u);
+    }
+    return RC_OK;
 }
 
 /* Trarot "111 111": the first three 0/1 digits are Tx Ty Tz, the next three

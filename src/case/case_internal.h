@@ -387,6 +387,8 @@ void rc_cards_defaults(rc_case *c);
 rc_status rc_cards_mesh(rc_reader *rd, const rc_block *b, int *handled);
 /* After the last card: expand /GRNOD/PART and /GRNOD/GRNOD into node lists. */
 rc_status rc_cards_mesh_finish(rc_reader *rd);
+/* /INIVEL and /GRAV skew frames into global axes (after rc_cards_mesh_finish) */
+rc_status rc_cards_loads_finish(rc_reader *rd);
 
 /* ---- Dispatch (cards.c) ------------------------------------------------ */
 

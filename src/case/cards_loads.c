@@ -160,10 +160,11 @@ rc_status rc_card_grav(rc_reader *rd, const rc_block *b)
     return rc_note_id(rd, RC_IDK_GRAV, g->id, &g->loc, b->hdr->text);
 }
 
-/* A skew named by /INIVEL or /GRAV: its index, or a failure (no such skew;
- * a moving skew where only a fixed one will do). */
-static rc_status rc_load_skew(rc_reader *rd, const rc_loc *at, const char *card, int id, int fixed_only, int *out)
+/* A skew named by a card's skew_ID: its index, or a failure (no such skew;
+ * a moving skew where only a fixed one will do: `what` names the use). */
+rc_status rc_case_ref_skew(rc_reader *rd, const rc_loc *at, const char *card, int id, const char *what, int *out)
 {
+    const int fixed_only = what != NULL;
     const int s = rc_case_find_skew(rd->c, id);
     if (s < 0)
         return rc_case_fail(rd, at, card, "skew_ID",
@@ -173,9 +174,8 @@ static rc_status rc_load_skew(rc_reader *rd, const rc_loc *at, const char *card,
     const rc_case_skew *sk = &rd->c->mesh->skew[s];
     if (fixed_only && sk->mov)
         return rc_case_fail(rd, at, card, "skew_ID",
-                            "/SKEW/%s/%d moves with its nodes: a gravity along a moving axis is not supported yet "
-                            "(expected a /SKEW/FIX)",
-                            sk->mov == 2 ? "MOV2" : "MOV", id);
+                            "/SKEW/%s/%d moves with its nodes: %s is not supported yet (expected a /SKEW/FIX)",
+                            sk->mov == 2 ? "MOV2" : "MOV", id, what);
     *out = s;
     return RC_OK;
 }
@@ -194,7 +194,7 @@ rc_status rc_cards_loads_finish(rc_reader *rd)
         if (!v->skew_id) continue;
         snprintf(card, sizeof card, "/INIVEL/%s/%d", v->rot ? "ROT" : "TRA", v->id);
         int s = -1;
-        if ((st = rc_load_skew(rd, &v->line_loc, card, v->skew_id, 0, &s))) return st;
+        if ((st = rc_case_ref_skew(rd, &v->line_loc, card, v->skew_id, NULL, &s))) return st;
         const rc_case_skew *sk = &c->mesh->skew[s];
         for (int i = 0; i < 3; i++)
             v->v[i] = v->v_skew[0] * sk->axis[0][i] + v->v_skew[1] * sk->axis[1][i] + v->v_skew[2] * sk->axis[2][i];
@@ -204,7 +204,8 @@ rc_status rc_cards_loads_finish(rc_reader *rd)
         if (!g->skew_id) continue;
         snprintf(card, sizeof card, "/GRAV/%d", g->id);
         int s = -1;
-        if ((st = rc_load_skew(rd, &g->line_loc, card, g->skew_id, 1, &s))) return st;
+        if ((st = rc_case_ref_skew(rd, &g->line_loc, card, g->skew_id, "a gravity along a moving axis", &s)))
+            return st;
         memcpy(g->u, c->mesh->skew[s].axis[g->dir], sizeof g->u);
     }
     return RC_OK;

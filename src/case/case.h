@@ -390,11 +390,13 @@ typedef struct rc_case_friction {
 /* /FRIC_ORIENT/id: direction 1 of orthotropic friction per part / group. */
 typedef struct rc_case_fricorient_item {
     int grpart_id, part_id;
-    double v[3];    /* vector V, projected on the contact plane */
-    int skew_id;    /* 0 only */
+    double v[3];    /* vector V, projected on the contact plane (the
+                     * skew's X' axis when skew_id) */
+    int skew_id;    /* 0: V as read; a /SKEW/FIX: V = its X' axis */
     double phi;     /* angle PHI from V about the normal [deg] */
     int iorth;      /* Radioss Iorth (0 or 1), read */
     rc_loc loc;
+    rc_loc line_loc; /* its second line (VX VY VZ skew_ID PHI Iorth) */
 } rc_case_fricorient_item;
 
 typedef struct rc_case_fricorient {

@@ -757,8 +757,8 @@ TL('gene_rupture_ifail', '/PROP/TYPE8/9', 'field Ifail',
               SPR_ELEM, expect=5))
 
 
-# ---- skew_ID on /GRAV (a /SKEW/FIX axis; a moving skew stays refused) and
-# /INIVEL (a skew of any kind; an unknown id refused, as 101_inivel_skew)
+# ---- skew_ID on /GRAV (a /SKEW/FIX axis; a moving skew stays refused),
+# /INIVEL (a skew of any kind; an unknown id refused, as 101_inivel_skew) and /FRIC_ORIENT
 TL('grav_skew_missing', GR, 'field skew_ID', at(GR, 2, 21, 30, '9'))
 TL('grav_skew_mov', GR, 'field skew_ID',
    lambda lines: at(GR, 2, 21, 30, '9')(before_end(
@@ -767,6 +767,14 @@ TL('grav_skew_mov', GR, 'field skew_ID',
         '        93                   0                   1                   0',
         '/SKEW/MOV/9', 'moving', '        91        92        93         X'])(lines)[0]))
 TL('inivel_rot_skew_missing', IR, 'field skew_ID', at(IR, 2, 71, 80, '9'))
+# /FRIC_ORIENT skew_ID: V from a /SKEW/FIX's X' axis; unknown or moving skews refused
+TL('fo_skew_missing', FO, 'field skew_ID', at(FO, 3, 61, 70, '9'))
+TL('fo_skew_mov', FO, 'field skew_ID',
+   lambda lines: at(FO, 3, 61, 70, '9')(before_end(
+       ['/NODE', '        91                   0                   0                   0',
+        '        92                   1                   0                   0',
+        '        93                   0                   1                   0',
+        '/SKEW/MOV/9', 'moving', '        91        92        93         X'])(lines)[0]))
 
 
 def write_all():

@@ -380,6 +380,16 @@ static void test_mesh_deck_skew_loads(void)
         ENSURE_NEAR(md->body_grav[5], 0.0, 0, 1e-15);
         rc_model_free(md);
     }
+    /* /BCS with a skew: all three translations (or rotations) held or free,
+     * the same in any frame */
+    md = compile_text("/NODE\n1,0,0,0\n/SKEW/FIX/4\ns\n0,0,0\n1,1,0\n0,0,1\n"
+                      "/RBODY/1\nb\n1,0,0,3,1.0\n1.0,1.0,1.0\n0,0,0\n/GRNOD/NODE/1\none\n1\n"
+                      "/BCS/1\nb\n   111 000         4         1\n" RUN_TAIL,
+                      &e);
+    ENSURE(md != NULL);
+    if (!md) fprintf(stderr, "  %s\n", e.msg);
+    for (int j = 0; md && j < 6; j++) ENSURE(md->body_dofmask[j] == (j < 3));
+    rc_model_free(md);
     /* refused: no such skew; gravity along a moving skew */
     EXPECT_MESH_ERROR("/NODE\n1,0,0,0\n/RBODY/1\nb\n1,0,0,3,1.0\n1.0,1.0,1.0\n0,0,0\n/GRNOD/NODE/1\none\n1\n"
                       "/INIVEL/TRA/1\nv\n2,3,4,1,9\n" RUN_TAIL,

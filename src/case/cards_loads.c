@@ -15,7 +15,6 @@
 #include "case/case_mesh.h"
 #include "case/case_power.h"
 
-static const char rc_note_skew[] = "(skew frames)";
 static const char rc_note_sensor[] = "(sensors)";
 
 /* Default Tstop of /IMPVEL [s], as /INTER/TYPE6. */
@@ -180,7 +179,8 @@ rc_status rc_case_ref_skew(rc_reader *rd, const rc_loc *at, const char *card, in
     return RC_OK;
 }
 
-/* Once the skews' axes are known (rc_cards_mesh_finish): an /INIVEL's
+/* Once the skews' axes are known (rc_cards_mesh_finish): a /BCS's skew
+ * exists; an /INIVEL's
  * components given in a skew's axes (Radioss: V = Vx X' + Vy Y' + Vz Z', a
  * moving skew taken at its nodes' initial positions) and a /GRAV's
  * direction along a /SKEW/FIX axis, into global axes. */
@@ -198,6 +198,15 @@ rc_status rc_cards_loads_finish(rc_reader *rd)
         const rc_case_skew *sk = &c->mesh->skew[s];
         for (int i = 0; i < 3; i++)
             v->v[i] = v->v_skew[0] * sk->axis[0][i] + v->v_skew[1] * sk->axis[1][i] + v->v_skew[2] * sk->axis[2][i];
+    }
+    /* /BCS: the skew must exist (its flags, all or none, hold the same in
+     * any frame) */
+    for (int k = 0; k < c->nbcs; k++) {
+        const rc_case_bcs *x = &c->bcs[k];
+        if (!x->skew_id) continue;
+        snprintf(card, sizeof card, "/BCS/%d", x->id);
+        int s = -1;
+        if ((st = rc_case_ref_skew(rd, &x->line_loc, card, x->skew_id, NULL, &s))) return st;
     }
     for (int k = 0; k < c->ngrav; k++) {
         rc_case_grav *g = &c->grav[k];
@@ -242,7 +251,7 @@ rc_status rc_card_bcs(rc_reader *rd, const rc_block *b)
     /* 10-character fields; 8 in Radioss 4.x */
     const int w = rc_layout_version(rd) >= 51 ? 10 : 8;
     rc_field f[] = {RC_F_STR("Trarot", tr, 10),
-                    RC_F_INTN("skew_ID", &x->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew),
+                    RC_F_INT("skew_ID", &x->skew_id, 0, RC_FF_NONNEG),
                     RC_F_INTW("grnod_ID", &x->grnod_id, 0, RC_FF_NONNEG, w)};
     f[0].width = f[1].width = w;
     if ((st = rc_parse_line(rd, b, &b->lines[1], f, RC_NF(f)))) return st;
@@ -250,6 +259,20 @@ rc_status rc_card_bcs(rc_reader *rd, const rc_block *b)
         return rc_case_fail(rd, &b->lines[1].loc, b->name, "Trarot",
                             "expected up to six 0/1 flags TxTyTz RxRyRz (e.g. \"111 000\"), got %s",
                             f[0].got);
+    /* with a skew: the flags held along its axes; ricochet holds global
+     * translations and body-frame rotations, so only all or none of each
+     * three (the same set in any frame) */
+    if (x->skew_id && (x->fix[0] + x->fix[1] + x->fix[2]) % 3 != 0)
+        return rc_case_fail(rd, &b->lines[1].loc, b->name, "skew_ID",
+                            "Trarot %s holds some translations along the axes of skew %d: not supported yet "
+                            "(with a skew, Tx Ty Tz all held or all free; ricochet holds global translations)",
+                            f[0].got, x->skew_id);
+    if (x->skew_id && (x->fix[3] + x->fix[4] + x->fix[5]) % 3 != 0)
+        return rc_case_fail(rd, &b->lines[1].loc, b->name, "skew_ID",
+                            "Trarot %s holds some rotations about the axes of skew %d: not supported yet "
+                            "(with a skew, Rx Ry Rz all held or all free; ricochet holds rotations about the "
+                            "global axes)",
+                            f[0].got, x->skew_id);
     return rc_note_id(rd, RC_IDK_BCS, x->id, &x->loc, b->hdr->text);
 }
 

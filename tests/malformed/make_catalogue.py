@@ -775,6 +775,10 @@ TL('fo_skew_mov', FO, 'field skew_ID',
         '        92                   1                   0                   0',
         '        93                   0                   1                   0',
         '/SKEW/MOV/9', 'moving', '        91        92        93         X'])(lines)[0]))
+# /BCS skew_ID: all or none of Tx Ty Tz (Rx Ry Rz) only; an unknown skew refused
+TL('bcs_skew_partial', BC1, 'field skew_ID', at(BC1, 2, 11, 20, '9'))
+TL('bcs_skew_missing', BC1, 'field skew_ID',
+   lambda lines: at(BC1, 2, 1, 20, '111 000         9')(lines))
 
 
 def write_all():

@@ -114,6 +114,9 @@ static void expect_same(int type, const char *fric, const char *l6, const char *
         ENSURE(fa.kind == RC_FK_CARD && fb.kind == RC_FK_CARD);
         ENSURE(fa.card_id < 0 && fb.card_id == 9);
         ENSURE(fa.ifric == ifric && fb.ifric == ifric);
+        /* the form: TYPE24 and TYPE25 incremental; TYPE7, TYPE19 by Iform */
+        const int incr = type == 24 || type == 25 || (strlen(l6) >= 50 && l6[49] == '2');
+        ENSURE(fa.form == (incr ? RC_FF_INCREMENTAL : RC_FF_VISCOUS));
         ENSURE_NEAR(fa.tau, tau, 1e-15, 0);
         fa.card_id = fb.card_id;
         ENSURE(memcmp(&fa, &fb, sizeof fa) == 0);
@@ -133,14 +136,20 @@ static void test_ifric_same_as_friction(void)
     static const char l6_renard[] = "         3         3                 200";
     static const char law_renard[] = "                 0.3                0.25                 0.4                 0.2"
                                      "                0.05\n                 0.5\n";
+    /* Iform: TYPE7's and TYPE19's (blank: 1, the viscous form); TYPE24 and
+     * TYPE25 have none: 2, the incremental form of their own Fric */
     static const char card_renard[] = "/FRICTION/9\nRenard\n3,3,200,1\n0.3,0.25,0.4,0.2,0.05\n0.5,0,1\n";
+    static const char card_renard2[] = "/FRICTION/9\nRenard\n3,3,200,2\n0.3,0.25,0.4,0.2,0.05\n0.5,0,1\n";
     static const char l6_visc[] = "         1";
     static const char law_visc[] = "                   0                 0.1\n";
     static const char card_visc[] = "/FRICTION/9\nviscous\n1,0,,1\n0,0.1\n0,0.3,1\n";
+    static const char card_visc2[] = "/FRICTION/9\nviscous\n1,0,,2\n0,0.1\n0,0.3,1\n";
     const int types[4] = {7, 19, 24, 25};
     for (int k = 0; k < 4; k++) {
-        expect_same(types[k], "0", l6_renard, law_renard, card_renard, 3, 1.0 / (2.0 * PI_ * 200.0));
-        expect_same(types[k], "0.3", l6_visc, law_visc, card_visc, 1, 0.0);
+        const int incr = types[k] == 24 || types[k] == 25;
+        expect_same(types[k], "0", l6_renard, law_renard, incr ? card_renard2 : card_renard, 3,
+                    1.0 / (2.0 * PI_ * 200.0));
+        expect_same(types[k], "0.3", l6_visc, law_visc, incr ? card_visc2 : card_visc, 1, 0.0);
     }
     /* TYPE7's Iform 2 is the law's (the incremental form) */
     expect_same(7, "0.3", "         1         0                   0         2", law_visc,
@@ -151,7 +160,7 @@ static void test_ifric_same_as_friction(void)
     rc_error_clear(&e);
     char l6[128];
     snprintf(l6, sizeof l6, "         3%89s9", "");
-    const char *text = ifr_deck(24, "0", l6, law_renard, card_renard);
+    const char *text = ifr_deck(24, "0", l6, law_renard, card_renard2);
     ENSURE(rc_case_load(tu_tmp_write("ifrboth.rad", text), &c, &e) == RC_OK);
     if (c) {
         ENSURE(c->ntype24 == 1 && c->type24[0].fric_id == 9 && c->nfriction == 1 && c->nwarnings >= 1);

@@ -189,7 +189,10 @@ rc_status rc_card_friction(rc_reader *rd, const rc_block *b)
  * read from b->lines[6]), then Radioss's law lines after line 6: C1..C5
  * when Ifric > 0, C6 when Ifric > 1 (five and one fields of 20). A law or
  * a filter becomes a /FRICTION card of the same values (Iform, Fric and
- * VISF the interface's, no part pairs, no Dt_ref or Area) with id < 0,
+ * VISF the interface's: Iform 0, 1, 1000 the viscous form, 2 the
+ * incremental one; TYPE24 and TYPE25, which have no Iform, pass 2, the
+ * form of their own Coulomb Fric; no part pairs, no Dt_ref or Area) with
+ * id < 0,
  * named by the interface's fric_id; the compiler applies it to that
  * interface alone (model/friction.c). A fric_ID on the card wins, as in
  * Radioss. *nlaw: the law lines read (0, 1 or 2); nd: the card's data

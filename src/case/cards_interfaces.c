@@ -648,7 +648,7 @@ rc_status rc_card_type24(rc_reader *rd, const rc_block *b)
         if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
     }
     int nlaw = 0;
-    if ((st = rc_inter_friction(rd, b, nd, l6, ifric, ifiltr, xfreq, 0, t->fric, 1.0, &t->fric_id, &nlaw)))
+    if ((st = rc_inter_friction(rd, b, nd, l6, ifric, ifiltr, xfreq, 2, t->fric, 1.0, &t->fric_id, &nlaw)))
         return st;
     if (nd > 6 + nlaw)
         return rc_case_fail(rd, &b->lines[7 + nlaw].loc, b->name, NULL,
@@ -758,7 +758,7 @@ rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
         if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
     }
     int nlaw = 0;
-    if ((st = rc_inter_friction(rd, b, nd, l6, ifric, ifiltr, xfreq, 0, t->fric, 1.0, &t->fric_id, &nlaw)))
+    if ((st = rc_inter_friction(rd, b, nd, l6, ifric, ifiltr, xfreq, 2, t->fric, 1.0, &t->fric_id, &nlaw)))
         return st;
     if (nd > 6 + nlaw)
         return rc_case_fail(rd, &b->lines[7 + nlaw].loc, b->name, NULL,

@@ -642,6 +642,32 @@ static void test_ball_rolls_onto_incline(void)
     ENSURE(fabs(a - expect) < 1e-4 * expect);
 }
 
+/* A ball sliding at 0.11 m/s along a wall whose contact settled
+ * (tests/data/ball_wall_fric_turn.rad, the fuzzer's 67000016 shrunk:
+ * Iform 1, Stiff = K_t = 5.8e14 N/m; the normal force falls at 3e7 N/s
+ * and the limit, 0.01 N, is 3.5 force tolerances of F_t). After each
+ * fric_turn the state reloads towards the limit at K_t |v_t| / L_r =
+ * 1.5e13 1/s; the integrator's steps grew out of the restart to h times
+ * that rate of 5 at BDF order 3, a step carried the state through zero
+ * along the sliding within its tolerance, and the slip root crossed again
+ * 1e-12 s later: 200 fric_turn within 3e-10 s (Zeno, exit 3). The restart
+ * after a turn now keeps the order at most 2 (A-stable) until the next
+ * restart: the run ends. */
+static void test_fric_turn_reload_stays_against_the_sliding(void)
+{
+    rc_model *m = TU_LOAD_OK("tests/data/ball_wall_fric_turn.rad");
+    if (!m) return;
+    rc_error e;
+    rc_run_options o;
+    memset(&o, 0, sizeof o);
+    rc_stats st;
+    const rc_status s = rc_run(m, &o, &st, &e);
+    printf("    %s, %ld steps, %ld events, %ld restarts; physics checks: %s\n", s ? e.msg : "ok", st.steps, st.events,
+           st.reinits, st.physics_note);
+    ENSURE(s == RC_OK && st.violations == 0);
+    rc_model_free(m);
+}
+
 /* A 1 kg ball (radius 0.05 m) touching a floor plane z = 0: its node,
  * body, sphere, the plane and the ball's node group, as deck text. */
 #define BALL_ON_FLOOR \
@@ -1314,6 +1340,7 @@ void suite_passive(void)
     RUN_TEST(test_iform1_stored_energy_on_the_unload_path);
     RUN_TEST(test_iform2_reversals_stay_on_the_stiff_line);
     RUN_TEST(test_ball_rolls_onto_incline);
+    RUN_TEST(test_fric_turn_reload_stays_against_the_sliding);
     RUN_TEST(test_slip_waits_for_a_falling_limit);
     RUN_TEST(test_corner_stick_tested_with_its_spring);
     RUN_TEST(test_viscous_reversal_root_waits_for_a_limit);

@@ -11,6 +11,7 @@
 #include "case/case_mesh.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -181,6 +182,93 @@ rc_status rc_card_friction(rc_reader *rd, const rc_block *b)
         i += need;
     }
     return rc_note_id(rd, RC_IDK_FRICTION, fr->id, &fr->loc, b->hdr->text);
+}
+
+/* The friction law written on a penalty interface card (/INTER/TYPE7,
+ * TYPE19, TYPE24, TYPE25): line 6's Ifric Ifiltr Xfreq (fields f6[0..2],
+ * read from b->lines[6]), then Radioss's law lines after line 6: C1..C5
+ * when Ifric > 0, C6 when Ifric > 1 (five and one fields of 20). A law or
+ * a filter becomes a /FRICTION card of the same values (Iform, Fric and
+ * VISF the interface's: Iform 0, 1, 1000 the viscous form, 2 the
+ * incremental one; TYPE24 and TYPE25, which have no Iform, pass 2, the
+ * form of their own Coulomb Fric; no part pairs, no Dt_ref or Area) with
+ * id < 0,
+ * named by the interface's fric_id; the compiler applies it to that
+ * interface alone (model/friction.c). A fric_ID on the card wins, as in
+ * Radioss. *nlaw: the law lines read (0, 1 or 2); nd: the card's data
+ * lines. */
+rc_status rc_inter_friction(rc_reader *rd, const rc_block *b, int nd, const rc_field *f6, int ifric, int ifiltr,
+                            double xfreq, int iform, double fric, double visf, int *fric_id, int *nlaw)
+{
+    rc_case *c = rd->c;
+    rc_status st;
+    const rc_loc *l6 = &b->lines[6].loc;
+    *nlaw = 0;
+    if (ifric < 0 || ifric > 3)
+        return rc_case_fail(rd, l6, b->name, "Ifric",
+                            "expected 0 (Coulomb: Fric), 1 (generalised viscous), 2 (modified Darmstad) or 3 "
+                            "(Renard), got %s",
+                            f6[0].got);
+    if (ifiltr < 0 || ifiltr > 3)
+        return rc_case_fail(rd, l6, b->name, "Ifiltr",
+                            "expected 0 (no filter), 1 (simple numerical), 2 (-3 dB filter with a period) or 3 "
+                            "(-3 dB filter with a cut-off frequency), got %s",
+                            f6[1].got);
+    *nlaw = ifric > 1 ? 2 : ifric;
+    if (nd < 6 + *nlaw)
+        return rc_case_fail(rd, &b->lines[nd].loc, b->name, *nlaw == 2 && nd == 7 ? "C6" : "C1 C2 C3 C4 C5",
+                            "Ifric %d reads %d friction law line%s after line 6 (C1 C2 C3 C4 C5%s): expected %d data "
+                            "lines, got %d",
+                            ifric, *nlaw, *nlaw > 1 ? "s" : "", *nlaw > 1 ? "; C6" : "", 6 + *nlaw, nd);
+    /* the filter, as /FRICTION reads it: Ifiltr 3 a frequency [1/s] in the
+     * card's time unit; Xfreq 0 switches a filter of 1 or 2 off */
+    if (ifiltr == 3 && rc_units_convert(rd)) xfreq /= rd->cur_units[2];
+    if ((ifiltr == 1 || ifiltr == 2) && !(xfreq >= 0 && xfreq <= 1))
+        return rc_case_fail(rd, l6, b->name, "Xfreq",
+                            "expected a filtering coefficient in [0, 1] for Ifiltr = %d, got %s", ifiltr, f6[2].got);
+    if (ifiltr == 3 && !(xfreq > 0))
+        return rc_case_fail(rd, l6, b->name, "Xfreq", "expected a cut-off frequency > 0 [Hz] for Ifiltr = 3, got %s",
+                            f6[2].got);
+    if (xfreq == 0) ifiltr = 0;
+    if (ifiltr == 1 || ifiltr == 2)
+        return rc_case_fail(rd, l6, b->name, "Ifiltr",
+                            "got %s: not supported yet on the interface card: Ifiltr %d gives its coefficient Xfreq "
+                            "per explicit time step, and ricochet's variable-step integrator has none; the card has "
+                            "no column for the reference step; expected 0, 3 (a cut-off frequency), Xfreq 0 (no "
+                            "filter), or the filter on a /FRICTION card with its Dt_ref, named by fric_ID",
+                            f6[1].got, ifiltr);
+    rc_case_fricset s = {.fric = fric, .visf = visf};
+    rc_field f1[] = {RC_F_REALD("C1", &s.c[0], 0, 0, 0), RC_F_REALD("C2", &s.c[1], 0, 0, 0),
+                     RC_F_REALD("C3", &s.c[2], 0, 0, 0), RC_F_REALD("C4", &s.c[3], 0, 0, 0),
+                     RC_F_REALD("C5", &s.c[4], 0, 0, 0)};
+    rc_field f2[] = {RC_F_REALD("C6", &s.c[5], 0, 0, 0)};
+    /* the units of /FRICTION's C1..C6 (rc_fricset) */
+    for (int k = 0; k < 5; k++) f1[k].dim = ifric == 3 ? RC_D_NONE : 0;
+    if (ifric == 3) f1[4].dim = f2[0].dim = RC_D_V;
+    if (*nlaw >= 1 && (st = rc_parse_line(rd, b, &b->lines[7], f1, RC_NF(f1)))) return st;
+    if (*nlaw >= 2 && (st = rc_parse_line(rd, b, &b->lines[8], f2, RC_NF(f2)))) return st;
+    if (ifric == 3 && (st = rc_renard(rd, b, &b->lines[7], f1, &s))) return st;
+    if (ifric == 0 && ifiltr == 0) return RC_OK; /* the interface's own Coulomb Fric */
+    if (*fric_id > 0)
+        return rc_case_warn(rd, l6, "card %s: the friction of Ifric %d, Ifiltr %d is not used: fric_ID names "
+                                    "/FRICTION/%d, which applies (Radioss rule)",
+                            b->name, ifric, ifiltr, *fric_id);
+    RC_GROW(rd, c->friction, rd->capfriction, c->nfriction);
+    rc_case_friction *fr = &c->friction[c->nfriction++];
+    memset(fr, 0, sizeof *fr);
+    fr->id = -c->nfriction;
+    snprintf(fr->owner, sizeof fr->owner, "/%s/%s/%d", b->kw[0], b->kw[1], b->id);
+    fr->loc = b->hdr->loc;
+    fr->line_loc[0] = *l6;
+    fr->line_loc[1] = *nlaw >= 1 ? b->lines[7].loc : *l6;
+    fr->line_loc[2] = *nlaw >= 2 ? b->lines[8].loc : fr->line_loc[1];
+    fr->ifric = ifric;
+    fr->ifiltr = ifiltr;
+    fr->xfreq = xfreq;
+    fr->iform = iform == 2 ? 2 : 1;
+    fr->def = s;
+    *fric_id = fr->id;
+    return RC_OK;
 }
 
 /* /FRIC_ORIENT/fric_orient_ID: title; per part or part group two lines:

@@ -403,11 +403,9 @@ rc_status rc_card_type7(rc_reader *rd, const rc_block *b)
         RC_F_REALD("VISF", &t->visf, RC_T7_DEF_VISF, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
         RC_F_REALD("Bumult", &bumult, 0, RC_FF_NONNEG, RC_D_NONE)};
     rc_field l6[] = {
-        {.name = "Ifric", .width = 10, .type = RC_FT_INT, .out = &ifric, .flags = RC_FF_ONLY0,
-         .note = "the friction laws of TYPE7; a /FRICTION card with its Ifric applies to the interface (fric_ID)"},
-        {.name = "Ifiltr", .width = 10, .type = RC_FT_INT, .out = &ifiltr, .flags = RC_FF_ONLY0,
-         .note = "the friction filter of TYPE7; a /FRICTION card with its Ifiltr applies to the interface (fric_ID)"},
-        RC_F_REALD("Xfreq", &xfreq, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_INT("Ifric", &ifric, 0, 0),
+        RC_F_INT("Ifiltr", &ifiltr, 0, 0),
+        RC_F_REALD("Xfreq", &xfreq, 1, 0, RC_D_NONE),
         RC_F_INT("Iform", &t->iform, 0, RC_FF_NONNEG),
         RC_F_INT("sens_ID", &t->sensor_id, 0, RC_FF_NONNEG),
         {.name = "fct_IDF", .width = 10, .type = RC_FT_INT, .out = &fct_f, .flags = RC_FF_ONLY0,
@@ -420,11 +418,14 @@ rc_status rc_card_type7(rc_reader *rd, const rc_block *b)
         t->line_loc[k] = b->lines[k + 1].loc;
         if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
     }
-    if (nd > 6)
-        return rc_case_fail(rd, &b->lines[7].loc, b->name, NULL,
-                            "expected 6 data lines (Icurv, Ifric and Ithe 0: no curvature, friction law or "
-                            "thermal lines), got %d",
-                            nd);
+    int nlaw = 0;
+    if ((st = rc_inter_friction(rd, b, nd, l6, ifric, ifiltr, xfreq, t->iform, t->fric, t->visf, &t->fric_id, &nlaw)))
+        return st;
+    if (nd > 6 + nlaw)
+        return rc_case_fail(rd, &b->lines[7 + nlaw].loc, b->name, NULL,
+                            "expected %d data lines (Icurv and Ithe 0: no curvature or thermal lines; Ifric %d: %d "
+                            "friction law lines), got %d",
+                            6 + nlaw, ifric, nlaw, nd);
     /* the stiffness: Stfac a stiffness value (Istf 1), or a factor on the
      * main elements' stiffness (0, 1000: model/type7.c) */
     if (t->istf == RC_T7_DEFAULT) t->istf = 0;
@@ -633,11 +634,9 @@ rc_status rc_card_type24(rc_reader *rd, const rc_block *b)
         {.name = "Tpressfit", .width = 20, .type = RC_FT_REAL, .out = &tpressfit, .flags = RC_FF_ONLY0, .dim = RC_D_T,
          .note = "press-fit of initially penetrating surfaces"}};
     rc_field l6[] = {
-        {.name = "Ifric", .width = 10, .type = RC_FT_INT, .out = &ifric, .flags = RC_FF_ONLY0,
-         .note = "the friction laws of TYPE24; a /FRICTION card with its Ifric applies to the interface (fric_ID)"},
-        {.name = "Ifiltr", .width = 10, .type = RC_FT_INT, .out = &ifiltr, .flags = RC_FF_ONLY0,
-         .note = "the friction filter of TYPE24; a /FRICTION card with its Ifiltr applies to the interface (fric_ID)"},
-        RC_F_REALD("Xfreq", &xfreq, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_INT("Ifric", &ifric, 0, 0),
+        RC_F_INT("Ifiltr", &ifiltr, 0, 0),
+        RC_F_REALD("Xfreq", &xfreq, 1, 0, RC_D_NONE),
         RC_F_SKIP(10),
         RC_F_INT("sens_ID", &t->sensor_id, 0, RC_FF_NONNEG),
         RC_F_SKIP(30),
@@ -648,9 +647,13 @@ rc_status rc_card_type24(rc_reader *rd, const rc_block *b)
         t->line_loc[k] = b->lines[k + 1].loc;
         if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
     }
-    if (nd > 6)
-        return rc_case_fail(rd, &b->lines[7].loc, b->name, NULL,
-                            "expected 6 data lines (Ifric 0: no friction law lines), got %d", nd);
+    int nlaw = 0;
+    if ((st = rc_inter_friction(rd, b, nd, l6, ifric, ifiltr, xfreq, 2, t->fric, 1.0, &t->fric_id, &nlaw)))
+        return st;
+    if (nd > 6 + nlaw)
+        return rc_case_fail(rd, &b->lines[7 + nlaw].loc, b->name, NULL,
+                            "expected %d data lines (Ifric %d: %d friction law lines), got %d", 6 + nlaw, ifric, nlaw,
+                            nd);
     const t24_fields f = {&l1[1], &l1[2], &l4[0], &l3[1], &l3[2], &l5[2], &l4[4], "surf_ID1"};
     if ((st = t24_checks(rd, b, t, igap0, &f))) return st;
     if ((st = t7_only_default(rd, b, &t->line_loc[2], &l3[3], ipen0,
@@ -661,7 +664,6 @@ rc_status rc_card_type24(rc_reader *rd, const rc_block *b)
     (void)edge_angle;
     (void)gap_max_s;
     (void)gap_max_m;
-    (void)xfreq;
     return rc_note_id(rd, RC_IDK_INTER, t->id, &t->loc, b->hdr->text);
 }
 
@@ -740,11 +742,9 @@ rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
         {.name = "Pmax", .width = 20, .type = RC_FT_REAL, .out = &pmax, .flags = RC_FF_ONLY0, .dim = RC_D_K2,
          .note = "a largest contact pressure"}};
     rc_field l6[] = {
-        {.name = "Ifric", .width = 10, .type = RC_FT_INT, .out = &ifric, .flags = RC_FF_ONLY0,
-         .note = "the friction laws of TYPE25; a /FRICTION card with its Ifric applies to the interface (fric_ID)"},
-        {.name = "Ifiltr", .width = 10, .type = RC_FT_INT, .out = &ifiltr, .flags = RC_FF_ONLY0,
-         .note = "the friction filter of TYPE25; a /FRICTION card with its Ifiltr applies to the interface (fric_ID)"},
-        RC_F_REALD("Xfreq", &xfreq, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_INT("Ifric", &ifric, 0, 0),
+        RC_F_INT("Ifiltr", &ifiltr, 0, 0),
+        RC_F_REALD("Xfreq", &xfreq, 1, 0, RC_D_NONE),
         RC_F_SKIP(10),
         RC_F_INT("sens_ID", &t->sensor_id, 0, RC_FF_NONNEG),
         {.name = "DTSTIF", .width = 20, .type = RC_FT_REAL, .out = &dtstif, .flags = RC_FF_ONLY0, .dim = RC_D_NONE,
@@ -757,11 +757,14 @@ rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
         t->line_loc[k] = b->lines[k + 1].loc;
         if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
     }
-    if (nd > 6)
-        return rc_case_fail(rd, &b->lines[7].loc, b->name, NULL,
-                            "expected 6 data lines (Ifric 0, IVIS2 0 and Ithe 0: no friction law, adhesion or "
-                            "thermal lines), got %d",
-                            nd);
+    int nlaw = 0;
+    if ((st = rc_inter_friction(rd, b, nd, l6, ifric, ifiltr, xfreq, 2, t->fric, 1.0, &t->fric_id, &nlaw)))
+        return st;
+    if (nd > 6 + nlaw)
+        return rc_case_fail(rd, &b->lines[7 + nlaw].loc, b->name, NULL,
+                            "expected %d data lines (IVIS2 0 and Ithe 0: no adhesion or thermal lines; Ifric %d: %d "
+                            "friction law lines), got %d",
+                            6 + nlaw, ifric, nlaw, nd);
     const t24_fields f = {&l1[1], &l1[2], &l4[0], &l3[1], &l3[2], &l5[3], &l4[4], "surf_ID1"};
     if ((st = t24_checks(rd, b, t, igap0, &f))) return st;
     if ((st = t7_only_default(rd, b, &t->line_loc[0], &l1[4], igap,
@@ -780,7 +783,6 @@ rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
     (void)gap_max_m;
     (void)ishape;
     (void)edge_angle;
-    (void)xfreq;
     return rc_note_id(rd, RC_IDK_INTER, t->id, &t->loc, b->hdr->text);
 }
 
@@ -975,11 +977,9 @@ rc_status rc_card_type19(rc_reader *rd, const rc_block *b)
         RC_F_REALD("VISF", &visf, RC_T7_DEF_VISF, RC_FF_ZDEF | RC_FF_NONNEG, RC_D_NONE),
         RC_F_REALD("Bumult", &bumult, 0, RC_FF_NONNEG, RC_D_NONE)};
     rc_field l6[] = {
-        {.name = "Ifric", .width = 10, .type = RC_FT_INT, .out = &ifric, .flags = RC_FF_ONLY0,
-         .note = "the friction laws of TYPE19; a /FRICTION card with its Ifric applies to the interface (fric_ID)"},
-        {.name = "Ifiltr", .width = 10, .type = RC_FT_INT, .out = &ifiltr, .flags = RC_FF_ONLY0,
-         .note = "the friction filter of TYPE19; a /FRICTION card with its Ifiltr applies to the interface (fric_ID)"},
-        RC_F_REALD("Xfreq", &xfreq, 0, RC_FF_NONNEG, RC_D_NONE),
+        RC_F_INT("Ifric", &ifric, 0, 0),
+        RC_F_INT("Ifiltr", &ifiltr, 0, 0),
+        RC_F_REALD("Xfreq", &xfreq, 1, 0, RC_D_NONE),
         RC_F_INT("Iform", &iform, 0, RC_FF_NONNEG),
         RC_F_INT("sens_ID", &t->sensor_id, 0, RC_FF_NONNEG),
         RC_F_SKIP(30),
@@ -990,11 +990,14 @@ rc_status rc_card_type19(rc_reader *rd, const rc_block *b)
         t->line_loc[k] = b->lines[k + 1].loc;
         if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
     }
-    if (nd > 6)
-        return rc_case_fail(rd, &b->lines[7].loc, b->name, NULL,
-                            "expected 6 data lines (Icurv, Ifric and Ithe 0: no curvature, friction law or "
-                            "thermal lines), got %d",
-                            nd);
+    int nlaw = 0;
+    if ((st = rc_inter_friction(rd, b, nd, l6, ifric, ifiltr, xfreq, iform, t->fric, visf, &t->fric_id, &nlaw)))
+        return st;
+    if (nd > 6 + nlaw)
+        return rc_case_fail(rd, &b->lines[7 + nlaw].loc, b->name, NULL,
+                            "expected %d data lines (Icurv and Ithe 0: no curvature or thermal lines; Ifric %d: %d "
+                            "friction law lines), got %d",
+                            6 + nlaw, ifric, nlaw, nd);
     const rc_field igap0 = RC_F_INT("Igap0", NULL, 0, 0);
     const t24_fields f = {&l1[1], &l1[2], &l4[0], &l3[1], &igap0, &l5[2], &l4[4], "surf_IDs"};
     if ((st = t24_checks(rd, b, t, 0, &f))) return st;
@@ -1026,6 +1029,5 @@ rc_status rc_card_type19(rc_reader *rd, const rc_block *b)
     (void)irem_gap;
     (void)irem_i2;
     (void)bumult;
-    (void)xfreq;
     return rc_note_id(rd, RC_IDK_INTER, t->id, &t->loc, b->hdr->text);
 }

@@ -385,6 +385,8 @@ typedef struct rc_case_friction {
     rc_case_fricpair *pair; /* [npair] */
     rc_loc loc;
     rc_loc line_loc[3];     /* the three lines of the header part */
+    char owner[64];         /* "" a /FRICTION card; else the interface card whose line 6 and
+                             * law lines gave it ("/INTER/TYPE7/12"; id < 0, named by its fric_id) */
 } rc_case_friction;
 
 /* /FRIC_ORIENT/id: direction 1 of orthotropic friction per part / group. */

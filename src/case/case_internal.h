@@ -350,6 +350,8 @@ rc_status rc_card_sensor_time(rc_reader *rd, const rc_block *b);
 
 /* Friction (cards_friction.c). */
 rc_status rc_card_friction(rc_reader *rd, const rc_block *b);
+rc_status rc_inter_friction(rc_reader *rd, const rc_block *b, int nd, const rc_field *f6, int ifric, int ifiltr,
+                            double xfreq, int iform, double fric, double visf, int *fric_id, int *nlaw);
 rc_status rc_card_fricorient(rc_reader *rd, const rc_block *b);
 
 /* Couplings (cards_couplings.c). */

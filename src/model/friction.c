@@ -209,6 +209,11 @@ static rc_status apply_card(const rc_case *c, rc_model *m, int i, const rc_case_
 {
     rc_fric *fr = &m->inter_fr[i];
     const double kt = fr->kt; /* the interface's stick stiffness stays */
+    char cn[96]; /* the card, for messages: a /FRICTION or the interface card of an inline law */
+    if (f->owner[0])
+        snprintf(cn, sizeof cn, "%s (its Ifric line)", f->owner);
+    else
+        snprintf(cn, sizeof cn, "/FRICTION/%d", f->id);
     memset(fr, 0, sizeof *fr);
     fr->kind = RC_FK_CARD;
     fr->card_id = f->id;
@@ -219,10 +224,10 @@ static rc_status apply_card(const rc_case *c, rc_model *m, int i, const rc_case_
     fr->mus = s0->fric;
     if (fr->exact && (f->ifric != 0 || f->ifiltr != 0 || (g && g->idir == 1)))
         RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card /FRICTION/%d, field Iform: exact stick (3) is supported with the Coulomb law only, "
+                 RC_LOCFMT "card %s, field Iform: exact stick (3) is supported with the Coulomb law only, "
                            "isotropic and unfiltered (not supported yet: Ifric %d, Ifiltr %d, Idir %d); expected "
                            "Iform 2 or Ifric = Ifiltr = Idir = 0",
-                 RC_LOC(f->line_loc[0]), f->id, f->ifric, f->ifiltr, g ? g->idir : 0);
+                 RC_LOC(f->line_loc[0]), cn, f->ifric, f->ifiltr, g ? g->idir : 0);
     fr->ifric = f->ifric;
     fr->kt = kt;
     fr->fct_ff = fr->fct_fv = -1;
@@ -239,8 +244,8 @@ static rc_status apply_card(const rc_case *c, rc_model *m, int i, const rc_case_
     if (f->ifiltr == 1 || f->ifiltr == 2) {
         if (!(f->dt_ref > 0))
             RC_RAISE(err, RC_EINPUT,
-                     RC_LOCFMT "card /FRICTION/%d, field Dt_ref: Ifiltr = %d gives its coefficient per explicit time step: expected the reference step Dt_ref > 0 [s], got blank",
-                     RC_LOC(f->line_loc[0]), f->id, f->ifiltr);
+                     RC_LOCFMT "card %s, field Dt_ref: Ifiltr = %d gives its coefficient per explicit time step: expected the reference step Dt_ref > 0 [s], got blank",
+                     RC_LOC(f->line_loc[0]), cn, f->ifiltr);
         fr->tau = f->ifiltr == 1 ? f->dt_ref / f->xfreq : f->dt_ref / (2.0 * RC_PI * f->xfreq);
     }
     /* pressure area: the card's, or the projected area of the (smaller)
@@ -253,12 +258,20 @@ static rc_status apply_card(const rc_case *c, rc_model *m, int i, const rc_case_
     double r = m->surf_r[m->inter_sa[i]];
     if (m->inter_pair[i] == RC_PAIR_SPHERE_SPHERE) r = fmin(r, m->surf_r[m->inter_sb[i]]);
     fr->area = f->area > 0 ? f->area : sphere ? RC_PI * r * r : 0.0;
+    if (!(fr->area > 0) && uses_pressure(f, g) && f->owner[0])
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card %s, field Ifric: the law (Ifric %d) reads the contact pressure p = F_n / Area on "
+                           "%s, a %s pair, whose contact area ricochet takes only for a sphere (pi R^2), and the "
+                           "interface card has no Area: expected coefficients of p zero (C1, C3%s), or the law on "
+                           "a /FRICTION card with its Area, named by fric_ID",
+                 RC_LOC(f->line_loc[0]), f->owner, f->ifric, m->inter_name[i], rc_geom_inter_pair_name(m, i),
+                 f->ifric == 1 ? ", C4" : "");
     if (!(fr->area > 0) && uses_pressure(f, g))
         RC_RAISE(err, RC_EINPUT,
-                 RC_LOCFMT "card /FRICTION/%d, field Area: the law (Ifric %d) reads the contact pressure p = F_n / Area "
+                 RC_LOCFMT "card %s, field Area: the law (Ifric %d) reads the contact pressure p = F_n / Area "
                            "on %s, a %s pair, whose contact area ricochet takes only for a sphere (pi R^2): expected "
                            "Area > 0 [m^2], got blank",
-                 RC_LOC(f->line_loc[0]), f->id, f->ifric, m->inter_name[i], rc_geom_inter_pair_name(m, i));
+                 RC_LOC(f->line_loc[0]), cn, f->ifric, m->inter_name[i], rc_geom_inter_pair_name(m, i));
     /* reduced mass of the two bodies (a body without states is infinitely heavy) */
     const int b[2] = {m->inter_ba[i], m->inter_bb[i]};
     double inv = 0;
@@ -266,8 +279,8 @@ static rc_status apply_card(const rc_case *c, rc_model *m, int i, const rc_case_
         if (b[k] >= 0 && m->body_yadr[b[k]] >= 0) inv += 1.0 / m->body_mass[b[k]];
     fr->mred = inv > 0 ? 1.0 / inv : 0.0;
     if (fr->form == RC_FF_INCREMENTAL && !(fr->kt > 0))
-        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card /FRICTION/%d, field Iform: the incremental form needs a stiffness; %s has none",
-                 RC_LOC(f->line_loc[0]), f->id, m->inter_name[i]);
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field Iform: the incremental form needs a stiffness; %s has none",
+                 RC_LOC(f->line_loc[0]), cn, m->inter_name[i]);
     /* orthotropy: direction 1 from /FRIC_ORIENT of the second surface's part
      * (the main surface, as in Radioss), else of the first */
     if (fr->ortho) {
@@ -280,8 +293,8 @@ static rc_status apply_card(const rc_case *c, rc_model *m, int i, const rc_case_
         }
         if (!it)
             RC_RAISE(err, RC_EINPUT,
-                     RC_LOCFMT "card /FRICTION/%d: orthotropic friction (Idir = 1) for %s needs a /FRIC_ORIENT naming the part of one of its surfaces",
-                     RC_LOC(g->loc), f->id, m->inter_name[i]);
+                     RC_LOCFMT "card %s: orthotropic friction (Idir = 1) for %s needs a /FRIC_ORIENT naming the part of one of its surfaces",
+                     RC_LOC(g->loc), cn, m->inter_name[i]);
         memcpy(fr->odir, it->v, sizeof fr->odir);
         fr->obody = m->surf_body[side];
         fr->oside = side == m->inter_sa[i] ? 1 : -1; /* n points from a to b */
@@ -314,8 +327,11 @@ rc_status rc_friction_compile(const rc_case *c, rc_model *m, rc_error *err)
         const int fid = i < c->ntype6 ? c->type6[i].fric_id : 0;
         for (int f = 0; f < c->nfriction; f++) {
             const rc_case_friction *cf = &c->friction[f];
-            /* a TYPE7's fric_ID: that card, its group of the two parts or its defaults */
-            if (fid > 0 && cf->id != fid) continue;
+            /* a TYPE7's fric_ID: that card, its group of the two parts or its defaults;
+             * fric_id < 0: the law written on the interface card itself */
+            if (fid != 0 && cf->id != fid) continue;
+            /* a card's inline law (id < 0) applies to that interface alone */
+            if (fid == 0 && cf->id < 0) continue;
             if (fid <= 0 && cf->npair > 0 && !(card_names(c, cf, pa) && card_names(c, cf, pb))) continue;
             card = cf;
             group = NULL;
@@ -340,7 +356,11 @@ void rc_friction_print(const rc_model *m, int i, FILE *f)
         fprintf(f, "  %-18s friction step5: mu_s %.5g at v_s %.5g m/s, mu_d %.5g beyond v_d %.5g m/s, f_max %.5g N%s\n",
                 m->inter_name[i], fr->set[0][RC_S5_MUS], fr->set[0][RC_S5_VS], fr->set[0][RC_S5_MUD],
                 fr->set[0][RC_S5_VD], fr->set[0][RC_S5_FMAX], fr->set[0][RC_S5_FMAX] > 0 ? "" : " (none)");
-    if (fr->kind == RC_FK_CARD)
+    if (fr->kind == RC_FK_CARD && fr->card_id < 0)
+        fprintf(f, "  %-18s friction of the card's Ifric line: %s law, %s form, filter tau %.5g s, pressure area %.5g m^2\n",
+                m->inter_name[i], law[fr->ifric & 3], fr->form == RC_FF_VISCOUS ? "viscous (total)" : "incremental",
+                fr->tau, fr->area);
+    if (fr->kind == RC_FK_CARD && fr->card_id > 0)
         fprintf(f, "  %-18s friction /FRICTION/%d: %s law, %s form%s, filter tau %.5g s, pressure area %.5g m^2%s\n",
                 m->inter_name[i], fr->card_id, law[fr->ifric & 3],
                 fr->form == RC_FF_VISCOUS ? "viscous (total)" : "incremental",

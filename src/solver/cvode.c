@@ -73,6 +73,8 @@
 #define RC_SW_PIN 3.0
 #define RC_SW_QUIET 200
 #define RC_SW_NEAR 4.0
+/* the BDF order at most after a restart that follows a fric_turn (cv_restart) */
+#define RC_TURN_MAX_ORDER 2
 /* The explicit method: Cash-Karp 6(4)5 [ARKODE table] */
 #define RC_ERK_TABLE ARKODE_CASH_KARP_6_4_5
 
@@ -702,7 +704,9 @@ static int to_implicit(run_ctx *c, double t)
         if (flag < 0) return flag;
         c->own_h0 = c->h_restart > 0;
     }
-    int flag = CVodeReInit(c->cv, t, c->y);
+    int flag = CVodeSetMaxOrd(c->cv, c->m->max_order); /* the deck's order (cv_restart) */
+    if (flag < 0) return flag;
+    flag = CVodeReInit(c->cv, t, c->y);
     if (flag < 0) return flag;
     c->sw_kind = RC_EV_METHOD_IMPLICIT;
     c->sw_t = t;
@@ -844,6 +848,8 @@ static int cv_restart(void *self, double t, int at_breakpoint)
 {
     run_ctx *c = self;
     if (at_breakpoint) c->jac_patched = 0; /* the imposed rows change: a whole new Jacobian */
+    const int turned = c->d->fric_turned; /* a fric_turn among the events: below */
+    c->d->fric_turned = 0;
     gather_state(c);
     c->t_last = t;
     if (c->expl) {
@@ -879,6 +885,19 @@ static int cv_restart(void *self, double t, int at_breakpoint)
         if (flag < 0) return flag;
         c->own_h0 = c->h_restart > 0;
     }
+    /* after a fric_turn the turned state reloads towards its limit at
+     * K_t |v_t| / L_r (1e13 1/s with a stiff wall line), a rate the steps
+     * soon exceed several times over; BDF orders above 2 are not A-stable,
+     * and with the steps growing out of the restart an order-3 step carried
+     * such a state through zero along the sliding, within its tolerance
+     * (the force of the coordinates' rounding, a third of a small limit):
+     * the slip root crossed again, turn after turn (200 within 3e-10 s,
+     * Zeno). Until the next restart the order stays at most 2 (A-stable);
+     * the deck's Max_order again at the next restart without a turn
+     * (docs/theory.md 3.5) */
+    const int qmax = turned && c->m->max_order > RC_TURN_MAX_ORDER ? RC_TURN_MAX_ORDER : c->m->max_order;
+    const int fq = CVodeSetMaxOrd(c->cv, qmax);
+    if (fq < 0) return fq;
     return CVodeReInit(c->cv, t, c->y);
 }
 

@@ -522,7 +522,7 @@ TL('type7_itied', T7H, 'field ITIED', before_end(T7(l2=cols('', 61, 70, '1')), e
 TL('type7_ibc', T7H, 'field IBC', before_end(T7(l5='       111'), expect=6))
 TL('type7_inacti', T7H, 'field Inacti', before_end(T7(l5=cols('', 31, 40, '1')), expect=6))
 TL('type7_visf', T7H, 'field VISF', before_end(T7(l5=cols('', 61, 80, '0.5')), expect=6))
-TL('type7_ifric', T7H, 'field Ifric', before_end(T7(l6='         1'), expect=7))
+TL('type7_ifric', T7H, 'field Ifric', before_end(T7(l6='         4'), expect=7))
 TL('type7_ifiltr', T7H, 'field Ifiltr', before_end(T7(l6='         0         1'), expect=7))
 TL('type7_tstop_before_tstart', T7H, 'field Tstop', before_end(T7(l4=STOP('1e5', '', '', '2', '1')), expect=5))
 TL('type7_group_missing', T7H, 'field grnd_IDs', before_end(T7(l1='        99         2         1'), expect=2))
@@ -612,7 +612,7 @@ TL('type24_ipen_max', T24H, 'field Ipen_max', before_end(T24(l3=cols('', 61, 80,
 TL('type24_ibc', T24H, 'field IBC', before_end(T24(l5='       111'), expect=6))
 TL('type24_inacti', T24H, 'field Inacti', before_end(T24(l5=cols('', 31, 40, '2')), expect=6))
 TL('type24_tpressfit', T24H, 'field Tpressfit', before_end(T24(l5=cols('', 81, 100, '0.1')), expect=6))
-TL('type24_ifric', T24H, 'field Ifric', before_end(T24(l6='         1'), expect=7))
+TL('type24_ifric', T24H, 'field Ifric', before_end(T24(l6='         5'), expect=7))
 TL('type24_ifiltr', T24H, 'field Ifiltr', before_end(T24(l6='         0         1'), expect=7))
 TL('type24_tstop_before_tstart', T24H, 'field Tstop', before_end(T24(l4=STOP('1e5', '', '', '2', '1')), expect=5))
 TL('type24_surface_missing', T24H, 'field surf_ID1', before_end(T24(l1='        99         4         1'), expect=2))
@@ -638,7 +638,7 @@ TL('type25_igap_variable', T25H, 'field Igap', before_end(T25(l1='         2    
 TL('type25_self_contact', T25H, 'field surf_ID2', before_end(T25(l1='         2         0         1'), expect=2))
 TL('type25_ivis2', T25H, 'field IVIS2', before_end(T25(l5=cols('', 21, 30, '-1')), expect=6))
 TL('type25_inacti', T25H, 'field Inacti', before_end(T25(l5=cols('', 31, 40, '1')), expect=6))
-TL('type25_ifric', T25H, 'field Ifric', before_end(T25(l6='         2'), expect=7))
+TL('type25_ifric', T25H, 'field Ifric', before_end(T25(l6='        -2'), expect=7))
 TL('type25_iedge_segments', T25H, 'field Iedge',
    before_end(SEGS24 + T25(l1=cols('        95        96         1', 81, 90, '2')), expect=len(SEGS24) + 2))
 TL('type25_tpressfit', T25H, 'field Tpressfit', before_end(T25(l4=STOP('1e5', '', '0.1')), expect=5))
@@ -691,7 +691,7 @@ def T19(l1=None, l2='', l3='', l4=None, l5='', l6=''):
 T19H = '/INTER/TYPE19/93'
 TL('type19_icurv', T19H, 'field Icurv', before_end(T19(l1=cols('         2         4         1', 81, 90, '1')), expect=2))
 TL('type19_self_contact', T19H, 'field surf_IDm', before_end(T19(l1='         2         2         1'), expect=2))
-TL('type19_ifric', T19H, 'field Ifric', before_end(T19(l6='         1'), expect=7))
+TL('type19_ifric', T19H, 'field Ifric', before_end(T19(l6='         7'), expect=7))
 TL('type19_surface_plane', T19H, 'field surf_IDs', before_end(T19(), expect=2))
 TL('box_reach_overflow', SB, 'field a b c', at(SB, 4, 1, 20, '1e308'))
 TL('type19_iedge', T19H, 'field Iedge', before_end(T19(l1=cols('         2         4         1', 51, 60, '3')), expect=2))
@@ -755,6 +755,15 @@ TL('gene_curve_log_rate', '/PROP/TYPE8/9', 'field B1', before_end(GENE_LOG(), ex
 TL('gene_rupture_ifail', '/PROP/TYPE8/9', 'field Ifail',
    before_end(SPR_PART + PROP8(l1='%20s%20s%30s%10s' % ('0', '0', '', '1'), edit=(4, '%60s%40s' % ('', '0.02'))) +
               SPR_ELEM, expect=5))
+
+# the law lines Radioss reads after line 6 of a penalty interface: C1..C5
+# (Ifric > 0) and C6 (Ifric > 1); Renard's C6 missing; Renard's C5 >= C6
+TL('type24_ifric_no_c6', T24H, 'field C6',
+   before_end(T24(l6='         3') + ['%20s%20s%20s%20s%20s' % ('0.3', '0.25', '0.4', '0.2', '0.05')], expect=8))
+TL('type7_renard_c5', T7H, 'field C5',
+   before_end(T7(l6='         3') + ['%20s%20s%20s%20s%20s' % ('0.3', '0.25', '0.4', '0.2', '0.6'), '%20s' % '0.5'],
+              expect=8))
+TL('type25_ifiltr_xfreq', T25H, 'field Xfreq', before_end(T25(l6='         0         3                  -1'), expect=7))
 
 
 # ---- skew_ID on /GRAV (a /SKEW/FIX axis; a moving skew stays refused),

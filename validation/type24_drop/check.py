@@ -18,10 +18,15 @@ contact"):
 3. the cube launched at v0 along x (rotations held), Coulomb Fric mu on the
    card: stops after v0^2 / (2 mu g) at v0 / (mu g);
 4. the same with fric_ID naming a /FRICTION card of the Coulomb law;
+5. the generalised viscous law written on the card (Ifric 1, mu = Fric + C2
+   v): the rigid block's distance v0/(g C2) - (mu0/C2) t_s, t_s = ln(1 + C2
+   v0/mu0)/(g C2); that law and Renard filtered (Ifric 3, Ifiltr 3) on the
+   card run exactly as the same laws on a /FRICTION card named by fric_ID;
 1b. Istf 0: shells under both surfaces (the floor a fixed body of shells,
    the cube's bottom face a shell of negligible mass), k = Stfac E t / 2:
    the same rest.
 """
+import math
 import os
 import sys
 
@@ -37,17 +42,23 @@ H0 = 0.005                     # drop height [m]
 X0 = -0.5                      # the sliding cube's start: no floor node under it on its way
 
 
-def type24(d, iid, s1, s2, stfac, fric=0.0, fric_id=0, istf=1):
+def type24(d, iid, s1, s2, stfac, fric=0.0, fric_id=0, istf=1, law=None):
     """/INTER/TYPE24 in the Radioss 2022 layout: Istf 1 (by default), the
-    rest defaults."""
+    rest defaults. law: (Ifric, Ifiltr, Xfreq, C1..C6) written on the card
+    (line 6 and Radioss's law lines after it: C1..C5 when Ifric > 0, C6
+    when Ifric > 1)."""
+    ifric, ifiltr, xfreq, c = law if law else (0, 0, 0.0, ())
+    c = list(c) + [0.0] * (6 - len(c))
+    extra = ([line(*[("r", v) for v in c[:5]])] if ifric > 0 else []) + ([line(("r", c[5]))] if ifric > 1 else [])
     d.add(f"/INTER/TYPE24/{iid}",
           line(("i", s1), ("i", s2), ("i", istf), ("i", None), ("i", None), ("i", 0), ("i", None), ("i", 0)),
           line(("i", 0), ("i", None), ("i", None), ("i", 0), ("r", 0.0), ("r", 0.0), ("r", 0.0)),
           line(("r", 0.0), ("r", 0.0), ("i", 0), ("i", 0), ("r", 0.0)),
           line(("r", stfac), ("r", fric), ("r", None), ("r", 0.0), ("r", 0.0)),
           line(("i", 0), ("i", None), ("i", None), ("i", 0), ("r", 0.0), ("r", None), ("r", 0.0)),
-          line(("i", 0), ("i", 0), ("r", 0.0), ("i", None), ("i", 0), ("i", None), ("r", None), ("i", fric_id)),
-          title="surface to surface")
+          line(("i", ifric), ("i", ifiltr), ("r", xfreq), ("i", None), ("i", 0), ("i", None), ("r", None),
+               ("i", fric_id)),
+          *extra, title="surface to surface")
 
 
 # Istf 0: the floor and the cube's bottom face shells (/MAT/LAW1 E,
@@ -87,7 +98,7 @@ def floor_seg(d, sid, x, y, nf, h, first):
     return nodes, segs
 
 
-def cube(title, z0, x0=0.0, v=None, fric=0.0, fric_card=False, istf=1):
+def cube(title, z0, x0=0.0, v=None, fric=0.0, fric_card=False, istf=1, law=None):
     d = Deck(title)
     corners = [(11 + k, x0 + sx * A, sy * A, z0 + A + sz * A)
                for k, (sx, sy, sz) in enumerate([(-1, -1, -1), (1, -1, -1), (1, 1, -1), (-1, 1, -1),
@@ -112,8 +123,10 @@ def cube(title, z0, x0=0.0, v=None, fric=0.0, fric_card=False, istf=1):
         d.inivel(1, v, 2)
     d.grav(1, "Z", -G, 2)
     type24(d, 24, 20, 30, K if istf == 1 else STFAC0, fric=0.0 if fric_card else fric, fric_id=9 if fric_card else 0,
-           istf=istf)
-    if fric_card:
+           istf=istf, law=None if fric_card else law)
+    if fric_card and law:  # the same law on a /FRICTION card (Iform 2: TYPE24's incremental form)
+        d.friction(9, ifric=law[0], ifiltr=law[1], xfreq=law[2], iform=2, c=law[3], fric=fric, title="the law")
+    elif fric_card:
         d.friction(9, iform=2, fric=MU, title="Coulomb")
     d.run(4.0 if v is None else 0.5, 0.005)
     return d
@@ -167,8 +180,16 @@ def plate(one_way=False):
     return d
 
 
-def slide(card=False):
-    return cube("TYPE24: a cube sliding to rest", -P_REST, x0=X0, v=(V0, 0.0, 0.0), fric=MU, fric_card=card)
+def slide(card=False, law=None):
+    return cube("TYPE24: a cube sliding to rest", -P_REST, x0=X0, v=(V0, 0.0, 0.0), fric=MU, fric_card=card, law=law)
+
+
+# 5. the generalised viscous law on the card (Ifric 1): mu = Fric + C2 v
+C2_VISC = 0.1                  # [s/m]
+LAW_VISC = (1, 0, 0.0, (0.0, C2_VISC))
+# 6. Renard (Ifric 3: mu_s, mu_d, mu_max, mu_min, V_cr1, V_cr2) filtered
+# (Ifiltr 3, cut-off 200 Hz) on the card
+LAW_RENARD = (3, 3, 200.0, (0.3, 0.25, 0.4, 0.2, 0.05, 0.5))
 
 
 def main():
@@ -220,6 +241,33 @@ def main():
                     f"({'fric_ID -> /FRICTION' if card else 'Fric'}): stops at "
                     f"{t_stop[0] if len(t_stop) else float('nan'):.9f} s (v0/(mu g) = {V0 / (MU * G):.9f} s, {et:.1e}) "
                     f"after {x_stop:.9f} m (v0^2/(2 mu g) = {d_ref:.9f} m, {e:.1e}); max rel. error < 1e-6")
+    # 5. the generalised viscous law written on the card: m dv/dt = -m g
+    # (mu0 + C2 v) stops at t_s = ln(1 + C2 v0 / mu0) / (g C2) after
+    # v0 / (g C2) - (mu0 / C2) t_s; and the same as the /FRICTION card of it
+    ts_ref = math.log(1.0 + C2_VISC * V0 / MU) / (G * C2_VISC)
+    d_ref = V0 / (G * C2_VISC) - MU / C2_VISC * ts_ref
+    runs = {}
+    for name, law in (("visc", LAW_VISC), ("renard", LAW_RENARD)):
+        for card in (False, True):
+            r = rcval.Result(rcval.run(slide(card, law), f"{name}_{'card' if card else 'inline'}"))
+            t_stop = r.events("fric_stick")
+            ts = t_stop[0] if len(t_stop) else float("nan")
+            runs[name, card] = (ts, r.pos[r.state_at(ts), 0, 0] - X0 if len(t_stop) else float("nan"), r)
+    ts, xs, _ = runs["visc", False]
+    e = max(rcval.rel(ts, ts_ref), rcval.rel(xs, d_ref))
+    rcval.check("type24.slide.ifric1_inline", e < 1e-6,
+                f"max rel. error {e:.1e} (< 1e-6): Ifric 1 on the card (Fric {MU}, C2 {C2_VISC} s/m: mu = Fric + C2 v), "
+                f"launched at {V0} m/s: stops at {ts:.9f} s (ln(1 + C2 v0/mu0)/(g C2) = {ts_ref:.9f} s) after "
+                f"{xs:.9f} m (v0/(g C2) - (mu0/C2) t_s = {d_ref:.9f} m)")
+    for name, what in (("visc", "Ifric 1"), ("renard", "Ifric 3 (Renard), Ifiltr 3 (Xfreq 200 Hz)")):
+        (t1, x1, r1), (t2, x2, r2) = runs[name, False], runs[name, True]
+        n = min(len(r1.t), len(r2.t))
+        dx = float(abs(r1.pos[:n, 0, 0] - r2.pos[:n, 0, 0]).max())
+        e = max(rcval.rel(t1, t2), rcval.rel(x1, x2))
+        rcval.check(f"type24.slide.{name}_inline_eq_card", e < 1e-9 and dx < 1e-9 and len(r1.t) == len(r2.t),
+                    f"{what} on the card against the same law on a /FRICTION card (fric_ID): stops at {t1:.12f} s "
+                    f"and {t2:.12f} s after {x1:.12f} m and {x2:.12f} m (max rel. difference {e:.1e} < 1e-9); the "
+                    f"largest difference of x over the {n} output states {dx:.1e} m (< 1e-9)")
     rcval.finish()
 
 

@@ -42,17 +42,22 @@ M, G, K, A, MU, V0, H0, X0 = t24.M, t24.G, t24.K, t24.A, t24.MU, t24.V0, t24.H0,
 P_REST = M * G / K
 
 
-def type25(d, iid, s1, s2, stfac, fric=0.0, fric_id=0, istf=1, iedge=0, viss=0.0):
+def type25(d, iid, s1, s2, stfac, fric=0.0, fric_id=0, istf=1, iedge=0, viss=0.0, law=None):
     """/INTER/TYPE25 in the Radioss 2022 layout: Istf 1 (by default), the
-    rest defaults."""
+    rest defaults; law: (Ifric, Ifiltr, Xfreq, C1..C6) on the card, as
+    type24_drop's."""
+    ifric, ifiltr, xfreq, c = law if law else (0, 0, 0.0, ())
+    c = list(c) + [0.0] * (6 - len(c))
+    extra = ([line(*[("r", v) for v in c[:5]])] if ifric > 0 else []) + ([line(("r", c[5]))] if ifric > 1 else [])
     d.add(f"/INTER/TYPE25/{iid}",
           line(("i", s1), ("i", s2), ("i", istf), ("i", 0), ("i", 0), ("i", 0), ("i", None), ("i", 0), ("i", iedge)),
           line(("i", 0), ("i", None), ("r", 0.0), ("r", 0.0), ("r", 0.0), ("r", 0.0)),
           line(("r", 0.0), ("r", 0.0), ("i", 0), ("i", 0), ("r", 0.0)),
           line(("r", stfac), ("r", fric), ("r", None), ("r", 0.0), ("r", 0.0)),
           line(("i", 0), ("i", None), ("i", 0), ("i", 0), ("r", viss)),
-          line(("i", 0), ("i", 0), ("r", 0.0), ("i", None), ("i", 0), ("i", None), ("r", None), ("i", fric_id)),
-          title="surface to surface")
+          line(("i", ifric), ("i", ifiltr), ("r", xfreq), ("i", None), ("i", 0), ("i", None), ("r", None),
+               ("i", fric_id)),
+          *extra, title="surface to surface")
 
 
 t24.type24 = type25  # the type24_drop decks now write TYPE25 cards

@@ -100,6 +100,10 @@ typedef struct rc_data {
                             fall below -band; UNLOAD: -band), set where the branch was
                             decided at a rate within its rounding (events.c); 0 again
                             at the interface's next event */
+    int fric_turned;     /* 1: an event since the last restart turned a slipping
+                            friction state against its sliding (fric_turn,
+                            events.c); the CVODE backend restarts at BDF order
+                            at most 2 then (docs/theory.md 3.5) and clears it */
     struct rc_cpl_data *cpl; /* couplings: catenary warm starts, workspace (coupling.h) */
     const char *jac_skip; /* [ny] set by a backend that leaves these states out
                             of its Newton matrix (cvode.c): the Jacobian's

@@ -911,7 +911,15 @@ static void test_case_error_grav_bcs_inivel(void)
     EXPECT_INPUT_ERROR("inivel.rad", "/INIVEL/AXIS/1\nv\n0,0,0\n" RUN_CARD, 1,
                        "card /INIVEL/AXIS/1", "not supported yet");
     EXPECT_INPUT_ERROR("iniskew.rad", "/INIVEL/TRA/1\nv\n0,0,1,5,3\n" RUN_CARD, 3,
-                       "field skew_ID", "not supported yet");
+                       "field skew_ID", "no such skew");
+    EXPECT_INPUT_ERROR("bcsskew.rad", "/BCS/1\nb\n   110 000         3\n" RUN_CARD, 3, "card /BCS/1",
+                       "field skew_ID", "holds some translations along the axes of skew 3", "not supported yet");
+    EXPECT_INPUT_ERROR("bcsskew.rad", "/BCS/1\nb\n   111 001         3\n" RUN_CARD, 3, "card /BCS/1",
+                       "field skew_ID", "holds some rotations about the axes of skew 3", "not supported yet");
+    EXPECT_INPUT_ERROR("bcsskew.rad", "/BCS/1\nb\n   111 000         3\n" RUN_CARD, 3, "card /BCS/1",
+                       "field skew_ID", "no such skew");
+    EXPECT_INPUT_ERROR("gravskew.rad", "/GRAV/1\ng\n0,Z,3\n" RUN_CARD, 3, "card /GRAV/1",
+                       "field skew_ID", "expected the id of a /SKEW/FIX", "no such skew");
 }
 
 static void test_case_error_run_solver(void)
@@ -1111,7 +1119,32 @@ static void test_case_error_fric_orient(void)
 {
     /* V = (0, 0, 0) reads as (1, 0, 0) with a warning (test_deck.c) */
     EXPECT_INPUT_ERROR("fo.rad", "/FRIC_ORIENT/3\no\n3\n1,0,0,7\n" RUN_CARD, 4,
-                       "card /FRIC_ORIENT/3", "field skew_ID", "not supported yet", "\"7\"");
+                       "card /FRIC_ORIENT/3", "field skew_ID", "expected the id of a /SKEW/FIX", "got 7",
+                       "no such skew");
+    /* a moving skew: refused */
+    EXPECT_INPUT_ERROR("fo.rad",
+                       "/NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n/SKEW/MOV/7\nm\n1,2,3,X\n"
+                       "/FRIC_ORIENT/3\no\n3\n1,0,0,7\n" RUN_CARD, 11,
+                       "card /FRIC_ORIENT/3", "field skew_ID", "/SKEW/MOV/7 moves with its nodes",
+                       "not supported yet");
+    /* a /SKEW/FIX: V is its X' axis, VX VY VZ unused (here 0: no warning) */
+    {
+        const char *p = tu_tmp_write("fos.rad", "/SKEW/FIX/7\ns\n0,0,0\n0,0,1\n3,-4,0\n"
+                                                "/FRIC_ORIENT/3\no\n3\n0,0,0,7,30\n,4\n1,2,0\n" RUN_CARD);
+        rc_case *c = load_ok(p);
+        ENSURE(c != NULL);
+        if (c) {
+            /* Y' = z, X' = Y' x (3, -4, 0)/5 = (0.8, 0.6, 0) */
+            const rc_case_fricorient_item *it = c->fricorient[0].item;
+            ENSURE(c->nwarnings == 0);
+            ENSURE_NEAR(it[0].v[0], 0.8, 1e-15, 0);
+            ENSURE_NEAR(it[0].v[1], 0.6, 1e-15, 0);
+            ENSURE_NEAR(it[0].v[2], 0.0, 0, 1e-15);
+            ENSURE(it[0].skew_id == 7 && it[0].phi == 30);
+            ENSURE(it[1].skew_id == 0 && it[1].v[0] == 1 && it[1].v[1] == 2);
+            rc_case_free(c);
+        }
+    }
     EXPECT_INPUT_ERROR("fo.rad", "/FRIC_ORIENT/3\no\n3\n1,0,0,,,2\n" RUN_CARD, 4, "field Iorth",
                        "expected an integer in {0, 1}");
     EXPECT_INPUT_ERROR("fo.rad", "/FRIC_ORIENT/3\no\n3\n1,0,0\n0,0\n0,1,0\n" RUN_CARD, 5,

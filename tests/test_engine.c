@@ -131,7 +131,7 @@ static void build_case(rc_case *c)
     t6[1].sfric = 2.1; t6[1].fric = 0.23;
     c->ntype6 = 2;
     c->type6 = t6;
-    gr = (rc_case_grav){.id = 1, .fct_id = 13, .dir = 2, .ascale = 1.0, .fscale = -9.81}; /* ramped */
+    gr = (rc_case_grav){.id = 1, .fct_id = 13, .dir = 2, .u = {0, 0, 1}, .ascale = 1.0, .fscale = -9.81}; /* ramped */
     c->ngrav = 1;
     c->grav = &gr;
     add_couplings(c);
@@ -470,7 +470,7 @@ static void build_power_case(rc_case *c)
     pimp[2] = (rc_case_impvel){.id = 3, .fct_id = 73, .dir = 5, .grnod_id = 92, .ascale = 0.3, .fscale = -3.7, .tstop = 1e30};
     c->nimpvel = 3;
     c->impvel = pimp;
-    gr = (rc_case_grav){.id = 1, .fct_id = 0, .dir = 2, .ascale = 1.0, .fscale = -9.81};
+    gr = (rc_case_grav){.id = 1, .fct_id = 0, .dir = 2, .u = {0, 0, 1}, .ascale = 1.0, .fscale = -9.81};
     c->ngrav = 1;
     c->grav = &gr;
     c->run = (rc_case_run){1, 0.01, 0.001, {0}, 0, 0};

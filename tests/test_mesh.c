@@ -337,6 +337,71 @@ static void test_mesh_deck_brick_box_icog(void)
     }
 }
 
+/* /INIVEL and /GRAV with a skew_ID: the components of /INIVEL/TRA and
+ * /INIVEL/ROT in the skew's axes (a /SKEW/FIX, and a /SKEW/MOV taken at its
+ * nodes' initial positions), /GRAV along an axis of a /SKEW/FIX. */
+static void test_mesh_deck_skew_loads(void)
+{
+    rc_error e;
+    const double r = sqrt(0.5);
+    /* skew 4: Y' = (1, 1, 0)/sqrt2, Z' = z, X' = (1, -1, 0)/sqrt2; skew 5 the
+     * same frame from nodes 11 (origin), 12 (on Y', Dir Y), 13 (on Z') */
+    rc_model *md = compile_text("/NODE\n1,0,0,0\n2,0,0,5\n11,0,0,0\n12,1,1,0\n13,0,0,1\n"
+                                "/SKEW/FIX/4\ns\n0,0,0\n1,1,0\n0,0,1\n/SKEW/MOV/5\nm\n11,12,13,Y\n"
+                                "/RBODY/1\nb\n1,0,0,3,1.0\n1.0,1.0,1.0\n0,0,0\n"
+                                "/RBODY/2\nb\n2,0,0,3,2.0\n1.0,1.0,1.0\n0,0,0\n"
+                                "/GRNOD/NODE/1\none\n1\n/GRNOD/NODE/2\ntwo\n2\n"
+                                "/INIVEL/TRA/1\nv\n2,3,4,1,4\n/INIVEL/ROT/2\nw\n1,-1,0.5,1,4\n"
+                                "/INIVEL/TRA/3\nv\n2,3,4,2,5\n"
+                                "/GRAV/1\ng\n0,X,4,0,1,,1,-9.81\n/GRAV/2\ng\n0,Y,4,0,2,,1,-2\n" RUN_TAIL,
+                                &e);
+    ENSURE(md != NULL);
+    if (!md) fprintf(stderr, "  %s\n", e.msg);
+    if (md) {
+        const double *y0 = md->body_y0, *y1 = md->body_y0 + RC_NB;
+        /* v = 2 X' + 3 Y' + 4 Z' = ((2 + 3) r, (3 - 2) r, 4) */
+        ENSURE_NEAR(y0[7], 5 * r, 1e-15, 0);
+        ENSURE_NEAR(y0[8], r, 1e-15, 0);
+        ENSURE_NEAR(y0[9], 4.0, 1e-15, 0);
+        /* w = X' - Y' + 0.5 Z' = (0, -2 r, 0.5) */
+        ENSURE_NEAR(y0[10], 0.0, 0, 1e-15);
+        ENSURE_NEAR(y0[11], -2 * r, 1e-15, 0);
+        ENSURE_NEAR(y0[12], 0.5, 1e-15, 0);
+        /* the moving skew at the nodes' initial positions: the same */
+        ENSURE_NEAR(y1[7], 5 * r, 1e-15, 0);
+        ENSURE_NEAR(y1[8], r, 1e-15, 0);
+        ENSURE_NEAR(y1[9], 4.0, 1e-15, 0);
+        /* gravity -9.81 along X' on body 1, -2 along Y' on body 2 */
+        ENSURE_NEAR(md->body_grav[0], -9.81 * r, 1e-15, 0);
+        ENSURE_NEAR(md->body_grav[1], 9.81 * r, 1e-15, 0);
+        ENSURE_NEAR(md->body_grav[2], 0.0, 0, 1e-15);
+        ENSURE_NEAR(md->body_grav[3], -2 * r, 1e-15, 0);
+        ENSURE_NEAR(md->body_grav[4], -2 * r, 1e-15, 0);
+        ENSURE_NEAR(md->body_grav[5], 0.0, 0, 1e-15);
+        rc_model_free(md);
+    }
+    /* /BCS with a skew: all three translations (or rotations) held or free,
+     * the same in any frame */
+    md = compile_text("/NODE\n1,0,0,0\n/SKEW/FIX/4\ns\n0,0,0\n1,1,0\n0,0,1\n"
+                      "/RBODY/1\nb\n1,0,0,3,1.0\n1.0,1.0,1.0\n0,0,0\n/GRNOD/NODE/1\none\n1\n"
+                      "/BCS/1\nb\n   111 000         4         1\n" RUN_TAIL,
+                      &e);
+    ENSURE(md != NULL);
+    if (!md) fprintf(stderr, "  %s\n", e.msg);
+    for (int j = 0; md && j < 6; j++) ENSURE(md->body_dofmask[j] == (j < 3));
+    rc_model_free(md);
+    /* refused: no such skew; gravity along a moving skew */
+    EXPECT_MESH_ERROR("/NODE\n1,0,0,0\n/RBODY/1\nb\n1,0,0,3,1.0\n1.0,1.0,1.0\n0,0,0\n/GRNOD/NODE/1\none\n1\n"
+                      "/INIVEL/TRA/1\nv\n2,3,4,1,9\n" RUN_TAIL,
+                      "card /INIVEL/TRA/1", "field skew_ID", "no such skew");
+    EXPECT_MESH_ERROR("/NODE\n1,0,0,0\n11,0,0,0\n12,1,1,0\n13,1,-1,0\n/SKEW/MOV/5\nm\n11,12,13,Y\n"
+                      "/RBODY/1\nb\n1,0,0,3,1.0\n1.0,1.0,1.0\n0,0,0\n/GRAV/1\ng\n0,Z,5,0,0,,1,-9.81\n" RUN_TAIL,
+                      "card /GRAV/1", "field skew_ID", "/SKEW/MOV/5 moves with its nodes", "not supported yet");
+    EXPECT_MESH_ERROR("/NODE\n1,0,0,0\n/RBODY/1\nb\n1,0,0,3,1.0\n1.0,1.0,1.0\n0,0,0\n/GRAV/1\ng\n0,Z,2,0,0,,1,-9.81\n"
+                      RUN_TAIL,
+                      "card /GRAV/1", "field skew_ID", "expected the id of a /SKEW/FIX", "no such skew");
+}
+
 /* Skew_ID: the card's J in the skew's axes; Ispher 2 raises a tiny
  * principal moment to 0.1 of the largest. */
 static void test_mesh_deck_skew_ispher(void)
@@ -681,6 +746,7 @@ void suite_mesh(void)
     RUN_TEST(test_mesh_convergence_sphere_cylinder);
     RUN_TEST(test_mesh_deck_brick_box_icog);
     RUN_TEST(test_mesh_deck_skew_ispher);
+    RUN_TEST(test_mesh_deck_skew_loads);
     RUN_TEST(test_mesh_deck_shell_box_groups);
     RUN_TEST(test_mesh_deck_tetra_triangle);
     RUN_TEST(test_mesh_element_penta6_tetra10);

@@ -8,13 +8,13 @@
  */
 #include "case/case_internal.h"
 #include "base/error.h"
+#include "case/case_mesh.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-static const char rc_note_skew[] = "(skew frames)";
 
 /* ======================================================================
  * /FRICTION, /FRIC_ORIENT
@@ -314,12 +314,14 @@ rc_status rc_card_fricorient(rc_reader *rd, const rc_block *b)
         rc_field l2[] = {
             RC_F_REALD("VX", &it->v[0], 0, 0, RC_D_NONE), RC_F_REALD("VY", &it->v[1], 0, 0, RC_D_NONE),
             RC_F_REALD("VZ", &it->v[2], 0, 0, RC_D_NONE),
-            RC_F_INTN("skew_ID", &it->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew),
+            RC_F_INT("skew_ID", &it->skew_id, 0, RC_FF_NONNEG),
             RC_F_REALD("PHI", &it->phi, 0, 0, RC_D_NONE),
             RC_F_SET("Iorth", &it->iorth, 0, 0, 0x3u, 0, NULL)};
         if ((st = rc_parse_line(rd, b, &b->lines[i + 1], l2, RC_NF(l2)))) return st;
-        /* Radioss: a zero vector V means the global X axis */
-        if (it->v[0] == 0 && it->v[1] == 0 && it->v[2] == 0) {
+        it->line_loc = b->lines[i + 1].loc;
+        /* Radioss: a zero vector V means the global X axis (with a skew, V
+         * is the skew's X' axis: rc_cards_fricorient_finish) */
+        if (!it->skew_id && it->v[0] == 0 && it->v[1] == 0 && it->v[2] == 0) {
             it->v[0] = 1;
             if ((st = rc_case_warn(rd, &b->lines[i + 1].loc,
                                    "card %s: orientation %d: V = (0, 0, 0) read as (1, 0, 0), "
@@ -329,4 +331,27 @@ rc_status rc_card_fricorient(rc_reader *rd, const rc_block *b)
         }
     }
     return rc_note_id(rd, RC_IDK_FRICORIENT, o->id, &o->loc, b->hdr->text);
+}
+
+/* Once the skews' axes are known (rc_cards_mesh_finish): an orientation
+ * with a skew_ID takes V from the skew's X' axis, VX VY VZ unused (as
+ * Radioss); a /SKEW/FIX only (a moving skew turns with its nodes, not
+ * necessarily with the body carrying V). */
+rc_status rc_cards_fricorient_finish(rc_reader *rd)
+{
+    rc_case *c = rd->c;
+    rc_status st;
+    char card[48];
+    for (int o = 0; o < c->nfricorient; o++)
+        for (int k = 0; k < c->fricorient[o].n; k++) {
+            rc_case_fricorient_item *it = &c->fricorient[o].item[k];
+            if (!it->skew_id) continue;
+            snprintf(card, sizeof card, "/FRIC_ORIENT/%d", c->fricorient[o].id);
+            int s = -1;
+            if ((st = rc_case_ref_skew(rd, &it->line_loc, card, it->skew_id,
+                                       "a friction direction from a moving skew", &s)))
+                return st;
+            memcpy(it->v, c->mesh->skew[s].axis[0], sizeof it->v);
+        }
+    return RC_OK;
 }

@@ -12,9 +12,9 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "case/case_mesh.h"
 #include "case/case_power.h"
 
-static const char rc_note_skew[] = "(skew frames)";
 static const char rc_note_sensor[] = "(sensors)";
 
 /* Default Tstop of /IMPVEL [s], as /INTER/TYPE6. */
@@ -97,9 +97,9 @@ rc_status rc_card_inivel(rc_reader *rd, const rc_block *b)
     rc_field f[] = {RC_F_REALW("Vx", &v->v[0], 0, 0, wr, dv), RC_F_REALW("Vy", &v->v[1], 0, 0, wr, dv),
                     RC_F_REALW("Vz", &v->v[2], 0, 0, wr, dv),
                     RC_F_INTW("grnod_ID", &v->grnod_id, 0, RC_FF_NONNEG, wi),
-                    RC_F_INTN("skew_ID", &v->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew)};
-    f[4].width = wi;
+                    RC_F_INTW("skew_ID", &v->skew_id, 0, RC_FF_NONNEG, wi)};
     if ((st = rc_parse_line(rd, b, &b->lines[1], f, RC_NF(f)))) return st;
+    memcpy(v->v_skew, v->v, sizeof v->v); /* rotated once the skews are known */
     if (nd >= 2) {
         double tstart = 0;
         int sens = 0;
@@ -131,7 +131,7 @@ rc_status rc_card_grav(rc_reader *rd, const rc_block *b)
 
     rc_field f[] = {RC_F_INT("fct_IDT", &g->fct_id, 0, RC_FF_NONNEG),
                     RC_F_STR("DIR", dir, 10),
-                    RC_F_INTN("skew_ID", &g->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew),
+                    RC_F_INT("skew_ID", &g->skew_id, 0, RC_FF_NONNEG),
                     RC_F_INTN("sensor_ID", &g->sensor_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_sensor),
                     RC_F_INT("grnod_ID", &g->grnod_id, 0, RC_FF_NONNEG),
                     RC_F_SKIP(10),
@@ -155,7 +155,69 @@ rc_status rc_card_grav(rc_reader *rd, const rc_block *b)
         return rc_case_fail(rd, &b->lines[1].loc, b->name, "DIR", "expected X, Y or Z, got %s",
                             f[1].got);
     g->dir = (int)(p - "XYZxyz") % 3;
+    g->u[g->dir] = 1; /* the skew's axis once the skews are known */
     return rc_note_id(rd, RC_IDK_GRAV, g->id, &g->loc, b->hdr->text);
+}
+
+/* A skew named by a card's skew_ID: its index, or a failure (no such skew;
+ * a moving skew where only a fixed one will do: `what` names the use). */
+rc_status rc_case_ref_skew(rc_reader *rd, const rc_loc *at, const char *card, int id, const char *what, int *out)
+{
+    const int fixed_only = what != NULL;
+    const int s = rc_case_find_skew(rd->c, id);
+    if (s < 0)
+        return rc_case_fail(rd, at, card, "skew_ID",
+                            fixed_only ? "expected the id of a /SKEW/FIX, got %d (no such skew)"
+                                       : "expected the id of a /SKEW/FIX, /SKEW/MOV or /SKEW/MOV2, got %d (no such skew)",
+                            id);
+    const rc_case_skew *sk = &rd->c->mesh->skew[s];
+    if (fixed_only && sk->mov)
+        return rc_case_fail(rd, at, card, "skew_ID",
+                            "/SKEW/%s/%d moves with its nodes: %s is not supported yet (expected a /SKEW/FIX)",
+                            sk->mov == 2 ? "MOV2" : "MOV", id, what);
+    *out = s;
+    return RC_OK;
+}
+
+/* Once the skews' axes are known (rc_cards_mesh_finish): a /BCS's skew
+ * exists; an /INIVEL's
+ * components given in a skew's axes (Radioss: V = Vx X' + Vy Y' + Vz Z', a
+ * moving skew taken at its nodes' initial positions) and a /GRAV's
+ * direction along a /SKEW/FIX axis, into global axes. */
+rc_status rc_cards_loads_finish(rc_reader *rd)
+{
+    rc_case *c = rd->c;
+    rc_status st;
+    char card[48];
+    for (int k = 0; k < c->ninivel; k++) {
+        rc_case_inivel *v = &c->inivel[k];
+        if (!v->skew_id) continue;
+        snprintf(card, sizeof card, "/INIVEL/%s/%d", v->rot ? "ROT" : "TRA", v->id);
+        int s = -1;
+        if ((st = rc_case_ref_skew(rd, &v->line_loc, card, v->skew_id, NULL, &s))) return st;
+        const rc_case_skew *sk = &c->mesh->skew[s];
+        for (int i = 0; i < 3; i++)
+            v->v[i] = v->v_skew[0] * sk->axis[0][i] + v->v_skew[1] * sk->axis[1][i] + v->v_skew[2] * sk->axis[2][i];
+    }
+    /* /BCS: the skew must exist (its flags, all or none, hold the same in
+     * any frame) */
+    for (int k = 0; k < c->nbcs; k++) {
+        const rc_case_bcs *x = &c->bcs[k];
+        if (!x->skew_id) continue;
+        snprintf(card, sizeof card, "/BCS/%d", x->id);
+        int s = -1;
+        if ((st = rc_case_ref_skew(rd, &x->line_loc, card, x->skew_id, NULL, &s))) return st;
+    }
+    for (int k = 0; k < c->ngrav; k++) {
+        rc_case_grav *g = &c->grav[k];
+        if (!g->skew_id) continue;
+        snprintf(card, sizeof card, "/GRAV/%d", g->id);
+        int s = -1;
+        if ((st = rc_case_ref_skew(rd, &g->line_loc, card, g->skew_id, "a gravity along a moving axis", &s)))
+            return st;
+        memcpy(g->u, c->mesh->skew[s].axis[g->dir], sizeof g->u);
+    }
+    return RC_OK;
 }
 
 /* Trarot "111 111": the first three 0/1 digits are Tx Ty Tz, the next three
@@ -189,7 +251,7 @@ rc_status rc_card_bcs(rc_reader *rd, const rc_block *b)
     /* 10-character fields; 8 in Radioss 4.x */
     const int w = rc_layout_version(rd) >= 51 ? 10 : 8;
     rc_field f[] = {RC_F_STR("Trarot", tr, 10),
-                    RC_F_INTN("skew_ID", &x->skew_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_skew),
+                    RC_F_INT("skew_ID", &x->skew_id, 0, RC_FF_NONNEG),
                     RC_F_INTW("grnod_ID", &x->grnod_id, 0, RC_FF_NONNEG, w)};
     f[0].width = f[1].width = w;
     if ((st = rc_parse_line(rd, b, &b->lines[1], f, RC_NF(f)))) return st;
@@ -197,6 +259,20 @@ rc_status rc_card_bcs(rc_reader *rd, const rc_block *b)
         return rc_case_fail(rd, &b->lines[1].loc, b->name, "Trarot",
                             "expected up to six 0/1 flags TxTyTz RxRyRz (e.g. \"111 000\"), got %s",
                             f[0].got);
+    /* with a skew: the flags held along its axes; ricochet holds global
+     * translations and body-frame rotations, so only all or none of each
+     * three (the same set in any frame) */
+    if (x->skew_id && (x->fix[0] + x->fix[1] + x->fix[2]) % 3 != 0)
+        return rc_case_fail(rd, &b->lines[1].loc, b->name, "skew_ID",
+                            "Trarot %s holds some translations along the axes of skew %d: not supported yet "
+                            "(with a skew, Tx Ty Tz all held or all free; ricochet holds global translations)",
+                            f[0].got, x->skew_id);
+    if (x->skew_id && (x->fix[3] + x->fix[4] + x->fix[5]) % 3 != 0)
+        return rc_case_fail(rd, &b->lines[1].loc, b->name, "skew_ID",
+                            "Trarot %s holds some rotations about the axes of skew %d: not supported yet "
+                            "(with a skew, Rx Ry Rz all held or all free; ricochet holds rotations about the "
+                            "global axes)",
+                            f[0].got, x->skew_id);
     return rc_note_id(rd, RC_IDK_BCS, x->id, &x->loc, b->hdr->text);
 }
 

@@ -276,9 +276,11 @@ typedef struct rc_case_rwall {
 typedef struct rc_case_inivel {
     int id;
     int rot;       /* 0: TRA (velocity [m/s]); 1: ROT (angular velocity [rad/s]) */
-    double v[3];
+    double v[3];   /* global axes (rotated from the skew's at input) */
+    double v_skew[3]; /* Vx Vy Vz as read (the skew's axes when skew_id) */
     int grnod_id;  /* nodes whose body gets the velocity */
-    int skew_id;   /* 0 only */
+    int skew_id;   /* 0: global axes; a /SKEW/FIX, /SKEW/MOV or /SKEW/MOV2
+                    * (its axes at the nodes' initial positions) */
     rc_loc loc;
     rc_loc line_loc; /* the data line */
 } rc_case_inivel;
@@ -287,8 +289,10 @@ typedef struct rc_case_inivel {
 typedef struct rc_case_grav {
     int id;
     int fct_id;     /* 0: constant 1 */
-    int dir;        /* 0, 1, 2 for X, Y, Z */
-    int skew_id;    /* 0 only */
+    int dir;        /* 0, 1, 2 for X, Y, Z (of the skew when skew_id) */
+    double u[3];    /* the unit direction in global axes (axis dir of the
+                     * skew, or of the global frame) */
+    int skew_id;    /* 0: global axes; a /SKEW/FIX */
     int sensor_id;  /* 0 only */
     int grnod_id;   /* 0: all bodies */
     double ascale;  /* [s], default 1 */
@@ -388,11 +392,13 @@ typedef struct rc_case_friction {
 /* /FRIC_ORIENT/id: direction 1 of orthotropic friction per part / group. */
 typedef struct rc_case_fricorient_item {
     int grpart_id, part_id;
-    double v[3];    /* vector V, projected on the contact plane */
-    int skew_id;    /* 0 only */
+    double v[3];    /* vector V, projected on the contact plane (the
+                     * skew's X' axis when skew_id) */
+    int skew_id;    /* 0: V as read; a /SKEW/FIX: V = its X' axis */
     double phi;     /* angle PHI from V about the normal [deg] */
     int iorth;      /* Radioss Iorth (0 or 1), read */
     rc_loc loc;
+    rc_loc line_loc; /* its second line (VX VY VZ skew_ID PHI Iorth) */
 } rc_case_fricorient_item;
 
 typedef struct rc_case_fricorient {

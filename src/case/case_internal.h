@@ -389,6 +389,14 @@ void rc_cards_defaults(rc_case *c);
 rc_status rc_cards_mesh(rc_reader *rd, const rc_block *b, int *handled);
 /* After the last card: expand /GRNOD/PART and /GRNOD/GRNOD into node lists. */
 rc_status rc_cards_mesh_finish(rc_reader *rd);
+/* /INIVEL and /GRAV skew frames into global axes (after rc_cards_mesh_finish) */
+rc_status rc_cards_loads_finish(rc_reader *rd);
+/* /FRIC_ORIENT skew_ID: V from the skew's X' axis (after rc_cards_mesh_finish) */
+rc_status rc_cards_fricorient_finish(rc_reader *rd);
+/* The index of the skew `id` named by `card` (field skew_ID, line `at`), or
+ * a failure: no such skew; a moving skew when `what` (the use refused) is
+ * not NULL. */
+rc_status rc_case_ref_skew(rc_reader *rd, const rc_loc *at, const char *card, int id, const char *what, int *out);
 
 /* ---- Dispatch (cards.c) ------------------------------------------------ */
 

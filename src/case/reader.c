@@ -588,6 +588,8 @@ rc_status rc_case_load_set(const char *path, const char *const *set, int nset, r
     if ((st = rc_check_dups(&rd)) && st != RC_EINPUT) goto fail;
     if (rd.nerrors <= RC_CASE_MAX_ERRORS && (st = rc_cards_finish(&rd)) && st != RC_EINPUT) goto fail;
     if (rd.nerrors == 0 && (st = rc_cards_mesh_finish(&rd)) && st != RC_EINPUT) goto fail;
+    if (rd.nerrors == 0 && (st = rc_cards_loads_finish(&rd)) && st != RC_EINPUT) goto fail;
+    if (rd.nerrors == 0 && (st = rc_cards_fricorient_finish(&rd)) && st != RC_EINPUT) goto fail;
     if (rd.nerrors == 0 && (st = rc_cards_grpart_finish(&rd)) && st != RC_EINPUT) goto fail;
 report:
     rc_progress_done();

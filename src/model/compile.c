@@ -367,7 +367,7 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
         st = group_bodies(c, gr->grnod_id, gl, card, flag, err);
         for (int b = 0; b < c->nrbody && !st; b++)
             if (flag[b]) {
-                m->body_grav[3 * b + gr->dir] += gr->fscale;
+                for (int i = 0; i < 3; i++) m->body_grav[3 * b + i] += gr->fscale * gr->u[i];
                 grav[b] = k;
             }
     }

@@ -40,7 +40,8 @@ static void line_gravity(const rc_case *c, double g[3])
 {
     g[0] = g[1] = g[2] = 0;
     for (int k = 0; k < c->ngrav; k++)
-        if (c->grav[k].grnod_id == 0) g[c->grav[k].dir] += c->grav[k].fscale;
+        if (c->grav[k].grnod_id == 0)
+            for (int i = 0; i < 3; i++) g[i] += c->grav[k].fscale * c->grav[k].u[i];
 }
 
 static rc_status alloc_arrays(rc_couplings *p, int n)

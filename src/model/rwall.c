@@ -306,7 +306,8 @@ rc_status rc_rwall_bodies(rc_rwall_case *x, rc_model *m, rc_error *err)
             const int g = c->grav[k].grnod_id ? rc_case_find_grnod(c, c->grav[k].grnod_id) : -1;
             int in = 0;
             for (int j = 0; g >= 0 && j < c->grnod[g].n; j++) in |= c->grnod[g].nodes[j] == c->rwall[w].node_id;
-            if (in) m->body_grav[3 * b + c->grav[k].dir] += c->grav[k].fscale;
+            if (in)
+                for (int i = 0; i < 3; i++) m->body_grav[3 * b + i] += c->grav[k].fscale * c->grav[k].u[i];
         }
     }
     unsigned char *flag = malloc((size_t)c->nnode + 1);

@@ -766,6 +766,30 @@ TL('type7_renard_c5', T7H, 'field C5',
 TL('type25_ifiltr_xfreq', T25H, 'field Xfreq', before_end(T25(l6='         0         3                  -1'), expect=7))
 
 
+# ---- skew_ID on /GRAV (a /SKEW/FIX axis; a moving skew stays refused),
+# /INIVEL (a skew of any kind; an unknown id refused, as 101_inivel_skew) and /FRIC_ORIENT
+TL('grav_skew_missing', GR, 'field skew_ID', at(GR, 2, 21, 30, '9'))
+TL('grav_skew_mov', GR, 'field skew_ID',
+   lambda lines: at(GR, 2, 21, 30, '9')(before_end(
+       ['/NODE', '        91                   0                   0                   0',
+        '        92                   1                   0                   0',
+        '        93                   0                   1                   0',
+        '/SKEW/MOV/9', 'moving', '        91        92        93         X'])(lines)[0]))
+TL('inivel_rot_skew_missing', IR, 'field skew_ID', at(IR, 2, 71, 80, '9'))
+# /FRIC_ORIENT skew_ID: V from a /SKEW/FIX's X' axis; unknown or moving skews refused
+TL('fo_skew_missing', FO, 'field skew_ID', at(FO, 3, 61, 70, '9'))
+TL('fo_skew_mov', FO, 'field skew_ID',
+   lambda lines: at(FO, 3, 61, 70, '9')(before_end(
+       ['/NODE', '        91                   0                   0                   0',
+        '        92                   1                   0                   0',
+        '        93                   0                   1                   0',
+        '/SKEW/MOV/9', 'moving', '        91        92        93         X'])(lines)[0]))
+# /BCS skew_ID: all or none of Tx Ty Tz (Rx Ry Rz) only; an unknown skew refused
+TL('bcs_skew_partial', BC1, 'field skew_ID', at(BC1, 2, 11, 20, '9'))
+TL('bcs_skew_missing', BC1, 'field skew_ID',
+   lambda lines: at(BC1, 2, 1, 20, '111 000         9')(lines))
+
+
 def write_all():
     for old in glob.glob('[0-9][0-9][0-9]_*'):
         os.remove(old)

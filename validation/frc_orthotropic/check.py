@@ -21,7 +21,7 @@ from scipy.integrate import solve_ivp
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
 import rcval  # noqa: E402
 import stick  # noqa: E402
-from deck import Deck  # noqa: E402
+from deck import Deck, line  # noqa: E402
 
 M, R, K, G, V0 = 1.0, 0.05, 1.0e6, 9.81, 1.0
 VISC = 2.0 * 0.5 * math.sqrt(K * M)  # normal damping ratio 0.5
@@ -57,7 +57,7 @@ def reference(v0=(V0, 0.0), rtol=1e-12):
     return s.sol, s.t_events[0][0], s.y_events[0][0][:2]
 
 
-def deck(iform=2, tend=0.45, rtol=1e-6, atol_pos=1e-9, atol_vel=1e-6):
+def deck(iform=2, tend=0.45, rtol=1e-6, atol_pos=1e-9, atol_vel=1e-6, skew=False):
     z0 = R - M * G / K
     d = Deck("block launched on an orthotropic floor (/FRICTION Idir 1, /FRIC_ORIENT)")
     d.block_on_floor(M, R, K, G, VISC, z0, (V0, 0.0, 0.0))
@@ -67,7 +67,16 @@ def deck(iform=2, tend=0.45, rtol=1e-6, atol_pos=1e-9, atol_vel=1e-6):
     d.friction(1, ifric=0, iform=iform, fric=0.9,
                pairs=[dict(part1=1, grpart2=1, sets=[((), MU1, None), ((), MU2, None)])],
                title="defaults 0.9 (unused); block/floor: mu_1 0.2, mu_2 0.5")
-    d.fric_orient(1, [(1, 0, VDIR, PHI)], title="direction 1: (1, sqrt 3, 0.7) projected on the floor")
+    if skew:
+        # the same direction 1 from a /SKEW/FIX's X' axis: Y' = z, X' = Y' x
+        # (sqrt 3, -1, 0) normalised = (1, sqrt 3, 0)/2; VX VY VZ unused
+        d.add("/SKEW/FIX/5", line(("r", 0.0), ("r", 0.0), ("r", 0.0)), line(("r", 0.0), ("r", 0.0), ("r", 1.0)),
+              line(("r", math.sqrt(3.0)), ("r", -1.0), ("r", 0.0)), title="X' at 60 deg from x in the floor")
+        d.add("/FRIC_ORIENT/1", line(("i", 1), ("i", 0)),
+              line(("r", 0.0), ("r", 0.0), ("r", 0.0), ("i", 5), ("r", PHI)),
+              title="direction 1: the X' axis of skew 5")
+    else:
+        d.fric_orient(1, [(1, 0, VDIR, PHI)], title="direction 1: (1, sqrt 3, 0.7) projected on the floor")
     d.run(tend, 0.005)
     d.solver(rtol=rtol, atol_pos=atol_pos, atol_vel=atol_vel, atol_energy=atol_vel)
     return d
@@ -180,6 +189,16 @@ def main():
     # smaller limit L_1 = 1.96 N: 10 times that, 5.1e-3)
     max_dissipation("frc_orthotropic.default", r, 10.0 * KT * 1e-9 / (MU1 * M * G),
                     "the integration error of the direction at atol(F_t) = 1e-3 N")
+    # direction 1 from a /SKEW/FIX (skew_ID, its X' axis) instead of V: the same run
+    rs = rcval.Result(rcval.run(deck(skew=True), name="skew"))
+    # the records at the output times (events may fall a rounding apart)
+    ka, kb = rs.at_event == 0, r.at_event == 0
+    same = np.array_equal(rs.t[ka], r.t[kb])
+    dx = float(np.max(np.abs(rs.pos[ka] - r.pos[kb]))) if same else np.inf
+    rcval.check("frc_orthotropic.skew.same_path", dx < 1e-9,
+                f"direction 1 from skew_ID (X' = (1, sqrt 3, 0)/2) against V = (1, sqrt 3, 0.7): max |dx| = {dx:.2e} m "
+                f"(< 1e-9, same records: {same})")
+    compare("frc_orthotropic.skew", rs, rigid, 1e-5, 1e-4, 1e-5, "the rigid elliptic law (solve_ivp)")
     # tight tolerances: the incremental law exactly; the rigid law within its regularisation
     r = rcval.Result(rcval.run(deck(rtol=1e-11, atol_pos=1e-14, atol_vel=1e-11)))
     compare("frc_orthotropic.tight", r, inc, 1e-8, 1e-8, 1e-8, "the incremental law (solve_ivp)")

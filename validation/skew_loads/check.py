@@ -114,8 +114,12 @@ def main():
     same = len(g.t) == len(r.t) and np.array_equal(g.t, r.t)
     dx = float(np.max(np.abs(g.pos - r.pos))) if same else np.inf
     dq = float(np.max(np.abs(g.quat - r.quat))) if same else np.inf
-    rcval.check("skew_loads.global_frame", dx < 1e-12 and dq < 1e-12,
-                f"skewed vs global deck: max |dx| = {dx:.2e} m, max |dq| = {dq:.2e} (< 1e-12, same records: {same})")
+    # the two decks differ by the roundings of their inputs, which the
+    # error control may answer with other steps: the same flight to a tenth
+    # of the relative tolerance (1e-8 at the defaults)
+    rcval.check("skew_loads.global_frame", dx < 1e-10 and dq < 1e-9,
+                f"skewed vs global deck: max |dx| = {dx:.2e} m (< 1e-10), max |dq| = {dq:.2e} (< 1e-9), "
+                f"same records: {same}")
     rcval.finish()
 
 

@@ -297,6 +297,23 @@ static rc_status t7_only_default(rc_reader *rd, const rc_block *b, const rc_loc 
                         f->got, note);
 }
 
+/* The friction law lines of an interface card (rc_inter_friction) and no
+ * data line after them; what: the lines the card leaves out, for the
+ * message ("" or "...; "). */
+static rc_status inter_friction_lines(rc_reader *rd, const rc_block *b, int nd, const rc_field *l6, int ifric,
+                                      int ifiltr, double xfreq, int iform, double fric, double visf, int *fric_id,
+                                      const char *what)
+{
+    int nlaw = 0;
+    rc_status st = rc_inter_friction(rd, b, nd, l6, ifric, ifiltr, xfreq, iform, fric, visf, fric_id, &nlaw);
+    if (st) return st;
+    if (nd > 6 + nlaw)
+        return rc_case_fail(rd, &b->lines[7 + nlaw].loc, b->name, NULL,
+                            "expected %d data lines (%sIfric %d: %d friction law lines), got %d", 6 + nlaw, what,
+                            ifric, nlaw, nd);
+    return RC_OK;
+}
+
 /* Inacti of the node-to-surface and edge cards (TYPE7, TYPE11, TYPE19):
  * 0 and 1000 no action; 5 the gap reduced by the initial penetration; 6
  * the same with Radioss's 5 % depenetration, read as 5 (docs/theory.md
@@ -418,14 +435,9 @@ rc_status rc_card_type7(rc_reader *rd, const rc_block *b)
         t->line_loc[k] = b->lines[k + 1].loc;
         if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
     }
-    int nlaw = 0;
-    if ((st = rc_inter_friction(rd, b, nd, l6, ifric, ifiltr, xfreq, t->iform, t->fric, t->visf, &t->fric_id, &nlaw)))
+    if ((st = inter_friction_lines(rd, b, nd, l6, ifric, ifiltr, xfreq, t->iform, t->fric, t->visf, &t->fric_id,
+                                   "Icurv and Ithe 0: no curvature or thermal lines; ")))
         return st;
-    if (nd > 6 + nlaw)
-        return rc_case_fail(rd, &b->lines[7 + nlaw].loc, b->name, NULL,
-                            "expected %d data lines (Icurv and Ithe 0: no curvature or thermal lines; Ifric %d: %d "
-                            "friction law lines), got %d",
-                            6 + nlaw, ifric, nlaw, nd);
     /* the stiffness: Stfac a stiffness value (Istf 1), or a factor on the
      * main elements' stiffness (0, 1000: model/type7.c) */
     if (t->istf == RC_T7_DEFAULT) t->istf = 0;
@@ -647,13 +659,9 @@ rc_status rc_card_type24(rc_reader *rd, const rc_block *b)
         t->line_loc[k] = b->lines[k + 1].loc;
         if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
     }
-    int nlaw = 0;
-    if ((st = rc_inter_friction(rd, b, nd, l6, ifric, ifiltr, xfreq, 2, t->fric, 1.0, &t->fric_id, &nlaw)))
+    if ((st = inter_friction_lines(rd, b, nd, l6, ifric, ifiltr, xfreq, 2, t->fric, 1.0, &t->fric_id,
+                                   "")))
         return st;
-    if (nd > 6 + nlaw)
-        return rc_case_fail(rd, &b->lines[7 + nlaw].loc, b->name, NULL,
-                            "expected %d data lines (Ifric %d: %d friction law lines), got %d", 6 + nlaw, ifric, nlaw,
-                            nd);
     const t24_fields f = {&l1[1], &l1[2], &l4[0], &l3[1], &l3[2], &l5[2], &l4[4], "surf_ID1"};
     if ((st = t24_checks(rd, b, t, igap0, &f))) return st;
     if ((st = t7_only_default(rd, b, &t->line_loc[2], &l3[3], ipen0,
@@ -757,14 +765,9 @@ rc_status rc_card_type25(rc_reader *rd, const rc_block *b)
         t->line_loc[k] = b->lines[k + 1].loc;
         if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
     }
-    int nlaw = 0;
-    if ((st = rc_inter_friction(rd, b, nd, l6, ifric, ifiltr, xfreq, 2, t->fric, 1.0, &t->fric_id, &nlaw)))
+    if ((st = inter_friction_lines(rd, b, nd, l6, ifric, ifiltr, xfreq, 2, t->fric, 1.0, &t->fric_id,
+                                   "IVIS2 0 and Ithe 0: no adhesion or thermal lines; ")))
         return st;
-    if (nd > 6 + nlaw)
-        return rc_case_fail(rd, &b->lines[7 + nlaw].loc, b->name, NULL,
-                            "expected %d data lines (IVIS2 0 and Ithe 0: no adhesion or thermal lines; Ifric %d: %d "
-                            "friction law lines), got %d",
-                            6 + nlaw, ifric, nlaw, nd);
     const t24_fields f = {&l1[1], &l1[2], &l4[0], &l3[1], &l3[2], &l5[3], &l4[4], "surf_ID1"};
     if ((st = t24_checks(rd, b, t, igap0, &f))) return st;
     if ((st = t7_only_default(rd, b, &t->line_loc[0], &l1[4], igap,
@@ -990,14 +993,9 @@ rc_status rc_card_type19(rc_reader *rd, const rc_block *b)
         t->line_loc[k] = b->lines[k + 1].loc;
         if ((st = rc_parse_line(rd, b, &b->lines[k + 1], lines[k], nf[k]))) return st;
     }
-    int nlaw = 0;
-    if ((st = rc_inter_friction(rd, b, nd, l6, ifric, ifiltr, xfreq, iform, t->fric, visf, &t->fric_id, &nlaw)))
+    if ((st = inter_friction_lines(rd, b, nd, l6, ifric, ifiltr, xfreq, iform, t->fric, visf, &t->fric_id,
+                                   "Icurv and Ithe 0: no curvature or thermal lines; ")))
         return st;
-    if (nd > 6 + nlaw)
-        return rc_case_fail(rd, &b->lines[7 + nlaw].loc, b->name, NULL,
-                            "expected %d data lines (Icurv and Ithe 0: no curvature or thermal lines; Ifric %d: %d "
-                            "friction law lines), got %d",
-                            6 + nlaw, ifric, nlaw, nd);
     const rc_field igap0 = RC_F_INT("Igap0", NULL, 0, 0);
     const t24_fields f = {&l1[1], &l1[2], &l4[0], &l3[1], &igap0, &l5[2], &l4[4], "surf_IDs"};
     if ((st = t24_checks(rd, b, t, 0, &f))) return st;

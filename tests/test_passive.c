@@ -1130,6 +1130,80 @@ out:
     rc_model_free(m);
 }
 
+/* The viscous form saturates on the limit with its bands, as the
+ * incremental form slips: C |v_t| must exceed (1 + RC_SLIP_BAND) L plus the
+ * force band (at least RC_SLIP_BAND of the force scale). Without the force
+ * band, a limit rising from zero (a filtered limit at a closing, 5e-19 N)
+ * against a sliding at the velocities' rounding decided the saturation on
+ * rounding: a stack of boxes on the power law flipped eight points in and
+ * out of saturation every 1e-13 s (Zeno at t = 0.0012 s). The ball on the
+ * floor: (a) a limit of rounding size and a sliding of 1e-12 m/s, whose
+ * viscous force is beyond that limit but within the band, stays below the
+ * limit; (b) pressed 1 micron (a limit of 0.37 N), a viscous force of
+ * twice the limit saturates, (c) one of half the limit does not; (d) once
+ * saturated, it comes back below (1 - RC_SLIP_BAND) L only. */
+static const char *viscous_band_deck =
+    "/BEGIN\nball resting on a floor, viscous friction\n      2022         0\n"
+    "                  kg                   m                   s\n"
+    "                  kg                   m                   s\n"
+    "/FUNCT/1\nlinear\n0,0\n1,1000000\n" BALL_ON_FLOOR
+    "/INTER/TYPE6/1\nball on floor\n1,2\n\n\n1,0\n\n\n"
+    "/FRICTION/1\nviscous\n0,0,,1\n\n,0.37,0.8\n"
+    "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"
+    "/RUN\n0.01,0.001\n/END\n";
+
+static void test_viscous_saturation_needs_the_force_band(void)
+{
+    rc_model *m = TU_COMPILE_OK(viscous_band_deck, "viscous_band.rad");
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    ENSURE(d && y && m->ninter == 1 && m->inter_fr[0].form == RC_FF_VISCOUS);
+    if (!d || !y) goto out;
+    rc_initial_state(m, y);
+    double *yb = y + m->body_yadr[0];
+    d->inter_mode[0] = RC_MODE_CLOSED;
+    d->inter_slip[0] = 0;
+    const double fbv = RC_SLIP_BAND * m->inter_fscale[0];
+    rc_inter_report r;
+    /* (a) */
+    yb[2] = 0.05 - 2e-16;
+    yb[7] = 1e-12;
+    rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
+    double fv = sqrt(r.ft[0] * r.ft[0] + r.ft[1] * r.ft[1] + r.ft[2] * r.ft[2]);
+    printf("    rounding limit %.3g N, viscous force %.3g N, band %.3g N: root %.3g\n", r.flim, fv, fbv, r.slip_root);
+    ENSURE(r.flim > 0 && fv > 2.0 * r.flim && fv < 0.1 * fbv);
+    ENSURE(r.slip_root < 0);
+    /* (b), (c): the sliding speed that gives a viscous force of s L */
+    yb[2] = 0.05 - 1e-6;
+    yb[7] = 1e-6;
+    rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
+    const double c = fabs(r.ft[0]) / 1e-6, L = r.flim;
+    ENSURE(c > 0 && L > 0.3 && L < 0.4);
+    yb[7] = 2.0 * L / c;
+    rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
+    const double twice = r.slip_root;
+    yb[7] = 0.5 * L / c;
+    rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
+    const double half = r.slip_root;
+    /* (d) saturated, at (1 - RC_SLIP_BAND / 2) L and (1 - 2 RC_SLIP_BAND) L */
+    d->inter_slip[0] = 1;
+    yb[7] = (1.0 - 0.5 * RC_SLIP_BAND) * L / c;
+    rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
+    const double stays = r.slip_root;
+    yb[7] = (1.0 - 2.0 * RC_SLIP_BAND) * L / c;
+    rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
+    const double back = r.slip_root;
+    printf("    limit %.4g N, C %.4g N s/m: roots at 2 L %.3g, L/2 %.3g; saturated at (1-b/2) L %.3g, (1-2b) L %.3g\n", L,
+           c, twice, half, stays, back);
+    ENSURE(twice > 0 && half < 0);
+    ENSURE(stays < 0 && back > 0);
+out:
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 /* A ball over the edge of a box: the edge is rounded by the geometry (the
  * distance to the solid box), so a ball sliding off a table pivots about
  * the edge and leaves it where a particle on a circle of radius R does,
@@ -1344,6 +1418,7 @@ void suite_passive(void)
     RUN_TEST(test_slip_waits_for_a_falling_limit);
     RUN_TEST(test_corner_stick_tested_with_its_spring);
     RUN_TEST(test_viscous_reversal_root_waits_for_a_limit);
+    RUN_TEST(test_viscous_saturation_needs_the_force_band);
     RUN_TEST(test_ball_pivots_over_a_box_edge);
     RUN_TEST(test_state_stiffness_beyond_resolution_refused);
     RUN_TEST(test_landing_band_kept_through_flips);

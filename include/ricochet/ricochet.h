@@ -157,6 +157,12 @@ typedef struct rc_model rc_model;
  * *out is NULL on failure. The case may be freed once compiled. */
 rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err);
 void rc_model_free(rc_model *m); /* NULL is a no-op */
+/* Notices of the compiling ("file:line: ..."): what the deck's options
+ * changed in the model that its reader should know, e.g. the secondary
+ * nodes or main segments that /INTER/TYPE7 Inacti 1, 2 left out; i in
+ * [0, rc_model_note_count(m)). A NULL m has none (count 0, NULL). */
+int rc_model_note_count(const rc_model *m);
+const char *rc_model_note(const rc_model *m, int i);
 /* Human-readable summary (bodies, surfaces, interfaces, state size, solver
  * settings) as printed by `ricochet check`. A NULL m or f prints nothing. */
 void rc_model_print_summary(const rc_model *m, FILE *f);

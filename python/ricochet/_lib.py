@@ -96,6 +96,8 @@ _PROTOTYPES = {
     "rc_case_warning": (c_char_p, [c_void_p, c_int]),
     "rc_model_compile": (c_int, [c_void_p, POINTER(c_void_p), POINTER(RcError)]),
     "rc_model_free": (None, [c_void_p]),
+    "rc_model_note_count": (c_int, [c_void_p]),
+    "rc_model_note": (c_char_p, [c_void_p, c_int]),
     "rc_model_set_rtol": (c_int, [c_void_p, c_double, POINTER(RcError)]),
     "rc_model_set_method": (c_int, [c_void_p, c_int, POINTER(RcError)]),
     "rc_model_set_preload": (c_int, [c_void_p, c_int, POINTER(RcError)]),

@@ -180,6 +180,8 @@ class _Model:
             self.free()
             _raise(st, err)
         self.ptr = m
+        for i in range(L.rc_model_note_count(m)):
+            warnings.warn(L.rc_model_note(m, i).decode(errors="replace"), RicochetWarning, stacklevel=4)
         # in the order of `ricochet run`: the derived tolerances follow rtol
         st = 0
         if rtol is not None:

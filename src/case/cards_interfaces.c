@@ -317,32 +317,38 @@ static rc_status inter_friction_lines(rc_reader *rd, const rc_block *b, int nd, 
 /* Inacti of the node-to-surface and edge cards (TYPE7, TYPE11, TYPE19):
  * 0 and 1000 no action; 5 the gap reduced by the initial penetration; 6
  * the same with Radioss's 5 % depenetration, read as 5 (docs/theory.md
- * 3.7: the start is force-free either way); 1, 2 (the initially
- * penetrating nodes or segments left out) and 3 (the nodes moved out)
+ * 3.7: the start is force-free either way); TYPE7's 1, 2 (the initially
+ * penetrating secondary nodes or the main segments they penetrate left
+ * out, found when the model is compiled: engine/analyses/prepare.c);
+ * TYPE11's and TYPE19's 1, 2 and every card's 3 (the nodes moved out)
  * refused with their reason. */
-static rc_status t7_inacti(rc_reader *rd, const rc_block *b, const rc_loc *loc, int *inacti, const rc_field *f)
+static rc_status t7_inacti(rc_reader *rd, const rc_block *b, const rc_loc *loc, int *inacti, const rc_field *f, int type)
 {
     if (*inacti == RC_T7_DEFAULT) *inacti = 0;
     if (*inacti == 0 || *inacti == 5 || *inacti == 6) return RC_OK;
+    if ((*inacti == 1 || *inacti == 2) && type == 7) return RC_OK;
     if (*inacti == 1 || *inacti == 2)
         return rc_case_fail(rd, loc, b->name, "Inacti",
-                            "got %s: not supported yet: Inacti %d takes the initially penetrating %s out of the "
-                            "contact for the whole run, where ricochet's contact keeps every %s of the card (its "
-                            "contact points are fixed before the first pose is evaluated); expected 0, blank, 1000 "
-                            "(no action), 5 or 6 (the gap reduced by the initial penetration), or, to the same "
-                            "effect, those %s left out of the card's %s",
-                            f->got, *inacti, *inacti == 1 ? "secondary nodes" : "main segments",
-                            *inacti == 1 ? "node" : "segment", *inacti == 1 ? "nodes" : "segments",
-                            *inacti == 1 ? "secondary side" : "main side");
+                            "got %s: not supported yet: Inacti %d leaves the initially penetrating %s out of the "
+                            "contact, but ricochet's TYPE%d is the contact of two boxes (their edges%s, taken from "
+                            "the box each side is), which has no secondary node or main segment of the deck to leave "
+                            "out; expected 0, blank, 1000 (no action), 5 or 6 (the gap reduced by the initial "
+                            "penetration), or the boxes apart at t = 0",
+                            f->got, *inacti, *inacti == 1 ? "secondary nodes" : "main segments", type,
+                            type == 19 ? " and corners" : "");
     if (*inacti == 3)
         return rc_case_fail(rd, loc, b->name, "Inacti",
                             "got %s: not supported: Inacti 3 moves the penetrating nodes onto the surface, which "
-                            "for a rigid body would change its shape and mass at t = 0; expected 0, blank, 1000, 5 or "
-                            "6 (the initial penetration taken as a reduction of the gap), or the bodies apart at t = 0",
-                            f->got);
+                            "for a rigid body would change its shape and mass at t = 0; expected 0, blank, 1000, "
+                            "%s5 or 6 (the initial penetration taken as a reduction of the gap), or the bodies apart "
+                            "at t = 0",
+                            f->got, type == 7 ? "1, 2 (the penetrating nodes or segments left out), " : "");
     return rc_case_fail(rd, loc, b->name, "Inacti",
-                        "expected 0, blank, 1000 (no action), 5 or 6 (the gap reduced by the initial penetration), "
+                        "expected 0, blank, 1000 (no action), %s5 or 6 (the gap reduced by the initial penetration), "
                         "got %s",
+                        type == 7 ? "1 (the initially penetrating secondary nodes left out), 2 (the main segments "
+                                    "they penetrate left out), "
+                                  : "",
                         f->got);
 }
 
@@ -473,7 +479,7 @@ rc_status rc_card_type7(rc_reader *rd, const rc_block *b)
                             "thicknesses) or 2 (the same, scaled by Fscalegap, at most Gapmax), got %s",
                             l1[4].got);
     if (t->fscalegap == 0) t->fscalegap = 1.0; /* Igap 2's scale: Radioss's default */
-    if ((st = t7_inacti(rd, b, &t->line_loc[4], &t->inacti, &l5[2]))) return st;
+    if ((st = t7_inacti(rd, b, &t->line_loc[4], &t->inacti, &l5[2], 7))) return st;
     if (t->visf != RC_T7_DEF_VISF)
         return rc_case_fail(rd, &t->line_loc[4], b->name, "VISF",
                             "expected 1, 0 or blank (the default), got %s: not supported yet (ricochet's friction "
@@ -570,7 +576,7 @@ static rc_status t24_checks(rc_reader *rd, const rc_block *b, rc_case_type24 *t,
     /* TYPE11, TYPE19: TYPE7's values; TYPE24, TYPE25: -1 every initial
      * penetration acts (ricochet's 0), 5 the main segment shifted by it */
     if (t->type == 11 || t->type == 19) {
-        rc_status st = t7_inacti(rd, b, &t->line_loc[4], &t->inacti, f->inacti);
+        rc_status st = t7_inacti(rd, b, &t->line_loc[4], &t->inacti, f->inacti, t->type);
         if (st) return st;
     } else {
         if (t->inacti == RC_T7_DEFAULT || t->inacti == -1) t->inacti = 0;

@@ -155,6 +155,7 @@ static int load(const char *path, const char *const *set, int nset, rc_case **c,
     for (int i = 0; i < rc_case_warning_count(*c); i++)
         fprintf(stderr, "ricochet: warning: %s\n", rc_case_warning(*c, i));
     if (rc_model_compile(*c, m, e)) return fail(e);
+    for (int i = 0; i < rc_model_note_count(*m); i++) fprintf(stderr, "ricochet: warning: %s\n", rc_model_note(*m, i));
     return 0;
 }
 

@@ -746,6 +746,11 @@ static void own_locations(const rc_case *c, rc_model *m)
 
 rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
 {
+    return rc_model_build_drop(c, NULL, out, err);
+}
+
+rc_status rc_model_build_drop(const rc_case *c, const rc_t7_drop *drop, rc_model **out, rc_error *err)
+{
     rc_status st = RC_OK;
     *out = NULL;
     /* the rigid walls: the case with their surfaces, load curve and (once
@@ -755,7 +760,7 @@ rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err)
     rc_rwall_case rx;
     rc_type7_case tx; /* then the TYPE7 cards' point surfaces (model/type7.c) */
     if ((st = rc_sensor_begin(c, &sx, err))) return st;
-    if ((st = rc_type7_begin(&sx.c, &tx, err))) {
+    if ((st = rc_type7_begin(&sx.c, drop, &tx, err))) {
         rc_sensor_end(&sx);
         return st;
     }
@@ -1034,6 +1039,9 @@ void rc_model_free(rc_model *m)
     free(m->file);
     free(m->file_id);
     rc_seg_free(m);
+    for (int k = 0; m->note && k < m->nnote; k++) free(m->note[k]);
+    free(m->note);
+    free(m->surf_nid);
     void *arrays[] = {m->case_path, m->overrides, m->table, m->body_id, m->body_fixed, m->body_yadr, m->body_mass,
                       m->body_J, m->body_Jinv, m->body_y0, m->body_grav, m->body_dofmask, m->surf_id, m->surf_kind,
                       m->surf_body, m->surf_p, m->surf_n, m->surf_r, m->inter_id, m->inter_pair,
@@ -1054,3 +1062,7 @@ void rc_model_free(rc_model *m)
 }
 
 int rc_model_state_size(const rc_model *m) { return m ? m->ny : 0; }
+
+int rc_model_note_count(const rc_model *m) { return m ? m->nnote : 0; }
+
+const char *rc_model_note(const rc_model *m, int i) { return m && i >= 0 && i < m->nnote ? m->note[i] : NULL; }

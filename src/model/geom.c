@@ -62,6 +62,10 @@ rc_status rc_geom_box_corners(rc_model *m, int s, rc_error *err)
     signed char *tu = realloc(m->surf_seg_turned, (size_t)(s0 + 6 + 1));
     if (!tu) RC_RAISE(err, RC_ENOMEM, "out of memory");
     m->surf_seg_turned = tu;
+    int *ni = realloc(m->surf_nid, (size_t)(n0 + 8 + 1) * sizeof(int));
+    if (!ni) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    m->surf_nid = ni;
+    for (int j = 0; j < 8; j++) ni[n0 + j] = 0; /* no node of the deck */
     const double *p = m->surf_p + 3 * s, *e = m->surf_ext + RC_SURF_NEXT * s;
     for (int j = 0; j < 8; j++) {
         const double sx = (j & 1) ? 1.0 : -1.0, sy = (j & 2) ? 1.0 : -1.0, sz = (j & 4) ? 1.0 : -1.0;

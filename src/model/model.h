@@ -266,6 +266,8 @@ struct rc_model {
     int *surf_seg;       /* [4*segments] */
     signed char *surf_seg_turned; /* [segments] 1: a solid's face turned by /SURF/PART to
                             point out of its solid (its element numbering points in) */
+    int *surf_nid;       /* [nodes] the deck's id of each segment surface node (0: a box's
+                            corner, rc_geom_box_corners), for messages and Inacti 1 */
     struct rc_segmesh *surf_mesh; /* [nsurf] adjacency and broad-phase grid (segsurf.h) */
 
     /* curves */
@@ -380,6 +382,9 @@ struct rc_model {
     int ev_state;        /* /RUN Ev_state: 0 auto, 1 always, 2 never (rc_event_records) */
     int on_violation;    /* /RUN On_viol: a failed physics check 0, 1 stops the run, 2 warns (solver/guards.h) */
     char *start_note;    /* an overlap at t = 0 accepted by On_viol 2 (engine/analyses/start.c): its message; NULL: none */
+    int nnote;           /* notices of the compiler (the /INTER/TYPE7 Inacti 1, 2 points left out:
+                            engine/analyses/prepare.c), "FILE:LINE: ..." each */
+    char **note;         /* [nnote] owned */
     int start_inter;     /* its interface */
     double start_energy, start_escale; /* its elastic energy and the scene's E_s [J] */
     double rtol;
@@ -467,6 +472,18 @@ static inline int rc_inter_frictionless(const rc_model *m, int i)
  * tolerances and Jacobian pattern: those evaluate the kernels and follow in
  * rc_model_compile (engine/analyses/prepare.c). On failure *out stays NULL. */
 rc_status rc_model_build(const rc_case *c, rc_model **out, rc_error *err);
+/* What Inacti 1, 2 of the /INTER/TYPE7 cards leave out of their contacts
+ * (found by the engine on a first build: engine/analyses/prepare.c): for
+ * card i of c->type7, n[i] ascending ints at ids[i]: the secondary node
+ * ids (Inacti 1) or the indices of the main segments in the list of its
+ * main /SURF/SEG (Inacti 2). */
+typedef struct rc_t7_drop {
+    int **ids; /* [ntype7] */
+    int *n;    /* [ntype7] */
+} rc_t7_drop;
+/* rc_model_build with those points or segments left out (drop NULL: none;
+ * model/type7.c). */
+rc_status rc_model_build_drop(const rc_case *c, const rc_t7_drop *drop, rc_model **out, rc_error *err);
 
 /* ---- static analysis (model/static_scope.c) ---------------------- */
 /* The first element of m that the static analysis (/SOLVER Method 3,

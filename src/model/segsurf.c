@@ -269,6 +269,13 @@ rc_status rc_seg_surface(const rc_case *c, rc_model *m, int s, rc_error *err)
         goto done;
     }
     m->surf_seg_turned = tu;
+    int *ni = realloc(m->surf_nid, (size_t)(n0 + nn + 1) * sizeof(int));
+    if (!ni) {
+        st = RC_SET(err, RC_ENOMEM, "out of memory");
+        goto done;
+    }
+    m->surf_nid = ni;
+    for (int k = 0; k < nn; k++) ni[n0 + k] = ids[k];
     for (int k = 0; k < nf; k++) tu[s0 + k] = (signed char)f[k].turned;
     for (int k = 0; k < nn; k++) {
         const double *x = node_x(c, ids[k]);

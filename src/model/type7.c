@@ -621,7 +621,57 @@ static rc_status box_sides(const rc_case *c, const rc_case_type24 *t, rc_case_su
     return RC_OK;
 }
 
-rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
+/* 1 when v is in the n ascending ints at a. */
+static int t7_listed(const int *a, int n, int v)
+{
+    int lo = 0, hi = n - 1;
+    while (lo <= hi) {
+        const int mid = lo + (hi - lo) / 2;
+        if (a[mid] == v) return 1;
+        if (a[mid] < v) lo = mid + 1;
+        else hi = mid - 1;
+    }
+    return 0;
+}
+
+/* What drop leaves out of TYPE7 card i (0: nothing). */
+static int t7_ndrop(const rc_t7_drop *drop, int i) { return drop && drop->n ? drop->n[i] : 0; }
+
+/* Inacti 2 (docs/theory.md 3.7): the copy of card i's main /SURF/SEG
+ * without the segments drop leaves out, as surface *out (id sid, arrays
+ * owned by x: x->mseg[i], x->mloc[i]); its nseg 0 when none is left. */
+static rc_status t7_main_copy(const rc_case *c, const rc_t7_drop *drop, rc_type7_case *x, int i, int sid,
+                              rc_case_surf *out, rc_error *err)
+{
+    const rc_case_type7 *t = &c->type7[i];
+    const rc_case_surf *cs = &c->surf[rc_case_find_surf(c, t->surf_id)];
+    *out = *cs;
+    out->id = sid;
+    out->npoint = 0;
+    out->point = NULL;
+    snprintf(out->title, sizeof out->title, "/SURF/SEG/%d less the segments Inacti 2 of /INTER/TYPE7/%d leaves out",
+             t->surf_id, t->id);
+    x->mseg[i] = malloc(5 * ((size_t)cs->nseg + 1) * sizeof *x->mseg[i]);
+    x->mloc[i] = malloc(((size_t)cs->nseg + 1) * sizeof *x->mloc[i]);
+    if (!x->mseg[i] || !x->mloc[i]) RC_RAISE(err, RC_ENOMEM, "out of memory");
+    int *seg = x->mseg[i], *ids = seg + 4 * cs->nseg, n = 0;
+    for (int k = 0; k < cs->nseg; k++) {
+        if (t7_listed(drop->ids[i], drop->n[i], k)) continue;
+        memcpy(seg + 4 * n, cs->seg + 4 * k, 4 * sizeof *seg);
+        ids[n] = cs->seg_id[k];
+        x->mloc[i][n] = cs->seg_loc[k];
+        n++;
+    }
+    /* the ids after the kept segments' nodes */
+    memmove(seg + 4 * n, ids, (size_t)n * sizeof *seg);
+    out->nseg = n;
+    out->seg = seg;
+    out->seg_id = seg + 4 * n;
+    out->seg_loc = x->mloc[i];
+    return RC_OK;
+}
+
+rc_status rc_type7_begin(const rc_case *c, const rc_t7_drop *drop, rc_type7_case *x, rc_error *err)
 {
     memset(x, 0, sizeof *x);
     x->c = *c;
@@ -779,8 +829,23 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
             if (cnt[b >= 0 ? b : c->nrbody]++ == 0) npts++;
         }
     }
+    /* Inacti 2: a copy of the main surface of each card that leaves
+     * segments out */
+    int nred = 0;
+    for (int i = 0; i < c->ntype7; i++) nred += c->type7[i].inacti == 2 && t7_ndrop(drop, i) > 0;
+    x->nt7 = c->ntype7;
+    x->dropped = calloc((size_t)c->ntype7 + 1, sizeof *x->dropped);
+    for (int i = 0; x->dropped && i < c->ntype7; i++) x->dropped[i] = t7_ndrop(drop, i);
+    x->mainsurf = calloc((size_t)c->ntype7 + 1, sizeof *x->mainsurf);
+    x->mseg = calloc((size_t)c->ntype7 + 1, sizeof *x->mseg);
+    x->mloc = calloc((size_t)c->ntype7 + 1, sizeof *x->mloc);
+    if (!x->dropped || !x->mainsurf || !x->mseg || !x->mloc) {
+        free(cnt);
+        rc_type7_end(x);
+        RC_RAISE(err, RC_ENOMEM, "out of memory");
+    }
     x->nuser = c->nsurf;
-    x->surf = calloc((size_t)(c->nsurf + npts + x->nbx) + 1, sizeof *x->surf);
+    x->surf = calloc((size_t)(c->nsurf + npts + x->nbx + nred) + 1, sizeof *x->surf);
     x->funct = calloc((size_t)c->nfunct + 1, sizeof *x->funct);
     x->name = calloc((size_t)npts + 1, sizeof *x->name);
     x->pts_t7 = calloc((size_t)npts + 1, sizeof *x->pts_t7);
@@ -806,6 +871,9 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
             for (int j = 0; j < gr->n; j++) {
                 int dup = 0;
                 if (rc_case_body_of_node(c, gr->nodes[j]) != b) continue;
+                /* Inacti 1: the node penetrated the main surface at t = 0 */
+                if (t->inacti == 1 && t7_ndrop(drop, i) > 0 && t7_listed(drop->ids[i], drop->n[i], gr->nodes[j]))
+                    continue;
                 for (int q = 0; q < np && !dup; q++) dup = ids[q] == gr->nodes[j];
                 if (!dup) ids[np++] = gr->nodes[j];
             }
@@ -861,9 +929,29 @@ rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err)
             nbs++;
         }
     }
+    /* Inacti 2: the main surfaces without the segments left out, after
+     * the boxes (ids below RC_TYPE7_SURF_ID0: no walls' surfaces either) */
+    int nms = 0;
+    for (int i = 0; i < c->ntype7 && !st; i++) {
+        x->mainsurf[i] = c->type7[i].surf_id;
+        if (c->type7[i].inacti != 2 || t7_ndrop(drop, i) == 0) continue;
+        rc_case_surf *ms = &x->surf[x->nuser + x->npts + nbs + nms];
+        st = t7_main_copy(c, drop, x, i, RC_TYPE7_SURF_ID0 - (x->npts + nbs + nms), ms, err);
+        if (st) break;
+        if (ms->nseg == 0) { /* every main segment left out: no contact */
+            x->mainsurf[i] = 0;
+            continue;
+        }
+        x->mainsurf[i] = ms->id;
+        nms++;
+    }
+    if (st) {
+        rc_type7_end(x);
+        return st;
+    }
     x->c.type24 = x->t24;
     x->c.surf = x->surf;
-    x->c.nsurf = x->nuser + x->npts + nbs;
+    x->c.nsurf = x->nuser + x->npts + nbs + nms;
     x->c.funct = x->funct;
     x->c.nfunct = c->nfunct + 1;
     /* the copy's own index (case/lookup.c) */
@@ -882,7 +970,11 @@ rc_status rc_type7_contacts(rc_type7_case *x, rc_case *c, const rc_model *m, rc_
     int n = c->ntype6;
     for (int i = 0; i < c->ntype7; i++) {
         const rc_case_type7 *t = &c->type7[i];
-        const int sm = rc_case_find_surf(c, t->surf_id), bm = m->surf_body[sm];
+        /* Inacti 1, 2 that left every node or every main segment out: no
+         * contact (engine/analyses/prepare.c says so) */
+        const int left_out = t->inacti == 1 || t->inacti == 2 ? x->dropped[i] : 0;
+        if (x->mainsurf[i] == 0) continue;
+        const int sm = rc_case_find_surf(c, x->mainsurf[i]), bm = m->surf_body[sm];
         int made = 0;
         for (int k = 0; k < x->npts; k++) {
             if (x->pts_t7[k] != i) continue;
@@ -892,9 +984,10 @@ rc_status rc_type7_contacts(rc_type7_case *x, rc_case *c, const rc_model *m, rc_
             rc_status st = contact_law(c, x, i, c->surf[s].point, c->surf[s].npoint, &kc, &gap, err);
             if (st) return st;
             rc_case_type6 *t6 = &x->type6[n++];
-            *t6 = (rc_case_type6){.id = t->id, .surf1 = c->surf[s].id, .surf2 = t->surf_id, .fric = t->fric,
+            *t6 = (rc_case_type6){.id = t->id, .surf1 = c->surf[s].id, .surf2 = x->mainsurf[i], .fric = t->fric,
                                   .gap = gap, .tstart = t->tstart, .tstop = t->tstop,
-                                  .inacti = t->inacti == 6 ? 5 : t->inacti, /* 6 read as 5 (theory 3.7) */
+                                  .inacti = t->inacti == 6 || t->inacti == 5 ? 5 : 0, /* 6 read as 5; 1, 2 left
+                                                                           points out above (theory 3.7) */
                                   .ascalef = 1.0, .ascalev = 1.0, .fct_ld = RC_TYPE7_FUNCT_ID, .ascalex = x->len,
                                   .fscaleld = kc * x->len, .fscaleul = 1.0, .fscalev = 1.0, .loc = t->loc,
                                   .sensor_id = t->sensor_id, .name = x->name[k], .oneway = 1, .vis_crit = t->viss,
@@ -907,7 +1000,7 @@ rc_status rc_type7_contacts(rc_type7_case *x, rc_case *c, const rc_model *m, rc_
             t6->line_loc[5] = t->line_loc[4];
             made++;
         }
-        if (made == 0)
+        if (made == 0 && !left_out)
             RC_RAISE(err, RC_EINPUT,
                      RC_LOCFMT "card /INTER/TYPE7/%d, field grnd_IDs: every node of /GRNOD %d belongs to the body of "
                                "the main surface %d: expected secondary nodes of another body (or of none, fixed)",
@@ -961,5 +1054,13 @@ void rc_type7_end(rc_type7_case *x)
     free(x->bx);
     free(x->side);
     free(x->t24);
+    for (int i = 0; x->mseg && i < x->nt7; i++) {
+        free(x->mseg[i]);
+        free(x->mloc[i]);
+    }
+    free(x->mseg);
+    free(x->mloc);
+    free(x->mainsurf);
+    free(x->dropped);
     memset(x, 0, sizeof *x);
 }

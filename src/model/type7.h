@@ -51,19 +51,28 @@ typedef struct rc_type7_case {
                                 closed box mesh; TYPE11 through its /LINE/SURF), else 0 */
     int nbx;                 /* the boxes made (appended after the point surfaces) */
     rc_case_type24 *t24;     /* [ntype24] the cards of the copy, naming those boxes */
+    int *mainsurf;           /* [ntype7] the main surface of each card's contacts: surf_IDm, or (Inacti 2 with
+                                segments left out) the id of its copy without them; 0: none left */
+    int **mseg;              /* [ntype7] those copies' segment arrays (owned): 4 ids each, then ids, */
+    rc_loc **mloc;           /*           and their lines */
+    int *dropped;            /* [ntype7] what Inacti 1, 2 left out of each card (rc_t7_drop.n) */
+    int nt7;                 /* ntype7 (the arrays above) */
     double fx[2], fy[2];     /* the load curve: the line y = x through (0, 0), (1, 1) */
 } rc_type7_case;
 
 /* The copy of c with one point surface per TYPE7 card and body of its
- * secondary nodes, and the unit load curve; x->c is c itself when c has no
+ * secondary nodes (less those drop leaves out, Inacti 1; drop NULL: none),
+ * a copy of the main /SURF/SEG of each card whose Inacti 2 leaves segments
+ * out (without them), and the unit load curve; x->c is c itself when c has no
  * TYPE7 or TYPE24. RC_EINPUT for a group or surface that does not exist, a main
  * surface that is not a segment surface, a plane or a box, and (Istf 0)
  * main segments that are not shells with a Young's modulus and a
  * thickness. */
-rc_status rc_type7_begin(const rc_case *c, rc_type7_case *x, rc_error *err);
+rc_status rc_type7_begin(const rc_case *c, const rc_t7_drop *drop, rc_type7_case *x, rc_error *err);
 /* The contacts, appended to c->type6 (c: the case being compiled, the
  * copy of x->c or x->c itself) once the surfaces are compiled: one per
- * point surface whose body is not the main surface's. */
+ * point surface whose body is not the main surface's (none for a card
+ * whose Inacti 1 or 2 left no node or no main segment). */
 rc_status rc_type7_contacts(rc_type7_case *x, rc_case *c, const rc_model *m, rc_error *err);
 /* 1 when surface id sid is a TYPE7 point surface. */
 static inline int rc_type7_is_points(int sid) { return sid <= RC_TYPE7_SURF_ID0; }

@@ -520,7 +520,11 @@ TL('type7_ithe', T7H, 'field Ithe', before_end(T7(l1='         1         2      
 TL('type7_icurv', T7H, 'field Icurv', before_end(T7(l1=cols('         1         2         1', 81, 90, '1')), expect=2))
 TL('type7_itied', T7H, 'field ITIED', before_end(T7(l2=cols('', 61, 70, '1')), expect=3))
 TL('type7_ibc', T7H, 'field IBC', before_end(T7(l5='       111'), expect=6))
-TL('type7_inacti', T7H, 'field Inacti', before_end(T7(l5=cols('', 31, 40, '1')), expect=6))
+TL('type7_inacti', T7H, 'field Inacti', before_end(T7(l5=cols('', 31, 40, '3')), expect=6))
+# Inacti 2 on a plane that node 1 lies within the gap (Gapmin 0.2 m) of at
+# t = 0: no segments to leave out (found when the model is compiled)
+TL('type7_inacti_2_plane', T7H, 'field Inacti',
+   before_end(T7(l4=STOP('1e5', '', '0.2'), l5=cols('', 31, 40, '2')), expect=6))
 TL('type7_visf', T7H, 'field VISF', before_end(T7(l5=cols('', 61, 80, '0.5')), expect=6))
 TL('type7_ifric', T7H, 'field Ifric', before_end(T7(l6='         4'), expect=7))
 TL('type7_ifiltr', T7H, 'field Ifiltr', before_end(T7(l6='         0         1'), expect=7))
@@ -670,6 +674,7 @@ TL('type11_stfac_blank', T11H, 'field Stfac', before_end(T11(l3=STOP('', '0.3'))
 TL('type11_ibc', T11H, 'field IBC', before_end(T11(l4='       111'), expect=N + 5))
 TL('type11_visf', T11H, 'field VISF', before_end(T11(l4=cols('', 61, 80, '0.5')), expect=N + 5))
 TL('type11_inacti_moved', T11H, 'field Inacti', before_end(T11(l4=cols('', 31, 40, '3')), expect=N + 5))
+TL('type11_inacti_nodes', T11H, 'field Inacti', before_end(T11(l4=cols('', 31, 40, '1')), expect=N + 5))
 TL('type11_line_missing', T11H, 'field line_IDm', before_end(T11(l1='      9104      9199         1'), expect=N + 2))
 TL('type11_line_of_a_plane', T11H, 'field line_IDs', before_end(T11(), expect=N + 2))
 TL('type11_line_two_surfaces', T11H, 'field line_IDs',
@@ -695,6 +700,7 @@ TL('type19_ifric', T19H, 'field Ifric', before_end(T19(l6='         7'), expect=
 TL('type19_surface_plane', T19H, 'field surf_IDs', before_end(T19(), expect=2))
 TL('box_reach_overflow', SB, 'field a b c', at(SB, 4, 1, 20, '1e308'))
 TL('type19_iedge', T19H, 'field Iedge', before_end(T19(l1=cols('         2         4         1', 51, 60, '3')), expect=2))
+TL('type19_inacti_segments', T19H, 'field Inacti', before_end(T19(l5=cols('', 31, 40, '2')), expect=6))
 
 
 # ---- /PROP/TYPE8 (SPR_GENE) general springs: 19 data lines (line 1, then

@@ -57,5 +57,12 @@ rc_status rc_fast_select(rc_model *m, rc_error *err);
  * surfaces whose normals point away from the other surface are named as
  * such, with the IRS/IRm value that makes them face it. (start.c) */
 rc_status rc_start_check(const rc_case *c, rc_model *m, rc_error *err);
+/* /INTER/TYPE7 Inacti 1, 2 (inacti.c): the secondary nodes that penetrate
+ * the main surface at t = 0 (or the main segments they penetrate) found
+ * on the built model *m; when any, *m is replaced by the model built
+ * without them (rc_model_build_drop), carrying a notice per card (m->note).
+ * RC_EINPUT for Inacti 2 on a main surface that is not a /SURF/SEG when a
+ * node penetrates it. */
+rc_status rc_inacti_build(const rc_case *c, rc_model **m, rc_error *err);
 
 #endif

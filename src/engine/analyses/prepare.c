@@ -1,7 +1,8 @@
 /*
  * rc_model_compile: the model stage's rc_model_build (model/compile.c:
  * bodies, surfaces, interfaces, friction, couplings, imposed velocities,
- * state layout), then the two analyses that evaluate the kernels: the
+ * state layout; built again without the points that TYPE7 Inacti 1, 2
+ * leave out: inacti.c), then the two analyses that evaluate the kernels: the
  * scales and tolerances (scales.c) and the Jacobian pattern by probing
  * (jacpattern.c). Here, above both, so that src/model never calls the
  * engine.
@@ -66,8 +67,13 @@ rc_status rc_model_compile(const rc_case *c, rc_model **out, rc_error *err)
     if (!c) RC_RAISE(err, RC_EINPUT, "rc_model_compile: the case is NULL; expected one from rc_case_load");
     rc_progress_stage("building the model");
     rc_status st = rc_model_build(c, &m, err);
+    /* TYPE7 Inacti 1, 2: the points penetrating at t = 0 left out (inacti.c) */
+    if (!st) st = rc_inacti_build(c, &m, err);
     rc_progress_done();
-    if (st) return st;
+    if (st) {
+        rc_model_free(m);
+        return st;
+    }
     if (m->method == 3) { /* the static analysis: its scope (model/static_scope.c) */
         char how[400];
         snprintf(how, sizeof how, "chosen by /SOLVER Method 3 at %s:%d", c->solver.method_loc.file ? c->solver.method_loc.file : "?",

@@ -208,6 +208,15 @@ void rc_point_position(const rc_model *m, int i, int j, const double *y, double 
     seg_node_r(m, i, j, ya, yb, pl, &d, &dd, x, nb, NULL, NULL);
 }
 
+double rc_point_distance(const rc_model *m, int i, int j, const double *y, int *hints)
+{
+    const double *ya = rc_body_state(m, m->inter_ba[i], y), *yb = rc_body_state(m, m->inter_bb[i], y);
+    double pl[12], d, dd, x[3], nb[3];
+    if (m->inter_pair[i] == RC_PAIR_SEG_PLANE) plane_of_r(m, m->inter_sb[i], yb, pl, pl + 3, pl + 6, pl + 9);
+    seg_node_r(m, i, j, ya, yb, pl, &d, &dd, x, nb, NULL, hints);
+    return d;
+}
+
 /* The state of the reports kept (rc_data.repc): the caller compares once
  * and reads per interface. */
 int rc_report_cache_state(const rc_model *m, const rc_data *d, const double *y)

@@ -112,6 +112,14 @@ void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip,
  * where its force acts, global [m] (a node, or the middle of the closest
  * points of a pair of box edges). */
 void rc_point_position(const rc_model *m, int i, int j, const double *y, double x[3]);
+/* The same point's signed distance to the surface it meets at the state y,
+ * along that surface's outward normal [m], as the contact computes it (a
+ * node of a segments-segments pair that projects onto no segment within
+ * the search depth: Gap + depth). hints: NULL, or rc_seg_hint_len(m) ints,
+ * where the segment a node of surface s projects onto is written at
+ * [surf_nadr[s] + its index] (left as it was when none; the entry, when a
+ * segment of that surface, is tried first: set it to -1 before). */
+double rc_point_distance(const rc_model *m, int i, int j, const double *y, int *hints);
 /* The reports kept by the last rc_assemble_roots: 1 when y is, bit for bit,
  * the state of that evaluation (then rc_report_cache_get may be asked). */
 int rc_report_cache_state(const rc_model *m, const rc_data *d, const double *y);

@@ -949,6 +949,72 @@ out:
     rc_model_free(m);
 }
 
+/* ---- the recovery at zero force does not wait for a dissipation ---------- */
+/* The box of the test above without a damper (Visc 0), at rest on the
+ * Stiff line at zero force (F_h = 0), with the same deficit of P_e. At
+ * F_el <= 0 the recovery costs the law nothing, so it acts whatever the
+ * interface dissipates: at rest (nothing dissipates) and sliding at 1e-9
+ * m/s (its corners' stick dampers dissipate ~1e-18 W) the law's rate is the
+ * same, kappa (P - P_e) > 0. Gated on that dissipation, it jumped from 0 to
+ * kappa (P - P_e) where the friction's power crossed zero within a mode (a
+ * box sliding onto its floor: Newton failed at every try, CV_CONV_FAILURE
+ * with h = 8e-11 s). On the Stiff line carrying 1 N the recovery is paid:
+ * none at rest, without a damper. */
+static void test_pe_recovery_at_zero_force_needs_no_payment(void)
+{
+    static const char *deck =
+        "/BEGIN\nbox on a floor, Iform 2, no damper\n      2022         0\n"
+        "                  kg                   m                   s\n"
+        "                  kg                   m                   s\n"
+        "/NODE\n1,0,0,0.04\n"
+        "/RBODY/1\nbox\n1,,,,1,1\n0.002,0.002,0.002\n0,0,0\n"
+        "/SURF/BOX/1\nbox\n1\n0,0,0.04\n0.05,0.05,0.04\n"
+        "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
+        "/GRNOD/NODE/1\nbox\n1\n"
+        "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"
+        "/FUNCT/1\nlinear\n0,0\n1,1000000\n"
+        "/INTER/TYPE6/1\nbox on floor\n1,2\n0,0.5\n\n1,2\n0,,100000000\n\n"
+        "/RUN\n0.01,0.001\n/END\n";
+    rc_model *m = TU_COMPILE_OK(deck, "pe_zero_force_free.rad");
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    ENSURE(d && y && m->ninter == 1 && m->inter_peidx[0] >= 0 && m->inter_hidx[0] >= 0 && m->inter_perelax[0] > 0);
+    if (!d || !y) goto out;
+    rc_initial_state(m, y);
+    double *yb = y + m->body_yadr[0];
+    const double p = 1e-6;
+    yb[2] = 0.04 - p;
+    y[m->inter_eadr[0] + m->inter_peidx[0]] = 0.5 * p;
+    d->inter_mode[0] = RC_MODE_CLOSED;
+    d->inter_branch[0] = RC_BR_ELASTIC;
+    const double vx[2] = {0.0, 1e-9};
+    double vl[2], vl1 = NAN;
+    for (int k = 0; k < 2; k++) {
+        yb[7] = vx[k];
+        y[m->inter_eadr[0] + m->inter_hidx[0]] = 0.0; /* the Stiff line at zero force */
+        rc_inter_report r;
+        rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
+        vl[k] = r.vl;
+        printf("    Stiff line at 0 N, sliding at %g m/s: F_el %.3e N, law's rate %.9e m/s (kappa (P - P_e) %.9e)\n",
+               vx[k], r.fload, r.vl, m->inter_perelax[0] * 0.5 * p);
+        ENSURE(!(r.fload > 0));
+        if (k == 0) {
+            y[m->inter_eadr[0] + m->inter_hidx[0]] = 1.0; /* carrying 1 N, at rest: nothing pays */
+            rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
+            vl1 = r.vl;
+        }
+    }
+    printf("    Stiff line at 1 N, at rest: law's rate %.3e m/s\n", vl1);
+    ENSURE(vl[0] > 0 && fabs(vl[0] - m->inter_perelax[0] * 0.5 * p) <= 1e-9 * vl[0]);
+    ENSURE(fabs(vl[1] - vl[0]) <= 1e-9 * vl[0]); /* continuous across the dissipation's zero */
+    ENSURE(fabs(vl1) < 1e-15);                   /* paid on a loaded line: nothing pays at rest */
+out:
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 /* ---- a falling limit: the slip goes on until the spring outruns it ---- */
 /* A ball (1 kg, R = 0.05 m) pressed into a floor by p = 1e-5 m (linear law
  * 1e6 N/m: F_n = 10 N), Fric 0.3 (limit 3 N), stick stiffness Stiff 1e7
@@ -1424,6 +1490,7 @@ void suite_passive(void)
     RUN_TEST(test_landing_band_kept_through_flips);
     RUN_TEST(test_power_rdf_root_on_damping_rate);
     RUN_TEST(test_pe_no_recovery_at_zero_force);
+    RUN_TEST(test_pe_recovery_at_zero_force_needs_no_payment);
     RUN_TEST(test_elastic_damped_release_ledger);
     RUN_TEST(test_box_sliding_start_at_every_rtol);
     RUN_TEST(test_contact_records_bounded);

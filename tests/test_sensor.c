@@ -7,6 +7,7 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "base/error.h"
@@ -431,6 +432,264 @@ static void test_sensor_release(void)
                          "static analysis");
 }
 
+
+/* Ball A (/RBODY/1, 1.3 kg, radius 0.05 m, centre at z = 0.15 m) falls
+ * onto a floor, /INTER/TYPE6/1 (linear, k = 1e6 N/m, no damping or
+ * friction); body B (/RBODY/2, 2 kg, no surface) is held at z = 1 m until
+ * /SENSOR/INTER/5 (Tdelay `td`, line 2 `line2`) turns it on; `cards`
+ * before /RUN; /BEGIN version `ver`. */
+static const char *inter_deck_u(int ver, const char *units, double td, const char *line2, const char *cards)
+{
+    static char text[4096];
+    snprintf(text, sizeof text,
+             "/BEGIN\ninterface sensor\n%10d         0\n%s\n\n"
+             "/NODE\n1,0,0,0.15\n2,1,0,1\n"
+             "/RBODY/1\nA\n         1         0                              1.3\n0.0017,0.0017,0.0017\n0,0,0\n"
+             "/RBODY/2\nB\n         2         5                                       2\n0.002,0.002,0.002\n0,0,0\n"
+             "/SURF/ELLIPS/2\nball\n0,2,1\n0,0,0.15\n0.05,0.05,0.05\n/SURF/PLANE/3\nfloor\n0,0,0\n0,0,1\n"
+             "/FUNCT/1\nlinear\n0,0\n1,1e6\n"
+             "/INTER/TYPE6/1\nball on floor\n         2         3          \n\n\n1,0,1,1\n\n\n"
+             "/SENSOR/INTER/5\ncontact\n%20.12g\n%s\n%s"
+             "/GRAV/1\ng\n         0         Z         0         0         0                           1.0               -9.81\n"
+             "/RUN\n0.3,0.01\n/END\n",
+             ver, units, td, line2, cards);
+    return text;
+}
+
+static const char *inter_deck(int ver, double td, const char *line2, const char *cards)
+{
+    return inter_deck_u(ver, "", td, line2, cards);
+}
+
+/* The card in the layouts: int_ID alone before 11.0, DIR Fmin Fmax Tmin
+ * from 11.0, Fcut from 14.0; FN and the force in the deck's units. */
+static void test_sensor_inter_read(void)
+{
+    const struct {
+        int ver;
+        const char *line2;
+        int dir;
+        double fmax;
+    } cs[] = {{2022, "         1", 0, 0.0},
+              {2022, "         1        FN                   0                2000", 1, 2000.0},
+              {2026, "         1        fn                                    1500                   0                   0", 1, 1500.0},
+              {110, "         1        FN                   0                 300                   0", 1, 300.0},
+              {100, "         1", 0, 0.0}};
+    for (int k = 0; k < 5; k++) {
+        rc_case *c = NULL;
+        rc_error e;
+        rc_error_clear(&e);
+        ENSURE(rc_case_load(tu_tmp_write("inter_read.rad", inter_deck(cs[k].ver, 0.25, cs[k].line2, "")), &c, &e) ==
+               RC_OK);
+        if (!c) fprintf(stderr, "  case %d: %s\n", k, e.msg);
+        if (c) {
+            ENSURE(c->nsensor == 1);
+            const rc_case_sensor *s = &c->sensor[0];
+            ENSURE(s->id == 5 && s->kind == RC_SENS_INTER && s->inter_id == 1 && s->dir == cs[k].dir);
+            ENSURE(s->fmax == cs[k].fmax && s->tdelay == 0.25);
+            ENSURE(s->line2_loc.line == s->line_loc.line + 1);
+        }
+        rc_case_free(c);
+    }
+    /* input in kg, mm, ms: a force unit of 1 kN, Fmax 2 is 2000 N */
+    rc_case *c = NULL;
+    rc_error e;
+    rc_error_clear(&e);
+    ENSURE(rc_case_load(tu_tmp_write("inter_kn.rad",
+                                     inter_deck_u(2022, "                  kg                  mm                  ms",
+                                                  0, "         1        FN                   0                   2", "")),
+                        &c, &e) == RC_OK);
+    if (!c) fprintf(stderr, "  %s\n", e.msg);
+    if (c) ENSURE_NEAR(c->sensor[0].fmax, 2000.0, 1e-9, 0);
+    rc_case_free(c);
+}
+
+/* The refusals: each names the file's line, the card and the field. */
+static void test_sensor_inter_errors(void)
+{
+    const char *d = "inter_err.rad";
+    TU_EXPECT_TEXT_ERROR(inter_deck(2022, 0, "         7", ""), d, "inter_err.rad:", "card /SENSOR/INTER/5",
+                         "field int_ID", "got 7 (no such interface)");
+    TU_EXPECT_TEXT_ERROR(inter_deck(2022, 0, "         0", ""), d, "card /SENSOR/INTER/5", "field int_ID");
+    TU_EXPECT_TEXT_ERROR(inter_deck(2022, 0, "         1        TF                   0                  10", ""), d,
+                         "card /SENSOR/INTER/5", "field DIR", "tangential", "not supported yet");
+    TU_EXPECT_TEXT_ERROR(inter_deck(2022, 0, "         1        XY", ""), d, "card /SENSOR/INTER/5", "field DIR",
+                         "expected blank");
+    TU_EXPECT_TEXT_ERROR(inter_deck(2022, 0, "         1        FN                  20                  10", ""), d,
+                         "card /SENSOR/INTER/5", "field Fmin", "Fmin < Fmax");
+    TU_EXPECT_TEXT_ERROR(inter_deck(2022, 0, "         1        FN                  20                   0", ""), d,
+                         "card /SENSOR/INTER/5", "field Fmin", "not supported yet");
+    TU_EXPECT_TEXT_ERROR(inter_deck(2022, 0, "         1                             0                  10", ""), d,
+                         "card /SENSOR/INTER/5", "field Fmax", "DIR blank", "DIR FN");
+    TU_EXPECT_TEXT_ERROR(inter_deck(2022, 0, "         1        FN                   0                 -10", ""), d,
+                         "card /SENSOR/INTER/5", "field Fmax");
+    TU_EXPECT_TEXT_ERROR(inter_deck(2022, -1, "         1", ""), d, "card /SENSOR/INTER/5", "field Tdelay");
+    TU_EXPECT_TEXT_ERROR(inter_deck(2022, 0, "         1        FN                   0                  10              0.001", ""),
+                         d, "card /SENSOR/INTER/5", "field Tmin", "not supported yet");
+    TU_EXPECT_TEXT_ERROR(inter_deck(2022, 0,
+                                    "         1        FN                   0                  10                   0"
+                                    "                 100",
+                                    ""),
+                         d, "card /SENSOR/INTER/5", "field Fcut", "not supported yet");
+    /* an interface only this sensor turns on: it would never trigger */
+    TU_EXPECT_TEXT_ERROR(edit_deck(inter_deck(2022, 0, "         1", ""), "", "         2         3          \n",
+                                   "         2         3         5\n"),
+                         d, "card /SENSOR/INTER/5", "field int_ID", "turned on by this sensor itself");
+    /* a NOT of it naming the held body: it turns off again */
+    TU_EXPECT_TEXT_ERROR(edit_deck(inter_deck(2022, 0, "         1", "/SENSOR/NOT/6\nnot\n\n         5\n"), "",
+                                   "         2         5              ", "         2         6              "),
+                         d, "/RBODY/2", "field sens_ID", "turns off again");
+    /* static analysis: a body released by it is refused */
+    TU_EXPECT_TEXT_ERROR(inter_deck(2022, 0, "         1", "/SOLVER\n3\n"), d, "/RBODY/2",
+                         "field sens_ID", "static analysis");
+}
+
+/* The first contact releases B: the sensor triggers at the contact's
+ * closing, t_c = sqrt(2 h / g), h = 0.1 m; B is free from t_c + Tdelay
+ * and falls g (t_end - t_rel)^2 / 2 by t_end = 0.3 s. With FN and Fmax:
+ * the linear contact's force k p(tau) = Fmax, p(tau) = A (1 - cos w tau)
+ * + B sin w tau (A = g / w^2, B = v_c / w, w^2 = k / m). */
+static void test_sensor_inter_run(void)
+{
+    const double g = 9.81, tc = sqrt(2 * 0.1 / g), k = 1e6, mass = 1.3, w = sqrt(k / mass);
+    const double A = g / (w * w), B = g * tc / w, R = sqrt(A * A + B * B), phi = atan2(A, B);
+    const double fmax = 1000.0, tf = tc + (asin((fmax / k - A) / R) + phi) / w;
+    const struct {
+        const char *line2;
+        double td, ttrig;
+    } cs[] = {{"         1", 0.0, tc},
+              {"         1", 0.05, tc},
+              {"         1        FN                   0                   0", 0.0, tc},
+              {"         1        FN                   0                1000", 0.0, tf},
+              {"         1        FN                   0                1000", 0.02, tf}};
+    for (int c = 0; c < 5; c++) {
+        rc_model *m = TU_COMPILE_OK(inter_deck(2022, cs[c].td, cs[c].line2, ""), "inter_run.rad");
+        if (!m) continue;
+        ENSURE(m->nsens == 1 && m->sens_kind[0] == RC_SENS_INTER && m->sens_inter[0] == 1 && m->sens_hold[0] == 1);
+        static tu_evlog ev;
+        memset(&ev, 0, sizeof ev);
+        rc_error e;
+        rc_error_clear(&e);
+        double *y = calloc((size_t)m->ny + 1, sizeof *y);
+        rc_run_options o = {.on_event = tu_evlog_event, .user = &ev, .y_end = y};
+        ENSURE(rc_run(m, &o, NULL, &e) == RC_OK);
+        double t = -1, tcl = -1, v[3] = {0};
+        ENSURE(ev_first(&ev, "contact_close", &tcl, NULL) >= 1);
+        ENSURE_NEAR(tcl, tc, 1e-10, 0);
+        ENSURE(ev_first(&ev, "sensor_trigger", &t, v) == 1);
+        if (t < 0) fprintf(stderr, "  case %d: no trigger\n", c);
+        ENSURE_NEAR(t, cs[c].ttrig, 1e-9, 0);
+        ENSURE(isnan(v[0])); /* not an interface */
+        for (int j = 0; j < ev.n && j < TU_MAXEV; j++)
+            if (!strcmp(ev.kind[j], "sensor_trigger")) ENSURE(!strcmp(ev.elem[j], "/SENSOR/INTER/5"));
+        double trel = -1;
+        ENSURE(ev_first(&ev, "impvel_stop", &trel, NULL) == 1);
+        ENSURE_NEAR(trel, cs[c].ttrig + cs[c].td, 1e-9, 0);
+        /* B's free fall from rest at the release */
+        const int a = m->body_yadr[1];
+        if (a >= 0) {
+            const double drop = m->body_y0[RC_NB * 1 + 2] - y[a + 2], want = 0.5 * g * pow(0.3 - trel, 2);
+            ENSURE_NEAR(drop, want, 1e-6, 1e-6);
+            ENSURE_NEAR(y[a + 9], -g * (0.3 - trel), 1e-6, 1e-6);
+        }
+        free(y);
+        rc_model_free(m);
+    }
+    /* as an input of an AND with a time sensor at 0.2 s: the later */
+    rc_model *m = TU_COMPILE_OK(edit_deck(inter_deck(2022, 0, "         1",
+                                                     "/SENSOR/TIME/6\nt\n0.2\n/SENSOR/AND/7\nboth\n0.01\n         5         6\n"),
+                                          "", "         2         5              ", "         2         7              "),
+                                "inter_and.rad");
+    if (m) {
+        static tu_evlog ev;
+        memset(&ev, 0, sizeof ev);
+        rc_error e;
+        rc_error_clear(&e);
+        rc_run_options o = {.on_event = tu_evlog_event, .user = &ev};
+        ENSURE(rc_run(m, &o, NULL, &e) == RC_OK);
+        double t = -1, trel = -1;
+        ENSURE(ev_first(&ev, "sensor_trigger", &t, NULL) == 1);
+        ENSURE_NEAR(t, tc, 1e-9, 0);
+        ENSURE(ev_first(&ev, "impvel_stop", &trel, NULL) == 1);
+        ENSURE_NEAR(trel, 0.21, 1e-12, 0);
+    }
+    rc_model_free(m);
+}
+
+/* The sensor on other interfaces and states: an /INTER/POWER (ball A
+ * falling onto the fixed ball B, K = 1e7, m1 = 1.5) releasing body C at
+ * their meeting sqrt(2 (z0 - R_A - R_B) / g); a contact already closed at
+ * t = 0 (A penetrating the floor) triggering at t = 0; a NOT of it naming
+ * an interface: refused (it would turn the interface off at a time found
+ * in the run). */
+static void test_sensor_inter_kinds(void)
+{
+    const double g = 9.81, tc = sqrt(2 * 0.9 / g);
+    static const char power[] =
+        "/BEGIN\npower contact sensor\n      2022         0\n\n\n"
+        "/NODE\n1,0,0,1\n2,0,0,0\n3,1,0,1\n"
+        "/RBODY/1\nA\n         1                                                 1         1\n0.001,0.001,0.001\n0,0,0\n"
+        "/RBODY/2\nB\n         2                                                 1         2\n0.001,0.001,0.001\n0,0,0\n"
+        "/RBODY/3\nC\n         3         6                                       2         3\n0.002,0.002,0.002\n0,0,0\n"
+        "/GRNOD/NODE/1\nA\n1\n/GRNOD/NODE/2\nB\n2\n/GRNOD/NODE/3\nC\n3\n/BCS/1\nB fixed\n   111 111         0         2\n"
+        "/SURF/ELLIPS/1\nA\n0,2,1\n0,0,1\n0.05,0.05,0.05\n/SURF/ELLIPS/2\nB\n0,2,2\n0,0,0\n0.05,0.05,0.05\n"
+        "/SENSOR/INTER/6\nA on B\n\n         4\n"
+        "/INTER/POWER/4\nA on B\n         1         2         0         0         0         0         0\n"
+        "            10000000                 1.5\n\n\n"
+        "/GRAV/1\ng\n         0         Z         0         0         0                             1               -9.81\n"
+        "/RUN\n0.6,0.01\n/END\n";
+    rc_model *m = TU_COMPILE_OK(power, "inter_power.rad");
+    if (m) {
+        ENSURE(m->nsens == 1 && m->sens_inter[0] == 4 && m->sens_hold[0] == 1);
+        static tu_evlog ev;
+        memset(&ev, 0, sizeof ev);
+        rc_error e;
+        rc_error_clear(&e);
+        rc_run_options o = {.on_event = tu_evlog_event, .user = &ev};
+        ENSURE(rc_run(m, &o, NULL, &e) == RC_OK);
+        double t = -1, tcl = -1, trel = -1;
+        ENSURE(ev_first(&ev, "contact_close", &tcl, NULL) >= 1);
+        ENSURE(ev_first(&ev, "sensor_trigger", &t, NULL) == 1);
+        ENSURE_NEAR(t, tc, 1e-9, 0);
+        ENSURE(t == tcl);
+        ENSURE(ev_first(&ev, "impvel_stop", &trel, NULL) == 1 && trel == t);
+    }
+    rc_model_free(m);
+    /* closed at the start: A's centre 0.04999 m above the floor (R = 0.05 m) */
+    static char pen[4096];
+    snprintf(pen, sizeof pen, "%s", inter_deck(2022, 0, "         1", ""));
+    for (int k = 0; k < 2; k++) {
+        char *w = strstr(pen, "0,0,0.15\n"), tail[4096];
+        if (!w) break;
+        snprintf(tail, sizeof tail, "%s", w + strlen("0,0,0.15"));
+        snprintf(w, sizeof pen - (size_t)(w - pen), "0,0,0.04999%s", tail);
+    }
+    m = TU_COMPILE_OK(pen, "inter_pen.rad");
+    if (m) {
+        static tu_evlog ev;
+        memset(&ev, 0, sizeof ev);
+        rc_error e;
+        rc_error_clear(&e);
+        double *y = calloc((size_t)m->ny + 1, sizeof *y);
+        rc_run_options o = {.on_event = tu_evlog_event, .user = &ev, .y_end = y};
+        ENSURE(rc_run(m, &o, NULL, &e) == RC_OK);
+        double t = -1, trel = -1;
+        ENSURE(ev_first(&ev, "sensor_trigger", &t, NULL) == 1 && t == 0.0);
+        ENSURE(ev_first(&ev, "impvel_stop", &trel, NULL) == 1 && trel == 0.0);
+        const int a = m->body_yadr[1];
+        if (a >= 0 && y) ENSURE_NEAR(m->body_y0[RC_NB * 1 + 2] - y[a + 2], 0.5 * g * 0.3 * 0.3, 1e-7, 1e-7);
+        free(y);
+    }
+    rc_model_free(m);
+    /* a NOT of it naming an interface */
+    TU_EXPECT_TEXT_ERROR(edit_deck(inter_deck(2022, 0, "         1",
+                                              "/SENSOR/NOT/6\nnot\n\n         5\n/SURF/PLANE/7\nwall\n2,0,0\n-1,0,0\n"
+                                              "/INTER/TYPE6/8\nball on wall\n         2         7         6\n\n\n1,0,1,1\n\n\n"),
+                                   "", "         2         5              ", "         2         0              "),
+                         "inter_not.rad", "/INTER/TYPE6/8", "field Isensor", "/SENSOR/NOT/6",
+                         "distance or interface sensor");
+}
+
 void suite_sensor(void);
 void suite_sensor(void)
 {
@@ -441,4 +700,8 @@ void suite_sensor(void)
     RUN_TEST(test_sensor_logic);
     RUN_TEST(test_sensor_not);
     RUN_TEST(test_sensor_release);
+    RUN_TEST(test_sensor_inter_read);
+    RUN_TEST(test_sensor_inter_errors);
+    RUN_TEST(test_sensor_inter_run);
+    RUN_TEST(test_sensor_inter_kinds);
 }

@@ -103,6 +103,14 @@ class Deck:
         """/SENSOR/AND or /SENSOR/OR (kind): on Tdelay [s] after both (either) of sensors s1, s2 are on."""
         self.add(f"/SENSOR/{kind}/{sid}", line(("r", tdelay)), line(("i", s1), ("i", s2)), title=title)
 
+    def sensor_inter(self, sid, int_id, direction=None, fmin=None, fmax=None, tmin=None, fcut=None, tdelay=None,
+                     title="interface sensor"):
+        """/SENSOR/INTER: on Tdelay [s] after the contact of interface int_id closes (direction None:
+        DIR blank), or after its normal force rises above Fmax [N] (direction "FN"); Radioss's
+        line 2: int_ID (10) DIR (10, text) Fmin Fmax Tmin Fcut (20 each)."""
+        l2 = (i10(int_id) + f"{direction or '':>10s}" + r20(fmin) + r20(fmax) + r20(tmin) + r20(fcut)).rstrip()
+        self.add(f"/SENSOR/INTER/{sid}", line(("r", tdelay)), l2, title=title)
+
     def sensor_not(self, sid, s1, tdelay=None, title="NOT sensor"):
         """/SENSOR/NOT: on from Tdelay [s] while sensor s1 is off."""
         self.add(f"/SENSOR/NOT/{sid}", line(("r", tdelay)), line(("i", s1)), title=title)

@@ -13,6 +13,7 @@
  *   cards_joints.c      /JOINT/SPHERICAL /JOINT/REVOLUTE /JOINT/DISTANCE /JOINT/FIXED /JOINT/PRISMATIC
  *   cards_rwall.c       /RWALL/PLANE /RWALL/CYL /RWALL/SPHER /RWALL/PARAL /SENSOR/TIME
  *                       /SENSOR/DIST /SENSOR/AND /SENSOR/OR /SENSOR/NOT
+ *                       /SENSOR/INTER
  *   cards_loads.c       /FUNCT /INIVEL /GRAV /BCS /IMPVEL
  *   cards_run.c         /BEGIN /RUN /SOLVER, deck-level defaults and checks
  */
@@ -66,7 +67,7 @@ static const struct {
     {"RWALL", "SPHER", RC_CARD_RWALL},     {"RWALL", "PARAL", RC_CARD_RWALL},
     {"SENSOR", "TIME", RC_CARD_SENSOR},    {"SENSOR", "DIST", RC_CARD_SENSOR},
     {"SENSOR", "AND", RC_CARD_SENSOR},     {"SENSOR", "OR", RC_CARD_SENSOR},
-    {"SENSOR", "NOT", RC_CARD_SENSOR},
+    {"SENSOR", "NOT", RC_CARD_SENSOR},     {"SENSOR", "INTER", RC_CARD_SENSOR},
 };
 
 /* Radioss cards without meaning for rigid bodies: skipped with a warning. */

@@ -126,19 +126,75 @@ rc_status rc_card_rwall(rc_reader *rd, const rc_block *b)
     return rc_note_id(rd, RC_IDK_RWALL, w->id, &w->loc, b->hdr->text);
 }
 
+/* Line 2 of /SENSOR/INTER: int_ID (all layouts), DIR Fmin Fmax Tmin (11.0
+ * on), Fcut (14.0 on). DIR blank: the contact closing triggers (no force
+ * bound); FN: the normal force rising above Fmax (Fmax 0: the contact
+ * closing); TF, Fmin, Tmin and Fcut: not supported yet. Whether int_ID
+ * names an interface: the compiler (model/sensor.c). */
+static rc_status sensor_inter_line(rc_reader *rd, const rc_block *b, rc_case_sensor *s)
+{
+    char dir[16] = "";
+    double fmin = 0.0, tmin = 0.0, fcut = 0.0;
+    rc_field g[] = {RC_F_INT("int_ID", &s->inter_id, 0, RC_FF_POS),
+                    RC_F_STR("DIR", dir, 10),
+                    RC_F_REALD("Fmin", &fmin, 0, RC_FF_NONNEG, RC_D_F),
+                    RC_F_REALD("Fmax", &s->fmax, 0, RC_FF_NONNEG, RC_D_F),
+                    RC_F_REALD("Tmin", &tmin, 0, RC_FF_NONNEG | RC_FF_ONLY0, RC_D_T),
+                    RC_F_REALD("Fcut", &fcut, 0, RC_FF_NONNEG | RC_FF_ONLY0, RC_D_W)};
+    g[4].note = "(a minimum duration of the force criterion before the sensor triggers)";
+    g[5].note = "(a filter of the contact force)";
+    const int v = rc_layout_version(rd), nf = v >= 140 ? 6 : v >= 110 ? 5 : 1;
+    s->line2_loc = b->lines[2].loc;
+    rc_status st = rc_parse_line(rd, b, &b->lines[2], g, nf);
+    if (st) return st;
+    /* DIR: blank, FN or TF, either case */
+    for (char *p = dir; *p; p++)
+        if (*p >= 'a' && *p <= 'z') *p = (char)(*p - 'a' + 'A');
+    if (dir[0] && strcmp(dir, "FN") != 0 && strcmp(dir, "TF") != 0)
+        return rc_case_fail(rd, &b->lines[2].loc, b->name, "DIR",
+                            "expected blank (the first contact), FN (the normal force) or TF (the tangential force), "
+                            "got %s",
+                            g[1].got);
+    if (strcmp(dir, "TF") == 0)
+        return rc_case_fail(rd, &b->lines[2].loc, b->name, "DIR",
+                            "expected blank or FN, got TF: a sensor on the tangential (friction) force is not "
+                            "supported yet");
+    s->dir = dir[0] ? 1 : 0;
+    if (fmin > 0 && s->fmax > 0 && fmin >= s->fmax)
+        return rc_case_fail(rd, &b->lines[2].loc, b->name, "Fmin",
+                            "expected Fmin < Fmax, got Fmin %s and Fmax %s [force]", g[2].got, g[3].got);
+    if (!s->dir && (fmin > 0 || s->fmax > 0))
+        return rc_case_fail(rd, &b->lines[2].loc, b->name, fmin > 0 ? "Fmin" : "Fmax",
+                            "expected 0 with DIR blank (the sensor triggers at the first contact, without a force "
+                            "bound), got %s; expected DIR FN for a bound on the normal force",
+                            fmin > 0 ? g[2].got : g[3].got);
+    if (fmin > 0)
+        return rc_case_fail(rd, &b->lines[2].loc, b->name, "Fmin",
+                            "expected 0, got %s: a sensor triggered by the normal force falling below Fmin is not "
+                            "supported yet; expected Fmax (the force rising above it) or the first contact",
+                            g[2].got);
+    return RC_OK;
+}
+
 /* /SENSOR/TIME/sens_ID[/unit_ID]: title; Tdelay (the sensor is on from
  * t = Tdelay). /SENSOR/DIST/sens_ID[/unit_ID]: title; Tdelay; node_ID1
  * node_ID2 Dmin Dmax [Tmin Dflag from 2022: 0 only] (the sensor is on
  * Tdelay after the nodes' distance leaves [Dmin, Dmax]). /SENSOR/AND and
  * /SENSOR/OR: title; Tdelay; sens_ID1 sens_ID2. /SENSOR/NOT: title;
- * Tdelay; sens_ID1 (on from Tdelay while sens_ID1 is off). The /RBODY and
- * interfaces naming a sensor: the compiler (model/sensor.c). */
+ * Tdelay; sens_ID1 (on from Tdelay while sens_ID1 is off).
+ * /SENSOR/INTER: title; Tdelay; int_ID [DIR Fmin Fmax Tmin from 11.0; Fcut
+ * from 14.0] (on Tdelay after the contact of interface int_ID closes, DIR
+ * blank, or after its normal force rises above Fmax, DIR FN; Fmin, Tmin,
+ * Fcut 0 only and DIR TF refused: not supported yet). The /RBODY and
+ * interfaces naming a sensor, and the interface a /SENSOR/INTER names: the
+ * compiler (model/sensor.c). */
 rc_status rc_card_sensor_time(rc_reader *rd, const rc_block *b)
 {
     rc_case *c = rd->c;
     const int dist = strcmp(b->kw[1], "DIST") == 0, is_and = strcmp(b->kw[1], "AND") == 0,
-              is_or = strcmp(b->kw[1], "OR") == 0, is_not = strcmp(b->kw[1], "NOT") == 0;
-    const int two = dist || is_and || is_or || is_not; /* a second line */
+              is_or = strcmp(b->kw[1], "OR") == 0, is_not = strcmp(b->kw[1], "NOT") == 0,
+              inter = strcmp(b->kw[1], "INTER") == 0;
+    const int two = dist || is_and || is_or || is_not || inter; /* a second line */
     int nd;
     rc_status st;
     char usage[40];
@@ -147,10 +203,16 @@ rc_status rc_card_sensor_time(rc_reader *rd, const rc_block *b)
     RC_GROW(rd, c->sensor, rd->capsensor, c->nsensor);
     rc_case_sensor *s = &c->sensor[c->nsensor++];
     s->id = b->id;
-    s->kind = dist ? RC_SENS_DIST : is_and ? RC_SENS_AND : is_or ? RC_SENS_OR : is_not ? RC_SENS_NOT : RC_SENS_TIME;
+    s->kind = dist     ? RC_SENS_DIST
+              : is_and ? RC_SENS_AND
+              : is_or  ? RC_SENS_OR
+              : is_not ? RC_SENS_NOT
+              : inter  ? RC_SENS_INTER
+                       : RC_SENS_TIME;
     s->loc = s->line_loc = s->line2_loc = b->hdr->loc;
     if ((st = rc_card_lines(rd, b, s->title, two ? 2 : 1, two ? 2 : 1,
                             dist     ? "Tdelay, node_ID1 node_ID2 Dmin Dmax"
+                            : inter  ? "Tdelay, int_ID DIR Fmin Fmax Tmin Fcut"
                             : is_not ? "Tdelay, sens_ID1"
                             : two    ? "Tdelay, sens_ID1 sens_ID2"
                                      : "Tdelay",
@@ -196,5 +258,6 @@ rc_status rc_card_sensor_time(rc_reader *rd, const rc_block *b)
             return rc_case_fail(rd, &b->lines[2].loc, b->name, "Dmin",
                                 "expected Dmin < Dmax, got Dmin %s and Dmax %s [length]", g[2].got, g[3].got);
     }
+    if (inter && (st = sensor_inter_line(rd, b, s))) return st;
     return rc_note_id(rd, RC_IDK_SENSOR, s->id, &s->loc, b->hdr->text);
 }

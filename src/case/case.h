@@ -228,8 +228,17 @@ typedef struct rc_case_type24 {
  * later (for good: latched). /SENSOR/AND and /SENSOR/OR: on Tdelay after
  * both (either) of two other sensors are on. /SENSOR/NOT: on from Tdelay
  * while its input is off (off for good once the input is on); in[1] repeats
- * in[0]. */
-typedef enum { RC_SENS_TIME = 0, RC_SENS_DIST = 1, RC_SENS_AND = 2, RC_SENS_OR = 3, RC_SENS_NOT = 4 } rc_case_sensor_kind;
+ * in[0]. /SENSOR/INTER: triggers when the contact of interface int_ID
+ * closes (DIR blank, or FN with Fmax 0), or when its total normal force
+ * rises above Fmax (DIR FN), and is on Tdelay later (latched). */
+typedef enum {
+    RC_SENS_TIME = 0,
+    RC_SENS_DIST = 1,
+    RC_SENS_AND = 2,
+    RC_SENS_OR = 3,
+    RC_SENS_NOT = 4,
+    RC_SENS_INTER = 5
+} rc_case_sensor_kind;
 
 typedef struct rc_case_sensor {
     int id;
@@ -239,9 +248,12 @@ typedef struct rc_case_sensor {
     int node[2];          /* DIST: node_ID1, node_ID2 */
     double dmin, dmax;    /* DIST: [m], 0: no such bound */
     int in[2];            /* AND, OR: sens_ID1, sens_ID2; NOT: sens_ID1 twice */
+    int inter_id;         /* INTER: int_ID (an /INTER card's id) */
+    int dir;              /* INTER: 0 DIR blank (the contact closes), 1 FN (normal force) */
+    double fmax;          /* INTER FN: [N], 0: the contact closing is the trigger */
     rc_loc loc;
     rc_loc line_loc;      /* the (first) data line */
-    rc_loc line2_loc;     /* DIST: the nodes' line */
+    rc_loc line2_loc;     /* DIST: the nodes' line; AND, OR, NOT, INTER: line 2 */
 } rc_case_sensor;
 
 /* /RWALL/PLANE, /RWALL/CYL, /RWALL/SPHER, /RWALL/PARAL (cards_rwall.c): a

@@ -232,19 +232,27 @@ struct rc_model {
      * into the Tstart of what they activate), nor logic sensors (kinds 2,
      * 3, 4: their time on follows their inputs', engine/assembly/sensors.c);
      * a sensor found in the run that releases a held body (sens_hold) has
-     * its release root in its first slot once its time on is known */
+     * its release root in its first slot once its time on is known; an
+     * interface sensor (kind 5) watches the interfaces of one /INTER card:
+     * its contact closing (an event of the interfaces, events.c), or its
+     * total normal force through a root function in its first slot
+     * (F_n - Fmax, rising through 0) until it triggers */
     int nsens;
     int *sens_id;        /* [nsens] sens_ID */
-    int *sens_kind;      /* [nsens] rc_case_sensor_kind (0 TIME, 1 DIST, 2 AND, 3 OR, 4 NOT) */
+    int *sens_kind;      /* [nsens] rc_case_sensor_kind (0 TIME, 1 DIST, 2 AND, 3 OR, 4 NOT, 5 INTER) */
     int *sens_in;        /* [2*nsens] AND, OR: the input sensors' indices; NOT: its input (-1: none) */
     int *sens_hold;      /* [nsens] 1: the sensor's time on is found in the run and
                             releases a held body (/RBODY sens_ID; imposed.h tsens) */
     double *sens_tdelay; /* [nsens] [s] */
     int *sens_body;      /* [2*nsens] the points' bodies (-1: fixed in space) */
     double *sens_p;      /* [6*nsens] the points in their bodies' frames [m] */
-    double *sens_d;      /* [2*nsens] Dmin, Dmax [m] (0: no such bound) */
-    int *inter_sens;     /* [ninter] the sensor found in the run (a distance sensor, or a logic
-                            sensor of one) that turns interface i on, -1: none */
+    double *sens_d;      /* [2*nsens] DIST: Dmin, Dmax [m] (0: no such bound); INTER:
+                            0, Fmax [N] (0: the contact closing triggers) */
+    int *sens_inter;     /* [nsens] INTER: the id of the /INTER card whose interfaces
+                            (inter_id) it watches; 0: not an interface sensor */
+    int *inter_sens;     /* [ninter] the sensor found in the run (a distance or interface
+                            sensor, or a logic sensor of one) that turns interface i
+                            on, -1: none */
 
     /* analytic surfaces */
     int nsurf;

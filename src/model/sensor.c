@@ -26,16 +26,22 @@
 #include "case/case_power.h"
 #include "model/sensor.h"
 
-static const char *const kind_name[] = {"TIME", "DIST", "AND", "OR", "NOT"};
+static const char *const kind_name[] = {"TIME", "DIST", "AND", "OR", "NOT", "INTER"};
+
+const char *rc_sensor_kind_name(int kind)
+{
+    return kind >= 0 && kind < (int)(sizeof kind_name / sizeof kind_name[0]) ? kind_name[kind] : "?";
+}
 
 static int is_logic(rc_case_sensor_kind k) { return k == RC_SENS_AND || k == RC_SENS_OR || k == RC_SENS_NOT; }
 
-/* Is sensor k's time on found in the run (a distance sensor, or a logic
- * sensor of one)? (The inputs exist and form no cycle: check_logic.) */
+/* Is sensor k's time on found in the run (a distance or interface sensor,
+ * or a logic sensor of one)? (The inputs exist and form no cycle:
+ * check_logic.) */
 static int runtime(const rc_case *c, int k)
 {
     const rc_case_sensor *s = &c->sensor[k];
-    if (s->kind == RC_SENS_DIST) return 1;
+    if (s->kind == RC_SENS_DIST || s->kind == RC_SENS_INTER) return 1;
     if (s->kind == RC_SENS_TIME) return 0;
     return runtime(c, rc_case_find_sensor(c, s->in[0])) || runtime(c, rc_case_find_sensor(c, s->in[1]));
 }
@@ -167,7 +173,7 @@ rc_status rc_sensor_tstart(const rc_case *c, int sensor_id, rc_loc loc, const ch
         if (has_not(c, k))
             RC_RAISE(err, RC_EINPUT,
                      RC_LOCFMT "card %s, field Isensor: /SENSOR/%s/%d depends on a /SENSOR/NOT of a sensor found in "
-                     "the run (a distance sensor): it turns off again at a time found in the run, which an interface "
+                     "the run (a distance or interface sensor): it turns off again at a time found in the run, which an interface "
                      "is not supported yet to follow; expected a sensor that turns on for good, or a /SENSOR/NOT of "
                      "time sensors",
                      RC_LOC(loc), card, kn, sensor_id);
@@ -205,6 +211,43 @@ static void rot_t(const double *q, const double *v, double *o)
     for (int k = 0; k < 3; k++) o[k] = v[k] + 2.0 * (w * c[k] + cc[k]);
 }
 
+/* Interface sensor k: the /INTER card int_ID names, compiled into
+ * interfaces of that id (TYPE6, POWER, TYPE7, TYPE11, TYPE19, TYPE24,
+ * TYPE25: m->inter_id; a wall's contacts carry -rwall_ID), and its force
+ * bound. RC_EINPUT at line 2 when no interface has that id, or when the
+ * sensor itself turns on every interface it watches (it would never
+ * trigger). */
+static rc_status compile_inter(const rc_case *c, rc_model *m, int k, rc_error *err)
+{
+    const rc_case_sensor *s = &c->sensor[k];
+    int found = 0, self = 0;
+    for (int i = 0; i < m->ninter; i++)
+        if (m->inter_id[i] == s->inter_id) {
+            found++;
+            self += m->inter_sens[i] == k;
+        }
+    if (!found) {
+        char why[160] = "no such interface";
+        if (rc_case_find_rwall(c, s->inter_id) >= 0)
+            snprintf(why, sizeof why, "no such interface; /RWALL %d is a rigid wall: a sensor on a wall's contact "
+                                      "(Radioss /SENSOR/RWALL) is not supported yet",
+                     s->inter_id);
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card /SENSOR/INTER/%d, field int_ID: expected the id of an /INTER (TYPE6, POWER, TYPE7, "
+                           "TYPE11, TYPE19, TYPE24, TYPE25), got %d (%s)",
+                 RC_LOC(s->line2_loc), s->id, s->inter_id, why);
+    }
+    if (self == found)
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card /SENSOR/INTER/%d, field int_ID: /INTER %d is turned on by this sensor itself (its "
+                           "sensor field names /SENSOR/INTER/%d): inactive until the sensor triggers, its contact "
+                           "would never trigger it; expected an interface active without this sensor",
+                 RC_LOC(s->line2_loc), s->id, s->inter_id, s->id);
+    m->sens_inter[k] = s->inter_id;
+    m->sens_d[2 * k + 1] = s->dir ? s->fmax : 0.0;
+    return RC_OK;
+}
+
 rc_status rc_sensor_compile(const rc_case *c, rc_model *m, rc_error *err)
 {
     m->nsens = c->nsensor;
@@ -218,8 +261,9 @@ rc_status rc_sensor_compile(const rc_case *c, rc_model *m, rc_error *err)
     m->sens_d = calloc(2 * n, sizeof *m->sens_d);
     m->sens_in = calloc(2 * n, sizeof *m->sens_in);
     m->sens_hold = calloc(n, sizeof *m->sens_hold);
+    m->sens_inter = calloc(n, sizeof *m->sens_inter);
     if (!m->sens_id || !m->sens_kind || !m->sens_tdelay || !m->sens_body || !m->sens_p || !m->sens_d || !m->sens_in ||
-        !m->sens_hold)
+        !m->sens_hold || !m->sens_inter)
         RC_RAISE(err, RC_ENOMEM, "out of memory");
     /* the sensors found in the run that release a held body */
     for (int b = 0; b < c->nrbody; b++) {
@@ -236,6 +280,10 @@ rc_status rc_sensor_compile(const rc_case *c, rc_model *m, rc_error *err)
         if (s->kind == RC_SENS_AND || s->kind == RC_SENS_OR)
             for (int e = 0; e < 2; e++) m->sens_in[2 * k + e] = rc_case_find_sensor(c, s->in[e]);
         if (s->kind == RC_SENS_NOT) m->sens_in[2 * k] = rc_case_find_sensor(c, s->in[0]);
+        if (s->kind == RC_SENS_INTER) {
+            rc_status st = compile_inter(c, m, k, err);
+            if (st) return st;
+        }
         if (s->kind != RC_SENS_DIST) continue;
         m->sens_d[2 * k] = s->dmin;
         m->sens_d[2 * k + 1] = s->dmax;
@@ -403,8 +451,7 @@ const char *rc_sensor_note(const rc_model *m, int i)
     const int k = m->inter_sens ? m->inter_sens[i] : -1;
     if (k < 0) return "";
     const int kind = m->sens_kind[k];
-    snprintf(buf, sizeof buf, ", on by /SENSOR/%s/%d (time found in the run)", kind >= 0 && kind < 5 ? kind_name[kind] : "?",
-             m->sens_id[k]);
+    snprintf(buf, sizeof buf, ", on by /SENSOR/%s/%d (time found in the run)", rc_sensor_kind_name(kind), m->sens_id[k]);
     return buf;
 }
 

@@ -1,6 +1,6 @@
 /*
- * Time sensors (/SENSOR/TIME), distance sensors (/SENSOR/DIST), logic
- * sensors (AND, OR, NOT) and what they activate (model/sensor.c,
+ * Time sensors (/SENSOR/TIME), distance sensors (/SENSOR/DIST), interface
+ * sensors (/SENSOR/INTER), logic sensors (AND, OR, NOT) and what they activate (model/sensor.c,
  * docs/theory.md "Sensors"): an interface naming a sensor (TYPE6 and
  * /INTER/POWER Isensor) is inactive before the sensor's time; a body
  * naming one (/RBODY sens_ID) is held at rest in its initial pose until
@@ -46,10 +46,15 @@ rc_status rc_sensor_tstart(const rc_case *c, int sensor_id, rc_loc loc, const ch
                            double *tstop, int *sens, rc_error *err);
 /* The model's sensors (m->sens_*), one per /SENSOR card: a distance
  * sensor's nodes in their bodies' frames (the bodies' initial poses, in
- * the origin's coordinates: after the origin shift). RC_EINPUT at the
- * nodes' line for a node that does not exist, or two nodes of one body
- * (or both fixed in space). */
+ * the origin's coordinates: after the origin shift); an interface
+ * sensor's /INTER id and force bound (after the interfaces are compiled).
+ * RC_EINPUT at the nodes' line for a node that does not exist, or two
+ * nodes of one body (or both fixed in space); at an interface sensor's
+ * line 2 for an int_ID no interface has, or an interface only this sensor
+ * turns on. */
 rc_status rc_sensor_compile(const rc_case *c, rc_model *m, rc_error *err);
+/* "TIME", "DIST", "AND", "OR", "NOT", "INTER" for a model's sens_kind; "?" otherwise. */
+const char *rc_sensor_kind_name(int kind);
 /* For the model summary: ", on by /SENSOR/<kind>/<id> (time found in the
  * run)" for an interface under a run-time sensor, "" otherwise (a static
  * buffer). */

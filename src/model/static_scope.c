@@ -21,6 +21,7 @@
 #include "model/joint.h"
 #include "model/model.h"
 #include "model/power.h"
+#include "model/sensor.h"
 #include "model/table.h"
 
 /* Friction the static analysis' return mapping takes (solver/static.c,
@@ -115,14 +116,15 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
                                "displacement from the load time 0), or %s",
                      RC_LOC(m->end_loc), "an imposed velocity starting later (Tstart > 0)", how,
                      m->body_id[m->imp->tbody[k]], alt);
-    /* a distance sensor's trigger is an event of a dynamic run */
+    /* a distance or interface sensor's trigger is an event of a dynamic run */
     for (int i = 0; i < m->ninter; i++)
         if (m->inter_sens[i] >= 0)
             RC_RAISE(err, RC_EINPUT,
-                     RC_LOCFMT "card %s, field Isensor: " RC_STATIC_NOT " (%s, /SENSOR/DIST/%d); expected a "
+                     RC_LOCFMT "card %s, field Isensor: " RC_STATIC_NOT " (%s, /SENSOR/%s/%d); expected a "
                                "/SENSOR/TIME, no sensor, or %s",
-                     RC_LOC(m->inter_loc[i]), m->inter_name[i], "an interface turned on by a distance sensor", how,
-                     m->sens_id[m->inter_sens[i]], alt);
+                     RC_LOC(m->inter_loc[i]), m->inter_name[i],
+                     "an interface turned on by a sensor found in the run (a distance or interface sensor)", how,
+                     rc_sensor_kind_name(m->sens_kind[m->inter_sens[i]]), m->sens_id[m->inter_sens[i]], alt);
     for (int k = 0; m->imp && k < m->imp->nt; k++)
         if (m->imp->tsens[k] >= 0)
             RC_RAISE(err, RC_EINPUT,

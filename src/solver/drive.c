@@ -96,8 +96,8 @@ void rc_bk_root_directions(const rc_model *m, const rc_data *d, int *dir)
     for (int k = 0; k < 2 * m->nsens; k++) dir[rc_root_sens_base(m) + k] = 1; /* a sensor triggers */
 }
 
-/* The distance sensors triggered since the last call: their events
- * (element /SENSOR/DIST/id; no interface values); the bodies released by
+/* The distance and interface sensors triggered since the last call: their
+ * events (element /SENSOR/DIST/id, /SENSOR/INTER/id; no interface values); the bodies released by
  * a sensor found in the run: an impvel_stop event each (element
  * /RBODY/id: its hold ends); then cleared. */
 static rc_status sensor_events(const rc_model *m, rc_data *d, ev_sink *k, double t, const double *y, long *count,
@@ -110,7 +110,9 @@ static rc_status sensor_events(const rc_model *m, rc_data *d, ev_sink *k, double
         char el[48];
         rc_status st = RC_OK;
         if (nw & 1) {
-            snprintf(el, sizeof el, "/SENSOR/DIST/%d", m->sens_id[s]);
+            static const char *const kn[] = {"TIME", "DIST", "AND", "OR", "NOT", "INTER"};
+            const int kk = m->sens_kind[s];
+            snprintf(el, sizeof el, "/SENSOR/%s/%d", kk >= 0 && kk < 6 ? kn[kk] : "?", m->sens_id[s]);
             (*count)++;
             if ((st = rc_bk_sink_event(k, t, RC_EV_SENSOR_TRIGGER, el, NULL, err))) return st;
         }
@@ -189,6 +191,8 @@ int rc_bk_resolve_touching(const rc_model *m, rc_data *d, double t, double *y, d
         total += nev;
         *nevents += nev;
         for (int k = 0; k < nev && k < RC_MAX_EV; k++) rc_impacts_event(im, m, d, ev[k].inter, ev[k].kind, t, y);
+        /* the interface sensors of the contacts closed here (events.c) */
+        if (m->nsens > 0 && (*st = sensor_events(m, d, out, t, y, nevents, err))) return total;
         for (int k = 0; k < nev && k < RC_MAX_EV; k++)
             if ((*st = rc_bk_write_event(m, d, out, t, y, &ev[k], err))) return total;
         if (nev == 0) break;

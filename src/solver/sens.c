@@ -688,14 +688,19 @@ rc_status rc_sens_run(const rc_model *m, int np, const rc_model *const *m_lo, co
     if (m->preload) return RC_SET(err, RC_EINPUT, "sensitivities: a run from a preload (/SOLVER Preload 1) is not covered");
     /* an imposed translation that starts later sets its velocity at a
      * breakpoint (a jump of the state the sensitivities do not follow) */
-    /* a distance sensor's time on is a number of the run data, set at its
-     * trigger: its dependence on the parameters is not followed */
+    /* a distance or interface sensor's time on is a number of the run
+     * data, set at its trigger: its dependence on the parameters is not
+     * followed */
+    static const char *const skind[] = {"TIME", "DIST", "AND", "OR", "NOT", "INTER"};
     for (int i = 0; i < m->ninter; i++)
-        if (m->inter_sens[i] >= 0)
+        if (m->inter_sens[i] >= 0) {
+            const int kk = m->sens_kind[m->inter_sens[i]];
             return RC_SET(err, RC_EINPUT,
-                          "sensitivities: %s is turned on by /SENSOR/DIST/%d: a distance sensor is not covered (the "
-                          "derivative of its trigger time is not followed in this version)",
-                          m->inter_name[i], m->sens_id[m->inter_sens[i]]);
+                          "sensitivities: %s is turned on by /SENSOR/%s/%d, a sensor found in the run (a distance or "
+                          "interface sensor): not covered (the derivative of its trigger time is not followed in "
+                          "this version)",
+                          m->inter_name[i], kk >= 0 && kk < 6 ? skind[kk] : "?", m->sens_id[m->inter_sens[i]]);
+        }
     for (int k = 0; m->imp && k < m->imp->nt; k++)
         if (m->imp->tsens[k] >= 0)
             return RC_SET(err, RC_EINPUT,

@@ -796,6 +796,34 @@ TL('bcs_skew_missing', BC1, 'field skew_ID',
    lambda lines: at(BC1, 2, 1, 20, '111 000         9')(lines))
 
 
+# ---- /SENSOR/INTER (the base deck's /INTER/TYPE6/1 and /INTER/POWER/2)
+def SINTER(line2='         1'):
+    return ['/SENSOR/INTER/5', 'contact', '                 0.1', line2]
+
+
+SI = '/SENSOR/INTER/5'
+TL('sensor_inter_missing', SI, 'field int_ID', before_end(SINTER('        99'), expect=3))
+TL('sensor_inter_zero', SI, 'field int_ID', before_end(SINTER('         0'), expect=3))
+TL('sensor_inter_dir_text', SI, 'field DIR', before_end(SINTER('         1        XY'), expect=3))
+TL('sensor_inter_dir_tf', SI, 'field DIR', before_end(SINTER('         1        TF%20s%20s' % ('', '10')), expect=3))
+TL('sensor_inter_fmax_negative', SI, 'field Fmax', before_end(SINTER('         1        FN%20s%20s' % ('', '-10')), expect=3))
+TL('sensor_inter_fmin_negative', SI, 'field Fmin', before_end(SINTER('         1        FN%20s%20s' % ('-1', '10')), expect=3))
+TL('sensor_inter_fmin_above_fmax', SI, 'field Fmin',
+   before_end(SINTER('         1        FN%20s%20s' % ('20', '10')), expect=3))
+TL('sensor_inter_fmin', SI, 'field Fmin', before_end(SINTER('         1        FN%20s' % '20'), expect=3))
+TL('sensor_inter_blank_dir_fmax', SI, 'field Fmax', before_end(SINTER('         1%10s%20s%20s' % ('', '', '10')), expect=3))
+TL('sensor_inter_tmin', SI, 'field Tmin', before_end(SINTER('         1        FN%20s%20s%20s' % ('', '10', '0.01')), expect=3))
+TL('sensor_inter_fcut', SI, 'field Fcut',
+   before_end(SINTER('         1        FN%20s%20s%20s%20s' % ('', '10', '', '100')), expect=3))
+TL('sensor_inter_tdelay_negative', SI, 'field Tdelay',
+   before_end(['/SENSOR/INTER/5', 'contact', '                -0.1', '         1'], expect=2))
+TL('sensor_inter_missing_line', SI, 'expected 2 data lines', before_end(SINTER()[:3], expect=0))
+TL('sensor_inter_self', SI, 'field int_ID',
+   lambda lines: before_end(SINTER(), expect=3)(at(T6, 2, 21, 30, '5')(lines)[0]))
+TL('type6_sensor_inter_static', T6, 'static analysis',
+   lambda lines: at(T6, 2, 21, 30, '5', expect_k=0)(at('/SOLVER', 1, 1, 10, '3')(before_end(SINTER('         2'))(lines)[0])[0]))
+
+
 def write_all():
     for old in glob.glob('[0-9][0-9][0-9]_*'):
         os.remove(old)

@@ -182,9 +182,23 @@ double rc_sens_distance(const rc_model *m, int k, const double *y)
     return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
 }
 
+double rc_sens_inter_force(const rc_model *m, const rc_data *d, int k, double t, const double *y)
+{
+    double f = 0.0;
+    for (int i = 0; i < m->ninter; i++) {
+        if (m->inter_id[i] != m->sens_inter[k] || d->inter_mode[i] != RC_MODE_CLOSED) continue;
+        rc_inter_report r;
+        rc_inter_report_eval_d(m, d, i, t, y, &r);
+        if (r.fn > 0) f += r.fn;
+    }
+    return f;
+}
+
 /* Distance sensors' root functions: d - Dmax and Dmin - d until triggered;
- * a sensor that releases a held body (sens_hold), once its time on is
- * known and until the release: t - t_on in its first slot. */
+ * an interface sensor's with a force bound: F_n - Fmax in its first slot
+ * until triggered (F_n the total normal force of its interfaces, in their
+ * current modes); a sensor that releases a held body (sens_hold), once its
+ * time on is known and until the release: t - t_on in its first slot. */
 void rc_sens_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
 {
     for (int k = 0; k < m->nsens; k++) {
@@ -193,6 +207,8 @@ void rc_sens_roots(const rc_model *m, const rc_data *d, double t, const double *
             g[2 * k] = d->sens_rel[k] ? 1.0 : t - d->sens_ton[k];
             continue;
         }
+        if (m->sens_kind[k] == 5 && m->sens_d[2 * k + 1] > 0 && !isfinite(d->sens_ton[k]))
+            g[2 * k] = rc_sens_inter_force(m, d, k, t, y) - m->sens_d[2 * k + 1];
         if (m->sens_kind[k] != 1 || isfinite(d->sens_ton[k])) continue;
         const double dist = rc_sens_distance(m, k, y), *b = m->sens_d + 2 * k;
         if (b[1] > 0) g[2 * k] = dist - b[1];

@@ -95,6 +95,13 @@ double rc_sens_distance(const rc_model *m, int k, const double *y);
 void rc_sens_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
 int rc_sens_root_live(const rc_model *m, int j);
 double rc_sens_inter_ton(const rc_model *m, const rc_data *d, int i);
+/* Interface sensor k's force at (t, y) in the modes of d: the sum of the
+ * normal forces of the closed interfaces of its /INTER card [N]
+ * (assemble_rhs.c; pure, as the root functions). */
+double rc_sens_inter_force(const rc_model *m, const rc_data *d, int k, double t, const double *y);
+/* 1 when an interface of interface sensor k's /INTER card is closed in d
+ * (sensors.c). */
+int rc_sens_inter_closed(const rc_model *m, const rc_data *d, int k);
 
 /* Evaluate one interface at (t, y) in the given modes, for reports, roots
  * and events; contact points with friction all take the mode `slip`. */

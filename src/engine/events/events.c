@@ -462,6 +462,29 @@ static int sens_release(const rc_model *m, rc_data *d, double t, const int *root
     return n;
 }
 
+/* Interface sensors not yet triggered whose interfaces' state at (t, y)
+ * meets their criterion trigger at t (on at t + Tdelay, latched): without
+ * a force bound, a contact of theirs closed (the contact_close event that
+ * just closed it, or a contact closed at the start or when its interface
+ * started); with Fmax, the total normal force above it (the root function
+ * finds its rise through Fmax within a contact; this catches a force that
+ * jumped there with a contact closed at the start or at an interface's
+ * start). Returns how many. */
+static int sens_contact(const rc_model *m, rc_data *d, double t, const double *y)
+{
+    int n = 0;
+    for (int k = 0; k < m->nsens; k++) {
+        if (m->sens_kind[k] != 5 || isfinite(d->sens_ton[k])) continue;
+        const double fmax = m->sens_d[2 * k + 1];
+        if (fmax > 0 ? rc_sens_inter_force(m, d, k, t, y) > fmax : rc_sens_inter_closed(m, d, k)) {
+            d->sens_ton[k] = t + m->sens_tdelay[k];
+            d->sens_new[k] |= 1;
+            n++;
+        }
+    }
+    return n;
+}
+
 /* The sensors' times on at the start: time sensors' Tdelay, a distance
  * sensor out of its bounds then triggered at t, the logic sensors of them. */
 static void sens_init(const rc_model *m, rc_data *d, double t, const double *y)
@@ -482,6 +505,9 @@ static void sens_init(const rc_model *m, rc_data *d, double t, const double *y)
     sens_release(m, d, t, NULL);
 }
 
+static int sens_activate(const rc_model *m, rc_data *d, double t, double *y, rc_event *ev, int max_ev, int n,
+                         int *restart);
+
 void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y)
 {
     int changed = 0;
@@ -491,6 +517,11 @@ void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y)
         int active = t >= ton && t <= m->inter_tstop[i];
         d->inter_mode[i] = RC_MODE_INACTIVE;
         if (active) classify(m, d, i, t, y, &changed);
+    }
+    /* an interface sensor whose contact is closed at the start triggers
+     * then, and what it turns on follows */
+    if (m->nsens > 0 && sens_contact(m, d, t, y)) (void)sens_activate(m, d, t, y, NULL, 0, 0, &changed);
+    for (int i = 0; i < m->ninter; i++) {
         d->inter_hacc[2 * i] = 0.0;
         d->inter_hacc[2 * i + 1] =
             d->inter_mode[i] == RC_MODE_RELEASED && rc_inter_release_ledger(m, i) ? law_energy_now(m, d, i, t, y) : 0.0;
@@ -725,11 +756,43 @@ static void clear_settled(const rc_model *m, rc_data *d)
         if (d->inter_mode[i] != RC_MODE_CLOSED) d->inter_settled[i] = 0;
 }
 
-/* Distance sensors whose roots crossed trigger (latched): on at t +
- * Tdelay, and the logic sensors of them follow; the inactive interfaces
- * that reach their time on now start now (a later time on: their start
- * root crosses then). Returns the
- * interfaces' start events written into ev from n on. */
+/* After sensors triggered at t: the logic sensors of them follow, the
+ * holds of those on now end, and the inactive interfaces that reach their
+ * time on now start now (a later time on: their start root crosses then);
+ * an interface that starts closed triggers the interface sensors watching
+ * it, and so on. Returns the interfaces' start events written into ev
+ * from n on. */
+static int sens_activate(const rc_model *m, rc_data *d, double t, double *y, rc_event *ev, int max_ev, int n,
+                         int *restart)
+{
+    /* each round triggers at least one more sensor: at most nsens rounds */
+    for (int round = 0; round <= m->nsens; round++) {
+        sens_propagate(m, d); /* the logic sensors of those */
+        if (sens_release(m, d, t, NULL)) *restart = 1; /* the holds of those on now (no delay) */
+        int started = 0;
+        for (int i = 0; i < m->ninter; i++) {
+            const int s = m->inter_sens[i];
+            if (s < 0 || d->inter_mode[i] != RC_MODE_INACTIVE || t < rc_sens_inter_ton(m, d, i) ||
+                t > m->inter_tstop[i])
+                continue;
+            classify(m, d, i, t, y, restart);
+            if (n < max_ev) {
+                ev[n].inter = i;
+                ev[n].kind = RC_EV_INTER_START;
+            }
+            n++;
+            started++;
+        }
+        if (!started || !sens_contact(m, d, t, y)) break;
+        *restart = 1;
+    }
+    return n;
+}
+
+/* Distance and interface sensors whose trigger roots crossed trigger
+ * (latched): on at t + Tdelay, and what they turn on follows
+ * (sens_activate). Returns the interfaces' start events written into ev
+ * from n on. */
 static int sensors_apply(const rc_model *m, rc_data *d, double t, double *y, const int *roots, rc_event *ev,
                          int max_ev, int n, int *restart)
 {
@@ -738,27 +801,15 @@ static int sensors_apply(const rc_model *m, rc_data *d, double t, double *y, con
     /* a release root crossed (a time on known before this event) */
     if (sens_release(m, d, t, r)) *restart = 1; /* the holds end: the imposed rows jump */
     for (int k = 0; k < m->nsens; k++)
-        if (m->sens_kind[k] == 1 && (r[2 * k] || r[2 * k + 1]) && !isfinite(d->sens_ton[k])) {
+        if ((m->sens_kind[k] == 1 || m->sens_kind[k] == 5) && (r[2 * k] || r[2 * k + 1]) &&
+            !isfinite(d->sens_ton[k])) {
             d->sens_ton[k] = t + m->sens_tdelay[k];
             d->sens_new[k] |= 1;
             any = 1;
             *restart = 1; /* its roots leave the set: start afresh */
         }
     if (!any) return n;
-    sens_propagate(m, d); /* the logic sensors of those */
-    sens_release(m, d, t, NULL); /* the holds of those on now (no delay) */
-    for (int i = 0; i < m->ninter; i++) {
-        const int s = m->inter_sens[i];
-        if (s < 0 || d->inter_mode[i] != RC_MODE_INACTIVE || t < rc_sens_inter_ton(m, d, i) || t > m->inter_tstop[i])
-            continue;
-        classify(m, d, i, t, y, restart);
-        if (n < max_ev) {
-            ev[n].inter = i;
-            ev[n].kind = RC_EV_INTER_START;
-        }
-        n++;
-    }
-    return n;
+    return sens_activate(m, d, t, y, ev, max_ev, n, restart);
 }
 
 int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const int *roots, rc_event *ev,
@@ -836,6 +887,11 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
                 ev[n].inter = -1 - cpls[j];
                 ev[n].kind = kinds[j];
             }
+    }
+    /* the interface sensors of the contacts these events closed */
+    if (m->nsens > 0 && sens_contact(m, d, t, y)) {
+        *restart = 1;
+        n = sens_activate(m, d, t, y, ev, max_ev, n, restart);
     }
     clear_settled(m, d);
     modes_account(m, d, t, y);
@@ -1125,6 +1181,11 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             }
             n++;
         }
+    }
+    /* the interface sensors of the contacts closed here */
+    if (m->nsens > 0 && sens_contact(m, d, t, y)) {
+        *restart = 1;
+        n = sens_activate(m, d, t, y, ev, max_ev, n, restart);
     }
     clear_settled(m, d);
     modes_account(m, d, t, y);

@@ -653,6 +653,60 @@ static void test_engine_table_slope_smooth(void)
     rc_table_free(&t);
 }
 
+/* The slope of a tabulated curve for a scale (rc_table_slope_at): at a
+ * point of the curve within 1e-9 of it, the steeper of the two segments
+ * meeting there, on either side of the point; elsewhere the segment's own.
+ * A scale found by inverting the load curve at a body's weight lands on a
+ * point of the curve within rounding when the curve has one there; the
+ * slope then depended on the side the rounding took (a fuzzer scene moved
+ * 1 km away and rotated: k_s 1.1e4 N/m against 2.3e4, other tolerances, a
+ * motion 5 mm away after 0.9 s). Then a deck whose box weighs exactly the
+ * force of a point of its load curve: the interface's stiffness scale is
+ * the steeper side's, with gravity as given and 1e-15 weaker. */
+static void test_engine_table_slope_at_a_point(void)
+{
+    const double x[5] = {0.0, 0.3, 1.0, 3.0, 10.0}, y[5] = {0.0, 0.2, 1.0, 5.4, 46.0};
+    rc_table t;
+    rc_error e;
+    ENSURE(rc_table_init(&t, 1, 5, x, y, &e) == RC_OK);
+    const double s[4] = {0.2 / 0.3, 0.8 / 0.7, 4.4 / 2.0, 40.6 / 7.0};
+    for (int k = 1; k < 4; k++) {
+        const double steep = fmax(s[k - 1], s[k]);
+        for (int side = -1; side <= 1; side++) {
+            const double xk = x[k] * (1.0 + side * 1e-12);
+            ENSURE_NEAR(rc_table_slope_at(&t, xk), steep, 1e-14, 0.0);
+        }
+        ENSURE_NEAR(rc_table_slope_at(&t, x[k] * (1.0 - 1e-6)), s[k - 1], 1e-14, 0.0);
+        ENSURE_NEAR(rc_table_slope_at(&t, x[k] * (1.0 + 1e-6)), s[k], 1e-14, 0.0);
+    }
+    ENSURE_NEAR(rc_table_slope_at(&t, 0.0), s[0], 1e-15, 0.0);   /* the first point: its one segment */
+    ENSURE_NEAR(rc_table_slope_at(&t, 20.0), s[3], 1e-14, 0.0);  /* beyond the last: extended */
+    rc_table_free(&t);
+    /* the deck: a 1 kg box, load curve with a point at 9.81 N (1e-4 m) */
+    char deck[2048];
+    double kk[2];
+    for (int v = 0; v < 2; v++) {
+        snprintf(deck, sizeof deck,
+                 "/BEGIN\nbox whose weight is a point of its curve\n      2022         0\n"
+                 "                  kg                   m                   s\n"
+                 "                  kg                   m                   s\n"
+                 "/NODE\n1,0,0,0.05\n/RBODY/1\nbox\n1,,,,1,1\n0.001,0.001,0.001\n0,0,0\n"
+                 "/GRNOD/NODE/1\nbox\n1\n/SURF/BOX/1\nbox\n1\n0,0,0.05\n0.05,0.05,0.05\n"
+                 "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
+                 "/FUNCT/1\nload\n0,0\n0.0001,9.81\n0.0002,40\n"
+                 "/INTER/TYPE6/1\nbox on floor\n1,2\n\n\n1,0\n\n\n"
+                 "/GRAV/1\ng\n0,Z,0,0,1,,1,%.17g\n/RUN\n0.01,0.001\n/END\n",
+                 v == 0 ? -9.81 : -9.81 * (1.0 - 1e-15));
+        rc_model *m = TU_COMPILE_OK(deck, "slope_at_point.rad");
+        kk[v] = m ? m->inter_kscale[0] : NAN;
+        printf("    gravity %s: p_s %.17g m, k_s %.17g N/m\n", v ? "1e-15 weaker" : "as given",
+               m ? m->inter_pscale[0] : NAN, kk[v]);
+        rc_model_free(m);
+    }
+    ENSURE_NEAR(kk[0], (40.0 - 9.81) / 0.0001, 1e-9, 0.0);
+    ENSURE(kk[1] == kk[0]);
+}
+
 void suite_engine(void);
 void suite_engine(void)
 {
@@ -661,6 +715,7 @@ void suite_engine(void)
     RUN_TEST(test_engine_jacobian_refresh_after_mode_change);
     RUN_TEST(test_engine_renard_continuity);
     RUN_TEST(test_engine_table_slope_smooth);
+    RUN_TEST(test_engine_table_slope_at_a_point);
     RUN_TEST(test_engine_quaternion_drift_and_gyroscopic_invariants);
     RUN_TEST(test_engine_jacobian_power_cylinders_impvel_matches_finite_differences);
     RUN_TEST(test_engine_jacobian_impvel_skew_matches_finite_differences);

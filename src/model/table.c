@@ -3,6 +3,7 @@
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_interp.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -73,6 +74,17 @@ double rc_table_value(const rc_table *t, double x)
 
 /* Slope of segment k and its mid-point. */
 static double seg_slope(const rc_table *t, int k) { return (t->y[k + 1] - t->y[k]) / (t->x[k + 1] - t->x[k]); }
+
+double rc_table_slope_at(const rc_table *t, double x)
+{
+    /* an inner point of the curve at x, within its band: both sides */
+    const double band = RC_TABLE_KNOT_REL * fabs(x);
+    for (int k = 1; k < t->n - 1; k++)
+        if (fabs(x - t->x[k]) <= band) return fmax(seg_slope(t, k - 1), seg_slope(t, k));
+    double f, df;
+    rc_table_eval(t, x, &f, &df);
+    return df;
+}
 static double seg_mid(const rc_table *t, int k) { return 0.5 * (t->x[k] + t->x[k + 1]); }
 
 double rc_table_slope_smooth(const rc_table *t, double x, double *dslope)

@@ -30,6 +30,12 @@ double rc_table_value(const rc_table *t, double x);
  * *dslope. For a coefficient that must not jump where x crosses a point of
  * the curve (the viscous friction's stiffness, docs/theory.md 6.2). */
 double rc_table_slope_smooth(const rc_table *t, double x, double *dslope);
+/* The slope at x for a scale: rc_table_eval's, except at a point of the
+ * curve (x within RC_TABLE_KNOT_REL |x| of it, the rounding of a value
+ * found by inverting the curve) where it is the larger of the slopes of the
+ * two segments that meet there, whichever side x rounded to. */
+double rc_table_slope_at(const rc_table *t, double x);
+#define RC_TABLE_KNOT_REL 1e-9
 /* Integral of the curve from a to b (exact for the piecewise-linear curve). */
 double rc_table_integral(const rc_table *t, double a, double b);
 

@@ -121,6 +121,41 @@ static void test_compile_scales_and_derived_tolerances(void)
     }
 }
 
+/* A touching start whose gap is the rounding of its coordinates is a
+ * touching start for the scales: no fall over that gap. A 1 kg ball (R =
+ * 0.05 m) on a floor, linear contact 1e5 N/m, gravity: its centre at
+ * 0.05 m (touching) and one rounding above (gap 6.9e-18 m) get the same
+ * p_s = m g / k; a fall over the rounding gap set p_s at 1e-2 of it (the
+ * floor of a fall speed's scale), so the same scene moved 1 km away, whose
+ * touching start the deck's rounding leaves 1e-13 m apart, ran with
+ * tolerances 100 times tighter. A gap of 1e-9 m is a fall (the clamp 1e-2
+ * p_F). */
+static void test_compile_scales_touching_within_rounding(void)
+{
+    const double z[3] = {0.05, nextafter(0.05, 1.0), 0.05 + 1e-9};
+    double ps[3];
+    for (int k = 0; k < 3; k++) {
+        char text[2048];
+        snprintf(text, sizeof text,
+                 "/BEGIN\nball touching a floor\n      2022         0\n"
+                 "                  kg                   m                   s\n"
+                 "                  kg                   m                   s\n"
+                 "/NODE\n1,0,0,%.17g\n/RBODY/1\nball\n1,,,,1,1\n0.001,0.001,0.001\n0,0,0\n"
+                 "/GRNOD/NODE/1\nball\n1\n/SURF/ELLIPS/1\nball\n0,2,1\n0,0,%.17g\n0.05,0.05,0.05\n"
+                 "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n/FUNCT/1\nlinear\n0,0\n1,100000\n"
+                 "/INTER/TYPE6/1\nball on floor\n1,2\n\n\n1,0\n\n\n"
+                 "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n/RUN\n0.01,0.001\n/END\n",
+                 z[k], z[k]);
+        rc_model *m = TU_COMPILE_OK(text, "touch_scales.rad");
+        ps[k] = m ? m->inter_pscale[0] : NAN;
+        printf("    centre %.17g m: p_s %.6e m\n", z[k], ps[k]);
+        rc_model_free(m);
+    }
+    ENSURE_NEAR(ps[0], 9.81 / 1e5, 1e-9, 0);
+    ENSURE(ps[1] == ps[0]);
+    ENSURE_NEAR(ps[2], 1e-2 * 9.81 / 1e5, 1e-6, 0);
+}
+
 static void test_compile_base_deck_is_valid(void)
 {
     rc_case *c = NULL;
@@ -208,6 +243,7 @@ void suite_compile(void)
 {
     RUN_TEST(test_compile_base_deck_is_valid);
     RUN_TEST(test_compile_scales_and_derived_tolerances);
+    RUN_TEST(test_compile_scales_touching_within_rounding);
     RUN_TEST(test_compile_errors_references);
     RUN_TEST(test_compile_errors_physics);
     RUN_TEST(test_compile_errors_friction_cards);

@@ -479,9 +479,15 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         m->inter_pscale[i] = m->inter_fscale[i] = m->inter_kscale[i] = m->inter_vscale[i] = NAN;
         m->inter_pweight[i] = m->inter_pimpact[i] = NAN;
         if (!isfinite(mred) && !(r.p_raw > 0)) continue; /* nothing moves along the normal */
-        /* speed scale: initial and imposed speeds, fall over the gap */
+        /* speed scale: initial and imposed speeds, fall over the gap; a
+         * gap within the touch band (the rounding of the coordinates, the
+         * model's and the deck's) is a touching start, no fall: a touching
+         * start moved 1 km away begins 1e-13 m apart, and its fall over
+         * that gap set p_s at 1e-2 p_F where the same scene at the origin,
+         * exactly touching, had p_F (tolerances 100 times tighter) */
         double v = vmodel; /* momentum travels through chains of contacts */
-        if (r.p_raw < 0) v = fmax(v, sqrt(2.0 * gmax * -r.p_raw));
+        const double band = rc_touch_band(m, i, y, &r, RC_TOUCH_ULPS, 0.0);
+        if (r.p_raw < -band) v = fmax(v, sqrt(2.0 * gmax * -r.p_raw));
         const double pF = invert(m, i, 0, mmin * gmax);
         const double pE = invert(m, i, 1, 0.5 * mred * v * v);
         m->inter_pweight[i] = pF;

@@ -949,18 +949,19 @@ out:
     rc_model_free(m);
 }
 
-/* ---- the recovery at zero force does not wait for a dissipation ---------- */
-/* The box of the test above without a damper (Visc 0), at rest on the
- * Stiff line at zero force (F_h = 0), with the same deficit of P_e. At
- * F_el <= 0 the recovery costs the law nothing, so it acts whatever the
- * interface dissipates: at rest (nothing dissipates) and sliding at 1e-9
- * m/s (its corners' stick dampers dissipate ~1e-18 W) the law's rate is the
- * same, kappa (P - P_e) > 0. Gated on that dissipation, it jumped from 0 to
- * kappa (P - P_e) where the friction's power crossed zero within a mode (a
- * box sliding onto its floor: Newton failed at every try, CV_CONV_FAILURE
- * with h = 8e-11 s). On the Stiff line carrying 1 N the recovery is paid:
- * none at rest, without a damper. */
-static void test_pe_recovery_at_zero_force_needs_no_payment(void)
+/* ---- the recovery of P_e is continuous in what pays for it ------------- */
+/* The box of the test above without a damper (Visc 0), on the Stiff line at
+ * zero force (F_h = 0), with the same deficit of P_e, sliding at v: its
+ * corners' stick dampers dissipate D ~ v^2, which pays for the recovery,
+ * rho = kappa (P - P_e) D / (D + F_el+ kappa (P - P_e) + D_b). At rest
+ * nothing pays (rho = 0: undamped and frictionless, a free recovery held
+ * the Stiff line at zero force by its own rates, a stack of boxes 15 times
+ * slower); at 1e-9 m/s it is still about 0 (continuous across D = 0: a
+ * recovery switched on by any D > 0 jumped from 0 to kappa (P - P_e) where
+ * a box's friction power turned, and Newton failed, CV_CONV_FAILURE with h
+ * = 8e-11 s); it grows with D towards kappa (P - P_e), never beyond it. On
+ * the Stiff line carrying 1 N at rest: none. */
+static void test_pe_recovery_continuous_in_its_payment(void)
 {
     static const char *deck =
         "/BEGIN\nbox on a floor, Iform 2, no damper\n      2022         0\n"
@@ -975,7 +976,7 @@ static void test_pe_recovery_at_zero_force_needs_no_payment(void)
         "/FUNCT/1\nlinear\n0,0\n1,1000000\n"
         "/INTER/TYPE6/1\nbox on floor\n1,2\n0,0.5\n\n1,2\n0,,100000000\n\n"
         "/RUN\n0.01,0.001\n/END\n";
-    rc_model *m = TU_COMPILE_OK(deck, "pe_zero_force_free.rad");
+    rc_model *m = TU_COMPILE_OK(deck, "pe_zero_force_pay.rad");
     if (!m) return;
     rc_data *d = rc_data_new(m);
     double *y = calloc((size_t)m->ny, sizeof(double));
@@ -983,22 +984,23 @@ static void test_pe_recovery_at_zero_force_needs_no_payment(void)
     if (!d || !y) goto out;
     rc_initial_state(m, y);
     double *yb = y + m->body_yadr[0];
-    const double p = 1e-6;
+    const double p = 1e-6, kd = m->inter_perelax[0] * 0.5 * p;
     yb[2] = 0.04 - p;
     y[m->inter_eadr[0] + m->inter_peidx[0]] = 0.5 * p;
     d->inter_mode[0] = RC_MODE_CLOSED;
     d->inter_branch[0] = RC_BR_ELASTIC;
-    const double vx[2] = {0.0, 1e-9};
-    double vl[2], vl1 = NAN;
-    for (int k = 0; k < 2; k++) {
+    const double vx[4] = {0.0, 1e-9, 1e-3, 0.3};
+    double vl[4], vl1 = NAN;
+    for (int k = 0; k < 4; k++) {
         yb[7] = vx[k];
         y[m->inter_eadr[0] + m->inter_hidx[0]] = 0.0; /* the Stiff line at zero force */
         rc_inter_report r;
         rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
         vl[k] = r.vl;
         printf("    Stiff line at 0 N, sliding at %g m/s: F_el %.3e N, law's rate %.9e m/s (kappa (P - P_e) %.9e)\n",
-               vx[k], r.fload, r.vl, m->inter_perelax[0] * 0.5 * p);
+               vx[k], r.fload, r.vl, kd);
         ENSURE(!(r.fload > 0));
+        ENSURE(r.vl >= 0.0 && r.vl <= kd);
         if (k == 0) {
             y[m->inter_eadr[0] + m->inter_hidx[0]] = 1.0; /* carrying 1 N, at rest: nothing pays */
             rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
@@ -1006,9 +1008,11 @@ static void test_pe_recovery_at_zero_force_needs_no_payment(void)
         }
     }
     printf("    Stiff line at 1 N, at rest: law's rate %.3e m/s\n", vl1);
-    ENSURE(vl[0] > 0 && fabs(vl[0] - m->inter_perelax[0] * 0.5 * p) <= 1e-9 * vl[0]);
-    ENSURE(fabs(vl[1] - vl[0]) <= 1e-9 * vl[0]); /* continuous across the dissipation's zero */
-    ENSURE(fabs(vl1) < 1e-15);                   /* paid on a loaded line: nothing pays at rest */
+    ENSURE(vl[0] == 0.0);                         /* nothing pays at rest */
+    ENSURE(vl[1] > 0.0 && vl[1] < 1e-6 * kd);     /* continuous across D = 0 */
+    ENSURE(vl[2] > vl[1] && vl[3] > vl[2]);       /* grows with what pays */
+    ENSURE(vl[3] > 0.5 * kd);                     /* towards kappa (P - P_e) */
+    ENSURE(fabs(vl1) < 1e-15);
 out:
     free(y);
     rc_data_free(d);
@@ -1490,7 +1494,7 @@ void suite_passive(void)
     RUN_TEST(test_landing_band_kept_through_flips);
     RUN_TEST(test_power_rdf_root_on_damping_rate);
     RUN_TEST(test_pe_no_recovery_at_zero_force);
-    RUN_TEST(test_pe_recovery_at_zero_force_needs_no_payment);
+    RUN_TEST(test_pe_recovery_continuous_in_its_payment);
     RUN_TEST(test_elastic_damped_release_ledger);
     RUN_TEST(test_box_sliding_start_at_every_rtol);
     RUN_TEST(test_contact_records_bounded);

@@ -42,6 +42,11 @@
  * spring released from the limit rings back exactly to it, and a touch must
  * not count as a crossing (docs/theory.md 3.5) [-]. */
 #define RC_SLIP_BAND 1e-6
+/* The power band D_b of the recovery of a shared law's penetration P_e, as
+ * a fraction of the interface's F_s v_s: rho = kappa (P - P_e) D / (D +
+ * F_el+ kappa (P - P_e) + D_b), D the dissipation that pays for it
+ * (docs/theory.md 2.7) [-]. */
+#define RC_PE_PAY_BAND 0.1
 /* The smallest limit scale of the slip law's rates, as a fraction of the
  * interface's force scale F_s (times a contact point's share): docs/theory.md
  * 3.5 */

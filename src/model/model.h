@@ -220,6 +220,10 @@ struct rc_model {
                                 outputs add it back */
     int grav_table;      /* table index of the gravity time function, -1: constant */
     double grav_ascale;  /* [s] abscissa scale of the gravity function */
+    double grav_tstart;  /* [s] the /GRAV cards' sensor's time on Ts (sensor_ID,
+                            a time known when compiling): no gravity for
+                            t <= Ts, then f((t - Ts) / Ascale), a time
+                            breakpoint; 0: from t = 0, unshifted */
     int gwork_adr;       /* state: potential energy of a time-varying gravity,
                             E' = -sum m g(t).v [J]; -1 when gravity is constant */
     int64_t *gwork_slot; /* [3*nbody] Jacobian slots (row gwork_adr, columns v) */

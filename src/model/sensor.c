@@ -202,6 +202,39 @@ rc_status rc_sensor_tstart(const rc_case *c, int sensor_id, rc_loc loc, const ch
     return RC_OK;
 }
 
+rc_status rc_sensor_load_on(const rc_case *c, int sensor_id, rc_loc loc, const char *card, const char *what,
+                            double *ton, rc_error *err)
+{
+    *ton = 0.0;
+    if (sensor_id == 0) return RC_OK;
+    const int k = rc_case_find_sensor(c, sensor_id);
+    if (k < 0)
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field sensor_ID: expected the id of a /SENSOR, got %d (no such sensor)",
+                 RC_LOC(loc), card, sensor_id);
+    const char *kn = kind_name[c->sensor[k].kind];
+    if (runtime(c, k))
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card %s, field sensor_ID: /SENSOR/%s/%d turns on at a time found in the run (it is, or "
+                 "depends on, a distance or interface sensor): %s started by an event of the run (the integrator "
+                 "restarted with a new set of imposed states or loads) is not supported yet; expected a "
+                 "/SENSOR/TIME, or a logic sensor of time sensors",
+                 RC_LOC(loc), card, kn, sensor_id, what);
+    double on, off;
+    if (static_on(c, k, &on, &off) || (isfinite(off) && on < off))
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card %s, field sensor_ID: /SENSOR/%s/%d turns off again (it depends on a /SENSOR/NOT: "
+                 "on while its input is off): %s that ends when its sensor turns off is not supported yet; "
+                 "expected a sensor that turns on for good",
+                 RC_LOC(loc), card, kn, sensor_id, what);
+    if (!isfinite(on))
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card %s, field sensor_ID: /SENSOR/%s/%d never turns on (its inputs are never on "
+                 "together): %s would never act; expected a sensor that turns on",
+                 RC_LOC(loc), card, kn, sensor_id, what);
+    *ton = on;
+    return RC_OK;
+}
+
 /* q (w, x, y, z) applied to v transposed: the body frame's coordinates of a global vector. */
 static void rot_t(const double *q, const double *v, double *o)
 {

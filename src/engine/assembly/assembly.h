@@ -138,6 +138,9 @@ int rc_report_cache_get(const rc_data *d, int i, rc_inter_report *r);
 void rc_gravity(const rc_model *m, int b, double t, double g[3]);
 /* Value of the gravity time function at t [-] (1 when none is given). */
 double rc_gravity_factor(const rc_model *m, double t);
+/* rc_gravity_factor in a run: at a /GRAV sensor's time once the run
+ * restarted there (rc_data.t_bp), the right limit (the gravity on). */
+double rc_gravity_factor_run(const rc_model *m, const rc_data *d, double t);
 
 /* Friction coefficient of interface i, direction dir, at pressure p [Pa],
  * sliding speed v [m/s], normal force fn [N] (the kernel's law, for tests). */

@@ -28,9 +28,9 @@ void rc_imp_rhs(const rc_model *m, const rc_data *d, double t, const double *y, 
     double power = 0.0; /* of the reactions [W] */
     /* translations: reaction m (a_imposed - a_free) along the component */
     for (int k = 0; k < p->nt; k++) {
-        if (!RC_IMP_T_ON(p, k, t, d->sens_rel)) continue;
+        if (!RC_IMP_T_ON(p, k, t, d->sens_rel, d->t_bp)) continue;
         const int r = p->trow[k];
-        const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t);
+        const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t - p->ttshift[k]);
         if (p->tdir[k] < 0) {
             /* along u: the support's force m lambda u, lambda = a - u.a_free */
             const double *u = p->tu + 3 * k;
@@ -82,7 +82,7 @@ int rc_imp_start(const rc_model *m, double t0, double t1, double *y)
          * imposed value; the support's impulse does the work
          * m (|v1|^2 - |v0|^2) / 2, which W_imp takes back */
         double f, df;
-        rc_table_eval(&m->table[p->ttab[k]], ts / p->tascale[k], &f, &df);
+        rc_table_eval(&m->table[p->ttab[k]], (ts - p->ttshift[k]) / p->tascale[k], &f, &df);
         const int r = p->trow[k], nr = p->tdir[k] < 0 ? 3 : 1;
         const double *u = p->tu + 3 * k;
         double uv = 0.0, e0 = 0.0, e1 = 0.0;

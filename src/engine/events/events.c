@@ -489,6 +489,7 @@ static int sens_contact(const rc_model *m, rc_data *d, double t, const double *y
  * sensor out of its bounds then triggered at t, the logic sensors of them. */
 static void sens_init(const rc_model *m, rc_data *d, double t, const double *y)
 {
+    d->t_bp = -INFINITY; /* no time breakpoint passed yet (RC_IMP_T_ON) */
     for (int k = 0; k < m->nsens; k++) {
         d->sens_new[k] = 0;
         d->sens_rel[k] = 0;

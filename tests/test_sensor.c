@@ -831,9 +831,11 @@ static void test_sensor_load_errors(void)
     snprintf(cards, sizeof cards, iv, 9, "", "");
     TU_EXPECT_TEXT_ERROR(load_deck(0.2, cards), "load_e1.rad", "load_e1.rad:", "/IMPVEL/1", "field sensor_ID",
                          "no such sensor");
+    /* a distance sensor: accepted (a start at its event: test_sensor_load_runtime) */
     snprintf(cards, sizeof cards, iv, 5, "", "");
-    TU_EXPECT_TEXT_ERROR(load_deck(0.2, cards), "load_e2.rad", "load_e2.rad:", "/IMPVEL/1", "field sensor_ID",
-                         "/SENSOR/DIST/5", "found in the run", "not supported yet");
+    rc_model *md = TU_COMPILE_OK(load_deck(0.2, cards), "load_e2.rad");
+    if (md) ENSURE(md->imp && md->imp->nt == 1 && md->imp->tson[0] == 4 && md->sens_hold[4] == 1);
+    rc_model_free(md);
     snprintf(cards, sizeof cards, iv, 4, "", "");
     TU_EXPECT_TEXT_ERROR(load_deck(0.2, cards), "load_e3.rad", "/IMPVEL/1", "field sensor_ID", "/SENSOR/NOT/4",
                          "turns off again");
@@ -847,8 +849,10 @@ static void test_sensor_load_errors(void)
                          "load_e6.rad", "/IMPVEL/1", "field sensor_ID", "imposed rotation", "not supported yet");
     TU_EXPECT_TEXT_ERROR(load_deck(0.2, "/GRAV/1\ng\n         0         Z         0         9         0                             1               -9.81\n"),
                          "load_e7.rad", "load_e7.rad:", "/GRAV/1", "field sensor_ID", "no such sensor");
-    TU_EXPECT_TEXT_ERROR(load_deck(0.2, "/GRAV/1\ng\n         0         Z         0         5         0                             1               -9.81\n"),
-                         "load_e8.rad", "/GRAV/1", "field sensor_ID", "/SENSOR/DIST/5", "found in the run");
+    md = TU_COMPILE_OK(load_deck(0.2, "/GRAV/1\ng\n         0         Z         0         5         0                             1               -9.81\n"),
+                       "load_e8.rad");
+    if (md) ENSURE(md->grav_sens == 4 && md->grav_tstart == 0.0);
+    rc_model_free(md);
     TU_EXPECT_TEXT_ERROR(load_deck(0.2, "/GRAV/1\ng\n         0         Z         0         4         0                             1               -9.81\n"),
                          "load_e9.rad", "/GRAV/1", "field sensor_ID", "/SENSOR/NOT/4", "turns off again");
     TU_EXPECT_TEXT_ERROR(load_deck(0.2, "/GRAV/1\ng\n         0         Z         0         1         0                             1               -9.81\n"
@@ -890,6 +894,114 @@ static void test_sensor_load_errors(void)
     }
 }
 
+/* Loads started at a time found in the run: ball A (/RBODY/1, 1.3 kg,
+ * radius 0.05 m, its lowest point h = 0.1 m over a floor) is thrown down
+ * at 1 m/s with no gravity; /SENSOR/INTER/5 (Tdelay `td`) watches its
+ * floor contact (TYPE6, k = 1e6 N/m), which closes at t_c = h / v0 =
+ * 0.1 s; body B (/RBODY/2, 2 kg, no surface, at (1, 0, 1) m) has
+ * `cards` (an /IMPVEL, a /GRAV naming sensor 5); `extra` before /RUN. */
+static const char *rt_deck(double td, const char *cards, const char *extra)
+{
+    static char text[4096];
+    snprintf(text, sizeof text,
+             "/BEGIN\nrun-time load start\n      2022         0\n\n\n"
+             "/NODE\n1,0,0,0.15\n2,1,0,1\n"
+             "/RBODY/1\nA\n         1         0                              1.3\n0.0017,0.0017,0.0017\n0,0,0\n"
+             "/RBODY/2\nB\n         2         0                                2\n0.002,0.002,0.002\n0,0,0\n"
+             "/GRNOD/NODE/1\nA\n1\n/GRNOD/NODE/2\nB\n2\n"
+             "/SURF/ELLIPS/2\nball\n0,2,1\n0,0,0.15\n0.05,0.05,0.05\n/SURF/PLANE/3\nfloor\n0,0,0\n0,0,1\n"
+             "/FUNCT/1\nlinear\n0,0\n1,1e6\n/FUNCT/3\nramp then flat\n0,0\n0.1,0.1\n10,0.1\n"
+             "/FUNCT/4\none\n0,1\n10,1\n"
+             "/INTER/TYPE6/1\nball on floor\n         2         3          \n\n\n1,0,1,1\n\n\n"
+             "/SENSOR/INTER/5\ncontact\n%20.12g\n         1\n"
+             "/INIVEL/TRA/1\nthrown down\n0,0,-1,1,0\n"
+             "%s%s/RUN\n0.4,0.01\n"
+             "/SOLVER\n         1         5    100000               1e-10                   0                   0\n"
+             "               1e-14               1e-11               1e-12               1e-06\n               1e-12\n/END\n",
+             td, cards, extra);
+    return text;
+}
+
+/* /IMPVEL and /GRAV sensor_ID naming an interface sensor: the imposed
+ * velocity X of B = 2 f(t - t_on) (f: 0.1 s ramp to 0.1, /FUNCT/3), Y of
+ * B = 0.3 m/s (/FUNCT/4: the velocity jumps from 0 at t_on) and a gravity
+ * (B alone, 9.81 m/s^2 down) from t_on = t_c + Tdelay; B's x, y and z
+ * against the closed forms, the start events at t_on. */
+static void test_sensor_load_runtime(void)
+{
+    static tu_evlog ev;
+    const double tc = 0.1, g = 9.81;
+    static const char cards[] =
+        "/IMPVEL/1\nX of B\n         3         X         0         5         2         0         0\n"
+        "                   1                   2\n"
+        "/IMPVEL/2\nY of B\n         4         Y         0         5         2         0         0\n"
+        "                   1                 0.3\n"
+        "/GRAV/1\ng on B\n         0         Z         0         5         2                             1               -9.81\n";
+    for (int k = 0; k < 2; k++) {
+        const double td = k ? 0.05 : 0.0, ton = tc + td;
+        rc_model *m = TU_COMPILE_OK(rt_deck(td, cards, ""), "load_rt.rad");
+        if (!m) continue;
+        ENSURE(m->nsens == 1 && m->sens_hold[0] == 1 && m->grav_sens == 0 && m->gwork_adr >= 0);
+        ENSURE(m->imp && m->imp->nt == 2);
+        if (m->imp && m->imp->nt == 2)
+            for (int j = 0; j < 2; j++) ENSURE(m->imp->tson[j] == 0 && isinf(m->imp->ttstart[j]));
+        double *y = calloc((size_t)m->ny, sizeof *y);
+        const double ts[] = {0.05, 0.12, 0.18, 0.4};
+        for (int j = 0; j < 4 && y; j++) {
+            ENSURE(run_to(m, ts[j], y, &ev) == 0);
+            const int a = m->body_yadr[1];
+            const double dt = ts[j] > ton ? ts[j] - ton : 0.0;
+            ENSURE_NEAR(y[a], 1.0 + (dt <= 0.1 ? dt * dt : 0.01 + 0.2 * (dt - 0.1)), 1e-8, 0);
+            ENSURE_NEAR(y[a + 7], dt <= 0.1 ? 2 * dt : 0.2, 1e-8, 0);
+            ENSURE_NEAR(y[a + 2], 1.0 - 0.5 * g * dt * dt, 1e-8, 0);
+            ENSURE_NEAR(y[a + 1], 0.3 * dt, 1e-8, 0);
+            ENSURE_NEAR(y[a + 8], ts[j] > ton ? 0.3 : 0.0, 1e-10, 0);
+            double t = -1;
+            if (ts[j] > ton) {
+                ENSURE(ev_first(&ev, "sensor_trigger", &t, NULL) == 1);
+                ENSURE_NEAR(t, tc, 1e-10, 0);
+                ENSURE(ev_first(&ev, "impvel_start", &t, NULL) == 2);
+                ENSURE_NEAR(t, ton, 1e-10, 0);
+            } else {
+                ENSURE(ev_first(&ev, "impvel_start", &t, NULL) == 0);
+            }
+            /* A, with no gravity, still falls at 1 m/s before its contact */
+            if (ts[j] < tc) ENSURE_NEAR(y[m->body_yadr[0] + 2], 0.15 - ts[j], 1e-10, 0);
+        }
+        free(y);
+        rc_model_free(m);
+    }
+    /* refused: a static analysis, a preload, the sensitivities; a NOT of
+     * the interface sensor; a rotation; Tstart > 0 with it */
+    TU_EXPECT_TEXT_ERROR(rt_deck(0, cards, "/SENSOR/NOT/6\nnot\n\n         5\n"
+                                           "/GRAV/2\ng2\n         0         Z         0         6         1                             1               -9.81\n"),
+                         "load_rt1.rad", "/GRAV/2", "field sensor_ID", "/SENSOR/NOT/6", "turns off again");
+    TU_EXPECT_TEXT_ERROR(rt_deck(0, "/IMPVEL/1\nZZ of B\n         3        ZZ         0         5         2         0         0\n", ""),
+                         "load_rt2.rad", "/IMPVEL/1", "field sensor_ID", "imposed rotation", "not supported yet");
+    TU_EXPECT_TEXT_ERROR(rt_deck(0, "/IMPVEL/1\nX of B\n         3         X         0         5         2         0         0\n"
+                                    "                   1                   2                 0.2\n", ""),
+                         "load_rt3.rad", "/IMPVEL/1", "field Tstart", "not supported yet");
+    TU_EXPECT_TEXT_ERROR(rt_deck(0, cards, "/GRAV/2\ng2\n         0         Z         0         0         1                             1               -9.81\n"),
+                         "load_rt4.rad", "/GRAV/2", "field sensor_ID", "start at one time");
+    rc_model *m = TU_COMPILE_OK(rt_deck(0, cards, ""), "load_rt5.rad");
+    if (m) {
+        rc_error e;
+        rc_error_clear(&e);
+        ENSURE(rc_model_set_preload(m, 1, &e) == RC_EINPUT);
+        ENSURE(strstr(e.msg, "started by a sensor found in the run") != NULL);
+        const int ny = rc_model_state_size(m);
+        double *y = calloc((size_t)ny, sizeof(double)), *sv = calloc((size_t)ny, sizeof(double));
+        const rc_model *mm[1] = {m};
+        const double val[1] = {1.3}, dp[1] = {1e-4}, at[1] = {0.3};
+        rc_error_clear(&e);
+        ENSURE(rc_sens_run(m, 1, mm, mm, val, dp, 1, at, y, sv, NULL, NULL, NULL, &e) == RC_EINPUT);
+        ENSURE(strstr(e.msg, "at a time found in the run is not covered") != NULL);
+        free(y);
+        free(sv);
+    }
+    rc_model_free(m);
+}
+
 void suite_sensor(void);
 void suite_sensor(void)
 {
@@ -907,4 +1019,5 @@ void suite_sensor(void)
     RUN_TEST(test_sensor_impvel_time);
     RUN_TEST(test_sensor_grav_time);
     RUN_TEST(test_sensor_load_errors);
+    RUN_TEST(test_sensor_load_runtime);
 }

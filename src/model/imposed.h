@@ -49,7 +49,10 @@
  * after Tstart is then followed from the first step). */
 #define RC_IMP_T_ON(p, k, t, rel, tbp)                                                                              \
     (!((t) > (p)->ttstop[k] || (t) < (p)->ttstart[k] || ((t) == (p)->ttstart[k] && (tbp) < (t))) &&              \
-     ((p)->tsens[k] < 0 || !(rel)[(p)->tsens[k]]))
+     ((p)->tsens[k] < 0 || !(rel)[(p)->tsens[k]]) && ((p)->tson[k] < 0 || (rel)[(p)->tson[k]]))
+/* The shift of imposed translation k's function [s]: its sensor's time on
+ * found in the run (ton: rc_data.sens_ton), else ttshift. */
+#define RC_IMP_T_SHIFT(p, k, ton) ((p)->tson[k] >= 0 ? (ton)[(p)->tson[k]] : (p)->ttshift[k])
 #define RC_IMP_R_ON(p, j, t, rel) (!((t) > (p)->rtstop[j]) && ((p)->rsens[j] < 0 || !(rel)[(p)->rsens[j]]))
 
 typedef struct rc_imposed {
@@ -70,6 +73,13 @@ typedef struct rc_imposed {
                             sensor (sensor_ID), the sensor's time on     */
     double *ttshift;     /* [nt] [s] the function's shift: Fscale f((t -
                             ttshift) / Ascale); a sensor's time on, else 0 */
+    int *tson;           /* [nt] a start by a sensor found in the run (/IMPVEL
+                            sensor_ID: a distance or interface sensor, or a
+                            logic sensor of one): free until its event
+                            (rc_data.sens_rel), then imposed as Fscale
+                            f((t - t_on) / Ascale), t_on its time on
+                            (rc_data.sens_ton); the velocity jumps at the
+                            event (rc_imp_start_sens); -1: none */
     int *tsens;          /* [nt] a sensor hold (model/sensor.c) that ends when
                             sensor tsens is on, a time found in the run
                             (rc_data.sens_rel; ttstop INFINITY); -1: none    */

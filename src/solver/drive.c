@@ -102,7 +102,8 @@ void rc_bk_root_directions(const rc_model *m, const rc_data *d, int *dir)
 /* The distance and interface sensors triggered since the last call: their
  * events (element /SENSOR/DIST/id, /SENSOR/INTER/id; no interface values); the bodies released by
  * a sensor found in the run: an impvel_stop event each (element
- * /RBODY/id: its hold ends); then cleared. */
+ * /RBODY/id: its hold ends); the imposed velocities started by one: an
+ * impvel_start event each (element /RBODY/id); then cleared. */
 static rc_status sensor_events(const rc_model *m, rc_data *d, ev_sink *k, double t, const double *y, long *count,
                                rc_error *err)
 {
@@ -124,6 +125,14 @@ static rc_status sensor_events(const rc_model *m, rc_data *d, ev_sink *k, double
             snprintf(el, sizeof el, "/RBODY/%d", m->body_id[m->imp->tbody[j]]);
             (*count)++;
             if ((st = rc_bk_sink_event(k, t, RC_EV_IMPVEL_STOP, el, NULL, err))) return st;
+        }
+        /* the imposed velocities it starts (/IMPVEL sensor_ID): one event
+         * per started translation (element /RBODY/id) */
+        for (int j = 0; (nw & 2) && m->imp && j < m->imp->nt; j++) {
+            if (m->imp->tson[j] != s || t > m->imp->ttstop[j]) continue;
+            snprintf(el, sizeof el, "/RBODY/%d", m->body_id[m->imp->tbody[j]]);
+            (*count)++;
+            if ((st = rc_bk_sink_event(k, t, RC_EV_IMPVEL_START, el, NULL, err))) return st;
         }
     }
     return RC_OK;

@@ -708,6 +708,17 @@ rc_status rc_sens_run(const rc_model *m, int np, const rc_model *const *m_lo, co
                           "sensitivities: /RBODY/%d is released by sensor %d at a time found in the run: not covered "
                           "(the derivative of its release time is not followed in this version)",
                           m->body_id[m->imp->tbody[k]], m->sens_id[m->imp->tsens[k]]);
+    for (int k = 0; m->imp && k < m->imp->nt; k++)
+        if (m->imp->tson[k] >= 0)
+            return RC_SET(err, RC_EINPUT,
+                          "sensitivities: an /IMPVEL on /RBODY/%d started by sensor %d at a time found in the run is "
+                          "not covered (the derivative of its start time is not followed in this version)",
+                          m->body_id[m->imp->tbody[k]], m->sens_id[m->imp->tson[k]]);
+    if (m->grav_sens >= 0)
+        return RC_SET(err, RC_EINPUT,
+                      "sensitivities: a /GRAV switched on by sensor %d at a time found in the run is not covered (the "
+                      "derivative of its start time is not followed in this version)",
+                      m->sens_id[m->grav_sens]);
     if (m->grav_tstart > 0)
         return RC_SET(err, RC_EINPUT,
                       "sensitivities: a /GRAV switched on by its sensor at %g s is not covered (the gravity jumps "

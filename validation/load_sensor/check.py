@@ -16,6 +16,14 @@ function shifted by the sensor's time, as Radioss does).
 
 Sphere 2 stays at x = 2 m. The energy ledger (kinetic + the work of the
 time-varying gravity + energy_imposed) closes.
+
+case_runtime.rad: a start found in the run. Ball A (R = 0.05 m, its
+lowest point h = 0.1 m over a floor, TYPE6 k = 1e6 N/m) falls under
+gravity; /SENSOR/INTER/5 watches the floor contact, first closed at
+t_c = sqrt(2 h / g); body B (2 kg, at (1, 0, 1) m, falling freely) has an
+/IMPVEL on X naming sensor 5, Fscale_y V = 0.5 m/s, f = 1: its velocity
+jumps to V at t_c (event impvel_start), x_B(t) = x0 + V (t - t_c) after,
+and z_B(t) = z0 - g t^2 / 2 throughout.
 """
 import os
 import sys
@@ -59,6 +67,28 @@ def deck(rtol=1e-10):
     return d
 
 
+H, XB, ZB, MB = 0.1, 1.0, 1.0, 2.0
+
+
+def deck_runtime(rtol=1e-10):
+    d = Deck("an imposed velocity started by an interface sensor")
+    d.funct(1, [0.0, 1.0], [0.0, 1.0e6], title="linear load curve")
+    d.funct(2, [0.0, 10.0], [1.0, 1.0], title="one")
+    d.nodes([(1, 0.0, 0.0, R + H), (2, XB, 0.0, ZB)])
+    d.rbody(1, 1, M, [0.4 * M * R * R] * 3, title="ball A")
+    d.rbody(2, 2, MB, [0.002] * 3, title="body B")
+    d.grnod(2, [2])
+    d.sphere(1, 1, (0.0, 0.0, R + H), R)
+    d.plane(2, (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), title="floor")
+    d.type6(1, 1, 2, 1, title="ball on floor")
+    d.sensor_inter(5, 1, title="first contact of A")
+    d.grav(1, "Z", -G)
+    d.impvel(1, 2, "X", 2, fscale=V, sensor=5, title="X of B from sensor 5")
+    d.run(0.3, 0.005)
+    d.solver(rtol=rtol, atol_pos=1e-4 * rtol, atol_vel=1e-2 * rtol, atol_energy=1e-2 * rtol)
+    return d
+
+
 def errors(r):
     ez = float(np.max(np.abs(r.pos[:, :, 2] - z_ref(r.t)[:, None])))
     ex = float(np.max(np.abs(r.pos[:, 0, 0] - x1_ref(r.t))))
@@ -89,6 +119,22 @@ def main():
     rcval.check("load_sensor.ledger", drift < 1e-6,
                 f"max |E_total - E_total(0)| = {drift:.2e} J, gravity's start and the imposed velocity included "
                 f"(< 1e-6 J)")
+    r = rcval.Result(rcval.run_case("case_runtime.rad"))
+    tc = (2 * H / G) ** 0.5
+    ts, tv = r.events("sensor_trigger"), r.events("impvel_start")
+    e = max(rcval.rel(ts[0], tc), rcval.rel(tv[0], tc)) if len(ts) == 1 and len(tv) == 1 else 1.0
+    rcval.check("load_sensor.runtime_start", e < 1e-9, f"sensor_trigger {ts} s, impvel_start {tv} s, sqrt(2 h/g) = "
+                f"{tc:.12f} s: rel. error {e:.1e} (< 1e-9)")
+    xb = XB + V * np.maximum(r.t - tc, 0.0)
+    ex = float(np.max(np.abs(r.pos[:, 1, 0] - xb)))
+    ez = float(np.max(np.abs(r.pos[:, 1, 2] - (ZB - 0.5 * G * r.t**2))))
+    rcval.check("load_sensor.runtime_x", ex < 1e-8, f"B: max |x - (x0 + V (t - t_c))| = {ex:.2e} m (< 1e-8 m); "
+                f"max |z - (z0 - g t^2/2)| = {ez:.2e} m")
+    rcval.check("load_sensor.runtime_z", ez < 1e-7, f"B falls freely throughout: {ez:.2e} m (< 1e-7 m)")
+    en = r.energy["energy_total"]
+    drift = float(np.max(np.abs(en - en[0])))
+    rcval.check("load_sensor.runtime_ledger", drift < 1e-6, f"max |E_total - E_total(0)| = {drift:.2e} J, the "
+                f"jump at t_c and the contact included (< 1e-6 J)")
     if not FAST:
         errs = [max(errors(rcval.Result(rcval.run(deck(rt), keep_solver=True)))) for rt in (1e-5, 1e-7, 1e-9)]
         rcval.check("load_sensor.convergence", errs[2] < errs[0],
@@ -97,4 +143,4 @@ def main():
 
 
 if __name__ == "__main__":
-    rcval.entry(main, deck)
+    rcval.entry(main, lambda: {"case.rad": deck(), "case_runtime.rad": deck_runtime()})

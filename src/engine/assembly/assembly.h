@@ -247,6 +247,10 @@ void rc_imp_rhs(const rc_model *m, const rc_data *d, double t, const double *y, 
  * Ascale) in y and the impulse's work taken into W_imp; returns how many
  * (imposed_rhs.c). */
 int rc_imp_start(const rc_model *m, double t0, double t1, double *y);
+/* At the event where sensor s (found in the run) turns on, at t: the
+ * imposed translations it starts (tson) jump to Fscale f((t - t_on) /
+ * Ascale) (W_imp takes the work); returns how many (imposed_rhs.c). */
+int rc_imp_start_sens(const rc_model *m, const rc_data *d, int s, double t, double *y);
 /* Jacobian (imposed_jac.c): the W_imp row, then the imposed rows replaced. */
 int rc_imp_jac(const rc_model *m, const rc_data *d, double t, const double *y, double *val);
 

@@ -35,7 +35,7 @@ int rc_imp_jac(const rc_model *m, const rc_data *d, double t, const double *y, d
         if (!RC_IMP_T_ON(p, k, t, d->sens_rel, d->t_bp) || p->tdir[k] < 0) continue;
         const int r = p->trow[k];
         const double mass = m->body_mass[p->tbody[k]];
-        const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t - p->ttshift[k]);
+        const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t - RC_IMP_T_SHIFT(p, k, d->sens_ton));
         act[r] = 1.0;
         cf[r] = -mass * y[r];
         dp[r] += mass * (a - d->sc->imp_free[r]);
@@ -76,7 +76,7 @@ int rc_imp_jac(const rc_model *m, const rc_data *d, double t, const double *y, d
         if (!RC_IMP_T_ON(p, k, t, d->sens_rel, d->t_bp) || p->tdir[k] >= 0) continue;
         const int r = p->trow[k];
         const double mass = m->body_mass[p->tbody[k]], *u = p->tu + 3 * k;
-        const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t - p->ttshift[k]);
+        const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t - RC_IMP_T_SHIFT(p, k, d->sens_ton));
         double ua = 0.0, uv = 0.0;
         for (int i = 0; i < 3; i++) {
             ua += u[i] * d->sc->imp_free[r + i];

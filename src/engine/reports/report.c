@@ -149,6 +149,9 @@ static void print_gravity(const rc_model *m, FILE *f)
                  m->grav_tstart, m->grav_tstart);
     else if (m->grav_table >= 0) snprintf(fn, sizeof fn, " times /FUNCT/%d of t", m->table[m->grav_table].id);
     else if (m->grav_tstart > 0) snprintf(fn, sizeof fn, " from %.6g s (its sensor)", m->grav_tstart);
+    if (m->grav_sens >= 0 && m->sens_id)
+        snprintf(fn, sizeof fn, "%s from the time sensor %d turns on (found in the run)",
+                 m->grav_table >= 0 ? " times a /FUNCT of t - t_on," : "", m->sens_id[m->grav_sens]);
     if (gn == 0.0 && nsame == nfree) {
         fprintf(f, "gravity     none\n");
         return;

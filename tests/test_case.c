@@ -904,8 +904,7 @@ static void test_case_error_grav_bcs_inivel(void)
 {
     EXPECT_INPUT_ERROR("gravdir.rad", "/GRAV/1\ng\n0,W\n" RUN_CARD, 3, "card /GRAV/1", "field DIR",
                        "X, Y or Z", "\"W\"");
-    EXPECT_INPUT_ERROR("gravsens.rad", "/GRAV/1\ng\n0,Z,0,4\n" RUN_CARD, 3, "field sensor_ID",
-                       "not supported yet");
+    EXPECT_INPUT_ERROR("gravsens.rad", "/GRAV/1\ng\n0,Z,0,-4\n" RUN_CARD, 3, "field sensor_ID", "-4");
     EXPECT_INPUT_ERROR("bcs.rad", "/BCS/1\nb\n   112 000\n" RUN_CARD, 3, "card /BCS/1",
                        "field Trarot", "\"112 000\"");
     EXPECT_INPUT_ERROR("inivel.rad", "/INIVEL/AXIS/1\nv\n0,0,0\n" RUN_CARD, 1,

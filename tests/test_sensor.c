@@ -13,6 +13,7 @@
 #include "base/error.h"
 #include "case/case.h"
 #include "harness.h"
+#include "ricochet/ricochet.h"
 #include "model/imposed.h"
 #include "model/model.h"
 #include "testutil.h"
@@ -690,6 +691,317 @@ static void test_sensor_inter_kinds(void)
                          "distance or interface sensor");
 }
 
+/* Loads switched on by a sensor (/IMPVEL and /GRAV sensor_ID): a body
+ * (/RBODY/1, 1.3 kg, node 1 at (0, 0, 1) m) and the sensors
+ * /SENSOR/TIME/1 (Tdelay t1), /SENSOR/TIME/2 (Tdelay 0.15 s),
+ * /SENSOR/AND/3 of both (Tdelay 0.05 s), /SENSOR/NOT/4 of 1 and
+ * /SENSOR/DIST/5 (nodes 1 and 2, Dmax 0.1 m); `cards` before /RUN
+ * (0.5 s). */
+static const char *load_solver =
+    "/SOLVER\n         1         5    100000               1e-10                   0                   0\n"
+    "               1e-14               1e-11               1e-12               1e-06\n               1e-12\n";
+
+static const char *load_deck_s(double t1, const char *cards, const char *solver)
+{
+    static char text[4096];
+    snprintf(text, sizeof text,
+             "/BEGIN\nloads by sensors\n      2022         0\n\n\n"
+             "/NODE\n1,0,0,1\n2,0,0,1\n"
+             "/RBODY/1\nbody\n         1         0                              1.3\n0.0017,0.0017,0.0017\n0,0,0\n"
+             "/GRNOD/NODE/1\nbody\n1\n"
+             "/FUNCT/1\nramp\n0,0\n10,10\n/FUNCT/2\none\n0,1\n10,1\n/FUNCT/3\nramp then flat\n0,0\n0.1,0.1\n10,0.1\n"
+             "/SENSOR/TIME/1\nt1\n%20.12g\n/SENSOR/TIME/2\nt2\n0.15\n/SENSOR/AND/3\nboth\n0.05\n         1         2\n"
+             "/SENSOR/NOT/4\nnot 1\n\n         1\n"
+             "/SENSOR/DIST/5\ndistance\n\n         1         2                  0.                 0.1\n"
+             "%s/RUN\n0.5,0.01\n%s/END\n",
+             t1, cards, solver);
+    return text;
+}
+
+static const char *load_deck(double t1, const char *cards) { return load_deck_s(t1, cards, load_solver); }
+
+/* The state of a model run to t_end [s] (the deck's coordinates), its
+ * events in ev. Returns 0 when the run succeeded. */
+static int run_to(rc_model *m, double t_end, double *y, tu_evlog *ev)
+{
+    rc_error e;
+    rc_error_clear(&e);
+    if (ev) memset(ev, 0, sizeof *ev);
+    rc_run_options o = {.t_end_override = t_end, .y_end = y, .on_event = ev ? tu_evlog_event : NULL, .user = ev};
+    const rc_status st = rc_run(m, &o, NULL, &e);
+    if (st) fprintf(stderr, "  run: %s\n", e.msg);
+    return st != RC_OK;
+}
+
+/* /IMPVEL sensor_ID: a time sensor (Tdelay T = 0.2 s) starts a velocity
+ * X = 2 f(t - T), f(s) = s up to s = 0.1 s then 0.1 (/FUNCT/3): at rest
+ * until T, then x(t) = (t - T)^2 m up to T + 0.1 s, 0.01 + 0.2 (t - T -
+ * 0.1) m after (the function shifted by the sensor's time, as Radioss
+ * does); the start is a time breakpoint (impvel_start at T). */
+static void test_sensor_impvel_time(void)
+{
+    const double T = 0.2;
+    const char *cards = "/IMPVEL/1\nX by sensor 1\n         3         X         0         1         1         0         0\n"
+                        "                   1                   2\n";
+    rc_model *m = TU_COMPILE_OK(load_deck(T, cards), "load_impvel.rad");
+    if (!m) return;
+    ENSURE(m->imp && m->imp->nt == 1 && m->imp->nr == 0);
+    if (m->imp && m->imp->nt == 1) {
+        ENSURE(m->imp->ttstart[0] == T && m->imp->ttshift[0] == T && m->imp->tsens[0] < 0);
+        ENSURE(m->body_y0[7] == 0.0); /* free (at rest) before its start */
+    }
+    static tu_evlog ev;
+    double *y = calloc((size_t)m->ny, sizeof *y);
+    const double ts[] = {0.1, 0.2, 0.35, 0.5};
+    for (int k = 0; k < 4 && y; k++) {
+        ENSURE(run_to(m, ts[k], y, &ev) == 0);
+        const double dt = ts[k] > T ? ts[k] - T : 0.0;
+        ENSURE_NEAR(y[m->body_yadr[0]], dt <= 0.1 ? dt * dt : 0.01 + 0.2 * (dt - 0.1), 1e-8, 0);
+        ENSURE_NEAR(y[m->body_yadr[0] + 7], dt <= 0.1 ? 2 * dt : 0.2, 1e-9, 0);
+        ENSURE_NEAR(y[m->body_yadr[0] + 2], 1.0, 1e-12, 0); /* no gravity */
+        double t = -1;
+        if (ts[k] > T) {
+            ENSURE(ev_first(&ev, "impvel_start", &t, NULL) == 1);
+            ENSURE_NEAR(t, T, 1e-14, 0);
+        } else {
+            ENSURE(ev_first(&ev, "impvel_start", &t, NULL) == 0);
+        }
+    }
+    free(y);
+    rc_model_free(m);
+    /* an AND of time sensors folded: on at max(0.1, 0.15) + 0.05 s */
+    static const char and3[] = "/IMPVEL/1\nX by sensor 3\n         2         X         0         3         1         0         0\n"
+                               "                   1                 0.5\n";
+    m = TU_COMPILE_OK(load_deck(0.1, and3), "load_impvel_and.rad");
+    if (m && m->imp && m->imp->nt == 1) {
+        ENSURE_NEAR(m->imp->ttstart[0], 0.2, 1e-15, 0);
+        y = calloc((size_t)m->ny, sizeof *y);
+        if (y && run_to(m, 0.5, y, NULL) == 0) ENSURE_NEAR(y[m->body_yadr[0]], 0.5 * 0.3, 1e-9, 0);
+        free(y);
+    }
+    rc_model_free(m);
+    /* a sensor on at t = 0 (Tdelay 0): imposed from the start, unshifted */
+    m = TU_COMPILE_OK(load_deck(0.0, cards), "load_impvel0.rad");
+    if (m && m->imp && m->imp->nt == 1) ENSURE(isinf(m->imp->ttstart[0]) && m->imp->ttshift[0] == 0.0);
+    rc_model_free(m);
+}
+
+/* /GRAV sensor_ID: gravity from the sensor's time T on: z(t) = z0 for
+ * t <= T, z0 - g (t - T)^2 / 2 after (a constant gravity, AND sensor 3 on
+ * at 0.2 s); with the ramp f(s) = s as time function, g(t) = -9.81
+ * (t - T) m/s^2 (shifted): z0 - 9.81 (t - T)^3 / 6. */
+static void test_sensor_grav_time(void)
+{
+    const double T = 0.2, g = 9.81;
+    static const char c0[] =
+        "/GRAV/1\ng\n         0         Z         0         3         0                             1               -9.81\n";
+    static const char c1[] =
+        "/GRAV/1\ng\n         1         Z         0         3         0                             1               -9.81\n";
+    for (int f = 0; f < 2; f++) {
+        rc_model *m = TU_COMPILE_OK(load_deck(0.1, f ? c1 : c0), "load_grav.rad");
+        if (!m) continue;
+        ENSURE_NEAR(m->grav_tstart, T, 1e-15, 0);
+        ENSURE(m->gwork_adr >= 0); /* a gravity that varies in time: its work integrated */
+        double *y = calloc((size_t)m->ny, sizeof *y);
+        const double ts[] = {0.15, 0.2, 0.3, 0.5};
+        for (int k = 0; k < 4 && y; k++) {
+            ENSURE(run_to(m, ts[k], y, NULL) == 0);
+            const double dt = ts[k] > T ? ts[k] - T : 0.0;
+            const double z = f ? 1.0 - g * dt * dt * dt / 6.0 : 1.0 - 0.5 * g * dt * dt;
+            const double vz = f ? -0.5 * g * dt * dt : -g * dt;
+            ENSURE_NEAR(y[m->body_yadr[0] + 2], z, 1e-9, 0);
+            ENSURE_NEAR(y[m->body_yadr[0] + 9], vz, 1e-9, 0);
+            /* the work of gravity: -m g.(x - x0) for a constant one */
+            if (!f) ENSURE_NEAR(y[m->gwork_adr], -1.3 * g * (1.0 - z), 1e-8, 0);
+        }
+        free(y);
+        rc_model_free(m);
+    }
+}
+
+/* The refusals: a sensor that does not exist, one found in the run, one
+ * that turns off again or never turns on, a start outside [Tstart, Tstop),
+ * a rotation started later, two /GRAV starting at different times, a
+ * static analysis with a later start. */
+static void test_sensor_load_errors(void)
+{
+    static const char iv[] = "/IMPVEL/1\nX\n         2         X         0%10d         1         0         0\n"
+                             "                   1                 0.5%20s%20s\n";
+    char cards[1024];
+    snprintf(cards, sizeof cards, iv, 9, "", "");
+    TU_EXPECT_TEXT_ERROR(load_deck(0.2, cards), "load_e1.rad", "load_e1.rad:", "/IMPVEL/1", "field sensor_ID",
+                         "no such sensor");
+    /* a distance sensor: accepted (a start at its event: test_sensor_load_runtime) */
+    snprintf(cards, sizeof cards, iv, 5, "", "");
+    rc_model *md = TU_COMPILE_OK(load_deck(0.2, cards), "load_e2.rad");
+    if (md) ENSURE(md->imp && md->imp->nt == 1 && md->imp->tson[0] == 4 && md->sens_hold[4] == 1);
+    rc_model_free(md);
+    snprintf(cards, sizeof cards, iv, 4, "", "");
+    TU_EXPECT_TEXT_ERROR(load_deck(0.2, cards), "load_e3.rad", "/IMPVEL/1", "field sensor_ID", "/SENSOR/NOT/4",
+                         "turns off again");
+    snprintf(cards, sizeof cards, iv, 1, "0.3", "");
+    TU_EXPECT_TEXT_ERROR(load_deck(0.2, cards), "load_e4.rad", "/IMPVEL/1", "field sensor_ID", "outside [Tstart, Tstop)",
+                         "never act");
+    snprintf(cards, sizeof cards, iv, 1, "", "0.1");
+    TU_EXPECT_TEXT_ERROR(load_deck(0.2, cards), "load_e5.rad", "/IMPVEL/1", "outside [Tstart, Tstop)");
+    TU_EXPECT_TEXT_ERROR(load_deck(0.2, "/IMPVEL/1\nZZ\n         2        ZZ         0         1         1         0         0\n"
+                                        "                   1                 0.5\n"),
+                         "load_e6.rad", "/IMPVEL/1", "field sensor_ID", "imposed rotation", "not supported yet");
+    TU_EXPECT_TEXT_ERROR(load_deck(0.2, "/GRAV/1\ng\n         0         Z         0         9         0                             1               -9.81\n"),
+                         "load_e7.rad", "load_e7.rad:", "/GRAV/1", "field sensor_ID", "no such sensor");
+    md = TU_COMPILE_OK(load_deck(0.2, "/GRAV/1\ng\n         0         Z         0         5         0                             1               -9.81\n"),
+                       "load_e8.rad");
+    if (md) ENSURE(md->grav_sens == 4 && md->grav_tstart == 0.0);
+    rc_model_free(md);
+    TU_EXPECT_TEXT_ERROR(load_deck(0.2, "/GRAV/1\ng\n         0         Z         0         4         0                             1               -9.81\n"),
+                         "load_e9.rad", "/GRAV/1", "field sensor_ID", "/SENSOR/NOT/4", "turns off again");
+    TU_EXPECT_TEXT_ERROR(load_deck(0.2, "/GRAV/1\ng\n         0         Z         0         1         0                             1               -9.81\n"
+                                        "/GRAV/2\ng2\n         0         X         0         0         0                             1                   1\n"),
+                         "load_e10.rad", "/GRAV/2", "field sensor_ID", "start at one time");
+    /* a NOT never on (its input on from t = 0) */
+    TU_EXPECT_TEXT_ERROR(load_deck(0.0, "/GRAV/1\ng\n         0         Z         0         4         0                             1               -9.81\n"),
+                         "load_e11.rad", "/GRAV/1", "/SENSOR/NOT/4", "never turns on");
+    /* a static analysis: refused for a later start; fine from t = 0 */
+    TU_EXPECT_TEXT_ERROR(load_deck_s(0.2, "/GRAV/1\ng\n         0         Z         0         1         0                             1               -9.81\n",
+                                     "/SOLVER\n3\n"),
+                         "load_e12.rad", "/GRAV", "field sensor_ID", "static analysis", "0.2 s");
+    snprintf(cards, sizeof cards, iv, 1, "", "");
+    TU_EXPECT_TEXT_ERROR(load_deck_s(0.2, cards, "/SOLVER\n3\n"), "load_e13.rad", "/IMPVEL", "static analysis", "sensor_ID's time");
+    /* a preload and the sensitivities: refused for a gravity switched on
+     * later; from t = 0 (Tdelay 0) the preload is accepted */
+    static const char g1[] =
+        "/GRAV/1\ng\n         0         Z         0         1         0                             1               -9.81\n";
+    for (int late = 0; late < 2; late++) {
+        rc_model *m = TU_COMPILE_OK(load_deck(late ? 0.2 : 0.0, g1), "load_pre.rad");
+        if (!m) continue;
+        rc_error e;
+        rc_error_clear(&e);
+        const rc_status st = rc_model_set_preload(m, 1, &e);
+        ENSURE(late ? st == RC_EINPUT : st == RC_OK);
+        if (late) ENSURE(strstr(e.msg, "a gravity switched on by its sensor at 0.2 s") != NULL);
+        if (late) {
+            const int ny = rc_model_state_size(m);
+            double *y = calloc((size_t)ny, sizeof(double)), *sv = calloc((size_t)ny, sizeof(double));
+            const rc_model *mm[1] = {m};
+            const double val[1] = {1.3}, dp[1] = {1e-4}, at[1] = {0.3};
+            rc_error_clear(&e);
+            ENSURE(rc_sens_run(m, 1, mm, mm, val, dp, 1, at, y, sv, NULL, NULL, NULL, &e) == RC_EINPUT);
+            ENSURE(strstr(e.msg, "switched on by its sensor at 0.2 s is not covered") != NULL);
+            free(y);
+            free(sv);
+        }
+        rc_model_free(m);
+    }
+}
+
+/* Loads started at a time found in the run: ball A (/RBODY/1, 1.3 kg,
+ * radius 0.05 m, its lowest point h = 0.1 m over a floor) is thrown down
+ * at 1 m/s with no gravity; /SENSOR/INTER/5 (Tdelay `td`) watches its
+ * floor contact (TYPE6, k = 1e6 N/m), which closes at t_c = h / v0 =
+ * 0.1 s; body B (/RBODY/2, 2 kg, no surface, at (1, 0, 1) m) has
+ * `cards` (an /IMPVEL, a /GRAV naming sensor 5); `extra` before /RUN. */
+static const char *rt_deck(double td, const char *cards, const char *extra)
+{
+    static char text[4096];
+    snprintf(text, sizeof text,
+             "/BEGIN\nrun-time load start\n      2022         0\n\n\n"
+             "/NODE\n1,0,0,0.15\n2,1,0,1\n"
+             "/RBODY/1\nA\n         1         0                              1.3\n0.0017,0.0017,0.0017\n0,0,0\n"
+             "/RBODY/2\nB\n         2         0                                2\n0.002,0.002,0.002\n0,0,0\n"
+             "/GRNOD/NODE/1\nA\n1\n/GRNOD/NODE/2\nB\n2\n"
+             "/SURF/ELLIPS/2\nball\n0,2,1\n0,0,0.15\n0.05,0.05,0.05\n/SURF/PLANE/3\nfloor\n0,0,0\n0,0,1\n"
+             "/FUNCT/1\nlinear\n0,0\n1,1e6\n/FUNCT/3\nramp then flat\n0,0\n0.1,0.1\n10,0.1\n"
+             "/FUNCT/4\none\n0,1\n10,1\n"
+             "/INTER/TYPE6/1\nball on floor\n         2         3          \n\n\n1,0,1,1\n\n\n"
+             "/SENSOR/INTER/5\ncontact\n%20.12g\n         1\n"
+             "/INIVEL/TRA/1\nthrown down\n0,0,-1,1,0\n"
+             "%s%s/RUN\n0.4,0.01\n"
+             "/SOLVER\n         1         5    100000               1e-10                   0                   0\n"
+             "               1e-14               1e-11               1e-12               1e-06\n               1e-12\n/END\n",
+             td, cards, extra);
+    return text;
+}
+
+/* /IMPVEL and /GRAV sensor_ID naming an interface sensor: the imposed
+ * velocity X of B = 2 f(t - t_on) (f: 0.1 s ramp to 0.1, /FUNCT/3), Y of
+ * B = 0.3 m/s (/FUNCT/4: the velocity jumps from 0 at t_on) and a gravity
+ * (B alone, 9.81 m/s^2 down) from t_on = t_c + Tdelay; B's x, y and z
+ * against the closed forms, the start events at t_on. */
+static void test_sensor_load_runtime(void)
+{
+    static tu_evlog ev;
+    const double tc = 0.1, g = 9.81;
+    static const char cards[] =
+        "/IMPVEL/1\nX of B\n         3         X         0         5         2         0         0\n"
+        "                   1                   2\n"
+        "/IMPVEL/2\nY of B\n         4         Y         0         5         2         0         0\n"
+        "                   1                 0.3\n"
+        "/GRAV/1\ng on B\n         0         Z         0         5         2                             1               -9.81\n";
+    for (int k = 0; k < 2; k++) {
+        const double td = k ? 0.05 : 0.0, ton = tc + td;
+        rc_model *m = TU_COMPILE_OK(rt_deck(td, cards, ""), "load_rt.rad");
+        if (!m) continue;
+        ENSURE(m->nsens == 1 && m->sens_hold[0] == 1 && m->grav_sens == 0 && m->gwork_adr >= 0);
+        ENSURE(m->imp && m->imp->nt == 2);
+        if (m->imp && m->imp->nt == 2)
+            for (int j = 0; j < 2; j++) ENSURE(m->imp->tson[j] == 0 && isinf(m->imp->ttstart[j]));
+        double *y = calloc((size_t)m->ny, sizeof *y);
+        const double ts[] = {0.05, 0.12, 0.18, 0.4};
+        for (int j = 0; j < 4 && y; j++) {
+            ENSURE(run_to(m, ts[j], y, &ev) == 0);
+            const int a = m->body_yadr[1];
+            const double dt = ts[j] > ton ? ts[j] - ton : 0.0;
+            ENSURE_NEAR(y[a], 1.0 + (dt <= 0.1 ? dt * dt : 0.01 + 0.2 * (dt - 0.1)), 1e-8, 0);
+            ENSURE_NEAR(y[a + 7], dt <= 0.1 ? 2 * dt : 0.2, 1e-8, 0);
+            ENSURE_NEAR(y[a + 2], 1.0 - 0.5 * g * dt * dt, 1e-8, 0);
+            ENSURE_NEAR(y[a + 1], 0.3 * dt, 1e-8, 0);
+            ENSURE_NEAR(y[a + 8], ts[j] > ton ? 0.3 : 0.0, 1e-10, 0);
+            double t = -1;
+            if (ts[j] > ton) {
+                ENSURE(ev_first(&ev, "sensor_trigger", &t, NULL) == 1);
+                ENSURE_NEAR(t, tc, 1e-10, 0);
+                ENSURE(ev_first(&ev, "impvel_start", &t, NULL) == 2);
+                ENSURE_NEAR(t, ton, 1e-10, 0);
+            } else {
+                ENSURE(ev_first(&ev, "impvel_start", &t, NULL) == 0);
+            }
+            /* A, with no gravity, still falls at 1 m/s before its contact */
+            if (ts[j] < tc) ENSURE_NEAR(y[m->body_yadr[0] + 2], 0.15 - ts[j], 1e-10, 0);
+        }
+        free(y);
+        rc_model_free(m);
+    }
+    /* refused: a static analysis, a preload, the sensitivities; a NOT of
+     * the interface sensor; a rotation; Tstart > 0 with it */
+    TU_EXPECT_TEXT_ERROR(rt_deck(0, cards, "/SENSOR/NOT/6\nnot\n\n         5\n"
+                                           "/GRAV/2\ng2\n         0         Z         0         6         1                             1               -9.81\n"),
+                         "load_rt1.rad", "/GRAV/2", "field sensor_ID", "/SENSOR/NOT/6", "turns off again");
+    TU_EXPECT_TEXT_ERROR(rt_deck(0, "/IMPVEL/1\nZZ of B\n         3        ZZ         0         5         2         0         0\n", ""),
+                         "load_rt2.rad", "/IMPVEL/1", "field sensor_ID", "imposed rotation", "not supported yet");
+    TU_EXPECT_TEXT_ERROR(rt_deck(0, "/IMPVEL/1\nX of B\n         3         X         0         5         2         0         0\n"
+                                    "                   1                   2                 0.2\n", ""),
+                         "load_rt3.rad", "/IMPVEL/1", "field Tstart", "not supported yet");
+    TU_EXPECT_TEXT_ERROR(rt_deck(0, cards, "/GRAV/2\ng2\n         0         Z         0         0         1                             1               -9.81\n"),
+                         "load_rt4.rad", "/GRAV/2", "field sensor_ID", "start at one time");
+    rc_model *m = TU_COMPILE_OK(rt_deck(0, cards, ""), "load_rt5.rad");
+    if (m) {
+        rc_error e;
+        rc_error_clear(&e);
+        ENSURE(rc_model_set_preload(m, 1, &e) == RC_EINPUT);
+        ENSURE(strstr(e.msg, "started by a sensor found in the run") != NULL);
+        const int ny = rc_model_state_size(m);
+        double *y = calloc((size_t)ny, sizeof(double)), *sv = calloc((size_t)ny, sizeof(double));
+        const rc_model *mm[1] = {m};
+        const double val[1] = {1.3}, dp[1] = {1e-4}, at[1] = {0.3};
+        rc_error_clear(&e);
+        ENSURE(rc_sens_run(m, 1, mm, mm, val, dp, 1, at, y, sv, NULL, NULL, NULL, &e) == RC_EINPUT);
+        ENSURE(strstr(e.msg, "at a time found in the run is not covered") != NULL);
+        free(y);
+        free(sv);
+    }
+    rc_model_free(m);
+}
+
 void suite_sensor(void);
 void suite_sensor(void)
 {
@@ -704,4 +1016,8 @@ void suite_sensor(void)
     RUN_TEST(test_sensor_inter_errors);
     RUN_TEST(test_sensor_inter_run);
     RUN_TEST(test_sensor_inter_kinds);
+    RUN_TEST(test_sensor_impvel_time);
+    RUN_TEST(test_sensor_grav_time);
+    RUN_TEST(test_sensor_load_errors);
+    RUN_TEST(test_sensor_load_runtime);
 }

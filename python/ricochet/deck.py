@@ -119,8 +119,9 @@ class Deck:
         self.add(f"/INIVEL/{'ROT' if rot else 'TRA'}/{iid}",
                  line(("r", v[0]), ("r", v[1]), ("r", v[2]), ("i", grnod), ("i", 0)), title="initial velocity")
 
-    def grav(self, gid, direction, fscale, grnod=0):
-        self.add(f"/GRAV/{gid}", f"{0:>10d}{direction:>10s}{0:>10d}{0:>10d}{grnod:>10d}" + " " * 10 + r20(1.0) + r20(fscale),
+    def grav(self, gid, direction, fscale, grnod=0, sensor=0):
+        """/GRAV, constant; sensor: sensor_ID (the gravity from its time on)."""
+        self.add(f"/GRAV/{gid}", f"{0:>10d}{direction:>10s}{0:>10d}{sensor:>10d}{grnod:>10d}" + " " * 10 + r20(1.0) + r20(fscale),
                  title="gravity")
 
     def bcs(self, bid, grnod, trarot="111 111", title="fixed"):
@@ -242,9 +243,10 @@ class Deck:
         self.add(f"/SURF/BOX/{sid}", *lines, title=title)
 
     def impvel(self, iid, fct, direction, grnod, ascale=None, fscale=None, tstart=None, tstop=None,
-               title="imposed velocity"):
-        """/IMPVEL: velocity component direction (X Y Z XX YY ZZ) = fscale f(t/ascale)."""
-        self.add(f"/IMPVEL/{iid}", f"{fct:>10d}{direction:>10s}{0:>10d}{0:>10d}{grnod:>10d}{0:>10d}{0:>10d}",
+               title="imposed velocity", sensor=0):
+        """/IMPVEL: velocity component direction (X Y Z XX YY ZZ) = fscale f(t/ascale); sensor: sensor_ID
+        (imposed from its time Ts on as fscale f((t - Ts)/ascale))."""
+        self.add(f"/IMPVEL/{iid}", f"{fct:>10d}{direction:>10s}{0:>10d}{sensor:>10d}{grnod:>10d}{0:>10d}{0:>10d}",
                  line(("r", ascale), ("r", fscale), ("r", tstart), ("r", tstop)), title=title)
 
     def run(self, tend, dtout, ev_state=None, on_viol=None):

@@ -132,7 +132,7 @@ rc_status rc_card_grav(rc_reader *rd, const rc_block *b)
     rc_field f[] = {RC_F_INT("fct_IDT", &g->fct_id, 0, RC_FF_NONNEG),
                     RC_F_STR("DIR", dir, 10),
                     RC_F_INT("skew_ID", &g->skew_id, 0, RC_FF_NONNEG),
-                    RC_F_INTN("sensor_ID", &g->sensor_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_sensor),
+                    RC_F_INT("sensor_ID", &g->sensor_id, 0, RC_FF_NONNEG),
                     RC_F_INT("grnod_ID", &g->grnod_id, 0, RC_FF_NONNEG),
                     RC_F_SKIP(10),
                     RC_F_REALD("Ascale_x", &g->ascale, 1, RC_FF_ZDEF | RC_FF_POS, RC_D_T),
@@ -305,7 +305,7 @@ rc_status rc_card_impvel(rc_reader *rd, const rc_block *b)
     rc_field l1[] = {RC_F_INT("fct_IDT", &v->fct_id, 0, RC_FF_POS),
                      RC_F_STR("Dir", dir, 10),
                      RC_F_INT("skew_ID", &v->skew_id, 0, RC_FF_NONNEG),
-                     RC_F_INTN("sensor_ID", &v->sensor_id, RC_FF_NONNEG | RC_FF_ONLY0, rc_note_sensor),
+                     RC_F_INT("sensor_ID", &v->sensor_id, 0, RC_FF_NONNEG),
                      RC_F_INT("grnod_ID", &v->grnod_id, 0, RC_FF_POS),
                      RC_F_INTN("frame_ID", &v->frame_id, RC_FF_NONNEG | RC_FF_ONLY0, "(moving frames)"),
                      RC_F_INTN("Icoor", &v->icoor, RC_FF_NONNEG | RC_FF_ONLY0, "(cylindrical coordinates)")};

@@ -305,7 +305,8 @@ typedef struct rc_case_grav {
     double u[3];    /* the unit direction in global axes (axis dir of the
                      * skew, or of the global frame) */
     int skew_id;    /* 0: global axes; a /SKEW/FIX */
-    int sensor_id;  /* 0 only */
+    int sensor_id;  /* 0: none; a sensor known when compiling: the gravity
+                     * acts from its time on, the function shifted by it */
     int grnod_id;   /* 0: all bodies */
     double ascale;  /* [s], default 1 */
     double fscale;  /* [m/s^2], default 1 */

@@ -44,7 +44,11 @@ typedef struct rc_case_impvel {
     char title[101];
     int fct_id;      /* time function (required) */
     int dir;         /* 0..2: X Y Z (translation); 3..5: XX YY ZZ (rotation) */
-    int skew_id, sensor_id, frame_id, icoor; /* 0 only */
+    int skew_id;     /* 0: global axes; a /SKEW/FIX */
+    int sensor_id;   /* 0: none; a sensor known when compiling (model/sensor.c:
+                        rc_sensor_load_on): imposed from its time on, the
+                        function shifted by that time */
+    int frame_id, icoor; /* 0 only */
     int grnod_id;    /* nodes whose bodies are driven (required) */
     double ascale;   /* [s] */
     double fscale;   /* [m/s] or [rad/s] */

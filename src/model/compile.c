@@ -364,6 +364,31 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
         }
         m->grav_table = tab;
         m->grav_ascale = gr->ascale;
+        /* a sensor: the gravity from its time on, one start for all cards
+         * (they share one time function) */
+        double ton;
+        int gs;
+        st = rc_sensor_load_on(c, gr->sensor_id, gl, card, "a gravity", &ton, &gs, err);
+        if (st) break;
+        if (k > 0 && (gs >= 0 || m->grav_sens >= 0) && gs != m->grav_sens) {
+            st = RC_SET(err, RC_EINPUT,
+                        RC_LOCFMT "card %s, field sensor_ID: this card's gravity starts %s, /GRAV/%d's %s: all "
+                        "/GRAV cards must start at one time (they share one time function; not supported yet); "
+                        "expected the same sensor on every /GRAV",
+                        RC_LOC(gl), card, gs >= 0 ? "with a sensor found in the run" : "at a time known when compiling",
+                        c->grav[0].id, m->grav_sens >= 0 ? "with another sensor, found in the run" : "at a time known when compiling");
+            break;
+        }
+        if (k > 0 && gs < 0 && ton != m->grav_tstart) {
+            st = RC_SET(err, RC_EINPUT,
+                        RC_LOCFMT "card %s, field sensor_ID: this card's gravity starts at %.9g s, /GRAV/%d's at "
+                        "%.9g s: all /GRAV cards must start at one time (they share one time function; not "
+                        "supported yet); expected the same sensor time (or no sensor) on every /GRAV",
+                        RC_LOC(gl), card, ton, c->grav[0].id, m->grav_tstart);
+            break;
+        }
+        m->grav_sens = gs;
+        if (gs < 0) m->grav_tstart = ton;
         st = group_bodies(c, gr->grnod_id, gl, card, flag, err);
         for (int b = 0; b < c->nrbody && !st; b++)
             if (flag[b]) {
@@ -693,7 +718,7 @@ static rc_status layout(const rc_case *c, rc_model *m, rc_error *err)
     }
     ny = rc_cpl_layout(m, ny);
     /* a gravity that varies in time has no potential: integrate its work */
-    m->gwork_adr = m->grav_table >= 0 ? ny++ : -1;
+    m->gwork_adr = m->grav_table >= 0 || m->grav_tstart > 0 || m->grav_sens >= 0 ? ny++ : -1;
     /* work of the imposed velocities (imposed.c) */
     ny = rc_imp_layout(m, ny);
     m->ny = ny;
@@ -896,6 +921,7 @@ rc_status rc_model_build_drop(const rc_case *c, const rc_t7_drop *drop, rc_model
     }
     m->grav_table = -1;
     m->grav_ascale = 1.0;
+    m->grav_sens = -1;
 
     /* curves */
     m->ntable = c->nfunct;

@@ -16,12 +16,13 @@
 #include "case/case_power.h"
 #include "base/error.h"
 #include "model/imposed.h"
+#include "model/sensor.h"
 
 
 void rc_imp_free(rc_imposed *p)
 {
     if (!p) return;
-    void *a[] = {p->tu, p->tsk, p->sslot, p->tbody, p->tdir, p->trow, p->ttab, p->tascale, p->tfscale, p->ttstop, p->ttstart, p->tsens, p->rsens, p->rbody, p->rtab,
+    void *a[] = {p->tu, p->tsk, p->sslot, p->tbody, p->tdir, p->trow, p->ttab, p->tascale, p->tfscale, p->ttstop, p->ttstart, p->ttshift, p->tsens, p->tson, p->rsens, p->rbody, p->rtab,
                  p->rascale, p->rfscale, p->rtstop, p->rqslot, p->wslot, p->row_imp};
     for (size_t k = 0; k < sizeof a / sizeof a[0]; k++) free(a[k]);
     free(p);
@@ -46,10 +47,63 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
      * skew axis (dir[k] = -1, u[k]) */
     int *dir = malloc(((size_t)n + 1) * sizeof(int));
     double *u = malloc((3 * (size_t)n + 1) * sizeof(double)), *sign = malloc(((size_t)n + 1) * sizeof(double));
+    /* each card's start and the shift of its function [s]: with a sensor
+     * (sensor_ID), the sensor's time on Ts, imposed over (Ts, Tstop] as
+     * f((t - Ts) / Ascale) (Radioss: the function shifted by the
+     * activation time, imposed only when Ts is within [Tstart, Tstop]);
+     * without, Tstart and no shift */
+    double *tst = malloc(((size_t)n + 1) * sizeof(double)), *tsh = malloc(((size_t)n + 1) * sizeof(double));
+    int *ton_rt = malloc(((size_t)n + 1) * sizeof(int)); /* a sensor found in the run, -1 */
     rc_status st = RC_OK;
-    if (!dir || !u || !sign) st = RC_SET(err, RC_ENOMEM, "out of memory");
+    if (!dir || !u || !sign || !tst || !tsh || !ton_rt) st = RC_SET(err, RC_ENOMEM, "out of memory");
     for (int k = 0; k < n && !st; k++) {
         const rc_case_impvel *v = &c->impvel[k];
+        tst[k] = v->tstart;
+        tsh[k] = 0.0;
+        ton_rt[k] = -1;
+        if (v->sensor_id) {
+            char card[64];
+            snprintf(card, sizeof card, "/IMPVEL/%d", v->id);
+            double ton;
+            if ((st = rc_sensor_load_on(c, v->sensor_id, v->line_loc[0], card, "an imposed velocity", &ton, &ton_rt[k],
+                                        err)))
+                break;
+            const char *kn = rc_sensor_kind_name((int)c->sensor[rc_case_find_sensor(c, v->sensor_id)].kind);
+            if (ton_rt[k] >= 0) {
+                /* a start at the sensor's event: a translation, Tstart <= 0 */
+                if (v->dir >= 3)
+                    st = RC_SET(err, RC_EINPUT,
+                                RC_LOCFMT "card %s, field sensor_ID: /SENSOR/%s/%d turns on at a time found in the "
+                                "run: a later start of an imposed rotation (Dir %s, a jump of the angular velocity) "
+                                "is not supported yet; expected a translation (Dir X, Y, Z), or no sensor",
+                                RC_LOC(v->line_loc[0]), card, kn, v->sensor_id, v->dir == 3 ? "XX" : v->dir == 4 ? "YY" : "ZZ");
+                else if (v->tstart > 0)
+                    st = RC_SET(err, RC_EINPUT,
+                                RC_LOCFMT "card %s, field Tstart: /SENSOR/%s/%d turns on at a time found in the run: "
+                                "a window [Tstart, Tstop) that its time must fall in, with Tstart > 0 (%.9g s), is not "
+                                "supported yet; expected Tstart <= 0 with a distance or interface sensor",
+                                RC_LOC(v->line_loc[1]), card, kn, v->sensor_id, v->tstart);
+                if (st) break;
+                tst[k] = INFINITY; /* free (its initial velocity) until the event */
+            } else if (ton < v->tstart || !(ton < v->tstop)) {
+                st = RC_SET(err, RC_EINPUT,
+                            RC_LOCFMT "card %s, field sensor_ID: /SENSOR/%s/%d turns on at %.9g s, outside [Tstart, "
+                            "Tstop) = [%.9g, %.9g) s: the velocity is imposed only when its sensor turns on within "
+                            "that window, so it would never act; expected a sensor time within [Tstart, Tstop)",
+                            RC_LOC(v->line_loc[0]), card, kn, v->sensor_id, ton, v->tstart, v->tstop);
+                break;
+            } else if (ton > 0 && v->dir >= 3) {
+                st = RC_SET(err, RC_EINPUT,
+                            RC_LOCFMT "card %s, field sensor_ID: /SENSOR/%s/%d turns on at %.9g s > 0: a later start "
+                            "of an imposed rotation (Dir %s, a jump of the angular velocity) is not supported yet; "
+                            "expected a sensor on from t = 0 (Tdelay 0) for a rotation, or no sensor",
+                            RC_LOC(v->line_loc[0]), card, kn, v->sensor_id, ton, v->dir == 3 ? "XX" : v->dir == 4 ? "YY" : "ZZ");
+                break;
+            } else {
+                tst[k] = ton;
+                tsh[k] = ton;
+            }
+        }
         dir[k] = v->dir;
         sign[k] = 1.0;
         for (int i = 0; i < 3; i++) u[3 * k + i] = v->dir == i;
@@ -157,6 +211,8 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
         p->tfscale = calloc((size_t)p->nt + 1, sizeof(double));
         p->ttstop = calloc((size_t)p->nt + 1, sizeof(double));
         p->ttstart = calloc((size_t)p->nt + 1, sizeof(double));
+        p->ttshift = calloc((size_t)p->nt + 1, sizeof(double));
+        p->tson = calloc((size_t)p->nt + 1, sizeof(int));
         p->tsens = calloc((size_t)p->nt + 1, sizeof(int));
         p->rsens = calloc((size_t)p->nr + 1, sizeof(int));
         p->tu = calloc(3 * (size_t)p->nt + 1, sizeof(double));
@@ -167,7 +223,7 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
         p->rfscale = calloc(3 * (size_t)p->nr + 1, sizeof(double));
         p->rtstop = calloc((size_t)p->nr + 1, sizeof(double));
         p->rqslot = calloc(12 * (size_t)p->nr + 1, sizeof(int64_t));
-        if (!p->tbody || !p->tdir || !p->trow || !p->ttab || !p->tascale || !p->tfscale || !p->ttstop || !p->ttstart || !p->tsens || !p->rsens || !p->tu || !p->tsk || !p->rbody ||
+        if (!p->tbody || !p->tdir || !p->trow || !p->ttab || !p->tascale || !p->tfscale || !p->ttstop || !p->ttstart || !p->ttshift || !p->tson || !p->tsens || !p->rsens || !p->tu || !p->tsk || !p->rbody ||
             !p->rtab || !p->rascale || !p->rfscale || !p->rtstop || !p->rqslot)
             st = RC_SET(err, RC_ENOMEM, "out of memory");
     }
@@ -198,7 +254,7 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
             double f0, df;
             rc_table_eval(&m->table[tab], 0.0, &f0, &df);
             /* a later start (Tstart > 0) leaves the initial velocity free */
-            if (v->tstop >= 0 && v->tstart <= 0) {
+            if (v->tstop >= 0 && tst[k] <= 0) {
                 if (dir[k] < 0) {
                     const double du = fs * f0 - (uk[0] * y0[7] + uk[1] * y0[8] + uk[2] * y0[9]);
                     for (int i = 0; i < 3; i++) y0[7 + i] += du * uk[i];
@@ -214,7 +270,9 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
                 p->tascale[it] = v->ascale;
                 p->tfscale[it] = fs;
                 p->ttstop[it] = v->tstop;
-                p->ttstart[it] = v->tstart > 0 ? v->tstart : -INFINITY;
+                p->ttstart[it] = tst[k] > 0 && isfinite(tst[k]) ? tst[k] : -INFINITY;
+                p->ttshift[it] = tsh[k];
+                p->tson[it] = ton_rt[k];
                 p->tsens[it] = v->hold_sens - 1;
                 it++;
             } else {
@@ -231,6 +289,9 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
     free(dir);
     free(u);
     free(sign);
+    free(tst);
+    free(tsh);
+    free(ton_rt);
     return st; /* on error the model frees m->imp */
 }
 
@@ -353,9 +414,17 @@ void rc_imp_print(const rc_model *m, FILE *f)
             snprintf(until, sizeof until, "sensor %d turns on (a time found in the run)", m->sens_id[p->tsens[k]]);
         else
             snprintf(until, sizeof until, "%.5g s", p->ttstop[k]);
-        fprintf(f, "  /RBODY/%-6d velocity %s = %.5g f(t / %.5g) (/FUNCT/%d) from %.5g until %s\n",
-                m->body_id[p->tbody[k]], what, p->tfscale[k], p->tascale[k], m->table[p->ttab[k]].id,
-                isfinite(p->ttstart[k]) ? p->ttstart[k] : 0.0, until);
+        char arg[48];
+        if (p->tson[k] >= 0 && m->sens_id) snprintf(arg, sizeof arg, "(t - t_on)");
+        else if (p->ttshift[k] > 0) snprintf(arg, sizeof arg, "(t - %.5g)", p->ttshift[k]);
+        else snprintf(arg, sizeof arg, "t");
+        char from[96];
+        if (p->tson[k] >= 0 && m->sens_id)
+            snprintf(from, sizeof from, "t_on, when sensor %d turns on (a time found in the run),", m->sens_id[p->tson[k]]);
+        else snprintf(from, sizeof from, "%.5g", isfinite(p->ttstart[k]) ? p->ttstart[k] : 0.0);
+        fprintf(f, "  /RBODY/%-6d velocity %s = %.5g f(%s / %.5g) (/FUNCT/%d) from %s until %s\n",
+                m->body_id[p->tbody[k]], what, p->tfscale[k], arg, p->tascale[k], m->table[p->ttab[k]].id, from,
+                until);
     }
     for (int j = 0; j < p->nr && j < 20; j++) {
         fprintf(f, "  /RBODY/%-6d angular velocity (global axes) =", m->body_id[p->rbody[j]]);

@@ -3,6 +3,9 @@
  * component of a body follows Fscale f(t / Ascale) for Tstart < t <= Tstop
  * (a translation with Tstart > 0 is free before; at Tstart, a time
  * breakpoint, its velocity jumps to Fscale f(Tstart / Ascale): rc_imp_start).
+ * With a sensor (sensor_ID, a time known when compiling, Ts): imposed for
+ * Ts < t <= Tstop as Fscale f((t - Ts) / Ascale), the function shifted by
+ * Ts (ttshift), the jump at Ts to Fscale f(0).
  *
  * Like the held DOFs of /BCS, an imposed component is a velocity state
  * whose rate the right-hand side overwrites, here with the derivative of the
@@ -39,9 +42,17 @@
 
 /* Is imposed translation k (rotation j) held at t? Within its window and,
  * for a sensor hold, not yet released (rel: rc_data.sens_rel, set at the
- * sensor's event). */
-#define RC_IMP_T_ON(p, k, t, rel) \
-    (!((t) > (p)->ttstop[k] || (t) <= (p)->ttstart[k]) && ((p)->tsens[k] < 0 || !(rel)[(p)->tsens[k]]))
+ * sensor's event). A translation's window is (Tstart, Tstop] until the
+ * run restarted at the time breakpoint Tstart, [Tstart, Tstop] after
+ * (tbp: rc_data.t_bp), so that the restarted integration starts from the
+ * right limit, the imposed rate (a function whose slope changes soon
+ * after Tstart is then followed from the first step). */
+#define RC_IMP_T_ON(p, k, t, rel, tbp)                                                                              \
+    (!((t) > (p)->ttstop[k] || (t) < (p)->ttstart[k] || ((t) == (p)->ttstart[k] && (tbp) < (t))) &&              \
+     ((p)->tsens[k] < 0 || !(rel)[(p)->tsens[k]]) && ((p)->tson[k] < 0 || (rel)[(p)->tson[k]]))
+/* The shift of imposed translation k's function [s]: its sensor's time on
+ * found in the run (ton: rc_data.sens_ton), else ttshift. */
+#define RC_IMP_T_SHIFT(p, k, ton) ((p)->tson[k] >= 0 ? (ton)[(p)->tson[k]] : (p)->ttshift[k])
 #define RC_IMP_R_ON(p, j, t, rel) (!((t) > (p)->rtstop[j]) && ((p)->rsens[j] < 0 || !(rel)[(p)->rsens[j]]))
 
 typedef struct rc_imposed {
@@ -58,7 +69,17 @@ typedef struct rc_imposed {
     int *ttab;           /* [nt] table index of the time function           */
     double *tascale, *tfscale, *ttstop; /* [nt] [s] [m/s] [s]               */
     double *ttstart;     /* [nt] Tstart [s]: imposed for ttstart < t <= ttstop;
-                            -INFINITY (Tstart <= 0) from t = 0 on          */
+                            -INFINITY (Tstart <= 0) from t = 0 on; with a
+                            sensor (sensor_ID), the sensor's time on     */
+    double *ttshift;     /* [nt] [s] the function's shift: Fscale f((t -
+                            ttshift) / Ascale); a sensor's time on, else 0 */
+    int *tson;           /* [nt] a start by a sensor found in the run (/IMPVEL
+                            sensor_ID: a distance or interface sensor, or a
+                            logic sensor of one): free until its event
+                            (rc_data.sens_rel), then imposed as Fscale
+                            f((t - t_on) / Ascale), t_on its time on
+                            (rc_data.sens_ton); the velocity jumps at the
+                            event (rc_imp_start_sens); -1: none */
     int *tsens;          /* [nt] a sensor hold (model/sensor.c) that ends when
                             sensor tsens is on, a time found in the run
                             (rc_data.sens_rel; ttstop INFINITY); -1: none    */

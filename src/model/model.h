@@ -225,6 +225,15 @@ struct rc_model {
                                 outputs add it back */
     int grav_table;      /* table index of the gravity time function, -1: constant */
     double grav_ascale;  /* [s] abscissa scale of the gravity function */
+    double grav_tstart;  /* [s] the /GRAV cards' sensor's time on Ts (sensor_ID,
+                            a time known when compiling): no gravity for
+                            t <= Ts, then f((t - Ts) / Ascale), a time
+                            breakpoint; 0: from t = 0, unshifted */
+    int grav_sens;       /* the /GRAV cards' sensor found in the run (a
+                            distance or interface sensor, or a logic sensor
+                            of one): no gravity until its event (rc_data.
+                            sens_rel), then f((t - t_on) / Ascale), t_on its
+                            time on (rc_data.sens_ton); -1: none */
     int gwork_adr;       /* state: potential energy of a time-varying gravity,
                             E' = -sum m g(t).v [J]; -1 when gravity is constant */
     int64_t *gwork_slot; /* [3*nbody] Jacobian slots (row gwork_adr, columns v) */
@@ -247,7 +256,10 @@ struct rc_model {
     int *sens_kind;      /* [nsens] rc_case_sensor_kind (0 TIME, 1 DIST, 2 AND, 3 OR, 4 NOT, 5 INTER) */
     int *sens_in;        /* [2*nsens] AND, OR: the input sensors' indices; NOT: its input (-1: none) */
     int *sens_hold;      /* [nsens] 1: the sensor's time on is found in the run and
-                            releases a held body (/RBODY sens_ID; imposed.h tsens) */
+                            releases a held body (/RBODY sens_ID; imposed.h tsens)
+                            or starts a load (/IMPVEL sensor_ID, imposed.h tson;
+                            /GRAV sensor_ID, grav_sens): its release root and
+                            event (rc_data.sens_rel) */
     double *sens_tdelay; /* [nsens] [s] */
     int *sens_body;      /* [2*nsens] the points' bodies (-1: fixed in space) */
     double *sens_p;      /* [6*nsens] the points in their bodies' frames [m] */

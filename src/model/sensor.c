@@ -202,6 +202,45 @@ rc_status rc_sensor_tstart(const rc_case *c, int sensor_id, rc_loc loc, const ch
     return RC_OK;
 }
 
+rc_status rc_sensor_load_on(const rc_case *c, int sensor_id, rc_loc loc, const char *card, const char *what,
+                            double *ton, int *sens, rc_error *err)
+{
+    *ton = 0.0;
+    *sens = -1;
+    if (sensor_id == 0) return RC_OK;
+    const int k = rc_case_find_sensor(c, sensor_id);
+    if (k < 0)
+        RC_RAISE(err, RC_EINPUT, RC_LOCFMT "card %s, field sensor_ID: expected the id of a /SENSOR, got %d (no such sensor)",
+                 RC_LOC(loc), card, sensor_id);
+    const char *kn = kind_name[c->sensor[k].kind];
+    if (runtime(c, k)) {
+        if (has_not(c, k))
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card %s, field sensor_ID: /SENSOR/%s/%d depends on a /SENSOR/NOT of a sensor found in "
+                     "the run (a distance or interface sensor): it turns off again at a time found in the run; %s "
+                     "that ends when its sensor turns off is not supported yet; expected a sensor that turns on for "
+                     "good",
+                     RC_LOC(loc), card, kn, sensor_id, what);
+        *ton = INFINITY;
+        *sens = k; /* on at a time found in the run: the load starts at its event */
+        return RC_OK;
+    }
+    double on, off;
+    if (static_on(c, k, &on, &off) || (isfinite(off) && on < off))
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card %s, field sensor_ID: /SENSOR/%s/%d turns off again (it depends on a /SENSOR/NOT: "
+                 "on while its input is off): %s that ends when its sensor turns off is not supported yet; "
+                 "expected a sensor that turns on for good",
+                 RC_LOC(loc), card, kn, sensor_id, what);
+    if (!isfinite(on))
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card %s, field sensor_ID: /SENSOR/%s/%d never turns on (its inputs are never on "
+                 "together): %s would never act; expected a sensor that turns on",
+                 RC_LOC(loc), card, kn, sensor_id, what);
+    *ton = on;
+    return RC_OK;
+}
+
 /* q (w, x, y, z) applied to v transposed: the body frame's coordinates of a global vector. */
 static void rot_t(const double *q, const double *v, double *o)
 {
@@ -265,9 +304,15 @@ rc_status rc_sensor_compile(const rc_case *c, rc_model *m, rc_error *err)
     if (!m->sens_id || !m->sens_kind || !m->sens_tdelay || !m->sens_body || !m->sens_p || !m->sens_d || !m->sens_in ||
         !m->sens_hold || !m->sens_inter)
         RC_RAISE(err, RC_ENOMEM, "out of memory");
-    /* the sensors found in the run that release a held body */
+    /* the sensors found in the run that release a held body, or start an
+     * imposed velocity or a gravity (their release root and event) */
     for (int b = 0; b < c->nrbody; b++) {
         const int k = c->rbody[b].sens_id ? rc_case_find_sensor(c, c->rbody[b].sens_id) : -1;
+        if (k >= 0 && runtime(c, k)) m->sens_hold[k] = 1;
+    }
+    for (int j = 0; j < c->nimpvel + c->ngrav; j++) {
+        const int id = j < c->nimpvel ? c->impvel[j].sensor_id : c->grav[j - c->nimpvel].sensor_id;
+        const int k = id ? rc_case_find_sensor(c, id) : -1;
         if (k >= 0 && runtime(c, k)) m->sens_hold[k] = 1;
     }
     for (int k = 0; k < m->nsens; k++) {

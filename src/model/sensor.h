@@ -44,6 +44,17 @@ void rc_sensor_end(rc_sensor_case *x);
  * (a NOT of a distance sensor). */
 rc_status rc_sensor_tstart(const rc_case *c, int sensor_id, rc_loc loc, const char *card, double *tstart,
                            double *tstop, int *sens, rc_error *err);
+/* The time a load of `card` (an /IMPVEL, a /GRAV, read at `loc`) starts
+ * whose sensor_ID is sensor_id (`what` names the load in messages): 0 for
+ * no sensor; a sensor known when compiling that turns on for good: its
+ * time on [s] (a time sensor's Tdelay, a logic sensor's from its inputs');
+ * a sensor found in the run (a distance or interface sensor, or a logic
+ * sensor of one): *ton INFINITY and *sens its index (the load starts at
+ * its event; otherwise *sens is -1). RC_EINPUT at loc, field sensor_ID,
+ * when the sensor does not exist, turns off again (a /SENSOR/NOT of a
+ * sensor that turns on), or never turns on. */
+rc_status rc_sensor_load_on(const rc_case *c, int sensor_id, rc_loc loc, const char *card, const char *what,
+                            double *ton, int *sens, rc_error *err);
 /* The model's sensors (m->sens_*), one per /SENSOR card: a distance
  * sensor's nodes in their bodies' frames (the bodies' initial poses, in
  * the origin's coordinates: after the origin shift); an interface

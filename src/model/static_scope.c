@@ -114,8 +114,31 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
             RC_RAISE(err, RC_EINPUT,
                      RC_LOCFMT "card /IMPVEL: " RC_STATIC_NOT " (%s, /RBODY/%d); expected Tstart <= 0 (a held "
                                "displacement from the load time 0), or %s",
-                     RC_LOC(m->end_loc), "an imposed velocity starting later (Tstart > 0)", how,
+                     RC_LOC(m->end_loc), "an imposed velocity starting later (Tstart > 0, or its sensor_ID's time > 0)", how,
                      m->body_id[m->imp->tbody[k]], alt);
+    for (int k = 0; m->imp && k < m->imp->nt; k++)
+        if (m->imp->tson[k] >= 0)
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card /IMPVEL, field sensor_ID: " RC_STATIC_NOT " (%s, /SENSOR/%s/%d on /RBODY/%d); "
+                               "expected a /SENSOR/TIME, no sensor, or %s",
+                     RC_LOC(m->end_loc), "an imposed velocity started by a sensor found in the run (a distance or "
+                     "interface sensor)", how, rc_sensor_kind_name(m->sens_kind[m->imp->tson[k]]),
+                     m->sens_id[m->imp->tson[k]], m->body_id[m->imp->tbody[k]], alt);
+    if (m->grav_sens >= 0)
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card /GRAV, field sensor_ID: " RC_STATIC_NOT " (%s, /SENSOR/%s/%d); expected a "
+                           "/SENSOR/TIME, no sensor, or %s",
+                 RC_LOC(m->end_loc), "a gravity switched on by a sensor found in the run (a distance or interface "
+                 "sensor)", how, rc_sensor_kind_name(m->sens_kind[m->grav_sens]), m->sens_id[m->grav_sens], alt);
+    /* a gravity switched on by a sensor at Ts > 0 jumps on the load path */
+    if (m->grav_tstart > 0) {
+        char gw[96];
+        snprintf(gw, sizeof gw, "a gravity switched on by its sensor at %.9g s", m->grav_tstart);
+        RC_RAISE(err, RC_EINPUT,
+                 RC_LOCFMT "card /GRAV, field sensor_ID: " RC_STATIC_NOT " (%s); expected a sensor on from t = 0 "
+                           "(Tdelay 0), no sensor, or %s",
+                 RC_LOC(m->end_loc), gw, how, alt);
+    }
     /* a distance or interface sensor's trigger is an event of a dynamic run */
     for (int i = 0; i < m->ninter; i++)
         if (m->inter_sens[i] >= 0)

@@ -48,14 +48,15 @@ static int cmp_double(const void *a, const void *b)
 }
 
 /* Time breakpoints: instants where the right-hand side jumps by time alone
- * (the start and the end of an imposed velocity, /IMPVEL Tstart > 0 and
- * Tstop), inside (0, tend), sorted,
+ * (the start and the end of an imposed velocity, /IMPVEL Tstart > 0 or its
+ * sensor's time, and Tstop; the start of a gravity by its sensor, /GRAV
+ * sensor_ID), inside (0, tend), sorted,
  * distinct. The integrator is stopped exactly there (its stop time) and restarted.
  * Returns the count; *bp is allocated (free it). */
 int rc_bk_time_breakpoints(const rc_model *m, double tend, double **bp)
 {
     const rc_imposed *p = m->imp;
-    int n = 0, cap = p ? 2 * p->nt + p->nr : 0;
+    int n = 0, cap = (p ? 2 * p->nt + p->nr : 0) + 1;
     *bp = malloc(((size_t)cap + 1) * sizeof(double));
     if (!*bp) return -1;
     for (int k = 0; p && k < p->nt + p->nr; k++) {
@@ -64,6 +65,8 @@ int rc_bk_time_breakpoints(const rc_model *m, double tend, double **bp)
         if (k < p->nt && p->ttstart[k] > 0 && p->ttstart[k] < tend && p->ttstart[k] <= p->ttstop[k])
             (*bp)[n++] = p->ttstart[k];
     }
+    /* gravity switched on by a sensor (/GRAV sensor_ID): it jumps there */
+    if (m->grav_tstart > 0 && m->grav_tstart < tend) (*bp)[n++] = m->grav_tstart;
     qsort(*bp, (size_t)n, sizeof(double), cmp_double);
     int u = 0;
     for (int k = 0; k < n; k++)
@@ -99,7 +102,8 @@ void rc_bk_root_directions(const rc_model *m, const rc_data *d, int *dir)
 /* The distance and interface sensors triggered since the last call: their
  * events (element /SENSOR/DIST/id, /SENSOR/INTER/id; no interface values); the bodies released by
  * a sensor found in the run: an impvel_stop event each (element
- * /RBODY/id: its hold ends); then cleared. */
+ * /RBODY/id: its hold ends); the imposed velocities started by one: an
+ * impvel_start event each (element /RBODY/id); then cleared. */
 static rc_status sensor_events(const rc_model *m, rc_data *d, ev_sink *k, double t, const double *y, long *count,
                                rc_error *err)
 {
@@ -121,6 +125,14 @@ static rc_status sensor_events(const rc_model *m, rc_data *d, ev_sink *k, double
             snprintf(el, sizeof el, "/RBODY/%d", m->body_id[m->imp->tbody[j]]);
             (*count)++;
             if ((st = rc_bk_sink_event(k, t, RC_EV_IMPVEL_STOP, el, NULL, err))) return st;
+        }
+        /* the imposed velocities it starts (/IMPVEL sensor_ID): one event
+         * per started translation (element /RBODY/id) */
+        for (int j = 0; (nw & 2) && m->imp && j < m->imp->nt; j++) {
+            if (m->imp->tson[j] != s || t > m->imp->ttstop[j]) continue;
+            snprintf(el, sizeof el, "/RBODY/%d", m->body_id[m->imp->tbody[j]]);
+            (*count)++;
+            if ((st = rc_bk_sink_event(k, t, RC_EV_IMPVEL_START, el, NULL, err))) return st;
         }
     }
     return RC_OK;
@@ -953,6 +965,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
                 if ((st = rc_bk_sink_event(&sink, t, RC_EV_IMPVEL_STOP, "/IMPVEL", NULL, err))) goto done;
             }
             bk->add_stats(self, &s);
+            d->t_bp = t; /* the right limit from here on (RC_IMP_T_ON) */
             BKCHECK(bk->restart(self, t, 1), "ReInit");
             s.reinits++;
             if ((st = method_event(bk, self, &sink, &s, err))) goto done;

@@ -136,6 +136,7 @@ static void copy_modes(const rc_model *m, const rc_data *src, rc_data *dst)
         memcpy(dst->sens_new, src->sens_new, (size_t)m->nsens * sizeof(int));
         memcpy(dst->sens_rel, src->sens_rel, (size_t)m->nsens * sizeof(int));
     }
+    dst->t_bp = src->t_bp;
     if (np > 0) {
         memcpy(dst->pt_slip, src->pt_slip, np * sizeof(int));
         memcpy(dst->pt_lband, src->pt_lband, np * sizeof(double));
@@ -707,6 +708,23 @@ rc_status rc_sens_run(const rc_model *m, int np, const rc_model *const *m_lo, co
                           "sensitivities: /RBODY/%d is released by sensor %d at a time found in the run: not covered "
                           "(the derivative of its release time is not followed in this version)",
                           m->body_id[m->imp->tbody[k]], m->sens_id[m->imp->tsens[k]]);
+    for (int k = 0; m->imp && k < m->imp->nt; k++)
+        if (m->imp->tson[k] >= 0)
+            return RC_SET(err, RC_EINPUT,
+                          "sensitivities: an /IMPVEL on /RBODY/%d started by sensor %d at a time found in the run is "
+                          "not covered (the derivative of its start time is not followed in this version)",
+                          m->body_id[m->imp->tbody[k]], m->sens_id[m->imp->tson[k]]);
+    if (m->grav_sens >= 0)
+        return RC_SET(err, RC_EINPUT,
+                      "sensitivities: a /GRAV switched on by sensor %d at a time found in the run is not covered (the "
+                      "derivative of its start time is not followed in this version)",
+                      m->sens_id[m->grav_sens]);
+    if (m->grav_tstart > 0)
+        return RC_SET(err, RC_EINPUT,
+                      "sensitivities: a /GRAV switched on by its sensor at %g s is not covered (the gravity jumps "
+                      "there, at a time that may itself be a parameter, the sensor's Tdelay: a jump the "
+                      "sensitivities do not follow in this version)",
+                      m->grav_tstart);
     for (int k = 0; m->imp && k < m->imp->nt; k++)
         if (m->imp->ttstart[k] > 0)
             return RC_SET(err, RC_EINPUT,

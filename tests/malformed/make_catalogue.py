@@ -824,6 +824,17 @@ TL('type6_sensor_inter_static', T6, 'static analysis',
    lambda lines: at(T6, 2, 21, 30, '5', expect_k=0)(at('/SOLVER', 1, 1, 10, '3')(before_end(SINTER('         2'))(lines)[0])[0]))
 
 
+# ---- /IMPVEL and /GRAV sensor_ID (a load from its sensor's time on)
+TL('impvel_sensor_missing', IV, 'field sensor_ID', at(IV, 2, 31, 40, '9'))
+TL('impvel_sensor_rotation_later', IV, 'field sensor_ID',
+   lambda lines: at(IV, 2, 31, 40, '4')(before_end(SENS)(lines)[0]))
+TL('impvel_sensor_dist_rotation', IV, 'field sensor_ID',
+   lambda lines: at(IV, 2, 31, 40, '5')(before_end(SDIST())(lines)[0]))
+TL('grav_sensor_not', GR, 'field sensor_ID',
+   lambda lines: at(GR, 2, 31, 40, '8')(before_end(SENS + [SNOT, 'not', '                   0', '         4'])(lines)[0]))
+TL('grav_sensor_not_inter', GR, 'field sensor_ID',
+   lambda lines: at(GR, 2, 31, 40, '8')(before_end(SINTER() + [SNOT, 'not', '                   0', '         5'])(lines)[0]))
+
 def write_all():
     for old in glob.glob('[0-9][0-9][0-9]_*'):
         os.remove(old)

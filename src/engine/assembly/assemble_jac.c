@@ -32,7 +32,7 @@ static void dense_body(const rc_model *m, int b, double t, const double *y, doub
 {
     T yc[RC_NB], yd[RC_NB];
     load_body(m, b, y, yc);
-    const double gf = rc_gravity_factor(m, t);
+    const double gf = rc_gravity_factor(m, t); /* gravity does not vary with y: either limit */
     for (int c = 0; c < RC_NB; c++) {
         if (skip && skip[m->body_yadr[b] + c]) {
             for (int r = 0; r < RC_NB; r++) out[r * RC_NB + c] = 0.0;
@@ -379,9 +379,8 @@ int rc_assemble_jac(const rc_model *m, const rc_data *d, double t, const double 
     if (m->gwork_adr >= 0)
         for (int b = 0; b < m->nbody; b++) {
             if (m->body_yadr[b] < 0) continue;
-            double g[3];
-            rc_gravity(m, b, t, g);
-            for (int k = 0; k < 3; k++) val[m->gwork_slot[3 * b + k]] -= m->body_mass[b] * g[k];
+            const double gf = rc_gravity_factor_run(m, d, t);
+            for (int k = 0; k < 3; k++) val[m->gwork_slot[3 * b + k]] -= m->body_mass[b] * m->body_grav[3 * b + k] * gf;
         }
     /* imposed velocities (imposed_jac.c): the work row, their rows */
     if (m->imp && rc_imp_jac(m, d, t, y, val)) return 1;

@@ -31,7 +31,7 @@ int rc_assemble_rhs(const rc_model *m, const rc_data *d, double t, const double 
 {
     d->sc->n_rhs++;
     /* bodies: free motion (the gravity time function once) */
-    const double gf = rc_gravity_factor(m, t);
+    const double gf = rc_gravity_factor_run(m, d, t);
     for (int b = 0; b < m->nbody; b++)
         if (m->body_yadr[b] >= 0) body_rhs_r(m, b, gf, y + m->body_yadr[b], ydot + m->body_yadr[b]);
     /* interfaces: forces into the accelerations, own-state rates */

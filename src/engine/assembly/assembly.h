@@ -138,6 +138,9 @@ int rc_report_cache_get(const rc_data *d, int i, rc_inter_report *r);
 void rc_gravity(const rc_model *m, int b, double t, double g[3]);
 /* Value of the gravity time function at t [-] (1 when none is given). */
 double rc_gravity_factor(const rc_model *m, double t);
+/* rc_gravity_factor in a run: at a /GRAV sensor's time once the run
+ * restarted there (rc_data.t_bp), the right limit (the gravity on). */
+double rc_gravity_factor_run(const rc_model *m, const rc_data *d, double t);
 
 /* Friction coefficient of interface i, direction dir, at pressure p [Pa],
  * sliding speed v [m/s], normal force fn [N] (the kernel's law, for tests). */
@@ -244,6 +247,10 @@ void rc_imp_rhs(const rc_model *m, const rc_data *d, double t, const double *y, 
  * Ascale) in y and the impulse's work taken into W_imp; returns how many
  * (imposed_rhs.c). */
 int rc_imp_start(const rc_model *m, double t0, double t1, double *y);
+/* At the event where sensor s (found in the run) turns on, at t: the
+ * imposed translations it starts (tson) jump to Fscale f((t - t_on) /
+ * Ascale) (W_imp takes the work); returns how many (imposed_rhs.c). */
+int rc_imp_start_sens(const rc_model *m, const rc_data *d, int s, double t, double *y);
 /* Jacobian (imposed_jac.c): the W_imp row, then the imposed rows replaced. */
 int rc_imp_jac(const rc_model *m, const rc_data *d, double t, const double *y, double *val);
 

@@ -14,10 +14,35 @@
 
 double rc_gravity_factor(const rc_model *m, double t)
 {
-    /* f(t / Ascale), 1 when no function is given */
+    /* f(t / Ascale), 1 when no function is given; with a sensor's time on
+     * Ts > 0 (grav_tstart): 0 for t <= Ts, then f((t - Ts) / Ascale) */
+    if (m->grav_tstart > 0 && !(t > m->grav_tstart)) return 0.0;
+    if (m->grav_sens >= 0) return 0.0; /* a sensor found in the run: on only in a run (rc_gravity_factor_run) */
     double f = 1.0, df;
-    if (m->grav_table >= 0) rc_table_eval(&m->table[m->grav_table], t / m->grav_ascale, &f, &df);
+    if (m->grav_table >= 0) rc_table_eval(&m->table[m->grav_table], (t - m->grav_tstart) / m->grav_ascale, &f, &df);
     return f;
+}
+
+double rc_gravity_factor_run(const rc_model *m, const rc_data *d, double t)
+{
+    /* at the sensor's time itself, once the run restarted there (the time
+     * breakpoint, rc_data.t_bp): the right limit, f(0) */
+    if (m->grav_sens >= 0) {
+        /* a sensor found in the run: off until its event, then shifted by
+         * its time on */
+        const int s = m->grav_sens;
+        if (!d->sens_rel[s]) return 0.0;
+        double f = 1.0, df;
+        if (m->grav_table >= 0)
+            rc_table_eval(&m->table[m->grav_table], (t - d->sens_ton[s]) / m->grav_ascale, &f, &df);
+        return f;
+    }
+    if (m->grav_tstart > 0 && t == m->grav_tstart && d->t_bp >= t) {
+        double f = 1.0, df;
+        if (m->grav_table >= 0) rc_table_eval(&m->table[m->grav_table], 0.0, &f, &df);
+        return f;
+    }
+    return rc_gravity_factor(m, t);
 }
 
 void rc_gravity(const rc_model *m, int b, double t, double g[3])

@@ -2,6 +2,7 @@
  * The run data (data.h): allocated per run for a compiled model, every
  * array sized by the model, freed in one call.
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -31,6 +32,7 @@ rc_data *rc_data_new(const rc_model *m)
     d->sens_ton = calloc((size_t)m->nsens + 1, sizeof(double));
     d->sens_new = calloc((size_t)m->nsens + 1, sizeof(int));
     d->sens_rel = calloc((size_t)m->nsens + 1, sizeof(int));
+    d->t_bp = -INFINITY;
     d->inter_fcstr = calloc(n, sizeof(double));
     d->cpl = rc_cpl_data_new(m);
     /* friction per contact point: modes, and the scratch of the roots

@@ -78,6 +78,11 @@ typedef struct rc_data {
     int *sens_new;       /* [nsens] bit 1: triggered at the last event, bit 2: released
                             its held bodies then, not yet written (the driver
                             writes the events and clears it) */
+    double t_bp;         /* the time breakpoint the run last restarted at [s]
+                            (-INFINITY: none yet): at t == t_bp an imposed
+                            velocity starting there is on (the right limit;
+                            RC_IMP_T_ON), and so is a gravity switched on
+                            there by its sensor (rc_gravity_factor_run) */
     int *sens_rel;       /* [nsens] 1: a sensor found in the run that holds bodies
                             (rc_model.sens_hold) has released them (set at the
                             event of its time on; the imposed rows read it) */

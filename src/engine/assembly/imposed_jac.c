@@ -32,10 +32,10 @@ int rc_imp_jac(const rc_model *m, const rc_data *d, double t, const double *y, d
     memset(dp, 0, (size_t)ny * sizeof(double));
     /* dP/dy, P the power of the reactions; cf[r]: dP/d(free rate of row r) */
     for (int k = 0; k < p->nt; k++) {
-        if (!RC_IMP_T_ON(p, k, t, d->sens_rel) || p->tdir[k] < 0) continue;
+        if (!RC_IMP_T_ON(p, k, t, d->sens_rel, d->t_bp) || p->tdir[k] < 0) continue;
         const int r = p->trow[k];
         const double mass = m->body_mass[p->tbody[k]];
-        const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t);
+        const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t - RC_IMP_T_SHIFT(p, k, d->sens_ton));
         act[r] = 1.0;
         cf[r] = -mass * y[r];
         dp[r] += mass * (a - d->sc->imp_free[r]);
@@ -73,10 +73,10 @@ int rc_imp_jac(const rc_model *m, const rc_data *d, double t, const double *y, d
      * P = m lambda (u.v) with lambda = a - u.a_free gives dP/dy = m lambda u
      * on the velocities and -m (u.v) u.(d a_free/dy) */
     for (int k = 0; k < p->nt; k++) {
-        if (!RC_IMP_T_ON(p, k, t, d->sens_rel) || p->tdir[k] >= 0) continue;
+        if (!RC_IMP_T_ON(p, k, t, d->sens_rel, d->t_bp) || p->tdir[k] >= 0) continue;
         const int r = p->trow[k];
         const double mass = m->body_mass[p->tbody[k]], *u = p->tu + 3 * k;
-        const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t);
+        const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t - RC_IMP_T_SHIFT(p, k, d->sens_ton));
         double ua = 0.0, uv = 0.0;
         for (int i = 0; i < 3; i++) {
             ua += u[i] * d->sc->imp_free[r + i];

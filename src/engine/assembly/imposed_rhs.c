@@ -28,9 +28,9 @@ void rc_imp_rhs(const rc_model *m, const rc_data *d, double t, const double *y, 
     double power = 0.0; /* of the reactions [W] */
     /* translations: reaction m (a_imposed - a_free) along the component */
     for (int k = 0; k < p->nt; k++) {
-        if (!RC_IMP_T_ON(p, k, t, d->sens_rel)) continue;
+        if (!RC_IMP_T_ON(p, k, t, d->sens_rel, d->t_bp)) continue;
         const int r = p->trow[k];
-        const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t);
+        const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t - RC_IMP_T_SHIFT(p, k, d->sens_ton));
         if (p->tdir[k] < 0) {
             /* along u: the support's force m lambda u, lambda = a - u.a_free */
             const double *u = p->tu + 3 * k;
@@ -82,7 +82,33 @@ int rc_imp_start(const rc_model *m, double t0, double t1, double *y)
          * imposed value; the support's impulse does the work
          * m (|v1|^2 - |v0|^2) / 2, which W_imp takes back */
         double f, df;
-        rc_table_eval(&m->table[p->ttab[k]], ts / p->tascale[k], &f, &df);
+        rc_table_eval(&m->table[p->ttab[k]], (ts - p->ttshift[k]) / p->tascale[k], &f, &df);
+        const int r = p->trow[k], nr = p->tdir[k] < 0 ? 3 : 1;
+        const double *u = p->tu + 3 * k;
+        double uv = 0.0, e0 = 0.0, e1 = 0.0;
+        for (int i = 0; i < nr; i++) uv += (nr == 3 ? u[i] : 1.0) * y[r + i];
+        const double dv = p->tfscale[k] * f - uv;
+        for (int i = 0; i < nr; i++) {
+            e0 += y[r + i] * y[r + i];
+            y[r + i] += dv * (nr == 3 ? u[i] : 1.0);
+            e1 += y[r + i] * y[r + i];
+        }
+        y[p->wadr] -= 0.5 * m->body_mass[p->tbody[k]] * (e1 - e0);
+        n++;
+    }
+    return n;
+}
+
+int rc_imp_start_sens(const rc_model *m, const rc_data *d, int s, double t, double *y)
+{
+    const rc_imposed *p = m->imp;
+    int n = 0;
+    for (int k = 0; p && k < p->nt; k++) {
+        if (p->tson[k] != s || t > p->ttstop[k]) continue;
+        /* as rc_imp_start: the velocity (along u: its component) jumps to
+         * the imposed value, W_imp takes the impulse's work back */
+        double f, df;
+        rc_table_eval(&m->table[p->ttab[k]], (t - d->sens_ton[s]) / p->tascale[k], &f, &df);
         const int r = p->trow[k], nr = p->tdir[k] < 0 ? 3 : 1;
         const double *u = p->tu + 3 * k;
         double uv = 0.0, e0 = 0.0, e1 = 0.0;

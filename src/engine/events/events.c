@@ -445,10 +445,12 @@ static void sens_propagate(const rc_model *m, rc_data *d)
     }
 }
 
-/* The sensors found in the run that hold bodies and are on at t (or whose
- * release root crossed: roots, the sensors' block; NULL: none) release
- * them: rc_data.sens_rel, read by the imposed rows. Returns how many. */
-static int sens_release(const rc_model *m, rc_data *d, double t, const int *roots)
+/* The sensors found in the run that hold bodies or start loads and are on
+ * at t (or whose release root crossed: roots, the sensors' block; NULL:
+ * none) release them: rc_data.sens_rel, read by the imposed rows and the
+ * gravity; the imposed velocities they start jump to their value
+ * (rc_imp_start_sens). Returns how many. */
+static int sens_release(const rc_model *m, rc_data *d, double t, const int *roots, double *y)
 {
     int n = 0;
     for (int k = 0; k < m->nsens; k++) {
@@ -456,6 +458,7 @@ static int sens_release(const rc_model *m, rc_data *d, double t, const int *root
         if (d->sens_ton[k] <= t || (roots && roots[2 * k])) {
             d->sens_rel[k] = 1;
             d->sens_new[k] |= 2;
+            if (m->imp) rc_imp_start_sens(m, d, k, t, y);
             n++;
         }
     }
@@ -487,8 +490,9 @@ static int sens_contact(const rc_model *m, rc_data *d, double t, const double *y
 
 /* The sensors' times on at the start: time sensors' Tdelay, a distance
  * sensor out of its bounds then triggered at t, the logic sensors of them. */
-static void sens_init(const rc_model *m, rc_data *d, double t, const double *y)
+static void sens_init(const rc_model *m, rc_data *d, double t, double *y)
 {
+    d->t_bp = -INFINITY; /* no time breakpoint passed yet (RC_IMP_T_ON) */
     for (int k = 0; k < m->nsens; k++) {
         d->sens_new[k] = 0;
         d->sens_rel[k] = 0;
@@ -502,7 +506,7 @@ static void sens_init(const rc_model *m, rc_data *d, double t, const double *y)
         }
     }
     sens_propagate(m, d);
-    sens_release(m, d, t, NULL);
+    sens_release(m, d, t, NULL, y);
 }
 
 static int sens_activate(const rc_model *m, rc_data *d, double t, double *y, rc_event *ev, int max_ev, int n,
@@ -768,7 +772,7 @@ static int sens_activate(const rc_model *m, rc_data *d, double t, double *y, rc_
     /* each round triggers at least one more sensor: at most nsens rounds */
     for (int round = 0; round <= m->nsens; round++) {
         sens_propagate(m, d); /* the logic sensors of those */
-        if (sens_release(m, d, t, NULL)) *restart = 1; /* the holds of those on now (no delay) */
+        if (sens_release(m, d, t, NULL, y)) *restart = 1; /* the holds of those on now (no delay) */
         int started = 0;
         for (int i = 0; i < m->ninter; i++) {
             const int s = m->inter_sens[i];
@@ -799,7 +803,7 @@ static int sensors_apply(const rc_model *m, rc_data *d, double t, double *y, con
     const int *r = roots + rc_root_sens_base(m);
     int any = 0;
     /* a release root crossed (a time on known before this event) */
-    if (sens_release(m, d, t, r)) *restart = 1; /* the holds end: the imposed rows jump */
+    if (sens_release(m, d, t, r, y)) *restart = 1; /* the holds end: the imposed rows jump */
     for (int k = 0; k < m->nsens; k++)
         if ((m->sens_kind[k] == 1 || m->sens_kind[k] == 5) && (r[2 * k] || r[2 * k + 1]) &&
             !isfinite(d->sens_ton[k])) {

@@ -143,8 +143,15 @@ static void print_gravity(const rc_model *m, FILE *f)
     }
     if (first < 0) return;
     const double *g = m->body_grav + 3 * first, gn = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-    char fn[64] = "";
-    if (m->grav_table >= 0) snprintf(fn, sizeof fn, " times /FUNCT/%d of t", m->table[m->grav_table].id);
+    char fn[128] = "";
+    if (m->grav_table >= 0 && m->grav_tstart > 0)
+        snprintf(fn, sizeof fn, " times /FUNCT/%d of t - %.6g s, from %.6g s", m->table[m->grav_table].id,
+                 m->grav_tstart, m->grav_tstart);
+    else if (m->grav_table >= 0) snprintf(fn, sizeof fn, " times /FUNCT/%d of t", m->table[m->grav_table].id);
+    else if (m->grav_tstart > 0) snprintf(fn, sizeof fn, " from %.6g s (its sensor)", m->grav_tstart);
+    if (m->grav_sens >= 0 && m->sens_id)
+        snprintf(fn, sizeof fn, "%s from the time sensor %d turns on (found in the run)",
+                 m->grav_table >= 0 ? " times a /FUNCT of t - t_on," : "", m->sens_id[m->grav_sens]);
     if (gn == 0.0 && nsame == nfree) {
         fprintf(f, "gravity     none\n");
         return;

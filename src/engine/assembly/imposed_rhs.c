@@ -71,6 +71,27 @@ void rc_imp_rhs(const rc_model *m, const rc_data *d, double t, const double *y, 
     ydot[p->wadr] = -power;
 }
 
+/* Translation k of the imposed velocities starts: the velocity (along u:
+ * its component along u) jumps to the imposed value at the function's
+ * argument x; the support's impulse does the work m (|v1|^2 - |v0|^2) / 2,
+ * which W_imp takes back. */
+static void start_translation(const rc_model *m, const rc_imposed *p, int k, double x, double *y)
+{
+    double f, df;
+    rc_table_eval(&m->table[p->ttab[k]], x, &f, &df);
+    const int r = p->trow[k], nr = p->tdir[k] < 0 ? 3 : 1;
+    const double *u = p->tu + 3 * k;
+    double uv = 0.0, e0 = 0.0, e1 = 0.0;
+    for (int i = 0; i < nr; i++) uv += (nr == 3 ? u[i] : 1.0) * y[r + i];
+    const double dv = p->tfscale[k] * f - uv;
+    for (int i = 0; i < nr; i++) {
+        e0 += y[r + i] * y[r + i];
+        y[r + i] += dv * (nr == 3 ? u[i] : 1.0);
+        e1 += y[r + i] * y[r + i];
+    }
+    y[p->wadr] -= 0.5 * m->body_mass[p->tbody[k]] * (e1 - e0);
+}
+
 int rc_imp_start(const rc_model *m, double t0, double t1, double *y)
 {
     const rc_imposed *p = m->imp;
@@ -78,22 +99,7 @@ int rc_imp_start(const rc_model *m, double t0, double t1, double *y)
     for (int k = 0; p && k < p->nt; k++) {
         const double ts = p->ttstart[k];
         if (!(ts > t0 && ts <= t1) || ts > p->ttstop[k]) continue;
-        /* the velocity (along u: its component along u) jumps to the
-         * imposed value; the support's impulse does the work
-         * m (|v1|^2 - |v0|^2) / 2, which W_imp takes back */
-        double f, df;
-        rc_table_eval(&m->table[p->ttab[k]], (ts - p->ttshift[k]) / p->tascale[k], &f, &df);
-        const int r = p->trow[k], nr = p->tdir[k] < 0 ? 3 : 1;
-        const double *u = p->tu + 3 * k;
-        double uv = 0.0, e0 = 0.0, e1 = 0.0;
-        for (int i = 0; i < nr; i++) uv += (nr == 3 ? u[i] : 1.0) * y[r + i];
-        const double dv = p->tfscale[k] * f - uv;
-        for (int i = 0; i < nr; i++) {
-            e0 += y[r + i] * y[r + i];
-            y[r + i] += dv * (nr == 3 ? u[i] : 1.0);
-            e1 += y[r + i] * y[r + i];
-        }
-        y[p->wadr] -= 0.5 * m->body_mass[p->tbody[k]] * (e1 - e0);
+        start_translation(m, p, k, (ts - p->ttshift[k]) / p->tascale[k], y);
         n++;
     }
     return n;
@@ -105,21 +111,7 @@ int rc_imp_start_sens(const rc_model *m, const rc_data *d, int s, double t, doub
     int n = 0;
     for (int k = 0; p && k < p->nt; k++) {
         if (p->tson[k] != s || t > p->ttstop[k]) continue;
-        /* as rc_imp_start: the velocity (along u: its component) jumps to
-         * the imposed value, W_imp takes the impulse's work back */
-        double f, df;
-        rc_table_eval(&m->table[p->ttab[k]], (t - d->sens_ton[s]) / p->tascale[k], &f, &df);
-        const int r = p->trow[k], nr = p->tdir[k] < 0 ? 3 : 1;
-        const double *u = p->tu + 3 * k;
-        double uv = 0.0, e0 = 0.0, e1 = 0.0;
-        for (int i = 0; i < nr; i++) uv += (nr == 3 ? u[i] : 1.0) * y[r + i];
-        const double dv = p->tfscale[k] * f - uv;
-        for (int i = 0; i < nr; i++) {
-            e0 += y[r + i] * y[r + i];
-            y[r + i] += dv * (nr == 3 ? u[i] : 1.0);
-            e1 += y[r + i] * y[r + i];
-        }
-        y[p->wadr] -= 0.5 * m->body_mass[p->tbody[k]] * (e1 - e0);
+        start_translation(m, p, k, (t - d->sens_ton[s]) / p->tascale[k], y); /* as rc_imp_start */
         n++;
     }
     return n;

@@ -888,22 +888,26 @@ out:
  * Zeno). On the Stiff line carrying 1 N the recovery still acts, and on
  * the Stiff line at zero force it is that of a force just above zero (the
  * rate is continuous there: withholding it made the error test fail). */
+/* The box of these tests: 1 kg on a floor, TYPE6 Iform 2 (load curve 1e6
+ * N/m, Stiff 1e8 N/m, Fric 0.5), its damping line `visc` (Visc [N s/m], or
+ * blank). */
+#define BOX_IFORM2_DECK(visc)                                                                                      \
+    "/BEGIN\nbox on a floor, Iform 2\n      2022         0\n"                                                       \
+    "                  kg                   m                   s\n"                                              \
+    "                  kg                   m                   s\n"                                              \
+    "/NODE\n1,0,0,0.04\n"                                                                                         \
+    "/RBODY/1\nbox\n1,,,,1,1\n0.002,0.002,0.002\n0,0,0\n"                                                        \
+    "/SURF/BOX/1\nbox\n1\n0,0,0.04\n0.05,0.05,0.04\n"                                                           \
+    "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"                                                                       \
+    "/GRNOD/NODE/1\nbox\n1\n"                                                                                    \
+    "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"                                                                           \
+    "/FUNCT/1\nlinear\n0,0\n1,1000000\n"                                                                        \
+    "/INTER/TYPE6/1\nbox on floor\n1,2\n0,0.5\n\n1,2\n0,,100000000\n" visc "\n"                                  \
+    "/RUN\n0.01,0.001\n/END\n"
+
 static void test_pe_no_recovery_at_zero_force(void)
 {
-    static const char *deck =
-        "/BEGIN\nbox on a floor, Iform 2\n      2022         0\n"
-        "                  kg                   m                   s\n"
-        "                  kg                   m                   s\n"
-        "/NODE\n1,0,0,0.04\n"
-        "/RBODY/1\nbox\n1,,,,1,1\n0.002,0.002,0.002\n0,0,0\n"
-        "/SURF/BOX/1\nbox\n1\n0,0,0.04\n0.05,0.05,0.04\n"
-        "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
-        "/GRNOD/NODE/1\nbox\n1\n"
-        "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"
-        "/FUNCT/1\nlinear\n0,0\n1,1000000\n"
-        "/INTER/TYPE6/1\nbox on floor\n1,2\n0,0.5\n\n1,2\n0,,100000000\n100\n"
-        "/RUN\n0.01,0.001\n/END\n";
-    rc_model *m = TU_COMPILE_OK(deck, "pe_zero_force.rad");
+    rc_model *m = TU_COMPILE_OK(BOX_IFORM2_DECK("100"), "pe_zero_force.rad");
     if (!m) return;
     rc_data *d = rc_data_new(m);
     double *y = calloc((size_t)m->ny, sizeof(double));
@@ -963,20 +967,7 @@ out:
  * the Stiff line carrying 1 N at rest: none. */
 static void test_pe_recovery_continuous_in_its_payment(void)
 {
-    static const char *deck =
-        "/BEGIN\nbox on a floor, Iform 2, no damper\n      2022         0\n"
-        "                  kg                   m                   s\n"
-        "                  kg                   m                   s\n"
-        "/NODE\n1,0,0,0.04\n"
-        "/RBODY/1\nbox\n1,,,,1,1\n0.002,0.002,0.002\n0,0,0\n"
-        "/SURF/BOX/1\nbox\n1\n0,0,0.04\n0.05,0.05,0.04\n"
-        "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
-        "/GRNOD/NODE/1\nbox\n1\n"
-        "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"
-        "/FUNCT/1\nlinear\n0,0\n1,1000000\n"
-        "/INTER/TYPE6/1\nbox on floor\n1,2\n0,0.5\n\n1,2\n0,,100000000\n\n"
-        "/RUN\n0.01,0.001\n/END\n";
-    rc_model *m = TU_COMPILE_OK(deck, "pe_zero_force_pay.rad");
+    rc_model *m = TU_COMPILE_OK(BOX_IFORM2_DECK(""), "pe_zero_force_pay.rad");
     if (!m) return;
     rc_data *d = rc_data_new(m);
     double *y = calloc((size_t)m->ny, sizeof(double));

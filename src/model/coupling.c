@@ -321,7 +321,7 @@ static rc_status gene_elem(const rc_case *c, rc_couplings *p, const rc_case_spri
     for (int i = 0; i < 6; i++) {
         p->gk[12 * k + i] = q->k6[i];
         p->gk[12 * k + 6 + i] = q->c6[i];
-        char card[40], field[16];
+        char card[40], field[24];
         snprintf(card, sizeof card, "/PROP/TYPE%d/%d", q->sprtype, q->id);
         snprintf(field, sizeof field, "fct_ID1%d", i + 1);
         if ((st = rc_case_ref_funct(c, q->fct6[i], 0, q->fct_loc[i], card, field, &p->gtab[6 * k + i], err)))

@@ -31,6 +31,7 @@
 #include "model/joint.h"
 #include "model/model.h"
 #include "model/power.h"
+#include "model/sensor.h"
 #include "output/output.h"
 #include "solver/guards.h"
 #include "solver/impacts.h"
@@ -114,9 +115,7 @@ static rc_status sensor_events(const rc_model *m, rc_data *d, ev_sink *k, double
         char el[48];
         rc_status st = RC_OK;
         if (nw & 1) {
-            static const char *const kn[] = {"TIME", "DIST", "AND", "OR", "NOT", "INTER"};
-            const int kk = m->sens_kind[s];
-            snprintf(el, sizeof el, "/SENSOR/%s/%d", kk >= 0 && kk < 6 ? kn[kk] : "?", m->sens_id[s]);
+            snprintf(el, sizeof el, "/SENSOR/%s/%d", rc_sensor_kind_name(m->sens_kind[s]), m->sens_id[s]);
             (*count)++;
             if ((st = rc_bk_sink_event(k, t, RC_EV_SENSOR_TRIGGER, el, NULL, err))) return st;
         }

@@ -65,6 +65,7 @@
 #include "engine/events/events.h"
 #include "model/model.h"
 #include "model/imposed.h"
+#include "model/sensor.h"
 #include "solver/integrator.h"
 #include "solver/sens.h"
 #include "solver/solver.h"
@@ -692,7 +693,6 @@ rc_status rc_sens_run(const rc_model *m, int np, const rc_model *const *m_lo, co
     /* a distance or interface sensor's time on is a number of the run
      * data, set at its trigger: its dependence on the parameters is not
      * followed */
-    static const char *const skind[] = {"TIME", "DIST", "AND", "OR", "NOT", "INTER"};
     for (int i = 0; i < m->ninter; i++)
         if (m->inter_sens[i] >= 0) {
             const int kk = m->sens_kind[m->inter_sens[i]];
@@ -700,7 +700,7 @@ rc_status rc_sens_run(const rc_model *m, int np, const rc_model *const *m_lo, co
                           "sensitivities: %s is turned on by /SENSOR/%s/%d, a sensor found in the run (a distance or "
                           "interface sensor): not covered (the derivative of its trigger time is not followed in "
                           "this version)",
-                          m->inter_name[i], kk >= 0 && kk < 6 ? skind[kk] : "?", m->sens_id[m->inter_sens[i]]);
+                          m->inter_name[i], rc_sensor_kind_name(kk), m->sens_id[m->inter_sens[i]]);
         }
     for (int k = 0; m->imp && k < m->imp->nt; k++)
         if (m->imp->tsens[k] >= 0)

@@ -207,8 +207,14 @@ void rc_sens_roots(const rc_model *m, const rc_data *d, double t, const double *
             g[2 * k] = d->sens_rel[k] ? 1.0 : t - d->sens_ton[k];
             continue;
         }
-        if (m->sens_kind[k] == 5 && m->sens_d[2 * k + 1] > 0 && !isfinite(d->sens_ton[k]))
-            g[2 * k] = rc_sens_inter_force(m, d, k, t, y) - m->sens_d[2 * k + 1];
+        if (m->sens_kind[k] == 5 && m->sens_d[2 * k + 1] > 0 && !isfinite(d->sens_ton[k])) {
+            /* the forces the interfaces' roots just evaluated (inter_fnr):
+             * rc_sens_roots runs after them, at the same state */
+            double f = 0.0;
+            for (int i = 0; i < m->ninter; i++)
+                if (m->inter_id[i] == m->sens_inter[k]) f += d->sc->inter_fnr[i];
+            g[2 * k] = f - m->sens_d[2 * k + 1];
+        }
         if (m->sens_kind[k] != 1 || isfinite(d->sens_ton[k])) continue;
         const double dist = rc_sens_distance(m, k, y), *b = m->sens_d + 2 * k;
         if (b[1] > 0) g[2 * k] = dist - b[1];
@@ -264,6 +270,7 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         double *gi = g + RC_ROOTS_PER_INTER * i;
         for (int k = 0; k < RC_ROOTS_PER_INTER; k++) gi[k] = 1.0; /* inactive roots */
         d->sc->inter_flim[2 * i] = d->sc->inter_flim[2 * i + 1] = 0.0;
+        d->sc->inter_fnr[i] = 0.0;
         /* the start: Tstart, or a distance sensor's time on (-1 until it triggers) */
         const double ton = m->inter_sens[i] < 0 ? m->inter_tstart[i] : rc_sens_inter_ton(m, d, i);
         gi[RC_ROOT_TSTART] = isfinite(ton) ? t - ton : -1.0;
@@ -343,6 +350,7 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         /* the touch bands (events.c, signed: a contact left at zero waits
          * a band away on the side of its next crossing) */
         if (!trk) gi[RC_ROOT_ZONE] = r.p + d->inter_band[2 * i];
+        if (mode == RC_MODE_CLOSED && r.fn > 0) d->sc->inter_fnr[i] = r.fn; /* the interface sensors' */
         /* total normal force, unclipped: release and re-close */
         if (mode != RC_MODE_OPEN) gi[RC_ROOT_FORCE] = r.fn + d->inter_band[2 * i + 1];
         /* a settled contact is not released at zero force: it opens with P */

@@ -86,8 +86,10 @@ int rc_roots_live(const rc_model *m, double tend, int *live);
 /* Distance sensors (sensors.c): the distance of sensor k's points at y
  * [m]; its two roots (d - Dmax, Dmin - d; -1 for a bound not given, a time
  * sensor, a sensor triggered; a sensor releasing a held body: t - t_on in
- * g[2k] once t_on is known, until the release) into g[2k], g[2k+1]
- * (assemble_rhs.c); whether root j of the
+ * g[2k] once t_on is known, until the release; an interface sensor with a
+ * force bound: F_n - Fmax from the forces the interfaces' roots evaluated
+ * just before at the same state, rc_data scratch inter_fnr) into g[2k],
+ * g[2k+1] (assemble_rhs.c, called by rc_assemble_roots only); whether root j of the
  * sensors' block can change sign; the time interface i turns on (its
  * Tstart, or later its run-time sensor's time on: INFINITY until known;
  * the times on are set in engine/events). */

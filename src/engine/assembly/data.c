@@ -55,6 +55,7 @@ rc_data *rc_data_new(const rc_model *m)
     d->sc->pt_share = malloc(((size_t)m->npt + 1) * sizeof(double));
     d->pt_lband = calloc((size_t)m->npt + 1, sizeof(double));
     d->sc->inter_flim = calloc(2 * (size_t)m->ninter + 1, sizeof(double));
+    d->sc->inter_fnr = calloc((size_t)m->ninter + 1, sizeof(double));
     if (d->sc->pt_share)
         for (int j = 0; j <= m->npt; j++) d->sc->pt_share[j] = 1.0;
     d->sc->pt_work = calloc(RC_PT_OUT * (size_t)maxpt + 4 * ((size_t)RC_NS_MAX + 6 * (size_t)maxpt) + 16, sizeof(double));
@@ -93,7 +94,7 @@ rc_data *rc_data_new(const rc_model *m)
         }
     }
     if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->inter_rband || !d->inter_settled || !d->inter_hacc || !d->mode_was || !d->sens_ton || !d->sens_new || !d->sens_rel || !d->inter_fcstr || !d->cpl || !imp_ok || !jc_ok || !rc_ok ||
-        !d->pt_slip || !d->sc->pt_share || !d->sc->inter_flim || !d->pt_lband || !d->sc->pt_work || !d->pt_flip || !d->sc->node_cache) {
+        !d->pt_slip || !d->sc->pt_share || !d->sc->inter_flim || !d->sc->inter_fnr || !d->pt_lband || !d->sc->pt_work || !d->pt_flip || !d->sc->node_cache) {
         rc_data_free(d);
         return NULL;
     }
@@ -121,6 +122,7 @@ void rc_data_free(rc_data *d)
     free(d->pt_slip);
     free(d->sc->pt_share);
     free(d->sc->inter_flim);
+    free(d->sc->inter_fnr);
     free(d->pt_lband);
     free(d->sc->pt_work);
     free(d->pt_flip);

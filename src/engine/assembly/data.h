@@ -20,6 +20,8 @@ typedef struct rc_scratch {
     double *pt_share;    /* [npt] each contact point's share w_j at the last evaluation of the
                             roots (the integrator's step ends; 0 while its interface is not
                             closed): its states' error weights (rc_point_ewt_scale) */
+    double *inter_fnr;   /* [ninter] the normal force of each closed interface at the last
+                            root evaluation, 0 when not closed [N] (the interface sensors' roots) */
     double *inter_flim;  /* [2 ninter] the friction limit [N] and the sliding speed |v_t|
                             [m/s] of each interface whose single incremental friction state
                             slips, at the last evaluation of the roots (0: not closed,

@@ -515,6 +515,8 @@ int rc_case_find_node(const rc_case *c, int id);
 int rc_case_find_grnod(const rc_case *c, int id);
 int rc_case_find_rbody(const rc_case *c, int id);
 int rc_case_find_surf(const rc_case *c, int id);
+/* The card name of a surface kind (RC_CASE_SURF_*): "PLANE" .. "PART", "?" otherwise. */
+const char *rc_case_surf_kind_name(int kind);
 int rc_case_find_rwall(const rc_case *c, int id);  /* a linear scan */
 int rc_case_find_sensor(const rc_case *c, int id); /* a linear scan */
 int rc_case_find_part(const rc_case *c, int id);

@@ -100,6 +100,12 @@ int rc_case_find_node(const rc_case *c, int id) { return find(c, LK_NODE, id); }
 int rc_case_find_grnod(const rc_case *c, int id) { return find(c, LK_GRNOD, id); }
 int rc_case_find_rbody(const rc_case *c, int id) { return find(c, LK_RBODY, id); }
 int rc_case_find_surf(const rc_case *c, int id) { return find(c, LK_SURF, id); }
+
+const char *rc_case_surf_kind_name(int kind)
+{
+    static const char *const name[] = {"?", "PLANE", "ELLIPS", "CYL", "BOX", "SEG", "PART"};
+    return kind >= RC_CASE_SURF_PLANE && kind <= RC_CASE_SURF_PART ? name[kind] : "?";
+}
 int rc_case_find_part(const rc_case *c, int id) { return find(c, LK_PART, id); }
 int rc_case_find_grpart(const rc_case *c, int id) { return find(c, LK_GRPART, id); }
 

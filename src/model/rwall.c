@@ -452,7 +452,6 @@ rc_status rc_rwall_contacts(rc_rwall_case *x, const rc_model *m, rc_error *err)
 {
     rc_case *c = &x->c;
     if (c->nrwall == 0) return RC_OK;
-    static const char *const kinds[] = {"", "PLANE", "ELLIPS", "CYL", "BOX", "SEG", "PART"};
     const int nuser = x->nuser, p0 = nuser + c->nrwall;
     /* one contact per wall and surface of a body it acts on (the deck's
      * surfaces, or the wall's own points of a body without surfaces) */
@@ -483,7 +482,7 @@ rc_status rc_rwall_contacts(rc_rwall_case *x, const rc_model *m, rc_error *err)
                              RC_LOCFMT "card /RWALL/%s/%d, field grnd_ID1: the wall acts on /RBODY/%d, whose surface "
                              "/SURF/%s/%d is not a sphere: an /RWALL/%s against anything but a sphere (/SURF/ELLIPS) "
                              "is not supported yet",
-                             RC_LOC(l1), rc_rwall_type[rw->kind], rw->id, c->rbody[b].id, kinds[cs->kind], cs->id,
+                             RC_LOC(l1), rc_rwall_type[rw->kind], rw->id, c->rbody[b].id, rc_case_surf_kind_name(cs->kind), cs->id,
                              rc_rwall_type[rw->kind]);
                 /* the body's scales: mass, radius of gyration, gravity */
                 const double mass = m->body_mass[b], *J = m->body_J + 9 * b, *g = m->body_grav + 3 * b;
@@ -496,7 +495,7 @@ rc_status rc_rwall_contacts(rc_rwall_case *x, const rc_model *m, rc_error *err)
                              rc_rwall_type[rw->kind], rw->id, c->rbody[b].id);
                 else
                     snprintf(x->name[j], sizeof x->name[j], "/RWALL/%s/%d with /SURF/%s/%d", rc_rwall_type[rw->kind],
-                             rw->id, kinds[cs->kind], cs->id);
+                             rw->id, rc_case_surf_kind_name(cs->kind), cs->id);
                 *t = (rc_case_type6){.id = -rw->id, .surf1 = cs->id, .surf2 = -rw->id, .fric = rw->slide == 2 ? rw->fric : 0.0,
                                      .tstop = 1e30, .ascalef = 1.0, .ascalev = 1.0, .fct_ld = -1, .ascalex = len,
                                      .fscaleld = kw * len, .fscaleul = 1.0, .fscalev = 1.0,

@@ -40,8 +40,6 @@
 #include "case/case_mesh.h"
 #include "model/type7.h"
 
-static const char *const rc_t7_kinds[] = {"", "PLANE", "ELLIPS", "CYL", "BOX", "SEG", "PART"};
-
 /* A shell element's nodes as a key: the distinct node ids ascending, 0
  * after them (a triangle), and the element's index. */
 typedef struct { int n[4]; int e; } t7_key;
@@ -143,13 +141,12 @@ static rc_status shells_stiffness(const rc_case *c, const t7_card *t, int surf_i
 {
     const rc_case_surf *cs = &c->surf[rc_case_find_surf(c, surf_id)];
     const rc_case_mesh *ms = c->mesh;
-    static const char *const kinds[] = {"", "PLANE", "ELLIPS", "CYL", "BOX", "SEG", "PART"};
     const int ne = ms ? ms->nelem : 0;
     if (cs->kind != RC_CASE_SURF_SEG && cs->kind != RC_CASE_SURF_PART)
         RC_RAISE(err, RC_EINPUT,
                  RC_LOCFMT "card %s/%d, field Istf: Istf %d takes the stiffness from the main surface's "
                            "shell elements; /SURF/%s/%d has none: expected Istf 1 with Stfac the stiffness [N/m]",
-                 RC_LOC(t->loc), t->card, t->id, t->istf, kinds[cs->kind], surf_id);
+                 RC_LOC(t->loc), t->card, t->id, t->istf, rc_case_surf_kind_name(cs->kind), surf_id);
     t7_key *keys = malloc(((size_t)ne + 1) * sizeof *keys);
     if (!keys) RC_RAISE(err, RC_ENOMEM, "out of memory");
     rc_status st = RC_OK;
@@ -225,7 +222,7 @@ static rc_status shells_stiffness(const rc_case *c, const t7_card *t, int surf_i
         RC_RAISE(err, RC_EINPUT,
                  RC_LOCFMT "card %s/%d, field Istf: Istf %d takes the stiffness from the main surface's "
                            "shell elements; /SURF/%s/%d has none: expected Istf 1 with Stfac the stiffness [N/m]",
-                 RC_LOC(t->loc), t->card, t->id, t->istf, kinds[cs->kind], surf_id);
+                 RC_LOC(t->loc), t->card, t->id, t->istf, rc_case_surf_kind_name(cs->kind), surf_id);
     *sum_out += sum;
     *n_out += nsh;
     return RC_OK;
@@ -310,7 +307,7 @@ static rc_status main_half_thick(const rc_case *c, const rc_case_type7 *t7, doub
                                   "%.6g m and %s %d of %.6g m: a gap that varies along the main surface is not "
                                   "supported yet (one gap per contact of a rigid body); expected main shells of one "
                                   "thickness, or Igap 0 with the gap Gapmin",
-                        RC_LOC(t7->line_loc[0]), t7->id, t7->igap, rc_t7_kinds[cs->kind], t7->surf_id,
+                        RC_LOC(t7->line_loc[0]), t7->id, t7->igap, rc_case_surf_kind_name(cs->kind), t7->surf_id,
                         cs->kind == RC_CASE_SURF_SEG ? "segment" : "element", seg0, g0,
                         cs->kind == RC_CASE_SURF_SEG ? "segment" : "element", sid, g);
         }
@@ -614,7 +611,7 @@ static rc_status box_sides(const rc_case *c, const rc_case_type24 *t, rc_case_su
                            "TYPE%d (%s) between two boxes only; expected a /SURF/BOX or a closed box mesh (a "
                            "/SURF/SEG of 6 quadrilaterals on the 8 corners of a rectangular box, or a /SURF/PART of "
                            "one such /BRICK or six such /SHELL, taken as that box)",
-                 RC_LOC(t->line_loc[0]), t->type, t->id, field, rc_t7_kinds[cs->kind], sid, t->type,
+                 RC_LOC(t->line_loc[0]), t->type, t->id, field, rc_case_surf_kind_name(cs->kind), sid, t->type,
                  t->type == 11 ? "the edges of each against the edges of the other"
                                : "the nodes of each against the other's faces and the edges against the edges");
     }
@@ -696,7 +693,7 @@ rc_status rc_type7_begin(const rc_case *c, const rc_t7_drop *drop, rc_type7_case
                      RC_LOCFMT "card /INTER/TYPE7/%d, field surf_IDm: the main surface /SURF/%s/%d: not supported yet "
                                "(nodes against a sphere or a cylinder); expected a segment surface (/SURF/SEG, "
                                "/SURF/PART), a plane or a box",
-                     RC_LOC(t->line_loc[0]), t->id, rc_t7_kinds[k], t->surf_id);
+                     RC_LOC(t->line_loc[0]), t->id, rc_case_surf_kind_name(k), t->surf_id);
         }
         for (int j = 0; j < c->grnod[g].n; j++)
             if (rc_case_find_node(c, c->grnod[g].nodes[j]) < 0)
@@ -740,7 +737,7 @@ rc_status rc_type7_begin(const rc_case *c, const rc_t7_drop *drop, rc_type7_case
                             RC_LOCFMT "card /INTER/TYPE%d/%d, field %s: /SURF/%s/%d is not supported yet (TYPE%d "
                                       "puts the nodes of each surface against the segments of the other): expected "
                                       "a segment surface (/SURF/SEG, /SURF/PART)%s",
-                            RC_LOC(t->line_loc[0]), t->type, t->id, fname[q], rc_t7_kinds[k], sid[q], t->type,
+                            RC_LOC(t->line_loc[0]), t->type, t->id, fname[q], rc_case_surf_kind_name(k), sid[q], t->type,
                             t->type == 25 ? ", or two /SURF/BOX" : "");
         }
         /* TYPE25: two boxes meet corner to face and edge to edge (the box
@@ -767,7 +764,7 @@ rc_status rc_type7_begin(const rc_case *c, const rc_t7_drop *drop, rc_type7_case
                                       "and /SURF/%s/%d are not both such meshes: "
                                       "expected Iedge 0 (nodes against segments only), two such meshes, or two "
                                       "/SURF/BOX",
-                            RC_LOC(t->line_loc[0]), t->id, rc_t7_kinds[s1->kind], t->surf1, rc_t7_kinds[s2->kind],
+                            RC_LOC(t->line_loc[0]), t->id, rc_case_surf_kind_name(s1->kind), t->surf1, rc_case_surf_kind_name(s2->kind),
                             t->surf2);
         }
         if (!st && t->fric_id > 0) {

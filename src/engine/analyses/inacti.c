@@ -74,7 +74,6 @@ static rc_status card_points(const rc_case *c, const rc_model *m, int i, const d
 {
     const rc_case_type7 *t = &c->type7[i];
     const int cs = rc_case_find_surf(c, t->surf_id);
-    static const char *const kinds[] = {"", "PLANE", "ELLIPS", "CYL", "BOX", "SEG", "PART"};
     *nout = *ntot = 0;
     *gap = t->gapmin;
     for (int k = 0; k < m->ninter; k++) {
@@ -100,7 +99,7 @@ static rc_status card_points(const rc_case *c, const rc_model *m, int i, const d
                                    "main surface /SURF/%s/%d (at %.6g m, within the gap of %.6g m), which %s: not supported "
                                    "yet; expected a main /SURF/SEG (its segments listed), Inacti 1 (the penetrating "
                                    "nodes left out instead), or the bodies apart at t = 0",
-                         RC_LOC(t->line_loc[4]), t->id, m->surf_nid[slot], kinds[sk], t->surf_id,
+                         RC_LOC(t->line_loc[4]), t->id, m->surf_nid[slot], rc_case_surf_kind_name(sk), t->surf_id,
                          d, m->inter_gap[k],
                          sk == RC_CASE_SURF_PART ? "has its segments from the parts' elements, not a list of "
                                                    "segments that a copy without some of them could keep"
@@ -137,8 +136,7 @@ static char *card_note(const rc_case *c, int i, const int *ids, int n, int ntot,
              RC_LOC(t->line_loc[4]), t->id, t->inacti, n, ntot,
              t->inacti == 1 ? "secondary nodes of its contacts" : "main segments",
              t->inacti == 1 ? "the nodes" : "the segments that secondary nodes lie", gap,
-             cs->kind == RC_CASE_SURF_SEG ? "SEG" : cs->kind == RC_CASE_SURF_PART ? "PART"
-             : cs->kind == RC_CASE_SURF_PLANE ? "PLANE" : "BOX", t->surf_id,
+             rc_case_surf_kind_name(cs->kind), t->surf_id,
              t->inacti == 1 ? "nodes" : "segments", list,
              all ? t->inacti == 1 ? "; no secondary node is left: the card has no contact at all"
                                   : "; no main segment is left: the card has no contact at all"

@@ -48,18 +48,41 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* Time breakpoints: instants where the right-hand side jumps by time alone
- * (the start and the end of an imposed velocity, /IMPVEL Tstart > 0 or its
- * sensor's time, and Tstop; the start of a gravity by its sensor, /GRAV
- * sensor_ID), inside (0, tend), sorted,
- * distinct. The integrator is stopped exactly there (its stop time) and restarted.
- * Returns the count; *bp is allocated (free it). */
+/* Time breakpoints: instants where the right-hand side, or its rate, jumps
+ * by time alone (the start and the end of an imposed velocity, /IMPVEL
+ * Tstart > 0 or its sensor's time, and Tstop; the start of a gravity by its
+ * sensor, /GRAV sensor_ID; the knots of the time functions of the gravity
+ * and of the imposed velocities, where the piecewise linear load turns:
+ * an imposed velocity's acceleration jumps there, the gravity's rate does),
+ * inside (0, tend), sorted, distinct. The integrator is stopped exactly
+ * there (its stop time) and restarted: a step straddling a knot lets its
+ * interpolant carry the load's turn to both sides (a ball resting on a
+ * penalty contact recorded 3.6e-6 m g off its load at the knot itself).
+ * The knots of a function started by a sensor found in the run are not
+ * known before it: not among them. Returns the count; *bp is allocated
+ * (free it). */
+static int add_knots(const rc_table *tb, double shift, double scale, double lo, double hi, double tend, double *bp,
+                     int n)
+{
+    for (int k = 0; k < tb->n; k++) {
+        const double t = shift + tb->x[k] * scale;
+        if (t > 0 && t < tend && t > lo && t < hi) bp[n++] = t;
+    }
+    return n;
+}
+
 int rc_bk_time_breakpoints(const rc_model *m, double tend, double **bp)
 {
     const rc_imposed *p = m->imp;
-    int n = 0, cap = (p ? 2 * p->nt + p->nr : 0) + 1;
-    *bp = malloc(((size_t)cap + 1) * sizeof(double));
+    size_t cap = (p ? 2 * (size_t)p->nt + (size_t)p->nr : 0) + 1;
+    if (m->grav_table >= 0 && m->grav_sens < 0) cap += (size_t)m->table[m->grav_table].n;
+    for (int k = 0; p && k < p->nt; k++)
+        if (p->ttab[k] >= 0 && p->tson[k] < 0) cap += (size_t)m->table[p->ttab[k]].n;
+    for (int k = 0; p && k < 3 * p->nr; k++)
+        if (p->rtab[k] >= 0) cap += (size_t)m->table[p->rtab[k]].n;
+    *bp = malloc((cap + 1) * sizeof(double));
     if (!*bp) return -1;
+    int n = 0;
     for (int k = 0; p && k < p->nt + p->nr; k++) {
         double ts = k < p->nt ? p->ttstop[k] : p->rtstop[k - p->nt];
         if (ts > 0 && ts < tend) (*bp)[n++] = ts;
@@ -68,6 +91,14 @@ int rc_bk_time_breakpoints(const rc_model *m, double tend, double **bp)
     }
     /* gravity switched on by a sensor (/GRAV sensor_ID): it jumps there */
     if (m->grav_tstart > 0 && m->grav_tstart < tend) (*bp)[n++] = m->grav_tstart;
+    /* the knots of the load functions */
+    if (m->grav_table >= 0 && m->grav_sens < 0)
+        n = add_knots(&m->table[m->grav_table], m->grav_tstart, m->grav_ascale, m->grav_tstart, INFINITY, tend, *bp, n);
+    for (int k = 0; p && k < p->nt; k++)
+        if (p->ttab[k] >= 0 && p->tson[k] < 0)
+            n = add_knots(&m->table[p->ttab[k]], p->ttshift[k], p->tascale[k], p->ttstart[k], p->ttstop[k], tend, *bp, n);
+    for (int k = 0; p && k < 3 * p->nr; k++)
+        if (p->rtab[k] >= 0) n = add_knots(&m->table[p->rtab[k]], 0.0, p->rascale[k], 0.0, p->rtstop[k / 3], tend, *bp, n);
     qsort(*bp, (size_t)n, sizeof(double), cmp_double);
     int u = 0;
     for (int k = 0; k < n; k++)
@@ -950,7 +981,9 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             /* a time breakpoint: imposed velocities start (their velocity
              * jumps to the imposed value) or end; restart there */
             const double t_bp0 = ibp > 0 ? bp[ibp - 1] : 0.0;
+            int ev_here = t == m->grav_tstart; /* not a mere knot of a load function */
             if (rc_imp_start(m, t_bp0, t, y) > 0) {
+                ev_here = 1;
                 s.events++;
                 if ((st = rc_bk_sink_event(&sink, t, RC_EV_IMPVEL_START, "/IMPVEL", NULL, err))) goto done;
             }
@@ -960,6 +993,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
                 stops += ts > t_bp0 && ts <= t;
             }
             if (stops) {
+                ev_here = 1;
                 s.events++;
                 if ((st = rc_bk_sink_event(&sink, t, RC_EV_IMPVEL_STOP, "/IMPVEL", NULL, err))) goto done;
             }
@@ -972,9 +1006,11 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             /* the next breakpoint, or the end time */
             BKCHECK(bk->set_stop_time(self, ibp < nbp ? bp[ibp] : tend), "SetStopTime");
             /* a full-state record at the event (rc_event_records), or the
-             * output record when the event falls on an output time */
+             * output record when the event falls on an output time; a knot
+             * alone is no event */
             const int on_out = tout - t <= 1e-12 * fmax(fabs(t), dtout);
-            if ((evrec || on_out) && (st = record(bk, self, m, d, out, &fb, t, y, yp, evrec, err))) goto done;
+            if (((evrec && ev_here) || on_out) && (st = record(bk, self, m, d, out, &fb, t, y, yp, evrec && ev_here, err)))
+                goto done;
             if (on_out) {
                 nout++;
                 tout = fmin(nout * dtout, tend);

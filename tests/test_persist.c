@@ -4,7 +4,8 @@
  * (mean normal force m g, duration the run), a block sliding to a stop with
  * Coulomb friction (slip distance v0^2 / (2 mu g), peak force m g), a ball
  * dropped on a floor (an impact, not a persistent contact); the table in the
- * results file with its units.
+ * results file with its units; the note of a run spent on an undamped
+ * contact's vibration.
  */
 #include "harness.h"
 
@@ -256,6 +257,49 @@ static void test_persist_ball_bounces_then_rests(void)
     rc_model_free(m);
 }
 
+/* ---- the vibration note ------------------------------------------------ */
+/* A 1 g ball resting on a floor through TYPE6 Iform 2 (load curve 1e6 N/m,
+ * Stiff 1e8 N/m), without damping: once it has loaded the curve it
+ * vibrates on the Stiff line between zero and twice its weight for ever,
+ * with the period 2 pi sqrt(m / Stiff) = 1.99e-5 s, and the integrator
+ * follows every period (some 70 steps each): 2 500 periods in 0.05 s. The
+ * run says so (rc_stats.vibration_note, the results' vibration_note). With
+ * Visc 50 N s/m (damping ratio 0.8 on the curve) the vibration dies out in
+ * a few periods and the run takes a few hundred steps: no note. */
+#define VIB_DECK(visc)                                                                                             \
+    "/BEGIN\nball on an undamped Stiff line\n      2022         0\n"                                            \
+    "                  kg                   m                   s\n"                                            \
+    "                  kg                   m                   s\n"                                            \
+    "/NODE\n1,0,0,0.01\n/RBODY/1\nball\n1,,,,0.001\n4e-8,4e-8,4e-8\n0,0,0\n"                                    \
+    "/SURF/ELLIPS/1\nball\n0,2,1\n0,0,0.01\n0.01,0.01,0.01\n/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"                \
+    "/GRNOD/NODE/1\nball\n1\n/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n/FUNCT/1\nlinear\n0,0\n1,1000000\n"               \
+    "/INTER/TYPE6/1\nball on floor\n1,2\n0,0\n\n1,2\n0,,100000000\n" visc "\n/RUN\n0.05,0.001\n/END\n"
+
+static void test_vibration_note_undamped_stiff_line(void)
+{
+    for (int damped = 0; damped < 2; damped++) {
+        rc_model *m = load_text(damped ? "vib_damped.rad" : "vib_undamped.rad", damped ? VIB_DECK("50") : VIB_DECK(""));
+        ENSURE(m != NULL);
+        if (!m) return;
+        rc_run_options opt = {.output_path = tu_tmp_write(damped ? "vib_damped.nc" : "vib_undamped.nc", "")};
+        rc_stats st;
+        rc_error e;
+        ENSURE(rc_run(m, &opt, &st, &e) == RC_OK);
+        printf("    %s: %ld steps; note \"%s\"\n", damped ? "Visc 50" : "undamped", st.steps, st.vibration_note);
+        if (damped) {
+            ENSURE(st.steps < 10000);
+            ENSURE(st.vibration_note[0] == '\0');
+        } else {
+            ENSURE(st.steps >= RC_VIB_NOTE_STEPS);
+            ENSURE(strstr(st.vibration_note, "/INTER/TYPE6/1") != NULL);
+            const char *p = strstr(st.vibration_note, ", period ");
+            double T = p ? atof(p + 9) : NAN;
+            ENSURE_NEAR(T, 2.0 * 3.14159265358979 * sqrt(1e-3 / 1e8), 1e-2, 0.0);
+        }
+        rc_model_free(m);
+    }
+}
+
 void suite_persist(void);
 void suite_persist(void)
 {
@@ -263,4 +307,5 @@ void suite_persist(void)
     RUN_TEST(test_persist_box_resting_mean_force);
     RUN_TEST(test_persist_sliding_block_slip_distance);
     RUN_TEST(test_persist_ball_bounces_then_rests);
+    RUN_TEST(test_vibration_note_undamped_stiff_line);
 }

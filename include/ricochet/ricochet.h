@@ -336,6 +336,9 @@ typedef struct rc_stats {
                              method (events method_explicit)            */
     long switches_implicit; /* and back (events method_implicit)        */
     long steps_explicit;  /* of `steps`, those of the explicit method     */
+    char vibration_note[480]; /* non-empty: a long run whose steps went
+                             mostly into following undamped contact
+                             vibrations (docs/theory.md 7.10)          */
 } rc_stats;
 
 /* The callback of every event (rc_run_options.on_event): called once per

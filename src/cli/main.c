@@ -513,6 +513,9 @@ int main(int argc, char **argv)
             printf("ricochet %s: %s -> %s\n", rc_version(), case_path, opt.output_path);
             rc_stats_print(&s, stdout);
         }
+        /* a run spent following undamped contact vibrations: said even
+         * with -q (rc_stats_print says it otherwise) */
+        if (quiet && st == RC_OK && s.vibration_note[0]) fprintf(stderr, "ricochet: note: %s\n", s.vibration_note);
         /* violations the run went on after (on-violation warn): never in silence */
         if (st == RC_OK && s.violations > 0)
             fprintf(stderr, "ricochet: warning: physics checks: %s (all of them in the violation table of %s)\n",

@@ -1220,6 +1220,7 @@ static rc_status write_final(rc_output *o, const rc_stats *st, int complete, con
         if (rc == RC_OK) rc = put_double(o, "stats_t_end", st->t_end, err);
         if (rc == RC_OK) rc = put_double(o, "stats_wall_time", st->wall_time, err);
         if (rc == RC_OK) rc = put_double(o, "energy_balance_residual", st->energy_residual, err);
+        if (rc == RC_OK && st->vibration_note[0]) rc = put_text(o, NC_GLOBAL, "vibration_note", st->vibration_note, err);
         static const char *const lname[3] = {"stats_klu_analyses", "stats_newton_nnz", "stats_pattern_nnz"};
         for (int k = 0; k < 3; k++)
             if (rc == RC_OK && o->linalg[k] >= 0) rc = put_int64(o, lname[k], o->linalg[k], err);

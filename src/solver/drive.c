@@ -1143,6 +1143,7 @@ done:
     s.contacts = im.npc;
     for (int k = 0; k < im.npc && k < RC_STATS_CONTACTS; k++) s.contact[k] = im.pc[k];
     snprintf(s.sampling_note, sizeof s.sampling_note, "%s", note);
+    rc_impacts_vibration_note(&im, m, s.steps, s.vibration_note, sizeof s.vibration_note);
     if (out && st == RC_OK) st = rc_output_impacts(out, im.n, im.row, im.npc, im.pc, err);
     else if (out) {
         rc_error e3;

@@ -115,4 +115,19 @@ double rc_contact_record_interval(const rc_model *m, double dtout);
 /* Records per contact below which the note is given [-]. */
 #define RC_IMPACT_MIN_RECORDS 10
 
+/* The note of a long run (at least RC_VIB_NOTE_STEPS steps) whose steps
+ * went mostly into following undamped contact vibrations: the persistent
+ * contacts (pc, after rc_impacts_finish) of the interfaces without normal
+ * damping, each vibrating with the period 2 pi sqrt(m / k) of its closed
+ * contact (m the reduced mass of its free bodies, k its stiffness scale or
+ * its Stiff line, the steeper), when the run took at most 4
+ * RC_VIB_STEPS_PER_PERIOD steps for each of those periods; buf[0] = 0
+ * otherwise (docs/theory.md 7.10). */
+void rc_impacts_vibration_note(const rc_impacts *im, const rc_model *m, long steps, char *buf, size_t n);
+/* Steps of a run from which the vibration note is considered [-]. */
+#define RC_VIB_NOTE_STEPS 100000
+/* Steps an error-controlled integrator spends on a period of an undamped
+ * vibration it follows (BDF at rtol 1e-6 .. 1e-10: 30 to 70) [-]. */
+#define RC_VIB_STEPS_PER_PERIOD 30
+
 #endif

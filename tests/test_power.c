@@ -15,6 +15,9 @@
 #include "model/model.h"
 #include "model/power.h"
 #include "engine/kernels/step5.h"
+#include "engine/events/events.h"
+#include "engine/assembly/assembly.h"
+#include "testutil.h"
 #include "base/error.h"
 #include "harness.h"
 
@@ -445,6 +448,51 @@ static void test_power_friction_card_overrides_step5(void)
     }
 }
 
+/* A released power-law contact (its damping C P^m3 v pulled the total
+ * force below zero) whose force root rises through zero with P at the
+ * rounding of 0 while the bodies separate: with m3 > n the elastic force
+ * outlasts the damping in the last 1e-17 m, and the force's root falls
+ * within rounding of the zone's. That is the separation, not a closing
+ * (a box landing on a floor, 1 km from the origin, recorded a
+ * contact_close at -1.46 m/s and its contact_separate at the same instant;
+ * near the origin only the separation). Deeper, the same root closes the
+ * contact again. */
+static void test_power_released_force_root_at_zero_separates(void)
+{
+    rc_model *m = TU_COMPILE_OK("/BEGIN\nball leaving a floor\n      2022         0\n"
+                                "                  kg                   m                   s\n"
+                                "                  kg                   m                   s\n" BODY_DECK
+                                "/SURF/ELLIPS/1\ns\n0,2,1\n0,0,0.05\n0.05,0.05,0.05\n"
+                                "/INTER/POWER/1\nt\n1,2\n1e8,1.5,1e4,1,2\n/END\n",
+                                "power_released_root.rad");
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    int roots[64] = {0}, restart = 0;
+    ENSURE(d && y && m->ninter == 1 && rc_root_count(m) <= 64);
+    if (!d || !y) goto out;
+    const double deep[2] = {1e-18, 1e-6}; /* P [m]: at the rounding of 0, and inside */
+    for (int k = 0; k < 2; k++) {
+        rc_initial_state(m, y);
+        y[m->body_yadr[0] + 2] = 0.05 - deep[k] - m->origin[2];
+        y[m->body_yadr[0] + 9] = 1.46; /* leaving */
+        d->inter_mode[0] = RC_MODE_RELEASED;
+        memset(roots, 0, sizeof roots);
+        roots[RC_ROOT_FORCE] = 1;
+        rc_event ev[4];
+        const int n = rc_events_apply(m, d, 0.0, y, roots, ev, 4, &restart);
+        printf("    P %g m, leaving at 1.46 m/s: %d event(s), %s, mode %d\n", deep[k], n,
+               n > 0 ? rc_event_kind_name(ev[0].kind) : "-", d->inter_mode[0]);
+        ENSURE(n == 1);
+        if (k == 0) ENSURE(n == 1 && ev[0].kind == RC_EV_CONTACT_SEPARATE && d->inter_mode[0] == RC_MODE_OPEN);
+        else ENSURE(n == 1 && ev[0].kind == RC_EV_CONTACT_CLOSE && d->inter_mode[0] == RC_MODE_CLOSED);
+    }
+out:
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 void suite_power(void);
 void suite_power(void)
 {
@@ -455,4 +503,5 @@ void suite_power(void)
     RUN_TEST(test_power_impvel_follows_then_releases);
     RUN_TEST(test_power_friction_card_overrides_step5);
     RUN_TEST(test_power_card_errors);
+    RUN_TEST(test_power_released_force_root_at_zero_separates);
 }

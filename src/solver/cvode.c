@@ -119,6 +119,7 @@ typedef struct run_ctx {
     double *jflim;  /* [2 ninter] the slipping interfaces' friction limits and sliding speeds then
                        (rc_scratch.inter_flim) */
     double *jfnr;   /* [ninter] the closed interfaces' normal forces then (rc_scratch.inter_fnr) */
+    unsigned char *jland; /* [ninter] closed from open by the last events, until it opens (loads_moved) */
     int fresh; /* modes changed without a restart: the Jacobian is stale */
     double h_restart; /* the first step of the last restart [s] (restart_step) */
     int own_h0;       /* the integrator runs from a restart with h_restart, no step taken yet */
@@ -232,28 +233,39 @@ static int limits_moved(const run_ctx *c)
     return 0;
 }
 
-/* Has the normal force of a closed interface doubled or halved (beyond
- * RC_SLIP_BAND of its force scale) since the Jacobian was evaluated (jfnr)?
- * The contact's stiffness moves with its load (a power law's dF/dP grows
- * as P^(n-1) from zero at the landing), and so do the rows of the states
- * that follow the force: the accounting states, the effective penetration
- * and the friction. The accounting states feed nothing back: a Newton
- * iteration converges on the motion whatever their rows, and with a
- * matrix kept from the landing instant their corrections follow the stale
- * rows every step, a bias the error test cannot see (it moves the history
- * too). Seen: a spinning box landing on a corner with a matrix from the
- * first 1e-14 s of the contact kept for 40 steps; its friction work fell
- * 1e-3 J in 14 us while its rate was +0.9 W at most. */
-static int loads_moved(const run_ctx *c)
+/* Has the normal force of an interface that closed from open (jland) grown
+ * by a factor RC_JLOAD_FACTOR, beyond RC_JLOAD_BAND of its force scale,
+ * since the Jacobian was evaluated (jfnr)? A restart at the closing
+ * evaluates the Jacobian at P = 0, where the law's stiffness is about zero
+ * (a power law's dF/dP grows as P^(n-1)) and the rows of the states that
+ * follow the force (the accounting states, the effective penetration, the
+ * friction) are those of no contact, or singular (entries of 1e17 against
+ * P_e at 1e-17 m). The accounting states feed nothing back: Newton's
+ * iteration converges on the motion whatever their rows, and with that
+ * matrix kept their corrections follow the stale rows every step, a bias
+ * the error test cannot see (it moves the history too). Seen: a spinning
+ * box landing on a corner kept the matrix of the closing for 40 steps
+ * while its force grew a thousandfold, and its friction work fell 1e-3 J
+ * while its rate was at most +0.9 W. Only after a closing: a contact that
+ * vibrates between zero and twice its load asked for a matrix every half
+ * period (a meshed box on a belt, 1.9 times longer). */
+#define RC_JLOAD_FACTOR 10.0
+#define RC_JLOAD_BAND 1e-3
+static int loads_moved(run_ctx *c)
 {
     const double *f = c->d->sc->inter_fnr, *fj = c->jfnr;
+    int moved = 0;
     for (int i = 0; i < c->m->ninter; i++) {
+        if (!c->jland[i]) continue;
+        if (c->d->inter_mode[i] != RC_MODE_CLOSED) {
+            c->jland[i] = 0;
+            continue;
+        }
         const double fs = c->m->inter_fscale[i];
-        if (!(isfinite(fs) && fs > 0)) continue;
-        const double fb = RC_SLIP_BAND * fs, a = f[i], b = fj[i];
-        if (a > 2.0 * b + fb || b > 2.0 * a + fb) return 1;
+        const double fb = isfinite(fs) && fs > 0 ? RC_JLOAD_BAND * fs : 0.0, a = f[i], b = fj[i];
+        if (a > RC_JLOAD_FACTOR * b + fb) moved = 1;
     }
-    return 0;
+    return moved;
 }
 
 /* The Newton matrix I - gamma J formed in place (CVodeSetLinSysFn): J is
@@ -500,6 +512,7 @@ static rc_status cv_open(void *self, const rc_model *m, rc_data *d, const rc_run
     c->jshare = calloc((size_t)m->npt + 1, sizeof(double));
     c->jflim = calloc(2 * (size_t)m->ninter + 1, sizeof(double));
     c->jfnr = calloc((size_t)m->ninter + 1, sizeof(double));
+    c->jland = calloc((size_t)m->ninter + 1, 1);
     c->kidx = malloc(ny * sizeof(int));
     c->ridx = malloc(ny * sizeof(int));
     c->qoff = malloc(((size_t)m->nbody + 1) * sizeof(int));
@@ -507,7 +520,7 @@ static rc_status cv_open(void *self, const rc_model *m, rc_data *d, const rc_run
     c->hwork = malloc((2 * (size_t)m->nbody + 1) * sizeof(double));
     c->dirs = calloc((size_t)c->rm.n + 1, sizeof(int));
     if (!c->hwork || !c->dirs) return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
-    if (!c->old_mode || !c->old_branch || !c->old_track || !c->old_slip || !c->old_pslip || !c->jsave || !c->jshare || !c->jflim || !c->jfnr || !c->kidx ||
+    if (!c->old_mode || !c->old_branch || !c->old_track || !c->old_slip || !c->old_pslip || !c->jsave || !c->jshare || !c->jflim || !c->jfnr || !c->jland || !c->kidx ||
         !c->ridx || !c->qoff)
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     /* the driver fills the whole state; CVODE's vectors follow in cv_start,
@@ -1016,6 +1029,7 @@ static int cv_after_events(void *self, double t, const double *y, int cpl_ev, in
             }
         } else if (!same || d->inter_slip[i] != c->old_slip[i] || pflip) {
             changed = 1;
+            if (d->inter_mode[i] == RC_MODE_CLOSED && c->old_mode[i] == RC_MODE_OPEN) c->jland[i] = 1;
             ok = rc_jac_refresh_inter(m, d, i, y, c->jsave) == 0;
         }
     }
@@ -1051,6 +1065,7 @@ static void cv_close(void *self)
     free(c->jshare);
     free(c->jflim);
     free(c->jfnr);
+    free(c->jland);
     if (c->d) c->d->jac_skip = NULL;
     free(c->cst);
     free(c->kidx);

@@ -1091,4 +1091,16 @@ int rc_model_state_size(const rc_model *m) { return m ? m->ny : 0; }
 
 int rc_model_note_count(const rc_model *m) { return m ? m->nnote : 0; }
 
+rc_status rc_model_add_note(rc_model *m, char *s, rc_error *err)
+{
+    char **nn = s ? realloc(m->note, ((size_t)m->nnote + 1) * sizeof *nn) : NULL;
+    if (!nn) {
+        free(s);
+        RC_RAISE(err, RC_ENOMEM, "out of memory for the compiler's notices");
+    }
+    m->note = nn;
+    m->note[m->nnote++] = s;
+    return RC_OK;
+}
+
 const char *rc_model_note(const rc_model *m, int i) { return m && i >= 0 && i < m->nnote ? m->note[i] : NULL; }

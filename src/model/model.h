@@ -557,4 +557,8 @@ int rc_cmp_i64(const void *a, const void *b);
 int64_t *rc_csc_from_keys(int64_t *key, int64_t nk, int64_t n, int64_t *colptr, int64_t *nnz);
 void rc_jac_free(rc_model *m);
 
+/* Append the notice s (malloc'ed; owned by m afterwards, freed on failure)
+ * to the model's notices (rc_model_note). */
+rc_status rc_model_add_note(rc_model *m, char *s, rc_error *err);
+
 #endif

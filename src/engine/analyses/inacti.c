@@ -50,19 +50,6 @@ static int sort_unique(int *a, int n)
     return u;
 }
 
-/* Append the note s (owned by m afterwards, freed on failure). */
-static rc_status add_note(rc_model *m, char *s, rc_error *err)
-{
-    char **nn = s ? realloc(m->note, ((size_t)m->nnote + 1) * sizeof *nn) : NULL;
-    if (!nn) {
-        free(s);
-        RC_RAISE(err, RC_ENOMEM, "out of memory for the compiler's notices");
-    }
-    m->note = nn;
-    m->note[m->nnote++] = s;
-    return RC_OK;
-}
-
 /* The penetrating points of TYPE7 card i (index in c->type7) in model m at
  * its initial state y: Inacti 1 the node ids, Inacti 2 the indices of the
  * main segments in its /SURF/SEG list, into out (ascending, unique; *nout);
@@ -186,7 +173,7 @@ rc_status rc_inacti_build(const rc_case *c, rc_model **pm, rc_error *err)
             rc_model_free(m);
             *pm = m = m2;
             for (int i = 0; i < c->ntype7 && !st; i++)
-                if (drop.n[i] > 0) st = add_note(m, card_note(c, i, drop.ids[i], drop.n[i], ntot[i], gap[i]), err);
+                if (drop.n[i] > 0) st = rc_model_add_note(m, card_note(c, i, drop.ids[i], drop.n[i], ntot[i], gap[i]), err);
         }
     }
     for (int i = 0; drop.ids && i < c->ntype7; i++) free(drop.ids[i]);

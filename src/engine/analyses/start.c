@@ -101,6 +101,10 @@ static void facing_advice(const rc_case *c, rc_model *m, int i, const double *y,
     }
 }
 
+/* An accepted overlap deeper than this many penetrations under the weight
+ * is said (a model notice): a resting start sits at about one [-]. */
+#define RC_START_DEEP_FACTOR 10.0
+
 rc_status rc_start_check(const rc_case *c, rc_model *m, rc_error *err)
 {
     if (m->ninter == 0) return RC_OK;
@@ -126,7 +130,25 @@ rc_status rc_start_check(const rc_case *c, rc_model *m, rc_error *err)
         const double band = touch_band(m, i, y, &r);
         if (!(r.p_raw > band)) continue;
         const double e0 = rc_inter_stored_energy(m, d, i, 0.0, y);
-        if (!(e0 > allow) && isfinite(e0)) continue;
+        if (!(e0 > allow) && isfinite(e0)) {
+            /* accepted, but deeper than a resting start: said */
+            const double pw = m->inter_pweight[i];
+            if (isfinite(pw) && pw > 0 && r.p_raw > RC_START_DEEP_FACTOR * pw) {
+                char *s = malloc(640);
+                if (!s) st = RC_SET(err, RC_ENOMEM, "out of memory for the start check");
+                else {
+                    snprintf(s, 640,
+                             RC_LOCFMT "card %s: the surfaces overlap at t = 0 by %.6g m past the Gap, %.3g times "
+                             "the penetration under the weight (%.3g m): accepted, as the law holds %.3g J there, "
+                             "at most the scene's energy scale E_s = %.3g J, which it releases into the bodies at "
+                             "once; if they should touch, move them apart, or set Inacti = 5 (the initial "
+                             "penetration taken as a reduction of the gap)",
+                             RC_LOC(m->inter_loc[i]), m->inter_name[i], r.p_raw, r.p_raw / pw, pw, e0, sc.escale);
+                    st = rc_model_add_note(m, s, err);
+                }
+            }
+            continue;
+        }
         rc_inter_report rc;
         rc_inter_report_eval_d(m, d, i, 0.0, y, &rc);
         char sa[64], sb[64], adv[512];

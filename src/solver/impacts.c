@@ -513,9 +513,12 @@ void rc_impacts_vibration_note(const rc_impacts *im, const rc_model *m, long ste
             break;
         }
     }
-    /* the vibrations account for the steps at up to 4 RC_VIB_STEPS_PER_PERIOD
-     * a period (BDF at rtol 1e-8 took 66 on a ball resting on its Stiff line) */
-    if (best[0] < 0 || 4.0 * total < (double)steps) return;
+    /* the vibrations account for the steps at 0.5 to 4 RC_VIB_STEPS_PER_PERIOD
+     * a period (BDF at rtol 1e-8 took 66 on a ball resting on its Stiff line);
+     * fewer than 15 a period: the run does not follow them (they do not
+     * ring: friction or a lighter load holds them), and its steps went
+     * elsewhere */
+    if (best[0] < 0 || 4.0 * total < (double)steps || (double)steps < 0.5 * total) return;
     size_t l = (size_t)snprintf(buf, n,
                                 "%ld steps, about %.0f a period of undamped contact vibrations, which they mostly "
                                 "followed: ",

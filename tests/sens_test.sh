@@ -86,9 +86,15 @@ for J in fd sens; do
 done
 fd_vals=$(grep "^    fitted" "$tmp/fit_fd.txt" | awk '{print $2, $5}')
 sens_vals=$(grep "^    fitted" "$tmp/fit_sens.txt" | awk '{print $2, $5}')
-if [ "$(cat "$tmp/rc_sens")" = 0 ] && [ -n "$sens_vals" ] && [ "$fd_vals" = "$sens_vals" ] &&
+# the same fit: values to 1e-6 and standard errors to 1e-3 (the finite
+# differences of whole runs carry the integrator's step sequence; the
+# printed digits of two fits at 6e-8 of each other differ)
+same=$(paste <(echo "$fd_vals") <(echo "$sens_vals") |
+    awk 'NF == 4 { n++; if (($1 - $3) > 1e-6 * $1 || ($3 - $1) > 1e-6 * $1 || ($2 - $4) > 1e-3 * $2 || ($4 - $2) > 1e-3 * $2) bad++ }
+         END { print (n == 2 && !bad) ? "yes" : "no" }')
+if [ "$(cat "$tmp/rc_sens")" = 0 ] && [ -n "$sens_vals" ] && [ "$same" = yes ] &&
     grep -q "forward sensitivities, one run each" "$tmp/fit_sens.txt"; then
-    echo "PASS sens.fit_jacobian: the same fitted values and standard errors as with finite differences ($(echo $sens_vals | tr '\n' ' ')); $(grep -o '[0-9]* simulations' "$tmp/fit_fd.txt") (fd) against $(grep -o '[0-9]* simulations' "$tmp/fit_sens.txt") (sens)"
+    echo "PASS sens.fit_jacobian: the same fitted values (1e-6) and standard errors (1e-3) as with finite differences ($(echo $sens_vals | tr '\n' ' ') against $(echo $fd_vals | tr '\n' ' ')); $(grep -o '[0-9]* simulations' "$tmp/fit_fd.txt") (fd) against $(grep -o '[0-9]* simulations' "$tmp/fit_sens.txt") (sens)"
 else echo "FAIL sens.fit_jacobian: fd [$fd_vals] sens [$sens_vals] (exit $(cat "$tmp/rc_sens")): $(head -c 300 "$tmp/fit_sens.txt")"; fi
 # with measured impact quantities (the events' derivatives): the same fit
 printf 'inter, impact, quantity, value, sigma\n1, 1, duration [ms], 21.36, 0.2\n1, 1, v_out [m/s], 1.594, 0.01\n1, 1, v_in [m/s], 2.215, 0.01\n1, 1, t_close [s], 0.22576, 0.0005\n' > "$tmp/imp.csv"

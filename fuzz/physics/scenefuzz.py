@@ -483,9 +483,11 @@ def cmd_run(a):
     wall = time.time() - t0
     nviol = sum(1 for r in records if r["violations"])
     nexp = sum(1 for r in records if r.get("explained"))
-    line = (f"physfuzz: {len(records)} scenes (seed {a.seed}, {wall:.0f} s, {a.jobs} jobs): {nviol} with violations" +
-            "".join(f"; {', '.join(f'{k} {v}' for k, v in sorted(inv.items()))}" for _ in [0] if inv) +
-            f"; {nexp} slow runs explained by their vibration_note (not violations)")
+    parts = [f"physfuzz: {len(records)} scenes (seed {a.seed}, {wall:.0f} s, {a.jobs} jobs): {nviol} with violations"]
+    if inv:
+        parts.append(", ".join(f"{k} {v}" for k, v in sorted(inv.items())))
+    parts.append(f"{nexp} slow runs explained by their vibration_note (not violations)")
+    line = "; ".join(parts)
     print(line)
     report = {"args": vars(a), "wall": wall, "ricochet": opts["ricochet"], "tally": inv, "by_kind": kinds,
               "date": datetime.datetime.now().isoformat(timespec="seconds"), "scenes": records}

@@ -482,8 +482,11 @@ void rc_impacts_vibration_note(const rc_impacts *im, const rc_model *m, long ste
     buf[0] = '\0';
     if (steps < RC_VIB_NOTE_STEPS || im->npc == 0) return;
     double total = 0.0; /* steps the vibrations account for */
-    int best[3] = {-1, -1, -1};
-    double per[3] = {0.0, 0.0, 0.0}, dur[3] = {0.0, 0.0, 0.0}, prd[3] = {0.0, 0.0, 0.0};
+    /* the three interfaces with the most periods, most first */
+    struct {
+        int i;
+        double periods, closed, period;
+    } best[3] = {{-1, 0, 0, 0}, {-1, 0, 0, 0}, {-1, 0, 0, 0}};
     for (int i = 0; i < m->ninter; i++) {
         if (!undamped(m, i)) continue;
         double d = 0.0;
@@ -498,34 +501,28 @@ void rc_impacts_vibration_note(const rc_impacts *im, const rc_model *m, long ste
         if (!(d > 0) || !(k > 0) || !isfinite(k) || !(mr > 0) || !isfinite(mr)) continue;
         const double T = 2.0 * RC_PI * sqrt(mr / k), np = d / T;
         total += RC_VIB_STEPS_PER_PERIOD * np;
-        for (int r = 0; r < 3; r++) {
-            if (best[r] >= 0 && per[r] >= np) continue;
-            for (int q = 2; q > r; q--) {
-                best[q] = best[q - 1];
-                per[q] = per[q - 1];
-                dur[q] = dur[q - 1];
-                prd[q] = prd[q - 1];
-            }
-            best[r] = i;
-            per[r] = np;
-            dur[r] = d;
-            prd[r] = T;
-            break;
-        }
+        int r = 0;
+        while (r < 3 && best[r].i >= 0 && best[r].periods >= np) r++;
+        if (r == 3) continue;
+        memmove(best + r + 1, best + r, (size_t)(2 - r) * sizeof best[0]);
+        best[r].i = i;
+        best[r].periods = np;
+        best[r].closed = d;
+        best[r].period = T;
     }
     /* the vibrations account for the steps at 0.5 to 4 RC_VIB_STEPS_PER_PERIOD
      * a period (BDF at rtol 1e-8 took 66 on a ball resting on its Stiff line);
      * fewer than 15 a period: the run does not follow them (they do not
      * ring: friction or a lighter load holds them), and its steps went
      * elsewhere */
-    if (best[0] < 0 || 4.0 * total < (double)steps || (double)steps < 0.5 * total) return;
+    if (best[0].i < 0 || 4.0 * total < (double)steps || (double)steps < 0.5 * total) return;
     size_t l = (size_t)snprintf(buf, n,
                                 "%ld steps, about %.0f a period of undamped contact vibrations, which they mostly "
                                 "followed: ",
                                 steps, (double)steps * RC_VIB_STEPS_PER_PERIOD / total);
-    for (int r = 0; r < 3 && best[r] >= 0 && l < n; r++)
+    for (int r = 0; r < 3 && best[r].i >= 0 && l < n; r++)
         l += (size_t)snprintf(buf + l, n - l, "%s%s closed %.3g s, period %.3g s (%.3g periods)", r ? "; " : "",
-                              m->inter_name[best[r]], dur[r], prd[r], per[r]);
+                              m->inter_name[best[r].i], best[r].closed, best[r].period, best[r].periods);
     if (l < n)
         snprintf(buf + l, n - l, "; the integrator follows each period to the tolerances and without damping they "
                                  "never die out: a normal damping (TYPE6 Visc or a restitution, the power law's C) "

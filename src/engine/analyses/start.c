@@ -134,10 +134,11 @@ rc_status rc_start_check(const rc_case *c, rc_model *m, rc_error *err)
             /* accepted, but deeper than a resting start: said */
             const double pw = m->inter_pweight[i];
             if (isfinite(pw) && pw > 0 && r.p_raw > RC_START_DEEP_FACTOR * pw) {
-                char *s = malloc(640);
+                const size_t ns = 640;
+                char *s = malloc(ns);
                 if (!s) st = RC_SET(err, RC_ENOMEM, "out of memory for the start check");
                 else {
-                    snprintf(s, 640,
+                    snprintf(s, ns,
                              RC_LOCFMT "card %s: the surfaces overlap at t = 0 by %.6g m past the Gap, %.3g times "
                              "the penetration under the weight (%.3g m): accepted, as the law holds %.3g J there, "
                              "at most the scene's energy scale E_s = %.3g J, which it releases into the bodies at "

@@ -123,9 +123,22 @@ static int roots_waiting(const rc_model *m, const rc_data *d, double t, const do
         if (md == RC_MODE_CLOSED && fr->kind != RC_FK_NONE && fr->form == RC_FF_INCREMENTAL && !fr->exact &&
             m->inter_npt[i] == 0 && !(gi[RC_ROOT_SLIP] <= vb))
             why = d->inter_slip[i] ? "slipping along its force (v_t . e > 0)" : "sticking beyond its limit";
+        /* TYPE6 hysteresis: a curve's rate root (LOAD waits for the law's
+         * rate to fall below zero, UNLOAD to rise above), the Stiff line's
+         * bounds (both > 0) */
+        if (md != RC_MODE_OPEN && m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0) {
+            const int br = d->inter_branch[i];
+            if (br == RC_BR_LOAD && !(gi[RC_ROOT_HYST_A] > 0)) why = "on the load curve, its rate root not > 0";
+            if (br == RC_BR_UNLOAD && !(gi[RC_ROOT_HYST_A] < 0)) why = "on the unload curve, its rate root not < 0";
+            if (br == RC_BR_ELASTIC && !(gi[RC_ROOT_HYST_A] > 0 && gi[RC_ROOT_HYST_B] > 0))
+                why = "on the Stiff line, a bound's root not > 0";
+        }
         if (why) {
             if (bad < 10) printf("    %s: %s %s (zone %.3g, force %.3g, slip %.3g)\n", what, m->inter_name[i], why,
                                  gi[RC_ROOT_ZONE], gi[RC_ROOT_FORCE], gi[RC_ROOT_SLIP]);
+            if (bad < 10 && m->inter_iform[i] != 0)
+                printf("      branch %d, hysteresis roots %.3g %.3g\n", d->inter_branch[i], gi[RC_ROOT_HYST_A],
+                       gi[RC_ROOT_HYST_B]);
             bad++;
         }
     }
@@ -133,9 +146,12 @@ static int roots_waiting(const rc_model *m, const rc_data *d, double t, const do
 }
 
 /* Random states near the deck's start (positions moved by a few ulps to a
- * few 1e-9 of their size, velocities of any size and sign), random modes;
- * after rc_modes_touch every root waits on its side. */
-static void roots_wait_on_their_side(const char *deck, const char *name, int trials)
+ * few 1e-9 of their size, velocities of any size and sign; with sink > 0,
+ * half of them with the free bodies lowered along z by sink times 1e-3 to
+ * 1 [m]), random modes (and for a TYPE6 law with hysteresis random
+ * branches, F_h on its curve or between them); after rc_modes_touch every
+ * root waits on its side. */
+static void roots_wait_on_their_side(const char *deck, const char *name, int trials, double sink)
 {
     rc_model *m = TU_COMPILE_OK(deck, name);
     if (!m) return;
@@ -154,6 +170,9 @@ static void roots_wait_on_their_side(const char *deck, const char *name, int tri
             const double vs = urand() < 0.3 ? 0.0 : pow(10.0, -12.0 + 12.0 * urand());
             for (int q = 7; q < 13; q++) s[q] += (urand() - 0.5) * vs;
         }
+        const double down = sink > 0 && urand() < 0.5 ? sink * pow(10.0, -3.0 * urand()) : 0.0;
+        for (int b = 0; b < m->nbody; b++)
+            if (m->body_yadr[b] >= 0) y[m->body_yadr[b] + 2] -= down;
         for (int i = 0; i < m->ninter; i++) {
             const int r = (int)(4 * urand());
             d->inter_mode[i] = r == 0 ? RC_MODE_OPEN : r == 3 ? RC_MODE_RELEASED : RC_MODE_CLOSED;
@@ -166,6 +185,21 @@ static void roots_wait_on_their_side(const char *deck, const char *name, int tri
             const rc_fric *fr = &m->inter_fr[i];
             if (fr->tidx >= 0)
                 for (int q = 0; q < 3; q++) y[m->inter_eadr[i] + fr->tidx + q] = (urand() - 0.5) * 20.0;
+            if (m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0 && d->inter_mode[i] != RC_MODE_OPEN) {
+                /* P_e at P or a little below; F_h on its branch's curve, on
+                 * the Stiff line between the curves */
+                rc_inter_report q;
+                if (m->inter_peidx[i] >= 0) {
+                    y[m->inter_eadr[i] + m->inter_peidx[i]] = 0.0;
+                    rc_inter_report_eval_d(m, d, i, 0.0, y, &q);
+                    y[m->inter_eadr[i] + m->inter_peidx[i]] = fmax(0.0, q.p * (1.0 - 0.1 * urand()));
+                }
+                const int br = (int)(3 * urand());
+                d->inter_branch[i] = br == 0 ? RC_BR_LOAD : br == 1 ? RC_BR_UNLOAD : RC_BR_ELASTIC;
+                rc_inter_report_eval_d(m, d, i, 0.0, y, &q);
+                y[m->inter_eadr[i] + m->inter_hidx[i]] =
+                    br == 0 ? q.fl : br == 1 ? q.fu : q.fu + (q.fl - q.fu) * urand();
+            }
         }
         rc_event ev[64];
         int restart = 0;
@@ -188,9 +222,9 @@ static void roots_wait_on_their_side(const char *deck, const char *name, int tri
 
 static void test_touching_roots_wait_on_their_side(void)
 {
-    roots_wait_on_their_side(cradle_deck(), "cradle.rad", 400);
-    roots_wait_on_their_side(incline_deck, "incline.rad", 400);
-    roots_wait_on_their_side(box_deck, "box.rad", 200);
+    roots_wait_on_their_side(cradle_deck(), "cradle.rad", 400, 0.0);
+    roots_wait_on_their_side(incline_deck, "incline.rad", 400, 0.0);
+    roots_wait_on_their_side(box_deck, "box.rad", 200, 0.0);
 }
 
 /* End-to-end: the cradle passes its momentum down the row (no ball passes
@@ -905,6 +939,20 @@ out:
     "/INTER/TYPE6/1\nbox on floor\n1,2\n0,0.5\n\n1,2\n0,,100000000\n" visc "\n"                                  \
     "/RUN\n0.01,0.001\n/END\n"
 
+/* The roots of the hysteresis after the touch pass: the box of these tests
+ * at random depths (up to 1e-6 m, its load curve's force there 1 N) and
+ * rates, in random modes and branches. A contact released at zero force on
+ * the floor of its unload curve and closed again there while its law
+ * reloads must reload in the same pass: deciding the branch only when the
+ * mode had not changed left it on the floor with its rate root started
+ * past zero (a meshed box sank 2 m through its belt at zero force); and a
+ * curve kept at a rate within the slip band waits that band away. */
+static void test_hysteresis_roots_wait_on_their_side(void)
+{
+    roots_wait_on_their_side(BOX_IFORM2_DECK("100"), "box_iform2_visc.rad", 400, 1e-6);
+    roots_wait_on_their_side(BOX_IFORM2_DECK(""), "box_iform2.rad", 400, 1e-6);
+}
+
 static void test_pe_no_recovery_at_zero_force(void)
 {
     rc_model *m = TU_COMPILE_OK(BOX_IFORM2_DECK("100"), "pe_zero_force.rad");
@@ -1484,6 +1532,7 @@ void suite_passive(void)
     RUN_TEST(test_state_stiffness_beyond_resolution_refused);
     RUN_TEST(test_landing_band_kept_through_flips);
     RUN_TEST(test_power_rdf_root_on_damping_rate);
+    RUN_TEST(test_hysteresis_roots_wait_on_their_side);
     RUN_TEST(test_pe_no_recovery_at_zero_force);
     RUN_TEST(test_pe_recovery_continuous_in_its_payment);
     RUN_TEST(test_elastic_damped_release_ledger);

@@ -372,7 +372,7 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
                 gi[RC_ROOT_HYST_A] = r.fl - r.fh + hb;
                 gi[RC_ROOT_HYST_B] = r.fh - r.fu + hb;
             } else {
-                gi[RC_ROOT_HYST_A] = r.vl; /* the law's rate */
+                gi[RC_ROOT_HYST_A] = r.vl + d->inter_rband[i]; /* the law's rate (its band: events.c) */
             }
         }
         /* Inacti 5: tracking stops when P_raw turns, or the offset is used up */

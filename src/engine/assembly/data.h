@@ -102,7 +102,8 @@ typedef struct rc_data {
                             separates at P = -band; open: -band, it closes at
                             P = +band), force root F_n + band[1] [N] (closed:
                             +fband; released: -fband); 0 otherwise */
-    double *inter_rband; /* [ninter] the power law's RDF rate root band [m/s]: root dP_e/dt +
+    double *inter_rband; /* [ninter] the rate root band of the power law's RDF branch and of
+                            a TYPE6 hysteresis curve [m/s]: root (that rate) +
                             band, signed (LOAD: +band, the rebound waits for the rate to
                             fall below -band; UNLOAD: -band), set where the branch was
                             decided at a rate within its rounding (events.c); 0 again

@@ -1057,7 +1057,35 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             d->inter_mode[i] = RC_MODE_RELEASED;
             reset_friction(m, d, i, y, restart);
             kind = RC_EV_CONTACT_OPEN;
-        } else if (m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0) {
+        } else if (m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0) {
+            /* rebound damping branch at a zero rate of the damping's own
+             * argument (dP/dt, or v_bar with several points), where the
+             * damping force is zero on both branches: decided on P_e's
+             * rate, which its relaxation keeps below v_bar, the branch
+             * switched while the damper carried 5 N and the force's jump
+             * turned the rate back at once (a box resting on an incline:
+             * rebound/approach every 1e-9 s, Zeno) */
+            const int still = fabs(r.vd) <= fabs(dr.vd) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
+            const int dtrend = d->inter_track[i] ? trend : p_trend(r.vd, dr.vd, t, m->dtout, vband, om);
+            if (br == RC_BR_LOAD && still && dtrend < 0) {
+                d->inter_branch[i] = RC_BR_UNLOAD;
+                kind = RC_EV_RDF_REBOUND;
+            } else if (br == RC_BR_UNLOAD && still && dtrend > 0) {
+                d->inter_branch[i] = RC_BR_LOAD;
+                kind = RC_EV_RDF_APPROACH;
+            }
+        }
+        /* hysteresis: decided after the contact's mode above, in the same
+         * pass (a contact released at zero force and closed again there
+         * may sit on a curve its law is already leaving: a meshed box
+         * joined the floor of its unload curve, F_U = 0, while closing
+         * again with its law reloading at 1.9e-7 m/s; decided in a later
+         * pass only, the touch's second round was spent and the branch's
+         * rate root, started past zero, never crossed: it sank 2 m
+         * through its belt at zero force) */
+        rc_event_kind hkind = RC_EV_NONE;
+        if (mode != RC_MODE_OPEN && d->inter_mode[i] != RC_MODE_OPEN && m->inter_law[i] == RC_LAW_TYPE6 &&
+            m->inter_iform[i] != 0) {
             /* hysteresis: each branch's root on its waiting side. On the
              * Stiff line (ELASTIC) F_U <= F_h <= F_L: at or past a bound
              * (within hb) that the line is heading across, join that curve
@@ -1103,39 +1131,22 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             if (br == RC_BR_ELASTIC && (r.fh - r.fu < -hb || (r.fh - r.fu <= hb && lo < 0 && lo_ok))) {
                 d->inter_branch[i] = RC_BR_UNLOAD;
                 set_state(fh, r.fu, restart);
-                kind = RC_EV_HYST_UNLOAD_CURVE;
+                hkind = RC_EV_HYST_UNLOAD_CURVE;
             } else if (br == RC_BR_ELASTIC && (r.fl - r.fh < -hb || (r.fl - r.fh <= hb && up < 0 && up_ok))) {
                 d->inter_branch[i] = RC_BR_LOAD;
                 set_state(fh, r.fl, restart);
-                kind = RC_EV_HYST_LOAD_CURVE;
+                hkind = RC_EV_HYST_LOAD_CURVE;
             } else if (br == RC_BR_LOAD && ltrend < 0 && kst > sl && (still || r.vl < -vb)) {
                 d->inter_branch[i] = RC_BR_ELASTIC;
                 set_state(fh, r.fl, restart);
-                kind = RC_EV_HYST_UNLOADING;
+                hkind = RC_EV_HYST_UNLOADING;
             } else if (br == RC_BR_UNLOAD && ltrend > 0 && kst > su && (still || r.vl > vb)) {
                 d->inter_branch[i] = RC_BR_ELASTIC;
                 set_state(fh, r.fu, restart);
-                kind = RC_EV_HYST_RELOADING;
-            }
-        } else if (m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0) {
-            /* rebound damping branch at a zero rate of the damping's own
-             * argument (dP/dt, or v_bar with several points), where the
-             * damping force is zero on both branches: decided on P_e's
-             * rate, which its relaxation keeps below v_bar, the branch
-             * switched while the damper carried 5 N and the force's jump
-             * turned the rate back at once (a box resting on an incline:
-             * rebound/approach every 1e-9 s, Zeno) */
-            const int still = fabs(r.vd) <= fabs(dr.vd) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
-            const int dtrend = d->inter_track[i] ? trend : p_trend(r.vd, dr.vd, t, m->dtout, vband, om);
-            if (br == RC_BR_LOAD && still && dtrend < 0) {
-                d->inter_branch[i] = RC_BR_UNLOAD;
-                kind = RC_EV_RDF_REBOUND;
-            } else if (br == RC_BR_UNLOAD && still && dtrend > 0) {
-                d->inter_branch[i] = RC_BR_LOAD;
-                kind = RC_EV_RDF_APPROACH;
+                hkind = RC_EV_HYST_RELOADING;
             }
         }
-        if (kind != RC_EV_NONE && d->inter_mode[i] == RC_MODE_CLOSED) stateless_friction_mode(m, d, i, t, y);
+        if ((kind != RC_EV_NONE || hkind != RC_EV_NONE) && d->inter_mode[i] == RC_MODE_CLOSED) stateless_friction_mode(m, d, i, t, y);
         /* friction after whatever the contact did above (a contact that has
          * just closed sticks afresh): incremental friction sticking beyond
          * its limit (a contact that closes while sliding: the stick damper
@@ -1204,9 +1215,22 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             if (md != RC_MODE_OPEN && m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0 &&
                 fabs(r.vd) <= vband)
                 d->inter_rband[i] = d->inter_branch[i] == RC_BR_LOAD ? 2.0 * vband : -2.0 * vband;
+            /* a TYPE6 hysteresis curve likewise: its rate root (the law's
+             * rate, LOAD waiting for it to fall below zero, UNLOAD to rise
+             * above) at a rate within the slip band, where the branch was
+             * kept above (a reversal is decided beyond that band), waits
+             * twice the band away on its waiting side. Left at the rate,
+             * the root started past zero and never crossed (a box resting
+             * on its load curve at a law rate of -2e-9 m/s, within the band
+             * and kept there, would follow the curve down without end:
+             * 116 of 400 random touching states, test_passive) */
+            const int b2 = d->inter_branch[i];
+            if (md != RC_MODE_OPEN && m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0 &&
+                (b2 == RC_BR_LOAD || b2 == RC_BR_UNLOAD) && fabs(r.vl) <= slip_vband(m, i))
+                d->inter_rband[i] = b2 == RC_BR_LOAD ? 2.0 * slip_vband(m, i) : -2.0 * slip_vband(m, i);
         }
-        const rc_event_kind kinds[2] = {kind, fkind};
-        for (int q = 0; q < 2; q++) {
+        const rc_event_kind kinds[3] = {kind, hkind, fkind};
+        for (int q = 0; q < 3; q++) {
             if (kinds[q] == RC_EV_NONE) continue;
             if (n < max_ev) {
                 ev[n].inter = i;

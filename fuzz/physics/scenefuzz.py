@@ -339,7 +339,12 @@ def process(scene, variants, ricochet, timeout=60.0, keep_dir=None, keep_all=Fal
             r = do("loose", text, base_args(scene) + ["--rtol", repr(RTOL_LOOSE)])
             if r["rc"] == 0 and r["res"] is not None:
                 V += INV.check_single(scene, "loose", r["res"], r["rc"])
-                V += INV.check_rtol(scene, b["res"], r["res"], tight["res"])
+                vr = INV.check_rtol(scene, b["res"], r["res"], tight["res"])
+                if vr:
+                    rp = perturbed("perturbed_u", 4 * EPS * scene_extent(scene))
+                    if rp["rc"] == 0 and rp["res"] is not None:
+                        vr = INV.check_rtol(scene, b["res"], r["res"], tight["res"], perturbed=rp["res"])
+                V += vr
             else:
                 V += [dict(v, inv="i_rtol", msg=f"rtol 1e-6: {v['msg']}") for v in
                       INV.check_exit(scene, "loose", r["rc"], r["stderr"], r["timed_out"], r["too_large"])]

@@ -486,7 +486,7 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
          * that gap set p_s at 1e-2 p_F where the same scene at the origin,
          * exactly touching, had p_F (tolerances 100 times tighter) */
         double v = vmodel; /* momentum travels through chains of contacts */
-        const double band = rc_touch_band(m, i, y, &r, RC_TOUCH_ULPS, 0.0);
+        const double band = rc_touch_band(m, i, y, &r, RC_TOUCH_ULPS, 0.0, 1);
         if (r.p_raw < -band) v = fmax(v, sqrt(2.0 * gmax * -r.p_raw));
         const double pF = invert(m, i, 0, mmin * gmax);
         const double pE = invert(m, i, 1, 0.5 * mred * v * v);

@@ -67,7 +67,7 @@ static const rc_case_type6 *type6_card(const rc_case *c, const rc_model *m, int 
 /* Touching band of interface i at the state y [m]. */
 static double touch_band(const rc_model *m, int i, const double *y, const rc_inter_report *r)
 {
-    return rc_touch_band(m, i, y, r, RC_START_TOUCH_ULPS, RC_START_TOUCH_REL);
+    return rc_touch_band(m, i, y, r, RC_START_TOUCH_ULPS, RC_START_TOUCH_REL, 1);
 }
 
 /* The IRS/IRm advice for interface i: the side whose reversed normals

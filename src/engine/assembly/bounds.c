@@ -65,7 +65,8 @@ void rc_body_sizes(const rc_model *m, double *size)
     }
 }
 
-double rc_touch_band(const rc_model *m, int i, const double *y, const rc_inter_report *r, double ulps, double rel)
+double rc_touch_band(const rc_model *m, int i, const double *y, const rc_inter_report *r, double ulps, double rel,
+                     int deck)
 {
     const double *xa = rc_body_state(m, m->inter_ba[i], y), *xb = rc_body_state(m, m->inter_bb[i], y);
     /* the model's coordinates, and the deck's (where the positions were
@@ -78,7 +79,7 @@ double rc_touch_band(const rc_model *m, int i, const double *y, const rc_inter_r
         L += fabs(xa[k]) + fabs(xb[k]) + fabs(r->point[k]);
         Ld += fabs(xa[k] + o[k]) + fabs(xb[k] + o[k]) + fabs(r->point[k] + o[k]);
     }
-    double band = fmax(ulps * L, RC_TOL_DECK_ULPS * Ld) * DBL_EPSILON;
+    double band = fmax(ulps * L, deck ? RC_TOL_DECK_ULPS * Ld : 0.0) * DBL_EPSILON;
     if (isfinite(m->inter_pscale[i])) band = fmax(band, rel * m->inter_pscale[i]);
     return band;
 }

@@ -44,9 +44,10 @@ double rc_body_size(const rc_model *m, int b);
 void rc_body_sizes(const rc_model *m, double *size);
 /* A band about P = 0 of interface i at the state y with its report r [m]:
  * ulps roundings of the coordinates involved (the pair's centres and the
- * contact point), at least RC_TOL_DECK_ULPS roundings of the same in the
- * deck's coordinates and rel times the penetration scale. */
-double rc_touch_band(const rc_model *m, int i, const double *y, const rc_inter_report *r, double ulps, double rel);
+ * contact point), with deck at least RC_TOL_DECK_ULPS roundings of the
+ * same in the deck's coordinates, and rel times the penetration scale. */
+double rc_touch_band(const rc_model *m, int i, const double *y, const rc_inter_report *r, double ulps, double rel,
+                     int deck);
 /* The load law of interface i (no hysteresis, no damping) at penetration
  * p >= 0: its force [N] and its energy integral_0^p F [J]. */
 double rc_law_force(const rc_model *m, int i, double p);

@@ -96,6 +96,10 @@ typedef struct rc_data {
                             force suspended; it opens when P returns to 0;
                             docs/theory.md 5.2); set by the driver, cleared when
                             the mode leaves CLOSED */
+    int *inter_deck;     /* [ninter] 1 until the interface's first event after the
+                            start: its touch band covers the rounding of the
+                            deck's coordinates (its bodies still where the deck
+                            put them; events.c) */
     double *inter_band;  /* [ninter*2] signed touch bands of a contact left at
                             zero penetration or zero force (events.c): zone root
                             P + band[0] [m] (closed or released: +band, it

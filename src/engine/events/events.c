@@ -520,6 +520,7 @@ void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y)
         const double ton = rc_sens_inter_ton(m, d, i);
         int active = t >= ton && t <= m->inter_tstop[i];
         d->inter_mode[i] = RC_MODE_INACTIVE;
+        d->inter_deck[i] = 1; /* its bodies where the deck put them */
         if (active) classify(m, d, i, t, y, &changed);
     }
     /* an interface sensor whose contact is closed at the start triggers
@@ -861,6 +862,7 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
                    roots[rc_root_land_base(m) + m->inter_pbase[i] + j] != 0;
         if (!any) continue;
         clear_band(d, i); /* the touch bands last until the interface's next event */
+        d->inter_deck[i] = 0;
         /* window first; then the branch, then the contact, so that crossings
          * falling together (the Stiff line reaching zero releases the force)
          * are all applied, in the order of the law */
@@ -934,10 +936,17 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
 /* ---- contacts at zero: modes decided by the state ------------------ */
 /* Touch band of interface i at (t, y) [m]: above the rounding of P (a
  * thousand ulps of the coordinates involved) and 1e-9 of the penetration
- * scale. */
-static double touch_band(const rc_model *m, int i, const double *y, const rc_inter_report *r)
+ * scale; until the interface's first event, above the rounding of the
+ * deck's coordinates too (where its bodies were put: a touching start 1 km
+ * away begins 2e-14 m apart). Not beyond that: at 1 km the deck's rounding
+ * is 4e-12 m, and a ball bouncing on a stiff wall there (its weight
+ * pressing it 5e-12 m in) separated while still 8e-13 m in and closed again
+ * only 4e-12 m in, its force jumping from zero to k times that: a limit
+ * cycle fed by those jumps, 18 621 bounces where the scene at the origin
+ * settled after 21. */
+static double touch_band(const rc_model *m, const rc_data *d, int i, const double *y, const rc_inter_report *r)
 {
-    const double band = rc_touch_band(m, i, y, r, RC_TOUCH_ULPS, RC_TOUCH_REL);
+    const double band = rc_touch_band(m, i, y, r, RC_TOUCH_ULPS, RC_TOUCH_REL, d->inter_deck[i]);
     return band > 0 ? band : DBL_MIN;
 }
 
@@ -985,7 +994,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
         if (mode == RC_MODE_INACTIVE) continue;
         rc_inter_report r, c, dr, dc;
         report(m, d, i, t, y, &r);
-        const double band = touch_band(m, i, y, &r);
+        const double band = touch_band(m, d, i, y, &r);
         rc_event_kind kind = RC_EV_NONE;
         /* the force the contact would carry, closed, and its rate */
         const int cbr = mode == RC_MODE_OPEN ? RC_BR_LOAD : br;

@@ -357,7 +357,7 @@ int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, co
                 snprintf(why, sizeof why, "where the law's force reaches %.3g N, %g x the larger of the scene's weight %.3g N and "
                          "its impact force", g->fbound[i], RC_PEN_FORCE_FACTOR, g->scene.weight);
             else
-                snprintf(why, sizeof why, "the size of the smaller body, or half the thickness of the thinner surface");
+                snprintf(why, sizeof why, "the size of the smaller body, or half the thinner surface's thickness (a quarter of a box's)");
             if (violate(g, t, t, "penetration", m->inter_name[i], P, pb,
                         "penetration of %s is %.6g m at t = %.9g s, beyond its bound %.6g m (%s): the bodies pass "
                         "through each other", m->inter_name[i], P, t, pb, why))

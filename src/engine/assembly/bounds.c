@@ -198,9 +198,14 @@ void rc_scene_scales(const rc_model *m, rc_scene *s)
     s->eavail = s->ekin0 + s->weight * s->height + 0.5 * s->mass * s->vimp * s->vimp;
 }
 
-/* Half the thickness of surface s [m]: a sphere's radius, a box's smallest
- * half-size, a cylinder's radius or half-length (with rounded ends, its
- * half-length and radius); infinite for a plane and a segment surface
+/* The depth into surface s beyond which its contact means nothing [m]:
+ * half its thickness, a sphere's radius, a cylinder's radius or half-length
+ * (with rounded ends, its half-length and radius); for a box half its
+ * smallest half-size, since a point inside a box meets its nearest face,
+ * which changes at the mid-plane: the depth a box reports never exceeds
+ * its smallest half-size (a meshed box sank 2.25 m through a belt 0.059 m
+ * thick while its reported depth stopped at the belt's half-thickness,
+ * 0.0294 m, the bound itself); infinite for a plane and a segment surface
  * (whose thickness its nodes do not tell). */
 static double surface_half_thickness(const rc_model *m, int s)
 {
@@ -208,7 +213,7 @@ static double surface_half_thickness(const rc_model *m, int s)
     const double *e = m->surf_ext + RC_SURF_NEXT * s;
     switch (m->surf_kind[s]) {
     case RC_SURF_SPHERE: return m->surf_r[s];
-    case RC_SURF_BOX: return fmin(e[0], fmin(e[1], e[2]));
+    case RC_SURF_BOX: return 0.5 * fmin(e[0], fmin(e[1], e[2]));
     case RC_SURF_CYL: return fmin(m->surf_r[s], e[0] + (e[1] > 0 ? m->surf_r[s] : 0.0));
     default: return INFINITY;
     }

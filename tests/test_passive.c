@@ -993,7 +993,7 @@ static void test_pe_no_recovery_at_zero_force(void)
             ENSURE(r.vl > r.vd + 1e-6);          /* recovery, paid by the damper */
         }
     }
-    ENSURE(fabs(vl[2] - vl[3]) <= 1e-12 * fabs(vl[3])); /* continuous at F_el = 0 on the Stiff line */
+    ENSURE(fabs(vl[2] - vl[3]) <= 1e-6 * fabs(vl[3])); /* continuous at F_el = 0 on the Stiff line */
 out:
     free(g);
     free(y);
@@ -1002,9 +1002,9 @@ out:
 }
 
 /* ---- the recovery of P_e is continuous in what pays for it ------------- */
-/* The box of the test above without a damper (Visc 0), on the Stiff line at
- * zero force (F_h = 0), with the same deficit of P_e, sliding at v: its
- * corners' stick dampers dissipate D ~ v^2, which pays for the recovery,
+/* The box of the test above (Visc 100 N s/m), on the Stiff line at zero
+ * force (F_h = 0), with the same deficit of P_e, approaching at v: its
+ * damper dissipates D = Visc v^2, which pays for the recovery,
  * rho = kappa (P - P_e) D / (D + F_el+ kappa (P - P_e) + D_b). At rest
  * nothing pays (rho = 0: undamped and frictionless, a free recovery held
  * the Stiff line at zero force by its own rates, a stack of boxes 15 times
@@ -1012,15 +1012,22 @@ out:
  * recovery switched on by any D > 0 jumped from 0 to kappa (P - P_e) where
  * a box's friction power turned, and Newton failed, CV_CONV_FAILURE with h
  * = 8e-11 s); it grows with D towards kappa (P - P_e), never beyond it. On
- * the Stiff line carrying 1 N at rest: none. */
+ * the Stiff line carrying 1 N at rest: none. Friction pays on the load
+ * curve only: the box without a damper sliding at 0.3 m/s recovers on its
+ * load curve and not on its Stiff line (paid there, the sliding's heat
+ * lifted F_h at Stiff times the recovery and launched the box: a box
+ * sliding down an incline cycled its hysteresis 6 000 times in 0.9 s,
+ * 31 971 events, and a meshed box on a belt 2 464 times in 0.68 s). */
 static void test_pe_recovery_continuous_in_its_payment(void)
 {
-    rc_model *m = TU_COMPILE_OK(BOX_IFORM2_DECK(""), "pe_zero_force_pay.rad");
-    if (!m) return;
-    rc_data *d = rc_data_new(m);
-    double *y = calloc((size_t)m->ny, sizeof(double));
-    ENSURE(d && y && m->ninter == 1 && m->inter_peidx[0] >= 0 && m->inter_hidx[0] >= 0 && m->inter_perelax[0] > 0);
-    if (!d || !y) goto out;
+    rc_model *m = TU_COMPILE_OK(BOX_IFORM2_DECK("100"), "pe_zero_force_pay.rad");
+    rc_model *mf = TU_COMPILE_OK(BOX_IFORM2_DECK(""), "pe_zero_force_fric.rad");
+    if (!m || !mf) goto out0;
+    rc_data *d = rc_data_new(m), *df = rc_data_new(mf);
+    double *y = calloc((size_t)m->ny, sizeof(double)), *yf = calloc((size_t)mf->ny, sizeof(double));
+    ENSURE(d && y && df && yf && m->ninter == 1 && m->inter_peidx[0] >= 0 && m->inter_hidx[0] >= 0 &&
+           m->inter_perelax[0] > 0);
+    if (!d || !y || !df || !yf) goto out;
     rc_initial_state(m, y);
     double *yb = y + m->body_yadr[0];
     const double p = 1e-6, kd = m->inter_perelax[0] * 0.5 * p;
@@ -1028,34 +1035,58 @@ static void test_pe_recovery_continuous_in_its_payment(void)
     y[m->inter_eadr[0] + m->inter_peidx[0]] = 0.5 * p;
     d->inter_mode[0] = RC_MODE_CLOSED;
     d->inter_branch[0] = RC_BR_ELASTIC;
-    const double vx[4] = {0.0, 1e-9, 1e-3, 0.3};
-    double vl[4], vl1 = NAN;
+    const double vz[4] = {0.0, -1e-9, -1e-3, -0.3}; /* approaching (z falling) */
+    double rho[4], rho1 = NAN;
     for (int k = 0; k < 4; k++) {
-        yb[7] = vx[k];
+        yb[9] = vz[k];
         y[m->inter_eadr[0] + m->inter_hidx[0]] = 0.0; /* the Stiff line at zero force */
         rc_inter_report r;
         rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
-        vl[k] = r.vl;
-        printf("    Stiff line at 0 N, sliding at %g m/s: F_el %.3e N, law's rate %.9e m/s (kappa (P - P_e) %.9e)\n",
-               vx[k], r.fload, r.vl, kd);
+        rho[k] = r.vl - r.vd; /* the law's rate less the bodies' (v_bar) */
+        printf("    Stiff line at 0 N, approaching at %g m/s: F_el %.3e N, recovery %.9e m/s (kappa (P - P_e) %.9e)\n",
+               -vz[k], r.fload, rho[k], kd);
         ENSURE(!(r.fload > 0));
-        ENSURE(r.vl >= 0.0 && r.vl <= kd);
+        ENSURE(rho[k] >= 0.0 && rho[k] <= kd * (1.0 + 1e-12));
         if (k == 0) {
             y[m->inter_eadr[0] + m->inter_hidx[0]] = 1.0; /* carrying 1 N, at rest: nothing pays */
             rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
-            vl1 = r.vl;
+            rho1 = r.vl - r.vd;
         }
     }
-    printf("    Stiff line at 1 N, at rest: law's rate %.3e m/s\n", vl1);
-    ENSURE(vl[0] == 0.0);                         /* nothing pays at rest */
-    ENSURE(vl[1] > 0.0 && vl[1] < 1e-6 * kd);     /* continuous across D = 0 */
-    ENSURE(vl[2] > vl[1] && vl[3] > vl[2]);       /* grows with what pays */
-    ENSURE(vl[3] > 0.5 * kd);                     /* towards kappa (P - P_e) */
-    ENSURE(fabs(vl1) < 1e-15);
+    printf("    Stiff line at 1 N, at rest: recovery %.3e m/s\n", rho1);
+    ENSURE(rho[0] == 0.0);                          /* nothing pays at rest */
+    ENSURE(rho[1] > 0.0 && rho[1] < 1e-6 * kd);     /* continuous across D = 0 */
+    ENSURE(rho[2] > rho[1] && rho[3] > rho[2]);     /* grows with what pays */
+    ENSURE(rho[3] > 0.5 * kd);                      /* towards kappa (P - P_e) */
+    ENSURE(fabs(rho1) < 1e-15);
+    /* no damper, sliding at 0.3 m/s: friction pays on the load curve only */
+    rc_initial_state(mf, yf);
+    double *ybf = yf + mf->body_yadr[0];
+    ybf[2] = 0.04 - p;
+    ybf[7] = 0.3;
+    yf[mf->inter_eadr[0] + mf->inter_peidx[0]] = 0.5 * p;
+    df->inter_mode[0] = RC_MODE_CLOSED;
+    double rf[2];
+    for (int k = 0; k < 2; k++) {
+        df->inter_branch[0] = k ? RC_BR_ELASTIC : RC_BR_LOAD;
+        rc_inter_report r;
+        rc_inter_report_eval_d(mf, df, 0, 0.0, yf, &r);
+        yf[mf->inter_eadr[0] + mf->inter_hidx[0]] = k ? 0.5 * r.fl : r.fl; /* on the line below the curve */
+        rc_inter_report_eval_d(mf, df, 0, 0.0, yf, &r);
+        rf[k] = r.vl - r.vd;
+        printf("    no damper, sliding at 0.3 m/s, %s: F_el %.3e N, recovery %.9e m/s\n",
+               k ? "Stiff line" : "load curve", r.fload, rf[k]);
+    }
+    ENSURE(rf[0] > 0.5 * kd && rf[0] <= kd * (1.0 + 1e-12)); /* the load curve: paid by the sliding */
+    ENSURE(rf[1] == 0.0);                                  /* the Stiff line: not */
 out:
     free(y);
+    free(yf);
     rc_data_free(d);
+    rc_data_free(df);
+out0:
     rc_model_free(m);
+    rc_model_free(mf);
 }
 
 /* ---- a falling limit: the slip goes on until the spring outruns it ---- */

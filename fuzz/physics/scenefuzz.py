@@ -339,12 +339,10 @@ def process(scene, variants, ricochet, timeout=60.0, keep_dir=None, keep_all=Fal
             r = do("loose", text, base_args(scene) + ["--rtol", repr(RTOL_LOOSE)])
             if r["rc"] == 0 and r["res"] is not None:
                 V += INV.check_single(scene, "loose", r["res"], r["rc"])
-                vr = INV.check_rtol(scene, b["res"], r["res"], tight["res"])
-                if vr:
+                def rounding_run():
                     rp = perturbed("perturbed_u", 4 * EPS * scene_extent(scene))
-                    if rp["rc"] == 0 and rp["res"] is not None:
-                        vr = INV.check_rtol(scene, b["res"], r["res"], tight["res"], perturbed=rp["res"])
-                V += vr
+                    return rp["res"] if rp["rc"] == 0 else None
+                V += INV.check_rtol(scene, b["res"], r["res"], tight["res"], perturbed=rounding_run)
             else:
                 V += [dict(v, inv="i_rtol", msg=f"rtol 1e-6: {v['msg']}") for v in
                       INV.check_exit(scene, "loose", r["rc"], r["stderr"], r["timed_out"], r["too_large"])]

@@ -251,21 +251,16 @@ static int limits_moved(const run_ctx *c)
  * period (a meshed box on a belt, 1.9 times longer). */
 #define RC_JLOAD_FACTOR 10.0
 #define RC_JLOAD_BAND 1e-3
-static int loads_moved(run_ctx *c)
+static int loads_moved(const run_ctx *c)
 {
     const double *f = c->d->sc->inter_fnr, *fj = c->jfnr;
-    int moved = 0;
     for (int i = 0; i < c->m->ninter; i++) {
         if (!c->jland[i]) continue;
-        if (c->d->inter_mode[i] != RC_MODE_CLOSED) {
-            c->jland[i] = 0;
-            continue;
-        }
         const double fs = c->m->inter_fscale[i];
-        const double fb = isfinite(fs) && fs > 0 ? RC_JLOAD_BAND * fs : 0.0, a = f[i], b = fj[i];
-        if (a > RC_JLOAD_FACTOR * b + fb) moved = 1;
+        const double fb = isfinite(fs) && fs > 0 ? RC_JLOAD_BAND * fs : 0.0;
+        if (f[i] > RC_JLOAD_FACTOR * fj[i] + fb) return 1;
     }
-    return moved;
+    return 0;
 }
 
 /* The Newton matrix I - gamma J formed in place (CVodeSetLinSysFn): J is
@@ -1009,6 +1004,11 @@ static int cv_after_events(void *self, double t, const double *y, int cpl_ev, in
     const rc_model *m = c->m;
     rc_data *d = c->d;
     int ok = 1, changed = 0;
+    /* the interfaces closed from open (by the implicit method), until they
+     * open (loads_moved): modes change only at events */
+    for (int i = 0; i < m->ninter; i++)
+        c->jland[i] = d->inter_mode[i] == RC_MODE_CLOSED &&
+                      (c->jland[i] || (!c->expl && c->old_mode[i] == RC_MODE_OPEN));
     if (c->expl) { /* no Jacobian; a one-step method restarts from the event */
         c->jac_patched = 0;
         return 1;
@@ -1029,7 +1029,6 @@ static int cv_after_events(void *self, double t, const double *y, int cpl_ev, in
             }
         } else if (!same || d->inter_slip[i] != c->old_slip[i] || pflip) {
             changed = 1;
-            if (d->inter_mode[i] == RC_MODE_CLOSED && c->old_mode[i] == RC_MODE_OPEN) c->jland[i] = 1;
             ok = rc_jac_refresh_inter(m, d, i, y, c->jsave) == 0;
         }
     }

@@ -1234,9 +1234,10 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
              * and kept there, would follow the curve down without end:
              * 116 of 400 random touching states, test_passive) */
             const int b2 = d->inter_branch[i];
+            const double vb2 = slip_vband(m, i);
             if (md != RC_MODE_OPEN && m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0 &&
-                (b2 == RC_BR_LOAD || b2 == RC_BR_UNLOAD) && fabs(r.vl) <= slip_vband(m, i))
-                d->inter_rband[i] = b2 == RC_BR_LOAD ? 2.0 * slip_vband(m, i) : -2.0 * slip_vband(m, i);
+                (b2 == RC_BR_LOAD || b2 == RC_BR_UNLOAD) && fabs(r.vl) <= vb2)
+                d->inter_rband[i] = b2 == RC_BR_LOAD ? 2.0 * vb2 : -2.0 * vb2;
         }
         const rc_event_kind kinds[3] = {kind, hkind, fkind};
         for (int q = 0; q < 3; q++) {

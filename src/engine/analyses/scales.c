@@ -791,22 +791,33 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         const double apos = scaled                      ? fmax(rt * m->inter_pscale[i], pfl[i])
                             : (au & RC_TOL_AUTO_POS) ? rt * RC_TOL_FALLBACK_LFRAC * Li
                                                      : m->atol_pos;
-        /* forces: rtol F_s, at least the force of the coordinates' rounding */
+        /* forces: rtol F_s, at least the force of the coordinates' rounding;
+         * F_h at that of the steeper of the law's stiffness scale and its
+         * Stiff line, which it follows on unloading and reloading: on the
+         * line F_h moves by Stiff per metre of P, which the coordinates
+         * give only to pf (a ball pressed against a wall with a Stiff line
+         * of 3.9e14 N/m, its curve's k_s 6.5e11, F_h held to 1.2e-3 N where
+         * the rounding of P moves it by 0.75 N: steps of 2e-8 s at every
+         * reversal of its load, CV_TOO_MUCH_WORK) */
         const double ffl = scaled ? m->inter_kscale[i] * pfl[i] : 0.0;
+        const double ffh = scaled ? fmax(m->inter_kscale[i], m->inter_stiff[i]) * pfl[i] : 0.0;
         double *a = m->atol + m->inter_eadr[i];
-        if (m->inter_hidx[i] >= 0) a[m->inter_hidx[i]] = scaled ? fmax(rt * m->inter_fscale[i], ffl) : m->inter_stiff[i] * apos;
+        if (m->inter_hidx[i] >= 0) a[m->inter_hidx[i]] = scaled ? fmax(rt * m->inter_fscale[i], ffh) : m->inter_stiff[i] * apos;
         if (m->inter_oidx[i] >= 0) a[m->inter_oidx[i]] = apos;
         if (m->inter_peidx[i] >= 0) a[m->inter_peidx[i]] = apos;
         const rc_fric *fr = &m->inter_fr[i];
+        /* the friction states likewise at the rounding force of the stick
+         * spring K_t they follow while sticking (TYPE6: K_t = Stiff) */
+        const double fft = scaled && isfinite(fr->kt) ? fmax(ffl, fr->kt * pfl[i]) : ffl;
         for (int k = 0; k < 3; k++) {
-            const double af = scaled ? fmax(rt * m->inter_fscale[i], ffl) : fr->kt * apos;
+            const double af = scaled ? fmax(rt * m->inter_fscale[i], fft) : fr->kt * apos;
             if (fr->tidx >= 0) a[fr->tidx + k] = af;
             if (fr->fidx >= 0) a[fr->fidx + k] = af;
         }
         /* friction per contact point: each point's F_t as the interface's */
         const int npt = m->inter_npt[i];
         for (int k = 0; k < m->inter_pst[i] * npt; k++)
-            a[m->inter_ns[i] + k] = scaled ? fmax(rt * m->inter_fscale[i], ffl) : fr->kt * apos;
+            a[m->inter_ns[i] + k] = scaled ? fmax(rt * m->inter_fscale[i], fft) : fr->kt * apos;
         /* slip-test band: the force tolerance of F_t, and at least RC_SLIP_BAND
          * of the contact's force scale (the relative band of the limit,
          * carried down to small loads: a load ramped from zero, carried by the

@@ -809,15 +809,14 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         /* the friction states likewise at the rounding force of the stick
          * spring K_t they follow while sticking (TYPE6: K_t = Stiff) */
         const double fft = scaled && isfinite(fr->kt) ? fmax(ffl, fr->kt * pfl[i]) : ffl;
+        const double af = scaled ? fmax(rt * m->inter_fscale[i], fft) : fr->kt * apos;
         for (int k = 0; k < 3; k++) {
-            const double af = scaled ? fmax(rt * m->inter_fscale[i], fft) : fr->kt * apos;
             if (fr->tidx >= 0) a[fr->tidx + k] = af;
             if (fr->fidx >= 0) a[fr->fidx + k] = af;
         }
         /* friction per contact point: each point's F_t as the interface's */
         const int npt = m->inter_npt[i];
-        for (int k = 0; k < m->inter_pst[i] * npt; k++)
-            a[m->inter_ns[i] + k] = scaled ? fmax(rt * m->inter_fscale[i], fft) : fr->kt * apos;
+        for (int k = 0; k < m->inter_pst[i] * npt; k++) a[m->inter_ns[i] + k] = af;
         /* slip-test band: the force tolerance of F_t, and at least RC_SLIP_BAND
          * of the contact's force scale (the relative band of the limit,
          * carried down to small loads: a load ramped from zero, carried by the

@@ -207,7 +207,7 @@ void rc_scene_scales(const rc_model *m, rc_scene *s)
  * thick while its reported depth stopped at the belt's half-thickness,
  * 0.0294 m, the bound itself); infinite for a plane and a segment surface
  * (whose thickness its nodes do not tell). */
-static double surface_half_thickness(const rc_model *m, int s)
+static double surface_depth_limit(const rc_model *m, int s)
 {
     if (s < 0) return INFINITY;
     const double *e = m->surf_ext + RC_SURF_NEXT * s;
@@ -241,6 +241,6 @@ double rc_pen_bound(const rc_model *m, int i, const rc_scene *s, const double *s
         if (l > 0) lb = fmin(lb, l);
     }
     const int ss[2] = {m->inter_sa[i], m->inter_sb[i]};
-    for (int k = 0; k < 2; k++) lb = fmin(lb, surface_half_thickness(m, ss[k]));
+    for (int k = 0; k < 2; k++) lb = fmin(lb, surface_depth_limit(m, ss[k]));
     return fmin(p, lb);
 }

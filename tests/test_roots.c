@@ -173,7 +173,8 @@ static void test_restart_first_step(void)
 
 /* The reports the root functions keep for the impact samples
  * (rc_report_cache_*): the same as a fresh evaluation, bit for bit, and
- * refused at another state, in other modes, or when not kept. */
+ * refused at another state, in other modes (an interface's or one of its
+ * contact points'), or when not kept. */
 static void test_report_cache(void)
 {
     rc_error e;
@@ -210,7 +211,7 @@ static void test_report_cache(void)
         rc_inter_report a, b;
         memset(&a, 0, sizeof a);
         memset(&b, 0, sizeof b);
-        if (!rc_report_cache_get(d, i, &a)) continue;
+        if (!rc_report_cache_get(m, d, i, &a)) continue;
         rc_inter_report_eval_d(m, d, i, 0.0, y, &b);
         ENSURE(memcmp(&a, &b, sizeof a) == 0);
         hits++;
@@ -219,16 +220,51 @@ static void test_report_cache(void)
     /* another mode of interface 0: its report is refused, the others kept */
     rc_inter_report r;
     d->inter_mode[0] = RC_MODE_OPEN;
-    ENSURE(!rc_report_cache_get(d, 0, &r) && rc_report_cache_get(d, 1, &r));
+    ENSURE(!rc_report_cache_get(m, d, 0, &r) && rc_report_cache_get(m, d, 1, &r));
     d->inter_mode[0] = RC_MODE_CLOSED;
     d->inter_branch[0] = d->inter_branch[0] + 1;
-    ENSURE(!rc_report_cache_get(d, 0, &r));
+    ENSURE(!rc_report_cache_get(m, d, 0, &r));
     d->inter_branch[0] = d->inter_branch[0] - 1;
-    ENSURE(rc_report_cache_get(d, 0, &r));
+    ENSURE(rc_report_cache_get(m, d, 0, &r));
     /* another state, by one ulp of one coordinate: refused */
     y[m->body_yadr[0]] = nextafter(y[m->body_yadr[0]], INFINITY);
     ENSURE(!rc_report_cache_state(m, d, y));
 out:
+    free(y);
+    free(g);
+    rc_data_free(d);
+    rc_model_free(m);
+    y = g = NULL;
+    d = NULL;
+    /* an interface with contact points (a box on an incline, with friction
+     * per corner): its report kept too, the same as a fresh evaluation;
+     * refused when one point's mode differs from the evaluation's */
+    m = NULL;
+    ENSURE(tu_load_compile("validation/box_plane_incline/case.rad", &m, &e) == RC_OK && m != NULL);
+    if (!m) return;
+    d = rc_data_new(m);
+    y = calloc((size_t)m->ny, sizeof(double));
+    g = calloc((size_t)rc_root_count(m) + 1, sizeof(double));
+    ENSURE(d && y && g && m->inter_npt[0] > 0);
+    if (d && y && g && m->inter_npt[0] > 0) {
+        rc_initial_state(m, y);
+        rc_modes_init(m, d, 0.0, y);
+        d->inter_mode[0] = RC_MODE_CLOSED;
+        d->sc->repc->on = 1;
+        rc_assemble_roots(m, d, 0.0, y, g);
+        ENSURE(rc_report_cache_state(m, d, y));
+        rc_inter_report a, b;
+        memset(&a, 0, sizeof a);
+        memset(&b, 0, sizeof b);
+        ENSURE(rc_report_cache_get(m, d, 0, &a));
+        rc_inter_report_eval_d(m, d, 0, 0.0, y, &b);
+        ENSURE(memcmp(&a, &b, sizeof a) == 0);
+        const int pb = m->inter_pbase[0];
+        d->pt_slip[pb + 1] = !d->pt_slip[pb + 1];
+        ENSURE(!rc_report_cache_get(m, d, 0, &a));
+        d->pt_slip[pb + 1] = !d->pt_slip[pb + 1];
+        ENSURE(rc_report_cache_get(m, d, 0, &a));
+    }
     free(y);
     free(g);
     rc_data_free(d);

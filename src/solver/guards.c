@@ -417,7 +417,7 @@ int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, co
          * than 1 % of the radius */
         if (m->inter_pair[i] == RC_PAIR_CYL_BOX && mode == RC_MODE_CLOSED) {
             rc_inter_report r; /* the roots' evaluation of this state when kept */
-            if (!(rc_report_cache_state(m, d, y) && rc_report_cache_get(d, i, &r))) rc_inter_report_eval_d(m, d, i, t, y, &r);
+            if (!(rc_report_cache_state(m, d, y) && rc_report_cache_get(m, d, i, &r))) rc_inter_report_eval_d(m, d, i, t, y, &r);
             const double lim = 0.01 * m->surf_r[m->inter_sa[i]];
             const double B = r.fn > 0 ? beyond_face(m, m->inter_sb[i], y, r.point, r.normal) : 0.0;
             if (B > lim && !on[4]) {

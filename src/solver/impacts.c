@@ -314,7 +314,7 @@ void rc_impacts_step(rc_impacts *im, const rc_model *m, const rc_data *d, double
         if (im->cur[i] < 0) continue;
         const int closed = d->inter_mode[i] == RC_MODE_CLOSED;
         rc_inter_report r;
-        if (!cached || !rc_report_cache_get(d, i, &r)) report(m, d, i, t, y, &r);
+        if (!cached || !rc_report_cache_get(m, d, i, &r)) report(m, d, i, t, y, &r);
         rc_impact *row = &im->row[im->cur[i]];
         update(row, &r, closed, t);
         integrate(im, m, i, t, y, &r, closed);

@@ -247,22 +247,35 @@ int rc_report_cache_state(const rc_model *m, const rc_data *d, const double *y)
     return c && c->ok && memcmp(c->y, y, (size_t)m->ny * sizeof(double)) == 0;
 }
 
-int rc_report_cache_get(const rc_data *d, int i, rc_inter_report *r)
+int rc_report_cache_get(const rc_model *m, const rc_data *d, int i, rc_inter_report *r)
 {
     const rc_repcache *c = d->sc->repc;
     const int *k = c->key + 4 * i;
     if (k[0] < 0 || k[0] != d->inter_mode[i] || k[1] != d->inter_branch[i] || k[2] != d->inter_track[i] ||
         k[3] != d->inter_slip[i])
         return 0;
+    const int pb = m->inter_pbase[i], npt = m->inter_npt[i];
+    if (npt > 0 && memcmp(c->pslip + pb, d->pt_slip + pb, (size_t)npt * sizeof(int)) != 0) return 0;
     *r = c->rep[i];
     return 1;
+}
+
+/* Keep interface i's report r, evaluated in its present modes. */
+static void keep(rc_repcache *rc, const rc_data *d, int i, const rc_inter_report *r)
+{
+    int *k = rc->key + 4 * i;
+    k[0] = d->inter_mode[i];
+    k[1] = d->inter_branch[i];
+    k[2] = d->inter_track[i];
+    k[3] = d->inter_slip[i];
+    rc->rep[i] = *r;
 }
 
 void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const double *y, double *g)
 {
     /* the reports are kept for samples at the same state (rc_report_cache_get):
-     * the interfaces of the general kernel without contact points, whose
-     * report depends on the state and the four modes alone */
+     * the interfaces of the general kernel, whose report depends on the
+     * state, the four modes and, with contact points, the points' modes */
     rc_repcache *rc = d->sc->repc && d->sc->repc->on ? d->sc->repc : NULL;
     int kept = 0; /* reports kept */
     for (int i = 0; i < m->ninter; i++) {
@@ -302,6 +315,11 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
                 d->sc->pt_share[m->inter_pbase[i] + j] = pout[RC_PT_OUT * j + 4];
             }
             report_of(&o, &r); /* the same evaluation as rc_inter_report_eval_d */
+            if (rc) {
+                keep(rc, d, i, &r);
+                memcpy(rc->pslip + m->inter_pbase[i], d->pt_slip + m->inter_pbase[i], (size_t)npt * sizeof(int));
+                kept = 1;
+            }
         } else if (is_fast(m, i)) {
             /* only what the roots below read of such an interface: P, the
              * approach rate, and the force when not open. Its report is not
@@ -317,12 +335,7 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         } else {
             rc_inter_report_eval_d(m, d, i, t, y, &r);
             if (rc && npt == 0) {
-                int *k = rc->key + 4 * i;
-                k[0] = mode;
-                k[1] = br;
-                k[2] = trk;
-                k[3] = d->inter_slip[i];
-                rc->rep[i] = r;
+                keep(rc, d, i, &r);
                 kept = 1;
             }
         }

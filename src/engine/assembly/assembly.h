@@ -135,7 +135,7 @@ int rc_report_cache_state(const rc_model *m, const rc_data *d, const double *y);
 /* Interface i's report of that evaluation into r, when it was evaluated
  * there in the modes d holds now (1), else 0 (r untouched). Only after
  * rc_report_cache_state returned 1 for the same y. */
-int rc_report_cache_get(const rc_data *d, int i, rc_inter_report *r);
+int rc_report_cache_get(const rc_model *m, const rc_data *d, int i, rc_inter_report *r);
 /* Gravity acceleration vector of body b at time t [m/s^2]. */
 void rc_gravity(const rc_model *m, int b, double t, double g[3]);
 /* Value of the gravity time function at t [-] (1 when none is given). */

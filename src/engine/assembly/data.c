@@ -69,7 +69,8 @@ rc_data *rc_data_new(const rc_model *m)
         d->sc->repc->y = calloc((size_t)m->ny + 1, sizeof(double));
         d->sc->repc->rep = calloc(n, sizeof *d->sc->repc->rep);
         d->sc->repc->key = malloc(4 * n * sizeof(int));
-        rc_ok = d->sc->repc->y && d->sc->repc->rep && d->sc->repc->key;
+        d->sc->repc->pslip = calloc((size_t)m->npt + 1, sizeof(int));
+        rc_ok = d->sc->repc->y && d->sc->repc->rep && d->sc->repc->key && d->sc->repc->pslip;
         if (rc_ok)
             for (size_t k = 0; k < 4 * n; k++) d->sc->repc->key[k] = -1;
     }
@@ -138,6 +139,7 @@ void rc_data_free(rc_data *d)
         free(d->sc->repc->y);
         free(d->sc->repc->rep);
         free(d->sc->repc->key);
+        free(d->sc->repc->pslip);
         free(d->sc->repc);
     }
     free(d->sc);

@@ -135,6 +135,7 @@ typedef struct rc_repcache {
     int ok;                      /* y holds a state */
     struct rc_inter_report *rep; /* [ninter] */
     int *key;                    /* [4 ninter] mode, branch, track, slip; mode -1: not evaluated */
+    int *pslip;                  /* [npt] the contact points' modes of the evaluation */
 } rc_repcache;
 
 /* What the output and the event logic see of one interface. */

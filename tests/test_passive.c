@@ -1443,6 +1443,169 @@ static void test_ball_pivots_over_a_box_edge(void)
     rc_model_free(m);
 }
 
+/* A roller (a cylinder lying along a table's edge) rolling over the edge
+ * pivots about it: the edge is rounded for a cylinder whose axis runs
+ * along it, as for a ball. No friction: its centre moves on the circle of
+ * radius R about the edge and leaves it at cos(theta*) = (v0^2 / (g R) +
+ * 2) / 3 (the spin plays no part). Before, the top face's infinite plane
+ * held it up beyond the edge and the run stopped on its own check. The
+ * distance and the normal beyond the edge against the closed forms, the
+ * normal's rate against central differences of the normal
+ * (roller_edge_normal_rate), the Jacobian there against central
+ * differences; a roller lying across the edge
+ * (axis perpendicular to it) is still held by the face's plane, which
+ * the run's check reports. */
+#define ROLLER_BOX_EDGE_DECK(fric)                                                                                     \
+    "/BEGIN\nroller rolling off the edge of a table\n      2022         0\n"                                           \
+    "                  kg                   m                   s\n"                                                  \
+    "                  kg                   m                   s\n"                                                  \
+    "/NODE\n1,0.45,0,0.05\n"                                                                                         \
+    "/RBODY/1\nroller\n1,,,,1.0\n0.001,0.001,0.001\n0,0,0\n"                                                        \
+    "/GRNOD/NODE/1\nroller\n1\n"                                                                                    \
+    "/SURF/CYL/1\nroller\n1,0,0\n0.45,0,0.05\n0,1,0\n0.05,0.2\n"                                                   \
+    "/SURF/BOX/2\ntable\n0\n0,0,-0.5\n0.5,0.5,0.5\n1,0,0\n0,1,0\n"                                                \
+    "/FUNCT/1\nlinear\n0,0\n1,10000000\n"                                                                          \
+    "/INTER/TYPE6/1\nroller on table\n1,2\n" fric "\n\n1,0\n\n2000\n"                                                \
+    "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"                                                                             \
+    "/INIVEL/TRA/1\nv0\n0.3,0,0,1,0\n"                                                                             \
+    "/RUN\n0.6,0.01\n/END\n"
+static const char *roller_box_edge_deck = ROLLER_BOX_EDGE_DECK("");
+/* the same with TYPE6 friction (its tangential force a state that turns with the normal) */
+static const char *roller_box_edge_fric_deck = ROLLER_BOX_EDGE_DECK(",0.3");
+
+/* The normal's rate beyond the edge, read through the friction state's
+ * rate: a tangential force F held in the state turns with the normal, so
+ * the normal part of its rate is -F.dn/dt; against central differences of
+ * the normal along the motion (the roller translating, the box fixed). */
+static void roller_edge_normal_rate(void)
+{
+    rc_model *m = TU_COMPILE_OK(roller_box_edge_fric_deck, "roller_box_edge_fric.rad");
+    if (!m) return;
+    const int ti = m->inter_fr[0].tidx;
+    ENSURE(m->inter_fr[0].kind != RC_FK_NONE && ti >= 0);
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double)), *yd = calloc((size_t)m->ny, sizeof(double));
+    ENSURE(d && y && yd);
+    if (d && y && yd && ti >= 0) {
+        rc_initial_state(m, y);
+        double *yb = y + m->body_yadr[0];
+        const double x0[3] = {0.45, 0.0, 0.05}, c[3] = {0.53, 0.1, 0.039}, v[3] = {0.2, 0.0, -0.1};
+        for (int k = 0; k < 3; k++) {
+            yb[k] += c[k] - x0[k];
+            yb[7 + k] = v[k];
+        }
+        rc_inter_report r, rp, rm;
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+        /* F: 2 N along the tangent of the plane of the motion */
+        const double F[3] = {2.0 * r.normal[2], 0.0, -2.0 * r.normal[0]};
+        double *fs = y + m->inter_eadr[0] + ti;
+        for (int k = 0; k < 3; k++) fs[k] = F[k];
+        d->inter_mode[0] = RC_MODE_CLOSED;
+        d->inter_slip[0] = 0;
+        ENSURE(rc_assemble_rhs(m, d, 0.0, y, yd) == 0);
+        const double *fd = yd + m->inter_eadr[0] + ti;
+        const double got = -(fd[0] * r.normal[0] + fd[1] * r.normal[1] + fd[2] * r.normal[2]);
+        const double h = 1e-6;
+        for (int k = 0; k < 3; k++) yb[k] += h * v[k];
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &rp);
+        for (int k = 0; k < 3; k++) yb[k] -= 2.0 * h * v[k];
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &rm);
+        double want = 0.0;
+        for (int k = 0; k < 3; k++) want += F[k] * (rp.normal[k] - rm.normal[k]) / (2.0 * h);
+        printf("    beyond the edge: F.dn/dt %.12g (central differences of the normal %.12g)\n", got, want);
+        ENSURE(fabs(want) > 1.0);
+        ENSURE_NEAR(got, want, 1e-7, 0);
+    }
+    free(y);
+    free(yd);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
+static void test_roller_pivots_over_a_box_edge(void)
+{
+    rc_model *m = TU_COMPILE_OK(roller_box_edge_deck, "roller_box_edge.rad");
+    if (!m) return;
+    ENSURE(m->inter_pair[0] == RC_PAIR_CYL_BOX);
+    {
+        rc_data *d = rc_data_new(m);
+        double *y = calloc((size_t)m->ny, sizeof(double));
+        ENSURE(d && y);
+        if (d && y) {
+            rc_initial_state(m, y);
+            double *yb = y + m->body_yadr[0], y0[3];
+            const double x0[3] = {0.45, 0.0, 0.05}; /* the state is about the model's origin */
+            for (int k = 0; k < 3; k++) y0[k] = yb[k];
+            /* beyond the edge x = 0.5, z = 0: w = (0.03, 0, 0.039) */
+            const double c[3] = {0.53, 0.1, 0.039};
+            for (int k = 0; k < 3; k++) yb[k] = y0[k] + c[k] - x0[k];
+            yb[7] = 0.2;
+            yb[9] = -0.1;
+            rc_inter_report r;
+            rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+            const double w[3] = {0.03, 0.0, 0.039}, nw = sqrt(w[0] * w[0] + w[2] * w[2]);
+            printf("    beyond the edge: P %.15g m (closed form %.15g), normal (%.6f %.6f %.6f), vn %.15g\n", r.p,
+                   0.05 - nw, r.normal[0], r.normal[1], r.normal[2], r.vn);
+            ENSURE_NEAR(r.p, 0.05 - nw, 0, 1e-15);
+            for (int k = 0; k < 3; k++) ENSURE_NEAR(r.normal[k], -w[k] / nw, 0, 1e-15);
+            ENSURE_NEAR(r.vn, -(0.2 * w[0] - 0.1 * w[2]) / nw, 0, 1e-15);
+            /* at the border (the centre over the edge, x = 0.5): the face's
+             * plane and the edge's give the same P */
+            for (int k = 0; k < 3; k++) yb[k] = y0[k] + (k == 0 ? 0.5 : k == 2 ? 0.049 : 0.0) - x0[k];
+            rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+            ENSURE_NEAR(r.p, 1e-3, 0, 1e-15);
+            yb[0] = nextafter(yb[0], INFINITY);
+            rc_inter_report r2;
+            rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r2);
+            ENSURE_NEAR(r2.p, 1e-3, 0, 1e-15);
+            ENSURE_NEAR(r2.normal[2], -1.0, 0, 1e-12);
+            for (int k = 0; k < 3; k++) yb[k] = y0[k] + c[k] - x0[k];
+            d->inter_mode[0] = RC_MODE_CLOSED;
+            int bad = 0, outside = 0;
+            const double err = tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside);
+            printf("    beyond the edge: Jacobian against central differences %.3g (bad %d)\n", err, bad);
+            ENSURE(bad == 0);
+        }
+        free(y);
+        rc_data_free(d);
+    }
+    roller_edge_normal_rate();
+    tu_evlog ev;
+    memset(&ev, 0, sizeof ev);
+    rc_error e;
+    rc_run_options o;
+    memset(&o, 0, sizeof o);
+    o.on_event = tu_evlog_event;
+    o.user = &ev;
+    rc_stats st;
+    rc_status s = rc_run(m, &o, &st, &e);
+    if (s) printf("    %s\n", e.msg);
+    ENSURE(s == RC_OK);
+    double tsep = NAN;
+    for (int k = 0; k < ev.n && k < TU_MAXEV; k++)
+        if (!strcmp(ev.kind[k], "contact_separate") || !strcmp(ev.kind[k], "contact_open")) {
+            tsep = ev.t[k];
+            break;
+        }
+    ENSURE(isfinite(tsep));
+    if (isfinite(tsep)) {
+        double y[64];
+        memset(&o, 0, sizeof o);
+        o.y_end = y;
+        o.t_end_override = tsep;
+        s = rc_run(m, &o, &st, &e);
+        ENSURE(s == RC_OK);
+        double b[13];
+        ENSURE(rc_model_body_state(m, y, 1, b, &e) == RC_OK);
+        const double dx = b[0] - 0.5, dz = b[2], rr = hypot(dx, dz), v0 = 0.3, g = 9.81;
+        const double want = (v0 * v0 / (g * rr) + 2.0) / 3.0;
+        printf("    the roller leaves the edge at t = %.6f s, cos(theta) = %.6f (closed form %.6f), |c - edge| %.9f m\n",
+               tsep, dz / rr, want, rr);
+        ENSURE(fabs(dz / rr - want) < 2e-3);
+    }
+    rc_model_free(m);
+}
+
 /* A law's state stiffness beyond what the coordinates resolve is refused:
  * a ball striking a wall whose Stiff line and stick spring (2.21e18 N/m)
  * move the force by 3e3 N over the position tolerance the coordinates
@@ -1560,6 +1723,7 @@ void suite_passive(void)
     RUN_TEST(test_viscous_reversal_root_waits_for_a_limit);
     RUN_TEST(test_viscous_saturation_needs_the_force_band);
     RUN_TEST(test_ball_pivots_over_a_box_edge);
+    RUN_TEST(test_roller_pivots_over_a_box_edge);
     RUN_TEST(test_state_stiffness_beyond_resolution_refused);
     RUN_TEST(test_landing_band_kept_through_flips);
     RUN_TEST(test_power_rdf_root_on_damping_rate);

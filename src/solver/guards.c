@@ -260,29 +260,21 @@ static double box_box_depth(const rc_model *m, int i, const double *y)
     return depth;
 }
 
-/* How far the contact point x of a cylinder against box surface s lies
- * beyond the rectangle of the box face it acts through [m]: the face whose
- * axis is along the contact normal nrm, and the distance of x's foot on
- * that face's plane from the rectangle (0 inside). The cylinder-box pair
- * acts through the face's plane, extended beyond its edges (docs/theory.md
- * 2, cylinder - box): a roller beyond the edge is held up by nothing there. */
-static double beyond_face(const rc_model *m, int s, const double *y, const double x[3], const double nrm[3])
+/* How far the point x lies outside the solid box of surface s [m] (0
+ * inside): the distance from x to its nearest point of the box. A
+ * cylinder against a box acts through the plane of the face facing its
+ * centre, or of the edge it lies along (docs/theory.md 2, cylinder - box),
+ * which goes on beyond the box: a cylinder lying across an edge, or
+ * standing on its end over it, may be held where the box is not. */
+static double outside_box(const rc_model *m, int s, const double *y, const double x[3])
 {
-    double c[3], a[3][3], h[3], xl[3];
+    double c[3], a[3][3], h[3];
     box_pose(m, s, y, c, a, h);
-    int f = 0;
-    double best = -1.0;
-    for (int k = 0; k < 3; k++) {
-        xl[k] = (x[0] - c[0]) * a[k][0] + (x[1] - c[1]) * a[k][1] + (x[2] - c[2]) * a[k][2];
-        const double al = fabs(nrm[0] * a[k][0] + nrm[1] * a[k][1] + nrm[2] * a[k][2]);
-        if (al > best) {
-            best = al;
-            f = k;
-        }
-    }
     double b2 = 0.0;
-    for (int k = 0; k < 3; k++)
-        if (k != f && fabs(xl[k]) > h[k]) b2 += (fabs(xl[k]) - h[k]) * (fabs(xl[k]) - h[k]);
+    for (int k = 0; k < 3; k++) {
+        const double xl = (x[0] - c[0]) * a[k][0] + (x[1] - c[1]) * a[k][1] + (x[2] - c[2]) * a[k][2];
+        if (fabs(xl) > h[k]) b2 += (fabs(xl) - h[k]) * (fabs(xl) - h[k]);
+    }
     return sqrt(b2);
 }
 
@@ -411,23 +403,24 @@ int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, co
                 on[3] = 0;
             }
         }
-        /* a cylinder held by a box face beyond its edge (the pair acts
-         * through the face's plane, which goes on beyond the rectangle): a
-         * closed, pressing contact whose point lies off the face by more
-         * than 1 % of the radius */
+        /* a cylinder held where the box is not: a closed, pressing
+         * contact whose point lies outside the solid box by more than 1 %
+         * of the radius */
         if (m->inter_pair[i] == RC_PAIR_CYL_BOX && mode == RC_MODE_CLOSED) {
             rc_inter_report r; /* the roots' evaluation of this state when kept */
             if (!(rc_report_cache_state(m, d, y) && rc_report_cache_get(m, d, i, &r))) rc_inter_report_eval_d(m, d, i, t, y, &r);
             const double lim = 0.01 * m->surf_r[m->inter_sa[i]];
-            const double B = r.fn > 0 ? beyond_face(m, m->inter_sb[i], y, r.point, r.normal) : 0.0;
+            const double B = r.fn > 0 ? outside_box(m, m->inter_sb[i], y, r.point) : 0.0;
             if (B > lim && !on[4]) {
                 on[4] = 1;
                 if (violate(g, t, t, "support_beyond_edge", m->inter_name[i], B, lim,
-                            "the contact point of %s lies %.6g m beyond the edge of the box's face at t = %.9g s "
-                            "(more than 1 %% of the cylinder's radius) while it presses with %.6g N: a cylinder "
-                            "against a box acts through the face's plane, which goes on beyond its edges, so "
-                            "the cylinder is held up where the box is not: the contact of a cylinder with a "
-                            "box's edge is not modelled in this version (docs/theory.md 2, cylinder - box)",
+                            "the contact point of %s lies %.6g m outside the box at t = %.9g s (more than 1 %% "
+                            "of the cylinder's radius) while it presses with %.6g N: a cylinder against a box "
+                            "acts through the plane of the face facing its centre (or of the edge it lies "
+                            "along), which goes on beyond the box, so a cylinder lying across an edge (or "
+                            "standing on its end over it) is held up where the box is not: the contact of a "
+                            "cylinder with an edge it crosses is not modelled in this version "
+                            "(docs/theory.md 2, cylinder - box)",
                             m->inter_name[i], B, t, r.fn))
                     return 1;
             } else if (B <= lim) {

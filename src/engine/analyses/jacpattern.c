@@ -230,10 +230,12 @@ static rc_status probe_blocks(rc_model *m, rc_error *err)
          * whose region (lateral, end, rim) depends on the state, and for
          * sphere-box (a face, an edge or a corner: at an edge or a corner
          * the normal turns with the sphere's centre, at a face it does not),
-         * and for a sphere against a plane bounded to a parallelogram
+         * for cylinder-box (the same regions, seen from the cylinder's
+         * centre), and for a sphere against a plane bounded to a parallelogram
          * (/RWALL/PARAL: beyond a side, as at a box's edge) */
         if (is_inter && (rc_pair_multi(m->inter_pair[idx]) || m->inter_pair[idx] == RC_PAIR_CYL_SEG ||
                          m->inter_pair[idx] == RC_PAIR_SPHERE_CYL || m->inter_pair[idx] == RC_PAIR_SPHERE_BOX ||
+                         m->inter_pair[idx] == RC_PAIR_CYL_BOX ||
                          (m->inter_pair[idx] == RC_PAIR_SPHERE_PLANE &&
                           m->surf_ext[RC_SURF_NEXT * m->inter_sb[idx]] != 0.0))) {
             for (int k = 0; k < n; k++) jb->slot[k] = 0;

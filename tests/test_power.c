@@ -493,6 +493,53 @@ out:
     rc_model_free(m);
 }
 
+/* The rebound damping factor scales the damping term: without one (C 0,
+ * no damping curve) it changes nothing and the law has no branches, so no
+ * rdf_rebound / rdf_approach event is tracked. A ball resting on a floor
+ * through an undamped power law with the default RDF rang on its law for
+ * 4.5 s with two branch events every period of the ringing (38 000 events
+ * in a fuzzer's cradle); with a damping term the events are there. */
+static void test_power_rdf_without_damping_has_no_branches(void)
+{
+    const char *laws[2] = {"1e8,1.5\n", "1e8,1.5,100,1,1\n"};
+    int nrdf[2] = {-1, -1};
+    for (int c = 0; c < 2; c++) {
+        char deck[1024];
+        snprintf(deck, sizeof deck,
+                 "/BEGIN\nball resting on a floor\n      2022         0\n"
+                 "                  kg                   m                   s\n"
+                 "                  kg                   m                   s\n"
+                 "/NODE\n1,0,0,0.05\n/RBODY/1\nr\n1,,,,1.0\n1e-3,1e-3,1e-3\n0,0,0\n/GRNOD/NODE/1\ng\n1\n"
+                 "/SURF/PLANE/2\np\n0,0,0\n0,0,1\n"
+                 "/SURF/ELLIPS/1\ns\n0,2,1\n0,0,0.05\n0.05,0.05,0.05\n"
+                 "/INTER/POWER/1\nt\n1,2\n%s"
+                 "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n/RUN\n0.05,0.01\n/END\n",
+                 laws[c]);
+        rc_model *m = TU_COMPILE_OK(deck, c ? "power_rdf_damped.rad" : "power_rdf_undamped.rad");
+        if (!m) continue;
+        ENSURE(m->inter_pw[0].rdf == 0.001);
+        ENSURE(rc_pw_rdf_acts(&m->inter_pw[0]) == c);
+        tu_evlog ev;
+        memset(&ev, 0, sizeof ev);
+        rc_error e;
+        rc_run_options o;
+        memset(&o, 0, sizeof o);
+        o.on_event = tu_evlog_event;
+        o.user = &ev;
+        rc_stats st;
+        const rc_status s = rc_run(m, &o, &st, &e);
+        if (s) printf("    %s\n", e.msg);
+        ENSURE(s == RC_OK);
+        nrdf[c] = 0;
+        for (int k = 0; k < ev.n && k < TU_MAXEV; k++)
+            nrdf[c] += !strcmp(ev.kind[k], "rdf_rebound") || !strcmp(ev.kind[k], "rdf_approach");
+        printf("    %s: %d rdf events in 0.05 s, %ld steps\n", c ? "C 100" : "C 0", nrdf[c], st.steps);
+        rc_model_free(m);
+    }
+    ENSURE(nrdf[0] == 0);
+    ENSURE(nrdf[1] >= 2);
+}
+
 void suite_power(void);
 void suite_power(void)
 {
@@ -504,4 +551,5 @@ void suite_power(void)
     RUN_TEST(test_power_friction_card_overrides_step5);
     RUN_TEST(test_power_card_errors);
     RUN_TEST(test_power_released_force_root_at_zero_separates);
+    RUN_TEST(test_power_rdf_without_damping_has_no_branches);
 }

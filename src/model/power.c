@@ -156,6 +156,6 @@ void rc_power_print(const rc_model *m, int i, FILE *f)
     else fprintf(f, "C %.5g m2 %.5g", pw->c, pw->m2);
     fprintf(f, " m3 %.5g, ", pw->m3);
     if (pw->rdf == 1.0) fprintf(f, "RDF off");
-    else fprintf(f, "RDF %.5g", pw->rdf);
+    else fprintf(f, "RDF %.5g%s", pw->rdf, rc_pw_rdf_acts(pw) ? "" : " (no damping term to scale: no effect)");
     fprintf(f, ", Tstart %.5g, Tstop %.5g%s\n", m->inter_tstart[i], m->inter_tstop[i], rc_sensor_note(m, i));
 }

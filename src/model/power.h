@@ -63,6 +63,13 @@ typedef struct rc_power {
     double vreg;       /* regularisation speed of |v|^m2, m2 < 1 [m/s]       */
 } rc_power;
 
+/* Does the rebound damping factor act (RDF on and a damping term for it to
+ * scale)? Without one the law has no branches: the approach and the
+ * rebound give the same force, and no rdf_rebound / rdf_approach event
+ * is tracked (a ball resting on an undamped power law with the default
+ * RDF switched branch every half period of its ringing). */
+static inline int rc_pw_rdf_acts(const rc_power *pw) { return pw->rdf != 1.0 && (pw->c != 0.0 || pw->damp != NULL); }
+
 /* x^m for x >= 0, regularised below xr when m < 1, extended oddly:
  *   m >= 1:  sgn(x) |x|^m
  *   m < 1:   |x| >= xr: sgn(x) |x|^m;   |x| < xr: a x + b sgn(x) x^2,

@@ -468,13 +468,14 @@ double rc_contact_record_interval(const rc_model *m, double dtout)
 }
 
 /* Does interface i have no normal damping of any kind (TYPE6: Visc 0 and no
- * damping curve acting; the power law: C 0, no damping curve, RDF off)? */
+ * damping curve acting; the power law: C 0 and no damping curve, whose
+ * RDF then scales nothing)? */
 static int undamped(const rc_model *m, int i)
 {
     if (m->inter_law[i] == RC_LAW_TYPE6)
         return m->inter_visc[i] == 0.0 && !(m->inter_fct_dv[i] >= 0 && m->inter_fscalev[i] != 0.0);
     const rc_power *pw = &m->inter_pw[i];
-    return pw->c == 0.0 && !pw->damp && pw->rdf == 1.0;
+    return pw->c == 0.0 && !pw->damp;
 }
 
 void rc_impacts_vibration_note(const rc_impacts *im, const rc_model *m, long steps, char *buf, size_t n)

@@ -370,7 +370,7 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
         if (mode == RC_MODE_CLOSED && d->inter_settled[i]) gi[RC_ROOT_FORCE] = 1.0;
         /* hysteresis: reversal on the curves, bounds on the Stiff line */
         /* power law with RDF: the rate of P (approach / rebound) */
-        if (mode != RC_MODE_OPEN && m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0)
+        if (mode != RC_MODE_OPEN && m->inter_law[i] == RC_LAW_POWER && rc_pw_rdf_acts(&m->inter_pw[i]))
             gi[RC_ROOT_HYST_A] = r.vd + d->inter_rband[i]; /* the damping's own rate */
         if (mode != RC_MODE_OPEN && m->inter_iform[i] != 0) {
             if (br == RC_BR_ELASTIC) {
@@ -419,7 +419,7 @@ static int inter_root_live(const rc_model *m, int i, int k, double tend)
     case RC_ROOT_TSTOP: /* t - Tstop < 0 up to tend (the stop time of the run) */
         return m->inter_tstop[i] <= tend;
     case RC_ROOT_HYST_A: /* the curves' bounds, or the rate of P: power law with RDF */
-        return m->inter_iform[i] != 0 || (m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0);
+        return m->inter_iform[i] != 0 || (m->inter_law[i] == RC_LAW_POWER && rc_pw_rdf_acts(&m->inter_pw[i]));
     case RC_ROOT_HYST_B: /* the Stiff line's upper bound */
         return m->inter_iform[i] != 0;
     case RC_ROOT_TRK_A:

@@ -1006,7 +1006,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
          * events) skip the two complex-step evaluations */
         const int need = fabs(r.p) <= band || fabs(c.fn) <= fband ||
                          (m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0) ||
-                         (m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0);
+                         (m->inter_law[i] == RC_LAW_POWER && rc_pw_rdf_acts(&m->inter_pw[i]));
         int trend = 0, ctrend = 0, ltrend = 0; /* P, P closed, the law's penetration */
         memset(&dr, 0, sizeof dr);
         memset(&dc, 0, sizeof dc);
@@ -1066,7 +1066,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             d->inter_mode[i] = RC_MODE_RELEASED;
             reset_friction(m, d, i, y, restart);
             kind = RC_EV_CONTACT_OPEN;
-        } else if (m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0) {
+        } else if (m->inter_law[i] == RC_LAW_POWER && rc_pw_rdf_acts(&m->inter_pw[i])) {
             /* rebound damping branch at a zero rate of the damping's own
              * argument (dP/dt, or v_bar with several points), where the
              * damping force is zero on both branches: decided on P_e's
@@ -1221,7 +1221,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
              * away on its waiting side (in a touching cradle on IDA the rate
              * stayed at 1e-48 m/s, its sign rounding, and the roots crossed
              * at every step: 200 rebound/approach events within 3e-10 s) */
-            if (md != RC_MODE_OPEN && m->inter_law[i] == RC_LAW_POWER && m->inter_pw[i].rdf != 1.0 &&
+            if (md != RC_MODE_OPEN && m->inter_law[i] == RC_LAW_POWER && rc_pw_rdf_acts(&m->inter_pw[i]) &&
                 fabs(r.vd) <= vband)
                 d->inter_rband[i] = d->inter_branch[i] == RC_BR_LOAD ? 2.0 * vband : -2.0 * vband;
             /* a TYPE6 hysteresis curve likewise: its rate root (the law's

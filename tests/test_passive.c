@@ -1344,6 +1344,59 @@ out:
     rc_model_free(m);
 }
 
+/* Model m's data (*d) and initial state (malloc'd; NULL, and *d NULL or
+ * to free, when out of memory). */
+static double *initial_state_of(const rc_model *m, rc_data **d)
+{
+    *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    ENSURE(*d && y);
+    if (!*d || !y) {
+        free(y);
+        return NULL;
+    }
+    rc_initial_state(m, y);
+    return y;
+}
+
+/* Body 1 of m (started on the top of a table whose edge is the line x =
+ * 0.5 m, z = 0, sliding off it at v0 = 0.3 m/s without friction) leaves the
+ * edge where its centre, on the circle of radius R about the edge, leaves
+ * a particle: cos(theta*) = (v0^2 / (g R) + 2) / 3. Run to the end, then
+ * again to the first separation for the state there; frees m. */
+static void leaves_edge_at_closed_form(rc_model *m, const char *what)
+{
+    tu_evlog ev;
+    rc_status s = tu_run_evlog(m, &ev, NULL);
+    ENSURE(s == RC_OK);
+    double tsep = NAN;
+    for (int k = 0; k < ev.n && k < TU_MAXEV; k++)
+        if (!strcmp(ev.kind[k], "contact_separate") || !strcmp(ev.kind[k], "contact_open")) {
+            tsep = ev.t[k];
+            break;
+        }
+    ENSURE(isfinite(tsep));
+    if (isfinite(tsep)) {
+        double y[64];
+        rc_error e;
+        rc_run_options o;
+        rc_stats st;
+        memset(&o, 0, sizeof o);
+        o.y_end = y;
+        o.t_end_override = tsep;
+        s = rc_run(m, &o, &st, &e);
+        ENSURE(s == RC_OK);
+        double b[13];
+        ENSURE(rc_model_body_state(m, y, 1, b, &e) == RC_OK);
+        const double dx = b[0] - 0.5, dz = b[2], rr = hypot(dx, dz), v0 = 0.3, g = 9.81;
+        const double want = (v0 * v0 / (g * rr) + 2.0) / 3.0;
+        printf("    the %s leaves the edge at t = %.6f s, cos(theta) = %.6f (closed form %.6f), |c - edge| %.9f m\n",
+               what, tsep, dz / rr, want, rr);
+        ENSURE(fabs(dz / rr - want) < 2e-3);
+    }
+    rc_model_free(m);
+}
+
 /* A ball over the edge of a box: the edge is rounded by the geometry (the
  * distance to the solid box), so a ball sliding off a table pivots about
  * the edge and leaves it where a particle on a circle of radius R does,
@@ -1375,11 +1428,9 @@ static void test_ball_pivots_over_a_box_edge(void)
     ENSURE(m->inter_pair[0] == RC_PAIR_SPHERE_BOX);
     /* geometry at an edge (x and z beyond the half-sizes) and a corner */
     {
-        rc_data *d = rc_data_new(m);
-        double *y = calloc((size_t)m->ny, sizeof(double));
-        ENSURE(d && y);
-        if (d && y) {
-            rc_initial_state(m, y);
+        rc_data *d = NULL;
+        double *y = initial_state_of(m, &d);
+        if (y) {
             double *yb = y + m->body_yadr[0], y0[3];
             const double x0[3] = {0.45, 0.0, 0.05}; /* the state is about the model's origin */
             for (int k = 0; k < 3; k++) y0[k] = yb[k];
@@ -1407,40 +1458,7 @@ static void test_ball_pivots_over_a_box_edge(void)
         free(y);
         rc_data_free(d);
     }
-    tu_evlog ev;
-    memset(&ev, 0, sizeof ev);
-    rc_error e;
-    rc_run_options o;
-    memset(&o, 0, sizeof o);
-    o.on_event = tu_evlog_event;
-    o.user = &ev;
-    rc_stats st;
-    rc_status s = rc_run(m, &o, &st, &e);
-    if (s) printf("    %s\n", e.msg);
-    ENSURE(s == RC_OK);
-    double tsep = NAN;
-    for (int k = 0; k < ev.n && k < TU_MAXEV; k++)
-        if (!strcmp(ev.kind[k], "contact_separate") || !strcmp(ev.kind[k], "contact_open")) {
-            tsep = ev.t[k];
-            break;
-        }
-    ENSURE(isfinite(tsep));
-    if (isfinite(tsep)) {
-        double y[64];
-        memset(&o, 0, sizeof o);
-        o.y_end = y;
-        o.t_end_override = tsep;
-        s = rc_run(m, &o, &st, &e);
-        ENSURE(s == RC_OK);
-        double b[13];
-        ENSURE(rc_model_body_state(m, y, 1, b, &e) == RC_OK);
-        const double dx = b[0] - 0.5, dz = b[2], rr = hypot(dx, dz), v0 = 0.3, g = 9.81;
-        const double want = (v0 * v0 / (g * rr) + 2.0) / 3.0;
-        printf("    the ball leaves the edge at t = %.6f s, cos(theta) = %.6f (closed form %.6f), |c - edge| %.9f m\n",
-               tsep, dz / rr, want, rr);
-        ENSURE(fabs(dz / rr - want) < 2e-3);
-    }
-    rc_model_free(m);
+    leaves_edge_at_closed_form(m, "ball");
 }
 
 /* A roller (a cylinder lying along a table's edge) rolling over the edge
@@ -1527,18 +1545,15 @@ static void test_roller_pivots_over_a_box_edge(void)
     rc_model *m = TU_COMPILE_OK(roller_box_edge_deck, "roller_box_edge.rad");
     if (!m) return;
     ENSURE(m->inter_pair[0] == RC_PAIR_CYL_BOX);
-    {
-        rc_data *d = rc_data_new(m);
-        double *y = calloc((size_t)m->ny, sizeof(double));
-        ENSURE(d && y);
-        if (d && y) {
-            rc_initial_state(m, y);
-            double *yb = y + m->body_yadr[0], y0[3];
-            const double x0[3] = {0.45, 0.0, 0.05}; /* the state is about the model's origin */
-            for (int k = 0; k < 3; k++) y0[k] = yb[k];
-            /* beyond the edge x = 0.5, z = 0: w = (0.03, 0, 0.039) */
-            const double c[3] = {0.53, 0.1, 0.039};
-            for (int k = 0; k < 3; k++) yb[k] = y0[k] + c[k] - x0[k];
+    rc_data *d = NULL;
+    double *y = initial_state_of(m, &d);
+    if (y) {
+        /* the centre beyond the edge x = 0.5, z = 0 (positions about the
+         * model's origin): w = (0.03, 0, 0.039) */
+        double *yb = y + m->body_yadr[0];
+        const double c[3] = {0.53, 0.1, 0.039}, border[3] = {0.5, 0.0, 0.049};
+        {
+            for (int k = 0; k < 3; k++) yb[k] = c[k] - m->origin[k];
             yb[7] = 0.2;
             yb[9] = -0.1;
             rc_inter_report r;
@@ -1551,7 +1566,7 @@ static void test_roller_pivots_over_a_box_edge(void)
             ENSURE_NEAR(r.vn, -(0.2 * w[0] - 0.1 * w[2]) / nw, 0, 1e-15);
             /* at the border (the centre over the edge, x = 0.5): the face's
              * plane and the edge's give the same P */
-            for (int k = 0; k < 3; k++) yb[k] = y0[k] + (k == 0 ? 0.5 : k == 2 ? 0.049 : 0.0) - x0[k];
+            for (int k = 0; k < 3; k++) yb[k] = border[k] - m->origin[k];
             rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
             ENSURE_NEAR(r.p, 1e-3, 0, 1e-15);
             yb[0] = nextafter(yb[0], INFINITY);
@@ -1559,51 +1574,18 @@ static void test_roller_pivots_over_a_box_edge(void)
             rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r2);
             ENSURE_NEAR(r2.p, 1e-3, 0, 1e-15);
             ENSURE_NEAR(r2.normal[2], -1.0, 0, 1e-12);
-            for (int k = 0; k < 3; k++) yb[k] = y0[k] + c[k] - x0[k];
+            for (int k = 0; k < 3; k++) yb[k] = c[k] - m->origin[k];
             d->inter_mode[0] = RC_MODE_CLOSED;
             int bad = 0, outside = 0;
             const double err = tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside);
             printf("    beyond the edge: Jacobian against central differences %.3g (bad %d)\n", err, bad);
             ENSURE(bad == 0);
         }
-        free(y);
-        rc_data_free(d);
     }
+    free(y);
+    rc_data_free(d);
     roller_edge_normal_rate();
-    tu_evlog ev;
-    memset(&ev, 0, sizeof ev);
-    rc_error e;
-    rc_run_options o;
-    memset(&o, 0, sizeof o);
-    o.on_event = tu_evlog_event;
-    o.user = &ev;
-    rc_stats st;
-    rc_status s = rc_run(m, &o, &st, &e);
-    if (s) printf("    %s\n", e.msg);
-    ENSURE(s == RC_OK);
-    double tsep = NAN;
-    for (int k = 0; k < ev.n && k < TU_MAXEV; k++)
-        if (!strcmp(ev.kind[k], "contact_separate") || !strcmp(ev.kind[k], "contact_open")) {
-            tsep = ev.t[k];
-            break;
-        }
-    ENSURE(isfinite(tsep));
-    if (isfinite(tsep)) {
-        double y[64];
-        memset(&o, 0, sizeof o);
-        o.y_end = y;
-        o.t_end_override = tsep;
-        s = rc_run(m, &o, &st, &e);
-        ENSURE(s == RC_OK);
-        double b[13];
-        ENSURE(rc_model_body_state(m, y, 1, b, &e) == RC_OK);
-        const double dx = b[0] - 0.5, dz = b[2], rr = hypot(dx, dz), v0 = 0.3, g = 9.81;
-        const double want = (v0 * v0 / (g * rr) + 2.0) / 3.0;
-        printf("    the roller leaves the edge at t = %.6f s, cos(theta) = %.6f (closed form %.6f), |c - edge| %.9f m\n",
-               tsep, dz / rr, want, rr);
-        ENSURE(fabs(dz / rr - want) < 2e-3);
-    }
-    rc_model_free(m);
+    leaves_edge_at_closed_form(m, "roller");
 }
 
 /* A law's state stiffness beyond what the coordinates resolve is refused:

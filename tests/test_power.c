@@ -520,16 +520,8 @@ static void test_power_rdf_without_damping_has_no_branches(void)
         ENSURE(m->inter_pw[0].rdf == 0.001);
         ENSURE(rc_pw_rdf_acts(&m->inter_pw[0]) == c);
         tu_evlog ev;
-        memset(&ev, 0, sizeof ev);
-        rc_error e;
-        rc_run_options o;
-        memset(&o, 0, sizeof o);
-        o.on_event = tu_evlog_event;
-        o.user = &ev;
         rc_stats st;
-        const rc_status s = rc_run(m, &o, &st, &e);
-        if (s) printf("    %s\n", e.msg);
-        ENSURE(s == RC_OK);
+        ENSURE(tu_run_evlog(m, &ev, &st) == RC_OK);
         nrdf[c] = 0;
         for (int k = 0; k < ev.n && k < TU_MAXEV; k++)
             nrdf[c] += !strcmp(ev.kind[k], "rdf_rebound") || !strcmp(ev.kind[k], "rdf_approach");

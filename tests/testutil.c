@@ -242,6 +242,20 @@ int tu_evlog_event(void *user, double t, const char *kind, const char *element, 
     return 0;
 }
 
+rc_status tu_run_evlog(const rc_model *m, tu_evlog *ev, rc_stats *st)
+{
+    memset(ev, 0, sizeof *ev);
+    rc_error e;
+    rc_run_options o;
+    memset(&o, 0, sizeof o);
+    o.on_event = tu_evlog_event;
+    o.user = ev;
+    rc_stats s;
+    const rc_status r = rc_run(m, &o, st ? st : &s, &e);
+    if (r) printf("    %s\n", e.msg);
+    return r;
+}
+
 /* The settling column of the benchmarks (bench.py column_deck): n spheres
  * (R 0.01 m, m 0.01 kg) 1e-4 m apart over a floor, TYPE6 k = 1e5 N/m
  * critically damped, gravity; variants by flags (testutil.h). */

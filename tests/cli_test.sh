@@ -682,10 +682,11 @@ grep -q "^  /INTER/TYPE6/1 *box-box (the 8 corners of each box against the 6 fac
     expect check_box_pairs 0 $rc "(box-box and box-plane listed with their corners)" ||
     expect check_box_pairs 0 99 "($(grep "/INTER/TYPE6/[12] " "$tmp/x" | head -c 200))"
 # the integrator's warnings: ricochet's own line format, at most 3 per run
-# and one line saying the others are not shown (a cylinder rolling on
-# beyond a box's edge, past the physics check that stops it there
-# (support_beyond_edge, asked to warn): its step collapses, CVODE warns
-# "t + h = t" ten times, then stops with exit 3)
+# and one line saying the others are not shown (a cylinder sliding along
+# its axis over a box's edge, held beyond it by the face's plane past the
+# physics check that stops it there (support_beyond_edge, asked to warn):
+# its step collapses, CVODE warns "t + h = t" ten times, then stops with
+# exit 3)
 "$bin" run tests/data/cylinder_rim_step_collapse.rad -o "$tmp/warn.nc" -q --on-violation warn > "$tmp/x" 2>&1; rc=$?
 nw=$(grep -c '^ricochet: warning: CVODE (CVode): Internal t' "$tmp/x")
 if [ "$nw" -eq 3 ] && grep -q '^ricochet: warning: CVODE: further warnings of the integrator in this run are not shown' "$tmp/x" &&

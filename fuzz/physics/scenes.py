@@ -396,6 +396,18 @@ def finish(B, L, E_s, v_scale, H, tend, n_out=200, extra=None):
     s["scales"] = {"L": float(L), "E_s": float(E_s), "v": float(v_scale), "H": float(H), "g": g, "m_total": mtot}
     if extra:
         s["scales"].update(extra)
+    # the /FRICTION card covers every interface: in the incremental form a
+    # power-law interface that add_friction did not see (a cradle's ball
+    # pairs beside its floor contacts) needs the stiffness too, which
+    # ricochet otherwise refuses the card for; the normal law's slope at the
+    # scene's weight (no random draw: the other scenes stay as they were)
+    fr = s.get("friction")
+    if fr and fr.get("iform") == 2:
+        W = max(mtot * g, 1e-12)
+        for it in s["inters"]:
+            if it.get("law") == "power" and "kt" not in it and it.get("k"):
+                p = (W / it["k"]) ** (1.0 / it["m1"])
+                it["kt"] = it["m1"] * W / p
     return s
 
 

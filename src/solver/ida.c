@@ -78,7 +78,7 @@ typedef struct ida_ctx {
     void *ida;
     SUNMatrix A;
     SUNLinearSolver LS;
-    N_Vector yy, yp, ytn, ypt, ysamp, idv;
+    N_Vector yy, yp, ytn, ypt, ysamp, idv, ewt; /* ewt: the error weights of a restart's first step */
     rc_rootmap rm; /* the root functions IDA is given (integrator.h) */
     rc_actpart ap; /* the Newton matrix on the active part of the pattern (activepart.h; with
                       exact stick or joints on the extended pattern; both: whole) */
@@ -184,6 +184,26 @@ static void add_stats(void *ida, rc_stats *s)
     if (IDAGetNumGEvals(ida, &v) == IDA_SUCCESS) s->root_evals += v;
 }
 
+/* The first step after a restart at t (docs/theory.md 7.7): IDA's own
+ * estimate (0 here), unless its bound 0.5 / ||Y'|| (the error norm of its
+ * differential components) falls below the rounding of t, where a step
+ * does not move t and IDA, stepping on the spot, never gets past it (the
+ * damping work of a damped wall at the instant it closes: 3e5 W against an
+ * energy tolerance of 1e-14 J): then 100 eps |t|, the CVODE backend's
+ * lower bound. */
+static double first_step(ida_ctx *c, double t, N_Vector yy, N_Vector yp)
+{
+    const double hmin = 100.0 * DBL_EPSILON * fabs(t);
+    if (!(hmin > 0) || cb_ewt(yy, c->ewt, c)) return 0.0;
+    const double *p = N_VGetArrayPointer(yp), *w = N_VGetArrayPointer(c->ewt);
+    const double *id = c->cs ? N_VGetArrayPointer(c->idv) : NULL;
+    double s = 0.0;
+    for (int k = 0; k < c->n; k++)
+        if (!id || id[k] != 0.0) s += (p[k] * w[k]) * (p[k] * w[k]);
+    const double norm = sqrt(s / c->n);
+    return 0.5 < hmin * norm ? hmin : 0.0;
+}
+
 /* Consistent Y' (and multipliers) at (t, Y), then IDA restarted there.
  * Without constraint sets Y' = f(t, y) exactly; with them the velocities
  * and multipliers of every set are made consistent (rc_cset_consistent:
@@ -197,6 +217,10 @@ static int restart(ida_ctx *c, void *ida, double t, N_Vector yy, N_Vector yp)
         if (st) return st == -2 ? IDA_FIRST_RES_FAIL : IDA_CONV_FAIL;
     } else if (rc_assemble_rhs(m, c->d, t, y, p))
         return IDA_FIRST_RES_FAIL;
+    if (m->h0 <= 0) {
+        const int flag = IDASetInitStep(ida, first_step(c, t, yy, yp));
+        if (flag < 0) return flag;
+    }
     return IDAReInit(ida, t, yy, yp);
 }
 
@@ -270,13 +294,14 @@ static rc_status ida_open(void *self, const rc_model *m, rc_data *d, const rc_ru
     c->ypt = N_VNew_Serial(c->n, c->ctx);
     c->ysamp = N_VNew_Serial(c->n, c->ctx);
     c->idv = N_VNew_Serial(c->n, c->ctx);
+    c->ewt = N_VNew_Serial(c->n, c->ctx);
     /* optimised vector operations, inherited by IDA's clones (nvfast.h) */
-    N_Vector vecs[] = {c->yy, c->yp, c->ytn, c->ypt, c->ysamp, c->idv};
+    N_Vector vecs[] = {c->yy, c->yp, c->ytn, c->ypt, c->ysamp, c->idv, c->ewt};
     for (size_t k = 0; k < sizeof vecs / sizeof vecs[0]; k++) rc_nvector_fast(vecs[k]);
     c->jsave = calloc((size_t)m->nnz + 1, sizeof(double));
     const int64_t nnz = c->cs ? rc_cset_nnz(c->cs) : m->nnz;
     c->A = SUNSparseMatrix(c->n, c->n, nnz, CSC_MAT, c->ctx);
-    if (!c->yy || !c->yp || !c->ytn || !c->ypt || !c->ysamp || !c->idv || !c->jsave || !c->A)
+    if (!c->yy || !c->yp || !c->ytn || !c->ypt || !c->ysamp || !c->idv || !c->ewt || !c->jsave || !c->A)
         return RC_SET(err, RC_ENOMEM, "out of memory for the solver");
     if (!(c->LS = SUNLinSol_KLU(c->yy, c->A, c->ctx))) return RC_SET(err, RC_ESOLVER, "SUNLinSol_KLU failed");
     /* a set that gives no active slots (a composition): the whole pattern */
@@ -371,9 +396,10 @@ static int ida_restart(void *self, double t, int at_breakpoint)
 {
     ida_ctx *c = self;
     (void)at_breakpoint;
-    /* the first step: IDA's own estimate (docs/theory.md 7.7: the CVODE
-     * backend's restart_step cost IDA steps, its step growing at most
-     * twofold per step), or /SOLVER H0 */
+    /* the first step: IDA's own estimate bounded below by the rounding of
+     * t (first_step; docs/theory.md 7.7: the CVODE backend's restart_step
+     * cost IDA steps, its step growing at most twofold per step), or
+     * /SOLVER H0 */
     return restart(c, c->ida, t, c->yy, c->yp);
 }
 
@@ -445,6 +471,7 @@ static void ida_close(void *self)
     N_VDestroy(c->ypt);
     N_VDestroy(c->ysamp);
     N_VDestroy(c->idv);
+    N_VDestroy(c->ewt);
     free(c->jsave);
     rc_cset_free(c->cs);
     free(c->yrec);

@@ -1540,6 +1540,102 @@ static void roller_edge_normal_rate(void)
     rc_model_free(m);
 }
 
+/* A cylinder lying level on a plane (mid-length contact, Icont 0, the
+ * default): before, its contact point was the lowest point of the middle
+ * section alone, which a tilt moves towards the raised end, so the level
+ * was an unstable equilibrium (growth rate sqrt(m g r / I), 11 /s here: a
+ * cylinder on a floor tipped itself on end, 135000082). Now the load passes
+ * to the lower end over the end band, as a line contact's does: a pitch
+ * of 0.05 rad/s rings about the level. The depth: the middle's exactly
+ * when level, the lower rim's less 3 eps / 16 beyond the band; the
+ * Jacobian inside the band against central differences. */
+#define LYING_CYL_DECK(w0, k, L)                                                                                            \
+    "/BEGIN\ncylinder lying on a floor\n      2022         0\n"                                                       \
+    "                  kg                   m                   s\n"                                                  \
+    "                  kg                   m                   s\n"                                                  \
+    "/NODE\n1,0,0,0.049\n"                                                                                           \
+    "/RBODY/1\ncylinder\n1,,,,1.0\n0.004,0.00125,0.004\n0,0,0\n"                                                    \
+    "/GRNOD/NODE/1\ncylinder\n1\n"                                                                                  \
+    "/SURF/CYL/1\ncylinder\n1,0,0\n0,0,0.049\n0,1,0\n0.05," L "\n"                                                 \
+    "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"                                                                         \
+    "/FUNCT/1\nlinear\n0,0\n1," k "\n"                                                                           \
+    "/INTER/TYPE6/1\ncylinder on floor\n1,2\n\n\n1,0\n\n20\n"                                                      \
+    "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"                                                                             \
+    "/INIVEL/ROT/1\npitch\n" w0 ",0,0,1,0\n"                                                                       \
+    "/RUN\n1.0,0.01\n/END\n"
+
+static void test_cylinder_level_is_stable(void)
+{
+    rc_model *m = TU_COMPILE_OK(LYING_CYL_DECK("0.05", "10000", "0.2"), "lying_cylinder.rad");
+    if (!m) return;
+    ENSURE(m->inter_pair[0] == RC_PAIR_CYL_PLANE);
+    const double *ext = m->surf_ext + RC_SURF_NEXT * m->inter_sa[0];
+    const double h = ext[0], eps = ext[3], r = 0.05;
+    printf("    half-length %.3g m, end band %.3g m (penetration scale %.3g m)\n", h, eps, m->inter_pscale[0]);
+    ENSURE(ext[2] == 0.0 && eps > 0 && h > 0);
+    rc_data *d = NULL;
+    double *y = initial_state_of(m, &d);
+    if (y) {
+        double *yb = y + m->body_yadr[0];
+        rc_inter_report rep;
+        /* level: the middle's depth exactly */
+        yb[2] = 0.049 - m->origin[2];
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &rep);
+        printf("    level: P %.15g m (the middle's 0.001)\n", rep.p);
+        ENSURE_NEAR(rep.p, 1e-3, 0, 1e-15);
+        /* tilted by 0.01 rad about x, beyond the band: the lower rim's depth less 3 eps / 16 */
+        const double a = 0.01;
+        yb[3] = cos(0.5 * a);
+        yb[4] = sin(0.5 * a);
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &rep);
+        const double rim = -(0.049 - r * cos(a) - h * sin(a)) - 0.1875 * eps;
+        printf("    tilted 0.01 rad: P %.15g m (the lower rim's less 3 eps/16: %.15g)\n", rep.p, rim);
+        ENSURE_NEAR(rep.p, rim, 0, 1e-15);
+    }
+    free(y);
+    rc_data_free(d);
+    /* inside the band: the Jacobian, on a softer law and a shorter
+     * cylinder (its band a tilt of 1.2e-3 rad, 600 of the differences'
+     * steps of 2e-6 rad, whose truncation error stays below 1e-6) */
+    rc_model *ms = TU_COMPILE_OK(LYING_CYL_DECK("0.05", "1000", "0.02"), "lying_cylinder_soft.rad");
+    d = NULL;
+    y = ms ? initial_state_of(ms, &d) : NULL;
+    if (y) {
+        double *yb = y + ms->body_yadr[0];
+        yb[2] = 0.049 - ms->origin[2];
+        yb[3] = cos(0.5 * 1e-3);
+        yb[4] = sin(0.5 * 1e-3);
+        d->inter_mode[0] = RC_MODE_CLOSED;
+        int bad = 0, outside = 0;
+        const double err = tu_jac_fd_error(ms, d, 0.0, y, 1, &bad, &outside);
+        printf("    inside the band (tilt 1e-3 rad, band %.3g m): Jacobian against central differences %.3g (bad %d)\n",
+               ms->surf_ext[RC_SURF_NEXT * ms->inter_sa[0] + 3], err, bad);
+        ENSURE(bad == 0);
+    }
+    free(y);
+    rc_data_free(d);
+    rc_model_free(ms);
+    /* the run: a pitch of 0.05 rad/s rings about the level */
+    double ye[64];
+    rc_error e;
+    rc_run_options o;
+    rc_stats st;
+    memset(&o, 0, sizeof o);
+    o.y_end = ye;
+    const rc_status s = rc_run(m, &o, &st, &e);
+    ENSURE(s == RC_OK);
+    if (s == RC_OK) {
+        double b[13];
+        ENSURE(rc_model_body_state(m, ye, 1, b, &e) == RC_OK);
+        /* the axis' height gradient: 2 (q_y q_z + q_w q_x) is e_z of R (0, 1, 0) */
+        const double ez = 2.0 * (b[5] * b[6] + b[3] * b[4]);
+        printf("    after 1 s: tilt %.3g rad, centre at z = %.9f m, pitch rate %.3g rad/s\n", asin(ez), b[2], b[10]);
+        ENSURE(fabs(ez) < 1e-3);
+        ENSURE(fabs(b[2] - 0.049) < 1e-3);
+    }
+    rc_model_free(m);
+}
+
 static void test_roller_pivots_over_a_box_edge(void)
 {
     rc_model *m = TU_COMPILE_OK(roller_box_edge_deck, "roller_box_edge.rad");
@@ -1575,11 +1671,23 @@ static void test_roller_pivots_over_a_box_edge(void)
             ENSURE_NEAR(r2.p, 1e-3, 0, 1e-15);
             ENSURE_NEAR(r2.normal[2], -1.0, 0, 1e-12);
             for (int k = 0; k < 3; k++) yb[k] = c[k] - m->origin[k];
+            /* the Jacobian with the axis tilted by 1e-4 rad out of the
+             * edge's plane (about e x N): beyond the end band (a tilt of
+             * 1.25e-6 rad here), whose curvature the differences' steps
+             * (2e-6 rad of the quaternion) straddle; the band's own
+             * Jacobian: test_cylinder_level_is_stable */
+            const double a = 1e-4, u[3] = {w[2] / nw, 0.0, -w[0] / nw}; /* e x N, e = (0, 1, 0) */
+            yb[3] = cos(0.5 * a);
+            yb[4] = sin(0.5 * a) * u[0];
+            yb[5] = 0.0;
+            yb[6] = sin(0.5 * a) * u[2];
             d->inter_mode[0] = RC_MODE_CLOSED;
             int bad = 0, outside = 0;
             const double err = tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside);
             printf("    beyond the edge: Jacobian against central differences %.3g (bad %d)\n", err, bad);
             ENSURE(bad == 0);
+            yb[3] = 1.0;
+            yb[4] = yb[5] = yb[6] = 0.0;
         }
     }
     free(y);
@@ -1706,6 +1814,7 @@ void suite_passive(void)
     RUN_TEST(test_viscous_saturation_needs_the_force_band);
     RUN_TEST(test_ball_pivots_over_a_box_edge);
     RUN_TEST(test_roller_pivots_over_a_box_edge);
+    RUN_TEST(test_cylinder_level_is_stable);
     RUN_TEST(test_state_stiffness_beyond_resolution_refused);
     RUN_TEST(test_landing_band_kept_through_flips);
     RUN_TEST(test_power_rdf_root_on_damping_rate);

@@ -548,11 +548,11 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         m->inter_sband[i] = isfinite(ps) && ps > 0 ? RC_SHARE_BAND * ps : RC_SHARE_BAND * 1e-3 * (L > 0 ? L : 1.0);
         if (isfinite(ps) && isfinite(vs) && ps > 0 && vs > 0) m->inter_perelax[i] = RC_PE_RELAX * vs / ps;
     }
-    /* the end band of cylinders in the deepest-point mode (docs/theory.md
-     * 2, cylinder - plane): RC_CYL_END_BAND of the penetration scale of their interfaces
-     * with a plane, a box or a segment surface (the smallest), within
-     * which the contact point passes from one end to the other; 0 (the
-     * nearer end alone) without a scale */
+    /* the end band of cylinders (docs/theory.md 2, cylinder - plane):
+     * RC_CYL_END_BAND of the penetration scale of their interfaces with a
+     * plane, a box or a segment surface (the smallest), within which the
+     * contact point passes from one end (or the middle) to the other; 0
+     * (the nearer end alone, or the middle) without a scale */
     for (int s = 0; s < m->nsurf; s++)
         if (m->surf_kind[s] == RC_SURF_CYL) m->surf_ext[RC_SURF_NEXT * s + 3] = 0.0;
     for (int i = 0; i < n; i++) {
@@ -560,7 +560,7 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
         if (pk != RC_PAIR_CYL_PLANE && pk != RC_PAIR_CYL_BOX && pk != RC_PAIR_CYL_SEG) continue;
         double *ext = m->surf_ext + RC_SURF_NEXT * m->inter_sa[i];
         const double ps = m->inter_pscale[i];
-        if (ext[2] == 0.0 || !(isfinite(ps) && ps > 0)) continue;
+        if (!(isfinite(ps) && ps > 0)) continue;
         const double eb = RC_CYL_END_BAND * ps;
         ext[3] = ext[3] > 0 ? fmin(ext[3], eb) : eb;
     }

@@ -862,7 +862,6 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
                    roots[rc_root_land_base(m) + m->inter_pbase[i] + j] != 0;
         if (!any) continue;
         clear_band(d, i); /* the touch bands last until the interface's next event */
-        d->inter_deck[i] = 0;
         /* window first; then the branch, then the contact, so that crossings
          * falling together (the Stiff line reaching zero releases the force)
          * are all applied, in the order of the law */
@@ -873,6 +872,13 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
             if (kind[2] == RC_EV_NONE) kind[3] = step_friction(m, d, i, t, y, r, restart);
         }
         if ((kind[0] != RC_EV_NONE || kind[2] != RC_EV_NONE) && d->inter_mode[i] == RC_MODE_CLOSED) stateless_friction_mode(m, d, i, t, y);
+        /* the rounding of the deck's coordinates lasts until the contact
+         * itself changes (a window or a crossing of its mode), not through
+         * its friction's or its hysteresis' events: a box started touching
+         * an incline 1 km away (a gap of -4.5e-14 m, the deck's rounding)
+         * separated at its first fric_slip, 4.7e-11 s in, and closed again
+         * 7.9e-8 s later, where the scene at the origin stayed closed */
+        if (kind[0] != RC_EV_NONE || kind[2] != RC_EV_NONE) d->inter_deck[i] = 0;
         /* the landing bands last while the contact does: a point that
          * landed keeps its land root a band away through the interface's
          * other events (its own stick -> slip flip an instant later among
@@ -936,8 +942,9 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
 /* ---- contacts at zero: modes decided by the state ------------------ */
 /* Touch band of interface i at (t, y) [m]: above the rounding of P (a
  * thousand ulps of the coordinates involved) and 1e-9 of the penetration
- * scale; until the interface's first event, above the rounding of the
- * deck's coordinates too (where its bodies were put: a touching start 1 km
+ * scale; until the contact first changes at an event (a window, or a
+ * crossing of its mode: rc_events_apply), above the rounding of the deck's
+ * coordinates too (where its bodies were put: a touching start 1 km
  * away begins 2e-14 m apart). Not beyond that: at 1 km the deck's rounding
  * is 4e-12 m, and a ball bouncing on a stiff wall there (its weight
  * pressing it 5e-12 m in) separated while still 8e-13 m in and closed again

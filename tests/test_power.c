@@ -6,6 +6,7 @@
  * energy ledger of an imposed rotation. The Jacobian of all of it is checked
  * in test_engine.c (test_engine_jacobian_power_cylinders_impvel_...).
  */
+#include <float.h>
 #include <stdlib.h>
 #include <unistd.h>
 
@@ -532,6 +533,52 @@ static void test_power_rdf_without_damping_has_no_branches(void)
     ENSURE(nrdf[1] >= 2);
 }
 
+/* The derived Dreg is at least what the numbers resolve: 64 times the
+ * larger of the rounding of the pair's coordinates and the distance v_s
+ * covers in the smallest step that moves t at the end time. A ball
+ * striking a very stiff wall with a damping switched on over the first
+ * Dreg (m3 = 0) at t = 0.25 s, 3.1 m/s: 1e-4 p_s (p_s at the ball's
+ * weight) alone is crossed faster than t can be stepped there, and CVODE
+ * stepped on the spot until Max_steps; with the floor the ball bounces
+ * back. A Dreg given on the card is kept. */
+static void test_power_dreg_resolvable(void)
+{
+    for (int given = 0; given < 2; given++) {
+        char deck[1200];
+        snprintf(deck, sizeof deck,
+                 "/BEGIN\nball striking a stiff damped wall\n      2022         0\n"
+                 "                  kg                   m                   s\n"
+                 "                  kg                   m                   s\n"
+                 "/NODE\n1,0,0,0.511\n/RBODY/1\nr\n1,,,,0.3\n1e-4,1e-4,1e-4\n0,0,0\n/GRNOD/NODE/1\ng\n1\n"
+                 "/SURF/PLANE/2\np\n0,0,0\n0,0,1\n"
+                 "/SURF/ELLIPS/1\ns\n0,2,1\n0,0,0.511\n0.03,0.03,0.03\n"
+                 "/INTER/POWER/1\nt\n1,2\n4.68e16,1.5,487554,1,0\n%s"
+                 "/INIVEL/TRA/1\nv0\n0,0,-0.7,1,0\n/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n/RUN\n0.5,0.01\n/END\n",
+                 given ? ",1e-9\n" : "");
+        rc_model *m = TU_COMPILE_OK(deck, given ? "power_dreg_given.rad" : "power_dreg_derived.rad");
+        if (!m) continue;
+        const double ps = m->inter_pscale[0], vs = m->inter_vscale[0], dreg = m->inter_pw[0].dreg;
+        const double X = 0.511 + 0.06; /* the ball's centre plus its size; the plane's point is 0 */
+        const double floor = 64.0 * fmax(64.0 * DBL_EPSILON * X, vs * 100.0 * DBL_EPSILON * 0.5);
+        printf("    %s: Dreg %.3g m (1e-4 p_s %.3g m, the numbers' floor about %.3g m)\n", given ? "given" : "derived",
+               dreg, 1e-4 * ps, floor);
+        if (given) {
+            ENSURE(dreg == 1e-9);
+        } else {
+            ENSURE(1e-4 * ps < floor);
+            ENSURE(dreg >= 0.5 * floor && dreg <= 4.0 * floor);
+            tu_evlog ev;
+            rc_stats st;
+            ENSURE(tu_run_evlog(m, &ev, &st) == RC_OK);
+            int opened = 0;
+            for (int k = 0; k < ev.n && k < TU_MAXEV; k++) opened |= !strcmp(ev.kind[k], "contact_open") || !strcmp(ev.kind[k], "contact_separate");
+            printf("    the run: %ld steps, %d events, the ball leaves the wall: %s\n", st.steps, ev.n, opened ? "yes" : "no");
+            ENSURE(opened);
+        }
+        rc_model_free(m);
+    }
+}
+
 void suite_power(void);
 void suite_power(void)
 {
@@ -544,4 +591,5 @@ void suite_power(void)
     RUN_TEST(test_power_card_errors);
     RUN_TEST(test_power_released_force_root_at_zero_separates);
     RUN_TEST(test_power_rdf_without_damping_has_no_branches);
+    RUN_TEST(test_power_dreg_resolvable);
 }

@@ -57,6 +57,9 @@
 /* Derived regularisation of the power law: Dreg = RC_DREG_FRAC p_s,
  * Vreg = RC_DREG_FRAC v_s [-]. */
 #define RC_DREG_FRAC 1e-4
+/* ... and Dreg at least this many roundings of the pair's coordinates and
+ * of the time's steps (docs/theory.md 9.2) [-]. */
+#define RC_DREG_RES 64.0
 /* p_s is at least this fraction of p_F [-]. */
 #define RC_PSCALE_SPAN 1e-2
 /* the end band of a cylinder's deepest point, in penetration scales */
@@ -402,6 +405,34 @@ static int on_joint(const rc_model *m, int b)
 
 int rc_inter_on_joint(const rc_model *m, int i) { return on_joint(m, m->inter_ba[i]) || on_joint(m, m->inter_bb[i]); }
 
+/* The position floor of coordinates of magnitude X in the model [m]. */
+static double coordinate_floor(double X)
+{
+    return RC_TOL_ULPS * DBL_EPSILON * X;
+}
+
+/* The largest coordinate of interface i's pair at t = 0 [m]: its bodies'
+ * centres plus their sizes (size: rc_body_size), its fixed surfaces'
+ * points. */
+static double inter_extent(const rc_model *m, int i, const double *size)
+{
+    double X = 0.0;
+    const int bs[2] = {m->inter_ba[i], m->inter_bb[i]};
+    for (int k = 0; k < 2; k++) {
+        const int b = bs[k];
+        if (b < 0) continue;
+        const double *x = m->body_y0 + RC_NB * b;
+        for (int c = 0; c < 3; c++) X = fmax(X, fabs(x[c]) + size[b]);
+    }
+    const int ss[2] = {m->inter_sa[i], m->inter_sb[i]};
+    for (int k = 0; k < 2; k++) {
+        if (ss[k] < 0 || m->surf_body[ss[k]] >= 0) continue;
+        const double *p = m->surf_p + 3 * ss[k];
+        for (int c = 0; c < 3; c++) X = fmax(X, fabs(p[c]));
+    }
+    return X;
+}
+
 rc_status rc_model_scales(rc_model *m, rc_error *err)
 {
     const int n = m->ninter;
@@ -574,12 +605,24 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
                      ? RC_STICK_ZETA * 2.0 * sqrt(fr->kt * mr)
                      : 0.0;
     }
-    /* derived regularisation of the power law (blank Dreg, Vreg) */
+    /* derived regularisation of the power law (blank Dreg, Vreg), Dreg at
+     * least RC_DREG_RES roundings of the pair's coordinates and the
+     * distance v_s covers in RC_DREG_RES of the smallest steps that move t
+     * at the end time (100 eps t_end): a damping switched on over the
+     * first Dreg (m3 = 0) must be crossed in steps the time can resolve
+     * (a ball striking a wall of 4.7e16 N/m^1.5 with C = 4.9e5 N s/m: Dreg
+     * 1.6e-15 m, crossed in 2e-15 s at t = 0.25 s, where one rounding of t
+     * is 5.6e-17 s: CVODE stepped on the spot) */
     for (int i = 0; i < n; i++) {
         if (m->inter_law[i] != RC_LAW_POWER) continue;
         rc_power *pw = &m->inter_pw[i];
         const int ok = isfinite(m->inter_pscale[i]);
-        if (pw->dreg == 0) pw->dreg = ok ? RC_DREG_FRAC * m->inter_pscale[i] : 1e-6;
+        if (pw->dreg == 0) {
+            const double vs = isfinite(m->inter_vscale[i]) ? m->inter_vscale[i] : 0.0;
+            const double res = RC_DREG_RES * fmax(coordinate_floor(inter_extent(m, i, size)),
+                                                  vs * 100.0 * DBL_EPSILON * m->tend);
+            pw->dreg = ok ? fmax(RC_DREG_FRAC * m->inter_pscale[i], res) : 1e-6;
+        }
         if (pw->vreg == 0) pw->vreg = ok ? RC_DREG_FRAC * m->inter_vscale[i] : 1e-6;
     }
     /* a restitution asked (e_target): the damping that gives it, in closed
@@ -614,12 +657,6 @@ static double inter_damping(const rc_model *m, int i)
             c = fmax(c, sqrt(2.0 * fr->set[k][RC_FS_VISF] * m->inter_kscale[i] * fr->mred));
     c = fmax(c, fr->ct);
     return c > 0 ? c : 1e-300;
-}
-
-/* The position floor of coordinates of magnitude X in the model [m]. */
-static double coordinate_floor(double X)
-{
-    return RC_TOL_ULPS * DBL_EPSILON * X;
 }
 
 rc_status rc_model_tolerances(rc_model *m, rc_error *err)
@@ -665,20 +702,7 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         if (!isfinite(m->inter_pscale[i])) continue;
         const double vi = fmin(m->inter_vscale[i], m->inter_fscale[i] / inter_damping(m, i));
         const int bs[2] = {m->inter_ba[i], m->inter_bb[i]};
-        double X = 0.0; /* model coordinates */
-        for (int k = 0; k < 2; k++) {
-            const int b = bs[k];
-            if (b < 0) continue;
-            const double *x = m->body_y0 + RC_NB * b;
-            for (int c = 0; c < 3; c++) X = fmax(X, fabs(x[c]) + size[b]);
-        }
-        const int ss[2] = {m->inter_sa[i], m->inter_sb[i]};
-        for (int k = 0; k < 2; k++) {
-            if (ss[k] < 0 || m->surf_body[ss[k]] >= 0) continue;
-            const double *p = m->surf_p + 3 * ss[k];
-            for (int c = 0; c < 3; c++) X = fmax(X, fabs(p[c]));
-        }
-        pfl[i] = coordinate_floor(X);
+        pfl[i] = coordinate_floor(inter_extent(m, i, size));
         const double om = m->inter_vscale[i] / m->inter_pscale[i];
         for (int k = 0; k < 2; k++) {
             if (bs[k] < 0) continue;

@@ -1364,6 +1364,21 @@ static double *initial_state_of(const rc_model *m, rc_data **d)
  * edge where its centre, on the circle of radius R about the edge, leaves
  * a particle: cos(theta*) = (v0^2 / (g R) + 2) / 3. Run to the end, then
  * again to the first separation for the state there; frees m. */
+/* Run m to t_end (0: the deck's end time) and body 1's 13 states there. */
+static rc_status run_body_state(rc_model *m, double t_end, double b[13])
+{
+    double y[64];
+    rc_error e;
+    rc_run_options o;
+    rc_stats st;
+    memset(&o, 0, sizeof o);
+    o.y_end = y;
+    o.t_end_override = t_end;
+    rc_status s = rc_run(m, &o, &st, &e);
+    if (s == RC_OK) s = rc_model_body_state(m, y, 1, b, &e);
+    return s;
+}
+
 static void leaves_edge_at_closed_form(rc_model *m, const char *what)
 {
     tu_evlog ev;
@@ -1377,17 +1392,8 @@ static void leaves_edge_at_closed_form(rc_model *m, const char *what)
         }
     ENSURE(isfinite(tsep));
     if (isfinite(tsep)) {
-        double y[64];
-        rc_error e;
-        rc_run_options o;
-        rc_stats st;
-        memset(&o, 0, sizeof o);
-        o.y_end = y;
-        o.t_end_override = tsep;
-        s = rc_run(m, &o, &st, &e);
-        ENSURE(s == RC_OK);
         double b[13];
-        ENSURE(rc_model_body_state(m, y, 1, b, &e) == RC_OK);
+        ENSURE(run_body_state(m, tsep, b) == RC_OK);
         const double dx = b[0] - 0.5, dz = b[2], rr = hypot(dx, dz), v0 = 0.3, g = 9.81;
         const double want = (v0 * v0 / (g * rr) + 2.0) / 3.0;
         printf("    the %s leaves the edge at t = %.6f s, cos(theta) = %.6f (closed form %.6f), |c - edge| %.9f m\n",
@@ -1616,17 +1622,10 @@ static void test_cylinder_level_is_stable(void)
     rc_data_free(d);
     rc_model_free(ms);
     /* the run: a pitch of 0.05 rad/s rings about the level */
-    double ye[64];
-    rc_error e;
-    rc_run_options o;
-    rc_stats st;
-    memset(&o, 0, sizeof o);
-    o.y_end = ye;
-    const rc_status s = rc_run(m, &o, &st, &e);
+    double b[13];
+    const rc_status s = run_body_state(m, 0.0, b);
     ENSURE(s == RC_OK);
     if (s == RC_OK) {
-        double b[13];
-        ENSURE(rc_model_body_state(m, ye, 1, b, &e) == RC_OK);
         /* the axis' height gradient: 2 (q_y q_z + q_w q_x) is e_z of R (0, 1, 0) */
         const double ez = 2.0 * (b[5] * b[6] + b[3] * b[4]);
         printf("    after 1 s: tilt %.3g rad, centre at z = %.9f m, pitch rate %.3g rad/s\n", asin(ez), b[2], b[10]);

@@ -195,12 +195,8 @@ static double first_step(ida_ctx *c, double t, N_Vector yy, N_Vector yp)
 {
     const double hmin = 100.0 * DBL_EPSILON * fabs(t);
     if (!(hmin > 0) || cb_ewt(yy, c->ewt, c)) return 0.0;
-    const double *p = N_VGetArrayPointer(yp), *w = N_VGetArrayPointer(c->ewt);
-    const double *id = c->cs ? N_VGetArrayPointer(c->idv) : NULL;
-    double s = 0.0;
-    for (int k = 0; k < c->n; k++)
-        if (!id || id[k] != 0.0) s += (p[k] * w[k]) * (p[k] * w[k]);
-    const double norm = sqrt(s / c->n);
+    /* IDA's norm: over the differential components when it has an id */
+    const double norm = c->cs ? N_VWrmsNormMask(yp, c->ewt, c->idv) : N_VWrmsNorm(yp, c->ewt);
     return 0.5 < hmin * norm ? hmin : 0.0;
 }
 

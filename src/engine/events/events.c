@@ -610,6 +610,48 @@ static rc_event_kind step_branch(const rc_model *m, rc_data *d, int i, double t,
     return RC_EV_NONE;
 }
 
+/* Touch band of interface i at (t, y) [m]: above the rounding of P (a
+ * thousand ulps of the coordinates involved) and 1e-9 of the penetration
+ * scale; until the contact first changes at an event (a window, or a
+ * crossing of its mode: rc_events_apply), above the rounding of the deck's
+ * coordinates too (where its bodies were put: a touching start 1 km
+ * away begins 2e-14 m apart). Not beyond that: at 1 km the deck's rounding
+ * is 4e-12 m, and a ball bouncing on a stiff wall there (its weight
+ * pressing it 5e-12 m in) separated while still 8e-13 m in and closed again
+ * only 4e-12 m in, its force jumping from zero to k times that: a limit
+ * cycle fed by those jumps, 18 621 bounces where the scene at the origin
+ * settled after 21. */
+static double touch_band(const rc_model *m, const rc_data *d, int i, const double *y, const rc_inter_report *r)
+{
+    const double band = rc_touch_band(m, i, y, r, RC_TOUCH_ULPS, RC_TOUCH_REL, d->inter_deck[i]);
+    return band > 0 ? band : DBL_MIN;
+}
+
+/* The contact frequency omega_s = v_s / p_s of interface i [1/s] (0: not
+ * scaled). The rounding of dP/dt for its trend is the rate that moves P by
+ * its touch band within 1 / omega_s, and that of d2P/dt2 the acceleration
+ * that reaches that rate within 1 / omega_s. A normal built from rounded
+ * coordinates turns a tangential velocity into an approach rate of that
+ * rounding (2e-14 m/s for a ball rolling on a floor mesh 1 km from the
+ * origin), which must not decide a separation that gravity reverses within
+ * a nanosecond and a fraction of the band; nor may the rounding of the
+ * accelerations in a resting chain decide which of its touching contacts
+ * start open. */
+static double trend_omega(const rc_model *m, int i)
+{
+    const double ps = m->inter_pscale[i], vs = m->inter_vscale[i];
+    return isfinite(ps) && isfinite(vs) && ps > 0 && vs > 0 ? vs / ps : 0.0;
+}
+
+/* The force band of interface i [N]: a force within it is zero to the
+ * rounding of a contact at its touch band (the stiffness scale times the
+ * band) or of its law's own terms (the closed report c). */
+static double force_band(const rc_model *m, int i, double band, const rc_inter_report *c)
+{
+    const double k = isfinite(m->inter_kscale[i]) ? m->inter_kscale[i] : 0.0;
+    return fmax(band * k, RC_TOUCH_ULPS * DBL_EPSILON * (fabs(c->fload) + fabs(c->fdamp)));
+}
+
 /* The position tolerance of interface i [m]: its law's P_e, its Inacti 5
  * offset, or its bodies' positions (the larger). */
 static double inter_apos(const rc_model *m, int i)
@@ -640,6 +682,19 @@ static rc_event_kind step_contact(const rc_model *m, rc_data *d, int i, double t
         return RC_EV_CONTACT_SEPARATE;
     }
     if (mode == RC_MODE_CLOSED && r[RC_ROOT_FORCE] < 0) {
+        /* the force down to zero at P = 0 within the touch band while the
+         * bodies separate faster than its rounding: the contact leaves now
+         * (released, it would separate at the same instant, in the touch
+         * pass: a contact_open and contact_separate pair where another
+         * frame's rounding met the zone's root first and gave a
+         * contact_separate alone) */
+        rc_inter_report q;
+        report(m, d, i, t, y, &q);
+        const double band = touch_band(m, d, i, y, &q);
+        if (fabs(q.p) <= band && q.vn < -band * trend_omega(m, i)) {
+            leave_zone(m, d, i, y, changed);
+            return RC_EV_CONTACT_SEPARATE;
+        }
         clear_band(d, i);
         d->inter_mode[i] = RC_MODE_RELEASED;
         reset_friction(m, d, i, y, changed);
@@ -659,6 +714,16 @@ static rc_event_kind step_contact(const rc_model *m, rc_data *d, int i, double t
             leave_zone(m, d, i, y, changed);
             return RC_EV_CONTACT_SEPARATE;
         }
+        /* a force root that reached zero without passing its rounding
+         * (the force band): the touch pass that follows every event
+         * decides on the force's rate, as for any contact at zero force.
+         * A ball leaving a meshed box at 0.27 m/s, its force exactly 0 at
+         * P = 1.1e-14 m (its points past their landing bands), closed here
+         * and was released by that pass at the same instant: a
+         * contact_close/contact_open pair in one frame and not another */
+        rc_inter_report c;
+        rc_inter_report_eval(m, i, RC_MODE_CLOSED, d->inter_branch[i], 0, d->inter_slip[i], t, y, &c);
+        if (fabs(c.fn) <= force_band(m, i, touch_band(m, d, i, y, &q), &c)) return RC_EV_NONE;
         clear_band(d, i);
         d->inter_mode[i] = RC_MODE_CLOSED;
         reset_friction(m, d, i, y, changed);
@@ -940,22 +1005,6 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
 }
 
 /* ---- contacts at zero: modes decided by the state ------------------ */
-/* Touch band of interface i at (t, y) [m]: above the rounding of P (a
- * thousand ulps of the coordinates involved) and 1e-9 of the penetration
- * scale; until the contact first changes at an event (a window, or a
- * crossing of its mode: rc_events_apply), above the rounding of the deck's
- * coordinates too (where its bodies were put: a touching start 1 km
- * away begins 2e-14 m apart). Not beyond that: at 1 km the deck's rounding
- * is 4e-12 m, and a ball bouncing on a stiff wall there (its weight
- * pressing it 5e-12 m in) separated while still 8e-13 m in and closed again
- * only 4e-12 m in, its force jumping from zero to k times that: a limit
- * cycle fed by those jumps, 18 621 bounces where the scene at the origin
- * settled after 21. */
-static double touch_band(const rc_model *m, const rc_data *d, int i, const double *y, const rc_inter_report *r)
-{
-    const double band = rc_touch_band(m, i, y, r, RC_TOUCH_ULPS, RC_TOUCH_REL, d->inter_deck[i]);
-    return band > 0 ? band : DBL_MIN;
-}
 
 /* Accelerations below this many times band omega_s^2 (what a contact
  * overlapping by its touch band gives a body of its effective mass) are
@@ -975,22 +1024,6 @@ static int p_trend(double vn, double an, double t, double dtout, double vband, d
     return (an > 0) - (an < 0);
 }
 
-/* The contact frequency omega_s = v_s / p_s of interface i [1/s] (0: not
- * scaled). The rounding of dP/dt for its trend is the rate that moves P by
- * its touch band within 1 / omega_s, and that of d2P/dt2 the acceleration
- * that reaches that rate within 1 / omega_s. A normal built from rounded
- * coordinates turns a tangential velocity into an approach rate of that
- * rounding (2e-14 m/s for a ball rolling on a floor mesh 1 km from the
- * origin), which must not decide a separation that gravity reverses within
- * a nanosecond and a fraction of the band; nor may the rounding of the
- * accelerations in a resting chain decide which of its touching contacts
- * start open. */
-static double trend_omega(const rc_model *m, int i)
-{
-    const double ps = m->inter_pscale[i], vs = m->inter_vscale[i];
-    return isfinite(ps) && isfinite(vs) && ps > 0 && vs > 0 ? vs / ps : 0.0;
-}
-
 int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const double *ydot, rc_event *ev, int max_ev,
                    int *restart)
 {
@@ -1007,7 +1040,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
         const int cbr = mode == RC_MODE_OPEN ? RC_BR_LOAD : br;
         rc_inter_report_eval(m, i, RC_MODE_CLOSED, cbr, 0, d->inter_slip[i], t, y, &c);
         const double k = isfinite(m->inter_kscale[i]) ? m->inter_kscale[i] : 0.0;
-        const double fband = fmax(band * k, RC_TOUCH_ULPS * DBL_EPSILON * (fabs(c.fload) + fabs(c.fdamp)));
+        const double fband = force_band(m, i, band, &c);
         /* the rates below are needed only by a contact at zero (P or force)
          * or by a law with branches; the others (most of them, at most
          * events) skip the two complex-step evaluations */

@@ -27,6 +27,8 @@
 #include <string.h>
 
 #include "harness.h"
+#include "engine/assembly/assembly.h"
+#include "engine/reports/reports.h"
 #include "model/model.h"
 #include "testutil.h"
 
@@ -235,9 +237,56 @@ static void test_switch_option(void)
     ENSURE(rc_model_switch(NULL) == 0);
 }
 
+/* The critical explicit step counts the relaxation of a law's penetration
+ * P_e (docs/theory.md 2.7, 7.9): a box on a floor (its corners, P_e at
+ * kappa = 10 omega_s) closed, h_crit = min(2 / kappa, 2 / omega_max) with
+ * omega_max^2 = k_s / m (undamped, against a fixed floor): here kappa wins
+ * (an explicit step of 2 / omega_max is 10 times past the relaxation's
+ * stability bound); open, no bound. */
+static void test_switch_critical_step_counts_pe_relaxation(void)
+{
+    static const char *deck =
+        "/BEGIN\nbox on a floor\n      2022         0\n"
+        "                  kg                   m                   s\n"
+        "                  kg                   m                   s\n"
+        "/FUNCT/1\nlinear\n0,0\n1,1000000\n"
+        "/NODE\n1,0,0,0.05\n"
+        "/RBODY/1\nbox\n1,,,,1,1\n0.0016666666666667,0.0016666666666667,0.0016666666666667\n0,0,0\n"
+        "/SURF/BOX/1\nbox\n1\n0,0,0.05\n0.05,0.05,0.05\n1,0,0\n0,1,0\n"
+        "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
+        "/GRNOD/NODE/1\nbox\n1\n"
+        "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"
+        "/INTER/TYPE6/1\nbox on floor\n1,2\n\n\n1,0\n\n\n"
+        "/RUN\n0.1,0.01\n/END\n";
+    rc_error e;
+    rc_model *m = tu_compile_text(deck, "box_floor_hcrit.rad", &e);
+    if (!m) fprintf(stderr, "  box_floor_hcrit.rad: %s\n", e.msg);
+    ENSURE(m != NULL);
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    double *work = malloc((2 * (size_t)m->nbody + 1) * sizeof(double));
+    ENSURE(d != NULL && work != NULL && m->ninter == 1 && m->inter_peidx[0] >= 0);
+    if (d && work && m->ninter == 1) {
+        d->inter_mode[0] = RC_MODE_OPEN;
+        ENSURE(isinf(rc_explicit_step(m, d, work)));
+        d->inter_mode[0] = RC_MODE_CLOSED;
+        const double h = rc_explicit_step(m, d, work), kappa = m->inter_perelax[0];
+        const double om = sqrt(m->inter_kscale[0] / m->body_mass[0]), want = fmin(2.0 / kappa, 2.0 / om);
+        printf("    box on a floor, closed: h_crit %.6g s (2 / kappa %.6g s, 2 / omega_max %.6g s)\n", h, 2.0 / kappa,
+               2.0 / om);
+        ENSURE(kappa > 0 && isfinite(kappa));
+        ENSURE(fabs(h - want) <= 1e-12 * want);
+        ENSURE(2.0 / kappa < 2.0 / om); /* the relaxation is the stiffer rate here */
+    }
+    free(work);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 void suite_switch(void);
 void suite_switch(void)
 {
     RUN_TEST(test_switch_cascade);
     RUN_TEST(test_switch_option);
+    RUN_TEST(test_switch_critical_step_counts_pe_relaxation);
 }

@@ -242,6 +242,11 @@ def check_single(scene, run, res, rc):
     for name, v in res.items():
         if name in ("attrs", "event_kind", "event_element", "inter_type", "impact_speed_in", "impact_peak_force"):
             continue
+        if isinstance(v, np.ndarray) and v.dtype.kind == "f" and name.startswith("event_") and \
+                res.get("event_element") is not None and len(res["event_element"]) == len(v):
+            # NaN where the event's element is not an interface (a method
+            # switch's /SOLVER, a sensor): docs/output-format.md
+            v = v[np.array([str(e).startswith("/INTER") for e in res["event_element"]], dtype=bool)]
         if isinstance(v, np.ndarray) and v.dtype.kind == "f" and not np.all(np.isfinite(v)):
             k = int(np.argmax(~np.all(np.isfinite(v.reshape(len(v), -1)), axis=1))) if v.ndim and len(v) else 0
             bad.append(f"{name} (first at record {k}, t = {t[min(k, len(t) - 1)]:.6g} s)")

@@ -69,10 +69,13 @@
  * method when its largest step since the last restart is at most RC_SW_PIN
  * critical steps h_crit [-]; the explicit method hands back after
  * RC_SW_QUIET steps without an event [-] with its last step at most
- * RC_SW_NEAR h_crit [-]. */
+ * RC_SW_NEAR h_crit [-]. A step the explicit method's error test keeps
+ * failing on hands back at once; after RC_SW_MAX_FAILS of them [-] BDF
+ * carries the rest of the run. */
 #define RC_SW_PIN 3.0
 #define RC_SW_QUIET 200
 #define RC_SW_NEAR 4.0
+#define RC_SW_MAX_FAILS 3
 /* the BDF order at most after a restart that follows a fric_turn (cv_restart) */
 #define RC_TURN_MAX_ORDER 2
 /* The explicit method: Cash-Karp 6(4)5 [ARKODE table] */
@@ -136,6 +139,8 @@ typedef struct run_ctx {
     double t_last;   /* where the last solve returned, or the last restart [s] */
     long erk_base;   /* the explicit steps counted at its last restart */
     long erk_seen[4]; /* its counters already added: steps, rhs, error-test fails, root evals */
+    N_Vector ysw;     /* the state where the explicit method's call began (erk_solve) */
+    int sw_fails;     /* the explicit method's failures so far (RC_SW_MAX_FAILS) */
     rc_event_kind sw_kind; /* a switch not yet reported (cv_switched), RC_EV_NONE */
     double sw_t;           /* its time [s] */
     double tstop;    /* the stop time given (applied to both integrators) [s] */
@@ -696,6 +701,7 @@ static int erk_start(run_ctx *c, double t, double h)
     const rc_model *m = c->m;
     int flag;
     if (!c->erk) {
+        if (!(c->ysw = N_VClone(c->y))) return ARK_MEM_FAIL;
         if (!(c->erk = ERKStepCreate(cb_rhs, t, c->y, c->ctx))) return ARK_MEM_FAIL;
         if ((flag = ERKStepSetUserData(c->erk, c)) < 0 || (flag = ERKStepSetErrHandlerFn(c->erk, cb_err, c)) < 0)
             return flag;
@@ -773,7 +779,20 @@ static int erk_solve(run_ctx *c, double tout, double *t, int one_step, int *back
         *back = 1;
         return to_implicit(c, c->t_last);
     }
+    const double t0 = c->t_last;
+    N_VScale(1.0, c->y, c->ysw);
     int flag = ERKStepEvolve(c->erk, tout, c->y, t, one_step ? ARK_ONE_STEP : ARK_NORMAL);
+    if (flag == ARK_ERR_FAILURE) {
+        /* a step its error test kept failing on (a kink it cannot step
+         * over, a rate stiffer than h_crit counts: a box's corners
+         * changing roles at the explicit step): BDF takes over from where
+         * this call began, and after RC_SW_MAX_FAILS such failures carries
+         * the rest of the run */
+        N_VScale(1.0, c->ysw, c->y);
+        if (++c->sw_fails >= RC_SW_MAX_FAILS) c->sw = 0;
+        *back = 1;
+        return to_implicit(c, t0);
+    }
     scatter_state(c);
     double hu = 0.0;
     if (ERKStepGetLastStep(c->erk, &hu) == ARK_SUCCESS && hu > 0) c->h_erk = hu;
@@ -1059,6 +1078,7 @@ static void cv_close(void *self)
     N_VDestroy(c->f1);
     N_VDestroy(c->ytn);
     N_VDestroy(c->ysamp);
+    if (c->ysw) N_VDestroy(c->ysw);
     free(c->old_mode);
     free(c->old_branch);
     free(c->old_track);

@@ -347,8 +347,10 @@ double rc_explicit_step(const rc_model *m, const rc_data *d, double *work)
     double *kb = work, *cb = work + m->nbody;
     for (int b = 0; b < m->nbody; b++) kb[b] = cb[b] = 0.0;
     int any = 0;
+    double kappa = 0.0; /* the fastest relaxation of a law's penetration P_e [1/s] */
     for (int i = 0; i < m->ninter; i++) {
         if (d->inter_mode[i] != RC_MODE_CLOSED) continue;
+        if (m->inter_peidx[i] >= 0 && isfinite(m->inter_perelax[i])) kappa = fmax(kappa, m->inter_perelax[i]);
         const double k = m->inter_kscale[i];
         if (!(k > 0) || !isfinite(k)) continue;
         double c = 0.0;
@@ -370,14 +372,17 @@ double rc_explicit_step(const rc_model *m, const rc_data *d, double *work)
         }
         any |= fa || fb;
     }
-    if (!any) return INFINITY;
+    /* P_e relaxes at kappa (theory 2.7): a decay the explicit method is
+     * stable on for h kappa <= 2 */
+    const double hk = kappa > 0 ? 2.0 / kappa : INFINITY;
+    if (!any) return hk;
     double w2 = 0.0, cr = 0.0;
     for (int b = 0; b < m->nbody; b++) {
         if (m->body_yadr[b] < 0 || !(m->body_mass[b] > 0)) continue;
         w2 = fmax(w2, kb[b] / m->body_mass[b]);
         cr = fmax(cr, cb[b] / m->body_mass[b]);
     }
-    if (!(w2 > 0)) return INFINITY;
+    if (!(w2 > 0)) return hk;
     const double om = sqrt(w2), zeta = cr / (2.0 * om);
-    return 2.0 / om * (sqrt(1.0 + zeta * zeta) - zeta);
+    return fmin(hk, 2.0 / om * (sqrt(1.0 + zeta * zeta) - zeta));
 }

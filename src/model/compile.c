@@ -694,6 +694,7 @@ static rc_status layout(const rc_case *c, rc_model *m, rc_error *err)
         m->inter_hidx[i] = m->inter_iform[i] != 0 ? ns++ : -1;
         m->inter_oidx[i] = m->inter_inacti[i] == 5 ? ns++ : -1;
         m->inter_peidx[i] = rc_pair_multi(m->inter_pair[i]) ? ns++ : -1;
+        m->inter_dhidx[i] = rc_inter_hyst_state(m, i) ? ns++ : -1;
         rc_fric *fr = &m->inter_fr[i];
         /* friction per contact point (a segment surface's nodes): F_t of
          * each point after the own states, none for the interface */
@@ -998,6 +999,7 @@ rc_status rc_model_build_drop(const rc_case *c, const rc_t7_drop *drop, rc_model
     ALLOC(m->inter_hidx, m->ninter);
     ALLOC(m->inter_oidx, m->ninter);
     ALLOC(m->inter_peidx, m->ninter);
+    ALLOC(m->inter_dhidx, m->ninter);
     ALLOC(m->inter_fr, m->ninter);
     ALLOC(m->inter_npt, m->ninter);
     ALLOC(m->inter_pst, m->ninter);
@@ -1077,7 +1079,7 @@ void rc_model_free(rc_model *m)
                       m->inter_ascalex, m->inter_fscaleld, m->inter_ascalef, m->inter_ascalev,
                       m->inter_fct_ld, m->inter_fct_dv, m->inter_fct_df, m->inter_eadr,
                       m->inter_fct_ul, m->inter_iform, m->inter_icor, m->inter_inacti, m->inter_stiff,
-                      m->inter_fscaleul, m->inter_ns, m->inter_hidx, m->inter_oidx, m->inter_peidx, m->inter_fr,
+                      m->inter_fscaleul, m->inter_ns, m->inter_hidx, m->inter_oidx, m->inter_peidx, m->inter_dhidx, m->inter_fr,
                       m->inter_name, m->atol, m->held, m->row_held, m->gwork_slot, m->surf_ext,
                       m->inter_law, m->inter_pw, m->inter_pscale, m->inter_fscale, m->inter_kscale,
                       m->inter_vscale, m->inter_mred, m->inter_mrest, m->inter_pweight, m->inter_pimpact, m->inter_sband, m->inter_perelax, m->inter_hband, m->ewt_rel, m->body_loc, m->inter_loc,

@@ -169,6 +169,7 @@ static double hysteresis_of(const rc_model *m, const rc_data *d, int i, const do
     if (inter_elastic(m, i)) return 0.0;
     if (rc_inter_release_ledger(m, i))
         return d->inter_hacc[2 * i] + (d->inter_mode[i] == RC_MODE_RELEASED ? d->inter_hacc[2 * i + 1] - en : 0.0);
+    if (m->inter_dhidx[i] >= 0) return y[m->inter_eadr[i] + m->inter_dhidx[i]]; /* D_h */
     return y[m->inter_eadr[i]] - en;
 }
 

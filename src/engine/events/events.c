@@ -287,8 +287,27 @@ static void clear_band(rc_data *d, int i)
     d->inter_rband[i] = 0.0;
 }
 
+/* The law's energy E(P_e) interface i holds, where it keeps D_h
+ * (rc_inter_hyst_state; 0 otherwise, and out of the zone) [J]: where an
+ * event sets P_e, D_h takes what E(P_e) loses, as W_load - E(P_e) does */
+static double pe_energy(const rc_model *m, const rc_data *d, int i, const double *y)
+{
+    const int md = d->inter_mode[i];
+    if (m->inter_dhidx[i] < 0 || (md != RC_MODE_CLOSED && md != RC_MODE_RELEASED)) return 0.0;
+    return rc_inter_law_energy(m, i, y[m->inter_eadr[i] + m->inter_peidx[i]]);
+}
+
+static void pe_lost(const rc_model *m, int i, double *y, double lost, int *changed)
+{
+    if (lost != 0.0) {
+        double *dh = y + m->inter_eadr[i] + m->inter_dhidx[i];
+        set_state(dh, *dh + lost, changed);
+    }
+}
+
 static void enter_zone(const rc_model *m, rc_data *d, int i, double *y, int *changed)
 {
+    pe_lost(m, i, y, pe_energy(m, d, i, y), changed); /* P_e starts at 0 */
     clear_band(d, i);
     d->inter_mode[i] = RC_MODE_CLOSED;
     d->inter_branch[i] = RC_BR_LOAD;
@@ -304,6 +323,7 @@ static void enter_zone(const rc_model *m, rc_data *d, int i, double *y, int *cha
 /* Leave the zone (P falls to 0): no force, no history. */
 static void leave_zone(const rc_model *m, rc_data *d, int i, double *y, int *changed)
 {
+    pe_lost(m, i, y, pe_energy(m, d, i, y), changed); /* the law's energy is lost */
     clear_band(d, i);
     d->inter_mode[i] = RC_MODE_OPEN;
     d->inter_branch[i] = RC_BR_LOAD;
@@ -379,7 +399,8 @@ static void classify(const rc_model *m, rc_data *d, int i, double t, double *y, 
     if (!(r.fn > 0)) d->inter_mode[i] = RC_MODE_RELEASED;
     stateless_friction_mode(m, d, i, t, y);
     /* the elastic energy found in the contact at activation enters the
-     * ledger as contact work (so the hysteresis dissipation starts at 0) */
+     * ledger as contact work (so the hysteresis dissipation starts at 0;
+     * D_h starts at 0 as it is) */
     double *w = y + m->inter_eadr[i];
     set_state(w, *w + rc_inter_stored_energy(m, d, i, t, y), changed);
 }

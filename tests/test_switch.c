@@ -258,10 +258,7 @@ static void test_switch_critical_step_counts_pe_relaxation(void)
         "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"
         "/INTER/TYPE6/1\nbox on floor\n1,2\n\n\n1,0\n\n\n"
         "/RUN\n0.1,0.01\n/END\n";
-    rc_error e;
-    rc_model *m = tu_compile_text(deck, "box_floor_hcrit.rad", &e);
-    if (!m) fprintf(stderr, "  box_floor_hcrit.rad: %s\n", e.msg);
-    ENSURE(m != NULL);
+    rc_model *m = TU_COMPILE_OK(deck, "box_floor_hcrit.rad");
     if (!m) return;
     rc_data *d = rc_data_new(m);
     double *work = malloc((2 * (size_t)m->nbody + 1) * sizeof(double));

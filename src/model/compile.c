@@ -678,6 +678,18 @@ static rc_status check_exact_stick(const rc_case *c, rc_model *m, rc_error *err)
 }
 
 /* ---- state layout and tolerances -------------------------------------- */
+/* Does interface i integrate its law's dissipation D_h (own state
+ * inter_dhidx) for its hysteresis channel? With several contact points
+ * (P_e) and a law whose stored energy is the law's energy at P_e (Iform 0,
+ * the power law): D_h' = F_el kappa (P_e - P)+ closed, so that
+ * energy_hysteresis is the integral of a rate >= 0 rather than the
+ * difference of W_load and E(P_e), which their separate integration
+ * errors made fall (docs/theory.md 2.7). */
+static int hyst_state(const rc_model *m, int i)
+{
+    return m->inter_peidx[i] >= 0 && (m->inter_law[i] == RC_LAW_POWER || m->inter_iform[i] == 0);
+}
+
 static rc_status layout(const rc_case *c, rc_model *m, rc_error *err)
 {
     int ny = 0;
@@ -694,7 +706,7 @@ static rc_status layout(const rc_case *c, rc_model *m, rc_error *err)
         m->inter_hidx[i] = m->inter_iform[i] != 0 ? ns++ : -1;
         m->inter_oidx[i] = m->inter_inacti[i] == 5 ? ns++ : -1;
         m->inter_peidx[i] = rc_pair_multi(m->inter_pair[i]) ? ns++ : -1;
-        m->inter_dhidx[i] = rc_inter_hyst_state(m, i) ? ns++ : -1;
+        m->inter_dhidx[i] = hyst_state(m, i) ? ns++ : -1;
         rc_fric *fr = &m->inter_fr[i];
         /* friction per contact point (a segment surface's nodes): F_t of
          * each point after the own states, none for the interface */

@@ -15,7 +15,7 @@
  *     [inter_peidx] P_e, the effective penetration of the law of a pair
  *                   with several contact points (docs/theory.md 2.7)   [m]
  *     [inter_dhidx] D_h, the law's dissipation by the relaxation of P_e
- *                   (rc_inter_hyst_state)                              [J]
+ *                   (several points, Iform 0 or the power law)         [J]
  *     [fr.tidx .. +2] F_t tangential (friction) force on body a, global
  *                     frame, in the contact plane (incremental form)  [N]
  *     [fr.fidx .. +2] filtered friction force (/FRICTION Ifiltr)       [N]
@@ -36,7 +36,6 @@
 #include "ricochet/ricochet.h"
 #include "case/case.h"
 #include "model/friction.h"
-#include "model/power.h"
 #include "model/table.h"
 
 #define RC_NB 13 /* states of a free body */
@@ -329,7 +328,7 @@ struct rc_model {
     int *inter_ns;       /* [ninter] number of own states (2..RC_NS_MAX) */
     int *inter_hidx;     /* [ninter] index of F_h among them, -1 */
     int *inter_oidx;     /* [ninter] index of the Inacti offset, -1 */
-    int *inter_dhidx;    /* [ninter] index of D_h (rc_inter_hyst_state), -1 */
+    int *inter_dhidx;    /* [ninter] index of D_h (compile.c, hyst_state), -1 */
     int *inter_peidx;    /* [ninter] index of P_e, the effective penetration of a pair
                             with several contact points (rc_pair_multi), -1 */
     rc_fric *inter_fr;   /* [ninter] friction (friction.h); kind RC_FK_NONE: none */
@@ -453,19 +452,6 @@ enum { RC_TOL_AUTO_POS = 1, RC_TOL_AUTO_QUAT = 2, RC_TOL_AUTO_VEL = 4, RC_TOL_AU
 static inline int rc_event_records(const rc_model *m)
 {
     return m->ev_state == 1 || (m->ev_state == 0 && m->nbody <= RC_EVREC_MAX_BODIES);
-}
-
-/* Does interface i integrate its law's dissipation D_h (own state
- * inter_dhidx) for its hysteresis channel? With several contact points
- * (P_e) and a law whose stored energy is the law's energy at P_e (Iform 0,
- * the power law): D_h' = F_el kappa (P_e - P)+ closed, so that
- * energy_hysteresis is the integral of a rate >= 0 rather than the
- * difference of W_load and E(P_e), which their separate integration
- * errors made fall (docs/theory.md 2.7). Used by the layout (compile.c),
- * before inter_dhidx is set. */
-static inline int rc_inter_hyst_state(const rc_model *m, int i)
-{
-    return m->inter_peidx[i] >= 0 && (m->inter_law[i] == RC_LAW_POWER || m->inter_iform[i] == 0);
 }
 
 /* Name of state i for messages: "/RBODY/3, velocity z [m/s]" (statename.c). */

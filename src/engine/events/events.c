@@ -288,7 +288,7 @@ static void clear_band(rc_data *d, int i)
 }
 
 /* The law's energy E(P_e) interface i holds, where it keeps D_h
- * (rc_inter_hyst_state; 0 otherwise, and out of the zone) [J]: where an
+ * (inter_dhidx; 0 otherwise, and out of the zone) [J]: where an
  * event sets P_e, D_h takes what E(P_e) loses, as W_load - E(P_e) does */
 static double pe_energy(const rc_model *m, const rc_data *d, int i, const double *y)
 {

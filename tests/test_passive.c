@@ -593,14 +593,27 @@ static void test_iform1_unloads_along_the_law(void)
         rc_model *m = TU_COMPILE_OK(iform1_deck(ks[c]), "iform1.rad");
         if (!m) continue;
         rc_stats st;
-        const rc_status s = rc_run(m, NULL, &st, &e);
+        rc_run_options o;
+        memset(&o, 0, sizeof o);
+        double *y = calloc((size_t)m->ny, sizeof(double));
+        o.y_end = y;
+        const rc_status s = rc_run(m, &o, &st, &e);
         ENSURE(s == RC_OK);
         if (s) printf("    %s\n", e.msg);
         const double expect = sqrt(1e6 / ks[c]), got = st.impacts > 0 ? st.impact[0].restitution : NAN;
-        printf("    Stiff %.3g N/m (load curve 1e6 N/m): restitution %.7f, sqrt(k_L / k_S) = %.7f; physics checks: %s\n",
-               ks[c], got, expect, st.physics_note);
+        /* the law's dissipation D_h (an own state): the impact's kinetic
+         * energy 1/2 m v0^2 (v0 = 1 m/s) less what the Stiff line gives
+         * back, a fraction k_L / k_S */
+        const int dh = m->inter_dhidx[0];
+        const double dexp = 0.5 * m->body_mass[0] * (1.0 - 1e6 / ks[c]);
+        const double dgot = dh >= 0 ? y[m->inter_eadr[0] + dh] : NAN;
+        printf("    Stiff %.3g N/m (load curve 1e6 N/m): restitution %.7f, sqrt(k_L / k_S) = %.7f; D_h %.9g J, "
+               "1/2 m v0^2 (1 - k_L / k_S) = %.9g J; physics checks: %s\n",
+               ks[c], got, expect, dgot, dexp, st.physics_note);
         ENSURE(st.impacts > 0 && fabs(got - expect) < 1e-4);
+        ENSURE(fabs(dgot - dexp) < 1e-6 * dexp);
         ENSURE(st.violations == 0);
+        free(y);
         rc_model_free(m);
     }
     TU_EXPECT_TEXT_ERROR(iform1_deck(3e5), "iform1.rad", "field Stiff", "steeper than the load curve");
@@ -771,6 +784,81 @@ static void test_iform1_stored_energy_on_the_unload_path(void)
            "(P = %.4g m)\n", zero, worst, wp);
     ENSURE(zero == 0);
     ENSURE(worst < 1e-9);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
+/* The law's dissipation rate of Iform 1 on the load curve (the deck of
+ * the test above, a ball approaching the floor at 0.01 m/s): D_h' is the
+ * work rate less the rate of the stored energy, Delta (Stiff - F_L') dP/dt
+ * with Delta the length of the unloading path's first Stiff line, against
+ * the stored energy's rate by central differences along the load curve
+ * (the path integrated by rc_inter_path_energy), at 31 depths over both
+ * segments of the load curve; >= 0; and 0 on the Stiff line, where the
+ * law stores its work. Before, energy_hysteresis was the work less the
+ * stored energy, two values integrated apart, and fell by their error (a
+ * ball on a ramp into a wall: 2.5e-6 J at rtol 1e-10). */
+static void test_iform1_dissipation_rate_on_the_load_curve(void)
+{
+    static const char *deck =
+        "/BEGIN\nIform 1 dissipation rate\n      2022         0\n"
+        "                  kg                   m                   s\n"
+        "                  kg                   m                   s\n"
+        "/FUNCT/1\nload\n                   0                   0\n                1e-6                   1\n"
+        "                1e-5                  20\n"
+        "/FUNCT/2\nunload\n                   0                   0\n                3e-6                   0\n"
+        "                1e-5                  10\n"
+        BALL_ON_FLOOR
+        "/INTER/TYPE6/1\nball on floor\n         1         2\n\n"
+        "                                                 0         0\n"
+        "         1         1                 1.0                 1.0\n"
+        "         2                 1e8                 1.0\n"
+        "                             0         0\n"
+        "/RUN\n                0.01              0.0001\n/END\n";
+    rc_model *m = TU_COMPILE_OK(deck, "iform1r.rad");
+    if (!m) return;
+    ENSURE(m->inter_hidx[0] >= 0 && m->inter_dhidx[0] >= 0);
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double)), *yd = calloc((size_t)m->ny, sizeof(double));
+    if (!d || !y || !yd || m->inter_dhidx[0] < 0) goto out;
+    rc_initial_state(m, y);
+    d->inter_mode[0] = RC_MODE_CLOSED;
+    const double v = 0.01;
+    double worst = 0.0, dmin = INFINITY, elastic = 0.0;
+    for (int n = 0; n <= 30; n++) {
+        const double P = 0.5e-6 + 8.5e-6 * n / 30.0;
+        double fl = P < 1e-6 ? 1e6 * P : 1.0 + 19.0 * (P - 1e-6) / 9e-6;
+        y[m->body_yadr[0] + 2] = 0.05 - P; /* the ball penetrates by P */
+        y[m->body_yadr[0] + 9] = -v;       /* approaching */
+        y[m->inter_eadr[0] + m->inter_hidx[0]] = fl;
+        d->inter_branch[0] = RC_BR_LOAD;
+        ENSURE(rc_assemble_rhs(m, d, 0.0, y, yd) == 0);
+        const double dh = yd[m->inter_eadr[0] + m->inter_dhidx[0]], w = yd[m->inter_eadr[0]];
+        /* dE/dt along the load curve by central differences */
+        const double h = 1e-3 * fmin(P, fabs(P - 1e-6) > 0 ? fabs(P - 1e-6) : P) / v;
+        double e2[2];
+        for (int k = 0; k < 2; k++) {
+            const double q = P + (k ? v : -v) * h;
+            e2[k] = rc_inter_path_energy(m, 0, q, q < 1e-6 ? 1e6 * q : 1.0 + 19.0 * (q - 1e-6) / 9e-6);
+        }
+        const double expect = w - (e2[1] - e2[0]) / (2 * h);
+        worst = fmax(worst, fabs(dh - expect) / (fl * v));
+        dmin = fmin(dmin, dh / (fl * v));
+        /* on the Stiff line, halfway between the curves: no dissipation */
+        const double fu = P > 3e-6 ? 10.0 * (P - 3e-6) / 7e-6 : 0.0;
+        y[m->inter_eadr[0] + m->inter_hidx[0]] = 0.5 * (fl + fu);
+        d->inter_branch[0] = RC_BR_ELASTIC;
+        ENSURE(rc_assemble_rhs(m, d, 0.0, y, yd) == 0);
+        elastic = fmax(elastic, fabs(yd[m->inter_eadr[0] + m->inter_dhidx[0]]));
+    }
+    printf("    31 depths on the load curve: D_h' against the work less dE/dt: largest difference %.3g of F v; "
+           "smallest D_h' %.4g of F v; on the Stiff line |D_h'| <= %.3g W\n", worst, dmin, elastic);
+    ENSURE(worst < 1e-6);
+    ENSURE(dmin >= 0.0);
+    ENSURE(elastic == 0.0);
+out:
+    free(yd);
     free(y);
     rc_data_free(d);
     rc_model_free(m);
@@ -1804,6 +1892,7 @@ void suite_passive(void)
     RUN_TEST(test_tolerances_above_the_coordinates_rounding);
     RUN_TEST(test_iform1_unloads_along_the_law);
     RUN_TEST(test_iform1_stored_energy_on_the_unload_path);
+    RUN_TEST(test_iform1_dissipation_rate_on_the_load_curve);
     RUN_TEST(test_iform2_reversals_stay_on_the_stiff_line);
     RUN_TEST(test_ball_rolls_onto_incline);
     RUN_TEST(test_fric_turn_reload_stays_against_the_sliding);

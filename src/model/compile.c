@@ -681,13 +681,17 @@ static rc_status check_exact_stick(const rc_case *c, rc_model *m, rc_error *err)
 /* Does interface i integrate its law's dissipation D_h (own state
  * inter_dhidx) for its hysteresis channel? With several contact points
  * (P_e) and a law whose stored energy is the law's energy at P_e (Iform 0,
- * the power law): D_h' = F_el kappa (P_e - P)+ closed, so that
- * energy_hysteresis is the integral of a rate >= 0 rather than the
- * difference of W_load and E(P_e), which their separate integration
- * errors made fall (docs/theory.md 2.7). */
+ * the power law): D_h' = F_el kappa (P_e - P)+ closed; with the Iform 1, 2
+ * hysteresis (one or several points, no Inacti 5 offset) that plus, on the
+ * load curve, Delta (Stiff - F_L') dP/dt, Delta the length of the
+ * unloading path's first Stiff line: energy_hysteresis is then the
+ * integral of a rate >= 0 rather than the difference of W_load and the
+ * stored energy, which their separate integration errors made fall
+ * (docs/theory.md 2.7, 4). */
 static int hyst_state(const rc_model *m, int i)
 {
-    return m->inter_peidx[i] >= 0 && (m->inter_law[i] == RC_LAW_POWER || m->inter_iform[i] == 0);
+    if (m->inter_law[i] != RC_LAW_POWER && m->inter_iform[i] != 0) return m->inter_oidx[i] < 0;
+    return m->inter_peidx[i] >= 0;
 }
 
 static rc_status layout(const rc_case *c, rc_model *m, rc_error *err)

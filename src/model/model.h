@@ -14,8 +14,8 @@
  *     [inter_oidx] offset gap reduction of Inacti = 5 (>= 0)           [m]
  *     [inter_peidx] P_e, the effective penetration of the law of a pair
  *                   with several contact points (docs/theory.md 2.7)   [m]
- *     [inter_dhidx] D_h, the law's dissipation by the relaxation of P_e
- *                   (several points, Iform 0 or the power law)         [J]
+ *     [inter_dhidx] D_h, the law's dissipation (P_e's relaxation, Iform 1, 2's load curve)
+ *                   (compile.c, hyst_state)                             [J]
  *     [fr.tidx .. +2] F_t tangential (friction) force on body a, global
  *                     frame, in the contact plane (incremental form)  [N]
  *     [fr.fidx .. +2] filtered friction force (/FRICTION Ifiltr)       [N]

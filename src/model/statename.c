@@ -43,7 +43,7 @@ void rc_state_name(const rc_model *m, int i, char *buf, size_t n)
                         : j == m->inter_hidx[k] ? "hysteresis force F_h [N]"
                         : j == m->inter_oidx[k] ? "Inacti 5 gap offset [m]"
                         : j == m->inter_peidx[k] ? "effective penetration P_e of the law [m]"
-                        : j == m->inter_dhidx[k] ? "dissipation D_h of the law by the relaxation of P_e [J]"
+                        : j == m->inter_dhidx[k] ? "dissipation D_h of the law (the relaxation of P_e; Iform 1, 2: the load curve) [J]"
                         : fr->kind != RC_FK_NONE && fr->form == RC_FF_INCREMENTAL && j >= fr->tidx && j < fr->tidx + 3
                             ? "tangential (friction) force F_t [N]"
                         : fr->kind != RC_FK_NONE && fr->tau > 0 && j >= fr->fidx && j < fr->fidx + 3

@@ -2291,10 +2291,11 @@ static void energy_step(rc_static *s, double t, const double *u, double *y)
         const double p1 = closed ? fmax(r.pl, 0.0) : 0.0, f1 = closed ? r.fload : 0.0;
         const double dw = 0.5 * (s->en_f0[i] + f1) * (p1 - s->en_p0[i]);
         y[m->inter_eadr[i]] += dw;
-        /* D_h: the work less the change of the law's energy at P_e = P */
+        /* D_h: the work less the change of the law's energy (at P_e = P;
+         * Iform 1, 2: at its elastic force too) */
         if (m->inter_dhidx[i] >= 0)
             y[m->inter_eadr[i] + m->inter_dhidx[i]] +=
-                dw - (rc_inter_law_energy(m, i, p1) - rc_inter_law_energy(m, i, s->en_p0[i]));
+                dw - (rc_inter_path_energy(m, i, p1, f1) - rc_inter_path_energy(m, i, s->en_p0[i], s->en_f0[i]));
         const rc_fric *fr = &m->inter_fr[i];
         if ((s->fr_on[i] || s->ex_on[i]) && closed) {
             double pa[3], pb[3];

@@ -173,7 +173,8 @@ enum {
 void rc_energy(const rc_model *m, const rc_data *d, double t, const double *y, double e[RC_NENERGY]);
 /* Normal elastic energy stored in interface i (recoverable by unloading) [J]. */
 double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double t, const double *y);
-/* The hysteresis of interface i at (t, y) [J]: its normal work less its
+/* The hysteresis of interface i at (t, y) [J]: D_h where the interface
+ * integrates it (rc_model.inter_dhidx); else its normal work less its
  * stored energy; exactly 0 for an elastic law (Iform 0 or the power law,
  * one contact point, no Inacti offset) that cannot release at P > 0 (no
  * damper, a load curve that never pulls), whose work differs from its
@@ -185,6 +186,15 @@ double rc_inter_hysteresis(const rc_model *m, const rc_data *d, int i, double t,
 /* The elastic energy of interface i's law (Iform 0 or the power law) at
  * penetration P: its load curve's integral from 0 [J] (0 for P <= 0). */
 double rc_inter_law_energy(const rc_model *m, int i, double P);
+/* The elastic energy interface i's law holds at penetration P [m] and
+ * elastic force F [N] (Iform 1, 2: what unloading along the Stiff line and
+ * the curves gives back; else rc_inter_law_energy's, F unused) [J]. */
+double rc_inter_path_energy(const rc_model *m, int i, double P, double F);
+/* Iform 1, 2: the length in P of the first Stiff line of the unloading
+ * path from (P, F) [m], dE/dF at constant P (0 where the path starts on a
+ * curve, and for P <= 0 or F <= 0); *dP [-] and *dF [m/N] its derivatives
+ * (for the Jacobian). */
+double rc_inter_unload_line(const rc_model *m, int i, double P, double F, double *dP, double *dF);
 /* 1 when interface i's law is elastic (Iform 0 or the power law) with one
  * contact point and no Inacti offset: its hysteresis is the stored energy
  * lost at its releases at P > 0, kept by the events (rc_data.inter_hacc)

@@ -11,127 +11,17 @@
 #include "model/table.h"
 #include "engine/assembly/assembly.h"
 
-/* The curves of interface i's law, scaled: F(x) = fscale f(x / Ascalex). */
-typedef struct {
-    const rc_table *t; /* NULL: none (0) */
-    double fs, ax;
-} scurve;
-
-static double sc_value(const scurve *c, double x)
-{
-    return c->t ? c->fs * rc_table_value(c->t, x / c->ax) : 0.0;
-}
-
-/* The largest breakpoint of curve c strictly inside (lo, hi), or lo. */
-static double sc_break_below(const scurve *c, double lo, double hi)
-{
-    double b = lo;
-    if (!c->t) return b;
-    for (int k = 0; k < c->t->n; k++) {
-        const double x = c->t->x[k] * c->ax;
-        if (x > b && x < hi) b = x;
-    }
-    return b;
-}
-
-/* Energy recovered by unloading interface i (Iform 1, 2) completely from
- * penetration P at elastic force F along its law: the Stiff line, held
- * below the load curve (where the load curve falls faster than the line,
- * the law follows it: branch LOAD, a hyst_load_curve event) and above the
- * unload curve or zero (once met the law follows it: branch UNLOAD) [J].
- * The curves are piecewise linear, so the path is too: exact, interval by
- * interval between their breakpoints and the path's switching points. */
-static double unload_path_energy(const rc_model *m, int i, double P, double F)
-{
-    const double ax = m->inter_ascalex[i], k = m->inter_stiff[i];
-    const scurve L = {&m->table[m->inter_fct_ld[i]], m->inter_fscaleld[i], ax};
-    const scurve U = {m->inter_fct_ul[i] >= 0 ? &m->table[m->inter_fct_ul[i]] : NULL, m->inter_fscaleul[i], ax};
-    enum { LINE, LOAD, UNLOAD } st = LINE;
-    double x = P, E = 0.0;
-    const double fl0 = sc_value(&L, P), fu0 = fmax(sc_value(&U, P), 0.0);
-    F = fmin(fmax(F, fu0), fl0);
-    if (F <= fu0) st = UNLOAD;
-    for (int guard = 0; x > 0 && guard < 100000; guard++) {
-        /* the interval [a, x]: both curves linear on it */
-        double a = fmax(sc_break_below(&L, 0.0, x), sc_break_below(&U, 0.0, x));
-        const double fux = sc_value(&U, x);
-        double fua = sc_value(&U, a);
-        /* the floor max(F_U, 0) is linear on [a, x] after a split where F_U
-         * crosses zero */
-        if (U.t && (fux > 0) != (fua > 0) && fux != fua) {
-            const double z = x - fux * (x - a) / (fux - fua);
-            if (z > a && z < x) {
-                a = z;
-                fua = sc_value(&U, a);
-            }
-        }
-        const double flx = sc_value(&L, x), fla = sc_value(&L, a), sL = (flx - fla) / (x - a);
-        const double sU = (fux - fua) / (x - a);
-        const double flo_x = fmax(fux, 0.0), sF = fux > 0 || fua > 0 ? sU : 0.0;
-        if (st == UNLOAD) { /* along the floor to a */
-            E += 0.5 * (flo_x + fmax(sc_value(&U, a), 0.0)) * (x - a);
-            x = a;
-            continue;
-        }
-        if (st == LOAD) {
-            if (sL >= k) { /* the load curve falls at least as fast as the line: on it to a */
-                E += 0.5 * (flx + fla) * (x - a);
-                F = fla;
-                x = a;
-                continue;
-            }
-            st = LINE;
-            F = flx;
-        }
-        /* on the line F - k (x - s): the first of meeting the load curve
-         * (when it falls slower) and the floor (when it falls faster) */
-        double s = a;
-        int next = LINE;
-        if (k < sL) {
-            const double d = (F - flx) / (k - sL); /* F - flx <= 0 */
-            if (x - d > s) {
-                s = x - d;
-                next = LOAD;
-            }
-        }
-        if (k > sF) {
-            const double d = (F - flo_x) / (k - sF); /* F - floor >= 0 */
-            if (x - d > s) {
-                s = x - d;
-                next = UNLOAD;
-            }
-        }
-        const double Fs = F - k * (x - s);
-        E += 0.5 * (F + Fs) * (x - s);
-        F = Fs;
-        x = s;
-        if (next != LINE) st = next;
-    }
-    return E;
-}
-
 /* Elastic energy stored in interface i: what the bodies would recover by
  * unloading it completely along the law (Iform 0: the load curve; Iform 1, 2:
  * the Stiff line between the load curve and the unload curve or zero, then
- * the unload curve, unload_path_energy). */
+ * the unload curve: law_energy.c). */
 double rc_inter_stored_energy(const rc_model *m, const rc_data *d, int i, double t, const double *y)
 {
     const int mode = d->inter_mode[i];
     if (mode != RC_MODE_CLOSED && mode != RC_MODE_RELEASED) return 0.0;
     rc_inter_report r;
     rc_inter_report_eval_d(m, d, i, t, y, &r);
-    const double P = r.pl, F = r.fload; /* the law's penetration */
-    if (P <= 0) return 0.0;
-    if (m->inter_law[i] == RC_LAW_POWER || m->inter_iform[i] == 0) return rc_inter_law_energy(m, i, P);
-    return F > 0 ? unload_path_energy(m, i, P, F) : 0.0;
-}
-
-double rc_inter_law_energy(const rc_model *m, int i, double P)
-{
-    if (!(P > 0)) return 0.0;
-    if (m->inter_law[i] == RC_LAW_POWER) return rc_power_stored(m, i, P); /* integral of F_k */
-    const double ax = m->inter_ascalex[i];
-    return m->inter_fscaleld[i] * ax * rc_table_integral(&m->table[m->inter_fct_ld[i]], 0.0, P / ax);
+    return rc_inter_path_energy(m, i, r.pl, r.fload); /* at the law's penetration */
 }
 
 int rc_inter_release_ledger(const rc_model *m, int i)

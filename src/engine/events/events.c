@@ -287,14 +287,14 @@ static void clear_band(rc_data *d, int i)
     d->inter_rband[i] = 0.0;
 }
 
-/* The law's energy E(P_e) interface i holds, where it keeps D_h
- * (inter_dhidx; 0 otherwise, and out of the zone) [J]: where an
- * event sets P_e, D_h takes what E(P_e) loses, as W_load - E(P_e) does */
-static double pe_energy(const rc_model *m, const rc_data *d, int i, const double *y)
+/* The law's energy E interface i holds at (t, y), where it keeps D_h
+ * (inter_dhidx; 0 otherwise, and out of the zone) [J]: where an event
+ * sets the law's state (P_e, F_h), D_h takes what E loses, as W_load - E
+ * does */
+static double pe_energy(const rc_model *m, const rc_data *d, int i, double t, const double *y)
 {
-    const int md = d->inter_mode[i];
-    if (m->inter_dhidx[i] < 0 || (md != RC_MODE_CLOSED && md != RC_MODE_RELEASED)) return 0.0;
-    return rc_inter_law_energy(m, i, y[m->inter_eadr[i] + m->inter_peidx[i]]);
+    if (m->inter_dhidx[i] < 0) return 0.0;
+    return rc_inter_stored_energy(m, d, i, t, y);
 }
 
 static void pe_lost(const rc_model *m, int i, double *y, double lost, int *changed)
@@ -305,9 +305,9 @@ static void pe_lost(const rc_model *m, int i, double *y, double lost, int *chang
     }
 }
 
-static void enter_zone(const rc_model *m, rc_data *d, int i, double *y, int *changed)
+static void enter_zone(const rc_model *m, rc_data *d, int i, double t, double *y, int *changed)
 {
-    pe_lost(m, i, y, pe_energy(m, d, i, y), changed); /* P_e starts at 0 */
+    pe_lost(m, i, y, pe_energy(m, d, i, t, y), changed); /* P_e starts at 0 */
     clear_band(d, i);
     d->inter_mode[i] = RC_MODE_CLOSED;
     d->inter_branch[i] = RC_BR_LOAD;
@@ -321,9 +321,9 @@ static void enter_zone(const rc_model *m, rc_data *d, int i, double *y, int *cha
 }
 
 /* Leave the zone (P falls to 0): no force, no history. */
-static void leave_zone(const rc_model *m, rc_data *d, int i, double *y, int *changed)
+static void leave_zone(const rc_model *m, rc_data *d, int i, double t, double *y, int *changed)
 {
-    pe_lost(m, i, y, pe_energy(m, d, i, y), changed); /* the law's energy is lost */
+    pe_lost(m, i, y, pe_energy(m, d, i, t, y), changed); /* the law's energy is lost */
     clear_band(d, i);
     d->inter_mode[i] = RC_MODE_OPEN;
     d->inter_branch[i] = RC_BR_LOAD;
@@ -374,11 +374,11 @@ static void classify(const rc_model *m, rc_data *d, int i, double t, double *y, 
         report(m, d, i, t, y, &r);
     }
     if (r.p < 0 || (r.p == 0 && r.vn <= 0)) {
-        leave_zone(m, d, i, y, changed);
+        leave_zone(m, d, i, t, y, changed);
         return;
     }
     if (r.p == 0) {
-        enter_zone(m, d, i, y, changed);
+        enter_zone(m, d, i, t, y, changed);
         return;
     }
     /* initial penetration P0 > 0: on the load curve, or (Icor 1 with Iform 1)
@@ -580,7 +580,7 @@ static rc_event_kind step_window(const rc_model *m, rc_data *d, int i, double t,
         return RC_EV_INACTI_GAP_RECOVERED;
     }
     if (d->inter_track[i] && r[RC_ROOT_TRK_A] > 0) {
-        enter_zone(m, d, i, y, changed);
+        enter_zone(m, d, i, t, y, changed);
         return RC_EV_CONTACT_CLOSE;
     }
     return RC_EV_NONE;
@@ -695,11 +695,11 @@ static rc_event_kind step_contact(const rc_model *m, rc_data *d, int i, double t
     const int mode = d->inter_mode[i];
     if (mode == RC_MODE_INACTIVE || d->inter_track[i]) return RC_EV_NONE;
     if (mode == RC_MODE_OPEN && r[RC_ROOT_ZONE] > 0) {
-        enter_zone(m, d, i, y, changed);
+        enter_zone(m, d, i, t, y, changed);
         return RC_EV_CONTACT_CLOSE;
     }
     if (mode != RC_MODE_OPEN && r[RC_ROOT_ZONE] < 0) {
-        leave_zone(m, d, i, y, changed);
+        leave_zone(m, d, i, t, y, changed);
         return RC_EV_CONTACT_SEPARATE;
     }
     if (mode == RC_MODE_CLOSED && r[RC_ROOT_FORCE] < 0) {
@@ -713,7 +713,7 @@ static rc_event_kind step_contact(const rc_model *m, rc_data *d, int i, double t
         report(m, d, i, t, y, &q);
         const double band = touch_band(m, d, i, y, &q);
         if (fabs(q.p) <= band && q.vn < -band * trend_omega(m, i)) {
-            leave_zone(m, d, i, y, changed);
+            leave_zone(m, d, i, t, y, changed);
             return RC_EV_CONTACT_SEPARATE;
         }
         clear_band(d, i);
@@ -732,7 +732,7 @@ static rc_event_kind step_contact(const rc_model *m, rc_data *d, int i, double t
         rc_inter_report q;
         report(m, d, i, t, y, &q);
         if (q.vn < 0 && q.p <= inter_apos(m, i)) {
-            leave_zone(m, d, i, y, changed);
+            leave_zone(m, d, i, t, y, changed);
             return RC_EV_CONTACT_SEPARATE;
         }
         /* a force root that reached zero without passing its rounding
@@ -1092,10 +1092,10 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
              * it: open while penetrating beyond the band (a closing the
              * integrator could not see, its root having started on the far
              * side) closes now; the three cases below likewise */
-            enter_zone(m, d, i, y, restart);
+            enter_zone(m, d, i, t, y, restart);
             kind = RC_EV_CONTACT_CLOSE;
         } else if (mode != RC_MODE_OPEN && r.p < -band) {
-            leave_zone(m, d, i, y, restart); /* closed or released while apart */
+            leave_zone(m, d, i, t, y, restart); /* closed or released while apart */
             kind = RC_EV_CONTACT_SEPARATE;
         } else if (mode == RC_MODE_CLOSED && !d->inter_settled[i] && c.fn < -fband) {
             d->inter_mode[i] = RC_MODE_RELEASED; /* closed under a tensile force */
@@ -1109,12 +1109,12 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             /* P at zero (or the Inacti offset tracking it): close unless the
              * bodies separate; a touching contact carries zero force */
             if (fabs(r.p) <= band && trend >= 0 && c.fn >= -fband) {
-                enter_zone(m, d, i, y, restart);
+                enter_zone(m, d, i, t, y, restart);
                 kind = RC_EV_CONTACT_CLOSE;
             }
         } else if (fabs(r.p) <= band && ctrend < 0) {
             /* closed or released at P = 0 while separating */
-            leave_zone(m, d, i, y, restart);
+            leave_zone(m, d, i, t, y, restart);
             kind = RC_EV_CONTACT_SEPARATE;
         } else if (mode == RC_MODE_RELEASED && fabs(c.fn) <= fband && (dc.fn > frate || (fabs(dc.fn) <= frate && ctrend >= 0))) {
             /* released at zero force that would grow again: close */

@@ -265,9 +265,9 @@ static void test_switch_critical_step_counts_pe_relaxation(void)
     ENSURE(d != NULL && work != NULL && m->ninter == 1 && m->inter_peidx[0] >= 0);
     if (d && work && m->ninter == 1) {
         d->inter_mode[0] = RC_MODE_OPEN;
-        ENSURE(isinf(rc_explicit_step(m, d, work)));
+        ENSURE(isinf(rc_explicit_step(m, d, 0.0, NULL, work)));
         d->inter_mode[0] = RC_MODE_CLOSED;
-        const double h = rc_explicit_step(m, d, work), kappa = m->inter_perelax[0];
+        const double h = rc_explicit_step(m, d, 0.0, NULL, work), kappa = m->inter_perelax[0];
         const double om = sqrt(m->inter_kscale[0] / m->body_mass[0]), want = fmin(2.0 / kappa, 2.0 / om);
         printf("    box on a floor, closed: h_crit %.6g s (2 / kappa %.6g s, 2 / omega_max %.6g s)\n", h, 2.0 / kappa,
                2.0 / om);
@@ -280,10 +280,79 @@ static void test_switch_critical_step_counts_pe_relaxation(void)
     rc_model_free(m);
 }
 
+/* The critical explicit step counts the friction's stick spring and slip
+ * law (docs/theory.md 7.9): a ball (1 kg, radius 0.05 m, J = 0.001 kg
+ * m^2 = 2/5 m r^2) sliding at 1 m/s on a floor, TYPE6 Fric 0.5 with a
+ * stick spring K_t = Stiff = 1e7 N/m, closed and slipping. The spring acts
+ * at the contact point, r below the centre: through the ball's rotation
+ * its tangential rate is K_t (1/m + r^2/J) = 3.5 K_t / m (the rolling
+ * sphere's 1 + 5/2), added to the normal contact's k_s / m; the slip law
+ * turns F_t at K_t |v_t| / L_r, L_r = max(limit, F_s). Before, the step
+ * saw the normal contact alone: an explicit method switched in at the
+ * closing of a sliding ball and turned its friction every step (200
+ * fric_turn within 1.4e-10 s, Zeno, the fuzzer's 157000027). */
+static void test_switch_critical_step_counts_friction(void)
+{
+    static const char *deck =
+        "/BEGIN\nball sliding on a floor\n      2022         0\n"
+        "                  kg                   m                   s\n"
+        "                  kg                   m                   s\n"
+        "/FUNCT/1\nlinear\n0,0\n1,1000000\n"
+        "/NODE\n1,0,0,0.05\n"
+        "/RBODY/1\nball\n1,,,,1,1\n0.001,0.001,0.001\n0,0,0\n"
+        "/SURF/ELLIPS/1\nball\n0,2,1\n0,0,0.05\n0.05,0.05,0.05\n"
+        "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
+        "/GRNOD/NODE/1\nball\n1\n"
+        "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"
+        "/INTER/TYPE6/1\nball on floor\n1,2\n0,0.5\n\n1,0\n0,0,10000000\n\n"
+        "/RUN\n0.1,0.01\n/END\n";
+    rc_model *m = TU_COMPILE_OK(deck, "ball_slide_hcrit.rad");
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    double *work = malloc((2 * (size_t)m->nbody + 1) * sizeof(double));
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    ENSURE(d && work && y && m->ninter == 1 && m->inter_fr[0].kt == 1e7);
+    if (d && work && y && m->ninter == 1) {
+        rc_initial_state(m, y);
+        double *yb = y + m->body_yadr[0];
+        yb[2] = 0.05 - 9.81e-6; /* pressed by its weight: k = 1e6 N/m */
+        yb[7] = 1.0;            /* sliding along x */
+        d->inter_mode[0] = RC_MODE_CLOSED;
+        d->inter_slip[0] = 1;
+        rc_inter_report r;
+        rc_inter_report_eval_d(m, d, 0, 0.0, y, &r);
+        const double h0 = rc_explicit_step(m, d, 0.0, NULL, work), h = rc_explicit_step(m, d, 0.0, y, work);
+        /* by hand: the row of the ball, normal k_s plus 3.5 K_t; the stick
+         * damper 2 sqrt(K_t m_red) likewise through 3.5; the slip rate */
+        const rc_fric *fr = &m->inter_fr[0];
+        const double w2 = (m->inter_kscale[0] + 3.5 * fr->kt) / 1.0, om = sqrt(w2);
+        const double zeta = 3.5 * fr->ct / (2.0 * om);
+        const double hosc = 2.0 / om * (sqrt(1.0 + zeta * zeta) - zeta);
+        const double rate = fr->kt * 1.0 / fmax(r.flim, m->inter_fscale[0]);
+        const double want = fmin(hosc, 2.0 / rate);
+        printf("    ball sliding at %.3g m/s: h_crit %.6g s (normal contact alone %.6g s; stick spring through the "
+               "rotation %.6g s, slip law 2 / (K_t |v_t| / L_r) %.6g s)\n", r.vslip, h, h0, hosc, 2.0 / rate);
+        ENSURE(fabs(r.vslip - 1.0) < 1e-9);
+        ENSURE(fabs(h - want) <= 1e-9 * want);
+        ENSURE(h < h0);
+        /* sticking at rest: the spring through the rotation alone */
+        yb[7] = 0.0;
+        d->inter_slip[0] = 0;
+        const double hs = rc_explicit_step(m, d, 0.0, y, work);
+        printf("    ball sticking: h_crit %.6g s (by hand %.6g s)\n", hs, hosc);
+        ENSURE(fabs(hs - hosc) <= 1e-9 * hosc);
+    }
+    free(y);
+    free(work);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 void suite_switch(void);
 void suite_switch(void)
 {
     RUN_TEST(test_switch_cascade);
     RUN_TEST(test_switch_option);
     RUN_TEST(test_switch_critical_step_counts_pe_relaxation);
+    RUN_TEST(test_switch_critical_step_counts_friction);
 }

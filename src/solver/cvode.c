@@ -766,7 +766,7 @@ static int explicit_resting(run_ctx *c)
 {
     long nst = 0;
     if (ERKStepGetNumSteps(c->erk, &nst) < 0 || nst - c->erk_base < RC_SW_QUIET) return 0;
-    const double hc = rc_explicit_step(c->m, c->d, c->hwork);
+    const double hc = rc_explicit_step(c->m, c->d, c->t_last, c->yfull, c->hwork);
     return isfinite(hc) && c->h_erk > 0 && c->h_erk <= RC_SW_NEAR * hc;
 }
 
@@ -911,8 +911,14 @@ static int cv_restart(void *self, double t, int at_breakpoint)
     gather_state(c);
     c->t_last = t;
     if (c->expl) {
-        /* the explicit method goes on from the event, at its last step */
+        /* the explicit method goes on from the event, at its last step or
+         * half the critical step of the modes the event set, when less (a
+         * contact that closed, a friction that began to slip: the step
+         * the explicit method had reached for the old modes is unstable
+         * on the new ones) */
         normalise_quats(c);
+        const double hc = rc_explicit_step(c->m, c->d, t, c->yfull, c->hwork);
+        if (isfinite(hc) && 0.5 * hc < c->h_erk) c->h_erk = 0.5 * hc;
         return erk_start(c, t, c->h_erk);
     }
     if (c->sw) {
@@ -920,7 +926,7 @@ static int cv_restart(void *self, double t, int at_breakpoint)
          * goes on from here */
         double hu = 0.0;
         if (CVodeGetLastStep(c->cv, &hu) != CV_SUCCESS) hu = 0.0;
-        const double hb = fmax(hu, c->hmax_bdf), hc = rc_explicit_step(c->m, c->d, c->hwork);
+        const double hb = fmax(hu, c->hmax_bdf), hc = rc_explicit_step(c->m, c->d, t, c->yfull, c->hwork);
         c->hmax_bdf = 0.0;
         if (isfinite(hc) && hb > 0 && hb <= RC_SW_PIN * hc) {
             normalise_quats(c);

@@ -337,17 +337,69 @@ void rc_report_plausibility(const rc_model *m, FILE *f)
     free(size);
 }
 
+/* The largest eigenvalue of body b's inverse inertia, bounded by the
+ * largest absolute row sum (Gershgorin) [1/(kg m^2)]. */
+static double jinv_bound(const rc_model *m, int b)
+{
+    const double *Ji = m->body_Jinv + 9 * b;
+    double g = 0.0;
+    for (int k = 0; k < 3; k++) g = fmax(g, fabs(Ji[3 * k]) + fabs(Ji[3 * k + 1]) + fabs(Ji[3 * k + 2]));
+    return g;
+}
+
+/* The friction of closed interface i at (t, y), where it is a stick spring
+ * (the incremental form, K_t): its stiffness K_t and the stick damper's
+ * rate act along the tangent at the contact point, through the bodies'
+ * rotations too (1 / m + rho^2 / J for a body whose centre is rho from the
+ * point), into kb, cb (weight w, as the normal contact's); the slip law
+ * turns and loads F_t at K_t |v_t| / L_r (L_r at least the limit and the
+ * force scale F_s, docs/theory.md 3.5), a decay rate returned [1/s]. */
+static double friction_rates(const rc_model *m, const rc_data *d, int i, double t, const double *y, double w,
+                             double *kb, double *cb)
+{
+    const rc_fric *fr = &m->inter_fr[i];
+    if (fr->kind == RC_FK_NONE || fr->form != RC_FF_INCREMENTAL || fr->exact || !(fr->kt > 0) || !isfinite(fr->kt))
+        return 0.0;
+    rc_inter_report r;
+    rc_inter_report_eval_d(m, d, i, t, y, &r);
+    const int bs[2] = {m->inter_ba[i], m->inter_bb[i]}, per_point = m->inter_npt[i] > 0;
+    /* the sliding speed: the report's, and with friction per contact
+     * point (the report's a mean weighted by the shares) the points' spread
+     * about it, at most |omega| times each body's size */
+    double vs = r.vslip;
+    for (int k = 0; k < 2; k++) {
+        const int b = bs[k];
+        if (b < 0 || m->body_yadr[b] < 0) continue;
+        const double *x = y + m->body_yadr[b], *om = x + 10;
+        const double size = per_point ? rc_body_size(m, b) : 0.0;
+        const double rho2 = per_point ? size * size
+                                      : (r.point[0] - x[0]) * (r.point[0] - x[0]) +
+                                            (r.point[1] - x[1]) * (r.point[1] - x[1]) +
+                                            (r.point[2] - x[2]) * (r.point[2] - x[2]);
+        const double rot = 1.0 + m->body_mass[b] * rho2 * jinv_bound(m, b);
+        kb[b] += w * fr->kt * rot;
+        if (isfinite(fr->ct) && fr->ct > 0) cb[b] += w * fr->ct * rot;
+        vs += sqrt(om[0] * om[0] + om[1] * om[1] + om[2] * om[2]) * size;
+    }
+    const double fs = m->inter_fscale[i];
+    const double L = fmax(r.flim, isfinite(fs) ? RC_SLIP_LFLOOR * fs : 0.0);
+    return L > 0 ? fr->kt * vs / L : 0.0;
+}
+
 /* The critical step of an explicit method on the closed contacts
  * (reports.h; docs/theory.md 7.9): omega_max^2 and the damping rate
  * bounded by Gershgorin's rows of M^-1 K and M^-1 C over the free bodies'
  * translations, each closed contact with its stiffness scale k_s and its
- * linear damping, h_crit = 2 / omega_max (sqrt(1 + zeta^2) - zeta). */
-double rc_explicit_step(const rc_model *m, const rc_data *d, double *work)
+ * linear damping, its friction's stick spring with the rotations it
+ * turns (friction_rates), h_crit = 2 / omega_max (sqrt(1 + zeta^2) -
+ * zeta), and at most 2 / kappa for the fastest decay kappa of a law's
+ * state (P_e's relaxation, the slip law's turning). */
+double rc_explicit_step(const rc_model *m, const rc_data *d, double t, const double *y, double *work)
 {
     double *kb = work, *cb = work + m->nbody;
     for (int b = 0; b < m->nbody; b++) kb[b] = cb[b] = 0.0;
     int any = 0;
-    double kappa = 0.0; /* the fastest relaxation of a law's penetration P_e [1/s] */
+    double kappa = 0.0; /* the fastest decay of a law's state (P_e, the slip law) [1/s] */
     for (int i = 0; i < m->ninter; i++) {
         if (d->inter_mode[i] != RC_MODE_CLOSED) continue;
         if (m->inter_peidx[i] >= 0 && isfinite(m->inter_perelax[i])) kappa = fmax(kappa, m->inter_perelax[i]);
@@ -371,9 +423,10 @@ double rc_explicit_step(const rc_model *m, const rc_data *d, double *work)
             cb[bb] += w * c;
         }
         any |= fa || fb;
+        if (y) kappa = fmax(kappa, friction_rates(m, d, i, t, y, w, kb, cb));
     }
-    /* P_e relaxes at kappa (theory 2.7): a decay the explicit method is
-     * stable on for h kappa <= 2 */
+    /* P_e relaxes at kappa (theory 2.7), the slip law turns F_t at its
+     * rate: decays the explicit method is stable on for h kappa <= 2 */
     const double hk = kappa > 0 ? 2.0 / kappa : INFINITY;
     if (!any) return hk;
     double w2 = 0.0, cr = 0.0;

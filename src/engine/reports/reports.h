@@ -22,13 +22,16 @@ void rc_report_estimate(const rc_model *m, FILE *f);
  * or in an impact exceeds its body's size (engine/reports/estimate.c). */
 void rc_report_plausibility(const rc_model *m, FILE *f);
 /* The critical step [s] of an explicit method on the contacts closed in
- * d's modes (docs/theory.md 7.9, "Method switching"): 2 / omega_max
- * (sqrt(1 + zeta^2) - zeta), omega_max^2 and the damping rate 2 zeta
- * omega_max bounded by Gershgorin's rows of M^-1 K and M^-1 C over the
- * free bodies' translations, each closed contact with its stiffness scale
- * and its linear damping; INFINITY when no contact is closed. work:
- * scratch [2 nbody] (engine/reports/estimate.c). */
-double rc_explicit_step(const rc_model *m, const rc_data *d, double *work);
+ * d's modes at (t, y) (docs/theory.md 7.9, "Method switching"): 2 /
+ * omega_max (sqrt(1 + zeta^2) - zeta), omega_max^2 and the damping rate 2
+ * zeta omega_max bounded by Gershgorin's rows of M^-1 K and M^-1 C over
+ * the free bodies' translations, each closed contact with its stiffness
+ * scale and its linear damping, and its friction's stick spring (with the
+ * rotations it turns); at most 2 / kappa for the fastest decay of a law's
+ * state (P_e's relaxation, the slip law's turning, K_t |v_t| / L_r);
+ * INFINITY when no contact is closed. y NULL: the friction is left out.
+ * work: scratch [2 nbody] (engine/reports/estimate.c). */
+double rc_explicit_step(const rc_model *m, const rc_data *d, double t, const double *y, double *work);
 
 /* ---- output ------------------------------------------------------------ */
 /* Values per coupling at (t, y) for one output record, into buf [9 n]:

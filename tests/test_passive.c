@@ -729,6 +729,24 @@ static void test_fric_turn_reload_stays_against_the_sliding(void)
     "                   0                   0                   1\n" \
     "/GRNOD/NODE/1\nball\n         1\n"
 
+/* The ball of BALL_ON_FLOOR on TYPE6 Iform 1: a load curve of two
+ * segments (1 N at 1 um, 20 N at 10 um), an unload curve at zero up to
+ * 3 um, then 1.43e6 N/m, Stiff 1e8 N/m. */
+#define IFORM1_BALL_DECK                                                                                          \
+    "/BEGIN\nIform 1 ball on a floor\n      2022         0\n"                                                     \
+    "                  kg                   m                   s\n"                                              \
+    "                  kg                   m                   s\n"                                              \
+    "/FUNCT/1\nload\n                   0                   0\n                1e-6                   1\n"         \
+    "                1e-5                  20\n"                                                                   \
+    "/FUNCT/2\nunload\n                   0                   0\n                3e-6                   0\n"       \
+    "                1e-5                  10\n" BALL_ON_FLOOR                                                     \
+    "/INTER/TYPE6/1\nball on floor\n         1         2\n\n"                                                   \
+    "                                                 0         0\n"                                              \
+    "         1         1                 1.0                 1.0\n"                                              \
+    "         2                 1e8                 1.0\n"                                                        \
+    "                             0         0\n"                                                                  \
+    "/RUN\n                0.01              0.0001\n/END\n"
+
 /* The stored energy of Iform 1 where the unload curve leaves zero at a
  * breakpoint (F_U = 0 up to 3 um, then 1.43e6 N/m): the path down the
  * Stiff line meets the unload curve and follows it to its zero. Computing
@@ -738,22 +756,7 @@ static void test_fric_turn_reload_stays_against_the_sliding(void)
  * integrated by hand at 2001 states of the elastic branch. */
 static void test_iform1_stored_energy_on_the_unload_path(void)
 {
-    static const char *deck =
-        "/BEGIN\nIform 1 stored energy\n      2022         0\n"
-        "                  kg                   m                   s\n"
-        "                  kg                   m                   s\n"
-        "/FUNCT/1\nload\n                   0                   0\n                1e-6                   1\n"
-        "                1e-5                  20\n"
-        "/FUNCT/2\nunload\n                   0                   0\n                3e-6                   0\n"
-        "                1e-5                  10\n"
-        BALL_ON_FLOOR
-        "/INTER/TYPE6/1\nball on floor\n         1         2\n\n"
-        "                                                 0         0\n"
-        "         1         1                 1.0                 1.0\n"
-        "         2                 1e8                 1.0\n"
-        "                             0         0\n"
-        "/RUN\n                0.01              0.0001\n/END\n";
-    rc_model *m = TU_COMPILE_OK(deck, "iform1e.rad");
+    rc_model *m = TU_COMPILE_OK(IFORM1_BALL_DECK, "iform1e.rad");
     if (!m) return;
     ENSURE(m->inter_hidx[0] >= 0);
     rc_data *d = rc_data_new(m);
@@ -801,22 +804,7 @@ static void test_iform1_stored_energy_on_the_unload_path(void)
  * ball on a ramp into a wall: 2.5e-6 J at rtol 1e-10). */
 static void test_iform1_dissipation_rate_on_the_load_curve(void)
 {
-    static const char *deck =
-        "/BEGIN\nIform 1 dissipation rate\n      2022         0\n"
-        "                  kg                   m                   s\n"
-        "                  kg                   m                   s\n"
-        "/FUNCT/1\nload\n                   0                   0\n                1e-6                   1\n"
-        "                1e-5                  20\n"
-        "/FUNCT/2\nunload\n                   0                   0\n                3e-6                   0\n"
-        "                1e-5                  10\n"
-        BALL_ON_FLOOR
-        "/INTER/TYPE6/1\nball on floor\n         1         2\n\n"
-        "                                                 0         0\n"
-        "         1         1                 1.0                 1.0\n"
-        "         2                 1e8                 1.0\n"
-        "                             0         0\n"
-        "/RUN\n                0.01              0.0001\n/END\n";
-    rc_model *m = TU_COMPILE_OK(deck, "iform1r.rad");
+    rc_model *m = TU_COMPILE_OK(IFORM1_BALL_DECK, "iform1r.rad");
     if (!m) return;
     ENSURE(m->inter_hidx[0] >= 0 && m->inter_dhidx[0] >= 0);
     rc_data *d = rc_data_new(m);

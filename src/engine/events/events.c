@@ -291,13 +291,13 @@ static void clear_band(rc_data *d, int i)
  * (inter_dhidx; 0 otherwise, and out of the zone) [J]: where an event
  * sets the law's state (P_e, F_h), D_h takes what E loses, as W_load - E
  * does */
-static double pe_energy(const rc_model *m, const rc_data *d, int i, double t, const double *y)
+static double dh_energy(const rc_model *m, const rc_data *d, int i, double t, const double *y)
 {
     if (m->inter_dhidx[i] < 0) return 0.0;
     return rc_inter_stored_energy(m, d, i, t, y);
 }
 
-static void pe_lost(const rc_model *m, int i, double *y, double lost, int *changed)
+static void dh_lost(const rc_model *m, int i, double *y, double lost, int *changed)
 {
     if (lost != 0.0) {
         double *dh = y + m->inter_eadr[i] + m->inter_dhidx[i];
@@ -307,7 +307,7 @@ static void pe_lost(const rc_model *m, int i, double *y, double lost, int *chang
 
 static void enter_zone(const rc_model *m, rc_data *d, int i, double t, double *y, int *changed)
 {
-    pe_lost(m, i, y, pe_energy(m, d, i, t, y), changed); /* P_e starts at 0 */
+    dh_lost(m, i, y, dh_energy(m, d, i, t, y), changed); /* P_e starts at 0 */
     clear_band(d, i);
     d->inter_mode[i] = RC_MODE_CLOSED;
     d->inter_branch[i] = RC_BR_LOAD;
@@ -323,7 +323,7 @@ static void enter_zone(const rc_model *m, rc_data *d, int i, double t, double *y
 /* Leave the zone (P falls to 0): no force, no history. */
 static void leave_zone(const rc_model *m, rc_data *d, int i, double t, double *y, int *changed)
 {
-    pe_lost(m, i, y, pe_energy(m, d, i, t, y), changed); /* the law's energy is lost */
+    dh_lost(m, i, y, dh_energy(m, d, i, t, y), changed); /* the law's energy is lost */
     clear_band(d, i);
     d->inter_mode[i] = RC_MODE_OPEN;
     d->inter_branch[i] = RC_BR_LOAD;

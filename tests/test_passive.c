@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "engine/events/events.h"
 #include "harness.h"
@@ -508,7 +509,12 @@ static const char *stack_deck(double X, double Z, int far_node)
     return buf;
 }
 
-static long stack_steps(double X, double Z, int far_node, double *patol, double *origin)
+/* The run's steps; *patol the upper ball's position tolerance [m],
+ * *origin the model's origin x [m], *floor the results file's
+ * atol_position_floor [m] (-1: unreadable) and note the run's
+ * tolerance_note. */
+static long stack_steps(double X, double Z, int far_node, double *patol, double *origin, double *floor,
+                        char *note, size_t nnote)
 {
     rc_error e;
     rc_model *m = TU_COMPILE_OK(stack_deck(X, Z, far_node), "stack.rad");
@@ -516,19 +522,32 @@ static long stack_steps(double X, double Z, int far_node, double *patol, double 
     ENSURE(rc_model_set_rtol(m, 1e-8, &e) == RC_OK);
     *patol = m->atol[m->body_yadr[1]];
     *origin = m->origin[0];
+    char path[256];
+    snprintf(path, sizeof path, "/tmp/rc_test_passive_%ld_stack.nc", (long)getpid());
+    rc_run_options opt = {.output_path = path};
     rc_stats st;
-    const rc_status s = rc_run(m, NULL, &st, &e);
+    const rc_status s = rc_run(m, &opt, &st, &e);
     ENSURE(s == RC_OK);
     if (s) printf("    %s\n", e.msg);
+    snprintf(note, nnote, "%s", st.tolerance_note);
+    int nc;
+    *floor = -1;
+    if (nc_open(path, NC_NOWRITE, &nc) == NC_NOERR) {
+        if (nc_get_att_double(nc, NC_GLOBAL, "atol_position_floor", floor) != NC_NOERR) *floor = -1;
+        nc_close(nc);
+    }
+    unlink(path);
     rc_model_free(m);
     return st.steps;
 }
 
 static void test_tolerances_above_the_coordinates_rounding(void)
 {
-    double a0, a1, a2, o0, o1, o2;
-    const long n0 = stack_steps(0, 0, 0, &a0, &o0), n1 = stack_steps(800, 600, 0, &a1, &o1);
-    const long n2 = stack_steps(800, 600, 1, &a2, &o2);
+    double a0, a1, a2, o0, o1, o2, f0, f1, f2;
+    char note0[480], note1[480], note2[480];
+    const long n0 = stack_steps(0, 0, 0, &a0, &o0, &f0, note0, sizeof note0);
+    const long n1 = stack_steps(800, 600, 0, &a1, &o1, &f1, note1, sizeof note1);
+    const long n2 = stack_steps(800, 600, 1, &a2, &o2, &f2, note2, sizeof note2);
     printf("    resting column: %ld steps at the origin (position atol %.3g m); 1 km away: %ld steps (%.3g m, the "
            "model's origin moved to x = %g m); 1 km away with a node at the deck's origin (no move: %g m): %ld "
            "steps (%.3g m)\n", n0, a0, n1, a1, o1, o2, n2, a2);
@@ -547,6 +566,11 @@ static void test_tolerances_above_the_coordinates_rounding(void)
     ENSURE(o2 == 0 && a2 >= 64 * 2.220446049250313e-16 * 800 * 0.999);
     ENSURE(n2 > 0 && n2 <= 3 * n0 + 10);
     ENSURE(a0 < 1e-13); /* the floor changes nothing at the origin */
+    /* the run says where the floor applies (the summary, the statistics,
+     * the results file) and stays silent where it does not */
+    printf("    floored: atol_position_floor %.3g m; note: %s\n", f2, note2);
+    ENSURE(f0 == 0 && note0[0] == '\0' && f1 == 0 && note1[0] == '\0');
+    ENSURE(f2 == a2 && strstr(note2, "raised to") != NULL && strstr(note2, "cannot be as accurate as rtol asks"));
 }
 
 /* A ball thrown at 1 m/s on a floor (no gravity) whose TYPE6 Iform 1 load

@@ -339,6 +339,11 @@ typedef struct rc_stats {
     char vibration_note[480]; /* non-empty: a long run whose steps went
                              mostly into following undamped contact
                              vibrations (docs/theory.md 7.10)          */
+    char tolerance_note[480]; /* non-empty: the derived position tolerance
+                             of some bodies was raised to what their
+                             coordinates resolve, so that the run cannot
+                             be as accurate as rtol asks (docs/theory.md
+                             7.1; printed by rc_stats_print)           */
 } rc_stats;
 
 /* The callback of every event (rc_run_options.on_event): called once per

@@ -58,7 +58,7 @@ class RunStats(dict):
     steps_explicit), t_end [s] (simulated time reached), wall_time
     [s], energy_residual [J], t_settle [s] (NaN: none), preloaded (bool),
     preload_wall_time [s], the notes (sampling_note, physics_note,
-    contacts_note, vibration_note), ``impact``: the first 5 impacts as dicts (inter_id,
+    contacts_note, vibration_note, tolerance_note), ``impact``: the first 5 impacts as dicts (inter_id,
     t_close [s], t_open [s], duration [s], pen_max [m], t_pen_max [s],
     fn_max [N], t_fn_max [s], v_in [m/s], v_out [m/s], restitution [-],
     energy_lost [J]); ``contacts``, the number of persistent contacts, and

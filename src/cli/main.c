@@ -516,6 +516,7 @@ int main(int argc, char **argv)
         /* a run spent following undamped contact vibrations: said even
          * with -q (rc_stats_print says it otherwise) */
         if (quiet && st == RC_OK && s.vibration_note[0]) fprintf(stderr, "ricochet: note: %s\n", s.vibration_note);
+        if (quiet && st == RC_OK && s.tolerance_note[0]) fprintf(stderr, "ricochet: note: %s\n", s.tolerance_note);
         /* violations the run went on after (on-violation warn): never in silence */
         if (st == RC_OK && s.violations > 0)
             fprintf(stderr, "ricochet: warning: physics checks: %s (all of them in the violation table of %s)\n",

@@ -696,6 +696,9 @@ static rc_status define_globals(rc_output *o, const rc_output_meta *meta, rc_err
     if (rc == RC_OK) rc = put_double(o, "dt_out", meta->dt_out, err);
     if (rc == RC_OK && meta->sampling_note && *meta->sampling_note)
         rc = put_text(o, NC_GLOBAL, "sampling_note", meta->sampling_note, err);
+    if (rc == RC_OK) rc = put_double(o, "atol_position_floor", meta->atol_pos_floor, err);
+    if (rc == RC_OK && meta->tolerance_note && *meta->tolerance_note)
+        rc = put_text(o, NC_GLOBAL, "tolerance_note", meta->tolerance_note, err);
     if (rc == RC_OK && meta->preload) rc = put_text(o, NC_GLOBAL, "preload", meta->preload, err);
     if (rc == RC_OK && meta->preload) rc = put_int64(o, "preload_newton_iters", meta->preload_iters, err);
     if (rc == RC_OK) rc = define_provenance(o, meta, err);

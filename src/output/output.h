@@ -58,6 +58,11 @@ typedef struct rc_output_meta {
     const char *tol_derived;  /* which tolerances were derived from the
                                  model's scales ("" none)                  */
     const char *sampling_note; /* non-NULL: global attribute sampling_note */
+    const char *tolerance_note; /* non-NULL, non-empty: global attribute
+                                   tolerance_note (the position tolerance
+                                   raised to the coordinates' rounding)   */
+    double atol_pos_floor;     /* that raised tolerance, global attribute
+                                  atol_position_floor (0: none) [m]      */
     const char *preload;       /* non-NULL: the run started from a static preload;
                                   global attribute preload (what was solved) */
     long preload_iters;        /* with preload: its Newton iterations (global

@@ -37,6 +37,7 @@
 #include "solver/impacts.h"
 #include "solver/integrator.h"
 #include "solver/solver.h"
+#include "engine/analyses/analyses.h"
 #include "engine/assembly/assembly.h"
 #include "engine/constraints/joints.h"
 #include "engine/reports/reports.h"
@@ -443,6 +444,10 @@ rc_status rc_bk_open_output(const rc_model *m, const rc_run_options *opt, const 
                      tol_name[k]);
     meta.tol_derived = derived[0] ? derived : "none (all given in /SOLVER)";
     meta.sampling_note = note;
+    char tnote[sizeof ((rc_stats *)0)->tolerance_note];
+    rc_model_tol_floor_note(m, tnote, sizeof tnote);
+    meta.tolerance_note = tnote;
+    meta.atol_pos_floor = m->tol_floored > 0 ? m->tol_floor_pos : 0.0;
     char pl[400];
     if (pre) {
         snprintf(pl, sizeof pl,
@@ -1144,6 +1149,7 @@ done:
     for (int k = 0; k < im.npc && k < RC_STATS_CONTACTS; k++) s.contact[k] = im.pc[k];
     snprintf(s.sampling_note, sizeof s.sampling_note, "%s", note);
     rc_impacts_vibration_note(&im, m, s.steps, s.vibration_note, sizeof s.vibration_note);
+    rc_model_tol_floor_note(m, s.tolerance_note, sizeof s.tolerance_note);
     if (out && st == RC_OK) st = rc_output_impacts(out, im.n, im.row, im.npc, im.pc, err);
     else if (out) {
         rc_error e3;

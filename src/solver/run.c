@@ -200,6 +200,7 @@ void rc_stats_print(const rc_stats *s, FILE *f)
     }
     if (s->sampling_note[0]) fprintf(f, "warning: %s\n", s->sampling_note);
     if (s->vibration_note[0]) fprintf(f, "note: %s\n", s->vibration_note);
+    if (s->tolerance_note[0]) fprintf(f, "note: %s\n", s->tolerance_note);
     /* the physics checks (docs/theory.md) and what the contacts did */
     if (s->physics_note[0]) fprintf(f, "physics checks: %s\n", s->physics_note);
     if (s->contacts_note[0]) fprintf(f, "contacts: %s\n", s->contacts_note);

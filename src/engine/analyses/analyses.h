@@ -36,6 +36,10 @@ int rc_jac_active_key(const rc_model *m, const rc_data *d, unsigned char *key);
 rc_status rc_model_scales(rc_model *m, rc_error *err);
 /* Absolute tolerances and weight kinds of every state. */
 rc_status rc_model_tolerances(rc_model *m, rc_error *err);
+/* The note of a model whose derived position tolerance rc_model_tolerances
+ * raised to the coordinates' rounding for some bodies (the run cannot be
+ * as accurate as rtol asks, docs/theory.md 7.1); "" when none. */
+void rc_model_tol_floor_note(const rc_model *m, char *buf, size_t n);
 /* The mass a unit normal impulse pair at contact point r->point drives at
  * the state y when the free bodies also turn (joints left out) [kg];
  * INFINITY when nothing moves (scales.c). */

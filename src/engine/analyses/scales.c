@@ -30,6 +30,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -896,4 +897,18 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         m->ewt_rel = NULL;
     }
     return RC_OK;
+}
+
+void rc_model_tol_floor_note(const rc_model *m, char *buf, size_t n)
+{
+    if (n == 0) return;
+    buf[0] = '\0';
+    if (m->tol_floored <= 0) return;
+    snprintf(buf, n,
+             "rtol %.3g times the penetration scale is below what the coordinates resolve for %d bod%s: their "
+             "position tolerance is raised to %.3g m (%d roundings of the contacts' coordinates about the model's "
+             "origin; docs/theory.md 7.1): the results cannot be as accurate as rtol asks (a smaller rtol no longer "
+             "tightens that tolerance); a scene spread less widely about its centre, or smaller bodies, resolve "
+             "more",
+             m->rtol, m->tol_floored, m->tol_floored == 1 ? "y" : "ies", m->tol_floor_pos, (int)RC_TOL_ULPS);
 }

@@ -273,12 +273,9 @@ void rc_model_print_summary(const rc_model *m, FILE *f)
                     ? "derived from the contact scales"
                     : "blank fields derived from the contact scales",
                 rg[0], m->ewt_rel ? " (absolute)" : "", rg[1], rg[2], rg[3], m->atol_energy);
-        if (m->tol_floored > 0)
-            fprintf(f, "            note: rtol p_s is below what the coordinates resolve for %d bod%s: their position\n"
-                       "            tolerance raised to %.3g m (%d roundings of the contacts' coordinates about the model's\n"
-                       "            origin; docs/theory.md 7.1): the run cannot be as accurate as rtol asks; a scene\n"
-                       "            spread less widely about its centre, or smaller bodies, resolve more\n",
-                    m->tol_floored, m->tol_floored == 1 ? "y" : "ies", m->tol_floor_pos, (int)RC_TOL_ULPS);
+        char fl[480];
+        rc_model_tol_floor_note(m, fl, sizeof fl);
+        if (fl[0]) fprintf(f, "            note: %s\n", fl);
     }
     int nsc = 0;
     for (int i = 0; i < m->ninter; i++) nsc += isfinite(m->inter_pscale[i]) != 0;

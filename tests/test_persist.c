@@ -266,14 +266,15 @@ static void test_persist_ball_bounces_then_rests(void)
  * run says so (rc_stats.vibration_note, the results' vibration_note). With
  * Visc 50 N s/m (damping ratio 0.8 on the curve) the vibration dies out in
  * a few periods and the run takes a few hundred steps: no note. */
-#define VIB_DECK(visc)                                                                                             \
+#define VIB_DECK(visc) VIB_DECK_S(visc, "")
+#define VIB_DECK_S(visc, solver)                                                                                   \
     "/BEGIN\nball on an undamped Stiff line\n      2022         0\n"                                            \
     "                  kg                   m                   s\n"                                            \
     "                  kg                   m                   s\n"                                            \
     "/NODE\n1,0,0,0.01\n/RBODY/1\nball\n1,,,,0.001\n4e-8,4e-8,4e-8\n0,0,0\n"                                    \
     "/SURF/ELLIPS/1\nball\n0,2,1\n0,0,0.01\n0.01,0.01,0.01\n/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"                \
     "/GRNOD/NODE/1\nball\n1\n/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n/FUNCT/1\nlinear\n0,0\n1,1000000\n"               \
-    "/INTER/TYPE6/1\nball on floor\n1,2\n0,0\n\n1,2\n0,,100000000\n" visc "\n/RUN\n0.05,0.001\n/END\n"
+    "/INTER/TYPE6/1\nball on floor\n1,2\n0,0\n\n1,2\n0,,100000000\n" visc "\n" solver "/RUN\n0.05,0.001\n/END\n"
 
 static void test_vibration_note_undamped_stiff_line(void)
 {
@@ -300,6 +301,37 @@ static void test_vibration_note_undamped_stiff_line(void)
     }
 }
 
+/* The same ball with /SOLVER Max_steps 3000 between output times 0.05 s
+ * apart: following its 2 500 periods takes some 75 000 steps, and the run
+ * stops at Max_steps; the failure says that the contact vibrates undamped,
+ * with its period, and what to do. Damped, a Max_steps of 60 also stops
+ * it, but no vibration is to blame: no such hint. */
+static void test_max_steps_failure_names_undamped_vibration(void)
+{
+    for (int damped = 0; damped < 2; damped++) {
+        rc_model *m = load_text(damped ? "vibmax_damped.rad" : "vibmax_undamped.rad",
+                                damped ? VIB_DECK_S("50", "/SOLVER\n1,0,60\n") : VIB_DECK_S("", "/SOLVER\n1,0,3000\n"));
+        ENSURE(m != NULL);
+        if (!m) return;
+        rc_run_options opt = {.dt_out_override = 0.05};
+        rc_stats st;
+        rc_error e;
+        ENSURE(rc_run(m, &opt, &st, &e) == RC_ESOLVER);
+        printf("    %s: %s\n", damped ? "Visc 50, Max_steps 60" : "undamped, Max_steps 3000", e.msg);
+        ENSURE(strstr(e.msg, "CV_TOO_MUCH_WORK") != NULL);
+        const char *p = strstr(e.msg, "vibrates undamped (period ");
+        if (damped) {
+            ENSURE(p == NULL);
+        } else {
+            ENSURE(p != NULL && strstr(e.msg, "the contact /INTER/TYPE6/1") != NULL);
+            const double T = p ? atof(p + 26) : NAN;
+            ENSURE_NEAR(T, 2.0 * 3.14159265358979 * sqrt(1e-3 / 1e8), 1e-2, 0.0);
+            ENSURE(strstr(e.msg, "normal damping") != NULL && strstr(e.msg, "raise /SOLVER Max_steps") != NULL);
+        }
+        rc_model_free(m);
+    }
+}
+
 void suite_persist(void);
 void suite_persist(void)
 {
@@ -308,4 +340,5 @@ void suite_persist(void)
     RUN_TEST(test_persist_sliding_block_slip_distance);
     RUN_TEST(test_persist_ball_bounces_then_rests);
     RUN_TEST(test_vibration_note_undamped_stiff_line);
+    RUN_TEST(test_max_steps_failure_names_undamped_vibration);
 }

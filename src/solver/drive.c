@@ -947,6 +947,11 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
         t_prev = t;
         if (flag < 0) {
             bk->failure(self, flag, t, tout, reason, sizeof reason);
+            /* Max_steps spent following an undamped vibration: say so */
+            if (flag == bk->too_much_work) {
+                const size_t l = strlen(reason);
+                rc_impacts_max_steps_hint(&im, m, t, dtout, tend - t, reason + l, sizeof reason - l);
+            }
             fail_reason = reason;
             st = RC_SET(err, RC_ESOLVER, "%s", reason);
             break;

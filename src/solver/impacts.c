@@ -478,6 +478,53 @@ static int undamped(const rc_model *m, int i)
     return pw->c == 0.0 && !pw->damp;
 }
 
+/* The period [s] of the undamped normal vibration of interface i's closed
+ * contact: 2 pi sqrt(m / k), m the reduced mass of its free bodies, k its
+ * stiffness scale or, for TYPE6 Iform 1 and 2, its Stiff line, the
+ * steeper; NaN when it is damped or has no scale. */
+static double vib_period(const rc_model *m, int i)
+{
+    if (!undamped(m, i)) return NAN;
+    double k = m->inter_kscale[i];
+    if (m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] > 0 && m->inter_stiff[i] > k) k = m->inter_stiff[i];
+    const int ba = m->inter_ba[i], bb = m->inter_bb[i];
+    const double ma = ba >= 0 && m->body_yadr[ba] >= 0 ? m->body_mass[ba] : INFINITY;
+    const double mb = bb >= 0 && m->body_yadr[bb] >= 0 ? m->body_mass[bb] : INFINITY;
+    const double mr = isfinite(ma) && isfinite(mb) ? ma * mb / (ma + mb) : fmin(ma, mb);
+    if (!(k > 0) || !isfinite(k) || !(mr > 0) || !isfinite(mr)) return NAN;
+    return 2.0 * RC_PI * sqrt(mr / k);
+}
+
+void rc_impacts_max_steps_hint(const rc_impacts *im, const rc_model *m, double t, double dt_out, double t_left,
+                               char *buf, size_t n)
+{
+    buf[0] = '\0';
+    int best = -1;
+    double tb = INFINITY;
+    for (int i = 0; i < m->ninter; i++) {
+        /* closed now, or at some time of the last output interval (a
+         * contact that grazes open once a period) */
+        int closed = im->cur[i] >= 0;
+        for (int k = im->n - 1; k >= 0 && !closed; k--)
+            closed = im->row[k].inter_id == m->inter_id[i] && !(im->row[k].t_open < t - dt_out);
+        if (!closed) continue;
+        const double T = vib_period(m, i);
+        if (T < tb) {
+            tb = T;
+            best = i;
+        }
+    }
+    if (best < 0) return;
+    const double np = dt_out / tb, need = RC_VIB_STEPS_PER_PERIOD * np;
+    if (need < 0.5 * (double)m->max_steps) return;
+    snprintf(buf, n,
+             "; the contact %s vibrates undamped (period %.3g s: %.3g periods in an output interval of %.3g s, "
+             "about %.3g steps at %d a period against Max_steps %ld) and without damping the vibrations never die "
+             "out: give it a normal damping (TYPE6 Visc or a restitution, the power law's C) so that they settle, or "
+             "raise /SOLVER Max_steps and follow the %.3g periods to the end time (docs/theory.md 7.10)",
+             m->inter_name[best], tb, np, dt_out, need, RC_VIB_STEPS_PER_PERIOD, (long)m->max_steps, t_left / tb);
+}
+
 void rc_impacts_vibration_note(const rc_impacts *im, const rc_model *m, long steps, char *buf, size_t n)
 {
     buf[0] = '\0';
@@ -489,18 +536,13 @@ void rc_impacts_vibration_note(const rc_impacts *im, const rc_model *m, long ste
         double periods, closed, period;
     } best[3] = {{-1, 0, 0, 0}, {-1, 0, 0, 0}, {-1, 0, 0, 0}};
     for (int i = 0; i < m->ninter; i++) {
-        if (!undamped(m, i)) continue;
+        const double T = vib_period(m, i);
+        if (!isfinite(T)) continue;
         double d = 0.0;
         for (int c = 0; c < im->npc; c++)
             if (im->pc[c].inter_id == m->inter_id[i] && isfinite(im->pc[c].duration)) d += im->pc[c].duration;
-        double k = m->inter_kscale[i];
-        if (m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] > 0 && m->inter_stiff[i] > k) k = m->inter_stiff[i];
-        const int ba = m->inter_ba[i], bb = m->inter_bb[i];
-        const double ma = ba >= 0 && m->body_yadr[ba] >= 0 ? m->body_mass[ba] : INFINITY;
-        const double mb = bb >= 0 && m->body_yadr[bb] >= 0 ? m->body_mass[bb] : INFINITY;
-        const double mr = isfinite(ma) && isfinite(mb) ? ma * mb / (ma + mb) : fmin(ma, mb);
-        if (!(d > 0) || !(k > 0) || !isfinite(k) || !(mr > 0) || !isfinite(mr)) continue;
-        const double T = 2.0 * RC_PI * sqrt(mr / k), np = d / T;
+        if (!(d > 0)) continue;
+        const double np = d / T;
         total += RC_VIB_STEPS_PER_PERIOD * np;
         int r = 0;
         while (r < 3 && best[r].i >= 0 && best[r].periods >= np) r++;

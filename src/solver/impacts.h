@@ -124,6 +124,15 @@ double rc_contact_record_interval(const rc_model *m, double dtout);
  * RC_VIB_STEPS_PER_PERIOD steps for each of those periods; buf[0] = 0
  * otherwise (docs/theory.md 7.10). */
 void rc_impacts_vibration_note(const rc_impacts *im, const rc_model *m, long steps, char *buf, size_t n);
+/* The hint appended to a failure for Max_steps at t [s] ("; the contact
+ * ... vibrates undamped ..."): written when an interface closed at t or in
+ * the output interval before it (im's contacts) vibrates undamped (the
+ * period of rc_impacts_vibration_note) and following its periods in an
+ * output interval dt_out [s] at RC_VIB_STEPS_PER_PERIOD takes at least half
+ * of /SOLVER Max_steps; t_left [s] the time to the end. buf[0] = 0
+ * otherwise (docs/theory.md 7.10). */
+void rc_impacts_max_steps_hint(const rc_impacts *im, const rc_model *m, double t, double dt_out, double t_left,
+                               char *buf, size_t n);
 /* Steps of a run from which the vibration note is considered [-]. */
 #define RC_VIB_NOTE_STEPS 100000
 /* Steps an error-controlled integrator spends on a period of an undamped

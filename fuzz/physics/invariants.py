@@ -191,7 +191,7 @@ def check_exit(scene, run, rc, stderr, timed_out, stopped=0.0):
     lines = [ln for ln in (stderr or "").splitlines() if ln.strip() and "warning" not in ln.lower()]
     # the program's own message first (CVODE's warnings may precede it)
     main = [ln for ln in lines if ln.startswith("ricochet:")]
-    msg = " | ".join(main or lines)[:600]
+    msg = " | ".join(main or lines)[:1500]
     if scene.get("expect") == "input_error":
         # refused (exit 2), or run with ricochet's notice of the overlap: an
         # overlap whose law holds less than the scene's energy scale is

@@ -626,21 +626,18 @@ def check_rtol(scene, base, loose, tight, perturbed=None, floored=None, finer=No
     thr = DIV_REL * L
     dt = float(base["attrs"]["dt_out"])
 
-    def rounding():
-        """distance(base, perturbed) or None."""
-        rp = perturbed() if perturbed is not None else None
-        if rp is None:
-            return None
-        tp, dp = distance(base, rp, scene)
-        return (tp, dp) if len(dp) else None
+    def yardstick(run):
+        """A function giving distance(base, run()) or None (run None or
+        giving None: no such yardstick)."""
+        def dist():
+            ry = run() if run is not None else None
+            if ry is None:
+                return None
+            ty, dy = distance(base, ry, scene)
+            return (ty, dy) if len(dy) else None
+        return dist
 
-    def floor():
-        """distance(base, floored) or None."""
-        rf = floored() if floored is not None else None
-        if rf is None:
-            return None
-        tf, df = distance(base, rf, scene)
-        return (tf, df) if len(df) else None
+    rounding, floor = yardstick(perturbed), yardstick(floored)
 
     if d6.max() < thr:
         m6, m8 = d6.max(), d8.max()

@@ -502,14 +502,14 @@ void rc_impacts_max_steps_hint(const rc_impacts *im, const rc_model *m, double t
     int best = -1;
     double tb = INFINITY;
     for (int i = 0; i < m->ninter; i++) {
+        const double T = vib_period(m, i);
+        if (!(T < tb)) continue;
         /* closed now, or at some time of the last output interval (a
          * contact that grazes open once a period) */
         int closed = im->cur[i] >= 0;
         for (int k = im->n - 1; k >= 0 && !closed; k--)
             closed = im->row[k].inter_id == m->inter_id[i] && !(im->row[k].t_open < t - dt_out);
-        if (!closed) continue;
-        const double T = vib_period(m, i);
-        if (T < tb) {
+        if (closed) {
             tb = T;
             best = i;
         }

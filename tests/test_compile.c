@@ -114,9 +114,13 @@ static void test_compile_scales_and_derived_tolerances(void)
     m = compile_ok(deck(-1, NULL, "/SOLVER\n1,5,,1e-7\n3e-9,4e-9,5e-6,6e-6\n7e-6\n"));
     ENSURE(m != NULL);
     if (m) {
-        ENSURE(m->tol_auto == 0 && m->ewt_rel == NULL);
+        /* given: as given; positions absolute (no rtol |x|, theory 7.1),
+         * the others rtol |y| + atol */
+        ENSURE(m->tol_auto == 0 && m->ewt_rel != NULL);
         ENSURE_NEAR(m->atol[m->body_yadr[0]], 3e-9, 0, 0);
         ENSURE_NEAR(m->atol[m->body_yadr[0] + 7], 5e-6, 0, 0);
+        if (m->ewt_rel)
+            for (int s = 0; s < RC_NB; s++) ENSURE(m->ewt_rel[m->body_yadr[0] + s] == (s >= 3));
         rc_model_free(m);
     }
 }

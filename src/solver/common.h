@@ -17,9 +17,9 @@
 
 /* The error tolerance of model state k at the value yk (its weight is the
  * inverse): atol_k plus rtol |y_k| where the model weighs it relatively
- * (model.h ewt_rel); positions and rotations under derived tolerances are
- * weighed against the contact scales, not against centre coordinates, with
- * a floor of 64 ulps of the value (a far-away coordinate stays testable); a
+ * (model.h ewt_rel); positions (derived or given) and rotations under
+ * derived tolerances are weighed against the contact scales, not against
+ * centre coordinates, with a floor of 64 ulps of the value (a far-away coordinate stays testable); a
  * contact point's state at its share (RC_EWT_SHARE_MIN). Inline: the
  * integrators call it for every state at every step. */
 static inline double rc_bk_state_tol(const rc_model *m, const rc_data *d, int k, double yk)

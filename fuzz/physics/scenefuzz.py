@@ -366,20 +366,16 @@ def process(scene, variants, ricochet, timeout=60.0, keep_dir=None, keep_all=Fal
                     fl = float(b["res"]["attrs"].get("atol_position_floor", 0.0))
                     if not fl > 0:
                         return None
-                    # not with joints: a given Atol_pos holds their states
-                    # too, and IDA then took 100 to 200 x the steps (a
-                    # pendulum pivoted 0.39 m from the origin: 737 536 and
-                    # 330 301 steps at 2 x its ball's floor and 4 x 64
-                    # roundings of 0.39 m, against 3 622)
-                    if scene.get("joints"):
-                        return None
                     rf = do("floor2", with_atol_position(text, 2.0 * fl), base_args(scene))
                     return rf["res"] if rf["rc"] == 0 else None
                 def finer_run():
                     rf = do("finer", text, base_args(scene) + ["--rtol", "1e-9"])
                     return rf["res"] if rf["rc"] == 0 else None
+                def tighter_run():
+                    rf = do("tighter", text, base_args(scene) + ["--rtol", "1e-12"])
+                    return rf["res"] if rf["rc"] == 0 else None
                 V += INV.check_rtol(scene, b["res"], r["res"], tight["res"], perturbed=rounding_run,
-                                    floored=floored_run, finer=finer_run)
+                                    floored=floored_run, finer=finer_run, tighter=tighter_run)
             else:
                 V += [dict(v, inv="i_rtol", msg=f"rtol 1e-6: {v['msg']}") for v in
                       INV.check_exit(scene, "loose", r["rc"], r["stderr"], r["timed_out"], r["too_large"])]

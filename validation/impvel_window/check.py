@@ -81,8 +81,14 @@ def main():
     rcval.check("impvel_window.ledger", drift < 1e-6,
                 f"max |E_total - E_total(0)| = {drift:.2e} J, the jump at Tstart included (< 1e-6)")
     errs = [errors(rcval.Result(rcval.run(deck(rt), keep_solver=True)))[0] for rt in (1e-5, 1e-7, 1e-9)]
-    rcval.check("impvel_window.convergence", errs[2] < errs[1] < errs[0],
-                "max |z - z_exact| at rtol 1e-5, 1e-7, 1e-9: " + ", ".join(f"{x:.2e}" for x in errs))
+    # each refinement lowers the error, until it reaches the rounding of z
+    # (4 ulps of z0: the motion is piecewise quadratic, which BDF of order
+    # 2 and more follows exactly, so that tight runs end at the rounding)
+    zfloor = 4.0 * np.finfo(float).eps * Z0
+    conv = all(b < a or b <= zfloor for a, b in zip(errs, errs[1:])) and errs[1] < max(errs[0], zfloor)
+    rcval.check("impvel_window.convergence", conv,
+                "max |z - z_exact| at rtol 1e-5, 1e-7, 1e-9: " + ", ".join(f"{x:.2e}" for x in errs) +
+                f" (decreasing, or within the rounding of z, {zfloor:.2e} m)")
     rcval.finish()
 
 

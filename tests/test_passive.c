@@ -739,6 +739,47 @@ static void test_fric_turn_reload_stays_against_the_sliding(void)
     rc_model_free(m);
 }
 
+/* Counts the fric_turn events of a run (rc_run_options.on_event). */
+static int count_fric_turn(void *user, double t, const char *kind, const char *element, const double values[3])
+{
+    (void)t;
+    (void)element;
+    (void)values;
+    if (strcmp(kind, "fric_turn") == 0) ++*(long *)user;
+    return 0;
+}
+
+/* A ball pressed by a ramp against a wall whose Stiff line is 8.9e16 N/m
+ * (the fuzzer's 163000163): the force tolerance of its friction state
+ * (the line times the coordinates' rounding) is 512 N, half the friction
+ * limit. At an unloading the limit fell from 1e5 N to 1e3 N while the ball
+ * slid at 0.016 m/s; the slipping state relaxed with it to 5e-4 N, below
+ * its tolerance, its direction the integrator's rounding; the slip root
+ * crossed, the stick it called slipped at once, and the state was turned
+ * against the sliding at that size: rounding again, 200 turns within
+ * 8e-8 s (Zeno, exit 3). A turned state has at least the force tolerance,
+ * as every slipping state an event puts (the slip band): a handful of
+ * turns, and the run ends. */
+static void test_fric_turn_keeps_a_resolved_state(void)
+{
+    rc_model *m = TU_LOAD_OK("fuzz/physics/regressions/ramp_wall_slip_state_below_force_tolerance_turn_zeno.rad");
+    if (!m) return;
+    ENSURE(m->ninter == 2 && m->inter_fr[1].fband > 100.0); /* the premise: a tolerance of hundreds of N */
+    rc_error e;
+    rc_run_options o;
+    memset(&o, 0, sizeof o);
+    long turns = 0;
+    o.on_event = count_fric_turn;
+    o.user = &turns;
+    rc_stats st;
+    const rc_status s = rc_run(m, &o, &st, &e);
+    printf("    %s, %ld steps, %ld events, %ld fric_turn; F_t tolerance at the wall %.4g N; physics checks: %s\n",
+           s ? e.msg : "ok", st.steps, st.events, turns, m->inter_fr[1].fband, st.physics_note);
+    ENSURE(s == RC_OK && st.violations == 0);
+    ENSURE(turns < 20);
+    rc_model_free(m);
+}
+
 /* A 1 kg ball (radius 0.05 m) touching a floor plane z = 0: its node,
  * body, sphere, the plane and the ball's node group, as deck text. */
 #define BALL_ON_FLOOR \
@@ -1908,6 +1949,7 @@ void suite_passive(void)
     RUN_TEST(test_iform2_reversals_stay_on_the_stiff_line);
     RUN_TEST(test_ball_rolls_onto_incline);
     RUN_TEST(test_fric_turn_reload_stays_against_the_sliding);
+    RUN_TEST(test_fric_turn_keeps_a_resolved_state);
     RUN_TEST(test_slip_waits_for_a_falling_limit);
     RUN_TEST(test_corner_stick_tested_with_its_spring);
     RUN_TEST(test_viscous_reversal_root_waits_for_a_limit);

@@ -860,7 +860,7 @@ static rc_event_kind step_friction(const rc_model *m, rc_data *d, int i, double 
          * power -F . v_t positive from there */
         rc_inter_report u;
         report(m, d, i, t, y, &u);
-        if (u.slip_root > 0 && turn_state(y + m->inter_eadr[i] + fr->tidx, norm3(f0), u.vt, -1.0, changed)) {
+        if (u.slip_root > 0 && turn_state(y + m->inter_eadr[i] + fr->tidx, fmax(norm3(f0), fr->fband), u.vt, -1.0, changed)) {
             d->inter_slip[i] = 1;
             d->fric_turned = 1; /* the restart after it: BDF order <= 2 (cvode.c) */
             return RC_EV_FRIC_TURN;

@@ -382,6 +382,108 @@ static void test_cylinder_lying_end_band(void)
     rc_model_free(m);
 }
 
+/* A flat-ended cylinder (Icont 1; r 0.03 m, length 0.2 m, 0.5 kg) standing
+ * on its end on a floor (linear law 1e3 N/m), its axis tilted by theta
+ * about the floor's y axis, its centre at a fixed height. The rim's lowest
+ * point lies a = r sin(theta) below the face's centre: beyond the band
+ * (a >= eps) P is that point's depth (closed form) and the contact point
+ * that point; within it P is the smooth maximum of the rim's depths,
+ * P_c + eps (3/8 + 3 x^2/4 - x^4/8), x = a / eps, and the point moves from
+ * the face's centre to the rim continuously. The point is the depth's own
+ * gradient (dP/dtheta = x_s - x_c), and the Jacobian matches central
+ * differences inside the band. Before, the point was the face's centre up
+ * to a tilt of 1e-6 rad and the rim beyond, a jump of r in the moment arm
+ * (a cylinder that came to rest on its end: steps of 5e-11 s, Max_steps). */
+static const char cu_deck[] =
+    "/NODE\n1,0,0,0.1\n"
+    "/RBODY/1\ncylinder\n1,,,,0.5\n1.8e-3,1.8e-3,1.8e-4\n0,0,0\n"
+    "/SURF/CYL/1\ncylinder\n1,0,1\n0,0,0.1\n0,0,1\n0.03,0.2\n"
+    "/SURF/PLANE/2\nfloor\n0,0,0\n0,0,1\n"
+    "/GRAV/1\ng\n0,Z,0,0,0,,1,-9.81\n"
+    "/FUNCT/1\nload\n0,0\n1,1000\n"
+    "/INTER/TYPE6/1\ncylinder on floor\n1,2\n,0.3\n\n1\n\n30\n/RUN\n0.01,0.001\n";
+
+static void test_cylinder_standing_face_band(void)
+{
+    char path[128];
+    snprintf(path, sizeof path, "/tmp/rc_cylstand_test_%d.rad", (int)getpid());
+    rc_model *m = TU_COMPILE_OK(cu_deck, path);
+    if (!m) return;
+    ENSURE(m->inter_pair[0] == RC_PAIR_CYL_PLANE);
+    const int sa = m->inter_sa[0];
+    const double r = m->surf_r[sa], h = m->surf_ext[RC_SURF_NEXT * sa], eps = m->surf_ext[RC_SURF_NEXT * sa + 3];
+    const double ps = m->inter_pscale[0], zc = h - 0.4 * ps;
+    printf("    p_s %.3e m, band %.3e m (tilt %.2e rad)\n", ps, eps, eps / r);
+    ENSURE(eps > 0);
+    double maxjump = 0, worst_out = 0, worst_in = 0, worst_grad = 0, prevp = NAN, prevx = NAN;
+    int mono = 1;
+    for (int k = -300; k <= 300; k++) {
+        const double th = 3.0 * eps / r * k / 100.0;
+        double *y = cl_state(m, th, zc);
+        rc_inter_report rp;
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &rp);
+        /* the face's centre and the rim's lowest point below the floor */
+        const double pc = h * cos(th) - zc, a = r * fabs(sin(th)), x = a / eps;
+        if (x >= 1.0 + 1e-9) worst_out = fmax(worst_out, fabs(rp.p - (pc + a)));
+        else worst_in = fmax(worst_in, fabs(rp.p - (pc + eps * (0.375 + 0.75 * x * x - x * x * x * x / 8.0))));
+        if (!isnan(prevp)) maxjump = fmax(maxjump, fabs(rp.p - prevp));
+        /* about the face's centre (-h sin(theta) in x) the point runs from
+         * the -x rim (theta < 0) to the +x rim */
+        const double xr = rp.point[0] + h * sin(th);
+        if (!isnan(prevx) && x < 1.0 && xr < prevx - 1e-15) mono = 0;
+        prevp = rp.p;
+        prevx = xr;
+        const double dt = 1e-4 * eps / r;
+        double *y1 = cl_state(m, th + dt, zc), *y2 = cl_state(m, th - dt, zc);
+        rc_inter_report r1, r2;
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y1, &r1);
+        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y2, &r2);
+        worst_grad = fmax(worst_grad, fabs((r1.p - r2.p) / (2 * dt) - rp.point[0]) / r);
+        free(y1);
+        free(y2);
+        free(y);
+    }
+    printf("    tilt through the band: max |P - P_rim| outside %.1e m, max |P - smooth form| inside %.1e m, max step "
+           "of P %.2e m (tilt step %.1e rad), point monotone %d, max |dP/dtheta - (x_s - x_c)| / r %.1e\n",
+           worst_out, worst_in, maxjump, 3.0 * eps / r / 100.0, mono, worst_grad);
+    ENSURE(worst_out < 1e-12 * ps && worst_in < 1e-12 * ps);
+    ENSURE(maxjump < 0.1 * eps);
+    ENSURE(mono);
+    ENSURE(worst_grad < 1e-5);
+    rc_data *d = rc_data_new(m);
+    int bad = 0, outside = 0;
+    double err = 0;
+    const double tilts[3] = {0.0, 0.3 * eps / r, 0.9 * eps / r};
+    for (int c = 0; c < 3; c++)
+        for (int sl = 0; sl < 2; sl++) {
+            double *y = cl_state(m, tilts[c], zc);
+            double *yb = y + m->body_yadr[0];
+            yb[7] = 0.01;
+            yb[9] = -1e-3;
+            yb[10] = 0.2;
+            d->inter_mode[0] = RC_MODE_CLOSED;
+            d->inter_slip[0] = sl;
+            err = fmax(err, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
+            free(y);
+        }
+    printf("    jacobian inside the band: max scaled |J - FD| = %.2e (%d bad, %d off the pattern)\n", err, bad, outside);
+    ENSURE(bad == 0 && outside == 0);
+    rc_data_free(d);
+    rc_model_free(m);
+    /* the fuzzer's scene: a cylinder dropped on a floor, at rest on its end */
+    m = TU_LOAD_OK("fuzz/physics/regressions/cylinder_standing_on_end_face_point_jump_max_steps.rad");
+    if (!m) return;
+    rc_error e;
+    rc_run_options o;
+    memset(&o, 0, sizeof o);
+    rc_stats st;
+    const rc_status s = rc_run(m, &o, &st, &e);
+    printf("    dropped and standing on its end: %s, %ld steps, %ld events; %s\n", s ? e.msg : "ok", st.steps, st.events,
+           st.physics_note);
+    ENSURE(s == RC_OK && st.violations == 0);
+    rc_model_free(m);
+}
+
 /* The Jacobian in every region against central differences: TYPE6 with
  * friction (stick, slip), power law with step5 friction (uncapped, capped)
  * or a /FRICTION card (viscous and incremental, filtered), closed and
@@ -438,5 +540,6 @@ void suite_sphcyl(void)
     RUN_TEST(test_sphcyl_continuity);
     RUN_TEST(test_sphcyl_jacobian_regions);
     RUN_TEST(test_cylinder_plane_depth_near_upright);
+    RUN_TEST(test_cylinder_standing_face_band);
     RUN_TEST(test_cylinder_lying_end_band);
 }

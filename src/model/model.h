@@ -495,6 +495,15 @@ static inline int rc_inter_frictionless(const rc_model *m, int i)
     return fr->kind == RC_FK_NONE && !fr->exact && fr->widx < 0;
 }
 
+/* Interface i's normal law has no damping of any kind (TYPE6: Visc 0 and
+ * no damping curve acting; the power law: C 0 and no damping curve, whose
+ * RDF then scales nothing) (model/power.c). */
+int rc_inter_undamped(const rc_model *m, int i);
+/* ... and loses nothing at an impact either (restitution 1): undamped, no
+ * hysteresis (TYPE6 Iform 0, or the power law), a single contact point
+ * (the shares of several points relax P_e, which dissipates). */
+int rc_inter_elastic(const rc_model *m, int i);
+
 /* ---- compile (model/compile.c) ------------------------------------ */
 /* The model of a case up to its state layout, without the scales,
  * tolerances and Jacobian pattern: those evaluate the kernels and follow in

@@ -146,6 +146,20 @@ double rc_power_stored(const rc_model *m, int i, double p)
     return pw->k * powreg_integral(p, pw->m1, pw->dreg);
 }
 
+int rc_inter_undamped(const rc_model *m, int i)
+{
+    if (m->inter_law[i] == RC_LAW_TYPE6)
+        return m->inter_visc[i] == 0.0 && !(m->inter_fct_dv[i] >= 0 && m->inter_fscalev[i] != 0.0);
+    const rc_power *pw = &m->inter_pw[i];
+    return pw->c == 0.0 && !pw->damp;
+}
+
+int rc_inter_elastic(const rc_model *m, int i)
+{
+    return rc_inter_undamped(m, i) && (m->inter_law[i] != RC_LAW_TYPE6 || m->inter_iform[i] == 0) &&
+           !rc_pair_multi(m->inter_pair[i]);
+}
+
 void rc_power_print(const rc_model *m, int i, FILE *f)
 {
     const rc_power *pw = &m->inter_pw[i];

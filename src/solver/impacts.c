@@ -467,24 +467,13 @@ double rc_contact_record_interval(const rc_model *m, double dtout)
     return isfinite(dt) && dt < dtout ? dt : 0.0;
 }
 
-/* Does interface i have no normal damping of any kind (TYPE6: Visc 0 and no
- * damping curve acting; the power law: C 0 and no damping curve, whose
- * RDF then scales nothing)? */
-static int undamped(const rc_model *m, int i)
-{
-    if (m->inter_law[i] == RC_LAW_TYPE6)
-        return m->inter_visc[i] == 0.0 && !(m->inter_fct_dv[i] >= 0 && m->inter_fscalev[i] != 0.0);
-    const rc_power *pw = &m->inter_pw[i];
-    return pw->c == 0.0 && !pw->damp;
-}
-
 /* The period [s] of the undamped normal vibration of interface i's closed
  * contact: 2 pi sqrt(m / k), m the reduced mass of its free bodies, k its
  * stiffness scale or, for TYPE6 Iform 1 and 2, its Stiff line, the
  * steeper; NaN when it is damped or has no scale. */
 static double vib_period(const rc_model *m, int i)
 {
-    if (!undamped(m, i)) return NAN;
+    if (!rc_inter_undamped(m, i)) return NAN;
     double k = m->inter_kscale[i];
     if (m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] > 0 && m->inter_stiff[i] > k) k = m->inter_stiff[i];
     const int ba = m->inter_ba[i], bb = m->inter_bb[i];

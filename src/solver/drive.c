@@ -219,12 +219,10 @@ rc_status rc_bk_write_event(const rc_model *m, const rc_data *d, ev_sink *o, dou
  * Writes the events; returns their number (*jumped is set when history
  * states were reset). */
 int rc_bk_resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double *f, ev_sink *out,
-                            rc_impacts *im, long *nevents, int *jumped, rc_event *evs, int max_evs, int *nevs,
-                            rc_status *st, rc_error *err)
+                            rc_impacts *im, long *nevents, int *jumped, rc_status *st, rc_error *err)
 {
     int total = 0;
     *st = RC_OK;
-    if (nevs) *nevs = 0;
     if (m->ninter == 0) return 0;
     /* a touching contact closed at zero force changes no rate, so one more
      * round settles what the first one enabled */
@@ -235,10 +233,7 @@ int rc_bk_resolve_touching(const rc_model *m, rc_data *d, double t, double *y, d
         *jumped |= jmp;
         total += nev;
         *nevents += nev;
-        for (int k = 0; k < nev && k < RC_MAX_EV; k++) {
-            rc_impacts_event(im, m, d, ev[k].inter, ev[k].kind, t, y);
-            if (nevs && *nevs < max_evs) evs[(*nevs)++] = ev[k];
-        }
+        for (int k = 0; k < nev && k < RC_MAX_EV; k++) rc_impacts_event(im, m, d, ev[k].inter, ev[k].kind, t, y);
         /* the interface sensors of the contacts closed here (events.c) */
         if (m->nsens > 0 && (*st = sensor_events(m, d, out, t, y, nevents, err))) return total;
         for (int k = 0; k < nev && k < RC_MAX_EV; k++)
@@ -591,29 +586,6 @@ static rc_status settled(const rc_model *m, const rc_data *d, ev_sink *sink, dou
     return rc_bk_write_event(m, d, sink, t, y, ev, err);
 }
 
-/* The settling rule and the Zeno guard on the events ev[0..nev) at t
- * (engine/events/settle.c): the contacts it settled written and counted,
- * the restart it asks for in *jumped; RC_ESOLVER with the reason (*fail,
- * in why) on a Zeno verdict. */
-static rc_status settle_events(rc_settle *hist, const rc_model *m, rc_data *d, ev_sink *sink, double t,
-                               const double *y, double dtout, const rc_event *ev, int nev, rc_stats *s, int show,
-                               int *jumped, char *why, size_t nwhy, const char **fail, rc_error *err)
-{
-    rc_event sev[RC_MAX_EV];
-    int nsev = 0;
-    const rc_settle_verdict verdict = rc_settle_after_events(hist, m, d, t, dtout, ev, nev < RC_MAX_EV ? nev : RC_MAX_EV,
-                                                             sev, RC_MAX_EV, &nsev, jumped, why, nwhy);
-    for (int k = 0; k < nsev && k < RC_MAX_EV; k++) {
-        const rc_status st = settled(m, d, sink, t, y, &sev[k], s, show, err);
-        if (st) return st;
-    }
-    if (verdict == RC_SETTLE_ZENO) {
-        *fail = why;
-        return RC_SET(err, RC_ESOLVER, "%s", why);
-    }
-    return RC_OK;
-}
-
 /* ---- the driver ------------------------------------------------------- */
 /* One record at (t, y, y'): the backend's record vector (with joints, the
  * reactions in the slots of their impulses), or y itself. */
@@ -894,13 +866,8 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     if (m->nsens > 0 && (st = sensor_events(m, d, &sink, t, y, &s.events, err))) goto done;
     {
         int jmp = 0;
-        rc_event tev[RC_MAX_EV];
-        int ntev = 0;
-        rc_bk_resolve_touching(m, d, t, y, flook, &sink, &im, &s.events, &jmp, tev, RC_MAX_EV, &ntev, &st, err);
+        rc_bk_resolve_touching(m, d, t, y, flook, &sink, &im, &s.events, &jmp, &st, err);
         if (st) goto done;
-        if (ntev > 0 && (st = settle_events(hist, m, d, &sink, t, y, dtout, tev, ntev, &s, show, &jmp, reason,
-                                            sizeof reason, &fail_reason, err)))
-            goto done;
         /* contacts the initial state closed without an event: persistent
          * contacts from the start, followed at every step like the impacts */
         rc_impacts_start(&im, m, d, t, y);
@@ -1095,21 +1062,21 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
              * (Zeno) guard: the engine's verdict on these events
              * (engine/events/settle.c); the contacts it settled are written
              * and counted here, a Zeno verdict ends the run */
-            if ((st = settle_events(hist, m, d, &sink, t, y, dtout, ev, nev, &s, show, &jumped, reason, sizeof reason,
-                                    &fail_reason, err)))
+            rc_event sev[RC_MAX_EV];
+            int nsev = 0;
+            const rc_settle_verdict verdict =
+                rc_settle_after_events(hist, m, d, t, dtout, ev, nev < RC_MAX_EV ? nev : RC_MAX_EV, sev, RC_MAX_EV,
+                                       &nsev, &jumped, reason, sizeof reason);
+            for (int k = 0; k < nsev && k < RC_MAX_EV; k++)
+                if ((st = settled(m, d, &sink, t, y, &sev[k], &s, show, err))) goto done;
+            if (verdict == RC_SETTLE_ZENO) {
+                fail_reason = reason;
+                st = RC_SET(err, RC_ESOLVER, "%s", reason);
                 goto done;
-            /* contacts left at zero penetration or zero force: by the state;
-             * their contact events count for the settling too (a released
-             * contact closing again there, where a root closed it in the
-             * same scene re-centred: the rule saw the one and not the other,
-             * and the box settled one bounce later) */
-            int ntev = 0;
-            nev += rc_bk_resolve_touching(m, d, t, y, flook, &sink, &im, &s.events, &jumped, ev, RC_MAX_EV, &ntev,
-                                          &st, err);
+            }
+            /* contacts left at zero penetration or zero force: by the state */
+            nev += rc_bk_resolve_touching(m, d, t, y, flook, &sink, &im, &s.events, &jumped, &st, err);
             if (st) goto done;
-            if (ntev > 0 && (st = settle_events(hist, m, d, &sink, t, y, dtout, ev, ntev, &s, show, &jumped, reason,
-                                                sizeof reason, &fail_reason, err)))
-                goto done;
             if (nev > 0 && nr > 0) {
                 rc_bk_root_directions(m, d, rootdir);
                 BKCHECK(bk->set_root_dirs(self, rootdir), "SetRootDirection");

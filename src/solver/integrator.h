@@ -65,10 +65,9 @@ rc_status rc_bk_sink_event(ev_sink *k, double t, rc_event_kind kind, const char 
 rc_status rc_bk_write_event(const rc_model *m, const rc_data *d, ev_sink *o, double t, const double *y, const rc_event *ev,
                       rc_error *err);
 /* Contacts at zero penetration or zero force, decided by the state (after
- * the start and every event); f is scratch [ny]; returns the events, the
- * first max_evs of them in evs (*nevs; evs NULL: not kept). */
+ * the start and every event); f is scratch [ny]; returns the events. */
 int rc_bk_resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double *f, ev_sink *out, rc_impacts *im,
-                     long *nevents, int *jumped, rc_event *evs, int max_evs, int *nevs, rc_status *st, rc_error *err);
+                     long *nevents, int *jumped, rc_status *st, rc_error *err);
 /* 1 when a root function is exactly zero at (t, y); g is scratch. */
 int rc_bk_root_on_zero(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
 double rc_bk_wall_now(void); /* [s], monotonic */

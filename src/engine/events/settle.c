@@ -15,7 +15,6 @@
 
 struct rc_settle {
     double *t_open;   /* [ninter] last contact_open or contact_separate [s] (NaN: none) */
-    double *t_open0;  /* [ninter] the one before it [s] (NaN: none) */
     double *t_close;  /* [ninter] last contact_close [s] (NaN: none) */
     double *t_flight; /* [ninter] the last flight, t_close - t_open [s] (NaN: none) */
     int *nshrink;     /* [ninter] flights shrunk in a row */
@@ -29,18 +28,16 @@ rc_settle *rc_settle_new(const rc_model *m)
     if (!s) return NULL;
     const size_t n = (size_t)m->ninter + 1;
     s->t_open = malloc(n * sizeof(double));
-    s->t_open0 = malloc(n * sizeof(double));
     s->t_close = malloc(n * sizeof(double));
     s->t_flight = malloc(n * sizeof(double));
     s->nshrink = calloc(n, sizeof(int));
     s->zeno_t = calloc(n, sizeof(double));
     s->zeno_n = calloc(n, sizeof(int));
-    if (!s->t_open || !s->t_open0 || !s->t_close || !s->t_flight || !s->nshrink || !s->zeno_t || !s->zeno_n) {
+    if (!s->t_open || !s->t_close || !s->t_flight || !s->nshrink || !s->zeno_t || !s->zeno_n) {
         rc_settle_free(s);
         return NULL;
     }
-    for (int i = 0; i < m->ninter; i++) /* no contact phase yet */
-        s->t_open[i] = s->t_open0[i] = s->t_close[i] = s->t_flight[i] = NAN;
+    for (int i = 0; i < m->ninter; i++) s->t_open[i] = s->t_close[i] = s->t_flight[i] = NAN; /* no contact phase yet */
     return s;
 }
 
@@ -48,7 +45,6 @@ void rc_settle_free(rc_settle *s)
 {
     if (!s) return;
     free(s->t_open);
-    free(s->t_open0);
     free(s->t_close);
     free(s->t_flight);
     free(s->nshrink);
@@ -89,19 +85,8 @@ rc_settle_verdict rc_settle_after_events(rc_settle *s, const rc_model *m, rc_dat
     for (int k = 0; k < nev; k++) {
         const int i = ev[k].inter;
         if (i < 0) continue;
-        if (ev[k].kind == RC_EV_CONTACT_OPEN || ev[k].kind == RC_EV_CONTACT_SEPARATE) {
-            s->t_open0[i] = s->t_open[i];
-            s->t_open[i] = t;
-        }
+        if (ev[k].kind == RC_EV_CONTACT_OPEN || ev[k].kind == RC_EV_CONTACT_SEPARATE) s->t_open[i] = t;
         if (ev[k].kind != RC_EV_CONTACT_CLOSE) continue;
-        /* opened and closed again at one instant (a settled contact
-         * released where its penalty force still pushes, closed by the
-         * touching pass after the events): no flight, the contact phase
-         * goes on */
-        if (t == s->t_open[i]) {
-            s->t_open[i] = s->t_open0[i];
-            continue;
-        }
         const double flight = t - s->t_open[i], phase = s->t_open[i] - s->t_close[i];
         s->nshrink[i] = flight < s->t_flight[i] ? s->nshrink[i] + 1 : 0; /* the flights shrink */
         s->t_flight[i] = flight;

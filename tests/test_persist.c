@@ -336,6 +336,59 @@ static void test_vibration_note_undamped_stiff_line(void)
     }
 }
 
+/* Two such balls, each on its own undamped Stiff line (the same period
+ * T): one step serves both while they ring together, so the note counts
+ * the periods of the fastest vibration closed at each time, not their sum
+ * (a chain of seven balls on a floor, its twelve contacts ringing
+ * together, took 82 steps a period of its fastest and had no note). Two
+ * persistent contacts of 1 s, with steps 0.6 x 30 / T: closed together
+ * they account for 30 / T steps, and the run followed them (a note naming
+ * both); one after the other for 60 / T, 0.3 of which is not following
+ * them (no note). */
+static void test_vibration_note_counts_contacts_ringing_together_once(void)
+{
+    static const char deck[] =
+        "/BEGIN\ntwo balls on undamped Stiff lines\n      2022         0\n"
+        "                  kg                   m                   s\n"
+        "                  kg                   m                   s\n"
+        "/NODE\n1,0,0,0.01\n2,0.1,0,0.01\n/RBODY/1\nball\n1,,,,0.001\n4e-8,4e-8,4e-8\n0,0,0\n"
+        "/RBODY/2\nball\n2,,,,0.001\n4e-8,4e-8,4e-8\n0,0,0\n"
+        "/SURF/ELLIPS/1\nball\n0,2,1\n0,0,0.01\n0.01,0.01,0.01\n/SURF/ELLIPS/2\nball\n0,2,2\n0.1,0,0.01\n"
+        "0.01,0.01,0.01\n/SURF/PLANE/3\nfloor\n0,0,0\n0,0,1\n"
+        "/GRAV/1\ng\n0,Z,0,0,0,,1,-9.81\n/FUNCT/1\nlinear\n0,0\n1,1000000\n"
+        "/INTER/TYPE6/1\nball 1 on floor\n1,3\n0,0\n\n1,2\n0,,100000000\n\n"
+        "/INTER/TYPE6/2\nball 2 on floor\n2,3\n0,0\n\n1,2\n0,,100000000\n\n/RUN\n2,0.001\n/END\n";
+    rc_model *m = load_text("vib_two.rad", deck);
+    ENSURE(m != NULL);
+    if (!m) return;
+    const double T = 2.0 * 3.14159265358979 * sqrt(1e-3 / 1e8);
+    const long steps = (long)(0.6 * RC_VIB_STEPS_PER_PERIOD / T);
+    for (int apart = 0; apart < 2; apart++) {
+        rc_impacts im;
+        ENSURE(rc_impacts_init(&im, m) == 0);
+        im.pc = calloc(2, sizeof *im.pc);
+        im.npc = 2;
+        for (int c = 0; c < 2; c++) {
+            im.pc[c].inter_id = c + 1;
+            im.pc[c].t_close = apart ? c * 1.0 : 0.0;
+            im.pc[c].duration = 1.0;
+            im.pc[c].t_open = im.pc[c].t_close + 1.0;
+        }
+        char note[1024];
+        rc_impacts_vibration_note(&im, m, steps, note, sizeof note);
+        printf("    %s, %ld steps (T %.3g s): note \"%.90s...\"\n", apart ? "one after the other" : "together", steps,
+               T, note);
+        if (apart) {
+            ENSURE(note[0] == '\0');
+        } else {
+            ENSURE(strstr(note, "/INTER/TYPE6/1") != NULL && strstr(note, "/INTER/TYPE6/2") != NULL);
+            ENSURE(strstr(note, "about 18 a period") != NULL); /* 0.6 x 30 */
+        }
+        rc_impacts_free(&im);
+    }
+    rc_model_free(m);
+}
+
 /* The same ball with /SOLVER Max_steps 3000 between output times 0.05 s
  * apart: following its 2 500 periods takes some 75 000 steps, and the run
  * stops at Max_steps; the failure says that the contact vibrates undamped,
@@ -376,5 +429,6 @@ void suite_persist(void)
     RUN_TEST(test_persist_ball_bounces_then_rests);
     RUN_TEST(test_elastic_contact_does_not_settle);
     RUN_TEST(test_vibration_note_undamped_stiff_line);
+    RUN_TEST(test_vibration_note_counts_contacts_ringing_together_once);
     RUN_TEST(test_max_steps_failure_names_undamped_vibration);
 }

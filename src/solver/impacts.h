@@ -121,7 +121,8 @@ double rc_contact_record_interval(const rc_model *m, double dtout);
  * damping, each vibrating with the period 2 pi sqrt(m / k) of its closed
  * contact (m the reduced mass of its free bodies, k its stiffness scale or
  * its Stiff line, the steeper), when the run took 0.5 to 4
- * RC_VIB_STEPS_PER_PERIOD steps for each of those periods; buf[0] = 0
+ * RC_VIB_STEPS_PER_PERIOD steps for each period of the fastest of them
+ * closed at each time; buf[0] = 0
  * otherwise (docs/theory.md 7.10). */
 void rc_impacts_vibration_note(const rc_impacts *im, const rc_model *m, long steps, char *buf, size_t n);
 /* The hint appended to a failure for Max_steps at t [s] ("; the contact

@@ -78,6 +78,8 @@
 #define RC_SW_MAX_FAILS 3
 /* the BDF order at most after a restart that follows a fric_turn (cv_restart) */
 #define RC_TURN_MAX_ORDER 2
+/* ... and after a restart where a contact of several points closed (below) */
+#define RC_MULTI_MAX_ORDER 3
 /* The explicit method: Cash-Karp 6(4)5 [ARKODE table] */
 #define RC_ERK_TABLE ARKODE_CASH_KARP_6_4_5
 
@@ -907,7 +909,9 @@ static int cv_restart(void *self, double t, int at_breakpoint)
     run_ctx *c = self;
     if (at_breakpoint) c->jac_patched = 0; /* the imposed rows change: a whole new Jacobian */
     const int turned = c->d->fric_turned; /* a fric_turn among the events: below */
+    const int multi = c->d->multi_closed; /* a contact of several points closed: below */
     c->d->fric_turned = 0;
+    c->d->multi_closed = 0;
     gather_state(c);
     c->t_last = t;
     if (c->expl) {
@@ -959,7 +963,9 @@ static int cv_restart(void *self, double t, int at_breakpoint)
      * Zeno). Until the next restart the order stays at most 2 (A-stable);
      * the deck's Max_order again at the next restart without a turn
      * (docs/theory.md 3.5) */
-    const int qmax = turned && c->m->max_order > RC_TURN_MAX_ORDER ? RC_TURN_MAX_ORDER : c->m->max_order;
+    int qmax = c->m->max_order;
+    if (multi && qmax > RC_MULTI_MAX_ORDER) qmax = RC_MULTI_MAX_ORDER;
+    if (turned && qmax > RC_TURN_MAX_ORDER) qmax = RC_TURN_MAX_ORDER;
     const int fq = CVodeSetMaxOrd(c->cv, qmax);
     if (fq < 0) return fq;
     return CVodeReInit(c->cv, t, c->y);

@@ -974,6 +974,10 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
             if (kind[2] == RC_EV_NONE) kind[3] = step_friction(m, d, i, t, y, r, restart);
         }
         if ((kind[0] != RC_EV_NONE || kind[2] != RC_EV_NONE) && d->inter_mode[i] == RC_MODE_CLOSED) stateless_friction_mode(m, d, i, t, y);
+        /* a contact of several points closed: the restart after it keeps
+         * the BDF order at most 3 (cvode.c) */
+        if ((kind[0] == RC_EV_CONTACT_CLOSE || kind[2] == RC_EV_CONTACT_CLOSE) && rc_pair_multi(m->inter_pair[i]))
+            d->multi_closed = 1;
         /* the rounding of the deck's coordinates lasts until the contact
          * itself changes (a window or a crossing of its mode), not through
          * its friction's or its hysteresis' events: a box started touching
@@ -1316,6 +1320,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
                 (b2 == RC_BR_LOAD || b2 == RC_BR_UNLOAD) && fabs(r.vl) <= vb2)
                 d->inter_rband[i] = b2 == RC_BR_LOAD ? 2.0 * vb2 : -2.0 * vb2;
         }
+        if (kind == RC_EV_CONTACT_CLOSE && rc_pair_multi(m->inter_pair[i])) d->multi_closed = 1; /* cvode.c */
         const rc_event_kind kinds[3] = {kind, hkind, fkind};
         for (int q = 0; q < 3; q++) {
             if (kinds[q] == RC_EV_NONE) continue;

@@ -740,16 +740,6 @@ static void test_fric_turn_reload_stays_against_the_sliding(void)
     rc_model_free(m);
 }
 
-/* Counts the fric_turn events of a run (rc_run_options.on_event). */
-static int count_fric_turn(void *user, double t, const char *kind, const char *element, const double values[3])
-{
-    (void)t;
-    (void)element;
-    (void)values;
-    if (strcmp(kind, "fric_turn") == 0) ++*(long *)user;
-    return 0;
-}
-
 /* A ball pressed by a ramp against a wall whose Stiff line is 8.9e16 N/m
  * (the fuzzer's 163000163): the force tolerance of its friction state
  * (the line times the coordinates' rounding) is 512 N, half the friction
@@ -766,18 +756,14 @@ static void test_fric_turn_keeps_a_resolved_state(void)
     rc_model *m = TU_LOAD_OK("fuzz/physics/regressions/ramp_wall_slip_state_below_force_tolerance_turn_zeno.rad");
     if (!m) return;
     ENSURE(m->ninter == 2 && m->inter_fr[1].fband > 100.0); /* the premise: a tolerance of hundreds of N */
-    rc_error e;
-    rc_run_options o;
-    memset(&o, 0, sizeof o);
-    long turns = 0;
-    o.on_event = count_fric_turn;
-    o.user = &turns;
+    static tu_evlog ev;
     rc_stats st;
-    const rc_status s = rc_run(m, &o, &st, &e);
-    printf("    %s, %ld steps, %ld events, %ld fric_turn; F_t tolerance at the wall %.4g N; physics checks: %s\n",
-           s ? e.msg : "ok", st.steps, st.events, turns, m->inter_fr[1].fband, st.physics_note);
-    ENSURE(s == RC_OK && st.violations == 0);
-    ENSURE(turns < 20);
+    ENSURE(tu_run_evlog(m, &ev, &st) == RC_OK && st.violations == 0);
+    int turns = 0;
+    for (int k = 0; k < ev.n && k < TU_MAXEV; k++) turns += strcmp(ev.kind[k], "fric_turn") == 0;
+    printf("    %ld steps, %ld events, %d fric_turn; F_t tolerance at the wall %.4g N; physics checks: %s\n", st.steps,
+           st.events, turns, m->inter_fr[1].fband, st.physics_note);
+    ENSURE(ev.n < TU_MAXEV && turns < 20);
     rc_model_free(m);
 }
 

@@ -313,6 +313,43 @@ static double *cl_state(const rc_model *m, double th, double zc)
     return y;
 }
 
+/* dP/dtheta about the centre at tilt th (central differences, step dt)
+ * less the contact point's x (the centre at x = 0): zero where the point
+ * is the depth's own gradient (the force there does the work F dP). */
+static double cl_gradient_error(const rc_model *m, double th, double dt, double zc, double xs)
+{
+    double *y1 = cl_state(m, th + dt, zc), *y2 = cl_state(m, th - dt, zc);
+    rc_inter_report r1, r2;
+    rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y1, &r1);
+    rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y2, &r2);
+    free(y1);
+    free(y2);
+    return fabs((r1.p - r2.p) / (2 * dt) - xs);
+}
+
+/* The Jacobian at the tilts th[0..n), closed, sticking and slipping (the
+ * body moving and spinning), against central differences: the largest
+ * scaled error; *bad and *outside count the entries beyond it. */
+static double cl_jacobian_error(const rc_model *m, const double *th, int n, double zc, int *bad, int *outside)
+{
+    rc_data *d = rc_data_new(m);
+    double err = 0;
+    for (int c = 0; c < n; c++)
+        for (int sl = 0; sl < 2; sl++) {
+            double *y = cl_state(m, th[c], zc);
+            double *yb = y + m->body_yadr[0];
+            yb[7] = 0.01;
+            yb[9] = -1e-3;
+            yb[10] = 0.2;
+            d->inter_mode[0] = RC_MODE_CLOSED;
+            d->inter_slip[0] = sl;
+            err = fmax(err, tu_jac_fd_error(m, d, 0.0, y, 1, bad, outside));
+            free(y);
+        }
+    rc_data_free(d);
+    return err;
+}
+
 static void test_cylinder_lying_end_band(void)
 {
     char path[128];
@@ -344,15 +381,7 @@ static void test_cylinder_lying_end_band(void)
         prevp = rp.p;
         prevx = rp.point[0];
         /* dP/dtheta about the centre (central differences) against x_s - x_c */
-        const double dt = 1e-4 * eps / L;
-        double *y1 = cl_state(m, th + dt, zc), *y2 = cl_state(m, th - dt, zc);
-        rc_inter_report r1, r2;
-        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y1, &r1);
-        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y2, &r2);
-        const double dpdth = (r1.p - r2.p) / (2 * dt);
-        worst_grad = fmax(worst_grad, fabs(dpdth - (rp.point[0] - 0.0)) / h);
-        free(y1);
-        free(y2);
+        worst_grad = fmax(worst_grad, cl_gradient_error(m, th, 1e-4 * eps / L, zc, rp.point[0]) / h);
         free(y);
     }
     printf("    tilt through the band: max |P - P_rim| outside %.1e m, max step of P %.2e m (tilt step %.1e rad), "
@@ -363,22 +392,11 @@ static void test_cylinder_lying_end_band(void)
     ENSURE(mono);
     ENSURE(worst_grad < 1e-5);
     /* the Jacobian inside the band, closed (stick and slip) */
-    rc_data *d = rc_data_new(m);
     int bad = 0, outside = 0;
-    double err = 0;
-    for (int sl = 0; sl < 2; sl++) {
-        double *y = cl_state(m, 0.3 * eps / L, zc);
-        double *yb = y + m->body_yadr[0];
-        yb[7] = 0.01;
-        yb[9] = -1e-3;
-        d->inter_mode[0] = RC_MODE_CLOSED;
-        d->inter_slip[0] = sl;
-        err = fmax(err, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
-        free(y);
-    }
+    const double th_in = 0.3 * eps / L;
+    const double err = cl_jacobian_error(m, &th_in, 1, zc, &bad, &outside);
     printf("    jacobian inside the band: max scaled |J - FD| = %.2e (%d bad, %d off the pattern)\n", err, bad, outside);
     ENSURE(bad == 0 && outside == 0);
-    rc_data_free(d);
     rc_model_free(m);
 }
 
@@ -433,14 +451,7 @@ static void test_cylinder_standing_face_band(void)
         if (!isnan(prevx) && x < 1.0 && xr < prevx - 1e-15) mono = 0;
         prevp = rp.p;
         prevx = xr;
-        const double dt = 1e-4 * eps / r;
-        double *y1 = cl_state(m, th + dt, zc), *y2 = cl_state(m, th - dt, zc);
-        rc_inter_report r1, r2;
-        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y1, &r1);
-        rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y2, &r2);
-        worst_grad = fmax(worst_grad, fabs((r1.p - r2.p) / (2 * dt) - rp.point[0]) / r);
-        free(y1);
-        free(y2);
+        worst_grad = fmax(worst_grad, cl_gradient_error(m, th, 1e-4 * eps / r, zc, rp.point[0]) / r);
         free(y);
     }
     printf("    tilt through the band: max |P - P_rim| outside %.1e m, max |P - smooth form| inside %.1e m, max step "
@@ -450,37 +461,19 @@ static void test_cylinder_standing_face_band(void)
     ENSURE(maxjump < 0.1 * eps);
     ENSURE(mono);
     ENSURE(worst_grad < 1e-5);
-    rc_data *d = rc_data_new(m);
     int bad = 0, outside = 0;
-    double err = 0;
     const double tilts[3] = {0.0, 0.3 * eps / r, 0.9 * eps / r};
-    for (int c = 0; c < 3; c++)
-        for (int sl = 0; sl < 2; sl++) {
-            double *y = cl_state(m, tilts[c], zc);
-            double *yb = y + m->body_yadr[0];
-            yb[7] = 0.01;
-            yb[9] = -1e-3;
-            yb[10] = 0.2;
-            d->inter_mode[0] = RC_MODE_CLOSED;
-            d->inter_slip[0] = sl;
-            err = fmax(err, tu_jac_fd_error(m, d, 0.0, y, 1, &bad, &outside));
-            free(y);
-        }
+    const double err = cl_jacobian_error(m, tilts, 3, zc, &bad, &outside);
     printf("    jacobian inside the band: max scaled |J - FD| = %.2e (%d bad, %d off the pattern)\n", err, bad, outside);
     ENSURE(bad == 0 && outside == 0);
-    rc_data_free(d);
     rc_model_free(m);
     /* the fuzzer's scene: a cylinder dropped on a floor, at rest on its end */
     m = TU_LOAD_OK("fuzz/physics/regressions/cylinder_standing_on_end_face_point_jump_max_steps.rad");
     if (!m) return;
-    rc_error e;
-    rc_run_options o;
-    memset(&o, 0, sizeof o);
+    static tu_evlog ev;
     rc_stats st;
-    const rc_status s = rc_run(m, &o, &st, &e);
-    printf("    dropped and standing on its end: %s, %ld steps, %ld events; %s\n", s ? e.msg : "ok", st.steps, st.events,
-           st.physics_note);
-    ENSURE(s == RC_OK && st.violations == 0);
+    ENSURE(tu_run_evlog(m, &ev, &st) == RC_OK && st.violations == 0);
+    printf("    dropped and standing on its end: %ld steps, %ld events; %s\n", st.steps, st.events, st.physics_note);
     rc_model_free(m);
 }
 

@@ -562,19 +562,34 @@ def event_counts(res):
     return c
 
 
+def settled_elements(res):
+    """The elements with a contact_settle event."""
+    return {e for k, e in zip(res["event_kind"], res["event_element"]) if k == "contact_settle"}
+
+
 def compare_events(key, base, var, tight, elem_map=None, perturbed=None):
     """The same events: for every (kind, element) whose count base and tight
     agree on (and the base perturbed by the variant's rounding, when given:
     a count that the rounding alone changes is the scene's sensitivity, not
-    the variant's defect), the variant must have that count too."""
+    the variant's defect), the variant must have that count too; within
+    10 % (at least 2) for an element that settles after accumulating
+    bounces in the base or the variant: its last bounces are microscopic
+    (flights of 3e-7 s shrinking by 0.9 a bounce), and how many come before
+    the settling rule holds the contact moves with the method and the
+    rounding (a ball against a wall: 45 closes on CVODE, 48 on IDA, the
+    motion the same)."""
     cb, ct, cv = event_counts(base), event_counts(tight), event_counts(var)
     cp = event_counts(perturbed) if perturbed is not None else None
+    settling = settled_elements(base) | settled_elements(var)
     diffs = []
     for ke in sorted(set(cb) | set(ct) | set(cv)):
         if cp is not None and cp.get(ke, 0) != cb.get(ke, 0):
             continue
-        if cb.get(ke, 0) == ct.get(ke, 0) and cv.get(ke, 0) != cb.get(ke, 0):
-            diffs.append(f"{ke[0]} {ke[1]}: {cv.get(ke, 0)} vs {cb.get(ke, 0)}")
+        nb, nv = cb.get(ke, 0), cv.get(ke, 0)
+        if ke[1] in settling and abs(nv - nb) <= max(2, 0.1 * nb):
+            continue
+        if nb == ct.get(ke, 0) and nv != nb:
+            diffs.append(f"{ke[0]} {ke[1]}: {nv} vs {nb}")
     if diffs:
         return [viol(key, key, "event counts differ from the base (where base and tight agree): " +
                      "; ".join(diffs[:6]), n=len(diffs))]

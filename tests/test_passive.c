@@ -22,7 +22,6 @@
 #include "model/power.h"
 #include "testutil.h"
 #include "engine/assembly/assembly.h"
-#include "engine/assembly/bounds.h"
 
 /* A row of five touching balls at x = i 2R (not exactly representable: the
  * pairs overlap or part by rounding), the first one moving; Hertz contacts. */
@@ -764,43 +763,6 @@ static void test_fric_turn_keeps_a_resolved_state(void)
     printf("    %ld steps, %ld events, %d fric_turn; F_t tolerance at the wall %.4g N; physics checks: %s\n", st.steps,
            st.events, turns, m->inter_fr[1].fband, st.physics_note);
     ENSURE(ev.n < TU_MAXEV && turns < 20);
-    rc_model_free(m);
-}
-
-/* The touch band stays within the contact's penetration scale. A ball
- * pressed by a ramp against a stiff wall 2.1 m from the origin (the
- * fuzzer's 165000137, shrunk): a thousand roundings of the coordinates
- * (1.2e-12 m) are four times the wall contact's resting penetration; the
- * contact separated near rest and closed again a band in, its force
- * jumping to four times the weight with the law's energy there appearing
- * without work: a limit cycle of micro-bounces every 5e-6 s, Max_steps at
- * 3.96 s. Beyond 1e-2 p_s the band comes down to the floor of the position
- * tolerance (64 roundings): the ball rests, the run ends. */
-static void test_touch_band_within_the_penetration_scale(void)
-{
-    rc_model *m = TU_LOAD_OK("fuzz/physics/regressions/ramp_wall_touch_band_beyond_resting_penetration_limit_cycle.rad");
-    if (!m) return;
-    ENSURE(m->ninter == 2 && m->nbody == 1);
-    double *y = calloc((size_t)m->ny, sizeof(double));
-    rc_error e;
-    rc_run_options o;
-    memset(&o, 0, sizeof o);
-    o.y_end = y;
-    rc_stats st;
-    const rc_status s = rc_run(m, &o, &st, &e);
-    printf("    %s, %ld steps, %ld events; physics checks: %s\n", s ? e.msg : "ok", st.steps, st.events, st.physics_note);
-    ENSURE(s == RC_OK && st.violations == 0);
-    /* the premise, at the ball's rest against the wall: the band of before
-     * (a thousand roundings) beyond the contact's penetration scale */
-    for (int k = 0; k < 3; k++) y[m->body_yadr[0] + k] -= m->origin[k]; /* y_end: the deck's coordinates */
-    rc_inter_report r;
-    rc_inter_report_eval(m, 1, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, st.t_end, y, &r);
-    const double wide = rc_touch_band(m, 1, y, &r, RC_TOUCH_ULPS, 0.0, 0), ps = m->inter_pscale[1];
-    printf("    at rest against the wall (P %.3g m): a thousand roundings of the coordinates %.3g m, p_s %.3g m\n", r.p,
-           wide, ps);
-    ENSURE(wide > ps && r.p > 0);
-    free(y);
-    ENSURE(st.events < 1000);
     rc_model_free(m);
 }
 
@@ -2008,7 +1970,6 @@ void suite_passive(void)
     RUN_TEST(test_ball_rolls_onto_incline);
     RUN_TEST(test_fric_turn_reload_stays_against_the_sliding);
     RUN_TEST(test_fric_turn_keeps_a_resolved_state);
-    RUN_TEST(test_touch_band_within_the_penetration_scale);
     RUN_TEST(test_flat_landing_keeps_the_box_level);
     RUN_TEST(test_slip_waits_for_a_falling_limit);
     RUN_TEST(test_corner_stick_tested_with_its_spring);

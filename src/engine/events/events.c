@@ -23,9 +23,6 @@
 /* Touch band: RC_TOUCH_ULPS ulps of the coordinates (model.h), at least
  * RC_TOUCH_REL of the penetration scale (docs/theory.md 5.1) [-]. */
 #define RC_TOUCH_REL 1e-9
-/* ... and beyond RC_TOUCH_PMAX of the penetration scale no more than the
- * position tolerance's floor of RC_TOL_ULPS roundings (model.h) [-] */
-#define RC_TOUCH_PMAX 1e-2
 
 /* Own state k of interface i (NULL when absent). */
 static double *own(const rc_model *m, int i, int idx, double *y)
@@ -647,20 +644,7 @@ static rc_event_kind step_branch(const rc_model *m, rc_data *d, int i, double t,
  * settled after 21. */
 static double touch_band(const rc_model *m, const rc_data *d, int i, const double *y, const rc_inter_report *r)
 {
-    double band = rc_touch_band(m, i, y, r, RC_TOUCH_ULPS, RC_TOUCH_REL, d->inter_deck[i]);
-    /* an open contact closes a band in, its force jumping to the law's at
-     * the band (and the law's energy there appearing without work): a
-     * band beyond RC_TOUCH_PMAX of the penetration scale comes down to the
-     * floor the position tolerance keeps (RC_TOL_ULPS roundings of the
-     * same coordinates). A ball pressed by a ramp against a stiff wall 2 m
-     * from the origin (p_s 2.7e-13 m, the band 1.2e-12 m: beyond its
-     * resting penetration) separated near rest and closed again four
-     * resting penetrations in, with four times its weight: a limit cycle
-     * of micro-bounces fed by those jumps, 3 440 of them before Max_steps
-     * stopped the run (0.23 s to its end now, 330 events) */
-    const double ps = m->inter_pscale[i];
-    if (isfinite(ps) && band > RC_TOUCH_PMAX * ps)
-        band = fmax(RC_TOUCH_PMAX * ps, rc_touch_band(m, i, y, r, RC_TOL_ULPS, RC_TOUCH_REL, d->inter_deck[i]));
+    const double band = rc_touch_band(m, i, y, r, RC_TOUCH_ULPS, RC_TOUCH_REL, d->inter_deck[i]);
     return band > 0 ? band : DBL_MIN;
 }
 

@@ -518,28 +518,32 @@ void rc_impacts_max_steps_hint(const rc_impacts *im, const rc_model *m, double t
  * run: the integral of max_i 1/T_i over the persistent contacts' closed
  * intervals (one step serves every contact ringing at once: a chain of
  * seven balls on a floor, its twelve contacts closed together, took the
- * steps of its fastest one, not of the sum). The interfaces in order of
- * frequency, each contributing where no faster one is closed; cov
- * (scratch, 2 npc) the union covered so far, as sorted disjoint
- * intervals. */
-static double fastest_periods(const rc_impacts *im, const rc_model *m, double *cov)
+ * steps of its fastest one, not of the sum). The contacts in order of
+ * frequency, each contributing where no faster one is closed. Scratch:
+ * pf (npc) each contact's frequency, cov (2 npc) the union covered so
+ * far, as sorted disjoint intervals. */
+static double fastest_periods(const rc_impacts *im, const rc_model *m, double *pf, double *cov)
 {
+    for (int c = 0; c < im->npc; c++) {
+        const rc_contact *pc = &im->pc[c];
+        pf[c] = 0.0; /* damped, unscaled or of no duration: none */
+        for (int i = 0; i < m->ninter && isfinite(pc->duration) && pc->duration > 0; i++)
+            if (m->inter_id[i] == pc->inter_id) {
+                const double T = vib_period(m, i);
+                if (T > 0 && isfinite(T)) pf[c] = 1.0 / T;
+                break;
+            }
+    }
     int ncov = 0;
     double total = 0.0, above = INFINITY; /* the frequencies done are above this */
     for (;;) {
         double f = 0.0; /* the next frequency down */
-        for (int i = 0; i < m->ninter; i++) {
-            const double fi = 1.0 / vib_period(m, i);
-            if (fi > f && fi < above) f = fi;
-        }
+        for (int c = 0; c < im->npc; c++)
+            if (pf[c] > f && pf[c] < above) f = pf[c];
         if (!(f > 0)) break;
         for (int c = 0; c < im->npc; c++) {
-            const rc_contact *pc = &im->pc[c];
-            int i = 0;
-            while (i < m->ninter && m->inter_id[i] != pc->inter_id) i++;
-            if (i == m->ninter || 1.0 / vib_period(m, i) != f || !isfinite(pc->duration) || !(pc->duration > 0))
-                continue;
-            const double a0 = pc->t_close, b0 = pc->t_close + pc->duration;
+            if (pf[c] != f) continue;
+            const double a0 = im->pc[c].t_close, b0 = a0 + im->pc[c].duration;
             /* the part of [a0, b0] outside cov, then [a0, b0] merged into it */
             double open = b0 - a0, a = a0, b = b0;
             int lo = 0;
@@ -566,11 +570,11 @@ void rc_impacts_vibration_note(const rc_impacts *im, const rc_model *m, long ste
 {
     buf[0] = '\0';
     if (steps < RC_VIB_NOTE_STEPS || im->npc == 0) return;
-    double *cov = malloc(2 * (size_t)im->npc * sizeof(double));
-    if (!cov) return;
+    double *scratch = malloc(3 * (size_t)im->npc * sizeof(double));
+    if (!scratch) return;
     /* steps the vibrations account for */
-    const double total = RC_VIB_STEPS_PER_PERIOD * fastest_periods(im, m, cov);
-    free(cov);
+    const double total = RC_VIB_STEPS_PER_PERIOD * fastest_periods(im, m, scratch, scratch + im->npc);
+    free(scratch);
     /* the three interfaces with the most periods, most first */
     struct {
         int i;

@@ -119,7 +119,7 @@ typedef struct rc_data {
     int multi_closed;    /* 1: an event since the last restart closed a contact
                             of several points (a box's, a meshed surface's);
                             the CVODE backend restarts at BDF order at most 3
-                            then (docs/theory.md 7.3) and clears it */
+                            then (docs/theory.md 7.7) and clears it */
     struct rc_cpl_data *cpl; /* couplings: catenary warm starts, workspace (coupling.h) */
     const char *jac_skip; /* [ny] set by a backend that leaves these states out
                             of its Newton matrix (cvode.c): the Jacobian's

@@ -909,7 +909,7 @@ static int cv_restart(void *self, double t, int at_breakpoint)
     run_ctx *c = self;
     if (at_breakpoint) c->jac_patched = 0; /* the imposed rows change: a whole new Jacobian */
     const int turned = c->d->fric_turned; /* a fric_turn among the events: below */
-    const int multi = c->d->multi_closed; /* a contact of several points closed: below */
+    const int multi = c->d->multi_closed; /* a damped contact of several points closed: below */
     c->d->fric_turned = 0;
     c->d->multi_closed = 0;
     gather_state(c);

@@ -116,7 +116,7 @@ typedef struct rc_data {
                             friction state against its sliding (fric_turn,
                             events.c); the CVODE backend restarts at BDF order
                             at most 2 then (docs/theory.md 3.5) and clears it */
-    int multi_closed;    /* 1: an event since the last restart closed a contact
+    int multi_closed;    /* 1: an event since the last restart closed a damped contact
                             of several points (a box's, a meshed surface's);
                             the CVODE backend restarts at BDF order at most 3
                             then (docs/theory.md 7.7) and clears it */

@@ -23,6 +23,7 @@
 #include "harness.h"
 #include "testutil.h"
 #include "engine/assembly/assembly.h"
+#include "engine/events/events.h"
 
 static char seg_path[128];
 
@@ -289,6 +290,12 @@ static void test_seg_force_distribution(void)
 /* A generic state of a two-body model: the initial state with bodies 1 and
  * 2 set to s[0..12] and s[13..25] (position, quaternion, velocity, angular
  * velocity), every later state 0.013 (k - 25). The caller frees it. */
+/* The two bodies' states (13 each) of the checks below: the box in the
+ * plate, sliding and turning on it. */
+static const double seg_state[26] = {0.0013, -0.0011, 0.0312, 0.97,  0.011, -0.013, 0.007, 0.31,  -0.23,
+                                     -0.17,  3.1,     -2.3,   4.7,   0.0021, 0.0007, -0.2003, 0.99, -0.005,
+                                     0.009,  0.003,   -0.41,  0.17,  0.053,  -1.9,   0.7,    2.2};
+
 static double *two_body_state(const rc_model *m, const double s[26])
 {
     double *y = calloc((size_t)m->ny, sizeof(double));
@@ -298,14 +305,14 @@ static double *two_body_state(const rc_model *m, const double s[26])
     return y;
 }
 
-/* The box on a tilted plate carried by a second free body, nonlinear load
- * curve with Visc and both damping curves, Iform 1 with an unload curve and
- * Inacti 5: every mode, against central differences. */
-static void seg_jacobian_check(int box, int fric)
+/* The box on a tilted plate carried by a second free body (box 1: a box,
+ * 2: a meshed box), nonlinear load curve with Visc and both damping curves,
+ * Iform 1 with an unload curve and Inacti 5, friction per node (fric 1:
+ * TYPE6 Fric, incremental; 2, 3, 4: /FRICTION viscous, filtered, incremental
+ * filtered): the deck into deck[size]. */
+static void seg_box_plate_deck(char *deck, size_t size, int box, int fric)
 {
-    rc_error e;
-    char deck[8192];
-    snprintf(deck, sizeof deck, "%s%s%s%s%s%s%s", BOX_NODES BOX_BODY BOX_SEGS,
+    snprintf(deck, size, "%s%s%s%s%s%s%s", BOX_NODES BOX_BODY BOX_SEGS,
              box == 2 ? "/NODE\n2,0,0,-0.2\n/RBODY/2\nplate\n2,,,,5.0,8\n0.11,0.13,0.2\n0.01,0,0\n"
                       : "/NODE\n2,0,0,-0.2\n/RBODY/2\nplate\n2,,,,5.0\n0.11,0.13,0.2\n0.01,0,0\n",
              box == 2 ? "/NODE\n20,-0.3,-0.2,-0.1\n21,0.3,-0.2,-0.1\n22,0.3,0.2,-0.1\n23,-0.3,0.2,-0.1\n24,-0.3,-0.2,0.0011\n"
@@ -325,6 +332,14 @@ static void seg_jacobian_check(int box, int fric)
              : fric == 3 ? "/FRICTION/1\nviscous, filtered\n0,3,50,1\n\n,0.37,0.8\n" RUN_TAIL
              : fric == 4 ? "/FRICTION/1\nincremental, filtered\n0,3,50,2\n\n,0.37,0.8\n" RUN_TAIL
                          : RUN_TAIL);
+}
+
+/* That box on the plate in every mode, against central differences. */
+static void seg_jacobian_check(int box, int fric)
+{
+    rc_error e;
+    char deck[8192];
+    seg_box_plate_deck(deck, sizeof deck, box, fric);
     rc_model *m = seg_compile(deck, &e);
     ENSURE(m != NULL);
     if (!m) {
@@ -335,8 +350,7 @@ static void seg_jacobian_check(int box, int fric)
     ENSURE(fric < 2 || fric == 4 || (m->inter_fr[0].form == RC_FF_VISCOUS && (fric == 3) == (m->inter_fr[0].tau > 0)));
     ENSURE(fric != 4 || (m->inter_fr[0].form == RC_FF_INCREMENTAL && m->inter_fr[0].tau > 0 && m->inter_pst[0] == 6));
     rc_data *d = rc_data_new(m);
-    const double s[26] = {0.0013, -0.0011, 0.0312, 0.97, 0.011, -0.013, 0.007, 0.31, -0.23, -0.17, 3.1, -2.3, 4.7,
-                          0.0021, 0.0007, -0.2003, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
+    const double *s = seg_state;
     double *y = two_body_state(m, s);
     y[m->inter_eadr[0] + m->inter_hidx[0]] = 731.0;
     y[m->inter_eadr[0] + m->inter_oidx[0]] = 3.7e-4;
@@ -528,8 +542,7 @@ static void test_seg_power_jacobian_matches_finite_differences(void)
     }
     ENSURE(m->inter_pair[0] == RC_PAIR_SEG_PLANE && m->inter_law[0] == RC_LAW_POWER);
     rc_data *d = rc_data_new(m);
-    const double s[26] = {0.0013, -0.0011, 0.0312, 0.97, 0.011, -0.013, 0.007, 0.31, -0.23, -0.17, 3.1, -2.3, 4.7,
-                          0.0021, 0.0007, -0.2003, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
+    const double *s = seg_state;
     double *y = two_body_state(m, s);
     rc_inter_report r;
     rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
@@ -572,8 +585,7 @@ static void test_seg_step5_jacobian(void)
     }
     ENSURE(m->inter_npt[0] == 8 && m->inter_fr[0].kind == RC_FK_STEP5);
     rc_data *d = rc_data_new(m);
-    const double s[26] = {0.0013, -0.0011, 0.0312, 0.97, 0.011, -0.013, 0.007, 0.31, -0.23, -0.17, 3.1, -2.3, 4.7,
-                          0.0021, 0.0007, -0.2003, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
+    const double *s = seg_state;
     double *y = two_body_state(m, s);
     rc_inter_report r;
     rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
@@ -1007,8 +1019,7 @@ static void box_pair_jacobian_check(int kind, int fric)
     ENSURE(m->inter_pair[0] == (kind ? RC_PAIR_SEG_SEG : RC_PAIR_SEG_PLANE));
     ENSURE(!fric || m->inter_npt[0] == (kind ? 16 + RC_BOX_EDGE_PAIRS : 8));
     rc_data *d = rc_data_new(m);
-    const double s[26] = {0.0013, -0.0011, 0.0312, 0.97, 0.011, -0.013, 0.007, 0.31, -0.23, -0.17, 3.1, -2.3, 4.7,
-                          0.0021, 0.0007, -0.2003, 0.99, -0.005, 0.009, 0.003, -0.41, 0.17, 0.053, -1.9, 0.7, 2.2};
+    const double *s = seg_state;
     double *y = two_body_state(m, s);
     if (m->inter_hidx[0] >= 0) y[m->inter_eadr[0] + m->inter_hidx[0]] = 731.0;
     if (m->inter_oidx[0] >= 0) y[m->inter_eadr[0] + m->inter_oidx[0]] = 3.7e-4;
@@ -1112,6 +1123,74 @@ static void test_box_box_jacobian(void)
     }
 }
 
+/* A node going from stick to slip stores no energy: its state takes the
+ * direction of the applied force (spring and stick damper) on the limit,
+ * with the magnitude its spring had in the node's tangent plane (where its
+ * energy w_j |s_j|^2 / (2 K_t) is) or the slip band, whichever is larger.
+ * On the limit itself, which includes the stick damper's part, a node
+ * stored (|L|^2 - |s|^2) / (2 K_t) that no work put there, and the spring
+ * gave it back to the bodies later (two boxes stacked under tilted
+ * gravity, 171000103: the friction channel fell by 2.2e-5 J at a flip, and
+ * the run stopped, exit 5). The box's node in the plate sticking with a
+ * state of about 1 N across its normal and 50 N along it (a normal that
+ * jumped: a box's node whose nearest face changed), the box sliding and
+ * turning fast enough that the node's stick damper carries it past the
+ * limit; flipped by its root. Put at the state's whole magnitude or on
+ * the limit, the node stored 1.7e-4 J from 1.4e-7 J. */
+static void test_seg_point_slip_stores_no_energy(void)
+{
+    rc_error e;
+    char deck[8192];
+    seg_box_plate_deck(deck, sizeof deck, 0, 1);
+    rc_model *m = seg_compile(deck, &e);
+    ENSURE(m != NULL && m->inter_npt[0] == 8 && m->inter_fr[0].form == RC_FF_INCREMENTAL && m->inter_fr[0].kt > 0);
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    double st[26];
+    memcpy(st, seg_state, sizeof st);
+    for (int k = 7; k < 13; k++) st[k] *= 30.0; /* the box slides and turns fast: its dampers beyond the limit */
+    double *y = two_body_state(m, st);
+    const int npt = m->inter_npt[0], pb = m->inter_pbase[0], ps = m->inter_pst[0], nr = rc_root_count(m);
+    int *roots = calloc((size_t)nr + 1, sizeof(int));
+    double *out = calloc((size_t)RC_PT_OUT * npt, sizeof(double));
+    if (!d || !roots || !out) goto done;
+    d->inter_mode[0] = RC_MODE_CLOSED;
+    d->inter_branch[0] = RC_BR_LOAD;
+    double *ft = y + m->inter_eadr[0] + m->inter_ns[0];
+    for (int j = 0; j < npt; j++) {
+        d->pt_slip[pb + j] = 0;
+        const double s0[3] = {2.0, -1.0, 50.0}; /* the plate's normal is about +z: 0.71 N across it */
+        memcpy(ft + ps * j, s0, sizeof s0);
+    }
+    rc_points_eval(m, d, 0, NULL, 0.0, y, out);
+    int nflip = 0;
+    double fb_energy = 0.0; /* the slip band's energy over the flipping nodes */
+    const double kt = m->inter_fr[0].kt, fb = m->inter_fr[0].fband;
+    for (int j = 0; j < npt; j++)
+        if (out[RC_PT_OUT * j + 4] > 0 && out[RC_PT_OUT * j] > 0) {
+            roots[rc_root_point_base(m) + pb + j] = 1;
+            fb_energy += out[RC_PT_OUT * j + 4] * fb * fb / (2.0 * kt);
+            nflip++;
+        }
+    const double e0 = rc_inter_friction_stored(m, d, 0, 0.0, y);
+    rc_event ev[16];
+    int restart = 0;
+    rc_events_apply(m, d, 0.0, y, roots, ev, 16, &restart);
+    const double e1 = rc_inter_friction_stored(m, d, 0, 0.0, y);
+    int nslip = 0;
+    for (int j = 0; j < npt; j++) nslip += d->pt_slip[pb + j];
+    printf("    %d of %d nodes flipped to slip (%d slipping): stored energy %.4g J -> %.4g J (slip band %.3g J; the "
+           "limit's magnitude stored 1.7e-4 J)\n", nflip, npt, nslip, e0, e1, fb_energy);
+    ENSURE(nflip >= 1 && nslip == nflip);
+    ENSURE(e1 <= e0 + fb_energy + 1e-12 * e0);
+done:
+    free(out);
+    free(roots);
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 void suite_seg(void);
 void suite_seg(void)
 {
@@ -1133,6 +1212,7 @@ void suite_seg(void)
     RUN_TEST(test_seg_viscous_friction_jacobian);
     RUN_TEST(test_seg_filtered_incremental_jacobian);
     RUN_TEST(test_seg_step5_jacobian);
+    RUN_TEST(test_seg_point_slip_stores_no_energy);
     RUN_TEST(test_box_pairs_corners);
     RUN_TEST(test_box_plane_jacobian);
     RUN_TEST(test_box_box_jacobian);

@@ -56,8 +56,9 @@
 /* Values per contact point that the points' evaluation returns
  * (rc_points_eval): the slip root, the applied force at unit share (3), the
  * share w_j, the depth q_j [m] below the level of the shares (> 0: it takes
- * a share) */
-#define RC_PT_OUT 6
+ * a share), the magnitude of its state F_t in its tangent plane at unit
+ * share [N] (its spring's energy |F_t|^2 / (2 K_t)) */
+#define RC_PT_OUT 7
 #define RC_NODE_CACHE 11 /* values per point of the node geometry cache (rc_data.node_cache) */
 /* Pairs with several contact points (docs/theory.md 2.7): the share band,
  * relative to the penetration scale [-], and the relaxation rate of the

@@ -115,7 +115,8 @@ void rc_inter_report_eval_d(const rc_model *m, const rc_data *d, int i, double t
  * in the modes of d, each point j in mode slip[j] (NULL: its mode in d):
  * per point RC_PT_OUT values into out: its slip root, the law's tangential
  * force on a before any projection (3) [N], its share w_j = f_j / F_n [-],
- * its depth q_j below the level of the shares [m] (> 0: it has a share). */
+ * its depth q_j below the level of the shares [m] (> 0: it has a share),
+ * the magnitude of its state F_t in its tangent plane at unit share [N]. */
 void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip, double t, const double *y, double *out);
 /* Contact point j of node-pair interface i (rc_seg_points) at the state y:
  * where its force acts, global [m] (a node, or the middle of the closest

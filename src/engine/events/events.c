@@ -102,9 +102,21 @@ static int turn_state(double *ft, double mag, const double *dir, double sgn, int
     return 1;
 }
 
+/* The magnitude of a friction state ft in the tangent plane of the unit
+ * normal n, the part its spring's energy |F_t|^2 / (2 K_t) counts [N]. A
+ * state keeps a part along the normal where the normal jumped (a box's
+ * node whose nearest face changed turns its normal by 90 degrees). */
+static double tangential_norm(const double *ft, const double *n)
+{
+    const double fdn = ft[0] * n[0] + ft[1] * n[1] + ft[2] * n[2];
+    const double tp[3] = {ft[0] - fdn * n[0], ft[1] - fdn * n[1], ft[2] - fdn * n[2]};
+    return norm3(tp);
+}
+
 /* A friction reset (stick -> slip, slip -> stick) never stores tangential
  * energy |F_t|^2 / (2 K_t) that no work put there: the new state ft keeps
- * its direction with at most the magnitude the state had before (old), or
+ * its direction with at most the magnitude the state had before in the
+ * tangent plane, where its energy is (old: tangential_norm), or
  * the slip band fb (docs/theory.md 3.5). A slipping state (slip = 1) also
  * has at least the magnitude fb, so that it keeps a direction that turns at
  * a finite rate (K_t |v_t| / |F_t|); a state without direction is left as
@@ -158,18 +170,24 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
         *changed = 1;
     } else if (n > 0) {
         double *ft = y + m->inter_eadr[i] + m->inter_ns[i];
-        for (int j = 0; j < npt; j++) oldn[j] = norm3(ft + ps * j);
         rc_points_eval(m, d, i, NULL, t, y, out);
+        for (int j = 0; j < npt; j++) oldn[j] = out[RC_PT_OUT * j + 6]; /* tangential, as tangential_norm */
         for (int j = 0; j < npt; j++)
             if (sel[j])
                 for (int k = 0; k < 3; k++) set_state(ft + ps * j + k, out[RC_PT_OUT * j + 1 + k], changed);
         for (int j = 0; j < npt; j++) md[j] = sel[j] ? 1 : sl[j];
         rc_points_eval(m, d, i, md, t, y, out);
+        const double fb = m->inter_fr[i].fband;
         for (int j = 0; j < npt; j++) {
             if (!sel[j] || sl[j]) continue;
             const double *f = out + RC_PT_OUT * j + 1, nr = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
             if (nr > 0 && isfinite(nr)) /* a zero limit (no share) keeps the direction */
                 for (int k = 0; k < 3; k++) set_state(ft + ps * j + k, f[k], changed);
+            /* with the magnitude its spring had, as slip_on_limit: the
+             * limit includes the stick damper's part, and a state put there
+             * stored |L|^2 - |s|^2 over 2 K_t from no work, which the
+             * spring later gave back to the bodies */
+            cap_state(ft + ps * j, oldn[j], fb, 1, changed);
         }
         /* a point that sticks holds the force its spring has: a state below
          * the limit stays there (cap_state, the state it slid with, below a
@@ -178,7 +196,6 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
          * (with the limit, the stick damper's force across the sliding put
          * the stick just beyond it, the point slid on and its sliding
          * turned by 90 degrees within nanoseconds: Zeno) */
-        const double fb = m->inter_fr[i].fband;
         for (int j = 0; j < npt; j++)
             if (sel[j] && sl[j] && out[RC_PT_OUT * j + 4] > 0) cap_state(ft + ps * j, oldn[j], fb, 0, changed);
         int nst = 0; /* slip -> stick flips */
@@ -778,8 +795,8 @@ static void slip_on_limit(const rc_model *m, rc_data *d, int i, double t, double
     const rc_fric *fr = &m->inter_fr[i];
     rc_inter_report q;
     double *ft = y + m->inter_eadr[i] + fr->tidx;
-    const double old = norm3(ft);
     report(m, d, i, t, y, &q); /* stick: the applied force */
+    const double old = tangential_norm(ft, q.normal);
     for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
     const int slip = d->inter_slip[i];
     d->inter_slip[i] = 1;
@@ -812,7 +829,7 @@ static void stick_on_state(const rc_model *m, rc_data *d, int i, double t, doubl
     d->inter_slip[i] = 0;
     if (fr->tidx < 0) return;
     double *ft = y + m->inter_eadr[i] + fr->tidx;
-    const double old = norm3(ft);
+    const double old = tangential_norm(ft, q.normal);
     for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
     if (fr->exact) return;
     cap_state(ft, old, fr->fband, 0, changed);

@@ -1900,28 +1900,31 @@ static void test_landing_band_kept_through_flips(void)
 
 /* ---- an elastic law with a damper: hysteresis kept at its releases ---- */
 /* A 1 kg ball dropped at 1 m/s onto a floor, linear law k = 1e6 N/m
- * (Iform 0) with Visc 400 N s/m (zeta 0.2): on each rebound the damper
- * pulls and the contact releases at P_r > 0, losing k P_r^2 / 2. The
- * hysteresis dissipation is exactly the sum of these over the releases the
- * events record (before: the normal work less the stored energy, whose
- * integration error ran backwards by up to 1e-7 J on damped cradles), and
- * never decreases. */
-static const char *release_deck =
-    "/BEGIN\nball dropped on a damped elastic floor\n      2022         0\n"
-    "                  kg                   m                   s\n"
-    "                  kg                   m                   s\n"
-    "/FUNCT/1\nlinear\n0,0\n1,1000000\n" BALL_ON_FLOOR
-    "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n"
-    "/INIVEL/TRA/1\nv\n0,0,-1,1,0\n"
-    "/INTER/TYPE6/1\nball on floor\n1,2\n\n\n1,0\n\n400\n"
-    "/RUN\n0.3,0.001\n/END\n";
+ * (Iform 0) with Visc 400 N s/m (zeta 0.2), or Visc 0 and the same damping
+ * as TYPE6's damping curve (fct_IDdv, Fscalev 1): on each rebound the
+ * damper pulls and the contact releases at P_r > 0, losing k P_r^2 / 2.
+ * The hysteresis dissipation is exactly the sum of these over the releases
+ * the events record (before: the normal work less the stored energy, whose
+ * integration error ran backwards by up to 1e-7 J on damped cradles; with
+ * the damping curve, 0: the law was taken for an elastic one), and never
+ * decreases. */
+#define RELEASE_DECK(FUNCT2, LINE6) \
+    "/BEGIN\nball dropped on a damped elastic floor\n      2022         0\n" \
+    "                  kg                   m                   s\n" \
+    "                  kg                   m                   s\n" \
+    "/FUNCT/1\nlinear\n0,0\n1,1000000\n" FUNCT2 BALL_ON_FLOOR "/GRAV/1\ng\n0,Z,0,0,1,,1,-9.81\n" \
+    "/INIVEL/TRA/1\nv\n0,0,-1,1,0\n" \
+    "/INTER/TYPE6/1\nball on floor\n1,2\n\n\n1,0\n\n" LINE6 "\n" \
+    "/RUN\n0.3,0.001\n/END\n"
+static const char *release_decks[2] = {RELEASE_DECK("", "400"),
+                                       RELEASE_DECK("/FUNCT/2\ndamping\n-10,-4000\n10,4000\n", "0,2,0,1")};
 
 static void release_ledger_kept(const rc_model *m) { ENSURE(rc_inter_release_ledger(m, 0)); }
 
-static void test_elastic_damped_release_ledger(void)
+static void release_ledger_check(const char *deck, const char *what)
 {
     char out[512];
-    if (run_to_file(release_deck, "release.rad", out, release_ledger_kept)) return;
+    if (run_to_file(deck, "release.rad", out, release_ledger_kept)) return;
     int ncid, id, dim;
     size_t nt = 0, nev = 0;
     ENSURE(nc_open(out, NC_NOWRITE, &ncid) == NC_NOERR);
@@ -1942,15 +1945,20 @@ static void test_elastic_damped_release_ledger(void)
         nc_free_string(nev, kind);
     }
     const double drop = ledger_drop(ncid, "energy_hysteresis", nt, &last);
-    printf("    %d releases at P > 0: sum k P_r^2 / 2 = %.9e J, energy_hysteresis at the end %.9e J (rel. %.1e), largest "
-           "drop %.1e J\n",
-           nrel, expect, last, fabs(last - expect) / expect, drop);
+    printf("    %s: %d releases at P > 0: sum k P_r^2 / 2 = %.9e J, energy_hysteresis at the end %.9e J (rel. %.1e), "
+           "largest drop %.1e J\n",
+           what, nrel, expect, last, fabs(last - expect) / expect, drop);
     ENSURE(nrel >= 2);
     ENSURE(fabs(last - expect) <= 1e-9 * expect);
     ENSURE(drop == 0.0);
     free(pen);
     free(kind);
     nc_close(ncid);
+}
+
+static void test_elastic_damped_release_ledger(void)
+{
+    for (int k = 0; k < 2; k++) release_ledger_check(release_decks[k], k ? "damping curve" : "Visc");
 }
 
 void suite_passive(void);

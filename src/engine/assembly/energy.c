@@ -34,17 +34,15 @@ int rc_inter_release_ledger(const rc_model *m, int i)
  * Not so with several contact points (they dissipate through P_e, 2.7 of
  * the theory), with the Inacti offset (it moves the law's penetration by
  * itself), or where the contact can release at P > 0 and lose its stored
- * energy: a damper (Visc, the power law's C or spline), or a load curve
+ * energy: a damper (Visc or TYPE6's damping curve, the power law's C or
+ * spline: rc_inter_undamped), or a load curve
  * that goes negative at some P > 0 (its points, or its linear extensions
  * at 0 and beyond the last point). */
 static int inter_elastic(const rc_model *m, int i)
 {
-    if (m->inter_peidx[i] >= 0 || m->inter_inacti[i] != 0) return 0;
-    if (m->inter_law[i] == RC_LAW_POWER) {
-        const rc_power *pw = &m->inter_pw[i];
-        return pw->c == 0.0 && pw->damp == NULL;
-    }
-    if (m->inter_iform[i] != 0 || m->inter_visc[i] != 0.0) return 0;
+    if (m->inter_peidx[i] >= 0 || m->inter_inacti[i] != 0 || !rc_inter_undamped(m, i)) return 0;
+    if (m->inter_law[i] == RC_LAW_POWER) return 1;
+    if (m->inter_iform[i] != 0) return 0;
     const rc_table *tb = &m->table[m->inter_fct_ld[i]];
     const int n = tb->n;
     if (rc_table_value(tb, 0.0) < 0.0 || tb->y[n - 1] < tb->y[n - 2]) return 0;

@@ -1505,6 +1505,49 @@ out:
     rc_model_free(m);
 }
 
+/* A ball started exactly touching a floor (P = 0) while sliding at 1 m/s
+ * and approaching at 1 mm/s, viscous friction (Iform 1, Fric 0.37): at no
+ * normal force the limit is 0, and the viscous form starts saturated, as
+ * at any close. Left unsaturated (the start at P = 0 skipped the mode's
+ * decision that P > 0 and every close make), the whole damper force
+ * C v_t braked the ball with no normal force (a sphere on an incline,
+ * 175000063: 0.96 N at F_n = 0, its sliding stopped within 1.6 ms where
+ * P = 1e-18 m let it slide). Until the ball rolls (at 0.079 s) it slides
+ * on Coulomb's law: the friction impulse is Fric times the normal one,
+ * which the vertical momentum gives, m (v_z(t) - v_z(0) + g t), whatever
+ * the law's ringing (the ball rebounds by 1e-11 m each period). */
+static void test_viscous_friction_starts_saturated_when_touching(void)
+{
+    char deck[2048];
+    snprintf(deck, sizeof deck, "%s", viscous_band_deck);
+    char *run = strstr(deck, "/RUN\n");
+    if (run) snprintf(run, sizeof deck - (size_t)(run - deck), "/INIVEL/TRA/1\nv\n1,0,-0.001,1,0\n/RUN\n0.02,0.001\n/END\n");
+    rc_model *m = TU_COMPILE_OK(deck, "viscous_touch_slide.rad");
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    ENSURE(d && y && run);
+    if (!d || !y) goto out;
+    rc_initial_state(m, y);
+    rc_modes_init(m, d, 0.0, y);
+    ENSURE(d->inter_mode[0] == RC_MODE_CLOSED && d->inter_slip[0] == 1);
+    rc_error e;
+    rc_session *ses = NULL;
+    ENSURE(rc_session_open(m, NULL, &ses, &e) == RC_OK);
+    if (!ses) goto out;
+    ENSURE(rc_run_until(ses, 0.02, &e) == RC_OK);
+    const double *ys = rc_session_state(ses);
+    const double vx = ys ? ys[m->body_yadr[0] + 7] : NAN, vz = ys ? ys[m->body_yadr[0] + 9] : NAN;
+    const double want = 1.0 - 0.37 * (vz + 1e-3 + 9.81 * 0.02);
+    printf("    started saturated: %d; v_x at 0.02 s %.9f m/s, Coulomb sliding %.9f m/s\n", d->inter_slip[0], vx, want);
+    ENSURE(fabs(vx - want) < 1e-7);
+    rc_session_close(ses, NULL, &e);
+out:
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 /* Model m's data (*d) and initial state (malloc'd; NULL, and *d NULL or
  * to free, when out of memory). */
 static double *initial_state_of(const rc_model *m, rc_data **d)
@@ -1983,6 +2026,7 @@ void suite_passive(void)
     RUN_TEST(test_corner_stick_tested_with_its_spring);
     RUN_TEST(test_viscous_reversal_root_waits_for_a_limit);
     RUN_TEST(test_viscous_saturation_needs_the_force_band);
+    RUN_TEST(test_viscous_friction_starts_saturated_when_touching);
     RUN_TEST(test_ball_pivots_over_a_box_edge);
     RUN_TEST(test_roller_pivots_over_a_box_edge);
     RUN_TEST(test_cylinder_level_is_stable);

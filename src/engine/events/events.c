@@ -411,7 +411,13 @@ static void classify(const rc_model *m, rc_data *d, int i, double t, double *y, 
         return;
     }
     if (r.p == 0) {
+        /* touching: closed at zero force, the viscous friction's mode
+         * decided as for any close (saturated: the limit is 0 there; left
+         * unsaturated, a sphere started sliding on an incline at P = 0
+         * exactly was braked by the whole damper force, 0.96 N at no normal
+         * force, where P = 1e-18 m let it slide) */
         enter_zone(m, d, i, t, y, changed);
+        stateless_friction_mode(m, d, i, t, y);
         return;
     }
     /* initial penetration P0 > 0: on the load curve, or (Icor 1 with Iform 1)

@@ -335,6 +335,35 @@ static void test_guards_non_finite_fires(void)
     bench_close(&b);
 }
 
+/* Coulomb's bound at every record: the sphere pressed 1 um into the floor
+ * (F_n = 1 N, k = 1e6 N/m, at rest), TYPE6 Fric 0.3, sticking with its
+ * spring loaded to 0.2 N passes; loaded to 10 N, beyond the limit 0.3 N
+ * (a stick the slip root never saw), it fires, naming the interface. */
+static void test_guards_friction_limit_fires(void)
+{
+    rc_error e;
+    sphere_opts o = DROP;
+    o.fric = 0.3;
+    o.visc = 0.0;
+    o.z = 0.05 - 1e-6;
+    rc_model *m = sphere_model(&o, &e);
+    ENSURE(m != NULL);
+    if (!m) return;
+    ENSURE(m->inter_fr[0].tidx >= 0);
+    bench b;
+    ENSURE(bench_open(&b, m, 0));
+    ENSURE(b.d->inter_mode[0] == RC_MODE_CLOSED && b.d->inter_slip[0] == 0);
+    double *ft = b.y + m->inter_eadr[0] + m->inter_fr[0].tidx;
+    ft[0] = 0.2;
+    ENSURE(bench_record(&b, 0.0) == 0);
+    ft[0] = 10.0;
+    ENSURE(bench_record(&b, 0.001) == 1);
+    const char *msg = rc_guards_message(b.g);
+    printf("    %s\n", msg);
+    ENSURE(strstr(msg, "friction force of /INTER/TYPE6/1 is 10 N") != NULL && strstr(msg, "beyond its limit 0.3 N") != NULL);
+    bench_close(&b);
+}
+
 /* Penetration beyond the bound, and an open interface penetrating. */
 static void test_guards_penetration_fires(void)
 {
@@ -840,6 +869,7 @@ void suite_guards(void)
     RUN_TEST(test_guards_channel_tolerance_follows_rtol);
     RUN_TEST(test_guards_energy_created_fires);
     RUN_TEST(test_guards_non_finite_fires);
+    RUN_TEST(test_guards_friction_limit_fires);
     RUN_TEST(test_guards_penetration_fires);
     RUN_TEST(test_guards_penetration_bound_half_thickness);
     RUN_TEST(test_guards_sphere_centres_fire);

@@ -59,6 +59,7 @@ struct rc_guards {
     mono balance;             /* minus energy_total: the balance never rises */
     /* excursions in progress (reported once each): penetration, centres, open */
     unsigned char *on;        /* [5 ninter] */
+    unsigned char *fric_over; /* [ninter] a friction force beyond its limit reported */
     unsigned char nonfinite;  /* reported once */
     /* results */
     long total;
@@ -112,6 +113,7 @@ rc_guards *rc_guards_new(const rc_model *m, int warn, int show)
     g->hyst = zalloc(ni, sizeof(double));
     g->pmax = zalloc(ni, sizeof(double));
     g->on = zalloc(5 * ni, 1);
+    g->fric_over = zalloc(ni, 1);
     g->closed0 = zalloc(ni, 1);
     g->ever = zalloc(ni, 1);
     g->settled = zalloc(ni, 1);
@@ -120,7 +122,7 @@ rc_guards *rc_guards_new(const rc_model *m, int warn, int show)
     g->ncl = zalloc(ni, sizeof(long));
     g->nleave = zalloc(ni, sizeof(long));
     g->t_settle = zalloc(ni, sizeof(double));
-    if (!g->pbound || !g->fbound || !g->size || !g->gscratch || !g->emax || !g->hyst || !g->pmax || !g->on ||
+    if (!g->pbound || !g->fbound || !g->size || !g->gscratch || !g->emax || !g->hyst || !g->pmax || !g->on || !g->fric_over ||
         !g->closed0 || !g->ever || !g->settled || !g->prev_mode || !g->hist || !g->ncl || !g->nleave || !g->t_settle) {
         rc_guards_free(g);
         return NULL;
@@ -135,7 +137,7 @@ rc_guards *rc_guards_new(const rc_model *m, int warn, int show)
 void rc_guards_free(rc_guards *g)
 {
     if (!g) return;
-    void *p[] = {g->pbound, g->fbound, g->size, g->gscratch, g->emax, g->hyst, g->pmax, g->on, g->row, g->closed0,
+    void *p[] = {g->pbound, g->fbound, g->size, g->gscratch, g->emax, g->hyst, g->pmax, g->on, g->fric_over, g->row, g->closed0,
                  g->ever, g->settled, g->prev_mode, g->hist, g->ncl, g->nleave, g->t_settle};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     free(g);
@@ -644,6 +646,39 @@ static int ledger(rc_guards *g, const rc_data *d, double t, const double *y, con
     return 0;
 }
 
+/* Coulomb's bound at the record: the friction force of a closed contact is
+ * within its limit (Sfric + mu F_n, the filtered limit where a filter acts;
+ * the sum of the points' limits with friction per point), up to the bands
+ * its stick -> slip and saturation roots leave, (1 + RC_SLIP_BAND) L plus
+ * the force band (the viscous form's: at least RC_SLIP_BAND of the force
+ * scale), and 1e-6 of L for the roots' location. The modes' roots keep
+ * every state short of that: a force beyond it is a mode that was never
+ * decided (a viscous friction left unsaturated at a start at P = 0 braked
+ * a sliding sphere with 0.96 N at no normal force). The orthotropic laws
+ * (an ellipse, their report's limit one of its axes) are not checked. 1:
+ * stop. */
+static int friction_within_limits(rc_guards *g, const rc_data *d, double t, const double *y)
+{
+    const rc_model *m = g->m;
+    for (int i = 0; i < m->ninter; i++) {
+        const rc_fric *fr = &m->inter_fr[i];
+        if (fr->kind == RC_FK_NONE || fr->ortho || d->inter_mode[i] != RC_MODE_CLOSED || g->fric_over[i]) continue;
+        rc_inter_report r;
+        rc_inter_report_eval_d(m, d, i, t, y, &r);
+        const double f = sqrt(r.ft[0] * r.ft[0] + r.ft[1] * r.ft[1] + r.ft[2] * r.ft[2]);
+        const double fsc = m->inter_fscale[i], band = fmax(fr->fband, isfinite(fsc) ? RC_SLIP_BAND * fsc : 0.0);
+        const double lim = fmax(r.flim, 0.0), bound = lim * (1.0 + RC_SLIP_BAND + 1e-6) + band;
+        if (!(f > bound)) continue;
+        g->fric_over[i] = 1;
+        if (violate(g, t, t, "friction_limit", m->inter_name[i], f, bound,
+                    "the friction force of %s is %.6g N at t = %.9g s, beyond its limit %.6g N (Sfric + mu F_n, "
+                    "F_n = %.6g N; with its bands %.6g N): friction without the normal force to carry it",
+                    m->inter_name[i], f, t, lim, r.fn, bound))
+            return 1;
+    }
+    return 0;
+}
+
 int rc_guards_record(rc_guards *g, const rc_data *d, double t, const double *y, const frame_buf *fb)
 {
     if (!g) return 0;
@@ -664,6 +699,7 @@ int rc_guards_record(rc_guards *g, const rc_data *d, double t, const double *y, 
                            "non-finite %s force of %s at t = %.9g s: %g", what[k], m->inter_name[i], t, v[k]);
         }
     }
+    if (friction_within_limits(g, d, t, y)) return 1;
     return ledger(g, d, t, y, fb->energy);
 }
 
@@ -760,7 +796,7 @@ void rc_guards_finish(rc_guards *g, const rc_data *d, rc_stats *s, rc_output *o,
     /* the checks */
     char summary[sizeof s->physics_note];
     if (g->total == 0)
-        snprintf(summary, sizeof summary, "passed (finite values, penetrations, dissipation channels, energy balance)");
+        snprintf(summary, sizeof summary, "passed (finite values, penetrations, friction limits, dissipation channels, energy balance)");
     else if (stopped)
         snprintf(summary, sizeof summary, "failed: %s", g->stop_msg);
     else

@@ -287,15 +287,15 @@ static void test_seg_force_distribution(void)
 /* ---- Jacobian ---------------------------------------------------------- */
 
 
-/* A generic state of a two-body model: the initial state with bodies 1 and
- * 2 set to s[0..12] and s[13..25] (position, quaternion, velocity, angular
- * velocity), every later state 0.013 (k - 25). The caller frees it. */
 /* The two bodies' states (13 each) of the checks below: the box in the
  * plate, sliding and turning on it. */
 static const double seg_state[26] = {0.0013, -0.0011, 0.0312, 0.97,  0.011, -0.013, 0.007, 0.31,  -0.23,
                                      -0.17,  3.1,     -2.3,   4.7,   0.0021, 0.0007, -0.2003, 0.99, -0.005,
                                      0.009,  0.003,   -0.41,  0.17,  0.053,  -1.9,   0.7,    2.2};
 
+/* A generic state of a two-body model: the initial state with bodies 1 and
+ * 2 set to s[0..12] and s[13..25] (position, quaternion, velocity, angular
+ * velocity), every later state 0.013 (k - 25). The caller frees it. */
 static double *two_body_state(const rc_model *m, const double s[26])
 {
     double *y = calloc((size_t)m->ny, sizeof(double));
@@ -1132,7 +1132,7 @@ static void test_box_box_jacobian(void)
  * gave it back to the bodies later (two boxes stacked under tilted
  * gravity, 171000103: the friction channel fell by 2.2e-5 J at a flip, and
  * the run stopped, exit 5). The box's node in the plate sticking with a
- * state of about 1 N across its normal and 50 N along it (a normal that
+ * state of 1.4 N across its normal and 50 N along it (a normal that
  * jumped: a box's node whose nearest face changed), the box sliding and
  * turning fast enough that the node's stick damper carries it past the
  * limit; flipped by its root. Put at the state's whole magnitude or on
@@ -1159,7 +1159,7 @@ static void test_seg_point_slip_stores_no_energy(void)
     double *ft = y + m->inter_eadr[0] + m->inter_ns[0];
     for (int j = 0; j < npt; j++) {
         d->pt_slip[pb + j] = 0;
-        const double s0[3] = {2.0, -1.0, 50.0}; /* the plate's normal is about +z: 0.71 N across it */
+        const double s0[3] = {2.0, -1.0, 50.0}; /* the plate's normal is near +z: 1.4 N across it */
         memcpy(ft + ps * j, s0, sizeof s0);
     }
     rc_points_eval(m, d, 0, NULL, 0.0, y, out);

@@ -1521,7 +1521,8 @@ static void test_viscous_friction_starts_saturated_when_touching(void)
     char deck[2048];
     snprintf(deck, sizeof deck, "%s", viscous_band_deck);
     char *run = strstr(deck, "/RUN\n");
-    if (run) snprintf(run, sizeof deck - (size_t)(run - deck), "/INIVEL/TRA/1\nv\n1,0,-0.001,1,0\n/RUN\n0.02,0.001\n/END\n");
+    if (run)
+        snprintf(run, sizeof deck - (size_t)(run - deck), "/INIVEL/TRA/1\nv\n1,0,-0.001,1,0\n/RUN\n0.02,0.001\n/END\n");
     rc_model *m = TU_COMPILE_OK(deck, "viscous_touch_slide.rad");
     if (!m) return;
     rc_data *d = rc_data_new(m);

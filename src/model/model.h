@@ -31,6 +31,7 @@
 #ifndef RC_MODEL_H
 #define RC_MODEL_H
 
+#include <math.h>
 #include <stdint.h>
 
 #include "ricochet/ricochet.h"
@@ -494,6 +495,15 @@ static inline int rc_inter_frictionless(const rc_model *m, int i)
 {
     const rc_fric *fr = &m->inter_fr[i];
     return fr->kind == RC_FK_NONE && !fr->exact && fr->widx < 0;
+}
+
+/* The force band of interface i's friction tests [N]: the force tolerance
+ * of F_t (rc_fric.fband, scales.c), at least RC_SLIP_BAND of the contact's
+ * force scale (the viscous form has no F_t whose tolerance would carry it). */
+static inline double rc_fric_band(const rc_model *m, int i)
+{
+    const double fsc = m->inter_fscale[i], b = m->inter_fr[i].fband, s = isfinite(fsc) ? RC_SLIP_BAND * fsc : 0.0;
+    return b > s ? b : s;
 }
 
 /* Interface i's normal law has no damping of any kind (TYPE6: Visc 0 and

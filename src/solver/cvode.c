@@ -78,7 +78,7 @@
 #define RC_SW_MAX_FAILS 3
 /* the BDF order at most after a restart that follows a fric_turn (cv_restart) */
 #define RC_TURN_MAX_ORDER 2
-/* ... and after a restart where a contact of several points closed (below) */
+/* ... and after a restart where a damped contact of several points closed (below) */
 #define RC_MULTI_MAX_ORDER 3
 /* The explicit method: Cash-Karp 6(4)5 [ARKODE table] */
 #define RC_ERK_TABLE ARKODE_CASH_KARP_6_4_5

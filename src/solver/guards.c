@@ -122,8 +122,9 @@ rc_guards *rc_guards_new(const rc_model *m, int warn, int show)
     g->ncl = zalloc(ni, sizeof(long));
     g->nleave = zalloc(ni, sizeof(long));
     g->t_settle = zalloc(ni, sizeof(double));
-    if (!g->pbound || !g->fbound || !g->size || !g->gscratch || !g->emax || !g->hyst || !g->pmax || !g->on || !g->fric_over ||
-        !g->closed0 || !g->ever || !g->settled || !g->prev_mode || !g->hist || !g->ncl || !g->nleave || !g->t_settle) {
+    if (!g->pbound || !g->fbound || !g->size || !g->gscratch || !g->emax || !g->hyst || !g->pmax || !g->on ||
+        !g->fric_over || !g->closed0 || !g->ever || !g->settled || !g->prev_mode || !g->hist || !g->ncl ||
+        !g->nleave || !g->t_settle) {
         rc_guards_free(g);
         return NULL;
     }
@@ -137,8 +138,8 @@ rc_guards *rc_guards_new(const rc_model *m, int warn, int show)
 void rc_guards_free(rc_guards *g)
 {
     if (!g) return;
-    void *p[] = {g->pbound, g->fbound, g->size, g->gscratch, g->emax, g->hyst, g->pmax, g->on, g->fric_over, g->row, g->closed0,
-                 g->ever, g->settled, g->prev_mode, g->hist, g->ncl, g->nleave, g->t_settle};
+    void *p[] = {g->pbound, g->fbound, g->size, g->gscratch, g->emax, g->hyst, g->pmax, g->on, g->fric_over,
+                 g->row, g->closed0, g->ever, g->settled, g->prev_mode, g->hist, g->ncl, g->nleave, g->t_settle};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     free(g);
 }
@@ -657,23 +658,20 @@ static int ledger(rc_guards *g, const rc_data *d, double t, const double *y, con
  * a sliding sphere with 0.96 N at no normal force). The orthotropic laws
  * (an ellipse, their report's limit one of its axes) are not checked. 1:
  * stop. */
-static int friction_within_limits(rc_guards *g, const rc_data *d, double t, const double *y)
+static int friction_within_limits(rc_guards *g, const rc_data *d, double t, const frame_buf *fb)
 {
     const rc_model *m = g->m;
     for (int i = 0; i < m->ninter; i++) {
         const rc_fric *fr = &m->inter_fr[i];
         if (fr->kind == RC_FK_NONE || fr->ortho || d->inter_mode[i] != RC_MODE_CLOSED || g->fric_over[i]) continue;
-        rc_inter_report r;
-        rc_inter_report_eval_d(m, d, i, t, y, &r);
-        const double f = sqrt(r.ft[0] * r.ft[0] + r.ft[1] * r.ft[1] + r.ft[2] * r.ft[2]);
-        const double fsc = m->inter_fscale[i], band = fmax(fr->fband, isfinite(fsc) ? RC_SLIP_BAND * fsc : 0.0);
-        const double lim = fmax(r.flim, 0.0), bound = lim * (1.0 + RC_SLIP_BAND + 1e-6) + band;
+        const double *ft = fb->ffric + 3 * i, f = sqrt(ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2]);
+        const double lim = fmax(fb->flim[i], 0.0), bound = lim * (1.0 + RC_SLIP_BAND + 1e-6) + rc_fric_band(m, i);
         if (!(f > bound)) continue;
         g->fric_over[i] = 1;
         if (violate(g, t, t, "friction_limit", m->inter_name[i], f, bound,
                     "the friction force of %s is %.6g N at t = %.9g s, beyond its limit %.6g N (Sfric + mu F_n, "
                     "F_n = %.6g N; with its bands %.6g N): friction without the normal force to carry it",
-                    m->inter_name[i], f, t, lim, r.fn, bound))
+                    m->inter_name[i], f, t, lim, fb->fn[i], bound))
             return 1;
     }
     return 0;
@@ -699,7 +697,7 @@ int rc_guards_record(rc_guards *g, const rc_data *d, double t, const double *y, 
                            "non-finite %s force of %s at t = %.9g s: %g", what[k], m->inter_name[i], t, v[k]);
         }
     }
-    if (friction_within_limits(g, d, t, y)) return 1;
+    if (friction_within_limits(g, d, t, fb)) return 1;
     return ledger(g, d, t, y, fb->energy);
 }
 
@@ -796,7 +794,8 @@ void rc_guards_finish(rc_guards *g, const rc_data *d, rc_stats *s, rc_output *o,
     /* the checks */
     char summary[sizeof s->physics_note];
     if (g->total == 0)
-        snprintf(summary, sizeof summary, "passed (finite values, penetrations, friction limits, dissipation channels, energy balance)");
+        snprintf(summary, sizeof summary,
+                 "passed (finite values, penetrations, friction limits, dissipation channels, energy balance)");
     else if (stopped)
         snprintf(summary, sizeof summary, "failed: %s", g->stop_msg);
     else

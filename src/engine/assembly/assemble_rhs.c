@@ -114,6 +114,7 @@ static void report_of(const t6out_r *po, rc_inter_report *r)
     report_normal_of(po, r);
     r->flim = po->flim;
     r->fstored = po->estore;
+    r->ftan = po->ftan;
     r->vslip = po->vslip;
     r->slip_root = po->slip_root;
     for (int k = 0; k < 3; k++) {

@@ -164,6 +164,9 @@ typedef struct rc_inter_report {
     double flim;         /* friction limit Sfric + mu F_n [N] */
     double fstored;      /* energy in the stick springs, |F_t|^2 / (2 K_t) per
                             contact point (K_t its share) [J] */
+    double ftan;         /* |F_t| of the friction state in the tangent plane,
+                            the part fstored counts (one state; 0 with friction
+                            per contact point: rc_points_eval has theirs) [N] */
     double vslip;        /* sliding speed |v_t| [m/s] */
     double slip_root;    /* stick: |F_t|^2 - F_lim^2; slip: v_t . e */
     double vt[3];        /* tangential relative velocity at the contact point [m/s] */

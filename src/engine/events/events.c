@@ -102,21 +102,12 @@ static int turn_state(double *ft, double mag, const double *dir, double sgn, int
     return 1;
 }
 
-/* The magnitude of a friction state ft in the tangent plane of the unit
- * normal n, the part its spring's energy |F_t|^2 / (2 K_t) counts [N]. A
- * state keeps a part along the normal where the normal jumped (a box's
- * node whose nearest face changed turns its normal by 90 degrees). */
-static double tangential_norm(const double *ft, const double *n)
-{
-    const double fdn = ft[0] * n[0] + ft[1] * n[1] + ft[2] * n[2];
-    const double tp[3] = {ft[0] - fdn * n[0], ft[1] - fdn * n[1], ft[2] - fdn * n[2]};
-    return norm3(tp);
-}
-
 /* A friction reset (stick -> slip, slip -> stick) never stores tangential
  * energy |F_t|^2 / (2 K_t) that no work put there: the new state ft keeps
  * its direction with at most the magnitude the state had before in the
- * tangent plane, where its energy is (old: tangential_norm), or
+ * tangent plane, where its energy is (old: the report's ftan, a point's
+ * RC_PT_OUT value; a state keeps a part along the normal where the normal
+ * jumped, a box's node whose nearest face changed), or
  * the slip band fb (docs/theory.md 3.5). A slipping state (slip = 1) also
  * has at least the magnitude fb, so that it keeps a direction that turns at
  * a finite rate (K_t |v_t| / |F_t|); a state without direction is left as
@@ -171,7 +162,7 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
     } else if (n > 0) {
         double *ft = y + m->inter_eadr[i] + m->inter_ns[i];
         rc_points_eval(m, d, i, NULL, t, y, out);
-        for (int j = 0; j < npt; j++) oldn[j] = out[RC_PT_OUT * j + 6]; /* tangential, as tangential_norm */
+        for (int j = 0; j < npt; j++) oldn[j] = out[RC_PT_OUT * j + 6]; /* in the tangent plane (cap_state) */
         for (int j = 0; j < npt; j++)
             if (sel[j])
                 for (int k = 0; k < 3; k++) set_state(ft + ps * j + k, out[RC_PT_OUT * j + 1 + k], changed);
@@ -802,7 +793,7 @@ static void slip_on_limit(const rc_model *m, rc_data *d, int i, double t, double
     rc_inter_report q;
     double *ft = y + m->inter_eadr[i] + fr->tidx;
     report(m, d, i, t, y, &q); /* stick: the applied force */
-    const double old = tangential_norm(ft, q.normal);
+    const double old = q.ftan;
     for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
     const int slip = d->inter_slip[i];
     d->inter_slip[i] = 1;
@@ -835,7 +826,7 @@ static void stick_on_state(const rc_model *m, rc_data *d, int i, double t, doubl
     d->inter_slip[i] = 0;
     if (fr->tidx < 0) return;
     double *ft = y + m->inter_eadr[i] + fr->tidx;
-    const double old = tangential_norm(ft, q.normal);
+    const double old = q.ftan;
     for (int k = 0; k < 3; k++) set_state(ft + k, q.fraw[k], changed);
     if (fr->exact) return;
     cap_state(ft, old, fr->fband, 0, changed);

@@ -130,6 +130,13 @@ grep -q "is unstable" "$tmp/e" && expect static_unstable 3 $rc "($(head -c 200 "
 "$bin" run validation/joint_pendulum/case.rad -o "$tmp/jc.nc" --method cvode > "$tmp/e" 2>&1; rc=$?
 grep -q "joints" "$tmp/e" && grep -q "IDA" "$tmp/e" && [ ! -e "$tmp/jc.nc" ] &&
     expect joints_on_cvode 2 $rc "($(head -c 160 "$tmp/e"))" || expect joints_on_cvode 2 99 "(exit $rc: $(head -c 160 "$tmp/e"))"
+# settles on stderr: the run's first ten listed, then one line for the rest
+# (17 settle here, every one an event in the file and counted in the summary)
+"$bin" run tests/data/settle_many.rad -o "$tmp/sm.nc" > "$tmp/o" 2>"$tmp/e"; rc=$?
+n=$(grep -c "settled into persistent contact at t = .* (bounces accumulated" "$tmp/e")
+[ "$n" = 10 ] && grep -q "further settles of this run are not listed here" "$tmp/e" &&
+    grep -q "^settled contacts 1[1-9] " "$tmp/o" && expect settle_lines_capped 0 $rc "" ||
+    expect settle_lines_capped 0 99 "(exit $rc, $n lines: $(grep '^settled' "$tmp/o"))"
 # method switching (--switch, --no-switch): the summary's line of switches
 "$bin" run validation/bounce_settle/case.rad -o "$tmp/sw.nc" --switch > "$tmp/o" 2>&1; rc=$?
 grep -q "^method switches [1-9][0-9]* to explicit, [1-9][0-9]* to implicit; explicit steps [1-9]" "$tmp/o" &&

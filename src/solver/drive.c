@@ -572,6 +572,9 @@ void rc_bk_progress_line(double tend, const rc_stats *s, double t, long steps, d
 }
 
 
+/* the settles a run lists on stderr, one line each */
+#define RC_SETTLE_LINES 10
+
 /* A contact the engine settled into persistent contact at t (its event
  * contact_settle, engine/events/settle.c; docs/theory.md 5.2): the event
  * written, the statistics, a line on stderr with the progress. */
@@ -581,10 +584,19 @@ static rc_status settled(const rc_model *m, const rc_data *d, ev_sink *sink, dou
     s->settles++;
     s->t_settle = t;
     s->events++;
-    if (show) progress_break(); /* not on the progress line's tail */
-    if (show) /* with the progress (not with `ricochet run -q`, nor for an embedding without it) */
+    /* with the progress (not with `ricochet run -q`, nor for an embedding
+     * without it); the first RC_SETTLE_LINES of a run: a box chattering on
+     * its corners settles hundreds of times, every one of them in the
+     * results file's events and counted in the summary */
+    if (show && s->settles <= RC_SETTLE_LINES + 1) progress_break(); /* not on the progress line's tail */
+    if (show && s->settles <= RC_SETTLE_LINES)
         fprintf(stderr, "ricochet: %s settled into persistent contact at t = %.9g s (bounces accumulated; %s)\n",
                 m->inter_name[ev->inter], t, rc_settle_hold(m, ev->inter));
+    else if (show && s->settles == RC_SETTLE_LINES + 1)
+        fprintf(stderr, "ricochet: %s settled into persistent contact at t = %.9g s; the further settles of this run "
+                        "are not listed here (all are events contact_settle in the results file, counted in the "
+                        "summary)\n",
+                m->inter_name[ev->inter], t);
     return rc_bk_write_event(m, d, sink, t, y, ev, err);
 }
 

@@ -94,7 +94,12 @@ def perturb(scene, eps, rng):
     scene is symmetric: a box spinning flat on the floor keeps w_x = w_y = 0
     exactly in the deck's own frame, while the rounding of a turned frame
     tilts it, and an unstable flat spin then rocks (a translation alone
-    leaves it flat and the yardstick blind)."""
+    leaves it flat and the yardstick blind). Its velocity is rounded too, by
+    a random vector of length eps |v| / L: a sliding box hopping on an
+    elastic floor under a pressure-strengthening friction law trips at a
+    time that a change of 1e-14 m/s in its start decides (179000179), while
+    the positions' rounding alone happened to leave it within the
+    yardstick."""
     s = copy.deepcopy(scene)
     L = float(scene["scales"]["L"]) or 1.0
     move = {}
@@ -105,6 +110,9 @@ def perturb(scene, eps, rng):
         c0 = np.asarray(b["x"], float)
         move[b["id"]] = (c0, c0 + d, Rb)
         b["x"] = list(c0 + d)
+        v = np.asarray(b["v"], float)
+        dv = rng.normal(size=3)
+        b["v"] = list(v + dv * (eps * np.linalg.norm(v) / L / np.linalg.norm(dv)))
         b["w"] = list(Rb @ np.asarray(b["w"], float))
         J = Rb @ np.asarray(b["J"], float) @ Rb.T
         b["J"] = [list(r) for r in 0.5 * (J + J.T)]

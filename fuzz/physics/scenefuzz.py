@@ -154,6 +154,7 @@ def scene_extent(scene):
 # running
 
 
+REGRESSION_TIMEOUT = 60.0  # [s] of CPU: the least time limit of a regression deck in `check`
 MAX_OUTPUT_MB = 200.0   # a results file larger than this stops the run (a_output_size)
 KEEP_NC_MB = 20.0       # results files kept with a violating scene, in all
 
@@ -621,7 +622,12 @@ def cmd_check(a):
             "ricochet": os.path.abspath(a.ricochet), "timeout": a.timeout,
             "keep_dir": a.out and os.path.join(a.out, "scenes")}
     files = regression_files([os.path.join(HERE, "regressions")]) if not a.no_regressions else []
-    jobs = [("scene", (s, None, opts)) for s in seeds] + [("reg", (f, opts)) for f in files]
+    # the regression decks at REGRESSION_TIMEOUT at least: known scenes,
+    # some costly by nature (box_stack_power_rdf_rocking_zeno: 18.5 s of
+    # CPU), that a limit sized for the random sample would turn into
+    # time-outs on a slower or loaded machine
+    ropts = dict(opts, timeout=max(a.timeout, REGRESSION_TIMEOUT))
+    jobs = [("scene", (s, None, opts)) for s in seeds] + [("reg", (f, ropts)) for f in files]
     t0 = time.time()
     fail = xfail = npass = 0
     with multiprocessing.Pool(a.jobs) as pool:

@@ -911,8 +911,10 @@ static void test_case_error_grav_bcs_inivel(void)
                        "card /INIVEL/AXIS/1", "not supported yet");
     EXPECT_INPUT_ERROR("iniskew.rad", "/INIVEL/TRA/1\nv\n0,0,1,5,3\n" RUN_CARD, 3,
                        "field skew_ID", "no such skew");
+    /* some translations held along a skew's axes are read (model/imposed.h):
+     * the skew must exist */
     EXPECT_INPUT_ERROR("bcsskew.rad", "/BCS/1\nb\n   110 000         3\n" RUN_CARD, 3, "card /BCS/1",
-                       "field skew_ID", "holds some translations along the axes of skew 3", "not supported yet");
+                       "field skew_ID", "no such skew");
     EXPECT_INPUT_ERROR("bcsskew.rad", "/BCS/1\nb\n   111 001         3\n" RUN_CARD, 3, "card /BCS/1",
                        "field skew_ID", "holds some rotations about the axes of skew 3", "not supported yet");
     EXPECT_INPUT_ERROR("bcsskew.rad", "/BCS/1\nb\n   111 000         3\n" RUN_CARD, 3, "card /BCS/1",

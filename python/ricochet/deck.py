@@ -124,9 +124,10 @@ class Deck:
         self.add(f"/GRAV/{gid}", f"{0:>10d}{direction:>10s}{0:>10d}{sensor:>10d}{grnod:>10d}" + " " * 10 + r20(1.0) + r20(fscale),
                  title="gravity")
 
-    def bcs(self, bid, grnod, trarot="111 111", title="fixed"):
-        """/BCS: Trarot 'TxTyTz RxRyRz' (default: the body fixed), node group."""
-        self.add(f"/BCS/{bid}", f"{trarot:>10s}{0:>10d}{grnod:>10d}", title=title)
+    def bcs(self, bid, grnod, trarot="111 111", title="fixed", skew=0):
+        """/BCS: Trarot 'TxTyTz RxRyRz' (default: the body fixed), node group;
+        skew: the skew_ID whose axes the flags are along (0: global axes)."""
+        self.add(f"/BCS/{bid}", f"{trarot:>10s}{skew:>10d}{grnod:>10d}", title=title)
 
     def grav_fct(self, gid, direction, fscale, fct, grnod=0, ascale=1.0):
         """/GRAV with a time function fct (Fscale_y f(t / Ascale_x))."""

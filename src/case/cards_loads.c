@@ -259,14 +259,10 @@ rc_status rc_card_bcs(rc_reader *rd, const rc_block *b)
         return rc_case_fail(rd, &b->lines[1].loc, b->name, "Trarot",
                             "expected up to six 0/1 flags TxTyTz RxRyRz (e.g. \"111 000\"), got %s",
                             f[0].got);
-    /* with a skew: the flags held along its axes; ricochet holds global
-     * translations and body-frame rotations, so only all or none of each
-     * three (the same set in any frame) */
-    if (x->skew_id && (x->fix[0] + x->fix[1] + x->fix[2]) % 3 != 0)
-        return rc_case_fail(rd, &b->lines[1].loc, b->name, "skew_ID",
-                            "Trarot %s holds some translations along the axes of skew %d: not supported yet "
-                            "(with a skew, Tx Ty Tz all held or all free; ricochet holds global translations)",
-                            f[0].got, x->skew_id);
+    /* with a skew: the flags held along its axes; one or two translations
+     * are held along the skew's axes (model/imposed.h); ricochet holds
+     * body-frame rotations, so only all or none of the three (the same set
+     * in any frame) */
     if (x->skew_id && (x->fix[3] + x->fix[4] + x->fix[5]) % 3 != 0)
         return rc_case_fail(rd, &b->lines[1].loc, b->name, "skew_ID",
                             "Trarot %s holds some rotations about the axes of skew %d: not supported yet "

@@ -324,6 +324,14 @@ typedef struct rc_case_bcs {
     rc_loc line_loc; /* the data line */
 } rc_case_bcs;
 
+/* A /BCS holding one or two of Tx Ty Tz along a skew's axes (not global
+ * components: the velocity along each held axis, model/imposed.h). */
+static inline int rc_bcs_skewed_translations(const rc_case_bcs *b)
+{
+    const int n = (b->fix[0] == 1) + (b->fix[1] == 1) + (b->fix[2] == 1);
+    return b->skew_id != 0 && n > 0 && n < 3;
+}
+
 /* /PART/part_ID (docs/case-format.md): Radioss's line 1 (prop_ID, mat_ID of
  * the part's elements); with ricochet's optional line 2, also a rigid body
  * or a named subset of its surfaces (for /FRICTION). */

@@ -308,11 +308,15 @@ static rc_status compile_bodies(const rc_case *c, rc_model *m, rc_error *err)
         int all = 1, nrot = 0;
         for (int j = 0; j < 6; j++) all &= bc->fix[j] == 1;
         for (int j = 3; j < 6; j++) nrot += bc->fix[j] == 1;
+        /* one or two translations held along a skew's axes: not global
+         * components but the velocity along each axis, held by the imposed
+         * velocities' projection (rc_imp_compile) */
+        const int tskew = rc_bcs_skewed_translations(bc);
         st = group_bodies(c, bc->grnod_id, bl, card, flag, err);
         for (int b = 0; b < c->nrbody && !st; b++) {
             if (!flag[b]) continue;
             if (all) m->body_fixed[b] = 1;
-            for (int j = 0; j < 6; j++) m->body_dofmask[6 * b + j] |= bc->fix[j] == 1;
+            for (int j = 0; j < 6; j++) m->body_dofmask[6 * b + j] |= bc->fix[j] == 1 && !(j < 3 && tskew);
             if (nrot) bcs_rot[b] = k;
         }
     }

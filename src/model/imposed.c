@@ -18,20 +18,138 @@
 #include "model/imposed.h"
 #include "model/sensor.h"
 
+/* Two axes held on one body by /BCS: the same when |cos| > 1 - tol,
+ * orthogonal when |cos| <= tol */
+#define RC_BCS_AXIS_TOL 1e-9
+
 
 void rc_imp_free(rc_imposed *p)
 {
     if (!p) return;
-    void *a[] = {p->tu, p->tsk, p->sslot, p->tbody, p->tdir, p->trow, p->ttab, p->tascale, p->tfscale, p->ttstop, p->ttstart, p->ttshift, p->tsens, p->tson, p->rsens, p->rbody, p->rtab,
+    void *a[] = {p->tu, p->tsk, p->sslot, p->tbody, p->tdir, p->trow, p->ttab, p->tbcs, p->tascale, p->tfscale, p->ttstop, p->ttstart, p->ttshift, p->tsens, p->tson, p->rsens, p->rbody, p->rtab,
                  p->rascale, p->rfscale, p->rtstop, p->rqslot, p->wslot, p->row_imp};
     for (size_t k = 0; k < sizeof a / sizeof a[0]; k++) free(a[k]);
     free(p);
 }
 
+/* The translations that /BCS cards with a skew hold along its axes (one or
+ * two of Tx Ty Tz, rc_bcs_skewed_translations): for each body of the card's
+ * group, each held axis (a unit vector in global axes), the card's id;
+ * owner: the /IMPVEL card driving each body DOF (-1: none). A node in no
+ * body (fixed in space) and a fixed body are left out; an axis a body
+ * already holds (the group naming it twice, two cards on one skew) is
+ * taken once. Refused, not supported yet: a moving skew (its axes turn
+ * with its nodes), a body with an imposed translation or a translation
+ * held along a global axis (rows that another rule writes), axes of two
+ * cards that are not orthogonal (the projections applied one after the
+ * other are the projection on the free axes only for orthogonal ones). */
+static rc_status bcs_skew_holds(const rc_case *c, const rc_model *m, const int *owner, int **hb_out, double **hu_out,
+                                int **hid_out, int *nh_out, rc_error *err)
+{
+    int cap = 0;
+    for (int k = 0; k < c->nbcs; k++) {
+        const int g = rc_case_find_grnod(c, c->bcs[k].grnod_id);
+        if (rc_bcs_skewed_translations(&c->bcs[k]) && g >= 0) cap += 2 * c->grnod[g].n;
+    }
+    int *hb = malloc(((size_t)cap + 1) * sizeof(int)), *hid = malloc(((size_t)cap + 1) * sizeof(int));
+    double *hu = malloc((3 * (size_t)cap + 1) * sizeof(double));
+    int nh = 0;
+    rc_status st = RC_OK;
+    if (!hb || !hid || !hu) st = RC_SET(err, RC_ENOMEM, "out of memory");
+    for (int k = 0; k < c->nbcs && !st; k++) {
+        const rc_case_bcs *bc = &c->bcs[k];
+        if (!rc_bcs_skewed_translations(bc)) continue;
+        const rc_loc bl = rc_loc_or(bc->line_loc, bc->loc);
+        const int s = rc_case_find_skew(c, bc->skew_id), g = rc_case_find_grnod(c, bc->grnod_id);
+        if (s < 0 || g < 0) continue; /* the reader and the /BCS compile name these */
+        const rc_case_skew *sk = &c->mesh->skew[s];
+        if (sk->mov) {
+            st = RC_SET(err, RC_EINPUT,
+                        RC_LOCFMT "card /BCS/%d, field skew_ID: /SKEW/%s/%d moves with its nodes: translations held "
+                        "along some of its axes are not supported yet (expected a /SKEW/FIX, or Tx Ty Tz all held or "
+                        "all free)",
+                        RC_LOC(bl), bc->id, sk->mov == 2 ? "MOV2" : "MOV", sk->id);
+            break;
+        }
+        for (int j = 0; j < c->grnod[g].n && !st; j++) {
+            const int b = rc_case_body_of_node(c, c->grnod[g].nodes[j]);
+            if (b < 0 || m->body_fixed[b]) continue;
+            const int *own = owner + 6 * b;
+            const int imp = own[0] >= 0 ? own[0] : own[1] >= 0 ? own[1] : own[2];
+            if (imp >= 0) {
+                st = RC_SET(err, RC_EINPUT,
+                            RC_LOCFMT "card /BCS/%d, field skew_ID: /RBODY/%d also has an imposed translation "
+                            "(/IMPVEL/%d): translations held along a skew's axes together with an imposed one are "
+                            "not supported yet",
+                            RC_LOC(bl), bc->id, m->body_id[b], c->impvel[imp].id);
+                break;
+            }
+            if (m->body_dofmask[6 * b] || m->body_dofmask[6 * b + 1] || m->body_dofmask[6 * b + 2]) {
+                st = RC_SET(err, RC_EINPUT,
+                            RC_LOCFMT "card /BCS/%d, field skew_ID: /RBODY/%d also has a translation held along a "
+                            "global axis by another /BCS: global and skewed translation holds on one body are not "
+                            "supported yet together (expected one /BCS, or the holds along one skew's axes)",
+                            RC_LOC(bl), bc->id, m->body_id[b]);
+                break;
+            }
+            for (int a = 0; a < 3 && !st; a++) {
+                if (bc->fix[a] != 1) continue;
+                const double *u = sk->axis[a];
+                int dup = 0;
+                for (int h = 0; h < nh && !st && !dup; h++) {
+                    if (hb[h] != b) continue;
+                    const double d = u[0] * hu[3 * h] + u[1] * hu[3 * h + 1] + u[2] * hu[3 * h + 2];
+                    if (fabs(d) > 1.0 - RC_BCS_AXIS_TOL) dup = 1;
+                    else if (fabs(d) > RC_BCS_AXIS_TOL)
+                        st = RC_SET(err, RC_EINPUT,
+                                    RC_LOCFMT "card /BCS/%d, field skew_ID: /RBODY/%d holds a translation along the "
+                                    "%c' axis of /SKEW/FIX/%d, which is not orthogonal to one /BCS/%d holds (cosine "
+                                    "%.6g): holds along axes of different skews are supported when orthogonal only",
+                                    RC_LOC(bl), bc->id, m->body_id[b], "XYZ"[a], sk->id, hid[h], d);
+                }
+                if (st || dup) continue;
+                hb[nh] = b;
+                hid[nh] = bc->id;
+                for (int i = 0; i < 3; i++) hu[3 * nh + i] = u[i];
+                nh++;
+            }
+        }
+    }
+    /* a body's axes adjacent (the right-hand side applies them one after
+     * the other from its first entry's free rates): a stable sort by body */
+    for (int h = 1; h < nh && !st; h++)
+        for (int q = h; q > 0 && hb[q - 1] > hb[q]; q--) {
+            const int tb = hb[q], ti = hid[q];
+            double tu[3];
+            memcpy(tu, hu + 3 * q, sizeof tu);
+            hb[q] = hb[q - 1];
+            hid[q] = hid[q - 1];
+            memcpy(hu + 3 * q, hu + 3 * (q - 1), sizeof tu);
+            hb[q - 1] = tb;
+            hid[q - 1] = ti;
+            memcpy(hu + 3 * (q - 1), tu, sizeof tu);
+        }
+    if (st) {
+        free(hb);
+        free(hu);
+        free(hid);
+        hb = hid = NULL;
+        hu = NULL;
+        nh = 0;
+    }
+    *hb_out = hb;
+    *hu_out = hu;
+    *hid_out = hid;
+    *nh_out = nh;
+    return st;
+}
+
 rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
 {
     m->imp = NULL;
-    if (c->nimpvel == 0) return RC_OK;
+    int nbs = 0; /* /BCS cards holding translations along a skew's axes */
+    for (int k = 0; k < c->nbcs; k++) nbs += rc_bcs_skewed_translations(&c->bcs[k]);
+    if (c->nimpvel == 0 && nbs == 0) return RC_OK;
     const int n = c->nimpvel, nb = m->nbody;
     rc_imposed *p = calloc(1, sizeof *p);
     /* which card drives each body DOF (-1: none) */
@@ -190,6 +308,11 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
             if (!st) owner[6 * b + dk] = k;
         }
     }
+    /* the translations held along skew axes by /BCS (hb, hu, hid: body,
+     * axis, card, nh of them) */
+    int nh = 0, *hb = NULL, *hid = NULL;
+    double *hu = NULL;
+    if (!st && nbs) st = bcs_skew_holds(c, m, owner, &hb, &hu, &hid, &nh, err);
     /* count and fill: translations one by one (a skewed card once per
      * body), rotations per body */
     for (int b = 0; b < nb && !st; b++) {
@@ -202,11 +325,13 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
         }
         p->nr += rot;
     }
+    p->nt += nh;
     if (!st) {
         p->tbody = calloc((size_t)p->nt + 1, sizeof(int));
         p->tdir = calloc((size_t)p->nt + 1, sizeof(int));
         p->trow = calloc((size_t)p->nt + 1, sizeof(int));
         p->ttab = calloc((size_t)p->nt + 1, sizeof(int));
+        p->tbcs = calloc((size_t)p->nt + 1, sizeof(int));
         p->tascale = calloc((size_t)p->nt + 1, sizeof(double));
         p->tfscale = calloc((size_t)p->nt + 1, sizeof(double));
         p->ttstop = calloc((size_t)p->nt + 1, sizeof(double));
@@ -223,7 +348,7 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
         p->rfscale = calloc(3 * (size_t)p->nr + 1, sizeof(double));
         p->rtstop = calloc((size_t)p->nr + 1, sizeof(double));
         p->rqslot = calloc(12 * (size_t)p->nr + 1, sizeof(int64_t));
-        if (!p->tbody || !p->tdir || !p->trow || !p->ttab || !p->tascale || !p->tfscale || !p->ttstop || !p->ttstart || !p->ttshift || !p->tson || !p->tsens || !p->rsens || !p->tu || !p->tsk || !p->rbody ||
+        if (!p->tbody || !p->tdir || !p->trow || !p->ttab || !p->tbcs || !p->tascale || !p->tfscale || !p->ttstop || !p->ttstart || !p->ttshift || !p->tson || !p->tsens || !p->rsens || !p->tu || !p->tsk || !p->rbody ||
             !p->rtab || !p->rascale || !p->rfscale || !p->rtstop || !p->rqslot)
             st = RC_SET(err, RC_ENOMEM, "out of memory");
     }
@@ -274,6 +399,7 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
                 p->ttshift[it] = tsh[k];
                 p->tson[it] = ton_rt[k];
                 p->tsens[it] = v->hold_sens - 1;
+                p->tbcs[it] = 0;
                 it++;
             } else {
                 p->rtab[3 * ir + j - 3] = tab;
@@ -285,6 +411,32 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
         }
         ir += rot;
     }
+    /* the held skew axes: a velocity of zero along each, from t = 0 on;
+     * the initial velocity loses its component along it (held DOFs start
+     * at rest) */
+    for (int h = 0; h < nh && !st; h++, it++) {
+        const int b = hb[h];
+        const double *uh = hu + 3 * h;
+        double *v0 = m->body_y0 + RC_NB * b + 7;
+        const double uv = uh[0] * v0[0] + uh[1] * v0[1] + uh[2] * v0[2];
+        for (int i = 0; i < 3; i++) v0[i] -= uv * uh[i];
+        p->tbody[it] = b;
+        p->tdir[it] = -1;
+        for (int i = 0; i < 3; i++) p->tu[3 * it + i] = uh[i];
+        p->tsk[it] = p->nsk++;
+        p->ttab[it] = -1;
+        p->tbcs[it] = hid[h];
+        p->tascale[it] = 1.0;
+        p->tfscale[it] = 0.0;
+        p->ttstop[it] = INFINITY;
+        p->ttstart[it] = -INFINITY;
+        p->ttshift[it] = 0.0;
+        p->tson[it] = -1;
+        p->tsens[it] = -1;
+    }
+    free(hb);
+    free(hu);
+    free(hid);
     free(owner);
     free(dir);
     free(u);
@@ -422,6 +574,10 @@ void rc_imp_print(const rc_model *m, FILE *f)
         if (p->tson[k] >= 0 && m->sens_id)
             snprintf(from, sizeof from, "t_on, when sensor %d turns on (a time found in the run),", m->sens_id[p->tson[k]]);
         else snprintf(from, sizeof from, "%.5g", isfinite(p->ttstart[k]) ? p->ttstart[k] : 0.0);
+        if (p->ttab[k] < 0) {
+            fprintf(f, "  /RBODY/%-6d velocity %s held at 0 (/BCS/%d)\n", m->body_id[p->tbody[k]], what, p->tbcs[k]);
+            continue;
+        }
         fprintf(f, "  /RBODY/%-6d velocity %s = %.5g f(%s / %.5g) (/FUNCT/%d) from %s until %s\n",
                 m->body_id[p->tbody[k]], what, p->tfscale[k], arg, p->tascale[k], m->table[p->ttab[k]].id, from,
                 until);

@@ -19,6 +19,10 @@
  * lambda = m (f' - u.a_free): the three rates become
  * a_free + u (f' - u.a_free), their Jacobian rows (I - u u^T) the free ones
  * (a body with a skewed card has no other imposed or held translation).
+ * A /BCS with a skew holding one or two of Tx Ty Tz holds the velocity along
+ * each held skew axis at zero the same way (an entry whose function is
+ * zero, ttab -1): orthogonal axes, so that their projections applied one
+ * after the other are the projection on the free ones.
  *
  * Rotations: the angular velocity state is in the body frame. A body with a
  * rotational /IMPVEL has its whole angular velocity imposed in global axes,
@@ -66,7 +70,10 @@ typedef struct rc_imposed {
     int *tsk;            /* [nt] index among the skewed cards, -1 for a global axis */
     int nsk;             /* skewed cards                                     */
     int64_t *sslot;      /* [nsk*3*ny] Jacobian slots of (row x, y, z, column), -1 absent */
-    int *ttab;           /* [nt] table index of the time function           */
+    int *ttab;           /* [nt] table index of the time function; -1: a
+                            translation held at zero along a skew axis by
+                            /BCS (tbcs)                                      */
+    int *tbcs;           /* [nt] the id of the /BCS holding it, 0: /IMPVEL   */
     double *tascale, *tfscale, *ttstop; /* [nt] [s] [m/s] [s]               */
     double *ttstart;     /* [nt] Tstart [s]: imposed for ttstart < t <= ttstop;
                             -INFINITY (Tstart <= 0) from t = 0 on; with a

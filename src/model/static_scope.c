@@ -103,6 +103,13 @@ rc_status rc_static_scope_alt(const rc_model *m, const char *how, const char *al
      * its Tstop; a translation along a skew axis and a later start
      * (Tstart > 0) are not in this version */
     for (int k = 0; m->imp && k < m->imp->nt; k++)
+        if (m->imp->tbcs[k])
+            RC_RAISE(err, RC_EINPUT,
+                     RC_LOCFMT "card /BCS/%d: " RC_STATIC_NOT " (%s, /RBODY/%d); expected Tx Ty Tz all held or all "
+                               "free with a skew, or %s",
+                     RC_LOC(m->end_loc), m->imp->tbcs[k], "translations held along some of a skew's axes", how,
+                     m->body_id[m->imp->tbody[k]], alt);
+    for (int k = 0; m->imp && k < m->imp->nt; k++)
         if (m->imp->tdir[k] < 0)
             RC_RAISE(err, RC_EINPUT,
                      RC_LOCFMT "card /IMPVEL: " RC_STATIC_NOT " (%s, /RBODY/%d); expected a velocity along a global "

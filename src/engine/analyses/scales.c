@@ -194,7 +194,7 @@ static double imposed_speed(const rc_model *m, int b, double L)
     double v = 0.0;
     if (!p) return 0.0;
     for (int k = 0; k < p->nt; k++)
-        if (p->tbody[k] == b) v += fabs(p->tfscale[k]) * table_max_abs(&m->table[p->ttab[k]]);
+        if (p->tbody[k] == b && p->ttab[k] >= 0) v += fabs(p->tfscale[k]) * table_max_abs(&m->table[p->ttab[k]]);
     for (int k = 0; k < p->nr; k++)
         if (p->rbody[k] == b)
             for (int j = 0; j < 3; j++)

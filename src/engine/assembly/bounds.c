@@ -161,7 +161,7 @@ void rc_scene_scales(const rc_model *m, rc_scene *s)
     /* imposed speeds: translations, and rotations at the body's size */
     const rc_imposed *p = m->imp;
     for (int k = 0; p && k < p->nt; k++)
-        s->vimp = fmax(s->vimp, fabs(p->tfscale[k]) * table_max_abs(&m->table[p->ttab[k]]));
+        if (p->ttab[k] >= 0) s->vimp = fmax(s->vimp, fabs(p->tfscale[k]) * table_max_abs(&m->table[p->ttab[k]]));
     for (int k = 0; p && k < p->nr; k++)
         for (int j = 0; j < 3; j++)
             if (p->rtab[3 * k + j] >= 0)

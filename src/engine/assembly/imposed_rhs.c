@@ -17,6 +17,7 @@
 
 double rc_imp_rate(const rc_model *m, int tab, double ascale, double fscale, double t)
 {
+    if (tab < 0) return 0.0; /* held at zero (/BCS along a skew axis) */
     double f, df;
     rc_table_eval(&m->table[tab], t / ascale, &f, &df);
     return fscale * df / ascale;
@@ -32,11 +33,15 @@ void rc_imp_rhs(const rc_model *m, const rc_data *d, double t, const double *y, 
         const int r = p->trow[k];
         const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t - RC_IMP_T_SHIFT(p, k, d->sens_ton));
         if (p->tdir[k] < 0) {
-            /* along u: the support's force m lambda u, lambda = a - u.a_free */
+            /* along u: the support's force m lambda u, lambda = a - u.a_free;
+             * a body's several axes (/BCS, orthogonal, adjacent entries)
+             * one after the other, u.a_free unchanged by the projections
+             * before, and the free rates those of the body's first entry */
             const double *u = p->tu + 3 * k;
+            const int first = !(k > 0 && p->tdir[k - 1] < 0 && p->tbody[k - 1] == p->tbody[k]);
             double ua = 0.0, uv = 0.0;
             for (int i = 0; i < 3; i++) {
-                d->sc->imp_free[r + i] = ydot[r + i];
+                if (first) d->sc->imp_free[r + i] = ydot[r + i];
                 ua += u[i] * ydot[r + i];
                 uv += u[i] * y[r + i];
             }

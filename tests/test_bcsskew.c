@@ -209,6 +209,10 @@ static void test_bcsskew_errors(void)
     /* with an imposed translation */
     ENSURE(tu_text_error(rail_deck("011 000", "/IMPVEL/4\nv\n         1         X         0         0         1\n"),
                          "imp.rad", "card /BCS/1", "/IMPVEL/4", "not supported yet", (const char *)NULL) == 0);
+    /* an imposed velocity along a skew axis not orthogonal to the held ones */
+    ENSURE(tu_text_error(rail_deck("011 000", "/SKEW/FIX/9\ntilted\n0,0,0\n0,0.6,0.8\n0,-0.8,0.6\n"
+                                              "/IMPVEL/4\nv\n         1         Y         9         0         1\n"),
+                         "impskew.rad", "card /BCS/1", "/IMPVEL/4", "not orthogonal", (const char *)NULL) == 0);
     /* axes of two skews that are not orthogonal */
     static const char two[] = "/SKEW/FIX/9\ntilted\n0,0,0\n0,0.6,0.8\n0,-0.8,0.6\n"
                               "/BCS/5\nb\n   001 000         9         1\n";
@@ -230,8 +234,47 @@ static void test_bcsskew_errors(void)
     rc_model_free(m);
 }
 
+/* The ball on the rail driven along it (/IMPVEL Dir X on skew 7: X', the
+ * rail; Y', Z' held by /BCS): x(t) = x0 + V t u, the velocity V u from
+ * t = 0 (the /INIVEL's other components removed), whatever gravity does;
+ * W_imp takes the work of the drive against gravity, m g sin30 V t. */
+static void test_bcsskew_driven_along_the_rail(void)
+{
+    const double V = 0.7, u[3] = {sqrt(3.0) / 2, 0.0, 0.5};
+    rc_model *m = TU_COMPILE_OK(rail_deck("011 000", "/FUNCT/2\none\n0,1\n10,1\n"
+                                                     "/IMPVEL/4\nv\n         2         X         7         0         1\n"
+                                                     "                 1.0                 0.7\n"),
+                                "drive.rad");
+    if (!m) return;
+    ENSURE(m->imp && m->imp->nt == 3 && m->imp->nsk == 3);
+    int nfirst = 0;
+    for (int k = 0; k < m->imp->nt; k++) nfirst += m->imp->tfirst[k];
+    ENSURE(nfirst == 1);
+    double *y = calloc((size_t)rc_model_state_size(m), sizeof(double));
+    rc_error e;
+    rc_error_clear(&e);
+    rc_run_options o = {.t_end_override = 1.0, .y_end = y};
+    ENSURE(rc_run(m, &o, NULL, &e) == RC_OK);
+    double ex = 0, ev = 0;
+    const double x0[3] = {0.0, 0.0, 1.0};
+    for (int i = 0; i < 3; i++) {
+        ex = fmax(ex, fabs(y[i] - (x0[i] + V * 1.0 * u[i])));
+        ev = fmax(ev, fabs(y[7 + i] - V * u[i]));
+    }
+    const double wimp = y[m->imp->wadr], wexp = -2.0 * 9.81 * 0.5 * V * 1.0;
+    printf("    driven along the rail: |x - x_exact| %.2e m, |v - V u| %.2e m/s at 1 s, W_imp %.9g J (%.9g J)\n", ex,
+           ev, wimp, wexp);
+    ENSURE(ex < 1e-9);
+    ENSURE(ev < 1e-12);
+    ENSURE_NEAR(wimp, wexp, 1e-8, 0);
+    free(y);
+    rc_model_free(m);
+}
+
+void suite_bcsskew(void);
 void suite_bcsskew(void)
 {
+    RUN_TEST(test_bcsskew_driven_along_the_rail);
     RUN_TEST(test_bcsskew_rail_closed_form);
     RUN_TEST(test_bcsskew_rates_and_jacobian);
     RUN_TEST(test_bcsskew_errors);

@@ -92,6 +92,18 @@ def vec(w, v, dim=LEN):
     return w.line(("r", v[0], dim), ("r", v[1], dim), ("r", v[2], dim))
 
 
+FRAME_SKEW_ID = 9000    # the /SKEW/FIX of a turned scene's /BCS and /IMPVEL
+
+
+def frame_skew(scene):
+    """Whether the scene, turned by the frame variant (transform), writes its
+    /BCS and /IMPVEL along the turned axes (a /SKEW/FIX): a turned scene
+    whose imposed velocities are all translations (ricochet imposes a
+    rotation about a global axis only)."""
+    return "frame" in scene and (scene.get("bcs") or scene.get("impvel")) and \
+        all(len(iv["dir"]) == 1 for iv in scene.get("impvel", []))
+
+
 def write(scene, units=("kg", "m", "s"), header=()):
     """The deck text of a scene. header: comment lines (without '#') put at
     the top; the scene itself is embedded as '#PHYSFUZZ-SCENE' comment lines
@@ -229,13 +241,21 @@ def write(scene, units=("kg", "m", "s"), header=()):
         elif j["kind"].upper() in ("REVOLUTE", "PRISMATIC"):
             w.add(vec(w, j["axis"], NONE))
 
+    # a scene turned by the frame variant: its /BCS and /IMPVEL flags along
+    # the turned axes, those of a /SKEW/FIX (Y' and Z' the turned y and z,
+    # X' = Y' x Z')
+    skew = FRAME_SKEW_ID if frame_skew(scene) else 0
+    if skew:
+        R = np.asarray(scene["frame"]["R"], float)
+        w.add(f"/SKEW/FIX/{skew}", "the frame variant's axes", vec(w, [0.0, 0.0, 0.0]), vec(w, R[:, 1], NONE),
+              vec(w, R[:, 2], NONE))
     for k, bc in enumerate(scene.get("bcs", [])):
         w.add(f"/BCS/{k + 1}", "held degrees of freedom",
-              w.line(("s", bc["trarot"], 10), ("i", 0), ("i", 100000 + bc["body"])))
+              w.line(("s", bc["trarot"], 10), ("i", skew), ("i", 100000 + bc["body"])))
     for k, iv in enumerate(scene.get("impvel", [])):
         w.add(f"/IMPVEL/{k + 1}", "imposed velocity",
-              w.line(("i", iv["fct"]), ("s", iv["dir"], 10), ("i", 0), ("i", 0), ("i", 100000 + iv["body"]), ("i", 0),
-                     ("i", 0)),
+              w.line(("i", iv["fct"]), ("s", iv["dir"], 10), ("i", skew), ("i", 0), ("i", 100000 + iv["body"]),
+                     ("i", 0), ("i", 0)),
               w.line(("r", 1.0, TIME), ("r", iv["scale"], ANGVEL if len(iv["dir"]) == 2 else VEL)))
 
     gvec = scene.get("gravity", [0.0, 0.0, 0.0])

@@ -304,9 +304,11 @@ def process(scene, variants, ricochet, timeout=60.0, keep_dir=None, keep_all=Fal
         V += INV.check_single(scene, "tight", tight["res"], tight["rc"])
         if "frame" in variants:
             fp = variants["frame"]
-            if scene.get("bcs") or scene.get("impvel"):
-                # /BCS and /IMPVEL act along the global axes (skew_ID not
-                # supported): the frame variant of such a scene is a translation
+            if any(len(iv["dir"]) != 1 for iv in scene.get("impvel", [])):
+                # an imposed rotation turns about a global axis (skew_ID not
+                # supported for it): the frame variant of such a scene is a
+                # translation; /BCS and imposed translations turn with the
+                # frame (a /SKEW/FIX, deckwriter.frame_skew)
                 fp = dict(fp, R=[[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
             vs = DW.transform(scene, fp["R"], fp["t"])
             r = do("frame", DW.write(vs), base_args(scene))

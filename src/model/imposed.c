@@ -26,7 +26,7 @@
 void rc_imp_free(rc_imposed *p)
 {
     if (!p) return;
-    void *a[] = {p->tu, p->tsk, p->sslot, p->tbody, p->tdir, p->trow, p->ttab, p->tbcs, p->tascale, p->tfscale, p->ttstop, p->ttstart, p->ttshift, p->tsens, p->tson, p->rsens, p->rbody, p->rtab,
+    void *a[] = {p->tu, p->tsk, p->sslot, p->tbody, p->tdir, p->trow, p->ttab, p->tbcs, p->tfirst, p->tascale, p->tfscale, p->ttstop, p->ttstart, p->ttshift, p->tsens, p->tson, p->rsens, p->rbody, p->rtab,
                  p->rascale, p->rfscale, p->rtstop, p->rqslot, p->wslot, p->row_imp};
     for (size_t k = 0; k < sizeof a / sizeof a[0]; k++) free(a[k]);
     free(p);
@@ -38,13 +38,16 @@ void rc_imp_free(rc_imposed *p)
  * owner: the /IMPVEL card driving each body DOF (-1: none). A node in no
  * body (fixed in space) and a fixed body are left out; an axis a body
  * already holds (the group naming it twice, two cards on one skew) is
- * taken once. Refused, not supported yet: a moving skew (its axes turn
- * with its nodes), a body with an imposed translation or a translation
- * held along a global axis (rows that another rule writes), axes of two
- * cards that are not orthogonal (the projections applied one after the
- * other are the projection on the free axes only for orthogonal ones). */
-static rc_status bcs_skew_holds(const rc_case *c, const rc_model *m, const int *owner, int **hb_out, double **hu_out,
-                                int **hid_out, int *nh_out, rc_error *err)
+ * taken once. A body's /IMPVEL along an oblique skew axis (dir -1, u_imp)
+ * is applied the same way: its axis must be orthogonal to the held ones.
+ * Refused, not supported yet: a moving skew (its axes turn with its nodes),
+ * a body with a translation imposed or held along a global axis (rows that
+ * another rule writes), axes that are not orthogonal (the projections
+ * applied one after the other are the projection on the free axes only for
+ * orthogonal ones). */
+static rc_status bcs_skew_holds(const rc_case *c, const rc_model *m, const int *owner, const int *dir,
+                                const double *u_imp, int **hb_out, double **hu_out, int **hid_out, int *nh_out,
+                                rc_error *err)
 {
     int cap = 0;
     for (int k = 0; k < c->nbcs; k++) {
@@ -76,11 +79,12 @@ static rc_status bcs_skew_holds(const rc_case *c, const rc_model *m, const int *
             if (b < 0 || m->body_fixed[b]) continue;
             const int *own = owner + 6 * b;
             const int imp = own[0] >= 0 ? own[0] : own[1] >= 0 ? own[1] : own[2];
-            if (imp >= 0) {
+            if (imp >= 0 && dir[imp] >= 0) {
                 st = RC_SET(err, RC_EINPUT,
-                            RC_LOCFMT "card /BCS/%d, field skew_ID: /RBODY/%d also has an imposed translation "
-                            "(/IMPVEL/%d): translations held along a skew's axes together with an imposed one are "
-                            "not supported yet",
+                            RC_LOCFMT "card /BCS/%d, field skew_ID: /RBODY/%d also has a translation imposed along a "
+                            "global axis (/IMPVEL/%d; a skew axis that is exactly a global one counts as one): "
+                            "translations held along a skew's axes together with it are not supported yet (expected "
+                            "the /IMPVEL along an oblique axis of a /SKEW/FIX, orthogonal to the held ones)",
                             RC_LOC(bl), bc->id, m->body_id[b], c->impvel[imp].id);
                 break;
             }
@@ -96,6 +100,19 @@ static rc_status bcs_skew_holds(const rc_case *c, const rc_model *m, const int *
                 if (bc->fix[a] != 1) continue;
                 const double *u = sk->axis[a];
                 int dup = 0;
+                if (imp >= 0) { /* the body's velocity imposed along a skew axis */
+                    const double *ui = u_imp + 3 * imp;
+                    const double d = u[0] * ui[0] + u[1] * ui[1] + u[2] * ui[2];
+                    if (!(fabs(d) <= RC_BCS_AXIS_TOL)) {
+                        st = RC_SET(err, RC_EINPUT,
+                                    RC_LOCFMT "card /BCS/%d, field skew_ID: /RBODY/%d holds a translation along the "
+                                    "%c' axis of /SKEW/FIX/%d, which is not orthogonal to the axis /IMPVEL/%d imposes "
+                                    "its velocity along (cosine %.6g): expected a held axis orthogonal to the "
+                                    "imposed one",
+                                    RC_LOC(bl), bc->id, m->body_id[b], "XYZ"[a], sk->id, c->impvel[imp].id, d);
+                        break;
+                    }
+                }
                 for (int h = 0; h < nh && !st && !dup; h++) {
                     if (hb[h] != b) continue;
                     const double d = u[0] * hu[3 * h] + u[1] * hu[3 * h + 1] + u[2] * hu[3 * h + 2];
@@ -115,20 +132,6 @@ static rc_status bcs_skew_holds(const rc_case *c, const rc_model *m, const int *
             }
         }
     }
-    /* a body's axes adjacent (the right-hand side applies them one after
-     * the other from its first entry's free rates): a stable sort by body */
-    for (int h = 1; h < nh && !st; h++)
-        for (int q = h; q > 0 && hb[q - 1] > hb[q]; q--) {
-            const int tb = hb[q], ti = hid[q];
-            double tu[3];
-            memcpy(tu, hu + 3 * q, sizeof tu);
-            hb[q] = hb[q - 1];
-            hid[q] = hid[q - 1];
-            memcpy(hu + 3 * q, hu + 3 * (q - 1), sizeof tu);
-            hb[q - 1] = tb;
-            hid[q - 1] = ti;
-            memcpy(hu + 3 * (q - 1), tu, sizeof tu);
-        }
     if (st) {
         free(hb);
         free(hu);
@@ -312,7 +315,7 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
      * axis, card, nh of them) */
     int nh = 0, *hb = NULL, *hid = NULL;
     double *hu = NULL;
-    if (!st && nbs) st = bcs_skew_holds(c, m, owner, &hb, &hu, &hid, &nh, err);
+    if (!st && nbs) st = bcs_skew_holds(c, m, owner, dir, u, &hb, &hu, &hid, &nh, err);
     /* count and fill: translations one by one (a skewed card once per
      * body), rotations per body */
     for (int b = 0; b < nb && !st; b++) {
@@ -332,6 +335,7 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
         p->trow = calloc((size_t)p->nt + 1, sizeof(int));
         p->ttab = calloc((size_t)p->nt + 1, sizeof(int));
         p->tbcs = calloc((size_t)p->nt + 1, sizeof(int));
+        p->tfirst = calloc((size_t)p->nt + 1, 1);
         p->tascale = calloc((size_t)p->nt + 1, sizeof(double));
         p->tfscale = calloc((size_t)p->nt + 1, sizeof(double));
         p->ttstop = calloc((size_t)p->nt + 1, sizeof(double));
@@ -348,7 +352,7 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
         p->rfscale = calloc(3 * (size_t)p->nr + 1, sizeof(double));
         p->rtstop = calloc((size_t)p->nr + 1, sizeof(double));
         p->rqslot = calloc(12 * (size_t)p->nr + 1, sizeof(int64_t));
-        if (!p->tbody || !p->tdir || !p->trow || !p->ttab || !p->tbcs || !p->tascale || !p->tfscale || !p->ttstop || !p->ttstart || !p->ttshift || !p->tson || !p->tsens || !p->rsens || !p->tu || !p->tsk || !p->rbody ||
+        if (!p->tbody || !p->tdir || !p->trow || !p->ttab || !p->tbcs || !p->tfirst || !p->tascale || !p->tfscale || !p->ttstop || !p->ttstart || !p->ttshift || !p->tson || !p->tsens || !p->rsens || !p->tu || !p->tsk || !p->rbody ||
             !p->rtab || !p->rascale || !p->rfscale || !p->rtstop || !p->rqslot)
             st = RC_SET(err, RC_ENOMEM, "out of memory");
     }
@@ -437,6 +441,15 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
     free(hb);
     free(hu);
     free(hid);
+    /* each body's first skewed entry (its free rates, before any projection,
+     * are the ones every skewed entry of the body measures its lambda by:
+     * the right-hand side keeps them from that entry on) */
+    for (int b = 0; b < nb && !st; b++) owner[6 * b] = 0;
+    for (int k = 0; k < p->nt && !st; k++)
+        if (p->tdir[k] < 0 && !owner[6 * p->tbody[k]]) {
+            owner[6 * p->tbody[k]] = 1;
+            p->tfirst[k] = 1;
+        }
     free(owner);
     free(dir);
     free(u);

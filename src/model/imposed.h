@@ -21,8 +21,10 @@
  * (a body with a skewed card has no other imposed or held translation).
  * A /BCS with a skew holding one or two of Tx Ty Tz holds the velocity along
  * each held skew axis at zero the same way (an entry whose function is
- * zero, ttab -1): orthogonal axes, so that their projections applied one
- * after the other are the projection on the free ones.
+ * zero, ttab -1), beside at most one skewed /IMPVEL of the body: orthogonal
+ * axes, so that their projections applied one after the other are the
+ * projection on the free ones and each lambda u.a_free is measured on the
+ * body's free rates (those before its first skewed entry, tfirst).
  *
  * Rotations: the angular velocity state is in the body frame. A body with a
  * rotational /IMPVEL has its whole angular velocity imposed in global axes,
@@ -74,6 +76,8 @@ typedef struct rc_imposed {
                             translation held at zero along a skew axis by
                             /BCS (tbcs)                                      */
     int *tbcs;           /* [nt] the id of the /BCS holding it, 0: /IMPVEL   */
+    char *tfirst;        /* [nt] 1: the first skewed entry of its body (whose
+                            free rates the right-hand side keeps)            */
     double *tascale, *tfscale, *ttstop; /* [nt] [s] [m/s] [s]               */
     double *ttstart;     /* [nt] Tstart [s]: imposed for ttstart < t <= ttstop;
                             -INFINITY (Tstart <= 0) from t = 0 on; with a

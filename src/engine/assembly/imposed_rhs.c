@@ -34,14 +34,13 @@ void rc_imp_rhs(const rc_model *m, const rc_data *d, double t, const double *y, 
         const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t - RC_IMP_T_SHIFT(p, k, d->sens_ton));
         if (p->tdir[k] < 0) {
             /* along u: the support's force m lambda u, lambda = a - u.a_free;
-             * a body's several axes (/BCS, orthogonal, adjacent entries)
-             * one after the other, u.a_free unchanged by the projections
-             * before, and the free rates those of the body's first entry */
+             * a body's several axes (orthogonal) one after the other, u.a_free
+             * unchanged by the projections before, and the free rates those
+             * its first skewed entry found */
             const double *u = p->tu + 3 * k;
-            const int first = !(k > 0 && p->tdir[k - 1] < 0 && p->tbody[k - 1] == p->tbody[k]);
             double ua = 0.0, uv = 0.0;
             for (int i = 0; i < 3; i++) {
-                if (first) d->sc->imp_free[r + i] = ydot[r + i];
+                if (p->tfirst[k]) d->sc->imp_free[r + i] = ydot[r + i];
                 ua += u[i] * ydot[r + i];
                 uv += u[i] * y[r + i];
             }

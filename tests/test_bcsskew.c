@@ -269,6 +269,30 @@ static void test_bcsskew_driven_along_the_rail(void)
     ENSURE_NEAR(wimp, wexp, 1e-8, 0);
     free(y);
     rc_model_free(m);
+    /* the drive stopping at Tstop = 0.5 s beside the holds: the Jacobian
+     * (the W_imp row, whose lambdas the holds measure on the body's free
+     * rates) against finite differences while it drives and after */
+    m = TU_COMPILE_OK(rail_deck("011 000", "/FUNCT/2\none\n0,1\n10,1\n"
+                                           "/IMPVEL/4\nv\n         2         X         7         0         1\n"
+                                           "                 1.0                 0.7                 0.0"
+                                           "                 0.5\n"),
+                      "drive2.rad");
+    if (!m) return;
+    rc_data *d = rc_data_new(m);
+    y = calloc((size_t)m->ny, sizeof(double));
+    rc_initial_state(m, y);
+    y[7] += 0.01; /* off the constraint a little: lambda u.v != 0 */
+    y[9] -= 0.02;
+    for (int k = 0; k < 2; k++) {
+        int bad = 0, outside = 0;
+        const double t = k ? 0.3 : 0.7, err = tu_jac_fd_error(m, d, t, y, 0, &bad, &outside);
+        printf("    driven until 0.5 s, at %.1f s: jacobian max scaled |J - FD| %.2e\n", t, err);
+        ENSURE(bad == 0);
+        ENSURE(outside == 0);
+    }
+    free(y);
+    rc_data_free(d);
+    rc_model_free(m);
 }
 
 void suite_bcsskew(void);

@@ -29,18 +29,21 @@ void rc_imp_rhs(const rc_model *m, const rc_data *d, double t, const double *y, 
     double power = 0.0; /* of the reactions [W] */
     /* translations: reaction m (a_imposed - a_free) along the component */
     for (int k = 0; k < p->nt; k++) {
-        if (!RC_IMP_T_ON(p, k, t, d->sens_rel, d->t_bp)) continue;
         const int r = p->trow[k];
+        /* a body's skewed entries (orthogonal axes) apply one after the
+         * other, u.a_free unchanged by the projections before; the free
+         * rates, which the Jacobian measures each lambda by, are those its
+         * first skewed entry finds, kept whether that entry acts or not (an
+         * /IMPVEL past its Tstop beside /BCS holds) */
+        if (p->tfirst[k])
+            for (int i = 0; i < 3; i++) d->sc->imp_free[r + i] = ydot[r + i];
+        if (!RC_IMP_T_ON(p, k, t, d->sens_rel, d->t_bp)) continue;
         const double a = rc_imp_rate(m, p->ttab[k], p->tascale[k], p->tfscale[k], t - RC_IMP_T_SHIFT(p, k, d->sens_ton));
         if (p->tdir[k] < 0) {
-            /* along u: the support's force m lambda u, lambda = a - u.a_free;
-             * a body's several axes (orthogonal) one after the other, u.a_free
-             * unchanged by the projections before, and the free rates those
-             * its first skewed entry found */
+            /* along u: the support's force m lambda u, lambda = a - u.a_free */
             const double *u = p->tu + 3 * k;
             double ua = 0.0, uv = 0.0;
             for (int i = 0; i < 3; i++) {
-                if (p->tfirst[k]) d->sc->imp_free[r + i] = ydot[r + i];
                 ua += u[i] * ydot[r + i];
                 uv += u[i] * y[r + i];
             }

@@ -19,6 +19,20 @@ expect() { # name, expected exit code, actual exit code, detail
 "$bin" sens --help > "$tmp/h" 2>&1; rc=$?
 grep -q "^usage: ricochet sens CASE --param" "$tmp/h" && expect help 0 $rc "" || expect help 0 99 "(no usage)"
 
+# translations held along a skew's axes (/BCS skew_ID): the derivative of
+# a thrown ball's x at 0.5 s with respect to its initial Vx is t (u.e_x)^2
+# on a rail along u = (cos 30 cos 40, cos 30 sin 40, sin 30) and
+# t (1 - (n.e_x)^2) in a plane of normal n = Z' (validation/bcs_skew_rail)
+"$bin" sens validation/bcs_skew_rail/case.rad --param /INIVEL/TRA/1:Vx=1.0 --param /INIVEL/TRA/2:Vx=1.0 --at 0.5 \
+    --out 1:x --out 2:x > "$tmp/o" 2>&1; rc=$?
+d1=$(grep -A1 "body 1 x" "$tmp/o" | sed -n 's/.*TRA\/1:Vx = \([^ ]*\) m.*/\1/p')
+d2=$(grep -A2 "body 2 x" "$tmp/o" | sed -n 's/.*TRA\/2:Vx = \([^ ]*\) m.*/\1/p')
+if [ $rc -eq 0 ] && awk -v a="$d1" -v b="$d2" 'BEGIN { p = atan2(1, 1) / 45; c = cos(30 * p) * cos(40 * p);
+        e1 = 0.5 * c * c; s = 0.5 * cos(40 * p); e2 = 0.5 * (1 - s * s);
+        exit !(a != "" && b != "" && (a - e1)^2 < (1e-8 * e1)^2 && (b - e2)^2 < (1e-8 * e2)^2) }'; then
+    echo "PASS sens.bcs_skew: dx/dVx $d1 on the rail, $d2 in the plane (closed forms to 1e-8)"
+else echo "FAIL sens.bcs_skew: exit $rc, dx/dVx $d1, $d2: $(head -c 300 "$tmp/o")"; fi
+
 # the drop: z and vz after the rebound in the damping, the load curve's
 # scale and gravity, each beside the whole runs' difference
 "$bin" sens "$drop" --param /INTER/TYPE6/1:Visc=30 --param /INTER/TYPE6/1:FscaleId=20000 \

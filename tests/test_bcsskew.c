@@ -59,14 +59,6 @@ static const char *rail_deck(const char *trarot, const char *extra)
     return text;
 }
 
-static int ev_first(const tu_evlog *l, const char *kind, double *t)
-{
-    int n = 0;
-    for (int k = 0; k < l->n && k < TU_MAXEV; k++)
-        if (!strcmp(l->kind[k], kind) && n++ == 0) *t = l->t[k];
-    return n;
-}
-
 /* On the rail the ball moves along u = X' only, s(t) = v0.u t - g sin30 t^2
  * / 2 (the initial velocity's other components held to zero), and lands on
  * the floor when 1 + sin30 s(t) = 0.05. */
@@ -105,7 +97,7 @@ static void test_bcsskew_rail_closed_form(void)
         rc_run_options o2 = {.on_event = tu_evlog_event, .user = &ev};
         ENSURE(rc_run(m, &o2, NULL, &e) == RC_OK);
         double tc = -1;
-        ENSURE(ev_first(&ev, "contact_close", &tc) >= 1);
+        ENSURE(tu_evlog_first(&ev, "contact_close", &tc, NULL) >= 1);
         printf("    %s: lands at %.12f s (closed form %.12f s)\n", method == 1 ? "CVODE" : "IDA", tc, tl);
         ENSURE_NEAR(tc, tl, 1e-9, 0);
         free(y);

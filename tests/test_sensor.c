@@ -150,17 +150,6 @@ static void test_sensor_dist_compile(void)
 }
 
 /* The run's events of `kind`: count, first time and values. */
-static int ev_first(const tu_evlog *l, const char *kind, double *t, double *v)
-{
-    int n = 0;
-    for (int k = 0; k < l->n && k < TU_MAXEV; k++)
-        if (!strcmp(l->kind[k], kind) && n++ == 0) {
-            *t = l->t[k];
-            if (v) memcpy(v, l->v[k], 3 * sizeof *v);
-        }
-    return n;
-}
-
 static void test_sensor_dist_run(void)
 {
     static tu_evlog ev;
@@ -180,14 +169,14 @@ static void test_sensor_dist_run(void)
         rc_run_options o = {.on_event = tu_evlog_event, .user = &ev};
         ENSURE(rc_run(m, &o, NULL, &e) == RC_OK);
         double t = -1, v[3] = {0}, ts = -1, tcl = -1;
-        ENSURE(ev_first(&ev, "sensor_trigger", &t, v) == 1);
+        ENSURE(tu_evlog_first(&ev, "sensor_trigger", &t, v) == 1);
         ENSURE_NEAR(t, cs[k].ttrig, 1e-10, 0);
         ENSURE(isnan(v[0]) && isnan(v[1]) && isnan(v[2])); /* not an interface */
-        ENSURE(ev_first(&ev, "inter_start", &ts, NULL) == 1);
+        ENSURE(tu_evlog_first(&ev, "inter_start", &ts, NULL) == 1);
         ENSURE_NEAR(ts, cs[k].ttrig + cs[k].td, 1e-10, 0);
         /* on before the meeting: contact at the free-fall time; after it
          * (A past B's centre): none */
-        const int nc = ev_first(&ev, "contact_close", &tcl, NULL);
+        const int nc = tu_evlog_first(&ev, "contact_close", &tcl, NULL);
         if (cs[k].ttrig + cs[k].td < tc) {
             ENSURE(nc >= 1);
             ENSURE_NEAR(tcl, tc, 1e-10, 0);
@@ -206,8 +195,8 @@ static void test_sensor_dist_run(void)
         rc_run_options o = {.on_event = tu_evlog_event, .user = &ev};
         ENSURE(rc_run(m, &o, NULL, &e) == RC_OK);
         double t = -1, tcl = -1;
-        ENSURE(ev_first(&ev, "sensor_trigger", &t, NULL) == 1 && t == 0.0);
-        ENSURE(ev_first(&ev, "contact_close", &tcl, NULL) >= 1);
+        ENSURE(tu_evlog_first(&ev, "sensor_trigger", &t, NULL) == 1 && t == 0.0);
+        ENSURE(tu_evlog_first(&ev, "contact_close", &tcl, NULL) >= 1);
         ENSURE_NEAR(tcl, tc, 1e-10, 0);
     }
     rc_model_free(m);
@@ -268,8 +257,8 @@ static void test_sensor_logic(void)
         rc_run_options o = {.on_event = tu_evlog_event, .user = &ev};
         ENSURE(rc_run(m, &o, NULL, &e) == RC_OK);
         double t = -1;
-        ENSURE(ev_first(&ev, "sensor_trigger", &t, NULL) == 0);
-        const int n = ev_first(&ev, "inter_start", &t, NULL);
+        ENSURE(tu_evlog_first(&ev, "sensor_trigger", &t, NULL) == 0);
+        const int n = tu_evlog_first(&ev, "inter_start", &t, NULL);
         if (k == 0) {
             ENSURE(n == 0);
         } else {
@@ -292,9 +281,9 @@ static void test_sensor_logic(void)
             rc_run_options o = {.on_event = tu_evlog_event, .user = &ev};
             ENSURE(rc_run(m6, &o, NULL, &e) == RC_OK);
             double t = -1;
-            ENSURE(ev_first(&ev, "inter_start", &t, NULL) == 1);
+            ENSURE(tu_evlog_first(&ev, "inter_start", &t, NULL) == 1);
             ENSURE_NEAR(t, 0.35, 1e-15, 0);
-            ENSURE(ev_first(&ev, "contact_close", &t, NULL) >= 1);
+            ENSURE(tu_evlog_first(&ev, "contact_close", &t, NULL) >= 1);
             ENSURE_NEAR(t, sqrt(2 * 0.9 / 9.81), 1e-10, 0);
         }
         rc_model_free(m6);
@@ -420,9 +409,9 @@ static void test_sensor_release(void)
         rc_run_options o = {.on_event = tu_evlog_event, .user = &ev};
         ENSURE(rc_run(m, &o, NULL, &e) == RC_OK);
         double t = -1;
-        ENSURE(ev_first(&ev, "sensor_trigger", &t, NULL) == 1);
+        ENSURE(tu_evlog_first(&ev, "sensor_trigger", &t, NULL) == 1);
         ENSURE_NEAR(t, ts, 1e-10, 0);
-        ENSURE(ev_first(&ev, "impvel_stop", &t, NULL) == 1);
+        ENSURE(tu_evlog_first(&ev, "impvel_stop", &t, NULL) == 1);
         ENSURE_NEAR(t, cs[k].trel, 1e-10, 0);
         rc_model_free(m);
     }
@@ -575,16 +564,16 @@ static void test_sensor_inter_run(void)
         rc_run_options o = {.on_event = tu_evlog_event, .user = &ev, .y_end = y};
         ENSURE(rc_run(m, &o, NULL, &e) == RC_OK);
         double t = -1, tcl = -1, v[3] = {0};
-        ENSURE(ev_first(&ev, "contact_close", &tcl, NULL) >= 1);
+        ENSURE(tu_evlog_first(&ev, "contact_close", &tcl, NULL) >= 1);
         ENSURE_NEAR(tcl, tc, 1e-10, 0);
-        ENSURE(ev_first(&ev, "sensor_trigger", &t, v) == 1);
+        ENSURE(tu_evlog_first(&ev, "sensor_trigger", &t, v) == 1);
         if (t < 0) fprintf(stderr, "  case %d: no trigger\n", c);
         ENSURE_NEAR(t, cs[c].ttrig, 1e-9, 0);
         ENSURE(isnan(v[0])); /* not an interface */
         for (int j = 0; j < ev.n && j < TU_MAXEV; j++)
             if (!strcmp(ev.kind[j], "sensor_trigger")) ENSURE(!strcmp(ev.elem[j], "/SENSOR/INTER/5"));
         double trel = -1;
-        ENSURE(ev_first(&ev, "impvel_stop", &trel, NULL) == 1);
+        ENSURE(tu_evlog_first(&ev, "impvel_stop", &trel, NULL) == 1);
         ENSURE_NEAR(trel, cs[c].ttrig + cs[c].td, 1e-9, 0);
         /* B's free fall from rest at the release */
         const int a = m->body_yadr[1];
@@ -609,9 +598,9 @@ static void test_sensor_inter_run(void)
         rc_run_options o = {.on_event = tu_evlog_event, .user = &ev};
         ENSURE(rc_run(m, &o, NULL, &e) == RC_OK);
         double t = -1, trel = -1;
-        ENSURE(ev_first(&ev, "sensor_trigger", &t, NULL) == 1);
+        ENSURE(tu_evlog_first(&ev, "sensor_trigger", &t, NULL) == 1);
         ENSURE_NEAR(t, tc, 1e-9, 0);
-        ENSURE(ev_first(&ev, "impvel_stop", &trel, NULL) == 1);
+        ENSURE(tu_evlog_first(&ev, "impvel_stop", &trel, NULL) == 1);
         ENSURE_NEAR(trel, 0.21, 1e-12, 0);
     }
     rc_model_free(m);
@@ -649,11 +638,11 @@ static void test_sensor_inter_kinds(void)
         rc_run_options o = {.on_event = tu_evlog_event, .user = &ev};
         ENSURE(rc_run(m, &o, NULL, &e) == RC_OK);
         double t = -1, tcl = -1, trel = -1;
-        ENSURE(ev_first(&ev, "contact_close", &tcl, NULL) >= 1);
-        ENSURE(ev_first(&ev, "sensor_trigger", &t, NULL) == 1);
+        ENSURE(tu_evlog_first(&ev, "contact_close", &tcl, NULL) >= 1);
+        ENSURE(tu_evlog_first(&ev, "sensor_trigger", &t, NULL) == 1);
         ENSURE_NEAR(t, tc, 1e-9, 0);
         ENSURE(t == tcl);
-        ENSURE(ev_first(&ev, "impvel_stop", &trel, NULL) == 1 && trel == t);
+        ENSURE(tu_evlog_first(&ev, "impvel_stop", &trel, NULL) == 1 && trel == t);
     }
     rc_model_free(m);
     /* closed at the start: A's centre 0.04999 m above the floor (R = 0.05 m) */
@@ -675,8 +664,8 @@ static void test_sensor_inter_kinds(void)
         rc_run_options o = {.on_event = tu_evlog_event, .user = &ev, .y_end = y};
         ENSURE(rc_run(m, &o, NULL, &e) == RC_OK);
         double t = -1, trel = -1;
-        ENSURE(ev_first(&ev, "sensor_trigger", &t, NULL) == 1 && t == 0.0);
-        ENSURE(ev_first(&ev, "impvel_stop", &trel, NULL) == 1 && trel == 0.0);
+        ENSURE(tu_evlog_first(&ev, "sensor_trigger", &t, NULL) == 1 && t == 0.0);
+        ENSURE(tu_evlog_first(&ev, "impvel_stop", &trel, NULL) == 1 && trel == 0.0);
         const int a = m->body_yadr[1];
         if (a >= 0 && y) ENSURE_NEAR(m->body_y0[RC_NB * 1 + 2] - y[a + 2], 0.5 * g * 0.3 * 0.3, 1e-7, 1e-7);
         free(y);
@@ -761,10 +750,10 @@ static void test_sensor_impvel_time(void)
         ENSURE_NEAR(y[m->body_yadr[0] + 2], 1.0, 1e-12, 0); /* no gravity */
         double t = -1;
         if (ts[k] > T) {
-            ENSURE(ev_first(&ev, "impvel_start", &t, NULL) == 1);
+            ENSURE(tu_evlog_first(&ev, "impvel_start", &t, NULL) == 1);
             ENSURE_NEAR(t, T, 1e-14, 0);
         } else {
-            ENSURE(ev_first(&ev, "impvel_start", &t, NULL) == 0);
+            ENSURE(tu_evlog_first(&ev, "impvel_start", &t, NULL) == 0);
         }
     }
     free(y);
@@ -958,12 +947,12 @@ static void test_sensor_load_runtime(void)
             ENSURE_NEAR(y[a + 8], ts[j] > ton ? 0.3 : 0.0, 1e-10, 0);
             double t = -1;
             if (ts[j] > ton) {
-                ENSURE(ev_first(&ev, "sensor_trigger", &t, NULL) == 1);
+                ENSURE(tu_evlog_first(&ev, "sensor_trigger", &t, NULL) == 1);
                 ENSURE_NEAR(t, tc, 1e-10, 0);
-                ENSURE(ev_first(&ev, "impvel_start", &t, NULL) == 2);
+                ENSURE(tu_evlog_first(&ev, "impvel_start", &t, NULL) == 2);
                 ENSURE_NEAR(t, ton, 1e-10, 0);
             } else {
-                ENSURE(ev_first(&ev, "impvel_start", &t, NULL) == 0);
+                ENSURE(tu_evlog_first(&ev, "impvel_start", &t, NULL) == 0);
             }
             /* A, with no gravity, still falls at 1 m/s before its contact */
             if (ts[j] < tc) ENSURE_NEAR(y[m->body_yadr[0] + 2], 0.15 - ts[j], 1e-10, 0);

@@ -229,6 +229,17 @@ double tu_dae_jac_fd_error(int n, double *Y, double *Yp, double cj, const int64_
     return worst;
 }
 
+int tu_evlog_first(const tu_evlog *l, const char *kind, double *t, double *v)
+{
+    int n = 0;
+    for (int k = 0; k < l->n && k < TU_MAXEV; k++)
+        if (!strcmp(l->kind[k], kind) && n++ == 0) {
+            *t = l->t[k];
+            if (v) memcpy(v, l->v[k], 3 * sizeof *v);
+        }
+    return n;
+}
+
 int tu_evlog_event(void *user, double t, const char *kind, const char *element, const double values[3])
 {
     tu_evlog *l = user;

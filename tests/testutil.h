@@ -73,6 +73,9 @@ typedef struct {
     char kind[TU_MAXEV][32], elem[TU_MAXEV][32];
 } tu_evlog;
 int tu_evlog_event(void *user, double t, const char *kind, const char *element, const double values[3]);
+/* How many events of `kind` *l holds; the first one's time into *t and
+ * (v not NULL) its values into v[3]. */
+int tu_evlog_first(const tu_evlog *l, const char *kind, double *t, double *v);
 /* Run m to its end with its events logged into *ev (zeroed here) and the
  * statistics into *st (NULL: not wanted); the error printed when it fails. */
 rc_status tu_run_evlog(const rc_model *m, tu_evlog *ev, rc_stats *st);

@@ -95,13 +95,17 @@ def vec(w, v, dim=LEN):
 FRAME_SKEW_ID = 9000    # the /SKEW/FIX of a turned scene's /BCS and /IMPVEL
 
 
+def loads_turn(scene):
+    """Whether the scene's /BCS and /IMPVEL can be turned with a frame (along
+    the axes of a /SKEW/FIX): its imposed velocities are all translations
+    (ricochet imposes a rotation about a global axis only)."""
+    return all(len(iv["dir"]) == 1 for iv in scene.get("impvel", []))
+
+
 def frame_skew(scene):
     """Whether the scene, turned by the frame variant (transform), writes its
-    /BCS and /IMPVEL along the turned axes (a /SKEW/FIX): a turned scene
-    whose imposed velocities are all translations (ricochet imposes a
-    rotation about a global axis only)."""
-    return "frame" in scene and (scene.get("bcs") or scene.get("impvel")) and \
-        all(len(iv["dir"]) == 1 for iv in scene.get("impvel", []))
+    /BCS and /IMPVEL along the turned axes (a /SKEW/FIX)."""
+    return "frame" in scene and bool(scene.get("bcs") or scene.get("impvel")) and loads_turn(scene)
 
 
 def write(scene, units=("kg", "m", "s"), header=()):

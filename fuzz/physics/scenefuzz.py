@@ -304,7 +304,7 @@ def process(scene, variants, ricochet, timeout=60.0, keep_dir=None, keep_all=Fal
         V += INV.check_single(scene, "tight", tight["res"], tight["rc"])
         if "frame" in variants:
             fp = variants["frame"]
-            if any(len(iv["dir"]) != 1 for iv in scene.get("impvel", [])):
+            if not DW.loads_turn(scene):
                 # an imposed rotation turns about a global axis (skew_ID not
                 # supported for it): the frame variant of such a scene is a
                 # translation; /BCS and imposed translations turn with the

@@ -32,6 +32,12 @@ void rc_imp_free(rc_imposed *p)
     free(p);
 }
 
+double rc_imp_tspeed(const rc_model *m, int k)
+{
+    const rc_imposed *p = m->imp;
+    return p->ttab[k] < 0 ? 0.0 : fabs(p->tfscale[k]) * rc_table_max_abs(&m->table[p->ttab[k]]);
+}
+
 /* The translations that /BCS cards with a skew hold along its axes (one or
  * two of Tx Ty Tz, rc_bcs_skewed_translations): for each body of the card's
  * group, each held axis (a unit vector in global axes), the card's id;
@@ -444,12 +450,11 @@ rc_status rc_imp_compile(const rc_case *c, rc_model *m, rc_error *err)
     /* each body's first skewed entry (its free rates, before any projection,
      * are the ones every skewed entry of the body measures its lambda by:
      * the right-hand side keeps them from that entry on) */
-    for (int b = 0; b < nb && !st; b++) owner[6 * b] = 0;
+    char *seen = st ? NULL : calloc((size_t)nb + 1, 1);
+    if (!st && !seen) st = RC_SET(err, RC_ENOMEM, "out of memory");
     for (int k = 0; k < p->nt && !st; k++)
-        if (p->tdir[k] < 0 && !owner[6 * p->tbody[k]]) {
-            owner[6 * p->tbody[k]] = 1;
-            p->tfirst[k] = 1;
-        }
+        if (p->tdir[k] < 0 && !seen[p->tbody[k]]) seen[p->tbody[k]] = p->tfirst[k] = 1;
+    free(seen);
     free(owner);
     free(dir);
     free(u);

@@ -119,6 +119,9 @@ int rc_imp_layout(rc_model *m, int ny);
 rc_status rc_imp_pattern_keys(const rc_model *m, int64_t **key, int64_t *n, rc_error *err);
 /* After the CSC pattern is built: the slots used by rc_imp_jac. */
 rc_status rc_imp_slots(rc_model *m, rc_error *err);
+/* The largest speed imposed translation k reaches [m/s]: |Fscale| times
+ * the largest |f| of its curve; 0 for a /BCS hold (ttab -1). */
+double rc_imp_tspeed(const rc_model *m, int k);
 void rc_imp_free(rc_imposed *imp);
 void rc_imp_print(const rc_model *m, FILE *f);
 /* The rotation imposed rotation j turns its body by from t = 0 to t (held

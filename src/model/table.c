@@ -64,6 +64,14 @@ void rc_table_eval(const rc_table *t, double x, double *f, double *dfdx)
     *dfdx = gsl_interp_eval_deriv(t->interp, t->x, t->y, x, NULL);
 }
 
+double rc_table_max_abs(const rc_table *t)
+{
+    double a = 0.0;
+    for (int k = 0; k < t->n; k++)
+        if (fabs(t->y[k]) > a) a = fabs(t->y[k]);
+    return a;
+}
+
 double rc_table_value(const rc_table *t, double x)
 {
     /* rc_table_eval without the slope inside */

@@ -38,5 +38,7 @@ double rc_table_slope_at(const rc_table *t, double x);
 #define RC_TABLE_KNOT_REL 1e-9
 /* Integral of the curve from a to b (exact for the piecewise-linear curve). */
 double rc_table_integral(const rc_table *t, double a, double b);
+/* Largest magnitude of the table's values [-]. */
+double rc_table_max_abs(const rc_table *t);
 
 #endif

@@ -178,15 +178,6 @@ static double body_speed(const rc_model *m, int b, double L)
     return v + w * L;
 }
 
-/* Largest magnitude of a table's values [-]. */
-static double table_max_abs(const rc_table *t)
-{
-    double a = 0.0;
-    for (int k = 0; k < t->n; k++)
-        if (fabs(t->y[k]) > a) a = fabs(t->y[k]);
-    return a;
-}
-
 /* Largest imposed speed of body b [m/s] (translations; rotations times L). */
 static double imposed_speed(const rc_model *m, int b, double L)
 {
@@ -194,11 +185,11 @@ static double imposed_speed(const rc_model *m, int b, double L)
     double v = 0.0;
     if (!p) return 0.0;
     for (int k = 0; k < p->nt; k++)
-        if (p->tbody[k] == b && p->ttab[k] >= 0) v += fabs(p->tfscale[k]) * table_max_abs(&m->table[p->ttab[k]]);
+        if (p->tbody[k] == b) v += rc_imp_tspeed(m, k);
     for (int k = 0; k < p->nr; k++)
         if (p->rbody[k] == b)
             for (int j = 0; j < 3; j++)
-                if (p->rtab[3 * k + j] >= 0) v += fabs(p->rfscale[3 * k + j]) * table_max_abs(&m->table[p->rtab[3 * k + j]]) * L;
+                if (p->rtab[3 * k + j] >= 0) v += fabs(p->rfscale[3 * k + j]) * rc_table_max_abs(&m->table[p->rtab[3 * k + j]]) * L;
     return v;
 }
 
@@ -454,7 +445,7 @@ rc_status rc_model_scales(rc_model *m, rc_error *err)
     body_sizes(m, size);
     /* the largest gravity over the run [m/s^2] */
     double gmax = 0.0;
-    const double gf = m->grav_table >= 0 ? table_max_abs(&m->table[m->grav_table]) : 1.0;
+    const double gf = m->grav_table >= 0 ? rc_table_max_abs(&m->table[m->grav_table]) : 1.0;
     for (int b = 0; b < m->nbody; b++) {
         const double *g = m->body_grav + 3 * b;
         double a = gf * sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);

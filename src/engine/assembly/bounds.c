@@ -127,17 +127,9 @@ double rc_law_reach(const rc_model *m, int i, int energy, double target)
     return hi;
 }
 
-/* Largest magnitude of a table's values [-]. */
-static double table_max_abs(const rc_table *t)
-{
-    double a = 0.0;
-    for (int k = 0; k < t->n; k++) a = fmax(a, fabs(t->y[k]));
-    return a;
-}
-
 void rc_scene_scales(const rc_model *m, rc_scene *s)
 {
-    const double gf = m->grav_table >= 0 ? table_max_abs(&m->table[m->grav_table]) : 1.0;
+    const double gf = m->grav_table >= 0 ? rc_table_max_abs(&m->table[m->grav_table]) : 1.0;
     double gdir[3] = {0.0, 0.0, 0.0};
     s->mass = s->gmax = s->lmax = s->ekin0 = s->vimp = 0.0;
     /* the largest body: the largest extent of a surface on a body (one
@@ -161,11 +153,11 @@ void rc_scene_scales(const rc_model *m, rc_scene *s)
     /* imposed speeds: translations, and rotations at the body's size */
     const rc_imposed *p = m->imp;
     for (int k = 0; p && k < p->nt; k++)
-        if (p->ttab[k] >= 0) s->vimp = fmax(s->vimp, fabs(p->tfscale[k]) * table_max_abs(&m->table[p->ttab[k]]));
+        s->vimp = fmax(s->vimp, rc_imp_tspeed(m, k));
     for (int k = 0; p && k < p->nr; k++)
         for (int j = 0; j < 3; j++)
             if (p->rtab[3 * k + j] >= 0)
-                s->vimp = fmax(s->vimp, fabs(p->rfscale[3 * k + j]) * table_max_abs(&m->table[p->rtab[3 * k + j]]) *
+                s->vimp = fmax(s->vimp, fabs(p->rfscale[3 * k + j]) * rc_table_max_abs(&m->table[p->rtab[3 * k + j]]) *
                                             rc_body_size(m, p->rbody[k]));
     /* the extent along gravity: body centres, surface points, mesh nodes
      * (the body frame is the global one at t = 0) */

@@ -142,7 +142,14 @@ def test_abi():
 
 # ---- run: closed forms ---------------------------------------------------
 def test_run_drop():
-    ds = ricochet.run(deck)
+    # the run's temporary folder goes to a folder of this test's own (the
+    # system's may hold what other programs, or a run killed earlier, left)
+    own, saved = tempfile.mkdtemp(prefix="tmpdir-", dir=tmp), tempfile.tempdir
+    tempfile.tempdir = own
+    try:
+        ds = ricochet.run(deck)
+    finally:
+        tempfile.tempdir = saved
     t1 = float(ds.impact_close_time.values[0])
     vin = float(ds.impact_speed_in.values[0])
     check("run_first_contact", type(ds).__name__ == "Dataset" and abs(t1 - t_first(H0)) < 1e-6
@@ -158,10 +165,10 @@ def test_run_drop():
           f"second contact {t2:.9f} s vs separation + 2 v_out/g = {seps[0] + 2 * vout / G:.9f} s "
           f"(diff {abs(t2 - (seps[0] + 2 * vout / G)):.1e} s); restitution {e:.5f} (0.8 asked of the contact law; "
           f"gravity acts during the contact)")
-    left = [d for d in os.listdir(tempfile.gettempdir()) if d.startswith("ricochet-run-")]
+    left = os.listdir(own)
     check("run_dataset_in_memory", ds.attrs["complete"] == "yes" and ds.body_position.variable._in_memory
           and "overrides" not in ds.attrs and not left,
-          "complete, in memory, its temporary file removed; no overrides attribute without set=")
+          f"complete, in memory, its temporary file removed (left: {left}); no overrides attribute without set=")
 
 
 def test_persistent():

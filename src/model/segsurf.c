@@ -403,12 +403,8 @@ static rc_status node_grid(const rc_model *m, int s, rc_segmesh *g, int ncell, r
         const double tol = 1e-6 * ext + 1e-12 * big;
         for (int k = 0; k < 3; k++) {
             const double e = (convex ? (g->depth + warp) * fabs(n[k]) : g->depth) + tol;
-            int a = (int)floor((bx[k] - e - g->lo[k]) / g->h), b = (int)floor((bx[3 + k] + e - g->lo[k]) / g->h);
-            if (a < 0) a = 0;
-            if (b > g->dim[k] - 1) b = g->dim[k] - 1;
-            if (a > b) a = b + 1; /* wholly outside (not entered) */
-            rng[6 * q + 2 * k] = a;
-            rng[6 * q + 2 * k + 1] = b;
+            /* wholly outside: an empty range (not entered) */
+            rc_seggrid_cells(g, k, bx[k] - e, bx[3 + k] + e, rng + 6 * q + 2 * k, rng + 6 * q + 2 * k + 1);
         }
     }
     if (grid_bin(g, ncell, rng, g->ns, g->ncadr, &g->ncseg)) {
@@ -574,10 +570,7 @@ static rc_status seg_mesh(rc_model *m, int s, rc_segmesh *g, rc_error *err)
             }
             g->sbox[6 * q + k] = a;
             g->sbox[6 * q + 3 + k] = b;
-            r[2 * k] = (int)floor((a - g->lo[k]) / g->h);
-            r[2 * k + 1] = (int)floor((b - g->lo[k]) / g->h);
-            if (r[2 * k] < 0) r[2 * k] = 0;
-            if (r[2 * k + 1] > g->dim[k] - 1) r[2 * k + 1] = g->dim[k] - 1;
+            rc_seggrid_cells(g, k, a, b, r + 2 * k, r + 2 * k + 1); /* within the grid, which spans the nodes */
         }
     }
     if (grid_bin(g, ncell, g->srange, g->ns, g->cadr, &g->cseg)) RC_RAISE(err, RC_ENOMEM, "out of memory");

@@ -5,6 +5,8 @@
 #ifndef RC_SEGSURF_H
 #define RC_SEGSURF_H
 
+#include <math.h>
+
 #include "case/case.h"
 #include "model/model.h"
 
@@ -44,6 +46,24 @@ typedef struct rc_segmesh {
      * node_seg: the segment a node met last is tried first) */
     unsigned char *iso;
 } rc_segmesh;
+
+/* The cells [*lo, *hi] of g's grid along axis k that the interval [a, b] [m]
+ * (body frame) covers, clamped to the grid: computed in double and clamped
+ * before the conversion to int, so that an interval far outside the grid, or
+ * not finite, cannot overflow an int. 0: the interval misses the grid (or is
+ * not finite); *lo and *hi are then an empty range. */
+static inline int rc_seggrid_cells(const rc_segmesh *g, int k, double a, double b, int *lo, int *hi)
+{
+    const double fl = floor((a - g->lo[k]) / g->h), fh = floor((b - g->lo[k]) / g->h);
+    if (!(fh >= 0.0) || !(fl <= g->dim[k] - 1) || !(fl <= fh)) {
+        *lo = 1;
+        *hi = 0;
+        return 0;
+    }
+    *lo = fl < 0.0 ? 0 : (int)fl;
+    *hi = fh > g->dim[k] - 1 ? g->dim[k] - 1 : (int)fh;
+    return 1;
+}
 
 /* Ints before rc_data.node_cache: the segment each surface node met last
  * (geom_seg.inc), node j of surface s at [surf_nadr[s] + j]; a multiple of 4

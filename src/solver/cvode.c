@@ -80,6 +80,15 @@
 #define RC_TURN_MAX_ORDER 2
 /* ... and after a restart where a damped contact of several points closed (below) */
 #define RC_MULTI_MAX_ORDER 3
+/* The Newton iteration's convergence coefficient (CVODE's default 0.1 of
+ * the error test's tolerance) [-]: the stick springs of friction turn and
+ * relax at K_t |v_t| / L (1e10 /s for K_t = 2.5e14 N/m, a slip of 5e-5 m/s
+ * under a limit of 1 N), h lambda of several hundred at the steps the bodies
+ * allow; a corrector stopped at 0.1 of the weight left F_t a few of its
+ * tolerances off its attractor each step and the BDF history extrapolated
+ * that into a spring 1.7e4 times the limit within 30 steps (a ball sliding
+ * along a wall; docs/theory.md 7.2) */
+#define RC_NEWTON_CONV_COEF 0.01
 /* The explicit method: Cash-Karp 6(4)5 [ARKODE table] */
 #define RC_ERK_TABLE ARKODE_CASH_KARP_6_4_5
 
@@ -616,6 +625,7 @@ static rc_status cv_start(void *self, rc_error *err)
     CVCHECK(CVodeSetLinearSolver(cv, c->LS, c->A), "CVodeSetLinearSolver");
     CVCHECK(CVodeSetLinSysFn(cv, cb_linsys), "CVodeSetLinSysFn");
     CVCHECK(CVodeSetMaxOrd(cv, m->max_order), "CVodeSetMaxOrd");
+    CVCHECK(CVodeSetNonlinConvCoef(cv, RC_NEWTON_CONV_COEF), "CVodeSetNonlinConvCoef");
     CVCHECK(CVodeSetMaxNumSteps(cv, m->max_steps), "CVodeSetMaxNumSteps");
     CVCHECK(CVodeSetStabLimDet(cv, SUNTRUE), "CVodeSetStabLimDet");
     if (m->hmax > 0) CVCHECK(CVodeSetMaxStep(cv, m->hmax), "CVodeSetMaxStep");

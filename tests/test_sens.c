@@ -281,32 +281,39 @@ static int impact_q(rc_model *m, double *q)
  * (F = 0, the damped oscillator about m g / k from P = 0 at that speed) and
  * the speed at the separation (P = 0 after a flight under g from the
  * release). q: t_close [s], duration [s], v_in [m/s], v_out [m/s]. */
+/* The damped oscillator of the drop's contact: P about m g / k from P = 0
+ * at the approach speed, P(t) = ps + exp(-a t) (A cos wd t + B sin wd t);
+ * P and dP/dt at t. */
+typedef struct {
+    double a, wd, ps, A, B;
+} drop_osc;
+
+static void drop_osc_at(const drop_osc *o, double t, double *p, double *dp)
+{
+    const double e = exp(-o->a * t), c = cos(o->wd * t), s = sin(o->wd * t);
+    *p = o->ps + e * (o->A * c + o->B * s);
+    *dp = e * (-o->a * (o->A * c + o->B * s) + o->wd * (o->B * c - o->A * s));
+}
+
 static void drop_closed_form(double k, double c, double g, double *q)
 {
-    const double m = 1.0, h = 0.25, vin = sqrt(2.0 * g * h), a = c / (2.0 * m);
-    const double wd = sqrt(k / m - a * a), ps = m * g / k, A = -ps, B = (vin + a * A) / wd;
+    const double m = 1.0, h = 0.25, vin = sqrt(2.0 * g * h), a = c / (2.0 * m), ps = m * g / k;
+    const drop_osc o = {a, sqrt(k / m - a * a), ps, -ps, (vin - a * ps) / sqrt(k / m - a * a)};
     double p = 0.0, dp = 0.0;
-#define DROP_PDP(t)                                                                                                    \
-    do {                                                                                                               \
-        const double e_ = exp(-a * (t)), c_ = cos(wd * (t)), s_ = sin(wd * (t));                                       \
-        p = ps + e_ * (A * c_ + B * s_);                                                                               \
-        dp = e_ * (-a * (A * c_ + B * s_) + wd * (B * c_ - A * s_));                                                   \
-    } while (0)
     /* the first release after the close: bracketed on a grid of 1e-5 s
      * (F = c v_in > 0 at the close), then halved to the last bit */
     double lo = 0.0, hi = 1e-5;
     for (;; lo = hi, hi += 1e-5) {
-        DROP_PDP(hi);
+        drop_osc_at(&o, hi, &p, &dp);
         if (k * p + c * dp <= 0.0) break;
     }
     for (int it = 0; it < 200 && hi - lo > 0.0; it++) {
         const double mid = 0.5 * (lo + hi);
-        DROP_PDP(mid);
+        drop_osc_at(&o, mid, &p, &dp);
         if (k * p + c * dp > 0.0) lo = mid;
         else hi = mid;
     }
-    DROP_PDP(hi);
-#undef DROP_PDP
+    drop_osc_at(&o, hi, &p, &dp);
     q[0] = sqrt(2.0 * h / g);
     q[1] = hi;
     q[2] = vin;

@@ -149,7 +149,6 @@ static void test_sensor_dist_compile(void)
     rc_model_free(m);
 }
 
-/* The run's events of `kind`: count, first time and values. */
 static void test_sensor_dist_run(void)
 {
     static tu_evlog ev;

@@ -38,6 +38,13 @@ double rc_imp_tspeed(const rc_model *m, int k)
     return p->ttab[k] < 0 ? 0.0 : fabs(p->tfscale[k]) * rc_table_max_abs(&m->table[p->ttab[k]]);
 }
 
+double rc_imp_rrate(const rc_model *m, int k, int j)
+{
+    const rc_imposed *p = m->imp;
+    const int tab = p->rtab[3 * k + j];
+    return tab < 0 ? 0.0 : fabs(p->rfscale[3 * k + j]) * rc_table_max_abs(&m->table[tab]);
+}
+
 /* The translations that /BCS cards with a skew hold along its axes (one or
  * two of Tx Ty Tz, rc_bcs_skewed_translations): for each body of the card's
  * group, each held axis (a unit vector in global axes), the card's id;

@@ -122,6 +122,9 @@ rc_status rc_imp_slots(rc_model *m, rc_error *err);
 /* The largest speed imposed translation k reaches [m/s]: |Fscale| times
  * the largest |f| of its curve; 0 for a /BCS hold (ttab -1). */
 double rc_imp_tspeed(const rc_model *m, int k);
+/* The largest angular speed imposed rotation k reaches about axis j (0..2)
+ * [rad/s]: |Fscale| times the largest |f| of its curve; 0 without a curve. */
+double rc_imp_rrate(const rc_model *m, int k, int j);
 void rc_imp_free(rc_imposed *imp);
 void rc_imp_print(const rc_model *m, FILE *f);
 /* The rotation imposed rotation j turns its body by from t = 0 to t (held

@@ -188,8 +188,7 @@ static double imposed_speed(const rc_model *m, int b, double L)
         if (p->tbody[k] == b) v += rc_imp_tspeed(m, k);
     for (int k = 0; k < p->nr; k++)
         if (p->rbody[k] == b)
-            for (int j = 0; j < 3; j++)
-                if (p->rtab[3 * k + j] >= 0) v += fabs(p->rfscale[3 * k + j]) * rc_table_max_abs(&m->table[p->rtab[3 * k + j]]) * L;
+            for (int j = 0; j < 3; j++) v += rc_imp_rrate(m, k, j) * L;
     return v;
 }
 

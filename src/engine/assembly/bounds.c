@@ -155,10 +155,7 @@ void rc_scene_scales(const rc_model *m, rc_scene *s)
     for (int k = 0; p && k < p->nt; k++)
         s->vimp = fmax(s->vimp, rc_imp_tspeed(m, k));
     for (int k = 0; p && k < p->nr; k++)
-        for (int j = 0; j < 3; j++)
-            if (p->rtab[3 * k + j] >= 0)
-                s->vimp = fmax(s->vimp, fabs(p->rfscale[3 * k + j]) * rc_table_max_abs(&m->table[p->rtab[3 * k + j]]) *
-                                            rc_body_size(m, p->rbody[k]));
+        for (int j = 0; j < 3; j++) s->vimp = fmax(s->vimp, rc_imp_rrate(m, k, j) * rc_body_size(m, p->rbody[k]));
     /* the extent along gravity: body centres, surface points, mesh nodes
      * (the body frame is the global one at t = 0) */
     double hmin = INFINITY, hmax = -INFINITY;

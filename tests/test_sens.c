@@ -275,12 +275,6 @@ static int impact_q(rc_model *m, double *q)
     return 0;
 }
 
-/* The drop's impact in closed form (DROP: 1 kg from a gap of h = 0.25 m at
- * rest onto the linear law F = k P + c dP/dt): the close time sqrt(2 h / g),
- * the approach speed sqrt(2 g h), the duration to the release of the force
- * (F = 0, the damped oscillator about m g / k from P = 0 at that speed) and
- * the speed at the separation (P = 0 after a flight under g from the
- * release). q: t_close [s], duration [s], v_in [m/s], v_out [m/s]. */
 /* The damped oscillator of the drop's contact: P about m g / k from P = 0
  * at the approach speed, P(t) = ps + exp(-a t) (A cos wd t + B sin wd t);
  * P and dP/dt at t. */
@@ -295,10 +289,17 @@ static void drop_osc_at(const drop_osc *o, double t, double *p, double *dp)
     *dp = e * (-o->a * (o->A * c + o->B * s) + o->wd * (o->B * c - o->A * s));
 }
 
+/* The drop's impact in closed form (DROP: 1 kg from a gap of h = 0.25 m at
+ * rest onto the linear law F = k P + c dP/dt): the close time sqrt(2 h / g),
+ * the approach speed sqrt(2 g h), the duration to the release of the force
+ * (F = 0, the damped oscillator about m g / k from P = 0 at that speed) and
+ * the speed at the separation (P = 0 after a flight under g from the
+ * release). q: t_close [s], duration [s], v_in [m/s], v_out [m/s]. */
 static void drop_closed_form(double k, double c, double g, double *q)
 {
     const double m = 1.0, h = 0.25, vin = sqrt(2.0 * g * h), a = c / (2.0 * m), ps = m * g / k;
-    const drop_osc o = {a, sqrt(k / m - a * a), ps, -ps, (vin - a * ps) / sqrt(k / m - a * a)};
+    const double wd = sqrt(k / m - a * a);
+    const drop_osc o = {a, wd, ps, -ps, (vin - a * ps) / wd};
     double p = 0.0, dp = 0.0;
     /* the first release after the close: bracketed on a grid of 1e-5 s
      * (F = c v_in > 0 at the close), then halved to the last bit */

@@ -407,6 +407,13 @@ def process(scene, variants, ricochet, timeout=60.0, keep_dir=None, keep_all=Fal
         # the model at its tolerances, as a slow run's vibration_note
         # (add_slow); listed in "explained", not a violation
         expl = [v for v in V if "exit 3" in v.get("msg", "") and "vibrates undamped (period" in v["msg"]]
+        # ... and a run stopped at the time limit whose results (kept up to
+        # there) say where its steps went, as a slow run's do (add_slow)
+        for v in V:
+            vn = rec["runs"].get(v.get("run"), {}).get("vibration_note") if v["inv"] == "a_timeout" else None
+            if vn:
+                v["msg"] += f"; explained by the run: {vn}"
+                expl.append(v)
         if expl:
             V[:] = [v for v in V if v not in expl]
             rec.setdefault("explained", []).extend(expl)
@@ -551,8 +558,9 @@ def cmd_run(a):
     parts = [f"physfuzz: {len(records)} scenes (seed {a.seed}, {wall:.0f} s, {a.jobs} jobs): {nviol} with violations"]
     if inv:
         parts.append(", ".join(f"{k} {v}" for k, v in sorted(inv.items())))
-    parts.append(f"{nexp} scenes explained by undamped contact vibrations (slow runs with their vibration_note, or "
-                 f"runs stopped at Max_steps that name the vibrating contact; not violations)")
+    parts.append(f"{nexp} scenes explained by undamped contact vibrations (slow runs with their vibration_note, runs "
+                 f"stopped at the time limit whose results carry one, or runs stopped at Max_steps that name the "
+                 f"vibrating contact; not violations)")
     line = "; ".join(parts)
     print(line)
     report = {"args": vars(a), "wall": wall, "ricochet": opts["ricochet"], "tally": inv, "by_kind": kinds,

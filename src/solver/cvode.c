@@ -143,6 +143,7 @@ typedef struct run_ctx {
     double h_restart; /* the first step of the last restart [s] (restart_step) */
     int own_h0;       /* the integrator runs from a restart with h_restart, no step taken yet */
     int stald_low;    /* the order held at 2 until the next restart (cv_solve, RC_STALD_REDS) */
+    int sens;         /* sensitivities on (rc_cvode_parts): no restart of cv_solve's own */
     rc_stats lost;    /* the counters of a first attempt redone (cv_solve) */
     rc_rootmap rm; /* the root functions CVODE is given (integrator.h) */
     rc_actpart ap; /* the Newton matrix on the active part of the pattern (activepart.h) */
@@ -839,7 +840,7 @@ static int erk_solve(run_ctx *c, double tout, double *t, int one_step, int *back
 static int stald_hold(run_ctx *c, double t)
 {
     long nor = 0, nst = 0;
-    if (c->stald_low || c->m->max_order <= 2 || CVodeGetNumStabLimOrderReds(c->cv, &nor) != CV_SUCCESS ||
+    if (c->stald_low || c->sens || c->m->max_order <= 2 || CVodeGetNumStabLimOrderReds(c->cv, &nor) != CV_SUCCESS ||
         CVodeGetNumSteps(c->cv, &nst) != CV_SUCCESS || nor < RC_STALD_REDS || (double)nor < RC_STALD_FRAC * (double)nst)
         return 0;
     int damped = 0;
@@ -1218,7 +1219,8 @@ size_t rc_cvode_self_size(void) { return sizeof(run_ctx); }
 void *rc_cvode_parts(void *self, int *nr, const int **kidx, double **yfull, void **sunctx)
 {
     run_ctx *c = self;
-    c->sw = 0; /* the sensitivities follow CVODE alone: no method switching */
+    c->sw = 0; /* the sensitivities follow CVODE alone: no method switching, */
+    c->sens = 1; /* no order held by a restart of cv_solve's own (stald_hold) */
     *sunctx = c->ctx;
     *nr = c->nr;
     *kidx = c->kidx;

@@ -458,13 +458,14 @@ static void test_sensor_inter_read(void)
         int ver;
         const char *line2;
         int dir;
-        double fmax;
-    } cs[] = {{2022, "         1", 0, 0.0},
-              {2022, "         1        FN                   0                2000", 1, 2000.0},
-              {2026, "         1        fn                                    1500                   0                   0", 1, 1500.0},
-              {110, "         1        FN                   0                 300                   0", 1, 300.0},
-              {100, "         1", 0, 0.0}};
-    for (int k = 0; k < 5; k++) {
+        double fmax, tmin;
+    } cs[] = {{2022, "         1", 0, 0.0, 0.0},
+              {2022, "         1        FN                   0                2000", 1, 2000.0, 0.0},
+              {2026, "         1        fn                                    1500                   0                   0", 1, 1500.0, 0.0},
+              {110, "         1        FN                   0                 300                   0", 1, 300.0, 0.0},
+              {100, "         1", 0, 0.0, 0.0},
+              {2022, "         1        FN                   0                 300              0.0025", 1, 300.0, 0.0025}};
+    for (int k = 0; k < 6; k++) {
         rc_case *c = NULL;
         rc_error e;
         rc_error_clear(&e);
@@ -475,7 +476,7 @@ static void test_sensor_inter_read(void)
             ENSURE(c->nsensor == 1);
             const rc_case_sensor *s = &c->sensor[0];
             ENSURE(s->id == 5 && s->kind == RC_SENS_INTER && s->inter_id == 1 && s->dir == cs[k].dir);
-            ENSURE(s->fmax == cs[k].fmax && s->tdelay == 0.25);
+            ENSURE(s->fmax == cs[k].fmax && s->tmin == cs[k].tmin && s->tdelay == 0.25);
             ENSURE(s->line2_loc.line == s->line_loc.line + 1);
         }
         rc_case_free(c);
@@ -513,8 +514,11 @@ static void test_sensor_inter_errors(void)
     TU_EXPECT_TEXT_ERROR(inter_deck(2022, 0, "         1        FN                   0                 -10", ""), d,
                          "card /SENSOR/INTER/5", "field Fmax");
     TU_EXPECT_TEXT_ERROR(inter_deck(2022, -1, "         1", ""), d, "card /SENSOR/INTER/5", "field Tdelay");
-    TU_EXPECT_TEXT_ERROR(inter_deck(2022, 0, "         1        FN                   0                  10              0.001", ""),
-                         d, "card /SENSOR/INTER/5", "field Tmin", "not supported yet");
+    /* Tmin: with a force bound only (the duration of a first contact is not followed) */
+    TU_EXPECT_TEXT_ERROR(inter_deck(2022, 0, "         1                             0                   0              0.001", ""),
+                         d, "card /SENSOR/INTER/5", "field Tmin", "first contact", "not supported yet");
+    TU_EXPECT_TEXT_ERROR(inter_deck(2022, 0, "         1        FN                   0                  10              -0.001", ""),
+                         d, "card /SENSOR/INTER/5", "field Tmin");
     TU_EXPECT_TEXT_ERROR(inter_deck(2022, 0,
                                     "         1        FN                   0                  10                   0"
                                     "                 100",

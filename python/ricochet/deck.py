@@ -93,11 +93,11 @@ class Deck:
         """/SENSOR/TIME: on from t = Tdelay [s]."""
         self.add(f"/SENSOR/TIME/{sid}", line(("r", tdelay)), title=title)
 
-    def sensor_dist(self, sid, n1, n2, dmin=None, dmax=None, tdelay=None, title="distance sensor"):
-        """/SENSOR/DIST: on Tdelay [s] after the distance of nodes n1, n2 leaves [Dmin, Dmax] [m]
-        (None: blank; a blank bound is no bound)."""
-        self.add(f"/SENSOR/DIST/{sid}", line(("r", tdelay)), line(("i", n1), ("i", n2), ("r", dmin), ("r", dmax)),
-                 title=title)
+    def sensor_dist(self, sid, n1, n2, dmin=None, dmax=None, tdelay=None, tmin=None, title="distance sensor"):
+        """/SENSOR/DIST: on Tdelay [s] after the distance of nodes n1, n2 has stayed out of [Dmin, Dmax] [m]
+        for Tmin [s] (None: blank; a blank bound is no bound; Tmin: the 2022 layout's fifth field)."""
+        f = [("i", n1), ("i", n2), ("r", dmin), ("r", dmax)] + ([("r", tmin)] if tmin is not None else [])
+        self.add(f"/SENSOR/DIST/{sid}", line(("r", tdelay)), line(*f), title=title)
 
     def sensor_logic(self, kind, sid, s1, s2, tdelay=None, title="logic sensor"):
         """/SENSOR/AND or /SENSOR/OR (kind): on Tdelay [s] after both (either) of sensors s1, s2 are on."""
@@ -106,7 +106,7 @@ class Deck:
     def sensor_inter(self, sid, int_id, direction=None, fmin=None, fmax=None, tmin=None, fcut=None, tdelay=None,
                      title="interface sensor"):
         """/SENSOR/INTER: on Tdelay [s] after the contact of interface int_id closes (direction None:
-        DIR blank), or after its normal force rises above Fmax [N] (direction "FN"); Radioss's
+        DIR blank), or after its normal force has stayed above Fmax [N] for Tmin [s] (direction "FN"); Radioss's
         line 2: int_ID (10) DIR (10, text) Fmin Fmax Tmin Fcut (20 each)."""
         l2 = (i10(int_id) + f"{direction or '':>10s}" + r20(fmin) + r20(fmax) + r20(tmin) + r20(fcut)).rstrip()
         self.add(f"/SENSOR/INTER/{sid}", line(("r", tdelay)), l2, title=title)

@@ -129,19 +129,19 @@ rc_status rc_card_rwall(rc_reader *rd, const rc_block *b)
 /* Line 2 of /SENSOR/INTER: int_ID (all layouts), DIR Fmin Fmax Tmin (11.0
  * on), Fcut (14.0 on). DIR blank: the contact closing triggers (no force
  * bound); FN: the normal force rising above Fmax (Fmax 0: the contact
- * closing); TF, Fmin, Tmin and Fcut: not supported yet. Whether int_ID
+ * closing), held for Tmin; TF, Fmin, Fcut and a Tmin on the first contact:
+ * not supported yet. Whether int_ID
  * names an interface: the compiler (model/sensor.c). */
 static rc_status sensor_inter_line(rc_reader *rd, const rc_block *b, rc_case_sensor *s)
 {
     char dir[16] = "";
-    double fmin = 0.0, tmin = 0.0, fcut = 0.0;
+    double fmin = 0.0, fcut = 0.0;
     rc_field g[] = {RC_F_INT("int_ID", &s->inter_id, 0, RC_FF_POS),
                     RC_F_STR("DIR", dir, 10),
                     RC_F_REALD("Fmin", &fmin, 0, RC_FF_NONNEG, RC_D_F),
                     RC_F_REALD("Fmax", &s->fmax, 0, RC_FF_NONNEG, RC_D_F),
-                    RC_F_REALD("Tmin", &tmin, 0, RC_FF_NONNEG | RC_FF_ONLY0, RC_D_T),
+                    RC_F_REALD("Tmin", &s->tmin, 0, RC_FF_NONNEG, RC_D_T),
                     RC_F_REALD("Fcut", &fcut, 0, RC_FF_NONNEG | RC_FF_ONLY0, RC_D_W)};
-    g[4].note = "(a minimum duration of the force criterion before the sensor triggers)";
     g[5].note = "(a filter of the contact force)";
     const int v = rc_layout_version(rd), nf = v >= 140 ? 6 : v >= 110 ? 5 : 1;
     s->line2_loc = b->lines[2].loc;
@@ -173,19 +173,25 @@ static rc_status sensor_inter_line(rc_reader *rd, const rc_block *b, rc_case_sen
                             "expected 0, got %s: a sensor triggered by the normal force falling below Fmin is not "
                             "supported yet; expected Fmax (the force rising above it) or the first contact",
                             g[2].got);
+    if (s->tmin > 0 && !(s->fmax > 0))
+        return rc_case_fail(rd, &b->lines[2].loc, b->name, "Tmin",
+                            "expected 0 without a force bound, got %s: the duration of a first contact is not "
+                            "supported yet; expected DIR FN and Fmax > 0 (the force held above Fmax for Tmin)",
+                            g[4].got);
     return RC_OK;
 }
 
 /* /SENSOR/TIME/sens_ID[/unit_ID]: title; Tdelay (the sensor is on from
  * t = Tdelay). /SENSOR/DIST/sens_ID[/unit_ID]: title; Tdelay; node_ID1
- * node_ID2 Dmin Dmax [Tmin Dflag from 2022: 0 only] (the sensor is on
- * Tdelay after the nodes' distance leaves [Dmin, Dmax]). /SENSOR/AND and
+ * node_ID2 Dmin Dmax [Tmin Dflag from 2022: Dflag 0 only] (the sensor is
+ * on Tdelay after the nodes' distance has stayed out of [Dmin, Dmax] for
+ * Tmin). /SENSOR/AND and
  * /SENSOR/OR: title; Tdelay; sens_ID1 sens_ID2. /SENSOR/NOT: title;
  * Tdelay; sens_ID1 (on from Tdelay while sens_ID1 is off).
  * /SENSOR/INTER: title; Tdelay; int_ID [DIR Fmin Fmax Tmin from 11.0; Fcut
  * from 14.0] (on Tdelay after the contact of interface int_ID closes, DIR
- * blank, or after its normal force rises above Fmax, DIR FN; Fmin, Tmin,
- * Fcut 0 only and DIR TF refused: not supported yet). The /RBODY and
+ * blank, or after its normal force has stayed above Fmax for Tmin, DIR FN;
+ * Fmin, Fcut 0 only and DIR TF refused: not supported yet). The /RBODY and
  * interfaces naming a sensor, and the interface a /SENSOR/INTER names: the
  * compiler (model/sensor.c). */
 rc_status rc_card_sensor_time(rc_reader *rd, const rc_block *b)
@@ -237,15 +243,13 @@ rc_status rc_card_sensor_time(rc_reader *rd, const rc_block *b)
     }
     if (dist) {
         s->line2_loc = b->lines[2].loc;
-        double tmin = 0;
         int dflag = 0;
         rc_field g[] = {RC_F_INT("node_ID1", &s->node[0], 0, RC_FF_POS),
                         RC_F_INT("node_ID2", &s->node[1], 0, RC_FF_POS),
                         RC_F_REALD("Dmin", &s->dmin, 0, RC_FF_NONNEG, RC_D_L),
                         RC_F_REALD("Dmax", &s->dmax, 0, RC_FF_NONNEG, RC_D_L),
-                        RC_F_REALD("Tmin", &tmin, 0, RC_FF_NONNEG | RC_FF_ONLY0, RC_D_T),
+                        RC_F_REALD("Tmin", &s->tmin, 0, RC_FF_NONNEG, RC_D_T),
                         RC_F_INTN("Dflag", &dflag, RC_FF_ONLY0, "(a sensor that deactivates again)")};
-        g[4].note = "(a minimum duration before the sensor triggers)";
         if ((st = rc_parse_line(rd, b, &b->lines[2], g, rc_layout_version(rd) >= 2022 ? 6 : 4))) return st;
         if (s->node[0] == s->node[1])
             return rc_case_fail(rd, &b->lines[2].loc, b->name, "node_ID2",

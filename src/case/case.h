@@ -251,6 +251,8 @@ typedef struct rc_case_sensor {
     int inter_id;         /* INTER: int_ID (an /INTER card's id) */
     int dir;              /* INTER: 0 DIR blank (the contact closes), 1 FN (normal force) */
     double fmax;          /* INTER FN: [N], 0: the contact closing is the trigger */
+    double tmin;          /* DIST, INTER FN with Fmax: [s], >= 0: how long the criterion
+                             must hold before the sensor triggers */
     rc_loc loc;
     rc_loc line_loc;      /* the (first) data line */
     rc_loc line2_loc;     /* DIST: the nodes' line; AND, OR, NOT, INTER: line 2 */

@@ -1094,7 +1094,7 @@ void rc_model_free(rc_model *m)
                       m->body_J, m->body_Jinv, m->body_y0, m->body_grav, m->body_dofmask, m->surf_id, m->surf_kind,
                       m->surf_body, m->surf_p, m->surf_n, m->surf_r, m->inter_id, m->inter_pair,
                       m->inter_sa, m->inter_sb, m->inter_ba, m->inter_bb, m->inter_gap,
-                      m->inter_tstart, m->inter_tstop, m->inter_sens, m->sens_id, m->sens_kind, m->sens_in, m->sens_hold, m->sens_tdelay,
+                      m->inter_tstart, m->inter_tstop, m->inter_sens, m->sens_id, m->sens_kind, m->sens_in, m->sens_hold, m->sens_tdelay, m->sens_tmin,
                       m->sens_body, m->sens_p, m->sens_d, m->sens_inter, m->inter_visc, m->inter_etarget, m->inter_vimp, m->inter_fscalev,
                       m->inter_ascalex, m->inter_fscaleld, m->inter_ascalef, m->inter_ascalev,
                       m->inter_fct_ld, m->inter_fct_dv, m->inter_fct_df, m->inter_eadr,

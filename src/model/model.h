@@ -265,6 +265,8 @@ struct rc_model {
                             /GRAV sensor_ID, grav_sens): its release root and
                             event (rc_data.sens_rel) */
     double *sens_tdelay; /* [nsens] [s] */
+    double *sens_tmin;   /* [nsens] DIST, INTER with Fmax: how long the criterion must
+                            hold before the sensor triggers [s] (0: at once) */
     int *sens_body;      /* [2*nsens] the points' bodies (-1: fixed in space) */
     double *sens_p;      /* [6*nsens] the points in their bodies' frames [m] */
     double *sens_d;      /* [2*nsens] DIST: Dmin, Dmax [m] (0: no such bound); INTER:

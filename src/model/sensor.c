@@ -295,13 +295,14 @@ rc_status rc_sensor_compile(const rc_case *c, rc_model *m, rc_error *err)
     m->sens_id = calloc(n, sizeof *m->sens_id);
     m->sens_kind = calloc(n, sizeof *m->sens_kind);
     m->sens_tdelay = calloc(n, sizeof *m->sens_tdelay);
+    m->sens_tmin = calloc(n, sizeof *m->sens_tmin);
     m->sens_body = calloc(2 * n, sizeof *m->sens_body);
     m->sens_p = calloc(6 * n, sizeof *m->sens_p);
     m->sens_d = calloc(2 * n, sizeof *m->sens_d);
     m->sens_in = calloc(2 * n, sizeof *m->sens_in);
     m->sens_hold = calloc(n, sizeof *m->sens_hold);
     m->sens_inter = calloc(n, sizeof *m->sens_inter);
-    if (!m->sens_id || !m->sens_kind || !m->sens_tdelay || !m->sens_body || !m->sens_p || !m->sens_d || !m->sens_in ||
+    if (!m->sens_id || !m->sens_kind || !m->sens_tdelay || !m->sens_tmin || !m->sens_body || !m->sens_p || !m->sens_d || !m->sens_in ||
         !m->sens_hold || !m->sens_inter)
         RC_RAISE(err, RC_ENOMEM, "out of memory");
     /* the sensors found in the run that release a held body, or start an
@@ -320,6 +321,7 @@ rc_status rc_sensor_compile(const rc_case *c, rc_model *m, rc_error *err)
         m->sens_id[k] = s->id;
         m->sens_kind[k] = (int)s->kind;
         m->sens_tdelay[k] = s->tdelay;
+        m->sens_tmin[k] = s->tmin;
         m->sens_body[2 * k] = m->sens_body[2 * k + 1] = -1;
         m->sens_in[2 * k] = m->sens_in[2 * k + 1] = -1;
         if (s->kind == RC_SENS_AND || s->kind == RC_SENS_OR)

@@ -136,6 +136,7 @@ static void copy_modes(const rc_model *m, const rc_data *src, rc_data *dst)
     if (m->nsens > 0) {
         memcpy(dst->sens_ton, src->sens_ton, (size_t)m->nsens * sizeof(double));
         memcpy(dst->sens_new, src->sens_new, (size_t)m->nsens * sizeof(int));
+        memcpy(dst->sens_arm, src->sens_arm, 2 * (size_t)m->nsens * sizeof(double));
         memcpy(dst->sens_rel, src->sens_rel, (size_t)m->nsens * sizeof(int));
     }
     dst->t_bp = src->t_bp;

@@ -23,6 +23,9 @@ phi = atan2(A, B).
 3. fmax: DIR FN, Fmax = 400 N, no delay: trigger and release at t_c + tau_F.
 4. and: B names /SENSOR/AND 7 of sensor 5 (DIR blank) and a /SENSOR/TIME
    at 0.1 s, Tdelay 0.02 s: released at max(t_c, 0.1) + 0.02.
+5. tmin: as 3 with Tmin half the time T_w the force stays above Fmax:
+   trigger and release at t_c + tau_F + T_w / 2.
+6. tmin_long: as 3 with Tmin = 1.5 T_w: never triggers, B held to the end.
 """
 import math
 import os
@@ -42,9 +45,12 @@ TCC = math.sqrt(2 * (ZC0 - R) / G)        # C's contact closes [s]
 W = math.sqrt(K / MA)
 AP, BP = G / W ** 2, G * TC / W
 TF = TC + (math.asin((FMAX / K - AP) / math.hypot(AP, BP)) + math.atan2(AP, BP)) / W  # k p = Fmax [s]
+TWIN = (math.pi - 2 * math.asin((FMAX / K - AP) / math.hypot(AP, BP))) / W  # k p above Fmax that long [s]
+TMIN = 0.5 * TWIN                        # tmin.rad: within the window
+TMIN_LONG = 1.5 * TWIN                   # tmin_long.rad: longer than the window, never triggers
 
 
-def falling(name, direction=None, fmax=None, tdelay=None, logic=None, ball_c=False):
+def falling(name, direction=None, fmax=None, tdelay=None, logic=None, ball_c=False, tmin=None):
     d = Deck(f"ball on a floor, its contact releasing a held body ({name})")
     nodes = [(1, 0.0, 0.0, Z0), (2, 1.0, 0.0, ZB0)]
     if ball_c:
@@ -64,7 +70,7 @@ def falling(name, direction=None, fmax=None, tdelay=None, logic=None, ball_c=Fal
         d.grnod(3, [3])
         d.sphere(3, 3, (2.0, 0.0, ZC0), R, title="C")
         d.type6(2, 3, 2, 1, isensor=5, title="C on the floor, on by sensor 5")
-    d.sensor_inter(5, 1, direction=direction, fmax=fmax, tdelay=tdelay, title="A's contact")
+    d.sensor_inter(5, 1, direction=direction, fmax=fmax, tdelay=tdelay, tmin=tmin, title="A's contact")
     if logic:  # (kind, time sensor's Tdelay, own Tdelay): sensor 7 = kind(5, 6)
         d.sensor_time(6, logic[1], title="time sensor")
         d.sensor_logic(logic[0], 7, 5, 6, tdelay=logic[2], title=f"{logic[0]} of 5 and 6")
@@ -79,12 +85,15 @@ def cases():
     return {"first.rad": falling("first contact", ball_c=True),
             "delay.rad": falling("first contact, Tdelay 0.1 s", tdelay=0.1),
             "fmax.rad": falling("normal force above Fmax", direction="FN", fmax=FMAX),
-            "and.rad": falling("AND of the first contact and a time", logic=("AND", 0.1, 0.02))}
+            "and.rad": falling("AND of the first contact and a time", logic=("AND", 0.1, 0.02)),
+            "tmin.rad": falling("normal force above Fmax for Tmin", direction="FN", fmax=FMAX, tmin=TMIN),
+            "tmin_long.rad": falling("normal force above Fmax for longer than it is", direction="FN", fmax=FMAX,
+                                     tmin=TMIN_LONG)}
 
 
 def main():
     for name, t_trig, t_rel in (("first", TC, TC), ("delay", TC, TC + 0.1), ("fmax", TF, TF),
-                                ("and", TC, max(TC, 0.1) + 0.02)):
+                                ("and", TC, max(TC, 0.1) + 0.02), ("tmin", TF + TMIN, TF + TMIN)):
         r = rcval.Result(rcval.run_case(name + ".rad"))
         tol = 1e-9
         ts = [t for t, k, el in zip(r.ev_t, r.ev_kind, r.ev_elem) if k == "sensor_trigger" and el == "/SENSOR/INTER/5"]
@@ -93,7 +102,7 @@ def main():
                     f"sensor_trigger /SENSOR/INTER/5 at {ts} s, closed form {t_trig:.12f} s: rel. error {e:.2e} "
                     f"(< {tol:.0e})")
         tcl = [t for t, k, el in zip(r.ev_t, r.ev_kind, r.ev_elem) if k == "contact_close" and el == "/INTER/TYPE6/1"]
-        if name != "fmax":
+        if name not in ("fmax", "tmin"):
             # the trigger is the contact's own closing event: the same time
             same = len(tcl) >= 1 and len(ts) == 1 and ts[0] == tcl[0]
             rcval.check(f"sensor_inter.{name}.onset", same,
@@ -126,6 +135,15 @@ def main():
                         f"/INTER/TYPE6/2 (Isensor 5) starts at {st} s, t_c = {TC:.12f} s: rel. error {e1:.2e}; "
                         f"C's contact closes at {cc[:1]} s, sqrt(2 (z_C0 - R)/g) = {TCC:.12f} s: rel. error "
                         f"{e2:.2e} (both < 1e-9)")
+    # the force above Fmax for less than Tmin: no trigger, B held to the end
+    r = rcval.Result(rcval.run_case("tmin_long.rad"))
+    fpk = float(r.fn[:, 0].max())
+    n_trig, n_rel = len(r.events("sensor_trigger")), len(r.events("impvel_stop"))
+    drift = max(np.abs(r.pos[:, 1] - [1.0, 0.0, ZB0]).max(), np.abs(r.vel[:, 1]).max())
+    rcval.check("sensor_inter.tmin_long.never", n_trig == 0 and n_rel == 0 and drift < 1e-12 and fpk > FMAX,
+                f"the force above Fmax = {FMAX:g} N (peak of the records {fpk:.4g} N) for {TWIN:.6e} s, Tmin "
+                f"{TMIN_LONG:.6e} s: {n_trig} sensor_trigger, {n_rel} impvel_stop (0 each), B at rest to the end "
+                f"(max |x - x0|, |v| = {drift:.1e}, < 1e-12)")
     rcval.finish()
 
 

@@ -32,6 +32,7 @@ rc_data *rc_data_new(const rc_model *m)
     d->mode_was = calloc(n, sizeof(int));
     d->sens_ton = calloc((size_t)m->nsens + 1, sizeof(double));
     d->sens_new = calloc((size_t)m->nsens + 1, sizeof(int));
+    d->sens_arm = calloc(2 * (size_t)m->nsens + 1, sizeof(double));
     d->sens_rel = calloc((size_t)m->nsens + 1, sizeof(int));
     d->t_bp = -INFINITY;
     d->inter_fcstr = calloc(n, sizeof(double));
@@ -95,7 +96,7 @@ rc_data *rc_data_new(const rc_model *m)
             jc_ok = d->sc->jcache != NULL;
         }
     }
-    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->inter_rband || !d->inter_settled || !d->inter_deck || !d->inter_hacc || !d->mode_was || !d->sens_ton || !d->sens_new || !d->sens_rel || !d->inter_fcstr || !d->cpl || !imp_ok || !jc_ok || !rc_ok ||
+    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->inter_rband || !d->inter_settled || !d->inter_deck || !d->inter_hacc || !d->mode_was || !d->sens_ton || !d->sens_new || !d->sens_arm || !d->sens_rel || !d->inter_fcstr || !d->cpl || !imp_ok || !jc_ok || !rc_ok ||
         !d->pt_slip || !d->sc->pt_share || !d->sc->inter_flim || !d->sc->inter_fnr || !d->pt_lband || !d->sc->pt_work || !d->pt_flip || !d->sc->node_cache) {
         rc_data_free(d);
         return NULL;
@@ -121,6 +122,7 @@ void rc_data_free(rc_data *d)
     free(d->sens_ton);
     free(d->sens_rel);
     free(d->sens_new);
+    free(d->sens_arm);
     free(d->inter_fcstr);
     free(d->pt_slip);
     free(d->sc->pt_share);

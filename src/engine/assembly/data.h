@@ -77,6 +77,10 @@ typedef struct rc_data {
     int *mode_was;       /* [ninter] scratch of the events: the modes before */
     double *sens_ton;    /* [nsens] a distance sensor's time on (its trigger time plus
                             Tdelay, latched), INFINITY until it triggers (events.c) */
+    double *sens_arm;    /* [2*nsens] a sensor with Tmin whose criterion holds: the time
+                            it began to hold [s] (NAN: it does not) and the side it
+                            left its bounds by (1: above Dmax or Fmax, -1: below
+                            Dmin) (events.c) */
     int *sens_new;       /* [nsens] bit 1: triggered at the last event, bit 2: released
                             its held bodies then, not yet written (the driver
                             writes the events and clears it) */

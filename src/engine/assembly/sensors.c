@@ -14,10 +14,13 @@
 
 int rc_sens_root_live(const rc_model *m, int j)
 {
-    const int k = j / 2;
+    const int k = j / 2, bounds = m->sens_kind[k] == 1 || m->sens_kind[k] == 5;
     /* the first slot of a sensor releasing a held body: its release root;
-     * an interface sensor with a force bound: its force root, first slot */
-    return ((m->sens_kind[k] == 1 || m->sens_kind[k] == 5) && m->sens_d[2 * k + (j % 2 ? 0 : 1)] > 0) ||
+     * a distance sensor's bounds (Dmax first); an interface sensor with a
+     * force bound: its force root, first slot; with Tmin (only with a
+     * bound) both slots: the criterion's end and Tmin reached
+     * (rc_sens_roots) */
+    return (bounds && (m->sens_d[2 * k + (j % 2 ? 0 : 1)] > 0 || m->sens_tmin[k] > 0)) ||
            (j % 2 == 0 && m->sens_hold[k]);
 }
 

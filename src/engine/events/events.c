@@ -516,6 +516,15 @@ static int sens_release(const rc_model *m, rc_data *d, double t, const int *root
     return n;
 }
 
+/* Sensor k with Tmin whose criterion begins to hold at t (side: 1 above
+ * Dmax or Fmax, -1 below Dmin), or stops holding (side 0), before Tmin:
+ * its roots change (rc_sens_roots), the integrator restarts. */
+static void sens_arm(rc_data *d, int k, double t, int side)
+{
+    d->sens_arm[2 * k] = side ? t : NAN;
+    d->sens_arm[2 * k + 1] = side;
+}
+
 /* Interface sensors not yet triggered whose interfaces' state at (t, y)
  * meets their criterion trigger at t (on at t + Tdelay, latched): without
  * a force bound, a contact of theirs closed (the contact_close event that
@@ -523,14 +532,28 @@ static int sens_release(const rc_model *m, rc_data *d, double t, const int *root
  * started); with Fmax, the total normal force above it (the root function
  * finds its rise through Fmax within a contact; this catches a force that
  * jumped there with a contact closed at the start or at an interface's
- * start). Returns how many. */
-static int sens_contact(const rc_model *m, rc_data *d, double t, const double *y)
+ * start). With Tmin the force above Fmax arms it instead (it triggers Tmin
+ * later, rc_sens_roots), and a force that jumped back to Fmax or below
+ * disarms it; *rearm set then (NULL: at the start). Returns how many
+ * triggered. */
+static int sens_contact(const rc_model *m, rc_data *d, double t, const double *y, int *rearm)
 {
     int n = 0;
     for (int k = 0; k < m->nsens; k++) {
         if (m->sens_kind[k] != 5 || isfinite(d->sens_ton[k])) continue;
         const double fmax = m->sens_d[2 * k + 1];
-        if (fmax > 0 ? rc_sens_inter_force(m, d, k, t, y) > fmax : rc_sens_inter_closed(m, d, k)) {
+        const int holds = fmax > 0 ? rc_sens_inter_force(m, d, k, t, y) > fmax : rc_sens_inter_closed(m, d, k);
+        if (m->sens_tmin[k] > 0) {
+            /* (one its root armed in this event stays armed: the force
+             * there is Fmax to the root's tolerance) */
+            const double arm = d->sens_arm[2 * k];
+            if (holds ? !isfinite(arm) : isfinite(arm) && arm != t) {
+                sens_arm(d, k, t, holds);
+                if (rearm) *rearm = 1;
+            }
+            continue;
+        }
+        if (holds) {
             d->sens_ton[k] = t + m->sens_tdelay[k];
             d->sens_new[k] |= 1;
             n++;
@@ -548,10 +571,15 @@ static void sens_init(const rc_model *m, rc_data *d, double t, double *y)
         d->sens_new[k] = 0;
         d->sens_rel[k] = 0;
         d->sens_ton[k] = m->sens_kind[k] == 0 ? m->sens_tdelay[k] : INFINITY;
+        sens_arm(d, k, t, 0);
         if (m->sens_kind[k] != 1) continue;
-        /* out of its bounds at the start: triggered then */
+        /* out of its bounds at the start: triggered then (with Tmin: armed
+         * then) */
         const double dist = rc_sens_distance(m, k, y), *b = m->sens_d + 2 * k;
-        if ((b[1] > 0 && dist > b[1]) || (b[0] > 0 && dist < b[0])) {
+        const int side = b[1] > 0 && dist > b[1] ? 1 : b[0] > 0 && dist < b[0] ? -1 : 0;
+        if (side && m->sens_tmin[k] > 0) {
+            sens_arm(d, k, t, side);
+        } else if (side) {
             d->sens_ton[k] = t + m->sens_tdelay[k];
             d->sens_new[k] = 1;
         }
@@ -576,7 +604,7 @@ void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y)
     }
     /* an interface sensor whose contact is closed at the start triggers
      * then, and what it turns on follows */
-    if (m->nsens > 0 && sens_contact(m, d, t, y)) (void)sens_activate(m, d, t, y, NULL, 0, 0, &changed);
+    if (m->nsens > 0 && sens_contact(m, d, t, y, NULL)) (void)sens_activate(m, d, t, y, NULL, 0, 0, &changed);
     for (int i = 0; i < m->ninter; i++) {
         d->inter_hacc[2 * i] = 0.0;
         d->inter_hacc[2 * i + 1] =
@@ -933,7 +961,7 @@ static int sens_activate(const rc_model *m, rc_data *d, double t, double *y, rc_
             n++;
             started++;
         }
-        if (!started || !sens_contact(m, d, t, y)) break;
+        if (!started || !sens_contact(m, d, t, y, restart)) break;
         *restart = 1;
     }
     return n;
@@ -950,14 +978,28 @@ static int sensors_apply(const rc_model *m, rc_data *d, double t, double *y, con
     int any = 0;
     /* a release root crossed (a time on known before this event) */
     if (sens_release(m, d, t, r, y)) *restart = 1; /* the holds end: the imposed rows jump */
-    for (int k = 0; k < m->nsens; k++)
-        if ((m->sens_kind[k] == 1 || m->sens_kind[k] == 5) && (r[2 * k] || r[2 * k + 1]) &&
-            !isfinite(d->sens_ton[k])) {
-            d->sens_ton[k] = t + m->sens_tdelay[k];
-            d->sens_new[k] |= 1;
-            any = 1;
-            *restart = 1; /* its roots leave the set: start afresh */
+    for (int k = 0; k < m->nsens; k++) {
+        if (!((m->sens_kind[k] == 1 || m->sens_kind[k] == 5) && (r[2 * k] || r[2 * k + 1]) &&
+              !isfinite(d->sens_ton[k])))
+            continue;
+        *restart = 1; /* its roots leave the set or change: start afresh */
+        /* with Tmin: a criterion that begins to hold arms the sensor (slot
+         * 0: above Dmax or Fmax, 1: below Dmin), one that stops holding
+         * first disarms it, Tmin reached triggers it (rc_sens_roots) */
+        if (m->sens_tmin[k] > 0 && !isfinite(d->sens_arm[2 * k])) {
+            sens_arm(d, k, t, r[2 * k] ? 1 : -1);
+            continue;
         }
+        if (m->sens_tmin[k] > 0 && !r[2 * k + 1]) {
+            sens_arm(d, k, t, 0);
+            continue;
+        }
+        /* Tmin after the criterion began to hold (t, located, is at or
+         * just past it) */
+        d->sens_ton[k] = (m->sens_tmin[k] > 0 ? d->sens_arm[2 * k] + m->sens_tmin[k] : t) + m->sens_tdelay[k];
+        d->sens_new[k] |= 1;
+        any = 1;
+    }
     if (!any) return n;
     return sens_activate(m, d, t, y, ev, max_ev, n, restart);
 }
@@ -1049,7 +1091,7 @@ int rc_events_apply(const rc_model *m, rc_data *d, double t, double *y, const in
             }
     }
     /* the interface sensors of the contacts these events closed */
-    if (m->nsens > 0 && sens_contact(m, d, t, y)) {
+    if (m->nsens > 0 && sens_contact(m, d, t, y, restart)) {
         *restart = 1;
         n = sens_activate(m, d, t, y, ev, max_ev, n, restart);
     }
@@ -1345,7 +1387,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
         }
     }
     /* the interface sensors of the contacts closed here */
-    if (m->nsens > 0 && sens_contact(m, d, t, y)) {
+    if (m->nsens > 0 && sens_contact(m, d, t, y, restart)) {
         *restart = 1;
         n = sens_activate(m, d, t, y, ev, max_ev, n, restart);
     }

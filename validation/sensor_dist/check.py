@@ -43,8 +43,9 @@ DMIN_B, TMIN_LONG = 0.3, 0.2      # tmin_break.rad: below Dmin for ~0.102 s [s]
 TEND = 0.6
 
 
-def falling(name, n2, dmin, dmax, tdelay, logic=None, tmin=None):
-    d = Deck(f"ball falling onto a fixed ball, contact on by a distance sensor ({name})")
+def two_balls(title):
+    """Ball A above the fixed ball B, node 3 fixed at A's start; no sensor, contact or load yet."""
+    d = Deck(title)
     d.nodes([(1, 0.0, 0.0, Z0), (2, 0.0, 0.0, 0.0), (3, 0.0, 0.0, Z0)])
     d.rbody(1, 1, M, [J] * 3, grnod=1, title="A")
     d.rbody(2, 2, M, [J] * 3, grnod=2, title="B")
@@ -53,6 +54,11 @@ def falling(name, n2, dmin, dmax, tdelay, logic=None, tmin=None):
     d.bcs(1, 2, title="B fixed")
     d.sphere(1, 1, (0.0, 0.0, Z0), R)
     d.sphere(2, 2, (0.0, 0.0, 0.0), R)
+    return d
+
+
+def falling(name, n2, dmin, dmax, tdelay, logic=None, tmin=None):
+    d = two_balls(f"ball falling onto a fixed ball, contact on by a distance sensor ({name})")
     d.sensor_dist(5, 1, n2, dmin=dmin, dmax=dmax, tdelay=tdelay, tmin=tmin, title="distance sensor")
     isensor = 5
     if logic:  # (kind, time sensor's Tdelay, own Tdelay): sensor 7 = kind(5, 6)
@@ -68,15 +74,7 @@ def falling(name, n2, dmin, dmax, tdelay, logic=None, tmin=None):
 def broken():
     """tmin_break.rad: the contact on by sensor 6 (Dmax, as dmax.rad); sensors 5 and 8 below Dmin_b
     between A and B, Tmin 0.05 s and 0.2 s."""
-    d = Deck("ball falling onto a fixed ball, distance sensors with a minimum duration (Tmin)")
-    d.nodes([(1, 0.0, 0.0, Z0), (2, 0.0, 0.0, 0.0), (3, 0.0, 0.0, Z0)])
-    d.rbody(1, 1, M, [J] * 3, grnod=1, title="A")
-    d.rbody(2, 2, M, [J] * 3, grnod=2, title="B")
-    d.grnod(1, [1])
-    d.grnod(2, [2])
-    d.bcs(1, 2, title="B fixed")
-    d.sphere(1, 1, (0.0, 0.0, Z0), R)
-    d.sphere(2, 2, (0.0, 0.0, 0.0), R)
+    d = two_balls("ball falling onto a fixed ball, distance sensors with a minimum duration (Tmin)")
     d.sensor_dist(6, 1, 3, dmax=DMAX, title="the contact's sensor")
     d.sensor_dist(5, 1, 2, dmin=DMIN_B, tmin=TMIN, title="below Dmin for Tmin")
     d.sensor_dist(8, 1, 2, dmin=DMIN_B, tmin=TMIN_LONG, title="below Dmin for longer than it is")

@@ -547,7 +547,7 @@ TL('sensor_dist_same_node', SD, 'field node_ID2', before_end(SDIST(nodes='      
 TL('sensor_dist_no_bound', SD, 'field Dmax', before_end(SDIST(dmax=''), expect=3))
 TL('sensor_dist_dmax_negative', SD, 'field Dmax', before_end(SDIST(dmax='-1'), expect=3))
 TL('sensor_dist_dmin_above_dmax', SD, 'field Dmin', before_end(SDIST(dmin='2', dmax='1'), expect=3))
-TL('sensor_dist_tmin', SD, 'field Tmin', before_end(SDIST(tail='%20s' % '0.01'), expect=3))
+TL('sensor_dist_tmin', SD, 'field Tmin', before_end(SDIST(tail='%20s' % '-0.01'), expect=3))  # negative
 TL('sensor_dist_dflag', SD, 'field Dflag', before_end(SDIST(tail='%20s%10s' % ('', '1')), expect=3))
 TL('sensor_dist_missing_line', SD, 'expected 2 data lines', before_end(SDIST()[:3], expect=0))
 TL('sensor_dist_fixed_nodes', SD, 'field node_ID2',
@@ -812,7 +812,8 @@ TL('sensor_inter_fmin_above_fmax', SI, 'field Fmin',
    before_end(SINTER('         1        FN%20s%20s' % ('20', '10')), expect=3))
 TL('sensor_inter_fmin', SI, 'field Fmin', before_end(SINTER('         1        FN%20s' % '20'), expect=3))
 TL('sensor_inter_blank_dir_fmax', SI, 'field Fmax', before_end(SINTER('         1%10s%20s%20s' % ('', '', '10')), expect=3))
-TL('sensor_inter_tmin', SI, 'field Tmin', before_end(SINTER('         1        FN%20s%20s%20s' % ('', '10', '0.01')), expect=3))
+# Tmin on the first contact (no force bound): not supported yet
+TL('sensor_inter_tmin', SI, 'field Tmin', before_end(SINTER('         1%10s%20s%20s%20s' % ('', '', '', '0.01')), expect=3))
 TL('sensor_inter_fcut', SI, 'field Fcut',
    before_end(SINTER('         1        FN%20s%20s%20s%20s' % ('', '10', '', '100')), expect=3))
 TL('sensor_inter_tdelay_negative', SI, 'field Tdelay',

@@ -208,31 +208,27 @@ void rc_sens_roots(const rc_model *m, const rc_data *d, double t, const double *
             g[2 * k] = d->sens_rel[k] ? 1.0 : t - d->sens_ton[k];
             continue;
         }
-        /* a criterion that holds, waiting for Tmin: its end (the value
-         * back within the bound it left by) and the time Tmin after it
-         * began, both rising through 0 */
-        const double arm = d->sens_arm[2 * k], side = d->sens_arm[2 * k + 1];
-        if (m->sens_kind[k] == 5 && m->sens_d[2 * k + 1] > 0 && !isfinite(d->sens_ton[k])) {
+        if (isfinite(d->sens_ton[k])) continue;
+        if (m->sens_kind[k] == 5 && m->sens_d[2 * k + 1] > 0) {
             /* the forces the interfaces' roots just evaluated (inter_fnr):
              * rc_sens_roots runs after them, at the same state */
             double f = 0.0;
             for (int i = 0; i < m->ninter; i++)
                 if (m->inter_id[i] == m->sens_inter[k]) f += d->sc->inter_fnr[i];
             g[2 * k] = f - m->sens_d[2 * k + 1];
-            if (isfinite(arm)) {
-                g[2 * k] = -g[2 * k];
-                g[2 * k + 1] = t - (arm + m->sens_tmin[k]);
-            }
+        } else if (m->sens_kind[k] == 1) {
+            const double dist = rc_sens_distance(m, k, y), *b = m->sens_d + 2 * k;
+            if (b[1] > 0) g[2 * k] = dist - b[1];
+            if (b[0] > 0) g[2 * k + 1] = b[0] - dist;
         }
-        if (m->sens_kind[k] != 1 || isfinite(d->sens_ton[k])) continue;
-        const double dist = rc_sens_distance(m, k, y), *b = m->sens_d + 2 * k;
+        /* a criterion that holds, waiting for Tmin: its end (the root of
+         * the bound it crossed, negated: the value back within it) and the
+         * time Tmin after it began, both rising through 0 */
+        const double arm = d->sens_arm[2 * k];
         if (isfinite(arm)) {
-            g[2 * k] = side > 0 ? b[1] - dist : dist - b[0];
+            g[2 * k] = -(d->sens_arm[2 * k + 1] > 0 ? g[2 * k] : g[2 * k + 1]);
             g[2 * k + 1] = t - (arm + m->sens_tmin[k]);
-            continue;
         }
-        if (b[1] > 0) g[2 * k] = dist - b[1];
-        if (b[0] > 0) g[2 * k + 1] = b[0] - dist;
     }
 }
 

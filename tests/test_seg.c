@@ -1105,6 +1105,84 @@ static void test_box_edge_pairs_depth(void)
     }
 }
 
+/* The fade of a box-box edge pair's share (the cone's margin, the closest
+ * points' parameters, the local separating-axis test) and its rate: the
+ * rate against central differences of the fade along the bodies' motion
+ * (sliding and turning), over poses of a bar laid across a fixed bar that
+ * bring pairs into their fades: shifted along its length (its end passing
+ * the other bar), tilted about either horizontal axis by up to 0.02 rad
+ * (the cone's margin, the separating-axis test's tie band). */
+static void test_box_edge_pair_fade_rates(void)
+{
+    rc_error e;
+    rc_model *m = seg_compile("/NODE\n1,0.013,-0.021,0.0499\n/RBODY/1\nbar\n1,,,,2.0\n0.0033,0.0083,0.0083\n0,0,0\n"
+                              "/SURF/BOX/30\nbar along x\n1\n0.013,-0.021,0.0499\n0.3,0.05,0.05\n"
+                              "/SURF/BOX/40\nbar along y\n0\n0,0,-0.05\n0.05,0.3,0.05\n" LINEAR
+                              "/INTER/TYPE6/1\nbar on the bar\n30,40\n\n\n1\n\n\n" RUN_TAIL,
+                              &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    rc_data *d = rc_data_new(m);
+    double *y = calloc((size_t)m->ny, sizeof(double)), *yd = calloc((size_t)m->ny, sizeof(double));
+    double *yp = calloc((size_t)m->ny, sizeof(double)), *ym = calloc((size_t)m->ny, sizeof(double));
+    const int b = m->body_yadr[0], np = rc_seg_points(m, 0);
+    int checked = 0, zone[3] = {0, 0, 0}, bad = 0;
+    double worst = 0.0, fmin = 1.0;
+    for (int ix = 0; ix < 201; ix++)
+        for (int it = 0; it < 41; it++)
+            for (int ax = 0; ax < 2; ax++) {
+                rc_initial_state(m, y);
+                /* the bar shifted along x so that its end passes the other
+                 * bar (ix), tilted by th about x or y (ax); sliding and
+                 * turning */
+                const double th = 0.0005 * it, shift = 0.22 + 0.0005 * ix;
+                y[b + 0] += shift;
+                y[b + 3] = cos(0.5 * th);
+                y[b + 4 + ax] = sin(0.5 * th);
+                y[b + 7] = 0.31;
+                y[b + 8] = -0.23;
+                y[b + 9] = -0.017;
+                y[b + 10] = 0.7;
+                y[b + 11] = -0.9;
+                y[b + 12] = 1.3;
+                rc_assemble_rhs(m, d, 0.0, y, yd);
+                for (int j = 16; j < np; j++) {
+                    double f[2], fp[2], fm[2];
+                    const double dist = rc_point_fade(m, 0, j, y, f);
+                    if (!(dist < 0)) continue;
+                    fmin = fmin < f[0] ? fmin : f[0];
+                    if (!(f[0] > 2e-6 && f[0] < 1.0 - 1e-6)) continue;
+                    /* a step over which the fade changes by 1e-6 */
+                    const double h = 1e-6 / fmax(fabs(f[1]), 1.0);
+                    for (int k = 0; k < m->ny; k++) {
+                        yp[k] = y[k] + h * yd[k];
+                        ym[k] = y[k] - h * yd[k];
+                    }
+                    rc_point_fade(m, 0, j, yp, fp);
+                    rc_point_fade(m, 0, j, ym, fm);
+                    const double fd = (fp[0] - fm[0]) / (2.0 * h), err = fabs(fd - f[1]) / fmax(fabs(f[1]), 1.0);
+                    worst = fmax(worst, err);
+                    bad += !(err < 1e-4);
+                    checked++;
+                    zone[f[0] < 0.1 ? 0 : f[0] < 0.9 ? 1 : 2]++;
+                }
+            }
+    printf("    %d pairs in their fade (%d below 0.1, %d between, %d above 0.9), the smallest fade %.3g; "
+           "worst |rate - central difference| / |rate| = %.2e\n",
+           checked, zone[0], zone[1], zone[2], fmin, worst);
+    ENSURE(checked >= 50 && zone[0] > 0 && zone[1] > 0 && zone[2] > 0);
+    ENSURE(bad == 0);
+    free(y);
+    free(yd);
+    free(yp);
+    free(ym);
+    rc_data_free(d);
+    rc_model_free(m);
+}
+
 static void test_box_plane_jacobian(void)
 {
     box_pair_jacobian_check(0, 0);
@@ -1217,5 +1295,6 @@ void suite_seg(void)
     RUN_TEST(test_box_plane_jacobian);
     RUN_TEST(test_box_box_jacobian);
     RUN_TEST(test_box_edge_pairs_depth);
+    RUN_TEST(test_box_edge_pair_fade_rates);
     RUN_TEST(test_seg_sphere_step5_jacobian);
 }

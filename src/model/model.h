@@ -60,7 +60,7 @@
  * a share), the magnitude of its state F_t in its tangent plane at unit
  * share [N] (its spring's energy |F_t|^2 / (2 K_t)) */
 #define RC_PT_OUT 7
-#define RC_NODE_CACHE 11 /* values per point of the node geometry cache (rc_data.node_cache) */
+#define RC_NODE_CACHE 13 /* values per point of the node geometry cache (rc_data.node_cache) */
 /* Pairs with several contact points (docs/theory.md 2.7): the share band,
  * relative to the penetration scale [-], and the relaxation rate of the
  * effective penetration P_e down to P, relative to the contact's frequency

@@ -130,6 +130,12 @@ void rc_point_position(const rc_model *m, int i, int j, const double *y, double 
  * [surf_nadr[s] + its index] (left as it was when none; the entry, when a
  * segment of that surface, is tried first: set it to -1 before). */
 double rc_point_distance(const rc_model *m, int i, int j, const double *y, int *hints);
+/* The same point's fade at the state y (docs/theory.md 2.7): fade[0] the
+ * factor [-] of its depth in its share (1 for a node; for a pair of box
+ * edges, down to 1e-6 as it nears the end of its validity), fade[1] its
+ * rate [1/s] along the bodies' motion. Returns the point's distance as
+ * rc_point_distance's. */
+double rc_point_fade(const rc_model *m, int i, int j, const double *y, double fade[2]);
 /* The reports kept by the last rc_assemble_roots: 1 when y is, bit for bit,
  * the state of that evaluation (then rc_report_cache_get may be asked). */
 int rc_report_cache_state(const rc_model *m, const rc_data *d, const double *y);

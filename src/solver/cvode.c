@@ -80,6 +80,8 @@
 #define RC_TURN_MAX_ORDER 2
 /* ... and after a restart where a damped contact of several points closed (below) */
 #define RC_MULTI_MAX_ORDER 3
+/* the order while a lightly damped contact that reclosed at once is closed */
+#define RC_LOWQ_MAX_ORDER 2
 /* BDF order 2 at most until the next restart once CVODE's stability limit
  * detection has lowered the order at least RC_STALD_REDS times [-] since
  * the last restart, in at least RC_STALD_FRAC of its steps [-] (cv_solve) */
@@ -1027,6 +1029,13 @@ static int cv_restart(void *self, double t, int at_breakpoint)
      * (docs/theory.md 3.5) */
     int qmax = c->m->max_order;
     if (multi && qmax > RC_MULTI_MAX_ORDER) qmax = RC_MULTI_MAX_ORDER;
+    /* a lightly damped contact that reclosed at once (inter_lowq): order 3
+     * and above amplify its vibration at the steps its tolerance allows
+     * once the vibration is small, and the amplified vibration opened and
+     * reclosed it every few periods for good; order 2 (A-stable) while it
+     * stays closed (docs/theory.md 7.7) */
+    for (int i = 0; i < c->m->ninter && qmax > RC_LOWQ_MAX_ORDER; i++)
+        if (c->d->inter_lowq[i] && c->d->inter_mode[i] == RC_MODE_CLOSED) qmax = RC_LOWQ_MAX_ORDER;
     if (turned && qmax > RC_TURN_MAX_ORDER) qmax = RC_TURN_MAX_ORDER;
     const int fq = CVodeSetMaxOrd(c->cv, qmax);
     if (fq < 0) return fq;

@@ -219,7 +219,7 @@ rc_status rc_bk_write_event(const rc_model *m, const rc_data *d, ev_sink *o, dou
  * Writes the events; returns their number (*jumped is set when history
  * states were reset). */
 int rc_bk_resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double *f, ev_sink *out,
-                            rc_impacts *im, long *nevents, int *jumped, rc_status *st, rc_error *err)
+                            rc_impacts *im, rc_settle *hist, long *nevents, int *jumped, rc_status *st, rc_error *err)
 {
     int total = 0;
     *st = RC_OK;
@@ -234,6 +234,7 @@ int rc_bk_resolve_touching(const rc_model *m, rc_data *d, double t, double *y, d
         total += nev;
         *nevents += nev;
         for (int k = 0; k < nev && k < RC_MAX_EV; k++) rc_impacts_event(im, m, d, ev[k].inter, ev[k].kind, t, y);
+        rc_settle_lowq(hist, m, d, t, ev, nev < RC_MAX_EV ? nev : RC_MAX_EV);
         /* the interface sensors of the contacts closed here (events.c) */
         if (m->nsens > 0 && (*st = sensor_events(m, d, out, t, y, nevents, err))) return total;
         for (int k = 0; k < nev && k < RC_MAX_EV; k++)
@@ -880,7 +881,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     if (m->nsens > 0 && (st = sensor_events(m, d, &sink, t, y, &s.events, err))) goto done;
     {
         int jmp = 0;
-        rc_bk_resolve_touching(m, d, t, y, flook, &sink, &im, &s.events, &jmp, &st, err);
+        rc_bk_resolve_touching(m, d, t, y, flook, &sink, &im, hist, &s.events, &jmp, &st, err);
         if (st) goto done;
         /* contacts the initial state closed without an event: persistent
          * contacts from the start, followed at every step like the impacts */
@@ -1089,7 +1090,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
                 goto done;
             }
             /* contacts left at zero penetration or zero force: by the state */
-            nev += rc_bk_resolve_touching(m, d, t, y, flook, &sink, &im, &s.events, &jumped, &st, err);
+            nev += rc_bk_resolve_touching(m, d, t, y, flook, &sink, &im, hist, &s.events, &jumped, &st, err);
             if (st) goto done;
             if (nev > 0 && nr > 0) {
                 rc_bk_root_directions(m, d, rootdir);

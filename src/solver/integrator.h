@@ -18,6 +18,7 @@
 #include <signal.h>
 
 #include "engine/events/events.h"
+#include "engine/events/settle.h"
 #include "model/model.h"
 #include "output/output.h"
 #include "solver/impacts.h"
@@ -66,9 +67,11 @@ rc_status rc_bk_sink_event(ev_sink *k, double t, rc_event_kind kind, const char 
 rc_status rc_bk_write_event(const rc_model *m, const rc_data *d, ev_sink *o, double t, const double *y, const rc_event *ev,
                       rc_error *err);
 /* Contacts at zero penetration or zero force, decided by the state (after
- * the start and every event); f is scratch [ny]; returns the events. */
+ * the start and every event); f is scratch [ny]; hist the run's history of
+ * closes and openings (its order holds, rc_settle_lowq); returns the
+ * events. */
 int rc_bk_resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double *f, ev_sink *out, rc_impacts *im,
-                     long *nevents, int *jumped, rc_status *st, rc_error *err);
+                     rc_settle *hist, long *nevents, int *jumped, rc_status *st, rc_error *err);
 /* 1 when a root function is exactly zero at (t, y); g is scratch. */
 int rc_bk_root_on_zero(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
 double rc_bk_wall_now(void); /* [s], monotonic */

@@ -127,6 +127,7 @@ static void copy_modes(const rc_model *m, const rc_data *src, rc_data *dst)
     memcpy(dst->inter_track, src->inter_track, ni * sizeof(int));
     memcpy(dst->inter_slip, src->inter_slip, ni * sizeof(int));
     memcpy(dst->inter_settled, src->inter_settled, ni * sizeof(int));
+    memcpy(dst->inter_lowq, src->inter_lowq, ni * sizeof(int));
     memcpy(dst->inter_deck, src->inter_deck, ni * sizeof(int));
     memcpy(dst->inter_rband, src->inter_rband, ni * sizeof(double));
     memcpy(dst->inter_fcstr, src->inter_fcstr, ni * sizeof(double));

@@ -27,6 +27,7 @@ rc_data *rc_data_new(const rc_model *m)
     d->inter_band = calloc(2 * n, sizeof(double));
     d->inter_rband = calloc(n + 1, sizeof(double));
     d->inter_settled = calloc(n, sizeof(int));
+    d->inter_lowq = calloc(n, sizeof(int));
     d->inter_deck = calloc(n, sizeof(int));
     d->inter_hacc = calloc(2 * n, sizeof(double));
     d->mode_was = calloc(n, sizeof(int));
@@ -96,7 +97,7 @@ rc_data *rc_data_new(const rc_model *m)
             jc_ok = d->sc->jcache != NULL;
         }
     }
-    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->inter_rband || !d->inter_settled || !d->inter_deck || !d->inter_hacc || !d->mode_was || !d->sens_ton || !d->sens_new || !d->sens_arm || !d->sens_rel || !d->inter_fcstr || !d->cpl || !imp_ok || !jc_ok || !rc_ok ||
+    if (!d->inter_mode || !d->inter_branch || !d->inter_track || !d->inter_slip || !d->inter_dref || !d->inter_band || !d->inter_rband || !d->inter_settled || !d->inter_lowq || !d->inter_deck || !d->inter_hacc || !d->mode_was || !d->sens_ton || !d->sens_new || !d->sens_arm || !d->sens_rel || !d->inter_fcstr || !d->cpl || !imp_ok || !jc_ok || !rc_ok ||
         !d->pt_slip || !d->sc->pt_share || !d->sc->inter_flim || !d->sc->inter_fnr || !d->pt_lband || !d->sc->pt_work || !d->pt_flip || !d->sc->node_cache) {
         rc_data_free(d);
         return NULL;
@@ -117,6 +118,7 @@ void rc_data_free(rc_data *d)
     free(d->inter_deck);
     free(d->inter_rband);
     free(d->inter_settled);
+    free(d->inter_lowq);
     free(d->inter_hacc);
     free(d->mode_was);
     free(d->sens_ton);

@@ -100,6 +100,12 @@ typedef struct rc_data {
                             force suspended; it opens when P returns to 0;
                             docs/theory.md 5.2); set by the driver, cleared when
                             the mode leaves CLOSED */
+    int *inter_lowq;     /* [ninter] 1: a lightly damped contact whose modes
+                            chatter, events in a row within a few periods of
+                            its stiffest line (settle.c, rc_settle_lowq): while
+                            it stays closed the CVODE backend restarts at BDF
+                            order at most 2 (docs/theory.md 7.7); cleared when
+                            the mode leaves CLOSED */
     int *inter_deck;     /* [ninter] 1 until the interface's first event after the
                             start: its touch band covers the rounding of the
                             deck's coordinates (its bodies still where the deck

@@ -600,6 +600,7 @@ void rc_modes_init(const rc_model *m, rc_data *d, double t, double *y)
         int active = t >= ton && t <= m->inter_tstop[i];
         d->inter_mode[i] = RC_MODE_INACTIVE;
         d->inter_deck[i] = 1; /* its bodies where the deck put them */
+        d->inter_lowq[i] = 0;
         if (active) classify(m, d, i, t, y, &changed);
     }
     /* an interface sensor whose contact is closed at the start triggers
@@ -927,11 +928,12 @@ static rc_event_kind step_friction(const rc_model *m, rc_data *d, int i, double 
     return fr->form == RC_FF_VISCOUS ? RC_EV_FRIC_UNSATURATE : RC_EV_FRIC_STICK;
 }
 
-/* A settled contact (rc_data.inter_settled) stays so while it is closed. */
+/* A settled contact (rc_data.inter_settled) stays so while it is closed;
+ * so does the order hold of a contact that reclosed at once (inter_lowq). */
 static void clear_settled(const rc_model *m, rc_data *d)
 {
     for (int i = 0; i < m->ninter; i++)
-        if (d->inter_mode[i] != RC_MODE_CLOSED) d->inter_settled[i] = 0;
+        if (d->inter_mode[i] != RC_MODE_CLOSED) d->inter_settled[i] = d->inter_lowq[i] = 0;
 }
 
 /* After sensors triggered at t: the logic sensors of them follow, the

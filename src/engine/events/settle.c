@@ -20,6 +20,8 @@ struct rc_settle {
     int *nshrink;     /* [ninter] flights shrunk in a row */
     double *zeno_t;   /* [ninter] time of the interface's last event [s] */
     int *zeno_n;      /* [ninter] its events in a row, each within the Zeno window of the previous */
+    double *lq_t;     /* [ninter] time of its last event of any pass (rc_settle_lowq) [s] */
+    int *lq_n;        /* [ninter] its events in a row, each within RC_LOWQ_GAP periods of the previous */
 };
 
 rc_settle *rc_settle_new(const rc_model *m)
@@ -33,11 +35,14 @@ rc_settle *rc_settle_new(const rc_model *m)
     s->nshrink = calloc(n, sizeof(int));
     s->zeno_t = calloc(n, sizeof(double));
     s->zeno_n = calloc(n, sizeof(int));
-    if (!s->t_open || !s->t_close || !s->t_flight || !s->nshrink || !s->zeno_t || !s->zeno_n) {
+    s->lq_t = malloc(n * sizeof(double));
+    s->lq_n = calloc(n, sizeof(int));
+    if (!s->t_open || !s->t_close || !s->t_flight || !s->nshrink || !s->zeno_t || !s->zeno_n || !s->lq_t || !s->lq_n) {
         rc_settle_free(s);
         return NULL;
     }
-    for (int i = 0; i < m->ninter; i++) s->t_open[i] = s->t_close[i] = s->t_flight[i] = NAN; /* no contact phase yet */
+    for (int i = 0; i < m->ninter; i++) /* no contact phase yet */
+        s->t_open[i] = s->t_close[i] = s->t_flight[i] = s->lq_t[i] = NAN;
     return s;
 }
 
@@ -50,6 +55,8 @@ void rc_settle_free(rc_settle *s)
     free(s->nshrink);
     free(s->zeno_t);
     free(s->zeno_n);
+    free(s->lq_t);
+    free(s->lq_n);
     free(s);
 }
 
@@ -57,6 +64,20 @@ const char *rc_settle_hold(const rc_model *m, int i)
 {
     return m->method == 2 && rc_stk_settle_capable(m, i) ? "held by a unilateral constraint until its force turns tensile"
                                                          : "its penalty law held closed until P returns to 0";
+}
+
+void rc_settle_lowq(rc_settle *s, const rc_model *m, rc_data *d, double t, const rc_event *ev, int nev)
+{
+    for (int k = 0; k < nev; k++) {
+        const int i = ev[k].inter;
+        if (i < 0) continue;
+        double period = NAN;
+        const double zeta = rc_inter_zeta_stiff(m, i, &period);
+        if (!(zeta < RC_LOWQ_ZETA)) continue; /* NaN: undamped, or not a TYPE6 Visc */
+        s->lq_n[i] = t - s->lq_t[i] < RC_LOWQ_GAP * period ? s->lq_n[i] + 1 : 0;
+        s->lq_t[i] = t;
+        if (s->lq_n[i] >= RC_LOWQ_EVENTS && d->inter_mode[i] == RC_MODE_CLOSED) d->inter_lowq[i] = 1;
+    }
 }
 
 /* Hold the closed contact of interface i in persistent contact: its event
@@ -80,6 +101,7 @@ rc_settle_verdict rc_settle_after_events(rc_settle *s, const rc_model *m, rc_dat
                                          int *nsettled, int *restart, char *why, size_t n)
 {
     *nsettled = 0;
+    rc_settle_lowq(s, m, d, t, ev, nev);
     /* settling: a contact that closes after a flight short against its
      * last contact phase is held closed (RC_SETTLE_FLIGHT) */
     for (int k = 0; k < nev; k++) {

@@ -27,6 +27,14 @@
  * when its penetration returns to zero [-]. */
 #define RC_SETTLE_FLIGHT 1.0
 #define RC_SETTLE_SHRINK 2
+/* The order hold (rc_settle_lowq): BDF order 3 holds a mode of damping
+ * ratio zeta in its A(alpha) sector, alpha = 86.03 degrees, only where
+ * zeta >= sin(90 - alpha) = 0.069 [-]; RC_LOWQ_EVENTS events of the
+ * contact in a row, each within RC_LOWQ_GAP periods of its stiffest line
+ * of the one before [-] (an impact has a handful, then a flight). */
+#define RC_LOWQ_ZETA 0.069
+#define RC_LOWQ_GAP 1.5
+#define RC_LOWQ_EVENTS 20
 
 /* The interfaces' history: times of their last close and opening, the last
  * flight, how many times in a row the flights shrank, and the run of
@@ -57,6 +65,15 @@ typedef enum {
 rc_settle_verdict rc_settle_after_events(rc_settle *s, const rc_model *m, rc_data *d, double t, double dtout,
                                          const rc_event *ev, int nev, rc_event *settled, int max_settled,
                                          int *nsettled, int *restart, char *why, size_t n);
+
+/* The order hold of a lightly damped contact whose modes chatter
+ * (docs/theory.md 7.7): over the events ev[0..nev) at t of any pass (the
+ * root return's, rc_settle_after_events calls it; the touch pass's), the
+ * events of an interface whose TYPE6 damping ratio on its stiffest line is
+ * below RC_LOWQ_ZETA (rc_inter_zeta_stiff), RC_LOWQ_EVENTS of them in a
+ * row each within RC_LOWQ_GAP periods of that line of the one before, set
+ * d->inter_lowq while its contact is closed. */
+void rc_settle_lowq(rc_settle *s, const rc_model *m, rc_data *d, double t, const rc_event *ev, int nev);
 
 /* How the settled contact of interface i is held, for messages: by a
  * unilateral constraint (IDA, a settle-capable contact) or by its penalty

@@ -336,6 +336,9 @@ typedef struct rc_stats {
                              method (events method_explicit)            */
     long switches_implicit; /* and back (events method_implicit)        */
     long steps_explicit;  /* of `steps`, those of the explicit method     */
+    long records_thinned; /* records at events and inside contacts left
+                             out of the results file: past 200 in an
+                             output interval (docs/output-format.md)    */
     char vibration_note[480]; /* non-empty: a long run whose steps went
                              mostly into following undamped contact
                              vibrations (docs/theory.md 7.10)          */

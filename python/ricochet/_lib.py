@@ -71,7 +71,7 @@ class RcStats(ctypes.Structure):
                 ("preloaded", c_int), ("preload_iters", c_long), ("preload_wall_time", c_double),
                 ("contacts", c_long), ("contact", RcContact * RC_STATS_CONTACTS),
                 ("switches_explicit", c_long), ("switches_implicit", c_long), ("steps_explicit", c_long),
-                ("vibration_note", ctypes.c_char * 480), ("tolerance_note", ctypes.c_char * 480)]
+                ("records_thinned", c_long), ("vibration_note", ctypes.c_char * 480), ("tolerance_note", ctypes.c_char * 480)]
 
 
 # int (*rc_event_fn)(void *user, double t, const char *kind, const char *element, const double values[3])

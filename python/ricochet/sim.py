@@ -55,7 +55,7 @@ class RunStats(dict):
     rhs_evals, jac_evals, lin_setups, nonlin_iters, nonlin_fails,
     err_test_fails, root_evals, events, reinits, impacts, settles,
     violations, preload_iters, switches_explicit, switches_implicit,
-    steps_explicit), t_end [s] (simulated time reached), wall_time
+    steps_explicit, records_thinned), t_end [s] (simulated time reached), wall_time
     [s], energy_residual [J], t_settle [s] (NaN: none), preloaded (bool),
     preload_wall_time [s], the notes (sampling_note, physics_note,
     contacts_note, vibration_note, tolerance_note), ``impact``: the first 5 impacts as dicts (inter_id,

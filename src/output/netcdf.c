@@ -1219,6 +1219,7 @@ static rc_status write_final(rc_output *o, const rc_stats *st, int complete, con
         if (rc == RC_OK) rc = put_int64(o, "stats_switches_implicit", st->switches_implicit, err);
         if (rc == RC_OK) rc = put_int64(o, "stats_steps_explicit", st->steps_explicit, err);
         if (rc == RC_OK) rc = put_int64(o, "stats_settles", st->settles, err);
+        if (rc == RC_OK) rc = put_int64(o, "stats_records_thinned", st->records_thinned, err);
         if (rc == RC_OK) rc = put_double(o, "stats_t_settle", st->t_settle, err);
         if (rc == RC_OK) rc = put_double(o, "stats_t_end", st->t_end, err);
         if (rc == RC_OK) rc = put_double(o, "stats_wall_time", st->wall_time, err);

@@ -618,6 +618,22 @@ static rc_status record(const rc_backend *bk, void *self, const rc_model *m, con
     return st;
 }
 
+/* A record between two output times (at an event, inside a contact):
+ * written while the output interval has had fewer than RC_EXTRA_RECORDS of
+ * them (*extra), else left out of the file and counted (*thinned), its
+ * physics checks run all the same. A chattering contact (a cradle of
+ * undamped balls on a floor: 86 625 such records, 213 MB, in 0.3 s of a
+ * 1.67 s run) cannot fill the file; the events table keeps every event. */
+static rc_status extra_record(const rc_backend *bk, void *self, const rc_model *m, const rc_data *d, rc_output *o,
+                              frame_buf *fb, double t, const double *y, const double *yp, int at_event, long *extra,
+                              long *thinned, rc_error *err)
+{
+    const int keep = *extra < RC_EXTRA_RECORDS;
+    if (keep) (*extra)++;
+    else (*thinned)++;
+    return record(bk, self, m, d, keep ? o : NULL, fb, t, y, yp, at_event, err);
+}
+
 /* The interpolant of the integrator's last step for the impact table
  * (rc_interp_fn). */
 typedef struct interp_ctx {
@@ -917,6 +933,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     const double dt_contact =
         evrec && m->nbody <= RC_CONTACT_REC_MAX_BODIES ? rc_contact_record_interval(m, dtout) : 0.0;
     double t_contact_rec = -INFINITY; /* time of the last such record [s] */
+    long extra = 0;                   /* records at events and inside contacts since the last output time */
     long single = 0;                  /* single steps since the last output time */
     long rhs_seen = -1;               /* d->sc->n_rhs at the last return (the physics checks) */
     while (t < tend) {
@@ -1034,9 +1051,12 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
              * output record when the event falls on an output time; a knot
              * alone is no event */
             const int on_out = tout - t <= 1e-12 * fmax(fabs(t), dtout);
-            if (((evrec && ev_here) || on_out) && (st = record(bk, self, m, d, out, &fb, t, y, yp, evrec && ev_here, err)))
-                goto done;
+            if (on_out) st = record(bk, self, m, d, out, &fb, t, y, yp, evrec && ev_here, err);
+            else if (evrec && ev_here)
+                st = extra_record(bk, self, m, d, out, &fb, t, y, yp, 1, &extra, &s.records_thinned, err);
+            if (st) goto done;
             if (on_out) {
+                extra = 0;
                 nout++;
                 tout = fmin(nout * dtout, tend);
             }
@@ -1113,9 +1133,12 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
              * full-state record at the event (rc_event_records), or else the
              * output record */
             const int on_out = tout - t <= 1e-12 * fmax(fabs(t), dtout);
-            if (nev > 0 && (evrec || on_out) && (st = record(bk, self, m, d, out, &fb, t, y, yp, evrec, err)))
-                goto done;
+            if (nev > 0 && on_out) st = record(bk, self, m, d, out, &fb, t, y, yp, evrec, err);
+            else if (nev > 0 && evrec)
+                st = extra_record(bk, self, m, d, out, &fb, t, y, yp, evrec, &extra, &s.records_thinned, err);
+            if (st) goto done;
             if (on_out) {
+                extra = 0;
                 nout++;
                 tout = fmin(nout * dtout, tend);
             }
@@ -1124,7 +1147,9 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
              * a record inside a contact when its time scale calls for one */
             if (dt_contact > 0 && t - t_contact_rec >= dt_contact &&
                 rc_impacts_recent(&im, t, RC_CONTACT_REC_SPAN * RC_CONTACT_RECORDS * dt_contact)) {
-                if ((st = record(bk, self, m, d, out, &fb, t, y, yp, RC_REC_CONTACT, err))) goto done;
+                if ((st = extra_record(bk, self, m, d, out, &fb, t, y, yp, RC_REC_CONTACT, &extra, &s.records_thinned,
+                                       err)))
+                    goto done;
                 t_contact_rec = t;
             }
         } else {
@@ -1137,6 +1162,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
                 }
                 if ((st = record(bk, self, m, d, out, &fb, tout, yo, ypo, 0, err))) goto done;
                 single = 0;
+                extra = 0;
                 nout++;
                 const double next = fmin(nout * dtout, tend);
                 if (next <= tout) break;

@@ -199,6 +199,12 @@ void rc_stats_print(const rc_stats *s, FILE *f)
         }
     }
     if (s->sampling_note[0]) fprintf(f, "warning: %s\n", s->sampling_note);
+    if (s->records_thinned > 0)
+        fprintf(f,
+                "warning: %ld records at events and inside contacts left out of the results file: more than %d "
+                "in an output interval (stats_records_thinned; the events table has every event, the impact "
+                "table every peak; a smaller /RUN Dt_out writes more)\n",
+                s->records_thinned, RC_EXTRA_RECORDS);
     if (s->vibration_note[0]) fprintf(f, "note: %s\n", s->vibration_note);
     if (s->tolerance_note[0]) fprintf(f, "note: %s\n", s->tolerance_note);
     /* the physics checks (docs/theory.md) and what the contacts did */

@@ -19,6 +19,10 @@
 
 #include "ricochet/ricochet.h"
 
+/* Records at events and inside contacts written per output interval, at
+ * most (drive.c extra_record; docs/output-format.md) [-]. */
+#define RC_EXTRA_RECORDS 200
+
 /* /SOLVER Method numbers (docs/case-format.md). */
 enum { RC_METHOD_CVODE = 1, RC_METHOD_IDA = 2, RC_METHOD_STATIC = 3 };
 

@@ -355,8 +355,10 @@ static double ledger_drop(int ncid, const char *var, size_t nt, double *last)
  * default tolerances, the sharing rule of before created 1e-2 E_s. */
 /* Compiles the deck (written as `name`), runs it to the results file
  * <tmp>/name.nc (its path into out[512]) and checks it ran; 0 when it did.
- * m_check (may be NULL) is called on the compiled model first. */
-static int run_to_file(const char *deck, const char *name, char *out, void (*m_check)(const rc_model *))
+ * m_check (may be NULL) is called on the compiled model first; the run's
+ * statistics into *stats (NULL: not wanted). */
+static int run_to_file(const char *deck, const char *name, char *out, void (*m_check)(const rc_model *),
+                       rc_stats *stats)
 {
     rc_error e;
     rc_model *m = TU_COMPILE_OK(deck, name);
@@ -366,7 +368,7 @@ static int run_to_file(const char *deck, const char *name, char *out, void (*m_c
     rc_run_options o;
     memset(&o, 0, sizeof o);
     o.output_path = out;
-    const rc_status st = rc_run(m, &o, NULL, &e);
+    const rc_status st = rc_run(m, &o, stats, &e);
     ENSURE(st == RC_OK);
     rc_model_free(m);
     if (st) printf("    %s\n", e.msg);
@@ -376,7 +378,7 @@ static int run_to_file(const char *deck, const char *name, char *out, void (*m_c
 static void ledger_monotone(const char *deck, const char *name, double rel)
 {
     char out[512];
-    if (run_to_file(deck, name, out, NULL)) return;
+    if (run_to_file(deck, name, out, NULL, NULL)) return;
     int ncid, tid;
     size_t nt = 0;
     ENSURE(nc_open(out, NC_NOWRITE, &ncid) == NC_NOERR);
@@ -1012,6 +1014,21 @@ static void test_box_sliding_start_at_every_rtol(void)
 }
 
 
+/* The at_event flags of the records of results file `path` (the caller
+ * frees *ae); their number, 0 when the file cannot be read. */
+static size_t read_at_event(const char *path, int **ae)
+{
+    int ncid, dim, var;
+    size_t nt = 0;
+    *ae = NULL;
+    if (nc_open(path, NC_NOWRITE, &ncid) != NC_NOERR) return 0;
+    if (nc_inq_dimid(ncid, "time", &dim) == NC_NOERR && nc_inq_dimlen(ncid, dim, &nt) == NC_NOERR &&
+        (*ae = calloc(nt + 1, sizeof(int))) != NULL && nc_inq_varid(ncid, "at_event", &var) == NC_NOERR)
+        nc_get_var_int(ncid, var, *ae);
+    nc_close(ncid);
+    return *ae ? nt : 0;
+}
+
 /* Records inside contacts (at_event = 2, docs/output-format.md) cover the
  * first contact times of an impact, not a contact that lasts: a ball
  * resting on a floor for 2 s (Dt_out 0.5 s, its contact time ~6 ms) gets
@@ -1028,33 +1045,16 @@ static void test_contact_records_bounded(void)
         "/GRAV/1\ng\n         0         Z         0         0         1                             1               -9.81\n"
         "/INTER/TYPE6/1\nball on floor\n         1         2\n\n\n         1         0\n\n         600\n"
         "/RUN\n                   2                 0.5\n/END\n";
-    rc_error e;
-    rc_model *m = tu_compile_text(deck, "rest.rad", &e);
-    ENSURE(m != NULL);
-    if (!m) return;
-    char out[1024];
-    snprintf(out, sizeof out, "%s.nc", tu_tmp_write("rest_out.rad", deck));
-    rc_run_options o;
-    memset(&o, 0, sizeof o);
-    o.output_path = out;
+    char out[512];
     rc_stats st;
-    ENSURE(rc_run(m, &o, &st, &e) == RC_OK);
-    int ncid, dim, var;
-    size_t nt = 0;
+    ENSURE(run_to_file(deck, "rest.rad", out, NULL, &st) == 0);
+    int *ae = NULL;
+    const size_t nt = read_at_event(out, &ae);
     long n2 = 0;
-    if (nc_open(out, NC_NOWRITE, &ncid) == NC_NOERR) {
-        nc_inq_dimid(ncid, "time", &dim);
-        nc_inq_dimlen(ncid, dim, &nt);
-        int *ae = calloc(nt + 1, sizeof(int));
-        nc_inq_varid(ncid, "at_event", &var);
-        nc_get_var_int(ncid, var, ae);
-        for (size_t k = 0; k < nt; k++) n2 += ae[k] == 2;
-        free(ae);
-        nc_close(ncid);
-    }
+    for (size_t k = 0; k < nt; k++) n2 += ae[k] == 2;
+    free(ae);
     printf("    resting ball, 2 s: %zu records, %ld inside the contact (at_event = 2), %ld steps\n", nt, n2, st.steps);
     ENSURE(nt > 0 && n2 > 0 && n2 <= 4 * 20 + 10);
-    rc_model_free(m);
 }
 
 
@@ -1084,30 +1084,18 @@ static void test_extra_records_bounded(void)
         "/GRAV/1\ng\n         0         Z         0         0         1                             1               -9.81\n"
         "/INTER/TYPE6/1\nball on floor\n         1         2\n\n\n         1         0\n\n          60\n"
         "/RUN\n                   2                   2\n/END\n";
-    rc_error e;
-    rc_model *m = tu_compile_text(deck, "bounce.rad", &e);
-    ENSURE(m != NULL);
-    if (!m) return;
-    char out[1024];
-    snprintf(out, sizeof out, "%s.nc", tu_tmp_write("bounce_out.rad", deck));
-    rc_run_options o;
-    memset(&o, 0, sizeof o);
-    o.output_path = out;
+    char out[512];
     rc_stats st;
-    ENSURE(rc_run(m, &o, &st, &e) == RC_OK);
-    int ncid, dim, var;
-    size_t nt = 0, nev = 0;
+    ENSURE(run_to_file(deck, "bounce.rad", out, NULL, &st) == 0);
+    int *ae = NULL;
+    const size_t nt = read_at_event(out, &ae);
     long nx = 0, thinned = -1;
+    for (size_t k = 0; k < nt; k++) nx += ae[k] != 0;
+    free(ae);
+    int ncid, dim;
+    size_t nev = 0;
     if (nc_open(out, NC_NOWRITE, &ncid) == NC_NOERR) {
-        nc_inq_dimid(ncid, "time", &dim);
-        nc_inq_dimlen(ncid, dim, &nt);
-        nc_inq_dimid(ncid, "event", &dim);
-        nc_inq_dimlen(ncid, dim, &nev);
-        int *ae = calloc(nt + 1, sizeof(int));
-        nc_inq_varid(ncid, "at_event", &var);
-        nc_get_var_int(ncid, var, ae);
-        for (size_t k = 0; k < nt; k++) nx += ae[k] != 0;
-        free(ae);
+        if (nc_inq_dimid(ncid, "event", &dim) == NC_NOERR) nc_inq_dimlen(ncid, dim, &nev);
         long long v = -1;
         if (nc_get_att_longlong(ncid, NC_GLOBAL, "stats_records_thinned", &v) == NC_NOERR) thinned = (long)v;
         nc_close(ncid);
@@ -1116,7 +1104,6 @@ static void test_extra_records_bounded(void)
            "%zu rows in the events table\n", st.events, nt, nx, st.records_thinned, thinned, nev);
     ENSURE(st.events > 20 && st.records_thinned > 0 && thinned == st.records_thinned);
     ENSURE(nx == 200 && nt == 202 && (long)nev == st.events);
-    rc_model_free(m);
 }
 
 
@@ -2105,7 +2092,7 @@ static void release_ledger_kept(const rc_model *m) { ENSURE(rc_inter_release_led
 static void release_ledger_check(const char *deck, const char *what)
 {
     char out[512];
-    if (run_to_file(deck, "release.rad", out, release_ledger_kept)) return;
+    if (run_to_file(deck, "release.rad", out, release_ledger_kept, NULL)) return;
     int ncid, id, dim;
     size_t nt = 0, nev = 0;
     ENSURE(nc_open(out, NC_NOWRITE, &ncid) == NC_NOERR);

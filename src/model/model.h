@@ -516,12 +516,15 @@ int rc_inter_undamped(const rc_model *m, int i);
  * hysteresis (TYPE6 Iform 0, or the power law), a single contact point
  * (the shares of several points relax P_e, which dissipates). */
 int rc_inter_elastic(const rc_model *m, int i);
+/* The stiffness of interface i's stiffest line [N/m]: the steeper of its
+ * stiffness scale and, for TYPE6 Iform 1 and 2, its Stiff line (the
+ * vibration of a contact resting on it). */
+double rc_inter_k_stiff(const rc_model *m, int i);
 /* Interface i's TYPE6 damping Visc against its stiffest line: the damping
- * ratio zeta = Visc / (2 sqrt(k m)) [-] of its closed contact, k the
- * steeper of its stiffness scale and, for Iform 1 and 2, its Stiff line,
- * m the mass it drives (inter_mrest), and that line's period 2 pi
- * sqrt(m / k) into *period [s]; NaN (period too) where undamped, damped
- * by a curve or the power law, or without a scale. */
+ * ratio zeta = Visc / (2 sqrt(k m)) [-] of its closed contact, k =
+ * rc_inter_k_stiff, m the mass it drives (inter_mrest), and that line's
+ * period 2 pi sqrt(m / k) into *period [s]; NaN (period too) where
+ * undamped, damped by a curve or the power law, or without a scale. */
 double rc_inter_zeta_stiff(const rc_model *m, int i, double *period);
 
 /* ---- compile (model/compile.c) ------------------------------------ */

@@ -154,14 +154,19 @@ int rc_inter_undamped(const rc_model *m, int i)
     return pw->c == 0.0 && !pw->damp;
 }
 
+double rc_inter_k_stiff(const rc_model *m, int i)
+{
+    const double k = m->inter_kscale[i];
+    return m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] > 0 && m->inter_stiff[i] > k ? m->inter_stiff[i] : k;
+}
+
 double rc_inter_zeta_stiff(const rc_model *m, int i, double *period)
 {
     *period = NAN;
     if (m->inter_law[i] != RC_LAW_TYPE6 || !(m->inter_visc[i] > 0) ||
         (m->inter_fct_dv[i] >= 0 && m->inter_fscalev[i] != 0.0))
         return NAN;
-    double k = m->inter_kscale[i];
-    if (m->inter_iform[i] > 0 && m->inter_stiff[i] > k) k = m->inter_stiff[i];
+    const double k = rc_inter_k_stiff(m, i);
     const double mr = m->inter_mrest[i];
     if (!(k > 0) || !isfinite(k) || !(mr > 0) || !isfinite(mr)) return NAN;
     *period = 2.0 * RC_PI * sqrt(mr / k);

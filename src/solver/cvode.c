@@ -80,7 +80,7 @@
 #define RC_TURN_MAX_ORDER 2
 /* ... and after a restart where a damped contact of several points closed (below) */
 #define RC_MULTI_MAX_ORDER 3
-/* the order while a lightly damped contact that reclosed at once is closed */
+/* the order while a lightly damped contact whose events crowded is closed */
 #define RC_LOWQ_MAX_ORDER 2
 /* BDF order 2 at most until the next restart once CVODE's stability limit
  * detection has lowered the order at least RC_STALD_REDS times [-] since
@@ -1029,11 +1029,12 @@ static int cv_restart(void *self, double t, int at_breakpoint)
      * (docs/theory.md 3.5) */
     int qmax = c->m->max_order;
     if (multi && qmax > RC_MULTI_MAX_ORDER) qmax = RC_MULTI_MAX_ORDER;
-    /* a lightly damped contact that reclosed at once (inter_lowq): order 3
+    /* a lightly damped contact whose events crowded (inter_lowq): order 3
      * and above amplify its vibration at the steps its tolerance allows
-     * once the vibration is small, and the amplified vibration opened and
-     * reclosed it every few periods for good; order 2 (A-stable) while it
-     * stays closed (docs/theory.md 7.7) */
+     * once the vibration is small, and the amplified vibration changed its
+     * modes every period or two for good (opened and reclosed it, or its
+     * friction stuck and slipped); order 2 (A-stable) while it stays
+     * closed (docs/theory.md 7.7) */
     for (int i = 0; i < c->m->ninter && qmax > RC_LOWQ_MAX_ORDER; i++)
         if (c->d->inter_lowq[i] && c->d->inter_mode[i] == RC_MODE_CLOSED) qmax = RC_LOWQ_MAX_ORDER;
     if (turned && qmax > RC_TURN_MAX_ORDER) qmax = RC_TURN_MAX_ORDER;

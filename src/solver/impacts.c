@@ -474,8 +474,7 @@ double rc_contact_record_interval(const rc_model *m, double dtout)
 static double vib_period(const rc_model *m, int i)
 {
     if (!rc_inter_undamped(m, i)) return NAN;
-    double k = m->inter_kscale[i];
-    if (m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] > 0 && m->inter_stiff[i] > k) k = m->inter_stiff[i];
+    const double k = rc_inter_k_stiff(m, i);
     const int ba = m->inter_ba[i], bb = m->inter_bb[i];
     const double ma = ba >= 0 && m->body_yadr[ba] >= 0 ? m->body_mass[ba] : INFINITY;
     const double mb = bb >= 0 && m->body_yadr[bb] >= 0 ? m->body_mass[bb] : INFINITY;

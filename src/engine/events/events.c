@@ -929,7 +929,7 @@ static rc_event_kind step_friction(const rc_model *m, rc_data *d, int i, double 
 }
 
 /* A settled contact (rc_data.inter_settled) stays so while it is closed;
- * so does the order hold of a contact that reclosed at once (inter_lowq). */
+ * so does the order hold of a contact whose events crowded (inter_lowq). */
 static void clear_settled(const rc_model *m, rc_data *d)
 {
     for (int i = 0; i < m->ninter; i++)

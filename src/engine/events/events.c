@@ -237,9 +237,10 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
          * rest) would carry a stick damper force beyond its limit at once.
          * It slides on, its state on the limit opposite to its sliding
          * velocity (maximum dissipation), so that its root starts at
-         * -|v_t| and no stick/slip pair repeats at one instant. The stick
-         * force is the state (on the limit) less the damper c_t v_t (the
-         * points' states and forces here at unit share). */
+         * -|v_t| and no stick/slip pair repeats at one instant (its state
+         * at least the slip band, as any sliding state's: cap_state). The
+         * stick force is the state (on the limit) less the damper c_t v_t
+         * (the points' states and forces here at unit share). */
         int nback = 0;
         for (int j = 0; j < npt; j++) nback += sel[j] && !sl[j];
         if (nback > 0 && m->inter_fr[i].ct > 0) {
@@ -248,7 +249,13 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
                 if (!sel[j] || sl[j] || !(out[RC_PT_OUT * j] > 0)) continue;
                 double *fj = ft + ps * j, dv[3];
                 for (int k = 0; k < 3; k++) dv[k] = out[RC_PT_OUT * j + 1 + k] - fj[k]; /* -c_t v_t */
-                if (turn_state(fj, norm3(fj), dv, 1.0, changed)) sl[j] = 1;
+                /* at least the slip band: a state left at zero (sticking
+                 * at the force where it was, on a zero limit: F_n = 0 on
+                 * Iform 2's unload curve) has no direction to turn, and the
+                 * point would stick with its damper's force beyond that
+                 * zero limit (a box on a belt: 1.2e-3 N of friction at
+                 * F_n = 0); it slides on, against its sliding */
+                if (turn_state(fj, fmax(norm3(fj), m->inter_fr[i].fband), dv, 1.0, changed)) sl[j] = 1;
             }
         }
         /* no stored energy without work (cap_state); the points' states are

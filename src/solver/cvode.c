@@ -637,6 +637,8 @@ static rc_status cv_start(void *self, rc_error *err)
     CVCHECK(CVodeSetNonlinConvCoef(cv, RC_NEWTON_CONV_COEF), "CVodeSetNonlinConvCoef");
     CVCHECK(CVodeSetMaxNumSteps(cv, m->max_steps), "CVodeSetMaxNumSteps");
     CVCHECK(CVodeSetStabLimDet(cv, SUNTRUE), "CVodeSetStabLimDet");
+    CVCHECK(CVodeSetMaxErrTestFails(cv, RC_MAX_ERR_TEST_FAILS), "CVodeSetMaxErrTestFails");
+    CVCHECK(CVodeSetMaxConvFails(cv, RC_MAX_CONV_FAILS), "CVodeSetMaxConvFails");
     if (m->hmax > 0) CVCHECK(CVodeSetMaxStep(cv, m->hmax), "CVodeSetMaxStep");
     if (m->h0 > 0) CVCHECK(CVodeSetInitStep(cv, m->h0), "CVodeSetInitStep");
     if (c->nq > 0) {
@@ -729,6 +731,7 @@ static int erk_start(run_ctx *c, double t, double h)
         if (m->ewt_rel || m->npt > 0) flag = ERKStepWFtolerances(c->erk, cb_ewt);
         else flag = ERKStepSVtolerances(c->erk, m->rtol, c->av);
         if (flag < 0 || (flag = ERKStepSetMaxNumSteps(c->erk, m->max_steps)) < 0) return flag;
+        if ((flag = ERKStepSetMaxErrTestFails(c->erk, RC_MAX_ERR_TEST_FAILS)) < 0) return flag;
         if (m->hmax > 0 && (flag = ERKStepSetMaxStep(c->erk, m->hmax)) < 0) return flag;
         if (c->rm.n > 0 && (flag = ERKStepRootInit(c->erk, c->rm.n, cb_root)) < 0) return flag;
         if ((flag = ERKStepSetNoInactiveRootWarn(c->erk)) < 0) return flag;

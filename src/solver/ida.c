@@ -333,6 +333,8 @@ static rc_status ida_start(void *self, rc_error *err)
     IDACHECK(IDASetJacFn(ida, cb_jac), "IDASetJacFn");
     IDACHECK(IDASetMaxOrd(ida, m->max_order), "IDASetMaxOrd");
     IDACHECK(IDASetMaxNumSteps(ida, m->max_steps), "IDASetMaxNumSteps");
+    IDACHECK(IDASetMaxErrTestFails(ida, RC_MAX_ERR_TEST_FAILS), "IDASetMaxErrTestFails");
+    IDACHECK(IDASetMaxConvFails(ida, RC_MAX_CONV_FAILS), "IDASetMaxConvFails");
     /* Newton's convergence test as CVODE's (0.1 of the error test; IDA's
      * default is 0.33): the same accuracy of the corrections on both paths */
     IDACHECK(IDASetNonlinConvCoef(ida, 0.1), "IDASetNonlinConvCoef");

@@ -27,6 +27,19 @@
 
 /* Events kept per root return (more are applied but not itemised). */
 #define RC_MAX_EV 64
+/* Error test failures allowed in one step before the integrator gives up
+ * (CVODE's default 7, IDA's 10) [-]: a step grown far past a contact's time
+ * scale while nothing moved it (a box sliding steadily down an incline,
+ * steps of 0.09 s against a contact period of 5e-5 s) may need more cuts
+ * of that one step than that to resolve the contact again (9 there; with
+ * 7, CV_ERR_FAILURE at h = 4.3e-7 s, the error 600 times its tolerance) */
+#define RC_MAX_ERR_TEST_FAILS 20
+/* Newton convergence failures allowed in one step (the default of both
+ * integrators 10) [-]: each cuts the step 4x with a fresh Jacobian; a
+ * friction state turning at K_t |v_t| / L_r = 1e13 /s (Stiff 3e13 N/m, a
+ * ball sliding down a wall at zero normal force) converged after 14 in one
+ * step (with 10: CV_CONV_FAILURE at h = 7.9e-11 s; with 13, later) */
+#define RC_MAX_CONV_FAILS 20
 /* Progress in a log (stderr not a terminal): a line every RC_LOG_EVERY s. */
 #define RC_LOG_EVERY 10.0
 

@@ -548,15 +548,15 @@ def compare(scene, key, base, var, yard, frame=None, extra_yard=None):
 EVENT_KINDS = ("contact_close", "contact_open", "contact_separate")
 
 
-def event_counts(res):
+def event_counts(res, t_start=0.0):
     """Counts of the contact events (impacts, releases, separations) after
-    t = 0. The modes decided at t = 0 are left out: a touching start is
-    classified by the sign of a gap that is a rounding error (1e-13 m) in
-    the moved scene, with or without a contact_close event at t = 0 for the
-    same motion (README, invariant g)."""
+    t_start (>= 0). The modes decided at the start are left out: a touching
+    start is classified by the sign of a gap that is a rounding error
+    (1e-13 m) in the moved scene, with or without a contact_close event at
+    t = 0 for the same motion, or a touch band later (README, invariant g)."""
     c = {}
     for t, k, e in zip(res["event_time"], res["event_kind"], res["event_element"]):
-        if k not in EVENT_KINDS or not t > 0.0:
+        if k not in EVENT_KINDS or not t > t_start:
             continue
         c[(k, e)] = c.get((k, e), 0) + 1
     return c
@@ -567,7 +567,7 @@ def settled_elements(res):
     return {e for k, e in zip(res["event_kind"], res["event_element"]) if k == "contact_settle"}
 
 
-def compare_events(key, base, var, tight, elem_map=None, perturbed=None):
+def compare_events(key, base, var, tight, elem_map=None, perturbed=None, t_start=0.0):
     """The same events: for every (kind, element) whose count base and tight
     agree on (and the base perturbed by the variant's rounding, when given:
     a count that the rounding alone changes is the scene's sensitivity, not
@@ -577,9 +577,10 @@ def compare_events(key, base, var, tight, elem_map=None, perturbed=None):
     (flights of 3e-7 s shrinking by 0.9 a bounce), and how many come before
     the settling rule holds the contact moves with the method and the
     rounding (a ball against a wall: 45 closes on CVODE, 48 on IDA, the
-    motion the same)."""
-    cb, ct, cv = event_counts(base), event_counts(tight), event_counts(var)
-    cp = event_counts(perturbed) if perturbed is not None else None
+    motion the same). t_start: the events up to then are the start's
+    (event_counts)."""
+    cb, ct, cv = event_counts(base, t_start), event_counts(tight, t_start), event_counts(var, t_start)
+    cp = event_counts(perturbed, t_start) if perturbed is not None else None
     settling = settled_elements(base) | settled_elements(var)
     diffs = []
     for ke in sorted(set(cb) | set(ct) | set(cv)):

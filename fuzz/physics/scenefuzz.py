@@ -273,12 +273,18 @@ def process(scene, variants, ricochet, timeout=60.0, keep_dir=None, keep_all=Fal
 
     def events(key, r, name, eps):
         """compare_events, with the perturbed base as a yardstick when the
-        counts differ."""
-        v = INV.compare_events(key, b["res"], r["res"], tight["res"])
+        counts differ. The start's events: up to the time the scene's speed
+        scale takes to move 100 of the variant's roundings eps (a touching
+        pair that the rounding leaves a gap of eps apart and approaching
+        closes a touch band later, where the base closed it at t = 0: a
+        cradle 1 km out, its first pair closed at 2.3e-11 s)."""
+        vs = float(scene["scales"].get("v", 0.0) or 0.0)
+        t0 = 100.0 * eps / vs if vs > 0 else 0.0
+        v = INV.compare_events(key, b["res"], r["res"], tight["res"], t_start=t0)
         if v:
             rp = perturbed(name, eps)
             if rp["rc"] == 0 and rp["res"] is not None:
-                v = INV.compare_events(key, b["res"], r["res"], tight["res"], perturbed=rp["res"])
+                v = INV.compare_events(key, b["res"], r["res"], tight["res"], perturbed=rp["res"], t_start=t0)
         return v
 
     try:

@@ -125,6 +125,32 @@ static void test_compile_scales_and_derived_tolerances(void)
     }
 }
 
+/* A given position tolerance (/SOLVER Atol_pos) carries to the force
+ * states as the stick stiffness times it; where the law has no stick
+ * stiffness to carry it (the power law's K_t, 0 at P = 0), rtol of the
+ * contact's force scale, as where it is derived. A box on a power-law
+ * incline with friction per contact point was refused with a tolerance of
+ * 0 for its points' friction states (the message named the energy
+ * accounting, not the interface). */
+static void test_compile_given_atol_pos_friction_points(void)
+{
+    rc_model *m = TU_LOAD_OK("tests/data/box_incline_power_friction_atol_pos.rad");
+    ENSURE(m != NULL);
+    if (!m) return;
+    ENSURE_NEAR(m->atol_pos, 7.096896e-16, 0, 0);
+    int n = 0;
+    for (int i = 0; i < m->ninter; i++) {
+        const int k0 = m->inter_eadr[i] + m->inter_ns[i];
+        for (int k = 0; k < m->inter_pst[i] * m->inter_npt[i]; k++, n++) {
+            const double a = m->atol[k0 + k];
+            ENSURE(a > 0 && isfinite(a));
+            if (!(m->inter_fr[i].kt * m->atol_pos > 0)) ENSURE_NEAR(a, m->rtol * m->inter_fscale[i], 1e-12, 0);
+        }
+    }
+    ENSURE(n > 0); /* the deck has contact points with friction */
+    rc_model_free(m);
+}
+
 /* A touching start whose gap is the rounding of its coordinates is a
  * touching start for the scales: no fall over that gap. A 1 kg ball (R =
  * 0.05 m) on a floor, linear contact 1e5 N/m, gravity: its centre at
@@ -248,6 +274,7 @@ void suite_compile(void)
     RUN_TEST(test_compile_base_deck_is_valid);
     RUN_TEST(test_compile_scales_and_derived_tolerances);
     RUN_TEST(test_compile_scales_touching_within_rounding);
+    RUN_TEST(test_compile_given_atol_pos_friction_points);
     RUN_TEST(test_compile_errors_references);
     RUN_TEST(test_compile_errors_physics);
     RUN_TEST(test_compile_errors_friction_cards);

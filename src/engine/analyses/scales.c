@@ -832,7 +832,13 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
         /* the friction states likewise at the rounding force of the stick
          * spring K_t they follow while sticking (TYPE6: K_t = Stiff) */
         const double fft = scaled && isfinite(fr->kt) ? fmax(ffl, fr->kt * pfl[i]) : ffl;
-        const double af = scaled ? fmax(rt * m->inter_fscale[i], fft) : fr->kt * apos;
+        double af = scaled ? fmax(rt * m->inter_fscale[i], fft) : fr->kt * apos;
+        /* a given position tolerance and no stick stiffness to carry it to
+         * a force (the power law's K_t, 0 at P = 0): rtol of the force
+         * scale, as where it is derived (a box on a power-law incline with
+         * /SOLVER Atol_pos given was refused: its friction states' tolerance
+         * was 0) */
+        if (!(af > 0) || !isfinite(af)) af = isfinite(m->inter_fscale[i]) ? rt * m->inter_fscale[i] : af;
         for (int k = 0; k < 3; k++) {
             if (fr->tidx >= 0) a[fr->tidx + k] = af;
             if (fr->fidx >= 0) a[fr->fidx + k] = af;
@@ -875,8 +881,8 @@ rc_status rc_model_tolerances(rc_model *m, rc_error *err)
                          "contacts (docs/theory.md 7.1) leave the range of the doubles; expected values of ordinary "
                          "magnitude",
                          RC_LOC(m->body_loc[b]), m->body_id[b], k - m->body_yadr[b], m->atol[k]);
-        for (int i = 0; i < m->ninter; i++)
-            if (k >= m->inter_eadr[i] && k < m->inter_eadr[i] + m->inter_ns[i])
+        for (int i = 0; i < m->ninter; i++) /* its own states, then its contact points' */
+            if (k >= m->inter_eadr[i] && k < m->inter_eadr[i] + m->inter_ns[i] + m->inter_pst[i] * m->inter_npt[i])
                 RC_RAISE(err, RC_EINPUT,
                          RC_LOCFMT "card %s: the absolute tolerance derived for its state %d is %g: its scales "
                          "(docs/theory.md 7.1) leave the range of the doubles; expected values of ordinary magnitude",

@@ -508,6 +508,16 @@ static inline double rc_fric_band(const rc_model *m, int i)
     return b > s ? b : s;
 }
 
+/* The slip speed band of interface i's friction tests [m/s]: the sliding
+ * speed below which a slipping contact's v_t . e > 0 (its sliding along its
+ * force) is rounding rather than a push, RC_SLIP_BAND of the contact's
+ * speed scale, or the velocity tolerance without one. */
+static inline double rc_slip_vband(const rc_model *m, int i)
+{
+    const double vs = m->inter_vscale[i];
+    return isfinite(vs) && vs > 0 ? RC_SLIP_BAND * vs : m->atol_vel;
+}
+
 /* Interface i's normal law has no damping of any kind (TYPE6: Visc 0 and
  * no damping curve acting; the power law: C 0 and no damping curve, whose
  * RDF then scales nothing) (model/power.c). */

@@ -76,15 +76,6 @@ static void reset_friction(const rc_model *m, rc_data *d, int i, double *y, int 
     }
 }
 
-/* The sliding speed below which a slipping contact's v_t . e > 0 (its
- * sliding along its force) is rounding rather than a push: RC_SLIP_BAND of
- * the contact's speed scale, or the velocity tolerance without one [m/s]. */
-static double slip_vband(const rc_model *m, int i)
-{
-    const double vs = m->inter_vscale[i];
-    return isfinite(vs) && vs > 0 ? RC_SLIP_BAND * vs : m->atol_vel;
-}
-
 /* |v| of a 3-vector. */
 static double norm3(const double *v)
 {
@@ -148,7 +139,7 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
      * its crossing, sticking beyond its limit, or slipping along its force
      * faster than the slip speed band (a point at rest slides along its
      * force at the velocities' rounding) */
-    const double vb = slip_vband(m, i);
+    const double vb = rc_slip_vband(m, i);
     for (int j = 0; j < npt; j++) {
         sel[j] = roots ? roots[j] != 0 : out[RC_PT_OUT * j] > (sl[j] ? vb : 0.0);
         n += sel[j];
@@ -848,7 +839,7 @@ static void slip_on_limit(const rc_model *m, rc_data *d, int i, double t, double
     d->inter_slip[i] = 1;
     report(m, d, i, t, y, &q);
     d->inter_slip[i] = slip;
-    if (q.slip_root > slip_vband(m, i)) turn_state(ft, norm3(ft), q.vt, -1.0, changed);
+    if (q.slip_root > rc_slip_vband(m, i)) turn_state(ft, norm3(ft), q.vt, -1.0, changed);
 }
 
 /* Incremental friction going from slip to stick: the state is put where
@@ -1272,7 +1263,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
              * branch (beyond the slip speed band: a branch left on its far
              * side), not the rounding of a rate at rest */
             const int still = fabs(r.vl) <= fabs(dr.vl) * RC_TOUCH_ULPS * DBL_EPSILON * (fabs(t) + m->dtout);
-            const double vb = slip_vband(m, i);
+            const double vb = rc_slip_vband(m, i);
             /* a curve joined on the trend alone (the line on it within hb)
              * must find its rate root on the waiting side: the load curve
              * less steep than Stiff with the law already unloading (dP/dt
@@ -1317,7 +1308,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
          * its stick force exceeds the limit, along that force */
         if (incr1 && d->inter_slip[i]) {
             report(m, d, i, t, y, &r);
-            if (r.slip_root > slip_vband(m, i)) {
+            if (r.slip_root > rc_slip_vband(m, i)) {
                 stick_on_state(m, d, i, t, y, restart);
                 fkind = RC_EV_FRIC_STICK;
             }
@@ -1379,7 +1370,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
              * and kept there, would follow the curve down without end:
              * 116 of 400 random touching states, test_passive) */
             const int b2 = d->inter_branch[i];
-            const double vb2 = slip_vband(m, i);
+            const double vb2 = rc_slip_vband(m, i);
             if (md != RC_MODE_OPEN && m->inter_law[i] == RC_LAW_TYPE6 && m->inter_iform[i] != 0 &&
                 (b2 == RC_BR_LOAD || b2 == RC_BR_UNLOAD) && fabs(r.vl) <= vb2)
                 d->inter_rband[i] = b2 == RC_BR_LOAD ? 2.0 * vb2 : -2.0 * vb2;

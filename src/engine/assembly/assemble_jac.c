@@ -45,16 +45,55 @@ static void dense_body(const rc_model *m, int b, double t, const double *y, doub
     }
 }
 
+/* The contact points of node pair i that a complex-step column computes
+ * (seg_fill's `only`): every kernel decides on real parts, which the step
+ * leaves as they are, so a point out of the contact at the unperturbed
+ * state (q_j = Gap - d_j - offset - c <= 0, c the shares' offset: no share,
+ * no force, no power, its states relaxing on their own) stays out in every
+ * column and contributes nothing there; only the real parts of its cache
+ * entry, filled here, are read (for the deepest point's choice). The
+ * deepest point (P and c move with it) and the points tied with it are
+ * computed in every column, and so is every point within a margin of the
+ * contact (rounding of the real parts under the step, 1e-80 relative, is
+ * far inside it). Fills the cache nc at (ya, yb) and only[]; returns only,
+ * or NULL where the interface has no node points. Most of a box pair's 240
+ * points (corners against faces, edge pairs) and of a meshed surface's
+ * nodes are out of the contact at any time: a Jacobian of a stack of
+ * boxes took 26 evaluations of every one of them. */
+static const unsigned char *point_mask(const rc_model *m, int i, const T *ya, const T *yb, const T *ys, T *nc,
+                                       unsigned char *only)
+{
+    if (!nc || !rc_pair_nodes(m->inter_pair[i])) return NULL;
+    seg_fill_c(m, i, ya, yb, nc, NULL);
+    const int nn = rc_seg_points(m, i), oi = m->inter_oidx[i];
+    const double gap = m->inter_gap[i], off = oi >= 0 ? creal(ys[oi]) : 0.0;
+    double dmin = 0.0;
+    for (int j = 0; j < nn; j++) {
+        const double d = creal(nc[RC_NC * j]);
+        if (j == 0 || d < dmin) dmin = d;
+    }
+    const double c = creal(share_c_c(m, i, gap - dmin - off));
+    for (int j = 0; j < nn; j++) {
+        const double d = creal(nc[RC_NC * j]);
+        const double marg = 1e-9 * (fabs(gap) + fabs(d) + fabs(off) + fabs(c) + fabs(dmin)) + 1e-30;
+        /* NaN: computed (whatever the kernels make of it) */
+        only[j] = (unsigned char)!(gap - d - off - c < -marg && d > dmin + marg);
+    }
+    return only;
+}
+
 /* Dense block of interface i in the given modes: rows = accelerations of a
  * (if free), of b (if free), own states; columns = states of a, of b, own.
  * Contact points with friction (inter_npt): their states are read from y,
  * modes pslip (NULL: all `slip`); work: complex scratch of 2 (RC_NS_MAX +
  * inter_pst npt) values; ptslot (NULL: not wanted): the point-state rows of the
- * same columns are added into val through it (inter_ptslot); the columns of
- * the states in skip (NULL: none) are left 0. */
+ * same columns are added into val through it (inter_ptslot); ncache, nonly:
+ * the node cache and point_mask's scratch (NULL: every point computed where
+ * needed, in every column); the columns of the states in skip (NULL: none)
+ * are left 0. */
 static void dense_inter(const rc_model *m, int i, int mode, int branch, int track, int slip, const int *pslip,
                         const double *y, double *out, T *work, const int64_t *ptslot, double *val, T *ncache,
-                        const char *skip)
+                        unsigned char *nonly, const char *skip)
 {
     const rc_jblock *jb = &m->jb_inter[i];
     const int ba = m->inter_ba[i], bb = m->inter_bb[i], ns = m->inter_ns[i], ps = m->inter_pst[i];
@@ -67,6 +106,7 @@ static void dense_inter(const rc_model *m, int i, int mode, int branch, int trac
     load_body(m, ba, y, ya);
     load_body(m, bb, y, yb);
     rc_cs_load(y + m->inter_eadr[i], ns + np3, ys);
+    const unsigned char *only = point_mask(m, i, ya, yb, ys, ncache, nonly);
     for (int c = 0; c < jb->ncol; c++) {
         if (skip && skip[jb->cols[c]]) {
             for (int r = 0; r < jb->nrow; r++) out[r * jb->ncol + c] = 0.0;
@@ -76,7 +116,7 @@ static void dense_inter(const rc_model *m, int i, int mode, int branch, int trac
         rc_cs_step(yp);
         T acc[12] = {0};
         type6_c(m, i, mode, branch, track, slip, pslip, ya, yb, ys, fa ? acc : NULL, fb ? acc + 6 : NULL, sdot, NULL,
-                NULL, ncache);
+                NULL, ncache, only);
         rc_cs_unstep(yp);
         int r = 0;
         if (fa)
@@ -227,7 +267,8 @@ static void inter_block(const rc_model *m, const rc_data *d, int i, const double
         return;
     }
     dense_inter(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
-                d->pt_slip + m->inter_pbase[i], y, out, d->sc->pt_work, ptslot, val, d->sc->node_cache, d->jac_skip);
+                d->pt_slip + m->inter_pbase[i], y, out, d->sc->pt_work, ptslot, val, d->sc->node_cache,
+                d->sc->node_only, d->jac_skip);
 }
 
 /* A slot of `val` written by a refresh: not in a held row (those stay 0). */
@@ -258,8 +299,9 @@ static void point_columns(const rc_model *m, int i, const segctx_c *c, int j, in
         segfric_point_c(m, i, c, j, slip, ya, yb, Fj, po, &q);
         rc_cs_unstep(&Fj[k]);
         T acc[12] = {0}, fbv[3] = {-q.ft[0], -q.ft[1], -q.ft[2]};
-        if (fa) apply_force_c(m, ba, ya, q.ft, q.x, acc);
-        if (fb) apply_force_c(m, bb, yb, fbv, q.x, acc + 6);
+        /* out of the contact: no force, exactly (segfric_point) */
+        if (fa && creal(q.w) > 0) apply_force_c(m, ba, ya, q.ft, q.x, acc);
+        if (fb && creal(q.w) > 0) apply_force_c(m, bb, yb, fbv, q.x, acc + 6);
         int r = 0;
         for (int a = 0; a < 12; a++) {
             if ((a < 6 && !fa) || (a >= 6 && !fb)) continue;
@@ -294,7 +336,7 @@ static void points_jac(const rc_model *m, const rc_data *d, int i, const double 
     rc_cs_load(yr, ns + ps * npt, ys);
     t6out_c o;
     type6_c(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i], pslip, ya, yb, ys, NULL,
-            NULL, NULL, &o, NULL, d->sc->node_cache);
+            NULL, NULL, &o, NULL, d->sc->node_cache, NULL);
     segctx_c c;
     rc_cx fnf, kfr, fnd;
     fric_normal_c(m, i, o.fel + o.fd, o.kn, &o, &fnf, &kfr, &fnd);
@@ -319,7 +361,7 @@ void rc_jac_dense_block(const rc_model *m, int is_inter, int e, int mode, int br
         for (int k = 0; k < m->jb_inter[e].nrow * m->jb_inter[e].ncol; k++) out[k] = NAN;
         return;
     }
-    dense_inter(m, e, mode, branch, track, slip, NULL, y, out, work, NULL, NULL, NULL, NULL);
+    dense_inter(m, e, mode, branch, track, slip, NULL, y, out, work, NULL, NULL, NULL, NULL, NULL);
     free(work);
 }
 
@@ -459,6 +501,7 @@ int rc_jac_refresh_points(const rc_model *m, const rc_data *d, int i, const int 
     load_body(m, ba, y, ya);
     load_body(m, bb, y, yb);
     rc_cs_load(yr, ns, ys);
+    const unsigned char *only = point_mask(m, i, ya, yb, ys, nc, d->sc->node_only);
     /* 1. the block's columns: the flipped points' forces on a and b and
      * their friction power, new law less old law; their own rows anew */
     for (int c = 0; c <= ncol; c++) {
@@ -466,7 +509,7 @@ int rc_jac_refresh_points(const rc_model *m, const rc_data *d, int i, const int 
         if (!real && d->jac_skip && d->jac_skip[jb->cols[c]]) continue;
         T *yp = real ? NULL : c < na ? ya + c : c < na + nb ? yb + (c - na) : ys + (c - na - nb);
         if (yp) rc_cs_step(yp);
-        if (nc) seg_fill_c(m, i, ya, yb, nc);
+        if (nc) seg_fill_c(m, i, ya, yb, nc, only);
         t6out_c r;
         memset(&r, 0, sizeof r);
         T kn, dfh;
@@ -608,7 +651,7 @@ void rc_inter_report_rate(const rc_model *m, int i, int mode, int branch, int tr
         for (int k = 0; k < RC_NB; k++) rc_cs_step_along(&yb[k], ydot[m->body_yadr[bb] + k]);
     for (int k = 0; k < ns; k++) ys[k] = rc_cs_seed(y[m->inter_eadr[i] + k], ydot[m->inter_eadr[i] + k]);
     t6out_c o;
-    type6_c(m, i, mode, branch, track, slip, NULL, ya, yb, ys, NULL, NULL, NULL, &o, NULL, NULL);
+    type6_c(m, i, mode, branch, track, slip, NULL, ya, yb, ys, NULL, NULL, NULL, &o, NULL, NULL, NULL);
     if (ys != ysl) free(ys);
     dr->p = rc_cs_deriv(o.p);
     dr->vn = rc_cs_deriv(o.vn);

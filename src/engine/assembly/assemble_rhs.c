@@ -52,7 +52,7 @@ int rc_assemble_rhs(const rc_model *m, const rc_data *d, double t, const double 
             type6_r(m, i, d->inter_mode[i], d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
                     d->pt_slip + m->inter_pbase[i], rc_body_state(m, ba, y), rc_body_state(m, bb, y),
                     y + m->inter_eadr[i], acc_slot(m, ba, ydot), acc_slot(m, bb, ydot), sdot, NULL, NULL,
-                    d->sc->node_cache);
+                    d->sc->node_cache, NULL);
         }
         for (int k = 0; k < nst; k++)
             if (!isfinite(sdot[k])) {
@@ -139,7 +139,7 @@ static void report_eval(const rc_model *m, int i, int mode, int branch, int trac
                y + m->inter_eadr[i], NULL, NULL, NULL, &o, T6F_LAW | T6F_FULL);
     else
         type6_r(m, i, mode, branch, track, slip, pslip, rc_body_state(m, m->inter_ba[i], y),
-                rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, NULL, ncache);
+                rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, NULL, ncache, NULL);
     report_of(&o, r);
 }
 
@@ -170,7 +170,7 @@ void rc_points_eval(const rc_model *m, const rc_data *d, int i, const int *slip,
     t6out_r o;
     type6_r(m, i, RC_MODE_CLOSED, d->inter_branch[i], d->inter_track[i], d->inter_slip[i],
             slip ? slip : d->pt_slip + m->inter_pbase[i], rc_body_state(m, m->inter_ba[i], y),
-            rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, out, d->sc->node_cache);
+            rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i], NULL, NULL, NULL, &o, out, d->sc->node_cache, NULL);
 }
 
 /* The distance of distance sensor k's two points (body-frame points of
@@ -326,7 +326,7 @@ void rc_assemble_roots(const rc_model *m, const rc_data *d, double t, const doub
             t6out_r o;
             type6_r(m, i, mode, br, trk, d->inter_slip[i], d->pt_slip + m->inter_pbase[i],
                     rc_body_state(m, m->inter_ba[i], y), rc_body_state(m, m->inter_bb[i], y), y + m->inter_eadr[i],
-                    NULL, NULL, NULL, &o, pout, d->sc->node_cache);
+                    NULL, NULL, NULL, &o, pout, d->sc->node_cache, NULL);
             for (int j = 0; j < npt; j++) {
                 gp[j] = pout[RC_PT_OUT * j];
                 if (m->inter_fr[i].form == RC_FF_INCREMENTAL)

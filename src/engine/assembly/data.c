@@ -46,12 +46,14 @@ rc_data *rc_data_new(const rc_model *m)
     for (int i = 0; i < m->ninter; i++)
         if (rc_pair_nodes(m->inter_pair[i]) && rc_seg_points(m, i) > maxnode) maxnode = rc_seg_points(m, i);
     {
-        /* the hints, then the node cache (its offset a multiple of 16 bytes) */
-        const size_t nh = (size_t)rc_seg_hint_len(m);
-        d->sc->seg_hint = calloc(nh * sizeof(int) + (2 * RC_NODE_CACHE * (size_t)maxnode + 2) * sizeof(double), 1);
+        /* the hints, then the node cache (its offset a multiple of 16
+         * bytes), then the points a Jacobian column computes into it */
+        const size_t nh = (size_t)rc_seg_hint_len(m), ncd = 2 * RC_NODE_CACHE * (size_t)maxnode + 2;
+        d->sc->seg_hint = calloc(nh * sizeof(int) + ncd * sizeof(double) + (size_t)maxnode + 1, 1);
         if (d->sc->seg_hint) {
             for (size_t k = 0; k < nh; k++) d->sc->seg_hint[k] = -1;
             d->sc->node_cache = d->sc->seg_hint + nh;
+            d->sc->node_only = (unsigned char *)((double *)d->sc->node_cache + ncd);
         }
     }
     d->pt_slip = calloc((size_t)m->npt + 1, sizeof(int));

@@ -31,6 +31,10 @@ typedef struct rc_scratch {
     void *node_cache;    /* node geometry of a node pair, RC_NODE_CACHE complex
                             values per point (kernels.inc, seg_fill); it
                             follows seg_hint in one allocation */
+    unsigned char *node_only; /* [points of the largest node pair] the points a
+                            complex-step Jacobian column computes into the node
+                            cache (assemble_jac.c, point_mask); it follows the
+                            node cache */
     int *seg_hint;       /* [rc_seg_hint_len] the segment each surface node met
                             last, -1: none (geom_seg.inc, node_seg) */
     double *imp_free;    /* [ny] imposed velocities: the free accelerations of

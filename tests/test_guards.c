@@ -822,6 +822,47 @@ static void test_guards_box_overlap_fires(void)
     bench_close(&b);
 }
 
+/* The law behind its contact points (law_deficit): the upper box of the
+ * turned deck put 0.02 m into the lower one (within the penetration bound,
+ * a quarter of its thickness, 0.04 m), the contact closed, its law's
+ * penetration P_e left at the static 2e-4 m (a stack of three boxes rocking
+ * under its friction reached that, fuzz 217000139): the run stops and names
+ * the deficit; with P_e at 0.019 m nothing fires, nor when it falls back to
+ * 2e-4 m afterwards (the bound is of its largest since the contact closed:
+ * within an impact on a corner P_e falls as the other corners recede). */
+static void test_guards_law_deficit_fires(void)
+{
+    for (int k = 0; k < 2; k++) {
+        rc_error e;
+        rc_model *m = tu_compile_text(box_turned_deck(30.0), "guards_boxes.rad", &e);
+        ENSURE(m != NULL);
+        if (!m) return;
+        bench b;
+        ENSURE(bench_open(&b, m, 1));
+        ENSURE(m->inter_peidx[0] >= 0 && m->inter_pscale[0] < 1.5e-3);
+        b.y[m->body_yadr[0] + 2] = 0.26 - m->origin[2]; /* the model's coordinates */
+        b.d->inter_mode[0] = RC_MODE_CLOSED;
+        b.y[m->inter_eadr[0] + m->inter_peidx[0]] = k ? 0.019 : 2e-4;
+        rc_guards_step(b.g, b.d, 0.1, b.y, NULL, 0, ++b.steps);
+        if (k) { /* then down to 2e-4 m, as within an impact on a corner: P_e^max stays */
+            b.y[m->inter_eadr[0] + m->inter_peidx[0]] = 2e-4;
+            rc_guards_step(b.g, b.d, 0.1001, b.y, NULL, 0, ++b.steps);
+        }
+        char note[1200];
+        const long nv = bench_violations(&b, note, sizeof note);
+        printf("    P_e %g m: %ld violations %s\n", k ? 0.019 : 2e-4, nv, note);
+        if (k == 0) {
+            ENSURE(nv == 1);
+            ENSURE(strstr(note, "the contact points of /INTER/TYPE6/1 penetrate by 0.02") != NULL);
+            ENSURE(strstr(note, "0.0198 m deeper than its law's penetration P_e = 0.0002 m") != NULL);
+            ENSURE(strstr(note, "sink into each other") != NULL);
+        } else {
+            ENSURE(nv == 0);
+        }
+        bench_close(&b);
+    }
+}
+
 /* A cylinder held where the box is not: lying across a table's edge (its
  * axis perpendicular to the edge, which is not modelled) it acts through
  * the face's plane, which goes on beyond the rectangle. A roller (R =
@@ -880,4 +921,5 @@ void suite_guards(void)
     RUN_TEST(test_guards_start_overlap);
     RUN_TEST(test_guards_box_edges_cross);
     RUN_TEST(test_guards_box_overlap_fires);
+    RUN_TEST(test_guards_law_deficit_fires);
 }

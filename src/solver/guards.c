@@ -56,9 +56,10 @@ struct rc_guards {
     mono *emax;               /* [3 ninter + ncpl]: per interface damping, hysteresis, friction; per coupling */
     double *hyst;             /* [ninter] scratch: each interface's hysteresis at the record */
     double *pmax;             /* [ninter] largest penetration checked [m] */
+    double *pemax;            /* [ninter] largest law's penetration P_e since the contact closed [m] */
     mono balance;             /* minus energy_total: the balance never rises */
     /* excursions in progress (reported once each): penetration, centres, open */
-    unsigned char *on;        /* [5 ninter] */
+    unsigned char *on;        /* [6 ninter] */
     unsigned char *fric_over; /* [ninter] a friction force beyond its limit reported */
     unsigned char nonfinite;  /* reported once */
     /* results */
@@ -112,7 +113,8 @@ rc_guards *rc_guards_new(const rc_model *m, int warn, int show)
     g->emax = zalloc(3 * ni + nc, sizeof(mono));
     g->hyst = zalloc(ni, sizeof(double));
     g->pmax = zalloc(ni, sizeof(double));
-    g->on = zalloc(5 * ni, 1);
+    g->pemax = zalloc(ni, sizeof(double));
+    g->on = zalloc(6 * ni, 1);
     g->fric_over = zalloc(ni, 1);
     g->closed0 = zalloc(ni, 1);
     g->ever = zalloc(ni, 1);
@@ -122,7 +124,7 @@ rc_guards *rc_guards_new(const rc_model *m, int warn, int show)
     g->ncl = zalloc(ni, sizeof(long));
     g->nleave = zalloc(ni, sizeof(long));
     g->t_settle = zalloc(ni, sizeof(double));
-    if (!g->pbound || !g->fbound || !g->size || !g->gscratch || !g->emax || !g->hyst || !g->pmax || !g->on ||
+    if (!g->pbound || !g->fbound || !g->size || !g->gscratch || !g->emax || !g->hyst || !g->pmax || !g->pemax || !g->on ||
         !g->fric_over || !g->closed0 || !g->ever || !g->settled || !g->prev_mode || !g->hist || !g->ncl ||
         !g->nleave || !g->t_settle) {
         rc_guards_free(g);
@@ -138,7 +140,7 @@ rc_guards *rc_guards_new(const rc_model *m, int warn, int show)
 void rc_guards_free(rc_guards *g)
 {
     if (!g) return;
-    void *p[] = {g->pbound, g->fbound, g->size, g->gscratch, g->emax, g->hyst, g->pmax, g->on, g->fric_over,
+    void *p[] = {g->pbound, g->fbound, g->size, g->gscratch, g->emax, g->hyst, g->pmax, g->pemax, g->on, g->fric_over,
                  g->row, g->closed0, g->ever, g->settled, g->prev_mode, g->hist, g->ncl, g->nleave, g->t_settle};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
     free(g);
@@ -341,7 +343,7 @@ int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, co
         const int mode = d->inter_mode[i];
         if (mode == RC_MODE_INACTIVE || d->inter_track[i]) continue; /* not acting, or P = 0 by construction */
         const double P = zone[per * i + off] - (mode != RC_MODE_OPEN ? d->inter_band[2 * i] : 0.0);
-        unsigned char *on = g->on + 5 * i;
+        unsigned char *on = g->on + 6 * i;
         /* beyond the contact's scales */
         const double pb = g->pbound[i];
         if (P > g->pmax[i]) g->pmax[i] = P; /* over its bound at the end (rc_guards_finish) */
@@ -359,6 +361,32 @@ int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, co
                 return 1;
         } else if (P <= pb) {
             on[0] = 0;
+        }
+        /* several contact points sharing the law: its penetration P_e (an
+         * own state) behind the points' P by more than RC_DEFICIT_FACTOR
+         * max(P_e^max, p_s), P_e^max the largest since the contact closed (released on the way: the law at zero force)
+         * (an impact's: within an impact on a corner the law's penetration
+         * falls as the other corners recede while the deepest is still
+         * in): the force is the law's at P_e, the bodies sink into each
+         * other by the difference (docs/theory.md 2.7) */
+        if (mode != RC_MODE_CLOSED && mode != RC_MODE_RELEASED) g->pemax[i] = 0.0; /* open */
+        if (mode == RC_MODE_CLOSED && rc_pair_multi(m->inter_pair[i]) && m->inter_peidx[i] >= 0) {
+            const double pe = y[m->inter_eadr[i] + m->inter_peidx[i]], ps = m->inter_pscale[i];
+            g->pemax[i] = dmax(g->pemax[i], pe);
+            const double lim = RC_DEFICIT_FACTOR * dmax(g->pemax[i], isfinite(ps) ? ps : 0.0);
+            if (lim > 0 && P - pe > lim && !on[5]) {
+                on[5] = 1;
+                if (violate(g, t, t, "law_deficit", m->inter_name[i], P - pe, lim,
+                            "the contact points of %s penetrate by %.6g m at t = %.9g s, %.3g m deeper than its "
+                            "law's penetration P_e = %.3g m (the force it carries), beyond %g max(P_e^max, p_s) = "
+                            "%.3g m (P_e^max its largest since closing, p_s %.3g m): the shared force follows the "
+                            "work done on it, rocking left it behind, the contact's dissipation did not pay its "
+                            "recovery (docs/theory.md 2.7): the bodies sink into each other", m->inter_name[i], P, t,
+                            P - pe, pe, RC_DEFICIT_FACTOR, lim, ps))
+                    return 1;
+            } else if (!(P - pe > lim)) {
+                on[5] = 0;
+            }
         }
         /* two spheres' centres: from P = Gap - (|c_b - c_a| - R_a - R_b)
          * (an Inacti offset moves P: from the state then) */

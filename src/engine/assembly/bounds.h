@@ -16,6 +16,10 @@
 #define RC_PEN_FORCE_FACTOR 1e3
 /* Two spheres' centres closer than RC_SPHERE_CENTRE_FRAC (R1 + R2) [-]. */
 #define RC_SPHERE_CENTRE_FRAC 0.5
+/* A contact of several points is behind its geometry when its points
+ * penetrate by more than its law's penetration P_e plus RC_DEFICIT_FACTOR
+ * max(P_e, p_s) (docs/theory.md 2.7, 13.2) [-]. */
+#define RC_DEFICIT_FACTOR 10.0
 /* A start overlap is refused when the elastic energy it holds exceeds
  * RC_START_ENERGY_FACTOR times the scene's energy scale E_s [-]. */
 #define RC_START_ENERGY_FACTOR 1.0

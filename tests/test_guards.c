@@ -798,21 +798,34 @@ static void test_guards_box_edges_cross(void)
     }
 }
 
+/* The bench on the turned deck, the upper box's centre put by hand at
+ * height z [m] (into the lower box, whose top is at 0.2 m) and the contact
+ * closed; 0 when the deck did not compile or the bench did not open. */
+static int bench_boxes_closed(bench *b, double z)
+{
+    rc_error e;
+    memset(b, 0, sizeof *b);
+    rc_model *m = tu_compile_text(box_turned_deck(30.0), "guards_boxes.rad", &e);
+    if (!m) return 0;
+    if (!bench_open(b, m, 1)) {
+        bench_close(b);
+        return 0;
+    }
+    b->y[m->body_yadr[0] + 2] = z - m->origin[2]; /* the model's coordinates */
+    b->d->inter_mode[0] = RC_MODE_CLOSED;
+    return 1;
+}
+
 /* The overlap check itself: the upper box of the turned deck put by hand
  * 0.1 m into the lower one (deeper than its half-size 0.08 m, the bound of
  * the penetration: the contact points see nothing that deep), the contact
  * closed; the run stops and names the separating-axis overlap. */
 static void test_guards_box_overlap_fires(void)
 {
-    rc_error e;
-    rc_model *m = tu_compile_text(box_turned_deck(30.0), "guards_boxes.rad", &e);
-    ENSURE(m != NULL);
-    if (!m) return;
     bench b;
-    ENSURE(bench_open(&b, m, 1));
-    double *s = b.y + m->body_yadr[0];
-    s[2] = 0.18 - m->origin[2]; /* the model's coordinates */
-    b.d->inter_mode[0] = RC_MODE_CLOSED;
+    const int ok = bench_boxes_closed(&b, 0.18);
+    ENSURE(ok);
+    if (!ok) return;
     rc_guards_step(b.g, b.d, 0.1, b.y, NULL, 0, ++b.steps);
     char note[1200];
     ENSURE(bench_violations(&b, note, sizeof note) >= 1);
@@ -833,15 +846,12 @@ static void test_guards_box_overlap_fires(void)
 static void test_guards_law_deficit_fires(void)
 {
     for (int k = 0; k < 2; k++) {
-        rc_error e;
-        rc_model *m = tu_compile_text(box_turned_deck(30.0), "guards_boxes.rad", &e);
-        ENSURE(m != NULL);
-        if (!m) return;
         bench b;
-        ENSURE(bench_open(&b, m, 1));
+        const int ok = bench_boxes_closed(&b, 0.26);
+        ENSURE(ok);
+        if (!ok) return;
+        const rc_model *m = b.m;
         ENSURE(m->inter_peidx[0] >= 0 && m->inter_pscale[0] < 1.5e-3);
-        b.y[m->body_yadr[0] + 2] = 0.26 - m->origin[2]; /* the model's coordinates */
-        b.d->inter_mode[0] = RC_MODE_CLOSED;
         b.y[m->inter_eadr[0] + m->inter_peidx[0]] = k ? 0.019 : 2e-4;
         rc_guards_step(b.g, b.d, 0.1, b.y, NULL, 0, ++b.steps);
         if (k) { /* then down to 2e-4 m, as within an impact on a corner: P_e^max stays */

@@ -10,7 +10,7 @@ numbers}. Keys:
   start_not_refused
   b_energy_created
   c_damping c_hysteresis c_friction c_coupling_damping
-  d_penetration d_centres d_box_overlap
+  d_penetration d_centres d_box_overlap d_sink
   e_nonfinite
   f_linear_momentum f_angular_momentum
   g_frame g_frame_events g_frame_slow g_units g_units_events
@@ -32,6 +32,10 @@ LIN_MOM_REL = 1e-8
 ANG_MOM_REL = 1e-7
 ANG_MOM_RTOL = 10.0     # ... or 10 rtol where larger (check_momentum)
 PEN_FORCE_FACTOR = 1e3
+# d_sink: a contact's deepest penetration within SINK_FACTOR x the law's
+# penetration at its peak force (floor: at SINK_FLOOR x the scene's load)
+SINK_FACTOR = 10.0
+SINK_FLOOR = 1e-3
 DIV_REL = 1e-3          # divergence threshold of the rtol study (of L)
 RTOL_FLOOR_REL = 1e-7   # below this (of L) differences are not compared
 
@@ -64,7 +68,9 @@ def load(path):
                      "event_time", "event_penetration", "event_force_normal", "event_normal_speed", "energy_kinetic", "energy_potential", "energy_contact_work", "energy_damping",
                      "energy_friction_work", "energy_contact_stored", "energy_hysteresis", "energy_friction",
                      "energy_coupling_elastic", "energy_coupling_damping", "energy_catenary", "energy_imposed",
-                     "energy_total", "impact_speed_in", "impact_peak_force"):
+                     "energy_total", "impact_speed_in", "impact_peak_force", "impact_inter",
+                     "impact_max_penetration", "persistent_inter", "persistent_peak_force",
+                     "persistent_max_penetration"):
             r[name] = arr(name)
         for name in ("event_kind", "event_element"):
             r[name] = list(d.variables[name][:]) if name in d.variables else []
@@ -342,6 +348,46 @@ def check_penetration(scene, run, res):
                             f"{d[k]:.4g} m apart at t = {t[k]:.6g} s (radii {a['r']:.4g}, {b['r']:.4g} m)",
                             value=d[k], bound=lim, t=t[k], inter=it["id"]))
     out += check_box_overlap(scene, run, res)
+    out += check_sink(scene, run, res)
+    return out
+
+
+def check_sink(scene, run, res):
+    """d_sink: each contact of the impact and persistent tables (their
+    deepest penetration and peak force, both tracked at every integrator
+    step) penetrates no deeper than SINK_FACTOR x the penetration at which
+    the interface's elastic law reaches its peak force: a contact's force is
+    its law's at its penetration (at the deepest point the rate is zero and
+    the damping with it), so a body deeper than its force says has sunk
+    into the other without resistance. Floor: the law's penetration at
+    SINK_FLOOR x the scene's load (weight, or impact force at its speed)."""
+    out = []
+    ids = list(res["inter_id"]) if res.get("inter_id") is not None else []
+    by_id = {it["id"]: it for it in scene["inters"]}
+    sc = scene["scales"]
+    M = sc["m_total"]
+    for tab in ("impact", "persistent"):
+        inter, fpk, pmx = (res.get(f"{tab}_inter"), res.get(f"{tab}_peak_force"), res.get(f"{tab}_max_penetration"))
+        if inter is None or fpk is None or pmx is None:
+            continue
+        for k in range(len(inter)):
+            it = by_id.get(int(inter[k]))
+            if it is None or not it.get("law_curve") or not np.isfinite(pmx[k]) or not np.isfinite(fpk[k]):
+                continue
+            law = it["law_curve"]
+            v = sc["v"]
+            p_imp = SC.law_pen_at_energy(law, 0.5 * M * v * v)
+            F_imp = float(SC.law_force(law, p_imp)) if np.isfinite(p_imp) else 0.0
+            load = max(M * sc["g"], F_imp)
+            p_pk = SC.law_pen_at_force(law, max(float(fpk[k]), 0.0)) if fpk[k] > 0 else 0.0
+            p_fl = SC.law_pen_at_force(law, SINK_FLOOR * load) if load > 0 else 0.0
+            bound = SINK_FACTOR * max(p_pk, p_fl)
+            if bound > 0 and pmx[k] > bound:
+                out.append(viol("d_sink", run,
+                                f"{it.get('label', '')} (/INTER/{it['law'].upper()}/{it['id']}): the {tab} contact "
+                                f"{k + 1} penetrates {pmx[k]:.4g} m, {pmx[k] / max(p_pk, p_fl):.3g} x the law's "
+                                f"penetration {p_pk:.4g} m at its peak force {fpk[k]:.4g} N (beyond {SINK_FACTOR:g} x): "
+                                f"sunk without the force", value=float(pmx[k]), bound=bound, inter=it["id"]))
     return out
 
 

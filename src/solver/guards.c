@@ -364,11 +364,12 @@ int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, co
         }
         /* several contact points sharing the law: its penetration P_e (an
          * own state) behind the points' P by more than RC_DEFICIT_FACTOR
-         * max(P_e^max, p_s), P_e^max the largest since the contact closed (released on the way: the law at zero force)
-         * (an impact's: within an impact on a corner the law's penetration
-         * falls as the other corners recede while the deepest is still
-         * in): the force is the law's at P_e, the bodies sink into each
-         * other by the difference (docs/theory.md 2.7) */
+         * max(P_e^max, p_s), P_e^max the largest since the contact closed,
+         * kept while it is released (an impact's: within an impact on a
+         * corner the law's penetration falls as the other corners recede
+         * while the deepest is still in): the force is the law's at P_e,
+         * the bodies sink into each other by the difference (docs/theory.md
+         * 2.7) */
         if (mode != RC_MODE_CLOSED && mode != RC_MODE_RELEASED) g->pemax[i] = 0.0; /* open */
         if (mode == RC_MODE_CLOSED && rc_pair_multi(m->inter_pair[i]) && m->inter_peidx[i] >= 0) {
             const double pe = y[m->inter_eadr[i] + m->inter_peidx[i]], ps = m->inter_pscale[i];

@@ -18,7 +18,8 @@
 #define RC_SPHERE_CENTRE_FRAC 0.5
 /* A contact of several points is behind its geometry when its points
  * penetrate by more than its law's penetration P_e plus RC_DEFICIT_FACTOR
- * max(P_e, p_s) (docs/theory.md 2.7, 13.2) [-]. */
+ * max(P_e^max, p_s), P_e^max the largest since the contact closed
+ * (docs/theory.md 2.7, 13.2) [-]. */
 #define RC_DEFICIT_FACTOR 10.0
 /* A start overlap is refused when the elastic energy it holds exceeds
  * RC_START_ENERGY_FACTOR times the scene's energy scale E_s [-]. */

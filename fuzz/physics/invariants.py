@@ -360,7 +360,9 @@ def check_sink(scene, run, res):
     its law's at its penetration (at the deepest point the rate is zero and
     the damping with it), so a body deeper than its force says has sunk
     into the other without resistance. Floor: the law's penetration at
-    SINK_FLOOR x the scene's load (weight, or impact force at its speed)."""
+    SINK_FLOOR x the scene's load (weight, or impact force at its speed).
+    Elastic laws only: TYPE6 Iform 1 and 2 unload along their unload curve
+    or Stiff line and keep a set (a penetration at zero force) by design."""
     out = []
     ids = list(res["inter_id"]) if res.get("inter_id") is not None else []
     by_id = {it["id"]: it for it in scene["inters"]}
@@ -374,6 +376,8 @@ def check_sink(scene, run, res):
             it = by_id.get(int(inter[k]))
             if it is None or not it.get("law_curve") or not np.isfinite(pmx[k]) or not np.isfinite(fpk[k]):
                 continue
+            if int(it.get("iform", 0) or 0) != 0:
+                continue  # a hysteresis law (Iform 1, 2) keeps a set at zero force: its unload curve, its Stiff line
             law = it["law_curve"]
             v = sc["v"]
             p_imp = SC.law_pen_at_energy(law, 0.5 * M * v * v)

@@ -290,18 +290,26 @@ def check_single(scene, run, res, rc):
     return out
 
 
+def scene_load(scene, it, inf_impact=math.inf):
+    """The scene's load on interface it [N]: the larger of its weight and
+    the force of the interface's law where it has stored the kinetic
+    energy of the whole scene's mass at its speed (inf_impact where that
+    penetration is not finite)."""
+    sc = scene["scales"]
+    law = it["law_curve"]
+    M = sc["m_total"]
+    v = sc["v"]
+    p_imp = SC.law_pen_at_energy(law, 0.5 * M * v * v)
+    F_imp = float(SC.law_force(law, p_imp)) if np.isfinite(p_imp) else inf_impact
+    return max(M * sc["g"], F_imp)
+
+
 def pen_bound(scene, it):
     """The penetration at which the interface's elastic law reaches 1e3 x
     the larger of the scene's weight and the impact force at its speed, and
     the geometric bound (half the thinner body's thickness)."""
-    sc = scene["scales"]
     law = it["law_curve"]
-    M = sc["m_total"]
-    W = M * sc["g"]
-    v = sc["v"]
-    p_imp = SC.law_pen_at_energy(law, 0.5 * M * v * v)
-    F_imp = float(SC.law_force(law, p_imp)) if np.isfinite(p_imp) else math.inf
-    F = PEN_FORCE_FACTOR * max(W, F_imp)
+    F = PEN_FORCE_FACTOR * scene_load(scene, it)
     p_law = SC.law_pen_at_force(law, F)
     sh = scene["shapes"]
     h1 = sh[str(it["s1"])]["half_thickness"]
@@ -364,10 +372,8 @@ def check_sink(scene, run, res):
     Elastic laws only: TYPE6 Iform 1 and 2 unload along their unload curve
     or Stiff line and keep a set (a penetration at zero force) by design."""
     out = []
-    ids = list(res["inter_id"]) if res.get("inter_id") is not None else []
     by_id = {it["id"]: it for it in scene["inters"]}
-    sc = scene["scales"]
-    M = sc["m_total"]
+    floor = {}  # per interface: the law's penetration at SINK_FLOOR x the scene's load
     for tab in ("impact", "persistent"):
         inter, fpk, pmx = (res.get(f"{tab}_inter"), res.get(f"{tab}_peak_force"), res.get(f"{tab}_max_penetration"))
         if inter is None or fpk is None or pmx is None:
@@ -379,12 +385,11 @@ def check_sink(scene, run, res):
             if int(it.get("iform", 0) or 0) != 0:
                 continue  # a hysteresis law (Iform 1, 2) keeps a set at zero force: its unload curve, its Stiff line
             law = it["law_curve"]
-            v = sc["v"]
-            p_imp = SC.law_pen_at_energy(law, 0.5 * M * v * v)
-            F_imp = float(SC.law_force(law, p_imp)) if np.isfinite(p_imp) else 0.0
-            load = max(M * sc["g"], F_imp)
-            p_pk = SC.law_pen_at_force(law, max(float(fpk[k]), 0.0)) if fpk[k] > 0 else 0.0
-            p_fl = SC.law_pen_at_force(law, SINK_FLOOR * load) if load > 0 else 0.0
+            if it["id"] not in floor:
+                load = scene_load(scene, it, inf_impact=0.0)
+                floor[it["id"]] = SC.law_pen_at_force(law, SINK_FLOOR * load) if load > 0 else 0.0
+            p_fl = floor[it["id"]]
+            p_pk = SC.law_pen_at_force(law, float(fpk[k])) if fpk[k] > 0 else 0.0
             bound = SINK_FACTOR * max(p_pk, p_fl)
             if bound > 0 and pmx[k] > bound:
                 out.append(viol("d_sink", run,

@@ -299,9 +299,9 @@ static void point_columns(const rc_model *m, int i, const segctx_c *c, int j, in
         segfric_point_c(m, i, c, j, slip, ya, yb, Fj, po, &q);
         rc_cs_unstep(&Fj[k]);
         T acc[12] = {0}, fbv[3] = {-q.ft[0], -q.ft[1], -q.ft[2]};
-        /* out of the contact: no force, exactly (segfric_point) */
-        if (fa && creal(q.w) > 0) apply_force_c(m, ba, ya, q.ft, q.x, acc);
-        if (fb && creal(q.w) > 0) apply_force_c(m, bb, yb, fbv, q.x, acc + 6);
+        const int in = creal(q.w) > 0; /* out of the contact: no force, exactly (segfric_point) */
+        if (fa && in) apply_force_c(m, ba, ya, q.ft, q.x, acc);
+        if (fb && in) apply_force_c(m, bb, yb, fbv, q.x, acc + 6);
         int r = 0;
         for (int a = 0; a < 12; a++) {
             if ((a < 6 && !fa) || (a >= 6 && !fb)) continue;

@@ -145,6 +145,8 @@ typedef struct run_ctx {
     double h_restart; /* the first step of the last restart [s] (restart_step) */
     int own_h0;       /* the integrator runs from a restart with h_restart, no step taken yet */
     int stald_low;    /* the order held at 2 until the next restart (cv_solve, RC_STALD_REDS) */
+    int stald_due;    /* that hold asked for, applied at the next call (stald_apply) */
+    double stald_h;   /* its first step: the last step then [s] */
     int sens;         /* sensitivities on (rc_cvode_parts): no restart of cv_solve's own */
     rc_stats lost;    /* the counters of a first attempt redone (cv_solve) */
     rc_rootmap rm; /* the root functions CVODE is given (integrator.h) */
@@ -765,6 +767,7 @@ static int to_implicit(run_ctx *c, double t)
     normalise_quats(c);
     c->expl = 0;
     c->stald_low = 0;
+    c->stald_due = 0;
     c->jac_patched = 0;
     c->fresh = 0;
     c->hmax_bdf = 0.0;
@@ -841,27 +844,42 @@ static int erk_solve(run_ctx *c, double tout, double *t, int one_step, int *back
  * (docs/theory.md 7.7); the box then rings down with its damper and rests
  * (37 491 steps). Without a damped contact the vibration is the model's
  * own, and order 2 only follows it at more steps (a resting column of
- * undamped balls 1 km from the origin: 14 430 steps against 6 131). */
-static int stald_hold(run_ctx *c, double t)
+ * undamped balls 1 km from the origin: 14 430 steps against 6 131).
+ * stald_check decides after a step; stald_apply restarts at the next call. */
+static void stald_check(run_ctx *c)
 {
     long nor = 0, nst = 0;
-    if (c->stald_low || c->sens || c->m->max_order <= 2 || CVodeGetNumStabLimOrderReds(c->cv, &nor) != CV_SUCCESS ||
-        CVodeGetNumSteps(c->cv, &nst) != CV_SUCCESS || nor < RC_STALD_REDS || (double)nor < RC_STALD_FRAC * (double)nst)
-        return 0;
+    if (c->stald_low || c->stald_due || c->sens || c->m->max_order <= 2 ||
+        CVodeGetNumStabLimOrderReds(c->cv, &nor) != CV_SUCCESS || CVodeGetNumSteps(c->cv, &nst) != CV_SUCCESS ||
+        nor < RC_STALD_REDS || (double)nor < RC_STALD_FRAC * (double)nst)
+        return;
     int damped = 0;
     for (int i = 0; i < c->m->ninter && !damped; i++)
         damped = c->d->inter_mode[i] == RC_MODE_CLOSED && !rc_inter_undamped(c->m, i);
-    if (!damped) return 0;
+    if (!damped) return;
     double hu = 0.0;
     if (CVodeGetLastStep(c->cv, &hu) != CV_SUCCESS) hu = 0.0;
+    c->stald_due = 1;
+    c->stald_h = hu;
+}
+
+/* The restart stald_check asked for, at the start of the next call, from
+ * where the last one returned (t_last, y): the driver has used the
+ * interpolant of the last step in between (output times and impact samples
+ * inside that step; a restart right after the step lost it, and an output
+ * time inside the step then failed with CV_BAD_T). A restart of the
+ * driver's own in between cancels it (cv_restart). */
+static int stald_apply(run_ctx *c)
+{
+    c->stald_due = 0;
     add_stats(c->cv, &c->lost);
     c->stald_low = 1;
     int flag = CVodeSetMaxOrd(c->cv, 2);
     if (flag >= 0 && c->m->h0 <= 0) { /* from the last step (/SOLVER H0 stands where given) */
-        flag = CVodeSetInitStep(c->cv, hu);
-        c->own_h0 = hu > 0;
+        flag = CVodeSetInitStep(c->cv, c->stald_h);
+        c->own_h0 = c->stald_h > 0;
     }
-    return flag < 0 ? flag : CVodeReInit(c->cv, t, c->y);
+    return flag < 0 ? flag : CVodeReInit(c->cv, c->t_last, c->y);
 }
 
 /* After modes changed without a restart (cv_continued), one internal step
@@ -879,6 +897,7 @@ static int cv_solve(void *self, double tout, double *t, int *one_step)
         flag = erk_solve(c, tout, t, *one_step, &back);
         if (!back || flag < 0) return flag;
     }
+    if (c->stald_due && (flag = stald_apply(c)) < 0) return flag;
     *one_step = *one_step || c->fresh;
     if (c->fresh) {
         if ((flag = CVodeSetLSetupFrequency(c->cv, 1)) < 0 || (flag = CVodeSetJacEvalFrequency(c->cv, 1)) < 0)
@@ -916,10 +935,7 @@ static int cv_solve(void *self, double tout, double *t, int *one_step)
             return f2;
         c->fresh = 0;
     }
-    if ((flag == CV_SUCCESS || flag == CV_TSTOP_RETURN) && !c->fresh) {
-        const int f2 = stald_hold(c, *t);
-        if (f2 < 0) return f2;
-    }
+    if ((flag == CV_SUCCESS || flag == CV_TSTOP_RETURN) && !c->fresh) stald_check(c);
     return flag;
 }
 
@@ -975,6 +991,7 @@ static int cv_restart(void *self, double t, int at_breakpoint)
     run_ctx *c = self;
     if (at_breakpoint) c->jac_patched = 0; /* the imposed rows change: a whole new Jacobian */
     c->stald_low = 0; /* the deck's order again (below) */
+    c->stald_due = 0;
     const int turned = c->d->fric_turned; /* a fric_turn among the events: below */
     const int multi = c->d->multi_closed; /* a damped contact of several points closed: below */
     c->d->fric_turned = 0;
@@ -1233,7 +1250,7 @@ void *rc_cvode_parts(void *self, int *nr, const int **kidx, double **yfull, void
 {
     run_ctx *c = self;
     c->sw = 0; /* the sensitivities follow CVODE alone: no method switching, */
-    c->sens = 1; /* no order held by a restart of cv_solve's own (stald_hold) */
+    c->sens = 1; /* no order held by a restart of cv_solve's own (stald_check) */
     *sunctx = c->ctx;
     *nr = c->nr;
     *kidx = c->kidx;

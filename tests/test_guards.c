@@ -365,6 +365,39 @@ static void test_guards_friction_limit_fires(void)
     bench_close(&b);
 }
 
+/* The limit is known only as well as F_n: the same sphere's friction may
+ * exceed mu F_n by mu times the normal force's tolerance (its stiffness
+ * scale times its position tolerance here: no Stiff line), and no more:
+ * half of that beyond the bound passes, twice that fires. The report
+ * carries the coefficient (0.3). */
+static void test_guards_friction_limit_normal_force_tolerance(void)
+{
+    rc_error e;
+    sphere_opts o = DROP;
+    o.fric = 0.3;
+    o.visc = 0.0;
+    o.z = 0.05 - 1e-6;
+    rc_model *m = sphere_model(&o, &e);
+    ENSURE(m != NULL);
+    if (!m) return;
+    bench b;
+    ENSURE(bench_open(&b, m, 0));
+    rc_inter_report r;
+    rc_inter_report_eval_d(m, b.d, 0, 0.0, b.y, &r);
+    ENSURE_NEAR(r.mu, 0.3, 1e-15, 0.0);
+    const double dfn = fmax(m->inter_hband[0], m->inter_kscale[0] * m->atol[m->body_yadr[0]]);
+    ENSURE(dfn > 0 && isfinite(dfn));
+    const double bound = r.flim * (1.0 + RC_SLIP_BAND + 1e-6) + rc_fric_band(m, 0);
+    printf("    F_n %.6g N, limit %.6g N, normal force tolerance %.3g N\n", r.fn, r.flim, dfn);
+    double *ft = b.y + m->inter_eadr[0] + m->inter_fr[0].tidx;
+    ft[0] = bound + 0.5 * 0.3 * dfn;
+    ENSURE(bench_record(&b, 0.0) == 0);
+    ft[0] = bound + 2.0 * 0.3 * dfn;
+    ENSURE(bench_record(&b, 0.001) == 1);
+    ENSURE(strstr(rc_guards_message(b.g), "friction force of /INTER/TYPE6/1") != NULL);
+    bench_close(&b);
+}
+
 /* Penetration beyond the bound, and an open interface penetrating. */
 static void test_guards_penetration_fires(void)
 {
@@ -922,6 +955,7 @@ void suite_guards(void)
     RUN_TEST(test_guards_energy_created_fires);
     RUN_TEST(test_guards_non_finite_fires);
     RUN_TEST(test_guards_friction_limit_fires);
+    RUN_TEST(test_guards_friction_limit_normal_force_tolerance);
     RUN_TEST(test_guards_penetration_fires);
     RUN_TEST(test_guards_penetration_bound_half_thickness);
     RUN_TEST(test_guards_sphere_centres_fire);

@@ -284,7 +284,7 @@ double rc_bk_wall_now(void)
 void rc_bk_frame_free(frame_buf *f)
 {
     void *p[] = {f->pos, f->quat, f->vel, f->omega, f->pen, f->fload, f->fdamp, f->fn, f->point, f->normal, f->mode,
-                 f->cpl, f->ffric, f->vslip, f->flim, f->slip, f->jnt};
+                 f->cpl, f->ffric, f->vslip, f->flim, f->fmu, f->slip, f->jnt};
     for (size_t k = 0; k < sizeof p / sizeof p[0]; k++) free(p[k]);
 }
 
@@ -306,11 +306,12 @@ int rc_bk_frame_alloc(const rc_model *m, frame_buf *f)
     f->ffric = malloc(3 * ni * sizeof(double));
     f->vslip = malloc(ni * sizeof(double));
     f->flim = malloc(ni * sizeof(double));
+    f->fmu = malloc(ni * sizeof(double));
     f->slip = malloc(ni * sizeof(int));
     f->cpl = malloc((9 * (size_t)m->cpl->n + 1) * sizeof(double));
     f->jnt = malloc((10 * (size_t)(m->jnt ? m->jnt->n : 0) + 10) * sizeof(double));
     return f->jnt && f->pos && f->quat && f->vel && f->omega && f->pen && f->fload && f->fdamp && f->fn && f->point &&
-           f->normal && f->mode && f->cpl && f->ffric && f->vslip && f->flim && f->slip;
+           f->normal && f->mode && f->cpl && f->ffric && f->vslip && f->flim && f->fmu && f->slip;
 }
 
 /* Fill and write one record at (t, y). */
@@ -339,6 +340,7 @@ rc_status rc_bk_write_frame(const rc_model *m, const rc_data *d, rc_output *o, f
         for (int k = 0; k < 3; k++) f->ffric[3 * i + k] = acts ? r.ft[k] : 0.0;
         f->vslip[i] = acts ? r.vslip : 0.0;
         f->flim[i] = acts ? r.flim : 0.0;
+        f->fmu[i] = acts ? r.mu : 0.0;
         int sl = d->inter_slip[i]; /* friction per point: any point slipping */
         for (int j = 0; j < m->inter_npt[i]; j++) sl |= d->pt_slip[m->inter_pbase[i] + j];
         f->slip[i] = acts && sl;

@@ -676,6 +676,21 @@ static int ledger(rc_guards *g, const rc_data *d, double t, const double *y, con
     return 0;
 }
 
+/* The tolerance to which interface i's normal force is integrated [N]:
+ * the Stiff line's band where the law has one (F_h and the curves at P,
+ * inter_hband), at least the stiffness scale times the position tolerance
+ * of its bodies. */
+static double normal_force_tol(const rc_model *m, int i)
+{
+    double ap = 0.0;
+    for (int k = 0; k < 2; k++) {
+        const int b = k ? m->inter_bb[i] : m->inter_ba[i];
+        if (b >= 0 && m->body_yadr[b] >= 0) ap = dmax(ap, m->atol[m->body_yadr[b]]);
+    }
+    const double ks = m->inter_kscale[i];
+    return dmax(m->inter_hband[i], isfinite(ks) ? ks * ap : 0.0);
+}
+
 /* Coulomb's bound at the record: the friction force of a closed contact is
  * within its limit (Sfric + mu F_n, the filtered limit where a filter acts;
  * the sum of the points' limits with friction per point), up to the bands
@@ -684,9 +699,13 @@ static int ledger(rc_guards *g, const rc_data *d, double t, const double *y, con
  * scale), and 1e-6 of L for the roots' location. The modes' roots keep
  * every state short of that: a force beyond it is a mode that was never
  * decided (a viscous friction left unsaturated at a start at P = 0 braked
- * a sliding sphere with 0.96 N at no normal force). The orthotropic laws
- * (an ellipse, their report's limit one of its axes) are not checked. 1:
- * stop. */
+ * a sliding sphere with 0.96 N at no normal force). The limit itself is
+ * known only as well as F_n: mu times the normal force's tolerance
+ * (normal_force_tol) is added (a ball held against a wall at 2e-5 N on an
+ * undamped Stiff line of 2e11 N/m, its F_n known to 1.5e-4 N: at an
+ * output time inside a step F_n read 0 and the viscous friction 1.2e-5 N).
+ * The orthotropic laws (an ellipse, their report's limit one of its axes)
+ * are not checked. 1: stop. */
 static int friction_within_limits(rc_guards *g, const rc_data *d, double t, const frame_buf *fb)
 {
     const rc_model *m = g->m;
@@ -694,12 +713,14 @@ static int friction_within_limits(rc_guards *g, const rc_data *d, double t, cons
         const rc_fric *fr = &m->inter_fr[i];
         if (fr->kind == RC_FK_NONE || fr->ortho || d->inter_mode[i] != RC_MODE_CLOSED || g->fric_over[i]) continue;
         const double *ft = fb->ffric + 3 * i, f = sqrt(ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2]);
-        const double lim = fmax(fb->flim[i], 0.0), bound = lim * (1.0 + RC_SLIP_BAND + 1e-6) + rc_fric_band(m, i);
+        const double lim = fmax(fb->flim[i], 0.0),
+                     bound = lim * (1.0 + RC_SLIP_BAND + 1e-6) + rc_fric_band(m, i) + fb->fmu[i] * normal_force_tol(m, i);
         if (!(f > bound)) continue;
         g->fric_over[i] = 1;
         if (violate(g, t, t, "friction_limit", m->inter_name[i], f, bound,
                     "the friction force of %s is %.6g N at t = %.9g s, beyond its limit %.6g N (Sfric + mu F_n, "
-                    "F_n = %.6g N; with its bands %.6g N): friction without the normal force to carry it",
+                    "F_n = %.6g N; with its bands and mu times the tolerance of F_n %.6g N): friction without the normal "
+                    "force to carry it",
                     m->inter_name[i], f, t, lim, fb->fn[i], bound))
             return 1;
     }

@@ -59,6 +59,7 @@ typedef struct ev_sink {
 typedef struct frame_buf {
     double *pos, *quat, *vel, *omega, *pen, *fload, *fdamp, *fn, *point, *normal, *ffric, *vslip;
     double *flim; /* [ninter] friction limits of the closed contacts [N]: the physics checks', not written */
+    double *fmu;  /* [ninter] the coefficients mu of F_n in those limits [-]: the physics checks', not written */
     int *mode, *slip;
     double energy[RC_NENERGY];
     double *cpl; /* [9 ncoupling] coupling values (rc_cpl_frame) */

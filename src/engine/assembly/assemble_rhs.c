@@ -113,6 +113,7 @@ static void report_of(const t6out_r *po, rc_inter_report *r)
     /* read in place (a copy of the struct cost as much as the rest) */
     report_normal_of(po, r);
     r->flim = po->flim;
+    r->mu = po->mu;
     r->fstored = po->estore;
     r->ftan = po->ftan;
     r->vslip = po->vslip;

@@ -176,6 +176,8 @@ typedef struct rc_inter_report {
     double ft[3];        /* friction force on body a, applied [N] */
     double fraw[3];      /* friction force of the law, before the filter [N] */
     double flim;         /* friction limit Sfric + mu F_n [N] */
+    double mu;           /* the coefficient mu of F_n in that limit at the state
+                            (several contact points: the largest) [-] */
     double fstored;      /* energy in the stick springs, |F_t|^2 / (2 K_t) per
                             contact point (K_t its share) [J] */
     double ftan;         /* |F_t| of the friction state in the tangent plane,

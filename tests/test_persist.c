@@ -292,6 +292,40 @@ static void test_elastic_contact_does_not_settle(void)
     ENSURE(dz < 1e-6);
 }
 
+/* A ball bouncing down a ramp against a wall (fuzz 227000197): on IDA the
+ * ramp contact settles into a unilateral constraint, whose projection at the
+ * restart turned the wall's released law from unloading to reloading with
+ * its root past zero; the ball then passed 3 mm into the wall at zero force
+ * (a physics check stopped the run). The modes are decided again by the
+ * projected state: the ball stays at the wall, and CVODE and IDA agree. */
+static void test_ida_settle_projection_decides_other_modes(void)
+{
+    const char *path = "tests/data/ramp_wall_ida_settle_projection_reloads_wall.rad";
+    double yend[2] = {0.0, 0.0};
+    for (int method = 1; method <= 2; method++) {
+        rc_model *m = TU_LOAD_OK(path);
+        if (!m) return;
+        rc_error e;
+        ENSURE(rc_model_set_method(m, method, &e) == RC_OK);
+        double *y = calloc((size_t)rc_model_state_size(m), sizeof(double));
+        rc_run_options o = {.y_end = y};
+        rc_stats st;
+        const rc_status s = rc_run(m, &o, &st, &e);
+        printf("    %s: %s, %ld steps, %ld events, %ld settles\n", method == 1 ? "CVODE" : "IDA", s ? e.msg : "ok",
+               st.steps, st.events, st.settles);
+        ENSURE(s == RC_OK);
+        if (method == 2) ENSURE(st.settles >= 1); /* the path under test */
+        yend[method - 1] = y[m->body_yadr[0] + 1];
+        free(y);
+        rc_model_free(m);
+    }
+    /* the wall y = -0.1355314391157118 m facing +y, the ball's radius 0.0261018649831601 m */
+    const double gap0 = -0.1355314391157118 + 0.026101864983160174;
+    printf("    ball centre at the end: CVODE %.9f m, IDA %.9f m (touching the wall: %.9f m)\n", yend[0], yend[1], gap0);
+    for (int k = 0; k < 2; k++) ENSURE(yend[k] > gap0 - 1e-5);
+    ENSURE(fabs(yend[0] - yend[1]) < 1e-5);
+}
+
 /* ---- the vibration note ------------------------------------------------ */
 /* A 1 g ball resting on a floor through TYPE6 Iform 2 (load curve 1e6 N/m,
  * Stiff 1e8 N/m), without damping: once it has loaded the curve it
@@ -428,6 +462,7 @@ void suite_persist(void)
     RUN_TEST(test_persist_sliding_block_slip_distance);
     RUN_TEST(test_persist_ball_bounces_then_rests);
     RUN_TEST(test_elastic_contact_does_not_settle);
+    RUN_TEST(test_ida_settle_projection_decides_other_modes);
     RUN_TEST(test_vibration_note_undamped_stiff_line);
     RUN_TEST(test_vibration_note_counts_contacts_ringing_together_once);
     RUN_TEST(test_max_steps_failure_names_undamped_vibration);

@@ -847,7 +847,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     char note[sizeof s.sampling_note];
     rc_impacts_sampling_note(m, note, sizeof note);
     int *rootdir = NULL, *roots = NULL;
-    double *gbuf = NULL, *flook = NULL, *bp = NULL;
+    double *gbuf = NULL, *flook = NULL, *bp = NULL, *ypre = NULL;
     rc_settle *hist = NULL; /* the interfaces' closes and openings (settling, Zeno guard) */
     int nbp = 0, ibp = 0;
     rc_output *out = NULL;
@@ -884,7 +884,8 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     gbuf = calloc((size_t)nr + 1, sizeof(double));
     hist = rc_settle_new(m);
     flook = calloc((size_t)n, sizeof(double));
-    if (rc_impacts_init(&im, m) || !rootdir || !roots || !gbuf || !hist || !flook) {
+    ypre = calloc((size_t)m->ny + 1, sizeof(double));
+    if (rc_impacts_init(&im, m) || !rootdir || !roots || !gbuf || !hist || !flook || !ypre) {
         st = RC_SET(err, RC_ENOMEM, "out of memory for the solver");
         goto done;
     }
@@ -1125,8 +1126,32 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             if (!restart) restart = rc_bk_root_on_zero(m, d, t, y, gbuf);
             if (restart) {
                 bk->add_stats(self, &s);
+                memcpy(ypre, y, (size_t)m->ny * sizeof(double));
                 BKCHECK(bk->restart(self, t, 0), "ReInit");
                 s.reinits++;
+                /* a restart that moved the state (IDA: its projection onto
+                 * the constraints the events switched on, a settled
+                 * contact's approach velocity removed at once) may have
+                 * carried other contacts past the roots their modes wait
+                 * on: the modes by the state again, and a restart when they
+                 * changed (a ball settling on a ramp on IDA: the wall's law
+                 * turned from unloading to reloading in the projection, its
+                 * root started past zero, and the ball passed 3 mm through
+                 * the wall at zero force) */
+                for (int pass = 0; pass < 2 && memcmp(ypre, y, (size_t)m->ny * sizeof(double)); pass++) {
+                    int jmp2 = 0;
+                    const int ne = rc_bk_resolve_touching(m, d, t, y, flook, &sink, &im, hist, &s.events, &jmp2, &st, err);
+                    if (st) goto done;
+                    if (ne == 0 && !jmp2) break;
+                    nev += ne;
+                    if (nr > 0) {
+                        rc_bk_root_directions(m, d, rootdir);
+                        BKCHECK(bk->set_root_dirs(self, rootdir), "SetRootDirection");
+                    }
+                    memcpy(ypre, y, (size_t)m->ny * sizeof(double));
+                    BKCHECK(bk->restart(self, t, 0), "ReInit");
+                    s.reinits++;
+                }
                 if ((st = method_event(bk, self, &sink, &s, err))) goto done;
             } else if (nev > 0 && bk->continued) {
                 bk->continued(self);
@@ -1238,6 +1263,7 @@ done:
     free(gbuf);
     rc_settle_free(hist);
     free(flook);
+    free(ypre);
     free(bp);
     rc_bk_frame_free(&fb);
     rc_guards_free(gd);

@@ -326,6 +326,33 @@ static void test_ida_settle_projection_decides_other_modes(void)
     ENSURE(fabs(yend[0] - yend[1]) < 1e-5);
 }
 
+/* A jump of the state at a breakpoint likewise: a belt whose imposed
+ * velocity starts at 0.05 s at 3 m/s under a ball sliding at 0.85 m/s
+ * reverses the sliding at once; the friction's slip is decided again by the
+ * new state (a fric_slip at the jump), and rolling begins at the closed-form
+ * time t_s = 0.294165 s (the slip left as it was: 1.07e-3 s late, the
+ * friction pushing while the stick spring turned it). */
+static void test_breakpoint_jump_decides_friction_again(void)
+{
+    rc_model *m = TU_LOAD_OK("tests/data/belt_impvel_start_reverses_sliding.rad");
+    if (!m) return;
+    tu_evlog ev;
+    rc_stats st;
+    ENSURE(tu_run_evlog(m, &ev, &st) == RC_OK);
+    int slip_at_jump = 0;
+    double t_stick = NAN;
+    for (int k = 0; k < ev.n && k < TU_MAXEV; k++) {
+        slip_at_jump |= !strcmp(ev.kind[k], "fric_slip") && fabs(ev.t[k] - 0.05) < 1e-12;
+        if (!strcmp(ev.kind[k], "fric_stick") && isnan(t_stick)) t_stick = ev.t[k];
+    }
+    const double mug = 0.3 * 9.81, ts = 0.05 + (3.0 - (1.0 - 3.5 * mug * 0.05)) / (3.5 * mug);
+    printf("    rolling from %.7f s, closed form %.7f s (error %.2e s); slip decided at the jump: %d\n", t_stick, ts,
+           t_stick - ts, slip_at_jump);
+    ENSURE(slip_at_jump);
+    ENSURE(fabs(t_stick - ts) < 2e-5);
+    rc_model_free(m);
+}
+
 /* ---- the vibration note ------------------------------------------------ */
 /* A 1 g ball resting on a floor through TYPE6 Iform 2 (load curve 1e6 N/m,
  * Stiff 1e8 N/m), without damping: once it has loaded the curve it
@@ -463,6 +490,7 @@ void suite_persist(void)
     RUN_TEST(test_persist_ball_bounces_then_rests);
     RUN_TEST(test_elastic_contact_does_not_settle);
     RUN_TEST(test_ida_settle_projection_decides_other_modes);
+    RUN_TEST(test_breakpoint_jump_decides_friction_again);
     RUN_TEST(test_vibration_note_undamped_stiff_line);
     RUN_TEST(test_vibration_note_counts_contacts_ringing_together_once);
     RUN_TEST(test_max_steps_failure_names_undamped_vibration);

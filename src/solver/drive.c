@@ -181,6 +181,44 @@ static rc_status method_event(const rc_backend *bk, void *self, ev_sink *k, rc_s
     return rc_bk_sink_event(k, ts, ek, "/SOLVER", NULL, err);
 }
 
+/* After a restart at t: when the restart moved the state from ypre (IDA's
+ * projection onto the constraints the events switched on: a settled
+ * contact's approach velocity removed at once; the velocity an imposed
+ * velocity jumps to) or `moved` says the right-hand side jumped there (a
+ * breakpoint: gravity or an imposed velocity starting or ending), the
+ * contacts' modes are decided again by the state, as after an event
+ * (rc_bk_resolve_touching), with a further restart when they change: the
+ * jump may have carried a contact past the root its mode waits on (a ball
+ * settling on a ramp on IDA: the projection turned the wall's released law
+ * from unloading to reloading, its root started past zero, and the ball
+ * passed 3 mm through the wall at zero force). Adds the events to *nev. */
+static rc_status modes_after_restart(const rc_backend *bk, void *self, const rc_model *m, rc_data *d, double t,
+                                     double *y, double *ypre, double *flook, ev_sink *sink, rc_impacts *im,
+                                     rc_settle *hist, int *rootdir, int nr, rc_stats *s, int moved, int *nev,
+                                     rc_error *err)
+{
+    rc_status st = RC_OK;
+    for (int pass = 0; pass < 2 && (moved || memcmp(ypre, y, (size_t)m->ny * sizeof(double))); pass++) {
+        moved = 0;
+        int jmp = 0;
+        const int ne = rc_bk_resolve_touching(m, d, t, y, flook, sink, im, hist, &s->events, &jmp, &st, err);
+        if (st) return st;
+        if (ne == 0 && !jmp) break;
+        *nev += ne;
+        if (nr > 0) {
+            rc_bk_root_directions(m, d, rootdir);
+            const int f = bk->set_root_dirs(self, rootdir);
+            if (f < 0) return RC_SET(err, RC_ESOLVER, "%s call SetRootDirection failed at t = %.9g s", bk->name, t);
+        }
+        memcpy(ypre, y, (size_t)m->ny * sizeof(double));
+        bk->add_stats(self, s);
+        const int f = bk->restart(self, t, 0);
+        if (f < 0) return RC_SET(err, RC_ESOLVER, "%s call ReInit failed at t = %.9g s", bk->name, t);
+        s->reinits++;
+    }
+    return st;
+}
+
 /* One event to the sink; RC_OK or the output's error. */
 rc_status rc_bk_sink_event(ev_sink *k, double t, rc_event_kind ek, const char *element, const double v[3],
                             rc_error *err)
@@ -1027,6 +1065,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
              * jumps to the imposed value) or end; restart there */
             const double t_bp0 = ibp > 0 ? bp[ibp - 1] : 0.0;
             int ev_here = t == m->grav_tstart; /* not a mere knot of a load function */
+            memcpy(ypre, y, (size_t)m->ny * sizeof(double));
             if (rc_imp_start(m, t_bp0, t, y) > 0) {
                 ev_here = 1;
                 s.events++;
@@ -1046,6 +1085,11 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             d->t_bp = t; /* the right limit from here on (RC_IMP_T_ON) */
             BKCHECK(bk->restart(self, t, 1), "ReInit");
             s.reinits++;
+            int nbpev = 0;
+            if ((st = modes_after_restart(bk, self, m, d, t, y, ypre, flook, &sink, &im, hist, rootdir, nr, &s, ev_here,
+                                          &nbpev, err)))
+                goto done;
+            ev_here |= nbpev > 0;
             if ((st = method_event(bk, self, &sink, &s, err))) goto done;
             while (ibp < nbp && bp[ibp] <= t) ibp++;
             /* the next breakpoint, or the end time */
@@ -1129,29 +1173,9 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
                 memcpy(ypre, y, (size_t)m->ny * sizeof(double));
                 BKCHECK(bk->restart(self, t, 0), "ReInit");
                 s.reinits++;
-                /* a restart that moved the state (IDA: its projection onto
-                 * the constraints the events switched on, a settled
-                 * contact's approach velocity removed at once) may have
-                 * carried other contacts past the roots their modes wait
-                 * on: the modes by the state again, and a restart when they
-                 * changed (a ball settling on a ramp on IDA: the wall's law
-                 * turned from unloading to reloading in the projection, its
-                 * root started past zero, and the ball passed 3 mm through
-                 * the wall at zero force) */
-                for (int pass = 0; pass < 2 && memcmp(ypre, y, (size_t)m->ny * sizeof(double)); pass++) {
-                    int jmp2 = 0;
-                    const int ne = rc_bk_resolve_touching(m, d, t, y, flook, &sink, &im, hist, &s.events, &jmp2, &st, err);
-                    if (st) goto done;
-                    if (ne == 0 && !jmp2) break;
-                    nev += ne;
-                    if (nr > 0) {
-                        rc_bk_root_directions(m, d, rootdir);
-                        BKCHECK(bk->set_root_dirs(self, rootdir), "SetRootDirection");
-                    }
-                    memcpy(ypre, y, (size_t)m->ny * sizeof(double));
-                    BKCHECK(bk->restart(self, t, 0), "ReInit");
-                    s.reinits++;
-                }
+                if ((st = modes_after_restart(bk, self, m, d, t, y, ypre, flook, &sink, &im, hist, rootdir, nr, &s, 0,
+                                              &nev, err)))
+                    goto done;
                 if ((st = method_event(bk, self, &sink, &s, err))) goto done;
             } else if (nev > 0 && bk->continued) {
                 bk->continued(self);

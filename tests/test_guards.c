@@ -335,11 +335,9 @@ static void test_guards_non_finite_fires(void)
     bench_close(&b);
 }
 
-/* Coulomb's bound at every record: the sphere pressed 1 um into the floor
- * (F_n = 1 N, k = 1e6 N/m, at rest), TYPE6 Fric 0.3, sticking with its
- * spring loaded to 0.2 N passes; loaded to 10 N, beyond the limit 0.3 N
- * (a stick the slip root never saw), it fires, naming the interface. */
-static void test_guards_friction_limit_fires(void)
+/* The sphere pressed 1 um into the floor (F_n = 1 N, k = 1e6 N/m, at
+ * rest), TYPE6 Fric 0.3, undamped. */
+static rc_model *pressed_sphere(void)
 {
     rc_error e;
     sphere_opts o = DROP;
@@ -348,6 +346,15 @@ static void test_guards_friction_limit_fires(void)
     o.z = 0.05 - 1e-6;
     rc_model *m = sphere_model(&o, &e);
     ENSURE(m != NULL);
+    return m;
+}
+
+/* Coulomb's bound at every record: that sphere sticking with its spring
+ * loaded to 0.2 N passes; loaded to 10 N, beyond the limit 0.3 N (a stick
+ * the slip root never saw), it fires, naming the interface. */
+static void test_guards_friction_limit_fires(void)
+{
+    rc_model *m = pressed_sphere();
     if (!m) return;
     ENSURE(m->inter_fr[0].tidx >= 0);
     bench b;
@@ -372,13 +379,7 @@ static void test_guards_friction_limit_fires(void)
  * carries the coefficient (0.3). */
 static void test_guards_friction_limit_normal_force_tolerance(void)
 {
-    rc_error e;
-    sphere_opts o = DROP;
-    o.fric = 0.3;
-    o.visc = 0.0;
-    o.z = 0.05 - 1e-6;
-    rc_model *m = sphere_model(&o, &e);
-    ENSURE(m != NULL);
+    rc_model *m = pressed_sphere();
     if (!m) return;
     bench b;
     ENSURE(bench_open(&b, m, 0));

@@ -16,6 +16,7 @@
 #include "base/error.h"
 #include "solver/impacts.h"
 #include "testutil.h"
+#include "case/case.h"
 
 #define G 9.81 /* gravity of the decks [m/s^2] */
 
@@ -358,6 +359,32 @@ static void test_breakpoint_jump_decides_friction_again(void)
     rc_model_free(m);
 }
 
+/* A contact released and closed at zero force whose friction limit holds
+ * Sfric (fuzz 229000250: a box sliding on a floor, Sfric = 1.8 times its
+ * weight, released and closed every 3e-10 s; open, a Filippov sliding
+ * surface that the modes cannot hold): the Zeno message names Sfric, and
+ * with Sfric = 0 the run ends normally. */
+static void test_zeno_names_sfric_at_zero_force(void)
+{
+    const char *path = "fuzz/physics/regressions/box_floor_sfric_zero_force_sliding_mode_zeno.rad";
+    for (int zero = 0; zero <= 1; zero++) {
+        rc_error e;
+        rc_case *c = NULL;
+        const char *set[1] = {"/INTER/TYPE6/1:Sfric=0"};
+        ENSURE(rc_case_load_set(path, set, zero, &c, &e) == RC_OK);
+        rc_model *m = NULL;
+        ENSURE(c && rc_model_compile(c, &m, &e) == RC_OK);
+        rc_case_free(c);
+        if (!m) return;
+        rc_stats st;
+        const rc_status s = rc_run(m, NULL, &st, &e);
+        printf("    Sfric %s: %s\n", zero ? "0" : "as given", s ? e.msg : "ok");
+        if (zero) ENSURE(s == RC_OK);
+        else ENSURE(s == RC_ESOLVER && strstr(e.msg, "Zeno") && strstr(e.msg, "Sfric = 0.0314 N"));
+        rc_model_free(m);
+    }
+}
+
 /* ---- the vibration note ------------------------------------------------ */
 /* A 1 g ball resting on a floor through TYPE6 Iform 2 (load curve 1e6 N/m,
  * Stiff 1e8 N/m), without damping: once it has loaded the curve it
@@ -496,6 +523,7 @@ void suite_persist(void)
     RUN_TEST(test_elastic_contact_does_not_settle);
     RUN_TEST(test_ida_settle_projection_decides_other_modes);
     RUN_TEST(test_breakpoint_jump_decides_friction_again);
+    RUN_TEST(test_zeno_names_sfric_at_zero_force);
     RUN_TEST(test_vibration_note_undamped_stiff_line);
     RUN_TEST(test_vibration_note_counts_contacts_ringing_together_once);
     RUN_TEST(test_max_steps_failure_names_undamped_vibration);

@@ -137,12 +137,25 @@ rc_settle_verdict rc_settle_after_events(rc_settle *s, const rc_model *m, rc_dat
             continue;
         }
         if (s->zeno_n[i] > RC_ZENO_MAX) {
+            /* a contact released and closed at zero force whose friction
+             * limit holds Sfric: the friction (up to Sfric, whatever F_n)
+             * comes and goes with the mode, and turns the force the contact
+             * would carry the other way each time (a box sliding on a floor
+             * with Sfric = 1.8 times its weight, released and closed every
+             * 3e-10 s; with Sfric = 0 it runs to the end) */
+            const double sf = m->inter_fr[i].kind != RC_FK_NONE ? m->inter_fr[i].sfric : 0.0;
+            const int zf = sf > 0 && contact_kind(ev[k].kind) && d->inter_mode[i] != RC_MODE_OPEN;
+            char hint[240] = "";
+            if (zf)
+                snprintf(hint, sizeof hint,
+                         "; its friction limit holds Sfric = %.3g N, which acts at zero normal force and vanishes "
+                         "when the contact releases: a smaller Sfric, or none, lets it release", sf);
             snprintf(why, n,
                      "event accumulation (Zeno) at t = %.9g s in %s: more than %d events within %.2g s of "
                      "each other (last: %s); the modes of this element switch without the state moving: "
-                     "tighter tolerances or a smoother law may help",
+                     "tighter tolerances or a smoother law may help%s",
                      t, m->inter_name[i], RC_ZENO_MAX, RC_ZENO_REL * fmax(fabs(t), dtout),
-                     rc_event_kind_name(ev[k].kind));
+                     rc_event_kind_name(ev[k].kind), hint);
             return RC_SETTLE_ZENO;
         }
     }

@@ -508,6 +508,21 @@ static inline double rc_fric_band(const rc_model *m, int i)
     return b > s ? b : s;
 }
 
+/* The position tolerance of interface i [m]: its law's P_e, its Inacti 5
+ * offset, or its bodies' positions (the larger). */
+static inline double rc_inter_apos(const rc_model *m, int i)
+{
+    const int e = m->inter_eadr[i];
+    if (m->inter_peidx[i] >= 0) return m->atol[e + m->inter_peidx[i]];
+    if (m->inter_oidx[i] >= 0) return m->atol[e + m->inter_oidx[i]];
+    double a = 0.0;
+    for (int k = 0; k < 2; k++) {
+        const int b = k ? m->inter_bb[i] : m->inter_ba[i];
+        if (b >= 0 && m->body_yadr[b] >= 0 && m->atol[m->body_yadr[b]] > a) a = m->atol[m->body_yadr[b]];
+    }
+    return a > 0 ? a : m->atol_pos;
+}
+
 /* The slip speed band of interface i's friction tests [m/s]: the sliding
  * speed below which a slipping contact's v_t . e > 0 (its sliding along its
  * force) is rounding rather than a push, RC_SLIP_BAND of the contact's

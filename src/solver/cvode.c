@@ -146,7 +146,6 @@ typedef struct run_ctx {
     int own_h0;       /* the integrator runs from a restart with h_restart, no step taken yet */
     int stald_low;    /* the order held at 2 until the next restart (cv_solve, RC_STALD_REDS) */
     int stald_due;    /* that hold asked for, applied at the next call (stald_apply) */
-    double stald_h;   /* its first step: the last step then [s] */
     int sens;         /* sensitivities on (rc_cvode_parts): no restart of cv_solve's own */
     rc_stats lost;    /* the counters of a first attempt redone (cv_solve) */
     rc_rootmap rm; /* the root functions CVODE is given (integrator.h) */
@@ -856,11 +855,7 @@ static void stald_check(run_ctx *c)
     int damped = 0;
     for (int i = 0; i < c->m->ninter && !damped; i++)
         damped = c->d->inter_mode[i] == RC_MODE_CLOSED && !rc_inter_undamped(c->m, i);
-    if (!damped) return;
-    double hu = 0.0;
-    if (CVodeGetLastStep(c->cv, &hu) != CV_SUCCESS) hu = 0.0;
-    c->stald_due = 1;
-    c->stald_h = hu;
+    c->stald_due = damped;
 }
 
 /* The restart stald_check asked for, at the start of the next call, from
@@ -872,12 +867,14 @@ static void stald_check(run_ctx *c)
 static int stald_apply(run_ctx *c)
 {
     c->stald_due = 0;
+    double hu = 0.0; /* the last step (no step taken since stald_check) */
+    if (CVodeGetLastStep(c->cv, &hu) != CV_SUCCESS) hu = 0.0;
     add_stats(c->cv, &c->lost);
     c->stald_low = 1;
     int flag = CVodeSetMaxOrd(c->cv, 2);
     if (flag >= 0 && c->m->h0 <= 0) { /* from the last step (/SOLVER H0 stands where given) */
-        flag = CVodeSetInitStep(c->cv, c->stald_h);
-        c->own_h0 = c->stald_h > 0;
+        flag = CVodeSetInitStep(c->cv, hu);
+        c->own_h0 = hu > 0;
     }
     return flag < 0 ? flag : CVodeReInit(c->cv, c->t_last, c->y);
 }

@@ -678,17 +678,12 @@ static int ledger(rc_guards *g, const rc_data *d, double t, const double *y, con
 
 /* The tolerance to which interface i's normal force is integrated [N]:
  * the Stiff line's band where the law has one (F_h and the curves at P,
- * inter_hband), at least the stiffness scale times the position tolerance
- * of its bodies. */
+ * inter_hband), at least the stiffness scale times the interface's
+ * position tolerance. */
 static double normal_force_tol(const rc_model *m, int i)
 {
-    double ap = 0.0;
-    for (int k = 0; k < 2; k++) {
-        const int b = k ? m->inter_bb[i] : m->inter_ba[i];
-        if (b >= 0 && m->body_yadr[b] >= 0) ap = dmax(ap, m->atol[m->body_yadr[b]]);
-    }
     const double ks = m->inter_kscale[i];
-    return dmax(m->inter_hband[i], isfinite(ks) ? ks * ap : 0.0);
+    return dmax(m->inter_hband[i], isfinite(ks) ? ks * rc_inter_apos(m, i) : 0.0);
 }
 
 /* Coulomb's bound at the record: the friction force of a closed contact is

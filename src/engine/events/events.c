@@ -730,21 +730,6 @@ static double force_band(const rc_model *m, int i, double band, const rc_inter_r
     return fmax(band * k, RC_TOUCH_ULPS * DBL_EPSILON * (fabs(c->fload) + fabs(c->fdamp)));
 }
 
-/* The position tolerance of interface i [m]: its law's P_e, its Inacti 5
- * offset, or its bodies' positions (the larger). */
-static double inter_apos(const rc_model *m, int i)
-{
-    const int e = m->inter_eadr[i];
-    if (m->inter_peidx[i] >= 0) return m->atol[e + m->inter_peidx[i]];
-    if (m->inter_oidx[i] >= 0) return m->atol[e + m->inter_oidx[i]];
-    double a = 0.0;
-    for (int k = 0; k < 2; k++) {
-        const int b = k ? m->inter_bb[i] : m->inter_ba[i];
-        if (b >= 0 && m->body_yadr[b] >= 0) a = fmax(a, m->atol[m->body_yadr[b]]);
-    }
-    return a > 0 ? a : m->atol_pos;
-}
-
 /* Contact zone (P) and force clipping (total normal force). */
 static rc_event_kind step_contact(const rc_model *m, rc_data *d, int i, double t, double *y, const int *r,
                                   int *changed)
@@ -788,7 +773,7 @@ static rc_event_kind step_contact(const rc_model *m, rc_data *d, int i, double t
          * instant, in one frame and not in another. The contact leaves */
         rc_inter_report q;
         report(m, d, i, t, y, &q);
-        if (q.vn < 0 && q.p <= inter_apos(m, i)) {
+        if (q.vn < 0 && q.p <= rc_inter_apos(m, i)) {
             leave_zone(m, d, i, t, y, changed);
             return RC_EV_CONTACT_SEPARATE;
         }

@@ -14,7 +14,6 @@
 #include "model/coupling.h"
 #include "model/coupling_contact.h"
 
-#define RC_PI 3.14159265358979323846
 
 rc_status rc_cpl_contact_alloc(rc_model *m, rc_error *err)
 {

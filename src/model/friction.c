@@ -24,7 +24,6 @@
 #include "model/geom.h"
 #include "model/model.h"
 
-#define RC_PI 3.14159265358979323846
 
 /* Does group side (grpart, part) name part index p? */
 static int side_names(const rc_case *c, int grpart, int part, int p)

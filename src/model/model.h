@@ -39,6 +39,7 @@
 #include "model/friction.h"
 #include "model/table.h"
 
+#define RC_PI 3.14159265358979323846
 #define RC_NB 13 /* states of a free body */
 #define RC_NE 2  /* energy states of an interface */
 /* Stick -> slip needs |F_t| > (1 + RC_SLIP_BAND) F_lim: an undamped stick

@@ -16,7 +16,6 @@
 #include "model/power.h"
 #include "model/sensor.h"
 
-#define RC_PI 3.14159265358979323846
 
 /* Spline of /FUNCT `id` (field `field` of the card), or NULL when id = 0. */
 static rc_status make_spline(const rc_case *c, const rc_case_power *p, int id, const char *card, const char *field,

@@ -181,6 +181,9 @@ static rc_status method_event(const rc_backend *bk, void *self, ev_sink *k, rc_s
     return rc_bk_sink_event(k, ts, ek, "/SOLVER", NULL, err);
 }
 
+static rc_status settled(const rc_model *m, const rc_data *d, ev_sink *sink, double t, const double *y,
+                         const rc_event *ev, rc_stats *s, int show, rc_error *err);
+
 /* After a restart at t: when the restart moved the state from ypre (IDA's
  * projection onto the constraints the events switched on: a settled
  * contact's approach velocity removed at once; the velocity an imposed
@@ -194,14 +197,14 @@ static rc_status method_event(const rc_backend *bk, void *self, ev_sink *k, rc_s
  * passed 3 mm through the wall at zero force). Adds the events to *nev. */
 static rc_status modes_after_restart(const rc_backend *bk, void *self, const rc_model *m, rc_data *d, double t,
                                      double *y, double *ypre, double *flook, ev_sink *sink, rc_impacts *im,
-                                     rc_settle *hist, int *rootdir, int nr, rc_stats *s, int moved, int *nev,
-                                     rc_error *err)
+                                     rc_settle *hist, int *rootdir, int nr, rc_stats *s, int show, int moved,
+                                     int *nev, rc_error *err)
 {
     rc_status st = RC_OK;
     for (int pass = 0; pass < 2 && (moved || memcmp(ypre, y, (size_t)m->ny * sizeof(double))); pass++) {
         moved = 0;
         int jmp = 0;
-        const int ne = rc_bk_resolve_touching(m, d, t, y, flook, sink, im, hist, &s->events, &jmp, &st, err);
+        const int ne = rc_bk_resolve_touching(m, d, t, y, flook, sink, im, hist, s, show, &jmp, &st, err);
         if (st) return st;
         if (ne == 0 && !jmp) break;
         *nev += ne;
@@ -257,7 +260,8 @@ rc_status rc_bk_write_event(const rc_model *m, const rc_data *d, ev_sink *o, dou
  * Writes the events; returns their number (*jumped is set when history
  * states were reset). */
 int rc_bk_resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double *f, ev_sink *out,
-                            rc_impacts *im, rc_settle *hist, long *nevents, int *jumped, rc_status *st, rc_error *err)
+                            rc_impacts *im, rc_settle *hist, rc_stats *s, int show, int *jumped, rc_status *st,
+                            rc_error *err)
 {
     int total = 0;
     *st = RC_OK;
@@ -270,13 +274,22 @@ int rc_bk_resolve_touching(const rc_model *m, rc_data *d, double t, double *y, d
         int jmp = 0, nev = rc_modes_touch(m, d, t, y, f, ev, RC_MAX_EV, &jmp);
         *jumped |= jmp;
         total += nev;
-        *nevents += nev;
+        s->events += nev;
         for (int k = 0; k < nev && k < RC_MAX_EV; k++) rc_impacts_event(im, m, d, ev[k].inter, ev[k].kind, t, y);
         rc_settle_lowq(hist, m, d, t, ev, nev < RC_MAX_EV ? nev : RC_MAX_EV);
         /* the interface sensors of the contacts closed here (events.c) */
-        if (m->nsens > 0 && (*st = sensor_events(m, d, out, t, y, nevents, err))) return total;
+        if (m->nsens > 0 && (*st = sensor_events(m, d, out, t, y, &s->events, err))) return total;
         for (int k = 0; k < nev && k < RC_MAX_EV; k++)
             if ((*st = rc_bk_write_event(m, d, out, t, y, &ev[k], err))) return total;
+        /* the same contacts' history and settling rule as a root's events:
+         * a close the touch pass decides is a close (the same fall of a
+         * cradle's ball, closed by a root in one unit system and by this
+         * pass after another root in the other, settled in one only) */
+        rc_event sev[RC_MAX_EV];
+        int nsev = 0;
+        rc_settle_contacts(hist, m, d, t, ev, nev < RC_MAX_EV ? nev : RC_MAX_EV, sev, RC_MAX_EV, &nsev, jumped);
+        for (int k = 0; k < nsev && k < RC_MAX_EV; k++)
+            if ((*st = settled(m, d, out, t, y, &sev[k], s, show, err))) return total;
         if (nev == 0) break;
     }
     return total;
@@ -938,7 +951,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
     if (m->nsens > 0 && (st = sensor_events(m, d, &sink, t, y, &s.events, err))) goto done;
     {
         int jmp = 0;
-        rc_bk_resolve_touching(m, d, t, y, flook, &sink, &im, hist, &s.events, &jmp, &st, err);
+        rc_bk_resolve_touching(m, d, t, y, flook, &sink, &im, hist, &s, show, &jmp, &st, err);
         if (st) goto done;
         /* contacts the initial state closed without an event: persistent
          * contacts from the start, followed at every step like the impacts */
@@ -1086,7 +1099,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             BKCHECK(bk->restart(self, t, 1), "ReInit");
             s.reinits++;
             int nbpev = 0;
-            if ((st = modes_after_restart(bk, self, m, d, t, y, ypre, flook, &sink, &im, hist, rootdir, nr, &s, ev_here,
+            if ((st = modes_after_restart(bk, self, m, d, t, y, ypre, flook, &sink, &im, hist, rootdir, nr, &s, show, ev_here,
                                           &nbpev, err)))
                 goto done;
             ev_here |= nbpev > 0;
@@ -1157,7 +1170,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
                 goto done;
             }
             /* contacts left at zero penetration or zero force: by the state */
-            nev += rc_bk_resolve_touching(m, d, t, y, flook, &sink, &im, hist, &s.events, &jumped, &st, err);
+            nev += rc_bk_resolve_touching(m, d, t, y, flook, &sink, &im, hist, &s, show, &jumped, &st, err);
             if (st) goto done;
             if (nev > 0 && nr > 0) {
                 rc_bk_root_directions(m, d, rootdir);
@@ -1173,7 +1186,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
                 memcpy(ypre, y, (size_t)m->ny * sizeof(double));
                 BKCHECK(bk->restart(self, t, 0), "ReInit");
                 s.reinits++;
-                if ((st = modes_after_restart(bk, self, m, d, t, y, ypre, flook, &sink, &im, hist, rootdir, nr, &s, 0,
+                if ((st = modes_after_restart(bk, self, m, d, t, y, ypre, flook, &sink, &im, hist, rootdir, nr, &s, show, 0,
                                               &nev, err)))
                     goto done;
                 if ((st = method_event(bk, self, &sink, &s, err))) goto done;

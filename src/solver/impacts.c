@@ -9,7 +9,6 @@
 #include "model/power.h"
 
 /* pi [-] (M_PI is not in C11) */
-#define RC_PI 3.14159265358979323846
 
 int rc_impacts_init(rc_impacts *im, const rc_model *m)
 {

@@ -82,10 +82,11 @@ rc_status rc_bk_write_event(const rc_model *m, const rc_data *d, ev_sink *o, dou
                       rc_error *err);
 /* Contacts at zero penetration or zero force, decided by the state (after
  * the start and every event); f is scratch [ny]; hist the run's history of
- * closes and openings (its order holds, rc_settle_lowq); returns the
- * events. */
+ * closes and openings (its order holds, rc_settle_lowq; its settles,
+ * rc_settle_contacts, written and counted in s, on stderr when show);
+ * returns the events. */
 int rc_bk_resolve_touching(const rc_model *m, rc_data *d, double t, double *y, double *f, ev_sink *out, rc_impacts *im,
-                     rc_settle *hist, long *nevents, int *jumped, rc_status *st, rc_error *err);
+                     rc_settle *hist, rc_stats *s, int show, int *jumped, rc_status *st, rc_error *err);
 /* 1 when a root function is exactly zero at (t, y); g is scratch. */
 int rc_bk_root_on_zero(const rc_model *m, const rc_data *d, double t, const double *y, double *g);
 double rc_bk_wall_now(void); /* [s], monotonic */

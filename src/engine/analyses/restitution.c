@@ -34,7 +34,6 @@ RC_POWREG_DEFINE(double, RC_RE_ID, _r)
 
 /* ODE tolerances (scaled units) and limits; pi. */
 #define RC_REST_TOL 1e-13
-#define RC_PI 3.14159265358979323846
 #define RC_REST_MAXSTEPS 2000000
 #define RC_REST_MAXEVENTS 1000
 

@@ -89,6 +89,17 @@ static void settle(rc_data *d, int i, rc_event *settled, int max_settled, int *n
     (*nsettled)++;
 }
 
+/* Whether a contact phase of interface i lasting phase [s] was one bounce:
+ * at most RC_SETTLE_PHASE periods of the contact at its scale (settle.h).
+ * An interface without a scale (no reduced mass or stiffness: a meshed
+ * pair) is not judged by it. */
+static int one_bounce(const rc_model *m, int i, double phase)
+{
+    const double mr = m->inter_mrest[i], ks = m->inter_kscale[i];
+    if (!(mr > 0) || !(ks > 0) || !isfinite(mr) || !isfinite(ks)) return 1;
+    return phase <= RC_SETTLE_PHASE * 2.0 * RC_PI * sqrt(mr / ks);
+}
+
 /* The contact's own events (contact_close, _open, _separate, _settle). */
 static int contact_kind(rc_event_kind k)
 {
@@ -96,12 +107,10 @@ static int contact_kind(rc_event_kind k)
            k == RC_EV_CONTACT_SETTLE;
 }
 
-rc_settle_verdict rc_settle_after_events(rc_settle *s, const rc_model *m, rc_data *d, double t, double dtout,
-                                         const rc_event *ev, int nev, rc_event *settled, int max_settled,
-                                         int *nsettled, int *restart, char *why, size_t n)
+void rc_settle_contacts(rc_settle *s, const rc_model *m, rc_data *d, double t, const rc_event *ev, int nev,
+                        rc_event *settled, int max_settled, int *nsettled, int *restart)
 {
     *nsettled = 0;
-    rc_settle_lowq(s, m, d, t, ev, nev);
     /* settling: a contact that closes after a flight short against its
      * last contact phase is held closed (RC_SETTLE_FLIGHT) */
     for (int k = 0; k < nev; k++) {
@@ -119,10 +128,18 @@ rc_settle_verdict rc_settle_after_events(rc_settle *s, const rc_model *m, rc_dat
          * contacts settled on CVODE, where that changes nothing, and on IDA
          * became rigid, 1 mm from the penalty motion 0.16 s later) */
         if (d->inter_mode[i] == RC_MODE_CLOSED && !d->inter_settled[i] && s->nshrink[i] >= RC_SETTLE_SHRINK &&
-            flight < RC_SETTLE_FLIGHT * phase && !rc_inter_elastic(m, i))
+            flight < RC_SETTLE_FLIGHT * phase && !rc_inter_elastic(m, i) && one_bounce(m, i, phase))
             settle(d, i, settled, max_settled, nsettled);
         *restart |= d->inter_settled[i]; /* its root function changed: restart */
     }
+}
+
+rc_settle_verdict rc_settle_after_events(rc_settle *s, const rc_model *m, rc_data *d, double t, double dtout,
+                                         const rc_event *ev, int nev, rc_event *settled, int max_settled,
+                                         int *nsettled, int *restart, char *why, size_t n)
+{
+    rc_settle_lowq(s, m, d, t, ev, nev);
+    rc_settle_contacts(s, m, d, t, ev, nev, settled, max_settled, nsettled, restart);
     /* event accumulation: report it rather than stall; the contact events
      * of an interface that is closed settle it instead */
     for (int k = 0; k < nev; k++) {

@@ -27,6 +27,14 @@
  * when its penetration returns to zero [-]. */
 #define RC_SETTLE_FLIGHT 1.0
 #define RC_SETTLE_SHRINK 2
+/* ... and that contact phase was one bounce: no longer than RC_SETTLE_PHASE
+ * times the contact's period at its scale, 2 pi sqrt(m_red / k_s) (a
+ * compression lasts about half of it; validation's settling bounces 0.31 to
+ * 0.81 of it). A longer phase held several oscillations of the contact, the
+ * pair riding on a motion of the bodies (the top ball of a stack on a
+ * rattling middle one: phases of 1.4 to 4.1 periods) whose flights may
+ * shrink without accumulating [-]. */
+#define RC_SETTLE_PHASE 1.0
 /* The order hold (rc_settle_lowq): BDF order 3 holds a mode of damping
  * ratio zeta in its A(alpha) sector, alpha = 86.03 degrees, only where
  * zeta >= sin(90 - alpha) = 0.069 [-]; RC_LOWQ_EVENTS events of the
@@ -65,6 +73,15 @@ typedef enum {
 rc_settle_verdict rc_settle_after_events(rc_settle *s, const rc_model *m, rc_data *d, double t, double dtout,
                                          const rc_event *ev, int nev, rc_event *settled, int max_settled,
                                          int *nsettled, int *restart, char *why, size_t n);
+
+/* The settling rule alone over the contact events ev[0..nev) at t of any
+ * pass (the root return's, rc_settle_after_events calls it; the touch
+ * pass's, whose closes, releases and separations are the same contact's
+ * history and settle by the same rule): updates the history, marks and
+ * writes the settles as rc_settle_after_events does, *nsettled their
+ * number; sets *restart when a settled contact's root function changed. */
+void rc_settle_contacts(rc_settle *s, const rc_model *m, rc_data *d, double t, const rc_event *ev, int nev,
+                        rc_event *settled, int max_settled, int *nsettled, int *restart);
 
 /* The order hold of a lightly damped contact whose modes chatter
  * (docs/theory.md 7.7): over the events ev[0..nev) at t of any pass (the

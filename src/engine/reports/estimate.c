@@ -31,7 +31,6 @@
 #include "engine/assembly/bounds.h"
 #include "engine/reports/reports.h"
 
-#define RC_PI 3.14159265358979323846
 /* Steps per impact at the default tolerances (report.c measures 124..267 on
  * the restitution validation problems; a whole bounce with its flight takes
  * about 75 on the demo) [-]. */

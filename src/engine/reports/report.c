@@ -21,7 +21,6 @@
 #include "engine/analyses/analyses.h"
 #include "engine/reports/reports.h"
 
-#define RC_PI 3.14159265358979323846
 /* CVODE steps per impact at the default tolerances, measured on the
  * restitution validation problems (t6_restitution: 124 steps, pw_restitution:
  * 217, cc_stop: 267 for an impact and free flight) [-]. */

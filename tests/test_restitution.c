@@ -222,41 +222,80 @@ static void test_restitution_settling(void)
     rc_model_free(m);
 }
 
-/* The engine's verdict after events (engine/events/settle.c): flights
- * shrinking twice in a row, the last shorter than the contact phase before
- * it, settle the closed contact; more than RC_ZENO_MAX crowded events
- * settle a closed contact when they are its contact events, and end the
- * run otherwise, with the message naming the element and the last kind. */
-static void test_restitution_settle_verdicts(void)
+/* Bounces of settle_ball's contact in the history h at the state y (f
+ * scratch): closes at 1.0, 1.0043, 1.0066, 1.0071 s, separations 3e-4 s
+ * after the first three (contact phases of half the contact's period
+ * 2 pi sqrt(m / k) = 6.3e-4 s): flights 4e-3, 2e-3, 2e-4 s, the last
+ * shorter than the phase before it; the third of those openings of kind
+ * `third` (a separation, or a release the fourth close reloads). Whether
+ * the fourth close settled (the first three must not). */
+static int settles_after_bounces(const rc_model *m, rc_data *d, rc_settle *h, const double *y, double *f,
+                                 rc_event_kind third)
 {
-    rc_error e;
-    rc_model *m = settle_ball(0, "settle_verdicts.rad", &e);
-    if (!m) return;
-    rc_data *d = rc_data_new(m);
-    rc_settle *h = rc_settle_new(m);
-    ENSURE(d && h);
-    if (!d || !h) goto out;
     rc_event sev[4];
     char why[512] = "";
-    int ns = 0, restart = 0;
-    /* bounces: closes at 1.0, 1.5, 1.8, 1.95, separations 0.1 s after the
-     * first three: flights 0.4, 0.2, 0.05 against a contact phase of 0.1 */
-    const double tc[4] = {1.0, 1.5, 1.8, 1.95};
+    int ns = 0, restart = 0, settled = 0;
+    const double tc[4] = {1.0, 1.0043, 1.0066, 1.0071};
     for (int k = 0; k < 4; k++) {
         d->inter_mode[0] = RC_MODE_CLOSED;
         const rc_event close = {0, RC_EV_CONTACT_CLOSE};
         restart = 0;
-        ENSURE(rc_settle_after_events(h, m, d, tc[k], 0.01, &close, 1, sev, 4, &ns, &restart, why, sizeof why) ==
+        ENSURE(rc_settle_after_events(h, m, d, tc[k], y, f, 0.01, &close, 1, sev, 4, &ns, &restart, why, sizeof why) ==
                RC_SETTLE_GO_ON);
-        ENSURE(ns == (k == 3) && restart == (k == 3) && d->inter_settled[0] == (k == 3));
-        if (k == 3) ENSURE(sev[0].inter == 0 && sev[0].kind == RC_EV_CONTACT_SETTLE);
-        if (k == 3) break;
+        ENSURE(ns == restart && ns == d->inter_settled[0] && (ns == 0 || k == 3));
+        if (ns) ENSURE(sev[0].inter == 0 && sev[0].kind == RC_EV_CONTACT_SETTLE);
+        if (k == 3) {
+            settled = ns;
+            break;
+        }
         d->inter_mode[0] = RC_MODE_OPEN;
-        const rc_event sep = {0, RC_EV_CONTACT_SEPARATE};
-        ENSURE(rc_settle_after_events(h, m, d, tc[k] + 0.1, 0.01, &sep, 1, sev, 4, &ns, &restart, why, sizeof why) ==
-                   RC_SETTLE_GO_ON &&
+        const rc_event sep = {0, k == 2 ? third : RC_EV_CONTACT_SEPARATE};
+        ENSURE(rc_settle_after_events(h, m, d, tc[k] + 3e-4, y, f, 0.01, &sep, 1, sev, 4, &ns, &restart, why,
+                                      sizeof why) == RC_SETTLE_GO_ON &&
                ns == 0);
     }
+    return settled;
+}
+
+/* The engine's verdict after events (engine/events/settle.c): flights
+ * shrinking twice in a row, the last shorter than the contact phase before
+ * it, that phase one bounce and the flight ended by a load (gravity), settle
+ * the closed contact; a reload of a contact released but never separated
+ * is no landing; the same bounces without gravity (the ball's closing
+ * speed, 1e-3 m/s, not turned by any load) do not; more than RC_ZENO_MAX
+ * crowded events settle a closed contact when they are its contact events,
+ * and end the run otherwise, with the message naming the element and the
+ * last kind. */
+static void test_restitution_settle_verdicts(void)
+{
+    rc_error e;
+    rc_model *m = settle_ball(1, "settle_verdicts.rad", &e), *m0 = settle_ball(0, "settle_verdicts0.rad", &e);
+    if (!m || !m0) {
+        rc_model_free(m);
+        rc_model_free(m0);
+        return;
+    }
+    rc_data *d = rc_data_new(m), *d0 = rc_data_new(m0);
+    rc_settle *h = rc_settle_new(m), *h0 = rc_settle_new(m0);
+    double *y = calloc((size_t)m->ny, sizeof(double)), *f = calloc((size_t)m->ny, sizeof(double));
+    ENSURE(d && h && d0 && h0 && y && f && m0->ny == m->ny);
+    if (!d || !h || !d0 || !h0 || !y || !f) goto out;
+    /* the ball approaching the floor at 1e-3 m/s: gravity over the last
+     * flight (2e-4 s) gives 1.96e-3 m/s, beyond RC_SETTLE_LOAD times it */
+    rc_initial_state(m, y);
+    y[m->body_yadr[0] + 9] = -1e-3;
+    ENSURE(settles_after_bounces(m, d, h, y, f, RC_EV_CONTACT_SEPARATE) == 1);
+    ENSURE(settles_after_bounces(m0, d0, h0, y, f, RC_EV_CONTACT_SEPARATE) == 0);
+    /* the last "flight" a release that never separated: no landing */
+    rc_settle_free(h0);
+    h0 = rc_settle_new(m);
+    d->inter_settled[0] = 0;
+    ENSURE(h0 && settles_after_bounces(m, d, h0, y, f, RC_EV_CONTACT_OPEN) == 0);
+    rc_settle_free(h0);
+    h0 = NULL;
+    rc_event sev[4];
+    char why[512] = "";
+    int ns = 0, restart = 0;
     ENSURE(strstr(rc_settle_hold(m, 0), "penalty law"));
     /* crowded contact events of a closed contact: it settles */
     rc_settle_free(h);
@@ -267,7 +306,7 @@ static void test_restitution_settle_verdicts(void)
     int go = 1;
     for (int k = 0; k <= RC_ZENO_MAX + 1; k++) {
         restart = 0;
-        go &= rc_settle_after_events(h, m, d, 2.0, 0.01, &open, 1, sev, 4, &ns, &restart, why, sizeof why) ==
+        go &= rc_settle_after_events(h, m, d, 2.0, y, f, 0.01, &open, 1, sev, 4, &ns, &restart, why, sizeof why) ==
               RC_SETTLE_GO_ON;
         if (k < RC_ZENO_MAX + 1) go &= ns == 0 && !restart;
     }
@@ -277,18 +316,23 @@ static void test_restitution_settle_verdicts(void)
     h = rc_settle_new(m);
     go = 1;
     for (int k = 0; k < RC_ZENO_MAX + 1; k++)
-        go &= rc_settle_after_events(h, m, d, 2.0, 0.01, &slip, 1, sev, 4, &ns, &restart, why, sizeof why) ==
+        go &= rc_settle_after_events(h, m, d, 2.0, y, f, 0.01, &slip, 1, sev, 4, &ns, &restart, why, sizeof why) ==
               RC_SETTLE_GO_ON;
     ENSURE(go);
-    ENSURE(rc_settle_after_events(h, m, d, 2.0, 0.01, &slip, 1, sev, 4, &ns, &restart, why, sizeof why) ==
+    ENSURE(rc_settle_after_events(h, m, d, 2.0, y, f, 0.01, &slip, 1, sev, 4, &ns, &restart, why, sizeof why) ==
            RC_SETTLE_ZENO);
     printf("    %s\n", why);
     ENSURE(strstr(why, "event accumulation (Zeno) at t = 2 s in ") && strstr(why, m->inter_name[0]) &&
            strstr(why, "more than 200 events within 2e-07 s of each other (last: fric_slip)"));
 out:
+    free(y);
+    free(f);
     rc_settle_free(h);
+    rc_settle_free(h0);
     rc_data_free(d);
+    rc_data_free(d0);
     rc_model_free(m);
+    rc_model_free(m0);
 }
 
 void suite_restitution(void);

@@ -287,7 +287,8 @@ int rc_bk_resolve_touching(const rc_model *m, rc_data *d, double t, double *y, d
          * pass after another root in the other, settled in one only) */
         rc_event sev[RC_MAX_EV];
         int nsev = 0;
-        rc_settle_contacts(hist, m, d, t, ev, nev < RC_MAX_EV ? nev : RC_MAX_EV, sev, RC_MAX_EV, &nsev, jumped);
+        rc_settle_contacts(hist, m, d, t, y, f, ev, nev < RC_MAX_EV ? nev : RC_MAX_EV, sev, RC_MAX_EV, &nsev,
+                           jumped);
         for (int k = 0; k < nsev && k < RC_MAX_EV; k++)
             if ((*st = settled(m, d, out, t, y, &sev[k], s, show, err))) return total;
         if (nev == 0) break;
@@ -785,8 +786,16 @@ void rc_bk_failure_message(const rc_model *m, const rc_data *d, const char *name
         snprintf(where, sizeof where, "non-finite force in %s", m->inter_name[d->sc->fail_inter]);
     else if (cf)
         snprintf(where, sizeof where, "no force from %s", cf);
-    else if (elem[0])
-        snprintf(where, sizeof where, "largest local error in %s", elem);
+    else if (elem[0]) {
+        /* an interface's state: Sfric at zero force may be the cause */
+        char hint[240] = "";
+        for (int i = 0; i < m->ninter && !hint[0]; i++) {
+            const size_t k = strlen(m->inter_name[i]);
+            if (!strncmp(elem, m->inter_name[i], k) && (elem[k] == ',' || elem[k] == ' ' || !elem[k]))
+                rc_settle_sfric_hint(m, d, i, hint, sizeof hint);
+        }
+        snprintf(where, sizeof where, "largest local error in %s%s", elem, hint);
+    }
     else
         snprintf(where, sizeof where, "element not identified");
     snprintf(buf, n, "%s failed at t = %.9g s (step h = %.3g s, next output at %.9g s): %s%s%s%s; %s. Likely "
@@ -1160,7 +1169,7 @@ rc_status rc_drive(const rc_model *m, const rc_run_options *opt, rc_pause *pause
             rc_event sev[RC_MAX_EV];
             int nsev = 0;
             const rc_settle_verdict verdict =
-                rc_settle_after_events(hist, m, d, t, dtout, ev, nev < RC_MAX_EV ? nev : RC_MAX_EV, sev, RC_MAX_EV,
+                rc_settle_after_events(hist, m, d, t, y, flook, dtout, ev, nev < RC_MAX_EV ? nev : RC_MAX_EV, sev, RC_MAX_EV,
                                        &nsev, &jumped, reason, sizeof reason);
             for (int k = 0; k < nsev && k < RC_MAX_EV; k++)
                 if ((st = settled(m, d, &sink, t, y, &sev[k], &s, show, err))) goto done;

@@ -12,12 +12,14 @@
 
 #include "engine/events/settle.h"
 #include "engine/constraints/stick.h"
+#include "engine/assembly/assembly.h"
 
 struct rc_settle {
     double *t_open;   /* [ninter] last contact_open or contact_separate [s] (NaN: none) */
     double *t_close;  /* [ninter] last contact_close [s] (NaN: none) */
     double *t_flight; /* [ninter] the last flight, t_close - t_open [s] (NaN: none) */
     int *nshrink;     /* [ninter] flights shrunk in a row */
+    int *apart;       /* [ninter] separated (contact_separate) since its last close */
     double *zeno_t;   /* [ninter] time of the interface's last event [s] */
     int *zeno_n;      /* [ninter] its events in a row, each within the Zeno window of the previous */
     double *lq_t;     /* [ninter] time of its last event of any pass (rc_settle_lowq) [s] */
@@ -33,11 +35,12 @@ rc_settle *rc_settle_new(const rc_model *m)
     s->t_close = malloc(n * sizeof(double));
     s->t_flight = malloc(n * sizeof(double));
     s->nshrink = calloc(n, sizeof(int));
+    s->apart = calloc(n, sizeof(int));
     s->zeno_t = calloc(n, sizeof(double));
     s->zeno_n = calloc(n, sizeof(int));
     s->lq_t = malloc(n * sizeof(double));
     s->lq_n = calloc(n, sizeof(int));
-    if (!s->t_open || !s->t_close || !s->t_flight || !s->nshrink || !s->zeno_t || !s->zeno_n || !s->lq_t || !s->lq_n) {
+    if (!s->t_open || !s->t_close || !s->t_flight || !s->nshrink || !s->apart || !s->zeno_t || !s->zeno_n || !s->lq_t || !s->lq_n) {
         rc_settle_free(s);
         return NULL;
     }
@@ -53,6 +56,7 @@ void rc_settle_free(rc_settle *s)
     free(s->t_close);
     free(s->t_flight);
     free(s->nshrink);
+    free(s->apart);
     free(s->zeno_t);
     free(s->zeno_n);
     free(s->lq_t);
@@ -100,6 +104,24 @@ static int one_bounce(const rc_model *m, int i, double phase)
     return phase <= RC_SETTLE_PHASE * 2.0 * RC_PI * sqrt(mr / ks);
 }
 
+/* Whether the flight of interface i [s] that ended at its close at (t, y)
+ * was ended by a load: the pair's normal approach acceleration from every
+ * force but this contact's (its mode open for the evaluation; f scratch
+ * [ny]) over the flight reaches RC_SETTLE_LOAD times the closing speed
+ * (settle.h). */
+static int loaded(const rc_model *m, rc_data *d, int i, double t, const double *y, double *f, double flight)
+{
+    rc_inter_report r, dr;
+    rc_inter_report_eval_d(m, d, i, t, y, &r);
+    const int mode = d->inter_mode[i];
+    d->inter_mode[i] = RC_MODE_OPEN;
+    const int bad = rc_assemble_rhs(m, d, t, y, f);
+    d->inter_mode[i] = mode;
+    if (bad) return 1; /* not judged: the rule as without the load */
+    rc_inter_report_rate(m, i, RC_MODE_OPEN, d->inter_branch[i], 0, d->inter_slip[i], y, f, &dr);
+    return dr.vn * flight >= RC_SETTLE_LOAD * fabs(r.vn);
+}
+
 /* The contact's own events (contact_close, _open, _separate, _settle). */
 static int contact_kind(rc_event_kind k)
 {
@@ -107,8 +129,8 @@ static int contact_kind(rc_event_kind k)
            k == RC_EV_CONTACT_SETTLE;
 }
 
-void rc_settle_contacts(rc_settle *s, const rc_model *m, rc_data *d, double t, const rc_event *ev, int nev,
-                        rc_event *settled, int max_settled, int *nsettled, int *restart)
+void rc_settle_contacts(rc_settle *s, const rc_model *m, rc_data *d, double t, const double *y, double *f,
+                        const rc_event *ev, int nev, rc_event *settled, int max_settled, int *nsettled, int *restart)
 {
     *nsettled = 0;
     /* settling: a contact that closes after a flight short against its
@@ -117,7 +139,15 @@ void rc_settle_contacts(rc_settle *s, const rc_model *m, rc_data *d, double t, c
         const int i = ev[k].inter;
         if (i < 0) continue;
         if (ev[k].kind == RC_EV_CONTACT_OPEN || ev[k].kind == RC_EV_CONTACT_SEPARATE) s->t_open[i] = t;
+        if (ev[k].kind == RC_EV_CONTACT_SEPARATE) s->apart[i] = 1;
         if (ev[k].kind != RC_EV_CONTACT_CLOSE) continue;
+        /* a released contact loading again before it separated: the same
+         * contact phase, no landing after a flight (a cradle in space,
+         * released contacts of balls pressed by their neighbours reloading
+         * 0.3 to 1 ms later at separating speeds of microns per second, or
+         * at once on IDA: settled as shrinking flights) */
+        if (!s->apart[i] && !isnan(s->t_close[i])) continue;
+        s->apart[i] = 0;
         const double flight = t - s->t_open[i], phase = s->t_open[i] - s->t_close[i];
         s->nshrink[i] = flight < s->t_flight[i] ? s->nshrink[i] + 1 : 0; /* the flights shrink */
         s->t_flight[i] = flight;
@@ -128,18 +158,29 @@ void rc_settle_contacts(rc_settle *s, const rc_model *m, rc_data *d, double t, c
          * contacts settled on CVODE, where that changes nothing, and on IDA
          * became rigid, 1 mm from the penalty motion 0.16 s later) */
         if (d->inter_mode[i] == RC_MODE_CLOSED && !d->inter_settled[i] && s->nshrink[i] >= RC_SETTLE_SHRINK &&
-            flight < RC_SETTLE_FLIGHT * phase && !rc_inter_elastic(m, i) && one_bounce(m, i, phase))
+            flight < RC_SETTLE_FLIGHT * phase && !rc_inter_elastic(m, i) && one_bounce(m, i, phase) &&
+            loaded(m, d, i, t, y, f, flight))
             settle(d, i, settled, max_settled, nsettled);
         *restart |= d->inter_settled[i]; /* its root function changed: restart */
     }
 }
 
-rc_settle_verdict rc_settle_after_events(rc_settle *s, const rc_model *m, rc_data *d, double t, double dtout,
-                                         const rc_event *ev, int nev, rc_event *settled, int max_settled,
-                                         int *nsettled, int *restart, char *why, size_t n)
+void rc_settle_sfric_hint(const rc_model *m, const rc_data *d, int i, char *buf, size_t n)
+{
+    const double sf = m->inter_fr[i].kind != RC_FK_NONE ? m->inter_fr[i].sfric : 0.0;
+    if (n > 0) buf[0] = '\0';
+    if (sf > 0 && d->inter_mode[i] != RC_MODE_OPEN)
+        snprintf(buf, n,
+                 "; its friction limit holds Sfric = %.3g N, which acts at zero normal force and vanishes "
+                 "when the contact releases: a smaller Sfric, or none, lets it release", sf);
+}
+
+rc_settle_verdict rc_settle_after_events(rc_settle *s, const rc_model *m, rc_data *d, double t, const double *y,
+                                         double *f, double dtout, const rc_event *ev, int nev, rc_event *settled,
+                                         int max_settled, int *nsettled, int *restart, char *why, size_t n)
 {
     rc_settle_lowq(s, m, d, t, ev, nev);
-    rc_settle_contacts(s, m, d, t, ev, nev, settled, max_settled, nsettled, restart);
+    rc_settle_contacts(s, m, d, t, y, f, ev, nev, settled, max_settled, nsettled, restart);
     /* event accumulation: report it rather than stall; the contact events
      * of an interface that is closed settle it instead */
     for (int k = 0; k < nev; k++) {
@@ -160,13 +201,8 @@ rc_settle_verdict rc_settle_after_events(rc_settle *s, const rc_model *m, rc_dat
              * would carry the other way each time (a box sliding on a floor
              * with Sfric = 1.8 times its weight, released and closed every
              * 3e-10 s; with Sfric = 0 it runs to the end) */
-            const double sf = m->inter_fr[i].kind != RC_FK_NONE ? m->inter_fr[i].sfric : 0.0;
-            const int zf = sf > 0 && contact_kind(ev[k].kind) && d->inter_mode[i] != RC_MODE_OPEN;
             char hint[240] = "";
-            if (zf)
-                snprintf(hint, sizeof hint,
-                         "; its friction limit holds Sfric = %.3g N, which acts at zero normal force and vanishes "
-                         "when the contact releases: a smaller Sfric, or none, lets it release", sf);
+            if (contact_kind(ev[k].kind)) rc_settle_sfric_hint(m, d, i, hint, sizeof hint);
             snprintf(why, n,
                      "event accumulation (Zeno) at t = %.9g s in %s: more than %d events within %.2g s of "
                      "each other (last: %s); the modes of this element switch without the state moving: "

@@ -35,6 +35,13 @@
  * rattling middle one: phases of 1.4 to 4.1 periods) whose flights may
  * shrink without accumulating [-]. */
 #define RC_SETTLE_PHASE 1.0
+/* ... and the flight f it ended was ended by a load: the pair's approach
+ * acceleration a_n at the close from every force but the contact's, a_n f
+ * >= RC_SETTLE_LOAD times the closing speed v (a ballistic flight under a
+ * steady load has a_n f = 2 v). Without one (balls of a cradle in space,
+ * each flight ended by another ball's impact) bounces cannot accumulate:
+ * settled, such a contact held its pair together on IDA [-]. */
+#define RC_SETTLE_LOAD 0.5
 /* The order hold (rc_settle_lowq): BDF order 3 holds a mode of damping
  * ratio zeta in its A(alpha) sector, alpha = 86.03 degrees, only where
  * zeta >= sin(90 - alpha) = 0.069 [-]; RC_LOWQ_EVENTS events of the
@@ -60,8 +67,8 @@ typedef enum {
     RC_SETTLE_ZENO = 1   /* events accumulate: end the run with the message */
 } rc_settle_verdict;
 
-/* The events ev[0..nev) just applied at t (rc_events_apply, modes of d
- * after them; dtout the run's output interval): updates the history, marks
+/* The events ev[0..nev) just applied at (t, y) (rc_events_apply, modes of
+ * d after them; f scratch [ny]; dtout the run's output interval): updates the history, marks
  * the closed contacts that settle (d->inter_settled) and writes one event
  * of kind RC_EV_CONTACT_SETTLE per contact settled into settled[] (at most
  * max_settled, in the order they settled; *nsettled their number). Sets
@@ -70,9 +77,9 @@ typedef enum {
  * RC_ZENO_MAX crowded events of an element cannot be settled (the events
  * after that one are not looked at); the contacts settled before it are
  * still in settled[]. */
-rc_settle_verdict rc_settle_after_events(rc_settle *s, const rc_model *m, rc_data *d, double t, double dtout,
-                                         const rc_event *ev, int nev, rc_event *settled, int max_settled,
-                                         int *nsettled, int *restart, char *why, size_t n);
+rc_settle_verdict rc_settle_after_events(rc_settle *s, const rc_model *m, rc_data *d, double t, const double *y,
+                                         double *f, double dtout, const rc_event *ev, int nev, rc_event *settled,
+                                         int max_settled, int *nsettled, int *restart, char *why, size_t n);
 
 /* The settling rule alone over the contact events ev[0..nev) at t of any
  * pass (the root return's, rc_settle_after_events calls it; the touch
@@ -80,8 +87,15 @@ rc_settle_verdict rc_settle_after_events(rc_settle *s, const rc_model *m, rc_dat
  * history and settle by the same rule): updates the history, marks and
  * writes the settles as rc_settle_after_events does, *nsettled their
  * number; sets *restart when a settled contact's root function changed. */
-void rc_settle_contacts(rc_settle *s, const rc_model *m, rc_data *d, double t, const rc_event *ev, int nev,
-                        rc_event *settled, int max_settled, int *nsettled, int *restart);
+void rc_settle_contacts(rc_settle *s, const rc_model *m, rc_data *d, double t, const double *y, double *f,
+                        const rc_event *ev, int nev, rc_event *settled, int max_settled, int *nsettled, int *restart);
+
+/* The hint of a failure whose element is interface i's contact when its
+ * friction limit holds Sfric and it is not open ("; its friction limit
+ * holds Sfric = ..."; empty otherwise) into buf[0..n): Sfric acts at zero
+ * normal force and vanishes when the contact releases, so a contact at
+ * zero force switches between the two (Zeno, or steps collapsing). */
+void rc_settle_sfric_hint(const rc_model *m, const rc_data *d, int i, char *buf, size_t n);
 
 /* The order hold of a lightly damped contact whose modes chatter
  * (docs/theory.md 7.7): over the events ev[0..nev) at t of any pass (the

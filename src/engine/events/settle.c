@@ -149,7 +149,7 @@ void rc_settle_contacts(rc_settle *s, const rc_model *m, rc_data *d, double t, c
         if (!s->apart[i] && !isnan(s->t_close[i])) continue;
         s->apart[i] = 0;
         const double flight = t - s->t_open[i], phase = s->t_open[i] - s->t_close[i];
-        s->nshrink[i] = flight < s->t_flight[i] ? s->nshrink[i] + 1 : 0; /* the flights shrink */
+        s->nshrink[i] = flight < RC_SETTLE_RATIO * s->t_flight[i] ? s->nshrink[i] + 1 : 0; /* the flights shrink */
         s->t_flight[i] = flight;
         s->t_close[i] = t;
         /* not an elastic contact (restitution 1): its bounces cannot

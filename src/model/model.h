@@ -461,6 +461,8 @@ static inline int rc_event_records(const rc_model *m)
 
 /* Name of state i for messages: "/RBODY/3, velocity z [m/s]" (statename.c). */
 void rc_state_name(const rc_model *m, int i, char *buf, size_t n);
+/* The interface whose own or contact-point states hold state i, or -1. */
+int rc_state_inter(const rc_model *m, int i);
 
 /* ---- layout views (the engine's functions over a model are declared in
  *      the engine's headers: engine/assembly/assembly.h, ...) ---------- */

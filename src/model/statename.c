@@ -8,6 +8,15 @@
 
 #include <stdio.h>
 
+int rc_state_inter(const rc_model *m, int i)
+{
+    for (int k = 0; k < m->ninter; k++) {
+        const int j = i - m->inter_eadr[k];
+        if (j >= 0 && j < m->inter_ns[k] + m->inter_pst[k] * m->inter_npt[k]) return k;
+    }
+    return -1;
+}
+
 void rc_state_name(const rc_model *m, int i, char *buf, size_t n)
 {
     static const char *const body_q[RC_NB] = {
@@ -22,35 +31,35 @@ void rc_state_name(const rc_model *m, int i, char *buf, size_t n)
             return;
         }
     }
-    for (int k = 0; k < m->ninter; k++) {
-        const int a = m->inter_eadr[k], j = i - a;
-        const int ps = m->inter_pst[k];
-        if (j >= m->inter_ns[k] && j < m->inter_ns[k] + ps * m->inter_npt[k]) {
-            const int p = (j - m->inter_ns[k]) / ps, e = (j - m->inter_ns[k]) % ps;
-            const rc_fric *fp = &m->inter_fr[k];
+    const int it = rc_state_inter(m, i);
+    if (it >= 0) {
+        const int j = i - m->inter_eadr[it];
+        const int ps = m->inter_pst[it];
+        if (j >= m->inter_ns[it]) {
+            const int p = (j - m->inter_ns[it]) / ps, e = (j - m->inter_ns[it]) % ps;
+            const rc_fric *fp = &m->inter_fr[it];
             /* 3 states: F_t (incremental) or the filtered force (viscous with
              * a filter); 6: F_t, then the filtered force F_f */
             const int filt = e >= 3 || (fp->form != RC_FF_INCREMENTAL && fp->tau > 0);
-            snprintf(buf, n, "%s, %s of contact point %d (node %d of the surface) %c [N]", m->inter_name[k],
+            snprintf(buf, n, "%s, %s of contact point %d (node %d of the surface) %c [N]", m->inter_name[it],
                      filt ? "filtered friction force F_f" : "tangential (friction) force F_t", p + 1, p + 1,
                      "xyz"[e % 3]);
             return;
         }
-        if (j < 0 || j >= m->inter_ns[k]) continue;
-        const rc_fric *fr = &m->inter_fr[k];
+        const rc_fric *fr = &m->inter_fr[it];
         const char *q = j == 0 ? "work of the normal force W_load [J]"
                         : j == 1 ? "energy of the normal damping W_damp [J]"
-                        : j == m->inter_hidx[k] ? "hysteresis force F_h [N]"
-                        : j == m->inter_oidx[k] ? "Inacti 5 gap offset [m]"
-                        : j == m->inter_peidx[k] ? "effective penetration P_e of the law [m]"
-                        : j == m->inter_dhidx[k] ? "dissipation D_h of the law (the relaxation of P_e; Iform 1, 2: the load curve) [J]"
+                        : j == m->inter_hidx[it] ? "hysteresis force F_h [N]"
+                        : j == m->inter_oidx[it] ? "Inacti 5 gap offset [m]"
+                        : j == m->inter_peidx[it] ? "effective penetration P_e of the law [m]"
+                        : j == m->inter_dhidx[it] ? "dissipation D_h of the law (the relaxation of P_e; Iform 1, 2: the load curve) [J]"
                         : fr->kind != RC_FK_NONE && fr->form == RC_FF_INCREMENTAL && j >= fr->tidx && j < fr->tidx + 3
                             ? "tangential (friction) force F_t [N]"
                         : fr->kind != RC_FK_NONE && fr->tau > 0 && j >= fr->fidx && j < fr->fidx + 3
                             ? "filtered friction force [N]"
                         : fr->kind != RC_FK_NONE && j == fr->widx ? "work of the friction force W_fric [J]"
                                                                    : "own state";
-        snprintf(buf, n, "%s, %s", m->inter_name[k], q);
+        snprintf(buf, n, "%s, %s", m->inter_name[it], q);
         return;
     }
     if (m->cpl)

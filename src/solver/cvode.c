@@ -445,10 +445,11 @@ static void failure_advice(const rc_model *m, const rc_data *d, void *cv, int fl
     CVodeGetCurrentStep(cv, &h);
     /* the element: largest |local error| x weight (the error test's measure) */
     char elem[200] = "";
+    int istate = -1;
     if (CVodeGetEstLocalErrors(cv, tmp1) == CV_SUCCESS && CVodeGetErrWeights(cv, tmp2) == CV_SUCCESS) {
         const int imax = rc_bk_worst_error(N_VGetArrayPointer(tmp1), N_VGetArrayPointer(tmp2),
                                            (int)N_VGetLength(tmp1), 0, 0);
-        if (imax >= 0) rc_state_name(m, kidx[imax], elem, sizeof elem);
+        if (imax >= 0) rc_state_name(m, istate = kidx[imax], elem, sizeof elem);
     }
     char *fname = CVodeGetReturnFlagName(flag); /* malloc'ed by CVODE */
     rc_fail_kind kind = RC_FAIL_OTHER;
@@ -467,7 +468,7 @@ static void failure_advice(const rc_model *m, const rc_data *d, void *cv, int fl
     default: break;
     }
     const char *advice = rc_bk_advice(kind, m);
-    rc_bk_failure_message(m, d, "CVODE", t, h, tout, fname, cvmsg, elem, advice, buf, n);
+    rc_bk_failure_message(m, d, "CVODE", t, h, tout, fname, cvmsg, elem, istate, advice, buf, n);
     free(fname);
 }
 
@@ -478,10 +479,11 @@ static void erk_failure(run_ctx *c, int flag, double t, double tout, char *buf, 
     double h = 0.0;
     ERKStepGetCurrentStep(c->erk, &h);
     char elem[200] = "";
+    int istate = -1;
     if (ERKStepGetEstLocalErrors(c->erk, c->ytn) == ARK_SUCCESS && ERKStepGetErrWeights(c->erk, c->f0) == ARK_SUCCESS) {
         const int imax = rc_bk_worst_error(N_VGetArrayPointer(c->ytn), N_VGetArrayPointer(c->f0),
                                            (int)N_VGetLength(c->ytn), 0, 0);
-        if (imax >= 0) rc_state_name(c->m, c->kidx[imax], elem, sizeof elem);
+        if (imax >= 0) rc_state_name(c->m, istate = c->kidx[imax], elem, sizeof elem);
     }
     char *fname = ERKStepGetReturnFlagName(flag); /* malloc'ed by ARKODE */
     rc_fail_kind kind = RC_FAIL_OTHER;
@@ -497,7 +499,7 @@ static void erk_failure(run_ctx *c, int flag, double t, double tout, char *buf, 
     default: break;
     }
     rc_bk_failure_message(c->m, c->d, "ARKODE ERKStep (method switching)", t, h, tout, fname, c->cvmsg, elem,
-                          rc_bk_advice(kind, c->m), buf, n);
+                          istate, rc_bk_advice(kind, c->m), buf, n);
     free(fname);
 }
 

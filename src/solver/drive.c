@@ -778,7 +778,8 @@ static rc_status outputs_before(const rc_backend *bk, void *self, const rc_model
 }
 
 void rc_bk_failure_message(const rc_model *m, const rc_data *d, const char *name, double t, double h, double tout,
-                     const char *fname, const char *msg, const char *elem, const char *advice, char *buf, size_t n)
+                     const char *fname, const char *msg, const char *elem, int istate, const char *advice, char *buf,
+                     size_t n)
 {
     const char *cf = rc_cpl_failed(m, d);
     char where[512];
@@ -788,12 +789,9 @@ void rc_bk_failure_message(const rc_model *m, const rc_data *d, const char *name
         snprintf(where, sizeof where, "no force from %s", cf);
     else if (elem[0]) {
         /* an interface's state: Sfric at zero force may be the cause */
+        const int it = istate >= 0 ? rc_state_inter(m, istate) : -1;
         char hint[240] = "";
-        for (int i = 0; i < m->ninter && !hint[0]; i++) {
-            const size_t k = strlen(m->inter_name[i]);
-            if (!strncmp(elem, m->inter_name[i], k) && (elem[k] == ',' || elem[k] == ' ' || !elem[k]))
-                rc_settle_sfric_hint(m, d, i, hint, sizeof hint);
-        }
+        if (it >= 0) rc_settle_sfric_hint(m, d, it, hint, sizeof hint);
         snprintf(where, sizeof where, "largest local error in %s%s", elem, hint);
     }
     else

@@ -227,11 +227,12 @@ static void failure_advice(const rc_model *m, const rc_data *d, void *ida, int f
     double h = 0.0;
     IDAGetCurrentStep(ida, &h);
     char elem[200] = "";
+    int istate = -1;
     if (IDAGetEstLocalErrors(ida, tmp1) == IDA_SUCCESS && IDAGetErrWeights(ida, tmp2) == IDA_SUCCESS) {
         /* the components in the error test: not the multipliers lambda */
         const int len = (int)N_VGetLength(tmp1), nr = m->jnt ? m->jnt->nrows : len - m->ny;
         const int imax = rc_bk_worst_error(N_VGetArrayPointer(tmp1), N_VGetArrayPointer(tmp2), len, m->ny, m->ny + nr);
-        if (imax >= 0 && imax < m->ny) rc_state_name(m, imax, elem, sizeof elem);
+        if (imax >= 0 && imax < m->ny) rc_state_name(m, istate = imax, elem, sizeof elem);
         else if (imax >= 0 && m->jnt && imax - m->ny < 2 * m->jnt->nrows + 1) rc_jnt_extra_name(m, imax - m->ny, elem, sizeof elem);
     }
     char *fname = IDAGetReturnFlagName(flag);
@@ -252,7 +253,7 @@ static void failure_advice(const rc_model *m, const rc_data *d, void *ida, int f
     default: break;
     }
     const char *advice = rc_bk_advice(kind, m);
-    rc_bk_failure_message(m, d, "IDA", t, h, tout, fname, msg, elem, advice, buf, n);
+    rc_bk_failure_message(m, d, "IDA", t, h, tout, fname, msg, elem, istate, advice, buf, n);
     free(fname);
 }
 

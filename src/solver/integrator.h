@@ -108,10 +108,12 @@ rc_status rc_bk_open_output(const rc_model *m, const rc_run_options *opt, const 
 /* The progress line on stderr. */
 void rc_bk_progress_line(double tend, const rc_stats *s, double t, long steps, double t0, int tty);
 
-/* The failure message of a backend: where (the element named elem, or a
+/* The failure message of a backend: where (the element named elem, model
+ * state istate or -1, with the Sfric hint of its interface's contact; or a
  * failed force), the integrator's flag name and last message, and advice. */
 void rc_bk_failure_message(const rc_model *m, const rc_data *d, const char *name, double t, double h, double tout,
-                     const char *fname, const char *msg, const char *elem, const char *advice, char *buf, size_t n);
+                     const char *fname, const char *msg, const char *elem, int istate, const char *advice, char *buf,
+                     size_t n);
 
 /* The integrator's error handler: nothing after an interruption (stop
  * set), an error kept in keep[n] for the failure message, a warning on

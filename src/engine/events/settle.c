@@ -94,9 +94,11 @@ static void settle(rc_data *d, int i, rc_event *settled, int max_settled, int *n
 }
 
 /* Whether a contact phase of interface i lasting phase [s] was one bounce:
- * at most RC_SETTLE_PHASE periods of the contact at its scale (settle.h).
- * An interface without a scale (no reduced mass or stiffness: a meshed
- * pair) is not judged by it. */
+ * at most RC_SETTLE_PHASE periods of the contact at its scale (settle.h),
+ * 2 pi sqrt(m_eff / k_s) with m_eff its effective mass along the normal
+ * (m->inter_mrest, the one of its restitution). An interface without a
+ * scale (nothing moves along its normal, or no stiffness) is not judged
+ * by it. */
 static int one_bounce(const rc_model *m, int i, double phase)
 {
     const double mr = m->inter_mrest[i], ks = m->inter_kscale[i];

@@ -22,7 +22,7 @@
 /* Settling (docs/theory.md 5.2): a contact of a TYPE6 (POWER) interface
  * that closes after a flight shorter than RC_SETTLE_FLIGHT times the
  * contact phase before it (the time between its previous close and its
- * opening), its flights having shrunk RC_SETTLE_SHRINK times in a row, is
+ * separation), its flights having shrunk RC_SETTLE_SHRINK times in a row, is
  * held closed ("settled"): its release at zero force is suspended, it opens
  * when its penetration returns to zero [-]. */
 #define RC_SETTLE_FLIGHT 1.0
@@ -35,7 +35,7 @@
  * flights wander, which settled at one tolerance and not at another [-]. */
 #define RC_SETTLE_RATIO 0.9
 /* ... and that contact phase was one bounce: no longer than RC_SETTLE_PHASE
- * times the contact's period at its scale, 2 pi sqrt(m_red / k_s) (a
+ * times the contact's period at its scale, 2 pi sqrt(m_eff / k_s) (a
  * compression lasts about half of it; validation's settling bounces 0.31 to
  * 0.81 of it). A longer phase held several oscillations of the contact, the
  * pair riding on a motion of the bodies (the top ball of a stack on a

@@ -127,8 +127,8 @@ typedef struct rc_data {
                             decided at a rate within its rounding (events.c); 0 again
                             at the interface's next event */
     int fric_turned;     /* 1: an event since the last restart turned a slipping
-                            friction state against its sliding (fric_turn,
-                            events.c); the CVODE backend restarts at BDF order
+                            friction state against its sliding (fric_turn, or
+                            a contact point's refused stick: events.c); the CVODE backend restarts at BDF order
                             at most 2 then (docs/theory.md 3.5) and clears it */
     int multi_closed;    /* 1: an event since the last restart closed a damped contact
                             of several points (a box's, a meshed surface's);

@@ -246,7 +246,18 @@ static int points_flip(const rc_model *m, rc_data *d, int i, double t, double *y
                  * point would stick with its damper's force beyond that
                  * zero limit (a box on a belt: 1.2e-3 N of friction at
                  * F_n = 0); it slides on, against its sliding */
-                if (turn_state(fj, fmax(norm3(fj), m->inter_fr[i].fband), dv, 1.0, changed)) sl[j] = 1;
+                if (turn_state(fj, fmax(norm3(fj), m->inter_fr[i].fband), dv, 1.0, changed)) {
+                    sl[j] = 1;
+                    /* a turn, as the single contact's fric_turn: the
+                     * state reloads towards its limit at K_t |v_t| / L_r,
+                     * and the restart keeps BDF order <= 2 (cvode.c). At
+                     * orders above, a step of h K_t |v_t| / L_r ~ 3 put a
+                     * meshed box's corner state through zero to 2.6 times
+                     * its limit along the sliding, its slip root crossed,
+                     * the stick was refused and the point turned again:
+                     * 200 such turns within 4e-8 s, Zeno */
+                    d->fric_turned = 1;
+                }
             }
         }
         /* no stored energy without work (cap_state); the points' states are

@@ -1105,6 +1105,50 @@ static void test_box_edge_pairs_depth(void)
     }
 }
 
+/* A box's corners meet the face of the other box across which the two
+ * overlap least, not each its nearest plane: a smaller box (half-size 5 mm,
+ * fixed) under a larger one (6.74 mm, turned 26.7 degrees against it about
+ * the vertical) has its top corners 3.1e-5 m inside the rim of the larger
+ * box's bottom face; pressed 6e-5 m into it, each corner is nearer a side
+ * face (3.1e-5 m) than the bottom (6e-5 m). Its four top corners must meet
+ * the bottom face: depth 6e-5 m along the vertical. (With the nearest
+ * plane they took the side faces, and the stack sank: fuzz 239000044.) */
+static void test_box_pair_corner_face(void)
+{
+    rc_error e;
+    rc_model *m = seg_compile("/NODE\n1,0,0,0.016691568\n/RBODY/1\nupper box\n1,,,,0.011\n3.3e-7,3.3e-7,3.3e-7\n0,0,0\n"
+                              "/SURF/BOX/30\nupper, larger\n1\n0,0,0.016691568\n"
+                              "0.0067392527,0.0067392527,0.0067392527\n0.757045908,0.653361686,0\n-0.653361686,0.757045908,0\n"
+                              "/SURF/BOX/40\nlower, smaller\n0\n0,0,0.0050061578\n"
+                              "0.0050061578,0.0050061578,0.0050061578\n0.382891732,0.923793224,0\n-0.923793224,0.382891732,0\n"
+                              LINEAR "/INTER/TYPE6/1\nstack\n30,40\n\n\n1\n\n\n" RUN_TAIL,
+                              &e);
+    ENSURE(m != NULL);
+    if (!m) {
+        fprintf(stderr, "  %s\n", e.msg);
+        return;
+    }
+    ENSURE(rc_box_is_box_pair(m, 0));
+    double *y = calloc((size_t)m->ny, sizeof(double));
+    rc_initial_state(m, y);
+    const int na = m->surf_nadr[m->inter_sa[0] + 1] - m->surf_nadr[m->inter_sa[0]];
+    const double depth = 2 * 0.0050061578 - (0.016691568 - 0.0067392527); /* 6.00003e-5 m */
+    int n = 0;
+    for (int j = 4; j < 8; j++) { /* the lower box's top corners (bit 2: +w) */
+        const double dj = rc_point_distance(m, 0, na + j, y, NULL);
+        printf("    lower box's top corner %d: d = %.6g m\n", j, dj);
+        ENSURE_NEAR(dj, -depth, 1e-9, 0);
+        n++;
+    }
+    ENSURE(n == 4);
+    rc_inter_report r;
+    rc_inter_report_eval(m, 0, RC_MODE_CLOSED, RC_BR_LOAD, 0, 0, 0.0, y, &r);
+    ENSURE_NEAR(r.p, depth, 1e-9, 0);
+    ENSURE(fabs(fabs(r.normal[2]) - 1.0) < 1e-9);
+    free(y);
+    rc_model_free(m);
+}
+
 /* The fade of a box-box edge pair's share (the cone's margin, the closest
  * points' parameters, the local separating-axis test) and its rate: the
  * rate against central differences of the fade along the bodies' motion
@@ -1295,6 +1339,7 @@ void suite_seg(void)
     RUN_TEST(test_box_plane_jacobian);
     RUN_TEST(test_box_box_jacobian);
     RUN_TEST(test_box_edge_pairs_depth);
+    RUN_TEST(test_box_pair_corner_face);
     RUN_TEST(test_box_edge_pair_fade_rates);
     RUN_TEST(test_seg_sphere_step5_jacobian);
 }

@@ -192,20 +192,76 @@ static double imposed_speed(const rc_model *m, int b, double L)
     return v;
 }
 
-/* Mass of body b as seen along the unit normal n: m / (sum over its free
- * translations k of n_k^2), INFINITY for a fixed body or one held along n
- * (by /BCS, or by an /IMPVEL to the end of the run: one that ends before,
- * e.g. the hold of a body until its sensor's time, leaves it free). */
+/* Does imposed translation j hold body b's translation along its
+ * direction to the end of the run (imposed: any; else a /BCS hold alone)?
+ * One that ends before, e.g. the hold of a body until its sensor's time,
+ * leaves it free. */
+static int held_along(const rc_model *m, int b, int j, int imposed)
+{
+    const rc_imposed *p = m->imp;
+    return p->tbody[j] == b && p->ttstop[j] >= m->tend && p->tsens[j] < 0 && (imposed || p->tbcs[j] != 0);
+}
+
+/* The part of the unit normal n along which body b translates freely
+ * [-]: |n|^2 less its parts along the directions in which b's translation
+ * is held (/BCS, along the global axes or a skew's) or, with imposed,
+ * imposed to the end of the run (/IMPVEL, along any axis). Along global
+ * axes alone, the sum over the free axes k of n_k^2; with skew axes among
+ * them, the directions orthonormalised first, so that a hold along a
+ * skew's axes counts as the same hold along the global ones does (a belt
+ * held and driven along a skew's axes counted as free: the contact on it
+ * got another reduced mass, stick damper and speed scale than in the
+ * scene's own axes). */
+static double free_part(const rc_model *m, int b, const double *n, int imposed)
+{
+    const rc_imposed *p = m->imp;
+    const int nt = p ? p->nt : 0;
+    int skew = 0;
+    for (int j = 0; j < nt; j++) skew |= p->tdir[j] < 0 && held_along(m, b, j, imposed);
+    if (!skew) {
+        double w = 0.0;
+        for (int k = 0; k < 3; k++) {
+            int held = m->body_dofmask[6 * b + k];
+            for (int j = 0; j < nt; j++) held |= p->tdir[j] == k && held_along(m, b, j, imposed);
+            if (!held) w += n[k] * n[k];
+        }
+        return w;
+    }
+    double q[3][3];
+    int nq = 0;
+    for (int c = 0; c < 3 + nt && nq < 3; c++) {
+        double u[3];
+        if (c < 3) {
+            if (!m->body_dofmask[6 * b + c]) continue;
+            for (int k = 0; k < 3; k++) u[k] = k == c;
+        } else {
+            if (!held_along(m, b, c - 3, imposed)) continue;
+            for (int k = 0; k < 3; k++) u[k] = p->tu[3 * (c - 3) + k];
+        }
+        for (int r = 0; r < nq; r++) {
+            const double d = u[0] * q[r][0] + u[1] * q[r][1] + u[2] * q[r][2];
+            for (int k = 0; k < 3; k++) u[k] -= d * q[r][k];
+        }
+        const double l = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+        if (!(l > 1e-9)) continue; /* along the held ones already */
+        for (int k = 0; k < 3; k++) q[nq][k] = u[k] / l;
+        nq++;
+    }
+    double w = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    for (int r = 0; r < nq; r++) {
+        const double d = n[0] * q[r][0] + n[1] * q[r][1] + n[2] * q[r][2];
+        w -= d * d;
+    }
+    return w > 0.0 ? w : 0.0;
+}
+
+/* Mass of body b as seen along the unit normal n: m over the part of n
+ * along which it translates freely (free_part), INFINITY for a fixed body
+ * or one held along n (by /BCS, or by an /IMPVEL to the end of the run). */
 static double normal_mass(const rc_model *m, int b, const double *n)
 {
     if (b < 0 || m->body_yadr[b] < 0) return INFINITY;
-    double w = 0.0;
-    for (int k = 0; k < 3; k++) {
-        int held = m->body_dofmask[6 * b + k];
-        const rc_imposed *p = m->imp;
-        for (int j = 0; p && j < p->nt; j++) held |= p->tbody[j] == b && p->tdir[j] == k && p->ttstop[j] >= m->tend && p->tsens[j] < 0;
-        if (!held) w += n[k] * n[k];
-    }
+    const double w = free_part(m, b, n, 1);
     return w > 1e-12 ? m->body_mass[b] / w : INFINITY;
 }
 
@@ -356,11 +412,15 @@ double rc_point_mass(const rc_model *m, int i, const double *y, const rc_inter_r
         const double *x = y + m->body_yadr[b], *n = r->normal;
         const double rv[3] = {r->point[0] - x[0], r->point[1] - x[1], r->point[2] - x[2]};
         const double c[3] = {rv[1] * n[2] - rv[2] * n[1], rv[2] * n[0] - rv[0] * n[2], rv[0] * n[1] - rv[1] * n[0]};
-        for (int k = 0; k < 3; k++)
-            if (!m->body_dofmask[6 * b + k]) inv += n[k] * n[k] / m->body_mass[b];
-        /* rotation about the free axes: c_F . (J_FF)^-1 c_F (Gauss on <= 3 x 3) */
+        inv += free_part(m, b, n, 1) / m->body_mass[b]; /* held or driven: global or skew axes */
+        /* rotation about the free axes: c_F . (J_FF)^-1 c_F (Gauss on <= 3 x
+         * 3); an imposed rotation (all three components) to the end of the
+         * run leaves none */
+        int driven = 0;
+        for (int j = 0; m->imp && j < m->imp->nr; j++)
+            driven |= m->imp->rbody[j] == b && m->imp->rtstop[j] >= m->tend && m->imp->rsens[j] < 0;
         int ax[3], nf = 0;
-        for (int k = 0; k < 3; k++)
+        for (int k = 0; k < 3 && !driven; k++)
             if (!m->body_dofmask[6 * b + 3 + k]) ax[nf++] = k;
         double a[3][4];
         for (int p = 0; p < nf; p++) {

@@ -33,8 +33,7 @@ rc_status rc_card_rwall(rc_reader *rd, const rc_block *b)
     static const char *const desc[] = {"", "node_ID Slide grnd_ID1 grnd_ID2, d fric Diameter ffac ifq, XM YM ZM, XM1 YM1 ZM1",
                                        "node_ID Slide grnd_ID1 grnd_ID2, d fric Diameter ffac ifq, XM YM ZM, XM1 YM1 ZM1",
                                        "node_ID Slide grnd_ID1 grnd_ID2, d fric Diameter ffac ifq, XM YM ZM",
-                                       "node_ID Slide grnd_ID1 grnd_ID2, d fric Diameter ffac ifq, XM YM ZM, XM1 YM1 "
-                                       "ZM1, XM2 YM2 ZM2"};
+                                       "node_ID Slide grnd_ID1 grnd_ID2, d fric Diameter ffac ifq, XM YM ZM, XM1 YM1 ZM1, XM2 YM2 ZM2"};
     static const int nlines[] = {0, 4, 4, 3, 5};
     rc_case *c = rd->c;
     const rc_case_rwall_kind kind = strcmp(b->kw[1], "PLANE") == 0 ? RC_RWALL_PLANE

@@ -203,55 +203,30 @@ static int held_along(const rc_model *m, int b, int j, int imposed)
 }
 
 /* The part of the unit normal n along which body b translates freely
- * [-]: |n|^2 less its parts along the directions in which b's translation
- * is held (/BCS, along the global axes or a skew's) or, with imposed,
- * imposed to the end of the run (/IMPVEL, along any axis). Along global
- * axes alone, the sum over the free axes k of n_k^2; with skew axes among
- * them, the directions orthonormalised first, so that a hold along a
- * skew's axes counts as the same hold along the global ones does (a belt
- * held and driven along a skew's axes counted as free: the contact on it
- * got another reduced mass, stick damper and speed scale than in the
- * scene's own axes). */
+ * [-]: the sum of n_k^2 over the global axes k along which it is neither
+ * held (/BCS) nor, with imposed, imposed to the end of the run (/IMPVEL),
+ * less (n . u)^2 for each skew axis u it is held or driven along, so that
+ * a hold along a skew's axes counts as the same hold along the global ones
+ * does. (A body with a skewed entry has no hold along a global axis, and
+ * its skew axes are orthonormal: model/imposed.h. A belt held and driven
+ * along a skew's axes counted as free: the contact on it got another
+ * reduced mass, stick damper and speed scale than in the scene's own
+ * axes.) */
 static double free_part(const rc_model *m, int b, const double *n, int imposed)
 {
     const rc_imposed *p = m->imp;
     const int nt = p ? p->nt : 0;
-    int skew = 0;
-    for (int j = 0; j < nt; j++) skew |= p->tdir[j] < 0 && held_along(m, b, j, imposed);
-    if (!skew) {
-        double w = 0.0;
-        for (int k = 0; k < 3; k++) {
-            int held = m->body_dofmask[6 * b + k];
-            for (int j = 0; j < nt; j++) held |= p->tdir[j] == k && held_along(m, b, j, imposed);
-            if (!held) w += n[k] * n[k];
-        }
-        return w;
+    double w = 0.0;
+    for (int k = 0; k < 3; k++) {
+        int held = m->body_dofmask[6 * b + k];
+        for (int j = 0; j < nt; j++) held |= p->tdir[j] == k && held_along(m, b, j, imposed);
+        if (!held) w += n[k] * n[k];
     }
-    double q[3][3];
-    int nq = 0;
-    for (int c = 0; c < 3 + nt && nq < 3; c++) {
-        double u[3];
-        if (c < 3) {
-            if (!m->body_dofmask[6 * b + c]) continue;
-            for (int k = 0; k < 3; k++) u[k] = k == c;
-        } else {
-            if (!held_along(m, b, c - 3, imposed)) continue;
-            for (int k = 0; k < 3; k++) u[k] = p->tu[3 * (c - 3) + k];
+    for (int j = 0; j < nt; j++)
+        if (p->tdir[j] < 0 && held_along(m, b, j, imposed)) {
+            const double *u = p->tu + 3 * j, d = n[0] * u[0] + n[1] * u[1] + n[2] * u[2];
+            w -= d * d;
         }
-        for (int r = 0; r < nq; r++) {
-            const double d = u[0] * q[r][0] + u[1] * q[r][1] + u[2] * q[r][2];
-            for (int k = 0; k < 3; k++) u[k] -= d * q[r][k];
-        }
-        const double l = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-        if (!(l > 1e-9)) continue; /* along the held ones already */
-        for (int k = 0; k < 3; k++) q[nq][k] = u[k] / l;
-        nq++;
-    }
-    double w = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-    for (int r = 0; r < nq; r++) {
-        const double d = n[0] * q[r][0] + n[1] * q[r][1] + n[2] * q[r][2];
-        w -= d * d;
-    }
     return w > 0.0 ? w : 0.0;
 }
 

@@ -238,7 +238,7 @@ void rc_point_position(const rc_model *m, int i, int j, const double *y, double 
     const double *ya = rc_body_state(m, m->inter_ba[i], y), *yb = rc_body_state(m, m->inter_bb[i], y);
     double pl[12], d, dd, nb[3];
     if (m->inter_pair[i] == RC_PAIR_SEG_PLANE) plane_of_r(m, m->inter_sb[i], yb, pl, pl + 3, pl + 6, pl + 9);
-    seg_node_r(m, i, j, ya, yb, pl, &d, &dd, x, nb, NULL, NULL, NULL);
+    seg_node_r(m, i, j, ya, yb, pl, &d, &dd, x, nb, NULL, NULL, NULL, NULL);
 }
 
 double rc_point_distance(const rc_model *m, int i, int j, const double *y, int *hints)
@@ -246,7 +246,7 @@ double rc_point_distance(const rc_model *m, int i, int j, const double *y, int *
     const double *ya = rc_body_state(m, m->inter_ba[i], y), *yb = rc_body_state(m, m->inter_bb[i], y);
     double pl[12], d, dd, x[3], nb[3];
     if (m->inter_pair[i] == RC_PAIR_SEG_PLANE) plane_of_r(m, m->inter_sb[i], yb, pl, pl + 3, pl + 6, pl + 9);
-    seg_node_r(m, i, j, ya, yb, pl, &d, &dd, x, nb, NULL, NULL, hints);
+    seg_node_r(m, i, j, ya, yb, pl, &d, &dd, x, nb, NULL, NULL, hints, NULL);
     return d;
 }
 
@@ -255,7 +255,7 @@ double rc_point_fade(const rc_model *m, int i, int j, const double *y, double fa
     const double *ya = rc_body_state(m, m->inter_ba[i], y), *yb = rc_body_state(m, m->inter_bb[i], y);
     double pl[12], d, dd, x[3], nb[3];
     if (m->inter_pair[i] == RC_PAIR_SEG_PLANE) plane_of_r(m, m->inter_sb[i], yb, pl, pl + 3, pl + 6, pl + 9);
-    seg_node_r(m, i, j, ya, yb, pl, &d, &dd, x, nb, NULL, fade, NULL);
+    seg_node_r(m, i, j, ya, yb, pl, &d, &dd, x, nb, NULL, fade, NULL, NULL);
     return d;
 }
 

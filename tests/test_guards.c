@@ -425,8 +425,10 @@ static void test_guards_penetration_fires(void)
     ENSURE(bench_violations(&b, note, sizeof note) == 1);
     printf("    %s\n", note);
     ENSURE(strstr(note, "is open (no force) while penetrating by 0.001 m") != NULL);
-    /* at a located root the event is still to come: nothing */
-    s[2] = 0.0495 - m->origin[2]; /* the model's coordinates */
+    /* at a located root the event is still to come: nothing within 10 p_s
+     * (beyond, the closing jumped: entered_deep, test_guards_entered_deep) */
+    ENSURE(isfinite(m->inter_pscale[0]) && 5 * m->inter_pscale[0] < 1e-3);
+    s[2] = 0.05 - 5 * m->inter_pscale[0] - m->origin[2]; /* the model's coordinates */
     ENSURE(rc_guards_step(b.g, b.d, 0.11, b.y, NULL, 1, ++b.steps) == 0);
     ENSURE(bench_violations(&b, NULL, 0) == 1);
     /* closed, far beyond the bound: the sphere passes through */
@@ -907,6 +909,57 @@ static void test_guards_law_deficit_fires(void)
     }
 }
 
+/* A contact point that comes in under a face across the face's free edge,
+ * already deep (entered_deep): a meshed box (0.1 m cube, 1 kg, no gravity)
+ * whose bottom face is 0.02 m below the plane of a finite meshed floor and
+ * beyond its edge x = 0.5 moves back over it at 1 m/s. Its leading bottom
+ * corners pass under the floor's edge at t = 0.1 s, 0.02 m deep (20 p_s):
+ * the closing root fires on a jump, not a crossing, and the run stops
+ * there naming the depth and the point; node to surface does not see the
+ * floor's edge cutting into the box before (fuzz 247000130: a tilted box
+ * bounced off the side of its floor). The same box moving away from the
+ * floor runs to its end without a violation. */
+static void test_guards_entered_deep(void)
+{
+    for (int k = 0; k < 2; k++) {
+        char deck[2048];
+        snprintf(deck, sizeof deck,
+                 "/NODE\n1,0.65,0,0.03\n11,0.6,-0.05,-0.02\n12,0.7,-0.05,-0.02\n13,0.7,0.05,-0.02\n"
+                 "14,0.6,0.05,-0.02\n15,0.6,-0.05,0.08\n16,0.7,-0.05,0.08\n17,0.7,0.05,0.08\n18,0.6,0.05,0.08\n"
+                 "21,-1,-1,0\n22,0.5,-1,0\n23,0.5,1,0\n24,-1,1,0\n"
+                 "/RBODY/1\nbox\n1,0,0,3,1.0,2\n0.00167,0.00167,0.00167\n0,0,0\n"
+                 "/GRNOD/NODE/2\nbox corners\n11,12,13,14,15,16,17,18\n/GRNOD/NODE/3\nmain node\n1\n"
+                 "/SURF/SEG/30\nbox faces\n1,11,14,13,12\n2,15,16,17,18\n3,11,12,16,15\n4,12,13,17,16\n"
+                 "5,13,14,18,17\n6,14,11,15,18\n/SURF/SEG/40\nfloor\n1,21,22,23,24\n"
+                 "/FUNCT/1\nlinear\n0,0\n1,1e6\n/INTER/TYPE6/1\nbox on floor\n30,40\n\n\n1\n\n\n"
+                 "/INIVEL/TRA/1\nmoving\n%s,0,0,3,0\n/RUN\n0.2,0.01\n",
+                 k ? "1" : "-1");
+        rc_error e;
+        rc_model *m = tu_compile_text(deck, "guards_entered_deep.rad", &e);
+        ENSURE(m != NULL);
+        if (!m) {
+            printf("    %s\n", e.msg);
+            return;
+        }
+        rc_stats st;
+        const rc_status s = rc_run(m, NULL, &st, &e);
+        printf("    moving %s the floor: status %d, t_end %.9g s%s%s\n", k ? "away from" : "back over", (int)s, st.t_end,
+               s != RC_OK ? ": " : "", s != RC_OK ? e.msg : "");
+        if (k == 0) {
+            ENSURE(s == RC_EPHYSICS);
+            ENSURE(fabs(st.t_end - 0.1) < 1e-6);
+            ENSURE(strstr(e.msg, "/INTER/TYPE6/1 closes at t = 0.1") != NULL ||
+                   strstr(e.msg, "/INTER/TYPE6/1 closes at t = 0.0999999") != NULL);
+            ENSURE(strstr(e.msg, "already 0.02 m deep") != NULL);
+            ENSURE(strstr(e.msg, "deepest at (0.5, ") != NULL && strstr(e.msg, "-0.02) m") != NULL);
+            ENSURE(strstr(e.msg, "pass into each other") != NULL);
+        } else {
+            ENSURE(s == RC_OK && st.violations == 0);
+        }
+        rc_model_free(m);
+    }
+}
+
 /* A cylinder held where the box is not: lying across a table's edge (its
  * axis perpendicular to the edge, which is not modelled) it acts through
  * the face's plane, which goes on beyond the rectangle. A roller (R =
@@ -967,4 +1020,5 @@ void suite_guards(void)
     RUN_TEST(test_guards_box_edges_cross);
     RUN_TEST(test_guards_box_overlap_fires);
     RUN_TEST(test_guards_law_deficit_fires);
+    RUN_TEST(test_guards_entered_deep);
 }

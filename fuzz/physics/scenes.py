@@ -822,8 +822,13 @@ def k_meshbox(B, rng):
     tend = math.sqrt(2 * max(h, half[2]) / gm) * rng.uniform(3.0, 12.0)
     if start == "sliding":
         tend = max(tend, min(1.5, np.linalg.norm(v) / (0.3 * gm) * 1.5))
-    # how far it can slide: launched, or down the tilt of the gravity
-    travel = np.linalg.norm(v) * tend + 0.5 * math.hypot(g[0], g[1]) * tend ** 2 + 2 * float(np.linalg.norm(half))
+    # how far it can slide: launched, or down the tilt of the gravity; a
+    # dropped box may leave its impact sideways as fast as it fell (a tilted
+    # box turns its fall into a sideways bounce: seed 247000130 left a meshed
+    # floor 20 half-sizes wide after 0.6 s, a corner below the floor's plane
+    # came back in under its edge 5.8 mm deep)
+    travel = ((np.linalg.norm(v) + v_imp) * tend + 0.5 * math.hypot(g[0], g[1]) * tend ** 2
+              + 2 * float(np.linalg.norm(half)))
     if target == "plane":
         sf = B.plane((0, 0, 0), (0, 0, 1), label="floor")
     elif target == "fixedbox":
@@ -833,7 +838,7 @@ def k_meshbox(B, rng):
         sf = B.surf(type="box", body=0, c=[0.0, 0.0, -hb], half=[max(hb * 10, travel), max(hb * 10, travel), hb],
                     u=[1.0, 0, 0], v=[0, 1.0, 0], label="fixed box (floor)")
     else:
-        sf = B.meshfloor(float(max(half)) * 20, int(rng.integers(2, 8)))
+        sf = B.meshfloor(max(float(max(half)) * 20, 2 * travel), int(rng.integers(2, 8)))
     it = B.inter(sb, sf, fields) if rng.random() < 0.5 else B.inter(sf, sb, fields)
     it["law_curve"] = law
     fm = pick_friction_mode(rng, 0.3)

@@ -1385,7 +1385,8 @@ static rc_status define_physics(rc_output *o, int *varid, rc_error *err)
          "the earlier record for a decrease or an excess of energy; the same time for a state"},
         {"violation_check", NC_STRING, "physics check that failed",
          "energy_damping, energy_hysteresis, energy_friction, energy_coupling_damping, mechanical_energy, "
-         "energy_balance, penetration, sphere_centres, open_penetrating, non_finite, start_overlap (docs/theory.md)"},
+         "energy_balance, penetration, sphere_centres, box_overlap, support_beyond_edge, law_deficit, open_penetrating, "
+         "entered_deep, friction_limit, non_finite, start_overlap (docs/theory.md)"},
         {"violation_element", NC_STRING, "element concerned", "e.g. /INTER/TYPE6/3, /RBODY/2; empty: the whole model"},
         {"violation_value", NC_DOUBLE, "value found",
          "a decrease or an excess [J], a penetration or a distance [m]; non_finite: the value"},

@@ -166,7 +166,8 @@ typedef struct rc_violation {
     double t_from;      /* start of the interval it concerns (the earlier record) [s]; t for a state */
     char check[40];     /* energy_damping, energy_hysteresis, energy_friction, energy_coupling_damping,
                            mechanical_energy, energy_balance, penetration, sphere_centres, box_overlap,
-                           support_beyond_edge, open_penetrating, non_finite, start_overlap */
+                           support_beyond_edge, law_deficit, open_penetrating, entered_deep,
+                           friction_limit, non_finite, start_overlap */
     char element[64];   /* "/INTER/TYPE6/3", "/RBODY/2", "/COUPLING/SPRING/4"; "" the whole model */
     double value;       /* what was found: a decrease or an excess [J], a penetration or a distance [m] */
     double limit;       /* what it was compared with, in the same unit */

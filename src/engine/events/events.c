@@ -23,6 +23,10 @@
 /* Touch band: RC_TOUCH_ULPS ulps of the coordinates (model.h), at least
  * RC_TOUCH_REL of the penetration scale (docs/theory.md 5.1) [-]. */
 #define RC_TOUCH_REL 1e-9
+/* An open contact's wait past P = 0 (open_wait): at most RC_WAIT_PFRAC p_s,
+ * at least RC_WAIT_ULPS roundings of its coordinates [-] */
+#define RC_WAIT_PFRAC 0.5
+#define RC_WAIT_ULPS 16.0
 
 /* Whether the close of interface i caps the BDF order of the restart after
  * it (d->multi_closed, cvode.c; docs/theory.md 7.7): a contact of several
@@ -716,6 +720,27 @@ static double touch_band(const rc_model *m, const rc_data *d, int i, const doubl
     return band > 0 ? band : DBL_MIN;
 }
 
+/* How far past P = 0 an open contact left within its touch band waits to
+ * close [m]: the band, but not beyond RC_WAIT_PFRAC p_s where the contact
+ * works at the resolution of its coordinates (a stiff wall whose
+ * penetration at the force scale is a few thousand ulps of them), and not
+ * below RC_WAIT_ULPS roundings of them, nor of its P. Closing at the full band there
+ * started the force at k times the band, many times the force that held
+ * the body: it was thrown off, separated and waited again, a limit cycle
+ * (a ball pressed by a ramp against a wall of 4e13 N/m: resting 2e-15 m
+ * in, band 2.4e-14 m, 0.95 N at the close against 0.08 N resting, 4 343
+ * closes in 0.66 s and CV_TOO_MUCH_WORK). */
+static double open_wait(const rc_model *m, const rc_data *d, int i, const double *y, const rc_inter_report *r,
+                        double band)
+{
+    const double ps = m->inter_pscale[i];
+    if (!(isfinite(ps) && ps > 0) || band <= RC_WAIT_PFRAC * ps) return band;
+    const double floor = rc_touch_band(m, i, y, r, RC_WAIT_ULPS, 0.0, 0);
+    /* above the contact's present P (left open within the band while
+     * moving apart: its root must start below the wait) */
+    return fmin(band, fmax(fmax(RC_WAIT_PFRAC * ps, floor), r->p + floor));
+}
+
 /* The contact frequency omega_s = v_s / p_s of interface i [1/s] (0: not
  * scaled). The rounding of dP/dt for its trend is the rate that moves P by
  * its touch band within 1 / omega_s, and that of d2P/dt2 the acceleration
@@ -1346,7 +1371,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             const int md = d->inter_mode[i];
             report(m, d, i, t, y, &r);
             if (fabs(r.p) <= band && !(md == RC_MODE_OPEN && d->inter_track[i]))
-                d->inter_band[2 * i] = md == RC_MODE_OPEN ? -band : band;
+                d->inter_band[2 * i] = md == RC_MODE_OPEN ? -open_wait(m, d, i, y, &r, band) : band;
             if (md != RC_MODE_OPEN && fabs(r.fn) <= fband) d->inter_band[2 * i + 1] = md == RC_MODE_CLOSED ? fband : -fband;
             /* the power law's RDF branch at a damping rate (dP/dt, v_bar)
              * within the rounding of the velocities (vband): its root waits twice that

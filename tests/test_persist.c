@@ -15,6 +15,7 @@
 #include "ricochet/ricochet.h"
 #include "base/error.h"
 #include "solver/impacts.h"
+#include "engine/assembly/assembly.h"
 #include "testutil.h"
 #include "case/case.h"
 
@@ -487,6 +488,62 @@ static void test_vibration_note_counts_contacts_ringing_together_once(void)
     rc_model_free(m);
 }
 
+/* The events an undamped vibration drives: one ball on its undamped Stiff
+ * line closed for 1 s (1/T periods) and 200 000 event instants of its
+ * interface (its friction's stick and slip each period: 247000049, a
+ * spinning ball on a tilted floor), each a restart of the integrator. A run
+ * of 30/T + 50 x 200 000 steps is explained by both (a note naming the
+ * periods and the events, ~30 steps a period and ~50 an event); the same
+ * steps without those events are over 4 x what the periods alone account
+ * for: no note. Several instants at one time count once. */
+static void test_vibration_note_counts_driven_events(void)
+{
+    rc_model *m = load_text("vib_ev.rad", VIB_DECK(""));
+    ENSURE(m != NULL);
+    if (!m) return;
+    const double T = 2.0 * 3.14159265358979 * sqrt(1e-3 / 1e8);
+    const long nev = 200000;
+    const long steps = (long)(RC_VIB_STEPS_PER_PERIOD / T + RC_VIB_STEPS_PER_EVENT * (double)nev);
+    for (int events = 0; events < 2; events++) {
+        rc_impacts im;
+        ENSURE(rc_impacts_init(&im, m) == 0);
+        im.pc = calloc(1, sizeof *im.pc);
+        im.npc = 1;
+        im.pc[0] = (rc_contact){0};
+        im.pc[0].inter_id = 1;
+        im.pc[0].t_close = 0.0;
+        im.pc[0].duration = 1.0;
+        im.pc[0].t_open = 1.0;
+        if (events) {
+            rc_data *d = rc_data_new(m);
+            double *y = calloc((size_t)m->ny, sizeof(double));
+            ENSURE(d != NULL && y != NULL);
+            if (!d || !y) return;
+            rc_initial_state(m, y);
+            /* two events at one instant, then one per instant */
+            rc_impacts_event(&im, m, d, 0, RC_EV_FRIC_STICK, 1e-6, y);
+            rc_impacts_event(&im, m, d, 0, RC_EV_FRIC_SLIP, 1e-6, y);
+            ENSURE(im.nevt[0] == 1);
+            im.nevt[0] = nev;
+            free(y);
+            rc_data_free(d);
+        }
+        char note[1024];
+        rc_impacts_vibration_note(&im, m, steps, note, sizeof note);
+        printf("    %s, %ld steps (T %.3g s): note \"%.160s...\"\n", events ? "200 000 events" : "no events", steps, T,
+               note);
+        if (events) {
+            ENSURE(strstr(note, "0 impacts") != NULL && strstr(note, "and 200000 event instants") != NULL);
+            ENSURE(strstr(note, "(~30 steps each)") != NULL && strstr(note, "~50 each, a restart") != NULL);
+            ENSURE(strstr(note, "/INTER/TYPE6/1") != NULL && strstr(note, "lets them settle") != NULL);
+        } else {
+            ENSURE(note[0] == '\0');
+        }
+        rc_impacts_free(&im);
+    }
+    rc_model_free(m);
+}
+
 /* The same ball with /SOLVER Max_steps 3000 between output times 0.05 s
  * apart: following its 2 500 periods takes some 75 000 steps, and the run
  * stops at Max_steps; the failure says that the contact vibrates undamped,
@@ -531,5 +588,6 @@ void suite_persist(void)
     RUN_TEST(test_zeno_names_sfric_at_zero_force);
     RUN_TEST(test_vibration_note_undamped_stiff_line);
     RUN_TEST(test_vibration_note_counts_contacts_ringing_together_once);
+    RUN_TEST(test_vibration_note_counts_driven_events);
     RUN_TEST(test_max_steps_failure_names_undamped_vibration);
 }

@@ -536,10 +536,11 @@ def add_slow(records, factor=20.0, floor=1.0):
     """a_slow: a base run over 20 x the median base CPU time of its kind
     (and over 1 s). CPU time, not the wall clock: with other jobs on the
     machine the wall clock of a run measures the load. A slow run that says
-    where its steps went (its results' vibration_note: 15 to 120 steps a
-    period of the undamped contact vibrations the scene's laws leave
-    ringing, the cost of the model at the tolerance, not a defect of the
-    solver) is listed in the record's "explained", not a violation."""
+    where its steps went (its results' vibration_note: the periods of the
+    undamped contact vibrations the scene's laws leave ringing and the
+    events they drive on those contacts, the cost of the model at the
+    tolerance, not a defect of the solver) is listed in the record's
+    "explained", not a violation."""
     def cost(b):
         return b.get("cpu", b["wall"])
     by = {}

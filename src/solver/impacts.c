@@ -19,8 +19,13 @@ int rc_impacts_init(rc_impacts *im, const rc_model *m)
     im->h = calloc((size_t)m->ninter + 1, sizeof *im->h);
     im->last = calloc((size_t)m->ninter + 1, sizeof *im->last);
     im->quiet = calloc((size_t)m->ninter + 1, sizeof *im->quiet);
-    if (!im->cur || !im->e0 || !im->h || !im->last || !im->quiet) return -1;
-    for (int i = 0; i < m->ninter; i++) im->cur[i] = -1;
+    im->nevt = calloc((size_t)m->ninter + 1, sizeof *im->nevt);
+    im->tev = malloc(((size_t)m->ninter + 1) * sizeof *im->tev);
+    if (!im->cur || !im->e0 || !im->h || !im->last || !im->quiet || !im->nevt || !im->tev) return -1;
+    for (int i = 0; i < m->ninter; i++) {
+        im->cur[i] = -1;
+        im->tev[i] = NAN;
+    }
     return 0;
 }
 
@@ -31,6 +36,8 @@ void rc_impacts_free(rc_impacts *im)
     free(im->h);
     free(im->last);
     free(im->quiet);
+    free(im->nevt);
+    free(im->tev);
     free(im->row);
     free(im->acc);
     free(im->pc);
@@ -158,6 +165,8 @@ void rc_impacts_event(rc_impacts *im, const rc_model *m, const rc_data *d, int i
                       const double *y)
 {
     if (i < 0 || i >= im->ninter || kind == RC_EV_NONE) return;
+    if (!(im->tev[i] == t)) im->nevt[i]++;
+    im->tev[i] = t;
     /* an event changes the law's branch: the fits do not reach across it */
     im->h[i].n = 0;
     int k = im->cur[i];
@@ -570,9 +579,20 @@ void rc_impacts_vibration_note(const rc_impacts *im, const rc_model *m, long ste
     if (steps < RC_VIB_NOTE_STEPS || im->npc == 0) return;
     double *scratch = malloc(3 * (size_t)im->npc * sizeof(double));
     if (!scratch) return;
-    /* steps the vibrations account for */
-    const double total = RC_VIB_STEPS_PER_PERIOD * fastest_periods(im, m, scratch, scratch + im->npc);
+    /* steps the vibrations account for: their periods, and the restarts
+     * at the events of the contacts that vibrate (their friction's stick
+     * and slip, their bounces: driven by the vibrations, which never die
+     * out) */
+    const double periods = fastest_periods(im, m, scratch, scratch + im->npc);
     free(scratch);
+    long nev = 0, nimp = 0;
+    for (int i = 0; i < m->ninter; i++) {
+        if (!isfinite(vib_period(m, i))) continue;
+        nev += im->nevt[i];
+        for (int k = 0; k < im->n; k++) nimp += im->row[k].inter_id == m->inter_id[i]; /* its bounces */
+    }
+    const double total = RC_VIB_STEPS_PER_PERIOD * periods + RC_VIB_STEPS_PER_EVENT * (double)nev +
+                         RC_VIB_STEPS_PER_IMPACT * (double)nimp;
     /* the three interfaces with the most periods, most first */
     struct {
         int i;
@@ -601,15 +621,33 @@ void rc_impacts_vibration_note(const rc_impacts *im, const rc_model *m, long ste
      * ring: friction or a lighter load holds them), and its steps went
      * elsewhere */
     if (best[0].i < 0 || 4.0 * total < (double)steps || (double)steps < 0.5 * total) return;
-    size_t l = (size_t)snprintf(buf, n,
-                                "%ld steps, about %.0f a period of undamped contact vibrations, which they mostly "
-                                "followed: ",
-                                steps, (double)steps * RC_VIB_STEPS_PER_PERIOD / total);
-    for (int r = 0; r < 3 && best[r].i >= 0 && l < n; r++)
-        l += (size_t)snprintf(buf + l, n - l, "%s%s closed %.3g s, period %.3g s (%.3g periods)", r ? "; " : "",
-                              m->inter_name[best[r].i], best[r].closed, best[r].period, best[r].periods);
-    if (l < n)
-        snprintf(buf + l, n - l, "; the integrator follows each period to the tolerances and without damping they "
+    size_t l;
+    if (RC_VIB_STEPS_PER_EVENT * (double)nev + RC_VIB_STEPS_PER_IMPACT * (double)nimp <
+        0.5 * RC_VIB_STEPS_PER_PERIOD * periods)
+        l = (size_t)snprintf(buf, n,
+                             "%ld steps, about %.0f a period of undamped contact vibrations, which they mostly "
+                             "followed: ",
+                             steps, (double)steps * RC_VIB_STEPS_PER_PERIOD / total);
+    else /* the events' restarts cost as much as the periods, or more */
+        l = (size_t)snprintf(buf, n,
+                             "%ld steps: %.3g periods of undamped contact vibrations (~%.0f steps each), %ld "
+                             "impacts (~%.0f each) and %ld event instants (stick, slip, bounces; ~%.0f each, a "
+                             "restart) of those contacts: ",
+                             steps, periods, (double)steps * RC_VIB_STEPS_PER_PERIOD / total, nimp,
+                             (double)steps * RC_VIB_STEPS_PER_IMPACT / total, nev,
+                             (double)steps * RC_VIB_STEPS_PER_EVENT / total);
+    /* the interfaces, as many as leave room for the advice (the whole, or
+     * its short form) */
+    static const char advice[] = "; the integrator follows each period to the tolerances and without damping they "
                                  "never die out: a normal damping (TYPE6 Visc or a restitution, the power law's C) "
-                                 "lets them settle");
+                                 "lets them settle";
+    static const char brief[] = "; a normal damping lets them settle";
+    for (int r = 0; r < 3 && best[r].i >= 0 && l < n; r++) {
+        char one[200];
+        const int w = snprintf(one, sizeof one, "%s%s closed %.3g s, period %.3g s (%.3g periods)", r ? "; " : "",
+                               m->inter_name[best[r].i], best[r].closed, best[r].period, best[r].periods);
+        if (r > 0 && l + (size_t)w + sizeof brief > n) break;
+        l += (size_t)snprintf(buf + l, n - l, "%s", one);
+    }
+    if (l < n) snprintf(buf + l, n - l, "%s", l + sizeof advice <= n ? advice : brief);
 }

@@ -55,6 +55,9 @@ typedef struct rc_impacts {
                        initial state (no records inside it) */
     rc_contact *pc; /* [npc] the persistent contacts (rc_impacts_finish) */
     int npc;
+    long *nevt;     /* [ninter] the instants at which the interface had events
+                       (several at one instant count once: one restart) */
+    double *tev;    /* [ninter] the last of them [s] (NaN: none) */
 } rc_impacts;
 
 /* 0, or -1 when out of memory. */
@@ -120,9 +123,11 @@ double rc_contact_record_interval(const rc_model *m, double dtout);
  * contacts (pc, after rc_impacts_finish) of the interfaces without normal
  * damping, each vibrating with the period 2 pi sqrt(m / k) of its closed
  * contact (m the reduced mass of its free bodies, k its stiffness scale or
- * its Stiff line, the steeper), when the run took 0.5 to 4
+ * its Stiff line, the steeper), when the run took 0.5 to 4 times
  * RC_VIB_STEPS_PER_PERIOD steps for each period of the fastest of them
- * closed at each time; buf[0] = 0
+ * closed at each time plus RC_VIB_STEPS_PER_EVENT for each instant at
+ * which those interfaces had events (nevt) and RC_VIB_STEPS_PER_IMPACT for
+ * each of their impacts (row); buf[0] = 0
  * otherwise (docs/theory.md 7.10). */
 void rc_impacts_vibration_note(const rc_impacts *im, const rc_model *m, long steps, char *buf, size_t n);
 /* The hint appended to a failure for Max_steps at t [s] ("; the contact
@@ -139,5 +144,15 @@ void rc_impacts_max_steps_hint(const rc_impacts *im, const rc_model *m, double t
 /* Steps an error-controlled integrator spends on a period of an undamped
  * vibration it follows (BDF at rtol 1e-6 .. 1e-10: 30 to 70) [-]. */
 #define RC_VIB_STEPS_PER_PERIOD 30
+/* Steps the integrator spends after each event instant of a contact that
+ * vibrates undamped (the restart's climb back to its step and order: 45 to
+ * 66 measured on a ball, a small box and a box on an incline whose undamped
+ * vibrations drive their friction's stick and slip every period) [-]. */
+#define RC_VIB_STEPS_PER_EVENT 50
+/* Steps an impact takes at the default tolerances (its compression and
+ * restitution followed: the measured cost `ricochet check` estimates with)
+ * [-], for the impacts of those contacts (their bounces never die out
+ * either) */
+#define RC_VIB_STEPS_PER_IMPACT 150
 
 #endif

@@ -362,13 +362,13 @@ static void test_breakpoint_jump_decides_friction_again(void)
 
 /* A contact released and closed at zero force whose friction limit holds
  * Sfric (fuzz 229000250: a box sliding on a floor, Sfric = 1.8 times its
- * weight, released and closed every 3e-10 s; open, a Filippov sliding
- * surface that the modes cannot hold): the failure names Sfric, whether
- * the chatter ends in the Zeno guard (while its instant recloses settled
- * the contact) or, since a reclose without separation is no landing, in
- * steps collapsing on the contact's friction (CV_TOO_MUCH_WORK); with
- * Sfric = 0 the run ends normally. */
-static void test_zeno_names_sfric_at_zero_force(void)
+ * weight, released and closed every 3e-10 s until the Zeno guard or
+ * CV_TOO_MUCH_WORK stopped it: Sfric in full at zero normal force came and
+ * went with the mode, a Filippov sliding surface the modes cannot hold).
+ * Sfric now ramps in over the first 1e-3 F_s of normal force: the friction
+ * is continuous through the release, and the run ends normally with a
+ * handful of events, as with Sfric = 0. */
+static void test_sfric_ramps_in_at_zero_force(void)
 {
     const char *path = "fuzz/physics/regressions/box_floor_sfric_zero_force_sliding_mode_zeno.rad";
     for (int zero = 0; zero <= 1; zero++) {
@@ -383,10 +383,9 @@ static void test_zeno_names_sfric_at_zero_force(void)
         rc_stats st;
         const rc_status s = rc_run(m, NULL, &st, &e);
         printf("    Sfric %s: %s\n", zero ? "0" : "as given", s ? e.msg : "ok");
-        if (zero) ENSURE(s == RC_OK);
-        else
-            ENSURE(s == RC_ESOLVER && (strstr(e.msg, "Zeno") || strstr(e.msg, "CV_TOO_MUCH_WORK")) &&
-                   strstr(e.msg, "/INTER/TYPE6/1") && strstr(e.msg, "Sfric = 0.0314 N"));
+        printf("      %ld steps, %ld events, %ld violations\n", st.steps, st.events, st.violations);
+        ENSURE(s == RC_OK && st.violations == 0);
+        ENSURE(st.events < 100);
         rc_model_free(m);
     }
 }
@@ -585,7 +584,7 @@ void suite_persist(void)
     RUN_TEST(test_elastic_contact_does_not_settle);
     RUN_TEST(test_ida_settle_projection_decides_other_modes);
     RUN_TEST(test_breakpoint_jump_decides_friction_again);
-    RUN_TEST(test_zeno_names_sfric_at_zero_force);
+    RUN_TEST(test_sfric_ramps_in_at_zero_force);
     RUN_TEST(test_vibration_note_undamped_stiff_line);
     RUN_TEST(test_vibration_note_counts_contacts_ringing_together_once);
     RUN_TEST(test_vibration_note_counts_driven_events);

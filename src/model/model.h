@@ -55,6 +55,10 @@
  * interface's force scale F_s (times a contact point's share): docs/theory.md
  * 3.5 */
 #define RC_SLIP_LFLOOR 1.0
+/* TYPE6's Sfric is carried in full from a normal force of RC_SFRIC_RAMP
+ * times the interface's force scale F_s up, a smooth step below it
+ * (docs/theory.md 3.1) [-] */
+#define RC_SFRIC_RAMP 1e-3
 /* Values per contact point that the points' evaluation returns
  * (rc_points_eval): the slip root, the applied force at unit share (3), the
  * share w_j, the depth q_j [m] below the level of the shares (> 0: it takes

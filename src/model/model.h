@@ -57,7 +57,7 @@
 #define RC_SLIP_LFLOOR 1.0
 /* TYPE6's Sfric is carried in full from a normal force of RC_SFRIC_RAMP
  * times the interface's force scale F_s up, a smooth step below it
- * (docs/theory.md 3.1) [-] */
+ * (docs/theory.md 3.5) [-] */
 #define RC_SFRIC_RAMP 1e-3
 /* Values per contact point that the points' evaluation returns
  * (rc_points_eval): the slip root, the applied force at unit share (3), the

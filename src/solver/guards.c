@@ -476,24 +476,26 @@ int rc_guards_step(rc_guards *g, const rc_data *d, double t, const double *y, co
         /* open at the located root of its closing yet far in: its
          * penetration jumped across zero instead of crossing it (a root
          * locates a crossing to within a rounding of t, where a continuous
-         * P is nearly zero; the touch band (open_band) holds the
-         * rounding of the coordinates, against a p_s of 1e-15 m: a wall
-         * contact of 7.8e4 N at 7e-9 m closed 2.7 p_s in). Several contact points: a point that came in
-         * under a face across the face's free edge, already deep (a box
-         * hanging over the edge of a finite meshed floor, whose corner
-         * below the floor's plane moves back over it): node to surface
-         * does not see the edge, the force would start at the law's value
-         * at that depth (the event closes it; the next step finds the
-         * bodies deeper than the force the shared law carries) */
+         * P is nearly zero; the touch band (open_band) holds the rounding
+         * of the coordinates, against a p_s of 1e-15 m: a wall contact of
+         * 7.8e4 N at 7e-9 m closed 2.7 p_s in). Several contact points: a
+         * point that came in under a face across the face's free edge,
+         * already deep (a box hanging over the edge of a finite meshed
+         * floor, whose corner below the floor's plane moves back over it):
+         * node to surface does not see the edge, the force would start at
+         * the law's value at that depth (the event closes it; the next step
+         * finds the bodies deeper than the force the shared law carries) */
         const double deep = mode == RC_MODE_OPEN && at_root && isfinite(m->inter_pscale[i])
                                 ? RC_DEFICIT_FACTOR * fmax(m->inter_pscale[i], open_band(g, i, y))
                                 : INFINITY;
         if (P > deep) {
             rc_inter_report r;
-            if (!(rc_report_cache_state(m, d, y) && rc_report_cache_get(m, d, i, &r))) rc_inter_report_eval_d(m, d, i, t, y, &r);
+            if (!(rc_report_cache_state(m, d, y) && rc_report_cache_get(m, d, i, &r)))
+                rc_inter_report_eval_d(m, d, i, t, y, &r);
             if (violate(g, t, t, "entered_deep", m->inter_name[i], P, deep,
                         "%s closes at t = %.9g s already %.6g m deep, beyond %.3g m (%g times its penetration "
-                        "scale p_s %.3g m, or its touch band where that is larger), deepest at (%.6g, %.6g, %.6g) m: its penetration jumped from apart to deep "
+                        "scale p_s %.3g m, or its touch band where that is larger), deepest at (%.6g, %.6g, "
+                        "%.6g) m: its penetration jumped from apart to deep "
                         "instead of crossing zero, a contact point that came in under a face across an edge of "
                         "that face: node to surface contact does not see a surface's free edge cutting into the "
                         "other body (a body hanging over the edge of a finite surface, or a mesh coarser than the "

@@ -724,8 +724,8 @@ static double touch_band(const rc_model *m, const rc_data *d, int i, const doubl
  * close [m]: the band, but not beyond RC_WAIT_PFRAC p_s where the contact
  * works at the resolution of its coordinates (a stiff wall whose
  * penetration at the force scale is a few thousand ulps of them), and not
- * below RC_WAIT_ULPS roundings of them, nor of its P. Closing at the full band there
- * started the force at k times the band, many times the force that held
+ * below RC_WAIT_ULPS roundings of them, nor of its P. Closing at the full
+ * band there started the force at k times the band, many times the force that held
  * the body: it was thrown off, separated and waited again, a limit cycle
  * (a ball pressed by a ramp against a wall of 4e13 N/m: resting 2e-15 m
  * in, band 2.4e-14 m, 0.95 N at the close against 0.08 N resting, 4 343

@@ -43,7 +43,8 @@ rc_settle *rc_settle_new(const rc_model *m)
     s->zeno_n = calloc(n, sizeof(int));
     s->lq_t = malloc(n * sizeof(double));
     s->lq_n = calloc(n, sizeof(int));
-    if (!s->t_open || !s->t_close || !s->t_flight || !s->a_open || !s->nshrink || !s->apart || !s->zeno_t || !s->zeno_n || !s->lq_t || !s->lq_n) {
+    if (!s->t_open || !s->t_close || !s->t_flight || !s->a_open || !s->nshrink || !s->apart || !s->zeno_t ||
+        !s->zeno_n || !s->lq_t || !s->lq_n) {
         rc_settle_free(s);
         return NULL;
     }

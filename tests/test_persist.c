@@ -543,6 +543,39 @@ static void test_vibration_note_counts_driven_events(void)
     rc_model_free(m);
 }
 
+/* The Max_steps hint counts the events the vibration drives too: the ball
+ * on its undamped Stiff line (T = 1.99e-5 s) closed, an output interval of
+ * 0.01 s (502 periods: 15 000 steps, under half the default Max_steps of
+ * 100 000, no hint) and 1 000 event instants of its interface in the 0.01 s
+ * run so far (its friction's stick and slip: 50 000 steps more, fuzz
+ * 253000218, a ball against an undamped wall stopped at Max_steps): the
+ * hint names the contact, the events and the remedy. */
+static void test_max_steps_hint_counts_driven_events(void)
+{
+    rc_model *m = load_text("vib_hint.rad", VIB_DECK(""));
+    ENSURE(m != NULL);
+    if (!m) return;
+    ENSURE(m->max_steps == 100000);
+    for (int events = 0; events < 2; events++) {
+        rc_impacts im;
+        ENSURE(rc_impacts_init(&im, m) == 0);
+        im.cur[0] = 0; /* closed now */
+        im.nevt[0] = events ? 1000 : 0;
+        char hint[1024];
+        rc_impacts_max_steps_hint(&im, m, 0.01, 0.01, 0.04, hint, sizeof hint);
+        printf("    %s: \"%.200s...\"\n", events ? "1 000 events" : "no events", hint);
+        if (events) {
+            ENSURE(strstr(hint, "the contact /INTER/TYPE6/1 vibrates undamped") != NULL);
+            ENSURE(strstr(hint, "and 1e+03 event instants of its own") != NULL);
+            ENSURE(strstr(hint, "at 30 a period and 50 an event") != NULL);
+        } else {
+            ENSURE(hint[0] == '\0');
+        }
+        rc_impacts_free(&im);
+    }
+    rc_model_free(m);
+}
+
 /* The same ball with /SOLVER Max_steps 3000 between output times 0.05 s
  * apart: following its 2 500 periods takes some 75 000 steps, and the run
  * stops at Max_steps; the failure says that the contact vibrates undamped,
@@ -588,5 +621,6 @@ void suite_persist(void)
     RUN_TEST(test_vibration_note_undamped_stiff_line);
     RUN_TEST(test_vibration_note_counts_contacts_ringing_together_once);
     RUN_TEST(test_vibration_note_counts_driven_events);
+    RUN_TEST(test_max_steps_hint_counts_driven_events);
     RUN_TEST(test_max_steps_failure_names_undamped_vibration);
 }

@@ -511,14 +511,24 @@ void rc_impacts_max_steps_hint(const rc_impacts *im, const rc_model *m, double t
         }
     }
     if (best < 0) return;
-    const double np = dt_out / tb, need = RC_VIB_STEPS_PER_PERIOD * np;
+    /* its event instants in an output interval at the run's rate so far
+     * (its friction's stick and slip as the force rings), each a restart */
+    const double ne = t > 0 ? (double)im->nevt[best] * dt_out / t : 0.0;
+    const double np = dt_out / tb, need = RC_VIB_STEPS_PER_PERIOD * np + RC_VIB_STEPS_PER_EVENT * ne;
     if (need < 0.5 * (double)m->max_steps) return;
+    char evs[200] = "", per[40] = "";
+    if (RC_VIB_STEPS_PER_EVENT * ne >= 0.5 * RC_VIB_STEPS_PER_PERIOD * np) {
+        snprintf(evs, sizeof evs, " and %.3g event instants of its own (its friction's stick and slip, each a restart)",
+                 ne);
+        snprintf(per, sizeof per, " and %d an event", RC_VIB_STEPS_PER_EVENT);
+    }
     snprintf(buf, n,
-             "; the contact %s vibrates undamped (period %.3g s: %.3g periods in an output interval of %.3g s, "
-             "about %.3g steps at %d a period against Max_steps %ld) and without damping the vibrations never die "
+             "; the contact %s vibrates undamped (period %.3g s: %.3g periods in an output interval of %.3g s%s, "
+             "about %.3g steps at %d a period%s, against Max_steps %ld) and without damping the vibrations never die "
              "out: give it a normal damping (TYPE6 Visc or a restitution, the power law's C) so that they settle, or "
              "raise /SOLVER Max_steps and follow the %.3g periods to the end time (docs/theory.md 7.10)",
-             m->inter_name[best], tb, np, dt_out, need, RC_VIB_STEPS_PER_PERIOD, (long)m->max_steps, t_left / tb);
+             m->inter_name[best], tb, np, dt_out, evs, need, RC_VIB_STEPS_PER_PERIOD, per, (long)m->max_steps,
+             t_left / tb);
 }
 
 /* Periods of the fastest undamped vibration closed at each time, over the

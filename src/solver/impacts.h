@@ -134,9 +134,10 @@ void rc_impacts_vibration_note(const rc_impacts *im, const rc_model *m, long ste
  * ... vibrates undamped ..."): written when an interface closed at t or in
  * the output interval before it (im's contacts) vibrates undamped (the
  * period of rc_impacts_vibration_note) and following its periods in an
- * output interval dt_out [s] at RC_VIB_STEPS_PER_PERIOD takes at least half
- * of /SOLVER Max_steps; t_left [s] the time to the end. buf[0] = 0
- * otherwise (docs/theory.md 7.10). */
+ * output interval dt_out [s] at RC_VIB_STEPS_PER_PERIOD, with its event
+ * instants there (nevt at the run's rate so far) at RC_VIB_STEPS_PER_EVENT,
+ * takes at least half of /SOLVER Max_steps; t_left [s] the time to the
+ * end. buf[0] = 0 otherwise (docs/theory.md 7.10). */
 void rc_impacts_max_steps_hint(const rc_impacts *im, const rc_model *m, double t, double dt_out, double t_left,
                                char *buf, size_t n);
 /* Steps of a run from which the vibration note is considered [-]. */

@@ -730,8 +730,7 @@ static double touch_band(const rc_model *m, const rc_data *d, int i, const doubl
  * (a ball pressed by a ramp against a wall of 4e13 N/m: resting 2e-15 m
  * in, band 2.4e-14 m, 0.95 N at the close against 0.08 N resting, 4 343
  * closes in 0.66 s and CV_TOO_MUCH_WORK). */
-static double open_wait(const rc_model *m, const rc_data *d, int i, const double *y, const rc_inter_report *r,
-                        double band)
+static double open_wait(const rc_model *m, int i, const double *y, const rc_inter_report *r, double band)
 {
     const double ps = m->inter_pscale[i];
     if (!(isfinite(ps) && ps > 0) || band <= RC_WAIT_PFRAC * ps) return band;
@@ -1371,7 +1370,7 @@ int rc_modes_touch(const rc_model *m, rc_data *d, double t, double *y, const dou
             const int md = d->inter_mode[i];
             report(m, d, i, t, y, &r);
             if (fabs(r.p) <= band && !(md == RC_MODE_OPEN && d->inter_track[i]))
-                d->inter_band[2 * i] = md == RC_MODE_OPEN ? -open_wait(m, d, i, y, &r, band) : band;
+                d->inter_band[2 * i] = md == RC_MODE_OPEN ? -open_wait(m, i, y, &r, band) : band;
             if (md != RC_MODE_OPEN && fabs(r.fn) <= fband) d->inter_band[2 * i + 1] = md == RC_MODE_CLOSED ? fband : -fband;
             /* the power law's RDF branch at a damping rate (dP/dt, v_bar)
              * within the rounding of the velocities (vband): its root waits twice that

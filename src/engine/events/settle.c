@@ -169,7 +169,9 @@ void rc_settle_contacts(rc_settle *s, const rc_model *m, rc_data *d, double t, c
         if (ev[k].kind == RC_EV_CONTACT_OPEN || ev[k].kind == RC_EV_CONTACT_SEPARATE) {
             double vn;
             s->t_open[i] = t;
-            s->a_open[i] = approach_acc(m, d, i, t, y, f, &vn);
+            /* the load at the flight's start, for the rule below (an
+             * elastic contact never settles: no evaluation) */
+            s->a_open[i] = rc_inter_elastic(m, i) ? NAN : approach_acc(m, d, i, t, y, f, &vn);
         }
         if (ev[k].kind == RC_EV_CONTACT_SEPARATE) s->apart[i] = 1;
         if (ev[k].kind != RC_EV_CONTACT_CLOSE) continue;
